@@ -2171,6 +2171,24 @@ function G:condition_word(i)
   return nil
 end
 
+-- The position of "speed" when "at speed N" at i opens a condition on reaching that speed: the number straight
+-- after the noun and an instruction after it ("KLM12 at speed 250 descend FL180"), else nil. With "and" or "then"
+-- between ("at speed 250 and descend FL180": the speed flown now, or the moment it is reached?) it is asked.
+function G:at_speed_word(i)
+  if not (self:word(i, "at") and self:word(i + 1, "speed airspeed")) then return nil end
+  local q = self:quantities(i + 2, #self.t + 1)[1]
+  if not q or q.b ~= i + 2 or not (q.kind == "plain" or q.kind == "speed" or q.kind == "mach") then return nil end
+  local k = q.e
+  if self.t[k] and self.t[k].kind == "punct" then k = k + 1 end
+  if not self:any_instruction_in(k, #self.t + 1) then return nil end
+  if self:word(k, "and then") then
+    self.ask = string.format("Is speed %s to be flown now, or is the rest to happen on reaching that speed (ATSPD)?",
+      self.t[q.b].text)
+    return nil
+  end
+  return i + 1
+end
+
 function G:condition()
   local i = 1
   while self.t[i] and self.t[i].kind == "word" and self.t[i].filler do i = i + 1 end
@@ -2180,7 +2198,7 @@ function G:condition()
   if lead then
     local c = self:skip_fillers(lead.e)
     if self.t[c] and self.t[c].kind == "punct" and self.t[c].text == "," then c = self:skip_fillers(c + 1) end
-    local v = self:condition_word(c)
+    local v = self:condition_word(c) or self:at_speed_word(c)
     local q = v and self:quantities(v, #self.t + 1)[1]
     -- ("DAL415, when you get to ERLIN, go direct ATL": a waypoint reached by a verb of reaching, said before any
     -- value; never with the instruction taken back or said to be flown now)
@@ -2198,7 +2216,7 @@ function G:condition()
     end
     i = c
   end
-  if not self:condition_word(i) then return nil, 1 end
+  if not (self:condition_word(i) or (lead and self:at_speed_word(i))) then return nil, 1 end
   local comma = i + 1
   while comma <= #self.t and not (self.t[comma].kind == "punct" and self.t[comma].text == ",") do comma = comma + 1 end
   local rest = comma + 1

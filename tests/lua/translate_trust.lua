@@ -9183,3 +9183,14 @@ do
   check_eq(ex("lookahead 240 s and then run the simulation"), "DTLOOK 240 ; OP")
   check(not ex("set the time multiplier to 6 and run at 3x"):find("OP", 1, true), "a rate after 'run' is no start")
 end
+
+-- Cycle 46 (s100): "at speed N" after the callsign and before an instruction is a condition on reaching that speed
+-- (ATSPD), never an order to fly it; with "and" or "then" between, it is asked
+do
+  local _, ex = scene({ "CRE AC001 B744 52.0 4.0 090 FL300 300" })
+  check_eq(ex("AC001 at speed 270 climb FL340"), "ATSPD AC001 270 ALT AC001 FL340")
+  check_eq(ex("AC001 at speed 280 knots, turn right heading 120"), "ATSPD AC001 280 HDG AC001 120 RIGHT")
+  asked(ex("AC001 at speed 270 and climb FL340"), "'and' between the speed and the instruction")
+  check_eq(ex("AC001 at speed 270"), "SPD AC001 270")
+  check_eq(ex("AC001 climb FL340 at speed 270"), "ALT AC001 FL340 ; SPD AC001 270")
+end
