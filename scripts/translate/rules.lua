@@ -1624,6 +1624,16 @@ return function(intent, rule, words)
   rule { "restart start", "op", near = { 3, "clock" } }
   rule { "restart", "reset", near = { 3, "@sim" } }
   rule { "what how know", "pos", near = { 4, "altitude speed heading position level" } }
+  -- "what's AC004's current FL": the level flown now, "current" or "present" straight before the abbreviation
+  rule { "what", "pos", when = function(g, i)
+    local k = g:find_word(i + 1, i + 5, "current present")
+    if not (k < i + 5 and g:word(k + 1, "fl")) then return false end
+    -- (nothing after it but the aircraft asked about: "... of AC004?")
+    for x = k + 2, #g.t do
+      if not (g.t[x].kind == "punct" or g:word(x, "of for") or g:has_ref(x, x + 1, "aircraft")) then return false end
+    end
+    return true
+  end }
   -- "which is the altitude of the Azul?": the question asked with "which", as non-native speakers do
   rule { "which", "pos", next = "is", near = { 4, "altitude speed heading position level" }, when = function(g)
     return g.t[#g.t].text == "?" end }
@@ -1663,6 +1673,8 @@ return function(intent, rule, words)
   -- "are you able (for) FL370", "confirm on heading south": a question to the pilot, not a clearance
   rule { "able", "pos", prev = { 2, "you" } }
   rule { "confirm", "pos", near = { 3, "heading altitude level speed mach" } }
+  -- "verify AC002 state (alt, spd, hdg)", "verify its altitude": the aircraft's values asked for
+  rule { "verify", "pos", near = { 3, "state heading altitude level speed mach alt spd hdg fl position" } }
   -- "say altitude", "report your heading": a question about the aircraft's state (POS of the
   -- aircraft named); "say heading 270", a value after the state word, is that instruction's value
   rule { "say", false, when = function(g, i)
@@ -2147,7 +2159,7 @@ return function(intent, rule, words)
          not_near = { 4, "minimum minima nm nautical mile miles radius ft foot feet horizontally vertically "
            .. "laterally" } }
   rule { "radius", false, prev = { 12, "circle circular" } }  -- "a circle ... with a 20 mile radius"
-  rule { "protected protection prot pz rpz separation zone zoner zonedh radius", "zone" }  -- ("prot zone")
+  rule { "protected protection prot pz rpz hpz separation zone zoner zonedh radius", "zone" }  -- ("prot zone")
   rule { "sep", "zone", prev = { 1, "horizontal lateral vertical" } }  -- "horizontal sep back to 5nm"
   rule { "half", "zone", next = "height" }
   rule { "look", "dtlook", next = "ahead" }

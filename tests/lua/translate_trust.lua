@@ -9194,3 +9194,15 @@ do
   check_eq(ex("AC001 at speed 270"), "SPD AC001 270")
   check_eq(ex("AC001 climb FL340 at speed 270"), "ALT AC001 FL340 ; SPD AC001 270")
 end
+
+-- Cycle 46 (s100): a researcher's notation: "CAS" after a speed (squawk's speeds are calibrated), "HPZ" the
+-- protected zone's half height, "verify <aircraft> state", "what's <aircraft>'s current FL" (POS)
+do
+  local _, ex = scene({ "CRE AC001 B744 52.0 4.0 090 FL300 300" })
+  check_eq(ex("AC001 speed 280 kts CAS"), "SPD AC001 280")
+  check_eq(ex("set HPZ to 1500 ft"), "ZONEDH 1500")
+  check_eq(ex("verify AC001 state (alt, spd, hdg)"), "POS AC001")
+  check_eq(ex("what's AC001's current FL?"), "POS AC001")
+  check_eq(ex("what is the present FL of AC001"), "POS AC001")
+  asked(ex("what FL should AC001 get"), "an FL asked for with no 'current'")
+end
