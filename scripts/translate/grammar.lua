@@ -4785,7 +4785,11 @@ function G:explained_spans(issued, kinds)
     for _, r in ipairs(self:refs_in(b, e, "waypoint")) do
       if not self:word(r.b, "@not_names") then return end  -- ("we don't need the VFR traffic")
     end
-    for x = b, e - 1 do if self.triggers[x] or self:intent_at(x) then return end end
+    -- ("for the cruise segment": a phase of the flight named by its verb before a noun of lexicon.phase_nouns)
+    for x = b, e - 1 do
+      local phase = self.t[x + 1] and lexicon.phase_nouns[self.t[x + 1].text]
+      if (self.triggers[x] or self:intent_at(x)) and not phase then return end
+    end
     for x = b, e - 1 do inside[x] = true end
   end
   local k = 1
@@ -6662,6 +6666,14 @@ function M.translate(text, world)
   if quoted then return quoted end
   if text:find("\xC3", 1, true) then text = text:gsub("[\xC3][\x80-\xBF]", lexicon.accents) end  -- (UTF-8 Latin-1 letters)
   text = numbered_steps(text)
+  -- a researcher's symbol, a letter or two and a subscript before its value ("t_lookahead = 480 s", "R_pz = 9.26
+  -- km"): the setting its letters name together, else its subscript (SETTING_KEYS); any other stays as typed
+  if text:find("_", 1, true) then
+    text = text:gsub("%f[%w](%a%a?)_(%a+)(%s*[=:]?%s*%d)", function(a, b, value)
+      local key = SETTING_KEYS[(a .. b):lower()] and a .. b or (SETTING_KEYS[b:lower()] and b)
+      return key and key .. value
+    end)
+  end
   -- a decimal said with "point" ("42 point 2", "minus 122 point 4", "0 point 5", "mach point 7 8"): the number
   -- written, with one or two digits after the point, its whole part of one or two digits or after "minus" (a
   -- heading's "270 point 5" stays apart, asked)

@@ -525,6 +525,8 @@ return {
   -- a step of a study session named after "for" with no determiner ("freeze sim for debrief"): a purpose
   session_steps = { debrief = true, debriefing = true, briefing = true, discussion = true, lunch = true,
                     coffee = true, analysis = true, questionnaire = true, questionnaires = true },
+  -- nouns after a verb that make it a phase of the flight named in a remark ("for the cruise segment") (set)
+  phase_nouns = { segment = true, phase = true, portion = true, leg = true, part = true, section = true },
   -- a value's name on the flight deck's selector panel, and the word that says it is selected ("HDG SEL")
   selector_names = { hdg = true, heading = true, spd = true, speed = true, alt = true, altitude = true, vs = true,
                      ["v/s"] = true, mach = true, fpa = true },

@@ -2044,6 +2044,11 @@ return function(intent, rule, words)
     return not g:word_in(1, #g.t + 1, "look lookahead dtlook")
   end }
   rule { "cr", "reso", next = "on off mvp" }  -- "CD on, CR off", "cr mvp": conflict resolution by its letters
+  -- ("CR: MVP": the letters as a label, a colon or a dash before the setting)
+  rule { "cr", "reso", when = function(g, i)
+    local p = g.t[i + 1]
+    return p ~= nil and p.kind == "punct" and (p.text == ":" or p.text == "-") and g:word(i + 2, "on off mvp")
+  end }
   -- "vertical resolution factor 1.1", "horizontal reso safety factor to 1.15": the safety factor
   rule { "resolution resolve reso resolutions", false, near = { 3, "factor" } }
   rule { "factor", "rfac", prev = { 4, "resolution resolutions reso resolve safety" } }

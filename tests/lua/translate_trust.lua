@@ -9206,3 +9206,16 @@ do
   check_eq(ex("what is the present FL of AC001"), "POS AC001")
   asked(ex("what FL should AC001 get"), "an FL asked for with no 'current'")
 end
+
+-- Cycle 46 (s100): a researcher's symbols and labels: "t_lookahead = 480 s", "R_pz = 9.26 km" (a letter or two and a
+-- subscript before a value: the setting named); "CR: MVP" (the letters as a label); a remark naming a phase of the
+-- flight ("for the cruise segment") after a setting
+do
+  local _, ex = scene({ "CRE AC001 B744 52.0 4.0 090 FL300 300" })
+  check_eq(ex("t_lookahead = 360 s"), "DTLOOK 360")
+  check_eq(ex("R_pz = 5 nm"), "ZONER 5")
+  check_eq(ex("CR: MVP"), "RESO MVP")
+  check_eq(ex("dtmult 10 for the climb phase"), "DTMULT 10")
+  asked(ex("x_foo = 300"), "a symbol naming no setting")
+  asked(ex("dtmult 10 for the climb FL200"), "an instruction in the remark")
+end
