@@ -6666,6 +6666,8 @@ function M.translate(text, world)
   if quoted then return quoted end
   if text:find("\xC3", 1, true) then text = text:gsub("[\xC3][\x80-\xBF]", lexicon.accents) end  -- (UTF-8 Latin-1 letters)
   text = numbered_steps(text)
+  -- ("at t=120 s", "at t = 2 min": the simulation's time with its unit, as "at time 120 s")
+  if text:find("=", 1, true) then text = text:gsub("(%f[%a][Aa]t%s+)[tT]%s*=%s*(%d+%s*[smhSMH])", "%1time %2") end
   -- a researcher's symbol, a letter or two and a subscript before its value ("t_lookahead = 480 s", "R_pz = 9.26
   -- km"): the setting its letters name together, else its subscript (SETTING_KEYS); any other stays as typed
   if text:find("_", 1, true) then

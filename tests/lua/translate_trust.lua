@@ -9219,3 +9219,13 @@ do
   asked(ex("x_foo = 300"), "a symbol naming no setting")
   asked(ex("dtmult 10 for the climb FL200"), "an instruction in the remark")
 end
+
+-- Cycle 46 (s100): "at t=N s" / "at time N s" opening or closing an instruction is the simulation's time
+-- (SCHEDULE); a bare number after "t=" with no unit stays asked
+do
+  local _, ex = scene({ "CRE AC001 B744 52.0 4.0 090 FL300 300" })
+  check_eq(ex("at t=90 s, AC001 turn left heading 200"), "SCHEDULE 00:01:30 HDG AC001 200 LEFT")
+  check_eq(ex("at t = 3 min AC001 descend FL250"), "SCHEDULE 00:03:00 ALT AC001 FL250")
+  check_eq(ex("AC001 turn left heading 200 at time 240 s"), "SCHEDULE 00:04:00 HDG AC001 200 LEFT")
+  asked(ex("at t=90 AC001 descend FL250"), "a time with no unit")
+end
