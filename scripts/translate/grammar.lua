@@ -6666,6 +6666,15 @@ function M.translate(text, world)
   if quoted then return quoted end
   if text:find("\xC3", 1, true) then text = text:gsub("[\xC3][\x80-\xBF]", lexicon.accents) end  -- (UTF-8 Latin-1 letters)
   text = numbered_steps(text)
+  -- ("climb to 10 km", "descend to 7.5 km": a level in kilometres straight after the vertical verb, as metres)
+  if text:find("km", 1, true) then
+    for _, verb in ipairs({ "[Cc]limbs?%s+to", "[Cc]limbs?", "[Dd]escends?%s+to", "[Dd]escends?" }) do
+      text = text:gsub("(%f[%a]" .. verb .. "%s+)(%d+%.?%d*)%s*km%f[%A]", function(said, n)
+        local m = tonumber(n) * 1000
+        if m >= 300 and m <= 20000 then return string.format("%s%d m", said, math.floor(m + 0.5)) end
+      end)
+    end
+  end
   -- ("at t=120 s", "at t = 2 min": the simulation's time with its unit, as "at time 120 s")
   if text:find("=", 1, true) then text = text:gsub("(%f[%a][Aa]t%s+)[tT]%s*=%s*(%d+%s*[smhSMH])", "%1time %2") end
   -- a researcher's symbol, a letter or two and a subscript before its value ("t_lookahead = 480 s", "R_pz = 9.26

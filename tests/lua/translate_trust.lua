@@ -9229,3 +9229,13 @@ do
   check_eq(ex("AC001 turn left heading 200 at time 240 s"), "SCHEDULE 00:04:00 HDG AC001 200 LEFT")
   asked(ex("at t=90 AC001 descend FL250"), "a time with no unit")
 end
+
+-- Cycle 46 (s100): a level in kilometres straight after "climb (to)" or "descend (to)" is that many metres; a
+-- distance in kilometres elsewhere is no level
+do
+  local _, ex = scene({ "CRE AC001 B744 52.0 4.0 090 FL300 300" })
+  check_eq(ex("AC001 climb to 11 km"), "ALT AC001 36089")
+  check_eq(ex("AC001 descend to 8.5 km"), "ALT AC001 27887")
+  check_eq(ex("AC001 descend to FL250 within 10 km"), "ALT AC001 FL250")
+  asked(ex("AC001 descend to 60 km"), "no level is 60 km")
+end
