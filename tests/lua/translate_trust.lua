@@ -9239,3 +9239,13 @@ do
   check_eq(ex("AC001 descend to FL250 within 10 km"), "ALT AC001 FL250")
   asked(ex("AC001 descend to 60 km"), "no level is 60 km")
 end
+
+-- Cycle 46 (s100): the protected zone's whole height said "total" is twice ZONEDH's half; "±N ft" is the half itself;
+-- two halves that differ are asked
+do
+  local _, ex = scene({ "CRE AC001 B744 52.0 4.0 090 FL300 300" })
+  check_eq(ex("PZ height 1600 ft total"), "ZONEDH 800")
+  check_eq(ex("PZ height ±900 ft"), "ZONEDH 900")
+  check_eq(ex("PZ height 3000 ft total (±1500 ft)"), "ZONEDH 1500")
+  asked(ex("PZ height 3000 ft total (±1000 ft)"), "two halves that differ")
+end
