@@ -245,6 +245,7 @@ return {
     -- introduce a value ("flying 180"), and nouns and verbs that frame a clearance ("avoiding action",
     -- "track direct", "to the left side", "the velocity")
     accompaniments = { "change", "changes", "alter", "adjust", "modify", "update", "amend", "make", "makes",
+        "configure", "configures", "reconfigure",
         "shrink", "enlarge", "widen", "expand", "tighten", "relax", "margin", "buffer", "interval", "shorten",
         "lengthen",
         -- the dimensions of a setting ("the vertical size of the PZ")

@@ -9249,3 +9249,10 @@ do
   check_eq(ex("PZ height 3000 ft total (±1500 ft)"), "ZONEDH 1500")
   asked(ex("PZ height 3000 ft total (±1000 ft)"), "two halves that differ")
 end
+
+-- Cycle 46 (s100): "configure" frames settings as "set" does; alone it is asked
+do
+  local _, ex = scene({ "CRE AC001 B744 52.0 4.0 090 FL300 300" })
+  check_eq(ex("configure the lookahead to 240 s and RPZ 4 nm"), "DTLOOK 240 ; ZONER 4")
+  asked(ex("AC001 configure"), "no setting named")
+end
