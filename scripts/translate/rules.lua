@@ -778,6 +778,8 @@ return function(intent, rule, words)
     return g:find_word(1, #g.t + 1, "intruder conflict conflicting converger") == i  -- (the first one said)
       and not g:word_in(1, i, "create spawn generate creat cre make new add put") and g:has_ref(i + 1, #g.t + 1, "type")
       and g:word_in(i + 1, #g.t + 1, "@loss_of_separation @closest_approach @head_on") and not along_track(g)
+      -- ("conflict pair: CRECONFS INT9 ...": the command's name said after the noun sets the conflict up)
+      and not g:word_in(i + 1, #g.t + 1, "creconfs")
   end }
   -- "spawn 3 aircraft", "generate 5 aircraft at FL300, type B738", "sample 8 planes": a count of
   -- aircraft with no callsign is random traffic

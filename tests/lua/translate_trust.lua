@@ -9256,3 +9256,11 @@ do
   check_eq(ex("configure the lookahead to 240 s and RPZ 4 nm"), "DTLOOK 240 ; ZONER 4")
   asked(ex("AC001 configure"), "no setting named")
 end
+
+-- Cycle 46 (s100): a label naming a conflict before the command's name typed with its values ("conflict pair:
+-- CRECONFS ...") sets up that one conflict
+do
+  local _, ex = scene({ "CRE AC001 B744 52.0 4.0 090 FL300 300" })
+  check_eq(ex("conflict pair: CRECONFS INT4 B738 on AC001, 45 deg, CPA 1, 240 s"), "CRECONFS INT4 B738 AC001 45 1 240")
+  asked(ex("conflict pair: CRECONFS on AC001, 45 deg, CPA 1, 240 s"), "no intruder named")
+end
