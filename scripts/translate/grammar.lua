@@ -2175,9 +2175,12 @@ end
 -- after the noun and an instruction after it ("KLM12 at speed 250 descend FL180"), else nil. With "and" or "then"
 -- between ("at speed 250 and descend FL180": the speed flown now, or the moment it is reached?) it is asked.
 function G:at_speed_word(i)
-  if not (self:word(i, "at") and self:word(i + 1, "speed airspeed")) then return nil end
-  local q = self:quantities(i + 2, #self.t + 1)[1]
-  if not q or q.b ~= i + 2 or not (q.kind == "plain" or q.kind == "speed" or q.kind == "mach") then return nil end
+  if not self:word(i, "at") then return nil end
+  local noun = self:word(i + 1, "speed airspeed")
+  local q = self:quantities(noun and i + 2 or i + 1, #self.t + 1)[1]
+  if not q or q.b ~= (noun and i + 2 or i + 1) then return nil end
+  -- ("KLM12 at 250 knots descend FL180", "at Mach .78": without the noun, the speed's own unit)
+  if not (q.kind == "speed" or q.kind == "mach" or (noun and q.kind == "plain")) then return nil end
   local k = q.e
   if self.t[k] and self.t[k].kind == "punct" then k = k + 1 end
   if not self:any_instruction_in(k, #self.t + 1) then return nil end
