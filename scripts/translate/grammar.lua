@@ -2187,6 +2187,27 @@ function G:condition_word(i)
   return nil
 end
 
+-- The position of "speed" when "at speed N" at i opens a condition on reaching that speed: the number straight
+-- after the noun and an instruction after it ("KLM12 at speed 250 descend FL180"), else nil. With "and" or "then"
+-- between ("at speed 250 and descend FL180": the speed flown now, or the moment it is reached?) it is asked.
+function G:at_speed_word(i)
+  if not self:word(i, "at") then return nil end
+  local noun = self:word(i + 1, "speed airspeed")
+  local q = self:quantities(noun and i + 2 or i + 1, #self.t + 1)[1]
+  if not q or q.b ~= (noun and i + 2 or i + 1) then return nil end
+  -- ("KLM12 at 250 knots descend FL180", "at Mach .78": without the noun, the speed's own unit)
+  if not (q.kind == "speed" or q.kind == "mach" or (noun and q.kind == "plain")) then return nil end
+  local k = q.e
+  if self.t[k] and self.t[k].kind == "punct" then k = k + 1 end
+  if not self:any_instruction_in(k, #self.t + 1) then return nil end
+  if self:word(k, "and then") then
+    self.ask = string.format("Is speed %s to be flown now, or is the rest to happen on reaching that speed (ATSPD)?",
+      self.t[q.b].text)
+    return nil
+  end
+  return i + 1
+end
+
 function G:condition()
   local i = 1
   while self.t[i] and self.t[i].kind == "word" and self.t[i].filler do i = i + 1 end
@@ -2196,7 +2217,7 @@ function G:condition()
   if lead then
     local c = self:skip_fillers(lead.e)
     if self.t[c] and self.t[c].kind == "punct" and self.t[c].text == "," then c = self:skip_fillers(c + 1) end
-    local v = self:condition_word(c)
+    local v = self:condition_word(c) or self:at_speed_word(c)
     local q = v and self:quantities(v, #self.t + 1)[1]
     -- ("DAL415, when you get to ERLIN, go direct ATL": a waypoint reached by a verb of reaching, said before any
     -- value; never with the instruction taken back or said to be flown now)
@@ -2214,7 +2235,7 @@ function G:condition()
     end
     i = c
   end
-  if not self:condition_word(i) then return nil, 1 end
+  if not (self:condition_word(i) or (lead and self:at_speed_word(i))) then return nil, 1 end
   local comma = i + 1
   while comma <= #self.t and not (self.t[comma].kind == "punct" and self.t[comma].text == ",") do comma = comma + 1 end
   local rest = comma + 1
@@ -4783,7 +4804,11 @@ function G:explained_spans(issued, kinds)
     for _, r in ipairs(self:refs_in(b, e, "waypoint")) do
       if not self:word(r.b, "@not_names") then return end  -- ("we don't need the VFR traffic")
     end
-    for x = b, e - 1 do if self.triggers[x] or self:intent_at(x) then return end end
+    -- ("for the cruise segment": a phase of the flight named by its verb before a noun of lexicon.phase_nouns)
+    for x = b, e - 1 do
+      local phase = self.t[x + 1] and lexicon.phase_nouns[self.t[x + 1].text]
+      if (self.triggers[x] or self:intent_at(x)) and not phase then return end
+    end
     for x = b, e - 1 do inside[x] = true end
   end
   local k = 1
@@ -6594,7 +6619,8 @@ local STEP_WORDS = { one = 1, two = 2, three = 3, four = 4, five = 5, six = 6, s
 local function step_marker(text, at)
   for _, p in ipairs(STEP_MARKERS) do
     local _, e, n = text:find(p, at)
-    n = n and (tonumber(n) or STEP_WORDS[n:lower()])
+    -- ("Step 1b:", "Step 6a:": a step's part, lettered, is that step)
+    n = n and (tonumber(n) or STEP_WORDS[n:lower()] or tonumber(n:match("^(%d%d?)%l$")))
     if n and text:find("^%a", e + 1) then return n, e end
   end
 end
@@ -6611,8 +6637,20 @@ local function numbered_steps(text)
   end
   local first = text:find("%S")
   local n, e = step_marker(text, first or 1)
-  if n ~= 1 then return text end
-  local parts, from, want = {}, e + 1, 2
+  if not n then return text end
+  -- (a protocol's step named by the word, "Step 7: ...", "step 4 - ...", "Step 6a: ...", or a punctuated number
+  -- before an instruction, "7: set ...", may open the text at any number: the label is set apart whole and the
+  -- count goes on from it; otherwise a number other than 1 is a value)
+  local label = text:sub(first, e)
+  local punctuated = label:find("[:.)%-]") ~= nil
+  local worded = label:find("^[Ss]tep") ~= nil
+  local rest = text:sub(e + 1)
+  -- (a label with no punctuation is one when an instruction follows it: "Step 7 set time multiplier to 4"; a
+  -- time unit after the number is a time step, "step 5 seconds")
+  local labelled = (worded or punctuated) and (punctuated and (worded or M.has_instruction(rest))
+    or (not lexicon.step_units[rest:match("^%a+"):lower()] and M.has_instruction(rest)))
+  if n ~= 1 and not labelled then return text end
+  local parts, from, want = {}, e + 1, n + 1
   local at = from
   while true do
     local b = text:find("[%s,;]%S", at)
@@ -6625,7 +6663,7 @@ local function numbered_steps(text)
     at = b + 1
   end
   -- (one step alone marked with no punctuation, "step 1 second", is no list: the words stay)
-  if #parts == 0 and not text:sub(first, e):find("[:.)%-]") then return text end
+  if #parts == 0 and not punctuated and not labelled then return text end
   parts[#parts + 1] = text:sub(from)
   return table.concat(parts, ". ")
 end
@@ -6687,6 +6725,25 @@ function M.translate(text, world)
   if quoted then return quoted end
   if text:find("\xC3", 1, true) then text = text:gsub("[\xC3][\x80-\xBF]", lexicon.accents) end  -- (UTF-8 Latin-1 letters)
   text = numbered_steps(text)
+  -- ("climb to 10 km", "descend to 7.5 km": a level in kilometres straight after the vertical verb, as metres)
+  if text:find("km", 1, true) then
+    for _, verb in ipairs({ "[Cc]limbs?%s+to", "[Cc]limbs?", "[Dd]escends?%s+to", "[Dd]escends?" }) do
+      text = text:gsub("(%f[%a]" .. verb .. "%s+)(%d+%.?%d*)%s*km%f[%A]", function(said, n)
+        local m = tonumber(n) * 1000
+        if m >= 300 and m <= 20000 then return string.format("%s%d m", said, math.floor(m + 0.5)) end
+      end)
+    end
+  end
+  -- ("at t=120 s", "at t = 2 min": the simulation's time with its unit, as "at time 120 s")
+  if text:find("=", 1, true) then text = text:gsub("(%f[%a][Aa]t%s+)[tT]%s*=%s*(%d+%s*[smhSMH])", "%1time %2") end
+  -- a researcher's symbol, a letter or two and a subscript before its value ("t_lookahead = 480 s", "R_pz = 9.26
+  -- km"): the setting its letters name together, else its subscript (SETTING_KEYS); any other stays as typed
+  if text:find("_", 1, true) then
+    text = text:gsub("%f[%w](%a%a?)_(%a+)(%s*[=:]?%s*%d)", function(a, b, value)
+      local key = SETTING_KEYS[(a .. b):lower()] and a .. b or (SETTING_KEYS[b:lower()] and b)
+      return key and key .. value
+    end)
+  end
   -- a decimal said with "point" ("42 point 2", "minus 122 point 4", "0 point 5", "mach point 7 8"): the number
   -- written, with one or two digits after the point, its whole part of one or two digits or after "minus" (a
   -- heading's "270 point 5" stays apart, asked)

@@ -1837,6 +1837,9 @@ function m:at_time(s)
       if self:word(w, "time") and self:word(w - 1, "@sim") and self:word(w - 2, "at") then
         self:mark_used(w - 1, w + 1)
         w = w - 2
+      elseif self:word(w, "time") and self:word(w - 1, "at") then  -- ("at time 120 s", "at t=120 s")
+        self:mark_used(w, w + 1)
+        w = w - 1
       end
       if not self:word(w, "in after at schedule") and not clock then return nil end
       -- (after "and" past the instruction word it opens the next instruction: "KL204 climb FL300 and in

@@ -3328,16 +3328,32 @@ return function(H, f, compass)
       end
       if q.kind == "dist" or (q.kind == "plain" and not vertical) then self:emit("ZONER " .. f.num(q.value)) end
       if q.kind == "alt" or (q.kind == "plain" and vertical) then
-        self:emit("ZONEDH " .. f.num(self:take(q).value))
-        heights[#heights + 1] = { q.value, #self.out }
+        -- ("PZ height 2000 ft total": the zone's whole height, twice the half ZONEDH takes)
+        local total = vertical and self:word(q.e, "total")
+        if total then self:mark_used(q.e, q.e + 1) end
+        local v = self:take(q).value / (total and 2 or 1)
+        self:emit("ZONEDH " .. f.num(v))
+        heights[#heights + 1] = { v, #self.out, total }
       end
     end
+    -- ("(±1000 ft)": a height either side of the aircraft, the half height itself)
+    for x = s.b, s.e - 1 do
+      local n = self.t[x].text:match("^\194\177(%d+)$")
+      if n and vertical and self:word(x + 1, "@feet") then
+        self:mark_used(x, x + 2)
+        self:emit("ZONEDH " .. n)
+        heights[#heights + 1] = { tonumber(n), #self.out, true }
+      end
+    end
+    if #heights == 2 and heights[1][1] == heights[2][1] then table.remove(self.out, heights[2][2]) end
     -- two vertical values are the separation and its half ("separation 1000 ft, half height 500"):
-    -- ZONEDH takes the half; any other pair contradicts itself and is asked
+    -- ZONEDH takes the half; any other pair contradicts itself and is asked, as is any pair of halves that differ
+    -- (a whole height halved, "2000 ft total", or one either side, "±1000 ft", is a half already)
+    local halves = #heights == 2 and heights[1][3] and heights[2][3]
     if #heights == 2 and heights[1][1] ~= heights[2][1] then
       local lo, hi = heights[1], heights[2]
       if lo[1] > hi[1] then lo, hi = hi, lo end
-      if hi[1] ~= 2 * lo[1] then
+      if halves or hi[1] ~= 2 * lo[1] then
         return self:need("Which half-height, in feet, should the protected zone have: "
           .. f.num(heights[1][1]) .. " or " .. f.num(heights[2][1]) .. "?")
       end

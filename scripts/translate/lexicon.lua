@@ -29,7 +29,7 @@ return {
       "plan", "departed", "shift", "activate", "chuck", "deactivate", "unpause", "start", "over", "real", "time", "half",
       "nautical", "miles", "percent", "degree", "latitude", "longitude", "named", "called", "type", "niner",
       "expect", "localizer", "final", "sequence", "spacing", "decimal", "brake", "limit", "custom", "fix",
-      "visual", "runway", "cross", "altimeter", "maintained", "desc", "clb", "rpz",
+      "visual", "runway", "cross", "altimeter", "maintained", "desc", "clb", "rpz", "hpz",
       -- a position's labels as typed ("lat 51.95 lon 4.35"), and the random number generator a seed seeds
       "lat", "lon", "lng", "rng", "prng",
       -- a flight level as typed ("descend FL120, Finnair 7": never a garbled callsign's word)
@@ -148,7 +148,7 @@ return {
         "approved", "received",
         -- an airspeed said as indicated ("fly 250 knots indicated", "320 knots IAS": squawk's speeds are
         -- calibrated, the same)
-        "indicated", "ias",
+        "indicated", "ias", "cas",
         -- a clearance given again in place of the one before ("recleared direct CAPER", "re-cleared FL250")
         "recleared", "reclear",
         -- a readback the controller corrects ("readback incorrect, I said FL350, not 340")
@@ -245,6 +245,7 @@ return {
     -- introduce a value ("flying 180"), and nouns and verbs that frame a clearance ("avoiding action",
     -- "track direct", "to the left side", "the velocity")
     accompaniments = { "change", "changes", "alter", "adjust", "modify", "update", "amend", "make", "makes",
+        "configure", "configures", "reconfigure",
         "shrink", "enlarge", "widen", "expand", "tighten", "relax", "margin", "buffer", "interval", "shorten",
         "lengthen",
         -- the dimensions of a setting ("the vertical size of the PZ")
@@ -525,6 +526,8 @@ return {
   -- a step of a study session named after "for" with no determiner ("freeze sim for debrief"): a purpose
   session_steps = { debrief = true, debriefing = true, briefing = true, discussion = true, lunch = true,
                     coffee = true, analysis = true, questionnaire = true, questionnaires = true },
+  -- nouns after a verb that make it a phase of the flight named in a remark ("for the cruise segment") (set)
+  phase_nouns = { segment = true, phase = true, portion = true, leg = true, part = true, section = true },
   -- a value's name on the flight deck's selector panel, and the word that says it is selected ("HDG SEL")
   selector_names = { hdg = true, heading = true, spd = true, speed = true, alt = true, altitude = true, vs = true,
                      ["v/s"] = true, mach = true, fpa = true },
@@ -767,7 +770,7 @@ return {
   purpose_modals = { "should", "will", "would", "must" },
   -- abbreviations written in capitals that name no place
   not_names = { "vfr", "ifr", "fms", "atis", "qnh", "qfe", "cpa", "los", "eta", "etd", "sid", "star", "nm",
-      "kts", "fpm", "agl", "msl", "amsl", "rnp", "ctr", "tma", "atz", "ias", "stca", "fdr",
+      "kts", "fpm", "agl", "msl", "amsl", "rnp", "ctr", "tma", "atz", "ias", "cas", "stca", "fdr",
       -- a study's questionnaires and measures ("fill in the NASA-TLX")
       "nasa", "tlx", "nasa-tlx" },
   -- words before a waypoint that a direct-to flies past ("skip TP1 and go direct TP2")
@@ -1344,8 +1347,11 @@ return {
   metres = { "m", "metres", "meters", "metre", "meter" },
   -- words that restate a level in another unit ("9200 metres, that is flight level 301", "which is")
   restating = { "that", "thats", "is", "which", "ie", "i.e", "equals", "meaning" },
-  vertical = { "vertical", "height", "zonedh", "dh" },
+  vertical = { "vertical", "height", "zonedh", "dh", "hpz" },
   zone_radius = { "radius", "zoner" },
   -- bare nouns naming what to show, after a handled instruction
   shown = { "altitude", "speed", "heading", "airspeed" },
+  -- units after "step N" that make it the simulation's time step, never a protocol's step label (set)
+  step_units = { s = true, sec = true, secs = true, second = true, seconds = true, ms = true, hz = true,
+    min = true, mins = true, minute = true, minutes = true },
 }

@@ -786,6 +786,8 @@ return function(intent, rule, words)
     return g:find_word(1, #g.t + 1, "intruder conflict conflicting converger") == i  -- (the first one said)
       and not g:word_in(1, i, "create spawn generate creat cre make new add put") and g:has_ref(i + 1, #g.t + 1, "type")
       and g:word_in(i + 1, #g.t + 1, "@loss_of_separation @closest_approach @head_on") and not along_track(g)
+      -- ("conflict pair: CRECONFS INT9 ...": the command's name said after the noun sets the conflict up)
+      and not g:word_in(i + 1, #g.t + 1, "creconfs")
   end }
   -- "spawn 3 aircraft", "generate 5 aircraft at FL300, type B738", "sample 8 planes": a count of
   -- aircraft with no callsign is random traffic
@@ -1634,6 +1636,16 @@ return function(intent, rule, words)
   rule { "restart start", "op", near = { 3, "clock" } }
   rule { "restart", "reset", near = { 3, "@sim" } }
   rule { "what how know", "pos", near = { 4, "altitude speed heading position level" } }
+  -- "what's AC004's current FL": the level flown now, "current" or "present" straight before the abbreviation
+  rule { "what", "pos", when = function(g, i)
+    local k = g:find_word(i + 1, i + 5, "current present")
+    if not (k < i + 5 and g:word(k + 1, "fl")) then return false end
+    -- (nothing after it but the aircraft asked about: "... of AC004?")
+    for x = k + 2, #g.t do
+      if not (g.t[x].kind == "punct" or g:word(x, "of for") or g:has_ref(x, x + 1, "aircraft")) then return false end
+    end
+    return true
+  end }
   -- "which is the altitude of the Azul?": the question asked with "which", as non-native speakers do
   rule { "which", "pos", next = "is", near = { 4, "altitude speed heading position level" }, when = function(g)
     return g.t[#g.t].text == "?" end }
@@ -1673,6 +1685,8 @@ return function(intent, rule, words)
   -- "are you able (for) FL370", "confirm on heading south": a question to the pilot, not a clearance
   rule { "able", "pos", prev = { 2, "you" } }
   rule { "confirm", "pos", near = { 3, "heading altitude level speed mach" } }
+  -- "verify AC002 state (alt, spd, hdg)", "verify its altitude": the aircraft's values asked for
+  rule { "verify", "pos", near = { 3, "state heading altitude level speed mach alt spd hdg fl position" } }
   -- "say altitude", "report your heading": a question about the aircraft's state (POS of the
   -- aircraft named); "say heading 270", a value after the state word, is that instruction's value
   rule { "say", false, when = function(g, i)
@@ -1711,6 +1725,14 @@ return function(intent, rule, words)
     return g:word(k, "and") and g:word(k + 1, "fast ff")
   end }
   rule { "go resume continue unpause run", "op", when = function(g, i) return g:clause_alone(i, i + 1) end }
+  -- "set multiplier 8 and run", "descend FL080 then run (it)": the clock started after another instruction, the
+  -- verb ending the text ("and run at 4x" is the rate's)
+  rule { "run", "op", prev = { 1, "and then" }, when = function(g, i)
+    local k = i + 1
+    if g:word(k, "the") and g:word(k + 1, "@sim") then k = k + 2 elseif g:word(k, "it @sim") then k = k + 1 end
+    while k <= #g.t and (g.t[k].kind == "punct" or g.t[k].filler or g:word(k, "now")) do k = k + 1 end
+    return k > #g.t
+  end }
   rule { "unpause unfreeze op", "op" }
   rule { "resume continue unpause start", "op", when = the_run }
   rule { "stop", "hold", when = the_run }
@@ -2034,6 +2056,11 @@ return function(intent, rule, words)
     return not g:word_in(1, #g.t + 1, "look lookahead dtlook")
   end }
   rule { "cr", "reso", next = "on off mvp" }  -- "CD on, CR off", "cr mvp": conflict resolution by its letters
+  -- ("CR: MVP": the letters as a label, a colon or a dash before the setting)
+  rule { "cr", "reso", when = function(g, i)
+    local p = g.t[i + 1]
+    return p ~= nil and p.kind == "punct" and (p.text == ":" or p.text == "-") and g:word(i + 2, "on off mvp")
+  end }
   -- "vertical resolution factor 1.1", "horizontal reso safety factor to 1.15": the safety factor
   rule { "resolution resolve reso resolutions", false, near = { 3, "factor" } }
   rule { "factor", "rfac", prev = { 4, "resolution resolutions reso resolve safety" } }
@@ -2149,7 +2176,7 @@ return function(intent, rule, words)
          not_near = { 4, "minimum minima nm nautical mile miles radius ft foot feet horizontally vertically "
            .. "laterally" } }
   rule { "radius", false, prev = { 12, "circle circular" } }  -- "a circle ... with a 20 mile radius"
-  rule { "protected protection prot pz rpz separation zone zoner zonedh radius", "zone" }  -- ("prot zone")
+  rule { "protected protection prot pz rpz hpz separation zone zoner zonedh radius", "zone" }  -- ("prot zone")
   rule { "sep", "zone", prev = { 1, "horizontal lateral vertical" } }  -- "horizontal sep back to 5nm"
   rule { "half", "zone", next = "height" }
   rule { "look", "dtlook", next = "ahead" }

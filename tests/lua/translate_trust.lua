@@ -9242,3 +9242,110 @@ do
     "ALT PSC77 3000 ; HDG PSC77 200 LEFT")
   asked(ex("PSC77 report the field in sight"), "a sighting alone")
 end
+
+-- Cycle 46 (s100): a protocol's step label opening the text ("Step 7:", "Step 1b:", "step 4 -", "7:", "Step 7" before
+-- an instruction) is set apart whole at any number and never gives a value; "step 5 seconds" stays the time step
+do
+  local _, ex = scene({ "CRE AC001 B744 52.0 4.0 090 FL300 300" })
+  check_eq(ex("Step 9: set the time multiplier to 3"), "DTMULT 3")
+  check_eq(ex("Step 3b: AC001 descend FL200"), "ALT AC001 FL200")
+  check_eq(ex("step 5 - AC001 turn left heading 250"), "HDG AC001 250 LEFT")
+  check_eq(ex("8: set the lookahead to 240 s"), "DTLOOK 240")
+  check_eq(ex("Step 6 set the time multiplier to 2"), "DTMULT 2")
+  check_eq(ex("Step 4: AC001 reduce speed 250 Step 5: AC001 descend FL250"), "SPD AC001 250 ; ALT AC001 FL250")
+  check(not ex("step 5 seconds"):find("DTMULT", 1, true), "a time step is no label")
+end
+
+-- Cycle 46 (s100): "run" ending the text after another instruction ("... and run", "... then run it") starts the
+-- clock (OP); with a rate after it, "and run at 4x", it stays the rate's
+do
+  local _, ex = scene({ "CRE AC001 B744 52.0 4.0 090 FL300 300" })
+  check_eq(ex("set the time multiplier to 6 and run"), "DTMULT 6 ; OP")
+  check_eq(ex("AC001 climb FL340 then run it"), "ALT AC001 FL340 ; OP")
+  check_eq(ex("lookahead 240 s and then run the simulation"), "DTLOOK 240 ; OP")
+  check(not ex("set the time multiplier to 6 and run at 3x"):find("OP", 1, true), "a rate after 'run' is no start")
+end
+
+-- Cycle 46 (s100): "at speed N" after the callsign and before an instruction is a condition on reaching that speed
+-- (ATSPD), never an order to fly it; with "and" or "then" between, it is asked
+do
+  local _, ex = scene({ "CRE AC001 B744 52.0 4.0 090 FL300 300" })
+  check_eq(ex("AC001 at speed 270 climb FL340"), "ATSPD AC001 270 ALT AC001 FL340")
+  check_eq(ex("AC001 at speed 280 knots, turn right heading 120"), "ATSPD AC001 280 HDG AC001 120 RIGHT")
+  check_eq(ex("AC001 at 260 knots descend FL240"), "ATSPD AC001 260 ALT AC001 FL240")
+  check_eq(ex("AC001 at mach .8 climb FL340"), "ATSPD AC001 M0.8 ALT AC001 FL340")
+  asked(ex("AC001 at 260 knots then descend FL240"), "'then' between the speed and the instruction")
+  asked(ex("AC001 at speed 270 and climb FL340"), "'and' between the speed and the instruction")
+  check_eq(ex("AC001 at speed 270"), "SPD AC001 270")
+  check_eq(ex("AC001 climb FL340 at speed 270"), "ALT AC001 FL340 ; SPD AC001 270")
+end
+
+-- Cycle 46 (s100): a researcher's notation: "CAS" after a speed (squawk's speeds are calibrated), "HPZ" the
+-- protected zone's half height, "verify <aircraft> state", "what's <aircraft>'s current FL" (POS)
+do
+  local _, ex = scene({ "CRE AC001 B744 52.0 4.0 090 FL300 300" })
+  check_eq(ex("AC001 speed 280 kts CAS"), "SPD AC001 280")
+  check_eq(ex("set HPZ to 1500 ft"), "ZONEDH 1500")
+  check_eq(ex("verify AC001 state (alt, spd, hdg)"), "POS AC001")
+  check_eq(ex("what's AC001's current FL?"), "POS AC001")
+  check_eq(ex("what is the present FL of AC001"), "POS AC001")
+  asked(ex("what FL should AC001 get"), "an FL asked for with no 'current'")
+end
+
+-- Cycle 46 (s100): a researcher's symbols and labels: "t_lookahead = 480 s", "R_pz = 9.26 km" (a letter or two and a
+-- subscript before a value: the setting named); "CR: MVP" (the letters as a label); a remark naming a phase of the
+-- flight ("for the cruise segment") after a setting
+do
+  local _, ex = scene({ "CRE AC001 B744 52.0 4.0 090 FL300 300" })
+  check_eq(ex("t_lookahead = 360 s"), "DTLOOK 360")
+  check_eq(ex("R_pz = 5 nm"), "ZONER 5")
+  check_eq(ex("CR: MVP"), "RESO MVP")
+  check_eq(ex("dtmult 10 for the climb phase"), "DTMULT 10")
+  asked(ex("x_foo = 300"), "a symbol naming no setting")
+  asked(ex("dtmult 10 for the climb FL200"), "an instruction in the remark")
+end
+
+-- Cycle 46 (s100): "at t=N s" / "at time N s" opening or closing an instruction is the simulation's time
+-- (SCHEDULE); a bare number after "t=" with no unit stays asked
+do
+  local _, ex = scene({ "CRE AC001 B744 52.0 4.0 090 FL300 300" })
+  check_eq(ex("at t=90 s, AC001 turn left heading 200"), "SCHEDULE 00:01:30 HDG AC001 200 LEFT")
+  check_eq(ex("at t = 3 min AC001 descend FL250"), "SCHEDULE 00:03:00 ALT AC001 FL250")
+  check_eq(ex("AC001 turn left heading 200 at time 240 s"), "SCHEDULE 00:04:00 HDG AC001 200 LEFT")
+  asked(ex("at t=90 AC001 descend FL250"), "a time with no unit")
+end
+
+-- Cycle 46 (s100): a level in kilometres straight after "climb (to)" or "descend (to)" is that many metres; a
+-- distance in kilometres elsewhere is no level
+do
+  local _, ex = scene({ "CRE AC001 B744 52.0 4.0 090 FL300 300" })
+  check_eq(ex("AC001 climb to 11 km"), "ALT AC001 36089")
+  check_eq(ex("AC001 descend to 8.5 km"), "ALT AC001 27887")
+  check_eq(ex("AC001 descend to FL250 within 10 km"), "ALT AC001 FL250")
+  asked(ex("AC001 descend to 60 km"), "no level is 60 km")
+end
+
+-- Cycle 46 (s100): the protected zone's whole height said "total" is twice ZONEDH's half; "±N ft" is the half itself;
+-- two halves that differ are asked
+do
+  local _, ex = scene({ "CRE AC001 B744 52.0 4.0 090 FL300 300" })
+  check_eq(ex("PZ height 1600 ft total"), "ZONEDH 800")
+  check_eq(ex("PZ height ±900 ft"), "ZONEDH 900")
+  check_eq(ex("PZ height 3000 ft total (±1500 ft)"), "ZONEDH 1500")
+  asked(ex("PZ height 3000 ft total (±1000 ft)"), "two halves that differ")
+end
+
+-- Cycle 46 (s100): "configure" frames settings as "set" does; alone it is asked
+do
+  local _, ex = scene({ "CRE AC001 B744 52.0 4.0 090 FL300 300" })
+  check_eq(ex("configure the lookahead to 240 s and RPZ 4 nm"), "DTLOOK 240 ; ZONER 4")
+  asked(ex("AC001 configure"), "no setting named")
+end
+
+-- Cycle 46 (s100): a label naming a conflict before the command's name typed with its values ("conflict pair:
+-- CRECONFS ...") sets up that one conflict
+do
+  local _, ex = scene({ "CRE AC001 B744 52.0 4.0 090 FL300 300" })
+  check_eq(ex("conflict pair: CRECONFS INT4 B738 on AC001, 45 deg, CPA 1, 240 s"), "CRECONFS INT4 B738 AC001 45 1 240")
+  asked(ex("conflict pair: CRECONFS on AC001, 45 deg, CPA 1, 240 s"), "no intruder named")
+end
