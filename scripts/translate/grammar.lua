@@ -3018,6 +3018,7 @@ local tied_to_waypoint
 function G:parse(b, e)
   local segs = self:split_ellipsis(self:segments(b, e))
   local prev_out = #self.out
+  local valueless, issued_by = {}, {}  -- (G:valueless_left)
   self:orphan_heading(segs[1])
   for k, s in ipairs(segs) do
     if self.ask then break end
@@ -3123,6 +3124,7 @@ function G:parse(b, e)
       if self.ask and spec and spec.value and self:values_after_trigger(s) == 0 and not self:change_word(s.trig)
           and not self:word_in(s.trig + 1, s.e, "minimum maximum min max best optimum optimal clean econ economy") then
         self.pending = self.pending or self.ask
+        valueless[#valueless + 1] = { k = k, ask = self.ask }
         self.ask = nil
       elseif unheld and not self.ask then
         self:need("I have " .. table.concat(self.out, " ; ") .. ". No level was cleared before '"
@@ -3173,12 +3175,70 @@ function G:parse(b, e)
       self.ask = nil
       self:explain(s.trig, nx.b)
     end
+    issued_by[k] = #self.out > prev_out
   end
+  self:valueless_left(segs, valueless, issued_by)
   -- (a waypoint said for the next instruction, with none after it)
   if self.at_next and not self.ask then tied_to_waypoint(self, self.at_next) end
   self.at_next = nil
   self:direct_resumes_nav()
   self:destination_not_waypoint()
+end
+
+-- A value instruction with no value of its own (`valueless`: {k, ask} by segment number k of `segs`), left out
+-- beside aircraft instructions with a value that issued (`issued_by[k]`: segment k issued a command), is asked,
+-- naming what was issued, when its segment holds only instruction words (triggers, a turn's side, "and", "then"),
+-- the callsign, fillers and marks ("climb FL300 reduce", "turn KLM12 climb FL300"). It is read as a word of an
+-- instruction issued when that instruction's command is one it may issue and none issued changes the other way
+-- ("climb and maintain FL300", "speed 280, maintain", "climb FL300 then maintain"; a level and a rate are one:
+-- "descend FL200, expedite"), when it is a rate said with no value ("turn left heading 040, expedite": the
+-- manner), or when it names what the instruction straight before it asks for ("say alt"). Other words in its
+-- segment say what it is ("no speed restrictions") and leave it out as before.
+G.value_intents = { alt = "ALT", maintain = "ALT SPD HDG", spd = "SPD", hdg = "HDG", vs = "VS" }
+function G:valueless_left(segs, valueless, issued_by)
+  if self.ask or #self.out == 0 then return end
+  local function against(a, b)  -- true when the words at a and b change the other way ("climb" and "descend")
+    return self:word(a, "@up") and self:word(b, "@down") or self:word(a, "@down") and self:word(b, "@up")
+  end
+  local issued = {}  -- the verbs issued by value instructions, a rate's as a level's
+  for j, o in ipairs(segs) do
+    for verb in (issued_by[j] and G.value_intents[o.intent] or ""):gmatch("%u+") do issued[verb] = true end
+  end
+  issued.ALT = issued.ALT or issued.VS
+  if not next(issued) then return end
+  for _, v in ipairs(valueless) do
+    local s = segs[v.k]
+    local bare = s.intent ~= "vs"
+    for i = s.b, s.e - 1 do
+      local t = self.t[i]
+      bare = bare and (t.kind ~= "word" or t.filler or self.triggers[i] or self:word(i, "@left @right and then")
+        or self:has_ref(i, i + 1, "aircraft"))
+    end
+    local read = not bare or (segs[v.k - 1] and issued_by[v.k - 1] and self:skip_fillers(segs[v.k - 1].trig + 1) == s.trig)
+    for verb in (G.value_intents[s.intent] or ""):gmatch("%u+") do read = read or issued[verb] end
+    for j, o in ipairs(segs) do
+      if issued_by[j] and against(s.trig, o.trig) then read = false end
+    end
+    if not read then
+      self:need("I have " .. table.concat(self.out, " ; ") .. ". " .. v.ask)
+      return
+    end
+  end
+  -- an instruction word said straight after the value of a value instruction that issued, of another family or
+  -- changing the other way ("climb FL300 descend"), or a turn's side said so after a value that is no heading
+  -- ("climb FL300 left")
+  for k, s in ipairs(segs) do
+    local q = issued_by[k] and G.value_intents[s.intent] and self:quantities(s.trig + 1, s.e)[1]
+    local i = q and q.e
+    while i and self.t[i] and (self.t[i].kind == "punct" or self.t[i].filler) do i = i + 1 end
+    local intent = i and i < s.e and self.triggers[i] and self:intent_at(i)
+    if i and i < s.e and ((intent and (against(s.trig, i) or not (same_family(intent, s.intent) or intent == "maintain"
+        or G.value_intents[intent] == "VS" and G.value_intents[s.intent] == "ALT")))
+        or (s.intent ~= "hdg" and self:word(i, "@left @right") and not self:in_reason(i))) then
+      self:need("I have " .. table.concat(self.out, " ; ") .. ". What does '" .. self.t[i].raw .. "' mean?")
+      return
+    end
+  end
 end
 
 -- The level a segment's instruction waits for, said after it: "..., (but only) when/once it is at /
