@@ -3225,15 +3225,27 @@ function G:valueless_left(segs, valueless, issued_by)
     end
   end
   -- an instruction word said straight after the value of a value instruction that issued, of another family or
-  -- changing the other way ("climb FL300 descend"), or a turn's side said so after a value that is no heading
-  -- ("climb FL300 left")
+  -- changing the other way ("climb FL300 descend", "... down"), a word the rules read as a stop of the run
+  -- closing its clause with no instruction read from it ("climb FL300 stop"), or a turn's side said so after a
+  -- value that is no heading ("climb FL300 left")
   for k, s in ipairs(segs) do
-    local q = issued_by[k] and G.value_intents[s.intent] and self:quantities(s.trig + 1, s.e)[1]
+    -- (a rate's direction follows its value: "vertical speed 1200 up")
+    local q = issued_by[k] and s.intent ~= "vs" and G.value_intents[s.intent] and self:quantities(s.trig + 1, s.e)[1]
     local i = q and q.e
     while i and self.t[i] and (self.t[i].kind == "punct" or self.t[i].filler) do i = i + 1 end
     local intent = i and i < s.e and self.triggers[i] and self:intent_at(i)
+    -- (a word the rules read as a stop of the run, never as keeping a value, closing its clause with no
+    -- instruction read from it: "climb FL300 stop")
+    local nx = i and self:skip_fillers(i + 1)
+    local stops, keeps = false, false
+    for _, r in ipairs(i and i < s.e and not intent and RULES_BY_WORD[self.t[i].text] or {}) do
+      stops, keeps = stops or (not r.any and r.intent == "hold"), keeps or r.intent == "maintain"
+    end
+    local closing = stops and not keeps and not self.u:used(i) and not (self.explained or {})[i] and not self.noted[i]
+      and (not self.t[nx] or self.t[nx].kind == "punct")
     if i and i < s.e and ((intent and (against(s.trig, i) or not (same_family(intent, s.intent) or intent == "maintain"
         or G.value_intents[intent] == "VS" and G.value_intents[s.intent] == "ALT")))
+        or against(s.trig, i) or closing
         or (s.intent ~= "hdg" and self:word(i, "@left @right") and not self:in_reason(i))) then
       self:need("I have " .. table.concat(self.out, " ; ") .. ". What does '" .. self.t[i].raw .. "' mean?")
       return
