@@ -3195,29 +3195,43 @@ end
 -- manner), or when it names what the instruction straight before it asks for ("say alt"). Other words in its
 -- segment say what it is ("no speed restrictions") and leave it out as before.
 G.value_intents = { alt = "ALT", maintain = "ALT SPD HDG", spd = "SPD", hdg = "HDG", vs = "VS" }
+G.value_commands = { ALT = true, SPD = true, HDG = true, VS = true }
+G.negations = {}
+for _, w in ipairs(lexicon.accounted.negation) do G.negations[w] = true end
 function G:valueless_left(segs, valueless, issued_by)
   if self.ask or #self.out == 0 then return end
+  self:dangling_value_name()  -- ("climb fl320 spd": that question first)
+  if self.ask then return end
   local function against(a, b)  -- true when the words at a and b change the other way ("climb" and "descend")
     return self:word(a, "@up") and self:word(b, "@down") or self:word(a, "@down") and self:word(b, "@up")
   end
-  local issued = {}  -- the verbs issued by value instructions, a rate's as a level's
-  for j, o in ipairs(segs) do
-    for verb in (issued_by[j] and G.value_intents[o.intent] or ""):gmatch("%u+") do issued[verb] = true end
+  local issued = {}  -- the value commands issued, a rate's as a level's
+  for _, line in ipairs(self.out) do
+    for verb in line:gmatch("%f[%w](%u+)%f[%W]") do
+      if G.value_commands[verb] then issued[verb] = true end
+    end
   end
   issued.ALT = issued.ALT or issued.VS
   if not next(issued) then return end
   for _, v in ipairs(valueless) do
-    local s = segs[v.k]
+    local s, before, after = segs[v.k], segs[v.k - 1], segs[v.k + 1]
     local bare = s.intent ~= "vs"
     for i = s.b, s.e - 1 do
       local t = self.t[i]
-      bare = bare and (t.kind ~= "word" or t.filler or self.triggers[i] or self:word(i, "@left @right and then")
+      bare = bare and (t.kind ~= "word" or t.filler or self.triggers[i] or self:word(i, "@left @right @up @down and then")
         or self:has_ref(i, i + 1, "aircraft"))
     end
-    local read = not bare or (segs[v.k - 1] and issued_by[v.k - 1] and self:skip_fillers(segs[v.k - 1].trig + 1) == s.trig)
+    -- (one refused, "do not descend", is the negation's: the accounting asks about it)
+    local refused = false
+    for i = math.max(1, s.trig - 2), s.trig - 1 do refused = refused or G.negations[self.t[i].text] end
+    local next_word = self:skip_fillers(s.trig + 1)
+    local read = not bare or refused or (before and issued_by[v.k - 1] and self:skip_fillers(before.trig + 1) == s.trig)
+      or (after and issued_by[v.k + 1] and (self:word(next_word, "the") and self:skip_fillers(next_word + 1) or next_word) == after.trig)
     for verb in (G.value_intents[s.intent] or ""):gmatch("%u+") do read = read or issued[verb] end
     for j, o in ipairs(segs) do
-      if issued_by[j] and against(s.trig, o.trig) then read = false end
+      if issued_by[j] and G.value_intents[o.intent] == G.value_intents[s.intent] and against(s.trig, o.trig) then
+        read = false
+      end
     end
     if not read then
       self:need("I have " .. table.concat(self.out, " ; ") .. ". " .. v.ask)
@@ -3237,15 +3251,16 @@ function G:valueless_left(segs, valueless, issued_by)
     -- (a word the rules read as a stop of the run, never as keeping a value, closing its clause with no
     -- instruction read from it: "climb FL300 stop")
     local nx = i and self:skip_fillers(i + 1)
+    local ends = i and (not self.t[nx] or self.t[nx].kind == "punct")
     local stops, keeps = false, false
     for _, r in ipairs(i and i < s.e and not intent and RULES_BY_WORD[self.t[i].text] or {}) do
       stops, keeps = stops or (not r.any and r.intent == "hold"), keeps or r.intent == "maintain"
     end
-    local closing = stops and not keeps and not self.u:used(i) and not (self.explained or {})[i] and not self.noted[i]
-      and (not self.t[nx] or self.t[nx].kind == "punct")
-    if i and i < s.e and ((intent and (against(s.trig, i) or not (same_family(intent, s.intent) or intent == "maintain"
-        or G.value_intents[intent] == "VS" and G.value_intents[s.intent] == "ALT")))
-        or against(s.trig, i) or closing
+    local closing = ends and stops and not keeps and not self.u:used(i) and not (self.explained or {})[i] and not self.noted[i]
+    if i and i < s.e and ((intent and #self:quantities(i + 1, s.e) == 0 and (against(s.trig, i)
+          or not (same_family(intent, s.intent) or intent == "maintain"
+            or G.value_intents[intent] == "VS" and G.value_intents[s.intent] == "ALT")))
+        or (ends and against(s.trig, i)) or closing
         or (s.intent ~= "hdg" and self:word(i, "@left @right") and not self:in_reason(i))) then
       self:need("I have " .. table.concat(self.out, " ; ") .. ". What does '" .. self.t[i].raw .. "' mean?")
       return
