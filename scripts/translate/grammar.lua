@@ -3221,8 +3221,9 @@ function G:valueless_left(segs, valueless, issued_by)
       bare = bare and (t.kind ~= "word" or t.filler or self.triggers[i] or self:word(i, "@left @right @up @down and then")
         or self:has_ref(i, i + 1, "aircraft"))
     end
-    -- (one refused, "do not descend", is the negation's: the accounting asks about it)
-    local refused = false
+    -- (one refused, "do not descend", is the negation's: the accounting asks about it; one named after "for",
+    -- "standby for descent", is announced, no instruction)
+    local refused = self:word(s.trig - 1, "for")
     for i = math.max(1, s.trig - 2), s.trig - 1 do refused = refused or G.negations[self.t[i].text] end
     local next_word = self:skip_fillers(s.trig + 1)
     local read = not bare or refused or (before and issued_by[v.k - 1] and self:skip_fillers(before.trig + 1) == s.trig)
