@@ -3186,14 +3186,16 @@ function G:parse(b, e)
 end
 
 -- A value instruction with no value of its own (`valueless`: {k, ask} by segment number k of `segs`), left out
--- beside aircraft instructions with a value that issued (`issued_by[k]`: segment k issued a command), is asked,
--- naming what was issued, when its segment holds only instruction words (triggers, a turn's side, "and", "then"),
--- the callsign, fillers and marks ("climb FL300 reduce", "turn KLM12 climb FL300"). It is read as a word of an
--- instruction issued when that instruction's command is one it may issue and none issued changes the other way
--- ("climb and maintain FL300", "speed 280, maintain", "climb FL300 then maintain"; a level and a rate are one:
--- "descend FL200, expedite"), when it is a rate said with no value ("turn left heading 040, expedite": the
--- manner), or when it names what the instruction straight before it asks for ("say alt"). Other words in its
--- segment say what it is ("no speed restrictions") and leave it out as before.
+-- beside value commands issued (ALT, SPD, HDG, VS; `issued_by[k]`: segment k issued a command), is asked, naming
+-- what was issued, when its segment holds only instruction words (triggers, a turn's side, a direction, "and",
+-- "then"), the callsign, fillers and marks ("climb FL300 reduce", "slow down KLM12 climb FL300"). It is read as a
+-- word of an instruction issued when a command it may issue was issued and no instruction of its kind issued
+-- changes the other way ("climb and maintain FL300", "speed 280, maintain"; a level and a rate are one: "descend
+-- FL200, expedite"), when it is a rate said with no value ("turn left heading 040, expedite": the manner), when it
+-- names what the instruction straight before it asks for ("say alt") or it is said straight before the next
+-- instruction's word ("increase the heading by 30"). Refused ("do not descend"), the negation is asked about by
+-- the accounting; named after "for" ("standby for descent") it is announced. Other words in its segment say what
+-- it is ("no speed restrictions") and leave it out as before.
 G.value_intents = { alt = "ALT", maintain = "ALT SPD HDG", spd = "SPD", hdg = "HDG", vs = "VS" }
 G.value_commands = { ALT = true, SPD = true, HDG = true, VS = true }
 G.negations = {}
@@ -3218,16 +3220,17 @@ function G:valueless_left(segs, valueless, issued_by)
     local bare = s.intent ~= "vs"
     for i = s.b, s.e - 1 do
       local t = self.t[i]
-      bare = bare and (t.kind ~= "word" or t.filler or self.triggers[i] or self:word(i, "@left @right @up @down and then")
-        or self:has_ref(i, i + 1, "aircraft"))
+      bare = bare and (t.kind ~= "word" or t.filler or self.triggers[i]
+        or self:word(i, "@left @right @up @down and then") or self:has_ref(i, i + 1, "aircraft"))
     end
     -- (one refused, "do not descend", is the negation's: the accounting asks about it; one named after "for",
     -- "standby for descent", is announced, no instruction)
     local refused = self:word(s.trig - 1, "for")
     for i = math.max(1, s.trig - 2), s.trig - 1 do refused = refused or G.negations[self.t[i].text] end
     local next_word = self:skip_fillers(s.trig + 1)
+    if self:word(next_word, "the") then next_word = self:skip_fillers(next_word + 1) end
     local read = not bare or refused or (before and issued_by[v.k - 1] and self:skip_fillers(before.trig + 1) == s.trig)
-      or (after and issued_by[v.k + 1] and (self:word(next_word, "the") and self:skip_fillers(next_word + 1) or next_word) == after.trig)
+      or (after and issued_by[v.k + 1] and next_word == after.trig)
     for verb in (G.value_intents[s.intent] or ""):gmatch("%u+") do read = read or issued[verb] end
     for j, o in ipairs(segs) do
       if issued_by[j] and G.value_intents[o.intent] == G.value_intents[s.intent] and against(s.trig, o.trig) then
@@ -3257,7 +3260,8 @@ function G:valueless_left(segs, valueless, issued_by)
     for _, r in ipairs(i and i < s.e and not intent and RULES_BY_WORD[self.t[i].text] or {}) do
       stops, keeps = stops or (not r.any and r.intent == "hold"), keeps or r.intent == "maintain"
     end
-    local closing = ends and stops and not keeps and not self.u:used(i) and not (self.explained or {})[i] and not self.noted[i]
+    local closing = ends and stops and not keeps and not self.u:used(i) and not (self.explained or {})[i]
+      and not self.noted[i]
     if i and i < s.e and ((intent and #self:quantities(i + 1, s.e) == 0 and (against(s.trig, i)
           or not (same_family(intent, s.intent) or intent == "maintain"
             or G.value_intents[intent] == "VS" and G.value_intents[s.intent] == "ALT")))

@@ -9190,4 +9190,7 @@ do
   check_eq(ex("KLM12 climb FL300, no speed restriction"), "ALT KLM12 FL300")
   check_eq(ex("KLM12 say altitude"), "POS KLM12")
   check_eq(ex("KLM12 climb FL300 and reduce speed 240"), "ALT KLM12 FL300 ; SPD KLM12 240")
+  check_eq(ex("KLM12 increase the heading by 20"), "HDG KLM12 110 RIGHT")
+  check_eq(ex("KLM12 turn left heading 050, standby for descent"), "HDG KLM12 50 LEFT")
+  check_eq(ex("KLM12 turn left heading 050, don't descend"), "ASK I have HDG KLM12 50 LEFT. What does 'don't' mean?")
 end
