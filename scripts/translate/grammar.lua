@@ -3055,6 +3055,7 @@ local tied_to_waypoint
 function G:parse(b, e)
   local segs = self:split_ellipsis(self:segments(b, e))
   local prev_out = #self.out
+  local valueless, issued_by = {}, {}  -- (G:valueless_left)
   self:orphan_heading(segs[1])
   for k, s in ipairs(segs) do
     if self.ask then break end
@@ -3160,6 +3161,7 @@ function G:parse(b, e)
       if self.ask and spec and spec.value and self:values_after_trigger(s) == 0 and not self:change_word(s.trig)
           and not self:word_in(s.trig + 1, s.e, "minimum maximum min max best optimum optimal clean econ economy") then
         self.pending = self.pending or self.ask
+        valueless[#valueless + 1] = { k = k, ask = self.ask }
         self.ask = nil
       elseif unheld and not self.ask then
         self:need("I have " .. table.concat(self.out, " ; ") .. ". No level was cleared before '"
@@ -3210,12 +3212,102 @@ function G:parse(b, e)
       self.ask = nil
       self:explain(s.trig, nx.b)
     end
+    issued_by[k] = #self.out > prev_out
   end
+  self:valueless_left(segs, valueless, issued_by)
   -- (a waypoint said for the next instruction, with none after it)
   if self.at_next and not self.ask then tied_to_waypoint(self, self.at_next) end
   self.at_next = nil
   self:direct_resumes_nav()
   self:destination_not_waypoint()
+end
+
+-- A value instruction with no value of its own (`valueless`: {k, ask} by segment number k of `segs`), left out
+-- beside value commands issued (ALT, SPD, HDG, VS; `issued_by[k]`: segment k issued a command), is asked, naming
+-- what was issued, when its segment holds only instruction words (triggers, a turn's side, a direction, "and",
+-- "then"), the callsign, fillers and marks ("climb FL300 reduce", "slow down KLM12 climb FL300"). It is read as a
+-- word of an instruction issued when a command it may issue was issued and no instruction of its kind issued
+-- changes the other way ("climb and maintain FL300", "speed 280, maintain"; a level and a rate are one: "descend
+-- FL200, expedite"), when it is a rate said with no value ("turn left heading 040, expedite": the manner), when it
+-- names what the instruction straight before it asks for ("say alt") or it is said straight before the next
+-- instruction's word ("increase the heading by 30"). Refused ("do not descend"), the negation is asked about by
+-- the accounting; named after "for" ("standby for descent") it is announced. Other words in its segment say what
+-- it is ("no speed restrictions") and leave it out as before.
+G.value_intents = { alt = "ALT", maintain = "ALT SPD HDG", spd = "SPD", hdg = "HDG", vs = "VS" }
+G.value_commands = { ALT = true, SPD = true, HDG = true, VS = true }
+G.negations = {}
+for _, w in ipairs(lexicon.accounted.negation) do G.negations[w] = true end
+function G:valueless_left(segs, valueless, issued_by)
+  if self.ask or #self.out == 0 then return end
+  self:dangling_value_name()  -- ("climb fl320 spd": that question first)
+  if self.ask then return end
+  local function against(a, b)  -- true when the words at a and b change the other way ("climb" and "descend")
+    return self:word(a, "@up") and self:word(b, "@down") or self:word(a, "@down") and self:word(b, "@up")
+  end
+  local issued = {}  -- the value commands issued, a rate's as a level's
+  for _, line in ipairs(self.out) do
+    for verb in line:gmatch("%f[%w](%u+)%f[%W]") do
+      if G.value_commands[verb] then issued[verb] = true end
+    end
+  end
+  issued.ALT = issued.ALT or issued.VS
+  if not next(issued) then return end
+  for _, v in ipairs(valueless) do
+    local s, before, after = segs[v.k], segs[v.k - 1], segs[v.k + 1]
+    local bare = s.intent ~= "vs"
+    for i = s.b, s.e - 1 do
+      local t = self.t[i]
+      bare = bare and (t.kind ~= "word" or t.filler or self.triggers[i]
+        or self:word(i, "@left @right @up @down and then") or self:has_ref(i, i + 1, "aircraft"))
+    end
+    -- (one refused, "do not descend", is the negation's: the accounting asks about it; one named after "for",
+    -- "standby for descent", is announced, no instruction)
+    local refused = self:word(s.trig - 1, "for")
+    for i = math.max(1, s.trig - 2), s.trig - 1 do refused = refused or G.negations[self.t[i].text] end
+    local next_word = self:skip_fillers(s.trig + 1)
+    if self:word(next_word, "the") then next_word = self:skip_fillers(next_word + 1) end
+    local read = not bare or refused or (before and issued_by[v.k - 1] and self:skip_fillers(before.trig + 1) == s.trig)
+      or (after and issued_by[v.k + 1] and next_word == after.trig)
+    for verb in (G.value_intents[s.intent] or ""):gmatch("%u+") do read = read or issued[verb] end
+    for j, o in ipairs(segs) do
+      if issued_by[j] and G.value_intents[o.intent] == G.value_intents[s.intent] and against(s.trig, o.trig) then
+        read = false
+      end
+    end
+    if not read then
+      self:need("I have " .. table.concat(self.out, " ; ") .. ". " .. v.ask)
+      return
+    end
+  end
+  -- an instruction word said straight after the value of a value instruction that issued, of another family or
+  -- changing the other way ("climb FL300 descend", "... down"), a word the rules read as a stop of the run
+  -- closing its clause with no instruction read from it ("climb FL300 stop"), or a turn's side said so after a
+  -- value that is no heading ("climb FL300 left")
+  for k, s in ipairs(segs) do
+    -- (a rate's direction follows its value: "vertical speed 1200 up")
+    local q = issued_by[k] and s.intent ~= "vs" and G.value_intents[s.intent] and self:quantities(s.trig + 1, s.e)[1]
+    local i = q and q.e
+    while i and self.t[i] and (self.t[i].kind == "punct" or self.t[i].filler) do i = i + 1 end
+    local intent = i and i < s.e and self.triggers[i] and self:intent_at(i)
+    -- (a word the rules read as a stop of the run, never as keeping a value, closing its clause with no
+    -- instruction read from it: "climb FL300 stop")
+    local nx = i and self:skip_fillers(i + 1)
+    local ends = i and (not self.t[nx] or self.t[nx].kind == "punct")
+    local stops, keeps = false, false
+    for _, r in ipairs(i and i < s.e and not intent and RULES_BY_WORD[self.t[i].text] or {}) do
+      stops, keeps = stops or (not r.any and r.intent == "hold"), keeps or r.intent == "maintain"
+    end
+    local closing = ends and stops and not keeps and not self.u:used(i) and not (self.explained or {})[i]
+      and not self.noted[i]
+    if i and i < s.e and ((intent and #self:quantities(i + 1, s.e) == 0 and (against(s.trig, i)
+          or not (same_family(intent, s.intent) or intent == "maintain"
+            or G.value_intents[intent] == "VS" and G.value_intents[s.intent] == "ALT")))
+        or (ends and against(s.trig, i)) or closing
+        or (s.intent ~= "hdg" and self:word(i, "@left @right") and not self:in_reason(i))) then
+      self:need("I have " .. table.concat(self.out, " ; ") .. ". What does '" .. self.t[i].raw .. "' mean?")
+      return
+    end
+  end
 end
 
 -- The level a segment's instruction waits for, said after it: "..., (but only) when/once it is at /

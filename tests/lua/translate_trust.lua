@@ -9349,3 +9349,37 @@ do
   check_eq(ex("conflict pair: CRECONFS INT4 B738 on AC001, 45 deg, CPA 1, 240 s"), "CRECONFS INT4 B738 AC001 45 1 240")
   asked(ex("conflict pair: CRECONFS on AC001, 45 deg, CPA 1, 240 s"), "no intruder named")
 end
+
+-- Cycle 46 (hz47): an instruction word left with no value beside a complete instruction ("climb FL300 reduce",
+-- "turn KLM12 climb FL300"), one said straight after the value that changes the other way ("climb FL300 descend",
+-- "... down") or stops the run ("... stop"), or a turn's side after a value that is no heading ("... left") is
+-- asked, naming what was issued; words that belong to the instruction read stay read.
+do
+  local _, ex = scene({ "CRE KLM12 B738 52.0 4.6 090 FL200 250" })
+  check_eq(ex("KLM12 climb FL300 reduce"),
+    "ASK I have ALT KLM12 FL300. What speed should KLM12 fly? Please give knots or a Mach number.")
+  check_eq(ex("KLM12 descend FL150 turn"), "ASK I have ALT KLM12 FL150. What heading should KLM12 fly?")
+  asked(ex("slow down KLM12 climb FL300"), "a speed change with no value before the instruction")
+  asked(ex("KLM12 climb FL300 heading"), "a value name with no value")
+  check_eq(ex("KLM12 climb FL300 descend"), "ASK I have ALT KLM12 FL300. What does 'descend' mean?")
+  asked(ex("KLM12 climb FL300 down"), "a change the other way after the value")
+  check_eq(ex("KLM12 climb FL300 left"), "ASK I have ALT KLM12 FL300. What does 'left' mean?")
+  asked(ex("KLM12 reduce 230 stop"), "a stop after a speed")
+  asked(ex("KLM12 speed 240 climb"), "a climb with no level after a speed")
+  -- the words of the instruction read, and a rate said with no value as its manner
+  check_eq(ex("KLM12 climb and maintain FL300"), "ALT KLM12 FL300")
+  check_eq(ex("KLM12 climb FL300 then maintain"), "ALT KLM12 FL300")
+  check_eq(ex("KLM12 speed 240, maintain"), "SPD KLM12 240")
+  check_eq(ex("KLM12 turn right heading 120"), "HDG KLM12 120 RIGHT")
+  check_eq(ex("KLM12 increase speed 280"), "SPD KLM12 280")
+  check_eq(ex("KLM12 descend now FL150"), "ALT KLM12 FL150")
+  check_eq(ex("KLM12 descend FL150, expedite"), "ALT KLM12 FL150")
+  check_eq(ex("KLM12 turn left heading 200, expedite"), "HDG KLM12 200 LEFT")
+  check_eq(ex("KLM12 vertical speed 1500 feet per minute down"), "VS KLM12 -1500")
+  check_eq(ex("KLM12 climb FL300, no speed restriction"), "ALT KLM12 FL300")
+  check_eq(ex("KLM12 say altitude"), "POS KLM12")
+  check_eq(ex("KLM12 climb FL300 and reduce speed 240"), "ALT KLM12 FL300 ; SPD KLM12 240")
+  check_eq(ex("KLM12 increase the heading by 20"), "HDG KLM12 110 RIGHT")
+  check_eq(ex("KLM12 turn left heading 050, standby for descent"), "HDG KLM12 50 LEFT")
+  check_eq(ex("KLM12 turn left heading 050, don't descend"), "ASK I have HDG KLM12 50 LEFT. What does 'don't' mean?")
+end
