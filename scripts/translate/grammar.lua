@@ -1100,8 +1100,8 @@ local function written_forms(text)
   end
   -- "ff 2m": minutes after fast-forward's abbreviation (no metres of time)
   where("ff", "%f[%w]([Ff][Ff]%s+%d+%.?%d*)%s?[Mm]%f[%W]", "%1 min")
-  -- "whats" typed without its apostrophe is "what\'s" ("whats DERLA\'s position")
-  where("whats", "%f[%a]([Ww])[Hh][Aa][Tt][Ss]%f[%A]", "%1hat\'s")
+  -- "whats" typed without its apostrophe is "what's" ("whats DERLA's position")
+  where("whats", "%f[%a]([Ww])[Hh][Aa][Tt][Ss]%f[%A]", "%1hat's")
   -- "realtime" written as one word
   where("realtime", "%f[%a]([Rr][Ee][Aa][Ll])([Tt][Ii][Mm][Ee])%f[%A]", "%1 %2")
   -- "v/s 2500 down": the vertical speed's abbreviation written with a slash

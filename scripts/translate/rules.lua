@@ -286,24 +286,21 @@ return function(intent, rule, words)
     end
     return false
   end
-  -- "drop TRA5K at 52.3 4.0": an aircraft flying set down at a position (a latitude or a decimal straight after
-  -- "at", another value after it) is moved there
-  rule { "drop", "move", when = function(g, i)
-    local r = g:refs_in(i + 1, i + 3, "aircraft")[1]
-    if not (r and r.exists and g:word(r.e, "at")) then return false end
-    local qs = g:quantities(r.e + 1, math.min(#g.t + 1, r.e + 8))
-    return qs[1] ~= nil and qs[2] ~= nil and qs[1].b == r.e + 1
-      and (qs[1].kind == "lat" or (qs[1].kind == "plain" and qs[1].number.decimal))
-  end }
-  -- "drag SWA3388 to 33.1 -96.9 FL180 heading 270": an aircraft flying dragged (on the scope) to a position (a
-  -- latitude or a decimal straight after "to" or "at", another value after it) is moved there
-  rule { "drag dragged", "move", when = function(g, i)
-    local r = g:refs_in(i + 1, i + 3, "aircraft")[1]
-    if not (r and r.exists and g:word(r.e, "to at")) then return false end
-    local qs = g:quantities(r.e + 1, math.min(#g.t + 1, r.e + 8))
-    return qs[1] ~= nil and qs[2] ~= nil and qs[1].b == r.e + 1
-      and (qs[1].kind == "lat" or (qs[1].kind == "plain" and qs[1].number.decimal))
-  end }
+  -- (an aircraft flying set down at a position: a latitude or a decimal straight after one of `words`,
+  -- another value after it)
+  local function set_down_at(words)
+    return function(g, i)
+      local r = g:refs_in(i + 1, i + 3, "aircraft")[1]
+      if not (r and r.exists and g:word(r.e, words)) then return false end
+      local qs = g:quantities(r.e + 1, math.min(#g.t + 1, r.e + 8))
+      return qs[1] ~= nil and qs[2] ~= nil and qs[1].b == r.e + 1
+        and (qs[1].kind == "lat" or (qs[1].kind == "plain" and qs[1].number.decimal))
+    end
+  end
+  -- "drop TRA5K at 52.3 4.0": moved there
+  rule { "drop", "move", when = set_down_at("at") }
+  -- "drag SWA3388 to 33.1 -96.9 FL180 heading 270": an aircraft dragged (on the scope) to a position is moved there
+  rule { "drag dragged", "move", when = set_down_at("to at") }
   -- "drop KLM1234", "drop the KLM agent": an aircraft and nothing after it
   rule { "drop", "delete", when = function(g, i) return aircraft_alone(g, g:skip_fillers(i + 1), false) end }
   -- "drop Cityjet 62 from the exercise": an aircraft that flies dropped from the run
