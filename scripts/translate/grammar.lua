@@ -2235,10 +2235,18 @@ function G:condition()
     end
     i = c
   end
-  if not (self:condition_word(i) or (lead and self:at_speed_word(i))) then return nil, 1 end
+  -- ("at 250 knots AC003 descend FL150", "at speed 250, KLM12 descend FL180": opening the request, for the first
+  -- aircraft said after it)
+  local at_speed = self:at_speed_word(i)
+  if not (self:condition_word(i) or at_speed) then return nil, 1 end
   local comma = i + 1
   while comma <= #self.t and not (self.t[comma].kind == "punct" and self.t[comma].text == ",") do comma = comma + 1 end
   local rest = comma + 1
+  -- (a speed after "at" ends the condition at its value, a comma after it or not)
+  if at_speed then
+    comma = self:quantities(at_speed, #self.t + 1)[1].e
+    rest = self.t[comma] and self.t[comma].kind == "punct" and comma + 1 or comma
+  end
   -- "when the dash 8 gets to GADUM set its speed to 180", "when WJA661 passes ADLER set speed 220": with no
   -- comma, a waypoint the aircraft reaches (no value before it) ends the condition, an instruction after it
   local reached = comma > #self.t and self:refs_in(i, #self.t + 1, "waypoint")[1]
@@ -2268,6 +2276,7 @@ function G:condition()
   local ids = self:refs_in(i, comma, "aircraft")
   if lead and #ids > 0 then return nil, 1 end
   if lead then ids = { lead } end
+  if at_speed and #ids == 0 then ids = { self:refs_in(rest, #self.t + 1, "aircraft")[1] } end
   if #ids == 0 then return nil, 1 end
   self.subject = ids[1].name
   local f = handlers.format
@@ -4151,16 +4160,23 @@ function G:uncarried()
     end
     return false
   end
+  -- (a bare number after "at" or "at time", "at 120 AC003 descend FL150", "KLM12 at 250 descend FL180", is a
+  -- moment or a speed said with no unit, never callsign noise: asked with its "at"; the position of "at", or nil)
+  local function at_word(q)
+    local a = self:word(q.b - 1, "time") and q.b - 2 or q.b - 1
+    return self:word(a, "at") and not self:word(q.e, "o'clock oclock") and not self:in_reason(q.b) and a or nil
+  end
   for _, q in ipairs(self:quantities(1, #self.t + 1)) do
     -- (a plain number with a decimal point is a coordinate; one of two digits or more said after the first
     -- instruction word is a value said for an instruction, "descend FL130, reducing 250", never dropped in
     -- silence; single digits, and numbers before any instruction, "United 82 82 flight 8180 descend", are
     -- often recognition noise in a callsign)
-    if (MUST_CARRY[q.kind] or (q.kind == "plain" and (q.number.decimal
+    local at = q.kind == "plain" and at_word(q)
+    if (MUST_CARRY[q.kind] or (q.kind == "plain" and (q.number.decimal or at
           or (q.value >= 10 and (q.b > first or said_for_aircraft(q))))))
         and not self.taken[q.b]
         and not ((q.by or relative) and not position(q)) and q.b > corrected and not value_carried(q, nums) then
-      self.leftover = self:raw(q.b, q.e)
+      self.leftover = self:raw(at or q.b, q.e)
       return
     end
   end

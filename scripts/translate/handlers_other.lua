@@ -3039,8 +3039,24 @@ return function(H, f, compass)
         return self:emit("DTMULT " .. f.num(L.fractions[self.t[e - 1].text]))
       end
     end
-    local q = first(self, s, { mult = true, plain = true })
-    if q then return self:emit("DTMULT " .. f.num(q.value)) end
+    -- (a bare number after "at" before the instruction word, "at 120 dtmult 4", is no rate: left over, asked)
+    local q
+    for _, p in ipairs(self:quantities(s.b, s.e)) do
+      if not q and (p.kind == "mult" or p.kind == "plain") and not self:in_reason(p.b)
+          and not (p.kind == "plain" and p.b < s.trig and self:word(p.b - 1, "at")) then
+        q = p
+      end
+    end
+    if q then
+      -- ("set multiplier 8 and run at 4x", "dtmult 8 dtmult 4": two rates for the one clock are asked)
+      for _, p in ipairs(self:quantities(q.e, s.e)) do
+        if (p.kind == "mult" or p.kind == "plain") and p.value ~= q.value and not self:in_reason(p.b) then
+          return self:need(string.format("Which rate should the simulation run at: %s or %s times real time?",
+            f.num(q.value), f.num(p.value)))
+        end
+      end
+      return self:emit("DTMULT " .. f.num(q.value))
+    end
     -- "pause, then 3x speed", "and then 5 times faster": a factor said before the instruction word, in
     -- its clause (no comma, "then" or "and" between), no other instruction's
     local k = s.b - 1
