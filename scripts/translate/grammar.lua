@@ -4130,7 +4130,7 @@ end
 -- 52.0 4.0 and A2 at 52.0 5.0": a second waypoint not made) is a leftover,
 -- asked about by name. (Values said relative to something, or before a
 -- correction, are the instructions' to explain.)
-local MUST_CARRY = { time = true, lat = true, lon = true, alt = true, speed = true, mach = true }
+local MUST_CARRY = { time = true, lat = true, lon = true, alt = true, speed = true, mach = true, mult = true }
 function G:uncarried()
   -- (a value relative to another's, or a change "by" an amount; "as" alone is no comparison: "and slow it
   -- to 250 knots as well"; a position is neither: "cross 30 West at or above FL360", "by 20 West")

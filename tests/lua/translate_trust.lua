@@ -9385,3 +9385,11 @@ do
   check_eq(ex("run the sim at 3x"), "DTMULT 3")
   check_eq(ex("dtmult 5, dtmult 5"), "DTMULT 5")
 end
+
+-- Cycle 46 (hz48): a rate ("3x") no command carries is asked, never dropped
+do
+  local _, ex = scene({ "CRE AC001 B744 52.0 4.0 090 FL300 300" })
+  check_eq(ex("run the sim at 3x and AC001 descend FL250"), "ASK I have ALT AC001 FL250. What does '3 x' mean?")
+  asked(ex("at 3x AC001 descend FL250"), "a rate opening the request")
+  check_eq(ex("run at 3x, AC001 descend FL250"), "DTMULT 3 ; ALT AC001 FL250")
+end
