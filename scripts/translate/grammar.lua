@@ -1036,8 +1036,9 @@ local function written_forms(text)
   end
   -- ".hold", ".run": a command typed with a text client's leading dot is the word
   where("%.", "^(%s*)%.(%a)", "%1%2")
-  -- "@ FL200", "x NAXEL @ 250": an at sign typed apart before a value or a name is "at"
+  -- "@ FL200", "x NAXEL @ 250", "@ 120 s ...": an at sign typed apart before a value or a name is "at"
   where("@", "(%s)@%s*(%w)", "%1at %2")
+  where("@", "^@%s*(%w)", "at %1")
   text = typed_abbreviations(lone_multipliers(tokens.numerals_apart(text, DIGIT_WORDS)))
   text = hyphened_types(spelled(heard_forms(negated_values(readback_heard(self_corrections(unlabelled(foreign_digits(G.said_whole(text)))))))))
   low = text:lower()
@@ -2187,14 +2188,17 @@ function G:condition_word(i)
   return nil
 end
 
--- The position of "speed" when "at speed N" at i opens a condition on reaching that speed: the number straight
--- after the noun and an instruction after it ("KLM12 at speed 250 descend FL180"), else nil. With "and" or "then"
--- between ("at speed 250 and descend FL180": the speed flown now, or the moment it is reached?) it is asked.
+-- The position of "speed" (of the value, with no noun) when "at speed N" at i opens a condition on reaching that
+-- speed: the number straight after the noun and an instruction after it ("KLM12 at speed 250 descend FL180"), else
+-- nil. With "and" or "then" between ("at speed 250 and descend FL180": the speed flown now, or the moment it is
+-- reached?) it is asked.
 function G:at_speed_word(i)
   if not self:word(i, "at") then return nil end
-  local noun = self:word(i + 1, "speed airspeed")
-  local q = self:quantities(noun and i + 2 or i + 1, #self.t + 1)[1]
-  if not q or q.b ~= (noun and i + 2 or i + 1) then return nil end
+  -- ("at about 250 knots": a value said loosely is the value said)
+  local v = self:word(i + 1, "about around approximately roughly") and i + 2 or i + 1
+  local noun = self:word(v, "speed airspeed")
+  local q = self:quantities(noun and v + 1 or v, #self.t + 1)[1]
+  if not q or q.b ~= (noun and v + 1 or v) then return nil end
   -- ("KLM12 at 250 knots descend FL180", "at Mach .78": without the noun, the speed's own unit)
   if not (q.kind == "speed" or q.kind == "mach" or (noun and q.kind == "plain")) then return nil end
   local k = q.e
@@ -2205,7 +2209,7 @@ function G:at_speed_word(i)
       self.t[q.b].text)
     return nil
   end
-  return i + 1
+  return v
 end
 
 function G:condition()
@@ -4130,6 +4134,16 @@ end
 -- 52.0 4.0 and A2 at 52.0 5.0": a second waypoint not made) is a leftover,
 -- asked about by name. (Values said relative to something, or before a
 -- correction, are the instructions' to explain.)
+-- The position of "at" when quantity q is a bare number said after it ("at 120", "at time 120", "at about 120"),
+-- else nil.
+function G:at_number(q)
+  if q.kind ~= "plain" then return nil end
+  local a = q.b - 1
+  while a > 0 and self.t[a].filler do a = a - 1 end
+  if self:word(a, "time about around approximately roughly") then a = a - 1 end
+  return self:word(a, "at") and a or nil
+end
+
 local MUST_CARRY = { time = true, lat = true, lon = true, alt = true, speed = true, mach = true, mult = true }
 function G:uncarried()
   -- (a value relative to another's, or a change "by" an amount; "as" alone is no comparison: "and slow it
@@ -4160,18 +4174,18 @@ function G:uncarried()
     end
     return false
   end
-  -- (a bare number after "at" or "at time", "at 120 AC003 descend FL150", "KLM12 at 250 descend FL180", is a
-  -- moment or a speed said with no unit, never callsign noise: asked with its "at"; the position of "at", or nil)
+  -- (a bare number after "at", "at 120 AC003 descend FL150", "KLM12 at 250 descend FL180", is a moment or a
+  -- speed said with no unit, never callsign noise: asked with its "at"; the position of "at", or nil)
   local function at_word(q)
-    local a = self:word(q.b - 1, "time") and q.b - 2 or q.b - 1
-    return self:word(a, "at") and not self:word(q.e, "o'clock oclock") and not self:in_reason(q.b) and a or nil
+    local a = self:at_number(q)
+    return a and not self:word(q.e, "o'clock oclock") and not self:in_reason(q.b) and a or nil
   end
   for _, q in ipairs(self:quantities(1, #self.t + 1)) do
     -- (a plain number with a decimal point is a coordinate; one of two digits or more said after the first
     -- instruction word is a value said for an instruction, "descend FL130, reducing 250", never dropped in
     -- silence; single digits, and numbers before any instruction, "United 82 82 flight 8180 descend", are
     -- often recognition noise in a callsign)
-    local at = q.kind == "plain" and at_word(q)
+    local at = at_word(q)
     if (MUST_CARRY[q.kind] or (q.kind == "plain" and (q.number.decimal or at
           or (q.value >= 10 and (q.b > first or said_for_aircraft(q))))))
         and not self.taken[q.b]

@@ -3043,7 +3043,7 @@ return function(H, f, compass)
     local q
     for _, p in ipairs(self:quantities(s.b, s.e)) do
       if not q and (p.kind == "mult" or p.kind == "plain") and not self:in_reason(p.b)
-          and not (p.kind == "plain" and p.b < s.trig and self:word(p.b - 1, "at")) then
+          and not (p.b < s.trig and self:at_number(p)) then
         q = p
       end
     end

@@ -9393,3 +9393,13 @@ do
   asked(ex("at 3x AC001 descend FL250"), "a rate opening the request")
   check_eq(ex("run at 3x, AC001 descend FL250"), "DTMULT 3 ; ALT AC001 FL250")
 end
+
+-- Cycle 46 (hz48): a value said loosely after "at" ("at about 120", "at around 260 knots") is read as the value said
+do
+  local _, ex = scene({ "CRE AC001 B744 52.0 4.0 090 FL300 300", "CRE AC002 A320 52.3 4.3 180 FL280 280" })
+  check_eq(ex("at around 90 AC001 turn left heading 200"),
+    "ASK I have HDG AC001 200 LEFT. What does 'at around 90' mean?")
+  check_eq(ex("at about 260 knots AC002 descend FL240"), "ATSPD AC002 260 ALT AC002 FL240")
+  check_eq(ex("AC002 at roughly 260 knots descend FL240"), "ATSPD AC002 260 ALT AC002 FL240")
+  check_eq(ex("@ 90 AC001 turn left heading 200"), "ASK I have HDG AC001 200 LEFT. What does 'at 90' mean?")
+end
