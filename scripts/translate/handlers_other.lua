@@ -3048,12 +3048,25 @@ return function(H, f, compass)
       end
     end
     if q then
-      -- ("set multiplier 8 and run at 4x", "dtmult 8 dtmult 4": two rates for the one clock are asked)
+      -- ("set multiplier 8 and run at 4x", "time acceleration 8 and run it at twice real time": two rates for the
+      -- one clock, with no time said between, are asked)
+      local e = s.e
       for _, p in ipairs(self:quantities(q.e, s.e)) do
-        if (p.kind == "mult" or p.kind == "plain") and p.value ~= q.value and not self:in_reason(p.b) then
-          return self:need(string.format("Which rate should the simulation run at: %s or %s times real time?",
-            f.num(q.value), f.num(p.value)))
+        if p.kind == "time" then e = math.min(e, p.b) end
+      end
+      local other
+      for _, p in ipairs(self:quantities(q.e, e)) do
+        if (p.kind == "mult" or p.kind == "plain") and not self:in_reason(p.b) and p.value ~= q.value then
+          other = other or p.value
         end
+      end
+      for i = q.e, e - 1 do
+        local v = self.t[i].kind == "word" and L.multipliers[self.t[i].text]
+        if v and v ~= q.value then other = other or v end
+      end
+      if other then
+        return self:need(string.format("Which rate should the simulation run at: %s or %s times real time?",
+          f.num(q.value), f.num(other)))
       end
       return self:emit("DTMULT " .. f.num(q.value))
     end

@@ -9403,3 +9403,12 @@ do
   check_eq(ex("AC002 at roughly 260 knots descend FL240"), "ATSPD AC002 260 ALT AC002 FL240")
   check_eq(ex("@ 90 AC001 turn left heading 200"), "ASK I have HDG AC001 200 LEFT. What does 'at 90' mean?")
 end
+
+-- Cycle 46 (hz48): a second rate said in words ("twice") is a second rate too; one after a time said waits for it
+do
+  local _, ex = scene({})
+  check_eq(ex("time acceleration 6 and run it at twice real time"),
+    "ASK Which rate should the simulation run at: 6 or 2 times real time?")
+  check_eq(ex("dtmult 3 and run at triple speed"), "DTMULT 3")
+  asked(ex("dtmult 6, and in 90 seconds dtmult 1"), "a rate after a time is no second rate now")
+end
