@@ -1036,8 +1036,9 @@ local function written_forms(text)
   end
   -- ".hold", ".run": a command typed with a text client's leading dot is the word
   where("%.", "^(%s*)%.(%a)", "%1%2")
-  -- "@ FL200", "x NAXEL @ 250": an at sign typed apart before a value or a name is "at"
+  -- "@ FL200", "x NAXEL @ 250", "@ 120 s ...": an at sign typed apart before a value or a name is "at"
   where("@", "(%s)@%s*(%w)", "%1at %2")
+  where("@", "^@%s*(%w)", "at %1")
   text = typed_abbreviations(lone_multipliers(tokens.numerals_apart(text, DIGIT_WORDS)))
   text = hyphened_types(spelled(heard_forms(negated_values(readback_heard(self_corrections(unlabelled(foreign_digits(G.said_whole(text)))))))))
   low = text:lower()
@@ -2187,14 +2188,17 @@ function G:condition_word(i)
   return nil
 end
 
--- The position of "speed" when "at speed N" at i opens a condition on reaching that speed: the number straight
--- after the noun and an instruction after it ("KLM12 at speed 250 descend FL180"), else nil. With "and" or "then"
--- between ("at speed 250 and descend FL180": the speed flown now, or the moment it is reached?) it is asked.
+-- The position of "speed" (of the value, with no noun) when "at speed N" at i opens a condition on reaching that
+-- speed: the number straight after the noun and an instruction after it ("KLM12 at speed 250 descend FL180"), else
+-- nil. With "and" or "then" between ("at speed 250 and descend FL180": the speed flown now, or the moment it is
+-- reached?) it is asked.
 function G:at_speed_word(i)
   if not self:word(i, "at") then return nil end
-  local noun = self:word(i + 1, "speed airspeed")
-  local q = self:quantities(noun and i + 2 or i + 1, #self.t + 1)[1]
-  if not q or q.b ~= (noun and i + 2 or i + 1) then return nil end
+  -- ("at about 250 knots": a value said loosely is the value said)
+  local v = self:word(i + 1, "about around approximately roughly") and i + 2 or i + 1
+  local noun = self:word(v, "speed airspeed")
+  local q = self:quantities(noun and v + 1 or v, #self.t + 1)[1]
+  if not q or q.b ~= (noun and v + 1 or v) then return nil end
   -- ("KLM12 at 250 knots descend FL180", "at Mach .78": without the noun, the speed's own unit)
   if not (q.kind == "speed" or q.kind == "mach" or (noun and q.kind == "plain")) then return nil end
   local k = q.e
@@ -2205,7 +2209,7 @@ function G:at_speed_word(i)
       self.t[q.b].text)
     return nil
   end
-  return i + 1
+  return v
 end
 
 function G:condition()
@@ -2235,10 +2239,18 @@ function G:condition()
     end
     i = c
   end
-  if not (self:condition_word(i) or (lead and self:at_speed_word(i))) then return nil, 1 end
+  -- ("at 250 knots AC003 descend FL150", "at speed 250, KLM12 descend FL180": opening the request, for the first
+  -- aircraft said after it)
+  local at_speed = self:at_speed_word(i)
+  if not (self:condition_word(i) or at_speed) then return nil, 1 end
   local comma = i + 1
   while comma <= #self.t and not (self.t[comma].kind == "punct" and self.t[comma].text == ",") do comma = comma + 1 end
   local rest = comma + 1
+  -- (a speed after "at" ends the condition at its value, a comma after it or not)
+  if at_speed then
+    comma = self:quantities(at_speed, #self.t + 1)[1].e
+    rest = self.t[comma] and self.t[comma].kind == "punct" and comma + 1 or comma
+  end
   -- "when the dash 8 gets to GADUM set its speed to 180", "when WJA661 passes ADLER set speed 220": with no
   -- comma, a waypoint the aircraft reaches (no value before it) ends the condition, an instruction after it
   local reached = comma > #self.t and self:refs_in(i, #self.t + 1, "waypoint")[1]
@@ -2268,6 +2280,7 @@ function G:condition()
   local ids = self:refs_in(i, comma, "aircraft")
   if lead and #ids > 0 then return nil, 1 end
   if lead then ids = { lead } end
+  if at_speed and #ids == 0 then ids = { self:refs_in(rest, #self.t + 1, "aircraft")[1] } end
   if #ids == 0 then return nil, 1 end
   self.subject = ids[1].name
   local f = handlers.format
@@ -4213,7 +4226,17 @@ end
 -- 52.0 4.0 and A2 at 52.0 5.0": a second waypoint not made) is a leftover,
 -- asked about by name. (Values said relative to something, or before a
 -- correction, are the instructions' to explain.)
-local MUST_CARRY = { time = true, lat = true, lon = true, alt = true, speed = true, mach = true }
+-- The position of "at" when quantity q is a bare number said after it ("at 120", "at time 120", "at about 120"),
+-- else nil.
+function G:at_number(q)
+  if q.kind ~= "plain" then return nil end
+  local a = q.b - 1
+  while a > 0 and self.t[a].filler do a = a - 1 end
+  if self:word(a, "time about around approximately roughly") then a = a - 1 end
+  return self:word(a, "at") and a or nil
+end
+
+local MUST_CARRY = { time = true, lat = true, lon = true, alt = true, speed = true, mach = true, mult = true }
 function G:uncarried()
   -- (a value relative to another's, or a change "by" an amount; "as" alone is no comparison: "and slow it
   -- to 250 knots as well"; a position is neither: "cross 30 West at or above FL360", "by 20 West")
@@ -4243,16 +4266,23 @@ function G:uncarried()
     end
     return false
   end
+  -- (a bare number after "at", "at 120 AC003 descend FL150", "KLM12 at 250 descend FL180", is a moment or a
+  -- speed said with no unit, never callsign noise: asked with its "at"; the position of "at", or nil)
+  local function at_word(q)
+    local a = self:at_number(q)
+    return a and not self:word(q.e, "o'clock oclock") and not self:in_reason(q.b) and a or nil
+  end
   for _, q in ipairs(self:quantities(1, #self.t + 1)) do
     -- (a plain number with a decimal point is a coordinate; one of two digits or more said after the first
     -- instruction word is a value said for an instruction, "descend FL130, reducing 250", never dropped in
     -- silence; single digits, and numbers before any instruction, "United 82 82 flight 8180 descend", are
     -- often recognition noise in a callsign)
-    if (MUST_CARRY[q.kind] or (q.kind == "plain" and (q.number.decimal
+    local at = at_word(q)
+    if (MUST_CARRY[q.kind] or (q.kind == "plain" and (q.number.decimal or at
           or (q.value >= 10 and (q.b > first or said_for_aircraft(q))))))
         and not self.taken[q.b]
         and not ((q.by or relative) and not position(q)) and q.b > corrected and not value_carried(q, nums) then
-      self.leftover = self:raw(q.b, q.e)
+      self.leftover = self:raw(at or q.b, q.e)
       return
     end
   end

@@ -3039,8 +3039,37 @@ return function(H, f, compass)
         return self:emit("DTMULT " .. f.num(L.fractions[self.t[e - 1].text]))
       end
     end
-    local q = first(self, s, { mult = true, plain = true })
-    if q then return self:emit("DTMULT " .. f.num(q.value)) end
+    -- (a bare number after "at" before the instruction word, "at 120 dtmult 4", is no rate: left over, asked)
+    local q
+    for _, p in ipairs(self:quantities(s.b, s.e)) do
+      if not q and (p.kind == "mult" or p.kind == "plain") and not self:in_reason(p.b)
+          and not (p.b < s.trig and self:at_number(p)) then
+        q = p
+      end
+    end
+    if q then
+      -- ("set multiplier 8 and run at 4x", "time acceleration 8 and run it at twice real time": two rates for the
+      -- one clock, with no time said between, are asked)
+      local e = s.e
+      for _, p in ipairs(self:quantities(q.e, s.e)) do
+        if p.kind == "time" then e = math.min(e, p.b) end
+      end
+      local other
+      for _, p in ipairs(self:quantities(q.e, e)) do
+        if (p.kind == "mult" or p.kind == "plain") and not self:in_reason(p.b) and p.value ~= q.value then
+          other = other or p.value
+        end
+      end
+      for i = q.e, e - 1 do
+        local v = self.t[i].kind == "word" and L.multipliers[self.t[i].text]
+        if v and v ~= q.value then other = other or v end
+      end
+      if other then
+        return self:need(string.format("Which rate should the simulation run at: %s or %s times real time?",
+          f.num(q.value), f.num(other)))
+      end
+      return self:emit("DTMULT " .. f.num(q.value))
+    end
     -- "pause, then 3x speed", "and then 5 times faster": a factor said before the instruction word, in
     -- its clause (no comma, "then" or "and" between), no other instruction's
     local k = s.b - 1

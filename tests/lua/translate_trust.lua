@@ -3622,7 +3622,7 @@ do
   local _, ex = scene({ "CRE AEA6062 B738 42 2 090 FL300 280", "DEFWPT XING2 42.2 2.5", "ADDWPT AEA6062 XING2",
     "CRE KLM12 B738 42 3 090 FL300 280" })
   check(ex("KLM12 330, turn left 090"):match("^ASK .*'330'") ~= nil, "a number before the instruction")
-  check(ex("AEA6062 at 330, direct XING2"):match("^ASK .*'330'") ~= nil, "a number after 'at' before a direct")
+  check(ex("AEA6062 at 330, direct XING2"):match("^ASK .*'at 330'") ~= nil, "a number after 'at' before a direct")
   check(ex("KLM12 330 and turn left 090"):match("^ASK .*'330'") ~= nil, "a number before 'and'")
   check_eq(ex("KLM12 250 kts, turn left 090"), "SPD KLM12 250 ; HDG KLM12 90 LEFT")
 end
@@ -9382,4 +9382,67 @@ do
   check_eq(ex("KLM12 increase the heading by 20"), "HDG KLM12 110 RIGHT")
   check_eq(ex("KLM12 turn left heading 050, standby for descent"), "HDG KLM12 50 LEFT")
   check_eq(ex("KLM12 turn left heading 050, don't descend"), "ASK I have HDG KLM12 50 LEFT. What does 'don't' mean?")
+end
+
+-- Cycle 46 (hz48): a bare number after "at" or "at time" before the instruction is asked, with its "at", never
+-- dropped; with a unit it is read (a time: SCHEDULE; a speed: ATSPD)
+do
+  local _, ex = scene({ "CRE AC001 B744 52.0 4.0 090 FL300 300", "CRE AC002 A320 52.3 4.3 180 FL280 280" })
+  check_eq(ex("at 90 AC001 turn left heading 200"), "ASK I have HDG AC001 200 LEFT. What does 'at 90' mean?")
+  check_eq(ex("at time 300 AC002 climb FL320"), "ASK I have ALT AC002 FL320. What does 'at time 300' mean?")
+  check_eq(ex("AC002 at 270 climb FL320"), "ASK I have ALT AC002 FL320. What does 'at 270' mean?")
+  asked(ex("at 7 AC001 descend FL250"), "a single digit after at")
+  check_eq(ex("at 90 seconds AC001 turn left heading 200"), "SCHEDULE 00:01:30 HDG AC001 200 LEFT")
+  check_eq(ex("AC002 at 330, climb FL320"), "ASK I have ALT AC002 FL320. What does 'at 330' mean?")
+end
+
+-- Cycle 46 (hz48): a speed after "at" opening the request, the aircraft said after it, is a condition on reaching
+-- that speed (ATSPD), as after the callsign; the condition ends at the speed
+do
+  local _, ex = scene({ "CRE AC001 B744 52.0 4.0 090 FL300 300", "CRE AC002 A320 52.3 4.3 180 FL280 280" })
+  check_eq(ex("at 260 knots AC002 descend FL240"), "ATSPD AC002 260 ALT AC002 FL240")
+  check_eq(ex("at speed 280, AC001 turn right heading 120"), "ATSPD AC001 280 HDG AC001 120 RIGHT")
+  check_eq(ex("at mach .80 AC001 climb FL340"), "ATSPD AC001 M0.8 ALT AC001 FL340")
+  check_eq(ex("AC002 at 260 knots descend FL240, then turn left heading 150"),
+    "ATSPD AC002 260 ALT AC002 FL240 ; ATSPD AC002 260 HDG AC002 150 LEFT")
+  asked(ex("at speed 280 then AC001 turn right heading 120"), "flown now or a condition")
+  asked(ex("at 260 knots AC002 descend FL240 and AC001 climb FL320"), "the condition's aircraft only")
+end
+
+-- Cycle 46 (hz48): the clock's rate is the value after the instruction word, never a bare number after "at"
+-- before it; two rates for the one clock are asked
+do
+  local _, ex = scene({})
+  check_eq(ex("at 600 dtmult 3"), "ASK I have DTMULT 3. What does 'at 600' mean?")
+  check_eq(ex("dtmult 6 and run at 2x"), "ASK Which rate should the simulation run at: 6 or 2 times real time?")
+  asked(ex("set the multiplier to 5 and then 10 times"), "two rates")
+  check_eq(ex("run the sim at 3x"), "DTMULT 3")
+  check_eq(ex("dtmult 5, dtmult 5"), "DTMULT 5")
+end
+
+-- Cycle 46 (hz48): a rate ("3x") no command carries is asked, never dropped
+do
+  local _, ex = scene({ "CRE AC001 B744 52.0 4.0 090 FL300 300" })
+  check_eq(ex("run the sim at 3x and AC001 descend FL250"), "ASK I have ALT AC001 FL250. What does '3 x' mean?")
+  asked(ex("at 3x AC001 descend FL250"), "a rate opening the request")
+  check_eq(ex("run at 3x, AC001 descend FL250"), "DTMULT 3 ; ALT AC001 FL250")
+end
+
+-- Cycle 46 (hz48): a value said loosely after "at" ("at about 120", "at around 260 knots") is read as the value said
+do
+  local _, ex = scene({ "CRE AC001 B744 52.0 4.0 090 FL300 300", "CRE AC002 A320 52.3 4.3 180 FL280 280" })
+  check_eq(ex("at around 90 AC001 turn left heading 200"),
+    "ASK I have HDG AC001 200 LEFT. What does 'at around 90' mean?")
+  check_eq(ex("at about 260 knots AC002 descend FL240"), "ATSPD AC002 260 ALT AC002 FL240")
+  check_eq(ex("AC002 at roughly 260 knots descend FL240"), "ATSPD AC002 260 ALT AC002 FL240")
+  check_eq(ex("@ 90 AC001 turn left heading 200"), "ASK I have HDG AC001 200 LEFT. What does 'at 90' mean?")
+end
+
+-- Cycle 46 (hz48): a second rate said in words ("twice") is a second rate too; one after a time said waits for it
+do
+  local _, ex = scene({})
+  check_eq(ex("time acceleration 6 and run it at twice real time"),
+    "ASK Which rate should the simulation run at: 6 or 2 times real time?")
+  check_eq(ex("dtmult 3 and run at triple speed"), "DTMULT 3")
+  asked(ex("dtmult 6, and in 90 seconds dtmult 1"), "a rate after a time is no second rate now")
 end
