@@ -4232,7 +4232,7 @@ function G:at_number(q)
   if q.kind ~= "plain" then return nil end
   local a = q.b - 1
   while a > 0 and self.t[a].filler do a = a - 1 end
-  if self:word(a, "time about around approximately roughly") then a = a - 1 end
+  if self:word(a, "time minute second about around approximately roughly") then a = a - 1 end
   return self:word(a, "at") and a or nil
 end
 

@@ -9446,3 +9446,12 @@ do
   check_eq(ex("dtmult 3 and run at triple speed"), "DTMULT 3")
   asked(ex("dtmult 6, and in 90 seconds dtmult 1"), "a rate after a time is no second rate now")
 end
+
+-- Cycle 46 (lead): a moment named by its unit before the number ("at minute 5", "at second 30") is no time
+-- squawk reads: asked with its "at", never dropped; "at 5 minutes" is the schedule
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL200 250", "CRE BAW1 B738 52.2 4.2 270 FL220 250" })
+  asked(ex("at minute 5 KLM12 descend FL150"), "a minute named before its number")
+  asked(ex("at second 30 KLM12 descend FL150"), "a second named before its number")
+  check_eq(ex("at 5 minutes KLM12 descend FL150"), "SCHEDULE 00:05:00 ALT KLM12 FL150")
+end
