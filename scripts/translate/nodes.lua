@@ -69,11 +69,15 @@ local function canonical_name(word)
 end
 M.canonical_name = canonical_name
 
+-- Registry name -> the command's usage line, from the registry (read once: a call of squawk.sim.commands()
+-- builds every command's table, some 40 us); a name the registry lacks is its own usage.
+local usages
 local function usage_of(name)
-  for _, c in ipairs(squawk.sim.commands()) do
-    if c.name == name then return c.usage end
+  if not usages then
+    usages = {}
+    for _, c in ipairs(squawk.sim.commands()) do usages[c.name] = c.usage end
   end
-  return name
+  return usages[name] or name
 end
 
 -- One line per aircraft: what the LLM needs to fill relative values.
