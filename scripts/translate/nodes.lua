@@ -385,8 +385,8 @@ end
 -- True when an argument of the command `name` typed in `line` is an English word of the grammar.
 local function has_english_word(line, name)
   -- ("echo test start please": a courtesy word closing ECHO's text is said to us, not printed: English)
-  local last = line:lower():match("%s(%a+)[%s%.!]*$")
-  if name == "ECHO" and (last == "please" or last == "pls" or last == "thanks") then return true end
+  local last = name == "ECHO" and line:lower():match("%s(%a+)[%s%.!]*$")
+  if last == "please" or last == "pls" or last == "thanks" then return true end
   local n = 0
   for w in line:gmatch("[^%s,]+") do
     n = n + 1
