@@ -299,7 +299,7 @@ function M.spoken(text, built, phonetic)
         or w == "seven" or w:match("^7%d7$") or ph[w] or (w:find("%p$") and ph[(w:gsub("%p+$", ""))])) then
       return nil
     end
-    local spelled, after = spelled_designator(toks, i, built, phonetic or {})
+    local spelled, after = spelled_designator(toks, i, built, ph)
     if spelled then return spelled, after end
     local maker = LETTERS[w] and w or nil
     local lead = maker and w or ""
