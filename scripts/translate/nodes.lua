@@ -69,11 +69,15 @@ local function canonical_name(word)
 end
 M.canonical_name = canonical_name
 
+-- Registry name -> the command's usage line, from the registry (read once: a call of squawk.sim.commands()
+-- builds every command's table, some 40 us); a name the registry lacks is its own usage.
+local usages
 local function usage_of(name)
-  for _, c in ipairs(squawk.sim.commands()) do
-    if c.name == name then return c.usage end
+  if not usages then
+    usages = {}
+    for _, c in ipairs(squawk.sim.commands()) do usages[c.name] = c.usage end
   end
-  return name
+  return usages[name] or name
 end
 
 -- One line per aircraft: what the LLM needs to fill relative values.
@@ -381,8 +385,8 @@ end
 -- True when an argument of the command `name` typed in `line` is an English word of the grammar.
 local function has_english_word(line, name)
   -- ("echo test start please": a courtesy word closing ECHO's text is said to us, not printed: English)
-  local last = line:lower():match("%s(%a+)[%s%.!]*$")
-  if name == "ECHO" and (last == "please" or last == "pls" or last == "thanks") then return true end
+  local last = name == "ECHO" and line:lower():match("%s(%a+)[%s%.!]*$")
+  if last == "please" or last == "pls" or last == "thanks" then return true end
   local n = 0
   for w in line:gmatch("[^%s,]+") do
     n = n + 1
@@ -404,14 +408,18 @@ end
 function M.typed(state, ctx)
   local cmds = M.split_commands(state.request)
   if #cmds == 0 then return "english" end
-  local scratch  -- a copy of ctx.sim, made once a line may be TrafScript (most English ends before)
+  -- a copy of ctx.sim, made when first read (most English ends before)
+  local scratch
+  local function copy()
+    scratch = scratch or ctx.sim:copy()
+    return scratch
+  end
   -- "zoner?", "reso?": a setting's command name asked about alone is that command with no argument, which
   -- shows the setting (only a command whose arguments are all optional; "hold?" runs nothing)
   local asked = #cmds == 1 and cmds[1]:match("^%s*([%a_]+)%s*%?%s*$")
   local shown = asked and canonical_name(asked)
   if shown and (usage_of(shown) or ""):match("^%S+%s+%[") then
-    scratch = ctx.sim:copy()
-    if scratch:check(shown) then
+    if copy():check(shown) then
       state.candidate, state.source = shown, "typed"
       M.say(state, "typed", "a setting asked about: shown by " .. shown)
       return "trafscript"
@@ -426,24 +434,23 @@ function M.typed(state, ctx)
     -- ("Echo Charlie Kilo Juliett Bravo, climb ..."), spells a callsign: English, not ECHO
     if lexicon.phonetic[first:lower()] and lexicon.phonetic[second:lower()] then return "english" end
     if not canonical_name(first) and not canonical_name(second) then return "english" end
-    scratch = scratch or ctx.sim:copy()
     if not canonical_name(first) then
       -- "KL204 HDG 045": BlueSky's callsign-first form, run command first
-      if not scratch:get(first) then return "english" end
+      if not copy():get(first) then return "english" end
       c = second .. " " .. first .. rest
       cmds[k] = c
     end
     -- an argument that is an English word of the grammar ("turn KL204 north": heading 360, not the
     -- bearing to a waypoint NORTH) makes the line English
     local name = canonical_name(c:match("^([%w_]+)"))
-    c = M.complete_nested(c, name, scratch)
+    c = NESTED_AT[name] and M.complete_nested(c, name, copy()) or c
     cmds[k] = c
     -- the command a condition carries is TrafScript too ("SCHEDULE 60 HOLD"): its name is no
     -- English word; one that does not parse ("ana257 atalt fl080 spd 210": SPD names no
     -- aircraft) is asked about, never run nor read as English
     local inner, inner_at = carried_command(name, c)
     if inner then
-      local ok, why = scratch:check(inner)
+      local ok, why = copy():check(inner)
       if not canonical_name(inner:match("^([%w_]+)")) then return "english" end
       -- ("schedule a pause at 20 min": English glue where the time should be)
       local head = {}
@@ -462,7 +469,7 @@ function M.typed(state, ctx)
         or (inner and has_english_word(inner, canonical_name(inner:match("^([%w_]+)")))) then
       return "english"
     end
-    if not scratch:check(c) then return "english" end
+    if not copy():check(c) then return "english" end
     -- "KL204 turn 30 right" is a turn of 30 degrees in English, heading 030 in TrafScript:
     -- a turn of one or two digits, with a side or none ("exp1 turn 30": 30 degrees or heading
     -- 030?), typed with the English word "turn", is English
@@ -496,7 +503,7 @@ function M.typed(state, ctx)
     local h = canonical_name(c:match("^([%w_]+)")) == "HDG" and tonumber(c:match("^[%w_]+[%s,]+[%w_]+[%s,]+([%d%.]+)"))
     if h and h > 360 then return "english" end
     -- and it runs: "turn KL204 north" parses (a name is a bearing) but names nothing
-    if not scratch:exec(c) then return "english" end
+    if not copy():exec(c) then return "english" end
     cmds[k] = name .. c:match("^[%w_]+(.*)$")  -- shown with its registry name: "delete KL204" -> "DEL KL204"
   end
   state.candidate, state.source = table.concat(cmds, " ; "), "typed"

@@ -291,9 +291,16 @@ function M.spoken(text, built, phonetic)
   local toks = {}
   for w in text:gmatch("%S+") do toks[#toks + 1] = w end
   return require("translate.tokens").rewrite(text, toks, function(i)
-    local spelled, after = spelled_designator(toks, i, built, phonetic or {})
-    if spelled then return spelled, after end
     local w = toks[i]:lower()
+    -- (only a word that may open a designator said in words is read further: a spelled letter, a maker's
+    -- letter or name, a designator's letters, "seven" or a Boeing family's number)
+    local ph = phonetic or {}
+    if not (LETTERS[w] or w == "airbus" or w == "boeing" or w == "embraer" or built.makers[w] or built.prefixes[w]
+        or w == "seven" or w:match("^7%d7$") or ph[w] or (w:find("%p$") and ph[(w:gsub("%p+$", ""))])) then
+      return nil
+    end
+    local spelled, after = spelled_designator(toks, i, built, ph)
+    if spelled then return spelled, after end
     local maker = LETTERS[w] and w or nil
     local lead = maker and w or ""
     local k = i + 1
