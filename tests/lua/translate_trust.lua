@@ -9455,3 +9455,42 @@ do
   asked(ex("at second 30 KLM12 descend FL150"), "a second named before its number")
   check_eq(ex("at 5 minutes KLM12 descend FL150"), "SCHEDULE 00:05:00 ALT KLM12 FL150")
 end
+
+-- Cycle 47 (hz49): an instruction word said bare beside value instructions (alone in its clause: after the value
+-- or the callsign, before the next instruction) is accounted for: what squawk does not simulate is named beside the
+-- instruction flown, a word whose value is a place asks for the place, a word that may change what is flown is
+-- asked; straight before an instruction word it is that instruction's manner, and said with its own words it is read
+do
+  local _, ex = scene({ "CRE KLM12 B738 52 4 90 FL250 280", "CRE DLH4AX A321 52.4 4.4 090 FL300 280" })
+  -- not simulated: the note beside the instruction
+  local sim2 = scene({ "CRE KLM12 B738 52 4 90 FL250 280" })
+  local function tr2(text) return graph.translate(text, { sim = sim2, mode = "offline" }) end
+  for text, what in pairs({ ["KLM12 descend FL200 then hold"] = "holding patterns ('hold')",
+      ["KLM12 turn right heading 140, report"] = "position reports ('report')",
+      ["KLM12 reduce speed 240 and squawk"] = "transponder codes ('squawk')",
+      ["KLM12 heading 120 vectors"] = "radar vectors ('vectors')",
+      ["KLM12 descend FL120, approach"] = "approach clearances ('approach')" }) do
+    local r = tr2(text)
+    check(r.ask == nil and #r.commands == 1 and r.note and r.note:find(what, 1, true) ~= nil, text)
+  end
+  -- a place missing, a meaning asked
+  check_eq(ex("KLM12 descend FL200 and cross"),
+    "ASK I have ALT KLM12 FL200. Which place goes with 'cross'? Please say it with the place.")
+  check_eq(ex("KLM12 turn left heading 300, then join"),
+    "ASK I have HDG KLM12 300 LEFT. Which place goes with 'join'? Please say it with the place.")
+  check_eq(ex("KLM12 speed 250 then establish"), "ASK I have SPD KLM12 250. What does 'establish' mean?")
+  check_eq(ex("KLM12 climb FL320 cleared"), "ASK I have ALT KLM12 FL320. What does 'cleared' mean?")
+  check_eq(ex("KLM12 descend FL150 then stop"), "ASK I have ALT KLM12 FL150. What does 'stop' mean?")
+  check_eq(ex("hold KLM12 descend FL150"), "ASK I have ALT KLM12 FL150. What does 'hold' mean?")
+  asked(ex("KLM12 tower, descend FL150"), "a station named bare before the instruction")
+  asked(ex("KLM12 descend FL150 and DLH4AX climb FL340 then enter"), "a word of meaning after two instructions")
+  -- read: the instruction's manner, a phrase of its own, a filler
+  check_eq(ex("KLM12 continue climb FL300"), "ALT KLM12 FL300")
+  check_eq(ex("KLM12 descend FL200 stop descent"), "ALT KLM12 FL200")
+  check_eq(ex("KLM12 climb FL300, squawk 1234"), "ALT KLM12 FL300")
+  check_eq(ex("KLM12 climb FL300 then maintain"), "ALT KLM12 FL300")
+  check_eq(ex("KLM12 climb FL300 please, thanks"), "ALT KLM12 FL300")
+  check_eq(ex("Approach, KLM12 climb FL300"), "ALT KLM12 FL300")
+  check_eq(ex("fast forward 2 minutes then hold"), "FF 120 ; HOLD")
+  check_eq(ex("vector KLM12 left heading 200"), "HDG KLM12 200 LEFT")
+end
