@@ -5866,6 +5866,28 @@ function G:not_simulated()
   return "squawk does not simulate " .. table.concat(found, ", ") .. ": nothing was sent for that."
 end
 
+-- One setting of the simulation given two values in one request ("dtmult 8, and then 4x", "zoner 5 then 3"): the
+-- second would replace the first at once, with no time between (a fast-forward between them is one: "dtmult 8, ff
+-- 60, dtmult 4"), so which value, and from when, is asked. (G.set_once: the commands of one value and no aircraft.)
+G.set_once = { DTMULT = "rate should the simulation run at", ZONER = "protected zone radius should be used",
+  ZONEDH = "protected zone half height should be used", DTLOOK = "look-ahead time should be used" }
+function G:setting_twice()
+  local first = {}
+  for _, line in ipairs(self.out) do
+    local name, value = line:match("^(%u+) (%S+)$")
+    if name and G.set_once[name] then
+      if first[name] and first[name] ~= value then
+        return self:need(string.format("I have %s. Which %s: %s or %s, and from when? Please say the time of the "
+          .. "second (\"in 5 minutes\") or one value.", table.concat(self.out, " ; "), G.set_once[name], first[name],
+          value))
+      end
+      first[name] = value
+    elseif line:match("^FF") then
+      first = {}
+    end
+  end
+end
+
 -- "Alaska 1294 and United 1562, descend and maintain 10000 and 9000 respectively": with "respectively",
 -- the values said after the aircraft go to them in the order both were said, one value each, when the
 -- request issued one ALT, SPD or HDG per aircraft; any other shape is asked about (never one value for all).
@@ -7202,6 +7224,7 @@ function M.translate(text, world)
   if not g.ask and #g.out > 0 then g:dangling_value_name() end
   if not g.ask and #g.out > 1 then g:side_by_side_callsigns() end
   if not g.ask then g:list_value() end
+  if not g.ask then g:setting_twice() end
   if not g.ask and not g.leftover then g:unknown_names() end
   if not g.ask and not g.leftover then g:clock_remark() end
   if not g.ask and not g.leftover then g:uncarried() end

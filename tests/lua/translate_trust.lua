@@ -9494,3 +9494,15 @@ do
   check_eq(ex("fast forward 2 minutes then hold"), "FF 120 ; HOLD")
   check_eq(ex("vector KLM12 left heading 200"), "HDG KLM12 200 LEFT")
 end
+
+-- Cycle 47 (hz49): one setting given two values as a sequence ("dtmult 8, and then 4x") is asked: which value, and
+-- from when; a fast-forward between them is the time, and the same value twice is one
+do
+  local _, ex = scene({})
+  check_eq(ex("dtmult 6, and then 3x"), "ASK I have DTMULT 6 ; DTMULT 3. Which rate should the simulation run at: 6 or "
+    .. "3, and from when? Please say the time of the second (\"in 5 minutes\") or one value.")
+  asked(ex("run the sim at 10x then 2x"), "two rates in a row")
+  asked(ex("zoner 4 then zoner 6"), "two radii in a row")
+  check_eq(ex("dtmult 6, ff 120, dtmult 2"), "DTMULT 6 ; FF 120 ; DTMULT 2")
+  check_eq(ex("dtmult 4, then dtmult 4"), "DTMULT 4")
+end
