@@ -5866,6 +5866,18 @@ function G:not_simulated()
   return "squawk does not simulate " .. table.concat(found, ", ") .. ": nothing was sent for that."
 end
 
+-- A flight level of one or two figures under FL20 ("KLM77 fl 1 1", "fl 2 10 knots": FL11, FL2) is no level a
+-- controller clears, only figures split or cut short: asked, never issued.
+function G:short_level()
+  for _, line in ipairs(self.out) do
+    local id, fl = line:match("^ALT (%S+) FL(%d%d?)%f[%D]")
+    if fl and tonumber(fl) < 20 then
+      return self:need(string.format("Which level should %s fly? 'FL%s' is %s ft, and a flight level has three "
+        .. "figures: please say it again.", id, fl, tonumber(fl) * 100))
+    end
+  end
+end
+
 -- One setting of the simulation given two values in one request ("dtmult 8, and then 4x", "zoner 5 then 3"): the
 -- second would replace the first at once, with no time between (a fast-forward between them is one: "dtmult 8, ff
 -- 60, dtmult 4"), so which value, and from when, is asked. (G.set_once: the commands of one value and no aircraft.)
@@ -7039,17 +7051,14 @@ function M.translate(text, world)
       end
     end)
   end
-  -- "fl,260": a comma typed after "FL" is no break in the level; "climb FL2 70", "descend fl 2 10": nor is a space
-  -- inside its three figures (one figure, then two) straight after a verb of a level change
-  -- (lexicon.level_split_verbs; "klm77 fl 1 20" with none is asked), unless a unit follows ("fl 2 10 knots")
+  -- "fl,260": a comma typed after "FL" is no break in the level; "climb FL2 70", "descend fl 2 10", "klm77 fl 1 10":
+  -- nor is a space inside its three figures (one figure, then two), unless a unit follows ("fl 2 10 knots")
   if text:find("[Ff][Ll]") then
     text = text:gsub("%f[%a]([Ff][Ll]),%s*(%d%d%d?)%f[%D]", "%1%2")
-    text = text:gsub("(%a+)(%s+)([Ff][Ll]%s?%d)%s+(%d%d)%f[%D]()", function(verb, space, fl, two, at)
+    text = text:gsub("%f[%a]([Ff][Ll]%s?%d)%s+(%d%d)%f[%D]()", function(fl, two, at)
       local unit = text:match("^%s*(%a+)", at)
-      if not lexicon.level_split_verbs[verb:lower()] or (unit and lexicon.level_split_units[unit:lower()]) then
-        return nil
-      end
-      return verb .. space .. fl .. two
+      if unit and lexicon.level_split_units[unit:lower()] then return nil end
+      return fl .. two
     end)
   end
   -- "mach.82": a Mach number typed against its word
@@ -7225,6 +7234,7 @@ function M.translate(text, world)
   if not g.ask and #g.out > 1 then g:side_by_side_callsigns() end
   if not g.ask then g:list_value() end
   if not g.ask then g:setting_twice() end
+  if not g.ask then g:short_level() end
   if not g.ask and not g.leftover then g:unknown_names() end
   if not g.ask and not g.leftover then g:clock_remark() end
   if not g.ask and not g.leftover then g:uncarried() end

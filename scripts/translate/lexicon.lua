@@ -398,8 +398,6 @@ return {
   -- how far from the traffic a fix, navaid or airport of the slip's letters keeps it as typed (nautical miles)
   typo_targets = { "and", "then", "fpm", "route", "hdg", "mach", "level", "proceed" },
   typo_place_nm = 250,
-  -- verbs of a level change before which "FL 2 10" is FL210 (grammar's text pass)
-  level_split_verbs = { climb = true, descend = true, to = true, maintain = true },
   -- units after a value that keep "FL 2 10" two values ("fl 2 10 knots"): a level's figures are never split before them
   level_split_units = { knots = true, kts = true, kt = true, knot = true, degrees = true, deg = true, nm = true,
                         miles = true, mile = true, minutes = true, min = true, seconds = true, sec = true, fpm = true,

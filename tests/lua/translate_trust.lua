@@ -4542,7 +4542,7 @@ do
   end
 end
 
--- Typed slips that must never run as a guess (R61): digits typed apart after "hdg"/"fl" in groups other
+-- Typed slips that must never run as a guess (R61): digits typed apart after "hdg" in groups other
 -- than single digits, a fix name with two letters swapped, two callsigns side by side, a value's name
 -- cut off at the end, an aircraft created in the air too slow to fly; a comma typed against a callsign
 -- still lists it
@@ -4551,7 +4551,8 @@ do
     "DEFWPT TOLIP 52.3 4.6", "ADDWPT KLM77 TOLIP" })
   check_eq(ex("klm77 hdg 1 8 0"), "HDG KLM77 180")
   asked(ex("klm77 hdg 1 80"), ex("klm77 hdg 1 80"))
-  asked(ex("klm77 fl 1 20"), ex("klm77 fl 1 20"))
+  -- (a level's figures apart after "fl", one then two, join into the level: cycle 47)
+  check_eq(ex("klm77 fl 1 20"), "ALT KLM77 FL120")
   check_eq(ex("klm77 dct tolip"), "DIRECT klm77 tolip")
   check_eq(ex("klm77 dct tolpi"), "ASK Did you mean TOLIP? I heard 'tolpi'.")
   check_eq(ex("klm77 baw8ck descend fl90"), "ASK Which aircraft do you mean: KLM77, BAW8CK or both?")
@@ -8658,7 +8659,7 @@ do
 end
 
 -- Cycle 44 (f97): values typed with a slip: a comma after "FL" ("fl,110") or, after a verb of a level change, a space
--- inside its three figures ("climb FL3 10", "climb fl 3 20"; a unit after the figures, or no verb, keeps them apart),
+-- inside its three figures ("climb FL3 10", "climb fl 3 20"; a unit after the figures keeps them apart),
 -- "mach.79", a plus after "vertical speed" (the sign of a climb; after "speed" alone it is still a change of speed),
 -- a comma with no space after a value
 do
@@ -8668,7 +8669,7 @@ do
   check_eq(ex("KLM1234 climb FL3 10"), "ALT KLM1234 FL310")
   check_eq(ex("klm1234 climb fl 3 20"), "ALT KLM1234 FL320")
   check(ex("KLM77 descend fl 1 20 kts") ~= "ALT KLM77 FL120", "a unit after the figures keeps them apart")
-  asked(ex("klm77 fl 2 40"), "figures apart with no verb")
+  check_eq(ex("klm77 fl 2 40"), "ALT KLM77 FL240")  -- (with no verb too: cycle 47)
   check_eq(ex("DLH4AX mach.79"), "SPD DLH4AX M0.79")
   check_eq(ex("DLH4AX climb FL320 and mach.80"), "ALT DLH4AX FL320 ; SPD DLH4AX M0.8")
   check_eq(ex("BAW8CK vertical speed +900"), "VS BAW8CK 900")
@@ -9505,4 +9506,18 @@ do
   asked(ex("zoner 4 then zoner 6"), "two radii in a row")
   check_eq(ex("dtmult 6, ff 120, dtmult 2"), "DTMULT 6 ; FF 120 ; DTMULT 2")
   check_eq(ex("dtmult 4, then dtmult 4"), "DTMULT 4")
+end
+
+-- Cycle 47 (hz49): a level's figures split by a space after "FL" or "flight level" are one level when they join into
+-- three figures, with or without a verb; a level of one or two figures under FL20 is asked, never issued
+do
+  local _, ex = scene({ "CRE KLM77 B738 52.1 4.5 180 FL090 250" })
+  check_eq(ex("KLM77 fl 1 30"), "ALT KLM77 FL130")
+  check_eq(ex("KLM77 climb flight level 2 10"), "ALT KLM77 FL210")
+  check_eq(ex("KLM77 climb FL 2 6 0"), "ALT KLM77 FL260")
+  check_eq(ex("KLM77 fl 1 3"), "ASK Which level should KLM77 fly? 'FL13' is 1300 ft, and a flight level has three "
+    .. "figures: please say it again.")
+  asked(ex("KLM77 descend FL 7"), "a level of one figure")
+  asked(ex("KLM77 fl 1 20 knots"), "a unit after the figures keeps them apart")
+  check_eq(ex("KLM77 descend FL80"), "ALT KLM77 FL80")
 end
