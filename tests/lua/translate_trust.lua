@@ -9521,3 +9521,14 @@ do
   asked(ex("KLM77 fl 1 20 knots"), "a unit after the figures keeps them apart")
   check_eq(ex("KLM77 descend FL80"), "ALT KLM77 FL80")
 end
+
+-- Cycle 47 (hz49): a bare number straight after "fly", said to one aircraft, is asked as a heading or a level,
+-- naming both; with its unit or value name it is read
+do
+  local _, ex = scene({ "CRE QTR1015 B77W 52.3 4.2 270 FL200 280" })
+  check_eq(ex("QTR1015 fly 120"), "ASK Should QTR1015 fly heading 120 or flight level 120? Please say which.")
+  check_eq(ex("QTR1015 please fly 080"), "ASK Should QTR1015 fly heading 080 or flight level 080? Please say which.")
+  asked(ex("QTR1015 fly 390"), "above 360 no heading")
+  check_eq(ex("QTR1015 fly heading 120"), "HDG QTR1015 120")
+  check_eq(ex("QTR1015 fly FL120"), "ALT QTR1015 FL120")
+end
