@@ -39,8 +39,8 @@ return function(H, f, wrap, compass)
     end
     -- ("QTR1015 fly 100": a bare number after "fly", said to one aircraft, is a heading or a level: the question that
     -- fits names both, a heading only up to 360)
+    local ids = self:acids(s)
     for _, q in ipairs(qs) do
-      local ids = self:acids(s)
       if q.kind == "plain" and not q.number.decimal and #ids == 1 and self:word(q.b - 1, "fly") then
         if q.value >= 1 and q.value <= 360 then
           return self:need(string.format("Should %s fly heading %03d or flight level %03d? Please say which.", ids[1],
