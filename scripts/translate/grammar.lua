@@ -5134,6 +5134,26 @@ function G:resumes_instruction(i)
   local q = self:quantities(k, k + 2)[1]
   return self.triggers[k] == true or (q ~= nil and q.b == k)
 end
+-- (G.bare_left[w]: the kind of a word of lexicon.accounted.bare_asked, "noted" for one of a bare phrase of
+-- lexicon.not_simulated, left here when said before the instruction: G:said_bare; G.bare_asks[kind][what]: true
+-- when a word of that kind said bare after `what`, "start", "aircraft" or "value", is asked)
+G.bare_left = {}
+for kind, words in pairs(ACCOUNTED.bare_asked) do
+  for _, w in ipairs(words) do G.bare_left[w] = kind end
+end
+for _, c in ipairs(lexicon.not_simulated) do
+  for w in (c.bare and c.words or ""):gmatch("%S+") do G.bare_left[w] = G.bare_left[w] or "noted" end
+end
+G.bare_asks = { place = { start = true, aircraft = true, value = true }, meaning = { start = true, aircraft = true,
+  value = true }, after = { value = true }, noted = { aircraft = true } }
+-- True when the word at i, of G.bare_left, is said bare where its kind is asked (G.bare_asks); a word other than a
+-- place's straight before an instruction word is its manner ("continue climb", "cleared descend"), as
+-- is "hold" opening the request ("hold KLM12 climb FL300": the simulation's hold, asked)
+function G:bare_asked(i)
+  local kind = G.bare_left[self.t[i].text]
+  local what = self:said_bare(i, kind ~= "place")
+  return what and (G.bare_asks[kind][what] or (kind == "noted" and what == "start" and self:word(i, "hold"))) or false
+end
 function G:unaccounted()
   -- the words no list explains, and the negations and conditions: only these need the parse's account
   local explained, said, ignored = self.explained or {}, {}, self.world.ignored or {}
@@ -5196,12 +5216,17 @@ function G:unaccounted()
     end
     return true
   end
+  -- (a word said bare is asked beside value instructions only, which read no place or noun: G.bare_left)
+  local values_only = #self.out > 0
+  for _, c in ipairs(self.out) do
+    values_only = values_only and (c:match("^ALT ") or c:match("^SPD ") or c:match("^HDG ") or c:match("^VS ")) ~= nil
+  end
   for i, t in ipairs(self.t) do
     if t.kind == "word" and not t.filler and not t.number_word
         and not explained[i] and not self.noted[i] and not self.u:used(i) and not ignored[t.text]
         and ((t.text:match("^%a[%a'%-/]*$") and (MEANING[t.text] or COMMAND_ONLY[t.text] or not (known_word(t.text) or self:airline_word(i) or self:place_particle(i))
           or airline_left(i) or fraction_left(i) or (lexicon.clock_verbs[t.text] and not self.triggers[i] and not self:resumes_instruction(i))))
-          or glued_value(i)) then
+          or glued_value(i) or (G.bare_left[t.text] and values_only and not self.triggers[i] and self:bare_asked(i))) then
       said[#said + 1] = i
     end
   end
@@ -5213,6 +5238,11 @@ function G:unaccounted()
     if not inside[i] and not issued[COMMAND_ONLY[t.text] or t.text] and not self:in_reason(i)
         and not (MANNER[t.text] and self:rate_issued())
         and not (MEANING[t.text] and self:meaning_carried(i, kinds)) then
+      if G.bare_left[t.text] == "place" and values_only then
+        self:need(string.format("I have %s. Which place goes with '%s'? Please say it with the place.",
+          table.concat(self.out, " ; "), t.raw))
+        return
+      end
       self.leftover = t.raw
       if not MEANING[t.text] then self.ignorable = t.text end
       return
@@ -5643,6 +5673,37 @@ function G:said_last(i, near, own_clause)
   return k > #self.t
 end
 
+-- What stands before the word at i ("start", "aircraft" or "value") when it stands alone in its clause beside an
+-- instruction said ("climb FL300, squawk", "turn left heading 200 then cross", "KLM12 resume, climb FL300", "hold
+-- KLM12 climb FL300"): with fillers, "and", "then" and commas skipped, the text's start, a callsign or a value's end
+-- before it, and the text's end (closing marks only), an instruction word or (at the start) a callsign after it,
+-- with an instruction word and an aircraft somewhere in the request ("ff 120 then hold" holds the simulation); with
+-- `apart`, an instruction word straight after it stands apart only with "and", "then" or a comma between. A word
+-- opening the request before a comma addresses a station ("Approach, KLM12 climb FL300"). False when it does not.
+function G:said_bare(i, apart)
+  if #self:refs_in(1, #self.t + 1, "aircraft") == 0 then return false end
+  local function skip(k, step)
+    while self.t[k] and (self.t[k].filler or self:word(k, "and then") or self.t[k].text == ",") do k = k + step end
+    return k
+  end
+  local p, n = skip(i - 1, -1), skip(i + 1, 1)
+  if p < 1 and self.t[i + 1] and self.t[i + 1].text == "," then return false end
+  local before = p < 1 and "start" or self:has_ref(p, p + 1, "aircraft") and "aircraft"
+  for _, q in ipairs(before and {} or self:quantities(math.max(1, p - 3), p + 1)) do
+    if q.e == p + 1 then before = "value" end
+  end
+  if not before then return false end
+  while self.t[n] and self.t[n].kind == "punct" and self.t[n].text ~= "," and self.t[n].text ~= "'" do n = n + 1 end
+  if not (n > #self.t or (before == "start" and self:has_ref(n, n + 1, "aircraft"))
+      or ((n > i + 1 or not apart) and self:intent_at(n))) then
+    return false
+  end
+  for k = 1, #self.t do
+    if k ~= i and self:intent_at(k) then return before end
+  end
+  return false
+end
+
 -- True when the word before token i is one of `subjects` ("already", "has", "had", "was", "were", "just" and
 -- fillers between them skipped: "the student has just cleared").
 function G:said_after_subject(i, subjects)
@@ -5695,7 +5756,8 @@ function G:not_simulated()
             and (not c.subject or self:said_after_subject(i, c.subject))
             and (not c.after_heading or self:after_heading(i))
             and not (c.not_before and self:word(self:skip_fillers(i + 1), c.not_before))
-            and not (c.not_after and self:word(i - 1, c.not_after)) and not self:word(i + 1, "not") then
+            and not (c.not_after and self:word(i - 1, c.not_after)) and not self:word(i + 1, "not")
+            and (not c.bare or self:said_bare(i)) then
           local expected = c.not_aircraft_to and self:aircraft_then_to(i + 1)
           if expected then
             self:need(string.format("Is '%s' an instruction to send now, or what you expect to happen? Please "
@@ -5802,6 +5864,40 @@ function G:not_simulated()
     end
   end
   return "squawk does not simulate " .. table.concat(found, ", ") .. ": nothing was sent for that."
+end
+
+-- A flight level of one or two figures under FL20 ("KLM77 fl 1 1", "fl 2 10 knots": FL11, FL2) is no level a
+-- controller clears, only figures split or cut short: asked, never issued.
+function G:short_level()
+  for _, line in ipairs(self.out) do
+    local id, fl = line:match("^ALT (%S+) FL(%d%d?)%f[%D]")
+    if fl and tonumber(fl) < 20 then
+      return self:need(string.format("Which level should %s fly? 'FL%s' is %s ft, and a flight level has three "
+        .. "figures: please say it again.", id, fl, tonumber(fl) * 100))
+    end
+  end
+end
+
+-- One setting of the simulation given two values in one request ("dtmult 8, and then 4x", "zoner 5 then 3"): the
+-- second would replace the first at once, with no time between (a fast-forward between them is one: "dtmult 8, ff
+-- 60, dtmult 4"), so which value, and from when, is asked. (G.set_once: the commands of one value and no aircraft.)
+G.set_once = { DTMULT = "rate should the simulation run at", ZONER = "protected zone radius should be used",
+  ZONEDH = "protected zone half height should be used", DTLOOK = "look-ahead time should be used" }
+function G:setting_twice()
+  local first = {}
+  for _, line in ipairs(self.out) do
+    local name, value = line:match("^(%u+) (%S+)$")
+    if name and G.set_once[name] then
+      if first[name] and first[name] ~= value then
+        return self:need(string.format("I have %s. Which %s: %s or %s, and from when? Please say the time of the "
+          .. "second (\"in 5 minutes\") or one value.", table.concat(self.out, " ; "), G.set_once[name], first[name],
+          value))
+      end
+      first[name] = value
+    elseif line:match("^FF") then
+      first = {}
+    end
+  end
 end
 
 -- "Alaska 1294 and United 1562, descend and maintain 10000 and 9000 respectively": with "respectively",
@@ -6955,17 +7051,14 @@ function M.translate(text, world)
       end
     end)
   end
-  -- "fl,260": a comma typed after "FL" is no break in the level; "climb FL2 70", "descend fl 2 10": nor is a space
-  -- inside its three figures (one figure, then two) straight after a verb of a level change
-  -- (lexicon.level_split_verbs; "klm77 fl 1 20" with none is asked), unless a unit follows ("fl 2 10 knots")
+  -- "fl,260": a comma typed after "FL" is no break in the level; "climb FL2 70", "descend fl 2 10", "klm77 fl 1 10":
+  -- nor is a space inside its three figures (one figure, then two), unless a unit follows ("fl 2 10 knots")
   if text:find("[Ff][Ll]") then
     text = text:gsub("%f[%a]([Ff][Ll]),%s*(%d%d%d?)%f[%D]", "%1%2")
-    text = text:gsub("(%a+)(%s+)([Ff][Ll]%s?%d)%s+(%d%d)%f[%D]()", function(verb, space, fl, two, at)
+    text = text:gsub("%f[%a]([Ff][Ll]%s?%d)%s+(%d%d)%f[%D]()", function(fl, two, at)
       local unit = text:match("^%s*(%a+)", at)
-      if not lexicon.level_split_verbs[verb:lower()] or (unit and lexicon.level_split_units[unit:lower()]) then
-        return nil
-      end
-      return verb .. space .. fl .. two
+      if unit and lexicon.level_split_units[unit:lower()] then return nil end
+      return fl .. two
     end)
   end
   -- "mach.82": a Mach number typed against its word
@@ -7140,6 +7233,8 @@ function M.translate(text, world)
   if not g.ask and #g.out > 0 then g:dangling_value_name() end
   if not g.ask and #g.out > 1 then g:side_by_side_callsigns() end
   if not g.ask then g:list_value() end
+  if not g.ask then g:setting_twice() end
+  if not g.ask then g:short_level() end
   if not g.ask and not g.leftover then g:unknown_names() end
   if not g.ask and not g.leftover then g:clock_remark() end
   if not g.ask and not g.leftover then g:uncarried() end

@@ -3060,8 +3060,10 @@ return function(H, f, compass)
           other = other or p.value
         end
       end
+      -- (a rate in words, "twice", or glued to its x, "then 2x" written "sim speed x2")
       for i = q.e, e - 1 do
-        local v = self.t[i].kind == "word" and L.multipliers[self.t[i].text]
+        local v = self.t[i].kind == "word"
+          and (L.multipliers[self.t[i].text] or tonumber(self.t[i].text:match("^x(%d+%.?%d*)$") or ""))
         if v and v ~= q.value then other = other or v end
       end
       if other then

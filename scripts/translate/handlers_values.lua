@@ -37,6 +37,18 @@ return function(H, f, wrap, compass)
         return self:heading(s)
       end
     end
+    -- ("QTR1015 fly 100": a bare number after "fly", said to one aircraft, is a heading or a level: the question that
+    -- fits names both, a heading only up to 360)
+    local ids = self:acids(s)
+    for _, q in ipairs(qs) do
+      if q.kind == "plain" and not q.number.decimal and #ids == 1 and self:word(q.b - 1, "fly") then
+        if q.value >= 1 and q.value <= 360 then
+          return self:need(string.format("Should %s fly heading %03d or flight level %03d? Please say which.", ids[1],
+            q.value, q.value))
+        end
+        return self:need(string.format("Should %s fly flight level %d? Please say the level with 'FL'.", ids[1], q.value))
+      end
+    end
     -- ("LOT771", "LOT771?": a callsign alone, asked about or not, is shown)
     local e = self.t[s.e - 1] and self.t[s.e - 1].text == "?" and s.e - 1 or s.e
     if #self:acids(s) > 0 and #qs == 0 and #self:refs_in(s.b, e, "aircraft") == 1 and e - s.b == 1 then

@@ -342,6 +342,20 @@ return {
     negation = { "not", "instead", "don't", "dont", "doesn't", "didn't", "never", "unless", "cancel", "cancels", "cancelled", "canceled", "cancelling", "canceling",
         "undo", "can't", "cannot", "won't", "shouldn't", "mustn't", "isn't", "aren't", "wasn't", "without", "except" },
     condition = { "if", "after", "until", "till", "before", "once", "when", "whenever", "unless" },
+    -- instruction words said bare (G:said_bare: alone in their clause beside an instruction, "climb FL300 cross",
+    -- "KLM12 resume, climb FL300") that no command carries: asked, never dropped. `place`: a word whose value is a
+    -- place ("cross", "proceed", "join"), asked for it; `meaning`: a word that may change what is flown
+    -- ("resume", "continue", "cleared", a station named: "tower"), asked what it means (G:bare_asked: one straight
+    -- before an instruction word is its manner, "continue climb", "cleared descend"); `after`: one asked only after
+    -- the instruction's value
+    bare_asked = {
+      place = { "cross", "crossing", "proceed", "join", "joining", "rejoin", "rejoining", "intercept", "intercepting",
+          "via", "route", "routing", "track", "follow", "avoid" },
+      meaning = { "resume", "continue", "cleared", "recleared", "fly", "go", "enter", "leave", "establish",
+          "established", "cancel", "cruise", "switch", "call", "activate", "deactivate", "enable", "disable", "start",
+          "skip", "regain", "raise", "sink", "tower", "ground", "departure", "centre", "center" },
+      -- (asked after a value only: "stop the Iberia's descent" is the instruction's verb)
+      after = { "stop", "clear" } },
   },
   -- letters with accents written as navdata writes names, in plain letters ("Düsseldorf" DUSSELDORF)
   accents = { ["à"] = "a", ["á"] = "a", ["â"] = "a", ["ã"] = "a", ["ä"] = "a", ["å"] = "a", ["ç"] = "c",
@@ -384,8 +398,6 @@ return {
   -- how far from the traffic a fix, navaid or airport of the slip's letters keeps it as typed (nautical miles)
   typo_targets = { "and", "then", "fpm", "route", "hdg", "mach", "level", "proceed" },
   typo_place_nm = 250,
-  -- verbs of a level change before which "FL 2 10" is FL210 (grammar's text pass)
-  level_split_verbs = { climb = true, descend = true, to = true, maintain = true },
   -- units after a value that keep "FL 2 10" two values ("fl 2 10 knots"): a level's figures are never split before them
   level_split_units = { knots = true, kts = true, kt = true, knot = true, degrees = true, deg = true, nm = true,
                         miles = true, mile = true, minutes = true, min = true, seconds = true, sec = true, fpm = true,
@@ -890,7 +902,7 @@ return {
   -- `subject`: the phrase is one only straight after one of these words; `own_clause`: with `last`, a clause
   -- after a comma opened by an imperative verb ("until 5 miles final, descend to 3000 feet") may follow it;
   -- `after_heading`: the phrase is one only after a heading value, with at most "to", "vectors" or a comma
-  -- between them (G:after_heading)
+  -- between them (G:after_heading); `bare`: the word is one only said alone in its clause (G:said_bare)
   not_simulated = {
     -- ("squak", "sqwk": squawk typed short)
     { what = "transponder codes", words = "squawk squawking sq squak sqwk sqk",
@@ -1019,6 +1031,20 @@ return {
     { what = "holding patterns", words = "enter", near = { "hold", "holding" }, takes_time = true },
     -- "KL204, hold": said to an aircraft, no pause of the simulation; what follows "then" waits for it
     { what = "holding patterns", words = "hold", after_callsign = true, takes_time = true },
+    -- "climb FL300, squawk", "descend FL150 then hold", "turn left heading 200, report", "climb FL300 vectors",
+    -- "descend 4000, approach": the word said bare (`bare`: alone in its clause beside an instruction, G:said_bare)
+    -- names what squawk does not simulate, beside the instruction flown to an aircraft (said bare before the
+    -- instruction, "hold KLM12 climb FL300", a hold may be the simulation's: asked, G:unaccounted)
+    { what = "transponder codes", words = "squawk squawking sq squak sqwk sqk", bare = true, after_instruction = true },
+    { what = "holding patterns", words = "hold", bare = true, after_instruction = true, takes_time = true },
+    { what = "position reports", words = "report reporting", bare = true, after_instruction = true },
+    { what = "radar vectors", words = "vectors vectoring vector", bare = true, after_instruction = true },
+    -- ("turn left heading 200, traffic": traffic told with no more said)
+    { what = "traffic information", words = "traffic", bare = true, after_instruction = true },
+    -- ("speed 240, radar": the aircraft told it is seen on radar)
+    { what = "radar identification", words = "radar identified", bare = true, after_instruction = true },
+    { what = "approach clearances", words = "approach ils rnav rnp vor visual localizer localiser glideslope glidepath "
+      .. "land landing takeoff", bare = true, after_instruction = true },
   },
   -- answers that decline a yes/no question ("delete 5 aircraft?")
   no = { "no", "negative", "nope", "don't", "dont", "stop" },

@@ -4542,7 +4542,7 @@ do
   end
 end
 
--- Typed slips that must never run as a guess (R61): digits typed apart after "hdg"/"fl" in groups other
+-- Typed slips that must never run as a guess (R61): digits typed apart after "hdg" in groups other
 -- than single digits, a fix name with two letters swapped, two callsigns side by side, a value's name
 -- cut off at the end, an aircraft created in the air too slow to fly; a comma typed against a callsign
 -- still lists it
@@ -4551,7 +4551,8 @@ do
     "DEFWPT TOLIP 52.3 4.6", "ADDWPT KLM77 TOLIP" })
   check_eq(ex("klm77 hdg 1 8 0"), "HDG KLM77 180")
   asked(ex("klm77 hdg 1 80"), ex("klm77 hdg 1 80"))
-  asked(ex("klm77 fl 1 20"), ex("klm77 fl 1 20"))
+  -- (a level's figures apart after "fl", one then two, join into the level: cycle 47)
+  check_eq(ex("klm77 fl 1 20"), "ALT KLM77 FL120")
   check_eq(ex("klm77 dct tolip"), "DIRECT klm77 tolip")
   check_eq(ex("klm77 dct tolpi"), "ASK Did you mean TOLIP? I heard 'tolpi'.")
   check_eq(ex("klm77 baw8ck descend fl90"), "ASK Which aircraft do you mean: KLM77, BAW8CK or both?")
@@ -8658,7 +8659,7 @@ do
 end
 
 -- Cycle 44 (f97): values typed with a slip: a comma after "FL" ("fl,110") or, after a verb of a level change, a space
--- inside its three figures ("climb FL3 10", "climb fl 3 20"; a unit after the figures, or no verb, keeps them apart),
+-- inside its three figures ("climb FL3 10", "climb fl 3 20"; a unit after the figures keeps them apart),
 -- "mach.79", a plus after "vertical speed" (the sign of a climb; after "speed" alone it is still a change of speed),
 -- a comma with no space after a value
 do
@@ -8668,7 +8669,7 @@ do
   check_eq(ex("KLM1234 climb FL3 10"), "ALT KLM1234 FL310")
   check_eq(ex("klm1234 climb fl 3 20"), "ALT KLM1234 FL320")
   check(ex("KLM77 descend fl 1 20 kts") ~= "ALT KLM77 FL120", "a unit after the figures keeps them apart")
-  asked(ex("klm77 fl 2 40"), "figures apart with no verb")
+  check_eq(ex("klm77 fl 2 40"), "ALT KLM77 FL240")  -- (with no verb too: cycle 47)
   check_eq(ex("DLH4AX mach.79"), "SPD DLH4AX M0.79")
   check_eq(ex("DLH4AX climb FL320 and mach.80"), "ALT DLH4AX FL320 ; SPD DLH4AX M0.8")
   check_eq(ex("BAW8CK vertical speed +900"), "VS BAW8CK 900")
@@ -9454,4 +9455,80 @@ do
   asked(ex("at minute 5 KLM12 descend FL150"), "a minute named before its number")
   asked(ex("at second 30 KLM12 descend FL150"), "a second named before its number")
   check_eq(ex("at 5 minutes KLM12 descend FL150"), "SCHEDULE 00:05:00 ALT KLM12 FL150")
+end
+
+-- Cycle 47 (hz49): an instruction word said bare beside value instructions (alone in its clause: after the value
+-- or the callsign, before the next instruction) is accounted for: what squawk does not simulate is named beside the
+-- instruction flown, a word whose value is a place asks for the place, a word that may change what is flown is
+-- asked; straight before an instruction word it is that instruction's manner, and said with its own words it is read
+do
+  local _, ex = scene({ "CRE KLM12 B738 52 4 90 FL250 280", "CRE DLH4AX A321 52.4 4.4 090 FL300 280" })
+  -- not simulated: the note beside the instruction
+  local sim2 = scene({ "CRE KLM12 B738 52 4 90 FL250 280" })
+  local function tr2(text) return graph.translate(text, { sim = sim2, mode = "offline" }) end
+  for text, what in pairs({ ["KLM12 descend FL200 then hold"] = "holding patterns ('hold')",
+      ["KLM12 turn right heading 140, report"] = "position reports ('report')",
+      ["KLM12 reduce speed 240 and squawk"] = "transponder codes ('squawk')",
+      ["KLM12 heading 120 vectors"] = "radar vectors ('vectors')",
+      ["KLM12 descend FL120, approach"] = "approach clearances ('approach')" }) do
+    local r = tr2(text)
+    check(r.ask == nil and #r.commands == 1 and r.note and r.note:find(what, 1, true) ~= nil, text)
+  end
+  -- a place missing, a meaning asked
+  check_eq(ex("KLM12 descend FL200 and cross"),
+    "ASK I have ALT KLM12 FL200. Which place goes with 'cross'? Please say it with the place.")
+  check_eq(ex("KLM12 turn left heading 300, then join"),
+    "ASK I have HDG KLM12 300 LEFT. Which place goes with 'join'? Please say it with the place.")
+  check_eq(ex("KLM12 speed 250 then establish"), "ASK I have SPD KLM12 250. What does 'establish' mean?")
+  check_eq(ex("KLM12 climb FL320 cleared"), "ASK I have ALT KLM12 FL320. What does 'cleared' mean?")
+  check_eq(ex("KLM12 descend FL150 then stop"), "ASK I have ALT KLM12 FL150. What does 'stop' mean?")
+  check_eq(ex("hold KLM12 descend FL150"), "ASK I have ALT KLM12 FL150. What does 'hold' mean?")
+  asked(ex("KLM12 tower, descend FL150"), "a station named bare before the instruction")
+  asked(ex("KLM12 descend FL150 and DLH4AX climb FL340 then enter"), "a word of meaning after two instructions")
+  -- read: the instruction's manner, a phrase of its own, a filler
+  check_eq(ex("KLM12 continue climb FL300"), "ALT KLM12 FL300")
+  check_eq(ex("KLM12 descend FL200 stop descent"), "ALT KLM12 FL200")
+  check_eq(ex("KLM12 climb FL300, squawk 1234"), "ALT KLM12 FL300")
+  check_eq(ex("KLM12 climb FL300 then maintain"), "ALT KLM12 FL300")
+  check_eq(ex("KLM12 climb FL300 please, thanks"), "ALT KLM12 FL300")
+  check_eq(ex("Approach, KLM12 climb FL300"), "ALT KLM12 FL300")
+  check_eq(ex("fast forward 2 minutes then hold"), "FF 120 ; HOLD")
+  check_eq(ex("vector KLM12 left heading 200"), "HDG KLM12 200 LEFT")
+end
+
+-- Cycle 47 (hz49): one setting given two values as a sequence ("dtmult 8, and then 4x") is asked: which value, and
+-- from when; a fast-forward between them is the time, and the same value twice is one
+do
+  local _, ex = scene({})
+  check_eq(ex("dtmult 6, and then 3x"), "ASK I have DTMULT 6 ; DTMULT 3. Which rate should the simulation run at: 6 or "
+    .. "3, and from when? Please say the time of the second (\"in 5 minutes\") or one value.")
+  asked(ex("run the sim at 10x then 2x"), "two rates in a row")
+  asked(ex("zoner 4 then zoner 6"), "two radii in a row")
+  check_eq(ex("dtmult 6, ff 120, dtmult 2"), "DTMULT 6 ; FF 120 ; DTMULT 2")
+  check_eq(ex("dtmult 4, then dtmult 4"), "DTMULT 4")
+end
+
+-- Cycle 47 (hz49): a level's figures split by a space after "FL" or "flight level" are one level when they join into
+-- three figures, with or without a verb; a level of one or two figures under FL20 is asked, never issued
+do
+  local _, ex = scene({ "CRE KLM77 B738 52.1 4.5 180 FL090 250" })
+  check_eq(ex("KLM77 fl 1 30"), "ALT KLM77 FL130")
+  check_eq(ex("KLM77 climb flight level 2 10"), "ALT KLM77 FL210")
+  check_eq(ex("KLM77 climb FL 2 6 0"), "ALT KLM77 FL260")
+  check_eq(ex("KLM77 fl 1 3"), "ASK Which level should KLM77 fly? 'FL13' is 1300 ft, and a flight level has three "
+    .. "figures: please say it again.")
+  asked(ex("KLM77 descend FL 7"), "a level of one figure")
+  asked(ex("KLM77 fl 1 20 knots"), "a unit after the figures keeps them apart")
+  check_eq(ex("KLM77 descend FL80"), "ALT KLM77 FL80")
+end
+
+-- Cycle 47 (hz49): a bare number straight after "fly", said to one aircraft, is asked as a heading or a level,
+-- naming both; with its unit or value name it is read
+do
+  local _, ex = scene({ "CRE QTR1015 B77W 52.3 4.2 270 FL200 280" })
+  check_eq(ex("QTR1015 fly 120"), "ASK Should QTR1015 fly heading 120 or flight level 120? Please say which.")
+  check_eq(ex("QTR1015 please fly 080"), "ASK Should QTR1015 fly heading 080 or flight level 080? Please say which.")
+  asked(ex("QTR1015 fly 390"), "above 360 no heading")
+  check_eq(ex("QTR1015 fly heading 120"), "HDG QTR1015 120")
+  check_eq(ex("QTR1015 fly FL120"), "ALT QTR1015 FL120")
 end
