@@ -2117,8 +2117,29 @@ function G:level_limits()
             .. "otherwise?", self:raw(i, q.e)))
         end
       end
+      self:distance_limit(i, v, q)
     end
   end
+end
+
+-- A distance from a place after "until" ("maintain 250 knots or greater until 20 miles from FFM", "until 15 miles
+-- from TAU descend FL100"; the word at i, the quantity q from v) ends the instruction there, a limit squawk's
+-- commands do not carry (ATDIST would start it there instead): asked. With "then" (or "thereafter", "after that")
+-- straight after the place ("speed 280 till 10 miles from TAU, then reduce 220") it is when that next
+-- instruction runs, read as the condition.
+function G:distance_limit(i, v, q)
+  if not (q and q.b == v and q.kind == "dist") then return end
+  local at = self:word(q.e, "out") and q.e + 1 or q.e
+  local from = self:word(at, "from of to before") and self:skip_fillers(at + 1) or at
+  local place = self:refs_in(from, from + 1, "waypoint")[1] or self:refs_in(from, from + 1, "airport")[1]
+  local e = place and place.e or from
+  if not place and not (self.t[from] and self.t[from].kind == "word" and self.t[from].raw:match("^%u")) then return end
+  if not place then e = from + 1 end
+  local k = self.t[e] and self.t[e].kind == "punct" and self.t[e].text == "," and e + 1 or e
+  if self:word(k, "and") then k = k + 1 end
+  if self:word(k, "then thereafter afterwards") or (self:word(k, "after") and self:word(k + 1, "that")) then return end
+  self:need(string.format("squawk cannot end an instruction at a distance ('%s'): ATDIST would start it there. "
+    .. "Should it hold until told otherwise?", self:raw(i, e)))
 end
 
 -- A level said after "passing" or "leaving" that became a level to fly ("KLM12 passing FL340 Mach .80": a
@@ -5671,6 +5692,24 @@ function G:aircraft_then_to(i)
   return r and self:word(r.e, "to") and r or nil
 end
 
+-- True, asking, when the place a limit ends at ("maintain 250 knots or greater until KERAX": the word at i,
+-- the waypoint within `window` words after it) is on no route of the one aircraft addressed: the value would be
+-- flown with an end that names a place the aircraft never passes.
+function G:limit_off_route(i, window)
+  local wp = self:refs_in(i + 1, i + 1 + (window or 4), "waypoint")[1]
+  -- (a distance before it is no place: "till 6 DME")
+  if wp and #self:quantities(i + 1, wp.b) > 0 then return false end
+  local ids, seen = {}, {}
+  for _, r in ipairs(self:refs_in(1, #self.t + 1, "aircraft")) do
+    if r.exists and not seen[r.name] then seen[r.name], ids[#ids + 1] = true, r.name end
+  end
+  if not wp or #ids ~= 1 or self:on_route(ids[1], wp.name) then return false end
+  self:need(string.format("%s is not on %s's route, so the limit '%s' ends at a place it does not pass (and squawk "
+    .. "does not simulate where a limit ends). Should %s fly the value with no end, or did you mean another "
+    .. "waypoint?", wp.name, ids[1], self:raw(i, wp.e), ids[1]))
+  return true
+end
+
 -- Finds the phrases of lexicon.not_simulated, marks their tokens used (the
 -- rest of the request is read as if they were not there) and returns the
 -- reply naming them, or nil. A phrase runs from its word to the next
@@ -5697,6 +5736,7 @@ function G:not_simulated()
             and not (c.not_before and self:word(self:skip_fillers(i + 1), c.not_before))
             and not (c.not_after and self:word(i - 1, c.not_after)) and not self:word(i + 1, "not") then
           local expected = c.not_aircraft_to and self:aircraft_then_to(i + 1)
+          if c.routed and self:limit_off_route(i, c.window) then break end
           if expected then
             self:need(string.format("Is '%s' an instruction to send now, or what you expect to happen? Please "
               .. "say the instruction itself.", self:raw(i, expected.e)))

@@ -912,9 +912,10 @@ return {
     -- setting of the simulation's wind (said with no callsign before it, "wind 310 at 15" is WIND's)
     { what = "wind reports", words = "wind", near = { "#number" }, window = 1, after_callsign = true },
     -- "keep speed 280 until VAKNO", "maintain FL200 till DETAK": the value is flown now, its end at the
-    -- place is not kept; said last only (anything after it, "then contact tower", waits for it: asked)
+    -- place is not kept; said last only (anything after it, "then contact tower", waits for it: asked);
+    -- `routed`: the place is on the route of the one aircraft addressed (else the limit is placed nowhere: asked)
     { what = "limits that end at a place", words = "until till", near = { "#waypoint" }, after_instruction = true,
-      last = true, own_clause = true },
+      last = true, own_clause = true, routed = true },
     -- "maintain 8000 until established", "till established on the localizer": the same limit ending on the
     -- approach, said straight after the word and last (`last`: the words it may hold, a comma among them:
     -- "until established, cleared ILS runway 10" closes with the approach clearance)

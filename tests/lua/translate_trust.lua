@@ -9455,3 +9455,21 @@ do
   asked(ex("at second 30 KLM12 descend FL150"), "a second named before its number")
   check_eq(ex("at 5 minutes KLM12 descend FL150"), "SCHEDULE 00:05:00 ALT KLM12 FL150")
 end
+
+-- Cycle 47 (f107): a speed or level held "until" a place the aircraft's route does not pass, or until a distance
+-- from a place, is asked (ATDIST would start it there); a bound said with it ("or more") changes nothing
+do
+  local _, ex = navscene({ "CRE SWR41 A320 50.6 7.4 110 FL150 300", "ADDWPT SWR41 TAU",
+    "CRE CFG7 A321 50.3 10.2 270 FL230 290", "ADDWPT CFG7 KERAX" }, "limits that end at a place")
+  if ex then
+    asked(ex("SWR41 maintain two six zero knots or more until KERAX"), "a limit at a place off the route")
+    asked(ex("SWR41 keep FL150 till KERAX"), "a level's limit at a place off the route")
+    check_eq(ex("SWR41 keep speed 260 knots or greater till TAU"), "SPD SWR41 260")
+    check_eq(ex("CFG7 maintain 270 knots or more until KERAX"), "SPD CFG7 270")
+    asked(ex("SWR41 maintain two six zero knots until 25 miles from FFM"), "a limit at a distance from a place")
+    asked(ex("SWR41 until 25 miles from TAU maintain FL160"), "a limit at a distance said first")
+    check_eq(ex("SWR41 speed 270 until 12 miles from TAU, then reduce 230"),
+      "SPD SWR41 270 ; ATDIST SWR41 TAU 12 SPD SWR41 230")
+    check_eq(ex("SWR41 when 25 miles from TAU reduce 240"), "ATDIST SWR41 TAU 25 SPD SWR41 240")
+  end
+end
