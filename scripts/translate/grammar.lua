@@ -2330,7 +2330,7 @@ function G:condition()
     local from = q.kind == "dist" and self:word(at, "from of to before") and self:skip_fillers(at + 1)
     local r = from and self:refs_in(from, from + 1, "waypoint")[1]
     -- ("when the Swiss is 10 miles from Munich airport": a place said by its name, near the aircraft)
-    local place = r and r.name or (from and self:place_by_name(from, comma, self:state(self.subject)))
+    local place = r and r.name or (from and self:place_by_name(from, comma, self:state(self.subject), true))
     if place then return "ATDIST " .. self.subject .. " " .. place .. " " .. f.num(q.value), rest end
   end
   self.ask = "At what altitude or speed should " .. self.subject .. " act?"
@@ -3441,7 +3441,7 @@ function G:trailing_fix(s)
     if r then return r.b == k and r.e == e and { b = c, e = r.e, name = r.name } or nil end
     local a = self:refs_in(1, s.trig, "aircraft")
     local now = #a == 1 and self:state(a[1].name)
-    local name = now and e > k and e <= k + 2 and self:place_by_name(k, e, now)
+    local name = now and e > k and e <= k + 2 and self:place_by_name(k, e, now, true)
     return name and { b = c, e = e, name = name } or nil
   end
   if self:word(k, "it you") then k = self:skip_fillers(k + 1) end
@@ -3667,7 +3667,7 @@ function G:at_waypoint(s, spec)
       local r = self:refs_in(k, verb, "waypoint")[1]
       local name = r and r.b == k and r.e == verb and r.name
       if not name and not r and self:state(ids[1]) and verb <= k + 3 then
-        name = self:place_by_name(k, verb, self:state(ids[1]))
+        name = self:place_by_name(k, verb, self:state(ids[1]), true)
       end
       -- (with waypoints of the route between the two, which of them the shortcut leaves out is asked)
       local route, at, target = (self:state(ids[1]) or {}).route or {}, nil, nil
@@ -3819,7 +3819,7 @@ function G:at_waypoint(s, spec)
       end
       self:explain(opens, k)
     elseif now and s.trig <= opens + 3 then
-      name = self:place_by_name(opens, s.trig, now)
+      name = self:place_by_name(opens, s.trig, now, true)
     end
     if name then refs = { { b = opens, e = s.trig, name = name } } end
   end
@@ -4130,6 +4130,16 @@ function G:unexplained(s, n_before)
     end
     -- (a bare value between the callsign and the instruction word, "BAW256 9 climb FL300", is named alone)
     local before_verb = callsign and not (opened and q.b > opened)
+    -- (a distance closing its clause that no condition read, beside a level, speed, heading or rate, "maintain
+    -- 250 knots for 10 miles", is a limit squawk's commands do not carry: asked, never dropped; "within 10 km"
+    -- is where the instruction is flown, and a place after it, "20 miles from Gotham", is asked about by name)
+    local k = self:skip_fillers(q.e)
+    if q.kind == "dist" and s.intent ~= "direct" and s.intent ~= "infer" and not self.taken[q.b] and not self.u:used(q.b)
+        and not (self.explained or {})[q.b] and not self.noted[q.b] and not self:word(q.b - 1, "within")
+        and (not self.t[k] or self.t[k].kind == "punct" or self:word(k, "and then")) then
+      self.leftover = self:raw(q.b, q.e)
+      return
+    end
     if not self.taken[q.b] and not SELF_READ[q.kind] and not relative and not q.by and q.turn == 0
         and q.b > corrected
         and ((opened and q.b > opened) or own_unit(q) or self:word(q.b - 1, "@clause_verbs") or before_verb)

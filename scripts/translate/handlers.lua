@@ -1903,7 +1903,7 @@ function m:at_distance(s)
       local ids = p and self:acids(s) or {}
       -- ("when 20 miles from Minna descend FL200", "ten miles from Zurich East descend": a navaid or airport
       -- said by its name, of one or two words)
-      local name = r and r.name or (p and #ids == 1 and self:place_by_name(p, math.min(s.e, p + 2), self:state(ids[1])))
+      local name = r and r.name or (p and #ids == 1 and self:place_by_name(p, math.min(s.e, p + 2), self:state(ids[1]), true))
       if name then
         if #ids ~= 1 then return nil end
         self:mark_used(q.b, q.e)  -- the condition's distance is not the instruction's value

@@ -9471,5 +9471,24 @@ do
     check_eq(ex("SWR41 speed 270 until 12 miles from TAU, then reduce 230"),
       "SPD SWR41 270 ; ATDIST SWR41 TAU 12 SPD SWR41 230")
     check_eq(ex("SWR41 when 25 miles from TAU reduce 240"), "ATDIST SWR41 TAU 25 SPD SWR41 240")
+    -- (a distance the limit lasts, "for the next 15 miles", is asked by name too)
+    check_eq(ex("SWR41 keep 280 knots or more for the next 15 miles"), "ASK I have SPD SWR41 280. What does '15 miles' mean?")
+    asked(ex("SWR41 turn right heading 160 for eight miles"), "a heading flown for a distance")
+  end
+end
+
+-- Cycle 47 (f107): a distance or waypoint condition measured from a place said by a name that an airport and
+-- several navaids near the aircraft bear ("Frankfurt": EDDF; FFM, FW, FR, FRD) is asked, naming them; a code
+-- stays exact, and the navaid the route holds is the one meant
+do
+  local _, ex = navscene({ "CRE SWR41 A320 50.6 7.4 110 FL150 300", "ADDWPT SWR41 TAU",
+    "CRE CFG7 A321 50.3 9.4 270 FL230 290", "ADDWPT CFG7 FFM" }, "a place by a name several places bear")
+  if ex then
+    local q = ex("SWR41 when forty miles from Frankfurt descend FL90")
+    check(q:find("EDDF", 1, true) ~= nil and q:find("FFM", 1, true) ~= nil, q)
+    asked(ex("SWR41 slow to 230 knots 25 miles from Frankfurt"), "a distance from a name several places bear")
+    check_eq(ex("SWR41 40 miles from FFM descend FL90"), "ATDIST SWR41 FFM 40 ALT SWR41 FL90")
+    check_eq(ex("SWR41 40 miles from EDDF descend FL90"), "ATDIST SWR41 EDDF 40 ALT SWR41 FL90")
+    check_eq(ex("CFG7 twenty miles from Frankfurt reduce 240"), "ATDIST CFG7 FFM 20 SPD CFG7 240")
   end
 end
