@@ -2541,7 +2541,17 @@ function G:segments(b, e)
           local w = self:refs_in(between[1].e, tr.pos, "waypoint")
           local r = w[#w]
           dist_between = dist_between or (r ~= nil and self:skip_fillers(r.e) == tr.pos
-            and self:word(r.b - 1, "after passing over leaving"))
+            and self:word(r.b - 1, "after passing over leaving reaching"))
+          -- (likewise a place said by its name, one or two capitalised words: "reduce 220, reaching Taunus reduce 210")
+          for n = 1, 2 do
+            local p, named = tr.pos - n, true
+            for k = p, tr.pos - 1 do
+              named = named and self.t[k].kind == "word" and self.t[k].alpha and self.t[k].raw:match("^%u") ~= nil
+                and not self.t[k].keyword
+            end
+            dist_between = dist_between or (named and p - 1 > between[1].e - 1
+              and self:word(p - 1, "after passing over leaving reaching"))
+          end
         end
         if (last.intent == tr.intent or alt_pair or kept_heading) and not this.single
             and not self:addressee_between(last, tr.pos) and not dist_between then
@@ -2588,6 +2598,12 @@ function G:segments(b, e)
         local soon = self:find_word(last.trig + 1, cond, "soon")
         if soon < cond and self:word(soon - 1, "as") and self:word(soon + 1, "as") then cond = soon - 1 end
         if cond < start then start = cond end
+        -- (", leave BIG heading 270": "leave" and the waypoint straight before the instruction word open its clause)
+        for _, r in ipairs(self:refs_in(last.trig + 1, start, "waypoint")) do
+          if self:skip_fillers(r.e) == start and self:word(r.b - 1, "leave") and r.b - 1 > last.trig then
+            start = r.b - 1
+          end
+        end
         -- (the distance of a condition said before the instruction word, with "at" or "within" before it; a
         -- level after "at" opening a clause after the last instruction's value, before a speed or heading:
         -- "climb FL360, at FL350 it shall reduce to Mach .77"; never a creation's "..., at 37,000 feet")
@@ -3794,10 +3810,10 @@ function G:at_waypoint(s, spec)
   -- ("Aegean 603, efcharistó, at DILOP descend ...": a word of courtesy after the callsign)
   while self:word(first, RADIOTELEPHONY) do first = self:skip_fillers(first + 1) end
   -- (the clause's opening words: "at", "over", "overhead", "after", "after/when/on/upon/once passing",
-  -- "leaving", "overflying", "reaching", "past" or "over", "passing", "leave", "leaving")
+  -- "leaving", "overflying", "reaching", "past" or "over", "passing", "reaching", "leave", "leaving")
   local opens
   local passed = "passing leaving overflying reaching past over"
-  if self:word(first, "at over overhead after passing leave leaving") then
+  if self:word(first, "at over overhead after passing reaching leave leaving") then
     opens = self:skip_fillers(first + 1)
     if self:word(first, "after") and self:word(opens, passed) then opens = self:skip_fillers(opens + 1) end
   elseif self:word(first, "when on upon once") and self:word(self:skip_fillers(first + 1), passed) then
@@ -3818,7 +3834,8 @@ function G:at_waypoint(s, spec)
           letters, self:raw(opens, k)))
       end
       self:explain(opens, k)
-    elseif now and s.trig <= opens + 3 then
+    -- (after "leave" or "leaving" only a heading is flown from the place: below)
+    elseif now and s.trig <= opens + 3 and not (self:word(first, "leave leaving") and not self:word(s.trig, "heading hdg")) then
       name = self:place_by_name(opens, s.trig, now, true)
     end
     if name then refs = { { b = opens, e = s.trig, name = name } } end
@@ -4134,7 +4151,7 @@ function G:unexplained(s, n_before)
     -- 250 knots for 10 miles", is a limit squawk's commands do not carry: asked, never dropped; "within 10 km"
     -- is where the instruction is flown, and a place after it, "20 miles from Gotham", is asked about by name)
     local k = self:skip_fillers(q.e)
-    if q.kind == "dist" and s.intent ~= "direct" and s.intent ~= "infer" and not self.taken[q.b] and not self.u:used(q.b)
+    if q.kind == "dist" and s.intent ~= "direct" and not self.taken[q.b] and not self.u:used(q.b)
         and not (self.explained or {})[q.b] and not self.noted[q.b] and not self:word(q.b - 1, "within")
         and (not self.t[k] or self.t[k].kind == "punct" or self:word(k, "and then")) then
       self.leftover = self:raw(q.b, q.e)

@@ -9492,3 +9492,22 @@ do
     check_eq(ex("CFG7 twenty miles from Frankfurt reduce 240"), "ATDIST CFG7 FFM 20 SPD CFG7 240")
   end
 end
+
+-- Cycle 47 (f107): a waypoint condition opened by "leave" (a heading after it) or "reaching", in any clause, the
+-- fix said by its code or a navaid's name ("Taunus" for TAU), is AT ... DO when the fix is on the route; asked
+-- otherwise, and after "leaving" with no heading
+do
+  local _, ex = navscene({ "CRE SWR41 A320 50.6 7.4 110 FL150 300", "ADDWPT SWR41 TAU",
+    "CRE EXS12 B738 51.3 0.3 270 FL120 280", "ADDWPT EXS12 BIG" }, "waypoint conditions by name")
+  if ex then
+    check_eq(ex("EXS12 reduce 230 knots, leave BIG heading 250"), "SPD EXS12 230 ; AT EXS12 BIG DO HDG EXS12 250")
+    check_eq(ex("EXS12 descend FL90 and leave BIG heading 300"), "ALT EXS12 FL90 ; AT EXS12 BIG DO HDG EXS12 300")
+    check_eq(ex("SWR41 reaching Taunus slow to 220"), "AT SWR41 TAU DO SPD SWR41 220")
+    check_eq(ex("SWR41 reaching TAU descend flight level one two zero"), "AT SWR41 TAU DO ALT SWR41 FL120")
+    check_eq(ex("SWR41 descend FL120, reaching Taunus reduce 200"), "ALT SWR41 FL120 ; AT SWR41 TAU DO SPD SWR41 200")
+    check_eq(ex("SWR41 speed 240, after Taunus speed 210 knots"), "SPD SWR41 240 ; AT SWR41 TAU DO SPD SWR41 210")
+    asked(ex("SWR41 leaving Taunus reduce 200"), "after leaving, only a heading is flown from the place")
+    asked(ex("EXS12 reduce 230 knots, leave OCK heading 250"), "a fix off the route")
+    asked(ex("SWR41 reaching KERAX reduce 200"), "a fix off the route")
+  end
+end
