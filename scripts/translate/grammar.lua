@@ -2542,6 +2542,12 @@ function G:segments(b, e)
           local r = w[#w]
           dist_between = dist_between or (r ~= nil and self:skip_fillers(r.e) == tr.pos
             and self:word(r.b - 1, "after passing over leaving reaching"))
+          -- ("reduce 230, when level reduce 210": the level reached, "when/once (it's) level", likewise)
+          local lv = tr.pos - 1
+          while lv > between[1].e and self.t[lv].kind == "punct" do lv = lv - 1 end
+          local wh = self:word(lv - 1, "is it's you're") and lv - 2 or lv - 1
+          if self:word(wh, "it you") then wh = wh - 1 end
+          dist_between = dist_between or (self:word(lv, "level") and self:word(wh, "when once") and wh >= between[1].e)
           -- (likewise a place said by its name, one or two capitalised words: "reduce 220, reaching Taunus reduce 210")
           for n = 1, 2 do
             local p, named = tr.pos - n, true
@@ -3203,6 +3209,18 @@ function G:parse(b, e)
       if at then
         for c = n_before + 1, #self.out do self.out[c] = at .. " " .. self.out[c] end
       end
+      -- ("descend FL80, reduce 230, when level reduce 210": "level" is the level cleared, whatever was said
+      -- between)
+      local id = not at and not self.ask and #self.out == n_before + 1 and self.out[#self.out]:match("^%u+ (%S+)")
+      if id and self:word_in(s.b, s.trig, "level lvl") and self:when_reached(s) then
+        for c = n_before, 1, -1 do
+          local level = self.out[c]:match("^ALT " .. id:gsub("%p", "%%%0") .. " (%S+)")
+          if level then
+            before = "ATALT " .. id .. " " .. level
+            break
+          end
+        end
+      end
       -- A value instruction said without its value next to other, complete
       -- instructions is left out; it becomes the question only when nothing
       -- else was understood. One whose value is named by what it is ("reduce to minimum clean speed, say
@@ -3316,7 +3334,20 @@ function G:valueless_left(segs, valueless, issued_by)
     for i = math.max(1, s.trig - 2), s.trig - 1 do refused = refused or G.negations[self.t[i].text] end
     local next_word = self:skip_fillers(s.trig + 1)
     if self:word(next_word, "the") then next_word = self:skip_fillers(next_word + 1) end
-    local read = not bare or refused or (before and issued_by[v.k - 1] and self:skip_fillers(before.trig + 1) == s.trig)
+    -- ("no restriction on speed", "no ATC restrictions on your speed": the restriction lifted, its noun said last)
+    local k = self:word(s.trig - 1, "the your its") and s.trig - 2 or s.trig - 1
+    local r = self:word(k - 1, "restriction restrictions limit limits") and k - 1
+    if r and self:word(r - 1, "atc") then r = r - 1 end
+    local lifted = self:word(k, "on") and r and self:word(r - 1, "no")
+    for verb in (lifted and G.value_intents[s.intent] or ""):gmatch("%u+") do
+      if issued[verb] then
+        self:need(string.format("I have %s. Which stands: '%s', or the %s given?", table.concat(self.out, " ; "),
+          self:raw(r - 1, s.trig + 1), self:raw(s.trig, s.trig + 1)))
+        return
+      end
+    end
+    local read = not bare or refused or lifted
+      or (before and issued_by[v.k - 1] and self:skip_fillers(before.trig + 1) == s.trig)
       or (after and issued_by[v.k + 1] and next_word == after.trig)
     for verb in (G.value_intents[s.intent] or ""):gmatch("%u+") do read = read or issued[verb] end
     for j, o in ipairs(segs) do

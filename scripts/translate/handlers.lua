@@ -1989,9 +1989,24 @@ function m:leftovers(s)
   local spd_done = s.intent == "spd" or out:find("SPD " .. ids[1], 1, true) ~= nil
   local hdg_done = s.intent == "direct"  -- a direct-to is its lateral instruction
   local qs = self:quantities(s.b, s.e)
+  -- (a speed or level a correction takes back, "thereafter Mach .76, no, correction, 280 knots": the value of its
+  -- family said after the correction is the one meant)
+  local function family(q) return (q.kind == "mach" or q.kind == "speed") and "spd" or q.kind end
+  local function taken_back(k)
+    local q, corr = qs[k], self:said("@correction") and self:find_word(qs[k].e, s.e, "@correction")
+    if not corr or corr >= s.e then return false end
+    for j = k + 1, #qs do
+      if qs[j].b > corr and family(qs[j]) == family(q) and (q.kind ~= "alt" or q.fl) then return true end
+      if qs[j].b > corr then return false end
+    end
+    return false
+  end
   for k, q in ipairs(qs) do
     -- (the level left, "leaving FL260 for FL200", is no instruction: the one after it is)
     if q.kind == "alt" and not alt_done and self:level_left(q, qs[k + 1]) then self:take(q) end
+    if (q.kind == "speed" or q.kind == "mach" or q.kind == "alt") and not self.taken[q.b] and taken_back(k) then
+      self:take(q)
+    end
     -- a level or speed with its unit, before the instruction word too ("klm1234 fl280 spd 300", "FIN3CA:
     -- 9000ft, spd 220"; a level or height after "below"/"above" is a condition or a limit on something
     -- else, no level to fly: left over, it is asked)

@@ -9511,3 +9511,23 @@ do
     asked(ex("SWR41 reaching KERAX reduce 200"), "a fix off the route")
   end
 end
+
+-- Cycle 47 (f107): a speed or level said with no verb that a correction takes back ("Mach .72, correction, 260
+-- knots") gives way to the value of its kind after the correction; "when level" is the level cleared, also after
+-- another instruction of the kind that waits; "no restriction on speed" beside instructions is set aside
+do
+  local _, ex = scene({ "CRE TAP44 A320 52 4 090 FL120 280", "CRE VLG9 A321 52.2 4.3 180 FL200 290" })
+  check_eq(ex("TAP44 descend FL90 then mach point seven two, correction, two six zero knots"),
+    "ALT TAP44 FL90 ; SPD TAP44 260")
+  check_eq(ex("TAP44 turn left heading 200, 250 knots, correction, 230 knots"), "HDG TAP44 200 LEFT ; SPD TAP44 230")
+  check_eq(ex("VLG9 descend FL150, speed 260, once level reduce 240"),
+    "ALT VLG9 FL150 ; SPD VLG9 260 ; ATALT VLG9 FL150 SPD VLG9 240")
+  check_eq(ex("VLG9 descend FL150 reduce 260 and when you're level reduce 240"),
+    "ALT VLG9 FL150 ; SPD VLG9 260 ; ATALT VLG9 FL150 SPD VLG9 240")
+  asked(ex("VLG9 speed 260, when level reduce 240"), "no level cleared for 'when level'")
+  check_eq(ex("TAP44 descend FL90, no restrictions on your speed"), "ALT TAP44 FL90")
+  check_eq(ex("TAP44 descend FL90, no restriction on speed, then turn right heading 100"),
+    "ALT TAP44 FL90 ; HDG TAP44 100 RIGHT")
+  asked(ex("TAP44 reduce 250, descend FL90, no restriction on speed"), "a speed given and lifted")
+  asked(ex("TAP44 no restriction on speed"), "nothing simulated said")
+end
