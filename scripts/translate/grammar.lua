@@ -3191,8 +3191,19 @@ function G:parse(b, e)
         s = { b = s.b, e = cut, trig = s.trig, intent = s.intent }
       end
       local spec = M.intents[s.intent]
+      -- ("cross LAM FL110, thereafter descend FL80": what is said "thereafter" or "after that" straight after a
+      -- crossing starts at its waypoint; "then" keeps its own reading)
+      local crossed = self.crossed
+      self.crossed = nil
       if not self:at_waypoint(s, spec) then self[spec and spec.handler or "infer"](self, s, spec) end
-      if until_wp and not self.ask and #self.out > n_before then
+      local c0 = crossed and k > 1 and self:find_word(segs[k - 1].trig, s.trig, "thereafter afterwards after")
+      if c0 and c0 < s.trig and (not self:word(c0, "after") or self:word(c0 + 1, "that"))
+          and not self:any_instruction_in(c0 + 1, s.trig) and not self.ask and #self.out > n_before then
+        self:explain(c0, self:word(c0, "after") and c0 + 2 or c0 + 1)
+        if self:do_at(crossed.id, crossed.wp, n_before) then
+          self.waypoint_do = { id = crossed.id, wp = crossed.wp, n = #self.out }
+        end
+      elseif until_wp and not self.ask and #self.out > n_before then
         self:explain(until_wp.u, until_wp.e)
         self:do_at(self.out[n_before + 1]:match("^%u+ (%S+)"), until_wp.name, n_before)
       elseif tail and not self.ask and #self.out > n_before then
@@ -3689,7 +3700,12 @@ for _, w in ipairs(lexicon.accounted.radiotelephony) do RADIOTELEPHONY[w] = true
 local function ends_request(self, k)
   k = self:skip_fillers(k)
   while self.t[k] and self.t[k].kind == "punct" and self.t[k].text ~= "," do k = k + 1 end
-  return k > #self.t
+  if k > #self.t then return true end
+  -- (or a clause of its own follows, opened by "thereafter" or "after that": "cross LAM FL110, thereafter descend
+  -- FL80")
+  if self.t[k].kind == "punct" then k = self:skip_fillers(k + 1) end
+  if self:word(k, "and") then k = self:skip_fillers(k + 1) end
+  return self:word(k, "thereafter afterwards") or (self:word(k, "after") and self:word(k + 1, "that"))
 end
 function G:at_waypoint(s, spec)
   if not (spec and spec.value) and s.intent ~= "infer" then
@@ -4079,6 +4095,7 @@ function G:at_waypoint(s, spec)
           self:emit("AT " .. ids[1] .. " " .. r.name .. " ALT " .. f.alt(alt.value, alt.fl))
           self:take(alt)
         end
+        self.crossed = { id = ids[1], wp = r.name }
         if spd then
           self:emit("AT " .. ids[1] .. " " .. r.name .. " SPD "
             .. (spd.kind == "mach" and f.mach(spd.value) or f.int(spd.value)))

@@ -9531,3 +9531,17 @@ do
   asked(ex("TAP44 reduce 250, descend FL90, no restriction on speed"), "a speed given and lifted")
   asked(ex("TAP44 no restriction on speed"), "nothing simulated said")
 end
+
+-- Cycle 47 (f107): "thereafter" or "after that" straight after a crossing ("cross LAM FL110, thereafter descend
+-- FL80") starts the next instruction at the crossing's waypoint (AT ... DO); "then" keeps its reading
+do
+  local _, ex = navscene({ "CRE BEL5 A320 51.5 0.8 260 FL130 290", "ADDWPT BEL5 LAM" }, "crossings then thereafter")
+  if ex then
+    check_eq(ex("BEL5 cross LAM flight level one two zero, thereafter descend when ready FL90"),
+      "AT BEL5 LAM ALT FL120 ; AT BEL5 LAM DO ALT BEL5 FL90")
+    check_eq(ex("BEL5 cross LAM at 250 knots, after that slow to 220"), "AT BEL5 LAM SPD 250 ; AT BEL5 LAM DO SPD BEL5 220")
+    check_eq(ex("BEL5 cross LAM at FL120, then descend FL90"), "AT BEL5 LAM ALT FL120 ; ALT BEL5 FL90")
+    asked(ex("BEL5 cross LAM at FL120, thereafter descend FL90 and reduce 220"), "the speed now or after LAM")
+    asked(ex("BEL5 cross BIG FL120, thereafter descend FL90"), "a crossing off the route")
+  end
+end
