@@ -1206,6 +1206,21 @@ function m:type_said(i)
   local spoken = ""
   for k = i, i + 2 do spoken = spoken .. (self.t[k] and self.t[k].kind == "word" and DIGIT_WORDS[self.t[k].text] or "-") end
   if fams[spoken] then return set_of(fams[spoken]), i + 3 end
+  -- ("the seven three", "the seven seven": after "the", a Boeing 7x7's or an Airbus A3xx's first two digits said
+  -- in words name every designator that starts so, B73x, B77x; "the three twenty", "the one ninety": a family's
+  -- number, or one designator's digits, said group-wise)
+  local said = spoken:gsub("%-.*", "")
+  if self:word(i - 1, "the") and #said == 2 and (said:sub(1, 1) == "7" or said:sub(1, 1) == "3") then
+    return pattern_of({ "^" .. (said:sub(1, 1) == "7" and "B" or "A") .. said .. "%w$" }), i + 2
+  end
+  local tens = #said == 1 and self:word(i - 1, "the") and self.t[i + 1] and TENS_WORDS[self.t[i + 1].text]
+  if tens then
+    local d3 = self.t[i + 2] and self.t[i + 2].kind == "word" and DIGIT_WORDS[self.t[i + 2].text]
+    local num, e = said .. tens .. ((d3 and d3 ~= "0") and d3 or "0"), (d3 and d3 ~= "0") and i + 3 or i + 2
+    local fam, short = fams[num] or fams["a" .. num], select(3, makers())[num]
+    if fam then return set_of(fam), e end
+    if short then return function(d) return d == short or aliases()[d] == short end, e end
+  end
   for _, r in ipairs(self.refs) do
     if r.kind == "type" and r.b == i then
       -- ("the Boeing 777", "the A330": the family's number, its maker before it or not, is the family)

@@ -9545,3 +9545,17 @@ do
     asked(ex("BEL5 cross BIG FL120, thereafter descend FL90"), "a crossing off the route")
   end
 end
+
+-- Cycle 47 (f107): an aircraft described by its family ("the E-jet") or by a Boeing 7x7's or an Airbus A3xx's first
+-- two digits said in words after "the" ("the seven three": B73x) is read when exactly one flying fits, asked
+-- otherwise
+do
+  local _, ex = scene({ "CRE SAS12 E195 55.6 12.6 180 FL110 250", "CRE NAX3 B738 55.8 12.2 090 FL150 270",
+    "CRE TAP7 A332 55.2 12.9 330 FL230 290", "CRE AEE9 A320 55.4 12.1 010 FL190 280", "CRE VOE1 A320 55.3 12.4 200 FL170 280" })
+  check_eq(ex("where is the ejet"), "POS SAS12")
+  check_eq(ex("the E-jet, descend FL90"), "ALT SAS12 FL90")
+  check_eq(ex("the seven three, turn left heading 050"), "HDG NAX3 50 LEFT")
+  check_eq(ex("the three three, climb FL250"), "ALT TAP7 FL250")
+  asked(ex("the three twenty, reduce 240"), "two A320s")
+  asked(ex("the seven seven, reduce 240"), "no 777 flying")
+end
