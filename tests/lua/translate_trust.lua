@@ -9558,4 +9558,7 @@ do
   check_eq(ex("the three three, climb FL250"), "ALT TAP7 FL250")
   asked(ex("the three twenty, reduce 240"), "two A320s")
   asked(ex("the seven seven, reduce 240"), "no 777 flying")
+  -- (an ERJ is given the name too: with an ERJ 145 and an E175 flying, "the E-jet" is asked)
+  local _, ex2 = scene({ "CRE KLM7 E145 52 4 090 FL150 250", "CRE WIF2 E75L 52.3 4.2 270 FL170 260" })
+  asked(ex2("the E-jet, slow to 240"), "two Embraer jets")
 end
