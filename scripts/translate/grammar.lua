@@ -5785,6 +5785,15 @@ function G:limit_off_route(i, window)
   return true
 end
 
+-- True when a value is said straight after the word at i, its noun before it or not ("hold 250 knots", "hold
+-- speed 250", "hold FL150"): the word keeps that value.
+function G:value_next(i)
+  local v = self:skip_fillers(i + 1)
+  if self:word(v, "speed altitude level heading mach") and not self:word(v - 1, "flight") then v = v + 1 end
+  local q = self:quantities(v, v + 3)[1]
+  return q ~= nil and q.b == v
+end
+
 -- Finds the phrases of lexicon.not_simulated, marks their tokens used (the
 -- rest of the request is read as if they were not there) and returns the
 -- reply naming them, or nil. A phrase runs from its word to the next
@@ -5809,6 +5818,7 @@ function G:not_simulated()
             and (not c.subject or self:said_after_subject(i, c.subject))
             and (not c.after_heading or self:after_heading(i))
             and not (c.not_before and self:word(self:skip_fillers(i + 1), c.not_before))
+            and not (c.no_value and self:value_next(i))
             and not (c.not_after and self:word(i - 1, c.not_after)) and not self:word(i + 1, "not") then
           local expected = c.not_aircraft_to and self:aircraft_then_to(i + 1)
           if c.routed and self:limit_off_route(i, c.window) then break end

@@ -1023,10 +1023,11 @@ return {
     -- (`not_before`: "hold the sim at 30 minutes" holds the simulation, no aircraft)
     { what = "holding patterns", words = "hold",
       near = { "at", "over", "published", "short", "fix", "inbound", "turns", "#waypoint" }, takes_time = true,
-      not_before = "@sim" },
+      not_before = "@sim", no_value = true },
     { what = "holding patterns", words = "enter", near = { "hold", "holding" }, takes_time = true },
     -- "KL204, hold": said to an aircraft, no pause of the simulation; what follows "then" waits for it
-    { what = "holding patterns", words = "hold", after_callsign = true, takes_time = true },
+    -- (`no_value`: a value said straight after it, "hold 250 knots", "hold FL150", is kept: G:value_next)
+    { what = "holding patterns", words = "hold", after_callsign = true, takes_time = true, no_value = true },
   },
   -- answers that decline a yes/no question ("delete 5 aircraft?")
   no = { "no", "negative", "nope", "don't", "dont", "stop" },

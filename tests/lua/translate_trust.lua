@@ -9474,6 +9474,10 @@ do
     -- (a distance the limit lasts, "for the next 15 miles", is asked by name too)
     check_eq(ex("SWR41 keep 280 knots or more for the next 15 miles"), "ASK I have SPD SWR41 280. What does '15 miles' mean?")
     asked(ex("SWR41 turn right heading 160 for eight miles"), "a heading flown for a distance")
+    -- ("hold" and a value straight after it keeps the value; "hold at TAU" is still the holding pattern)
+    check_eq(ex("SWR41 hold two five zero knots"), "SPD SWR41 250")
+    check_eq(ex("SWR41 hold FL150"), "ALT SWR41 FL150")
+    check_eq(ex("SWR41 hold at TAU"), "")
   end
 end
 
