@@ -1207,8 +1207,8 @@ function m:type_said(i)
   for k = i, i + 2 do spoken = spoken .. (self.t[k] and self.t[k].kind == "word" and DIGIT_WORDS[self.t[k].text] or "-") end
   if fams[spoken] then return set_of(fams[spoken]), i + 3 end
   -- ("the seven three", "the seven seven": after "the", a Boeing 7x7's or an Airbus A3xx's first two digits said
-  -- in words name every designator that starts so, B73x, B77x; "the three twenty", "the one ninety": a family's
-  -- number, or one designator's digits, said group-wise)
+  -- in words name every designator that starts so, B73x, B77x; "the three twenty", "the seven thirty eight": a
+  -- family's number, or one Airbus or Boeing designator's digits, said group-wise)
   local said = spoken:gsub("%-.*", "")
   if self:word(i - 1, "the") and #said == 2 and (said:sub(1, 1) == "7" or said:sub(1, 1) == "3") then
     return pattern_of({ "^" .. (said:sub(1, 1) == "7" and "B" or "A") .. said .. "%w$" }), i + 2

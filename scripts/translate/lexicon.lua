@@ -890,7 +890,8 @@ return {
   -- `subject`: the phrase is one only straight after one of these words; `own_clause`: with `last`, a clause
   -- after a comma opened by an imperative verb ("until 5 miles final, descend to 3000 feet") may follow it;
   -- `after_heading`: the phrase is one only after a heading value, with at most "to", "vectors" or a comma
-  -- between them (G:after_heading)
+  -- between them (G:after_heading); `no_value`: none with a value said straight after its word (G:value_next);
+  -- `routed`: a place it names off the route of the one aircraft addressed is asked (G:limit_off_route)
   not_simulated = {
     -- ("squak", "sqwk": squawk typed short)
     { what = "transponder codes", words = "squawk squawking sq squak sqwk sqk",
