@@ -2117,8 +2117,29 @@ function G:level_limits()
             .. "otherwise?", self:raw(i, q.e)))
         end
       end
+      self:distance_limit(i, v, q)
     end
   end
+end
+
+-- A distance from a place after "until" ("maintain 250 knots or greater until 20 miles from FFM", "until 15 miles
+-- from TAU descend FL100"; the word at i, the quantity q from v) ends the instruction there, a limit squawk's
+-- commands do not carry (ATDIST would start it there instead): asked. With "then" (or "thereafter", "after that")
+-- straight after the place ("speed 280 till 10 miles from TAU, then reduce 220") it is when that next
+-- instruction runs, read as the condition.
+function G:distance_limit(i, v, q)
+  if not (q and q.b == v and q.kind == "dist") then return end
+  local at = self:word(q.e, "out") and q.e + 1 or q.e
+  local from = self:word(at, "from of to before") and self:skip_fillers(at + 1) or at
+  local place = self:refs_in(from, from + 1, "waypoint")[1] or self:refs_in(from, from + 1, "airport")[1]
+  local e = place and place.e or from
+  if not place and not (self.t[from] and self.t[from].kind == "word" and self.t[from].raw:match("^%u")) then return end
+  if not place then e = from + 1 end
+  local k = self.t[e] and self.t[e].kind == "punct" and self.t[e].text == "," and e + 1 or e
+  if self:word(k, "and") then k = k + 1 end
+  if self:word(k, "then thereafter afterwards") or (self:word(k, "after") and self:word(k + 1, "that")) then return end
+  self:need(string.format("squawk cannot end an instruction at a distance ('%s'): ATDIST would start it there. "
+    .. "Should it hold until told otherwise?", self:raw(i, e)))
 end
 
 -- A level said after "passing" or "leaving" that became a level to fly ("KLM12 passing FL340 Mach .80": a
@@ -2309,7 +2330,7 @@ function G:condition()
     local from = q.kind == "dist" and self:word(at, "from of to before") and self:skip_fillers(at + 1)
     local r = from and self:refs_in(from, from + 1, "waypoint")[1]
     -- ("when the Swiss is 10 miles from Munich airport": a place said by its name, near the aircraft)
-    local place = r and r.name or (from and self:place_by_name(from, comma, self:state(self.subject)))
+    local place = r and r.name or (from and self:place_by_name(from, comma, self:state(self.subject), true))
     if place then return "ATDIST " .. self.subject .. " " .. place .. " " .. f.num(q.value), rest end
   end
   self.ask = "At what altitude or speed should " .. self.subject .. " act?"
@@ -2520,7 +2541,23 @@ function G:segments(b, e)
           local w = self:refs_in(between[1].e, tr.pos, "waypoint")
           local r = w[#w]
           dist_between = dist_between or (r ~= nil and self:skip_fillers(r.e) == tr.pos
-            and self:word(r.b - 1, "after passing over leaving"))
+            and self:word(r.b - 1, "after passing over leaving reaching"))
+          -- ("reduce 230, when level reduce 210": the level reached, "when/once (it's) level", likewise)
+          local lv = tr.pos - 1
+          while lv > between[1].e and self.t[lv].kind == "punct" do lv = lv - 1 end
+          local wh = self:word(lv - 1, "is it's you're") and lv - 2 or lv - 1
+          if self:word(wh, "it you") then wh = wh - 1 end
+          dist_between = dist_between or (self:word(lv, "level") and self:word(wh, "when once") and wh >= between[1].e)
+          -- (likewise a place said by its name, one or two capitalised words: "reduce 220, reaching Taunus reduce 210")
+          for n = 1, 2 do
+            local p, named = tr.pos - n, true
+            for k = p, tr.pos - 1 do
+              named = named and self.t[k].kind == "word" and self.t[k].alpha and self.t[k].raw:match("^%u") ~= nil
+                and not self.t[k].keyword
+            end
+            dist_between = dist_between or (named and p - 1 > between[1].e - 1
+              and self:word(p - 1, "after passing over leaving reaching"))
+          end
         end
         if (last.intent == tr.intent or alt_pair or kept_heading) and not this.single
             and not self:addressee_between(last, tr.pos) and not dist_between then
@@ -2567,6 +2604,12 @@ function G:segments(b, e)
         local soon = self:find_word(last.trig + 1, cond, "soon")
         if soon < cond and self:word(soon - 1, "as") and self:word(soon + 1, "as") then cond = soon - 1 end
         if cond < start then start = cond end
+        -- (", leave BIG heading 270": "leave" and the waypoint straight before the instruction word open its clause)
+        for _, r in ipairs(self:refs_in(last.trig + 1, start, "waypoint")) do
+          if self:skip_fillers(r.e) == start and self:word(r.b - 1, "leave") and r.b - 1 > last.trig then
+            start = r.b - 1
+          end
+        end
         -- (the distance of a condition said before the instruction word, with "at" or "within" before it; a
         -- level after "at" opening a clause after the last instruction's value, before a speed or heading:
         -- "climb FL360, at FL350 it shall reduce to Mach .77"; never a creation's "..., at 37,000 feet")
@@ -3148,8 +3191,19 @@ function G:parse(b, e)
         s = { b = s.b, e = cut, trig = s.trig, intent = s.intent }
       end
       local spec = M.intents[s.intent]
+      -- ("cross LAM FL110, thereafter descend FL80": what is said "thereafter" or "after that" straight after a
+      -- crossing starts at its waypoint; "then" keeps its own reading)
+      local crossed = self.crossed
+      self.crossed = nil
       if not self:at_waypoint(s, spec) then self[spec and spec.handler or "infer"](self, s, spec) end
-      if until_wp and not self.ask and #self.out > n_before then
+      local c0 = crossed and k > 1 and self:find_word(segs[k - 1].trig, s.trig, "thereafter afterwards after")
+      if c0 and c0 < s.trig and (not self:word(c0, "after") or self:word(c0 + 1, "that"))
+          and not self:any_instruction_in(c0 + 1, s.trig) and not self.ask and #self.out > n_before then
+        self:explain(c0, self:word(c0, "after") and c0 + 2 or c0 + 1)
+        if self:do_at(crossed.id, crossed.wp, n_before) then
+          self.waypoint_do = { id = crossed.id, wp = crossed.wp, n = #self.out }
+        end
+      elseif until_wp and not self.ask and #self.out > n_before then
         self:explain(until_wp.u, until_wp.e)
         self:do_at(self.out[n_before + 1]:match("^%u+ (%S+)"), until_wp.name, n_before)
       elseif tail and not self.ask and #self.out > n_before then
@@ -3165,6 +3219,18 @@ function G:parse(b, e)
       end
       if at then
         for c = n_before + 1, #self.out do self.out[c] = at .. " " .. self.out[c] end
+      end
+      -- ("descend FL80, reduce 230, when level reduce 210": "level" is the level cleared, whatever was said
+      -- between)
+      local id = not at and not self.ask and #self.out == n_before + 1 and self.out[#self.out]:match("^%u+ (%S+)")
+      if id and self:word_in(s.b, s.trig, "level lvl") and self:when_reached(s) then
+        for c = n_before, 1, -1 do
+          local level = self.out[c]:match("^ALT " .. id:gsub("%p", "%%%0") .. " (%S+)")
+          if level then
+            before = "ATALT " .. id .. " " .. level
+            break
+          end
+        end
       end
       -- A value instruction said without its value next to other, complete
       -- instructions is left out; it becomes the question only when nothing
@@ -3279,7 +3345,20 @@ function G:valueless_left(segs, valueless, issued_by)
     for i = math.max(1, s.trig - 2), s.trig - 1 do refused = refused or G.negations[self.t[i].text] end
     local next_word = self:skip_fillers(s.trig + 1)
     if self:word(next_word, "the") then next_word = self:skip_fillers(next_word + 1) end
-    local read = not bare or refused or (before and issued_by[v.k - 1] and self:skip_fillers(before.trig + 1) == s.trig)
+    -- ("no restriction on speed", "no ATC restrictions on your speed": the restriction lifted, its noun said last)
+    local k = self:word(s.trig - 1, "the your its") and s.trig - 2 or s.trig - 1
+    local r = self:word(k - 1, "restriction restrictions limit limits") and k - 1
+    if r and self:word(r - 1, "atc") then r = r - 1 end
+    local lifted = self:word(k, "on") and r and self:word(r - 1, "no")
+    for verb in (lifted and G.value_intents[s.intent] or ""):gmatch("%u+") do
+      if issued[verb] then
+        self:need(string.format("I have %s. Which stands: '%s', or the %s given?", table.concat(self.out, " ; "),
+          self:raw(r - 1, s.trig + 1), self:raw(s.trig, s.trig + 1)))
+        return
+      end
+    end
+    local read = not bare or refused or lifted
+      or (before and issued_by[v.k - 1] and self:skip_fillers(before.trig + 1) == s.trig)
       or (after and issued_by[v.k + 1] and next_word == after.trig)
     for verb in (G.value_intents[s.intent] or ""):gmatch("%u+") do read = read or issued[verb] end
     for j, o in ipairs(segs) do
@@ -3420,7 +3499,7 @@ function G:trailing_fix(s)
     if r then return r.b == k and r.e == e and { b = c, e = r.e, name = r.name } or nil end
     local a = self:refs_in(1, s.trig, "aircraft")
     local now = #a == 1 and self:state(a[1].name)
-    local name = now and e > k and e <= k + 2 and self:place_by_name(k, e, now)
+    local name = now and e > k and e <= k + 2 and self:place_by_name(k, e, now, true)
     return name and { b = c, e = e, name = name } or nil
   end
   if self:word(k, "it you") then k = self:skip_fillers(k + 1) end
@@ -3621,7 +3700,12 @@ for _, w in ipairs(lexicon.accounted.radiotelephony) do RADIOTELEPHONY[w] = true
 local function ends_request(self, k)
   k = self:skip_fillers(k)
   while self.t[k] and self.t[k].kind == "punct" and self.t[k].text ~= "," do k = k + 1 end
-  return k > #self.t
+  if k > #self.t then return true end
+  -- (or a clause of its own follows, opened by "thereafter" or "after that": "cross LAM FL110, thereafter descend
+  -- FL80")
+  if self.t[k].kind == "punct" then k = self:skip_fillers(k + 1) end
+  if self:word(k, "and") then k = self:skip_fillers(k + 1) end
+  return self:word(k, "thereafter afterwards") or (self:word(k, "after") and self:word(k + 1, "that"))
 end
 function G:at_waypoint(s, spec)
   if not (spec and spec.value) and s.intent ~= "infer" then
@@ -3646,7 +3730,7 @@ function G:at_waypoint(s, spec)
       local r = self:refs_in(k, verb, "waypoint")[1]
       local name = r and r.b == k and r.e == verb and r.name
       if not name and not r and self:state(ids[1]) and verb <= k + 3 then
-        name = self:place_by_name(k, verb, self:state(ids[1]))
+        name = self:place_by_name(k, verb, self:state(ids[1]), true)
       end
       -- (with waypoints of the route between the two, which of them the shortcut leaves out is asked)
       local route, at, target = (self:state(ids[1]) or {}).route or {}, nil, nil
@@ -3773,10 +3857,10 @@ function G:at_waypoint(s, spec)
   -- ("Aegean 603, efcharistó, at DILOP descend ...": a word of courtesy after the callsign)
   while self:word(first, RADIOTELEPHONY) do first = self:skip_fillers(first + 1) end
   -- (the clause's opening words: "at", "over", "overhead", "after", "after/when/on/upon/once passing",
-  -- "leaving", "overflying", "reaching", "past" or "over", "passing", "leave", "leaving")
+  -- "leaving", "overflying", "reaching", "past" or "over", "passing", "reaching", "leave", "leaving")
   local opens
   local passed = "passing leaving overflying reaching past over"
-  if self:word(first, "at over overhead after passing leave leaving") then
+  if self:word(first, "at over overhead after passing reaching leave leaving") then
     opens = self:skip_fillers(first + 1)
     if self:word(first, "after") and self:word(opens, passed) then opens = self:skip_fillers(opens + 1) end
   elseif self:word(first, "when on upon once") and self:word(self:skip_fillers(first + 1), passed) then
@@ -3797,8 +3881,9 @@ function G:at_waypoint(s, spec)
           letters, self:raw(opens, k)))
       end
       self:explain(opens, k)
-    elseif now and s.trig <= opens + 3 then
-      name = self:place_by_name(opens, s.trig, now)
+    -- (after "leave" or "leaving" only a heading is flown from the place: below)
+    elseif now and s.trig <= opens + 3 and not (self:word(first, "leave leaving") and not self:word(s.trig, "heading hdg")) then
+      name = self:place_by_name(opens, s.trig, now, true)
     end
     if name then refs = { { b = opens, e = s.trig, name = name } } end
   end
@@ -4010,6 +4095,7 @@ function G:at_waypoint(s, spec)
           self:emit("AT " .. ids[1] .. " " .. r.name .. " ALT " .. f.alt(alt.value, alt.fl))
           self:take(alt)
         end
+        self.crossed = { id = ids[1], wp = r.name }
         if spd then
           self:emit("AT " .. ids[1] .. " " .. r.name .. " SPD "
             .. (spd.kind == "mach" and f.mach(spd.value) or f.int(spd.value)))
@@ -4109,6 +4195,16 @@ function G:unexplained(s, n_before)
     end
     -- (a bare value between the callsign and the instruction word, "BAW256 9 climb FL300", is named alone)
     local before_verb = callsign and not (opened and q.b > opened)
+    -- (a distance closing its clause that no condition read, beside a level, speed, heading or rate, "maintain
+    -- 250 knots for 10 miles", is a limit squawk's commands do not carry: asked, never dropped; "within 10 km"
+    -- is where the instruction is flown, and a place after it, "20 miles from Gotham", is asked about by name)
+    local k = self:skip_fillers(q.e)
+    if q.kind == "dist" and s.intent ~= "direct" and not self.taken[q.b] and not self.u:used(q.b)
+        and not (self.explained or {})[q.b] and not self.noted[q.b] and not self:word(q.b - 1, "within")
+        and (not self.t[k] or self.t[k].kind == "punct" or self:word(k, "and then")) then
+      self.leftover = self:raw(q.b, q.e)
+      return
+    end
     if not self.taken[q.b] and not SELF_READ[q.kind] and not relative and not q.by and q.turn == 0
         and q.b > corrected
         and ((opened and q.b > opened) or own_unit(q) or self:word(q.b - 1, "@clause_verbs") or before_verb)
@@ -5732,6 +5828,33 @@ function G:aircraft_then_to(i)
   return r and self:word(r.e, "to") and r or nil
 end
 
+-- True, asking, when the place a limit ends at ("maintain 250 knots or greater until KERAX": the word at i,
+-- the waypoint within `window` words after it) is on no route of the one aircraft addressed: the value would be
+-- flown with an end that names a place the aircraft never passes.
+function G:limit_off_route(i, window)
+  local wp = self:refs_in(i + 1, i + 1 + (window or 4), "waypoint")[1]
+  -- (a distance before it is no place: "till 6 DME")
+  if wp and #self:quantities(i + 1, wp.b) > 0 then return false end
+  local ids, seen = {}, {}
+  for _, r in ipairs(self:refs_in(1, #self.t + 1, "aircraft")) do
+    if r.exists and not seen[r.name] then seen[r.name], ids[#ids + 1] = true, r.name end
+  end
+  if not wp or #ids ~= 1 or self:on_route(ids[1], wp.name) then return false end
+  self:need(string.format("%s is not on %s's route, so the limit '%s' ends at a place it does not pass (and squawk "
+    .. "does not simulate where a limit ends). Should %s fly the value with no end, or did you mean another "
+    .. "waypoint?", wp.name, ids[1], self:raw(i, wp.e), ids[1]))
+  return true
+end
+
+-- True when a value is said straight after the word at i, its noun before it or not ("hold 250 knots", "hold
+-- speed 250", "hold FL150"): the word keeps that value.
+function G:value_next(i)
+  local v = self:skip_fillers(i + 1)
+  if self:word(v, "speed altitude level heading mach") and not self:word(v - 1, "flight") then v = v + 1 end
+  local q = self:quantities(v, v + 3)[1]
+  return q ~= nil and q.b == v
+end
+
 -- Finds the phrases of lexicon.not_simulated, marks their tokens used (the
 -- rest of the request is read as if they were not there) and returns the
 -- reply naming them, or nil. A phrase runs from its word to the next
@@ -5756,9 +5879,11 @@ function G:not_simulated()
             and (not c.subject or self:said_after_subject(i, c.subject))
             and (not c.after_heading or self:after_heading(i))
             and not (c.not_before and self:word(self:skip_fillers(i + 1), c.not_before))
+            and not (c.no_value and self:value_next(i))
             and not (c.not_after and self:word(i - 1, c.not_after)) and not self:word(i + 1, "not")
             and (not c.bare or self:said_bare(i)) then
           local expected = c.not_aircraft_to and self:aircraft_then_to(i + 1)
+          if c.routed and self:limit_off_route(i, c.window) then break end
           if expected then
             self:need(string.format("Is '%s' an instruction to send now, or what you expect to happen? Please "
               .. "say the instruction itself.", self:raw(i, expected.e)))

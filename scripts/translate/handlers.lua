@@ -1206,6 +1206,21 @@ function m:type_said(i)
   local spoken = ""
   for k = i, i + 2 do spoken = spoken .. (self.t[k] and self.t[k].kind == "word" and DIGIT_WORDS[self.t[k].text] or "-") end
   if fams[spoken] then return set_of(fams[spoken]), i + 3 end
+  -- ("the seven three", "the seven seven": after "the", a Boeing 7x7's or an Airbus A3xx's first two digits said
+  -- in words name every designator that starts so, B73x, B77x; "the three twenty", "the seven thirty eight": a
+  -- family's number, or one Airbus or Boeing designator's digits, said group-wise)
+  local said = spoken:gsub("%-.*", "")
+  if self:word(i - 1, "the") and #said == 2 and (said:sub(1, 1) == "7" or said:sub(1, 1) == "3") then
+    return pattern_of({ "^" .. (said:sub(1, 1) == "7" and "B" or "A") .. said .. "%w$" }), i + 2
+  end
+  local tens = #said == 1 and self:word(i - 1, "the") and self.t[i + 1] and TENS_WORDS[self.t[i + 1].text]
+  if tens then
+    local d3 = self.t[i + 2] and self.t[i + 2].kind == "word" and DIGIT_WORDS[self.t[i + 2].text]
+    local num, e = said .. tens .. ((d3 and d3 ~= "0") and d3 or "0"), (d3 and d3 ~= "0") and i + 3 or i + 2
+    local fam, short = fams[num] or fams["a" .. num], select(3, makers())[num]
+    if fam then return set_of(fam), e end
+    if short then return function(d) return d == short or aliases()[d] == short end, e end
+  end
   for _, r in ipairs(self.refs) do
     if r.kind == "type" and r.b == i then
       -- ("the Boeing 777", "the A330": the family's number, its maker before it or not, is the family)
@@ -1903,7 +1918,7 @@ function m:at_distance(s)
       local ids = p and self:acids(s) or {}
       -- ("when 20 miles from Minna descend FL200", "ten miles from Zurich East descend": a navaid or airport
       -- said by its name, of one or two words)
-      local name = r and r.name or (p and #ids == 1 and self:place_by_name(p, math.min(s.e, p + 2), self:state(ids[1])))
+      local name = r and r.name or (p and #ids == 1 and self:place_by_name(p, math.min(s.e, p + 2), self:state(ids[1]), true))
       if name then
         if #ids ~= 1 then return nil end
         self:mark_used(q.b, q.e)  -- the condition's distance is not the instruction's value
@@ -1989,9 +2004,24 @@ function m:leftovers(s)
   local spd_done = s.intent == "spd" or out:find("SPD " .. ids[1], 1, true) ~= nil
   local hdg_done = s.intent == "direct"  -- a direct-to is its lateral instruction
   local qs = self:quantities(s.b, s.e)
+  -- (a speed or level a correction takes back, "thereafter Mach .76, no, correction, 280 knots": the value of its
+  -- family said after the correction is the one meant)
+  local function family(q) return (q.kind == "mach" or q.kind == "speed") and "spd" or q.kind end
+  local function taken_back(k)
+    local q, corr = qs[k], self:said("@correction") and self:find_word(qs[k].e, s.e, "@correction")
+    if not corr or corr >= s.e then return false end
+    for j = k + 1, #qs do
+      if qs[j].b > corr and family(qs[j]) == family(q) and (q.kind ~= "alt" or q.fl) then return true end
+      if qs[j].b > corr then return false end
+    end
+    return false
+  end
   for k, q in ipairs(qs) do
     -- (the level left, "leaving FL260 for FL200", is no instruction: the one after it is)
     if q.kind == "alt" and not alt_done and self:level_left(q, qs[k + 1]) then self:take(q) end
+    if (q.kind == "speed" or q.kind == "mach" or q.kind == "alt") and not self.taken[q.b] and taken_back(k) then
+      self:take(q)
+    end
     -- a level or speed with its unit, before the instruction word too ("klm1234 fl280 spd 300", "FIN3CA:
     -- 9000ft, spd 220"; a level or height after "below"/"above" is a condition or a limit on something
     -- else, no level to fly: left over, it is asked)

@@ -1080,6 +1080,7 @@ return function(H, f, compass)
       end
     end
     if #ids > 1 and #ids <= most then
+      self.several_named = { ids = ids, phrase = phrase }
       self:need(string.format("Which %s is '%s': %s?", kind, phrase, table.concat(ids, " or ")))
       return ids[1]
     end
@@ -1092,8 +1093,10 @@ return function(H, f, compass)
   -- anywhere; with no traffic, else the one navaid of that name anywhere ("create ... at Ockham").
   -- A name that an airport and a navaid near the aircraft `a` both bear ("direct Melbourne": YMML
   -- and the ML VOR) is the one of the two its route holds (its destination: the airport's), else
-  -- asked about, the airport kept (a direct-to a city names its VOR as often as its airport).
-  function m:place_by_name(b, e, a)
+  -- asked about, the airport kept (a direct-to a city names its VOR as often as its airport). `reference`
+  -- (true: a place a distance or a waypoint condition is measured from, "30 miles from Frankfurt") makes a
+  -- name several navaids there bear beside the airport asked about too, naming them all.
+  function m:place_by_name(b, e, a, reference)
     local near = a and { a } or self.fleet
     -- (the longer name first: "direct Zurich East" is the ZUE VOR, not Zurich airport and a word more)
     for _, r in ipairs(near) do
@@ -1103,9 +1106,20 @@ return function(H, f, compass)
     local unasked = self.ask
     local airport = a and self:airport_by_name(b, e, a)
     local asked = self.ask
+    self.several_named = nil
     local navaid = airport and self:navaid_by_name(b, e, a)
-    -- (a name several navaids there bear is no one navaid: "direct Frankfurt" is the airport)
-    if self.ask ~= asked then self.ask, navaid = asked, nil end
+    -- (a name several navaids there bear is no one navaid: "direct Frankfurt" is the airport; "30 miles from
+    -- Frankfurt" is asked: EDDF, or the FFM or FW navaid?)
+    if self.ask ~= asked then
+      self.ask, navaid = asked, nil
+      local several = self.several_named
+      if reference and several then
+        local n, k = select(2, several.phrase:gsub("%S+", "")), b
+        while k < e and self.t[k].text ~= several.phrase:match("^%S+") do k = k + 1 end
+        self:need(string.format("Which place is '%s': the %s airport or the %s navaid?", self:raw(k, k + n), airport,
+          table.concat(several.ids, " or ")))
+      end
+    end
     if navaid then
       local held = {}
       for _, r in ipairs(a.route or {}) do held[r:upper()] = true end

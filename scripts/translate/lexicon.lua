@@ -902,7 +902,9 @@ return {
   -- `subject`: the phrase is one only straight after one of these words; `own_clause`: with `last`, a clause
   -- after a comma opened by an imperative verb ("until 5 miles final, descend to 3000 feet") may follow it;
   -- `after_heading`: the phrase is one only after a heading value, with at most "to", "vectors" or a comma
-  -- between them (G:after_heading); `bare`: the word is one only said alone in its clause (G:said_bare)
+  -- between them (G:after_heading); `bare`: the word is one only said alone in its clause (G:said_bare);
+  -- `no_value`: none with a value said straight after its word (G:value_next); `routed`: a place it names off
+  -- the route of the one aircraft addressed is asked (G:limit_off_route)
   not_simulated = {
     -- ("squak", "sqwk": squawk typed short)
     { what = "transponder codes", words = "squawk squawking sq squak sqwk sqk",
@@ -924,9 +926,10 @@ return {
     -- setting of the simulation's wind (said with no callsign before it, "wind 310 at 15" is WIND's)
     { what = "wind reports", words = "wind", near = { "#number" }, window = 1, after_callsign = true },
     -- "keep speed 280 until VAKNO", "maintain FL200 till DETAK": the value is flown now, its end at the
-    -- place is not kept; said last only (anything after it, "then contact tower", waits for it: asked)
+    -- place is not kept; said last only (anything after it, "then contact tower", waits for it: asked);
+    -- `routed`: the place is on the route of the one aircraft addressed (else the limit is placed nowhere: asked)
     { what = "limits that end at a place", words = "until till", near = { "#waypoint" }, after_instruction = true,
-      last = true, own_clause = true },
+      last = true, own_clause = true, routed = true },
     -- "maintain 8000 until established", "till established on the localizer": the same limit ending on the
     -- approach, said straight after the word and last (`last`: the words it may hold, a comma among them:
     -- "until established, cleared ILS runway 10" closes with the approach clearance)
@@ -940,6 +943,13 @@ return {
     { what = "limits that end at a distance", words = "until till", own_clause = true,
       near = { "3", "4", "5", "6", "three", "four", "five", "six" }, window = 1,
       and_near = { { "dme", "miles", "mile", "nm" }, 2 }, after_instruction = true,
+      last = "dme miles mile nm final out from touchdown threshold the , cleared for ils localizer localiser "
+        .. "approach runway rwy l r c" },
+    -- "reduce 160 knots to four DME", "speed 180 to 5 miles final": "to" for "until" before the same limit, its
+    -- DME or "final" said (a zone's "radius to 4 nm" is no limit)
+    { what = "limits that end at a distance", words = "to", own_clause = true,
+      near = { "3", "4", "5", "6", "three", "four", "five", "six" }, window = 1,
+      and_near = { { "dme", "final" }, 2 }, after_instruction = true,
       last = "dme miles mile nm final out from touchdown threshold the , cleared for ils localizer localiser "
         .. "approach runway rwy l r c" },
     -- "climb FL250, cancel speed restriction", "cancel level restrictions": a restriction lifted, which squawk
@@ -1027,10 +1037,11 @@ return {
     -- (`not_before`: "hold the sim at 30 minutes" holds the simulation, no aircraft)
     { what = "holding patterns", words = "hold",
       near = { "at", "over", "published", "short", "fix", "inbound", "turns", "#waypoint" }, takes_time = true,
-      not_before = "@sim" },
+      not_before = "@sim", no_value = true },
     { what = "holding patterns", words = "enter", near = { "hold", "holding" }, takes_time = true },
     -- "KL204, hold": said to an aircraft, no pause of the simulation; what follows "then" waits for it
-    { what = "holding patterns", words = "hold", after_callsign = true, takes_time = true },
+    -- (`no_value`: a value said straight after it, "hold 250 knots", "hold FL150", is kept: G:value_next)
+    { what = "holding patterns", words = "hold", after_callsign = true, takes_time = true, no_value = true },
     -- "climb FL300, squawk", "descend FL150 then hold", "turn left heading 200, report", "climb FL300 vectors",
     -- "descend 4000, approach": the word said bare (`bare`: alone in its clause beside an instruction, G:said_bare)
     -- names what squawk does not simulate, beside the instruction flown to an aircraft (said bare before the

@@ -149,6 +149,10 @@ M.nicknames = {
   -- ("the MAX": any 737 MAX; "the bus": any Airbus airliner)
   max = { "^B3%wM$" },
   bus = { "^A3%d%w$", "^A%d%dN$", "^BCS%d$" },
+  -- ("the E-jet": Embraer's E170 to E195 and the E2s, and the ERJ 135/145 the name is given to as well, R90)
+  ejet = { "^E1[79][05]$", "^E75%u$", "^E29[05]$", "^E1[34]5$", "^E[34]5%u$" },
+  ["e-jet"] = { "^E1[79][05]$", "^E75%u$", "^E29[05]$", "^E1[34]5$", "^E[34]5%u$" },
+  ["e jet"] = { "^E1[79][05]$", "^E75%u$", "^E29[05]$", "^E1[34]5$", "^E[34]5%u$" },
 }
 
 function M.build(designators)

@@ -9532,3 +9532,114 @@ do
   check_eq(ex("QTR1015 fly heading 120"), "HDG QTR1015 120")
   check_eq(ex("QTR1015 fly FL120"), "ALT QTR1015 FL120")
 end
+
+-- Cycle 47 (f107): a speed or level held "until" a place the aircraft's route does not pass, or until a distance
+-- from a place, is asked (ATDIST would start it there); a bound said with it ("or more") changes nothing
+do
+  local _, ex = navscene({ "CRE SWR41 A320 50.6 7.4 110 FL150 300", "ADDWPT SWR41 TAU",
+    "CRE CFG7 A321 50.3 10.2 270 FL230 290", "ADDWPT CFG7 KERAX" }, "limits that end at a place")
+  if ex then
+    asked(ex("SWR41 maintain two six zero knots or more until KERAX"), "a limit at a place off the route")
+    asked(ex("SWR41 keep FL150 till KERAX"), "a level's limit at a place off the route")
+    check_eq(ex("SWR41 keep speed 260 knots or greater till TAU"), "SPD SWR41 260")
+    check_eq(ex("CFG7 maintain 270 knots or more until KERAX"), "SPD CFG7 270")
+    asked(ex("SWR41 maintain two six zero knots until 25 miles from FFM"), "a limit at a distance from a place")
+    asked(ex("SWR41 until 25 miles from TAU maintain FL160"), "a limit at a distance said first")
+    check_eq(ex("SWR41 speed 270 until 12 miles from TAU, then reduce 230"),
+      "SPD SWR41 270 ; ATDIST SWR41 TAU 12 SPD SWR41 230")
+    check_eq(ex("SWR41 when 25 miles from TAU reduce 240"), "ATDIST SWR41 TAU 25 SPD SWR41 240")
+    -- (a distance the limit lasts, "for the next 15 miles", is asked by name too)
+    check_eq(ex("SWR41 keep 280 knots or more for the next 15 miles"), "ASK I have SPD SWR41 280. What does '15 miles' mean?")
+    asked(ex("SWR41 turn right heading 160 for eight miles"), "a heading flown for a distance")
+    -- ("hold" and a value straight after it keeps the value; "hold at TAU" is still the holding pattern)
+    check_eq(ex("SWR41 hold two five zero knots"), "SPD SWR41 250")
+    check_eq(ex("SWR41 hold FL150"), "ALT SWR41 FL150")
+    check_eq(ex("SWR41 hold at TAU"), "")
+  end
+end
+
+-- Cycle 47 (f107): a distance or waypoint condition measured from a place said by a name that an airport and
+-- several navaids near the aircraft bear ("Frankfurt": EDDF; FFM, FW, FR, FRD) is asked, naming them; a code
+-- stays exact, and the navaid the route holds is the one meant
+do
+  local _, ex = navscene({ "CRE SWR41 A320 50.6 7.4 110 FL150 300", "ADDWPT SWR41 TAU",
+    "CRE CFG7 A321 50.3 9.4 270 FL230 290", "ADDWPT CFG7 FFM" }, "a place by a name several places bear")
+  if ex then
+    local q = ex("SWR41 when forty miles from Frankfurt descend FL90")
+    check(q:find("EDDF", 1, true) ~= nil and q:find("FFM", 1, true) ~= nil, q)
+    asked(ex("SWR41 slow to 230 knots 25 miles from Frankfurt"), "a distance from a name several places bear")
+    check_eq(ex("SWR41 40 miles from FFM descend FL90"), "ATDIST SWR41 FFM 40 ALT SWR41 FL90")
+    check_eq(ex("SWR41 40 miles from EDDF descend FL90"), "ATDIST SWR41 EDDF 40 ALT SWR41 FL90")
+    check_eq(ex("CFG7 twenty miles from Frankfurt reduce 240"), "ATDIST CFG7 FFM 20 SPD CFG7 240")
+  end
+end
+
+-- Cycle 47 (f107): a waypoint condition opened by "leave" (a heading after it) or "reaching", in any clause, the
+-- fix said by its code or a navaid's name ("Taunus" for TAU), is AT ... DO when the fix is on the route; asked
+-- otherwise, and after "leaving" with no heading
+do
+  local _, ex = navscene({ "CRE SWR41 A320 50.6 7.4 110 FL150 300", "ADDWPT SWR41 TAU",
+    "CRE EXS12 B738 51.3 0.3 270 FL120 280", "ADDWPT EXS12 BIG" }, "waypoint conditions by name")
+  if ex then
+    check_eq(ex("EXS12 reduce 230 knots, leave BIG heading 250"), "SPD EXS12 230 ; AT EXS12 BIG DO HDG EXS12 250")
+    check_eq(ex("EXS12 descend FL90 and leave BIG heading 300"), "ALT EXS12 FL90 ; AT EXS12 BIG DO HDG EXS12 300")
+    check_eq(ex("SWR41 reaching Taunus slow to 220"), "AT SWR41 TAU DO SPD SWR41 220")
+    check_eq(ex("SWR41 reaching TAU descend flight level one two zero"), "AT SWR41 TAU DO ALT SWR41 FL120")
+    check_eq(ex("SWR41 descend FL120, reaching Taunus reduce 200"), "ALT SWR41 FL120 ; AT SWR41 TAU DO SPD SWR41 200")
+    check_eq(ex("SWR41 speed 240, after Taunus speed 210 knots"), "SPD SWR41 240 ; AT SWR41 TAU DO SPD SWR41 210")
+    asked(ex("SWR41 leaving Taunus reduce 200"), "after leaving, only a heading is flown from the place")
+    asked(ex("EXS12 reduce 230 knots, leave OCK heading 250"), "a fix off the route")
+    asked(ex("SWR41 reaching KERAX reduce 200"), "a fix off the route")
+  end
+end
+
+-- Cycle 47 (f107): a speed or level said with no verb that a correction takes back ("Mach .72, correction, 260
+-- knots") gives way to the value of its kind after the correction; "when level" is the level cleared, also after
+-- another instruction of the kind that waits; "no restriction on speed" beside instructions is set aside
+do
+  local _, ex = scene({ "CRE TAP44 A320 52 4 090 FL120 280", "CRE VLG9 A321 52.2 4.3 180 FL200 290" })
+  check_eq(ex("TAP44 descend FL90 then mach point seven two, correction, two six zero knots"),
+    "ALT TAP44 FL90 ; SPD TAP44 260")
+  check_eq(ex("TAP44 turn left heading 200, 250 knots, correction, 230 knots"), "HDG TAP44 200 LEFT ; SPD TAP44 230")
+  check_eq(ex("VLG9 descend FL150, speed 260, once level reduce 240"),
+    "ALT VLG9 FL150 ; SPD VLG9 260 ; ATALT VLG9 FL150 SPD VLG9 240")
+  check_eq(ex("VLG9 descend FL150 reduce 260 and when you're level reduce 240"),
+    "ALT VLG9 FL150 ; SPD VLG9 260 ; ATALT VLG9 FL150 SPD VLG9 240")
+  asked(ex("VLG9 speed 260, when level reduce 240"), "no level cleared for 'when level'")
+  check_eq(ex("TAP44 descend FL90, no restrictions on your speed"), "ALT TAP44 FL90")
+  check_eq(ex("TAP44 descend FL90, no restriction on speed, then turn right heading 100"),
+    "ALT TAP44 FL90 ; HDG TAP44 100 RIGHT")
+  asked(ex("TAP44 reduce 250, descend FL90, no restriction on speed"), "a speed given and lifted")
+  asked(ex("TAP44 no restriction on speed"), "nothing simulated said")
+end
+
+-- Cycle 47 (f107): "thereafter" or "after that" straight after a crossing ("cross LAM FL110, thereafter descend
+-- FL80") starts the next instruction at the crossing's waypoint (AT ... DO); "then" keeps its reading
+do
+  local _, ex = navscene({ "CRE BEL5 A320 51.5 0.8 260 FL130 290", "ADDWPT BEL5 LAM" }, "crossings then thereafter")
+  if ex then
+    check_eq(ex("BEL5 cross LAM flight level one two zero, thereafter descend when ready FL90"),
+      "AT BEL5 LAM ALT FL120 ; AT BEL5 LAM DO ALT BEL5 FL90")
+    check_eq(ex("BEL5 cross LAM at 250 knots, after that slow to 220"), "AT BEL5 LAM SPD 250 ; AT BEL5 LAM DO SPD BEL5 220")
+    check_eq(ex("BEL5 cross LAM at FL120, then descend FL90"), "AT BEL5 LAM ALT FL120 ; ALT BEL5 FL90")
+    asked(ex("BEL5 cross LAM at FL120, thereafter descend FL90 and reduce 220"), "the speed now or after LAM")
+    asked(ex("BEL5 cross BIG FL120, thereafter descend FL90"), "a crossing off the route")
+  end
+end
+
+-- Cycle 47 (f107): an aircraft described by its family ("the E-jet") or by a Boeing 7x7's or an Airbus A3xx's first
+-- two digits said in words after "the" ("the seven three": B73x) is read when exactly one flying fits, asked
+-- otherwise
+do
+  local _, ex = scene({ "CRE SAS12 E195 55.6 12.6 180 FL110 250", "CRE NAX3 B738 55.8 12.2 090 FL150 270",
+    "CRE TAP7 A332 55.2 12.9 330 FL230 290", "CRE AEE9 A320 55.4 12.1 010 FL190 280", "CRE VOE1 A320 55.3 12.4 200 FL170 280" })
+  check_eq(ex("where is the ejet"), "POS SAS12")
+  check_eq(ex("the E-jet, descend FL90"), "ALT SAS12 FL90")
+  check_eq(ex("the seven three, turn left heading 050"), "HDG NAX3 50 LEFT")
+  check_eq(ex("the three three, climb FL250"), "ALT TAP7 FL250")
+  asked(ex("the three twenty, reduce 240"), "two A320s")
+  asked(ex("the seven seven, reduce 240"), "no 777 flying")
+  -- (an ERJ is given the name too: with an ERJ 145 and an E175 flying, "the E-jet" is asked)
+  local _, ex2 = scene({ "CRE KLM7 E145 52 4 090 FL150 250", "CRE WIF2 E75L 52.3 4.2 270 FL170 260" })
+  asked(ex2("the E-jet, slow to 240"), "two Embraer jets")
+end
