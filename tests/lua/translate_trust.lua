@@ -9455,3 +9455,27 @@ do
   asked(ex("at second 30 KLM12 descend FL150"), "a second named before its number")
   check_eq(ex("at 5 minutes KLM12 descend FL150"), "SCHEDULE 00:05:00 ALT KLM12 FL150")
 end
+
+-- Cycle 47 (f105): German words in a German-speaking controller's English (lexicon.said_whole.german): the
+-- verbs, "bitte", "weiter", "neues Flugzeug", "zwo" and cities by their German names; a German word not in the
+-- table is still asked about
+do
+  local _, ex = scene({ "CRE DLH7RM A320 48.5 11.0 090 FL200 280", "CRE AUA55 E195 48.1 16.0 270 FL120 250" })
+  check_eq(ex("DLH7RM sinken Sie auf flight level one seven zero bitte"), "ALT DLH7RM FL170")
+  check_eq(ex("AUA55 steigen flight level zwo vier null"), "ALT AUA55 FL240")
+  check_eq(ex("DLH7RM descend flight level one zwo zero, danke"), "ALT DLH7RM FL120")
+  check_eq(ex("AUA55 drehen Sie rechts heading zwo acht null"), "HDG AUA55 280 RIGHT")
+  check_eq(ex("weiter"), "OP")
+  check_eq(ex("neues Flugzeug DLH8 A320 at 48.2 11.5 heading 180 FL150 speed 250"), "CRE DLH8 A320 48.2 11.5 180 FL150 250")
+  check_eq(ex("DLH7RM sinken flight level one seven zero schnell"),
+    "ASK I have ALT DLH7RM FL170. What does 'schnell' mean?")
+  asked(ex("AUA55 steigen"), "a German verb with no level")
+  local nav, nex = navscene({ "CRE DLH7RM A320 48.5 11.0 090 FL200 280", "CRE AUA55 E195 48.1 16.0 270 FL120 250",
+    "CRE SWR9 A320 46.6 6.6 200 FL110 250" },
+    "German city names")
+  if nav then
+    check_eq(nex("AUA55 destination Wien"), "DEST AUA55 LOWW")
+    check_eq(nex("DLH7RM destination München bitte"), "DEST DLH7RM EDDM")
+    check_eq(nex("SWR9 destination genf"), "DEST SWR9 LSGG")
+  end
+end
