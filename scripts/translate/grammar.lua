@@ -6541,6 +6541,63 @@ local function homophone_ids(text, world, parsed)
   return text
 end
 
+-- "lufthansafour tango kilo", "luft hansa four tango kilo", "condor sevenalpha bravo": a callsign's words that
+-- speech recognition ran together (a word no English squawk knows that is wholly an airline's telephony, its
+-- words run together, and the digits and phonetic letters said after it) or split apart (two words that
+-- together are such a telephony) are those words when the text so read names exactly one aircraft flying,
+-- matched exactly, that the text as heard does not (nor one whose id begins that aircraft's); anything else
+-- stays as heard (and is asked about).
+function G.recognised_callsigns(text, world, parsed)
+  if #world.aircraft == 0 then return text end
+  local toks, bare = plain_words(text)
+  local function part(w) return GLUED_AIRLINES[w] or SPOKEN_DIGITS[w] end
+  -- (the words `w` is, run together, in order; nil unless wholly such words, two or more)
+  local function apart(w)
+    local ends = { [0] = {} }
+    for e = 1, #w do
+      for b = math.max(1, e - 16), e do
+        if ends[b - 1] and not ends[e] and part(w:sub(b, e)) then
+          local words = { table.unpack(ends[b - 1]) }
+          words[#words + 1] = w:sub(b, e)
+          ends[e] = words
+        end
+      end
+    end
+    return ends[#w] and #ends[#w] >= 2 and table.concat(ends[#w], " ") or nil
+  end
+  local reads = {}
+  for i, w in ipairs(bare) do
+    local lead = i == 1 or not toks[i - 1]:match("%p$")
+    if lead and #w >= 6 and w:match("^%l+$") and not known_word(w) then
+      local words = apart(w)
+      if words then reads[#reads + 1] = { i, i, words } end
+    end
+    local nxt = bare[i + 1]
+    if lead and nxt and not toks[i]:match("%p$") and GLUED_AIRLINES[w .. nxt] and not AIRLINE_WORDS[w]
+        and not AIRLINE_WORDS[nxt] then
+      reads[#reads + 1] = { i, i + 1, w .. nxt }
+    end
+  end
+  if #reads == 0 then return text end
+  parsed = parsed or {}
+  local said = exact_aircraft(text, world, parsed)
+  for _, r in ipairs(reads) do
+    local words = { table.unpack(toks, 1, r[1] - 1) }
+    words[#words + 1] = r[3] .. (toks[r[2]]:match("%p+$") or "")
+    for k = r[2] + 1, #toks do words[#words + 1] = toks[k] end
+    local read = table.concat(words, " ")
+    local new
+    for id in pairs(exact_aircraft(read, world, parsed)) do
+      if not said[id] then new = new == nil and id or false end
+    end
+    for id in pairs(new and said or {}) do
+      if new:sub(1, #id) == id then new = false end
+    end
+    if new then return G.recognised_callsigns(read, world, parsed) end
+  end
+  return text
+end
+
 -- "Air Canada four hundred twelve", "Air Canada four-hundred-twelve": a flight number said in hundreds straight
 -- after an airline's word (a digit one to nine, "hundred", then one to ninety-nine in words) is its three
 -- digits ("Air Canada 412") when the text so read names exactly one aircraft flying, matched exactly, that the
@@ -6992,7 +7049,7 @@ function M.translate(text, world)
   end
   text = airline_values(named_airline_ids(split_ids(unglued_ids(G.iata_ids(text, world.aircraft), world.aircraft),
     world.aircraft)), world.aircraft)
-  text = homophone_ids(G.hundreds_callsign(glued_telephony(text, world.aircraft), world), world)
+  text = homophone_ids(G.hundreds_callsign(G.recognised_callsigns(glued_telephony(text, world.aircraft), world), world), world)
   local abbreviated
   text, abbreviated = abbreviated_registrations(text, world.aircraft)
   if abbreviated then return { commands = {}, ask = abbreviated } end

@@ -9479,3 +9479,16 @@ do
     check_eq(nex("SWR9 destination genf"), "DEST SWR9 LSGG")
   end
 end
+
+-- Cycle 47 (f105): a callsign's words run together or split apart by a recogniser ("edelweissthree two",
+-- "euro wings"): read only when exactly one aircraft flying fits every word, matched exactly
+do
+  local _, ex = scene({ "CRE EDW32 A320 47.3 8.5 090 FL200 280", "CRE EWG7XR A319 48.2 11.5 270 FL150 250",
+    "CRE EWG7X A319 48.6 11.9 090 FL170 250" })
+  check_eq(ex("edelweissthree two climb flight level two four zero"), "ALT EDW32 FL240")
+  check_eq(ex("eurowings sevenxray romeo reduce speed two two zero"), "SPD EWG7XR 220")
+  check_eq(ex("edel weiss three two turn left heading one two zero"), "HDG EDW32 120 LEFT")
+  asked(ex("edelweissthree three climb flight level two four zero"), "no aircraft EDW33")
+  check_eq(ex("eurowingsseven xray climb flight level two four zero"), "ALT EWG7X FL240")
+  asked(ex("eurowingsseven climb flight level two four zero"), "no aircraft EWG7")
+end
