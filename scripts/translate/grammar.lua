@@ -6710,7 +6710,8 @@ end
 local function typed_places(text, world)
   if not world.place_known then return text end
   -- (a name is read only after a word of PLACE_SLOTS: with none said, the words stand as they are)
-  local padded, slots = " " .. text:lower() .. " ", false
+  local padded = " " .. text:lower() .. " "
+  local slots = padded:find(" where", 1, true) ~= nil
   for _, p in ipairs(PLACE_SLOT_PATTERNS) do
     if padded:find(p.word, 1, true) and padded:find(p.pattern) then
       slots = true
@@ -6780,6 +6781,9 @@ local function typed_places(text, world)
     out[#out + 1] = lead .. (named and (w:upper() .. rest) or word)
     -- (a list goes on after a name read so: "add willo then timba")
     slot = (named and rest == "") or (slot and (w == "then" or w == "and") and rest == "")
+      or (slot and rest == "" and lexicon.place_nouns[w] ~= nil)
+      or (w == "where" and (rest == "'s" or (rest == "" and parts[k] and parts[k][2]:lower() == "is")))
+      or (w == "is" and slot and (out[#out - 1] or ""):lower():match("where$") ~= nil)
       or (w ~= nil and rest == "" and (PLACE_SLOTS[w] ~= nil
       or (w == "to" and slot and PLACE_SLOTS[(out[#out - 1] and out[#out - 1]:match("(%a+)$") or ""):lower()] ~= nil)))
   end

@@ -9492,3 +9492,17 @@ do
   check_eq(ex("eurowingsseven xray climb flight level two four zero"), "ALT EWG7X FL240")
   asked(ex("eurowingsseven climb flight level two four zero"), "no aircraft EWG7")
 end
+
+-- Cycle 47 (f105): a fix's name in lower case after "add waypoint", "add the fix", "where is": the place's slot goes
+-- on over the noun naming it; a name the navdata lacks near the traffic is still asked
+do
+  local nav, ex = navscene({ "CRE CFG9 B738 49.9 8.2 180 FL200 280" }, "fixes named in lower case")
+  if nav then
+    check_eq(ex("condor nine add waypoint rosig"), "ADDWPT CFG9 ROSIG")
+    check_eq(ex("condor nine add the fix rosig then rolsa"), "ADDWPT CFG9 ROSIG ; ADDWPT CFG9 ROLSA")
+    check_eq(ex("where is rolsa"), "POS ROLSA")
+    check_eq(ex("where's rosig"), "POS ROSIG")
+    asked(ex("condor nine add waypoint qqxzv"), "no such fix")
+    asked(ex("where is qqxzv"), "no such fix")
+  end
+end
