@@ -9506,3 +9506,16 @@ do
     asked(ex("where is qqxzv"), "no such fix")
   end
 end
+
+-- Cycle 47 (f105): an aircraft described by its maker (the CSeries is a Bombardier too) or by its designator said in
+-- words after "the" ("the a three twenty one", "the b seven eight nine"): read when exactly one aircraft fits
+do
+  local _, ex = scene({ "CRE SWR77X BCS1 47.3 8.5 090 FL200 280", "CRE DLH2AB A321 48.2 11.5 270 FL150 250",
+    "CRE DLH3CD A320 48.6 11.9 090 FL170 250", "CRE EZY41 A320 48.1 11.2 090 FL130 250", "CRE UAL90 B789 48.0 11.0 090 FL330 280" })
+  check_eq(ex("the bombardier turn left heading two two zero"), "HDG SWR77X 220 LEFT")
+  check_eq(ex("the a three twenty one climb flight level two one zero"), "ALT DLH2AB FL210")
+  check_eq(ex("the b seven eight nine reduce speed two five zero"), "SPD UAL90 250")
+  check_eq(ex("the a three twenty turn right heading three zero zero"),
+    "ASK Which a three twenty do you mean: DLH3CD or EZY41? Please give its callsign.")
+  asked(ex("the a climb flight level two one zero"), "a designator's letter alone")
+end
