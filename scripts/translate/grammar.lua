@@ -804,7 +804,8 @@ end
 -- ("AI what's ...", not "AI 101 ..."), and a greeting may come before an addressed role ("ok AI, ...");
 -- after a greeting, a name of the voice assistant (lexicon.addressed_roles.greeted: "hey squawk ...") is one.
 -- A label of two words (lexicon.bare_labels) opening the line with no colon is dropped when a request
--- follows ("sim op pause the simulation"); said alone it is the line. A role's "note:" ("pseudo-pilot note:
+-- follows ("sim op pause the simulation"); said alone it is the line; so is a role of lexicon.speaker_roles
+-- alone ("instructor run"). A role's "note:" ("pseudo-pilot note:
 -- ...") is such a label too, and so is a note of the exercise (lexicon.note_owners: "exercise note: ...").
 local SPEAKER_ROLES = set_of(lexicon.speaker_roles)
 for _, w in ipairs(lexicon.label_roles) do SPEAKER_ROLES[w] = true end
@@ -813,6 +814,7 @@ local ADDRESSED = set_of(lexicon.addressed_roles.names)
 for _, w in ipairs(lexicon.addressed_roles.greeted) do ADDRESSED[w] = "greeted" end
 local GREETINGS = set_of(lexicon.addressed_roles.greetings)
 local BARE_LABELS = set_of(lexicon.bare_labels)
+G.speaker_words = set_of(lexicon.speaker_roles)
 local NOTE_OWNERS = set_of(lexicon.note_owners)
 local function all_roles(words)
   for w in words:lower():gmatch("%a+") do
@@ -843,6 +845,9 @@ local function role_dropped(text)
   end
   local name, next_word = text:match("^%s*(%a+)%s+(%a.*)$")
   if name and ADDRESSED[name:lower()] == true then return next_word end
+  -- ("instructor run", "supervisor pause the simulation": a role of lexicon.speaker_roles opening the line
+  -- before a word, its colon not written by speech recognition, is the label)
+  if name and G.speaker_words[name:lower()] then return next_word end
   local pair, request = text:match("^%s*(%a+%s+%a+)%s+(%S.*)$")
   if pair and BARE_LABELS[pair:lower():gsub("%s+", " ")] then return request end
   return text

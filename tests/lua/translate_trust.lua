@@ -9519,3 +9519,20 @@ do
     "ASK Which a three twenty do you mean: DLH3CD or EZY41? Please give its callsign.")
   asked(ex("the a climb flight level two one zero"), "a designator's letter alone")
 end
+
+-- Cycle 47 (f105): a rate in metres per minute said with "with" or "at" after climb or descend is the vertical
+-- speed in ft/min; said bare after the verb it is still asked (a level or a rate?)
+do
+  local _, ex = scene({ "CRE AUA71 A320 48.1 16.0 270 FL200 250" })
+  check_eq(ex("AUA71 descend with 600 metres per minute"), "VS AUA71 -1969")
+  check_eq(ex("AUA71 climb at eight hundred meters per minute"), "VS AUA71 2625")
+  asked(ex("AUA71 descend 600 metres per minute"), "metres per minute after the verb alone")
+end
+
+-- Cycle 47 (f105): a speaker's role opening the line without its colon ("instructor run") is the label
+do
+  local _, ex = scene({ "CRE AUA71 A320 48.1 16.0 270 FL200 250" })
+  check_eq(ex("instructor run"), "OP")
+  check_eq(ex("supervisor AUA71 descend flight level one eight zero"), "ALT AUA71 FL180")
+  asked(ex("instructor"), "a label alone")
+end
