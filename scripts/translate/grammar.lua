@@ -6786,7 +6786,8 @@ local function typed_places(text, world)
     out[#out + 1] = lead .. (named and (w:upper() .. rest) or word)
     -- (a list goes on after a name read so: "add willo then timba")
     slot = (named and rest == "") or (slot and (w == "then" or w == "and") and rest == "")
-      or (slot and rest == "" and lexicon.place_nouns[w] ~= nil)
+      or (slot and rest == "" and (lexicon.place_nouns[w] ~= nil
+        or (w == "the" and parts[k] ~= nil and lexicon.place_nouns[parts[k][2]:lower()] ~= nil)))
       or (w == "where" and (rest == "'s" or (rest == "" and parts[k] and parts[k][2]:lower() == "is")))
       or (w == "is" and slot and (out[#out - 1] or ""):lower():match("where$") ~= nil)
       or (w ~= nil and rest == "" and (PLACE_SLOTS[w] ~= nil

@@ -1298,8 +1298,8 @@ return {
   -- leftover, asked about (grammar.lua G:unaccounted), never set aside
   clock_verbs = { resume = true, unpause = true, unfreeze = true, restart = true },
   -- nouns naming the place said after a word of a place's slot ("add waypoint rosig", "direct to the fix
-  -- kudes"): the slot goes on over them (grammar.lua typed_places)
-  place_nouns = { waypoint = true, wpt = true, fix = true, point = true, the = true },
+  -- kudes"): the slot goes on over them, and over "the" before one (grammar.lua typed_places)
+  place_nouns = { waypoint = true, wpt = true, fix = true, point = true },
   -- tens words, which join the unit digit after them into one number
   tens = { "twenty", "thirty", "forty", "fourty", "fifty", "sixty", "seventy", "eighty", "ninety" },
   -- words speech recognition writes for a spoken "two" before digits
