@@ -6554,6 +6554,23 @@ end
 -- stays as heard (and is asked about).
 function G.recognised_callsigns(text, world, parsed)
   if #world.aircraft == 0 then return text end
+  -- (G.split_airlines: the first part of a one-word telephony split in two, two letters or more, -> the
+  -- telephonies it begins; built once, on first use)
+  if not G.split_airlines then
+    G.split_airlines = {}
+    for _, list in ipairs({ names.airlines, names.common }) do
+      for _, a in ipairs(list) do
+        for k = 2, #a[1] - 2 do
+          if not a[1]:find("%s") then
+            local head = a[1]:sub(1, k)
+            G.split_airlines[head] = G.split_airlines[head] or {}
+            G.split_airlines[head][a[1]] = true
+          end
+        end
+      end
+    end
+  end
+  local heads = G.split_airlines
   local toks, bare = plain_words(text)
   local function part(w) return GLUED_AIRLINES[w] or SPOKEN_DIGITS[w] end
   -- (the words `w` is, run together, in order; nil unless wholly such words, two or more)
@@ -6578,8 +6595,7 @@ function G.recognised_callsigns(text, world, parsed)
       if words then reads[#reads + 1] = { i, i, words } end
     end
     local nxt = bare[i + 1]
-    if lead and nxt and not toks[i]:match("%p$") and GLUED_AIRLINES[w .. nxt] and not AIRLINE_WORDS[w]
-        and not AIRLINE_WORDS[nxt] then
+    if lead and nxt and heads[w] and not toks[i]:match("%p$") and heads[w][w .. nxt] then
       reads[#reads + 1] = { i, i + 1, w .. nxt }
     end
   end
