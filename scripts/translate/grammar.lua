@@ -6571,6 +6571,26 @@ function G.recognised_callsigns(text, world, parsed)
     end
   end
   local heads = G.split_airlines
+  -- (the last three letters of a digit or phonetic letter said, which end a callsign's words run together)
+  if not G.spoken_tails then
+    G.spoken_tails = {}
+    for w in pairs(SPOKEN_DIGITS) do G.spoken_tails[w:sub(-3)] = true end
+  end
+  -- (a word to read only when some word of the text may be one: a word of six lower-case letters or more
+  -- ending as a digit or letter said, no English squawk knows, or a telephony's first part before its rest)
+  local maybe = false
+  for at, w in text:gmatch("()(%a+)") do
+    if #w >= 6 and G.spoken_tails[w:sub(-3)] and not w:find("%u") and not SPOKEN_DIGITS[w] and not known_word(w) then
+      maybe = true
+      break
+    end
+    local rest = heads[w] and text:match("^%s+(%a+)", at + #w)
+    if rest and heads[w][w .. rest:lower()] then
+      maybe = true
+      break
+    end
+  end
+  if not maybe then return text end
   local toks, bare = plain_words(text)
   local function part(w) return GLUED_AIRLINES[w] or SPOKEN_DIGITS[w] end
   -- (the words `w` is, run together, in order; nil unless wholly such words, two or more)
@@ -6590,7 +6610,7 @@ function G.recognised_callsigns(text, world, parsed)
   local reads = {}
   for i, w in ipairs(bare) do
     local lead = i == 1 or not toks[i - 1]:match("%p$")
-    if lead and #w >= 6 and w:match("^%l+$") and not known_word(w) then
+    if lead and #w >= 6 and w:match("^%l+$") and not SPOKEN_DIGITS[w] and not known_word(w) then
       local words = apart(w)
       if words then reads[#reads + 1] = { i, i, words } end
     end
