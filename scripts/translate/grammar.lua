@@ -505,7 +505,7 @@ end
 -- "turn left heading 170", "montez au niveau 140" -> "climb to flight level 140". A sentence holding a
 -- marking word of a language (the first of G.said_whole_order holding one) is read in that language alone;
 -- one holding none, in every language's words that mark none.
-G.said_whole_order = { "spanish", "french" }
+G.said_whole_order = { "spanish", "french", "german" }
 function G.said_whole(text)
   local indexes = G.said_whole_index()
   -- (the form of `index` starting at token i, or nil; punctuation may close its last word only; `joining`
@@ -804,7 +804,8 @@ end
 -- ("AI what's ...", not "AI 101 ..."), and a greeting may come before an addressed role ("ok AI, ...");
 -- after a greeting, a name of the voice assistant (lexicon.addressed_roles.greeted: "hey squawk ...") is one.
 -- A label of two words (lexicon.bare_labels) opening the line with no colon is dropped when a request
--- follows ("sim op pause the simulation"); said alone it is the line. A role's "note:" ("pseudo-pilot note:
+-- follows ("sim op pause the simulation"); said alone it is the line; so is a role of lexicon.speaker_roles
+-- alone ("instructor run"). A role's "note:" ("pseudo-pilot note:
 -- ...") is such a label too, and so is a note of the exercise (lexicon.note_owners: "exercise note: ...").
 local SPEAKER_ROLES = set_of(lexicon.speaker_roles)
 for _, w in ipairs(lexicon.label_roles) do SPEAKER_ROLES[w] = true end
@@ -813,6 +814,7 @@ local ADDRESSED = set_of(lexicon.addressed_roles.names)
 for _, w in ipairs(lexicon.addressed_roles.greeted) do ADDRESSED[w] = "greeted" end
 local GREETINGS = set_of(lexicon.addressed_roles.greetings)
 local BARE_LABELS = set_of(lexicon.bare_labels)
+G.speaker_words = set_of(lexicon.speaker_roles)
 local NOTE_OWNERS = set_of(lexicon.note_owners)
 local function all_roles(words)
   for w in words:lower():gmatch("%a+") do
@@ -843,6 +845,9 @@ local function role_dropped(text)
   end
   local name, next_word = text:match("^%s*(%a+)%s+(%a.*)$")
   if name and ADDRESSED[name:lower()] == true then return next_word end
+  -- ("instructor run", "supervisor pause the simulation": a role of lexicon.speaker_roles opening the line
+  -- before a word, its colon not written by speech recognition, is the label)
+  if name and G.speaker_words[name:lower()] then return next_word end
   local pair, request = text:match("^%s*(%a+%s+%a+)%s+(%S.*)$")
   if pair and BARE_LABELS[pair:lower():gsub("%s+", " ")] then return request end
   return text
@@ -6762,6 +6767,99 @@ local function homophone_ids(text, world, parsed)
   return text
 end
 
+-- "lufthansafour tango kilo", "luft hansa four tango kilo", "condor sevenalpha bravo": a callsign's words that
+-- speech recognition ran together (a word no English squawk knows that is wholly an airline's telephony, its
+-- words run together, and the digits and phonetic letters said after it) or split apart (two words that
+-- together are such a telephony) are those words when the text so read names exactly one aircraft flying,
+-- matched exactly, that the text as heard does not (nor one whose id begins that aircraft's); anything else
+-- stays as heard (and is asked about).
+function G.recognised_callsigns(text, world, parsed)
+  if #world.aircraft == 0 then return text end
+  -- (G.split_airlines: the first part of a one-word telephony split in two, two letters or more, -> the
+  -- telephonies it begins; built once, on first use)
+  if not G.split_airlines then
+    G.split_airlines = {}
+    for _, list in ipairs({ names.airlines, names.common }) do
+      for _, a in ipairs(list) do
+        for k = 2, #a[1] - 2 do
+          if not a[1]:find("%s") then
+            local head = a[1]:sub(1, k)
+            G.split_airlines[head] = G.split_airlines[head] or {}
+            G.split_airlines[head][a[1]] = true
+          end
+        end
+      end
+    end
+  end
+  local heads = G.split_airlines
+  -- (the last three letters of a digit or phonetic letter said, which end a callsign's words run together)
+  if not G.spoken_tails then
+    G.spoken_tails = {}
+    for w in pairs(SPOKEN_DIGITS) do G.spoken_tails[w:sub(-3)] = true end
+  end
+  -- (a word to read only when some word of the text may be one: a word of six lower-case letters or more
+  -- ending as a digit or letter said, no English squawk knows, or a telephony's first part before its rest)
+  local maybe = false
+  for at, w in text:gmatch("()(%a+)") do
+    if #w >= 6 and G.spoken_tails[w:sub(-3)] and not w:find("%u") and not SPOKEN_DIGITS[w] and not known_word(w) then
+      maybe = true
+      break
+    end
+    local rest = heads[w] and text:match("^%s+(%a+)", at + #w)
+    if rest and heads[w][w .. rest:lower()] then
+      maybe = true
+      break
+    end
+  end
+  if not maybe then return text end
+  local toks, bare = plain_words(text)
+  local function part(w) return GLUED_AIRLINES[w] or SPOKEN_DIGITS[w] end
+  -- (the words `w` is, run together, in order; nil unless wholly such words, two or more)
+  local function apart(w)
+    local ends = { [0] = {} }
+    for e = 1, #w do
+      for b = math.max(1, e - 16), e do
+        if ends[b - 1] and not ends[e] and part(w:sub(b, e)) then
+          local words = { table.unpack(ends[b - 1]) }
+          words[#words + 1] = w:sub(b, e)
+          ends[e] = words
+        end
+      end
+    end
+    return ends[#w] and #ends[#w] >= 2 and table.concat(ends[#w], " ") or nil
+  end
+  local reads = {}
+  for i, w in ipairs(bare) do
+    local lead = i == 1 or not toks[i - 1]:match("%p$")
+    if lead and #w >= 6 and w:match("^%l+$") and not SPOKEN_DIGITS[w] and not known_word(w) then
+      local words = apart(w)
+      if words then reads[#reads + 1] = { i, i, words } end
+    end
+    local nxt = bare[i + 1]
+    if lead and nxt and heads[w] and not toks[i]:match("%p$") and heads[w][w .. nxt] then
+      reads[#reads + 1] = { i, i + 1, w .. nxt }
+    end
+  end
+  if #reads == 0 then return text end
+  parsed = parsed or {}
+  local said = exact_aircraft(text, world, parsed)
+  for _, r in ipairs(reads) do
+    local words = { table.unpack(toks, 1, r[1] - 1) }
+    words[#words + 1] = r[3] .. (toks[r[2]]:match("%p+$") or "")
+    for k = r[2] + 1, #toks do words[#words + 1] = toks[k] end
+    local read = table.concat(words, " ")
+    local new
+    for id in pairs(exact_aircraft(read, world, parsed)) do
+      if not said[id] then new = new == nil and id or false end
+    end
+    for id in pairs(new and said or {}) do
+      if new:sub(1, #id) == id then new = false end
+    end
+    if new then return G.recognised_callsigns(read, world, parsed) end
+  end
+  return text
+end
+
 -- "Air Canada four hundred twelve", "Air Canada four-hundred-twelve": a flight number said in hundreds straight
 -- after an airline's word (a digit one to nine, "hundred", then one to ninety-nine in words) is its three
 -- digits ("Air Canada 412") when the text so read names exactly one aircraft flying, matched exactly, that the
@@ -6874,7 +6972,8 @@ end
 local function typed_places(text, world)
   if not world.place_known then return text end
   -- (a name is read only after a word of PLACE_SLOTS: with none said, the words stand as they are)
-  local padded, slots = " " .. text:lower() .. " ", false
+  local padded = " " .. text:lower() .. " "
+  local slots = padded:find(" where", 1, true) ~= nil
   for _, p in ipairs(PLACE_SLOT_PATTERNS) do
     if padded:find(p.word, 1, true) and padded:find(p.pattern) then
       slots = true
@@ -6944,6 +7043,10 @@ local function typed_places(text, world)
     out[#out + 1] = lead .. (named and (w:upper() .. rest) or word)
     -- (a list goes on after a name read so: "add willo then timba")
     slot = (named and rest == "") or (slot and (w == "then" or w == "and") and rest == "")
+      or (slot and rest == "" and (lexicon.place_nouns[w] ~= nil
+        or (w == "the" and parts[k] ~= nil and lexicon.place_nouns[parts[k][2]:lower()] ~= nil)))
+      or (w == "where" and (rest == "'s" or (rest == "" and parts[k] and parts[k][2]:lower() == "is")))
+      or (w == "is" and slot and (out[#out - 1] or ""):lower():match("where$") ~= nil)
       or (w ~= nil and rest == "" and (PLACE_SLOTS[w] ~= nil
       or (w == "to" and slot and PLACE_SLOTS[(out[#out - 1] and out[#out - 1]:match("(%a+)$") or ""):lower()] ~= nil)))
   end
@@ -7210,7 +7313,7 @@ function M.translate(text, world)
   end
   text = airline_values(named_airline_ids(split_ids(unglued_ids(G.iata_ids(text, world.aircraft), world.aircraft),
     world.aircraft)), world.aircraft)
-  text = homophone_ids(G.hundreds_callsign(glued_telephony(text, world.aircraft), world), world)
+  text = homophone_ids(G.hundreds_callsign(G.recognised_callsigns(glued_telephony(text, world.aircraft), world), world), world)
   local abbreviated
   text, abbreviated = abbreviated_registrations(text, world.aircraft)
   if abbreviated then return { commands = {}, ask = abbreviated } end

@@ -1173,6 +1173,8 @@ local DIGIT_WORDS = { zero = "0", one = "1", two = "2", three = "3", four = "4",
                       eight = "8", nine = "9", niner = "9" }
 local TENS_WORDS = { twenty = "2", thirty = "3", forty = "4", fifty = "5", sixty = "6", seventy = "7", eighty = "8",
                      ninety = "9" }
+-- a designator's letter said before its digits, by its maker ("the a three twenty one" is an Airbus A321)
+local DESIGNATOR_LETTERS = { a = "airbus", b = "boeing", e = "embraer" }
 -- words that describe an aircraft's size between "the" and its type ("the big Boeing"); they narrow
 -- nothing: several aircraft of the type flying are asked about
 local SIZE_WORDS = { big = true, bigger = true, biggest = true, large = true, small = true, smaller = true,
@@ -1245,19 +1247,34 @@ function m:type_said(i)
   local nicknames = require("translate.types").nicknames
   local two = self.t[i + 1] and nicknames[t.text .. " " .. self.t[i + 1].text]  -- ("the King Air")
   if two then return pattern_of(two), i + 2 end
+  -- (three digits said in words from token k, "three thirty", "three twenty one", "three three zero": the
+  -- number and the token after it, or nil)
+  local function said_number(k)
+    local function said(j) return self.t[j] and self.t[j].kind == "word" and self.t[j].text or "" end
+    local d1, tens, d3 = DIGIT_WORDS[said(k)], TENS_WORDS[said(k + 1)], DIGIT_WORDS[said(k + 2)]
+    if d1 and tens then
+      return d1 .. tens .. ((d3 and d3 ~= "0") and d3 or "0"), (d3 and d3 ~= "0") and k + 3 or k + 2
+    elseif d1 and DIGIT_WORDS[said(k + 1)] and d3 then
+      return d1 .. DIGIT_WORDS[said(k + 1)] .. d3, k + 3
+    end
+  end
+  -- ("the a three twenty one", "the b seven three eight", "the e one ninety": after "the", a designator's
+  -- letter and its digits said in words name that family or designator; the letter alone names nothing)
+  local letter = DESIGNATOR_LETTERS[t.text]
+  if letter and self:word(i - 1, "the") then
+    local num, e = said_number(i + 1)
+    local fam = num and (fams[t.text .. num] or (t.text == "b" and fams[num]))
+    if fam then return set_of(fam), e end
+    local d = num and (t.text .. num):upper()
+    if d and (makers()[letter] or {})[d] then return function(x) return x == d or aliases()[x] == d end, e end
+    return nil
+  end
   if makers()[t.text] then
     local nx = self.t[i + 1]
     if nx and nx.kind == "number" and fams[nx.text] then return set_of(fams[nx.text]), i + 2 end
     -- ("the Airbus three thirty", "the Boeing seven eighty seven", "the Airbus three three zero": a family's
     -- number said in words after its maker, the Airbus letter left out)
-    local function said(k) return self.t[k] and self.t[k].kind == "word" and self.t[k].text or "" end
-    local d1, tens, d3 = DIGIT_WORDS[said(i + 1)], TENS_WORDS[said(i + 2)], DIGIT_WORDS[said(i + 3)]
-    local num, e
-    if d1 and tens then
-      num, e = d1 .. tens .. ((d3 and d3 ~= "0") and d3 or "0"), (d3 and d3 ~= "0") and i + 4 or i + 3
-    elseif d1 and DIGIT_WORDS[said(i + 2)] and d3 then
-      num, e = d1 .. DIGIT_WORDS[said(i + 2)] .. d3, i + 4
-    end
+    local num, e = said_number(i + 1)
     local fam = num and (fams[num] or (t.text == "airbus" and fams["a" .. num]))
     if fam then return set_of(fam), e end
     return set_of(makers()[t.text]), i + 1

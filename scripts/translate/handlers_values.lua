@@ -337,7 +337,13 @@ return function(H, f, wrap, compass)
     end
     if not fl and q.kind == "alt" and self:word(q.e - 1, "@metres") and self:word(q.e, "per")
         and self:word(q.e + 1, "min mins minute minutes sec secs second seconds s") then
-      -- "climb 1500 m/min": metres per unit of time are a rate, no level (VS is in ft/min): asked
+      -- "climb 1500 m/min": metres per unit of time are a rate, no level (VS is in ft/min): asked; said after
+      -- "with" or "at" a rate per minute ("descend with 1000 metres per minute") is the vertical speed, in ft/min
+      if self:word(q.b - 1, "with at") and self:word(q.e + 1, "min mins minute minutes") then
+        local rated = { rate = q }
+        for k, x in pairs(s) do rated[k] = x end
+        return self:vspeed(rated)
+      end
       return self:need("What altitude or vertical speed for " .. ids[1] .. "? I heard " .. f.int(q.number.value)
         .. " metres per " .. self.t[q.e + 1].text .. ".")
     end
@@ -815,11 +821,12 @@ return function(H, f, wrap, compass)
     for _, line in ipairs(lines) do self:emit(line) end
   end
 
+  -- (s.rate: the rate's quantity when the caller has found it, else the first fitting one of the segment)
   function m:vspeed(s)
     local id = self:acid(s, "change its vertical speed")
     if not id then return end
-    local v
-    for _, q in ipairs(self:quantities(s.b, s.e)) do
+    local v = s.rate
+    for _, q in ipairs(v and {} or self:quantities(s.b, s.e)) do
       if q.kind == "vs" or (q.kind == "plain" and q.b > s.trig) or (q.kind == "alt" and not q.fl and q.b > s.trig) then
         v = q
         break

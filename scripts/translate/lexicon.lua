@@ -1281,6 +1281,33 @@ return {
       vingt = "twenty", trente = "thirty", quarante = "forty", cinquante = "fifty", soixante = "sixty",
       cent = "hundred", cents = "hundred", mille = "thousand" },
   },
+  -- German words in a German-speaking controller's English ("sinken flight level one niner zero bitte",
+  -- "steigen Sie auf level 250", "neues Flugzeug ..."; "zwo" is their radio "two"; cities by their German
+  -- names, read as English names them: "destination Genf" is Geneva's)
+  german = {
+    -- (written as squawk reads them, its accents taken off: "fünf" is "funf", "Fuß" "fuss"; and with "ue", "oe")
+    words = {
+      steigen = "climb", ["steigen sie"] = "climb", steigt = "climb", sinken = "descend",
+      ["sinken sie"] = "descend", sinkt = "descend", ["steigen auf"] = "climb to", ["steigen sie auf"] = "climb to",
+      ["sinken auf"] = "descend to", ["sinken sie auf"] = "descend to", flugflache = "flight level",
+      flugflaeche = "flight level", rechts = "right", ["drehen sie"] = "turn", drehen = "turn",
+      steuerkurs = "heading", geschwindigkeit = "speed", knoten = "knots", fuss = "feet",
+      reduzieren = "reduce", ["reduzieren sie"] = "reduce", bitte = "please", danke = "thanks",
+      weiter = "continue", ["neues flugzeug"] = "create", loschen = "delete", loeschen = "delete",
+      ["loschen sie"] = "delete", ["loeschen sie"] = "delete",
+      -- digits ("zwo" for two on the radio)
+      eins = "one", zwo = "two", zwei = "two", drei = "three", vier = "four", funf = "five", fuenf = "five",
+      sechs = "six", sieben = "seven", acht = "eight", neun = "nine", hundert = "hundred", tausend = "thousand",
+      -- cities by their German names
+      genf = "geneva", wien = "vienna", munchen = "munich", muenchen = "munich", koln = "cologne",
+      koeln = "cologne", nurnberg = "nuremberg", nuernberg = "nuremberg", mailand = "milan", prag = "prague",
+      warschau = "warsaw", brussel = "brussels", bruessel = "brussels", venedig = "venice",
+    },
+    shared = {},
+    -- words also English or another language's, read only in a German sentence ("links", "auf", "null" for zero)
+    joining = { auf = "to", und = "and", null = "zero", uber = "over", ueber = "over", links = "left",
+      direkt = "direct", kurs = "heading" },
+  },
   },
   -- digits said in Spanish, Portuguese or French by a controller speaking English ("Avianca cero one nine",
   -- "Iberia tres uno seis seis", "Azul quatro zero cinco zero"; Brazilian "meia" is six): that digit
@@ -1307,6 +1334,9 @@ return {
   -- verbs that start, stop or restart the run or an aircraft's navigation: one no instruction was read from is a
   -- leftover, asked about (grammar.lua G:unaccounted), never set aside
   clock_verbs = { resume = true, unpause = true, unfreeze = true, restart = true },
+  -- nouns naming the place said after a word of a place's slot ("add waypoint rosig", "direct to the fix
+  -- kudes"): the slot goes on over them, and over "the" before one (grammar.lua typed_places)
+  place_nouns = { waypoint = true, wpt = true, fix = true, point = true },
   -- tens words, which join the unit digit after them into one number
   tens = { "twenty", "thirty", "forty", "fourty", "fifty", "sixty", "seventy", "eighty", "ninety" },
   -- words speech recognition writes for a spoken "two" before digits

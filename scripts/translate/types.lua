@@ -9,7 +9,7 @@
 --   * a designator gives the name its pattern spells: B7FV -> 7F7-V00
 --     (B738 -> 737-800), A3FV -> A3F0-V00 (A332 -> A330-200), ATFV -> ATR F2-V00
 --     (AT76 -> ATR 72-600), DH8x -> Dash 8-x00 and Q x00, CRJn -> CRJ n00, CRJX -> CRJ1000,
---     Cnnn -> Cessna nnn, E1nn -> Embraer E1nn, E75L/E75S -> E175, BCSn -> Airbus A220-n00,
+--     Cnnn -> Cessna nnn, E1nn -> Embraer E1nn, E75L/E75S -> E175, BCSn -> Airbus A220-n00 and Bombardier CSn00,
 --     SRnn -> Cirrus SRnn, PCnn -> Pilatus PC-nn, F28/F50/F70/F100 -> Fokker nn;
 --   * a family ("737", "a330") is its base designator when one exists (B737,
 --     A320), else its first variant.
@@ -99,7 +99,7 @@ local function pattern_names(d)
   c = d:match("^E(1%d%d)$")
   if c then out[#out + 1] = { "embraer", "e" .. c }; out[#out + 1] = { "embraer", c } end
   c = d:match("^BCS(%d)$")  -- (the CSeries became the Airbus A220)
-  if c then out[#out + 1] = { "airbus", "a220-" .. c .. "00" } end
+  if c then out[#out + 1] = { "airbus", "a220-" .. c .. "00" }; out[#out + 1] = { "bombardier", "cs" .. c .. "00" } end
   c = d:match("^SR(%d%d)$")
   if c then out[#out + 1] = { "cirrus", "sr" .. c } end
   c = d:match("^PC(%d%d)$")

@@ -9643,3 +9643,84 @@ do
   local _, ex2 = scene({ "CRE KLM7 E145 52 4 090 FL150 250", "CRE WIF2 E75L 52.3 4.2 270 FL170 260" })
   asked(ex2("the E-jet, slow to 240"), "two Embraer jets")
 end
+
+-- Cycle 47 (f105): German words in a German-speaking controller's English (lexicon.said_whole.german): the
+-- verbs, "bitte", "weiter", "neues Flugzeug", "zwo" and cities by their German names; a German word not in the
+-- table is still asked about
+do
+  local _, ex = scene({ "CRE DLH7RM A320 48.5 11.0 090 FL200 280", "CRE AUA55 E195 48.1 16.0 270 FL120 250" })
+  check_eq(ex("DLH7RM sinken Sie auf flight level one seven zero bitte"), "ALT DLH7RM FL170")
+  check_eq(ex("AUA55 steigen flight level zwo vier null"), "ALT AUA55 FL240")
+  check_eq(ex("DLH7RM descend flight level one zwo zero, danke"), "ALT DLH7RM FL120")
+  check_eq(ex("AUA55 drehen Sie rechts heading zwo acht null"), "HDG AUA55 280 RIGHT")
+  check_eq(ex("weiter"), "OP")
+  check_eq(ex("neues Flugzeug DLH8 A320 at 48.2 11.5 heading 180 FL150 speed 250"), "CRE DLH8 A320 48.2 11.5 180 FL150 250")
+  check_eq(ex("DLH7RM sinken flight level one seven zero schnell"),
+    "ASK I have ALT DLH7RM FL170. What does 'schnell' mean?")
+  asked(ex("AUA55 steigen"), "a German verb with no level")
+  local nav, nex = navscene({ "CRE DLH7RM A320 48.5 11.0 090 FL200 280", "CRE AUA55 E195 48.1 16.0 270 FL120 250",
+    "CRE SWR9 A320 46.6 6.6 200 FL110 250" },
+    "German city names")
+  if nav then
+    check_eq(nex("AUA55 destination Wien"), "DEST AUA55 LOWW")
+    check_eq(nex("DLH7RM destination München bitte"), "DEST DLH7RM EDDM")
+    check_eq(nex("SWR9 destination genf"), "DEST SWR9 LSGG")
+  end
+end
+
+-- Cycle 47 (f105): a callsign's words run together or split apart by a recogniser ("edelweissthree two",
+-- "euro wings"): read only when exactly one aircraft flying fits every word, matched exactly
+do
+  local _, ex = scene({ "CRE EDW32 A320 47.3 8.5 090 FL200 280", "CRE EWG7XR A319 48.2 11.5 270 FL150 250",
+    "CRE EWG7X A319 48.6 11.9 090 FL170 250" })
+  check_eq(ex("edelweissthree two climb flight level two four zero"), "ALT EDW32 FL240")
+  check_eq(ex("eurowings sevenxray romeo reduce speed two two zero"), "SPD EWG7XR 220")
+  check_eq(ex("edel weiss three two turn left heading one two zero"), "HDG EDW32 120 LEFT")
+  asked(ex("edelweissthree three climb flight level two four zero"), "no aircraft EDW33")
+  check_eq(ex("eurowingsseven xray climb flight level two four zero"), "ALT EWG7X FL240")
+  asked(ex("eurowingsseven climb flight level two four zero"), "no aircraft EWG7")
+end
+
+-- Cycle 47 (f105): a fix's name in lower case after "add waypoint", "add the fix", "where is": the place's slot goes
+-- on over the noun naming it; a name the navdata lacks near the traffic is still asked
+do
+  local nav, ex = navscene({ "CRE CFG9 B738 49.9 8.2 180 FL200 280" }, "fixes named in lower case")
+  if nav then
+    check_eq(ex("condor nine add waypoint rosig"), "ADDWPT CFG9 ROSIG")
+    check_eq(ex("condor nine add the fix rosig then rolsa"), "ADDWPT CFG9 ROSIG ; ADDWPT CFG9 ROLSA")
+    check_eq(ex("where is rolsa"), "POS ROLSA")
+    check_eq(ex("where's rosig"), "POS ROSIG")
+    asked(ex("condor nine add waypoint qqxzv"), "no such fix")
+    asked(ex("where is qqxzv"), "no such fix")
+  end
+end
+
+-- Cycle 47 (f105): an aircraft described by its maker (the CSeries is a Bombardier too) or by its designator said in
+-- words after "the" ("the a three twenty one", "the b seven eight nine"): read when exactly one aircraft fits
+do
+  local _, ex = scene({ "CRE SWR77X BCS1 47.3 8.5 090 FL200 280", "CRE DLH2AB A321 48.2 11.5 270 FL150 250",
+    "CRE DLH3CD A320 48.6 11.9 090 FL170 250", "CRE EZY41 A320 48.1 11.2 090 FL130 250", "CRE UAL90 B789 48.0 11.0 090 FL330 280" })
+  check_eq(ex("the bombardier turn left heading two two zero"), "HDG SWR77X 220 LEFT")
+  check_eq(ex("the a three twenty one climb flight level two one zero"), "ALT DLH2AB FL210")
+  check_eq(ex("the b seven eight nine reduce speed two five zero"), "SPD UAL90 250")
+  check_eq(ex("the a three twenty turn right heading three zero zero"),
+    "ASK Which a three twenty do you mean: DLH3CD or EZY41? Please give its callsign.")
+  asked(ex("the a climb flight level two one zero"), "a designator's letter alone")
+end
+
+-- Cycle 47 (f105): a rate in metres per minute said with "with" or "at" after climb or descend is the vertical
+-- speed in ft/min; said bare after the verb it is still asked (a level or a rate?)
+do
+  local _, ex = scene({ "CRE AUA71 A320 48.1 16.0 270 FL200 250" })
+  check_eq(ex("AUA71 descend with 600 metres per minute"), "VS AUA71 -1969")
+  check_eq(ex("AUA71 climb at eight hundred meters per minute"), "VS AUA71 2625")
+  asked(ex("AUA71 descend 600 metres per minute"), "metres per minute after the verb alone")
+end
+
+-- Cycle 47 (f105): a speaker's role opening the line without its colon ("instructor run") is the label
+do
+  local _, ex = scene({ "CRE AUA71 A320 48.1 16.0 270 FL200 250" })
+  check_eq(ex("instructor run"), "OP")
+  check_eq(ex("supervisor AUA71 descend flight level one eight zero"), "ALT AUA71 FL180")
+  asked(ex("instructor"), "a label alone")
+end
