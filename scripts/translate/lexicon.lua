@@ -264,7 +264,7 @@ return {
         "located", "positioned", "situated", "ownship",
         -- an aircraft described by its size ("the small Cessna", "a big Boeing") or its airline's country ("the
         -- German one, the Lufthansa"; names that are airlines' own, "Norwegian", "Swiss", are not here)
-        "small", "little", "big", "german", "swedish", "danish", "finnish", "dutch", "french", "spanish",
+        "small", "little", "wee", "tiny", "big", "german", "swedish", "danish", "finnish", "dutch", "french", "spanish",
         "italian", "polish", "latvian", "lithuanian", "icelandic", "portuguese", "hungarian", "greek",
         -- the margin a resolution keeps ("resolution margin factor 1.05")
         "margin",
@@ -690,6 +690,9 @@ return {
   -- with instruction words, never with a value. Before a colon, an aircraft after one of `lead_context`
   -- is other traffic when the request names its own aircraft after the colon ("Add an intruder for
   -- VIR9: DLH9KW A321 at ...")
+  -- after "show me", words for the aircraft named shown together ("show me both of them, KLM12 and EIN45", "...,
+  -- show me the both of them", "show me them all")
+  shown_together = { "both", "of", "them", "the", "and", "all", "two", "pair" },
   aside = { subjects = { "we", "i", "it", "he", "she", "they", "that", "this", "it's", "that's", "we're",
                          "we'll", "we'd", "i'm", "i'll", "i'd", "he's", "she's", "they're", "there's", "too",
                          "participant", "participants", "experimenter", "researcher" },
@@ -702,6 +705,16 @@ return {
                       "reports", "weather", "wx", "closed", "closure", "congestion", "sick", "medical", "arrivals",
                       "departures", "turbulence", "chop", "choppy", "bumpy", "icing" },
           while_words = { "while", "whilst" },
+          -- the same action described after a complete instruction, in an instructor's words (", give him a proper
+          -- vector off", ", give her a decent climb"): one of `restate_verbs`, a pronoun and a noun of the kind of an
+          -- instruction said before it (`restated`, by the intent); set aside when the clause is commentary, else asked
+          restate_verbs = { "give" },
+          restated = { hdg = { "vector", "turn", "nudge", "kick", "heading" }, alt = { "climb", "descent", "level" },
+                       spd = { "speed", "slowdown" } },
+          -- the speaker's own future doing after a condition (", then when clear of BAW87 I'll send him back",
+          -- ", once he's past the Ryanair we'll turn him back"): one of these, or "i"/"we" then "will", after the
+          -- condition (no value, place or instruction word in it), the rest commentary; never an instruction now
+          intention = { "i'll", "we'll" },
           later = { "later", "afterwards", "afterward" },
           lead_context = { "for", "behind", "against", "on", "with", "near", "versus", "vs" },
           leads = { "for", "to" },

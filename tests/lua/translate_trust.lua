@@ -9455,3 +9455,48 @@ do
   asked(ex("at second 30 KLM12 descend FL150"), "a second named before its number")
   check_eq(ex("at 5 minutes KLM12 descend FL150"), "SCHEDULE 00:05:00 ALT KLM12 FL150")
 end
+
+-- Cycle 47 (f106): instructor commentary after a complete instruction, no instruction of its own: the same action
+-- described again (", give her a decent climb" after a climb) and the speaker's own intention after a condition
+-- (", then once past X we'll turn him back") are set aside; a clause that could instruct is asked
+do
+  local _, ex = scene({ "CRE AB101 A320 52.0 4.0 090 FL280 280", "CRE CD202 B738 52.3 4.4 270 FL300 280",
+    "CRE EF303 A321 51.8 4.2 360 FL260 260" })
+  check_eq(ex("AB101 left forty degrees, give her a good vector away"), "HDG AB101 50 LEFT")
+  check_eq(ex("CD202 climb FL340, give him a decent climb"), "ALT CD202 FL340")
+  check_eq(ex("AB101 turn right thirty, then once clear of CD202 we'll bring her back"), "HDG AB101 120 RIGHT")
+  check_eq(ex("AB101 turn right thirty, when well past CD202 I will put her back on the route"), "HDG AB101 120 RIGHT")
+  check_eq(ex("let's give EF303 a tiny nudge left, ten degrees"), "HDG EF303 350 LEFT")
+  -- (a noun of another kind than the instruction's, a value, another aircraft, a second verb of instruction)
+  asked(ex("CD202 climb FL340, give him a vector off"), "a turn described after a climb")
+  asked(ex("AB101 turn right thirty, then once clear of CD202 I'll climb her to FL320"), "a value in the intention")
+  asked(ex("AB101 turn right thirty, then once clear of CD202 we'll bring EF303 back"), "another aircraft")
+  asked(ex("AB101 turn right thirty, then once clear of CD202 turn her back"), "an instruction after a condition")
+end
+
+-- Cycle 47 (f106): two aircraft shown together ("show me both of them, X and Y", "X and Y are converging, show me
+-- the both of them") and "what's X at": each aircraft's position (POS); "both" with three named is asked
+do
+  local _, ex = scene({ "CRE AB101 A320 52.0 4.0 090 FL280 280", "CRE CD202 B738 52.3 4.4 270 FL300 280",
+    "CRE EF303 A321 51.8 4.2 360 FL260 260" })
+  check_eq(ex("display both of them, CD202 and EF303"), "POS CD202 ; POS EF303")
+  check_eq(ex("AB101 and EF303 are converging, show me the both of them"), "POS AB101 ; POS EF303")
+  check_eq(ex("show us them, AB101 and CD202"), "POS AB101 ; POS CD202")
+  check_eq(ex("what is CD202 at now?"), "POS CD202")
+  asked(ex("AB101, CD202 and EF303, show me both of them"), "both said of three")
+end
+
+-- Cycle 47 (f106): the clock and the resolver in a class's words: "play" and "go" said over again start the clock
+-- (OP); "the resolver" is the conflict resolution (RESO); a route resumed after CPA, no aircraft named, is how
+-- aircraft resume after a resolution (RESNAV PASTCPA); one aircraft's return after CPA is asked
+do
+  local _, ex = scene({ "CRE AB101 A320 52.0 4.0 090 FL280 280", "CRE CD202 B738 52.3 4.4 270 FL300 280" })
+  check_eq(ex("ok, play"), "OP")
+  check_eq(ex("AB101 descend FL240, play"), "ALT AB101 FL240 ; OP")
+  check_eq(ex("go, go, go!"), "OP")
+  check_eq(ex("put the resolver on please"), "RESO MVP")
+  check_eq(ex("once they're past the CPA put them back on course"), "RESNAV PASTCPA")
+  check_eq(ex("after CPA let them resume their routes"), "RESNAV PASTCPA")
+  asked(ex("AB101 go go go"), "an aircraft told to go")
+  asked(ex("after AB101 passes CPA put it back on its route"), "one aircraft's return after CPA")
+end
