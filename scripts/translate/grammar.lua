@@ -4954,6 +4954,12 @@ function G:explained_spans(issued, kinds)
       local nx = self.t[i + 2]
       if not nx or nx.kind == "punct" then inside[i], inside[i + 1] = true, true end
     end
+    -- "climb to FL320 but not above 1500 feet a minute", "not exceeding 2000 fpm": a vertical speed said as the
+    -- most to fly, which the rate issued carries (a level or speed after it is asked)
+    if w == "not" and self:word(i + 1, "above exceeding over") then
+      local q = self:quantities(i + 2, i + 3)[1]
+      if q and q.kind == "vs" and q.b == i + 2 then inside[i], inside[i + 1] = true, true end
+    end
     local phrases = PHRASES[self.t[i].text]
     for k = 1, phrases and #phrases or 0 do
       local p, ok = phrases[k], true

@@ -187,6 +187,35 @@ return function(intent, rule, words)
     return g.opening_create == i
   end }
 
+  -- "FL310, heading 090, 300 knots, callsign BAW92, A319, at 53.5 -6.8": a new aircraft's fields in any order, no
+  -- verb, its callsign named as such ("callsign" straight before a callsign no aircraft has), its type and a
+  -- position said, no aircraft flying named: the creation, fired at the request's first word (no number)
+  rule { "*", "create", when = function(g, i)
+    if g.fields_create == nil then
+      g.fields_create = false  -- (computed once per request: the rule is tried at every word)
+      local new, types, flying = 0, 0, 0
+      for _, r in ipairs(g.refs) do
+        if r.kind == "aircraft" and r.exists then flying = flying + 1 end
+        if r.kind == "aircraft" and not r.exists and g:word(r.b - 1, "callsign") and g:new_callsign(r) then
+          new = new + 1
+        end
+        if r.kind == "type" then types = types + 1 end
+      end
+      -- (the position: a latitude and longitude read, or two plain numbers after "at" or "position" that fit them)
+      local lat, qs = false, g:quantities(1, #g.t + 1)
+      for k, q in ipairs(qs) do
+        local q2 = qs[k + 1]
+        lat = lat or q.kind == "lat" or (q.kind == "plain" and q2 ~= nil and q2.kind == "plain" and q2.b == q.e
+          and g:word(q.b - 1, "at position pos") and math.abs(q.value) <= 90 and math.abs(q2.value) <= 180)
+      end
+      local first = g:skip_fillers(1)
+      while g.t[first] and (g.t[first].kind ~= "word" or g.t[first].filler) do first = first + 1 end
+      if new == 1 and types == 1 and flying == 0 and lat and g.t[first] then
+        g.fields_create = first
+      end
+    end
+    return g.fields_create == i
+  end }
   -- "swr84c altitude?", "afr1442 speed?": a state word asked with "?" straight after it, an aircraft named
   -- before it and no value said anywhere: a question of the aircraft's state (POS), no instruction (an
   -- instruction's shorthand, "ezy45 fl?", "hdg?", is a value left out: asked)
@@ -2011,7 +2040,7 @@ return function(intent, rule, words)
   -- position straight after it ("at" before it or none), where it blows from said after that
   -- ("wind at 53.4 -6.3 from 270 at 25 kts": a latitude and longitude in bare decimal degrees; "wind at
   -- 38.8 north 9.1 west, FL100, 310 degrees 25 knots": its direction in degrees and its speed in knots said
-  -- after the position, no "from")
+  -- after the position, no "from"; "wind 55.9 -3.3 270 at 40": as a wind is reported)
   rule { "wind winds", "wind", when = function(g, i)
     -- ("wind 47.2 11.4 FL200 from 270 at 45 kts": the position straight after it, typed)
     local q = g:word(i + 1, "at over") and g:quantities(i + 2, i + 3)[1] or g:quantities(i + 1, i + 2)[1]
@@ -2020,8 +2049,13 @@ return function(intent, rule, words)
     local pair = nx ~= nil and nx.kind == "plain" and q.number.typed and nx.number.typed
       and (q.number.digits or ""):find("%.") ~= nil and math.abs(q.value) <= 90 and math.abs(nx.value) <= 180
     local told = g:find_word(i + 3, #g.t + 1, "from") <= #g.t
-    for _, v in ipairs(q and not told and g:quantities(q.e, #g.t + 1) or {}) do
+    -- (or as a wind is reported, "270 at 40", "270 at 40 knots": G:wind_reported)
+    local after = q and not told and g:quantities(q.e, #g.t + 1) or {}
+    for k, v in ipairs(after) do
       told = told or (v.kind == "angle" and (g:quantities(v.e, v.e + 1)[1] or {}).kind == "speed")
+        or (after[k + 1] ~= nil and (g:wind_reported(v, after[k + 1]) or (after[k + 1].kind == "speed"
+          and v.kind == "plain" and #(v.number and v.number.digits or "") == 3 and v.value <= 360
+          and g:word(v.e, "at") and after[k + 1].b == v.e + 1 and after[k + 1].value <= 200)))
     end
     return q ~= nil and (q.kind == "lat" or q.kind == "lon" or pair) and told
       and not g:has_ref(1, #g.t + 1, "aircraft") and not g:word_in(math.max(1, i - 3), i, "what what's whats show tell get check")

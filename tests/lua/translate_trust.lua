@@ -9500,3 +9500,34 @@ do
   asked(ex("AB101 go go go"), "an aircraft told to go")
   asked(ex("after AB101 passes CPA put it back on its route"), "one aircraft's return after CPA")
 end
+
+-- Cycle 47 (f106): a new aircraft's fields in any order with no verb, its callsign named as such ("..., callsign
+-- X, type, at lat lon"), is the creation; a field said again after a correction ("northbound... no wait
+-- southbound", "heading 100, sorry, 280") replaces the one before it; a correction between fields of different
+-- kinds is asked
+do
+  local _, ex = scene({ "CRE AB101 A320 52.0 4.0 090 FL280 280" })
+  check_eq(ex("heading 135, 240 knots, FL250, callsign NEW42, B738, at 51.5 3.5"), "CRE NEW42 B738 51.5 3.5 135 FL250 240")
+  check_eq(ex("heading 010 FL200 callsign NEW43 E190 position 52.5 3.9 250 knots"), "CRE NEW43 E190 52.5 3.9 10 FL200 250")
+  check_eq(ex("create NEW44 A321 at 51.9 3.8, northbound... no wait southbound, FL300, 280 knots"),
+    "CRE NEW44 A321 51.9 3.8 180 FL300 280")
+  check_eq(ex("create NEW45 A321 at 51.9 3.8, heading 100, sorry, 280, FL300, 280 knots"),
+    "CRE NEW45 A321 51.9 3.8 280 FL300 280")
+  asked(ex("create NEW46 A321 at 51.9 3.8, heading 100, FL300 no wait 280 knots"), "a correction between kinds")
+  asked(ex("FL310, heading 090, callsign NEW47, at 51.5 3.5"), "no type said")
+  asked(ex("AB101 FL310, heading 090, callsign NEW48, A319, at 51.5 3.5"), "an aircraft flying named")
+end
+
+-- Cycle 47 (f106): a rate said as the most to fly ("but not above 1500 feet a minute", "not exceeding 2000 fpm") is
+-- the vertical speed the level carries; "not above" a level or a speed is asked. A wind's position, then its
+-- direction and speed as a wind is reported ("wind 52.5 3.1 250 at 35"), is WIND
+do
+  local _, ex = scene({ "CRE AB101 A320 52.0 4.0 090 FL280 280" })
+  check_eq(ex("AB101 climb FL350 but not above 1200 feet a minute"), "ALT AB101 FL350 1200")
+  check_eq(ex("AB101 descend FL200, not exceeding 2500 fpm"), "ALT AB101 FL200 2500")
+  asked(ex("AB101 climb FL350 but not above FL330"), "not above a level")
+  asked(ex("AB101 climb FL350 but not above 260 knots"), "not above a speed")
+  check_eq(ex("wind 52.5 3.1 250 at 35"), "WIND 52.5 3.1 250 35")
+  check_eq(ex("wind at 52.5 3.1, 250 at 35 knots"), "WIND 52.5 3.1 250 35")
+  asked(ex("wind 52.5 3.1 250 at 350 knots"), "a wind too strong to be one")
+end
