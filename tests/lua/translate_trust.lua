@@ -9531,3 +9531,12 @@ do
   check_eq(ex("wind at 52.5 3.1, 250 at 35 knots"), "WIND 52.5 3.1 250 35")
   asked(ex("wind 52.5 3.1 250 at 350 knots"), "a wind too strong to be one")
 end
+
+-- Cycle 47 (f106): a heading said after a turn's degrees in the same instruction ("left 40 degrees then 300") is a
+-- second heading, asked; one that the turn reaches ("left 40 degrees to 050") restates it
+do
+  local _, ex = scene({ "CRE AB101 A320 52.0 4.0 090 FL280 280" })
+  check_eq(ex("AB101 left 40 degrees to 050"), "HDG AB101 50 LEFT")
+  asked(ex("AB101 left 40 degrees then 300"), "a second heading after the turn")
+  asked(ex("AB101 turn right 20 degrees, to 200"), "a heading the turn does not reach")
+end
