@@ -5745,6 +5745,7 @@ function G:not_simulated()
             and (not c.subject or self:said_after_subject(i, c.subject))
             and (not c.after_heading or self:after_heading(i))
             and not (c.not_before and self:word(self:skip_fillers(i + 1), c.not_before))
+            and not (c.no_number_after and self.t[i + 2] and self.t[i + 2].kind == "number")
             and not (c.not_after and self:word(i - 1, c.not_after)) and not self:word(i + 1, "not") then
           local expected = c.not_aircraft_to and self:aircraft_then_to(i + 1)
           if expected then

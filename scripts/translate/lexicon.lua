@@ -903,7 +903,7 @@ return {
   -- `subject`: the phrase is one only straight after one of these words; `own_clause`: with `last`, a clause
   -- after a comma opened by an imperative verb ("until 5 miles final, descend to 3000 feet") may follow it;
   -- `after_heading`: the phrase is one only after a heading value, with at most "to", "vectors" or a comma
-  -- between them (G:after_heading)
+  -- between them (G:after_heading); `no_number_after`: no phrase when a number follows its `near` word
   not_simulated = {
     -- ("squak", "sqwk": squawk typed short)
     { what = "transponder codes", words = "squawk squawking sq squak sqwk sqk",
@@ -956,8 +956,9 @@ return {
     { what = "approaches to a runway", words = "vectors vectoring vector",
       near = { "runway", "rwy", "ils", "final", "approach", "localizer", "localiser", "landing", "for" } },
     -- "turn right heading 090, vector to IDEKO": where a vector leads, told to the pilot; the heading is flown,
-    -- no direct-to is given
-    { what = "vectors toward a place", words = "vectors vectoring vector", near = { "to", "towards" }, window = 1 },
+    -- no direct-to is given ("vector to 300" names a heading, `no_number_after`: a number straight after the near word)
+    { what = "vectors toward a place", words = "vectors vectoring vector", near = { "to", "towards" }, window = 1,
+      no_number_after = true },
     -- "turn right heading 110, vectors Venice": the place named straight after the word (capitalised, or a
     -- place squawk knows), after an instruction
     { what = "vectors toward a place", words = "vectors vectoring", named_after = true, after_instruction = true },

@@ -9539,4 +9539,7 @@ do
   check_eq(ex("AB101 left 40 degrees to 050"), "HDG AB101 50 LEFT")
   asked(ex("AB101 left 40 degrees then 300"), "a second heading after the turn")
   asked(ex("AB101 turn right 20 degrees, to 200"), "a heading the turn does not reach")
+  -- ("vector to N": a heading, never a place the vector leads to, set aside)
+  asked(ex("AB101 left 40, give her a vector to 300"), "a second heading after 'vector to'")
+  check_eq(ex("AB101 turn left heading 030, vectors to 030"), "HDG AB101 30 LEFT")
 end
