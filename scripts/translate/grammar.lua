@@ -1405,6 +1405,9 @@ local CM_BLOCKS, CM_DETERMINERS = set_of(COMMENTARY.blocks), set_of(COMMENTARY.d
 local CM_WHILE, CM_LATER, CM_LEAD_CONTEXT = set_of(COMMENTARY.while_words), set_of(COMMENTARY.later),
   set_of(COMMENTARY.lead_context)
 COMMENTARY.reason_set = set_of(COMMENTARY.reasons)
+COMMENTARY.restate_set, COMMENTARY.intention_set = set_of(COMMENTARY.restate_verbs), set_of(COMMENTARY.intention)
+COMMENTARY.restated_sets = {}
+for intent, nouns in pairs(COMMENTARY.restated) do COMMENTARY.restated_sets[intent] = set_of(nouns) end
 local CM_NEGATION = set_of(lexicon.accounted.negation)
 for _, w in ipairs(lexicon.accounted.condition) do CM_NEGATION[w] = true end
 -- (a person in the room opens a remark as "we" does: "freeze the sim, trainee needs a break")
@@ -1470,6 +1473,40 @@ function G:commentary(b, e, lead, record, places)
     end
   end
   return true
+end
+
+-- True when the clause from b (its verb, one of commentary.restate_verbs) describes again an instruction said
+-- before it: a pronoun, then in the clause a noun of commentary.restated for the intent of a word before b
+-- (", give him a proper vector off" after a turn), the clause commentary otherwise (G:commentary).
+function G:restates(b)
+  local e = commentary_end(self, b)
+  if not self:word(b + 1, "him her it them") or not self:word_in(b + 2, e, "a an another") then return false end
+  for x = 1, b - 1 do
+    local nouns = COMMENTARY.restated_sets[self:intent_at(x) or ""]
+    if nouns and self:word_in(b + 2, e, nouns) then return self:commentary(b, e) end
+  end
+  return false
+end
+
+-- True when the condition word at c opens the speaker's own intention (", then when clear of BAW87 I'll send him
+-- back"): before the end of its clause, commentary.intention (or "i"/"we" and "will") after a condition holding
+-- no value, place or instruction word (the traffic it names is the condition's), and commentary naming no aircraft
+-- from there on.
+function G:intention_after(c)
+  local e = commentary_end(self, c + 1)
+  for p = c + 2, e - 1 do
+    if self:word(p, COMMENTARY.intention_set) or (self:word(p, "i we") and self:word(p + 1, "will")) then
+      if #self:quantities(c + 1, p) > 0 or #self:refs_in(c + 1, p, "waypoint") > 0
+          or self:has_ref(p, e, "aircraft") then
+        return false
+      end
+      for x = c + 1, p - 1 do
+        if self:intent_at(x) then return false end
+      end
+      return self:commentary(p, e)
+    end
+  end
+  return false
 end
 
 -- True when the clause from b names an instruction given "to" someone (", we want the easyJet to descend",
@@ -1659,6 +1696,13 @@ function G:in_reason(i)
         -- ("Descend KLM12 to FL120, as the transcript shows", ", which is what the controller ought to have done",
         -- ", as the controller did at 10:42:15")
         inside = true
+      elseif punct and t.text == "," and self:word(k + 1, COMMENTARY.restate_set) and self:restates(k + 1) then
+        -- (", give him a proper vector off": the turn said before it, described again)
+        inside = true
+      elseif ((w == "then" and self:word(k + 1, "@condition")) or (punct and t.text == "," and self:word(k + 1, "@condition")))
+          and instructed(k) and self:intention_after(k + 1) then
+        -- (", then when clear of BAW87 I'll send him back": what the speaker will do later, nothing now)
+        inside, reason[k] = true, reason[k] or w == "then"
       elseif punct and t.text == "," and self:diversion_reason(k) then
         inside = true
       elseif not start and self:past_told(k) then
@@ -5011,6 +5055,12 @@ function G:explained_spans(issued, kinds)
       local nx = self.t[i + 2]
       if not nx or nx.kind == "punct" then inside[i], inside[i + 1] = true, true end
     end
+    -- "climb to FL320 but not above 1500 feet a minute", "not exceeding 2000 fpm": a vertical speed said as the
+    -- most to fly, which the rate issued carries (a level or speed after it is asked)
+    if w == "not" and self:word(i + 1, "above exceeding over") then
+      local q = self:quantities(i + 2, i + 3)[1]
+      if q and q.kind == "vs" and q.b == i + 2 then inside[i], inside[i + 1] = true, true end
+    end
     local phrases = PHRASES[self.t[i].text]
     for k = 1, phrases and #phrases or 0 do
       local p, ok = phrases[k], true
@@ -5885,6 +5935,7 @@ function G:not_simulated()
             and (not c.after_heading or self:after_heading(i))
             and not (c.not_before and self:word(self:skip_fillers(i + 1), c.not_before))
             and not (c.no_value and self:value_next(i))
+            and not (c.no_number_after and self.t[i + 2] and self.t[i + 2].kind == "number")
             and not (c.not_after and self:word(i - 1, c.not_after)) and not self:word(i + 1, "not")
             and (not c.bare or self:said_bare(i)) then
           local expected = c.not_aircraft_to and self:aircraft_then_to(i + 1)
@@ -6152,7 +6203,7 @@ end
 -- A clause between punctuation that names something and switches it ("QTR7 lateral drift off, fly heading 040":
 -- two words or more, then "off" or "on" closing the clause, no callsign after it; one word and the switch, "carry
 -- on", "level off", "hands off", is most often a phrase the commands carry) with nothing of it read (no instruction word, no value, no word
--- used, explained or noted, none inside what the commands issued explain, the callsign aside) is an instruction squawk did not understand: it becomes the
+-- used, explained, noted or in a reason, none inside what the commands issued explain, the callsign aside) is an instruction squawk did not understand: it becomes the
 -- leftover asked about by name, never dropped in silence while the rest runs.
 function G:unread_switch()
   if not self:said("off on") then return end  -- (the clause must close with "off" or "on")
@@ -6172,7 +6223,7 @@ function G:unread_switch()
         if not x.filler then tail = i end
         if not callsign[i] then
           read = read or x.kind ~= "word" or explained[i] or inside[i] or self.noted[i] or self.u:used(i)
-            or self:intent_at(i)
+            or self:intent_at(i) or self:in_reason(i)
           if x.kind == "word" and not x.filler then first, last, n = first or i, i, n + 1 end
         end
       end

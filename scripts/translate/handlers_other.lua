@@ -97,6 +97,56 @@ return function(H, f, compass)
     return r.name
   end
 
+  -- A new aircraft's field said again after a correction word ("eastbound... no wait westbound", "heading 090,
+  -- no wait 270", "FL360 correction FL370"): the one said before the correction is taken back (accounted for,
+  -- never read). Returns `qs` less the values taken back (a bare number after a heading taken back is that
+  -- heading) and the set of compass words taken back; nil and the words said when a correction stands between two
+  -- fields of different kinds.
+  function m:creation_taken_back(s, qs)
+    local dropped, points = {}, {}
+    local function point(i)
+      local t = self.t[i]
+      return t and t.kind == "word" and (t.text:match("^(%a+)bound$") or t.text:match("^(%a+)erly$")) ~= nil
+    end
+    local c = s.b + 1
+    while c < s.e do
+      -- (the correction: a correction word, or a run of self-correction words holding "no", "wait", "sorry" or
+      -- "actually", which the reading of spoken corrections leaves as said before a word that is no value)
+      local ce = c
+      while ce < s.e and self:word(ce, "correction no wait sorry actually oh i mean make that") do ce = ce + 1 end
+      if ce > c and self:word_in(c, ce, "correction no wait sorry actually") then
+        local b, a = c - 1, ce
+        while b > s.b and self.t[b].kind == "punct" do b = b - 1 end
+        while a < s.e and (self.t[a].kind == "punct" or self.t[a].filler) do a = a + 1 end
+        local before, after, read = point(b), point(a), false
+        local from, to = b, a + 1  -- (the words quoted when asked: both fields and the correction)
+        if before and after then
+          points[b], read = true, true
+          self:explain(b, ce)
+        end
+        for k, q in ipairs(qs) do
+          before, after = before or q.e == b + 1, after or q.b == a
+          if q.e == b + 1 then from = q.b end
+          if q.b == a then to = q.e end
+          local q2 = qs[k + 1]
+          if q.e == b + 1 and q2 and q2.b == a and (q2.kind == q.kind or (q.kind == "heading" and q2.kind == "plain"
+              and q2.value <= 360)) then
+            dropped[q] = true
+            qs[k + 1] = { kind = q.kind, value = q2.value, fl = q2.fl, b = q2.b, e = q2.e }
+            self:explain(q.b, ce)
+            read = true
+          end
+        end
+        -- (between two fields of different kinds, "FL360 no wait 300 knots", what is taken back is not known)
+        if before and after and not read then return nil, self:raw(from, to) end
+      end
+      c = math.max(c + 1, ce)
+    end
+    local out = {}
+    for _, q in ipairs(qs) do if not dropped[q] then out[#out + 1] = q end end
+    return out, points
+  end
+
   function m:create_one(s, id_from)
     local id
     -- ("create Alaska six eleven" with ASA331 flying: the airline heard whole and a flight number
@@ -257,6 +307,12 @@ return function(H, f, compass)
     if not actype and model and self:word_in(s.b, s.e, "type") then actype = model.type end
     local qs = self:quantities(s.b, s.e)
     for _, q in ipairs(s.shared and self:quantities(s.shared.b, s.shared.e) or {}) do qs[#qs + 1] = q end
+    local back_qs, points_back = self:creation_taken_back(s, qs)
+    if not back_qs then
+      return self:need(string.format("Which value of the new aircraft does the correction in '%s' take back? "
+        .. "Please say its values again.", points_back))
+    end
+    qs = back_qs
     -- (values after the type count too: "KLM602 A320, 52.4 6.4, 270 deg, ..." has its instruction word later)
     local lat, lon = position(qs, (types[1] and types[1].e < s.trig and types[1].b > s.b) and types[1].e or s.trig, self)
     local along  -- the aircraft the new one is placed ahead of or behind
@@ -333,7 +389,7 @@ return function(H, f, compass)
       local point = t.kind == "word" and not self:word(i + 1, "of")
         and (t.text:match("^(%a+)bound$") or t.text:match("^(%a+)erly$")
           or (self:word(i - 1, "@compass_verbs") and t.text))
-      local c = point and L.compass[point]
+      local c = point and not points_back[i] and L.compass[point]
       if c and (not hdg or math.abs((c - hdg + 180) % 360 - 180) < 90) then
         hdg = hdg or c
         self:explain(i, i + 1)

@@ -755,6 +755,18 @@ return function(H, f, wrap, compass)
       local dir = rel.turn ~= 0 and rel.turn or turn
       if dir == 0 then return self:need("Should " .. id .. " turn left or right?") end
       offset = dir * rel.value
+      -- (a heading said after the turn's degrees, no correction between, "left 30 degrees then 300", "left 30
+      -- degrees, to 270": a second heading in the turn's sentence, asked, unless it is the one the turn reaches)
+      local reached = wrap(math.floor(now.hdg_deg + offset + 0.5))
+      local second = abs and abs.b > rel.b and not correction and wrap(abs.value) ~= reached
+        and not self:in_reason(abs.b)
+      for x = rel.e, second and abs.b - 1 or 0 do  -- (in the turn's sentence: "... 35 degrees? We want it closer to 90")
+        if self.t[x].kind == "punct" and self.t[x].text ~= "," then second = false end
+      end
+      if second then
+        return self:need(string.format("Should %s turn %s by %s degrees, onto %03d, or fly heading %s?", id,
+          dir < 0 and "left" or "right", f.num(rel.value), reached, f.num(abs.value)))
+      end
     elseif named then
       hdg = named
     elseif toward then

@@ -264,7 +264,7 @@ return {
         "located", "positioned", "situated", "ownship",
         -- an aircraft described by its size ("the small Cessna", "a big Boeing") or its airline's country ("the
         -- German one, the Lufthansa"; names that are airlines' own, "Norwegian", "Swiss", are not here)
-        "small", "little", "big", "german", "swedish", "danish", "finnish", "dutch", "french", "spanish",
+        "small", "little", "wee", "tiny", "big", "german", "swedish", "danish", "finnish", "dutch", "french", "spanish",
         "italian", "polish", "latvian", "lithuanian", "icelandic", "portuguese", "hungarian", "greek",
         -- the margin a resolution keeps ("resolution margin factor 1.05")
         "margin",
@@ -702,6 +702,9 @@ return {
   -- with instruction words, never with a value. Before a colon, an aircraft after one of `lead_context`
   -- is other traffic when the request names its own aircraft after the colon ("Add an intruder for
   -- VIR9: DLH9KW A321 at ...")
+  -- after "show me", words for the aircraft named shown together ("show me both of them, KLM12 and EIN45", "...,
+  -- show me the both of them", "show me them all")
+  shown_together = { "both", "of", "them", "the", "and", "all", "two", "pair" },
   aside = { subjects = { "we", "i", "it", "he", "she", "they", "that", "this", "it's", "that's", "we're",
                          "we'll", "we'd", "i'm", "i'll", "i'd", "he's", "she's", "they're", "there's", "too",
                          "participant", "participants", "experimenter", "researcher" },
@@ -714,6 +717,16 @@ return {
                       "reports", "weather", "wx", "closed", "closure", "congestion", "sick", "medical", "arrivals",
                       "departures", "turbulence", "chop", "choppy", "bumpy", "icing" },
           while_words = { "while", "whilst" },
+          -- the same action described after a complete instruction, in an instructor's words (", give him a proper
+          -- vector off", ", give her a decent climb"): one of `restate_verbs`, a pronoun and a noun of the kind of an
+          -- instruction said before it (`restated`, by the intent); set aside when the clause is commentary, else asked
+          restate_verbs = { "give" },
+          restated = { hdg = { "vector", "turn", "nudge", "kick", "heading" }, alt = { "climb", "descent", "level" },
+                       spd = { "speed", "slowdown" } },
+          -- the speaker's own future doing after a condition (", then when clear of BAW87 I'll send him back",
+          -- ", once he's past the Ryanair we'll turn him back"): one of these, or "i"/"we" then "will", after the
+          -- condition (no value, place or instruction word in it), the rest commentary; never an instruction now
+          intention = { "i'll", "we'll" },
           later = { "later", "afterwards", "afterward" },
           lead_context = { "for", "behind", "against", "on", "with", "near", "versus", "vs" },
           leads = { "for", "to" },
@@ -904,7 +917,8 @@ return {
   -- `after_heading`: the phrase is one only after a heading value, with at most "to", "vectors" or a comma
   -- between them (G:after_heading); `bare`: the word is one only said alone in its clause (G:said_bare);
   -- `no_value`: none with a value said straight after its word (G:value_next); `routed`: a place it names off
-  -- the route of the one aircraft addressed is asked (G:limit_off_route)
+  -- the route of the one aircraft addressed is asked (G:limit_off_route); `no_number_after`: no phrase when a
+  -- number follows its `near` word
   not_simulated = {
     -- ("squak", "sqwk": squawk typed short)
     { what = "transponder codes", words = "squawk squawking sq squak sqwk sqk",
@@ -965,8 +979,9 @@ return {
     { what = "approaches to a runway", words = "vectors vectoring vector",
       near = { "runway", "rwy", "ils", "final", "approach", "localizer", "localiser", "landing", "for" } },
     -- "turn right heading 090, vector to IDEKO": where a vector leads, told to the pilot; the heading is flown,
-    -- no direct-to is given
-    { what = "vectors toward a place", words = "vectors vectoring vector", near = { "to", "towards" }, window = 1 },
+    -- no direct-to is given ("vector to 300" names a heading, `no_number_after`: a number straight after the near word)
+    { what = "vectors toward a place", words = "vectors vectoring vector", near = { "to", "towards" }, window = 1,
+      no_number_after = true },
     -- "turn right heading 110, vectors Venice": the place named straight after the word (capitalised, or a
     -- place squawk knows), after an instruction
     { what = "vectors toward a place", words = "vectors vectoring", named_after = true, after_instruction = true },

@@ -187,6 +187,35 @@ return function(intent, rule, words)
     return g.opening_create == i
   end }
 
+  -- "FL310, heading 090, 300 knots, callsign BAW92, A319, at 53.5 -6.8": a new aircraft's fields in any order, no
+  -- verb, its callsign named as such ("callsign" straight before a callsign no aircraft has), its type and a
+  -- position said, no aircraft flying named: the creation, fired at the request's first word (no number)
+  rule { "*", "create", when = function(g, i)
+    if g.fields_create == nil then
+      g.fields_create = false  -- (computed once per request: the rule is tried at every word)
+      local new, types, flying = 0, 0, 0
+      for _, r in ipairs(g.refs) do
+        if r.kind == "aircraft" and r.exists then flying = flying + 1 end
+        if r.kind == "aircraft" and not r.exists and g:word(r.b - 1, "callsign") and g:new_callsign(r) then
+          new = new + 1
+        end
+        if r.kind == "type" then types = types + 1 end
+      end
+      -- (the position: a latitude and longitude read, or two plain numbers after "at" or "position" that fit them)
+      local lat, qs = false, g:quantities(1, #g.t + 1)
+      for k, q in ipairs(qs) do
+        local q2 = qs[k + 1]
+        lat = lat or q.kind == "lat" or (q.kind == "plain" and q2 ~= nil and q2.kind == "plain" and q2.b == q.e
+          and g:word(q.b - 1, "at position pos") and math.abs(q.value) <= 90 and math.abs(q2.value) <= 180)
+      end
+      local first = g:skip_fillers(1)
+      while g.t[first] and (g.t[first].kind ~= "word" or g.t[first].filler) do first = first + 1 end
+      if new == 1 and types == 1 and flying == 0 and lat and g.t[first] then
+        g.fields_create = first
+      end
+    end
+    return g.fields_create == i
+  end }
   -- "swr84c altitude?", "afr1442 speed?": a state word asked with "?" straight after it, an aircraft named
   -- before it and no value said anywhere: a question of the aircraft's state (POS), no instruction (an
   -- instruction's shorthand, "ezy45 fl?", "hdg?", is a value left out: asked)
@@ -1443,6 +1472,15 @@ return function(intent, rule, words)
     local k = g:word(i + 1, "now") and i + 2 or i + 1
     return (g.t[k] == nil or g.t[k].kind == "punct") and g:has_ref(math.max(1, i - 2), i, "aircraft")
   end }
+  -- "what's RYR2BA at", "what is the Ryanair at now?": where an aircraft is (its level and position), asked
+  -- with "what" opening the request and "at" ending it after the aircraft
+  rule { "what what's whats", "pos", when = function(g, i)
+    if g:skip_fillers(1) ~= i then return false end
+    local r = g:refs_in(g:word(i + 1, "is") and i + 2 or i + 1, #g.t + 1, "aircraft")[1]
+    if not r or r.b > i + 3 or not g:word(r.e, "at") then return false end
+    local k = g:word(r.e + 1, "now") and r.e + 2 or r.e + 1
+    return g.t[k] == nil or (g.t[k].kind == "punct" and k == #g.t)
+  end }
   rule { "state", false, next = "based" }  -- "state-based conflict detection": CDMETHOD's method
   rule { "dump", false, next = "the its", near = { 4, "state position details status" } }  -- "dump the state of ..."
   -- "a320 EIN77 fl 200 pos NIMAT hdg 100": "pos" before a place, in a request that names an aircraft type,
@@ -1453,6 +1491,35 @@ return function(intent, rule, words)
       and g:has_ref(1, #g.t + 1, "type")
   end }
   rule { "details status info information state pos", "pos" }
+  -- "show me both of them, KLM12 and EIN45", "KLM12 and EIN45 are in conflict, show me the both of them": the
+  -- aircraft named shown together, the words after the verb only those aircraft and lexicon.shown_together
+  -- ("both" when two are named; "them" or "both" standing for those named before the verb); no value and no instruction
+  -- word in the request
+  rule { "show display", "pos", when = function(g, i)
+    if #g:quantities(1, #g.t + 1) > 0 then return false end
+    local named, after, both, them = 0, 0, false, false
+    for _, r in ipairs(g.refs) do
+      if r.kind == "aircraft" then
+        named = named + 1
+        if r.b > i then after = after + 1 end
+      end
+    end
+    local k = g:word(i + 1, "me us") and i + 2 or i + 1
+    while k <= #g.t do
+      local r = g:refs_in(k, k + 1, "aircraft")[1]
+      if r then
+        k = r.e
+      else
+        if not (g.t[k].kind == "punct" or g.t[k].filler or g:word(k, "@shown_together")) then return false end
+        both, them = both or g:word(k, "both"), them or g:word(k, "them")
+        k = k + 1
+      end
+    end
+    for x = 1, i - 1 do
+      if g:intent_at(x) then return false end
+    end
+    return named >= 2 and not (both and named ~= 2) and (after == named or ((them or both) and after == 0))
+  end }
   -- "show me Wideroe five one two", "check IBE3421": an aircraft alone after the verb is shown where it is
   -- ("pause, and show me the Swiss three eight foxtrot": the clause of its own)
   rule { "show display check", "pos", when = function(g, i)
@@ -1721,7 +1788,7 @@ return function(intent, rule, words)
     if g:word(k, "the") and g:word(k + 1, "@sim") then k = k + 2 elseif g:word(k, "it @sim") then k = k + 1 end
     return g:word(k, "and") and g:word(k + 1, "fast ff")
   end }
-  rule { "go resume continue unpause run", "op", when = function(g, i) return g:clause_alone(i, i + 1) end }
+  rule { "go resume continue unpause run play", "op", when = function(g, i) return g:clause_alone(i, i + 1) end }
   -- "set multiplier 8 and run", "descend FL080 then run (it)": the clock started after another instruction, the
   -- verb ending the text ("and run at 4x" is the rate's)
   rule { "run", "op", prev = { 1, "and then" }, when = function(g, i)
@@ -1763,7 +1830,14 @@ return function(intent, rule, words)
     return g:word(b - 1, "set get")
   end }
   -- "go", "resume (please)": the whole request starts the clock
-  rule { "go resume run", "op", when = function(g, i) return g:alone(i) end }  -- ("ok run")
+  rule { "go resume run play", "op", when = function(g, i) return g:alone(i) end }  -- ("ok run", "play")
+  -- "go go go", "go, go!": the one word said again, nothing else, starts the clock once
+  rule { "go", "op", when = function(g, i)
+    for k = 1, #g.t do
+      if not (g.t[k].kind == "punct" or g.t[k].filler or g:word(k, "go")) then return false end
+    end
+    return true
+  end }
   -- "sim run", "sim start", "sim stop": the simulation named before its verb, said alone or as a clause
   rule { "go run start", "op", prev = { 1, "@sim" }, when = function(g, i)
     return g:alone_but(i - 1, i + 1) or g:clause_alone(i - 1, i + 1)
@@ -1773,6 +1847,14 @@ return function(intent, rule, words)
   end }
   -- "resume nav past cpa", "resume navigation once past the CPA": how aircraft resume after a resolution
   rule { "resume resumes", "resnav", near = { 6, "cpa" } }
+  -- "after they pass CPA send them back on their route", "once past the CPA let them resume their route": how
+  -- aircraft resume their route after a resolution (RESNAV PASTCPA), CPA named before it after a word of
+  -- lexicon.condition or "past"
+  rule { "back rejoin resume resumes", "resnav", near = { 4, "route routes course navigation nav" },
+         when = function(g, i)
+    local c = g:find_word(1, i, "cpa")
+    return c < i and g:word_in(math.max(1, c - 4), c, "@condition past passing passed pass passes")
+  end }
   rule { "resume", "lnav", near = { 3, "navigation nav route" } }
   -- ("rejoin own navigation at NORKU": the rejoining's, a direct-to the waypoint)
   rule { "own", false, prev = { 2, "rejoin rejoining" }, near = { 3, "at to over by" } }
@@ -1958,7 +2040,7 @@ return function(intent, rule, words)
   -- position straight after it ("at" before it or none), where it blows from said after that
   -- ("wind at 53.4 -6.3 from 270 at 25 kts": a latitude and longitude in bare decimal degrees; "wind at
   -- 38.8 north 9.1 west, FL100, 310 degrees 25 knots": its direction in degrees and its speed in knots said
-  -- after the position, no "from")
+  -- after the position, no "from"; "wind 55.9 -3.3 270 at 40": as a wind is reported)
   rule { "wind winds", "wind", when = function(g, i)
     -- ("wind 47.2 11.4 FL200 from 270 at 45 kts": the position straight after it, typed)
     local q = g:word(i + 1, "at over") and g:quantities(i + 2, i + 3)[1] or g:quantities(i + 1, i + 2)[1]
@@ -1967,8 +2049,13 @@ return function(intent, rule, words)
     local pair = nx ~= nil and nx.kind == "plain" and q.number.typed and nx.number.typed
       and (q.number.digits or ""):find("%.") ~= nil and math.abs(q.value) <= 90 and math.abs(nx.value) <= 180
     local told = g:find_word(i + 3, #g.t + 1, "from") <= #g.t
-    for _, v in ipairs(q and not told and g:quantities(q.e, #g.t + 1) or {}) do
+    -- (or as a wind is reported, "270 at 40", "270 at 40 knots": G:wind_reported)
+    local after = q and not told and g:quantities(q.e, #g.t + 1) or {}
+    for k, v in ipairs(after) do
       told = told or (v.kind == "angle" and (g:quantities(v.e, v.e + 1)[1] or {}).kind == "speed")
+        or (after[k + 1] ~= nil and (g:wind_reported(v, after[k + 1]) or (after[k + 1].kind == "speed"
+          and v.kind == "plain" and #(v.number and v.number.digits or "") == 3 and v.value <= 360
+          and g:word(v.e, "at") and after[k + 1].b == v.e + 1 and after[k + 1].value <= 200)))
     end
     return q ~= nil and (q.kind == "lat" or q.kind == "lon" or pair) and told
       and not g:has_ref(1, #g.t + 1, "aircraft") and not g:word_in(math.max(1, i - 3), i, "what what's whats show tell get check")
@@ -2059,16 +2146,16 @@ return function(intent, rule, words)
     return p ~= nil and p.kind == "punct" and (p.text == ":" or p.text == "-") and g:word(i + 2, "on off mvp")
   end }
   -- "vertical resolution factor 1.1", "horizontal reso safety factor to 1.15": the safety factor
-  rule { "resolution resolve reso resolutions", false, near = { 3, "factor" } }
+  rule { "resolution resolve reso resolutions resolver", false, near = { 3, "factor" } }
   rule { "factor", "rfac", prev = { 4, "resolution resolutions reso resolve safety" } }
   -- "give the horizontal resolutions a 20 percent margin": the safety factor said as a margin in percent
-  rule { "resolution resolve reso resolutions", false, near = { 5, "margin" } }
+  rule { "resolution resolve reso resolutions resolver", false, near = { 5, "margin" } }
   rule { "margin", "rfac", prev = { 5, "resolution resolutions reso resolve" }, not_near = { 1, "factor" } }
   -- "Resolution method MVP, horizontal factor 1.2": a factor of a direction, resolution said before
   rule { "factor", "rfac", prev = { 1, "horizontal lateral vertical" }, when = function(g, i)
     return g:word_in(1, i, "resolution resolutions reso resolve mvp")
   end }
-  rule { "mvp resolution resolve reso resolutions", false, when = function(g)
+  rule { "mvp resolution resolve reso resolutions resolver", false, when = function(g)
     for k = 1, #g.t do if g:vertical_resolutions(k) then return true end end
     return false
   end }
@@ -2134,7 +2221,7 @@ return function(intent, rule, words)
   rule { "resolution resolutions", false, prev = { 3, "watch watching see observe" }, when = function(g, i)
     return g:any_instruction_in(1, i - 1)
   end }
-  rule { "resolution resolve reso", "reso" }
+  rule { "resolution resolve reso resolver", "reso" }  -- ("switch the resolver on": the resolution's own word)
   -- "enable MVP", "switch to MVP": the method named alone is resolution by it
   rule { "mvp", "reso", prev = { 3, "@on switch" } }
   rule { "mvp", "reso", next = "on" }  -- "and MVP on"

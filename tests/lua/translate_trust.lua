@@ -9724,3 +9724,91 @@ do
   check_eq(ex("supervisor AUA71 descend flight level one eight zero"), "ALT AUA71 FL180")
   asked(ex("instructor"), "a label alone")
 end
+
+-- Cycle 47 (f106): instructor commentary after a complete instruction, no instruction of its own: the same action
+-- described again (", give her a decent climb" after a climb) and the speaker's own intention after a condition
+-- (", then once past X we'll turn him back") are set aside; a clause that could instruct is asked
+do
+  local _, ex = scene({ "CRE AB101 A320 52.0 4.0 090 FL280 280", "CRE CD202 B738 52.3 4.4 270 FL300 280",
+    "CRE EF303 A321 51.8 4.2 360 FL260 260" })
+  check_eq(ex("AB101 left forty degrees, give her a good vector away"), "HDG AB101 50 LEFT")
+  check_eq(ex("CD202 climb FL340, give him a decent climb"), "ALT CD202 FL340")
+  check_eq(ex("AB101 turn right thirty, then once clear of CD202 we'll bring her back"), "HDG AB101 120 RIGHT")
+  check_eq(ex("AB101 turn right thirty, when well past CD202 I will put her back on the route"), "HDG AB101 120 RIGHT")
+  check_eq(ex("let's give EF303 a tiny nudge left, ten degrees"), "HDG EF303 350 LEFT")
+  -- (a noun of another kind than the instruction's, a value, another aircraft, a second verb of instruction)
+  asked(ex("CD202 climb FL340, give him a vector off"), "a turn described after a climb")
+  asked(ex("AB101 turn right thirty, then once clear of CD202 I'll climb her to FL320"), "a value in the intention")
+  asked(ex("AB101 turn right thirty, then once clear of CD202 we'll bring EF303 back"), "another aircraft")
+  asked(ex("AB101 turn right thirty, then once clear of CD202 turn her back"), "an instruction after a condition")
+end
+
+-- Cycle 47 (f106): two aircraft shown together ("show me both of them, X and Y", "X and Y are converging, show me
+-- the both of them") and "what's X at": each aircraft's position (POS); "both" with three named is asked
+do
+  local _, ex = scene({ "CRE AB101 A320 52.0 4.0 090 FL280 280", "CRE CD202 B738 52.3 4.4 270 FL300 280",
+    "CRE EF303 A321 51.8 4.2 360 FL260 260" })
+  check_eq(ex("display both of them, CD202 and EF303"), "POS CD202 ; POS EF303")
+  check_eq(ex("AB101 and EF303 are converging, show me the both of them"), "POS AB101 ; POS EF303")
+  check_eq(ex("show us them, AB101 and CD202"), "POS AB101 ; POS CD202")
+  check_eq(ex("what is CD202 at now?"), "POS CD202")
+  asked(ex("AB101, CD202 and EF303, show me both of them"), "both said of three")
+end
+
+-- Cycle 47 (f106): the clock and the resolver in a class's words: "play" and "go" said over again start the clock
+-- (OP); "the resolver" is the conflict resolution (RESO); a route resumed after CPA, no aircraft named, is how
+-- aircraft resume after a resolution (RESNAV PASTCPA); one aircraft's return after CPA is asked
+do
+  local _, ex = scene({ "CRE AB101 A320 52.0 4.0 090 FL280 280", "CRE CD202 B738 52.3 4.4 270 FL300 280" })
+  check_eq(ex("ok, play"), "OP")
+  check_eq(ex("AB101 descend FL240, play"), "ALT AB101 FL240 ; OP")
+  check_eq(ex("go, go, go!"), "OP")
+  check_eq(ex("put the resolver on please"), "RESO MVP")
+  check_eq(ex("once they're past the CPA put them back on course"), "RESNAV PASTCPA")
+  check_eq(ex("after CPA let them resume their routes"), "RESNAV PASTCPA")
+  asked(ex("AB101 go go go"), "an aircraft told to go")
+  asked(ex("after AB101 passes CPA put it back on its route"), "one aircraft's return after CPA")
+end
+
+-- Cycle 47 (f106): a new aircraft's fields in any order with no verb, its callsign named as such ("..., callsign
+-- X, type, at lat lon"), is the creation; a field said again after a correction ("northbound... no wait
+-- southbound", "heading 100, sorry, 280") replaces the one before it; a correction between fields of different
+-- kinds is asked
+do
+  local _, ex = scene({ "CRE AB101 A320 52.0 4.0 090 FL280 280" })
+  check_eq(ex("heading 135, 240 knots, FL250, callsign NEW42, B738, at 51.5 3.5"), "CRE NEW42 B738 51.5 3.5 135 FL250 240")
+  check_eq(ex("heading 010 FL200 callsign NEW43 E190 position 52.5 3.9 250 knots"), "CRE NEW43 E190 52.5 3.9 10 FL200 250")
+  check_eq(ex("create NEW44 A321 at 51.9 3.8, northbound... no wait southbound, FL300, 280 knots"),
+    "CRE NEW44 A321 51.9 3.8 180 FL300 280")
+  check_eq(ex("create NEW45 A321 at 51.9 3.8, heading 100, sorry, 280, FL300, 280 knots"),
+    "CRE NEW45 A321 51.9 3.8 280 FL300 280")
+  asked(ex("create NEW46 A321 at 51.9 3.8, heading 100, FL300 no wait 280 knots"), "a correction between kinds")
+  asked(ex("FL310, heading 090, callsign NEW47, at 51.5 3.5"), "no type said")
+  asked(ex("AB101 FL310, heading 090, callsign NEW48, A319, at 51.5 3.5"), "an aircraft flying named")
+end
+
+-- Cycle 47 (f106): a rate said as the most to fly ("but not above 1500 feet a minute", "not exceeding 2000 fpm") is
+-- the vertical speed the level carries; "not above" a level or a speed is asked. A wind's position, then its
+-- direction and speed as a wind is reported ("wind 52.5 3.1 250 at 35"), is WIND
+do
+  local _, ex = scene({ "CRE AB101 A320 52.0 4.0 090 FL280 280" })
+  check_eq(ex("AB101 climb FL350 but not above 1200 feet a minute"), "ALT AB101 FL350 1200")
+  check_eq(ex("AB101 descend FL200, not exceeding 2500 fpm"), "ALT AB101 FL200 2500")
+  asked(ex("AB101 climb FL350 but not above FL330"), "not above a level")
+  asked(ex("AB101 climb FL350 but not above 260 knots"), "not above a speed")
+  check_eq(ex("wind 52.5 3.1 250 at 35"), "WIND 52.5 3.1 250 35")
+  check_eq(ex("wind at 52.5 3.1, 250 at 35 knots"), "WIND 52.5 3.1 250 35")
+  asked(ex("wind 52.5 3.1 250 at 350 knots"), "a wind too strong to be one")
+end
+
+-- Cycle 47 (f106): a heading said after a turn's degrees in the same instruction ("left 40 degrees then 300") is a
+-- second heading, asked; one that the turn reaches ("left 40 degrees to 050") restates it
+do
+  local _, ex = scene({ "CRE AB101 A320 52.0 4.0 090 FL280 280" })
+  check_eq(ex("AB101 left 40 degrees to 050"), "HDG AB101 50 LEFT")
+  asked(ex("AB101 left 40 degrees then 300"), "a second heading after the turn")
+  asked(ex("AB101 turn right 20 degrees, to 200"), "a heading the turn does not reach")
+  -- ("vector to N": a heading, never a place the vector leads to, set aside)
+  asked(ex("AB101 left 40, give her a vector to 300"), "a second heading after 'vector to'")
+  check_eq(ex("AB101 turn left heading 030, vectors to 030"), "HDG AB101 30 LEFT")
+end
