@@ -9455,3 +9455,21 @@ do
   asked(ex("at second 30 KLM12 descend FL150"), "a second named before its number")
   check_eq(ex("at 5 minutes KLM12 descend FL150"), "SCHEDULE 00:05:00 ALT KLM12 FL150")
 end
+
+-- Cycle 47 (f104): terse command words chained with commas, one aircraft named: a later clause naming none takes it
+-- (read whole as English); with none or several named, or a deletion in the list, such a clause is asked
+do
+  local _, ex = scene({ "CRE AC101 A320 52.0 4.0 090 FL300 280", "CRE AC202 B738 52.3 4.3 180 FL200 250",
+    "DEFWPT WP1 52.2 4.5" })
+  check_eq(ex("alt ac101 fl280, spd 250, hdg 120"), "ALT AC101 FL280 ; SPD AC101 250 ; HDG AC101 120")
+  check_eq(ex("vs of ac202 to -1000, alt fl150 and dct wp1"),
+    "VS AC202 -1000 ; ALT AC202 FL150 ; ADDWPT AC202 WP1 ; DIRECT AC202 WP1")
+  check_eq(ex("spd ac202 240, hdg 100"), "SPD AC202 240 ; HDG AC202 100")
+  -- (a condition's carried command after "then" or "and" takes the condition's aircraft, as typed without it)
+  check_eq(ex("atalt ac101 fl280 then spd 240"), "ATALT ac101 fl280 spd ac101 240")
+  check_eq(ex("atspd ac202 230 and alt fl120"), "ATSPD ac202 230 alt ac202 fl120")
+  check_eq(ex("alt ac101 fl280, spd ac202 240, hdg 100"), "ASK Which aircraft is 'hdg 100' for? Please give its callsign.")
+  check_eq(ex("del ac101, spd 250"), "ASK Which aircraft is 'spd 250' for? Please give its callsign.")
+  asked(ex("hold, spd 250"), "no aircraft named in the list")
+  check_eq(ex("seed 7, mcre 20, ff 10 min"), "SEED 7 ; MCRE 20 ; FF 600")
+end
