@@ -4810,6 +4810,51 @@ function G:described_place(i)
   return nil
 end
 
+-- "direct to nienburg NIE", "goes to braunschweig, EDVE", "EDDH hamburg": words of any case just before place ref r
+-- (commas and kinds of place between) or just after it, one to three of them, that are the navdata's name of r's
+-- code (a navaid's name, an airport's name, words of it, or its city) are marked in `inside`; any other name stays unexplained
+-- (asked: "direct to hannover NIE")
+function G:name_beside_code(r, inside)
+  local w = self.world
+  if not (w.navaids_named and w.airports_named and w.airports_of_city and w.airports_with_words) then return end
+  local code = r.name:upper()
+  local function names(b, e)
+    local words = {}
+    for k = b, e - 1 do
+      local t = self.t[k]
+      if not t or t.kind ~= "word" or not t.alpha or MEANING[t.text] or self.triggers[k] or self:has_ref(k, k + 1, "aircraft") then
+        return false
+      end
+      words[#words + 1] = t.text
+    end
+    local name = table.concat(words, " ")
+    for _, ids in ipairs({ w.navaids_named(name, 0, 0, 1e5), w.airports_named(name), w.airports_of_city(name),
+        w.airports_with_words(name) }) do
+      for _, id in ipairs(ids) do
+        if id:upper() == code then return true end
+      end
+    end
+    return false
+  end
+  local function between(k) return self.t[k] and (self.t[k].kind == "punct" or self:word(k, "@airport_nouns @navaid_kinds")) end
+  local e = r.b
+  while e > 1 and r.b - e < 2 and between(e - 1) do e = e - 1 end
+  for n = 3, 1, -1 do
+    if e - n >= 1 and names(e - n, e) then
+      for k = e - n, r.b - 1 do inside[k] = true end
+      break
+    end
+  end
+  local b = r.e
+  while b < r.e + 2 and between(b) and self.t[b].text ~= "." do b = b + 1 end
+  for n = 3, 1, -1 do
+    if names(b, b + n) then
+      for k = r.e, b + n - 1 do inside[k] = true end
+      break
+    end
+  end
+end
+
 -- The positions of tokens the parse explains beyond the words themselves: callsigns, places, types and
 -- values; a place's name beside its issued code; the name "instead of" replaces or a direct-to passes
 -- (`kinds`: G:issued); an ATC unit's place; comments and purposes; courtesy and value phrases.
@@ -4835,6 +4880,7 @@ function G:explained_spans(issued, kinds)
       k = r.e
       if self.t[k] and self.t[k].kind == "punct" then k = k + 1 end
       if self.t[k] and self.t[k].kind == "word" and self.t[k].raw:match("^%u") then inside[k] = true end
+      self:name_beside_code(r, inside)
       -- ("at the RIX VOR near Riga": the city it lies by, a name the navdata gives a city's airport)
       local n = self:word(r.e, "@navaid_kinds @airport_nouns") and r.e + 1 or r.e
       local city = self.t[n + 1] and self.t[n + 1].kind == "word" and self.t[n + 1].raw:match("^%u") and self.t[n + 1].text
@@ -6652,6 +6698,33 @@ local function spelled_airports(text, world)
 end
 local function typed_places(text, world)
   if not world.place_known then return text end
+  local ids = {}
+  for _, a in ipairs(world.aircraft) do ids[(a.id or ""):lower()] = true end
+  local function near(w)
+    local lat, lon = world.place_known(w:upper())
+    if not lat then return false end
+    for _, a in ipairs(world.aircraft) do
+      local dlat, dlon = lat - (a.lat or 0), (lon - (a.lon or 0)) * math.cos(math.rad(lat))
+      if a.lat and 60 * math.sqrt(dlat * dlat + dlon * dlon) <= TYPED_PLACE_NM then return true end
+    end
+    return #world.aircraft == 0
+  end
+  -- ("where is the hlz vor": an ident of two to five letters in lower case straight before a kind of navaid,
+  -- lexicon.navaid_types, of a place near the traffic, is that place)
+  local lower = text:lower()
+  if lower:find("vor", 1, true) or lower:find("ndb", 1, true) or lower:find("dme", 1, true) then
+    local out, from, prev = {}, 1, nil  -- (prev: the word before, {b, e, text})
+    for b, w, e in text:gmatch("()(%a+)()") do
+      if prev and lexicon.navaid_types[w:lower()] and text:sub(prev[2], b - 1):match("^%s+$")
+          and prev[3]:match("^%l%l%l?%l?%l?$") and not known_word(prev[3]) and not ids[prev[3]]
+          and not lexicon.shorthand[prev[3]] and near(prev[3]) then
+        out[#out + 1] = text:sub(from, prev[1] - 1) .. prev[3]:upper()
+        from = prev[2]
+      end
+      prev = { b, e, w }
+    end
+    text = table.concat(out) .. text:sub(from)
+  end
   -- (a name is read only after a word of PLACE_SLOTS: with none said, the words stand as they are)
   local padded, slots = " " .. text:lower() .. " ", false
   for _, p in ipairs(PLACE_SLOT_PATTERNS) do
@@ -6667,17 +6740,6 @@ local function typed_places(text, world)
     return text:sub(1, e)
   end
   local capitals = text:find("%u") ~= nil
-  local ids = {}
-  for _, a in ipairs(world.aircraft) do ids[(a.id or ""):lower()] = true end
-  local function near(w)
-    local lat, lon = world.place_known(w:upper())
-    if not lat then return false end
-    for _, a in ipairs(world.aircraft) do
-      local dlat, dlon = lat - (a.lat or 0), (lon - (a.lon or 0)) * math.cos(math.rad(lat))
-      if a.lat and 60 * math.sqrt(dlat * dlat + dlon * dlon) <= TYPED_PLACE_NM then return true end
-    end
-    return #world.aircraft == 0
-  end
   local routed = {}
   for _, a in ipairs(world.aircraft) do
     for _, r in ipairs(a.route or {}) do routed[r:lower()] = true end

@@ -1197,6 +1197,12 @@ return function(intent, rule, words)
     end
     local t, nx, named = g.t[k], g.t[k + 1], g.world.airports_named
     if not named or not t or t.kind ~= "word" or not t.alpha or #t.text < 4 then return false end
+    -- (a word said before an airport's code, a comma between or none: "goes to braunschweig, EDVE"; the word is
+    -- accounted for only as the navdata's name of that code, G:name_beside_code)
+    local code = nx and nx.kind == "punct" and nx.text == "," and k + 2 or k + 1
+    for _, r in ipairs(g:refs_in(code, code + 1, "waypoint")) do
+      if r.b == code and r.name:match("^%a%a%a%a$") then return true end
+    end
     -- (or a city whose airport lies by navaids of its name: "Ezeiza", SAEZ beside the EZEIZA VOR)
     local beside = g.world.airports_beside_navaids
     -- (a city named for its airport, lexicon.city_airports: "going to Perpignan", RIVESALTES)

@@ -9473,3 +9473,21 @@ do
   asked(ex("hold, spd 250"), "no aircraft named in the list")
   check_eq(ex("seed 7, mcre 20, ff 10 min"), "SEED 7 ; MCRE 20 ; FF 600")
 end
+
+-- Cycle 47 (f104): a place's name said beside its code is accounted for when it is the navdata's name of that code
+-- (a navaid's, an airport's or words of it, its city), in any case; another name is asked; "the hlz vor" in lower
+-- case is the navaid of that ident near the traffic
+do
+  local _, ex = navscene({ "CRE AC301 A320 52.5 9.5 090 FL200 280", "CRE AC302 C172 52.3 10.4 300 3000 100" },
+    "a place's name beside its code")
+  if ex then
+    check_eq(ex("ac301 dct nienburg, NIE"), "ADDWPT AC301 NIE ; DIRECT AC301 NIE")
+    check_eq(ex("ac301 direct NIE nienburg"), "ADDWPT AC301 NIE ; DIRECT AC301 NIE")
+    check_eq(ex("ac302 heads to wolfsburg EDVE"), "DEST AC302 EDVE")
+    check_eq(ex("ac302 dest EDDH, hamburg"), "DEST AC302 EDDH")
+    check_eq(ex("where's the hlz vor"), "POS HLZ")
+    check_eq(ex("ac301 direct to celle NIE"),
+      "ASK I have ADDWPT AC301 NIE ; DIRECT AC301 NIE. What does 'celle' mean?")
+    asked(ex("ac302 is going to bremen EDVE"), "a name of another airport than the code's")
+  end
+end
