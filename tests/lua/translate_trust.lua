@@ -9491,3 +9491,25 @@ do
     asked(ex("ac302 is going to bremen EDVE"), "a name of another airport than the code's")
   end
 end
+
+-- Cycle 47 (f104): field phrasing of route commands ("orig of X is eddh", "X goes to eddv"), a wind typed in
+-- TrafScript's order after its position, a fix made with its name in lower case
+do
+  local _, ex = scene({ "CRE AC101 A320 52.0 4.0 090 FL300 280" })
+  check_eq(ex("wind at 51.9 4.1, 090 15"), "WIND 51.9 4.1 90 15")
+  check_eq(ex("wind at 51.9 4.1, 090 at 15"), "WIND 51.9 4.1 90 15")
+  asked(ex("wind at 51.9 4.1, 15 090"), "a speed before the direction is no wind typed")
+  asked(ex("wind at 51.9 4.1, 090 15 and ac101 climb fl310"), "a wind typed must end the request")
+  check_eq(ex("make a fix rotte at 51.95, 4.4"), "DEFWPT ROTTE 51.95 4.4")
+  check_eq(ex("make a fix here at 51.95, 4.4"), "ASK What should the waypoint be called, and where is it?")
+end
+do
+  local _, ex = navscene({ "CRE AC301 A320 52.5 9.5 090 FL200 280", "CRE AC302 C172 52.3 10.4 300 3000 100" },
+    "airport codes typed in lower case")
+  if ex then
+    check_eq(ex("orig of ac301 is eddh"), "ORIG AC301 EDDH")
+    check_eq(ex("ac302's orig is edve"), "ORIG AC302 EDVE")
+    check_eq(ex("ac302 goes to eddv"), "DEST AC302 EDDV")
+    asked(ex("ac302 goes to home"), "no airport after 'goes to'")
+  end
+end
