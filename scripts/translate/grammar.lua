@@ -2887,6 +2887,18 @@ function G:self_corrected()
           or (self.t[c].text == "make" and self:word(c + 1, "it") and self:quantities(c + 2, c + 3)[1] ~= nil)
         c = c + 1
       end
+      -- ("..., uhh just the hdg for now": "just/only the" and a kind of instruction ending the request, after a
+      -- pause with no marker, says what stands all the same)
+      local just_the = not marked and self:word(c, SC_ONLY) and self:word(c + 1, "the") and self.t[c + 2] ~= nil
+        and SC_KEPT[self.t[c + 2].text] ~= nil
+      if just_the and self:sc_kept_end(c + 3) <= #self.t then
+        -- (said with more after it, "..., just the spd for now, and hdg 100", what stands is unclear)
+        local e = self:sc_kept_end(c + 3)
+        while self.t[e] and self.t[e].kind ~= "punct" do e = e + 1 end
+        return self:need(string.format("What stands after '%s'? Please say the instruction again in full.",
+          (self:raw(c, e):gsub(" ([,.;:])", "%1"))))
+      end
+      marked = marked or just_the
     end
     -- ("insert SINCA... no wait, it's already there, add BURNY": the reason the instruction is taken back, a clause
     -- of at most six words opened by a pronoun of lexicon.self_correction_reason_openers and ending in a comma,
@@ -2926,8 +2938,7 @@ function G:self_corrected()
       end
       if self:word(c, SC_ONLY) and not self:intent_at(c + 1) then
         local kept = self:word(c + 1, "the") and SC_KEPT[self.t[c + 2] and self.t[c + 2].text or ""]
-        local e = c + 3
-        if self:word(e, "change instruction") then e = e + 1 end
+        local e = self:sc_kept_end(c + 3)
         -- the first name or value since the last instruction word, the start of what is said again
         local q = p + 1
         while q < b and not (self:has_ref(q, q + 1, "waypoint") or #self:quantities(q, q + 1) > 0) do q = q + 1 end
@@ -3030,6 +3041,15 @@ function G:self_corrected()
   end
 end
 
+-- The token after the words that may close "just the <kind>" from token e on ("change", "instruction", "for now",
+-- fillers and marks): e itself when none
+function G:sc_kept_end(e)
+  if self:word(e, "change instruction") then e = e + 1 end
+  if self:word(e, "for") and self:word(e + 1, "now") then e = e + 2 end
+  while self.t[e] and (self.t[e].filler or (self.t[e].kind == "punct" and self.t[e].text ~= ",")) do e = e + 1 end
+  return e
+end
+
 -- "maintain 280 knots until HUMPP... correction, until PAE", "via ALPHA, sorry, via BRAVO": a place, then a
 -- run of punctuation and correction words (lexicon.correction, lexicon.self_correction's markers) and the
 -- same word before another place: the first place is the one corrected, and it is taken back with its word
@@ -3058,6 +3078,34 @@ function G:places_corrected()
       end
       self.refs = refs
       return
+    end
+  end
+  -- "dest bremen? no hamburg EDDH", "orig rotterdam, sorry, EHAM": a place named (one to three words) straight
+  -- after a route field's word, then such a run, then a place said by its code (a name of up to two words before
+  -- it or none) or by its name ending the request: the first name and the run are taken back
+  for d = 1, #self.t - 1 do
+    for n = self:word(d, "dest destination orig origin") and 1 or 4, 3 do
+      local c, marked = d + 1 + n, false
+      while self.t[c] and (self.t[c].kind == "punct" or self.t[c].filler or SC_WORDS[self.t[c].text]
+          or PLACE_CORRECTION[self.t[c].text]) do
+        marked = marked or PLACE_CORRECTION[self.t[c].text] ~= nil
+        c = c + 1
+      end
+      local k = c
+      while marked and k < c + 2 and self.t[k] and self.t[k].kind == "word" and not starts[k] do k = k + 1 end
+      -- (or by a name of one or two words ending the request: "dest bremen? no hamburg")
+      local named = marked and not starts[k] and (next(self:place_codes(c, c + 1) or {})
+        and self:sc_kept_end(c + 1) > #self.t or next(self:place_codes(c, c + 2) or {}) and self:sc_kept_end(c + 2) > #self.t)
+      if marked and (starts[k] or named) and next(self:place_codes(d + 1, d + 1 + n) or {}) then
+        self:mark_used(d + 1, c)
+        for x = d + 1, c - 1 do self.noted[x] = true end
+        local refs = {}
+        for _, r in ipairs(self.refs) do
+          if r.b < d + 1 or r.b >= c then refs[#refs + 1] = r end
+        end
+        self.refs = refs
+        return
+      end
     end
   end
 end
@@ -4810,32 +4858,35 @@ function G:described_place(i)
   return nil
 end
 
+-- The codes the words [b, e) name in the navdata, as a set (a navaid's name, an airport's name or words of it, its
+-- city), or nil when a token there is no plain word (a value, an instruction word, a word with a meaning, an
+-- aircraft) or squawk has no navdata
+function G:place_codes(b, e)
+  local w = self.world
+  if not (w.navaids_named and w.airports_named and w.airports_of_city and w.airports_with_words) then return nil end
+  local words = {}
+  for k = b, e - 1 do
+    local t = self.t[k]
+    if not t or t.kind ~= "word" or not t.alpha or MEANING[t.text] or self.triggers[k] or self:has_ref(k, k + 1, "aircraft") then
+      return nil
+    end
+    words[#words + 1] = t.text
+  end
+  local name, codes = table.concat(words, " "), {}
+  for _, ids in ipairs({ w.navaids_named(name, 0, 0, 1e5), w.airports_named(name), w.airports_of_city(name),
+      w.airports_with_words(name) }) do
+    for _, id in ipairs(ids) do codes[id:upper()] = true end
+  end
+  return codes
+end
+
 -- "direct to nienburg NIE", "goes to braunschweig, EDVE", "EDDH hamburg": words of any case just before place ref r
 -- (commas and kinds of place between) or just after it, one to three of them, that are the navdata's name of r's
 -- code (a navaid's name, an airport's name, words of it, or its city) are marked in `inside`; any other name stays unexplained
 -- (asked: "direct to hannover NIE")
 function G:name_beside_code(r, inside)
-  local w = self.world
-  if not (w.navaids_named and w.airports_named and w.airports_of_city and w.airports_with_words) then return end
   local code = r.name:upper()
-  local function names(b, e)
-    local words = {}
-    for k = b, e - 1 do
-      local t = self.t[k]
-      if not t or t.kind ~= "word" or not t.alpha or MEANING[t.text] or self.triggers[k] or self:has_ref(k, k + 1, "aircraft") then
-        return false
-      end
-      words[#words + 1] = t.text
-    end
-    local name = table.concat(words, " ")
-    for _, ids in ipairs({ w.navaids_named(name, 0, 0, 1e5), w.airports_named(name), w.airports_of_city(name),
-        w.airports_with_words(name) }) do
-      for _, id in ipairs(ids) do
-        if id:upper() == code then return true end
-      end
-    end
-    return false
-  end
+  local function names(b, e) return (self:place_codes(b, e) or {})[code] ~= nil end
   local function between(k) return self.t[k] and (self.t[k].kind == "punct" or self:word(k, "@airport_nouns @navaid_kinds")) end
   local e = r.b
   while e > 1 and r.b - e < 2 and between(e - 1) do e = e - 1 end

@@ -251,7 +251,7 @@ function M.one_aircraft_list(parts, sim)
     local worded = not usage:find("%s") and part:find("^[%w_]+%s+%w")
     local instructs = usage:match("^%S+%s+acid") ~= nil
     if cmd == "DEL" or not (instructs or worded) then other = true end
-    if (instructs or worded) and not own then bare = bare or part end
+    if instructs and not own then bare = bare or part end
   end
   if count == 1 and bare and not other then return true end
   return false, count > 0 and bare or nil

@@ -603,9 +603,10 @@ return {
                       -- a verb of setting before the instruction said in place of the one taken back ("half
                       -- height one thousand... no, set zone half height to five hundred feet")
                       setting = { "set", "put", "change", "reset" },
-                      just_the = { ALT = { "descent", "descend", "climb", "altitude", "level", "levels" },
-                                   HDG = { "turn", "heading", "vector" }, SPD = { "speed", "slowdown", "mach" },
-                                   DIRECT = { "direct", "directs" }, VS = { "rate" } } },
+                      just_the = { ALT = { "descent", "descend", "climb", "altitude", "level", "levels", "alt" },
+                                   HDG = { "turn", "heading", "vector", "hdg" },
+                                   SPD = { "speed", "slowdown", "mach", "spd" },
+                                   DIRECT = { "direct", "directs", "dct" }, VS = { "rate", "vs" } } },
   -- the simulation itself, not an aircraft
   -- (an episode: one run of a learning environment; "env", "environment": the environment itself)
   -- (a replay: recorded traffic run again, in an analyst's words: "pause the replay", "remove X from the replay")

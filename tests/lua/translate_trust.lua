@@ -9513,3 +9513,25 @@ do
     asked(ex("ac302 goes to home"), "no airport after 'goes to'")
   end
 end
+
+-- Cycle 47 (f104): self-corrections and trailing comments: "just the <kind>" closing the request after a pause keeps
+-- the commands of that kind; said with more after it, it is asked; a place named after dest/orig, then a correction
+-- and another place, is the corrected one
+do
+  local _, ex = scene({ "CRE AC101 A320 52.0 4.0 090 FL300 280", "CRE AC202 B738 52.3 4.3 180 FL200 250",
+    "DEFWPT WP1 52.2 4.5" })
+  check_eq(ex("hdg ac101 to 200, then dct wp1 when abeam, uh just the hdg for now"), "HDG AC101 200")
+  check_eq(ex("ac101 fl280 and spd 250, just the spd"), "SPD AC101 250")
+  check_eq(ex("alt ac202 fl150, spd 220, um only the alt"), "ALT AC202 FL150")
+  check_eq(ex("ac101 fl280 and spd 250, just the spd for now, and hdg 100"),
+    "ASK What stands after 'just the spd for now'? Please say the instruction again in full.")
+end
+do
+  local _, ex = navscene({ "CRE AC301 A320 52.5 9.5 090 FL200 280", "CRE AC302 C172 52.3 10.4 300 3000 100" },
+    "a destination corrected by name")
+  if ex then
+    check_eq(ex("ac302 dest bremen? no hamburg"), "DEST AC302 EDDH")
+    check_eq(ex("ac302 orig hannover, sorry, EDVE"), "ORIG AC302 EDVE")
+    asked(ex("ac302 dest bremen? no hamburg and fl300"), "a correction with more after it")
+  end
+end
