@@ -194,7 +194,7 @@ local function know_all(v, seen)
       or v == lexicon.addressed_roles or v == lexicon.readback_heard or v == lexicon.nationless_registrations
       or v == lexicon.manner or v == lexicon.deadline_places or v == lexicon.held_value
       or v == lexicon.dictated_punctuation or v == lexicon.acknowledged or v == lexicon.said_whole or v == lexicon.heard_as
-      or v == lexicon.name_particles or v == lexicon.digit_homophones then
+      or v == lexicon.name_particles or v == lexicon.digit_homophones or v == lexicon.asides_alone then
     return
   end
   seen[v] = true
@@ -4858,6 +4858,31 @@ function G:described_place(i)
   return nil
 end
 
+-- lexicon.asides_alone by their first word, each as its words
+G.asides_alone = {}
+for _, p in ipairs(lexicon.asides_alone) do
+  local words = {}
+  for w in p:gmatch("%S+") do words[#words + 1] = w end
+  G.asides_alone[words[1]] = G.asides_alone[words[1]] or {}
+  table.insert(G.asides_alone[words[1]], words)
+end
+-- "ist gut, pause", "tui3k climb fl350, alles klar": an aside of lexicon.asides_alone starting at token i, standing
+-- alone in its clause (the request's edge or punctuation before and after it, fillers between), is marked in `inside`
+function G:aside_alone(i, inside)
+  local function edge(k, step)
+    while self.t[k] and self.t[k].filler do k = k + step end
+    return self.t[k] == nil or self.t[k].kind == "punct"
+  end
+  for _, p in ipairs(G.asides_alone[self.t[i].text] or {}) do
+    local ok = true
+    for x = 2, #p do ok = ok and self.t[i + x - 1] ~= nil and self.t[i + x - 1].text == p[x] end
+    if ok and edge(i - 1, -1) and edge(i + #p, 1) then
+      for x = i, i + #p - 1 do inside[x] = true end
+      return
+    end
+  end
+end
+
 -- The codes the words [b, e) name in the navdata, as a set (a navaid's name, an airport's name or words of it, its
 -- city), or nil when a token there is no plain word (a value, an instruction word, a word with a meaning, an
 -- aircraft) or squawk has no navdata
@@ -5013,6 +5038,7 @@ function G:explained_spans(issued, kinds)
       for x = 2, #p do ok = ok and self.t[i + x - 1] ~= nil and self.t[i + x - 1].text == p[x] end
       if ok then for x = i, i + #p - 1 do inside[x] = true end end
     end
+    self:aside_alone(i, inside)
   end
   -- Comments and purposes that name no instruction, value or place, to the end of their clause: a
   -- clause after punctuation that opens with its own subject ("Delete N123AB, we don't need it for this

@@ -1355,4 +1355,10 @@ return {
   -- units after "step N" that make it the simulation's time step, never a protocol's step label (set)
   step_units = { s = true, sec = true, secs = true, second = true, seconds = true, ms = true, hz = true,
     min = true, mins = true, minute = true, minutes = true },
+  -- short German and Dutch asides of acknowledgement ("ist gut, ...", "..., alles klar", "goed zo"): accounted for
+  -- only where one stands alone in its clause (the request's edge or punctuation on both sides, fillers between);
+  -- after a value ("hdg 180 ist gut, just ...") it says the value is fine, which is asked
+  asides_alone = { "ist gut", "alles gut", "alles klar", "passt", "passt so", "sehr gut", "na gut", "gut", "prima",
+    "genau", "jawohl", "vielen dank", "danke schon", "dankeschon", "is goed", "goed zo", "in orde", "mooi", "oke",
+    "klopt", "okidoki" },
 }

@@ -9535,3 +9535,16 @@ do
     asked(ex("ac302 dest bremen? no hamburg and fl300"), "a correction with more after it")
   end
 end
+
+-- Cycle 47 (f104): short German and Dutch asides of acknowledgement are accounted for alone in their clause; after
+-- a value ("hdg 180 ist gut") they say the value is fine, which is asked
+do
+  local _, ex = scene({ "CRE AC101 A320 52.0 4.0 090 FL300 280" })
+  check_eq(ex("alles klar, ac101 descend fl250"), "ALT AC101 FL250")
+  check_eq(ex("ac101 descend fl250, ist gut"), "ALT AC101 FL250")
+  check_eq(ex("prima. ac101 hdg 120"), "HDG AC101 120")
+  check_eq(ex("ac101 spd 250, is goed"), "SPD AC101 250")
+  check_eq(ex("ac101, hdg 120 ist gut, just descend fl250"),
+    "ASK I have HDG AC101 120 ; ALT AC101 FL250. What does 'ist' mean?")
+  asked(ex("ac101 descend fl250 gut"), "an aside straight after a value")
+end
