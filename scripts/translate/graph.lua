@@ -230,10 +230,12 @@ function M.command_clauses(text)
 end
 
 -- A list of command clauses (M.command_clauses) said as one aircraft's instructions ("alt klm12 fl240, spd 260, dct
--- sugol"): true when every clause's command instructs an aircraft (its first argument) and none deletes it, exactly
--- one flying aircraft is named in the request, and a clause names none; such a list is read whole as English, where
--- each clause takes that aircraft. Otherwise false, and the first clause instructing an aircraft that names none
--- when the request names one ("del klm12, spd 250"), which is asked, never given to an aircraft left alone.
+-- sugol"): true when every clause's command instructs an aircraft (its first argument), none creating, moving or
+-- deleting one, exactly one flying aircraft is named in the request, and a clause names none; such a list is read
+-- whole as English, where each clause takes that aircraft. Otherwise false, and the first clause instructing a flying
+-- aircraft that names none when the request names one ("del klm12, spd 250"), which is asked, never given to an
+-- aircraft left alone.
+local PLACING = { CRE = true, CRECONFS = true, MOVE = true, DEL = true }  -- (commands that make, put or remove one)
 function M.one_aircraft_list(parts, sim)
   local named, count, bare, other = {}, 0, nil, false
   for _, part in ipairs(parts) do
@@ -250,8 +252,8 @@ function M.one_aircraft_list(parts, sim)
     -- (a command of no argument with words after it, "continue heading for dlh4", is English, no such command)
     local worded = not usage:find("%s") and part:find("^[%w_]+%s+%w")
     local instructs = usage:match("^%S+%s+acid") ~= nil
-    if cmd == "DEL" or not (instructs or worded) then other = true end
-    if instructs and not own then bare = bare or part end
+    if PLACING[cmd] or not (instructs or worded) then other = true end
+    if instructs and not own and not (cmd == "CRE" or cmd == "CRECONFS") then bare = bare or part end
   end
   if count == 1 and bare and not other then return true end
   return false, count > 0 and bare or nil
