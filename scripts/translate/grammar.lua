@@ -3094,9 +3094,9 @@ function G:places_corrected()
       local k = c
       while marked and k < c + 2 and self.t[k] and self.t[k].kind == "word" and not starts[k] do k = k + 1 end
       -- (or by a name of one or two words ending the request: "dest bremen? no hamburg")
-      local named = marked and not starts[k] and (next(self:place_codes(c, c + 1) or {})
-        and self:sc_kept_end(c + 1) > #self.t or next(self:place_codes(c, c + 2) or {}) and self:sc_kept_end(c + 2) > #self.t)
-      if marked and (starts[k] or named) and next(self:place_codes(d + 1, d + 1 + n) or {}) then
+      local named = marked and not starts[k] and (self:sc_kept_end(c + 1) > #self.t and self:place_named(c, c + 1)
+        or self:sc_kept_end(c + 2) > #self.t and self:place_named(c, c + 2))
+      if marked and (starts[k] or named) and self:place_named(d + 1, d + 1 + n) then
         self:mark_used(d + 1, c)
         for x = d + 1, c - 1 do self.noted[x] = true end
         local refs = {}
@@ -4883,48 +4883,52 @@ function G:aside_alone(i, inside)
   end
 end
 
--- The codes the words [b, e) name in the navdata, as a set (a navaid's name, an airport's name or words of it, its
--- city), or nil when a token there is no plain word (a value, an instruction word, a word with a meaning, an
--- aircraft) or squawk has no navdata
-function G:place_codes(b, e)
+-- True when the words [b, e) name a place of the navdata (a navaid's name, an airport's name or words of it, its
+-- city): one of code `code` when given, any when nil; false when a token there is no plain word (a value, an
+-- instruction word, a word with a meaning or English squawk knows, an aircraft) or squawk has no navdata. The cheaper
+-- look-ups go first.
+function G:place_named(b, e, code)
   local w = self.world
-  if not (w.navaids_named and w.airports_named and w.airports_of_city and w.airports_with_words) then return nil end
+  if not (w.navaids_named and w.airports_named and w.airports_of_city and w.airports_with_words) then return false end
   local words = {}
   for k = b, e - 1 do
     local t = self.t[k]
-    if not t or t.kind ~= "word" or not t.alpha or MEANING[t.text] or self.triggers[k] or self:has_ref(k, k + 1, "aircraft") then
-      return nil
+    if not t or t.kind ~= "word" or not t.alpha or MEANING[t.text] or self.triggers[k] or known_word(t.text)
+        or self:has_ref(k, k + 1, "aircraft") then
+      return false
     end
     words[#words + 1] = t.text
   end
-  local name, codes = table.concat(words, " "), {}
-  for _, ids in ipairs({ w.navaids_named(name, 0, 0, 1e5), w.airports_named(name), w.airports_of_city(name),
-      w.airports_with_words(name) }) do
-    for _, id in ipairs(ids) do codes[id:upper()] = true end
+  local name = table.concat(words, " ")
+  for _, by in ipairs({ function() return w.navaids_named(name, 0, 0, 1e5) end, w.airports_named, w.airports_of_city,
+      w.airports_with_words }) do
+    for _, id in ipairs(by(name)) do
+      if not code or id:upper() == code then return true end
+    end
   end
-  return codes
+  return false
 end
 
 -- "direct to nienburg NIE", "goes to braunschweig, EDVE", "EDDH hamburg": words of any case just before place ref r
--- (commas and kinds of place between) or just after it, one to three of them, that are the navdata's name of r's
+-- (commas and kinds of place between) or just after it, one or two of them, that are the navdata's name of r's
 -- code (a navaid's name, an airport's name, words of it, or its city) are marked in `inside`; any other name stays unexplained
 -- (asked: "direct to hannover NIE")
 function G:name_beside_code(r, inside)
   local code = r.name:upper()
-  local function names(b, e) return (self:place_codes(b, e) or {})[code] ~= nil end
+  local function names(b, e) return self:place_named(b, e, code) end
   local function between(k) return self.t[k] and (self.t[k].kind == "punct" or self:word(k, "@airport_nouns @navaid_kinds")) end
   local e = r.b
   while e > 1 and r.b - e < 2 and between(e - 1) do e = e - 1 end
-  for n = 3, 1, -1 do
-    if e - n >= 1 and names(e - n, e) then
+  for n = 2, 1, -1 do
+    if e - n >= 1 and not inside[e - 1] and names(e - n, e) then
       for k = e - n, r.b - 1 do inside[k] = true end
       break
     end
   end
   local b = r.e
   while b < r.e + 2 and between(b) and self.t[b].text ~= "." do b = b + 1 end
-  for n = 3, 1, -1 do
-    if names(b, b + n) then
+  for n = 2, 1, -1 do
+    if not inside[b] and names(b, b + n) then
       for k = r.e, b + n - 1 do inside[k] = true end
       break
     end
