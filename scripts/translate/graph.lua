@@ -230,12 +230,13 @@ function M.command_clauses(text)
 end
 
 -- A list of command clauses (M.command_clauses) said as one aircraft's instructions ("alt klm12 fl240, spd 260, dct
--- sugol"): true when every clause's command instructs an aircraft (its first argument), none creating, moving or
--- deleting one, exactly one flying aircraft is named in the request, and a clause names none; such a list is read
+-- sugol"): true when every clause's command instructs an aircraft (its first argument), none creating or deleting
+-- one, exactly one flying aircraft is named in the request, and a clause names none; such a list is read
 -- whole as English, where each clause takes that aircraft. Otherwise false, and the first clause instructing a flying
 -- aircraft that names none when the request names one ("del klm12, spd 250"), which is asked, never given to an
 -- aircraft left alone.
-local PLACING = { CRE = true, CRECONFS = true, MOVE = true, DEL = true }  -- (commands that make, put or remove one)
+-- (commands that make or remove one; a move's fields said after it, "move X to LAM, heading 270", are the move's)
+local PLACING = { CRE = true, CRECONFS = true, DEL = true }
 function M.one_aircraft_list(parts, sim)
   local named, count, bare, other = {}, 0, nil, false
   for _, part in ipairs(parts) do

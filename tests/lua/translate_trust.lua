@@ -9470,7 +9470,9 @@ do
   check_eq(ex("atspd ac202 230 and alt fl120"), "ATSPD ac202 230 alt ac202 fl120")
   check_eq(ex("alt ac101 fl280, spd ac202 240, hdg 100"), "ASK Which aircraft is 'hdg 100' for? Please give its callsign.")
   check_eq(ex("del ac101, spd 250"), "ASK Which aircraft is 'spd 250' for? Please give its callsign.")
-  check_eq(ex("move ac101 52.1 4.1, alt fl100"), "ASK Which aircraft is 'alt fl100' for? Please give its callsign.")
+  check_eq(ex("move ac101 52.1 4.1, hdg 100"), "MOVE AC101 52.1 4.1 30000 100")
+  check_eq(ex("cre ac303 a320 52.5 4.5 090 fl200 250, hold, spd ac101 250, hdg 100"),
+    "ASK Which aircraft is 'hdg 100' for? Please give its callsign.")
   asked(ex("hold, spd 250"), "no aircraft named in the list")
   check_eq(ex("seed 7, mcre 20, ff 10 min"), "SEED 7 ; MCRE 20 ; FF 600")
 end
