@@ -194,7 +194,7 @@ local function know_all(v, seen)
       or v == lexicon.addressed_roles or v == lexicon.readback_heard or v == lexicon.nationless_registrations
       or v == lexicon.manner or v == lexicon.deadline_places or v == lexicon.held_value
       or v == lexicon.dictated_punctuation or v == lexicon.acknowledged or v == lexicon.said_whole or v == lexicon.heard_as
-      or v == lexicon.name_particles or v == lexicon.digit_homophones then
+      or v == lexicon.name_particles or v == lexicon.digit_homophones or v == lexicon.asides_alone then
     return
   end
   seen[v] = true
@@ -2979,6 +2979,18 @@ function G:self_corrected()
           or (self.t[c].text == "make" and self:word(c + 1, "it") and self:quantities(c + 2, c + 3)[1] ~= nil)
         c = c + 1
       end
+      -- ("..., uhh just the hdg for now": "just/only the" and a kind of instruction ending the request, after a
+      -- pause with no marker, says what stands all the same)
+      local just_the = not marked and self:word(c, SC_ONLY) and self:word(c + 1, "the") and self.t[c + 2] ~= nil
+        and SC_KEPT[self.t[c + 2].text] ~= nil
+      if just_the and self:sc_kept_end(c + 3) <= #self.t then
+        -- (said with more after it, "..., just the spd for now, and hdg 100", what stands is unclear)
+        local e = self:sc_kept_end(c + 3)
+        while self.t[e] and self.t[e].kind ~= "punct" do e = e + 1 end
+        return self:need(string.format("What stands after '%s'? Please say the instruction again in full.",
+          (self:raw(c, e):gsub(" ([,.;:])", "%1"))))
+      end
+      marked = marked or just_the
     end
     -- ("insert SINCA... no wait, it's already there, add BURNY": the reason the instruction is taken back, a clause
     -- of at most six words opened by a pronoun of lexicon.self_correction_reason_openers and ending in a comma,
@@ -3018,8 +3030,7 @@ function G:self_corrected()
       end
       if self:word(c, SC_ONLY) and not self:intent_at(c + 1) then
         local kept = self:word(c + 1, "the") and SC_KEPT[self.t[c + 2] and self.t[c + 2].text or ""]
-        local e = c + 3
-        if self:word(e, "change instruction") then e = e + 1 end
+        local e = self:sc_kept_end(c + 3)
         -- the first name or value since the last instruction word, the start of what is said again
         local q = p + 1
         while q < b and not (self:has_ref(q, q + 1, "waypoint") or #self:quantities(q, q + 1) > 0) do q = q + 1 end
@@ -3122,6 +3133,15 @@ function G:self_corrected()
   end
 end
 
+-- The token after the words that may close "just the <kind>" from token e on ("change", "instruction", "for now",
+-- fillers and marks): e itself when none
+function G:sc_kept_end(e)
+  if self:word(e, "change instruction") then e = e + 1 end
+  if self:word(e, "for") and self:word(e + 1, "now") then e = e + 2 end
+  while self.t[e] and (self.t[e].filler or (self.t[e].kind == "punct" and self.t[e].text ~= ",")) do e = e + 1 end
+  return e
+end
+
 -- "maintain 280 knots until HUMPP... correction, until PAE", "via ALPHA, sorry, via BRAVO": a place, then a
 -- run of punctuation and correction words (lexicon.correction, lexicon.self_correction's markers) and the
 -- same word before another place: the first place is the one corrected, and it is taken back with its word
@@ -3150,6 +3170,34 @@ function G:places_corrected()
       end
       self.refs = refs
       return
+    end
+  end
+  -- "dest bremen? no hamburg EDDH", "orig rotterdam, sorry, EHAM": a place named (one to three words) straight
+  -- after a route field's word, then such a run, then a place said by its code (a name of up to two words before
+  -- it or none) or by its name ending the request: the first name and the run are taken back
+  for d = 1, #self.t - 1 do
+    for n = self:word(d, "dest destination orig origin") and 1 or 4, 3 do
+      local c, marked = d + 1 + n, false
+      while self.t[c] and (self.t[c].kind == "punct" or self.t[c].filler or SC_WORDS[self.t[c].text]
+          or PLACE_CORRECTION[self.t[c].text]) do
+        marked = marked or PLACE_CORRECTION[self.t[c].text] ~= nil
+        c = c + 1
+      end
+      local k = c
+      while marked and k < c + 2 and self.t[k] and self.t[k].kind == "word" and not starts[k] do k = k + 1 end
+      -- (or by a name of one or two words ending the request: "dest bremen? no hamburg")
+      local named = marked and not starts[k] and (self:sc_kept_end(c + 1) > #self.t and self:place_named(c, c + 1)
+        or self:sc_kept_end(c + 2) > #self.t and self:place_named(c, c + 2))
+      if marked and (starts[k] or named) and self:place_named(d + 1, d + 1 + n) then
+        self:mark_used(d + 1, c)
+        for x = d + 1, c - 1 do self.noted[x] = true end
+        local refs = {}
+        for _, r in ipairs(self.refs) do
+          if r.b < d + 1 or r.b >= c then refs[#refs + 1] = r end
+        end
+        self.refs = refs
+        return
+      end
     end
   end
 end
@@ -4955,6 +5003,83 @@ function G:described_place(i)
   return nil
 end
 
+-- lexicon.asides_alone by their first word, each as its words
+G.asides_alone = {}
+for _, p in ipairs(lexicon.asides_alone) do
+  local words = {}
+  for w in p:gmatch("%S+") do words[#words + 1] = w end
+  G.asides_alone[words[1]] = G.asides_alone[words[1]] or {}
+  table.insert(G.asides_alone[words[1]], words)
+end
+-- "ist gut, pause", "tui3k climb fl350, alles klar": an aside of lexicon.asides_alone starting at token i, standing
+-- alone in its clause (the request's edge or punctuation before and after it, fillers between), is marked in `inside`
+function G:aside_alone(i, inside)
+  local function edge(k, step)
+    while self.t[k] and self.t[k].filler do k = k + step end
+    return self.t[k] == nil or self.t[k].kind == "punct"
+  end
+  for _, p in ipairs(G.asides_alone[self.t[i].text] or {}) do
+    local ok = true
+    for x = 2, #p do ok = ok and self.t[i + x - 1] ~= nil and self.t[i + x - 1].text == p[x] end
+    if ok and edge(i - 1, -1) and edge(i + #p, 1) then
+      for x = i, i + #p - 1 do inside[x] = true end
+      return
+    end
+  end
+end
+
+-- True when the words [b, e) name a place of the navdata (a navaid's name, an airport's name or words of it, its
+-- city): one of code `code` when given, any when nil; false when a token there is no plain word (a value, an
+-- instruction word, a word with a meaning or English squawk knows, an aircraft) or squawk has no navdata. The cheaper
+-- look-ups go first.
+function G:place_named(b, e, code)
+  local w = self.world
+  if not (w.navaids_named and w.airports_named and w.airports_of_city and w.airports_with_words) then return false end
+  local words = {}
+  for k = b, e - 1 do
+    local t = self.t[k]
+    if not t or t.kind ~= "word" or not t.alpha or MEANING[t.text] or self.triggers[k] or known_word(t.text)
+        or self:has_ref(k, k + 1, "aircraft") then
+      return false
+    end
+    words[#words + 1] = t.text
+  end
+  local name = table.concat(words, " ")
+  for _, by in ipairs({ function() return w.navaids_named(name, 0, 0, 1e5) end, w.airports_named, w.airports_of_city,
+      w.airports_with_words }) do
+    for _, id in ipairs(by(name)) do
+      if not code or id:upper() == code then return true end
+    end
+  end
+  return false
+end
+
+-- "direct to nienburg NIE", "goes to braunschweig, EDVE", "EDDH hamburg": words of any case just before place ref r
+-- (commas and kinds of place between) or just after it, one or two of them, that are the navdata's name of r's
+-- code (a navaid's name, an airport's name, words of it, or its city) are marked in `inside`; any other name stays unexplained
+-- (asked: "direct to hannover NIE")
+function G:name_beside_code(r, inside)
+  local code = r.name:upper()
+  local function names(b, e) return self:place_named(b, e, code) end
+  local function between(k) return self.t[k] and (self.t[k].kind == "punct" or self:word(k, "@airport_nouns @navaid_kinds")) end
+  local e = r.b
+  while e > 1 and r.b - e < 2 and between(e - 1) do e = e - 1 end
+  for n = 2, 1, -1 do
+    if e - n >= 1 and not inside[e - 1] and names(e - n, e) then
+      for k = e - n, r.b - 1 do inside[k] = true end
+      break
+    end
+  end
+  local b = r.e
+  while b < r.e + 2 and between(b) and self.t[b].text ~= "." do b = b + 1 end
+  for n = 2, 1, -1 do
+    if not inside[b] and names(b, b + n) then
+      for k = r.e, b + n - 1 do inside[k] = true end
+      break
+    end
+  end
+end
+
 -- The positions of tokens the parse explains beyond the words themselves: callsigns, places, types and
 -- values; a place's name beside its issued code; the name "instead of" replaces or a direct-to passes
 -- (`kinds`: G:issued); an ATC unit's place; comments and purposes; courtesy and value phrases.
@@ -4980,6 +5105,7 @@ function G:explained_spans(issued, kinds)
       k = r.e
       if self.t[k] and self.t[k].kind == "punct" then k = k + 1 end
       if self.t[k] and self.t[k].kind == "word" and self.t[k].raw:match("^%u") then inside[k] = true end
+      self:name_beside_code(r, inside)
       -- ("at the RIX VOR near Riga": the city it lies by, a name the navdata gives a city's airport)
       local n = self:word(r.e, "@navaid_kinds @airport_nouns") and r.e + 1 or r.e
       local city = self.t[n + 1] and self.t[n + 1].kind == "word" and self.t[n + 1].raw:match("^%u") and self.t[n + 1].text
@@ -5067,6 +5193,7 @@ function G:explained_spans(issued, kinds)
       for x = 2, #p do ok = ok and self.t[i + x - 1] ~= nil and self.t[i + x - 1].text == p[x] end
       if ok then for x = i, i + #p - 1 do inside[x] = true end end
     end
+    self:aside_alone(i, inside)
   end
   -- Comments and purposes that name no instruction, value or place, to the end of their clause: a
   -- clause after punctuation that opens with its own subject ("Delete N123AB, we don't need it for this
@@ -7022,6 +7149,33 @@ local function spelled_airports(text, world)
 end
 local function typed_places(text, world)
   if not world.place_known then return text end
+  local ids = {}
+  for _, a in ipairs(world.aircraft) do ids[(a.id or ""):lower()] = true end
+  local function near(w)
+    local lat, lon = world.place_known(w:upper())
+    if not lat then return false end
+    for _, a in ipairs(world.aircraft) do
+      local dlat, dlon = lat - (a.lat or 0), (lon - (a.lon or 0)) * math.cos(math.rad(lat))
+      if a.lat and 60 * math.sqrt(dlat * dlat + dlon * dlon) <= TYPED_PLACE_NM then return true end
+    end
+    return #world.aircraft == 0
+  end
+  -- ("where is the hlz vor": an ident of two to five letters in lower case straight before a kind of navaid,
+  -- lexicon.navaid_types, of a place near the traffic, is that place)
+  local lower = text:lower()
+  if lower:find("vor", 1, true) or lower:find("ndb", 1, true) or lower:find("dme", 1, true) then
+    local out, from, prev = {}, 1, nil  -- (prev: the word before, {b, e, text})
+    for b, w, e in text:gmatch("()(%a+)()") do
+      if prev and lexicon.navaid_types[w:lower()] and text:sub(prev[2], b - 1):match("^%s+$")
+          and prev[3]:match("^%l%l%l?%l?%l?$") and not known_word(prev[3]) and not ids[prev[3]]
+          and not lexicon.shorthand[prev[3]] and near(prev[3]) then
+        out[#out + 1] = text:sub(from, prev[1] - 1) .. prev[3]:upper()
+        from = prev[2]
+      end
+      prev = { b, e, w }
+    end
+    text = table.concat(out) .. text:sub(from)
+  end
   -- (a name is read only after a word of PLACE_SLOTS: with none said, the words stand as they are)
   local padded = " " .. text:lower() .. " "
   local slots = padded:find(" where", 1, true) ~= nil
@@ -7038,17 +7192,6 @@ local function typed_places(text, world)
     return text:sub(1, e)
   end
   local capitals = text:find("%u") ~= nil
-  local ids = {}
-  for _, a in ipairs(world.aircraft) do ids[(a.id or ""):lower()] = true end
-  local function near(w)
-    local lat, lon = world.place_known(w:upper())
-    if not lat then return false end
-    for _, a in ipairs(world.aircraft) do
-      local dlat, dlon = lat - (a.lat or 0), (lon - (a.lon or 0)) * math.cos(math.rad(lat))
-      if a.lat and 60 * math.sqrt(dlat * dlat + dlon * dlon) <= TYPED_PLACE_NM then return true end
-    end
-    return #world.aircraft == 0
-  end
   local routed = {}
   for _, a in ipairs(world.aircraft) do
     for _, r in ipairs(a.route or {}) do routed[r:lower()] = true end

@@ -229,6 +229,37 @@ function M.command_clauses(text)
   return #parts >= 2 and parts or nil
 end
 
+-- A list of command clauses (M.command_clauses) said as one aircraft's instructions ("alt klm12 fl240, spd 260, dct
+-- sugol"): true when every clause's command instructs an aircraft (its first argument), none creating or deleting
+-- one, exactly one flying aircraft is named in the request, and a clause names none; such a list is read
+-- whole as English, where each clause takes that aircraft. Otherwise false, and the first clause instructing a flying
+-- aircraft that names none when the request names one ("del klm12, spd 250"), which is asked, never given to an
+-- aircraft left alone.
+-- (commands that make or remove one; a move's fields said after it, "move X to LAM, heading 270", are the move's)
+local PLACING = { CRE = true, CRECONFS = true, DEL = true }
+function M.one_aircraft_list(parts, sim)
+  local named, count, bare, other = {}, 0, nil, false
+  for _, part in ipairs(parts) do
+    local own = false
+    for w in part:gmatch("[%w]+") do
+      local id = #w > 2 and w:find("%d") and sim:get(w) and w:upper()
+      if id then
+        own = true
+        if not named[id] then named[id], count = true, count + 1 end
+      end
+    end
+    local cmd = nodes.canonical_name(part:match("^[%w_]+"))
+    local usage = nodes.usage_of(cmd) or ""
+    -- (a command of no argument with words after it, "continue heading for dlh4", is English, no such command)
+    local worded = not usage:find("%s") and part:find("^[%w_]+%s+%w")
+    local instructs = usage:match("^%S+%s+acid") ~= nil
+    if PLACING[cmd] or not (instructs or worded) then other = true end
+    if instructs and not own and not (cmd == "CRE" or cmd == "CRECONFS") then bare = bare or part end
+  end
+  if count == 1 and bare and not other then return true end
+  return false, count > 0 and bare or nil
+end
+
 -- The simulator a request is translated against: opts.sim, else a new one after opts.setup's commands; and
 -- notes naming the setup lines that did not run.
 local function simulator(opts)
@@ -246,6 +277,13 @@ function M.translate(text, opts)
   -- a list of command clauses: each translated on the state the ones before it leave (the setup's traffic
   -- too: "pause, then move IBE32 to ...")
   local parts = not opts.in_list and M.command_clauses(text)
+  local whole, bare = false, nil
+  if parts then whole, bare = M.one_aircraft_list(parts, simulator(opts)) end
+  if whole then parts = nil end
+  if bare then
+    local q = string.format("Which aircraft is '%s' for? Please give its callsign.", bare)
+    return { ask = q, trace = { { node = "list", said = "asks: " .. q } }, mode = opts.mode or "offline" }
+  end
   if parts then
     local scratch = simulator(opts):copy()
     local all, trace, seen = {}, {}, {}

@@ -2488,6 +2488,20 @@ return function(H, f, compass)
         end
       end
     end
+    if not name then
+      -- ("make a fix delft at 52.01, 4.36": in lower case, a word no English squawk knows straight after the noun and
+      -- straight before "at" and the position)
+      for k = s.trig, s.e - 2 do
+        local n = self.t[k + 1]
+        if self:word(k, "@waypoint_nouns") and n.kind == "word" and n.raw:match("^%a[%a%d]+$") and #n.raw <= 10
+            and not n.keyword and not self:known_word(k + 1) and self:word(k + 2, "at")
+            and #self:quantities(k + 3, k + 4) > 0 then
+          name = n.raw:upper()
+          self:explain(k + 1, k + 2)
+          break
+        end
+      end
+    end
     -- (a position corrected, "at 34.5 S 58.8 W, no, at -34.50 -58.83": the one after the last correction)
     local from = s.b
     for k = s.trig, s.e - 1 do
@@ -2545,13 +2559,24 @@ return function(H, f, compass)
     return code
   end
   -- "orig eidw", "dest: einn", "destination to eham": an airport's ICAO code typed in lower case straight
-  -- after the instruction word ("to", "from", "is", "as" or punctuation between or not): a word of four
+  -- after the instruction word ("to", "from", "is", "as", "of", "for", punctuation or the aircraft between or not:
+  -- "orig of tra631 is ehrd"): a word of four
   -- letters, no English squawk knows, that names an open airport of the navdata (upper-case codes are
   -- names already). Marked used; nil when none.
   local function typed_airport(self, s)
     local class = self.world.airport_class
     local k = s.trig + 1
-    while k < s.e and (self:word(k, "to from is as") or self.t[k].kind == "punct") do k = k + 1 end
+    -- (the field's aircraft between, "orig of tra631 is ehrd", "origin tra631 ehrd")
+    while k < s.e do
+      local r = self:refs_in(k, k + 1, "aircraft")[1]
+      if r and r.b == k then
+        k = r.e
+      elseif self:word(k, "to from is as of for") or self.t[k].kind == "punct" then
+        k = k + 1
+      else
+        break
+      end
+    end
     local t = self.t[k]
     if not class or k >= s.e or t.kind ~= "word" or not t.raw:match("^%l%l%l%l$") or self.u:used(k)
         or self:known_word(k) then
@@ -3192,6 +3217,16 @@ return function(H, f, compass)
       and #(dir.number.digits or "") == 3 and dir.value <= 360 and self:word(dir.e, "at") and spd.b == dir.e + 1
       and spd.value > 0 and spd.value <= 200
   end
+  -- True when quantities dir and spd are a wind typed in TrafScript's order, direction then speed, ending the request
+  -- ("270 30", "270, 30"): three typed digits up to 360, then a bare speed up to 200 knots straight after
+  function m:wind_typed(dir, spd)
+    local gap = self.t[dir.e] and self.t[dir.e].kind == "punct" and self.t[dir.e].text == "," and 1 or 0
+    local e = spd.e
+    while self.t[e] and (self.t[e].kind == "punct" or self.t[e].filler) do e = e + 1 end
+    return dir.kind == "plain" and spd.kind == "plain" and dir.number ~= nil and dir.number.typed
+      and spd.number ~= nil and spd.number.typed and #(dir.number.digits or "") == 3 and dir.value <= 360
+      and spd.b == dir.e + gap and spd.value > 0 and spd.value <= 200 and e > #self.t
+  end
   -- WIND lat lon [alt] dir spd: where the wind blows from ("from 270", or the heading said) and its speed
   function m:wind(s)
     local qs = self:quantities(s.b, s.e)
@@ -3200,8 +3235,11 @@ return function(H, f, compass)
     if place then lat, lon = place, "" end
     if not lat or not lon then return self:need("Where should the wind be? Please give a latitude and longitude.") end
     local alt, dir, spd
-    for _, q in ipairs(qs) do
+    for k, q in ipairs(qs) do
       if q.kind == "alt" and not alt then alt = self:take(q) end
+      if not dir and not spd and qs[k + 1] and self:wind_typed(q, qs[k + 1]) then
+        dir, spd = self:take(q), self:take(qs[k + 1])
+      end
       if q.kind == "speed" and not spd then spd = self:take(q) end
       -- (the direction said after "from", after "wind of", or straight before "at" and the speed: "270 at 40 kt",
       -- "270 at 40" as a wind is reported)

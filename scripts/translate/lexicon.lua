@@ -615,9 +615,10 @@ return {
                       -- a verb of setting before the instruction said in place of the one taken back ("half
                       -- height one thousand... no, set zone half height to five hundred feet")
                       setting = { "set", "put", "change", "reset" },
-                      just_the = { ALT = { "descent", "descend", "climb", "altitude", "level", "levels" },
-                                   HDG = { "turn", "heading", "vector" }, SPD = { "speed", "slowdown", "mach" },
-                                   DIRECT = { "direct", "directs" }, VS = { "rate" } } },
+                      just_the = { ALT = { "descent", "descend", "climb", "altitude", "level", "levels", "alt" },
+                                   HDG = { "turn", "heading", "vector", "hdg" },
+                                   SPD = { "speed", "slowdown", "mach", "spd" },
+                                   DIRECT = { "direct", "directs", "dct" }, VS = { "rate", "vs" } } },
   -- the simulation itself, not an aircraft
   -- (an episode: one run of a learning environment; "env", "environment": the environment itself)
   -- (a replay: recorded traffic run again, in an analyst's words: "pause the replay", "remove X from the replay")
@@ -1436,4 +1437,10 @@ return {
   -- units after "step N" that make it the simulation's time step, never a protocol's step label (set)
   step_units = { s = true, sec = true, secs = true, second = true, seconds = true, ms = true, hz = true,
     min = true, mins = true, minute = true, minutes = true },
+  -- short German and Dutch asides of acknowledgement ("ist gut, ...", "..., alles klar", "goed zo"): accounted for
+  -- only where one stands alone in its clause (the request's edge or punctuation on both sides, fillers between);
+  -- after a value ("hdg 180 ist gut, just ...") it says the value is fine, which is asked
+  asides_alone = { "ist gut", "alles gut", "alles klar", "passt", "passt so", "sehr gut", "na gut", "gut", "prima",
+    "genau", "jawohl", "vielen dank", "danke schon", "dankeschon", "is goed", "goed zo", "in orde", "mooi", "oke",
+    "klopt", "okidoki" },
 }

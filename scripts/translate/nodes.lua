@@ -79,6 +79,7 @@ local function usage_of(name)
   end
   return usages[name] or name
 end
+M.usage_of = usage_of
 
 -- One line per aircraft: what the LLM needs to fill relative values.
 function M.state_lines(sim)
@@ -354,19 +355,25 @@ end
 -- A conditional's command typed without the aircraft ("atalt ana257 fl080
 -- spd 210") gets the condition's aircraft ("... SPD ANA257 210") when only
 -- that makes it parse; otherwise the line c unchanged (a carried command
--- that parses neither way is then asked about in M.typed). name: c's
+-- that parses neither way is then asked about in M.typed), less a link word
+-- ("then", "and") said before a carried command that parses. name: c's
 -- registry name.
 local NESTED_AT = { ATALT = 4, ATSPD = 4, ATDIST = 5 }
+local LINKED = { ["then"] = true, ["and"] = true }
 function M.complete_nested(c, name, scratch)
   local k = NESTED_AT[name]
   if not k then return c end
   local w = {}
   for x in c:gmatch("[^%s,]+") do w[#w + 1] = x end
   if name == "ATDIST" and tonumber(w[3]) then k = 6 end  -- a lat/lon position: two words
+  -- ("atdist dlh4 norku 15 then spd 240": a link word before the carried command is English glue, left out when
+  -- the command after it parses)
+  local linked = w[k] and LINKED[w[k]:lower()] and table.remove(w, k)
   if #w < k or not canonical_name(w[k]) then return c end
   local nested = table.concat(w, " ", k)
   local with_acid = w[k] .. " " .. w[2] .. (#w > k and " " .. table.concat(w, " ", k + 1) or "")
-  if scratch:check(nested) or not scratch:check(with_acid) then return c end
+  if scratch:check(nested) then return linked and table.concat(w, " ") or c end
+  if not scratch:check(with_acid) then return c end
   return table.concat(w, " ", 1, k - 1) .. " " .. with_acid
 end
 

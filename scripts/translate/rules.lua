@@ -1226,6 +1226,16 @@ return function(intent, rule, words)
     end
     local t, nx, named = g.t[k], g.t[k + 1], g.world.airports_named
     if not named or not t or t.kind ~= "word" or not t.alpha or #t.text < 4 then return false end
+    -- (a word said before an airport's code, a comma between or none: "goes to braunschweig, EDVE"; the word is
+    -- accounted for only as the navdata's name of that code, G:name_beside_code)
+    local code = nx and nx.kind == "punct" and nx.text == "," and k + 2 or k + 1
+    for _, r in ipairs(g:refs_in(code, code + 1, "waypoint")) do
+      if r.b == code and r.name:match("^%a%a%a%a$") then return true end
+    end
+    -- (an open airport's ICAO code typed in lower case, no English squawk knows: "goes to eham")
+    local class = g.world.airport_class and t.raw:match("^%l%l%l%l$") and not g:known_word(k)
+      and g.world.airport_class(t.raw:upper()) or ""
+    if class ~= "" and class ~= "CLOSED" then return true end
     -- (or a city whose airport lies by navaids of its name: "Ezeiza", SAEZ beside the EZEIZA VOR)
     local beside = g.world.airports_beside_navaids
     -- (a city named for its airport, lexicon.city_airports: "going to Perpignan", RIVESALTES)
@@ -2049,13 +2059,14 @@ return function(intent, rule, words)
     local pair = nx ~= nil and nx.kind == "plain" and q.number.typed and nx.number.typed
       and (q.number.digits or ""):find("%.") ~= nil and math.abs(q.value) <= 90 and math.abs(nx.value) <= 180
     local told = g:find_word(i + 3, #g.t + 1, "from") <= #g.t
-    -- (or as a wind is reported, "270 at 40", "270 at 40 knots": G:wind_reported)
     local after = q and not told and g:quantities(q.e, #g.t + 1) or {}
     for k, v in ipairs(after) do
       told = told or (v.kind == "angle" and (g:quantities(v.e, v.e + 1)[1] or {}).kind == "speed")
-        or (after[k + 1] ~= nil and (g:wind_reported(v, after[k + 1]) or (after[k + 1].kind == "speed"
-          and v.kind == "plain" and #(v.number and v.number.digits or "") == 3 and v.value <= 360
-          and g:word(v.e, "at") and after[k + 1].b == v.e + 1 and after[k + 1].value <= 200)))
+        -- (its direction and speed as a wind is reported, "270 at 40", "270 at 40 knots" (G:wind_reported), or
+        -- typed after a typed position, "wind at 52.3 4.7, 270 30" (G:wind_typed))
+        or (after[k + 1] ~= nil and (g:wind_reported(v, after[k + 1]) or (pair and g:wind_typed(v, after[k + 1]))
+          or (after[k + 1].kind == "speed" and v.kind == "plain" and #(v.number and v.number.digits or "") == 3
+            and v.value <= 360 and g:word(v.e, "at") and after[k + 1].b == v.e + 1 and after[k + 1].value <= 200)))
     end
     return q ~= nil and (q.kind == "lat" or q.kind == "lon" or pair) and told
       and not g:has_ref(1, #g.t + 1, "aircraft") and not g:word_in(math.max(1, i - 3), i, "what what's whats show tell get check")

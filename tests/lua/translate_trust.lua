@@ -9812,3 +9812,99 @@ do
   asked(ex("AB101 left 40, give her a vector to 300"), "a second heading after 'vector to'")
   check_eq(ex("AB101 turn left heading 030, vectors to 030"), "HDG AB101 30 LEFT")
 end
+
+-- Cycle 47 (f104): terse command words chained with commas, one aircraft named: a later clause naming none takes it
+-- (read whole as English); with none or several named, or a deletion in the list, such a clause is asked
+do
+  local _, ex = scene({ "CRE AC101 A320 52.0 4.0 090 FL300 280", "CRE AC202 B738 52.3 4.3 180 FL200 250",
+    "DEFWPT WP1 52.2 4.5" })
+  check_eq(ex("alt ac101 fl280, spd 250, hdg 120"), "ALT AC101 FL280 ; SPD AC101 250 ; HDG AC101 120")
+  check_eq(ex("vs of ac202 to -1000, alt fl150 and dct wp1"),
+    "VS AC202 -1000 ; ALT AC202 FL150 ; ADDWPT AC202 WP1 ; DIRECT AC202 WP1")
+  check_eq(ex("spd ac202 240, hdg 100"), "SPD AC202 240 ; HDG AC202 100")
+  -- (a condition's carried command after "then" or "and" takes the condition's aircraft, as typed without it)
+  check_eq(ex("atalt ac101 fl280 then spd 240"), "ATALT ac101 fl280 spd ac101 240")
+  check_eq(ex("atspd ac202 230 and alt fl120"), "ATSPD ac202 230 alt ac202 fl120")
+  check_eq(ex("alt ac101 fl280, spd ac202 240, hdg 100"), "ASK Which aircraft is 'hdg 100' for? Please give its callsign.")
+  check_eq(ex("del ac101, spd 250"), "ASK Which aircraft is 'spd 250' for? Please give its callsign.")
+  check_eq(ex("move ac101 52.1 4.1, hdg 100"), "MOVE AC101 52.1 4.1 30000 100")
+  check_eq(ex("cre ac303 a320 52.5 4.5 090 fl200 250, hold, spd ac101 250, hdg 100"),
+    "ASK Which aircraft is 'hdg 100' for? Please give its callsign.")
+  asked(ex("hold, spd 250"), "no aircraft named in the list")
+  check_eq(ex("seed 7, mcre 20, ff 10 min"), "SEED 7 ; MCRE 20 ; FF 600")
+end
+
+-- Cycle 47 (f104): a place's name said beside its code is accounted for when it is the navdata's name of that code
+-- (a navaid's, an airport's or words of it, its city), in any case; another name is asked; "the hlz vor" in lower
+-- case is the navaid of that ident near the traffic
+do
+  local _, ex = navscene({ "CRE AC301 A320 52.5 9.5 090 FL200 280", "CRE AC302 C172 52.3 10.4 300 3000 100" },
+    "a place's name beside its code")
+  if ex then
+    check_eq(ex("ac301 dct nienburg, NIE"), "ADDWPT AC301 NIE ; DIRECT AC301 NIE")
+    check_eq(ex("ac301 direct NIE nienburg"), "ADDWPT AC301 NIE ; DIRECT AC301 NIE")
+    check_eq(ex("ac302 heads to wolfsburg EDVE"), "DEST AC302 EDVE")
+    check_eq(ex("ac302 dest EDDH, hamburg"), "DEST AC302 EDDH")
+    check_eq(ex("where's the hlz vor"), "POS HLZ")
+    check_eq(ex("ac301 direct to celle NIE"),
+      "ASK I have ADDWPT AC301 NIE ; DIRECT AC301 NIE. What does 'celle' mean?")
+    asked(ex("ac302 is going to bremen EDVE"), "a name of another airport than the code's")
+  end
+end
+
+-- Cycle 47 (f104): field phrasing of route commands ("orig of X is eddh", "X goes to eddv"), a wind typed in
+-- TrafScript's order after its position, a fix made with its name in lower case
+do
+  local _, ex = scene({ "CRE AC101 A320 52.0 4.0 090 FL300 280" })
+  check_eq(ex("wind at 51.9 4.1, 090 15"), "WIND 51.9 4.1 90 15")
+  check_eq(ex("wind at 51.9 4.1, 090 at 15"), "WIND 51.9 4.1 90 15")
+  asked(ex("wind at 51.9 4.1, 15 090"), "a speed before the direction is no wind typed")
+  asked(ex("wind at 51.9 4.1, 090 15 and ac101 climb fl310"), "a wind typed must end the request")
+  check_eq(ex("make a fix rotte at 51.95, 4.4"), "DEFWPT ROTTE 51.95 4.4")
+  check_eq(ex("make a fix here at 51.95, 4.4"), "ASK What should the waypoint be called, and where is it?")
+end
+do
+  local _, ex = navscene({ "CRE AC301 A320 52.5 9.5 090 FL200 280", "CRE AC302 C172 52.3 10.4 300 3000 100" },
+    "airport codes typed in lower case")
+  if ex then
+    check_eq(ex("orig of ac301 is eddh"), "ORIG AC301 EDDH")
+    check_eq(ex("ac302's orig is edve"), "ORIG AC302 EDVE")
+    check_eq(ex("ac302 goes to eddv"), "DEST AC302 EDDV")
+    asked(ex("ac302 goes to home"), "no airport after 'goes to'")
+  end
+end
+
+-- Cycle 47 (f104): self-corrections and trailing comments: "just the <kind>" closing the request after a pause keeps
+-- the commands of that kind; said with more after it, it is asked; a place named after dest/orig, then a correction
+-- and another place, is the corrected one
+do
+  local _, ex = scene({ "CRE AC101 A320 52.0 4.0 090 FL300 280", "CRE AC202 B738 52.3 4.3 180 FL200 250",
+    "DEFWPT WP1 52.2 4.5" })
+  check_eq(ex("hdg ac101 to 200, then dct wp1 when abeam, uh just the hdg for now"), "HDG AC101 200")
+  check_eq(ex("ac101 fl280 and spd 250, just the spd"), "SPD AC101 250")
+  check_eq(ex("alt ac202 fl150, spd 220, um only the alt"), "ALT AC202 FL150")
+  check_eq(ex("ac101 fl280 and spd 250, just the spd for now, and hdg 100"),
+    "ASK What stands after 'just the spd for now'? Please say the instruction again in full.")
+end
+do
+  local _, ex = navscene({ "CRE AC301 A320 52.5 9.5 090 FL200 280", "CRE AC302 C172 52.3 10.4 300 3000 100" },
+    "a destination corrected by name")
+  if ex then
+    check_eq(ex("ac302 dest bremen? no hamburg"), "DEST AC302 EDDH")
+    check_eq(ex("ac302 orig hannover, sorry, EDVE"), "ORIG AC302 EDVE")
+    asked(ex("ac302 dest bremen? no hamburg and fl300"), "a correction with more after it")
+  end
+end
+
+-- Cycle 47 (f104): short German and Dutch asides of acknowledgement are accounted for alone in their clause; after
+-- a value ("hdg 180 ist gut") they say the value is fine, which is asked
+do
+  local _, ex = scene({ "CRE AC101 A320 52.0 4.0 090 FL300 280" })
+  check_eq(ex("alles klar, ac101 descend fl250"), "ALT AC101 FL250")
+  check_eq(ex("ac101 descend fl250, ist gut"), "ALT AC101 FL250")
+  check_eq(ex("prima. ac101 hdg 120"), "HDG AC101 120")
+  check_eq(ex("ac101 spd 250, is goed"), "SPD AC101 250")
+  check_eq(ex("ac101, hdg 120 ist gut, just descend fl250"),
+    "ASK I have HDG AC101 120 ; ALT AC101 FL250. What does 'ist' mean?")
+  asked(ex("ac101 descend fl250 gut"), "an aside straight after a value")
+end
