@@ -186,7 +186,8 @@ local function know_all(v, seen)
   -- account for no word; lexicon.heard_as's words are read only where their neighbours fit, becoming the word
   -- they mean, so a heard form left as it was ("vire a la izquierda": no neighbour fits) is no word squawk knows;
   -- lexicon.name_particles are words of a place's name ("de los reyes"), accounted for only inside the name read,
-  -- and lexicon.digit_homophones digits only inside a callsign read ("won", "ate"))
+  -- and lexicon.digit_homophones digits only inside a callsign read ("won", "ate"); lexicon.kept_as_is only
+  -- where a value is read as kept)
   if type(v) ~= "table" or seen[v] or v == lexicon.accounted.courtesy_phrases or v == lexicon.accounted.value_phrases
       or v == lexicon.typed_abbreviations
       or v == lexicon.aside or v == lexicon.self_correction.just_the or v == lexicon.foreign_digits or v == lexicon.foreign_hesitation_digits
@@ -194,7 +195,7 @@ local function know_all(v, seen)
       or v == lexicon.addressed_roles or v == lexicon.readback_heard or v == lexicon.nationless_registrations
       or v == lexicon.manner or v == lexicon.deadline_places or v == lexicon.held_value
       or v == lexicon.dictated_punctuation or v == lexicon.acknowledged or v == lexicon.said_whole or v == lexicon.heard_as
-      or v == lexicon.name_particles or v == lexicon.digit_homophones then
+      or v == lexicon.name_particles or v == lexicon.digit_homophones or v == lexicon.kept_as_is then
     return
   end
   seen[v] = true
@@ -5530,6 +5531,92 @@ function G:refused()
   end
 end
 
+-- "RYR88F FL370 is fine, just heading 150", "descend FL150, speed 270 is ok", "keep FL370, just heading 150": a
+-- level, speed, mach or heading said to be kept (lexicon.kept_as_is), its clause ending there or at another
+-- instruction, is no instruction when it is what the aircraft named before it (or, with none before, the one
+-- named after it) flies or was given: set aside, the instructions beside it read alone. Another value there,
+-- or no aircraft to hold it against, is asked, never issued.
+G.kept_sets = {}
+for k, list in pairs(lexicon.kept_as_is) do G.kept_sets[k] = set_of(list) end
+G.kept_kinds = { alt = true, speed = true, mach = true, heading = true }
+function G:kept_values()
+  local K = G.kept_sets
+  if not self:said(K.approvals) and not self:said(K.stays) and not self:said("all")
+      and not (self:said(K.verbs) and (self:said(K.only) or self:said(K.but))) then
+    return
+  end
+  local function ends(k)
+    local t = self.t[k]
+    return not t or t.kind == "punct" or self:word(k, K.only) or self:word(k, "and but then")
+      or self:intent_at(k) ~= nil
+  end
+  for _, q in ipairs(self:quantities(1, #self.t + 1)) do
+    -- (a plain number after "speed" is a speed: "speed 270 is fine")
+    local kind = q.kind == "plain" and self:word(q.b - 1, "speed") and "speed" or q.kind
+    if G.kept_kinds[kind] and not self.u:used(q.b) then
+      local b, e = q.b, nil  -- the tokens set aside, [b, e]
+      while b > 1 and self:word(b - 1, K.units) do b = b - 1 end
+      -- (an instruction's own value, "climb FL200 okay", is no value approved)
+      local verb = false
+      for x = b - 1, 1, -1 do
+        if self.t[x].kind == "punct" then break end
+        if self:intent_at(x) then verb = true break end
+      end
+      local k = q.e
+      while self:word(k, K.copulas) do k = k + 1 end
+      local approved = self:word(k, K.approvals) or (k > q.e and self:word(k - 1, K.stays))
+      if self:word(k, "all") and self:word(k + 1, "right") then  -- ("all right": no turn)
+        self:blank(k + 1)
+        approved, k = true, k + 2
+      end
+      local n = self.t[q.e] and self.t[q.e].kind == "punct" and q.e + 1 or q.e
+      if self:word(b - 1, K.verbs) and (self:word(n, K.only) or self:word(n, K.but)) then
+        b, e = b - 1, q.e - 1
+      elseif approved and not verb then
+        -- ("FL370 is fine", "FL180 stays", "speed 250 remains unchanged", "... is good as it is")
+        if self:word(k, K.approvals) then k = k + 1 end
+        while self:word(k, K.rounding) and not ends(k) do k = k + 1 end
+        if ends(k) then e = k - 1 end
+      end
+      if e then
+        local id
+        for _, r in ipairs(self.refs) do
+          if r.kind == "aircraft" and (r.e <= b or not id) then id = r.name end
+        end
+        local a = id and self:state(id)
+        local f = handlers.format
+        local function near(x, y, tol) return x ~= nil and y ~= nil and math.abs(x - y) <= tol end
+        local function turned(x, y) return x ~= nil and y ~= nil and math.abs((x - y + 540) % 360 - 180) <= 1 end
+        local v = q.value
+        local flown = a and (kind == "alt" and (near(v, a.sel_alt_ft, 50) or near(v, a.alt_ft, 50))
+          or kind == "speed" and (near(v, a.sel_cas_kt, 2) or near(v, a.cas_kt, 2))
+          or kind == "mach" and near(v, a.mach, 0.01)
+          or kind == "heading" and (turned(v, a.sel_hdg_deg) or turned(v, a.hdg_deg)))
+        if flown then
+          self:set_aside(b, e)
+          -- ("..., nur hdg 150": the word that leaves only the other instruction)
+          local n = self.t[e + 1] and self.t[e + 1].kind == "punct" and e + 2 or e + 1
+          if self:word(n, K.only) then self:blank(n) end
+          -- ("RYR88F FL370 is fine, KLM33 heading 100": the callsign said for the value kept alone, another
+          -- aircraft's instruction after it, is set aside with it)
+          local after = self:skip_fillers(e + 1)
+          if self:word(after, "and") then after = self:skip_fillers(after + 1) end
+          if #self:refs_in(after, after + 1, "aircraft") > 0 then
+            for _, r in ipairs(self:refs_in(1, b, "aircraft")) do
+              if self:skip_fillers(r.e) == b then self:set_aside(r.b, b - 1) break end
+            end
+          end
+        else
+          local said = kind == "alt" and f.alt(v, q.fl) or kind == "mach" and f.mach(v) or f.int(v)
+          self:need(a and string.format("'%s': %s does not fly %s now. Should it be given %s, or keep what it "
+            .. "flies?", self:raw(b, e + 1), a.id, said, said)
+            or string.format("'%s' is said to be kept: which aircraft keeps it?", self:raw(b, e + 1)))
+        end
+      end
+    end
+  end
+end
+
 -- "roger Mayday, descend FL100", "pan pan acknowledged, turn left heading 210", "emergency descent approved,
 -- descend and maintain 10000": a distress or urgency call acknowledged, or a request granted
 -- (lexicon.acknowledged), is set aside: no command, the instructions beside it read alone. The call's words
@@ -7052,6 +7139,7 @@ function M.translate(text, world)
   g:places_corrected()
   g:question_back()
   g:refused()
+  g:kept_values()
   g:acknowledged()
   g:stations()
   g:exercise_names()

@@ -9455,3 +9455,27 @@ do
   asked(ex("at second 30 KLM12 descend FL150"), "a second named before its number")
   check_eq(ex("at 5 minutes KLM12 descend FL150"), "SCHEDULE 00:05:00 ALT KLM12 FL150")
 end
+
+-- Cycle 47 (hz50): a value said to be kept ("FL330 is fine", "speed 260 is ok", "keep FL330, just ...") beside
+-- another instruction is no instruction when it is what the aircraft flies; another value there is asked
+do
+  local _, ex = scene({ "CRE AC010 A320 51.0 3.0 045 FL330 260", "CRE AC011 B738 51.2 3.3 200 FL250 280" })
+  check_eq(ex("AC010 FL330 is good, just turn right heading 070"), "HDG AC010 70 RIGHT")
+  check_eq(ex("AC010, speed 260 is ok, descend FL300"), "ALT AC010 FL300")
+  check_eq(ex("AC010 descend FL300, two six zero knots is fine"), "ALT AC010 FL300")
+  check_eq(ex("AC010 heading 045 looks alright, reduce speed 240"), "SPD AC010 240")
+  check_eq(ex("AC010 flight level three three zero stays, speed 240"), "SPD AC010 240")
+  check_eq(ex("AC010 FL330 ist gut, nur heading 070"), "HDG AC010 70")
+  check_eq(ex("AC010 keep FL330, only speed 240"), "SPD AC010 240")
+  check_eq(ex("AC010 should keep it at FL330 but slow down to 240 knots"), "SPD AC010 240")
+  check_eq(ex("AC010 FL330 is all right, speed 240"), "SPD AC010 240")
+  -- (the callsign said for the kept value alone is no part of the next aircraft's instruction)
+  check_eq(ex("AC010 FL330 is fine, AC011 heading 150"), "HDG AC011 150")
+  -- the value is not what it flies, or no aircraft holds it: asked, never issued
+  asked(ex("AC010 FL310 is fine, just turn right heading 070"), "a level it does not fly said to be fine")
+  asked(ex("AC010 keep 250 knots, only heading 070"), "a speed it does not fly said to be kept")
+  asked(ex("FL330 is fine, just heading 070"), "a value kept by no aircraft named")
+  -- an instruction's own value and "keep" with no "just" stay instructions
+  check_eq(ex("AC010 descend FL300 okay"), "ALT AC010 FL300")
+  check_eq(ex("AC010 keep 260 knots and descend FL300"), "SPD AC010 260 ; ALT AC010 FL300")
+end
