@@ -762,6 +762,9 @@ return {
   trailing_hedges = { words = { "maybe", "perhaps", "probably", "possibly", "unsure" },
                       pairs = { { "not", "sure" }, { "i", "think" }, { "i", "guess" }, { "i", "believe" },
                                 { "not", "certain" } } },
+  -- the speaker's own stop after "until" in a fast-forward with no duration ("until I say stop", "until I tell
+  -- you", "until further notice"): fast time with no end (FF); anything else after "until" is an event, asked
+  ff_stopped = { "stop", "stopped", "say", "tell", "told", "notice", "advised", "advise", "otherwise" },
   -- a value said to be kept, beside another instruction (G:kept_values): "FL370 is fine, just heading 150",
   -- "speed 270 is ok, descend FL150", "hdg 180 ist gut, just climb FL350" (the value, a copula or none, an
   -- approval, words that round it off, then the clause's end or another instruction); "keep FL370, just

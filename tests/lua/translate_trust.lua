@@ -9479,3 +9479,16 @@ do
   check_eq(ex("AC010 descend FL300 okay"), "ALT AC010 FL300")
   check_eq(ex("AC010 keep 260 knots and descend FL300"), "SPD AC010 260 ; ALT AC010 FL300")
 end
+
+-- Cycle 47 (hz50): fast time "until" an event is asked (FF runs for a time, or with no end until the speaker
+-- stops it)
+do
+  local _, ex = scene({ "CRE AC010 A320 51.0 3.0 045 FL330 260", "CRE AC011 B738 51.2 3.3 200 FL330 280" })
+  asked(ex("fast forward till the two of them get close"), "fast time until an event")
+  asked(ex("ff until the CPA"), "fast time until the closest point")
+  asked(ex("skip ahead until something happens, then hold"), "fast time until something happens")
+  asked(ex("run it fast until the conflict shows up"), "fast time until a conflict")
+  check_eq(ex("fast forward until I tell you to stop"), "FF")
+  check_eq(ex("ff till further notice"), "FF")
+  check_eq(ex("fast forward 4 minutes"), "FF 240")
+end
