@@ -6205,6 +6205,70 @@ function G.type_words()
 end
 local SAID_DIGIT = { zero = "0", oh = "0", one = "1", two = "2", three = "3", tree = "3", four = "4", fower = "4",
   five = "5", fife = "5", six = "6", seven = "7", eight = "8", nine = "9", niner = "9" }
+-- "four eight decimal three five one one decimal eight": a latitude and a longitude said digit by digit with a
+-- decimal mark each ("decimal", "point") and nothing between them, so that the digits between the two marks
+-- hold the latitude's decimals and the longitude's degrees run together. Returns the text and nil when no such
+-- run is said; the text with a comma where the run splits when every split that gives a valid pair (latitude
+-- up to 90, longitude up to 180 in at most three figures) gives the same one ("five zero decimal one zero
+-- eight decimal two": 50.1 8.2 either way); else the text and a question naming the digits and the readings.
+G.coordinate_marks = set_of({ "decimal", "point" })
+G.coordinate_tens = { twenty = 2, thirty = 3, forty = 4, fifty = 5, sixty = 6, seventy = 7, eighty = 8,
+  ninety = 9 }
+function G.run_together_position(text)
+  local low = text:lower()
+  if not low:find("decimal", 1, true) and not low:find("point", 1, true) then return text, nil end
+  local toks = {}  -- each word: b, e (the text's positions, e past it), w (lower case), bare (no punctuation)
+  for b, w, e in text:gmatch("()(%S+)()") do
+    local lw = w:lower()
+    toks[#toks + 1] = { b = b, e = e, w = lw:gsub("[%p]+$", ""), bare = not lw:find("%p$") }
+  end
+  local function digit(k) return toks[k] and toks[k].bare and SAID_DIGIT[toks[k].w] end
+  local function mark(k) return toks[k] and toks[k].bare and G.coordinate_marks[toks[k].w] end
+  for i = 2, #toks do
+    if mark(i) then
+      -- the degrees before the first mark: digits said ("four eight") or tens and a digit ("forty eight")
+      local lb, deg = i, ""
+      while lb > 1 and digit(lb - 1) and #deg < 3 do lb, deg = lb - 1, SAID_DIGIT[toks[lb - 1].w] .. deg end
+      if deg == "" and toks[i - 1].bare and G.coordinate_tens[toks[i - 1].w] then
+        lb, deg = i - 1, G.coordinate_tens[toks[i - 1].w] .. "0"
+      elseif #deg == 1 and lb > 1 and toks[lb - 1].bare and G.coordinate_tens[toks[lb - 1].w] then
+        lb, deg = lb - 1, G.coordinate_tens[toks[lb - 1].w] .. deg
+      end
+      -- the run between the marks, the second mark, the longitude's decimals after it
+      local j, run = i + 1, ""
+      while digit(j) do run, j = run .. SAID_DIGIT[toks[j].w], j + 1 end
+      local last, dec = j, ""  -- (the last word of the longitude's decimals)
+      while toks[last + 1] and SAID_DIGIT[toks[last + 1].w] do
+        last, dec = last + 1, dec .. SAID_DIGIT[toks[last + 1].w]
+        if not toks[last].bare then break end
+      end
+      if deg ~= "" and tonumber(deg) <= 90 and #run >= 2 and mark(j) and dec ~= "" then
+        local readings, seen, first = {}, {}, nil
+        for k = math.max(1, #run - 3), #run - 1 do
+          local lat, lon = tonumber(deg .. "." .. run:sub(1, k)), tonumber(run:sub(k + 1) .. "." .. dec)
+          if lat <= 90 and lon <= 180 then
+            local pair = string.format("%s %s", handlers.format.num(lat), handlers.format.num(lon))
+            if not seen[pair] then readings[#readings + 1], seen[pair] = pair, true end
+            first = first or k
+          end
+        end
+        if #readings > 1 then
+          local digits = {}
+          for k = i + 1, j - 1 do digits[#digits + 1] = toks[k].w end
+          return text, string.format("Which position is '%s'? The digits '%s' between the two decimal marks "
+            .. "split more than one way: %s. Please say the latitude and the longitude apart (with a comma, or north "
+            .. "and east).", (text:sub(toks[lb].b, toks[last].e - 1):gsub("[%p]+$", "")),
+            table.concat(digits, " "), table.concat(readings, " or "))
+        end
+        if first then
+          local at = toks[i + first].e  -- (after the latitude's last decimal)
+          return text:sub(1, at - 1) .. "," .. text:sub(at), nil
+        end
+      end
+    end
+  end
+  return text, nil
+end
 local NATIONLESS = set_of(lexicon.nationless_registrations)
 local function spelled_registrations(text, fleet)
   if #fleet == 0 then return text end
@@ -7090,6 +7154,9 @@ function M.translate(text, world)
     return { commands = {}, ask = string.format("'%s' is no position: minutes run from 0 to 59. Which latitude "
       .. "and longitude do you mean?", dm) }
   end
+  local run_together
+  text, run_together = G.run_together_position(text)
+  if run_together then return { commands = {}, ask = run_together } end
   text = spelled_airports(typed_places(written_forms(text), world), world)
   -- a time typed in two parts ("at 10:30", "schedule at 00:15: ..."): hours and minutes or minutes and
   -- seconds, which squawk does not tell apart (FF reads "ff 1:30" itself); asked when another command

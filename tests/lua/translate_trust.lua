@@ -9492,3 +9492,21 @@ do
   check_eq(ex("ff till further notice"), "FF")
   check_eq(ex("fast forward 4 minutes"), "FF 240")
 end
+
+-- Cycle 47 (hz50): a latitude and longitude said digit by digit with a decimal mark each and nothing between
+-- them: read when every way the digits between the marks split gives the same position, else asked naming them
+do
+  local _, ex = scene({ "CRE AC010 A320 51.0 3.0 045 FL330 260" })
+  check_eq(ex("move AC010 to five one decimal two zero six decimal four"), "MOVE AC010 51.2 6.4")
+  check_eq(ex("move AC010 to five one point two zero zero six point four"), "MOVE AC010 51.2 6.4")
+  check_eq(ex("move AC010 to five one decimal two six decimal four"), "MOVE AC010 51.2 6.4")
+  local q = ex("move AC010 to five one decimal two four one two decimal five")
+  check(q:find("'two four one two'", 1, true) ~= nil and q:find("51.24 12.5 or 51.241 2.5", 1, true) ~= nil, q)
+  asked(ex("define waypoint WPX at four nine point three one three point one"), "49.3 13.1 or 49.31 3.1")
+  -- the other ways a position is said still read
+  check_eq(ex("move AC010 to five one decimal two four, one two decimal five"), "MOVE AC010 51.24 12.5")
+  check_eq(ex("move AC010 to five one decimal two four north zero one two decimal five east"), "MOVE AC010 51.24 12.5")
+  check_eq(ex("move AC010 to fifty one point two four twelve point five"), "MOVE AC010 51.24 12.5")
+  check_eq(ex("move AC010 to 51.24 12.5"), "MOVE AC010 51.24 12.5")
+  check_eq(ex("AC010 mach point seven eight"), "SPD AC010 M0.78")
+end
