@@ -9510,3 +9510,17 @@ do
   check_eq(ex("move AC010 to 51.24 12.5"), "MOVE AC010 51.24 12.5")
   check_eq(ex("AC010 mach point seven eight"), "SPD AC010 M0.78")
 end
+
+-- Cycle 47 (hz50): an airline said alone whose name is also a word (or a word's start or end) of another flying
+-- aircraft's airline name fits both: asked
+do
+  local _, ex = scene({ "CRE SWR120 A320 46.4 6.5 220 FL110 250", "CRE EZS77AB A320 46.5 5.7 140 FL130 270",
+    "CRE AFR22 A319 45.9 6.3 350 FL090 240" })
+  check_eq(ex("turn the Swiss right heading 300"), "ASK Which Swiss: SWR120 or EZS77AB?")
+  asked(ex("Swiss, climb flight level 150"), "Swiss alone with TOPSWISS flying")
+  check_eq(ex("the topswiss climb flight level 150"), "ALT EZS77AB FL150")
+  check_eq(ex("Swiss one two zero climb FL150"), "ALT SWR120 FL150")
+  check_eq(ex("the Air France descend FL080"), "ALT AFR22 FL80")
+  local _, ex2 = scene({ "CRE SWR120 A320 46.4 6.5 220 FL110 250", "CRE SUI4 C130 46.5 5.7 140 FL130 270" })
+  asked(ex2("the swiss descend FL090"), "Swiss with a Swiss Air Force aircraft flying")
+end
