@@ -5541,16 +5541,25 @@ for k, list in pairs(lexicon.kept_as_is) do G.kept_sets[k] = set_of(list) end
 G.kept_kinds = { alt = true, speed = true, mach = true, heading = true }
 function G:kept_values()
   local K = G.kept_sets
-  if not self:said(K.approvals) and not self:said(K.stays) and not self:said("all")
+  if not self:said(K.approvals) and not self:said(K.stays) and not self:said("all as")
       and not (self:said(K.verbs) and (self:said(K.only) or self:said(K.but))) then
     return
   end
   local function ends(k)
     local t = self.t[k]
     return not t or t.kind == "punct" or self:word(k, K.only) or self:word(k, "and but then")
-      or self:intent_at(k) ~= nil
+      or self:intent_at(k) ~= nil or #self:refs_in(k, k + 1, "aircraft") > 0
   end
-  for _, q in ipairs(self:quantities(1, #self.t + 1)) do
+  -- the position after "as is" or "as it is" at k, else nil
+  local function as_is(k)
+    local n = self:word(k + 1, "it") and k + 2 or k + 1
+    return self:word(k, "as") and self:word(n, "is") and n + 1 or nil
+  end
+  -- (last to first: "hdg 135 and FL370 are fine" keeps the heading with the level after it; kept[b]: a value
+  -- kept from token b)
+  local qs, kept = self:quantities(1, #self.t + 1), {}
+  for x = #qs, 1, -1 do
+    local q = qs[x]
     -- (a plain number after "speed" is a speed: "speed 270 is fine")
     local kind = q.kind == "plain" and self:word(q.b - 1, "speed") and "speed" or q.kind
     if G.kept_kinds[kind] and not self.u:used(q.b) then
@@ -5558,9 +5567,9 @@ function G:kept_values()
       while b > 1 and self:word(b - 1, K.units) do b = b - 1 end
       -- (an instruction's own value, "climb FL200 okay", is no value approved)
       local verb = false
-      for x = b - 1, 1, -1 do
-        if self.t[x].kind == "punct" then break end
-        if self:intent_at(x) then verb = true break end
+      for y = b - 1, 1, -1 do
+        if self.t[y].kind == "punct" or self:word(y, "and but then") then break end
+        if self:intent_at(y) then verb = true break end
       end
       local k = q.e
       while self:word(k, K.copulas) do k = k + 1 end
@@ -5568,15 +5577,22 @@ function G:kept_values()
       if self:word(k, "all") and self:word(k + 1, "right") then  -- ("all right": no turn)
         self:blank(k + 1)
         approved, k = true, k + 2
+      elseif k == q.e and as_is(k) then  -- ("FL370 as is")
+        approved, k = true, as_is(k)
       end
-      local n = self.t[q.e] and self.t[q.e].kind == "punct" and q.e + 1 or q.e
-      if self:word(b - 1, K.verbs) and (self:word(n, K.only) or self:word(n, K.but)) then
-        b, e = b - 1, q.e - 1
+      -- ("keep FL370, just ...", "keep FL350 but ...", "leave FL370 as is, ...")
+      local n = as_is(q.e) or q.e
+      if self.t[n] and self.t[n].kind == "punct" and (n == q.e or not ends(n + 1)) then n = n + 1 end
+      if self:word(b - 1, K.verbs) and (self:word(n, K.only) or self:word(n, K.but) or (n > q.e and ends(n))) then
+        b, e = b - 1, n - 1
+        if self.t[e].kind == "punct" then e = e - 1 end
       elseif approved and not verb then
         -- ("FL370 is fine", "FL180 stays", "speed 250 remains unchanged", "... is good as it is")
         if self:word(k, K.approvals) then k = k + 1 end
         while self:word(k, K.rounding) and not ends(k) do k = k + 1 end
         if ends(k) then e = k - 1 end
+      elseif not verb and self:word(q.e, "and") and kept[q.e + 1] then
+        e = q.e
       end
       if e then
         local id
@@ -5594,13 +5610,17 @@ function G:kept_values()
           or kind == "heading" and (turned(v, a.sel_hdg_deg) or turned(v, a.hdg_deg)))
         if flown then
           self:set_aside(b, e)
+          kept[b] = true
           -- ("..., nur hdg 150": the word that leaves only the other instruction)
           local n = self.t[e + 1] and self.t[e + 1].kind == "punct" and e + 2 or e + 1
           if self:word(n, K.only) then self:blank(n) end
           -- ("RYR88F FL370 is fine, KLM33 heading 100": the callsign said for the value kept alone, another
           -- aircraft's instruction after it, is set aside with it)
-          local after = self:skip_fillers(e + 1)
-          if self:word(after, "and") then after = self:skip_fillers(after + 1) end
+          local after = e + 1  -- (past fillers, "and" and what is set aside: "KLM33 FL180 ok, EWG9 FL250 ok, ...")
+          while self.t[after] and (self.t[after].kind == "punct" or self.t[after].filler or self.noted[after]
+              or self:word(after, "and")) do
+            after = after + 1
+          end
           if #self:refs_in(after, after + 1, "aircraft") > 0 then
             for _, r in ipairs(self:refs_in(1, b, "aircraft")) do
               if self:skip_fillers(r.e) == b then self:set_aside(r.b, b - 1) break end

@@ -773,7 +773,7 @@ return {
                  approvals = { "fine", "ok", "okay", "good", "alright", "perfect", "great", "gut", "unchanged" },
                  -- (a copula that says it alone: "FL180 stays, speed 250")
                  stays = { "stays", "remains", "bleibt" },
-                 rounding = { "as", "it", "is", "for", "now", "there", "with", "me", "us", "then", "so", "far" },
+                 rounding = { "as", "it", "is", "for", "now", "there", "with", "by", "me", "us", "then", "so", "far" },
                  verbs = { "keep", "leave" },
                  only = { "just", "only", "nur" },
                  -- (after "keep X": "keep FL350 but slow down to 250 knots")
