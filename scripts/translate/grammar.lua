@@ -6228,9 +6228,10 @@ local SAID_DIGIT = { zero = "0", oh = "0", one = "1", two = "2", three = "3", tr
 -- "four eight decimal three five one one decimal eight": a latitude and a longitude said digit by digit with a
 -- decimal mark each ("decimal", "point") and nothing between them, so that the digits between the two marks
 -- hold the latitude's decimals and the longitude's degrees run together. Returns the text and nil when no such
--- run is said; the text with a comma where the run splits when every split that gives a valid pair (latitude
--- up to 90, longitude up to 180 in at most three figures) gives the same one ("five zero decimal one zero
--- eight decimal two": 50.1 8.2 either way); else the text and a question naming the digits and the readings.
+-- run is said; the text with the position typed in its place ("50.1 8.2") when every split that gives a valid
+-- pair (latitude up to 90, longitude up to 180 in at most three figures) gives the same one ("five zero decimal
+-- one zero eight decimal two": 50.1 8.2 either way); else the text and a question naming the digits and the
+-- readings.
 G.coordinate_marks = set_of({ "decimal", "point" })
 G.coordinate_tens = { twenty = 2, thirty = 3, forty = 4, fifty = 5, sixty = 6, seventy = 7, eighty = 8,
   ninety = 9 }
@@ -6263,13 +6264,12 @@ function G.run_together_position(text)
         if not toks[last].bare then break end
       end
       if deg ~= "" and tonumber(deg) <= 90 and #run >= 2 and mark(j) and dec ~= "" then
-        local readings, seen, first = {}, {}, nil
+        local readings, seen = {}, {}
         for k = math.max(1, #run - 3), #run - 1 do
           local lat, lon = tonumber(deg .. "." .. run:sub(1, k)), tonumber(run:sub(k + 1) .. "." .. dec)
           if lat <= 90 and lon <= 180 then
             local pair = string.format("%s %s", handlers.format.num(lat), handlers.format.num(lon))
             if not seen[pair] then readings[#readings + 1], seen[pair] = pair, true end
-            first = first or k
           end
         end
         if #readings > 1 then
@@ -6280,9 +6280,8 @@ function G.run_together_position(text)
             .. "and east).", (text:sub(toks[lb].b, toks[last].e - 1):gsub("[%p]+$", "")),
             table.concat(digits, " "), table.concat(readings, " or "))
         end
-        if first then
-          local at = toks[i + first].e  -- (after the latitude's last decimal)
-          return text:sub(1, at - 1) .. "," .. text:sub(at), nil
+        if #readings == 1 then
+          return text:sub(1, toks[lb].b - 1) .. readings[1] .. text:sub(toks[last].e), nil
         end
       end
     end
