@@ -186,7 +186,8 @@ local function know_all(v, seen)
   -- account for no word; lexicon.heard_as's words are read only where their neighbours fit, becoming the word
   -- they mean, so a heard form left as it was ("vire a la izquierda": no neighbour fits) is no word squawk knows;
   -- lexicon.name_particles are words of a place's name ("de los reyes"), accounted for only inside the name read,
-  -- and lexicon.digit_homophones digits only inside a callsign read ("won", "ate"))
+  -- and lexicon.digit_homophones digits only inside a callsign read ("won", "ate"); lexicon.kept_as_is only
+  -- where a value is read as kept)
   if type(v) ~= "table" or seen[v] or v == lexicon.accounted.courtesy_phrases or v == lexicon.accounted.value_phrases
       or v == lexicon.typed_abbreviations
       or v == lexicon.aside or v == lexicon.self_correction.just_the or v == lexicon.foreign_digits or v == lexicon.foreign_hesitation_digits
@@ -194,7 +195,8 @@ local function know_all(v, seen)
       or v == lexicon.addressed_roles or v == lexicon.readback_heard or v == lexicon.nationless_registrations
       or v == lexicon.manner or v == lexicon.deadline_places or v == lexicon.held_value
       or v == lexicon.dictated_punctuation or v == lexicon.acknowledged or v == lexicon.said_whole or v == lexicon.heard_as
-      or v == lexicon.name_particles or v == lexicon.digit_homophones or v == lexicon.asides_alone then
+      or v == lexicon.name_particles or v == lexicon.digit_homophones or v == lexicon.asides_alone
+      or v == lexicon.kept_as_is then
     return
   end
   seen[v] = true
@@ -5838,6 +5840,112 @@ function G:refused()
   end
 end
 
+-- "RYR88F FL370 is fine, just heading 150", "descend FL150, speed 270 is ok", "keep FL370, just heading 150": a
+-- level, speed, mach or heading said to be kept (lexicon.kept_as_is), its clause ending there or at another
+-- instruction, is no instruction when it is what the aircraft named before it (or, with none before, the one
+-- named after it) flies or was given: set aside, the instructions beside it read alone. Another value there,
+-- or no aircraft to hold it against, is asked, never issued.
+G.kept_sets = {}
+for k, list in pairs(lexicon.kept_as_is) do G.kept_sets[k] = set_of(list) end
+G.kept_kinds = { alt = true, speed = true, mach = true, heading = true }
+function G:kept_values()
+  local K = G.kept_sets
+  if not self:said(K.approvals) and not self:said(K.stays) and not self:said("all as")
+      and not (self:said(K.verbs) and (self:said(K.only) or self:said(K.but))) then
+    return
+  end
+  local function ends(k)
+    local t = self.t[k]
+    return not t or t.kind == "punct" or self:word(k, K.only) or self:word(k, "and but then")
+      or self:intent_at(k) ~= nil or #self:refs_in(k, k + 1, "aircraft") > 0
+  end
+  -- the position after "as is" or "as it is" at k, else nil
+  local function as_is(k)
+    local n = self:word(k + 1, "it") and k + 2 or k + 1
+    return self:word(k, "as") and self:word(n, "is") and n + 1 or nil
+  end
+  -- (last to first: "hdg 135 and FL370 are fine" keeps the heading with the level after it; kept[b]: a value
+  -- kept from token b)
+  local qs, kept = self:quantities(1, #self.t + 1), {}
+  for x = #qs, 1, -1 do
+    local q = qs[x]
+    -- (a plain number after "speed" is a speed: "speed 270 is fine")
+    local kind = q.kind == "plain" and self:word(q.b - 1, "speed") and "speed" or q.kind
+    if G.kept_kinds[kind] and not self.u:used(q.b) then
+      local b, e = q.b, nil  -- the tokens set aside, [b, e]
+      while b > 1 and self:word(b - 1, K.units) do b = b - 1 end
+      -- (an instruction's own value, "climb FL200 okay", is no value approved)
+      local verb = false
+      for y = b - 1, 1, -1 do
+        if self.t[y].kind == "punct" or self:word(y, "and but then") then break end
+        if self:intent_at(y) then verb = true break end
+      end
+      local k = q.e
+      while self:word(k, K.copulas) do k = k + 1 end
+      local approved = self:word(k, K.approvals) or (k > q.e and self:word(k - 1, K.stays))
+      if self:word(k, "all") and self:word(k + 1, "right") then  -- ("all right": no turn)
+        self:blank(k + 1)
+        approved, k = true, k + 2
+      elseif k == q.e and as_is(k) then  -- ("FL370 as is")
+        approved, k = true, as_is(k)
+      end
+      -- ("keep FL370, just ...", "keep FL350 but ...", "leave FL370 as is, ...")
+      local n = as_is(q.e) or q.e
+      if self.t[n] and self.t[n].kind == "punct" and (n == q.e or not ends(n + 1)) then n = n + 1 end
+      if self:word(b - 1, K.verbs) and (self:word(n, K.only) or self:word(n, K.but) or (n > q.e and ends(n))) then
+        b, e = b - 1, n - 1
+        if self.t[e].kind == "punct" then e = e - 1 end
+      elseif approved and not verb then
+        -- ("FL370 is fine", "FL180 stays", "speed 250 remains unchanged", "... is good as it is")
+        if self:word(k, K.approvals) then k = k + 1 end
+        while self:word(k, K.rounding) and not ends(k) do k = k + 1 end
+        if ends(k) then e = k - 1 end
+      elseif not verb and self:word(q.e, "and") and kept[q.e + 1] then
+        e = q.e
+      end
+      if e then
+        local id
+        for _, r in ipairs(self.refs) do
+          if r.kind == "aircraft" and (r.e <= b or not id) then id = r.name end
+        end
+        local a = id and self:state(id)
+        local f = handlers.format
+        local function near(x, y, tol) return x ~= nil and y ~= nil and math.abs(x - y) <= tol end
+        local function turned(x, y) return x ~= nil and y ~= nil and math.abs((x - y + 540) % 360 - 180) <= 1 end
+        local v = q.value
+        local flown = a and (kind == "alt" and (near(v, a.sel_alt_ft, 50) or near(v, a.alt_ft, 50))
+          or kind == "speed" and (near(v, a.sel_cas_kt, 2) or near(v, a.cas_kt, 2))
+          or kind == "mach" and near(v, a.mach, 0.01)
+          or kind == "heading" and (turned(v, a.sel_hdg_deg) or turned(v, a.hdg_deg)))
+        if flown then
+          self:set_aside(b, e)
+          kept[b] = true
+          -- ("..., nur hdg 150": the word that leaves only the other instruction)
+          local n = self.t[e + 1] and self.t[e + 1].kind == "punct" and e + 2 or e + 1
+          if self:word(n, K.only) then self:blank(n) end
+          -- ("RYR88F FL370 is fine, KLM33 heading 100": the callsign said for the value kept alone, another
+          -- aircraft's instruction after it, is set aside with it)
+          local after = e + 1  -- (past fillers, "and" and what is set aside: "KLM33 FL180 ok, EWG9 FL250 ok, ...")
+          while self.t[after] and (self.t[after].kind == "punct" or self.t[after].filler or self.noted[after]
+              or self:word(after, "and")) do
+            after = after + 1
+          end
+          if #self:refs_in(after, after + 1, "aircraft") > 0 then
+            for _, r in ipairs(self:refs_in(1, b, "aircraft")) do
+              if self:skip_fillers(r.e) == b then self:set_aside(r.b, b - 1) break end
+            end
+          end
+        else
+          local said = kind == "alt" and f.alt(v, q.fl) or kind == "mach" and f.mach(v) or f.int(v)
+          self:need(a and string.format("'%s': %s does not fly %s now. Should it be given %s, or keep what it "
+            .. "flies?", self:raw(b, e + 1), a.id, said, said)
+            or string.format("'%s' is said to be kept: which aircraft keeps it?", self:raw(b, e + 1)))
+        end
+      end
+    end
+  end
+end
+
 -- "roger Mayday, descend FL100", "pan pan acknowledged, turn left heading 210", "emergency descent approved,
 -- descend and maintain 10000": a distress or urgency call acknowledged, or a request granted
 -- (lexicon.acknowledged), is set aside: no command, the instructions beside it read alone. The call's words
@@ -6522,6 +6630,69 @@ function G.type_words()
 end
 local SAID_DIGIT = { zero = "0", oh = "0", one = "1", two = "2", three = "3", tree = "3", four = "4", fower = "4",
   five = "5", fife = "5", six = "6", seven = "7", eight = "8", nine = "9", niner = "9" }
+-- "four eight decimal three five one one decimal eight": a latitude and a longitude said digit by digit with a
+-- decimal mark each ("decimal", "point") and nothing between them, so that the digits between the two marks
+-- hold the latitude's decimals and the longitude's degrees run together. Returns the text and nil when no such
+-- run is said; the text with the position typed in its place ("50.1 8.2") when every split that gives a valid
+-- pair (latitude up to 90, longitude up to 180 in at most three figures) gives the same one ("five zero decimal
+-- one zero eight decimal two": 50.1 8.2 either way); else the text and a question naming the digits and the
+-- readings.
+G.coordinate_marks = set_of({ "decimal", "point" })
+G.coordinate_tens = { twenty = 2, thirty = 3, forty = 4, fifty = 5, sixty = 6, seventy = 7, eighty = 8,
+  ninety = 9 }
+function G.run_together_position(text)
+  local low = text:lower()
+  if not low:find("decimal", 1, true) and not low:find("point", 1, true) then return text, nil end
+  local toks = {}  -- each word: b, e (the text's positions, e past it), w (lower case), bare (no punctuation)
+  for b, w, e in text:gmatch("()(%S+)()") do
+    local lw = w:lower()
+    toks[#toks + 1] = { b = b, e = e, w = lw:gsub("[%p]+$", ""), bare = not lw:find("%p$") }
+  end
+  local function digit(k) return toks[k] and toks[k].bare and SAID_DIGIT[toks[k].w] end
+  local function mark(k) return toks[k] and toks[k].bare and G.coordinate_marks[toks[k].w] end
+  for i = 2, #toks do
+    if mark(i) then
+      -- the degrees before the first mark: digits said ("four eight") or tens and a digit ("forty eight")
+      local lb, deg = i, ""
+      while lb > 1 and digit(lb - 1) and #deg < 3 do lb, deg = lb - 1, SAID_DIGIT[toks[lb - 1].w] .. deg end
+      if deg == "" and toks[i - 1].bare and G.coordinate_tens[toks[i - 1].w] then
+        lb, deg = i - 1, G.coordinate_tens[toks[i - 1].w] .. "0"
+      elseif #deg == 1 and lb > 1 and toks[lb - 1].bare and G.coordinate_tens[toks[lb - 1].w] then
+        lb, deg = lb - 1, G.coordinate_tens[toks[lb - 1].w] .. deg
+      end
+      -- the run between the marks, the second mark, the longitude's decimals after it
+      local j, run = i + 1, ""
+      while digit(j) do run, j = run .. SAID_DIGIT[toks[j].w], j + 1 end
+      local last, dec = j, ""  -- (the last word of the longitude's decimals)
+      while toks[last + 1] and SAID_DIGIT[toks[last + 1].w] do
+        last, dec = last + 1, dec .. SAID_DIGIT[toks[last + 1].w]
+        if not toks[last].bare then break end
+      end
+      if deg ~= "" and tonumber(deg) <= 90 and #run >= 2 and mark(j) and dec ~= "" then
+        local readings, seen = {}, {}
+        for k = math.max(1, #run - 3), #run - 1 do
+          local lat, lon = tonumber(deg .. "." .. run:sub(1, k)), tonumber(run:sub(k + 1) .. "." .. dec)
+          if lat <= 90 and lon <= 180 then
+            local pair = string.format("%s %s", handlers.format.num(lat), handlers.format.num(lon))
+            if not seen[pair] then readings[#readings + 1], seen[pair] = pair, true end
+          end
+        end
+        if #readings > 1 then
+          local digits = {}
+          for k = i + 1, j - 1 do digits[#digits + 1] = toks[k].w end
+          return text, string.format("Which position is '%s'? The digits '%s' between the two decimal marks "
+            .. "split more than one way: %s. Please say the latitude and the longitude apart (with a comma, or north "
+            .. "and east).", (text:sub(toks[lb].b, toks[last].e - 1):gsub("[%p]+$", "")),
+            table.concat(digits, " "), table.concat(readings, " or "))
+        end
+        if #readings == 1 then
+          return text:sub(1, toks[lb].b - 1) .. readings[1] .. text:sub(toks[last].e), nil
+        end
+      end
+    end
+  end
+  return text, nil
+end
 local NATIONLESS = set_of(lexicon.nationless_registrations)
 local function spelled_registrations(text, fleet)
   if #fleet == 0 then return text end
@@ -7518,6 +7689,9 @@ function M.translate(text, world)
     return { commands = {}, ask = string.format("'%s' is no position: minutes run from 0 to 59. Which latitude "
       .. "and longitude do you mean?", dm) }
   end
+  local run_together
+  text, run_together = G.run_together_position(text)
+  if run_together then return { commands = {}, ask = run_together } end
   text = spelled_airports(typed_places(written_forms(text), world), world)
   -- a time typed in two parts ("at 10:30", "schedule at 00:15: ..."): hours and minutes or minutes and
   -- seconds, which squawk does not tell apart (FF reads "ff 1:30" itself); asked when another command
@@ -7567,6 +7741,7 @@ function M.translate(text, world)
   g:places_corrected()
   g:question_back()
   g:refused()
+  g:kept_values()
   g:acknowledged()
   g:stations()
   g:exercise_names()

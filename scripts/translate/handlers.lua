@@ -438,7 +438,7 @@ end
 function m:airline_only(s)
   for i = s.b, s.e - 1 do
     local icao, e, codes = self:airline_at(i)
-    local fits = icao and self:airline_fleet(icao, codes) or {}
+    local fits = icao and self:airline_name_shared(self:said_name(i, e), self:airline_fleet(icao, codes)) or {}
     if #fits > 1 then
       return self:need(string.format("Which %s: %s?", self:raw(i, e), table.concat(fits, " or ")))
     end
@@ -452,16 +452,21 @@ end
 -- three words) -> ICAO prefix; brand names -> {ICAO prefixes}; the ICAO prefix a brand's name names ->
 -- {the brand's prefixes} (TRA -> {TRA, TVF}: a callsign heard with "Transavia" is of either).
 -- AIRLINE_FIRST: the first words (up to the first space) of those names.
-local AIRLINE_NAMES, BRANDS, BRAND_OF, AIRLINE_FIRST
+-- NAMES_OF[icao]: the telephony names (lower case) of an airline
+local AIRLINE_NAMES, BRANDS, BRAND_OF, AIRLINE_FIRST, NAMES_OF
 local function airline_names()
   if AIRLINE_NAMES then return AIRLINE_NAMES, BRANDS, BRAND_OF end
-  AIRLINE_NAMES, BRANDS, BRAND_OF, AIRLINE_FIRST = {}, {}, {}, {}
+  AIRLINE_NAMES, BRANDS, BRAND_OF, AIRLINE_FIRST, NAMES_OF = {}, {}, {}, {}, {}
   local names = require("translate.names")
   for _, list in ipairs({ names.airlines, names.common }) do
     for _, a in ipairs(list) do
       AIRLINE_NAMES[a[1]] = a[2]
       AIRLINE_FIRST[a[1]:match("^[^ ]*")] = true
     end
+  end
+  for _, a in ipairs(names.airlines) do
+    NAMES_OF[a[2]] = NAMES_OF[a[2]] or {}
+    table.insert(NAMES_OF[a[2]], a[1])
   end
   for _, b in ipairs(names.brands or {}) do
     BRANDS[b[1]] = { table.unpack(b, 2) }
@@ -566,6 +571,39 @@ function m:airline_fleet(icao, codes)
     end
   end
   return fits
+end
+
+-- The words b..e-1 (lower case, one space apart): an airline's name as said.
+function m:said_name(b, e)
+  local words = {}
+  for k = b, e - 1 do words[#words + 1] = self.t[k].text end
+  return table.concat(words, " ")
+end
+
+-- The aircraft flying of airlines other than those in `fits` whose telephony holds the airline's name `said` as a word
+-- or, said in four letters or more, as a word's start or end ("swiss" in SWISS AIR FORCE, and in TOPSWISS,
+-- easyJet Switzerland's; a common name, "Lufthansa CityLine", is none): `fits` with them added (the airline said
+-- then fits more than one aircraft).
+function m:airline_name_shared(said, fits)
+  airline_names()
+  local out, taken = fits, {}
+  for _, id in ipairs(fits) do taken[id] = true end
+  for _, a in ipairs(self.fleet) do
+    local prefix = a.id:upper():match("^(%a+)%d")
+    local names = not taken[a.id] and prefix and NAMES_OF[prefix]
+    for _, name in ipairs(names or {}) do
+      local holds = (" " .. name .. " "):find(" " .. said .. " ", 1, true) ~= nil
+      for w in name:gmatch("%S+") do
+        holds = holds or (#said >= 4 and w ~= said and (w:sub(1, #said) == said or w:sub(-#said) == said))
+      end
+      if holds then
+        if out == fits then out = { table.unpack(fits) } end
+        out[#out + 1], taken[a.id] = a.id, true
+        break
+      end
+    end
+  end
+  return out
 end
 
 -- With exactly one aircraft in `fits` (named by its airline or type over tokens b..e-1), adds
@@ -863,6 +901,8 @@ function m:airline_refs()
             or self:word(e, "heavy super")) and not (the and pronoun_one(e)))
           and (typed or not self:new_aircraft_follows(e - 1))
       local fits = typed or (ok and self:airline_fleet(icao, codes)) or {}
+      -- ("the Swiss" with SWR2811 and EZS44KP, TOPSWISS, flying: both fit)
+      if ok and not typed and #fits > 0 then fits = self:airline_name_shared(self:said_name(i, e), fits) end
       -- ("Ryanair descend FL200 and RYR4411 speed 250": an airline alone addressed, without "the", whose one
       -- aircraft flying the request names by its callsign elsewhere is a callsign cut short, never that aircraft)
       for _, r in ipairs(ok and not the and #fits == 1 and self.refs or {}) do

@@ -3045,7 +3045,7 @@ return function(H, f, compass)
       end
       -- "fast forward" alone runs fast-time until stopped ("until I say stop", "I'll tell you when to stop"
       -- say so); more words ("a bit", "an hour and a half") said a duration that was not understood
-      local till = self:find_word(s.trig + 1, s.e, "until")
+      local till = self:find_word(s.trig + 1, s.e, "until till")
       local told = self:find_word(s.trig + 1, till, "tell say")
       if told < till and self:word(told + 1, "you when") then
         till = self:word(told - 1, "i i'll ill we we'll") and told - 1 or told
@@ -3057,6 +3057,13 @@ return function(H, f, compass)
           return self:need("For how long should the simulation fast-forward? I heard 'until "
             .. self:raw(till + 1, s.e) .. "': please give a duration.")
         end
+      end
+      -- ("until they lose separation", "until it's interesting", "until the conflict": an event, which fast time
+      -- does not wait for: asked; only the speaker's own stop, "until I say stop", "until further notice", is
+      -- fast time with no end)
+      if till < s.e and not self:word_in(till + 1, s.e, "@ff_stopped") then
+        return self:need("For how long should the simulation fast-forward? squawk fast-forwards for a time, not "
+          .. "until something happens; I heard '" .. self:raw(till, s.e) .. "': please give a duration.")
       end
       self:explain(till, till + 1)
       -- "speed up the simulation", "can you speed this simulation up?": faster, by no rate and for no time

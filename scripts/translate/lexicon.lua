@@ -788,6 +788,25 @@ return {
   trailing_hedges = { words = { "maybe", "perhaps", "probably", "possibly", "unsure" },
                       pairs = { { "not", "sure" }, { "i", "think" }, { "i", "guess" }, { "i", "believe" },
                                 { "not", "certain" } } },
+  -- the speaker's own stop after "until" in a fast-forward with no duration ("until I say stop", "until I tell
+  -- you", "until further notice"): fast time with no end (FF); anything else after "until" is an event, asked
+  ff_stopped = { "stop", "stopped", "say", "tell", "told", "notice", "advised", "advise", "otherwise" },
+  -- a value said to be kept, beside another instruction (G:kept_values): "FL370 is fine, just heading 150",
+  -- "speed 270 is ok, descend FL150", "hdg 180 ist gut, just climb FL350" (the value, a copula or none, an
+  -- approval, words that round it off, then the clause's end or another instruction); "keep FL370, just
+  -- heading 150", "keep FL350 but slow down" (a verb of `verbs` before the value, a word of `only` or `but` after it)
+  kept_as_is = { copulas = { "is", "are", "'s", "looks", "look", "seems", "stays", "remains", "ist", "bleibt" },
+                 approvals = { "fine", "ok", "okay", "good", "alright", "perfect", "great", "gut", "unchanged" },
+                 -- (a copula that says it alone: "FL180 stays, speed 250")
+                 stays = { "stays", "remains", "bleibt" },
+                 rounding = { "as", "it", "is", "for", "now", "there", "with", "by", "me", "us", "then", "so", "far" },
+                 verbs = { "keep", "leave" },
+                 only = { "just", "only", "nur" },
+                 -- (after "keep X": "keep FL350 but slow down to 250 knots")
+                 but = { "but" },
+                 -- (words before the value that are part of it: "keep it at FL180", "speed 270", "your present heading")
+                 units = { "speed", "heading", "hdg", "level", "altitude", "the", "your", "its", "present", "current",
+                   "mach", "flight", "it", "at", "on" } },
   -- a level or speed wanted at a waypoint said without an instruction word ("when AFR1234 gets to GIROM I want it
   -- at FL250", "it should be at FL250"): the words that may come before its "at" (G:held_value)
   held_value = { "i", "i'd", "we", "we'd", "want", "like", "need", "it", "him", "her", "them", "to", "be", "at",

@@ -9908,3 +9908,75 @@ do
     "ASK I have HDG AC101 120 ; ALT AC101 FL250. What does 'ist' mean?")
   asked(ex("ac101 descend fl250 gut"), "an aside straight after a value")
 end
+
+-- Cycle 47 (hz50): a value said to be kept ("FL330 is fine", "speed 260 is ok", "keep FL330, just ...") beside
+-- another instruction is no instruction when it is what the aircraft flies; another value there is asked
+do
+  local _, ex = scene({ "CRE AC010 A320 51.0 3.0 045 FL330 260", "CRE AC011 B738 51.2 3.3 200 FL250 280" })
+  check_eq(ex("AC010 FL330 is good, just turn right heading 070"), "HDG AC010 70 RIGHT")
+  check_eq(ex("AC010, speed 260 is ok, descend FL300"), "ALT AC010 FL300")
+  check_eq(ex("AC010 descend FL300, two six zero knots is fine"), "ALT AC010 FL300")
+  check_eq(ex("AC010 heading 045 looks alright, reduce speed 240"), "SPD AC010 240")
+  check_eq(ex("AC010 flight level three three zero stays, speed 240"), "SPD AC010 240")
+  check_eq(ex("AC010 FL330 ist gut, nur heading 070"), "HDG AC010 70")
+  check_eq(ex("AC010 keep FL330, only speed 240"), "SPD AC010 240")
+  check_eq(ex("AC010 should keep it at FL330 but slow down to 240 knots"), "SPD AC010 240")
+  check_eq(ex("AC010 leave FL330 as it is, turn right heading 070"), "HDG AC010 70 RIGHT")
+  check_eq(ex("AC010 heading 045 and FL330 are good, speed 240"), "SPD AC010 240")
+  check_eq(ex("AC010 FL330 okay, AC011 FL250 okay, AC010 speed 240"), "SPD AC010 240")
+  check_eq(ex("AC010 FL330 is all right, speed 240"), "SPD AC010 240")
+  -- (the callsign said for the kept value alone is no part of the next aircraft's instruction)
+  check_eq(ex("AC010 FL330 is fine, AC011 heading 150"), "HDG AC011 150")
+  -- the value is not what it flies, or no aircraft holds it: asked, never issued
+  asked(ex("AC010 FL310 is fine, just turn right heading 070"), "a level it does not fly said to be fine")
+  asked(ex("AC010 keep 250 knots, only heading 070"), "a speed it does not fly said to be kept")
+  asked(ex("FL330 is fine, just heading 070"), "a value kept by no aircraft named")
+  -- an instruction's own value and "keep" with no "just" stay instructions
+  check_eq(ex("AC010 descend FL300 okay"), "ALT AC010 FL300")
+  check_eq(ex("AC010 keep 260 knots and descend FL300"), "SPD AC010 260 ; ALT AC010 FL300")
+end
+
+-- Cycle 47 (hz50): fast time "until" an event is asked (FF runs for a time, or with no end until the speaker
+-- stops it)
+do
+  local _, ex = scene({ "CRE AC010 A320 51.0 3.0 045 FL330 260", "CRE AC011 B738 51.2 3.3 200 FL330 280" })
+  asked(ex("fast forward till the two of them get close"), "fast time until an event")
+  asked(ex("ff until the CPA"), "fast time until the closest point")
+  asked(ex("skip ahead until something happens, then hold"), "fast time until something happens")
+  asked(ex("run it fast until the conflict shows up"), "fast time until a conflict")
+  check_eq(ex("fast forward until I tell you to stop"), "FF")
+  check_eq(ex("ff till further notice"), "FF")
+  check_eq(ex("fast forward 4 minutes"), "FF 240")
+end
+
+-- Cycle 47 (hz50): a latitude and longitude said digit by digit with a decimal mark each and nothing between
+-- them: read when every way the digits between the marks split gives the same position, else asked naming them
+do
+  local _, ex = scene({ "CRE AC010 A320 51.0 3.0 045 FL330 260" })
+  check_eq(ex("move AC010 to five one decimal two zero six decimal four"), "MOVE AC010 51.2 6.4")
+  check_eq(ex("move AC010 to five one point two zero zero six point four"), "MOVE AC010 51.2 6.4")
+  check_eq(ex("move AC010 to five one decimal two six decimal four"), "MOVE AC010 51.2 6.4")
+  local q = ex("move AC010 to five one decimal two four one two decimal five")
+  check(q:find("'two four one two'", 1, true) ~= nil and q:find("51.24 12.5 or 51.241 2.5", 1, true) ~= nil, q)
+  asked(ex("define waypoint WPX at four nine point three one three point one"), "49.3 13.1 or 49.31 3.1")
+  -- the other ways a position is said still read
+  check_eq(ex("move AC010 to five one decimal two four, one two decimal five"), "MOVE AC010 51.24 12.5")
+  check_eq(ex("move AC010 to five one decimal two four north zero one two decimal five east"), "MOVE AC010 51.24 12.5")
+  check_eq(ex("move AC010 to fifty one point two four twelve point five"), "MOVE AC010 51.24 12.5")
+  check_eq(ex("move AC010 to 51.24 12.5"), "MOVE AC010 51.24 12.5")
+  check_eq(ex("AC010 mach point seven eight"), "SPD AC010 M0.78")
+end
+
+-- Cycle 47 (hz50): an airline said alone whose name is also a word (or a word's start or end) of another flying
+-- aircraft's airline name fits both: asked
+do
+  local _, ex = scene({ "CRE SWR120 A320 46.4 6.5 220 FL110 250", "CRE EZS77AB A320 46.5 5.7 140 FL130 270",
+    "CRE AFR22 A319 45.9 6.3 350 FL090 240" })
+  check_eq(ex("turn the Swiss right heading 300"), "ASK Which Swiss: SWR120 or EZS77AB?")
+  asked(ex("Swiss, climb flight level 150"), "Swiss alone with TOPSWISS flying")
+  check_eq(ex("the topswiss climb flight level 150"), "ALT EZS77AB FL150")
+  check_eq(ex("Swiss one two zero climb FL150"), "ALT SWR120 FL150")
+  check_eq(ex("the Air France descend FL080"), "ALT AFR22 FL80")
+  local _, ex2 = scene({ "CRE SWR120 A320 46.4 6.5 220 FL110 250", "CRE SUI4 C130 46.5 5.7 140 FL130 270" })
+  asked(ex2("the swiss descend FL090"), "Swiss with a Swiss Air Force aircraft flying")
+end
