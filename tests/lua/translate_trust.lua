@@ -9897,7 +9897,8 @@ do
 end
 
 -- Cycle 47 (f104): short German and Dutch asides of acknowledgement are accounted for alone in their clause; after
--- a value ("hdg 180 ist gut") they say the value is fine, which is asked
+-- a value ("hdg 180 ist gut") they say the value is kept (the hz50 block below): a value the aircraft does not fly
+-- is asked
 do
   local _, ex = scene({ "CRE AC101 A320 52.0 4.0 090 FL300 280" })
   check_eq(ex("alles klar, ac101 descend fl250"), "ALT AC101 FL250")
@@ -9905,7 +9906,8 @@ do
   check_eq(ex("prima. ac101 hdg 120"), "HDG AC101 120")
   check_eq(ex("ac101 spd 250, is goed"), "SPD AC101 250")
   check_eq(ex("ac101, hdg 120 ist gut, just descend fl250"),
-    "ASK I have HDG AC101 120 ; ALT AC101 FL250. What does 'ist' mean?")
+    "ASK 'heading 120 ist gut': AC101 does not fly 120 now. Should it be given 120, or keep what it flies?")
+  check_eq(ex("ac101, hdg 090 ist gut, just descend fl250"), "ALT AC101 FL250")
   asked(ex("ac101 descend fl250 gut"), "an aside straight after a value")
 end
 
