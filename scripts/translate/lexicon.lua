@@ -595,6 +595,10 @@ return {
   -- correction, "KL204, make one orbit"), is read as "correction"
   -- (radiotelephony's "FL260, I say again 260" repeats the value: read as a correction, it keeps it)
   -- (typed: "210 hmm no 200")
+  -- the words that may follow "cancel that" said straight after a value, with no comma, where it takes the value
+  -- back ("climb FL330 cancel that maintain FL310"): an instruction's verb or a level's first word
+  cancel_correction_next = { "maintain", "climb", "descend", "reduce", "increase", "turn", "fly", "expedite", "slow",
+                             "fl", "flight", "mach" },
   self_correction = { words = { "oh", "no", "wait", "sorry", "actually", "make", "that", "i", "mean", "uh", "um", "er",
                                 "say", "again", "scratch", "corr", "hmm", "typo", "never", "mind", "nevermind", "forget" },
                       markers = { "no", "wait", "sorry", "actually", "make that", "mean", "say again", "scratch",

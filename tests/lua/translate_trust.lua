@@ -9982,3 +9982,38 @@ do
   local _, ex2 = scene({ "CRE SWR120 A320 46.4 6.5 220 FL110 250", "CRE SUI4 C130 46.5 5.7 140 FL130 270" })
   asked(ex2("the swiss descend FL090"), "Swiss with a Swiss Air Force aircraft flying")
 end
+
+-- Cycle 47 (g108): "cancel that" (or "cancel" before a comma) straight after a value takes it back as a
+-- self-correction: the instruction after it stands when it is of the same kind ("maintain" going by its value);
+-- of another kind, or with nothing after it, it is asked
+do
+  local _, ex = scene({ "CRE AC1 A320 52 4 090 FL250 280", "CRE AC2 B738 52.5 4.5 180 FL300 M.78" })
+  check_eq(ex("AC1 reduce speed 230 knots, cancel that, maintain 260 knots"), "SPD AC1 260")
+  check_eq(ex("AC1 descend flight level one two zero cancel that descend flight level one four zero"), "ALT AC1 FL140")
+  check_eq(ex("AC1 fly heading 200 cancel that, fly heading 220"), "HDG AC1 220")
+  check_eq(ex("AC2 mach .80, cancel, mach .76"), "SPD AC2 M0.76")
+  check_eq(ex("AC1 climb FL270 cancel that, FL290"), "ALT AC1 FL290")
+  -- ("maintain" goes by its value: a speed after a level is another kind)
+  asked(ex("AC1 climb FL300, cancel that, maintain 250 knots"), "a speed after a level taken back")
+  asked(ex("AC1 climb FL300, cancel that, reduce 250 knots"), "another kind after cancel that")
+  asked(ex("AC1 descend FL200, cancel that"), "cancel that with nothing after it")
+  asked(ex("AC1 reduce 240 knots cancel that speed"), "cancel that speed: what is cancelled")
+  -- ("cancel" with no value before it is no correction)
+  check_eq(ex("AC1 descend FL200, cancel your route"), "ALT AC1 FL200 ; DELRTE AC1")
+end
+
+-- Cycle 47 (g108): "delete <name>" with the name of a navaid the one aircraft named holds on its route, ending
+-- the request or its clause, is that waypoint deleted (DELWPT), never the aircraft; a name off its route, or a
+-- list of names, is asked
+do
+  local _, ex = navscene({ "CRE KLM77 B738 55.8 -2.0 270 FL300 280", "ADDWPT KLM77 NEW", "ADDWPT KLM77 TLA",
+    "ADDWPT KLM77 DCS" }, "a navaid's name on the route deleted")
+  if ex then
+    check_eq(ex("KLM77 delete Newcastle"), "DELWPT KLM77 NEW")
+    check_eq(ex("KLM77 remove Dean Cross, descend FL280"), "DELWPT KLM77 DCS ; ALT KLM77 FL280")
+    check_eq(ex("KLM77 delete Talla please"), "DELWPT KLM77 TLA")
+    asked(ex("KLM77 delete Perth"), "a navaid's name off the route")
+    asked(ex("KLM77 delete Talla and Perth"), "two names, one off the route")
+    check_eq(ex("delete KLM77"), "DEL KLM77")
+  end
+end
