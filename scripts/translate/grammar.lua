@@ -726,6 +726,36 @@ local function self_corrections(text)
   return table.concat(pieces)
 end
 
+-- "reduce speed 220 knots, cancel that, maintain 250 knots", "climb FL330 cancel that maintain FL310": "cancel that"
+-- (or "cancel" before a comma) straight after a value, with more said after it, is a self-correction and becomes the
+-- word "correction", which G:parse reads (the instruction after it replaces the one before when both are of one
+-- kind, and another kind is asked). With no comma after "that", only a value or a word of
+-- lexicon.cancel_correction_next may follow ("cancel that heading, resume own navigation" cancels that instruction).
+G.cancel_next = set_of(lexicon.cancel_correction_next)
+function G.cancel_corrections(text)
+  if not text:find("ancel", 1, true) then return text end
+  local toks = bare_words(text)
+  local function value(t) return t and (t.raw:match("%d%p*$") or NUMBER_WORDS[t.bare] or UNIT_WORDS[t.bare]) end
+  local pieces, from = {}, 1
+  for k = 2, #toks do
+    local t = toks[k]
+    if t.bare == "cancel" and t.at >= from and value(toks[k - 1]) then
+      local j = toks[k + 1] and toks[k + 1].bare == "that" and k + 2 or k + 1
+      local marked = toks[j - 1].raw:match("%p$") or (toks[j] and toks[j].bare == "")
+      local nx = toks[j]
+      while nx and nx.bare == "" do j = j + 1 nx = toks[j] end
+      if nx and (marked or (j == k + 2 and (value(nx) or nx.raw:match("^%a?%a?%.?%d")
+          or G.cancel_next[nx.bare]))) then
+        pieces[#pieces + 1] = text:sub(from, t.at - 1) .. "correction, "
+        from = nx.at
+      end
+    end
+  end
+  if from == 1 then return text end
+  pieces[#pieces + 1] = text:sub(from)
+  return table.concat(pieces)
+end
+
 -- "descend and maintain 6000, you said seven", "negative, it's one zero thousand, readback was one one
 -- thousand": a clause opening after a comma with a phrase of lexicon.readback_heard and holding only values
 -- up to the end of its sentence names the value the pilot read back wrongly; it is dropped when a value was
@@ -1047,7 +1077,7 @@ local function written_forms(text)
   where("@", "(%s)@%s*(%w)", "%1at %2")
   where("@", "^@%s*(%w)", "at %1")
   text = typed_abbreviations(lone_multipliers(tokens.numerals_apart(text, DIGIT_WORDS)))
-  text = hyphened_types(spelled(heard_forms(negated_values(readback_heard(self_corrections(unlabelled(foreign_digits(G.said_whole(text)))))))))
+  text = hyphened_types(spelled(heard_forms(negated_values(readback_heard(self_corrections(G.cancel_corrections(unlabelled(foreign_digits(G.said_whole(text))))))))))
   low = text:lower()
   -- a position typed as whole degrees after the hemisphere, then minutes ("N55 50.0 W003 20.0", "S33 57
   -- E151 10"): decimal degrees before their hemisphere ("55.833333 N 3.333333 W"); minutes of 60 or more
@@ -2323,6 +2353,23 @@ function G:condition()
     comma = self:quantities(at_speed, #self.t + 1)[1].e
     rest = self.t[comma] and self.t[comma].kind == "punct" and comma + 1 or comma
   end
+  -- "when passing FL200 reduce speed 250 knots, descend FL120": an instruction said in the condition's clause
+  -- after its level or speed waits for it alone (the segment's own condition, m:at_altitude); what follows the
+  -- comma runs now. With "and" or "then" after the comma, whether that waits too is asked.
+  if not at_speed and comma <= #self.t then
+    local q = self:quantities(i, comma)[1]
+    if q and (q.kind == "alt" or q.kind == "speed" or q.kind == "mach") and self:any_instruction_in(q.e, comma)
+        and not self:has_ref(i, q.b, "waypoint") then
+      local nx = comma + 1
+      while self.t[nx] and self.t[nx].filler and not self:word(nx, "and") do nx = nx + 1 end
+      if self:word(nx, "and @then_words") then
+        self.ask = string.format("Should '%s' also wait for '%s', or run now?",
+          (self:raw(nx, #self.t + 1):gsub(" ([,.;:])", "%1")), self:raw(i, q.e))
+        return nil, rest
+      end
+      return nil, 1
+    end
+  end
   -- "when the dash 8 gets to GADUM set its speed to 180", "when WJA661 passes ADLER set speed 220": with no
   -- comma, a waypoint the aircraft reaches (no value before it) ends the condition, an instruction after it
   local reached = comma > #self.t and self:refs_in(i, #self.t + 1, "waypoint")[1]
@@ -3204,6 +3251,20 @@ function G:places_corrected()
   end
 end
 
+-- True when segment t, said after a correction, is of segment s's kind: of one family, or both level, speed or
+-- heading instructions whose first values are of one kind (a Mach number a speed), "maintain" going by its value
+-- ("reduce speed 220 knots, correction, maintain 250 knots" is; "climb FL150, correction, maintain 250 knots" is not).
+G.value_kinds = { alt = "alt", speed = "speed", mach = "speed", heading = "heading" }
+G.value_intents = { alt = true, maintain = true, spd = true, hdg = true }
+function G:corrects_in_kind(s, t)
+  if G.value_intents[s.intent] and G.value_intents[t.intent] then
+    local a, b = self:quantities(s.trig, s.e)[1], self:quantities(t.trig, t.e)[1]
+    local ka, kb = a and G.value_kinds[a.kind], b and G.value_kinds[b.kind]
+    if ka and kb then return ka == kb end
+  end
+  return same_family(s.intent, t.intent)
+end
+
 -- (defined with G:at_waypoint)
 local tied_to_waypoint
 
@@ -3220,7 +3281,7 @@ function G:parse(b, e)
     -- "climb FL200, no wait, heading 300": one of another kind said in the place of an instruction that was
     -- issued takes it back, or adds to it; which is not knowable, so it is asked, naming both
     local fixed = k > 1 and self:word_in(segs[k - 1].trig, s.trig, "@correction")
-    if fixed and same_family(segs[k - 1].intent, s.intent) then
+    if fixed and self:corrects_in_kind(segs[k - 1], s) then
       for c = #self.out, prev_out + 1, -1 do self.out[c] = nil end
     elseif fixed and #self.out > prev_out then
       local c = s.trig - 1
@@ -3243,7 +3304,7 @@ function G:parse(b, e)
     -- family, corrects asks nothing about the value taken back (a climb below the aircraft)
     local nx = segs[k + 1]
     local corrected = nx and s.trig < nx.trig and self:word_in(s.trig, nx.trig, "@correction")
-      and same_family(s.intent, nx.intent)
+      and self:corrects_in_kind(s, nx)
     -- "Status of BAW45? Altitude, speed, everything": a bare noun after a
     -- handled instruction names what to show, not a new instruction.
     if k > 1 and #self.out > 0 and self.out[#self.out]:match("^POS ") and self:word(s.trig, "@shown")
@@ -3502,11 +3563,23 @@ function G:valueless_left(segs, valueless, issued_by)
 end
 
 -- The level a segment's instruction waits for, said after it: "..., (but only) when/once it is at /
--- reaches / passes FL250 (please)" closing the segment; the level and where its words begin, or nil.
+-- reaches / passes FL250 (please)" closing the segment, or "passing"/"reaching" and the level straight after the
+-- instruction's value ("reduce 250 knots passing FL150"); the level and where its words begin, or nil.
 -- A speed's level said after "above" or "below" closing the segment ("Mach .76 above FL300", "250 kt below
 -- FL100"): the speed held from that level, the same reading ("not above FL300" is a limit, no condition).
 function G:trailing_level(s)
   local c = self:find_word(s.trig + 1, s.e, "when once after")
+  -- ("reduce 250 knots passing FL150": "passing" or "reaching" straight after the instruction's own value)
+  local bare = false
+  if c >= s.e then
+    local p = self:find_word(s.trig + 1, s.e, "passing reaching")
+    local qs = p < s.e and self:quantities(s.trig, p) or {}
+    local v = qs[#qs]
+    if v and v.e == p and (v.kind == "speed" or v.kind == "mach" or v.kind == "heading"
+        or (v.kind == "plain" and v.b > s.trig)) then
+      c, bare = p, true
+    end
+  end
   if c >= s.e and (s.intent == "spd" or s.intent == "infer") then
     local a = self:find_word(s.trig + 1, s.e, "above below")
     local q = a < s.e and not self:word(a - 1, "not") and self:quantities(a + 1, s.e)[1]
@@ -3527,7 +3600,7 @@ function G:trailing_level(s)
   while cut - 1 > s.trig and (self.t[cut - 1].kind == "punct" or self:word(cut - 1, "but only")) do cut = cut - 1 end
   local q = self:quantities(c + 1, s.e)[1]
   if not q or not (q.kind == "alt" or (q.kind == "plain" and q.fl)) then return nil end
-  local reached = false
+  local reached = bare
   for i = c + 1, q.b - 1 do
     if self:word(i, "reaches reaching reach passes passing gets get at through below above crosses crossing") then
       reached = true
@@ -7369,7 +7442,7 @@ local function typed_places(text, world)
   end
   local parts = {}
   for lead, word in text:gmatch("(%s*)([^%s]+)") do parts[#parts + 1] = { lead, word } end
-  local out, slot, k = {}, false, 1
+  local out, slot, k, proper = {}, false, 1, false
   while k <= #parts do
     local lead, word = parts[k][1], parts[k][2]
     local raw, rest = word:match("^(%a[%a%d]*)(.*)$")
@@ -7406,8 +7479,13 @@ local function typed_places(text, world)
       end
     end
     out[#out + 1] = lead .. (named and (w:upper() .. rest) or word)
-    -- (a list goes on after a name read so: "add willo then timba")
-    slot = (named and rest == "") or (slot and (w == "then" or w == "and") and rest == "")
+    -- (a list goes on after a name read so: "add willo then timba"; or, in a line with capitals, at "and" or
+    -- "then" after a proper name in the slot that is no such place, a navaid's or airport's name: "Add Talla and
+    -- Sumin to ...")
+    local listed = proper
+    proper = slot and capitals and not named and raw ~= nil and raw:match("^%u%l+$") ~= nil and rest == ""
+      and not known_word(w)
+    slot = (named and rest == "") or ((slot or listed) and (w == "then" or w == "and") and rest == "")
       or (slot and rest == "" and (lexicon.place_nouns[w] ~= nil
         or (w == "the" and parts[k] ~= nil and lexicon.place_nouns[parts[k][2]:lower()] ~= nil)))
       or (w == "where" and (rest == "'s" or (rest == "" and parts[k] and parts[k][2]:lower() == "is")))

@@ -892,6 +892,20 @@ return function(H, f, compass)
         if not self:navaid_kind_said(r) then named_at = named_at or whole or r.name end
       end
       named_at = named_at or self:place_by_name(s.trig + 1, s.e, self:state(id))
+      -- ("move Shamrock 3GK to Boyne": a word written as a proper name straight after "to", closing the clause or
+      -- before "at", that the navdata holds as a fix within lexicon.navaid_range_nm of the aircraft, is that fix)
+      local to, here = self:find_word(s.trig + 1, s.e, "to"), self:state(id)
+      local t, known = self.t[to + 1], self.world.place_known
+      if not named_at and to + 1 < s.e and t.kind == "word" and t.raw:match("^%u%l+$") and not t.keyword
+          and not self.u:used(to + 1) and known and here and here.lat
+          and (to + 2 >= s.e or self.t[to + 2].kind == "punct" or self:word(to + 2, "at")) then
+        local lat, lon = known(t.raw:upper())
+        local dlat, dlon = lat and lat - here.lat, lat and (lon - here.lon) * math.cos(math.rad(lat))
+        if lat and 60 * math.sqrt(dlat * dlat + dlon * dlon) <= L.navaid_range_nm then
+          named_at = t.raw:upper()
+          self:explain(to + 1, to + 2)
+        end
+      end
     end
     -- ("move the Ryanair to FL360, same position": where it is now, with the values said)
     local same = self:find_word(s.b, s.e, "same")

@@ -880,11 +880,12 @@ return function(intent, rule, words)
   -- straight after the verb, put at the route's end (not "stick to the route", which adds nothing)
   rule { "stick tack", "addwpt", near = { 8, "@route_nouns" },
          when = function(g, i) return g:has_ref(i + 1, i + 2, "waypoint") and g:word_in(i + 2, i + 5, "end") end }
-  -- "add Lambourne to the end of the Air France's route", "add glen rose to skywest 4420's route": a navaid
-  -- or airport said by its name of one or two words
-  rule { "add append insert", "addwpt", near = { 10, "@route_nouns" }, when = function(g, i)
-    return (g:word(i + 2, "to") and g:place_by_name(i + 1, i + 2) ~= nil)
-      or (g:word(i + 3, "to") and g:place_by_name(i + 1, i + 3) ~= nil)
+  -- "add Lambourne to the end of the Air France's route", "add glen rose to skywest 4420's route", "put Wallasey
+  -- in the route": a navaid or airport said by its name of one or two words
+  rule { "add append insert put", "addwpt", near = { 10, "@route_nouns" }, when = function(g, i)
+    local to = g:word(i, "put") and "in into on onto" or "to"
+    return (g:word(i + 2, to) and g:place_by_name(i + 1, i + 2) ~= nil)
+      or (g:word(i + 3, to) and g:place_by_name(i + 1, i + 3) ~= nil)
   end }
   -- "add the point EXIT2": a point that is a known waypoint
   rule { "add append insert", "addwpt", near = { 3, "point" },
@@ -1120,12 +1121,24 @@ return function(intent, rule, words)
   -- "Virgin 3 delete 54 North 30 West": a position said in degrees straight after the verb, for an aircraft
   -- that flies, is a point of its route (no deletion of the aircraft)
   rule { "forget delete remove del", "delwpt", when = degrees_for_flying }
-  -- "GAF612 remove Leine from the route": a navaid said by its name (one or two words before "from") that the
-  -- route of the one aircraft named holds
-  rule { "remove delete del drop", "delwpt", near = { 8, "@route_nouns" }, when = function(g, i)
+  -- "GAF612 remove Leine from the route", "Speedbird 1488 delete Talla": a navaid said by its name (one or two
+  -- words straight after the verb, before "from", or ending the request or its clause, or before "and" and an
+  -- instruction, when `ending`) that the route
+  -- of the one aircraft named holds
+  local function navaid_on_route(g, i, ending)
     local f = g:find_word(i + 2, math.min(#g.t + 1, i + 4), "from")
+    if ending and not g:word(f, "from") then
+      f = i + 1
+      local function stop(k)
+        if g:word(k, "and") then return g:any_instruction_in(k + 1, k + 2) end
+        return g.t[k].kind == "punct" or g.t[k].filler
+      end
+      while f <= #g.t and f <= i + 3 and not stop(f) do f = f + 1 end
+      if f == i + 1 or (f <= #g.t and not stop(f)) then return false end
+    end
     local a = g:refs_in(1, #g.t + 1, "aircraft")
-    local st = f <= #g.t and #a == 1 and a[1].exists and g.world.navaids_named and g:state(a[1].name)
+    local st = f <= #g.t + (ending and 1 or 0) and #a == 1 and a[1].exists and g.world.navaids_named
+      and g:state(a[1].name)
     if not (st and st.lat) then return false end
     local words = {}
     for k = i + 1, f - 1 do
@@ -1138,7 +1151,9 @@ return function(intent, rule, words)
       if held[id:upper()] then return true end
     end
     return false
-  end }
+  end
+  rule { "remove delete del drop", "delwpt", near = { 8, "@route_nouns" }, when = navaid_on_route }
+  rule { "forget delete remove del", "delwpt", when = function(g, i) return navaid_on_route(g, i, true) end }
   -- "clear the route of EWG7LP", "clear UAL485's route completely", "kill the whole route on ASA31": the
   -- whole route, no waypoint named
   rule { "clear delete remove erase wipe kill", "delrte", near = { 4, "@route_nouns" },

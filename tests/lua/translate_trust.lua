@@ -10017,3 +10017,38 @@ do
     check_eq(ex("delete KLM77"), "DEL KLM77")
   end
 end
+
+-- Cycle 47 (g108): a level condition said after the instruction it governs ("reduce 260 knots passing FL240") and
+-- a condition's instruction followed, after a comma, by another ("when passing FL260 reduce 270 knots, turn right
+-- heading 220"): the condition holds its own instruction only; with "and"/"then" after the comma it is asked
+do
+  local _, ex = scene({ "CRE AC1 A320 52 4 090 FL250 280", "CRE AC2 B738 52.5 4.5 180 FL300 M.78" })
+  check_eq(ex("AC2 descend FL180, reduce 260 knots passing FL240"), "ALT AC2 FL180 ; ATALT AC2 FL240 SPD AC2 260")
+  check_eq(ex("AC2 descend FL180, turn left heading 150 reaching FL260"),
+    "ALT AC2 FL180 ; ATALT AC2 FL260 HDG AC2 150 LEFT")
+  check_eq(ex("AC2 when passing FL260 reduce 270 knots, turn right heading 220"),
+    "ATALT AC2 FL260 SPD AC2 270 ; HDG AC2 220 RIGHT")
+  check_eq(ex("AC1 on passing FL200 reduce 250 knots, descend FL150"), "ATALT AC1 FL200 SPD AC1 250 ; ALT AC1 FL150")
+  -- (the condition before a comma still holds everything after it)
+  check_eq(ex("AC1 when passing FL200, reduce 250 knots, turn left heading 060"),
+    "ATALT AC1 FL200 SPD AC1 250 ; ATALT AC1 FL200 HDG AC1 60 LEFT")
+  asked(ex("AC2 when passing FL260 reduce 270 knots, then descend FL200"), "then after a condition's instruction")
+  asked(ex("AC2 when passing FL260 reduce 270 knots, and turn right heading 220"), "and after a condition's instruction")
+end
+
+-- Cycle 47 (g108): route editing by place names: "put <navaid's name> in the route" adds it; "move X to <Fix>"
+-- (a fix's name written as a proper name, near the aircraft) moves it there; a list of names one of which squawk
+-- cannot place is asked about that name; a word that names no place near is asked
+do
+  local _, ex = navscene({ "CRE EIN77 A320 53.6 -5.0 090 FL90 250", "ADDWPT EIN77 DUB",
+    "CRE BEE12 DH8D 53.3 -2.8 270 FL80 220", "ADDWPT BEE12 POL" }, "route editing by place names")
+  if ex then
+    check_eq(ex("BEE12 put Wallasey in the route"), "ADDWPT BEE12 WAL")
+    check_eq(ex("BEE12 put Wallasey into its route please"), "ADDWPT BEE12 WAL")
+    check_eq(ex("move EIN77 to Boyne"), "MOVE EIN77 BOYNE")
+    check_eq(ex("move EIN77 to Boyne at FL120"), "MOVE EIN77 BOYNE FL120")
+    asked(ex("move EIN77 to Nowhere"), "a proper name that names no fix near")
+    local q = ex("BEE12 add Talla and Sumin to the route")
+    check(q:find("'Talla'", 1, true) ~= nil and q:find("ADDWPT BEE12 SUMIN", 1, true) ~= nil, q)
+  end
+end
