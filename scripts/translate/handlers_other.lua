@@ -2802,6 +2802,11 @@ return function(H, f, compass)
         return self:direct(s)
       end
     end
+    -- (the switch typed by its name, "lnav on", stays beside a direct-to: G:direct_resumes_nav)
+    if self:word_in(s.b, s.e, "lnav") then
+      self.lnav_typed = self.lnav_typed or {}
+      self.lnav_typed[id] = true
+    end
     self:emit(cmd .. " " .. id .. " " .. on)
   end
   function m:lnav(s) nav(self, s, "LNAV") end
@@ -3468,9 +3473,22 @@ return function(H, f, compass)
     table.sort(qs, function(a, b) return a.b < b.b end)
     for _, q in ipairs(qs) do
       -- a plain value is the dimension named last before it ("zoner 3 zonedh 500")
+      local dim
       for i = q.b - 1, s.b, -1 do
-        if self:word(i, "@vertical") or self:registry_word(i) == "ZONEDH" then vertical = true break end
-        if self:word(i, "@zone_radius") or self:registry_word(i) == "ZONER" then vertical = false break end
+        if self:word(i, "@vertical") or self:registry_word(i) == "ZONEDH" then vertical, dim = true, "v" break end
+        if self:word(i, "@zone_radius") or self:registry_word(i) == "ZONER" then vertical, dim = false, "r" break end
+      end
+      -- a value whose unit is the other dimension's: a radius in metres is its conversion to 0.01 NM ("zoner
+      -- 9000 m" = 4.86 NM); a radius in feet or a level, or a half height as a distance, is asked
+      if (dim == "r" and q.kind == "alt") or (dim == "v" and q.kind == "dist") then
+        if dim == "r" and not q.fl and (self:word(q.e - 1, "@metres")) and q.number then
+          self:take(q)
+          self:emit("ZONER " .. f.num(math.floor(q.number.value / 1852 * 100 + 0.5) / 100))
+          goto next_value
+        end
+        return self:need(string.format("%s, in %s, should the protected zone have? I heard '%s'.",
+          dim == "r" and "What radius" or "What half-height", dim == "r" and "nautical miles" or "feet",
+          self:raw(q.b, q.e)))
       end
       if q.kind == "dist" or (q.kind == "plain" and not vertical) then self:emit("ZONER " .. f.num(q.value)) end
       if q.kind == "alt" or (q.kind == "plain" and vertical) then
@@ -3481,6 +3499,7 @@ return function(H, f, compass)
         self:emit("ZONEDH " .. f.num(v))
         heights[#heights + 1] = { v, #self.out, total }
       end
+      ::next_value::
     end
     -- ("(±1000 ft)": a height either side of the aircraft, the half height itself)
     for x = s.b, s.e - 1 do
