@@ -1222,24 +1222,31 @@ return function(H, f, compass)
     -- (a navaid named after a city whose airport lies beside it under a longer name, "direct Sanford": the
     -- SFB NDB and KSFB "ORLANDO SANFORD INTL" within lexicon.city_nm, is the one of the two aircraft `a`'s
     -- route holds; with neither held, asked about when the airport is large or medium, else the navaid:
-    -- "direct Perth" over Scotland is the PTH VOR, not the small Perth/Scone)
-    local function city_airport(navaid, phrase)
-      local w = self.world
-      if not (a and a.lat and phrase and w.airports_beside and w.airports_with_words) then return navaid end
+    -- "direct Perth" over Scotland is the PTH VOR, not the small Perth/Scone. The same for a place no aircraft
+    -- is sent to, found near the aircraft `r` ("getwind at Lille", "create ... at Lille"), and for the large
+    -- (else medium) airport beside navaids of the name when none beside bears it, the city's airport named
+    -- otherwise: "Lille" is the LL NDB or LFQQ "LESQUIN", asked; sim:airports_beside_navaids)
+    local function city_airport(navaid, phrase, r)
+      local w, p = self.world, a or r
+      if not (p and p.lat and phrase and w.airports_beside and w.airports_with_words) then return navaid end
       local held = {}
-      for _, r in ipairs(a.route or {}) do held[r:upper()] = true end
-      if a.dest and a.dest ~= "" then held[a.dest:upper()] = true end
+      for _, x in ipairs(a and a.route or {}) do held[x:upper()] = true end
+      if a and a.dest and a.dest ~= "" then held[a.dest:upper()] = true end
       if held[navaid:upper()] then return navaid end
       local bears = {}
-      for _, id in ipairs(w.airports_with_words(phrase, a.lat, a.lon, L.navaid_range_nm)) do bears[id] = true end
+      for _, id in ipairs(w.airports_with_words(phrase, p.lat, p.lon, L.navaid_range_nm)) do bears[id] = true end
       local named = {}
-      for _, id in ipairs(w.airports_beside(navaid, a.lat, a.lon, L.city_nm)) do
+      for _, id in ipairs(w.airports_beside(navaid, p.lat, p.lon, L.city_nm)) do
         if bears[id] then named[#named + 1] = id end
+      end
+      local class = w.airport_class and named[1] and w.airport_class(named[1])
+      if not (class == "LARGE" or class == "MEDIUM") and w.airports_beside_navaids then
+        named = w.airports_beside_navaids(phrase, p.lat, p.lon, L.navaid_range_nm)
       end
       for _, id in ipairs(named) do
         if held[id:upper()] then return id end
       end
-      local class = w.airport_class and named[1] and w.airport_class(named[1])
+      class = w.airport_class and named[1] and w.airport_class(named[1])
       if class == "LARGE" or class == "MEDIUM" then
         self:need(string.format("Which place is meant: the %s navaid or the %s airport?", navaid, named[1]))
       end
@@ -1247,7 +1254,7 @@ return function(H, f, compass)
     end
     for _, r in ipairs(near) do
       local id, phrase = self:navaid_by_name(b, e, r)
-      if id then return city_airport(id, phrase) end
+      if id then return city_airport(id, phrase, r) end
     end
     local airport = self:airport_by_name(b, e)
     if airport then return beside(airport) end
