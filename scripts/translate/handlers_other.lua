@@ -1241,8 +1241,16 @@ return function(H, f, compass)
       end
       local class = w.airport_class and named[1] and w.airport_class(named[1])
       if not (class == "LARGE" or class == "MEDIUM") and w.airports_beside_navaids then
-        named = w.airports_beside_navaids(phrase, p.lat, p.lon, L.navaid_range_nm)
+        local near_it = {}
+        for _, id in ipairs(w.airports_beside(navaid, p.lat, p.lon, L.city_navaid_nm)) do near_it[id] = true end
+        named = {}
+        for _, id in ipairs(w.airports_beside_navaids(phrase, p.lat, p.lon, L.navaid_range_nm)) do
+          if near_it[id] then named[#named + 1] = id end
+        end
       end
+      -- (found near another aircraft, a navaid that stands on the airport is that airport's place: "at Marseille",
+      -- the MJ NDB on LFML)
+      if not a and #w.airports_beside(navaid, p.lat, p.lon, 1) > 0 then return navaid end
       for _, id in ipairs(named) do
         if held[id:upper()] then return id end
       end
