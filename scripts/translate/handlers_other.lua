@@ -1223,9 +1223,10 @@ return function(H, f, compass)
     -- SFB NDB and KSFB "ORLANDO SANFORD INTL" within lexicon.city_nm, is the one of the two aircraft `a`'s
     -- route holds; with neither held, asked about when the airport is large or medium, else the navaid:
     -- "direct Perth" over Scotland is the PTH VOR, not the small Perth/Scone. The same for a place no aircraft
-    -- is sent to, found near the aircraft `r` ("getwind at Lille", "create ... at Lille"), and for the large
-    -- (else medium) airport beside navaids of the name when none beside bears it, the city's airport named
-    -- otherwise: "Lille" is the LL NDB or LFQQ "LESQUIN", asked; sim:airports_beside_navaids)
+    -- is sent to, found near the aircraft `r` ("getwind at Lille", "create ... at Lille"), and, for a city's name
+    -- (an airport bears it), for the large (else medium) airport within lexicon.city_navaid_nm of the navaid
+    -- when none beside bears the name, the city's airport named otherwise: "Lille" is the LL NDB or LFQQ
+    -- "LESQUIN", asked; sim:airports_beside_navaids)
     local function city_airport(navaid, phrase, r)
       local w, p = self.world, a or r
       if not (p and p.lat and phrase and w.airports_beside and w.airports_with_words) then return navaid end
@@ -1240,7 +1241,9 @@ return function(H, f, compass)
         if bears[id] then named[#named + 1] = id end
       end
       local class = w.airport_class and named[1] and w.airport_class(named[1])
-      if not (class == "LARGE" or class == "MEDIUM") and w.airports_beside_navaids then
+      -- (the name a city's: an airport bears it, a small one there, "LILLE/MARCQ-EN-BAROEUL"; "Canarsie", the CRI
+      -- VOR by KJFK, is no city's)
+      if not (class == "LARGE" or class == "MEDIUM") and next(bears) and w.airports_beside_navaids then
         local near_it = {}
         for _, id in ipairs(w.airports_beside(navaid, p.lat, p.lon, L.city_navaid_nm)) do near_it[id] = true end
         named = {}
@@ -3488,13 +3491,19 @@ return function(H, f, compass)
     table.sort(qs, function(a, b) return a.b < b.b end)
     for _, q in ipairs(qs) do
       -- a plain value is the dimension named last before it ("zoner 3 zonedh 500")
-      local dim
+      local dim, at
       for i = q.b - 1, s.b, -1 do
-        if self:word(i, "@vertical") or self:registry_word(i) == "ZONEDH" then vertical, dim = true, "v" break end
-        if self:word(i, "@zone_radius") or self:registry_word(i) == "ZONER" then vertical, dim = false, "r" break end
+        if self:word(i, "@vertical") or self:registry_word(i) == "ZONEDH" then vertical, dim, at = true, "v", i break end
+        if self:word(i, "@zone_radius") or self:registry_word(i) == "ZONER" then vertical, dim, at = false, "r", i break end
       end
-      -- a value whose unit is the other dimension's: a radius in metres is its conversion to 0.01 NM ("zoner
-      -- 9000 m" = 4.86 NM); a radius in feet or a level, or a half height as a distance, is asked
+      -- a value whose unit is the other dimension's, said straight after the dimension's name: a radius in metres
+      -- is its conversion to 0.01 NM ("zoner 9000 m" = 4.86 NM); a radius in feet or a level, or a half height as
+      -- a distance, is asked ("5 miles radius and 1000 ft half height" names each after its value)
+      for i = (at or q.b) + 1, q.b - 1 do
+        if self:word(i, "and") or not (self.t[i].filler or self.t[i].text == ":" or self:word(i, "to of at is =")) then
+          dim = nil
+        end
+      end
       if (dim == "r" and q.kind == "alt") or (dim == "v" and q.kind == "dist") then
         if dim == "r" and not q.fl and (self:word(q.e - 1, "@metres")) and q.number then
           self:take(q)
