@@ -1986,11 +1986,20 @@ function G:state(id)
 end
 
 -- The quantities in tokens [b, e), read once per range (mark_used forgets them).
+-- A distance said in kilometres is its conversion to nautical miles to 0.01 NM (9 km = 4.86 NM: the tenth the
+-- extractor rounds to moves a value said to the kilometre), from the number said.
+G.km_words = { km = true, kilometres = true, kilometers = true, kilometre = true, kilometer = true }
 function G:quantities(b, e)
   local key = b * 65536 + e
   local q = self.qcache[key]
   if not q then
     q = self.u:quantities(b, e)
+    for _, x in ipairs(q) do
+      local unit = self.t[x.e - 1]
+      if x.kind == "dist" and unit and G.km_words[unit.text] and x.number then
+        x.value = math.floor(x.number.value / 1.852 * 100 + 0.5) / 100
+      end
+    end
     self.qcache[key] = q
   end
   return q
@@ -2745,6 +2754,7 @@ function G:segments(b, e)
       end
     end
   end
+  self:switch_then_value(segs)
   -- "descend FL60 and from 10 NM before LNO 180 kt": a distance from a place opening a clause after the
   -- instruction's value ("and" or a comma before it), with a value after the place, is that value's
   -- condition alone: an instruction of its own (G:at_distance)
@@ -2786,6 +2796,24 @@ function G:segments(b, e)
     end
   end
   return segs
+end
+
+-- "hop7 lnav off, fl200", "vnav KLM12 on spd 250": a value with its own unit (a flight level, a speed, a Mach, a
+-- heading) said after an aircraft's navigation switch (LNAV, VNAV) and its ON/OFF is an instruction of its own (an
+-- "infer" segment cut from the switch's, in place in `segs`); a bare number stays the switch's leftover, asked.
+G.nav_switches = { lnav = true, vnav = true }
+function G:switch_then_value(segs)
+  for k = #segs, 1, -1 do
+    local sg = segs[k]
+    local q = G.nav_switches[sg.intent] and self:quantities(sg.trig + 1, sg.e)[1]
+    if q and (q.kind == "alt" and q.fl or q.kind == "speed" or q.kind == "mach" or q.kind == "heading")
+        and self:word_in(sg.trig, q.b, "on off") then
+      local cut = q.b
+      while cut - 1 > sg.trig and (self.t[cut - 1].kind == "punct" or self:word(cut - 1, "and")) do cut = cut - 1 end
+      table.insert(segs, k + 1, { intent = "infer", b = cut, trig = q.b, e = sg.e })
+      sg.e = cut
+    end
+  end
 end
 
 -- "turn EZY45 to 010 and AFR1234 to 200": an aircraft named after a value
@@ -3782,11 +3810,12 @@ end
 -- "resume own navigation direct TIMBA": BlueSky's DIRECT switches LNAV on, so
 -- an "LNAV id ON" followed by a DIRECT for the same aircraft is that DIRECT's (also one that waits
 -- for a condition: "after passing FL100 resume own navigation direct HEMEL": the condition the LNAV
--- waited for is the DIRECT's).
+-- waited for is the DIRECT's). The switch typed by its name ("hop7 lnav on dct LIL") is an instruction
+-- said, kept.
 function G:direct_resumes_nav()
   for c = #self.out, 1, -1 do
     local cond, id = self.out[c]:match("^(.-)LNAV (%S+) ON$")
-    if id and (cond == "" or cond:match("^AT%u* ")) then
+    if id and (cond == "" or cond:match("^AT%u* ")) and not (self.lnav_typed or {})[id] then
       for d = c + 1, #self.out do
         local o = self.out[d]
         local plain = o:match("^DIRECT " .. id:gsub("%p", "%%%0") .. " ")

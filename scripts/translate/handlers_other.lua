@@ -1236,24 +1236,42 @@ return function(H, f, compass)
     -- (a navaid named after a city whose airport lies beside it under a longer name, "direct Sanford": the
     -- SFB NDB and KSFB "ORLANDO SANFORD INTL" within lexicon.city_nm, is the one of the two aircraft `a`'s
     -- route holds; with neither held, asked about when the airport is large or medium, else the navaid:
-    -- "direct Perth" over Scotland is the PTH VOR, not the small Perth/Scone)
-    local function city_airport(navaid, phrase)
-      local w = self.world
-      if not (a and a.lat and phrase and w.airports_beside and w.airports_with_words) then return navaid end
+    -- "direct Perth" over Scotland is the PTH VOR, not the small Perth/Scone. The same for a place no aircraft
+    -- is sent to, found near the aircraft `r` ("getwind at Lille", "create ... at Lille"), and, for a city's name
+    -- (an airport bears it), for the large (else medium) airport within lexicon.city_navaid_nm of the navaid
+    -- when none beside bears the name, the city's airport named otherwise: "Lille" is the LL NDB or LFQQ
+    -- "LESQUIN", asked; sim:airports_beside_navaids)
+    local function city_airport(navaid, phrase, r)
+      local w, p = self.world, a or r
+      if not (p and p.lat and phrase and w.airports_beside and w.airports_with_words) then return navaid end
       local held = {}
-      for _, r in ipairs(a.route or {}) do held[r:upper()] = true end
-      if a.dest and a.dest ~= "" then held[a.dest:upper()] = true end
+      for _, x in ipairs(a and a.route or {}) do held[x:upper()] = true end
+      if a and a.dest and a.dest ~= "" then held[a.dest:upper()] = true end
       if held[navaid:upper()] then return navaid end
       local bears = {}
-      for _, id in ipairs(w.airports_with_words(phrase, a.lat, a.lon, L.navaid_range_nm)) do bears[id] = true end
+      for _, id in ipairs(w.airports_with_words(phrase, p.lat, p.lon, L.navaid_range_nm)) do bears[id] = true end
       local named = {}
-      for _, id in ipairs(w.airports_beside(navaid, a.lat, a.lon, L.city_nm)) do
+      for _, id in ipairs(w.airports_beside(navaid, p.lat, p.lon, L.city_nm)) do
         if bears[id] then named[#named + 1] = id end
       end
+      local class = w.airport_class and named[1] and w.airport_class(named[1])
+      -- (the name a city's: an airport bears it, a small one there, "LILLE/MARCQ-EN-BAROEUL"; "Canarsie", the CRI
+      -- VOR by KJFK, is no city's)
+      if not (class == "LARGE" or class == "MEDIUM") and next(bears) and w.airports_beside_navaids then
+        local near_it = {}
+        for _, id in ipairs(w.airports_beside(navaid, p.lat, p.lon, L.city_navaid_nm)) do near_it[id] = true end
+        named = {}
+        for _, id in ipairs(w.airports_beside_navaids(phrase, p.lat, p.lon, L.navaid_range_nm)) do
+          if near_it[id] then named[#named + 1] = id end
+        end
+      end
+      -- (found near another aircraft, a navaid that stands on the airport is that airport's place: "at Marseille",
+      -- the MJ NDB on LFML)
+      if not a and #w.airports_beside(navaid, p.lat, p.lon, 1) > 0 then return navaid end
       for _, id in ipairs(named) do
         if held[id:upper()] then return id end
       end
-      local class = w.airport_class and named[1] and w.airport_class(named[1])
+      class = w.airport_class and named[1] and w.airport_class(named[1])
       if class == "LARGE" or class == "MEDIUM" then
         self:need(string.format("Which place is meant: the %s navaid or the %s airport?", navaid, named[1]))
       end
@@ -1261,7 +1279,7 @@ return function(H, f, compass)
     end
     for _, r in ipairs(near) do
       local id, phrase = self:navaid_by_name(b, e, r)
-      if id then return city_airport(id, phrase) end
+      if id then return city_airport(id, phrase, r) end
     end
     local airport = self:airport_by_name(b, e)
     if airport then return beside(airport) end
@@ -2816,6 +2834,11 @@ return function(H, f, compass)
         return self:direct(s)
       end
     end
+    -- (the switch typed by its name, "lnav on", stays beside a direct-to: G:direct_resumes_nav)
+    if self:word_in(s.b, s.e, "lnav") then
+      self.lnav_typed = self.lnav_typed or {}
+      self.lnav_typed[id] = true
+    end
     self:emit(cmd .. " " .. id .. " " .. on)
   end
   function m:lnav(s) nav(self, s, "LNAV") end
@@ -3482,9 +3505,28 @@ return function(H, f, compass)
     table.sort(qs, function(a, b) return a.b < b.b end)
     for _, q in ipairs(qs) do
       -- a plain value is the dimension named last before it ("zoner 3 zonedh 500")
+      local dim, at
       for i = q.b - 1, s.b, -1 do
-        if self:word(i, "@vertical") or self:registry_word(i) == "ZONEDH" then vertical = true break end
-        if self:word(i, "@zone_radius") or self:registry_word(i) == "ZONER" then vertical = false break end
+        if self:word(i, "@vertical") or self:registry_word(i) == "ZONEDH" then vertical, dim, at = true, "v", i break end
+        if self:word(i, "@zone_radius") or self:registry_word(i) == "ZONER" then vertical, dim, at = false, "r", i break end
+      end
+      -- a value whose unit is the other dimension's, said straight after the dimension's name: a radius in metres
+      -- is its conversion to 0.01 NM ("zoner 9000 m" = 4.86 NM); a radius in feet or a level, or a half height as
+      -- a distance, is asked ("5 miles radius and 1000 ft half height" names each after its value)
+      for i = (at or q.b) + 1, q.b - 1 do
+        if self:word(i, "and") or not (self.t[i].filler or self.t[i].text == ":" or self:word(i, "to of at is =")) then
+          dim = nil
+        end
+      end
+      if (dim == "r" and q.kind == "alt") or (dim == "v" and q.kind == "dist") then
+        if dim == "r" and not q.fl and (self:word(q.e - 1, "@metres")) and q.number then
+          self:take(q)
+          self:emit("ZONER " .. f.num(math.floor(q.number.value / 1852 * 100 + 0.5) / 100))
+          goto next_value
+        end
+        return self:need(string.format("%s, in %s, should the protected zone have? I heard '%s'.",
+          dim == "r" and "What radius" or "What half-height", dim == "r" and "nautical miles" or "feet",
+          self:raw(q.b, q.e)))
       end
       if q.kind == "dist" or (q.kind == "plain" and not vertical) then self:emit("ZONER " .. f.num(q.value)) end
       if q.kind == "alt" or (q.kind == "plain" and vertical) then
@@ -3495,6 +3537,7 @@ return function(H, f, compass)
         self:emit("ZONEDH " .. f.num(v))
         heights[#heights + 1] = { v, #self.out, total }
       end
+      ::next_value::
     end
     -- ("(±1000 ft)": a height either side of the aircraft, the half height itself)
     for x = s.b, s.e - 1 do

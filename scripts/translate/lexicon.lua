@@ -905,6 +905,9 @@ return {
   -- an airport this near a navaid named after a city [NM] is one of that city's ("Montreal": CYUL, 4 NM from the
   -- MONTREAL NDB; NavDb::kBesideNavaidNm)
   beside_navaid_nm = 10,
+  -- a large or medium airport this near a navaid named after a city [NM], its own name another, is where that
+  -- city's name may mean ("Lille": LFQQ "LESQUIN", 4.9 NM from the LL NDB; not EGLC, 9 NM from LAMBOURNE)
+  city_navaid_nm = 6,
   -- a city said as a destination or origin and found by no airport near the aircraft is its region's when its
   -- nearest airport lies within region_nm [NM] of the aircraft and every other airport of that name
   -- region_ratio times as far or farther ("destination Cordoba" from Buenos Aires: SACO 350 NM, not LEBA,

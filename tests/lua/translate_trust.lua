@@ -3009,8 +3009,8 @@ do
   check_eq(ex("TX4 A320 right behind PH101 at 8 nm, same course, same level, same speed"),
     "CRE TX4 A320 51 2.788131 90 FL220 260")
   check_eq(ex("spawn TX6 A320 20 nm in front of SAS7, head-on, same level, 280 kt"), "CRE TX6 A320 49.666667 6 0 FL300 280")
-  -- (37 km is read as 20.0 NM, to 0.1 NM)
-  check_eq(ex("TX7 A320 37 km ahead of PH101, opposite direction, FL220, 280 kt"), "CRE TX7 A320 51 3.529672 270 FL220 280")
+  -- (37 km is read as 19.98 NM, to 0.01 NM)
+  check_eq(ex("TX7 A320 37 km ahead of PH101, opposite direction, FL220, 280 kt"), "CRE TX7 A320 51 3.529142 270 FL220 280")
   check_eq(ex("put an intruder 15 nm ahead of SAS7"), "ASK To create the aircraft I need its callsign, aircraft type. What should they be?")
   check_eq(ex("TX5 A320 15 nm ahead of SAS7 at FL300, 280 kt"), "ASK What heading should TX5 have?")
 end
@@ -10050,5 +10050,49 @@ do
     asked(ex("move EIN77 to Nowhere"), "a proper name that names no fix near")
     local q = ex("BEE12 add Talla and Sumin to the route")
     check(q:find("'Talla'", 1, true) ~= nil and q:find("ADDWPT BEE12 SUMIN", 1, true) ~= nil, q)
+end
+
+-- Cycle 47 (hz52): a navigation switch typed by its TrafScript name in a terse line ("lnav on", "vnav off") is an
+-- instruction said: kept beside a direct-to (which turns LNAV on too); a level, speed or heading with its own unit
+-- after the switch is an instruction of its own; a bare number there is asked. "resume own navigation direct X",
+-- said in words, stays the direct-to alone.
+do
+  local _, ex = scene({ "CRE KLM12 A320 52.0 4.0 090 FL250 280", "DEFWPT TOPAX 52.1 4.6", "ADDWPT KLM12 TOPAX" })
+  check_eq(ex("klm12 lnav on, dct topax"), "LNAV KLM12 ON ; DIRECT KLM12 TOPAX")
+  check_eq(ex("lnav klm12 on and then direct topax"), "LNAV KLM12 ON ; DIRECT KLM12 TOPAX")
+  check_eq(ex("klm12 resume own navigation direct topax"), "DIRECT KLM12 TOPAX")
+  check_eq(ex("klm12 vnav off fl180"), "VNAV KLM12 OFF ; ALT KLM12 FL180")
+  check_eq(ex("vnav klm12 on, spd 250"), "VNAV KLM12 ON ; SPD KLM12 250")
+  check_eq(ex("klm12 lnav off, hdg 120, fl200"), "LNAV KLM12 OFF ; HDG KLM12 120 ; ALT KLM12 FL200")
+  asked(ex("klm12 lnav off 9000"), "a bare number after a navigation switch")
+end
+
+-- Cycle 47 (hz52): a distance said in kilometres is its conversion to 0.01 NM (9 km = 4.86 NM, not the tenth 4.9);
+-- a protected zone radius said in metres is converted the same; one in feet, or a half height said as a
+-- distance, is asked
+do
+  local _, ex = scene({ "CRE KLM12 A320 52.0 4.0 090 FL250 280" })
+  check_eq(ex("zoner 7 km"), "ZONER 3.78")
+  check_eq(ex("protected zone radius 11 kilometres"), "ZONER 5.94")
+  check_eq(ex("zoner 10 km"), "ZONER 5.4")
+  check_eq(ex("pz radius 6500 m"), "ZONER 3.51")
+  check_eq(ex("zonedh 300 m"), "ZONEDH 984")
+  asked(ex("zoner 3000 ft"), "a zone radius in feet")
+  asked(ex("zonedh 0.5 km"), "a zone half height as a distance")
+end
+
+-- Cycle 47 (hz52): a place's name that navaids bear, beside a large or medium airport the navdata names otherwise
+-- (Lille: the LL NDB, LFQQ "LESQUIN"), is asked the same for every command that takes a place (GETWIND, MOVE,
+-- CRE at, DIRECT), with or without an aircraft sent there; a code stays exact
+do
+  local _, ex = navscene({ "CRE AFR12 A321 50.4 3.3 330 FL210 270" }, "a place a navaid and an airport share")
+  if ex then
+    local q = ex("getwind at Lille")
+    check(q:match("^ASK") and q:find("LFQQ", 1, true) and q:find("LL", 1, true), q)
+    asked(ex("what's the wind over lille"), "a wind at a shared place name")
+    asked(ex("move AFR12 to Lille"), "a move to a shared place name")
+    asked(ex("AFR12 direct Lille"), "a direct-to a shared place name")
+    check_eq(ex("getwind at LFQQ"), "GETWIND LFQQ")
+    check_eq(ex("getwind at Frankfurt"), "GETWIND EDDF")
   end
 end
