@@ -6191,21 +6191,27 @@ end
 -- 60, dtmult 4"), so which value, and from when, is asked. (G.set_once: the commands of one value and no aircraft.)
 G.set_once = { DTMULT = "rate should the simulation run at", ZONER = "protected zone radius should be used",
   ZONEDH = "protected zone half height should be used", DTLOOK = "look-ahead time should be used" }
-function G:setting_twice()
+-- M.setting_twice(lines) -> the question for a list of commands, or nil (the list of typed command clauses is
+-- asked the same: graph.lua).
+function M.setting_twice(lines)
   local first = {}
-  for _, line in ipairs(self.out) do
-    local name, value = line:match("^(%u+) (%S+)$")
+  for _, line in ipairs(lines) do
+    local name, value = line:upper():match("^(%u+) (%S+)$")
     if name and G.set_once[name] then
       if first[name] and first[name] ~= value then
-        return self:need(string.format("I have %s. Which %s: %s or %s, and from when? Please say the time of the "
-          .. "second (\"in 5 minutes\") or one value.", table.concat(self.out, " ; "), G.set_once[name], first[name],
-          value))
+        return string.format("I have %s. Which %s: %s or %s, and from when? Please say the time of the "
+          .. "second (\"in 5 minutes\") or one value.", table.concat(lines, " ; "), G.set_once[name], first[name],
+          value)
       end
       first[name] = value
-    elseif line:match("^FF") then
+    elseif line:upper():match("^FF") then
       first = {}
     end
   end
+end
+function G:setting_twice()
+  local q = M.setting_twice(self.out)
+  if q then return self:need(q) end
 end
 
 -- "Alaska 1294 and United 1562, descend and maintain 10000 and 9000 respectively": with "respectively",

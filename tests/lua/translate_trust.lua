@@ -9908,3 +9908,13 @@ do
     "ASK I have HDG AC101 120 ; ALT AC101 FL250. What does 'ist' mean?")
   asked(ex("ac101 descend fl250 gut"), "an aside straight after a value")
 end
+
+-- Cycle 47 (hz51): one setting given two values in a row in a list of typed command clauses is asked, as in English;
+-- a fast-forward between them makes them one after the other
+do
+  local _, ex = scene({ "CRE AC101 A320 52.0 4.0 090 FL300 280" })
+  asked(ex("dtmult 6, then dtmult 2"), "two rates typed in a row")
+  asked(ex("ZONER 4 ; ZONER 6"), "two zone radii typed in a row")
+  check_eq(ex("dtmult 6, ff 120, dtmult 2"), "DTMULT 6 ; FF 120 ; DTMULT 2")
+  check_eq(ex("dtmult 6, ALT AC101 FL320"), "DTMULT 6 ; ALT AC101 FL320")
+end
