@@ -5412,6 +5412,38 @@ function G:resumes_instruction(i)
   local q = self:quantities(k, k + 2)[1]
   return self.triggers[k] == true or (q ~= nil and q.b == k)
 end
+-- "KLM12 speed 250 then resume", "..., and continue": "resume" or "continue" closing the request with nothing of its
+-- own (a courtesy word at most), read as OP, after an aircraft's instruction most likely tells that aircraft to resume
+-- something (its own navigation, its normal speed): asked, naming the aircraft. "..., then resume the sim" stays OP.
+function G:resume_after_instruction()
+  local op
+  for c, line in ipairs(self.out) do
+    if line == "OP" then op = c end
+  end
+  if not op then return end
+  local id
+  for c = 1, op - 1 do
+    local cid = self.out[c]:match("^%u+ (%S+)")
+    if cid and self:state(cid) then id = cid end
+  end
+  if not id then return end
+  for i = #self.t, 1, -1 do
+    local t = self.t[i]
+    if self:word(i, "resume continue") then
+      local k = i + 1
+      while self.t[k] and (self.t[k].kind == "punct" or self.t[k].filler or self:word(k, "please now")) do k = k + 1 end
+      if k <= #self.t then return end
+      local others = {}
+      for c, line in ipairs(self.out) do
+        if c ~= op then others[#others + 1] = line end
+      end
+      return self:need(string.format("I have %s. Should %s resume something of its own (its navigation, its normal "
+        .. "speed), or the simulation resume? Please say which.", table.concat(others, " ; "), id))
+    elseif not (t.kind == "punct" or t.filler or self:word(i, "please now")) then
+      return
+    end
+  end
+end
 -- (G.bare_left[w]: the kind of a word of lexicon.accounted.bare_asked, "noted" for one of a bare phrase of
 -- lexicon.not_simulated, left here when said before the instruction: G:said_bare; G.bare_asks[kind][what]: true
 -- when a word of that kind said bare after `what`, "start", "aircraft" or "value", is asked)
@@ -7646,6 +7678,7 @@ function M.translate(text, world)
   g:same_again(same)
   if not g.ask then g:forgotten() end
   if not g.ask then g:described() end
+  if not g.ask then g:resume_after_instruction() end
   -- "... actually no, just the descent" (G:self_corrected): only the commands of that kind stand
   if not g.ask and g.kept then
     local kept = {}

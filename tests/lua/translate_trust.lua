@@ -9918,3 +9918,15 @@ do
   check_eq(ex("dtmult 6, ff 120, dtmult 2"), "DTMULT 6 ; FF 120 ; DTMULT 2")
   check_eq(ex("dtmult 6, ALT AC101 FL320"), "DTMULT 6 ; ALT AC101 FL320")
 end
+
+-- Cycle 47 (hz51): "resume"/"continue" closing a request after an aircraft's instruction most likely tells the aircraft
+-- to resume something: asked, naming it; the simulation named, or no aircraft instructed, stays OP
+do
+  local _, ex = scene({ "CRE AC101 A320 52.0 4.0 090 FL300 280" })
+  check_eq(ex("ac101 reduce 240 and then resume"), "ASK I have SPD AC101 240. Should AC101 resume something of its "
+    .. "own (its navigation, its normal speed), or the simulation resume? Please say which.")
+  asked(ex("ac101 heading 200, then continue please"), "continue after a heading")
+  check_eq(ex("ac101 reduce 240, then resume the simulation"), "SPD AC101 240 ; OP")
+  check_eq(ex("pause, then resume"), "HOLD ; OP")
+  check_eq(ex("ac101 reduce 240 then run"), "SPD AC101 240 ; OP")
+end
