@@ -5412,9 +5412,54 @@ function G:resumes_instruction(i)
   local q = self:quantities(k, k + 2)[1]
   return self.triggers[k] == true or (q ~= nil and q.b == k)
 end
+-- "KLM12 climb FL340, show me both", "..., then display KLM12", "..., let me see both": a verb of showing that no command was read from, said
+-- after an instruction, is never dropped: the aircraft named alone after it (and only those, joined by "and", to the
+-- end of the request) are shown where they are (POS); anything else ("both", "them") is asked.
+-- (a request that already shows something, "route please, show it", "show me the constraints X has at Y", is read as
+-- it is; so is a noun, "off the display")
+G.showing = { POS = true, LISTRTE = true, TRAIL = true }
+function G:shown_after_instruction()
+  if #self.out == 0 then return end
+  for _, line in ipairs(self.out) do
+    local name = line:match("^(%u+)")
+    if G.showing[name] or (name == "AT" and line:match("^AT %S+ %S+$")) then return end
+  end
+  local explained = self.explained or {}
+  for i, t in ipairs(self.t) do
+    if (self:word(i, "show display") or (self:word(i, "see") and self:word(i - 1, "me us"))) and not self.u:used(i) and not self.triggers[i] and not explained[i]
+        and not self.noted[i] and not self:in_reason(i) and not self:word(i - 1, "the a on off of to") then
+      local k = self:skip_fillers(self:word(i + 1, "me us") and i + 2 or i + 1)
+      local ids = {}
+      while true do
+        local r = self:refs_in(k, k + 1, "aircraft")[1]
+        if not (r and r.exists and r.b == k) then break end
+        ids[#ids + 1] = r.name:upper()
+        k = self:skip_fillers(r.e)
+        if self:word(k, "and") then k = self:skip_fillers(k + 1) end
+      end
+      if #ids > 0 and k > #self.t then
+        for _, id in ipairs(ids) do self.out[#self.out + 1] = "POS " .. id end
+        for x = i, #self.t do self.noted[x] = true end
+        return
+      end
+      -- (a command read from the words after it, "show trails", "show me its position", is what it shows)
+      local e, read = i + 1, false
+      while self.t[e] and self.t[e].kind ~= "punct" and not self:word(e, "@then_words") do
+        read = read or self.triggers[e] == true
+        e = e + 1
+      end
+      if not read then
+        return self:need(string.format("I have %s. Which aircraft should '%s' show? Please name them.",
+          table.concat(self.out, " ; "), self:raw(i, e)))
+      end
+    end
+  end
+end
 -- "KLM12 speed 250 then resume", "..., and continue": "resume" or "continue" closing the request with nothing of its
--- own (a courtesy word at most), read as OP, after an aircraft's instruction most likely tells that aircraft to resume
--- something (its own navigation, its normal speed): asked, naming the aircraft. "..., then resume the sim" stays OP.
+-- own (a courtesy word at most), read as OP, straight after an aircraft's instruction (no pause before it, the aircraft
+-- neither moved, created nor deleted: G.sim_handling) most likely tells that aircraft to resume something (its own
+-- navigation, its normal speed): asked, naming the aircraft. "..., then resume the sim" stays OP.
+G.sim_handling = { DEL = true, MOVE = true, CRE = true }
 function G:resume_after_instruction()
   local op
   for c, line in ipairs(self.out) do
@@ -5423,8 +5468,10 @@ function G:resume_after_instruction()
   if not op then return end
   local id
   for c = 1, op - 1 do
-    local cid = self.out[c]:match("^%u+ (%S+)")
-    if cid and self:state(cid) then id = cid end
+    local name, cid = self.out[c]:match("^(%u+) (%S+)")
+    -- (a pause before it is what resumes: "pause, X descend FL270, resume"; so after an aircraft placed or removed)
+    if self.out[c] == "HOLD" then return end
+    id = cid and self:state(cid) and not G.sim_handling[name] and cid or nil
   end
   if not id then return end
   for i = #self.t, 1, -1 do
@@ -7679,6 +7726,7 @@ function M.translate(text, world)
   if not g.ask then g:forgotten() end
   if not g.ask then g:described() end
   if not g.ask then g:resume_after_instruction() end
+  if not g.ask then g:shown_after_instruction() end
   -- "... actually no, just the descent" (G:self_corrected): only the commands of that kind stand
   if not g.ask and g.kept then
     local kept = {}

@@ -9929,4 +9929,17 @@ do
   check_eq(ex("ac101 reduce 240, then resume the simulation"), "SPD AC101 240 ; OP")
   check_eq(ex("pause, then resume"), "HOLD ; OP")
   check_eq(ex("ac101 reduce 240 then run"), "SPD AC101 240 ; OP")
+  check_eq(ex("pause, ac101 reduce 240, then resume"), "HOLD ; SPD AC101 240 ; OP")
+  check_eq(ex("remove ac101 and continue"), "DEL AC101 ; OP")
+end
+
+-- Cycle 47 (hz51): a verb of showing after an instruction is never dropped: the aircraft named alone after it are
+-- shown (POS); "both", "them" or anything else no command was read from is asked
+do
+  local _, ex = scene({ "CRE AC101 A320 52.0 4.0 090 FL300 280", "CRE AC202 B738 52.3 4.3 180 FL200 250" })
+  asked(ex("ac101 descend fl260, show me both"), "both after an instruction naming one aircraft")
+  asked(ex("ac202 heading 050 and let me see them"), "them after an instruction")
+  check_eq(ex("ac101 descend fl260 then display ac202"), "ALT AC101 FL260 ; POS AC202")
+  check_eq(ex("ac101 descend fl260 then show me ac101 and ac202"), "ALT AC101 FL260 ; POS AC101 ; POS AC202")
+  check_eq(ex("ac101 descend fl260 and show trails"), "ALT AC101 FL260 ; TRAIL ON")
 end
