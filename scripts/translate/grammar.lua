@@ -5412,6 +5412,62 @@ function G:resumes_instruction(i)
   local q = self:quantities(k, k + 2)[1]
   return self.triggers[k] == true or (q ~= nil and q.b == k)
 end
+-- "is KLM12 at FL300?", "what's RYR2BA at FL300", "are X and Y level at 240?", "does X climb FL340?": a clause opening
+-- with a word of lexicon.state_question and the aircraft it asks about (joined by "and") asks about their state, never
+-- instructs them. Said alone (to its "?" and the end) it is read as POS of each; with anything else after it, or an
+-- instruction of the request naming one of them outside it, it is asked.
+-- (the commands a question's values are misread as: G:state_question)
+G.asked_values = { ALT = true, SPD = true, HDG = true, VS = true }
+G.question_opens, G.question_with_is = set_of(lexicon.state_question.opens), set_of(lexicon.state_question.with_is)
+function G:state_question()
+  for i = 1, #self.t do
+    local prev = self.t[i - 1]
+    local opens = (not prev or prev.kind == "punct" or prev.filler or self:word(i - 1, "and @then_words"))
+    local k = opens and (self:word(i, G.question_opens) and i + 1
+      or (self:word(i, G.question_with_is) and self:word(i + 1, "is") and i + 2)) or nil
+    if k and self:word(k, "that the") then k = k + 1 end
+    local r = k and self:refs_in(k, k + 1, "aircraft")[1]
+    -- (the aircraft called before the question, asked about as "you")
+    local called = k and self:word(k, "you") and self:refs_in(1, i, "aircraft")
+    called = called and called[#called]
+    if called and not (called.exists and called.b == self:skip_fillers(1) and self:skip_fillers(called.e) == i) then
+      called = nil
+    end
+    if (r and r.b == k and r.exists) or called then
+      local ids, seen = {}, {}
+      if called then
+        ids[1], seen[called.name:upper()], k = called.name:upper(), true, k + 1
+      end
+      while not called and r and r.b == k and r.exists do
+        if not seen[r.name:upper()] then ids[#ids + 1], seen[r.name:upper()] = r.name:upper(), true end
+        k = r.e
+        if self:word(k, "and") then k = k + 1 end
+        r = self:refs_in(k, k + 1, "aircraft")[1]
+      end
+      local e = k
+      while self.t[e] and not (self.t[e].kind == "punct" and self.t[e].text ~= ",") do e = e + 1 end
+      local rest = self:skip_fillers(e)
+      local alone = (called or i == self:skip_fillers(1)) and rest > #self.t
+      local instructed = false
+      for _, line in ipairs(self.out) do
+        local name, cid = line:match("^(%u+) (%S+)")
+        instructed = instructed or (G.asked_values[name] and seen[cid:upper()] == true)
+      end
+      -- (what a question reads that is no value's instruction stands: "what's X's destination?" DEST X)
+      if instructed and alone then
+        self.out = {}
+        for _, id in ipairs(ids) do self.out[#self.out + 1] = "POS " .. id end
+        for x = 1, #self.t do self.noted[x] = true end
+        for _, q in ipairs(self:quantities(1, #self.t + 1)) do self:take(q) end
+        return
+      elseif instructed then
+        return self:need(string.format("'%s' asks about %s: a question, no instruction. What should %s do?",
+          self:raw(i, e), table.concat(ids, " and "), table.concat(ids, " and ")))
+      end
+    end
+  end
+end
+
 -- "KLM12 climb FL340, show me both", "..., then display KLM12", "..., let me see both": a verb of showing that no command was read from, said
 -- after an instruction, is never dropped: the aircraft named alone after it (and only those, joined by "and", to the
 -- end of the request) are shown where they are (POS); anything else ("both", "them") is asked.
@@ -7725,6 +7781,7 @@ function M.translate(text, world)
   g:same_again(same)
   if not g.ask then g:forgotten() end
   if not g.ask then g:described() end
+  if not g.ask then g:state_question() end
   if not g.ask then g:resume_after_instruction() end
   if not g.ask then g:shown_after_instruction() end
   -- "... actually no, just the descent" (G:self_corrected): only the commands of that kind stand

@@ -9943,3 +9943,18 @@ do
   check_eq(ex("ac101 descend fl260 then show me ac101 and ac202"), "ALT AC101 FL260 ; POS AC101 ; POS AC202")
   check_eq(ex("ac101 descend fl260 and show trails"), "ALT AC101 FL260 ; TRAIL ON")
 end
+
+-- Cycle 47 (hz51): a question about an aircraft ("is X at FL300?", "what's X at FL300", "does X climb FL340?") is no
+-- instruction: alone it is read as POS of the aircraft; with an instruction for it elsewhere it is asked
+do
+  local _, ex = scene({ "CRE AC101 A320 52.0 4.0 090 FL300 280", "CRE AC202 B738 52.3 4.3 180 FL200 250" })
+  check_eq(ex("is ac202 at fl200?"), "POS AC202")
+  check_eq(ex("whats ac101 at fl310"), "POS AC101")
+  check_eq(ex("are ac101 and ac202 on heading 180?"), "POS AC101 ; POS AC202")
+  check_eq(ex("does ac202 descend to fl150?"), "POS AC202")
+  check_eq(ex("ac101, are you at fl300?"), "POS AC101")
+  check_eq(ex("is that ac202 at 250 knots?"), "POS AC202")
+  asked(ex("ac101 climb fl320, is ac202 at fl200?"), "a question after an instruction")
+  asked(ex("is ac202 at fl200? descend it to fl180"), "an instruction after a question")
+  check_eq(ex("have ac202 descend fl180"), "ALT AC202 FL180")
+end
