@@ -5412,6 +5412,65 @@ function G:resumes_instruction(i)
   local q = self:quantities(k, k + 2)[1]
   return self.triggers[k] == true or (q ~= nil and q.b == k)
 end
+-- "no restriction on speed, reduce 250", "no speed restriction, speed 250", "cancel speed restrictions, 250 knots",
+-- "resume normal speed, 250 knots": a speed restriction lifted, then a speed given in one request contradict: which
+-- stands is asked. A speed given first ("speed 290, no speed restriction") is flown free of other limits: read.
+function G:speed_lifted_and_given()
+  local given = {}
+  for _, line in ipairs(self.out) do
+    local v = line:match("^SPD %S+ M?(%d*%.?%d+)$")
+    if v then given[tonumber(v)] = true end
+  end
+  if not next(given) then return end
+  -- true when a speed of the request is said after token e, no correction between ("cancel the speed restriction...
+  -- no, just maintain 250": the lifting taken back)
+  local function given_after(e)
+    for _, q in ipairs(self:quantities(e, #self.t + 1)) do
+      if given[q.value] and not self:word_in(e, q.b, "@correction just") then return true end
+    end
+    return false
+  end
+  for i = 1, #self.t do
+    if self:word(i, "resume resuming") and self:word(i + 1, "normal") and self:word(i + 2, "speed") and given_after(i + 3) then
+      return self:need(string.format("I have %s. Which stands: '%s', or the speed given?", table.concat(self.out, " ; "),
+        self:raw(i, i + 3)))
+    end
+    if self:word(i, "restriction restrictions limit limits restricted") then
+      local b = i
+      if self:word(b - 1, "speed mach") then
+        b = b - 1
+      else
+        local k = self:word(i + 1, "on") and (self:word(i + 2, "the your its") and i + 3 or i + 2)
+        if not (k and self:word(k, "speed mach")) then b = nil end
+      end
+      if b and self:word(b - 1, "atc") then b = b - 1 end
+      -- ("KLM12 no speed restriction": a "no" after a callsign reads as a correction)
+      local lift = b and self:word_in(math.max(1, b - 3), b,
+        "no cancel cancelled canceled lift lifted remove delete without correction")
+      if lift and not self:word_in(math.max(1, b - 4), b, "expect") then
+        local e = i + 1
+        while e < b do e = e + 1 end
+        if self:word(i + 1, "on") then e = (self:word(i + 2, "the your its") and i + 3 or i + 2) + 1 end
+        while self.t[e] and self.t[e].kind ~= "punct" and not self:word(e, "and @then_words") and not self.triggers[e] do
+          e = e + 1
+        end
+        if not given_after(e) then return end
+        local a = b
+        while a > 1 and not (self.t[a - 1].kind == "punct" or self.triggers[a - 1] or self:has_ref(a - 1, a, "aircraft")) do
+          a = a - 1
+        end
+        if self.t[a - 1] and self.t[a - 1].kind == "punct" and self:word(a - 2, "correction") then a = a - 2 end
+        local said = {}
+        for x = a, e - 1 do
+          if self.t[x].kind ~= "punct" then said[#said + 1] = self:word(x, "correction") and "no" or self.t[x].raw end
+        end
+        return self:need(string.format("I have %s. Which stands: '%s', or the speed given?",
+          table.concat(self.out, " ; "), table.concat(said, " ")))
+      end
+    end
+  end
+end
+
 -- "is KLM12 at FL300?", "what's RYR2BA at FL300", "are X and Y level at 240?", "does X climb FL340?": a clause opening
 -- with a word of lexicon.state_question and the aircraft it asks about (joined by "and") asks about their state, never
 -- instructs them. Said alone (to its "?" and the end) it is read as POS of each; with anything else after it, or an
@@ -6225,6 +6284,7 @@ function G:not_simulated()
             or (self:word(e, "no") and self:word(e + 1, "need needs")) then
           break
         end
+        if class.stops_at_value and comma and x.kind == "number" then break end
         if class.one_value and x.kind == "number" then
           e = e + 1
           break
@@ -7782,6 +7842,7 @@ function M.translate(text, world)
   if not g.ask then g:forgotten() end
   if not g.ask then g:described() end
   if not g.ask then g:state_question() end
+  if not g.ask then g:speed_lifted_and_given() end
   if not g.ask then g:resume_after_instruction() end
   if not g.ask then g:shown_after_instruction() end
   -- "... actually no, just the descent" (G:self_corrected): only the commands of that kind stand

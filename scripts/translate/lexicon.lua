@@ -976,12 +976,13 @@ return {
         .. "approach runway rwy l r c" },
     -- "climb FL250, cancel speed restriction", "cancel level restrictions": a restriction lifted, which squawk
     -- (flying each instruction as given) does not keep
+    -- (a value after a comma is no part of it, `stops_at_value`: "cancel speed restrictions, 250 knots" gives a speed)
     { what = "restrictions lifted", words = "cancel", near = { "restriction", "restrictions" },
-      through = "speed level altitude" },
+      through = "speed level altitude", stops_at_value = true },
     -- "EZY45KL resume normal speed": said to an aircraft, its speed restriction lifted (said alone, "resume
     -- normal speed" is the simulation's rate, DTMULT 1)
     { what = "restrictions lifted", words = "resume", near = { "speed" }, window = 2, after_callsign = true,
-      not_before = "speed", through = "speed" },
+      not_before = "speed", through = "speed", stops_at_value = true },
     -- "turn right heading 330, vectors for runway 28", "vectoring for the ILS": what a vector is for, a
     -- runway squawk does not fly to
     { what = "approaches to a runway", words = "vectors vectoring vector",

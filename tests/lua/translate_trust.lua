@@ -9958,3 +9958,16 @@ do
   asked(ex("is ac202 at fl200? descend it to fl180"), "an instruction after a question")
   check_eq(ex("have ac202 descend fl180"), "ALT AC202 FL180")
 end
+
+-- Cycle 47 (hz51): a speed restriction lifted, then a speed given in the same request contradict: asked which stands;
+-- a speed given first and the restriction lifted after it ("speed 290, no speed restriction") is read
+do
+  local _, ex = scene({ "CRE AC101 A320 52.0 4.0 090 FL300 280" })
+  check_eq(ex("ac101 no restrictions on your speed, slow to 230"),
+    "ASK I have SPD AC101 230. Which stands: 'no restrictions on your speed', or the speed given?")
+  asked(ex("ac101 no speed restriction, speed 230"), "no speed restriction, then a speed")
+  asked(ex("ac101 cancel speed restriction, 230 knots"), "a speed after a comma is no part of the cancelled restriction")
+  asked(ex("ac101 resume normal speed, 230 knots"), "normal speed resumed, then a speed")
+  check_eq(ex("ac101 increase speed 300 knots, no speed restriction"), "SPD AC101 300")
+  check_eq(ex("ac101 descend fl200, no speed restriction"), "ALT AC101 FL200")
+end
