@@ -5482,8 +5482,8 @@ function G:state_question()
   for i = 1, #self.t do
     local prev = self.t[i - 1]
     local opens = (not prev or prev.kind == "punct" or prev.filler or self:word(i - 1, "and @then_words"))
-    local k = opens and (self:word(i, G.question_opens) and i + 1
-      or (self:word(i, G.question_with_is) and self:word(i + 1, "is") and i + 2)) or nil
+    local k = opens and ((self:word(i, G.question_with_is) and self:word(i + 1, "is about") and i + 2)
+      or (self:word(i, G.question_opens) and i + 1)) or nil
     if k and self:word(k, "that the") then k = k + 1 end
     local r = k and self:refs_in(k, k + 1, "aircraft")[1]
     -- (the aircraft called before the question, asked about as "you")
@@ -5491,6 +5491,15 @@ function G:state_question()
     called = called and called[#called]
     if called and not (called.exists and called.b == self:skip_fillers(1) and self:skip_fillers(called.e) == i) then
       called = nil
+    end
+    -- (or called at the end of it: "are you at FL300, KLM12?")
+    local called_first = called and true or false
+    if k and not called and self:word(k, "you") then
+      local e = k
+      while self.t[e] and not (self.t[e].kind == "punct" and self.t[e].text ~= ",") do e = e + 1 end
+      local last = self:refs_in(k, e, "aircraft")
+      last = #last == 1 and last[1]
+      called = last and last.exists and self:skip_fillers(last.e) >= e and last or nil
     end
     if (r and r.b == k and r.exists) or called then
       local ids, seen = {}, {}
@@ -5506,7 +5515,7 @@ function G:state_question()
       local e = k
       while self.t[e] and not (self.t[e].kind == "punct" and self.t[e].text ~= ",") do e = e + 1 end
       local rest = self:skip_fillers(e)
-      local alone = (called or i == self:skip_fillers(1)) and rest > #self.t
+      local alone = (called_first or i == self:skip_fillers(1)) and rest > #self.t
       local instructed = false
       for _, line in ipairs(self.out) do
         local name, cid = line:match("^(%u+) (%S+)")

@@ -9957,6 +9957,9 @@ do
   asked(ex("ac101 climb fl320, is ac202 at fl200?"), "a question after an instruction")
   asked(ex("is ac202 at fl200? descend it to fl180"), "an instruction after a question")
   check_eq(ex("have ac202 descend fl180"), "ALT AC202 FL180")
+  check_eq(ex("are you at fl200, ac202?"), "POS AC202")
+  check_eq(ex("what about ac101 at fl310"), "POS AC101")
+  asked(ex("ac101 climb fl320, are you at fl200 ac202?"), "a question with its aircraft called at its end, after an instruction")
 end
 
 -- Cycle 47 (hz51): a speed restriction lifted, then a speed given in the same request contradict: asked which stands;
