@@ -5550,8 +5550,8 @@ function G:shown_after_instruction()
   end
   local explained = self.explained or {}
   for i = 1, #self.t do
-    if (self:word(i, "show display") or (self:word(i, "see") and self:word(i - 1, "me us"))) and not self.u:used(i) and not self.triggers[i] and not explained[i]
-        and not self.noted[i] and not self:in_reason(i) and not self:word(i - 1, "the a on off of to") then
+    if (self:word(i, "show display") or (self:word(i, "see") and self:word(i - 1, "me us"))) and not self.u:used(i)
+        and not self.triggers[i] and not explained[i] and not self.noted[i] and not self:in_reason(i) and not self:word(i - 1, "the a on off of to") then
       local k = self:skip_fillers(self:word(i + 1, "me us") and i + 2 or i + 1)
       local ids = {}
       while true do
