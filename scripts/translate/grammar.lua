@@ -5431,9 +5431,10 @@ function G:speed_lifted_and_given()
     return false
   end
   for i = 1, #self.t do
-    if self:word(i, "resume resuming") and self:word(i + 1, "normal") and self:word(i + 2, "speed") and given_after(i + 3) then
-      return self:need(string.format("I have %s. Which stands: '%s', or the speed given?", table.concat(self.out, " ; "),
-        self:raw(i, i + 3)))
+    if self:word(i, "resume resuming") and self:word(i + 1, "normal") and self:word(i + 2, "speed")
+        and given_after(i + 3) then
+      return self:need(string.format("I have %s. Which stands: '%s', or the speed given?",
+        table.concat(self.out, " ; "), self:raw(i, i + 3)))
     end
     if self:word(i, "restriction restrictions limit limits restricted") then
       local b = i
@@ -5451,12 +5452,14 @@ function G:speed_lifted_and_given()
         local e = i + 1
         while e < b do e = e + 1 end
         if self:word(i + 1, "on") then e = (self:word(i + 2, "the your its") and i + 3 or i + 2) + 1 end
-        while self.t[e] and self.t[e].kind ~= "punct" and not self:word(e, "and @then_words") and not self.triggers[e] do
+        while self.t[e] and self.t[e].kind ~= "punct" and not self:word(e, "and @then_words")
+            and not self.triggers[e] do
           e = e + 1
         end
         if not given_after(e) then return end
         local a = b
-        while a > 1 and not (self.t[a - 1].kind == "punct" or self.triggers[a - 1] or self:has_ref(a - 1, a, "aircraft")) do
+        while a > 1 and not (self.t[a - 1].kind == "punct" or self.triggers[a - 1]
+            or self:has_ref(a - 1, a, "aircraft")) do
           a = a - 1
         end
         if self.t[a - 1] and self.t[a - 1].kind == "punct" and self:word(a - 2, "correction") then a = a - 2 end
@@ -5536,9 +5539,10 @@ function G:state_question()
   end
 end
 
--- "KLM12 climb FL340, show me both", "..., then display KLM12", "..., let me see both": a verb of showing that no command was read from, said
--- after an instruction, is never dropped: the aircraft named alone after it (and only those, joined by "and", to the
--- end of the request) are shown where they are (POS); anything else ("both", "them") is asked.
+-- "KLM12 climb FL340, show me both", "..., then display KLM12", "..., let me see both": a verb of showing that no
+-- command was read from, said after an instruction, is never dropped: the aircraft named alone after it (and only
+-- those, joined by "and", to the end of the request) are shown where they are (POS); anything else ("both", "them") is
+-- asked.
 -- (a request that already shows something, "route please, show it", "show me the constraints X has at Y", is read as
 -- it is; so is a noun, "off the display")
 G.showing = { POS = true, LISTRTE = true, TRAIL = true }
@@ -5551,7 +5555,8 @@ function G:shown_after_instruction()
   local explained = self.explained or {}
   for i = 1, #self.t do
     if (self:word(i, "show display") or (self:word(i, "see") and self:word(i - 1, "me us"))) and not self.u:used(i)
-        and not self.triggers[i] and not explained[i] and not self.noted[i] and not self:in_reason(i) and not self:word(i - 1, "the a on off of to") then
+        and not self.triggers[i] and not explained[i] and not self.noted[i] and not self:in_reason(i)
+        and not self:word(i - 1, "the a on off of to") then
       local k = self:skip_fillers(self:word(i + 1, "me us") and i + 2 or i + 1)
       local ids = {}
       while true do

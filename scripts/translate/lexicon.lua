@@ -506,9 +506,9 @@ return {
                  "at your own discretion", "at own discretion", "pilot's discretion" },
   -- before an instruction word: the instruction is only announced, not given
   not_a_clearance = { "expect" },
-  -- a clause opening with one of `opens` (or of `with_is` and "is" or "about"), the aircraft it asks about straight after it
-  -- ("is KLM12 at FL300?", "what's RYR2BA at FL300", "does X climb FL340?"), asks about the aircraft's state: no
-  -- instruction (G:state_question). "what's" reads as "what"; "have X climb" instructs. "that" or "the" may come
+  -- a clause opening with one of `opens` (or of `with_is` and "is" or "about"), the aircraft it asks about straight
+  -- after it ("is KLM12 at FL300?", "what's RYR2BA at FL300", "does X climb FL340?"), asks about the aircraft's state:
+  -- no instruction (G:state_question). "what's" reads as "what"; "have X climb" instructs. "that" or "the" may come
   -- between ("is that KLM12 at FL300?"); an aircraft called before it or at its end is asked about as "you" ("KLM12,
   -- are you at FL300?", "are you at FL300, KLM12?")
   state_question = { opens = { "is", "are", "was", "were", "does", "do", "did", "has", "what", "how" },
