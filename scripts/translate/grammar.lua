@@ -5516,6 +5516,214 @@ function G:resumes_instruction(i)
   local q = self:quantities(k, k + 2)[1]
   return self.triggers[k] == true or (q ~= nil and q.b == k)
 end
+-- "no restriction on speed, reduce 250", "no speed restriction, speed 250", "cancel speed restrictions, 250 knots",
+-- "resume normal speed, 250 knots": a speed restriction lifted, then a speed given in one request contradict: which
+-- stands is asked. A speed given first ("speed 290, no speed restriction") is flown free of other limits: read.
+function G:speed_lifted_and_given()
+  local given = {}
+  for _, line in ipairs(self.out) do
+    local v = line:match("^SPD %S+ M?(%d*%.?%d+)$")
+    if v then given[tonumber(v)] = true end
+  end
+  if not next(given) then return end
+  -- true when a speed of the request is said after token e, no correction between ("cancel the speed restriction...
+  -- no, just maintain 250": the lifting taken back)
+  local function given_after(e)
+    for _, q in ipairs(self:quantities(e, #self.t + 1)) do
+      if given[q.value] and not self:word_in(e, q.b, "@correction just") then return true end
+    end
+    return false
+  end
+  for i = 1, #self.t do
+    if self:word(i, "resume resuming") and self:word(i + 1, "normal") and self:word(i + 2, "speed")
+        and given_after(i + 3) then
+      return self:need(string.format("I have %s. Which stands: '%s', or the speed given?",
+        table.concat(self.out, " ; "), self:raw(i, i + 3)))
+    end
+    if self:word(i, "restriction restrictions limit limits restricted") then
+      local b = i
+      if self:word(b - 1, "speed mach") then
+        b = b - 1
+      else
+        local k = self:word(i + 1, "on") and (self:word(i + 2, "the your its") and i + 3 or i + 2)
+        if not (k and self:word(k, "speed mach")) then b = nil end
+      end
+      if b and self:word(b - 1, "atc") then b = b - 1 end
+      -- ("KLM12 no speed restriction": a "no" after a callsign reads as a correction)
+      local lift = b and self:word_in(math.max(1, b - 3), b,
+        "no cancel cancelled canceled lift lifted remove delete without correction")
+      if lift and not self:word_in(math.max(1, b - 4), b, "expect") then
+        local e = i + 1
+        while e < b do e = e + 1 end
+        if self:word(i + 1, "on") then e = (self:word(i + 2, "the your its") and i + 3 or i + 2) + 1 end
+        while self.t[e] and self.t[e].kind ~= "punct" and not self:word(e, "and @then_words")
+            and not self.triggers[e] do
+          e = e + 1
+        end
+        if not given_after(e) then return end
+        local a = b
+        while a > 1 and not (self.t[a - 1].kind == "punct" or self.triggers[a - 1]
+            or self:has_ref(a - 1, a, "aircraft")) do
+          a = a - 1
+        end
+        if self.t[a - 1] and self.t[a - 1].kind == "punct" and self:word(a - 2, "correction") then a = a - 2 end
+        local said = {}
+        for x = a, e - 1 do
+          if self.t[x].kind ~= "punct" then said[#said + 1] = self:word(x, "correction") and "no" or self.t[x].raw end
+        end
+        return self:need(string.format("I have %s. Which stands: '%s', or the speed given?",
+          table.concat(self.out, " ; "), table.concat(said, " ")))
+      end
+    end
+  end
+end
+
+-- "is KLM12 at FL300?", "what's RYR2BA at FL300", "are X and Y level at 240?", "does X climb FL340?": a clause opening
+-- with a word of lexicon.state_question and the aircraft it asks about (joined by "and") asks about their state, never
+-- instructs them. Said alone (to its "?" and the end) it is read as POS of each; with anything else after it, or an
+-- instruction of the request naming one of them outside it, it is asked.
+-- (the commands a question's values are misread as: G:state_question)
+G.asked_values = { ALT = true, SPD = true, HDG = true, VS = true }
+G.question_opens, G.question_with_is = set_of(lexicon.state_question.opens), set_of(lexicon.state_question.with_is)
+function G:state_question()
+  for i = 1, #self.t do
+    local prev = self.t[i - 1]
+    local opens = (not prev or prev.kind == "punct" or prev.filler or self:word(i - 1, "and @then_words"))
+    local k = opens and ((self:word(i, G.question_with_is) and self:word(i + 1, "is about") and i + 2)
+      or (self:word(i, G.question_opens) and i + 1)) or nil
+    if k and self:word(k, "that the") then k = k + 1 end
+    local r = k and self:refs_in(k, k + 1, "aircraft")[1]
+    -- (the aircraft called before the question, asked about as "you")
+    local called = k and self:word(k, "you") and self:refs_in(1, i, "aircraft")
+    called = called and called[#called]
+    if called and not (called.exists and called.b == self:skip_fillers(1) and self:skip_fillers(called.e) == i) then
+      called = nil
+    end
+    -- (or called at the end of it: "are you at FL300, KLM12?")
+    local called_first = called and true or false
+    if k and not called and self:word(k, "you") then
+      local e = k
+      while self.t[e] and not (self.t[e].kind == "punct" and self.t[e].text ~= ",") do e = e + 1 end
+      local last = self:refs_in(k, e, "aircraft")
+      last = #last == 1 and last[1]
+      called = last and last.exists and self:skip_fillers(last.e) >= e and last or nil
+    end
+    if (r and r.b == k and r.exists) or called then
+      local ids, seen = {}, {}
+      if called then
+        ids[1], seen[called.name:upper()], k = called.name:upper(), true, k + 1
+      end
+      while not called and r and r.b == k and r.exists do
+        if not seen[r.name:upper()] then ids[#ids + 1], seen[r.name:upper()] = r.name:upper(), true end
+        k = r.e
+        if self:word(k, "and") then k = k + 1 end
+        r = self:refs_in(k, k + 1, "aircraft")[1]
+      end
+      local e = k
+      while self.t[e] and not (self.t[e].kind == "punct" and self.t[e].text ~= ",") do e = e + 1 end
+      local rest = self:skip_fillers(e)
+      local alone = (called_first or i == self:skip_fillers(1)) and rest > #self.t
+      local instructed = false
+      for _, line in ipairs(self.out) do
+        local name, cid = line:match("^(%u+) (%S+)")
+        instructed = instructed or (G.asked_values[name] and seen[cid:upper()] == true)
+      end
+      -- (what a question reads that is no value's instruction stands: "what's X's destination?" DEST X)
+      if instructed and alone then
+        self.out = {}
+        for _, id in ipairs(ids) do self.out[#self.out + 1] = "POS " .. id end
+        for x = 1, #self.t do self.noted[x] = true end
+        for _, q in ipairs(self:quantities(1, #self.t + 1)) do self:take(q) end
+        return
+      elseif instructed then
+        return self:need(string.format("'%s' asks about %s: a question, no instruction. What should %s do?",
+          self:raw(i, e), table.concat(ids, " and "), table.concat(ids, " and ")))
+      end
+    end
+  end
+end
+
+-- "KLM12 climb FL340, show me both", "..., then display KLM12", "..., let me see both": a verb of showing that no
+-- command was read from, said after an instruction, is never dropped: the aircraft named alone after it (and only
+-- those, joined by "and", to the end of the request) are shown where they are (POS); anything else ("both", "them") is
+-- asked.
+-- (a request that already shows something, "route please, show it", "show me the constraints X has at Y", is read as
+-- it is; so is a noun, "off the display")
+G.showing = { POS = true, LISTRTE = true, TRAIL = true }
+function G:shown_after_instruction()
+  if #self.out == 0 then return end
+  for _, line in ipairs(self.out) do
+    local name = line:match("^(%u+)")
+    if G.showing[name] or (name == "AT" and line:match("^AT %S+ %S+$")) then return end
+  end
+  local explained = self.explained or {}
+  for i = 1, #self.t do
+    if (self:word(i, "show display") or (self:word(i, "see") and self:word(i - 1, "me us"))) and not self.u:used(i)
+        and not self.triggers[i] and not explained[i] and not self.noted[i] and not self:in_reason(i)
+        and not self:word(i - 1, "the a on off of to") then
+      local k = self:skip_fillers(self:word(i + 1, "me us") and i + 2 or i + 1)
+      local ids = {}
+      while true do
+        local r = self:refs_in(k, k + 1, "aircraft")[1]
+        if not (r and r.exists and r.b == k) then break end
+        ids[#ids + 1] = r.name:upper()
+        k = self:skip_fillers(r.e)
+        if self:word(k, "and") then k = self:skip_fillers(k + 1) end
+      end
+      if #ids > 0 and k > #self.t then
+        for _, id in ipairs(ids) do self.out[#self.out + 1] = "POS " .. id end
+        for x = i, #self.t do self.noted[x] = true end
+        return
+      end
+      -- (a command read from the words after it, "show trails", "show me its position", is what it shows)
+      local e, read = i + 1, false
+      while self.t[e] and self.t[e].kind ~= "punct" and not self:word(e, "@then_words") do
+        read = read or self.triggers[e] == true
+        e = e + 1
+      end
+      if not read then
+        return self:need(string.format("I have %s. Which aircraft should '%s' show? Please name them.",
+          table.concat(self.out, " ; "), self:raw(i, e)))
+      end
+    end
+  end
+end
+-- "KLM12 speed 250 then resume", "..., and continue": "resume" or "continue" closing the request with nothing of its
+-- own (a courtesy word at most), read as OP, straight after an aircraft's instruction (no pause before it, the aircraft
+-- neither moved, created nor deleted: G.sim_handling) most likely tells that aircraft to resume something (its own
+-- navigation, its normal speed): asked, naming the aircraft. "..., then resume the sim" stays OP.
+G.sim_handling = { DEL = true, MOVE = true, CRE = true }
+function G:resume_after_instruction()
+  local op
+  for c, line in ipairs(self.out) do
+    if line == "OP" then op = c end
+  end
+  if not op then return end
+  local id
+  for c = 1, op - 1 do
+    local name, cid = self.out[c]:match("^(%u+) (%S+)")
+    -- (a pause before it is what resumes: "pause, X descend FL270, resume"; so after an aircraft placed or removed)
+    if self.out[c] == "HOLD" then return end
+    id = cid and self:state(cid) and not G.sim_handling[name] and cid or nil
+  end
+  if not id then return end
+  for i = #self.t, 1, -1 do
+    local t = self.t[i]
+    if self:word(i, "resume continue") then
+      local k = i + 1
+      while self.t[k] and (self.t[k].kind == "punct" or self.t[k].filler or self:word(k, "please now")) do k = k + 1 end
+      if k <= #self.t then return end
+      local others = {}
+      for c, line in ipairs(self.out) do
+        if c ~= op then others[#others + 1] = line end
+      end
+      return self:need(string.format("I have %s. Should %s resume something of its own (its navigation, its normal "
+        .. "speed), or the simulation resume? Please say which.", table.concat(others, " ; "), id))
+    elseif not (t.kind == "punct" or t.filler or self:word(i, "please now")) then
+      return
+    end
+  end
+end
 -- (G.bare_left[w]: the kind of a word of lexicon.accounted.bare_asked, "noted" for one of a bare phrase of
 -- lexicon.not_simulated, left here when said before the instruction: G:said_bare; G.bare_asks[kind][what]: true
 -- when a word of that kind said bare after `what`, "start", "aircraft" or "value", is asked)
@@ -6300,6 +6508,7 @@ function G:not_simulated()
             or (self:word(e, "no") and self:word(e + 1, "need needs")) then
           break
         end
+        if class.stops_at_value and comma and x.kind == "number" then break end
         if class.one_value and x.kind == "number" then
           e = e + 1
           break
@@ -6401,21 +6610,27 @@ end
 -- 60, dtmult 4"), so which value, and from when, is asked. (G.set_once: the commands of one value and no aircraft.)
 G.set_once = { DTMULT = "rate should the simulation run at", ZONER = "protected zone radius should be used",
   ZONEDH = "protected zone half height should be used", DTLOOK = "look-ahead time should be used" }
-function G:setting_twice()
+-- M.setting_twice(lines) -> the question for a list of commands, or nil (the list of typed command clauses is
+-- asked the same: graph.lua).
+function M.setting_twice(lines)
   local first = {}
-  for _, line in ipairs(self.out) do
-    local name, value = line:match("^(%u+) (%S+)$")
+  for _, line in ipairs(lines) do
+    local name, value = line:upper():match("^(%u+) (%S+)$")
     if name and G.set_once[name] then
       if first[name] and first[name] ~= value then
-        return self:need(string.format("I have %s. Which %s: %s or %s, and from when? Please say the time of the "
-          .. "second (\"in 5 minutes\") or one value.", table.concat(self.out, " ; "), G.set_once[name], first[name],
-          value))
+        return string.format("I have %s. Which %s: %s or %s, and from when? Please say the time of the "
+          .. "second (\"in 5 minutes\") or one value.", table.concat(lines, " ; "), G.set_once[name], first[name],
+          value)
       end
       first[name] = value
-    elseif line:match("^FF") then
+    elseif line:upper():match("^FF") then
       first = {}
     end
   end
+end
+function G:setting_twice()
+  local q = M.setting_twice(self.out)
+  if q then return self:need(q) end
 end
 
 -- "Alaska 1294 and United 1562, descend and maintain 10000 and 9000 respectively": with "respectively",
@@ -7922,6 +8137,10 @@ function M.translate(text, world)
   g:same_again(same)
   if not g.ask then g:forgotten() end
   if not g.ask then g:described() end
+  if not g.ask then g:state_question() end
+  if not g.ask then g:speed_lifted_and_given() end
+  if not g.ask then g:resume_after_instruction() end
+  if not g.ask then g:shown_after_instruction() end
   -- "... actually no, just the descent" (G:self_corrected): only the commands of that kind stand
   if not g.ask and g.kept then
     local kept = {}

@@ -302,6 +302,12 @@ function M.translate(text, opts)
         end
       end
     end
+    -- ("dtmult 8, then dtmult 4": one setting given two values in a row is asked, as in English)
+    local q = grammar.setting_twice(all)
+    if q then
+      trace[#trace + 1] = { node = "list", said = "asks: " .. q }
+      return { ask = q, trace = trace, mode = opts.mode or "offline" }
+    end
     return { commands = all, trace = trace, mode = opts.mode or "offline" }
   end
   local llm = opts.llm

@@ -506,6 +506,13 @@ return {
                  "at your own discretion", "at own discretion", "pilot's discretion" },
   -- before an instruction word: the instruction is only announced, not given
   not_a_clearance = { "expect" },
+  -- a clause opening with one of `opens` (or of `with_is` and "is" or "about"), the aircraft it asks about straight
+  -- after it ("is KLM12 at FL300?", "what's RYR2BA at FL300", "does X climb FL340?"), asks about the aircraft's state:
+  -- no instruction (G:state_question). "what's" reads as "what"; "have X climb" instructs. "that" or "the" may come
+  -- between ("is that KLM12 at FL300?"); an aircraft called before it or at its end is asked about as "you" ("KLM12,
+  -- are you at FL300?", "are you at FL300, KLM12?")
+  state_question = { opens = { "is", "are", "was", "were", "does", "do", "did", "has", "what", "how" },
+                     with_is = { "what", "how" } },
   -- a pilot's question back to the controller, no instruction (G:question_back): "say again (the level)"
   -- with no value in its clause asks for a repeat; "confirm cleared FL200?", "confirm heading 270?" with a value
   -- asks whether a clearance stands. Not after `not_after` ("I say again 260" is the controller's own repeat).
@@ -995,12 +1002,13 @@ return {
         .. "approach runway rwy l r c" },
     -- "climb FL250, cancel speed restriction", "cancel level restrictions": a restriction lifted, which squawk
     -- (flying each instruction as given) does not keep
+    -- (a value after a comma is no part of it, `stops_at_value`: "cancel speed restrictions, 250 knots" gives a speed)
     { what = "restrictions lifted", words = "cancel", near = { "restriction", "restrictions" },
-      through = "speed level altitude" },
+      through = "speed level altitude", stops_at_value = true },
     -- "EZY45KL resume normal speed": said to an aircraft, its speed restriction lifted (said alone, "resume
     -- normal speed" is the simulation's rate, DTMULT 1)
     { what = "restrictions lifted", words = "resume", near = { "speed" }, window = 2, after_callsign = true,
-      not_before = "speed", through = "speed" },
+      not_before = "speed", through = "speed", stops_at_value = true },
     -- "turn right heading 330, vectors for runway 28", "vectoring for the ILS": what a vector is for, a
     -- runway squawk does not fly to
     { what = "approaches to a runway", words = "vectors vectoring vector",

@@ -10096,3 +10096,69 @@ do
     check_eq(ex("getwind at Frankfurt"), "GETWIND EDDF")
   end
 end
+
+-- Cycle 47 (hz51): one setting given two values in a row in a list of typed command clauses is asked, as in English;
+-- a fast-forward between them makes them one after the other
+do
+  local _, ex = scene({ "CRE AC101 A320 52.0 4.0 090 FL300 280" })
+  asked(ex("dtmult 6, then dtmult 2"), "two rates typed in a row")
+  asked(ex("ZONER 4 ; ZONER 6"), "two zone radii typed in a row")
+  check_eq(ex("dtmult 6, ff 120, dtmult 2"), "DTMULT 6 ; FF 120 ; DTMULT 2")
+  check_eq(ex("dtmult 6, ALT AC101 FL320"), "DTMULT 6 ; ALT AC101 FL320")
+end
+
+-- Cycle 47 (hz51): "resume"/"continue" closing a request after an aircraft's instruction most likely tells the aircraft
+-- to resume something: asked, naming it; the simulation named, or no aircraft instructed, stays OP
+do
+  local _, ex = scene({ "CRE AC101 A320 52.0 4.0 090 FL300 280" })
+  check_eq(ex("ac101 reduce 240 and then resume"), "ASK I have SPD AC101 240. Should AC101 resume something of its "
+    .. "own (its navigation, its normal speed), or the simulation resume? Please say which.")
+  asked(ex("ac101 heading 200, then continue please"), "continue after a heading")
+  check_eq(ex("ac101 reduce 240, then resume the simulation"), "SPD AC101 240 ; OP")
+  check_eq(ex("pause, then resume"), "HOLD ; OP")
+  check_eq(ex("ac101 reduce 240 then run"), "SPD AC101 240 ; OP")
+  check_eq(ex("pause, ac101 reduce 240, then resume"), "HOLD ; SPD AC101 240 ; OP")
+  check_eq(ex("remove ac101 and continue"), "DEL AC101 ; OP")
+end
+
+-- Cycle 47 (hz51): a verb of showing after an instruction is never dropped: the aircraft named alone after it are
+-- shown (POS); "both", "them" or anything else no command was read from is asked
+do
+  local _, ex = scene({ "CRE AC101 A320 52.0 4.0 090 FL300 280", "CRE AC202 B738 52.3 4.3 180 FL200 250" })
+  asked(ex("ac101 descend fl260, show me both"), "both after an instruction naming one aircraft")
+  asked(ex("ac202 heading 050 and let me see them"), "them after an instruction")
+  check_eq(ex("ac101 descend fl260 then display ac202"), "ALT AC101 FL260 ; POS AC202")
+  check_eq(ex("ac101 descend fl260 then show me ac101 and ac202"), "ALT AC101 FL260 ; POS AC101 ; POS AC202")
+  check_eq(ex("ac101 descend fl260 and show trails"), "ALT AC101 FL260 ; TRAIL ON")
+end
+
+-- Cycle 47 (hz51): a question about an aircraft ("is X at FL300?", "what's X at FL300", "does X climb FL340?") is no
+-- instruction: alone it is read as POS of the aircraft; with an instruction for it elsewhere it is asked
+do
+  local _, ex = scene({ "CRE AC101 A320 52.0 4.0 090 FL300 280", "CRE AC202 B738 52.3 4.3 180 FL200 250" })
+  check_eq(ex("is ac202 at fl200?"), "POS AC202")
+  check_eq(ex("whats ac101 at fl310"), "POS AC101")
+  check_eq(ex("are ac101 and ac202 on heading 180?"), "POS AC101 ; POS AC202")
+  check_eq(ex("does ac202 descend to fl150?"), "POS AC202")
+  check_eq(ex("ac101, are you at fl300?"), "POS AC101")
+  check_eq(ex("is that ac202 at 250 knots?"), "POS AC202")
+  asked(ex("ac101 climb fl320, is ac202 at fl200?"), "a question after an instruction")
+  asked(ex("is ac202 at fl200? descend it to fl180"), "an instruction after a question")
+  check_eq(ex("have ac202 descend fl180"), "ALT AC202 FL180")
+  check_eq(ex("are you at fl200, ac202?"), "POS AC202")
+  check_eq(ex("what about ac101 at fl310"), "POS AC101")
+  asked(ex("ac101 climb fl320, are you at fl200 ac202?"), "a question with its aircraft called at its end, after an instruction")
+end
+
+-- Cycle 47 (hz51): a speed restriction lifted, then a speed given in the same request contradict: asked which stands;
+-- a speed given first and the restriction lifted after it ("speed 290, no speed restriction") is read
+do
+  local _, ex = scene({ "CRE AC101 A320 52.0 4.0 090 FL300 280" })
+  check_eq(ex("ac101 no restrictions on your speed, slow to 230"),
+    "ASK I have SPD AC101 230. Which stands: 'no restrictions on your speed', or the speed given?")
+  asked(ex("ac101 no speed restriction, speed 230"), "no speed restriction, then a speed")
+  asked(ex("ac101 cancel speed restriction, 230 knots"), "a speed after a comma is no part of the cancelled restriction")
+  asked(ex("ac101 resume normal speed, 230 knots"), "normal speed resumed, then a speed")
+  check_eq(ex("ac101 increase speed 300 knots, no speed restriction"), "SPD AC101 300")
+  check_eq(ex("ac101 descend fl200, no speed restriction"), "ALT AC101 FL200")
+end
