@@ -10050,6 +10050,7 @@ do
     asked(ex("move EIN77 to Nowhere"), "a proper name that names no fix near")
     local q = ex("BEE12 add Talla and Sumin to the route")
     check(q:find("'Talla'", 1, true) ~= nil and q:find("ADDWPT BEE12 SUMIN", 1, true) ~= nil, q)
+  end
 end
 
 -- Cycle 47 (hz52): a navigation switch typed by its TrafScript name in a terse line ("lnav on", "vnav off") is an
