@@ -982,7 +982,8 @@ for abbr, readings in pairs(lexicon.typed_abbreviations) do
   ABBREVIATIONS[abbr] = {}
   for _, a in ipairs(readings.word and { readings } or readings) do
     table.insert(ABBREVIATIONS[abbr], { word = a.word, next = a.next and word_set(a.next, 1),
-      prev = a.prev and word_set(a.prev, 1), not_prev = a.not_prev and word_set(a.not_prev, 1) })
+      prev = a.prev and word_set(a.prev, 1), not_prev = a.not_prev and word_set(a.not_prev, 1),
+      after_next = a.after_next and word_set(a.after_next, 1) })
   end
 end
 local function typed_abbreviations(text)
@@ -1000,6 +1001,7 @@ local function typed_abbreviations(text)
   local function bare(k) return toks[k] and toks[k]:lower():match("^(.-)%p*$") end
   local function fits(set, k)
     local w = bare(k)
+    if set["#start"] and (k == 0 or (toks[k] and toks[k]:match("[,;:.!]$"))) then return true end
     return w ~= nil and (set[w] or (set["#number"] and (w:match("^%d") or w:match("^fl%d")) ~= nil)
       or (set["#place"] and toks[k]:match("^%u%u%u%u?%u?%p*$") ~= nil))
   end
@@ -1010,7 +1012,7 @@ local function typed_abbreviations(text)
     for j = 1, readings and #readings or 0 do
       local a = readings[j]
       if (not a.next or fits(a.next, k + 1)) and (not a.prev or fits(a.prev, k - 1))
-          and not (a.not_prev and fits(a.not_prev, k - 1)) then
+          and (not a.after_next or fits(a.after_next, k + 2)) and not (a.not_prev and fits(a.not_prev, k - 1)) then
         toks[k], changed = a.word .. punct, true
         break
       end
@@ -7293,6 +7295,9 @@ end
 local PLACE_SLOTS = { add = true, append = true, insert = true, dct = true, dtc = true, drct = true, direct = true,
   after = true, before = true, via = true, over = true, cross = true, at = true, ["then"] = true }
 local TYPED_PLACE_NM = 250
+-- the slots of PLACE_SLOTS that are a place's verb: a word straight after one that squawk knows only as
+-- another word's inflection ("ezy45 add echos", ECHOS; "echo" is a command) is read as a place too
+G.place_verbs = set_of({ "add", "append", "insert", "dct", "dtc", "drct", "direct" })
 -- patterns finding a word of PLACE_SLOTS as a whole word in " " .. lower-case text .. " "
 local PLACE_SLOT_PATTERNS = {}  -- {word, pattern}
 for w in pairs(PLACE_SLOTS) do PLACE_SLOT_PATTERNS[#PLACE_SLOT_PATTERNS + 1] = { word = w, pattern = "%s" .. w .. "%s" } end
@@ -7375,7 +7380,8 @@ local function typed_places(text, world)
     local raw, rest = word:match("^(%a[%a%d]*)(.*)$")
     local w = raw and raw:lower()
     local named = w and slot and #w >= 3 and #w <= 5 and (not capitals or raw:match("^%u%l+$"))
-      and not known_word(w) and not ids[w] and not lexicon.shorthand[w] and near(w)
+      and (not known_word(w) or (not KNOWN[w] and G.place_verbs[(out[#out] or ""):lower():match("(%a+)$") or ""]))
+      and not ids[w] and not lexicon.shorthand[w] and near(w)
     k = k + 1
     -- ("cross e c k at FL190", "at j v l descend ...": an ident spelled letter by letter, the whole run of
     -- two to five single letters, on an aircraft's route or, of three letters or more, near the traffic)

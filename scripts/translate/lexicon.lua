@@ -420,8 +420,10 @@ return {
   -- controllers' typed abbreviations of instruction words (text ATC on the online networks), read as the
   -- words they stand for where a word beside them shows the instruction: `word`, the words read; `next` /
   -- `prev`, words one of which must be the next / the previous word ("#number": a value typed with digits,
-  -- "fl180" too; "#place": see pd); a list of such readings is tried in order; `not_prev`, words that keep it as typed. Elsewhere it stays as typed ("direct TRN" is
-  -- Turnberry, "trail red" a colour, "Red Cap" an airline).
+  -- "fl180" too; "#place": see pd; "#start": the line's first word or one after punctuation, for `prev`);
+  -- `after_next`, the same of the word after next (a callsign between: "trn hop7 rgt 20"); a list of such
+  -- readings is tried in order; `not_prev`, words that keep it as typed. Elsewhere it stays as typed ("direct
+  -- TRN" is Turnberry, "trail red" a colour, "Red Cap" an airline).
   typed_abbreviations = {
     expd = { word = "expedite" }, expdt = { word = "expedite" }, til = { word = "until" },
     maint = { word = "maintain", next = "#number fl flight speed spd heading hdg altitude alt level present own" },
@@ -431,7 +433,20 @@ return {
     dscnd = { word = "descend", next = "#number fl flight level to" },
     dsc = { word = "descend", next = "#number fl flight level to" },
     clmb = { word = "climb", next = "#number fl flight level to" },
-    trn = { word = "turn", next = "left right lft rt lt rgt l r hdg heading" },
+    trn = { { word = "turn", next = "left right lft rt lt rgt l r hdg heading" },
+            { word = "turn", prev = "#start", after_next = "left right lft rt lt rgt l r hdg heading" } },
+    -- (an experimenter's shorthand of the command words: "head 030", "incr 280", "rm ooabc", "del rte",
+    -- "lvl?", "vert sep 2000ft"; "head" before no number, "rm" inside a line and "del" before no route
+    -- word stay as typed; "lvl" after a place's verb is the LVL navaid)
+    head = { word = "heading", next = "#number" },
+    incr = { word = "increase", next = "#number speed spd to" }, inc = { word = "increase", next = "#number speed spd to" },
+    decr = { word = "decrease", next = "#number speed spd to" },
+    rm = { word = "remove", prev = "#start" },
+    del = { word = "delete", next = "rte route wpt waypoint" },
+    rte = { word = "route" },
+    lvl = { word = "level", not_prev = "dct direct to via add after over cross at" },
+    vert = { word = "vertical", next = "sep separation speed spd rate" },
+    sep = { word = "separation", prev = "vertical horizontal lateral min minimum" },
     tl = { word = "turn left", next = "#number hdg heading" }, tr = { word = "turn right", next = "#number hdg heading" },
     fh = { word = "fly heading", next = "#number" },
     rsm = { word = "resume", next = "own normal nav navigation route speed" }, ctc = { word = "contact" },

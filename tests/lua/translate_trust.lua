@@ -9982,3 +9982,32 @@ do
   local _, ex2 = scene({ "CRE SWR120 A320 46.4 6.5 220 FL110 250", "CRE SUI4 C130 46.5 5.7 140 FL130 270" })
   asked(ex2("the swiss descend FL090"), "Swiss with a Swiss Air Force aircraft flying")
 end
+
+-- Cycle 47 (g109a): an experimenter's typed shorthand of the command words ("head", "incr", "decr", "trn" before a
+-- callsign and a side, "rm" opening the line, "del rte", "lvl?", "vert sep"), read as the words where the word
+-- beside it fits; elsewhere it stays as typed (and asked)
+do
+  local _, ex = scene({ "CRE AB123 A320 51.0 3.0 090 FL250 280", "CRE PHXYZ C172 51.2 3.4 270 3000 100",
+    "ADDWPT AB123 SPY" })
+  check_eq(ex("ab123 head 145"), "HDG AB123 145")
+  check_eq(ex("ab123 incr 300"), "SPD AB123 300")
+  check_eq(ex("ab123 decr to 250"), "SPD AB123 250")
+  check_eq(ex("trn ab123 lft 15 degs"), "HDG AB123 75 LEFT")
+  check_eq(ex("rm phxyz"), "DEL PHXYZ")
+  check_eq(ex("ab123 del rte"), "DELRTE AB123")
+  check_eq(ex("ab123 lvl?"), "POS AB123")
+  check_eq(ex("ab123 lvl 310"), "ALT AB123 FL310")
+  check_eq(ex("vert sep 1500 ft"), "ZONEDH 1500")
+  -- where the word beside it does not fit, the shorthand is no command word
+  asked(ex("ab123 rm"), "'rm' not opening the line")
+  asked(ex("trn ab123 25"), "'trn' with no side")
+  asked(ex("ab123 head for it"), "'head' with no number")
+end
+do
+  local _, ex = navscene({ "CRE AB123 A320 51.0 3.0 090 FL250 280" }, "a fix typed in lower case after 'add'")
+  if ex then
+    -- (ECHOS, a fix near the traffic, typed as if the plural of the command word "echo")
+    check_eq(ex("ab123 add echos"), "ADDWPT AB123 ECHOS")
+    asked(ex("ab123 add echo"), "'echo' is a command word")
+  end
+end
