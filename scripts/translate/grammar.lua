@@ -955,21 +955,34 @@ for _, word in ipairs({ "point", "decimal" }) do
   local said = word:gsub("%a", function(c) return "[" .. c:lower() .. c:upper() .. "]" end)
   POINT_SAID[#POINT_SAID + 1] = { word = word, pattern = "%f[%d](%d+)%s+" .. said .. "%s+(%d+)(%s+)(%a+)%f[%A]" }
 end
--- A clock multiplier typed alone as a clause ("seed 99 then 30 random a320 then x4", "hold, 4x"): the
--- simulation's rate, written out as "sim speed x4" (a callsign-like "x4" or a bare "4x" names no aircraft)
-local function lone_multipliers(text)
+-- A clock multiplier typed alone as a clause ("seed 99 then 30 random a320 then x4", "hold, 4x", "x4 and op"), or
+-- before the word "speed" or "rate" ending its clause ("x4 speed"): the simulation's rate, written out as "sim speed
+-- x4" (a callsign-like "x4" or a bare "4x" names no aircraft, unless an aircraft of that id flies: `world`, when
+-- given, holds the traffic)
+local function lone_multipliers(text, world)
   if not text:find("%d[xX]") and not text:find("[xX]%d") then return text end
   local words = {}
   for b, w, e in text:gmatch("()(%S+)()") do words[#words + 1] = { b = b, w = w, e = e } end
   local out, last = {}, 1
   local function joins(t) return t ~= nil and (t.w:lower() == "then" or t.w:lower() == "and") end
+  local function flies(id)
+    for _, a in ipairs(world and world.aircraft or {}) do
+      if (a.id or ""):upper() == id:upper() then return true end
+    end
+    return false
+  end
   for k, t in ipairs(words) do
     local core, tail = t.w:match("^(.-)([,;%.!]?)$")
     local n = core:match("^[xX](%d+%.?%d*)$") or core:match("^(%d+%.?%d*)[xX]$")
     local prev, nx = words[k - 1], words[k + 1]
-    if n and (not prev or prev.w:match("[,;%.!:]$") or joins(prev)) and (tail ~= "" or not nx or joins(nx)) then
-      out[#out + 1] = text:sub(last, t.b - 1) .. "sim speed x" .. n .. tail
-      last = t.e
+    local noun = tail == "" and nx and nx.w:lower():match("^(%a+)[,;%.!]?$")
+    noun = (noun == "speed" or noun == "rate") and (nx.w:match("[,;%.!]$") or not words[k + 2] or joins(words[k + 2]))
+    if n and (not prev or prev.w:match("[,;%.!:]$") or joins(prev)) and (tail ~= "" or not nx or joins(nx) or noun)
+        and not flies(core) then
+      -- (with words after it the factor goes after its figures: "x4 and", "x4, op" read as an aircraft's id)
+      local factor = nx and n .. "x" or "x" .. n
+      out[#out + 1] = text:sub(last, t.b - 1) .. "sim speed " .. factor .. (noun and nx.w:match("[,;%.!]?$") or tail)
+      last = noun and nx.e or t.e
     end
   end
   out[#out + 1] = text:sub(last)
@@ -1036,7 +1049,7 @@ local GAIN_LOSE = { gain = 1, lose = -1 }
 -- lexicon.value_names as a set (written_forms: a name glued to its value)
 G.value_name_set = set_of(lexicon.value_names)
 
-local function written_forms(text)
+local function written_forms(text, world)
   -- (each pattern pass runs through where(): only where `low`, the text in lower case, holds what the
   -- pattern requires, its first argument; a rewrite outside where() sets `low` again)
   local low = text:lower()
@@ -1048,7 +1061,7 @@ local function written_forms(text)
   -- "@ FL200", "x NAXEL @ 250", "@ 120 s ...": an at sign typed apart before a value or a name is "at"
   where("@", "(%s)@%s*(%w)", "%1at %2")
   where("@", "^@%s*(%w)", "at %1")
-  text = typed_abbreviations(lone_multipliers(tokens.numerals_apart(text, DIGIT_WORDS)))
+  text = typed_abbreviations(lone_multipliers(tokens.numerals_apart(text, DIGIT_WORDS), world))
   text = hyphened_types(spelled(heard_forms(negated_values(readback_heard(self_corrections(unlabelled(foreign_digits(G.said_whole(text)))))))))
   low = text:lower()
   -- a position typed as whole degrees after the hemisphere, then minutes ("N55 50.0 W003 20.0", "S33 57
@@ -7698,7 +7711,7 @@ function M.translate(text, world)
   local run_together
   text, run_together = G.run_together_position(text)
   if run_together then return { commands = {}, ask = run_together } end
-  text = spelled_airports(typed_places(written_forms(text), world), world)
+  text = spelled_airports(typed_places(written_forms(text, world), world), world)
   -- a time typed in two parts ("at 10:30", "schedule at 00:15: ..."): hours and minutes or minutes and
   -- seconds, which squawk does not tell apart (FF reads "ff 1:30" itself); asked when another command
   -- would run without it

@@ -10011,3 +10011,16 @@ do
     asked(ex("ab123 add echo"), "'echo' is a command word")
   end
 end
+
+-- Cycle 47 (g109a): a rate multiplier typed "xN" or "Nx" alone in its clause, or before "speed" or "rate" ending
+-- it, is the simulation's rate (DTMULT) when no aircraft of that id flies; with one flying it stays the aircraft
+do
+  local _, ex = scene({ "CRE AB123 A320 51.0 3.0 090 FL250 280" })
+  check_eq(ex("x8 speed"), "DTMULT 8")
+  check_eq(ex("x3 and op"), "DTMULT 3 ; OP")
+  check_eq(ex("2x rate then op"), "DTMULT 2 ; OP")
+  check_eq(ex("x6, op"), "DTMULT 6 ; OP")
+  local _, ex2 = scene({ "CRE X8 C172 51.0 3.0 090 3000 100" })
+  asked(ex2("x8 speed"), "an aircraft X8 flies: its speed, no value")
+  asked(ex2("x8 and op"), "an aircraft X8 flies")
+end
