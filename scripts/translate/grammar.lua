@@ -7336,6 +7336,42 @@ local function spelled_airports(text, world)
     return code, i + 4
   end)
 end
+-- "hop7 6000 hdg 220 230kt": in a terse typed list, an aircraft that flies then only values, each labelled
+-- (lexicon.terse_list) but one, that one a bare number of four or five figures in hundreds of feet (1000 to
+-- 60000), with no level, altitude word or transponder code said: that number is the level, written "6000ft".
+-- Any other word, a second bare number or none labelled leaves the text as it is (the number is asked about).
+G.terse_list = { labels = set_of(lexicon.terse_list.labels), units = set_of(lexicon.terse_list.units),
+  level = set_of(lexicon.terse_list.level), joins = set_of(lexicon.terse_list.joins) }
+function G.terse_altitude(text, world)
+  if not text:find("%d%d%d%d") then return text end
+  local L, ids, toks = G.terse_list, {}, {}
+  for _, a in ipairs(world.aircraft) do ids[(a.id or ""):lower()] = true end
+  for w in text:gmatch("[^%s,]+") do toks[#toks + 1] = w:lower() end
+  if not ids[toks[1] or ""] then return text end
+  local bare, labelled, k = nil, 0, 2
+  while k <= #toks do
+    local w = toks[k]
+    local letters, figures, unit = w:match("^(%a*)(%-?%d+%.?%d*)(%a*)$")
+    if L.level[w] or (letters and (L.level[letters] or L.level[unit])) then return text end
+    if letters and (L.labels[letters] or L.units[unit]) and (letters == "" or unit == "") then
+      labelled = labelled + 1
+    elseif letters == "" and unit == "" then
+      if L.units[toks[k + 1] or ""] or L.labels[toks[k - 1]] then
+        labelled = labelled + 1
+      elseif bare or not figures:match("^%d%d%d%d%d?$") or tonumber(figures) % 100 ~= 0
+          or tonumber(figures) < 1000 or tonumber(figures) > 60000 then
+        return text
+      else
+        bare = figures
+      end
+    elseif not (L.labels[w] or L.units[w] or L.joins[w]) then
+      return text
+    end
+    k = k + 1
+  end
+  if not bare or labelled == 0 then return text end
+  return (text:gsub("%f[%w]" .. bare .. "%f[%W]", bare .. "ft", 1))
+end
 local function typed_places(text, world)
   if not world.place_known then return text end
   local ids = {}
@@ -7711,7 +7747,7 @@ function M.translate(text, world)
   local run_together
   text, run_together = G.run_together_position(text)
   if run_together then return { commands = {}, ask = run_together } end
-  text = spelled_airports(typed_places(written_forms(text, world), world), world)
+  text = G.terse_altitude(spelled_airports(typed_places(written_forms(text, world), world), world), world)
   -- a time typed in two parts ("at 10:30", "schedule at 00:15: ..."): hours and minutes or minutes and
   -- seconds, which squawk does not tell apart (FF reads "ff 1:30" itself); asked when another command
   -- would run without it

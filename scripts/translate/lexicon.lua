@@ -1450,6 +1450,17 @@ return {
     refused_articles = { "that", "the", "your", "this" },
     pilots = { "if", "when", "you", "you're", "are", "not" },
   },
+  -- a terse typed list of an aircraft's values ("hop7 6000 hdg 220 230kt"): `labels`, words before a value that
+  -- name it; `units`, words after it (or glued to it) that name it; `level`, labels and units of a level (one
+  -- said makes a bare number no level of its own); `joins`, words between the values. A bare number there of
+  -- hundreds of feet in four or five figures is the level (G.terse_altitude)
+  terse_list = {
+    labels = { "hdg", "heading", "h", "spd", "speed", "s", "vs", "roc", "rod", "mach", "m", "l", "r", "lt", "rt",
+      "left", "right", "lft", "rgt" },
+    units = { "kt", "kts", "knots", "fpm", "deg", "degs", "degrees" },
+    level = { "fl", "alt", "altitude", "level", "lvl", "ft", "feet", "climb", "descend", "desc", "clb", "dsc",
+      "squawk", "sq", "code", "xpdr", "transponder" },
+    joins = { "and", "," } },
   -- resolution methods said in words
   mvp = { "mvp", "voltage", "potential" },
   -- abbreviations a recogniser may spell letter by letter ("f l one two zero"), beside the words of

@@ -10024,3 +10024,19 @@ do
   asked(ex2("x8 speed"), "an aircraft X8 flies: its speed, no value")
   asked(ex2("x8 and op"), "an aircraft X8 flies")
 end
+
+-- Cycle 47 (g109a): a bare number of hundreds of feet in four or five figures, in a terse typed list of an
+-- aircraft's values all labelled but it, is the level; a second bare number, another word, a level or code said,
+-- or a number of no hundreds is asked
+do
+  local _, ex = scene({ "CRE AB123 A320 51.0 3.0 090 FL250 280", "CRE PHXYZ C172 51.2 3.4 270 3000 100" })
+  check_eq(ex("phxyz 4500 h300 95kt"), "ALT PHXYZ 4500 ; HDG PHXYZ 300 ; SPD PHXYZ 95")
+  check_eq(ex("ab123 spd 250, 14000"), "SPD AB123 250 ; ALT AB123 14000")
+  check_eq(ex("ab123 9000 vs -2000"), "ALT AB123 9000 ; VS AB123 -2000")
+  asked(ex("ab123 9000"), "a bare number alone")
+  check_eq(ex("ab123 9000 210 kts"), "ALT AB123 9000 ; SPD AB123 210")
+  asked(ex("ab123 9000 210 hdg 100"), "no label on 210 either: two bare numbers")
+  asked(ex("ab123 9050 hdg 120"), "no hundreds of feet")
+  asked(ex("ab123 9000 hdg 120 if able"), "other words beside the list")
+  asked(ex("phxyz 4500 sq 7000 hdg 200"), "a transponder code said")
+end
