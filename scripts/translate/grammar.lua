@@ -712,7 +712,9 @@ local function self_corrections(text)
     -- (a turn's side corrected: "turn left... I mean right heading 200")
     -- (a run that takes back in words, "never mind", "forget that", before an instruction's word is no value
     -- corrected: G:self_corrected reads the instruction said in its place)
+    -- (an apology after a value ruled out, "fl200 not 180 sorry, ...", corrects nothing: negated_values)
     if j > k and marked and not (dropping and after[nxt and nxt.bare or ""] and not SIDES[nxt.bare])
+        and not (toks[k - 2] and toks[k - 2].bare == "not" and G.apology[toks[k].bare])
         and (value(toks[k - 1]) or (toks[k - 1] and SIDES[toks[k - 1].bare]) or position) and nxt
         and (nxt.bare:match("^%a?%a?%.?%d") or NUMBER_WORDS[nxt.bare] or after[nxt.bare] or position) then
       pieces[#pieces + 1] = text:sub(from, toks[k].at - 1) .. ", correction, "
@@ -770,9 +772,11 @@ end
 
 -- "flight level two six zero, not two eight zero", "heading 300, not 310": a value said after "not"
 -- straight after another value, ending its clause, is the one the speaker rules out (a readback
--- corrected); it is dropped, with its "not", and the value before it stands. Anywhere else ("climb FL310
+-- corrected); it is dropped, with its "not", and the value before it stands; so is an apology closing the
+-- request after it ("fl200 not 180 sorry", lexicon.self_correction.apology). Anywhere else ("climb FL310
 -- not 300 speed 250") the "not" stays, and is asked about.
 local NEGATED_NOUNS = set_of({ "fl", "flight", "level", "heading", "speed", "mach", "point" })
+G.apology = set_of(lexicon.self_correction.apology)
 local function negated_values(text)
   if not text:lower():find("not", 1, true) then return text end  -- (no "not" said)
   local toks = bare_words(text)
@@ -786,6 +790,10 @@ local function negated_values(text)
         stop = toks[j].raw:match("%p$") ~= nil
         j = j + 1
         if stop then break end
+      end
+      if numbers > 0 and not stop and toks[j] and G.apology[toks[j].bare] and (not toks[j + 1]
+          or toks[j].raw:match("[,%.!;]$")) then
+        stop, j = true, j + 1
       end
       if numbers > 0 and (stop or not toks[j]) then
         local last = toks[j - 1]
@@ -7582,6 +7590,28 @@ function M.quoted_clearance(text, world)
   return r
 end
 
+-- "exp1: hop7 vs -800", "run3: x4 and op", "t2: ...": an experiment's id (one to five letters, then one to three
+-- figures, perhaps a letter) before a colon opening the line, a word after it, is a label set apart, when its
+-- letters name no value (lexicon.value_names, shorthand: "fl200:") and are not the letters an id of an aircraft
+-- that flies opens with ("klm3:" with KLM33 flying is a callsign typed short, and stays), and either are an
+-- experiment's (lexicon.id_labels) or come before an aircraft that flies ("AC02: heading 180" with no AC02 flying
+-- stays the addressee)
+G.id_labels = set_of(lexicon.id_labels)
+function G.id_label(text, world)
+  if not text:find(":", 1, true) then return text end
+  local letters, figures, rest = text:match("^%s*(%a%a?%a?%a?%a?)(%d%d?%d?%a?)%s*:%s*(%a.*)$")
+  if not letters then return text end
+  letters = letters:lower()
+  if G.value_name_set[letters] or lexicon.shorthand[letters] or G.terse_list.labels[letters] then return text end
+  local first, before = (rest:match("^([%w]+)") or ""):lower(), false
+  for _, a in ipairs(world.aircraft) do
+    local id = (a.id or ""):lower()
+    if (id:match("^%a+") or "") == letters then return text end
+    before = before or id == first
+  end
+  return (G.id_labels[letters] or before) and rest or text
+end
+
 function M.translate(text, world)
   local said = text
   world = world or {}
@@ -7590,7 +7620,7 @@ function M.translate(text, world)
   local quoted = M.quoted_clearance(text, world)
   if quoted then return quoted end
   if text:find("\xC3", 1, true) then text = text:gsub("[\xC3][\x80-\xBF]", lexicon.accents) end  -- (UTF-8 Latin-1 letters)
-  text = numbered_steps(text)
+  text = G.id_label(numbered_steps(text), world)
   -- ("climb to 10 km", "descend to 7.5 km": a level in kilometres straight after the vertical verb, as metres)
   if text:find("km", 1, true) then
     for _, verb in ipairs({ "[Cc]limbs?%s+to", "[Cc]limbs?", "[Dd]escends?%s+to", "[Dd]escends?" }) do

@@ -627,6 +627,8 @@ return {
                       -- "... actually no, just the descent": after a self-correction, "just"/"only" and one of these
                       -- names the instructions said before it that stand (by the command they issued)
                       only = { "just", "only" },
+                      -- an apology closing a value ruled out ("fl200 not 180 sorry"): the value before stands
+                      apology = { "sorry", "apologies", "oops", "soz" },
                       -- a verb of setting before the instruction said in place of the one taken back ("half
                       -- height one thousand... no, set zone half height to five hundred feet")
                       setting = { "set", "put", "change", "reset" },
@@ -1461,6 +1463,10 @@ return {
     level = { "fl", "alt", "altitude", "level", "lvl", "ft", "feet", "climb", "descend", "desc", "clb", "dsc",
       "squawk", "sq", "code", "xpdr", "transponder" },
     joins = { "and", "," } },
+  -- the letters of an experiment's ids typed as a label before a colon ("exp1:", "run3:", "t2:", "trial4:"); any
+  -- other letters make such a label only before an aircraft that flies (G.id_label)
+  id_labels = { "exp", "expt", "run", "t", "trial", "test", "case", "cond", "scen", "block", "sess", "item", "task",
+    "ex", "ev", "event", "q", "p", "part" },
   -- resolution methods said in words
   mvp = { "mvp", "voltage", "potential" },
   -- abbreviations a recogniser may spell letter by letter ("f l one two zero"), beside the words of

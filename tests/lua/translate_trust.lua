@@ -9987,8 +9987,7 @@ end
 -- callsign and a side, "rm" opening the line, "del rte", "lvl?", "vert sep"), read as the words where the word
 -- beside it fits; elsewhere it stays as typed (and asked)
 do
-  local _, ex = scene({ "CRE AB123 A320 51.0 3.0 090 FL250 280", "CRE PHXYZ C172 51.2 3.4 270 3000 100",
-    "ADDWPT AB123 SPY" })
+  local _, ex = scene({ "CRE AB123 A320 51.0 3.0 090 FL250 280", "CRE PHXYZ C172 51.2 3.4 270 3000 100" })
   check_eq(ex("ab123 head 145"), "HDG AB123 145")
   check_eq(ex("ab123 incr 300"), "SPD AB123 300")
   check_eq(ex("ab123 decr to 250"), "SPD AB123 250")
@@ -10039,4 +10038,21 @@ do
   asked(ex("ab123 9050 hdg 120"), "no hundreds of feet")
   asked(ex("ab123 9000 hdg 120 if able"), "other words beside the list")
   asked(ex("phxyz 4500 sq 7000 hdg 200"), "a transponder code said")
+end
+
+-- Cycle 47 (g109a): an experiment's id before a colon opening the line ("run4:", "c2:") is a label set apart,
+-- unless its letters open an aircraft's id that flies; a value ruled out after "not" with an apology closing it
+-- leaves the value before it
+do
+  local _, ex = scene({ "CRE AB123 A320 51.0 3.0 090 FL250 280", "CRE CD45 C172 51.2 3.4 270 3000 100" })
+  check_eq(ex("run4: ab123 hdg 170"), "HDG AB123 170")
+  check_eq(ex("trial12b: ab123 spd 240"), "SPD AB123 240")
+  asked(ex("ab12: fl300"), "letters of AB123: a callsign typed short")
+  asked(ex("cd4: hdg 100"), "letters of CD45")
+  check_eq(ex("ab123 fl310 not 290 oops"), "ALT AB123 FL310")
+  check_eq(ex("ab123 hdg 120 not 210 sorry"), "HDG AB123 120")
+  check_eq(ex("ab123 fl310 not 290 sorry, cd45 hdg 080"), "ALT AB123 FL310 ; HDG CD45 80")
+  check_eq(ex("zz9: cd45 hdg 080"), "HDG CD45 80")
+  asked(ex("zz9: x3 and op"), "no aircraft after an id of no experiment's letters")
+  asked(ex("ab123 fl310 sorry"), "an apology with no value ruled out")
 end
