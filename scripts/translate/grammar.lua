@@ -187,7 +187,8 @@ local function know_all(v, seen)
   -- they mean, so a heard form left as it was ("vire a la izquierda": no neighbour fits) is no word squawk knows;
   -- lexicon.name_particles are words of a place's name ("de los reyes"), accounted for only inside the name read,
   -- and lexicon.digit_homophones digits only inside a callsign read ("won", "ate"); lexicon.kept_as_is only
-  -- where a value is read as kept)
+  -- where a value is read as kept; lexicon.id_labels only the letters of a label's id, lexicon.terse_list only
+  -- the words of a terse list, lexicon.self_correction.apology only after a value ruled out)
   if type(v) ~= "table" or seen[v] or v == lexicon.accounted.courtesy_phrases or v == lexicon.accounted.value_phrases
       or v == lexicon.typed_abbreviations
       or v == lexicon.aside or v == lexicon.self_correction.just_the or v == lexicon.foreign_digits or v == lexicon.foreign_hesitation_digits
@@ -196,7 +197,8 @@ local function know_all(v, seen)
       or v == lexicon.manner or v == lexicon.deadline_places or v == lexicon.held_value
       or v == lexicon.dictated_punctuation or v == lexicon.acknowledged or v == lexicon.said_whole or v == lexicon.heard_as
       or v == lexicon.name_particles or v == lexicon.digit_homophones or v == lexicon.asides_alone
-      or v == lexicon.kept_as_is then
+      or v == lexicon.kept_as_is or v == lexicon.id_labels or v == lexicon.terse_list
+      or v == lexicon.self_correction.apology then
     return
   end
   seen[v] = true
@@ -7594,8 +7596,8 @@ end
 -- figures, perhaps a letter) before a colon opening the line, a word after it, is a label set apart, when its
 -- letters name no value (lexicon.value_names, shorthand: "fl200:") and are not the letters an id of an aircraft
 -- that flies opens with ("klm3:" with KLM33 flying is a callsign typed short, and stays), and either are an
--- experiment's (lexicon.id_labels) or come before an aircraft that flies ("AC02: heading 180" with no AC02 flying
--- stays the addressee)
+-- experiment's (lexicon.id_labels, lexicon.aside.study_labels) or come before an aircraft that flies
+-- ("AC02: heading 180" with no AC02 flying stays the addressee)
 G.id_labels = set_of(lexicon.id_labels)
 function G.id_label(text, world)
   if not text:find(":", 1, true) then return text end
@@ -7609,7 +7611,7 @@ function G.id_label(text, world)
     if (id:match("^%a+") or "") == letters then return text end
     before = before or id == first
   end
-  return (G.id_labels[letters] or before) and rest or text
+  return (G.id_labels[letters] or CM_STUDY[letters] or before) and rest or text
 end
 
 function M.translate(text, world)

@@ -1463,10 +1463,10 @@ return {
     level = { "fl", "alt", "altitude", "level", "lvl", "ft", "feet", "climb", "descend", "desc", "clb", "dsc",
       "squawk", "sq", "code", "xpdr", "transponder" },
     joins = { "and", "," } },
-  -- the letters of an experiment's ids typed as a label before a colon ("exp1:", "run3:", "t2:", "trial4:"); any
-  -- other letters make such a label only before an aircraft that flies (G.id_label)
-  id_labels = { "exp", "expt", "run", "t", "trial", "test", "case", "cond", "scen", "block", "sess", "item", "task",
-    "ex", "ev", "event", "q", "p", "part" },
+  -- the letters of an experiment's ids typed glued to their figures as a label before a colon ("t2:", "sess4:"),
+  -- beside lexicon.aside.study_labels ("exp1:", "run3:"); any other letters make such a label only before an
+  -- aircraft that flies (G.id_label)
+  id_labels = { "t", "ex", "ev", "sess", "task", "item", "part", "p" },
   -- resolution methods said in words
   mvp = { "mvp", "voltage", "potential" },
   -- abbreviations a recogniser may spell letter by letter ("f l one two zero"), beside the words of
