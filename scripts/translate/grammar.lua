@@ -1025,6 +1025,7 @@ local function typed_abbreviations(text)
   local function fits(set, k)
     local w = bare(k)
     if set["#start"] and (k == 0 or (toks[k] and toks[k]:match("[,;:.!]$"))) then return true end
+    if set["#end"] and (toks[k] == nil or toks[k - 1]:match("[,;:.!]$")) then return true end
     return w ~= nil and (set[w] or (set["#number"] and (w:match("^%d") or w:match("^fl%d")) ~= nil)
       or (set["#place"] and toks[k]:match("^%u%u%u%u?%u?%p*$") ~= nil))
   end

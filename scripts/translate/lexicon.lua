@@ -420,7 +420,8 @@ return {
   -- controllers' typed abbreviations of instruction words (text ATC on the online networks), read as the
   -- words they stand for where a word beside them shows the instruction: `word`, the words read; `next` /
   -- `prev`, words one of which must be the next / the previous word ("#number": a value typed with digits,
-  -- "fl180" too; "#place": see pd; "#start": the line's first word or one after punctuation, for `prev`);
+  -- "fl180" too; "#place": see pd; "#start": the line's first word or one after punctuation, for `prev`; "#end":
+  -- none, the abbreviation closing its clause, for `next`);
   -- `after_next`, the same of the word after next (a callsign between: "trn hop7 rgt 20"); a list of such
   -- readings is tried in order; `not_prev`, words that keep it as typed. Elsewhere it stays as typed ("direct
   -- TRN" is Turnberry, "trail red" a colour, "Red Cap" an airline).
@@ -465,7 +466,9 @@ return {
     rs = { word = "reduce speed", next = "#number to" },
     -- ("SAS902 x NAXEL @ FL200": "x" before a fix's ident is "cross")
     x = { word = "cross", next = "#place" },
-    exp = { word = "expect", next = "ils rnav vis visual loc rwy runway approach app #number" },
+    -- (and after a level or value closing its clause, "desc fl200 exp", expedite)
+    exp = { { word = "expect", next = "ils rnav vis visual loc rwy runway approach app #number" },
+            { word = "expedite", prev = "#number", next = "#end" } },
     hvy = { word = "heavy" }, adn = { word = "and" },
     thsnd = { word = "thousand", prev = "#number" }, thsd = { word = "thousand", prev = "#number" },
     -- (hesitations typed as said: "mach .. erm spd 270"; a typed "err" or "sry" is "sorry": what follows it

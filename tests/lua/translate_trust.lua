@@ -9997,6 +9997,8 @@ do
   check_eq(ex("ab123 lvl?"), "POS AB123")
   check_eq(ex("ab123 lvl 310"), "ALT AB123 FL310")
   check_eq(ex("vert sep 1500 ft"), "ZONEDH 1500")
+  check_eq(ex("ab123 desc fl180 exp"), "ALT AB123 FL180")
+  asked(ex("ab123 desc fl180 exp rate"), "'exp' not closing its clause")
   -- where the word beside it does not fit, the shorthand is no command word
   asked(ex("ab123 rm"), "'rm' not opening the line")
   asked(ex("trn ab123 25"), "'trn' with no side")
