@@ -187,7 +187,8 @@ local function know_all(v, seen)
   -- they mean, so a heard form left as it was ("vire a la izquierda": no neighbour fits) is no word squawk knows;
   -- lexicon.name_particles are words of a place's name ("de los reyes"), accounted for only inside the name read,
   -- and lexicon.digit_homophones digits only inside a callsign read ("won", "ate"); lexicon.kept_as_is only
-  -- where a value is read as kept)
+  -- where a value is read as kept; lexicon.id_labels only the letters of a label's id, lexicon.terse_list only
+  -- the words of a terse list, lexicon.self_correction.apology only after a value ruled out)
   if type(v) ~= "table" or seen[v] or v == lexicon.accounted.courtesy_phrases or v == lexicon.accounted.value_phrases
       or v == lexicon.typed_abbreviations
       or v == lexicon.aside or v == lexicon.self_correction.just_the or v == lexicon.foreign_digits or v == lexicon.foreign_hesitation_digits
@@ -196,7 +197,8 @@ local function know_all(v, seen)
       or v == lexicon.manner or v == lexicon.deadline_places or v == lexicon.held_value
       or v == lexicon.dictated_punctuation or v == lexicon.acknowledged or v == lexicon.said_whole or v == lexicon.heard_as
       or v == lexicon.name_particles or v == lexicon.digit_homophones or v == lexicon.asides_alone
-      or v == lexicon.kept_as_is then
+      or v == lexicon.kept_as_is or v == lexicon.id_labels or v == lexicon.terse_list
+      or v == lexicon.self_correction.apology then
     return
   end
   seen[v] = true
@@ -712,7 +714,9 @@ local function self_corrections(text)
     -- (a turn's side corrected: "turn left... I mean right heading 200")
     -- (a run that takes back in words, "never mind", "forget that", before an instruction's word is no value
     -- corrected: G:self_corrected reads the instruction said in its place)
+    -- (an apology after a value ruled out, "fl200 not 180 sorry, ...", corrects nothing: negated_values)
     if j > k and marked and not (dropping and after[nxt and nxt.bare or ""] and not SIDES[nxt.bare])
+        and not (toks[k - 2] and toks[k - 2].bare == "not" and G.apology[toks[k].bare])
         and (value(toks[k - 1]) or (toks[k - 1] and SIDES[toks[k - 1].bare]) or position) and nxt
         and (nxt.bare:match("^%a?%a?%.?%d") or NUMBER_WORDS[nxt.bare] or after[nxt.bare] or position) then
       pieces[#pieces + 1] = text:sub(from, toks[k].at - 1) .. ", correction, "
@@ -800,9 +804,11 @@ end
 
 -- "flight level two six zero, not two eight zero", "heading 300, not 310": a value said after "not"
 -- straight after another value, ending its clause, is the one the speaker rules out (a readback
--- corrected); it is dropped, with its "not", and the value before it stands. Anywhere else ("climb FL310
+-- corrected); it is dropped, with its "not", and the value before it stands; so is an apology closing the
+-- request after it ("fl200 not 180 sorry", lexicon.self_correction.apology). Anywhere else ("climb FL310
 -- not 300 speed 250") the "not" stays, and is asked about.
 local NEGATED_NOUNS = set_of({ "fl", "flight", "level", "heading", "speed", "mach", "point" })
+G.apology = set_of(lexicon.self_correction.apology)
 local function negated_values(text)
   if not text:lower():find("not", 1, true) then return text end  -- (no "not" said)
   local toks = bare_words(text)
@@ -816,6 +822,10 @@ local function negated_values(text)
         stop = toks[j].raw:match("%p$") ~= nil
         j = j + 1
         if stop then break end
+      end
+      if numbers > 0 and not stop and toks[j] and G.apology[toks[j].bare] and (not toks[j + 1]
+          or toks[j].raw:match("[,%.!;]$")) then
+        stop, j = true, j + 1
       end
       if numbers > 0 and (stop or not toks[j]) then
         local last = toks[j - 1]
@@ -985,21 +995,34 @@ for _, word in ipairs({ "point", "decimal" }) do
   local said = word:gsub("%a", function(c) return "[" .. c:lower() .. c:upper() .. "]" end)
   POINT_SAID[#POINT_SAID + 1] = { word = word, pattern = "%f[%d](%d+)%s+" .. said .. "%s+(%d+)(%s+)(%a+)%f[%A]" }
 end
--- A clock multiplier typed alone as a clause ("seed 99 then 30 random a320 then x4", "hold, 4x"): the
--- simulation's rate, written out as "sim speed x4" (a callsign-like "x4" or a bare "4x" names no aircraft)
-local function lone_multipliers(text)
+-- A clock multiplier typed alone as a clause ("seed 99 then 30 random a320 then x4", "hold, 4x", "x4 and op"), or
+-- before the word "speed" or "rate" ending its clause ("x4 speed"): the simulation's rate, written out as "sim speed
+-- x4" (a callsign-like "x4" or a bare "4x" names no aircraft, unless an aircraft of that id flies: `world`, when
+-- given, holds the traffic)
+local function lone_multipliers(text, world)
   if not text:find("%d[xX]") and not text:find("[xX]%d") then return text end
   local words = {}
   for b, w, e in text:gmatch("()(%S+)()") do words[#words + 1] = { b = b, w = w, e = e } end
   local out, last = {}, 1
   local function joins(t) return t ~= nil and (t.w:lower() == "then" or t.w:lower() == "and") end
+  local function flies(id)
+    for _, a in ipairs(world and world.aircraft or {}) do
+      if (a.id or ""):upper() == id:upper() then return true end
+    end
+    return false
+  end
   for k, t in ipairs(words) do
     local core, tail = t.w:match("^(.-)([,;%.!]?)$")
     local n = core:match("^[xX](%d+%.?%d*)$") or core:match("^(%d+%.?%d*)[xX]$")
     local prev, nx = words[k - 1], words[k + 1]
-    if n and (not prev or prev.w:match("[,;%.!:]$") or joins(prev)) and (tail ~= "" or not nx or joins(nx)) then
-      out[#out + 1] = text:sub(last, t.b - 1) .. "sim speed x" .. n .. tail
-      last = t.e
+    local noun = tail == "" and nx and nx.w:lower():match("^(%a+)[,;%.!]?$")
+    noun = (noun == "speed" or noun == "rate") and (nx.w:match("[,;%.!]$") or not words[k + 2] or joins(words[k + 2]))
+    if n and (not prev or prev.w:match("[,;%.!:]$") or joins(prev)) and (tail ~= "" or not nx or joins(nx) or noun)
+        and not flies(core) then
+      -- (with words after it the factor goes after its figures: "x4 and", "x4, op" read as an aircraft's id)
+      local factor = nx and n .. "x" or "x" .. n
+      out[#out + 1] = text:sub(last, t.b - 1) .. "sim speed " .. factor .. (noun and nx.w:match("[,;%.!]?$") or tail)
+      last = noun and nx.e or t.e
     end
   end
   out[#out + 1] = text:sub(last)
@@ -1012,7 +1035,8 @@ for abbr, readings in pairs(lexicon.typed_abbreviations) do
   ABBREVIATIONS[abbr] = {}
   for _, a in ipairs(readings.word and { readings } or readings) do
     table.insert(ABBREVIATIONS[abbr], { word = a.word, next = a.next and word_set(a.next, 1),
-      prev = a.prev and word_set(a.prev, 1), not_prev = a.not_prev and word_set(a.not_prev, 1) })
+      prev = a.prev and word_set(a.prev, 1), not_prev = a.not_prev and word_set(a.not_prev, 1),
+      after_next = a.after_next and word_set(a.after_next, 1) })
   end
 end
 local function typed_abbreviations(text)
@@ -1030,6 +1054,8 @@ local function typed_abbreviations(text)
   local function bare(k) return toks[k] and toks[k]:lower():match("^(.-)%p*$") end
   local function fits(set, k)
     local w = bare(k)
+    if set["#start"] and (k == 0 or (toks[k] and toks[k]:match("[,;:.!]$"))) then return true end
+    if set["#end"] and (toks[k] == nil or toks[k - 1]:match("[,;:.!]$")) then return true end
     return w ~= nil and (set[w] or (set["#number"] and (w:match("^%d") or w:match("^fl%d")) ~= nil)
       or (set["#place"] and toks[k]:match("^%u%u%u%u?%u?%p*$") ~= nil))
   end
@@ -1040,7 +1066,7 @@ local function typed_abbreviations(text)
     for j = 1, readings and #readings or 0 do
       local a = readings[j]
       if (not a.next or fits(a.next, k + 1)) and (not a.prev or fits(a.prev, k - 1))
-          and not (a.not_prev and fits(a.not_prev, k - 1)) then
+          and (not a.after_next or fits(a.after_next, k + 2)) and not (a.not_prev and fits(a.not_prev, k - 1)) then
         toks[k], changed = a.word .. punct, true
         break
       end
@@ -1064,7 +1090,7 @@ local GAIN_LOSE = { gain = 1, lose = -1 }
 -- lexicon.value_names as a set (written_forms: a name glued to its value)
 G.value_name_set = set_of(lexicon.value_names)
 
-local function written_forms(text)
+local function written_forms(text, world)
   -- (each pattern pass runs through where(): only where `low`, the text in lower case, holds what the
   -- pattern requires, its first argument; a rewrite outside where() sets `low` again)
   local low = text:lower()
@@ -1076,7 +1102,7 @@ local function written_forms(text)
   -- "@ FL200", "x NAXEL @ 250", "@ 120 s ...": an at sign typed apart before a value or a name is "at"
   where("@", "(%s)@%s*(%w)", "%1at %2")
   where("@", "^@%s*(%w)", "at %1")
-  text = typed_abbreviations(lone_multipliers(tokens.numerals_apart(text, DIGIT_WORDS)))
+  text = typed_abbreviations(lone_multipliers(tokens.numerals_apart(text, DIGIT_WORDS), world))
   text = hyphened_types(spelled(heard_forms(negated_values(readback_heard(self_corrections(G.cancel_corrections(unlabelled(foreign_digits(G.said_whole(text))))))))))
   low = text:lower()
   -- a position typed as whole degrees after the hemisphere, then minutes ("N55 50.0 W003 20.0", "S33 57
@@ -7610,6 +7636,9 @@ end
 local PLACE_SLOTS = { add = true, append = true, insert = true, dct = true, dtc = true, drct = true, direct = true,
   after = true, before = true, via = true, over = true, cross = true, at = true, ["then"] = true }
 local TYPED_PLACE_NM = 250
+-- the slots of PLACE_SLOTS that are a place's verb: a word straight after one that squawk knows only as
+-- another word's inflection ("ezy45 add echos", ECHOS; "echo" is a command) is read as a place too
+G.place_verbs = set_of({ "add", "append", "insert", "dct", "dtc", "drct", "direct" })
 -- patterns finding a word of PLACE_SLOTS as a whole word in " " .. lower-case text .. " "
 local PLACE_SLOT_PATTERNS = {}  -- {word, pattern}
 for w in pairs(PLACE_SLOTS) do PLACE_SLOT_PATTERNS[#PLACE_SLOT_PATTERNS + 1] = { word = w, pattern = "%s" .. w .. "%s" } end
@@ -7634,6 +7663,42 @@ local function spelled_airports(text, world)
     if ids[code] or (world.airport_class(code) or "") == "" then return nil end
     return code, i + 4
   end)
+end
+-- "hop7 6000 hdg 220 230kt": in a terse typed list, an aircraft that flies then only values, each labelled
+-- (lexicon.terse_list) but one, that one a bare number of four or five figures in hundreds of feet (1000 to
+-- 60000), with no level, altitude word or transponder code said: that number is the level, written "6000ft".
+-- Any other word, a second bare number or none labelled leaves the text as it is (the number is asked about).
+G.terse_list = { labels = set_of(lexicon.terse_list.labels), units = set_of(lexicon.terse_list.units),
+  level = set_of(lexicon.terse_list.level), joins = set_of(lexicon.terse_list.joins) }
+function G.terse_altitude(text, world)
+  if not text:find("%d%d%d%d") then return text end
+  local L, ids, toks = G.terse_list, {}, {}
+  for _, a in ipairs(world.aircraft) do ids[(a.id or ""):lower()] = true end
+  for w in text:gmatch("[^%s,]+") do toks[#toks + 1] = w:lower() end
+  if not ids[toks[1] or ""] then return text end
+  local bare, labelled, k = nil, 0, 2
+  while k <= #toks do
+    local w = toks[k]
+    local letters, figures, unit = w:match("^(%a*)(%-?%d+%.?%d*)(%a*)$")
+    if L.level[w] or (letters and (L.level[letters] or L.level[unit])) then return text end
+    if letters and (L.labels[letters] or L.units[unit]) and (letters == "" or unit == "") then
+      labelled = labelled + 1
+    elseif letters == "" and unit == "" then
+      if L.units[toks[k + 1] or ""] or L.labels[toks[k - 1]] then
+        labelled = labelled + 1
+      elseif bare or not figures:match("^%d%d%d%d%d?$") or tonumber(figures) % 100 ~= 0
+          or tonumber(figures) < 1000 or tonumber(figures) > 60000 then
+        return text
+      else
+        bare = figures
+      end
+    elseif not (L.labels[w] or L.units[w] or L.joins[w]) then
+      return text
+    end
+    k = k + 1
+  end
+  if not bare or labelled == 0 then return text end
+  return (text:gsub("%f[%w]" .. bare .. "%f[%W]", bare .. "ft", 1))
 end
 local function typed_places(text, world)
   if not world.place_known then return text end
@@ -7692,7 +7757,8 @@ local function typed_places(text, world)
     local raw, rest = word:match("^(%a[%a%d]*)(.*)$")
     local w = raw and raw:lower()
     local named = w and slot and #w >= 3 and #w <= 5 and (not capitals or raw:match("^%u%l+$"))
-      and not known_word(w) and not ids[w] and not lexicon.shorthand[w] and near(w)
+      and (not known_word(w) or (not KNOWN[w] and G.place_verbs[(out[#out] or ""):lower():match("(%a+)$") or ""]))
+      and not ids[w] and not lexicon.shorthand[w] and near(w)
     k = k + 1
     -- ("cross e c k at FL190", "at j v l descend ...": an ident spelled letter by letter, the whole run of
     -- two to five single letters, on an aircraft's route or, of three letters or more, near the traffic)
@@ -7849,6 +7915,28 @@ function M.quoted_clearance(text, world)
   return r
 end
 
+-- "exp1: hop7 vs -800", "run3: x4 and op", "t2: ...": an experiment's id (one to five letters, then one to three
+-- figures, perhaps a letter) before a colon opening the line, a word after it, is a label set apart, when its
+-- letters name no value (lexicon.value_names, shorthand: "fl200:") and are not the letters an id of an aircraft
+-- that flies opens with ("klm3:" with KLM33 flying is a callsign typed short, and stays), and either are an
+-- experiment's (lexicon.id_labels, lexicon.aside.study_labels) or come before an aircraft that flies
+-- ("AC02: heading 180" with no AC02 flying stays the addressee)
+G.id_labels = set_of(lexicon.id_labels)
+function G.id_label(text, world)
+  if not text:find(":", 1, true) then return text end
+  local letters, figures, rest = text:match("^%s*(%a%a?%a?%a?%a?)(%d%d?%d?%a?)%s*:%s*(%a.*)$")
+  if not letters then return text end
+  letters = letters:lower()
+  if G.value_name_set[letters] or lexicon.shorthand[letters] or G.terse_list.labels[letters] then return text end
+  local first, before = (rest:match("^([%w]+)") or ""):lower(), false
+  for _, a in ipairs(world.aircraft) do
+    local id = (a.id or ""):lower()
+    if (id:match("^%a+") or "") == letters then return text end
+    before = before or id == first
+  end
+  return (G.id_labels[letters] or CM_STUDY[letters] or before) and rest or text
+end
+
 function M.translate(text, world)
   local said = text
   world = world or {}
@@ -7857,7 +7945,7 @@ function M.translate(text, world)
   local quoted = M.quoted_clearance(text, world)
   if quoted then return quoted end
   if text:find("\xC3", 1, true) then text = text:gsub("[\xC3][\x80-\xBF]", lexicon.accents) end  -- (UTF-8 Latin-1 letters)
-  text = numbered_steps(text)
+  text = G.id_label(numbered_steps(text), world)
   -- ("climb to 10 km", "descend to 7.5 km": a level in kilometres straight after the vertical verb, as metres)
   if text:find("km", 1, true) then
     for _, verb in ipairs({ "[Cc]limbs?%s+to", "[Cc]limbs?", "[Dd]escends?%s+to", "[Dd]escends?" }) do
@@ -8014,7 +8102,7 @@ function M.translate(text, world)
   local run_together
   text, run_together = G.run_together_position(text)
   if run_together then return { commands = {}, ask = run_together } end
-  text = spelled_airports(typed_places(written_forms(text), world), world)
+  text = G.terse_altitude(spelled_airports(typed_places(written_forms(text, world), world), world), world)
   -- a time typed in two parts ("at 10:30", "schedule at 00:15: ..."): hours and minutes or minutes and
   -- seconds, which squawk does not tell apart (FF reads "ff 1:30" itself); asked when another command
   -- would run without it

@@ -420,8 +420,11 @@ return {
   -- controllers' typed abbreviations of instruction words (text ATC on the online networks), read as the
   -- words they stand for where a word beside them shows the instruction: `word`, the words read; `next` /
   -- `prev`, words one of which must be the next / the previous word ("#number": a value typed with digits,
-  -- "fl180" too; "#place": see pd); a list of such readings is tried in order; `not_prev`, words that keep it as typed. Elsewhere it stays as typed ("direct TRN" is
-  -- Turnberry, "trail red" a colour, "Red Cap" an airline).
+  -- "fl180" too; "#place": see pd; "#start": the line's first word or one after punctuation, for `prev`; "#end":
+  -- none, the abbreviation closing its clause, for `next`);
+  -- `after_next`, the same of the word after next (a callsign between: "trn hop7 rgt 20"); a list of such
+  -- readings is tried in order; `not_prev`, words that keep it as typed. Elsewhere it stays as typed ("direct
+  -- TRN" is Turnberry, "trail red" a colour, "Red Cap" an airline).
   typed_abbreviations = {
     expd = { word = "expedite" }, expdt = { word = "expedite" }, til = { word = "until" },
     maint = { word = "maintain", next = "#number fl flight speed spd heading hdg altitude alt level present own" },
@@ -431,7 +434,20 @@ return {
     dscnd = { word = "descend", next = "#number fl flight level to" },
     dsc = { word = "descend", next = "#number fl flight level to" },
     clmb = { word = "climb", next = "#number fl flight level to" },
-    trn = { word = "turn", next = "left right lft rt lt rgt l r hdg heading" },
+    trn = { { word = "turn", next = "left right lft rt lt rgt l r hdg heading" },
+            { word = "turn", prev = "#start", after_next = "left right lft rt lt rgt l r hdg heading" } },
+    -- (an experimenter's shorthand of the command words: "head 030", "incr 280", "rm ooabc", "del rte",
+    -- "lvl?", "vert sep 2000ft"; "head" before no number, "rm" inside a line and "del" before no route
+    -- word stay as typed; "lvl" after a place's verb is the LVL navaid)
+    head = { word = "heading", next = "#number" },
+    incr = { word = "increase", next = "#number speed spd to" }, inc = { word = "increase", next = "#number speed spd to" },
+    decr = { word = "decrease", next = "#number speed spd to" },
+    rm = { word = "remove", prev = "#start" },
+    del = { word = "delete", next = "rte route wpt waypoint" },
+    rte = { word = "route" },
+    lvl = { word = "level", not_prev = "dct direct to via add after over cross at" },
+    vert = { word = "vertical", next = "sep separation speed spd rate" },
+    sep = { word = "separation", prev = "vertical horizontal lateral min minimum" },
     tl = { word = "turn left", next = "#number hdg heading" }, tr = { word = "turn right", next = "#number hdg heading" },
     fh = { word = "fly heading", next = "#number" },
     rsm = { word = "resume", next = "own normal nav navigation route speed" }, ctc = { word = "contact" },
@@ -450,7 +466,9 @@ return {
     rs = { word = "reduce speed", next = "#number to" },
     -- ("SAS902 x NAXEL @ FL200": "x" before a fix's ident is "cross")
     x = { word = "cross", next = "#place" },
-    exp = { word = "expect", next = "ils rnav vis visual loc rwy runway approach app #number" },
+    -- (and after a level or value closing its clause, "desc fl200 exp", expedite)
+    exp = { { word = "expect", next = "ils rnav vis visual loc rwy runway approach app #number" },
+            { word = "expedite", prev = "#number", next = "#end" } },
     hvy = { word = "heavy" }, adn = { word = "and" },
     thsnd = { word = "thousand", prev = "#number" }, thsd = { word = "thousand", prev = "#number" },
     -- (hesitations typed as said: "mach .. erm spd 270"; a typed "err" or "sry" is "sorry": what follows it
@@ -623,6 +641,8 @@ return {
                       -- "... actually no, just the descent": after a self-correction, "just"/"only" and one of these
                       -- names the instructions said before it that stand (by the command they issued)
                       only = { "just", "only" },
+                      -- an apology closing a value ruled out ("fl200 not 180 sorry"): the value before stands
+                      apology = { "sorry", "apologies", "oops", "soz" },
                       -- a verb of setting before the instruction said in place of the one taken back ("half
                       -- height one thousand... no, set zone half height to five hundred feet")
                       setting = { "set", "put", "change", "reset" },
@@ -1450,6 +1470,21 @@ return {
     refused_articles = { "that", "the", "your", "this" },
     pilots = { "if", "when", "you", "you're", "are", "not" },
   },
+  -- a terse typed list of an aircraft's values ("hop7 6000 hdg 220 230kt"): `labels`, words before a value that
+  -- name it; `units`, words after it (or glued to it) that name it; `level`, labels and units of a level (one
+  -- said makes a bare number no level of its own); `joins`, words between the values. A bare number there of
+  -- hundreds of feet in four or five figures is the level (G.terse_altitude)
+  terse_list = {
+    labels = { "hdg", "heading", "h", "spd", "speed", "s", "vs", "roc", "rod", "mach", "m", "l", "r", "lt", "rt",
+      "left", "right", "lft", "rgt" },
+    units = { "kt", "kts", "knots", "fpm", "deg", "degs", "degrees" },
+    level = { "fl", "alt", "altitude", "level", "lvl", "ft", "feet", "climb", "descend", "desc", "clb", "dsc",
+      "squawk", "sq", "code", "xpdr", "transponder" },
+    joins = { "and", "," } },
+  -- the letters of an experiment's ids typed glued to their figures as a label before a colon ("t2:", "sess4:"),
+  -- beside lexicon.aside.study_labels ("exp1:", "run3:"); any other letters make such a label only before an
+  -- aircraft that flies (G.id_label)
+  id_labels = { "t", "ex", "ev", "sess", "task", "item", "part", "p" },
   -- resolution methods said in words
   mvp = { "mvp", "voltage", "potential" },
   -- abbreviations a recogniser may spell letter by letter ("f l one two zero"), beside the words of

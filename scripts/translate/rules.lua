@@ -216,10 +216,10 @@ return function(intent, rule, words)
     end
     return g.fields_create == i
   end }
-  -- "swr84c altitude?", "afr1442 speed?": a state word asked with "?" straight after it, an aircraft named
+  -- "swr84c altitude?", "afr1442 speed?", "bel21a lvl?": a state word asked with "?" straight after it, an aircraft named
   -- before it and no value said anywhere: a question of the aircraft's state (POS), no instruction (an
   -- instruction's shorthand, "ezy45 fl?", "hdg?", is a value left out: asked)
-  rule { "altitude speed heading mach airspeed", "pos", when = function(g, i)
+  rule { "altitude level speed heading mach airspeed", "pos", when = function(g, i)
     local nx = g.t[i + 1]
     return nx ~= nil and nx.kind == "punct" and nx.text == "?" and g:has_ref(1, i, "aircraft")
       and #g:quantities(1, #g.t + 1) == 0

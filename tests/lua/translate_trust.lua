@@ -10163,3 +10163,79 @@ do
   check_eq(ex("ac101 increase speed 300 knots, no speed restriction"), "SPD AC101 300")
   check_eq(ex("ac101 descend fl200, no speed restriction"), "ALT AC101 FL200")
 end
+
+-- Cycle 47 (g109a): an experimenter's typed shorthand of the command words ("head", "incr", "decr", "trn" before a
+-- callsign and a side, "rm" opening the line, "del rte", "lvl?", "vert sep"), read as the words where the word
+-- beside it fits; elsewhere it stays as typed (and asked)
+do
+  local _, ex = scene({ "CRE AB123 A320 51.0 3.0 090 FL250 280", "CRE PHXYZ C172 51.2 3.4 270 3000 100" })
+  check_eq(ex("ab123 head 145"), "HDG AB123 145")
+  check_eq(ex("ab123 incr 300"), "SPD AB123 300")
+  check_eq(ex("ab123 decr to 250"), "SPD AB123 250")
+  check_eq(ex("trn ab123 lft 15 degs"), "HDG AB123 75 LEFT")
+  check_eq(ex("rm phxyz"), "DEL PHXYZ")
+  check_eq(ex("ab123 del rte"), "DELRTE AB123")
+  check_eq(ex("ab123 lvl?"), "POS AB123")
+  check_eq(ex("ab123 lvl 310"), "ALT AB123 FL310")
+  check_eq(ex("vert sep 1500 ft"), "ZONEDH 1500")
+  check_eq(ex("ab123 desc fl180 exp"), "ALT AB123 FL180")
+  asked(ex("ab123 desc fl180 exp rate"), "'exp' not closing its clause")
+  -- where the word beside it does not fit, the shorthand is no command word
+  asked(ex("ab123 rm"), "'rm' not opening the line")
+  asked(ex("trn ab123 25"), "'trn' with no side")
+  asked(ex("ab123 head for it"), "'head' with no number")
+end
+do
+  local _, ex = navscene({ "CRE AB123 A320 51.0 3.0 090 FL250 280" }, "a fix typed in lower case after 'add'")
+  if ex then
+    -- (ECHOS, a fix near the traffic, typed as if the plural of the command word "echo")
+    check_eq(ex("ab123 add echos"), "ADDWPT AB123 ECHOS")
+    asked(ex("ab123 add echo"), "'echo' is a command word")
+  end
+end
+
+-- Cycle 47 (g109a): a rate multiplier typed "xN" or "Nx" alone in its clause, or before "speed" or "rate" ending
+-- it, is the simulation's rate (DTMULT) when no aircraft of that id flies; with one flying it stays the aircraft
+do
+  local _, ex = scene({ "CRE AB123 A320 51.0 3.0 090 FL250 280" })
+  check_eq(ex("x8 speed"), "DTMULT 8")
+  check_eq(ex("x3 and op"), "DTMULT 3 ; OP")
+  check_eq(ex("2x rate then op"), "DTMULT 2 ; OP")
+  check_eq(ex("x6, op"), "DTMULT 6 ; OP")
+  local _, ex2 = scene({ "CRE X8 C172 51.0 3.0 090 3000 100" })
+  asked(ex2("x8 speed"), "an aircraft X8 flies: its speed, no value")
+  asked(ex2("x8 and op"), "an aircraft X8 flies")
+end
+
+-- Cycle 47 (g109a): a bare number of hundreds of feet in four or five figures, in a terse typed list of an
+-- aircraft's values all labelled but it, is the level; a second bare number, another word, a level or code said,
+-- or a number of no hundreds is asked
+do
+  local _, ex = scene({ "CRE AB123 A320 51.0 3.0 090 FL250 280", "CRE PHXYZ C172 51.2 3.4 270 3000 100" })
+  check_eq(ex("phxyz 4500 h300 95kt"), "ALT PHXYZ 4500 ; HDG PHXYZ 300 ; SPD PHXYZ 95")
+  check_eq(ex("ab123 spd 250, 14000"), "SPD AB123 250 ; ALT AB123 14000")
+  check_eq(ex("ab123 9000 vs -2000"), "ALT AB123 9000 ; VS AB123 -2000")
+  asked(ex("ab123 9000"), "a bare number alone")
+  check_eq(ex("ab123 9000 210 kts"), "ALT AB123 9000 ; SPD AB123 210")
+  asked(ex("ab123 9000 210 hdg 100"), "no label on 210 either: two bare numbers")
+  asked(ex("ab123 9050 hdg 120"), "no hundreds of feet")
+  asked(ex("ab123 9000 hdg 120 if able"), "other words beside the list")
+  asked(ex("phxyz 4500 sq 7000 hdg 200"), "a transponder code said")
+end
+
+-- Cycle 47 (g109a): an experiment's id before a colon opening the line ("run4:", "c2:") is a label set apart,
+-- unless its letters open an aircraft's id that flies; a value ruled out after "not" with an apology closing it
+-- leaves the value before it
+do
+  local _, ex = scene({ "CRE AB123 A320 51.0 3.0 090 FL250 280", "CRE CD45 C172 51.2 3.4 270 3000 100" })
+  check_eq(ex("run4: ab123 hdg 170"), "HDG AB123 170")
+  check_eq(ex("trial12b: ab123 spd 240"), "SPD AB123 240")
+  asked(ex("ab12: fl300"), "letters of AB123: a callsign typed short")
+  asked(ex("cd4: hdg 100"), "letters of CD45")
+  check_eq(ex("ab123 fl310 not 290 oops"), "ALT AB123 FL310")
+  check_eq(ex("ab123 hdg 120 not 210 sorry"), "HDG AB123 120")
+  check_eq(ex("ab123 fl310 not 290 sorry, cd45 hdg 080"), "ALT AB123 FL310 ; HDG CD45 80")
+  check_eq(ex("zz9: cd45 hdg 080"), "HDG CD45 80")
+  asked(ex("zz9: x3 and op"), "no aircraft after an id of no experiment's letters")
+  asked(ex("ab123 fl310 sorry"), "an apology with no value ruled out")
+end
