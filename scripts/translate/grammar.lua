@@ -6186,7 +6186,7 @@ function G:not_simulated()
       end
     end
     if class then
-      local e, comma = i + 1, false
+      local e, comma, level_at = i + 1, false, nil
       while e <= #self.t do
         local x = self.t[e]
         comma = comma or (x.kind == "punct" and x.text == ",")
@@ -6201,6 +6201,23 @@ function G:not_simulated()
         if class.one_value and x.kind == "number" then
           e = e + 1
           break
+        end
+        -- ("hold at KOK 2000ft", "holding over COA, FL120", "hold at KOK at FL120": a level with its unit straight
+        -- after the fix, or after the fix and a comma or "at", is the level flown there, no part of the hold; a bare
+        -- number there is asked)
+        if class.level_after_place and #self:refs_in(e - 1, e, "waypoint") > 0 then
+          local v = (x.text == "," or self:word(e, "at")) and e + 1 or e
+          local q = self:quantities(v, v + 3)[1]
+          if q and q.kind == "alt" and q.b == v then
+            level_at = q.e
+            break
+          end
+          if q and q.kind == "plain" and q.b == v then
+            self:need(string.format("squawk does not simulate holding patterns. Is '%s' the altitude to fly at %s? "
+              .. "Please say it with its unit (\"%s ft\" or a flight level).", self:raw(v, q.e), self:raw(e - 1, e),
+              self:raw(v, q.e)))
+            break
+          end
         end
         -- ("squawk 4721 at GRR descend FL290", "contact Chicago when 40 miles from GRR descend FL290"): a
         -- condition after the phrase of a class that takes no time anchors the instruction said after it with
@@ -6255,6 +6272,12 @@ function G:not_simulated()
       local k = self:word(e, "and") and e + 1 or e
       -- ("hold for ten minutes, after that descend 9000": a word of sequence the phrase ran through is the same)
       local later = self:word(k, "then") and k + 1
+      -- ("hold at KOK FL90 then heading 200": "then" after the level flown in the hold waits for the hold too)
+      if level_at then
+        local a = (self.t[level_at] and self.t[level_at].text == ",") and level_at + 1 or level_at
+        a = self:word(a, "and") and a + 1 or a
+        later = later or (self:word(a, "then") and a + 1)
+      end
       for x = i + 1, e - 1 do
         if self:word(x, "afterwards thereafter") or (self:word(x, "after") and self:word(x + 1, "that")) then later = e end
       end

@@ -1068,11 +1068,13 @@ return {
     -- "turn around completely, 360 to the right", "a full circle": a turn back onto the same heading
     { what = "orbits", words = "turn turning", near = { "completely", "circle" }, to_end = true },
     { what = "orbits", words = "full", near = { "circle", "360", "sixty", "turn" }, takes_time = true },
-    { what = "holding patterns", words = "holding", takes_time = true },
+    -- (`level_after_place`: a level with its unit said straight after the fix, "hold at KOK 2000ft", is the
+    -- level flown there: read as an instruction of its own, G:not_simulated)
+    { what = "holding patterns", words = "holding", takes_time = true, level_after_place = true },
     -- (`not_before`: "hold the sim at 30 minutes" holds the simulation, no aircraft)
     { what = "holding patterns", words = "hold",
       near = { "at", "over", "published", "short", "fix", "inbound", "turns", "#waypoint" }, takes_time = true,
-      not_before = "@sim", no_value = true },
+      not_before = "@sim", no_value = true, level_after_place = true },
     { what = "holding patterns", words = "enter", near = { "hold", "holding" }, takes_time = true },
     -- "KL204, hold": said to an aircraft, no pause of the simulation; what follows "then" waits for it
     -- (`no_value`: a value said straight after it, "hold 250 knots", "hold FL150", is kept: G:value_next)

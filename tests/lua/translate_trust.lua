@@ -9982,3 +9982,49 @@ do
   local _, ex2 = scene({ "CRE SWR120 A320 46.4 6.5 220 FL110 250", "CRE SUI4 C130 46.5 5.7 140 FL130 270" })
   asked(ex2("the swiss descend FL090"), "Swiss with a Swiss Air Force aircraft flying")
 end
+
+-- Cycle 47 (g109b): a request that sends nothing always says why: a question naming what it needs, or the note
+-- naming what squawk does not simulate (eval-translate lists a note-only outcome as "ASK " with no text: it is
+-- the note's); swept over corpora here, over every corpus once by hand
+do
+  local nodes = require("translate.nodes")
+  local NAV = "../shared/bluesky/navdata"
+  local has_nav = pcall(squawk.sim.new, { navdata = NAV })
+  local silent = {}
+  local function sweep(path)
+    squawk.translate.evaluate(path, function(c)
+      local sim = has_nav and squawk.sim.new({ navdata = NAV }) or squawk.sim.new()
+      for _, line in ipairs(nodes.split_commands(c.setup)) do sim:exec(line) end
+      local r = graph.translate(c.utterance, { mode = "offline", sim = sim, waypoints = nodes.defined_waypoints(c.setup) })
+      if #(r.commands or {}) == 0 and (r.ask or "") == "" and (r.note or "") == "" and not r.error then
+        silent[#silent + 1] = c.utterance
+      end
+      return r
+    end)
+  end
+  for _, f in ipairs({ "tests/data/translate_fresh.tsv", "tests/data/translate_round107.tsv",
+      "tests/data/translate_round106.tsv", "tests/data/translate_round93.tsv" }) do
+    sweep(f)
+  end
+  check_eq(table.concat(silent, " | "), "")
+end
+
+-- Cycle 47 (g109b): "hold at FIX <level>": the level with its unit said straight after the fix (or after a comma
+-- or "at") is flown, the hold named as not simulated; a bare number there is asked; a hold alone sends nothing
+-- and says so
+do
+  local s, ex = scene({ "CRE PHABC C172 52.3 4.9 250 3000 100", "CRE TRA55 B738 52.1 4.6 080 FL140 250",
+    "DEFWPT KUMBA 52.4 5.1", "DEFWPT TULIP 52.0 4.4", "ADDWPT TRA55 TULIP" })
+  local r = graph.translate("phabc hold over kumba 2500 ft", { sim = s, mode = "offline" })
+  check_eq(said(r), "ALT PHABC 2500")
+  check(r.note ~= nil and r.note:find("holding patterns ('hold over KUMBA')", 1, true) ~= nil, tostring(r.note))
+  check_eq(ex("TRA55 hold at TULIP, FL110"), "ALT TRA55 FL110")
+  check_eq(ex("tra55 holding over tulip at fl120"), "ALT TRA55 FL120")
+  check_eq(ex("tra55 hold at tulip fl 90 then hdg 200"), "ASK " .. "squawk does not simulate holding patterns ('hold at TULIP'), "
+    .. "and what is said after it waits for it: please give that instruction when it applies.")
+  asked(ex("tra55 hold at tulip FL100, then turn left heading 300"), "an instruction after the hold and its level")
+  local q = ex("phabc hold at kumba 2500")
+  check(q:find("Is '2500' the altitude to fly at KUMBA?", 1, true) ~= nil, q)
+  r = graph.translate("tra55 hold at tulip, expect further clearance at one five", { sim = s, mode = "offline" })
+  check(#r.commands == 0 and (r.note or ""):find("holding patterns", 1, true) ~= nil, said(r))
+end
