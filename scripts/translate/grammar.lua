@@ -2528,7 +2528,13 @@ function G:segments(b, e)
   end
   if own and self:has_ref(b, qs[1].b, "aircraft") and not self:word_in(b, trig[1].pos, "@level_condition @condition") then
     for k = qs[#qs].e, trig[1].pos - 1 do
-      if self.t[k].kind == "punct" or self:word(k, "@then_words") then
+      -- ("klm33 fl220 and ryr8 hdg 240", "klm33 fl220 ryr8 hdg 240": another flying aircraft after "and" or
+      -- straight after the value parts them as a comma does)
+      local at = (self:word(k, "and") and k + 1) or (k == qs[#qs].e and k)
+      local other = at and self:refs_in(at, at + 1, "aircraft")[1]
+      local first = other and self:refs_in(b, qs[1].b, "aircraft")[1]
+      if self.t[k].kind == "punct" or self:word(k, "@then_words") or (other and other.exists
+          and other.name:upper() ~= first.name:upper()) then
         segs[1] = { intent = "infer", b = b, trig = b, e = k }
         break
       end

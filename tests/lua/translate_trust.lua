@@ -10028,3 +10028,16 @@ do
   r = graph.translate("tra55 hold at tulip, expect further clearance at one five", { sim = s, mode = "offline" })
   check(#r.commands == 0 and (r.note or ""):find("holding patterns", 1, true) ~= nil, said(r))
 end
+
+-- Cycle 47 (g109b): two aircraft in one typed line: a callsign and a value with its unit, then "and" or straight
+-- another flying aircraft with its own instruction: each instruction goes to the callsign said before it; an
+-- aircraft that is not flying is asked about
+do
+  local _, ex = scene({ "CRE DLH4 A321 50.1 8.6 300 FL280 290", "CRE AUA61 A320 50.3 8.9 120 FL240 270",
+    "CRE SAS7 B738 50.0 8.2 200 FL330 280" })
+  check_eq(ex("dlh4 fl260 and aua61 hdg 090 lt"), "ALT DLH4 FL260 ; HDG AUA61 90 LEFT")
+  check_eq(ex("sas7 m.76 and dlh4 descend fl250"), "SPD SAS7 M0.76 ; ALT DLH4 FL250")
+  check_eq(ex("aua61 230kt sas7 hdg 160"), "SPD AUA61 230 ; HDG SAS7 160")
+  check_eq(ex("dlh4 fl260 and dlh4 hdg 320"), "ALT DLH4 FL260 ; HDG DLH4 320")
+  asked(ex("dlh4 fl260 and aua16 hdg 090"), "the second aircraft is not flying")
+end
