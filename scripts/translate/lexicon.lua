@@ -465,6 +465,8 @@ return {
     roc = { word = "rate of climb", next = "max maximum min minimum" },
     -- (the flight management computer's page typed by its name: "show me the FPLN")
     fpln = { word = "flight plan" },
+    -- ("when thru fl260 reduce 260": a level passed, typed short)
+    thru = { word = "through", next = "#number fl flight" },
     -- a game programmer's words for a turn, a heading and a vertical speed ("rotate 90 clockwise", "set its
     -- rotation to 090", "vertical velocity 0"): clockwise is a right turn
     clockwise = { word = "right" }, cw = { word = "right", prev = "#number" },

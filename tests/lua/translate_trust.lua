@@ -10041,3 +10041,28 @@ do
   check_eq(ex("dlh4 fl260 and dlh4 hdg 320"), "ALT DLH4 FL260 ; HDG DLH4 320")
   asked(ex("dlh4 fl260 and aua16 hdg 090"), "the second aircraft is not flying")
 end
+
+-- Cycle 47 (g109b): terse waypoint conditions. A heading after "at/over/after FIX", or a speed after "after FIX",
+-- is no constraint the waypoint carries: the instruction there (AT ... DO) when FIX is on the route; a level with
+-- no verb stays the constraint ("over FIX FL140") or is asked ("after FIX FL140"); a level or speed after "then"
+-- tied to a direct-to's waypoint runs there; "thru" is "through"; "till" a level is "to" it after a rate
+do
+  local _, ex = scene({ "CRE EWG9 A320 51.5 7.0 090 FL300 280", "DEFWPT LOMKI 51.6 7.6", "DEFWPT ROTEN 51.7 8.4",
+    "ADDWPT EWG9 LOMKI", "ADDWPT EWG9 ROTEN", "DEFWPT OFFRT 50.0 6.0" })
+  check_eq(ex("ewg9 after lomki 240kt"), "AT EWG9 LOMKI DO SPD EWG9 240")
+  check_eq(ex("ewg9 after roten m.74"), "AT EWG9 ROTEN DO SPD EWG9 M0.74")
+  check_eq(ex("ewg9 over roten hdg 130"), "AT EWG9 ROTEN DO HDG EWG9 130")
+  check_eq(ex("ewg9 at lomki hdg 045"), "AT EWG9 LOMKI DO HDG EWG9 45")
+  check_eq(ex("ewg9 over lomki fl260"), "AT EWG9 LOMKI ALT FL260")
+  check_eq(ex("ewg9 at lomki 250kt"), "AT EWG9 LOMKI SPD 250")
+  asked(ex("ewg9 after lomki fl260"), "a level with no verb after the waypoint is passed")
+  asked(ex("ewg9 after offrt 240kt"), "a waypoint off the route")
+  check_eq(ex("ewg9 dct roten then fl240 at roten"), "DIRECT EWG9 ROTEN ; AT EWG9 ROTEN DO ALT EWG9 FL240")
+  check_eq(ex("ewg9 direct roten then at roten 260kt"), "DIRECT EWG9 ROTEN ; AT EWG9 ROTEN DO SPD EWG9 260")
+  asked(ex("ewg9 dct roten, fl240 at roten"), "no 'then': met there or flown there")
+  asked(ex("ewg9 dct roten then fl240 at lomki"), "a waypoint the direct-to does not fly to")
+  check_eq(ex("ewg9 once thru fl250 reduce 250"), "ATALT EWG9 FL250 SPD EWG9 250")
+  asked(ex("ewg9 passing thru fl250 reduce 250"), "a pilot's report of the level passed, or a condition")
+  check_eq(ex("ewg9 vs -1500 till fl200"), "VS EWG9 -1500 ; ALT EWG9 FL200")
+  asked(ex("ewg9 m.78 till fl200"), "a speed ended at a level")
+end
