@@ -1180,6 +1180,10 @@ return {
   -- the nationality letter and first letter of registrations said without that nationality letter (Canada's
   -- C-F..., C-G..., C-I...: "Golf Kilo Whiskey Alpha" is C-GKWA)
   nationless_registrations = { "CF", "CG", "CI" },
+  -- the nationality marks of two letters of registrations of five letters in all (OO-XYZ, PH-ABC), one string so
+  -- that no mark is a word squawk knows: a registration typed in lower case beside a new aircraft's type ("new
+  -- c172 ooxyz ...") is its callsign when it opens with one (one letter, D-EABC, opens too many words)
+  registration_marks = "CS EC EI HA HB LN LX OE OH OK OM OO OY PH SE SP SX TC TF VH YR ZK ZS",
   -- the phonetic alphabet (spelled waypoint names)
   phonetic = {
     alpha = "A", alfa = "A", bravo = "B", charlie = "C", delta = "D", echo = "E", foxtrot = "F", golf = "G",

@@ -10066,3 +10066,19 @@ do
   check_eq(ex("ewg9 vs -1500 till fl200"), "VS EWG9 -1500 ; ALT EWG9 FL200")
   asked(ex("ewg9 m.78 till fl200"), "a speed ended at a level")
 end
+
+-- Cycle 47 (g109b): a new aircraft's callsign typed as a registration in lower case beside its type, opening with a
+-- nationality mark of two letters ("new c172 ooxyz ...": OO-XYZ), is its callsign; a word with no such mark is still
+-- asked for. "wind LAT LON [level]?" typed with nothing else asks for the wind there (GETWIND)
+do
+  local _, ex = scene({ "CRE KLM12 B738 52 4 90 FL250 280" })
+  check_eq(ex("new pa28 phxyz 52.1 4.9 3000ft hdg 120 100kt"), "CRE PHXYZ PA28 52.1 4.9 120 3000 100")
+  check_eq(ex("cre c152 oeabc 47.2 11.3 4500ft hdg 270 90kt"), "CRE OEABC C152 47.2 11.3 270 4500 90")
+  check_eq(ex("new c172 PHABC 52.0 5.0 2000ft hdg 090 95kt"), "CRE PHABC C172 52 5 90 2000 95")
+  asked(ex("new c172 qwxyz 52.0 5.0 2000ft hdg 090 95kt"), "five letters with no nationality mark")
+  asked(ex("new c172 bravo 52.0 5.0 2000ft hdg 090 95kt"), "a word squawk knows")
+  check_eq(ex("wind 52.2 4.1 fl150?"), "GETWIND 52.2 4.1 FL150")
+  check_eq(ex("winds 52.2 4.1"), "GETWIND 52.2 4.1")
+  check_eq(ex("wind at 52.2 4.1 fl150 please"), "GETWIND 52.2 4.1 FL150")
+  asked(ex("wind 52.2 4.1 fl150 klm12"), "an aircraft named after the wind's position")
+end
