@@ -6253,7 +6253,10 @@ function G:not_simulated()
         if class.level_after_place and #self:refs_in(e - 1, e, "waypoint") > 0 then
           local v = (x.text == "," or self:word(e, "at")) and e + 1 or e
           local q = self:quantities(v, v + 3)[1]
-          if q and q.kind == "alt" and q.b == v then
+          -- (a level the aircraft flies already is the hold's: "hold at GOBAS, FL240" at FL240 changes nothing)
+          local a = q and q.kind == "alt" and self:refs_in(1, i, "aircraft")[1]
+          local now, ft = a and self:state(a.name), q and q.kind == "alt" and level_feet(handlers.format.alt(q.value, q.fl))
+          if q and q.kind == "alt" and q.b == v and not (now and now.alt_ft and ft and math.abs(now.alt_ft - ft) <= 50) then
             level_at = q.e
             break
           end
