@@ -2262,12 +2262,14 @@ end
 -- pilot's report of the level passed, or a condition with nothing to hold) is asked about, never issued.
 function G:passing_level_flown()
   for _, q in ipairs(self:quantities(1, #self.t + 1)) do
-    if q.kind == "alt" and self:word(q.b - 1, "passing leaving") then
+    -- ("passing through FL260": the same)
+    local by = self:word(q.b - 1, "through") and q.b - 1 or q.b
+    if q.kind == "alt" and self:word(by - 1, "passing leaving") then
       local level = " " .. handlers.format.alt(q.value, q.fl)
       for _, line in ipairs(self.out) do
         if line:match("^ALT %S+ %S+") and (line .. " "):find(level .. " ", 1, true) then
           return self:need(string.format("I have %s. Is '%s' a level to fly to, or a level the aircraft passes?",
-            table.concat(self.out, " ; "), self:raw(q.b - 1, q.e)))
+            table.concat(self.out, " ; "), self:raw(by - 1, q.e)))
         end
       end
     end
@@ -2610,7 +2612,13 @@ function G:segments(b, e)
   end
   if own and self:has_ref(b, qs[1].b, "aircraft") and not self:word_in(b, trig[1].pos, "@level_condition @condition") then
     for k = qs[#qs].e, trig[1].pos - 1 do
-      if self.t[k].kind == "punct" or self:word(k, "@then_words") then
+      -- ("klm33 fl220 and ryr8 hdg 240", "klm33 fl220 ryr8 hdg 240": another flying aircraft after "and" or
+      -- straight after the value parts them as a comma does)
+      local at = (self:word(k, "and") and k + 1) or (k == qs[#qs].e and k)
+      local other = at and self:refs_in(at, at + 1, "aircraft")[1]
+      local first = other and self:refs_in(b, qs[1].b, "aircraft")[1]
+      if self.t[k].kind == "punct" or self:word(k, "@then_words") or (other and other.exists
+          and other.name:upper() ~= first.name:upper()) then
         segs[1] = { intent = "infer", b = b, trig = b, e = k }
         break
       end
@@ -3980,11 +3988,34 @@ function G:at_waypoint(s, spec)
           ids[1], name, ids[1], to[1].name, table.concat(skipped, ", ")))
       end
     end
+    -- ("dct GILOM then FL190 at GILOM", "direct GILOM then at GILOM 250kt": a level or speed with no verb, after
+    -- "then", tied to the waypoint the direct-to flies to, is flown once there: the DIRECT, then AT acid wp DO;
+    -- `thn` is the "then", q the value; false when it is not so said)
+    local function then_there(r, thn, q)
+      local ids, to = self:acids(s), self:refs_in(s.trig + 1, s.e, "waypoint")[1]
+      if not (self:word(thn, "@then_words") and #ids == 1 and to and to.b < thn and to.name:upper() == r.name:upper()
+          and self:skip_fillers(math.max(q.e, r.e)) >= s.e and #self:quantities(to.e, thn) == 0
+          and (q.kind == "alt" or q.kind == "speed" or q.kind == "mach")) then
+        return false
+      end
+      self[spec.handler](self, { intent = s.intent, b = s.b, trig = s.trig, e = thn }, spec)
+      if self.ask then return true end
+      local n0, f = #self.out, handlers.format
+      self:emit(q.kind == "alt" and string.format("ALT %s %s", ids[1], f.alt(q.value, q.fl))
+        or string.format("SPD %s %s", ids[1], q.kind == "mach" and f.mach(q.value) or f.int(q.value)))
+      self:take(q)
+      self:explain(thn, s.e)
+      self:do_at(ids[1], r.name, n0)
+      return true
+    end
     -- ("direct CNF1, FL340 at CNF1": a level or speed said straight before "at" and a waypoint, in a direct's
     -- clause)
     for _, r in ipairs(s.intent == "direct" and self:refs_in(s.b, s.e, "waypoint") or {}) do
       local qs = self:word(r.b - 1, "at") and self:quantities(s.b, r.b - 1) or {}
       local q = qs[#qs]
+      if q and q.e == r.b - 1 and spec and spec.handler and then_there(r, q.b - 1, q) then return true end
+      local aq = self:word(r.b - 1, "at") and spec and spec.handler and self:quantities(r.e, s.e)[1]
+      if aq and aq.b == self:skip_fillers(r.e) and then_there(r, r.b - 2, aq) then return true end
       if q and q.e == r.b - 1 and (q.kind == "alt" or q.kind == "speed" or q.kind == "mach") and not self:in_reason(r.b) then
         return tied_to_waypoint(self, r)
       end
@@ -4231,11 +4262,25 @@ function G:at_waypoint(s, spec)
       and not (self:word(first, "passing leaving") and self.t[s.trig].text:match("ing$")
         and not self:word(s.trig, "@instruction_nouns"))
       and not self:word_in(s.b, s.e, "cross crossing crosses now immediately @correction")
-    if cond_b and verb and s.trig > r.e - 1 and not (crossed or constrained or be_at or shown or level_by or clause_at)
-        and spec and spec.handler and #self:acids(s) == 1 then
+    -- ("over WHISK hdg 010", "after FERDI 250kt": a heading is no constraint a waypoint carries, and once past
+    -- the waypoint no speed can be met there: said with no verb after the opening waypoint, the instruction there;
+    -- a level with no verb stays the constraint, "after FERDI FL290" asked)
+    local never_constraint = false
+    if cond_b and opened and (s.intent == "hdg" or s.intent == "infer") and not self:has_ref(s.b, r.b, "waypoint") then
+      local qs = self:quantities(r.e, s.e)
+      never_constraint = #qs > 0 and #self:quantities(s.b, r.b) == 0
+      for _, q in ipairs(qs) do
+        never_constraint = never_constraint and (q.kind == "heading" or (s.intent == "hdg" and q.kind == "plain")
+          or (self:word(first, "after") and (q.kind == "speed" or q.kind == "mach")))
+      end
+    end
+    local handler = spec and spec.handler or (never_constraint and s.intent == "infer" and "infer")
+    if cond_b and (verb or never_constraint) and (s.trig > r.e - 1 or s.intent == "infer")
+        and not (crossed or constrained or be_at or shown or level_by or clause_at)
+        and handler and #self:acids(s) == 1 then
       local n0 = #self.out
       self:explain(cond_b, r.e)
-      self[spec.handler](self, s, spec)
+      self[handler](self, s, spec)
       if not self.ask and self:do_at(self:acids(s)[1], r.name, n0) then
         self.waypoint_do = { id = self:acids(s)[1], wp = r.name, n = #self.out }
       end
@@ -4931,8 +4976,8 @@ function G:meaning_carried(i, kinds)
   end
   -- "and after reduce the speed": "after" as "afterwards", before the next instruction
   if text == "after" and self.triggers[nx] then return true end
-  -- "descend until 7000 feet": "until" as "to", before the value the instruction took
-  if text == "until" and self.taken[nx] then return true end
+  -- "descend until 7000 feet", "vs -2000 till fl150": "until" as "to", before the value the instruction took
+  if (text == "until" or text == "till") and self.taken[nx] then return true end
   -- "to SFO instead of Oakland", "to LFPG instead": the value said replaces another; "no, descend KLM12
   -- instead, FL250", "descend KLM12 instead FL250", "turn KLM12 instead heading 200": the instruction said
   -- replaces another, "instead" before its pause, the value it took or that value's word
@@ -6522,7 +6567,7 @@ function G:not_simulated()
       end
     end
     if class then
-      local e, comma = i + 1, false
+      local e, comma, level_at = i + 1, false, nil
       while e <= #self.t do
         local x = self.t[e]
         comma = comma or (x.kind == "punct" and x.text == ",")
@@ -6538,6 +6583,26 @@ function G:not_simulated()
         if class.one_value and x.kind == "number" then
           e = e + 1
           break
+        end
+        -- ("hold at KOK 2000ft", "holding over COA, FL120", "hold at KOK at FL120": a level with its unit straight
+        -- after the fix, or after the fix and a comma or "at", is the level flown there, no part of the hold; a bare
+        -- number there is asked)
+        if class.level_after_place and #self:refs_in(e - 1, e, "waypoint") > 0 then
+          local v = (x.text == "," or self:word(e, "at")) and e + 1 or e
+          local q = self:quantities(v, v + 3)[1]
+          -- (a level the aircraft flies already is the hold's: "hold at GOBAS, FL240" at FL240 changes nothing)
+          local a = q and q.kind == "alt" and self:refs_in(1, i, "aircraft")[1]
+          local now, ft = a and self:state(a.name), q and q.kind == "alt" and level_feet(handlers.format.alt(q.value, q.fl))
+          if q and q.kind == "alt" and q.b == v and not (now and now.alt_ft and ft and math.abs(now.alt_ft - ft) <= 50) then
+            level_at = q.e
+            break
+          end
+          if q and q.kind == "plain" and q.b == v then
+            self:need(string.format("squawk does not simulate holding patterns. Is '%s' the altitude to fly at %s? "
+              .. "Please say it with its unit (\"%s ft\" or a flight level).", self:raw(v, q.e), self:raw(e - 1, e),
+              self:raw(v, q.e)))
+            break
+          end
         end
         -- ("squawk 4721 at GRR descend FL290", "contact Chicago when 40 miles from GRR descend FL290"): a
         -- condition after the phrase of a class that takes no time anchors the instruction said after it with
@@ -6592,6 +6657,12 @@ function G:not_simulated()
       local k = self:word(e, "and") and e + 1 or e
       -- ("hold for ten minutes, after that descend 9000": a word of sequence the phrase ran through is the same)
       local later = self:word(k, "then") and k + 1
+      -- ("hold at KOK FL90 then heading 200": "then" after the level flown in the hold waits for the hold too)
+      if level_at then
+        local a = (self.t[level_at] and self.t[level_at].text == ",") and level_at + 1 or level_at
+        a = self:word(a, "and") and a + 1 or a
+        later = later or (self:word(a, "then") and a + 1)
+      end
       for x = i + 1, e - 1 do
         if self:word(x, "afterwards thereafter") or (self:word(x, "after") and self:word(x + 1, "that")) then later = e end
       end

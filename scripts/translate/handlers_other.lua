@@ -8,6 +8,13 @@ for _, w in ipairs(L.name_particles) do PARTICLES[w] = true end
 -- the ICAO codes of the airlines squawk knows (names.lua: "DTA", "LAM")
 local AIRLINE_CODES = {}
 for _, a in ipairs(require("translate.names").airlines) do AIRLINE_CODES[a[2]] = true end
+-- lexicon.registration_marks as a set
+local REGISTRATION_MARKS = {}
+for mark in L.registration_marks:gmatch("%S+") do REGISTRATION_MARKS[mark] = true end
+-- True when `raw` is a registration of five letters typed in lower case, opening with a nationality mark
+local function lower_registration(raw)
+  return raw:match("^%l%l%l%l%l$") ~= nil and REGISTRATION_MARKS[raw:sub(1, 2):upper()] == true
+end
 
 return function(H, f, compass)
   local m = H.methods
@@ -209,7 +216,8 @@ return function(H, f, compass)
     end
     -- ("create BCS1 type B744 ..."): with the type named after "type", another designator written as one word
     -- (letters, then digits) is the new callsign; ("create a Cessna 172 D-EABC at ..."): a registration written
-    -- in capitals (five letters, no word squawk knows) straight after or before the type is the callsign
+    -- in capitals (five letters, no word squawk knows) straight after or before the type is the callsign; so is one
+    -- typed in lower case that opens with a nationality mark ("new c172 ooxyz ...")
     local id_type
     if not id then
       local types = self:refs_in(s.b, s.e, "type")
@@ -230,9 +238,9 @@ return function(H, f, compass)
           -- (a fix, navaid or airport of that name, the scene's or the navdata's: no callsign)
           local place = w ~= nil and self.world.place_known ~= nil and self.world.place_known(w.raw) ~= nil
           for _, r in ipairs(self:refs_in(k, k + 1, "waypoint")) do place = place or r.exists end
-          if not id and w and w.kind == "word" and w.raw:match("^%u%u%u%u%u$") and not self:known_word(k)
-              and not place then
-            id = w.raw
+          if not id and w and w.kind == "word" and (w.raw:match("^%u%u%u%u%u$") or lower_registration(w.raw))
+              and not self:known_word(k) and not place then
+            id = w.raw:upper()
             self:explain(k, k + 1)
           end
         end

@@ -483,6 +483,8 @@ return {
     roc = { word = "rate of climb", next = "max maximum min minimum" },
     -- (the flight management computer's page typed by its name: "show me the FPLN")
     fpln = { word = "flight plan" },
+    -- ("when thru fl260 reduce 260": a level passed, typed short)
+    thru = { word = "through", next = "#number fl flight" },
     -- a game programmer's words for a turn, a heading and a vertical speed ("rotate 90 clockwise", "set its
     -- rotation to 090", "vertical velocity 0"): clockwise is a right turn
     clockwise = { word = "right" }, cw = { word = "right", prev = "#number" },
@@ -1103,11 +1105,13 @@ return {
     -- "turn around completely, 360 to the right", "a full circle": a turn back onto the same heading
     { what = "orbits", words = "turn turning", near = { "completely", "circle" }, to_end = true },
     { what = "orbits", words = "full", near = { "circle", "360", "sixty", "turn" }, takes_time = true },
-    { what = "holding patterns", words = "holding", takes_time = true },
+    -- (`level_after_place`: a level with its unit said straight after the fix, "hold at KOK 2000ft", is the
+    -- level flown there: read as an instruction of its own, G:not_simulated)
+    { what = "holding patterns", words = "holding", takes_time = true, level_after_place = true },
     -- (`not_before`: "hold the sim at 30 minutes" holds the simulation, no aircraft)
     { what = "holding patterns", words = "hold",
       near = { "at", "over", "published", "short", "fix", "inbound", "turns", "#waypoint" }, takes_time = true,
-      not_before = "@sim", no_value = true },
+      not_before = "@sim", no_value = true, level_after_place = true },
     { what = "holding patterns", words = "enter", near = { "hold", "holding" }, takes_time = true },
     -- "KL204, hold": said to an aircraft, no pause of the simulation; what follows "then" waits for it
     -- (`no_value`: a value said straight after it, "hold 250 knots", "hold FL150", is kept: G:value_next)
@@ -1211,6 +1215,10 @@ return {
   -- the nationality letter and first letter of registrations said without that nationality letter (Canada's
   -- C-F..., C-G..., C-I...: "Golf Kilo Whiskey Alpha" is C-GKWA)
   nationless_registrations = { "CF", "CG", "CI" },
+  -- the nationality marks of two letters of registrations of five letters in all (OO-XYZ, PH-ABC), one string so
+  -- that no mark is a word squawk knows: a registration typed in lower case beside a new aircraft's type ("new
+  -- c172 ooxyz ...") is its callsign when it opens with one (one letter, D-EABC, opens too many words)
+  registration_marks = "CS EC EI HA HB LN LX OE OH OK OM OO OY PH SE SP SX TC TF VH YR ZK ZS",
   -- the phonetic alphabet (spelled waypoint names)
   phonetic = {
     alpha = "A", alfa = "A", bravo = "B", charlie = "C", delta = "D", echo = "E", foxtrot = "F", golf = "G",

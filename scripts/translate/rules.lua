@@ -2100,20 +2100,23 @@ return function(intent, rule, words)
   rule { "wind winds", "getwind", prev = { 3, "what what's whats show tell get check" } }
   -- "wind check at CYVR", "winds check over EHAM": a pilot's "wind check", the wind there shown
   rule { "wind winds", "getwind", next = "check" }
-  -- "wind at 30.1 31.4 FL200", "winds over 33N 7W?": the request opening with the wind at a position (a level
-  -- after it at most) and nothing else, no direction nor speed told: the wind there, shown
-  rule { "wind winds", "getwind", next = "at over", when = function(g, i)
+  -- "wind at 30.1 31.4 FL200", "winds over 33N 7W?", "wind 50.8 4.4 fl200?": the request opening with the wind at
+  -- a position (typed straight after the word, or after "at"/"over"; a level after it at most) and nothing else,
+  -- no direction nor speed told: the wind there, shown
+  local function wind_at_position(g, i)
+    local p = g:word(i + 1, "at over") and i + 2 or i + 1
     if i ~= g:skip_fillers(1) then return false end
-    local qs = g:quantities(i + 2, #g.t + 1)
+    local qs = g:quantities(p, #g.t + 1)
     local a, b = qs[1], qs[2]
-    if not (a and b and a.b == i + 2 and b.b == a.e and a.number.typed and b.number.typed) then return false end
+    if not (a and b and a.b == p and b.b == a.e and a.number.typed and b.number.typed) then return false end
     local e = b.e
     if qs[3] and qs[3].b == e and qs[3].kind == "alt" then e = qs[3].e end
     for x = e, #g.t do
       if g.t[x].kind ~= "punct" and not g.t[x].filler then return false end
     end
     return true
-  end }
+  end
+  rule { "wind winds", "getwind", when = wind_at_position }
   rule { "echo", "echo", when = function(g, i) return g.t[i + 1] ~= nil and g.t[i + 1].kind == "quoted" end }
   -- "instructor: echo exercise starts in 2 minutes": TrafScript's ECHO opening the request (after a speaker's
   -- label) and a word after it that spells nothing ("echo kilo lima ..." is a registration spelled)

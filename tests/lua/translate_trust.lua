@@ -10239,3 +10239,106 @@ do
   asked(ex("zz9: x3 and op"), "no aircraft after an id of no experiment's letters")
   asked(ex("ab123 fl310 sorry"), "an apology with no value ruled out")
 end
+
+-- Cycle 47 (g109b): a request that sends nothing always says why: a question naming what it needs, or the note
+-- naming what squawk does not simulate (eval-translate lists a note-only outcome as "ASK " with no text: it is
+-- the note's); swept over corpora here, over every corpus once by hand
+do
+  local nodes = require("translate.nodes")
+  local NAV = "../shared/bluesky/navdata"
+  local has_nav = pcall(squawk.sim.new, { navdata = NAV })
+  local silent = {}
+  local function sweep(path)
+    squawk.translate.evaluate(path, function(c)
+      local sim = has_nav and squawk.sim.new({ navdata = NAV }) or squawk.sim.new()
+      for _, line in ipairs(nodes.split_commands(c.setup)) do sim:exec(line) end
+      local r = graph.translate(c.utterance, { mode = "offline", sim = sim, waypoints = nodes.defined_waypoints(c.setup) })
+      if #(r.commands or {}) == 0 and (r.ask or "") == "" and (r.note or "") == "" and not r.error then
+        silent[#silent + 1] = c.utterance
+      end
+      return r
+    end)
+  end
+  for _, f in ipairs({ "tests/data/translate_fresh.tsv", "tests/data/translate_round107.tsv",
+      "tests/data/translate_round106.tsv", "tests/data/translate_round93.tsv" }) do
+    sweep(f)
+  end
+  check_eq(table.concat(silent, " | "), "")
+end
+
+-- Cycle 47 (g109b): "hold at FIX <level>": the level with its unit said straight after the fix (or after a comma
+-- or "at") is flown, the hold named as not simulated; a bare number there is asked; a hold alone sends nothing
+-- and says so
+do
+  local s, ex = scene({ "CRE PHABC C172 52.3 4.9 250 3000 100", "CRE TRA55 B738 52.1 4.6 080 FL140 250",
+    "DEFWPT KUMBA 52.4 5.1", "DEFWPT TULIP 52.0 4.4", "ADDWPT TRA55 TULIP" })
+  local r = graph.translate("phabc hold over kumba 2500 ft", { sim = s, mode = "offline" })
+  check_eq(said(r), "ALT PHABC 2500")
+  check(r.note ~= nil and r.note:find("holding patterns ('hold over KUMBA')", 1, true) ~= nil, tostring(r.note))
+  check_eq(ex("TRA55 hold at TULIP, FL110"), "ALT TRA55 FL110")
+  -- (the level the aircraft flies is the hold's: nothing to send, the hold noted)
+  r = graph.translate("TRA55 hold at TULIP, FL140", { sim = s, mode = "offline" })
+  check(#r.commands == 0 and (r.note or ""):find("hold at TULIP, fl 140", 1, true) ~= nil, tostring(r.note))
+  check_eq(ex("tra55 holding over tulip at fl120"), "ALT TRA55 FL120")
+  check_eq(ex("tra55 hold at tulip fl 90 then hdg 200"), "ASK " .. "squawk does not simulate holding patterns ('hold at TULIP'), "
+    .. "and what is said after it waits for it: please give that instruction when it applies.")
+  asked(ex("tra55 hold at tulip FL100, then turn left heading 300"), "an instruction after the hold and its level")
+  local q = ex("phabc hold at kumba 2500")
+  check(q:find("Is '2500' the altitude to fly at KUMBA?", 1, true) ~= nil, q)
+  r = graph.translate("tra55 hold at tulip, expect further clearance at one five", { sim = s, mode = "offline" })
+  check(#r.commands == 0 and (r.note or ""):find("holding patterns", 1, true) ~= nil, said(r))
+end
+
+-- Cycle 47 (g109b): two aircraft in one typed line: a callsign and a value with its unit, then "and" or straight
+-- another flying aircraft with its own instruction: each instruction goes to the callsign said before it; an
+-- aircraft that is not flying is asked about
+do
+  local _, ex = scene({ "CRE DLH4 A321 50.1 8.6 300 FL280 290", "CRE AUA61 A320 50.3 8.9 120 FL240 270",
+    "CRE SAS7 B738 50.0 8.2 200 FL330 280" })
+  check_eq(ex("dlh4 fl260 and aua61 hdg 090 lt"), "ALT DLH4 FL260 ; HDG AUA61 90 LEFT")
+  check_eq(ex("sas7 m.76 and dlh4 descend fl250"), "SPD SAS7 M0.76 ; ALT DLH4 FL250")
+  check_eq(ex("aua61 230kt sas7 hdg 160"), "SPD AUA61 230 ; HDG SAS7 160")
+  check_eq(ex("dlh4 fl260 and dlh4 hdg 320"), "ALT DLH4 FL260 ; HDG DLH4 320")
+  asked(ex("dlh4 fl260 and aua16 hdg 090"), "the second aircraft is not flying")
+end
+
+-- Cycle 47 (g109b): terse waypoint conditions. A heading after "at/over/after FIX", or a speed after "after FIX",
+-- is no constraint the waypoint carries: the instruction there (AT ... DO) when FIX is on the route; a level with
+-- no verb stays the constraint ("over FIX FL140") or is asked ("after FIX FL140"); a level or speed after "then"
+-- tied to a direct-to's waypoint runs there; "thru" is "through"; "till" a level is "to" it after a rate
+do
+  local _, ex = scene({ "CRE EWG9 A320 51.5 7.0 090 FL300 280", "DEFWPT LOMKI 51.6 7.6", "DEFWPT ROTEN 51.7 8.4",
+    "ADDWPT EWG9 LOMKI", "ADDWPT EWG9 ROTEN", "DEFWPT OFFRT 50.0 6.0" })
+  check_eq(ex("ewg9 after lomki 240kt"), "AT EWG9 LOMKI DO SPD EWG9 240")
+  check_eq(ex("ewg9 after roten m.74"), "AT EWG9 ROTEN DO SPD EWG9 M0.74")
+  check_eq(ex("ewg9 over roten hdg 130"), "AT EWG9 ROTEN DO HDG EWG9 130")
+  check_eq(ex("ewg9 at lomki hdg 045"), "AT EWG9 LOMKI DO HDG EWG9 45")
+  check_eq(ex("ewg9 over lomki fl260"), "AT EWG9 LOMKI ALT FL260")
+  check_eq(ex("ewg9 at lomki 250kt"), "AT EWG9 LOMKI SPD 250")
+  asked(ex("ewg9 after lomki fl260"), "a level with no verb after the waypoint is passed")
+  asked(ex("ewg9 after offrt 240kt"), "a waypoint off the route")
+  check_eq(ex("ewg9 dct roten then fl240 at roten"), "DIRECT EWG9 ROTEN ; AT EWG9 ROTEN DO ALT EWG9 FL240")
+  check_eq(ex("ewg9 direct roten then at roten 260kt"), "DIRECT EWG9 ROTEN ; AT EWG9 ROTEN DO SPD EWG9 260")
+  asked(ex("ewg9 dct roten, fl240 at roten"), "no 'then': met there or flown there")
+  asked(ex("ewg9 dct roten then fl240 at lomki"), "a waypoint the direct-to does not fly to")
+  check_eq(ex("ewg9 once thru fl250 reduce 250"), "ATALT EWG9 FL250 SPD EWG9 250")
+  asked(ex("ewg9 passing thru fl250 reduce 250"), "a pilot's report of the level passed, or a condition")
+  check_eq(ex("ewg9 vs -1500 till fl200"), "VS EWG9 -1500 ; ALT EWG9 FL200")
+  asked(ex("ewg9 m.78 till fl200"), "a speed ended at a level")
+end
+
+-- Cycle 47 (g109b): a new aircraft's callsign typed as a registration in lower case beside its type, opening with a
+-- nationality mark of two letters ("new c172 ooxyz ...": OO-XYZ), is its callsign; a word with no such mark is still
+-- asked for. "wind LAT LON [level]?" typed with nothing else asks for the wind there (GETWIND)
+do
+  local _, ex = scene({ "CRE KLM12 B738 52 4 90 FL250 280" })
+  check_eq(ex("new pa28 phxyz 52.1 4.9 3000ft hdg 120 100kt"), "CRE PHXYZ PA28 52.1 4.9 120 3000 100")
+  check_eq(ex("cre c152 oeabc 47.2 11.3 4500ft hdg 270 90kt"), "CRE OEABC C152 47.2 11.3 270 4500 90")
+  check_eq(ex("new c172 PHABC 52.0 5.0 2000ft hdg 090 95kt"), "CRE PHABC C172 52 5 90 2000 95")
+  asked(ex("new c172 qwxyz 52.0 5.0 2000ft hdg 090 95kt"), "five letters with no nationality mark")
+  asked(ex("new c172 bravo 52.0 5.0 2000ft hdg 090 95kt"), "a word squawk knows")
+  check_eq(ex("wind 52.2 4.1 fl150?"), "GETWIND 52.2 4.1 FL150")
+  check_eq(ex("winds 52.2 4.1"), "GETWIND 52.2 4.1")
+  check_eq(ex("wind at 52.2 4.1 fl150 please"), "GETWIND 52.2 4.1 FL150")
+  asked(ex("wind 52.2 4.1 fl150 klm12"), "an aircraft named after the wind's position")
+end
