@@ -22,7 +22,8 @@ EvalReport evaluate(const std::vector<CorpusCase>& cases, const CaseTranslator& 
       o.correct = score_case("", true, c.expected) || score_case(on_yes, false, c.expected);
     } else if (tr.is_ok()) {
       o.asked = !tr->issued();
-      o.produced = tr->text();
+      // (nothing issued, no question: what was said is not simulated, and the note says so)
+      o.produced = tr->issued() || tr->asked() || !tr->error.empty() ? tr->text() : tr->note;
       o.correct = score_case(tr->issued() ? o.produced : "", o.asked, c.expected);
     } else {
       o.produced = "error: " + tr.status().message();

@@ -28,6 +28,8 @@ using rag::parse_corpus;
 using rag::read_corpus;
 
 struct CaseOutcome {
+  // produced: the commands, the question, "error: ...", or the note when only what squawk
+  // does not simulate was said
   std::string id, category, produced, expected;
   bool asked = false;    // no command was issued
   bool correct = false;  // right

@@ -228,3 +228,20 @@ TEST_CASE("a yes/no question before destructive commands: right when a question 
   CHECK(r.wrong == 1);  // the question proposes other aircraft than the request named
   CHECK(r.outcomes[2].produced.find("[yes runs: DEL A ; DEL B]") != std::string::npos);
 }
+
+TEST_CASE("a request of only what squawk does not simulate: no command, the note shown, scored as no command") {
+  const std::vector<CorpusCase> cases = {{"n1", "", "KLM12 hold at SUGOL", "ASK", "ask"},
+                                         {"n2", "", "KLM12 squawk 1234", "SQUAWK KLM12 1234", "other"}};
+  auto r = evaluate(cases, [](const CorpusCase&) -> squawk::Result<Translation> {
+    Translation t;
+    t.note = "squawk does not simulate holding patterns ('hold'): nothing was sent for that.";
+    return t;
+  });
+  CHECK(r.correct == 1);
+  CHECK(r.asked == 1);
+  CHECK(r.outcomes[0].produced == "squawk does not simulate holding patterns ('hold'): nothing was sent for that.");
+  Translation issued;
+  issued.commands = {"ALT KLM12 FL300"};
+  issued.note = "squawk does not simulate holding patterns ('hold'): nothing was sent for that.";
+  CHECK(issued.text() == "ALT KLM12 FL300");
+}
