@@ -4622,6 +4622,10 @@ function G:uncarried()
       and not self.u:used(first) and self:word(first, "@up @down go")) do
     first = first + 1
   end
+  -- (a value typed with its own unit that a command took opens them too: "hop7 fl100 6000 hdg 220")
+  for _, q in ipairs(self:quantities(1, #self.t + 1)) do
+    if q.b < first and own_unit(q) and self.taken[q.b] then first = q.b end
+  end
   -- (a number straight after an aircraft flying, "at" or "to" between or not, and closed by a comma or "and",
   -- "KLM12 330, turn left 090", "AEA6062 at 330, direct XING2", "the Ryanair to 110 and 230 knots", is a value
   -- said for it, however early)

@@ -10342,3 +10342,15 @@ do
   check_eq(ex("wind at 52.2 4.1 fl150 please"), "GETWIND 52.2 4.1 FL150")
   asked(ex("wind 52.2 4.1 fl150 klm12"), "an aircraft named after the wind's position")
 end
+
+-- Cycle 47 (hz53): a bare number in a terse list after a value typed with its own unit and before the next
+-- instruction word ("fl100 6000 hdg 220") is a value no command carries: asked by name, never dropped; a single
+-- digit there stays callsign noise, and a bare altitude after a speed stays the level
+do
+  local _, ex = scene({ "CRE BEE7 DH8D 50.9 -1.4 090 FL080 220" })
+  check_eq(ex("bee7 fl110 5000 hdg 250"), "ASK I have ALT BEE7 FL110 ; HDG BEE7 250. What does '5000' mean?")
+  check_eq(ex("bee7 m.60 310 hdg 250"), "ASK I have SPD BEE7 M0.6 ; HDG BEE7 250. What does '310' mean?")
+  check_eq(ex("bee7 fl110 270 and h250"), "ASK I have ALT BEE7 FL110 ; HDG BEE7 250. What does '270' mean?")
+  check_eq(ex("bee7 fl110 hdg 250"), "ALT BEE7 FL110 ; HDG BEE7 250")
+  check_eq(ex("bee7 s210 7000 hdg 250"), "SPD BEE7 210 ; ALT BEE7 7000 ; HDG BEE7 250")
+end
