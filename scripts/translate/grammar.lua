@@ -5915,6 +5915,39 @@ function G:unaccounted()
   end
 end
 
+-- True when the request issued commands and every one is a value instruction (ALT, SPD, HDG, VS), which reads
+-- no place, route or manner of its own.
+function G:values_only()
+  for _, c in ipairs(self.out) do
+    if not (c:match("^ALT ") or c:match("^SPD ") or c:match("^HDG ") or c:match("^VS ")) then return false end
+  end
+  return #self.out > 0
+end
+
+-- "reduce 250 knots passing the beacon", "descend FL150 abeam it", "over the VOR turn left heading 200": beside
+-- value instructions only (G:values_only), a word of lexicon.passage (or of lexicon.passage_at before a place's
+-- noun) that no part of the parse read is a condition on a place squawk did not read: the leftover, named from that
+-- word to the end of its clause, never dropped.
+function G:passage_left()
+  local explained = self.explained or {}
+  -- (a word a command carries ends the clause, but a place's noun, which these commands never carry; one only
+  -- noted, "the NDB", is in it)
+  local nouns = "@passage_nouns @navaid_kinds @airport_nouns"
+  local function carried(k) return self.taken[k] or (self.u:used(k) and not self:word(k, nouns)) end
+  for i in ipairs(self.t) do
+    if (self:word(i, "@passage") or (self:word(i, "@passage_at") and self:word(self:skip_fillers(i + 1), nouns)))
+        and not (explained[i] or self.noted[i] or carried(i)) and not self:in_reason(i) then
+      local e = i + 1
+      while self.t[e] and self.t[e].kind ~= "punct" and not self.triggers[e] and not self:word(e, "and then")
+          and not carried(e) do
+        e = e + 1
+      end
+      self.leftover = self:raw(i, e)
+      return
+    end
+  end
+end
+
 -- Two things of one kind joined by "or" ("KLM12 or KLM21 climb", "aeromexico four five zero or four zero five",
 -- "FL240 or FL250", "heading 090 or 100"): a choice squawk may not make for the speaker, asked, naming both. Each
 -- side is a value (a token with a digit or a number word) or a callsign or place read, or the first an instruction
@@ -8327,6 +8360,7 @@ function M.translate(text, world)
   if not g.ask and not g.leftover then g:uncarried_names() end
   if not g.ask and not g.leftover then g:unread_switch() end
   if not g.ask and not g.leftover then g:unaccounted() end
+  if not g.ask and not g.leftover and g:values_only() then g:passage_left() end
   if not g.ask and not g.leftover then g:hedged() end
   if not g.ask and not g.leftover and lower:find("or", 1, true) then g:alternatives() end
   if not g.ask then g:values_misread() end

@@ -10354,3 +10354,20 @@ do
   check_eq(ex("bee7 fl110 hdg 250"), "ALT BEE7 FL110 ; HDG BEE7 250")
   check_eq(ex("bee7 s210 7000 hdg 250"), "SPD BEE7 210 ; ALT BEE7 7000 ; HDG BEE7 250")
 end
+
+-- Cycle 47 (hz53): beside value instructions, which read no place, a condition on a place said with a word of
+-- passage ("passing", "abeam", "past", "approaching", "reaching", "overhead", "leaving"; "over", "at", "by" before a
+-- place's noun: "the beacon", "the VOR", "the marker") that nothing read is asked, named to the end of its clause;
+-- a level after "passing" stays the level waited for
+do
+  local _, ex = scene({ "CRE EXS3 B738 53.4 -2.3 270 FL190 290" })
+  check_eq(ex("exs3 slow to 220 knots abeam the NDB"), "ASK I have SPD EXS3 220. What does 'abeam the NDB' mean?")
+  check_eq(ex("exs3 descend FL120 overhead the beacon"),
+    "ASK I have ALT EXS3 FL120. What does 'overhead the beacon' mean?")
+  check_eq(ex("exs3 over the VOR turn right heading 330"),
+    "ASK I have HDG EXS3 330 RIGHT. What does 'over the VOR' mean?")
+  check_eq(ex("exs3 reduce 230 knots approaching the marker"),
+    "ASK I have SPD EXS3 230. What does 'approaching the marker' mean?")
+  check_eq(ex("exs3 left heading 240 passing it"), "ASK I have HDG EXS3 240 LEFT. What does 'passing it' mean?")
+  check_eq(ex("exs3 reduce 230 knots passing FL170"), "ATALT EXS3 FL170 SPD EXS3 230")
+end
