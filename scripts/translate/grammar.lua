@@ -5948,6 +5948,30 @@ function G:passage_left()
   end
 end
 
+-- "heading 200, then continue on course", "... continue as filed", "... back on track": beside value instructions
+-- only (G:values_only), a word of lexicon.going_on ("back" before "on") that no part of the parse read, its clause
+-- holding no instruction word or value it is the manner of ("continue climb", "continue on heading 200"), is going
+-- on along something squawk did not read: the leftover, named to the end of its clause. ("report back on track" is
+-- the pilot's report.)
+function G:going_on_left()
+  local explained = self.explained or {}
+  for i in ipairs(self.t) do
+    if self:word(i, "@going_on") and not (self:word(i, "back") and not self:word(i + 1, "on"))
+        and not self:word(i - 1, "report reporting") and not (explained[i] or self.noted[i] or self.u:used(i)
+          or self.taken[i] or self.triggers[i]) and not self:in_reason(i) then
+      local e, manner = i + 1, false
+      while self.t[e] and self.t[e].kind ~= "punct" and not self:word(e, "and then") do
+        manner = manner or self.triggers[e] or self.taken[e]
+        e = e + 1
+      end
+      if not manner and e > i + 1 then
+        self.leftover = self:raw(i, e)
+        return
+      end
+    end
+  end
+end
+
 -- Two things of one kind joined by "or" ("KLM12 or KLM21 climb", "aeromexico four five zero or four zero five",
 -- "FL240 or FL250", "heading 090 or 100"): a choice squawk may not make for the speaker, asked, naming both. Each
 -- side is a value (a token with a digit or a number word) or a callsign or place read, or the first an instruction
@@ -8361,6 +8385,7 @@ function M.translate(text, world)
   if not g.ask and not g.leftover then g:unread_switch() end
   if not g.ask and not g.leftover then g:unaccounted() end
   if not g.ask and not g.leftover and g:values_only() then g:passage_left() end
+  if not g.ask and not g.leftover and g:values_only() then g:going_on_left() end
   if not g.ask and not g.leftover then g:hedged() end
   if not g.ask and not g.leftover and lower:find("or", 1, true) then g:alternatives() end
   if not g.ask then g:values_misread() end

@@ -1210,6 +1210,9 @@ return {
   passage = { "passing", "passed", "abeam", "past", "approaching", "reaching", "overhead", "leaving" },
   passage_at = { "over", "at", "by" },
   passage_nouns = { "fix", "waypoint", "marker", "threshold", "station", "border", "boundary" },
+  -- ("heading 200, then continue on course", "... back on track"): a word of going on said beside value
+  -- instructions with no instruction of its own in its clause (G:going_on_left); "back" only before "on"
+  going_on = { "continue", "resume", "back" },
   -- the navdata types a kind said after a navaid's name means ("the Eelde VOR" is EEL, not the NDB SO)
   navaid_types = { vor = "VOR TACAN", vortac = "VOR TACAN", ndb = "NDB", dme = "DME" },
   -- DEFWPT's waypoint types, said after "as" or "type" ("define DELTA at 51.9 4.1 as a fix")

@@ -10371,3 +10371,20 @@ do
   check_eq(ex("exs3 left heading 240 passing it"), "ASK I have HDG EXS3 240 LEFT. What does 'passing it' mean?")
   check_eq(ex("exs3 reduce 230 knots passing FL170"), "ATALT EXS3 FL170 SPD EXS3 230")
 end
+
+-- Cycle 47 (hz53): beside value instructions, a word of going on ("continue", "resume", "back on/to") whose clause
+-- holds no instruction word or value of its own ("then continue on course", "continue as filed", "back on track")
+-- is asked, named to the end of its clause; "continue climb", "continue on heading 200" stay the instruction's
+-- manner, and "resume own navigation" stays LNAV ON
+do
+  local _, ex = scene({ "CRE SWR8 A320 47.4 8.5 180 FL230 270", "DEFWPT ROLSA 46.9 8.3", "ADDWPT SWR8 ROLSA" })
+  check_eq(ex("swr8 turn left heading 140, then continue on course"),
+    "ASK I have HDG SWR8 140 LEFT. What does 'continue on course' mean?")
+  check_eq(ex("swr8 reduce 240 knots, continue as filed"), "ASK I have SPD SWR8 240. What does 'continue as filed' mean?")
+  check_eq(ex("swr8 heading 150 then back on track"), "ASK I have HDG SWR8 150. What does 'back on track' mean?")
+  check_eq(ex("swr8 fl210 then continue on the approach"),
+    "ASK I have ALT SWR8 FL210. What does 'continue on the approach' mean?")
+  check_eq(ex("swr8 continue descent FL210"), "ALT SWR8 FL210")
+  check_eq(ex("swr8 continue on heading 150"), "HDG SWR8 150")
+  check_eq(ex("swr8 heading 150 then resume own navigation"), "HDG SWR8 150 ; LNAV SWR8 ON")
+end
