@@ -4622,6 +4622,10 @@ function G:uncarried()
       and not self.u:used(first) and self:word(first, "@up @down go")) do
     first = first + 1
   end
+  -- (a value typed with its own unit that a command took opens them too: "hop7 fl100 6000 hdg 220")
+  for _, q in ipairs(self:quantities(1, #self.t + 1)) do
+    if q.b < first and own_unit(q) and self.taken[q.b] then first = q.b end
+  end
   -- (a number straight after an aircraft flying, "at" or "to" between or not, and closed by a comma or "and",
   -- "KLM12 330, turn left 090", "AEA6062 at 330, direct XING2", "the Ryanair to 110 and 230 knots", is a value
   -- said for it, however early)
@@ -5907,6 +5911,63 @@ function G:unaccounted()
       self.leftover = t.raw
       if not MEANING[t.text] then self.ignorable = t.text end
       return
+    end
+  end
+end
+
+-- True when the request issued commands and every one is a value instruction (ALT, SPD, HDG, VS), which reads
+-- no place, route or manner of its own.
+function G:values_only()
+  for _, c in ipairs(self.out) do
+    if not (c:match("^ALT ") or c:match("^SPD ") or c:match("^HDG ") or c:match("^VS ")) then return false end
+  end
+  return #self.out > 0
+end
+
+-- "reduce 250 knots passing the beacon", "descend FL150 abeam it", "over the VOR turn left heading 200": beside
+-- value instructions only (G:values_only), a word of lexicon.passage (or of lexicon.passage_at before a place's
+-- noun) that no part of the parse read is a condition on a place squawk did not read: the leftover, named from that
+-- word to the end of its clause, never dropped.
+function G:passage_left()
+  local explained = self.explained or {}
+  -- (a word a command carries ends the clause, but a place's noun, which these commands never carry; one only
+  -- noted, "the NDB", is in it)
+  local nouns = "@passage_nouns @navaid_kinds @airport_nouns"
+  local function carried(k) return self.taken[k] or (self.u:used(k) and not self:word(k, nouns)) end
+  for i in ipairs(self.t) do
+    if (self:word(i, "@passage") or (self:word(i, "@passage_at") and self:word(self:skip_fillers(i + 1), nouns)))
+        and not (explained[i] or self.noted[i] or carried(i)) and not self:in_reason(i) then
+      local e = i + 1
+      while self.t[e] and self.t[e].kind ~= "punct" and not self.triggers[e] and not self:word(e, "and then")
+          and not carried(e) do
+        e = e + 1
+      end
+      self.leftover = self:raw(i, e)
+      return
+    end
+  end
+end
+
+-- "heading 200, then continue on course", "... continue as filed", "... back on track": beside value instructions
+-- only (G:values_only), a word of lexicon.going_on ("back" before "on") that no part of the parse read, its clause
+-- holding no instruction word or value it is the manner of ("continue climb", "continue on heading 200"), is going
+-- on along something squawk did not read: the leftover, named to the end of its clause. ("report back on track" is
+-- the pilot's report.)
+function G:going_on_left()
+  local explained = self.explained or {}
+  for i in ipairs(self.t) do
+    if self:word(i, "@going_on") and not (self:word(i, "back") and not self:word(i + 1, "on"))
+        and not self:word(i - 1, "report reporting") and not (explained[i] or self.noted[i] or self.u:used(i)
+          or self.taken[i] or self.triggers[i]) and not self:in_reason(i) then
+      local e, manner = i + 1, false
+      while self.t[e] and self.t[e].kind ~= "punct" and not self:word(e, "and then") do
+        manner = manner or self.triggers[e] or self.taken[e]
+        e = e + 1
+      end
+      if not manner and e > i + 1 then
+        self.leftover = self:raw(i, e)
+        return
+      end
     end
   end
 end
@@ -8323,6 +8384,8 @@ function M.translate(text, world)
   if not g.ask and not g.leftover then g:uncarried_names() end
   if not g.ask and not g.leftover then g:unread_switch() end
   if not g.ask and not g.leftover then g:unaccounted() end
+  if not g.ask and not g.leftover and g:values_only() then g:passage_left() end
+  if not g.ask and not g.leftover and g:values_only() then g:going_on_left() end
   if not g.ask and not g.leftover then g:hedged() end
   if not g.ask and not g.leftover and lower:find("or", 1, true) then g:alternatives() end
   if not g.ask then g:values_misread() end

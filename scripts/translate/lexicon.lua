@@ -1204,6 +1204,15 @@ return {
     leads = { "arrival", "arrivals", "inbound", "arriving", "bound", "flight", "flights" } },
   -- kinds of navaid, said beside a navaid's name ("the Pampus VOR, PAM")
   navaid_kinds = { "vor", "ndb", "dme", "vortac", "navaid", "beacon" },
+  -- a condition on a place said beside value instructions, which read no place (G:passage_left): a word of
+  -- `passage` opens one whatever follows ("passing the beacon", "abeam it"), one of `passage_at` before a word of
+  -- `passage_nouns`, navaid_kinds or airport_nouns ("over the VOR", "at the marker")
+  passage = { "passing", "passed", "abeam", "past", "approaching", "reaching", "overhead", "leaving" },
+  passage_at = { "over", "at", "by" },
+  passage_nouns = { "fix", "waypoint", "marker", "threshold", "station", "border", "boundary" },
+  -- ("heading 200, then continue on course", "... back on track"): a word of going on said beside value
+  -- instructions with no instruction of its own in its clause (G:going_on_left); "back" only before "on"
+  going_on = { "continue", "resume", "back" },
   -- the navdata types a kind said after a navaid's name means ("the Eelde VOR" is EEL, not the NDB SO)
   navaid_types = { vor = "VOR TACAN", vortac = "VOR TACAN", ndb = "NDB", dme = "DME" },
   -- DEFWPT's waypoint types, said after "as" or "type" ("define DELTA at 51.9 4.1 as a fix")

@@ -10342,3 +10342,49 @@ do
   check_eq(ex("wind at 52.2 4.1 fl150 please"), "GETWIND 52.2 4.1 FL150")
   asked(ex("wind 52.2 4.1 fl150 klm12"), "an aircraft named after the wind's position")
 end
+
+-- Cycle 47 (hz53): a bare number in a terse list after a value typed with its own unit and before the next
+-- instruction word ("fl100 6000 hdg 220") is a value no command carries: asked by name, never dropped; a single
+-- digit there stays callsign noise, and a bare altitude after a speed stays the level
+do
+  local _, ex = scene({ "CRE BEE7 DH8D 50.9 -1.4 090 FL080 220" })
+  check_eq(ex("bee7 fl110 5000 hdg 250"), "ASK I have ALT BEE7 FL110 ; HDG BEE7 250. What does '5000' mean?")
+  check_eq(ex("bee7 m.60 310 hdg 250"), "ASK I have SPD BEE7 M0.6 ; HDG BEE7 250. What does '310' mean?")
+  check_eq(ex("bee7 fl110 270 and h250"), "ASK I have ALT BEE7 FL110 ; HDG BEE7 250. What does '270' mean?")
+  check_eq(ex("bee7 fl110 hdg 250"), "ALT BEE7 FL110 ; HDG BEE7 250")
+  check_eq(ex("bee7 s210 7000 hdg 250"), "SPD BEE7 210 ; ALT BEE7 7000 ; HDG BEE7 250")
+end
+
+-- Cycle 47 (hz53): beside value instructions, which read no place, a condition on a place said with a word of
+-- passage ("passing", "abeam", "past", "approaching", "reaching", "overhead", "leaving"; "over", "at", "by" before a
+-- place's noun: "the beacon", "the VOR", "the marker") that nothing read is asked, named to the end of its clause;
+-- a level after "passing" stays the level waited for
+do
+  local _, ex = scene({ "CRE EXS3 B738 53.4 -2.3 270 FL190 290" })
+  check_eq(ex("exs3 slow to 220 knots abeam the NDB"), "ASK I have SPD EXS3 220. What does 'abeam the NDB' mean?")
+  check_eq(ex("exs3 descend FL120 overhead the beacon"),
+    "ASK I have ALT EXS3 FL120. What does 'overhead the beacon' mean?")
+  check_eq(ex("exs3 over the VOR turn right heading 330"),
+    "ASK I have HDG EXS3 330 RIGHT. What does 'over the VOR' mean?")
+  check_eq(ex("exs3 reduce 230 knots approaching the marker"),
+    "ASK I have SPD EXS3 230. What does 'approaching the marker' mean?")
+  check_eq(ex("exs3 left heading 240 passing it"), "ASK I have HDG EXS3 240 LEFT. What does 'passing it' mean?")
+  check_eq(ex("exs3 reduce 230 knots passing FL170"), "ATALT EXS3 FL170 SPD EXS3 230")
+end
+
+-- Cycle 47 (hz53): beside value instructions, a word of going on ("continue", "resume", "back on/to") whose clause
+-- holds no instruction word or value of its own ("then continue on course", "continue as filed", "back on track")
+-- is asked, named to the end of its clause; "continue climb", "continue on heading 200" stay the instruction's
+-- manner, and "resume own navigation" stays LNAV ON
+do
+  local _, ex = scene({ "CRE SWR8 A320 47.4 8.5 180 FL230 270", "DEFWPT ROLSA 46.9 8.3", "ADDWPT SWR8 ROLSA" })
+  check_eq(ex("swr8 turn left heading 140, then continue on course"),
+    "ASK I have HDG SWR8 140 LEFT. What does 'continue on course' mean?")
+  check_eq(ex("swr8 reduce 240 knots, continue as filed"), "ASK I have SPD SWR8 240. What does 'continue as filed' mean?")
+  check_eq(ex("swr8 heading 150 then back on track"), "ASK I have HDG SWR8 150. What does 'back on track' mean?")
+  check_eq(ex("swr8 fl210 then continue on the approach"),
+    "ASK I have ALT SWR8 FL210. What does 'continue on the approach' mean?")
+  check_eq(ex("swr8 continue descent FL210"), "ALT SWR8 FL210")
+  check_eq(ex("swr8 continue on heading 150"), "HDG SWR8 150")
+  check_eq(ex("swr8 heading 150 then resume own navigation"), "HDG SWR8 150 ; LNAV SWR8 ON")
+end
