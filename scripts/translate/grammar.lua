@@ -7542,6 +7542,18 @@ local function exact_aircraft(text, world, parsed)
   parsed[text] = found
   return found
 end
+-- The one aircraft a re-read of the request names exactly that `said` (the text as heard) did not, and whose
+-- callsign no aircraft of `said` begins: its id, or nil when none or several
+function G.one_new_aircraft(read, said, world, parsed)
+  local new
+  for id in pairs(exact_aircraft(read, world, parsed)) do
+    if not said[id] then new = new == nil and id or false end
+  end
+  for id in pairs(new and said or {}) do
+    if new:sub(1, #id) == id then new = false end
+  end
+  return new or nil
+end
 local function homophone_ids(text, world, parsed)
   if #world.aircraft == 0 then return text end
   parsed = parsed or {}
@@ -7577,14 +7589,7 @@ local function homophone_ids(text, world, parsed)
       end
       said = holds and (said or exact_aircraft(text, world, parsed))
       for _, read in ipairs(holds and { table.concat(words, " "), table.concat(alone, " ") } or {}) do
-        local new
-        for id in pairs(exact_aircraft(read, world, parsed)) do
-          if not said[id] then new = new == nil and id or false end
-        end
-        for id in pairs(new and said or {}) do
-          if new:sub(1, #id) == id then new = false end
-        end
-        if new then return homophone_ids(read, world, parsed) end
+        if G.one_new_aircraft(read, said, world, parsed) then return homophone_ids(read, world, parsed) end
       end
     end
   end
@@ -7672,14 +7677,7 @@ function G.recognised_callsigns(text, world, parsed)
     words[#words + 1] = r[3] .. (toks[r[2]]:match("%p+$") or "")
     for k = r[2] + 1, #toks do words[#words + 1] = toks[k] end
     local read = table.concat(words, " ")
-    local new
-    for id in pairs(exact_aircraft(read, world, parsed)) do
-      if not said[id] then new = new == nil and id or false end
-    end
-    for id in pairs(new and said or {}) do
-      if new:sub(1, #id) == id then new = false end
-    end
-    if new then return G.recognised_callsigns(read, world, parsed) end
+    if G.one_new_aircraft(read, said, world, parsed) then return G.recognised_callsigns(read, world, parsed) end
   end
   return text
 end

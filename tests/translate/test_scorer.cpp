@@ -229,9 +229,12 @@ TEST_CASE("a yes/no question before destructive commands: right when a question 
   CHECK(r.outcomes[2].produced.find("[yes runs: DEL A ; DEL B]") != std::string::npos);
 }
 
-TEST_CASE("a request of only what squawk does not simulate: no command, the note shown, scored as no command") {
-  const std::vector<CorpusCase> cases = {{"n1", "", "KLM12 hold at SUGOL", "ASK", "ask"},
-                                         {"n2", "", "KLM12 squawk 1234", "SQUAWK KLM12 1234", "other"}};
+TEST_CASE(
+    "a request of only what squawk does not simulate: no command, the note shown, scored as no "
+    "command") {
+  const std::vector<CorpusCase> cases = {
+      {"n1", "", "KLM12 hold at SUGOL", "ASK", "ask"},
+      {"n2", "", "KLM12 squawk 1234", "SQUAWK KLM12 1234", "other"}};
   auto r = evaluate(cases, [](const CorpusCase&) -> squawk::Result<Translation> {
     Translation t;
     t.note = "squawk does not simulate holding patterns ('hold'): nothing was sent for that.";
@@ -239,7 +242,8 @@ TEST_CASE("a request of only what squawk does not simulate: no command, the note
   });
   CHECK(r.correct == 1);
   CHECK(r.asked == 1);
-  CHECK(r.outcomes[0].produced == "squawk does not simulate holding patterns ('hold'): nothing was sent for that.");
+  CHECK(r.outcomes[0].produced ==
+        "squawk does not simulate holding patterns ('hold'): nothing was sent for that.");
   Translation issued;
   issued.commands = {"ALT KLM12 FL300"};
   issued.note = "squawk does not simulate holding patterns ('hold'): nothing was sent for that.";
