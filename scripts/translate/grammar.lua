@@ -3260,6 +3260,7 @@ end
 local PLACE_CORRECTION = set_of(lexicon.correction)
 for w in pairs(SC_MARKERS) do PLACE_CORRECTION[w] = true end
 function G:places_corrected()
+  if not self:said(PLACE_CORRECTION) then return end  -- (both readings need a word of the run)
   local starts = {}
   for _, r in ipairs(self.refs) do
     if r.kind == "waypoint" then starts[r.b] = r end
@@ -5657,6 +5658,8 @@ end
 G.asked_values = { ALT = true, SPD = true, HDG = true, VS = true }
 G.question_opens, G.question_with_is = set_of(lexicon.state_question.opens), set_of(lexicon.state_question.with_is)
 function G:state_question()
+  -- (a question opens with a word of lexicon.state_question: none said, none asked)
+  if not (self:said(G.question_opens) or self:said(G.question_with_is)) then return end
   for i = 1, #self.t do
     local prev = self.t[i - 1]
     local opens = (not prev or prev.kind == "punct" or prev.filler or self:word(i - 1, "and @then_words"))
@@ -5727,6 +5730,7 @@ function G:shown_after_instruction()
     local name = line:match("^(%u+)")
     if G.showing[name] or (name == "AT" and line:match("^AT %S+ %S+$")) then return end
   end
+  if not self:said("show display see") then return end  -- (the verbs of showing it reads)
   local explained = self.explained or {}
   for i = 1, #self.t do
     if (self:word(i, "show display") or (self:word(i, "see") and self:word(i - 1, "me us"))) and not self.u:used(i)
