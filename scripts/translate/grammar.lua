@@ -6369,10 +6369,13 @@ function G:acknowledged()
   end
 end
 
--- Every word that starts a phrase of lexicon.not_simulated.
+-- Every word that starts a phrase of lexicon.not_simulated -> the entries whose words hold it, in the lexicon's order.
 local NOT_SIMULATED_WORDS = {}
 for _, c in ipairs(lexicon.not_simulated) do
-  for w in pairs(word_set(c.words, 1)) do NOT_SIMULATED_WORDS[w] = true end
+  for w in pairs(word_set(c.words, 1)) do
+    NOT_SIMULATED_WORDS[w] = NOT_SIMULATED_WORDS[w] or {}
+    table.insert(NOT_SIMULATED_WORDS[w], c)
+  end
 end
 
 -- True when token i is a navaid's kind said beside its name: after it ("relocate to TKT VOR at FL300",
@@ -6543,8 +6546,8 @@ function G:not_simulated()
     local class
     if t.kind == "word" and NOT_SIMULATED_WORDS[t.text] and (not self.u:used(i) or #self:refs_in(i, i + 1, "waypoint") > 0)
         and not self:navaid_named_beside(i) then
-      for _, c in ipairs(lexicon.not_simulated) do
-        if word_set(c.words, 1)[t.text] and (not c.near or self:near_any(i, c.near, c.window))
+      for _, c in ipairs(NOT_SIMULATED_WORDS[t.text]) do
+        if (not c.near or self:near_any(i, c.near, c.window))
             and (not c.and_near or self:near_any(i + (c.window or 4), c.and_near[1], c.and_near[2]))
             and (not c.after_callsign or self:callsign_before(i))
             and (not c.after_instruction or self:instruction_before(i))
