@@ -5598,6 +5598,8 @@ function G:speed_lifted_and_given()
     if v then given[tonumber(v)] = true end
   end
   if not next(given) then return end
+  -- (the speed lifted is said with one of these words)
+  if not self:said("resume resuming restriction restrictions limit limits restricted") then return end
   -- true when a speed of the request is said after token e, no correction between ("cancel the speed restriction...
   -- no, just maintain 250": the lifting taken back)
   local function given_after(e)
@@ -6235,7 +6237,10 @@ for k, list in pairs(lexicon.kept_as_is) do G.kept_sets[k] = set_of(list) end
 G.kept_kinds = { alt = true, speed = true, mach = true, heading = true }
 function G:kept_values()
   local K = G.kept_sets
-  if not self:said(K.approvals) and not self:said(K.stays) and not self:said("all as")
+  -- (a value kept needs an approval, a copula saying it alone, "all right", "as is" or a verb of keeping with
+  -- "just" or "but")
+  if not self:said(K.approvals) and not self:said(K.stays) and not (self:said("all") and self:said("right"))
+      and not (self:said("as") and self:said("is"))
       and not (self:said(K.verbs) and (self:said(K.only) or self:said(K.but))) then
     return
   end
