@@ -7755,10 +7755,12 @@ G.terse_list = { labels = set_of(lexicon.terse_list.labels), units = set_of(lexi
   level = set_of(lexicon.terse_list.level), joins = set_of(lexicon.terse_list.joins) }
 function G.terse_altitude(text, world)
   if not text:find("%d%d%d%d") then return text end
-  local L, ids, toks = G.terse_list, {}, {}
-  for _, a in ipairs(world.aircraft) do ids[(a.id or ""):lower()] = true end
+  -- (the first word names an aircraft flying)
+  local first, flying = text:match("[^%s,]+"):lower(), false
+  for _, a in ipairs(world.aircraft) do flying = flying or (a.id or ""):lower() == first end
+  if not flying then return text end
+  local L, toks = G.terse_list, {}
   for w in text:gmatch("[^%s,]+") do toks[#toks + 1] = w:lower() end
-  if not ids[toks[1] or ""] then return text end
   local bare, labelled, k = nil, 0, 2
   while k <= #toks do
     local w = toks[k]
