@@ -502,6 +502,11 @@ function G.said_whole_index()
       end
       G.said_whole_built[language] = index
     end
+    -- (G.said_whole_firsts: every language's first words, one set)
+    G.said_whole_firsts = {}
+    for _, index in pairs(G.said_whole_built) do
+      for w in pairs(index) do G.said_whole_firsts[w] = true end
+    end
   end
   return G.said_whole_built
 end
@@ -535,6 +540,7 @@ function G.said_whole(text)
     end)
   end
   local toks, bare = plain_words(text)
+  if not any_of(bare, G.said_whole_firsts) then return text end  -- (no form of any language starts here)
   for _, language in ipairs(G.said_whole_order) do
     local index = indexes[language]
     if any_of(bare, index) then
@@ -5190,11 +5196,13 @@ end
 -- "ist gut, pause", "tui3k climb fl350, alles klar": an aside of lexicon.asides_alone starting at token i, standing
 -- alone in its clause (the request's edge or punctuation before and after it, fillers between), is marked in `inside`
 function G:aside_alone(i, inside)
+  local phrases = G.asides_alone[self.t[i].text]
+  if not phrases then return end  -- (called at every token: most start no such phrase)
   local function edge(k, step)
     while self.t[k] and self.t[k].filler do k = k + step end
     return self.t[k] == nil or self.t[k].kind == "punct"
   end
-  for _, p in ipairs(G.asides_alone[self.t[i].text] or {}) do
+  for _, p in ipairs(phrases) do
     local ok = true
     for x = 2, #p do ok = ok and self.t[i + x - 1] ~= nil and self.t[i + x - 1].text == p[x] end
     if ok and edge(i - 1, -1) and edge(i + #p, 1) then
