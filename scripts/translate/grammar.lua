@@ -502,6 +502,11 @@ function G.said_whole_index()
       end
       G.said_whole_built[language] = index
     end
+    -- (G.said_whole_firsts: every language's first words, one set)
+    G.said_whole_firsts = {}
+    for _, index in pairs(G.said_whole_built) do
+      for w in pairs(index) do G.said_whole_firsts[w] = true end
+    end
   end
   return G.said_whole_built
 end
@@ -535,6 +540,7 @@ function G.said_whole(text)
     end)
   end
   local toks, bare = plain_words(text)
+  if not any_of(bare, G.said_whole_firsts) then return text end  -- (no form of any language starts here)
   for _, language in ipairs(G.said_whole_order) do
     local index = indexes[language]
     if any_of(bare, index) then
@@ -3260,6 +3266,7 @@ end
 local PLACE_CORRECTION = set_of(lexicon.correction)
 for w in pairs(SC_MARKERS) do PLACE_CORRECTION[w] = true end
 function G:places_corrected()
+  if not self:said(PLACE_CORRECTION) then return end  -- (both readings need a word of the run)
   local starts = {}
   for _, r in ipairs(self.refs) do
     if r.kind == "waypoint" then starts[r.b] = r end
@@ -5193,11 +5200,13 @@ end
 -- "ist gut, pause", "tui3k climb fl350, alles klar": an aside of lexicon.asides_alone starting at token i, standing
 -- alone in its clause (the request's edge or punctuation before and after it, fillers between), is marked in `inside`
 function G:aside_alone(i, inside)
+  local phrases = G.asides_alone[self.t[i].text]
+  if not phrases then return end  -- (called at every token: most start no such phrase)
   local function edge(k, step)
     while self.t[k] and self.t[k].filler do k = k + step end
     return self.t[k] == nil or self.t[k].kind == "punct"
   end
-  for _, p in ipairs(G.asides_alone[self.t[i].text] or {}) do
+  for _, p in ipairs(phrases) do
     local ok = true
     for x = 2, #p do ok = ok and self.t[i + x - 1] ~= nil and self.t[i + x - 1].text == p[x] end
     if ok and edge(i - 1, -1) and edge(i + #p, 1) then
@@ -5601,6 +5610,8 @@ function G:speed_lifted_and_given()
     if v then given[tonumber(v)] = true end
   end
   if not next(given) then return end
+  -- (the speed lifted is said with one of these words)
+  if not self:said("resume resuming restriction restrictions limit limits restricted") then return end
   -- true when a speed of the request is said after token e, no correction between ("cancel the speed restriction...
   -- no, just maintain 250": the lifting taken back)
   local function given_after(e)
@@ -5661,6 +5672,8 @@ end
 G.asked_values = { ALT = true, SPD = true, HDG = true, VS = true }
 G.question_opens, G.question_with_is = set_of(lexicon.state_question.opens), set_of(lexicon.state_question.with_is)
 function G:state_question()
+  -- (a question opens with a word of lexicon.state_question: none said, none asked)
+  if not (self:said(G.question_opens) or self:said(G.question_with_is)) then return end
   for i = 1, #self.t do
     local prev = self.t[i - 1]
     local opens = (not prev or prev.kind == "punct" or prev.filler or self:word(i - 1, "and @then_words"))
@@ -5731,6 +5744,7 @@ function G:shown_after_instruction()
     local name = line:match("^(%u+)")
     if G.showing[name] or (name == "AT" and line:match("^AT %S+ %S+$")) then return end
   end
+  if not self:said("show display see") then return end  -- (the verbs of showing it reads)
   local explained = self.explained or {}
   for i = 1, #self.t do
     if (self:word(i, "show display") or (self:word(i, "see") and self:word(i - 1, "me us"))) and not self.u:used(i)
@@ -6292,7 +6306,10 @@ for k, list in pairs(lexicon.kept_as_is) do G.kept_sets[k] = set_of(list) end
 G.kept_kinds = { alt = true, speed = true, mach = true, heading = true }
 function G:kept_values()
   local K = G.kept_sets
-  if not self:said(K.approvals) and not self:said(K.stays) and not self:said("all as")
+  -- (a value kept needs an approval, a copula saying it alone, "all right", "as is" or a verb of keeping with
+  -- "just" or "but")
+  if not self:said(K.approvals) and not self:said(K.stays) and not (self:said("all") and self:said("right"))
+      and not (self:said("as") and self:said("is"))
       and not (self:said(K.verbs) and (self:said(K.only) or self:said(K.but))) then
     return
   end
@@ -6426,10 +6443,13 @@ function G:acknowledged()
   end
 end
 
--- Every word that starts a phrase of lexicon.not_simulated.
+-- Every word that starts a phrase of lexicon.not_simulated -> the entries whose words hold it, in the lexicon's order.
 local NOT_SIMULATED_WORDS = {}
 for _, c in ipairs(lexicon.not_simulated) do
-  for w in pairs(word_set(c.words, 1)) do NOT_SIMULATED_WORDS[w] = true end
+  for w in pairs(word_set(c.words, 1)) do
+    NOT_SIMULATED_WORDS[w] = NOT_SIMULATED_WORDS[w] or {}
+    table.insert(NOT_SIMULATED_WORDS[w], c)
+  end
 end
 
 -- True when token i is a navaid's kind said beside its name: after it ("relocate to TKT VOR at FL300",
@@ -6600,8 +6620,8 @@ function G:not_simulated()
     local class
     if t.kind == "word" and NOT_SIMULATED_WORDS[t.text] and (not self.u:used(i) or #self:refs_in(i, i + 1, "waypoint") > 0)
         and not self:navaid_named_beside(i) then
-      for _, c in ipairs(lexicon.not_simulated) do
-        if word_set(c.words, 1)[t.text] and (not c.near or self:near_any(i, c.near, c.window))
+      for _, c in ipairs(NOT_SIMULATED_WORDS[t.text]) do
+        if (not c.near or self:near_any(i, c.near, c.window))
             and (not c.and_near or self:near_any(i + (c.window or 4), c.and_near[1], c.and_near[2]))
             and (not c.after_callsign or self:callsign_before(i))
             and (not c.after_instruction or self:instruction_before(i))
@@ -7802,10 +7822,12 @@ G.terse_list = { labels = set_of(lexicon.terse_list.labels), units = set_of(lexi
   level = set_of(lexicon.terse_list.level), joins = set_of(lexicon.terse_list.joins) }
 function G.terse_altitude(text, world)
   if not text:find("%d%d%d%d") then return text end
-  local L, ids, toks = G.terse_list, {}, {}
-  for _, a in ipairs(world.aircraft) do ids[(a.id or ""):lower()] = true end
+  -- (the first word names an aircraft flying)
+  local first, flying = text:match("[^%s,]+"):lower(), false
+  for _, a in ipairs(world.aircraft) do flying = flying or (a.id or ""):lower() == first end
+  if not flying then return text end
+  local L, toks = G.terse_list, {}
   for w in text:gmatch("[^%s,]+") do toks[#toks + 1] = w:lower() end
-  if not ids[toks[1] or ""] then return text end
   local bare, labelled, k = nil, 0, 2
   while k <= #toks do
     local w = toks[k]

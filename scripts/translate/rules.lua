@@ -191,6 +191,7 @@ return function(intent, rule, words)
   -- verb, its callsign named as such ("callsign" straight before a callsign no aircraft has), its type and a
   -- position said, no aircraft flying named: the creation, fired at the request's first word (no number)
   rule { "*", "create", when = function(g, i)
+    if g.fields_create == nil and not g:said("callsign") then g.fields_create = false end  -- (none named as such)
     if g.fields_create == nil then
       g.fields_create = false  -- (computed once per request: the rule is tried at every word)
       local new, types, flying = 0, 0, 0
