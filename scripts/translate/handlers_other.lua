@@ -2598,6 +2598,22 @@ return function(H, f, compass)
     end
     return code
   end
+  -- The first token after slot s's instruction word past the aircraft named and the words of `links` (and
+  -- punctuation when `punct`) between: where a place typed straight after the instruction stands
+  local function place_start(self, s, links, punct)
+    local k = s.trig + 1
+    while k < s.e do
+      local r = self:refs_in(k, k + 1, "aircraft")[1]
+      if r and r.b == k then
+        k = r.e
+      elseif self:word(k, links) or (punct and self.t[k].kind == "punct") then
+        k = k + 1
+      else
+        break
+      end
+    end
+    return k
+  end
   -- "orig eidw", "dest: einn", "destination to eham": an airport's ICAO code typed in lower case straight
   -- after the instruction word ("to", "from", "is", "as", "of", "for", punctuation or the aircraft between or not:
   -- "orig of tra631 is ehrd"): a word of four
@@ -2605,18 +2621,8 @@ return function(H, f, compass)
   -- names already). Marked used; nil when none.
   local function typed_airport(self, s)
     local class = self.world.airport_class
-    local k = s.trig + 1
     -- (the field's aircraft between, "orig of tra631 is ehrd", "origin tra631 ehrd")
-    while k < s.e do
-      local r = self:refs_in(k, k + 1, "aircraft")[1]
-      if r and r.b == k then
-        k = r.e
-      elseif self:word(k, "to from is as of for") or self.t[k].kind == "punct" then
-        k = k + 1
-      else
-        break
-      end
-    end
+    local k = place_start(self, s, "to from is as of for", true)
     local t = self.t[k]
     if not class or k >= s.e or t.kind ~= "word" or not t.raw:match("^%l%l%l%l$") or self.u:used(k)
         or self:known_word(k) then
@@ -2635,17 +2641,7 @@ return function(H, f, compass)
   -- used); after "divert" or "send", any other (and any without navdata) is false, asked, never guessed from the
   -- navdata's names; nil when no such word stands there.
   local function iata_airport(self, s)
-    local k = s.trig + 1
-    while k < s.e do
-      local r = self:refs_in(k, k + 1, "aircraft")[1]
-      if r and r.b == k then
-        k = r.e
-      elseif self:word(k, "to it him her them") then
-        k = k + 1
-      else
-        break
-      end
-    end
+    local k = place_start(self, s, "to it him her them")
     local t = self.t[k]
     if k >= s.e or t.kind ~= "word" or not t.raw:match("^%u%u%u$") then return nil end
     local code, class = self.IATA_AIRPORTS[t.raw], self.world.airport_class
