@@ -1788,8 +1788,9 @@ return function(intent, rule, words)
     end
     return false
   end }
-  -- "report level", "report reaching": the report of a level the aircraft will reach, no question now
-  rule { "report", false, next = "level reaching passing" }
+  -- "report reaching", "report passing": the report of a level the aircraft will reach, no question now
+  -- ("report level" alone asks the level flown now: POS, as "say altitude")
+  rule { "report", false, next = "reaching passing" }
   -- "advise when able to resume": the pilot's report asked for, not the instruction after "able to"
   rule { "resume", false, when = function(g, i)
     return g:word(i - 1, "to") and g:word(i - 2, "able") and g:preceded_by(i - 2, 3, "advise report")
