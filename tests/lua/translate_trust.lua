@@ -1786,7 +1786,7 @@ do
   check_eq(ex("WJA3 climb to FL360, not above"), "ALT WJA3 FL360")
   asked(ex("WJA3 climb FL380, not above FL370"), "WJA3 climb FL380, not above FL370")
   check_eq(ex("Air Portugal 237, Mach decimal seven eight approved"), "SPD TAP237 M0.78")
-  asked(ex("Shamrock one zero five, report level"), "Shamrock one zero five, report level")
+  check_eq(ex("Shamrock one zero five, report level"), "POS EIN105")
   check_eq(ex("EIN105 report your level"), "POS EIN105")
   check_eq(ex("WJA3 turn left 30 degrees for weather, advise when able to resume"), "HDG WJA3 250 LEFT")
   check_eq(ex("WJA3 climb FL380 at 1500ft/min"), "ALT WJA3 FL380 1500")
@@ -10387,4 +10387,19 @@ do
   check_eq(ex("swr8 continue descent FL210"), "ALT SWR8 FL210")
   check_eq(ex("swr8 continue on heading 150"), "HDG SWR8 150")
   check_eq(ex("swr8 heading 150 then resume own navigation"), "HDG SWR8 150 ; LNAV SWR8 ON")
+end
+
+-- Cycle 48 (hz54): "report level" alone asks the level flown now, as "say altitude" and "report your level" do
+-- (POS); "report reaching/passing" and "report level" after an instruction stay the pilot's later report, no POS
+do
+  local _, ex = scene({ "CRE SHT4 A320 55.9 -4.4 090 FL140 260", "CRE LOG71 DH8D 56.3 -3.9 200 FL90 220" })
+  check_eq(ex("Shuttle 4 report level"), "POS SHT4")
+  check_eq(ex("log71 report level please"), "POS LOG71")
+  check_eq(ex("sht4 report your level"), "POS SHT4")
+  check_eq(ex("sht4 say altitude"), "POS SHT4")
+  check_eq(ex("log71 report your present level"), "POS LOG71")
+  check_eq(ex("log71 descend FL70, report level"), "ALT LOG71 FL70")
+  check_eq(ex("sht4 report reaching"), "")
+  asked(ex("sht4 report level FL150"), "a level after 'report level' is no report")
+  asked(ex("report level"), "no aircraft named")
 end
