@@ -2581,6 +2581,11 @@ function G:addressee_between(last, i)
   return false
 end
 
+-- True when quantity q (or nil) names what it sets by its own unit: a flight level, knots, a Mach, "heading N".
+function G.unit_value(q)
+  return q ~= nil and (q.kind == "alt" and q.fl or q.kind == "speed" or q.kind == "mach" or q.kind == "heading")
+end
+
 -- The kinds of value an instruction said after its value (verb-final order) takes from before its word.
 local VERB_FINAL_KINDS = { alt = { alt = true }, spd = { speed = true, mach = true }, hdg = { heading = true } }
 function G:segments(b, e)
@@ -2606,8 +2611,7 @@ function G:segments(b, e)
   -- "KLM601 FL210, then ff 4 min": a callsign and a value with its own unit, a clause before the first
   -- instruction word, are an instruction of their own
   local qs = self:quantities(b, trig[1].pos)
-  local own = qs[1] and (qs[#qs].kind == "alt" and qs[#qs].fl or qs[#qs].kind == "speed" or qs[#qs].kind == "mach"
-    or qs[#qs].kind == "heading")
+  local own = G.unit_value(qs[#qs])
   -- ("Wizz Air 3117, negative, flight level 280, descend": a level with only a comma between it and a climb or
   -- descent that has no value of its own is that verb's)
   if own and qs[#qs].kind == "alt" and trig[1].intent == "alt"
@@ -2846,14 +2850,35 @@ function G:switch_then_value(segs)
   for k = #segs, 1, -1 do
     local sg = segs[k]
     local q = G.nav_switches[sg.intent] and self:quantities(sg.trig + 1, sg.e)[1]
-    if q and (q.kind == "alt" and q.fl or q.kind == "speed" or q.kind == "mach" or q.kind == "heading")
-        and self:word_in(sg.trig, q.b, "on off") then
-      local cut = q.b
+    if G.unit_value(q) and self:word_in(sg.trig, q.b, "on off") then
+      -- ("klm33 lnav off and ryr8 fl310": the value's own aircraft named straight before it opens its request)
+      local r = self:refs_in(sg.trig + 1, q.b, "aircraft")
+      r = r[#r]
+      local cut = r and self:opens_own_request(sg, r, sg.e) and r.b or q.b
       while cut - 1 > sg.trig and (self.t[cut - 1].kind == "punct" or self:word(cut - 1, "and")) do cut = cut - 1 end
       table.insert(segs, k + 1, { intent = "infer", b = cut, trig = q.b, e = sg.e })
       sg.e = cut
     end
   end
+end
+
+-- True when flying aircraft r, inside segment `seg` (to e), opens a request of its own: another aircraft than
+-- the segment names before it, a value with its own unit straight after it (fillers or "to" between), and
+-- before it "and", "then" or a comma, semicolon or full stop (`bare`: or straight a value, "klm33 hdg 100 ryr8
+-- fl310"). "klm33 hdg 100 avoiding ryr8 fl310" opens none: the level may be either aircraft's, left to the check.
+function G:opens_own_request(seg, r, e, bare)
+  if not r.exists then return false end
+  for _, o in ipairs(self:refs_in(seg.b, r.b, "aircraft")) do
+    if o.name:upper() == r.name:upper() then return false end
+  end
+  local v = self:skip_fillers(r.e)
+  if self:word(v, "to") then v = v + 1 end
+  local q = self:quantities(r.e, e)[1]
+  if not (G.unit_value(q) and q.b == v) then return false end
+  local p = self.t[r.b - 1]
+  local before = self:quantities(seg.trig, r.b)
+  return p ~= nil and ((p.kind == "punct" and (p.text == "," or p.text == ";" or p.text == "."))
+    or self:word(r.b - 1, "and @then_words") or (bare == true and #before > 0 and before[#before].e == r.b))
 end
 
 -- "turn EZY45 to 010 and AFR1234 to 200": an aircraft named after a value
@@ -2870,10 +2895,9 @@ function G:split_ellipsis(segs)
     if s.intent == "infer" then
       for _, r in ipairs(self:refs_in(s.b + 1, e, "aircraft")) do
         local before, after = self:quantities(cur.b, r.b), self:quantities(r.e, e)
-        local own = function(q) return q and (q.kind == "alt" and q.fl or q.kind == "speed" or q.kind == "mach" or q.kind == "heading") end
         local v = self:skip_fillers(r.e)
         if self:word(v, "at to") then v = v + 1 end
-        if r.exists and #before > 0 and own(before[#before]) and own(after[1]) and after[1].b == v then
+        if r.exists and #before > 0 and G.unit_value(before[#before]) and G.unit_value(after[1]) and after[1].b == v then
           cur.e = r.b
           cur = { intent = "infer", b = r.b, trig = r.b, e = e }
           out[#out + 1] = cur
@@ -2889,21 +2913,36 @@ function G:split_ellipsis(segs)
         end
       end
     end
-    local qs = (M.intents[s.intent] or {}).value and self:quantities(s.trig, e) or {}
+    local spec = M.intents[s.intent] or {}
+    local qs = spec.value and self:quantities(s.trig, e) or {}
     if #qs >= 2 then
       for _, r in ipairs(self:refs_in(qs[1].e, e, "aircraft")) do
-        -- only across "and", a comma, a semicolon or a full stop: "heading 160 DLH4AX 2" is no second
-        -- instruction
-        local joined = false
+        -- only across "and", "then", a comma, a semicolon or a full stop: "heading 160 DLH4AX 2" is no second
+        -- instruction; "klm33 hdg 100 ryr8 fl310", another aircraft's own request straight after the value, is
+        local joined = self:opens_own_request(cur, r, e, true)
         for k = qs[1].e, r.b - 1 do
           local t = self.t[k]
-          if (t.kind == "punct" and (t.text == "," or t.text == ";" or t.text == ".")) or self:word(k, "and") then
+          if (t.kind == "punct" and (t.text == "," or t.text == ";" or t.text == ".")) or self:word(k, "and @then_words") then
             joined = true
           end
         end
         if qs[#qs].b >= r.e and joined then
+          -- ("klm33 hdg 100 and ryr8 fl310": a value with a unit of another kind than the instruction's is that
+          -- aircraft's request of its own; a bare one takes the instruction before)
+          local v = self:quantities(r.e, e)[1]
+          local kinds = VERB_FINAL_KINDS[s.intent]
+          local other = s.intent ~= "maintain" and G.unit_value(v) and not (kinds and kinds[v.kind])
           cur.e = r.b
-          cur = { intent = s.intent, b = r.b, trig = r.b, e = e }
+          cur = { intent = other and "infer" or s.intent, b = r.b, trig = r.b, e = e }
+          out[#out + 1] = cur
+        end
+      end
+    elseif s.intent ~= "infer" and not spec.single then
+      -- "klm33 dct GILOM and ryr8 fl310", "hop7 lnav on, klm33 spd 250": after an instruction without a value
+      for _, r in ipairs(self:refs_in(s.trig + 1, e, "aircraft")) do
+        if self:opens_own_request(cur, r, e) then
+          cur.e = r.b
+          cur = { intent = "infer", b = r.b, trig = r.b, e = e }
           out[#out + 1] = cur
         end
       end
@@ -3339,6 +3378,7 @@ local tied_to_waypoint
 
 function G:parse(b, e)
   local segs = self:split_ellipsis(self:segments(b, e))
+  if DEBUGSEG then for _, sg in ipairs(segs) do print("SEG", sg.intent, sg.b, sg.trig, sg.e, self:raw(sg.b, sg.e)) end end
   local prev_out = #self.out
   local valueless, issued_by = {}, {}  -- (G:valueless_left)
   self:orphan_heading(segs[1])

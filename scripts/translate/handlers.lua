@@ -2073,6 +2073,17 @@ function m:leftovers(s)
     end
     return false
   end
+  -- (a value said after another flying aircraft named after the instruction word, in its clause, "hdg 100
+  -- avoiding RYR8 FL310", "behind RYR8 at FL310", may be that aircraft's: left over, it is asked)
+  local theirs = {}
+  for _, r in ipairs(self:refs_in(s.trig, s.e, "aircraft")) do
+    local k = r.e
+    while r.exists and r.name:upper() ~= ids[1]:upper() and k < s.e and self.t[k].kind ~= "punct"
+        and not self:word(k, "and @then_words") do
+      theirs[k] = true
+      k = k + 1
+    end
+  end
   for k, q in ipairs(qs) do
     -- (the level left, "leaving FL260 for FL200", is no instruction: the one after it is)
     if q.kind == "alt" and not alt_done and self:level_left(q, qs[k + 1]) then self:take(q) end
@@ -2092,7 +2103,8 @@ function m:leftovers(s)
     -- in spoken order: one said before the instruction word goes before its command
     local emit = q.b < s.trig and function(line) table.insert(self.out, #self.out, line) end
       or function(line) self:emit(line) end
-    if not self.taken[q.b] and (q.b > s.trig or (unit and s.trig > s.b and not self:sentence_before(q, s.trig))) then
+    if not self.taken[q.b] and not theirs[q.b]
+        and (q.b > s.trig or (unit and s.trig > s.b and not self:sentence_before(q, s.trig))) then
       if q.kind == "alt" and not alt_done and (q.fl or self:word(q.e - 1, "@feet")) then
         -- "FL300 at 2000 fpm": the rate said with the level is the climb's or descent's (ALT's vspd)
         local rate = self:quantities(q.e, math.min(#self.t + 1, q.e + 4))[1]

@@ -10403,3 +10403,29 @@ do
   asked(ex("sht4 report level FL150"), "a level after 'report level' is no report")
   asked(ex("report level"), "no aircraft named")
 end
+
+-- Cycle 48 (hz54): two aircraft in one line, each with its own instruction: after "and", "then", a comma or straight
+-- after the first's value, another flying aircraft with a value of its own unit straight after it is its own request
+-- ("klm33 hdg 100 and ryr8 fl310"), also after an instruction with no value (a direct-to, a navigation switch); a
+-- bare value there takes the instruction before ("turn X to 010 and Y to 200"); a value said after another aircraft
+-- in the first instruction's clause ("avoiding RYR8 FL310") may be either's: asked
+do
+  local _, ex = scene({ "CRE TAP12 A320 41.2 -8.7 300 FL250 280", "CRE IBE31 A321 40.9 -8.2 020 FL330 300",
+    "CRE VLG7 A320 41.5 -8.9 180 FL180 260", "DEFWPT ODEMI 41.6 -8.4", "ADDWPT TAP12 ODEMI" })
+  check_eq(ex("tap12 hdg 320 and ibe31 fl290"), "HDG TAP12 320 ; ALT IBE31 FL290")
+  check_eq(ex("tap12 hdg 320, ibe31 fl290"), "HDG TAP12 320 ; ALT IBE31 FL290")
+  check_eq(ex("tap12 hdg 320 ibe31 fl290"), "HDG TAP12 320 ; ALT IBE31 FL290")
+  check_eq(ex("tap12 hdg 320 then ibe31 fl290"), "HDG TAP12 320 ; ALT IBE31 FL290")
+  check_eq(ex("tap12 reduce 250 and ibe31 to fl290"), "SPD TAP12 250 ; ALT IBE31 FL290")
+  check_eq(ex("tap12 climb fl300 and ibe31 280 kts and vlg7 hdg 150"),
+    "ALT TAP12 FL300 ; SPD IBE31 280 ; HDG VLG7 150")
+  check_eq(ex("tap twelve turn left heading three two zero and iberia three one flight level two niner zero"),
+    "HDG TAP12 320 LEFT ; ALT IBE31 FL290")
+  check_eq(ex("tap12 dct odemi and ibe31 fl290"), "DIRECT TAP12 ODEMI ; ALT IBE31 FL290")
+  check_eq(ex("tap12 lnav off and ibe31 fl290"), "LNAV TAP12 OFF ; ALT IBE31 FL290")
+  check_eq(ex("tap12 hdg 320 and ibe31 to 010"), "HDG TAP12 320 ; HDG IBE31 10")
+  check_eq(ex("tap12 speed 250 and ibe31 mach .78"), "SPD TAP12 250 ; SPD IBE31 M0.78")
+  asked(ex("tap12 hdg 320 avoiding ibe31 fl290"), "a level after the other aircraft may be either's")
+  asked(ex("tap12 hdg 320 behind ibe31 at 280 kts"), "a speed after the other aircraft may be either's")
+  asked(ex("tap12 hdg 320 and ibe31"), "the second aircraft has no instruction of its own")
+end
