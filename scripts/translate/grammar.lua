@@ -2518,6 +2518,13 @@ function G:do_at(id, wp, n0)
         table.concat(self.out, " ; "), wp)
       return false
     end
+    -- ("turn left 20 degrees passing LOMKI", "reduce 20 knots after LOMKI": a value counted from what the aircraft
+    -- flies now is no value for later, when it may fly another)
+    if not self:values_said(self.out[c]) then
+      self.ask = string.format("I have %s, counted from what %s flies now, and at %s it may fly otherwise. What "
+        .. "should %s do at %s?", self.out[c], id, wp, id, wp)
+      return false
+    end
   end
   for c = n0 + 1, #self.out do self.out[c] = "AT " .. id .. " " .. wp .. " DO " .. self.out[c] end
   return true
@@ -3486,6 +3493,11 @@ function G:parse(b, e)
         self:leftovers(s)
         self:unexplained(s, n_before)
       end
+      -- ("klm33 fl200 250 kts passing LOMKI": a value beside the one tied to the waypoint may be meant there too)
+      if tail and not self.ask and #self.out > n_before + 1 and not self.out[#self.out]:match("^AT ") then
+        self:need(string.format("I have %s. Which of these should happen at %s?", table.concat(self.out, " ; "),
+          tail.name))
+      end
       if at then
         for c = n_before + 1, #self.out do self.out[c] = at .. " " .. self.out[c] end
       end
@@ -3762,18 +3774,28 @@ end
 -- starts there (AT acid wp DO, G:do_at): { b = the condition's first token, e = the token after the
 -- waypoint's name, name }, else nil. "at CANUK" alone after the value is no such condition (a crossing?).
 local VALUE_INTENTS = { alt = true, spd = true, hdg = true, vs = true, maintain = true, infer = true }
+-- True when the value of a level, speed, heading or rate instruction (segment s) ends straight before token c
+-- (fillers and commas between).
+function G:value_before(s, c)
+  local v = c - 1
+  while v > s.trig and (self.t[v].filler or self.t[v].text == ",") do v = v - 1 end
+  local last = self:quantities(s.trig, v + 1)
+  return VALUE_INTENTS[s.intent] and #last > 0 and last[#last].e == v + 1
+end
 function G:trailing_fix(s)
   local c = self:find_word(s.trig + 1, s.e, "when once after upon on")
+  -- ("reduce 250 knots passing LOMKI", "descend FL200 overflying LOMKI": a verb of passing straight after the
+  -- value, with no "when" before it, is the same condition)
+  local bare = self:find_word(s.trig + 1, c, "passing passes reaching reaches overflying")
+  bare = bare < c and self:has_ref(bare + 1, bare + 2, "waypoint") and self:value_before(s, bare) and bare
+  if bare then c = bare end
   if c >= s.e or #self:quantities(s.trig, c) == 0 then return nil end
-  local k = self:skip_fillers(c + 1)
+  local k = bare or self:skip_fillers(c + 1)
   -- ("descend FL250 after Weser", "reduce 250 after WSR": "after" straight after the value of a level, speed,
   -- heading or rate, and the waypoint, its code or a name of the aircraft's route, closing the request;
   -- "expect lower after KURDI" is no such condition, nor ADDWPT's "after")
   if self:word(c, "after") and not self:word(k, "it you passing passes reaching reaches overflying") then
-    local v = c - 1
-    while v > s.trig and (self.t[v].filler or self.t[v].text == ",") do v = v - 1 end
-    local last = self:quantities(s.trig, v + 1)
-    if self.u:used(c) or not VALUE_INTENTS[s.intent] or #last == 0 or last[#last].e ~= v + 1 then return nil end
+    if self.u:used(c) or not self:value_before(s, c) then return nil end
     local e = s.e
     while e > k and self.t[e - 1].kind == "punct" and self.t[e - 1].text ~= "," do e = e - 1 end
     local r = self:refs_in(k, e, "waypoint")[1]
@@ -4481,6 +4503,24 @@ local CHECKED = { alt = true, spd = true, hdg = true, maintain = true, direct = 
 function G:take(q)
   if q then self.taken[q.b] = true end
   return q
+end
+
+-- Quantity q was read as a change from the aircraft's present value ("left 20 degrees", "reduce 20 knots").
+function G:as_change(q)
+  self.changes = self.changes or {}
+  self.changes[q.b] = true
+end
+
+-- True when every number TrafScript line `line` carries is a value said in the request (one counted from the
+-- aircraft's state, "left 20 degrees" as HDG 100, is not; a change said, G:as_change, carries none).
+function G:values_said(line)
+  local qs = self:quantities(1, #self.t + 1)
+  for w in line:gmatch("%S+") do
+    local nums, said = line_numbers(w), false
+    for _, q in ipairs(qs) do said = said or (not (self.changes or {})[q.b] and value_carried(q, nums)) end
+    if #nums > 0 and not said then return false end
+  end
+  return true
 end
 
 -- A value with a unit of its own (a level, feet, knots, Mach, "heading N")

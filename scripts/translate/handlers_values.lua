@@ -460,6 +460,7 @@ return function(H, f, wrap, compass)
         if dir == 0 then return self:need("Should " .. id .. " climb or descend by " .. f.int(ft) .. " ft?") end
         target_ft = (a.alt_ft or 0) + (dir < 0 and -ft or ft)
         alt = f.int(target_ft)
+        self:as_change(q)
       else
         target_ft, alt = ft, f.alt(ft, fl)
       end
@@ -562,6 +563,7 @@ return function(H, f, wrap, compass)
         -- (the change's sign is its direction word's: "minus 20 knots" is 20 knots slower, never faster)
         local delta = math.abs(q.kind == "percent" and a.cas_kt * q.value / 100 or q.value)
         spd = f.int(a.cas_kt + (dir < 0 and -delta or delta))
+        self:as_change(q)
       else
         local kt = q.value
         -- a speed said in another unit ("400 km/h", "150 m/s") is its conversion, to the nearest knot
@@ -755,6 +757,7 @@ return function(H, f, wrap, compass)
       local dir = rel.turn ~= 0 and rel.turn or turn
       if dir == 0 then return self:need("Should " .. id .. " turn left or right?") end
       offset = dir * rel.value
+      self:as_change(rel)
       -- (a heading said after the turn's degrees, no correction between, "left 30 degrees then 300", "left 30
       -- degrees, to 270": a second heading in the turn's sentence, asked, unless it is the one the turn reaches)
       local reached = wrap(math.floor(now.hdg_deg + offset + 0.5))

@@ -10429,3 +10429,23 @@ do
   asked(ex("tap12 hdg 320 behind ibe31 at 280 kts"), "a speed after the other aircraft may be either's")
   asked(ex("tap12 hdg 320 and ibe31"), "the second aircraft has no instruction of its own")
 end
+
+-- Cycle 48 (hz54): a verb of passing a waypoint straight after an instruction's value, with no "when" ("reduce
+-- 250 knots passing LOMKI", "descend FL200 overflying X", "reaching X") is the waypoint the instruction waits
+-- for (AT acid wp DO), as "when passing" is; off the route it is asked. A value counted from what the aircraft
+-- flies now ("left 20 degrees", "reduce 20 knots") is never run later at a waypoint, and a second value beside
+-- the one tied there ("fl200 250 kts passing X") is asked: which of them waits
+do
+  local _, ex = scene({ "CRE AEE9 A320 38.1 23.5 040 FL270 290", "DEFWPT PIKAD 38.4 23.9", "ADDWPT AEE9 PIKAD",
+    "DEFWPT TOBIL 37.5 23.0" })
+  check_eq(ex("aee9 reduce 250 knots passing PIKAD"), "AT AEE9 PIKAD DO SPD AEE9 250")
+  check_eq(ex("aee9 reduce speed two five zero passing pikad"), "AT AEE9 PIKAD DO SPD AEE9 250")
+  check_eq(ex("aee9 descend fl180 overflying PIKAD"), "AT AEE9 PIKAD DO ALT AEE9 FL180")
+  check_eq(ex("aee9 turn right heading 090 reaching PIKAD"), "AT AEE9 PIKAD DO HDG AEE9 90 RIGHT")
+  check_eq(ex("aee9 reduce 250 when passing PIKAD"), "AT AEE9 PIKAD DO SPD AEE9 250")
+  asked(ex("aee9 reduce 250 knots passing TOBIL"), "a waypoint off the route")
+  asked(ex("aee9 turn left 20 degrees passing PIKAD"), "a turn counted from the heading now, run later")
+  asked(ex("aee9 reduce 20 knots after PIKAD"), "a speed counted from the speed now, run later")
+  asked(ex("aee9 fl180 250 kts passing PIKAD"), "a second value beside the one tied to the waypoint")
+  asked(ex("aee9 reduce 250 knots abeam PIKAD"), "abeam is no passing over")
+end
