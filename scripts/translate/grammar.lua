@@ -2618,6 +2618,10 @@ function G:segments(b, e)
   -- "KLM601 FL210, then ff 4 min": a callsign and a value with its own unit, a clause before the first
   -- instruction word, are an instruction of their own
   local qs = self:quantities(b, trig[1].pos)
+  -- ("hop7 fl100 in 2 min, hdg 220", "... in 2 min and hdg 220": a wait said after the value is the value's own
+  -- clause, which "and" closes too)
+  local timed = #qs > 1 and qs[#qs].kind == "time"
+  if timed then qs = { table.unpack(qs, 1, #qs - 1) } end
   local own = G.unit_value(qs[#qs])
   -- ("Wizz Air 3117, negative, flight level 280, descend": a level with only a comma between it and a climb or
   -- descent that has no value of its own is that verb's)
@@ -2634,7 +2638,7 @@ function G:segments(b, e)
       local at = (self:word(k, "and") and k + 1) or (k == qs[#qs].e and k)
       local other = at and self:refs_in(at, at + 1, "aircraft")[1]
       local first = other and self:refs_in(b, qs[1].b, "aircraft")[1]
-      if self.t[k].kind == "punct" or self:word(k, "@then_words") or (other and other.exists
+      if self.t[k].kind == "punct" or self:word(k, "@then_words") or (timed and self:word(k, "and")) or (other and other.exists
           and other.name:upper() ~= first.name:upper()) then
         segs[1] = { intent = "infer", b = b, trig = b, e = k }
         break
@@ -2761,7 +2765,19 @@ function G:segments(b, e)
         -- (and ", as soon as it's through FL140 speed 240")
         local soon = self:find_word(last.trig + 1, cond, "soon")
         if soon < cond and self:word(soon - 1, "as") and self:word(soon + 1, "as") then cond = soon - 1 end
+        -- ("descend FL100 after 2 minutes turn left": a wait nothing parts from the value before is asked, G:at_time)
+        local waited = self:word(cond, "after") and self:quantities(cond + 1, start)[1]
+        if waited and waited.kind == "time" and waited.b == cond + 1 and not self:linked(cond) then cond = start end
         if cond < start then start = cond end
+        -- (", in 2 minutes turn left heading 220", "and in 2 min EZY45 descend": a wait after "in" opening the clause
+        -- straight before the instruction word, after the instruction before's value, is this one's, as "after 2
+        -- minutes" is)
+        local wait = self:find_word(last.trig + 1, start, "in")
+        local tq = wait < start and self:quantities(wait + 1, start)[1]
+        if tq and tq.kind == "time" and tq.b == wait + 1 and self:skip_fillers(tq.e) == start and self:linked(wait)
+            and #self:quantities(last.trig, wait) > 0 then
+          start = wait
+        end
         -- (", leave BIG heading 270": "leave" and the waypoint straight before the instruction word open its clause)
         for _, r in ipairs(self:refs_in(last.trig + 1, start, "waypoint")) do
           if self:skip_fillers(r.e) == start and self:word(r.b - 1, "leave") and r.b - 1 > last.trig then

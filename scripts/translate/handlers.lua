@@ -1892,6 +1892,8 @@ end
 -- the simulation's speed ("in 300 seconds set the simulation speed to 2") is no fast-forward: its time
 -- after "in"/"after" waits as any instruction's does.
 local OWN_TIME = { ff = true, dt = true, dtlook = true, dtmult = true, creconfs = true }
+-- (the instructions whose values a wait may stand between)
+local TIMED_VALUES = { alt = true, spd = true, hdg = true, vs = true, maintain = true, infer = true }
 function m:at_time(s)
   if OWN_TIME[s.intent] and not (s.intent == "ff" and self:word(s.trig, "speed spd airspeed")) then return nil end
   if s.intent == "echo" and s.trig == self:skip_fillers(1) and self:word(s.trig, "echo") then return nil end
@@ -1931,9 +1933,31 @@ function m:at_time(s)
       local t = math.floor(q.value + 0.5)
       local at = self:word(w, "in after") and "DELAY " .. f.num(q.value)
         or string.format("SCHEDULE %02d:%02d:%02d", t // 3600, t % 3600 // 60, t % 60)
+      -- ("hop7 fl100 in 2 min hdg 220", "descend FL100 in 2 minutes turn left heading 220": a wait between two
+      -- instructions with nothing to part them may be the one before's, the one after's or both's: asked)
+      local before, after = false, false
+      for _, v in ipairs(TIMED_VALUES[s.intent] and self:quantities(s.b, s.e) or {}) do
+        before = before or (v.kind ~= "time" and v.e <= w)
+        after = after or (v.kind ~= "time" and v.b >= q.e)
+      end
+      local k = q.e
+      while k < s.e and self.t[k].filler and not self:word(k, "and @then_words") do k = k + 1 end
+      local next_one = not after and q.b > s.trig and s.e <= #self.t and k == s.e
+      if before and (after or next_one) then
+        return self:need(string.format("Which instruction should wait '%s': the one before it, the one after it, or "
+          .. "both?", self:raw(w, q.e)))
+      end
       -- (one that opens the request times every instruction in it: "in 30 seconds KL204 climb ... and
-      -- EZY45 descend ...")
-      if w == self:skip_fillers(1) then self.at_all = at end
+      -- EZY45 descend ..."; after the callsign alone, when it names no other aircraft: "KL204, in 2 minutes
+      -- descend FL100 and turn left heading 220")
+      local lead, named = self:skip_fillers(1), self:refs_in(1, #self.t + 1, "aircraft")
+      local one = named[1] and named[1].b == lead
+      for _, r in ipairs(named) do one = one and r.name:upper() == named[1].name:upper() end
+      if one then
+        lead = self:skip_fillers(named[1].e)
+        while self.t[lead] and self.t[lead].kind == "punct" and self.t[lead].text == "," do lead = self:skip_fillers(lead + 1) end
+      end
+      if w == lead then self.at_all = at end
       return at
     end
   end
