@@ -3595,6 +3595,7 @@ function G:parse(b, e)
   if self.at_next and not self.ask then tied_to_waypoint(self, self.at_next) end
   self.at_next = nil
   self:direct_resumes_nav()
+  self:direct_beside_lnav_off()
   self:destination_not_waypoint()
 end
 
@@ -3943,6 +3944,22 @@ function G:direct_resumes_nav()
           table.remove(self.out, c)
           break
         end
+      end
+    end
+  end
+end
+
+-- "hop7 lnav off dct LIL", "KLM33 direct GILOM, then LNAV off": DIRECT switches LNAV on, so an aircraft's LNAV
+-- OFF and a direct-to of the same aircraft, under one condition or none, undo each other in either order (before
+-- it the switch is lost, after it the aircraft no longer flies to the waypoint): asked, naming both.
+function G:direct_beside_lnav_off()
+  for c = 1, self.ask and 0 or #self.out do
+    local cond, id = self.out[c]:match("^(.-)LNAV (%S+) OFF$")
+    for d = 1, id and #self.out or 0 do
+      local wp = self.out[d]:match("^" .. cond:gsub("%p", "%%%0") .. "DIRECT " .. id:gsub("%p", "%%%0") .. " (%S+)$")
+      if wp then
+        return self:need(string.format("DIRECT %s %s switches LNAV on again. Should %s fly direct to %s along its "
+          .. "route (LNAV on), or leave its route (LNAV off)?", id, wp, id, wp))
       end
     end
   end

@@ -10472,3 +10472,22 @@ do
   asked(ex("bel5 descend fl150 in 3 minutes turn right heading 250"), "a wait between two instructions")
   asked(ex("bel5 descend fl150 after 3 minutes turn right heading 250"), "'after' likewise")
 end
+
+-- Cycle 48 (hz54): DIRECT switches LNAV on, so an aircraft's LNAV OFF and its direct-to, in either order and in any
+-- words, undo each other (before the direct-to the switch is lost, after it the aircraft no longer flies to the
+-- waypoint): asked, naming both. LNAV ON beside a direct-to, VNAV OFF beside one, and LNAV OFF of another aircraft
+-- stand
+do
+  local _, ex = scene({ "CRE HOP3 E145 50.6 3.0 180 12000 250", "DEFWPT ARTOV 50.8 3.3", "ADDWPT HOP3 ARTOV",
+    "CRE TVF8 B738 50.2 2.6 045 FL350 290", "ADDWPT TVF8 ARTOV" })
+  local q = "ASK DIRECT HOP3 ARTOV switches LNAV on again. Should HOP3 fly direct to ARTOV along its route (LNAV on), "
+    .. "or leave its route (LNAV off)?"
+  check_eq(ex("hop3 lnav off dct artov"), q)
+  check_eq(ex("hop3 dct artov, then lnav off"), q)
+  check_eq(ex("hop3 switch off lateral navigation and proceed direct artov"), q)
+  check_eq(ex("hop3 own navigation off direct artov fl100"), q)
+  check_eq(ex("hop3 lnav on dct artov"), "LNAV HOP3 ON ; DIRECT HOP3 ARTOV")
+  check_eq(ex("hop3 vnav off dct artov"), "VNAV HOP3 OFF ; DIRECT HOP3 ARTOV")
+  check_eq(ex("hop3 lnav off and tvf8 dct artov"), "LNAV HOP3 OFF ; DIRECT TVF8 ARTOV")
+  check_eq(ex("hop3 lnav off heading 200"), "LNAV HOP3 OFF ; HDG HOP3 200")
+end
