@@ -5619,6 +5619,10 @@ function G:described()
         local o = self:refs_in(k + 1, k + 2, "aircraft")[1]
         group[#group + 1], k, grouped[o.b] = o, o.e, true
       end
+      -- ("RYR8 at FL210 is traffic": the aircraft's value said before the copula)
+      local v = self:word(k, "at") and k + 1 or k
+      local held = self:quantities(v, #self.t + 1)[1]
+      if held and held.b == v and self:word(held.e, "@described") then k = held.e end
       local verb_at = self:word(k + 1, "@described_quantifiers") and k + 2 or k + 1
       if self:word(k, "@described") and not self:word(verb_at, "@described_not")
           and not self:word(self:word(r.b - 1, "the") and r.b - 2 or r.b - 1, "@described_after") then

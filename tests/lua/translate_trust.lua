@@ -10427,6 +10427,10 @@ do
   asked(ex("tap12 hdg 320 avoiding ibe31 fl290"), "a level after the other aircraft may be either's")
   asked(ex("tap12 hdg 320 behind ibe31 at 280 kts"), "a speed after the other aircraft may be either's")
   asked(ex("tap12 hdg 320 and ibe31"), "the second aircraft has no instruction of its own")
+  -- an aircraft described by its value and a copula after it ("IBE31 at FL290 is traffic") is not instructed
+  check_eq(ex("tap12 descend fl230, ibe31 at fl290 is traffic"), "ALT TAP12 FL230")
+  check_eq(ex("tap12 descend fl230 and ibe31 fl290 is converging"), "ALT TAP12 FL230")
+  asked(ex("ibe31 at fl290 is traffic"), "a description alone instructs nobody")
 end
 
 -- Cycle 48 (hz54): a verb of passing a waypoint straight after an instruction's value, with no "when" ("reduce
