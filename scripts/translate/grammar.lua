@@ -3401,7 +3401,6 @@ local tied_to_waypoint
 
 function G:parse(b, e)
   local segs = self:split_ellipsis(self:segments(b, e))
-  if DEBUGSEG then for _, sg in ipairs(segs) do print("SEG", sg.intent, sg.b, sg.trig, sg.e, self:raw(sg.b, sg.e)) end end
   local prev_out = #self.out
   local valueless, issued_by = {}, {}  -- (G:valueless_left)
   self:orphan_heading(segs[1])
