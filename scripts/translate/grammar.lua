@@ -3514,7 +3514,12 @@ function G:parse(b, e)
           tail.name))
       end
       if at then
-        for c = n_before + 1, #self.out do self.out[c] = at .. " " .. self.out[c] end
+        for c = n_before + 1, #self.out do
+          -- (a wait said after the callsign, G:at_time's `at_all_for`, times that aircraft's commands only)
+          if at ~= self.at_all or not self.at_all_for or self.out[c]:match("^%u+ (%S+)") == self.at_all_for then
+            self.out[c] = at .. " " .. self.out[c]
+          end
+        end
       end
       -- ("descend FL80, reduce 230, when level reduce 210": "level" is the level cleared, whatever was said
       -- between)

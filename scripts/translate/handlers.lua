@@ -1948,8 +1948,8 @@ function m:at_time(s)
           .. "both?", self:raw(w, q.e)))
       end
       -- (one that opens the request times every instruction in it: "in 30 seconds KL204 climb ... and
-      -- EZY45 descend ..."; after the callsign alone, when it names no other aircraft: "KL204, in 2 minutes
-      -- descend FL100 and turn left heading 220")
+      -- EZY45 descend ..."; after the callsign alone, when it names no other aircraft, every instruction of that
+      -- aircraft, `at_all_for`: "KL204, in 2 minutes descend FL100 and turn left heading 220")
       local lead, named = self:skip_fillers(1), self:refs_in(1, #self.t + 1, "aircraft")
       local one = named[1] and named[1].b == lead
       for _, r in ipairs(named) do one = one and r.name:upper() == named[1].name:upper() end
@@ -1957,7 +1957,9 @@ function m:at_time(s)
         lead = self:skip_fillers(named[1].e)
         while self.t[lead] and self.t[lead].kind == "punct" and self.t[lead].text == "," do lead = self:skip_fillers(lead + 1) end
       end
-      if w == lead then self.at_all = at end
+      if w == self:skip_fillers(1) or w == lead then
+        self.at_all, self.at_all_for = at, w == lead and one and named[1].name:upper() or nil
+      end
       return at
     end
   end

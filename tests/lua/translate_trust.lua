@@ -10471,6 +10471,7 @@ do
   check_eq(ex("bel5 in 3 minutes descend fl150 and tui3 turn left heading 040"),
     "DELAY 180 ALT BEL5 FL150 ; HDG TUI3 40 LEFT")
   check_eq(ex("bel5 fl150 hdg 250 in 3 min"), "DELAY 180 ALT BEL5 FL150 ; DELAY 180 HDG BEL5 250")
+  check_eq(ex("bel5 in 3 min fl150, then ff 60"), "DELAY 180 ALT BEL5 FL150 ; FF 60")
   asked(ex("bel5 fl150 in 3 min hdg 250"), "a wait between two values")
   asked(ex("bel5 fl one five zero in three minutes heading two five zero"), "the same in words")
   asked(ex("bel5 descend fl150 in 3 minutes turn right heading 250"), "a wait between two instructions")
