@@ -6185,8 +6185,9 @@ end
 -- ---- what squawk does not simulate ----
 
 -- True when one of `near` (words or typed numbers as written; "#number"
--- any number, "#waypoint" a waypoint name, "#frequency" a typed radio frequency of the VHF air
--- band, 118.000 to 136.975 MHz with its decimals: "129.2") is within 4 tokens after i.
+-- any number, "#waypoint" a waypoint name (a navaid's kind alone is none: "until 10 DME", "the VOR"),
+-- "#frequency" a typed radio frequency of the VHF air band, 118.000 to 136.975 MHz with its decimals:
+-- "129.2") is within 4 tokens after i.
 local function frequency(t)
   local mhz = t.kind == "number" and t.text:match("^1[123]%d%.%d+$") and tonumber(t.text)
   return mhz and mhz >= 118 and mhz < 137
@@ -6197,7 +6198,7 @@ function G:near_any(i, near, window)
     for _, w in ipairs(near) do
       if (w == "#number" and t.kind == "number") or (w == "#number" and t.number_word)
           or (w == "#frequency" and frequency(t))
-          or (w == "#waypoint" and #self:refs_in(k, k + 1, "waypoint") > 0)
+          or (w == "#waypoint" and #self:refs_in(k, k + 1, "waypoint") > 0 and not self:word(k, "@navaid_kinds"))
           or ((t.kind == "word" or t.kind == "number") and t.text == w) then
         return true
       end

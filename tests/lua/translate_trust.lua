@@ -10388,3 +10388,16 @@ do
   check_eq(ex("swr8 continue on heading 150"), "HDG SWR8 150")
   check_eq(ex("swr8 heading 150 then resume own navigation"), "HDG SWR8 150 ; LNAV SWR8 ON")
 end
+
+-- Cycle 48 (f113): a limit "until" a distance in DME typed in capitals ("maintain 4000 until 10 DME") names no
+-- place: a navaid's kind alone is no waypoint, so the limit is one at a distance, flown and its end named only at
+-- the final approach's 3 to 6 miles, else asked; a waypoint of the route after "until" stays a place
+do
+  local _, ex = scene({ "CRE KAL7 B738 37.4 126.4 180 FL140 270", "DEFWPT ALFA 37.1 126.5", "ADDWPT KAL7 ALFA" })
+  check_eq(ex("KAL7 maintain 4000 until 10 DME"), "ASK I have ALT KAL7 4000. What does '10 DME' mean?")
+  asked(ex("KAL7 maintain 250 knots till 12 DME"), "a speed held to 12 DME")
+  asked(ex("KAL7 reduce 180 knots to 10 DME"), "a speed held to 10 DME, said with 'to'")
+  asked(ex("KAL7 maintain 4000 until the VOR"), "a navaid's kind alone is no place")
+  check_eq(ex("KAL7 speed 160 until 4 DME"), "SPD KAL7 160")
+  check_eq(ex("KAL7 maintain 5000 until ALFA"), "ALT KAL7 5000")
+end
