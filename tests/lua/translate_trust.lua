@@ -10401,3 +10401,19 @@ do
   check_eq(ex("KAL7 speed 160 until 4 DME"), "SPD KAL7 160")
   check_eq(ex("KAL7 maintain 5000 until ALFA"), "ALT KAL7 5000")
 end
+
+-- Cycle 48 (f113): a callsign said with a brand's name (names.lua's brands) is an aircraft of a brand airline
+-- only when that airline bears the name: its own telephony is the name or begins with it ("Jetstar Asia"), or
+-- squawk knows none for it; Jetstar Japan, "Orange Liner", is never "Jetstar 503", nor the Shuttle "Speedbird 12"
+do
+  local _, ex = scene({ "CRE JJP503 A320 36.1 140.2 160 FL130 270", "CRE JSA142 A320 1.3 103.9 090 FL150 270",
+    "CRE TVF33KP B738 48.7 2.4 180 FL200 280", "CRE SHT12 A320 51.5 -0.4 300 FL100 250",
+    "CRE EJU45 A320 47.4 8.5 090 FL250 280" })
+  check_eq(ex("Jetstar 503 descend 7000"), "ASK Did you mean JJP503? I heard JST503.")
+  check_eq(ex("Orange Liner 503 descend 7000"), "ALT JJP503 7000")
+  check_eq(ex("Jetstar 142 descend FL120"), "ALT JSA142 FL120")
+  check_eq(ex("Transavia 33KP descend FL150"), "ALT TVF33KP FL150")
+  asked(ex("Speedbird 12 climb FL120"), "the Shuttle's aircraft called by the Speedbird telephony")
+  asked(ex("Easy 45 descend FL200"), "easyJet Europe (Alpine) called Easy")
+  check_eq(ex("Alpine 45 descend FL200"), "ALT EJU45 FL200")
+end
