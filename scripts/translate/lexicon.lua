@@ -1074,6 +1074,10 @@ return {
     -- the pilot
     { what = "reports of fuel and persons on board", words = "fuel souls persons", window = 2,
       near = { "remaining", "endurance", "board" } },
+    -- "report level FL150", "report level at 5000", "report heading 090": the pilot's report on reaching that
+    -- value, no clearance to it (`through`: the state word stays in the phrase, its value with it)
+    { what = "position reports", words = "report reporting", near = { "level", "altitude", "heading", "speed", "mach" },
+      window = 1, and_near = { { "#number", "fl", "flight", "at", "on" }, 2 }, through = "level altitude heading speed mach" },
     -- "report passing FL100", "report established", "report steady": a report the pilot makes, no instruction
     { what = "position reports", words = "report reporting",
       near = { "passing", "reaching", "leaving", "established", "abeam", "overhead", "over", "crossing",

@@ -10417,3 +10417,19 @@ do
   asked(ex("Easy 45 descend FL200"), "easyJet Europe (Alpine) called Easy")
   check_eq(ex("Alpine 45 descend FL200"), "ALT EJU45 FL200")
 end
+
+-- Cycle 48 (f113): "report level FL150", "report level at FL210", "report heading 090": the report of a value the
+-- aircraft will reach, no clearance to it (nothing sent, named as not simulated); "report your level" still
+-- asks for the state, and a clearance before it is flown
+do
+  local s, ex = scene({ "CRE UAL32 B789 35.9 140.6 060 FL150 290", "CRE TZP102 B788 35.6 140.8 090 FL190 300" })
+  local function none(text, why)
+    local r = graph.translate(text, { sim = s, mode = "offline" })
+    check(r.ask == nil and #(r.commands or {}) == 0 and (r.note or ""):find("position reports", 1, true) ~= nil, why)
+  end
+  none("United 32 report level flight level one five zero", "a report of the level flown")
+  none("United 32 report level at FL210", "a report of a level to come")
+  none("United 32 report heading 090", "a report of a heading")
+  check_eq(ex("United 32 report your level"), "POS UAL32")
+  check_eq(ex("United 32 climb FL210, report level FL210"), "ALT UAL32 FL210")
+end
