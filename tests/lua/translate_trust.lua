@@ -10433,3 +10433,16 @@ do
   check_eq(ex("United 32 report your level"), "POS UAL32")
   check_eq(ex("United 32 climb FL210, report level FL210"), "ALT UAL32 FL210")
 end
+
+-- Cycle 48 (f113): Japanese and Korean carriers by their ICAO telephony (Solaseed "New Sky", Air Busan, T'way
+-- "Teeway", Jin Air, Japan Transocean "Jai Ocean", ZIPAIR "Zippy"); a number none of them flies is asked
+do
+  local _, ex = scene({ "CRE SNJ52 B738 33.2 130.8 320 FL130 260", "CRE ABL142 A321 34.7 129.35 135 FL180 280",
+    "CRE TWB701 B738 34.0 126.1 160 FL160 280", "CRE JNA305 B738 32.7 126.4 010 FL200 290" })
+  check_eq(ex("New Sky 52 turn left heading two niner zero"), "HDG SNJ52 290 LEFT")
+  check_eq(ex("delete Teeway 701"), "DEL TWB701")
+  check_eq(ex("Jin Air 305, climb FL250. Air Busan 142, descend FL160."), "ALT JNA305 FL250 ; ALT ABL142 FL160")
+  check_eq(ex("create Jin Air 603, B738, 33.5 126.5, heading 070, 5000 ft, 210 knots"),
+    "CRE JNA603 B738 33.5 126.5 70 5000 210")
+  asked(ex("New Sky 53 climb FL150"), "a New Sky number no aircraft has")
+end
