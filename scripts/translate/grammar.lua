@@ -3761,17 +3761,21 @@ function G:trailing_fix(s)
   return { b = c, e = r.e, name = r.name }
 end
 
--- "maintain 250 knots until SULUR then climb FL200", "speed 220 till VAKNX then reduce 180": the
--- instruction before ends at a waypoint, "until" or "till" and its name straight before the "then" that opens
+-- "maintain 250 knots until SULUR then climb FL200", "speed 220 till VAKNX, then reduce 180": the
+-- instruction before ends at a waypoint, "until" or "till" and its name straight before the "then" (a comma or
+-- "and" between them at most) that opens
 -- segment k, and segment k's starts there (BlueSky's AT acid wp DO, G:do_at): { u = the "until" token, e =
 -- the token after the waypoint's name, name }, else nil.
 function G:until_then(segs, k)
   local s, p = segs[k], segs[k - 1]
-  if not p or s["then"] ~= "then" then return nil end
+  if not p or not s["then"] then return nil end
   for u = p.trig + 1, s.trig - 1 do
     if self:word(u, "until till") then
       local r = self:refs_in(u + 1, s.trig, "waypoint")[1]
-      if r and r.b == self:skip_fillers(u + 1) and self:word(self:skip_fillers(r.e), "then") then
+      local n = r and self:skip_fillers(r.e)
+      if n and self.t[n] and self.t[n].text == "," then n = self:skip_fillers(n + 1) end
+      if n and self:word(n, "and") then n = n + 1 end
+      if r and r.b == self:skip_fillers(u + 1) and self:word(n, "then") then
         return { u = u, e = r.e, name = r.name }
       end
     end

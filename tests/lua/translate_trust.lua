@@ -10446,3 +10446,13 @@ do
     "CRE JNA603 B738 33.5 126.5 70 5000 210")
   asked(ex("New Sky 53 climb FL150"), "a New Sky number no aircraft has")
 end
+
+-- Cycle 48 (f113): "until WPT, then ..." with a comma or "and" before "then" ends the first instruction at the
+-- waypoint and starts the next there (AT acid WPT DO); a waypoint off the route is still asked
+do
+  local _, ex = scene({ "CRE CPA596 A359 34.65 136.3 265 FL200 290", "DEFWPT ALFA 34.6 135.9", "DEFWPT BRAVO 34.9 135.5",
+    "ADDWPT CPA596 ALFA" })
+  check_eq(ex("CPA596 maintain FL200 until ALFA, then descend FL150"), "ALT CPA596 FL200 ; AT CPA596 ALFA DO ALT CPA596 FL150")
+  check_eq(ex("CPA596 speed 250 until ALFA and then reduce 220"), "SPD CPA596 250 ; AT CPA596 ALFA DO SPD CPA596 220")
+  asked(ex("CPA596 speed 250 until BRAVO, then reduce 220"), "a waypoint off the route")
+end
