@@ -2664,10 +2664,12 @@ function G:segments(b, e)
       else
         local alt_pair = ((last.intent == "maintain" and tr.intent == "alt") or (last.intent == "alt" and tr.intent == "maintain"))
           and #self:quantities(last.trig, tr.pos) == 0 and not self:word_in(last.trig, tr.pos, "@correction")
-        -- ("maintain heading", "maintain your present heading": the heading kept, one instruction)
-        local kept_heading = last.intent == "maintain" and tr.intent == "hdg" and self:word(tr.pos, "heading hdg")
-        for k = last.trig + 1, kept_heading and tr.pos - 1 or 0 do
-          kept_heading = kept_heading and self:word(k, "your the its @present")
+        -- ("maintain heading", "maintain your present heading": the heading kept, one instruction; "when level
+        -- maintain speed 270": "maintain" straight before "speed" is the speed's verb, its condition with it)
+        local kept_noun = last.intent == "maintain" and ((tr.intent == "hdg" and self:word(tr.pos, "heading hdg"))
+          or (tr.intent == "spd" and self:word(tr.pos, "speed spd") and tr.pos == last.trig + 1))
+        for k = last.trig + 1, kept_noun and tr.pos - 1 or 0 do
+          kept_noun = kept_noun and self:word(k, "your the its @present")
         end
         -- ("descend FL300, 25 miles before KOK descend FL260": a distance from a place opening the second
         -- instruction's clause, after the first's value, is that instruction's condition, no repeat)
@@ -2706,9 +2708,9 @@ function G:segments(b, e)
               and self:word(p - 1, "after passing over leaving reaching"))
           end
         end
-        if (last.intent == tr.intent or alt_pair or kept_heading) and not this.single
+        if (last.intent == tr.intent or alt_pair or kept_noun) and not this.single
             and not self:addressee_between(last, tr.pos) and not dist_between then
-          if tr.intent == "alt" or kept_heading then last.intent = tr.intent end
+          if tr.intent == "alt" or kept_noun then last.intent = tr.intent end
           merged = true
         end
       end

@@ -10456,3 +10456,14 @@ do
   check_eq(ex("CPA596 speed 250 until ALFA and then reduce 220"), "SPD CPA596 250 ; AT CPA596 ALFA DO SPD CPA596 220")
   asked(ex("CPA596 speed 250 until BRAVO, then reduce 220"), "a waypoint off the route")
 end
+
+-- Cycle 48 (f113): "when reaching maintain speed 270" after a descent: "maintain" straight before "speed" is that
+-- speed's verb, so it waits for the level as "when reaching reduce speed 270" does; said with no level before it
+-- the condition is still asked
+do
+  local _, ex = scene({ "CRE JAL917 B763 27.6 127.7 180 FL260 300" })
+  check_eq(ex("JAL917 descend FL240, when reaching maintain speed 270"),
+    "ALT JAL917 FL240 ; ATALT JAL917 FL240 SPD JAL917 270")
+  check_eq(ex("JAL917 maintain present speed"), "SPD JAL917 300")
+  asked(ex("JAL917 turn left heading 090, when reaching maintain speed 270"), "no level to reach")
+end
