@@ -696,9 +696,9 @@ return {
   all = { "all", "both", "every", "everything" },
   -- direction of a change: +1 words and -1 words
   up = { "climb", "clb", "up", "raise", "increase", "faster", "above", "higher", "accelerate", "climbing",
-         "ascend", "rise" },
+         "ascend", "rise", "upward", "upwards" },
   down = { "descend", "desc", "down", "drop", "lower", "reduce", "decrease", "slow", "slower", "below", "descent", "sink",
-           "descending", "decelerate", "minus", "subtract" },
+           "descending", "decelerate", "minus", "subtract", "downward", "downwards" },
   -- words that name an aircraft as context, not as the one instructed ("avoid AC02")
   aircraft_context = { "between", "avoid", "avoiding", "conflict", "conflicts", "behind", "follow", "following",
                        "than", "traffic", "meet", "meets", "catch",

@@ -10467,3 +10467,12 @@ do
   check_eq(ex("JAL917 maintain present speed"), "SPD JAL917 300")
   asked(ex("JAL917 turn left heading 090, when reaching maintain speed 270"), "no level to reach")
 end
+
+-- Cycle 48 (f113): "downward" and "upward" give a vertical speed its sign as "down" and "up" do; against the
+-- level cleared it is asked
+do
+  local _, ex = scene({ "CRE JJP503 A320 36.1 140.2 160 FL130 270" })
+  check_eq(ex("JJP503 vertical speed one thousand five hundred downward"), "VS JJP503 -1500")
+  check_eq(ex("JJP503 rate 2000 upwards"), "VS JJP503 2000")
+  asked(ex("JJP503 climb FL200, vertical speed 1500 downward"), "a descent rate for a climb")
+end
