@@ -36,6 +36,9 @@ return {
       "fl",
       -- the wind a request sets ("wind from 270 at 40 kt"): never part of a spoken callsign
       "wind", "winds",
+      -- the verb of a setting ("set wind two five zero at three zero", "set heading two five zero"): with the
+      -- instruction word after it, never a garbled callsign's words
+      "set",
       -- a game programmer's words for commands ("despawn", "rotate 90 clockwise", "timescale 4"; not "tp",
       -- the letters of callsigns: "Easy 81TP")
       "despawn", "warp", "destroy", "rotate", "yaw", "clockwise", "counterclockwise",

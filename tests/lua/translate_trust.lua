@@ -10476,3 +10476,12 @@ do
   check_eq(ex("JJP503 rate 2000 upwards"), "VS JJP503 2000")
   asked(ex("JJP503 climb FL200, vertical speed 1500 downward"), "a descent rate for a climb")
 end
+
+-- Cycle 48 (f113): "set" before a setting's word and spoken digits ("set wind two five zero ...") is the verb,
+-- never a garbled callsign's words; with two aircraft flying, "set heading two five zero" asks which one
+do
+  local _, ex = scene({ "CRE JTA2 B738 25.6 127.95 330 FL150 260", "CRE JAL917 B763 27.6 127.7 180 FL260 300",
+    "DEFWPT ALFA 26.2 127.6" })
+  check_eq(ex("set wind two five zero degrees three zero knots over ALFA"), "WIND ALFA 250 30")
+  check_eq(ex("set heading two five zero"), "ASK Which aircraft should turn? Please give its callsign.")
+end
