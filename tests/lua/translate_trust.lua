@@ -10485,3 +10485,13 @@ do
   check_eq(ex("set wind two five zero degrees three zero knots over ALFA"), "WIND ALFA 250 30")
   check_eq(ex("set heading two five zero"), "ASK Which aircraft should turn? Please give its callsign.")
 end
+
+-- Cycle 48 (f113): two creations, the second's callsign said with an airline whose telephony opens with "All" ("All
+-- Nippon 201"): that word is the callsign's, no value shared by "all" the new aircraft
+do
+  local _, ex = scene({})
+  check_eq(ex("create AAR102 A388 at 35.7 140.4 heading 220 FL100 250 knots, and All Nippon 201, B788, at 34.4 135.2, "
+    .. "heading 050, FL100, 250 knots"), "CRE AAR102 A388 35.7 140.4 220 FL100 250 ; CRE ANA201 B788 34.4 135.2 50 FL100 250")
+  check_eq(ex("create AAA1 A320 at 53 7 heading 090 and All Nippon 201 A320 at 52.7 7.5 heading 000, both FL300 at 280 kts"),
+    "CRE AAA1 A320 53 7 90 FL300 280 ; CRE ANA201 A320 52.7 7.5 0 FL300 280")
+end
