@@ -2679,10 +2679,12 @@ function G:segments(b, e)
       else
         local alt_pair = ((last.intent == "maintain" and tr.intent == "alt") or (last.intent == "alt" and tr.intent == "maintain"))
           and #self:quantities(last.trig, tr.pos) == 0 and not self:word_in(last.trig, tr.pos, "@correction")
-        -- ("maintain heading", "maintain your present heading": the heading kept, one instruction)
-        local kept_heading = last.intent == "maintain" and tr.intent == "hdg" and self:word(tr.pos, "heading hdg")
-        for k = last.trig + 1, kept_heading and tr.pos - 1 or 0 do
-          kept_heading = kept_heading and self:word(k, "your the its @present")
+        -- ("maintain heading", "maintain your present heading": the heading kept, one instruction; "when level
+        -- maintain speed 270": "maintain" straight before "speed" is the speed's verb, its condition with it)
+        local kept_noun = last.intent == "maintain" and ((tr.intent == "hdg" and self:word(tr.pos, "heading hdg"))
+          or (tr.intent == "spd" and self:word(tr.pos, "speed spd") and tr.pos == last.trig + 1))
+        for k = last.trig + 1, kept_noun and tr.pos - 1 or 0 do
+          kept_noun = kept_noun and self:word(k, "your the its @present")
         end
         -- ("descend FL300, 25 miles before KOK descend FL260": a distance from a place opening the second
         -- instruction's clause, after the first's value, is that instruction's condition, no repeat)
@@ -2721,9 +2723,9 @@ function G:segments(b, e)
               and self:word(p - 1, "after passing over leaving reaching"))
           end
         end
-        if (last.intent == tr.intent or alt_pair or kept_heading) and not this.single
+        if (last.intent == tr.intent or alt_pair or kept_noun) and not this.single
             and not self:addressee_between(last, tr.pos) and not dist_between then
-          if tr.intent == "alt" or kept_heading then last.intent = tr.intent end
+          if tr.intent == "alt" or kept_noun then last.intent = tr.intent end
           merged = true
         end
       end
@@ -3844,17 +3846,21 @@ function G:trailing_fix(s)
   return { b = c, e = r.e, name = r.name }
 end
 
--- "maintain 250 knots until SULUR then climb FL200", "speed 220 till VAKNX then reduce 180": the
--- instruction before ends at a waypoint, "until" or "till" and its name straight before the "then" that opens
+-- "maintain 250 knots until SULUR then climb FL200", "speed 220 till VAKNX, then reduce 180": the
+-- instruction before ends at a waypoint, "until" or "till" and its name straight before the "then" (a comma or
+-- "and" between them at most) that opens
 -- segment k, and segment k's starts there (BlueSky's AT acid wp DO, G:do_at): { u = the "until" token, e =
 -- the token after the waypoint's name, name }, else nil.
 function G:until_then(segs, k)
   local s, p = segs[k], segs[k - 1]
-  if not p or s["then"] ~= "then" then return nil end
+  if not p or not s["then"] then return nil end
   for u = p.trig + 1, s.trig - 1 do
     if self:word(u, "until till") then
       local r = self:refs_in(u + 1, s.trig, "waypoint")[1]
-      if r and r.b == self:skip_fillers(u + 1) and self:word(self:skip_fillers(r.e), "then") then
+      local n = r and self:skip_fillers(r.e)
+      if n and self.t[n] and self.t[n].text == "," then n = self:skip_fillers(n + 1) end
+      if n and self:word(n, "and") then n = n + 1 end
+      if r and r.b == self:skip_fillers(u + 1) and self:word(n, "then") then
         return { u = u, e = r.e, name = r.name }
       end
     end
@@ -6306,8 +6312,9 @@ end
 -- ---- what squawk does not simulate ----
 
 -- True when one of `near` (words or typed numbers as written; "#number"
--- any number, "#waypoint" a waypoint name, "#frequency" a typed radio frequency of the VHF air
--- band, 118.000 to 136.975 MHz with its decimals: "129.2") is within 4 tokens after i.
+-- any number, "#waypoint" a waypoint name (a navaid's kind alone is none: "until 10 DME", "the VOR"),
+-- "#frequency" a typed radio frequency of the VHF air band, 118.000 to 136.975 MHz with its decimals:
+-- "129.2") is within 4 tokens after i.
 local function frequency(t)
   local mhz = t.kind == "number" and t.text:match("^1[123]%d%.%d+$") and tonumber(t.text)
   return mhz and mhz >= 118 and mhz < 137
@@ -6318,7 +6325,7 @@ function G:near_any(i, near, window)
     for _, w in ipairs(near) do
       if (w == "#number" and t.kind == "number") or (w == "#number" and t.number_word)
           or (w == "#frequency" and frequency(t))
-          or (w == "#waypoint" and #self:refs_in(k, k + 1, "waypoint") > 0)
+          or (w == "#waypoint" and #self:refs_in(k, k + 1, "waypoint") > 0 and not self:word(k, "@navaid_kinds"))
           or ((t.kind == "word" or t.kind == "number") and t.text == w) then
         return true
       end

@@ -470,10 +470,22 @@ local function airline_names()
   end
   for _, b in ipairs(names.brands or {}) do
     BRANDS[b[1]] = { table.unpack(b, 2) }
-    BRANDS[b[1]].shared = b.shared
+    BRANDS[b[1]].shared, BRANDS[b[1]].name = b.shared, b[1]
     if AIRLINE_NAMES[b[1]] then BRAND_OF[AIRLINE_NAMES[b[1]]] = BRANDS[b[1]] end
   end
   return AIRLINE_NAMES, BRANDS, BRAND_OF
+end
+
+-- True when a callsign said with brand `brand`'s name (names.lua's brands) may be of its airline `icao`: the
+-- brand is shared (each licensee is called by it: "Virgin 817" is VOZ817), squawk knows no telephony of that
+-- airline (names.airlines), or one of its telephony names is the brand's name or begins with it ("jetstar
+-- asia" bears "jetstar"). Jetstar Japan, called "orange liner", is never "Jetstar 503" (issue 44 point 3).
+local function bears(icao, brand)
+  if brand.shared or not NAMES_OF[icao] then return true end
+  for _, n in ipairs(NAMES_OF[icao]) do
+    if n == brand.name or n:sub(1, #brand.name + 1) == brand.name .. " " then return true end
+  end
+  return false
 end
 
 -- G:airline_at's reading of the words at i, each time anew.
@@ -1610,7 +1622,7 @@ function m:airline_and_digits_match(heard, name)
   local brand = select(3, airline_names())[a]
   local function of(a2)
     if a2 == a then return true end
-    for _, c in ipairs(brand or {}) do if c == a2 then return true end end
+    for _, c in ipairs(brand or {}) do if c == a2 and bears(a2, brand) then return true end end
     return false
   end
   local n = 0

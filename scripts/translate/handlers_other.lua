@@ -60,17 +60,17 @@ return function(H, f, compass)
 
   function m:create(s)
     -- several aircraft in one request: each new id followed closely by a type starts one
-    local starts = {}
+    local starts, last = {}, nil
     for _, r in ipairs(self:refs_in(s.b, s.e, "aircraft")) do
       if not r.exists and (#self:refs_in(r.e, math.min(s.e, r.e + 4), "type") > 0 or #starts == 0) then
-        starts[#starts + 1] = r.b
+        starts[#starts + 1], last = r.b, r.e
       end
     end
     if #starts <= 1 then return self:create_one(s, s.b) end
     -- values said after "both", "all" or "each" at the end are every new aircraft's ("AAA1 A320 at 53 7
     -- heading 090 and BBB2 A320 at 52.7 7.5 heading 000, both FL300 at 280 kts"); an aircraft or a type
-    -- named after it leaves unclear whose values follow: asked
-    local last = starts[#starts]
+    -- named after it leaves unclear whose values follow: asked (after the last new callsign: "All Nippon 201"
+    -- is one)
     local shared = self:find_word(last, s.e, "both all each")
     if shared < s.e and (self:has_ref(shared, s.e, "aircraft") or self:has_ref(shared, s.e, "type")) then
       return self:need(string.format("Which of the new aircraft do the values after '%s' belong to?", self.t[shared].raw))

@@ -36,6 +36,9 @@ return {
       "fl",
       -- the wind a request sets ("wind from 270 at 40 kt"): never part of a spoken callsign
       "wind", "winds",
+      -- the verb of a setting ("set wind two five zero at three zero", "set heading two five zero"): with the
+      -- instruction word after it, never a garbled callsign's words
+      "set",
       -- a game programmer's words for commands ("despawn", "rotate 90 clockwise", "timescale 4"; not "tp",
       -- the letters of callsigns: "Easy 81TP")
       "despawn", "warp", "destroy", "rotate", "yaw", "clockwise", "counterclockwise",
@@ -696,9 +699,9 @@ return {
   all = { "all", "both", "every", "everything" },
   -- direction of a change: +1 words and -1 words
   up = { "climb", "clb", "up", "raise", "increase", "faster", "above", "higher", "accelerate", "climbing",
-         "ascend", "rise" },
+         "ascend", "rise", "upward", "upwards" },
   down = { "descend", "desc", "down", "drop", "lower", "reduce", "decrease", "slow", "slower", "below", "descent", "sink",
-           "descending", "decelerate", "minus", "subtract" },
+           "descending", "decelerate", "minus", "subtract", "downward", "downwards" },
   -- words that name an aircraft as context, not as the one instructed ("avoid AC02")
   aircraft_context = { "between", "avoid", "avoiding", "conflict", "conflicts", "behind", "follow", "following",
                        "than", "traffic", "meet", "meets", "catch",
@@ -1074,6 +1077,10 @@ return {
     -- the pilot
     { what = "reports of fuel and persons on board", words = "fuel souls persons", window = 2,
       near = { "remaining", "endurance", "board" } },
+    -- "report level FL150", "report level at 5000", "report heading 090": the pilot's report on reaching that
+    -- value, no clearance to it (`through`: the state word stays in the phrase, its value with it)
+    { what = "position reports", words = "report reporting", near = { "level", "altitude", "heading", "speed", "mach" },
+      window = 1, and_near = { { "#number", "fl", "flight", "at", "on" }, 2 }, through = "level altitude heading speed mach" },
     -- "report passing FL100", "report established", "report steady": a report the pilot makes, no instruction
     { what = "position reports", words = "report reporting",
       near = { "passing", "reaching", "leaving", "established", "abeam", "overhead", "over", "crossing",

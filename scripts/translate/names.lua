@@ -365,6 +365,18 @@ local names = {
     { "skymark", "SKY" },
     { "starflyer", "SFJ" },
     { "zipair", "TZP" },
+    { "zippy", "TZP" },  -- (ZIPAIR Tokyo's ICAO telephony)
+    -- Japanese and Korean carriers by their ICAO telephony
+    { "jai ocean", "JTA" },  -- (Japan Transocean Air)
+    { "new sky", "SNJ" },  -- (Solaseed Air)
+    { "fuji dream", "FDA" },
+    { "ibex", "IBX" },
+    { "oriental bridge", "ORC" },  -- (Oriental Air Bridge)
+    { "jin air", "JNA" },
+    { "air busan", "ABL" },
+    { "teeway", "TWB" },  -- (T'way Air)
+    { "air seoul", "ASV" },
+    { "eastar", "ESR" },  -- (Eastar Jet)
     { "china airlines", "CAL" },
     { "starlux", "SJX" },
     { "shenzhen", "CSZ" },

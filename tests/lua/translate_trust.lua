@@ -10495,4 +10495,109 @@ do
   check_eq(ex("hop3 vnav off dct artov"), "VNAV HOP3 OFF ; DIRECT HOP3 ARTOV")
   check_eq(ex("hop3 lnav off and tvf8 dct artov"), "LNAV HOP3 OFF ; DIRECT TVF8 ARTOV")
   check_eq(ex("hop3 lnav off heading 200"), "LNAV HOP3 OFF ; HDG HOP3 200")
+-- Cycle 48 (f113): a limit "until" a distance in DME typed in capitals ("maintain 4000 until 10 DME") names no
+-- place: a navaid's kind alone is no waypoint, so the limit is one at a distance, flown and its end named only at
+-- the final approach's 3 to 6 miles, else asked; a waypoint of the route after "until" stays a place
+do
+  local _, ex = scene({ "CRE KAL7 B738 37.4 126.4 180 FL140 270", "DEFWPT ALFA 37.1 126.5", "ADDWPT KAL7 ALFA" })
+  check_eq(ex("KAL7 maintain 4000 until 10 DME"), "ASK I have ALT KAL7 4000. What does '10 DME' mean?")
+  asked(ex("KAL7 maintain 250 knots till 12 DME"), "a speed held to 12 DME")
+  asked(ex("KAL7 reduce 180 knots to 10 DME"), "a speed held to 10 DME, said with 'to'")
+  asked(ex("KAL7 maintain 4000 until the VOR"), "a navaid's kind alone is no place")
+  check_eq(ex("KAL7 speed 160 until 4 DME"), "SPD KAL7 160")
+  check_eq(ex("KAL7 maintain 5000 until ALFA"), "ALT KAL7 5000")
+end
+
+-- Cycle 48 (f113): a callsign said with a brand's name (names.lua's brands) is an aircraft of a brand airline
+-- only when that airline bears the name: its own telephony is the name or begins with it ("Jetstar Asia"), or
+-- squawk knows none for it; Jetstar Japan, "Orange Liner", is never "Jetstar 503", nor the Shuttle "Speedbird 12"
+do
+  local _, ex = scene({ "CRE JJP503 A320 36.1 140.2 160 FL130 270", "CRE JSA142 A320 1.3 103.9 090 FL150 270",
+    "CRE TVF33KP B738 48.7 2.4 180 FL200 280", "CRE SHT12 A320 51.5 -0.4 300 FL100 250",
+    "CRE EJU45 A320 47.4 8.5 090 FL250 280" })
+  check_eq(ex("Jetstar 503 descend 7000"), "ASK Did you mean JJP503? I heard JST503.")
+  check_eq(ex("Orange Liner 503 descend 7000"), "ALT JJP503 7000")
+  check_eq(ex("Jetstar 142 descend FL120"), "ALT JSA142 FL120")
+  check_eq(ex("Transavia 33KP descend FL150"), "ALT TVF33KP FL150")
+  asked(ex("Speedbird 12 climb FL120"), "the Shuttle's aircraft called by the Speedbird telephony")
+  asked(ex("Easy 45 descend FL200"), "easyJet Europe (Alpine) called Easy")
+  check_eq(ex("Alpine 45 descend FL200"), "ALT EJU45 FL200")
+end
+
+-- Cycle 48 (f113): "report level FL150", "report level at FL210", "report heading 090": the report of a value the
+-- aircraft will reach, no clearance to it (nothing sent, named as not simulated); "report your level" still
+-- asks for the state, and a clearance before it is flown
+do
+  local s, ex = scene({ "CRE UAL32 B789 35.9 140.6 060 FL150 290", "CRE TZP102 B788 35.6 140.8 090 FL190 300" })
+  local function none(text, why)
+    local r = graph.translate(text, { sim = s, mode = "offline" })
+    check(r.ask == nil and #(r.commands or {}) == 0 and (r.note or ""):find("position reports", 1, true) ~= nil, why)
+  end
+  none("United 32 report level flight level one five zero", "a report of the level flown")
+  none("United 32 report level at FL210", "a report of a level to come")
+  none("United 32 report heading 090", "a report of a heading")
+  check_eq(ex("United 32 report your level"), "POS UAL32")
+  check_eq(ex("United 32 climb FL210, report level FL210"), "ALT UAL32 FL210")
+end
+
+-- Cycle 48 (f113): Japanese and Korean carriers by their ICAO telephony (Solaseed "New Sky", Air Busan, T'way
+-- "Teeway", Jin Air, Japan Transocean "Jai Ocean", ZIPAIR "Zippy"); a number none of them flies is asked
+do
+  local _, ex = scene({ "CRE SNJ52 B738 33.2 130.8 320 FL130 260", "CRE ABL142 A321 34.7 129.35 135 FL180 280",
+    "CRE TWB701 B738 34.0 126.1 160 FL160 280", "CRE JNA305 B738 32.7 126.4 010 FL200 290" })
+  check_eq(ex("New Sky 52 turn left heading two niner zero"), "HDG SNJ52 290 LEFT")
+  check_eq(ex("delete Teeway 701"), "DEL TWB701")
+  check_eq(ex("Jin Air 305, climb FL250. Air Busan 142, descend FL160."), "ALT JNA305 FL250 ; ALT ABL142 FL160")
+  check_eq(ex("create Jin Air 603, B738, 33.5 126.5, heading 070, 5000 ft, 210 knots"),
+    "CRE JNA603 B738 33.5 126.5 70 5000 210")
+  asked(ex("New Sky 53 climb FL150"), "a New Sky number no aircraft has")
+end
+
+-- Cycle 48 (f113): "until WPT, then ..." with a comma or "and" before "then" ends the first instruction at the
+-- waypoint and starts the next there (AT acid WPT DO); a waypoint off the route is still asked
+do
+  local _, ex = scene({ "CRE CPA596 A359 34.65 136.3 265 FL200 290", "DEFWPT ALFA 34.6 135.9", "DEFWPT BRAVO 34.9 135.5",
+    "ADDWPT CPA596 ALFA" })
+  check_eq(ex("CPA596 maintain FL200 until ALFA, then descend FL150"), "ALT CPA596 FL200 ; AT CPA596 ALFA DO ALT CPA596 FL150")
+  check_eq(ex("CPA596 speed 250 until ALFA and then reduce 220"), "SPD CPA596 250 ; AT CPA596 ALFA DO SPD CPA596 220")
+  asked(ex("CPA596 speed 250 until BRAVO, then reduce 220"), "a waypoint off the route")
+end
+
+-- Cycle 48 (f113): "when reaching maintain speed 270" after a descent: "maintain" straight before "speed" is that
+-- speed's verb, so it waits for the level as "when reaching reduce speed 270" does; said with no level before it
+-- the condition is still asked
+do
+  local _, ex = scene({ "CRE JAL917 B763 27.6 127.7 180 FL260 300" })
+  check_eq(ex("JAL917 descend FL240, when reaching maintain speed 270"),
+    "ALT JAL917 FL240 ; ATALT JAL917 FL240 SPD JAL917 270")
+  check_eq(ex("JAL917 maintain present speed"), "SPD JAL917 300")
+  asked(ex("JAL917 turn left heading 090, when reaching maintain speed 270"), "no level to reach")
+end
+
+-- Cycle 48 (f113): "downward" and "upward" give a vertical speed its sign as "down" and "up" do; against the
+-- level cleared it is asked
+do
+  local _, ex = scene({ "CRE JJP503 A320 36.1 140.2 160 FL130 270" })
+  check_eq(ex("JJP503 vertical speed one thousand five hundred downward"), "VS JJP503 -1500")
+  check_eq(ex("JJP503 rate 2000 upwards"), "VS JJP503 2000")
+  asked(ex("JJP503 climb FL200, vertical speed 1500 downward"), "a descent rate for a climb")
+end
+
+-- Cycle 48 (f113): "set" before a setting's word and spoken digits ("set wind two five zero ...") is the verb,
+-- never a garbled callsign's words; with two aircraft flying, "set heading two five zero" asks which one
+do
+  local _, ex = scene({ "CRE JTA2 B738 25.6 127.95 330 FL150 260", "CRE JAL917 B763 27.6 127.7 180 FL260 300",
+    "DEFWPT ALFA 26.2 127.6" })
+  check_eq(ex("set wind two five zero degrees three zero knots over ALFA"), "WIND ALFA 250 30")
+  check_eq(ex("set heading two five zero"), "ASK Which aircraft should turn? Please give its callsign.")
+end
+
+-- Cycle 48 (f113): two creations, the second's callsign said with an airline whose telephony opens with "All" ("All
+-- Nippon 201"): that word is the callsign's, no value shared by "all" the new aircraft
+do
+  local _, ex = scene({})
+  check_eq(ex("create AAR102 A388 at 35.7 140.4 heading 220 FL100 250 knots, and All Nippon 201, B788, at 34.4 135.2, "
+    .. "heading 050, FL100, 250 knots"), "CRE AAR102 A388 35.7 140.4 220 FL100 250 ; CRE ANA201 B788 34.4 135.2 50 FL100 250")
+  check_eq(ex("create AAA1 A320 at 53 7 heading 090 and All Nippon 201 A320 at 52.7 7.5 heading 000, both FL300 at 280 kts"),
+    "CRE AAA1 A320 53 7 90 FL300 280 ; CRE ANA201 A320 52.7 7.5 0 FL300 280")
 end
