@@ -10399,7 +10399,7 @@ do
   check_eq(ex("log71 report your present level"), "POS LOG71")
   check_eq(ex("log71 descend FL70, report level"), "ALT LOG71 FL70")
   check_eq(ex("sht4 report reaching"), "")
-  asked(ex("sht4 report level FL150"), "a level after 'report level' is no report")
+  check_eq(ex("sht4 report level FL150"), "")  -- the pilot's report of a level (not simulated), no ALT
   asked(ex("report level"), "no aircraft named")
 end
 
@@ -10495,6 +10495,8 @@ do
   check_eq(ex("hop3 vnav off dct artov"), "VNAV HOP3 OFF ; DIRECT HOP3 ARTOV")
   check_eq(ex("hop3 lnav off and tvf8 dct artov"), "LNAV HOP3 OFF ; DIRECT TVF8 ARTOV")
   check_eq(ex("hop3 lnav off heading 200"), "LNAV HOP3 OFF ; HDG HOP3 200")
+end
+
 -- Cycle 48 (f113): a limit "until" a distance in DME typed in capitals ("maintain 4000 until 10 DME") names no
 -- place: a navaid's kind alone is no waypoint, so the limit is one at a distance, flown and its end named only at
 -- the final approach's 3 to 6 miles, else asked; a waypoint of the route after "until" stays a place
