@@ -2759,12 +2759,12 @@ function G:segments(b, e)
         end
         -- (the distance of a condition said before the instruction word, with "at" or "within" before it; a
         -- level after "at" opening a clause after the last instruction's value, before a speed or heading:
-        -- "climb FL360, at FL350 it shall reduce to Mach .77"; never a creation's "..., at 37,000 feet")
+        -- "climb FL360, at FL350 it shall reduce to Mach .77", "climb FL160 then at FL160 speed 280", "... and
+        -- at FL140 ..."; never a creation's "..., at 37,000 feet")
         for _, q in ipairs(self:quantities(last.trig + 1, start)) do
           local k = self:skip_fillers(q.e)
           if q.kind == "alt" and (tr.intent == "spd" or tr.intent == "hdg") and last.intent ~= "create"
-              and self:word(q.b - 1, "at") and self.t[q.b - 2] and self.t[q.b - 2].kind == "punct"
-              and self.t[q.b - 2].text == "," and #self:quantities(last.trig, q.b) > 0 then
+              and self:at_clause(q) and #self:quantities(last.trig, q.b) > 0 then
             start = math.min(start, q.b - 1)
             break
           end
@@ -4651,6 +4651,15 @@ function G:uncarried()
     local a = self:at_number(q)
     return a and not self:word(q.e, "o'clock oclock") and not self:in_reason(q.b) and a or nil
   end
+  -- (a level after "at" opening a clause, "climb FL160, at FL160 vertical speed 500", that a level taken before it
+  -- carries by its value is a condition no command carries: asked)
+  local function said_again(q)
+    if not (q.kind == "alt" and self:at_clause(q)) then return false end
+    for _, p in ipairs(self:quantities(1, q.b)) do
+      if p.kind == "alt" and self.taken[p.b] and p.value == q.value then return true end
+    end
+    return false
+  end
   for _, q in ipairs(self:quantities(1, #self.t + 1)) do
     -- (a plain number with a decimal point is a coordinate; one of two digits or more said after the first
     -- instruction word is a value said for an instruction, "descend FL130, reducing 250", never dropped in
@@ -4660,8 +4669,9 @@ function G:uncarried()
     if (MUST_CARRY[q.kind] or (q.kind == "plain" and (q.number.decimal or at
           or (q.value >= 10 and (q.b > first or said_for_aircraft(q))))))
         and not self.taken[q.b]
-        and not ((q.by or relative) and not position(q)) and q.b > corrected and not value_carried(q, nums) then
-      self.leftover = self:raw(at or q.b, q.e)
+        and not ((q.by or relative) and not position(q)) and q.b > corrected
+        and not (value_carried(q, nums) and not said_again(q)) then
+      self.leftover = self:raw(at or (self:at_clause(q) and q.b - 1) or q.b, q.e)
       return
     end
   end

@@ -2037,6 +2037,15 @@ function m:sentence_before(q, trig)
   return true
 end
 
+-- True when quantity q is said after "at" that opens a clause after a value said before it: a comma, "and" or
+-- "then" before "at" ("climb FL160, at FL160 ...", "... then at FL160 ...", "... and at FL140 ...").
+function m:at_clause(q)
+  local k = q.b - 2
+  return self:word(q.b - 1, "at") and self.t[k] ~= nil
+    and ((self.t[k].kind == "punct" and self.t[k].text == ",") or self:word(k, "and @then_words"))
+    and #self:quantities(1, k) > 0
+end
+
 -- "AC02: heading 180, FL200, 250 kts", "dct NORKU FL200": values with
 -- units of another kind around a value instruction or a direct-to are
 -- instructions too.
@@ -2109,6 +2118,13 @@ function m:leftovers(s)
         local held = qs[k + 1]
         held = at and held and held.kind == "alt" and held.b == at and not self:word(q.b - 1, "not")
           and not self.taken[held.b] and held
+        -- ("climb FL160, then at FL160 280 knots": a level after "at" opening a clause straight before the speed,
+        -- the level given already, is the one the speed waits for)
+        local prior = qs[k - 1]
+        if not held and alt_done and prior and prior.kind == "alt" and prior.e == q.b and not self.taken[prior.b]
+            and self:at_clause(prior) then
+          held = prior
+        end
         -- ("climb FL370 and once level, Mach .80": the speed waits for the level this request gave the aircraft)
         local c = not held and level_reached_before(self, q.b)
         local level = c and table.concat(self.out, " ; "):match("ALT " .. ids[1]:gsub("%p", "%%%0") .. " (FL%d+)")

@@ -10388,3 +10388,19 @@ do
   check_eq(ex("swr8 continue on heading 150"), "HDG SWR8 150")
   check_eq(ex("swr8 heading 150 then resume own navigation"), "HDG SWR8 150 ; LNAV SWR8 ON")
 end
+
+-- Cycle 48 (f110): a level after "at" opening a clause after "then", "and" or a comma, straight before a speed or
+-- heading ("climb FL160 then at FL160 speed 280", "..., at FL160 280 knots"), is what that instruction waits for
+-- (ATALT); one said again before any other instruction is asked, never dropped because the level cleared carries
+-- its value
+do
+  local _, ex = scene({ "CRE MSR71 A320 30.1 31.4 090 FL120 260" })
+  check_eq(ex("msr71 climb FL160 then at FL160 speed 280"), "ALT MSR71 FL160 ; ATALT MSR71 FL160 SPD MSR71 280")
+  check_eq(ex("msr71 climb FL160 and at FL140 turn left heading 200"),
+    "ALT MSR71 FL160 ; ATALT MSR71 FL140 HDG MSR71 200 LEFT")
+  check_eq(ex("msr71 climb FL160, then at FL160 mach .74"), "ALT MSR71 FL160 ; ATALT MSR71 FL160 SPD MSR71 M0.74")
+  check_eq(ex("msr71 climb FL160, at FL160 280 knots"), "ALT MSR71 FL160 ; ATALT MSR71 FL160 SPD MSR71 280")
+  check_eq(ex("msr71 climb FL160, at FL160 vertical speed 500"),
+    "ASK I have ALT MSR71 FL160 ; VS MSR71 500. What does 'at fl 160' mean?")
+  check_eq(ex("msr71 climb FL160 and 280 knots"), "ALT MSR71 FL160 ; SPD MSR71 280")
+end
