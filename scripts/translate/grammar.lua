@@ -1251,13 +1251,16 @@ local function written_forms(text, world)
   end
   where("a thousand", "%f[%a][Aa] ([Tt][Hh][Oo][Uu][Ss][Aa][Nn][Dd])%f[%A]", "one %1")
   where("a hundred", "%f[%a][Aa] ([Hh][Uu][Nn][Dd][Rr][Ee][Dd])%f[%A]", "one %1")
-  -- ("set conflict vertical zone thousand feet": "thousand feet" after a word that is no number, nor a word
-  -- heard for a digit ("to thousand"), is one thousand feet)
-  where("housand", "%f[%a](%a+)(%s+)([Tt]housand)(%s+)(%a+)", function(w, s1, th, s2, unit)
-    local lw, u = w:lower(), unit:lower()
-    if (u == "feet" or u == "ft" or u == "foot") and not NUMBER_WORDS[lw] and not lexicon.digit_homophones[lw]
-        and not lexicon.foreign_digits[lw] and not lexicon.thousand_counted[lw] then
-      return w .. s1 .. "one " .. th .. s2 .. unit
+  -- ("set conflict vertical zone thousand feet", "3 mile radius, thousand feet", "thousand feet vertical": "thousand
+  -- feet" opening the text or a clause after a mark, or after a word that is no number, nor a word heard for a
+  -- digit ("to thousand"), is one thousand feet)
+  where("housand", "()%f[%a]([Tt]housand)(%s+)(%a+)", function(at, th, s2, unit)
+    local u, w = unit:lower(), text:sub(1, at - 1):match("(%S+)%s*$")
+    local lw = w and w:lower()
+    if (u == "feet" or u == "ft" or u == "foot") and (not w or w:match("%p$")
+        or (w:match("^%a+$") and not NUMBER_WORDS[lw] and not lexicon.digit_homophones[lw]
+          and not lexicon.foreign_digits[lw] and not lexicon.thousand_counted[lw])) then
+      return "one " .. th .. s2 .. unit
     end
     return nil
   end)
@@ -4814,6 +4817,8 @@ end
 local ACCOUNTED = lexicon.accounted
 local CONDITION = set_of(ACCOUNTED.condition)
 local MEANING = set_of(ACCOUNTED.negation)
+-- the number words that scale a number said before them
+G.scale_words = { hundred = true, thousand = true }
 for w in pairs(CONDITION) do MEANING[w] = true end
 know_all(lexicon, {})
 -- (an airline's name of one word is a word squawk knows; the words of a name of several, "el al", "air
@@ -5905,15 +5910,28 @@ function G:unaccounted()
     end
     return true
   end
+  -- ("climb FL250, hundred", "radius 5 miles, thousand": a word of scale after an instruction that no value or
+  -- name holds counts nothing the parse read: asked; one before any instruction is callsign noise, and one after
+  -- "or" and a value is that value misheard, "nine or thousand", as G:alternatives reads it)
+  local held = {}
+  for _, list in ipairs({ self:quantities(1, #self.t + 1), self.refs }) do
+    for _, x in ipairs(list) do
+      for k = x.b, x.e - 1 do held[k] = true end
+    end
+  end
+  local function scale_left(i)
+    return G.scale_words[self.t[i].text] and not held[i] and not (self:word(i - 1, "or") and held[i - 2])
+      and self:instruction_before(i)
+  end
   -- (a word said bare is asked beside value instructions only, which read no place or noun: G.bare_left)
   local values_only = #self.out > 0
   for _, c in ipairs(self.out) do
     values_only = values_only and (c:match("^ALT ") or c:match("^SPD ") or c:match("^HDG ") or c:match("^VS ")) ~= nil
   end
   for i, t in ipairs(self.t) do
-    if t.kind == "word" and not t.filler and not t.number_word
+    if t.kind == "word" and not t.filler and (not t.number_word or scale_left(i))
         and not explained[i] and not self.noted[i] and not self.u:used(i) and not ignored[t.text]
-        and ((t.text:match("^%a[%a'%-/]*$") and (MEANING[t.text] or COMMAND_ONLY[t.text] or not (known_word(t.text) or self:airline_word(i) or self:place_particle(i))
+        and (scale_left(i) or (t.text:match("^%a[%a'%-/]*$") and (MEANING[t.text] or COMMAND_ONLY[t.text] or not (known_word(t.text) or self:airline_word(i) or self:place_particle(i))
           or airline_left(i) or fraction_left(i) or (lexicon.clock_verbs[t.text] and not self.triggers[i] and not self:resumes_instruction(i))))
           or glued_value(i) or (G.bare_left[t.text] and values_only and not self.triggers[i] and self:bare_asked(i))) then
       said[#said + 1] = i

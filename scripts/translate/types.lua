@@ -375,7 +375,10 @@ function M.spoken(text, built, phonetic)
           digits, k = digits .. TEENS[x], k + 1
         elseif TENS[x] then
           local unit = nx and DIGITS[nx]
-          if unit and unit ~= "0" then digits, k = digits .. TENS[x] .. unit, k + 2
+          -- ("a three thirty three hundred": the family's tens, then its variant in hundreds, A330-300)
+          if unit and unit ~= "0" and #digits == 1 and toks[k + 1]:match("%p$") == nil and bare(k + 2) == "hundred" then
+            digits, variant, k = digits .. TENS[x] .. "0", unit .. "00", k + 3
+          elseif unit and unit ~= "0" then digits, k = digits .. TENS[x] .. unit, k + 2
           else digits, k = digits .. TENS[x] .. "0", k + 1 end
         else
           break

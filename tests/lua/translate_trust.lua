@@ -10404,3 +10404,18 @@ do
     "ASK I have ALT MSR71 FL160 ; VS MSR71 500. What does 'at fl 160' mean?")
   check_eq(ex("msr71 climb FL160 and 280 knots"), "ALT MSR71 FL160 ; SPD MSR71 280")
 end
+
+-- Cycle 48 (f110): "thousand feet" opening the text or a clause after a mark is one thousand feet ("..., 3 mile
+-- radius, thousand feet"); a word of scale ("thousand", "hundred") that no value holds, after an instruction, is
+-- asked, never dropped; a family's variant said in hundreds after its tens ("a three thirty three hundred") is
+-- that variant
+do
+  local _, ex = scene({ "CRE MSR71 A320 30.1 31.4 090 FL120 260" })
+  check_eq(ex("asas on, 3 mile radius, thousand feet"), "ASAS ON ; ZONER 3 ; ZONEDH 1000")
+  check_eq(ex("thousand feet vertical separation, 3 nm radius"), "ZONEDH 1000 ; ZONER 3")
+  check_eq(ex("msr71 descend FL100, thousand feet per minute"), "ALT MSR71 FL100 1000")
+  check_eq(ex("msr71 descend FL100, thousand"), "ASK I have ALT MSR71 FL100. What does 'thousand' mean?")
+  check_eq(ex("asas on, radius 3 nm, hundred"), "ASK I have ASAS ON ; ZONER 3. What does 'hundred' mean?")
+  check_eq(ex("create MSR72 a three thirty three hundred at 30 31 heading 090 FL100 250 knots"),
+    "CRE MSR72 A333 30 31 90 FL100 250")
+end
