@@ -10419,3 +10419,23 @@ do
   check_eq(ex("create MSR72 a three thirty three hundred at 30 31 heading 090 FL100 250 knots"),
     "CRE MSR72 A333 30 31 90 FL100 250")
 end
+
+-- Cycle 48 (f110): a new aircraft at a fix, a navaid or a user waypoint that stands off every airport, with neither
+-- altitude nor speed said, would stand there at 0 ft and 0 kt: asked; at an airport (or a navaid on one), typed as a
+-- latitude and longitude, or said to be on the ground, it is created as said
+do
+  local s = scene({ "CRE MSR71 A320 30.1 31.4 090 FL120 260", "DEFWPT GATE7 30.4 31.9" })
+  local function ex(text) return said(graph.translate(text, { sim = s, mode = "offline", waypoints = { "GATE7" } })) end
+  check_eq(ex("create MSR72 A320 at GATE7 heading 090"),
+    "ASK What altitude and speed should MSR72 have at GATE7? With none said it would stand there at 0 ft and 0 kt.")
+  asked(ex("create MSR72 A320 at GATE7"), "no heading, altitude or speed at a user waypoint")
+  check_eq(ex("create MSR72 A320 at GATE7 heading 090 FL100"), "CRE MSR72 A320 GATE7 90 FL100")
+  check_eq(ex("create MSR72 A320 at GATE7 heading 090 on the ground"), "CRE MSR72 A320 GATE7 90 0 0")
+  check_eq(ex("create MSR72 A320 at 30.4 31.9 heading 090"), "CRE MSR72 A320 30.4 31.9 90")
+  local _, nav = navscene({ "CRE ABY571 A320 25.33 55.6 80 4000 210" }, "creations at a fix and at an airport")
+  if nav then
+    asked(nav("spawn ABY9 A320 over TUKLA heading 270"), "a fix off every airport")
+    check_eq(nav("spawn ABY9 A320 at OMDB heading 270"), "CRE ABY9 A320 OMDB 270")
+    check_eq(nav("spawn ABY9 A320 at KOK heading 270"), "CRE ABY9 A320 KOK 270")  -- (the KOK VOR stands on EBFN)
+  end
+end
