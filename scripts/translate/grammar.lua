@@ -7100,10 +7100,13 @@ local function unglued_ids(text, fleet)
   end))
 end
 
+local SAID_DIGIT = { zero = "0", oh = "0", one = "1", two = "2", three = "3", tree = "3", four = "4", fower = "4",
+  five = "5", fife = "5", six = "6", seven = "7", eight = "8", nine = "9", niner = "9" }
 -- "descend CLH 2AB": a callsign typed apart after its airline letters is joined when the
 -- joined id is exactly an aircraft's (letters after the digits too), and so is a registration
 -- written with its hyphen ("C-GKQM", "D-EABC": CGKQM, DEABC); so are a flight number's letters
--- said apart from its digits ("ryanair 81 JC") when exactly one aircraft's id ends so.
+-- said apart from its digits ("ryanair 81 JC", "Emirates seven KD": digits said as words, the letters
+-- typed in capitals) when exactly one aircraft's id ends so.
 local function split_ids(text, fleet)
   -- (a registration written in capitals with its hyphen, "D-EABC", "OE-LDA", is the one id, flying or new)
   local hyphen = text:find("-", 1, true)
@@ -7127,10 +7130,24 @@ local function split_ids(text, fleet)
   if headed then text = text:gsub("%f[%w](%a+)%s+(%d%w*)%f[%W]", joined) end
   if hyphen then text = text:gsub("%f[%w](%a%a?)%-(%w+)%f[%W]", joined) end
   if not next(tails) then return text end
-  return (text:gsub("%f[%w](%d+)%s+(%a%a?)%f[%W]", function(d, l)
+  text = text:gsub("%f[%w](%d+)%s+(%a%a?)%f[%W]", function(d, l)
     if tails[(d .. l):lower()] == 1 then return d .. l end
     return nil
-  end))
+  end)
+  if not text:find("%f[%w]%u%u?%f[%W]") then return text end
+  local toks, bare = plain_words(text)
+  for i = #toks, 2, -1 do
+    local letters = toks[i]:match("^(%u%u?)%p*$")
+    local b, digits = i, ""
+    while letters and b > 1 and SAID_DIGIT[bare[b - 1]] and not toks[b - 1]:match("%p$") do
+      b, digits = b - 1, SAID_DIGIT[bare[b - 1]] .. digits
+    end
+    if b < i and tails[(digits .. letters):lower()] == 1 then
+      return table.concat(toks, " ", 1, b - 1) .. (b > 1 and " " or "") .. digits .. toks[i]
+        .. (i < #toks and " " or "") .. table.concat(toks, " ", i + 1)
+    end
+  end
+  return text
 end
 
 -- "where is Charlie Golf Kilo Quebec Mike", "Cessna Charlie Golf Kilo Quebec Mike, climb ...": a
@@ -7151,8 +7168,6 @@ function G.type_words()
   end
   return G.type_words_built
 end
-local SAID_DIGIT = { zero = "0", oh = "0", one = "1", two = "2", three = "3", tree = "3", four = "4", fower = "4",
-  five = "5", fife = "5", six = "6", seven = "7", eight = "8", nine = "9", niner = "9" }
 -- "four eight decimal three five one one decimal eight": a latitude and a longitude said digit by digit with a
 -- decimal mark each ("decimal", "point") and nothing between them, so that the digits between the two marks
 -- hold the latitude's decimals and the longitude's degrees run together. Returns the text and nil when no such

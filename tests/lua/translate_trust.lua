@@ -10439,3 +10439,14 @@ do
     check_eq(nav("spawn ABY9 A320 at KOK heading 270"), "CRE ABY9 A320 KOK 270")  -- (the KOK VOR stands on EBFN)
   end
 end
+
+-- Cycle 48 (f110): a flight number's letters typed in capitals after its digits said as words ("Emirates seven
+-- KD") are read with them when exactly one aircraft's id ends so; other letters or digits are asked
+do
+  local _, ex = scene({ "CRE UAE7KD B77W 25.1 55.2 090 FL200 280", "CRE UAE7 A388 25.3 55.4 180 FL300 290" })
+  check_eq(ex("Emirates seven KD climb FL240"), "ALT UAE7KD FL240")
+  check_eq(ex("Emirates seven KD turn left heading 050"), "HDG UAE7KD 50 LEFT")
+  check_eq(ex("Emirates seven climb FL310"), "ALT UAE7 FL310")
+  asked(ex("Emirates seven KB climb FL340"), "letters no aircraft has")
+  asked(ex("Emirates eight KD climb FL240"), "digits no aircraft has")
+end
