@@ -2360,6 +2360,47 @@ function G:at_speed_word(i)
   return v
 end
 
+-- "reduce speed 250, when speed 250 descend FL120", "..., once at 250 knots turn left heading 180", "..., when
+-- slowed to 250 descend FL120": a condition word in segment s before its instruction word, then words of reaching
+-- (ARRIVING) and perhaps the noun "speed", then a speed (knots or Mach, or a bare number of 40 to 700 after the noun
+-- or a verb of slowing), then only the instruction's lead words, is what the instruction waits for: "ATSPD id
+-- value" (the value read), else nil.
+G.speed_held = { alt = true, hdg = true, vs = true, spd = true, maintain = true, direct = true, lnav = true,
+  vnav = true }
+function G:at_speed(s)
+  if not G.speed_held[s.intent] then return nil end
+  local v
+  for i = s.b, s.trig - 1 do
+    v = self:condition_word(i)
+    if v then break end
+  end
+  local q = v and self:quantities(v, s.trig)[1]
+  if not q then return nil end
+  local noun, slowed = false, false
+  for x = v, q.b - 1 do
+    if x == q.b - 1 and self:word(x, "speed airspeed") then
+      noun = true
+    elseif not (self.t[x].filler or ARRIVING[self.words[x]]) then
+      return nil
+    end
+    slowed = slowed or self:word(x, "@speed_verbs")
+  end
+  if not (q.kind == "speed" or q.kind == "mach"
+      or ((noun or slowed) and q.kind == "plain" and q.value >= 40 and q.value <= 700)) then
+    return nil
+  end
+  local k = self:skip_fillers(q.e)
+  while k < s.trig and ((self.t[k].kind == "punct" and self.t[k].text == ",") or self:word(k, "@condition_lead")
+      or LINKING[self.words[k]]) do
+    k = self:skip_fillers(k + 1)
+  end
+  local ids = k == s.trig and self:acids(s) or {}
+  if #ids ~= 1 then return nil end
+  self:mark_used(q.b, q.e)  -- the condition's speed is not the instruction's value
+  local f = handlers.format
+  return "ATSPD " .. ids[1] .. " " .. (q.kind == "mach" and f.mach(q.value) or f.int(q.value))
+end
+
 function G:condition()
   local i = 1
   while self.t[i] and self.t[i].kind == "word" and self.t[i].filler do i = i + 1 end
@@ -3393,7 +3434,7 @@ function G:parse(b, e)
       if until_wp then before = nil end
       local at_next = self.at_next
       self.at_next = nil
-      local at = self:at_altitude(s) or self:at_distance(s) or self:at_time(s) or self.at_all
+      local at = self:at_altitude(s) or self:at_speed(s) or self:at_distance(s) or self:at_time(s) or self.at_all
       -- "slow to 240 knots when it reaches flight level 200", "turn heading 180, but only when it is at
       -- FL250": a level said as a condition after the speed or heading instruction it holds
       local held, cut

@@ -10450,3 +10450,18 @@ do
   asked(ex("Emirates seven KB climb FL340"), "letters no aircraft has")
   asked(ex("Emirates eight KD climb FL240"), "digits no aircraft has")
 end
+
+-- Cycle 48 (f110): a speed condition in the middle of a request ("reduce speed 250, when speed 250 descend FL120",
+-- "once at 260 knots turn right") is what the instruction after it waits for (ATSPD); a bare number after "when", or
+-- "then when", is asked
+do
+  local _, ex = scene({ "CRE OMA62 B738 23.6 58.3 300 FL200 290" })
+  check_eq(ex("oma62 reduce speed 250, when speed 250 descend FL120"),
+    "SPD OMA62 250 ; ATSPD OMA62 250 ALT OMA62 FL120")
+  check_eq(ex("oma62 reduce 260 knots and once at 260 knots turn right heading 340"),
+    "SPD OMA62 260 ; ATSPD OMA62 260 HDG OMA62 340 RIGHT")
+  check_eq(ex("oma62 reduce speed 250, when slowed to 250 descend FL120"),
+    "SPD OMA62 250 ; ATSPD OMA62 250 ALT OMA62 FL120")
+  asked(ex("oma62 reduce speed 250, when 250 descend FL120"), "a bare number after when")
+  asked(ex("oma62 reduce speed 250, then when speed 250 descend FL120"), "then when")
+end
