@@ -10465,3 +10465,12 @@ do
   asked(ex("oma62 reduce speed 250, when 250 descend FL120"), "a bare number after when")
   asked(ex("oma62 reduce speed 250, then when speed 250 descend FL120"), "then when")
 end
+
+-- Cycle 48 (f110): "confirm the route", "verify your routing" closing the clause asks for the route (LISTRTE); with a
+-- place after it, it asks whether a clearance stands, as before
+do
+  local _, ex = scene({ "CRE KAC12 A320 29.2 47.9 180 FL250 280" })
+  check_eq(ex("KAC12, confirm your route"), "LISTRTE KAC12")
+  check_eq(ex("KAC12 verify the routing please"), "LISTRTE KAC12")
+  asked(ex("KAC12 confirm route direct TOKAR"), "a clearance asked about")
+end
