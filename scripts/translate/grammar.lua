@@ -7600,6 +7600,23 @@ for _, list in ipairs({ names.airlines, names.common }) do
     GLUED_AIRLINES[glued] = GLUED_AIRLINES[glued] or a[2]
   end
 end
+-- "Airindia 131", "gulfair five two": an airline's telephony of several words typed as one word straight before
+-- a flight number (digits, or a digit said) is those words ("Air India 131"); a word that is a telephony of its
+-- own ("airbaltic") stays as typed.
+G.telephony_joined = {}  -- the words of a telephony run together (lower case) -> the telephony
+for _, a in ipairs(names.airlines) do
+  local joined = a[1]:gsub("%s", "")
+  if joined ~= a[1] and not AIRLINE_WORDS[joined] then
+    G.telephony_joined[joined] = G.telephony_joined[joined] or a[1]
+  end
+end
+function G.joined_telephony(text)
+  return (text:gsub("%f[%a](%a+)(%s+)()", function(w, space, at)
+    local said, nx = G.telephony_joined[w:lower()], text:match("^%w+", at)
+    if not said or not nx or not (nx:match("^%d") or SAID_DIGIT[nx:lower()]) then return nil end
+    return (w:match("^%u") and said:gsub("%f[%a]%a", string.upper) or said) .. space
+  end))
+end
 -- In a creation ("create a new aircraft delta1022 b739 ..."), after one of lexicon.creation_verbs, it is the
 -- new aircraft's id: the airline's ICAO code and the number, as for an aircraft that flies; typed in capitals
 -- as an id of up to eight characters ("create ASCOT42 ..."), it is the id as typed. A word that opens the id
@@ -8324,7 +8341,8 @@ function M.translate(text, world)
   end
   text = airline_values(named_airline_ids(split_ids(unglued_ids(G.iata_ids(text, world.aircraft), world.aircraft),
     world.aircraft)), world.aircraft)
-  text = homophone_ids(G.hundreds_callsign(G.recognised_callsigns(glued_telephony(text, world.aircraft), world), world), world)
+  text = homophone_ids(G.hundreds_callsign(G.recognised_callsigns(glued_telephony(G.joined_telephony(text),
+    world.aircraft), world), world), world)
   local abbreviated
   text, abbreviated = abbreviated_registrations(text, world.aircraft)
   if abbreviated then return { commands = {}, ask = abbreviated } end

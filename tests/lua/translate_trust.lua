@@ -10474,3 +10474,16 @@ do
   check_eq(ex("KAC12 verify the routing please"), "LISTRTE KAC12")
   asked(ex("KAC12 confirm route direct TOKAR"), "a clearance asked about")
 end
+
+-- Cycle 48 (f110): an airline's telephony of several words typed as one word before its flight number ("Gulfair two
+-- one four", "Airindia 131") is that airline; Safair (SFR, "FlySafair") is known
+do
+  local _, ex = scene({ "CRE GFA214 A320 26.2 50.6 090 FL200 280", "CRE AIC131 A321 26.5 50.9 270 FL220 280",
+    "CRE SFR20 B738 26.0 50.2 180 FL180 270" })
+  check_eq(ex("Gulfair two one four climb FL260"), "ALT GFA214 FL260")
+  check_eq(ex("Airindia 131 descend FL180"), "ALT AIC131 FL180")
+  check_eq(ex("FlySafair 20 turn right heading 100"), "HDG SFR20 100 RIGHT")
+  check_eq(ex("Safair 20 reduce 250 knots"), "SPD SFR20 250")
+  asked(ex("Gulfair climb FL260"), "no flight number")
+  asked(ex("Airindia 132 descend FL180"), "a flight number no aircraft has")
+end
