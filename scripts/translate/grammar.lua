@@ -1001,6 +1001,38 @@ for _, word in ipairs({ "point", "decimal" }) do
   local said = word:gsub("%a", function(c) return "[" .. c:lower() .. c:upper() .. "]" end)
   POINT_SAID[#POINT_SAID + 1] = { word = word, pattern = "%f[%d](%d+)%s+" .. said .. "%s+(%d+)(%s+)(%a+)%f[%A]" }
 end
+-- "south 1.25, east 36.75", "north 52 decimal 3 east 4 point 5": a latitude and then a longitude, each said after
+-- its hemisphere's word (north or south, then east or west) with a number of its own (a decimal point typed or
+-- said), are written with each hemisphere after its number ("1.25 south, 36.75 east"), as the extractors read
+-- them; anything else stays as typed.
+G.hemisphere_words = { lat = set_of({ "north", "south" }), lon = set_of({ "east", "west" }),
+  point = set_of({ "point", "decimal" }) }
+function G.hemispheres_first(text)
+  local H = G.hemisphere_words
+  -- (the number typed at `at`, its point typed or said, and the position after it; nil when none)
+  local function number(at)
+    local whole, e = text:match("^(%d+%.?%d*)()", at)
+    if not whole then return nil end
+    local word, frac, after = text:match("^%s+(%a+)%s+(%d+)()", e)
+    if word and H.point[word:lower()] and not whole:find(".", 1, true) then return whole .. "." .. frac, after end
+    return whole, e
+  end
+  local out, from = {}, 1
+  for at, ns, v in text:gmatch("()%f[%a](%a+)%s+()%d") do
+    if at >= from and H.lat[ns:lower()] then
+      local lat, e = number(v)
+      local sep, ew, w = text:match("^(%s*,?%s*)(%a+)%s+()%d", e)
+      local lon, after = nil, nil
+      if ew and H.lon[ew:lower()] then lon, after = number(w) end
+      if lon then
+        out[#out + 1] = text:sub(from, at - 1) .. lat .. " " .. ns .. sep .. lon .. " " .. ew
+        from = after
+      end
+    end
+  end
+  out[#out + 1] = text:sub(from)
+  return table.concat(out)
+end
 -- A clock multiplier typed alone as a clause ("seed 99 then 30 random a320 then x4", "hold, 4x", "x4 and op"), or
 -- before the word "speed" or "rate" ending its clause ("x4 speed"): the simulation's rate, written out as "sim speed
 -- x4" (a callsign-like "x4" or a bare "4x" names no aircraft, unless an aircraft of that id flies: `world`, when
@@ -1242,6 +1274,10 @@ local function written_forms(text, world)
     if before and before:match("^[%d%.,%-]+$") and w ~= "left" and w ~= "right" then return nil end
     return w .. space .. digit
   end)
+  if low:find("north", 1, true) or low:find("south", 1, true) then
+    text = G.hemispheres_first(text)
+    low = text:lower()
+  end
   -- a coordinate typed in digits with its point said ("55 decimal 5 north"): 55.5, only before a hemisphere
   for _, p in ipairs(POINT_SAID) do
     where(p.word, p.pattern, function(whole, frac, space, hemi)

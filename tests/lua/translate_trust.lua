@@ -10487,3 +10487,12 @@ do
   asked(ex("Gulfair climb FL260"), "no flight number")
   asked(ex("Airindia 132 descend FL180"), "a flight number no aircraft has")
 end
+
+-- Cycle 48 (f110): a latitude and a longitude each said after its hemisphere's word ("north 25 point 5, east 55
+-- point 25", "south 1.25 west 3.5") are that position; a latitude alone is asked
+do
+  local _, ex = scene({ "CRE GFA214 A320 26.2 50.6 090 FL200 280" })
+  check_eq(ex("define waypoint HEM1 at north 25 point 5, east 55 point 25"), "DEFWPT HEM1 25.5 55.25")
+  check_eq(ex("move GFA214 to south 1.25 west 3.5"), "MOVE GFA214 -1.25 -3.5")
+  asked(ex("move GFA214 to south 1.25"), "a latitude alone")
+end
