@@ -10496,3 +10496,18 @@ do
   check_eq(ex("move GFA214 to south 1.25 west 3.5"), "MOVE GFA214 -1.25 -3.5")
   asked(ex("move GFA214 to south 1.25"), "a latitude alone")
 end
+
+-- Cycle 48 (f110): type names written with the maker's letter before a Boeing variant ("B787-9", "B777-300ER"), an
+-- Airbus A318-A321 series ("A321-200"), "DHC-8-400", "Dash 8 300", "CRJ-700", "ATR42", "ATR 72 600"; a variant
+-- no type has is asked
+do
+  local _, ex = scene({})
+  check_eq(ex("create KQA5 B787-9 at 1 S 37 E heading 090 FL300 280 knots"), "CRE KQA5 B789 -1 37 90 FL300 280")
+  check_eq(ex("create KQA6 A321-200 at 1 S 37 E heading 090 FL300 280 knots"), "CRE KQA6 A321 -1 37 90 FL300 280")
+  check_eq(ex("create KQA7 DHC-8-400 at 1 S 37 E heading 090 FL200 240 knots"), "CRE KQA7 DH8D -1 37 90 FL200 240")
+  check_eq(ex("create KQA8 Dash 8 300 at 1 S 37 E heading 090 FL200 240 knots"), "CRE KQA8 DH8C -1 37 90 FL200 240")
+  check_eq(ex("create KQA9 CRJ-700 at 1 S 37 E heading 090 FL200 240 knots"), "CRE KQA9 CRJ7 -1 37 90 FL200 240")
+  check_eq(ex("create KQA11 B777-300ER at 1 S 37 E heading 090 FL300 290 knots"), "CRE KQA11 B77W -1 37 90 FL300 290")
+  check_eq(ex("create KQA13 ATR 72 600 at 1 S 37 E heading 090 FL150 220 knots"), "CRE KQA13 AT76 -1 37 90 FL150 220")
+  asked(ex("create KQA12 B787-5 at 1 S 37 E heading 090 FL300 280 knots"), "a variant no type has")
+end
