@@ -2177,6 +2177,13 @@ return function(H, f, compass)
       local a = self:state(id)
       local airport = (a and self:airport_by_name(to + 1, s.e, a, true)) or self:airport_by_name(to + 1, s.e)
       if airport then return self:emit("DEST " .. id .. " " .. airport) end
+      -- ("route via ARTIP to SPY": a navaid's or fix's ident typed in capitals, no airport's, alone after "to", is
+      -- the route's last waypoint)
+      local w, ident = self.world, to + 2 == s.e and self.t[to + 1].raw:match("^%u[%u%d]+$")
+      if ident and w.place_known and w.airport_class and w.place_known(ident) and w.airport_class(ident) == "" then
+        self:explain(to, s.e)
+        return self:emit("ADDWPT " .. id .. " " .. ident)
+      end
       return self:need(string.format("Which airport is '%s' (the destination of %s)? Please give its ICAO code.",
         self:raw(to + 1, s.e), id))
     end

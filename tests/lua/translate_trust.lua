@@ -10511,3 +10511,14 @@ do
   check_eq(ex("create KQA13 ATR 72 600 at 1 S 37 E heading 090 FL150 220 knots"), "CRE KQA13 AT76 -1 37 90 FL150 220")
   asked(ex("create KQA12 B787-5 at 1 S 37 E heading 090 FL300 280 knots"), "a variant no type has")
 end
+
+-- Cycle 48 (f110): a route's last place typed in capitals as a navaid's or fix's ident after "to" ("route via ITPOG
+-- to ADS") is its last waypoint; a name that is no airport's is asked, as before
+do
+  local _, nav = navscene({ "CRE ETH1 B738 8.5 38.5 090 FL200 280" }, "a route's last navaid")
+  if nav then
+    check_eq(nav("ETH1 route via ITPOG to ADS"), "ADDWPT ETH1 ITPOG ; ADDWPT ETH1 ADS")
+    check_eq(nav("ETH1 route via ITPOG to HAAB"), "ADDWPT ETH1 ITPOG ; DEST ETH1 HAAB")
+    asked(nav("ETH1 route via ITPOG to Addis"), "a name no airport bears")
+  end
+end
