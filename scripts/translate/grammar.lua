@@ -1036,7 +1036,7 @@ end
 -- A clock multiplier typed alone as a clause ("seed 99 then 30 random a320 then x4", "hold, 4x", "x4 and op"), or
 -- before the word "speed" or "rate" ending its clause ("x4 speed"): the simulation's rate, written out as "sim speed
 -- x4" (a callsign-like "x4" or a bare "4x" names no aircraft, unless an aircraft of that id flies: `world`, when
--- given, holds the traffic)
+-- given, holds the traffic). After "fast time" ("set fast time x3", "fast-time at x8") it is that rate, written "5x".
 local function lone_multipliers(text, world)
   if not text:find("%d[xX]") and not text:find("[xX]%d") then return text end
   local words = {}
@@ -1049,10 +1049,21 @@ local function lone_multipliers(text, world)
     end
     return false
   end
+  -- (the words before word k name fast time: "fast time", "fast-time", "at" after them or not)
+  local function fast_time(k)
+    local p = words[k - 1] and words[k - 1].w:lower() == "at" and k - 2 or k - 1
+    local w = words[p] and words[p].w:lower()
+    return w == "fast-time" or (w == "time" and words[p - 1] ~= nil and words[p - 1].w:lower() == "fast")
+  end
   for k, t in ipairs(words) do
     local core, tail = t.w:match("^(.-)([,;%.!]?)$")
     local n = core:match("^[xX](%d+%.?%d*)$") or core:match("^(%d+%.?%d*)[xX]$")
     local prev, nx = words[k - 1], words[k + 1]
+    if n and fast_time(k) and not flies(core) then
+      out[#out + 1] = text:sub(last, t.b - 1) .. n .. "x" .. tail
+      last = t.e
+      n = nil
+    end
     local noun = tail == "" and nx and nx.w:lower():match("^(%a+)[,;%.!]?$")
     noun = (noun == "speed" or noun == "rate") and (nx.w:match("[,;%.!]$") or not words[k + 2] or joins(words[k + 2]))
     if n and (not prev or prev.w:match("[,;%.!:]$") or joins(prev)) and (tail ~= "" or not nx or joins(nx) or noun)
@@ -4344,8 +4355,12 @@ function G:at_waypoint(s, spec)
     -- ("leave NAGMA heading 200": "leave" is the verb, the heading flown from the waypoint on)
     -- ("after CUERS speed 250 knots": a value with its noun after the waypoint is the instruction there)
     -- ("passing VURAL descending FL100", no "when" or "after": a pilot's report, no instruction)
+    -- ("when passing KV speed 230", "once past GIVMI 250 knots": a clause that passes the waypoint before its
+    -- value, as "after" does)
+    local passed_first = self:word(first, "after") or (self:word(first, "when on upon once")
+      and self:word(self:skip_fillers(first + 1), "passing past overflying leaving"))
     local verb = s.intent ~= "infer" and (not self:word(s.trig, "@instruction_nouns")
-        or (opened and self:word(first, "leave leaving after")))
+        or (opened and (self:word(first, "leave leaving") or passed_first)))
       and not (self:word(first, "passing leaving") and self.t[s.trig].text:match("ing$")
         and not self:word(s.trig, "@instruction_nouns"))
       and not self:word_in(s.b, s.e, "cross crossing crosses now immediately @correction")
@@ -4358,7 +4373,7 @@ function G:at_waypoint(s, spec)
       never_constraint = #qs > 0 and #self:quantities(s.b, r.b) == 0
       for _, q in ipairs(qs) do
         never_constraint = never_constraint and (q.kind == "heading" or (s.intent == "hdg" and q.kind == "plain")
-          or (self:word(first, "after") and (q.kind == "speed" or q.kind == "mach")))
+          or (passed_first and (q.kind == "speed" or q.kind == "mach")))
       end
     end
     local handler = spec and spec.handler or (never_constraint and s.intent == "infer" and "infer")
@@ -6349,10 +6364,14 @@ function G:callsign_before(i)
   return false
 end
 
--- True when an instruction word stands before token i.
+-- True when an instruction word stands before token i, or a value with a unit of its own, which is an instruction
+-- wherever it stands ("keep 250 knots until KV").
 function G:instruction_before(i)
   for k = 1, i - 1 do
     if self:intent_at(k) then return true end
+  end
+  for _, q in ipairs(self:quantities(1, i)) do
+    if own_unit(q) then return true end
   end
   return false
 end
@@ -7951,6 +7970,33 @@ local function spelled_airports(text, world)
     return code, i + 4
   end)
 end
+-- "maintain 280 knots until kilo victor", "direct Kilo Alpha Victor": two to five letters spelled in the
+-- phonetic alphabet straight after a word of a place's slot (PLACE_SLOTS, "until", "till", "to", "passing") that
+-- join into a waypoint on the route of an aircraft flying are that waypoint's ident ("until KV"); others stay as
+-- said.
+G.spelled_slots = { ["until"] = true, till = true, to = true, passing = true }
+function G.spelled_route_places(text, world)
+  local routed = {}
+  for _, a in ipairs(world.aircraft) do
+    for _, r in ipairs(a.route or {}) do routed[r:upper()] = true end
+  end
+  if not next(routed) then return text end
+  local toks, bare = plain_words(text)
+  return tokens.rewrite(text, toks, function(i)
+    local slot = bare[i - 1]
+    if not (slot and (PLACE_SLOTS[slot] or G.spelled_slots[slot]) and lexicon.phonetic[bare[i]])
+        or toks[i - 1]:match("%p$") then
+      return nil
+    end
+    local letters, k = "", i
+    while k <= #toks and #letters < 5 and lexicon.phonetic[bare[k]] do
+      letters, k = letters .. lexicon.phonetic[bare[k]]:upper(), k + 1
+      if toks[k - 1]:match("%p$") then break end
+    end
+    if #letters < 2 or lexicon.phonetic[bare[k] or ""] or not routed[letters] then return nil end
+    return letters .. (toks[k - 1]:match("%p+$") or ""), k
+  end)
+end
 -- "hop7 6000 hdg 220 230kt": in a terse typed list, an aircraft that flies then only values, each labelled
 -- (lexicon.terse_list) but one, that one a bare number of four or five figures in hundreds of feet (1000 to
 -- 60000), with no level, altitude word or transponder code said: that number is the level, written "6000ft".
@@ -8392,7 +8438,8 @@ function M.translate(text, world)
   local run_together
   text, run_together = G.run_together_position(text)
   if run_together then return { commands = {}, ask = run_together } end
-  text = G.terse_altitude(spelled_airports(typed_places(written_forms(text, world), world), world), world)
+  text = G.spelled_route_places(typed_places(written_forms(text, world), world), world)
+  text = G.terse_altitude(spelled_airports(text, world), world)
   -- a time typed in two parts ("at 10:30", "schedule at 00:15: ..."): hours and minutes or minutes and
   -- seconds, which squawk does not tell apart (FF reads "ff 1:30" itself); asked when another command
   -- would run without it

@@ -731,6 +731,17 @@ function m:airline_group_refs(inside)
   end
 end
 
+-- True when "to" at `to` closes a request to add a place to a route with the aircraft whose words end before `e`
+-- ("add waypoint P5 to the Kenya"): the one the place is added to, its route left unsaid.
+function m:added_to(to, e)
+  local after = self.t[self:skip_fillers(e)]
+  if not self:word(to, "to") or (after and after.kind ~= "punct") then return false end
+  for k = 1, to - 1 do
+    if self:intent_at(k) == "addwpt" then return true end
+  end
+  return false
+end
+
 -- An aircraft named by "the" and its airline alone ("could the Ryanair come
 -- down", "the easyJet's route", "the BA"), with exactly one aircraft of that
 -- airline flying, is a reference to it (added to self.refs, kind "aircraft",
@@ -859,7 +870,8 @@ function m:airline_refs()
       local prev = self.t[i - 1]
       local the = prev and prev.kind == "word" and prev.text == "the"
           and (not self:word(i - 2, "@airline_context @aircraft_context @below @above")
-            or self:word(e, "@route_nouns"))  -- "add X to the KLM's route" (the lexer drops "'s")
+            or self:word(e, "@route_nouns")  -- "add X to the KLM's route" (the lexer drops "'s")
+            or self:added_to(i - 2, e))
       -- ("the regional jet from Republic, climb ...", "the plane from Delta": "the", words of an aircraft described
       -- and "from" before the airline capitalised name its aircraft, as "the Republic jet" does; `from_the`: the
       -- position of that "the")

@@ -840,7 +840,8 @@ return function(intent, rule, words)
   rule { "create spawn generate creat cre creating spawning", "create" }
   rule { "pop", "mcre", next = "up", near = { 4, "random" } }  -- "pop up ten random aircraft"
   rule { "pop", "create", next = "up" }  -- "pop up DAL88 B752 ..."
-  rule { "new", false, next = "@waypoint_nouns" }  -- "define a new waypoint called WP9"
+  -- "define a new waypoint called WP9", "define a new point ENT2 at ...": the new fix's noun after it
+  rule { "new", false, next = "@waypoint_nouns point gate entry exit" }
   -- ("creconfs: new one TVF88AB, B738, target AFR6204, ...": the new aircraft of a conflict set up before it is
   -- its intruder, no creation of its own)
   rule { "new", false, when = function(g, i)

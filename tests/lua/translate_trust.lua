@@ -10522,3 +10522,36 @@ do
     asked(nav("ETH1 route via ITPOG to Addis"), "a name no airport bears")
   end
 end
+
+-- Cycle 48 (f110): a place spelled in the phonetic alphabet after a place's word ("until kilo victor") is the
+-- waypoint of the route that spells; a value with its own unit before "until X" is an instruction as a verb's
+-- ("keep 250 knots until KV"); "add waypoint P5 to the Kenya" gives the one Kenya flying the waypoint; "stop
+-- turn" is the heading flown; "fast time x3" is the rate; when passing a waypoint of the route, a speed with its
+-- noun or unit and no verb is flown from there (AT DO); "define a new point NAME at ..." defines it
+do
+  local s = scene({ "CRE KQA7 B738 -1.2 36.9 090 FL200 280", "DEFWPT KV -1.0 37.5", "ADDWPT KQA7 KV",
+    "DEFWPT P5 -1.1 38.0" })
+  local opts = { sim = s, mode = "offline", waypoints = { "KV", "P5" } }
+  local function ex(text) return said(graph.translate(text, opts)) end
+  local r = graph.translate("kqa7 maintain 280 knots until kilo victor", opts)
+  check(said(r) == "SPD KQA7 280" and (r.note or ""):find("until KV", 1, true) ~= nil, said(r))
+  check_eq(ex("kqa7 keep 250 knots until KV"), "SPD KQA7 250")
+  asked(ex("kqa7 maintain 280 knots until kilo whiskey"), "spelled letters no waypoint of the route has")
+  check_eq(ex("add waypoint P5 to the Kenya please"), "ADDWPT KQA7 P5")
+  check_eq(ex("kqa7 stop turn"), "HDG KQA7 90")
+  check_eq(ex("kqa7 stop the turn, climb FL320"), "HDG KQA7 90 ; ALT KQA7 FL320")
+  asked(ex("kqa7 turn"), "a turn with no heading")
+  check_eq(ex("fast time x3"), "DTMULT 3")
+  check_eq(ex("set fast-time at x8"), "DTMULT 8")
+  asked(ex("fast time x3 for 5 minutes"), "a rate and a duration")
+  check_eq(ex("kqa7 when passing KV speed 230"), "AT KQA7 KV DO SPD KQA7 230")
+  check_eq(ex("kqa7 after passing KV 230 knots"), "AT KQA7 KV DO SPD KQA7 230")
+  check_eq(ex("kqa7 at KV speed 230"), "AT KQA7 KV SPD 230")
+  asked(ex("kqa7 descend FL150, once past KV 230 knots"), "a speed with no verb after a comma and 'once past'")
+  check_eq(ex("define a new point ENT2 at 52.1 north 4.2 east"), "DEFWPT ENT2 52.1 4.2")
+  asked(ex("define a new point at 52.1 north 4.2 east"), "a new point with no name")
+  local two = scene({ "CRE KQA7 B738 -1.2 36.9 090 FL200 280", "CRE KQA8 B738 -1.2 36.5 090 FL220 280",
+    "DEFWPT P5 -1.1 38.0" })
+  asked(said(graph.translate("add waypoint P5 to the Kenya", { sim = two, mode = "offline", waypoints = { "P5" } })),
+    "two Kenya aircraft")
+end
