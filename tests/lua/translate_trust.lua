@@ -10555,3 +10555,16 @@ do
   asked(said(graph.translate("add waypoint P5 to the Kenya", { sim = two, mode = "offline", waypoints = { "P5" } })),
     "two Kenya aircraft")
 end
+
+-- Cycle 48 (f110): courtesy in the languages of Africa and the Gulf ("asante sana", "abeg", "oya", "ishi", "sawa",
+-- "chale", "tamam", "no wahala") carries nothing; a word of them said alone that means something ("wahala") is asked
+do
+  local _, ex = scene({ "CRE KQA7 B738 -1.2 36.9 090 FL200 280" })
+  check_eq(ex("asante sana, kqa7 climb FL320"), "ALT KQA7 FL320")
+  check_eq(ex("abeg, freeze the sim"), "HOLD")
+  check_eq(ex("oya kqa7 descend FL180"), "ALT KQA7 FL180")
+  check_eq(ex("KQA7 ishi, turn left heading 020"), "HDG KQA7 20 LEFT")
+  check_eq(ex("tamam, continue"), "OP")
+  check_eq(ex("kqa7 climb FL320, no wahala"), "ALT KQA7 FL320")
+  asked(ex("kqa7 wahala climb FL320"), "'wahala' alone")
+end
