@@ -1001,10 +1001,42 @@ for _, word in ipairs({ "point", "decimal" }) do
   local said = word:gsub("%a", function(c) return "[" .. c:lower() .. c:upper() .. "]" end)
   POINT_SAID[#POINT_SAID + 1] = { word = word, pattern = "%f[%d](%d+)%s+" .. said .. "%s+(%d+)(%s+)(%a+)%f[%A]" }
 end
+-- "south 1.25, east 36.75", "north 52 decimal 3 east 4 point 5": a latitude and then a longitude, each said after
+-- its hemisphere's word (north or south, then east or west) with a number of its own (a decimal point typed or
+-- said), are written with each hemisphere after its number ("1.25 south, 36.75 east"), as the extractors read
+-- them; anything else stays as typed.
+G.hemisphere_words = { lat = set_of({ "north", "south" }), lon = set_of({ "east", "west" }),
+  point = set_of({ "point", "decimal" }) }
+function G.hemispheres_first(text)
+  local H = G.hemisphere_words
+  -- (the number typed at `at`, its point typed or said, and the position after it; nil when none)
+  local function number(at)
+    local whole, e = text:match("^(%d+%.?%d*)()", at)
+    if not whole then return nil end
+    local word, frac, after = text:match("^%s+(%a+)%s+(%d+)()", e)
+    if word and H.point[word:lower()] and not whole:find(".", 1, true) then return whole .. "." .. frac, after end
+    return whole, e
+  end
+  local out, from = {}, 1
+  for at, ns, v in text:gmatch("()%f[%a](%a+)%s+()%d") do
+    if at >= from and H.lat[ns:lower()] then
+      local lat, e = number(v)
+      local sep, ew, w = text:match("^(%s*,?%s*)(%a+)%s+()%d", e)
+      local lon, after = nil, nil
+      if ew and H.lon[ew:lower()] then lon, after = number(w) end
+      if lon then
+        out[#out + 1] = text:sub(from, at - 1) .. lat .. " " .. ns .. sep .. lon .. " " .. ew
+        from = after
+      end
+    end
+  end
+  out[#out + 1] = text:sub(from)
+  return table.concat(out)
+end
 -- A clock multiplier typed alone as a clause ("seed 99 then 30 random a320 then x4", "hold, 4x", "x4 and op"), or
 -- before the word "speed" or "rate" ending its clause ("x4 speed"): the simulation's rate, written out as "sim speed
 -- x4" (a callsign-like "x4" or a bare "4x" names no aircraft, unless an aircraft of that id flies: `world`, when
--- given, holds the traffic)
+-- given, holds the traffic). After "fast time" ("set fast time x3", "fast-time at x8") it is that rate, written "5x".
 local function lone_multipliers(text, world)
   if not text:find("%d[xX]") and not text:find("[xX]%d") then return text end
   local words = {}
@@ -1017,10 +1049,21 @@ local function lone_multipliers(text, world)
     end
     return false
   end
+  -- (the words before word k name fast time: "fast time", "fast-time", "at" after them or not)
+  local function fast_time(k)
+    local p = words[k - 1] and words[k - 1].w:lower() == "at" and k - 2 or k - 1
+    local w = words[p] and words[p].w:lower()
+    return w == "fast-time" or (w == "time" and words[p - 1] ~= nil and words[p - 1].w:lower() == "fast")
+  end
   for k, t in ipairs(words) do
     local core, tail = t.w:match("^(.-)([,;%.!]?)$")
     local n = core:match("^[xX](%d+%.?%d*)$") or core:match("^(%d+%.?%d*)[xX]$")
     local prev, nx = words[k - 1], words[k + 1]
+    if n and fast_time(k) and not flies(core) then
+      out[#out + 1] = text:sub(last, t.b - 1) .. n .. "x" .. tail
+      last = t.e
+      n = nil
+    end
     local noun = tail == "" and nx and nx.w:lower():match("^(%a+)[,;%.!]?$")
     noun = (noun == "speed" or noun == "rate") and (nx.w:match("[,;%.!]$") or not words[k + 2] or joins(words[k + 2]))
     if n and (not prev or prev.w:match("[,;%.!:]$") or joins(prev)) and (tail ~= "" or not nx or joins(nx) or noun)
@@ -1242,6 +1285,10 @@ local function written_forms(text, world)
     if before and before:match("^[%d%.,%-]+$") and w ~= "left" and w ~= "right" then return nil end
     return w .. space .. digit
   end)
+  if low:find("north", 1, true) or low:find("south", 1, true) then
+    text = G.hemispheres_first(text)
+    low = text:lower()
+  end
   -- a coordinate typed in digits with its point said ("55 decimal 5 north"): 55.5, only before a hemisphere
   for _, p in ipairs(POINT_SAID) do
     where(p.word, p.pattern, function(whole, frac, space, hemi)
@@ -1251,13 +1298,16 @@ local function written_forms(text, world)
   end
   where("a thousand", "%f[%a][Aa] ([Tt][Hh][Oo][Uu][Ss][Aa][Nn][Dd])%f[%A]", "one %1")
   where("a hundred", "%f[%a][Aa] ([Hh][Uu][Nn][Dd][Rr][Ee][Dd])%f[%A]", "one %1")
-  -- ("set conflict vertical zone thousand feet": "thousand feet" after a word that is no number, nor a word
-  -- heard for a digit ("to thousand"), is one thousand feet)
-  where("housand", "%f[%a](%a+)(%s+)([Tt]housand)(%s+)(%a+)", function(w, s1, th, s2, unit)
-    local lw, u = w:lower(), unit:lower()
-    if (u == "feet" or u == "ft" or u == "foot") and not NUMBER_WORDS[lw] and not lexicon.digit_homophones[lw]
-        and not lexicon.foreign_digits[lw] and not lexicon.thousand_counted[lw] then
-      return w .. s1 .. "one " .. th .. s2 .. unit
+  -- ("set conflict vertical zone thousand feet", "3 mile radius, thousand feet", "thousand feet vertical": "thousand
+  -- feet" opening the text or a clause after a mark, or after a word that is no number, nor a word heard for a
+  -- digit ("to thousand"), is one thousand feet)
+  where("housand", "()%f[%a]([Tt]housand)(%s+)(%a+)", function(at, th, s2, unit)
+    local u, w = unit:lower(), text:sub(1, at - 1):match("(%S+)%s*$")
+    local lw = w and w:lower()
+    if (u == "feet" or u == "ft" or u == "foot") and (not w or w:match("%p$")
+        or (w:match("^%a+$") and not NUMBER_WORDS[lw] and not lexicon.digit_homophones[lw]
+          and not lexicon.foreign_digits[lw] and not lexicon.thousand_counted[lw])) then
+      return "one " .. th .. s2 .. unit
     end
     return nil
   end)
@@ -2357,6 +2407,47 @@ function G:at_speed_word(i)
   return v
 end
 
+-- "reduce speed 250, when speed 250 descend FL120", "..., once at 250 knots turn left heading 180", "..., when
+-- slowed to 250 descend FL120": a condition word in segment s before its instruction word, then words of reaching
+-- (ARRIVING) and perhaps the noun "speed", then a speed (knots or Mach, or a bare number of 40 to 700 after the noun
+-- or a verb of slowing), then only the instruction's lead words, is what the instruction waits for: "ATSPD id
+-- value" (the value read), else nil.
+G.speed_held = { alt = true, hdg = true, vs = true, spd = true, maintain = true, direct = true, lnav = true,
+  vnav = true }
+function G:at_speed(s)
+  if not G.speed_held[s.intent] then return nil end
+  local v
+  for i = s.b, s.trig - 1 do
+    v = self:condition_word(i)
+    if v then break end
+  end
+  local q = v and self:quantities(v, s.trig)[1]
+  if not q then return nil end
+  local noun, slowed = false, false
+  for x = v, q.b - 1 do
+    if x == q.b - 1 and self:word(x, "speed airspeed") then
+      noun = true
+    elseif not (self.t[x].filler or ARRIVING[self.words[x]]) then
+      return nil
+    end
+    slowed = slowed or self:word(x, "@speed_verbs")
+  end
+  if not (q.kind == "speed" or q.kind == "mach"
+      or ((noun or slowed) and q.kind == "plain" and q.value >= 40 and q.value <= 700)) then
+    return nil
+  end
+  local k = self:skip_fillers(q.e)
+  while k < s.trig and ((self.t[k].kind == "punct" and self.t[k].text == ",") or self:word(k, "@condition_lead")
+      or LINKING[self.words[k]]) do
+    k = self:skip_fillers(k + 1)
+  end
+  local ids = k == s.trig and self:acids(s) or {}
+  if #ids ~= 1 then return nil end
+  self:mark_used(q.b, q.e)  -- the condition's speed is not the instruction's value
+  local f = handlers.format
+  return "ATSPD " .. ids[1] .. " " .. (q.kind == "mach" and f.mach(q.value) or f.int(q.value))
+end
+
 function G:condition()
   local i = 1
   while self.t[i] and self.t[i].kind == "word" and self.t[i].filler do i = i + 1 end
@@ -2788,12 +2879,12 @@ function G:segments(b, e)
         end
         -- (the distance of a condition said before the instruction word, with "at" or "within" before it; a
         -- level after "at" opening a clause after the last instruction's value, before a speed or heading:
-        -- "climb FL360, at FL350 it shall reduce to Mach .77"; never a creation's "..., at 37,000 feet")
+        -- "climb FL360, at FL350 it shall reduce to Mach .77", "climb FL160 then at FL160 speed 280", "... and
+        -- at FL140 ..."; never a creation's "..., at 37,000 feet")
         for _, q in ipairs(self:quantities(last.trig + 1, start)) do
           local k = self:skip_fillers(q.e)
           if q.kind == "alt" and (tr.intent == "spd" or tr.intent == "hdg") and last.intent ~= "create"
-              and self:word(q.b - 1, "at") and self.t[q.b - 2] and self.t[q.b - 2].kind == "punct"
-              and self.t[q.b - 2].text == "," and #self:quantities(last.trig, q.b) > 0 then
+              and self:at_clause(q) and #self:quantities(last.trig, q.b) > 0 then
             start = math.min(start, q.b - 1)
             break
           end
@@ -3454,7 +3545,7 @@ function G:parse(b, e)
       if until_wp then before = nil end
       local at_next = self.at_next
       self.at_next = nil
-      local at = self:at_altitude(s) or self:at_distance(s) or self:at_time(s) or self.at_all
+      local at = self:at_altitude(s) or self:at_speed(s) or self:at_distance(s) or self:at_time(s) or self.at_all
       -- "slow to 240 knots when it reaches flight level 200", "turn heading 180, but only when it is at
       -- FL250": a level said as a condition after the speed or heading instruction it holds
       local held, cut
@@ -4369,8 +4460,12 @@ function G:at_waypoint(s, spec)
     -- ("leave NAGMA heading 200": "leave" is the verb, the heading flown from the waypoint on)
     -- ("after CUERS speed 250 knots": a value with its noun after the waypoint is the instruction there)
     -- ("passing VURAL descending FL100", no "when" or "after": a pilot's report, no instruction)
+    -- ("when passing KV speed 230", "once past GIVMI 250 knots": a clause that passes the waypoint before its
+    -- value, as "after" does)
+    local passed_first = self:word(first, "after") or (self:word(first, "when on upon once")
+      and self:word(self:skip_fillers(first + 1), "passing past overflying leaving"))
     local verb = s.intent ~= "infer" and (not self:word(s.trig, "@instruction_nouns")
-        or (opened and self:word(first, "leave leaving after")))
+        or (opened and (self:word(first, "leave leaving") or passed_first)))
       and not (self:word(first, "passing leaving") and self.t[s.trig].text:match("ing$")
         and not self:word(s.trig, "@instruction_nouns"))
       and not self:word_in(s.b, s.e, "cross crossing crosses now immediately @correction")
@@ -4383,7 +4478,7 @@ function G:at_waypoint(s, spec)
       never_constraint = #qs > 0 and #self:quantities(s.b, r.b) == 0
       for _, q in ipairs(qs) do
         never_constraint = never_constraint and (q.kind == "heading" or (s.intent == "hdg" and q.kind == "plain")
-          or (self:word(first, "after") and (q.kind == "speed" or q.kind == "mach")))
+          or (passed_first and (q.kind == "speed" or q.kind == "mach")))
       end
     end
     local handler = spec and spec.handler or (never_constraint and s.intent == "infer" and "infer")
@@ -4774,6 +4869,15 @@ function G:uncarried()
     local a = self:at_number(q)
     return a and not self:word(q.e, "o'clock oclock") and not self:in_reason(q.b) and a or nil
   end
+  -- (a level after "at" opening a clause, "climb FL160, at FL160 vertical speed 500", that a level taken before it
+  -- carries by its value is a condition no command carries: asked)
+  local function said_again(q)
+    if not (q.kind == "alt" and self:at_clause(q)) then return false end
+    for _, p in ipairs(self:quantities(1, q.b)) do
+      if p.kind == "alt" and self.taken[p.b] and p.value == q.value then return true end
+    end
+    return false
+  end
   for _, q in ipairs(self:quantities(1, #self.t + 1)) do
     -- (a plain number with a decimal point is a coordinate; one of two digits or more said after the first
     -- instruction word is a value said for an instruction, "descend FL130, reducing 250", never dropped in
@@ -4783,8 +4887,9 @@ function G:uncarried()
     if (MUST_CARRY[q.kind] or (q.kind == "plain" and (q.number.decimal or at
           or (q.value >= 10 and (q.b > first or said_for_aircraft(q))))))
         and not self.taken[q.b]
-        and not ((q.by or relative) and not position(q)) and q.b > corrected and not value_carried(q, nums) then
-      self.leftover = self:raw(at or q.b, q.e)
+        and not ((q.by or relative) and not position(q)) and q.b > corrected
+        and not (value_carried(q, nums) and not said_again(q)) then
+      self.leftover = self:raw(at or (self:at_clause(q) and q.b - 1) or q.b, q.e)
       return
     end
   end
@@ -4927,6 +5032,8 @@ end
 local ACCOUNTED = lexicon.accounted
 local CONDITION = set_of(ACCOUNTED.condition)
 local MEANING = set_of(ACCOUNTED.negation)
+-- the number words that scale a number said before them
+G.scale_words = { hundred = true, thousand = true }
 for w in pairs(CONDITION) do MEANING[w] = true end
 know_all(lexicon, {})
 -- (an airline's name of one word is a word squawk knows; the words of a name of several, "el al", "air
@@ -6022,15 +6129,28 @@ function G:unaccounted()
     end
     return true
   end
+  -- ("climb FL250, hundred", "radius 5 miles, thousand": a word of scale after an instruction that no value or
+  -- name holds counts nothing the parse read: asked; one before any instruction is callsign noise, and one after
+  -- "or" and a value is that value misheard, "nine or thousand", as G:alternatives reads it)
+  local held = {}
+  for _, list in ipairs({ self:quantities(1, #self.t + 1), self.refs }) do
+    for _, x in ipairs(list) do
+      for k = x.b, x.e - 1 do held[k] = true end
+    end
+  end
+  local function scale_left(i)
+    return G.scale_words[self.t[i].text] and not held[i] and not (self:word(i - 1, "or") and held[i - 2])
+      and self:instruction_before(i)
+  end
   -- (a word said bare is asked beside value instructions only, which read no place or noun: G.bare_left)
   local values_only = #self.out > 0
   for _, c in ipairs(self.out) do
     values_only = values_only and (c:match("^ALT ") or c:match("^SPD ") or c:match("^HDG ") or c:match("^VS ")) ~= nil
   end
   for i, t in ipairs(self.t) do
-    if t.kind == "word" and not t.filler and not t.number_word
+    if t.kind == "word" and not t.filler and (not t.number_word or scale_left(i))
         and not explained[i] and not self.noted[i] and not self.u:used(i) and not ignored[t.text]
-        and ((t.text:match("^%a[%a'%-/]*$") and (MEANING[t.text] or COMMAND_ONLY[t.text] or not (known_word(t.text) or self:airline_word(i) or self:place_particle(i))
+        and (scale_left(i) or (t.text:match("^%a[%a'%-/]*$") and (MEANING[t.text] or COMMAND_ONLY[t.text] or not (known_word(t.text) or self:airline_word(i) or self:place_particle(i))
           or airline_left(i) or fraction_left(i) or (lexicon.clock_verbs[t.text] and not self.triggers[i] and not self:resumes_instruction(i))))
           or glued_value(i) or (G.bare_left[t.text] and values_only and not self.triggers[i] and self:bare_asked(i))) then
       said[#said + 1] = i
@@ -6372,10 +6492,14 @@ function G:callsign_before(i)
   return false
 end
 
--- True when an instruction word stands before token i.
+-- True when an instruction word stands before token i, or a value with a unit of its own, which is an instruction
+-- wherever it stands ("keep 250 knots until KV").
 function G:instruction_before(i)
   for k = 1, i - 1 do
     if self:intent_at(k) then return true end
+  end
+  for _, q in ipairs(self:quantities(1, i)) do
+    if own_unit(q) then return true end
   end
   return false
 end
@@ -7200,10 +7324,13 @@ local function unglued_ids(text, fleet)
   end))
 end
 
+local SAID_DIGIT = { zero = "0", oh = "0", one = "1", two = "2", three = "3", tree = "3", four = "4", fower = "4",
+  five = "5", fife = "5", six = "6", seven = "7", eight = "8", nine = "9", niner = "9" }
 -- "descend CLH 2AB": a callsign typed apart after its airline letters is joined when the
 -- joined id is exactly an aircraft's (letters after the digits too), and so is a registration
 -- written with its hyphen ("C-GKQM", "D-EABC": CGKQM, DEABC); so are a flight number's letters
--- said apart from its digits ("ryanair 81 JC") when exactly one aircraft's id ends so.
+-- said apart from its digits ("ryanair 81 JC", "Emirates seven KD": digits said as words, the letters
+-- typed in capitals) when exactly one aircraft's id ends so.
 local function split_ids(text, fleet)
   -- (a registration written in capitals with its hyphen, "D-EABC", "OE-LDA", is the one id, flying or new)
   local hyphen = text:find("-", 1, true)
@@ -7227,10 +7354,24 @@ local function split_ids(text, fleet)
   if headed then text = text:gsub("%f[%w](%a+)%s+(%d%w*)%f[%W]", joined) end
   if hyphen then text = text:gsub("%f[%w](%a%a?)%-(%w+)%f[%W]", joined) end
   if not next(tails) then return text end
-  return (text:gsub("%f[%w](%d+)%s+(%a%a?)%f[%W]", function(d, l)
+  text = text:gsub("%f[%w](%d+)%s+(%a%a?)%f[%W]", function(d, l)
     if tails[(d .. l):lower()] == 1 then return d .. l end
     return nil
-  end))
+  end)
+  if not text:find("%f[%w]%u%u?%f[%W]") then return text end
+  local toks, bare = plain_words(text)
+  for i = #toks, 2, -1 do
+    local letters = toks[i]:match("^(%u%u?)%p*$")
+    local b, digits = i, ""
+    while letters and b > 1 and SAID_DIGIT[bare[b - 1]] and not toks[b - 1]:match("%p$") do
+      b, digits = b - 1, SAID_DIGIT[bare[b - 1]] .. digits
+    end
+    if b < i and tails[(digits .. letters):lower()] == 1 then
+      return table.concat(toks, " ", 1, b - 1) .. (b > 1 and " " or "") .. digits .. toks[i]
+        .. (i < #toks and " " or "") .. table.concat(toks, " ", i + 1)
+    end
+  end
+  return text
 end
 
 -- "where is Charlie Golf Kilo Quebec Mike", "Cessna Charlie Golf Kilo Quebec Mike, climb ...": a
@@ -7251,8 +7392,6 @@ function G.type_words()
   end
   return G.type_words_built
 end
-local SAID_DIGIT = { zero = "0", oh = "0", one = "1", two = "2", three = "3", tree = "3", four = "4", fower = "4",
-  five = "5", fife = "5", six = "6", seven = "7", eight = "8", nine = "9", niner = "9" }
 -- "four eight decimal three five one one decimal eight": a latitude and a longitude said digit by digit with a
 -- decimal mark each ("decimal", "point") and nothing between them, so that the digits between the two marks
 -- hold the latitude's decimals and the longitude's degrees run together. Returns the text and nil when no such
@@ -7644,6 +7783,23 @@ for _, list in ipairs({ names.airlines, names.common }) do
     GLUED_AIRLINES[glued] = GLUED_AIRLINES[glued] or a[2]
   end
 end
+-- "Airindia 131", "gulfair five two": an airline's telephony of several words typed as one word straight before
+-- a flight number (digits, or a digit said) is those words ("Air India 131"); a word that is a telephony of its
+-- own ("airbaltic") stays as typed.
+G.telephony_joined = {}  -- the words of a telephony run together (lower case) -> the telephony
+for _, a in ipairs(names.airlines) do
+  local joined = a[1]:gsub("%s", "")
+  if joined ~= a[1] and not AIRLINE_WORDS[joined] then
+    G.telephony_joined[joined] = G.telephony_joined[joined] or a[1]
+  end
+end
+function G.joined_telephony(text)
+  return (text:gsub("%f[%a](%a+)(%s+)()", function(w, space, at)
+    local said, nx = G.telephony_joined[w:lower()], text:match("^%w+", at)
+    if not said or not nx or not (nx:match("^%d") or SAID_DIGIT[nx:lower()]) then return nil end
+    return (w:match("^%u") and said:gsub("%f[%a]%a", string.upper) or said) .. space
+  end))
+end
 -- In a creation ("create a new aircraft delta1022 b739 ..."), after one of lexicon.creation_verbs, it is the
 -- new aircraft's id: the airline's ICAO code and the number, as for an aircraft that flies; typed in capitals
 -- as an id of up to eight characters ("create ASCOT42 ..."), it is the id as typed. A word that opens the id
@@ -7940,6 +8096,33 @@ local function spelled_airports(text, world)
     local code = table.concat(toks, "", i, i + 3):upper()
     if ids[code] or (world.airport_class(code) or "") == "" then return nil end
     return code, i + 4
+  end)
+end
+-- "maintain 280 knots until kilo victor", "direct Kilo Alpha Victor": two to five letters spelled in the
+-- phonetic alphabet straight after a word of a place's slot (PLACE_SLOTS, "until", "till", "to", "passing") that
+-- join into a waypoint on the route of an aircraft flying are that waypoint's ident ("until KV"); others stay as
+-- said.
+G.spelled_slots = { ["until"] = true, till = true, to = true, passing = true }
+function G.spelled_route_places(text, world)
+  local routed = {}
+  for _, a in ipairs(world.aircraft) do
+    for _, r in ipairs(a.route or {}) do routed[r:upper()] = true end
+  end
+  if not next(routed) then return text end
+  local toks, bare = plain_words(text)
+  return tokens.rewrite(text, toks, function(i)
+    local slot = bare[i - 1]
+    if not (slot and (PLACE_SLOTS[slot] or G.spelled_slots[slot]) and lexicon.phonetic[bare[i]])
+        or toks[i - 1]:match("%p$") then
+      return nil
+    end
+    local letters, k = "", i
+    while k <= #toks and #letters < 5 and lexicon.phonetic[bare[k]] do
+      letters, k = letters .. lexicon.phonetic[bare[k]]:upper(), k + 1
+      if toks[k - 1]:match("%p$") then break end
+    end
+    if #letters < 2 or lexicon.phonetic[bare[k] or ""] or not routed[letters] then return nil end
+    return letters .. (toks[k - 1]:match("%p+$") or ""), k
   end)
 end
 -- "hop7 6000 hdg 220 230kt": in a terse typed list, an aircraft that flies then only values, each labelled
@@ -8368,7 +8551,8 @@ function M.translate(text, world)
   end
   text = airline_values(named_airline_ids(split_ids(unglued_ids(G.iata_ids(text, world.aircraft), world.aircraft),
     world.aircraft)), world.aircraft)
-  text = homophone_ids(G.hundreds_callsign(G.recognised_callsigns(glued_telephony(text, world.aircraft), world), world), world)
+  text = homophone_ids(G.hundreds_callsign(G.recognised_callsigns(glued_telephony(G.joined_telephony(text),
+    world.aircraft), world), world), world)
   local abbreviated
   text, abbreviated = abbreviated_registrations(text, world.aircraft)
   if abbreviated then return { commands = {}, ask = abbreviated } end
@@ -8382,7 +8566,8 @@ function M.translate(text, world)
   local run_together
   text, run_together = G.run_together_position(text)
   if run_together then return { commands = {}, ask = run_together } end
-  text = G.terse_altitude(spelled_airports(typed_places(written_forms(text, world), world), world), world)
+  text = G.spelled_route_places(typed_places(written_forms(text, world), world), world)
+  text = G.terse_altitude(spelled_airports(text, world), world)
   -- a time typed in two parts ("at 10:30", "schedule at 00:15: ..."): hours and minutes or minutes and
   -- seconds, which squawk does not tell apart (FF reads "ff 1:30" itself); asked when another command
   -- would run without it

@@ -743,6 +743,17 @@ function m:airline_group_refs(inside)
   end
 end
 
+-- True when "to" at `to` closes a request to add a place to a route with the aircraft whose words end before `e`
+-- ("add waypoint P5 to the Kenya"): the one the place is added to, its route left unsaid.
+function m:added_to(to, e)
+  local after = self.t[self:skip_fillers(e)]
+  if not self:word(to, "to") or (after and after.kind ~= "punct") then return false end
+  for k = 1, to - 1 do
+    if self:intent_at(k) == "addwpt" then return true end
+  end
+  return false
+end
+
 -- An aircraft named by "the" and its airline alone ("could the Ryanair come
 -- down", "the easyJet's route", "the BA"), with exactly one aircraft of that
 -- airline flying, is a reference to it (added to self.refs, kind "aircraft",
@@ -871,7 +882,8 @@ function m:airline_refs()
       local prev = self.t[i - 1]
       local the = prev and prev.kind == "word" and prev.text == "the"
           and (not self:word(i - 2, "@airline_context @aircraft_context @below @above")
-            or self:word(e, "@route_nouns"))  -- "add X to the KLM's route" (the lexer drops "'s")
+            or self:word(e, "@route_nouns")  -- "add X to the KLM's route" (the lexer drops "'s")
+            or self:added_to(i - 2, e))
       -- ("the regional jet from Republic, climb ...", "the plane from Delta": "the", words of an aircraft described
       -- and "from" before the airline capitalised name its aircraft, as "the Republic jet" does; `from_the`: the
       -- position of that "the")
@@ -2075,6 +2087,15 @@ function m:sentence_before(q, trig)
   return true
 end
 
+-- True when quantity q is said after "at" that opens a clause after a value said before it: a comma, "and" or
+-- "then" before "at" ("climb FL160, at FL160 ...", "... then at FL160 ...", "... and at FL140 ...").
+function m:at_clause(q)
+  local k = q.b - 2
+  return self:word(q.b - 1, "at") and self.t[k] ~= nil
+    and ((self.t[k].kind == "punct" and self.t[k].text == ",") or self:word(k, "and @then_words"))
+    and #self:quantities(1, k) > 0
+end
+
 -- "AC02: heading 180, FL200, 250 kts", "dct NORKU FL200": values with
 -- units of another kind around a value instruction or a direct-to are
 -- instructions too.
@@ -2159,6 +2180,13 @@ function m:leftovers(s)
         local held = qs[k + 1]
         held = at and held and held.kind == "alt" and held.b == at and not self:word(q.b - 1, "not")
           and not self.taken[held.b] and held
+        -- ("climb FL160, then at FL160 280 knots": a level after "at" opening a clause straight before the speed,
+        -- the level given already, is the one the speed waits for)
+        local prior = qs[k - 1]
+        if not held and alt_done and prior and prior.kind == "alt" and prior.e == q.b and not self.taken[prior.b]
+            and self:at_clause(prior) then
+          held = prior
+        end
         -- ("climb FL370 and once level, Mach .80": the speed waits for the level this request gave the aircraft)
         local c = not held and level_reached_before(self, q.b)
         local level = c and table.concat(self.out, " ; "):match("ALT " .. ids[1]:gsub("%p", "%%%0") .. " (FL%d+)")

@@ -620,6 +620,13 @@ return function(H, f, compass)
       return self:need("What heading should " .. id .. " have?")
     end
     if ((spd or mach) or s.several) and not alt then return self:need("What altitude should " .. id .. " have?") end
+    -- (at a fix, a navaid or a user waypoint standing off every airport, with neither altitude nor speed said, CRE
+    -- would put the aircraft there on the ground, 0 ft and 0 kt: asked; at an airport, or typed as a latitude and
+    -- longitude, that is the creation)
+    if not alt and not spd and not mach and named_at and self:off_airports(named_at) then
+      return self:need(string.format("What altitude and speed should %s have at %s? With none said it would stand "
+        .. "there at 0 ft and 0 kt.", id:upper(), named_at:upper()))
+    end
     -- "create ... FL100 250 knots, going to climb": a climb or descent said after the level with no level
     -- of its own is an instruction the creation cannot carry (its level is then the state at creation): ask
     for i = s.trig + 1, s.e - 1 do
@@ -1753,6 +1760,19 @@ return function(H, f, compass)
       f.num(lon), phrase:upper()))
   end
 
+  -- True when `ident` (a place argument) names a fix, navaid or user waypoint that no airport of the navdata stands
+  -- within lexicon.on_airport_nm of (where the simulator resolves it after the commands read so far): no airport,
+  -- no aircraft, no latitude and longitude.
+  function m:off_airports(ident)
+    local w = self.world
+    if not (w.locate and w.airport_class and w.airports_beside) or not ident:match("^%w+$") or self:state(ident)
+        or w.airport_class(ident) ~= "" then
+      return false
+    end
+    local lat, lon = w.locate(ident, table.concat(self.out, " ; "))
+    return lat ~= nil and #w.airports_beside(ident, lat, lon, L.on_airport_nm) == 0
+  end
+
   -- The airport a place name stands for where an airport is meant (a destination, an origin, where
   -- an aircraft is created): a three-letter code of a navaid (the one of that code nearest `near`
   -- {lat, lon} [deg]) beside an airport with that code after one letter ("JFK" -> KJFK), else the
@@ -2157,6 +2177,13 @@ return function(H, f, compass)
       local a = self:state(id)
       local airport = (a and self:airport_by_name(to + 1, s.e, a, true)) or self:airport_by_name(to + 1, s.e)
       if airport then return self:emit("DEST " .. id .. " " .. airport) end
+      -- ("route via ARTIP to SPY": a navaid's or fix's ident typed in capitals, no airport's, alone after "to", is
+      -- the route's last waypoint)
+      local w, ident = self.world, to + 2 == s.e and self.t[to + 1].raw:match("^%u[%u%d]+$")
+      if ident and w.place_known and w.airport_class and w.place_known(ident) and w.airport_class(ident) == "" then
+        self:explain(to, s.e)
+        return self:emit("ADDWPT " .. id .. " " .. ident)
+      end
       return self:need(string.format("Which airport is '%s' (the destination of %s)? Please give its ICAO code.",
         self:raw(to + 1, s.e), id))
     end

@@ -782,8 +782,10 @@ return function(H, f, wrap, compass)
       if turn == 0 then return self:need("Should " .. id .. " turn around to the left or to the right?") end
       offset = 180
     elseif (self:word_in(math.max(1, s.trig - 2), s.e, "@present") or self:word_in(math.max(1, s.trig - 2), s.trig + 1,
-        "@keep_verbs")) and now then
-      -- ("maintain present heading"; "maintain heading", "keep your heading" with no value said: the one it flies)
+        "@keep_verbs") or (self:word(s.trig, "turn turning") and self:word_in(math.max(1, s.trig - 2), s.trig, "stop")))
+        and now then
+      -- ("maintain present heading"; "maintain heading", "keep your heading" with no value said: the one it flies;
+      -- "stop turn", "stop the turn": the one it flies when stopping)
       offset = 0
     elseif #refs >= 2 and self:word_in(s.b, s.e, "@same_as") then
       local src = self:state(refs[#refs].name)

@@ -205,7 +205,15 @@ return {
         "nihao", "zaijian",
         -- Thai, Malay, Indonesian and Filipino, romanised ("sawasdee khrap", "terima kasih", "salamat")
         "sawasdee", "sawatdee", "sawadee", "khrap", "krap", "khob", "khun", "terima", "kasih", "selamat", "pagi",
-        "salamat", "maraming" },
+        "salamat", "maraming",
+        -- the languages of Africa, romanised: Swahili ("asante sana", "sawa", "pole pole": slowly, easy),
+        -- Amharic ("ishi": OK), Nigerian and Ghanaian Pidgin ("abeg": please, "oya": come on, "chale": mate),
+        -- Hausa, Igbo, Yoruba, Twi, Zulu, Xhosa and Afrikaans
+        "asante", "sana", "sawa", "karibu", "jambo", "habari", "tafadhali", "kwaheri", "pole", "mambo", "poa",
+        "ishi", "amesegenalehu", "tenastelign", "selam", "abeg", "oya", "chale", "chaley", "biko", "daalu", "nagode",
+        "sannu", "medaase", "akwaaba", "sawubona", "ngiyabonga", "enkosi", "dankie", "asseblief", "yebo", "eish",
+        -- and of the Gulf ("tamam": OK)
+        "tamam", "habibi", "mashallah" },
     -- phrases of courtesy that hold a word which means something elsewhere ("when", "if"):
     -- explained whole
     courtesy_phrases = { "pull up", "when you get a chance", "when you can", "when you're ready", "when ready",
@@ -224,7 +232,7 @@ return {
         "buon viaggio", "grazie mille", "per favore", "bon voyage", "bonne journee", "bonne soiree", "boa tarde",
         "boa noite", "boa viagem", "bom dia", "buen viaje", "hasta luego", "guten tag", "god dag", "god morgen",
         "ha det", "dank je", "dank u", "iyi gunler", "iyi ucuslar", "do svidaniya", "ni hao", "ma'a salama",
-        "ma salama", "at pilot's discretion", "at your discretion", "pilot's discretion",
+        "ma salama", "no wahala", "at pilot's discretion", "at your discretion", "pilot's discretion",
         "pilot discretion", "your discretion", "at pilot discretion", "pilots discretion", "at pilots discretion",
         -- a place asked about beside another ("where is DILUM in relation to the aircraft")
         "in relation to", "with respect to", "with regard to",

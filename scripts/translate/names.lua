@@ -457,6 +457,9 @@ local names = {
     { "air zimbabwe", "AZW" },
     { "botswana", "BOT" },
     { "precision air", "PRF" },
+    { "safair", "SFR" },
+    { "flysafair", "SFR" },  -- (Safair's brand)
+    { "air tanzania", "ATC" },
     { "airlink", "LNK" },
     { "link", "LNK" },  -- (Airlink's ICAO telephony)
     { "aerolineas", "ARG" },

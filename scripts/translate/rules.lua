@@ -840,7 +840,8 @@ return function(intent, rule, words)
   rule { "create spawn generate creat cre creating spawning", "create" }
   rule { "pop", "mcre", next = "up", near = { 4, "random" } }  -- "pop up ten random aircraft"
   rule { "pop", "create", next = "up" }  -- "pop up DAL88 B752 ..."
-  rule { "new", false, next = "@waypoint_nouns" }  -- "define a new waypoint called WP9"
+  -- "define a new waypoint called WP9", "define a new point ENT2 at ...": the new fix's noun after it
+  rule { "new", false, next = "@waypoint_nouns point gate entry exit" }
   -- ("creconfs: new one TVF88AB, B738, target AFR6204, ...": the new aircraft of a conflict set up before it is
   -- its intruder, no creation of its own)
   rule { "new", false, when = function(g, i)
@@ -1401,6 +1402,13 @@ return function(intent, rule, words)
   rule { "list", "listrte", prev = { 1, "waypoint" }, near = { 3, "for of" } }  -- "the waypoint list for BAW123"
   -- "ryr8gn say route", "say your routing": the aircraft asked for its route, as "say altitude" for its state
   rule { "route rte routing", "listrte", prev = { 2, "say" } }
+  -- "KAC12, confirm the route", "verify your routing": the same, the noun closing its clause ("confirm the route
+  -- via X" asks whether a clearance stands)
+  rule { "route rte routing", "listrte", prev = { 2, "confirm verify" }, when = function(g, i)
+    local k = i + 1
+    while g.t[k] and g.t[k].filler do k = k + 1 end
+    return not g.t[k] or g.t[k].kind == "punct"
+  end }
   -- "read me back your route", "read back the routing": the pilot asked to say the route
   rule { "read", "listrte", next = "back me", when = function(g, i)
     return g:followed_by(i, 4, "route rte routing") and not g:has_ref(1, #g.t + 1, "waypoint")

@@ -6,9 +6,10 @@
 --     joined or hyphenated ("737 MAX 8" -> "737max8", "737-max-8"), each
 --     alternative of "777-200/200ER", Boeing's short MAX names ("737-8"),
 --     Airbus models without their letter ("321neo") and "neo" apart;
---   * a designator gives the name its pattern spells: B7FV -> 7F7-V00
---     (B738 -> 737-800), A3FV -> A3F0-V00 (A332 -> A330-200), ATFV -> ATR F2-V00
---     (AT76 -> ATR 72-600), DH8x -> Dash 8-x00 and Q x00, CRJn -> CRJ n00, CRJX -> CRJ1000,
+--   * a designator gives the name its pattern spells: B7FV -> 7F7-V00 and B7F7-V00
+--     (B738 -> 737-800, B737-800), A3FV -> A3F0-V00 (A332 -> A330-200), A318-A321 -> their
+--     series (A320 -> A320-200), ATFV -> ATR F2-V00 and ATRF2 (AT76 -> ATR 72-600), DH8x ->
+--     Dash 8-x00, Q x00 and DHC-8-x00, CRJn -> CRJ n00 and CRJ-n00, CRJX -> CRJ1000,
 --     Cnnn -> Cessna nnn, E1nn -> Embraer E1nn, E75L/E75S -> E175, BCSn -> Airbus A220-n00 and Bombardier CSn00,
 --     SRnn -> Cirrus SRnn, PCnn -> Pilatus PC-nn, F28/F50/F70/F100 -> Fokker nn;
 --   * a family ("737", "a330") is its base designator when one exists (B737,
@@ -43,10 +44,12 @@ local function family_of(model)
   return model:match("^(a?%d%d%d)[%-%s]") or model:match("^(a%d%d%d)neo$")
 end
 
--- Spellings of one model as written in a title ("737 MAX 8", "A321neo").
-local function spellings(model)
+-- Spellings of one model of `maker` (lower case) as written in a title ("737 MAX 8", "A321neo"); a Boeing
+-- variant also with its designator's letter before it ("B737-800", "B787-9", "B777-300ER").
+local function spellings(model, maker)
   local m = model:lower():gsub("%s*%(.-%)", ""):gsub("^%s+", ""):gsub("%s+$", "")
   local out = { m }
+  if maker == "boeing" and m:match("^7%d7%-") then out[#out + 1] = "b" .. m end
   if m:find(" ") then
     out[#out + 1] = (m:gsub(" ", ""))
     out[#out + 1] = (m:gsub(" ", "-"))
@@ -62,6 +65,9 @@ local function spellings(model)
   return out
 end
 
+-- The series of the Airbus A318 to A321 built, each a name of its designator ("A320-200")
+local A32_SERIES = { A318 = { "100" }, A319 = { "100" }, A320 = { "100", "200" }, A321 = { "100", "200" } }
+
 -- Names a designator's pattern spells: {{maker, model}, ...}.
 local function pattern_names(d)
   local out = {}
@@ -69,17 +75,22 @@ local function pattern_names(d)
   if f then out[#out + 1] = { "boeing", "7" .. f .. "7-" .. v .. "00" } end
   f, v = d:match("^A3(%d)(%d)$")
   if f and tonumber(f) >= 3 then out[#out + 1] = { "airbus", "a3" .. f .. "0-" .. v .. "00" } end
-  if f and tonumber(f) < 3 then out[#out + 1] = { "airbus", d:lower() } end
+  if f and tonumber(f) < 3 then
+    out[#out + 1] = { "airbus", d:lower() }
+    for _, series in ipairs(A32_SERIES[d] or {}) do out[#out + 1] = { "airbus", d:lower() .. "-" .. series } end
+  end
   f, v = d:match("^AT(%d)(%d)$")
   if f then
     out[#out + 1] = { "atr", f .. "2-" .. v .. "00" }
     out[#out + 1] = { "atr", f .. "2" }
+    out[#out + 1] = { "atr", "atr" .. f .. "2" }  -- ("ATR72": the maker typed against the model)
   end
   local x = d:match("^DH8(%a)$")
   if x then
     local n = ("ABCD"):find(x, 1, true)
     out[#out + 1] = { "dash", "8-" .. n .. "00" }
     out[#out + 1] = { "bombardier", "q" .. n .. "00" }
+    out[#out + 1] = { "bombardier", "dhc-8-" .. n .. "00" }
     if x == "D" then out[#out + 1] = { "dash", "8" } end  -- the family's name is its latest variant
   end
   v = d:match("^B78(%w)$")
@@ -92,7 +103,10 @@ local function pattern_names(d)
   if d == "B77L" then out[#out + 1] = { "boeing", "777-200lr" } end
   if d == "A35K" then out[#out + 1] = { "airbus", "a350-1000" } end
   local c = d:match("^CRJ(%d)$")
-  if c then out[#out + 1] = { "bombardier", "crj" .. c .. "00" } end
+  if c then
+    out[#out + 1] = { "bombardier", "crj" .. c .. "00" }
+    out[#out + 1] = { "bombardier", "crj-" .. c .. "00" }
+  end
   if d == "CRJX" then out[#out + 1] = { "bombardier", "crj1000" } end
   c = d:match("^C(%d%d%d)$")
   if c then out[#out + 1] = { "cessna", c } end
@@ -178,7 +192,7 @@ function M.build(designators)
         end
         for _, a in ipairs(alts) do
           a = a:gsub("^%s+", ""):gsub("%s+$", "")
-          for _, s in ipairs(spellings(a)) do
+          for _, s in ipairs(spellings(a, maker)) do
             add(rows, seen, makers, maker, s, d)
             given[#given + 1] = { s, d }
           end
@@ -193,7 +207,7 @@ function M.build(designators)
       end
     end
     for _, n in ipairs(pattern_names(d)) do
-      for _, sp in ipairs(spellings(n[2])) do
+      for _, sp in ipairs(spellings(n[2], n[1])) do
         add(rows, seen, makers, n[1], sp, d)
         given[#given + 1] = { sp, d }
         -- ("a320 neo", "320 neo": the variant said apart is a name of several words too)
@@ -204,7 +218,11 @@ function M.build(designators)
         phrases[#phrases + 1] = { n[2], d }
         if n[1] == "boeing" then phrases[#phrases + 1] = { "b" .. n[2], d } end
       end
-      if n[2]:find("^%d+%-%d") then phrases[#phrases + 1] = { n[1] .. " " .. n[2], d } end
+      -- (and with a space for its hyphen: "dash 8 400", "atr 72 600")
+      if n[2]:find("^%d+%-%d") then
+        phrases[#phrases + 1] = { n[1] .. " " .. n[2], d }
+        phrases[#phrases + 1] = { n[1] .. " " .. n[2]:gsub("%-", " "), d }
+      end
       -- ("737 max 8": a MAX is one of the 737s)
       local fam = family_of(n[2])
       if fam then families[#families + 1] = { n[1], fam, d } end
@@ -375,7 +393,10 @@ function M.spoken(text, built, phonetic)
           digits, k = digits .. TEENS[x], k + 1
         elseif TENS[x] then
           local unit = nx and DIGITS[nx]
-          if unit and unit ~= "0" then digits, k = digits .. TENS[x] .. unit, k + 2
+          -- ("a three thirty three hundred": the family's tens, then its variant in hundreds, A330-300)
+          if unit and unit ~= "0" and #digits == 1 and toks[k + 1]:match("%p$") == nil and bare(k + 2) == "hundred" then
+            digits, variant, k = digits .. TENS[x] .. "0", unit .. "00", k + 3
+          elseif unit and unit ~= "0" then digits, k = digits .. TENS[x] .. unit, k + 2
           else digits, k = digits .. TENS[x] .. "0", k + 1 end
         else
           break

@@ -10602,4 +10602,182 @@ do
     .. "heading 050, FL100, 250 knots"), "CRE AAR102 A388 35.7 140.4 220 FL100 250 ; CRE ANA201 B788 34.4 135.2 50 FL100 250")
   check_eq(ex("create AAA1 A320 at 53 7 heading 090 and All Nippon 201 A320 at 52.7 7.5 heading 000, both FL300 at 280 kts"),
     "CRE AAA1 A320 53 7 90 FL300 280 ; CRE ANA201 A320 52.7 7.5 0 FL300 280")
+-- Cycle 48 (f110): a level after "at" opening a clause after "then", "and" or a comma, straight before a speed or
+-- heading ("climb FL160 then at FL160 speed 280", "..., at FL160 280 knots"), is what that instruction waits for
+-- (ATALT); one said again before any other instruction is asked, never dropped because the level cleared carries
+-- its value
+do
+  local _, ex = scene({ "CRE MSR71 A320 30.1 31.4 090 FL120 260" })
+  check_eq(ex("msr71 climb FL160 then at FL160 speed 280"), "ALT MSR71 FL160 ; ATALT MSR71 FL160 SPD MSR71 280")
+  check_eq(ex("msr71 climb FL160 and at FL140 turn left heading 200"),
+    "ALT MSR71 FL160 ; ATALT MSR71 FL140 HDG MSR71 200 LEFT")
+  check_eq(ex("msr71 climb FL160, then at FL160 mach .74"), "ALT MSR71 FL160 ; ATALT MSR71 FL160 SPD MSR71 M0.74")
+  check_eq(ex("msr71 climb FL160, at FL160 280 knots"), "ALT MSR71 FL160 ; ATALT MSR71 FL160 SPD MSR71 280")
+  check_eq(ex("msr71 climb FL160, at FL160 vertical speed 500"),
+    "ASK I have ALT MSR71 FL160 ; VS MSR71 500. What does 'at fl 160' mean?")
+  check_eq(ex("msr71 climb FL160 and 280 knots"), "ALT MSR71 FL160 ; SPD MSR71 280")
+end
+
+-- Cycle 48 (f110): "thousand feet" opening the text or a clause after a mark is one thousand feet ("..., 3 mile
+-- radius, thousand feet"); a word of scale ("thousand", "hundred") that no value holds, after an instruction, is
+-- asked, never dropped; a family's variant said in hundreds after its tens ("a three thirty three hundred") is
+-- that variant
+do
+  local _, ex = scene({ "CRE MSR71 A320 30.1 31.4 090 FL120 260" })
+  check_eq(ex("asas on, 3 mile radius, thousand feet"), "ASAS ON ; ZONER 3 ; ZONEDH 1000")
+  check_eq(ex("thousand feet vertical separation, 3 nm radius"), "ZONEDH 1000 ; ZONER 3")
+  check_eq(ex("msr71 descend FL100, thousand feet per minute"), "ALT MSR71 FL100 1000")
+  check_eq(ex("msr71 descend FL100, thousand"), "ASK I have ALT MSR71 FL100. What does 'thousand' mean?")
+  check_eq(ex("asas on, radius 3 nm, hundred"), "ASK I have ASAS ON ; ZONER 3. What does 'hundred' mean?")
+  check_eq(ex("create MSR72 a three thirty three hundred at 30 31 heading 090 FL100 250 knots"),
+    "CRE MSR72 A333 30 31 90 FL100 250")
+end
+
+-- Cycle 48 (f110): a new aircraft at a fix, a navaid or a user waypoint that stands off every airport, with neither
+-- altitude nor speed said, would stand there at 0 ft and 0 kt: asked; at an airport (or a navaid on one), typed as a
+-- latitude and longitude, or said to be on the ground, it is created as said
+do
+  local s = scene({ "CRE MSR71 A320 30.1 31.4 090 FL120 260", "DEFWPT GATE7 30.4 31.9" })
+  local function ex(text) return said(graph.translate(text, { sim = s, mode = "offline", waypoints = { "GATE7" } })) end
+  check_eq(ex("create MSR72 A320 at GATE7 heading 090"),
+    "ASK What altitude and speed should MSR72 have at GATE7? With none said it would stand there at 0 ft and 0 kt.")
+  asked(ex("create MSR72 A320 at GATE7"), "no heading, altitude or speed at a user waypoint")
+  check_eq(ex("create MSR72 A320 at GATE7 heading 090 FL100"), "CRE MSR72 A320 GATE7 90 FL100")
+  check_eq(ex("create MSR72 A320 at GATE7 heading 090 on the ground"), "CRE MSR72 A320 GATE7 90 0 0")
+  check_eq(ex("create MSR72 A320 at 30.4 31.9 heading 090"), "CRE MSR72 A320 30.4 31.9 90")
+  local _, nav = navscene({ "CRE ABY571 A320 25.33 55.6 80 4000 210" }, "creations at a fix and at an airport")
+  if nav then
+    asked(nav("spawn ABY9 A320 over TUKLA heading 270"), "a fix off every airport")
+    check_eq(nav("spawn ABY9 A320 at OMDB heading 270"), "CRE ABY9 A320 OMDB 270")
+    check_eq(nav("spawn ABY9 A320 at KOK heading 270"), "CRE ABY9 A320 KOK 270")  -- (the KOK VOR stands on EBFN)
+  end
+end
+
+-- Cycle 48 (f110): a flight number's letters typed in capitals after its digits said as words ("Emirates seven
+-- KD") are read with them when exactly one aircraft's id ends so; other letters or digits are asked
+do
+  local _, ex = scene({ "CRE UAE7KD B77W 25.1 55.2 090 FL200 280", "CRE UAE7 A388 25.3 55.4 180 FL300 290" })
+  check_eq(ex("Emirates seven KD climb FL240"), "ALT UAE7KD FL240")
+  check_eq(ex("Emirates seven KD turn left heading 050"), "HDG UAE7KD 50 LEFT")
+  check_eq(ex("Emirates seven climb FL310"), "ALT UAE7 FL310")
+  asked(ex("Emirates seven KB climb FL340"), "letters no aircraft has")
+  asked(ex("Emirates eight KD climb FL240"), "digits no aircraft has")
+end
+
+-- Cycle 48 (f110): a speed condition in the middle of a request ("reduce speed 250, when speed 250 descend FL120",
+-- "once at 260 knots turn right") is what the instruction after it waits for (ATSPD); a bare number after "when", or
+-- "then when", is asked
+do
+  local _, ex = scene({ "CRE OMA62 B738 23.6 58.3 300 FL200 290" })
+  check_eq(ex("oma62 reduce speed 250, when speed 250 descend FL120"),
+    "SPD OMA62 250 ; ATSPD OMA62 250 ALT OMA62 FL120")
+  check_eq(ex("oma62 reduce 260 knots and once at 260 knots turn right heading 340"),
+    "SPD OMA62 260 ; ATSPD OMA62 260 HDG OMA62 340 RIGHT")
+  check_eq(ex("oma62 reduce speed 250, when slowed to 250 descend FL120"),
+    "SPD OMA62 250 ; ATSPD OMA62 250 ALT OMA62 FL120")
+  asked(ex("oma62 reduce speed 250, when 250 descend FL120"), "a bare number after when")
+  asked(ex("oma62 reduce speed 250, then when speed 250 descend FL120"), "then when")
+end
+
+-- Cycle 48 (f110): "confirm the route", "verify your routing" closing the clause asks for the route (LISTRTE); with a
+-- place after it, it asks whether a clearance stands, as before
+do
+  local _, ex = scene({ "CRE KAC12 A320 29.2 47.9 180 FL250 280" })
+  check_eq(ex("KAC12, confirm your route"), "LISTRTE KAC12")
+  check_eq(ex("KAC12 verify the routing please"), "LISTRTE KAC12")
+  asked(ex("KAC12 confirm route direct TOKAR"), "a clearance asked about")
+end
+
+-- Cycle 48 (f110): an airline's telephony of several words typed as one word before its flight number ("Gulfair two
+-- one four", "Airindia 131") is that airline; Safair (SFR, "FlySafair") is known
+do
+  local _, ex = scene({ "CRE GFA214 A320 26.2 50.6 090 FL200 280", "CRE AIC131 A321 26.5 50.9 270 FL220 280",
+    "CRE SFR20 B738 26.0 50.2 180 FL180 270" })
+  check_eq(ex("Gulfair two one four climb FL260"), "ALT GFA214 FL260")
+  check_eq(ex("Airindia 131 descend FL180"), "ALT AIC131 FL180")
+  check_eq(ex("FlySafair 20 turn right heading 100"), "HDG SFR20 100 RIGHT")
+  check_eq(ex("Safair 20 reduce 250 knots"), "SPD SFR20 250")
+  asked(ex("Gulfair climb FL260"), "no flight number")
+  asked(ex("Airindia 132 descend FL180"), "a flight number no aircraft has")
+end
+
+-- Cycle 48 (f110): a latitude and a longitude each said after its hemisphere's word ("north 25 point 5, east 55
+-- point 25", "south 1.25 west 3.5") are that position; a latitude alone is asked
+do
+  local _, ex = scene({ "CRE GFA214 A320 26.2 50.6 090 FL200 280" })
+  check_eq(ex("define waypoint HEM1 at north 25 point 5, east 55 point 25"), "DEFWPT HEM1 25.5 55.25")
+  check_eq(ex("move GFA214 to south 1.25 west 3.5"), "MOVE GFA214 -1.25 -3.5")
+  asked(ex("move GFA214 to south 1.25"), "a latitude alone")
+end
+
+-- Cycle 48 (f110): type names written with the maker's letter before a Boeing variant ("B787-9", "B777-300ER"), an
+-- Airbus A318-A321 series ("A321-200"), "DHC-8-400", "Dash 8 300", "CRJ-700", "ATR42", "ATR 72 600"; a variant
+-- no type has is asked
+do
+  local _, ex = scene({})
+  check_eq(ex("create KQA5 B787-9 at 1 S 37 E heading 090 FL300 280 knots"), "CRE KQA5 B789 -1 37 90 FL300 280")
+  check_eq(ex("create KQA6 A321-200 at 1 S 37 E heading 090 FL300 280 knots"), "CRE KQA6 A321 -1 37 90 FL300 280")
+  check_eq(ex("create KQA7 DHC-8-400 at 1 S 37 E heading 090 FL200 240 knots"), "CRE KQA7 DH8D -1 37 90 FL200 240")
+  check_eq(ex("create KQA8 Dash 8 300 at 1 S 37 E heading 090 FL200 240 knots"), "CRE KQA8 DH8C -1 37 90 FL200 240")
+  check_eq(ex("create KQA9 CRJ-700 at 1 S 37 E heading 090 FL200 240 knots"), "CRE KQA9 CRJ7 -1 37 90 FL200 240")
+  check_eq(ex("create KQA11 B777-300ER at 1 S 37 E heading 090 FL300 290 knots"), "CRE KQA11 B77W -1 37 90 FL300 290")
+  check_eq(ex("create KQA13 ATR 72 600 at 1 S 37 E heading 090 FL150 220 knots"), "CRE KQA13 AT76 -1 37 90 FL150 220")
+  asked(ex("create KQA12 B787-5 at 1 S 37 E heading 090 FL300 280 knots"), "a variant no type has")
+end
+
+-- Cycle 48 (f110): a route's last place typed in capitals as a navaid's or fix's ident after "to" ("route via ITPOG
+-- to ADS") is its last waypoint; a name that is no airport's is asked, as before
+do
+  local _, nav = navscene({ "CRE ETH1 B738 8.5 38.5 090 FL200 280" }, "a route's last navaid")
+  if nav then
+    check_eq(nav("ETH1 route via ITPOG to ADS"), "ADDWPT ETH1 ITPOG ; ADDWPT ETH1 ADS")
+    check_eq(nav("ETH1 route via ITPOG to HAAB"), "ADDWPT ETH1 ITPOG ; DEST ETH1 HAAB")
+    asked(nav("ETH1 route via ITPOG to Addis"), "a name no airport bears")
+  end
+end
+
+-- Cycle 48 (f110): a place spelled in the phonetic alphabet after a place's word ("until kilo victor") is the
+-- waypoint of the route that spells; a value with its own unit before "until X" is an instruction as a verb's
+-- ("keep 250 knots until KV"); "add waypoint P5 to the Kenya" gives the one Kenya flying the waypoint; "stop
+-- turn" is the heading flown; "fast time x3" is the rate; when passing a waypoint of the route, a speed with its
+-- noun or unit and no verb is flown from there (AT DO); "define a new point NAME at ..." defines it
+do
+  local s = scene({ "CRE KQA7 B738 -1.2 36.9 090 FL200 280", "DEFWPT KV -1.0 37.5", "ADDWPT KQA7 KV",
+    "DEFWPT P5 -1.1 38.0" })
+  local opts = { sim = s, mode = "offline", waypoints = { "KV", "P5" } }
+  local function ex(text) return said(graph.translate(text, opts)) end
+  local r = graph.translate("kqa7 maintain 280 knots until kilo victor", opts)
+  check(said(r) == "SPD KQA7 280" and (r.note or ""):find("until KV", 1, true) ~= nil, said(r))
+  check_eq(ex("kqa7 keep 250 knots until KV"), "SPD KQA7 250")
+  asked(ex("kqa7 maintain 280 knots until kilo whiskey"), "spelled letters no waypoint of the route has")
+  check_eq(ex("add waypoint P5 to the Kenya please"), "ADDWPT KQA7 P5")
+  check_eq(ex("kqa7 stop turn"), "HDG KQA7 90")
+  check_eq(ex("kqa7 stop the turn, climb FL320"), "HDG KQA7 90 ; ALT KQA7 FL320")
+  asked(ex("kqa7 turn"), "a turn with no heading")
+  check_eq(ex("fast time x3"), "DTMULT 3")
+  check_eq(ex("set fast-time at x8"), "DTMULT 8")
+  asked(ex("fast time x3 for 5 minutes"), "a rate and a duration")
+  check_eq(ex("kqa7 when passing KV speed 230"), "AT KQA7 KV DO SPD KQA7 230")
+  check_eq(ex("kqa7 after passing KV 230 knots"), "AT KQA7 KV DO SPD KQA7 230")
+  check_eq(ex("kqa7 at KV speed 230"), "AT KQA7 KV SPD 230")
+  asked(ex("kqa7 descend FL150, once past KV 230 knots"), "a speed with no verb after a comma and 'once past'")
+  check_eq(ex("define a new point ENT2 at 52.1 north 4.2 east"), "DEFWPT ENT2 52.1 4.2")
+  asked(ex("define a new point at 52.1 north 4.2 east"), "a new point with no name")
+  local two = scene({ "CRE KQA7 B738 -1.2 36.9 090 FL200 280", "CRE KQA8 B738 -1.2 36.5 090 FL220 280",
+    "DEFWPT P5 -1.1 38.0" })
+  asked(said(graph.translate("add waypoint P5 to the Kenya", { sim = two, mode = "offline", waypoints = { "P5" } })),
+    "two Kenya aircraft")
+end
+
+-- Cycle 48 (f110): courtesy in the languages of Africa and the Gulf ("asante sana", "abeg", "oya", "ishi", "sawa",
+-- "chale", "tamam", "no wahala") carries nothing; a word of them said alone that means something ("wahala") is asked
+do
+  local _, ex = scene({ "CRE KQA7 B738 -1.2 36.9 090 FL200 280" })
+  check_eq(ex("asante sana, kqa7 climb FL320"), "ALT KQA7 FL320")
+  check_eq(ex("abeg, freeze the sim"), "HOLD")
+  check_eq(ex("oya kqa7 descend FL180"), "ALT KQA7 FL180")
+  check_eq(ex("KQA7 ishi, turn left heading 020"), "HDG KQA7 20 LEFT")
+  check_eq(ex("tamam, continue"), "OP")
+  check_eq(ex("kqa7 climb FL320, no wahala"), "ALT KQA7 FL320")
+  asked(ex("kqa7 wahala climb FL320"), "'wahala' alone")
 end
