@@ -10602,6 +10602,8 @@ do
     .. "heading 050, FL100, 250 knots"), "CRE AAR102 A388 35.7 140.4 220 FL100 250 ; CRE ANA201 B788 34.4 135.2 50 FL100 250")
   check_eq(ex("create AAA1 A320 at 53 7 heading 090 and All Nippon 201 A320 at 52.7 7.5 heading 000, both FL300 at 280 kts"),
     "CRE AAA1 A320 53 7 90 FL300 280 ; CRE ANA201 A320 52.7 7.5 0 FL300 280")
+end
+
 -- Cycle 48 (f110): a level after "at" opening a clause after "then", "and" or a comma, straight before a speed or
 -- heading ("climb FL160 then at FL160 speed 280", "..., at FL160 280 knots"), is what that instruction waits for
 -- (ATALT); one said again before any other instruction is asked, never dropped because the level cleared carries
