@@ -4409,11 +4409,13 @@ end
 -- True when quantity q's value is one a command carries, as said or as
 -- the grammar reads a spoken value: x100 (a level "three five zero"), x1000
 -- ("maintain niner"), x10 ("speed two five"), 200 + ("to niner zero"),
--- headings modulo 360.
+-- headings modulo 360 (a heading said with its word only so, a time as said).
 local function value_carried(q, nums)
   local v = q.value
   for _, n in ipairs(nums) do
-    for _, c in ipairs({ v, v * 100, v * 1000, v * 10, v + 200 }) do
+    -- (a heading said with its word, or a time, is read as said: "heading 100" is never the 300 of FL300)
+    local said_as = (q.kind == "heading" or q.kind == "time") and { v } or { v, v * 100, v * 1000, v * 10, v + 200 }
+    for _, c in ipairs(said_as) do
       if math.abs(c - n) <= math.max(0.5, 1e-6 * math.abs(n)) then return true end
     end
     -- (a heading, 360 said for 0: against a heading's number only, never a level's 30000)
@@ -4611,15 +4613,21 @@ function G:at_number(q)
   return self:word(a, "at") and a or nil
 end
 
-local MUST_CARRY = { time = true, lat = true, lon = true, alt = true, speed = true, mach = true, mult = true }
+local MUST_CARRY = { time = true, lat = true, lon = true, alt = true, speed = true, mach = true, mult = true,
+  heading = true, vs = true }
 function G:uncarried()
   -- (a value relative to another's, or a change "by" an amount; "as" alone is no comparison: "and slow it
   -- to 250 knots as well"; a position is neither: "cross 30 West at or above FL360", "by 20 West")
   local relative = self:word_in(1, #self.t + 1, "@relative same match @below @above")
   local function position(q) return q.kind == "lat" or q.kind == "lon" end
-  local nums = {}
+  -- (a time is carried only by a command that holds one: "climb FL300 for 5 minutes" is no FL300's 300 s)
+  local nums, times = {}, {}
   for _, line in ipairs(self.out) do
-    for _, n in ipairs(line_numbers(line)) do nums[#nums + 1] = n end
+    local value = G.value_commands[line:match("^(%u+)") or ""]
+    for _, n in ipairs(line_numbers(line)) do
+      nums[#nums + 1] = n
+      if not value then times[#times + 1] = n end
+    end
   end
   local corrected = 0
   for i = 1, self:said("@correction") and #self.t or 0 do if self:word(i, "@correction") then corrected = i end end
@@ -4651,16 +4659,24 @@ function G:uncarried()
     local a = self:at_number(q)
     return a and not self:word(q.e, "o'clock oclock") and not self:in_reason(q.b) and a or nil
   end
+  -- (a distance closing the request, "direct WP2 10 miles", "pause, 10 miles", "direct WP2 within 20 miles", is said
+  -- for the instruction; one in a remark or reason, "the aircraft are still 100 miles apart", is none)
+  local function closing(q)
+    local k = q.e
+    while self.t[k] and self.t[k].kind == "punct" and self.t[k].text ~= "," do k = k + 1 end
+    return not self.t[k] and not self:in_reason(q.b)
+  end
   for _, q in ipairs(self:quantities(1, #self.t + 1)) do
     -- (a plain number with a decimal point is a coordinate; one of two digits or more said after the first
     -- instruction word is a value said for an instruction, "descend FL130, reducing 250", never dropped in
     -- silence; single digits, and numbers before any instruction, "United 82 82 flight 8180 descend", are
     -- often recognition noise in a callsign)
     local at = at_word(q)
-    if (MUST_CARRY[q.kind] or (q.kind == "plain" and (q.number.decimal or at
+    if (MUST_CARRY[q.kind] or (q.kind == "dist" and closing(q)) or (q.kind == "plain" and (q.number.decimal or at
           or (q.value >= 10 and (q.b > first or said_for_aircraft(q))))))
         and not self.taken[q.b]
-        and not ((q.by or relative) and not position(q)) and q.b > corrected and not value_carried(q, nums) then
+        and not ((q.by or relative) and not position(q)) and q.b > corrected
+        and not value_carried(q, q.kind == "time" and times or nums) then
       self.leftover = self:raw(at or q.b, q.e)
       return
     end

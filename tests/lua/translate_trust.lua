@@ -9322,7 +9322,8 @@ do
   local _, ex = scene({ "CRE AC001 B744 52.0 4.0 090 FL300 300" })
   check_eq(ex("AC001 climb to 11 km"), "ALT AC001 36089")
   check_eq(ex("AC001 descend to 8.5 km"), "ALT AC001 27887")
-  check_eq(ex("AC001 descend to FL250 within 10 km"), "ALT AC001 FL250")
+  -- (a distance no command carries is asked, never read as a level nor dropped)
+  check_eq(ex("AC001 descend to FL250 within 10 km"), "ASK I have ALT AC001 FL250. What does '10 km' mean?")
   asked(ex("AC001 descend to 60 km"), "no level is 60 km")
 end
 
@@ -10387,4 +10388,23 @@ do
   check_eq(ex("swr8 continue descent FL210"), "ALT SWR8 FL210")
   check_eq(ex("swr8 continue on heading 150"), "HDG SWR8 150")
   check_eq(ex("swr8 heading 150 then resume own navigation"), "HDG SWR8 150 ; LNAV SWR8 ON")
+end
+
+-- Cycle 48 (hz55): a second value said after a complete instruction is asked, never dropped nor taken in silence: the
+-- instruction word said again with another value and no correction ("heading 200 heading 100"), a heading or a time
+-- with its unit that no command carries ("..., heading 100" after a creation's heading, "for 5 minutes"), a distance
+-- closing the request ("direct RIVET 20 miles"); the same value said again, and a correction, stand
+do
+  local _, ex = scene({ "CRE MNR4 A320 51.2 3.1 120 FL210 270", "DEFWPT RIVET 51.5 3.6", "ADDWPT MNR4 RIVET" })
+  check_eq(ex("mnr4 turn left heading 200 heading 100"),
+    "ASK I heard '200' and '100' for one instruction, with no correction between: which one stands?")
+  asked(ex("mnr4 speed 250 speed 230"), "two speeds")
+  check_eq(ex("mnr4 heading 200 heading 200"), "HDG MNR4 200")
+  check_eq(ex("mnr4 heading 200 correction heading 100"), "HDG MNR4 100")
+  check_eq(ex("create TST5 A320 at 51.3 3.2 heading 180 FL200 250 knots, heading 100"),
+    "ASK I have CRE TST5 A320 51.3 3.2 180 FL200 250. What does '100' mean?")
+  check_eq(ex("mnr4 climb FL300 for 5 minutes"), "ASK I have ALT MNR4 FL300. What does '5 minutes' mean?")
+  check_eq(ex("ff 5 minutes"), "FF 300")
+  check_eq(ex("mnr4 direct RIVET 20 miles"), "ASK I have DIRECT MNR4 RIVET. What does '20 miles' mean?")
+  check_eq(ex("mnr4 direct RIVET within 20 miles"), "ASK I have DIRECT MNR4 RIVET. What does '20 miles' mean?")
 end
