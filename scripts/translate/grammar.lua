@@ -3559,13 +3559,16 @@ function G:valueless_left(segs, valueless, issued_by)
     end
   end
   issued.ALT = issued.ALT or issued.VS
-  if not next(issued) then return end
   for _, v in ipairs(valueless) do
     local s, before, after = segs[v.k], segs[v.k - 1], segs[v.k + 1]
+    -- (beside other commands only, an imperative verb of lexicon.clause_verbs, "pause the simulation, climb": a
+    -- value's name there, "back to real time speed", "state (alt, spd, hdg)", is the other command's)
+    if not next(issued) and not self:word(s.trig, "@clause_verbs") then goto next_valueless end
     local bare = s.intent ~= "vs"
     for i = s.b, s.e - 1 do
       local t = self.t[i]
-      bare = bare and (t.kind ~= "word" or t.filler or self.triggers[i]
+      -- ("off" after its instruction word is that word's: "and level off")
+      bare = bare and (t.kind ~= "word" or t.filler or self.triggers[i] or (t.text == "off" and self.triggers[i - 1])
         or self:word(i, "@left @right @up @down and then") or self:has_ref(i, i + 1, "aircraft"))
     end
     -- (one refused, "do not descend", is the negation's: the accounting asks about it; one named after "for",
@@ -3599,6 +3602,7 @@ function G:valueless_left(segs, valueless, issued_by)
       self:need("I have " .. table.concat(self.out, " ; ") .. ". " .. v.ask)
       return
     end
+    ::next_valueless::
   end
   -- an instruction word said straight after the value of a value instruction that issued, of another family or
   -- changing the other way ("climb FL300 descend", "... down"), a word the rules read as a stop of the run

@@ -10408,3 +10408,15 @@ do
   check_eq(ex("mnr4 direct RIVET 20 miles"), "ASK I have DIRECT MNR4 RIVET. What does '20 miles' mean?")
   check_eq(ex("mnr4 direct RIVET within 20 miles"), "ASK I have DIRECT MNR4 RIVET. What does '20 miles' mean?")
 end
+
+-- Cycle 48 (hz55): an instruction word with no value said after a complete instruction of another kind is asked:
+-- "level off" after a heading, a descent after a fast-forward; "level off" after a level and a value's name
+-- read by the command it is said with ("back to real time speed") stand
+do
+  local _, ex = scene({ "CRE MNR4 A320 51.2 3.1 120 FL210 270", "CRE BEL7 A320 51.4 3.3 300 FL230 260" })
+  check_eq(ex("mnr4 turn right heading 300 and level off"),
+    "ASK I have HDG MNR4 300 RIGHT. What altitude should MNR4 fly to?")
+  check_eq(ex("mnr4 descend FL150 and level off"), "ALT MNR4 FL150")
+  check_eq(ex("ff 60 descend"), "ASK I have FF 60. Which aircraft should change altitude? Please give its callsign.")
+  check_eq(ex("back to real time speed"), "DTMULT 1")
+end
