@@ -6226,6 +6226,16 @@ function G:near_any(i, near, window)
   return false
 end
 
+-- "KLM12 heading 090 right now", "right away, KLM12 turn left heading 200": "right" straight before "now" or "away"
+-- is urgency, no turn's side (a filler); straight after a turn's word ("turn right now") it stays the side.
+function G:urgent_right()
+  for i = 1, #self.t - 1 do
+    if self.words[i] == "right" and self:word(i + 1, "now away") and not self:word(i - 1, "turn turning turns") then
+      self:blank(i)
+    end
+  end
+end
+
 -- "Right, for the next trial I'd like the KLM to turn left ...": a request
 -- that opens with "right" and a comma, and turns left later, opened with the
 -- speaker's "well"; that "right" is a filler, no direction.
@@ -8308,6 +8318,7 @@ function M.translate(text, world)
   g:fix_refs()
   g:navaid_name_refs()
   g:opening_right()
+  g:urgent_right()
   g:runway_sides()
   g:level_limits()
   -- a latitude beyond a pole or a longitude beyond the antimeridian ("95 N", "190 W") is no position

@@ -208,6 +208,8 @@ return {
     courtesy_phrases = { "pull up", "when you get a chance", "when you can", "when you're ready", "when ready",
         "when able", "if able", "if you can", "if you could", "if you would", "if possible",
         "if you don't mind", "if it's not too much trouble", "as soon as possible", "as soon as you can",
+        -- urgency ("descend FL200 at once", "right away": what squawk sends runs at once)
+        "at once", "right away", "straight away", "without further delay",
         -- the aircraft's (or the simulation's) ability, as "if able" ("up to 390 if the sim lets him")
         "if he can", "if she can", "if it can", "if he's able", "if she's able", "if it's able", "if the sim lets him",
         "if the sim lets her", "if the sim lets it", "if the sim allows", "if the sim allows it", "if the sim can",

@@ -10390,6 +10390,18 @@ do
   check_eq(ex("swr8 heading 150 then resume own navigation"), "HDG SWR8 150 ; LNAV SWR8 ON")
 end
 
+-- Cycle 48 (hz55): "right" straight before "now" or "away" is urgency, no turn's side ("right now, mnr4 turn left
+-- heading 050" turns left); after a turn's word it stays the side; urgency ("at once", "straight away") changes nothing
+do
+  local _, ex = scene({ "CRE MNR4 A320 51.2 3.1 120 FL210 270" })
+  check_eq(ex("right now mnr4 turn left heading 050"), "HDG MNR4 50 LEFT")
+  check_eq(ex("mnr4 turn left heading 050 right away"), "HDG MNR4 50 LEFT")
+  check_eq(ex("mnr4 heading 050 right now"), "HDG MNR4 50")
+  check_eq(ex("mnr4 turn right now heading 050"), "HDG MNR4 50 RIGHT")
+  check_eq(ex("mnr4 descend FL150 at once"), "ALT MNR4 FL150")
+  check_eq(ex("mnr4 descend FL150 straight away"), "ALT MNR4 FL150")
+end
+
 -- Cycle 48 (hz55): a second value said after a complete instruction is asked, never dropped nor taken in silence: the
 -- instruction word said again with another value and no correction ("heading 200 heading 100"), a heading or a time
 -- with its unit that no command carries ("..., heading 100" after a creation's heading, "for 5 minutes"), a distance
