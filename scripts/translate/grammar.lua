@@ -5923,7 +5923,7 @@ function G:unaccounted()
   for i, t in ipairs(self.t) do
     if t.kind == "word" and not t.filler and not t.number_word
         and not explained[i] and not self.noted[i] and not self.u:used(i) and not ignored[t.text]
-        and ((t.text:match("^%a[%a'%-/]*$") and (MEANING[t.text] or COMMAND_ONLY[t.text] or not (known_word(t.text) or self:airline_word(i) or self:place_particle(i))
+        and ((t.text:match("^%a[%a'%-/]*$") and (MEANING[t.text] or COMMAND_ONLY[t.text] or MANNER[t.text] or not (known_word(t.text) or self:airline_word(i) or self:place_particle(i))
           or airline_left(i) or fraction_left(i) or (lexicon.clock_verbs[t.text] and not self.triggers[i] and not self:resumes_instruction(i))))
           or glued_value(i) or (G.bare_left[t.text] and values_only and not self.triggers[i] and self:bare_asked(i))) then
       said[#said + 1] = i
@@ -6582,6 +6582,22 @@ function G:said_bare(i, apart)
   return false
 end
 
+-- True when the word at i is said as an instruction's manner: alone in its clause beside an instruction (G:said_bare:
+-- "climb FL300 quickly", "descend FL200, expedite"), or straight after an instruction word, the callsign or the
+-- request's start and before an instruction word, a value, a turn's side, "to", or the change named ("turn hard
+-- left", "climb rapidly to FL300", "KLM12 hard left heading 350", "expedite your descent").
+function G:said_as_manner(i)
+  if self:said_bare(i) then return true end
+  local p = i - 1
+  while p >= 1 and self.t[p].filler do p = p - 1 end
+  if p >= 1 and not (self:intent_at(p) or self:callsign_before(i)) then return false end
+  local n = self:skip_fillers(i + 1)
+  if self:word(n, "your its their") then n = n + 1 end
+  local q = self:quantities(n, n + 3)[1]
+  return self:word(n, "@left @right to climb descent descend turn") or self:intent_at(n) ~= nil
+    or (q ~= nil and q.b == n)
+end
+
 -- True when the word before token i is one of `subjects` ("already", "has", "had", "was", "were", "just" and
 -- fillers between them skipped: "the student has just cleared").
 function G:said_after_subject(i, subjects)
@@ -6664,7 +6680,7 @@ function G:not_simulated()
             and not (c.no_value and self:value_next(i))
             and not (c.no_number_after and self.t[i + 2] and self.t[i + 2].kind == "number")
             and not (c.not_after and self:word(i - 1, c.not_after)) and not self:word(i + 1, "not")
-            and (not c.bare or self:said_bare(i)) then
+            and (not c.bare or self:said_bare(i)) and (not c.manner or self:said_as_manner(i)) then
           local expected = c.not_aircraft_to and self:aircraft_then_to(i + 1)
           if c.routed and self:limit_off_route(i, c.window) then break end
           if expected then
@@ -6679,7 +6695,7 @@ function G:not_simulated()
     end
     if class then
       local e, comma, level_at = i + 1, false, nil
-      while e <= #self.t do
+      while e <= #self.t and not class.manner do
         local x = self.t[e]
         comma = comma or (x.kind == "punct" and x.text == ",")
         -- (a comma goes on: "hold at BAKUR, left hand pattern, inbound track 270" is one clearance)
@@ -6780,7 +6796,8 @@ function G:not_simulated()
       if class.takes_time and later then
         after[#after + 1] = { at = later, what = class.what, said = said }
       end
-      self:mark_used(i, e)
+      -- (a manner is noted only: its instruction is read with it, "expedite descent FL200")
+      if not class.manner then self:mark_used(i, e) end
       for k = i, e - 1 do self.noted[k] = true end
       if not seen[class.what] then
         seen[class.what] = true

@@ -86,7 +86,8 @@ return {
     discourse = { "well", "right", "alright", "just", "also", "too", "very", "really", "quite", "rather", "bit", "lot",
         "little", "only", "even", "still", "already", "again", "actually", "maybe", "perhaps", "probably",
         "now", "first", "next", "last", "soon", "quickly", "slightly", "fine", "good", "great", "sure",
-        -- (how hard a turn is flown, which squawk's turn model does not take: "hard left heading 350")
+        -- (how hard a turn is flown, which squawk's turn model does not take: "hard left heading 350", named in the
+        -- note when said as the manner, not_simulated)
         "hard", "sharp", "sharply",
         -- (spoken hedges: "the clock is running kinda slow, go 2x")
         "kinda", "sorta", "somewhat",
@@ -815,8 +816,10 @@ return {
   deadline_places = { "boundary", "border", "sector", "fir", "uir", "airspace", "frontier", "handoff", "handover",
       "tma", "cta" },
   -- how gently a climb or descent is flown ("climb at 800 feet a minute, nice and gentle"): said beside the
-  -- vertical speed given, it restates it; with none ("climb FL340 gently") it is asked, no rate being known
-  manner = { "nice", "gentle", "gently", "smooth", "smoothly" },
+  -- vertical speed given, it restates it; with none ("climb FL340 gently", "descend FL200 slowly") it is asked, no
+  -- rate being known (an inflection of a word squawk knows, "slowly", "steadily", is asked the same)
+  manner = { "nice", "gentle", "gently", "smooth", "smoothly", "slowly", "gradually", "steadily", "carefully",
+      "softly", "gingerly", "leisurely", "lazily", "comfortably", "easily" },
   -- a hedge said straight after a value, closing its clause ("descend fl300 maybe", "heading 240 I think"): the
   -- speaker is unsure of the value, which is asked; a hedge before it is courtesy ("could you maybe descend",
   -- "maybe 280 knots"), and a value said loosely ("ish", "about", "or so") is the value said
@@ -973,7 +976,8 @@ return {
   -- `subject`: the phrase is one only straight after one of these words; `own_clause`: with `last`, a clause
   -- after a comma opened by an imperative verb ("until 5 miles final, descend to 3000 feet") may follow it;
   -- `after_heading`: the phrase is one only after a heading value, with at most "to", "vectors" or a comma
-  -- between them (G:after_heading); `bare`: the word is one only said alone in its clause (G:said_bare);
+  -- between them (G:after_heading); `bare`: the word is one only said alone in its clause (G:said_bare); `manner`:
+  -- one only said as an instruction's manner, the phrase its word alone (G:said_as_manner);
   -- `no_value`: none with a value said straight after its word (G:value_next); `routed`: a place it names off
   -- the route of the one aircraft addressed is asked (G:limit_off_route); `no_number_after`: no phrase when a
   -- number follows its `near` word
@@ -1101,6 +1105,15 @@ return {
     { what = "expected clearances", words = "expect expecting", clause = true, not_aircraft_to = true },
     -- "expedite through FL170": a rate while crossing a level, which squawk does not model
     { what = "expedite instructions", words = "expedite", near = { "through", "passing" } },
+    -- "climb FL300 quickly", "descend FL200, expedite", "turn hard left heading 350", "climb rapidly to FL300": how
+    -- fast or hard a change is flown, said as its manner (`manner`: G:said_as_manner), which squawk flies at the
+    -- aircraft's own rate; the phrase is the word alone, noted and left to its instruction
+    { what = "how fast or hard a change is flown", words = "expedite expedited quickly fast hard sharp sharply",
+      manner = true },
+    -- "turn left heading 170, terrain", "descend FL200 weather", "aua917 terrain!! climb fl190": terrain or weather
+    -- named bare beside an instruction (`bare`: G:said_bare), its reason, which squawk does not simulate
+    { what = "terrain and weather", words = "terrain weather icing storm storms thunderstorm thunderstorms cloud "
+      .. "clouds mountain mountains turbulence", bare = true },
     -- "make a left three sixty", "orbit right": squawk flies no orbits
     { what = "orbits", words = "orbit orbits", takes_time = true },
     { what = "orbits", words = "make do", near = { "sixty", "360", "orbit", "orbits" }, takes_time = true },

@@ -10390,6 +10390,30 @@ do
   check_eq(ex("swr8 heading 150 then resume own navigation"), "HDG SWR8 150 ; LNAV SWR8 ON")
 end
 
+-- Cycle 48 (hz55): how fast or hard a change is flown, said as its manner beside the instruction ("quickly",
+-- "expedite", "hard", "sharply"), is flown at the aircraft's own rate and named in the note; a gentle manner with no
+-- rate said ("slowly", "steadily") is asked, a rate said beside it restates it; the instruction with no value asks
+do
+  local s, ex = scene({ "CRE MNR4 A320 51.2 3.1 120 FL210 270" })
+  local function note(text) return graph.translate(text, { sim = s, mode = "offline" }).note or "" end
+  local function noted(text, word)
+    check(note(text):find("how fast or hard a change is flown ('" .. word .. "')", 1, true) ~= nil, text)
+  end
+  check_eq(ex("mnr4 descend FL150 quickly"), "ALT MNR4 FL150")
+  noted("mnr4 descend FL150 quickly", "quickly")
+  check_eq(ex("mnr4 expedite your descent to FL150"), "ALT MNR4 FL150")
+  noted("mnr4 expedite your descent to FL150", "expedite")
+  check_eq(ex("mnr4 reduce 240 knots, expedite"), "SPD MNR4 240")
+  noted("mnr4 reduce 240 knots, expedite", "expedite")
+  check_eq(ex("mnr4 turn hard right heading 200"), "HDG MNR4 200 RIGHT")
+  noted("mnr4 turn hard right heading 200", "hard")
+  check_eq(ex("mnr4 sharply left heading 060"), "HDG MNR4 60 LEFT")
+  check_eq(ex("mnr4 expedite descent"), "ASK What altitude should MNR4 descend to?")
+  check_eq(ex("mnr4 climb FL250 slowly"), "ASK I have ALT MNR4 FL250. What does 'slowly' mean?")
+  check_eq(ex("mnr4 turn left heading 050 steadily"), "ASK I have HDG MNR4 50 LEFT. What does 'steadily' mean?")
+  check_eq(ex("mnr4 climb FL250 at 800 fpm, steadily"), "ALT MNR4 FL250 800")
+end
+
 -- Cycle 48 (hz55): "right" straight before "now" or "away" is urgency, no turn's side ("right now, mnr4 turn left
 -- heading 050" turns left); after a turn's word it stays the side; urgency ("at once", "straight away") changes nothing
 do
