@@ -5844,7 +5844,11 @@ for _, c in ipairs(lexicon.not_simulated) do
   for w in (c.bare and c.words or ""):gmatch("%S+") do G.bare_left[w] = G.bare_left[w] or "noted" end
 end
 G.bare_asks = { place = { start = true, aircraft = true, value = true }, meaning = { start = true, aircraft = true,
-  value = true }, after = { value = true }, noted = { aircraft = true } }
+  value = true }, report = { aircraft = true, value = true, place = true, closing = true },
+  noun = { aircraft = true, value = true, place = true }, area = { aircraft = true, value = true },
+  after = { value = true },
+  put_off = { value = true, place = true, closing = true }, noted = { aircraft = true } }
+G.bare_beside_place = { report = true, noun = true, area = true, put_off = true }
 -- True when the word at i, of G.bare_left, is said bare where its kind is asked (G.bare_asks); a word other than a
 -- place's straight before an instruction word is its manner ("continue climb", "cleared descend"), as
 -- is "hold" opening the request ("hold KLM12 climb FL300": the simulation's hold, asked)
@@ -5915,17 +5919,22 @@ function G:unaccounted()
     end
     return true
   end
-  -- (a word said bare is asked beside value instructions only, which read no place or noun: G.bare_left)
-  local values_only = #self.out > 0
+  -- (a word said bare is asked beside value instructions only, which read no place or noun: G.bare_left; beside
+  -- any other command, when it is no command's word, G.bare_beside_place)
+  local values_only, places = #self.out > 0, false
   for _, c in ipairs(self.out) do
-    values_only = values_only and (c:match("^ALT ") or c:match("^SPD ") or c:match("^HDG ") or c:match("^VS ")) ~= nil
+    local direct = c:match("^DIRECT ") ~= nil
+    places = places or direct
+    values_only = values_only and (direct or (c:match("^ALT ") or c:match("^SPD ") or c:match("^HDG ")
+      or c:match("^VS ")) ~= nil)
   end
   for i, t in ipairs(self.t) do
     if t.kind == "word" and not t.filler and not t.number_word
         and not explained[i] and not self.noted[i] and not self.u:used(i) and not ignored[t.text]
         and ((t.text:match("^%a[%a'%-/]*$") and (MEANING[t.text] or COMMAND_ONLY[t.text] or MANNER[t.text] or not (known_word(t.text) or self:airline_word(i) or self:place_particle(i))
           or airline_left(i) or fraction_left(i) or (lexicon.clock_verbs[t.text] and not self.triggers[i] and not self:resumes_instruction(i))))
-          or glued_value(i) or (G.bare_left[t.text] and values_only and not self.triggers[i] and self:bare_asked(i))) then
+          or glued_value(i) or (G.bare_left[t.text] and (values_only and not places
+            or G.bare_beside_place[G.bare_left[t.text]]) and not self.triggers[i] and self:bare_asked(i))) then
       said[#said + 1] = i
     end
   end
@@ -5945,6 +5954,25 @@ function G:unaccounted()
       self.leftover = t.raw
       if not MEANING[t.text] then self.ignorable = t.text end
       return
+    end
+  end
+end
+
+-- "climb FL300 in a minute", "turn left heading 200 in a moment": a delay said after an instruction with no number
+-- (lexicon.vague_delays: no time squawk can schedule) puts it off, where squawk would send it now: the leftover,
+-- named from "in" to the end of its clause; in a remark of its own ("we'll re-create it in a minute") it is none.
+function G:delay_left()
+  if not self:said("in within") then return end
+  local explained = self.explained or {}
+  for i = 1, #self.t - 1 do
+    local k = self:skip_fillers(i + 1)
+    if self:word(i, "in within") and self:word(k, "@vague_delays") and not (self.u:used(i) or self.u:used(k)
+        or explained[i] or self.noted[i]) and not self:in_reason(i) then
+      local e = k + 1
+      if not self.t[e] or self.t[e].kind == "punct" or self:word(e, "and then") then
+        self.leftover = self:raw(i, e)
+        return
+      end
     end
   end
 end
@@ -6551,15 +6579,19 @@ function G:said_last(i, near, own_clause)
   return k > #self.t
 end
 
--- What stands before the word at i ("start", "aircraft" or "value") when it stands alone in its clause beside an
--- instruction said ("climb FL300, squawk", "turn left heading 200 then cross", "KLM12 resume, climb FL300", "hold
--- KLM12 climb FL300"): with fillers, "and", "then" and commas skipped, the text's start, a callsign or a value's end
--- before it, and the text's end (closing marks only), an instruction word or (at the start) a callsign after it,
--- with an instruction word and an aircraft somewhere in the request ("ff 120 then hold" holds the simulation); with
--- `apart`, an instruction word straight after it stands apart only with "and", "then" or a comma between. A word
--- opening the request before a comma addresses a station ("Approach, KLM12 climb FL300"). False when it does not.
+-- What stands before the word at i ("start", "aircraft", "value", "place" or "closing") when it stands alone in its
+-- clause beside an instruction said ("climb FL300, squawk", "turn left heading 200 then cross", "KLM12 resume, climb
+-- FL300", "hold KLM12 climb FL300", "direct WP2 done"): with fillers, "and", "then" and commas skipped, the text's
+-- start, a callsign, a value's end or a place a command read before it, and the text's end (closing marks only), an
+-- instruction word or (at the start) a callsign after it, with an instruction word (or a value with its own unit, or,
+-- once read, a command issued: "KLM12 level 280 done") and an aircraft somewhere in the request ("ff 120 then hold" holds the simulation). Once
+-- read, with no aircraft named, a word closing the request after a word its command read is "closing" it ("pause the
+-- simulation done"). With `apart`, an instruction word straight after it stands apart only with "and", "then" or a
+-- comma between. A word opening the request before a comma addresses a station ("Approach, KLM12 climb FL300").
+-- False when it does not.
 function G:said_bare(i, apart)
-  if #self:refs_in(1, #self.t + 1, "aircraft") == 0 then return false end
+  local fleet = #self:refs_in(1, #self.t + 1, "aircraft") > 0
+  if not fleet and #self.out == 0 then return false end
   local function skip(k, step)
     while self.t[k] and (self.t[k].filler or self:word(k, "and then") or self.t[k].text == ",") do k = k + step end
     return k
@@ -6570,14 +6602,28 @@ function G:said_bare(i, apart)
   for _, q in ipairs(before and {} or self:quantities(math.max(1, p - 3), p + 1)) do
     if q.e == p + 1 then before = "value" end
   end
+  for _, r in ipairs(before and {} or self:refs_in(math.max(1, p - 3), p + 1, "waypoint")) do
+    if r.e == p + 1 and self.u:used(p) then before = "place" end
+  end
+  -- (no aircraft named, once read: "closing" the request after a word its command read, "pause the simulation done")
+  if not fleet then
+    local read = p >= 1 and (self.triggers[p] or self.u:used(p) or self.taken[p] or self.t[p].keyword)
+    before = (before == "value" or read) and "closing" or nil
+    if n <= #self.t then return false end
+  end
   if not before then return false end
   while self.t[n] and self.t[n].kind == "punct" and self.t[n].text ~= "," and self.t[n].text ~= "'" do n = n + 1 end
   if not (n > #self.t or (before == "start" and self:has_ref(n, n + 1, "aircraft"))
       or ((n > i + 1 or not apart) and self:intent_at(n))) then
     return false
   end
+  if #self.out > 0 then return before end
   for k = 1, #self.t do
     if k ~= i and self:intent_at(k) then return before end
+  end
+  -- (a value with its own unit is an instruction wherever it stands: "KLM12 FL280, weather")
+  for _, q in ipairs(self:quantities(1, #self.t + 1)) do
+    if own_unit(q) then return before end
   end
   return false
 end
@@ -8452,6 +8498,7 @@ function M.translate(text, world)
   if not g.ask and not g.leftover then g:uncarried_names() end
   if not g.ask and not g.leftover then g:unread_switch() end
   if not g.ask and not g.leftover then g:unaccounted() end
+  if not g.ask and not g.leftover and #g.out > 0 then g:delay_left() end
   if not g.ask and not g.leftover and g:values_only() then g:passage_left() end
   if not g.ask and not g.leftover and g:values_only() then g:going_on_left() end
   if not g.ask and not g.leftover then g:hedged() end

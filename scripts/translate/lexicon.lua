@@ -350,15 +350,33 @@ return {
     -- place ("cross", "proceed", "join"), asked for it; `meaning`: a word that may change what is flown
     -- ("resume", "continue", "cleared", a station named: "tower"), asked what it means (G:bare_asked: one straight
     -- before an instruction word is its manner, "continue climb", "cleared descend"); `after`: one asked only after
-    -- the instruction's value
+    -- the instruction's value. `place`, `meaning` and `after` are asked beside value instructions only (ALT, SPD,
+    -- HDG, VS); `report`, `noun`, `area` and `put_off`, words no command reads, beside a direct-to's place and any
+    -- other command too (G:unaccounted, G.bare_beside_place)
     bare_asked = {
       place = { "cross", "crossing", "proceed", "join", "joining", "rejoin", "rejoining", "intercept", "intercepting",
           "via", "route", "routing", "track", "follow", "avoid" },
       meaning = { "resume", "continue", "cleared", "recleared", "fly", "go", "enter", "leave", "establish",
           "established", "cancel", "cruise", "switch", "call", "activate", "deactivate", "enable", "disable", "start",
-          "skip", "regain", "raise", "sink", "tower", "ground", "departure", "centre", "center" },
-      -- (asked after a value only: "stop the Iberia's descent" is the instruction's verb)
-      after = { "stop", "clear" } },
+          "skip", "regain", "raise", "sink", "tower", "ground", "departure", "centre", "center",
+          -- a check asked for ("climb FL300, check")
+          "check", "verify" },
+      -- a state reported as reached ("heading 090 done", "FL300 reached", "pause the simulation done": the speaker
+      -- may report, not instruct), asked after the value, the callsign or (no aircraft named) the command's words
+      report = { "reached", "done", "complete", "completed", "checked", "verified" },
+      -- nouns of the traffic and the simulation that instruct nothing alone, asked after the value, the place or
+      -- the callsign ("descend FL200 spacing", "direct WP2 fuel", "heading 090 wind"; "for spacing" is a purpose,
+      -- read; opening the request, "Conflict 3, ...", a noun names what is addressed)
+      noun = { "separation", "spacing", "sequence", "sequencing", "conflict", "conflicts", "fuel", "tanker", "scope",
+          "wind", "winds", "high", "low" },
+      -- the same of the airspace, said after a place its own ("at LAX airport"): asked after the value or callsign
+      area = { "runway", "airport", "sector", "airspace" },
+      -- (asked after a value only: "stop the Iberia's descent" is the instruction's verb, "sim speed half" the value)
+      after = { "stop", "clear", "half", "level" },
+      -- a time said after the value or (no aircraft named) the command's words, which puts the instruction off
+      -- ("climb FL300 soon", "pause the simulation shortly"), where squawk sends it now; before the next
+      -- instruction, "..., afterwards descend FL200", it orders them
+      put_off = { "soon", "shortly", "afterwards", "afterward", "thereafter", "subsequently", "next", "twice" } },
   },
   -- letters with accents written as navdata writes names, in plain letters ("Düsseldorf" DUSSELDORF)
   accents = { ["à"] = "a", ["á"] = "a", ["â"] = "a", ["ã"] = "a", ["ä"] = "a", ["å"] = "a", ["ç"] = "c",
@@ -820,6 +838,8 @@ return {
   -- rate being known (an inflection of a word squawk knows, "slowly", "steadily", is asked the same)
   manner = { "nice", "gentle", "gently", "smooth", "smoothly", "slowly", "gradually", "steadily", "carefully",
       "softly", "gingerly", "leisurely", "lazily", "comfortably", "easily" },
+  -- a delay with no number, said after an instruction ("climb FL300 in a minute"): asked (G:delay_left)
+  vague_delays = { "minute", "moment", "bit", "sec", "second", "while" },
   -- a hedge said straight after a value, closing its clause ("descend fl300 maybe", "heading 240 I think"): the
   -- speaker is unsure of the value, which is asked; a hedge before it is courtesy ("could you maybe descend",
   -- "maybe 280 knots"), and a value said loosely ("ish", "about", "or so") is the value said

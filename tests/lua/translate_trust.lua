@@ -10414,6 +10414,40 @@ do
   check_eq(ex("mnr4 climb FL250 at 800 fpm, steadily"), "ALT MNR4 FL250 800")
 end
 
+-- Cycle 48 (hz55): terrain or weather named bare beside an instruction ("descend FL150, terrain", "thunderstorms,
+-- turn right heading 200") is the instruction's reason: flown, and named in the note as not simulated; a noun of
+-- the traffic or the airspace said so ("fuel", "the airport", "spacing" with no "for") is asked
+do
+  local s, ex = scene({ "CRE MNR4 A320 51.2 3.1 120 FL210 270", "DEFWPT RIVET 51.5 3.6", "ADDWPT MNR4 RIVET" })
+  local function note(text) return graph.translate(text, { sim = s, mode = "offline" }).note or "" end
+  check_eq(ex("mnr4 descend FL150, terrain"), "ALT MNR4 FL150")
+  check(note("mnr4 descend FL150, terrain"):find("terrain and weather ('terrain')", 1, true) ~= nil, "terrain noted")
+  check_eq(ex("mnr4 thunderstorms, turn right heading 200"), "HDG MNR4 200 RIGHT")
+  check_eq(ex("mnr4 turn right heading 200 to avoid the storms"), "HDG MNR4 200 RIGHT")
+  check_eq(ex("mnr4 descend FL150 fuel"), "ASK I have ALT MNR4 FL150. What does 'fuel' mean?")
+  check_eq(ex("mnr4 speed 250 the airport"), "ASK I have SPD MNR4 250. What does 'airport' mean?")
+  check_eq(ex("mnr4 direct RIVET spacing"), "ASK I have DIRECT MNR4 RIVET. What does 'spacing' mean?")
+  check_eq(ex("mnr4 turn right heading 200 for spacing"), "HDG MNR4 200 RIGHT")
+end
+
+-- Cycle 48 (hz55): a state reported as reached ("reached", "done", "complete") or a time that puts the instruction off
+-- ("soon", "shortly", "in a moment") said after a complete instruction is asked, never dropped: after a value, a
+-- place or, with no aircraft named, the command's words; "afterwards" before the next instruction orders them, and a
+-- time with its number is scheduled
+do
+  local _, ex = scene({ "CRE MNR4 A320 51.2 3.1 120 FL210 270", "DEFWPT RIVET 51.5 3.6", "ADDWPT MNR4 RIVET" })
+  check_eq(ex("mnr4 descend FL150 reached"), "ASK I have ALT MNR4 FL150. What does 'reached' mean?")
+  check_eq(ex("mnr4 direct RIVET done"), "ASK I have DIRECT MNR4 RIVET. What does 'done' mean?")
+  check_eq(ex("hold the simulation, done"), "ASK I have HOLD. What does 'done' mean?")
+  check_eq(ex("mnr4 climb FL250 shortly"), "ASK I have ALT MNR4 FL250. What does 'shortly' mean?")
+  check_eq(ex("ff 30 soon"), "ASK I have FF 30. What does 'soon' mean?")
+  check_eq(ex("mnr4 turn left heading 050 level"), "ASK I have HDG MNR4 50 LEFT. What does 'level' mean?")
+  check_eq(ex("mnr4 climb FL250 in a moment"), "ASK I have ALT MNR4 FL250. What does 'in a moment' mean?")
+  check_eq(ex("mnr4 climb FL250 in 2 minutes"), "DELAY 120 ALT MNR4 FL250")
+  check_eq(ex("mnr4 climb FL250 and afterwards reduce 250 knots"), "ALT MNR4 FL250 ; SPD MNR4 250")
+  check_eq(ex("please delete mnr4, we'll re-create it in a minute"), "DEL MNR4")
+end
+
 -- Cycle 48 (hz55): "right" straight before "now" or "away" is urgency, no turn's side ("right now, mnr4 turn left
 -- heading 050" turns left); after a turn's word it stays the side; urgency ("at once", "straight away") changes nothing
 do
