@@ -3725,13 +3725,16 @@ function G:valueless_left(segs, valueless, issued_by)
     end
   end
   issued.ALT = issued.ALT or issued.VS
-  if not next(issued) then return end
   for _, v in ipairs(valueless) do
     local s, before, after = segs[v.k], segs[v.k - 1], segs[v.k + 1]
+    -- (beside other commands only, an imperative verb of lexicon.clause_verbs, "pause the simulation, climb": a
+    -- value's name there, "back to real time speed", "state (alt, spd, hdg)", is the other command's)
+    if not next(issued) and not self:word(s.trig, "@clause_verbs") then goto next_valueless end
     local bare = s.intent ~= "vs"
     for i = s.b, s.e - 1 do
       local t = self.t[i]
-      bare = bare and (t.kind ~= "word" or t.filler or self.triggers[i]
+      -- ("off" after its instruction word is that word's: "and level off")
+      bare = bare and (t.kind ~= "word" or t.filler or self.triggers[i] or (t.text == "off" and self.triggers[i - 1])
         or self:word(i, "@left @right @up @down and then") or self:has_ref(i, i + 1, "aircraft"))
     end
     -- (one refused, "do not descend", is the negation's: the accounting asks about it; one named after "for",
@@ -3765,6 +3768,7 @@ function G:valueless_left(segs, valueless, issued_by)
       self:need("I have " .. table.concat(self.out, " ; ") .. ". " .. v.ask)
       return
     end
+    ::next_valueless::
   end
   -- an instruction word said straight after the value of a value instruction that issued, of another family or
   -- changing the other way ("climb FL300 descend", "... down"), a word the rules read as a stop of the run
@@ -4609,11 +4613,13 @@ end
 -- True when quantity q's value is one a command carries, as said or as
 -- the grammar reads a spoken value: x100 (a level "three five zero"), x1000
 -- ("maintain niner"), x10 ("speed two five"), 200 + ("to niner zero"),
--- headings modulo 360.
+-- headings modulo 360 (a heading said with its word only so, a time as said).
 local function value_carried(q, nums)
   local v = q.value
   for _, n in ipairs(nums) do
-    for _, c in ipairs({ v, v * 100, v * 1000, v * 10, v + 200 }) do
+    -- (a heading said with its word, or a time, is read as said: "heading 100" is never the 300 of FL300)
+    local said_as = (q.kind == "heading" or q.kind == "time") and { v } or { v, v * 100, v * 1000, v * 10, v + 200 }
+    for _, c in ipairs(said_as) do
       if math.abs(c - n) <= math.max(0.5, 1e-6 * math.abs(n)) then return true end
     end
     -- (a heading, 360 said for 0: against a heading's number only, never a level's 30000)
@@ -4829,15 +4835,21 @@ function G:at_number(q)
   return self:word(a, "at") and a or nil
 end
 
-local MUST_CARRY = { time = true, lat = true, lon = true, alt = true, speed = true, mach = true, mult = true }
+local MUST_CARRY = { time = true, lat = true, lon = true, alt = true, speed = true, mach = true, mult = true,
+  heading = true, vs = true }
 function G:uncarried()
   -- (a value relative to another's, or a change "by" an amount; "as" alone is no comparison: "and slow it
   -- to 250 knots as well"; a position is neither: "cross 30 West at or above FL360", "by 20 West")
   local relative = self:word_in(1, #self.t + 1, "@relative same match @below @above")
   local function position(q) return q.kind == "lat" or q.kind == "lon" end
-  local nums = {}
+  -- (a time is carried only by a command that holds one: "climb FL300 for 5 minutes" is no FL300's 300 s)
+  local nums, times = {}, {}
   for _, line in ipairs(self.out) do
-    for _, n in ipairs(line_numbers(line)) do nums[#nums + 1] = n end
+    local value = G.value_commands[line:match("^(%u+)") or ""]
+    for _, n in ipairs(line_numbers(line)) do
+      nums[#nums + 1] = n
+      if not value then times[#times + 1] = n end
+    end
   end
   local corrected = 0
   for i = 1, self:said("@correction") and #self.t or 0 do if self:word(i, "@correction") then corrected = i end end
@@ -4878,17 +4890,24 @@ function G:uncarried()
     end
     return false
   end
+  -- (a distance closing the request, "direct WP2 10 miles", "pause, 10 miles", "direct WP2 within 20 miles", is said
+  -- for the instruction; one in a remark or reason, "the aircraft are still 100 miles apart", is none)
+  local function closing(q)
+    local k = q.e
+    while self.t[k] and self.t[k].kind == "punct" and self.t[k].text ~= "," do k = k + 1 end
+    return not self.t[k] and not self:in_reason(q.b)
+  end
   for _, q in ipairs(self:quantities(1, #self.t + 1)) do
     -- (a plain number with a decimal point is a coordinate; one of two digits or more said after the first
     -- instruction word is a value said for an instruction, "descend FL130, reducing 250", never dropped in
     -- silence; single digits, and numbers before any instruction, "United 82 82 flight 8180 descend", are
     -- often recognition noise in a callsign)
     local at = at_word(q)
-    if (MUST_CARRY[q.kind] or (q.kind == "plain" and (q.number.decimal or at
+    if (MUST_CARRY[q.kind] or (q.kind == "dist" and closing(q)) or (q.kind == "plain" and (q.number.decimal or at
           or (q.value >= 10 and (q.b > first or said_for_aircraft(q))))))
         and not self.taken[q.b]
         and not ((q.by or relative) and not position(q)) and q.b > corrected
-        and not (value_carried(q, nums) and not said_again(q)) then
+        and not (value_carried(q, q.kind == "time" and times or nums) and not said_again(q)) then
       self.leftover = self:raw(at or (self:at_clause(q) and q.b - 1) or q.b, q.e)
       return
     end
@@ -6058,7 +6077,11 @@ for _, c in ipairs(lexicon.not_simulated) do
   for w in (c.bare and c.words or ""):gmatch("%S+") do G.bare_left[w] = G.bare_left[w] or "noted" end
 end
 G.bare_asks = { place = { start = true, aircraft = true, value = true }, meaning = { start = true, aircraft = true,
-  value = true }, after = { value = true }, noted = { aircraft = true } }
+  value = true }, report = { aircraft = true, value = true, place = true, closing = true },
+  noun = { aircraft = true, value = true, place = true }, area = { aircraft = true, value = true },
+  after = { value = true },
+  put_off = { value = true, place = true, closing = true }, noted = { aircraft = true } }
+G.bare_beside_place = { report = true, noun = true, area = true, put_off = true }
 -- True when the word at i, of G.bare_left, is said bare where its kind is asked (G.bare_asks); a word other than a
 -- place's straight before an instruction word is its manner ("continue climb", "cleared descend"), as
 -- is "hold" opening the request ("hold KLM12 climb FL300": the simulation's hold, asked)
@@ -6142,17 +6165,22 @@ function G:unaccounted()
     return G.scale_words[self.t[i].text] and not held[i] and not (self:word(i - 1, "or") and held[i - 2])
       and self:instruction_before(i)
   end
-  -- (a word said bare is asked beside value instructions only, which read no place or noun: G.bare_left)
-  local values_only = #self.out > 0
+  -- (a word said bare is asked beside value instructions only, which read no place or noun: G.bare_left; beside
+  -- any other command, when it is no command's word, G.bare_beside_place)
+  local values_only, places = #self.out > 0, false
   for _, c in ipairs(self.out) do
-    values_only = values_only and (c:match("^ALT ") or c:match("^SPD ") or c:match("^HDG ") or c:match("^VS ")) ~= nil
+    local direct = c:match("^DIRECT ") ~= nil
+    places = places or direct
+    values_only = values_only and (direct or (c:match("^ALT ") or c:match("^SPD ") or c:match("^HDG ")
+      or c:match("^VS ")) ~= nil)
   end
   for i, t in ipairs(self.t) do
     if t.kind == "word" and not t.filler and (not t.number_word or scale_left(i))
         and not explained[i] and not self.noted[i] and not self.u:used(i) and not ignored[t.text]
-        and (scale_left(i) or (t.text:match("^%a[%a'%-/]*$") and (MEANING[t.text] or COMMAND_ONLY[t.text] or not (known_word(t.text) or self:airline_word(i) or self:place_particle(i))
+        and (scale_left(i) or (t.text:match("^%a[%a'%-/]*$") and (MEANING[t.text] or COMMAND_ONLY[t.text] or MANNER[t.text] or not (known_word(t.text) or self:airline_word(i) or self:place_particle(i))
           or airline_left(i) or fraction_left(i) or (lexicon.clock_verbs[t.text] and not self.triggers[i] and not self:resumes_instruction(i))))
-          or glued_value(i) or (G.bare_left[t.text] and values_only and not self.triggers[i] and self:bare_asked(i))) then
+          or glued_value(i) or (G.bare_left[t.text] and (values_only and not places
+            or G.bare_beside_place[G.bare_left[t.text]]) and not self.triggers[i] and self:bare_asked(i))) then
       said[#said + 1] = i
     end
   end
@@ -6172,6 +6200,25 @@ function G:unaccounted()
       self.leftover = t.raw
       if not MEANING[t.text] then self.ignorable = t.text end
       return
+    end
+  end
+end
+
+-- "climb FL300 in a minute", "turn left heading 200 in a moment": a delay said after an instruction with no number
+-- (lexicon.vague_delays: no time squawk can schedule) puts it off, where squawk would send it now: the leftover,
+-- named from "in" to the end of its clause; in a remark of its own ("we'll re-create it in a minute") it is none.
+function G:delay_left()
+  if not self:said("in within") then return end
+  local explained = self.explained or {}
+  for i = 1, #self.t - 1 do
+    local k = self:skip_fillers(i + 1)
+    if self:word(i, "in within") and self:word(k, "@vague_delays") and not (self.u:used(i) or self.u:used(k)
+        or explained[i] or self.noted[i]) and not self:in_reason(i) then
+      local e = k + 1
+      if not self.t[e] or self.t[e].kind == "punct" or self:word(e, "and then") then
+        self.leftover = self:raw(i, e)
+        return
+      end
     end
   end
 end
@@ -6452,6 +6499,16 @@ function G:near_any(i, near, window)
     end
   end
   return false
+end
+
+-- "KLM12 heading 090 right now", "right away, KLM12 turn left heading 200": "right" straight before "now" or "away"
+-- is urgency, no turn's side (a filler); straight after a turn's word ("turn right now") it stays the side.
+function G:urgent_right()
+  for i = 1, #self.t - 1 do
+    if self.words[i] == "right" and self:word(i + 1, "now away") and not self:word(i - 1, "turn turning turns") then
+      self:blank(i)
+    end
+  end
 end
 
 -- "Right, for the next trial I'd like the KLM to turn left ...": a request
@@ -6773,15 +6830,19 @@ function G:said_last(i, near, own_clause)
   return k > #self.t
 end
 
--- What stands before the word at i ("start", "aircraft" or "value") when it stands alone in its clause beside an
--- instruction said ("climb FL300, squawk", "turn left heading 200 then cross", "KLM12 resume, climb FL300", "hold
--- KLM12 climb FL300"): with fillers, "and", "then" and commas skipped, the text's start, a callsign or a value's end
--- before it, and the text's end (closing marks only), an instruction word or (at the start) a callsign after it,
--- with an instruction word and an aircraft somewhere in the request ("ff 120 then hold" holds the simulation); with
--- `apart`, an instruction word straight after it stands apart only with "and", "then" or a comma between. A word
--- opening the request before a comma addresses a station ("Approach, KLM12 climb FL300"). False when it does not.
+-- What stands before the word at i ("start", "aircraft", "value", "place" or "closing") when it stands alone in its
+-- clause beside an instruction said ("climb FL300, squawk", "turn left heading 200 then cross", "KLM12 resume, climb
+-- FL300", "hold KLM12 climb FL300", "direct WP2 done"): with fillers, "and", "then" and commas skipped, the text's
+-- start, a callsign, a value's end or a place a command read before it, and the text's end (closing marks only), an
+-- instruction word or (at the start) a callsign after it, with an instruction word (or a value with its own unit, or,
+-- once read, a command issued: "KLM12 level 280 done") and an aircraft somewhere in the request ("ff 120 then hold" holds the simulation). Once
+-- read, with no aircraft named, a word closing the request after a word its command read is "closing" it ("pause the
+-- simulation done"). With `apart`, an instruction word straight after it stands apart only with "and", "then" or a
+-- comma between. A word opening the request before a comma addresses a station ("Approach, KLM12 climb FL300").
+-- False when it does not.
 function G:said_bare(i, apart)
-  if #self:refs_in(1, #self.t + 1, "aircraft") == 0 then return false end
+  local fleet = #self:refs_in(1, #self.t + 1, "aircraft") > 0
+  if not fleet and #self.out == 0 then return false end
   local function skip(k, step)
     while self.t[k] and (self.t[k].filler or self:word(k, "and then") or self.t[k].text == ",") do k = k + step end
     return k
@@ -6792,16 +6853,46 @@ function G:said_bare(i, apart)
   for _, q in ipairs(before and {} or self:quantities(math.max(1, p - 3), p + 1)) do
     if q.e == p + 1 then before = "value" end
   end
+  for _, r in ipairs(before and {} or self:refs_in(math.max(1, p - 3), p + 1, "waypoint")) do
+    if r.e == p + 1 and self.u:used(p) then before = "place" end
+  end
+  -- (no aircraft named, once read: "closing" the request after a word its command read, "pause the simulation done")
+  if not fleet then
+    local read = p >= 1 and (self.triggers[p] or self.u:used(p) or self.taken[p] or self.t[p].keyword)
+    before = (before == "value" or read) and "closing" or nil
+    if n <= #self.t then return false end
+  end
   if not before then return false end
   while self.t[n] and self.t[n].kind == "punct" and self.t[n].text ~= "," and self.t[n].text ~= "'" do n = n + 1 end
   if not (n > #self.t or (before == "start" and self:has_ref(n, n + 1, "aircraft"))
       or ((n > i + 1 or not apart) and self:intent_at(n))) then
     return false
   end
+  if #self.out > 0 then return before end
   for k = 1, #self.t do
     if k ~= i and self:intent_at(k) then return before end
   end
+  -- (a value with its own unit is an instruction wherever it stands: "KLM12 FL280, weather")
+  for _, q in ipairs(self:quantities(1, #self.t + 1)) do
+    if own_unit(q) then return before end
+  end
   return false
+end
+
+-- True when the word at i is said as an instruction's manner: alone in its clause beside an instruction (G:said_bare:
+-- "climb FL300 quickly", "descend FL200, expedite"), or straight after an instruction word, the callsign or the
+-- request's start and before an instruction word, a value, a turn's side, "to", or the change named ("turn hard
+-- left", "climb rapidly to FL300", "KLM12 hard left heading 350", "expedite your descent").
+function G:said_as_manner(i)
+  if self:said_bare(i) then return true end
+  local p = i - 1
+  while p >= 1 and self.t[p].filler do p = p - 1 end
+  if p >= 1 and not (self:intent_at(p) or self:callsign_before(i)) then return false end
+  local n = self:skip_fillers(i + 1)
+  if self:word(n, "your its their") then n = n + 1 end
+  local q = self:quantities(n, n + 3)[1]
+  return self:word(n, "@left @right to climb descent descend turn") or self:intent_at(n) ~= nil
+    or (q ~= nil and q.b == n)
 end
 
 -- True when the word before token i is one of `subjects` ("already", "has", "had", "was", "were", "just" and
@@ -6886,7 +6977,7 @@ function G:not_simulated()
             and not (c.no_value and self:value_next(i))
             and not (c.no_number_after and self.t[i + 2] and self.t[i + 2].kind == "number")
             and not (c.not_after and self:word(i - 1, c.not_after)) and not self:word(i + 1, "not")
-            and (not c.bare or self:said_bare(i)) then
+            and (not c.bare or self:said_bare(i)) and (not c.manner or self:said_as_manner(i)) then
           local expected = c.not_aircraft_to and self:aircraft_then_to(i + 1)
           if c.routed and self:limit_off_route(i, c.window) then break end
           if expected then
@@ -6901,7 +6992,7 @@ function G:not_simulated()
     end
     if class then
       local e, comma, level_at = i + 1, false, nil
-      while e <= #self.t do
+      while e <= #self.t and not class.manner do
         local x = self.t[e]
         comma = comma or (x.kind == "punct" and x.text == ",")
         -- (a comma goes on: "hold at BAKUR, left hand pattern, inbound track 270" is one clearance)
@@ -7002,7 +7093,8 @@ function G:not_simulated()
       if class.takes_time and later then
         after[#after + 1] = { at = later, what = class.what, said = said }
       end
-      self:mark_used(i, e)
+      -- (a manner is noted only: its instruction is read with it, "expedite descent FL200")
+      if not class.manner then self:mark_used(i, e) end
       for k = i, e - 1 do self.noted[k] = true end
       if not seen[class.what] then
         seen[class.what] = true
@@ -8601,6 +8693,7 @@ function M.translate(text, world)
   g:fix_refs()
   g:navaid_name_refs()
   g:opening_right()
+  g:urgent_right()
   g:runway_sides()
   g:level_limits()
   -- a latitude beyond a pole or a longitude beyond the antimeridian ("95 N", "190 W") is no position
@@ -8717,6 +8810,7 @@ function M.translate(text, world)
   if not g.ask and not g.leftover then g:uncarried_names() end
   if not g.ask and not g.leftover then g:unread_switch() end
   if not g.ask and not g.leftover then g:unaccounted() end
+  if not g.ask and not g.leftover and #g.out > 0 then g:delay_left() end
   if not g.ask and not g.leftover and g:values_only() then g:passage_left() end
   if not g.ask and not g.leftover and g:values_only() then g:going_on_left() end
   if not g.ask and not g.leftover then g:hedged() end

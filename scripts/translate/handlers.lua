@@ -1812,7 +1812,18 @@ function m:pick(c, s, repeated)
   local reps = 0
   for i = s.b, self:said(repeated) and s.e - 1 or 0 do if self:word(i, repeated) then reps = reps + 1 end end
   if reps >= 2 then
-    for k = 1, #c - 1 do self:take(c[k]) end  -- "maintain 5000 ... maintain 6000": the last one counts
+    -- "maintain 5000 ... maintain 5000": said again, one value; "heading 200 heading 100", two values with no
+    -- correction between: which one stands is asked, never the last taken in silence
+    for k = 1, #c - 1 do
+      -- (a value the aircraft leaves, "away from heading 180", "out of FL200", is none of them)
+      local f = self:word(c[k].b - 1, "heading speed level altitude") and c[k].b - 2 or c[k].b - 1
+      local left = self:word(f, "from @level_left leave vacate") or (self:word(f, "of") and self:word(f - 1, "out"))
+      self:take(c[k])
+      if c[k].value ~= c[#c].value and not left then
+        self:need(string.format("I heard '%s' and '%s' for one instruction, with no correction between: which one "
+          .. "stands?", self:raw(c[k].b, c[k].e), self:raw(c[#c].b, c[#c].e)))
+      end
+    end
     return self:take(c[#c])
   end
   return self:take(c[1])

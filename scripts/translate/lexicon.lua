@@ -89,7 +89,8 @@ return {
     discourse = { "well", "right", "alright", "just", "also", "too", "very", "really", "quite", "rather", "bit", "lot",
         "little", "only", "even", "still", "already", "again", "actually", "maybe", "perhaps", "probably",
         "now", "first", "next", "last", "soon", "quickly", "slightly", "fine", "good", "great", "sure",
-        -- (how hard a turn is flown, which squawk's turn model does not take: "hard left heading 350")
+        -- (how hard a turn is flown, which squawk's turn model does not take: "hard left heading 350", named in the
+        -- note when said as the manner, not_simulated)
         "hard", "sharp", "sharply",
         -- (spoken hedges: "the clock is running kinda slow, go 2x")
         "kinda", "sorta", "somewhat",
@@ -219,6 +220,8 @@ return {
     courtesy_phrases = { "pull up", "when you get a chance", "when you can", "when you're ready", "when ready",
         "when able", "if able", "if you can", "if you could", "if you would", "if possible",
         "if you don't mind", "if it's not too much trouble", "as soon as possible", "as soon as you can",
+        -- urgency ("descend FL200 at once", "right away": what squawk sends runs at once)
+        "at once", "right away", "straight away", "without further delay",
         -- the aircraft's (or the simulation's) ability, as "if able" ("up to 390 if the sim lets him")
         "if he can", "if she can", "if it can", "if he's able", "if she's able", "if it's able", "if the sim lets him",
         "if the sim lets her", "if the sim lets it", "if the sim allows", "if the sim allows it", "if the sim can",
@@ -358,15 +361,33 @@ return {
     -- place ("cross", "proceed", "join"), asked for it; `meaning`: a word that may change what is flown
     -- ("resume", "continue", "cleared", a station named: "tower"), asked what it means (G:bare_asked: one straight
     -- before an instruction word is its manner, "continue climb", "cleared descend"); `after`: one asked only after
-    -- the instruction's value
+    -- the instruction's value. `place`, `meaning` and `after` are asked beside value instructions only (ALT, SPD,
+    -- HDG, VS); `report`, `noun`, `area` and `put_off`, words no command reads, beside a direct-to's place and any
+    -- other command too (G:unaccounted, G.bare_beside_place)
     bare_asked = {
       place = { "cross", "crossing", "proceed", "join", "joining", "rejoin", "rejoining", "intercept", "intercepting",
           "via", "route", "routing", "track", "follow", "avoid" },
       meaning = { "resume", "continue", "cleared", "recleared", "fly", "go", "enter", "leave", "establish",
           "established", "cancel", "cruise", "switch", "call", "activate", "deactivate", "enable", "disable", "start",
-          "skip", "regain", "raise", "sink", "tower", "ground", "departure", "centre", "center" },
-      -- (asked after a value only: "stop the Iberia's descent" is the instruction's verb)
-      after = { "stop", "clear" } },
+          "skip", "regain", "raise", "sink", "tower", "ground", "departure", "centre", "center",
+          -- a check asked for ("climb FL300, check")
+          "check", "verify" },
+      -- a state reported as reached ("heading 090 done", "FL300 reached", "pause the simulation done": the speaker
+      -- may report, not instruct), asked after the value, the callsign or (no aircraft named) the command's words
+      report = { "reached", "done", "complete", "completed", "checked", "verified" },
+      -- nouns of the traffic and the simulation that instruct nothing alone, asked after the value, the place or
+      -- the callsign ("descend FL200 spacing", "direct WP2 fuel", "heading 090 wind"; "for spacing" is a purpose,
+      -- read; opening the request, "Conflict 3, ...", a noun names what is addressed)
+      noun = { "separation", "spacing", "sequence", "sequencing", "conflict", "conflicts", "fuel", "tanker", "scope",
+          "wind", "winds", "high", "low" },
+      -- the same of the airspace, said after a place its own ("at LAX airport"): asked after the value or callsign
+      area = { "runway", "airport", "sector", "airspace" },
+      -- (asked after a value only: "stop the Iberia's descent" is the instruction's verb, "sim speed half" the value)
+      after = { "stop", "clear", "half", "level" },
+      -- a time said after the value or (no aircraft named) the command's words, which puts the instruction off
+      -- ("climb FL300 soon", "pause the simulation shortly"), where squawk sends it now; before the next
+      -- instruction, "..., afterwards descend FL200", it orders them
+      put_off = { "soon", "shortly", "afterwards", "afterward", "thereafter", "subsequently", "next", "twice" } },
   },
   -- letters with accents written as navdata writes names, in plain letters ("Düsseldorf" DUSSELDORF)
   accents = { ["à"] = "a", ["á"] = "a", ["â"] = "a", ["ã"] = "a", ["ä"] = "a", ["å"] = "a", ["ç"] = "c",
@@ -824,8 +845,12 @@ return {
   deadline_places = { "boundary", "border", "sector", "fir", "uir", "airspace", "frontier", "handoff", "handover",
       "tma", "cta" },
   -- how gently a climb or descent is flown ("climb at 800 feet a minute, nice and gentle"): said beside the
-  -- vertical speed given, it restates it; with none ("climb FL340 gently") it is asked, no rate being known
-  manner = { "nice", "gentle", "gently", "smooth", "smoothly" },
+  -- vertical speed given, it restates it; with none ("climb FL340 gently", "descend FL200 slowly") it is asked, no
+  -- rate being known (an inflection of a word squawk knows, "slowly", "steadily", is asked the same)
+  manner = { "nice", "gentle", "gently", "smooth", "smoothly", "slowly", "gradually", "steadily", "carefully",
+      "softly", "gingerly", "leisurely", "lazily", "comfortably", "easily" },
+  -- a delay with no number, said after an instruction ("climb FL300 in a minute"): asked (G:delay_left)
+  vague_delays = { "minute", "moment", "bit", "sec", "second", "while" },
   -- a hedge said straight after a value, closing its clause ("descend fl300 maybe", "heading 240 I think"): the
   -- speaker is unsure of the value, which is asked; a hedge before it is courtesy ("could you maybe descend",
   -- "maybe 280 knots"), and a value said loosely ("ish", "about", "or so") is the value said
@@ -982,7 +1007,8 @@ return {
   -- `subject`: the phrase is one only straight after one of these words; `own_clause`: with `last`, a clause
   -- after a comma opened by an imperative verb ("until 5 miles final, descend to 3000 feet") may follow it;
   -- `after_heading`: the phrase is one only after a heading value, with at most "to", "vectors" or a comma
-  -- between them (G:after_heading); `bare`: the word is one only said alone in its clause (G:said_bare);
+  -- between them (G:after_heading); `bare`: the word is one only said alone in its clause (G:said_bare); `manner`:
+  -- one only said as an instruction's manner, the phrase its word alone (G:said_as_manner);
   -- `no_value`: none with a value said straight after its word (G:value_next); `routed`: a place it names off
   -- the route of the one aircraft addressed is asked (G:limit_off_route); `no_number_after`: no phrase when a
   -- number follows its `near` word
@@ -1114,6 +1140,15 @@ return {
     { what = "expected clearances", words = "expect expecting", clause = true, not_aircraft_to = true },
     -- "expedite through FL170": a rate while crossing a level, which squawk does not model
     { what = "expedite instructions", words = "expedite", near = { "through", "passing" } },
+    -- "climb FL300 quickly", "descend FL200, expedite", "turn hard left heading 350", "climb rapidly to FL300": how
+    -- fast or hard a change is flown, said as its manner (`manner`: G:said_as_manner), which squawk flies at the
+    -- aircraft's own rate; the phrase is the word alone, noted and left to its instruction
+    { what = "how fast or hard a change is flown", words = "expedite expedited quickly fast hard sharp sharply",
+      manner = true },
+    -- "turn left heading 170, terrain", "descend FL200 weather", "aua917 terrain!! climb fl190": terrain or weather
+    -- named bare beside an instruction (`bare`: G:said_bare), its reason, which squawk does not simulate
+    { what = "terrain and weather", words = "terrain weather icing storm storms thunderstorm thunderstorms cloud "
+      .. "clouds mountain mountains turbulence", bare = true },
     -- "make a left three sixty", "orbit right": squawk flies no orbits
     { what = "orbits", words = "orbit orbits", takes_time = true },
     { what = "orbits", words = "make do", near = { "sixty", "360", "orbit", "orbits" }, takes_time = true },

@@ -9321,7 +9321,8 @@ do
   local _, ex = scene({ "CRE AC001 B744 52.0 4.0 090 FL300 300" })
   check_eq(ex("AC001 climb to 11 km"), "ALT AC001 36089")
   check_eq(ex("AC001 descend to 8.5 km"), "ALT AC001 27887")
-  check_eq(ex("AC001 descend to FL250 within 10 km"), "ALT AC001 FL250")
+  -- (a distance no command carries is asked, never read as a level nor dropped)
+  check_eq(ex("AC001 descend to FL250 within 10 km"), "ASK I have ALT AC001 FL250. What does '10 km' mean?")
   asked(ex("AC001 descend to 60 km"), "no level is 60 km")
 end
 
@@ -10782,4 +10783,105 @@ do
   check_eq(ex("tamam, continue"), "OP")
   check_eq(ex("kqa7 climb FL320, no wahala"), "ALT KQA7 FL320")
   asked(ex("kqa7 wahala climb FL320"), "'wahala' alone")
+end
+
+-- Cycle 48 (hz55): how fast or hard a change is flown, said as its manner beside the instruction ("quickly",
+-- "expedite", "hard", "sharply"), is flown at the aircraft's own rate and named in the note; a gentle manner with no
+-- rate said ("slowly", "steadily") is asked, a rate said beside it restates it; the instruction with no value asks
+do
+  local s, ex = scene({ "CRE MNR4 A320 51.2 3.1 120 FL210 270" })
+  local function note(text) return graph.translate(text, { sim = s, mode = "offline" }).note or "" end
+  local function noted(text, word)
+    check(note(text):find("how fast or hard a change is flown ('" .. word .. "')", 1, true) ~= nil, text)
+  end
+  check_eq(ex("mnr4 descend FL150 quickly"), "ALT MNR4 FL150")
+  noted("mnr4 descend FL150 quickly", "quickly")
+  check_eq(ex("mnr4 expedite your descent to FL150"), "ALT MNR4 FL150")
+  noted("mnr4 expedite your descent to FL150", "expedite")
+  check_eq(ex("mnr4 reduce 240 knots, expedite"), "SPD MNR4 240")
+  noted("mnr4 reduce 240 knots, expedite", "expedite")
+  check_eq(ex("mnr4 turn hard right heading 200"), "HDG MNR4 200 RIGHT")
+  noted("mnr4 turn hard right heading 200", "hard")
+  check_eq(ex("mnr4 sharply left heading 060"), "HDG MNR4 60 LEFT")
+  check_eq(ex("mnr4 expedite descent"), "ASK What altitude should MNR4 descend to?")
+  check_eq(ex("mnr4 climb FL250 slowly"), "ASK I have ALT MNR4 FL250. What does 'slowly' mean?")
+  check_eq(ex("mnr4 turn left heading 050 steadily"), "ASK I have HDG MNR4 50 LEFT. What does 'steadily' mean?")
+  check_eq(ex("mnr4 climb FL250 at 800 fpm, steadily"), "ALT MNR4 FL250 800")
+end
+
+-- Cycle 48 (hz55): terrain or weather named bare beside an instruction ("descend FL150, terrain", "thunderstorms,
+-- turn right heading 200") is the instruction's reason: flown, and named in the note as not simulated; a noun of
+-- the traffic or the airspace said so ("fuel", "the airport", "spacing" with no "for") is asked
+do
+  local s, ex = scene({ "CRE MNR4 A320 51.2 3.1 120 FL210 270", "DEFWPT RIVET 51.5 3.6", "ADDWPT MNR4 RIVET" })
+  local function note(text) return graph.translate(text, { sim = s, mode = "offline" }).note or "" end
+  check_eq(ex("mnr4 descend FL150, terrain"), "ALT MNR4 FL150")
+  check(note("mnr4 descend FL150, terrain"):find("terrain and weather ('terrain')", 1, true) ~= nil, "terrain noted")
+  check_eq(ex("mnr4 thunderstorms, turn right heading 200"), "HDG MNR4 200 RIGHT")
+  check_eq(ex("mnr4 turn right heading 200 to avoid the storms"), "HDG MNR4 200 RIGHT")
+  check_eq(ex("mnr4 descend FL150 fuel"), "ASK I have ALT MNR4 FL150. What does 'fuel' mean?")
+  check_eq(ex("mnr4 speed 250 the airport"), "ASK I have SPD MNR4 250. What does 'airport' mean?")
+  check_eq(ex("mnr4 direct RIVET spacing"), "ASK I have DIRECT MNR4 RIVET. What does 'spacing' mean?")
+  check_eq(ex("mnr4 turn right heading 200 for spacing"), "HDG MNR4 200 RIGHT")
+end
+
+-- Cycle 48 (hz55): a state reported as reached ("reached", "done", "complete") or a time that puts the instruction off
+-- ("soon", "shortly", "in a moment") said after a complete instruction is asked, never dropped: after a value, a
+-- place or, with no aircraft named, the command's words; "afterwards" before the next instruction orders them, and a
+-- time with its number is scheduled
+do
+  local _, ex = scene({ "CRE MNR4 A320 51.2 3.1 120 FL210 270", "DEFWPT RIVET 51.5 3.6", "ADDWPT MNR4 RIVET" })
+  check_eq(ex("mnr4 descend FL150 reached"), "ASK I have ALT MNR4 FL150. What does 'reached' mean?")
+  check_eq(ex("mnr4 direct RIVET done"), "ASK I have DIRECT MNR4 RIVET. What does 'done' mean?")
+  check_eq(ex("hold the simulation, done"), "ASK I have HOLD. What does 'done' mean?")
+  check_eq(ex("mnr4 climb FL250 shortly"), "ASK I have ALT MNR4 FL250. What does 'shortly' mean?")
+  check_eq(ex("ff 30 soon"), "ASK I have FF 30. What does 'soon' mean?")
+  check_eq(ex("mnr4 turn left heading 050 level"), "ASK I have HDG MNR4 50 LEFT. What does 'level' mean?")
+  check_eq(ex("mnr4 climb FL250 in a moment"), "ASK I have ALT MNR4 FL250. What does 'in a moment' mean?")
+  check_eq(ex("mnr4 climb FL250 in 2 minutes"), "DELAY 120 ALT MNR4 FL250")
+  check_eq(ex("mnr4 climb FL250 and afterwards reduce 250 knots"), "ALT MNR4 FL250 ; SPD MNR4 250")
+  check_eq(ex("please delete mnr4, we'll re-create it in a minute"), "DEL MNR4")
+end
+
+-- Cycle 48 (hz55): "right" straight before "now" or "away" is urgency, no turn's side ("right now, mnr4 turn left
+-- heading 050" turns left); after a turn's word it stays the side; urgency ("at once", "straight away") changes nothing
+do
+  local _, ex = scene({ "CRE MNR4 A320 51.2 3.1 120 FL210 270" })
+  check_eq(ex("right now mnr4 turn left heading 050"), "HDG MNR4 50 LEFT")
+  check_eq(ex("mnr4 turn left heading 050 right away"), "HDG MNR4 50 LEFT")
+  check_eq(ex("mnr4 heading 050 right now"), "HDG MNR4 50")
+  check_eq(ex("mnr4 turn right now heading 050"), "HDG MNR4 50 RIGHT")
+  check_eq(ex("mnr4 descend FL150 at once"), "ALT MNR4 FL150")
+  check_eq(ex("mnr4 descend FL150 straight away"), "ALT MNR4 FL150")
+end
+
+-- Cycle 48 (hz55): a second value said after a complete instruction is asked, never dropped nor taken in silence: the
+-- instruction word said again with another value and no correction ("heading 200 heading 100"), a heading or a time
+-- with its unit that no command carries ("..., heading 100" after a creation's heading, "for 5 minutes"), a distance
+-- closing the request ("direct RIVET 20 miles"); the same value said again, and a correction, stand
+do
+  local _, ex = scene({ "CRE MNR4 A320 51.2 3.1 120 FL210 270", "DEFWPT RIVET 51.5 3.6", "ADDWPT MNR4 RIVET" })
+  check_eq(ex("mnr4 turn left heading 200 heading 100"),
+    "ASK I heard '200' and '100' for one instruction, with no correction between: which one stands?")
+  asked(ex("mnr4 speed 250 speed 230"), "two speeds")
+  check_eq(ex("mnr4 heading 200 heading 200"), "HDG MNR4 200")
+  check_eq(ex("mnr4 heading 200 correction heading 100"), "HDG MNR4 100")
+  check_eq(ex("create TST5 A320 at 51.3 3.2 heading 180 FL200 250 knots, heading 100"),
+    "ASK I have CRE TST5 A320 51.3 3.2 180 FL200 250. What does '100' mean?")
+  check_eq(ex("mnr4 climb FL300 for 5 minutes"), "ASK I have ALT MNR4 FL300. What does '5 minutes' mean?")
+  check_eq(ex("ff 5 minutes"), "FF 300")
+  check_eq(ex("mnr4 direct RIVET 20 miles"), "ASK I have DIRECT MNR4 RIVET. What does '20 miles' mean?")
+  check_eq(ex("mnr4 direct RIVET within 20 miles"), "ASK I have DIRECT MNR4 RIVET. What does '20 miles' mean?")
+end
+
+-- Cycle 48 (hz55): an instruction word with no value said after a complete instruction of another kind is asked:
+-- "level off" after a heading, a descent after a fast-forward; "level off" after a level and a value's name
+-- read by the command it is said with ("back to real time speed") stand
+do
+  local _, ex = scene({ "CRE MNR4 A320 51.2 3.1 120 FL210 270", "CRE BEL7 A320 51.4 3.3 300 FL230 260" })
+  check_eq(ex("mnr4 turn right heading 300 and level off"),
+    "ASK I have HDG MNR4 300 RIGHT. What altitude should MNR4 fly to?")
+  check_eq(ex("mnr4 descend FL150 and level off"), "ALT MNR4 FL150")
+  check_eq(ex("ff 60 descend"), "ASK I have FF 60. Which aircraft should change altitude? Please give its callsign.")
+  check_eq(ex("back to real time speed"), "DTMULT 1")
 end
