@@ -2037,6 +2037,65 @@ function G:quantities(b, e)
   return q
 end
 
+-- A time said in words at token k that the quantities do not read (lexicon.spoken_units, seconds): {kind =
+-- "time", value, b, e} for one unit after "a", "an", "another", "a further" or "one more" ("a minute", "another
+-- minute", "one more minute": b is the "one"), a fraction of it ("half a minute", "a quarter of an hour":
+-- lexicon.fractions) or one and a half ("a minute and a half"); {kind = "time", loose = true, b, e} for a loose one
+-- ("a couple of minutes", "a few minutes", "a minute or two", "a moment", "a bit"); nil for any other word.
+function G:spoken_duration(k)
+  local units = lexicon.spoken_units
+  local function unit(i) return self.t[i] ~= nil and self.t[i].kind == "word" and units[self.t[i].text] end
+  local b, n = k, nil  -- (n: the word after the article)
+  if self:word(k, "a an another") then n = self:word(k, "a an") and self:word(k + 1, "further") and k + 2 or k + 1 end
+  if self:word(k, "more") and self:word(k - 1, "one") and unit(k + 1) then b, n = k - 1, k + 1 end
+  local part = (self:word(k, "@fractions") and k) or (n and self:word(n, "@fractions") and n)
+  if part then
+    local j = self:word(part + 1, "of") and part + 2 or part + 1
+    if self:word(j, "a an") and unit(j + 1) then
+      return { kind = "time", value = lexicon.fractions[self.words[part]] * unit(j + 1), b = b, e = j + 2 }
+    end
+    return nil
+  end
+  if n and unit(n) then
+    if self:word(n + 1, "or") and self:word(n + 2, "two so") then return { kind = "time", loose = true, b = b, e = n + 3 } end
+    if self:word(n + 1, "and") and self:word(n + 2, "a") and self:word(n + 3, "half") then
+      return { kind = "time", value = 1.5 * unit(n), b = b, e = n + 4 }
+    end
+    return { kind = "time", value = unit(n), b = b, e = n + 1 }
+  end
+  local j = n and self:word(n, "little") and n + 1 or n
+  if j and self:word(j, "@loose_whiles") then return { kind = "time", loose = true, b = b, e = j + 1 } end
+  local count = (n and self:word(n, "@loose_counts") and n) or (self:word(k, "@loose_counts") and k)
+  j = count and (self:word(count + 1, "of more") and count + 2 or count + 1)
+  if j and (unit(j) or self:word(j, "seconds secs")) then return { kind = "time", loose = true, b = b, e = j + 1 } end
+  return nil
+end
+
+-- The times said in tokens [b, e), in order: the quantities' times and those said in words (G:spoken_duration,
+-- marked `spoken`) outside them, on words no part of the parse used ("1500 feet a minute" is a rate, read whole).
+function G:durations(b, e)
+  local out, inside = {}, {}
+  for _, q in ipairs(self:quantities(b, e)) do
+    for k = q.b, q.e - 1 do inside[k] = true end
+    if q.kind == "time" then out[#out + 1] = q end
+  end
+  if not self:said("@spoken_units @loose_whiles") then return out end  -- (each holds one of these words)
+  local k = b
+  while k < e do
+    local x = not inside[k] and not self.u:used(k) and self:spoken_duration(k)
+    if x and x.e <= e then
+      x.spoken = true
+      local at = #out + 1
+      while at > 1 and out[at - 1].b > x.b do at = at - 1 end
+      table.insert(out, at, x)
+      k = x.e
+    else
+      k = k + 1
+    end
+  end
+  return out
+end
+
 function G:mark_used(b, e)
   self.u:mark_used(b, e)
   self.qcache = {}
@@ -4393,15 +4452,21 @@ end
 -- ---- every value accounted for ----
 
 -- The numbers a TrafScript line carries, with the readings a spoken value
--- may have had (FL350 is 35000 ft and 350; M.78 is 0.78).
-local function line_numbers(line)
+-- may have had (FL350 is 35000 ft and 350; M.78 is 0.78); with `only` (a set of
+-- registry names), those of the commands in it only ("DELAY 60 HDG KL204 60": 60 once for DELAY).
+local function line_numbers(line, only)
   local nums = {}
+  local cmd, named  -- (the command the numbers belong to; a name straight after one is its argument: "DT ASAS 2")
   for w in line:gmatch("[^%s,]+") do
     local u = w:upper()
+    local name = w:match("^%u+$") and registry_args()[u] and not named
+    if name then cmd = u end
+    named = name
     local v = tonumber(w) or (u:match("^FL%d+$") and tonumber(u:sub(3)) * 100)
         or (u:match("^M%.?%d") and tonumber((u:sub(2):gsub("^%.", "0."))))
+    if only and not only[cmd] then v = nil end
     if v then nums[#nums + 1] = v end
-    if u:match("^FL%d+$") then nums[#nums + 1] = tonumber(u:sub(3)) end
+    if v and u:match("^FL%d+$") then nums[#nums + 1] = tonumber(u:sub(3)) end
   end
   return nums
 end
@@ -4612,14 +4677,18 @@ function G:at_number(q)
 end
 
 local MUST_CARRY = { time = true, lat = true, lon = true, alt = true, speed = true, mach = true, mult = true }
+-- (a time said is carried only by a command that takes a time, lexicon.time_commands: never by a heading, level or
+-- speed of the same figure, "give it 60 seconds and then ... heading 060")
+G.time_commands = set_of(lexicon.time_commands)
 function G:uncarried()
   -- (a value relative to another's, or a change "by" an amount; "as" alone is no comparison: "and slow it
   -- to 250 knots as well"; a position is neither: "cross 30 West at or above FL360", "by 20 West")
   local relative = self:word_in(1, #self.t + 1, "@relative same match @below @above")
   local function position(q) return q.kind == "lat" or q.kind == "lon" end
-  local nums = {}
+  local nums, times = {}, {}
   for _, line in ipairs(self.out) do
     for _, n in ipairs(line_numbers(line)) do nums[#nums + 1] = n end
+    for _, n in ipairs(line_numbers(line, G.time_commands)) do times[#times + 1] = n end
   end
   local corrected = 0
   for i = 1, self:said("@correction") and #self.t or 0 do if self:word(i, "@correction") then corrected = i end end
@@ -4660,8 +4729,20 @@ function G:uncarried()
     if (MUST_CARRY[q.kind] or (q.kind == "plain" and (q.number.decimal or at
           or (q.value >= 10 and (q.b > first or said_for_aircraft(q))))))
         and not self.taken[q.b]
-        and not ((q.by or relative) and not position(q)) and q.b > corrected and not value_carried(q, nums) then
+        and not ((q.by or relative) and not position(q)) and q.b > corrected
+        and not value_carried(q, q.kind == "time" and times or nums) then
       self.leftover = self:raw(at or q.b, q.e)
+      return
+    end
+  end
+  -- (a time said in words after a word of waiting that no instruction waits for, "wait a minute, turn ...", "in
+  -- about a minute ...", is asked with those words, never dropped)
+  for _, q in ipairs(self:durations(1, #self.t + 1)) do
+    local w = q.b - 1
+    while w > 0 and (self.t[w].filler or self:word(w, "@wait_hedges")) do w = w - 1 end
+    local lead = q.spoken and (self:word(w, "in after") and w or self:wait_verb(w))
+    if lead and not (self.explained or {})[q.b] and not self.noted[q.b] and not self:in_reason(q.b) then
+      self.leftover = self:raw(lead, q.e)
       return
     end
   end

@@ -1462,6 +1462,29 @@ return {
   slower = { "slower" },
   -- the clock reaching a time ("when the clock hits 45 minutes")
   clock_reaches = { "hits", "hit", "reaches", "reach", "shows" },
+  -- the commands that take a time said (seconds; G:uncarried): a time is carried by one of their numbers only
+  time_commands = { "DELAY", "FF", "DT", "DTLOOK", "CRECONFS", "TRAIL" },
+  -- a wait said before an instruction (handlers' at_time, DELAY): the verbs that say it ("wait 60 seconds then
+  -- ...", "wait for 2 minutes and ...", "after waiting a minute"), the verbs said with an object before the time
+  -- ("give it sixty seconds and then ...", "allow him 2 minutes, then ...") and those objects, the words that join
+  -- a verb's wait to the instruction after it (one is needed: "wait a minute, turn ..." may be "hold on", asked),
+  -- and the words that say the time has run ("once 90 seconds have passed", "when 2 minutes are up")
+  wait_verbs = { "wait", "waiting" },
+  wait_giving = { "give", "allow", "allowing" },
+  wait_objects = { "it", "him", "her", "them", "us", "that", "this" },
+  wait_joins = { "then", "and", "before" },
+  wait_run = { "passed", "elapsed", "gone", "over", "up" },
+  -- words of an amount said loosely between the wait's word and its time in words ("in about a minute", "give it
+  -- just a minute"): such a wait is asked, never read or dropped
+  wait_hedges = { "about", "around", "roughly", "approximately", "nearly", "almost", "just", "maybe" },
+  -- a time said in words the quantities do not read (G:spoken_durations): one unit after "a" or "an" ("a minute",
+  -- "an hour and a half", "half a minute", "a quarter of an hour"; seconds each, lexicon.fractions for the parts),
+  -- and the loose ones, asked for a time wherever they say a wait: a count that is no number ("a couple of
+  -- minutes", "a few minutes", "several minutes"), a unit "or two" ("a minute or two", "a minute or so"), or a
+  -- while of no length ("a moment", "a bit", "a sec", "a second": "wait a second" is "hold on")
+  spoken_units = { minute = 60, minutes = 60, min = 60, mins = 60, hour = 3600, hours = 3600 },
+  loose_counts = { "couple", "few", "several" },
+  loose_whiles = { "moment", "bit", "while", "sec", "second", "seconds", "secs" },
   -- more of the same ("3 more random ones")
   more = { "more", "extra", "new" },
   -- the performance models PERF selects, by the words that name them ("the simple class-based model")

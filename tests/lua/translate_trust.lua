@@ -10388,3 +10388,45 @@ do
   check_eq(ex("swr8 continue on heading 150"), "HDG SWR8 150")
   check_eq(ex("swr8 heading 150 then resume own navigation"), "HDG SWR8 150 ; LNAV SWR8 ON")
 end
+
+-- Cycle 48 (f112): a wait said before an instruction is DELAY or asked, never dropped: "in", "after", a verb of
+-- waiting joined to the instruction ("wait ... then", "give it ... and then"), "after waiting", "once ... have
+-- passed", "... from now"; a time in words ("a minute", "half a minute", "a minute and a half"); a loose one ("a
+-- couple of minutes", "a moment", "a minute or two") asked for a time; a time is carried only by a command that takes
+-- one, never by a heading of the same figure
+do
+  local _, ex = scene({ "CRE DLH7 A320 50.1 8.6 180 FL150 280", "CRE SWR22 A320 50.3 8.9 90 FL170 280" })
+  check_eq(ex("give it ninety seconds and then turn DLH7 left heading 090"), "DELAY 90 HDG DLH7 90 LEFT")
+  check_eq(ex("wait 2 minutes, then SWR22 climb FL210"), "DELAY 120 ALT SWR22 FL210")
+  check_eq(ex("wait for 45 seconds and slow DLH7 to 250 knots"), "DELAY 45 SPD DLH7 250")
+  check_eq(ex("allow him a minute, then DLH7 descend FL120"), "DELAY 60 ALT DLH7 FL120")
+  check_eq(ex("after a minute SWR22 turn right heading 120"), "DELAY 60 HDG SWR22 120 RIGHT")
+  check_eq(ex("in half a minute DLH7 turn left heading 150"), "DELAY 30 HDG DLH7 150 LEFT")
+  check_eq(ex("SWR22 climb FL200 in a minute and a half"), "DELAY 90 ALT SWR22 FL200")
+  check_eq(ex("SWR22 climb FL200 after waiting 3 minutes"), "DELAY 180 ALT SWR22 FL200")
+  check_eq(ex("once 2 minutes have gone by, DLH7 descend FL110"), "DELAY 120 ALT DLH7 FL110")
+  check_eq(ex("45 seconds from now SWR22 reduce 240 knots"), "DELAY 45 SPD SWR22 240")
+  check_eq(ex("give it one more minute, then SWR22 reduce 240 knots"), "DELAY 60 SPD SWR22 240")
+  check_eq(ex("give him another minute and DLH7 descend FL110"), "DELAY 60 ALT DLH7 FL110")
+  -- (an amount said loosely is asked)
+  check_eq(ex("in about a minute DLH7 descend FL110"), "ASK I have ALT DLH7 FL110. What does 'in about a minute' mean?")
+  -- (the same figure as the heading: the time is still the wait's, and asked when nothing reads it)
+  check_eq(ex("wait 90 seconds then DLH7 left heading 090"), "DELAY 90 HDG DLH7 90 LEFT")
+  check_eq(ex("let 90 seconds pass and then DLH7 left heading 090"),
+    "ASK I have HDG DLH7 90 LEFT. What does '90 seconds' mean?")
+  -- (a loose time is asked for a time)
+  check_eq(ex("in a couple of minutes DLH7 descend FL110"),
+    "ASK How long should the wait before the instruction be? I heard 'in a couple of minutes': please give a time (\"in 2 minutes\").")
+  check(ex("give it a moment and then SWR22 climb FL210"):find("I heard 'give it a moment'", 1, true) ~= nil, "a moment")
+  check(ex("wait a minute or two then DLH7 descend FL110"):find("I heard 'wait a minute or two'", 1, true) ~= nil,
+    "a minute or two")
+  -- (a verb of waiting not joined to the instruction may be "hold on"; one after it is a wait after it; a time in the
+  -- speaker's own clause is no wait of the instruction: all asked)
+  check_eq(ex("wait a minute, DLH7 descend FL110"), "ASK I have ALT DLH7 FL110. What does 'wait a minute' mean?")
+  check_eq(ex("SWR22 climb FL210 and wait 2 minutes"), "ASK I have ALT SWR22 FL210. What does '2 minutes' mean?")
+  check_eq(ex("delete SWR22, we'll re-create it in 3 minutes"), "ASK I have DEL SWR22. What does '3 minutes' mean?")
+  -- (rates and pauses keep their words: "a minute" there is no wait)
+  check_eq(ex("DLH7 descend at 1500 feet a minute"), "VS DLH7 -1500")
+  check_eq(ex("pause the sim for a minute"), "HOLD")
+end
+
