@@ -2916,7 +2916,10 @@ return function(H, f, compass)
       if self:word(r.b, "@navaid_kinds") then kind_said = true else places[#places + 1] = r end
     end
     local no_aircraft = #self:refs_in(s.b, s.e, "aircraft") == 0
-    if no_aircraft and #places > 0 then return self:emit("POS " .. places[1].name) end
+    -- ("what's the Denver doing?", "what is SPY doing": a place does nothing, so a name there is an aircraft's,
+    -- an airline's name squawk may not know: no place is shown, the aircraft is asked for)
+    local doing = self:word_in(s.b, s.e, "doing")
+    if no_aircraft and #places > 0 and not doing then return self:emit("POS " .. places[1].name) end
     -- "where is AFR1234 relative to ANETO", "... in relation to GIROM", "... with respect to LAPOS": the place
     -- the position is wanted from, which POS shows beside the aircraft's own
     if not no_aircraft and #places == 1 and self:word(places[1].b - 1, "to")
@@ -2947,7 +2950,7 @@ return function(H, f, compass)
       described = described or (icao ~= nil and #self:airline_fleet(icao, codes) > 0)
     end
     for _, u in ipairs(self.type_unresolved or {}) do described = described or (u.b >= s.b and u.b < s.e) end
-    named = named or (no_aircraft and not described and self:place_by_name(s.b, s.e))
+    named = named or (no_aircraft and not described and not doing and self:place_by_name(s.b, s.e))
     if named then return self:emit("POS " .. named) end
     if kind_said and no_aircraft then return self:need("Which navaid do you mean? Please give its identifier.") end
     -- "show me where TEST01 and TEST03 are": each aircraft named

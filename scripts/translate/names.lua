@@ -290,6 +290,7 @@ local names = {
     { "tomjet", "TOM" },  -- (TUI Airways' ICAO telephony)
     { "tuijet", "TUI" },  -- (TUIfly)
     { "beauty", "JAF" },  -- (TUI fly Belgium)
+    { "orange", "TFL" },  -- (TUI fly Netherlands, formerly ArkeFly)
     { "azul", "AZU" },
     { "korean air", "KAL" },
     { "pollot", "LOT" },

@@ -10430,3 +10430,18 @@ do
   check_eq(ex("pause the sim for a minute"), "HOLD")
 end
 
+-- Cycle 48 (f112): "what's X doing?" asks after an aircraft: a place is never shown for it (a name there that is no
+-- callsign is an airline's squawk may not know, asked for); "Orange" is TUI fly Netherlands' telephony (TFL)
+do
+  local _, ex = scene({ "CRE TFL77 B738 52.3 4.8 90 FL200 280", "CRE KLM5 B738 52.1 4.5 270 FL210 280",
+    "DEFWPT RIVRA 52.2 4.6" })
+  check_eq(ex("what's the Orange doing?"), "POS TFL77")
+  check_eq(ex("Orange 77, descend FL150"), "ALT TFL77 FL150")
+  check_eq(ex("what is RIVRA doing"), "ASK Which aircraft should be shown? Please give its callsign.")
+  check_eq(ex("where is RIVRA"), "POS RIVRA")
+  local _, nav = navscene({ "CRE KLM5 B738 52.1 4.5 270 FL210 280" }, "places asked what they are doing")
+  if nav then
+    check_eq(nav("what's the Rotterdam doing?"), "ASK I have POS KLM5. What does 'Rotterdam' mean?")
+    check_eq(nav("where's Rotterdam?"), "POS EHRD")
+  end
+end
