@@ -2751,9 +2751,8 @@ function G:segments(b, e)
           -- ("reduce 230, when level reduce 210": the level reached, "when/once (it's) level", likewise)
           local lv = tr.pos - 1
           while lv > between[1].e and self.t[lv].kind == "punct" do lv = lv - 1 end
-          local wh = self:word(lv - 1, "is it's you're") and lv - 2 or lv - 1
-          if self:word(wh, "it you") then wh = wh - 1 end
-          dist_between = dist_between or (self:word(lv, "level") and self:word(wh, "when once") and wh >= between[1].e)
+          local wh = self:word(lv, "level") and self:reached_opening(lv)
+          dist_between = dist_between or (wh and wh >= between[1].e)
           -- (likewise a place said by its name, one or two capitalised words: "reduce 220, reaching Taunus reduce 210")
           for n = 1, 2 do
             local p, named = tr.pos - n, true
@@ -3850,6 +3849,16 @@ end
 -- to FL150, and when it gets there, speed it up to 290": ATALT ... FL150 SPD ...), or by "reaching" alone
 -- ("descend FL60, when reaching reduce speed 210"; "reaching" alone opening the clause: "climb FL370, reaching
 -- Mach .79").
+-- "once level", "when it's level", "once he's there", "when it gets there": the position of "once" or "when"
+-- before the word at k ("level", "lvl", "there"), a subject (lexicon.reached_subjects) and a verb of being or
+-- getting (lexicon.reached_verbs) between or not; nil when none.
+function G:reached_opening(k)
+  local c = k - 1
+  if self:word(c, "@reached_verbs") then c = c - 1 end
+  if self:word(c, "@reached_subjects") then c = c - 1 end
+  return self:word(c, "once when") and c or nil
+end
+
 function G:when_reached(s)
   local c = self:find_word(s.b, s.trig, "@condition")
   if c >= s.trig then

@@ -2089,16 +2089,12 @@ end
 -- units of another kind around a value instruction or a direct-to are
 -- instructions too.
 local CARRIES_OTHERS = { hdg = true, alt = true, spd = true, infer = true, maintain = true, vs = true, direct = true }
--- "once level", "when it's level", "when there" said straight before the value at b (punctuation between):
--- the token of "once"/"when", or nil
+-- "once level", "when it's level", "once he's there" said straight before the value at b (punctuation between):
+-- the token of "once"/"when" (G:reached_opening), or nil
 local function level_reached_before(self, b)
   local k = b - 1
   while self.t[k] and self.t[k].kind == "punct" do k = k - 1 end
-  if not self:word(k, "level lvl there") then return nil end
-  local c = k - 1
-  if self:word(c, "is it's you're") then c = c - 1 end
-  if self:word(c, "it you") then c = c - 1 end
-  return self:word(c, "once when") and c or nil
+  return self:word(k, "level lvl there") and self:reached_opening(k) or nil
 end
 function m:leftovers(s)
   if not CARRIES_OTHERS[s.intent] then return end

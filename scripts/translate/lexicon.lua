@@ -1462,6 +1462,10 @@ return {
   slower = { "slower" },
   -- the clock reaching a time ("when the clock hits 45 minutes")
   clock_reaches = { "hits", "hit", "reaches", "reach", "shows" },
+  -- the words between "once"/"when" and the level or place reached ("when it's level", "once he's there", "when
+  -- they get there": G:reached_opening)
+  reached_subjects = { "it", "you", "he", "she", "they" },
+  reached_verbs = { "is", "it's", "you're", "he's", "she's", "they're", "are", "gets", "get" },
   -- the commands that take a time said (seconds; G:uncarried): a time is carried by one of their numbers only
   time_commands = { "DELAY", "FF", "DT", "DTLOOK", "CRECONFS", "TRAIL" },
   -- a wait said before an instruction (handlers' at_time, DELAY): the verbs that say it ("wait 60 seconds then

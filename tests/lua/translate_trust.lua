@@ -10445,3 +10445,21 @@ do
     check_eq(nav("where's Rotterdam?"), "POS EHRD")
   end
 end
+
+-- Cycle 48 (f112): a value kept ("keep X at 250 knots", "X keep FL140") is maintained, its end "until" a place on the
+-- route named as not simulated; "switch to" / "change to" a speed or Mach is a speed instruction; "once he's there",
+-- "when she's level", "once it gets there" wait for the level cleared before
+do
+  local _, ex = scene({ "CRE AFR33 A320 48.9 2.6 90 FL220 290", "DEFWPT KOVAL 49.0 3.4", "DEFWPT MERUE 49.5 3.0",
+    "ADDWPT AFR33 KOVAL" })
+  check_eq(ex("keep AFR33 at 290 knots until KOVAL"), "SPD AFR33 290")
+  check_eq(ex("AFR33 keep FL220 until KOVAL"), "ALT AFR33 FL220")
+  check(ex("keep AFR33 at 290 knots until MERUE"):match("^ASK MERUE is not on AFR33's route") ~= nil, "off the route")
+  check_eq(ex("AFR33 change to 270 knots"), "SPD AFR33 270")
+  check_eq(ex("AFR33 climb FL260 and once he's there switch to mach .78"), "ALT AFR33 FL260 ; ATALT AFR33 FL260 SPD AFR33 M0.78")
+  check_eq(ex("AFR33 climb FL260 and when she's level, 280 knots"), "ALT AFR33 FL260 ; ATALT AFR33 FL260 SPD AFR33 280")
+  check_eq(ex("AFR33 climb FL260 and once it gets there mach .78"), "ALT AFR33 FL260 ; ATALT AFR33 FL260 SPD AFR33 M0.78")
+  -- (no level cleared before: still asked)
+  check(ex("AFR33 once he's there switch to mach .78"):match("^ASK") ~= nil, "no level before")
+end
+
