@@ -6350,6 +6350,21 @@ end
 -- ...") is a condition on the pilot, left to the parse; "unable" before anything else is left to be asked.
 G.refused_sets = { refused = set_of(lexicon.acknowledged.refused),
   articles = set_of(lexicon.acknowledged.refused_articles), pilots = set_of(lexicon.acknowledged.pilots) }
+-- "three miles instead of five", "FL300 rather than FL320", "heading 200 in place of 180": the value said straight
+-- after the words of replacing is the one replaced, never read (used, and its words accounted for)
+function G:replaced_values()
+  if not self:said("instead rather place") then return end
+  for i = 1, #self.t - 2 do
+    local e = (self:word(i, "instead rather") and self:word(i + 1, "of than") and i + 2)
+      or (self:word(i, "in") and self:word(i + 1, "place") and self:word(i + 2, "of") and i + 3)
+    local q = e and self:quantities(e, math.min(#self.t + 1, e + 4))[1]
+    if q and q.b == self:skip_fillers(e) then
+      self:mark_used(i, q.e)
+      self:explain(i, q.e)
+    end
+  end
+end
+
 function G:refused()
   if not self:said("unable") then return end
   local R = G.refused_sets
@@ -8393,6 +8408,7 @@ function M.translate(text, world)
   g:places_corrected()
   g:question_back()
   g:refused()
+  g:replaced_values()
   g:kept_values()
   g:acknowledged()
   g:stations()

@@ -3242,7 +3242,9 @@ return function(H, f, compass)
       local v = self.t[i].kind == "word" and L.multipliers[self.t[i].text]
       if v then return self:emit("DTMULT " .. f.num(v)) end
     end
-    if self:word_in(s.b, s.e, "normal") then return self:emit("DTMULT 1") end  -- "at normal speed again"
+    -- "at normal speed again" ("go again, normal speed": "normal" straight before the segment's word, left in the
+    -- clause before)
+    if self:word_in(s.b, s.e, "normal") or self:word(s.trig - 1, "normal") then return self:emit("DTMULT 1") end
     local real = self:find_word(s.b, s.e, "real")  -- "slow the clock to real time"
     if real < s.e and self:word(real + 1, "time") then
       -- "N times real time": the factor said before the segment's "real"

@@ -531,6 +531,10 @@ return function(intent, rule, words)
   rule { "speed", "dtmult", next = "it", near = { 5, "times" }, when = function(g, i)
     return g:word(i + 2, "up") and not g:has_ref(1, #g.t + 1, "aircraft")
   end }
+  -- "speed things up a bit, times four": "things" the run, as "it" is, with a rate said after it, no aircraft named
+  rule { "speed", "dtmult", next = "things", when = function(g, i)
+    return g:word(i + 2, "up") and g:followed_by(i, 8, "times x @multipliers") and not g:has_ref(1, #g.t + 1, "aircraft")
+  end }
   -- "a speed-up of 8", "speedup factor 4": the clock's rate as a noun, no aircraft named
   rule { "speed speedup speed-up", "dtmult", near = { 4, "of factor" }, when = function(g, i)
     return (g:word(i, "speedup speed-up") or g:word(i + 1, "up")) and not g:has_ref(1, #g.t + 1, "aircraft")
@@ -2024,6 +2028,17 @@ return function(intent, rule, words)
       if g.t[k].raw:find("[%./]") and g.t[k].kind ~= "punct" then return false end
     end
     return true
+  end }
+  -- "this is the conflict scenario", "it's the training scenario": the scenario running named as what this is, no
+  -- file to load (unless a file is named after it)
+  rule { "scenario", false, not_near = { 4, "load open ic" }, when = function(g, i)
+    for k = i + 1, math.min(#g.t, i + 3) do
+      if g.t[k].raw:find("[%./]") and g.t[k].kind ~= "punct" then return false end
+    end
+    for k = math.max(1, i - 5), i - 1 do
+      if g:word(k, "this that it here") and g:word(k + 1, "is was the our") then return true end
+    end
+    return false
   end }
   -- "fast forward the scenario by 10 minutes", "pause the scenario": the scenario running, the object of a
   -- verb of the clock, no file to load

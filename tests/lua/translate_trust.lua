@@ -10463,3 +10463,19 @@ do
   check(ex("AFR33 once he's there switch to mach .78"):match("^ASK") ~= nil, "no level before")
 end
 
+-- Cycle 48 (f112): a value said after "instead of", "rather than" or "in place of" is the one replaced, never read;
+-- "normal speed" after a clause of its own is real time; "speed things up, times four" is the clock's rate; "this is
+-- the conflict scenario" names the scenario running, no file to load
+do
+  local _, ex = scene({ "CRE AFR33 A320 48.9 2.6 90 FL220 290" })
+  check_eq(ex("set the zone radius to four miles rather than five"), "ZONER 4")
+  check_eq(ex("AFR33 climb FL260 instead of FL240"), "ALT AFR33 FL260")
+  check_eq(ex("AFR33 reduce 250 knots in place of 270"), "SPD AFR33 250")
+  check(ex("zoner 4 and zoner 5"):match("^ASK") ~= nil, "two radii")
+  check_eq(ex("okay, start again, normal speed"), "OP ; DTMULT 1")
+  check_eq(ex("speed things up a little, times three"), "DTMULT 3")
+  check(ex("speed things up"):match("^ASK") ~= nil, "no rate said")
+  check_eq(ex("right, this is the baseline scenario. Conflict detection on please"), "ASAS ON")
+  check_eq(ex("load the baseline scenario"), "ASK Which scenario file should I load?")
+end
+
