@@ -255,6 +255,17 @@ function m:acids(s)
     if from > s.b and self:word_in(s.b, from, "is are was were") then self:explain(s.b, from) end
     take(from, s.trig)
   end
+  -- ("KLM12 is near EZY45, turn him left heading 130": one aircraft said by "him" or "her" beside the instruction
+  -- word, or "it" straight after it, with more than one named for it: which one is not known, asked)
+  if #ids > 1 then
+    local e = math.min(s.e, s.trig + 3)
+    local p = self:find_word(math.max(s.b, s.trig - 2), e, "him her")
+    if p == e and self:word(s.trig + 1, "it") then p = s.trig + 1 end
+    if p < e then
+      self:need(string.format("Which aircraft is '%s': %s? Please give its callsign.", self.t[p].raw,
+        table.concat(ids, " or ")))
+    end
+  end
   self:confirm_callsigns(s)
   -- "BAW918 FL300 and DLH9LT FL310, both 280 kt": "both" names the two aircraft instructed before
   -- ("both Lufthansa planes", "both the easyJets": the two aircraft of the airline named after it, when
@@ -397,6 +408,11 @@ function m:as_context(i)
   if (self:word(k, "of") and (self:word(k - 1, "ahead clear instead") or self:word(k - 1, "front") and self:word(k - 2, "in")))
       or (self:word(k, "from") and self:word(k - 1, "away")) or self:word(k, "below under beneath above") then
     return true
+  end
+  -- ("creeping up on the Easy", "closing on EZY45": the traffic neared, lexicon.neared_verbs)
+  if self:word(k, "on upon") then
+    local v = self:word(k - 1, "up in down") and k - 2 or k - 1
+    if self:word(v, "@neared_verbs") then return true end
   end
   -- ("..., head on with KLM605", "converging with the Ryanair": the traffic met)
   if self:word(k, "with") and (self:word(k - 1, "converging converge converges head-on")

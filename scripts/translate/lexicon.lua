@@ -710,6 +710,9 @@ return {
                        "into", "towards", "toward",
                        -- "vertical separation from RYR7QD": the traffic kept apart from
                        "separation" },
+  -- verbs of one aircraft nearing another, said before "on" (or "up on") the other ("KLM12 is creeping up on the
+  -- Easy", "closing on EZY45", "gaining on the Ryanair"): the other is the traffic neared, never instructed
+  neared_verbs = { "closing", "gaining", "creeping", "catching", "sneaking", "bearing", "coming", "converging", "homing" },
   -- words before an airline said alone ("pointing at the Lufthansa", "too close to the BA", "into the
   -- Austrian's level", "climb through the Lufthansa's level") that make it other traffic, not the aircraft instructed
   airline_context = { "at", "into", "to", "with", "near", "from", "past", "towards", "toward", "except", "but",

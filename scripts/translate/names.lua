@@ -169,6 +169,7 @@ local names = {
     { "giant", "GTI" },
     { "abex", "ABX" },
     { "cargolux", "CLX" },
+    { "quality", "TAY" },  -- (ASL Airlines Belgium, formerly TNT Airways)
     { "execjet", "EJA" },
     { "exec jet", "EJA" },
     { "flexjet", "LXJ" },

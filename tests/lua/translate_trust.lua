@@ -10479,3 +10479,18 @@ do
   check_eq(ex("load the baseline scenario"), "ASK Which scenario file should I load?")
 end
 
+-- Cycle 48 (f112): one aircraft said by "him", "her" (or "it" straight after the instruction word) with two named
+-- before it is asked, never both instructed; one neared ("creeping up on the Easy", "closing on X") is traffic, not
+-- instructed; "Quality" is ASL Airlines Belgium's telephony (TAY)
+do
+  local _, ex = scene({ "CRE AFR33 A320 48.9 2.6 90 FL220 290", "CRE EZY80 A320 49.0 2.9 270 FL220 280",
+    "CRE TAY4K B744 49.2 2.4 180 FL180 260" })
+  check_eq(ex("AFR33 is close to EZY80, turn her left heading 030"),
+    "ASK Which aircraft is 'her': AFR33 or EZY80? Please give its callsign.")
+  check_eq(ex("AFR33 and EZY80 are close, descend it FL200"),
+    "ASK Which aircraft is 'it': AFR33 or EZY80? Please give its callsign.")
+  check_eq(ex("AFR33 and EZY80, turn them left heading 030"), "HDG AFR33 30 LEFT ; HDG EZY80 30 LEFT")
+  check_eq(ex("AFR33 is closing on the Easy, give him heading 030"), "HDG AFR33 30")
+  check_eq(ex("AFR33 is creeping up on EZY80, slow him to 250"), "SPD AFR33 250")
+  check_eq(ex("Quality four kilo, descend FL160"), "ALT TAY4K FL160")
+end
