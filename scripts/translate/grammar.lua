@@ -4363,6 +4363,10 @@ function G:at_waypoint(s, spec)
     end
     if crossed or constrained or opening or be_at or shown or level_by or clause_at then
       local ids = self:acids(s)
+      -- ("Scandinavian, cross ARTIP at FL100": no aircraft named, the one to cross is what is asked)
+      if #ids == 0 then
+        return self:need(string.format("Which aircraft should cross %s? Please give its callsign.", r.name))
+      end
       local now = #ids == 1 and self:state(ids[1])
       local in_route = false
       for _, w in ipairs(now and now.route or {}) do in_route = in_route or w:upper() == r.name:upper() end

@@ -10494,3 +10494,12 @@ do
   check_eq(ex("AFR33 is creeping up on EZY80, slow him to 250"), "SPD AFR33 250")
   check_eq(ex("Quality four kilo, descend FL160"), "ALT TAY4K FL160")
 end
+
+-- Cycle 48 (f112): a crossing with no aircraft named asks for the aircraft, not whether the waypoint is meant
+do
+  local _, ex = scene({ "CRE AFR33 A320 48.9 2.6 90 FL220 290", "DEFWPT KOVAL 49.0 3.4", "ADDWPT AFR33 KOVAL",
+    "CRE EZY80 A320 49.0 2.9 270 FL220 280" })
+  check_eq(ex("cross KOVAL at FL180"), "ASK Which aircraft should cross KOVAL? Please give its callsign.")
+  check_eq(ex("Air France, cross KOVAL at FL180"), "ASK Which aircraft should cross KOVAL? Please give its callsign.")
+  check_eq(ex("AFR33, cross KOVAL at FL180"), "AT AFR33 KOVAL ALT FL180")
+end
