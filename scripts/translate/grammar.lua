@@ -2087,6 +2087,65 @@ function G:quantities(b, e)
   return q
 end
 
+-- A time said in words at token k that the quantities do not read (lexicon.spoken_units, seconds): {kind =
+-- "time", value, b, e} for one unit after "a", "an", "another", "a further" or "one more" ("a minute", "another
+-- minute", "one more minute": b is the "one"), a fraction of it ("half a minute", "a quarter of an hour":
+-- lexicon.fractions) or one and a half ("a minute and a half"); {kind = "time", loose = true, b, e} for a loose one
+-- ("a couple of minutes", "a few minutes", "a minute or two", "a moment", "a bit"); nil for any other word.
+function G:spoken_duration(k)
+  local units = lexicon.spoken_units
+  local function unit(i) return self.t[i] ~= nil and self.t[i].kind == "word" and units[self.t[i].text] end
+  local b, n = k, nil  -- (n: the word after the article)
+  if self:word(k, "a an another") then n = self:word(k, "a an") and self:word(k + 1, "further") and k + 2 or k + 1 end
+  if self:word(k, "more") and self:word(k - 1, "one") and unit(k + 1) then b, n = k - 1, k + 1 end
+  local part = (self:word(k, "@fractions") and k) or (n and self:word(n, "@fractions") and n)
+  if part then
+    local j = self:word(part + 1, "of") and part + 2 or part + 1
+    if self:word(j, "a an") and unit(j + 1) then
+      return { kind = "time", value = lexicon.fractions[self.words[part]] * unit(j + 1), b = b, e = j + 2 }
+    end
+    return nil
+  end
+  if n and unit(n) then
+    if self:word(n + 1, "or") and self:word(n + 2, "two so") then return { kind = "time", loose = true, b = b, e = n + 3 } end
+    if self:word(n + 1, "and") and self:word(n + 2, "a") and self:word(n + 3, "half") then
+      return { kind = "time", value = 1.5 * unit(n), b = b, e = n + 4 }
+    end
+    return { kind = "time", value = unit(n), b = b, e = n + 1 }
+  end
+  local j = n and self:word(n, "little") and n + 1 or n
+  if j and self:word(j, "@loose_whiles") then return { kind = "time", loose = true, b = b, e = j + 1 } end
+  local count = (n and self:word(n, "@loose_counts") and n) or (self:word(k, "@loose_counts") and k)
+  j = count and (self:word(count + 1, "of more") and count + 2 or count + 1)
+  if j and (unit(j) or self:word(j, "seconds secs")) then return { kind = "time", loose = true, b = b, e = j + 1 } end
+  return nil
+end
+
+-- The times said in tokens [b, e), in order: the quantities' times and those said in words (G:spoken_duration,
+-- marked `spoken`) outside them, on words no part of the parse used ("1500 feet a minute" is a rate, read whole).
+function G:durations(b, e)
+  local out, inside = {}, {}
+  for _, q in ipairs(self:quantities(b, e)) do
+    for k = q.b, q.e - 1 do inside[k] = true end
+    if q.kind == "time" then out[#out + 1] = q end
+  end
+  if not self:said("@spoken_units @loose_whiles") then return out end  -- (each holds one of these words)
+  local k = b
+  while k < e do
+    local x = not inside[k] and not self.u:used(k) and self:spoken_duration(k)
+    if x and x.e <= e then
+      x.spoken = true
+      local at = #out + 1
+      while at > 1 and out[at - 1].b > x.b do at = at - 1 end
+      table.insert(out, at, x)
+      k = x.e
+    else
+      k = k + 1
+    end
+  end
+  return out
+end
+
 function G:mark_used(b, e)
   self.u:mark_used(b, e)
   self.qcache = {}
@@ -2800,9 +2859,8 @@ function G:segments(b, e)
           -- ("reduce 230, when level reduce 210": the level reached, "when/once (it's) level", likewise)
           local lv = tr.pos - 1
           while lv > between[1].e and self.t[lv].kind == "punct" do lv = lv - 1 end
-          local wh = self:word(lv - 1, "is it's you're") and lv - 2 or lv - 1
-          if self:word(wh, "it you") then wh = wh - 1 end
-          dist_between = dist_between or (self:word(lv, "level") and self:word(wh, "when once") and wh >= between[1].e)
+          local wh = self:word(lv, "level") and self:reached_opening(lv)
+          dist_between = dist_between or (wh and wh >= between[1].e)
           -- (likewise a place said by its name, one or two capitalised words: "reduce 220, reaching Taunus reduce 210")
           for n = 1, 2 do
             local p, named = tr.pos - n, true
@@ -3975,6 +4033,16 @@ end
 -- to FL150, and when it gets there, speed it up to 290": ATALT ... FL150 SPD ...), or by "reaching" alone
 -- ("descend FL60, when reaching reduce speed 210"; "reaching" alone opening the clause: "climb FL370, reaching
 -- Mach .79").
+-- "once level", "when it's level", "once he's there", "when it gets there": the position of "once" or "when"
+-- before the word at k ("level", "lvl", "there"), a subject (lexicon.reached_subjects) and a verb of being or
+-- getting (lexicon.reached_verbs) between or not; nil when none.
+function G:reached_opening(k)
+  local c = k - 1
+  if self:word(c, "@reached_verbs") then c = c - 1 end
+  if self:word(c, "@reached_subjects") then c = c - 1 end
+  return self:word(c, "once when") and c or nil
+end
+
 function G:when_reached(s)
   local c = self:find_word(s.b, s.trig, "@condition")
   if c >= s.trig then
@@ -4499,6 +4567,10 @@ function G:at_waypoint(s, spec)
     end
     if crossed or constrained or opening or be_at or shown or level_by or clause_at then
       local ids = self:acids(s)
+      -- ("Scandinavian, cross ARTIP at FL100": no aircraft named, the one to cross is what is asked)
+      if #ids == 0 then
+        return self:need(string.format("Which aircraft should cross %s? Please give its callsign.", r.name))
+      end
       local now = #ids == 1 and self:state(ids[1])
       local in_route = false
       for _, w in ipairs(now and now.route or {}) do in_route = in_route or w:upper() == r.name:upper() end
@@ -4597,15 +4669,21 @@ end
 -- ---- every value accounted for ----
 
 -- The numbers a TrafScript line carries, with the readings a spoken value
--- may have had (FL350 is 35000 ft and 350; M.78 is 0.78).
-local function line_numbers(line)
+-- may have had (FL350 is 35000 ft and 350; M.78 is 0.78); with `only` (a set of
+-- registry names), those of the commands in it only ("DELAY 60 HDG KL204 60": 60 once for DELAY).
+local function line_numbers(line, only)
   local nums = {}
+  local cmd, named  -- (the command the numbers belong to; a name straight after one is its argument: "DT ASAS 2")
   for w in line:gmatch("[^%s,]+") do
     local u = w:upper()
+    local name = w:match("^%u+$") and registry_args()[u] and not named
+    if name then cmd = u end
+    named = name
     local v = tonumber(w) or (u:match("^FL%d+$") and tonumber(u:sub(3)) * 100)
         or (u:match("^M%.?%d") and tonumber((u:sub(2):gsub("^%.", "0."))))
+    if only and not only[cmd] then v = nil end
     if v then nums[#nums + 1] = v end
-    if u:match("^FL%d+$") then nums[#nums + 1] = tonumber(u:sub(3)) end
+    if v and u:match("^FL%d+$") then nums[#nums + 1] = tonumber(u:sub(3)) end
   end
   return nums
 end
@@ -4837,19 +4915,18 @@ end
 
 local MUST_CARRY = { time = true, lat = true, lon = true, alt = true, speed = true, mach = true, mult = true,
   heading = true, vs = true }
+-- (a time said is carried only by a command that takes a time, lexicon.time_commands: never by a heading, level or
+-- speed of the same figure, "give it 60 seconds and then ... heading 060")
+G.time_commands = set_of(lexicon.time_commands)
 function G:uncarried()
   -- (a value relative to another's, or a change "by" an amount; "as" alone is no comparison: "and slow it
   -- to 250 knots as well"; a position is neither: "cross 30 West at or above FL360", "by 20 West")
   local relative = self:word_in(1, #self.t + 1, "@relative same match @below @above")
   local function position(q) return q.kind == "lat" or q.kind == "lon" end
-  -- (a time is carried only by a command that holds one: "climb FL300 for 5 minutes" is no FL300's 300 s)
   local nums, times = {}, {}
   for _, line in ipairs(self.out) do
-    local value = G.value_commands[line:match("^(%u+)") or ""]
-    for _, n in ipairs(line_numbers(line)) do
-      nums[#nums + 1] = n
-      if not value then times[#times + 1] = n end
-    end
+    for _, n in ipairs(line_numbers(line)) do nums[#nums + 1] = n end
+    for _, n in ipairs(line_numbers(line, G.time_commands)) do times[#times + 1] = n end
   end
   local corrected = 0
   for i = 1, self:said("@correction") and #self.t or 0 do if self:word(i, "@correction") then corrected = i end end
@@ -4909,6 +4986,17 @@ function G:uncarried()
         and not ((q.by or relative) and not position(q)) and q.b > corrected
         and not (value_carried(q, q.kind == "time" and times or nums) and not said_again(q)) then
       self.leftover = self:raw(at or (self:at_clause(q) and q.b - 1) or q.b, q.e)
+      return
+    end
+  end
+  -- (a time said in words after a word of waiting that no instruction waits for, "wait a minute, turn ...", "in
+  -- about a minute ...", is asked with those words, never dropped)
+  for _, q in ipairs(self:durations(1, #self.t + 1)) do
+    local w = q.b - 1
+    while w > 0 and (self.t[w].filler or self:word(w, "@wait_hedges")) do w = w - 1 end
+    local lead = q.spoken and (self:word(w, "in after") and w or self:wait_verb(w))
+    if lead and not (self.explained or {})[q.b] and not self.noted[q.b] and not self:in_reason(q.b) then
+      self.leftover = self:raw(lead, q.e)
       return
     end
   end
@@ -6569,6 +6657,21 @@ end
 -- ...") is a condition on the pilot, left to the parse; "unable" before anything else is left to be asked.
 G.refused_sets = { refused = set_of(lexicon.acknowledged.refused),
   articles = set_of(lexicon.acknowledged.refused_articles), pilots = set_of(lexicon.acknowledged.pilots) }
+-- "three miles instead of five", "FL300 rather than FL320", "heading 200 in place of 180": the value said straight
+-- after the words of replacing is the one replaced, never read (used, and its words accounted for)
+function G:replaced_values()
+  if not self:said("instead rather place") then return end
+  for i = 1, #self.t - 2 do
+    local e = (self:word(i, "instead rather") and self:word(i + 1, "of than") and i + 2)
+      or (self:word(i, "in") and self:word(i + 1, "place") and self:word(i + 2, "of") and i + 3)
+    local q = e and self:quantities(e, math.min(#self.t + 1, e + 4))[1]
+    if q and q.b == self:skip_fillers(e) then
+      self:mark_used(i, q.e)
+      self:explain(i, q.e)
+    end
+  end
+end
+
 function G:refused()
   if not self:said("unable") then return end
   local R = G.refused_sets
@@ -8709,6 +8812,7 @@ function M.translate(text, world)
   g:places_corrected()
   g:question_back()
   g:refused()
+  g:replaced_values()
   g:kept_values()
   g:acknowledged()
   g:stations()

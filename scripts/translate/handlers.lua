@@ -255,6 +255,17 @@ function m:acids(s)
     if from > s.b and self:word_in(s.b, from, "is are was were") then self:explain(s.b, from) end
     take(from, s.trig)
   end
+  -- ("KLM12 is near EZY45, turn him left heading 130": one aircraft said by "him" or "her" beside the instruction
+  -- word, or "it" straight after it, with more than one named for it: which one is not known, asked)
+  if #ids > 1 then
+    local e = math.min(s.e, s.trig + 3)
+    local p = self:find_word(math.max(s.b, s.trig - 2), e, "him her")
+    if p == e and self:word(s.trig + 1, "it") then p = s.trig + 1 end
+    if p < e then
+      self:need(string.format("Which aircraft is '%s': %s? Please give its callsign.", self.t[p].raw,
+        table.concat(ids, " or ")))
+    end
+  end
   self:confirm_callsigns(s)
   -- "BAW918 FL300 and DLH9LT FL310, both 280 kt": "both" names the two aircraft instructed before
   -- ("both Lufthansa planes", "both the easyJets": the two aircraft of the airline named after it, when
@@ -397,6 +408,11 @@ function m:as_context(i)
   if (self:word(k, "of") and (self:word(k - 1, "ahead clear instead") or self:word(k - 1, "front") and self:word(k - 2, "in")))
       or (self:word(k, "from") and self:word(k - 1, "away")) or self:word(k, "below under beneath above") then
     return true
+  end
+  -- ("creeping up on the Easy", "closing on EZY45": the traffic neared, lexicon.neared_verbs)
+  if self:word(k, "on upon") then
+    local v = self:word(k - 1, "up in down") and k - 2 or k - 1
+    if self:word(v, "@neared_verbs") then return true end
   end
   -- ("..., head on with KLM605", "converging with the Ryanair": the traffic met)
   if self:word(k, "with") and (self:word(k - 1, "converging converge converges head-on")
@@ -1919,28 +1935,74 @@ function m:at_altitude(s)
   return "ATALT " .. ids[1] .. " " .. f.alt(q.value, q.fl)
 end
 
+-- The first word of a verb of waiting ending at w ("wait", "wait for", "give it", "allow him"), or nil.
+function m:wait_verb(w)
+  local v = self:word(w, "for") and w - 1 or w
+  if self:word(v, "@wait_verbs") then return v end
+  if self:word(w, "@wait_objects") and self:word(w - 1, "@wait_giving") then return w - 1 end
+  return nil
+end
+
+-- The first word of a wait said before the time at quantity q (the word before it at w, fillers skipped) for the
+-- instruction word at trig, with no "in" or "after" of its own: a verb of waiting said before the instruction and
+-- joined to it by a word of lexicon.wait_joins ("wait (for) 60 seconds then ...", "give it a minute and then ..."),
+-- "after waiting 2 minutes", "once 90 seconds have passed", "30 seconds from now" (the words after the time
+-- explained); nil when none. A "wait" after a word of self-correction ("no wait 2 minutes") is the correction's.
+function m:wait_lead(w, q, trig)
+  local k = q.e
+  while self.t[k] and (self.t[k].kind == "punct" or self.t[k].filler) and not self:word(k, "@wait_joins") do k = k + 1 end
+  local v = self:wait_verb(w)
+  if v and self:word(v, "@wait_verbs") and self:word(v - 1, "after") then return v - 1 end
+  if v and v < trig and self:word(k, "@wait_joins") and not self:word(v - 1, "no oh") then return v end
+  if self:word(w, "once when after") and self:word(q.e, "have has had is are") then
+    local run = self:word(q.e + 1, "@wait_run") and q.e + 2
+    if run and self:word(run - 1, "gone") then run = self:word(run, "by") and run + 1 end
+    if run then
+      self:explain(q.e, run)
+      return w
+    end
+  end
+  if self:word(q.e, "from") and self:word(q.e + 1, "now") then
+    self:explain(q.e, q.e + 2)
+    return q.b
+  end
+  return nil
+end
+
 -- "in 2 min turn KL204 left heading 180", "pause it at 30 minutes", "when the clock hits 45 minutes
--- pause the sim": the instruction waits for a time, "DELAY s" after "in"/"after" (from now) or
--- "SCHEDULE hh:mm:ss" after "at", "schedule" or the clock reaching it (simulation time); nil when no time is said
--- or the instruction takes its time as a value (FF, DT, DTLOOK, DTMULT; CRECONFS's time to conflict) or its
--- text as typed after it ("echo exercise starts in 2 minutes": the time is ECHO's text). A rate set by
--- the simulation's speed ("in 300 seconds set the simulation speed to 2") is no fast-forward: its time
--- after "in"/"after" waits as any instruction's does.
+-- pause the sim": the instruction waits for a time, "DELAY s" after "in"/"after" (from now) or a wait said
+-- before it (m:wait_lead), "SCHEDULE hh:mm:ss" after "at", "schedule" or the clock reaching it (simulation
+-- time); nil when no time is said or the instruction takes its time as a value (FF, DT, DTLOOK, DTMULT;
+-- CRECONFS's time to conflict) or its text as typed after it ("echo exercise starts in 2 minutes": the time is
+-- ECHO's text). A time said in words is read the same ("in a minute", "give it half a minute and then"), and a
+-- loose one ("in a couple of minutes", "wait a moment then") is asked for a time. A rate set by the simulation's
+-- speed ("in 300 seconds set the simulation speed to 2") is no fast-forward: its time after "in"/"after" waits
+-- as any instruction's does.
+local OWN = {}
+for _, w in ipairs(L.aside.own) do OWN[w] = true end
 local OWN_TIME = { ff = true, dt = true, dtlook = true, dtmult = true, creconfs = true }
 -- (the instructions whose values a wait may stand between)
 local TIMED_VALUES = { alt = true, spd = true, hdg = true, vs = true, maintain = true, infer = true }
 function m:at_time(s)
   if OWN_TIME[s.intent] and not (s.intent == "ff" and self:word(s.trig, "speed spd airspeed")) then return nil end
   if s.intent == "echo" and s.trig == self:skip_fillers(1) and self:word(s.trig, "echo") then return nil end
-  for _, q in ipairs(self:quantities(s.b, s.e)) do
+  for _, q in ipairs(self:durations(s.b, s.e)) do
     local w = q.b - 1
     while w > 0 and self.t[w].filler do w = w - 1 end
     -- (a time of the record in an aside set apart, ", as the controller did at 10:42:15", G:in_reason: accounted)
-    if q.kind == "time" and self:in_reason(q.b) and self:word_in(math.max(1, q.b - 6), q.b, "@record_past") then
+    if not q.spoken and self:in_reason(q.b) and self:word_in(math.max(1, q.b - 6), q.b, "@record_past") then
       self:mark_used(q.b, q.e)
       return nil
     end
-    if q.kind == "time" and not self.taken[q.b] then
+    -- (a time in a reason set aside after the instruction, or in a clause of the speaker's own, "delete KLM12,
+    -- we'll re-create it in 2 minutes", is no wait of the instruction: left to the accounting)
+    if q.b > s.trig and (self:in_reason(q.b) or self:word_in(s.trig, q.b, OWN)) then return nil end
+    local lead = not self.taken[q.b] and (self:word(w, "in after") and w or self:wait_lead(w, q, s.trig))
+    if q.spoken and lead and q.loose then
+      return self:need(string.format("How long should the wait before the instruction be? I heard '%s': please "
+        .. "give a time (\"in 2 minutes\").", self:raw(lead, q.e)))
+    end
+    if not self.taken[q.b] and (lead or not q.spoken) then
       local clock = self:word(w, "@clock_reaches") and self:word_in(math.max(1, w - 3), w, "@sim")
       -- ("at sim time 00:10:00 freeze": the clock's time named before it)
       if self:word(w, "time") and self:word(w - 1, "@sim") and self:word(w - 2, "at") then
@@ -1950,7 +2012,8 @@ function m:at_time(s)
         self:mark_used(w, w + 1)
         w = w - 1
       end
-      if not self:word(w, "in after at schedule") and not clock then return nil end
+      if not lead and not self:word(w, "at schedule") and not clock then return nil end
+      w = lead or w
       -- (after "and" past the instruction word it opens the next instruction: "KL204 climb FL300 and in
       -- 2 minutes EZY45 descend": left uncarried, so asked about)
       if q.b > s.trig and self:word_in(s.trig, w, "and then") then return nil end
@@ -1962,11 +2025,12 @@ function m:at_time(s)
         return nil
       end
       self:mark_used(q.b, q.e)
-      self:mark_used(w, w + 1)
+      self:mark_used(w, math.min(w + 1, q.b))
+      if lead then self:mark_used(lead, q.b) end
       -- ("pause it at the 20 minute mark": the time's noun after it)
       if self:word(q.e, "mark") then self:mark_used(q.e, q.e + 1) end
       local t = math.floor(q.value + 0.5)
-      local at = self:word(w, "in after") and "DELAY " .. f.num(q.value)
+      local at = lead and "DELAY " .. f.num(q.value)
         or string.format("SCHEDULE %02d:%02d:%02d", t // 3600, t % 3600 // 60, t % 60)
       -- ("hop7 fl100 in 2 min hdg 220", "descend FL100 in 2 minutes turn left heading 220": a wait between two
       -- instructions with nothing to part them may be the one before's, the one after's or both's: asked)
@@ -2111,16 +2175,12 @@ end
 -- units of another kind around a value instruction or a direct-to are
 -- instructions too.
 local CARRIES_OTHERS = { hdg = true, alt = true, spd = true, infer = true, maintain = true, vs = true, direct = true }
--- "once level", "when it's level", "when there" said straight before the value at b (punctuation between):
--- the token of "once"/"when", or nil
+-- "once level", "when it's level", "once he's there" said straight before the value at b (punctuation between):
+-- the token of "once"/"when" (G:reached_opening), or nil
 local function level_reached_before(self, b)
   local k = b - 1
   while self.t[k] and self.t[k].kind == "punct" do k = k - 1 end
-  if not self:word(k, "level lvl there") then return nil end
-  local c = k - 1
-  if self:word(c, "is it's you're") then c = c - 1 end
-  if self:word(c, "it you") then c = c - 1 end
-  return self:word(c, "once when") and c or nil
+  return self:word(k, "level lvl there") and self:reached_opening(k) or nil
 end
 function m:leftovers(s)
   if not CARRIES_OTHERS[s.intent] then return end

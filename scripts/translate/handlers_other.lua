@@ -2943,7 +2943,10 @@ return function(H, f, compass)
       if self:word(r.b, "@navaid_kinds") then kind_said = true else places[#places + 1] = r end
     end
     local no_aircraft = #self:refs_in(s.b, s.e, "aircraft") == 0
-    if no_aircraft and #places > 0 then return self:emit("POS " .. places[1].name) end
+    -- ("what's the Denver doing?", "what is SPY doing": a place does nothing, so a name there is an aircraft's,
+    -- an airline's name squawk may not know: no place is shown, the aircraft is asked for)
+    local doing = self:word_in(s.b, s.e, "doing")
+    if no_aircraft and #places > 0 and not doing then return self:emit("POS " .. places[1].name) end
     -- "where is AFR1234 relative to ANETO", "... in relation to GIROM", "... with respect to LAPOS": the place
     -- the position is wanted from, which POS shows beside the aircraft's own
     if not no_aircraft and #places == 1 and self:word(places[1].b - 1, "to")
@@ -2974,7 +2977,7 @@ return function(H, f, compass)
       described = described or (icao ~= nil and #self:airline_fleet(icao, codes) > 0)
     end
     for _, u in ipairs(self.type_unresolved or {}) do described = described or (u.b >= s.b and u.b < s.e) end
-    named = named or (no_aircraft and not described and self:place_by_name(s.b, s.e))
+    named = named or (no_aircraft and not described and not doing and self:place_by_name(s.b, s.e))
     if named then return self:emit("POS " .. named) end
     if kind_said and no_aircraft then return self:need("Which navaid do you mean? Please give its identifier.") end
     -- "show me where TEST01 and TEST03 are": each aircraft named
@@ -3266,7 +3269,9 @@ return function(H, f, compass)
       local v = self.t[i].kind == "word" and L.multipliers[self.t[i].text]
       if v then return self:emit("DTMULT " .. f.num(v)) end
     end
-    if self:word_in(s.b, s.e, "normal") then return self:emit("DTMULT 1") end  -- "at normal speed again"
+    -- "at normal speed again" ("go again, normal speed": "normal" straight before the segment's word, left in the
+    -- clause before)
+    if self:word_in(s.b, s.e, "normal") or self:word(s.trig - 1, "normal") then return self:emit("DTMULT 1") end
     local real = self:find_word(s.b, s.e, "real")  -- "slow the clock to real time"
     if real < s.e and self:word(real + 1, "time") then
       -- "N times real time": the factor said before the segment's "real"

@@ -742,6 +742,9 @@ return {
                        "into", "towards", "toward",
                        -- "vertical separation from RYR7QD": the traffic kept apart from
                        "separation" },
+  -- verbs of one aircraft nearing another, said before "on" (or "up on") the other ("KLM12 is creeping up on the
+  -- Easy", "closing on EZY45", "gaining on the Ryanair"): the other is the traffic neared, never instructed
+  neared_verbs = { "closing", "gaining", "creeping", "catching", "sneaking", "bearing", "coming", "converging", "homing" },
   -- words before an airline said alone ("pointing at the Lufthansa", "too close to the BA", "into the
   -- Austrian's level", "climb through the Lufthansa's level") that make it other traffic, not the aircraft instructed
   airline_context = { "at", "into", "to", "with", "near", "from", "past", "towards", "toward", "except", "but",
@@ -1512,6 +1515,33 @@ return {
   slower = { "slower" },
   -- the clock reaching a time ("when the clock hits 45 minutes")
   clock_reaches = { "hits", "hit", "reaches", "reach", "shows" },
+  -- the words between "once"/"when" and the level or place reached ("when it's level", "once he's there", "when
+  -- they get there": G:reached_opening)
+  reached_subjects = { "it", "you", "he", "she", "they" },
+  reached_verbs = { "is", "it's", "you're", "he's", "she's", "they're", "are", "gets", "get" },
+  -- the commands that take a time said (seconds; G:uncarried): a time is carried by one of their numbers only
+  time_commands = { "DELAY", "FF", "DT", "DTLOOK", "CRECONFS", "TRAIL" },
+  -- a wait said before an instruction (handlers' at_time, DELAY): the verbs that say it ("wait 60 seconds then
+  -- ...", "wait for 2 minutes and ...", "after waiting a minute"), the verbs said with an object before the time
+  -- ("give it sixty seconds and then ...", "allow him 2 minutes, then ...") and those objects, the words that join
+  -- a verb's wait to the instruction after it (one is needed: "wait a minute, turn ..." may be "hold on", asked),
+  -- and the words that say the time has run ("once 90 seconds have passed", "when 2 minutes are up")
+  wait_verbs = { "wait", "waiting" },
+  wait_giving = { "give", "allow", "allowing" },
+  wait_objects = { "it", "him", "her", "them", "us", "that", "this" },
+  wait_joins = { "then", "and", "before" },
+  wait_run = { "passed", "elapsed", "gone", "over", "up" },
+  -- words of an amount said loosely between the wait's word and its time in words ("in about a minute", "give it
+  -- just a minute"): such a wait is asked, never read or dropped
+  wait_hedges = { "about", "around", "roughly", "approximately", "nearly", "almost", "just", "maybe" },
+  -- a time said in words the quantities do not read (G:spoken_durations): one unit after "a" or "an" ("a minute",
+  -- "an hour and a half", "half a minute", "a quarter of an hour"; seconds each, lexicon.fractions for the parts),
+  -- and the loose ones, asked for a time wherever they say a wait: a count that is no number ("a couple of
+  -- minutes", "a few minutes", "several minutes"), a unit "or two" ("a minute or two", "a minute or so"), or a
+  -- while of no length ("a moment", "a bit", "a sec", "a second": "wait a second" is "hold on")
+  spoken_units = { minute = 60, minutes = 60, min = 60, mins = 60, hour = 3600, hours = 3600 },
+  loose_counts = { "couple", "few", "several" },
+  loose_whiles = { "moment", "bit", "while", "sec", "second", "seconds", "secs" },
   -- more of the same ("3 more random ones")
   more = { "more", "extra", "new" },
   -- the performance models PERF selects, by the words that name them ("the simple class-based model")

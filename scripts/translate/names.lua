@@ -169,6 +169,7 @@ local names = {
     { "giant", "GTI" },
     { "abex", "ABX" },
     { "cargolux", "CLX" },
+    { "quality", "TAY" },  -- (ASL Airlines Belgium, formerly TNT Airways)
     { "execjet", "EJA" },
     { "exec jet", "EJA" },
     { "flexjet", "LXJ" },
@@ -290,6 +291,7 @@ local names = {
     { "tomjet", "TOM" },  -- (TUI Airways' ICAO telephony)
     { "tuijet", "TUI" },  -- (TUIfly)
     { "beauty", "JAF" },  -- (TUI fly Belgium)
+    { "orange", "TFL" },  -- (TUI fly Netherlands, formerly ArkeFly)
     { "azul", "AZU" },
     { "korean air", "KAL" },
     { "pollot", "LOT" },

@@ -437,6 +437,16 @@ return function(intent, rule, words)
   rule { "keep", "maintain", next = "it him her them", when = function(g, i)
     return g:word(i + 2, "at") and g.t[i + 3] ~= nil and (g.t[i + 3].kind == "number" or g:word(i + 3, "fl flight"))
   end }
+  -- "keep KLM12 at 280 knots", "KLM12 keep FL140", "keep the Easy at mach .78": a value with its own unit said
+  -- straight after the verb (the aircraft and "at" between or not) is the value kept
+  rule { "keep", "maintain", when = function(g, i)
+    local k = g:skip_fillers(i + 1)
+    local r = g:refs_in(k, k + 1, "aircraft")[1]
+    if r then k = g:skip_fillers(r.e) end
+    if g:word(k, "at") then k = k + 1 end
+    local q = g:quantities(k, math.min(#g.t + 1, k + 4))[1]
+    return q ~= nil and q.b == k and (q.kind == "alt" or q.kind == "speed" or q.kind == "mach")
+  end }
 
 
   -- speed, and the simulation's speed
@@ -475,6 +485,11 @@ return function(intent, rule, words)
     local at = g:word(i + 1, "to") and i + 2 or i + 1
     local q = g:quantities(at, math.min(#g.t + 1, at + 4))[1]
     return q ~= nil and q.b == at and (q.kind == "speed" or q.kind == "mach")
+  end }
+  -- "switch to Mach .76", "change to 250 knots": the same after "switch" or "change" and "to"
+  rule { "switch change", "spd", next = "to", when = function(g, i)
+    local q = g:quantities(i + 2, math.min(#g.t + 1, i + 6))[1]
+    return q ~= nil and q.b == i + 2 and (q.kind == "speed" or q.kind == "mach")
   end }
   rule { "speed", "dtmult", near = { 3, "factor multiplier" } }  -- "speed-up factor 2"
   -- "set the timescale to 4", "time scale 2x": a game engine's time scale, the simulation's rate
@@ -515,6 +530,10 @@ return function(intent, rule, words)
   -- "speed it up to times 5": "it" the run, when no aircraft is named
   rule { "speed", "dtmult", next = "it", near = { 5, "times" }, when = function(g, i)
     return g:word(i + 2, "up") and not g:has_ref(1, #g.t + 1, "aircraft")
+  end }
+  -- "speed things up a bit, times four": "things" the run, as "it" is, with a rate said after it, no aircraft named
+  rule { "speed", "dtmult", next = "things", when = function(g, i)
+    return g:word(i + 2, "up") and g:followed_by(i, 8, "times x @multipliers") and not g:has_ref(1, #g.t + 1, "aircraft")
   end }
   -- "a speed-up of 8", "speedup factor 4": the clock's rate as a noun, no aircraft named
   rule { "speed speedup speed-up", "dtmult", near = { 4, "of factor" }, when = function(g, i)
@@ -2018,6 +2037,17 @@ return function(intent, rule, words)
       if g.t[k].raw:find("[%./]") and g.t[k].kind ~= "punct" then return false end
     end
     return true
+  end }
+  -- "this is the conflict scenario", "it's the training scenario": the scenario running named as what this is, no
+  -- file to load (unless a file is named after it)
+  rule { "scenario", false, not_near = { 4, "load open ic" }, when = function(g, i)
+    for k = i + 1, math.min(#g.t, i + 3) do
+      if g.t[k].raw:find("[%./]") and g.t[k].kind ~= "punct" then return false end
+    end
+    for k = math.max(1, i - 5), i - 1 do
+      if g:word(k, "this that it here") and g:word(k + 1, "is was the our") then return true end
+    end
+    return false
   end }
   -- "fast forward the scenario by 10 minutes", "pause the scenario": the scenario running, the object of a
   -- verb of the clock, no file to load

@@ -10837,7 +10837,8 @@ do
   check_eq(ex("mnr4 climb FL250 shortly"), "ASK I have ALT MNR4 FL250. What does 'shortly' mean?")
   check_eq(ex("ff 30 soon"), "ASK I have FF 30. What does 'soon' mean?")
   check_eq(ex("mnr4 turn left heading 050 level"), "ASK I have HDG MNR4 50 LEFT. What does 'level' mean?")
-  check_eq(ex("mnr4 climb FL250 in a moment"), "ASK I have ALT MNR4 FL250. What does 'in a moment' mean?")
+  check_eq(ex("mnr4 climb FL250 in a moment"),
+    "ASK How long should the wait before the instruction be? I heard 'in a moment': please give a time (\"in 2 minutes\").")
   check_eq(ex("mnr4 climb FL250 in 2 minutes"), "DELAY 120 ALT MNR4 FL250")
   check_eq(ex("mnr4 climb FL250 and afterwards reduce 250 knots"), "ALT MNR4 FL250 ; SPD MNR4 250")
   check_eq(ex("please delete mnr4, we'll re-create it in a minute"), "DEL MNR4")
@@ -10884,4 +10885,119 @@ do
   check_eq(ex("mnr4 descend FL150 and level off"), "ALT MNR4 FL150")
   check_eq(ex("ff 60 descend"), "ASK I have FF 60. Which aircraft should change altitude? Please give its callsign.")
   check_eq(ex("back to real time speed"), "DTMULT 1")
+end
+
+-- Cycle 48 (f112): a wait said before an instruction is DELAY or asked, never dropped: "in", "after", a verb of
+-- waiting joined to the instruction ("wait ... then", "give it ... and then"), "after waiting", "once ... have
+-- passed", "... from now"; a time in words ("a minute", "half a minute", "a minute and a half"); a loose one ("a
+-- couple of minutes", "a moment", "a minute or two") asked for a time; a time is carried only by a command that takes
+-- one, never by a heading of the same figure
+do
+  local _, ex = scene({ "CRE DLH7 A320 50.1 8.6 180 FL150 280", "CRE SWR22 A320 50.3 8.9 90 FL170 280" })
+  check_eq(ex("give it ninety seconds and then turn DLH7 left heading 090"), "DELAY 90 HDG DLH7 90 LEFT")
+  check_eq(ex("wait 2 minutes, then SWR22 climb FL210"), "DELAY 120 ALT SWR22 FL210")
+  check_eq(ex("wait for 45 seconds and slow DLH7 to 250 knots"), "DELAY 45 SPD DLH7 250")
+  check_eq(ex("allow him a minute, then DLH7 descend FL120"), "DELAY 60 ALT DLH7 FL120")
+  check_eq(ex("after a minute SWR22 turn right heading 120"), "DELAY 60 HDG SWR22 120 RIGHT")
+  check_eq(ex("in half a minute DLH7 turn left heading 150"), "DELAY 30 HDG DLH7 150 LEFT")
+  check_eq(ex("SWR22 climb FL200 in a minute and a half"), "DELAY 90 ALT SWR22 FL200")
+  check_eq(ex("SWR22 climb FL200 after waiting 3 minutes"), "DELAY 180 ALT SWR22 FL200")
+  check_eq(ex("once 2 minutes have gone by, DLH7 descend FL110"), "DELAY 120 ALT DLH7 FL110")
+  check_eq(ex("45 seconds from now SWR22 reduce 240 knots"), "DELAY 45 SPD SWR22 240")
+  check_eq(ex("give it one more minute, then SWR22 reduce 240 knots"), "DELAY 60 SPD SWR22 240")
+  check_eq(ex("give him another minute and DLH7 descend FL110"), "DELAY 60 ALT DLH7 FL110")
+  -- (an amount said loosely is asked)
+  check_eq(ex("in about a minute DLH7 descend FL110"), "ASK I have ALT DLH7 FL110. What does 'in about a minute' mean?")
+  -- (the same figure as the heading: the time is still the wait's, and asked when nothing reads it)
+  check_eq(ex("wait 90 seconds then DLH7 left heading 090"), "DELAY 90 HDG DLH7 90 LEFT")
+  check_eq(ex("let 90 seconds pass and then DLH7 left heading 090"),
+    "ASK I have HDG DLH7 90 LEFT. What does '90 seconds' mean?")
+  -- (a loose time is asked for a time)
+  check_eq(ex("in a couple of minutes DLH7 descend FL110"),
+    "ASK How long should the wait before the instruction be? I heard 'in a couple of minutes': please give a time (\"in 2 minutes\").")
+  check(ex("give it a moment and then SWR22 climb FL210"):find("I heard 'give it a moment'", 1, true) ~= nil, "a moment")
+  check(ex("wait a minute or two then DLH7 descend FL110"):find("I heard 'wait a minute or two'", 1, true) ~= nil,
+    "a minute or two")
+  -- (a verb of waiting not joined to the instruction may be "hold on"; one after it is a wait after it; a time in the
+  -- speaker's own clause is no wait of the instruction: all asked)
+  check_eq(ex("wait a minute, DLH7 descend FL110"), "ASK I have ALT DLH7 FL110. What does 'wait a minute' mean?")
+  check_eq(ex("SWR22 climb FL210 and wait 2 minutes"), "ASK I have ALT SWR22 FL210. What does '2 minutes' mean?")
+  check_eq(ex("delete SWR22, we'll re-create it in 3 minutes"), "ASK I have DEL SWR22. What does '3 minutes' mean?")
+  -- (rates and pauses keep their words: "a minute" there is no wait)
+  check_eq(ex("DLH7 descend at 1500 feet a minute"), "VS DLH7 -1500")
+  check_eq(ex("pause the sim for a minute"), "HOLD")
+end
+
+-- Cycle 48 (f112): "what's X doing?" asks after an aircraft: a place is never shown for it (a name there that is no
+-- callsign is an airline's squawk may not know, asked for); "Orange" is TUI fly Netherlands' telephony (TFL)
+do
+  local _, ex = scene({ "CRE TFL77 B738 52.3 4.8 90 FL200 280", "CRE KLM5 B738 52.1 4.5 270 FL210 280",
+    "DEFWPT RIVRA 52.2 4.6" })
+  check_eq(ex("what's the Orange doing?"), "POS TFL77")
+  check_eq(ex("Orange 77, descend FL150"), "ALT TFL77 FL150")
+  check_eq(ex("what is RIVRA doing"), "ASK Which aircraft should be shown? Please give its callsign.")
+  check_eq(ex("where is RIVRA"), "POS RIVRA")
+  local _, nav = navscene({ "CRE KLM5 B738 52.1 4.5 270 FL210 280" }, "places asked what they are doing")
+  if nav then
+    check_eq(nav("what's the Rotterdam doing?"), "ASK I have POS KLM5. What does 'Rotterdam' mean?")
+    check_eq(nav("where's Rotterdam?"), "POS EHRD")
+  end
+end
+
+-- Cycle 48 (f112): a value kept ("keep X at 250 knots", "X keep FL140") is maintained, its end "until" a place on the
+-- route named as not simulated; "switch to" / "change to" a speed or Mach is a speed instruction; "once he's there",
+-- "when she's level", "once it gets there" wait for the level cleared before
+do
+  local _, ex = scene({ "CRE AFR33 A320 48.9 2.6 90 FL220 290", "DEFWPT KOVAL 49.0 3.4", "DEFWPT MERUE 49.5 3.0",
+    "ADDWPT AFR33 KOVAL" })
+  check_eq(ex("keep AFR33 at 290 knots until KOVAL"), "SPD AFR33 290")
+  check_eq(ex("AFR33 keep FL220 until KOVAL"), "ALT AFR33 FL220")
+  check(ex("keep AFR33 at 290 knots until MERUE"):match("^ASK MERUE is not on AFR33's route") ~= nil, "off the route")
+  check_eq(ex("AFR33 change to 270 knots"), "SPD AFR33 270")
+  check_eq(ex("AFR33 climb FL260 and once he's there switch to mach .78"), "ALT AFR33 FL260 ; ATALT AFR33 FL260 SPD AFR33 M0.78")
+  check_eq(ex("AFR33 climb FL260 and when she's level, 280 knots"), "ALT AFR33 FL260 ; ATALT AFR33 FL260 SPD AFR33 280")
+  check_eq(ex("AFR33 climb FL260 and once it gets there mach .78"), "ALT AFR33 FL260 ; ATALT AFR33 FL260 SPD AFR33 M0.78")
+  -- (no level cleared before: still asked)
+  check(ex("AFR33 once he's there switch to mach .78"):match("^ASK") ~= nil, "no level before")
+end
+
+-- Cycle 48 (f112): a value said after "instead of", "rather than" or "in place of" is the one replaced, never read;
+-- "normal speed" after a clause of its own is real time; "speed things up, times four" is the clock's rate; "this is
+-- the conflict scenario" names the scenario running, no file to load
+do
+  local _, ex = scene({ "CRE AFR33 A320 48.9 2.6 90 FL220 290" })
+  check_eq(ex("set the zone radius to four miles rather than five"), "ZONER 4")
+  check_eq(ex("AFR33 climb FL260 instead of FL240"), "ALT AFR33 FL260")
+  check_eq(ex("AFR33 reduce 250 knots in place of 270"), "SPD AFR33 250")
+  check(ex("zoner 4 and zoner 5"):match("^ASK") ~= nil, "two radii")
+  check_eq(ex("okay, start again, normal speed"), "OP ; DTMULT 1")
+  check_eq(ex("speed things up a little, times three"), "DTMULT 3")
+  check(ex("speed things up"):match("^ASK") ~= nil, "no rate said")
+  check_eq(ex("right, this is the baseline scenario. Conflict detection on please"), "ASAS ON")
+  check_eq(ex("load the baseline scenario"), "ASK Which scenario file should I load?")
+end
+
+-- Cycle 48 (f112): one aircraft said by "him", "her" (or "it" straight after the instruction word) with two named
+-- before it is asked, never both instructed; one neared ("creeping up on the Easy", "closing on X") is traffic, not
+-- instructed; "Quality" is ASL Airlines Belgium's telephony (TAY)
+do
+  local _, ex = scene({ "CRE AFR33 A320 48.9 2.6 90 FL220 290", "CRE EZY80 A320 49.0 2.9 270 FL220 280",
+    "CRE TAY4K B744 49.2 2.4 180 FL180 260" })
+  check_eq(ex("AFR33 is close to EZY80, turn her left heading 030"),
+    "ASK Which aircraft is 'her': AFR33 or EZY80? Please give its callsign.")
+  check_eq(ex("AFR33 and EZY80 are close, descend it FL200"),
+    "ASK Which aircraft is 'it': AFR33 or EZY80? Please give its callsign.")
+  check_eq(ex("AFR33 and EZY80, turn them left heading 030"), "HDG AFR33 30 LEFT ; HDG EZY80 30 LEFT")
+  check_eq(ex("AFR33 is closing on the Easy, give him heading 030"), "HDG AFR33 30")
+  check_eq(ex("AFR33 is creeping up on EZY80, slow him to 250"), "SPD AFR33 250")
+  check_eq(ex("Quality four kilo, descend FL160"), "ALT TAY4K FL160")
+end
+
+-- Cycle 48 (f112): a crossing with no aircraft named asks for the aircraft, not whether the waypoint is meant
+do
+  local _, ex = scene({ "CRE AFR33 A320 48.9 2.6 90 FL220 290", "DEFWPT KOVAL 49.0 3.4", "ADDWPT AFR33 KOVAL",
+    "CRE EZY80 A320 49.0 2.9 270 FL220 280" })
+  check_eq(ex("cross KOVAL at FL180"), "ASK Which aircraft should cross KOVAL? Please give its callsign.")
+  check_eq(ex("Air France, cross KOVAL at FL180"), "ASK Which aircraft should cross KOVAL? Please give its callsign.")
+  check_eq(ex("AFR33, cross KOVAL at FL180"), "AT AFR33 KOVAL ALT FL180")
 end
