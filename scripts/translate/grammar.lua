@@ -7188,6 +7188,68 @@ function G.run_together_position(text)
   end
   return text, nil
 end
+-- A level or heading said digit by digit and run on into a speed with no break before the speed's unit ("flight
+-- level eight zero two four zero knots", "heading two seven zero two twenty knots"): the digit and tens words
+-- between the value's name and the unit split between two words where the value before is what it can be and the
+-- speed after is one (lexicon.run_on; "one twenty two fifty" splits after "twenty"). Returns the text with a comma
+-- at the split that fits, and nil; the text and a question naming the words when none fits; the text and nil when
+-- no value runs on so (three digits or fewer after the name).
+G.run_on_names, G.speed_units = {}, set_of(lexicon.speed_units)  -- (the value's name -> "level" or "heading")
+for _, w in ipairs(lexicon.run_on.level_words) do G.run_on_names[w] = "level" end
+for _, w in ipairs(lexicon.run_on.heading_words) do G.run_on_names[w] = "heading" end
+function G.run_on_values(text)
+  local low = text:lower()
+  if not (low:find("kt", 1, true) or low:find("kno", 1, true)) then return text, nil end
+  local RUN_ON, RUN_ON_NAMES, SPEED_UNITS = lexicon.run_on, G.run_on_names, G.speed_units
+  local toks = {}  -- each word: b, e (the text's positions, e past it), w (lower case, no punctuation), bare
+  for b, w, e in text:gmatch("()(%S+)()") do
+    local lw = w:lower()
+    toks[#toks + 1] = { b = b, e = e, w = lw:gsub("%p+$", ""), bare = not lw:find("%p$") }
+  end
+  -- the digits of words [b, e) said as one value ("two twenty" 220, "twenty two" 22: a tens word takes the digit
+  -- after it), or nil when a word is no digit or tens word
+  local function digits(b, e)
+    local out, k = "", b
+    while k < e do
+      local t = toks[k]
+      local tens = t.bare and G.coordinate_tens[t.w]
+      local unit = k + 1 < e and toks[k + 1].bare and SAID_DIGIT[toks[k + 1].w]
+      if tens then
+        out, k = out .. tens .. ((unit and unit ~= "0") and unit or "0"), k + ((unit and unit ~= "0") and 2 or 1)
+      elseif t.bare and SAID_DIGIT[t.w] then
+        out, k = out .. SAID_DIGIT[t.w], k + 1
+      else
+        return nil
+      end
+    end
+    return out
+  end
+  local function within(d, bounds) return tonumber(d) >= bounds[1] and tonumber(d) <= bounds[2] end
+  local function fits(kind, d)
+    if kind == "heading" then return #d == 3 and within(d, RUN_ON.heading) end
+    return (#d == 3 or (#d == 2 and d:sub(1, 1) ~= "0")) and within(d, RUN_ON.level)
+  end
+  for i = 1, #toks - 1 do
+    local kind = toks[i].bare and RUN_ON_NAMES[toks[i].w]
+    if kind then
+      local k = i + 1
+      while toks[k] and digits(k, k + 1) do k = k + 1 end
+      if #digits(i + 1, k) > 3 and toks[k] and SPEED_UNITS[toks[k].w] then
+        -- (each word adds a digit to the speed before it, so one split at most leaves the speed three digits)
+        for at = i + 2, k - 1 do
+          local value, speed = digits(i + 1, at), digits(at, k)
+          if fits(kind, value) and #speed == 3 and speed:sub(1, 1) ~= "0" and within(speed, RUN_ON.speed) then
+            return G.run_on_values(text:sub(1, toks[at - 1].e - 1) .. "," .. text:sub(toks[at - 1].e))
+          end
+        end
+        local from = (kind == "level" and i > 1 and toks[i - 1].bare and toks[i - 1].w == "flight") and i - 1 or i
+        return text, string.format("Which %s and speed do you mean? I heard '%s' with no break, and its digits "
+          .. "give no %s and speed together.", kind, text:sub(toks[from].b, toks[k].e - 1):gsub("%p+$", ""), kind)
+      end
+    end
+  end
+  return text, nil
+end
 local NATIONLESS = set_of(lexicon.nationless_registrations)
 local function spelled_registrations(text, fleet)
   if #fleet == 0 then return text end
@@ -8255,6 +8317,9 @@ function M.translate(text, world)
   text, run_together = G.run_together_position(text)
   if run_together then return { commands = {}, ask = run_together } end
   text = G.terse_altitude(spelled_airports(typed_places(written_forms(text, world), world), world), world)
+  local run_on
+  text, run_on = G.run_on_values(text)
+  if run_on then return { commands = {}, ask = run_on } end
   -- a time typed in two parts ("at 10:30", "schedule at 00:15: ..."): hours and minutes or minutes and
   -- seconds, which squawk does not tell apart (FF reads "ff 1:30" itself); asked when another command
   -- would run without it

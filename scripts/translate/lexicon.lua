@@ -917,6 +917,12 @@ return {
   min_airborne_kt = 40,
   -- a vertical speed [ft/min] typed below this as VS's ("vs 15") may have lost its zeros: asked
   min_typed_fpm = 100,
+  -- a level or heading said digit by digit and run on into a speed before its unit with no break ("flight level
+  -- eight zero two four zero knots"; grammar.lua G.run_on_values): the words naming the value, and what each part
+  -- can be: a flight level of two or three digits within `level` [FL], a heading of three digits within `heading`
+  -- [deg], a speed of three digits, the first no zero, within `speed` [kt]
+  run_on = { level_words = { "level", "fl" }, heading_words = { "heading", "hdg" }, level = { 30, 600 },
+    heading = { 0, 360 }, speed = { 100, 399 } },
   -- a number with no unit after "at" after a cleared flight level, read as the vertical speed [ft/min] within
   -- these bounds ("descend FL120 at one thousand five hundred"; "at 250" is a speed, asked)
   rate_after_level = { 500, 6000 },

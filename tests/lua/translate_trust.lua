@@ -10388,3 +10388,26 @@ do
   check_eq(ex("swr8 continue on heading 150"), "HDG SWR8 150")
   check_eq(ex("swr8 heading 150 then resume own navigation"), "HDG SWR8 150 ; LNAV SWR8 ON")
 end
+
+-- Cycle 48 (f115): a level or heading said digit by digit and run on into a speed before "knots" with no break is
+-- split where each part is what it can be (lexicon.run_on); digits that split no such way are asked, and a
+-- creation's flight level is held to the bounds a climb's is
+do
+  local _, ex = scene({ "CRE MPH5 B744 52.3 4.8 090 FL200 280" })
+  check_eq(ex("mph5 descend flight level nine zero two one zero knots"), "ALT MPH5 FL90 ; SPD MPH5 210")
+  check_eq(ex("mph5 climb flight level three three zero two niner zero knots"), "ALT MPH5 FL330 ; SPD MPH5 290")
+  check_eq(ex("mph5 descend flight level one twenty two thirty knots"), "ALT MPH5 FL120 ; SPD MPH5 230")
+  check_eq(ex("mph5 turn left heading three one zero two thirty knots"), "HDG MPH5 310 LEFT ; SPD MPH5 230")
+  check_eq(ex("create TST9 A320 at 52.0 4.0 heading zero niner zero flight level seven zero two five zero knots"),
+    "CRE TST9 A320 52 4 90 FL70 250")
+  -- (FL12 and 180 kt, or FL121 and 80 kt: neither fits)
+  asked(ex("mph5 descend flight level one two one eight zero knots"), "a run that splits no way is asked")
+  -- (no unit after the run: the level read is out of bounds)
+  asked(ex("mph5 descend flight level seven zero two five zero"), "FL702 is asked")
+  asked(ex("create TST9 A320 at 52.0 4.0 heading zero niner zero flight level seven zero two five zero"),
+    "a creation at FL702 is asked")
+  asked(ex("create TST9 A320 at 52.0 4.0 heading 090 flight level two zero speed 250"), "a spoken FL20 is asked")
+  asked(ex("create TST9 A320 at 52.0 4.0 heading 090 flight level 9000 speed 250"), "flight level 9000 is asked")
+  asked(ex("create TST9 A320 at 52.0 4.0 heading three one zero two three zero flight level 100"),
+    "a heading beyond 360 is asked")
+end
