@@ -514,14 +514,15 @@ end
 -- "turn left heading 170", "montez au niveau 140" -> "climb to flight level 140". A sentence holding a
 -- marking word of a language (the first of G.said_whole_order holding one) is read in that language alone;
 -- one holding none, in every language's words that mark none.
-G.said_whole_order = { "spanish", "french", "german" }
+G.said_whole_order = { "spanish", "french", "german", "dutch" }
 function G.said_whole(text)
   local indexes = G.said_whole_index()
   -- (the form of `index` starting at token i, or nil; punctuation may close its last word only; `joining`
   -- forms only when `marked`)
+  -- (a word typed in capitals is a name or a code, never a form: "over OKE", "direct JA")
   local function form_at(index, toks, bare, i, marked)
     local forms = index[bare[i]]
-    if not forms then return nil end
+    if not forms or toks[i]:match("^%u%u+%p*$") then return nil end
     for _, h in ipairs(forms) do
       local ok = marked or not h.joining
       for k = 2, #h.words do ok = ok and bare[i + k - 1] == h.words[k] and not toks[i + k - 2]:match("%p$") end
@@ -5198,18 +5199,20 @@ for _, p in ipairs(lexicon.asides_alone) do
   table.insert(G.asides_alone[words[1]], words)
 end
 -- "ist gut, pause", "tui3k climb fl350, alles klar": an aside of lexicon.asides_alone starting at token i, standing
--- alone in its clause (the request's edge or punctuation before and after it, fillers between), is marked in `inside`
+-- alone in its clause (the request's edge or punctuation before and after it, fillers between), or opening the
+-- request ("oké continue", transcribed with no break after it: no value before it to call fine), is marked in
+-- `inside`
 function G:aside_alone(i, inside)
   local phrases = G.asides_alone[self.t[i].text]
   if not phrases then return end  -- (called at every token: most start no such phrase)
-  local function edge(k, step)
+  local function edge(k, step, start)
     while self.t[k] and self.t[k].filler do k = k + step end
-    return self.t[k] == nil or self.t[k].kind == "punct"
+    return self.t[k] == nil or (not start and self.t[k].kind == "punct")
   end
   for _, p in ipairs(phrases) do
     local ok = true
     for x = 2, #p do ok = ok and self.t[i + x - 1] ~= nil and self.t[i + x - 1].text == p[x] end
-    if ok and edge(i - 1, -1) and edge(i + #p, 1) then
+    if ok and ((edge(i - 1, -1) and edge(i + #p, 1)) or edge(i - 1, -1, true)) then
       for x = i, i + #p - 1 do inside[x] = true end
       return
     end

@@ -10411,3 +10411,39 @@ do
   asked(ex("create TST9 A320 at 52.0 4.0 heading three one zero two three zero flight level 100"),
     "a heading beyond 360 is asked")
 end
+
+-- Cycle 48 (f115): Dutch words in a Dutch or Belgian controller's or sim operator's English are read through
+-- lexicon.said_whole.dutch, as German; a Dutch word the table lacks is still asked about by name
+do
+  local _, ex = scene({ "CRE KLM77 B738 52.1 4.5 180 FL150 250", "CRE TRA6 B738 52.3 4.1 090 FL200 260" })
+  check_eq(ex("pauzeer de simulatie graag"), "HOLD")
+  check_eq(ex("zet de simulatie op vier keer"), "DTMULT 4")
+  check_eq(ex("verwijder klm seven seven"), "DEL KLM77")
+  check_eq(ex("gooi transavia six weg"), "DEL TRA6")
+  check_eq(ex("klm seven seven draai rechts koers twee zeven nul"), "HDG KLM77 270 RIGHT")
+  check_eq(ex("klm seven seven daal naar vliegniveau een twee nul"), "ALT KLM77 FL120")
+  check_eq(ex("wat doet transavia six"), "POS TRA6")
+  check_eq(ex("conflict detectie aan"), "ASAS ON")
+  check_eq(ex("ja klm seven seven descend flight level one two zero"), "ALT KLM77 FL120")
+  check_eq(ex("maak een nieuw vliegtuig aan klm one two three a three twenty at 52.0 4.0 heading 090 fl100 250 knots"),
+    "CRE KLM123 A320 52 4 90 FL100 250")
+  check_eq(ex("trails aan graag snel"), "ASK I have TRAIL ON. What does 'snel' mean?")
+  asked(ex("zet een waypoint"), "'een' as an article elsewhere is asked")
+  -- (German stays German: "vier" and "acht" are said the same in both)
+  check_eq(ex("klm seven seven sinken flight level acht null bitte"), "ALT KLM77 FL80")
+  -- an acknowledgement opening the request with no break after it is the aside; after a value it is still asked
+  check_eq(ex("oké pauzeer de simulatie"), "HOLD")
+  check_eq(ex("alles klar klm seven seven descend flight level one two zero"), "ALT KLM77 FL120")
+  asked(ex("klm seven seven descend flight level one two zero oke heading 200"), "'oke' after a value is asked")
+end
+
+-- Cycle 48 (f115): a word typed in capitals is a name or a code, never a word of a language said whole ("over OKE":
+-- the VOR, where "oké" is Dutch)
+do
+  local _, ex = navscene({ "CRE LOT7 B738 52.4 20.9 300 FL150 270" }, "a navaid typed in capitals")
+  if ex then
+    check_eq(ex("LOT7 at 20 miles from OKE descend FL80"), "ATDIST LOT7 OKE 20 ALT LOT7 FL80")
+    check_eq(ex("create LOT3921 E190 over OKE heading 270 8000 ft 250 kt"), "CRE LOT3921 E190 OKE 270 8000 250")
+  end
+end
+
