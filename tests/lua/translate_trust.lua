@@ -10447,3 +10447,25 @@ do
   end
 end
 
+-- Cycle 48 (f115): a Boeing family's variant said as one number after the family ("seven eight seven nine", "787 8")
+-- is that variant when the name is the same designator as its hundreds ("787-9", "787-900"); "737 8" (737-8, the MAX
+-- 8, or the 737-800 said short) is still asked. "Boeing seven three eight", the designator's digits after the maker,
+-- is that designator; a family's number so said ("Boeing seven three seven") is still asked
+do
+  local _, ex = scene({ "CRE KLM12 B738 52.0 4.0 090 FL200 280" })
+  check_eq(ex("create klm eight seven one boeing seven eight seven nine at 52.2 4.2 heading 270 fl310 280 knots"),
+    "CRE KLM871 B789 52.2 4.2 270 FL310 280")
+  check_eq(ex("create klm eight seven two boeing 787 8 at 52.2 4.2 heading 270 fl310 280 knots"),
+    "CRE KLM872 B788 52.2 4.2 270 FL310 280")
+  check_eq(ex("create klm eight seven three boeing seven eight seven ten at 52.2 4.2 heading 270 fl310 280 knots"),
+    "CRE KLM873 B78X 52.2 4.2 270 FL310 280")
+  check_eq(ex("create klm eight seven four boeing seven three eight at 52.2 4.2 heading 270 fl310 280 knots"),
+    "CRE KLM874 B738 52.2 4.2 270 FL310 280")
+  check_eq(ex("create klm eight seven five boeing seven four four at 52.2 4.2 heading 270 fl310 280 knots"),
+    "CRE KLM875 B744 52.2 4.2 270 FL310 280")
+  asked(ex("create klm eight seven six boeing seven three seven eight at 52.2 4.2 heading 270 fl310 280 knots"),
+    "737 and 8: the MAX 8 or the 737-800")
+  asked(ex("create klm eight seven seven boeing seven three seven at 52.2 4.2 heading 270 fl310 280 knots"),
+    "a 737 without its variant")
+end
+
