@@ -10469,3 +10469,19 @@ do
     "a 737 without its variant")
 end
 
+-- Cycle 48 (f115): the telephony of the Netherlands' and Belgium's leisure and regional airlines ("city" KLM
+-- Cityhopper, "orange" TUI fly Netherlands, "corendon" Corendon Airlines, "dutch corendon" Corendon Dutch Airlines,
+-- "france soleil" Transavia France) is read wherever a callsign stands; an airline heard that the aircraft's is not
+-- is still confirmed
+do
+  local _, ex = scene({ "CRE KLC43X E175 51.95 4.20 150 4000 220", "CRE TFL8HC B38M 51.20 5.95 345 FL140 280",
+    "CRE CAI4LT B738 50.90 5.00 250 FL370 275", "CRE CND55B B738 51.30 4.40 020 FL090 260",
+    "CRE TVF63RA A320 51.40 4.00 190 FL340 280" })
+  check_eq(ex("remove city four three x ray"), "DEL KLC43X")
+  check_eq(ex("klm city four three x ray climb flight level one zero zero"), "ALT KLC43X FL100")
+  check_eq(ex("list the route of orange eight hotel charlie"), "LISTRTE TFL8HC")
+  check_eq(ex("delete corendon four lima tango"), "DEL CAI4LT")
+  check_eq(ex("where is dutch corendon five five bravo"), "POS CND55B")
+  check_eq(ex("delete france soleil six three romeo alpha"), "DEL TVF63RA")
+  check_eq(ex("corendon five five bravo turn left heading 100"), "ASK Did you mean CND55B? I heard CAI55B.")
+end
