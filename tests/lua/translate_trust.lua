@@ -10485,3 +10485,16 @@ do
   check_eq(ex("delete france soleil six three romeo alpha"), "DEL TVF63RA")
   check_eq(ex("corendon five five bravo turn left heading 100"), "ASK Did you mean CND55B? I heard CAI55B.")
 end
+
+-- Cycle 48 (f115): a level said group-wise after "passing", "leaving" or "reaching" ("passing one hundred") is that
+-- flight level for an aircraft at or above lexicon.groupwise_from_ft, as a climb's is; lower down it is asked
+do
+  local _, ex = scene({ "CRE KLM1234 B738 52.4 6.3 275 FL120 290", "CRE KLM12 B738 52.4 6.3 275 8000 250" })
+  check_eq(ex("klm one two three four descend flight level seven zero and passing one hundred reduce two five zero"),
+    "ALT KLM1234 FL70 ; ATALT KLM1234 FL100 SPD KLM1234 250")
+  check_eq(ex("klm one two three four climb flight level two hundred, leaving one hundred fifty speed two eight zero"),
+    "ALT KLM1234 FL200 ; ATALT KLM1234 FL150 SPD KLM1234 280")
+  asked(ex("klm one two descend five thousand feet and passing one hundred reduce two two zero"),
+    "below 10000 ft 'one hundred' may be feet")
+end
+
