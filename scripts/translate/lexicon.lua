@@ -1179,6 +1179,7 @@ return {
                     ["santo domingo"] = "las americas", kingston = "norman manley", ["montego bay"] = "sangster",
                     nassau = "lynden pindling", ["port of spain"] = "piarco", ["grand cayman"] = "owen roberts",
                     ["panama city"] = "tocumen", bogota = "eldorado", ["port-au-prince"] = "toussaint louverture",
+                    curacao = "hato", aruba = "reina beatrix", bonaire = "flamingo",
                     -- (West and Central Africa: capitals and hubs whose one airport the navdata names otherwise)
                     lagos = "murtala muhammed", abuja = "nnamdi azikiwe", kano = "mallam aminu", accra = "kotoka",
                     lome = "gnassingbe eyadema", abidjan = "abidjan felix houphouet boigny", dakar = "leopold sedar senghor",
@@ -1186,8 +1187,10 @@ return {
                     niamey = "diori hamani", cotonou = "cadjehoun", bamako = "senou", libreville = "leon m ba",
                     yaounde = "yaounde nsimalen", monrovia = "monrovia roberts", freetown = "freetown lungi",
                     ["n'djamena"] = "ndjamena hassan djamous", ndjamena = "ndjamena hassan djamous",
-                    -- (Belgium, Switzerland and New England: the city's airport named after a place beside it)
+                    -- (Belgium, Switzerland and New England: the city's airport named after a place beside it;
+                    -- Brussels's national airport, its BRUSSELS SOUTH being Charleroi's)
                     charleroi = "brussels south", ostend = "oostende", antwerp = "deurne", basel = "bale mulhouse",
+                    brussels = "brussels natl", zaventem = "brussels natl",
                     boston = "general edward lawrence logan",
                     -- (California: the city's airport named after a person)
                     burbank = "bob hope",

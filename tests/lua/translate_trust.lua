@@ -10498,3 +10498,16 @@ do
     "below 10000 ft 'one hundred' may be feet")
 end
 
+-- Cycle 48 (f115): Brussels's airport (BRUSSELS NATL; BRUSSELS SOUTH is Charleroi's) and the ABC islands' airports
+-- by the island's name (lexicon.city_airports); a distance from a name navaids bear beside the airport is still asked
+do
+  local _, ex = navscene({ "CRE KLM1 B738 51 4 90 FL100 250" }, "airports by a city's or an island's name")
+  if ex then
+    check_eq(ex("klm one destination brussels"), "DEST KLM1 EBBR")
+    check_eq(ex("set wind two four zero degrees twenty five knots over brussels airport"), "WIND EBBR 240 25")
+    check_eq(ex("klm one origin schiphol destination curacao"), "ORIG KLM1 EHAM ; DEST KLM1 TNCC")
+    check_eq(ex("klm one destination aruba"), "DEST KLM1 TNCA")
+    asked(ex("klm one at 30 miles from brussels descend fl80"), "the airport or a Brussels navaid")
+  end
+end
+
