@@ -10511,3 +10511,13 @@ do
   end
 end
 
+-- Cycle 48 (f115), decisions kept: a creation with its callsign, type and place only is CRE with the command's
+-- defaults (some 40 rows of older rounds expect it); a value that would leave one before it at 0 is asked. A climb
+-- or descent rate said with no level is VS (some 300 older rows expect it); the verb with neither is asked
+do
+  local _, ex = scene({ "CRE EZY4612 A320 53.5 5.0 100 FL340 280" })
+  check_eq(ex("create klm one two three a three twenty at 52.0 4.0"), "CRE KLM123 A320 52 4")
+  asked(ex("create klm one two three a three twenty at 52.0 4.0 flight level one zero zero"), "no heading before it")
+  check_eq(ex("easy four six one two climb at one thousand feet per minute"), "VS EZY4612 1000")
+  asked(ex("easy four six one two climb"), "no level and no rate")
+end
