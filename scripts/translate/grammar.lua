@@ -514,14 +514,15 @@ end
 -- "turn left heading 170", "montez au niveau 140" -> "climb to flight level 140". A sentence holding a
 -- marking word of a language (the first of G.said_whole_order holding one) is read in that language alone;
 -- one holding none, in every language's words that mark none.
-G.said_whole_order = { "spanish", "french", "german" }
+G.said_whole_order = { "spanish", "french", "german", "dutch" }
 function G.said_whole(text)
   local indexes = G.said_whole_index()
   -- (the form of `index` starting at token i, or nil; punctuation may close its last word only; `joining`
   -- forms only when `marked`)
+  -- (a word typed in capitals is a name or a code, never a form: "over OKE", "direct JA")
   local function form_at(index, toks, bare, i, marked)
     local forms = index[bare[i]]
-    if not forms then return nil end
+    if not forms or toks[i]:match("^%u%u+%p*$") then return nil end
     for _, h in ipairs(forms) do
       local ok = marked or not h.joining
       for k = 2, #h.words do ok = ok and bare[i + k - 1] == h.words[k] and not toks[i + k - 2]:match("%p$") end
@@ -5535,18 +5536,20 @@ for _, p in ipairs(lexicon.asides_alone) do
   table.insert(G.asides_alone[words[1]], words)
 end
 -- "ist gut, pause", "tui3k climb fl350, alles klar": an aside of lexicon.asides_alone starting at token i, standing
--- alone in its clause (the request's edge or punctuation before and after it, fillers between), is marked in `inside`
+-- alone in its clause (the request's edge or punctuation before and after it, fillers between), or opening the
+-- request ("oké continue", transcribed with no break after it: no value before it to call fine), is marked in
+-- `inside`
 function G:aside_alone(i, inside)
   local phrases = G.asides_alone[self.t[i].text]
   if not phrases then return end  -- (called at every token: most start no such phrase)
-  local function edge(k, step)
+  local function edge(k, step, start)
     while self.t[k] and self.t[k].filler do k = k + step end
-    return self.t[k] == nil or self.t[k].kind == "punct"
+    return self.t[k] == nil or (not start and self.t[k].kind == "punct")
   end
   for _, p in ipairs(phrases) do
     local ok = true
     for x = 2, #p do ok = ok and self.t[i + x - 1] ~= nil and self.t[i + x - 1].text == p[x] end
-    if ok and edge(i - 1, -1) and edge(i + #p, 1) then
+    if ok and ((edge(i - 1, -1) and edge(i + #p, 1)) or edge(i - 1, -1, true)) then
       for x = i, i + #p - 1 do inside[x] = true end
       return
     end
@@ -7650,6 +7653,68 @@ function G.run_together_position(text)
   end
   return text, nil
 end
+-- A level or heading said digit by digit and run on into a speed with no break before the speed's unit ("flight
+-- level eight zero two four zero knots", "heading two seven zero two twenty knots"): the digit and tens words
+-- between the value's name and the unit split between two words where the value before is what it can be and the
+-- speed after is one (lexicon.run_on; "one twenty two fifty" splits after "twenty"). Returns the text with a comma
+-- at the split that fits, and nil; the text and a question naming the words when none fits; the text and nil when
+-- no value runs on so (three digits or fewer after the name).
+G.run_on_names, G.speed_units = {}, set_of(lexicon.speed_units)  -- (the value's name -> "level" or "heading")
+for _, w in ipairs(lexicon.run_on.level_words) do G.run_on_names[w] = "level" end
+for _, w in ipairs(lexicon.run_on.heading_words) do G.run_on_names[w] = "heading" end
+function G.run_on_values(text)
+  local low = text:lower()
+  if not (low:find("kt", 1, true) or low:find("kno", 1, true)) then return text, nil end
+  local RUN_ON, RUN_ON_NAMES, SPEED_UNITS = lexicon.run_on, G.run_on_names, G.speed_units
+  local toks = {}  -- each word: b, e (the text's positions, e past it), w (lower case, no punctuation), bare
+  for b, w, e in text:gmatch("()(%S+)()") do
+    local lw = w:lower()
+    toks[#toks + 1] = { b = b, e = e, w = lw:gsub("%p+$", ""), bare = not lw:find("%p$") }
+  end
+  -- the digits of words [b, e) said as one value ("two twenty" 220, "twenty two" 22: a tens word takes the digit
+  -- after it), or nil when a word is no digit or tens word
+  local function digits(b, e)
+    local out, k = "", b
+    while k < e do
+      local t = toks[k]
+      local tens = t.bare and G.coordinate_tens[t.w]
+      local unit = k + 1 < e and toks[k + 1].bare and SAID_DIGIT[toks[k + 1].w]
+      if tens then
+        out, k = out .. tens .. ((unit and unit ~= "0") and unit or "0"), k + ((unit and unit ~= "0") and 2 or 1)
+      elseif t.bare and SAID_DIGIT[t.w] then
+        out, k = out .. SAID_DIGIT[t.w], k + 1
+      else
+        return nil
+      end
+    end
+    return out
+  end
+  local function within(d, bounds) return tonumber(d) >= bounds[1] and tonumber(d) <= bounds[2] end
+  local function fits(kind, d)
+    if kind == "heading" then return #d == 3 and within(d, RUN_ON.heading) end
+    return (#d == 3 or (#d == 2 and d:sub(1, 1) ~= "0")) and within(d, RUN_ON.level)
+  end
+  for i = 1, #toks - 1 do
+    local kind = toks[i].bare and RUN_ON_NAMES[toks[i].w]
+    if kind then
+      local k = i + 1
+      while toks[k] and digits(k, k + 1) do k = k + 1 end
+      if #digits(i + 1, k) > 3 and toks[k] and SPEED_UNITS[toks[k].w] then
+        -- (each word adds a digit to the speed before it, so one split at most leaves the speed three digits)
+        for at = i + 2, k - 1 do
+          local value, speed = digits(i + 1, at), digits(at, k)
+          if fits(kind, value) and #speed == 3 and speed:sub(1, 1) ~= "0" and within(speed, RUN_ON.speed) then
+            return G.run_on_values(text:sub(1, toks[at - 1].e - 1) .. "," .. text:sub(toks[at - 1].e))
+          end
+        end
+        local from = (kind == "level" and i > 1 and toks[i - 1].bare and toks[i - 1].w == "flight") and i - 1 or i
+        return text, string.format("Which %s and speed do you mean? I heard '%s' with no break, and its digits "
+          .. "give no %s and speed together.", kind, text:sub(toks[from].b, toks[k].e - 1):gsub("%p+$", ""), kind)
+      end
+    end
+  end
+  return text, nil
+end
 local NATIONLESS = set_of(lexicon.nationless_registrations)
 local function spelled_registrations(text, fleet)
   if #fleet == 0 then return text end
@@ -8763,6 +8828,9 @@ function M.translate(text, world)
   if run_together then return { commands = {}, ask = run_together } end
   text = G.spelled_route_places(typed_places(written_forms(text, world), world), world)
   text = G.terse_altitude(spelled_airports(text, world), world)
+  local run_on
+  text, run_on = G.run_on_values(text)
+  if run_on then return { commands = {}, ask = run_on } end
   -- a time typed in two parts ("at 10:30", "schedule at 00:15: ..."): hours and minutes or minutes and
   -- seconds, which squawk does not tell apart (FF reads "ff 1:30" itself); asked when another command
   -- would run without it

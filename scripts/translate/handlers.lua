@@ -1922,15 +1922,21 @@ function m:at_altitude(s)
   for _, r in ipairs(self:word(a, "at") and {} or self:refs_in(k, k + 1, "aircraft")) do k = self:skip_fillers(r.e) end
   if k ~= s.trig then return nil end
   -- ("passing two two zero increase Mach .78": three digits alone after a level passed, left or reached are
-  -- a flight level)
-  local fl_digits = q.kind == "plain" and (self:word(a, "passing leaving reaching") or left) and #q.number.digits == 3
-    and q.value >= 100 and q.value <= 600 and not q.number.thousand and not q.number.hundred
-  if q.kind ~= "alt" and not fl_digits and not (q.kind == "plain" and (q.number.thousand or q.value >= 1000)) then
+  -- a flight level; so is a level said group-wise, "passing one hundred", for an aircraft flying where a climb
+  -- to it would be read so, at or above lexicon.groupwise_from_ft)
+  local passed = q.kind == "plain" and (self:word(a, "passing leaving reaching") or left)
+  local fl_digits = passed and #q.number.digits == 3 and q.value >= 100 and q.value <= 600 and not q.number.thousand
+    and not q.number.hundred
+  local groupwise = passed and self:groupwise_level(q)
+  if q.kind ~= "alt" and not fl_digits and not groupwise
+      and not (q.kind == "plain" and (q.number.thousand or q.value >= 1000)) then
     return nil
   end
   local ids = self:acids(s)
   if #ids == 0 then return nil end
+  if groupwise and ((self:state(ids[1]) or {}).alt_ft or 0) < L.groupwise_from_ft then return nil end
   self:mark_used(q.b, q.e)  -- the condition's altitude is not the instruction's value
+  if groupwise then return "ATALT " .. ids[1] .. " " .. f.alt(groupwise, true) end
   if fl_digits then return "ATALT " .. ids[1] .. " " .. f.alt(q.value * 100, true) end
   return "ATALT " .. ids[1] .. " " .. f.alt(q.value, q.fl)
 end

@@ -329,7 +329,7 @@ return function(H, f, compass)
       local la, lo, ref = self:offset_position(qs, s.b, s.e, near)
       if la then lat, lon, along = la, lo, ref elseif lo then return self:need(lo) end
     end
-    local hdg, alt, fl, spd, mach
+    local hdg, alt, fl, spd, mach, level_q  -- (level_q: the flight level said, its quantity)
     -- placed along an aircraft's track: its course, level and speed said against that aircraft's
     -- ("head-on", "opposite direction", "coming the other way", "same track"; "1000 ft above"; "30 kt faster")
     if along then
@@ -361,7 +361,7 @@ return function(H, f, compass)
       if q.kind == "heading" and not hdg then hdg = q.value end
       -- "flying 300 deg": an angle with no turn is the heading
       if q.kind == "angle" and q.turn == 0 and not hdg and q.value >= 0 and q.value <= 360 then hdg = q.value end
-      if q.kind == "alt" and not alt then alt, fl = q.value, q.fl end
+      if q.kind == "alt" and not alt then alt, fl, level_q = q.value, q.fl, q.fl and q or nil end
       if q.kind == "speed" and not spd and not mach then spd = q.value end
       if q.kind == "mach" and not spd and not mach then mach = q.value end
     end
@@ -614,6 +614,12 @@ return function(H, f, compass)
     if self:state(id) then
       return self:need(string.format("%s already exists. Should I move it, or create a new aircraft under "
         .. "another callsign?", id:upper()))
+    end
+    local doubt = level_q and alt == level_q.value and self:level_doubt(level_q, alt, id:upper())
+    if doubt then return self:need(doubt) end
+    -- (a heading's digits run on into the next value with no unit: "heading two seven zero two five zero")
+    if hdg and hdg > 360 then
+      return self:need(string.format("What heading should %s have? I heard %s.", id:upper(), f.int(hdg)))
     end
     -- a value said but not read would be left as 0: ask instead
     if (spd or mach or alt) and not hdg then

@@ -57,6 +57,19 @@ return function(H, f, wrap, compass)
     self:need(require("translate.grammar").not_understood)
   end
 
+  -- The question a flight level read from quantity q as ft [ft] raises for aircraft id, or nil: "flight level
+  -- 9000" (levels have three digits), a spoken level below 3000 ft (flight levels start above the transition
+  -- altitude: "flight level two zero" lost a digit), one above 60000 ft ("flight level eight zero two").
+  function m:level_doubt(q, ft, id)
+    if q.number.value >= 1000 then
+      return "Which flight level for " .. id .. "? I heard flight level " .. f.int(q.number.value) .. "."
+    end
+    if (ft < 3000 and not q.number.typed) or ft > 60000 then
+      return "Which flight level for " .. id .. "? I heard " .. f.alt(ft, true) .. "."
+    end
+    return nil
+  end
+
   function m:maintain(s)
     local qs = self:quantities(s.b, s.e)
     for _, q in ipairs(qs) do
@@ -325,16 +338,8 @@ return function(H, f, wrap, compass)
       m.kind, m.value, m.fl = "metric", ft, false
       q = m
     end
-    if fl and q.number.value >= 1000 then  -- "flight level 9000": levels have three digits
-      return self:need("Which flight level for " .. ids[1] .. "? I heard flight level " .. f.int(q.number.value) .. ".")
-    end
-    -- flight levels start above the transition altitude: a spoken "flight level two zero" lost a digit
-    if fl and ft < 3000 and not q.number.typed then
-      return self:need("Which flight level for " .. ids[1] .. "? I heard " .. f.alt(ft, true) .. ".")
-    end
-    if fl and ft > 60000 then
-      return self:need("Which flight level for " .. ids[1] .. "? I heard " .. f.alt(ft, true) .. ".")
-    end
+    local doubt = fl and self:level_doubt(q, ft, ids[1])
+    if doubt then return self:need(doubt) end
     if not fl and q.kind == "alt" and self:word(q.e - 1, "@metres") and self:word(q.e, "per")
         and self:word(q.e + 1, "min mins minute minutes sec secs second seconds s") then
       -- "climb 1500 m/min": metres per unit of time are a rate, no level (VS is in ft/min): asked; said after

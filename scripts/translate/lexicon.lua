@@ -956,6 +956,12 @@ return {
   min_airborne_kt = 40,
   -- a vertical speed [ft/min] typed below this as VS's ("vs 15") may have lost its zeros: asked
   min_typed_fpm = 100,
+  -- a level or heading said digit by digit and run on into a speed before its unit with no break ("flight level
+  -- eight zero two four zero knots"; grammar.lua G.run_on_values): the words naming the value, and what each part
+  -- can be: a flight level of two or three digits within `level` [FL], a heading of three digits within `heading`
+  -- [deg], a speed of three digits, the first no zero, within `speed` [kt]
+  run_on = { level_words = { "level", "fl" }, heading_words = { "heading", "hdg" }, level = { 30, 600 },
+    heading = { 0, 360 }, speed = { 100, 399 } },
   -- a number with no unit after "at" after a cleared flight level, read as the vertical speed [ft/min] within
   -- these bounds ("descend FL120 at one thousand five hundred"; "at 250" is a speed, asked)
   rate_after_level = { 500, 6000 },
@@ -1226,6 +1232,7 @@ return {
                     ["santo domingo"] = "las americas", kingston = "norman manley", ["montego bay"] = "sangster",
                     nassau = "lynden pindling", ["port of spain"] = "piarco", ["grand cayman"] = "owen roberts",
                     ["panama city"] = "tocumen", bogota = "eldorado", ["port-au-prince"] = "toussaint louverture",
+                    curacao = "hato", aruba = "reina beatrix", bonaire = "flamingo",
                     -- (West and Central Africa: capitals and hubs whose one airport the navdata names otherwise)
                     lagos = "murtala muhammed", abuja = "nnamdi azikiwe", kano = "mallam aminu", accra = "kotoka",
                     lome = "gnassingbe eyadema", abidjan = "abidjan felix houphouet boigny", dakar = "leopold sedar senghor",
@@ -1233,8 +1240,10 @@ return {
                     niamey = "diori hamani", cotonou = "cadjehoun", bamako = "senou", libreville = "leon m ba",
                     yaounde = "yaounde nsimalen", monrovia = "monrovia roberts", freetown = "freetown lungi",
                     ["n'djamena"] = "ndjamena hassan djamous", ndjamena = "ndjamena hassan djamous",
-                    -- (Belgium, Switzerland and New England: the city's airport named after a place beside it)
+                    -- (Belgium, Switzerland and New England: the city's airport named after a place beside it;
+                    -- Brussels's national airport, its BRUSSELS SOUTH being Charleroi's)
                     charleroi = "brussels south", ostend = "oostende", antwerp = "deurne", basel = "bale mulhouse",
+                    brussels = "brussels natl", zaventem = "brussels natl",
                     boston = "general edward lawrence logan",
                     -- (California: the city's airport named after a person)
                     burbank = "bob hope",
@@ -1326,6 +1335,9 @@ return {
     { heard = { "suba" }, means = "climb", before = { "#number", "a", "y", "fl", "flight", "level", "to" } },
     { heard = { "y" }, means = "and", between = { { "suba", "descend", "climb" }, { "maintain" } } },
     { heard = { "mil" }, means = "thousand", after = { "#number" } },
+    -- Dutch "een" (a, one) beside a number is the digit ("vliegniveau een twee nul"); "maak een" is
+    -- lexicon.said_whole.dutch's, elsewhere it stays unaccounted for, and is asked
+    { heard = { "een" }, means = "one", before = { "#number" }, after = { "#number" } },
     -- (English typed by a Spanish speaker: "procede direct GAVOL", as "proceder" is spelled)
     { heard = { "procede", "proced" }, means = "proceed", before = { "direct", "direct-to", "to" } },
   },
@@ -1443,10 +1455,38 @@ return {
       koeln = "cologne", nurnberg = "nuremberg", nuernberg = "nuremberg", mailand = "milan", prag = "prague",
       warschau = "warsaw", brussel = "brussels", bruessel = "brussels", venedig = "venice",
     },
-    shared = {},
+    -- words of `words` said the same in Dutch: no sign of German alone
+    shared = { vier = true, acht = true, rechts = true },
     -- words also English or another language's, read only in a German sentence ("links", "auf", "null" for zero)
     joining = { auf = "to", und = "and", null = "zero", uber = "over", ueber = "over", links = "left",
       direkt = "direct", kurs = "heading" },
+  },
+  -- Dutch words in a Dutch or Belgian controller's or sim operator's English ("trails aan graag", "zet hem op tien
+  -- keer real time", "gooi KLM886 maar weg", "maak een Transavia aan ...")
+  dutch = {
+    words = {
+      -- instructions and their nouns (the imperative and the infinitive)
+      stijg = "climb", stijgen = "climb", daal = "descend", dalen = "descend", draai = "turn", draaien = "turn",
+      koers = "heading", vliegniveau = "flight level", snelheid = "speed", knopen = "knots", voet = "feet",
+      graden = "degrees", minuten = "minutes", minuut = "minute", seconden = "seconds", naar = "to",
+      -- the sim operator's words ("wat doet X": what X is doing, its state)
+      pauze = "pause", pauzeer = "pause", pauzeren = "pause", simulatie = "simulation", zet = "set", hem = "it",
+      keer = "times", aan = "on", uit = "off", weer = "again", graag = "please", ["doe maar"] = "go ahead",
+      maar = "just", verwijder = "delete", verwijderen = "delete", gooi = "delete", weg = "away",
+      ["maak een"] = "create a", maak = "create", nieuw = "new", nieuwe = "new", vliegtuig = "aircraft",
+      toestel = "aircraft", bestemming = "destination", ["wat doet"] = "status of",
+      -- (said the same in another language, read here: "ja"; "oké", its accent taken off, is also the OKE VOR:
+      -- lexicon.asides_alone's)
+      ja = "yes",
+      -- digits and numbers ("vier" and "acht" as in German)
+      nul = "zero", twee = "two", drie = "three", vier = "four", vijf = "five", zes = "six", zeven = "seven",
+      acht = "eight", negen = "nine", tien = "ten", twaalf = "twelve", twintig = "twenty", dertig = "thirty",
+      veertig = "forty", vijftig = "fifty", honderd = "hundred", duizend = "thousand",
+    },
+    shared = { ja = true, vier = true, acht = true },
+    -- small words also English or another language's, read only in a Dutch sentence ("pauze even": for a moment)
+    joining = { de = "the", het = "the", en = "and", op = "to", van = "of", met = "with", even = "for a moment",
+      links = "left", rechts = "right" },
   },
   },
   -- digits said in Spanish, Portuguese or French by a controller speaking English ("Avianca cero one nine",

@@ -57,6 +57,13 @@ local names = {
     { "brussels", "BEL" },
     { "beeline", "BEL" },
     { "transavia", "TRA" },
+    { "france soleil", "TVF" },  -- (Transavia France)
+    -- the Netherlands' and Belgium's leisure and regional airlines
+    { "city", "KLC" },  -- (KLM Cityhopper)
+    { "klm city", "KLC" },
+    { "orange", "TFL" },  -- (TUI fly Netherlands)
+    { "corendon", "CAI" },  -- (Corendon Airlines)
+    { "dutch corendon", "CND" },  -- (Corendon Dutch Airlines)
     { "eurowings", "EWG" },
     { "condor", "CFG" },
     { "turkish", "THY" },

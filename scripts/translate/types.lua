@@ -278,6 +278,17 @@ local TEENS = { ten = "10", eleven = "11", twelve = "12", thirteen = "13", fourt
 local TENS = { twenty = "2", thirty = "3", forty = "4", fifty = "5", sixty = "6", seventy = "7", eighty = "8",
                ninety = "9" }
 local LETTERS = { a = "airbus", b = "boeing", e = "embraer" }
+-- A variant said as one number after its family ("787 9", "seven eight seven nine", "787 ten"): its digits, or ""
+local function short_variant(w)
+  return DIGITS[w] or TEENS[w] or (w:match("^%d%d?$")) or ""
+end
+-- True when `family`'s variant `v` said as one number ("787" and "9") is a model of `built` (built.model: a
+-- model's name, with its maker's or without -> its designator) that the variant of those hundreds, where there is one, names too: "787-9" and
+-- "787-900" are the B789, while "737-8" (the B38M) is also the 737-800 (B738) said short
+local function short_name(built, family, v)
+  local d = v ~= "" and built.model[family .. "-" .. v]
+  return d ~= nil and d ~= false and (built.model[family .. "-" .. v .. "00"] or d) == d
+end
 -- A designator of four characters spelled in the phonetic alphabet (`phonetic`: word -> letter), its
 -- digits said singly, from token i ("bravo seven three eight", "bravo seven seven whiskey", "charlie romeo
 -- juliet nine"): {name = the designator in lower case, punctuation closing its last word kept; e = the
@@ -299,8 +310,10 @@ end
 function M.spoken(text, built, phonetic)
   if not built.known then
     built.known, built.makers, built.prefixes = {}, {}, {}
+    built.model = {}
     for _, r in ipairs(built.types) do
       built.known[r[2]] = true
+      built.model[r[2]], built.model[r[1] .. " " .. r[2]] = r[3], r[3]
       built.known[r[1] .. " " .. r[2]] = true
       built.makers[r[1]] = true
     end
@@ -362,6 +375,7 @@ function M.spoken(text, built, phonetic)
       if fam and built.known["boeing " .. fam] and open(j - 1) and toks[j] then
         local v, k = bare(j):match("^%-?(%d00%a*)$"), j + 1
         if not v and DIGITS[bare(j)] and open(j) and bare(j + 1) == "hundred" then v, k = DIGITS[bare(j)] .. "00", j + 2 end
+        if not v and short_name(built, fam, short_variant(bare(j))) then v = short_variant(bare(j)) end
         if v and v:match("%d$") and open(k - 1) and (bare(k) == "er" or bare(k) == "lr") then v, k = v .. bare(k), k + 1 end
         local name = v and fam .. "-" .. v
         if name and built.known[name] then best = { name = name .. (toks[k - 1]:match("%p+$") or ""), e = k } end
@@ -382,6 +396,8 @@ function M.spoken(text, built, phonetic)
         end
         if DIGITS[x] and nx == "hundred" and #digits == 3 and not variant then
           variant, k = DIGITS[x] .. "00", k + 2
+        elseif #digits == 3 and not variant and short_name(built, lead .. digits, short_variant(x)) then
+          variant, k = short_variant(x), k + 1  -- ("boeing seven eight seven nine": the 787-9)
         elseif variant then
           break
         elseif DIGITS[x] then
@@ -407,7 +423,11 @@ function M.spoken(text, built, phonetic)
         if w == "airbus" and lead ~= "a" and #digits == 3 and not built.known[name] then
           name = "airbus a" .. digits .. (variant and ("-" .. variant) or "")
         end
-        if (#digits >= 3 or prefix) and built.known[name] then best = { name = name .. punct, e = k } end
+        if (#digits >= 3 or prefix) and built.known[name] then
+          best = { name = name .. punct, e = k }
+        elseif w == "boeing" and #digits == 3 and not variant and not digits:match("^7%d7$") and built.known["b" .. digits] then
+          best = { name = "b" .. digits .. punct, e = k }  -- ("boeing seven three eight": the designator, B738)
+        end
         if punct ~= "" then break end
       end
     end

@@ -1379,7 +1379,8 @@ do
       "CRE B744X B744 51.0 3.0 090 FL350 290", "CRE SWR12 A320 47.4 8.5 270 FL320 280" })
   check_eq(st("speed the Transavia up to 310"), "SPD TVF33KP 310")
   check_eq(st("please bring the easyJet down to FL 200"), "ALT EZS1419 FL200")
-  check_eq(st("Transavia three three kilo papa, climb flight level two niner zero"), "ALT TVF33KP FL290")
+  -- (Transavia France's telephony is FRANCE SOLEIL: the brand said with the flight is confirmed, point 3)
+  check_eq(st("Transavia three three kilo papa, climb flight level two niner zero"), "ASK Did you mean TVF33KP? I heard TRA33KP.")
   check_eq(st("clear the Jetairfly's route"), "DELRTE JAF2RK")
   check_eq(st("Topswiss, left heading 030 and descend FL 200"), "HDG EZS1419 30 LEFT ; ALT EZS1419 FL200")
   -- (a callsign of no aircraft of the brand is still asked about)
@@ -10521,7 +10522,8 @@ do
   check_eq(ex("Jetstar 503 descend 7000"), "ASK Did you mean JJP503? I heard JST503.")
   check_eq(ex("Orange Liner 503 descend 7000"), "ALT JJP503 7000")
   check_eq(ex("Jetstar 142 descend FL120"), "ALT JSA142 FL120")
-  check_eq(ex("Transavia 33KP descend FL150"), "ALT TVF33KP FL150")
+  check_eq(ex("Transavia 33KP descend FL150"), "ASK Did you mean TVF33KP? I heard TRA33KP.")
+  check_eq(ex("France Soleil 33KP descend FL150"), "ALT TVF33KP FL150")
   asked(ex("Speedbird 12 climb FL120"), "the Shuttle's aircraft called by the Speedbird telephony")
   asked(ex("Easy 45 descend FL200"), "easyJet Europe (Alpine) called Easy")
   check_eq(ex("Alpine 45 descend FL200"), "ALT EJU45 FL200")
@@ -11000,4 +11002,137 @@ do
   check_eq(ex("cross KOVAL at FL180"), "ASK Which aircraft should cross KOVAL? Please give its callsign.")
   check_eq(ex("Air France, cross KOVAL at FL180"), "ASK Which aircraft should cross KOVAL? Please give its callsign.")
   check_eq(ex("AFR33, cross KOVAL at FL180"), "AT AFR33 KOVAL ALT FL180")
+end
+
+-- Cycle 48 (f115): a level or heading said digit by digit and run on into a speed before "knots" with no break is
+-- split where each part is what it can be (lexicon.run_on); digits that split no such way are asked, and a
+-- creation's flight level is held to the bounds a climb's is
+do
+  local _, ex = scene({ "CRE MPH5 B744 52.3 4.8 090 FL200 280" })
+  check_eq(ex("mph5 descend flight level nine zero two one zero knots"), "ALT MPH5 FL90 ; SPD MPH5 210")
+  check_eq(ex("mph5 climb flight level three three zero two niner zero knots"), "ALT MPH5 FL330 ; SPD MPH5 290")
+  check_eq(ex("mph5 descend flight level one twenty two thirty knots"), "ALT MPH5 FL120 ; SPD MPH5 230")
+  check_eq(ex("mph5 turn left heading three one zero two thirty knots"), "HDG MPH5 310 LEFT ; SPD MPH5 230")
+  check_eq(ex("create TST9 A320 at 52.0 4.0 heading zero niner zero flight level seven zero two five zero knots"),
+    "CRE TST9 A320 52 4 90 FL70 250")
+  -- (FL12 and 180 kt, or FL121 and 80 kt: neither fits)
+  asked(ex("mph5 descend flight level one two one eight zero knots"), "a run that splits no way is asked")
+  -- (no unit after the run: the level read is out of bounds)
+  asked(ex("mph5 descend flight level seven zero two five zero"), "FL702 is asked")
+  asked(ex("create TST9 A320 at 52.0 4.0 heading zero niner zero flight level seven zero two five zero"),
+    "a creation at FL702 is asked")
+  asked(ex("create TST9 A320 at 52.0 4.0 heading 090 flight level two zero speed 250"), "a spoken FL20 is asked")
+  asked(ex("create TST9 A320 at 52.0 4.0 heading 090 flight level 9000 speed 250"), "flight level 9000 is asked")
+  asked(ex("create TST9 A320 at 52.0 4.0 heading three one zero two three zero flight level 100"),
+    "a heading beyond 360 is asked")
+end
+
+-- Cycle 48 (f115): Dutch words in a Dutch or Belgian controller's or sim operator's English are read through
+-- lexicon.said_whole.dutch, as German; a Dutch word the table lacks is still asked about by name
+do
+  local _, ex = scene({ "CRE KLM77 B738 52.1 4.5 180 FL150 250", "CRE TRA6 B738 52.3 4.1 090 FL200 260" })
+  check_eq(ex("pauzeer de simulatie graag"), "HOLD")
+  check_eq(ex("zet de simulatie op vier keer"), "DTMULT 4")
+  check_eq(ex("verwijder klm seven seven"), "DEL KLM77")
+  check_eq(ex("gooi transavia six weg"), "DEL TRA6")
+  check_eq(ex("klm seven seven draai rechts koers twee zeven nul"), "HDG KLM77 270 RIGHT")
+  check_eq(ex("klm seven seven daal naar vliegniveau een twee nul"), "ALT KLM77 FL120")
+  check_eq(ex("wat doet transavia six"), "POS TRA6")
+  check_eq(ex("conflict detectie aan"), "ASAS ON")
+  check_eq(ex("ja klm seven seven descend flight level one two zero"), "ALT KLM77 FL120")
+  check_eq(ex("maak een nieuw vliegtuig aan klm one two three a three twenty at 52.0 4.0 heading 090 fl100 250 knots"),
+    "CRE KLM123 A320 52 4 90 FL100 250")
+  check_eq(ex("trails aan graag snel"), "ASK I have TRAIL ON. What does 'snel' mean?")
+  asked(ex("zet een waypoint"), "'een' as an article elsewhere is asked")
+  -- (German stays German: "vier" and "acht" are said the same in both)
+  check_eq(ex("klm seven seven sinken flight level acht null bitte"), "ALT KLM77 FL80")
+  -- an acknowledgement opening the request with no break after it is the aside; after a value it is still asked
+  check_eq(ex("oké pauzeer de simulatie"), "HOLD")
+  check_eq(ex("alles klar klm seven seven descend flight level one two zero"), "ALT KLM77 FL120")
+  asked(ex("klm seven seven descend flight level one two zero oke heading 200"), "'oke' after a value is asked")
+end
+
+-- Cycle 48 (f115): a word typed in capitals is a name or a code, never a word of a language said whole ("over OKE":
+-- the VOR, where "oké" is Dutch)
+do
+  local _, ex = navscene({ "CRE LOT7 B738 52.4 20.9 300 FL150 270" }, "a navaid typed in capitals")
+  if ex then
+    check_eq(ex("LOT7 at 20 miles from OKE descend FL80"), "ATDIST LOT7 OKE 20 ALT LOT7 FL80")
+    check_eq(ex("create LOT3921 E190 over OKE heading 270 8000 ft 250 kt"), "CRE LOT3921 E190 OKE 270 8000 250")
+  end
+end
+
+-- Cycle 48 (f115): a Boeing family's variant said as one number after the family ("seven eight seven nine", "787 8")
+-- is that variant when the name is the same designator as its hundreds ("787-9", "787-900"); "737 8" (737-8, the MAX
+-- 8, or the 737-800 said short) is still asked. "Boeing seven three eight", the designator's digits after the maker,
+-- is that designator; a family's number so said ("Boeing seven three seven") is still asked
+do
+  local _, ex = scene({ "CRE KLM12 B738 52.0 4.0 090 FL200 280" })
+  check_eq(ex("create klm eight seven one boeing seven eight seven nine at 52.2 4.2 heading 270 fl310 280 knots"),
+    "CRE KLM871 B789 52.2 4.2 270 FL310 280")
+  check_eq(ex("create klm eight seven two boeing 787 8 at 52.2 4.2 heading 270 fl310 280 knots"),
+    "CRE KLM872 B788 52.2 4.2 270 FL310 280")
+  check_eq(ex("create klm eight seven three boeing seven eight seven ten at 52.2 4.2 heading 270 fl310 280 knots"),
+    "CRE KLM873 B78X 52.2 4.2 270 FL310 280")
+  check_eq(ex("create klm eight seven four boeing seven three eight at 52.2 4.2 heading 270 fl310 280 knots"),
+    "CRE KLM874 B738 52.2 4.2 270 FL310 280")
+  check_eq(ex("create klm eight seven five boeing seven four four at 52.2 4.2 heading 270 fl310 280 knots"),
+    "CRE KLM875 B744 52.2 4.2 270 FL310 280")
+  asked(ex("create klm eight seven six boeing seven three seven eight at 52.2 4.2 heading 270 fl310 280 knots"),
+    "737 and 8: the MAX 8 or the 737-800")
+  asked(ex("create klm eight seven seven boeing seven three seven at 52.2 4.2 heading 270 fl310 280 knots"),
+    "a 737 without its variant")
+end
+
+-- Cycle 48 (f115): the telephony of the Netherlands' and Belgium's leisure and regional airlines ("city" KLM
+-- Cityhopper, "orange" TUI fly Netherlands, "corendon" Corendon Airlines, "dutch corendon" Corendon Dutch Airlines,
+-- "france soleil" Transavia France) is read wherever a callsign stands; an airline heard that the aircraft's is not
+-- is still confirmed
+do
+  local _, ex = scene({ "CRE KLC43X E175 51.95 4.20 150 4000 220", "CRE TFL8HC B38M 51.20 5.95 345 FL140 280",
+    "CRE CAI4LT B738 50.90 5.00 250 FL370 275", "CRE CND55B B738 51.30 4.40 020 FL090 260",
+    "CRE TVF63RA A320 51.40 4.00 190 FL340 280" })
+  check_eq(ex("remove city four three x ray"), "DEL KLC43X")
+  check_eq(ex("klm city four three x ray climb flight level one zero zero"), "ALT KLC43X FL100")
+  check_eq(ex("list the route of orange eight hotel charlie"), "LISTRTE TFL8HC")
+  check_eq(ex("delete corendon four lima tango"), "DEL CAI4LT")
+  check_eq(ex("where is dutch corendon five five bravo"), "POS CND55B")
+  check_eq(ex("delete france soleil six three romeo alpha"), "DEL TVF63RA")
+  check_eq(ex("corendon five five bravo turn left heading 100"), "ASK Did you mean CND55B? I heard CAI55B.")
+end
+
+-- Cycle 48 (f115): a level said group-wise after "passing", "leaving" or "reaching" ("passing one hundred") is that
+-- flight level for an aircraft at or above lexicon.groupwise_from_ft, as a climb's is; lower down it is asked
+do
+  local _, ex = scene({ "CRE KLM1234 B738 52.4 6.3 275 FL120 290", "CRE KLM12 B738 52.4 6.3 275 8000 250" })
+  check_eq(ex("klm one two three four descend flight level seven zero and passing one hundred reduce two five zero"),
+    "ALT KLM1234 FL70 ; ATALT KLM1234 FL100 SPD KLM1234 250")
+  check_eq(ex("klm one two three four climb flight level two hundred, leaving one hundred fifty speed two eight zero"),
+    "ALT KLM1234 FL200 ; ATALT KLM1234 FL150 SPD KLM1234 280")
+  asked(ex("klm one two descend five thousand feet and passing one hundred reduce two two zero"),
+    "below 10000 ft 'one hundred' may be feet")
+end
+
+-- Cycle 48 (f115): Brussels's airport (BRUSSELS NATL; BRUSSELS SOUTH is Charleroi's) and the ABC islands' airports
+-- by the island's name (lexicon.city_airports); a distance from a name navaids bear beside the airport is still asked
+do
+  local _, ex = navscene({ "CRE KLM1 B738 51 4 90 FL100 250" }, "airports by a city's or an island's name")
+  if ex then
+    check_eq(ex("klm one destination brussels"), "DEST KLM1 EBBR")
+    check_eq(ex("set wind two four zero degrees twenty five knots over brussels airport"), "WIND EBBR 240 25")
+    check_eq(ex("klm one origin schiphol destination curacao"), "ORIG KLM1 EHAM ; DEST KLM1 TNCC")
+    check_eq(ex("klm one destination aruba"), "DEST KLM1 TNCA")
+    asked(ex("klm one at 30 miles from brussels descend fl80"), "the airport or a Brussels navaid")
+  end
+end
+
+-- Cycle 48 (f115), decisions kept: a creation with its callsign, type and place only is CRE with the command's
+-- defaults (some 40 rows of older rounds expect it); a value that would leave one before it at 0 is asked. A climb
+-- or descent rate said with no level is VS (some 300 older rows expect it); the verb with neither is asked
+do
+  local _, ex = scene({ "CRE EZY4612 A320 53.5 5.0 100 FL340 280" })
+  check_eq(ex("create klm one two three a three twenty at 52.0 4.0"), "CRE KLM123 A320 52 4")
+  asked(ex("create klm one two three a three twenty at 52.0 4.0 flight level one zero zero"), "no heading before it")
+  check_eq(ex("easy four six one two climb at one thousand feet per minute"), "VS EZY4612 1000")
+  asked(ex("easy four six one two climb"), "no level and no rate")
 end
