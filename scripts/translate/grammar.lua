@@ -1960,6 +1960,16 @@ function G:clause_alone(b, e)
   return true
 end
 
+-- The clause holding token i: [lo, hi), bounded by punctuation and by "and", "then" or "but" between two
+-- instructions' words ("turn on MVP resolution and let it use vertical too": "turn on MVP resolution").
+function G:clause_around(i)
+  local function bound(k) return self.t[k].kind == "punct" or self:word(k, "and but @then_words") end
+  local lo, hi = i, i + 1
+  while lo > 1 and not bound(lo - 1) do lo = lo - 1 end
+  while hi <= #self.t and not bound(hi) do hi = hi + 1 end
+  return lo, hi
+end
+
 -- True when "vertical" at i is said of conflict resolutions ("let MVP use vertical speed in the
 -- resolutions", "resolutions horizontal only, no vertical"), no safety factor or zone size.
 -- ("horizontal resolutions only": resolutions without the vertical)

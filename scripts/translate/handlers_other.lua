@@ -3461,7 +3461,9 @@ return function(H, f, compass)
         .. "speed too (RMETHV V/S): which should it use?")
     end
     self:emit((off or only) and "RMETHV OFF" or "RMETHV V/S")
-    self:mark_used(s.b, s.e)
+    -- (its clause whole: "turn on MVP resolution and allow vertical manoeuvres" reads "allow" with the vertical)
+    local lo, hi = self:clause_around(s.trig)
+    self:mark_used(math.min(s.b, lo), math.max(s.e, hi))
   end
   function m:resume_nav(s)
     if self:asks_setting() then return self:emit("RESNAV") end

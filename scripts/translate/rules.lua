@@ -2185,8 +2185,15 @@ return function(intent, rule, words)
   rule { "factor", "rfac", prev = { 1, "horizontal lateral vertical" }, when = function(g, i)
     return g:word_in(1, i, "resolution resolutions reso resolve mvp")
   end }
-  rule { "mvp resolution resolve reso resolutions resolver", false, when = function(g)
-    for k = 1, #g.t do if g:vertical_resolutions(k) then return true end end
+  -- (the resolution said of the vertical ones, "let MVP use vertical speed in the resolutions", sets no method;
+  -- one switched on in a clause of its own, "turn on MVP resolution and let it use vertical too", does: RESO
+  -- MVP beside the RMETHV)
+  rule { "mvp resolution resolve reso resolutions resolver", false, when = function(g, i)
+    local lo, hi = g:clause_around(i)
+    local set_here = g:word_in(lo, hi, "@on mvp")
+    for k = 1, #g.t do
+      if g:vertical_resolutions(k) and (not set_here or (k >= lo and k < hi)) then return true end
+    end
     return false
   end }
   -- "after a resolution aircraft should resume nav once past CPA": when navigation resumes after one (RESNAV)

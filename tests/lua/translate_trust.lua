@@ -10388,3 +10388,15 @@ do
   check_eq(ex("swr8 continue on heading 150"), "HDG SWR8 150")
   check_eq(ex("swr8 heading 150 then resume own navigation"), "HDG SWR8 150 ; LNAV SWR8 ON")
 end
+
+-- Cycle 48 (f114): conflict resolution switched on in a clause of its own beside its vertical method ("turn on
+-- MVP resolution and let it use vertical too") sets both, RESO and RMETHV; the resolution named inside the
+-- vertical's clause sets the method alone, and vertical-only resolutions are still asked
+do
+  local _, ex = scene({ "CRE AAL12 B738 41.9 -87.9 090 FL250 280", "CRE UAL34 B739 42.1 -87.5 270 FL250 280" })
+  check_eq(ex("enable MVP resolution and allow vertical manoeuvres"), "RESO MVP ; RMETHV V/S")
+  check_eq(ex("set reso to MVP, and let it resolve vertically too"), "RESO MVP ; RMETHV V/S")
+  check_eq(ex("turn on MVP and no vertical resolutions"), "RESO MVP ; RMETHV OFF")
+  check_eq(ex("let MVP use vertical speed in the resolutions"), "RMETHV V/S")
+  asked(ex("turn on MVP resolution, vertical only"), "vertical-only resolutions beside the method switched on")
+end
