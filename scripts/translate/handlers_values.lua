@@ -435,11 +435,11 @@ return function(H, f, wrap, compass)
           ids[1], f.int(cur), f.int(ft), f.int(ft), self:raw(q.b, q.e)))
       end
     end
-    -- "descend 3000 ft" typed right after the verb, from higher up: to or by? Both read as
-    -- descents. (Spoken levels, "descend two thousand five hundred feet", are targets.)
+    -- "descend 3000 ft" or "descend two thousand feet" right after the verb, from higher up: to or by?
+    -- Both read as descents, typed or spoken.
     -- (an altitude said with the altimeter setting it is read on, "3000 feet QNH 1008", is a level)
     if not relative and now and not q.to and not fl and dir ~= 0 and q.kind == "alt" and q.b == s.trig + 1
-        and q.number.typed and self:word(q.e - 1, "@feet") and not self:word_in(q.e, #self.t + 1, "@altimeter") then
+        and self:word(q.e - 1, "@feet") and not self:word_in(q.e, #self.t + 1, "@altimeter") then
       local cur = now.alt_ft or 0
       local by_fits = (dir < 0 and cur - ft >= 0) or (dir > 0 and cur + ft <= 60000)
       local to_fits = (dir < 0 and ft < cur - 50) or (dir > 0 and ft > cur + 50)

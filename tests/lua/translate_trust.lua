@@ -10400,3 +10400,17 @@ do
   check_eq(ex("let MVP use vertical speed in the resolutions"), "RMETHV V/S")
   asked(ex("turn on MVP resolution, vertical only"), "vertical-only resolutions beside the method switched on")
 end
+
+-- Cycle 48 (f114): "descend two thousand feet" spoken straight after the verb from the flight levels is asked to
+-- or by, as the same typed in figures is; "to", "by", "and maintain", 4000 ft or more, or a descent from below
+-- FL120 decide it
+do
+  local _, ex = scene({ "CRE SKW12 CRJ7 40.5 -103 245 FL180 270", "CRE SKW34 CRJ7 40.5 -104 245 9000 250" })
+  check_eq(ex("SKW12 descend two thousand feet"), "ASK Should SKW12 descend to 2000 ft or by 2000 ft?")
+  asked(ex("SKW12 descend two thousand five hundred feet"), "a spoken step or level of 2500 ft from FL180")
+  check_eq(ex("SKW12 descend to two thousand feet"), "ALT SKW12 2000")
+  check_eq(ex("SKW12 descend by two thousand feet"), "ALT SKW12 16000")
+  check_eq(ex("SKW12 descend and maintain two thousand feet"), "ALT SKW12 2000")
+  check_eq(ex("SKW12 descend five thousand feet"), "ALT SKW12 5000")
+  check_eq(ex("SKW34 descend three thousand feet"), "ALT SKW34 3000")
+end
