@@ -5090,16 +5090,21 @@ function G:stations()
   while b <= #self.t do
     local e = b
     while e <= #self.t and self.t[e].kind ~= "punct" do e = e + 1 end
-    if e > b and e <= #self.t and (self.t[e].text == "," or self.t[e].text == ":") then
+    local stop = e > b and self.t[e] and self.t[e].text
+    local from
+    if (stop == "," or stop == ":" or stop == "-") and self:station_sim(b, e) then
+      from = b
+    elseif stop == "," or stop == ":" then
       -- the station straight after the callsign, no comma between ("Ethiopian 306 Nairobi, climb ...")
-      local from = b
+      from = b
       for _, r in ipairs(self.refs) do
         if r.kind == "aircraft" and r.b >= b and r.e > r.b and r.e < e then from = r.e end
       end
-      if self:station_clause(from, e, from > b) then
-        self:mark_used(from, e)
-        for k = from, e - 1 do self.noted[k] = true end
-      end
+      if not self:station_clause(from, e, from > b) then from = nil end
+    end
+    if from then
+      self:mark_used(from, e)
+      for k = from, e - 1 do self.noted[k] = true end
     end
     b = e + 1
   end
@@ -5140,6 +5145,27 @@ function G:places_by_position()
       end
     end
   end
+end
+
+-- True when tokens [b, e), a clause opening the request before a comma, colon or dash, are a station's
+-- simulator addressed (lexicon.station_sims after one or two words naming the station: "Chicago sim, ...",
+-- "N90 sim - ...", "Potomac simulator: ..."), no callsign said: each word of the name capitalised and no
+-- word squawk knows (a facility's identifier typed, "ZAU", "N90", or a name; no aircraft flying, no value),
+-- or the name a city, airport or unit the station is named after ("new york sim, ...").
+G.station_sims = set_of(lexicon.station_sims)
+function G:station_sim(b, e)
+  if b ~= self:skip_fillers(1) or e - b < 2 or e - b > 3 or not G.station_sims[self.t[e - 1].text] then return false end
+  local words, proper = {}, true
+  for k = b, e - 2 do
+    local t, ref = self.t[k], self:refs_in(k, k + 1, "aircraft")[1]
+    if ref and ref.exists then return false end
+    if not ref and (t.kind ~= "word" or #self:quantities(k, k + 1) > 0) then return false end
+    words[#words + 1] = t.text
+    proper = proper and t.raw:match("^%u") ~= nil and (ref ~= nil or not known_word(t.text))
+  end
+  local name = table.concat(words, " ")
+  return proper or ATC_UNITS[name] ~= nil or lexicon.city_airports[name] ~= nil
+    or (self.world.airports_of_city ~= nil and #self.world.airports_of_city(name) > 0)
 end
 
 -- True when tokens [b, e), a clause ending in a comma or colon (`after_callsign`: or its part after a

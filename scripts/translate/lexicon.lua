@@ -597,6 +597,10 @@ return {
   -- labels of two words that open a line without a colon, as speech recognition writes them ("sim op
   -- delete speedbird one one"): dropped when a request follows
   bare_labels = { "sim op", "sim operator", "simulator operator", "pseudo pilot", "sim pilot" },
+  -- the simulator of a station, named after the station's one or two words opening the request before a
+  -- comma, colon or dash ("Chicago sim, ...", "N90 sim - ..."): the addressee (G:station_sim; "simulator"
+  -- is read as "simulation")
+  station_sims = { "sim", "simulation" },
   -- a second speaker's label and assent after the request ("student: ity2011 climb fl150? engineer: yes do
   -- it"): the request stands as said; any other word after such a label leaves the line as typed
   assent = { "yes", "yeah", "yep", "ok", "okay", "sure", "do", "it", "go", "ahead", "fine", "approved",

@@ -10414,3 +10414,16 @@ do
   check_eq(ex("SKW12 descend five thousand feet"), "ALT SKW12 5000")
   check_eq(ex("SKW34 descend three thousand feet"), "ALT SKW34 3000")
 end
+
+-- Cycle 48 (f114): a station's simulator addressed before a comma, colon or dash ("Denver sim, ...", "A80 sim -
+-- ...") names the addressee, no callsign needed: a capitalised name or identifier, or a known place in lower case;
+-- other words there, and an aircraft flying, are still asked about
+do
+  local _, ex = scene({ "CRE AAL12 B738 41.9 -87.9 090 FL250 280" })
+  check_eq(ex("Denver sim, turn on conflict detection"), "ASAS ON")
+  check_eq(ex("A80 sim - run it at four times speed"), "DTMULT 4")
+  check_eq(ex("ZNY sim: pause"), "HOLD")
+  check_eq(ex("Boston sim, AAL12 climb FL300"), "ALT AAL12 FL300")
+  check_eq(ex("flurb sim, pause"), "ASK I have HOLD. What does 'flurb' mean?")
+  check_eq(ex("AAL12 sim, pause"), "ASK I have HOLD. What does 'AAL12' mean?")
+end
