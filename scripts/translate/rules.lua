@@ -2164,10 +2164,22 @@ return function(intent, rule, words)
   -- "asas dt 2 sec", "dt asas 2": the interval of conflict detection (DT ASAS), no switch
   rule { "detection asas cd", false, near = { 1, "dt timestep" } }
   rule { "detection asas cdmethod cd", "asas" }
+  -- a switch said where word i is: an on or off word straight after it, or a switching verb in the four words
+  -- before ("conflict alerts on", "turn on the conflict probe"; "on the conflict probe" switches nothing)
+  local function switched(g, i)
+    return g:word(i + 1, "@on @off") or g:word_in(math.max(1, i - 4), i, "switch turn enable disable activate deactivate")
+  end
   -- "switch the conflict probe to state based", "conflict probe off": the conflict probe is conflict detection
-  -- (its look-ahead said, it names that setting's owner: "look-ahead five minutes on the conflict probe")
-  rule { "probe", "asas", prev = { 1, "conflict conflicts" }, when = function(g)
-    return not g:word_in(1, #g.t + 1, "look lookahead dtlook")
+  -- (its look-ahead said, it names that setting's owner, "look-ahead five minutes on the conflict probe", unless
+  -- switched where it is said: "conflict probe on, lookahead two minutes")
+  rule { "probe", "asas", prev = { 1, "conflict conflicts" }, when = function(g, i)
+    return not g:word_in(1, #g.t + 1, "look lookahead dtlook") or switched(g, i)
+  end }
+  -- "conflict alerts on", "turn on conflict alerting": a radar display's conflict alert switched is conflict
+  -- detection; unswitched it names an alert ("the moment the conflict alert sounded", "the conflict alerting
+  -- zone"), and with an aircraft named it is the reason for its instruction ("KLM12 conflict alert, turn left")
+  rule { "alert alerts alerting", "asas", prev = { 1, "conflict conflicts" }, when = function(g, i)
+    return switched(g, i) and not g:has_ref(1, #g.t + 1, "aircraft")
   end }
   rule { "cr", "reso", next = "on off mvp" }  -- "CD on, CR off", "cr mvp": conflict resolution by its letters
   -- ("CR: MVP": the letters as a label, a colon or a dash before the setting)

@@ -10427,3 +10427,17 @@ do
   check_eq(ex("flurb sim, pause"), "ASK I have HOLD. What does 'flurb' mean?")
   check_eq(ex("AAL12 sim, pause"), "ASK I have HOLD. What does 'AAL12' mean?")
 end
+
+-- Cycle 48 (f114): the conflict probe or a display's conflict alert switched where it is said ("conflict alerts
+-- on, lookahead two minutes") is conflict detection beside its look-ahead; unswitched, or with an aircraft named,
+-- it names an alert, no setting
+do
+  local _, ex = scene({ "CRE AAL12 B738 41.9 -87.9 090 FL250 280" })
+  check_eq(ex("conflict alerts on, lookahead two minutes"), "ASAS ON ; DTLOOK 120")
+  check_eq(ex("conflict probe on, look ahead 3 minutes"), "ASAS ON ; DTLOOK 180")
+  check_eq(ex("turn on conflict alerting"), "ASAS ON")
+  check_eq(ex("look ahead 2 minutes on the conflict probe"), "DTLOOK 120")
+  check_eq(ex("the conflict alert zone 5 miles"), "ZONER 5")
+  check_eq(ex("AAL12 conflict alert, turn left heading 360"), "HDG AAL12 360 LEFT")
+  asked(ex("conflict alerts"), "conflict alerts named with no switch")
+end
