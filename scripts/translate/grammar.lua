@@ -6643,6 +6643,23 @@ function G:value_next(i)
   return q ~= nil and q.b == v
 end
 
+-- True when "resume normal speed" or "resume published speed" at i is the whole request to one aircraft flying its
+-- route's profile (LNAV and VNAV on, named before it): the profile's speed given back, VNAV ON. Not beside another
+-- instruction ("turn left heading 250, resume normal speed", "climb FL270 and ..."): VNAV ON flies the route's
+-- track and levels again, undoing it.
+function G:profile_speed_resumed(i)
+  if not (self:word(i + 1, "normal published") and self:word(i + 2, "speed speeds")) then return false end
+  local refs = self:refs_in(1, i, "aircraft")
+  local r = refs[#refs]
+  local a = r and self:state(r.name)
+  if not (a and a.vnav == true and a.lnav == true) then return false end
+  for k = 1, #self.t do
+    local t = self.t[k]
+    if (k < r.b or (k >= r.e and k < i) or k > i + 2) and t.kind ~= "punct" and not t.filler then return false end
+  end
+  return true
+end
+
 -- Finds the phrases of lexicon.not_simulated, marks their tokens used (the
 -- rest of the request is read as if they were not there) and returns the
 -- reply naming them, or nil. A phrase runs from its word to the next
@@ -6667,6 +6684,7 @@ function G:not_simulated()
             and (not c.subject or self:said_after_subject(i, c.subject))
             and (not c.after_heading or self:after_heading(i))
             and not (c.not_before and self:word(self:skip_fillers(i + 1), c.not_before))
+            and not (c.not_to_profile and self:profile_speed_resumed(i))
             and not (c.no_value and self:value_next(i))
             and not (c.no_number_after and self.t[i + 2] and self.t[i + 2].kind == "number")
             and not (c.not_after and self:word(i - 1, c.not_after)) and not self:word(i + 1, "not")

@@ -978,7 +978,8 @@ return {
   -- between them (G:after_heading); `bare`: the word is one only said alone in its clause (G:said_bare);
   -- `no_value`: none with a value said straight after its word (G:value_next); `routed`: a place it names off
   -- the route of the one aircraft addressed is asked (G:limit_off_route); `no_number_after`: no phrase when a
-  -- number follows its `near` word
+  -- number follows its `near` word; `not_to_profile`: none said to an aircraft flying its route's profile
+  -- (G:profile_speed_resumed)
   not_simulated = {
     -- ("squak", "sqwk": squawk typed short)
     { what = "transponder codes", words = "squawk squawking sq squak sqwk sqk",
@@ -1032,9 +1033,10 @@ return {
     { what = "restrictions lifted", words = "cancel", near = { "restriction", "restrictions" },
       through = "speed level altitude", stops_at_value = true },
     -- "EZY45KL resume normal speed": said to an aircraft, its speed restriction lifted (said alone, "resume
-    -- normal speed" is the simulation's rate, DTMULT 1)
+    -- normal speed" is the simulation's rate, DTMULT 1; said to an aircraft flying its route's profile, the
+    -- profile's speed given back: VNAV ON)
     { what = "restrictions lifted", words = "resume", near = { "speed" }, window = 2, after_callsign = true,
-      not_before = "speed", through = "speed", stops_at_value = true },
+      not_before = "speed", through = "speed", stops_at_value = true, not_to_profile = true },
     -- "turn right heading 330, vectors for runway 28", "vectoring for the ILS": what a vector is for, a
     -- runway squawk does not fly to
     { what = "approaches to a runway", words = "vectors vectoring vector",

@@ -480,6 +480,8 @@ return function(intent, rule, words)
   -- "set the timescale to 4", "time scale 2x": a game engine's time scale, the simulation's rate
   rule { "timescale", "dtmult" }
   rule { "scale", "dtmult", prev = { 1, "time" } }
+  -- ("Delta 1450 resume normal speed" to an aircraft flying its profile: the profile's speed, VNAV ON)
+  rule { "speed speeds", false, when = function(g, i) return g:profile_speed_resumed(i - 2) end }
   rule { "speed", "dtmult", prev = { 2, "x times normal" } }  -- "three times normal speed", "at normal speed"
   rule { "speed", "dtmult", prev = { 1, "@sim" }, when = function(g, i)  -- "sim speed x2"
     local nx = g.t[i + 1]
@@ -1882,6 +1884,10 @@ return function(intent, rule, words)
     return c < i and g:word_in(math.max(1, c - 4), c, "@condition past passing passed pass passes")
   end }
   rule { "resume", "lnav", near = { 3, "navigation nav route" } }
+  -- "Delta 1450 resume normal speed", "resume published speed": the whole request to an aircraft flying its
+  -- route's profile (G:profile_speed_resumed), the profile's speed given back (VNAV ON; a speed instruction took it
+  -- off). To an aircraft flying no profile it names no speed squawk knows (lexicon.not_simulated: restrictions lifted)
+  rule { "resume", "vnav", when = function(g, i) return g:profile_speed_resumed(i) end }
   -- ("rejoin own navigation at NORKU": the rejoining's, a direct-to the waypoint)
   rule { "own", false, prev = { 2, "rejoin rejoining" }, near = { 3, "at to over by" } }
   rule { "own", "lnav", near = { 2, "navigation nav" } }  -- "its own (route) navigation"

@@ -10441,3 +10441,17 @@ do
   check_eq(ex("AAL12 conflict alert, turn left heading 360"), "HDG AAL12 360 LEFT")
   asked(ex("conflict alerts"), "conflict alerts named with no switch")
 end
+
+-- Cycle 48 (f114): "resume normal speed" (or "published speed") as the whole request to an aircraft flying its
+-- route's profile (LNAV and VNAV on) gives the profile's speed back, VNAV ON; to one flying no profile, or beside
+-- another instruction VNAV ON would undo, it is named as not simulated or asked, as before
+do
+  local _, ex = scene({ "DEFWPT AAA 41.5 -82", "DEFWPT BBB 41.8 -82.5", "CRE DAL14 A320 41 -82 280 FL250 290",
+    "ADDWPT DAL14 AAA", "ADDWPT DAL14 BBB", "VNAV DAL14 ON", "SPD DAL14 250", "CRE UAL25 B738 41 -81 280 FL250 290",
+    "ADDWPT UAL25 AAA" })
+  check_eq(ex("DAL14 resume normal speed"), "VNAV DAL14 ON")
+  check_eq(ex("DAL14, resume published speed."), "VNAV DAL14 ON")
+  check_eq(ex("UAL25 resume normal speed"), "")
+  asked(ex("DAL14 turn left heading 250, resume normal speed"), "a heading VNAV ON would undo")
+  asked(ex("DAL14 resume normal speed, 250 knots"), "a speed given beside the normal speed")
+end
