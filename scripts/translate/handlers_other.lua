@@ -2811,16 +2811,34 @@ return function(H, f, compass)
     self.last_on = on
     return on == 1 and "ON" or "OFF"
   end
+  -- the instructions whose value VNAV ON would replace, by what they give
+  local VALUE_GIVEN = { alt = "level", maintain = "value", spd = "speed", hdg = "heading", vs = "rate" }
   local function nav(self, s, cmd)
     local id = self:acid(s, "switch " .. cmd)
     if not id then return end
     local on, now = on_off(self, s), self:state(id)
     -- "resume own navigation" for an aircraft with no route and no waypoint named: nothing to fly
-    -- (the switch named, "lnav on", is set as asked; a direct-to in the request names its place)
+    -- (the switch named, "lnav on", is set as asked; a direct-to in the request names its place); "comply with
+    -- restrictions" likewise has no route's restrictions to fly
     if cmd == "LNAV" and on == "ON" and now and now.route and #now.route == 0
         and not self:word_in(s.b, s.e, "lnav") and not self:has_ref(1, #self.t + 1, "waypoint")
         and not self:word_in(1, #self.t + 1, "direct dct") then
       return self:need(string.format("%s has no route to navigate by. Which waypoint or heading should it fly?", id))
+    end
+    -- (beside a level, rate, heading or speed given, VNAV, which flies the route's track, levels and speeds,
+    -- would undo it)
+    if cmd == "VNAV" and self:word(s.trig, "comply") then
+      if now and now.route and #now.route == 0 and not self:word_in(1, #self.t + 1, "direct dct") then
+        return self:need(string.format("%s has no route whose restrictions it could fly. Which level or speed "
+          .. "should it fly?", id))
+      end
+      for k = 1, #self.t do
+        local given = VALUE_GIVEN[self:intent_at(k) or ""]
+        if given then
+          return self:need(string.format("Should %s fly the %s given, or its route's restrictions (VNAV ON), "
+            .. "which would replace it?", id, given))
+        end
+      end
     end
     -- "resume own navigation to MIKSI", "own navigation LILJA": its route resumed at that place (the waypoint
     -- after "to", or straight after "navigation"), a direct-to (which turns LNAV on)

@@ -217,6 +217,8 @@ return function(intent, rule, words)
     end
     return g.fields_create == i
   end }
+  -- ("comply with published speed and altitude restrictions": the kinds of restriction complied with, VNAV)
+  rule { "speed altitude level", false, prev = { 6, "comply" }, next = "and restriction restrictions" }
   -- "swr84c altitude?", "afr1442 speed?", "bel21a lvl?": a state word asked with "?" straight after it, an aircraft named
   -- before it and no value said anywhere: a question of the aircraft's state (POS), no instruction (an
   -- instruction's shorthand, "ezy45 fl?", "hdg?", is a value left out: asked)
@@ -1394,6 +1396,17 @@ return function(intent, rule, words)
   -- ("lateral nav off", "vertical nav on": "nav" is navigation's short word)
   rule { "lateral", "lnav", next = "navigation nav" }
   rule { "vnav", "vnav" }
+  -- "proceed direct DJB, comply with restrictions", "comply with published speed and altitude restrictions": the
+  -- route's levels and speeds flown (VNAV); restrictions of one kind only ("comply with speed restrictions") are
+  -- no switch squawk has (beside a level, rate or heading given, which VNAV would undo, asked: m:vnav)
+  rule { "comply", "vnav", next = "with", when = function(g, i)
+    local k, said = i + 2, {}
+    while g:word(k, "the all published charted procedure procedural speed altitude level and") do
+      said[g.t[k].text] = true
+      k = k + 1
+    end
+    return g:word(k, "restriction restrictions") and (said.speed or false) == ((said.altitude or said.level) or false)
+  end }
   rule { "vertical vertically", "vnav", prev = { 4, "plan route" } }  -- "follow its flight plan vertically"
   rule { "vertical", "vnav", next = "profile navigation nav" }
   rule { "route rte waypoints", "listrte", prev = { 4, "show list display what print see look where check" } }

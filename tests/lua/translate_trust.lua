@@ -10455,3 +10455,18 @@ do
   asked(ex("DAL14 turn left heading 250, resume normal speed"), "a heading VNAV ON would undo")
   asked(ex("DAL14 resume normal speed, 250 knots"), "a speed given beside the normal speed")
 end
+
+-- Cycle 48 (f114): "comply with restrictions" (the route's published levels and speeds) is VNAV ON, beside a
+-- direct-to too; beside a level, heading, rate or speed given it is asked (VNAV ON would replace it), and so is an
+-- aircraft with no route, or restrictions of one kind only
+do
+  local _, ex = scene({ "DEFWPT AAA 41.5 -82", "DEFWPT BBB 41.8 -82.5", "CRE DAL14 A320 41 -82 280 FL250 290",
+    "ADDWPT DAL14 AAA", "ADDWPT DAL14 BBB", "CRE N12AB C172 41 -80 90 3000 100" })
+  check_eq(ex("DAL14 proceed direct BBB, comply with restrictions"), "DIRECT DAL14 BBB ; VNAV DAL14 ON")
+  check_eq(ex("DAL14 comply with published speed and altitude restrictions"), "VNAV DAL14 ON")
+  check_eq(ex("DAL14 descend FL240, comply with restrictions"),
+    "ASK Should DAL14 fly the level given, or its route's restrictions (VNAV ON), which would replace it?")
+  asked(ex("DAL14 reduce speed 250, comply with restrictions"), "a speed VNAV ON would replace")
+  asked(ex("N12AB comply with restrictions"), "no route whose restrictions it could fly")
+  asked(ex("DAL14 comply with speed restrictions"), "restrictions of one kind only")
+end
