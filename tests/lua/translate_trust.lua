@@ -10470,3 +10470,16 @@ do
   asked(ex("N12AB comply with restrictions"), "no route whose restrictions it could fly")
   asked(ex("DAL14 comply with speed restrictions"), "restrictions of one kind only")
 end
+
+-- Cycle 48 (f114): a level said straight after "after" before an instruction ("after one two thousand increase
+-- speed to 300") is one passed, as "after passing" is (ATALT); a time after it stays a delay, a place a waypoint's
+-- condition, and a climb's rate after it is still asked
+do
+  local _, ex = scene({ "CRE AAL22 A321 40.85 -73.60 035 9000 250" })
+  check_eq(ex("AAL22 climb and maintain one seven thousand, after one two thousand increase speed to three hundred knots"),
+    "ALT AAL22 17000 ; ATALT AAL22 12000 SPD AAL22 300")
+  check_eq(ex("AAL22 climb and maintain 17000, after 12000 turn left heading 300"),
+    "ALT AAL22 17000 ; ATALT AAL22 12000 HDG AAL22 300 LEFT")
+  check_eq(ex("AAL22 after 2 minutes turn left heading 200"), "DELAY 120 HDG AAL22 200 LEFT")
+  asked(ex("AAL22 climb and maintain 17000, after 12000 climb at 1500 fpm"), "a rate after a level passed")
+end
