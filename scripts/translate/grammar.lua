@@ -4666,11 +4666,27 @@ function G:uncarried()
     -- instruction word is a value said for an instruction, "descend FL130, reducing 250", never dropped in
     -- silence; single digits, and numbers before any instruction, "United 82 82 flight 8180 descend", are
     -- often recognition noise in a callsign)
+    -- (a level straight after "above" or "below" beside an instruction, before its word or after its value, or
+    -- alone in its clause, "above 10000 increase speed to 300", "reduce 250 knots below 10000", "climb 17000, above
+    -- 12000", is a condition or a bound on it, no value relative to another: carried by a command, or asked; "the
+    -- normal limit below ten thousand" remarks on one)
     local at = at_word(q)
+    local bound = self:word(q.b - 1, "@below @above")
+      and (q.kind == "alt" or (q.kind == "plain" and q.value >= 1000 and q.value % 100 == 0))
+    local value_before = false
+    for _, p in ipairs(bound and self:quantities(math.max(1, q.b - 6), q.b - 1) or {}) do
+      value_before = value_before or p.e == q.b - 1
+    end
+    if bound and self:intent_at(self:skip_fillers(q.e)) == nil and not value_before then
+      local lo, hi = self:clause_around(q.b)
+      for k = lo, hi - 1 do
+        bound = bound and (k == q.b - 1 or (k >= q.b and k < q.e) or self.t[k].filler)
+      end
+    end
     if (MUST_CARRY[q.kind] or (q.kind == "plain" and (q.number.decimal or at
           or (q.value >= 10 and (q.b > first or said_for_aircraft(q))))))
         and not self.taken[q.b]
-        and not ((q.by or relative) and not position(q)) and q.b > corrected and not value_carried(q, nums) then
+        and not ((q.by or (relative and not bound)) and not position(q)) and q.b > corrected and not value_carried(q, nums) then
       self.leftover = self:raw(at or q.b, q.e)
       return
     end

@@ -152,6 +152,17 @@ return function(H, f, wrap, compass)
         if q.kind == "plain" and q.b >= s.trig then plain[#plain + 1] = q end
       end
     end
+    -- ("climb and maintain 17000, above one zero thousand increase speed to 300": a level straight after "above" or
+    -- "below" is a bound or a condition, never the level flown while another is said)
+    local function unbound(list)
+      local kept = {}
+      for _, q in ipairs(list) do
+        if not self:word(q.b - 1, "@above @below") then kept[#kept + 1] = q end
+      end
+      return kept
+    end
+    local free_unit, free_plain = unbound(with_unit), unbound(plain)
+    if #free_unit + #free_plain > 0 then with_unit, plain = free_unit, free_plain end
     if passed and #with_unit == 0 and #plain == 0 then
       return self:need(string.format("Which level should %s fly to? '%s' is a level to pass, not one to level off at.",
         ids[1], self:raw(passed.b - 1, passed.e)))

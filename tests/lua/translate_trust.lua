@@ -10483,3 +10483,17 @@ do
   check_eq(ex("AAL22 after 2 minutes turn left heading 200"), "DELAY 120 HDG AAL22 200 LEFT")
   asked(ex("AAL22 climb and maintain 17000, after 12000 climb at 1500 fpm"), "a rate after a level passed")
 end
+
+-- Cycle 48 (f114): a level straight after "above" or "below" beside an instruction or alone in its clause is a
+-- condition or a bound, never the level flown and never dropped: asked unless a command carries it ("250 kt below
+-- FL100" is still the speed from that level); a remark on a limit is no instruction
+do
+  local _, ex = scene({ "CRE AAL22 A321 40.85 -73.60 035 9000 250" })
+  check_eq(ex("AAL22 climb and maintain 17000, above one two thousand increase speed to 300 knots"),
+    "ASK I have ALT AAL22 17000 ; SPD AAL22 300. What does 'one two thousand' mean?")
+  asked(ex("AAL22 climb and maintain 17000 above FL120"), "a bound level beside the level cleared")
+  asked(ex("AAL22 above 12000 increase speed to 300 knots"), "a bound before a speed")
+  asked(ex("AAL22 reduce speed to 250 knots below 10000"), "a bound after a speed, no unit")
+  check_eq(ex("AAL22 reduce speed to 250 knots below one zero thousand"), "ATALT AAL22 10000 SPD AAL22 250")
+  check_eq(ex("AAL22 speed 250 knots, this is the normal limit below ten thousand"), "SPD AAL22 250")
+end
