@@ -4393,6 +4393,20 @@ function G:at_waypoint(s, spec)
         return true
       end
     end
+    -- ("descend and maintain 10000, at MAPEL reduce speed to 250", "climb FL200 then after MAPEL turn left heading
+    -- 300"): a clause opened by "at", "after" or "over" and the waypoint after the instruction's value, behind a
+    -- comma or "then", closing the segment: the instruction is made, and the next one starts at the waypoint
+    -- (self.at_next: AT acid wp DO, G:parse)
+    local lead = r.b - 1
+    if lead > s.trig and self:word(lead, "at after over overhead") and #self:quantities(s.trig, lead) > 0
+        and self.t[lead - 1] and ((self.t[lead - 1].kind == "punct" and self.t[lead - 1].text == ",")
+          or self:word(lead - 1, "@then_words"))
+        and self:skip_fillers(r.e) >= s.e and s.e <= #self.t and spec and spec.handler and not self:in_reason(r.b) then
+      self[spec.handler](self, { intent = s.intent, b = s.b, trig = s.trig, e = lead - 1 }, spec)
+      self:explain(lead - 1, r.e)
+      self.at_next = r
+      return true
+    end
     if (self:word(r.b - 1, "at cross crossing over abeam overhead") or opened) and not self:in_reason(r.b) then
       return tied_to_waypoint(self, r, opened and (self:word(first, "after") and "after"
         or not self:word(first, "at over overhead") and "after passing") or "at")

@@ -3994,14 +3994,14 @@ end
 
 -- A clause of its own after an instruction's value, "at", a route waypoint and a value straight after it, no
 -- verb ("descend FL260, at ALFA FL240", "... then at ALFA 250 knots"): a constraint there (AT); a waypoint off
--- the route, or an instruction there with a verb, is still asked about
+-- the route is still asked about; an instruction there with a verb starts there (AT DO)
 do
   local _, ex = scene({ "CRE KLM12 B738 52 4 090 FL300 280", "DEFWPT ALFA 52.1 4.5", "DEFWPT BRAVO 52.3 4.9",
     "ADDWPT KLM12 ALFA" })
   check_eq(ex("KLM12 descend FL260, at ALFA FL240"), "ALT KLM12 FL260 ; AT KLM12 ALFA ALT FL240")
   check_eq(ex("KLM12 descend FL260 then at ALFA 250 knots"), "ALT KLM12 FL260 ; AT KLM12 ALFA SPD 250")
   asked(ex("KLM12 descend FL260, at BRAVO FL240"), "BRAVO is off the route")
-  asked(ex("KLM12 descend FL260, at ALFA turn left heading 200"), "a turn at a waypoint")
+  check_eq(ex("KLM12 descend FL260, at ALFA turn left heading 200"), "ALT KLM12 FL260 ; AT KLM12 ALFA DO HDG KLM12 200 LEFT")
   asked(ex("KLM12 descend FL260, at ALFA FL240, 250 knots"), "a speed in a clause after it")
   -- (after a direct-to, "at ALFA FL240" is asked about, never a level given now)
   asked(ex("KLM12 direct ALFA, at ALFA FL240"), "a level at the waypoint flown to")
@@ -10496,4 +10496,22 @@ do
   asked(ex("AAL22 reduce speed to 250 knots below 10000"), "a bound after a speed, no unit")
   check_eq(ex("AAL22 reduce speed to 250 knots below one zero thousand"), "ATALT AAL22 10000 SPD AAL22 250")
   check_eq(ex("AAL22 speed 250 knots, this is the normal limit below ten thousand"), "SPD AAL22 250")
+end
+
+-- Cycle 48 (f114): a clause opened by "at", "after" or "over" and a waypoint behind a comma or "then", after an
+-- instruction's value and before the next instruction ("descend and maintain 12000, at BBB reduce speed to 250"),
+-- starts that next instruction there (AT DO); off the route, or with no instruction after it, asked; a value with
+-- no verb after the waypoint stays the constraint
+do
+  local _, ex = scene({ "DEFWPT AAA 39.7 -78", "DEFWPT BBB 39.8 -77.6", "DEFWPT CCC 40 -77",
+    "CRE AAL19 A321 39.60 -78.20 100 FL240 290", "ADDWPT AAL19 AAA", "ADDWPT AAL19 BBB" })
+  check_eq(ex("AAL19, descend and maintain one two thousand, at BBB reduce speed to two five zero"),
+    "ALT AAL19 12000 ; AT AAL19 BBB DO SPD AAL19 250")
+  check_eq(ex("AAL19 reduce speed to 250, at BBB descend and maintain 10000"),
+    "SPD AAL19 250 ; AT AAL19 BBB DO ALT AAL19 10000")
+  check_eq(ex("AAL19 descend FL200 then after BBB turn left heading 300"),
+    "ALT AAL19 FL200 ; AT AAL19 BBB DO HDG AAL19 300 LEFT")
+  asked(ex("AAL19 descend FL200, at CCC reduce 250"), "a waypoint off the route")
+  asked(ex("AAL19 descend FL200, at BBB"), "no instruction after the waypoint")
+  check_eq(ex("AAL19, descend FL200, at BBB 250 knots"), "ALT AAL19 FL200 ; AT AAL19 BBB SPD 250")
 end
