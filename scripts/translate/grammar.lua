@@ -3471,6 +3471,9 @@ function G:parse(b, e)
           end
         end
       end
+      -- ("reduce 230, once slowed descend 6000": a condition of slowing waits for a speed given, never a level)
+      local _, by_speed = self:when_reached(s)
+      if by_speed and before and before:sub(1, 5) ~= "ATSPD" then before = nil end
       -- A value instruction said without its value next to other, complete
       -- instructions is left out; it becomes the question only when nothing
       -- else was understood. One whose value is named by what it is ("reduce to minimum clean speed, say
@@ -3819,6 +3822,18 @@ function G:when_reached(s)
   -- instruction before; "once you have it", "when you've got it": its value, held)
   local subject = self:word(verb, "you it he she they")
   if subject then verb = self:skip_fillers(verb + 1) end
+  -- ("once slowed", "when you've slowed down", "once it has slowed to that": the speed of the instruction before,
+  -- reached; true and "speed")
+  local slowed = verb
+  if self:word(slowed, "you've they've it's he's she's") then slowed = self:skip_fillers(slowed + 1) end
+  if self:word(slowed, "has have 've") then slowed = self:skip_fillers(slowed + 1) end
+  if self:word(slowed, "@speed_verbs") then
+    verb = slowed
+    local k = self:skip_fillers(verb + 1)
+    if self:word(k, "down up") then k = self:skip_fillers(k + 1) end
+    if self:word(k, "to") and self:word(self:skip_fillers(k + 1), "it that") then k = self:skip_fillers(self:skip_fillers(k + 1) + 1) end
+    return k == s.trig, "speed"
+  end
   local have = subject and self:word(verb, "have got") and self:word(self:skip_fillers(verb + 1), "it that")
   if not (have or self:word(verb, "reaching reach reaches hit hits")) then return false end
   local k = self:skip_fillers(verb + 1)

@@ -10515,3 +10515,15 @@ do
   asked(ex("AAL19 descend FL200, at BBB"), "no instruction after the waypoint")
   check_eq(ex("AAL19, descend FL200, at BBB 250 knots"), "ALT AAL19 FL200 ; AT AAL19 BBB SPD 250")
 end
+
+-- Cycle 48 (f114): "once slowed", "when you've slowed down" after a speed given waits for that speed (ATSPD);
+-- after a level, or with nothing before it, asked
+do
+  local _, ex = scene({ "CRE SWA34 B737 39.80 -76.30 205 13000 270" })
+  check_eq(ex("SWA34 reduce speed to two three zero, once slowed descend and maintain six thousand"),
+    "SPD SWA34 230 ; ATSPD SWA34 230 ALT SWA34 6000")
+  check_eq(ex("SWA34 reduce speed to 230, when you've slowed down descend 6000"),
+    "SPD SWA34 230 ; ATSPD SWA34 230 ALT SWA34 6000")
+  asked(ex("SWA34 descend 8000, once slowed reduce 230"), "slowing after a level")
+  asked(ex("SWA34 once slowed descend 6000"), "slowing with no speed before it")
+end
