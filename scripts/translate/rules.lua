@@ -905,6 +905,18 @@ return function(intent, rule, words)
     return pair ~= nil and g:word_in(k + 1, math.min(#g.t + 1, k + 8), "@route_nouns")
   end }
   rule { "via through", "addwpt", prev = { 3, "route" } }
+  -- ("give DAL881 a route: direct OBK, then DPA, then JOT" to an aircraft with no route: the list's first place,
+  -- flown direct as the first waypoint of a route is, no direct-to of its own)
+  local function route_list_direct(g, i)
+    if not (g:word(i, "direct dct") and g.t[i - 1] and g.t[i - 1].text == ":" and g:word(i - 2, "route rte")
+        and g:has_ref(i + 1, i + 2, "waypoint")) then
+      return false
+    end
+    local refs = g:refs_in(1, i, "aircraft")
+    local a = refs[#refs] and refs[#refs].exists and g:state(refs[#refs].name)
+    return a ~= nil and #(a.route or {}) == 0
+  end
+  rule { "direct dct", false, when = route_list_direct }
   -- "EZY45 route: SPY, BERGI", "route for UAL9: BEDUM, EEL, then ARTIP": a route written as a list
   rule { "route rte", "addwpt", when = function(g, i)
     local k = i + 1
@@ -915,6 +927,7 @@ return function(intent, rule, words)
     -- (names taken back by a self-correction are skipped: "route: TWEED, then GRICE... no, just TWEED")
     local n = k + 1
     while g.t[n] and g.u:used(n) and g.noted[n] do n = n + 1 end
+    if route_list_direct(g, n) then n = n + 1 end
     return t ~= nil and t.kind == "punct" and t.text == ":" and g:has_ref(n, n + 1, "waypoint")
   end }
   -- "VLG2211 route MERGE then ABRIX", "IBE3421: wpt PPG then GIROM": a route or waypoint word straight after

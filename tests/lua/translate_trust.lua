@@ -10527,3 +10527,21 @@ do
   asked(ex("SWA34 descend 8000, once slowed reduce 230"), "slowing after a level")
   asked(ex("SWA34 once slowed descend 6000"), "slowing with no speed before it")
 end
+
+-- Cycle 48 (f114): a navaid said by its name where a limit ends ("until Yardley", "until the Yardley VOR") or as a
+-- place of a route listed with "then" or "and" ("direct Joliet, then Northbrook", "a route via Joliet and DuPage")
+-- is read as its ident typed is; off the route a limit is asked; a name after a comma alone says the place before
+-- again ("direct OBK, Northbrook"). "a route: direct A, then B" to an aircraft with no route is the route listed
+do
+  local nav, pt = navscene({ "CRE UAL12 B738 40.00 -75.30 050 11000 260", "ADDWPT UAL12 ARD", "ADDWPT UAL12 SBJ",
+    "CRE SWA7 B737 41.7 -88.2 090 FL200 280" }, "navaids by name in limits and route lists")
+  if nav then
+    check_eq(pt("UAL12 maintain 250 knots till Yardley"), "SPD UAL12 250")
+    check_eq(pt("UAL12 maintain 250 knots until the Yardley VOR"), "SPD UAL12 250")
+    asked(pt("UAL12 maintain 250 knots until Robbinsville"), "a limit ending at a navaid off the route")
+    check_eq(pt("SWA7 direct Joliet, then Northbrook"), "ADDWPT SWA7 JOT ; DIRECT SWA7 JOT ; ADDWPT SWA7 OBK")
+    check_eq(pt("give SWA7 a route: direct Northbrook, then Joliet"), "ADDWPT SWA7 OBK ; ADDWPT SWA7 JOT")
+    check_eq(pt("give SWA7 a route via Joliet and DuPage"), "ADDWPT SWA7 JOT ; ADDWPT SWA7 DPA")
+    check_eq(pt("SWA7 direct OBK, Northbrook"), "ADDWPT SWA7 OBK ; DIRECT SWA7 OBK")
+  end
+end
