@@ -1105,6 +1105,12 @@ local function written_forms(text, world)
   end
   -- ".hold", ".run": a command typed with a text client's leading dot is the word
   where("%.", "^(%s*)%.(%a)", "%1%2")
+  -- "O'Hare", "Chicago O'Hare": a name written with "O'" is the navdata's, which has no apostrophe (OHARE;
+  -- "o'clock" stays)
+  where("o'", "%f[%a]([Oo])'(%a%a%a+)", function(o, name)
+    if name:lower() == "clock" then return nil end
+    return o .. name
+  end)
   -- "@ FL200", "x NAXEL @ 250", "@ 120 s ...": an at sign typed apart before a value or a name is "at"
   where("@", "(%s)@%s*(%w)", "%1at %2")
   where("@", "^@%s*(%w)", "at %1")

@@ -10545,3 +10545,13 @@ do
     check_eq(pt("SWA7 direct OBK, Northbrook"), "ADDWPT SWA7 OBK ; DIRECT SWA7 OBK")
   end
 end
+
+-- Cycle 48 (f114): a name written with "O'" ("O'Hare") is the navdata's, which has no apostrophe; "o'clock" stays
+do
+  local nav, pt = navscene({ "CRE SWA7 B737 41.7 -88.2 090 FL200 280" }, "a name written with O'")
+  if nav then
+    check_eq(pt("SWA7's destination is O'Hare"), "DEST SWA7 KORD")
+    check_eq(pt("SWA7 direct to Chicago O'Hare"), "ADDWPT SWA7 KORD ; DIRECT SWA7 KORD")
+    check_eq(pt("traffic at 2 o'clock, SWA7 turn left heading 300"), "")
+  end
+end
