@@ -2394,6 +2394,8 @@ return function(H, f, compass)
         local r = self:refs_in(k + 1, k + 2, "waypoint")[1]
         if r and not self:word(r.b, "@navaid_kinds") then return r.name:upper() end
         local id = self:place_by_name(k + 1, math.min(s.e, k + 4))
+        -- ("over Dulles": a distinctive part of a nearby airport's name, as a destination is read)
+        for _, a in ipairs(id and {} or self.fleet) do id = id or self:airport_by_words(k + 1, math.min(s.e, k + 4), a) end
         if id then return id end
       end
     end
@@ -3394,7 +3396,9 @@ return function(H, f, compass)
       if q.kind == "speed" and not spd then spd = self:take(q) end
       -- (the direction said after "from", after "wind of", or straight before "at" and the speed: "270 at 40 kt",
       -- "270 at 40" as a wind is reported)
-      local before_speed = self:word(q.e, "at") and self:quantities(q.e + 1, q.e + 2)[1]
+      -- (the speed's first token straight after "at": "two seven zero at five zero knots" too)
+      local before_speed = self:word(q.e, "at") and self:quantities(q.e + 1, s.e)[1]
+      if before_speed and before_speed.b ~= q.e + 1 then before_speed = nil end
       local reported = before_speed and not dir and not spd and self:wind_reported(q, before_speed)
       local said = self:word(q.b - 1, "from") or (self:word(q.b - 1, "of") and self:word(q.b - 2, "wind winds"))
         or (before_speed and before_speed.kind == "speed") or reported

@@ -10555,3 +10555,15 @@ do
     check_eq(pt("traffic at 2 o'clock, SWA7 turn left heading 300"), "")
   end
 end
+
+-- Cycle 48 (f114): a wind's direction in spoken digits before "at" and its speed ("two four zero at three five
+-- knots"), and a place named by a distinctive word of a nearby airport's name ("over Midway"), are read for WIND and
+-- GETWIND as a destination's are; a name that means no place is still asked
+do
+  local nav, pt = navscene({ "CRE SWA7 B737 41.7 -88.2 090 FL200 280" }, "a wind over an airport by its name")
+  if nav then
+    check_eq(pt("set wind two four zero at three five knots over Midway"), "WIND KMDW 240 35")
+    check_eq(pt("getwind over Midway"), "GETWIND KMDW")
+    asked(pt("set wind 270 at 50 knots over Flurbington"), "a name that means no place")
+  end
+end
