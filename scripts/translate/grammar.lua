@@ -1149,6 +1149,12 @@ local function written_forms(text, world)
   end
   -- ".hold", ".run": a command typed with a text client's leading dot is the word
   where("%.", "^(%s*)%.(%a)", "%1%2")
+  -- "O'Hare", "Chicago O'Hare": a name written with "O'" is the navdata's, which has no apostrophe (OHARE;
+  -- "o'clock" stays)
+  where("o'", "%f[%a]([Oo])'(%a%a%a+)", function(o, name)
+    if name:lower() == "clock" then return nil end
+    return o .. name
+  end)
   -- "@ FL200", "x NAXEL @ 250", "@ 120 s ...": an at sign typed apart before a value or a name is "at"
   where("@", "(%s)@%s*(%w)", "%1at %2")
   where("@", "^@%s*(%w)", "at %1")
@@ -2009,6 +2015,16 @@ function G:clause_alone(b, e)
     end
   end
   return true
+end
+
+-- The clause holding token i: [lo, hi), bounded by punctuation and by "and", "then" or "but" between two
+-- instructions' words ("turn on MVP resolution and let it use vertical too": "turn on MVP resolution").
+function G:clause_around(i)
+  local function bound(k) return self.t[k].kind == "punct" or self:word(k, "and but @then_words") end
+  local lo, hi = i, i + 1
+  while lo > 1 and not bound(lo - 1) do lo = lo - 1 end
+  while hi <= #self.t and not bound(hi) do hi = hi + 1 end
+  return lo, hi
 end
 
 -- True when "vertical" at i is said of conflict resolutions ("let MVP use vertical speed in the
@@ -3685,6 +3701,9 @@ function G:parse(b, e)
           end
         end
       end
+      -- ("reduce 230, once slowed descend 6000": a condition of slowing waits for a speed given, never a level)
+      local _, by_speed = self:when_reached(s)
+      if by_speed and before and before:sub(1, 5) ~= "ATSPD" then before = nil end
       -- A value instruction said without its value next to other, complete
       -- instructions is left out; it becomes the question only when nothing
       -- else was understood. One whose value is named by what it is ("reduce to minimum clean speed, say
@@ -4062,6 +4081,18 @@ function G:when_reached(s)
   -- instruction before; "once you have it", "when you've got it": its value, held)
   local subject = self:word(verb, "you it he she they")
   if subject then verb = self:skip_fillers(verb + 1) end
+  -- ("once slowed", "when you've slowed down", "once it has slowed to that": the speed of the instruction before,
+  -- reached; true and "speed")
+  local slowed = verb
+  if self:word(slowed, "you've they've it's he's she's") then slowed = self:skip_fillers(slowed + 1) end
+  if self:word(slowed, "has have 've") then slowed = self:skip_fillers(slowed + 1) end
+  if self:word(slowed, "@speed_verbs") then
+    verb = slowed
+    local k = self:skip_fillers(verb + 1)
+    if self:word(k, "down up") then k = self:skip_fillers(k + 1) end
+    if self:word(k, "to") and self:word(self:skip_fillers(k + 1), "it that") then k = self:skip_fillers(self:skip_fillers(k + 1) + 1) end
+    return k == s.trig, "speed"
+  end
   local have = subject and self:word(verb, "have got") and self:word(self:skip_fillers(verb + 1), "it that")
   if not (have or self:word(verb, "reaching reach reaches hit hits")) then return false end
   local k = self:skip_fillers(verb + 1)
@@ -4660,6 +4691,20 @@ function G:at_waypoint(s, spec)
         return true
       end
     end
+    -- ("descend and maintain 10000, at MAPEL reduce speed to 250", "climb FL200 then after MAPEL turn left heading
+    -- 300"): a clause opened by "at", "after" or "over" and the waypoint after the instruction's value, behind a
+    -- comma or "then", closing the segment: the instruction is made, and the next one starts at the waypoint
+    -- (self.at_next: AT acid wp DO, G:parse)
+    local lead = r.b - 1
+    if lead > s.trig and self:word(lead, "at after over overhead") and #self:quantities(s.trig, lead) > 0
+        and self.t[lead - 1] and ((self.t[lead - 1].kind == "punct" and self.t[lead - 1].text == ",")
+          or self:word(lead - 1, "@then_words"))
+        and self:skip_fillers(r.e) >= s.e and s.e <= #self.t and spec and spec.handler and not self:in_reason(r.b) then
+      self[spec.handler](self, { intent = s.intent, b = s.b, trig = s.trig, e = lead - 1 }, spec)
+      self:explain(lead - 1, r.e)
+      self.at_next = r
+      return true
+    end
     if (self:word(r.b - 1, "at cross crossing over abeam overhead") or opened) and not self:in_reason(r.b) then
       return tied_to_waypoint(self, r, opened and (self:word(first, "after") and "after"
         or not self:word(first, "at over overhead") and "after passing") or "at")
@@ -4980,11 +5025,27 @@ function G:uncarried()
     -- instruction word is a value said for an instruction, "descend FL130, reducing 250", never dropped in
     -- silence; single digits, and numbers before any instruction, "United 82 82 flight 8180 descend", are
     -- often recognition noise in a callsign)
+    -- (a level straight after "above" or "below" beside an instruction, before its word or after its value, or
+    -- alone in its clause, "above 10000 increase speed to 300", "reduce 250 knots below 10000", "climb 17000, above
+    -- 12000", is a condition or a bound on it, no value relative to another: carried by a command, or asked; "the
+    -- normal limit below ten thousand" remarks on one)
     local at = at_word(q)
+    local bound = self:word(q.b - 1, "@below @above")
+      and (q.kind == "alt" or (q.kind == "plain" and q.value >= 1000 and q.value % 100 == 0))
+    local value_before = false
+    for _, p in ipairs(bound and self:quantities(math.max(1, q.b - 6), q.b - 1) or {}) do
+      value_before = value_before or p.e == q.b - 1
+    end
+    if bound and self:intent_at(self:skip_fillers(q.e)) == nil and not value_before then
+      local lo, hi = self:clause_around(q.b)
+      for k = lo, hi - 1 do
+        bound = bound and (k == q.b - 1 or (k >= q.b and k < q.e) or self.t[k].filler)
+      end
+    end
     if (MUST_CARRY[q.kind] or (q.kind == "dist" and closing(q)) or (q.kind == "plain" and (q.number.decimal or at
           or (q.value >= 10 and (q.b > first or said_for_aircraft(q))))))
         and not self.taken[q.b]
-        and not ((q.by or relative) and not position(q)) and q.b > corrected
+        and not ((q.by or (relative and not bound)) and not position(q)) and q.b > corrected
         and not (value_carried(q, q.kind == "time" and times or nums) and not said_again(q)) then
       self.leftover = self:raw(at or (self:at_clause(q) and q.b - 1) or q.b, q.e)
       return
@@ -5418,16 +5479,21 @@ function G:stations()
   while b <= #self.t do
     local e = b
     while e <= #self.t and self.t[e].kind ~= "punct" do e = e + 1 end
-    if e > b and e <= #self.t and (self.t[e].text == "," or self.t[e].text == ":") then
+    local stop = e > b and self.t[e] and self.t[e].text
+    local from
+    if (stop == "," or stop == ":" or stop == "-") and self:station_sim(b, e) then
+      from = b
+    elseif stop == "," or stop == ":" then
       -- the station straight after the callsign, no comma between ("Ethiopian 306 Nairobi, climb ...")
-      local from = b
+      from = b
       for _, r in ipairs(self.refs) do
         if r.kind == "aircraft" and r.b >= b and r.e > r.b and r.e < e then from = r.e end
       end
-      if self:station_clause(from, e, from > b) then
-        self:mark_used(from, e)
-        for k = from, e - 1 do self.noted[k] = true end
-      end
+      if not self:station_clause(from, e, from > b) then from = nil end
+    end
+    if from then
+      self:mark_used(from, e)
+      for k = from, e - 1 do self.noted[k] = true end
     end
     b = e + 1
   end
@@ -5468,6 +5534,27 @@ function G:places_by_position()
       end
     end
   end
+end
+
+-- True when tokens [b, e), a clause opening the request before a comma, colon or dash, are a station's
+-- simulator addressed (lexicon.station_sims after one or two words naming the station: "Chicago sim, ...",
+-- "N90 sim - ...", "Potomac simulator: ..."), no callsign said: each word of the name capitalised and no
+-- word squawk knows (a facility's identifier typed, "ZAU", "N90", or a name; no aircraft flying, no value),
+-- or the name a city, airport or unit the station is named after ("new york sim, ...").
+G.station_sims = set_of(lexicon.station_sims)
+function G:station_sim(b, e)
+  if b ~= self:skip_fillers(1) or e - b < 2 or e - b > 3 or not G.station_sims[self.t[e - 1].text] then return false end
+  local words, proper = {}, true
+  for k = b, e - 2 do
+    local t, ref = self.t[k], self:refs_in(k, k + 1, "aircraft")[1]
+    if ref and ref.exists then return false end
+    if not ref and (t.kind ~= "word" or #self:quantities(k, k + 1) > 0) then return false end
+    words[#words + 1] = t.text
+    proper = proper and t.raw:match("^%u") ~= nil and (ref ~= nil or not known_word(t.text))
+  end
+  local name = table.concat(words, " ")
+  return proper or ATC_UNITS[name] ~= nil or lexicon.city_airports[name] ~= nil
+    or (self.world.airports_of_city ~= nil and #self.world.airports_of_city(name) > 0)
 end
 
 -- True when tokens [b, e), a clause ending in a comma or colon (`after_callsign`: or its part after a
@@ -7056,6 +7143,23 @@ function G:value_next(i)
   return q ~= nil and q.b == v
 end
 
+-- True when "resume normal speed" or "resume published speed" at i is the whole request to one aircraft flying its
+-- route's profile (LNAV and VNAV on, named before it): the profile's speed given back, VNAV ON. Not beside another
+-- instruction ("turn left heading 250, resume normal speed", "climb FL270 and ..."): VNAV ON flies the route's
+-- track and levels again, undoing it.
+function G:profile_speed_resumed(i)
+  if not (self:word(i + 1, "normal published") and self:word(i + 2, "speed speeds")) then return false end
+  local refs = self:refs_in(1, i, "aircraft")
+  local r = refs[#refs]
+  local a = r and self:state(r.name)
+  if not (a and a.vnav == true and a.lnav == true) then return false end
+  for k = 1, #self.t do
+    local t = self.t[k]
+    if (k < r.b or (k >= r.e and k < i) or k > i + 2) and t.kind ~= "punct" and not t.filler then return false end
+  end
+  return true
+end
+
 -- Finds the phrases of lexicon.not_simulated, marks their tokens used (the
 -- rest of the request is read as if they were not there) and returns the
 -- reply naming them, or nil. A phrase runs from its word to the next
@@ -7080,6 +7184,7 @@ function G:not_simulated()
             and (not c.subject or self:said_after_subject(i, c.subject))
             and (not c.after_heading or self:after_heading(i))
             and not (c.not_before and self:word(self:skip_fillers(i + 1), c.not_before))
+            and not (c.not_to_profile and self:profile_speed_resumed(i))
             and not (c.no_value and self:value_next(i))
             and not (c.no_number_after and self.t[i + 2] and self.t[i + 2].kind == "number")
             and not (c.not_after and self:word(i - 1, c.not_after)) and not self:word(i + 1, "not")
@@ -8863,6 +8968,7 @@ function M.translate(text, world)
   g:role_refs()
   g:fix_refs()
   g:navaid_name_refs()
+  g:named_place_refs()
   g:opening_right()
   g:urgent_right()
   g:runway_sides()

@@ -1874,7 +1874,13 @@ function m:at_altitude(s)
     b = b - 1
     while b > 1 and self.t[b - 1].kind ~= "punct" do b = b - 1 end
   end
-  local a = self:find_word(b, s.trig, "at passing leaving reaching through passes leaves reaches pass reach hit hits crossing crosses")
+  local a = self:find_word(b, s.trig, "at passing leaving reaching through passes leaves reaches pass reach hit hits crossing crosses after")
+  -- ("after one zero thousand increase speed to 300": a level said straight after "after" is passed; "after
+  -- passing FL100" is read at its verb)
+  local after_q = self:word(a, "after") and self:quantities(a + 1, s.trig)[1]
+  if self:word(a, "after") and not (after_q and after_q.b == a + 1) then
+    a = self:find_word(a + 1, s.trig, "at passing leaving reaching through passes leaves reaches pass reach hit hits crossing crosses")
+  end
   -- ("when you get to FL180 reduce 250", "once it gets to FL180": "to" after "get" is the verb's)
   local got = self:find_word(b, s.trig, "get gets getting")
   local got_to = got < a and self:word(got + 1, "to")

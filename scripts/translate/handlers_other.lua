@@ -1178,6 +1178,91 @@ return function(H, f, compass)
     return nil
   end
 
+  -- The place named by one or two capitalised words from token k (its navaid kind after them or not: "Solberg",
+  -- "the Brussels VOR" from "Brussels") for the aircraft `a` (m:place_by_name; `reference`: a place a limit or
+  -- distance is measured from; `navaid_only`: a navaid of that name near `a` only), as a waypoint ref put in
+  -- self.refs in place of any there; the token after it, or nil when the words name no such place.
+  local function place_ref(self, k, a, reference, navaid_only)
+    local e = k
+    while e < k + 2 and self.t[e] and self.t[e].kind == "word" and self.t[e].alpha and self.t[e].raw:match("^%u%l")
+        and not self.t[e].keyword and not self:word(e, "@navaid_kinds") and not self:has_ref(e, e + 1) do
+      e = e + 1
+    end
+    -- (the words are explained only when they are read as the ref: a place refused leaves them to be asked)
+    local explained = {}
+    for x = k, e - 1 do explained[x] = (self.explained or {})[x] end
+    local id = e > k and a and self:place_by_name(k, e, a, reference)
+    if id and navaid_only then
+      local navaid, named = false, self.world.navaids_named
+      for _, n in ipairs(a.lat and named(self:raw(k, e):lower(), a.lat, a.lon, L.navaid_range_nm) or {}) do
+        navaid = navaid or n:upper() == id:upper()
+      end
+      if not navaid then
+        for x = k, e - 1 do self.explained[x] = explained[x] end
+        return nil
+      end
+    end
+    if not id then return nil end
+    local stop = self:word(e, "@navaid_kinds") and e + 1 or e
+    local kept = {}
+    for _, x in ipairs(self.refs) do
+      if x.e <= k or x.b >= stop then kept[#kept + 1] = x end
+    end
+    local at = 1
+    while kept[at] and kept[at].b < k do at = at + 1 end
+    table.insert(kept, at, { kind = "waypoint", name = id, b = k, e = stop })
+    self.refs = kept
+    return stop
+  end
+  -- The aircraft flying named last before token i, or nil.
+  local function flying_before(self, i)
+    local refs = self:refs_in(1, i, "aircraft")
+    local r = refs[#refs]
+    return r and r.exists and self:state(r.name) or nil
+  end
+
+  -- Places said by their names where a limit ends or a route is listed, read before the parse as waypoint refs so
+  -- that the limit and the route read them as they read idents typed: one after "until" or "till" ("maintain 250
+  -- knots until Solberg", "till the Solberg VOR": m:place_by_name for the aircraft named before it, a place of
+  -- reference), and each place of a list of two or more after "direct", "dct", "via", "through" or a route's
+  -- colon, parted by "then" or "and" ("direct Northbrook, then DuPage, then Joliet", "a route: Chievres, then
+  -- Brussels VOR, then Antwerp"). A name that means no place stays words (asked about).
+  function m:named_place_refs()
+    if not self:said("until till direct dct via through route") then return end
+    for i = 1, #self.t - 1 do
+      local a = flying_before(self, i)
+      if a and self:word(i, "until till") then
+        place_ref(self, self:word(i + 1, "the") and i + 2 or i + 1, a, true)
+      end
+      local opens = self:word(i, "direct dct via through") or (self.t[i].text == ":" and self:word(i - 1, "route"))
+      local k = opens and self:skip_fillers(self:word(i + 1, "to") and i + 2 or i + 1)
+      -- (a list: the first place, then "then" or "and", a comma before it or not, and the next place, two places
+      -- at least; a name after a comma alone may say the place before again: "direct to QPR, Quimper")
+      local function parted(x)
+        local j, worded = x, false
+        while self.t[j] and (self.t[j].text == "," or self:word(j, "then and")) do
+          worded = worded or self:word(j, "then and")
+          j = j + 1
+        end
+        return worded and j or nil
+      end
+      local first = k and a and self.t[k] and self.t[k].raw:match("^%u")
+      local stops = {}
+      while first and k do
+        local stop = self:has_ref(k, k + 1, "waypoint") and self:refs_in(k, k + 1, "waypoint")[1].e or nil
+        stops[#stops + 1] = { k = k, stop = stop }
+        local e = k
+        while e < k + 3 and self.t[e] and self.t[e].kind == "word" and not self:word(e, "then and") do e = e + 1 end
+        k = parted(e)
+        first = k and self.t[k] and self.t[k].raw:match("^%u")
+      end
+      -- (between the list's places an airport's name is no waypoint flown over: it stays asked about)
+      for n = 1, #stops >= 2 and #stops or 0 do
+        if not stops[n].stop then place_ref(self, stops[n].k, a, nil, n < #stops) end
+      end
+    end
+  end
+
   -- A place said by its name where an aircraft is put or sent: an airport of that name within
   -- lexicon.navaid_range_nm of the aircraft `a` (of any aircraft when `a` is nil), else a navaid of
   -- that name there ("direct Perth" near Scotland is the PTH VOR, not YPPH), else an airport
@@ -2342,6 +2427,8 @@ return function(H, f, compass)
         local r = self:refs_in(k + 1, k + 2, "waypoint")[1]
         if r and not self:word(r.b, "@navaid_kinds") then return r.name:upper() end
         local id = self:place_by_name(k + 1, math.min(s.e, k + 4))
+        -- ("over Dulles": a distinctive part of a nearby airport's name, as a destination is read)
+        for _, a in ipairs(id and {} or self.fleet) do id = id or self:airport_by_words(k + 1, math.min(s.e, k + 4), a) end
         if id then return id end
       end
     end
@@ -2844,16 +2931,34 @@ return function(H, f, compass)
     self.last_on = on
     return on == 1 and "ON" or "OFF"
   end
+  -- the instructions whose value VNAV ON would replace, by what they give
+  local VALUE_GIVEN = { alt = "level", maintain = "value", spd = "speed", hdg = "heading", vs = "rate" }
   local function nav(self, s, cmd)
     local id = self:acid(s, "switch " .. cmd)
     if not id then return end
     local on, now = on_off(self, s), self:state(id)
     -- "resume own navigation" for an aircraft with no route and no waypoint named: nothing to fly
-    -- (the switch named, "lnav on", is set as asked; a direct-to in the request names its place)
+    -- (the switch named, "lnav on", is set as asked; a direct-to in the request names its place); "comply with
+    -- restrictions" likewise has no route's restrictions to fly
     if cmd == "LNAV" and on == "ON" and now and now.route and #now.route == 0
         and not self:word_in(s.b, s.e, "lnav") and not self:has_ref(1, #self.t + 1, "waypoint")
         and not self:word_in(1, #self.t + 1, "direct dct") then
       return self:need(string.format("%s has no route to navigate by. Which waypoint or heading should it fly?", id))
+    end
+    -- (beside a level, rate, heading or speed given, VNAV, which flies the route's track, levels and speeds,
+    -- would undo it)
+    if cmd == "VNAV" and self:word(s.trig, "comply") then
+      if now and now.route and #now.route == 0 and not self:word_in(1, #self.t + 1, "direct dct") then
+        return self:need(string.format("%s has no route whose restrictions it could fly. Which level or speed "
+          .. "should it fly?", id))
+      end
+      for k = 1, #self.t do
+        local given = VALUE_GIVEN[self:intent_at(k) or ""]
+        if given then
+          return self:need(string.format("Should %s fly the %s given, or its route's restrictions (VNAV ON), "
+            .. "which would replace it?", id, given))
+        end
+      end
     end
     -- "resume own navigation to MIKSI", "own navigation LILJA": its route resumed at that place (the waypoint
     -- after "to", or straight after "navigation"), a direct-to (which turns LNAV on)
@@ -3276,8 +3381,11 @@ return function(H, f, compass)
       if v then return self:emit("DTMULT " .. f.num(v)) end
     end
     -- "at normal speed again" ("go again, normal speed": "normal" straight before the segment's word, left in the
-    -- clause before)
-    if self:word_in(s.b, s.e, "normal") or self:word(s.trig - 1, "normal") then return self:emit("DTMULT 1") end
+    -- clause before, with no aircraft named: "DAL14 heading 250, resume normal speed" is the aircraft's speed)
+    if self:word_in(s.b, s.e, "normal")
+        or (self:word(s.trig - 1, "normal") and not self:has_ref(1, #self.t + 1, "aircraft")) then
+      return self:emit("DTMULT 1")
+    end
     local real = self:find_word(s.b, s.e, "real")  -- "slow the clock to real time"
     if real < s.e and self:word(real + 1, "time") then
       -- "N times real time": the factor said before the segment's "real"
@@ -3329,7 +3437,9 @@ return function(H, f, compass)
       if q.kind == "speed" and not spd then spd = self:take(q) end
       -- (the direction said after "from", after "wind of", or straight before "at" and the speed: "270 at 40 kt",
       -- "270 at 40" as a wind is reported)
-      local before_speed = self:word(q.e, "at") and self:quantities(q.e + 1, q.e + 2)[1]
+      -- (the speed's first token straight after "at": "two seven zero at five zero knots" too)
+      local before_speed = self:word(q.e, "at") and self:quantities(q.e + 1, s.e)[1]
+      if before_speed and before_speed.b ~= q.e + 1 then before_speed = nil end
       local reported = before_speed and not dir and not spd and self:wind_reported(q, before_speed)
       local said = self:word(q.b - 1, "from") or (self:word(q.b - 1, "of") and self:word(q.b - 2, "wind winds"))
         or (before_speed and before_speed.kind == "speed") or reported
@@ -3499,7 +3609,9 @@ return function(H, f, compass)
         .. "speed too (RMETHV V/S): which should it use?")
     end
     self:emit((off or only) and "RMETHV OFF" or "RMETHV V/S")
-    self:mark_used(s.b, s.e)
+    -- (its clause whole: "turn on MVP resolution and allow vertical manoeuvres" reads "allow" with the vertical)
+    local lo, hi = self:clause_around(s.trig)
+    self:mark_used(math.min(s.b, lo), math.max(s.e, hi))
   end
   function m:resume_nav(s)
     if self:asks_setting() then return self:emit("RESNAV") end

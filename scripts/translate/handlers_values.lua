@@ -165,6 +165,17 @@ return function(H, f, wrap, compass)
         if q.kind == "plain" and q.b >= s.trig then plain[#plain + 1] = q end
       end
     end
+    -- ("climb and maintain 17000, above one zero thousand increase speed to 300": a level straight after "above" or
+    -- "below" is a bound or a condition, never the level flown while another is said)
+    local function unbound(list)
+      local kept = {}
+      for _, q in ipairs(list) do
+        if not self:word(q.b - 1, "@above @below") then kept[#kept + 1] = q end
+      end
+      return kept
+    end
+    local free_unit, free_plain = unbound(with_unit), unbound(plain)
+    if #free_unit + #free_plain > 0 then with_unit, plain = free_unit, free_plain end
     if passed and #with_unit == 0 and #plain == 0 then
       return self:need(string.format("Which level should %s fly to? '%s' is a level to pass, not one to level off at.",
         ids[1], self:raw(passed.b - 1, passed.e)))
@@ -440,11 +451,11 @@ return function(H, f, wrap, compass)
           ids[1], f.int(cur), f.int(ft), f.int(ft), self:raw(q.b, q.e)))
       end
     end
-    -- "descend 3000 ft" typed right after the verb, from higher up: to or by? Both read as
-    -- descents. (Spoken levels, "descend two thousand five hundred feet", are targets.)
+    -- "descend 3000 ft" or "descend two thousand feet" right after the verb, from higher up: to or by?
+    -- Both read as descents, typed or spoken.
     -- (an altitude said with the altimeter setting it is read on, "3000 feet QNH 1008", is a level)
     if not relative and now and not q.to and not fl and dir ~= 0 and q.kind == "alt" and q.b == s.trig + 1
-        and q.number.typed and self:word(q.e - 1, "@feet") and not self:word_in(q.e, #self.t + 1, "@altimeter") then
+        and self:word(q.e - 1, "@feet") and not self:word_in(q.e, #self.t + 1, "@altimeter") then
       local cur = now.alt_ft or 0
       local by_fits = (dir < 0 and cur - ft >= 0) or (dir > 0 and cur + ft <= 60000)
       local to_fits = (dir < 0 and ft < cur - 50) or (dir > 0 and ft > cur + 50)

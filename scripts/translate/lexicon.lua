@@ -629,6 +629,10 @@ return {
   -- labels of two words that open a line without a colon, as speech recognition writes them ("sim op
   -- delete speedbird one one"): dropped when a request follows
   bare_labels = { "sim op", "sim operator", "simulator operator", "pseudo pilot", "sim pilot" },
+  -- the simulator of a station, named after the station's one or two words opening the request before a
+  -- comma, colon or dash ("Chicago sim, ...", "N90 sim - ..."): the addressee (G:station_sim; "simulator"
+  -- is read as "simulation")
+  station_sims = { "sim", "simulation" },
   -- a second speaker's label and assent after the request ("student: ity2011 climb fl150? engineer: yes do
   -- it"): the request stands as said; any other word after such a label leaves the line as typed
   assent = { "yes", "yeah", "yep", "ok", "okay", "sure", "do", "it", "go", "ahead", "fine", "approved",
@@ -1020,7 +1024,8 @@ return {
   -- one only said as an instruction's manner, the phrase its word alone (G:said_as_manner);
   -- `no_value`: none with a value said straight after its word (G:value_next); `routed`: a place it names off
   -- the route of the one aircraft addressed is asked (G:limit_off_route); `no_number_after`: no phrase when a
-  -- number follows its `near` word
+  -- number follows its `near` word; `not_to_profile`: none said to an aircraft flying its route's profile
+  -- (G:profile_speed_resumed)
   not_simulated = {
     -- ("squak", "sqwk": squawk typed short)
     { what = "transponder codes", words = "squawk squawking sq squak sqwk sqk",
@@ -1074,9 +1079,10 @@ return {
     { what = "restrictions lifted", words = "cancel", near = { "restriction", "restrictions" },
       through = "speed level altitude", stops_at_value = true },
     -- "EZY45KL resume normal speed": said to an aircraft, its speed restriction lifted (said alone, "resume
-    -- normal speed" is the simulation's rate, DTMULT 1)
+    -- normal speed" is the simulation's rate, DTMULT 1; said to an aircraft flying its route's profile, the
+    -- profile's speed given back: VNAV ON)
     { what = "restrictions lifted", words = "resume", near = { "speed" }, window = 2, after_callsign = true,
-      not_before = "speed", through = "speed", stops_at_value = true },
+      not_before = "speed", through = "speed", stops_at_value = true, not_to_profile = true },
     -- "turn right heading 330, vectors for runway 28", "vectoring for the ILS": what a vector is for, a
     -- runway squawk does not fly to
     { what = "approaches to a runway", words = "vectors vectoring vector",

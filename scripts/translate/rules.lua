@@ -217,6 +217,8 @@ return function(intent, rule, words)
     end
     return g.fields_create == i
   end }
+  -- ("comply with published speed and altitude restrictions": the kinds of restriction complied with, VNAV)
+  rule { "speed altitude level", false, prev = { 6, "comply" }, next = "and restriction restrictions" }
   -- "swr84c altitude?", "afr1442 speed?", "bel21a lvl?": a state word asked with "?" straight after it, an aircraft named
   -- before it and no value said anywhere: a question of the aircraft's state (POS), no instruction (an
   -- instruction's shorthand, "ezy45 fl?", "hdg?", is a value left out: asked)
@@ -495,6 +497,8 @@ return function(intent, rule, words)
   -- "set the timescale to 4", "time scale 2x": a game engine's time scale, the simulation's rate
   rule { "timescale", "dtmult" }
   rule { "scale", "dtmult", prev = { 1, "time" } }
+  -- ("Delta 1450 resume normal speed" to an aircraft flying its profile: the profile's speed, VNAV ON)
+  rule { "speed speeds", false, when = function(g, i) return g:profile_speed_resumed(i - 2) end }
   rule { "speed", "dtmult", prev = { 2, "x times normal" } }  -- "three times normal speed", "at normal speed"
   rule { "speed", "dtmult", prev = { 1, "@sim" }, when = function(g, i)  -- "sim speed x2"
     local nx = g.t[i + 1]
@@ -921,6 +925,18 @@ return function(intent, rule, words)
     return pair ~= nil and g:word_in(k + 1, math.min(#g.t + 1, k + 8), "@route_nouns")
   end }
   rule { "via through", "addwpt", prev = { 3, "route" } }
+  -- ("give DAL881 a route: direct OBK, then DPA, then JOT" to an aircraft with no route: the list's first place,
+  -- flown direct as the first waypoint of a route is, no direct-to of its own)
+  local function route_list_direct(g, i)
+    if not (g:word(i, "direct dct") and g.t[i - 1] and g.t[i - 1].text == ":" and g:word(i - 2, "route rte")
+        and g:has_ref(i + 1, i + 2, "waypoint")) then
+      return false
+    end
+    local refs = g:refs_in(1, i, "aircraft")
+    local a = refs[#refs] and refs[#refs].exists and g:state(refs[#refs].name)
+    return a ~= nil and #(a.route or {}) == 0
+  end
+  rule { "direct dct", false, when = route_list_direct }
   -- "EZY45 route: SPY, BERGI", "route for UAL9: BEDUM, EEL, then ARTIP": a route written as a list
   rule { "route rte", "addwpt", when = function(g, i)
     local k = i + 1
@@ -931,6 +947,7 @@ return function(intent, rule, words)
     -- (names taken back by a self-correction are skipped: "route: TWEED, then GRICE... no, just TWEED")
     local n = k + 1
     while g.t[n] and g.u:used(n) and g.noted[n] do n = n + 1 end
+    if route_list_direct(g, n) then n = n + 1 end
     return t ~= nil and t.kind == "punct" and t.text == ":" and g:has_ref(n, n + 1, "waypoint")
   end }
   -- "VLG2211 route MERGE then ABRIX", "IBE3421: wpt PPG then GIROM": a route or waypoint word straight after
@@ -1412,6 +1429,17 @@ return function(intent, rule, words)
   -- ("lateral nav off", "vertical nav on": "nav" is navigation's short word)
   rule { "lateral", "lnav", next = "navigation nav" }
   rule { "vnav", "vnav" }
+  -- "proceed direct DJB, comply with restrictions", "comply with published speed and altitude restrictions": the
+  -- route's levels and speeds flown (VNAV); restrictions of one kind only ("comply with speed restrictions") are
+  -- no switch squawk has (beside a level, rate or heading given, which VNAV would undo, asked: m:vnav)
+  rule { "comply", "vnav", next = "with", when = function(g, i)
+    local k, said = i + 2, {}
+    while g:word(k, "the all published charted procedure procedural speed altitude level and") do
+      said[g.t[k].text] = true
+      k = k + 1
+    end
+    return g:word(k, "restriction restrictions") and (said.speed or false) == ((said.altitude or said.level) or false)
+  end }
   rule { "vertical vertically", "vnav", prev = { 4, "plan route" } }  -- "follow its flight plan vertically"
   rule { "vertical", "vnav", next = "profile navigation nav" }
   rule { "route rte waypoints", "listrte", prev = { 4, "show list display what print see look where check" } }
@@ -1910,6 +1938,10 @@ return function(intent, rule, words)
     return c < i and g:word_in(math.max(1, c - 4), c, "@condition past passing passed pass passes")
   end }
   rule { "resume", "lnav", near = { 3, "navigation nav route" } }
+  -- "Delta 1450 resume normal speed", "resume published speed": the whole request to an aircraft flying its
+  -- route's profile (G:profile_speed_resumed), the profile's speed given back (VNAV ON; a speed instruction took it
+  -- off). To an aircraft flying no profile it names no speed squawk knows (lexicon.not_simulated: restrictions lifted)
+  rule { "resume", "vnav", when = function(g, i) return g:profile_speed_resumed(i) end }
   -- ("rejoin own navigation at NORKU": the rejoining's, a direct-to the waypoint)
   rule { "own", false, prev = { 2, "rejoin rejoining" }, near = { 3, "at to over by" } }
   rule { "own", "lnav", near = { 2, "navigation nav" } }  -- "its own (route) navigation"
@@ -2203,10 +2235,22 @@ return function(intent, rule, words)
   -- "asas dt 2 sec", "dt asas 2": the interval of conflict detection (DT ASAS), no switch
   rule { "detection asas cd", false, near = { 1, "dt timestep" } }
   rule { "detection asas cdmethod cd", "asas" }
+  -- a switch said where word i is: an on or off word straight after it, or a switching verb in the four words
+  -- before ("conflict alerts on", "turn on the conflict probe"; "on the conflict probe" switches nothing)
+  local function switched(g, i)
+    return g:word(i + 1, "@on @off") or g:word_in(math.max(1, i - 4), i, "switch turn enable disable activate deactivate")
+  end
   -- "switch the conflict probe to state based", "conflict probe off": the conflict probe is conflict detection
-  -- (its look-ahead said, it names that setting's owner: "look-ahead five minutes on the conflict probe")
-  rule { "probe", "asas", prev = { 1, "conflict conflicts" }, when = function(g)
-    return not g:word_in(1, #g.t + 1, "look lookahead dtlook")
+  -- (its look-ahead said, it names that setting's owner, "look-ahead five minutes on the conflict probe", unless
+  -- switched where it is said: "conflict probe on, lookahead two minutes")
+  rule { "probe", "asas", prev = { 1, "conflict conflicts" }, when = function(g, i)
+    return not g:word_in(1, #g.t + 1, "look lookahead dtlook") or switched(g, i)
+  end }
+  -- "conflict alerts on", "turn on conflict alerting": a radar display's conflict alert switched is conflict
+  -- detection; unswitched it names an alert ("the moment the conflict alert sounded", "the conflict alerting
+  -- zone"), and with an aircraft named it is the reason for its instruction ("KLM12 conflict alert, turn left")
+  rule { "alert alerts alerting", "asas", prev = { 1, "conflict conflicts" }, when = function(g, i)
+    return switched(g, i) and not g:has_ref(1, #g.t + 1, "aircraft")
   end }
   rule { "cr", "reso", next = "on off mvp" }  -- "CD on, CR off", "cr mvp": conflict resolution by its letters
   -- ("CR: MVP": the letters as a label, a colon or a dash before the setting)
@@ -2224,8 +2268,15 @@ return function(intent, rule, words)
   rule { "factor", "rfac", prev = { 1, "horizontal lateral vertical" }, when = function(g, i)
     return g:word_in(1, i, "resolution resolutions reso resolve mvp")
   end }
-  rule { "mvp resolution resolve reso resolutions resolver", false, when = function(g)
-    for k = 1, #g.t do if g:vertical_resolutions(k) then return true end end
+  -- (the resolution said of the vertical ones, "let MVP use vertical speed in the resolutions", sets no method;
+  -- one switched on in a clause of its own, "turn on MVP resolution and let it use vertical too", does: RESO
+  -- MVP beside the RMETHV)
+  rule { "mvp resolution resolve reso resolutions resolver", false, when = function(g, i)
+    local lo, hi = g:clause_around(i)
+    local set_here = g:word_in(lo, hi, "@on mvp")
+    for k = 1, #g.t do
+      if g:vertical_resolutions(k) and (not set_here or (k >= lo and k < hi)) then return true end
+    end
     return false
   end }
   -- "after a resolution aircraft should resume nav once past CPA": when navigation resumes after one (RESNAV)

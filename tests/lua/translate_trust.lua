@@ -3994,14 +3994,14 @@ end
 
 -- A clause of its own after an instruction's value, "at", a route waypoint and a value straight after it, no
 -- verb ("descend FL260, at ALFA FL240", "... then at ALFA 250 knots"): a constraint there (AT); a waypoint off
--- the route, or an instruction there with a verb, is still asked about
+-- the route is still asked about; an instruction there with a verb starts there (AT DO)
 do
   local _, ex = scene({ "CRE KLM12 B738 52 4 090 FL300 280", "DEFWPT ALFA 52.1 4.5", "DEFWPT BRAVO 52.3 4.9",
     "ADDWPT KLM12 ALFA" })
   check_eq(ex("KLM12 descend FL260, at ALFA FL240"), "ALT KLM12 FL260 ; AT KLM12 ALFA ALT FL240")
   check_eq(ex("KLM12 descend FL260 then at ALFA 250 knots"), "ALT KLM12 FL260 ; AT KLM12 ALFA SPD 250")
   asked(ex("KLM12 descend FL260, at BRAVO FL240"), "BRAVO is off the route")
-  asked(ex("KLM12 descend FL260, at ALFA turn left heading 200"), "a turn at a waypoint")
+  check_eq(ex("KLM12 descend FL260, at ALFA turn left heading 200"), "ALT KLM12 FL260 ; AT KLM12 ALFA DO HDG KLM12 200 LEFT")
   asked(ex("KLM12 descend FL260, at ALFA FL240, 250 knots"), "a speed in a clause after it")
   -- (after a direct-to, "at ALFA FL240" is asked about, never a level given now)
   asked(ex("KLM12 direct ALFA, at ALFA FL240"), "a level at the waypoint flown to")
@@ -11135,4 +11135,183 @@ do
   asked(ex("create klm one two three a three twenty at 52.0 4.0 flight level one zero zero"), "no heading before it")
   check_eq(ex("easy four six one two climb at one thousand feet per minute"), "VS EZY4612 1000")
   asked(ex("easy four six one two climb"), "no level and no rate")
+end
+
+-- Cycle 48 (f114): conflict resolution switched on in a clause of its own beside its vertical method ("turn on
+-- MVP resolution and let it use vertical too") sets both, RESO and RMETHV; the resolution named inside the
+-- vertical's clause sets the method alone, and vertical-only resolutions are still asked
+do
+  local _, ex = scene({ "CRE AAL12 B738 41.9 -87.9 090 FL250 280", "CRE UAL34 B739 42.1 -87.5 270 FL250 280" })
+  check_eq(ex("enable MVP resolution and allow vertical manoeuvres"), "RESO MVP ; RMETHV V/S")
+  check_eq(ex("set reso to MVP, and let it resolve vertically too"), "RESO MVP ; RMETHV V/S")
+  check_eq(ex("turn on MVP and no vertical resolutions"), "RESO MVP ; RMETHV OFF")
+  check_eq(ex("let MVP use vertical speed in the resolutions"), "RMETHV V/S")
+  asked(ex("turn on MVP resolution, vertical only"), "vertical-only resolutions beside the method switched on")
+end
+
+-- Cycle 48 (f114): "descend two thousand feet" spoken straight after the verb from the flight levels is asked to
+-- or by, as the same typed in figures is; "to", "by", "and maintain", 4000 ft or more, or a descent from below
+-- FL120 decide it
+do
+  local _, ex = scene({ "CRE SKW12 CRJ7 40.5 -103 245 FL180 270", "CRE SKW34 CRJ7 40.5 -104 245 9000 250" })
+  check_eq(ex("SKW12 descend two thousand feet"), "ASK Should SKW12 descend to 2000 ft or by 2000 ft?")
+  asked(ex("SKW12 descend two thousand five hundred feet"), "a spoken step or level of 2500 ft from FL180")
+  check_eq(ex("SKW12 descend to two thousand feet"), "ALT SKW12 2000")
+  check_eq(ex("SKW12 descend by two thousand feet"), "ALT SKW12 16000")
+  check_eq(ex("SKW12 descend and maintain two thousand feet"), "ALT SKW12 2000")
+  check_eq(ex("SKW12 descend five thousand feet"), "ALT SKW12 5000")
+  check_eq(ex("SKW34 descend three thousand feet"), "ALT SKW34 3000")
+end
+
+-- Cycle 48 (f114): a station's simulator addressed before a comma, colon or dash ("Denver sim, ...", "A80 sim -
+-- ...") names the addressee, no callsign needed: a capitalised name or identifier, or a known place in lower case;
+-- other words there, and an aircraft flying, are still asked about
+do
+  local _, ex = scene({ "CRE AAL12 B738 41.9 -87.9 090 FL250 280" })
+  check_eq(ex("Denver sim, turn on conflict detection"), "ASAS ON")
+  check_eq(ex("A80 sim - run it at four times speed"), "DTMULT 4")
+  check_eq(ex("ZNY sim: pause"), "HOLD")
+  check_eq(ex("Boston sim, AAL12 climb FL300"), "ALT AAL12 FL300")
+  check_eq(ex("flurb sim, pause"), "ASK I have HOLD. What does 'flurb' mean?")
+  check_eq(ex("AAL12 sim, pause"), "ASK I have HOLD. What does 'AAL12' mean?")
+end
+
+-- Cycle 48 (f114): the conflict probe or a display's conflict alert switched where it is said ("conflict alerts
+-- on, lookahead two minutes") is conflict detection beside its look-ahead; unswitched, or with an aircraft named,
+-- it names an alert, no setting
+do
+  local _, ex = scene({ "CRE AAL12 B738 41.9 -87.9 090 FL250 280" })
+  check_eq(ex("conflict alerts on, lookahead two minutes"), "ASAS ON ; DTLOOK 120")
+  check_eq(ex("conflict probe on, look ahead 3 minutes"), "ASAS ON ; DTLOOK 180")
+  check_eq(ex("turn on conflict alerting"), "ASAS ON")
+  check_eq(ex("look ahead 2 minutes on the conflict probe"), "DTLOOK 120")
+  check_eq(ex("the conflict alert zone 5 miles"), "ZONER 5")
+  check_eq(ex("AAL12 conflict alert, turn left heading 360"), "HDG AAL12 360 LEFT")
+  asked(ex("conflict alerts"), "conflict alerts named with no switch")
+end
+
+-- Cycle 48 (f114): "resume normal speed" (or "published speed") as the whole request to an aircraft flying its
+-- route's profile (LNAV and VNAV on) gives the profile's speed back, VNAV ON; to one flying no profile, or beside
+-- another instruction VNAV ON would undo, it is named as not simulated or asked, as before
+do
+  local _, ex = scene({ "DEFWPT AAA 41.5 -82", "DEFWPT BBB 41.8 -82.5", "CRE DAL14 A320 41 -82 280 FL250 290",
+    "ADDWPT DAL14 AAA", "ADDWPT DAL14 BBB", "VNAV DAL14 ON", "SPD DAL14 250", "CRE UAL25 B738 41 -81 280 FL250 290",
+    "ADDWPT UAL25 AAA" })
+  check_eq(ex("DAL14 resume normal speed"), "VNAV DAL14 ON")
+  check_eq(ex("DAL14, resume published speed."), "VNAV DAL14 ON")
+  check_eq(ex("UAL25 resume normal speed"), "")
+  asked(ex("DAL14 turn left heading 250, resume normal speed"), "a heading VNAV ON would undo")
+  asked(ex("DAL14 resume normal speed, 250 knots"), "a speed given beside the normal speed")
+end
+
+-- Cycle 48 (f114): "comply with restrictions" (the route's published levels and speeds) is VNAV ON, beside a
+-- direct-to too; beside a level, heading, rate or speed given it is asked (VNAV ON would replace it), and so is an
+-- aircraft with no route, or restrictions of one kind only
+do
+  local _, ex = scene({ "DEFWPT AAA 41.5 -82", "DEFWPT BBB 41.8 -82.5", "CRE DAL14 A320 41 -82 280 FL250 290",
+    "ADDWPT DAL14 AAA", "ADDWPT DAL14 BBB", "CRE N12AB C172 41 -80 90 3000 100" })
+  check_eq(ex("DAL14 proceed direct BBB, comply with restrictions"), "DIRECT DAL14 BBB ; VNAV DAL14 ON")
+  check_eq(ex("DAL14 comply with published speed and altitude restrictions"), "VNAV DAL14 ON")
+  check_eq(ex("DAL14 descend FL240, comply with restrictions"),
+    "ASK Should DAL14 fly the level given, or its route's restrictions (VNAV ON), which would replace it?")
+  asked(ex("DAL14 reduce speed 250, comply with restrictions"), "a speed VNAV ON would replace")
+  asked(ex("N12AB comply with restrictions"), "no route whose restrictions it could fly")
+  asked(ex("DAL14 comply with speed restrictions"), "restrictions of one kind only")
+end
+
+-- Cycle 48 (f114): a level said straight after "after" before an instruction ("after one two thousand increase
+-- speed to 300") is one passed, as "after passing" is (ATALT); a time after it stays a delay, a place a waypoint's
+-- condition, and a climb's rate after it is still asked
+do
+  local _, ex = scene({ "CRE AAL22 A321 40.85 -73.60 035 9000 250" })
+  check_eq(ex("AAL22 climb and maintain one seven thousand, after one two thousand increase speed to three hundred knots"),
+    "ALT AAL22 17000 ; ATALT AAL22 12000 SPD AAL22 300")
+  check_eq(ex("AAL22 climb and maintain 17000, after 12000 turn left heading 300"),
+    "ALT AAL22 17000 ; ATALT AAL22 12000 HDG AAL22 300 LEFT")
+  check_eq(ex("AAL22 after 2 minutes turn left heading 200"), "DELAY 120 HDG AAL22 200 LEFT")
+  asked(ex("AAL22 climb and maintain 17000, after 12000 climb at 1500 fpm"), "a rate after a level passed")
+end
+
+-- Cycle 48 (f114): a level straight after "above" or "below" beside an instruction or alone in its clause is a
+-- condition or a bound, never the level flown and never dropped: asked unless a command carries it ("250 kt below
+-- FL100" is still the speed from that level); a remark on a limit is no instruction
+do
+  local _, ex = scene({ "CRE AAL22 A321 40.85 -73.60 035 9000 250" })
+  check_eq(ex("AAL22 climb and maintain 17000, above one two thousand increase speed to 300 knots"),
+    "ASK I have ALT AAL22 17000 ; SPD AAL22 300. What does 'one two thousand' mean?")
+  asked(ex("AAL22 climb and maintain 17000 above FL120"), "a bound level beside the level cleared")
+  asked(ex("AAL22 above 12000 increase speed to 300 knots"), "a bound before a speed")
+  asked(ex("AAL22 reduce speed to 250 knots below 10000"), "a bound after a speed, no unit")
+  check_eq(ex("AAL22 reduce speed to 250 knots below one zero thousand"), "ATALT AAL22 10000 SPD AAL22 250")
+  check_eq(ex("AAL22 speed 250 knots, this is the normal limit below ten thousand"), "SPD AAL22 250")
+end
+
+-- Cycle 48 (f114): a clause opened by "at", "after" or "over" and a waypoint behind a comma or "then", after an
+-- instruction's value and before the next instruction ("descend and maintain 12000, at BBB reduce speed to 250"),
+-- starts that next instruction there (AT DO); off the route, or with no instruction after it, asked; a value with
+-- no verb after the waypoint stays the constraint
+do
+  local _, ex = scene({ "DEFWPT AAA 39.7 -78", "DEFWPT BBB 39.8 -77.6", "DEFWPT CCC 40 -77",
+    "CRE AAL19 A321 39.60 -78.20 100 FL240 290", "ADDWPT AAL19 AAA", "ADDWPT AAL19 BBB" })
+  check_eq(ex("AAL19, descend and maintain one two thousand, at BBB reduce speed to two five zero"),
+    "ALT AAL19 12000 ; AT AAL19 BBB DO SPD AAL19 250")
+  check_eq(ex("AAL19 reduce speed to 250, at BBB descend and maintain 10000"),
+    "SPD AAL19 250 ; AT AAL19 BBB DO ALT AAL19 10000")
+  check_eq(ex("AAL19 descend FL200 then after BBB turn left heading 300"),
+    "ALT AAL19 FL200 ; AT AAL19 BBB DO HDG AAL19 300 LEFT")
+  asked(ex("AAL19 descend FL200, at CCC reduce 250"), "a waypoint off the route")
+  asked(ex("AAL19 descend FL200, at BBB"), "no instruction after the waypoint")
+  check_eq(ex("AAL19, descend FL200, at BBB 250 knots"), "ALT AAL19 FL200 ; AT AAL19 BBB SPD 250")
+end
+
+-- Cycle 48 (f114): "once slowed", "when you've slowed down" after a speed given waits for that speed (ATSPD);
+-- after a level, or with nothing before it, asked
+do
+  local _, ex = scene({ "CRE SWA34 B737 39.80 -76.30 205 13000 270" })
+  check_eq(ex("SWA34 reduce speed to two three zero, once slowed descend and maintain six thousand"),
+    "SPD SWA34 230 ; ATSPD SWA34 230 ALT SWA34 6000")
+  check_eq(ex("SWA34 reduce speed to 230, when you've slowed down descend 6000"),
+    "SPD SWA34 230 ; ATSPD SWA34 230 ALT SWA34 6000")
+  asked(ex("SWA34 descend 8000, once slowed reduce 230"), "slowing after a level")
+  asked(ex("SWA34 once slowed descend 6000"), "slowing with no speed before it")
+end
+
+-- Cycle 48 (f114): a navaid said by its name where a limit ends ("until Yardley", "until the Yardley VOR") or as a
+-- place of a route listed with "then" or "and" ("direct Joliet, then Northbrook", "a route via Joliet and DuPage")
+-- is read as its ident typed is; off the route a limit is asked; a name after a comma alone says the place before
+-- again ("direct OBK, Northbrook"). "a route: direct A, then B" to an aircraft with no route is the route listed
+do
+  local nav, pt = navscene({ "CRE UAL12 B738 40.00 -75.30 050 11000 260", "ADDWPT UAL12 ARD", "ADDWPT UAL12 SBJ",
+    "CRE SWA7 B737 41.7 -88.2 090 FL200 280" }, "navaids by name in limits and route lists")
+  if nav then
+    check_eq(pt("UAL12 maintain 250 knots till Yardley"), "SPD UAL12 250")
+    check_eq(pt("UAL12 maintain 250 knots until the Yardley VOR"), "SPD UAL12 250")
+    asked(pt("UAL12 maintain 250 knots until Robbinsville"), "a limit ending at a navaid off the route")
+    check_eq(pt("SWA7 direct Joliet, then Northbrook"), "ADDWPT SWA7 JOT ; DIRECT SWA7 JOT ; ADDWPT SWA7 OBK")
+    check_eq(pt("give SWA7 a route: direct Northbrook, then Joliet"), "ADDWPT SWA7 OBK ; ADDWPT SWA7 JOT")
+    check_eq(pt("give SWA7 a route via Joliet and DuPage"), "ADDWPT SWA7 JOT ; ADDWPT SWA7 DPA")
+    check_eq(pt("SWA7 direct OBK, Northbrook"), "ADDWPT SWA7 OBK ; DIRECT SWA7 OBK")
+  end
+end
+
+-- Cycle 48 (f114): a name written with "O'" ("O'Hare") is the navdata's, which has no apostrophe; "o'clock" stays
+do
+  local nav, pt = navscene({ "CRE SWA7 B737 41.7 -88.2 090 FL200 280" }, "a name written with O'")
+  if nav then
+    check_eq(pt("SWA7's destination is O'Hare"), "DEST SWA7 KORD")
+    check_eq(pt("SWA7 direct to Chicago O'Hare"), "ADDWPT SWA7 KORD ; DIRECT SWA7 KORD")
+    check_eq(pt("traffic at 2 o'clock, SWA7 turn left heading 300"), "")
+  end
+end
+
+-- Cycle 48 (f114): a wind's direction in spoken digits before "at" and its speed ("two four zero at three five
+-- knots"), and a place named by a distinctive word of a nearby airport's name ("over Midway"), are read for WIND and
+-- GETWIND as a destination's are; a name that means no place is still asked
+do
+  local nav, pt = navscene({ "CRE SWA7 B737 41.7 -88.2 090 FL200 280" }, "a wind over an airport by its name")
+  if nav then
+    check_eq(pt("set wind two four zero at three five knots over Midway"), "WIND KMDW 240 35")
+    check_eq(pt("getwind over Midway"), "GETWIND KMDW")
+    asked(pt("set wind 270 at 50 knots over Flurbington"), "a name that means no place")
+  end
 end
