@@ -644,6 +644,7 @@ local DIGIT_WORDS = set_of({ "zero", "oh", "one", "two", "three", "four", "five"
   "niner", "tree", "fife", "fower" })
 local UNIT_WORDS = set_of({ "feet", "ft", "knots", "kts", "kt", "degrees" })
 local SIDES = set_of({ "left", "right" })
+G.refusable = set_of(lexicon.refusable_verbs)
 -- The words of `text` as {at, e, raw, bare} (at, e: byte positions of the word and after it; bare: lower
 -- case, punctuation trimmed at both ends). Callers only read the list: the last text's is kept, as
 -- the rewrites below mostly pass the text on unchanged.
@@ -721,7 +722,11 @@ local function self_corrections(text)
     -- (a run that takes back in words, "never mind", "forget that", before an instruction's word is no value
     -- corrected: G:self_corrected reads the instruction said in its place)
     -- (an apology after a value ruled out, "fl200 not 180 sorry, ...", corrects nothing: negated_values)
-    if j > k and marked and not (dropping and after[nxt and nxt.bare or ""] and not SIDES[nxt.bare])
+    -- ("PRF441 no left turn": "no" with no mark after it, before a turn's side and an instruction's verb, may refuse
+    -- it: G:unaccounted asks)
+    local refused = nxt and SIDES[nxt.bare] and toks[j + 1] and G.refusable[toks[j + 1].bare]
+      and toks[j - 1].bare == "no" and not toks[j - 1].raw:match("%p$")
+    if j > k and marked and not refused and not (dropping and after[nxt and nxt.bare or ""] and not SIDES[nxt.bare])
         and not (toks[k - 2] and toks[k - 2].bare == "not" and G.apology[toks[k].bare])
         and (value(toks[k - 1]) or (toks[k - 1] and SIDES[toks[k - 1].bare]) or position) and nxt
         and (nxt.bare:match("^%a?%a?%.?%d") or NUMBER_WORDS[nxt.bare] or after[nxt.bare] or position) then
@@ -6112,6 +6117,20 @@ function G:unaccounted()
     if t.text == "no" and self:word(i + 1, "need needs") and self:word(i + 2, "to for") and not explained[i]
         and not self.noted[i] and not self:in_reason(i) then
       self.leftover = self:raw(i, i + 2)
+      return
+    end
+  end
+  -- ("PRF441 no descend FL090", "KLM12 heading 100 no turn left heading 120", "no left turn"): "no" straight before
+  -- an instruction's verb or noun (lexicon.refusable_verbs; fillers or a turn's side between, no comma) may refuse
+  -- it or take back what came before: asked, naming both readings, never read as either ("no, descend" and
+  -- "negative descend" are corrections)
+  for i, t in ipairs(self.t) do
+    local v = t.text == "no" and i + 1
+    while v and self.t[v] and (self.t[v].filler or self:word(v, "@left @right")) do v = v + 1 end
+    if v and self:word(v, "@refusable_verbs") and not self.noted[i] and not self:in_reason(i) then
+      local said = self:raw(i + 1, v + 1)
+      self:need(string.format("%sIs 'no %s' a refusal (do not), or a correction ('no, %s')? Please say it again.",
+        #self.out > 0 and "I have " .. table.concat(self.out, " ; ") .. ". " or "", said, said))
       return
     end
   end

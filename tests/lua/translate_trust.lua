@@ -10783,3 +10783,26 @@ do
   check_eq(ex("kqa7 climb FL320, no wahala"), "ALT KQA7 FL320")
   asked(ex("kqa7 wahala climb FL320"), "'wahala' alone")
 end
+
+-- Cycle 48 (hz56): "no" straight before an instruction's verb or noun, no comma between ("SAS77 no descend FL090",
+-- "no climbing", "no descent", "no left turn"), may refuse it (English as a second language) as well as correct what
+-- came before: asked, naming both readings, with no word to ignore; "no, descend", "negative descend" and "no...
+-- descend" stay corrections, a side corrected after a value ("090 no right heading 200") too
+do
+  local s, ex = scene({ "CRE SAS77 A320 55.0 12.0 090 FL200 250", "CRE FIN8 A321 55.2 12.2 270 FL240 260" })
+  check_eq(ex("SAS77 no descend FL090"),
+    "ASK I have ALT SAS77 FL90. Is 'no descend' a refusal (do not), or a correction ('no, descend')? Please say it again.")
+  check(graph.translate("SAS77 no descend FL090", { sim = s, mode = "offline" }).ignorable == nil, "no word to ignore")
+  asked(ex("FIN8 no turn right heading 300"), "'no turn'")
+  asked(ex("FIN8 no climbing flight level three zero zero"), "'no climbing'")
+  asked(ex("SAS77 no descent FL120"), "'no descent'")
+  asked(ex("FIN8 no left turn heading 200"), "'no left turn'")
+  asked(ex("SAS77 no uh reduce speed 220"), "'no' and a hesitation before the verb")
+  asked(ex("FIN8 heading 270, no turn right heading 300"), "'no turn' after a value and a comma")
+  asked(ex("no proceed direct to the beacon SAS77"), "'no proceed'")
+  check_eq(ex("SAS77 no, descend FL090"), "ALT SAS77 FL90")
+  check_eq(ex("SAS77 negative descend FL090"), "ALT SAS77 FL90")
+  check_eq(ex("FIN8 no... climb FL300"), "ALT FIN8 FL300")
+  check_eq(ex("FIN8 turn left heading 090 no right heading 200"), "HDG FIN8 200 RIGHT")
+  check_eq(ex("SAS77 no speed restriction, descend FL150"), "ALT SAS77 FL150")
+end
