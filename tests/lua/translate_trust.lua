@@ -10806,3 +10806,21 @@ do
   check_eq(ex("FIN8 turn left heading 090 no right heading 200"), "HDG FIN8 200 RIGHT")
   check_eq(ex("SAS77 no speed restriction, descend FL150"), "ALT SAS77 FL150")
 end
+
+-- Cycle 48 (hz56): a word said where a direct-to's place goes that names no place ("direct DME", "direct the
+-- beacon", "direct that fix", "direct there", "direct eleven") is asked about by name, never read as the route's only
+-- waypoint; "proceed direct" with nothing after it still flies to that one waypoint
+do
+  local _, ex = scene({ "DEFWPT HZR1 55.3 12.6", "DEFWPT HZR2 55.1 13.0", "CRE SAS77 A320 55.0 12.0 090 FL200 250",
+    "ADDWPT SAS77 HZR1" })
+  check_eq(ex("SAS77 direct DME"), "ASK Which waypoint is 'DME'? Please say its name for SAS77 to fly direct to.")
+  check_eq(ex("SAS77 proceed direct to the beacon"),
+    "ASK Which waypoint is 'the beacon'? Please say its name for SAS77 to fly direct to.")
+  asked(ex("SAS77 direct that fix"), "a fix pointed at")
+  asked(ex("SAS77 direct there"), "'there' with no place before it")
+  asked(ex("SAS77 turn right direct the VOR, climb FL300"), "a navaid's kind alone")
+  asked(ex("SAS77 direct eleven"), "a number where the place goes")
+  check_eq(ex("SAS77 proceed direct"), "DIRECT SAS77 HZR1")
+  check_eq(ex("SAS77 proceed direct, climb FL300"), "DIRECT SAS77 HZR1 ; ALT SAS77 FL300")
+  check_eq(ex("SAS77 add HZR2 and then go direct there"), "ADDWPT SAS77 HZR2 ; DIRECT SAS77 HZR2")
+end
