@@ -4900,6 +4900,13 @@ function G:uncarried()
   end
 end
 
+-- True when aircraft ref r is added to an instruction by the words around it ("climb FL190 - TOM6RT as well",
+-- "same for TOM6RT", "and also TOM6RT") or given a direction of its own (", we want TOM6RT lower").
+function G:aircraft_added(r)
+  return self:word(r.e, "too also @up @down @faster_slower") or (self:word(r.e, "as") and self:word(r.e + 1, "well"))
+    or self:word(r.b - 1, "also likewise ditto") or (self:word(r.b - 1, "for") and self:word(r.b - 2, "same"))
+end
+
 -- A name that reads like a callsign no aircraft has, or an aircraft that
 -- no command carries ("ezy45 fl150 x7", "pause, then tell me where BAW123
 -- is"), is a leftover, asked about by name.
@@ -4915,12 +4922,6 @@ function G:unknown_names()
   -- an aircraft named as a reference for another's value ("the same heading as AC02") or as the
   -- reason for an instruction ("to avoid a conflict between AC01 and AC02") is explained
   local compared = self:word_in(1, #self.t + 1, "@same_as @below @above @aircraft_context")
-  -- ("climb FL190 - TOM6RT as well", "same for TOM6RT", "and also TOM6RT": an aircraft added to the
-  -- instruction; ", we want TOM6RT lower": one given a direction of its own; never context)
-  local function added(r)
-    return self:word(r.e, "too also @up @down @faster_slower") or (self:word(r.e, "as") and self:word(r.e + 1, "well"))
-      or self:word(r.b - 1, "also likewise ditto") or (self:word(r.b - 1, "for") and self:word(r.b - 2, "same"))
-  end
   -- ("Add an intruder for VIR9: DLH9KW A321 at ...", "We need a head-on for ICE204: spawn ICE205 ..."):
   -- an aircraft after a word of commentary.lead_context in a lead-in before a colon, when an aircraft
   -- is named after the colon, is other traffic
@@ -4935,9 +4936,9 @@ function G:unknown_names()
     return self.t[colon] ~= nil and self.t[colon].text == ":" and self:has_ref(colon + 1, #self.t + 1, "aircraft")
   end
   for _, r in ipairs(self.refs) do
-    -- (in a reason, "also" before a verb adds nothing: "because the A350 also goes through HAGIS"; a direction
-    -- does: "- we want ICE44 lower")
-    if r.kind == "aircraft" and (not r.exists or (added(r) and not (self:in_reason(r.b) and self:word(r.e, "also")
+    -- (one added, G:aircraft_added, is never context; in a reason, "also" before a verb adds nothing: "because the
+    -- A350 also goes through HAGIS"; a direction does: "- we want ICE44 lower")
+    if r.kind == "aircraft" and (not r.exists or (self:aircraft_added(r) and not (self:in_reason(r.b) and self:word(r.e, "also")
           and self.t[r.e + 1] and self.t[r.e + 1].kind == "word" and not self:intent_at(r.e + 1)))
           or not (compared or self:in_reason(r.b) or lead_context(r) or self:as_context(r.b) or self:compared_with(r.b)))
         and not r.false_start

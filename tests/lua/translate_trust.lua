@@ -10824,3 +10824,29 @@ do
   check_eq(ex("SAS77 proceed direct, climb FL300"), "DIRECT SAS77 HZR1 ; ALT SAS77 FL300")
   check_eq(ex("SAS77 add HZR2 and then go direct there"), "ADDWPT SAS77 HZR2 ; DIRECT SAS77 HZR2")
 end
+
+-- Cycle 48 (hz56): an instruction for an aircraft named before it and another aircraft named after all of it with
+-- nothing of its own ("sas77 hdg 100 and fin8", "sas77 fl310, fin8", "sas77 direct HZR1 fin8", after the instruction
+-- before: "sas77 climb fl300, heading 100, fin8") is asked: which aircraft it is for, naming both, never offered to
+-- the later one alone. Aircraft named together before it ("sas77 and fin8 fl310") or one added ("fin8 too") get it;
+-- one with a value of its own has its own request
+do
+  local _, ex = scene({ "DEFWPT HZR1 55.3 12.6", "CRE SAS77 A320 55.0 12.0 090 FL200 250", "ADDWPT SAS77 HZR1",
+    "CRE FIN8 A321 55.2 12.2 270 FL240 260" })
+  -- (the question names both aircraft and offers neither the instruction)
+  local function which(text, why) check(ex(text):match("^ASK Which aircraft is .*SAS77, FIN8 or both%?") ~= nil, why) end
+  check_eq(ex("sas77 hdg 100 and fin8"),
+    "ASK Which aircraft is 'heading 100' for: SAS77, FIN8 or both? Please say each aircraft with its own instruction.")
+  which("sas77 climb fl310, fin8", "a level, then another aircraft after a comma")
+  which("sas77 fl310 fin8", "a verbless level, then another aircraft")
+  which("sas77 fl310 and fin8", "a verbless level, then 'and' another aircraft")
+  which("sas77 direct HZR1 and fin8", "a direct-to, then another aircraft")
+  which("sas77 reduce speed 220 and fin8 thanks", "another aircraft and thanks")
+  which("sas77 climb fl300, heading 100, fin8", "an aircraft after the instruction after another's")
+  check_eq(ex("sas77 and fin8 fl310"), "ALT SAS77 FL310 ; ALT FIN8 FL310")
+  check_eq(ex("sas77 and fin8 climb fl310"), "ALT SAS77 FL310 ; ALT FIN8 FL310")
+  check_eq(ex("sas77 hdg 100 and fin8 too"), "HDG SAS77 100 ; HDG FIN8 100")
+  check_eq(ex("sas77 hdg 100 and fin8 fl310"), "HDG SAS77 100 ; ALT FIN8 FL310")
+  check_eq(ex("heading 100, fin8"), "HDG FIN8 100")
+  check_eq(ex("sas77 descend fl120, sas77"), "ALT SAS77 FL120")
+end
