@@ -645,6 +645,7 @@ local DIGIT_WORDS = set_of({ "zero", "oh", "one", "two", "three", "four", "five"
   "niner", "tree", "fife", "fower" })
 local UNIT_WORDS = set_of({ "feet", "ft", "knots", "kts", "kt", "degrees" })
 local SIDES = set_of({ "left", "right" })
+G.refusable = set_of(lexicon.refusable_verbs)
 -- The words of `text` as {at, e, raw, bare} (at, e: byte positions of the word and after it; bare: lower
 -- case, punctuation trimmed at both ends). Callers only read the list: the last text's is kept, as
 -- the rewrites below mostly pass the text on unchanged.
@@ -722,7 +723,11 @@ local function self_corrections(text)
     -- (a run that takes back in words, "never mind", "forget that", before an instruction's word is no value
     -- corrected: G:self_corrected reads the instruction said in its place)
     -- (an apology after a value ruled out, "fl200 not 180 sorry, ...", corrects nothing: negated_values)
-    if j > k and marked and not (dropping and after[nxt and nxt.bare or ""] and not SIDES[nxt.bare])
+    -- ("PRF441 no left turn": "no" with no mark after it, before a turn's side and an instruction's verb, may refuse
+    -- it: G:unaccounted asks)
+    local refused = nxt and SIDES[nxt.bare] and toks[j + 1] and G.refusable[toks[j + 1].bare]
+      and toks[j - 1].bare == "no" and not toks[j - 1].raw:match("%p$")
+    if j > k and marked and not refused and not (dropping and after[nxt and nxt.bare or ""] and not SIDES[nxt.bare])
         and not (toks[k - 2] and toks[k - 2].bare == "not" and G.apology[toks[k].bare])
         and (value(toks[k - 1]) or (toks[k - 1] and SIDES[toks[k - 1].bare]) or position) and nxt
         and (nxt.bare:match("^%a?%a?%.?%d") or NUMBER_WORDS[nxt.bare] or after[nxt.bare] or position) then
@@ -5064,6 +5069,13 @@ function G:uncarried()
   end
 end
 
+-- True when aircraft ref r is added to an instruction by the words around it ("climb FL190 - TOM6RT as well",
+-- "same for TOM6RT", "and also TOM6RT") or given a direction of its own (", we want TOM6RT lower").
+function G:aircraft_added(r)
+  return self:word(r.e, "too also @up @down @faster_slower") or (self:word(r.e, "as") and self:word(r.e + 1, "well"))
+    or self:word(r.b - 1, "also likewise ditto") or (self:word(r.b - 1, "for") and self:word(r.b - 2, "same"))
+end
+
 -- A name that reads like a callsign no aircraft has, or an aircraft that
 -- no command carries ("ezy45 fl150 x7", "pause, then tell me where BAW123
 -- is"), is a leftover, asked about by name.
@@ -5079,12 +5091,6 @@ function G:unknown_names()
   -- an aircraft named as a reference for another's value ("the same heading as AC02") or as the
   -- reason for an instruction ("to avoid a conflict between AC01 and AC02") is explained
   local compared = self:word_in(1, #self.t + 1, "@same_as @below @above @aircraft_context")
-  -- ("climb FL190 - TOM6RT as well", "same for TOM6RT", "and also TOM6RT": an aircraft added to the
-  -- instruction; ", we want TOM6RT lower": one given a direction of its own; never context)
-  local function added(r)
-    return self:word(r.e, "too also @up @down @faster_slower") or (self:word(r.e, "as") and self:word(r.e + 1, "well"))
-      or self:word(r.b - 1, "also likewise ditto") or (self:word(r.b - 1, "for") and self:word(r.b - 2, "same"))
-  end
   -- ("Add an intruder for VIR9: DLH9KW A321 at ...", "We need a head-on for ICE204: spawn ICE205 ..."):
   -- an aircraft after a word of commentary.lead_context in a lead-in before a colon, when an aircraft
   -- is named after the colon, is other traffic
@@ -5099,9 +5105,9 @@ function G:unknown_names()
     return self.t[colon] ~= nil and self.t[colon].text == ":" and self:has_ref(colon + 1, #self.t + 1, "aircraft")
   end
   for _, r in ipairs(self.refs) do
-    -- (in a reason, "also" before a verb adds nothing: "because the A350 also goes through HAGIS"; a direction
-    -- does: "- we want ICE44 lower")
-    if r.kind == "aircraft" and (not r.exists or (added(r) and not (self:in_reason(r.b) and self:word(r.e, "also")
+    -- (one added, G:aircraft_added, is never context; in a reason, "also" before a verb adds nothing: "because the
+    -- A350 also goes through HAGIS"; a direction does: "- we want ICE44 lower")
+    if r.kind == "aircraft" and (not r.exists or (self:aircraft_added(r) and not (self:in_reason(r.b) and self:word(r.e, "also")
           and self.t[r.e + 1] and self.t[r.e + 1].kind == "word" and not self:intent_at(r.e + 1)))
           or not (compared or self:in_reason(r.b) or lead_context(r) or self:as_context(r.b) or self:compared_with(r.b)))
         and not r.false_start
@@ -6313,6 +6319,20 @@ function G:unaccounted()
     if t.text == "no" and self:word(i + 1, "need needs") and self:word(i + 2, "to for") and not explained[i]
         and not self.noted[i] and not self:in_reason(i) then
       self.leftover = self:raw(i, i + 2)
+      return
+    end
+  end
+  -- ("PRF441 no descend FL090", "KLM12 heading 100 no turn left heading 120", "no left turn"): "no" straight before
+  -- an instruction's verb or noun (lexicon.refusable_verbs; fillers or a turn's side between, no comma) may refuse
+  -- it or take back what came before: asked, naming both readings, never read as either ("no, descend" and
+  -- "negative descend" are corrections)
+  for i, t in ipairs(self.t) do
+    local v = t.text == "no" and i + 1
+    while v and self.t[v] and (self.t[v].filler or self:word(v, "@left @right")) do v = v + 1 end
+    if v and self:word(v, "@refusable_verbs") and not self.noted[i] and not self:in_reason(i) then
+      local said = self:raw(i + 1, v + 1)
+      self:need(string.format("%sIs 'no %s' a refusal (do not), or a correction ('no, %s')? Please say it again.",
+        #self.out > 0 and "I have " .. table.concat(self.out, " ; ") .. ". " or "", said, said))
       return
     end
   end

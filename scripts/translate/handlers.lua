@@ -266,6 +266,7 @@ function m:acids(s)
         table.concat(ids, " or ")))
     end
   end
+  self:trailing_aircraft(s, ids)
   self:confirm_callsigns(s)
   -- "BAW918 FL300 and DLH9LT FL310, both 280 kt": "both" names the two aircraft instructed before
   -- ("both Lufthansa planes", "both the easyJets": the two aircraft of the airline named after it, when
@@ -374,6 +375,62 @@ function m:acids(s)
   end
   if #ids > 0 then self.subject, self.subjects = ids[1], { table.unpack(ids) } end
   return ids
+end
+
+-- "klm33 hdg 100 and ryr8", "klm33 fl310, ryr8", "klm33 direct SPY ryr8": an instruction of how to fly (a value's,
+-- a direct-to, a navigation switch) for a flying aircraft named before it, in segment s or for the instruction
+-- before ("klm33 climb fl300, heading 100, ryr8"), and another that `ids` took after all of it (past its word and
+-- its values), its clause holding nothing else but courtesy and no word adding it ("too", "as well", "same for":
+-- G:aircraft_added), may be the instruction's second aircraft or one whose own instruction was not said: asked,
+-- naming the instruction and both, never given to either alone. Aircraft named together before the instruction
+-- ("klm33 and ryr8 fl310") are all instructed.
+local FLOWN = { alt = true, maintain = true, spd = true, hdg = true, vs = true, infer = true, direct = true,
+  lnav = true, vnav = true }
+local CLOSING = {}
+for _, list in ipairs({ L.accounted.courtesy, L.accounted.radiotelephony, { "and" } }) do
+  for _, w in ipairs(list) do CLOSING[w] = true end
+end
+function m:trailing_aircraft(s, ids)
+  if not FLOWN[s.intent] or #ids == 0 then return end
+  local qs = self:quantities(s.trig, s.e)
+  local from = s.intent == "infer" and qs[1] and qs[1].b or s.trig  -- the instruction's first word
+  local past = qs[#qs] and math.max(qs[#qs].e, from + 1) or from + 1
+  local refs = self:refs_in(past, s.e, "aircraft")
+  if #refs == 0 then return end
+  local explained, named, before, said, after, at = self.explained or {}, {}, {}, {}, {}, nil
+  for _, id in ipairs(ids) do named[id:upper()] = true end
+  -- (nothing else in the clause after aircraft ref r: punctuation, fillers, courtesy, "and", other aircraft)
+  local function alone(r)
+    for k = r.e, s.e - 1 do
+      local t = self.t[k]
+      if t.kind == "punct" then return true end
+      if not (t.filler or self:word(k, CLOSING) or self:has_ref(k, k + 1, "aircraft")) then return false end
+    end
+    return true
+  end
+  for _, r in ipairs(self:refs_in(s.b, s.e, "aircraft")) do
+    local name = r.name:upper()
+    if r.exists and not r.false_start and not explained[r.b] and not self.noted[r.b] and not self:as_context(r.b)
+        and not self:in_reason(r.b) and not self:compared_with(r.b) then
+      if r.e <= from and not said[name] then
+        before[#before + 1], said[name] = name, true
+      elseif r.b >= past and named[name] and not said[name] and not self:aircraft_added(r) and alone(r) then
+        after[#after + 1], at = name, at or r.b
+      end
+    end
+  end
+  if #before == 0 and self.subject then
+    for _, id in ipairs(self.subjects or { self.subject }) do
+      if not named[id:upper()] then before[#before + 1] = id:upper() end
+    end
+  end
+  if #before == 0 or #after == 0 then return end
+  local e = at
+  while e - 1 > from and (self.t[e - 1].kind == "punct" or self.t[e - 1].filler or self:word(e - 1, "and @then_words")) do
+    e = e - 1
+  end
+  self:need(string.format("Which aircraft is '%s' for: %s, %s or both? Please say each aircraft with its own "
+    .. "instruction.", self:raw(from, e), table.concat(before, " and "), table.concat(after, " and ")))
 end
 
 -- True when the aircraft named at i is context ("to avoid a conflict with KLM77", "to meet BAW123"):

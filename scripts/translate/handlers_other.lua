@@ -1948,6 +1948,28 @@ return function(H, f, compass)
     return self:need(string.format("Which point at %s is meant: %s?", where, table.concat(ids, " or "))) or false
   end
 
+  -- The words said after a direct-to's word in segment s where its place goes, as said ("direct the beacon", "dct
+  -- natro", "direct eleven"): from the first that is no filler, mark, "to", direct-to word or aircraft to the end of
+  -- its clause or the first value after it (a value said first is named alone); nil when there is none.
+  function m:unplaced_words(s)
+    local valued = {}
+    for _, q in ipairs(self:quantities(s.trig, s.e)) do
+      for k = q.b, q.e - 1 do valued[k] = q end
+    end
+    local b = s.trig + 1
+    while b < s.e and (self.t[b].kind == "punct" or self.t[b].filler or self:has_ref(b, b + 1, "aircraft")
+        or self:word(b, "to directly direct dct straight and @then_words")) do
+      b = b + 1
+    end
+    if b >= s.e then return nil end
+    local e = valued[b] and valued[b].e or b
+    while not valued[b] and e < s.e and not (self.t[e].kind == "punct" or valued[e] or self:word(e, "and @then_words")) do
+      e = e + 1
+    end
+    while b - 1 > s.trig and self:word(b - 1, "the a an") do b = b - 1 end  -- ("the beacon")
+    return self:raw(b, e)
+  end
+
   -- "the airBaltic and the Finnair both direct EDISA": each aircraft named flies there
   function m:direct(s)
     local ids = self:acids(s)
@@ -2008,8 +2030,15 @@ return function(H, f, compass)
       local to = self:find_word(s.b, s.trig, "to")
       if to < s.trig then wp = self:waypoint(to + 1, s.trig, id) end
     end
-    if not wp and a and a.route and #a.route == 1 then wp = a.route[1] end
+    -- ("proceed direct": nothing said after the word, fillers, "to" and marks aside, is the route's only waypoint;
+    -- a word said there that names no place, "direct DME", "direct the beacon", "direct there", is asked about by
+    -- name, never read as that waypoint)
+    local said = not wp and self:unplaced_words(s)
+    if not wp and not said and a and a.route and #a.route == 1 then wp = a.route[1] end
     wp = wp or self:spoken_name(s.trig + 1, s.e)
+    if not wp and said then
+      return self:need(string.format("Which waypoint is '%s'? Please say its name for %s to fly direct to.", said, id))
+    end
     if not wp then return self:need("Direct to which waypoint should " .. id .. " fly?") end
     -- DIRECT needs the waypoint in the route: a known aircraft whose route lacks it gets it added first
     if a then

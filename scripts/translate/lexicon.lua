@@ -715,6 +715,16 @@ return {
   counted_aircraft = { "aircraft", "planes", "airplanes", "flights", "agents", "jets", "airliners", "aeroplanes" },
   -- imperative verbs that open an instruction of their own after a comma, even after traffic information
   clause_verbs = { "turn", "climb", "descend", "reduce", "increase", "fly", "proceed", "expedite" },
+  -- instruction verbs, their -ing forms and nouns that "no" said straight before, with no comma between ("PRF441
+  -- no descend FL090", "no climbing", "no descent", "no left turn": a turn's side may come between), may refuse
+  -- ("do not descend", in English as a second language) as well as take back what came before ("no, descend"):
+  -- asked (G:unaccounted)
+  -- (nouns said after "no" as often as verbs are left out: "no route", "no crossing traffic")
+  refusable_verbs = { "turn", "climb", "descend", "reduce", "increase", "fly", "proceed", "expedite", "maintain",
+                      "slow", "accelerate", "decelerate", "go", "direct", "continue", "resume", "join", "intercept",
+                      "turning", "climbing", "descending", "reducing", "increasing", "flying", "proceeding",
+                      "expediting", "maintaining", "slowing", "accelerating", "decelerating", "continuing",
+                      "resuming", "joining", "intercepting", "descent", "turns", "climbs" },
   -- units a fraction said in words is of ("half a mile": 0.5 nm)
   fraction_units = { mile = true, miles = true, nm = true, nmi = true, mi = true },
   -- units that close a number typed with a space before its last three digits ("8 500 m", "12 000 ft")

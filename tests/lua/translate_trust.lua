@@ -11315,3 +11315,70 @@ do
     asked(pt("set wind 270 at 50 knots over Flurbington"), "a name that means no place")
   end
 end
+
+-- Cycle 48 (hz56): "no" straight before an instruction's verb or noun, no comma between ("SAS77 no descend FL090",
+-- "no climbing", "no descent", "no left turn"), may refuse it (English as a second language) as well as correct what
+-- came before: asked, naming both readings, with no word to ignore; "no, descend", "negative descend" and "no...
+-- descend" stay corrections, a side corrected after a value ("090 no right heading 200") too
+do
+  local s, ex = scene({ "CRE SAS77 A320 55.0 12.0 090 FL200 250", "CRE FIN8 A321 55.2 12.2 270 FL240 260" })
+  check_eq(ex("SAS77 no descend FL090"),
+    "ASK I have ALT SAS77 FL90. Is 'no descend' a refusal (do not), or a correction ('no, descend')? Please say it again.")
+  check(graph.translate("SAS77 no descend FL090", { sim = s, mode = "offline" }).ignorable == nil, "no word to ignore")
+  asked(ex("FIN8 no turn right heading 300"), "'no turn'")
+  asked(ex("FIN8 no climbing flight level three zero zero"), "'no climbing'")
+  asked(ex("SAS77 no descent FL120"), "'no descent'")
+  asked(ex("FIN8 no left turn heading 200"), "'no left turn'")
+  asked(ex("SAS77 no uh reduce speed 220"), "'no' and a hesitation before the verb")
+  asked(ex("FIN8 heading 270, no turn right heading 300"), "'no turn' after a value and a comma")
+  asked(ex("no proceed direct to the beacon SAS77"), "'no proceed'")
+  check_eq(ex("SAS77 no, descend FL090"), "ALT SAS77 FL90")
+  check_eq(ex("SAS77 negative descend FL090"), "ALT SAS77 FL90")
+  check_eq(ex("FIN8 no... climb FL300"), "ALT FIN8 FL300")
+  check_eq(ex("FIN8 turn left heading 090 no right heading 200"), "HDG FIN8 200 RIGHT")
+  check_eq(ex("SAS77 no speed restriction, descend FL150"), "ALT SAS77 FL150")
+end
+
+-- Cycle 48 (hz56): a word said where a direct-to's place goes that names no place ("direct DME", "direct the
+-- beacon", "direct that fix", "direct there", "direct eleven") is asked about by name, never read as the route's only
+-- waypoint; "proceed direct" with nothing after it still flies to that one waypoint
+do
+  local _, ex = scene({ "DEFWPT HZR1 55.3 12.6", "DEFWPT HZR2 55.1 13.0", "CRE SAS77 A320 55.0 12.0 090 FL200 250",
+    "ADDWPT SAS77 HZR1" })
+  check_eq(ex("SAS77 direct DME"), "ASK Which waypoint is 'DME'? Please say its name for SAS77 to fly direct to.")
+  check_eq(ex("SAS77 proceed direct to the beacon"),
+    "ASK Which waypoint is 'the beacon'? Please say its name for SAS77 to fly direct to.")
+  asked(ex("SAS77 direct that fix"), "a fix pointed at")
+  asked(ex("SAS77 direct there"), "'there' with no place before it")
+  asked(ex("SAS77 turn right direct the VOR, climb FL300"), "a navaid's kind alone")
+  asked(ex("SAS77 direct eleven"), "a number where the place goes")
+  check_eq(ex("SAS77 proceed direct"), "DIRECT SAS77 HZR1")
+  check_eq(ex("SAS77 proceed direct, climb FL300"), "DIRECT SAS77 HZR1 ; ALT SAS77 FL300")
+  check_eq(ex("SAS77 add HZR2 and then go direct there"), "ADDWPT SAS77 HZR2 ; DIRECT SAS77 HZR2")
+end
+
+-- Cycle 48 (hz56): an instruction for an aircraft named before it and another aircraft named after all of it with
+-- nothing of its own ("sas77 hdg 100 and fin8", "sas77 fl310, fin8", "sas77 direct HZR1 fin8", after the instruction
+-- before: "sas77 climb fl300, heading 100, fin8") is asked: which aircraft it is for, naming both, never offered to
+-- the later one alone. Aircraft named together before it ("sas77 and fin8 fl310") or one added ("fin8 too") get it;
+-- one with a value of its own has its own request
+do
+  local _, ex = scene({ "DEFWPT HZR1 55.3 12.6", "CRE SAS77 A320 55.0 12.0 090 FL200 250", "ADDWPT SAS77 HZR1",
+    "CRE FIN8 A321 55.2 12.2 270 FL240 260" })
+  -- (the question names both aircraft and offers neither the instruction)
+  local function which(text, why) check(ex(text):match("^ASK Which aircraft is .*SAS77, FIN8 or both%?") ~= nil, why) end
+  check_eq(ex("sas77 hdg 100 and fin8"),
+    "ASK Which aircraft is 'heading 100' for: SAS77, FIN8 or both? Please say each aircraft with its own instruction.")
+  which("sas77 climb fl310, fin8", "a level, then another aircraft after a comma")
+  which("sas77 fl310 fin8", "a verbless level, then another aircraft")
+  which("sas77 fl310 and fin8", "a verbless level, then 'and' another aircraft")
+  which("sas77 direct HZR1 and fin8", "a direct-to, then another aircraft")
+  which("sas77 reduce speed 220 and fin8 thanks", "another aircraft and thanks")
+  which("sas77 climb fl300, heading 100, fin8", "an aircraft after the instruction after another's")
+  check_eq(ex("sas77 and fin8 fl310"), "ALT SAS77 FL310 ; ALT FIN8 FL310")
+  check_eq(ex("sas77 and fin8 climb fl310"), "ALT SAS77 FL310 ; ALT FIN8 FL310")
+  check_eq(ex("sas77 hdg 100 and fin8 too"), "HDG SAS77 100 ; HDG FIN8 100")
+  check_eq(ex("sas77 hdg 100 and fin8 fl310"), "HDG SAS77 100 ; ALT FIN8 FL310")
+  check_eq(ex("heading 100, fin8"), "HDG FIN8 100")
+  check_eq(ex("sas77 descend fl120, sas77"), "ALT SAS77 FL120")
+end
