@@ -4723,9 +4723,9 @@ end
 
 -- The numbers a TrafScript line carries, with the readings a spoken value
 -- may have had (FL350 is 35000 ft and 350; M.78 is 0.78); with `only` (a set of
--- registry names), those of the commands in it only ("DELAY 60 HDG KL204 60": 60 once for DELAY).
+-- registry names), a second list: those of the commands in it only ("DELAY 60 HDG KL204 60": 60 once for DELAY).
 local function line_numbers(line, only)
-  local nums = {}
+  local nums, picked = {}, only and {}
   local cmd, named  -- (the command the numbers belong to; a name straight after one is its argument: "DT ASAS 2")
   for w in line:gmatch("[^%s,]+") do
     local u = w:upper()
@@ -4736,11 +4736,17 @@ local function line_numbers(line, only)
     end
     local v = tonumber(w) or (u:match("^FL%d+$") and tonumber(u:sub(3)) * 100)
         or (u:match("^M%.?%d") and tonumber((u:sub(2):gsub("^%.", "0."))))
-    if only and not only[cmd] then v = nil end
-    if v then nums[#nums + 1] = v end
-    if v and u:match("^FL%d+$") then nums[#nums + 1] = tonumber(u:sub(3)) end
+    if v then
+      local fl = u:match("^FL%d+$") and tonumber(u:sub(3))  -- (nil appends nothing)
+      nums[#nums + 1] = v
+      nums[#nums + 1] = fl
+      if only and only[cmd] then
+        picked[#picked + 1] = v
+        picked[#picked + 1] = fl
+      end
+    end
   end
-  return nums
+  return nums, picked
 end
 
 -- True when quantity q's value is one a command carries, as said or as
@@ -4980,8 +4986,9 @@ function G:uncarried()
   local function position(q) return q.kind == "lat" or q.kind == "lon" end
   local nums, times = {}, {}
   for _, line in ipairs(self.out) do
-    for _, n in ipairs(line_numbers(line)) do nums[#nums + 1] = n end
-    for _, n in ipairs(line_numbers(line, G.time_commands)) do times[#times + 1] = n end
+    local all, timed = line_numbers(line, G.time_commands)
+    for _, n in ipairs(all) do nums[#nums + 1] = n end
+    for _, n in ipairs(timed) do times[#times + 1] = n end
   end
   local corrected = 0
   for i = 1, self:said("@correction") and #self.t or 0 do if self:word(i, "@correction") then corrected = i end end
