@@ -4075,6 +4075,7 @@ function G:when_reached(s)
   if c >= s.trig then
     -- ("climb FL370, reaching Mach .79", "on reaching reduce 250": "reaching" alone opening the clause)
     -- (after the clause's callsign: "RYR8GN on reaching reduce 220")
+    if not self:said("reaching") then return false end
     local v = self:skip_fillers(s.b)
     for _, a in ipairs(self:refs_in(v, v + 1, "aircraft")) do v = self:skip_fillers(a.e) end
     if self.t[v] and self.t[v].kind == "punct" then v = self:skip_fillers(v + 1) end
