@@ -8194,8 +8194,13 @@ for _, a in ipairs(names.airlines) do
     G.telephony_joined[joined] = G.telephony_joined[joined] or a[1]
   end
 end
+do  -- G.joined_word: a word and the spaces after it, a word shorter than every telephony run together never matched
+  local shortest = math.huge
+  for joined in pairs(G.telephony_joined) do shortest = math.min(shortest, #joined) end
+  G.joined_word = "%f[%a](" .. ("%a"):rep(shortest) .. "%a*)(%s+)()"
+end
 function G.joined_telephony(text)
-  return (text:gsub("%f[%a](%a+)(%s+)()", function(w, space, at)
+  return (text:gsub(G.joined_word, function(w, space, at)
     local said = G.telephony_joined[w:lower()]
     if not said then return nil end
     local nx = text:match("^%w+", at)
