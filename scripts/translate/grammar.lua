@@ -2147,11 +2147,12 @@ end
 -- marked `spoken`) outside them, on words no part of the parse used ("1500 feet a minute" is a rate, read whole).
 function G:durations(b, e)
   local out, inside = {}, {}
+  local spoken = self:said("@spoken_units @loose_whiles")  -- (a time in words holds one of these words)
   for _, q in ipairs(self:quantities(b, e)) do
-    for k = q.b, q.e - 1 do inside[k] = true end
+    if spoken then for k = q.b, q.e - 1 do inside[k] = true end end
     if q.kind == "time" then out[#out + 1] = q end
   end
-  if not self:said("@spoken_units @loose_whiles") then return out end  -- (each holds one of these words)
+  if not spoken then return out end
   local k = b
   while k < e do
     local x = not inside[k] and not self.u:used(k) and self:spoken_duration(k)
@@ -2496,7 +2497,8 @@ end
 G.speed_held = { alt = true, hdg = true, vs = true, spd = true, maintain = true, direct = true, lnav = true,
   vnav = true }
 function G:at_speed(s)
-  if not G.speed_held[s.intent] then return nil end
+  -- (G:condition_word opens on one of these words)
+  if not G.speed_held[s.intent] or not self:said("@condition as") then return nil end
   local v
   for i = s.b, s.trig - 1 do
     v = self:condition_word(i)
@@ -4073,6 +4075,7 @@ function G:when_reached(s)
   if c >= s.trig then
     -- ("climb FL370, reaching Mach .79", "on reaching reduce 250": "reaching" alone opening the clause)
     -- (after the clause's callsign: "RYR8GN on reaching reduce 220")
+    if not self:said("reaching") then return false end
     local v = self:skip_fillers(s.b)
     for _, a in ipairs(self:refs_in(v, v + 1, "aircraft")) do v = self:skip_fillers(a.e) end
     if self.t[v] and self.t[v].kind == "punct" then v = self:skip_fillers(v + 1) end
@@ -4721,22 +4724,30 @@ end
 
 -- The numbers a TrafScript line carries, with the readings a spoken value
 -- may have had (FL350 is 35000 ft and 350; M.78 is 0.78); with `only` (a set of
--- registry names), those of the commands in it only ("DELAY 60 HDG KL204 60": 60 once for DELAY).
+-- registry names), a second list: those of the commands in it only ("DELAY 60 HDG KL204 60": 60 once for DELAY).
 local function line_numbers(line, only)
-  local nums = {}
+  local nums, picked = {}, only and {}
   local cmd, named  -- (the command the numbers belong to; a name straight after one is its argument: "DT ASAS 2")
   for w in line:gmatch("[^%s,]+") do
     local u = w:upper()
-    local name = w:match("^%u+$") and registry_args()[u] and not named
-    if name then cmd = u end
-    named = name
+    if only then  -- (the command is tracked only to filter by it)
+      local name = w:match("^%u+$") and registry_args()[u] and not named
+      if name then cmd = u end
+      named = name
+    end
     local v = tonumber(w) or (u:match("^FL%d+$") and tonumber(u:sub(3)) * 100)
         or (u:match("^M%.?%d") and tonumber((u:sub(2):gsub("^%.", "0."))))
-    if only and not only[cmd] then v = nil end
-    if v then nums[#nums + 1] = v end
-    if v and u:match("^FL%d+$") then nums[#nums + 1] = tonumber(u:sub(3)) end
+    if v then
+      local fl = u:match("^FL%d+$") and tonumber(u:sub(3))  -- (nil appends nothing)
+      nums[#nums + 1] = v
+      nums[#nums + 1] = fl
+      if only and only[cmd] then
+        picked[#picked + 1] = v
+        picked[#picked + 1] = fl
+      end
+    end
   end
-  return nums
+  return nums, picked
 end
 
 -- True when quantity q's value is one a command carries, as said or as
@@ -4976,8 +4987,9 @@ function G:uncarried()
   local function position(q) return q.kind == "lat" or q.kind == "lon" end
   local nums, times = {}, {}
   for _, line in ipairs(self.out) do
-    for _, n in ipairs(line_numbers(line)) do nums[#nums + 1] = n end
-    for _, n in ipairs(line_numbers(line, G.time_commands)) do times[#times + 1] = n end
+    local all, timed = line_numbers(line, G.time_commands)
+    for _, n in ipairs(all) do nums[#nums + 1] = n end
+    for _, n in ipairs(timed) do times[#times + 1] = n end
   end
   local corrected = 0
   for i = 1, self:said("@correction") and #self.t or 0 do if self:word(i, "@correction") then corrected = i end end
@@ -6353,14 +6365,18 @@ function G:unaccounted()
   -- ("climb FL250, hundred", "radius 5 miles, thousand": a word of scale after an instruction that no value or
   -- name holds counts nothing the parse read: asked; one before any instruction is callsign noise, and one after
   -- "or" and a value is that value misheard, "nine or thousand", as G:alternatives reads it)
-  local held = {}
-  for _, list in ipairs({ self:quantities(1, #self.t + 1), self.refs }) do
-    for _, x in ipairs(list) do
-      for k = x.b, x.e - 1 do held[k] = true end
-    end
-  end
+  local held  -- (the tokens a value or name holds, gathered at the first word of scale)
   local function scale_left(i)
-    return G.scale_words[self.t[i].text] and not held[i] and not (self:word(i - 1, "or") and held[i - 2])
+    if not G.scale_words[self.t[i].text] then return false end
+    if not held then
+      held = {}
+      for _, list in ipairs({ self:quantities(1, #self.t + 1), self.refs }) do
+        for _, x in ipairs(list) do
+          for k = x.b, x.e - 1 do held[k] = true end
+        end
+      end
+    end
+    return not held[i] and not (self:word(i - 1, "or") and held[i - 2])
       and self:instruction_before(i)
   end
   -- (a word said bare is asked beside value instructions only, which read no place or noun: G.bare_left; beside
@@ -8178,10 +8194,17 @@ for _, a in ipairs(names.airlines) do
     G.telephony_joined[joined] = G.telephony_joined[joined] or a[1]
   end
 end
+do  -- G.joined_word: a word and the spaces after it, a word shorter than every telephony run together never matched
+  local shortest = math.huge
+  for joined in pairs(G.telephony_joined) do shortest = math.min(shortest, #joined) end
+  G.joined_word = "%f[%a](" .. ("%a"):rep(shortest) .. "%a*)(%s+)()"
+end
 function G.joined_telephony(text)
-  return (text:gsub("%f[%a](%a+)(%s+)()", function(w, space, at)
-    local said, nx = G.telephony_joined[w:lower()], text:match("^%w+", at)
-    if not said or not nx or not (nx:match("^%d") or SAID_DIGIT[nx:lower()]) then return nil end
+  return (text:gsub(G.joined_word, function(w, space, at)
+    local said = G.telephony_joined[w:lower()]
+    if not said then return nil end
+    local nx = text:match("^%w+", at)
+    if not nx or not (nx:match("^%d") or SAID_DIGIT[nx:lower()]) then return nil end
     return (w:match("^%u") and said:gsub("%f[%a]%a", string.upper) or said) .. space
   end))
 end

@@ -395,10 +395,12 @@ function m:trailing_aircraft(s, ids)
   local qs = self:quantities(s.trig, s.e)
   local from = s.intent == "infer" and qs[1] and qs[1].b or s.trig  -- the instruction's first word
   local past = qs[#qs] and math.max(qs[#qs].e, from + 1) or from + 1
-  local refs = self:refs_in(past, s.e, "aircraft")
-  if #refs == 0 then return end
   local explained, named, before, said, after, at = self.explained or {}, {}, {}, {}, {}, nil
   for _, id in ipairs(ids) do named[id:upper()] = true end
+  -- (an aircraft after the instruction is one of those instructed, or there is nothing to ask)
+  local trailing = false
+  for _, r in ipairs(self:refs_in(past, s.e, "aircraft")) do trailing = trailing or named[r.name:upper()] end
+  if not trailing then return end
   -- (nothing else in the clause after aircraft ref r: punctuation, fillers, courtesy, "and", other aircraft)
   local function alone(r)
     for k = r.e, s.e - 1 do

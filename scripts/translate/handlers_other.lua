@@ -1230,11 +1230,12 @@ return function(H, f, compass)
   function m:named_place_refs()
     if not self:said("until till direct dct via through route") then return end
     for i = 1, #self.t - 1 do
-      local a = flying_before(self, i)
+      local opens = self:word(i, "direct dct via through") or (self.t[i].text == ":" and self:word(i - 1, "route"))
+      -- (the aircraft only where a limit ends or a list opens)
+      local a = (opens or self:word(i, "until till")) and flying_before(self, i)
       if a and self:word(i, "until till") then
         place_ref(self, self:word(i + 1, "the") and i + 2 or i + 1, a, true)
       end
-      local opens = self:word(i, "direct dct via through") or (self.t[i].text == ":" and self:word(i - 1, "route"))
       local k = opens and self:skip_fillers(self:word(i + 1, "to") and i + 2 or i + 1)
       -- (a list: the first place, then "then" or "and", a comma before it or not, and the next place, two places
       -- at least; a name after a comma alone may say the place before again: "direct to QPR, Quimper")
