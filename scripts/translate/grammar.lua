@@ -181,7 +181,7 @@ local function know_all(v, seen)
   -- in the addressing position, lexicon.label_roles and lexicon.bare_labels only a speaker's label; lexicon.city_airports are places,
   -- accounted for only where one is read; lexicon.readback_heard is dropped with its values only, and
   -- lexicon.nationless_registrations are letters of a registration; lexicon.typed_abbreviations are read as
-  -- their words only where those fit; lexicon.manner, deadline_places and held_value only where their reading
+  -- their words only where those fit; lexicon.manner, rate_manner, deadline_places and held_value only where their reading
   -- holds; lexicon.dictated_punctuation is the marks it names; lexicon.said_whole is read as its English: they
   -- account for no word; lexicon.heard_as's words are read only where their neighbours fit, becoming the word
   -- they mean, so a heard form left as it was ("vire a la izquierda": no neighbour fits) is no word squawk knows;
@@ -194,7 +194,7 @@ local function know_all(v, seen)
       or v == lexicon.aside or v == lexicon.self_correction.just_the or v == lexicon.foreign_digits or v == lexicon.foreign_hesitation_digits
       or v == lexicon.atc_units or v == lexicon.city_airports or v == lexicon.label_roles or v == lexicon.bare_labels
       or v == lexicon.addressed_roles or v == lexicon.readback_heard or v == lexicon.nationless_registrations
-      or v == lexicon.manner or v == lexicon.deadline_places or v == lexicon.held_value
+      or v == lexicon.manner or v == lexicon.rate_manner or v == lexicon.deadline_places or v == lexicon.held_value
       or v == lexicon.dictated_punctuation or v == lexicon.acknowledged or v == lexicon.said_whole or v == lexicon.heard_as
       or v == lexicon.name_particles or v == lexicon.digit_homophones or v == lexicon.asides_alone
       or v == lexicon.kept_as_is or v == lexicon.id_labels or v == lexicon.terse_list
@@ -6895,6 +6895,29 @@ function G:said_as_manner(i)
     or (q ~= nil and q.b == n)
 end
 
+-- The phrase that says a rate as a manner, its word "rate" at i ("at a good rate", "with your best rate of climb",
+-- "good rate"): a word of lexicon.rate_manner straight before it (an article, then "at" or "with", before that
+-- belong to it), "of" and a climb's or a descent's word after it, and no rate's value straight after (G:rate_value:
+-- "at a good rate of 2000 fpm" says the rate; "at a good rate to 9000 feet" a level). Returns its first position,
+-- one past its end, true when it wants a gentler rate than the aircraft's own (rate_manner.asked), and the
+-- altitude with its unit said straight after it, a level or the rate ("at a good rate 9000 feet"), or nil.
+G.rate_manners = { flown = set_of(lexicon.rate_manner.flown), asked = set_of(lexicon.rate_manner.asked) }
+G.motion = { up = set_of(lexicon.vertical_motion.up), down = set_of(lexicon.vertical_motion.down) }
+function G:rate_manner(i)
+  local w, manners = self.words[i - 1], G.rate_manners
+  if not (w and (manners.flown[w] or manners.asked[w])) then return nil end
+  local e = i + 1
+  if self:word(e, "of") and (self:word(e + 1, G.motion.up) or self:word(e + 1, G.motion.down)) then e = e + 2 end
+  local v = self:skip_fillers(self:word(e, "of at to") and e + 1 or e)
+  local q = self:quantities(e, v + 1)[1]
+  local unit_after = q and q.b == e and q.kind == "alt" and self:word(q.e - 1, "@feet @metres") and q or nil
+  if q and q.b <= v and self:rate_value(i, q) and not unit_after then return nil end
+  local b = i - 1
+  if self:word(b - 1, "a an your its their the") then b = b - 1 end
+  if self:word(b - 1, "at with") then b = b - 1 end
+  return b, e, manners.asked[w] == true, unit_after
+end
+
 -- True when the word before token i is one of `subjects` ("already", "has", "had", "was", "were", "just" and
 -- fillers between them skipped: "the student has just cleared").
 function G:said_after_subject(i, subjects)
@@ -6977,7 +7000,8 @@ function G:not_simulated()
             and not (c.no_value and self:value_next(i))
             and not (c.no_number_after and self.t[i + 2] and self.t[i + 2].kind == "number")
             and not (c.not_after and self:word(i - 1, c.not_after)) and not self:word(i + 1, "not")
-            and (not c.bare or self:said_bare(i)) and (not c.manner or self:said_as_manner(i)) then
+            and (not c.bare or self:said_bare(i)) and (not c.manner or self:said_as_manner(i))
+            and (not c.rate_manner or self:rate_manner(i)) then
           local expected = c.not_aircraft_to and self:aircraft_then_to(i + 1)
           if c.routed and self:limit_off_route(i, c.window) then break end
           if expected then
@@ -6992,7 +7016,20 @@ function G:not_simulated()
     end
     if class then
       local e, comma, level_at = i + 1, false, nil
-      while e <= #self.t and not class.manner do
+      if class.rate_manner then
+        local b, rate_e, gentler, unit_after = self:rate_manner(i)
+        if unit_after then
+          self:need(string.format("Is '%s' the level to fly or the rate, in feet per minute? I heard '%s' before it.",
+            self:raw(unit_after.b, unit_after.e), self:raw(b, rate_e)))
+          break
+        elseif gentler then
+          self:need(string.format("What vertical speed should it fly, in feet per minute? '%s' names none, and squawk "
+            .. "flies the aircraft's own rate.", self:raw(b, rate_e)))
+          break
+        end
+        i, e = b, rate_e
+      end
+      while e <= #self.t and not class.manner and not class.rate_manner do
         local x = self.t[e]
         comma = comma or (x.kind == "punct" and x.text == ",")
         -- (a comma goes on: "hold at BAKUR, left hand pattern, inbound track 270" is one clearance)

@@ -167,10 +167,11 @@ return function(H, f, wrap, compass)
         end
       end
     end
-    -- "rate fifteen hundred": a plain number after "rate" is the vertical speed
+    -- "rate fifteen hundred": a plain number after "rate" is the vertical speed (a rate said as a manner, "at a
+    -- good rate", G:rate_manner, names none)
     local rate_word = self:find_word(s.b, s.e, "rate")
-    if not rate and rate_word < s.e then
-      rate = take_rate(function(q) return q.b > rate_word and not q.fl end)
+    if not rate and rate_word < s.e and not self.u:used(rate_word) then
+      rate = take_rate(function(q) return not q.fl and self:rate_value(rate_word, q) end)
     end
     -- "descend flight level one two zero at one thousand five hundred": a number with no unit straight after
     -- "at" after the level, in whole hundreds within lexicon.rate_after_level (ft/min; no level or speed of
@@ -844,7 +845,7 @@ return function(H, f, wrap, compass)
     if not id then return end
     local v = s.rate
     for _, q in ipairs(v and {} or self:quantities(s.b, s.e)) do
-      if q.kind == "vs" or (q.kind == "plain" and q.b > s.trig) or (q.kind == "alt" and not q.fl and q.b > s.trig) then
+      if (q.kind == "vs" or q.kind == "plain" or (q.kind == "alt" and not q.fl)) and self:rate_value(s.trig, q) then
         v = q
         break
       end
@@ -917,6 +918,15 @@ return function(H, f, wrap, compass)
       self:take(level)
       self:emit("ALT " .. id .. " " .. f.alt(level.value, level.fl))
     end
+  end
+
+  -- True when quantity q is said as the value of the rate named at token k (its word, "rate", "vs", "vertical
+  -- speed", or the instruction's): a value with a rate's unit (ft/min, m/s) wherever it stands; a number after k,
+  -- unless it is an altitude with its unit (feet, metres) after "to", a level flown to ("rate of descent to 9000
+  -- feet"; "increase your rate to two thousand five hundred" is the rate).
+  function m:rate_value(k, q)
+    return q.kind == "vs" or (q.b > k and not (q.kind == "alt" and self:word(q.b - 1, "to")
+      and (q.fl or self:word(q.e - 1, "@feet @metres"))))
   end
 
   -- The level a vertical speed flies to, said after its quantity v with "to" or "target" before it and only

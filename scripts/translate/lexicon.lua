@@ -849,6 +849,18 @@ return {
   -- rate being known (an inflection of a word squawk knows, "slowly", "steadily", is asked the same)
   manner = { "nice", "gentle", "gently", "smooth", "smoothly", "slowly", "gradually", "steadily", "carefully",
       "softly", "gingerly", "leisurely", "lazily", "comfortably", "easily" },
+  -- how fast a climb or descent is flown, said of its rate with no value after it ("at a good rate", "at your best
+  -- rate of descent", G:rate_manner): `flown` ones ask for no more than the aircraft's own rate, which squawk flies,
+  -- and are noted as "expedite" is; `asked` ones want a gentler rate than that, which no value says: asked. Their
+  -- words are accounted for only in that phrase
+  rate_manner = { flown = { "good", "high", "fast", "best", "maximum", "max", "expedited", "decent", "healthy",
+      "brisk", "quick", "rapid", "normal", "usual", "optimum", "optimal" },
+    asked = { "slow", "low", "reduced", "gentle", "moderate", "shallow", "easy", "comfortable", "minimum",
+      "lower", "slower", "smaller", "small" } },
+  -- the words of a climb or a descent, either way (G:opposite_motions: both said of one aircraft with no correction
+  -- between is asked); "up" and "down" only as a rate's sign, straight after its value ("vs 1000 down")
+  vertical_motion = { up = { "climb", "clb", "climbing", "climbs", "ascend", "ascending", "rise" },
+    down = { "descend", "desc", "descent", "descending", "descends", "sink" } },
   -- a delay with no number, said after an instruction ("climb FL300 in a minute"): asked (G:delay_left)
   vague_delays = { "minute", "moment", "bit", "sec", "second", "while" },
   -- a hedge said straight after a value, closing its clause ("descend fl300 maybe", "heading 240 I think"): the
@@ -1008,7 +1020,8 @@ return {
   -- after a comma opened by an imperative verb ("until 5 miles final, descend to 3000 feet") may follow it;
   -- `after_heading`: the phrase is one only after a heading value, with at most "to", "vectors" or a comma
   -- between them (G:after_heading); `bare`: the word is one only said alone in its clause (G:said_bare); `manner`:
-  -- one only said as an instruction's manner, the phrase its word alone (G:said_as_manner);
+  -- one only said as an instruction's manner, the phrase its word alone (G:said_as_manner); `rate_manner`: the
+  -- word is a rate's, said as a manner with no value (G:rate_manner), the phrase that manner;
   -- `no_value`: none with a value said straight after its word (G:value_next); `routed`: a place it names off
   -- the route of the one aircraft addressed is asked (G:limit_off_route); `no_number_after`: no phrase when a
   -- number follows its `near` word
@@ -1145,6 +1158,10 @@ return {
     -- aircraft's own rate; the phrase is the word alone, noted and left to its instruction
     { what = "how fast or hard a change is flown", words = "expedite expedited quickly fast hard sharp sharply",
       manner = true },
+    -- "descend FL150 at a good rate", "at your best rate KLM12 climb FL300": the same said of the rate, with no value
+    -- (`rate_manner`: G:rate_manner, lexicon.rate_manner), noted from "at" or "with" before it to the rate's word and
+    -- the motion it names ("of descent"); a gentler one ("at a slow rate") is asked
+    { what = "how fast or hard a change is flown", words = "rate", rate_manner = true },
     -- "turn left heading 170, terrain", "descend FL200 weather", "aua917 terrain!! climb fl190": terrain or weather
     -- named bare beside an instruction (`bare`: G:said_bare), its reason, which squawk does not simulate
     { what = "terrain and weather", words = "terrain weather icing storm storms thunderstorm thunderstorms cloud "

@@ -10885,3 +10885,21 @@ do
   check_eq(ex("ff 60 descend"), "ASK I have FF 60. Which aircraft should change altitude? Please give its callsign.")
   check_eq(ex("back to real time speed"), "DTMULT 1")
 end
+
+-- Cycle 48 (hz57): a rate's manner said with no value ("at a good rate", "best rate of climb") is noted as "expedite"
+-- is and never makes a later number the rate; a gentler one is asked; a number is a rate only with a rate's unit or
+-- after the rate's word, never an altitude with its unit after "to"
+do
+  local _, ex = scene({ "CRE SVA31 A320 24.7 46.7 250 FL210 270" })
+  local r = graph.translate("at a good rate SVA31 descend to 9000 feet", { sim = _, mode = "offline" })
+  check(said(r) == "ALT SVA31 9000" and r.note:find("'at a good rate'", 1, true) ~= nil, said(r))
+  check_eq(ex("sva31 climb at a high rate to 25000 feet"), "ALT SVA31 25000")
+  check_eq(ex("sva31 good rate of descent, descend FL150"), "ALT SVA31 FL150")
+  check_eq(ex("sva31 descend FL150 at your best rate of descent"), "ALT SVA31 FL150")
+  check_eq(ex("sva31 descend with a decent rate to 3000 metres"), "ALT SVA31 9843")
+  check_eq(ex("sva31 climb FL250 at a good rate of 1800 fpm"), "ALT SVA31 FL250 1800")
+  check_eq(ex("sva31 increase your rate of descent to two thousand five hundred"), "VS SVA31 -2500")
+  asked(ex("sva31 descend FL150 at a slow rate"), "a gentler rate, none said")
+  asked(ex("sva31 descend at a good rate 9000 feet"), "a level or the rate after a manner")
+  asked(ex("sva31 rate of descent to 9000 feet"), "a level after 'to', no rate")
+end
