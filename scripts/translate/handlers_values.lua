@@ -135,9 +135,21 @@ return function(H, f, wrap, compass)
     return q.value * 100
   end
 
+  -- "Climb or descend?" when both are said of one instruction in [b, e) for aircraft `id` (G:opposite_motions);
+  -- true when asked.
+  function m:motions_asked(b, e, id)
+    local up, down = self:opposite_motions(b, e)
+    if up then
+      self:need(string.format("Climb or descend? I heard '%s' and '%s' for %s, with no correction between.",
+        self.t[up].raw, self.t[down].raw, id))
+    end
+    return up ~= nil
+  end
+
   function m:altitude(s)
     local ids = self:acids(s)
     if #ids == 0 then return self:need("Which aircraft should change altitude? Please give its callsign.") end
+    if self:motions_asked(s.b, s.e, ids[1]) then return end
     local qs = self:quantities(s.b, s.e)
     local rate
     local with_unit, plain = {}, {}
@@ -865,6 +877,14 @@ return function(H, f, wrap, compass)
     local cb, ce = s.b, s.e
     while cb > 1 and self.t[cb - 1].kind ~= "punct" do cb = cb - 1 end
     while ce <= #self.t and self.t[ce].kind ~= "punct" do ce = ce + 1 end
+    -- (both ways said in that clause are asked; one said after "then", before or after the rate, is another
+    -- instruction's: "climb FL300 then descend at 2000 fpm")
+    local mb, me = cb, s.trig
+    while me < ce and self.t[me].kind ~= "punct" and not self:word(me, "@then_words") do me = me + 1 end
+    for k = cb, s.trig - 1 do
+      if self:word(k, "@then_words") then mb = k + 1 end
+    end
+    if self:motions_asked(mb, me, id) then return end
     local down = self:word_in(cb, ce, "descent descend descending")
     local up = self:word_in(cb, ce, "climb climbing")
     local dir = (down and not up) and -1 or (up and not down) and 1 or self:direction(s)

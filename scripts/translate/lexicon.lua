@@ -853,7 +853,7 @@ return {
   -- rate of descent", G:rate_manner): `flown` ones ask for no more than the aircraft's own rate, which squawk flies,
   -- and are noted as "expedite" is; `asked` ones want a gentler rate than that, which no value says: asked. Their
   -- words are accounted for only in that phrase
-  rate_manner = { flown = { "good", "high", "fast", "best", "maximum", "max", "expedited", "decent", "healthy",
+  rate_manner = { flown = { "good", "high", "fast", "best", "maximum", "max", "expedited", "healthy",
       "brisk", "quick", "rapid", "normal", "usual", "optimum", "optimal" },
     asked = { "slow", "low", "reduced", "gentle", "moderate", "shallow", "easy", "comfortable", "minimum",
       "lower", "slower", "smaller", "small" } },

@@ -10896,10 +10896,28 @@ do
   check_eq(ex("sva31 climb at a high rate to 25000 feet"), "ALT SVA31 25000")
   check_eq(ex("sva31 good rate of descent, descend FL150"), "ALT SVA31 FL150")
   check_eq(ex("sva31 descend FL150 at your best rate of descent"), "ALT SVA31 FL150")
-  check_eq(ex("sva31 descend with a decent rate to 3000 metres"), "ALT SVA31 9843")
+  check_eq(ex("sva31 descend with a healthy rate to 3000 metres"), "ALT SVA31 9843")
   check_eq(ex("sva31 climb FL250 at a good rate of 1800 fpm"), "ALT SVA31 FL250 1800")
   check_eq(ex("sva31 increase your rate of descent to two thousand five hundred"), "VS SVA31 -2500")
   asked(ex("sva31 descend FL150 at a slow rate"), "a gentler rate, none said")
   asked(ex("sva31 descend at a good rate 9000 feet"), "a level or the rate after a manner")
   asked(ex("sva31 rate of descent to 9000 feet"), "a level after 'to', no rate")
+end
+
+-- Cycle 48 (hz57): a climb and a descent both said of one aircraft with no correction between are asked, whichever
+-- comes first and whether a level, a rate or a rate's sign ("vs 1500 down") follows; a correction, a motion stopped
+-- and one in a note or after "then" leave the other standing
+do
+  local _, ex = scene({ "CRE SVA31 A320 24.7 46.7 250 FL210 270" })
+  asked(ex("climb SVA31 descend at 1500 fpm"), "climb, then descend at a rate")
+  asked(ex("descend sva31 climb FL250"), "descend, then climb to a level above")
+  asked(ex("sva31 climb, descend at 1500 fpm"), "a comma between the two ways")
+  asked(ex("sva31 climb rate of descent 1500"), "a rate of descent after climb")
+  asked(ex("sva31 descend vertical speed 1500 climbing"), "a rate's sign word against the verb")
+  asked(ex("sva31 climb vs 1500 down"), "a rate's sign after its value against the verb")
+  check_eq(ex("sva31 climb correction descend at 1500 fpm"), "VS SVA31 -1500")
+  check_eq(ex("sva31 stop the climb and descend at 1500 fpm"), "VS SVA31 -1500")
+  check_eq(ex("sva31 climb FL250, expect descent in ten minutes"), "ALT SVA31 FL250")
+  check_eq(ex("sva31 descend at 1500 fpm then climb FL250"), "VS SVA31 -1500 ; ALT SVA31 FL250")
+  check_eq(ex("sva31 vs 1500 down"), "VS SVA31 -1500")
 end
