@@ -4685,10 +4685,10 @@ function G:unexplained(s, n_before)
   local corrected = 0
   for i = s.b, self:said("@correction") and s.e - 1 or 0 do if self:word(i, "@correction") then corrected = i end end
   local relative = self:word_in(s.b, s.e, "@relative @same_as @below @above")
-  -- with no instruction word the first value with a unit is the instruction ("ezy45 fl120 7")
+  -- with no instruction word the first value with a unit is the instruction ("ezy45 fl120 7", "klm12 1500 fpm 9000")
   local opened = s.intent ~= "infer" and s.trig or nil
   for _, q in ipairs(self:quantities(s.b, s.e)) do
-    if not opened and own_unit(q) then opened = q.b end
+    if not opened and (own_unit(q) or q.kind == "vs") then opened = q.b end
   end
   for _, q in ipairs(self:quantities(s.b, s.e)) do
     -- the aircraft said straight before the value, if any
@@ -8257,9 +8257,10 @@ end
 -- "hop7 6000 hdg 220 230kt": in a terse typed list, an aircraft that flies then only values, each labelled
 -- (lexicon.terse_list) but one, that one a bare number of four or five figures in hundreds of feet (1000 to
 -- 60000), with no level, altitude word or transponder code said: that number is the level, written "6000ft".
--- Any other word, a second bare number or none labelled leaves the text as it is (the number is asked about).
+-- Any other word, a second bare number, one straight after a rate's value ("vs 1500 9000") or none labelled leaves
+-- the text as it is (the number is asked about).
 G.terse_list = { labels = set_of(lexicon.terse_list.labels), units = set_of(lexicon.terse_list.units),
-  level = set_of(lexicon.terse_list.level), joins = set_of(lexicon.terse_list.joins) }
+  level = set_of(lexicon.terse_list.level), joins = set_of(lexicon.terse_list.joins), rate = set_of(lexicon.terse_list.rate) }
 function G.terse_altitude(text, world)
   if not text:find("%d%d%d%d") then return text end
   -- (the first word names an aircraft flying)
@@ -8279,7 +8280,8 @@ function G.terse_altitude(text, world)
       if L.units[toks[k + 1] or ""] or L.labels[toks[k - 1]] then
         labelled = labelled + 1
       elseif bare or not figures:match("^%d%d%d%d%d?$") or tonumber(figures) % 100 ~= 0
-          or tonumber(figures) < 1000 or tonumber(figures) > 60000 then
+          or tonumber(figures) < 1000 or tonumber(figures) > 60000 or L.rate[toks[k - 1]]
+          or (toks[k - 1]:match("%d") and (L.rate[toks[k - 2] or ""] or toks[k - 1]:match("fpm$"))) then
         return text
       else
         bare = figures

@@ -240,6 +240,18 @@ return function(H, f, wrap, compass)
         with_unit = { kept }
       end
     end
+    -- "descend at 2000 fpm 250", "... 2000 fpm, eight thousand": a number with no unit said straight after the rate
+    -- (a comma or "and" between at most) is a level or a speed said bare: asked, never flown ("to 250" is the level)
+    if rate then
+      local k = self:skip_fillers(rate.e)
+      while self.t[k] and (self.t[k].text == "," or self:word(k, "and")) do k = self:skip_fillers(k + 1) end
+      for _, q in ipairs(self:quantities(k, s.e)) do
+        if q.b == k and (q.kind == "plain" or (q.kind == "alt" and not q.fl and not self:word(q.e - 1, "@feet @metres"))) then
+          return self:need(string.format("Is '%s' after the rate (%s) a level or a speed? Please say a level with 'FL' "
+            .. "or feet, a speed with knots.", self:raw(q.b, q.e), self:raw(rate.b, rate.e)))
+        end
+      end
+    end
     local target = self:pick(self:corrected(#with_unit > 0 and with_unit or plain, with_unit, plain, s), s, "maintain")
     local dir = self:direction(s)
     local verb = dir > 0 and "climb" or dir < 0 and "descend" or "fly"

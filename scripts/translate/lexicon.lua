@@ -1564,7 +1564,9 @@ return {
     units = { "kt", "kts", "knots", "fpm", "deg", "degs", "degrees" },
     level = { "fl", "alt", "altitude", "level", "lvl", "ft", "feet", "climb", "descend", "desc", "clb", "dsc",
       "squawk", "sq", "code", "xpdr", "transponder" },
-    joins = { "and", "," } },
+    joins = { "and", "," },
+    -- (the labels and unit of a rate: a bare number straight after its value is no level, G.terse_altitude)
+    rate = { "vs", "roc", "rod", "fpm" } },
   -- the letters of an experiment's ids typed glued to their figures as a label before a colon ("t2:", "sess4:"),
   -- beside lexicon.aside.study_labels ("exp1:", "run3:"); any other letters make such a label only before an
   -- aircraft that flies (G.id_label)

@@ -10921,3 +10921,21 @@ do
   check_eq(ex("sva31 descend at 1500 fpm then climb FL250"), "VS SVA31 -1500 ; ALT SVA31 FL250")
   check_eq(ex("sva31 vs 1500 down"), "VS SVA31 -1500")
 end
+
+-- Cycle 48 (hz57): a number with no unit said straight after a rate (a comma or "and" between at most) is a level or
+-- a speed said bare: asked, in digits, in words, after a metric rate and in a terse typed list; with its unit, or
+-- after "to", it is read
+do
+  local _, ex = scene({ "CRE SVA31 A320 24.7 46.7 250 FL310 270" })
+  asked(ex("sva31 descend at 1800 fpm 240"), "a bare number after a rate")
+  asked(ex("descend at 1800 fpm, 240"), "a bare number after a rate and a comma")
+  asked(ex("sva31 descend at two thousand feet per minute seven thousand"), "a bare level in words after a rate")
+  asked(ex("sva31 descend at eight metres per second 7000"), "a bare number after a metric rate")
+  asked(ex("sva31 vs -1800 7000 hdg 200"), "a terse list's bare number after the rate")
+  asked(ex("sva31 1800 fpm 7000"), "a bare number after a rate with no verb")
+  check_eq(ex("sva31 descend at 1800 fpm 240 knots"), "VS SVA31 -1800 ; SPD SVA31 240")
+  check_eq(ex("sva31 descend at 1800 fpm to 240"), "ALT SVA31 FL240 1800")
+  check_eq(ex("sva31 descend at two thousand feet per minute to seven thousand"), "ALT SVA31 7000 2000")
+  check_eq(ex("sva31 descend at eight metres per second to 7000 feet"), "ALT SVA31 7000 1575")
+  check_eq(ex("sva31 7000 hdg 200 vs -1800"), "ALT SVA31 7000 ; HDG SVA31 200 ; VS SVA31 -1800")
+end
