@@ -1518,7 +1518,7 @@ local CM_SUBJECTS, CM_OWN, CM_LEADS, CM_LABELS = set_of(COMMENTARY.subjects), se
 local CM_BLOCKS, CM_DETERMINERS = set_of(COMMENTARY.blocks), set_of(COMMENTARY.determiners)
 local CM_WHILE, CM_LATER, CM_LEAD_CONTEXT = set_of(COMMENTARY.while_words), set_of(COMMENTARY.later),
   set_of(COMMENTARY.lead_context)
-COMMENTARY.reason_set = set_of(COMMENTARY.reasons)
+COMMENTARY.reason_set, COMMENTARY.study_set = set_of(COMMENTARY.reasons), set_of(COMMENTARY.study_labels)
 COMMENTARY.restate_set, COMMENTARY.intention_set = set_of(COMMENTARY.restate_verbs), set_of(COMMENTARY.intention)
 COMMENTARY.restated_sets = {}
 for intent, nouns in pairs(COMMENTARY.restated) do COMMENTARY.restated_sets[intent] = set_of(nouns) end
@@ -1552,6 +1552,14 @@ end
 -- condition unless it opens with commentary.own. (`lead`: a lead-in before a colon, "same" in it aside: "To
 -- create a same-level encounter:"; `places`: a place named is the remark's, an airport code that is an airline's
 -- too, "- he's inbound to FRA")
+-- True when quantity q is a whole number said straight after a word of a study's label (lexicon.aside.study_labels:
+-- "- test flight profile step 2", "- run 3"): the label's identifier, no value (`remark`: only inside a remark set
+-- apart, G:in_reason).
+function G:label_number(q, remark)
+  return q.kind == "plain" and not q.number.decimal and self:word(q.b - 1, COMMENTARY.study_set)
+    and (not remark or self:in_reason(q.b))
+end
+
 function G:commentary(b, e, lead, record, places)
   if b >= e or self:has_ref(b, b + 1, "aircraft") then return false end
   for _, q in ipairs(self:quantities(b, e)) do
@@ -1560,7 +1568,7 @@ function G:commentary(b, e, lead, record, places)
       and self.t[q.b - 1].kind == "word" and not self.t[q.b - 1].number_word
     -- (`record`: a time after a word of lexicon.record_past is the record's, ", as the controller did at 10:42:15")
     local recorded = record and q.kind == "time" and self:word_in(b, q.b, "@record_past")
-    if not (pronoun or recorded) then return false end
+    if not (pronoun or recorded or self:label_number(q)) then return false end
   end
   for _, r in ipairs(places and {} or self:refs_in(b, e, "waypoint")) do
     if not self:word(r.b, "@not_names") then return false end
@@ -4614,11 +4622,20 @@ end
 -- the grammar reads a spoken value: x100 (a level "three five zero"), x1000
 -- ("maintain niner"), x10 ("speed two five"), 200 + ("to niner zero"),
 -- headings modulo 360 (a heading said with its word only so, a time as said).
-local function value_carried(q, nums)
-  local v = q.value
+-- `again`: q is no value a command read, only said again beside it: it carries the value only as a level says it
+-- alone ("FL300, three zero zero", "nine thousand feet, niner": x100 for a number of three figures, x1000 for one
+-- spoken under 100), never rescaled otherwise ("FL300 3000", "heading 120 twelve", "speed 250, 25" differ).
+local function value_carried(q, nums, again)
+  local v, said = q.value, q.number
+  local again_as = { v }
+  if again and q.kind == "plain" and said and not said.hundred then
+    if v >= 100 and v < 1000 then again_as[2] = v * 100 end
+    if v < 100 and not said.typed then again_as[2] = v * 1000 end
+  end
   for _, n in ipairs(nums) do
     -- (a heading said with its word, or a time, is read as said: "heading 100" is never the 300 of FL300)
-    local said_as = (q.kind == "heading" or q.kind == "time") and { v } or { v, v * 100, v * 1000, v * 10, v + 200 }
+    local said_as = (q.kind == "heading" or q.kind == "time") and { v } or again and again_as
+      or { v, v * 100, v * 1000, v * 10, v + 200 }
     for _, c in ipairs(said_as) do
       if math.abs(c - n) <= math.max(0.5, 1e-6 * math.abs(n)) then return true end
     end
@@ -4711,7 +4728,7 @@ function G:unexplained(s, n_before)
     if not self.taken[q.b] and not SELF_READ[q.kind] and not relative and not q.by and q.turn == 0
         and q.b > corrected
         and ((opened and q.b > opened) or own_unit(q) or self:word(q.b - 1, "@clause_verbs") or before_verb)
-        and not value_carried(q, nums) then
+        and not value_carried(q, nums, true) and not self:label_number(q, true) then
       self.leftover = self:raw((callsign and not before_verb) and callsign.b or q.b, q.e)
       return
     end
@@ -4907,7 +4924,8 @@ function G:uncarried()
           or (q.value >= 10 and (q.b > first or said_for_aircraft(q))))))
         and not self.taken[q.b]
         and not ((q.by or relative) and not position(q)) and q.b > corrected
-        and not (value_carried(q, q.kind == "time" and times or nums) and not said_again(q)) then
+        and not (value_carried(q, q.kind == "time" and times or nums, true) and not said_again(q))
+        and not self:label_number(q, true) then
       self.leftover = self:raw(at or (self:at_clause(q) and q.b - 1) or q.b, q.e)
       return
     end

@@ -808,7 +808,8 @@ return {
           -- capitals or with digits), and nothing else up to the full stop or colon
           study_labels = { "exp", "expt", "experiment", "run", "trial", "session", "block", "condition", "cond",
                            "scenario", "scen", "case", "batch", "series", "phase", "episode", "test", "config",
-                           "participant", "subject", "iteration", "rep", "replication", "day", "serial" } },
+                           "participant", "subject", "iteration", "rep", "replication", "day", "serial", "step",
+                           "part" } },
   -- a clearance quoted whole in double quotes ('the transcript reads "KLM12, turn left heading 230"; replay it'):
   -- the words outside the quotes name it to be given again with one of `frames` and hold none of `not_frames`
   -- (text for the log, a negation, a correction or a condition), no value but a callsign or a time of day and no

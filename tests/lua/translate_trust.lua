@@ -10939,3 +10939,23 @@ do
   check_eq(ex("sva31 descend at eight metres per second to 7000 feet"), "ALT SVA31 7000 1575")
   check_eq(ex("sva31 7000 hdg 200 vs -1800"), "ALT SVA31 7000 ; HDG SVA31 200 ; VS SVA31 -1800")
 end
+
+-- Cycle 48 (hz57): a second number said beside a complete instruction restates its value only when, said alone, it
+-- gives that value ("FL300, three zero zero", "heading 090, 90", "9000 feet, niner"); one that differs in size or
+-- form ("climb FL300 3000", "heading 120 twelve", "speed 250 25") is asked, never taken as the same. A study's
+-- label with its number in a remark after a dash ("- run 3") is no value
+do
+  local _, ex = scene({ "CRE SVA31 A320 24.7 46.7 250 FL210 270" })
+  check_eq(ex("sva31 climb FL300 3000"), "ASK I have ALT SVA31 FL300. What does '3000' mean?")
+  check_eq(ex("sva31 heading 120 twelve"), "ASK I have HDG SVA31 120. What does 'twelve' mean?")
+  asked(ex("sva31 speed 250 twenty five"), "a speed said again a tenth of its size")
+  asked(ex("sva31 climb FL300 30"), "a typed 30 after FL300")
+  asked(ex("sva31 descend FL150 1500"), "a tenth of the level after it")
+  check_eq(ex("sva31 climb FL300 three zero zero"), "ALT SVA31 FL300")
+  check_eq(ex("sva31 climb FL300 thirty thousand"), "ALT SVA31 FL300")
+  check_eq(ex("sva31 heading 090 90"), "HDG SVA31 90")
+  check_eq(ex("sva31 descend 9000 feet niner"), "ALT SVA31 9000")
+  check_eq(ex("sva31 climb FL300 - test profile step 2"), "ALT SVA31 FL300")
+  check_eq(ex("sva31 climb FL300 - run 3"), "ALT SVA31 FL300")
+  asked(ex("sva31 climb FL300, step 3"), "a step's number with no remark set apart")
+end
