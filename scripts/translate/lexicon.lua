@@ -423,7 +423,9 @@ return {
         -- (words one letter from "trail": "trial 3")
         "trial", "trials", "train", "trait",
         -- (a controller position named in a hand-off: "contact director 118.82")
-        "director", },
+        "director",
+        -- (the opposite of "minimum", two letters from it: "at maximum rate")
+        "maximum", },
   },
   -- instruction words of three letters or more that a typing slip one edit from them is read as, beside
   -- spelling.targets (translate/typos.lua: only in a request asked about, every reading of the slip tried), and

@@ -10959,3 +10959,9 @@ do
   check_eq(ex("sva31 climb FL300 - run 3"), "ALT SVA31 FL300")
   asked(ex("sva31 climb FL300, step 3"), "a step's number with no remark set apart")
 end
+
+-- Cycle 48 (hz57): "maximum" is kept as typed, never read as "minimum" (two letters from it)
+do
+  local _, ex = scene({ "CRE SVA31 A320 24.7 46.7 250 FL210 270" })
+  check_eq(ex("sva31 descend FL150 at maximum rate"), "ALT SVA31 FL150")
+end
