@@ -6917,8 +6917,9 @@ end
 -- "good rate"): a word of lexicon.rate_manner straight before it (an article, then "at" or "with", before that
 -- belong to it), "of" and a climb's or a descent's word after it, and no rate's value straight after (G:rate_value:
 -- "at a good rate of 2000 fpm" says the rate; "at a good rate to 9000 feet" a level). Returns its first position,
--- one past its end, true when it wants a gentler rate than the aircraft's own (rate_manner.asked), and the
--- altitude with its unit said straight after it, a level or the rate ("at a good rate 9000 feet"), or nil.
+-- one past its end, true when it wants a gentler rate than the aircraft's own (rate_manner.asked), and the value
+-- with no rate's unit said straight after it, a level or the rate ("at a good rate 9000 feet", "... rate 2000"), or
+-- nil.
 G.rate_manners = { flown = set_of(lexicon.rate_manner.flown), asked = set_of(lexicon.rate_manner.asked) }
 G.motion = { up = set_of(lexicon.vertical_motion.up), down = set_of(lexicon.vertical_motion.down) }
 function G:rate_manner(i)
@@ -6927,13 +6928,13 @@ function G:rate_manner(i)
   local e = i + 1
   if self:word(e, "of") and (self:word(e + 1, G.motion.up) or self:word(e + 1, G.motion.down)) then e = e + 2 end
   local v = self:skip_fillers(self:word(e, "of at to") and e + 1 or e)
-  local q = self:quantities(e, v + 1)[1]
-  local unit_after = q and q.b == e and q.kind == "alt" and self:word(q.e - 1, "@feet @metres") and q or nil
-  if q and q.b <= v and self:rate_value(i, q) and not unit_after then return nil end
+  local q = self:quantities(e, #self.t + 1)[1]
+  local doubt = q and q.b == e and q.kind ~= "vs" and not q.fl and q or nil
+  if q and q.b <= v and self:rate_value(i, q) and not doubt then return nil end
   local b = i - 1
   if self:word(b - 1, "a an your its their the") then b = b - 1 end
   if self:word(b - 1, "at with") then b = b - 1 end
-  return b, e, manners.asked[w] == true, unit_after
+  return b, e, manners.asked[w] == true, doubt
 end
 
 -- True when the word before token i is one of `subjects` ("already", "has", "had", "was", "were", "just" and
@@ -7035,10 +7036,10 @@ function G:not_simulated()
     if class then
       local e, comma, level_at = i + 1, false, nil
       if class.rate_manner then
-        local b, rate_e, gentler, unit_after = self:rate_manner(i)
-        if unit_after then
+        local b, rate_e, gentler, doubt = self:rate_manner(i)
+        if doubt then
           self:need(string.format("Is '%s' the level to fly or the rate, in feet per minute? I heard '%s' before it.",
-            self:raw(unit_after.b, unit_after.e), self:raw(b, rate_e)))
+            self:raw(doubt.b, doubt.e), self:raw(b, rate_e)))
           break
         elseif gentler then
           self:need(string.format("What vertical speed should it fly, in feet per minute? '%s' names none, and squawk "

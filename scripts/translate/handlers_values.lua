@@ -954,11 +954,11 @@ return function(H, f, wrap, compass)
 
   -- True when quantity q is said as the value of the rate named at token k (its word, "rate", "vs", "vertical
   -- speed", or the instruction's): a value with a rate's unit (ft/min, m/s) wherever it stands; a number after k,
-  -- unless it is an altitude with its unit (feet, metres) after "to", a level flown to ("rate of descent to 9000
-  -- feet"; "increase your rate to two thousand five hundred" is the rate).
+  -- unless it is a flight level or an altitude with its unit (feet, metres) after "to", a level flown to ("rate of
+  -- descent to 9000 feet"; "increase your rate to two thousand five hundred" is the rate).
   function m:rate_value(k, q)
-    return q.kind == "vs" or (q.b > k and not (q.kind == "alt" and self:word(q.b - 1, "to")
-      and (q.fl or self:word(q.e - 1, "@feet @metres"))))
+    return q.kind == "vs" or (q.b > k and not q.fl and not (q.kind == "alt" and self:word(q.b - 1, "to")
+      and self:word(q.e - 1, "@feet @metres")))
   end
 
   -- The level a vertical speed flies to, said after its quantity v with "to" or "target" before it and only

@@ -10901,6 +10901,9 @@ do
   check_eq(ex("sva31 increase your rate of descent to two thousand five hundred"), "VS SVA31 -2500")
   asked(ex("sva31 descend FL150 at a slow rate"), "a gentler rate, none said")
   asked(ex("sva31 descend at a good rate 9000 feet"), "a level or the rate after a manner")
+  asked(ex("sva31 descend at a good rate two thousand"), "a bare number in words after a manner")
+  check_eq(ex("sva31 descend at a good rate of 2000"), "VS SVA31 -2000")
+  check_eq(ex("sva31 descend at a good rate FL150"), "ALT SVA31 FL150")
   asked(ex("sva31 rate of descent to 9000 feet"), "a level after 'to', no rate")
 end
 
