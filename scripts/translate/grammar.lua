@@ -4804,17 +4804,20 @@ end
 -- 250", "speed 210 then 7000"), is the one value that the instructions said leave it able to be: an altitude in
 -- feet (whole hundreds, 1000 to 45000: no heading, speed or flight level is so large) when no level was given,
 -- a speed (100 to 400 kt) when a level and a direct-to or heading were given and no speed. Any other such
--- number stays a leftover, asked about. (Another leftover said first stands: nothing is read then.)
+-- number stays a leftover, asked about, and so does one said straight after a rate ("vs 1500, 8000", "rate of
+-- climb 1500 then 2000": a level or another rate?). (Another leftover said first stands: nothing is read then.)
 G.list_commands = { ALT = true, SPD = true, HDG = true, DIRECT = true, ADDWPT = true, VS = true }
 function G:list_value()
   local LIST_COMMANDS = G.list_commands
   if self.leftover and not self.leftover:match("^%d+$") then return end
   local id
-  local said = {}
+  local said, rates = {}, {}  -- (rates[v]: a vertical speed of v ft/min issued, either way)
   for _, line in ipairs(self.out) do
     local cmd, acid = line:match("^(%u+) (%S+)")
     if not (acid and LIST_COMMANDS[cmd]) or (id and acid ~= id) then return end
     id, said[cmd] = acid, true
+    local rate = line:match("^VS %S+ (%-?%d+)$") or line:match("^ALT %S+ %S+ (%-?%d+)$")
+    if rate then rates[math.abs(tonumber(rate))] = true end
   end
   if not id then return end
   for _, q in ipairs(self:quantities(1, #self.t + 1)) do
@@ -4823,6 +4826,9 @@ function G:list_value()
         and (not self.leftover or self.leftover == self:raw(q.b, q.e))
         and before and (before.text == "," or self:word(q.b - 1, "then"))
         and (not after or after.kind == "punct") and self:has_ref(1, q.b, "aircraft") then
+      local p = self:quantities(1, q.b)
+      p = p[#p]
+      if p and (p.kind == "vs" or (self.taken[p.b] and rates[math.abs(p.value)])) then return end
       local line
       if not said.ALT and q.value >= 1000 and q.value <= 45000 and q.value % 100 == 0 then
         line = string.format("ALT %s %d", id, q.value)
