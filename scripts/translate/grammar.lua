@@ -181,7 +181,7 @@ local function know_all(v, seen)
   -- in the addressing position, lexicon.label_roles and lexicon.bare_labels only a speaker's label; lexicon.city_airports are places,
   -- accounted for only where one is read; lexicon.readback_heard is dropped with its values only, and
   -- lexicon.nationless_registrations are letters of a registration; lexicon.typed_abbreviations are read as
-  -- their words only where those fit; lexicon.manner, deadline_places and held_value only where their reading
+  -- their words only where those fit; lexicon.manner, rate_manner, deadline_places and held_value only where their reading
   -- holds; lexicon.dictated_punctuation is the marks it names; lexicon.said_whole is read as its English: they
   -- account for no word; lexicon.heard_as's words are read only where their neighbours fit, becoming the word
   -- they mean, so a heard form left as it was ("vire a la izquierda": no neighbour fits) is no word squawk knows;
@@ -194,7 +194,7 @@ local function know_all(v, seen)
       or v == lexicon.aside or v == lexicon.self_correction.just_the or v == lexicon.foreign_digits or v == lexicon.foreign_hesitation_digits
       or v == lexicon.atc_units or v == lexicon.city_airports or v == lexicon.label_roles or v == lexicon.bare_labels
       or v == lexicon.addressed_roles or v == lexicon.readback_heard or v == lexicon.nationless_registrations
-      or v == lexicon.manner or v == lexicon.deadline_places or v == lexicon.held_value
+      or v == lexicon.manner or v == lexicon.rate_manner or v == lexicon.deadline_places or v == lexicon.held_value
       or v == lexicon.dictated_punctuation or v == lexicon.acknowledged or v == lexicon.said_whole or v == lexicon.heard_as
       or v == lexicon.name_particles or v == lexicon.digit_homophones or v == lexicon.asides_alone
       or v == lexicon.kept_as_is or v == lexicon.id_labels or v == lexicon.terse_list
@@ -1530,7 +1530,7 @@ local CM_SUBJECTS, CM_OWN, CM_LEADS, CM_LABELS = set_of(COMMENTARY.subjects), se
 local CM_BLOCKS, CM_DETERMINERS = set_of(COMMENTARY.blocks), set_of(COMMENTARY.determiners)
 local CM_WHILE, CM_LATER, CM_LEAD_CONTEXT = set_of(COMMENTARY.while_words), set_of(COMMENTARY.later),
   set_of(COMMENTARY.lead_context)
-COMMENTARY.reason_set = set_of(COMMENTARY.reasons)
+COMMENTARY.reason_set, COMMENTARY.study_set = set_of(COMMENTARY.reasons), set_of(COMMENTARY.study_labels)
 COMMENTARY.restate_set, COMMENTARY.intention_set = set_of(COMMENTARY.restate_verbs), set_of(COMMENTARY.intention)
 COMMENTARY.restated_sets = {}
 for intent, nouns in pairs(COMMENTARY.restated) do COMMENTARY.restated_sets[intent] = set_of(nouns) end
@@ -1564,6 +1564,14 @@ end
 -- condition unless it opens with commentary.own. (`lead`: a lead-in before a colon, "same" in it aside: "To
 -- create a same-level encounter:"; `places`: a place named is the remark's, an airport code that is an airline's
 -- too, "- he's inbound to FRA")
+-- True when quantity q is a whole number said straight after a word of a study's label (lexicon.aside.study_labels:
+-- "- test flight profile step 2", "- run 3"): the label's identifier, no value (`remark`: only inside a remark set
+-- apart, G:in_reason).
+function G:label_number(q, remark)
+  return q.kind == "plain" and not q.number.decimal and self:word(q.b - 1, COMMENTARY.study_set)
+    and (not remark or self:in_reason(q.b))
+end
+
 function G:commentary(b, e, lead, record, places)
   if b >= e or self:has_ref(b, b + 1, "aircraft") then return false end
   for _, q in ipairs(self:quantities(b, e)) do
@@ -1572,7 +1580,7 @@ function G:commentary(b, e, lead, record, places)
       and self.t[q.b - 1].kind == "word" and not self.t[q.b - 1].number_word
     -- (`record`: a time after a word of lexicon.record_past is the record's, ", as the controller did at 10:42:15")
     local recorded = record and q.kind == "time" and self:word_in(b, q.b, "@record_past")
-    if not (pronoun or recorded) then return false end
+    if not (pronoun or recorded or self:label_number(q)) then return false end
   end
   for _, r in ipairs(places and {} or self:refs_in(b, e, "waypoint")) do
     if not self:word(r.b, "@not_names") then return false end
@@ -4754,11 +4762,20 @@ end
 -- the grammar reads a spoken value: x100 (a level "three five zero"), x1000
 -- ("maintain niner"), x10 ("speed two five"), 200 + ("to niner zero"),
 -- headings modulo 360 (a heading said with its word only so, a time as said).
-local function value_carried(q, nums)
-  local v = q.value
+-- `again`: q is no value a command read, only said again beside it: it carries the value only as a level says it
+-- alone ("FL300, three zero zero", "nine thousand feet, niner": x100 for a number of three figures, x1000 for one
+-- spoken under 100), never rescaled otherwise ("FL300 3000", "heading 120 twelve", "speed 250, 25" differ).
+local function value_carried(q, nums, again)
+  local v, said = q.value, q.number
+  local again_as = { v }
+  if again and q.kind == "plain" and said and not said.hundred then
+    if v >= 100 and v < 1000 then again_as[2] = v * 100 end
+    if v < 100 and not said.typed then again_as[2] = v * 1000 end
+  end
   for _, n in ipairs(nums) do
     -- (a heading said with its word, or a time, is read as said: "heading 100" is never the 300 of FL300)
-    local said_as = (q.kind == "heading" or q.kind == "time") and { v } or { v, v * 100, v * 1000, v * 10, v + 200 }
+    local said_as = (q.kind == "heading" or q.kind == "time") and { v } or again and again_as
+      or { v, v * 100, v * 1000, v * 10, v + 200 }
     for _, c in ipairs(said_as) do
       if math.abs(c - n) <= math.max(0.5, 1e-6 * math.abs(n)) then return true end
     end
@@ -4825,10 +4842,10 @@ function G:unexplained(s, n_before)
   local corrected = 0
   for i = s.b, self:said("@correction") and s.e - 1 or 0 do if self:word(i, "@correction") then corrected = i end end
   local relative = self:word_in(s.b, s.e, "@relative @same_as @below @above")
-  -- with no instruction word the first value with a unit is the instruction ("ezy45 fl120 7")
+  -- with no instruction word the first value with a unit is the instruction ("ezy45 fl120 7", "klm12 1500 fpm 9000")
   local opened = s.intent ~= "infer" and s.trig or nil
   for _, q in ipairs(self:quantities(s.b, s.e)) do
-    if not opened and own_unit(q) then opened = q.b end
+    if not opened and (own_unit(q) or q.kind == "vs") then opened = q.b end
   end
   for _, q in ipairs(self:quantities(s.b, s.e)) do
     -- the aircraft said straight before the value, if any
@@ -4851,7 +4868,7 @@ function G:unexplained(s, n_before)
     if not self.taken[q.b] and not SELF_READ[q.kind] and not relative and not q.by and q.turn == 0
         and q.b > corrected
         and ((opened and q.b > opened) or own_unit(q) or self:word(q.b - 1, "@clause_verbs") or before_verb)
-        and not value_carried(q, nums) then
+        and not value_carried(q, nums, true) and not self:label_number(q, true) then
       self.leftover = self:raw((callsign and not before_verb) and callsign.b or q.b, q.e)
       return
     end
@@ -4927,17 +4944,20 @@ end
 -- 250", "speed 210 then 7000"), is the one value that the instructions said leave it able to be: an altitude in
 -- feet (whole hundreds, 1000 to 45000: no heading, speed or flight level is so large) when no level was given,
 -- a speed (100 to 400 kt) when a level and a direct-to or heading were given and no speed. Any other such
--- number stays a leftover, asked about. (Another leftover said first stands: nothing is read then.)
+-- number stays a leftover, asked about, and so does one said straight after a rate ("vs 1500, 8000", "rate of
+-- climb 1500 then 2000": a level or another rate?). (Another leftover said first stands: nothing is read then.)
 G.list_commands = { ALT = true, SPD = true, HDG = true, DIRECT = true, ADDWPT = true, VS = true }
 function G:list_value()
   local LIST_COMMANDS = G.list_commands
   if self.leftover and not self.leftover:match("^%d+$") then return end
   local id
-  local said = {}
+  local said, rates = {}, {}  -- (rates[v]: a vertical speed of v ft/min issued, either way)
   for _, line in ipairs(self.out) do
     local cmd, acid = line:match("^(%u+) (%S+)")
     if not (acid and LIST_COMMANDS[cmd]) or (id and acid ~= id) then return end
     id, said[cmd] = acid, true
+    local rate = line:match("^VS %S+ (%-?%d+)$") or line:match("^ALT %S+ %S+ (%-?%d+)$")
+    if rate then rates[math.abs(tonumber(rate))] = true end
   end
   if not id then return end
   for _, q in ipairs(self:quantities(1, #self.t + 1)) do
@@ -4946,6 +4966,9 @@ function G:list_value()
         and (not self.leftover or self.leftover == self:raw(q.b, q.e))
         and before and (before.text == "," or self:word(q.b - 1, "then"))
         and (not after or after.kind == "punct") and self:has_ref(1, q.b, "aircraft") then
+      local p = self:quantities(1, q.b)
+      p = p[#p]
+      if p and (p.kind == "vs" or (self.taken[p.b] and rates[math.abs(p.value)])) then return end
       local line
       if not said.ALT and q.value >= 1000 and q.value <= 45000 and q.value % 100 == 0 then
         line = string.format("ALT %s %d", id, q.value)
@@ -5063,7 +5086,8 @@ function G:uncarried()
           or (q.value >= 10 and (q.b > first or said_for_aircraft(q))))))
         and not self.taken[q.b]
         and not ((q.by or (relative and not bound)) and not position(q)) and q.b > corrected
-        and not (value_carried(q, q.kind == "time" and times or nums) and not said_again(q)) then
+        and not (value_carried(q, q.kind == "time" and times or nums, true) and not said_again(q))
+        and not self:label_number(q, true) then
       self.leftover = self:raw(at or (self:at_clause(q) and q.b - 1) or q.b, q.e)
       return
     end
@@ -7124,6 +7148,30 @@ function G:said_as_manner(i)
     or (q ~= nil and q.b == n)
 end
 
+-- The phrase that says a rate as a manner, its word "rate" at i ("at a good rate", "with your best rate of climb",
+-- "good rate"): a word of lexicon.rate_manner straight before it (an article, then "at" or "with", before that
+-- belong to it), "of" and a climb's or a descent's word after it, and no rate's value straight after (G:rate_value:
+-- "at a good rate of 2000 fpm" says the rate; "at a good rate to 9000 feet" a level). Returns its first position,
+-- one past its end, true when it wants a gentler rate than the aircraft's own (rate_manner.asked), and the value
+-- with no rate's unit said straight after it, a level or the rate ("at a good rate 9000 feet", "... rate 2000"), or
+-- nil.
+G.rate_manners = { flown = set_of(lexicon.rate_manner.flown), asked = set_of(lexicon.rate_manner.asked) }
+G.motion = { up = set_of(lexicon.vertical_motion.up), down = set_of(lexicon.vertical_motion.down) }
+function G:rate_manner(i)
+  local w, manners = self.words[i - 1], G.rate_manners
+  if not (w and (manners.flown[w] or manners.asked[w])) then return nil end
+  local e = i + 1
+  if self:word(e, "of") and (self:word(e + 1, G.motion.up) or self:word(e + 1, G.motion.down)) then e = e + 2 end
+  local v = self:skip_fillers(self:word(e, "of at to") and e + 1 or e)
+  local q = self:quantities(e, #self.t + 1)[1]
+  local doubt = q and q.b == e and q.kind ~= "vs" and not q.fl and q or nil
+  if q and q.b <= v and self:rate_value(i, q) and not doubt then return nil end
+  local b = i - 1
+  if self:word(b - 1, "a an your its their the") then b = b - 1 end
+  if self:word(b - 1, "at with") then b = b - 1 end
+  return b, e, manners.asked[w] == true, doubt
+end
+
 -- True when the word before token i is one of `subjects` ("already", "has", "had", "was", "were", "just" and
 -- fillers between them skipped: "the student has just cleared").
 function G:said_after_subject(i, subjects)
@@ -7224,7 +7272,8 @@ function G:not_simulated()
             and not (c.no_value and self:value_next(i))
             and not (c.no_number_after and self.t[i + 2] and self.t[i + 2].kind == "number")
             and not (c.not_after and self:word(i - 1, c.not_after)) and not self:word(i + 1, "not")
-            and (not c.bare or self:said_bare(i)) and (not c.manner or self:said_as_manner(i)) then
+            and (not c.bare or self:said_bare(i)) and (not c.manner or self:said_as_manner(i))
+            and (not c.rate_manner or self:rate_manner(i)) then
           local expected = c.not_aircraft_to and self:aircraft_then_to(i + 1)
           if c.routed and self:limit_off_route(i, c.window) then break end
           if expected then
@@ -7239,7 +7288,20 @@ function G:not_simulated()
     end
     if class then
       local e, comma, level_at = i + 1, false, nil
-      while e <= #self.t and not class.manner do
+      if class.rate_manner then
+        local b, rate_e, gentler, doubt = self:rate_manner(i)
+        if doubt then
+          self:need(string.format("Is '%s' the level to fly or the rate, in feet per minute? I heard '%s' before it.",
+            self:raw(doubt.b, doubt.e), self:raw(b, rate_e)))
+          break
+        elseif gentler then
+          self:need(string.format("What vertical speed should it fly, in feet per minute? '%s' names none, and squawk "
+            .. "flies the aircraft's own rate.", self:raw(b, rate_e)))
+          break
+        end
+        i, e = b, rate_e
+      end
+      while e <= #self.t and not class.manner and not class.rate_manner do
         local x = self.t[e]
         comma = comma or (x.kind == "punct" and x.text == ",")
         -- (a comma goes on: "hold at BAKUR, left hand pattern, inbound track 270" is one clearance)
@@ -8536,9 +8598,10 @@ end
 -- "hop7 6000 hdg 220 230kt": in a terse typed list, an aircraft that flies then only values, each labelled
 -- (lexicon.terse_list) but one, that one a bare number of four or five figures in hundreds of feet (1000 to
 -- 60000), with no level, altitude word or transponder code said: that number is the level, written "6000ft".
--- Any other word, a second bare number or none labelled leaves the text as it is (the number is asked about).
+-- Any other word, a second bare number, one straight after a rate's value ("vs 1500 9000") or none labelled leaves
+-- the text as it is (the number is asked about).
 G.terse_list = { labels = set_of(lexicon.terse_list.labels), units = set_of(lexicon.terse_list.units),
-  level = set_of(lexicon.terse_list.level), joins = set_of(lexicon.terse_list.joins) }
+  level = set_of(lexicon.terse_list.level), joins = set_of(lexicon.terse_list.joins), rate = set_of(lexicon.terse_list.rate) }
 function G.terse_altitude(text, world)
   if not text:find("%d%d%d%d") then return text end
   -- (the first word names an aircraft flying)
@@ -8558,7 +8621,8 @@ function G.terse_altitude(text, world)
       if L.units[toks[k + 1] or ""] or L.labels[toks[k - 1]] then
         labelled = labelled + 1
       elseif bare or not figures:match("^%d%d%d%d%d?$") or tonumber(figures) % 100 ~= 0
-          or tonumber(figures) < 1000 or tonumber(figures) > 60000 then
+          or tonumber(figures) < 1000 or tonumber(figures) > 60000 or L.rate[toks[k - 1]]
+          or (toks[k - 1]:match("%d") and (L.rate[toks[k - 2] or ""] or toks[k - 1]:match("fpm$"))) then
         return text
       else
         bare = figures

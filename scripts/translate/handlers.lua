@@ -85,16 +85,20 @@ end
 -- first: "the Shuttle is a bit slow, could you speed it up by 40 knots" is up.
 -- (a word inside a callsign is no direction: "Ryanair 3UP descend FL90" descends; nor is the object of a
 -- verb of lexicon.halted, "stop its climb and descend with 500 feet per minute" descends)
+-- True when the word at i is one of `list` said as a way to move: not inside one of `names` (aircraft references)
+-- and not the object of a verb of lexicon.halted.
+function m:motion_said(i, list, names)
+  if not self:word(i, list) then return false end
+  for _, r in ipairs(names) do
+    if i >= r.b and i < r.e then return false end
+  end
+  local v = self:word(i - 1, "its the his her their your") and i - 2 or i - 1
+  return not self:word(v, "@halted")
+end
+
 function m:direction(s)
   local names = self:refs_in(s.b, s.e, "aircraft")
-  local function said(i, list)
-    if not self:word(i, list) then return false end
-    for _, r in ipairs(names) do
-      if i >= r.b and i < r.e then return false end
-    end
-    local v = self:word(i - 1, "its the his her their your") and i - 2 or i - 1
-    return not self:word(v, "@halted")
-  end
+  local function said(i, list) return self:motion_said(i, list, names) end
   -- a direction said after a correction replaces the one before it ("climb FL260, correction, descend FL220")
   for i = self:said("@correction") and s.e - 1 or 0, s.b, -1 do
     if self:word(i, "@correction") then
@@ -113,6 +117,32 @@ function m:direction(s)
     end
   end
   return 0
+end
+
+-- A climb's and a descent's words (lexicon.vertical_motion) both said in [b, e) with no correction between ("climb
+-- KLM12 descend at 2000 fpm", "climb rate of descent 1500"): the positions of the first of each, in the order said;
+-- else nil. After the last value only a rate's sign said straight after it counts ("descend vertical speed 1500
+-- climbing", "climb vs 2000 down"); a verb after a level ("climb FL300 descend") is a word left over, asked by the
+-- accounting. Words noted as not simulated ("expect descent"), in a reason or of a motion stopped ("stop descent,
+-- climb FL250") move nothing.
+function m:opposite_motions(b, e)
+  local names, up, down = self:refs_in(b, e, "aircraft"), nil, nil
+  local qs = self:quantities(b, e)
+  local last = qs[#qs]
+  for i = b, e - 1 do
+    if self:word(i, "@correction") then up, down = nil, nil end
+    local after = last ~= nil and i >= last.e
+    local sign = after and i == last.e and last.kind ~= "alt"
+    if not after or sign then
+      local u = self:motion_said(i, self.motion.up, names) or (sign and self:word(i, "up"))
+      local d = self:motion_said(i, self.motion.down, names) or (sign and self:word(i, "down"))
+      if (u or d) and not (self.u:used(i) or self.noted[i] or self:in_reason(i)) then
+        if u then up = up or i else down = down or i end
+      end
+    end
+  end
+  if up and down then return math.min(up, down), math.max(up, down) end
+  return nil
 end
 
 -- 1 on, 0 off, -1 not said.

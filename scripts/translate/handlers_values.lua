@@ -148,9 +148,21 @@ return function(H, f, wrap, compass)
     return q.value * 100
   end
 
+  -- "Climb or descend?" when both are said of one instruction in [b, e) for aircraft `id` (G:opposite_motions);
+  -- true when asked.
+  function m:motions_asked(b, e, id)
+    local up, down = self:opposite_motions(b, e)
+    if up then
+      self:need(string.format("Climb or descend? I heard '%s' and '%s' for %s, with no correction between.",
+        self.t[up].raw, self.t[down].raw, id))
+    end
+    return up ~= nil
+  end
+
   function m:altitude(s)
     local ids = self:acids(s)
     if #ids == 0 then return self:need("Which aircraft should change altitude? Please give its callsign.") end
+    if self:motions_asked(s.b, s.e, ids[1]) then return end
     local qs = self:quantities(s.b, s.e)
     local rate
     local with_unit, plain = {}, {}
@@ -191,10 +203,11 @@ return function(H, f, wrap, compass)
         end
       end
     end
-    -- "rate fifteen hundred": a plain number after "rate" is the vertical speed
+    -- "rate fifteen hundred": a plain number after "rate" is the vertical speed (a rate said as a manner, "at a
+    -- good rate", G:rate_manner, names none)
     local rate_word = self:find_word(s.b, s.e, "rate")
-    if not rate and rate_word < s.e then
-      rate = take_rate(function(q) return q.b > rate_word and not q.fl end)
+    if not rate and rate_word < s.e and not self.u:used(rate_word) then
+      rate = take_rate(function(q) return not q.fl and self:rate_value(rate_word, q) end)
     end
     -- "descend flight level one two zero at one thousand five hundred": a number with no unit straight after
     -- "at" after the level, in whole hundreds within lexicon.rate_after_level (ft/min; no level or speed of
@@ -249,6 +262,18 @@ return function(H, f, wrap, compass)
         self:take(metric(a) and a or b)
         self:explain(a.e, b.b)
         with_unit = { kept }
+      end
+    end
+    -- "descend at 2000 fpm 250", "... 2000 fpm, eight thousand": a number with no unit said straight after the rate
+    -- (a comma or "and" between at most) is a level or a speed said bare: asked, never flown ("to 250" is the level)
+    if rate then
+      local k = self:skip_fillers(rate.e)
+      while self.t[k] and (self.t[k].text == "," or self:word(k, "and")) do k = self:skip_fillers(k + 1) end
+      for _, q in ipairs(self:quantities(k, s.e)) do
+        if q.b == k and (q.kind == "plain" or (q.kind == "alt" and not q.fl and not self:word(q.e - 1, "@feet @metres"))) then
+          return self:need(string.format("Is '%s' after the rate (%s) a level or a speed? Please say a level with 'FL' "
+            .. "or feet, a speed with knots.", self:raw(q.b, q.e), self:raw(rate.b, rate.e)))
+        end
       end
     end
     local target = self:pick(self:corrected(#with_unit > 0 and with_unit or plain, with_unit, plain, s), s, "maintain")
@@ -860,7 +885,7 @@ return function(H, f, wrap, compass)
     if not id then return end
     local v = s.rate
     for _, q in ipairs(v and {} or self:quantities(s.b, s.e)) do
-      if q.kind == "vs" or (q.kind == "plain" and q.b > s.trig) or (q.kind == "alt" and not q.fl and q.b > s.trig) then
+      if (q.kind == "vs" or q.kind == "plain" or (q.kind == "alt" and not q.fl)) and self:rate_value(s.trig, q) then
         v = q
         break
       end
@@ -880,6 +905,14 @@ return function(H, f, wrap, compass)
     local cb, ce = s.b, s.e
     while cb > 1 and self.t[cb - 1].kind ~= "punct" do cb = cb - 1 end
     while ce <= #self.t and self.t[ce].kind ~= "punct" do ce = ce + 1 end
+    -- (both ways said in that clause are asked; one said after "then", before or after the rate, is another
+    -- instruction's: "climb FL300 then descend at 2000 fpm")
+    local mb, me = cb, s.trig
+    while me < ce and self.t[me].kind ~= "punct" and not self:word(me, "@then_words") do me = me + 1 end
+    for k = cb, s.trig - 1 do
+      if self:word(k, "@then_words") then mb = k + 1 end
+    end
+    if self:motions_asked(mb, me, id) then return end
     local down = self:word_in(cb, ce, "descent descend descending")
     local up = self:word_in(cb, ce, "climb climbing")
     local dir = (down and not up) and -1 or (up and not down) and 1 or self:direction(s)
@@ -933,6 +966,15 @@ return function(H, f, wrap, compass)
       self:take(level)
       self:emit("ALT " .. id .. " " .. f.alt(level.value, level.fl))
     end
+  end
+
+  -- True when quantity q is said as the value of the rate named at token k (its word, "rate", "vs", "vertical
+  -- speed", or the instruction's): a value with a rate's unit (ft/min, m/s) wherever it stands; a number after k,
+  -- unless it is a flight level or an altitude with its unit (feet, metres) after "to", a level flown to ("rate of
+  -- descent to 9000 feet"; "increase your rate to two thousand five hundred" is the rate).
+  function m:rate_value(k, q)
+    return q.kind == "vs" or (q.b > k and not q.fl and not (q.kind == "alt" and self:word(q.b - 1, "to")
+      and self:word(q.e - 1, "@feet @metres")))
   end
 
   -- The level a vertical speed flies to, said after its quantity v with "to" or "target" before it and only

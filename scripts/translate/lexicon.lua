@@ -423,7 +423,9 @@ return {
         -- (words one letter from "trail": "trial 3")
         "trial", "trials", "train", "trait",
         -- (a controller position named in a hand-off: "contact director 118.82")
-        "director", },
+        "director",
+        -- (the opposite of "minimum", two letters from it: "at maximum rate")
+        "maximum", },
   },
   -- instruction words of three letters or more that a typing slip one edit from them is read as, beside
   -- spelling.targets (translate/typos.lua: only in a request asked about, every reading of the slip tried), and
@@ -825,7 +827,8 @@ return {
           -- capitals or with digits), and nothing else up to the full stop or colon
           study_labels = { "exp", "expt", "experiment", "run", "trial", "session", "block", "condition", "cond",
                            "scenario", "scen", "case", "batch", "series", "phase", "episode", "test", "config",
-                           "participant", "subject", "iteration", "rep", "replication", "day", "serial" } },
+                           "participant", "subject", "iteration", "rep", "replication", "day", "serial", "step",
+                           "part" } },
   -- a clearance quoted whole in double quotes ('the transcript reads "KLM12, turn left heading 230"; replay it'):
   -- the words outside the quotes name it to be given again with one of `frames` and hold none of `not_frames`
   -- (text for the log, a negation, a correction or a condition), no value but a callsign or a time of day and no
@@ -866,6 +869,18 @@ return {
   -- rate being known (an inflection of a word squawk knows, "slowly", "steadily", is asked the same)
   manner = { "nice", "gentle", "gently", "smooth", "smoothly", "slowly", "gradually", "steadily", "carefully",
       "softly", "gingerly", "leisurely", "lazily", "comfortably", "easily" },
+  -- how fast a climb or descent is flown, said of its rate with no value after it ("at a good rate", "at your best
+  -- rate of descent", G:rate_manner): `flown` ones ask for no more than the aircraft's own rate, which squawk flies,
+  -- and are noted as "expedite" is; `asked` ones want a gentler rate than that, which no value says: asked. Their
+  -- words are accounted for only in that phrase
+  rate_manner = { flown = { "good", "high", "fast", "best", "maximum", "max", "expedited", "healthy",
+      "brisk", "quick", "rapid", "normal", "usual", "optimum", "optimal" },
+    asked = { "slow", "low", "reduced", "gentle", "moderate", "shallow", "easy", "comfortable", "minimum",
+      "lower", "slower", "smaller", "small" } },
+  -- the words of a climb or a descent, either way (G:opposite_motions: both said of one aircraft with no correction
+  -- between is asked); "up" and "down" only as a rate's sign, straight after its value ("vs 1000 down")
+  vertical_motion = { up = { "climb", "clb", "climbing", "climbs", "ascend", "ascending", "rise" },
+    down = { "descend", "desc", "descent", "descending", "descends", "sink" } },
   -- a delay with no number, said after an instruction ("climb FL300 in a minute"): asked (G:delay_left)
   vague_delays = { "minute", "moment", "bit", "sec", "second", "while" },
   -- a hedge said straight after a value, closing its clause ("descend fl300 maybe", "heading 240 I think"): the
@@ -1031,7 +1046,8 @@ return {
   -- after a comma opened by an imperative verb ("until 5 miles final, descend to 3000 feet") may follow it;
   -- `after_heading`: the phrase is one only after a heading value, with at most "to", "vectors" or a comma
   -- between them (G:after_heading); `bare`: the word is one only said alone in its clause (G:said_bare); `manner`:
-  -- one only said as an instruction's manner, the phrase its word alone (G:said_as_manner);
+  -- one only said as an instruction's manner, the phrase its word alone (G:said_as_manner); `rate_manner`: the
+  -- word is a rate's, said as a manner with no value (G:rate_manner), the phrase that manner;
   -- `no_value`: none with a value said straight after its word (G:value_next); `routed`: a place it names off
   -- the route of the one aircraft addressed is asked (G:limit_off_route); `no_number_after`: no phrase when a
   -- number follows its `near` word; `not_to_profile`: none said to an aircraft flying its route's profile
@@ -1170,6 +1186,10 @@ return {
     -- aircraft's own rate; the phrase is the word alone, noted and left to its instruction
     { what = "how fast or hard a change is flown", words = "expedite expedited quickly fast hard sharp sharply",
       manner = true },
+    -- "descend FL150 at a good rate", "at your best rate KLM12 climb FL300": the same said of the rate, with no value
+    -- (`rate_manner`: G:rate_manner, lexicon.rate_manner), noted from "at" or "with" before it to the rate's word and
+    -- the motion it names ("of descent"); a gentler one ("at a slow rate") is asked
+    { what = "how fast or hard a change is flown", words = "rate", rate_manner = true },
     -- "turn left heading 170, terrain", "descend FL200 weather", "aua917 terrain!! climb fl190": terrain or weather
     -- named bare beside an instruction (`bare`: G:said_bare), its reason, which squawk does not simulate
     { what = "terrain and weather", words = "terrain weather icing storm storms thunderstorm thunderstorms cloud "
@@ -1633,7 +1653,9 @@ return {
     units = { "kt", "kts", "knots", "fpm", "deg", "degs", "degrees" },
     level = { "fl", "alt", "altitude", "level", "lvl", "ft", "feet", "climb", "descend", "desc", "clb", "dsc",
       "squawk", "sq", "code", "xpdr", "transponder" },
-    joins = { "and", "," } },
+    joins = { "and", "," },
+    -- (the labels and unit of a rate: a bare number straight after its value is no level, G.terse_altitude)
+    rate = { "vs", "roc", "rod", "fpm" } },
   -- the letters of an experiment's ids typed glued to their figures as a label before a colon ("t2:", "sess4:"),
   -- beside lexicon.aside.study_labels ("exp1:", "run3:"); any other letters make such a label only before an
   -- aircraft that flies (G.id_label)

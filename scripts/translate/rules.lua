@@ -242,7 +242,9 @@ return function(intent, rule, words)
     return g:word(q, "what's whats what") and g:has_ref(q + 1, i, "aircraft") and g:skip_fillers(i + 2) > #g.t
   end }
   -- altitude
-  rule { "climb climbing descend descending altitude alt cruise altitudes drop", false, prev = { 2, "rate" } }
+  -- ("rate of climb 1500", "rate descend 2000": the motion the rate's word names, straight after it or "of")
+  rule { "climb climbing descend descending altitude alt cruise altitudes drop", false, prev = { 2, "rate" },
+         when = function(g, i) return g:word(i - 1, "rate") or (g:word(i - 1, "of") and g:word(i - 2, "rate")) end }
   -- "1800 fpm descending", "a thousand foot a minute descent": the word gives the rate's sign
   rule { "descending climbing descent", false, prev = { 2, "fpm minute min" } }
   -- "vertical speed 1500 descending", "vs 1500 descent": the word after a vertical speed's number gives its sign

@@ -11382,3 +11382,89 @@ do
   check_eq(ex("heading 100, fin8"), "HDG FIN8 100")
   check_eq(ex("sas77 descend fl120, sas77"), "ALT SAS77 FL120")
 end
+
+-- Cycle 48 (hz57): a rate's manner said with no value ("at a good rate", "best rate of climb") is noted as "expedite"
+-- is and never makes a later number the rate; a gentler one is asked; a number is a rate only with a rate's unit or
+-- after the rate's word, never an altitude with its unit after "to"
+do
+  local _, ex = scene({ "CRE SVA31 A320 24.7 46.7 250 FL210 270" })
+  local r = graph.translate("at a good rate SVA31 descend to 9000 feet", { sim = _, mode = "offline" })
+  check(said(r) == "ALT SVA31 9000" and r.note:find("'at a good rate'", 1, true) ~= nil, said(r))
+  check_eq(ex("sva31 climb at a high rate to 25000 feet"), "ALT SVA31 25000")
+  check_eq(ex("sva31 good rate of descent, descend FL150"), "ALT SVA31 FL150")
+  check_eq(ex("sva31 descend FL150 at your best rate of descent"), "ALT SVA31 FL150")
+  check_eq(ex("sva31 descend with a healthy rate to 3000 metres"), "ALT SVA31 9843")
+  check_eq(ex("sva31 climb FL250 at a good rate of 1800 fpm"), "ALT SVA31 FL250 1800")
+  check_eq(ex("sva31 increase your rate of descent to two thousand five hundred"), "VS SVA31 -2500")
+  asked(ex("sva31 descend FL150 at a slow rate"), "a gentler rate, none said")
+  asked(ex("sva31 descend at a good rate 9000 feet"), "a level or the rate after a manner")
+  asked(ex("sva31 descend at a good rate two thousand"), "a bare number in words after a manner")
+  check_eq(ex("sva31 descend at a good rate of 2000"), "VS SVA31 -2000")
+  check_eq(ex("sva31 descend at a good rate FL150"), "ALT SVA31 FL150")
+  asked(ex("sva31 rate of descent to 9000 feet"), "a level after 'to', no rate")
+end
+
+-- Cycle 48 (hz57): a climb and a descent both said of one aircraft with no correction between are asked, whichever
+-- comes first and whether a level, a rate or a rate's sign ("vs 1500 down") follows; a correction, a motion stopped
+-- and one in a note or after "then" leave the other standing
+do
+  local _, ex = scene({ "CRE SVA31 A320 24.7 46.7 250 FL210 270" })
+  asked(ex("climb SVA31 descend at 1500 fpm"), "climb, then descend at a rate")
+  asked(ex("descend sva31 climb FL250"), "descend, then climb to a level above")
+  asked(ex("sva31 climb, descend at 1500 fpm"), "a comma between the two ways")
+  asked(ex("sva31 climb rate of descent 1500"), "a rate of descent after climb")
+  asked(ex("sva31 descend vertical speed 1500 climbing"), "a rate's sign word against the verb")
+  asked(ex("sva31 climb vs 1500 down"), "a rate's sign after its value against the verb")
+  check_eq(ex("sva31 climb correction descend at 1500 fpm"), "VS SVA31 -1500")
+  check_eq(ex("sva31 stop the climb and descend at 1500 fpm"), "VS SVA31 -1500")
+  check_eq(ex("sva31 climb FL250, expect descent in ten minutes"), "ALT SVA31 FL250")
+  check_eq(ex("sva31 descend at 1500 fpm then climb FL250"), "VS SVA31 -1500 ; ALT SVA31 FL250")
+  check_eq(ex("sva31 vs 1500 down"), "VS SVA31 -1500")
+end
+
+-- Cycle 48 (hz57): a number with no unit said straight after a rate (a comma or "and" between at most) is a level or
+-- a speed said bare: asked, in digits, in words, after a metric rate and in a terse typed list; with its unit, or
+-- after "to", it is read
+do
+  local _, ex = scene({ "CRE SVA31 A320 24.7 46.7 250 FL310 270" })
+  asked(ex("sva31 descend at 1800 fpm 240"), "a bare number after a rate")
+  asked(ex("descend at 1800 fpm, 240"), "a bare number after a rate and a comma")
+  asked(ex("sva31 descend at two thousand feet per minute seven thousand"), "a bare level in words after a rate")
+  asked(ex("sva31 descend at eight metres per second 7000"), "a bare number after a metric rate")
+  asked(ex("sva31 vs -1800 7000 hdg 200"), "a terse list's bare number after the rate")
+  asked(ex("sva31 1800 fpm 7000"), "a bare number after a rate with no verb")
+  asked(ex("sva31 rate of descent 1800 then 7000"), "a bare number after a rate and 'then'")
+  asked(ex("sva31 vertical speed 1800, 7000"), "a bare number closing a list after a rate")
+  check_eq(ex("sva31 speed 240 then 7000"), "SPD SVA31 240 ; ALT SVA31 7000")
+  check_eq(ex("sva31 descend at 1800 fpm 240 knots"), "VS SVA31 -1800 ; SPD SVA31 240")
+  check_eq(ex("sva31 descend at 1800 fpm to 240"), "ALT SVA31 FL240 1800")
+  check_eq(ex("sva31 descend at two thousand feet per minute to seven thousand"), "ALT SVA31 7000 2000")
+  check_eq(ex("sva31 descend at eight metres per second to 7000 feet"), "ALT SVA31 7000 1575")
+  check_eq(ex("sva31 7000 hdg 200 vs -1800"), "ALT SVA31 7000 ; HDG SVA31 200 ; VS SVA31 -1800")
+end
+
+-- Cycle 48 (hz57): a second number said beside a complete instruction restates its value only when, said alone, it
+-- gives that value ("FL300, three zero zero", "heading 090, 90", "9000 feet, niner"); one that differs in size or
+-- form ("climb FL300 3000", "heading 120 twelve", "speed 250 25") is asked, never taken as the same. A study's
+-- label with its number in a remark after a dash ("- run 3") is no value
+do
+  local _, ex = scene({ "CRE SVA31 A320 24.7 46.7 250 FL210 270" })
+  check_eq(ex("sva31 climb FL300 3000"), "ASK I have ALT SVA31 FL300. What does '3000' mean?")
+  check_eq(ex("sva31 heading 120 twelve"), "ASK I have HDG SVA31 120. What does 'twelve' mean?")
+  asked(ex("sva31 speed 250 twenty five"), "a speed said again a tenth of its size")
+  asked(ex("sva31 climb FL300 30"), "a typed 30 after FL300")
+  asked(ex("sva31 descend FL150 1500"), "a tenth of the level after it")
+  check_eq(ex("sva31 climb FL300 three zero zero"), "ALT SVA31 FL300")
+  check_eq(ex("sva31 climb FL300 thirty thousand"), "ALT SVA31 FL300")
+  check_eq(ex("sva31 heading 090 90"), "HDG SVA31 90")
+  check_eq(ex("sva31 descend 9000 feet niner"), "ALT SVA31 9000")
+  check_eq(ex("sva31 climb FL300 - test profile step 2"), "ALT SVA31 FL300")
+  check_eq(ex("sva31 climb FL300 - run 3"), "ALT SVA31 FL300")
+  asked(ex("sva31 climb FL300, step 3"), "a step's number with no remark set apart")
+end
+
+-- Cycle 48 (hz57): "maximum" is kept as typed, never read as "minimum" (two letters from it)
+do
+  local _, ex = scene({ "CRE SVA31 A320 24.7 46.7 250 FL210 270" })
+  check_eq(ex("sva31 descend FL150 at maximum rate"), "ALT SVA31 FL150")
+end
