@@ -121,19 +121,21 @@ end
 
 -- A climb's and a descent's words (lexicon.vertical_motion) both said in [b, e) with no correction between ("climb
 -- KLM12 descend at 2000 fpm", "climb rate of descent 1500"): the positions of the first of each, in the order said;
--- else nil. After the last value only a rate's sign said straight after it counts ("descend vertical speed 1500
--- climbing", "climb vs 2000 down"); a verb after a level ("climb FL300 descend") is a word left over, asked by the
--- accounting. Words noted as not simulated ("expect descent"), in a reason or of a motion stopped ("stop descent,
--- climb FL250") move nothing.
+-- else nil. "up" and "down" count as a rate's sign straight beside its value ("climb vs 2000 down", "up 2000 fpm")
+-- or as the instruction's word ("go up, descend at 2000 fpm"); a verb after a level ("climb FL300 descend") is a word left over,
+-- asked by the accounting. Words noted as not simulated ("expect descent"), in a reason or of a motion stopped
+-- ("stop descent, climb FL250") move nothing.
 function m:opposite_motions(b, e)
   local names, up, down = self:refs_in(b, e, "aircraft"), nil, nil
   local qs = self:quantities(b, e)
-  local last = qs[#qs]
+  local last, signs = qs[#qs], {}  -- (signs[i]: "up" or "down" there is a rate's sign, straight beside its value)
+  for _, q in ipairs(qs) do
+    if q.kind ~= "alt" then signs[q.b - 1], signs[q.e] = true, true end
+  end
   for i = b, e - 1 do
     if self:word(i, "@correction") then up, down = nil, nil end
-    local after = last ~= nil and i >= last.e
-    local sign = after and i == last.e and last.kind ~= "alt"
-    if not after or sign then
+    local sign = signs[i] or self.triggers[i]
+    if not (last and i >= last.e and last.kind == "alt") then
       local u = self:motion_said(i, self.motion.up, names) or (sign and self:word(i, "up"))
       local d = self:motion_said(i, self.motion.down, names) or (sign and self:word(i, "down"))
       if (u or d) and not (self.u:used(i) or self.noted[i] or self:in_reason(i)) then

@@ -960,6 +960,11 @@ return function(H, f, wrap, compass)
       end
       dir = way
     end
+    -- ("climb vs minus 2000", "descend at plus 2000 fpm": a sign said against the motion said is asked)
+    if (fpm < 0 and up and not down) or (self:word(v.b - 1, "plus") and down and not up) then
+      return self:need(string.format("Climb or descend? I heard '%s' for %s, who was told to %s.", self:raw(
+        self:word(v.b - 1, "plus") and v.b - 1 or v.b, v.e), id, up and "climb" or "descend"))
+    end
     if fpm > 0 and dir < 0 then fpm = -fpm end
     self:emit("VS " .. id .. " " .. f.int(fpm))
     if level then

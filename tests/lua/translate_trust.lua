@@ -11420,6 +11420,12 @@ do
   check_eq(ex("sva31 climb FL250, expect descent in ten minutes"), "ALT SVA31 FL250")
   check_eq(ex("sva31 descend at 1500 fpm then climb FL250"), "VS SVA31 -1500 ; ALT SVA31 FL250")
   check_eq(ex("sva31 vs 1500 down"), "VS SVA31 -1500")
+  asked(ex("sva31 go up, descend at 1500 fpm"), "'go up' against a descent")
+  asked(ex("sva31 up 1500 fpm descend"), "a rate's sign said before it against the verb")
+  asked(ex("sva31 climb vs minus 1500"), "a negative rate for a climb")
+  asked(ex("sva31 descend at plus 1500 fpm"), "'plus' for a descent")
+  check_eq(ex("sva31 descend vs -1500"), "VS SVA31 -1500")
+  check_eq(ex("sva31 climb up to FL250"), "ALT SVA31 FL250")
 end
 
 -- Cycle 48 (hz57): a number with no unit said straight after a rate (a comma or "and" between at most) is a level or
