@@ -2043,10 +2043,25 @@ end
 -- True when "vertical" at i is said of conflict resolutions ("let MVP use vertical speed in the
 -- resolutions", "resolutions horizontal only, no vertical"), no safety factor or zone size.
 -- ("horizontal resolutions only": resolutions without the vertical)
+-- A factor, margin or zone said in the request makes "vertical" its direction, unless "vertical" names the
+-- resolutions or manoeuvres straight after it in a clause of its own that says none, and each one said
+-- elsewhere follows a resolution word in its own clause ("MVP with a horizontal factor of 1.05 and allow
+-- vertical resolutions"; "set the horizontal factor to 1.05 and allow vertical resolutions" stays unread).
 function G:vertical_resolutions(i)
   local horizontal_only = self:word(i, "horizontal lateral") and self:word_in(math.max(1, i - 2), i + 4, "only")
-  return (self:word(i, "vertical") or horizontal_only) and self:word_in(1, #self.t + 1, "resolution resolutions reso mvp resolver")
-    and not self:word_in(1, #self.t + 1, "factor margin zone pz rpz zonedh separation sep")
+  local sized, reso = "factor margin zone pz rpz zonedh separation sep", "resolution resolutions reso mvp resolver"
+  local function sized_apart()
+    if not self:word(i + 1, "resolution resolutions manoeuvres maneuvers manoeuvre maneuver") then return false end
+    local lo, hi = self:clause_around(i)
+    for k = 1, #self.t do
+      if self:word(k, sized) and (k >= lo and k < hi or not self:word_in(self:clause_around(k), k, reso)) then
+        return false
+      end
+    end
+    return true
+  end
+  return (self:word(i, "vertical") or horizontal_only) and self:word_in(1, #self.t + 1, reso)
+    and (not self:word_in(1, #self.t + 1, sized) or self:word(i, "vertical") and sized_apart())
     and not self:has_ref(1, #self.t + 1, "aircraft")
 end
 

@@ -1148,10 +1148,11 @@ return {
     -- to the pilot, its number straight after the word ("the random number generator with 7" is none)
     -- ("Mach number 0.78" names the speed's unit, no sequence)
     { what = "approach sequences", words = "number", near = { "#number" }, window = 1, not_after = "mach" },
-    -- "say fuel remaining", "souls on board?": what a controller asks of an aircraft in distress, answered by
-    -- the pilot
+    -- "say fuel remaining", "souls on board?", "report your fuel state", "report endurance": what a controller
+    -- asks of an aircraft in distress, answered by the pilot (squawk simulates no fuel and no persons on board)
     { what = "reports of fuel and persons on board", words = "fuel souls persons", window = 2,
-      near = { "remaining", "endurance", "board" } },
+      near = { "remaining", "endurance", "board", "state", "status" }, through = "state status" },
+    { what = "reports of fuel and persons on board", words = "endurance" },
     -- "report level FL150", "report level at 5000", "report heading 090": the pilot's report on reaching that
     -- value, no clearance to it (`through`: the state word stays in the phrase, its value with it)
     { what = "position reports", words = "report reporting", near = { "level", "altitude", "heading", "speed", "mach" },

@@ -1796,6 +1796,10 @@ return function(intent, rule, words)
   -- "which is the altitude of the Azul?": the question asked with "which", as non-native speakers do
   rule { "which", "pos", next = "is", near = { 4, "altitude speed heading position level" }, when = function(g)
     return g.t[#g.t].text == "?" end }
+  -- "which heading is the Easy flying at present?", "which level is KLM12 at now?": the state word straight after
+  -- "which", then "is" or "are": the aircraft's value asked, no instruction ("which heading should it fly" is none)
+  rule { "which", "pos", next = "altitude speed heading level", when = function(g, i)
+    return g:word(i + 2, "is are") end }
   -- "how fast is the Norwegian flying?", "how high is SAS1421 now?": a question of an aircraft's state
   -- (typed without "?" too, when the request ends at the aircraft or its verb: "how high is afr1442")
   rule { "how", "pos", next = "fast high", when = function(g, i)

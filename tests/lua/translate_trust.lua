@@ -11474,3 +11474,32 @@ do
   local _, ex = scene({ "CRE SVA31 A320 24.7 46.7 250 FL210 270" })
   check_eq(ex("sva31 descend FL150 at maximum rate"), "ALT SVA31 FL150")
 end
+
+-- Cycle 48 (hz59): "which heading/level/speed is X flying/at ...?" asks the aircraft's value (POS), never sets it
+do
+  local _, ex = scene({ "CRE SVA31 A320 24.7 46.7 250 FL210 270" })
+  check_eq(ex("which level is sva31 at right now?"), "POS SVA31")
+  check_eq(ex("which speed is sva31 flying at present"), "POS SVA31")
+  check_eq(ex("which heading is sva31 flying at the moment?"), "POS SVA31")
+  asked(ex("which heading should sva31 fly?"), "a heading to fly, with no value")
+end
+
+-- Cycle 48 (hz59): a report of the fuel state or endurance is named as not simulated, never a POS
+do
+  local s = scene({ "CRE SVA31 A320 24.7 46.7 250 FL210 270" })
+  local r = graph.translate("sva31 climb FL300 and report your fuel status", { sim = s, mode = "offline" })
+  check(said(r) == "ALT SVA31 FL300" and (r.note or ""):find("fuel", 1, true) ~= nil, said(r))
+  r = graph.translate("sva31 say endurance", { sim = s, mode = "offline" })
+  check(#r.commands == 0 and (r.note or ""):find("fuel and persons", 1, true) ~= nil, said(r))
+  check_eq(said(graph.translate("sva31 report your state", { sim = s, mode = "offline" })), "POS SVA31")
+end
+
+-- Cycle 48 (hz59): "allow vertical resolutions" in a clause of its own beside a factor said of the resolutions is
+-- RMETHV; a factor said with no resolution word still leaves the request asked
+do
+  local _, ex = scene({ "CRE SVA31 A320 24.7 46.7 250 FL210 270" })
+  check_eq(ex("switch on MVP resolutions with a horizontal factor of 1.2 and permit vertical manoeuvres"),
+    "RESO MVP ; RFACH 1.2 ; RMETHV V/S")
+  check_eq(ex("MVP resolution, vertical resolution factor 1.3"), "RESO MVP ; RFACV 1.3")
+  asked(ex("make the horizontal factor 1.2 and permit vertical resolutions"), "a factor of nothing named")
+end
