@@ -70,6 +70,38 @@ return function(H, f, wrap, compass)
     return nil
   end
 
+  -- The question a spoken number q with no "thousand" or "hundred", about to be read as ft [ft] (its value in
+  -- thousands), raises for aircraft id, or nil; now is the aircraft's state (or nil), dir and verb the motion said:
+  --  * after level words ("flight level", "level", "fl") the flight level heard is short of its digits; after
+  --    "altitude" or "alt" with a hesitation, a filler or punctuation between ("altitude uh one", "flight
+  --    level... eh... one") the level was broken off: either way the rest of the number is unheard;
+  --  * a single number word read as thousands of feet more than lexicon.bare_thousands_reach [ft] from the
+  --    aircraft's present level, the way the verb says or with no way said ("descend one" at FL250): a level cut
+  --    short ("one..." of FL1xx) as much as 1000 ft. A reading against the verb is asked after (a climb to a lower
+  --    level).
+  function m:short_level_doubt(q, ft, now, dir, id, verb)
+    local first = q.b
+    while first < q.e and not self.t[first].number_word do first = first + 1 end
+    local k, broken = first - 1, false
+    while k >= 1 and (self.t[k].kind == "punct" or self.t[k].filler) do k, broken = k - 1, true end
+    if self:word(k, "level fl") or (broken and self:word(k, "altitude alt")) then
+      local said = self:word(k, "level fl") and "flight level" or "altitude"
+      return string.format("Which %s for %s? I heard '%s' and then only '%s'.", said, id,
+        self:word(k - 1, "flight") and self:raw(k - 1, k + 1) or self.t[k].raw, self:raw(first, q.e))
+    end
+    local words = 0
+    for x = first, q.e - 1 do
+      if self.t[x].number_word then words = words + 1 end
+    end
+    local cur = now and now.alt_ft
+    if words ~= 1 or not cur or math.abs(ft - cur) <= L.bare_thousands_reach
+        or (dir > 0 and ft < cur) or (dir < 0 and ft > cur) then
+      return nil
+    end
+    return string.format("%s is at %s ft: %s to %s ft? I heard '%s' alone, with no 'thousand' or flight level.",
+      id, f.int(cur), verb, f.int(ft), self.t[first].raw)
+  end
+
   function m:maintain(s)
     local qs = self:quantities(s.b, s.e)
     for _, q in ipairs(qs) do
@@ -350,6 +382,8 @@ return function(H, f, wrap, compass)
         return self:need(string.format("What altitude should %s %s to: %s? I heard '%s'.", ids[1], verb,
           table.concat(said, " or "), self:raw(q.b, q.e)))
       elseif ft < 100 and not q.number.typed then
+        local doubt = self:short_level_doubt(q, ft * 1000, now, dir, ids[1], verb)
+        if doubt then return self:need(doubt) end
         ft = ft * 1000  -- "maintain niner (thousand)"
       elseif ft >= 100 and ft < 1000 and not q.number.hundred then
         ft, fl = ft * 100, true  -- "climb three five zero": a flight level

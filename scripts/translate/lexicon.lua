@@ -399,7 +399,7 @@ return {
       ["Ü"] = "U" },
   -- hesitations: skipped inside a spoken number, but a number said with one is not
   -- completed by guessing ("heading uh two two" asks which heading)
-  hesitations = { "ah", "uh", "um", "er" },
+  hesitations = { "ah", "uh", "um", "er", "eh" },
   -- words that count the "thousand" after them ("two and a half thousand feet", "a few thousand feet"): no
   -- "thousand feet" said bare, read as one thousand, after them
   thousand_counted = { hundred = true, half = true, quarter = true, few = true, several = true, many = true,
@@ -994,6 +994,9 @@ return {
   -- a number with no unit after "at" after a cleared flight level, read as the vertical speed [ft/min] within
   -- these bounds ("descend FL120 at one thousand five hundred"; "at 250" is a speed, asked)
   rate_after_level = { 500, 6000 },
+  -- a single number word said as a level with no "thousand" ("descend one") is read as that many thousand feet
+  -- only within this distance [ft] of the aircraft's present level; farther, a level cut short, asked
+  bare_thousands_reach = 10000,
   -- a number said group-wise in words ("one hundred twenty") read as a flight level where no unit says so (a
   -- creation's or a move's level): the flight levels it may name, and the altitude [ft] an aircraft moved must
   -- fly at for it (lower down, feet or a level? asked)

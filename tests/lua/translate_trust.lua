@@ -11503,3 +11503,25 @@ do
   check_eq(ex("MVP resolution, vertical resolution factor 1.3"), "RESO MVP ; RFACV 1.3")
   asked(ex("make the horizontal factor 1.2 and permit vertical resolutions"), "a factor of nothing named")
 end
+
+-- Cycle 48 (hz58): a level broken off after its words ("flight level... eh... one", "altitude uh two") and a single
+-- number word read as thousands of feet far from the aircraft's level ("descend two" at FL260) are asked, never
+-- flown; near the aircraft's level, or with the rest of the number said, they are read
+do
+  local _, ex = scene({ "CRE AFR512 A320 48.5 2.5 180 FL260 270", "CRE AFR77 A319 48.7 2.8 090 7000 250" })
+  asked(ex("air france 512 descend flight level... eh... two"), "a flight level broken off by 'eh'")
+  asked(ex("AFR512 descend flight level, um, three"), "a flight level broken off by a comma and 'um'")
+  asked(ex("AFR512 descend level... two"), "'level' and a digit after an ellipsis")
+  asked(ex("AFR512 descend altitude eh two"), "an altitude broken off by 'eh'")
+  asked(ex("AFR512 descend altitude... uh... eight"), "an altitude broken off by an ellipsis")
+  asked(ex("AFR512 descend two"), "a single number word 24000 ft below the aircraft")
+  asked(ex("AFR512 descend and maintain uh eleven"), "'eleven' alone, 15000 ft below")
+  asked(ex("AFR77 climb eighteen"), "'eighteen' alone, 11000 ft above")
+  asked(ex("AFR77 turn left heading eh two seven"), "a heading broken off by 'eh'")
+  check_eq(ex("AFR512 descend flight level... eh... one four zero"), "ALT AFR512 FL140")
+  check_eq(ex("AFR512 descend altitude uh one two thousand"), "ALT AFR512 12000")
+  check_eq(ex("AFR77 descend four"), "ALT AFR77 4000")
+  check_eq(ex("AFR77 descend altitude five"), "ALT AFR77 5000")
+  check_eq(ex("AFR77 climb and maintain niner"), "ALT AFR77 9000")
+  check_eq(ex("AFR512 descend one one"), "ALT AFR512 11000")
+end
