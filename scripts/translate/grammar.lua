@@ -687,17 +687,15 @@ local function hesitated_sides(text)
   local lower = text:lower()
   if not lower:find("%f[%a]left%f[%A]") or not lower:find("%f[%a]right%f[%A]") then return text end
   local toks = bare_words(text)
-  local pieces, from = {}, 1
+  local put, done = tokens.splicer(text)
   for k, t in ipairs(toks) do
     local j = k + 1
     while SIDES[t.bare] and toks[j] and SIDE_HESITATIONS[toks[j].bare] do j = j + 1 end
     if j > k + 1 and toks[j] and SIDES[toks[j].bare] and toks[j].bare ~= t.bare then
-      pieces[#pieces + 1] = text:sub(from, t.e - 1) .. ", correction, "
-      from = toks[j].at
+      put(t.e, ", correction, ", toks[j].at)
     end
   end
-  pieces[#pieces + 1] = text:sub(from)
-  return table.concat(pieces)
+  return done()
 end
 local function self_corrections(text)
   text = hesitated_sides(text)
@@ -705,7 +703,8 @@ local function self_corrections(text)
   local words, markers, after = SC_WORDS, SC_MARKERS, SC_AFTER
   local toks = bare_words(text)
   local function value(t) return t and (t.raw:match("%d%p*$") or NUMBER_WORDS[t.bare] or UNIT_WORDS[t.bare]) end
-  local pieces, from, k = {}, 1, 1
+  local put, done = tokens.splicer(text)
+  local k = 1
   while k <= #toks do
     local j, marked, dropping = k, false, false
     -- (punctuation alone, "...", belongs to the run)
@@ -731,15 +730,13 @@ local function self_corrections(text)
         and not (toks[k - 2] and toks[k - 2].bare == "not" and G.apology[toks[k].bare])
         and (value(toks[k - 1]) or (toks[k - 1] and SIDES[toks[k - 1].bare]) or position) and nxt
         and (nxt.bare:match("^%a?%a?%.?%d") or NUMBER_WORDS[nxt.bare] or after[nxt.bare] or position) then
-      pieces[#pieces + 1] = text:sub(from, toks[k].at - 1) .. ", correction, "
-      from = nxt.at
+      put(toks[k].at, ", correction, ", nxt.at)
       k = j
     else
       k = math.max(j, k + 1)
     end
   end
-  pieces[#pieces + 1] = text:sub(from)
-  return table.concat(pieces)
+  return done()
 end
 
 -- "reduce speed 220 knots, cancel that, maintain 250 knots", "climb FL330 cancel that maintain FL310": "cancel that"
@@ -752,24 +749,21 @@ function G.cancel_corrections(text)
   if not text:find("ancel", 1, true) then return text end
   local toks = bare_words(text)
   local function value(t) return t and (t.raw:match("%d%p*$") or NUMBER_WORDS[t.bare] or UNIT_WORDS[t.bare]) end
-  local pieces, from = {}, 1
+  local put, done, from = tokens.splicer(text)
   for k = 2, #toks do
     local t = toks[k]
-    if t.bare == "cancel" and t.at >= from and value(toks[k - 1]) then
+    if t.bare == "cancel" and t.at >= from() and value(toks[k - 1]) then
       local j = toks[k + 1] and toks[k + 1].bare == "that" and k + 2 or k + 1
       local marked = toks[j - 1].raw:match("%p$") or (toks[j] and toks[j].bare == "")
       local nx = toks[j]
       while nx and nx.bare == "" do j = j + 1 nx = toks[j] end
       if nx and (marked or (j == k + 2 and (value(nx) or nx.raw:match("^%a?%a?%.?%d")
           or G.cancel_next[nx.bare]))) then
-        pieces[#pieces + 1] = text:sub(from, t.at - 1) .. "correction, "
-        from = nx.at
+        put(t.at, "correction, ", nx.at)
       end
     end
   end
-  if from == 1 then return text end
-  pieces[#pieces + 1] = text:sub(from)
-  return table.concat(pieces)
+  return done()
 end
 
 -- "descend and maintain 6000, you said seven", "negative, it's one zero thousand, readback was one one
@@ -825,9 +819,9 @@ local function negated_values(text)
   if not text:lower():find("not", 1, true) then return text end  -- (no "not" said)
   local toks = bare_words(text)
   local function value(t) return t and (t.raw:match("%d%p*$") or NUMBER_WORDS[t.bare] or UNIT_WORDS[t.bare]) end
-  local pieces, from = {}, 1
+  local put, done, from = tokens.splicer(text)
   for k, t in ipairs(toks) do
-    if t.bare == "not" and t.raw:lower() == "not" and value(toks[k - 1]) and k > from then
+    if t.bare == "not" and t.raw:lower() == "not" and value(toks[k - 1]) and k > from() then
       local j, numbers, stop = k + 1, 0, false
       while toks[j] and (value(toks[j]) or (numbers == 0 and NEGATED_NOUNS[toks[j].bare])) do
         if value(toks[j]) then numbers = numbers + 1 end
@@ -841,13 +835,11 @@ local function negated_values(text)
       end
       if numbers > 0 and (stop or not toks[j]) then
         local last = toks[j - 1]
-        pieces[#pieces + 1] = text:sub(from, t.at - 1) .. (last.raw:match("(%p+)$") or "")
-        from = last.e
+        put(t.at, last.raw:match("(%p+)$") or "", last.e)
       end
     end
   end
-  pieces[#pieces + 1] = text:sub(from)
-  return table.concat(pieces)
+  return done()
 end
 
 -- A speaker's label before the request ("instructor: ...", "ATC here - ...", "sim op: ...", one or two
@@ -1023,21 +1015,19 @@ function G.hemispheres_first(text)
     if word and H.point[word:lower()] and not whole:find(".", 1, true) then return whole .. "." .. frac, after end
     return whole, e
   end
-  local out, from = {}, 1
+  local put, done, from = tokens.splicer(text)
   for at, ns, v in text:gmatch("()%f[%a](%a+)%s+()%d") do
-    if at >= from and H.lat[ns:lower()] then
+    if at >= from() and H.lat[ns:lower()] then
       local lat, e = number(v)
       local sep, ew, w = text:match("^(%s*,?%s*)(%a+)%s+()%d", e)
       local lon, after = nil, nil
       if ew and H.lon[ew:lower()] then lon, after = number(w) end
       if lon then
-        out[#out + 1] = text:sub(from, at - 1) .. lat .. " " .. ns .. sep .. lon .. " " .. ew
-        from = after
+        put(at, lat .. " " .. ns .. sep .. lon .. " " .. ew, after)
       end
     end
   end
-  out[#out + 1] = text:sub(from)
-  return table.concat(out)
+  return done()
 end
 -- A clock multiplier typed alone as a clause ("seed 99 then 30 random a320 then x4", "hold, 4x", "x4 and op"), or
 -- before the word "speed" or "rate" ending its clause ("x4 speed"): the simulation's rate, written out as "sim speed

@@ -19,6 +19,20 @@ function M.rewrite(text, toks, at)
   return out and table.concat(out, " ") or text
 end
 
+-- Splices `text` by byte positions, left to right. put(b, s, e) keeps text from where the last put
+-- resumed (1 at first) up to b - 1, then s, and resumes at e; at() is that position; done() returns the
+-- text spliced (`text` itself when nothing was put).
+function M.splicer(text)
+  local pieces, from = {}, 1
+  local function put(b, s, e) pieces[#pieces + 1], from = text:sub(from, b - 1) .. s, e end
+  local function done()
+    if #pieces == 0 then return text end
+    pieces[#pieces + 1] = text:sub(from)
+    return table.concat(pieces)
+  end
+  return put, done, function() return from end
+end
+
 -- string.gsub(text, pattern, repl) run only where `lower`, text in lower case, holds `needle` (a pattern, or
 -- a literal without magic characters, which string.find searches plainly): `needle` states what every match
 -- of `pattern` holds in lower case, so a plain find stands in for a pattern scan of the whole text where it
