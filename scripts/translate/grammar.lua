@@ -6377,6 +6377,19 @@ function G:unaccounted()
       return
     end
   end
+  -- ("KLM12 no higher than FL300", "not lower than 8000 feet", "no higher FL300"): "no" or "not" before a level's
+  -- comparative bounds the level, it clears none, and squawk keeps no level limit: asked, never flown as the level
+  -- ("climb FL300, no higher" bounds nothing of its own: no level after it)
+  for i, t in ipairs(self.t) do
+    local v = (t.text == "no" or t.text == "not") and self:word(i + 1, "higher lower above below") and i + 2
+    if v and self:word(v, "than") then v = v + 1 end
+    local q = v and self:quantities(v, v + 6)[1]
+    if q and q.kind == "alt" and q.b == v and not self:in_reason(i) then
+      self:need(string.format("Is '%s' a level to fly, or a limit? squawk keeps no level limit: please say the "
+        .. "level to fly.", self:raw(i, q.e)))
+      return
+    end
+  end
   -- ("climb to four thousand and a half": a fraction said after "and" that no value read is asked, never dropped)
   local function fraction_left(i)
     return self:word(i, "half quarter quarters") and self:word(i - 1, "a one three") and self:word(i - 2, "and")

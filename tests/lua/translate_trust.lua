@@ -11525,3 +11525,15 @@ do
   check_eq(ex("AFR77 climb and maintain niner"), "ALT AFR77 9000")
   check_eq(ex("AFR512 descend one one"), "ALT AFR512 11000")
 end
+
+-- Cycle 49 (lead): "no" or "not" before a level's comparative with a level after it ("no higher than FL300", "not
+-- lower than 8000 feet") bounds the level and clears none: asked, never flown as the level; "climb to FL300, no
+-- higher" (no level after the bound) is read
+do
+  local _, ex = scene({ "CRE KLM12 A320 52.3 4.7 090 FL100 250" })
+  asked(ex("KLM12 no higher than FL300"), "a ceiling 20000 ft above the aircraft, no clearance")
+  asked(ex("KLM12 no lower than flight level eight zero"), "a floor below the aircraft, no clearance")
+  asked(ex("KLM12 not lower than 8000 feet"), "'not' and a floor in feet")
+  asked(ex("KLM12 no higher FL300"), "the bound with 'than' left out")
+  check_eq(ex("KLM12 climb to FL300, no higher"), "ALT KLM12 FL300")
+end
