@@ -6665,6 +6665,21 @@ function G:values_misread()
         self:raw(q.b, q.e), self.t[q.b - 1].raw, self:and_digits_aircraft(q))
       return
     end
+    -- ("maintain point seven six", "descend .76", "maintain max point seven six": a decimal fraction below one, said or
+    -- typed, is a Mach number's form, never a level, heading or rate; one beside such a command and read as no Mach
+    -- number is asked, naming it)
+    if q.kind == "plain" and q.value > 0 and q.value < 1 and q.number and q.number.decimal then
+      local level, mach
+      for _, c in ipairs(self.out) do
+        level = level or ((c:match("^ALT ") or c:match("^HDG ") or c:match("^VS ")) and c)
+        mach = mach or c:match("SPD %S+ M?0?%.%d")
+      end
+      if level and not mach then
+        self.ask = string.format("I have %s, but I heard '%s', a Mach number's form. Which value do you mean?", level,
+          self:raw(q.b, q.e))
+        return
+      end
+    end
     if line and q.value ~= math.floor(q.value) and self:raw(q.b, q.e):find("%d[.,]%d") then
       self.ask = string.format("I have %s, but I heard '%s', with a decimal. Which value do you mean?", line,
         self:raw(q.b, q.e))
