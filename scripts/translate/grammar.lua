@@ -6460,6 +6460,32 @@ function G:unaccounted()
   end
 end
 
+-- "cross macy at FL240", "after camron descend and maintain 7000", "250 knots until robber" (MACEY, CAMRN, ROBER
+-- on the route of the aircraft named): a word no part of the parse read, straight after a place's slot
+-- (G.heard_slots), that sounds like a waypoint of that route (G.heard_route_name) is a name heard: confirmed
+-- ("Did you mean MACEY? I heard 'macy'."), never substituted and never dropped; "yes" reads it as that waypoint
+-- (G.confirmed_route_places).
+function G:heard_route_place()
+  local explained, route = self.explained or {}, {}
+  for _, r in ipairs(self.refs) do
+    local a = r.kind == "aircraft" and r.exists and self:state(r.name)
+    for _, w in ipairs(a and a.route or {}) do route[#route + 1] = w end
+  end
+  for k = 2, #route > 0 and #self.t or 0 do
+    local t = self.t[k]
+    local held = false
+    for _, r in ipairs(self.refs) do held = held or (r.b <= k and k < r.e) end
+    if t.kind == "word" and G.heard_slots[self.words[k - 1] or ""] and not explained[k] and not self.u:used(k)
+        and not held then
+      local name = G.heard_route_name(t.text, route)
+      if name then
+        self.confirm = self.confirm or { id = name, heard = t.raw }
+        return self:need(string.format("Did you mean %s? I heard '%s'.", name, t.raw))
+      end
+    end
+  end
+end
+
 -- "climb FL300 in a minute", "turn left heading 200 in a moment": a delay said after an instruction with no number
 -- (lexicon.vague_delays: no time squawk can schedule) puts it off, where squawk would send it now: the leftover,
 -- named from "in" to the end of its clause; in a remark of its own ("we'll re-create it in a minute") it is none.
@@ -6638,6 +6664,21 @@ function G:values_misread()
       self.ask = string.format("I heard '%s' after '%s': is it %s, or a value? Please say the instruction again.",
         self:raw(q.b, q.e), self.t[q.b - 1].raw, self:and_digits_aircraft(q))
       return
+    end
+    -- ("maintain point seven six", "descend .76", "maintain max point seven six": a decimal fraction below one, said or
+    -- typed, is a Mach number's form, never a level, heading or rate; one beside such a command and read as no Mach
+    -- number is asked, naming it)
+    if q.kind == "plain" and q.value > 0 and q.value < 1 and q.number and q.number.decimal then
+      local level, mach
+      for _, c in ipairs(self.out) do
+        level = level or ((c:match("^ALT ") or c:match("^HDG ") or c:match("^VS ")) and c)
+        mach = mach or c:match("SPD %S+ M?0?%.%d")
+      end
+      if level and not mach then
+        self.ask = string.format("I have %s, but I heard '%s', a Mach number's form. Which value do you mean?", level,
+          self:raw(q.b, q.e))
+        return
+      end
     end
     if line and q.value ~= math.floor(q.value) and self:raw(q.b, q.e):find("%d[.,]%d") then
       self.ask = string.format("I have %s, but I heard '%s', with a decimal. Which value do you mean?", line,
@@ -8613,6 +8654,38 @@ function G.spelled_route_places(text, world)
     return letters .. (toks[k - 1]:match("%p+$") or ""), k
   end)
 end
+-- The words after which a waypoint of the aircraft's own route is named, a constraint's, a condition's or a limit's
+-- place ("cross X at", "after X descend", "until X"), for G.heard_route_place and G.confirmed_route_places.
+G.heard_slots = set_of({ "cross", "crossing", "after", "before", "until", "till", "at", "over", "passing", "via" })
+-- The waypoint of `route` (idents) that the word w, said in such a slot, sounds like (the same first letter, and
+-- squawk.translate.best_match at 0.5 or better, the level at which a direct-to's name is confirmed), or nil. A word
+-- squawk knows (KNOWN) is none.
+function G.heard_route_name(w, route)
+  if #w < 3 or not w:match("^%a+$") or known_word(w) or #route == 0 then return nil end
+  local idx, score = squawk.translate.best_match(w, route)
+  local name = idx and score >= 0.5 and route[idx]
+  return name and name:sub(1, 1):lower() == w:sub(1, 1) and name or nil
+end
+-- "cross macy at FL240", "after camron descend ...", "until robber": a word straight after a place's slot
+-- (G.heard_slots) that sounds like a waypoint the speaker confirmed (world.confirmed, the answer to
+-- G:heard_route_place's question) on the route of an aircraft flying is that waypoint's ident; others stay as said.
+function G.confirmed_route_places(text, world)
+  local confirmed = {}
+  for _, a in ipairs(world.confirmed and world.aircraft or {}) do
+    for _, r in ipairs(a.route or {}) do
+      if world.confirmed[r] or world.confirmed[r:upper()] then confirmed[#confirmed + 1] = r:upper() end
+    end
+  end
+  if #confirmed == 0 then return text end
+  local toks, bare = plain_words(text)
+  return tokens.rewrite(text, toks, function(i)
+    if not (bare[i - 1] and G.heard_slots[bare[i - 1]]) or toks[i - 1]:match("%p$") then
+      return nil
+    end
+    local name = G.heard_route_name(bare[i], confirmed)
+    return name and name .. (toks[i]:match("%p+$") or ""), i + 1
+  end)
+end
 -- "hop7 6000 hdg 220 230kt": in a terse typed list, an aircraft that flies then only values, each labelled
 -- (lexicon.terse_list) but one, that one a bare number of four or five figures in hundreds of feet (1000 to
 -- 60000), with no level, altitude word or transponder code said: that number is the level, written "6000ft".
@@ -9056,7 +9129,8 @@ function M.translate(text, world)
   local run_together
   text, run_together = G.run_together_position(text)
   if run_together then return { commands = {}, ask = run_together } end
-  text = G.spelled_route_places(typed_places(written_forms(text, world), world), world)
+  text = G.confirmed_route_places(G.spelled_route_places(typed_places(written_forms(text, world), world), world),
+    world)
   text = G.terse_altitude(spelled_airports(text, world), world)
   local run_on
   text, run_on = G.run_on_values(text)
@@ -9219,6 +9293,7 @@ function M.translate(text, world)
   if not g.ask and not g.leftover then g:hedged() end
   if not g.ask and not g.leftover and lower:find("or", 1, true) then g:alternatives() end
   if not g.ask then g:values_misread() end
+  if not g.ask and g.leftover then g:heard_route_place() end
   if not g.ask and g.leftover then
     g.ask = #g.out == 0 and string.format("I have no instruction. What does '%s' mean?", g.leftover)
       or string.format("I have %s. What does '%s' mean?", table.concat(g.out, " ; "), g.leftover)

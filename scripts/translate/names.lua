@@ -115,6 +115,7 @@ local names = {
     { "blue streak", "JIA" },
     { "lindbergh", "GJS" },
     { "air wisconsin", "AWI" },
+    { "acey", "ASQ" },  -- (ExpressJet's ICAO telephony)
     { "horizon", "QXE" },
     { "horizon air", "QXE" },
     { "allegiant", "AAY" },
@@ -605,6 +606,8 @@ local names = {
     { "tap air portugal", "TAP" },
     { "spirit", "NKS" },  -- (Spirit Airlines, telephony Spirit Wings)
     { "spirit airlines", "NKS" },
+    { "expressjet", "ASQ" },  -- (ExpressJet, telephony Acey)
+    { "express jet", "ASQ" },
     { "qatar airways", "QTR" },
     { "qatar", "QTR" },
     { "cathay pacific", "CPA" },

@@ -126,12 +126,16 @@ local function readings(w)
   return target and near or {}
 end
 
--- True when the word (as typed) may be a name: an aircraft's id or its airline's letters, or a place near traffic.
+-- True when the word (as typed) may be a name: an aircraft's id or its airline's letters, a place near traffic,
+-- or a name heard for a waypoint of a flying aircraft's route (the same letters or the same sound:
+-- squawk.translate.best_match at lexicon.waypoint_confirm, "macy" for MACEY), which the grammar confirms.
 local function named(w, world)
   local lw = w:lower()
   for _, a in ipairs(world.aircraft or {}) do
     local id = (a.id or ""):lower()
     if id == lw or id:match("^%a+") == lw then return true end
+    local _, score = squawk.translate.best_match(lw, a.route or {})
+    if score and score >= lexicon.waypoint_confirm then return true end
   end
   local lat, lon
   if world.place_known then lat, lon = world.place_known(w:upper()) end

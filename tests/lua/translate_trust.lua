@@ -11537,3 +11537,50 @@ do
   asked(ex("KLM12 no higher FL300"), "the bound with 'than' left out")
   check_eq(ex("KLM12 climb to FL300, no higher"), "ALT KLM12 FL300")
 end
+
+-- Cycle 49 (f121): a word straight after a place's slot ("cross", "after", "until", ...) that sounds like a waypoint
+-- of the named aircraft's route is a name heard: confirmed ("Did you mean LANDR? I heard 'lander'."), never dropped
+-- with the instruction flown alone and never re-read as an instruction word; "yes" reads it as that waypoint. A word
+-- sounding like no waypoint of that route, or said in no place's slot, is still asked about by name
+do
+  local s = scene({ "CRE KLM12 A320 52.3 4.7 090 FL250 280", "DEFWPT LANDR 52.5 5.0", "ADDWPT KLM12 LANDR",
+    "DEFWPT TELLR 52.6 5.5", "ADDWPT KLM12 TELLR", "DEFWPT MACEY 52.7 5.9", "ADDWPT KLM12 MACEY",
+    "CRE EZY45 A320 51.9 4.0 270 FL200 260" })
+  local function yes(text, question, after)
+    local d = graph.dialogue({ sim = s, mode = "offline" })
+    check_eq(said(d:say(text)), "ASK " .. question)
+    check_eq(said(d:say("yes")), after)
+  end
+  yes("KLM12 cross lander at flight level two one zero", "Did you mean LANDR? I heard 'lander'.", "AT KLM12 LANDR ALT FL210")
+  yes("KLM12 after teller descend and maintain flight level one eight zero", "Did you mean TELLR? I heard 'teller'.",
+    "AT KLM12 TELLR DO ALT KLM12 FL180")
+  yes("KLM12 maintain two eight zero knots until teller", "Did you mean TELLR? I heard 'teller'.", "SPD KLM12 280")
+  yes("KLM12 descend and maintain flight level two one zero cross macy at flight level two one zero",
+    "Did you mean MACEY? I heard 'macy'.", "ALT KLM12 FL210 ; AT KLM12 MACEY ALT FL210")
+  local ex = select(2, set_up(s, {}))
+  asked(ex("KLM12 cross banana at flight level two one zero"), "a crossing at a word like no waypoint of the route")
+  asked(ex("EZY45 cross lander at flight level two one zero"), "LANDR is on no route of EZY45's")
+  asked(ex("KLM12 macy flight level two one zero"), "a name heard in no slot, never re-read as 'mach'")
+end
+
+-- Cycle 49 (f121): ExpressJet by its ICAO telephony ("Acey") and by its name
+do
+  local _, ex = scene({ "CRE ASQ4410 E145 52.0 4.2 180 FL240 270", "CRE KLM12 A320 52.3 4.7 090 FL250 280" })
+  check_eq(ex("delete acey forty four ten"), "DEL ASQ4410")
+  check_eq(ex("acey forty four ten turn left heading one eight zero"), "HDG ASQ4410 180 LEFT")
+  check_eq(ex("where is the expressjet"), "POS ASQ4410")
+  asked(ex("acey forty four one descend flight level two two zero"), "a digit left unheard")
+end
+
+-- Cycle 49 (f121): a decimal fraction below one ("point seven six", ".76", "decimal eight two") is a Mach number's
+-- form: read as no Mach number beside a level, heading or rate it is asked, never flown as 700 ft or 1 ft; said
+-- with "mach" or "speed", or beside a speed read as Mach, it is the Mach number
+do
+  local _, ex = scene({ "CRE UAL88 B772 41.9 -87.9 270 FL330 290", "CRE AAL12 A321 41.5 -87.5 090 FL310 280" })
+  asked(ex("united eighty eight maintain point eight two"), "a Mach number's form read as 800 ft")
+  asked(ex("UAL88 descend .82"), "a typed fraction read as 1 ft")
+  asked(ex("united eighty eight maintain max decimal eight two"), "'max' heard for 'mach'")
+  check_eq(ex("united eighty eight maintain mach point eight two"), "SPD UAL88 M0.82")
+  check_eq(ex("UAL88 climb FL350 speed .82"), "ALT UAL88 FL350 ; SPD UAL88 M0.82")
+  check_eq(ex("UAL88 climb FL350, then when level speed .82"), "ALT UAL88 FL350 ; ATALT UAL88 FL350 SPD UAL88 M0.82")
+end
