@@ -8890,6 +8890,63 @@ function G.id_label(text, world)
   return (G.id_labels[letters] or CM_STUDY[letters] or before) and rest or text
 end
 
+-- "after passing fifty-six north twenty west climb FL410", "maintain Mach .84 until 40 north 60 west": a latitude
+-- and a longitude in whole degrees said straight after one another (a comma between or none), for an aircraft
+-- named in the request whose route holds the one named point the navdata has at exactly that position (the NAT
+-- points "56N20", "40N60"), are that point: the text is returned with the position's words replaced by its name,
+-- so that every instruction reading a waypoint ("at", "after", "until", "cross ... at", "to be level by") reads
+-- it. A request with a word of an instruction that takes a position (create, move, define or add a waypoint, a
+-- wind) keeps the position as said, as does one whose degrees have a fraction or whose point no route of an
+-- aircraft named holds. `u` is the utterance of `text`; nil when nothing was replaced.
+G.position_args = { lat = true, lon = true }
+function G.route_points_said(text, u, world)
+  if not world.waypoints_at then return nil end
+  local toks = u:tokens()
+  local qs = u:quantities(1, #toks + 1)
+  local lat
+  for _, q in ipairs(qs) do lat = lat or (q.kind == "lat" and q) end
+  if not lat then return nil end
+  local held = {}  -- (upper-case name -> the name as its route holds it)
+  for _, r in ipairs(u:refs()) do
+    for _, a in ipairs(r.kind == "aircraft" and r.exists and world.aircraft or {}) do
+      if (a.id or ""):upper() == r.name:upper() then
+        for _, w in ipairs(a.route or {}) do held[w:upper()] = w end
+      end
+    end
+  end
+  if not next(held) then return nil end
+  for _, t in ipairs(toks) do
+    for _, r in ipairs(t.kind == "word" and RULES_BY_WORD[t.text] or {}) do
+      for _, arg in ipairs(not r.any and r.intent and M.intents[r.intent].args or {}) do
+        if G.position_args[arg] then return nil end
+      end
+    end
+  end
+  local spans = {}  -- ({b, e, name}: tokens [b, e) said for the point `name`)
+  for k, q in ipairs(qs) do
+    local lon = qs[k + 1]
+    if q.kind == "lat" and lon and lon.kind == "lon" and q.value % 1 == 0 and lon.value % 1 == 0
+        and (lon.b == q.e or (lon.b == q.e + 1 and toks[q.e].text == ",")) then
+      local found = {}
+      for _, id in ipairs(world.waypoints_at(q.value, lon.value)) do
+        if held[id:upper()] then found[#found + 1] = held[id:upper()] end
+      end
+      if #found == 1 then spans[#spans + 1] = { b = q.b, e = lon.e, name = found[1] } end
+    end
+  end
+  if #spans == 0 then return nil end
+  -- (each token's bytes, found in order in the text, case aside; a token not found leaves the text as it is)
+  local lower, at, starts, ends = text:lower(), 1, {}, {}
+  for k = 1, spans[#spans].e - 1 do
+    local b, e = lower:find(toks[k].raw:lower(), at, true)
+    if not b then return nil end
+    starts[k], ends[k], at = b, e, e + 1
+  end
+  local put, done = tokens.splicer(text)
+  for _, sp in ipairs(spans) do put(starts[sp.b], sp.name, ends[sp.e - 1] + 1) end
+  return done()
+end
+
 function M.translate(text, world)
   local said = text
   world = world or {}
@@ -9080,6 +9137,11 @@ function M.translate(text, world)
   local apart
   text, apart = set_apart(types.join(text, TYPES.phrases))
   local u = squawk.translate.utterance(text, world, NAMES)
+  local points = G.route_points_said(text, u, world)
+  if points then
+    text = points
+    u = squawk.translate.utterance(text, world, NAMES)
+  end
   local toks = u:tokens()
   local g = setmetatable({ u = u, t = toks, words = word_texts(toks), refs = u:refs(), world = world,
     fleet = world.aircraft, out = {}, qcache = {}, taken = {}, noted = {}, triggers = {}, apart = apart,
