@@ -4098,6 +4098,16 @@ function G:when_reached(s)
   if #self:quantities(c, s.trig) > 0 then return false end
   local verb = self:skip_fillers(c + 1)
   if self:word_in(c + 1, s.trig, "there level lvl") then return true end
+  -- ("when you're at that speed", "once it is at the speed": the speed of the instruction before, reached; only
+  -- a subject, "at" and "that" or "the" before "speed", straight before the instruction)
+  local at = self:find_word(c + 1, s.trig, "speed")
+  if at < s.trig and self:skip_fillers(at + 1) == s.trig and self:word(at - 1, "that the")
+      and self:word(at - 2, "at") then
+    for i = c + 1, at - 3 do
+      if not (self.t[i].filler or self:word(i, "you you're are it it's is")) then return false end
+    end
+    return true, "speed"
+  end
   -- ("when reaching", "when you reach it", "once it reaches that", "when you hit it": the level of the
   -- instruction before; "once you have it", "when you've got it": its value, held)
   local subject = self:word(verb, "you it he she they")

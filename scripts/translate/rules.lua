@@ -462,6 +462,11 @@ return function(intent, rule, words)
     local r = g:refs_in(i - 2, i - 1, "waypoint")[1]
     return r ~= nil and r.e == i - 1 and g:word(r.b - 1, "cross crossing")
   end }
+  -- "when you're at that speed descend FL120", "once it is at the speed": the speed of the instruction before,
+  -- reached (G:when_reached), no speed instruction of its own
+  rule { "speed", false, prev = { 1, "that the" }, when = function(g, i)
+    return g:word(i - 2, "at") and g:find_word(math.max(1, i - 5), i - 2, "when once") < i - 2
+  end }
   -- "climb FL380, passing FL360 Mach .79", "when passing FL300 M.77", "climb FL370, reaching Mach .79": a
   -- Mach number said with no verb straight after a level passed or reached (or "reaching" alone: the
   -- level cleared) is a speed instruction of its own, which waits for that level (m:at_altitude); only after
