@@ -7586,6 +7586,27 @@ function G:crossing_without_place()
   end
 end
 
+-- "cleared to Dubai via track Charlie", "direct OMDB via the flight planned route": a direct-to issued in a request
+-- whose "via" names no waypoint, quantity or aircraft in its clause (an oceanic track, an airway, a route by its
+-- name) is asked: the route said is no straight line to the place, and squawk cannot fly it.
+function G:direct_via_unread()
+  local direct
+  for _, line in ipairs(self.out) do direct = direct or line:match("^DIRECT %S+ (%S+)$") end
+  if not direct then return end
+  for i = self:find_word(1, #self.t + 1, "via"), #self.t do
+    if self:word(i, "via") then
+      local e = i + 1
+      while self.t[e] and self.t[e].kind ~= "punct" and not self:word(e, "and then") do e = e + 1 end
+      local named = false
+      for _, r in ipairs(self.refs) do named = named or (r.b > i and r.b < e) end
+      if e > i + 1 and not named and #self:quantities(i + 1, e) == 0 then
+        return self:need(string.format("I have %s. squawk would fly straight to %s, not '%s': which waypoints "
+          .. "does that route pass? Please give them, or say the direct-to alone.", table.concat(self.out, " ; "), direct, self:raw(i, e)))
+      end
+    end
+  end
+end
+
 -- "turn left heading 140, then when able direct MABOD": a direct-to left to the pilot's discretion, said with a
 -- heading for the same aircraft, is flown later, when the pilot can; squawk would issue both at once and the
 -- direct-to would end the heading, so the request is asked about.
@@ -9258,6 +9279,7 @@ function M.translate(text, world)
   if not g.ask then g:discretion_without_level() end
   if not g.ask then g:crossing_without_place() end
   if not g.ask then g:direct_when_able() end
+  if not g.ask then g:direct_via_unread() end
   g:same_again(same)
   if not g.ask then g:forgotten() end
   if not g.ask then g:described() end
