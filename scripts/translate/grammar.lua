@@ -6749,18 +6749,24 @@ end
 
 -- True when one of `near` (words or typed numbers as written; "#number"
 -- any number, "#waypoint" a waypoint name (a navaid's kind alone is none: "until 10 DME", "the VOR"),
--- "#frequency" a typed radio frequency of the VHF air band, 118.000 to 136.975 MHz with its decimals:
--- "129.2") is within 4 tokens after i.
+-- "#frequency" a radio frequency of the VHF air band, 118.000 to 136.975 MHz with its decimals, typed, "129.2",
+-- or said digit by digit with its point, "one two eight decimal five") is within 4 tokens after i.
 local function frequency(t)
   local mhz = t.kind == "number" and t.text:match("^1[123]%d%.%d+$") and tonumber(t.text)
   return mhz and mhz >= 118 and mhz < 137
+end
+function G:frequency_said(k)
+  if frequency(self.t[k]) then return true end
+  if not self.t[k].number_word then return false end
+  local q = self:quantities(k, math.min(#self.t + 1, k + 8))[1]
+  return q ~= nil and q.b == k and q.kind == "plain" and q.value >= 118 and q.value < 137 and q.value % 1 ~= 0
 end
 function G:near_any(i, near, window)
   for k = i + 1, math.min(#self.t, i + (window or 4)) do
     local t = self.t[k]
     for _, w in ipairs(near) do
       if (w == "#number" and t.kind == "number") or (w == "#number" and t.number_word)
-          or (w == "#frequency" and frequency(t))
+          or (w == "#frequency" and self:frequency_said(k))
           or (w == "#waypoint" and #self:refs_in(k, k + 1, "waypoint") > 0 and not self:word(k, "@navaid_kinds"))
           or ((t.kind == "word" or t.kind == "number") and t.text == w) then
         return true
@@ -7402,6 +7408,16 @@ function G:not_simulated()
           break
         end
         e = e + 1
+      end
+      -- ("then Gander on 128.5", "Shanwick Oceanic on ..."): with `station_before`, one or two capitalised words
+      -- straight before the phrase, no aircraft, keyword or instruction word, are the station named, part of it
+      for _ = 1, class.station_before and 2 or 0 do
+        local w = self.t[i - 1]
+        if not (w and w.kind == "word" and w.raw:match("^%u") and not w.keyword and not self:intent_at(i - 1)
+            and #self:refs_in(i - 1, i, "aircraft") == 0) then
+          break
+        end
+        i = i - 1
       end
       -- "when passing FL250 contact Langen 120.8": a condition said before the phrase is part of it; so is
       -- the position it is said at ("at 30 West contact Gander") and the place it waits for ("after DETAK
