@@ -488,6 +488,19 @@ return function(intent, rule, words)
     if g:word(verb - 1, "on when once") then verb = verb - 1 end
     return not g:word(verb - 1, "report") and g:any_instruction_in(1, verb)
   end }
+  -- "speed 290 knots until AKELI, then Mach .84", "reduce 250 knots, then Mach point seven eight": a Mach number said
+  -- with no verb straight after "then", in a request that gave a speed before it, is the next speed instruction
+  rule { "mach", "spd", prev = { 2, "then" }, when = function(g, i)
+    local q = g:quantities(i, math.min(#g.t + 1, i + 4))[1]
+    if not (q and q.kind == "mach" and q.b == i) then return false end
+    local k = i - 1
+    while k >= 1 and (g.t[k].filler or g.t[k].kind == "punct") do k = k - 1 end
+    if not g:word(k, "then") then return false end
+    for _, before in ipairs(g:quantities(1, k)) do
+      if before.kind == "speed" or before.kind == "mach" then return true end
+    end
+    return false
+  end }
   -- "go to 250 knots", "go Mach point eight": a speed with its unit straight after "go" (or "go to") is a speed
   -- instruction (waiting for a level said before it: "when you're passing FL300 go Mach .8", m:at_altitude)
   rule { "go", "spd", when = function(g, i)
