@@ -1300,7 +1300,11 @@ return {
                     manila = "ninoy aquino intl", jakarta = "soekarno hatta intl", hanoi = "noibai intl",
                     saigon = "tansonnhat intl", surabaya = "juanda", denpasar = "bali intl",
                     -- (southern France: the city's airport named after the village beside it)
-                    perpignan = "rivesaltes", carcassonne = "salvaza" },
+                    perpignan = "rivesaltes", carcassonne = "salvaza",
+                    -- (transatlantic destinations: the city's or island's one large or international airport named
+                    -- after a person; Toronto's other, CITY CENTRE, is a small field)
+                    toronto = "lester b pearson", antigua = "v c bird", ["saint maarten"] = "princess juliana",
+                    ["st maarten"] = "princess juliana", ["sint maarten"] = "princess juliana" },
   -- prepositions before a place named by its name ("at Barajas", "over Schiphol")
   place_words = { "at", "over", "above", "near", "from", "overhead" },
   -- A city or airport named to describe an aircraft or airspace, no place instructed: said before one of
