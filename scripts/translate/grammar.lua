@@ -7286,6 +7286,24 @@ end
 -- reply naming them, or nil. A phrase runs from its word to the next
 -- instruction word, "and"/"then", or punctuation other than a comma (a class
 -- with `one_value`: to its first number, inclusive).
+-- The end of a clock time of four figures, hours and minutes ("1215", "one two one five"), said straight after
+-- "after" or "before" within the four tokens after i ("cross GOMUP at or after 1215", "not before one two one
+-- five") and ending its clause (a value after it, "... after 1215 at FL390", is the crossing's: none); nil when none.
+function G:clock_limit(i)
+  for k = i + 1, math.min(#self.t, i + 4) do
+    if self:word(k, "after before") then
+      local q = self:quantities(k + 1, math.min(#self.t + 1, k + 6))[1]
+      local four = q and (q.e - q.b == 4 or (q.e - q.b == 1 and self.t[q.b].text:match("^%d%d%d%d$") ~= nil))
+      local closes = q and (not self.t[q.e] or self.t[q.e].kind == "punct" or self:word(q.e, "and then"))
+      if four and closes and q.b == k + 1 and q.kind == "plain" and q.value % 1 == 0 and q.value < 2400
+          and q.value % 100 < 60 then
+        return q.e
+      end
+      return nil
+    end
+  end
+  return nil
+end
 function G:not_simulated()
   local found, seen, after = {}, {}, {}
   local i = 1
@@ -7308,6 +7326,7 @@ function G:not_simulated()
             and not (c.not_to_profile and self:profile_speed_resumed(i))
             and not (c.no_value and self:value_next(i))
             and not (c.no_number_after and self.t[i + 2] and self.t[i + 2].kind == "number")
+            and (not c.clock or self:clock_limit(i))
             and not (c.not_after and self:word(i - 1, c.not_after)) and not self:word(i + 1, "not")
             and (not c.bare or self:said_bare(i)) and (not c.manner or self:said_as_manner(i))
             and (not c.rate_manner or self:rate_manner(i)) then
@@ -7338,7 +7357,8 @@ function G:not_simulated()
         end
         i, e = b, rate_e
       end
-      while e <= #self.t and not class.manner and not class.rate_manner do
+      if class.clock then e = self:clock_limit(i) end
+      while e <= #self.t and not class.manner and not class.rate_manner and not class.clock do
         local x = self.t[e]
         comma = comma or (x.kind == "punct" and x.text == ",")
         -- (a comma goes on: "hold at BAKUR, left hand pattern, inbound track 270" is one clearance)

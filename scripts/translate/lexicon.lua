@@ -1055,7 +1055,7 @@ return {
   -- the route of the one aircraft addressed is asked (G:limit_off_route); `no_number_after`: no phrase when a
   -- number follows its `near` word; `not_to_profile`: none said to an aircraft flying its route's profile
   -- (G:profile_speed_resumed); `station_before`: one or two capitalised words straight before its word, the
-  -- station named, are the phrase's too
+  -- station named, are the phrase's too; `clock`: see its entry
   not_simulated = {
     -- ("squak", "sqwk": squawk typed short)
     { what = "transponder codes", words = "squawk squawking sq squak sqwk sqk",
@@ -1168,6 +1168,11 @@ return {
     { what = "position reports", words = "report reporting",
       near = { "passing", "reaching", "leaving", "established", "abeam", "overhead", "over", "crossing",
                "vacating", "when", "at", "steady" } },
+    -- "cross GOMUP at or after 1215", "crossing 55N20 not before one two one five": a time to cross a place at
+    -- (`clock`: only before a clock time of four figures after "after" or "before", G:clock_limit; the phrase
+    -- ends with that time)
+    { what = "time constraints", words = "cross crossing", near = { "#waypoint" }, window = 1,
+      and_near = { { "after", "before" }, 3 }, clock = true },
     -- "climb FL400, on reaching report", "when level report": the report asked for said after its condition,
     -- no condition of an instruction
     { what = "position reports", words = "on upon when once", near = { "reaching", "level" }, window = 1,

@@ -11629,3 +11629,12 @@ do
     asked(ex("KLM 605 set destination Paris"), "a city of two large airports")
   end
 end
+
+-- Cycle 49 (f120): a time to cross a place ("cross WPA at or after 1215", "not before one two one five") ending its
+-- clause is noted as not simulated; with a value after it the crossing is asked as before
+do
+  local _, ex = scene({ "CRE KLM12 A320 52.3 4.7 270 FL300 280", "DEFWPT WPA 52.3 4.0", "ADDWPT KLM12 WPA" })
+  check_eq(ex("KLM12 climb FL340, cross WPA at or after one two one five"), "ALT KLM12 FL340")
+  check_eq(ex("KLM12 climb FL340, cross WPA not before 1215"), "ALT KLM12 FL340")
+  asked(ex("KLM12 cross WPA at or after 1215 at FL340"), "a level after the time: the crossing's")
+end
