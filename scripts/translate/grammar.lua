@@ -4098,6 +4098,16 @@ function G:when_reached(s)
   if #self:quantities(c, s.trig) > 0 then return false end
   local verb = self:skip_fillers(c + 1)
   if self:word_in(c + 1, s.trig, "there level lvl") then return true end
+  -- ("when you're at that speed", "once it is at the speed": the speed of the instruction before, reached; only
+  -- a subject, "at" and "that" or "the" before "speed", straight before the instruction)
+  local at = self:find_word(c + 1, s.trig, "speed")
+  if at < s.trig and self:skip_fillers(at + 1) == s.trig and self:word(at - 1, "that the")
+      and self:word(at - 2, "at") then
+    for i = c + 1, at - 3 do
+      if not (self.t[i].filler or self:word(i, "you you're are it it's is")) then return false end
+    end
+    return true, "speed"
+  end
   -- ("when reaching", "when you reach it", "once it reaches that", "when you hit it": the level of the
   -- instruction before; "once you have it", "when you've got it": its value, held)
   local subject = self:word(verb, "you it he she they")
@@ -4682,9 +4692,12 @@ function G:at_waypoint(s, spec)
         -- an instruction with its own value said before the crossing ("descend to FL120, cross DESDI at
         -- or below FL150"): its command first, from the words before the crossing. A level to be reached by
         -- the waypoint is that constraint alone, never a level cleared now as well ("descend FL100 to be
-        -- level by BIG": the AT constraint only)
+        -- level by BIG": the AT constraint only), except above the aircraft: the constraint alone climbs it
+        -- nowhere with VNAV off, so "climb FL370 to be level by DOGAL" is the climb cleared now and the
+        -- constraint
         local lead = be_at and be_at < r.b and be_at - 2 or r.b - 1
-        if spec and spec.handler and not level_by and s.trig < lead and #self:quantities(s.b, lead) > 0 then
+        local climb = level_by and now and now.alt_ft and level_by.value > now.alt_ft + 50
+        if spec and spec.handler and (climb or not level_by) and s.trig < lead and #self:quantities(s.b, lead) > 0 then
           self[spec.handler](self, { intent = s.intent, b = s.b, trig = s.trig, e = lead }, spec)
         end
         -- "cross SUGOL at or above FL150", "at least 250 knots": BlueSky's AT sets the exact value, so a
@@ -6777,18 +6790,24 @@ end
 
 -- True when one of `near` (words or typed numbers as written; "#number"
 -- any number, "#waypoint" a waypoint name (a navaid's kind alone is none: "until 10 DME", "the VOR"),
--- "#frequency" a typed radio frequency of the VHF air band, 118.000 to 136.975 MHz with its decimals:
--- "129.2") is within 4 tokens after i.
+-- "#frequency" a radio frequency of the VHF air band, 118.000 to 136.975 MHz with its decimals, typed, "129.2",
+-- or said digit by digit with its point, "one two eight decimal five") is within 4 tokens after i.
 local function frequency(t)
   local mhz = t.kind == "number" and t.text:match("^1[123]%d%.%d+$") and tonumber(t.text)
   return mhz and mhz >= 118 and mhz < 137
+end
+function G:frequency_said(k)
+  if frequency(self.t[k]) then return true end
+  if not self.t[k].number_word then return false end
+  local q = self:quantities(k, math.min(#self.t + 1, k + 8))[1]
+  return q ~= nil and q.b == k and q.kind == "plain" and q.value >= 118 and q.value < 137 and q.value % 1 ~= 0
 end
 function G:near_any(i, near, window)
   for k = i + 1, math.min(#self.t, i + (window or 4)) do
     local t = self.t[k]
     for _, w in ipairs(near) do
       if (w == "#number" and t.kind == "number") or (w == "#number" and t.number_word)
-          or (w == "#frequency" and frequency(t))
+          or (w == "#frequency" and self:frequency_said(k))
           or (w == "#waypoint" and #self:refs_in(k, k + 1, "waypoint") > 0 and not self:word(k, "@navaid_kinds"))
           or ((t.kind == "word" or t.kind == "number") and t.text == w) then
         return true
@@ -7308,6 +7327,24 @@ end
 -- reply naming them, or nil. A phrase runs from its word to the next
 -- instruction word, "and"/"then", or punctuation other than a comma (a class
 -- with `one_value`: to its first number, inclusive).
+-- The end of a clock time of four figures, hours and minutes ("1215", "one two one five"), said straight after
+-- "after" or "before" within the four tokens after i ("cross GOMUP at or after 1215", "not before one two one
+-- five") and ending its clause (a value after it, "... after 1215 at FL390", is the crossing's: none); nil when none.
+function G:clock_limit(i)
+  for k = i + 1, math.min(#self.t, i + 4) do
+    if self:word(k, "after before") then
+      local q = self:quantities(k + 1, math.min(#self.t + 1, k + 6))[1]
+      local four = q and (q.e - q.b == 4 or (q.e - q.b == 1 and self.t[q.b].text:match("^%d%d%d%d$") ~= nil))
+      local closes = q and (not self.t[q.e] or self.t[q.e].kind == "punct" or self:word(q.e, "and then"))
+      if four and closes and q.b == k + 1 and q.kind == "plain" and q.value % 1 == 0 and q.value < 2400
+          and q.value % 100 < 60 then
+        return q.e
+      end
+      return nil
+    end
+  end
+  return nil
+end
 function G:not_simulated()
   local found, seen, after = {}, {}, {}
   local i = 1
@@ -7330,6 +7367,7 @@ function G:not_simulated()
             and not (c.not_to_profile and self:profile_speed_resumed(i))
             and not (c.no_value and self:value_next(i))
             and not (c.no_number_after and self.t[i + 2] and self.t[i + 2].kind == "number")
+            and (not c.clock or self:clock_limit(i))
             and not (c.not_after and self:word(i - 1, c.not_after)) and not self:word(i + 1, "not")
             and (not c.bare or self:said_bare(i)) and (not c.manner or self:said_as_manner(i))
             and (not c.rate_manner or self:rate_manner(i)) then
@@ -7360,7 +7398,8 @@ function G:not_simulated()
         end
         i, e = b, rate_e
       end
-      while e <= #self.t and not class.manner and not class.rate_manner do
+      if class.clock then e = self:clock_limit(i) end
+      while e <= #self.t and not class.manner and not class.rate_manner and not class.clock do
         local x = self.t[e]
         comma = comma or (x.kind == "punct" and x.text == ",")
         -- (a comma goes on: "hold at BAKUR, left hand pattern, inbound track 270" is one clearance)
@@ -7430,6 +7469,16 @@ function G:not_simulated()
           break
         end
         e = e + 1
+      end
+      -- ("then Gander on 128.5", "Shanwick Oceanic on ..."): with `station_before`, one or two capitalised words
+      -- straight before the phrase, no aircraft, keyword or instruction word, are the station named, part of it
+      for _ = 1, class.station_before and 2 or 0 do
+        local w = self.t[i - 1]
+        if not (w and w.kind == "word" and w.raw:match("^%u") and not w.keyword and not self:intent_at(i - 1)
+            and #self:refs_in(i - 1, i, "aircraft") == 0) then
+          break
+        end
+        i = i - 1
       end
       -- "when passing FL250 contact Langen 120.8": a condition said before the phrase is part of it; so is
       -- the position it is said at ("at 30 West contact Gander") and the place it waits for ("after DETAK
@@ -7609,6 +7658,27 @@ function G:crossing_without_place()
       if self:word(k, "@waypoint_nouns navaid beacon") and not self:has_ref(k, k + 2, "waypoint") then
         self.ask = string.format("Which %s should it cross? Please name it.", self.t[k].text)
         return
+      end
+    end
+  end
+end
+
+-- "cleared to Dubai via track Charlie", "direct OMDB via the flight planned route": a direct-to issued in a request
+-- whose "via" names no waypoint, quantity or aircraft in its clause (an oceanic track, an airway, a route by its
+-- name) is asked: the route said is no straight line to the place, and squawk cannot fly it.
+function G:direct_via_unread()
+  local direct
+  for _, line in ipairs(self.out) do direct = direct or line:match("^DIRECT %S+ (%S+)$") end
+  if not direct then return end
+  for i = self:find_word(1, #self.t + 1, "via"), #self.t do
+    if self:word(i, "via") then
+      local e = i + 1
+      while self.t[e] and self.t[e].kind ~= "punct" and not self:word(e, "and then") do e = e + 1 end
+      local named = false
+      for _, r in ipairs(self.refs) do named = named or (r.b > i and r.b < e) end
+      if e > i + 1 and not named and #self:quantities(i + 1, e) == 0 then
+        return self:need(string.format("I have %s. squawk would fly straight to %s, not '%s': which waypoints "
+          .. "does that route pass? Please give them, or say the direct-to alone.", table.concat(self.out, " ; "), direct, self:raw(i, e)))
       end
     end
   end
@@ -8963,6 +9033,63 @@ function G.id_label(text, world)
   return (G.id_labels[letters] or CM_STUDY[letters] or before) and rest or text
 end
 
+-- "after passing fifty-six north twenty west climb FL410", "maintain Mach .84 until 40 north 60 west": a latitude
+-- and a longitude in whole degrees said straight after one another (a comma between or none), for an aircraft
+-- named in the request whose route holds the one named point the navdata has at exactly that position (the NAT
+-- points "56N20", "40N60"), are that point: the text is returned with the position's words replaced by its name,
+-- so that every instruction reading a waypoint ("at", "after", "until", "cross ... at", "to be level by") reads
+-- it. A request with a word of an instruction that takes a position (create, move, define or add a waypoint, a
+-- wind) keeps the position as said, as does one whose degrees have a fraction or whose point no route of an
+-- aircraft named holds. `u` is the utterance of `text`; nil when nothing was replaced.
+G.position_args = { lat = true, lon = true }
+function G.route_points_said(text, u, world)
+  if not world.waypoints_at then return nil end
+  local toks = u:tokens()
+  local qs = u:quantities(1, #toks + 1)
+  local lat
+  for _, q in ipairs(qs) do lat = lat or (q.kind == "lat" and q) end
+  if not lat then return nil end
+  local held = {}  -- (upper-case name -> the name as its route holds it)
+  for _, r in ipairs(u:refs()) do
+    for _, a in ipairs(r.kind == "aircraft" and r.exists and world.aircraft or {}) do
+      if (a.id or ""):upper() == r.name:upper() then
+        for _, w in ipairs(a.route or {}) do held[w:upper()] = w end
+      end
+    end
+  end
+  if not next(held) then return nil end
+  for _, t in ipairs(toks) do
+    for _, r in ipairs(t.kind == "word" and RULES_BY_WORD[t.text] or {}) do
+      for _, arg in ipairs(not r.any and r.intent and M.intents[r.intent].args or {}) do
+        if G.position_args[arg] then return nil end
+      end
+    end
+  end
+  local spans = {}  -- ({b, e, name}: tokens [b, e) said for the point `name`)
+  for k, q in ipairs(qs) do
+    local lon = qs[k + 1]
+    if q.kind == "lat" and lon and lon.kind == "lon" and q.value % 1 == 0 and lon.value % 1 == 0
+        and (lon.b == q.e or (lon.b == q.e + 1 and toks[q.e].text == ",")) then
+      local found = {}
+      for _, id in ipairs(world.waypoints_at(q.value, lon.value)) do
+        if held[id:upper()] then found[#found + 1] = held[id:upper()] end
+      end
+      if #found == 1 then spans[#spans + 1] = { b = q.b, e = lon.e, name = found[1] } end
+    end
+  end
+  if #spans == 0 then return nil end
+  -- (each token's bytes, found in order in the text, case aside; a token not found leaves the text as it is)
+  local lower, at, starts, ends = text:lower(), 1, {}, {}
+  for k = 1, spans[#spans].e - 1 do
+    local b, e = lower:find(toks[k].raw:lower(), at, true)
+    if not b then return nil end
+    starts[k], ends[k], at = b, e, e + 1
+  end
+  local put, done = tokens.splicer(text)
+  for _, sp in ipairs(spans) do put(starts[sp.b], sp.name, ends[sp.e - 1] + 1) end
+  return done()
+end
+
 function M.translate(text, world)
   local said = text
   world = world or {}
@@ -9154,6 +9281,11 @@ function M.translate(text, world)
   local apart
   text, apart = set_apart(types.join(text, TYPES.phrases))
   local u = squawk.translate.utterance(text, world, NAMES)
+  local points = G.route_points_said(text, u, world)
+  if points then
+    text = points
+    u = squawk.translate.utterance(text, world, NAMES)
+  end
   local toks = u:tokens()
   local g = setmetatable({ u = u, t = toks, words = word_texts(toks), refs = u:refs(), world = world,
     fleet = world.aircraft, out = {}, qcache = {}, taken = {}, noted = {}, triggers = {}, apart = apart,
@@ -9257,6 +9389,7 @@ function M.translate(text, world)
   if not g.ask then g:discretion_without_level() end
   if not g.ask then g:crossing_without_place() end
   if not g.ask then g:direct_when_able() end
+  if not g.ask then g:direct_via_unread() end
   g:same_again(same)
   if not g.ask then g:forgotten() end
   if not g.ask then g:described() end

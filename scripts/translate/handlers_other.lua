@@ -3036,8 +3036,12 @@ return function(H, f, compass)
     return self.t[ends].text == "?" and (self:word(first, "is are what what's whats which")
       or self:word_in(1, ends, "check whether"))
   end
+  -- (a switch asked about: a question, or a request opening with "what" and no "on" or "off" in it, "what's the
+  -- conflict detection setting", or with "is" or "are", "is conflict detection on": its state shown, never set)
   function m:switch(s, spec)
-    if self:asks_setting() then return self:emit(spec.cmd) end
+    if self:asks_setting(self:on_off(s) < 0) or self:word(self:skip_fillers(1), "is are") then
+      return self:emit(spec.cmd)
+    end
     -- "run conflict detection every 2 seconds": the interval of detection (DT ASAS); switched on too
     -- only when said ("turn on detection every 2 seconds")
     if spec.cmd == "ASAS" then

@@ -1054,7 +1054,8 @@ return {
   -- `no_value`: none with a value said straight after its word (G:value_next); `routed`: a place it names off
   -- the route of the one aircraft addressed is asked (G:limit_off_route); `no_number_after`: no phrase when a
   -- number follows its `near` word; `not_to_profile`: none said to an aircraft flying its route's profile
-  -- (G:profile_speed_resumed)
+  -- (G:profile_speed_resumed); `station_before`: one or two capitalised words straight before its word, the
+  -- station named, are the phrase's too; `clock`: see its entry
   not_simulated = {
     -- ("squak", "sqwk": squawk typed short)
     { what = "transponder codes", words = "squawk squawking sq squak sqwk sqk",
@@ -1064,6 +1065,9 @@ return {
     -- a hand-off said with another verb before the frequency ("call Vienna on 129.2", "switch to approach
     -- 119.1", "over to Wien 134.35", "go to 129.2")
     { what = "radio frequencies", words = "call switch over go change", near = { "#frequency" } },
+    -- "then Gander on 128.5", "Shanwick on one two seven decimal six": a station named, then "on" and its frequency
+    -- (`station_before`: the station's name straight before "on" is the phrase's too, G:not_simulated)
+    { what = "radio frequencies", words = "on", near = { "#frequency" }, window = 1, station_before = true },
     { what = "approach clearances", words = "ils rnav rnp localizer localiser glideslope glidepath vor",
       near = { "approach", "established", "intercept", "cleared", "runway", "#number" } },
     { what = "approach clearances", words = "cleared clear",
@@ -1164,6 +1168,15 @@ return {
     { what = "position reports", words = "report reporting",
       near = { "passing", "reaching", "leaving", "established", "abeam", "overhead", "over", "crossing",
                "vacating", "when", "at", "steady" } },
+    -- "cross GOMUP at or after 1215", "crossing 55N20 not before one two one five": a time to cross a place at
+    -- (`clock`: only before a clock time of four figures after "after" or "before", G:clock_limit; the phrase
+    -- ends with that time)
+    { what = "time constraints", words = "cross crossing", near = { "#waypoint" }, window = 1,
+      and_near = { { "after", "before" }, 3 }, clock = true },
+    -- "climb FL400, on reaching report", "when level report": the report asked for said after its condition,
+    -- no condition of an instruction
+    { what = "position reports", words = "on upon when once", near = { "reaching", "level" }, window = 1,
+      and_near = { { "report" }, 1 } },
     -- "descend 4000, report the field in sight", "report traffic in sight": after an instruction, a sighting the
     -- pilot reports, no instruction (alone it is asked)
     { what = "position reports", words = "report", near = { "sight", "visual" }, window = 4,
@@ -1292,7 +1305,11 @@ return {
                     manila = "ninoy aquino intl", jakarta = "soekarno hatta intl", hanoi = "noibai intl",
                     saigon = "tansonnhat intl", surabaya = "juanda", denpasar = "bali intl",
                     -- (southern France: the city's airport named after the village beside it)
-                    perpignan = "rivesaltes", carcassonne = "salvaza" },
+                    perpignan = "rivesaltes", carcassonne = "salvaza",
+                    -- (transatlantic destinations: the city's or island's one large or international airport named
+                    -- after a person; Toronto's other, CITY CENTRE, is a small field)
+                    toronto = "lester b pearson", antigua = "v c bird", ["saint maarten"] = "princess juliana",
+                    ["st maarten"] = "princess juliana", ["sint maarten"] = "princess juliana" },
   -- prepositions before a place named by its name ("at Barajas", "over Schiphol")
   place_words = { "at", "over", "above", "near", "from", "overhead" },
   -- A city or airport named to describe an aircraft or airspace, no place instructed: said before one of

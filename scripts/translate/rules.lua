@@ -462,6 +462,11 @@ return function(intent, rule, words)
     local r = g:refs_in(i - 2, i - 1, "waypoint")[1]
     return r ~= nil and r.e == i - 1 and g:word(r.b - 1, "cross crossing")
   end }
+  -- "when you're at that speed descend FL120", "once it is at the speed": the speed of the instruction before,
+  -- reached (G:when_reached), no speed instruction of its own
+  rule { "speed", false, prev = { 1, "that the" }, when = function(g, i)
+    return g:word(i - 2, "at") and g:find_word(math.max(1, i - 5), i - 2, "when once") < i - 2
+  end }
   -- "climb FL380, passing FL360 Mach .79", "when passing FL300 M.77", "climb FL370, reaching Mach .79": a
   -- Mach number said with no verb straight after a level passed or reached (or "reaching" alone: the
   -- level cleared) is a speed instruction of its own, which waits for that level (m:at_altitude); only after
@@ -482,6 +487,19 @@ return function(intent, rule, words)
     end
     if g:word(verb - 1, "on when once") then verb = verb - 1 end
     return not g:word(verb - 1, "report") and g:any_instruction_in(1, verb)
+  end }
+  -- "speed 290 knots until AKELI, then Mach .84", "reduce 250 knots, then Mach point seven eight": a Mach number said
+  -- with no verb straight after "then", in a request that gave a speed before it, is the next speed instruction
+  rule { "mach", "spd", prev = { 2, "then" }, when = function(g, i)
+    local q = g:quantities(i, math.min(#g.t + 1, i + 4))[1]
+    if not (q and q.kind == "mach" and q.b == i) then return false end
+    local k = i - 1
+    while k >= 1 and (g.t[k].filler or g.t[k].kind == "punct") do k = k - 1 end
+    if not g:word(k, "then") then return false end
+    for _, before in ipairs(g:quantities(1, k)) do
+      if before.kind == "speed" or before.kind == "mach" then return true end
+    end
+    return false
   end }
   -- "go to 250 knots", "go Mach point eight": a speed with its unit straight after "go" (or "go to") is a speed
   -- instruction (waiting for a level said before it: "when you're passing FL300 go Mach .8", m:at_altitude)

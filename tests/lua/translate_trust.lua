@@ -11584,3 +11584,104 @@ do
   check_eq(ex("UAL88 climb FL350 speed .82"), "ALT UAL88 FL350 ; SPD UAL88 M0.82")
   check_eq(ex("UAL88 climb FL350, then when level speed .82"), "ALT UAL88 FL350 ; ATALT UAL88 FL350 SPD UAL88 M0.82")
 end
+
+-- Cycle 49 (f120): oceanic controllers. A latitude and longitude in whole degrees said for an aircraft whose route
+-- holds the named point there ("fifty-six north twenty west", the NAT point 56N20) is that point wherever a
+-- waypoint is read; a position said to create, move or for a wind stays the position
+do
+  local _, ex = navscene({ "CRE UAL82 B763 61.0 -36.0 88 FL380 265", "ADDWPT UAL82 61N30", "ADDWPT UAL82 61N20",
+    "CRE ICE9 B752 63.0 -35.0 80 FL350 285" }, "NAT points said in degrees")
+  if ex then
+    check_eq(ex("UAL82 after passing sixty one north twenty west climb FL390"), "AT UAL82 61N20 DO ALT UAL82 FL390")
+    check_eq(ex("United 82, at 61 north 30 west, descend flight level three six zero"),
+      "AT UAL82 61N30 DO ALT UAL82 FL360")
+    check_eq(ex("UAL82 maintain FL380 until 61 north 20 west then descend FL360"),
+      "ALT UAL82 FL380 ; AT UAL82 61N20 DO ALT UAL82 FL360")
+    check_eq(ex("UAL82 cross 61 north 20 west at FL390"), "AT UAL82 61N20 ALT FL390")
+    check_eq(ex("move UAL82 to 61 north 20 west"), "MOVE UAL82 61 -20")
+    asked(ex("UAL82 at 61 north 25 west climb FL390"), "no named point on the route at 61 -25")
+    asked(ex("ICE9 at 61 north 20 west climb FL390"), "61N20 is on another aircraft's route only")
+  end
+end
+
+-- Cycle 49 (f120): a climb to a level to be reached by a waypoint is the climb cleared now and the constraint (the
+-- constraint alone climbs nothing with VNAV off); a descent stays the constraint alone (translate61's decision)
+do
+  local _, ex = scene({ "CRE KLM12 A320 52.3 4.7 270 FL300 280", "DEFWPT WPA 52.3 4.0", "ADDWPT KLM12 WPA" })
+  check_eq(ex("KLM12 climb FL340 to be level by WPA"), "ALT KLM12 FL340 ; AT KLM12 WPA ALT FL340")
+  check_eq(ex("KLM12 climb to reach FL340 by WPA"), "ALT KLM12 FL340 ; AT KLM12 WPA ALT FL340")
+  check_eq(ex("KLM12 descend FL240 to be level by WPA"), "AT KLM12 WPA ALT FL240")
+  asked(ex("KLM12 climb FL340 by WPA"), "'by' with no 'level' or 'reach'")
+end
+
+-- Cycle 49 (f120): "when you're at that speed" waits for the speed given before it (ATSPD); with no speed before, or
+-- before an instruction it cannot hold, it is asked, never dropped
+do
+  local _, ex = scene({ "CRE KLM12 A320 52.3 4.7 270 FL300 280", "DEFWPT WPA 52.3 4.0", "ADDWPT KLM12 WPA" })
+  check_eq(ex("KLM12 reduce speed 250 knots, then when you're at that speed descend FL200"),
+    "SPD KLM12 250 ; ATSPD KLM12 250 ALT KLM12 FL200")
+  check_eq(ex("KLM12 reduce speed 250 knots, once it's at that speed descend FL200"),
+    "SPD KLM12 250 ; ATSPD KLM12 250 ALT KLM12 FL200")
+  asked(ex("KLM12 when you're at that speed descend FL200"), "no speed given before")
+  asked(ex("KLM12 descend FL200, when you're at that speed turn left heading 200"), "a level before, no speed")
+end
+
+-- Cycle 49 (f120): a direct-to whose "via" names no waypoint ("cleared to Dubai via track Charlie") is asked: the route
+-- said is no straight line
+do
+  local _, ex = scene({ "CRE KLM12 A320 52.3 4.7 270 FL300 280", "DEFWPT WPA 52.3 4.0", "ADDWPT KLM12 WPA" })
+  asked(ex("KLM12 direct WPA via track Charlie"), "a track letter after 'via'")
+  asked(ex("KLM12 proceed direct WPA via the flight planned route"), "the route by its name after 'via'")
+  check_eq(ex("KLM12 direct WPA"), "DIRECT KLM12 WPA")
+end
+
+-- Cycle 49 (f120): a switch asked about ("what's the conflict detection setting", "is conflict detection on") shows
+-- its state, never sets it
+do
+  local _, ex = scene({ "CRE KLM12 A320 52.3 4.7 270 FL300 280" })
+  check_eq(ex("what's the conflict detection setting"), "ASAS")
+  check_eq(ex("is conflict detection on"), "ASAS")
+  check_eq(ex("conflict detection on"), "ASAS ON")
+end
+
+-- Cycle 49 (f120): "on reaching report" is the report asked for, no condition; a station named before "on" and its
+-- frequency, said or typed ("then Gander on one two eight decimal five"), is a hand-off: both noted, not simulated
+do
+  local _, ex = scene({ "CRE KLM12 A320 52.3 4.7 270 FL300 280" })
+  check_eq(ex("KLM12 climb FL340, on reaching report"), "ALT KLM12 FL340")
+  check_eq(ex("KLM12 climb FL340, then Maastricht on one three two decimal three five"), "ALT KLM12 FL340")
+  check_eq(ex("KLM12 climb FL340, Maastricht on 132.35"), "ALT KLM12 FL340")
+  check_eq(ex("KLM12 climb FL340, on reaching reduce 250 knots"), "ALT KLM12 FL340 ; ATALT KLM12 FL340 SPD KLM12 250")
+  asked(ex("KLM12 climb FL340, Maastricht one three two decimal three five"), "a frequency with no 'on' or verb")
+end
+
+-- Cycle 49 (f120): a Mach number said with no verb straight after "then", after a speed given, is the next speed
+-- instruction ("speed 290 knots until WPA, then Mach .78"); both at once are asked
+do
+  local _, ex = scene({ "CRE KLM12 A320 52.3 4.7 270 FL300 280", "DEFWPT WPA 52.3 4.0", "ADDWPT KLM12 WPA" })
+  check_eq(ex("KLM12 speed 290 knots until WPA, then Mach decimal seven eight"),
+    "SPD KLM12 290 ; AT KLM12 WPA DO SPD KLM12 M0.78")
+  asked(ex("KLM12 reduce 290 knots, then Mach .78"), "two speeds at once")
+end
+
+-- Cycle 49 (f120): a transatlantic destination said by its city or island, whose one large airport the navdata names
+-- after a person (lexicon.city_airports), is that airport; a city of several ("Paris") is asked
+do
+  local _, ex = navscene({ "CRE KLM605 B772 50.5 -38.0 258 FL360 278", "CRE AAL1329 B738 36.5 -66.0 195 FL360 278" },
+    "transatlantic destinations by city")
+  if ex then
+    check_eq(ex("KLM 605 set destination Toronto"), "DEST KLM605 CYYZ")
+    check_eq(ex("American 1329 destination Antigua"), "DEST AAL1329 TAPA")
+    check_eq(ex("American 1329 set destination Saint Maarten"), "DEST AAL1329 TNCM")
+    asked(ex("KLM 605 set destination Paris"), "a city of two large airports")
+  end
+end
+
+-- Cycle 49 (f120): a time to cross a place ("cross WPA at or after 1215", "not before one two one five") ending its
+-- clause is noted as not simulated; with a value after it the crossing is asked as before
+do
+  local _, ex = scene({ "CRE KLM12 A320 52.3 4.7 270 FL300 280", "DEFWPT WPA 52.3 4.0", "ADDWPT KLM12 WPA" })
+  check_eq(ex("KLM12 climb FL340, cross WPA at or after one two one five"), "ALT KLM12 FL340")
+  check_eq(ex("KLM12 climb FL340, cross WPA not before 1215"), "ALT KLM12 FL340")
+  asked(ex("KLM12 cross WPA at or after 1215 at FL340"), "a level after the time: the crossing's")
+end
