@@ -652,8 +652,9 @@ return function(intent, rule, words)
   rule { "heading", false, prev = { 1, "it's is was are they're" } }
   rule { "heading hdg headings", "hdg" }
   -- "NATO01 track 090", "fly track 240", "descend FL250 and track 220": a track of three digits (up to 360) flown
-  -- as a heading; a track named with a noun before it ("inbound track 270", "the tanker track") is none
-  rule { "track", "hdg", not_prev = { 1, "inbound outbound the a your its tanker" }, when = function(g, i)
+  -- as a heading; a track named with a noun before it ("inbound track 270", "the tanker track") is none; so is a
+  -- course ("take course 090", "fly course 240": the Russian-speaking controller's word for the heading)
+  rule { "track course", "hdg", not_prev = { 1, "inbound outbound the a your its tanker" }, when = function(g, i)
     local t = g.t[i + 1]
     return t ~= nil and t.kind == "number" and t.text:match("^%d%d%d$") ~= nil and tonumber(t.text) <= 360
   end }

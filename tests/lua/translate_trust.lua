@@ -11650,3 +11650,12 @@ do
   check_eq(ex("take LOG52 and sort his speed out, 200 knots"), "SPD LOG52 200")
   asked(ex("EZY45 climb FL140, ask the AI"), "the teammate named with no handover")
 end
+
+-- Cycle 49 (f123): "course" with three digits up to 360 ("take course 090", "fly course 240") is the heading, as
+-- "track 090" is; a course named with a noun before it ("the inbound course 270") is none, and asked
+do
+  local _, ex = scene({ "CRE AFL17 A333 55.70 36.80 060 FL130 290" })
+  check_eq(ex("AFL17 take course 090"), "HDG AFL17 90")
+  check_eq(ex("AFL17 fly course 240, descend FL100"), "HDG AFL17 240 ; ALT AFL17 FL100")
+  asked(ex("AFL17 the inbound course 270"), "a course named by its noun")
+end
