@@ -4053,7 +4053,7 @@ end
 -- the token after the waypoint's name, name }, else nil.
 function G:until_then(segs, k)
   local s, p = segs[k], segs[k - 1]
-  if not p or not s["then"] then return nil end
+  if not p or not (s["then"] or self:word(s.trig, "@then_words")) then return nil end
   for u = p.trig + 1, s.trig - 1 do
     if self:word(u, "until till") then
       local r = self:refs_in(u + 1, s.trig, "waypoint")[1]
@@ -4065,6 +4065,25 @@ function G:until_then(segs, k)
       end
     end
   end
+  return nil
+end
+
+-- The kind ("spd" or "alt") of a value said bare after the "then" at i, straight after "until" (or "till") and a
+-- waypoint, when the clause before holds a value of that kind ("maintain 280 knots until PEKIR then 250": a speed,
+-- with or without its unit; "maintain FL160 until PEKIR then FL120": a level by its unit, FL or feet); nil otherwise.
+function G:until_then_value(i)
+  local r = self.refs and self:refs_in(math.max(1, i - 4), i, "waypoint")[1]
+  if not r or self:skip_fillers(r.e) ~= i or not self:word(r.b - 1, "until till") then return nil end
+  local q = self:quantities(i + 1, i + 3)[1]
+  if not q or q.b ~= self:skip_fillers(i + 1) then return nil end
+  local before = self:quantities(math.max(1, r.b - 8), r.b - 1)
+  local p = before[#before]
+  if not p or p.e ~= r.b - 1 then return nil end
+  local after = self.t[q.e]
+  if after and after.kind ~= "punct" then return nil end
+  local function speed(x) return x.kind == "speed" or x.kind == "mach" end
+  if speed(p) and (speed(q) or (q.kind == "plain" and q.value >= 100 and q.value <= 400)) then return "spd" end
+  if p.kind == "alt" and q.kind == "alt" and (q.fl or self:word(q.e - 1, "@feet")) then return "alt" end
   return nil
 end
 

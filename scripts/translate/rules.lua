@@ -697,6 +697,11 @@ return function(intent, rule, words)
   rule { "due", "hdg", next = "@compass" }
   rule { "go turn", "hdg", next = "@compass" }
   rule { "left right", "hdg", prev = { 1, "go bear then" } }  -- "go left then climb", "speed 250, then left": a turn
+  -- "maintain 280 knots until PEKIR then 250", "maintain FL160 until PEKIR then FL120": a value of the limited
+  -- instruction's kind said bare after "until" a place "then" is that instruction again, from the place
+  -- (G:until_then_value)
+  rule { "then", "spd", when = function(g, i) return g:until_then_value(i) == "spd" end }
+  rule { "then", "alt", when = function(g, i) return g:until_then_value(i) == "alt" end }
   rule { "@compass", "hdg", prev = { 1, "then" } }  -- "go up to FL320, then east"  -- "go east", "go northeast": the heading of that point
   rule { "around", false, prev = { 3, "turn" } }
 

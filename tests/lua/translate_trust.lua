@@ -11659,3 +11659,15 @@ do
   check_eq(ex("AFL17 fly course 240, descend FL100"), "HDG AFL17 240 ; ALT AFL17 FL100")
   asked(ex("AFL17 the inbound course 270"), "a course named by its noun")
 end
+
+-- Cycle 49 (f123): a bare value after "until WPT then" of the limited instruction's kind ("maintain 280 knots until
+-- WPB then 250", "maintain FL160 until WPB then FL120") is that instruction again from the waypoint (AT ... DO); a
+-- value of another kind there, or a waypoint off the route, is asked
+do
+  local _, ex = scene({ "DEFWPT WPA 43.9 77.5", "DEFWPT WPB 43.7 77.3", "CRE KZR90 A321 43.95 77.55 220 FL160 280",
+    "ADDWPT KZR90 WPA", "ADDWPT KZR90 WPB" })
+  check_eq(ex("KZR90 maintain 270 knots until WPB then 240"), "SPD KZR90 270 ; AT KZR90 WPB DO SPD KZR90 240")
+  check_eq(ex("KZR90 maintain FL160 until WPB then FL130"), "ALT KZR90 FL160 ; AT KZR90 WPB DO ALT KZR90 FL130")
+  asked(ex("KZR90 maintain 270 knots until WPB then FL130"), "a level after a speed's limit")
+  asked(ex("KZR90 maintain 270 knots until WPC then 240"), "a waypoint that is none of the route's")
+end
