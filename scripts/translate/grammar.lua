@@ -2505,7 +2505,7 @@ end
 -- "reduce speed 250, when speed 250 descend FL120", "..., once at 250 knots turn left heading 180", "..., when
 -- slowed to 250 descend FL120": a condition word in segment s before its instruction word, then words of reaching
 -- (ARRIVING) and perhaps the noun "speed", then a speed (knots or Mach, or a bare number of 40 to 700 after the noun
--- or a verb of slowing), then only the instruction's lead words, is what the instruction waits for: "ATSPD id
+-- or a verb of slowing, or one the request set as the aircraft's speed already), then only the instruction's lead words, is what the instruction waits for: "ATSPD id
 -- value" (the value read), else nil.
 G.speed_held = { alt = true, hdg = true, vs = true, spd = true, maintain = true, direct = true, lnav = true,
   vnav = true }
@@ -2528,10 +2528,12 @@ function G:at_speed(s)
     end
     slowed = slowed or self:word(x, "@speed_verbs")
   end
-  if not (q.kind == "speed" or q.kind == "mach"
-      or ((noun or slowed) and q.kind == "plain" and q.value >= 40 and q.value <= 700)) then
-    return nil
-  end
+  local f = handlers.format
+  -- (a bare number after "at" that this request gave the aircraft as its speed already: "reduce 180 knots, and once
+  -- you're at one eighty descend FL70"; "when 250" with no "at" is asked)
+  local bare = q.kind == "plain" and q.value >= 40 and q.value <= 700
+  local again = bare and not (noun or slowed) and self:word(q.b - 1, "at")
+  if not (q.kind == "speed" or q.kind == "mach" or (bare and (noun or slowed or again))) then return nil end
   local k = self:skip_fillers(q.e)
   while k < s.trig and ((self.t[k].kind == "punct" and self.t[k].text == ",") or self:word(k, "@condition_lead")
       or LINKING[self.words[k]]) do
@@ -2539,8 +2541,12 @@ function G:at_speed(s)
   end
   local ids = k == s.trig and self:acids(s) or {}
   if #ids ~= 1 then return nil end
+  if again then
+    local given = false
+    for _, c in ipairs(self.out) do given = given or c == "SPD " .. ids[1] .. " " .. f.int(q.value) end
+    if not given then return nil end
+  end
   self:mark_used(q.b, q.e)  -- the condition's speed is not the instruction's value
-  local f = handlers.format
   return "ATSPD " .. ids[1] .. " " .. (q.kind == "mach" and f.mach(q.value) or f.int(q.value))
 end
 
@@ -3750,9 +3756,10 @@ function G:parse(b, e)
             or (not self:then_after(segs, k) and self.out[#self.out]:match("^HDG ") and before:match("^ATALT ")
                 and self:word_in(s.b, s.e, "heading hdg"))) then
         self.out[#self.out] = before .. " " .. self.out[#self.out]
-      elseif self:when_reached(s) and not before and #self.out == n_before + 1 and n_before > 0
+      elseif self:when_reached(s) and not before and not at and #self.out == n_before + 1 and n_before > 0
           and self.out[n_before]:match("^DIRECT ") and not self.out[#self.out]:match("^AT ") and not self.ask then
-        -- "dct PTH, once there FL80": the constraint at the waypoint flown to (AT id WPT ALT/SPD value)
+        -- "dct PTH, once there FL80": the constraint at the waypoint flown to (AT id WPT ALT/SPD value); never a
+        -- clause with a condition of its own ("direct BNN, when passing FL110 reduce 220": ATALT)
         local id, wpt = self.out[n_before]:match("^DIRECT (%S+) (%S+)$")
         local cmd, value = self.out[#self.out]:match("^(%u+) " .. (id or ""):gsub("%p", "%%%0") .. " (%S+)$")
         if id and (cmd == "ALT" or cmd == "SPD") then
@@ -4046,7 +4053,7 @@ end
 -- the token after the waypoint's name, name }, else nil.
 function G:until_then(segs, k)
   local s, p = segs[k], segs[k - 1]
-  if not p or not s["then"] then return nil end
+  if not p or not (s["then"] or self:word(s.trig, "@then_words")) then return nil end
   for u = p.trig + 1, s.trig - 1 do
     if self:word(u, "until till") then
       local r = self:refs_in(u + 1, s.trig, "waypoint")[1]
@@ -4058,6 +4065,25 @@ function G:until_then(segs, k)
       end
     end
   end
+  return nil
+end
+
+-- The kind ("spd" or "alt") of a value said bare after the "then" at i, straight after "until" (or "till") and a
+-- waypoint, when the clause before holds a value of that kind ("maintain 280 knots until PEKIR then 250": a speed,
+-- with or without its unit; "maintain FL160 until PEKIR then FL120": a level by its unit, FL or feet); nil otherwise.
+function G:until_then_value(i)
+  local r = self.refs and self:refs_in(math.max(1, i - 4), i, "waypoint")[1]
+  if not r or self:skip_fillers(r.e) ~= i or not self:word(r.b - 1, "until till") then return nil end
+  local q = self:quantities(i + 1, i + 3)[1]
+  if not q or q.b ~= self:skip_fillers(i + 1) then return nil end
+  local before = self:quantities(math.max(1, r.b - 8), r.b - 1)
+  local p = before[#before]
+  if not p or p.e ~= r.b - 1 then return nil end
+  local after = self.t[q.e]
+  if after and after.kind ~= "punct" then return nil end
+  local function speed(x) return x.kind == "speed" or x.kind == "mach" end
+  if speed(p) and (speed(q) or (q.kind == "plain" and q.value >= 100 and q.value <= 400)) then return "spd" end
+  if p.kind == "alt" and q.kind == "alt" and (q.fl or self:word(q.e - 1, "@feet")) then return "alt" end
   return nil
 end
 
@@ -5663,7 +5689,8 @@ function G:described_place(i)
   end
   if not capital(i) then return nil end
   local words, w = self.words, self.world
-  local after = words[i - 1] and D.after[words[i - 1]] and words[i - 2] and D.leads[words[i - 2]]
+  local after = (words[i - 1] and D.after[words[i - 1]] and words[i - 2] and D.leads[words[i - 2]])
+    or self:relative_departure(i - 1) or (words[i - 1] == "from" and self:relative_departure(i - 2))
   for e = capital(i + 1) and i + 2 or i + 1, i + 1, -1 do
     local name = e > i + 1 and self.t[i].text .. " " .. self.t[i + 1].text or self.t[i].text
     if (after or (words[e] and D.before[words[e]])) and (lexicon.city_airports[name]
@@ -5672,6 +5699,23 @@ function G:described_place(i)
     end
   end
   return nil
+end
+
+-- True when the word at i (lexicon.described_places.departs) says where an aircraft comes from in a relative clause
+-- that identifies it ("the Easy that's just departed Luton", "the Ryanair which left Dublin"): a word of `relatives`
+-- before it, only words of `relative_fill` between.
+function G:relative_departure(i)
+  local L = lexicon.described_places
+  local R = G.relative_sets
+  if not R then
+    R = { departs = set_of(L.departs), relatives = set_of(L.relatives), fill = set_of(L.relative_fill) }
+    G.relative_sets = R
+  end
+  local words = self.words
+  if not (words[i] and R.departs[words[i]]) then return false end
+  local k = i - 1
+  while k > i - 4 and words[k] and R.fill[words[k]] do k = k - 1 end
+  return words[k] ~= nil and R.relatives[words[k]] == true
 end
 
 -- lexicon.asides_alone by their first word, each as its words
@@ -5847,9 +5891,19 @@ function G:explained_spans(issued, kinds)
         if self.t[k].kind == "word" and not MEANING[self.t[k].text] and not self.triggers[k] then inside[k] = true end
       end
     end
+    -- "hand Easy 45TK to the AI - AI, turn it ...": the machine teammate (lexicon.addressed_roles.names) named as who
+    -- an aircraft is handed to ("to (the) AI"), or addressed opening a clause, before its comma
+    if w and ADDRESSED[w] == true and (self:word(i - 1, "to") or (self:word(i - 1, "the") and self:word(i - 2, "to"))
+        or ((i == 1 or self.t[i - 1].kind == "punct") and self.t[i + 1] and self.t[i + 1].kind == "punct")) then
+      inside[i] = true
+    end
     -- "a Charlotte arrival", "the arrival into Atlanta": a city named to describe (G:described_place)
     local place_e = self:described_place(i)
     for k = i, place_e and place_e - 1 or 0 do inside[k] = true end
+    -- ("that's just departed Luton", "which departed from Luton": the verb of the relative clause with its place)
+    for k = i - 2, place_e and i - 1 or i - 3 do
+      if self:relative_departure(k) then for x = k, i - 1 do inside[x] = true end end
+    end
     -- "climb FL360, not above": the level said is a limit too, when nothing follows in its clause ("not
     -- above FL370" names another level, asked about)
     if w == "not" and (nw == "above" or nw == "below") then
@@ -7095,8 +7149,8 @@ end
 -- True when token i is a navaid's kind said beside its name: after it ("relocate to TKT VOR at FL300",
 -- "direct Minsk NDB", "over the Spijkerboor VOR at FL180") or before it in the Spanish order ("from the VOR
 -- Bogota", "direct VOR BOG"): the place, no approach (a kind followed by "approach", "TKT VOR approach",
--- "VOR approach", is one). The name is an ident read as a waypoint, or the one or two words beside the kind
--- that name a navaid of that kind anywhere in the navdata.
+-- "VOR approach", is one). The name is an ident read as a waypoint, or the words beside the kind that name a
+-- navaid of that kind anywhere in the navdata: one to three before it ("the Isle of Man VOR"), one or two after it.
 function G:navaid_named_beside(i)
   if not self:word(i, "@navaid_kinds") or self:word(self:skip_fillers(i + 1), "approach") then return false end
   local after = not self:word(i + 1, "@navaid_kinds") and not self:word(i + 2, "approach")
@@ -7112,7 +7166,7 @@ function G:navaid_named_beside(i)
     return t and t.kind == "word" and t.alpha and not t.keyword and not t.filler and not t.number_word
   end
   local phrase = ""
-  for k = i - 1, math.max(1, i - 2), -1 do
+  for k = i - 1, math.max(1, i - 3), -1 do
     if not named or not name_word(k) then break end
     phrase = self.t[k].text .. (phrase == "" and "" or " " .. phrase)
     if #named(phrase, 0, 0, math.huge, kind) > 0 then return true end
@@ -8050,7 +8104,6 @@ end
 local NATIONLESS = set_of(lexicon.nationless_registrations)
 local function spelled_registrations(text, fleet)
   if #fleet == 0 then return text end
-  text = text:gsub("%f[%a]([Xx])[%- ]([Rr][Aa][Yy])%f[%A]", "%1%2")  -- ("X-ray", "x ray": the letter X, as the lexer reads it)
   local spelling = false  -- (a phonetic letter said)
   for w in text:gmatch("[%w]+") do
     if lexicon.phonetic[w:lower()] then
@@ -9191,6 +9244,9 @@ function M.translate(text, world)
     text = text:gsub("(%S)%s+,(%a)", "%1, %2"):gsub("(%f[%w]%a[%w]*),(%a)", "%1, %2")
       :gsub("(%f[%w]%d+),(%a%a)", "%1, %2")
   end
+  -- "Ryanair 92 X-ray", "x ray": the letter X's phonetic word, written apart, is one word before any callsign is
+  -- read
+  if text:find("[Rr][Aa][Yy]") then text = text:gsub("%f[%a]([Xx])[%- ]([Rr][Aa][Yy])%f[%A]", "%1%2") end
   -- "HDG SEL 360", "speed selected 250": a flight-deck selector named after the value's name is that value
   if text:find("[Ss][Ee][Ll]") then
     text = text:gsub("%f[%w]([%a/]+)%s+([Ss][Ee][Ll]%a*)%f[%A]", function(w, sel)

@@ -2007,7 +2007,10 @@ function m:at_altitude(s)
   end
   local qs = self:quantities(a + 1, s.trig)
   local q = qs[1]
-  if not q or q.b ~= a + 1 then return nil end
+  -- ("when passing altitude 7000 feet turn right": the noun of the value passed, said before it)
+  local noun = self:word(a + 1, "altitude height") and q and q.b == a + 2
+    and (q.kind == "alt" or (q.kind == "plain" and q.value >= 1000)) and a + 1
+  if not q or (q.b ~= a + 1 and not noun) then return nil end
   local k = self:skip_fillers(q.e)
   while k < s.trig and (self:word(k, "@condition_lead") or (self.t[k].kind == "punct" and self.t[k].text == ",")
       or SUBJECT_LEAD[self.words[k]] or (s.intent == "spd" and SPEED_LEAD[self.words[k]])
@@ -2033,6 +2036,7 @@ function m:at_altitude(s)
   if #ids == 0 then return nil end
   if groupwise and ((self:state(ids[1]) or {}).alt_ft or 0) < L.groupwise_from_ft then return nil end
   self:mark_used(q.b, q.e)  -- the condition's altitude is not the instruction's value
+  if noun then self:explain(noun, noun + 1) end
   if groupwise then return "ATALT " .. ids[1] .. " " .. f.alt(groupwise, true) end
   if fl_digits then return "ATALT " .. ids[1] .. " " .. f.alt(q.value * 100, true) end
   return "ATALT " .. ids[1] .. " " .. f.alt(q.value, q.fl)

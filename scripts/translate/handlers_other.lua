@@ -1264,6 +1264,24 @@ return function(H, f, compass)
     end
   end
 
+  -- Where no aircraft is sent, a small airfield said by its name alone (no "airport" after it; airport_said_noun)
+  -- whose name a navaid within lexicon.city_nm of it bears under another ident is the navaid ("create ... at
+  -- Clacton, FL100": the CLN VOR, not the EGSQ strip), as a navaid named after a town with a small airfield is
+  -- (m:place_by_name's "direct Perth"); said of an aircraft put on the ground ("on the ground", "ready for
+  -- departure" in [b, e)), the airfield. Nil when that does not hold: a large or medium airport stays itself.
+  function m:small_airfield_navaid(b, e, airport)
+    local w, c = self.world, self.world.airport_class(airport)
+    if c == "LARGE" or c == "MEDIUM" or self.airport_said_noun or self:word_in(b, e, "ground departure takeoff take-off") then
+      return nil
+    end
+    local lat, lon = w.user_waypoint_at(airport)
+    if not lat then return nil end
+    local asked = self.ask
+    local navaid = self:navaid_by_name(b, e, { lat = lat, lon = lon }, L.city_nm)
+    self.ask = asked
+    return navaid and navaid:upper() ~= airport:upper() and navaid or nil
+  end
+
   -- A place said by its name where an aircraft is put or sent: an airport of that name within
   -- lexicon.navaid_range_nm of the aircraft `a` (of any aircraft when `a` is nil), else a navaid of
   -- that name there ("direct Perth" near Scotland is the PTH VOR, not YPPH), else an airport
@@ -1322,6 +1340,8 @@ return function(H, f, compass)
       local at, class = self.world.user_waypoint_at, self.world.airport_class
       local lat, lon = nil, nil
       local k = self.airport_said_at
+      local shared = at and class and not a and k and self:word(k - 1, "@place_words") and self:small_airfield_navaid(b, e, airport)
+      if shared then return shared end
       if at and class and (class(airport) ~= "LARGE" or self.airport_said_city) and not a and k
           and self:word(k - 1, "@place_words")
           and not self:word(k - 1, "at") then
@@ -1655,13 +1675,18 @@ return function(H, f, compass)
             local words = {}
             for k = i + 1, i + n do words[#words + 1] = self.t[k].text end
             local phrase = table.concat(words, " ")
-            local by_city = {}
-            for _, at in ipairs(anchors) do
-              for _, id in ipairs(w.airports_with_words(phrase, at.lat, at.lon, L.city_nm)) do by_city[id] = true end
+            -- (the part said may be the whole of the navdata's name: "Belfast City" is EGAC "CITY", "Belfast
+            -- Aldergrove" EGAA "ALDERGROVE")
+            local by_city, found, seen = {}, {}, {}
+            for _, by in ipairs({ w.airports_with_words, w.airports_named }) do
+              for _, at in ipairs(anchors) do
+                for _, id in ipairs(by(phrase, at.lat, at.lon, L.city_nm)) do by_city[id] = true end
+              end
             end
-            local found = {}
-            for _, id in ipairs(w.airports_with_words(phrase, near.lat, near.lon, range)) do
-              if of_city[id] or by_city[id] then found[#found + 1] = id end
+            for _, by in ipairs({ w.airports_with_words, w.airports_named }) do
+              for _, id in ipairs(by(phrase, near.lat, near.lon, range)) do
+                if (of_city[id] or by_city[id]) and not seen[id] then found[#found + 1], seen[id] = id, true end
+              end
             end
             if #found == 1 then
               self:explain(i, self:word(i + n + 1, "@airport_nouns") and i + n + 2 or i + n + 1)
@@ -1752,7 +1777,7 @@ return function(H, f, compass)
           end
           local id = self:one_named(ids, "airport", phrase, 4)
           if id then
-            self.airport_said_at = i
+            self.airport_said_at, self.airport_said_noun = i, city
             -- (a name without "airport" after it that two large airports bear, "Spartanburg": KSPA and
             -- GREENVILLE SPARTANBURG INTL, is a city's name, not one airport's)
             local with, large = not city and cls and self.world.airports_with_words, 0

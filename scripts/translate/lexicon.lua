@@ -113,6 +113,8 @@ return {
     courtesy = { "please", "kindly", "thanks", "thank", "cheers", "like", "want", "wants", "wish", "let", "lets",
         "mind", "able", "possible", "chance", "ask", "tell", "make", "have", "try", "see", "help", "give",
         "put", "throw", "keep", "set", "bring", "take", "ready", "appreciate", "instruct", "sure",
+        -- an aircraft handed to a teammate to deal with ("can you take Ayline 672 and sort its speed out")
+        "sort",
         -- verbs of opinion that frame a request ("I think the easyJet should go direct")
         "think", "guess", "believe", "suppose", "reckon", "wonder", "hope", "prefer", "realise", "realize",
         "know", "remember", "forget", "forgot", "notice", "grateful", "thankful",
@@ -150,6 +152,8 @@ return {
         "copied", "affirm", "affirmative", "understood", "g'day", "bye",
         -- a request granted, a report acknowledged ("Mach .84 approved", "position report received")
         "approved", "received",
+        -- the pilot asked to acknowledge the instruction just given ("turn left heading 060, acknowledge")
+        "acknowledge",
         -- an airspeed said as indicated ("fly 250 knots indicated", "320 knots IAS": squawk's speeds are
         -- calibrated, the same)
         "indicated", "ias", "cas",
@@ -229,6 +233,8 @@ return {
         "at the moment", "for a moment", "for now", "right now", "for the moment", "in order to", "in that order",
         "in this order", "sorry to bother you", "to be safe", "to be sure", "to be on the safe side", "just in case",
         "after that", "after this",
+        -- an aircraft handed to a teammate ("can you look after Logan 52B for me - ...")
+        "look after",
         -- a demonstration's pointers to the audience ("watch the data block", "here's the fun part")
         "data block", "data blocks", "data tag", "the fun part", "dobry den", "dobar dan", "dober dan", "jo napot", "na shledanou",
         "do widzenia", "do videnia", "kalo taxidi", "kali mera", "kali spera", "buona giornata", "buona serata",
@@ -1320,7 +1326,13 @@ return {
     before = { "arrival", "arrivals", "departures", "inbound", "inbounds", "outbound", "tma", "acc", "fir", "cta",
         "uac", "sector", "airspace", "flow", "stream", "push", "bank" },
     after = { "into", "for", "to" },
-    leads = { "arrival", "arrivals", "inbound", "arriving", "bound", "flight", "flights" } },
+    leads = { "arrival", "arrivals", "inbound", "arriving", "bound", "flight", "flights" },
+    -- where an aircraft comes from said in a relative clause that identifies it, no origin set ("the Easy that's
+    -- just departed Luton, Easy 55KJ, ..."): a word of `departs` after one of `relatives`, words of `relative_fill`
+    -- between (G:relative_departure)
+    departs = { "departed", "departing", "left", "leaving" },
+    relatives = { "that", "that's", "thats", "which", "who", "who's", "whos" },
+    relative_fill = { "just", "has", "have", "had", "is", "was", "now", "recently", "only", "since" } },
   -- kinds of navaid, said beside a navaid's name ("the Pampus VOR, PAM")
   navaid_kinds = { "vor", "ndb", "dme", "vortac", "navaid", "beacon" },
   -- a condition on a place said beside value instructions, which read no place (G:passage_left): a word of

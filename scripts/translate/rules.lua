@@ -670,8 +670,9 @@ return function(intent, rule, words)
   rule { "heading", false, prev = { 1, "it's is was are they're" } }
   rule { "heading hdg headings", "hdg" }
   -- "NATO01 track 090", "fly track 240", "descend FL250 and track 220": a track of three digits (up to 360) flown
-  -- as a heading; a track named with a noun before it ("inbound track 270", "the tanker track") is none
-  rule { "track", "hdg", not_prev = { 1, "inbound outbound the a your its tanker" }, when = function(g, i)
+  -- as a heading; a track named with a noun before it ("inbound track 270", "the tanker track") is none; so is a
+  -- course ("take course 090", "fly course 240": the Russian-speaking controller's word for the heading)
+  rule { "track course", "hdg", not_prev = { 1, "inbound outbound the a your its tanker" }, when = function(g, i)
     local t = g.t[i + 1]
     return t ~= nil and t.kind == "number" and t.text:match("^%d%d%d$") ~= nil and tonumber(t.text) <= 360
   end }
@@ -714,6 +715,11 @@ return function(intent, rule, words)
   rule { "due", "hdg", next = "@compass" }
   rule { "go turn", "hdg", next = "@compass" }
   rule { "left right", "hdg", prev = { 1, "go bear then" } }  -- "go left then climb", "speed 250, then left": a turn
+  -- "maintain 280 knots until PEKIR then 250", "maintain FL160 until PEKIR then FL120": a value of the limited
+  -- instruction's kind said bare after "until" a place "then" is that instruction again, from the place
+  -- (G:until_then_value)
+  rule { "then", "spd", when = function(g, i) return g:until_then_value(i) == "spd" end }
+  rule { "then", "alt", when = function(g, i) return g:until_then_value(i) == "alt" end }
   rule { "@compass", "hdg", prev = { 1, "then" } }  -- "go up to FL320, then east"  -- "go east", "go northeast": the heading of that point
   rule { "around", false, prev = { 3, "turn" } }
 
@@ -1339,7 +1345,8 @@ return function(intent, rule, words)
   -- True when the word at k names an airport where one is meant: an airport's ICAO code, a name of the navdata's
   -- airports, a city of lexicon.city_airports, or (`placed`: said where a place is, after "to" or "divert")
   -- three capitals (an IATA code, names.iata_airports, or asked by the handler: "send it to MUC") or a
-  -- capitalised word a large airport's name starts with ("Austin")
+  -- capitalised word a large airport's name starts with ("Austin") or a navaid beside large or medium airports
+  -- bears ("divert to Belfast": EGAA beside the BELFAST VOR; sim:airports_beside_navaids)
   local function airport_word(g, k, placed)
     for _, r in ipairs(g:refs_in(k, k + 1, "waypoint")) do
       if r.b == k and r.name:match("^%a%a%a%a$") then return true end
@@ -1348,7 +1355,8 @@ return function(intent, rule, words)
     if t == nil or t.kind ~= "word" then return false end
     if placed and t.raw:match("^%u%u%u$") then return true end
     return named ~= nil and t.alpha and #t.text >= 4 and (#named(t.text) > 0 or CITY_AIRPORTS[t.text] ~= nil
-      or (placed and t.raw:match("^%u") ~= nil and #city(t.text) > 0))
+      or (placed and t.raw:match("^%u") ~= nil and (#city(t.text) > 0
+        or (g.world.airports_beside_navaids ~= nil and #g.world.airports_beside_navaids(t.text) > 0))))
   end
   -- "Send UPS2971 to Louisville, KSDF", "send AAL100 to KBOS and have it climb": an airport (four letters) sent
   -- to; "send it to Heathrow": the one word after "to" names an airport of the navdata ("divert Ryanair
@@ -1428,6 +1436,8 @@ return function(intent, rule, words)
     local q = g:quantities(i + 1, i + 5)[1]
     return q ~= nil and q.b == i + 1 and (q.kind == "mach" or (q.kind == "plain" and q.value >= 0.4 and q.value < 1))
   end }
+  -- (no origin where a relative clause says where the aircraft comes from to identify it: G:relative_departure)
+  rule { "departed departing", false, when = function(g, i) return g:relative_departure(i) end }
   rule { "origin departed departing orig", "orig" }
   -- "set departure airport EDDL", "CFG7TK departure aerodrome EDDF": the airport it departed named
   rule { "departure", "orig", next = "airport aerodrome airfield" }

@@ -10,7 +10,7 @@
 --     (B738 -> 737-800, B737-800), A3FV -> A3F0-V00 (A332 -> A330-200), A318-A321 -> their
 --     series (A320 -> A320-200), ATFV -> ATR F2-V00 and ATRF2 (AT76 -> ATR 72-600), DH8x ->
 --     Dash 8-x00, Q x00 and DHC-8-x00, CRJn -> CRJ n00 and CRJ-n00, CRJX -> CRJ1000,
---     Cnnn -> Cessna nnn, E1nn -> Embraer E1nn, E75L/E75S -> E175, BCSn -> Airbus A220-n00 and Bombardier CSn00,
+--     Cnnn -> Cessna nnn, E1nn -> Embraer E1nn (E135/E145 also ERJ-135/145), E75L/E75S -> E175, BCSn -> Airbus A220-n00 and Bombardier CSn00,
 --     SRnn -> Cirrus SRnn, PCnn -> Pilatus PC-nn, F28/F50/F70/F100 -> Fokker nn;
 --   * a family ("737", "a330") is its base designator when one exists (B737,
 --     A320), else its first variant.
@@ -112,6 +112,8 @@ local function pattern_names(d)
   if c then out[#out + 1] = { "cessna", c } end
   c = d:match("^E(1%d%d)$")
   if c then out[#out + 1] = { "embraer", "e" .. c }; out[#out + 1] = { "embraer", c } end
+  -- (the regional jets' own name, ERJ, for the 135 and 145: "ERJ-145", "ERJ145")
+  if c == "135" or c == "145" then out[#out + 1] = { "embraer", "erj" .. c }; out[#out + 1] = { "embraer", "erj-" .. c } end
   c = d:match("^BCS(%d)$")  -- (the CSeries became the Airbus A220)
   if c then out[#out + 1] = { "airbus", "a220-" .. c .. "00" }; out[#out + 1] = { "bombardier", "cs" .. c .. "00" } end
   c = d:match("^SR(%d%d)$")

@@ -11685,3 +11685,137 @@ do
   check_eq(ex("KLM12 climb FL340, cross WPA not before 1215"), "ALT KLM12 FL340")
   asked(ex("KLM12 cross WPA at or after 1215 at FL340"), "a level after the time: the crossing's")
 end
+
+-- Cycle 49 (f123): a small airfield said by its name alone, where an aircraft is put, is the navaid of that name
+-- beside it (the CLN VOR, not the EGSQ strip); "airport" said, or an aircraft put on the ground, is the airfield;
+-- an aircraft sent there still asks which
+do
+  local nav, pt = navscene({ "CRE KLM77 A320 51.95 0.6 240 FL150 280", "CRE EZY31 A319 51.7 0.1 300 FL110 250" },
+    "a small airfield that shares a navaid's name")
+  if nav then
+    check_eq(pt("create BAW401 A320 at Clacton heading 090 FL120 280 knots"), "CRE BAW401 A320 CLN 90 FL120 280")
+    check_eq(pt("create BAW401 A320 over Clacton heading 090 FL120 280 knots"), "CRE BAW401 A320 CLN 90 FL120 280")
+    check_eq(pt("create BAW401 A320 at Clacton airport heading 090 FL120 280 knots"),
+      "CRE BAW401 A320 EGSQ 90 FL120 280")
+    check_eq(pt("create CLUB1 C172 at Clacton heading 090 on the ground"), "CRE CLUB1 C172 EGSQ 90 0 0")
+    asked(pt("EZY31 direct Clacton"), "an aircraft sent to a name an airfield and a navaid share")
+  end
+end
+
+-- Cycle 49 (f123): where an aircraft comes from said in a relative clause that identifies it ("the Easy that's just
+-- departed Luton, Easy 55KJ, ...") describes it: no ORIG; said of the aircraft as a statement it still sets the origin
+do
+  local nav, pt = navscene({ "CRE EZY55KJ A320 51.88 -0.37 330 5000 250", "CRE RYR4PW B738 51.9 0.25 040 6000 250" },
+    "a relative clause naming an airport")
+  if nav then
+    check_eq(pt("the Ryanair that has just left Southend, Ryanair 4PW, turn left heading 360"), "HDG RYR4PW 360 LEFT")
+    check_eq(pt("the Easy which departed from Luton, Easy 55KJ, climb FL100"), "ALT EZY55KJ FL100")
+    check_eq(pt("Easy 55KJ departed Luton"), "ORIG EZY55KJ EGGW")
+    asked(pt("the Easy that's just departed Luton, Easy 55KJ, set origin Stansted"), "two origins said")
+  end
+end
+
+-- Cycle 49 (f123): a navaid's name of three words before its kind ("the Isle of Man VOR") is the place, no approach
+-- clearance: the level said after it is read; "VOR approach" stays one
+do
+  local nav, pt = navscene({ "CRE EIN7KL AT76 54.05 -4.9 080 FL070 200" }, "a navaid's name of three words")
+  if nav then
+    check_eq(pt("move EIN7KL to the Isle of Man VOR at FL100"), "MOVE EIN7KL IOM FL100")
+    check_eq(pt("relocate EIN7KL to the Isle of Man VOR, 4000 feet"), "MOVE EIN7KL IOM 4000")
+    check_eq(pt("EIN7KL cleared Isle of Man VOR approach"), "")
+  end
+end
+
+-- Cycle 49 (f123): the Embraer regional jets by their own name ("ERJ-145", "ERJ135") are the E145 and E135; an
+-- ERJ name squawk has no designator for is asked
+do
+  local _, ex = scene({ "CRE KLM12 A320 52.3 4.7 090 FL100 250" })
+  check_eq(ex("create LOG31 ERJ-145 at 52.5 4.5 heading 180 FL150 250 knots"), "CRE LOG31 E145 52.5 4.5 180 FL150 250")
+  check_eq(ex("create LOG31, an ERJ135, at 52.5 4.5 heading 180 FL150 250 knots"),
+    "CRE LOG31 E135 52.5 4.5 180 FL150 250")
+  asked(ex("create LOG31 ERJ-140 at 52.5 4.5 heading 180 FL150 250 knots"), "an ERJ with no designator")
+end
+
+-- Cycle 49 (f123): a city and the whole navdata name of one of its airports ("Belfast City": EGAC "CITY", "Belfast
+-- Aldergrove": EGAA "ALDERGROVE") is that airport, also after "divert to"; the city alone stays asked
+do
+  local nav, pt = navscene({ "CRE EZY68BF A319 54.2 -4.3 300 FL150 270", "CRE BAW836 A320 51.8 -1.0 310 FL200 280" },
+    "a city and its airport's whole name")
+  if nav then
+    check_eq(pt("EZY68BF, new destination Belfast City"), "DEST EZY68BF EGAC")
+    check_eq(pt("EZY68BF divert to Belfast Aldergrove"), "DEST EZY68BF EGAA")
+    check_eq(pt("BAW836 divert to London City"), "DEST BAW836 EGLC")
+    asked(pt("EZY68BF divert to Belfast"), "a city of two airports")
+  end
+end
+
+-- Cycle 49 (f123): a bare number after "once (you're) at" that the request just gave the aircraft as its speed is
+-- that speed reached (ATSPD); another number, or one with no "at" ("when 170"), is asked
+do
+  local _, ex = scene({ "CRE LOG52 E145 53.4 -1.9 300 FL090 220" })
+  check_eq(ex("LOG52 reduce 170 knots, when you're at one seventy turn left heading 200"),
+    "SPD LOG52 170 ; ATSPD LOG52 170 HDG LOG52 200 LEFT")
+  check_eq(ex("LOG52 slow to 190 knots and once at 190 descend FL70"), "SPD LOG52 190 ; ATSPD LOG52 190 ALT LOG52 FL70")
+  asked(ex("LOG52 reduce 170 knots, once you're at 160 descend FL70"), "a number the request gave no speed")
+  asked(ex("LOG52 reduce 170 knots, when 170 descend FL70"), "a bare number with no 'at'")
+end
+
+-- Cycle 49 (f123): the noun of the level passed said before it ("when passing altitude 6000 feet") is read with
+-- the condition; a number too small for an altitude after it is asked
+do
+  local _, ex = scene({ "CRE TOM41 B738 51.1 -0.1 180 4000 250" })
+  check_eq(ex("TOM41 climb FL120, when passing altitude 6000 feet reduce speed 230"),
+    "ALT TOM41 FL120 ; ATALT TOM41 6000 SPD TOM41 230")
+  check_eq(ex("TOM41 climb FL120, passing altitude 6000 turn left heading 090"),
+    "ALT TOM41 FL120 ; ATALT TOM41 6000 HDG TOM41 90 LEFT")
+  asked(ex("TOM41 climb FL120, when passing altitude 60 turn left heading 090"), "a number no altitude")
+end
+
+-- Cycle 49 (f123): after a direct-to, a clause with a condition of its own ("when passing FL110 reduce 220") waits for
+-- that condition, no constraint at the waypoint; "once there" with a heading is still asked
+do
+  local _, ex = scene({ "DEFWPT WPA 51.7 0.0", "CRE KLM8 E190 51.6 0.2 270 FL130 260", "ADDWPT KLM8 WPA" })
+  check_eq(ex("KLM8 direct WPA, when passing FL110 reduce 220 knots, descend FL80"),
+    "DIRECT KLM8 WPA ; ATALT KLM8 FL110 SPD KLM8 220 ; ALT KLM8 FL80")
+  asked(ex("KLM8 direct WPA, once there turn left heading 200"), "a heading tied to a waypoint")
+end
+
+-- Cycle 49 (f123): "acknowledge" after an instruction asks the pilot to acknowledge it (no command); the letter X's
+-- word written apart ("92 X-ray", "x ray") is the letter in a callsign
+do
+  local _, ex = scene({ "CRE RYR92X B738 51.9 -8.0 350 FL090 250", "CRE RYR92A B738 52.0 -8.0 350 FL100 250" })
+  check_eq(ex("Ryanair 92 X-ray, climb FL110, acknowledge"), "ALT RYR92X FL110")
+  check_eq(ex("Ryanair 92 x ray turn right heading 010"), "HDG RYR92X 10 RIGHT")
+  asked(ex("Ryanair 92, climb FL110, acknowledge"), "a callsign with its letter left out")
+end
+
+-- Cycle 49 (f123): an aircraft handed to the machine teammate ("give X to the AI", "can you look after X for me",
+-- "sort its speed out") is read as the instructions that follow; the teammate named elsewhere is still asked
+do
+  local _, ex = scene({ "CRE EZY45 A319 51.2 0.9 290 FL120 250", "CRE LOG52 E145 53.4 -1.9 300 FL090 220" })
+  check_eq(ex("pass EZY45 to the teammate - teammate, climb it to FL140"), "ALT EZY45 FL140")
+  check_eq(ex("could you look after LOG52 for me, turn him right heading 340"), "HDG LOG52 340 RIGHT")
+  check_eq(ex("take LOG52 and sort his speed out, 200 knots"), "SPD LOG52 200")
+  asked(ex("EZY45 climb FL140, ask the AI"), "the teammate named with no handover")
+end
+
+-- Cycle 49 (f123): "course" with three digits up to 360 ("take course 090", "fly course 240") is the heading, as
+-- "track 090" is; a course named with a noun before it ("the inbound course 270") is none, and asked
+do
+  local _, ex = scene({ "CRE AFL17 A333 55.70 36.80 060 FL130 290" })
+  check_eq(ex("AFL17 take course 090"), "HDG AFL17 90")
+  check_eq(ex("AFL17 fly course 240, descend FL100"), "HDG AFL17 240 ; ALT AFL17 FL100")
+  asked(ex("AFL17 the inbound course 270"), "a course named by its noun")
+end
+
+-- Cycle 49 (f123): a bare value after "until WPT then" of the limited instruction's kind ("maintain 280 knots until
+-- WPB then 250", "maintain FL160 until WPB then FL120") is that instruction again from the waypoint (AT ... DO); a
+-- value of another kind there, or a waypoint off the route, is asked
+do
+  local _, ex = scene({ "DEFWPT WPA 43.9 77.5", "DEFWPT WPB 43.7 77.3", "CRE KZR90 A321 43.95 77.55 220 FL160 280",
+    "ADDWPT KZR90 WPA", "ADDWPT KZR90 WPB" })
+  check_eq(ex("KZR90 maintain 270 knots until WPB then 240"), "SPD KZR90 270 ; AT KZR90 WPB DO SPD KZR90 240")
+  check_eq(ex("KZR90 maintain FL160 until WPB then FL130"), "ALT KZR90 FL160 ; AT KZR90 WPB DO ALT KZR90 FL130")
+  asked(ex("KZR90 maintain 270 knots until WPB then FL130"), "a level after a speed's limit")
+  asked(ex("KZR90 maintain 270 knots until WPC then 240"), "a waypoint that is none of the route's")
+end
