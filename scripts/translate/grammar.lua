@@ -2717,6 +2717,20 @@ function G:do_at(id, wp, n0)
   return true
 end
 
+-- "keep flying at FL160 until HORTA and then descend FL110", "keep FL230 until PIVON, then descend": segment p,
+-- a verb of keeping (lexicon.kept_as_is.verbs) and one level or speed, whose commands are self.out[n0 + 1 .. n1],
+-- held until the waypoint where aircraft `id`'s next instruction starts. A value the aircraft flies (G.flies)
+-- changes nothing: its command is dropped, the words read as the limit. Returns the number of commands dropped.
+function G:kept_until(p, n0, n1, id)
+  local qs = p and n1 == n0 + 1 and self:quantities(p.b, p.e) or {}
+  if #qs ~= 1 or not self:word_in(p.b, qs[1].b, G.kept_sets.verbs) then return 0 end
+  local cmd, v = self.out[n1]:match("^(%u+) " .. id:gsub("%p", "%%%0") .. " (%S+)$")
+  local kind = ({ ALT = "alt", SPD = qs[1].kind == "mach" and "mach" or "speed" })[cmd]
+  if not kind or not G.flies(self:state(id), kind, qs[1].value) then return 0 end
+  table.remove(self.out, n1)
+  return 1
+end
+
 -- True when the words from k are a level or speed wanted, no instruction word: "I want it at FL250", ", I'd like
 -- him at 250 knots", "it should be at FL250" (words of lexicon.held_value, then the value ending the request).
 local HELD = set_of(lexicon.held_value)
@@ -3591,6 +3605,7 @@ function G:parse(b, e)
   local segs = self:split_ellipsis(self:segments(b, e))
   local prev_out = #self.out
   local valueless, issued_by = {}, {}  -- (G:valueless_left)
+  local seg_out = {}  -- seg_out[k]: #self.out before segment k's commands
   self:orphan_heading(segs[1])
   for k, s in ipairs(segs) do
     if self.ask then break end
@@ -3630,6 +3645,7 @@ function G:parse(b, e)
         and #self:quantities(s.b, s.e) == 0 then
       skip = true
     end
+    seg_out[k] = #self.out
     if not skip then
       local before = self.last_cond
       self.last_cond = nil
@@ -3684,7 +3700,10 @@ function G:parse(b, e)
         end
       elseif until_wp and not self.ask and #self.out > n_before then
         self:explain(until_wp.u, until_wp.e)
-        self:do_at(self.out[n_before + 1]:match("^%u+ (%S+)"), until_wp.name, n_before)
+        local id = self.out[n_before + 1]:match("^%u+ (%S+)")
+        if self:do_at(id, until_wp.name, n_before) then
+          n_before = n_before - self:kept_until(segs[k - 1], seg_out[k - 1], n_before, id)
+        end
       elseif tail and not self.ask and #self.out > n_before then
         self:do_at(self.out[n_before + 1]:match("^%u+ (%S+)"), tail.name, n_before)
       elseif at_next and not self.ask and #self.out > n_before then
@@ -6876,6 +6895,17 @@ function G:refused()
   end
 end
 
+-- True when aircraft state `a` flies or was given value `v` of `kind` ("alt" [ft], "speed" [kt CAS], "mach",
+-- "heading" [deg]): within 50 ft, 2 kt, .01 or 1 degree of its selected or present value.
+function G.flies(a, kind, v)
+  local function near(x, y, tol) return x ~= nil and y ~= nil and math.abs(x - y) <= tol end
+  local function turned(x, y) return x ~= nil and y ~= nil and math.abs((x - y + 540) % 360 - 180) <= 1 end
+  return a ~= nil and (kind == "alt" and (near(v, a.sel_alt_ft, 50) or near(v, a.alt_ft, 50))
+    or kind == "speed" and (near(v, a.sel_cas_kt, 2) or near(v, a.cas_kt, 2))
+    or kind == "mach" and near(v, a.mach, 0.01)
+    or kind == "heading" and (turned(v, a.sel_hdg_deg) or turned(v, a.hdg_deg)))
+end
+
 -- "RYR88F FL370 is fine, just heading 150", "descend FL150, speed 270 is ok", "keep FL370, just heading 150": a
 -- level, speed, mach or heading said to be kept (lexicon.kept_as_is), its clause ending there or at another
 -- instruction, is no instruction when it is what the aircraft named before it (or, with none before, the one
@@ -6949,14 +6979,8 @@ function G:kept_values()
         end
         local a = id and self:state(id)
         local f = handlers.format
-        local function near(x, y, tol) return x ~= nil and y ~= nil and math.abs(x - y) <= tol end
-        local function turned(x, y) return x ~= nil and y ~= nil and math.abs((x - y + 540) % 360 - 180) <= 1 end
         local v = q.value
-        local flown = a and (kind == "alt" and (near(v, a.sel_alt_ft, 50) or near(v, a.alt_ft, 50))
-          or kind == "speed" and (near(v, a.sel_cas_kt, 2) or near(v, a.cas_kt, 2))
-          or kind == "mach" and near(v, a.mach, 0.01)
-          or kind == "heading" and (turned(v, a.sel_hdg_deg) or turned(v, a.hdg_deg)))
-        if flown then
+        if G.flies(a, kind, v) then
           self:set_aside(b, e)
           kept[b] = true
           -- ("..., nur hdg 150": the word that leaves only the other instruction)
@@ -6979,6 +7003,52 @@ function G:kept_values()
           self:need(a and string.format("'%s': %s does not fly %s now. Should it be given %s, or keep what it "
             .. "flies?", self:raw(b, e + 1), a.id, said, said)
             or string.format("'%s' is said to be kept: which aircraft keeps it?", self:raw(b, e + 1)))
+        end
+      end
+    end
+  end
+end
+
+-- "keep its present altitude and just turn right to heading 250", "keep your current heading but slow down to 260
+-- knots": a verb of keeping, "its"/"your"/"the", a word of lexicon.present and a noun of
+-- lexicon.kept_as_is.present_nouns, then "and", "but" or a comma and another instruction of another kind, is no
+-- instruction when the aircraft named before it (or, with none, after it) holds that value with nothing to
+-- change: its selected level within 50 ft of its level, selected speed within 2 kt of its speed, selected
+-- heading within 1 degree of its heading and no route steering it (HDG would switch LNAV off). Set aside, the
+-- instruction beside it read alone; otherwise the handlers issue the present value as before.
+function G:kept_present()
+  local K = G.kept_sets
+  if not self:said(K.verbs) or not self:said("@present") then return end
+  local nouns, intents = lexicon.kept_as_is.present_nouns, lexicon.kept_as_is.present_intents
+  for i = 1, #self.t - 3 do
+    if self:word(i, K.verbs) and not self.u:used(i) then
+      local k = self:word(i + 1, "flying") and i + 2 or i + 1
+      if self:word(k, "its your the their his her") then k = k + 1 end
+      local kind = self:word(k, "@present") and nouns[self.words[k + 1]]
+      local c = kind and k + 2
+      if c and self.t[c] and self.t[c].kind == "punct" and self.t[c].text == "," then c = c + 1 end
+      local joined = c and self:word(c, "and") or self:word(c, K.but)
+      local n = joined and c + 1 or c
+      if n and self:word(n, K.only) then n = n + 1 end
+      local other = n and self:intent_at(n)
+      local same = false
+      for x = n or 1, other and #self.t or 0 do
+        same = same or self:intent_at(x) == intents[kind]
+      end
+      if other and other ~= "maintain" and not same then
+        local id
+        for _, r in ipairs(self.refs) do
+          if r.kind == "aircraft" and (r.e <= i or not id) then id = r.name end
+        end
+        local a = id and self:state(id)
+        local held = a and (kind == "alt" and G.flies(a, "alt", a.alt_ft) and (a.sel_alt_ft == nil
+            or math.abs(a.sel_alt_ft - a.alt_ft) <= 50)
+          or kind == "speed" and (a.sel_cas_kt == nil or math.abs(a.sel_cas_kt - (a.cas_kt or 0)) <= 2)
+          or kind == "heading" and not a.lnav and (a.sel_hdg_deg == nil or G.flies(a, "heading", a.sel_hdg_deg)
+            and math.abs((a.sel_hdg_deg - a.hdg_deg + 540) % 360 - 180) <= 1))
+        if held then
+          self:set_aside(i, k + 1)
+          if self:word(n - 1, K.only) then self:blank(n - 1) end
         end
       end
     end
@@ -9113,6 +9183,7 @@ function M.translate(text, world)
   g:refused()
   g:replaced_values()
   g:kept_values()
+  g:kept_present()
   g:acknowledged()
   g:stations()
   g:exercise_names()

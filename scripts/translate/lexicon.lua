@@ -907,7 +907,14 @@ return {
                  but = { "but" },
                  -- (words before the value that are part of it: "keep it at FL180", "speed 270", "your present heading")
                  units = { "speed", "heading", "hdg", "level", "altitude", "the", "your", "its", "present", "current",
-                   "mach", "flight", "it", "at", "on" } },
+                   "mach", "flight", "it", "at", "on", "flying" },
+                 -- a present value named by its noun after a verb of `verbs` and one of lexicon.present ("keep its
+                 -- present altitude and just turn right", "keep your current heading but slow down"): the kind kept
+                 -- (G:kept_present)
+                 present_nouns = { level = "alt", altitude = "alt", height = "alt", heading = "heading",
+                   speed = "speed" },
+                 -- the instruction word that sets each kind: a kept present value beside one of these is asked
+                 present_intents = { alt = "alt", heading = "hdg", speed = "spd" } },
   -- a level or speed wanted at a waypoint said without an instruction word ("when AFR1234 gets to GIROM I want it
   -- at FL250", "it should be at FL250"): the words that may come before its "at" (G:held_value)
   held_value = { "i", "i'd", "we", "we'd", "want", "like", "need", "it", "him", "her", "them", "to", "be", "at",
