@@ -1575,7 +1575,7 @@ function G:commentary(b, e, lead, record, places)
   for _, r in ipairs(places and {} or self:refs_in(b, e, "waypoint")) do
     if not self:word(r.b, "@not_names") then return false end
   end
-  local own = self:word(b, CM_OWN)
+  local own, studied = self:word(b, CM_OWN), false
   for x = b, e - 1 do
     local t = self.t[x]
     if self.noted[x] then return false end  -- (what squawk does not simulate: "- hold TOM6RT")
@@ -1590,7 +1590,11 @@ function G:commentary(b, e, lead, record, places)
       -- here: "- hold TOM6RT", "- move the easyJet")
       local verb = RULES_BY_WORD[t.text] and self:has_ref(self:word(x + 1, "the") and x + 2 or x + 1, x + 3, "aircraft")
       -- (`places`: a noun after a reason's word is the reason's, "- ride reports")
-      if (verb or self:intent_at(x)) and not self:word(x - 1, CM_DETERMINERS)
+      -- (in the speaker's own clause, a question word after its verb opens what the speaker studies, no
+      -- question asked and no instruction, naming no aircraft: "we are studying how participants notice speed
+      -- changes")
+      studied = studied or (own and x > b + 1 and self:word(x, "how what whether") and not self:has_ref(x, e, "aircraft"))
+      if (verb or self:intent_at(x)) and not studied and not self:word(x - 1, CM_DETERMINERS)
           and not (places and self:word(x - 1, COMMENTARY.reason_set)) then
         return false
       end
@@ -1803,9 +1807,9 @@ function G:in_reason(i)
           and self:commentary(k + 1, commentary_end(self, k + 1)) then
         -- ("left 70 degrees - hard test of the turn model", "800 ft (testing reduced vertical)")
         inside = true
-      elseif punct and t.text == "," and self:word(k + 1, CM_SUBJECTS) and instructed(k)
+      elseif punct and (t.text == "," or t.text == ";") and self:word(k + 1, CM_SUBJECTS) and instructed(k)
           and self:commentary(k + 1, commentary_end(self, k + 1)) then
-        -- ("Fast-forward 20 minutes, we only care about the descent phase")
+        -- ("Fast-forward 20 minutes, we only care about the descent phase"; "...; we are studying how ...")
         inside = true
       elseif punct and t.text == "," and self:word_in(k + 1, commentary_end(self, k + 1), COMMENTARY.reason_set)
           and not self:word_in(k + 1, commentary_end(self, k + 1), "from")
@@ -2366,6 +2370,10 @@ function G:level_limits()
   for i = 1, #self.t do
     if self:word(i, "until till") then
       local v = self:skip_fillers(i + 1)
+      -- ("until it is ten miles from Porto", "till it's passing FL370": the aircraft's being there; the lexer
+      -- keeps "it" of "it's")
+      if self:word(v, "@reached_subjects") then v = self:skip_fillers(v + 1) end
+      if self:word(v, "@reached_verbs") then v = self:skip_fillers(v + 1) end
       if self:word(v, "passing reaching leaving") then v = self:skip_fillers(v + 1) end
       local q = self:quantities(v, #self.t + 1)[1]
       if q and q.b == v and q.kind == "alt" then

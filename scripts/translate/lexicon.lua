@@ -121,7 +121,9 @@ return {
         -- an experimenter watching what a run does ("let's watch it", "see the effect")
         "watch", "observe", "effect", "effects", "result", "results", "outcome", "happens",
         -- the study a run belongs to, told as its story ("it departed there in our story", "for my study")
-        "story", "study", "storyline", "narrative" },
+        "story", "study", "storyline", "narrative",
+        -- a newcomer excusing their words ("I apologise for my ignorance of the terminology, but ...")
+        "ignorance", "terminology", "jargon", "apologise", "apologize", "apologies" },
     -- the people in the room, addressed ("ok observers, I'm going to start the clock", "ok folks, first one")
     audience = { "folks", "guys", "observers", "observer", "team", "gentlemen", "ladies", "y'all", "everybody",
         -- the same in Spanish and Portuguese, where instructors teach in English ("chicos, look:", "ok pessoal")
@@ -220,6 +222,12 @@ return {
     courtesy_phrases = { "pull up", "when you get a chance", "when you can", "when you're ready", "when ready",
         "when able", "if able", "if you can", "if you could", "if you would", "if possible",
         "if you don't mind", "if it's not too much trouble", "as soon as possible", "as soon as you can",
+        -- a polite speaker's hedges on the whole request ("..., if that is at all possible", "would it be too much
+        -- trouble to ask ...", "if it's no trouble", "if that's a thing", "of course")
+        "if that is at all possible", "if at all possible", "if that is possible", "if that's possible",
+        "if it is possible", "if it's possible", "if it's no trouble", "if it is no trouble", "if that's no trouble",
+        "if that is no trouble", "would it be too much trouble", "is it too much trouble", "if that's a thing",
+        "if that is a thing", "of course", "i apologise", "i apologize", "my apologies",
         -- urgency ("descend FL200 at once", "right away": what squawk sends runs at once)
         "at once", "right away", "straight away", "without further delay",
         -- the aircraft's (or the simulation's) ability, as "if able" ("up to 390 if the sim lets him")
@@ -931,6 +939,9 @@ return {
   below = { "below", "under" },
   above = { "above", "over" },
   relative = { "present", "current", "actual", "by" },
+  -- words after an amount that name what it is counted from ("by 20 knots relative to what it is doing",
+  -- "compared with what it flies now"): the present value
+  counted_from = { "relative", "compared", "relatively" },
   -- ("actual": the false friend of the present one, in several languages)
   present = { "present", "current", "actual", "continue" },
   -- verbs that keep a value as it is ("maintain heading", "keep your heading": said with none, the present one)
@@ -1182,7 +1193,7 @@ return {
     -- "the student cleared him direct LUX", "he was already cleared to FL100": what someone did, told in the
     -- past tense after a person, is a report, no instruction (`subject`: the word before the verb, "already",
     -- "has", "had", "was", "were" and "just" between them)
-    { what = "reports of what was done", words = "cleared gave vectored turned instructed",
+    { what = "reports of what was done", words = "cleared gave vectored turned instructed switched disconnected",
       subject = "student trainee controller instructor he she they i we someone somebody colleague",
       clause = true },
     -- "expect runway 30 left", "expect ILS approach", "expect lower in 10 miles": information for the
