@@ -2739,6 +2739,61 @@ function G:kept_until(p, n0, n1, id)
   return 1
 end
 
+-- "keep 280 knots until RINOR, which I believe is on its planned route", "... until BOSIO? I believe BOSIO is on its
+-- route.", "? That is the Viseu beacon, on its planned route.": a clause (after a comma) or a sentence of
+-- lexicon.route_remark's words that says "on its ... route" of places that are all on the route of the aircraft
+-- named before it, no value and no aircraft in it, is set aside: it places nothing. A place said in it that is
+-- off that route leaves it to be asked.
+G.route_remark_sets = {}
+for k, list in pairs(lexicon.route_remark) do G.route_remark_sets[k] = set_of(list) end
+function G:route_remarks()
+  local R = G.route_remark_sets
+  if not self:said(R.route_nouns) then return end
+  local function sentence_end(k)
+    local t = self.t[k]
+    return t and t.kind == "punct" and t.text ~= "," and t.text ~= "-" and t.text ~= "'"
+  end
+  for k = 1, #self.t - 2 do
+    if self:word(k, "on") and self:word(k + 1, "its") and not self.noted[k] then
+      local n = k + 2
+      while self:word(n, "planned filed flight") do n = n + 1 end
+      if self:word(n, R.route_nouns) then
+        local b = k
+        while b > 1 and self.t[b - 1].kind ~= "punct" do b = b - 1 end
+        -- (a comma before a clause that describes the place: from the sentence's start, "That is the Viseu
+        -- beacon, on its planned route")
+        if b > 2 and self.t[b - 1].text == "," and (b == k or not self:word(b, "which that")) then
+          local s0 = b - 2
+          while s0 > 1 and not sentence_end(s0 - 1) and self.t[s0 - 1].text ~= "," do s0 = s0 - 1 end
+          if self:word(s0, "that this it which") then b = s0 end
+        end
+        local e = n + 1
+        if not (b > 1 and (sentence_end(b - 1) or self.t[b - 1].text == ",")) or e <= #self.t and self.t[e].kind ~= "punct" then
+          b = nil
+        end
+        local id
+        for _, r in ipairs(self.refs) do
+          if b and r.kind == "aircraft" and r.e <= b then id = r.name end
+        end
+        local ok = b and id and #self:quantities(b, e) == 0 and #self:refs_in(b, e, "aircraft") == 0
+        for x = b or 1, ok and e - 1 or 0 do
+          local t = self.t[x]
+          local place = self:refs_in(x, x + 1, "waypoint")[1]
+          if place then
+            ok = ok and self:on_route(id, place.name)
+          elseif t.kind == "word" and not self:word(x, R.words) then
+            -- (a place's name before its noun: "the Viseu beacon")
+            ok = ok and t.raw:match("^%u") ~= nil and self:word(x + 1, R.place_nouns)
+          elseif t.kind ~= "word" and t.text ~= "," then
+            ok = false
+          end
+        end
+        if ok then self:set_aside(b, e - 1) end
+      end
+    end
+  end
+end
+
 -- True when the words from k are a level or speed wanted, no instruction word: "I want it at FL250", ", I'd like
 -- him at 250 knots", "it should be at FL250" (words of lexicon.held_value, then the value ending the request).
 local HELD = set_of(lexicon.held_value)
@@ -7175,6 +7230,13 @@ function G:said_last(i, near, own_clause)
   if own_clause and (j > k or (self.t[k - 1] and self.t[k - 1].text == ",")) and self:word(j, "@clause_verbs") and self:intent_at(j) then
     return true
   end
+  -- (what follows set aside already, punctuation and courtesy between: "until RINOR, which is on its route? Thank
+  -- you.", G:route_remarks)
+  local rest = k
+  while self.t[rest] and (self.t[rest].kind == "punct" or self.noted[rest] or FRAMING[self.t[rest].text]) do
+    rest = rest + 1
+  end
+  if rest > #self.t then return true end
   while self.t[k] and self.t[k].kind == "punct" and self.t[k].text ~= "," do k = k + 1 end
   return k > #self.t
 end
@@ -9184,6 +9246,7 @@ function M.translate(text, world)
         q.kind == "lat" and "north or south" or "east or west") }
     end
   end
+  g:route_remarks()
   local note = g:not_simulated()
   g:self_corrected()
   g:places_corrected()

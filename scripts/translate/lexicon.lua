@@ -123,7 +123,9 @@ return {
         -- the study a run belongs to, told as its story ("it departed there in our story", "for my study")
         "story", "study", "storyline", "narrative",
         -- a newcomer excusing their words ("I apologise for my ignorance of the terminology, but ...")
-        "ignorance", "terminology", "jargon", "apologise", "apologize", "apologies" },
+        "ignorance", "terminology", "jargon", "apologise", "apologize", "apologies",
+        -- an experiment's trials and its framing of what the simulation plays ("we pretend that ...", "could you arrange for the simulation to pause ...", "simply keep flying straight")
+        "trials", "pretend", "imagine", "arrange", "simply" },
     -- the people in the room, addressed ("ok observers, I'm going to start the clock", "ok folks, first one")
     audience = { "folks", "guys", "observers", "observer", "team", "gentlemen", "ladies", "y'all", "everybody",
         -- the same in Spanish and Portuguese, where instructors teach in English ("chicos, look:", "ok pessoal")
@@ -227,7 +229,9 @@ return {
         "if that is at all possible", "if at all possible", "if that is possible", "if that's possible",
         "if it is possible", "if it's possible", "if it's no trouble", "if it is no trouble", "if that's no trouble",
         "if that is no trouble", "would it be too much trouble", "is it too much trouble", "if that's a thing",
-        "if that is a thing", "of course", "i apologise", "i apologize", "my apologies",
+        "if that is a thing", "of course", "i apologise", "i apologize", "my apologies", "as a separate thing", "block of trials",
+        "blocks of trials",
+        "if the computer can cope with it", "if the computer can cope", "if the simulation can cope with it",
         -- urgency ("descend FL200 at once", "right away": what squawk sends runs at once)
         "at once", "right away", "straight away", "without further delay",
         -- the aircraft's (or the simulation's) ability, as "if able" ("up to 390 if the sim lets him")
@@ -923,6 +927,14 @@ return {
                    speed = "speed" },
                  -- the instruction word that sets each kind: a kept present value beside one of these is asked
                  present_intents = { alt = "alt", heading = "hdg", speed = "spd" } },
+  -- a remark that a place named is on the aircraft's route (G:route_remarks): ", which I believe is on its
+  -- planned route", "? I believe BOSIO is on its route.", "? That is the Viseu beacon, on its planned route."; a
+  -- clause or sentence of these words, the places named and a name before one of `place_nouns`
+  route_remark = { words = { "which", "that", "this", "it", "is", "it's", "that's", "i", "we", "believe", "think",
+      "already", "on", "its", "the", "planned", "filed", "route", "flight", "plan", "also", "indeed", "a", "one",
+      "of", "points", "waypoints", "beacon", "point", "waypoint", "fix", "navaid", "vor" },
+    place_nouns = { "beacon", "point", "waypoint", "fix", "navaid", "vor" },
+    route_nouns = { "route", "plan" } },
   -- a level or speed wanted at a waypoint said without an instruction word ("when AFR1234 gets to GIROM I want it
   -- at FL250", "it should be at FL250"): the words that may come before its "at" (G:held_value)
   held_value = { "i", "i'd", "we", "we'd", "want", "like", "need", "it", "him", "her", "them", "to", "be", "at",
