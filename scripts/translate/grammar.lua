@@ -7232,11 +7232,12 @@ function G:said_last(i, near, own_clause)
   end
   -- (what follows set aside already, punctuation and courtesy between: "until RINOR, which is on its route? Thank
   -- you.", G:route_remarks)
-  local rest = k
-  while self.t[rest] and (self.t[rest].kind == "punct" or self.noted[rest] or FRAMING[self.t[rest].text]) do
+  local rest, remark = k, false
+  while r and self.t[rest] and (self.t[rest].kind == "punct" or self.noted[rest] or FRAMING[self.t[rest].text]) do
+    remark = remark or self.noted[rest] == true
     rest = rest + 1
   end
-  if rest > #self.t then return true end
+  if remark and rest > #self.t then return true end
   while self.t[k] and self.t[k].kind == "punct" and self.t[k].text ~= "," do k = k + 1 end
   return k > #self.t
 end

@@ -124,7 +124,8 @@ return {
         "story", "study", "storyline", "narrative",
         -- a newcomer excusing their words ("I apologise for my ignorance of the terminology, but ...")
         "ignorance", "terminology", "jargon", "apologise", "apologize", "apologies",
-        -- an experiment's trials and its framing of what the simulation plays ("we pretend that ...", "could you arrange for the simulation to pause ...", "simply keep flying straight")
+        -- an experiment's trials and its framing of what the simulation plays ("we pretend that ...", "could you
+        -- arrange for the simulation to pause ...", "simply keep flying straight")
         "trials", "pretend", "imagine", "arrange", "simply" },
     -- the people in the room, addressed ("ok observers, I'm going to start the clock", "ok folks, first one")
     audience = { "folks", "guys", "observers", "observer", "team", "gentlemen", "ladies", "y'all", "everybody",
