@@ -1095,6 +1095,10 @@ return {
     -- a hand-off said with another verb before the frequency ("call Vienna on 129.2", "switch to approach
     -- 119.1", "over to Wien 134.35", "go to 129.2")
     { what = "radio frequencies", words = "call switch over go change", near = { "#frequency" } },
+    -- (a newcomer's plain words for the hand-off, the station's name and kind between: "then to talk to Lisbon
+    -- control on 132.8", "speak to Madrid control on one three two decimal seven")
+    { what = "radio frequencies", words = "talk speak", near = { "#frequency", "control", "approach", "tower",
+      "centre", "center", "radar", "ground", "departure", "director", "information" }, window = 6 },
     { what = "approach clearances", words = "ils rnav rnp localizer localiser glideslope glidepath vor",
       near = { "approach", "established", "intercept", "cleared", "runway", "#number" } },
     { what = "approach clearances", words = "cleared clear",
