@@ -4199,8 +4199,14 @@ function G:when_reached(s)
   local have = subject and self:word(verb, "have got") and self:word(self:skip_fillers(verb + 1), "it that")
   if not (have or self:word(verb, "reaching reach reaches hit hits")) then return false end
   local k = self:skip_fillers(verb + 1)
-  if self:word(k, "it that") then k = self:skip_fillers(k + 1) end
-  return k == s.trig
+  -- ("once it reaches that height", "when it reaches that speed": the value named by its kind)
+  local kind
+  if self:word(k, "that") and self:word(self:skip_fillers(k + 1), "height altitude level speed") then
+    kind = self:word(self:skip_fillers(k + 1), "speed") and "speed" or nil
+    k = self:skip_fillers(k + 1)
+  end
+  if self:word(k, "it that height altitude level speed") then k = self:skip_fillers(k + 1) end
+  return k == s.trig, kind
 end
 
 -- The same condition said after the instruction it holds, closing its segment ("reduce 180 kts when
@@ -7118,6 +7124,23 @@ function G:kept_present()
   end
 end
 
+-- "ask TAP1732 to climb to FL170 and, once it passes FL130, to speed up to 290 knots": the infinitive's "to" straight
+-- after a condition set off by commas (its clause opening with a word of lexicon.condition, "and" or "then" before
+-- it), before the instruction
+-- word it holds, is the polite request's grammar: a filler, so the instruction reads with its condition.
+function G:infinitive_after_condition()
+  if not self:said("@condition") then return end
+  for k = 3, #self.t - 1 do
+    if self:word(k, "to") and self.t[k - 1].text == "," and self:intent_at(k + 1) then
+      local c = k - 2
+      while c > 1 and self.t[c - 1].kind ~= "punct" do c = c - 1 end
+      local w = c
+      while self:word(w, "and then") do w = w + 1 end  -- (", and once it passes FL130, to ...")
+      if self:word(w, "@condition") and self.t[c - 1] and self.t[c - 1].text == "," then self:blank(k) end
+    end
+  end
+end
+
 -- "roger Mayday, descend FL100", "pan pan acknowledged, turn left heading 210", "emergency descent approved,
 -- descend and maintain 10000": a distress or urgency call acknowledged, or a request granted
 -- (lexicon.acknowledged), is set aside: no command, the instructions beside it read alone. The call's words
@@ -9256,6 +9279,7 @@ function M.translate(text, world)
   g:replaced_values()
   g:kept_values()
   g:kept_present()
+  g:infinitive_after_condition()
   g:acknowledged()
   g:stations()
   g:exercise_names()

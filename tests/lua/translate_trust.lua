@@ -11586,3 +11586,18 @@ do
   check_eq(ex("AFR9 keep 260 knots until PNTA? I think PNTA is on its route."), "SPD AFR9 260")
   asked(ex("KLM12 keep 260 knots until PNTA, which is on its route"), "a place off the aircraft's route")
 end
+
+-- Cycle 49 (f118): a polite request's condition between commas with "to" after it ("and, once it passes FL130, to
+-- increase speed"), "that height" and "that speed" reached, and a hand-off in plain words ("talk to Amsterdam
+-- control on 121.2", not simulated); a condition with no value for its instruction is still asked
+do
+  local _, ex = scene({ "CRE KLM12 A320 52.3 4.7 090 FL100 250" })
+  check_eq(ex("Please ask KLM12 to climb to FL170, and once it passes FL130, to increase speed to 290 knots"),
+    "ALT KLM12 FL170 ; ATALT KLM12 FL130 SPD KLM12 290")
+  check_eq(ex("Could you ask KLM12 to climb to FL170 and, when it reaches that height, to turn left to heading 230?"),
+    "ALT KLM12 FL170 ; ATALT KLM12 FL170 HDG KLM12 230 LEFT")
+  check_eq(ex("Please ask KLM12 to reduce to 230 knots and, once it reaches that speed, to climb to FL170."),
+    "SPD KLM12 230 ; ATSPD KLM12 230 ALT KLM12 FL170")
+  check_eq(ex("KLM12 descend FL080 and then talk to Amsterdam control on 121.2"), "ALT KLM12 FL80")
+  asked(ex("KLM12 climb to FL170 and, when it reaches that height, turn left"), "a turn with no heading")
+end
