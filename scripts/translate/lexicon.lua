@@ -122,8 +122,9 @@ return {
         "watch", "observe", "effect", "effects", "result", "results", "outcome", "happens",
         -- the study a run belongs to, told as its story ("it departed there in our story", "for my study")
         "story", "study", "storyline", "narrative",
-        -- a newcomer excusing their words ("I apologise for my ignorance of the terminology, but ...")
-        "ignorance", "terminology", "jargon", "apologise", "apologize", "apologies",
+        -- a newcomer excusing or naming their words ("I apologise for my ignorance of the terminology, but ...", "I
+        -- believe the term is vertical navigation")
+        "ignorance", "terminology", "term", "jargon", "apologise", "apologize", "apologies",
         -- an experiment's trials and its framing of what the simulation plays ("we pretend that ...", "could you
         -- arrange for the simulation to pause ...", "simply keep flying straight")
         "trials", "pretend", "imagine", "arrange", "simply" },

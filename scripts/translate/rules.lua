@@ -1442,6 +1442,11 @@ return function(intent, rule, words)
     end
     return g:word(k, "restriction restrictions") and (said.speed or false) == ((said.altitude or said.level) or false)
   end }
+  -- "let RYR3PW manage its own altitude along its route", "manage its height by itself": the route's levels flown
+  -- by the aircraft itself, in plain words (VNAV)
+  rule { "manage", "vnav", near = { 3, "altitude height level levels" }, when = function(g, i)
+    return g:word_in(i + 1, math.min(#g.t + 1, i + 3), "its their his her own") and g:has_ref(1, #g.t + 1, "aircraft")
+  end }
   rule { "vertical vertically", "vnav", prev = { 4, "plan route" } }  -- "follow its flight plan vertically"
   rule { "vertical", "vnav", next = "profile navigation nav" }
   rule { "route rte waypoints", "listrte", prev = { 4, "show list display what print see look where check" } }

@@ -11601,3 +11601,13 @@ do
   check_eq(ex("KLM12 descend FL080 and then talk to Amsterdam control on 121.2"), "ALT KLM12 FL80")
   asked(ex("KLM12 climb to FL170 and, when it reaches that height, turn left"), "a turn with no heading")
 end
+
+-- Cycle 49 (f118): the route's levels flown by the aircraft itself, in plain words ("manage its own altitude along
+-- its route", "manage its height by itself"), are VNAV; "manage the altitude 5000" (no "its") is the level
+do
+  local _, ex = scene({ "CRE AFR9 A320 48.5 2.5 180 FL200 280", "DEFWPT PNTA 48.0 2.5", "ADDWPT AFR9 PNTA" })
+  check_eq(ex("Please ask AFR9 to keep following its route but also to manage its height by itself."), "VNAV AFR9 ON")
+  check_eq(ex("Could you let AFR9 manage its own altitude along its route? I believe the term is vertical navigation."),
+    "VNAV AFR9 ON")
+  check_eq(ex("AFR9 manage the altitude 15000"), "ALT AFR9 15000")
+end
