@@ -1575,7 +1575,7 @@ function G:commentary(b, e, lead, record, places)
   for _, r in ipairs(places and {} or self:refs_in(b, e, "waypoint")) do
     if not self:word(r.b, "@not_names") then return false end
   end
-  local own = self:word(b, CM_OWN)
+  local own, studied = self:word(b, CM_OWN), false
   for x = b, e - 1 do
     local t = self.t[x]
     if self.noted[x] then return false end  -- (what squawk does not simulate: "- hold TOM6RT")
@@ -1590,7 +1590,11 @@ function G:commentary(b, e, lead, record, places)
       -- here: "- hold TOM6RT", "- move the easyJet")
       local verb = RULES_BY_WORD[t.text] and self:has_ref(self:word(x + 1, "the") and x + 2 or x + 1, x + 3, "aircraft")
       -- (`places`: a noun after a reason's word is the reason's, "- ride reports")
-      if (verb or self:intent_at(x)) and not self:word(x - 1, CM_DETERMINERS)
+      -- (in the speaker's own clause, a question word after its verb opens what the speaker studies, no
+      -- question asked and no instruction, naming no aircraft: "we are studying how participants notice speed
+      -- changes")
+      studied = studied or (own and x > b + 1 and self:word(x, "how what whether") and not self:has_ref(x, e, "aircraft"))
+      if (verb or self:intent_at(x)) and not studied and not self:word(x - 1, CM_DETERMINERS)
           and not (places and self:word(x - 1, COMMENTARY.reason_set)) then
         return false
       end
@@ -1803,9 +1807,9 @@ function G:in_reason(i)
           and self:commentary(k + 1, commentary_end(self, k + 1)) then
         -- ("left 70 degrees - hard test of the turn model", "800 ft (testing reduced vertical)")
         inside = true
-      elseif punct and t.text == "," and self:word(k + 1, CM_SUBJECTS) and instructed(k)
+      elseif punct and (t.text == "," or t.text == ";") and self:word(k + 1, CM_SUBJECTS) and instructed(k)
           and self:commentary(k + 1, commentary_end(self, k + 1)) then
-        -- ("Fast-forward 20 minutes, we only care about the descent phase")
+        -- ("Fast-forward 20 minutes, we only care about the descent phase"; "...; we are studying how ...")
         inside = true
       elseif punct and t.text == "," and self:word_in(k + 1, commentary_end(self, k + 1), COMMENTARY.reason_set)
           and not self:word_in(k + 1, commentary_end(self, k + 1), "from")
@@ -2366,6 +2370,10 @@ function G:level_limits()
   for i = 1, #self.t do
     if self:word(i, "until till") then
       local v = self:skip_fillers(i + 1)
+      -- ("until it is ten miles from Porto", "till it's passing FL370": the aircraft's being there; the lexer
+      -- keeps "it" of "it's")
+      if self:word(v, "@reached_subjects") then v = self:skip_fillers(v + 1) end
+      if self:word(v, "@reached_verbs") then v = self:skip_fillers(v + 1) end
       if self:word(v, "passing reaching leaving") then v = self:skip_fillers(v + 1) end
       local q = self:quantities(v, #self.t + 1)[1]
       if q and q.b == v and q.kind == "alt" then
@@ -2721,6 +2729,75 @@ function G:do_at(id, wp, n0)
   end
   for c = n0 + 1, #self.out do self.out[c] = "AT " .. id .. " " .. wp .. " DO " .. self.out[c] end
   return true
+end
+
+-- "keep flying at FL160 until HORTA and then descend FL110", "keep FL230 until PIVON, then descend": segment p,
+-- a verb of keeping (lexicon.kept_as_is.verbs) and one level or speed, whose commands are self.out[n0 + 1 .. n1],
+-- held until the waypoint where aircraft `id`'s next instruction starts. A value the aircraft flies (G.flies)
+-- changes nothing: its command is dropped, the words read as the limit. Returns the number of commands dropped.
+function G:kept_until(p, n0, n1, id)
+  local qs = p and n1 == n0 + 1 and self:quantities(p.b, p.e) or {}
+  if #qs ~= 1 or not self:word_in(p.b, qs[1].b, G.kept_sets.verbs) then return 0 end
+  local cmd, v = self.out[n1]:match("^(%u+) " .. id:gsub("%p", "%%%0") .. " (%S+)$")
+  local kind = ({ ALT = "alt", SPD = qs[1].kind == "mach" and "mach" or "speed" })[cmd]
+  if not kind or not G.flies(self:state(id), kind, qs[1].value) then return 0 end
+  table.remove(self.out, n1)
+  return 1
+end
+
+-- "keep 280 knots until RINOR, which I believe is on its planned route", "... until BOSIO? I believe BOSIO is on its
+-- route.", "? That is the Viseu beacon, on its planned route.": a clause (after a comma) or a sentence of
+-- lexicon.route_remark's words that says "on its ... route" of places that are all on the route of the aircraft
+-- named before it, no value and no aircraft in it, is set aside: it places nothing. A place said in it that is
+-- off that route leaves it to be asked.
+G.route_remark_sets = {}
+for k, list in pairs(lexicon.route_remark) do G.route_remark_sets[k] = set_of(list) end
+function G:route_remarks()
+  local R = G.route_remark_sets
+  if not self:said(R.route_nouns) then return end
+  local function sentence_end(k)
+    local t = self.t[k]
+    return t and t.kind == "punct" and t.text ~= "," and t.text ~= "-" and t.text ~= "'"
+  end
+  for k = 1, #self.t - 2 do
+    if self:word(k, "on") and self:word(k + 1, "its") and not self.noted[k] then
+      local n = k + 2
+      while self:word(n, "planned filed flight") do n = n + 1 end
+      if self:word(n, R.route_nouns) then
+        local b = k
+        while b > 1 and self.t[b - 1].kind ~= "punct" do b = b - 1 end
+        -- (a comma before a clause that describes the place: from the sentence's start, "That is the Viseu
+        -- beacon, on its planned route")
+        if b > 2 and self.t[b - 1].text == "," and (b == k or not self:word(b, "which that")) then
+          local s0 = b - 2
+          while s0 > 1 and not sentence_end(s0 - 1) and self.t[s0 - 1].text ~= "," do s0 = s0 - 1 end
+          if self:word(s0, "that this it which") then b = s0 end
+        end
+        local e = n + 1
+        if not (b > 1 and (sentence_end(b - 1) or self.t[b - 1].text == ",")) or e <= #self.t and self.t[e].kind ~= "punct" then
+          b = nil
+        end
+        local id
+        for _, r in ipairs(self.refs) do
+          if b and r.kind == "aircraft" and r.e <= b then id = r.name end
+        end
+        local ok = b and id and #self:quantities(b, e) == 0 and #self:refs_in(b, e, "aircraft") == 0
+        for x = b or 1, ok and e - 1 or 0 do
+          local t = self.t[x]
+          local place = self:refs_in(x, x + 1, "waypoint")[1]
+          if place then
+            ok = ok and self:on_route(id, place.name)
+          elseif t.kind == "word" and not self:word(x, R.words) then
+            -- (a place's name before its noun: "the Viseu beacon")
+            ok = ok and t.raw:match("^%u") ~= nil and self:word(x + 1, R.place_nouns)
+          elseif t.kind ~= "word" and t.text ~= "," then
+            ok = false
+          end
+        end
+        if ok then self:set_aside(b, e - 1) end
+      end
+    end
+  end
 end
 
 -- True when the words from k are a level or speed wanted, no instruction word: "I want it at FL250", ", I'd like
@@ -3597,6 +3674,7 @@ function G:parse(b, e)
   local segs = self:split_ellipsis(self:segments(b, e))
   local prev_out = #self.out
   local valueless, issued_by = {}, {}  -- (G:valueless_left)
+  local seg_out = {}  -- seg_out[k]: #self.out before segment k's commands
   self:orphan_heading(segs[1])
   for k, s in ipairs(segs) do
     if self.ask then break end
@@ -3636,6 +3714,7 @@ function G:parse(b, e)
         and #self:quantities(s.b, s.e) == 0 then
       skip = true
     end
+    seg_out[k] = #self.out
     if not skip then
       local before = self.last_cond
       self.last_cond = nil
@@ -3690,7 +3769,10 @@ function G:parse(b, e)
         end
       elseif until_wp and not self.ask and #self.out > n_before then
         self:explain(until_wp.u, until_wp.e)
-        self:do_at(self.out[n_before + 1]:match("^%u+ (%S+)"), until_wp.name, n_before)
+        local id = self.out[n_before + 1]:match("^%u+ (%S+)")
+        if self:do_at(id, until_wp.name, n_before) then
+          n_before = n_before - self:kept_until(segs[k - 1], seg_out[k - 1], n_before, id)
+        end
       elseif tail and not self.ask and #self.out > n_before then
         self:do_at(self.out[n_before + 1]:match("^%u+ (%S+)"), tail.name, n_before)
       elseif at_next and not self.ask and #self.out > n_before then
@@ -4153,8 +4235,14 @@ function G:when_reached(s)
   local have = subject and self:word(verb, "have got") and self:word(self:skip_fillers(verb + 1), "it that")
   if not (have or self:word(verb, "reaching reach reaches hit hits")) then return false end
   local k = self:skip_fillers(verb + 1)
-  if self:word(k, "it that") then k = self:skip_fillers(k + 1) end
-  return k == s.trig
+  -- ("once it reaches that height", "when it reaches that speed": the value named by its kind)
+  local kind
+  if self:word(k, "that") and self:word(self:skip_fillers(k + 1), "height altitude level speed") then
+    kind = self:word(self:skip_fillers(k + 1), "speed") and "speed" or nil
+    k = self:skip_fillers(k + 1)
+  end
+  if self:word(k, "it that height altitude level speed") then k = self:skip_fillers(k + 1) end
+  return k == s.trig, kind
 end
 
 -- The same condition said after the instruction it holds, closing its segment ("reduce 180 kts when
@@ -6990,6 +7078,17 @@ function G:refused()
   end
 end
 
+-- True when aircraft state `a` flies or was given value `v` of `kind` ("alt" [ft], "speed" [kt CAS], "mach",
+-- "heading" [deg]): within 50 ft, 2 kt, .01 or 1 degree of its selected or present value.
+function G.flies(a, kind, v)
+  local function near(x, y, tol) return x ~= nil and y ~= nil and math.abs(x - y) <= tol end
+  local function turned(x, y) return x ~= nil and y ~= nil and math.abs((x - y + 540) % 360 - 180) <= 1 end
+  return a ~= nil and (kind == "alt" and (near(v, a.sel_alt_ft, 50) or near(v, a.alt_ft, 50))
+    or kind == "speed" and (near(v, a.sel_cas_kt, 2) or near(v, a.cas_kt, 2))
+    or kind == "mach" and near(v, a.mach, 0.01)
+    or kind == "heading" and (turned(v, a.sel_hdg_deg) or turned(v, a.hdg_deg)))
+end
+
 -- "RYR88F FL370 is fine, just heading 150", "descend FL150, speed 270 is ok", "keep FL370, just heading 150": a
 -- level, speed, mach or heading said to be kept (lexicon.kept_as_is), its clause ending there or at another
 -- instruction, is no instruction when it is what the aircraft named before it (or, with none before, the one
@@ -7063,14 +7162,8 @@ function G:kept_values()
         end
         local a = id and self:state(id)
         local f = handlers.format
-        local function near(x, y, tol) return x ~= nil and y ~= nil and math.abs(x - y) <= tol end
-        local function turned(x, y) return x ~= nil and y ~= nil and math.abs((x - y + 540) % 360 - 180) <= 1 end
         local v = q.value
-        local flown = a and (kind == "alt" and (near(v, a.sel_alt_ft, 50) or near(v, a.alt_ft, 50))
-          or kind == "speed" and (near(v, a.sel_cas_kt, 2) or near(v, a.cas_kt, 2))
-          or kind == "mach" and near(v, a.mach, 0.01)
-          or kind == "heading" and (turned(v, a.sel_hdg_deg) or turned(v, a.hdg_deg)))
-        if flown then
+        if G.flies(a, kind, v) then
           self:set_aside(b, e)
           kept[b] = true
           -- ("..., nur hdg 150": the word that leaves only the other instruction)
@@ -7095,6 +7188,69 @@ function G:kept_values()
             or string.format("'%s' is said to be kept: which aircraft keeps it?", self:raw(b, e + 1)))
         end
       end
+    end
+  end
+end
+
+-- "keep its present altitude and just turn right to heading 250", "keep your current heading but slow down to 260
+-- knots": a verb of keeping, "its"/"your"/"the", a word of lexicon.present and a noun of
+-- lexicon.kept_as_is.present_nouns, then "and", "but" or a comma and another instruction of another kind, is no
+-- instruction when the aircraft named before it (or, with none, after it) holds that value with nothing to
+-- change: its selected level within 50 ft of its level, selected speed within 2 kt of its speed, selected
+-- heading within 1 degree of its heading and no route steering it (HDG would switch LNAV off). Set aside, the
+-- instruction beside it read alone; otherwise the handlers issue the present value as before.
+function G:kept_present()
+  local K = G.kept_sets
+  if not self:said(K.verbs) or not self:said("@present") then return end
+  local nouns, intents = lexicon.kept_as_is.present_nouns, lexicon.kept_as_is.present_intents
+  for i = 1, #self.t - 3 do
+    if self:word(i, K.verbs) and not self.u:used(i) then
+      local k = self:word(i + 1, "flying") and i + 2 or i + 1
+      if self:word(k, "its your the their his her") then k = k + 1 end
+      local kind = self:word(k, "@present") and nouns[self.words[k + 1]]
+      local c = kind and k + 2
+      if c and self.t[c] and self.t[c].kind == "punct" and self.t[c].text == "," then c = c + 1 end
+      local joined = c and self:word(c, "and") or self:word(c, K.but)
+      local n = joined and c + 1 or c
+      if n and self:word(n, K.only) then n = n + 1 end
+      local other = n and self:intent_at(n)
+      local same = false
+      for x = n or 1, other and #self.t or 0 do
+        same = same or self:intent_at(x) == intents[kind]
+      end
+      if other and other ~= "maintain" and not same then
+        local id
+        for _, r in ipairs(self.refs) do
+          if r.kind == "aircraft" and (r.e <= i or not id) then id = r.name end
+        end
+        local a = id and self:state(id)
+        local held = a and (kind == "alt" and G.flies(a, "alt", a.alt_ft) and (a.sel_alt_ft == nil
+            or math.abs(a.sel_alt_ft - a.alt_ft) <= 50)
+          or kind == "speed" and (a.sel_cas_kt == nil or math.abs(a.sel_cas_kt - (a.cas_kt or 0)) <= 2)
+          or kind == "heading" and not a.lnav and (a.sel_hdg_deg == nil or G.flies(a, "heading", a.sel_hdg_deg)
+            and math.abs((a.sel_hdg_deg - a.hdg_deg + 540) % 360 - 180) <= 1))
+        if held then
+          self:set_aside(i, k + 1)
+          if self:word(n - 1, K.only) then self:blank(n - 1) end
+        end
+      end
+    end
+  end
+end
+
+-- "ask TAP1732 to climb to FL170 and, once it passes FL130, to speed up to 290 knots": the infinitive's "to" straight
+-- after a condition set off by commas (its clause opening with a word of lexicon.condition, "and" or "then" before
+-- it), before the instruction
+-- word it holds, is the polite request's grammar: a filler, so the instruction reads with its condition.
+function G:infinitive_after_condition()
+  if not self:said("@condition") then return end
+  for k = 3, #self.t - 1 do
+    if self:word(k, "to") and self.t[k - 1].text == "," and self:intent_at(k + 1) then
+      local c = k - 2
+      while c > 1 and self.t[c - 1].kind ~= "punct" do c = c - 1 end
+      local w = c
+      while self:word(w, "and then") do w = w + 1 end  -- (", and once it passes FL130, to ...")
+      if self:word(w, "@condition") and self.t[c - 1] and self.t[c - 1].text == "," then self:blank(k) end
     end
   end
 end
@@ -7211,6 +7367,14 @@ function G:said_last(i, near, own_clause)
   if own_clause and (j > k or (self.t[k - 1] and self.t[k - 1].text == ",")) and self:word(j, "@clause_verbs") and self:intent_at(j) then
     return true
   end
+  -- (what follows set aside already, punctuation and courtesy between: "until RINOR, which is on its route? Thank
+  -- you.", G:route_remarks)
+  local rest, remark = k, false
+  while r and self.t[rest] and (self.t[rest].kind == "punct" or self.noted[rest] or FRAMING[self.t[rest].text]) do
+    remark = remark or self.noted[rest] == true
+    rest = rest + 1
+  end
+  if remark and rest > #self.t then return true end
   while self.t[k] and self.t[k].kind == "punct" and self.t[k].text ~= "," do k = k + 1 end
   return k > #self.t
 end
@@ -9368,6 +9532,7 @@ function M.translate(text, world)
         q.kind == "lat" and "north or south" or "east or west") }
     end
   end
+  g:route_remarks()
   local note = g:not_simulated()
   g:self_corrected()
   g:places_corrected()
@@ -9375,6 +9540,8 @@ function M.translate(text, world)
   g:refused()
   g:replaced_values()
   g:kept_values()
+  g:kept_present()
+  g:infinitive_after_condition()
   g:acknowledged()
   g:stations()
   g:exercise_names()

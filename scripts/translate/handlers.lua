@@ -147,15 +147,22 @@ function m:opposite_motions(b, e)
   return nil
 end
 
--- 1 on, 0 off, -1 not said.
+-- 1 on, 0 off, -1 not said. A word of a report set aside as not simulated ("I think someone switched that off
+-- by accident": what was done, self.noted) switches nothing.
 function m:on_off(s)
   -- (the switching word just before the segment counts: "disconnect LNAV of X")
   local b = (s.b > 1 and self:word(s.b - 1, "off on @off @on")) and s.b - 1 or s.b
   -- "drifting off its route, put it back on LNAV": switched back on, whatever went off before
   local back = self:find_word(b, s.e, "back")
   if back < s.e and self:word(back + 1, "on") then return 1 end
-  if self:word_in(b, s.e, "@off") or self:word_in(s.b, s.e, "@off_after") then return 0 end
-  if self:word_in(b, s.e, "@on") then return 1 end
+  local function said(from, words)
+    for k = from, s.e - 1 do
+      if self:word(k, words) and not self.noted[k] then return true end
+    end
+    return false
+  end
+  if said(b, "@off") or said(s.b, "@off_after") then return 0 end
+  if said(b, "@on") then return 1 end
   return -1
 end
 

@@ -123,7 +123,13 @@ return {
         -- an experimenter watching what a run does ("let's watch it", "see the effect")
         "watch", "observe", "effect", "effects", "result", "results", "outcome", "happens",
         -- the study a run belongs to, told as its story ("it departed there in our story", "for my study")
-        "story", "study", "storyline", "narrative" },
+        "story", "study", "storyline", "narrative",
+        -- a newcomer excusing or naming their words ("I apologise for my ignorance of the terminology, but ...", "I
+        -- believe the term is vertical navigation")
+        "ignorance", "terminology", "term", "jargon", "apologise", "apologize", "apologies",
+        -- an experiment's trials and its framing of what the simulation plays ("we pretend that ...", "could you
+        -- arrange for the simulation to pause ...", "simply keep flying straight")
+        "trials", "pretend", "imagine", "arrange", "simply" },
     -- the people in the room, addressed ("ok observers, I'm going to start the clock", "ok folks, first one")
     audience = { "folks", "guys", "observers", "observer", "team", "gentlemen", "ladies", "y'all", "everybody",
         -- the same in Spanish and Portuguese, where instructors teach in English ("chicos, look:", "ok pessoal")
@@ -224,6 +230,14 @@ return {
     courtesy_phrases = { "pull up", "when you get a chance", "when you can", "when you're ready", "when ready",
         "when able", "if able", "if you can", "if you could", "if you would", "if possible",
         "if you don't mind", "if it's not too much trouble", "as soon as possible", "as soon as you can",
+        -- a polite speaker's hedges on the whole request ("..., if that is at all possible", "would it be too much
+        -- trouble to ask ...", "if it's no trouble", "if that's a thing", "of course")
+        "if that is at all possible", "if at all possible", "if that is possible", "if that's possible",
+        "if it is possible", "if it's possible", "if it's no trouble", "if it is no trouble", "if that's no trouble",
+        "if that is no trouble", "would it be too much trouble", "is it too much trouble", "if that's a thing",
+        "if that is a thing", "of course", "i apologise", "i apologize", "my apologies", "as a separate thing", "block of trials",
+        "blocks of trials",
+        "if the computer can cope with it", "if the computer can cope", "if the simulation can cope with it",
         -- urgency ("descend FL200 at once", "right away": what squawk sends runs at once)
         "at once", "right away", "straight away", "without further delay",
         -- the aircraft's (or the simulation's) ability, as "if able" ("up to 390 if the sim lets him")
@@ -913,7 +927,22 @@ return {
                  but = { "but" },
                  -- (words before the value that are part of it: "keep it at FL180", "speed 270", "your present heading")
                  units = { "speed", "heading", "hdg", "level", "altitude", "the", "your", "its", "present", "current",
-                   "mach", "flight", "it", "at", "on" } },
+                   "mach", "flight", "it", "at", "on", "flying" },
+                 -- a present value named by its noun after a verb of `verbs` and one of lexicon.present ("keep its
+                 -- present altitude and just turn right", "keep your current heading but slow down"): the kind kept
+                 -- (G:kept_present)
+                 present_nouns = { level = "alt", altitude = "alt", height = "alt", heading = "heading",
+                   speed = "speed" },
+                 -- the instruction word that sets each kind: a kept present value beside one of these is asked
+                 present_intents = { alt = "alt", heading = "hdg", speed = "spd" } },
+  -- a remark that a place named is on the aircraft's route (G:route_remarks): ", which I believe is on its
+  -- planned route", "? I believe BOSIO is on its route.", "? That is the Viseu beacon, on its planned route."; a
+  -- clause or sentence of these words, the places named and a name before one of `place_nouns`
+  route_remark = { words = { "which", "that", "this", "it", "is", "it's", "that's", "i", "we", "believe", "think",
+      "already", "on", "its", "the", "planned", "filed", "route", "flight", "plan", "also", "indeed", "a", "one",
+      "of", "points", "waypoints", "beacon", "point", "waypoint", "fix", "navaid", "vor" },
+    place_nouns = { "beacon", "point", "waypoint", "fix", "navaid", "vor" },
+    route_nouns = { "route", "plan" } },
   -- a level or speed wanted at a waypoint said without an instruction word ("when AFR1234 gets to GIROM I want it
   -- at FL250", "it should be at FL250"): the words that may come before its "at" (G:held_value)
   held_value = { "i", "i'd", "we", "we'd", "want", "like", "need", "it", "him", "her", "them", "to", "be", "at",
@@ -930,6 +959,9 @@ return {
   below = { "below", "under" },
   above = { "above", "over" },
   relative = { "present", "current", "actual", "by" },
+  -- words after an amount that name what it is counted from ("by 20 knots relative to what it is doing",
+  -- "compared with what it flies now"): the present value
+  counted_from = { "relative", "compared", "relatively" },
   -- ("actual": the false friend of the present one, in several languages)
   present = { "present", "current", "actual", "continue" },
   -- verbs that keep a value as it is ("maintain heading", "keep your heading": said with none, the present one)
@@ -1074,6 +1106,10 @@ return {
     -- "then Gander on 128.5", "Shanwick on one two seven decimal six": a station named, then "on" and its frequency
     -- (`station_before`: the station's name straight before "on" is the phrase's too, G:not_simulated)
     { what = "radio frequencies", words = "on", near = { "#frequency" }, window = 1, station_before = true },
+    -- (a newcomer's plain words for the hand-off, the station's name and kind between: "then to talk to Lisbon
+    -- control on 132.8", "speak to Madrid control on one three two decimal seven")
+    { what = "radio frequencies", words = "talk speak", near = { "#frequency", "control", "approach", "tower",
+      "centre", "center", "radar", "ground", "departure", "director", "information" }, window = 6 },
     { what = "approach clearances", words = "ils rnav rnp localizer localiser glideslope glidepath vor",
       near = { "approach", "established", "intercept", "cleared", "runway", "#number" } },
     { what = "approach clearances", words = "cleared clear",
@@ -1194,7 +1230,7 @@ return {
     -- "the student cleared him direct LUX", "he was already cleared to FL100": what someone did, told in the
     -- past tense after a person, is a report, no instruction (`subject`: the word before the verb, "already",
     -- "has", "had", "was", "were" and "just" between them)
-    { what = "reports of what was done", words = "cleared gave vectored turned instructed",
+    { what = "reports of what was done", words = "cleared gave vectored turned instructed switched disconnected",
       subject = "student trainee controller instructor he she they i we someone somebody colleague",
       clause = true },
     -- "expect runway 30 left", "expect ILS approach", "expect lower in 10 miles": information for the

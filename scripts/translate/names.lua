@@ -148,6 +148,12 @@ local names = {
     { "aerosky", "SKU" },  -- (Sky Airline's ICAO telephony)
     { "sky airline", "SKU" },
     { "iberexpres", "IBS" },  -- (Iberia Express)
+    { "iberia express", "IBS" },
+    -- the Azores' airlines: Azores Airlines (telephony AIR AZORES) and SATA Air Acores (telephony SATA)
+    { "air azores", "RZO" },
+    { "azores airlines", "RZO" },
+    { "azores", "RZO" },
+    { "sata", "SAT" },
     { "air nostrum", "ANE" },
     { "nostrum", "ANE" },  -- (said short, as "europa" is)
     { "binter", "IBB" },

@@ -1470,6 +1470,11 @@ return function(intent, rule, words)
     end
     return g:word(k, "restriction restrictions") and (said.speed or false) == ((said.altitude or said.level) or false)
   end }
+  -- "let RYR3PW manage its own altitude along its route", "manage its height by itself": the route's levels flown
+  -- by the aircraft itself, in plain words (VNAV)
+  rule { "manage", "vnav", near = { 3, "altitude height level levels" }, when = function(g, i)
+    return g:word_in(i + 1, math.min(#g.t + 1, i + 3), "its their his her own") and g:has_ref(1, #g.t + 1, "aircraft")
+  end }
   rule { "vertical vertically", "vnav", prev = { 4, "plan route" } }  -- "follow its flight plan vertically"
   rule { "vertical", "vnav", next = "profile navigation nav" }
   rule { "route rte waypoints", "listrte", prev = { 4, "show list display what print see look where check" } }
@@ -1554,6 +1559,9 @@ return function(intent, rule, words)
     if g:word(k + 1, "to") then k = k + 1 end
     return g.t[k + 1] == nil or g.t[k + 1].kind == "punct"
   end }
+  -- "reduce by 20 knots, relative to what it is doing at the moment", "compared with what it flies now": the
+  -- value an amount is counted from (the present one), no question of the aircraft's state
+  rule { "what doing", false, prev = { 5, "@counted_from" } }
   rule { "where", "pos", next = "is are 's" }
   rule { "where's wheres", "pos" }  -- ("wheres the speedbird": typed without the apostrophe)
   rule { "doing", "pos", prev = { 4, "what what's whats" } }  -- "what's klm12 doing"
@@ -2252,9 +2260,10 @@ return function(intent, rule, words)
 
   -- conflict detection and resolution
   -- "the look-ahead time for conflict detection", "the radius for resolution", "look ahead time 5 minutes
-  -- for the detection": the setting's owner (the setting named within the ten words before)
-  rule { "detection resolution", false, prev = { 3, "for of" }, when = function(g, i)
-    return g:word_in(math.max(1, i - 10), i, "look lookahead dtlook zone radius separation")
+  -- for the detection", "the safety distance used by the conflict detection": the setting's owner (the setting
+  -- named within the ten words before)
+  rule { "detection resolution", false, prev = { 3, "for of by" }, when = function(g, i)
+    return g:word_in(math.max(1, i - 10), i, "look lookahead dtlook zone radius separation distance")
   end }
   -- "conflict detection look ahead five minutes": detection names the look-ahead's owner, no switch (one is
   -- said with an on or off word: "detection on, look ahead 5 minutes")
@@ -2414,6 +2423,11 @@ return function(intent, rule, words)
          not_near = { 4, "minimum minima nm nautical mile miles radius ft foot feet horizontally vertically "
            .. "laterally" } }
   rule { "radius", false, prev = { 12, "circle circular" } }  -- "a circle ... with a 20 mile radius"
+  -- "the safety distance used for the conflict detection": the protected zone, in plain words, where conflicts are
+  -- named and no aircraft is
+  rule { "distance", "zone", prev = { 1, "safety" }, when = function(g, i)
+    return g:word_in(1, #g.t + 1, "conflict conflicts detection") and not g:has_ref(1, #g.t + 1, "aircraft")
+  end }
   rule { "protected protection prot pz rpz hpz separation zone zoner zonedh radius", "zone" }  -- ("prot zone")
   rule { "sep", "zone", prev = { 1, "horizontal lateral vertical" } }  -- "horizontal sep back to 5nm"
   rule { "half", "zone", next = "height" }

@@ -6305,7 +6305,9 @@ do
   check(off:find("VISBO is not on SAS31's route", 1, true) ~= nil, off)
   -- "until FIX then ...": the value now, the instruction after "then" from the waypoint on
   check_eq(ex("SAS31 maintain 260 knots until OLMAK then descend FL200"), "SPD SAS31 260 ; AT SAS31 OLMAK DO ALT SAS31 FL200")
-  check_eq(ex("SAS31 keep FL240 till TUREN then reduce 220"), "ALT SAS31 FL240 ; AT SAS31 TUREN DO SPD SAS31 220")
+  -- (a level kept that the aircraft flies changes nothing: no command, G:kept_until; another level is flown)
+  check_eq(ex("SAS31 keep FL240 till TUREN then reduce 220"), "AT SAS31 TUREN DO SPD SAS31 220")
+  check_eq(ex("SAS31 keep FL250 till TUREN then reduce 220"), "ALT SAS31 FL250 ; AT SAS31 TUREN DO SPD SAS31 220")
   off = ex("SAS31 maintain 260 knots until VISBO then descend FL200")
   check(off:find("VISBO is not on SAS31's route", 1, true) ~= nil, off)
   -- "direct FIX, then at FIX climb ...": the direct-to now, the next instruction from the waypoint on
@@ -11818,4 +11820,76 @@ do
   check_eq(ex("KZR90 maintain FL160 until WPB then FL130"), "ALT KZR90 FL160 ; AT KZR90 WPB DO ALT KZR90 FL130")
   asked(ex("KZR90 maintain 270 knots until WPB then FL130"), "a level after a speed's limit")
   asked(ex("KZR90 maintain 270 knots until WPC then 240"), "a waypoint that is none of the route's")
+end
+
+-- Cycle 49 (f118): a present value or a level kept beside another instruction ("keep your present level and just
+-- turn left", "keep FL200 until PNTA and then descend") is no command when the aircraft holds it with nothing to
+-- change; a heading kept on a route (HDG switches LNAV off) and a level it does not fly stay commands; a speed kept
+-- until a distance from a place ("until it is 10 miles from PNTB") is asked, never started there
+do
+  local _, ex = scene({ "CRE KLM12 A320 52.3 4.7 090 FL100 250", "CRE AFR9 A320 48.5 2.5 180 FL200 280",
+    "DEFWPT PNTA 48.0 2.5", "ADDWPT AFR9 PNTA", "DEFWPT PNTB 47.5 2.5", "ADDWPT AFR9 PNTB" })
+  check_eq(ex("KLM12 keep your present level and just turn left heading 050"), "HDG KLM12 50 LEFT")
+  check_eq(ex("KLM12 keep the current heading but reduce to 220 knots"), "SPD KLM12 220")
+  check_eq(ex("AFR9 keep your current heading but reduce to 250 knots"), "HDG AFR9 180 ; SPD AFR9 250")
+  check_eq(ex("AFR9 keep FL200 until PNTA and then descend FL150"), "AT AFR9 PNTA DO ALT AFR9 FL150")
+  check_eq(ex("AFR9 keep flying at FL220 until PNTA and then descend FL150"),
+    "ALT AFR9 FL220 ; AT AFR9 PNTA DO ALT AFR9 FL150")
+  asked(ex("AFR9 keep 280 knots until it is 10 miles from PNTB"), "a speed limited until a distance from a place")
+end
+
+-- Cycle 49 (f118): what a polite speaker says around an instruction is no instruction: a relative phrase ("relative
+-- to what it is doing now"), the study's reason ("; we are looking at how people notice speed changes"), a report
+-- of what someone did ("someone switched it off by mistake"), hedges ("if that is at all possible"), an apology, the
+-- protected zone in plain words; an aircraft named in the studied part, or a real condition, is still asked
+do
+  local _, ex = scene({ "CRE KLM12 A320 52.3 4.7 090 FL100 250", "CRE AFR9 A320 48.5 2.5 180 FL200 280",
+    "DEFWPT PNTA 48.0 2.5", "ADDWPT AFR9 PNTA", "CRE RZO12 A321 38.7 -27.1 090 FL250 280" })
+  check_eq(ex("KLM12 reduce speed by 20 knots, relative to what it is doing now"), "SPD KLM12 230")
+  check_eq(ex("KLM12 slow to 220 knots; we are looking at how people notice speed changes"), "SPD KLM12 220")
+  asked(ex("KLM12 slow to 220 knots; we are studying how KLM12 turns"), "an aircraft named in the studied part")
+  check_eq(ex("Could AFR9 follow its route again? I think someone switched it off by mistake."), "LNAV AFR9 ON")
+  check_eq(ex("set the safety distance for the conflict detection to 4 nautical miles"), "ZONER 4")
+  check_eq(ex("Would it be too much trouble to ask KLM12 to climb to FL120, if that is at all possible?"),
+    "ALT KLM12 FL120")
+  check_eq(ex("I apologise for my ignorance of the terminology, but could KLM12 fly at 230 knots?"), "SPD KLM12 230")
+  asked(ex("KLM12 climb FL120 if it is clear of traffic"), "a condition, no courtesy")
+  check_eq(ex("We pretend that KLM12 climbs now to FL120, please."), "ALT KLM12 FL120")
+  check_eq(ex("Could the Azores aeroplane RZO12 turn right heading 120?"), "HDG RZO12 120 RIGHT")
+end
+
+-- Cycle 49 (f118): a remark that the place a limit ends at is on the aircraft's route ("which I believe is on its
+-- planned route", "? I think PNTA is on its route.") is set aside when it is; for an aircraft that does not pass
+-- it, the limit is asked
+do
+  local _, ex = scene({ "CRE KLM12 A320 52.3 4.7 090 FL100 250", "CRE AFR9 A320 48.5 2.5 180 FL200 280",
+    "DEFWPT PNTA 48.0 2.5", "ADDWPT AFR9 PNTA" })
+  check_eq(ex("AFR9 keep 260 knots until PNTA, which I believe is on its planned route"), "SPD AFR9 260")
+  check_eq(ex("AFR9 keep 260 knots until PNTA? I think PNTA is on its route."), "SPD AFR9 260")
+  asked(ex("KLM12 keep 260 knots until PNTA, which is on its route"), "a place off the aircraft's route")
+end
+
+-- Cycle 49 (f118): a polite request's condition between commas with "to" after it ("and, once it passes FL130, to
+-- increase speed"), "that height" and "that speed" reached, and a hand-off in plain words ("talk to Amsterdam
+-- control on 121.2", not simulated); a condition with no value for its instruction is still asked
+do
+  local _, ex = scene({ "CRE KLM12 A320 52.3 4.7 090 FL100 250" })
+  check_eq(ex("Please ask KLM12 to climb to FL170, and once it passes FL130, to increase speed to 290 knots"),
+    "ALT KLM12 FL170 ; ATALT KLM12 FL130 SPD KLM12 290")
+  check_eq(ex("Could you ask KLM12 to climb to FL170 and, when it reaches that height, to turn left to heading 230?"),
+    "ALT KLM12 FL170 ; ATALT KLM12 FL170 HDG KLM12 230 LEFT")
+  check_eq(ex("Please ask KLM12 to reduce to 230 knots and, once it reaches that speed, to climb to FL170."),
+    "SPD KLM12 230 ; ATSPD KLM12 230 ALT KLM12 FL170")
+  check_eq(ex("KLM12 descend FL080 and then talk to Amsterdam control on 121.2"), "ALT KLM12 FL80")
+  asked(ex("KLM12 climb to FL170 and, when it reaches that height, turn left"), "a turn with no heading")
+end
+
+-- Cycle 49 (f118): the route's levels flown by the aircraft itself, in plain words ("manage its own altitude along
+-- its route", "manage its height by itself"), are VNAV; "manage the altitude 5000" (no "its") is the level
+do
+  local _, ex = scene({ "CRE AFR9 A320 48.5 2.5 180 FL200 280", "DEFWPT PNTA 48.0 2.5", "ADDWPT AFR9 PNTA" })
+  check_eq(ex("Please ask AFR9 to keep following its route but also to manage its height by itself."), "VNAV AFR9 ON")
+  check_eq(ex("Could you let AFR9 manage its own altitude along its route? I believe the term is vertical navigation."),
+    "VNAV AFR9 ON")
+  check_eq(ex("AFR9 manage the altitude 15000"), "ALT AFR9 15000")
 end
