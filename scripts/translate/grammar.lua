@@ -938,6 +938,9 @@ local function hyphened_types(text)
 end
 
 local HEMISPHERES = set_of({ "north", "south", "east", "west", "n", "s", "e", "w" })
+-- a digit said as a word (as ATC says it) -> the digit
+local SAID_DIGIT = { zero = "0", oh = "0", one = "1", two = "2", three = "3", tree = "3", four = "4", fower = "4",
+  five = "5", fife = "5", six = "6", seven = "7", eight = "8", nine = "9", niner = "9" }
 
 -- A position typed in degrees and minutes whose minutes are 60 or more ("N55 75 W003 20", "51 75N",
 -- "55 degrees 75 north", "59 deg 65 min N"): its text, else nil. Such a position is asked about, never
@@ -992,6 +995,63 @@ local function value_homophones(text)
   return tokens.rewrite(text, toks, function(i)
     if convert[i] then return H[bare[i]] .. (toks[i]:match("%p+$") or ""), i + 1 end
   end)
+end
+-- The axis ("lat" or "lon", lexicon.coordinate_axes.hemispheres) a word of bare_words names as a hemisphere (its
+-- initial only in capitals: "N", "W"), else nil.
+G.hemisphere_initials = {}
+for word, axis in pairs(lexicon.coordinate_axes.hemispheres) do G.hemisphere_initials[word:sub(1, 1):upper()] = axis end
+function G.hemisphere_axis(t)
+  return t and (lexicon.coordinate_axes.hemispheres[t.bare] or G.hemisphere_initials[t.raw:match("^(%u)%p*$") or ""])
+end
+-- Coordinates said in words, written as the extractors read them:
+--  * "32 point eight north", "north 52 decimal three five", "96 point niner west": decimal places said as digit
+--    words after "point" or "decimal" (a number in digits before it, a hemisphere's word or letter straight after
+--    the digits or straight before the number) are written as digits ("32 point 8 north"), which written_forms
+--    joins to the number; a decimal said anywhere else stays as said;
+--  * "latitude 41.4 north, longitude 9.6 west", "longitude 10.1 W", "latitude 32 point 8 south": a coordinate said
+--    between its label (lexicon.coordinate_axes.labels) and a hemisphere of the label's axis is written without
+--    the label ("41.4 north": after its label the extractors read the number alone, unsigned); a hemisphere of the
+--    other axis ("latitude 41.4 west") leaves the text as said.
+function G.spoken_coordinates(text)
+  local low = text:lower()
+  local points = low:find("point", 1, true) or low:find("decimal", 1, true)
+  if not (points or low:find("lat", 1, true) or low:find("lon", 1, true)) then return text end
+  local toks = bare_words(text)
+  -- (the decimal places said from j, numerals or digit words, a mark ending them: their digits and the position
+  -- after them)
+  local function places(j)
+    if toks[j] and toks[j].raw:match("^%d+$") then return toks[j].raw, j + 1 end
+    local digits = {}
+    while toks[j] and SAID_DIGIT[toks[j].bare] and toks[j].raw:match("^%a+%p?$") do
+      digits[#digits + 1] = SAID_DIGIT[toks[j].bare]
+      j = j + 1
+      if toks[j - 1].raw:match("%p$") then break end
+    end
+    return table.concat(digits), j
+  end
+  local function point(k) return toks[k] and G.hemisphere_words.point[toks[k].raw:lower()] end
+  local put, done = tokens.splicer(text)
+  for k = 1, #toks - 1 do
+    local axis = lexicon.coordinate_axes.labels[toks[k].bare]
+    local n = axis and toks[k].raw:match("%a$") and toks[k + 1].raw:match("^%d+%.?%d*$") and k + 2
+    if n and point(n) and not toks[n - 1].raw:find(".", 1, true) then
+      local digits, after = places(n + 1)
+      if digits ~= "" then n = after end
+    end
+    if n and not toks[n - 1].raw:match("%p$") and G.hemisphere_axis(toks[n]) == axis then
+      put(toks[k].at, "", toks[k + 1].at)
+    end
+    if points and k > 1 and point(k) and toks[k - 1].raw:match("^%d+$") and not toks[k + 1].raw:match("^%d") then
+      local digits, j = places(k + 1)
+      local last = toks[j - 1]
+      local after = not last.raw:match("%p$") and G.hemisphere_axis(toks[j])
+      local before = G.hemisphere_axis(toks[k - 2]) and not toks[k - 2].raw:match("%p$")
+      if digits ~= "" and (after or before) then
+        put(toks[k + 1].at, digits .. (last.raw:match("%p+$") or ""), last.e)
+      end
+    end
+  end
+  return done()
 end
 -- digits, "point" or "decimal" in any case, digits, a word: written_forms reads a hemisphere's decimal point
 local POINT_SAID = {}  -- {word =, pattern =}
@@ -1287,6 +1347,8 @@ local function written_forms(text, world)
     if before and before:match("^[%d%.,%-]+$") and w ~= "left" and w ~= "right" then return nil end
     return w .. space .. digit
   end)
+  text = G.spoken_coordinates(text)
+  low = text:lower()
   if low:find("north", 1, true) or low:find("south", 1, true) then
     text = G.hemispheres_first(text)
     low = text:lower()
@@ -7743,8 +7805,6 @@ local function unglued_ids(text, fleet)
   end))
 end
 
-local SAID_DIGIT = { zero = "0", oh = "0", one = "1", two = "2", three = "3", tree = "3", four = "4", fower = "4",
-  five = "5", fife = "5", six = "6", seven = "7", eight = "8", nine = "9", niner = "9" }
 -- "descend CLH 2AB": a callsign typed apart after its airline letters is joined when the
 -- joined id is exactly an aircraft's (letters after the digits too), and so is a registration
 -- written with its hyphen ("C-GKQM", "D-EABC": CGKQM, DEABC); so are a flight number's letters
@@ -9104,6 +9164,12 @@ function M.translate(text, world)
       return { commands = {}, ask = string.format("'%s' is no %s: it runs from 0 to %d degrees %s. Which position "
         .. "do you mean?", g:raw(q.b, q.e), q.kind == "lat" and "latitude" or "longitude", q.kind == "lat" and 90 or 180,
         q.kind == "lat" and "north or south" or "east or west") }
+    end
+    -- a hemisphere said straight after a coordinate that did not take it ("latitude 41.4 west": the other axis's)
+    local t = (q.kind == "lat" or q.kind == "lon") and g.t[q.e]
+    if t and t.kind == "word" and G.hemisphere_axis({ raw = t.raw, bare = t.text }) then
+      return { commands = {}, ask = string.format("Is '%s' a %s? '%s' is not a hemisphere of it. Which position do "
+        .. "you mean?", g:raw(q.b, q.e + 1), q.kind == "lat" and "latitude" or "longitude", t.raw) }
     end
   end
   local note = g:not_simulated()

@@ -664,6 +664,11 @@ return {
   -- back ("climb FL330 cancel that maintain FL310"): an instruction's verb or a level's first word
   cancel_correction_next = { "maintain", "climb", "descend", "reduce", "increase", "turn", "fly", "expedite", "slow",
                              "fl", "flight", "mach" },
+  -- a coordinate's axis ("lat", "lon") by the label said before its number ("latitude 41.4 north") and by its
+  -- hemisphere's word or letter (grammar.lua G.spoken_coordinates)
+  -- (a hemisphere typed as its initial in capitals, "41.4 N", is that word's)
+  coordinate_axes = { labels = { latitude = "lat", longitude = "lon" },
+                      hemispheres = { north = "lat", south = "lat", east = "lon", west = "lon" } },
   self_correction = { words = { "oh", "no", "wait", "sorry", "actually", "make", "that", "i", "mean", "uh", "um", "er",
                                 "say", "again", "scratch", "corr", "hmm", "typo", "never", "mind", "nevermind", "forget" },
                       markers = { "no", "wait", "sorry", "actually", "make that", "mean", "say again", "scratch",

@@ -11537,3 +11537,15 @@ do
   asked(ex("KLM12 no higher FL300"), "the bound with 'than' left out")
   check_eq(ex("KLM12 climb to FL300, no higher"), "ALT KLM12 FL300")
 end
+
+-- Cycle 49 (hz60): a coordinate with its hemisphere said after it and its label before it ("latitude 52.5 north,
+-- longitude 4.2 west") or its decimals said as digit words ("52 point five north") keeps the hemisphere's sign; a
+-- hemisphere of the other axis ("latitude 52.5 west") is asked
+do
+  local _, ex = scene({ "CRE KLM12 A320 52.3 4.7 090 FL150 250" })
+  check_eq(ex("move KLM12 to latitude 52.5 north, longitude 4.2 west"), "MOVE KLM12 52.5 -4.2")
+  check_eq(ex("define waypoint ALPHA1 at latitude 33.9 south and longitude 18.6 east"), "DEFWPT ALPHA1 -33.9 18.6")
+  check_eq(ex("move KLM12 to 52 point five north 4 point two west"), "MOVE KLM12 52.5 -4.2")
+  check_eq(ex("move KLM12 to north 52 decimal three five, west 4 point eight"), "MOVE KLM12 52.35 -4.8")
+  asked(ex("move KLM12 to latitude 52.5 west, longitude 4.2 north"), "a hemisphere of the other axis")
+end
