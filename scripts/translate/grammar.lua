@@ -8529,9 +8529,25 @@ function G.recognised_callsigns(text, world, parsed)
     words[#words + 1] = r[3] .. (toks[r[2]]:match("%p+$") or "")
     for k = r[2] + 1, #toks do words[#words + 1] = toks[k] end
     local read = table.concat(words, " ")
-    if G.one_new_aircraft(read, said, world, parsed) then return G.recognised_callsigns(read, world, parsed) end
+    if G.one_new_aircraft(read, said, world, parsed) or G.same_one_aircraft(read, said, world, parsed) then
+      return G.recognised_callsigns(read, world, parsed)
+    end
   end
   return text
+end
+-- True when a re-read of the request names exactly one aircraft, matched exactly, and `said` (the text as heard)
+-- names that one alone: "luft hansa four oh four" heard as DLH404 by its "hansa" still reads "lufthansa", so that
+-- no part of the airline's word is left over as a word of its own (nor spelled into one: "luft" as "left").
+function G.same_one_aircraft(read, said, world, parsed)
+  local one
+  for id in pairs(exact_aircraft(read, world, parsed)) do
+    if one then return false end
+    one = id
+  end
+  for id in pairs(said) do
+    if id ~= one then return false end
+  end
+  return one ~= nil and said[one] == true
 end
 
 -- "Air Canada four hundred twelve", "Air Canada four-hundred-twelve": a flight number said in hundreds straight

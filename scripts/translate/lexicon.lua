@@ -669,9 +669,10 @@ return {
   -- (a hemisphere typed as its initial in capitals, "41.4 N", is that word's)
   coordinate_axes = { labels = { latitude = "lat", longitude = "lon" },
                       hemispheres = { north = "lat", south = "lat", east = "lon", west = "lon" } },
-  self_correction = { words = { "oh", "no", "wait", "sorry", "actually", "make", "that", "i", "mean", "uh", "um", "er",
-                                "say", "again", "scratch", "corr", "hmm", "typo", "never", "mind", "nevermind", "forget" },
-                      markers = { "no", "wait", "sorry", "actually", "make that", "mean", "say again", "scratch",
+  self_correction = { words = { "oh", "no", "wait", "sorry", "actually", "make", "that", "i", "mean", "meant", "uh", "um",
+                                "er", "say", "again", "scratch", "corr", "hmm", "typo", "never", "mind", "nevermind",
+                                "forget" },
+                      markers = { "no", "wait", "sorry", "actually", "make that", "mean", "meant", "say again", "scratch",
                                   "corr", "never mind", "nevermind", "forget that" },
                       -- the markers that, closing the request, take back what came before with nothing said
                       -- in its place ("turn left 20, sorry": asked); "I mean" closing it points back at what

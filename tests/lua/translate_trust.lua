@@ -11549,3 +11549,19 @@ do
   check_eq(ex("move KLM12 to north 52 decimal three five, west 4 point eight"), "MOVE KLM12 52.35 -4.8")
   asked(ex("move KLM12 to latitude 52.5 west, longitude 4.2 north"), "a hemisphere of the other axis")
 end
+
+-- Cycle 49 (hz60): a correction said after an instruction takes it back or replaces it, never leaves it half
+-- applied: a turn's side said again after a self-correction marker ("sorry, I meant to the left") is the side; two
+-- sides said for one turn with no marker between are asked
+do
+  local _, ex = scene({ "CRE KLM12 A320 52.3 4.7 090 FL150 250", "DEFWPT HZAA 52.5 5.5", "DEFWPT HZBB 52.7 6.5",
+    "ADDWPT KLM12 HZAA", "ADDWPT KLM12 HZBB", "CRE DLH404 A346 52.1 4.2 060 FL130 290" })
+  check_eq(ex("KLM12 turn right heading 200, sorry, I meant to the left"), "HDG KLM12 200 LEFT")
+  check_eq(ex("KLM12 turn left heading 300, no, to the right, heading 300"), "HDG KLM12 300 RIGHT")
+  asked(ex("right KLM12 turn left heading 300"), "two sides, no marker between")
+  asked(ex("KLM12 turn left turn right heading 300"), "two sides said for one turn")
+  check_eq(ex("KLM12 turn left heading 300, traffic right two o'clock five miles"), "HDG KLM12 300 LEFT")
+  -- an airline's telephony split in two ("luft hansa") is the airline, its first part never spelled into a side
+  check_eq(ex("luft hansa four oh four turn right heading 090"), "HDG DLH404 90 RIGHT")
+  asked(ex("luft hansa four oh four turn left turn right heading 090"), "two sides after the airline joined")
+end
