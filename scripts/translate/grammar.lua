@@ -739,27 +739,27 @@ local function self_corrections(text)
   return done()
 end
 
--- "reduce speed 220 knots, cancel that, maintain 250 knots", "climb FL330 cancel that maintain FL310": "cancel that"
--- (or "cancel" before a comma) straight after a value, with more said after it, is a self-correction and becomes the
--- word "correction", which G:parse reads (the instruction after it replaces the one before when both are of one
+-- "reduce speed 220 knots, cancel that, maintain 250 knots", "climb FL330 belay that maintain FL310": "cancel that"
+-- (or "cancel" before a comma; "belay": lexicon.cancel_verbs) straight after a value, with more said after it, is a
+-- self-correction and becomes the correction word "disregard" (it takes back), which G:parse reads (the instruction after it replaces the one before when both are of one
 -- kind, and another kind is asked). With no comma after "that", only a value or a word of
 -- lexicon.cancel_correction_next may follow ("cancel that heading, resume own navigation" cancels that instruction).
-G.cancel_next = set_of(lexicon.cancel_correction_next)
+G.cancel_next, G.cancel_verbs = set_of(lexicon.cancel_correction_next), set_of(lexicon.cancel_verbs)
 function G.cancel_corrections(text)
-  if not text:find("ancel", 1, true) then return text end
+  if not text:find("ancel", 1, true) and not text:find("elay", 1, true) then return text end
   local toks = bare_words(text)
   local function value(t) return t and (t.raw:match("%d%p*$") or NUMBER_WORDS[t.bare] or UNIT_WORDS[t.bare]) end
   local put, done, from = tokens.splicer(text)
   for k = 2, #toks do
     local t = toks[k]
-    if t.bare == "cancel" and t.at >= from() and value(toks[k - 1]) then
+    if G.cancel_verbs[t.bare] and t.at >= from() and value(toks[k - 1]) then
       local j = toks[k + 1] and toks[k + 1].bare == "that" and k + 2 or k + 1
       local marked = toks[j - 1].raw:match("%p$") or (toks[j] and toks[j].bare == "")
       local nx = toks[j]
       while nx and nx.bare == "" do j = j + 1 nx = toks[j] end
       if nx and (marked or (j == k + 2 and (value(nx) or nx.raw:match("^%a?%a?%.?%d")
           or G.cancel_next[nx.bare]))) then
-        put(t.at, "correction, ", nx.at)
+        put(t.at, "disregard, ", nx.at)
       end
     end
   end
@@ -804,6 +804,61 @@ local function readback_heard(text)
       end
     end
     seen_value = seen_value or value(t) ~= nil
+  end
+  return text
+end
+
+-- "EIN3KL read back flight level one one zero, he was cleared flight level niner zero, fix it": a readback reported
+-- by a third person (lexicon.readback_reported.verbs, no "you" or "your" before them) and its values ending at a
+-- comma, then what was cleared (a word of .cleared or none, "cleared", "to" or not, and its values), ending the
+-- request or its clause (one of .fix after it, "fix it", is what it asks), is the clearance to fly: read as
+-- "EIN3KL cleared flight level niner zero" (the level read back is the pilot's words, never one to fly). Anything
+-- else stays as said.
+G.readback_nouns = set_of(lexicon.readback_reported.nouns)
+function G.readback_reported(text)
+  local RB = lexicon.readback_reported
+  local low = text:lower()
+  if not low:find("read", 1, true) or not low:find("cleared", 1, true) then return text end
+  local toks = bare_words(text)
+  local function value(t) return t and (t.raw:match("%d%p*$") or NUMBER_WORDS[t.bare] or G.readback_nouns[t.bare]) end
+  -- (the position after one of `list`'s phrases said from k, no mark inside it, else nil)
+  local function phrase(k, list)
+    for _, p in ipairs(list) do
+      local j, ok = k, true
+      for w in p:gmatch("%S+") do
+        ok = ok and toks[j] ~= nil and toks[j].bare == w and (j == k or not toks[j - 1].raw:match("%p$"))
+        j = j + 1
+      end
+      if ok then return j end
+    end
+  end
+  -- (the end of a run of values from k: the position after it, a mark ending it)
+  local function values(k)
+    local n = k
+    while toks[n] and value(toks[n]) do
+      n = n + 1
+      if toks[n - 1].raw:match("%p$") then break end
+    end
+    return n
+  end
+  for k = 2, #toks - 1 do
+    local v = phrase(k, RB.verbs)
+    if v and toks[k - 1].bare ~= "you" and toks[k - 1].bare ~= "your" and not toks[k - 1].raw:match("[%.;:!?]$") then
+      local n = values(v)
+      local c = n > v and toks[n - 1].raw:match(",$") and (phrase(n, RB.cleared) or n)
+      if c and toks[c] and toks[c].bare == "cleared" and not toks[c].raw:match("%p$") then
+        local b = toks[c + 1] and toks[c + 1].bare == "to" and c + 2 or c + 1
+        local m = values(b)
+        local last = toks[m - 1]
+        -- (one of .fix after them asks for the clearance: the words it said are read as it)
+        local fix = m > b and last.raw:match(",$") and phrase(m, RB.fix)
+        local rest = fix and (fix > #toks or toks[fix - 1].raw:match("%p$")) and fix or m
+        if m > b and (m > #toks or last.raw:match(",$")) and (not fix or rest == fix) then
+          return text:sub(1, toks[k].at - 1) .. "cleared " .. text:sub(toks[b].at, last.e - 1):gsub("%p+$", "")
+            .. (toks[rest] and ", " .. text:sub(toks[rest].at) or (toks[#toks].raw:match("[%.!]$") or ""))
+        end
+      end
+    end
   end
   return text
 end
@@ -1214,7 +1269,7 @@ local function written_forms(text, world)
   where("@", "(%s)@%s*(%w)", "%1at %2")
   where("@", "^@%s*(%w)", "at %1")
   text = typed_abbreviations(lone_multipliers(tokens.numerals_apart(text, DIGIT_WORDS), world))
-  text = hyphened_types(spelled(heard_forms(negated_values(readback_heard(self_corrections(G.cancel_corrections(unlabelled(foreign_digits(G.said_whole(text))))))))))
+  text = hyphened_types(spelled(heard_forms(negated_values(G.readback_reported(readback_heard(self_corrections(G.cancel_corrections(unlabelled(foreign_digits(G.said_whole(text)))))))))))
   low = text:lower()
   -- a position typed as whole degrees after the hemisphere, then minutes ("N55 50.0 W003 20.0", "S33 57
   -- E151 10"): decimal degrees before their hemisphere ("55.833333 N 3.333333 W"); minutes of 60 or more
@@ -2688,6 +2743,18 @@ function G:condition()
     end
     comma, rest = q.e, q.e
   end
+  -- ("when reaching FL230... disregard, descend FL190", "..., scratch that, descend FL190": a condition taken back
+  -- by a correction (lexicon.correction, or self_correction.dropping's words) said before the next instruction
+  -- word, no value between, is none; the instruction after it runs now; "when reaching FL230, correction, FL240"
+  -- corrects the condition's value)
+  local taken = i + 1
+  while taken <= #self.t and not self:intent_at(taken) do taken = taken + 1 end
+  local c = math.min(self:find_word(i, taken, "@correction"), self:find_word(i, taken, G.sc_dropping))
+  if c < taken and #self:quantities(c, taken) == 0 then
+    self:mark_used(i, c)
+    for k = i, c - 1 do self.noted[k] = true end
+    return nil, 1
+  end
   local ids = self:refs_in(i, comma, "aircraft")
   if lead and #ids > 0 then return nil, 1 end
   if lead then ids = { lead } end
@@ -3449,6 +3516,22 @@ function G:self_corrected()
         end
       end
     end
+    -- ("RZO135 go to flight level 250, no wait, keep it at its current level": with no instruction word before the
+    -- run, a level, speed or heading said straight before it is taken back when an instruction is said in its
+    -- place, with the words that lead to it from the aircraft named or the last mark; its kind is the value's)
+    local valued
+    if marked and p < 1 and v <= #self.t and self:intent_at(v) then
+      local qs = self:quantities(1, a)
+      local q = qs[#qs]
+      valued = q and q.e == a and G.value_kinds[q.kind] and ({ alt = "alt", speed = "spd", heading = "hdg" })[
+        G.value_kinds[q.kind]]
+      if valued then
+        p = q.b
+        while p > 1 and self.t[p - 1].kind == "word" and not self.t[p - 1].filler and not self:has_ref(p - 1, p, "aircraft") do
+          p = p - 1
+        end
+      end
+    end
     -- (with no instruction word before the run, "put the Fedex and the Spirit at FL350 ... actually just the
     -- Spirit", only the aircraft narrowed)
     if marked and c <= #self.t and (p >= 1 or (self:word(c, SC_ONLY) and self:has_ref(c + 1, c + 3, "aircraft"))) then
@@ -3538,7 +3621,7 @@ function G:self_corrected()
         -- ("never mind", "forget that", "scratch that" take it back in words; the same verb is no other kind)
         if w == c and not self:word(c, "it") and not SC_SETTING[self.words[c]]
             and not self:word_in(a, c, "never nevermind forget scratch") and self.words[c] ~= self.words[p]
-            and not same_family(self:intent_at(p), self:intent_at(c)) then
+            and not same_family(self:intent_at(p) or valued, self:intent_at(c)) then
           local e = c
           while self.t[e] and self.t[e].kind ~= "punct" do e = e + 1 end
           local function said(b, e) return (self:raw(b, e):gsub(" ([,.;:])", "%1"):gsub("[%s%p]+$", "")) end
@@ -3675,6 +3758,11 @@ function G:parse(b, e)
         self:need(string.format("Should I do '%s' instead of '%s', or as well?", said(c + 1, s.e):gsub("^[%s%p]+", ""),
           said(segs[k - 1].trig, c)))
         break
+      elseif self:word(c, "@correction_taking_back") then
+        -- ("turn left heading 360, disregard, continue on your route", "... belay that, resume own navigation": an
+        -- instruction with no value of its own after one taken back in words, lexicon.correction_taking_back, is
+        -- said in its place: the one before is dropped)
+        for x = #self.out, prev_out + 1, -1 do self.out[x] = nil end
       end
     end
     self:taken_back(s)
@@ -4147,6 +4235,8 @@ end
 
 function G:when_reached(s)
   local c = self:find_word(s.b, s.trig, "@condition")
+  -- (a condition taken back, noted by G:condition, waits for nothing)
+  if self.noted[c] then return false end
   if c >= s.trig then
     -- ("climb FL370, reaching Mach .79", "on reaching reduce 250": "reaching" alone opening the clause)
     -- (after the clause's callsign: "RYR8GN on reaching reduce 220")
