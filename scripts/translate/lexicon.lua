@@ -1197,6 +1197,12 @@ return {
     -- report the pilot makes (alone, "report heading" asks for the aircraft's state: POS)
     { what = "position reports", words = "report", near = { "heading", "level", "altitude", "speed", "mach" },
       after_instruction = true, to_end = true },
+    -- "KLM12 read back FL110", "readback was heading 200": the values a pilot read back are the pilot's words, no
+    -- clearance (what was cleared, said after them, is read: grammar.lua readback_reported)
+    { what = "readbacks of a clearance", words = "read", near = { "back" }, window = 1,
+      and_near = { { "#number", "fl", "flight", "heading", "level", "altitude", "speed", "mach" }, 2 } },
+    { what = "readbacks of a clearance", words = "readback", near = { "#number", "fl", "flight", "heading", "level",
+      "altitude", "speed", "mach", "was" }, window = 1 },
     -- "the student cleared him direct LUX", "he was already cleared to FL100": what someone did, told in the
     -- past tense after a person, is a report, no instruction (`subject`: the word before the verb, "already",
     -- "has", "had", "was", "were" and "just" between them)

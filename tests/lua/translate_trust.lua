@@ -11587,6 +11587,8 @@ do
   check_eq(ex("KLM12 read back FL130, he was cleared FL120, fix it"), "ALT KLM12 FL120")
   check_eq(ex("KLM12 readback was heading 200, she was cleared heading 210"), "HDG KLM12 210")
   check_eq(ex("KLM12 read back FL130, he was cleared FL120, and reduce speed 220"), "ALT KLM12 FL120 ; SPD KLM12 220")
+  check_eq(ex("KLM12 read back FL130, reduce speed 220"), "SPD KLM12 220")
+  check_eq(ex("KLM12 read back your route"), "LISTRTE KLM12")
   check_eq(ex("KLM12 continue on your route"), "LNAV KLM12 ON")
   check_eq(ex("KLM12 keep it at its current level"), "ALT KLM12 15000")
 end
