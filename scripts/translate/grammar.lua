@@ -739,27 +739,27 @@ local function self_corrections(text)
   return done()
 end
 
--- "reduce speed 220 knots, cancel that, maintain 250 knots", "climb FL330 cancel that maintain FL310": "cancel that"
--- (or "cancel" before a comma) straight after a value, with more said after it, is a self-correction and becomes the
--- word "correction", which G:parse reads (the instruction after it replaces the one before when both are of one
+-- "reduce speed 220 knots, cancel that, maintain 250 knots", "climb FL330 belay that maintain FL310": "cancel that"
+-- (or "cancel" before a comma; "belay": lexicon.cancel_verbs) straight after a value, with more said after it, is a
+-- self-correction and becomes the correction word "disregard" (it takes back), which G:parse reads (the instruction after it replaces the one before when both are of one
 -- kind, and another kind is asked). With no comma after "that", only a value or a word of
 -- lexicon.cancel_correction_next may follow ("cancel that heading, resume own navigation" cancels that instruction).
-G.cancel_next = set_of(lexicon.cancel_correction_next)
+G.cancel_next, G.cancel_verbs = set_of(lexicon.cancel_correction_next), set_of(lexicon.cancel_verbs)
 function G.cancel_corrections(text)
-  if not text:find("ancel", 1, true) then return text end
+  if not text:find("ancel", 1, true) and not text:find("elay", 1, true) then return text end
   local toks = bare_words(text)
   local function value(t) return t and (t.raw:match("%d%p*$") or NUMBER_WORDS[t.bare] or UNIT_WORDS[t.bare]) end
   local put, done, from = tokens.splicer(text)
   for k = 2, #toks do
     local t = toks[k]
-    if t.bare == "cancel" and t.at >= from() and value(toks[k - 1]) then
+    if G.cancel_verbs[t.bare] and t.at >= from() and value(toks[k - 1]) then
       local j = toks[k + 1] and toks[k + 1].bare == "that" and k + 2 or k + 1
       local marked = toks[j - 1].raw:match("%p$") or (toks[j] and toks[j].bare == "")
       local nx = toks[j]
       while nx and nx.bare == "" do j = j + 1 nx = toks[j] end
       if nx and (marked or (j == k + 2 and (value(nx) or nx.raw:match("^%a?%a?%.?%d")
           or G.cancel_next[nx.bare]))) then
-        put(t.at, "correction, ", nx.at)
+        put(t.at, "disregard, ", nx.at)
       end
     end
   end
@@ -804,6 +804,61 @@ local function readback_heard(text)
       end
     end
     seen_value = seen_value or value(t) ~= nil
+  end
+  return text
+end
+
+-- "EIN3KL read back flight level one one zero, he was cleared flight level niner zero, fix it": a readback reported
+-- by a third person (lexicon.readback_reported.verbs, no "you" or "your" before them) and its values ending at a
+-- comma, then what was cleared (a word of .cleared or none, "cleared", "to" or not, and its values), ending the
+-- request or its clause (one of .fix after it, "fix it", is what it asks), is the clearance to fly: read as
+-- "EIN3KL cleared flight level niner zero" (the level read back is the pilot's words, never one to fly). Anything
+-- else stays as said.
+G.readback_nouns = set_of(lexicon.readback_reported.nouns)
+function G.readback_reported(text)
+  local RB = lexicon.readback_reported
+  local low = text:lower()
+  if not low:find("read", 1, true) or not low:find("cleared", 1, true) then return text end
+  local toks = bare_words(text)
+  local function value(t) return t and (t.raw:match("%d%p*$") or NUMBER_WORDS[t.bare] or G.readback_nouns[t.bare]) end
+  -- (the position after one of `list`'s phrases said from k, no mark inside it, else nil)
+  local function phrase(k, list)
+    for _, p in ipairs(list) do
+      local j, ok = k, true
+      for w in p:gmatch("%S+") do
+        ok = ok and toks[j] ~= nil and toks[j].bare == w and (j == k or not toks[j - 1].raw:match("%p$"))
+        j = j + 1
+      end
+      if ok then return j end
+    end
+  end
+  -- (the end of a run of values from k: the position after it, a mark ending it)
+  local function values(k)
+    local n = k
+    while toks[n] and value(toks[n]) do
+      n = n + 1
+      if toks[n - 1].raw:match("%p$") then break end
+    end
+    return n
+  end
+  for k = 2, #toks - 1 do
+    local v = phrase(k, RB.verbs)
+    if v and toks[k - 1].bare ~= "you" and toks[k - 1].bare ~= "your" and not toks[k - 1].raw:match("[%.;:!?]$") then
+      local n = values(v)
+      local c = n > v and toks[n - 1].raw:match(",$") and (phrase(n, RB.cleared) or n)
+      if c and toks[c] and toks[c].bare == "cleared" and not toks[c].raw:match("%p$") then
+        local b = toks[c + 1] and toks[c + 1].bare == "to" and c + 2 or c + 1
+        local m = values(b)
+        local last = toks[m - 1]
+        -- (one of .fix after them asks for the clearance: the words it said are read as it)
+        local fix = m > b and last.raw:match(",$") and phrase(m, RB.fix)
+        local rest = fix and (fix > #toks or toks[fix - 1].raw:match("%p$")) and fix or m
+        if m > b and (m > #toks or last.raw:match(",$")) and (not fix or rest == fix) then
+          return text:sub(1, toks[k].at - 1) .. "cleared " .. text:sub(toks[b].at, last.e - 1):gsub("%p+$", "")
+            .. (toks[rest] and ", " .. text:sub(toks[rest].at) or (toks[#toks].raw:match("[%.!]$") or ""))
+        end
+      end
+    end
   end
   return text
 end
@@ -938,6 +993,9 @@ local function hyphened_types(text)
 end
 
 local HEMISPHERES = set_of({ "north", "south", "east", "west", "n", "s", "e", "w" })
+-- a digit said as a word (as ATC says it) -> the digit
+local SAID_DIGIT = { zero = "0", oh = "0", one = "1", two = "2", three = "3", tree = "3", four = "4", fower = "4",
+  five = "5", fife = "5", six = "6", seven = "7", eight = "8", nine = "9", niner = "9" }
 
 -- A position typed in degrees and minutes whose minutes are 60 or more ("N55 75 W003 20", "51 75N",
 -- "55 degrees 75 north", "59 deg 65 min N"): its text, else nil. Such a position is asked about, never
@@ -992,6 +1050,63 @@ local function value_homophones(text)
   return tokens.rewrite(text, toks, function(i)
     if convert[i] then return H[bare[i]] .. (toks[i]:match("%p+$") or ""), i + 1 end
   end)
+end
+-- The axis ("lat" or "lon", lexicon.coordinate_axes.hemispheres) a word of bare_words names as a hemisphere (its
+-- initial only in capitals: "N", "W"), else nil.
+G.hemisphere_initials = {}
+for word, axis in pairs(lexicon.coordinate_axes.hemispheres) do G.hemisphere_initials[word:sub(1, 1):upper()] = axis end
+function G.hemisphere_axis(t)
+  return t and (lexicon.coordinate_axes.hemispheres[t.bare] or G.hemisphere_initials[t.raw:match("^(%u)%p*$") or ""])
+end
+-- Coordinates said in words, written as the extractors read them:
+--  * "32 point eight north", "north 52 decimal three five", "96 point niner west": decimal places said as digit
+--    words after "point" or "decimal" (a number in digits before it, a hemisphere's word or letter straight after
+--    the digits or straight before the number) are written as digits ("32 point 8 north"), which written_forms
+--    joins to the number; a decimal said anywhere else stays as said;
+--  * "latitude 41.4 north, longitude 9.6 west", "longitude 10.1 W", "latitude 32 point 8 south": a coordinate said
+--    between its label (lexicon.coordinate_axes.labels) and a hemisphere of the label's axis is written without
+--    the label ("41.4 north": after its label the extractors read the number alone, unsigned); a hemisphere of the
+--    other axis ("latitude 41.4 west") leaves the text as said.
+function G.spoken_coordinates(text)
+  local low = text:lower()
+  local points = low:find("point", 1, true) or low:find("decimal", 1, true)
+  if not (points or low:find("lat", 1, true) or low:find("lon", 1, true)) then return text end
+  local toks = bare_words(text)
+  -- (the decimal places said from j, numerals or digit words, a mark ending them: their digits and the position
+  -- after them)
+  local function places(j)
+    if toks[j] and toks[j].raw:match("^%d+$") then return toks[j].raw, j + 1 end
+    local digits = {}
+    while toks[j] and SAID_DIGIT[toks[j].bare] and toks[j].raw:match("^%a+%p?$") do
+      digits[#digits + 1] = SAID_DIGIT[toks[j].bare]
+      j = j + 1
+      if toks[j - 1].raw:match("%p$") then break end
+    end
+    return table.concat(digits), j
+  end
+  local function point(k) return toks[k] and G.hemisphere_words.point[toks[k].raw:lower()] end
+  local put, done = tokens.splicer(text)
+  for k = 1, #toks - 1 do
+    local axis = lexicon.coordinate_axes.labels[toks[k].bare]
+    local n = axis and toks[k].raw:match("%a$") and toks[k + 1].raw:match("^%d+%.?%d*$") and k + 2
+    if n and point(n) and not toks[n - 1].raw:find(".", 1, true) then
+      local digits, after = places(n + 1)
+      if digits ~= "" then n = after end
+    end
+    if n and not toks[n - 1].raw:match("%p$") and G.hemisphere_axis(toks[n]) == axis then
+      put(toks[k].at, "", toks[k + 1].at)
+    end
+    if points and k > 1 and point(k) and toks[k - 1].raw:match("^%d+$") and not toks[k + 1].raw:match("^%d") then
+      local digits, j = places(k + 1)
+      local last = toks[j - 1]
+      local after = not last.raw:match("%p$") and G.hemisphere_axis(toks[j])
+      local before = G.hemisphere_axis(toks[k - 2]) and not toks[k - 2].raw:match("%p$")
+      if digits ~= "" and (after or before) then
+        put(toks[k + 1].at, digits .. (last.raw:match("%p+$") or ""), last.e)
+      end
+    end
+  end
+  return done()
 end
 -- digits, "point" or "decimal" in any case, digits, a word: written_forms reads a hemisphere's decimal point
 local POINT_SAID = {}  -- {word =, pattern =}
@@ -1154,7 +1269,7 @@ local function written_forms(text, world)
   where("@", "(%s)@%s*(%w)", "%1at %2")
   where("@", "^@%s*(%w)", "at %1")
   text = typed_abbreviations(lone_multipliers(tokens.numerals_apart(text, DIGIT_WORDS), world))
-  text = hyphened_types(spelled(heard_forms(negated_values(readback_heard(self_corrections(G.cancel_corrections(unlabelled(foreign_digits(G.said_whole(text))))))))))
+  text = hyphened_types(spelled(heard_forms(negated_values(G.readback_reported(readback_heard(self_corrections(G.cancel_corrections(unlabelled(foreign_digits(G.said_whole(text)))))))))))
   low = text:lower()
   -- a position typed as whole degrees after the hemisphere, then minutes ("N55 50.0 W003 20.0", "S33 57
   -- E151 10"): decimal degrees before their hemisphere ("55.833333 N 3.333333 W"); minutes of 60 or more
@@ -1287,6 +1402,8 @@ local function written_forms(text, world)
     if before and before:match("^[%d%.,%-]+$") and w ~= "left" and w ~= "right" then return nil end
     return w .. space .. digit
   end)
+  text = G.spoken_coordinates(text)
+  low = text:lower()
   if low:find("north", 1, true) or low:find("south", 1, true) then
     text = G.hemispheres_first(text)
     low = text:lower()
@@ -2640,6 +2757,18 @@ function G:condition()
     end
     comma, rest = q.e, q.e
   end
+  -- ("when reaching FL230... disregard, descend FL190", "..., scratch that, descend FL190": a condition taken back
+  -- by a correction (lexicon.correction, or self_correction.dropping's words) said before the next instruction
+  -- word, no value between, is none; the instruction after it runs now; "when reaching FL230, correction, FL240"
+  -- corrects the condition's value)
+  local taken = i + 1
+  while taken <= #self.t and not self:intent_at(taken) do taken = taken + 1 end
+  local c = math.min(self:find_word(i, taken, "@correction"), self:find_word(i, taken, G.sc_dropping))
+  if c < taken and #self:quantities(c, taken) == 0 then
+    self:mark_used(i, c)
+    for k = i, c - 1 do self.noted[k] = true end
+    return nil, 1
+  end
   local ids = self:refs_in(i, comma, "aircraft")
   if lead and #ids > 0 then return nil, 1 end
   if lead then ids = { lead } end
@@ -3470,6 +3599,22 @@ function G:self_corrected()
         end
       end
     end
+    -- ("RZO135 go to flight level 250, no wait, keep it at its current level": with no instruction word before the
+    -- run, a level, speed or heading said straight before it is taken back when an instruction is said in its
+    -- place, with the words that lead to it from the aircraft named or the last mark; its kind is the value's)
+    local valued
+    if marked and p < 1 and v <= #self.t and self:intent_at(v) then
+      local qs = self:quantities(1, a)
+      local q = qs[#qs]
+      valued = q and q.e == a and G.value_kinds[q.kind] and ({ alt = "alt", speed = "spd", heading = "hdg" })[
+        G.value_kinds[q.kind]]
+      if valued then
+        p = q.b
+        while p > 1 and self.t[p - 1].kind == "word" and not self.t[p - 1].filler and not self:has_ref(p - 1, p, "aircraft") do
+          p = p - 1
+        end
+      end
+    end
     -- (with no instruction word before the run, "put the Fedex and the Spirit at FL350 ... actually just the
     -- Spirit", only the aircraft narrowed)
     if marked and c <= #self.t and (p >= 1 or (self:word(c, SC_ONLY) and self:has_ref(c + 1, c + 3, "aircraft"))) then
@@ -3559,7 +3704,7 @@ function G:self_corrected()
         -- ("never mind", "forget that", "scratch that" take it back in words; the same verb is no other kind)
         if w == c and not self:word(c, "it") and not SC_SETTING[self.words[c]]
             and not self:word_in(a, c, "never nevermind forget scratch") and self.words[c] ~= self.words[p]
-            and not same_family(self:intent_at(p), self:intent_at(c)) then
+            and not same_family(self:intent_at(p) or valued, self:intent_at(c)) then
           local e = c
           while self.t[e] and self.t[e].kind ~= "punct" do e = e + 1 end
           local function said(b, e) return (self:raw(b, e):gsub(" ([,.;:])", "%1"):gsub("[%s%p]+$", "")) end
@@ -3697,6 +3842,11 @@ function G:parse(b, e)
         self:need(string.format("Should I do '%s' instead of '%s', or as well?", said(c + 1, s.e):gsub("^[%s%p]+", ""),
           said(segs[k - 1].trig, c)))
         break
+      elseif self:word(c, "@correction_taking_back") then
+        -- ("turn left heading 360, disregard, continue on your route", "... belay that, resume own navigation": an
+        -- instruction with no value of its own after one taken back in words, lexicon.correction_taking_back, is
+        -- said in its place: the one before is dropped)
+        for x = #self.out, prev_out + 1, -1 do self.out[x] = nil end
       end
     end
     self:taken_back(s)
@@ -4193,6 +4343,8 @@ end
 
 function G:when_reached(s)
   local c = self:find_word(s.b, s.trig, "@condition")
+  -- (a condition taken back, noted by G:condition, waits for nothing)
+  if self.noted[c] then return false end
   if c >= s.trig then
     -- ("climb FL370, reaching Mach .79", "on reaching reduce 250": "reaching" alone opening the clause)
     -- (after the clause's callsign: "RYR8GN on reaching reduce 220")
@@ -8072,8 +8224,6 @@ local function unglued_ids(text, fleet)
   end))
 end
 
-local SAID_DIGIT = { zero = "0", oh = "0", one = "1", two = "2", three = "3", tree = "3", four = "4", fower = "4",
-  five = "5", fife = "5", six = "6", seven = "7", eight = "8", nine = "9", niner = "9" }
 -- "descend CLH 2AB": a callsign typed apart after its airline letters is joined when the
 -- joined id is exactly an aircraft's (letters after the digits too), and so is a registration
 -- written with its hyphen ("C-GKQM", "D-EABC": CGKQM, DEABC); so are a flight number's letters
@@ -8797,9 +8947,25 @@ function G.recognised_callsigns(text, world, parsed)
     words[#words + 1] = r[3] .. (toks[r[2]]:match("%p+$") or "")
     for k = r[2] + 1, #toks do words[#words + 1] = toks[k] end
     local read = table.concat(words, " ")
-    if G.one_new_aircraft(read, said, world, parsed) then return G.recognised_callsigns(read, world, parsed) end
+    if G.one_new_aircraft(read, said, world, parsed) or G.same_one_aircraft(read, said, world, parsed) then
+      return G.recognised_callsigns(read, world, parsed)
+    end
   end
   return text
+end
+-- True when a re-read of the request names exactly one aircraft, matched exactly, and `said` (the text as heard)
+-- names that one alone: "luft hansa four oh four" heard as DLH404 by its "hansa" still reads "lufthansa", so that
+-- no part of the airline's word is left over as a word of its own (nor spelled into one: "luft" as "left").
+function G.same_one_aircraft(read, said, world, parsed)
+  local one
+  for id in pairs(exact_aircraft(read, world, parsed)) do
+    if one then return false end
+    one = id
+  end
+  for id in pairs(said) do
+    if id ~= one then return false end
+  end
+  return one ~= nil and said[one] == true
 end
 
 -- "Air Canada four hundred twelve", "Air Canada four-hundred-twelve": a flight number said in hundreds straight
@@ -9530,6 +9696,12 @@ function M.translate(text, world)
       return { commands = {}, ask = string.format("'%s' is no %s: it runs from 0 to %d degrees %s. Which position "
         .. "do you mean?", g:raw(q.b, q.e), q.kind == "lat" and "latitude" or "longitude", q.kind == "lat" and 90 or 180,
         q.kind == "lat" and "north or south" or "east or west") }
+    end
+    -- a hemisphere said straight after a coordinate that did not take it ("latitude 41.4 west": the other axis's)
+    local t = (q.kind == "lat" or q.kind == "lon") and g.t[q.e]
+    if t and t.kind == "word" and G.hemisphere_axis({ raw = t.raw, bare = t.text }) then
+      return { commands = {}, ask = string.format("Is '%s' a %s? '%s' is not a hemisphere of it. Which position do "
+        .. "you mean?", g:raw(q.b, q.e + 1), q.kind == "lat" and "latitude" or "longitude", t.raw) }
     end
   end
   g:route_remarks()

@@ -5,6 +5,12 @@
 return function(H, f, wrap, compass)
   local m = H.methods
   local L = require("translate.lexicon")
+  -- the words of lexicon.self_correction.markers, a word list (G:word's form)
+  local SIDE_MARKERS = {}
+  for _, marker in ipairs(L.self_correction.markers) do
+    for w in marker:gmatch("%a+") do SIDE_MARKERS[#SIDE_MARKERS + 1] = w end
+  end
+  SIDE_MARKERS = table.concat(SIDE_MARKERS, " ")
 
   function m:infer(s)
     local qs = self:quantities(s.b, s.e)
@@ -746,6 +752,22 @@ return function(H, f, wrap, compass)
     if self:word_in(tb, s.e, "@left") then turn = -1 end
     if self:word_in(tb, s.e, "@right") and self:find_word(tb, s.e, "@right") < self:find_word(tb, s.e, "@left") then
       turn = 1
+    end
+    -- both sides said for the turn with no correction word between ("left DLH404 turn right heading 090", "turn
+    -- left heading 180, sorry, I meant to the right"): the later side when a self-correction marker
+    -- (lexicon.self_correction.markers' words) is said between them; else asked when both come before the end of
+    -- the turn's value (a side after it, "..., traffic left ten o'clock", "vectors ILS 25 right", is another's)
+    local first = math.min(self:find_word(tb, s.e, "@left"), self:find_word(tb, s.e, "@right"))
+    local value_end = (abs and abs.e) or (rel and rel.e) or s.e
+    for x = first + 1, first < s.e and s.e - 1 or 0 do
+      if self:word(x, "@left @right") and self.words[x] ~= self.words[first] and not self.noted[x] then
+        if self:word_in(first + 1, x, SIDE_MARKERS) then
+          turn, tb = self:word(x, "@right") and 1 or -1, x
+        elseif x < value_end then
+          return self:need(string.format("Should %s turn left or right? I heard '%s' and '%s'.", ids[1],
+            self.t[first].raw, self.t[x].raw))
+        end
+      end
     end
     -- (a side corrected after the angle, "30 degrees right, sorry, left": that many degrees the corrected way)
     if rel and rel.turn ~= 0 and turn ~= 0 and tb > rel.b then

@@ -600,6 +600,19 @@ return {
   -- clause of values only that ends the request or its sentence (G: readback_heard)
   readback_heard = { "you said", "you read back", "you read", "you readback", "you read it back as", "readback was",
                      "read back was", "your readback was", "he read back", "pilot read back" },
+  -- a readback reported by a third person, then what was cleared ("KLM12 read back FL110, he was cleared FL90, fix
+  -- it": grammar.lua readback_reported): the verbs of the readback, who was cleared, the words between them and
+  -- "cleared", and the words closing the request that ask for the clearance to be flown
+  -- (the longer of two phrases that begin alike first)
+  readback_reported = { verbs = { "read it back as", "read back as", "readback was", "read back was", "read back",
+                                  "readback" },
+                        cleared = { "he was", "she was", "it was", "they were", "he's", "she's", "it's", "was",
+                                    "but he was", "but she was", "but it was", "but was", "but" },
+                        fix = { "fix it", "fix that", "correct it", "correct him", "correct her", "correct that",
+                                "please fix it", "please correct it" },
+                        -- the words a value is said with ("flight level one one zero", "heading 200")
+                        nouns = { "fl", "flight", "level", "heading", "speed", "mach", "altitude", "feet", "ft", "knots",
+                                  "kt", "kts", "thousand", "hundred" } },
   -- an aircraft named straight after one of these is left out of the request (G:forgotten): "forget the Iberia"
   forget = { "forget" },
   -- an aircraft named as the subject of one of `described` is described, not instructed (G:described): "X and Y are
@@ -684,20 +697,32 @@ return {
   -- back ("climb FL330 cancel that maintain FL310"): an instruction's verb or a level's first word
   cancel_correction_next = { "maintain", "climb", "descend", "reduce", "increase", "turn", "fly", "expedite", "slow",
                              "fl", "flight", "mach" },
-  self_correction = { words = { "oh", "no", "wait", "sorry", "actually", "make", "that", "i", "mean", "uh", "um", "er",
-                                "say", "again", "scratch", "corr", "hmm", "typo", "never", "mind", "nevermind", "forget" },
-                      markers = { "no", "wait", "sorry", "actually", "make that", "mean", "say again", "scratch",
-                                  "corr", "never mind", "nevermind", "forget that" },
+  -- the verbs that take back what was just said, before "that" ("cancel that", "belay that": G.cancel_corrections),
+  -- and the correction words (lexicon.correction) that take it back when an instruction of another kind with no
+  -- value is said in its place ("turn left heading 360, disregard, continue on your route": the heading dropped,
+  -- G:parse; one with a value, "climb FL300, cancel that, reduce 250 knots", is asked, instead or as well)
+  cancel_verbs = { "cancel", "belay" },
+  correction_taking_back = { "disregard" },
+  -- a coordinate's axis ("lat", "lon") by the label said before its number ("latitude 41.4 north") and by its
+  -- hemisphere's word or letter (grammar.lua G.spoken_coordinates)
+  -- (a hemisphere typed as its initial in capitals, "41.4 N", is that word's)
+  coordinate_axes = { labels = { latitude = "lat", longitude = "lon" },
+                      hemispheres = { north = "lat", south = "lat", east = "lon", west = "lon" } },
+  self_correction = { words = { "oh", "no", "wait", "sorry", "actually", "make", "that", "i", "mean", "meant", "uh", "um",
+                                "er", "say", "again", "scratch", "corr", "hmm", "typo", "never", "mind", "nevermind",
+                                "forget", "belay" },
+                      markers = { "no", "wait", "sorry", "actually", "make that", "mean", "meant", "say again", "scratch",
+                                  "corr", "never mind", "nevermind", "forget that", "belay" },
                       -- the markers that, closing the request, take back what came before with nothing said
                       -- in its place ("turn left 20, sorry": asked); "I mean" closing it points back at what
                       -- it follows ("the Wideroe, I mean"), "actually" closing it is "in fact" ("going to
                       -- Valencia actually"), "from scratch" is no correction
                       closing = { "no", "wait", "sorry", "make that", "say again", "corr", "never mind", "nevermind",
-                                  "forget that" },
+                                  "forget that", "scratch that", "belay that" },
                       after = { "fl", "flight", "level", "heading", "left", "right", "speed", "mach", "altitude" },
                       -- the first words of the markers that take back what they follow in words ("never mind",
                       -- "forget that", "scratch that"): before an instruction's word, no value is corrected
-                      dropping = { "never", "nevermind", "forget", "scratch" },
+                      dropping = { "never", "nevermind", "forget", "scratch", "belay" },
                       -- "... actually no, just the descent": after a self-correction, "just"/"only" and one of these
                       -- names the instructions said before it that stand (by the command they issued)
                       only = { "just", "only" },
@@ -1227,6 +1252,12 @@ return {
     -- report the pilot makes (alone, "report heading" asks for the aircraft's state: POS)
     { what = "position reports", words = "report", near = { "heading", "level", "altitude", "speed", "mach" },
       after_instruction = true, to_end = true },
+    -- "KLM12 read back FL110", "readback was heading 200": the values a pilot read back are the pilot's words, no
+    -- clearance (what was cleared, said after them, is read: grammar.lua readback_reported)
+    { what = "readbacks of a clearance", words = "read", near = { "back" }, window = 1,
+      and_near = { { "#number", "fl", "flight", "heading", "level", "altitude", "speed", "mach" }, 2 } },
+    { what = "readbacks of a clearance", words = "readback", near = { "#number", "fl", "flight", "heading", "level",
+      "altitude", "speed", "mach", "was" }, window = 1 },
     -- "the student cleared him direct LUX", "he was already cleared to FL100": what someone did, told in the
     -- past tense after a person, is a report, no instruction (`subject`: the word before the verb, "already",
     -- "has", "had", "was", "were" and "just" between them)

@@ -441,6 +441,16 @@ return function(intent, rule, words)
   rule { "keep", "maintain", next = "it him her them", when = function(g, i)
     return g:word(i + 2, "at") and g.t[i + 3] ~= nil and (g.t[i + 3].kind == "number" or g:word(i + 3, "fl flight"))
   end }
+  -- "keep it at its current level", "keep KLM12 at the present speed", "keep your present heading": the value flown
+  -- now, named after the verb (the aircraft, "at" and a possessive between or not), is the value kept
+  rule { "keep", "maintain", when = function(g, i)
+    local k = g:skip_fillers(i + 1)
+    local r = g:refs_in(k, k + 1, "aircraft")[1]
+    if r then k = g:skip_fillers(r.e) elseif g:word(k, "it him her them") then k = k + 1 end
+    if g:word(k, "at on") then k = k + 1 end
+    if g:word(k, "its his her their your the") then k = k + 1 end
+    return g:word(k, "@present") and g:word(k + 1, "level altitude speed heading")
+  end }
   -- "keep KLM12 at 280 knots", "KLM12 keep FL140", "keep the Easy at mach .78": a value with its own unit said
   -- straight after the verb (the aircraft and "at" between or not) is the value kept
   rule { "keep", "maintain", when = function(g, i)
@@ -1990,6 +2000,12 @@ return function(intent, rule, words)
   rule { "own", "lnav", next = "route", prev = { 3, "fly follow back resume" } }  -- "fly its own route again"
   rule { "back", false, prev = { 2, "read" } }  -- ("read me back your route": LISTRTE)
   rule { "back rejoin", "lnav", near = { 3, "route" } }  -- "go back on your route", "rejoin the route"
+  -- "continue on your route", "continue along the route", "continue your route": the route flown on (LNAV ON);
+  -- a place after it ("continue on your route to LAM") is the route's, read where places are
+  rule { "continue", "lnav", when = function(g, i)
+    local k = g:word(i + 1, "on along with") and i + 2 or i + 1
+    return g:word(k, "your its the his her own") and g:word(k + 1, "route")
+  end }
   -- "return to the route", "return to its route": the route flown again (a place named is a direct-to)
   rule { "return returns", "lnav", next = "to", when = function(g, i)
     return g:word(i + 2, "the its your his her") and g:word(i + 3, "route") and not g:has_ref(i + 4, #g.t + 1, "waypoint")

@@ -11893,3 +11893,58 @@ do
     "VNAV AFR9 ON")
   check_eq(ex("AFR9 manage the altitude 15000"), "ALT AFR9 15000")
 end
+
+-- Cycle 49 (hz60): a coordinate with its hemisphere said after it and its label before it ("latitude 52.5 north,
+-- longitude 4.2 west") or its decimals said as digit words ("52 point five north") keeps the hemisphere's sign; a
+-- hemisphere of the other axis ("latitude 52.5 west") is asked
+do
+  local _, ex = scene({ "CRE KLM12 A320 52.3 4.7 090 FL150 250" })
+  check_eq(ex("move KLM12 to latitude 52.5 north, longitude 4.2 west"), "MOVE KLM12 52.5 -4.2")
+  check_eq(ex("define waypoint ALPHA1 at latitude 33.9 south and longitude 18.6 east"), "DEFWPT ALPHA1 -33.9 18.6")
+  check_eq(ex("move KLM12 to 52 point five north 4 point two west"), "MOVE KLM12 52.5 -4.2")
+  check_eq(ex("move KLM12 to north 52 decimal three five, west 4 point eight"), "MOVE KLM12 52.35 -4.8")
+  asked(ex("move KLM12 to latitude 52.5 west, longitude 4.2 north"), "a hemisphere of the other axis")
+end
+
+-- Cycle 49 (hz60): a correction said after an instruction takes it back or replaces it, never leaves it half
+-- applied: a turn's side said again after a self-correction marker ("sorry, I meant to the left") is the side; two
+-- sides said for one turn with no marker between are asked
+do
+  local _, ex = scene({ "CRE KLM12 A320 52.3 4.7 090 FL150 250", "DEFWPT HZAA 52.5 5.5", "DEFWPT HZBB 52.7 6.5",
+    "ADDWPT KLM12 HZAA", "ADDWPT KLM12 HZBB", "CRE DLH404 A346 52.1 4.2 060 FL130 290" })
+  check_eq(ex("KLM12 turn right heading 200, sorry, I meant to the left"), "HDG KLM12 200 LEFT")
+  check_eq(ex("KLM12 turn left heading 300, no, to the right, heading 300"), "HDG KLM12 300 RIGHT")
+  asked(ex("right KLM12 turn left heading 300"), "two sides, no marker between")
+  asked(ex("KLM12 turn left turn right heading 300"), "two sides said for one turn")
+  check_eq(ex("KLM12 turn left heading 300, traffic right two o'clock five miles"), "HDG KLM12 300 LEFT")
+  -- an airline's telephony split in two ("luft hansa") is the airline, its first part never spelled into a side
+  check_eq(ex("luft hansa four oh four turn right heading 090"), "HDG DLH404 90 RIGHT")
+  asked(ex("luft hansa four oh four turn left turn right heading 090"), "two sides after the airline joined")
+end
+
+-- Cycle 49 (hz60): "belay that", "disregard", "cancel that" take back the instruction before when one with no value
+-- is said in its place ("continue on your route"), and a condition before them ("when passing FL140... disregard,
+-- descend"); a value said with no verb is taken back by a self-correction as one after a verb; a readback reported
+-- by a third person is never the level to fly (what was cleared is)
+do
+  local _, ex = scene({ "CRE KLM12 A320 52.3 4.7 090 FL150 250", "DEFWPT HZAA 52.5 5.5", "DEFWPT HZBB 52.7 6.5",
+    "ADDWPT KLM12 HZAA", "ADDWPT KLM12 HZBB" })
+  check_eq(ex("KLM12 turn left heading 300... belay that, continue on your route"), "LNAV KLM12 ON")
+  check_eq(ex("KLM12 turn right heading 150, disregard, continue on the route"), "LNAV KLM12 ON")
+  asked(ex("KLM12 climb FL250, cancel that, turn left heading 300"), "another kind with a value: instead or as well")
+  asked(ex("KLM12 climb FL250, correction, turn left heading 300"), "'correction' before another kind: instead or as well")
+  asked(ex("KLM12 climb FL200, belay that"), "taken back with nothing in its place")
+  asked(ex("KLM12 climb FL200, scratch that"), "taken back with nothing in its place")
+  check_eq(ex("KLM12 when passing FL140... disregard, descend FL120"), "ALT KLM12 FL120")
+  check_eq(ex("KLM12 when passing FL140, scratch that, reduce speed 220"), "SPD KLM12 220")
+  check_eq(ex("KLM12 when passing FL140 reduce speed 220"), "ATALT KLM12 FL140 SPD KLM12 220")
+  check_eq(ex("KLM12 go to FL200, no wait, keep it at its current level"), "ALT KLM12 15000")
+  asked(ex("KLM12 go to FL200, no wait, turn left heading 300"), "a value of another kind in its place")
+  check_eq(ex("KLM12 read back FL130, he was cleared FL120, fix it"), "ALT KLM12 FL120")
+  check_eq(ex("KLM12 readback was heading 200, she was cleared heading 210"), "HDG KLM12 210")
+  check_eq(ex("KLM12 read back FL130, he was cleared FL120, and reduce speed 220"), "ALT KLM12 FL120 ; SPD KLM12 220")
+  check_eq(ex("KLM12 read back FL130, reduce speed 220"), "SPD KLM12 220")
+  check_eq(ex("KLM12 read back your route"), "LISTRTE KLM12")
+  check_eq(ex("KLM12 continue on your route"), "LNAV KLM12 ON")
+  check_eq(ex("KLM12 keep it at its current level"), "ALT KLM12 15000")
+end
