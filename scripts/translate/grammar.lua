@@ -1581,8 +1581,10 @@ function G:commentary(b, e, lead, record, places)
     if self.noted[x] then return false end  -- (what squawk does not simulate: "- hold TOM6RT")
     if t.kind == "word" then
       local last = x == e - 1 or self.t[x + 1].kind == "punct"
-      if (CM_BLOCKS[t.text] and not (lead and t.text == "same")) or (not own and CM_NEGATION[t.text])
+      if (CM_BLOCKS[t.text] and not (lead and t.text == "same"))
           or self:word(x, "@correction") or (airline_bare(self, x) and not places)
+          -- ("..., in my view, when the conflict first became apparent": the past told, no condition)
+          or (not own and CM_NEGATION[t.text] and not self:past_told(x))
           or (last and (t.text == "too" or (t.text == "well" and self:word(x - 1, "as")))) then
         return false
       end
@@ -1726,13 +1728,14 @@ local function whole_note(self, k)
 end
 
 -- True when the relative clause at k tells what was done before ("at which it was paused", "where it was
--- stopped"): one of lexicon.past_relatives, one of past_verbs within three words, then no value, aircraft or
--- instruction word up to the clause's end but the participle right after the past verb.
+-- stopped", "when the first alert was generated"): one of lexicon.past_relatives, one of past_verbs within four
+-- words, then no value, aircraft or instruction word up to the clause's end but the participle right after the
+-- past verb.
 function G:past_told(k)
   if not self:word(k, "@past_relatives") then return false end
-  local p = self:find_word(k + 1, k + 4, "@past_verbs")
+  local p = self:find_word(k + 1, k + 5, "@past_verbs")
   local e = commentary_end(self, k + 1)
-  if p >= k + 4 or #self:quantities(k + 1, e) > 0 or self:has_ref(k + 1, e, "aircraft") then return false end
+  if p >= k + 5 or #self:quantities(k + 1, e) > 0 or self:has_ref(k + 1, e, "aircraft") then return false end
   for x = p + 2, e - 1 do
     if self:intent_at(x) then return false end
   end
@@ -6390,9 +6393,11 @@ function G:unaccounted()
       return
     end
   end
-  -- ("climb to four thousand and a half": a fraction said after "and" that no value read is asked, never dropped)
+  -- ("climb to four thousand and a half": a fraction said after "and" that no value read is asked, never dropped;
+  -- "and a half-height of 1000 feet" names the protected zone's half height, no fraction)
   local function fraction_left(i)
     return self:word(i, "half quarter quarters") and self:word(i - 1, "a one three") and self:word(i - 2, "and")
+      and not (self:word(i, "half") and self:word(i + 1, "height"))
   end
   -- ("heading 240 and mach,76", "foo.76"): a word with a digit and a mark inside it is no name and no value
   -- the lexer read; unexplained, it is asked about

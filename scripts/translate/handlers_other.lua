@@ -2917,12 +2917,36 @@ return function(H, f, compass)
       each(" " .. code)
     elseif lat and lon then
       each(" " .. f.num(lat) .. " " .. f.num(lon))
-    elseif (self:word_in(s.b, s.e, "what what's whats which where") or self:noun_asked(s.trig))
+    elseif (self:word_in(s.b, s.e, "what what's whats which where") or self:noun_asked(s.trig) or self:told_me(s.trig))
         and #self:quantities(s.b, s.e) == 0 then
       each("")  -- "what's the easyJet's destination?": shown
     else
       self:need("Which airport should be the " .. what .. " of " .. id .. "? Please give its ICAO code.")
     end
+  end
+  -- True when the noun at i is asked for in so many words ("could you please tell me the destination of
+  -- EIN655?", "let me know the origin of KL204"): one of lexicon.told_me_verbs, "me" or "us" (a "know" after
+  -- "let me"), then at most "the" and a possessive before the noun
+  -- True when the request asks to be told something ("could you tell me which ...", "let me know whether ...",
+  -- "do you know what ..."): one of lexicon.told_me_verbs and "me" or "us" (and "know" after "let me"), or
+  -- "you know", then a word opening a question
+  function m:asked_indirectly()
+    for k = 2, #self.t - 1 do
+      local x
+      if self:word(k, "me us") and self:word(k - 1, "@told_me_verbs") then
+        x = self:word(k + 1, "know") and k + 2 or k + 1
+      elseif self:word(k, "know") and self:word(k - 1, "you") then
+        x = k + 1
+      end
+      if x and self:word(x, "which what whether if how") then return true end
+    end
+    return false
+  end
+  function m:told_me(i)
+    local k = i - 1
+    while k > i - 3 and self:word(k, "the its his her their aircraft's") do k = k - 1 end
+    if self:word(k, "know") then k = k - 1 end
+    return self:word(k, "me us") and self:word(k - 1, "@told_me_verbs")
   end
   -- True when the request is the word at i and an aircraft, asked ("origin of KL204?", "SAS930
   -- destination?"): every other word is the callsign's, a filler or "of".
@@ -3024,8 +3048,11 @@ return function(H, f, compass)
     if value and self:word(first, "what what's whats show display print") and #self:quantities(1, #self.t + 1) == 0 then
       return true
     end
-    -- ("which resolution method is active": a request opening with "which" asks, "?" or not)
-    if self:word(first, "which") and #self:quantities(1, #self.t + 1) == 0 then return true end
+    -- ("which resolution method is active": a request opening with "which" asks, "?" or not; so does one asked
+    -- indirectly, "could you tell me which resolution method is currently active")
+    if (self:word(first, "which") or self:asked_indirectly()) and #self:quantities(1, #self.t + 1) == 0 then
+      return true
+    end
     -- (a question: "is ... on?", "what is ...?", "can you check which/whether ...?"; its first sentence, a
     -- remark may follow: "Is the conflict detection on now? I can't see any alerts.")
     local ends = #self.t

@@ -638,6 +638,10 @@ return function(intent, rule, words)
   rule { "reduce increase decrease", "alt", next = "the your its his her", when = function(g, i)
     return g:word(i + 2, "level altitude")
   end }
+  -- "the look-ahead should be reduced to two minutes", "the zone radius increased to 6 NM": the verb changes the
+  -- setting named before it (lexicon.setting_nouns), no aircraft's speed
+  rule { "reduce reduced increase increased decrease decreased", false, prev = { 4, "@setting_nouns" },
+         when = function(g) return not g:has_ref(1, #g.t + 1, "aircraft") end }
   rule { "reduce increase decrease", "spd", not_near = { 4, "altitude rate vertical" } }
   -- a pilot's readback "reducing 250", "increasing to 280 knots": the participle carries its value (said
   -- right after it); with none it describes ("the gap is reducing"), no instruction
@@ -1540,6 +1544,18 @@ return function(intent, rule, words)
     end
     return false
   end }
+  -- an indirect question ("could you tell me what Speedbird 8CK is currently doing", "I'd like to know what
+  -- the easyJet is doing"): "what", the aircraft, "is" or "are", at most two of lexicon.indirect_question_adverbs,
+  -- then "doing"
+  rule { "doing", "pos", when = function(g, i)
+    local k = i - 1
+    while k > i - 3 and g:word(k, "@indirect_question_adverbs") do k = k - 1 end
+    if not g:word(k, "is are") then return false end
+    for _, r in ipairs(g.refs) do
+      if r.kind == "aircraft" and r.e == k then return g:word(r.b - 1, "what") or g:word(r.b, "what") end
+    end
+    return false
+  end }
   -- "where's EZY45?" (the lexer drops the 's), "tell me where BAW123 is"
   rule { "where", "pos", when = function(g, i) return g:has_ref(i + 1, i + 5, "aircraft") end }
   -- "where's the MERIT intersection?"
@@ -1719,9 +1735,16 @@ return function(intent, rule, words)
   -- "resume run", "continue the run", "resume the scenario": the run (the simulation's) taken up again, said alone,
   -- as a clause of its own, or opening the request before a mark, "and" or "then" ("resume the run and climb KLM12
   -- FL300"); "start the run and ..." starts it, "stop/hold the run and ..." stops it
+  -- The request's first word after fillers and a polite question's opening ("could you (please)", "would you
+  -- kindly", lexicon.polite_openings): the instruction's verb when it asks for one thing
+  local function polite_first(g)
+    local k = g:skip_fillers(1)
+    if g:word(k, "@polite_openings") and g:word(k + 1, "you") then k = g:skip_fillers(k + 2) end
+    return g:word(k, "kindly") and g:skip_fillers(k + 1) or k
+  end
   local function the_run(g, i)
     local k = g:word(i + 1, "the") and i + 2 or i + 1
-    local opens = g:skip_fillers(1) == i and (g.t[k + 1] == nil or g.t[k + 1].kind == "punct" or g:word(k + 1, "and then"))
+    local opens = polite_first(g) == i and (g.t[k + 1] == nil or g.t[k + 1].kind == "punct" or g:word(k + 1, "and then"))
     return g:word(k, "run scenario scen") and (opens or g:alone_but(i, k + 1) or g:clause_alone(i, k + 1))
   end
   -- simulation control; "hold present heading" keeps a value, and "KL204 hold"

@@ -11537,3 +11537,62 @@ do
   asked(ex("KLM12 no higher FL300"), "the bound with 'than' left out")
   check_eq(ex("KLM12 climb to FL300, no higher"), "ALT KLM12 FL300")
 end
+
+-- Cycle 49 (f117): a question asked indirectly ("could you tell me what X is doing", "let me know the destination
+-- of X", "tell me which resolution method is active") shows what is asked, as the direct question does; a request
+-- that names a value, or another verb, is read or asked as before
+do
+  local _, ex = scene({ "CRE KLM12 A320 52.3 4.7 090 FL100 250", "CRE EZY45 A319 52.1 4.2 180 FL120 260" })
+  check_eq(ex("Would you mind telling me what KLM12 is currently doing?"), "POS KLM12")
+  check_eq(ex("I'd like to know what the easyJet is doing now."), "POS EZY45")
+  check_eq(ex("Could you kindly tell me the destination of KLM12?"), "DEST KLM12")
+  check_eq(ex("please let me know the origin of EZY45"), "ORIG EZY45")
+  check_eq(ex("Do you know whether conflict detection is switched on?"), "ASAS")
+  check_eq(ex("Can you tell me which resolution method is in use at the moment?"), "RESO")
+  check_eq(ex("could you tell me what the zone radius is?"), "ZONER")
+  asked(ex("Please give EZY45 the destination"), "a destination given with no airport")
+  asked(ex("Could you tell me what KLM12 is currently doing at FL300?"), "a level said beside the question")
+end
+
+-- Cycle 49 (f117): a polite question opening a request of the run ("could you please resume the run?", "would you
+-- kindly start the run?") starts or resumes it, as the bare verb does
+do
+  local _, ex = scene({ "CRE KLM12 A320 52.3 4.7 090 FL100 250" })
+  check_eq(ex("Could you please resume the run?"), "OP")
+  check_eq(ex("Would you kindly start the run?"), "OP")
+  asked(ex("Could you please resume the run of KLM12?"), "a run of an aircraft")
+end
+
+-- Cycle 49 (f117): a report's asides after a complete instruction are set aside: the speaker's opinion ("in my
+-- view"), a past event told with "when" ("when the conflict first became apparent"), a comparison with the record
+-- (", contrary to its VFR clearance"), what a defined point stands for (", marking the point of closest approach"),
+-- what a shown value includes, a report's section and an air traffic unit's abbreviation; the same clause with a
+-- present condition, a value or an aircraft is asked
+do
+  local _, ex = scene({ "CRE KLM12 A320 52.3 4.7 090 FL100 250", "CRE EZY45 A319 52.1 4.2 180 FL120 260" })
+  check_eq(ex("Please have KLM12 stop its climb at FL110, which is what the controller should have done, in my "
+    .. "opinion, when the first alert occurred."), "ALT KLM12 FL110")
+  check_eq(ex("KLM12 was climbing at about 1800 feet per minute when the first alert was generated; set that rate."),
+    "VS KLM12 1800")
+  check_eq(ex("have KLM12 climb to FL110, contrary to its clearance"), "ALT KLM12 FL110")
+  check_eq(ex("Define a waypoint called LOSPT at 52.2 north, 4.5 east, representing the point of loss of separation."),
+    "DEFWPT LOSPT 52.2 4.5")
+  check_eq(ex("Please indicate where EZY45 is at present, including its speed."), "POS EZY45")
+  check_eq(ex("Please give the position of EZY45, as I need it for table 3 of the report."), "POS EZY45")
+  check_eq(ex("The look-ahead should be increased to 240 seconds, which matches the STCA used by Amsterdam ACC."),
+    "DTLOOK 240")
+  asked(ex("KLM12 should climb at 1800 feet per minute when the first alert is generated."), "a present condition")
+  asked(ex("have KLM12 climb to FL110, contrary to its clearance of FL090"), "a level in the aside")
+  asked(ex("have KLM12 climb to FL110, contrary to EZY45's clearance"), "an aircraft in the aside")
+end
+
+-- Cycle 49 (f117): "a half-height of 1000 feet" after "and" names the zone's half height, no fraction left over;
+-- the Boeing 747-8 is the B748
+do
+  local _, ex = scene({ "CRE KLM12 A320 52.3 4.7 090 FL100 250" })
+  check_eq(ex("I'd like the zone to have a radius of 4 nautical miles and a half-height of 800 feet"),
+    "ZONER 4 ; ZONEDH 800")
+  check_eq(ex("create a Boeing 747-8 called CLX77 at 52.0 N 4.0 E heading 090 FL300 280 knots"),
+    "CRE CLX77 B748 52 4 90 FL300 280")
+  asked(ex("KLM12 climb to four thousand and a half"), "a fraction after 'and'")
+end
