@@ -1823,6 +1823,11 @@ function G:in_reason(i)
         -- ("Descend KLM12 to FL120, as the transcript shows", ", which is what the controller ought to have done",
         -- ", as the controller did at 10:42:15")
         inside = true
+      elseif w == "according" and self:word(k + 1, "to") and not start and (instructed(k) or #self:quantities(1, k) > 0)
+          and self:commentary(k, commentary_end(self, k), false, true) then
+        -- ("... at FL150 over CASAR according to the letter of agreement": the source of the instruction, no comma
+        -- before it)
+        inside, reason[k] = true, true
       elseif punct and t.text == "," and self:word(k + 1, COMMENTARY.restate_set) and self:restates(k + 1) then
         -- (", give him a proper vector off": the turn said before it, described again)
         inside = true
@@ -1913,6 +1918,19 @@ function G:in_reason(i)
     end
   end
   return self.reason[i] or false
+end
+-- True when every time written as `text` ("10:44") lies in a remark set aside (G:in_reason) after a word of
+-- lexicon.record_time within five words before it (", as it was cleared at 10:44"): a time of the record, which no
+-- command reads, so whether it is hours or minutes is never asked
+function G:time_set_aside(text)
+  local found = false
+  for k = 1, #self.t do
+    if self:raw(k, k + 1):find(text, 1, true) then
+      if not (self:in_reason(k) and self:word_in(math.max(1, k - 5), k, "@record_time")) then return false end
+      found = true
+    end
+  end
+  return found
 end
 -- True when "before" at k opens a clause (to the next punctuation) that names one of lexicon.deadline_places
 -- and holds no value, place, type or instruction word ("before it gets to the Spanish boundary").
@@ -2292,6 +2310,15 @@ for w in ([[it it's its he he's she she's they they're you you're you've is are 
 local LINKING = {}
 for w in ([[it it's its he he's she she's they they're you you're you've is are 's 're has have 've had been be
   to]]):gmatch("%S+") do LINKING[w] = true end
+
+-- True when the "above" or "below" at k closes a condition opened by lexicon.condition with at most its subject
+-- and a form of "be" between ("once it is above 8000 feet, accelerate", "when below FL100"): the level the
+-- aircraft crosses, which the instruction after it waits for (ATALT), no level to fly
+function G:bound_condition(k)
+  local x = k - 1
+  while x > k - 4 and x >= 1 and (LINKING[self.words[x] or ""] or self.t[x].filler) do x = x - 1 end
+  return self:word(x, "@condition")
+end
 
 -- A condition said after its instruction, ending the request ("reduce the SAS to 250 knots once it passes
 -- flight level 100 on the way down", "slow EZY45 to 220 when it reaches FL120", "250 knots by the time it's
@@ -4531,6 +4558,11 @@ function G:at_waypoint(s, spec)
       local k = self:find_word(s.b, r.b - 1, "be")
       local qs = self:quantities(k + 2, r.b - 1)
       if k < r.b - 1 and self:word(k + 1, "at") and #qs > 0 and qs[#qs].e == r.b - 1 then be_at = k + 2 end
+      -- ("an altitude constraint of flight level 80 at MAGAT": the constraint's one value, after "of", straight
+      -- before "at" and the waypoint)
+      local c = self:find_word(math.max(s.b, r.b - 8), r.b - 1, "constraint restriction")
+      local of = c < r.b - 1 and self:word(c + 1, "of") and self:quantities(c + 2, r.b - 1)
+      if not be_at and of and #of == 1 and of[1].b == c + 2 and of[1].e == r.b - 1 then be_at = c + 2 end
     end
     -- "descend FL310 level by HELEN", "descend to reach FL300 by FERDI", "be level FL350 at PITES", "be level
     -- one niner zero over PUNPU": the level of a climb or descent, to be reached by a waypoint, is its AT
@@ -9228,7 +9260,7 @@ function M.translate(text, world)
     g.ask = #g.out == 0 and string.format("I have no instruction. What does '%s' mean?", g.leftover)
       or string.format("I have %s. What does '%s' mean?", table.concat(g.out, " ; "), g.leftover)
   end
-  if two_part and not g.ask and g.out[1] and not g.out[1]:find("^FF") then
+  if two_part and not g.ask and g.out[1] and not g.out[1]:find("^FF") and not g:time_set_aside(two_part) then
     g.ask = string.format("I have %s. Which time is '%s': hours and minutes, or minutes and seconds? Please "
       .. "type it h:mm:ss.", table.concat(g.out, " ; "), two_part)
   end

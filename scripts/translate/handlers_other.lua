@@ -2150,6 +2150,19 @@ return function(H, f, compass)
 
   -- the instructions whose verb ends a waypoint's constraints ("add X, then climb FL300")
   local VALUE_VERBS = { alt = true, spd = true, hdg = true, vs = true }
+  -- The two places said after "between" at k ("between TRA and KLO"), when they follow each other on the route of
+  -- aircraft id in that order: {first, second} (references), else nil
+  local function waypoints_between(self, id, k)
+    local first = self:refs_in(k + 1, k + 2, "waypoint")[1]
+    local second = first and self:word(first.e, "and") and self:refs_in(first.e + 1, first.e + 2, "waypoint")[1]
+    local route = second and (self:state(id) or {}).route or {}
+    for i = 1, #route - 1 do
+      if route[i]:upper() == first.name:upper() and route[i + 1]:upper() == second.name:upper() then
+        return { first, second }
+      end
+    end
+    return nil
+  end
   function m:add_waypoint(s)
     local id = self:acid(s, "get the waypoint")
     if not id then return end
@@ -2161,6 +2174,18 @@ return function(H, f, compass)
     -- ("insert Midhurst after Compton": the place next to it said by its one-word name)
     local next_name = at < s.e and not next_to and self:place_by_name(at + 1, at + 2, self:state(id))
     if next_name then next_to = { name = next_name, b = at + 1, e = at + 2 } end
+    -- ("insert DALIK between TRA and KLO": the two places next to each other on the route, the new one after the
+    -- first; places apart or off the route are asked)
+    local between = not next_to and self:find_word(s.b, s.e, "between")
+    if between and between < s.e and self:refs_in(between + 1, between + 2, "waypoint")[1] then
+      local pair = waypoints_between(self, id, between)
+      if not pair then
+        return self:need(string.format("Between which two waypoints next to each other on the route of %s should "
+          .. "the new one go?", id))
+      end
+      self:explain(pair[2].b - 1, pair[2].e)
+      at, next_to = between, pair[1]
+    end
     -- ("after 54 North 30 West add ...": the named point at a position said in degrees after it; the
     -- position added is said apart from it)
     local said = at < s.e and not next_to and qs[1] and self:quantities(at + 1, at + 3)[1]
@@ -2250,7 +2275,7 @@ return function(H, f, compass)
         self:raw(unread.b, unread.e)))
     end
     if next_to then
-      local after = self:word(at, "after")
+      local after = self:word(at, "after between")
       self:explain(at, at + 1)
       if after then self:route_goes_on(id, next_to.name, math.max(at + 2, named and named.e or 0), #self.t + 1) end
       return self:emit("ADDWPT " .. id .. " " .. where .. "," .. (alt or "") .. "," .. (spd or "") .. ","

@@ -903,6 +903,8 @@ return function(intent, rule, words)
   end }
   -- "put a constraint on AEA44 at ORBIS, FL250": a constraint at a waypoint (G:at_waypoint), no move
   rule { "put set", false, near = { 3, "constraint constraints restriction restrictions" } }
+  -- ("add an altitude constraint of FL80 at MAGAT": the same, no aircraft or waypoint added)
+  rule { "add", false, near = { 3, "constraint constraints restriction restrictions" } }
   -- ("append the Siedlce VOR SIE at the end of the route of LOT3CM": the route noun ten words on)
   rule { "add append insert give put", "addwpt", near = { 10, "@route_nouns" },
          when = function(g, i) return g:has_ref(i + 1, i + 9, "waypoint") end }

@@ -11596,3 +11596,47 @@ do
     "CRE CLX77 B748 52 4 90 FL300 280")
   asked(ex("KLM12 climb to four thousand and a half"), "a fraction after 'and'")
 end
+
+-- Cycle 49 (f117): a bound closing a condition ("once it is above 8000 feet, accelerate", "when below FL100 ...")
+-- is the level crossed, which the instruction after it waits for (ATALT); a bound with no condition word stays asked
+do
+  local _, ex = scene({ "CRE KLM12 A320 52.3 4.7 090 4000 250" })
+  check_eq(ex("Please climb KLM12 to FL150 and, once it is above 9000 feet, accelerate it to 300 knots."),
+    "ALT KLM12 FL150 ; ATALT KLM12 9000 SPD KLM12 300")
+  check_eq(ex("climb KLM12 to FL150, when above FL100 speed 300 knots"), "ALT KLM12 FL150 ; ATALT KLM12 FL100 SPD KLM12 300")
+  asked(ex("climb KLM12 to FL150, above 9000 feet speed 300 knots"), "a bound with no condition word")
+  asked(ex("climb KLM12 to FL150 and once it is above FL200 accelerate to 300 knots"), "a level it will not pass")
+end
+
+-- Cycle 49 (f117): "insert X between A and B" puts X after A when A and B follow each other on the route; two
+-- places apart, or in the other order, are asked
+do
+  local _, ex = scene({ "DEFWPT SPY 52.5 4.8", "DEFWPT PAM 52.6 5.0", "DEFWPT WOODY 52.7 5.2", "DEFWPT EEL 52.55 4.9",
+    "CRE KLM12 A320 52.3 4.7 090 FL100 250", "ADDWPT KLM12 SPY", "ADDWPT KLM12 PAM", "ADDWPT KLM12 WOODY" })
+  check_eq(ex("Could you please insert EEL between SPY and PAM in the route of KLM12?"), "ADDWPT KLM12 EEL,,,SPY")
+  asked(ex("Could you please insert EEL between PAM and SPY in the route of KLM12?"), "the places in the other order")
+  asked(ex("Could you please insert EEL between SPY and WOODY in the route of KLM12?"), "two places apart")
+end
+
+-- Cycle 49 (f117): "add / set an altitude constraint of FL80 at MAGAT for X" is the constraint at the waypoint (AT),
+-- no aircraft created; at a waypoint off the route it is asked
+do
+  local _, ex = scene({ "DEFWPT SPY 52.5 4.8", "DEFWPT PAM 52.6 5.0", "DEFWPT WOODY 52.7 5.2",
+    "CRE KLM12 A320 52.3 4.7 090 FL100 250", "ADDWPT KLM12 SPY", "ADDWPT KLM12 PAM" })
+  check_eq(ex("Could you please add an altitude constraint of flight level 90 at PAM for KLM12?"), "AT KLM12 PAM ALT FL90")
+  check_eq(ex("Please set a speed restriction of 230 knots at SPY for KLM12"), "AT KLM12 SPY SPD 230")
+  asked(ex("Please add an altitude constraint of FL90 at WOODY for KLM12"), "a waypoint off the route")
+end
+
+-- Cycle 49 (f117): a report's source said without a comma ("over CASAR according to the letter of agreement") and a
+-- time of the record in an aside (", as it was cleared at 10:44") are set aside; the same time said as the
+-- instruction's is asked
+do
+  local _, ex = scene({ "DEFWPT SPY 52.5 4.8", "DEFWPT PAM 52.6 5.0", "DEFWPT WOODY 52.7 5.2",
+    "CRE KLM12 A320 52.3 4.7 090 FL100 250", "ADDWPT KLM12 SPY", "ADDWPT KLM12 PAM" })
+  check_eq(ex("KLM12 was to be at FL120 over PAM according to the letter of agreement; please reproduce that constraint."),
+    "AT KLM12 PAM ALT FL120")
+  check_eq(ex("KLM12 is to proceed direct to PAM, as it was cleared at 10:44."), "DIRECT KLM12 PAM")
+  asked(ex("KLM12 is to proceed direct to PAM at 10:44."), "a time said as the instruction's")
+  asked(ex("KLM12 was to be at FL120 over PAM according to EZY45"), "an aircraft as the source")
+end
