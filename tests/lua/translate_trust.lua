@@ -11626,14 +11626,9 @@ do
   check_eq(ex("Could you please add an altitude constraint of flight level 90 at PAM for KLM12?"), "AT KLM12 PAM ALT FL90")
   check_eq(ex("Please set a speed restriction of 230 knots at SPY for KLM12"), "AT KLM12 SPY SPD 230")
   asked(ex("Please add an altitude constraint of FL90 at WOODY for KLM12"), "a waypoint off the route")
-end
-
--- Cycle 49 (f117): a report's source said without a comma ("over CASAR according to the letter of agreement") and a
--- time of the record in an aside (", as it was cleared at 10:44") are set aside; the same time said as the
--- instruction's is asked
-do
-  local _, ex = scene({ "DEFWPT SPY 52.5 4.8", "DEFWPT PAM 52.6 5.0", "DEFWPT WOODY 52.7 5.2",
-    "CRE KLM12 A320 52.3 4.7 090 FL100 250", "ADDWPT KLM12 SPY", "ADDWPT KLM12 PAM" })
+  -- a report's source said without a comma ("over CASAR according to the letter of agreement") and a time of the
+  -- record in an aside (", as it was cleared at 10:44") are set aside; the same time said as the instruction's is
+  -- asked
   check_eq(ex("KLM12 was to be at FL120 over PAM according to the letter of agreement; please reproduce that constraint."),
     "AT KLM12 PAM ALT FL120")
   check_eq(ex("KLM12 is to proceed direct to PAM, as it was cleared at 10:44."), "DIRECT KLM12 PAM")
