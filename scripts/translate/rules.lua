@@ -1107,6 +1107,17 @@ return function(intent, rule, words)
   end }
   -- "another Wizz please: WZZ88X, A320, ...": a request that opens with a new aircraft
   rule { "another", "create", when = function(g, i) return g:skip_fillers(1) == i and g:new_aircraft_follows(i) end }
+  -- "create an A320 called EDW507 at EXP01 ..., and another A320 called EDW508 at EXP02 ...": one more new aircraft
+  -- after a creation in the request, "another" after "and" or a mark, a type straight after it
+  rule { "another", "create", when = function(g, i)
+    if not (g:word(i - 1, "and") or (g.t[i - 1] and g.t[i - 1].kind == "punct")) or not g:has_ref(i + 1, i + 2, "type") then
+      return false
+    end
+    for k = 1, i - 1 do
+      if g:intent_at(k) == "create" then return g:new_aircraft_follows(i) end
+    end
+    return false
+  end }
   -- "Delete my waypoint VALA", "remove the fix WP1": a waypoint defined for this run, when no aircraft
   -- is named and none has it in its route, is undefined (DEFWPT ... DELETE)
   rule { "delete remove del", "undefwpt", near = { 3, "@waypoint_nouns" }, when = function(g, i)

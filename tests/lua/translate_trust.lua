@@ -11635,3 +11635,16 @@ do
   asked(ex("KLM12 is to proceed direct to PAM at 10:44."), "a time said as the instruction's")
   asked(ex("KLM12 was to be at FL120 over PAM according to EZY45"), "an aircraft as the source")
 end
+
+-- Cycle 49 (f117): ", and another A320 called X at ..." after a creation creates one more aircraft; without a
+-- callsign or a position it is asked
+do
+  local _, ex = scene({ "DEFWPT SPY 52.5 4.8", "DEFWPT PAM 52.6 5.0" })
+  check_eq(ex("Please create an A320 called KLM501 at SPY with heading 045, FL 290 and 270 knots, and another A320 "
+    .. "called KLM502 at PAM with heading 225, FL 290 and 270 knots."),
+    "CRE KLM501 A320 SPY 45 FL290 270 ; CRE KLM502 A320 PAM 225 FL290 270")
+  asked(ex("Please create an A320 called KLM501 at SPY with heading 045, FL 290 and 270 knots, and another A320 at "
+    .. "PAM with heading 225, FL 290 and 270 knots."), "another aircraft with no callsign")
+  asked(ex("Please create an A320 called KLM501 at SPY with heading 045, FL 290 and 270 knots, and another A320 "
+    .. "called KLM502."), "another aircraft with no position")
+end
