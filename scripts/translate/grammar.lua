@@ -1932,6 +1932,27 @@ function G:time_set_aside(text)
   end
   return found
 end
+-- True when the clause [k, e) is the speaker's need of an aircraft, denied, before the aircraft is removed later in
+-- the request ("We will not need AFR1142 any more, so could you please delete it?", "I don't need the easyJet
+-- anymore, ..."): only words of lexicon.need_denied_before (a negation and a verb of needing among them), one
+-- aircraft, then only need_denied_after
+function G:need_denied(k, e)
+  local r = self:refs_in(k, e, "aircraft")[1]
+  if not r or not self:word_in(k, r.b, "not won't don't no") or not self:word_in(k, r.b, "need want require") then
+    return false
+  end
+  for x = k, r.b - 1 do
+    if not (self:word(x, "@need_denied_before") or self.t[x].filler) then return false end
+  end
+  for x = r.e, e - 1 do
+    if not self:word(x, "@need_denied_after") then return false end
+  end
+  for x = e, #self.t do
+    if self:intent_at(x) == "delete" then return true end
+  end
+  return false
+end
+
 -- True when "before" at k opens a clause (to the next punctuation) that names one of lexicon.deadline_places
 -- and holds no value, place, type or instruction word ("before it gets to the Spanish boundary").
 function G:deadline_clause(k)
@@ -5929,6 +5950,10 @@ function G:explained_spans(issued, kinds)
       end
       if unneeded then
         for x = unneeded, e - 1 do inside[x] = true end
+        break
+      end
+      if j == k and self:need_denied(k, e) then
+        for x = k, e - 1 do inside[x] = true end
         break
       end
       -- ("freeze sim for debrief": a session's own step named after "for", with no determiner)

@@ -955,6 +955,11 @@ return {
   off_after = { "anymore", "longer" },
   -- an aircraft's being wanted no more, the reason for removing it ("WZZ1523 is not needed anymore, remove it")
   unneeded = { "needed", "required", "wanted", "necessary" },
+  -- the speaker's need of an aircraft denied before it is removed ("we will not need AFR1142 any more, so ...",
+  -- grammar.lua G:need_denied): the words before the aircraft and after it
+  need_denied_before = { "we", "i", "will", "would", "do", "does", "not", "won't", "don't", "no", "longer", "need",
+      "want", "require", "really", "actually" },
+  need_denied_after = { "any", "more", "anymore", "longer" },
   -- verbs that end a movement: the direction after them is the one stopped, not the one flown (handlers:direction)
   halted = { "stop", "stops", "stopping", "cease", "halt", "discontinue", "terminate", "interrupt", "arrest" },
   on = { "on", "enable", "activate", "show", "start", "use", "engage", "engaged" },

@@ -11648,3 +11648,14 @@ do
   asked(ex("Please create an A320 called KLM501 at SPY with heading 045, FL 290 and 270 knots, and another A320 "
     .. "called KLM502."), "another aircraft with no position")
 end
+
+-- Cycle 49 (f117): the speaker's need of an aircraft denied before it is removed ("we will not need KLM12 any more,
+-- so could you please delete it?") is the reason for the removal; the same clause before another instruction, or
+-- holding a value, is asked
+do
+  local _, ex = scene({ "CRE KLM12 A320 52.3 4.7 090 FL100 250" })
+  check_eq(ex("We will not need KLM12 any more, so could you please delete it?"), "DEL KLM12")
+  check_eq(ex("I don't really need KLM12 anymore, please remove it."), "DEL KLM12")
+  asked(ex("We will not need KLM12 any more, so could you please climb it to FL300?"), "no removal after it")
+  asked(ex("We will not need KLM12 at FL200, so could you please delete it?"), "a value in the clause")
+end
