@@ -1698,8 +1698,10 @@ function G:commentary(b, e, lead, record, places)
     if self.noted[x] then return false end  -- (what squawk does not simulate: "- hold TOM6RT")
     if t.kind == "word" then
       local last = x == e - 1 or self.t[x + 1].kind == "punct"
-      if (CM_BLOCKS[t.text] and not (lead and t.text == "same")) or (not own and CM_NEGATION[t.text])
+      if (CM_BLOCKS[t.text] and not (lead and t.text == "same"))
           or self:word(x, "@correction") or (airline_bare(self, x) and not places)
+          -- ("..., in my view, when the conflict first became apparent": the past told, no condition)
+          or (not own and CM_NEGATION[t.text] and not self:past_told(x))
           or (last and (t.text == "too" or (t.text == "well" and self:word(x - 1, "as")))) then
         return false
       end
@@ -1847,13 +1849,14 @@ local function whole_note(self, k)
 end
 
 -- True when the relative clause at k tells what was done before ("at which it was paused", "where it was
--- stopped"): one of lexicon.past_relatives, one of past_verbs within three words, then no value, aircraft or
--- instruction word up to the clause's end but the participle right after the past verb.
+-- stopped", "when the first alert was generated"): one of lexicon.past_relatives, one of past_verbs within four
+-- words, then no value, aircraft or instruction word up to the clause's end but the participle right after the
+-- past verb.
 function G:past_told(k)
   if not self:word(k, "@past_relatives") then return false end
-  local p = self:find_word(k + 1, k + 4, "@past_verbs")
+  local p = self:find_word(k + 1, k + 5, "@past_verbs")
   local e = commentary_end(self, k + 1)
-  if p >= k + 4 or #self:quantities(k + 1, e) > 0 or self:has_ref(k + 1, e, "aircraft") then return false end
+  if p >= k + 5 or #self:quantities(k + 1, e) > 0 or self:has_ref(k + 1, e, "aircraft") then return false end
   for x = p + 2, e - 1 do
     if self:intent_at(x) then return false end
   end
@@ -1941,6 +1944,11 @@ function G:in_reason(i)
         -- ("Descend KLM12 to FL120, as the transcript shows", ", which is what the controller ought to have done",
         -- ", as the controller did at 10:42:15")
         inside = true
+      elseif w == "according" and self:word(k + 1, "to") and not start and (instructed(k) or #self:quantities(1, k) > 0)
+          and self:commentary(k, commentary_end(self, k), false, true) then
+        -- ("... at FL150 over CASAR according to the letter of agreement": the source of the instruction, no comma
+        -- before it)
+        inside, reason[k] = true, true
       elseif punct and t.text == "," and self:word(k + 1, COMMENTARY.restate_set) and self:restates(k + 1) then
         -- (", give him a proper vector off": the turn said before it, described again)
         inside = true
@@ -2032,6 +2040,40 @@ function G:in_reason(i)
   end
   return self.reason[i] or false
 end
+-- True when every time written as `text` ("10:44") lies in a remark set aside (G:in_reason) after a word of
+-- lexicon.record_time within five words before it (", as it was cleared at 10:44"): a time of the record, which no
+-- command reads, so whether it is hours or minutes is never asked
+function G:time_set_aside(text)
+  local found = false
+  for k = 1, #self.t do
+    if self:raw(k, k + 1):find(text, 1, true) then
+      if not (self:in_reason(k) and self:word_in(math.max(1, k - 5), k, "@record_time")) then return false end
+      found = true
+    end
+  end
+  return found
+end
+-- True when the clause [k, e) is the speaker's need of an aircraft, denied, before the aircraft is removed later in
+-- the request ("We will not need AFR1142 any more, so could you please delete it?", "I don't need the easyJet
+-- anymore, ..."): only words of lexicon.need_denied_before (a negation and a verb of needing among them), one
+-- aircraft, then only need_denied_after
+function G:need_denied(k, e)
+  local r = self:refs_in(k, e, "aircraft")[1]
+  if not r or not self:word_in(k, r.b, "not won't don't no") or not self:word_in(k, r.b, "need want require") then
+    return false
+  end
+  for x = k, r.b - 1 do
+    if not (self:word(x, "@need_denied_before") or self.t[x].filler) then return false end
+  end
+  for x = r.e, e - 1 do
+    if not self:word(x, "@need_denied_after") then return false end
+  end
+  for x = e, #self.t do
+    if self:intent_at(x) == "delete" then return true end
+  end
+  return false
+end
+
 -- True when "before" at k opens a clause (to the next punctuation) that names one of lexicon.deadline_places
 -- and holds no value, place, type or instruction word ("before it gets to the Spanish boundary").
 function G:deadline_clause(k)
@@ -2410,6 +2452,15 @@ for w in ([[it it's its he he's she she's they they're you you're you've is are 
 local LINKING = {}
 for w in ([[it it's its he he's she she's they they're you you're you've is are 's 're has have 've had been be
   to]]):gmatch("%S+") do LINKING[w] = true end
+
+-- True when the "above" or "below" at k closes a condition opened by lexicon.condition with at most its subject
+-- and a form of "be" between ("once it is above 8000 feet, accelerate", "when below FL100"): the level the
+-- aircraft crosses, which the instruction after it waits for (ATALT), no level to fly
+function G:bound_condition(k)
+  local x = k - 1
+  while x > k - 4 and x >= 1 and (LINKING[self.words[x] or ""] or self.t[x].filler) do x = x - 1 end
+  return self:word(x, "@condition")
+end
 
 -- A condition said after its instruction, ending the request ("reduce the SAS to 250 knots once it passes
 -- flight level 100 on the way down", "slow EZY45 to 220 when it reaches FL120", "250 knots by the time it's
@@ -4804,6 +4855,11 @@ function G:at_waypoint(s, spec)
       local k = self:find_word(s.b, r.b - 1, "be")
       local qs = self:quantities(k + 2, r.b - 1)
       if k < r.b - 1 and self:word(k + 1, "at") and #qs > 0 and qs[#qs].e == r.b - 1 then be_at = k + 2 end
+      -- ("an altitude constraint of flight level 80 at MAGAT": the constraint's one value, after "of", straight
+      -- before "at" and the waypoint)
+      local c = self:find_word(math.max(s.b, r.b - 8), r.b - 1, "constraint restriction")
+      local of = c < r.b - 1 and self:word(c + 1, "of") and self:quantities(c + 2, r.b - 1)
+      if not be_at and of and #of == 1 and of[1].b == c + 2 and of[1].e == r.b - 1 then be_at = c + 2 end
     end
     -- "descend FL310 level by HELEN", "descend to reach FL300 by FERDI", "be level FL350 at PITES", "be level
     -- one niner zero over PUNPU": the level of a climb or descent, to be reached by a waypoint, is its AT
@@ -6203,6 +6259,10 @@ function G:explained_spans(issued, kinds)
         for x = unneeded, e - 1 do inside[x] = true end
         break
       end
+      if j == k and self:need_denied(k, e) then
+        for x = k, e - 1 do inside[x] = true end
+        break
+      end
       -- ("freeze sim for debrief": a session's own step named after "for", with no determiner)
       if (j == k and k > 1 and t.kind == "word" and SUBJECTS[t.text]) or participle or (w == "so" and j > 1 and subject)
           or (w == "for" and j > 1 and (subject or (nx and nx.kind == "word" and lexicon.session_steps[nx.text]))) then
@@ -6697,9 +6757,11 @@ function G:unaccounted()
       return
     end
   end
-  -- ("climb to four thousand and a half": a fraction said after "and" that no value read is asked, never dropped)
+  -- ("climb to four thousand and a half": a fraction said after "and" that no value read is asked, never dropped;
+  -- "and a half-height of 1000 feet" names the protected zone's half height, no fraction)
   local function fraction_left(i)
     return self:word(i, "half quarter quarters") and self:word(i - 1, "a one three") and self:word(i - 2, "and")
+      and not (self:word(i, "half") and self:word(i + 1, "height"))
   end
   -- ("heading 240 and mach,76", "foo.76"): a word with a digit and a mark inside it is no name and no value
   -- the lexer read; unexplained, it is asked about
@@ -9826,7 +9888,7 @@ function M.translate(text, world)
     g.ask = #g.out == 0 and string.format("I have no instruction. What does '%s' mean?", g.leftover)
       or string.format("I have %s. What does '%s' mean?", table.concat(g.out, " ; "), g.leftover)
   end
-  if two_part and not g.ask and g.out[1] and not g.out[1]:find("^FF") then
+  if two_part and not g.ask and g.out[1] and not g.out[1]:find("^FF") and not g:time_set_aside(two_part) then
     g.ask = string.format("I have %s. Which time is '%s': hours and minutes, or minutes and seconds? Please "
       .. "type it h:mm:ss.", table.concat(g.out, " ; "), two_part)
   end

@@ -1987,6 +1987,9 @@ function m:at_altitude(s)
   local out = self:find_word(b, a, "out")
   local left = out < a and self:word(out + 1, "of") and self:word_in(math.max(b, out - 2), out, "@condition")
   if left then a = out + 1 end
+  -- ("once it is above 8000 feet, accelerate": a bound closing a condition is the level crossed, G:bound_condition)
+  local bound = self:find_word(b, a, "@above @below")
+  if bound < a and self:bound_condition(bound) then a = bound end
   if a >= s.trig and s.intent ~= "alt" then
     for i = b, self:said("level") and s.trig - 1 or 0 do
       if self:word(i, "level") and not self:word(i - 1, "flight") and self:word_in(math.max(b, i - 3), i, "@condition") then
@@ -2340,7 +2343,8 @@ function m:leftovers(s)
     local bound = self:word(q.b - 1, "@below @above")
     local feet = self:word(q.e - 1, "@feet")
     local unit = (q.kind == "alt" and not bound and (q.fl or feet)) or q.kind == "speed" or q.kind == "mach"
-    if bound and q.kind == "alt" and (q.fl or feet) and q.b < s.trig and not self.taken[q.b] then
+    if bound and q.kind == "alt" and (q.fl or feet) and q.b < s.trig and not self.taken[q.b]
+        and not self:bound_condition(q.b - 1) then
       self:need(string.format("What does '%s' mean for %s: a level to fly, or one the instruction waits for or "
         .. "keeps to?", self:raw(q.b - 1, q.e), ids[1]))
     end

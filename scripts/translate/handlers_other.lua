@@ -2175,6 +2175,19 @@ return function(H, f, compass)
 
   -- the instructions whose verb ends a waypoint's constraints ("add X, then climb FL300")
   local VALUE_VERBS = { alt = true, spd = true, hdg = true, vs = true }
+  -- The two places said after "between" at k ("between TRA and KLO"), when they follow each other on the route of
+  -- aircraft id in that order: {first, second} (references), else nil
+  local function waypoints_between(self, id, k)
+    local first = self:refs_in(k + 1, k + 2, "waypoint")[1]
+    local second = first and self:word(first.e, "and") and self:refs_in(first.e + 1, first.e + 2, "waypoint")[1]
+    local route = second and (self:state(id) or {}).route or {}
+    for i = 1, #route - 1 do
+      if route[i]:upper() == first.name:upper() and route[i + 1]:upper() == second.name:upper() then
+        return { first, second }
+      end
+    end
+    return nil
+  end
   function m:add_waypoint(s)
     local id = self:acid(s, "get the waypoint")
     if not id then return end
@@ -2186,6 +2199,18 @@ return function(H, f, compass)
     -- ("insert Midhurst after Compton": the place next to it said by its one-word name)
     local next_name = at < s.e and not next_to and self:place_by_name(at + 1, at + 2, self:state(id))
     if next_name then next_to = { name = next_name, b = at + 1, e = at + 2 } end
+    -- ("insert DALIK between TRA and KLO": the two places next to each other on the route, the new one after the
+    -- first; places apart or off the route are asked)
+    local between = not next_to and self:find_word(s.b, s.e, "between")
+    if between and between < s.e and self:refs_in(between + 1, between + 2, "waypoint")[1] then
+      local pair = waypoints_between(self, id, between)
+      if not pair then
+        return self:need(string.format("Between which two waypoints next to each other on the route of %s should "
+          .. "the new one go?", id))
+      end
+      self:explain(pair[2].b - 1, pair[2].e)
+      at, next_to = between, pair[1]
+    end
     -- ("after 54 North 30 West add ...": the named point at a position said in degrees after it; the
     -- position added is said apart from it)
     local said = at < s.e and not next_to and qs[1] and self:quantities(at + 1, at + 3)[1]
@@ -2275,7 +2300,7 @@ return function(H, f, compass)
         self:raw(unread.b, unread.e)))
     end
     if next_to then
-      local after = self:word(at, "after")
+      local after = self:word(at, "after between")
       self:explain(at, at + 1)
       if after then self:route_goes_on(id, next_to.name, math.max(at + 2, named and named.e or 0), #self.t + 1) end
       return self:emit("ADDWPT " .. id .. " " .. where .. "," .. (alt or "") .. "," .. (spd or "") .. ","
@@ -2942,12 +2967,36 @@ return function(H, f, compass)
       each(" " .. code)
     elseif lat and lon then
       each(" " .. f.num(lat) .. " " .. f.num(lon))
-    elseif (self:word_in(s.b, s.e, "what what's whats which where") or self:noun_asked(s.trig))
+    elseif (self:word_in(s.b, s.e, "what what's whats which where") or self:noun_asked(s.trig) or self:told_me(s.trig))
         and #self:quantities(s.b, s.e) == 0 then
       each("")  -- "what's the easyJet's destination?": shown
     else
       self:need("Which airport should be the " .. what .. " of " .. id .. "? Please give its ICAO code.")
     end
+  end
+  -- True when the noun at i is asked for in so many words ("could you please tell me the destination of
+  -- EIN655?", "let me know the origin of KL204"): one of lexicon.told_me_verbs, "me" or "us" (a "know" after
+  -- "let me"), then at most "the" and a possessive before the noun
+  -- True when the request asks to be told something ("could you tell me which ...", "let me know whether ...",
+  -- "do you know what ..."): one of lexicon.told_me_verbs and "me" or "us" (and "know" after "let me"), or
+  -- "you know", then a word opening a question
+  function m:asked_indirectly()
+    for k = 2, #self.t - 1 do
+      local x
+      if self:word(k, "me us") and self:word(k - 1, "@told_me_verbs") then
+        x = self:word(k + 1, "know") and k + 2 or k + 1
+      elseif self:word(k, "know") and self:word(k - 1, "you") then
+        x = k + 1
+      end
+      if x and self:word(x, "which what whether if how") then return true end
+    end
+    return false
+  end
+  function m:told_me(i)
+    local k = i - 1
+    while k > i - 3 and self:word(k, "the its his her their aircraft's") do k = k - 1 end
+    if self:word(k, "know") then k = k - 1 end
+    return self:word(k, "me us") and self:word(k - 1, "@told_me_verbs")
   end
   -- True when the request is the word at i and an aircraft, asked ("origin of KL204?", "SAS930
   -- destination?"): every other word is the callsign's, a filler or "of".
@@ -3049,8 +3098,11 @@ return function(H, f, compass)
     if value and self:word(first, "what what's whats show display print") and #self:quantities(1, #self.t + 1) == 0 then
       return true
     end
-    -- ("which resolution method is active": a request opening with "which" asks, "?" or not)
-    if self:word(first, "which") and #self:quantities(1, #self.t + 1) == 0 then return true end
+    -- ("which resolution method is active": a request opening with "which" asks, "?" or not; so does one asked
+    -- indirectly, "could you tell me which resolution method is currently active")
+    if (self:word(first, "which") or self:asked_indirectly()) and #self:quantities(1, #self.t + 1) == 0 then
+      return true
+    end
     -- (a question: "is ... on?", "what is ...?", "can you check which/whether ...?"; its first sentence, a
     -- remark may follow: "Is the conflict detection on now? I can't see any alerts.")
     local ends = #self.t

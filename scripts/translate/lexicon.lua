@@ -239,6 +239,8 @@ return {
         "blocks of trials",
         "if the computer can cope with it", "if the computer can cope", "if the simulation can cope with it",
         -- urgency ("descend FL200 at once", "right away": what squawk sends runs at once)
+        -- (the speaker's opinion, in a report: "..., which is what the controller ought to have done, in my view")
+        "in my view", "in my opinion", "in our view", "in our opinion", "to my mind",
         "at once", "right away", "straight away", "without further delay",
         -- the aircraft's (or the simulation's) ability, as "if able" ("up to 390 if the sim lets him")
         "if he can", "if she can", "if it can", "if he's able", "if she's able", "if it's able", "if the sim lets him",
@@ -354,7 +356,9 @@ return {
     -- an air traffic unit or setting named by its place ("New York departure", "Boston approach",
     -- "Kennedy altimeter"): the one or two words before these are its place
     facilities = { "departure", "approach", "center", "centre", "tower", "ground", "radar", "control",
-        "delivery", "director", "information", "altimeter", "qnh", "oceanic", "radio" },
+        "delivery", "director", "information", "altimeter", "qnh", "oceanic", "radio",
+        -- (a unit by its abbreviation: "Barcelona ACC", "Madrid TWR")
+        "acc", "twr", "uac" },
     -- phrases that bound a value, lift its bounds or keep it in force ("or greater", "not less than",
     -- "climb without restriction", "until further advised"): the value is the instruction's, explained whole
     value_phrases = { "or greater", "or better", "or more", "or less", "or above", "or below", "at least",
@@ -873,7 +877,10 @@ return {
           study_labels = { "exp", "expt", "experiment", "run", "trial", "session", "block", "condition", "cond",
                            "scenario", "scen", "case", "batch", "series", "phase", "episode", "test", "config",
                            "participant", "subject", "iteration", "rep", "replication", "day", "serial", "step",
-                           "part" } },
+                           "part",
+                           -- (a report's parts, "as I need it for the figure in section 2")
+                           "section", "figure", "fig", "table", "chapter", "appendix", "annex", "paragraph",
+                           "page" } },
   -- a clearance quoted whole in double quotes ('the transcript reads "KLM12, turn left heading 230"; replay it'):
   -- the words outside the quotes name it to be given again with one of `frames` and hold none of `not_frames`
   -- (text for the log, a negation, a correction or a condition), no value but a callsign or a time of day and no
@@ -890,12 +897,18 @@ return {
   -- a clause after a comma opening with one of these that compares an instruction with a record or justifies
   -- it (", as the transcript shows", ", which is what the controller ought to have done"): set aside when it
   -- is commentary (G:commentary: no value, place, aircraft or instruction word), else asked
-  aside_comments = { "as", "which", "according" },
+  aside_comments = { "as", "which", "according",
+    -- (a report's comparison with the record or the rules, ", contrary to its VFR clearance", ", consistent with
+    -- the transcript"; what a defined point or a shown value stands for, ", marking the point of closest approach",
+    -- ", including its level")
+    "contrary", "consistent", "marking", "representing", "denoting", "including" },
   -- a relative clause telling what was done in the past ("from the point at which it was paused", "where it
   -- was stopped"): one of `past_relatives` not opening its sentence, then within three words one of `past_verbs`;
   -- set aside when it holds no value or aircraft (its verb instructs nothing)
   past_relatives = { "which", "where", "when" },
-  past_verbs = { "was", "were", "had" },
+  past_verbs = { "was", "were", "had",
+    -- (a report's events: "when the conflict first became apparent", "when the first alert occurred")
+    "became", "occurred", "happened", "began", "started", "appeared", "arose" },
   -- words before a time said after an instruction that make it a time of the record compared with, never when to
   -- act ("as the controller did at 10:42:15", "as recorded at 15:21:40", "which is its position at 08:10:00"):
   -- such a time schedules nothing and is asked about; after one of `record_past` in an aside of a report that
@@ -977,6 +990,8 @@ return {
   -- abbreviations written in capitals that name no place
   not_names = { "vfr", "ifr", "fms", "atis", "qnh", "qfe", "cpa", "los", "eta", "etd", "sid", "star", "nm",
       "kts", "fpm", "agl", "msl", "amsl", "rnp", "ctr", "tma", "atz", "ias", "cas", "stca", "fdr",
+      -- an air traffic unit's abbreviation after its place ("Barcelona ACC", accounted.facilities)
+      "acc", "uac", "twr",
       -- a study's questionnaires and measures ("fill in the NASA-TLX")
       "nasa", "tlx", "nasa-tlx" },
   -- words before a waypoint that a direct-to flies past ("skip TP1 and go direct TP2")
@@ -1003,6 +1018,11 @@ return {
   off_after = { "anymore", "longer" },
   -- an aircraft's being wanted no more, the reason for removing it ("WZZ1523 is not needed anymore, remove it")
   unneeded = { "needed", "required", "wanted", "necessary" },
+  -- the speaker's need of an aircraft denied before it is removed ("we will not need AFR1142 any more, so ...",
+  -- grammar.lua G:need_denied): the words before the aircraft and after it
+  need_denied_before = { "we", "i", "will", "would", "do", "does", "not", "won't", "don't", "no", "longer", "need",
+      "want", "require", "really", "actually" },
+  need_denied_after = { "any", "more", "anymore", "longer" },
   -- verbs that end a movement: the direction after them is the one stopped, not the one flown (handlers:direction)
   halted = { "stop", "stops", "stopping", "cease", "halt", "discontinue", "terminate", "interrupt", "arrest" },
   on = { "on", "enable", "activate", "show", "start", "use", "engage", "engaged" },
@@ -1709,6 +1729,17 @@ return {
   wait_run = { "passed", "elapsed", "gone", "over", "up" },
   -- words of an amount said loosely between the wait's word and its time in words ("in about a minute", "give it
   -- just a minute"): such a wait is asked, never read or dropped
+  -- the words of time said between the verb and "doing" in an indirect question ("tell me what KLM12 is
+  -- currently doing"): the question is about now, which is what squawk shows
+  -- verbs of a request to be told something ("tell me the destination of EIN655", "let me know the origin")
+  -- the modal verbs that open a polite question asking for an instruction ("could you please resume the run?")
+  polite_openings = { "could", "can", "would", "will" },
+  -- the names of the simulation's settings before a verb that changes them ("the look-ahead should be reduced
+  -- to two minutes")
+  setting_nouns = { "ahead", "lookahead", "look-ahead", "dtlook", "radius", "zoner", "zonedh", "zone", "height",
+      "multiplier", "dtmult" },
+  told_me_verbs = { "tell", "show", "give", "remind", "let" },
+  indirect_question_adverbs = { "currently", "now", "presently", "still", "actually", "just" },
   wait_hedges = { "about", "around", "roughly", "approximately", "nearly", "almost", "just", "maybe" },
   -- a time said in words the quantities do not read (G:spoken_durations): one unit after "a" or "an" ("a minute",
   -- "an hour and a half", "half a minute", "a quarter of an hour"; seconds each, lexicon.fractions for the parts),

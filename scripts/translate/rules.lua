@@ -666,6 +666,10 @@ return function(intent, rule, words)
   rule { "reduce increase decrease", "alt", next = "the your its his her", when = function(g, i)
     return g:word(i + 2, "level altitude")
   end }
+  -- "the look-ahead should be reduced to two minutes", "the zone radius increased to 6 NM": the verb changes the
+  -- setting named before it (lexicon.setting_nouns), no aircraft's speed
+  rule { "reduce reduced increase increased decrease decreased", false, prev = { 4, "@setting_nouns" },
+         when = function(g) return not g:has_ref(1, #g.t + 1, "aircraft") end }
   rule { "reduce increase decrease", "spd", not_near = { 4, "altitude rate vertical" } }
   -- a pilot's readback "reducing 250", "increasing to 280 knots": the participle carries its value (said
   -- right after it); with none it describes ("the gap is reducing"), no instruction
@@ -933,6 +937,8 @@ return function(intent, rule, words)
   end }
   -- "put a constraint on AEA44 at ORBIS, FL250": a constraint at a waypoint (G:at_waypoint), no move
   rule { "put set", false, near = { 3, "constraint constraints restriction restrictions" } }
+  -- ("add an altitude constraint of FL80 at MAGAT": the same, no aircraft or waypoint added)
+  rule { "add", false, near = { 3, "constraint constraints restriction restrictions" } }
   -- ("append the Siedlce VOR SIE at the end of the route of LOT3CM": the route noun ten words on)
   rule { "add append insert give put", "addwpt", near = { 10, "@route_nouns" },
          when = function(g, i) return g:has_ref(i + 1, i + 9, "waypoint") end }
@@ -1135,6 +1141,17 @@ return function(intent, rule, words)
   end }
   -- "another Wizz please: WZZ88X, A320, ...": a request that opens with a new aircraft
   rule { "another", "create", when = function(g, i) return g:skip_fillers(1) == i and g:new_aircraft_follows(i) end }
+  -- "create an A320 called EDW507 at EXP01 ..., and another A320 called EDW508 at EXP02 ...": one more new aircraft
+  -- after a creation in the request, "another" after "and" or a mark, a type straight after it
+  rule { "another", "create", when = function(g, i)
+    if not (g:word(i - 1, "and") or (g.t[i - 1] and g.t[i - 1].kind == "punct")) or not g:has_ref(i + 1, i + 2, "type") then
+      return false
+    end
+    for k = 1, i - 1 do
+      if g:intent_at(k) == "create" then return g:new_aircraft_follows(i) end
+    end
+    return false
+  end }
   -- "Delete my waypoint VALA", "remove the fix WP1": a waypoint defined for this run, when no aircraft
   -- is named and none has it in its route, is undefined (DEFWPT ... DELETE)
   rule { "delete remove del", "undefwpt", near = { 3, "@waypoint_nouns" }, when = function(g, i)
@@ -1586,6 +1603,18 @@ return function(intent, rule, words)
     end
     return false
   end }
+  -- an indirect question ("could you tell me what Speedbird 8CK is currently doing", "I'd like to know what
+  -- the easyJet is doing"): "what", the aircraft, "is" or "are", at most two of lexicon.indirect_question_adverbs,
+  -- then "doing"
+  rule { "doing", "pos", when = function(g, i)
+    local k = i - 1
+    while k > i - 3 and g:word(k, "@indirect_question_adverbs") do k = k - 1 end
+    if not g:word(k, "is are") then return false end
+    for _, r in ipairs(g.refs) do
+      if r.kind == "aircraft" and r.e == k then return g:word(r.b - 1, "what") or g:word(r.b, "what") end
+    end
+    return false
+  end }
   -- "where's EZY45?" (the lexer drops the 's), "tell me where BAW123 is"
   rule { "where", "pos", when = function(g, i) return g:has_ref(i + 1, i + 5, "aircraft") end }
   -- "where's the MERIT intersection?"
@@ -1765,9 +1794,16 @@ return function(intent, rule, words)
   -- "resume run", "continue the run", "resume the scenario": the run (the simulation's) taken up again, said alone,
   -- as a clause of its own, or opening the request before a mark, "and" or "then" ("resume the run and climb KLM12
   -- FL300"); "start the run and ..." starts it, "stop/hold the run and ..." stops it
+  -- The request's first word after fillers and a polite question's opening ("could you (please)", "would you
+  -- kindly", lexicon.polite_openings): the instruction's verb when it asks for one thing
+  local function polite_first(g)
+    local k = g:skip_fillers(1)
+    if g:word(k, "@polite_openings") and g:word(k + 1, "you") then k = g:skip_fillers(k + 2) end
+    return g:word(k, "kindly") and g:skip_fillers(k + 1) or k
+  end
   local function the_run(g, i)
     local k = g:word(i + 1, "the") and i + 2 or i + 1
-    local opens = g:skip_fillers(1) == i and (g.t[k + 1] == nil or g.t[k + 1].kind == "punct" or g:word(k + 1, "and then"))
+    local opens = polite_first(g) == i and (g.t[k + 1] == nil or g.t[k + 1].kind == "punct" or g:word(k + 1, "and then"))
     return g:word(k, "run scenario scen") and (opens or g:alone_but(i, k + 1) or g:clause_alone(i, k + 1))
   end
   -- simulation control; "hold present heading" keeps a value, and "KL204 hold"

@@ -99,6 +99,8 @@ local function pattern_names(d)
   if v then out[#out + 1] = { "boeing", "737 max " .. (v == "X" and "10" or v) } end
   v = d:match("^A(%d)(%d)N$")
   if v then out[#out + 1] = { "airbus", "a3" .. d:sub(2, 3) .. "neo" } end
+  -- (the 747's last series is named by its digit alone, as the 787s are: "747-8", "747-8i")
+  if d == "B748" then out[#out + 1] = { "boeing", "747-8" }; out[#out + 1] = { "boeing", "747-8i" } end
   if d == "B77W" then out[#out + 1] = { "boeing", "777-300er" } end
   if d == "B77L" then out[#out + 1] = { "boeing", "777-200lr" } end
   if d == "A35K" then out[#out + 1] = { "airbus", "a350-1000" } end

@@ -11948,3 +11948,125 @@ do
   check_eq(ex("KLM12 continue on your route"), "LNAV KLM12 ON")
   check_eq(ex("KLM12 keep it at its current level"), "ALT KLM12 15000")
 end
+
+-- Cycle 49 (f117): a question asked indirectly ("could you tell me what X is doing", "let me know the destination
+-- of X", "tell me which resolution method is active") shows what is asked, as the direct question does; a request
+-- that names a value, or another verb, is read or asked as before
+do
+  local _, ex = scene({ "CRE KLM12 A320 52.3 4.7 090 FL100 250", "CRE EZY45 A319 52.1 4.2 180 FL120 260" })
+  check_eq(ex("Would you mind telling me what KLM12 is currently doing?"), "POS KLM12")
+  check_eq(ex("I'd like to know what the easyJet is doing now."), "POS EZY45")
+  check_eq(ex("Could you kindly tell me the destination of KLM12?"), "DEST KLM12")
+  check_eq(ex("please let me know the origin of EZY45"), "ORIG EZY45")
+  check_eq(ex("Do you know whether conflict detection is switched on?"), "ASAS")
+  check_eq(ex("Can you tell me which resolution method is in use at the moment?"), "RESO")
+  check_eq(ex("could you tell me what the zone radius is?"), "ZONER")
+  asked(ex("Please give EZY45 the destination"), "a destination given with no airport")
+  asked(ex("Could you tell me what KLM12 is currently doing at FL300?"), "a level said beside the question")
+end
+
+-- Cycle 49 (f117): a polite question opening a request of the run ("could you please resume the run?", "would you
+-- kindly start the run?") starts or resumes it, as the bare verb does
+do
+  local _, ex = scene({ "CRE KLM12 A320 52.3 4.7 090 FL100 250" })
+  check_eq(ex("Could you please resume the run?"), "OP")
+  check_eq(ex("Would you kindly start the run?"), "OP")
+  asked(ex("Could you please resume the run of KLM12?"), "a run of an aircraft")
+end
+
+-- Cycle 49 (f117): a report's asides after a complete instruction are set aside: the speaker's opinion ("in my
+-- view"), a past event told with "when" ("when the conflict first became apparent"), a comparison with the record
+-- (", contrary to its VFR clearance"), what a defined point stands for (", marking the point of closest approach"),
+-- what a shown value includes, a report's section and an air traffic unit's abbreviation; the same clause with a
+-- present condition, a value or an aircraft is asked
+do
+  local _, ex = scene({ "CRE KLM12 A320 52.3 4.7 090 FL100 250", "CRE EZY45 A319 52.1 4.2 180 FL120 260" })
+  check_eq(ex("Please have KLM12 stop its climb at FL110, which is what the controller should have done, in my "
+    .. "opinion, when the first alert occurred."), "ALT KLM12 FL110")
+  check_eq(ex("KLM12 was climbing at about 1800 feet per minute when the first alert was generated; set that rate."),
+    "VS KLM12 1800")
+  check_eq(ex("have KLM12 climb to FL110, contrary to its clearance"), "ALT KLM12 FL110")
+  check_eq(ex("Define a waypoint called LOSPT at 52.2 north, 4.5 east, representing the point of loss of separation."),
+    "DEFWPT LOSPT 52.2 4.5")
+  check_eq(ex("Please indicate where EZY45 is at present, including its speed."), "POS EZY45")
+  check_eq(ex("Please give the position of EZY45, as I need it for table 3 of the report."), "POS EZY45")
+  check_eq(ex("The look-ahead should be increased to 240 seconds, which matches the STCA used by Amsterdam ACC."),
+    "DTLOOK 240")
+  asked(ex("KLM12 should climb at 1800 feet per minute when the first alert is generated."), "a present condition")
+  asked(ex("have KLM12 climb to FL110, contrary to its clearance of FL090"), "a level in the aside")
+  asked(ex("have KLM12 climb to FL110, contrary to EZY45's clearance"), "an aircraft in the aside")
+end
+
+-- Cycle 49 (f117): "a half-height of 1000 feet" after "and" names the zone's half height, no fraction left over;
+-- the Boeing 747-8 is the B748
+do
+  local _, ex = scene({ "CRE KLM12 A320 52.3 4.7 090 FL100 250" })
+  check_eq(ex("I'd like the zone to have a radius of 4 nautical miles and a half-height of 800 feet"),
+    "ZONER 4 ; ZONEDH 800")
+  check_eq(ex("create a Boeing 747-8 called CLX77 at 52.0 N 4.0 E heading 090 FL300 280 knots"),
+    "CRE CLX77 B748 52 4 90 FL300 280")
+  asked(ex("KLM12 climb to four thousand and a half"), "a fraction after 'and'")
+end
+
+-- Cycle 49 (f117): a bound closing a condition ("once it is above 8000 feet, accelerate", "when below FL100 ...")
+-- is the level crossed, which the instruction after it waits for (ATALT); a bound with no condition word stays asked
+do
+  local _, ex = scene({ "CRE KLM12 A320 52.3 4.7 090 4000 250" })
+  check_eq(ex("Please climb KLM12 to FL150 and, once it is above 9000 feet, accelerate it to 300 knots."),
+    "ALT KLM12 FL150 ; ATALT KLM12 9000 SPD KLM12 300")
+  check_eq(ex("climb KLM12 to FL150, when above FL100 speed 300 knots"), "ALT KLM12 FL150 ; ATALT KLM12 FL100 SPD KLM12 300")
+  asked(ex("climb KLM12 to FL150, above 9000 feet speed 300 knots"), "a bound with no condition word")
+  asked(ex("climb KLM12 to FL150 and once it is above FL200 accelerate to 300 knots"), "a level it will not pass")
+end
+
+-- Cycle 49 (f117): "insert X between A and B" puts X after A when A and B follow each other on the route; two
+-- places apart, or in the other order, are asked
+do
+  local _, ex = scene({ "DEFWPT SPY 52.5 4.8", "DEFWPT PAM 52.6 5.0", "DEFWPT WOODY 52.7 5.2", "DEFWPT EEL 52.55 4.9",
+    "CRE KLM12 A320 52.3 4.7 090 FL100 250", "ADDWPT KLM12 SPY", "ADDWPT KLM12 PAM", "ADDWPT KLM12 WOODY" })
+  check_eq(ex("Could you please insert EEL between SPY and PAM in the route of KLM12?"), "ADDWPT KLM12 EEL,,,SPY")
+  asked(ex("Could you please insert EEL between PAM and SPY in the route of KLM12?"), "the places in the other order")
+  asked(ex("Could you please insert EEL between SPY and WOODY in the route of KLM12?"), "two places apart")
+end
+
+-- Cycle 49 (f117): "add / set an altitude constraint of FL80 at MAGAT for X" is the constraint at the waypoint (AT),
+-- no aircraft created; at a waypoint off the route it is asked
+do
+  local _, ex = scene({ "DEFWPT SPY 52.5 4.8", "DEFWPT PAM 52.6 5.0", "DEFWPT WOODY 52.7 5.2",
+    "CRE KLM12 A320 52.3 4.7 090 FL100 250", "ADDWPT KLM12 SPY", "ADDWPT KLM12 PAM" })
+  check_eq(ex("Could you please add an altitude constraint of flight level 90 at PAM for KLM12?"), "AT KLM12 PAM ALT FL90")
+  check_eq(ex("Please set a speed restriction of 230 knots at SPY for KLM12"), "AT KLM12 SPY SPD 230")
+  asked(ex("Please add an altitude constraint of FL90 at WOODY for KLM12"), "a waypoint off the route")
+  -- a report's source said without a comma ("over CASAR according to the letter of agreement") and a time of the
+  -- record in an aside (", as it was cleared at 10:44") are set aside; the same time said as the instruction's is
+  -- asked
+  check_eq(ex("KLM12 was to be at FL120 over PAM according to the letter of agreement; please reproduce that constraint."),
+    "AT KLM12 PAM ALT FL120")
+  check_eq(ex("KLM12 is to proceed direct to PAM, as it was cleared at 10:44."), "DIRECT KLM12 PAM")
+  asked(ex("KLM12 is to proceed direct to PAM at 10:44."), "a time said as the instruction's")
+  asked(ex("KLM12 was to be at FL120 over PAM according to EZY45"), "an aircraft as the source")
+end
+
+-- Cycle 49 (f117): ", and another A320 called X at ..." after a creation creates one more aircraft; without a
+-- callsign or a position it is asked
+do
+  local _, ex = scene({ "DEFWPT SPY 52.5 4.8", "DEFWPT PAM 52.6 5.0" })
+  check_eq(ex("Please create an A320 called KLM501 at SPY with heading 045, FL 290 and 270 knots, and another A320 "
+    .. "called KLM502 at PAM with heading 225, FL 290 and 270 knots."),
+    "CRE KLM501 A320 SPY 45 FL290 270 ; CRE KLM502 A320 PAM 225 FL290 270")
+  asked(ex("Please create an A320 called KLM501 at SPY with heading 045, FL 290 and 270 knots, and another A320 at "
+    .. "PAM with heading 225, FL 290 and 270 knots."), "another aircraft with no callsign")
+  asked(ex("Please create an A320 called KLM501 at SPY with heading 045, FL 290 and 270 knots, and another A320 "
+    .. "called KLM502."), "another aircraft with no position")
+end
+
+-- Cycle 49 (f117): the speaker's need of an aircraft denied before it is removed ("we will not need KLM12 any more,
+-- so could you please delete it?") is the reason for the removal; the same clause before another instruction, or
+-- holding a value, is asked
+do
+  local _, ex = scene({ "CRE KLM12 A320 52.3 4.7 090 FL100 250" })
+  check_eq(ex("We will not need KLM12 any more, so could you please delete it?"), "DEL KLM12")
+  check_eq(ex("I don't really need KLM12 anymore, please remove it."), "DEL KLM12")
+  asked(ex("We will not need KLM12 any more, so could you please climb it to FL300?"), "no removal after it")
+  asked(ex("We will not need KLM12 at FL200, so could you please delete it?"), "a value in the clause")
+end
