@@ -2931,8 +2931,12 @@ function G:segments(b, e)
         -- "speed 300, DLH9CE, left heading 200": a turn's direction said straight before its
         -- instruction word is the turn's, and so is the aircraft named before that
         if this.cmd == "HDG" and self:word(start - 1, "@left @right") and start - 1 > last.trig then start = start - 1 end
+        -- ("... and klm1243 dct... uh no, hdg 060": an instruction cut off and taken back after the callsign,
+        -- G:self_corrected's cut_back, parts it from the instruction said in its place no more than a filler)
         for _, r in ipairs(self:refs_in(last.trig + 1, start, "aircraft")) do
-          if self:skip_fillers(r.e) == start then start = r.b end
+          local after = self:skip_fillers(r.e)
+          if self.cut_back[after] then after = self:skip_fillers(self.cut_back[after]) end
+          if after == start then start = r.b end
         end
         -- "heading 070, FL240 climb, speed 300": a value with this instruction's unit said just before its word,
         -- after a comma or "and" closing the instruction before with a value of its own, is this one's
@@ -3459,6 +3463,7 @@ function G:self_corrected()
       elseif b < a then
         self:mark_used(b, c)
         for k = b, c - 1 do self.noted[k] = true end
+        self.cut_back[b] = c
         a = c
       elseif self:value_said_again(p, a, c) then
         a = c
@@ -9082,7 +9087,7 @@ function M.translate(text, world)
   local u = squawk.translate.utterance(text, world, NAMES)
   local toks = u:tokens()
   local g = setmetatable({ u = u, t = toks, words = word_texts(toks), refs = u:refs(), world = world,
-    fleet = world.aircraft, out = {}, qcache = {}, taken = {}, noted = {}, triggers = {}, apart = apart,
+    fleet = world.aircraft, out = {}, qcache = {}, taken = {}, noted = {}, cut_back = {}, triggers = {}, apart = apart,
     text_said = said }, G)
   g:settle_callsigns()
   local same = g:same_for()

@@ -11537,3 +11537,13 @@ do
   asked(ex("KLM12 no higher FL300"), "the bound with 'than' left out")
   check_eq(ex("KLM12 climb to FL300, no higher"), "ALT KLM12 FL300")
 end
+
+-- Cycle 49 (f122): an instruction cut off after its callsign and taken back ("klm33 dct... uh no, hdg 060") leaves the
+-- callsign the subject of the instruction said in its place: no value said before it for another aircraft moves to it
+do
+  local _, ex = scene({ "CRE KLM33 A320 52.0 4.0 090 FL200 250", "CRE BAW7 A319 52.3 4.6 180 FL240 260" })
+  check_eq(ex("baw7 fl220 spd 240 and klm33 dct... uh no, hdg 060"), "ALT BAW7 FL220 ; SPD BAW7 240 ; HDG KLM33 60")
+  check_eq(ex("baw7 fl220, klm33 direct... sorry, speed 230"), "ALT BAW7 FL220 ; SPD KLM33 230")
+  check_eq(ex("baw7 hdg 200 and klm33 hdg 100"), "HDG BAW7 200 ; HDG KLM33 100")
+  asked(ex("baw7 fl220 and klm33 turn... sorry, fl210"), "a value alone after the correction, no instruction word")
+end
