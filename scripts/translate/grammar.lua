@@ -2782,8 +2782,85 @@ end
 
 -- The kinds of value an instruction said after its value (verb-final order) takes from before its word.
 local VERB_FINAL_KINDS = { alt = { alt = true }, spd = { speed = true, mach = true }, hdg = { heading = true } }
+-- "spd 300 then at 300 kts fl240", "speed 220 and at 220 descend FL180", "spd 280, when at 280 climb FL200": the
+-- speed just given said again after "at" ("when at", "once at") opening a clause after it (a comma, "and" or a
+-- word of lexicon.then_words before) is the speed what follows in that clause waits for (ATSPD). For "at" at
+-- token a, G:speed_again_at gives that speed's quantity (knots, Mach or a bare number, "speed" allowed before it)
+-- when the last instruction word before it is a speed's and its value is the same; else nil. Kept in
+-- self.speed_again[a] by G:segments, for G:at_speed_again.
+function G:speed_again_at(a)
+  if not self:word(a, "at") then return nil end
+  local k = self:word(a - 1, "@condition") and a - 2 or a - 1
+  local t = self.t[k]
+  if not (t and ((t.kind == "punct" and t.text == ",") or self:word(k, "and @then_words"))) then return nil end
+  local v = self:word(a + 1, "speed airspeed") and a + 2 or a + 1
+  local q = self:quantities(v, #self.t + 1)[1]
+  if not (q and q.b == v and (q.kind == "speed" or q.kind == "mach" or q.kind == "plain")) then return nil end
+  local before = self:quantities(1, k)
+  local given = before[#before]
+  if not (given and given.value == q.value) then return nil end
+  if given.kind == "speed" or given.kind == "mach" then return q end
+  -- (a bare number is the speed given only as the first value after a speed's instruction word)
+  local p = given.b - 1
+  while p >= 1 and not self:intent_at(p) do p = p - 1 end
+  if given.kind ~= "plain" or p < 1 or self:intent_at(p) ~= "spd" then return nil end
+  local prior = before[#before - 1]
+  return (not prior or prior.e <= p) and q or nil
+end
+
+-- The condition of segment s opened by a speed said again (G:speed_again_at, kept in self.speed_again): "ATSPD id
+-- value" when only "and", "then", a condition word or marks come before its "at" in s, only fillers, commas and
+-- lexicon.condition_lead between the speed and s.trig, and this request gave aircraft id that speed already
+-- (SPD id value issued). The speed is marked used.
+function G:at_speed_again(s)
+  local a = s.b
+  while a < s.trig and (self.t[a].kind == "punct" or self:word(a, "and @then_words @condition")) do a = a + 1 end
+  local q = self.speed_again[a]
+  if not q then return nil end
+  local k = self:skip_fillers(q.e)
+  while k < s.trig and self:word(k, "@condition_lead") do k = self:skip_fillers(k + 1) end
+  local ids = k == s.trig and self:acids(s) or {}
+  local f = handlers.format
+  local mach = q.kind == "mach" or (q.kind == "plain" and q.value > 0 and q.value < 1)
+  local spd = #ids == 1 and "SPD " .. ids[1] .. " " .. (mach and f.mach(q.value) or f.int(q.value))
+  local given
+  for _, line in ipairs(spd and self.out or {}) do
+    if line:sub(-#spd) == spd and (line == spd or line:sub(-#spd - 1, -#spd - 1) == " ") then given = line end
+  end
+  if not given then return nil end
+  -- (the speed itself waits, "delay 90 klm12 spd 250, then at 250 kts fl300": two waits, which squawk cannot nest)
+  if given ~= spd then
+    return self:need(string.format("I have %s. '%s' waits already: should what follows wait for it as well as for "
+      .. "%s? Please give the two separately.", table.concat(self.out, " ; "), given, self:raw(a, q.e)))
+  end
+  self:mark_used(q.b, q.e)
+  return "AT" .. spd
+end
+
+-- "klm501 speed 220 and at 220 fl180": a speed said again (G:speed_again_at) inside a speed instruction's segment,
+-- with a value of its own unit but a speed's after it in the clause, opens an instruction of its own (an "infer"
+-- segment from the "at", its instruction word the value's first token, in place in `segs`).
+function G:speed_again_split(segs)
+  for k = #segs, 1, -1 do
+    local sg = segs[k]
+    for a = (sg.intent == "spd" or sg.intent == "infer") and sg.trig + 1 or sg.e, sg.e - 1 do
+      local q = self.speed_again[a]
+      local nx = q and self:skip_fillers(q.e)
+      local v = nx and self:quantities(nx, sg.e)[1]
+      if v and v.b == nx and G.unit_value(v) and v.kind ~= "speed" and v.kind ~= "mach" then
+        local cut = self:word(a - 1, "@condition") and a - 1 or a
+        table.insert(segs, k + 1, { intent = "infer", b = cut, trig = v.b, e = sg.e })
+        sg.e = cut
+        break
+      end
+    end
+  end
+end
+
 function G:segments(b, e)
   local trig = {}
+  self.speed_again = {}
+  for i = self:said("at") and b or e, e - 1 do self.speed_again[i] = self:speed_again_at(i) end
   for i = b, e - 1 do
     -- (a word in a reason, "so we get the same run each time", starts no instruction)
     local intent = self:intent_at(i)
@@ -2801,10 +2878,17 @@ function G:segments(b, e)
     end
   end
   local segs = {}
-  if #trig == 0 then return { { intent = "infer", b = b, trig = b, e = e } } end
+  if #trig == 0 then
+    local segs = { { intent = "infer", b = b, trig = b, e = e } }
+    self:speed_again_split(segs)
+    return segs
+  end
   -- "KLM601 FL210, then ff 4 min": a callsign and a value with its own unit, a clause before the first
   -- instruction word, are an instruction of their own
-  local qs = self:quantities(b, trig[1].pos)
+  -- (up to a speed said again after "at", "klm12 220 kts then at 220 kts descend FL180": G:speed_again_at)
+  local own_e = trig[1].pos
+  for a = b, own_e - 1 do if self.speed_again[a] then own_e = a break end end
+  local qs = self:quantities(b, own_e)
   -- ("hop7 fl100 in 2 min, hdg 220", "... in 2 min and hdg 220": a wait said after the value is the value's own
   -- clause, which "and" closes too)
   local timed = #qs > 1 and qs[#qs].kind == "time"
@@ -2980,6 +3064,10 @@ function G:segments(b, e)
         -- level after "at" opening a clause after the last instruction's value, before a speed or heading:
         -- "climb FL360, at FL350 it shall reduce to Mach .77", "climb FL160 then at FL160 speed 280", "... and
         -- at FL140 ..."; never a creation's "..., at 37,000 feet")
+        -- (likewise the speed given said again after "at": G:speed_again_at)
+        for a = last.trig + 1, start - 1 do
+          if self.speed_again[a] then start = self:word(a - 1, "@condition") and a - 1 or a break end
+        end
         for _, q in ipairs(self:quantities(last.trig + 1, start)) do
           local k = self:skip_fillers(q.e)
           if q.kind == "alt" and (tr.intent == "spd" or tr.intent == "hdg") and last.intent ~= "create"
@@ -3014,6 +3102,7 @@ function G:segments(b, e)
     end
   end
   self:switch_then_value(segs)
+  self:speed_again_split(segs)
   -- "descend FL60 and from 10 NM before LNO 180 kt": a distance from a place opening a clause after the
   -- instruction's value ("and" or a comma before it), with a value after the place, is that value's
   -- condition alone: an instruction of its own (G:at_distance)
@@ -3645,7 +3734,8 @@ function G:parse(b, e)
       if until_wp then before = nil end
       local at_next = self.at_next
       self.at_next = nil
-      local at = self:at_altitude(s) or self:at_speed(s) or self:at_distance(s) or self:at_time(s) or self.at_all
+      local at = self:at_altitude(s) or self:at_speed(s) or self:at_speed_again(s) or self:at_distance(s)
+        or self:at_time(s) or self.at_all
       -- "slow to 240 knots when it reaches flight level 200", "turn heading 180, but only when it is at
       -- FL250": a level said as a condition after the speed or heading instruction it holds
       local held, cut

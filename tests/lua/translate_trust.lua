@@ -11547,3 +11547,19 @@ do
   check_eq(ex("baw7 hdg 200 and klm33 hdg 100"), "HDG BAW7 200 ; HDG KLM33 100")
   asked(ex("baw7 fl220 and klm33 turn... sorry, fl210"), "a value alone after the correction, no instruction word")
 end
+
+-- Cycle 49 (f122): the speed just given said again after "at" opening a clause ("spd 300 then at 300 kts fl240",
+-- "speed 220 and at 220 descend FL180", "spd 280, when at 280 climb FL300") is what the rest waits for (ATSPD); a
+-- different speed there is asked
+do
+  local _, ex = scene({ "CRE KLM33 A320 52.0 4.0 090 FL200 250" })
+  check_eq(ex("klm33 spd 290 then at 290 kts fl260"), "SPD KLM33 290 ; ATSPD KLM33 290 ALT KLM33 FL260")
+  check_eq(ex("klm33 speed 230 and at 230 fl160"), "SPD KLM33 230 ; ATSPD KLM33 230 ALT KLM33 FL160")
+  check_eq(ex("klm33 reduce 230 kts, at 230 kts descend fl150"), "SPD KLM33 230 ; ATSPD KLM33 230 ALT KLM33 FL150")
+  check_eq(ex("klm33 spd 270, when at 270 climb fl300"), "SPD KLM33 270 ; ATSPD KLM33 270 ALT KLM33 FL300")
+  check_eq(ex("klm33 240 kts then at 240 kts turn left hdg 010"),
+    "SPD KLM33 240 ; ATSPD KLM33 240 HDG KLM33 10 LEFT")
+  check_eq(ex("klm33 mach .74 then at mach .74 fl280"), "SPD KLM33 M0.74 ; ATSPD KLM33 M0.74 ALT KLM33 FL280")
+  asked(ex("klm33 speed 230 and at 260 fl160"), "a speed after 'at' that is not the one given")
+  asked(ex("delay 60 klm33 spd 230, then at 230 kts fl160"), "a speed that waits itself, and a wait for it")
+end
