@@ -2892,6 +2892,8 @@ function G:segments(b, e)
   -- ("hop7 fl100 in 2 min, hdg 220", "... in 2 min and hdg 220": a wait said after the value is the value's own
   -- clause, which "and" closes too)
   local timed = #qs > 1 and qs[#qs].kind == "time"
+  -- (a wait opening the request, "in 2 min klm33 fl200 and ryr8 hdg 240", is no value of the clause)
+  if qs[1] and qs[1].kind == "time" and #qs > 1 and not self:has_ref(b, qs[1].b, "aircraft") then table.remove(qs, 1) end
   if timed then qs = { table.unpack(qs, 1, #qs - 1) } end
   local own = G.unit_value(qs[#qs])
   -- ("Wizz Air 3117, negative, flight level 280, descend": a level with only a comma between it and a climb or
@@ -3682,6 +3684,7 @@ end
 local tied_to_waypoint
 
 function G:parse(b, e)
+  self:typed_wait()
   local segs = self:split_ellipsis(self:segments(b, e))
   local prev_out = #self.out
   local valueless, issued_by = {}, {}  -- (G:valueless_left)

@@ -11563,3 +11563,16 @@ do
   asked(ex("klm33 speed 230 and at 260 fl160"), "a speed after 'at' that is not the one given")
   asked(ex("delay 60 klm33 spd 230, then at 230 kts fl160"), "a speed that waits itself, and a wait for it")
 end
+
+-- Cycle 49 (f122): BlueSky's DELAY and SCHEDULE typed by their names opening the request, a time straight after
+-- (seconds, or with its unit), time every instruction of it; with a callsign straight after the name it is asked
+do
+  local _, ex = scene({ "CRE KLM33 A320 52.0 4.0 090 FL200 250", "CRE BAW7 A319 52.3 4.6 180 FL240 260" })
+  check_eq(ex("delay 120 klm33 fl250"), "DELAY 120 ALT KLM33 FL250")
+  check_eq(ex("delay 90 baw7 hdg 270 and klm33 descend fl150"), "DELAY 90 HDG BAW7 270 ; DELAY 90 ALT KLM33 FL150")
+  check_eq(ex("schedule 900 baw7 speed 230"), "SCHEDULE 00:15:00 SPD BAW7 230")
+  check_eq(ex("delay 2 min klm33 climb fl260"), "DELAY 120 ALT KLM33 FL260")
+  check_eq(ex("in 60 s klm33 fl250 and baw7 hdg 100"), "DELAY 60 ALT KLM33 FL250 ; DELAY 60 HDG BAW7 100")
+  asked(ex("delay klm33 fl250"), "'delay' with no time")
+  asked(ex("schedule baw7 speed 230"), "'schedule' with no time")
+end
