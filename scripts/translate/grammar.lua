@@ -2904,8 +2904,10 @@ function G:segments(b, e)
     while k < trig[1].pos and self.t[k].kind == "punct" and self.t[k].text == "," do k = k + 1 end
     own = k ~= trig[1].pos
   end
-  if own and self:has_ref(b, qs[1].b, "aircraft") and not self:word_in(b, trig[1].pos, "@level_condition @condition") then
-    for k = qs[#qs].e, trig[1].pos - 1 do
+  -- (a condition said in the clause keeps it whole; one after the clause's end, "klm33 fl260, once level hdg 300",
+  -- opens the next instruction)
+  if own and self:has_ref(b, qs[1].b, "aircraft") then
+    for k = qs[#qs].e, self:word_in(b, qs[#qs].e, "@level_condition @condition") and 0 or trig[1].pos - 1 do
       -- ("klm33 fl220 and ryr8 hdg 240", "klm33 fl220 ryr8 hdg 240": another flying aircraft after "and" or
       -- straight after the value parts them as a comma does)
       local at = (self:word(k, "and") and k + 1) or (k == qs[#qs].e and k)
@@ -2913,7 +2915,7 @@ function G:segments(b, e)
       local first = other and self:refs_in(b, qs[1].b, "aircraft")[1]
       if self.t[k].kind == "punct" or self:word(k, "@then_words") or (timed and self:word(k, "and")) or (other and other.exists
           and other.name:upper() ~= first.name:upper()) then
-        segs[1] = { intent = "infer", b = b, trig = b, e = k }
+        if not self:word_in(qs[#qs].e, k, "@level_condition @condition") then segs[1] = { intent = "infer", b = b, trig = b, e = k } end
         break
       end
     end

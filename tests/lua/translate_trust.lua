@@ -11576,3 +11576,12 @@ do
   asked(ex("delay klm33 fl250"), "'delay' with no time")
   asked(ex("schedule baw7 speed 230"), "'schedule' with no time")
 end
+
+-- Cycle 49 (f122): a verbless level closing its clause with a comma before a condition ("klm33 fl260, once level hdg
+-- 300") is an instruction of its own, and what follows waits for it; a condition inside the level's clause is asked
+do
+  local _, ex = scene({ "CRE KLM33 A320 52.0 4.0 090 FL240 250" })
+  check_eq(ex("klm33 fl280, once level hdg 120"), "ALT KLM33 FL280 ; ATALT KLM33 FL280 HDG KLM33 120")
+  check_eq(ex("klm33 fl280, when level spd 230"), "ALT KLM33 FL280 ; ATALT KLM33 FL280 SPD KLM33 230")
+  asked(ex("klm33 fl280 once level, hdg 120"), "the condition inside the level's clause, before the comma")
+end
