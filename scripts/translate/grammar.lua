@@ -4122,7 +4122,8 @@ function G:trailing_fix(s)
     return name and { b = c, e = e, name = name } or nil
   end
   if self:word(k, "it you") then k = self:skip_fillers(k + 1) end
-  if self:word(k, "passing passes reaching reaches overflying") then
+  -- ("fl100 when past WYP": typed short, "past" is passing)
+  if self:word(k, "passing passes reaching reaches overflying past") then
     k = self:skip_fillers(k + 1)
   elseif self:word(k, "gets") and self:word(k + 1, "to") then
     k = self:skip_fillers(k + 2)

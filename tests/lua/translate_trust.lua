@@ -11585,3 +11585,12 @@ do
   check_eq(ex("klm33 fl280, when level spd 230"), "ALT KLM33 FL280 ; ATALT KLM33 FL280 SPD KLM33 230")
   asked(ex("klm33 fl280 once level, hdg 120"), "the condition inside the level's clause, before the comma")
 end
+
+-- Cycle 49 (f122): typed short forms "tgt" (target) and "crecon" (CRECONFS), and "when past FIX" (passing it)
+do
+  local _, ex = scene({ "CRE KLM33 A320 52.0 4.0 090 FL150 250", "ADDWPT KLM33 SPY", "CRE BAW7 A319 52.3 4.6 180 FL240 260" })
+  check_eq(ex("klm33 tgt fl190 vs 1200"), "ALT KLM33 FL190 ; VS KLM33 1200")
+  check_eq(ex("crecon ezy9 a319 tgt baw7 dpsi 90 cpa 1 tlos 240"), "CRECONFS EZY9 A319 BAW7 90 1 240")
+  check_eq(ex("klm33 fl120 when past SPY"), "AT KLM33 SPY DO ALT KLM33 FL120")
+  asked(ex("klm33 fl120 past SPY"), "'past' with no condition word: after, or passing?")
+end
