@@ -9043,9 +9043,14 @@ function M.translate(text, world)
       end)
     end
   end
-  -- "FL240 -> FL250": an arrow between two levels, from the one to the other
+  -- ("hdg 130 → 100": the arrow typed as its character is the arrow)
+  if text:find("\xE2\x86\x92", 1, true) then text = text:gsub("%s*\xE2\x86\x92%s*", " -> ") end
+  -- "FL240 -> FL250", "fl370 -> 35000", "12000 -> FL150": an arrow between two levels (a flight level, or feet in
+  -- four or five figures, on one side at least a flight level), from the one to the other
   if text:find(">", 1, true) then
     text = text:gsub("([Ff][Ll]%s?%d%d%d?)%s*[%-=]+>%s*([Ff][Ll]%s?%d%d%d?)", "from %1 to %2")
+    text = text:gsub("([Ff][Ll]%s?%d%d%d?)%s*[%-=]+>%s*(%d%d%d%d%d?%f[^%w%.])", "from %1 to %2 ft")
+    text = text:gsub("(%f[%w%.]%d%d%d%d%d?)%s*[%-=]+>%s*([Ff][Ll]%s?%d%d%d?)", "from %1 ft to %2")
   end
   -- "hdg 220 -> 250", "spd 280 -> 250": an arrow between two values after the name of a heading or speed, from
   -- the one to the other

@@ -11594,3 +11594,15 @@ do
   check_eq(ex("klm33 fl120 when past SPY"), "AT KLM33 SPY DO ALT KLM33 FL120")
   asked(ex("klm33 fl120 past SPY"), "'past' with no condition word: after, or passing?")
 end
+
+-- Cycle 49 (f122): an arrow typed as its character ("hdg 130 → 100") is the arrow, and one between a flight level and
+-- feet ("fl370 -> 35000", "12000 -> FL150") goes from the one to the other; a heading it leaves that the aircraft
+-- does not fly is still asked
+do
+  local _, ex = scene({ "CRE KLM33 A320 52.0 4.0 090 FL330 250", "CRE BAW7 A319 52.3 4.6 180 11000 260" })
+  check_eq(ex("klm33 hdg 090 → 120"), "HDG KLM33 120")
+  check_eq(ex("klm33 alt fl330 -> 31000"), "ALT KLM33 31000")
+  check_eq(ex("klm33 fl330 → 31000"), "ALT KLM33 31000")
+  check_eq(ex("baw7 alt 11000 -> FL140"), "ALT BAW7 FL140")
+  asked(ex("klm33 hdg 100 → 120"), "the heading it leaves is not the one flown")
+end
