@@ -11606,3 +11606,11 @@ do
   check_eq(ex("baw7 alt 11000 -> FL140"), "ALT BAW7 FL140")
   asked(ex("klm33 hdg 100 → 120"), "the heading it leaves is not the one flown")
 end
+
+-- Cycle 49 (f122): "add FIX" after a creation with no callsign of its own adds the waypoint to the aircraft created
+do
+  local _, ex = scene({ "CRE KLM33 A320 52.0 4.0 090 FL150 250", "ADDWPT KLM33 SPY" })
+  check_eq(ex("cre ezy8 a320 52.2 4.3 180 fl120 240, add SPY"), "CRE EZY8 A320 52.2 4.3 180 FL120 240 ; ADDWPT EZY8 SPY")
+  check_eq(ex("cre ezy8 a320 52.2 4.3 180 fl120 240 and add tra9 b738 52.4 4.1 90 fl100 250"),
+    "CRE EZY8 A320 52.2 4.3 180 FL120 240 ; CRE TRA9 B738 52.4 4.1 90 FL100 250")
+end
