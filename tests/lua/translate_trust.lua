@@ -11588,11 +11588,11 @@ end
 
 -- Cycle 49 (f122): typed short forms "tgt" (target) and "crecon" (CRECONFS), and "when past FIX" (passing it)
 do
-  local _, ex = scene({ "CRE KLM33 A320 52.0 4.0 090 FL150 250", "ADDWPT KLM33 SPY", "CRE BAW7 A319 52.3 4.6 180 FL240 260" })
+  local _, ex = scene({ "DEFWPT WPA 52.1 4.3", "CRE KLM33 A320 52.0 4.0 090 FL150 250", "ADDWPT KLM33 WPA", "CRE BAW7 A319 52.3 4.6 180 FL240 260" })
   check_eq(ex("klm33 tgt fl190 vs 1200"), "ALT KLM33 FL190 ; VS KLM33 1200")
   check_eq(ex("crecon ezy9 a319 tgt baw7 dpsi 90 cpa 1 tlos 240"), "CRECONFS EZY9 A319 BAW7 90 1 240")
-  check_eq(ex("klm33 fl120 when past SPY"), "AT KLM33 SPY DO ALT KLM33 FL120")
-  asked(ex("klm33 fl120 past SPY"), "'past' with no condition word: after, or passing?")
+  check_eq(ex("klm33 fl120 when past WPA"), "AT KLM33 WPA DO ALT KLM33 FL120")
+  asked(ex("klm33 fl120 past WPA"), "'past' with no condition word: after, or passing?")
 end
 
 -- Cycle 49 (f122): an arrow typed as its character ("hdg 130 → 100") is the arrow, and one between a flight level and
@@ -11609,8 +11609,8 @@ end
 
 -- Cycle 49 (f122): "add FIX" after a creation with no callsign of its own adds the waypoint to the aircraft created
 do
-  local _, ex = scene({ "CRE KLM33 A320 52.0 4.0 090 FL150 250", "ADDWPT KLM33 SPY" })
-  check_eq(ex("cre ezy8 a320 52.2 4.3 180 fl120 240, add SPY"), "CRE EZY8 A320 52.2 4.3 180 FL120 240 ; ADDWPT EZY8 SPY")
+  local _, ex = scene({ "DEFWPT WPA 52.1 4.3", "CRE KLM33 A320 52.0 4.0 090 FL150 250", "ADDWPT KLM33 WPA" })
+  check_eq(ex("cre ezy8 a320 52.2 4.3 180 fl120 240, add WPA"), "CRE EZY8 A320 52.2 4.3 180 FL120 240 ; ADDWPT EZY8 WPA")
   check_eq(ex("cre ezy8 a320 52.2 4.3 180 fl120 240 and add tra9 b738 52.4 4.1 90 fl100 250"),
     "CRE EZY8 A320 52.2 4.3 180 FL120 240 ; CRE TRA9 B738 52.4 4.1 90 FL100 250")
 end
