@@ -2794,18 +2794,19 @@ function G:speed_again_at(a)
   local t = self.t[k]
   if not (t and ((t.kind == "punct" and t.text == ",") or self:word(k, "and @then_words"))) then return nil end
   local v = self:word(a + 1, "speed airspeed") and a + 2 or a + 1
-  local q = self:quantities(v, #self.t + 1)[1]
+  -- (the speed and the one given are looked for in a few words each: a value of three tokens at most, "220 kts", its
+  -- instruction word at most three before it, "reduce speed to 220")
+  local q = self:quantities(v, math.min(#self.t + 1, v + 3))[1]
   if not (q and q.b == v and (q.kind == "speed" or q.kind == "mach" or q.kind == "plain")) then return nil end
-  local before = self:quantities(1, k)
+  local before = self:quantities(math.max(1, k - 6), k)
   local given = before[#before]
-  if not (given and given.value == q.value) then return nil end
+  local j = given and self:skip_fillers(given.e)
+  while j and j < a and self:word(j, "@then_words @condition") do j = self:skip_fillers(j + 1) end
+  if not (j == a and given.value == q.value) then return nil end
   if given.kind == "speed" or given.kind == "mach" then return q end
-  -- (a bare number is the speed given only as the first value after a speed's instruction word)
-  local p = given.b - 1
-  while p >= 1 and not self:intent_at(p) do p = p - 1 end
-  if given.kind ~= "plain" or p < 1 or self:intent_at(p) ~= "spd" then return nil end
-  local prior = before[#before - 1]
-  return (not prior or prior.e <= p) and q or nil
+  -- (a bare number is the speed given only straight after a speed's instruction word, "to" between at most)
+  local p = self:word(given.b - 1, "to") and given.b - 2 or given.b - 1
+  return given.kind == "plain" and self:intent_at(p) == "spd" and q or nil
 end
 
 -- The condition of segment s opened by a speed said again (G:speed_again_at, kept in self.speed_again): "ATSPD id
