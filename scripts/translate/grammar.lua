@@ -2838,6 +2838,13 @@ function G:at_speed_again(s)
   return "AT" .. spd
 end
 
+-- Segment k of `segs` ends at token cut, and an "infer" segment from cut to its end, its instruction word at trig,
+-- follows it.
+function G.split_segment(segs, k, cut, trig)
+  table.insert(segs, k + 1, { intent = "infer", b = cut, trig = trig, e = segs[k].e })
+  segs[k].e = cut
+end
+
 -- "klm501 speed 220 and at 220 fl180": a speed said again (G:speed_again_at) inside a speed instruction's segment,
 -- with a value of its own unit but a speed's after it in the clause, opens an instruction of its own (an "infer"
 -- segment from the "at", its instruction word the value's first token, in place in `segs`).
@@ -2849,9 +2856,7 @@ function G:speed_again_split(segs)
       local nx = q and self:skip_fillers(q.e)
       local v = nx and self:quantities(nx, sg.e)[1]
       if v and v.b == nx and G.unit_value(v) and v.kind ~= "speed" and v.kind ~= "mach" then
-        local cut = self:word(a - 1, "@condition") and a - 1 or a
-        table.insert(segs, k + 1, { intent = "infer", b = cut, trig = v.b, e = sg.e })
-        sg.e = cut
+        G.split_segment(segs, k, self:word(a - 1, "@condition") and a - 1 or a, v.b)
         break
       end
     end
@@ -3123,9 +3128,7 @@ function G:segments(b, e)
             or (self.t[c - 1] and self.t[c - 1].kind == "punct" and self.t[c - 1].text == ","))
             and self:word(p, "from of to before") and self:has_ref(p + 1, p + 2, "waypoint")
             and #self:quantities(p + 2, sg.e) > 0 then
-          local cut = c - 1
-          table.insert(segs, k + 1, { intent = "infer", b = cut, trig = c, e = sg.e })
-          sg.e = cut
+          G.split_segment(segs, k, c - 1, c)
           break
         end
       end
