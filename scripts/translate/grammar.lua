@@ -3045,8 +3045,91 @@ end
 
 -- The kinds of value an instruction said after its value (verb-final order) takes from before its word.
 local VERB_FINAL_KINDS = { alt = { alt = true }, spd = { speed = true, mach = true }, hdg = { heading = true } }
+-- "spd 300 then at 300 kts fl240", "speed 220 and at 220 descend FL180", "spd 280, when at 280 climb FL200": the
+-- speed just given said again after "at" ("when at", "once at") opening a clause after it (a comma, "and" or a
+-- word of lexicon.then_words before) is the speed what follows in that clause waits for (ATSPD). For "at" at
+-- token a, G:speed_again_at gives that speed's quantity (knots, Mach or a bare number, "speed" allowed before it)
+-- when the last instruction word before it is a speed's and its value is the same; else nil. Kept in
+-- self.speed_again[a] by G:segments, for G:at_speed_again.
+function G:speed_again_at(a)
+  if not self:word(a, "at") then return nil end
+  local k = self:word(a - 1, "@condition") and a - 2 or a - 1
+  local t = self.t[k]
+  if not (t and ((t.kind == "punct" and t.text == ",") or self:word(k, "and @then_words"))) then return nil end
+  local v = self:word(a + 1, "speed airspeed") and a + 2 or a + 1
+  -- (the speed and the one given are looked for in a few words each: a value of three tokens at most, "220 kts", its
+  -- instruction word at most three before it, "reduce speed to 220")
+  local q = self:quantities(v, math.min(#self.t + 1, v + 3))[1]
+  if not (q and q.b == v and (q.kind == "speed" or q.kind == "mach" or q.kind == "plain")) then return nil end
+  local before = self:quantities(math.max(1, k - 6), k)
+  local given = before[#before]
+  local j = given and self:skip_fillers(given.e)
+  while j and j < a and self:word(j, "@then_words @condition") do j = self:skip_fillers(j + 1) end
+  if not (j == a and given.value == q.value) then return nil end
+  if given.kind == "speed" or given.kind == "mach" then return q end
+  -- (a bare number is the speed given only straight after a speed's instruction word, "to" between at most)
+  local p = self:word(given.b - 1, "to") and given.b - 2 or given.b - 1
+  return given.kind == "plain" and self:intent_at(p) == "spd" and q or nil
+end
+
+-- The condition of segment s opened by a speed said again (G:speed_again_at, kept in self.speed_again): "ATSPD id
+-- value" when only "and", "then", a condition word or marks come before its "at" in s, only fillers, commas and
+-- lexicon.condition_lead between the speed and s.trig, and this request gave aircraft id that speed already
+-- (SPD id value issued). The speed is marked used.
+function G:at_speed_again(s)
+  local a = s.b
+  while a < s.trig and (self.t[a].kind == "punct" or self:word(a, "and @then_words @condition")) do a = a + 1 end
+  local q = self.speed_again[a]
+  if not q then return nil end
+  local k = self:skip_fillers(q.e)
+  while k < s.trig and self:word(k, "@condition_lead") do k = self:skip_fillers(k + 1) end
+  local ids = k == s.trig and self:acids(s) or {}
+  local f = handlers.format
+  local mach = q.kind == "mach" or (q.kind == "plain" and q.value > 0 and q.value < 1)
+  local spd = #ids == 1 and "SPD " .. ids[1] .. " " .. (mach and f.mach(q.value) or f.int(q.value))
+  local given
+  for _, line in ipairs(spd and self.out or {}) do
+    if line:sub(-#spd) == spd and (line == spd or line:sub(-#spd - 1, -#spd - 1) == " ") then given = line end
+  end
+  if not given then return nil end
+  -- (the speed itself waits, "delay 90 klm12 spd 250, then at 250 kts fl300": two waits, which squawk cannot nest)
+  if given ~= spd then
+    return self:need(string.format("I have %s. '%s' waits already: should what follows wait for it as well as for "
+      .. "%s? Please give the two separately.", table.concat(self.out, " ; "), given, self:raw(a, q.e)))
+  end
+  self:mark_used(q.b, q.e)
+  return "AT" .. spd
+end
+
+-- Segment k of `segs` ends at token cut, and an "infer" segment from cut to its end, its instruction word at trig,
+-- follows it.
+function G.split_segment(segs, k, cut, trig)
+  table.insert(segs, k + 1, { intent = "infer", b = cut, trig = trig, e = segs[k].e })
+  segs[k].e = cut
+end
+
+-- "klm501 speed 220 and at 220 fl180": a speed said again (G:speed_again_at) inside a speed instruction's segment,
+-- with a value of its own unit but a speed's after it in the clause, opens an instruction of its own (an "infer"
+-- segment from the "at", its instruction word the value's first token, in place in `segs`).
+function G:speed_again_split(segs)
+  for k = #segs, 1, -1 do
+    local sg = segs[k]
+    for a = (sg.intent == "spd" or sg.intent == "infer") and sg.trig + 1 or sg.e, sg.e - 1 do
+      local q = self.speed_again[a]
+      local nx = q and self:skip_fillers(q.e)
+      local v = nx and self:quantities(nx, sg.e)[1]
+      if v and v.b == nx and G.unit_value(v) and v.kind ~= "speed" and v.kind ~= "mach" then
+        G.split_segment(segs, k, self:word(a - 1, "@condition") and a - 1 or a, v.b)
+        break
+      end
+    end
+  end
+end
+
 function G:segments(b, e)
   local trig = {}
+  self.speed_again = {}
+  for i = self:said("at") and b or e, e - 1 do self.speed_again[i] = self:speed_again_at(i) end
   for i = b, e - 1 do
     -- (a word in a reason, "so we get the same run each time", starts no instruction)
     local intent = self:intent_at(i)
@@ -3064,13 +3147,22 @@ function G:segments(b, e)
     end
   end
   local segs = {}
-  if #trig == 0 then return { { intent = "infer", b = b, trig = b, e = e } } end
+  if #trig == 0 then
+    local segs = { { intent = "infer", b = b, trig = b, e = e } }
+    self:speed_again_split(segs)
+    return segs
+  end
   -- "KLM601 FL210, then ff 4 min": a callsign and a value with its own unit, a clause before the first
   -- instruction word, are an instruction of their own
-  local qs = self:quantities(b, trig[1].pos)
+  -- (up to a speed said again after "at", "klm12 220 kts then at 220 kts descend FL180": G:speed_again_at)
+  local own_e = trig[1].pos
+  for a = b, own_e - 1 do if self.speed_again[a] then own_e = a break end end
+  local qs = self:quantities(b, own_e)
   -- ("hop7 fl100 in 2 min, hdg 220", "... in 2 min and hdg 220": a wait said after the value is the value's own
   -- clause, which "and" closes too)
   local timed = #qs > 1 and qs[#qs].kind == "time"
+  -- (a wait opening the request, "in 2 min klm33 fl200 and ryr8 hdg 240", is no value of the clause)
+  if qs[1] and qs[1].kind == "time" and #qs > 1 and not self:has_ref(b, qs[1].b, "aircraft") then table.remove(qs, 1) end
   if timed then qs = { table.unpack(qs, 1, #qs - 1) } end
   local own = G.unit_value(qs[#qs])
   -- ("Wizz Air 3117, negative, flight level 280, descend": a level with only a comma between it and a climb or
@@ -3081,8 +3173,10 @@ function G:segments(b, e)
     while k < trig[1].pos and self.t[k].kind == "punct" and self.t[k].text == "," do k = k + 1 end
     own = k ~= trig[1].pos
   end
-  if own and self:has_ref(b, qs[1].b, "aircraft") and not self:word_in(b, trig[1].pos, "@level_condition @condition") then
-    for k = qs[#qs].e, trig[1].pos - 1 do
+  -- (a condition said in the clause keeps it whole; one after the clause's end, "klm33 fl260, once level hdg 300",
+  -- opens the next instruction)
+  if own and self:has_ref(b, qs[1].b, "aircraft") then
+    for k = qs[#qs].e, self:word_in(b, qs[#qs].e, "@level_condition @condition") and 0 or trig[1].pos - 1 do
       -- ("klm33 fl220 and ryr8 hdg 240", "klm33 fl220 ryr8 hdg 240": another flying aircraft after "and" or
       -- straight after the value parts them as a comma does)
       local at = (self:word(k, "and") and k + 1) or (k == qs[#qs].e and k)
@@ -3090,7 +3184,7 @@ function G:segments(b, e)
       local first = other and self:refs_in(b, qs[1].b, "aircraft")[1]
       if self.t[k].kind == "punct" or self:word(k, "@then_words") or (timed and self:word(k, "and")) or (other and other.exists
           and other.name:upper() ~= first.name:upper()) then
-        segs[1] = { intent = "infer", b = b, trig = b, e = k }
+        if not self:word_in(qs[#qs].e, k, "@level_condition @condition") then segs[1] = { intent = "infer", b = b, trig = b, e = k } end
         break
       end
     end
@@ -3194,8 +3288,12 @@ function G:segments(b, e)
         -- "speed 300, DLH9CE, left heading 200": a turn's direction said straight before its
         -- instruction word is the turn's, and so is the aircraft named before that
         if this.cmd == "HDG" and self:word(start - 1, "@left @right") and start - 1 > last.trig then start = start - 1 end
+        -- ("... and klm1243 dct... uh no, hdg 060": an instruction cut off and taken back after the callsign,
+        -- G:self_corrected's cut_back, parts it from the instruction said in its place no more than a filler)
         for _, r in ipairs(self:refs_in(last.trig + 1, start, "aircraft")) do
-          if self:skip_fillers(r.e) == start then start = r.b end
+          local after = self:skip_fillers(r.e)
+          if self.cut_back[after] then after = self:skip_fillers(self.cut_back[after]) end
+          if after == start then start = r.b end
         end
         -- "heading 070, FL240 climb, speed 300": a value with this instruction's unit said just before its word,
         -- after a comma or "and" closing the instruction before with a value of its own, is this one's
@@ -3239,6 +3337,10 @@ function G:segments(b, e)
         -- level after "at" opening a clause after the last instruction's value, before a speed or heading:
         -- "climb FL360, at FL350 it shall reduce to Mach .77", "climb FL160 then at FL160 speed 280", "... and
         -- at FL140 ..."; never a creation's "..., at 37,000 feet")
+        -- (likewise the speed given said again after "at": G:speed_again_at)
+        for a = last.trig + 1, start - 1 do
+          if self.speed_again[a] then start = self:word(a - 1, "@condition") and a - 1 or a break end
+        end
         for _, q in ipairs(self:quantities(last.trig + 1, start)) do
           local k = self:skip_fillers(q.e)
           if q.kind == "alt" and (tr.intent == "spd" or tr.intent == "hdg") and last.intent ~= "create"
@@ -3273,6 +3375,7 @@ function G:segments(b, e)
     end
   end
   self:switch_then_value(segs)
+  self:speed_again_split(segs)
   -- "descend FL60 and from 10 NM before LNO 180 kt": a distance from a place opening a clause after the
   -- instruction's value ("and" or a comma before it), with a value after the place, is that value's
   -- condition alone: an instruction of its own (G:at_distance)
@@ -3288,9 +3391,7 @@ function G:segments(b, e)
             or (self.t[c - 1] and self.t[c - 1].kind == "punct" and self.t[c - 1].text == ","))
             and self:word(p, "from of to before") and self:has_ref(p + 1, p + 2, "waypoint")
             and #self:quantities(p + 2, sg.e) > 0 then
-          local cut = c - 1
-          table.insert(segs, k + 1, { intent = "infer", b = cut, trig = c, e = sg.e })
-          sg.e = cut
+          G.split_segment(segs, k, c - 1, c)
           break
         end
       end
@@ -3738,6 +3839,7 @@ function G:self_corrected()
       elseif b < a then
         self:mark_used(b, c)
         for k = b, c - 1 do self.noted[k] = true end
+        self.cut_back[b] = c
         a = c
       elseif self:value_said_again(p, a, c) then
         a = c
@@ -3867,6 +3969,7 @@ end
 local tied_to_waypoint
 
 function G:parse(b, e)
+  self:typed_wait()
   local segs = self:split_ellipsis(self:segments(b, e))
   local prev_out = #self.out
   local valueless, issued_by = {}, {}  -- (G:valueless_left)
@@ -3926,7 +4029,8 @@ function G:parse(b, e)
       if until_wp then before = nil end
       local at_next = self.at_next
       self.at_next = nil
-      local at = self:at_altitude(s) or self:at_speed(s) or self:at_distance(s) or self:at_time(s) or self.at_all
+      local at = self:at_altitude(s) or self:at_speed(s) or self:at_speed_again(s) or self:at_distance(s)
+        or self:at_time(s) or self.at_all
       -- "slow to 240 knots when it reaches flight level 200", "turn heading 180, but only when it is at
       -- FL250": a level said as a condition after the speed or heading instruction it holds
       local held, cut
@@ -4312,7 +4416,8 @@ function G:trailing_fix(s)
     return name and { b = c, e = e, name = name } or nil
   end
   if self:word(k, "it you") then k = self:skip_fillers(k + 1) end
-  if self:word(k, "passing passes reaching reaches overflying") then
+  -- ("fl100 when past WYP": typed short, "past" is passing)
+  if self:word(k, "passing passes reaching reaches overflying past") then
     k = self:skip_fillers(k + 1)
   elseif self:word(k, "gets") and self:word(k + 1, "to") then
     k = self:skip_fillers(k + 2)
@@ -9587,9 +9692,14 @@ function M.translate(text, world)
       end)
     end
   end
-  -- "FL240 -> FL250": an arrow between two levels, from the one to the other
+  -- ("hdg 130 → 100": the arrow typed as its character is the arrow)
+  if text:find("\xE2\x86\x92", 1, true) then text = text:gsub("%s*\xE2\x86\x92%s*", " -> ") end
+  -- "FL240 -> FL250", "fl370 -> 35000", "12000 -> FL150": an arrow between two levels (a flight level, or feet in
+  -- four or five figures, on one side at least a flight level), from the one to the other
   if text:find(">", 1, true) then
     text = text:gsub("([Ff][Ll]%s?%d%d%d?)%s*[%-=]+>%s*([Ff][Ll]%s?%d%d%d?)", "from %1 to %2")
+    text = text:gsub("([Ff][Ll]%s?%d%d%d?)%s*[%-=]+>%s*(%d%d%d%d%d?%f[^%w%.])", "from %1 to %2 ft")
+    text = text:gsub("(%f[%w%.]%d%d%d%d%d?)%s*[%-=]+>%s*([Ff][Ll]%s?%d%d%d?)", "from %1 ft to %2")
   end
   -- "hdg 220 -> 250", "spd 280 -> 250": an arrow between two values after the name of a heading or speed, from
   -- the one to the other
@@ -9736,7 +9846,7 @@ function M.translate(text, world)
   end
   local toks = u:tokens()
   local g = setmetatable({ u = u, t = toks, words = word_texts(toks), refs = u:refs(), world = world,
-    fleet = world.aircraft, out = {}, qcache = {}, taken = {}, noted = {}, triggers = {}, apart = apart,
+    fleet = world.aircraft, out = {}, qcache = {}, taken = {}, noted = {}, cut_back = {}, triggers = {}, apart = apart,
     text_said = said }, G)
   g:settle_callsigns()
   local same = g:same_for()

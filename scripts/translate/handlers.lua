@@ -2100,6 +2100,31 @@ for _, w in ipairs(L.aside.own) do OWN[w] = true end
 local OWN_TIME = { ff = true, dt = true, dtlook = true, dtmult = true, creconfs = true }
 -- (the instructions whose values a wait may stand between)
 local TIMED_VALUES = { alt = true, spd = true, hdg = true, vs = true, maintain = true, infer = true }
+-- "SCHEDULE hh:mm:ss" for a simulation time of t seconds
+local function schedule_at(t)
+  t = math.floor(t + 0.5)
+  return string.format("SCHEDULE %02d:%02d:%02d", t // 3600, t % 3600 // 60, t % 60)
+end
+-- "delay 300 klm302 dct WP2", "schedule 600 klm303 fl300", "delay 5 min ...": BlueSky's DELAY or SCHEDULE typed by
+-- its name as the request's first word, the time straight after it (a bare whole number of seconds, as BlueSky
+-- reads it, or a time with its unit), times every instruction of the request (self.at_all): "DELAY s" from now,
+-- "SCHEDULE hh:mm:ss" at that simulation time. With a callsign straight after the name, no time, the wait is
+-- asked for. Read before the request's instructions are parted (G:parse), the name and time marked used.
+function m:typed_wait()
+  local w = self:skip_fillers(1)
+  if not self:word(w, "delay schedule") or self.u:used(w) then return nil end
+  local q = self:quantities(w + 1, #self.t + 1)[1]
+  local bare = q and q.kind == "plain" and q.number.typed and q.value >= 0 and q.value % 1 == 0
+  if not (q and q.b == w + 1 and (bare or q.kind == "time")) then
+    -- (said as English, "schedule a pause at 20 min", it is the instruction's verb, read as before)
+    if not self:has_ref(w + 1, w + 2, "aircraft") then return nil end
+    return self:need(string.format("How long should the instructions after '%s' wait? Please give the time in "
+      .. "seconds (\"%s 300 ...\").", self.t[w].raw, self.words[w]))
+  end
+  self:mark_used(w, q.e)
+  self.at_all = self:word(w, "delay") and "DELAY " .. f.num(q.value) or schedule_at(q.value)
+  return self.at_all
+end
 function m:at_time(s)
   if OWN_TIME[s.intent] and not (s.intent == "ff" and self:word(s.trig, "speed spd airspeed")) then return nil end
   if s.intent == "echo" and s.trig == self:skip_fillers(1) and self:word(s.trig, "echo") then return nil end
@@ -2146,9 +2171,7 @@ function m:at_time(s)
       if lead then self:mark_used(lead, q.b) end
       -- ("pause it at the 20 minute mark": the time's noun after it)
       if self:word(q.e, "mark") then self:mark_used(q.e, q.e + 1) end
-      local t = math.floor(q.value + 0.5)
-      local at = lead and "DELAY " .. f.num(q.value)
-        or string.format("SCHEDULE %02d:%02d:%02d", t // 3600, t % 3600 // 60, t % 60)
+      local at = lead and "DELAY " .. f.num(q.value) or schedule_at(q.value)
       -- ("hop7 fl100 in 2 min hdg 220", "descend FL100 in 2 minutes turn left heading 220": a wait between two
       -- instructions with nothing to part them may be the one before's, the one after's or both's: asked)
       local before, after = false, false

@@ -528,6 +528,10 @@ return {
     exp = { { word = "expect", next = "ils rnav vis visual loc rwy runway approach app #number" },
             { word = "expedite", prev = "#number", next = "#end" } },
     hvy = { word = "heavy" }, adn = { word = "and" },
+    -- ("bel3qt tgt fl200 vs 1500": the level a climb or descent targets; "tgt ezy503" in a conflict set up)
+    tgt = { word = "target" },
+    -- ("crecon dlh602 a320 tgt ezy503 dpsi 180 ...": CRECONFS typed short)
+    crecon = { word = "creconfs" },
     thsnd = { word = "thousand", prev = "#number" }, thsd = { word = "thousand", prev = "#number" },
     -- (hesitations typed as said: "mach .. erm spd 270"; a typed "err" or "sry" is "sorry": what follows it
     -- corrects what it follows, "fl130 err fl150", "dir ridar err rokil")

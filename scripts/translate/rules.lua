@@ -1021,8 +1021,8 @@ return function(intent, rule, words)
     return defined and it <= #g.t and g:word(it - 1, "to through via over")
   end }
   -- "create EZY33AB ... routing BAPAG then MAYLA", "..., route ELTOK, dest ENGM", "..., same route, RUVAS then
-  -- OKAKI", "..., then give it TWEED at FL120": the waypoints of the aircraft created in the request
-  rule { "routing route via give", "addwpt", when = function(g, i)
+  -- OKAKI", "..., then give it TWEED at FL120", "..., add NAVAK": the waypoints of the aircraft created in the request
+  rule { "routing route via give add append", "addwpt", when = function(g, i)
     local created = false
     for k = 1, i - 1 do created = created or g:intent_at(k) == "create" end
     local k = i + 1

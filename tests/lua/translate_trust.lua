@@ -12070,3 +12070,80 @@ do
   asked(ex("We will not need KLM12 any more, so could you please climb it to FL300?"), "no removal after it")
   asked(ex("We will not need KLM12 at FL200, so could you please delete it?"), "a value in the clause")
 end
+
+-- Cycle 49 (f122): an instruction cut off after its callsign and taken back ("klm33 dct... uh no, hdg 060") leaves the
+-- callsign the subject of the instruction said in its place: no value said before it for another aircraft moves to it
+do
+  local _, ex = scene({ "CRE KLM33 A320 52.0 4.0 090 FL200 250", "CRE BAW7 A319 52.3 4.6 180 FL240 260" })
+  check_eq(ex("baw7 fl220 spd 240 and klm33 dct... uh no, hdg 060"), "ALT BAW7 FL220 ; SPD BAW7 240 ; HDG KLM33 60")
+  check_eq(ex("baw7 fl220, klm33 direct... sorry, speed 230"), "ALT BAW7 FL220 ; SPD KLM33 230")
+  check_eq(ex("baw7 hdg 200 and klm33 hdg 100"), "HDG BAW7 200 ; HDG KLM33 100")
+  asked(ex("baw7 fl220 and klm33 turn... sorry, fl210"), "a value alone after the correction, no instruction word")
+end
+
+-- Cycle 49 (f122): the speed just given said again after "at" opening a clause ("spd 300 then at 300 kts fl240",
+-- "speed 220 and at 220 descend FL180", "spd 280, when at 280 climb FL300") is what the rest waits for (ATSPD); a
+-- different speed there is asked
+do
+  local _, ex = scene({ "CRE KLM33 A320 52.0 4.0 090 FL200 250" })
+  check_eq(ex("klm33 spd 290 then at 290 kts fl260"), "SPD KLM33 290 ; ATSPD KLM33 290 ALT KLM33 FL260")
+  check_eq(ex("klm33 speed 230 and at 230 fl160"), "SPD KLM33 230 ; ATSPD KLM33 230 ALT KLM33 FL160")
+  check_eq(ex("klm33 reduce 230 kts, at 230 kts descend fl150"), "SPD KLM33 230 ; ATSPD KLM33 230 ALT KLM33 FL150")
+  check_eq(ex("klm33 spd 270, when at 270 climb fl300"), "SPD KLM33 270 ; ATSPD KLM33 270 ALT KLM33 FL300")
+  check_eq(ex("klm33 240 kts then at 240 kts turn left hdg 010"),
+    "SPD KLM33 240 ; ATSPD KLM33 240 HDG KLM33 10 LEFT")
+  check_eq(ex("klm33 mach .74 then at mach .74 fl280"), "SPD KLM33 M0.74 ; ATSPD KLM33 M0.74 ALT KLM33 FL280")
+  asked(ex("klm33 speed 230 and at 260 fl160"), "a speed after 'at' that is not the one given")
+  asked(ex("delay 60 klm33 spd 230, then at 230 kts fl160"), "a speed that waits itself, and a wait for it")
+end
+
+-- Cycle 49 (f122): BlueSky's DELAY and SCHEDULE typed by their names opening the request, a time straight after
+-- (seconds, or with its unit), time every instruction of it; with a callsign straight after the name it is asked
+do
+  local _, ex = scene({ "CRE KLM33 A320 52.0 4.0 090 FL200 250", "CRE BAW7 A319 52.3 4.6 180 FL240 260" })
+  check_eq(ex("delay 120 klm33 fl250"), "DELAY 120 ALT KLM33 FL250")
+  check_eq(ex("delay 90 baw7 hdg 270 and klm33 descend fl150"), "DELAY 90 HDG BAW7 270 ; DELAY 90 ALT KLM33 FL150")
+  check_eq(ex("schedule 900 baw7 speed 230"), "SCHEDULE 00:15:00 SPD BAW7 230")
+  check_eq(ex("delay 2 min klm33 climb fl260"), "DELAY 120 ALT KLM33 FL260")
+  check_eq(ex("in 60 s klm33 fl250 and baw7 hdg 100"), "DELAY 60 ALT KLM33 FL250 ; DELAY 60 HDG BAW7 100")
+  asked(ex("delay klm33 fl250"), "'delay' with no time")
+  asked(ex("schedule baw7 speed 230"), "'schedule' with no time")
+end
+
+-- Cycle 49 (f122): a verbless level closing its clause with a comma before a condition ("klm33 fl260, once level hdg
+-- 300") is an instruction of its own, and what follows waits for it; a condition inside the level's clause is asked
+do
+  local _, ex = scene({ "CRE KLM33 A320 52.0 4.0 090 FL240 250" })
+  check_eq(ex("klm33 fl280, once level hdg 120"), "ALT KLM33 FL280 ; ATALT KLM33 FL280 HDG KLM33 120")
+  check_eq(ex("klm33 fl280, when level spd 230"), "ALT KLM33 FL280 ; ATALT KLM33 FL280 SPD KLM33 230")
+  asked(ex("klm33 fl280 once level, hdg 120"), "the condition inside the level's clause, before the comma")
+end
+
+-- Cycle 49 (f122): typed short forms "tgt" (target) and "crecon" (CRECONFS), and "when past FIX" (passing it)
+do
+  local _, ex = scene({ "DEFWPT WPA 52.1 4.3", "CRE KLM33 A320 52.0 4.0 090 FL150 250", "ADDWPT KLM33 WPA", "CRE BAW7 A319 52.3 4.6 180 FL240 260" })
+  check_eq(ex("klm33 tgt fl190 vs 1200"), "ALT KLM33 FL190 ; VS KLM33 1200")
+  check_eq(ex("crecon ezy9 a319 tgt baw7 dpsi 90 cpa 1 tlos 240"), "CRECONFS EZY9 A319 BAW7 90 1 240")
+  check_eq(ex("klm33 fl120 when past WPA"), "AT KLM33 WPA DO ALT KLM33 FL120")
+  asked(ex("klm33 fl120 past WPA"), "'past' with no condition word: after, or passing?")
+end
+
+-- Cycle 49 (f122): an arrow typed as its character ("hdg 130 → 100") is the arrow, and one between a flight level and
+-- feet ("fl370 -> 35000", "12000 -> FL150") goes from the one to the other; a heading it leaves that the aircraft
+-- does not fly is still asked
+do
+  local _, ex = scene({ "CRE KLM33 A320 52.0 4.0 090 FL330 250", "CRE BAW7 A319 52.3 4.6 180 11000 260" })
+  check_eq(ex("klm33 hdg 090 → 120"), "HDG KLM33 120")
+  check_eq(ex("klm33 alt fl330 -> 31000"), "ALT KLM33 31000")
+  check_eq(ex("klm33 fl330 → 31000"), "ALT KLM33 31000")
+  check_eq(ex("baw7 alt 11000 -> FL140"), "ALT BAW7 FL140")
+  asked(ex("klm33 hdg 100 → 120"), "the heading it leaves is not the one flown")
+end
+
+-- Cycle 49 (f122): "add FIX" after a creation with no callsign of its own adds the waypoint to the aircraft created
+do
+  local _, ex = scene({ "DEFWPT WPA 52.1 4.3", "CRE KLM33 A320 52.0 4.0 090 FL150 250", "ADDWPT KLM33 WPA" })
+  check_eq(ex("cre ezy8 a320 52.2 4.3 180 fl120 240, add WPA"), "CRE EZY8 A320 52.2 4.3 180 FL120 240 ; ADDWPT EZY8 WPA")
+  check_eq(ex("cre ezy8 a320 52.2 4.3 180 fl120 240 and add tra9 b738 52.4 4.1 90 fl100 250"),
+    "CRE EZY8 A320 52.2 4.3 180 FL120 240 ; CRE TRA9 B738 52.4 4.1 90 FL100 250")
+end
