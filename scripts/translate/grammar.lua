@@ -1647,10 +1647,13 @@ for _, w in ipairs(lexicon.accounted.condition) do CM_NEGATION[w] = true end
 for _, w in ipairs(lexicon.speaker_roles) do CM_SUBJECTS[w] = true end
 
 -- The end of the commentary span starting at b: the next punctuation other than a comma, hyphen or quote
--- (a closing bracket for one opened at b - 1).
-local function commentary_end(self, b)
+-- (a closing bracket for one opened at b - 1). With `last`, the scan stops past it: an end beyond last
+-- reads as last + 1.
+local function commentary_end(self, b, last)
   local e = b
-  while e <= #self.t do
+  local stop = #self.t
+  if last and last < stop then stop = last end
+  while e <= stop do
     local x = self.t[e]
     if x.kind == "punct" and x.text ~= "," and x.text ~= "-" and x.text ~= "'" then break end
     e = e + 1
@@ -1770,7 +1773,7 @@ end
 -- four words before it, none a word any rule starts an instruction with, an airline or a value, place or
 -- aircraft (G:commentary), with the request going on after it; nil when there is none.
 local function title_end(self, k)
-  local e = commentary_end(self, k)
+  local e = commentary_end(self, k, k + 4)  -- (a title is four words at most)
   if not (self.t[e] and self.t[e].text == ":" and e < #self.t and e - k <= 4 and self:commentary(k, e, true)) then
     return nil
   end
@@ -1832,7 +1835,12 @@ function G:remark_sentence(k, instructed)
   local stop = self.t[e]
   if (stop and not (stop.text == "." or stop.text == "!")) or self:has_ref(k, e, "aircraft") then return false end
   local after = false
-  for x = e + 1, #self.t do after = after or self:intent_at(x) ~= nil or self:has_ref(x, x + 1, "aircraft") end
+  for x = e + 1, #self.t do
+    if self:intent_at(x) ~= nil or self:has_ref(x, x + 1, "aircraft") then
+      after = true
+      break
+    end
+  end
   return (instructed(k) or after) and self:commentary(k, e)
 end
 

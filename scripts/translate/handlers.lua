@@ -970,18 +970,16 @@ function m:airline_refs()
   -- ("create the SAS flight SAS902, an A21N, at Arlanda", "create an SAS A320 for us, callsign SAS123": the
   -- airline said before a new callsign of its own, straight before it (an aircraft noun between or none) or
   -- after an article, describes it: no place)
-  for i = 1, #self.t do
+  for _, i in ipairs(airline_positions(self)) do
     local icao, e = self:airline_at(i)
-    if icao then
-      local at = self:word(e, "@aircraft_nouns") and e + 1 or e
-      local upto = self:word(i - 1, "@articles_new") and #self.t + 1 or at + 1
-      for _, r in ipairs(self:refs_in(at, upto, "aircraft")) do
-        if not r.exists and r.name:upper():sub(1, #icao) == icao then
-          for k = #self.refs, 1, -1 do
-            if self.refs[k].b == i and unknown_place(self.refs[k]) then table.remove(self.refs, k) end
-          end
-          self:explain(i, r.b == at and at or e)
+    local at = self:word(e, "@aircraft_nouns") and e + 1 or e
+    local upto = self:word(i - 1, "@articles_new") and #self.t + 1 or at + 1
+    for _, r in ipairs(self:refs_in(at, upto, "aircraft")) do
+      if not r.exists and r.name:upper():sub(1, #icao) == icao then
+        for k = #self.refs, 1, -1 do
+          if self.refs[k].b == i and unknown_place(self.refs[k]) then table.remove(self.refs, k) end
         end
+        self:explain(i, r.b == at and at or e)
       end
     end
   end
@@ -1525,6 +1523,10 @@ function m:type_refs()
     local opening = i == 1 and self.t[i].kind == "word"
     local test, e
     if the or opening then test, e = self:type_said(i) end
+    if not test then
+      i = i + 1  -- (no type said at i)
+      goto next_token
+    end
     -- (a type opening the request addresses its aircraft only when words or a comma follow it, never a
     -- number, "Cessna 172 ...", a type said with its model, or an article; "dash" opening a request
     -- without its 8 is the English word, "the dash" the Dash 8)
@@ -1545,9 +1547,11 @@ function m:type_refs()
       if not (opens and self:intent_at(e) and #fits == 1 and not named[fits[1]]) then test, fits = nil, {} end
     end
     -- ("the CRJ": a family in capitals the lexer took for an unknown place)
-    for n = #self.refs, 1, -1 do
-      local r = self.refs[n]
-      if #fits == 1 and r.kind == "waypoint" and not r.exists and r.b == i and r.e == e then table.remove(self.refs, n) end
+    if #fits == 1 then
+      for n = #self.refs, 1, -1 do
+        local r = self.refs[n]
+        if r.kind == "waypoint" and not r.exists and r.b == i and r.e == e then table.remove(self.refs, n) end
+      end
     end
     -- (a type word opening the request with no "the", "Cirrus, descend ...", calls the aircraft by its type
     -- with no registration, as an airline said without its flight number: asked, the one that fits too)
@@ -1562,6 +1566,7 @@ function m:type_refs()
       self:mark_used(i, e)
     end
     i = read and self:insert_ref(fits, i, e, "by_type") or i + 1
+    ::next_token::
   end
 end
 
