@@ -12162,3 +12162,18 @@ do
   asked(ex("Please turn KLM33 left heading 200. The video should show it turning slowly."),
     "a word of manner in the remark is still asked")
 end
+
+-- Cycle 49 (hz62): a place said by its name where the aircraft passes it ("when it passes the Halifax VOR", "once it
+-- has passed Halifax", "after the Halifax VOR") is the waypoint of the condition; a name two places bear near the
+-- aircraft, off its route, is asked
+do
+  local _, ex = navscene({ "CRE JZA81 DH8D 44.9 -63.9 090 FL200 250", "ADDWPT JZA81 YHZ",
+    "CRE BAW7 A319 45.3 -63.0 180 FL240 260" }, "places passed said by name")
+  if ex then
+    check_eq(ex("Please have Jazz 81 climb to FL240 when it passes the Halifax VOR."), "AT JZA81 YHZ DO ALT JZA81 FL240")
+    check_eq(ex("Please have Jazz 81 descend to 8000 feet once it has passed the Halifax VOR."),
+      "AT JZA81 YHZ DO ALT JZA81 8000")
+    check_eq(ex("Please have Jazz 81 descend to 8000 feet after the Halifax VOR."), "AT JZA81 YHZ DO ALT JZA81 8000")
+    asked(ex("Could BAW7 turn left heading 200 once it has passed Halifax, please?"), "Halifax: airport or VOR")
+  end
+end
