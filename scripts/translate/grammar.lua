@@ -4427,6 +4427,8 @@ function G:trailing_fix(s)
   -- ("fl100 when past WYP": typed short, "past" is passing)
   if self:word(k, "passing passes reaching reaches overflying past") then
     k = self:skip_fillers(k + 1)
+  elseif self:word(k, "has") and self:word(k + 1, "passed") then  -- ("once it has passed YHZ")
+    k = self:skip_fillers(k + 2)
   elseif self:word(k, "gets") and self:word(k + 1, "to") then
     k = self:skip_fillers(k + 2)
   elseif not (self:word(k, "is it's") and self:word(k + 1, "at")) then
@@ -9866,6 +9868,7 @@ function M.translate(text, world)
   g:fix_refs()
   g:navaid_name_refs()
   g:named_place_refs()
+  g:passed_place_refs()
   g:opening_right()
   g:urgent_right()
   g:runway_sides()

@@ -1264,6 +1264,22 @@ return function(H, f, compass)
     end
   end
 
+  -- A place said by its name where an aircraft passes it, read before the parse as a waypoint ref so that the
+  -- condition reads it as it reads an ident typed: after a verb of passing ("once it has passed the Halifax VOR",
+  -- "when it passes Kingston") or after "after" with "the" and a kind of navaid ("after the Montreal VOR"), of the
+  -- aircraft named before it (m:place_by_name, a place of reference: a name several navaids bear is asked). A name
+  -- that means no place there stays words (asked about).
+  function m:passed_place_refs()
+    if not self:said("passes passing passed overflying overflies past after") then return end
+    for i = 1, #self.t - 1 do
+      local k = self:word(i + 1, "the") and i + 2 or i + 1
+      local navaid = self:word(k + 1, "@navaid_kinds") or self:word(k + 2, "@navaid_kinds")
+      local a = (self:word(i, "passes passing passed overflying overflies past")
+        or (self:word(i, "after") and k == i + 2 and navaid)) and flying_before(self, i)
+      if a and not self:has_ref(k, k + 1, "waypoint") then place_ref(self, k, a, true) end
+    end
+  end
+
   -- Where no aircraft is sent, a small airfield said by its name alone (no "airport" after it; airport_said_noun)
   -- whose name a navaid within lexicon.city_nm of it bears under another ident is the navaid ("create ... at
   -- Clacton, FL100": the CLN VOR, not the EGSQ strip), as a navaid named after a town with a small airfield is

@@ -277,6 +277,12 @@ return {
         "resolution advisories", "resolution advisory",
         -- urgency, said with a negation ("descend FL150 without delay")
         "without delay", "with no delay", "without any delay" },
+    -- the experimenter's account of a run in a remark beside a complete request, words that name no instruction,
+    -- value, place or timing ("faster than I had intended", "we're comparing Mach cruise against fixed-CAS",
+    -- "I'd like that to be reflected", "the transit phase", "I'll take a
+    -- screenshot", "so aircraft disappear when they leave it"); each base form stands for its inflections
+    experiment_prose = { "intend", "intention", "compare", "comparison", "reflect", "transit",
+        "screenshot", "video", "disappear", "vanish" },
     -- the ordinary accompaniments of instructions: verbs of changing a setting, participles that
     -- introduce a value ("flying 180"), and nouns and verbs that frame a clearance ("avoiding action",
     -- "track direct", "to the left side", "the velocity")

@@ -12147,3 +12147,33 @@ do
   check_eq(ex("cre ezy8 a320 52.2 4.3 180 fl120 240 and add tra9 b738 52.4 4.1 90 fl100 250"),
     "CRE EZY8 A320 52.2 4.3 180 FL120 240 ; CRE TRA9 B738 52.4 4.1 90 FL100 250")
 end
+
+-- Cycle 49 (hz62): the experimenter's account of a run in a remark beside a complete request ("faster than I had
+-- intended", "we're comparing ...", "the transit phase", "I'll take a screenshot") accounts for its words; a word
+-- of manner in the remark ("turning slowly") is still asked
+do
+  local _, ex = scene({ "CRE KLM33 A320 52.0 4.0 090 FL330 250", "CRE BAW7 A319 52.3 4.6 180 FL240 260" })
+  check_eq(ex("Could you slow KLM 33 to 230 knots, please? It's closing on the other traffic sooner than I intended."),
+    "SPD KLM33 230")
+  check_eq(ex("Could you set KLM 33 to Mach .78, please? We're comparing Mach against fixed CAS in this comparison."),
+    "SPD KLM33 M0.78")
+  check_eq(ex("Could you speed up the simulation to three times real time? The transit part is boring."), "DTMULT 3")
+  check_eq(ex("Please descend KLM33 to FL250. Then I'll take a screenshot of the geometry."), "ALT KLM33 FL250")
+  asked(ex("Please turn KLM33 left heading 200. The video should show it turning slowly."),
+    "a word of manner in the remark is still asked")
+end
+
+-- Cycle 49 (hz62): a place said by its name where the aircraft passes it ("when it passes the Halifax VOR", "once it
+-- has passed Halifax", "after the Halifax VOR") is the waypoint of the condition; a name two places bear near the
+-- aircraft, off its route, is asked
+do
+  local _, ex = navscene({ "CRE JZA81 DH8D 44.9 -63.9 090 FL200 250", "ADDWPT JZA81 YHZ",
+    "CRE BAW7 A319 45.3 -63.0 180 FL240 260" }, "places passed said by name")
+  if ex then
+    check_eq(ex("Please have Jazz 81 climb to FL240 when it passes the Halifax VOR."), "AT JZA81 YHZ DO ALT JZA81 FL240")
+    check_eq(ex("Please have Jazz 81 descend to 8000 feet once it has passed the Halifax VOR."),
+      "AT JZA81 YHZ DO ALT JZA81 8000")
+    check_eq(ex("Please have Jazz 81 descend to 8000 feet after the Halifax VOR."), "AT JZA81 YHZ DO ALT JZA81 8000")
+    asked(ex("Could BAW7 turn left heading 200 once it has passed Halifax, please?"), "Halifax: airport or VOR")
+  end
+end
