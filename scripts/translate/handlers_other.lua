@@ -3250,6 +3250,8 @@ return function(H, f, compass)
     local back = again or self:word(s.trig, "real") and self:word(s.trig - 1, "to") and self:word(s.trig - 2, "back")
     -- ("dtmult 1 back to realtime": said after the rate set back to 1, it explains that rate)
     if back and self.out[#self.out] == "DTMULT 1" then return self:explain(s.b, s.e) end
+    -- ("stop the fast-forward and carry on in real time": the OP that ended fast time runs in real time)
+    if self:word(s.trig, "real") and self.ff_ended_op == #self.out then return self:explain(s.b, s.e) end
     local speed = self:word(s.trig, "real") and self:word(s.trig + 2, "speed")
     local starts = again and "running start resume unpause continue" or "run running start resume unpause continue again"
     if speed or self:word(s.trig, "real") and not self:word_in(s.b, s.e, starts) then
@@ -3297,7 +3299,25 @@ return function(H, f, compass)
     return nil
   end
 
+  -- the token of a verb that ends fast time before the fast-forward of segment s ("stop the fast-forward",
+  -- "cancel this fast forward"), nil when none is said
+  local function ff_ended(self, s)
+    local k = s.trig - 1
+    while k >= s.b and self:word(k, "the this that our your current") do k = k - 1 end
+    if k >= s.b and self:word(k, "@ff_ended") then return k end
+    return nil
+  end
+
   function m:fast_forward(s)
+    -- a fast-forward ended ("stop the fast-forward"): OP, which alone ends fast time, once in the request; the
+    -- verb and its object are read, no duration is (self.ff_ended_op marks the OP for m:resume's "real time")
+    local ended = ff_ended(self, s)
+    if ended then
+      self:explain(ended, s.e)
+      for _, c in ipairs(self.out) do if c == "OP" then return end end
+      self.ff_ended_op = #self.out + 1
+      return self:emit("OP")
+    end
     local half, half_e = and_a_half(self, s.trig + 1, s.e)
     if half then
       for _, q in ipairs(self:quantities(s.trig + 1, half_e)) do self:take(q) end

@@ -1029,6 +1029,10 @@ return {
   need_denied_after = { "any", "more", "anymore", "longer" },
   -- verbs that end a movement: the direction after them is the one stopped, not the one flown (handlers:direction)
   halted = { "stop", "stops", "stopping", "cease", "halt", "discontinue", "terminate", "interrupt", "arrest" },
+  -- verbs that end fast time, said before the fast-forward they name ("stop the fast-forward", "end fast
+  -- forward"): that fast time ended (OP), never started (handlers_other: fast_forward)
+  ff_ended = { "stop", "end", "cancel", "quit", "exit", "finish", "abort", "halt", "cease", "terminate",
+      "discontinue", "interrupt" },
   on = { "on", "enable", "activate", "show", "start", "use", "engage", "engaged" },
   -- a change of speed said by its direction alone ("go faster", "slow down")
   faster_slower = { "faster", "slower", "accelerate", "decelerate" },

@@ -2152,6 +2152,9 @@ return function(intent, rule, words)
     local q = r and r.exists and g:word(r.e, "to") and g:quantities(r.e + 1, r.e + 2)[1]
     return q ~= nil and q ~= false and (q.kind == "lat" or q.kind == "plain" and math.abs(q.value) <= 90)
   end }
+  -- "reset its starting point", "reset their positions": a possessive after it names what of an aircraft is
+  -- set again, never the simulation (the words then read as any other, a remark or asked)
+  rule { "reset", false, next = "its his her their" }
   rule { "reset", "reset" }
   rule { "start", "reset", next = "over" }
   rule { "clear", "reset", near = { 3, "@sim" } }
