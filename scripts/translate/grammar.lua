@@ -7355,14 +7355,17 @@ end
 G.refused_sets = { refused = set_of(lexicon.acknowledged.refused),
   articles = set_of(lexicon.acknowledged.refused_articles), pilots = set_of(lexicon.acknowledged.pilots) }
 -- "three miles instead of five", "FL300 rather than FL320", "heading 200 in place of 180": the value said straight
--- after the words of replacing is the one replaced, never read (used, and its words accounted for)
+-- after the words of replacing, or after up to three words of lexicon.replaced_lead ("instead of the default
+-- 1.05"), is the one replaced, never read (used, and its words accounted for)
 function G:replaced_values()
   if not self:said("instead rather place") then return end
   for i = 1, #self.t - 2 do
     local e = (self:word(i, "instead rather") and self:word(i + 1, "of than") and i + 2)
       or (self:word(i, "in") and self:word(i + 1, "place") and self:word(i + 2, "of") and i + 3)
-    local q = e and self:quantities(e, math.min(#self.t + 1, e + 4))[1]
-    if q and q.b == self:skip_fillers(e) then
+    local v = e and self:skip_fillers(e)
+    while v and v - e < 4 and self:word(v, "@replaced_lead") do v = self:skip_fillers(v + 1) end
+    local q = e and self:quantities(v, math.min(#self.t + 1, v + 4))[1]
+    if q and q.b == v then
       self:mark_used(i, q.e)
       self:explain(i, q.e)
     end

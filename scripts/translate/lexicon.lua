@@ -1029,6 +1029,10 @@ return {
   need_denied_after = { "any", "more", "anymore", "longer" },
   -- verbs that end a movement: the direction after them is the one stopped, not the one flown (handlers:direction)
   halted = { "stop", "stops", "stopping", "cease", "halt", "discontinue", "terminate", "interrupt", "arrest" },
+  -- words between "instead of"/"rather than" and the value they replace ("instead of the default 1.05",
+  -- "rather than the current 250"): that value is still the one replaced (grammar.lua G:replaced_values)
+  replaced_lead = { "the", "default", "current", "usual", "original", "old", "previous", "present", "standard",
+      "existing", "value", "setting", "of" },
   -- verbs that end fast time, said before the fast-forward they name ("stop the fast-forward", "end fast
   -- forward"): that fast time ended (OP), never started (handlers_other: fast_forward)
   ff_ended = { "stop", "end", "cancel", "quit", "exit", "finish", "abort", "halt", "cease", "terminate",
