@@ -2330,6 +2330,13 @@ return function(intent, rule, words)
   rule { "probe", false, when = function(g, i)
     return g:word_in(1, #g.t + 1, "look lookahead dtlook") and not g:word_in(1, #g.t + 1, "@on @off")
   end }
+  -- "what look-ahead time is the detection using?", "which lookahead does conflict detection use": the detection
+  -- that uses the setting named in the eight words before is its owner, no switch
+  -- (an on or off word around it switches, the verb of using after it aside: "use" is one of lexicon.on)
+  rule { "detection asas cd", false, next = "using use uses used", when = function(g, i)
+    return g:word_in(math.max(1, i - 8), i, "look lookahead dtlook") and not g:word_in(math.max(1, i - 3), i, "@on @off")
+      and not g:word_in(i + 2, math.min(#g.t + 1, i + 4), "@on @off")
+  end }
   -- "asas dt 2 sec", "dt asas 2": the interval of conflict detection (DT ASAS), no switch
   rule { "detection asas cd", false, near = { 1, "dt timestep" } }
   rule { "detection asas cdmethod cd", "asas" }
