@@ -1779,12 +1779,38 @@ function m:strict_callsigns()
   return c.strict and (#self.fleet > 1 or c.alone)
 end
 
+-- The words that open spoken aircraft reference r when they are a later part of its airline's telephony and
+-- neither that telephony nor its beginning ("Bulgaria 411" for LZB411, FLYING BULGARIA): such a name selects
+-- no airline (a brand's name selects only an airline whose telephony is it or begins with it); nil otherwise
+function m:telephony_part_only(r)
+  if not r.spoken or r.heard then return nil end
+  if not AIRLINE_NAMES then airline_names() end
+  local tels = NAMES_OF[(airline_digits(r.name))]
+  if not tels then return nil end
+  local said, part = nil, nil
+  for k = r.b, math.min(r.e - 1, r.b + 2) do
+    if not self.t[k] or self.t[k].kind ~= "word" or self.t[k].text:find("%d") then break end
+    said = said and (said .. " " .. self.t[k].text) or self.t[k].text
+    for _, n in ipairs(tels) do
+      if n == said or n:sub(1, #said + 1) == said .. " " then return nil end
+      if (" " .. n .. " "):find(" " .. said .. " ", 1, true) then part = self:raw(r.b, r.e) end
+    end
+  end
+  return part
+end
+
 -- A spoken callsign matched to an aircraft whose airline or digits differ
--- from what was heard is asked about, unless the speaker confirmed it.
+-- from what was heard is asked about, unless the speaker confirmed it; so is one said with a later part of
+-- its airline's telephony only (m:telephony_part_only).
 function m:confirm_callsigns(s)
   local c = L.callsign_confirm
   for _, r in ipairs(self:refs_in(s.b, s.e, "aircraft")) do
     local h = r.heard
+    local part = not (self.world.confirmed or {})[r.name] and self:telephony_part_only(r)
+    if part then
+      self.confirm = self.confirm or { id = r.name, heard = part }
+      self:need(string.format("Did you mean %s? I heard '%s'.", r.name, part))
+    end
     if h and not r.false_start and not (self.world.confirmed or {})[r.name]
         and not self:airline_and_digits_match(h.id, r.name)
         and (self:strict_callsigns() or h.airline < c.airline or h.digits < c.digits

@@ -1737,6 +1737,11 @@ return function(H, f, compass)
   -- Capital airport": the word before is its city).
   -- (proper: only words typed with a capital, "Frankfurt")
   -- (nearby: `named` reads near an aircraft only)
+  -- a preposition typed in lower case ("heading west along with the Speedbird") names no airport, whatever
+  -- airport bears it (VEAN is "ALONG"): lexicon.accounted.prepositions as a set
+  local PREPOSITIONS = {}
+  for _, w in ipairs(L.accounted.prepositions) do PREPOSITIONS[w] = true end
+
   function m:airport_named_in(b, e, named, placed, proper_only, nearby)
     local function proper(k)
       local t = self.t[k]
@@ -1746,7 +1751,7 @@ return function(H, f, compass)
       local t = self.t[i]
       if not self.u:used(i) and t.kind == "word" and t.alpha and #t.text >= 4 and not t.keyword and not t.filler
           and not t.number_word and not L.phonetic[t.text] and (not placed or self:word(i - 1, "@place_words"))
-          and (not proper_only or t.raw:match("^%u%l") ~= nil) then
+          and (not proper_only or t.raw:match("^%u%l") ~= nil) and not (PREPOSITIONS[t.text] and t.raw:match("^%l")) then
         local nx, nx2 = self.t[i + 1], self.t[i + 2]
         local phrases = { { t.text, i + 1 } }
         if nx and i + 1 < e and nx.kind == "word" then table.insert(phrases, 1, { t.text .. " " .. nx.text, i + 2 }) end
