@@ -2472,7 +2472,7 @@ return function(intent, rule, words)
   -- which asks about the aircraft)
   -- "300 seconds to loss of separation, 2000 feet above it": the separation lost is an event (a conflict's
   -- time to it), never the protected zone, whatever height is said after it
-  rule { "separation", false, prev = { 2, "loss lose loses losing lost" } }
+  rule { "separation", false, prev = { 2, "loss lose loses losing" } }
   rule { "separation", false, next = "from with", when = function(g, i)
     local k = g:word(i + 2, "the") and i + 3 or i + 2
     return (g:has_ref(i + 2, k + 1, "aircraft") or g:airline_at(k) ~= nil)
