@@ -1780,10 +1780,11 @@ function m:strict_callsigns()
 end
 
 -- The words that open spoken aircraft reference r when they are a later part of its airline's telephony and
--- neither that telephony nor its beginning ("Bulgaria 411" for LZB411, FLYING BULGARIA): such a name selects
--- no airline (a brand's name selects only an airline whose telephony is it or begins with it); nil otherwise
+-- neither that telephony nor its beginning ("Bulgaria 411" for LZB411, FLYING BULGARIA), with other aircraft
+-- flying it might have been meant from: such a name selects no airline (a brand's name selects only an airline
+-- whose telephony is it or begins with it); nil otherwise (with one aircraft flying, "blue 3650" is the JetBlue)
 function m:telephony_part_only(r)
-  if not r.spoken or r.heard then return nil end
+  if not r.spoken or r.heard or #self.fleet < 2 then return nil end
   if not AIRLINE_NAMES then airline_names() end
   local tels = NAMES_OF[(airline_digits(r.name))]
   if not tels then return nil end

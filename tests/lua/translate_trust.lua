@@ -12196,6 +12196,9 @@ do
   asked(ex("Air 818 descend FL100"), "'Air' of WIZZ AIR alone")
   check_eq(ex("Flying Bulgaria 207 climb FL160"), "ALT LZB207 FL160")
   check_eq(ex("Wizz 818 descend FL100"), "ALT WZZ818 FL100")
+  -- (one aircraft flying: no other it might have been meant from)
+  local _, ex1 = scene({ "CRE LZB207 A320 43.4 23.3 180 FL140 270" })
+  check_eq(ex1("Bulgaria 207 climb FL160"), "ALT LZB207 FL160")
 end
 
 -- Cycle 49 (hz61): a lower-case preposition is no airport's name ("along" is VEAN, ALONG): a creation placed
