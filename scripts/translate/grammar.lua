@@ -189,7 +189,8 @@ local function know_all(v, seen)
   -- and lexicon.digit_homophones digits only inside a callsign read ("won", "ate"); lexicon.kept_as_is only
   -- where a value is read as kept; lexicon.id_labels only the letters of a label's id, lexicon.terse_list only
   -- the words of a terse list, lexicon.self_correction.apology only after a value ruled out, lexicon.replaced_lead
-  -- only before a value replaced, lexicon.ff_ended only before a fast-forward ended)
+  -- only before a value replaced, lexicon.ff_ended only before a fast-forward ended, lexicon.countries only
+  -- inside a callsign read)
   if type(v) ~= "table" or seen[v] or v == lexicon.accounted.courtesy_phrases or v == lexicon.accounted.value_phrases
       or v == lexicon.typed_abbreviations
       or v == lexicon.aside or v == lexicon.self_correction.just_the or v == lexicon.foreign_digits or v == lexicon.foreign_hesitation_digits
@@ -199,7 +200,8 @@ local function know_all(v, seen)
       or v == lexicon.dictated_punctuation or v == lexicon.acknowledged or v == lexicon.said_whole or v == lexicon.heard_as
       or v == lexicon.name_particles or v == lexicon.digit_homophones or v == lexicon.asides_alone
       or v == lexicon.kept_as_is or v == lexicon.id_labels or v == lexicon.terse_list
-      or v == lexicon.self_correction.apology or v == lexicon.replaced_lead or v == lexicon.ff_ended then
+      or v == lexicon.self_correction.apology or v == lexicon.replaced_lead or v == lexicon.ff_ended
+      or v == lexicon.countries then
     return
   end
   seen[v] = true

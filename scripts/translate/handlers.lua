@@ -1779,23 +1779,20 @@ function m:strict_callsigns()
   return c.strict and (#self.fleet > 1 or c.alone)
 end
 
--- The words that open spoken aircraft reference r when they are a later part of its airline's telephony and
--- neither that telephony nor its beginning ("Bulgaria 411" for LZB411, FLYING BULGARIA), with other aircraft
--- flying it might have been meant from: such a name selects no airline (a brand's name selects only an airline
--- whose telephony is it or begins with it); nil otherwise (with one aircraft flying, "blue 3650" is the JetBlue)
+-- The words that open spoken aircraft reference r when they are a country (lexicon.countries) that is a later
+-- part of its airline's telephony, neither that telephony nor its beginning ("Bulgaria 411" for LZB411, FLYING
+-- BULGARIA), with other aircraft flying it might have been meant from: a country names no one airline (as a
+-- brand's name selects only an airline whose telephony is it or begins with it); nil otherwise (with one
+-- aircraft flying, "Portugal 9148" is the TAP; "Aerobus 1204", no country, is Viva Aerobus)
 function m:telephony_part_only(r)
-  if not r.spoken or r.heard or #self.fleet < 2 then return nil end
+  if not r.spoken or r.heard or #self.fleet < 2 or not self:word(r.b, "@countries") then return nil end
   if not AIRLINE_NAMES then airline_names() end
   local tels = NAMES_OF[(airline_digits(r.name))]
   if not tels then return nil end
-  local said, part = nil, nil
-  for k = r.b, math.min(r.e - 1, r.b + 2) do
-    if not self.t[k] or self.t[k].kind ~= "word" or self.t[k].text:find("%d") then break end
-    said = said and (said .. " " .. self.t[k].text) or self.t[k].text
-    for _, n in ipairs(tels) do
-      if n == said or n:sub(1, #said + 1) == said .. " " then return nil end
-      if (" " .. n .. " "):find(" " .. said .. " ", 1, true) then part = self:raw(r.b, r.e) end
-    end
+  local said, part = self.t[r.b].text, nil
+  for _, n in ipairs(tels) do
+    if n == said or n:sub(1, #said + 1) == said .. " " then return nil end
+    if (" " .. n .. " "):find(" " .. said .. " ", 1, true) then part = self:raw(r.b, r.e) end
   end
   return part
 end
