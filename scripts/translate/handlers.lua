@@ -1782,8 +1782,9 @@ end
 -- The words that open spoken aircraft reference r when they are a country (lexicon.countries) that is a later
 -- part of its airline's telephony, neither that telephony nor its beginning ("Bulgaria 411" for LZB411, FLYING
 -- BULGARIA), with other aircraft flying it might have been meant from: a country names no one airline (as a
--- brand's name selects only an airline whose telephony is it or begins with it); nil otherwise (with one
--- aircraft flying, "Portugal 9148" is the TAP; "Aerobus 1204", no country, is Viva Aerobus)
+-- brand's name selects only an airline whose telephony is it or begins with it); nil otherwise ("Air" and the
+-- country, AIR PORTUGAL, is shortened to the country: "Portugal 9148" is the TAP; "Aerobus 1204", no country,
+-- is Viva Aerobus)
 function m:telephony_part_only(r)
   if not r.spoken or r.heard or #self.fleet < 2 or not self:word(r.b, "@countries") then return nil end
   if not AIRLINE_NAMES then airline_names() end
@@ -1791,7 +1792,7 @@ function m:telephony_part_only(r)
   if not tels then return nil end
   local said, part = self.t[r.b].text, nil
   for _, n in ipairs(tels) do
-    if n == said or n:sub(1, #said + 1) == said .. " " then return nil end
+    if n == said or n:sub(1, #said + 1) == said .. " " or n == "air " .. said then return nil end
     if (" " .. n .. " "):find(" " .. said .. " ", 1, true) then part = self:raw(r.b, r.e) end
   end
   return part
