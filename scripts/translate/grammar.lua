@@ -188,7 +188,9 @@ local function know_all(v, seen)
   -- lexicon.name_particles are words of a place's name ("de los reyes"), accounted for only inside the name read,
   -- and lexicon.digit_homophones digits only inside a callsign read ("won", "ate"); lexicon.kept_as_is only
   -- where a value is read as kept; lexicon.id_labels only the letters of a label's id, lexicon.terse_list only
-  -- the words of a terse list, lexicon.self_correction.apology only after a value ruled out)
+  -- the words of a terse list, lexicon.self_correction.apology only after a value ruled out, lexicon.replaced_lead
+  -- only before a value replaced, lexicon.ff_ended only before a fast-forward ended, lexicon.countries only
+  -- inside a callsign read)
   if type(v) ~= "table" or seen[v] or v == lexicon.accounted.courtesy_phrases or v == lexicon.accounted.value_phrases
       or v == lexicon.typed_abbreviations
       or v == lexicon.aside or v == lexicon.self_correction.just_the or v == lexicon.foreign_digits or v == lexicon.foreign_hesitation_digits
@@ -198,7 +200,8 @@ local function know_all(v, seen)
       or v == lexicon.dictated_punctuation or v == lexicon.acknowledged or v == lexicon.said_whole or v == lexicon.heard_as
       or v == lexicon.name_particles or v == lexicon.digit_homophones or v == lexicon.asides_alone
       or v == lexicon.kept_as_is or v == lexicon.id_labels or v == lexicon.terse_list
-      or v == lexicon.self_correction.apology then
+      or v == lexicon.self_correction.apology or v == lexicon.replaced_lead or v == lexicon.ff_ended
+      or v == lexicon.countries then
     return
   end
   seen[v] = true
@@ -7357,14 +7360,17 @@ end
 G.refused_sets = { refused = set_of(lexicon.acknowledged.refused),
   articles = set_of(lexicon.acknowledged.refused_articles), pilots = set_of(lexicon.acknowledged.pilots) }
 -- "three miles instead of five", "FL300 rather than FL320", "heading 200 in place of 180": the value said straight
--- after the words of replacing is the one replaced, never read (used, and its words accounted for)
+-- after the words of replacing, or after up to three words of lexicon.replaced_lead ("instead of the default
+-- 1.05"), is the one replaced, never read (used, and its words accounted for)
 function G:replaced_values()
   if not self:said("instead rather place") then return end
   for i = 1, #self.t - 2 do
     local e = (self:word(i, "instead rather") and self:word(i + 1, "of than") and i + 2)
       or (self:word(i, "in") and self:word(i + 1, "place") and self:word(i + 2, "of") and i + 3)
-    local q = e and self:quantities(e, math.min(#self.t + 1, e + 4))[1]
-    if q and q.b == self:skip_fillers(e) then
+    local v = e and self:skip_fillers(e)
+    while v and v - e < 4 and self:word(v, "@replaced_lead") do v = self:skip_fillers(v + 1) end
+    local q = e and self:quantities(v, math.min(#self.t + 1, v + 4))[1]
+    if q and q.b == v then
       self:mark_used(i, q.e)
       self:explain(i, q.e)
     end

@@ -1779,12 +1779,37 @@ function m:strict_callsigns()
   return c.strict and (#self.fleet > 1 or c.alone)
 end
 
+-- The words that open spoken aircraft reference r when they are a country (lexicon.countries) that is a later
+-- part of its airline's telephony, neither that telephony nor its beginning ("Bulgaria 411" for LZB411, FLYING
+-- BULGARIA), with other aircraft flying it might have been meant from: a country names no one airline (as a
+-- brand's name selects only an airline whose telephony is it or begins with it); nil otherwise ("Air" and the
+-- country, AIR PORTUGAL, is shortened to the country: "Portugal 9148" is the TAP; "Aerobus 1204", no country,
+-- is Viva Aerobus)
+function m:telephony_part_only(r)
+  if not r.spoken or r.heard or #self.fleet < 2 or not self:word(r.b, "@countries") then return nil end
+  if not AIRLINE_NAMES then airline_names() end
+  local tels = NAMES_OF[(airline_digits(r.name))]
+  if not tels then return nil end
+  local said, part = self.t[r.b].text, nil
+  for _, n in ipairs(tels) do
+    if n == said or n:sub(1, #said + 1) == said .. " " or n == "air " .. said then return nil end
+    if (" " .. n .. " "):find(" " .. said .. " ", 1, true) then part = self:raw(r.b, r.e) end
+  end
+  return part
+end
+
 -- A spoken callsign matched to an aircraft whose airline or digits differ
--- from what was heard is asked about, unless the speaker confirmed it.
+-- from what was heard is asked about, unless the speaker confirmed it; so is one said with a later part of
+-- its airline's telephony only (m:telephony_part_only).
 function m:confirm_callsigns(s)
   local c = L.callsign_confirm
   for _, r in ipairs(self:refs_in(s.b, s.e, "aircraft")) do
     local h = r.heard
+    local part = not (self.world.confirmed or {})[r.name] and self:telephony_part_only(r)
+    if part then
+      self.confirm = self.confirm or { id = r.name, heard = part }
+      self:need(string.format("Did you mean %s? I heard '%s'.", r.name, part))
+    end
     if h and not r.false_start and not (self.world.confirmed or {})[r.name]
         and not self:airline_and_digits_match(h.id, r.name)
         and (self:strict_callsigns() or h.airline < c.airline or h.digits < c.digits

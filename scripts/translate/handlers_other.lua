@@ -1753,6 +1753,11 @@ return function(H, f, compass)
   -- Capital airport": the word before is its city).
   -- (proper: only words typed with a capital, "Frankfurt")
   -- (nearby: `named` reads near an aircraft only)
+  -- a preposition typed in lower case ("heading west along with the Speedbird") names no airport, whatever
+  -- airport bears it (VEAN is "ALONG"): lexicon.accounted.prepositions as a set
+  local PREPOSITIONS = {}
+  for _, w in ipairs(L.accounted.prepositions) do PREPOSITIONS[w] = true end
+
   function m:airport_named_in(b, e, named, placed, proper_only, nearby)
     local function proper(k)
       local t = self.t[k]
@@ -1762,7 +1767,7 @@ return function(H, f, compass)
       local t = self.t[i]
       if not self.u:used(i) and t.kind == "word" and t.alpha and #t.text >= 4 and not t.keyword and not t.filler
           and not t.number_word and not L.phonetic[t.text] and (not placed or self:word(i - 1, "@place_words"))
-          and (not proper_only or t.raw:match("^%u%l") ~= nil) then
+          and (not proper_only or t.raw:match("^%u%l") ~= nil) and not (PREPOSITIONS[t.text] and t.raw:match("^%l")) then
         local nx, nx2 = self.t[i + 1], self.t[i + 2]
         local phrases = { { t.text, i + 1 } }
         if nx and i + 1 < e and nx.kind == "word" then table.insert(phrases, 1, { t.text .. " " .. nx.text, i + 2 }) end
@@ -3266,6 +3271,8 @@ return function(H, f, compass)
     local back = again or self:word(s.trig, "real") and self:word(s.trig - 1, "to") and self:word(s.trig - 2, "back")
     -- ("dtmult 1 back to realtime": said after the rate set back to 1, it explains that rate)
     if back and self.out[#self.out] == "DTMULT 1" then return self:explain(s.b, s.e) end
+    -- ("stop the fast-forward and carry on in real time": the OP that ended fast time runs in real time)
+    if self:word(s.trig, "real") and self.ff_ended_op == #self.out then return self:explain(s.b, s.e) end
     local speed = self:word(s.trig, "real") and self:word(s.trig + 2, "speed")
     local starts = again and "running start resume unpause continue" or "run running start resume unpause continue again"
     if speed or self:word(s.trig, "real") and not self:word_in(s.b, s.e, starts) then
@@ -3313,7 +3320,25 @@ return function(H, f, compass)
     return nil
   end
 
+  -- the token of a verb that ends fast time before the fast-forward of segment s ("stop the fast-forward",
+  -- "cancel this fast forward"), nil when none is said
+  local function ff_ended(self, s)
+    local k = s.trig - 1
+    while k >= s.b and self:word(k, "the this that our your current") do k = k - 1 end
+    if k >= s.b and self:word(k, "@ff_ended") then return k end
+    return nil
+  end
+
   function m:fast_forward(s)
+    -- a fast-forward ended ("stop the fast-forward"): OP, which alone ends fast time, once in the request; the
+    -- verb and its object are read, no duration is (self.ff_ended_op marks the OP for m:resume's "real time")
+    local ended = ff_ended(self, s)
+    if ended then
+      self:explain(ended, s.e)
+      for _, c in ipairs(self.out) do if c == "OP" then return end end
+      self.ff_ended_op = #self.out + 1
+      return self:emit("OP")
+    end
     local half, half_e = and_a_half(self, s.trig + 1, s.e)
     if half then
       for _, q in ipairs(self:quantities(s.trig + 1, half_e)) do self:take(q) end

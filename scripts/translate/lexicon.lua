@@ -1035,6 +1035,25 @@ return {
   need_denied_after = { "any", "more", "anymore", "longer" },
   -- verbs that end a movement: the direction after them is the one stopped, not the one flown (handlers:direction)
   halted = { "stop", "stops", "stopping", "cease", "halt", "discontinue", "terminate", "interrupt", "arrest" },
+  -- words between "instead of"/"rather than" and the value they replace ("instead of the default 1.05",
+  -- "rather than the current 250"): that value is still the one replaced (grammar.lua G:replaced_values)
+  replaced_lead = { "the", "default", "current", "usual", "original", "old", "previous", "present", "standard",
+      "existing", "value", "setting", "of" },
+  -- countries, as later words of airlines' telephonies name them ("FLYING BULGARIA", "AIR PORTUGAL"): said alone
+  -- before a flight number, a country names no one airline (handlers.lua m:telephony_part_only)
+  countries = { "albania", "algeria", "argentina", "armenia", "austria", "azerbaijan", "belgium", "bosnia",
+      "brazil", "bulgaria", "canada", "chile", "china", "colombia", "croatia", "cyprus", "czech", "denmark",
+      "egypt", "estonia", "ethiopia", "finland", "france", "georgia", "germany", "greece", "hungary", "iceland",
+      "india", "indonesia", "iran", "iraq", "ireland", "israel", "italy", "japan", "jordan", "kenya", "korea",
+      "latvia", "lebanon", "lithuania", "luxembourg", "malaysia", "malta", "mexico", "moldova", "montenegro",
+      "morocco", "nepal", "netherlands", "nigeria", "norway", "pakistan", "peru", "philippines", "poland",
+      "portugal", "qatar", "romania", "russia", "serbia", "singapore", "slovakia", "slovenia", "spain",
+      "sweden", "switzerland", "syria", "taiwan", "thailand", "tunisia", "turkey", "ukraine", "uzbekistan",
+      "vietnam", "yemen", "macedonia", "kosovo", "libya", "mongolia", "oman" },
+  -- verbs that end fast time, said before the fast-forward they name ("stop the fast-forward", "end fast
+  -- forward"): that fast time ended (OP), never started (handlers_other: fast_forward)
+  ff_ended = { "stop", "end", "cancel", "quit", "exit", "finish", "abort", "halt", "cease", "terminate",
+      "discontinue", "interrupt" },
   on = { "on", "enable", "activate", "show", "start", "use", "engage", "engaged" },
   -- a change of speed said by its direction alone ("go faster", "slow down")
   faster_slower = { "faster", "slower", "accelerate", "decelerate" },

@@ -2152,6 +2152,9 @@ return function(intent, rule, words)
     local q = r and r.exists and g:word(r.e, "to") and g:quantities(r.e + 1, r.e + 2)[1]
     return q ~= nil and q ~= false and (q.kind == "lat" or q.kind == "plain" and math.abs(q.value) <= 90)
   end }
+  -- "reset its starting point", "reset their positions": a possessive after it names what of an aircraft is
+  -- set again, never the simulation (the words then read as any other, a remark or asked)
+  rule { "reset", false, next = "its his her their" }
   rule { "reset", "reset" }
   rule { "start", "reset", next = "over" }
   rule { "clear", "reset", near = { 3, "@sim" } }
@@ -2327,6 +2330,13 @@ return function(intent, rule, words)
   rule { "probe", false, when = function(g, i)
     return g:word_in(1, #g.t + 1, "look lookahead dtlook") and not g:word_in(1, #g.t + 1, "@on @off")
   end }
+  -- "what look-ahead time is the detection using?", "which lookahead does conflict detection use": the detection
+  -- that uses the setting named in the eight words before is its owner, no switch
+  -- (an on or off word around it switches, the verb of using after it aside: "use" is one of lexicon.on)
+  rule { "detection asas cd", false, next = "using use uses used", when = function(g, i)
+    return g:word_in(math.max(1, i - 8), i, "look lookahead dtlook") and not g:word_in(math.max(1, i - 3), i, "@on @off")
+      and not g:word_in(i + 2, math.min(#g.t + 1, i + 4), "@on @off")
+  end }
   -- "asas dt 2 sec", "dt asas 2": the interval of conflict detection (DT ASAS), no switch
   rule { "detection asas cd", false, near = { 1, "dt timestep" } }
   rule { "detection asas cdmethod cd", "asas" }
@@ -2460,6 +2470,9 @@ return function(intent, rule, words)
   -- named after it is the purpose of the level, heading or speed given, never the protected zone ("give
   -- IBE32 1000 ft of separation from the Ryanair", a height said just before it, is left to the zone's reading,
   -- which asks about the aircraft)
+  -- "300 seconds to loss of separation, 2000 feet above it": the separation lost is an event (a conflict's
+  -- time to it), never the protected zone, whatever height is said after it
+  rule { "separation", false, prev = { 2, "loss lose loses losing" } }
   rule { "separation", false, next = "from with", when = function(g, i)
     local k = g:word(i + 2, "the") and i + 3 or i + 2
     return (g:has_ref(i + 2, k + 1, "aircraft") or g:airline_at(k) ~= nil)

@@ -12177,3 +12177,77 @@ do
     asked(ex("Could BAW7 turn left heading 200 once it has passed Halifax, please?"), "Halifax: airport or VOR")
   end
 end
+-- Cycle 49 (hz61): a verb that ends fast time before the fast-forward it names ("stop the fast-forward") is OP,
+-- never FF; "real time" said after it is that OP's
+do
+  local _, ex = scene({ "CRE KLM33 A320 52.0 4.0 090 FL200 250" })
+  check_eq(ex("cancel the fast forward please"), "OP")
+  check_eq(ex("end this fast-forward and continue in real time"), "OP")
+  check_eq(ex("stop the fast forward, then pause"), "OP ; HOLD")
+  check_eq(ex("fast forward 3 minutes"), "FF 180")
+  asked(ex("fast forward a bit"), "a fast-forward with a duration not understood")
+end
+
+-- Cycle 49 (hz61): "reset" before a possessive ("reset its starting point") names what of an aircraft is set
+-- again, never RESET of the simulation
+do
+  local _, ex = scene({ "CRE KLM33 A320 52.0 4.0 090 FL200 250" })
+  local out = ex("please move KLM33 to 52.2 north 4.1 east, I'd like to reset its position for the next run")
+  check(not out:find("RESET", 1, true), out)
+  local r = graph.translate("reset the simulation", { sim = squawk.sim.new(), mode = "offline" })
+  check(r.ask ~= nil or r.confirm ~= nil or r.confirm_first ~= nil, "RESET of the simulation is still confirmed")
+end
+
+-- Cycle 49 (hz61): a value after "instead of" / "rather than" with words of a setting's value between
+-- ("instead of the default 1.05", "rather than the current 250") is the one replaced, never issued
+do
+  local _, ex = scene({ "CRE KLM33 A320 52.0 4.0 090 FL200 280" })
+  check_eq(ex("set the vertical resolution margin factor to 1.3 instead of the default 1.05"), "RFACV 1.3")
+  check_eq(ex("KLM33 speed 250 rather than the current 280"), "SPD KLM33 250")
+  check_eq(ex("KLM33 heading 120 instead of 090"), "HDG KLM33 120")
+end
+
+-- Cycle 49 (hz61): "loss of separation" is the conflict's event, no protected zone: a CRECONFS's height above or
+-- below, its vertical loss and its speed said after it are CRECONFS's dh, tlosv and spd
+do
+  local _, ex = scene({ "CRE KLM33 A320 52.0 4.0 090 FL300 280" })
+  check_eq(ex("create a conflicting A320 called INT7 against KLM33: 90 degrees relative heading, a CPA of 1 mile, "
+    .. "200 seconds to loss of separation, 1000 feet below it, vertical loss at 150 seconds, and 260 knots"),
+    "CRECONFS INT7 A320 KLM33 90 1 200 -1000 150 260")
+  check_eq(ex("set the vertical separation to 1500 feet"), "ZONEDH 1500")
+end
+
+-- Cycle 49 (hz61): a country that is a later word of an airline's telephony, alone before the flight number
+-- ("Bulgaria 411" for FLYING BULGARIA), selects no airline: confirmed with other aircraft flying; the telephony
+-- whole or its beginning is read
+do
+  local _, ex = scene({ "CRE LZB207 A320 43.4 23.3 180 FL140 270", "CRE WZZ818 A320 42.1 23.7 350 FL120 260" })
+  asked(ex("Bulgaria 207 climb FL160"), "a telephony's later word alone")
+  check_eq(ex("Flying Bulgaria 207 climb FL160"), "ALT LZB207 FL160")
+  check_eq(ex("Wizz 818 descend FL100"), "ALT WZZ818 FL100")
+  -- ("Air" and the country, AIR PORTUGAL, said as the country)
+  local _, ex2 = scene({ "CRE TAP55 A320 43.4 23.3 180 FL140 270", "CRE WZZ818 A320 42.1 23.7 350 FL120 260" })
+  check_eq(ex2("Portugal 55 climb FL160"), "ALT TAP55 FL160")
+  -- (one aircraft flying: no other it might have been meant from)
+  local _, ex1 = scene({ "CRE LZB207 A320 43.4 23.3 180 FL140 270" })
+  check_eq(ex1("Bulgaria 207 climb FL160"), "ALT LZB207 FL160")
+end
+
+-- Cycle 49 (hz61): a lower-case preposition is no airport's name ("along" is VEAN, ALONG): a creation placed
+-- "along with" an aircraft has no position and is asked
+do
+  local nav, pt = navscene({ "CRE BAW215 B772 44.6 -62.0 250 FL370 280" }, "an airport named like a preposition")
+  if nav then
+    asked(pt("create DLH7 A346 heading west along with the Speedbird at FL360"), "'along with' names no position")
+    check_eq(pt("create DLH7 A346 at Halifax heading west at FL360"), "CRE DLH7 A346 CYHZ 270 FL360")
+  end
+end
+
+-- Cycle 49 (hz61): detection that "uses" a look-ahead named before it is that setting's owner: only the setting
+-- asked for is shown
+do
+  local _, ex = scene({ "CRE KLM33 A320 52.0 4.0 090 FL300 280" })
+  check_eq(ex("what look-ahead time is the conflict detection using?"), "DTLOOK")
+  check_eq(ex("which lookahead does detection use"), "DTLOOK")
+  check_eq(ex("set lookahead 300 and use detection"), "DTLOOK 300 ; ASAS ON")
+end
