@@ -7361,16 +7361,19 @@ G.refused_sets = { refused = set_of(lexicon.acknowledged.refused),
   articles = set_of(lexicon.acknowledged.refused_articles), pilots = set_of(lexicon.acknowledged.pilots) }
 -- "three miles instead of five", "FL300 rather than FL320", "heading 200 in place of 180": the value said straight
 -- after the words of replacing, or after up to three words of lexicon.replaced_lead ("instead of the default
--- 1.05"), is the one replaced, never read (used, and its words accounted for)
+-- 1.05"), is the one replaced, never read (used, and its words accounted for); so is the value told as what a
+-- setting was or is by default, closing its clause ("RFACH 1.1, the default is 1.05", "the default being 480")
 function G:replaced_values()
-  if not self:said("instead rather place") then return end
+  if not self:said("instead rather place default") then return end
   for i = 1, #self.t - 2 do
     local e = (self:word(i, "instead rather") and self:word(i + 1, "of than") and i + 2)
       or (self:word(i, "in") and self:word(i + 1, "place") and self:word(i + 2, "of") and i + 3)
-    local v = e and self:skip_fillers(e)
-    while v and v - e < 4 and self:word(v, "@replaced_lead") do v = self:skip_fillers(v + 1) end
-    local q = e and self:quantities(v, math.min(#self.t + 1, v + 4))[1]
-    if q and q.b == v then
+    local told = not e and self:word(i, "default") and self:word(i + 1, "is was being") and i + 2
+    local v = e and self:skip_fillers(e) or told
+    while e and v - e < 4 and self:word(v, "@replaced_lead") do v = self:skip_fillers(v + 1) end
+    local q = v and self:quantities(v, math.min(#self.t + 1, v + 4))[1]
+    local closes = q and (not self.t[q.e] or self.t[q.e].kind == "punct")
+    if q and q.b == v and (e or closes) then
       self:mark_used(i, q.e)
       self:explain(i, q.e)
     end

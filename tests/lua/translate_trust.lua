@@ -12251,3 +12251,12 @@ do
   check_eq(ex("which lookahead does detection use"), "DTLOOK")
   check_eq(ex("set lookahead 300 and use detection"), "DTLOOK 300 ; ASAS ON")
 end
+
+-- Cycle 49 (lead): a value told as what a setting is by default, closing its clause ("RFACH 1.1, the default is
+-- 1.05"), is information, never a second setting; anywhere else it stays asked
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 90 FL200 250" })
+  check_eq(ex("set RFACH to 1.1, the default is 1.05"), "RFACH 1.1")
+  check_eq(ex("set the look-ahead to 300 seconds, the default being 480"), "DTLOOK 300")
+  asked(ex("the default is 1.05 climb KLM12 FL300"), "a default's value that does not close its clause")
+end
