@@ -7578,8 +7578,8 @@ end
 
 -- "ask TAP1732 to climb to FL170 and, once it passes FL130, to speed up to 290 knots": the infinitive's "to" straight
 -- after a condition set off by commas (its clause opening with a word of lexicon.condition, "and" or "then" before
--- it), before the instruction
--- word it holds, is the polite request's grammar: a filler, so the instruction reads with its condition.
+-- it), before the instruction word it holds, is the polite request's grammar: a filler, so the instruction reads
+-- with its condition.
 function G:infinitive_after_condition()
   if not self:said("@condition") then return end
   for k = 3, #self.t - 1 do
