@@ -2467,9 +2467,13 @@ for w in ([[it it's its he he's she she's they they're you you're you've is are 
 -- True when the "above" or "below" at k closes a condition opened by lexicon.condition with at most its subject
 -- and a form of "be" between ("once it is above 8000 feet, accelerate", "when below FL100"): the level the
 -- aircraft crosses, which the instruction after it waits for (ATALT), no level to fly
+-- ("when it goes below 7000 feet", "once it drops below FL100": a verb of moving between is the crossing's too)
 function G:bound_condition(k)
   local x = k - 1
-  while x > k - 4 and x >= 1 and (LINKING[self.words[x] or ""] or self.t[x].filler) do x = x - 1 end
+  while x > k - 4 and x >= 1 and (LINKING[self.words[x] or ""] or self.t[x].filler
+      or self:word(x, "go goes gone get gets got drop drops dropped fall falls fell")) do
+    x = x - 1
+  end
   return self:word(x, "@condition")
 end
 
@@ -4521,8 +4525,12 @@ function G:when_reached(s)
     local v = self:skip_fillers(s.b)
     for _, a in ipairs(self:refs_in(v, v + 1, "aircraft")) do v = self:skip_fillers(a.e) end
     if self.t[v] and self.t[v].kind == "punct" then v = self:skip_fillers(v + 1) end
-    if self:word(v, "on") then v = self:skip_fillers(v + 1) end
-    return self:word(v, "reaching") and self:skip_fillers(v + 1) == s.trig
+    if self:word(v, "on upon") then v = self:skip_fillers(v + 1) end
+    if not self:word(v, "reaching") then return false end
+    -- ("on reaching it", "upon reaching that": the level of the instruction before, by a pronoun)
+    v = self:skip_fillers(v + 1)
+    if self:word(v, "it that") then v = self:skip_fillers(v + 1) end
+    return v == s.trig
   end
   if #self:quantities(c, s.trig) > 0 then return false end
   local verb = self:skip_fillers(c + 1)

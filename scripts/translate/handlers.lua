@@ -2012,6 +2012,10 @@ function m:at_altitude(s)
   -- ("when you get to FL180 reduce 250", "once it gets to FL180": "to" after "get" is the verb's)
   local got = self:find_word(b, s.trig, "get gets getting")
   local got_to = got < a and self:word(got + 1, "to")
+  -- ("once it's down to 10000 feet", "when you're down to FL150": "to" after "down" closing a condition, its
+  -- subject and a form of "be" between, G:bound_condition)
+  local down = self:find_word(b, a, "down")
+  if down < a and self:word(down + 1, "to") and self:bound_condition(down) then got, got_to = down, true end
   if got_to then a = got + 1 end
   -- ("when out of 16000 slow to 280": "out of" after a condition word is a level left; "of" is the verb's)
   local out = self:find_word(b, a, "out")

@@ -1463,6 +1463,14 @@ return function(intent, rule, words)
     local q = g:quantities(i + 1, i + 5)[1]
     return q ~= nil and q.b == i + 1 and (q.kind == "mach" or (q.kind == "plain" and q.value >= 0.4 and q.value < 1))
   end }
+  -- "fly at Mach 0.80", "set Mach 0.80", "fly at 260 knots": a speed with its unit (knots or Mach) straight after
+  -- "fly at" or "set" is the speed flown
+  rule { "fly set", "spd", when = function(g, i)
+    local v = g:word(i, "fly") and i + 2 or i + 1
+    if g:word(i, "fly") and not g:word(i + 1, "at") then return false end
+    local q = g:quantities(v, v + 4)[1]
+    return q ~= nil and q.b == v and (q.kind == "mach" or q.kind == "speed")
+  end }
   -- (no origin where a relative clause says where the aircraft comes from to identify it: G:relative_departure)
   rule { "departed departing", false, when = function(g, i) return g:relative_departure(i) end }
   rule { "origin departed departing orig", "orig" }

@@ -12260,3 +12260,24 @@ do
   check_eq(ex("set the look-ahead to 300 seconds, the default being 480"), "DTLOOK 300")
   asked(ex("the default is 1.05 climb KLM12 FL300"), "a default's value that does not close its clause")
 end
+
+-- Cycle 49 (hz63): a condition said in plain words about the value just cleared is carried: "on/upon reaching
+-- it" (the level or speed before, ATALT/ATSPD), "once it's down to 9000 feet" and "when it goes below 6000 feet"
+-- (the level crossed, ATALT), and the instruction after it said as "fly at Mach .78" or "set Mach .78" (a speed
+-- flown, so the wait is its own); with no value to wait for, or a turn by degrees, it is still asked
+do
+  local _, ex = scene({ "CRE KLM41 A320 52.0 4.0 090 FL300 280" })
+  check_eq(ex("please climb KLM41 to FL340 and, upon reaching it, fly at Mach .78"),
+    "ALT KLM41 FL340 ; ATALT KLM41 FL340 SPD KLM41 M0.78")
+  check_eq(ex("KLM41 reduce to 240 knots and, on reaching it, descend to FL200"),
+    "SPD KLM41 240 ; ATSPD KLM41 240 ALT KLM41 FL200")
+  check_eq(ex("KLM41 climb FL360 and, once it passes FL320, set Mach .79"),
+    "ALT KLM41 FL360 ; ATALT KLM41 FL320 SPD KLM41 M0.79")
+  check_eq(ex("KLM41 descend to 5000 feet and, once it's down to 9000 feet, to slow to 240 knots"),
+    "ALT KLM41 5000 ; ATALT KLM41 9000 SPD KLM41 240")
+  check_eq(ex("KLM41 descend to 4000 feet and, when it goes below 6000 feet, reduce to 200 knots"),
+    "ALT KLM41 4000 ; ATALT KLM41 6000 SPD KLM41 200")
+  asked(ex("KLM41 climb FL340 and, upon reaching it, turn right 30 degrees"), "a turn by degrees after a level reached")
+  asked(ex("KLM41 descend to 4000 feet and, when it goes below, reduce to 200 knots"), "'below' with no level")
+  asked(ex("KLM41 descend to 4000 feet and, once it's down to that, reduce to 200 knots"), "'down to that' unnamed")
+end
