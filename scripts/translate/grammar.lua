@@ -4530,7 +4530,7 @@ function G:when_reached(s)
     -- ("on reaching it", "upon reaching that": the level of the instruction before, by a pronoun)
     v = self:skip_fillers(v + 1)
     if self:word(v, "it that") then v = self:skip_fillers(v + 1) end
-    return v == s.trig
+    return self:instruction_lead(v, s.trig) == s.trig
   end
   if #self:quantities(c, s.trig) > 0 then return false end
   local verb = self:skip_fillers(c + 1)
@@ -4559,7 +4559,7 @@ function G:when_reached(s)
     local k = self:skip_fillers(verb + 1)
     if self:word(k, "down up") then k = self:skip_fillers(k + 1) end
     if self:word(k, "to") and self:word(self:skip_fillers(k + 1), "it that") then k = self:skip_fillers(self:skip_fillers(k + 1) + 1) end
-    return k == s.trig, "speed"
+    return self:instruction_lead(k, s.trig) == s.trig, "speed"
   end
   local have = subject and self:word(verb, "have got") and self:word(self:skip_fillers(verb + 1), "it that")
   if not (have or self:word(verb, "reaching reach reaches hit hits")) then return false end
@@ -4571,7 +4571,16 @@ function G:when_reached(s)
     k = self:skip_fillers(k + 1)
   end
   if self:word(k, "it that height altitude level speed") then k = self:skip_fillers(k + 1) end
-  return k == s.trig, kind
+  return self:instruction_lead(k, s.trig) == s.trig, kind
+end
+
+-- The position after the words at k that lead into the instruction word at trig ("start its descent", "begin the
+-- climb"): "start" or "begin" and a determiner, before trig only; else k.
+function G:instruction_lead(k, trig)
+  local v = k
+  if self:word(v, "start begin") then v = self:skip_fillers(v + 1) end
+  if v > k and self:word(v, "its the your his her their") then v = self:skip_fillers(v + 1) end
+  return v == trig and v or k
 end
 
 -- The same condition said after the instruction it holds, closing its segment ("reduce 180 kts when

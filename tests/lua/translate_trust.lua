@@ -12280,4 +12280,8 @@ do
   asked(ex("KLM41 climb FL340 and, upon reaching it, turn right 30 degrees"), "a turn by degrees after a level reached")
   asked(ex("KLM41 descend to 4000 feet and, when it goes below, reduce to 200 knots"), "'below' with no level")
   asked(ex("KLM41 descend to 4000 feet and, once it's down to that, reduce to 200 knots"), "'down to that' unnamed")
+  -- ("start its descent": the lead into the instruction after the condition)
+  check_eq(ex("KLM41 slow to 250 knots and, once it has slowed down to that, begin its descent to FL220"),
+    "SPD KLM41 250 ; ATSPD KLM41 250 ALT KLM41 FL220")
+  asked(ex("KLM41 slow to 250 knots and, once it has slowed down, begin its descent"), "a descent with no level")
 end
