@@ -447,6 +447,8 @@ local names = {
     { "connie", "CKS" },
     { "polar", "PAC" },
     { "flair", "FLE" },
+    { "cargojet", "CJT" },
+    { "eagle flight", "EGF" },  -- (American Eagle's ICAO telephony)
     -- airlines of Africa: ICAO telephony, and the airline's own name where controllers there say it ("Arik
     -- 512", "Air Peace 301", "Cote d'Ivoire 701")
     { "arik", "ARA" },

@@ -12285,3 +12285,12 @@ do
     "SPD KLM41 250 ; ATSPD KLM41 250 ALT KLM41 FL220")
   asked(ex("KLM41 slow to 250 knots and, once it has slowed down, begin its descent"), "a descent with no level")
 end
+
+-- Cycle 50 (lead): North American cargo and regional telephony: "Cargojet 580" (CJT), "Eagle Flight 4410"
+-- (EGF, American Eagle); a spoken number that differs is still asked
+do
+  local _, ex = scene({ "CRE CJT580 B763 45.1 -65.5 090 FL280 280", "CRE EGF4410 E175 42.4 -73.9 180 FL190 270" })
+  check_eq(ex("please turn Cargojet 580 thirty degrees left"), "HDG CJT580 60 LEFT")
+  check_eq(ex("Eagle Flight 4410, turn left heading 150"), "HDG EGF4410 150 LEFT")
+  asked(ex("Eagle Flight 4401 climb FL300"), "a flight number that differs")
+end
