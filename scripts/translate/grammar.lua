@@ -2404,11 +2404,21 @@ local function sets_said(self)
   return said
 end
 
--- The intent the word at i starts, or nil.
+-- The intent the word at i starts, or nil. A rule's condition may ask for the intents of other words, and
+-- through them for the intent of i itself, once (a condition's own per-request cache answers the second
+-- reading); a chain of conditions that comes back to i a third time ("I'm going to give it headings":
+-- "going" looks at "give", "give" at the words before it) reads no intent there, so every chain ends.
 function G:intent_at(i)
   local texts = self.words
   local w = texts[i]
   if not w or (self.u:used(i) and not (self.unheld and self.unheld[i])) then return nil end
+  local busy = self.intent_busy
+  if not busy then
+    busy = {}
+    self.intent_busy = busy
+  end
+  local depth = busy[i] or 0
+  if depth >= 2 then return nil end
   local next_word = texts[i + 1]
   local said = self.said_sets or sets_said(self)
   local all = RULES_BY_WORD[w] or ANY_RULES
@@ -2426,6 +2436,8 @@ function G:intent_at(i)
     end
     live[all] = rules
   end
+  local found
+  busy[i] = depth + 1
   for _, r in ipairs(rules) do
     -- (r.near: followed within r.near[1] tokens by a word of r.near[2]; r.prev: preceded so; a set none
     -- of whose words is said is not looked for)
@@ -2437,10 +2449,12 @@ function G:intent_at(i)
         and (not not_prev
           or not (said[not_prev[2]] and word_among(texts, i > not_prev[1] and i - not_prev[1] or 1, i, not_prev[2])))
         and (not r.when or r.when(self, i)) then
-      return r.intent or nil
+      found = r.intent or nil
+      break
     end
   end
-  return nil
+  busy[i] = depth > 0 and depth or nil
+  return found
 end
 
 handlers = require("translate.handlers")

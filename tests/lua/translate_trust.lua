@@ -12294,3 +12294,10 @@ do
   check_eq(ex("Eagle Flight 4410, turn left heading 150"), "HDG EGF4410 150 LEFT")
   asked(ex("Eagle Flight 4401 climb FL300"), "a flight number that differs")
 end
+
+-- Cycle 50 (lead): words whose readings depend on each other ("I'm going to give it headings": "going ... to"
+-- looks at "give", "give" at the words before it) end their chain of conditions: read, never a stack overflow
+do
+  local _, ex = scene({ "CRE BAW968 A320 52.6 9.0 010 FL180 280", "ADDWPT BAW968 52.8 9.0" })
+  check_eq(ex("please delete the route of BAW968, I'm going to give it headings instead"), "DELRTE BAW968")
+end
