@@ -2910,8 +2910,15 @@ local CONDITIONAL = { AT = true, ATALT = true, ATSPD = true, ATDIST = true, DELA
 -- "AT id WPT DO CMD id ...": they run when the aircraft passes waypoint `wp` of its route. A command of
 -- another aircraft or of none is asked about, as is a waypoint off the route, and so is a command that is itself
 -- a condition ("I want it at FL250 and heading 200" read as ATALT ... HDG ...): a condition is never nested in
--- another; true when done.
+-- another; true when done. With no `id` (the first command names no aircraft: "pause ... when it reaches
+-- MARIM") it is asked about too.
 function G:do_at(id, wp, n0)
+  local function whose()
+    self.ask = string.format("I have %s. Which of these should happen at %s, and for which aircraft?",
+      table.concat(self.out, " ; "), wp)
+    return false
+  end
+  if not id then return whose() end
   if not self:on_route(id, wp) then
     self.ask = self:off_route_question(id, wp)
     return false
@@ -2923,11 +2930,7 @@ function G:do_at(id, wp, n0)
         .. "condition in another. What should %s do at %s?", self.out[c], wp, id, wp)
       return false
     end
-    if self.out[c]:match("^%u+ (%S+)") ~= id then
-      self.ask = string.format("I have %s. Which of these should happen at %s, and for which aircraft?",
-        table.concat(self.out, " ; "), wp)
-      return false
-    end
+    if self.out[c]:match("^%u+ (%S+)") ~= id then return whose() end
     -- ("turn left 20 degrees passing LOMKI", "reduce 20 knots after LOMKI": a value counted from what the aircraft
     -- flies now is no value for later, when it may fly another)
     if not self:values_said(self.out[c]) then

@@ -139,7 +139,10 @@ return function(H, f, compass)
           if q.e == b + 1 and q2 and q2.b == a and (q2.kind == q.kind or (q.kind == "heading" and q2.kind == "plain"
               and q2.value <= 360)) then
             dropped[q] = true
-            qs[k + 1] = { kind = q.kind, value = q2.value, fl = q2.fl, b = q2.b, e = q2.e }
+            local fixed = {}  -- (the correction's value, every field of it, read as q's kind)
+            for key, v in pairs(q2) do fixed[key] = v end
+            fixed.kind = q.kind
+            qs[k + 1] = fixed
             self:explain(q.b, ce)
             read = true
           end

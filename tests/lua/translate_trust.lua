@@ -12301,3 +12301,19 @@ do
   local _, ex = scene({ "CRE BAW968 A320 52.6 9.0 010 FL180 280", "ADDWPT BAW968 52.8 9.0" })
   check_eq(ex("please delete the route of BAW968, I'm going to give it headings instead"), "DELRTE BAW968")
 end
+
+-- Cycle 50 (lead): a value corrected inside a creation ("FL230 no FL250") is the corrected value with all it
+-- said (its number too), so the checks on a flight level's digits read it; a field still missing is asked
+do
+  local _, ex = scene({})
+  check_eq(ex("create RYR22AB B738 at 52.70 -8.92 heading 090 FL230 no FL250 280 knots"),
+    "CRE RYR22AB B738 52.7 -8.92 90 FL250 280")
+  asked(ex("create RYR22AB B738 at 52.70 -8.92 heading FL230 no FL250"), "a heading that is a level")
+end
+
+-- Cycle 50 (lead): an instruction tied to a waypoint ("when it reaches MARIM") whose command names no aircraft
+-- (a simulator command: HOLD) is asked about, never run, never an error
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL200 250" })
+  asked(ex("pause everything to knots 230 when it reaches MARIM?"), "a pause tied to a waypoint")
+end
