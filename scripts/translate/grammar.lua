@@ -188,7 +188,9 @@ local function know_all(v, seen)
   -- lexicon.name_particles are words of a place's name ("de los reyes"), accounted for only inside the name read,
   -- and lexicon.digit_homophones digits only inside a callsign read ("won", "ate"); lexicon.kept_as_is only
   -- where a value is read as kept; lexicon.id_labels only the letters of a label's id, lexicon.terse_list only
-  -- the words of a terse list, lexicon.self_correction.apology only after a value ruled out, lexicon.replaced_lead
+  -- the words of a terse list, lexicon.self_correction.apology only after a value ruled out (.formal_apology read as
+  -- "sorry", .described only inside a correction's run), lexicon.limit_release only after a limit's place,
+  -- lexicon.replaced_lead
   -- only before a value replaced, lexicon.ff_ended only before a fast-forward ended, lexicon.countries only
   -- inside a callsign read)
   if type(v) ~= "table" or seen[v] or v == lexicon.accounted.courtesy_phrases or v == lexicon.accounted.value_phrases
@@ -201,6 +203,8 @@ local function know_all(v, seen)
       or v == lexicon.name_particles or v == lexicon.digit_homophones or v == lexicon.asides_alone
       or v == lexicon.kept_as_is or v == lexicon.id_labels or v == lexicon.terse_list
       or v == lexicon.self_correction.apology or v == lexicon.replaced_lead or v == lexicon.ff_ended
+      or v == lexicon.self_correction.formal_apology or v == lexicon.self_correction.described
+      or v == lexicon.limit_release
       or v == lexicon.countries then
     return
   end
@@ -700,8 +704,28 @@ local function hesitated_sides(text)
   end
   return done()
 end
+-- "Mach 0.80 -- pardon me, Mach 0.78": a formal apology (lexicon.self_correction.formal_apology) is the marker
+-- "sorry", read by the corrections below and by the handlers as that word.
+G.formal_apology_patterns = {}
+for _, p in ipairs(lexicon.self_correction.formal_apology) do
+  G.formal_apology_patterns[#G.formal_apology_patterns + 1] = { last = p:match("(%S+)$"), pattern = "%f[%w]" .. p:gsub(" ", "%%s+") .. "%f[%W]" }
+end
+function G.formal_apologies(text)
+  local lower = text:lower()
+  for _, a in ipairs(G.formal_apology_patterns) do
+    if lower:find(a.last, 1, true) then
+      local b, e = lower:find(a.pattern)
+      while b do
+        text = text:sub(1, b - 1) .. "sorry" .. text:sub(e + 1)
+        lower = text:lower()
+        b, e = lower:find(a.pattern)
+      end
+    end
+  end
+  return text
+end
 local function self_corrections(text)
-  text = hesitated_sides(text)
+  text = hesitated_sides(G.formal_apologies(text))
   if not holds_word(text:lower(), SC_MARKER_PATTERNS) then return text end
   local words, markers, after = SC_WORDS, SC_MARKERS, SC_AFTER
   local toks = bare_words(text)
@@ -729,10 +753,16 @@ local function self_corrections(text)
     -- it: G:unaccounted asks)
     local refused = nxt and SIDES[nxt.bare] and toks[j + 1] and G.refusable[toks[j + 1].bare]
       and toks[j - 1].bare == "no" and not toks[j - 1].raw:match("%p$")
+    -- ("heading 330 -- no, the right, I mean a right turn onto heading 030", "Mach 0.80, sorry, to Mach 0.78": an
+    -- article or "to" before the side or value said in its place; the word stays with it)
+    local said = nxt
+    if nxt and (nxt.bare == "the" or nxt.bare == "a" or nxt.bare == "to") and toks[j + 1] and not nxt.raw:match("%p$") then
+      said = toks[j + 1]
+    end
     if j > k and marked and not refused and not (dropping and after[nxt and nxt.bare or ""] and not SIDES[nxt.bare])
         and not (toks[k - 2] and toks[k - 2].bare == "not" and G.apology[toks[k].bare])
         and (value(toks[k - 1]) or (toks[k - 1] and SIDES[toks[k - 1].bare]) or position) and nxt
-        and (nxt.bare:match("^%a?%a?%.?%d") or NUMBER_WORDS[nxt.bare] or after[nxt.bare] or position) then
+        and (said.bare:match("^%a?%a?%.?%d") or NUMBER_WORDS[said.bare] or after[said.bare] or position) then
       put(toks[k].at, ", correction, ", nxt.at)
       k = j
     else
@@ -2964,6 +2994,38 @@ end
 -- off that route leaves it to be asked.
 G.route_remark_sets = {}
 for k, list in pairs(lexicon.route_remark) do G.route_remark_sets[k] = set_of(list) end
+-- "maintain 270 knots until SUNSS; thereafter it may fly at its own discretion", "slow to 260 knots until CIVET, and
+-- then resume its normal speed": after a limit until a place, a clause closing the request that opens with a word
+-- of lexicon.limit_release.openers ("and" or "after that" too) and holds only its words, one of .release among
+-- them, says the limit ends there, as the limit's note names: set aside (used and noted), so the limit is read as
+-- said last. Anything else after it stays an instruction of its own.
+G.limit_release = { words = set_of(lexicon.limit_release.words), release = set_of(lexicon.limit_release.release),
+  openers = set_of(lexicon.limit_release.openers) }
+function G:limit_released()
+  if not self:said("until till") then return end
+  local R = G.limit_release
+  for _, r in ipairs(self.refs) do
+    if r.kind == "waypoint" and self:word(r.b - 1, "until till") then
+      local k = r.e
+      while self.t[k] and self.t[k].kind == "punct" do k = k + 1 end
+      if self:word(k, "and") then k = k + 1 end
+      local open = k
+      if self:word(k, "after") and self:word(k + 1, "that") then k = k + 2 elseif self:word(k, R.openers) then k = k + 1 end
+      local e, released = k, false
+      while k > open and self.t[e] and (self.t[e].filler or self:word(e, R.words)) do
+        released = released or self:word(e, R.release)
+        e = e + 1
+      end
+      local rest = e
+      while self.t[rest] and self.t[rest].kind == "punct" and self.t[rest].text ~= "," do rest = rest + 1 end
+      if released and rest > #self.t then
+        self:mark_used(r.e, e)
+        for x = r.e, e - 1 do self.noted[x] = true end
+      end
+    end
+  end
+end
+
 function G:route_remarks()
   local R = G.route_remark_sets
   if not self:said(R.route_nouns) then return end
@@ -4552,6 +4614,13 @@ function G:when_reached(s)
   if #self:quantities(c, s.trig) > 0 then return false end
   local verb = self:skip_fillers(c + 1)
   if self:word_in(c + 1, s.trig, "there level lvl") then return true end
+  -- ("once it has levelled off", "once it levels out": the level of the instruction before, reached; the verb's
+  -- particle is part of it, never a switch, G:unread_switch)
+  local levelled = self:find_word(c + 1, s.trig, "levelled leveled levels")
+  if levelled < s.trig then
+    if self:word(levelled + 1, "off out") then self.noted[levelled + 1] = true end
+    return true
+  end
   -- ("when you're at that speed", "once it is at the speed": the speed of the instruction before, reached; only
   -- a subject, "at" and "that" or "the" before "speed", straight before the instruction)
   local at = self:find_word(c + 1, s.trig, "speed")
@@ -4577,6 +4646,11 @@ function G:when_reached(s)
     if self:word(k, "down up") then k = self:skip_fillers(k + 1) end
     if self:word(k, "to") and self:word(self:skip_fillers(k + 1), "it that") then k = self:skip_fillers(self:skip_fillers(k + 1) + 1) end
     return self:instruction_lead(k, s.trig) == s.trig, "speed"
+  end
+  -- ("once it has done so", "when it does that": the value of the instruction before, reached)
+  -- ("so" may be a filler: read straight after the verb)
+  if self:word(slowed, "done does do did") and self:word(slowed + 1, "so that") then
+    return self:instruction_lead(self:skip_fillers(slowed + 2), s.trig) == s.trig
   end
   local have = subject and self:word(verb, "have got") and self:word(self:skip_fillers(verb + 1), "it that")
   if not (have or self:word(verb, "reaching reach reaches hit hits")) then return false end
@@ -4623,7 +4697,7 @@ function G:trailing_reached(s)
   for i = c + 1, s.e - 1 do
     if self:word(i, "there level lvl reach reaches reaching levels levelled leveled") then named = true
     elseif not (self.t[i].kind == "punct" or self.t[i].filler
-        or self:word(i, "it it's its is gets get you you're are that please")) then
+        or self:word(i, "it it's its is gets get you you're are that please arrives arrive has have")) then
       return nil
     end
   end
@@ -5384,7 +5458,8 @@ function G:dangling_correction()
   while first > 1 and (self.t[first - 1].kind == "punct" or SC_WORDS[self.words[first - 1]]) do first = first - 1 end
   local said = {}
   if first <= last then  -- (the words as said are read only where such a run closes the request)
-    for w in (self.text_said or ""):lower():gmatch("[%a']+") do said[#said + 1] = w end
+    -- (a formal apology as "sorry": "turn left heading 300, pardon me")
+    for w in G.formal_apologies(self.text_said or ""):lower():gmatch("[%a']+") do said[#said + 1] = w end
   end
   local marked = false
   for k = math.max(1, #said - (last - first)), #said do
@@ -8687,11 +8762,12 @@ end
 -- "Skyhawk 3AB", "Cessna three alpha bravo", "King Air 0KA", "November three alpha bravo", "Skyhawk November
 -- one two three alpha bravo": a civil aircraft's abbreviated callsign (FAA JO 7110.65 2-4-20), a prefix
 -- (November or N, or a maker, model or nickname of types.lua: "Cessna", "Skyhawk", "King Air") and then the
--- last characters of its US registration, three or more holding a letter, said in digits, letters or
--- phonetics (or any registration whole), is written as that registration when exactly one aircraft flying
+-- last three characters of its US registration holding a letter, or all of them but the N, said in digits, letters
+-- or phonetics (or any registration whole), is written as that registration when exactly one aircraft flying
 -- has a US registration (N and a digit) ending with them and the prefix fits it (November: any; a type word
 -- without digits: the aircraft's type). Returns the text and, when two aircraft end so or the prefix does not
--- fit the one that does (a suffix, not the whole id), the question to ask instead, else nil.
+-- fit the one that does (a suffix, not the whole id), the question to ask instead, else nil. Four characters of
+-- five ("Cessna three eight Charlie Sierra" for N738CS) are neither: a character went unsaid, asked.
 -- G.nickname_heads: the first word of each nickname of two words (types.nicknames), a set
 G.nickname_heads = {}
 for name in pairs(require("translate.types").nicknames) do
@@ -8744,7 +8820,8 @@ local function abbreviated_registrations(text, fleet)
       if #chars >= 3 and chars:match("%a") then
         for _, a in ipairs(fleet) do
           local id = a.id:upper()
-          if id == chars or (id:match("^N%d") and #id > #chars and id:sub(-#chars) == chars) then ending[#ending + 1] = a end
+          if id == chars or (id:match("^N%d") and #id > #chars and id:sub(-#chars) == chars
+              and (#chars == 3 or #chars == #id - 1)) then ending[#ending + 1] = a end
         end
       end
       if #ending > 0 then
@@ -9908,6 +9985,7 @@ function M.translate(text, world)
   g:type_refs()
   g:prefix_refs()
   g:role_refs()
+  g:false_starts()
   g:fix_refs()
   g:navaid_name_refs()
   g:named_place_refs()
@@ -9931,6 +10009,7 @@ function M.translate(text, world)
     end
   end
   g:route_remarks()
+  g:limit_released()
   local note = g:not_simulated()
   g:self_corrected()
   g:places_corrected()

@@ -265,8 +265,10 @@ function m:acids(s)
         if self:intent_at(e) or #self:quantities(e, e + 1) > 0 then own = false end
         e = e + 1
       end
-      if seen[r.name] and self.t[k] and self.t[k].kind == "punct" and own and not self:word(r.e, "too also")
-          and not (self:word(r.e, "as") and self:word(r.e + 1, "well")) then
+      -- (an aircraft noun after an aircraft described belongs to it: "and the Frontier aircraft as well")
+      local tail = self:word(r.e, "@aircraft_nouns") and r.e + 1 or r.e
+      if seen[r.name] and self.t[k] and self.t[k].kind == "punct" and own and not self:word(tail, "too also")
+          and not (self:word(tail, "as") and self:word(tail + 1, "well")) then
         local kept = {}
         for _, id in ipairs(ids) do
           if id ~= r.name then kept[#kept + 1] = id end
@@ -384,6 +386,23 @@ function m:acids(s)
           self:raw(k, self:word(k, "all each every") and k + 2 or k + 1)))
         return ids
       end
+    end
+  end
+  -- "slow all three aircraft by 20 knots", "turn all four left 20 degrees": "all" and a count said in the segment,
+  -- no aircraft named, are every aircraft flying when that many fly (each from its own state); another count asked
+  for k = #ids == 0 and s.b or s.e, s.e - 2 do
+    local q = self:word(k, "all") and self:quantities(k + 1, k + 2)[1]
+    if q and q.kind == "plain" and q.b == k + 1 and q.e == k + 2 and q.value >= 2 and q.value % 1 == 0 then
+      local e = self:word(q.e, "@aircraft_nouns @counted_aircraft") and q.e + 1 or q.e
+      if q.value ~= #self.fleet then
+        self:need(string.format("Which aircraft does '%s' mean? %d are flying. Please give their callsigns.",
+          self:raw(k, e), #self.fleet))
+        return ids
+      end
+      self:mark_used(k, e)
+      self:explain(k, e)
+      for n, a in ipairs(self.fleet) do ids[n] = a.id end
+      break
     end
   end
   if #ids == 0 and self.subject then
@@ -1697,6 +1716,12 @@ function m:settle_callsigns()
       end
     end
   end
+  self:false_starts()
+end
+
+-- The aircraft references taken back (r.false_start, see m:settle_callsigns); run again once the aircraft
+-- described ("the United", "the second aircraft") are references too.
+function m:false_starts()
   -- (only an inexactly heard one when said again: "AC01, AC02 climb" names two aircraft)
   local last  -- the last aircraft named before a correction
   for k, r in ipairs(self.refs) do
@@ -1720,9 +1745,13 @@ end
 
 -- True when the words between two callsigns, [b, e), take the first back: punctuation, fillers and
 -- lexicon.self_correction words only, holding a correction word or a self-correction marker ("KLM12
--- correction KLM21", "DLH6CK, sorry, AUA123", "DLH6CK, no, I mean AUA123").
+-- correction KLM21", "DLH6CK, sorry, AUA123", "DLH6CK, no, I mean AUA123"); words that describe the aircraft said
+-- in its place belong to the run ("the United -- no, the Southwest aircraft", "American 100 -- no, the second
+-- aircraft, United 200": lexicon.self_correction.described and aircraft nouns).
 local SELF_CORRECTION, SC_MARKER = {}, {}
 for _, w in ipairs(L.self_correction.words) do SELF_CORRECTION[w] = true end
+for _, w in ipairs(L.self_correction.described) do SELF_CORRECTION[w] = true end
+for _, w in ipairs(L.aircraft_nouns) do SELF_CORRECTION[w] = true end
 for _, w in ipairs(L.self_correction.markers) do SC_MARKER[w] = true end
 function m:callsign_taken_back(b, e)
   local marked = false
@@ -2002,12 +2031,12 @@ function m:at_altitude(s)
     b = b - 1
     while b > 1 and self.t[b - 1].kind ~= "punct" do b = b - 1 end
   end
-  local a = self:find_word(b, s.trig, "at passing leaving reaching through passes leaves reaches pass reach hit hits crossing crosses after")
+  local a = self:find_word(b, s.trig, "at passing leaving reaching through passes leaves reaches pass reach reached hit hits crossing crosses after")
   -- ("after one zero thousand increase speed to 300": a level said straight after "after" is passed; "after
   -- passing FL100" is read at its verb)
   local after_q = self:word(a, "after") and self:quantities(a + 1, s.trig)[1]
   if self:word(a, "after") and not (after_q and after_q.b == a + 1) then
-    a = self:find_word(a + 1, s.trig, "at passing leaving reaching through passes leaves reaches pass reach hit hits crossing crosses")
+    a = self:find_word(a + 1, s.trig, "at passing leaving reaching through passes leaves reaches pass reach reached hit hits crossing crosses")
   end
   -- ("when you get to FL180 reduce 250", "once it gets to FL180": "to" after "get" is the verb's)
   local got = self:find_word(b, s.trig, "get gets getting")
@@ -2033,14 +2062,16 @@ function m:at_altitude(s)
     end
   end
   if a >= s.trig then return nil end
-  -- ("when you hit FL180 slow to 250": "hit" is a verb of reaching only after a condition word)
-  if self:word(a, "hit hits") and not self:word_in(math.max(b, a - 3), a, "@condition") then return nil end
+  -- ("when you hit FL180 slow to 250", "once it has reached FL290, descend": "hit" and "reached" are verbs of
+  -- reaching only after a condition word; so are "reach" and "reaches" before a level or altitude instruction)
+  local reached = self:word(a, "hit hits reached reach reaches") and self:word_in(math.max(b, a - 3), a, "@condition")
+  if self:word(a, "hit hits reached") and not reached then return nil end
   -- ("fly at 30000 ft and heading 100": the level flown at, an instruction of its own, no condition)
   if self:word(a, "at") and self:word(a - 1, "fly flies stay remain cruise") then return nil end
   -- a value said before the condition is another instruction's, which must not wait for it
   if #self:quantities(b, a) > 0 then return nil end
   if (s.intent == "maintain" or s.intent == "alt" or NAV_INTENTS[s.intent] or s.intent == "vs")
-      and not self:word(a, "passing leaving reaching") and not got_to and not left then
+      and not self:word(a, "passing leaving reaching") and not reached and not got_to and not left then
     return nil
   end
   -- "passing FL355 descending FL340" is a pilot's report; "when passing ... descend" and "leaving 11000
@@ -2113,8 +2144,13 @@ function m:wait_lead(w, q, trig)
       return w
     end
   end
-  if self:word(q.e, "from") and self:word(q.e + 1, "now") then
-    self:explain(q.e, q.e + 2)
+  -- ("ten minutes of simulated time from now": the clock the time is counted on, named before "from now")
+  local now = q.e
+  if self:word(now, "of") and self:word(now + 1, "simulated simulation sim") and self:word(now + 2, "time") then
+    now = now + 3
+  end
+  if self:word(now, "from") and self:word(now + 1, "now") then
+    self:explain(q.e, now + 2)
     return q.b
   end
   return nil

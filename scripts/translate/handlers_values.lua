@@ -803,6 +803,19 @@ return function(H, f, wrap, compass)
       toward = r and r.name:upper() or self:place_by_name(at, s.e, now)
     end
     local hdg, offset  -- offset: degrees from each aircraft's present heading
+    -- ("turn left by 90 degrees and, in two minutes, onto heading 070": a heading said after a turn's degrees in the
+    -- turn's sentence, no correction between, is a second heading unless it is the one the turn reaches: asked, as
+    -- below, never the degrees dropped)
+    local turned = abs and abs.kind == "heading" and rel and rel.b < abs.b and not correction and now
+      and not self:in_reason(abs.b) and (rel.turn ~= 0 and rel.turn or turn)
+    for x = rel and rel.e or 1, turned and abs.b - 1 or 0 do
+      if self.t[x].kind == "punct" and self.t[x].text ~= "," then turned = false end
+    end
+    local reached = turned and turned ~= 0 and wrap(math.floor(now.hdg_deg + turned * rel.value + 0.5))
+    if reached and wrap(abs.value) ~= reached then
+      return self:need(string.format("Should %s turn %s by %s degrees, onto %03d, or fly heading %s?", id,
+        turned < 0 and "left" or "right", f.num(rel.value), reached, f.num(abs.value)))
+    end
     if abs and (abs.kind == "heading" or not (rel and rel.b < abs.b and not correction)) then
       hdg = abs.value
       local n = abs.number

@@ -592,6 +592,14 @@ return {
   -- a climb or descent left to the pilot ("descend when ready"): said with no level, asked about
   discretion = { "when ready", "when able", "when you're ready", "at pilot's discretion", "at your discretion",
                  "at your own discretion", "at own discretion", "pilot's discretion" },
+  -- the end of a limit until a place said after it, closing the request ("maintain 270 knots until SUNSS; thereafter
+  -- it may fly at its own discretion", "... until CIVET, and then resume its normal speed"): an opener, then only
+  -- `words`, one of `release` among them (G:limit_released)
+  limit_release = { openers = { "then", "thereafter", "afterwards", "afterward" },
+                    words = { "it", "may", "can", "is", "free", "to", "fly", "at", "its", "own", "their", "his", "her",
+                              "your", "pilot's", "pilots", "pilot", "discretion", "resume", "resumes", "normal",
+                              "usual", "speed", "speeds", "no", "restriction", "restrictions", "the", "be", "then" },
+                    release = { "discretion", "normal", "usual", "restriction", "restrictions" } },
   -- before an instruction word: the instruction is only announced, not given
   not_a_clearance = { "expect" },
   -- a clause opening with one of `opens` (or of `with_is` and "is" or "about"), the aircraft it asks about straight
@@ -742,6 +750,13 @@ return {
                       only = { "just", "only" },
                       -- an apology closing a value ruled out ("fl200 not 180 sorry"): the value before stands
                       apology = { "sorry", "apologies", "oops", "soz" },
+                      -- formal apologies, read as "sorry" (a marker) wherever they are said ("Mach 0.80 --
+                      -- pardon me, Mach 0.78", "the United -- no, forgive me, the Southwest")
+                      formal_apology = { "i beg your pardon", "beg your pardon", "pardon me", "forgive me",
+                                         "excuse me", "my apologies" },
+                      -- words that describe the aircraft said in place of one taken back ("American 100 -- no,
+                      -- the second aircraft, United 200"; aircraft nouns too): part of the correction's run
+                      described = { "the", "a", "an", "first", "second", "third", "fourth", "other" },
                       -- a verb of setting before the instruction said in place of the one taken back ("half
                       -- height one thousand... no, set zone half height to five hundred feet")
                       setting = { "set", "put", "change", "reset" },

@@ -12317,3 +12317,105 @@ do
   local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL200 250" })
   asked(ex("pause everything to knots 230 when it reaches MARIM?"), "a pause tied to a waypoint")
 end
+
+-- Cycle 50 (f131a): a correction set off by dashes or said as a formal apology ("pardon me", "forgive me", "I beg
+-- your pardon", "excuse me") replaces what it follows: a value, a turn's side (an article or "to" before the word
+-- said in its place), or an aircraft described ("the KLM -- no, the Lufthansa aircraft", "the second aircraft");
+-- what is taken back is never issued, and with nothing said in its place it is still asked
+do
+  local _, ex = scene({ "CRE KLM12 A320 52.0 4.0 090 FL300 280", "CRE DLH34 A321 52.2 4.4 270 FL280 290",
+    "CRE EZY56 A319 52.4 4.8 180 FL260 270" })
+  check_eq(ex("Would you climb the KLM -- no, forgive me, the Lufthansa aircraft -- to flight level 320?"),
+    "ALT DLH34 FL320")
+  check_eq(ex("please descend the easyJet -- sorry, the KLM -- to FL220 at 1500 feet per minute"),
+    "ALT KLM12 FL220 1500")
+  check_eq(ex("Please slow KLM12 to Mach 0.78 -- pardon me, Mach 0.76."), "SPD KLM12 M0.76")
+  check_eq(ex("Please slow KLM12 to Mach 0.78, I beg your pardon, to Mach 0.76."), "SPD KLM12 M0.76")
+  check_eq(ex("turn KLM12 left onto heading 300 -- no, the right, I mean a right turn onto heading 060"),
+    "HDG KLM12 60 RIGHT")
+  check_eq(ex("Please turn KLM12 -- no, the second aircraft, DLH34 -- right by 20 degrees."), "HDG DLH34 290 RIGHT")
+  check_eq(ex("Excuse me, could you turn EZY56 left heading 150?"), "HDG EZY56 150 LEFT")
+  asked(ex("Please climb the KLM -- no, forgive me, the Ryanair -- to flight level 320."), "no Ryanair flies")
+  asked(ex("turn KLM12 left onto heading 300, pardon me."), "an apology closing the request")
+  asked(ex("Slow KLM12 to Mach 0.78 -- pardon me, 0.76 or 0.75."), "two values in its place")
+end
+
+-- Cycle 50 (f131a): conditions said formally about the value just cleared: "once it has levelled off", "once it
+-- levels out" (the level, ATALT), "once it has done so" (the value of the instruction before, ATALT or ATSPD),
+-- "once it arrives there" after the instruction, "once it has reached FL290" (the level named); with no value
+-- to wait for (a heading before) it is still asked
+do
+  local _, ex = scene({ "CRE KLM41 A320 52.0 4.0 090 FL300 280" })
+  check_eq(ex("I should be grateful if KLM41 could climb to FL340 and, once it has levelled off, turn onto heading 120"),
+    "ALT KLM41 FL340 ; ATALT KLM41 FL340 HDG KLM41 120")
+  check_eq(ex("KLM41 descend to FL260; once it levels out, reduce to 250 knots"),
+    "ALT KLM41 FL260 ; ATALT KLM41 FL260 SPD KLM41 250")
+  check_eq(ex("Kindly slow KLM41 to 240 knots and, once it has done so, descend it to FL200."),
+    "SPD KLM41 240 ; ATSPD KLM41 240 ALT KLM41 FL200")
+  check_eq(ex("descend KLM41 to FL200, and then reduce to 250 knots once it arrives there"),
+    "ALT KLM41 FL200 ; ATALT KLM41 FL200 SPD KLM41 250")
+  check_eq(ex("Turn KLM41 right heading 150 and, once it has reached flight level 280, descend it to FL240."),
+    "HDG KLM41 150 RIGHT ; ATALT KLM41 FL280 ALT KLM41 FL240")
+  asked(ex("Turn KLM41 right heading 150 and, once it has done so, descend it to FL240."), "done so after a heading")
+  asked(ex("KLM41 turn left heading 200 and, once it has levelled off, reduce to 250 knots"), "no level cleared")
+end
+
+-- Cycle 50 (f131a): an aircraft described and added with "as well" or "too", an aircraft noun after its airline
+-- ("the Alaska aircraft, and the Frontier aircraft as well, onto heading 200"), gets the instruction: never
+-- dropped in silence
+do
+  local _, ex = scene({ "CRE KLM12 A320 52.0 4.0 090 FL300 280", "CRE DLH34 A321 52.2 4.4 270 FL280 290" })
+  check_eq(ex("Please turn the KLM aircraft, and the Lufthansa aircraft as well, onto heading 200."),
+    "HDG KLM12 200 ; HDG DLH34 200")
+  check_eq(ex("Please turn the KLM aircraft, and the Lufthansa aircraft too, onto heading 200."),
+    "HDG KLM12 200 ; HDG DLH34 200")
+  asked(ex("Please turn the KLM aircraft, and the Lufthansa aircraft, onto heading 200."), "an aircraft in an aside")
+end
+
+-- Cycle 50 (f131a): an abbreviated civil callsign is the prefix and the last three characters of the registration
+-- (FAA JO 7110.65 2-4-20) or all of it but the N; four characters of five ("Cessna three eight Charlie Sierra" for
+-- N738CS) leave one unsaid: asked
+do
+  local _, ex = scene({ "CRE N738CS C172 52.0 4.0 030 3500 105", "CRE KLM12 A320 52.2 4.4 270 FL280 290" })
+  check_eq(ex("Cessna eight Charlie Sierra turn left heading 360"), "HDG N738CS 360 LEFT")
+  check_eq(ex("Cessna seven three eight Charlie Sierra turn left heading 360"), "HDG N738CS 360 LEFT")
+  asked(ex("Cessna three eight Charlie Sierra turn left heading 360"), "four characters of five")
+end
+
+-- Cycle 50 (f131a): a time counted on the simulation's clock said before "from now" ("ten minutes of simulated time
+-- from now, please turn ...") is the wait (DELAY); a turn by degrees and then a heading in its sentence, no
+-- correction between ("left by 90 degrees and, in two minutes, onto heading 070"), is asked unless the heading is
+-- the one the turn reaches: never the degrees dropped
+do
+  local _, ex = scene({ "CRE KLM41 A320 52.0 4.0 070 FL300 280" })
+  check_eq(ex("Ten minutes of simulated time from now, please turn KLM41 right onto heading 010."),
+    "DELAY 600 HDG KLM41 10 RIGHT")
+  check_eq(ex("Please turn KLM41 left by 90 degrees onto heading 340."), "HDG KLM41 340 LEFT")
+  asked(ex("Please turn KLM41 left by 90 degrees and, in two minutes, turn it onto heading 070."),
+    "a heading after a turn's degrees")
+  asked(ex("Ten minutes of real time from now, please turn KLM41 right onto heading 010."), "real time is no wait")
+end
+
+-- Cycle 50 (f131a): the end of a limit until a place on the route said after it ("...; thereafter it may fly at its
+-- own discretion", "..., and then resume its normal speed") is the limit's end, named as not simulated: the value
+-- flown; an instruction after it is still read or asked as before
+do
+  local _, ex = scene({ "CRE KLM41 A320 52.0 4.0 090 FL300 280", "DEFWPT ROBUS 52.0 5.0", "DEFWPT TEBRO 52.0 6.0",
+    "ADDWPT KLM41 ROBUS", "ADDWPT KLM41 TEBRO" })
+  check_eq(ex("I would like KLM41 to maintain 270 knots until ROBUS; thereafter it may fly at its own discretion."),
+    "SPD KLM41 270")
+  check_eq(ex("KLM41 should slow to 260 knots until ROBUS, and then resume its normal speed."), "SPD KLM41 260")
+  asked(ex("KLM41 maintain 270 knots until ROBUS, then resume normal speed and climb to FL340"), "more after the end")
+end
+
+-- Cycle 50 (f131a): "all" and a count of aircraft ("slow all three aircraft by 20 knots") with no aircraft named is
+-- every aircraft flying when that many fly, each from its own state; another count is asked; deleting them is still
+-- confirmed
+do
+  local _, ex = scene({ "CRE KLM12 A320 52.0 4.0 090 FL300 280", "CRE DLH34 A321 52.2 4.4 270 FL280 290",
+    "CRE EZY56 A319 52.4 4.8 180 FL260 270" })
+  check_eq(ex("Please slow all three aircraft by 20 knots."), "SPD KLM12 260 ; SPD DLH34 270 ; SPD EZY56 250")
+  check_eq(ex("Would you climb all three aircraft to FL320?"), "ALT KLM12 FL320 ; ALT DLH34 FL320 ; ALT EZY56 FL320")
+  asked(ex("Please slow all four aircraft by 20 knots."), "a count that does not fly")
+  asked(ex("Please delete all three aircraft."), "deleting several aircraft is confirmed")
+end
