@@ -2079,6 +2079,24 @@ function m:at_altitude(s)
   local ids = self:acids(s)
   if #ids == 0 then return nil end
   if groupwise and ((self:state(ids[1]) or {}).alt_ft or 0) < L.groupwise_from_ft then return nil end
+  -- ("reduce speed 250, on reaching two five zero descend FL150": three digits alone that this request gave the
+  -- aircraft as its speed [kt], and not as its level, are the speed reached: ATSPD; given as both, asked)
+  if fl_digits and q.kind == "plain" then
+    local spd, alt = false, false
+    for _, c in ipairs(self.out) do
+      spd = spd or c == "SPD " .. ids[1] .. " " .. f.int(q.value)
+      alt = alt or c == "ALT " .. ids[1] .. " " .. f.alt(q.value * 100, true)
+    end
+    if spd and alt then
+      self.ask = string.format("'%s': should %s wait for speed %s or for %s?", self:raw(a, q.e), ids[1],
+        f.int(q.value), f.alt(q.value * 100, true))
+      return nil
+    end
+    if spd then
+      self:mark_used(q.b, q.e)  -- the condition's speed is not the instruction's value
+      return "ATSPD " .. ids[1] .. " " .. f.int(q.value)
+    end
+  end
   self:mark_used(q.b, q.e)  -- the condition's altitude is not the instruction's value
   if noun then self:explain(noun, noun + 1) end
   if groupwise then return "ATALT " .. ids[1] .. " " .. f.alt(groupwise, true) end

@@ -1543,6 +1543,21 @@ return function(H, f, compass)
             if not known[id] then ids[#ids + 1] = id end
           end
         end
+        -- (the city's airport bearing its name, none large, beside the large one lexicon.city_airports names,
+        -- within L.city_nm: the large one, where the city's traffic flies; "Hyderabad" is VOHS "RAJIV GANDHI
+        -- INTL", not VOHY "HYDERABAD", Begumpet)
+        local locate = self.world.user_waypoint_at
+        if #ids > 0 and L.city_airports[phrase] and class and locate then
+          local large = {}
+          for _, id in ipairs(ids) do
+            if class(id) == "LARGE" then large = nil break end
+            local lat, lon = locate(id)
+            for _, x in ipairs(lat and (city or list)(L.city_airports[phrase], lat, lon, L.city_nm) or {}) do
+              if class(x) == "LARGE" then large[#large + 1] = x end
+            end
+          end
+          if large and #large > 0 then ids = large end
+        end
         if #ids == 0 and L.city_airports[phrase] then
           ids = kept(list(L.city_airports[phrase], ...))
           local large = {}

@@ -12301,3 +12301,31 @@ do
   local _, ex = scene({ "CRE BAW968 A320 52.6 9.0 010 FL180 280", "ADDWPT BAW968 52.8 9.0" })
   check_eq(ex("please delete the route of BAW968, I'm going to give it headings instead"), "DELRTE BAW968")
 end
+
+
+-- Cycle 50 (fctl): a city's airport bearing its name, none large, beside the large airport the city table names
+-- (within lexicon.city_nm) is that large one; far apart, the airport by the name stays
+do
+  local _, ex = navscene({ "CRE AIC77 A320 18.4 80.3 230 FL190 280", "CRE ACA5 A320 44.0 -76.0 090 FL190 280" },
+    "a city's two airports")
+  if ex then
+    check_eq(ex("Air India 77, destination Hyderabad"), "DEST AIC77 VOHS")
+    check_eq(ex("Air Canada 5 destination Kingston"), "DEST ACA5 CYGK")
+  end
+end
+
+-- Cycle 50 (fctl): telephony of Australia, New Zealand, the Pacific and India: "Q-Link 37D" (QLK, QantasLink, also
+-- "Q Link", "QLink", "QantasLink"), "Pacific 411" (FJI, Fiji Airways), "Allied 9643" (LLR, Alliance Air); "Cathay
+-- Pacific 138" stays Cathay's; "Link 37D" (Airlink) and a number that differs are still asked
+do
+  local _, ex = scene({ "CRE QLK37D DH8D -33.5 150.2 110 11000 220", "CRE FJI411 A332 -35.9 174.9 190 FL280 290",
+    "CRE CPA138 A359 -35.1 150.5 230 FL360 280", "CRE LLR9643 AT76 28.2 76.9 030 9000 200" })
+  check_eq(ex("Q-Link three seven delta, descend to eight thousand"), "ALT QLK37D 8000")
+  check_eq(ex("QLink 37D turn left heading 090"), "HDG QLK37D 90 LEFT")
+  check_eq(ex("QantasLink three seven delta descend 9000 feet"), "ALT QLK37D 9000")
+  check_eq(ex("Pacific four one one, climb flight level three one zero"), "ALT FJI411 FL310")
+  check_eq(ex("Cathay Pacific one three eight, climb flight level three eight zero"), "ALT CPA138 FL380")
+  check_eq(ex("Allied niner six four three, descend to seven thousand feet"), "ALT LLR9643 7000")
+  asked(ex("Link three seven delta, descend to eight thousand"), "Airlink's telephony for a QantasLink")
+  asked(ex("Pacific four one two, climb flight level three one zero"), "a flight number that differs")
+end
