@@ -12329,3 +12329,49 @@ do
   asked(ex("Link three seven delta, descend to eight thousand"), "Airlink's telephony for a QantasLink")
   asked(ex("Pacific four one two, climb flight level three one zero"), "a flight number that differs")
 end
+
+
+-- Cycle 50 (fctl): a waypoint's name spelled again in the phonetic alphabet straight after it ("direct SAMUD,
+-- spelling Sierra Alpha Mike Uniform Delta", "direct DPN, Delta Papa November") is the name said twice; letters
+-- that are not its name are asked about, naming both
+do
+  local _, ex = scene({ "DEFWPT DUMOS 29.3 77.1", "DEFWPT DPN 28.6 77.2", "CRE AKJ11 B38M 29.1 77.2 200 FL110 240",
+    "ADDWPT AKJ11 DUMOS", "ADDWPT AKJ11 DPN" })
+  check_eq(ex("Akasa one one, proceed direct DUMOS, spelling Delta Uniform Mike Oscar Sierra"), "DIRECT AKJ11 DUMOS")
+  check_eq(ex("Akasa one one, direct DPN, Delta Papa November, descend flight level one zero zero"),
+    "DIRECT AKJ11 DPN ; ALT AKJ11 FL100")
+  check_eq(ex("Akasa one one, direct DUMOS, I spell Delta Uniform Mike Oscar Sierra"), "DIRECT AKJ11 DUMOS")
+  asked(ex("Akasa one one, proceed direct DUMOS, spelling Delta Uniform Mike Oscar Tango"), "a spelling of other letters")
+  asked(ex("Akasa one one, proceed direct DPN, Delta Papa Mike"), "three letters that are not DPN")
+end
+
+-- Cycle 50 (fctl): a speed or level limited until a place, then the value bare ("280 knots until BOYSE, then 250",
+-- "till KAMOL, thereafter 220", a comma after the place or not) or said again after "after" and a place closing
+-- its clause ("reduce speed 250, after SUMAG 220"), is that instruction again from the place (AT DO); a value of
+-- another kind, or a place off the route, is asked
+do
+  local _, ex = scene({ "DEFWPT SUMAG 22.5 89.2", "DEFWPT KAMOL 22.9 88.1", "CRE AIC76 A320 22.4 89.6 280 FL150 290",
+    "ADDWPT AIC76 SUMAG" })
+  check_eq(ex("Air India 76, maintain two eight zero knots until SUMAG, then two five zero"),
+    "SPD AIC76 280 ; AT AIC76 SUMAG DO SPD AIC76 250")
+  check_eq(ex("Air India 76, maintain two eight zero knots till SUMAG, thereafter two two zero"),
+    "SPD AIC76 280 ; AT AIC76 SUMAG DO SPD AIC76 220")
+  check_eq(ex("Air India 76, maintain two eight zero knots till SUMAG, thereafter reduce two two zero"),
+    "SPD AIC76 280 ; AT AIC76 SUMAG DO SPD AIC76 220")
+  check_eq(ex("Air India 76, reduce speed two six zero, after SUMAG two two zero"),
+    "SPD AIC76 260 ; AT AIC76 SUMAG DO SPD AIC76 220")
+  check_eq(ex("Air India 76, descend flight level one two zero, after SUMAG flight level one zero zero"),
+    "ALT AIC76 FL120 ; AT AIC76 SUMAG DO ALT AIC76 FL100")
+  asked(ex("Air India 76, turn left heading 250, after SUMAG two two zero"), "a bare value after a heading")
+  asked(ex("Air India 76, reduce speed two six zero, after KAMOL two two zero"), "a place off the route")
+end
+
+-- Cycle 50 (fctl): "once again" opening a message is the message said again (Indian English for "I say again"),
+-- never a condition
+do
+  local _, ex = scene({ "CRE AXB13 B38M 13.0 79.0 270 FL130 260" })
+  check_eq(ex("Express India 13, once again, descend niner thousand feet"), "ALT AXB13 9000")
+  check_eq(ex("Express India 13, once again descend FL100, once level reduce 220"),
+    "ALT AXB13 FL100 ; ATALT AXB13 FL100 SPD AXB13 220")
+  asked(ex("Express India 13, once again"), "nothing said again")
+end
