@@ -12302,6 +12302,19 @@ do
   check_eq(ex("please delete the route of BAW968, I'm going to give it headings instead"), "DELRTE BAW968")
 end
 
+-- Cycle 50 (fctl): three digits alone in a condition that this request gave the aircraft as its speed, not as its
+-- level, are the speed reached (ATSPD), never a flight level above it; given as both, asked
+do
+  local _, ex = scene({ "CRE VTI21 A20N 19.0 73.0 090 FL190 280" })
+  check_eq(ex("Vistara 21, reduce speed two four zero, on reaching two four zero descend flight level one two zero"),
+    "SPD VTI21 240 ; ATSPD VTI21 240 ALT VTI21 FL120")
+  check_eq(ex("Vistara 21, slow to two six zero, when passing two six zero turn left heading 050"),
+    "SPD VTI21 260 ; ATSPD VTI21 260 HDG VTI21 50 LEFT")
+  check_eq(ex("Vistara 21, descend flight level one five zero, on reaching one five zero reduce speed 250"),
+    "ALT VTI21 FL150 ; ATALT VTI21 FL150 SPD VTI21 250")
+  asked(ex("Vistara 21, climb flight level two six zero, speed two six zero, on reaching two six zero turn left "
+    .. "heading 050"), "the same digits given as speed and level")
+end
 
 -- Cycle 50 (fctl): a city's airport bearing its name, none large, beside the large airport the city table names
 -- (within lexicon.city_nm) is that large one; far apart, the airport by the name stays
@@ -12329,7 +12342,6 @@ do
   asked(ex("Link three seven delta, descend to eight thousand"), "Airlink's telephony for a QantasLink")
   asked(ex("Pacific four one two, climb flight level three one zero"), "a flight number that differs")
 end
-
 
 -- Cycle 50 (fctl): a waypoint's name spelled again in the phonetic alphabet straight after it ("direct SAMUD,
 -- spelling Sierra Alpha Mike Uniform Delta", "direct DPN, Delta Papa November") is the name said twice; letters
