@@ -936,6 +936,13 @@ return function(H, f, compass)
       lat, lon = here.lat, here.lon
       self:explain(same, same + 2)
     end
+    -- ("move Cathay 138 to flight level 340": a level straight after "to", no place said, moves it up or down where
+    -- it is)
+    local level = qs[1] and qs[1].kind == "alt" and (qs[1].fl or self:word(qs[1].e - 1, "@feet")) and qs[1]
+    if (not lat or not lon) and not named_at and level and self:word(level.b - 1, "to")
+        and #self:refs_in(s.trig + 1, s.e, "waypoint") == 0 and here and here.lat then
+      lat, lon = here.lat, here.lon
+    end
     if (not lat or not lon) and not named_at then
       return self:need("Where should " .. id .. " go? Please give a latitude and longitude.")
     end

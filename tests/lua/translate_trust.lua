@@ -12387,3 +12387,25 @@ do
     "ALT AXB13 FL100 ; ATALT AXB13 FL100 SPD AXB13 220")
   asked(ex("Express India 13, once again"), "nothing said again")
 end
+
+-- Cycle 50 (fctl): a distance in DME said straight before its station's name ("at 30 DME Sydney") is counted from
+-- that navaid (ATDIST); a distance after "at" with no place it is counted from ("at 30 DME reduce 180") is asked,
+-- never dropped
+do
+  local _, ex = navscene({ "CRE VOZ81 B738 -33.6 151.3 220 6000 220" }, "a DME's station by name")
+  if ex then
+    check_eq(ex("Velocity 81, at three zero DME Sydney reduce speed one eight zero"), "ATDIST VOZ81 SY 30 SPD VOZ81 180")
+  end
+  local _, ex2 = scene({ "CRE VOZ81 B738 -33.6 151.3 220 6000 220" })
+  asked(ex2("Velocity 81, at 30 DME reduce speed 180"), "a DME with no station")
+  asked(ex2("Velocity 81 at 12 miles descend 4000"), "a distance with no place")
+  asked(ex2("Velocity 81, reduce speed 180, at 25 DME descend 4000"), "a DME with no station after a value")
+end
+
+-- Cycle 50 (fctl): "move X to FL340" with no place said moves it to that level where it is; a bare number or no
+-- "to" is still asked
+do
+  local _, ex = scene({ "CRE CPA13 A359 -35.1 150.5 230 FL360 280" })
+  check_eq(ex("move Cathay one three to flight level three four zero"), "MOVE CPA13 -35.1 150.5 FL340")
+  asked(ex("move Cathay 13 to 340"), "a bare number")
+end
