@@ -3360,8 +3360,9 @@ function G:segments(b, e)
               and self:word(p - 1, "after passing over leaving reaching"))
           end
         end
+        -- ("reduce speed 250, after SUMAG 220": a value again from a place opens its own instruction, G:after_place_value)
         if (last.intent == tr.intent or alt_pair or kept_noun) and not this.single
-            and not self:addressee_between(last, tr.pos) and not dist_between then
+            and not self:addressee_between(last, tr.pos) and not dist_between and not self:word(tr.pos, "after") then
           if tr.intent == "alt" or kept_noun then last.intent = tr.intent end
           merged = true
         end
@@ -4158,7 +4159,10 @@ function G:parse(b, e)
       -- crossing starts at its waypoint; "then" keeps its own reading)
       local crossed = self.crossed
       self.crossed = nil
-      if not self:at_waypoint(s, spec) then self[spec and spec.handler or "infer"](self, s, spec) end
+      -- (a value again after "after" and its place is the instruction's alone: G:until_then)
+      if (until_wp and until_wp.after) or not self:at_waypoint(s, spec) then
+        self[spec and spec.handler or "infer"](self, s, spec)
+      end
       local c0 = crossed and k > 1 and self:find_word(segs[k - 1].trig, s.trig, "thereafter afterwards after")
       if c0 and c0 < s.trig and (not self:word(c0, "after") or self:word(c0 + 1, "that"))
           and not self:any_instruction_in(c0 + 1, s.trig) and not self.ask and #self.out > n_before then
@@ -4537,14 +4541,21 @@ end
 -- the token after the waypoint's name, name }, else nil.
 function G:until_then(segs, k)
   local s, p = segs[k], segs[k - 1]
-  if not p or not (s["then"] or self:word(s.trig, "@then_words")) then return nil end
+  -- ("reduce speed 250, after SUMAG 220": the segment opened by "after" and its place, G:after_place_value)
+  if p and self:word(s.trig, "after") and self:after_place_value(s.trig) then
+    local r = self:refs_in(s.trig + 1, s.e, "waypoint")[1]
+    return { u = s.trig, e = r.e, name = r.name, after = true }
+  end
+  if not p or not (s["then"] or self:word(s.trig, "@then_words") or self:word_in(p.trig + 1, s.trig + 1, "@until_then_words")) then
+    return nil
+  end
   for u = p.trig + 1, s.trig - 1 do
     if self:word(u, "until till") then
       local r = self:refs_in(u + 1, s.trig, "waypoint")[1]
       local n = r and self:skip_fillers(r.e)
       if n and self.t[n] and self.t[n].text == "," then n = self:skip_fillers(n + 1) end
       if n and self:word(n, "and") then n = n + 1 end
-      if r and r.b == self:skip_fillers(u + 1) and self:word(n, "then") then
+      if r and r.b == self:skip_fillers(u + 1) and self:word(n, "then @until_then_words") then
         return { u = u, e = r.e, name = r.name }
       end
     end
@@ -4552,23 +4563,50 @@ function G:until_then(segs, k)
   return nil
 end
 
--- The kind ("spd" or "alt") of a value said bare after the "then" at i, straight after "until" (or "till") and a
--- waypoint, when the clause before holds a value of that kind ("maintain 280 knots until PEKIR then 250": a speed,
+-- The kind ("spd" or "alt") of a value said bare after the "then" (or lexicon.until_then_words) at i, straight
+-- after "until" (or "till") and a waypoint (a comma between at most), when the clause before holds a value of that kind ("maintain 280 knots until PEKIR then 250": a speed,
 -- with or without its unit; "maintain FL160 until PEKIR then FL120": a level by its unit, FL or feet); nil otherwise.
 function G:until_then_value(i)
-  local r = self.refs and self:refs_in(math.max(1, i - 4), i, "waypoint")[1]
-  if not r or self:skip_fillers(r.e) ~= i or not self:word(r.b - 1, "until till") then return nil end
-  local q = self:quantities(i + 1, i + 3)[1]
+  local r = self.refs and self:refs_in(math.max(1, i - 5), i, "waypoint")[1]
+  local n = r and self:skip_fillers(r.e)
+  if n and self.t[n] and self.t[n].text == "," then n = self:skip_fillers(n + 1) end
+  if not r or n ~= i or not self:word(r.b - 1, "until till") then return nil end
+  local q = self:quantities(i + 1, #self.t + 1)[1]
   if not q or q.b ~= self:skip_fillers(i + 1) then return nil end
   local before = self:quantities(math.max(1, r.b - 8), r.b - 1)
   local p = before[#before]
   if not p or p.e ~= r.b - 1 then return nil end
+  return self:value_again_kind(p, q)
+end
+
+-- The kind ("spd" or "alt") of value q said bare after a place, when it closes its clause and value p before the
+-- place is of that kind (a speed, with or without its unit: p by its unit or its noun or verb of speed; a level
+-- by its unit, FL or feet); nil otherwise.
+function G:value_again_kind(p, q)
   local after = self.t[q.e]
   if after and after.kind ~= "punct" then return nil end
   local function speed(x) return x.kind == "speed" or x.kind == "mach" end
-  if speed(p) and (speed(q) or (q.kind == "plain" and q.value >= 100 and q.value <= 400)) then return "spd" end
+  local p_speed = speed(p) or (p.kind == "plain" and self:word(p.b - 1, "speed airspeed @speed_verbs"))
+  if p_speed and (speed(q) or (q.kind == "plain" and q.value >= 100 and q.value <= 400)) then return "spd" end
   if p.kind == "alt" and q.kind == "alt" and (q.fl or self:word(q.e - 1, "@feet")) then return "alt" end
   return nil
+end
+
+-- "reduce speed 250, after SUMAG 220", "maintain FL230, after BOYSE FL150": the kind (G:value_again_kind) of a
+-- value said bare straight after "after" (at i) and a waypoint, opening a clause (a comma or "and" before it) that
+-- follows a value; the value is that instruction again, from the place (G:until_then). nil otherwise.
+function G:after_place_value(i)
+  local r = self.refs and self:refs_in(i + 1, math.min(#self.t + 1, i + 4), "waypoint")[1]
+  if not r or r.b ~= self:skip_fillers(i + 1) then return nil end
+  local q = self:quantities(r.e, #self.t + 1)[1]
+  if not q or q.b ~= self:skip_fillers(r.e) then return nil end
+  local c = i - 1
+  if self:word(c, "and") then c = c - 1 end
+  if not (self.t[c] and self.t[c].text == ",") then return nil end
+  local before = self:quantities(math.max(1, c - 8), c)
+  local p = before[#before]
+  if not p or p.e ~= c then return nil end
+  return self:value_again_kind(p, q)
 end
 
 -- True when segment k follows the one before it by a bare "then" in the formal phraseology of a
@@ -6119,6 +6157,31 @@ function G:exercise_names()
         and t.raw:match("^%u%l+$") and not t.keyword and #self:refs_in(k, k + 1) == 0 then
       self:mark_used(k, k + 1)
       self.noted[k] = true
+    end
+  end
+end
+
+-- "direct SAMUD, spelling Sierra Alpha Mike Uniform Delta", "direct DPN, Delta Papa November": a waypoint's name
+-- spelled again in the phonetic alphabet straight after it (a comma and words of lexicon.spelling_leads between,
+-- or none) is the name said twice, set aside. Spelled letters that are not its name, after a word of spelling or
+-- as many as its letters and closing the clause, are asked about, naming both: which place is meant is unknown.
+G.spelling_leads = set_of(lexicon.spelling_leads)
+function G:fixes_spelled()
+  for _, r in ipairs(self:refs_in(1, #self.t + 1, "waypoint")) do
+    local k, led = r.e, false
+    while self.t[k] and (self.t[k].text == "," or self.t[k].filler or G.spelling_leads[self.words[k]]) do
+      led = led or G.spelling_leads[self.words[k]] ~= nil
+      k = k + 1
+    end
+    local letters, e = "", k
+    while self.t[e] and self.t[e].kind == "word" and lexicon.phonetic[self.words[e]] do
+      letters, e = letters .. lexicon.phonetic[self.words[e]], e + 1
+    end
+    local name = r.name:upper()
+    if letters == name and #letters >= 2 then
+      self:set_aside(r.e, e - 1)
+    elseif #letters >= 2 and (led or (#letters == #name and (not self.t[e] or self.t[e].kind == "punct"))) then
+      self:need(string.format("I heard %s, spelled '%s' (%s). Which waypoint do you mean?", name, self:raw(k, e), letters))
     end
   end
 end
@@ -10023,6 +10086,7 @@ function M.translate(text, world)
   g:stations()
   g:exercise_names()
   g:places_by_position()
+  g:fixes_spelled()
   -- only what is not simulated was said: no instruction word and no value left
   if note and not g:any_instruction() and #g:quantities(1, #g.t + 1) == 0 then return { commands = {}, note = note } end
   local cond, rest = g:condition()

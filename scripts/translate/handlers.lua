@@ -2110,6 +2110,24 @@ function m:at_altitude(s)
   local ids = self:acids(s)
   if #ids == 0 then return nil end
   if groupwise and ((self:state(ids[1]) or {}).alt_ft or 0) < L.groupwise_from_ft then return nil end
+  -- ("reduce speed 250, on reaching two five zero descend FL150": three digits alone that this request gave the
+  -- aircraft as its speed [kt], and not as its level, are the speed reached: ATSPD; given as both, asked)
+  if fl_digits and q.kind == "plain" then
+    local spd, alt = false, false
+    for _, c in ipairs(self.out) do
+      spd = spd or c == "SPD " .. ids[1] .. " " .. f.int(q.value)
+      alt = alt or c == "ALT " .. ids[1] .. " " .. f.alt(q.value * 100, true)
+    end
+    if spd and alt then
+      self.ask = string.format("'%s': should %s wait for speed %s or for %s?", self:raw(a, q.e), ids[1],
+        f.int(q.value), f.alt(q.value * 100, true))
+      return nil
+    end
+    if spd then
+      self:mark_used(q.b, q.e)  -- the condition's speed is not the instruction's value
+      return "ATSPD " .. ids[1] .. " " .. f.int(q.value)
+    end
+  end
   self:mark_used(q.b, q.e)  -- the condition's altitude is not the instruction's value
   if noun then self:explain(noun, noun + 1) end
   if groupwise then return "ATALT " .. ids[1] .. " " .. f.alt(groupwise, true) end
@@ -2304,18 +2322,30 @@ function m:at_distance(s)
         k = side
       end
       local p = self:word(k, "from of to before") and self:skip_fillers(k + 1)
+      -- ("at 30 DME Sydney reduce 180": a distance in DME said straight before its station's name or ident, a
+      -- navaid)
+      local dme = not p and self:word(q.e - 1, "dme") and k < s.trig and self.t[k].kind == "word" and k
+      p = p or dme
       -- (the navaid's kind said before its name, "from the VOR Bogota", is no place of its own)
       if p and self:word(p, "@navaid_kinds") and self.t[p + 1] and self.t[p + 1].kind == "word" then p = p + 1 end
       local r = p and self:refs_in(p, p + 1, "waypoint")[1]
       local ids = p and self:acids(s) or {}
       -- ("when 20 miles from Minna descend FL200", "ten miles from Zurich East descend": a navaid or airport
       -- said by its name, of one or two words)
-      local name = r and r.name or (p and #ids == 1 and self:place_by_name(p, math.min(s.e, p + 2), self:state(ids[1]), true))
+      local state = #ids == 1 and self:state(ids[1])
+      local name = r and r.name or (dme and state and self:navaid_by_name(p, math.min(s.trig, p + 2), state))
+        or (p and state and self:place_by_name(p, math.min(s.e, p + 2), state, true))
       if name then
         if #ids ~= 1 then return nil end
         self:mark_used(q.b, q.e)  -- the condition's distance is not the instruction's value
         self:explain(q.e, p)  -- ("out from", "prior to")
         return "ATDIST " .. ids[1] .. " " .. name .. " " .. f.num(q.value)
+      end
+      -- ("at 30 DME reduce 180", "at 12 miles descend 4000": a distance opening the instruction with no place it
+      -- is counted from is a condition squawk cannot place, asked, never dropped)
+      if q.kind == "dist" and self:word(q.b - 1, "at") and not p then
+        return self:need(string.format("'%s' from where? Please name the place the distance is counted from.",
+          self:raw(q.b - 1, q.e)))
       end
     end
   end

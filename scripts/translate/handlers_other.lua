@@ -939,6 +939,13 @@ return function(H, f, compass)
       lat, lon = here.lat, here.lon
       self:explain(same, same + 2)
     end
+    -- ("move Cathay 138 to flight level 340": a level straight after "to", no place said, moves it up or down where
+    -- it is)
+    local level = qs[1] and qs[1].kind == "alt" and (qs[1].fl or self:word(qs[1].e - 1, "@feet")) and qs[1]
+    if (not lat or not lon) and not named_at and level and self:word(level.b - 1, "to")
+        and #self:refs_in(s.trig + 1, s.e, "waypoint") == 0 and here and here.lat then
+      lat, lon = here.lat, here.lon
+    end
     if (not lat or not lon) and not named_at then
       return self:need("Where should " .. id .. " go? Please give a latitude and longitude.")
     end
@@ -1545,6 +1552,21 @@ return function(H, f, compass)
           for _, id in ipairs(kept(city(phrase))) do
             if not known[id] then ids[#ids + 1] = id end
           end
+        end
+        -- (the city's airport bearing its name, none large, beside the large one lexicon.city_airports names,
+        -- within L.city_nm: the large one, where the city's traffic flies; "Hyderabad" is VOHS "RAJIV GANDHI
+        -- INTL", not VOHY "HYDERABAD", Begumpet)
+        local locate = self.world.user_waypoint_at
+        if #ids > 0 and L.city_airports[phrase] and class and locate then
+          local large = {}
+          for _, id in ipairs(ids) do
+            if class(id) == "LARGE" then large = nil break end
+            local lat, lon = locate(id)
+            for _, x in ipairs(lat and (city or list)(L.city_airports[phrase], lat, lon, L.city_nm) or {}) do
+              if class(x) == "LARGE" then large[#large + 1] = x end
+            end
+          end
+          if large and #large > 0 then ids = large end
         end
         if #ids == 0 and L.city_airports[phrase] then
           ids = kept(list(L.city_airports[phrase], ...))

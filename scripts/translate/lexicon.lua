@@ -249,6 +249,9 @@ return {
         "at the moment", "for a moment", "for now", "right now", "for the moment", "in order to", "in that order",
         "in this order", "sorry to bother you", "to be safe", "to be sure", "to be on the safe side", "just in case",
         "after that", "after this",
+        -- a message said again, in Indian English as "I say again" is elsewhere ("Express India 1356, once again,
+        -- descend 9000 feet"): never a condition
+        "once again",
         -- an aircraft handed to a teammate ("can you look after Logan 52B for me - ...")
         "look after",
         -- a demonstration's pointers to the audience ("watch the data block", "here's the fun part")
@@ -650,6 +653,9 @@ return {
   described_quantifiers = { "both", "all" },
   -- words after which a clause is a new instruction
   then_words = { "then" },
+  -- words that, as "then" does, open what follows a limit "until" a place ("maintain 250 knots till KAMOL,
+  -- thereafter 220": from KAMOL; G:until_then)
+  until_then_words = { "thereafter" },
   -- words after which a "+" typed before the number is its sign ("vs +1500"): a climb
   -- a step of a study session named after "for" with no determiner ("freeze sim for debrief"): a purpose
   session_steps = { debrief = true, debriefing = true, briefing = true, discussion = true, lunch = true,
@@ -1490,6 +1496,8 @@ return {
   -- that no mark is a word squawk knows: a registration typed in lower case beside a new aircraft's type ("new
   -- c172 ooxyz ...") is its callsign when it opens with one (one letter, D-EABC, opens too many words)
   registration_marks = "CS EC EI HA HB LN LX OE OH OK OM OO OY PH SE SP SX TC TF VH YR ZK ZS",
+  -- words that lead a waypoint's name spelled again after it ("direct SAMUD, spelling Sierra Alpha ...", "I spell")
+  spelling_leads = { "spelling", "spelled", "spelt", "spell", "i" },
   -- the phonetic alphabet (spelled waypoint names)
   phonetic = {
     alpha = "A", alfa = "A", bravo = "B", charlie = "C", delta = "D", echo = "E", foxtrot = "F", golf = "G",

@@ -193,6 +193,8 @@ local names = {
     { "citrus", "TCF" },
     { "cactus", "AWE" },
     { "fiji", "FJI" },
+    { "pacific", "FJI" },  -- (Fiji Airways' ICAO telephony, from Air Pacific)
+    { "cathay pacific", "CPA" },  -- (Cathay's own name, said with a flight number: never Fiji's "Pacific")
     { "gemini", "GXA" },
     { "chronos", "CNS" },
     { "jetcard", "DPJ" },
@@ -313,6 +315,10 @@ local names = {
     { "viva", "VIV" },
     { "scooter", "TGW" },  -- (Scoot)
     { "rex", "RXA" },  -- (Regional Express)
+    { "q-link", "QLK" },  -- (QantasLink's ICAO telephony, said and typed "Q-Link", "Q Link", "QLink")
+    { "q link", "QLK" },
+    { "qlink", "QLK" },
+    { "qantaslink", "QLK" },
     { "red cap", "AXM" },  -- (AirAsia)
     { "xanadu", "XAX" },  -- (AirAsia X)
     { "malaysian", "MAS" },
@@ -328,6 +334,7 @@ local names = {
     { "air india express", "AXB" },
     { "akasa air", "AKJ" },
     { "akasa", "AKJ" },  -- (Akasa Air)
+    { "allied", "LLR" },  -- (Alliance Air, India)
     { "pakistan", "PIA" },
     { "bangladesh", "BBC" },  -- (Biman Bangladesh)
     { "srilankan", "ALK" },

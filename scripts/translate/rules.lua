@@ -732,8 +732,11 @@ return function(intent, rule, words)
   -- "maintain 280 knots until PEKIR then 250", "maintain FL160 until PEKIR then FL120": a value of the limited
   -- instruction's kind said bare after "until" a place "then" is that instruction again, from the place
   -- (G:until_then_value)
-  rule { "then", "spd", when = function(g, i) return g:until_then_value(i) == "spd" end }
-  rule { "then", "alt", when = function(g, i) return g:until_then_value(i) == "alt" end }
+  rule { "then @until_then_words", "spd", when = function(g, i) return g:until_then_value(i) == "spd" end }
+  rule { "then @until_then_words", "alt", when = function(g, i) return g:until_then_value(i) == "alt" end }
+  -- "reduce speed 250, after SUMAG 220": the same, after a place (G:after_place_value)
+  rule { "after", "spd", when = function(g, i) return g:after_place_value(i) == "spd" end }
+  rule { "after", "alt", when = function(g, i) return g:after_place_value(i) == "alt" end }
   rule { "@compass", "hdg", prev = { 1, "then" } }  -- "go up to FL320, then east"  -- "go east", "go northeast": the heading of that point
   rule { "around", false, prev = { 3, "turn" } }
 

@@ -12419,3 +12419,111 @@ do
   asked(ex("Please slow all four aircraft by 20 knots."), "a count that does not fly")
   asked(ex("Please delete all three aircraft."), "deleting several aircraft is confirmed")
 end
+
+-- Cycle 50 (fctl): three digits alone in a condition that this request gave the aircraft as its speed, not as its
+-- level, are the speed reached (ATSPD), never a flight level above it; given as both, asked
+do
+  local _, ex = scene({ "CRE VTI21 A20N 19.0 73.0 090 FL190 280" })
+  check_eq(ex("Vistara 21, reduce speed two four zero, on reaching two four zero descend flight level one two zero"),
+    "SPD VTI21 240 ; ATSPD VTI21 240 ALT VTI21 FL120")
+  check_eq(ex("Vistara 21, slow to two six zero, when passing two six zero turn left heading 050"),
+    "SPD VTI21 260 ; ATSPD VTI21 260 HDG VTI21 50 LEFT")
+  check_eq(ex("Vistara 21, descend flight level one five zero, on reaching one five zero reduce speed 250"),
+    "ALT VTI21 FL150 ; ATALT VTI21 FL150 SPD VTI21 250")
+  asked(ex("Vistara 21, climb flight level two six zero, speed two six zero, on reaching two six zero turn left "
+    .. "heading 050"), "the same digits given as speed and level")
+end
+
+-- Cycle 50 (fctl): a city's airport bearing its name, none large, beside the large airport the city table names
+-- (within lexicon.city_nm) is that large one; far apart, the airport by the name stays
+do
+  local _, ex = navscene({ "CRE AIC77 A320 18.4 80.3 230 FL190 280", "CRE ACA5 A320 44.0 -76.0 090 FL190 280" },
+    "a city's two airports")
+  if ex then
+    check_eq(ex("Air India 77, destination Hyderabad"), "DEST AIC77 VOHS")
+    check_eq(ex("Air Canada 5 destination Kingston"), "DEST ACA5 CYGK")
+  end
+end
+
+-- Cycle 50 (fctl): telephony of Australia, New Zealand, the Pacific and India: "Q-Link 37D" (QLK, QantasLink, also
+-- "Q Link", "QLink", "QantasLink"), "Pacific 411" (FJI, Fiji Airways), "Allied 9643" (LLR, Alliance Air); "Cathay
+-- Pacific 138" stays Cathay's; "Link 37D" (Airlink) and a number that differs are still asked
+do
+  local _, ex = scene({ "CRE QLK37D DH8D -33.5 150.2 110 11000 220", "CRE FJI411 A332 -35.9 174.9 190 FL280 290",
+    "CRE CPA138 A359 -35.1 150.5 230 FL360 280", "CRE LLR9643 AT76 28.2 76.9 030 9000 200" })
+  check_eq(ex("Q-Link three seven delta, descend to eight thousand"), "ALT QLK37D 8000")
+  check_eq(ex("QLink 37D turn left heading 090"), "HDG QLK37D 90 LEFT")
+  check_eq(ex("QantasLink three seven delta descend 9000 feet"), "ALT QLK37D 9000")
+  check_eq(ex("Pacific four one one, climb flight level three one zero"), "ALT FJI411 FL310")
+  check_eq(ex("Cathay Pacific one three eight, climb flight level three eight zero"), "ALT CPA138 FL380")
+  check_eq(ex("Allied niner six four three, descend to seven thousand feet"), "ALT LLR9643 7000")
+  asked(ex("Link three seven delta, descend to eight thousand"), "Airlink's telephony for a QantasLink")
+  asked(ex("Pacific four one two, climb flight level three one zero"), "a flight number that differs")
+end
+
+-- Cycle 50 (fctl): a waypoint's name spelled again in the phonetic alphabet straight after it ("direct SAMUD,
+-- spelling Sierra Alpha Mike Uniform Delta", "direct DPN, Delta Papa November") is the name said twice; letters
+-- that are not its name are asked about, naming both
+do
+  local _, ex = scene({ "DEFWPT DUMOS 29.3 77.1", "DEFWPT DPN 28.6 77.2", "CRE AKJ11 B38M 29.1 77.2 200 FL110 240",
+    "ADDWPT AKJ11 DUMOS", "ADDWPT AKJ11 DPN" })
+  check_eq(ex("Akasa one one, proceed direct DUMOS, spelling Delta Uniform Mike Oscar Sierra"), "DIRECT AKJ11 DUMOS")
+  check_eq(ex("Akasa one one, direct DPN, Delta Papa November, descend flight level one zero zero"),
+    "DIRECT AKJ11 DPN ; ALT AKJ11 FL100")
+  check_eq(ex("Akasa one one, direct DUMOS, I spell Delta Uniform Mike Oscar Sierra"), "DIRECT AKJ11 DUMOS")
+  asked(ex("Akasa one one, proceed direct DUMOS, spelling Delta Uniform Mike Oscar Tango"), "a spelling of other letters")
+  asked(ex("Akasa one one, proceed direct DPN, Delta Papa Mike"), "three letters that are not DPN")
+end
+
+-- Cycle 50 (fctl): a speed or level limited until a place, then the value bare ("280 knots until BOYSE, then 250",
+-- "till KAMOL, thereafter 220", a comma after the place or not) or said again after "after" and a place closing
+-- its clause ("reduce speed 250, after SUMAG 220"), is that instruction again from the place (AT DO); a value of
+-- another kind, or a place off the route, is asked
+do
+  local _, ex = scene({ "DEFWPT SUMAG 22.5 89.2", "DEFWPT KAMOL 22.9 88.1", "CRE AIC76 A320 22.4 89.6 280 FL150 290",
+    "ADDWPT AIC76 SUMAG" })
+  check_eq(ex("Air India 76, maintain two eight zero knots until SUMAG, then two five zero"),
+    "SPD AIC76 280 ; AT AIC76 SUMAG DO SPD AIC76 250")
+  check_eq(ex("Air India 76, maintain two eight zero knots till SUMAG, thereafter two two zero"),
+    "SPD AIC76 280 ; AT AIC76 SUMAG DO SPD AIC76 220")
+  check_eq(ex("Air India 76, maintain two eight zero knots till SUMAG, thereafter reduce two two zero"),
+    "SPD AIC76 280 ; AT AIC76 SUMAG DO SPD AIC76 220")
+  check_eq(ex("Air India 76, reduce speed two six zero, after SUMAG two two zero"),
+    "SPD AIC76 260 ; AT AIC76 SUMAG DO SPD AIC76 220")
+  check_eq(ex("Air India 76, descend flight level one two zero, after SUMAG flight level one zero zero"),
+    "ALT AIC76 FL120 ; AT AIC76 SUMAG DO ALT AIC76 FL100")
+  asked(ex("Air India 76, turn left heading 250, after SUMAG two two zero"), "a bare value after a heading")
+  asked(ex("Air India 76, reduce speed two six zero, after KAMOL two two zero"), "a place off the route")
+end
+
+-- Cycle 50 (fctl): "once again" opening a message is the message said again (Indian English for "I say again"),
+-- never a condition
+do
+  local _, ex = scene({ "CRE AXB13 B38M 13.0 79.0 270 FL130 260" })
+  check_eq(ex("Express India 13, once again, descend niner thousand feet"), "ALT AXB13 9000")
+  check_eq(ex("Express India 13, once again descend FL100, once level reduce 220"),
+    "ALT AXB13 FL100 ; ATALT AXB13 FL100 SPD AXB13 220")
+  asked(ex("Express India 13, once again"), "nothing said again")
+end
+
+-- Cycle 50 (fctl): a distance in DME said straight before its station's name ("at 30 DME Sydney") is counted from
+-- that navaid (ATDIST); a distance after "at" with no place it is counted from ("at 30 DME reduce 180") is asked,
+-- never dropped
+do
+  local _, ex = navscene({ "CRE VOZ81 B738 -33.6 151.3 220 6000 220" }, "a DME's station by name")
+  if ex then
+    check_eq(ex("Velocity 81, at three zero DME Sydney reduce speed one eight zero"), "ATDIST VOZ81 SY 30 SPD VOZ81 180")
+  end
+  local _, ex2 = scene({ "CRE VOZ81 B738 -33.6 151.3 220 6000 220" })
+  asked(ex2("Velocity 81, at 30 DME reduce speed 180"), "a DME with no station")
+  asked(ex2("Velocity 81 at 12 miles descend 4000"), "a distance with no place")
+  asked(ex2("Velocity 81, reduce speed 180, at 25 DME descend 4000"), "a DME with no station after a value")
+end
+
+-- Cycle 50 (fctl): "move X to FL340" with no place said moves it to that level where it is; a bare number or no
+-- "to" is still asked
+do
+  local _, ex = scene({ "CRE CPA13 A359 -35.1 150.5 230 FL360 280" })
+  check_eq(ex("move Cathay one three to flight level three four zero"), "MOVE CPA13 -35.1 150.5 FL340")
+  asked(ex("move Cathay 13 to 340"), "a bare number")
+end
