@@ -373,7 +373,7 @@ function m:acids(s)
   -- before or after it: asked, unless the aircraft instructed together before are that group (two for
   -- "both", every aircraft flying for "all")
   local before = self.subjects and self.subject == (self.subjects or {})[1] and #self.subjects or 0
-  if #ids == 0 then
+  if #ids == 0 and self:said("both everyone everybody all each every") then  -- (none of them said: no group)
     for k = s.trig - 1, 1, -1 do
       local t = self.t[k]
       if t.kind == "punct" or self:intent_at(k) then break end
