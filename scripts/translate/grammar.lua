@@ -1880,6 +1880,7 @@ end
 -- aircraft or value, opens with none of lexicon.diversion_not_reason and holds a word beside its places: why the
 -- aircraft diverts (a place named in it is no second destination).
 function G:diversion_reason(k)
+  if not self:said("divert diverting send") then return false end  -- (no diversion word said: no walk back)
   local x = k - 1
   while x > 0 and not (self.t[x].kind == "punct" and self.t[x].text ~= ",") and not self:intent_at(x) do x = x - 1 end
   if x < 1 or self:intent_at(x) ~= "dest" or not self:word(x, "divert diverting send") then return false end
