@@ -7945,7 +7945,6 @@ function G:not_simulated()
         if (not c.near or self:near_any(i, c.near, c.window))
             and (not c.and_near or self:near_any(i + (c.window or 4), c.and_near[1], c.and_near[2]))
             and (not c.after_callsign or self:callsign_before(i))
-            and (not c.after_instruction or self:instruction_before(i))
             and (not c.named_after or (self.t[i + 1] and self.t[i + 1].kind == "word"
               and (self.t[i + 1].raw:match("^%u") or #self:refs_in(i + 1, i + 2, "waypoint") > 0)))
             and (not c.last or self:said_last(i, c.last ~= true and c.last or nil, c.own_clause))
@@ -7958,7 +7957,8 @@ function G:not_simulated()
             and (not c.clock or self:clock_limit(i))
             and not (c.not_after and self:word(i - 1, c.not_after)) and not self:word(i + 1, "not")
             and (not c.bare or self:said_bare(i)) and (not c.manner or self:said_as_manner(i))
-            and (not c.rate_manner or self:rate_manner(i)) then
+            and (not c.rate_manner or self:rate_manner(i))
+            and (not c.after_instruction or self:instruction_before(i)) then
           local expected = c.not_aircraft_to and self:aircraft_then_to(i + 1)
           if c.routed and self:limit_off_route(i, c.window) then break end
           if expected then
