@@ -659,6 +659,14 @@ local function airline_positions(self)
   return at
 end
 
+-- True when token i lies inside a reference (an aircraft's callsign, a type, a place).
+local function in_ref(self, i)
+  for _, r in ipairs(self.refs) do
+    if r.b <= i and i < r.e then return true end
+  end
+  return false
+end
+
 -- The first airline name (names.lua telephony or common name, a capital in its first word as typed:
 -- "Luxair", "easyJet"; "reach" and "easy" are words too; in any case with `any_case`) said at a clause's start (the utterance's,
 -- or after punctuation, "and" or "then") with no flight number, letters, "heavy" or a correction
@@ -668,15 +676,14 @@ function m:airline_said_alone(s, any_case)
   local b  -- the start of s's clause, found once an airline is named before s.b
   for _, i in ipairs(airline_positions(self)) do
     if i >= s.e then break end
-    if i < s.b and not b then
+    if i < s.b and not b and not in_ref(self, i) then  -- (an airline inside a reference is never said alone)
       b = s.b
       while b > 1 and self.t[b - 1].kind ~= "punct" and not self:word(b - 1, "and @then_words") do b = b - 1 end
     end
     if i >= (b or s.b) then
       local icao, e = self:airline_at(i)
       local nxt = self.t[e]
-      local inside = false
-      for _, r in ipairs(self.refs) do inside = inside or (r.b <= i and i < r.e) end
+      local inside = in_ref(self, i)
       local starts = i == 1 or self.t[i - 1].kind == "punct" or self:word(i - 1, "and @then_words")
       if starts and (e > i + 1 or airline_names()[self.t[i].text]) and (any_case or self.t[i].raw:match("%u")) and not inside
           and not (nxt and (nxt.kind == "number" or nxt.number_word or L.phonetic[nxt.text]
