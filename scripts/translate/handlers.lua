@@ -126,6 +126,10 @@ end
 -- asked by the accounting. Words noted as not simulated ("expect descent"), in a reason or of a motion stopped
 -- ("stop descent, climb FL250") move nothing.
 function m:opposite_motions(b, e)
+  -- (no climb's word or no descent's word said in the request: none to oppose)
+  if not ((self:said(self.motion.up) or self:said("up")) and (self:said(self.motion.down) or self:said("down"))) then
+    return nil
+  end
   local names, up, down = self:refs_in(b, e, "aircraft"), nil, nil
   local qs = self:quantities(b, e)
   local last, signs = qs[#qs], {}  -- (signs[i]: "up" or "down" there is a rate's sign, straight beside its value)
