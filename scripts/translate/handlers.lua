@@ -1525,7 +1525,8 @@ function m:type_refs()
   end
   local callsigns = next(named) ~= nil
   local i = 1
-  while i <= #self.t do
+  local last = self:said("the") and #self.t or math.min(#self.t, 1)  -- (a type is read after "the" or opening)
+  while i <= last do
     local b = i
     local the = self:word(i - 1, "the")
     if not the and SIZE_WORDS[self.t[i - 1] and self.t[i - 1].text or ""] and self:word(i - 2, "the") then
