@@ -8221,9 +8221,9 @@ function G:discretion_without_level()
       for _, p in ipairs(DISCRETION) do
         local ok = true
         for j = 1, #p do ok = ok and self.t[k + j - 1] ~= nil and self.t[k + j - 1].text == p[j] end
-        local ids = self:refs_in(1, #self.t + 1, "aircraft")
         -- (the level may follow in a clause of its own: "descend at pilot's discretion, maintain 12000")
         if ok and #self:quantities(i, #self.t + 1) == 0 then
+          local ids = self:refs_in(1, #self.t + 1, "aircraft")
           self.ask = string.format("To what level should %s %s? Please give a level or an altitude.",
             #ids == 1 and ids[1].name or "the aircraft", (self.t[i].text:gsub("ing$", "")))
           return
