@@ -1910,6 +1910,7 @@ end
 -- aircraft or value, opens with none of lexicon.diversion_not_reason and holds a word beside its places: why the
 -- aircraft diverts (a place named in it is no second destination).
 function G:diversion_reason(k)
+  if not self:said("divert diverting send") then return false end  -- (no diversion word said: no walk back)
   local x = k - 1
   while x > 0 and not (self.t[x].kind == "punct" and self.t[x].text ~= ",") and not self:intent_at(x) do x = x - 1 end
   if x < 1 or self:intent_at(x) ~= "dest" or not self:word(x, "divert diverting send") then return false end
@@ -8085,7 +8086,6 @@ function G:not_simulated()
         if (not c.near or self:near_any(i, c.near, c.window))
             and (not c.and_near or self:near_any(i + (c.window or 4), c.and_near[1], c.and_near[2]))
             and (not c.after_callsign or self:callsign_before(i))
-            and (not c.after_instruction or self:instruction_before(i))
             and (not c.named_after or (self.t[i + 1] and self.t[i + 1].kind == "word"
               and (self.t[i + 1].raw:match("^%u") or #self:refs_in(i + 1, i + 2, "waypoint") > 0)))
             and (not c.last or self:said_last(i, c.last ~= true and c.last or nil, c.own_clause))
@@ -8098,7 +8098,8 @@ function G:not_simulated()
             and (not c.clock or self:clock_limit(i))
             and not (c.not_after and self:word(i - 1, c.not_after)) and not self:word(i + 1, "not")
             and (not c.bare or self:said_bare(i)) and (not c.manner or self:said_as_manner(i))
-            and (not c.rate_manner or self:rate_manner(i)) then
+            and (not c.rate_manner or self:rate_manner(i))
+            and (not c.after_instruction or self:instruction_before(i)) then
           local expected = c.not_aircraft_to and self:aircraft_then_to(i + 1)
           if c.routed and self:limit_off_route(i, c.window) then break end
           if expected then
@@ -8361,9 +8362,9 @@ function G:discretion_without_level()
       for _, p in ipairs(DISCRETION) do
         local ok = true
         for j = 1, #p do ok = ok and self.t[k + j - 1] ~= nil and self.t[k + j - 1].text == p[j] end
-        local ids = self:refs_in(1, #self.t + 1, "aircraft")
         -- (the level may follow in a clause of its own: "descend at pilot's discretion, maintain 12000")
         if ok and #self:quantities(i, #self.t + 1) == 0 then
+          local ids = self:refs_in(1, #self.t + 1, "aircraft")
           self.ask = string.format("To what level should %s %s? Please give a level or an altitude.",
             #ids == 1 and ids[1].name or "the aircraft", (self.t[i].text:gsub("ing$", "")))
           return

@@ -126,6 +126,10 @@ end
 -- asked by the accounting. Words noted as not simulated ("expect descent"), in a reason or of a motion stopped
 -- ("stop descent, climb FL250") move nothing.
 function m:opposite_motions(b, e)
+  -- (no climb's word or no descent's word said in the request: none to oppose)
+  if not ((self:said(self.motion.up) or self:said("up")) and (self:said(self.motion.down) or self:said("down"))) then
+    return nil
+  end
   local names, up, down = self:refs_in(b, e, "aircraft"), nil, nil
   local qs = self:quantities(b, e)
   local last, signs = qs[#qs], {}  -- (signs[i]: "up" or "down" there is a rate's sign, straight beside its value)
@@ -375,7 +379,7 @@ function m:acids(s)
   -- before or after it: asked, unless the aircraft instructed together before are that group (two for
   -- "both", every aircraft flying for "all")
   local before = self.subjects and self.subject == (self.subjects or {})[1] and #self.subjects or 0
-  if #ids == 0 then
+  if #ids == 0 and self:said("both everyone everybody all each every") then  -- (none of them said: no group)
     for k = s.trig - 1, 1, -1 do
       local t = self.t[k]
       if t.kind == "punct" or self:intent_at(k) then break end
@@ -678,6 +682,14 @@ local function airline_positions(self)
   return at
 end
 
+-- True when token i lies inside a reference (an aircraft's callsign, a type, a place).
+local function in_ref(self, i)
+  for _, r in ipairs(self.refs) do
+    if r.b <= i and i < r.e then return true end
+  end
+  return false
+end
+
 -- The first airline name (names.lua telephony or common name, a capital in its first word as typed:
 -- "Luxair", "easyJet"; "reach" and "easy" are words too; in any case with `any_case`) said at a clause's start (the utterance's,
 -- or after punctuation, "and" or "then") with no flight number, letters, "heavy" or a correction
@@ -687,15 +699,14 @@ function m:airline_said_alone(s, any_case)
   local b  -- the start of s's clause, found once an airline is named before s.b
   for _, i in ipairs(airline_positions(self)) do
     if i >= s.e then break end
-    if i < s.b and not b then
+    if i < s.b and not b and not in_ref(self, i) then  -- (an airline inside a reference is never said alone)
       b = s.b
       while b > 1 and self.t[b - 1].kind ~= "punct" and not self:word(b - 1, "and @then_words") do b = b - 1 end
     end
     if i >= (b or s.b) then
       local icao, e = self:airline_at(i)
       local nxt = self.t[e]
-      local inside = false
-      for _, r in ipairs(self.refs) do inside = inside or (r.b <= i and i < r.e) end
+      local inside = in_ref(self, i)
       local starts = i == 1 or self.t[i - 1].kind == "punct" or self:word(i - 1, "and @then_words")
       if starts and (e > i + 1 or airline_names()[self.t[i].text]) and (any_case or self.t[i].raw:match("%u")) and not inside
           and not (nxt and (nxt.kind == "number" or nxt.number_word or L.phonetic[nxt.text]
@@ -1533,7 +1544,8 @@ function m:type_refs()
   end
   local callsigns = next(named) ~= nil
   local i = 1
-  while i <= #self.t do
+  local last = self:said("the") and #self.t or math.min(#self.t, 1)  -- (a type is read after "the" or opening)
+  while i <= last do
     local b = i
     local the = self:word(i - 1, "the")
     if not the and SIZE_WORDS[self.t[i - 1] and self.t[i - 1].text or ""] and self:word(i - 2, "the") then
