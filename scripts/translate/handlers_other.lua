@@ -1210,7 +1210,7 @@ return function(H, f, compass)
     end
     local at = 1
     while kept[at] and kept[at].b < k do at = at + 1 end
-    table.insert(kept, at, { kind = "waypoint", name = id, b = k, e = stop })
+    table.insert(kept, at, { kind = "waypoint", name = id, b = k, e = stop, exists = true })
     self.refs = kept
     return stop
   end

@@ -1005,7 +1005,7 @@ return {
       -- a study's questionnaires and measures ("fill in the NASA-TLX")
       "nasa", "tlx", "nasa-tlx" },
   -- words before a waypoint that a direct-to flies past ("skip TP1 and go direct TP2")
-  passed_over = { "skip", "skipping", "bypass", "bypassing", "not", "instead" },
+  passed_over = { "skip", "skipping", "bypass", "bypassing", "omit", "omitting", "not", "instead" },
   below = { "below", "under" },
   above = { "above", "over" },
   relative = { "present", "current", "actual", "by" },
@@ -1451,6 +1451,10 @@ return {
     relative_fill = { "just", "has", "have", "had", "is", "was", "now", "recently", "only", "since" } },
   -- kinds of navaid, said beside a navaid's name ("the Pampus VOR, PAM")
   navaid_kinds = { "vor", "ndb", "dme", "vortac", "navaid", "beacon" },
+  -- words that put a place's ident after its name ("Thermal, that is TRM"), and the lower-case words inside a
+  -- place's name ("Truth or Consequences") (G.named_idents)
+  apposition = { "that is", "that's", "i.e.", "ie", "namely" },
+  place_name_joiners = { "or", "of" },
   -- a condition on a place said beside value instructions, which read no place (G:passage_left): a word of
   -- `passage` opens one whatever follows ("passing the beacon", "abeam it"), one of `passage_at` before a word of
   -- `passage_nouns`, navaid_kinds or airport_nouns ("over the VOR", "at the marker")

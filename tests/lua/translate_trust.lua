@@ -12301,3 +12301,30 @@ do
   local _, ex = scene({ "CRE BAW968 A320 52.6 9.0 010 FL180 280", "ADDWPT BAW968 52.8 9.0" })
   check_eq(ex("please delete the route of BAW968, I'm going to give it headings instead"), "DELRTE BAW968")
 end
+
+-- Cycle 50 (f131b): a place said by its name with its ident in apposition ("Gila Bend, GBN", "Thermal, that is
+-- TRM", "Truth or Consequences (TCS)", "the Stanfield VOR, TFD") is that ident wherever a place is read (direct,
+-- route, a condition's place); a name the navdata does not give that ident is asked. A leading "when it passes the
+-- NAME VOR" of the route is its condition; "omitting" a place is passing it on a direct-to
+do
+  local _, ex = navscene({ "CRE SWA55 B737 32.70 -111.60 270 FL260 280", "ADDWPT SWA55 TFD", "ADDWPT SWA55 GBN",
+    "CRE AAL7 A321 33.50 -112.50 090 FL300 290" }, "places said by name and ident")
+  if ex then
+    check_eq(ex("Please send Southwest 55 directly to Gila Bend, GBN."), "DIRECT SWA55 GBN")
+    check_eq(ex("When Southwest 55 passes Stanfield, TFD, please have it descend to FL220."),
+      "AT SWA55 TFD DO ALT SWA55 FL220")
+    check_eq(ex("When Southwest 55 passes the Stanfield VOR, TFD, turn it left heading 200."),
+      "AT SWA55 TFD DO HDG SWA55 200 LEFT")
+    check_eq(ex("When Southwest 55 passes the Stanfield VOR, turn it left heading 200."),
+      "AT SWA55 TFD DO HDG SWA55 200 LEFT")
+    check_eq(ex("Kindly add Thermal, that is TRM, to the route of Southwest 55."), "ADDWPT SWA55 TRM")
+    check_eq(ex("Route American 7 directly to Truth or Consequences (TCS), please."), "ADDWPT AAL7 TCS ; DIRECT AAL7 TCS")
+    check_eq(ex("Southwest 55 should descend to FL200 once it has passed Stanfield, TFD."),
+      "AT SWA55 TFD DO ALT SWA55 FL200")
+    asked(ex("When Southwest 55 passes Corona, TFD, please have it descend to FL220."), "a name not the ident's")
+    asked(ex("Kindly add Zuni, that is TRM, to the route of Southwest 55."), "a name not the ident's")
+    check_eq(ex("Southwest 55 should proceed directly to GBN, omitting Stanfield."), "DIRECT SWA55 GBN")
+    check_eq(ex("Southwest 55 should fly directly to GBN, omitting the Stanfield VOR."), "DIRECT SWA55 GBN")
+    asked(ex("Southwest 55 should descend to FL220, omitting Stanfield."), "omitting with no direct-to")
+  end
+end
