@@ -2212,7 +2212,9 @@ end
 -- elsewhere follows a resolution word in its own clause ("MVP with a horizontal factor of 1.05 and allow
 -- vertical resolutions"; "set the horizontal factor to 1.05 and allow vertical resolutions" stays unread).
 function G:vertical_resolutions(i)
-  local horizontal_only = self:word(i, "horizontal lateral") and self:word_in(math.max(1, i - 2), i + 4, "only")
+  -- ("horizontal only", "purely horizontal", "MVP resolutions remain horizontal": horizontal alone)
+  local horizontal_only = self:word(i, "horizontal lateral") and (self:word_in(math.max(1, i - 2), i + 4, "only")
+    or self:word(i - 1, "purely strictly solely exclusively remain remains stay stays"))
   local sized, reso = "factor margin zone pz rpz zonedh separation sep", "resolution resolutions reso mvp resolver"
   local function sized_apart()
     if not self:word(i + 1, "resolution resolutions manoeuvres maneuvers manoeuvre maneuver") then return false end

@@ -3124,6 +3124,13 @@ return function(H, f, compass)
     if (self:word(first, "which") or self:asked_indirectly()) and #self:quantities(1, #self.t + 1) == 0 then
       return true
     end
+    -- ("please tell me the vertical size of the protected zone": a setting told, "tell"/"remind" and "me" before
+    -- the noun, no value said anywhere)
+    local told = self:find_word(1, #self.t + 1, "tell remind")
+    if told <= #self.t and self:word(told + 1, "me us") and self:word(told + 2, "the")
+        and #self:quantities(1, #self.t + 1) == 0 then
+      return true
+    end
     -- (a question: "is ... on?", "what is ...?", "can you check which/whether ...?"; its first sentence, a
     -- remark may follow: "Is the conflict detection on now? I can't see any alerts.")
     local ends = #self.t
@@ -3131,20 +3138,30 @@ return function(H, f, compass)
       local t = self.t[k]
       if t.kind == "punct" and (t.text == "?" or t.text == "." or t.text == "!") then ends = k break end
     end
+    -- ("how large is the protected zone radius?": "how" asks a size, no value said)
     return self.t[ends].text == "?" and (self:word(first, "is are what what's whats which")
-      or self:word_in(1, ends, "check whether"))
+      or self:word_in(1, ends, "check whether") or (self:word(first, "how") and #self:quantities(1, ends) == 0))
   end
   -- (a switch asked about: a question, or a request opening with "what" and no "on" or "off" in it, "what's the
   -- conflict detection setting", or with "is" or "are", "is conflict detection on": its state shown, never set)
   function m:switch(s, spec)
     if self:asks_setting(self:on_off(s) < 0) or self:word(self:skip_fillers(1), "is are") then
+      -- ("what is the conflict detection interval?": DT shows it, with the time step, once in the request)
+      if spec.cmd == "ASAS" and self:word(s.trig + 1, "interval") then
+        for _, c in ipairs(self.out) do
+          if c == "DT" then return self:explain(s.trig, s.trig + 2) end
+        end
+        return self:emit("DT")
+      end
       return self:emit(spec.cmd)
     end
     -- "run conflict detection every 2 seconds": the interval of detection (DT ASAS); switched on too
     -- only when said ("turn on detection every 2 seconds")
     if spec.cmd == "ASAS" then
       for _, q in ipairs(self:quantities(s.b, s.e)) do
-        if q.kind == "time" and self:word(q.b - 1, "every each interval") then  -- ("update interval 2 s")
+        -- ("update interval 2 s", "the detection interval could be set to 0.5 seconds")
+        if q.kind == "time" and (self:word(q.b - 1, "every each interval")
+            or (self:word(s.trig + 1, "interval") and q.b > s.trig)) then
           if self:on_off(s) >= 0 then self:emit("ASAS " .. on_off(self, s)) end
           return self:emit("DT ASAS " .. f.num(self:take(q).value))
         end
@@ -3675,7 +3692,13 @@ return function(H, f, compass)
   end
   function m:resolution(s)
     local b = s.b > 1 and s.b - 1 or s.b
-    if self:asks_setting() then return self:emit("RESO") end
+    if self:asks_setting() then
+      -- ("is MVP resolution currently on?": the method asked about names the setting shown)
+      for k = 1, #self.t do
+        if self:word(k, "mvp") then self:explain(k, k + 1) end
+      end
+      return self:emit("RESO")
+    end
     if self:word_in(1, #self.t + 1, "mvp") or self:word_in(b, s.e, "@mvp") then return self:emit("RESO MVP") end
     if self:on_off(s) == 0 then return self:emit("RESO OFF") end
     if self:on_off(s) == 1 then return self:emit("RESO MVP") end  -- MVP is the one method RESO has
@@ -3709,7 +3732,9 @@ return function(H, f, compass)
       -- ("the horizontal resolution margin 1.2": a factor of 1 to 3 said after the noun is the factor itself)
       local factor = by_margin and q.kind == "plain" and not pronoun and q.b > s.trig and q.value >= 1 and q.value <= 3
       if (q.kind == "plain" and not pronoun and not by_margin) or margin or factor then
-        local cmd = kind(q.b)
+        -- ("the resolution factor to 1.2 for the horizontal dimension": the kind said after the value, "for" or
+        -- "in" before it)
+        local cmd = kind(q.b) or (self:word(q.e, "for in") and kind(math.min(s.e, q.e + 4)))
         local value = margin and 1 + q.value / 100 or q.value
         if not cmd then
           return self:need(string.format("Should the horizontal or the vertical safety factor be %s?", f.num(value)))
@@ -3760,7 +3785,8 @@ return function(H, f, compass)
       return self:need("squawk's resolutions are horizontal only (RMETHV OFF) or horizontal with vertical "
         .. "speed too (RMETHV V/S): which should it use?")
     end
-    self:emit((off or only) and "RMETHV OFF" or "RMETHV V/S")
+    -- (read at "horizontal": horizontal alone, G:vertical_resolutions)
+    self:emit((off or only or self:word(s.trig, "horizontal lateral")) and "RMETHV OFF" or "RMETHV V/S")
     -- (its clause whole: "turn on MVP resolution and allow vertical manoeuvres" reads "allow" with the vertical)
     local lo, hi = self:clause_around(s.trig)
     self:mark_used(math.min(s.b, lo), math.max(s.e, hi))
@@ -3885,8 +3911,8 @@ return function(H, f, compass)
     local q = first(self, s, { time = true })
     -- ("clear trails": neither shown nor hidden said, no interval and no switch before it: asked)
     -- ("draw trails behind the aircraft", "display the trails", "give every plane a trail", "add trail lines",
-    -- "set up trails for all tracks": shown)
-    local drawn = self:word_in(math.max(1, s.b - 4), s.e, "draw display give add")
+    -- "set up trails for all tracks", "to see the trails displayed": shown)
+    local drawn = self:word_in(math.max(1, s.b - 4), s.e, "draw display give add drawn displayed")
     for k = math.max(1, s.b - 4), s.e - 1 do
       drawn = drawn or (self:word(k, "set") and self:word(k + 1, "up"))
     end

@@ -107,6 +107,8 @@ return {
         "pronto", "beleza",
         -- comparatives of a remark on the set-up ("a bit nicer", "closer to 90", "a shorter look-ahead")
         "nicer", "better", "closer", "shorter", "longer", "smaller", "larger", "bigger",
+        -- (a size asked about: "how large is the protected zone radius?")
+        "large", "big",
         -- a demonstration's remarks to its audience ("make it snappy", "for realism", "here's the fun part")
         "snappy", "realism", "realistic", "fun" },
     -- courtesy and framing of a request
@@ -292,6 +294,10 @@ return {
         "lengthen",
         -- the dimensions of a setting ("the vertical size of the PZ")
         "size", "sizes", "dimension", "dimensions", "extent",
+        -- a setting's work said formally ("resolutions computed with the MVP method", "perform conflict detection
+        -- every two seconds", "which method is the simulator employing", "restore the zone to 5 NM")
+        "compute", "computed", "computes", "computing", "perform", "performed", "performs", "performing", "employ",
+        "employed", "employs", "employing", "restore", "restored", "restores",
         -- what a clearance is as a move ("the resolution manoeuvre", "avoidance maneuver")
         "manoeuvre", "manoeuvres", "maneuver", "maneuvers",
         -- an aircraft's present course described ("the Vueling's drifting off its route")

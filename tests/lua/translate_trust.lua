@@ -12328,3 +12328,27 @@ do
     asked(ex("Southwest 55 should descend to FL220, omitting Stanfield."), "omitting with no direct-to")
   end
 end
+
+-- Cycle 50 (f131b): simulator settings said formally: verbs of a setting's work ("computed with", "perform",
+-- "employing", "restore the zone to ..."), a setting told or asked about ("tell me the ...", "how large is
+-- ...?", "is MVP resolution on?", the detection interval shown by DT), the factor's kind said after its value, the
+-- detection interval set "to" a time, trails "displayed", resolutions "purely horizontal"; a value missing is asked
+do
+  local _, ex = scene({ "CRE KLM61 A320 52.0 4.0 090 FL300 280" })
+  check_eq(ex("I would like resolutions computed with the modified voltage potential method."), "RESO MVP")
+  check_eq(ex("Kindly perform conflict detection every three seconds."), "DT ASAS 3")
+  check_eq(ex("Which resolution method is the simulation employing at present?"), "RESO")
+  check_eq(ex("Please restore the protected zone to a radius of 5 nautical miles."), "ZONER 5")
+  asked(ex("Please restore the protected zone radius."), "no radius said")
+  check_eq(ex("Please tell me the radius of the protected zone."), "ZONER")
+  check_eq(ex("How big is the protected zone's vertical size?"), "ZONEDH")
+  check_eq(ex("Is MVP resolution active at the moment?"), "RESO")
+  check_eq(ex("What is the conflict detection interval?"), "DT")
+  check_eq(ex("Tell me the simulation time step and the conflict detection interval, please."), "DT")
+  check_eq(ex("Set the resolution factor to 1.3 for the vertical direction."), "RFACV 1.3")
+  asked(ex("Set the resolution factor to 1.3."), "which factor")
+  check_eq(ex("The conflict detection interval should be set to 4 seconds."), "DT ASAS 4")
+  check_eq(ex("We would like to see the trails displayed."), "TRAIL ON")
+  check_eq(ex("Please make sure the MVP resolutions stay purely horizontal."), "RMETHV OFF")
+  check_eq(ex("Let MVP resolutions use vertical speed as well."), "RMETHV V/S")
+end
