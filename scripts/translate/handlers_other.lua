@@ -732,7 +732,9 @@ return function(H, f, compass)
       local near = function(words) return self:word_in(math.max(s.b, q.b - 2), math.min(s.e, q.e + 3), words) end
       if q.kind == "time" then times[#times + 1] = q end
       -- (a bare number beside the closest approach's word is its distance: "cpa 0", "1 mile cpa")
+      -- ("a closest point of approach of zero", "a CPA of 0": the number after the word and "of")
       local beside = self:word(q.b - 1, "@closest_approach distance") or self:word(q.e, "@closest_approach")
+        or (self:word(q.b - 1, "of") and self:word(q.b - 2, "@closest_approach"))
       -- ("dpsi 180", "conflict angle 45": a bare number after CRECONFS's argument name or "angle"; "relative
       -- heading 45 degrees": the heading relative to the target's)
       local angle = q.kind == "angle" or (side and q.kind == "plain" and q.b == side + 2 and self:word(side + 1, "at"))

@@ -12352,3 +12352,19 @@ do
   check_eq(ex("Please make sure the MVP resolutions stay purely horizontal."), "RMETHV OFF")
   check_eq(ex("Let MVP resolutions use vertical speed as well."), "RMETHV V/S")
 end
+
+-- Cycle 50 (f131b): an intruder set up formally: "a closest point of approach of zero", "a CPA of 1" (the distance
+-- after the word and "of"), and a preamble naming the conflict before the creation ("the experiment requires a
+-- crossing conflict: please create a conflicting aircraft ..."); a distance not said is still asked
+do
+  local _, ex = scene({ "CRE KLM61 A320 52.0 4.0 090 FL300 280", "CRE BAW7 A319 52.5 4.5 180 FL320 270" })
+  check_eq(ex("I should like a head-on case: please generate an intruder, callsign Easy 44, an Airbus A320, "
+    .. "against KLM61, on a reciprocal track, with a closest point of approach of zero and loss of separation after "
+    .. "240 seconds."), "CRECONFS EZY44 A320 KLM61 180 0 240")
+  check_eq(ex("The study needs a crossing conflict: please create a conflicting aircraft, callsign Easy 45, a "
+    .. "Boeing 737-800, against BAW7, with a track difference of 90 degrees, a CPA of 1 and a time to loss of "
+    .. "separation of 200 seconds."), "CRECONFS EZY45 B738 BAW7 90 1 200")
+  asked(ex("The study needs a crossing conflict: please create a conflicting aircraft, callsign Easy 45, a "
+    .. "Boeing 737-800, against BAW7, with a track difference of 90 degrees and a time to loss of separation of 200 "
+    .. "seconds."), "no closest approach said")
+end
