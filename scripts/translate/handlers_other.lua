@@ -3555,6 +3555,11 @@ return function(H, f, compass)
     -- clause before, with no aircraft named: "DAL14 heading 250, resume normal speed" is the aircraft's speed)
     if self:word_in(s.b, s.e, "normal")
         or (self:word(s.trig - 1, "normal") and not self:has_ref(1, #self.t + 1, "aircraft")) then
+      -- ("resume the simulation at normal speed": the rate of the OP just issued, which runs at 1x)
+      local normal = self:word_in(s.b, s.e, "normal") and self:find_word(s.b, s.e, "normal") or s.trig - 1
+      if self.out[#self.out] == "OP" and self:word(normal - 1, "at") then
+        return self:explain(math.min(s.b, normal - 1), s.e)
+      end
       return self:emit("DTMULT 1")
     end
     local real = self:find_word(s.b, s.e, "real")  -- "slow the clock to real time"

@@ -12368,3 +12368,11 @@ do
     .. "Boeing 737-800, against BAW7, with a track difference of 90 degrees and a time to loss of separation of 200 "
     .. "seconds."), "no closest approach said")
 end
+
+-- Cycle 50 (f131b): "resume the simulation at normal speed": the OP issued runs at 1x, the rate said after "at" is
+-- its own (no DTMULT 1 besides); another rate said with it is set
+do
+  local _, ex = scene({ "CRE KLM61 A320 52.0 4.0 090 FL300 280" })
+  check_eq(ex("Thank you. Please resume the simulation at normal speed."), "OP")
+  check_eq(ex("Please resume the simulation at 3x speed."), "OP ; DTMULT 3")
+end
