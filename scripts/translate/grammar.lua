@@ -2243,7 +2243,9 @@ end
 -- elsewhere follows a resolution word in its own clause ("MVP with a horizontal factor of 1.05 and allow
 -- vertical resolutions"; "set the horizontal factor to 1.05 and allow vertical resolutions" stays unread).
 function G:vertical_resolutions(i)
-  local horizontal_only = self:word(i, "horizontal lateral") and self:word_in(math.max(1, i - 2), i + 4, "only")
+  -- ("horizontal only", "purely horizontal", "MVP resolutions remain horizontal": horizontal alone)
+  local horizontal_only = self:word(i, "horizontal lateral") and (self:word_in(math.max(1, i - 2), i + 4, "only")
+    or self:word(i - 1, "purely strictly solely exclusively remain remains stay stays"))
   local sized, reso = "factor margin zone pz rpz zonedh separation sep", "resolution resolutions reso mvp resolver"
   local function sized_apart()
     if not self:word(i + 1, "resolution resolutions manoeuvres maneuvers manoeuvre maneuver") then return false end
@@ -6468,9 +6470,14 @@ function G:explained_spans(issued, kinds)
         and self.t[i + 2] and self.t[i + 2].raw:match("^%u") then
       inside[i], inside[i + 2] = true, true
     end
-    -- "go straight to Ockham, skipping Mayfield": a name a direct-to passes
-    if passed and w and passed[w] == true and self.t[i + 1] and self.t[i + 1].raw:match("^%u") then
-      inside[i + 1] = true
+    -- "go straight to Ockham, skipping Mayfield", "omitting the Montreal VOR": a name a direct-to passes (after
+    -- "the", its kind of navaid after it)
+    if passed and w and passed[w] == true then
+      local n = self:word(i + 1, "the") and i + 2 or i + 1
+      if self.t[n] and self.t[n].raw:match("^%u") then
+        for k = i + 1, n do inside[k] = true end
+        if n > i + 1 and self:word(n + 1, "@navaid_kinds") then inside[n + 1] = true end
+      end
     end
     -- "New York departure", "Boston approach": the unit's place
     if w and FACILITIES[w] then
@@ -9540,6 +9547,83 @@ function G.terse_altitude(text, world)
   if not bare or labelled == 0 then return text end
   return (text:gsub("%f[%w]" .. bare .. "%f[%W]", bare .. "ft", 1))
 end
+-- A place said by its name with its ident in apposition ("add Thermal, that is TRM, to the route", "passes the
+-- Homeland VOR, HDF, ...", "direct to Truth or Consequences, TCS", "Palm Springs International (KPSP)"): one to
+-- four capitalised words (lexicon.place_name_joiners between them, "the" before and a word of navaid_kinds or
+-- airport_nouns after them), then a comma or a dash standing alone (a bracket, as written_forms writes it), a
+-- phrase of lexicon.apposition or none, and an ident of three to five capitals (two, "CB", stay as said:
+-- G:explained_spans reads the name beside them). Where the navdata gives that ident that name (a navaid's or an
+-- airport's name, words of it or its city; or an airport of the name whose ICAO code is the three-letter navaid's
+-- after one letter, as airports_coded reads it: KTCS for TCS), the text keeps the ident alone, as if typed; any
+-- other name stays as said (asked about).
+function G.named_idents(text, world)
+  if not (world.navaids_named and world.airports_named and world.airports_of_city and world.airports_with_words)
+      or not (text:find("[,(]") and text:find("%u%u")) then
+    return text
+  end
+  local function names_ident(name, code)
+    local function by_name(list)
+      for _, id in ipairs(list) do
+        local up = id:upper()
+        if up == code then return true end
+        if #code == 3 and #up == 4 and up:sub(2) == code and world.airports_coded and world.user_waypoint_at then
+          local lat, lon = world.user_waypoint_at(up)
+          for _, a in ipairs(lat and world.airports_coded(code, lat, lon) or {}) do
+            if a:upper() == up then return true end
+          end
+        end
+      end
+      return false
+    end
+    return by_name(world.navaids_named(name, 0, 0, 1e5)) or by_name(world.airports_named(name))
+      or by_name(world.airports_of_city(lexicon.city_airports[name] or name))
+      or by_name(world.airports_with_words(name))
+  end
+  local function place_kind(w)
+    local lw = w:lower():match("^(%a+)")
+    return lw and (set_of(lexicon.navaid_kinds)[lw] or set_of(lexicon.airport_nouns)[lw]) or false
+  end
+  local joiners, apposition = set_of(lexicon.place_name_joiners), lexicon.apposition
+  local cuts = {}  -- {from, to}: text[from, to) is dropped
+  for at, opener, after in text:gmatch("()([,%-])()") do
+    local k = after + #text:match("^%s*", after)
+    for _, phrase in ipairs(apposition) do
+      local low = text:sub(k, k + #phrase):lower()
+      if low == phrase .. " " then
+        k = k + #phrase + #text:match("^%s*", k + #phrase)
+        break
+      end
+    end
+    local code, ce = text:match("^(%u%u%u%u?%u?)()", k)
+    -- (a dash standing alone: a bracket as written_forms writes it, "Thermal (TRM)" -> "Thermal - TRM,")
+    if opener == "-" and not (text:sub(at - 1, at - 1) == " " and k > after) then code = nil end
+    if code and not text:sub(ce, ce):match("[%w]") then
+      -- the words before the opener, last first: a kind of place, the name's words, "the"
+      local words = {}
+      for b, w in text:sub(1, at - 1):gmatch("()(%S+)") do words[#words + 1] = { b = b, w = w } end
+      local n = #words
+      if n > 0 and place_kind(words[n].w) then n = n - 1 end
+      local first = n
+      while first >= 1 and n - first < 4 and words[first].w:match("^[%a%-']+$")
+          and (words[first].w:match("^%u") or (joiners[words[first].w] and first < n)) do
+        first = first - 1
+      end
+      for f = first + 1, n do
+        if words[f].w:match("^%u") then
+          local parts = {}
+          for x = f, n do parts[#parts + 1] = words[x].w:lower() end
+          if names_ident(table.concat(parts, " "), code) then
+            local from = (f > 1 and words[f - 1].w:lower() == "the") and words[f - 1].b or words[f].b
+            cuts[#cuts + 1] = { from, k }
+            break
+          end
+        end
+      end
+    end
+  end
+  for c = #cuts, 1, -1 do text = text:sub(1, cuts[c][1] - 1) .. text:sub(cuts[c][2]) end
+  return text
+end
 local function typed_places(text, world)
   if not world.place_known then return text end
   local ids = {}
@@ -10008,8 +10092,8 @@ function M.translate(text, world)
   local run_together
   text, run_together = G.run_together_position(text)
   if run_together then return { commands = {}, ask = run_together } end
-  text = G.confirmed_route_places(G.spelled_route_places(typed_places(written_forms(text, world), world), world),
-    world)
+  text = G.confirmed_route_places(G.spelled_route_places(typed_places(G.named_idents(written_forms(text, world), world),
+    world), world), world)
   text = G.terse_altitude(spelled_airports(text, world), world)
   local run_on
   text, run_on = G.run_on_values(text)

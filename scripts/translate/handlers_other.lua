@@ -735,7 +735,9 @@ return function(H, f, compass)
       local near = function(words) return self:word_in(math.max(s.b, q.b - 2), math.min(s.e, q.e + 3), words) end
       if q.kind == "time" then times[#times + 1] = q end
       -- (a bare number beside the closest approach's word is its distance: "cpa 0", "1 mile cpa")
+      -- ("a closest point of approach of zero", "a CPA of 0": the number after the word and "of")
       local beside = self:word(q.b - 1, "@closest_approach distance") or self:word(q.e, "@closest_approach")
+        or (self:word(q.b - 1, "of") and self:word(q.b - 2, "@closest_approach"))
       -- ("dpsi 180", "conflict angle 45": a bare number after CRECONFS's argument name or "angle"; "relative
       -- heading 45 degrees": the heading relative to the target's)
       local angle = q.kind == "angle" or (side and q.kind == "plain" and q.b == side + 2 and self:word(side + 1, "at"))
@@ -1220,7 +1222,7 @@ return function(H, f, compass)
     end
     local at = 1
     while kept[at] and kept[at].b < k do at = at + 1 end
-    table.insert(kept, at, { kind = "waypoint", name = id, b = k, e = stop })
+    table.insert(kept, at, { kind = "waypoint", name = id, b = k, e = stop, exists = true })
     self.refs = kept
     return stop
   end
@@ -3149,6 +3151,13 @@ return function(H, f, compass)
     if (self:word(first, "which") or self:asked_indirectly()) and #self:quantities(1, #self.t + 1) == 0 then
       return true
     end
+    -- ("please tell me the vertical size of the protected zone": a setting told, "tell"/"remind" and "me" before
+    -- the noun, no value said anywhere)
+    local told = self:find_word(1, #self.t + 1, "tell remind")
+    if told <= #self.t and self:word(told + 1, "me us") and self:word(told + 2, "the")
+        and #self:quantities(1, #self.t + 1) == 0 then
+      return true
+    end
     -- (a question: "is ... on?", "what is ...?", "can you check which/whether ...?"; its first sentence, a
     -- remark may follow: "Is the conflict detection on now? I can't see any alerts.")
     local ends = #self.t
@@ -3156,20 +3165,30 @@ return function(H, f, compass)
       local t = self.t[k]
       if t.kind == "punct" and (t.text == "?" or t.text == "." or t.text == "!") then ends = k break end
     end
+    -- ("how large is the protected zone radius?": "how" asks a size, no value said)
     return self.t[ends].text == "?" and (self:word(first, "is are what what's whats which")
-      or self:word_in(1, ends, "check whether"))
+      or self:word_in(1, ends, "check whether") or (self:word(first, "how") and #self:quantities(1, ends) == 0))
   end
   -- (a switch asked about: a question, or a request opening with "what" and no "on" or "off" in it, "what's the
   -- conflict detection setting", or with "is" or "are", "is conflict detection on": its state shown, never set)
   function m:switch(s, spec)
     if self:asks_setting(self:on_off(s) < 0) or self:word(self:skip_fillers(1), "is are") then
+      -- ("what is the conflict detection interval?": DT shows it, with the time step, once in the request)
+      if spec.cmd == "ASAS" and self:word(s.trig + 1, "interval") then
+        for _, c in ipairs(self.out) do
+          if c == "DT" then return self:explain(s.trig, s.trig + 2) end
+        end
+        return self:emit("DT")
+      end
       return self:emit(spec.cmd)
     end
     -- "run conflict detection every 2 seconds": the interval of detection (DT ASAS); switched on too
     -- only when said ("turn on detection every 2 seconds")
     if spec.cmd == "ASAS" then
       for _, q in ipairs(self:quantities(s.b, s.e)) do
-        if q.kind == "time" and self:word(q.b - 1, "every each interval") then  -- ("update interval 2 s")
+        -- ("update interval 2 s", "the detection interval could be set to 0.5 seconds")
+        if q.kind == "time" and (self:word(q.b - 1, "every each interval")
+            or (self:word(s.trig + 1, "interval") and q.b > s.trig)) then
           if self:on_off(s) >= 0 then self:emit("ASAS " .. on_off(self, s)) end
           return self:emit("DT ASAS " .. f.num(self:take(q).value))
         end
@@ -3561,6 +3580,11 @@ return function(H, f, compass)
     -- clause before, with no aircraft named: "DAL14 heading 250, resume normal speed" is the aircraft's speed)
     if self:word_in(s.b, s.e, "normal")
         or (self:word(s.trig - 1, "normal") and not self:has_ref(1, #self.t + 1, "aircraft")) then
+      -- ("resume the simulation at normal speed": the rate of the OP just issued, which runs at 1x)
+      local normal = self:word_in(s.b, s.e, "normal") and self:find_word(s.b, s.e, "normal") or s.trig - 1
+      if self.out[#self.out] == "OP" and self:word(normal - 1, "at") then
+        return self:explain(math.min(s.b, normal - 1), s.e)
+      end
       return self:emit("DTMULT 1")
     end
     local real = self:find_word(s.b, s.e, "real")  -- "slow the clock to real time"
@@ -3700,7 +3724,13 @@ return function(H, f, compass)
   end
   function m:resolution(s)
     local b = s.b > 1 and s.b - 1 or s.b
-    if self:asks_setting() then return self:emit("RESO") end
+    if self:asks_setting() then
+      -- ("is MVP resolution currently on?": the method asked about names the setting shown)
+      for k = 1, #self.t do
+        if self:word(k, "mvp") then self:explain(k, k + 1) end
+      end
+      return self:emit("RESO")
+    end
     if self:word_in(1, #self.t + 1, "mvp") or self:word_in(b, s.e, "@mvp") then return self:emit("RESO MVP") end
     if self:on_off(s) == 0 then return self:emit("RESO OFF") end
     if self:on_off(s) == 1 then return self:emit("RESO MVP") end  -- MVP is the one method RESO has
@@ -3734,7 +3764,9 @@ return function(H, f, compass)
       -- ("the horizontal resolution margin 1.2": a factor of 1 to 3 said after the noun is the factor itself)
       local factor = by_margin and q.kind == "plain" and not pronoun and q.b > s.trig and q.value >= 1 and q.value <= 3
       if (q.kind == "plain" and not pronoun and not by_margin) or margin or factor then
-        local cmd = kind(q.b)
+        -- ("the resolution factor to 1.2 for the horizontal dimension": the kind said after the value, "for" or
+        -- "in" before it)
+        local cmd = kind(q.b) or (self:word(q.e, "for in") and kind(math.min(s.e, q.e + 4)))
         local value = margin and 1 + q.value / 100 or q.value
         if not cmd then
           return self:need(string.format("Should the horizontal or the vertical safety factor be %s?", f.num(value)))
@@ -3785,7 +3817,8 @@ return function(H, f, compass)
       return self:need("squawk's resolutions are horizontal only (RMETHV OFF) or horizontal with vertical "
         .. "speed too (RMETHV V/S): which should it use?")
     end
-    self:emit((off or only) and "RMETHV OFF" or "RMETHV V/S")
+    -- (read at "horizontal": horizontal alone, G:vertical_resolutions)
+    self:emit((off or only or self:word(s.trig, "horizontal lateral")) and "RMETHV OFF" or "RMETHV V/S")
     -- (its clause whole: "turn on MVP resolution and allow vertical manoeuvres" reads "allow" with the vertical)
     local lo, hi = self:clause_around(s.trig)
     self:mark_used(math.min(s.b, lo), math.max(s.e, hi))
@@ -3910,8 +3943,8 @@ return function(H, f, compass)
     local q = first(self, s, { time = true })
     -- ("clear trails": neither shown nor hidden said, no interval and no switch before it: asked)
     -- ("draw trails behind the aircraft", "display the trails", "give every plane a trail", "add trail lines",
-    -- "set up trails for all tracks": shown)
-    local drawn = self:word_in(math.max(1, s.b - 4), s.e, "draw display give add")
+    -- "set up trails for all tracks", "to see the trails displayed": shown)
+    local drawn = self:word_in(math.max(1, s.b - 4), s.e, "draw display give add drawn displayed")
     for k = math.max(1, s.b - 4), s.e - 1 do
       drawn = drawn or (self:word(k, "set") and self:word(k + 1, "up"))
     end

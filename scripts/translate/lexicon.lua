@@ -107,6 +107,8 @@ return {
         "pronto", "beleza",
         -- comparatives of a remark on the set-up ("a bit nicer", "closer to 90", "a shorter look-ahead")
         "nicer", "better", "closer", "shorter", "longer", "smaller", "larger", "bigger",
+        -- (a size asked about: "how large is the protected zone radius?")
+        "large", "big",
         -- a demonstration's remarks to its audience ("make it snappy", "for realism", "here's the fun part")
         "snappy", "realism", "realistic", "fun" },
     -- courtesy and framing of a request
@@ -295,6 +297,10 @@ return {
         "lengthen",
         -- the dimensions of a setting ("the vertical size of the PZ")
         "size", "sizes", "dimension", "dimensions", "extent",
+        -- a setting's work said formally ("resolutions computed with the MVP method", "perform conflict detection
+        -- every two seconds", "which method is the simulator employing", "restore the zone to 5 NM")
+        "compute", "computed", "computes", "computing", "perform", "performed", "performs", "performing", "employ",
+        "employed", "employs", "employing", "restore", "restored", "restores",
         -- what a clearance is as a move ("the resolution manoeuvre", "avoidance maneuver")
         "manoeuvre", "manoeuvres", "maneuver", "maneuvers",
         -- an aircraft's present course described ("the Vueling's drifting off its route")
@@ -1026,7 +1032,7 @@ return {
       -- a study's questionnaires and measures ("fill in the NASA-TLX")
       "nasa", "tlx", "nasa-tlx" },
   -- words before a waypoint that a direct-to flies past ("skip TP1 and go direct TP2")
-  passed_over = { "skip", "skipping", "bypass", "bypassing", "not", "instead" },
+  passed_over = { "skip", "skipping", "bypass", "bypassing", "omit", "omitting", "not", "instead" },
   below = { "below", "under" },
   above = { "above", "over" },
   relative = { "present", "current", "actual", "by" },
@@ -1472,6 +1478,10 @@ return {
     relative_fill = { "just", "has", "have", "had", "is", "was", "now", "recently", "only", "since" } },
   -- kinds of navaid, said beside a navaid's name ("the Pampus VOR, PAM")
   navaid_kinds = { "vor", "ndb", "dme", "vortac", "navaid", "beacon" },
+  -- words that put a place's ident after its name ("Thermal, that is TRM"), and the lower-case words inside a
+  -- place's name ("Truth or Consequences") (G.named_idents)
+  apposition = { "that is", "that's", "i.e.", "ie", "namely" },
+  place_name_joiners = { "or", "of" },
   -- a condition on a place said beside value instructions, which read no place (G:passage_left): a word of
   -- `passage` opens one whatever follows ("passing the beacon", "abeam it"), one of `passage_at` before a word of
   -- `passage_nouns`, navaid_kinds or airport_nouns ("over the VOR", "at the marker")

@@ -875,8 +875,19 @@ return function(intent, rule, words)
   -- B738, CPA 2 miles", "conflict on KL001: INT2, A320, 135 deg, cpa 2, tlosh 500": the noun alone, no verb of
   -- creation before it, sets one up when its type and closest approach or loss are said
   rule { "creconfs", "creconfs" }  -- the command's name typed with its values in words ("creconfs INT1 B738 EZY45 dpsi 180 ...")
+  -- ("the experiment requires a crossing conflict: please create a conflicting aircraft, ...": the noun naming what
+  -- a creation of an intruder said after it sets up, no conflict of its own)
+  local function intruder_created_after(g, i)
+    for k = i + 1, #g.t do
+      if g:word(k, "create spawn generate creat cre make new add put") and g:followed_by(k, 4, "@intruder") then
+        return true
+      end
+    end
+    return false
+  end
   rule { "intruder conflict conflicting converger", "creconfs", when = function(g, i)
     return g:find_word(1, #g.t + 1, "intruder conflict conflicting converger") == i  -- (the first one said)
+      and not intruder_created_after(g, i)
       and not g:word_in(1, i, "create spawn generate creat cre make new add put") and g:has_ref(i + 1, #g.t + 1, "type")
       and g:word_in(i + 1, #g.t + 1, "@loss_of_separation @closest_approach @head_on") and not along_track(g)
       -- ("conflict pair: CRECONFS INT9 ...": the command's name said after the noun sets the conflict up)

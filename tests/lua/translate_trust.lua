@@ -12527,3 +12527,78 @@ do
   check_eq(ex("move Cathay one three to flight level three four zero"), "MOVE CPA13 -35.1 150.5 FL340")
   asked(ex("move Cathay 13 to 340"), "a bare number")
 end
+
+-- Cycle 50 (f131b): a place said by its name with its ident in apposition ("Gila Bend, GBN", "Thermal, that is
+-- TRM", "Truth or Consequences (TCS)", "the Stanfield VOR, TFD") is that ident wherever a place is read (direct,
+-- route, a condition's place); a name the navdata does not give that ident is asked. A leading "when it passes the
+-- NAME VOR" of the route is its condition; "omitting" a place is passing it on a direct-to
+do
+  local _, ex = navscene({ "CRE SWA55 B737 32.70 -111.60 270 FL260 280", "ADDWPT SWA55 TFD", "ADDWPT SWA55 GBN",
+    "CRE AAL7 A321 33.50 -112.50 090 FL300 290" }, "places said by name and ident")
+  if ex then
+    check_eq(ex("Please send Southwest 55 directly to Gila Bend, GBN."), "DIRECT SWA55 GBN")
+    check_eq(ex("When Southwest 55 passes Stanfield, TFD, please have it descend to FL220."),
+      "AT SWA55 TFD DO ALT SWA55 FL220")
+    check_eq(ex("When Southwest 55 passes the Stanfield VOR, TFD, turn it left heading 200."),
+      "AT SWA55 TFD DO HDG SWA55 200 LEFT")
+    check_eq(ex("When Southwest 55 passes the Stanfield VOR, turn it left heading 200."),
+      "AT SWA55 TFD DO HDG SWA55 200 LEFT")
+    check_eq(ex("Kindly add Thermal, that is TRM, to the route of Southwest 55."), "ADDWPT SWA55 TRM")
+    check_eq(ex("Route American 7 directly to Truth or Consequences (TCS), please."), "ADDWPT AAL7 TCS ; DIRECT AAL7 TCS")
+    check_eq(ex("Southwest 55 should descend to FL200 once it has passed Stanfield, TFD."),
+      "AT SWA55 TFD DO ALT SWA55 FL200")
+    asked(ex("When Southwest 55 passes Corona, TFD, please have it descend to FL220."), "a name not the ident's")
+    asked(ex("Kindly add Zuni, that is TRM, to the route of Southwest 55."), "a name not the ident's")
+    check_eq(ex("Southwest 55 should proceed directly to GBN, omitting Stanfield."), "DIRECT SWA55 GBN")
+    check_eq(ex("Southwest 55 should fly directly to GBN, omitting the Stanfield VOR."), "DIRECT SWA55 GBN")
+    asked(ex("Southwest 55 should descend to FL220, omitting Stanfield."), "omitting with no direct-to")
+  end
+end
+
+-- Cycle 50 (f131b): simulator settings said formally: verbs of a setting's work ("computed with", "perform",
+-- "employing", "restore the zone to ..."), a setting told or asked about ("tell me the ...", "how large is
+-- ...?", "is MVP resolution on?", the detection interval shown by DT), the factor's kind said after its value, the
+-- detection interval set "to" a time, trails "displayed", resolutions "purely horizontal"; a value missing is asked
+do
+  local _, ex = scene({ "CRE KLM61 A320 52.0 4.0 090 FL300 280" })
+  check_eq(ex("I would like resolutions computed with the modified voltage potential method."), "RESO MVP")
+  check_eq(ex("Kindly perform conflict detection every three seconds."), "DT ASAS 3")
+  check_eq(ex("Which resolution method is the simulation employing at present?"), "RESO")
+  check_eq(ex("Please restore the protected zone to a radius of 5 nautical miles."), "ZONER 5")
+  asked(ex("Please restore the protected zone radius."), "no radius said")
+  check_eq(ex("Please tell me the radius of the protected zone."), "ZONER")
+  check_eq(ex("How big is the protected zone's vertical size?"), "ZONEDH")
+  check_eq(ex("Is MVP resolution active at the moment?"), "RESO")
+  check_eq(ex("What is the conflict detection interval?"), "DT")
+  check_eq(ex("Tell me the simulation time step and the conflict detection interval, please."), "DT")
+  check_eq(ex("Set the resolution factor to 1.3 for the vertical direction."), "RFACV 1.3")
+  asked(ex("Set the resolution factor to 1.3."), "which factor")
+  check_eq(ex("The conflict detection interval should be set to 4 seconds."), "DT ASAS 4")
+  check_eq(ex("We would like to see the trails displayed."), "TRAIL ON")
+  check_eq(ex("Please make sure the MVP resolutions stay purely horizontal."), "RMETHV OFF")
+  check_eq(ex("Let MVP resolutions use vertical speed as well."), "RMETHV V/S")
+end
+
+-- Cycle 50 (f131b): an intruder set up formally: "a closest point of approach of zero", "a CPA of 1" (the distance
+-- after the word and "of"), and a preamble naming the conflict before the creation ("the experiment requires a
+-- crossing conflict: please create a conflicting aircraft ..."); a distance not said is still asked
+do
+  local _, ex = scene({ "CRE KLM61 A320 52.0 4.0 090 FL300 280", "CRE BAW7 A319 52.5 4.5 180 FL320 270" })
+  check_eq(ex("I should like a head-on case: please generate an intruder, callsign Easy 44, an Airbus A320, "
+    .. "against KLM61, on a reciprocal track, with a closest point of approach of zero and loss of separation after "
+    .. "240 seconds."), "CRECONFS EZY44 A320 KLM61 180 0 240")
+  check_eq(ex("The study needs a crossing conflict: please create a conflicting aircraft, callsign Easy 45, a "
+    .. "Boeing 737-800, against BAW7, with a track difference of 90 degrees, a CPA of 1 and a time to loss of "
+    .. "separation of 200 seconds."), "CRECONFS EZY45 B738 BAW7 90 1 200")
+  asked(ex("The study needs a crossing conflict: please create a conflicting aircraft, callsign Easy 45, a "
+    .. "Boeing 737-800, against BAW7, with a track difference of 90 degrees and a time to loss of separation of 200 "
+    .. "seconds."), "no closest approach said")
+end
+
+-- Cycle 50 (f131b): "resume the simulation at normal speed": the OP issued runs at 1x, the rate said after "at" is
+-- its own (no DTMULT 1 besides); another rate said with it is set
+do
+  local _, ex = scene({ "CRE KLM61 A320 52.0 4.0 090 FL300 280" })
+  check_eq(ex("Thank you. Please resume the simulation at normal speed."), "OP")
+  check_eq(ex("Please resume the simulation at 3x speed."), "OP ; DTMULT 3")
+end
