@@ -1687,9 +1687,22 @@ function m:described_refs()
         if #ids == 0 then ids = nil end
       end
     end
+    -- (with aircraft named by callsign elsewhere in the request, the words describe one of them, "turn ACA881 180,
+    -- it's the one at FL370": explained, no second reference; one not named is asked about, never added)
+    local named, others = {}, false
+    for _, r in ipairs(e and self.refs or {}) do
+      if r.kind == "aircraft" and r.exists and (r.b >= e or r.e <= b) then named[r.name], others = true, true end
+    end
+    for _, id in ipairs(others and picked or {}) do
+      if not named[id] then picked = nil break end
+    end
     if e and not (picked and #picked > 0) then
       self:need(string.format("Which aircraft do you mean by '%s'? Please give its callsign%s.", self:raw(b, e),
         ids and #ids > 0 and (" (it may be " .. table.concat(ids, ", ") .. ")") or ""))
+      i = e
+    elseif e and others then
+      self:explain(b, e)
+      self:mark_used(b, e)
       i = e
     elseif e then
       for n = #self.refs, 1, -1 do

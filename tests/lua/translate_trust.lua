@@ -12322,6 +12322,10 @@ do
   asked(ex("the aircraft at FL250 climb FL260"), "two aircraft at FL250")
   asked(ex("the aircraft at FL200 climb FL260"), "no aircraft at FL200")
   asked(ex("the smaller Air France climb FL330"), "size words never compare")
+  -- (beside a callsign said, the words describe it or are asked about)
+  check_eq(ex("turn BEL3 left heading 150, it's the one at FL190"), "HDG BEL3 150 LEFT")
+  asked(ex("turn AFR11 left heading 150, it's the one at FL190"), "the description fits another aircraft")
+  asked(ex("turn the highest aircraft and BEL3 left heading 200"), "a description beside a callsign")
 end
 do
   local _, ex = scene({ "CRE QTR8 B77W 25.0 51.0 090 FL350 290", "CRE QTR21 A359 25.3 51.2 270 FL330 280",
