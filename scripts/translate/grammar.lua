@@ -3495,6 +3495,29 @@ function G:segments(b, e)
       end
     end
   end
+  -- "descend FL110 when it reaches 250 knots? Please slow it to 250 first.": a condition said before its
+  -- instruction's word with the end of a sentence ("?", ".", "!", no ellipsis) between is that sentence's, never the next
+  -- instruction's: it goes back to the segment before, or (none before) is a segment of its own
+  for k = #segs, 1, -1 do
+    local sg, prev = segs[k], segs[k - 1]
+    for x = sg.trig - 1, sg.b, -1 do
+      local t = self.t[x]
+      -- (an ellipsis, "after ROSUN... its already there", trails off: no sentence's end)
+      local dots = t.raw:find("..", 1, true) or t.raw == "…" or (self.t[x - 1] or {}).text == "."
+        or (self.t[x + 1] or {}).text == "."
+      if t.kind == "punct" and (t.text == "?" or t.text == "." or t.text == "!") and not dots then
+        if self:word_in(sg.b, x, "@condition") then
+          if prev and prev.e == sg.b then
+            prev.e, sg.b = x + 1, x + 1
+          elseif not prev then
+            table.insert(segs, k, { intent = "infer", b = sg.b, trig = sg.b, e = x + 1 })
+            sg.b = x + 1
+          end
+        end
+        break
+      end
+    end
+  end
   -- "FL 340, M.79, heading 255 - create FIN6PM, A359, ...", "Heading 015, 6,000 feet, 200 knots, at 55 degrees
   -- 40 north 12 degrees 50 east: create SAS88Y, E195": values said before the creation, for no aircraft
   -- named, are the new aircraft's
@@ -4328,7 +4351,9 @@ function G:valueless_left(segs, valueless, issued_by)
       local t = self.t[i]
       -- ("off" after its instruction word is that word's: "and level off")
       bare = bare and (t.kind ~= "word" or t.filler or self.triggers[i] or (t.text == "off" and self.triggers[i - 1])
-        or self:word(i, "@left @right @up @down and then") or self:has_ref(i, i + 1, "aircraft"))
+        or self:word(i, "@left @right @up @down and then") or self:has_ref(i, i + 1, "aircraft")
+        -- ("speed up a bit", "slow down slightly": a degree of no size is no value either)
+        or self:word(i, "@vague_direction") or (self:word(i, "a") and self:word(i + 1, "@vague_direction")))
     end
     -- (one refused, "do not descend", is the negation's: the accounting asks about it; one named after "for",
     -- "standby for descent", is announced, no instruction)
@@ -6292,19 +6317,24 @@ end
 
 -- True when the word at i (lexicon.described_places.departs) says where an aircraft comes from in a relative clause
 -- that identifies it ("the Easy that's just departed Luton", "the Ryanair which left Dublin"): a word of `relatives`
--- before it, only words of `relative_fill` between.
+-- before it, only words of `relative_fill` between; or a pronoun of `narrated` with "just" among those words ("It
+-- has just departed Schiphol").
 function G:relative_departure(i)
   local L = lexicon.described_places
   local R = G.relative_sets
   if not R then
-    R = { departs = set_of(L.departs), relatives = set_of(L.relatives), fill = set_of(L.relative_fill) }
+    R = { departs = set_of(L.departs), relatives = set_of(L.relatives), fill = set_of(L.relative_fill),
+      narrated = set_of(L.narrated) }
     G.relative_sets = R
   end
   local words = self.words
   if not (words[i] and R.departs[words[i]]) then return false end
-  local k = i - 1
-  while k > i - 4 and words[k] and R.fill[words[k]] do k = k - 1 end
-  return words[k] ~= nil and R.relatives[words[k]] == true
+  local k, just = i - 1, false
+  while k > i - 4 and words[k] and R.fill[words[k]] do
+    just = just or words[k] == "just"
+    k = k - 1
+  end
+  return words[k] ~= nil and (R.relatives[words[k]] == true or (just and R.narrated[words[k]] == true))
 end
 
 -- lexicon.asides_alone by their first word, each as its words
@@ -10131,6 +10161,7 @@ function M.translate(text, world)
   g:airline_types()
   g:airline_refs()
   g:type_refs()
+  g:described_refs()
   g:prefix_refs()
   g:role_refs()
   g:false_starts()

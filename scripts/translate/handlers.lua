@@ -166,6 +166,11 @@ function m:on_off(s)
     return false
   end
   if said(b, "@off") or said(s.b, "@off_after") then return 0 end
+  for k = b, s.e - 1 do
+    if self:word(k, "@off_made") and not self:in_reason(k) and self:word_in(math.max(b, k - 5), k, "make let have") then
+      return 0
+    end
+  end
   if said(b, "@on") then return 1 end
   return -1
 end
@@ -1046,7 +1051,11 @@ function m:airline_refs()
       -- after the type)
       local typed, type_e
       local test, te
-      if the and not inside[i] then test, te = self:type_said(e) end
+      -- (`heard`: a callsign no aircraft flying has, the matcher's reading of the airline and the number after it)
+      local heard = self:refs_in(i, i + 1, "aircraft")[1]
+      heard = heard and heard.b == i and not heard.exists and heard
+      if the and (not inside[i] or heard) then test, te = self:type_said(e) end
+      if heard and te and te < heard.e then test = nil end
       for k = 1, test and #self.t or 0 do
         if self:intent_at(k) == "create" then test = nil end
       end
@@ -1075,8 +1084,14 @@ function m:airline_refs()
         if r.kind == "aircraft" and r.name == fits[1] and (r.b >= e or r.e <= i) then fits = {} end
       end
       if typed then
+        -- ("the Lufthansa 747", "the KLM 777": the airline and a family's number the callsign matcher heard as a
+        -- callsign no aircraft flying has, DLH747, describe the airline's aircraft of that family; DLH747 flying is
+        -- the callsign, and `typed` is not read)
         for k = #self.refs, 1, -1 do
-          if self.refs[k].b >= e and self.refs[k].b < type_e then table.remove(self.refs, k) end
+          local r = self.refs[k]
+          if (r.b >= e and r.b < type_e) or (r.kind == "aircraft" and r.b == i and r.e <= type_e and not r.exists) then
+            table.remove(self.refs, k)
+          end
         end
         self:explain(e, type_e)
         e = type_e
@@ -1611,6 +1626,129 @@ function m:type_only(s)
     if u.b < s.e then
       return self:need(string.format("Which %s do you mean: %s? Please give its callsign.", self:raw(u.b, u.e),
         table.concat(u.ids, " or ")))
+    end
+  end
+end
+
+-- The group of aircraft flying that the words at k name for a comparison (described_refs): its ids in the
+-- fleet's order, the token after the words and the count said before them ("the two Boeings": 2), or nil. Every
+-- aircraft flying (lexicon.group_nouns and aircraft_nouns, "one"), a maker's ("Boeing", "Boeings", "Airbuses") or
+-- a type's (type_said: "737", "A320"), or an airline's ("KLM", "KLMs"); an aircraft noun after a maker, type or
+-- airline is part of it ("the highest KLM aircraft").
+local function compared_group(self, k)
+  local count = COUNTS[self.t[k] and self.t[k].text or ""]
+  if count then k = k + 1 end
+  local t = self.t[k]
+  if not t or t.kind ~= "word" then return nil end
+  local function fleet_where(fits)
+    local out = {}
+    for _, a in ipairs(self.fleet) do
+      if fits(a) then out[#out + 1] = a.id end
+    end
+    return out
+  end
+  local function noun_after(e) return self:word(e, "@aircraft_nouns @group_nouns") and e + 1 or e end
+  if self:word(k, "@aircraft_nouns @group_nouns one") then
+    return fleet_where(function() return true end), k + 1, count
+  end
+  if not AIRLINE_NAMES then airline_names() end
+  for _, stem in ipairs({ t.text:sub(1, -2), t.text:sub(1, -3) }) do  -- ("Boeings", "Airbuses", "KLMs")
+    local made = t.text:sub(-1) == "s" and makers()[stem]
+    if made then return fleet_where(function(a) return a.type ~= nil and made[a.type:upper()] == true end), noun_after(k + 1), count end
+    local icao = t.text:sub(-1) == "s" and AIRLINE_NAMES[stem]
+    if icao then return self:airline_fleet(icao, BRANDS[stem]), noun_after(k + 1), count end
+  end
+  local test, e = self:type_said(k)
+  if test then return fleet_where(function(a) return a.type ~= nil and test(a.type:upper()) end), noun_after(e), count end
+  local icao, ae, codes = self:airline_at(k)
+  if icao then return self:airline_fleet(icao, codes), noun_after(ae), count end
+  return nil
+end
+
+-- The aircraft flying described after "the" by how it compares with others or by its level: a word of
+-- lexicon.compared_measures over a group (compared_group: "the highest aircraft", "the lowest one", "the slowest
+-- of the aircraft", "the fastest Boeing", "the faster of the two Boeings", "the higher of the two Airbuses"), or
+-- an aircraft noun and "at" a level ("the aircraft at flight level 230", "the two aircraft at FL250"). A
+-- comparative needs "of" and two or more in its group; a count said ("the two Boeings", "both") must be the
+-- group's size; the aircraft picked must lead the next by more than lexicon.compared_margin; a level's aircraft
+-- fly within 100 ft of it, as many as were counted (one unless said). The aircraft that fit are references
+-- (kind "aircraft", by_description = true) in place of any heard in the words, which are explained; otherwise
+-- the words are asked about, naming the aircraft of the group. Said after a word of other traffic ("behind the
+-- slowest aircraft") they describe no aircraft instructed. Size words never compare (SIZE_WORDS).
+function m:described_refs()
+  local function by_id(id)
+    for _, a in ipairs(self.fleet) do
+      if a.id == id then return a end
+    end
+  end
+  local i = 2
+  while i <= #self.t do
+    local b, measure = i - 1, self.t[i].kind == "word" and L.compared_measures[self.t[i].text]
+    local the = self:word(b, "the") and not self:word(b - 1, "@airline_context @aircraft_context @below @above")
+    local ids, e, count, picked
+    if the and measure then
+      if self:word(i + 1, "of") then
+        local k = self:word(i + 2, "the both") and i + 3 or i + 2
+        ids, e, count = compared_group(self, k)
+        if self:word(i + 2, "both") then count = 2 end
+      elseif not self.t[i].text:match("er$") then
+        ids, e, count = compared_group(self, i + 1)
+      end
+      local field, sign, values = measure[1], measure[2], {}
+      for _, id in ipairs(ids or {}) do
+        local a = by_id(id)
+        if a and a[field] then values[#values + 1] = { id = id, v = sign * a[field] } end
+      end
+      table.sort(values, function(x, y) return x.v > y.v end)
+      if ids and #values == #ids and #ids >= (self.t[i].text:match("er$") and 2 or 1) and (not count or count == #ids)
+          and (not values[2] or values[1].v - values[2].v > L.compared_margin[field]) then
+        picked = { values[1].id }
+      end
+    elseif the then
+      -- ("the aircraft at flight level 230", "the two aircraft at FL250": a count, an aircraft noun, "at" a level)
+      local k = COUNTS[self.t[i].text] and i + 1 or i
+      local q = self:word(k, "@aircraft_nouns @group_nouns one") and self:word(k + 1, "at") and self:quantities(k + 2, k + 6)[1]
+      if q and q.b == k + 2 and q.kind == "alt" and not self:word(k, "them all") then
+        local ft = q.value  -- (ft, a flight level too)
+        ids, e, count, picked = {}, q.e, COUNTS[self.t[i].text] or 1, {}
+        for _, a in ipairs(self.fleet) do
+          if a.alt_ft and math.abs(a.alt_ft - ft) <= 100 then ids[#ids + 1] = a.id end
+        end
+        if #ids == count then picked = ids end
+        if #ids == 0 then ids = nil end
+      end
+    end
+    -- (with aircraft named by callsign elsewhere in the request, the words describe one of them, "turn ACA881 180,
+    -- it's the one at FL370": explained, no second reference; one not named is asked about, never added)
+    local named, others = {}, false
+    for _, r in ipairs(e and self.refs or {}) do
+      if r.kind == "aircraft" and r.exists and (r.b >= e or r.e <= b) then named[r.name], others = true, true end
+    end
+    for _, id in ipairs(others and picked or {}) do
+      if not named[id] then picked = nil break end
+    end
+    if e and not (picked and #picked > 0) then
+      self:need(string.format("Which aircraft do you mean by '%s'? Please give its callsign%s.", self:raw(b, e),
+        ids and #ids > 0 and (" (it may be " .. table.concat(ids, ", ") .. ")") or ""))
+      i = e
+    elseif e and others then
+      self:explain(b, e)
+      self:mark_used(b, e)
+      i = e
+    elseif e then
+      for n = #self.refs, 1, -1 do
+        if self.refs[n].b >= b and self.refs[n].e <= e then table.remove(self.refs, n) end
+      end
+      local at = 1
+      while self.refs[at] and self.refs[at].b < b do at = at + 1 end
+      for n, id in ipairs(picked) do
+        table.insert(self.refs, at + n - 1, { kind = "aircraft", name = id, b = b, e = e, exists = true, by_description = true })
+      end
+      self:explain(b, e)
+      self:mark_used(b, e)
+      i = e
+    else
+      i = i + 1
     end
   end
 end

@@ -1010,7 +1010,13 @@ return function(H, f, compass)
       return self:delete_waypoint(s)
     end
     local ids = {}
-    if self:word_in(s.b, s.e, "@all") then
+    -- ("we don't need it after all": "after all" ending its clause is the idiom, no aircraft counted)
+    local all = false
+    for k = s.b, s.e - 1 do
+      local idiom = self:word(k - 1, "after") and (not self.t[k + 1] or self.t[k + 1].kind == "punct")
+      all = all or (self:word(k, "@all") and not idiom)
+    end
+    if all then
       for _, a in ipairs(self.fleet) do ids[#ids + 1] = a.id end
       if #ids == 0 then return self:need("There are no aircraft. Which aircraft should I delete?") end
     else
@@ -3288,10 +3294,10 @@ return function(H, f, compass)
   function m:bare(_, spec) self:emit(spec.cmd) end
   -- OP; "resume at 2x", "resume the simulation at x3": a rate said after "at" is a DTMULT too
   function m:resume(s)
-    -- An unpause to come, said by its speaker ("when I unpause", "until we resume"), starts nothing now: "pause
-    -- until I resume" is the pause alone; a rate said with it would not outlast it (OP runs at DTMULT 1, as
-    -- BlueSky's: "pause and go 2x when I unpause" is asked), nor is anything else said to happen then
-    if self:word(s.trig - 1, "i we you") and self:word(s.trig - 2, "when once after until till") then
+    -- An unpause to come, said by its speaker ("when I unpause", "until we resume", "before we continue"), starts
+    -- nothing now: "pause until I resume" is the pause alone; a rate said with it would not outlast it (OP runs at
+    -- DTMULT 1, as BlueSky's: "pause and go 2x when I unpause" is asked), nor is anything else said to happen then
+    if self:word(s.trig - 1, "i we you") and self:word(s.trig - 2, "when once after until till before") then
       local rate = false
       for _, c in ipairs(self.out) do rate = rate or c:match("^DTMULT") ~= nil end
       for _, q in ipairs(self:quantities(1, #self.t + 1)) do rate = rate or q.kind == "mult" end
@@ -3299,7 +3305,7 @@ return function(H, f, compass)
         return self:need("Unpausing (OP) sets the rate back to 1x, so a rate set now would not hold then: please "
           .. "give the rate as you unpause (\"resume at 2x\").")
       end
-      if self:word(s.trig - 2, "until till") and self.out[#self.out] == "HOLD" then
+      if self:word(s.trig - 2, "until till before") and self.out[#self.out] == "HOLD" then
         return self:explain(s.trig - 2, s.trig + 1)
       end
       return self:need("Nothing is run when you unpause later: what should happen now?")

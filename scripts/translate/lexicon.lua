@@ -233,11 +233,11 @@ return {
         "when able", "if able", "if you can", "if you could", "if you would", "if possible",
         "if you don't mind", "if it's not too much trouble", "as soon as possible", "as soon as you can",
         -- a polite speaker's hedges on the whole request ("..., if that is at all possible", "would it be too much
-        -- trouble to ask ...", "if it's no trouble", "if that's a thing", "of course")
+        -- trouble to ask ...", "if it's no trouble", "if that's a thing", "of course", "we don't need it after all")
         "if that is at all possible", "if at all possible", "if that is possible", "if that's possible",
         "if it is possible", "if it's possible", "if it's no trouble", "if it is no trouble", "if that's no trouble",
         "if that is no trouble", "would it be too much trouble", "is it too much trouble", "if that's a thing",
-        "if that is a thing", "of course", "i apologise", "i apologize", "my apologies", "as a separate thing", "block of trials",
+        "if that is a thing", "of course", "after all", "i apologise", "i apologize", "my apologies", "as a separate thing", "block of trials",
         "blocks of trials",
         "if the computer can cope with it", "if the computer can cope", "if the simulation can cope with it",
         -- urgency ("descend FL200 at once", "right away": what squawk sends runs at once)
@@ -784,6 +784,15 @@ return {
           "playback", "serial" },
   -- (an agent: an aircraft, in a learning environment's words)
   aircraft_nouns = { "aircraft", "plane", "airplane", "flight", "agent" },
+  -- words that compare the aircraft flying by their state, said after "the" (G:described_refs): the field of
+  -- the aircraft's state compared and +1 for the most of it, -1 for the least; how near two values are for the
+  -- words to tell those aircraft apart no more (ft, kt); the nouns naming every aircraft flying as the group
+  -- compared ("the slowest of the aircraft", "the faster of the two planes")
+  compared_measures = { highest = { "alt_ft", 1 }, higher = { "alt_ft", 1 }, lowest = { "alt_ft", -1 },
+    lower = { "alt_ft", -1 }, fastest = { "cas_kt", 1 }, faster = { "cas_kt", 1 }, quickest = { "cas_kt", 1 },
+    quicker = { "cas_kt", 1 }, slowest = { "cas_kt", -1 }, slower = { "cas_kt", -1 } },
+  compared_margin = { alt_ft = 100, cas_kt = 5 },
+  group_nouns = { "aircraft", "planes", "airplanes", "flights", "jets", "ones", "them", "all" },
   -- words that describe an aircraft before "from" and its airline ("the regional jet from Republic")
   aircraft_described = { "jet", "jets", "regional", "airliner", "one", "small", "big", "heavy", "little", "widebody",
       "narrowbody", "turboprop", "prop", "aeroplane" },
@@ -1052,6 +1061,9 @@ return {
   -- switches
   off = { "off", "disable", "disabled", "deactivate", "deactivated", "hide", "stop", "don't", "dont", "without", "remove",
           "disengage", "disengaged", "disconnect", "disconnected", "inhibit", "inhibited" },
+  -- verbs of an item made to go, switching it off after "make", "let" or "have" ("make the trails disappear"); a
+  -- reason's ("show trails so aircraft disappear") switches nothing
+  off_made = { "disappear", "vanish" },
   off_after = { "anymore", "longer" },
   -- an aircraft's being wanted no more, the reason for removing it ("WZZ1523 is not needed anymore, remove it")
   unneeded = { "needed", "required", "wanted", "necessary" },
@@ -1475,7 +1487,10 @@ return {
     -- between (G:relative_departure)
     departs = { "departed", "departing", "left", "leaving" },
     relatives = { "that", "that's", "thats", "which", "who", "who's", "whos" },
-    relative_fill = { "just", "has", "have", "had", "is", "was", "now", "recently", "only", "since" } },
+    relative_fill = { "just", "has", "have", "had", "is", "was", "now", "recently", "only", "since" },
+    -- the same told of the aircraft as a pronoun, "just" between ("It has just departed Schiphol in my story"): the
+    -- recent past narrated, no origin set
+    narrated = { "it", "it's", "its", "he", "he's", "she", "she's" } },
   -- kinds of navaid, said beside a navaid's name ("the Pampus VOR, PAM")
   navaid_kinds = { "vor", "ndb", "dme", "vortac", "navaid", "beacon" },
   -- words that put a place's ident after its name ("Thermal, that is TRM"), and the lower-case words inside a

@@ -85,6 +85,12 @@ return function(intent, rule, words)
   -- an instruction announced with "expect" is no clearance
   rule { "*", false, prev = { 2, "@not_a_clearance" } }
   rule { "*", false, prev = { 3, "advise" }, when = function(g, i) return g:preceded_by(i, 2, "able") end }  -- "advise when able direct X"
+  -- "I think it's paused", "is it stopped?": the run's state told or asked, no instruction ("keep it paused"
+  -- instructs)
+  rule { "pause paused stop stopped freeze frozen", false, prev = { 1, "it is" }, when = function(g, i)
+    local raw = g.t[i].raw:lower()  -- (the participle: the lexer reads "paused" as "pause")
+    return (raw:match("ed$") ~= nil or raw == "frozen") and not g:word(i - 2, "keep leave get have make")
+  end }
   -- "BAW918 A320 @ TEBRO hdg 170 FL320 M0.78", "ac: AAL2307 B772 ...": a request (or its part after a
   -- label and colon) that opens with a callsign no aircraft has and its type, then values: a new aircraft
   -- (before any other rule: the first word after the type, "hdg", starts the creation)
@@ -221,11 +227,12 @@ return function(intent, rule, words)
   rule { "speed altitude level", false, prev = { 6, "comply" }, next = "and restriction restrictions" }
   -- "swr84c altitude?", "afr1442 speed?", "bel21a lvl?": a state word asked with "?" straight after it, an aircraft named
   -- before it and no value said anywhere: a question of the aircraft's state (POS), no instruction (an
-  -- instruction's shorthand, "ezy45 fl?", "hdg?", is a value left out: asked)
+  -- instruction's shorthand, "ezy45 fl?", "hdg?", is a value left out: asked; "stay at its current altitude?" names
+  -- the value kept, no question of state)
   rule { "altitude level speed heading mach airspeed", "pos", when = function(g, i)
     local nx = g.t[i + 1]
     return nx ~= nil and nx.kind == "punct" and nx.text == "?" and g:has_ref(1, i, "aircraft")
-      and #g:quantities(1, #g.t + 1) == 0
+      and #g:quantities(1, #g.t + 1) == 0 and not g:word(i - 1, "current present same its his her their your")
   end }
 
   -- "put the sim 3 times faster, the climb takes too long", "the turn was too late": the instruction word after
@@ -284,6 +291,23 @@ return function(intent, rule, words)
     while g.t[e] and g.t[e].kind ~= "punct" do e = e + 1 end
     local k = g:word(i + 2, "the its") and i + 3 or i + 2
     return g:word(k, "route") and e == k + 1 and #g:quantities(i, e) == 0
+  end }
+  -- "follow its route again, and also the altitudes of the route": the route's levels, said after "follow" in its
+  -- sentence and ending their clause, are flown too (VNAV)
+  rule { "altitude level height", "vnav", when = function(g, i)  -- (plurals read as these)
+    local k = g:word(i + 2, "the its their his her") and i + 3 or i + 2
+    if not (g:word(i + 1, "of on in along") and g:word(k, "@route_nouns")) then return false end
+    -- (in the sentence of "follow", ending its clause: "The altitudes of the route are fine" is a remark)
+    local e = k + 1
+    while g:word(e, "too again also") or (g:word(e, "as") and g:word(e + 1, "well")) do
+      e = g:word(e, "as") and e + 2 or e + 1
+    end
+    if g.t[e] and g.t[e].kind ~= "punct" then return false end
+    for x = i - 1, 1, -1 do
+      if g.t[x].kind == "punct" and g.t[x].text ~= "," then return false end
+      if g:word(x, "follow follows following") then return true end
+    end
+    return false
   end }
   rule { "climb climbing descend descending altitude alt cruise altitudes desc clb", "alt" }
   -- "rise to FL200", "ascend to FL200": a climb said so, with its level after it

@@ -12602,3 +12602,59 @@ do
   check_eq(ex("Thank you. Please resume the simulation at normal speed."), "OP")
   check_eq(ex("Please resume the simulation at 3x speed."), "OP ; DTMULT 3")
 end
+
+-- Cycle 50 (f126a): an aircraft described by how it compares with the traffic ("the highest aircraft", "the slower
+-- of the two Boeings"), by its level ("the aircraft at FL190") or by its airline and family number ("the Qatar 777"):
+-- read when exactly the aircraft described fit, asked when several, none or a tie do
+do
+  local _, ex = scene({ "CRE AFR11 A320 47.0 2.0 090 FL250 290", "CRE AFR12 A319 47.2 2.5 270 FL310 260",
+    "CRE BEL3 B738 47.4 2.2 180 FL190 300", "CRE SWR7 B77W 47.6 2.8 360 FL250 310" })
+  check_eq(ex("the highest aircraft, please descend it to FL290"), "ALT AFR12 FL290")
+  check_eq(ex("could the lowest one climb to FL210"), "ALT BEL3 FL210")
+  check_eq(ex("please make the fastest of the aircraft slow to 280 knots"), "SPD SWR7 280")
+  check_eq(ex("the lower of the two Airbuses should climb to FL270"), "ALT AFR11 FL270")
+  check_eq(ex("could the slower of the two Boeings go to 320 knots"), "SPD BEL3 320")
+  check_eq(ex("the highest Boeing climb FL400"), "ALT SWR7 FL400")
+  check_eq(ex("the slowest Air France, speed 240"), "SPD AFR12 240")
+  check_eq(ex("could the aircraft at FL190 turn left heading 150"), "HDG BEL3 150 LEFT")
+  check_eq(ex("the two aircraft at flight level 250 should both climb to FL260"), "ALT AFR11 FL260 ; ALT SWR7 FL260")
+  asked(ex("the faster of the two aircraft descend FL200"), "four aircraft fly, not two")
+  asked(ex("the faster of the three Boeings descend FL200"), "two Boeings fly, not three")
+  asked(ex("the aircraft at FL250 climb FL260"), "two aircraft at FL250")
+  asked(ex("the aircraft at FL200 climb FL260"), "no aircraft at FL200")
+  asked(ex("the smaller Air France climb FL330"), "size words never compare")
+  -- (beside a callsign said, the words describe it or are asked about)
+  check_eq(ex("turn BEL3 left heading 150, it's the one at FL190"), "HDG BEL3 150 LEFT")
+  asked(ex("turn AFR11 left heading 150, it's the one at FL190"), "the description fits another aircraft")
+  asked(ex("turn the highest aircraft and BEL3 left heading 200"), "a description beside a callsign")
+end
+do
+  local _, ex = scene({ "CRE QTR8 B77W 25.0 51.0 090 FL350 290", "CRE QTR21 A359 25.3 51.2 270 FL330 280",
+    "CRE ETD4 A320 25.1 51.4 180 FL330 280" })
+  check_eq(ex("the Qatar 777 descend FL300"), "ALT QTR8 FL300")
+  check_eq(ex("the highest aircraft climb FL370"), "ALT QTR8 FL370")
+  asked(ex("could the Qatar 787 descend FL300"), "no Qatar 787 flies")
+  asked(ex("the higher of the two Airbuses climb FL370"), "both Airbuses at FL330")
+  asked(ex("the faster of the two Airbuses slow to 250"), "both Airbuses at 280 knots")
+end
+
+-- Cycle 50 (f126a): words that had read as the wrong command: trails made to "vanish" are off; "the altitudes of the
+-- route" after "follow" are VNAV; "its current altitude?" is the level kept, no question of state; "after all" counts
+-- no aircraft; "it is stopped" tells the run's state; "before we resume" an unpause to come; a condition before a
+-- sentence's end is never the next sentence's; "speed up a bit" has no value and is asked
+do
+  local _, ex = scene({ "CRE AFR11 A320 47.0 2.0 090 FL250 290", "CRE BEL3 B738 47.4 2.2 180 FL190 300",
+    "ADDWPT BEL3 47.8 2.2", "ALT BEL3 FL300" })
+  check_eq(ex("could you make the trails vanish"), "TRAIL OFF")
+  check_eq(ex("show the trails so aircraft disappear slower"), "TRAIL ON")
+  check_eq(ex("could BEL3 follow its route again, and the altitudes of its route as well?"), "LNAV BEL3 ON ; VNAV BEL3 ON")
+  asked(ex("BEL3 follow its route. The altitudes of the route are fine."), "a remark on the route's altitudes")
+  check_eq(ex("could BEL3 stop climbing and keep its current altitude?"), "ALT BEL3 19000")
+  check_eq(ex("BEL3 altitude?"), "POS BEL3")
+  check_eq(ex("please remove BEL3, we won't use it after all"), "DEL BEL3")
+  check_eq(ex("remove them all"), "ASK Delete 2 aircraft (AFR11, BEL3)? (yes or no)")
+  check_eq(ex("start the run again, it is stopped"), "OP")
+  check_eq(ex("please freeze the run, we'll fix the display before we resume"), "HOLD")
+  asked(ex("AFR11 climb FL300 once it reaches 280 knots. Slow it to 280 first, please."), "the condition's sentence")
+  asked(ex("AFR11 turn right heading 100 and, er, speed up a little"), "a speed with no value")
+end
