@@ -188,7 +188,7 @@ local function know_all(v, seen)
   -- lexicon.name_particles are words of a place's name ("de los reyes"), accounted for only inside the name read,
   -- and lexicon.digit_homophones digits only inside a callsign read ("won", "ate"); lexicon.kept_as_is only
   -- where a value is read as kept; lexicon.id_labels only the letters of a label's id, lexicon.terse_list only
-  -- the words of a terse list, lexicon.self_correction.apology only after a value ruled out, lexicon.replaced_lead
+  -- the words of a terse list, lexicon.self_correction.apology only after a value ruled out (judged: none), lexicon.replaced_lead
   -- only before a value replaced, lexicon.ff_ended only before a fast-forward ended, lexicon.countries only
   -- inside a callsign read)
   if type(v) ~= "table" or seen[v] or v == lexicon.accounted.courtesy_phrases or v == lexicon.accounted.value_phrases
@@ -200,8 +200,8 @@ local function know_all(v, seen)
       or v == lexicon.dictated_punctuation or v == lexicon.acknowledged or v == lexicon.said_whole or v == lexicon.heard_as
       or v == lexicon.name_particles or v == lexicon.digit_homophones or v == lexicon.asides_alone
       or v == lexicon.kept_as_is or v == lexicon.id_labels or v == lexicon.terse_list
-      or v == lexicon.self_correction.apology or v == lexicon.replaced_lead or v == lexicon.ff_ended
-      or v == lexicon.countries then
+      or v == lexicon.self_correction.apology or v == lexicon.self_correction.judged or v == lexicon.replaced_lead
+      or v == lexicon.ff_ended or v == lexicon.countries then
     return
   end
   seen[v] = true
@@ -5364,6 +5364,36 @@ function G:unexplained(s, n_before)
   end
 end
 
+-- True when the words first .. last closing the request are all apologies (lexicon.self_correction.apology)
+-- said after a remark (G:closing_remark): the speaker apologises for the remark, nothing is taken back
+-- ("... ten times speed? We haven't got all afternoon, sorry!", "pause the sim, the fire alarm is being tested,
+-- sorry"; "descend to 6000 feet, sorry", "pause the sim please, sorry" and "turn left heading 200, the other way,
+-- sorry" still ask what was meant)
+function G:apology_after_remark(first, last)
+  for x = first, last do
+    if self.t[x].kind ~= "punct" and not G.apology[self.words[x]] then return false end
+  end
+  local e = first - 1
+  while e > 0 and self.t[e].kind == "punct" do e = e - 1 end
+  local b = self:closing_remark(e)
+  return b ~= nil and not self:word_in(b, e + 1, G.judged)
+end
+
+-- The first token of the clause ending at token e, back to the punctuation before it, when that clause states
+-- something (an auxiliary, "is", "haven't", "we're": lexicon.accounted.auxiliaries) and is commentary
+-- (G:commentary: no instruction word, value, aircraft or place), else nil.
+G.remark_auxiliaries, G.judged = set_of(lexicon.accounted.auxiliaries), set_of(lexicon.self_correction.judged)
+function G:closing_remark(e)
+  local b = e
+  while b > 1 and self.t[b - 1].kind ~= "punct" do b = b - 1 end
+  if e <= b or not self:commentary(b, e + 1) then return nil end
+  for x = b, e do
+    local w = self.words[x]
+    if w and (G.remark_auxiliaries[w] or w:match("n't$") or w:match("'[rv]e$")) then return b end
+  end
+  return nil
+end
+
 -- "descend flight level one two zero, uh, correction": a correction with
 -- nothing after it says the request is wrong without saying how; asked.
 function G:dangling_correction()
@@ -5372,6 +5402,19 @@ function G:dangling_correction()
   if last > 0 and self:word(last, "@correction") then
     self:need(string.format("You said '%s' with nothing after it. What is the corrected instruction?",
       self.t[last].raw:lower()))
+    return
+  end
+  -- a remark closing the request that judges what was said, opened by the speaker or "that" ("climb FL100, that
+  -- was wrong", "... I got it mixed up, sorry": lexicon.self_correction_judges, lexicon.self_correction.judged),
+  -- takes it back with nothing in its place ("delete BAW456, it was put in by mistake" says why)
+  local judged_e = last
+  while judged_e > 0 and (self.t[judged_e].kind == "punct" or G.apology[self.words[judged_e]]) do
+    judged_e = judged_e - 1
+  end
+  local remark = judged_e > 0 and self:closing_remark(judged_e)
+  if remark and remark > 1 and self:word(remark, "@self_correction_judges")
+      and self:word_in(remark, judged_e + 1, G.judged) then
+    self:need(string.format("You said '%s'. What is the corrected instruction?", self:raw(remark, last + 1)))
     return
   end
   -- the same for a self-correction in words closing the request ("turn left 20, sorry", "climb FL300, no
@@ -5389,7 +5432,7 @@ function G:dangling_correction()
       or false
   end
   while first <= last and self.t[first].kind == "punct" do first = first + 1 end
-  if marked and first > 1 then
+  if marked and first > 1 and not self:apology_after_remark(first, last) then
     self:need(string.format("You said '%s' with nothing after it. What is the corrected instruction?",
       self:raw(first, last + 1)))
   end

@@ -659,6 +659,9 @@ return {
   correction = { "correction", "disregard", "negative" },
   -- pronouns that open the reason an instruction is taken back, said after the correction ("insert SINCA... no
   -- wait, it's already there, add BURNY before CANUK": G:taken_back)
+  -- the first words of a remark that judges what the speaker said ("that was wrong", "I got it mixed up", "my
+  -- mistake": G:dangling_correction)
+  self_correction_judges = { "that", "that's", "this", "i", "i've", "i'd", "my" },
   self_correction_reason_openers = { "it's", "that's", "its", "it", "that", "he's", "she's", "they're" },
   -- who speaks, said as a label before the request ("instructor: KLM101 turn right", "instructor here:
   -- create ...", "sim op: ..."): the label is no part of the request
@@ -742,6 +745,10 @@ return {
                       only = { "just", "only" },
                       -- an apology closing a value ruled out ("fl200 not 180 sorry"): the value before stands
                       apology = { "sorry", "apologies", "oops", "soz" },
+                      -- words of a remark that judges what was said ("that was wrong", "I got it mixed up", "my
+                      -- mistake"): closing the request, such a remark takes the instruction back, asked
+                      judged = { "wrong", "mistake", "mistaken", "incorrect", "misspoke", "misspoken", "error",
+                                 "typo", "mixed", "muddled", "backwards", "meant", "messed" },
                       -- a verb of setting before the instruction said in place of the one taken back ("half
                       -- height one thousand... no, set zone half height to five hundred feet")
                       setting = { "set", "put", "change", "reset" },

@@ -12301,3 +12301,17 @@ do
   local _, ex = scene({ "CRE BAW968 A320 52.6 9.0 010 FL180 280", "ADDWPT BAW968 52.8 9.0" })
   check_eq(ex("please delete the route of BAW968, I'm going to give it headings instead"), "DELRTE BAW968")
 end
+
+-- Cycle 50 (f128): an apology closing a remark that states something and instructs nothing ("..., the projector
+-- has frozen, sorry!") is for the remark, the request read; "sorry" straight after an instruction, or after a
+-- remark that judges what was said ("that was wrong", "I got them mixed up"), is still asked
+do
+  local _, ex = scene({ "CRE KLM41 A320 52.0 4.0 090 FL300 280" })
+  check_eq(ex("could you freeze the simulation please, the projector has frozen, sorry!"), "HOLD")
+  check_eq(ex("KLM41 climb to FL340 please. The students are taking notes, sorry."), "ALT KLM41 FL340")
+  asked(ex("KLM41 climb to FL340, sorry."), "'sorry' straight after the instruction")
+  asked(ex("KLM41 turn left heading 200, the other way, sorry"), "a clause that states nothing")
+  asked(ex("KLM41 climb to FL340, that was wrong, sorry"), "a remark judging the instruction")
+  asked(ex("KLM41 climb to FL340. I got them mixed up!"), "a remark judging the instruction, no apology")
+  check_eq(ex("please delete KLM41, it was created by mistake"), "DEL KLM41")
+end
