@@ -1366,6 +1366,14 @@ local function written_forms(text, world)
   where("jet", "%f[%w][Jj][Ee][Tt]%s?2(%s+)(%w+)", function(space, nx)
     if nx:match("^%d") or DIGIT_WORDS[nx:lower()] then return "channex" .. space .. nx end
   end)
+  -- ("the Jet2", "Jet2's route", "a Jet2 flight EXS77K": the brand written as one word is the airline anywhere
+  -- but where an aircraft's id is JET2; "the jet 2" apart may count jets, left as said)
+  where("jet", "%f[%w][Jj][Ee][Tt]2%f[%W]", function()
+    for _, a in ipairs(world and world.aircraft or {}) do
+      if (a.id or ""):upper() == "JET2" then return nil end
+    end
+    return "channex"
+  end)
   -- "orig/dest AFR1234: LFPG -> LFML", "origin/destination EZY45 EGKK EHAM": both settings written as one
   -- with a slash, then the aircraft and the two airports in that order (an arrow between them or none)
   where("orig", "%f[%a]([Oo][Rr][Ii][Gg]%a*)%s*/%s*([Dd][Ee][Ss][Tt]%a*)%s+(%w+):?%s+(%a%a%a%a)%s*%-*>?%s*(%a%a%a%a)%f[%A]",

@@ -96,6 +96,8 @@ return {
         "kinda", "sorta", "somewhat",
         "ok", "okay", "oh", "hmm", "hm", "ehm", "erm", "uhm", "hey", "yes", "yeah", "sorry", "anyway", "righto", "exactly", "possibly", "currently",
         "precisely", "roughly", "approximately",
+        -- (interjections of a chatty speaker: "Ooh, and add Rosun ...", "ah, and the Speedbird ...")
+        "ooh", "ah", "ahh", "aah",
         -- (a value said loosely, "250-ish", "like 250ish": the value said is the one flown, as "roughly 250")
         "ish", "afterwards", "afterward", "meanwhile", "completely", "fully",
         -- (a report's order of events and degree: "was subsequently given", "disable it altogether")

@@ -12315,3 +12315,15 @@ do
   asked(ex("KLM41 climb to FL340. I got them mixed up!"), "a remark judging the instruction, no apology")
   check_eq(ex("please delete KLM41, it was created by mistake"), "DEL KLM41")
 end
+
+-- Cycle 50 (f128): the brand "Jet2" written as one word is the airline (Channex, EXS) anywhere, as "the Jet2",
+-- "the Jet2's route" or before a new callsign; "ooh" and "ah" are interjections. Two Jet2 aircraft are asked
+do
+  local _, ex = scene({ "CRE EXS31B B738 53.6 -2.6 180 FL180 290", "CRE TOM4BN B38M 53.3 -1.8 320 FL80 250" })
+  check_eq(ex("could you turn the Jet2 left heading 140 please"), "HDG EXS31B 140 LEFT")
+  check_eq(ex("ah, and send the Jet2's speed down to 230 knots"), "SPD EXS31B 230")
+  check_eq(ex("Ooh, please create Jet2 flight EXS5M, a 737-800, at 53 north 2 west, heading 090, FL120, 250 knots"),
+    "CRE EXS5M B738 53 -2 90 FL120 250")
+  local _, ex2 = scene({ "CRE EXS31B B738 53.6 -2.6 180 FL180 290", "CRE EXS7 A321 53.3 -1.8 320 FL80 250" })
+  asked(ex2("could you turn the Jet2 left heading 140 please"), "two Jet2 aircraft")
+end
