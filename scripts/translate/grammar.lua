@@ -2781,6 +2781,12 @@ function G:condition()
         and not self:word_in(v, #self.t + 1, "@correction now") then
       q = wp
     end
+    -- ("EZY19GH, when you reach Glasgow VOR, turn left ...": a place said by its name closing the condition)
+    local cm = v and not (wp and q == wp) and v
+    while cm and self.t[cm] and not (self.t[cm].kind == "punct" and self.t[cm].text == ",") do cm = cm + 1 end
+    local named = cm and cm <= #self.t and not (q and q.b < cm) and not self:word_in(v, #self.t + 1, "@correction now")
+      and self:reached_by_name(v, cm, lead.name)[1]
+    if named then q = named end
     if not q then return nil, 1 end
     -- ("DLH4AB when reaching speed 250, descend FL200": the speed's noun straight before its number)
     for x = v, q.b - 1 do
@@ -2867,6 +2873,9 @@ function G:condition()
   -- "when the Widerøe passes VIBUK, it should descend to 5000 feet", "once DLH2VA gets to MALIX, descend
   -- FL80": a waypoint the aircraft reaches, no value, is a constraint there (G:at_condition)
   local places = self:refs_in(i, comma, "waypoint")
+  if #places == 0 and comma <= #self.t and #self:quantities(i, comma) == 0 then
+    places = self:reached_by_name(i, comma, self.subject)
+  end
   if #places == 1 and #self:quantities(i, comma) == 0 then
     if not places[1].exists or not self:on_route(self.subject, places[1].name) then
       self.ask = self:off_route_question(self.subject, places[1].name)
@@ -2894,6 +2903,38 @@ function G:condition()
   end
   self.ask = "At what altitude or speed should " .. self.subject .. " act?"
   return nil, rest
+end
+
+-- A place said by its name closing the condition i .. comma - 1 straight after a verb of reaching ("when the BA
+-- gets to Biggin, ...", "when you reach Glasgow VOR, ...": lexicon.reached_place_words), near aircraft `id`
+-- (m:place_by_name): { {name =, exists = true, b =, e =} } (its tokens b .. e - 1, marked used), else {}.
+function G:reached_by_name(i, comma, id)
+  local v = comma - 1
+  while v > i and not self:word(v, "@reached_place_words") do v = v - 1 end
+  if v <= i or v >= comma - 1 or self:has_ref(v + 1, comma, "aircraft") or self:has_ref(i, comma, "waypoint") then
+    return {}
+  end
+  -- (only the aircraft and words of arriving before the place: "after DELON proceed to Minsk" is none)
+  local x = i + 1
+  while x <= v do
+    local r = self:refs_in(x, x + 1, "aircraft")[1]
+    if r then
+      x = r.e
+    elseif ARRIVING[self.words[x]] or self.t[x].filler or self:word(x, "the") then
+      x = x + 1
+    else
+      return {}
+    end
+  end
+  self.reached_named = self.reached_named or {}  -- (read once: the words are marked used)
+  local found = self.reached_named[v]
+  if found == nil then
+    local name = self:place_by_name(v + 1, comma, self:state(id), true)
+    found = name and { name = name, exists = true, b = v + 1, e = comma } or false
+    if name then self:mark_used(v + 1, comma) end
+    self.reached_named[v] = found
+  end
+  return found and { found } or {}
 end
 
 -- True when waypoint `wp` is on aircraft `id`'s route (as the simulator has it).

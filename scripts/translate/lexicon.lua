@@ -661,6 +661,10 @@ return {
   correction = { "correction", "disregard", "negative" },
   -- pronouns that open the reason an instruction is taken back, said after the correction ("insert SINCA... no
   -- wait, it's already there, add BURNY before CANUK": G:taken_back)
+  -- the words after which a waypoint condition names the place reached ("when the BA gets to Biggin", "once it
+  -- is over Pole Hill", "when you reach Glasgow VOR")
+  reached_place_words = { "to", "at", "over", "pass", "passes", "passing", "reach", "reaches", "hit", "hits", "cross",
+                    "crosses", "overflies" },
   -- the first words of a remark that judges what the speaker said ("that was wrong", "I got it mixed up", "my
   -- mistake": G:dangling_correction)
   self_correction_judges = { "that", "that's", "this", "i", "i've", "i'd", "my" },

@@ -12327,3 +12327,22 @@ do
   local _, ex2 = scene({ "CRE EXS31B B738 53.6 -2.6 180 FL180 290", "CRE EXS7 A321 53.3 -1.8 320 FL80 250" })
   asked(ex2("could you turn the Jet2 left heading 140 please"), "two Jet2 aircraft")
 end
+
+-- Cycle 50 (f128): a waypoint condition naming its place by the navaid's name after a verb of reaching ("when
+-- the KLM gets to Ockham, ...", "KLM41, when you reach Mayfield, ...") is that navaid near the aircraft; off the
+-- route, or a name squawk does not know, it is still asked
+do
+  local lon = squawk.sim.new()
+  check(lon:exec("CRE KLM41 A320 51.5 -0.6 150 FL120 280"))
+  if #lon:navaids_named("ockham", 51.5, -0.6, 100) == 1 then
+    check(lon:exec("ADDWPT KLM41 OCK"))
+    check(lon:exec("ADDWPT KLM41 MAY"))
+    local _, ex = set_up(lon, {})
+    check_eq(ex("When the KLM gets to Ockham, could you turn it right heading 200?"), "AT KLM41 OCK DO HDG KLM41 200 RIGHT")
+    check_eq(ex("KLM41, when you reach Mayfield, descend to 6000 feet please."), "AT KLM41 MAY DO ALT KLM41 6000")
+    asked(ex("When the KLM is over Lambourne, turn it left heading 090."), "a place off the route")
+    asked(ex("When the KLM gets to Gotham, turn it left heading 090."), "a name that is no place")
+  else
+    print("skipped: waypoint conditions by navaid name need navdata (SQUAWK_NAVDATA)")
+  end
+end
