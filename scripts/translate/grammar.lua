@@ -189,8 +189,8 @@ local function know_all(v, seen)
   -- and lexicon.digit_homophones digits only inside a callsign read ("won", "ate"); lexicon.kept_as_is only
   -- where a value is read as kept; lexicon.id_labels only the letters of a label's id, lexicon.terse_list only
   -- the words of a terse list, lexicon.self_correction.apology only after a value ruled out (.formal_apology read as
-  -- "sorry", .described only inside a correction's run), lexicon.limit_release only after a limit's place,
-  -- lexicon.replaced_lead
+  -- "sorry", .described only inside a correction's run, .judged: none), lexicon.limit_release only after a limit's
+  -- place, lexicon.replaced_lead
   -- only before a value replaced, lexicon.ff_ended only before a fast-forward ended, lexicon.countries only
   -- inside a callsign read)
   if type(v) ~= "table" or seen[v] or v == lexicon.accounted.courtesy_phrases or v == lexicon.accounted.value_phrases
@@ -204,7 +204,7 @@ local function know_all(v, seen)
       or v == lexicon.kept_as_is or v == lexicon.id_labels or v == lexicon.terse_list
       or v == lexicon.self_correction.apology or v == lexicon.replaced_lead or v == lexicon.ff_ended
       or v == lexicon.self_correction.formal_apology or v == lexicon.self_correction.described
-      or v == lexicon.limit_release
+      or v == lexicon.self_correction.judged or v == lexicon.limit_release
       or v == lexicon.countries then
     return
   end
@@ -1395,6 +1395,14 @@ local function written_forms(text, world)
   -- "jet2 44m", "Jet 2 one two": the airline's brand name (its telephony is Channex, EXS) before a flight number
   where("jet", "%f[%w][Jj][Ee][Tt]%s?2(%s+)(%w+)", function(space, nx)
     if nx:match("^%d") or DIGIT_WORDS[nx:lower()] then return "channex" .. space .. nx end
+  end)
+  -- ("the Jet2", "Jet2's route", "a Jet2 flight EXS77K": the brand written as one word is the airline anywhere
+  -- but where an aircraft's id is JET2; "the jet 2" apart may count jets, left as said)
+  where("jet", "%f[%w][Jj][Ee][Tt]2%f[%W]", function()
+    for _, a in ipairs(world and world.aircraft or {}) do
+      if (a.id or ""):upper() == "JET2" then return nil end
+    end
+    return "channex"
   end)
   -- "orig/dest AFR1234: LFPG -> LFML", "origin/destination EZY45 EGKK EHAM": both settings written as one
   -- with a slash, then the aircraft and the two airports in that order (an arrow between them or none)
@@ -2806,6 +2814,12 @@ function G:condition()
         and not self:word_in(v, #self.t + 1, "@correction now") then
       q = wp
     end
+    -- ("EZY19GH, when you reach Glasgow VOR, turn left ...": a place said by its name closing the condition)
+    local cm = v and not (wp and q == wp) and v
+    while cm and self.t[cm] and not (self.t[cm].kind == "punct" and self.t[cm].text == ",") do cm = cm + 1 end
+    local named = cm and cm <= #self.t and not (q and q.b < cm) and not self:word_in(v, #self.t + 1, "@correction now")
+      and self:reached_by_name(v, cm, lead.name)[1]
+    if named then q = named end
     if not q then return nil, 1 end
     -- ("DLH4AB when reaching speed 250, descend FL200": the speed's noun straight before its number)
     for x = v, q.b - 1 do
@@ -2892,6 +2906,9 @@ function G:condition()
   -- "when the Widerøe passes VIBUK, it should descend to 5000 feet", "once DLH2VA gets to MALIX, descend
   -- FL80": a waypoint the aircraft reaches, no value, is a constraint there (G:at_condition)
   local places = self:refs_in(i, comma, "waypoint")
+  if #places == 0 and comma <= #self.t and #self:quantities(i, comma) == 0 then
+    places = self:reached_by_name(i, comma, self.subject)
+  end
   if #places == 1 and #self:quantities(i, comma) == 0 then
     if not places[1].exists or not self:on_route(self.subject, places[1].name) then
       self.ask = self:off_route_question(self.subject, places[1].name)
@@ -2919,6 +2936,38 @@ function G:condition()
   end
   self.ask = "At what altitude or speed should " .. self.subject .. " act?"
   return nil, rest
+end
+
+-- A place said by its name closing the condition i .. comma - 1 straight after a verb of reaching ("when the BA
+-- gets to Biggin, ...", "when you reach Glasgow VOR, ...": lexicon.reached_place_words), near aircraft `id`
+-- (m:place_by_name): { {name =, exists = true, b =, e =} } (its tokens b .. e - 1, marked used), else {}.
+function G:reached_by_name(i, comma, id)
+  local v = comma - 1
+  while v > i and not self:word(v, "@reached_place_words") do v = v - 1 end
+  if v <= i or v >= comma - 1 or self:has_ref(v + 1, comma, "aircraft") or self:has_ref(i, comma, "waypoint") then
+    return {}
+  end
+  -- (only the aircraft and words of arriving before the place: "after DELON proceed to Minsk" is none)
+  local x = i + 1
+  while x <= v do
+    local r = self:refs_in(x, x + 1, "aircraft")[1]
+    if r then
+      x = r.e
+    elseif ARRIVING[self.words[x]] or self.t[x].filler or self:word(x, "the") then
+      x = x + 1
+    else
+      return {}
+    end
+  end
+  self.reached_named = self.reached_named or {}  -- (read once: the words are marked used)
+  local found = self.reached_named[v]
+  if found == nil then
+    local name = self:place_by_name(v + 1, comma, self:state(id), true)
+    found = name and { name = name, exists = true, b = v + 1, e = comma } or false
+    if name then self:mark_used(v + 1, comma) end
+    self.reached_named[v] = found
+  end
+  return found and { found } or {}
 end
 
 -- True when waypoint `wp` is on aircraft `id`'s route (as the simulator has it).
@@ -5507,6 +5556,36 @@ function G:unexplained(s, n_before)
   end
 end
 
+-- True when the words first .. last closing the request are all apologies (lexicon.self_correction.apology)
+-- said after a remark (G:closing_remark): the speaker apologises for the remark, nothing is taken back
+-- ("... ten times speed? We haven't got all afternoon, sorry!", "pause the sim, the fire alarm is being tested,
+-- sorry"; "descend to 6000 feet, sorry", "pause the sim please, sorry" and "turn left heading 200, the other way,
+-- sorry" still ask what was meant)
+function G:apology_after_remark(first, last)
+  for x = first, last do
+    if self.t[x].kind ~= "punct" and not G.apology[self.words[x]] then return false end
+  end
+  local e = first - 1
+  while e > 0 and self.t[e].kind == "punct" do e = e - 1 end
+  local b = self:closing_remark(e)
+  return b ~= nil and not self:word_in(b, e + 1, G.judged)
+end
+
+-- The first token of the clause ending at token e, back to the punctuation before it, when that clause states
+-- something (an auxiliary, "is", "haven't", "we're": lexicon.accounted.auxiliaries) and is commentary
+-- (G:commentary: no instruction word, value, aircraft or place), else nil.
+G.remark_auxiliaries, G.judged = set_of(lexicon.accounted.auxiliaries), set_of(lexicon.self_correction.judged)
+function G:closing_remark(e)
+  local b = e
+  while b > 1 and self.t[b - 1].kind ~= "punct" do b = b - 1 end
+  if e <= b or not self:commentary(b, e + 1) then return nil end
+  for x = b, e do
+    local w = self.words[x]
+    if w and (G.remark_auxiliaries[w] or w:match("n't$") or w:match("'[rv]e$")) then return b end
+  end
+  return nil
+end
+
 -- "descend flight level one two zero, uh, correction": a correction with
 -- nothing after it says the request is wrong without saying how; asked.
 function G:dangling_correction()
@@ -5515,6 +5594,19 @@ function G:dangling_correction()
   if last > 0 and self:word(last, "@correction") then
     self:need(string.format("You said '%s' with nothing after it. What is the corrected instruction?",
       self.t[last].raw:lower()))
+    return
+  end
+  -- a remark closing the request that judges what was said, opened by the speaker or "that" ("climb FL100, that
+  -- was wrong", "... I got it mixed up, sorry": lexicon.self_correction_judges, lexicon.self_correction.judged),
+  -- takes it back with nothing in its place ("delete BAW456, it was put in by mistake" says why)
+  local judged_e = last
+  while judged_e > 0 and (self.t[judged_e].kind == "punct" or G.apology[self.words[judged_e]]) do
+    judged_e = judged_e - 1
+  end
+  local remark = judged_e > 0 and self:closing_remark(judged_e)
+  if remark and remark > 1 and self:word(remark, "@self_correction_judges")
+      and self:word_in(remark, judged_e + 1, G.judged) then
+    self:need(string.format("You said '%s'. What is the corrected instruction?", self:raw(remark, last + 1)))
     return
   end
   -- the same for a self-correction in words closing the request ("turn left 20, sorry", "climb FL300, no
@@ -5533,7 +5625,7 @@ function G:dangling_correction()
       or false
   end
   while first <= last and self.t[first].kind == "punct" do first = first + 1 end
-  if marked and first > 1 then
+  if marked and first > 1 and not self:apology_after_remark(first, last) then
     self:need(string.format("You said '%s' with nothing after it. What is the corrected instruction?",
       self:raw(first, last + 1)))
   end

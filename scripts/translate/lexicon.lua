@@ -96,6 +96,8 @@ return {
         "kinda", "sorta", "somewhat",
         "ok", "okay", "oh", "hmm", "hm", "ehm", "erm", "uhm", "hey", "yes", "yeah", "sorry", "anyway", "righto", "exactly", "possibly", "currently",
         "precisely", "roughly", "approximately",
+        -- (interjections of a chatty speaker: "Ooh, and add Rosun ...", "ah, and the Speedbird ...")
+        "ooh", "ah", "ahh", "aah",
         -- (a value said loosely, "250-ish", "like 250ish": the value said is the one flown, as "roughly 250")
         "ish", "afterwards", "afterward", "meanwhile", "completely", "fully",
         -- (a report's order of events and degree: "was subsequently given", "disable it altogether")
@@ -679,6 +681,13 @@ return {
   correction = { "correction", "disregard", "negative" },
   -- pronouns that open the reason an instruction is taken back, said after the correction ("insert SINCA... no
   -- wait, it's already there, add BURNY before CANUK": G:taken_back)
+  -- the words after which a waypoint condition names the place reached ("when the BA gets to Biggin", "once it
+  -- is over Pole Hill", "when you reach Glasgow VOR")
+  reached_place_words = { "to", "at", "over", "pass", "passes", "passing", "reach", "reaches", "hit", "hits", "cross",
+                    "crosses", "overflies" },
+  -- the first words of a remark that judges what the speaker said ("that was wrong", "I got it mixed up", "my
+  -- mistake": G:dangling_correction)
+  self_correction_judges = { "that", "that's", "this", "i", "i've", "i'd", "my" },
   self_correction_reason_openers = { "it's", "that's", "its", "it", "that", "he's", "she's", "they're" },
   -- who speaks, said as a label before the request ("instructor: KLM101 turn right", "instructor here:
   -- create ...", "sim op: ..."): the label is no part of the request
@@ -769,6 +778,10 @@ return {
                       -- words that describe the aircraft said in place of one taken back ("American 100 -- no,
                       -- the second aircraft, United 200"; aircraft nouns too): part of the correction's run
                       described = { "the", "a", "an", "first", "second", "third", "fourth", "other" },
+                      -- words of a remark that judges what was said ("that was wrong", "I got it mixed up", "my
+                      -- mistake"): closing the request, such a remark takes the instruction back, asked
+                      judged = { "wrong", "mistake", "mistaken", "incorrect", "misspoke", "misspoken", "error",
+                                 "typo", "mixed", "muddled", "backwards", "meant", "messed" },
                       -- a verb of setting before the instruction said in place of the one taken back ("half
                       -- height one thousand... no, set zone half height to five hundred feet")
                       setting = { "set", "put", "change", "reset" },

@@ -12658,3 +12658,47 @@ do
   asked(ex("AFR11 climb FL300 once it reaches 280 knots. Slow it to 280 first, please."), "the condition's sentence")
   asked(ex("AFR11 turn right heading 100 and, er, speed up a little"), "a speed with no value")
 end
+-- Cycle 50 (f128): an apology closing a remark that states something and instructs nothing ("..., the projector
+-- has frozen, sorry!") is for the remark, the request read; "sorry" straight after an instruction, or after a
+-- remark that judges what was said ("that was wrong", "I got them mixed up"), is still asked
+do
+  local _, ex = scene({ "CRE KLM41 A320 52.0 4.0 090 FL300 280" })
+  check_eq(ex("could you freeze the simulation please, the projector has frozen, sorry!"), "HOLD")
+  check_eq(ex("KLM41 climb to FL340 please. The students are taking notes, sorry."), "ALT KLM41 FL340")
+  asked(ex("KLM41 climb to FL340, sorry."), "'sorry' straight after the instruction")
+  asked(ex("KLM41 turn left heading 200, the other way, sorry"), "a clause that states nothing")
+  asked(ex("KLM41 climb to FL340, that was wrong, sorry"), "a remark judging the instruction")
+  asked(ex("KLM41 climb to FL340. I got them mixed up!"), "a remark judging the instruction, no apology")
+  check_eq(ex("please delete KLM41, it was created by mistake"), "DEL KLM41")
+end
+
+-- Cycle 50 (f128): the brand "Jet2" written as one word is the airline (Channex, EXS) anywhere, as "the Jet2",
+-- "the Jet2's route" or before a new callsign; "ooh" and "ah" are interjections. Two Jet2 aircraft are asked
+do
+  local _, ex = scene({ "CRE EXS31B B738 53.6 -2.6 180 FL180 290", "CRE TOM4BN B38M 53.3 -1.8 320 FL80 250" })
+  check_eq(ex("could you turn the Jet2 left heading 140 please"), "HDG EXS31B 140 LEFT")
+  check_eq(ex("ah, and send the Jet2's speed down to 230 knots"), "SPD EXS31B 230")
+  check_eq(ex("Ooh, please create Jet2 flight EXS5M, a 737-800, at 53 north 2 west, heading 090, FL120, 250 knots"),
+    "CRE EXS5M B738 53 -2 90 FL120 250")
+  local _, ex2 = scene({ "CRE EXS31B B738 53.6 -2.6 180 FL180 290", "CRE EXS7 A321 53.3 -1.8 320 FL80 250" })
+  asked(ex2("could you turn the Jet2 left heading 140 please"), "two Jet2 aircraft")
+end
+
+-- Cycle 50 (f128): a waypoint condition naming its place by the navaid's name after a verb of reaching ("when
+-- the KLM gets to Ockham, ...", "KLM41, when you reach Mayfield, ...") is that navaid near the aircraft; off the
+-- route, or a name squawk does not know, it is still asked
+do
+  local lon = squawk.sim.new()
+  check(lon:exec("CRE KLM41 A320 51.5 -0.6 150 FL120 280"))
+  if #lon:navaids_named("ockham", 51.5, -0.6, 100) == 1 then
+    check(lon:exec("ADDWPT KLM41 OCK"))
+    check(lon:exec("ADDWPT KLM41 MAY"))
+    local _, ex = set_up(lon, {})
+    check_eq(ex("When the KLM gets to Ockham, could you turn it right heading 200?"), "AT KLM41 OCK DO HDG KLM41 200 RIGHT")
+    check_eq(ex("KLM41, when you reach Mayfield, descend to 6000 feet please."), "AT KLM41 MAY DO ALT KLM41 6000")
+    asked(ex("When the KLM is over Lambourne, turn it left heading 090."), "a place off the route")
+    asked(ex("When the KLM gets to Gotham, turn it left heading 090."), "a name that is no place")
+  else
+    print("skipped: waypoint conditions by navaid name need navdata (SQUAWK_NAVDATA)")
+  end
+end
