@@ -1706,9 +1706,10 @@ return {
   tens = { "twenty", "thirty", "forty", "fourty", "fifty", "sixty", "seventy", "eighty", "ninety" },
   -- words speech recognition writes for a spoken "two" before digits
   two_heard = { "to", "too", "t" },
-  -- units a value said after an airline name carries ("turn the Ryanair 20 degrees"): no flight number
+  -- units a value said after an airline name carries ("turn the Ryanair 20 degrees", "move the Ryanair 20
+  -- nautical miles south"): no flight number
   value_units = { degrees = true, degree = true, knots = true, knot = true, kts = true, feet = true, ft = true,
-                  percent = true },
+                  percent = true, nm = true, nautical = true, miles = true, mile = true, km = true },
   -- airlines' telephony that is also the noun of a value, word -> {ICAO prefix, the noun's plain word}: before
   -- a number and its unit, or after one of value_noun_before with none of the airline flying, it is that noun
   -- ("VLG12AB velocity 250 knots", "reduce the velocity"; grammar.lua airline_values)
