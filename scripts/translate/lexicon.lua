@@ -1576,16 +1576,18 @@ return {
       empieza = "start", ["detén"] = "stop", deten = "stop", detenga = "stop", detener = "stop",
       reinicia = "reset", reiniciar = "reset", reinicie = "reset", escenario = "scenario", carga = "load",
       cargue = "load", cargar = "load", agrega = "add", agregue = "add", ["añade"] = "add", anade = "add",
-      ["añada"] = "add", anada = "add", quita = "remove", quite = "remove", retira = "remove",
+      ["añada"] = "add", anada = "add", quita = "remove", retira = "remove",
       nuevo = "new", nueva = "new", avion = "aircraft", ["avión"] = "aircraft", aeronave = "aircraft",
       ["deteccion de conflictos"] = "conflict detection", ["detección de conflictos"] = "conflict detection",
     },
     -- words of `words` said the same in Portuguese or Italian: no sign of Spanish alone
     shared = { destino = true, crea = true, continua = true, minuto = true, nivel = true, pause = true, vira = true,
       gira = true, carga = true, metros = true, altitud = true },
-    -- small words also English, Portuguese or Italian ("a", "con", "en", "suba")
+    -- words also English, Portuguese or Italian ("a", "con", "en", "suba"; "quite", English "I'm quite new to
+    -- this"): read only in a sentence another word marks Spanish
     joining = { a = "at", al = "to the", la = "the", el = "the", los = "the", las = "the", un = "a", una = "a",
-      en = "at", con = "at", y = "and", mil = "thousand", suba = "climb", de = "of", del = "of the" },
+      en = "at", con = "at", y = "and", mil = "thousand", suba = "climb", de = "of", del = "of the",
+      quite = "remove" },
   },
   french = {
     words = {
@@ -1720,6 +1722,9 @@ return {
   -- an intruder set up against an aircraft (CRECONFS): the nouns that name it, and the words before
   -- or after its closest approach, its loss of separation and a head-on course
   intruder = { "intruder", "conflict", "conflicting", "converger" },
+  -- encounters an instruction to traffic flying brings about ("to create a crossing", "make the conflict a near
+  -- miss"): no aircraft created
+  encounters_made = { "conflict", "crossing", "encounter", "miss", "collision", "situation", "convergence" },
   closest_approach = { "cpa", "miss", "passing", "closest" },
   loss_of_separation = { "los", "tlos", "tlosh", "loss" },
   head_on = { "head-on", "head" },

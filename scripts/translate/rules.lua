@@ -824,6 +824,35 @@ return function(intent, rule, words)
     end
     return false
   end }
+  -- True when no aircraft type and no new callsign are said after i, and an instruction word and an aircraft
+  -- flying before it
+  local function after_instruction_no_new(g, i)
+    if g:has_ref(i + 1, #g.t + 1, "type") then return false end
+    local named = false
+    for _, r in ipairs(g.refs) do
+      if r.kind == "aircraft" and not r.exists and r.b > i then return false end
+      named = named or (r.kind == "aircraft" and r.exists and r.b < i)
+    end
+    for x = 1, named and i - 1 or 0 do
+      if g:intent_at(x) then return true end
+    end
+    return false
+  end
+  -- ("turn KLM12 right 20, to create a crossing with the SAS", "... I'm hoping to create a conflict", "that should
+  -- be enough to make the conflict a near miss"): an encounter made, said as a purpose ("to" or a modal before the
+  -- verb) after an instruction to traffic flying, is what the instruction brings about, no creation, unless a
+  -- type or a new callsign is said after it (CRECONFS); "and create a conflict" is still a creation
+  rule { "create make", false, when = function(g, i)
+    if not (g:word(i - 1, "to") or g:word_in(math.max(1, i - 4), i, "@purpose_modals")) then return false end
+    local k = g:skip_fillers(i + 1)
+    while k < i + 4 and not g:word(k, "@encounters_made") and g.t[k] and g.t[k].kind == "word" do k = k + 1 end
+    return g:word(k, "@encounters_made") and after_instruction_no_new(g, i)
+  end }
+  -- ("that should make it a difficult aircraft to track"): an aircraft flying made into something after an
+  -- instruction to it, no creation
+  rule { "make", false, next = "it him her them", when = function(g, i)
+    return g:word(i + 2, "@articles_new") and after_instruction_no_new(g, i)
+  end }
   -- "create ten random aircraft", "five random A320s at FL300": random traffic
   rule { "generate generator", false, prev = { 1, "random number" } }  -- "seed the random generator with 42"
   rule { "create cre spawn generate add chuck", "mcre", near = { 3, "random" } }

@@ -12319,3 +12319,18 @@ do
   asked(ex("move the TUI further north"), "no distance")
   asked(ex("move the TUI 10 nm further north of the Ryanair"), "further than what")
 end
+
+-- Cycle 50 (f126b): an encounter said as the purpose of an instruction to traffic flying ("to create a crossing
+-- with ...", "I'm hoping to create a conflict", "that should make the conflict a near miss", "that should make it a
+-- hard aircraft to follow") creates nothing; "and create a conflict" is still a creation, asked. "quite" is English
+-- unless another word marks the sentence Spanish ("I'm quite new to this" removed the aircraft)
+do
+  local _, ex = scene({ "CRE SAS12 A320 53.9 9.5 200 FL330 280", "CRE RYR4TG B738 52.8 8.2 045 FL260 300" })
+  check_eq(ex("please turn SAS12 left 30 degrees to create a crossing with the Ryanair"), "HDG SAS12 170 LEFT")
+  check_eq(ex("could RYR4TG climb to FL300? I am hoping to create an encounter the participants must spot."),
+    "ALT RYR4TG FL300")
+  check_eq(ex("turn the Ryanair right 15 degrees, that would make the conflict a near miss"), "HDG RYR4TG 60 RIGHT")
+  check_eq(ex("could SAS12 descend to FL310? That should make it a hard aircraft to follow."), "ALT SAS12 FL310")
+  asked(ex("turn SAS12 left 30 degrees and create a conflict"), "a creation said as an instruction")
+  check_eq(ex("I'm quite new here - could the Ryanair climb to FL280?"), "ALT RYR4TG FL280")
+end
