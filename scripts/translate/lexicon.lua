@@ -774,6 +774,8 @@ return {
                      "converging", "diverging", "crossing", "opposite", "co-altitude", "in", "on", "aircraft" },
   -- aircraft counted with no callsign ("spawn 3 aircraft", "create 20 agents"): random traffic (MCRE)
   counted_aircraft = { "aircraft", "planes", "airplanes", "flights", "agents", "jets", "airliners", "aeroplanes" },
+  -- aircraft makers' names in the plural ("the two Airbuses")
+  maker_plurals = { "airbuses", "boeings", "embraers", "bombardiers", "cessnas", "atrs", "dreamliners", "jumbos" },
   -- imperative verbs that open an instruction of their own after a comma, even after traffic information
   clause_verbs = { "turn", "climb", "descend", "reduce", "increase", "fly", "proceed", "expedite" },
   -- instruction verbs, their -ing forms and nouns that "no" said straight before, with no comma between ("PRF441
@@ -997,6 +999,10 @@ return {
       "should", "must", "it's", "have", "then" },
   -- after a value or a dash, a clause opening with one of these says what should follow, no instruction
   purpose_modals = { "should", "will", "would", "must" },
+  -- verbs that describe the scenario running after it ("the scenario feels a bit empty")
+  scenario_described = { "feels", "felt", "looks", "seems", "is", "was", "gets", "becomes", "appears", "sounds" },
+  -- modals after "then" and the speaker ("Then we can see the conflict develop"): what the speaker does next
+  own_modals = { "can", "could", "will", "may", "might", "should" },
   -- abbreviations written in capitals that name no place
   not_names = { "vfr", "ifr", "fms", "atis", "qnh", "qfe", "cpa", "los", "eta", "etd", "sid", "star", "nm",
       "kts", "fpm", "agl", "msl", "amsl", "rnp", "ctr", "tma", "atz", "ias", "cas", "stca", "fdr",

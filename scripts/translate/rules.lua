@@ -1348,8 +1348,9 @@ return function(intent, rule, words)
   end }
   rule { "destination dest", "dest" }
   -- "KL204 is going to Frankfurt", "it's bound for Brussels": where the aircraft flies, said as a fact
+  -- ("it is going to be the one the participant sequences": the future said, no place)
   rule { "going", "dest", next = "to", prev = { 1, "is it's are" },
-         when = function(g, i) return not g:intent_at(i + 2) end }
+         when = function(g, i) return not g:intent_at(i + 2) and not g:word(i + 2, "be") end }
   rule { "bound", "dest", next = "for", prev = { 1, "is it's are" } }
   -- "create ... going to Orly", "..., bound for Glasgow", "route it via VALB and land it at Kastrup": the place after "to"/"at"
   -- is an airport (its ICAO code, or a name of one or two words of the navdata's airports); a landing
@@ -2215,6 +2216,8 @@ return function(intent, rule, words)
     end
     return false
   end }
+  -- "the scenario feels a bit empty", "the scenario is too quiet": the scenario running, described, no file to load
+  rule { "scenario", false, prev = { 1, "the this" }, next = "@scenario_described" }
   -- "fast forward the scenario by 10 minutes", "pause the scenario": the scenario running, the object of a
   -- verb of the clock, no file to load
   rule { "scenario", false, prev = { 2, "forward ff pause freeze unfreeze unpause resume continue hold" } }

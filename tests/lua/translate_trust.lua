@@ -12334,3 +12334,20 @@ do
   asked(ex("turn SAS12 left 30 degrees and create a conflict"), "a creation said as an instruction")
   check_eq(ex("I'm quite new here - could the Ryanair climb to FL280?"), "ALT RYR4TG FL280")
 end
+
+-- Cycle 50 (f126b): a remark after a complete request that instructs nothing: "the scenario feels a bit empty" (the
+-- scenario running, no file), "it is going to be the one they sequence" (the future, no destination), "Then we can
+-- see the conflict develop" (the speaker's own doing), a count of aircraft or "the one" in it ("when two aircraft get
+-- too close", "the two Airbuses"); one naming an aircraft, a value or an instruction is still asked
+do
+  local _, ex = scene({ "CRE KLM12 E190 52.0 4.0 090 FL200 250", "CRE EZY45 A320 52.2 4.4 180 FL150 240",
+    "CRE DLH7 A321 52.4 4.2 270 FL250 280" })
+  check_eq(ex("could KLM12 speed up to 270 knots? It lags a little and the scenario looks rather quiet."), "SPD KLM12 270")
+  check_eq(ex("could EZY45 descend to FL120? It's going to be the one our participants have to merge."),
+    "ALT EZY45 FL120")
+  check_eq(ex("please run the simulation 4 times faster. Then we could watch the encounter unfold sooner."), "DTMULT 4")
+  check_eq(ex("could KLM12 slow to 220 knots so that it arrives after the two Airbuses?"), "SPD KLM12 220")
+  check_eq(ex("please switch on conflict detection. We want them to notice when three aircraft get close."), "ASAS ON")
+  asked(ex("please run the simulation 4 times faster. Then we can move DLH7 to FL300."), "an instruction after 'then we'")
+  asked(ex("could KLM12 slow to 220 knots so that it arrives 20 minutes after the other one?"), "a value in the remark")
+end
