@@ -1521,6 +1521,11 @@ return function(intent, rule, words)
     return g:followed_by(i, 7, "@route_nouns waypoints") and not g:word_in(math.max(1, i - 2), i, "don't dont not never")
       and (g:has_ref(i + 1, i + 4, "aircraft") or g:has_ref(math.max(1, i - 3), i, "aircraft"))
   end }
+  -- "switch off the automatic route following for the KLM": "route following", the noun switched, is lateral
+  -- navigation
+  rule { "following", "lnav", prev = { 1, "route" }, when = function(g, i)
+    return g:word_in(math.max(1, i - 6), math.min(#g.t + 1, i + 6), "on off switch disable enable activate deactivate")
+  end }
   -- ("lateral nav off", "vertical nav on": "nav" is navigation's short word)
   rule { "lateral", "lnav", next = "navigation nav" }
   rule { "vnav", "vnav" }
@@ -1543,6 +1548,11 @@ return function(intent, rule, words)
   rule { "vertical vertically", "vnav", prev = { 4, "plan route" } }  -- "follow its flight plan vertically"
   rule { "vertical", "vnav", next = "profile navigation nav" }
   rule { "route rte waypoints", "listrte", prev = { 4, "show list display what print see look where check" } }
+  -- "tell me the route of the Emirates": the route told to the speaker ("tell KLM12 to follow its route" instructs)
+  rule { "route rte routing waypoints", "listrte", when = function(g, i)
+    local k = g:find_word(math.max(1, i - 4), i, "tell")
+    return k < i and g:word(k + 1, "me us")
+  end }
   -- ("what's your plan for the Transavia?" asks the addressee's own intentions: no route listed)
   rule { "plan", "listrte", prev = { 4, "show list display what print see look where check" },
          not_prev = { 1, "your our my" } }
@@ -2216,6 +2226,8 @@ return function(intent, rule, words)
     end
     return false
   end }
+  -- "run the scenario 5 times faster": the scenario running, at a rate, no file to load
+  rule { "scenario", false, prev = { 2, "run speed" }, near = { 3, "times faster slower quicker" } }
   -- "the scenario feels a bit empty", "the scenario is too quiet": the scenario running, described, no file to load
   rule { "scenario", false, prev = { 1, "the this" }, next = "@scenario_described" }
   -- "fast forward the scenario by 10 minutes", "pause the scenario": the scenario running, the object of a

@@ -12351,3 +12351,15 @@ do
   asked(ex("please run the simulation 4 times faster. Then we can move DLH7 to FL300."), "an instruction after 'then we'")
   asked(ex("could KLM12 slow to 220 knots so that it arrives 20 minutes after the other one?"), "a value in the remark")
 end
+
+-- Cycle 50 (f126b): "run the scenario 5 times faster" (the scenario running, at a rate), "tell me the route of X"
+-- (LISTRTE), "switch off the automatic route following for X" (LNAV OFF); "run the scenario demo" still asks for
+-- the file, "tell X to follow its route" instructs, "X is route following now" switches nothing
+do
+  local _, ex = scene({ "CRE KLM12 E190 52.0 4.0 090 FL200 250", "ADDWPT KLM12 52.5 4.5" })
+  check_eq(ex("could you run the scenario 6 times faster for a while?"), "DTMULT 6")
+  check_eq(ex("could you tell me the route of KLM12, if it has one?"), "LISTRTE KLM12")
+  check_eq(ex("please switch off the automatic route following for KLM12. I'm not sure it needs it."), "LNAV KLM12 OFF")
+  check_eq(ex("KLM12 is route following now, climb FL240"), "ALT KLM12 FL240")
+  asked(ex("run the scenario demo"), "which file")
+end
