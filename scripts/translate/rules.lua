@@ -655,6 +655,14 @@ return function(intent, rule, words)
   rule { "slow fast", false, prev = { 3, "is it's are was isn't" },
          when = function(g, i) return not g:word(i - 1, "to") end }
   rule { "slow fast", false, prev = { 1, "a an" }, next = "one ones aircraft plane mover" }  -- "a slow one": a description
+  -- "descend at 800 feet per minute? I want a slow descent": the manner of a climb or descent whose rate is said, no
+  -- speed ("a slow descent to FL80" with no rate is asked, as "at a slow rate" is)
+  rule { "slow fast", false, prev = { 1, "a an" }, next = "descent climb", when = function(g)
+    for _, q in ipairs(g:quantities(1, #g.t + 1)) do
+      if q.kind == "vs" then return true end
+    end
+    return false
+  end }
   -- "accelerate the time four times", "decelerate the simulation": the clock's rate, said straight after the verb
   rule { "accelerate decelerate", "dtmult", when = function(g, i)
     return g:word(i + 1, "@sim") or (g:word(i + 1, "the") and g:word(i + 2, "@sim"))

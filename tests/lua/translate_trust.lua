@@ -12363,3 +12363,11 @@ do
   check_eq(ex("KLM12 is route following now, climb FL240"), "ALT KLM12 FL240")
   asked(ex("run the scenario demo"), "which file")
 end
+
+-- Cycle 50 (f126b): "a slow descent" / "a fast climb" beside a rate said is the rate's manner, no speed; with no
+-- rate said, "slow" is still the speed's word
+do
+  local _, ex = scene({ "CRE DLH8 A320 53.4 7.8 100 FL120 280" })
+  check_eq(ex("could DLH8 descend at 700 feet per minute? We'd like a slow descent."), "VS DLH8 -700")
+  asked(ex("could DLH8 slow down? We'd like a slow descent."), "no rate and no speed said")
+end
