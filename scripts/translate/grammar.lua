@@ -7758,8 +7758,11 @@ function G:said_last(i, near, own_clause)
     rest = rest + 1
   end
   if remark and rest > #self.t then return true end
+  local stop = k
   while self.t[k] and self.t[k].kind == "punct" and self.t[k].text ~= "," do k = k + 1 end
-  return k > #self.t
+  -- (a sentence after it set aside as a remark, G:in_reason: "until 4 miles on final? I understand that's what
+  -- normally happens.")
+  return k > #self.t or (k > stop and self:in_reason(k))
 end
 
 -- What stands before the word at i ("start", "aircraft", "value", "place" or "closing") when it stands alone in its

@@ -1213,20 +1213,20 @@ return {
       after_instruction = true,
       last = "established on the localizer localiser ils rnav rnp gps visual final approach , cleared for runway rwy l r c" },
     -- "speed 160 until 4 DME", "170 knots till 5 miles final, cleared ILS 01L": the same limit ending at the
-    -- final approach's 3 to 6 miles, its unit said, an approach clearance after it at most (01L is "01" and
-    -- "l"); a value after it ("until 5 DME then 140"), "until 4" (no distance) and a limit further out
+    -- final approach's 3 to 6 miles ("4 miles on final"), its unit said, an approach clearance after it at most
+    -- (01L is "01" and "l"); a value after it ("until 5 DME then 140"), "until 4" (no distance) and a limit further out
     -- ("250 kts till 10 dme", a point squawk cannot place: R51) are asked
     { what = "limits that end at a distance", words = "until till", own_clause = true,
       near = { "3", "4", "5", "6", "three", "four", "five", "six" }, window = 1,
       and_near = { { "dme", "miles", "mile", "nm" }, 2 }, after_instruction = true,
-      last = "dme miles mile nm final out from touchdown threshold the , cleared for ils localizer localiser "
+      last = "dme miles mile nm final on out from touchdown threshold the , cleared for ils localizer localiser "
         .. "approach runway rwy l r c" },
     -- "reduce 160 knots to four DME", "speed 180 to 5 miles final": "to" for "until" before the same limit, its
     -- DME or "final" said (a zone's "radius to 4 nm" is no limit)
     { what = "limits that end at a distance", words = "to", own_clause = true,
       near = { "3", "4", "5", "6", "three", "four", "five", "six" }, window = 1,
       and_near = { { "dme", "final" }, 2 }, after_instruction = true,
-      last = "dme miles mile nm final out from touchdown threshold the , cleared for ils localizer localiser "
+      last = "dme miles mile nm final on out from touchdown threshold the , cleared for ils localizer localiser "
         .. "approach runway rwy l r c" },
     -- "climb FL250, cancel speed restriction", "cancel level restrictions": a restriction lifted, which squawk
     -- (flying each instruction as given) does not keep

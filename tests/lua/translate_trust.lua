@@ -12371,3 +12371,11 @@ do
   check_eq(ex("could DLH8 descend at 700 feet per minute? We'd like a slow descent."), "VS DLH8 -700")
   asked(ex("could DLH8 slow down? We'd like a slow descent."), "no rate and no speed said")
 end
+
+-- Cycle 50 (f126b): a limit until the final's miles said "4 miles on final" is flown (the decision), also with a
+-- remark set aside after it; an instruction after it is still asked
+do
+  local _, ex = scene({ "CRE KLM16 E190 52.3 4.9 180 4000 200" })
+  check_eq(ex("could KLM16 keep 170 knots until 5 miles on final? I gather that is the usual practice."), "SPD KLM16 170")
+  asked(ex("could KLM16 keep 170 knots until 5 miles on final. Then descend to 2000 feet."), "an instruction after it")
+end
