@@ -1723,15 +1723,26 @@ function G:label_number(q, remark)
     and (not remark or self:in_reason(q.b))
 end
 
+-- True when quantity q is a count of aircraft ("when two aircraft get too close", "the two Airbuses": a whole
+-- number from 2 to 9 said before a word of lexicon.counted_aircraft or maker_plurals) or "one" standing for an
+-- aircraft after a word ("the one the participant sequences", "the long-haul one"; not "the other one", an aircraft
+-- meant): no value.
+function G:aircraft_count(q)
+  if q.kind ~= "plain" or q.number.decimal or q.e ~= q.b + 1 then return false end
+  local before = self.t[q.b - 1]
+  return (q.value >= 2 and q.value <= 9 and (self:word(q.e, "@counted_aircraft") or self:word(q.e, "@maker_plurals")))
+    or (self:word(q.b, "one") and before ~= nil and before.kind == "word" and not before.number_word
+      and not self:word(q.b - 1, "other another"))
+end
+
 function G:commentary(b, e, lead, record, places)
   if b >= e or self:has_ref(b, b + 1, "aircraft") then return false end
   for _, q in ipairs(self:quantities(b, e)) do
-    -- ("- this one is the Linate overflight", "- the long-haul one": "one" after a word standing for an aircraft)
-    local pronoun = q.kind == "plain" and q.e == q.b + 1 and self:word(q.b, "one") and q.b > b
-      and self.t[q.b - 1].kind == "word" and not self.t[q.b - 1].number_word
+    -- ("- this one is the Linate overflight", "- the long-haul one", "when two aircraft get too close": G:aircraft_count)
+    local counted = q.b > b and self:aircraft_count(q)
     -- (`record`: a time after a word of lexicon.record_past is the record's, ", as the controller did at 10:42:15")
     local recorded = record and q.kind == "time" and self:word_in(b, q.b, "@record_past")
-    if not (pronoun or recorded or self:label_number(q)) then return false end
+    if not (counted or recorded or self:label_number(q)) then return false end
   end
   for _, r in ipairs(places and {} or self:refs_in(b, e, "waypoint")) do
     if not self:word(r.b, "@not_names") then return false end
@@ -2039,11 +2050,13 @@ function G:in_reason(i)
           inside = self:commentary(k, e, true) or (t.text == "to" and self:commentary(k + 2, e, true))
           lead_end = inside and e or nil
         end
-      elseif (w == "then" and self:word(k + 1, "i'll we'll") and self:commentary(k + 1, commentary_end(self, k + 1))
+      elseif (w == "then" and (self:word(k + 1, "i'll we'll") or self:word(k + 1, "i we") and self:word(k + 2, "@own_modals"))
+              and self:commentary(k + 1, commentary_end(self, k + 1))
             or w == "for" and self:word(k + 1, "when") and self:word(k + 2, CM_OWN)
               and self:commentary(k + 2, commentary_end(self, k + 2))) and instructed(k) then
-        -- ("fast forward 60 sec then I'll hand over to the pseudo pilot", "set the sim rate to 5 for when we
-        -- restart": the experimenter's own doing after the instruction, or when it is for)
+        -- ("fast forward 60 sec then I'll hand over to the pseudo pilot", "... 3 times faster? Then we can see the
+        -- conflict develop", "set the sim rate to 5 for when we restart": the experimenter's own doing after the
+        -- instruction, or when it is for)
         inside, reason[k] = true, true
       elseif start and t.kind == "word" and self:remark_sentence(k, instructed) then
         -- ("... 290 knots. First arrival of batch B.", "Let's start with the baseline pair. SAS1A A320 ..."
@@ -5549,7 +5562,8 @@ function G:unexplained(s, n_before)
     if not self.taken[q.b] and not SELF_READ[q.kind] and not relative and not q.by and q.turn == 0
         and q.b > corrected
         and ((opened and q.b > opened) or own_unit(q) or self:word(q.b - 1, "@clause_verbs") or before_verb)
-        and not value_carried(q, nums, true) and not self:label_number(q, true) then
+        and not value_carried(q, nums, true) and not self:label_number(q, true)
+        and not (self:aircraft_count(q) and self:in_reason(q.b)) then
       self.leftover = self:raw((callsign and not before_verb) and callsign.b or q.b, q.e)
       return
     end
@@ -8015,8 +8029,11 @@ function G:said_last(i, near, own_clause)
     rest = rest + 1
   end
   if remark and rest > #self.t then return true end
+  local stop = k
   while self.t[k] and self.t[k].kind == "punct" and self.t[k].text ~= "," do k = k + 1 end
-  return k > #self.t
+  -- (a sentence after it set aside as a remark, G:in_reason: "until 4 miles on final? I understand that's what
+  -- normally happens.")
+  return k > #self.t or (k > stop and self:in_reason(k))
 end
 
 -- What stands before the word at i ("start", "aircraft", "value", "place" or "closing") when it stands alone in its

@@ -16,6 +16,17 @@ local function lower_registration(raw)
   return raw:match("^%l%l%l%l%l$") ~= nil and REGISTRATION_MARKS[raw:sub(1, 2):upper()] == true
 end
 
+-- The earth's mean radius [NM] (6371 km)
+local EARTH_NM = 6371000 / 1852
+-- The point `nm` nautical miles from lat, lon [deg] on the true bearing `brg` [deg], along a great circle of
+-- the sphere of radius EARTH_NM: lat, lon [deg]
+local function great_circle_offset(lat, lon, brg, nm)
+  local p1, d, t = math.rad(lat), nm / EARTH_NM, math.rad(brg)
+  local p2 = math.asin(math.sin(p1) * math.cos(d) + math.cos(p1) * math.sin(d) * math.cos(t))
+  local dl = math.atan(math.sin(t) * math.sin(d) * math.cos(p1), math.cos(d) - math.sin(p1) * math.sin(p2))
+  return math.deg(p2), (lon + math.deg(dl) + 540) % 360 - 180
+end
+
 return function(H, f, compass)
   local m = H.methods
 
@@ -834,10 +845,9 @@ return function(H, f, compass)
   -- A position said as a distance and a compass point from an aircraft ("10 nm north", "20 miles
   -- south of where it is now", "15 nm south of RYR81JC", "20 miles east of it"), or along a named
   -- aircraft's track ("20 nm ahead of KLM12", "dead behind KL001 at 15 nm": the bearing its heading, or
-  -- the reverse): lat, lon [deg] on a flat earth around the aircraft (d NM north is d/60 degrees of
-  -- latitude), with the quantity taken, and for a place along a track that aircraft's id; nil when no
-  -- compass point or side follows the distance. `from`: the aircraft meant when none is named after
-  -- "of" (the one moved; "it"). Returns nil, question when the aircraft's position is unknown.
+  -- the reverse): lat, lon [deg] along a great circle from the aircraft, with the quantity taken, and for a
+  -- place along a track that aircraft's id; nil when no compass point or side follows the distance.
+  -- `from`: the aircraft meant when none is named after "of" (the one moved; "it"). Returns nil, question when the aircraft's position is unknown.
   function m:offset_position(qs, b, e, from)
     for _, q in ipairs(qs) do
       -- ("behind KL001 at 15 nm": the side and the aircraft before the distance)
@@ -850,9 +860,8 @@ return function(H, f, compass)
         local a = self:state(r.name)
         self:take(q)
         self:explain(self:word(r.b - 2, "dead right straight directly") and r.b - 2 or r.b - 1, r.e)
-        local rad = math.rad(a.hdg_deg + L.along_track[self.t[r.b - 1].text])
-        return a.lat + q.value * math.cos(rad) / 60,
-          a.lon + q.value * math.sin(rad) / (60 * math.cos(math.rad(a.lat))), r.name
+        local la, lo = great_circle_offset(a.lat, a.lon, a.hdg_deg + L.along_track[self.t[r.b - 1].text], q.value)
+        return la, lo, r.name
       end
       local k = q.e
       if self:word(k, "to") and self:word(k + 1, "the") then k = k + 2 end
@@ -869,15 +878,21 @@ return function(H, f, compass)
         self:take(q)
         self:explain(front and k - 1 or k, r.e)
         if self:word(k - 1, "dead right straight directly") then self:explain(k - 1, k) end
-        local rad = math.rad(a.hdg_deg + side)
-        return a.lat + q.value * math.cos(rad) / 60,
-          a.lon + q.value * math.sin(rad) / (60 * math.cos(math.rad(a.lat))), r.name
+        local la, lo = great_circle_offset(a.lat, a.lon, a.hdg_deg + side, q.value)
+        return la, lo, r.name
       end
+      -- ("10 nm further north": on from where the aircraft is)
+      local further = self:word(k, "further farther") and not self:word(k + 2, "of") and self.t[k + 1]
+      further = further and further.kind == "word" and L.compass[further.text] and further
+      if further then k, t = k + 1, further end
       local brg = q.kind == "dist" and q.b >= b and q.e <= e and t and t.kind == "word" and L.compass[t.text]
       if brg then
+        if further then self:explain(k - 1, k) end
         local ref = from
         if self:word(k + 1, "of") then
-          local r = self:refs_in(k + 2, k + 3, "aircraft")[1]
+          -- ("of the Lufthansa one", "of the KLM Embraer": the aircraft after "the")
+          local at = self:word(k + 2, "the") and k + 3 or k + 2
+          local r = self:refs_in(at, at + 1, "aircraft")[1]
           if r then
             ref = r.name
             self.explained = self.explained or {}
@@ -891,8 +906,7 @@ return function(H, f, compass)
         self:take(q)
         self.explained = self.explained or {}
         self.explained[k] = true
-        local rad = math.rad(brg)
-        return a.lat + q.value * math.cos(rad) / 60, a.lon + q.value * math.sin(rad) / (60 * math.cos(math.rad(a.lat)))
+        return great_circle_offset(a.lat, a.lon, brg, q.value)
       end
     end
     return nil

@@ -823,6 +823,8 @@ return {
                      "converging", "diverging", "crossing", "opposite", "co-altitude", "in", "on", "aircraft" },
   -- aircraft counted with no callsign ("spawn 3 aircraft", "create 20 agents"): random traffic (MCRE)
   counted_aircraft = { "aircraft", "planes", "airplanes", "flights", "agents", "jets", "airliners", "aeroplanes" },
+  -- aircraft makers' names in the plural ("the two Airbuses")
+  maker_plurals = { "airbuses", "boeings", "embraers", "bombardiers", "cessnas", "atrs", "dreamliners", "jumbos" },
   -- imperative verbs that open an instruction of their own after a comma, even after traffic information
   clause_verbs = { "turn", "climb", "descend", "reduce", "increase", "fly", "proceed", "expedite" },
   -- instruction verbs, their -ing forms and nouns that "no" said straight before, with no comma between ("PRF441
@@ -1046,6 +1048,10 @@ return {
       "should", "must", "it's", "have", "then" },
   -- after a value or a dash, a clause opening with one of these says what should follow, no instruction
   purpose_modals = { "should", "will", "would", "must" },
+  -- verbs that describe the scenario running after it ("the scenario feels a bit empty")
+  scenario_described = { "feels", "felt", "looks", "seems", "is", "was", "gets", "becomes", "appears", "sounds" },
+  -- modals after "then" and the speaker ("Then we can see the conflict develop"): what the speaker does next
+  own_modals = { "can", "could", "will", "may", "might", "should" },
   -- abbreviations written in capitals that name no place
   not_names = { "vfr", "ifr", "fms", "atis", "qnh", "qfe", "cpa", "los", "eta", "etd", "sid", "star", "nm",
       "kts", "fpm", "agl", "msl", "amsl", "rnp", "ctr", "tma", "atz", "ias", "cas", "stca", "fdr",
@@ -1259,20 +1265,20 @@ return {
       after_instruction = true,
       last = "established on the localizer localiser ils rnav rnp gps visual final approach , cleared for runway rwy l r c" },
     -- "speed 160 until 4 DME", "170 knots till 5 miles final, cleared ILS 01L": the same limit ending at the
-    -- final approach's 3 to 6 miles, its unit said, an approach clearance after it at most (01L is "01" and
-    -- "l"); a value after it ("until 5 DME then 140"), "until 4" (no distance) and a limit further out
+    -- final approach's 3 to 6 miles ("4 miles on final"), its unit said, an approach clearance after it at most
+    -- (01L is "01" and "l"); a value after it ("until 5 DME then 140"), "until 4" (no distance) and a limit further out
     -- ("250 kts till 10 dme", a point squawk cannot place: R51) are asked
     { what = "limits that end at a distance", words = "until till", own_clause = true,
       near = { "3", "4", "5", "6", "three", "four", "five", "six" }, window = 1,
       and_near = { { "dme", "miles", "mile", "nm" }, 2 }, after_instruction = true,
-      last = "dme miles mile nm final out from touchdown threshold the , cleared for ils localizer localiser "
+      last = "dme miles mile nm final on out from touchdown threshold the , cleared for ils localizer localiser "
         .. "approach runway rwy l r c" },
     -- "reduce 160 knots to four DME", "speed 180 to 5 miles final": "to" for "until" before the same limit, its
     -- DME or "final" said (a zone's "radius to 4 nm" is no limit)
     { what = "limits that end at a distance", words = "to", own_clause = true,
       near = { "3", "4", "5", "6", "three", "four", "five", "six" }, window = 1,
       and_near = { { "dme", "final" }, 2 }, after_instruction = true,
-      last = "dme miles mile nm final out from touchdown threshold the , cleared for ils localizer localiser "
+      last = "dme miles mile nm final on out from touchdown threshold the , cleared for ils localizer localiser "
         .. "approach runway rwy l r c" },
     -- "climb FL250, cancel speed restriction", "cancel level restrictions": a restriction lifted, which squawk
     -- (flying each instruction as given) does not keep
@@ -1637,16 +1643,18 @@ return {
       empieza = "start", ["detén"] = "stop", deten = "stop", detenga = "stop", detener = "stop",
       reinicia = "reset", reiniciar = "reset", reinicie = "reset", escenario = "scenario", carga = "load",
       cargue = "load", cargar = "load", agrega = "add", agregue = "add", ["añade"] = "add", anade = "add",
-      ["añada"] = "add", anada = "add", quita = "remove", quite = "remove", retira = "remove",
+      ["añada"] = "add", anada = "add", quita = "remove", retira = "remove",
       nuevo = "new", nueva = "new", avion = "aircraft", ["avión"] = "aircraft", aeronave = "aircraft",
       ["deteccion de conflictos"] = "conflict detection", ["detección de conflictos"] = "conflict detection",
     },
     -- words of `words` said the same in Portuguese or Italian: no sign of Spanish alone
     shared = { destino = true, crea = true, continua = true, minuto = true, nivel = true, pause = true, vira = true,
       gira = true, carga = true, metros = true, altitud = true },
-    -- small words also English, Portuguese or Italian ("a", "con", "en", "suba")
+    -- words also English, Portuguese or Italian ("a", "con", "en", "suba"; "quite", English "I'm quite new to
+    -- this"): read only in a sentence another word marks Spanish
     joining = { a = "at", al = "to the", la = "the", el = "the", los = "the", las = "the", un = "a", una = "a",
-      en = "at", con = "at", y = "and", mil = "thousand", suba = "climb", de = "of", del = "of the" },
+      en = "at", con = "at", y = "and", mil = "thousand", suba = "climb", de = "of", del = "of the",
+      quite = "remove" },
   },
   french = {
     words = {
@@ -1767,9 +1775,10 @@ return {
   tens = { "twenty", "thirty", "forty", "fourty", "fifty", "sixty", "seventy", "eighty", "ninety" },
   -- words speech recognition writes for a spoken "two" before digits
   two_heard = { "to", "too", "t" },
-  -- units a value said after an airline name carries ("turn the Ryanair 20 degrees"): no flight number
+  -- units a value said after an airline name carries ("turn the Ryanair 20 degrees", "move the Ryanair 20
+  -- nautical miles south"): no flight number
   value_units = { degrees = true, degree = true, knots = true, knot = true, kts = true, feet = true, ft = true,
-                  percent = true },
+                  percent = true, nm = true, nautical = true, miles = true, mile = true, km = true },
   -- airlines' telephony that is also the noun of a value, word -> {ICAO prefix, the noun's plain word}: before
   -- a number and its unit, or after one of value_noun_before with none of the airline flying, it is that noun
   -- ("VLG12AB velocity 250 knots", "reduce the velocity"; grammar.lua airline_values)
@@ -1780,6 +1789,9 @@ return {
   -- an intruder set up against an aircraft (CRECONFS): the nouns that name it, and the words before
   -- or after its closest approach, its loss of separation and a head-on course
   intruder = { "intruder", "conflict", "conflicting", "converger" },
+  -- encounters an instruction to traffic flying brings about ("to create a crossing", "make the conflict a near
+  -- miss"): no aircraft created
+  encounters_made = { "conflict", "crossing", "encounter", "miss", "collision", "situation", "convergence" },
   closest_approach = { "cpa", "miss", "passing", "closest" },
   loss_of_separation = { "los", "tlos", "tlosh", "loss" },
   head_on = { "head-on", "head" },

@@ -679,6 +679,14 @@ return function(intent, rule, words)
   rule { "slow fast", false, prev = { 3, "is it's are was isn't" },
          when = function(g, i) return not g:word(i - 1, "to") end }
   rule { "slow fast", false, prev = { 1, "a an" }, next = "one ones aircraft plane mover" }  -- "a slow one": a description
+  -- "descend at 800 feet per minute? I want a slow descent": the manner of a climb or descent whose rate is said, no
+  -- speed ("a slow descent to FL80" with no rate is asked, as "at a slow rate" is)
+  rule { "slow fast", false, prev = { 1, "a an" }, next = "descent climb", when = function(g)
+    for _, q in ipairs(g:quantities(1, #g.t + 1)) do
+      if q.kind == "vs" then return true end
+    end
+    return false
+  end }
   -- "accelerate the time four times", "decelerate the simulation": the clock's rate, said straight after the verb
   rule { "accelerate decelerate", "dtmult", when = function(g, i)
     return g:word(i + 1, "@sim") or (g:word(i + 1, "the") and g:word(i + 2, "@sim"))
@@ -850,6 +858,35 @@ return function(intent, rule, words)
       end
     end
     return false
+  end }
+  -- True when no aircraft type and no new callsign are said after i, and an instruction word and an aircraft
+  -- flying before it
+  local function after_instruction_no_new(g, i)
+    if g:has_ref(i + 1, #g.t + 1, "type") then return false end
+    local named = false
+    for _, r in ipairs(g.refs) do
+      if r.kind == "aircraft" and not r.exists and r.b > i then return false end
+      named = named or (r.kind == "aircraft" and r.exists and r.b < i)
+    end
+    for x = 1, named and i - 1 or 0 do
+      if g:intent_at(x) then return true end
+    end
+    return false
+  end
+  -- ("turn KLM12 right 20, to create a crossing with the SAS", "... I'm hoping to create a conflict", "that should
+  -- be enough to make the conflict a near miss"): an encounter made, said as a purpose ("to" or a modal before the
+  -- verb) after an instruction to traffic flying, is what the instruction brings about, no creation, unless a
+  -- type or a new callsign is said after it (CRECONFS); "and create a conflict" is still a creation
+  rule { "create make", false, when = function(g, i)
+    if not (g:word(i - 1, "to") or g:word_in(math.max(1, i - 4), i, "@purpose_modals")) then return false end
+    local k = g:skip_fillers(i + 1)
+    while k < i + 4 and not g:word(k, "@encounters_made") and g.t[k] and g.t[k].kind == "word" do k = k + 1 end
+    return g:word(k, "@encounters_made") and after_instruction_no_new(g, i)
+  end }
+  -- ("that should make it a difficult aircraft to track"): an aircraft flying made into something after an
+  -- instruction to it, no creation
+  rule { "make", false, next = "it him her them", when = function(g, i)
+    return g:word(i + 2, "@articles_new") and after_instruction_no_new(g, i)
   end }
   -- "create ten random aircraft", "five random A320s at FL300": random traffic
   rule { "generate generator", false, prev = { 1, "random number" } }  -- "seed the random generator with 42"
@@ -1357,8 +1394,9 @@ return function(intent, rule, words)
   end }
   rule { "destination dest", "dest" }
   -- "KL204 is going to Frankfurt", "it's bound for Brussels": where the aircraft flies, said as a fact
+  -- ("it is going to be the one the participant sequences": the future said, no place)
   rule { "going", "dest", next = "to", prev = { 1, "is it's are" },
-         when = function(g, i) return not g:intent_at(i + 2) end }
+         when = function(g, i) return not g:intent_at(i + 2) and not g:word(i + 2, "be") end }
   rule { "bound", "dest", next = "for", prev = { 1, "is it's are" } }
   -- "create ... going to Orly", "..., bound for Glasgow", "route it via VALB and land it at Kastrup": the place after "to"/"at"
   -- is an airport (its ICAO code, or a name of one or two words of the navdata's airports); a landing
@@ -1529,6 +1567,11 @@ return function(intent, rule, words)
     return g:followed_by(i, 7, "@route_nouns waypoints") and not g:word_in(math.max(1, i - 2), i, "don't dont not never")
       and (g:has_ref(i + 1, i + 4, "aircraft") or g:has_ref(math.max(1, i - 3), i, "aircraft"))
   end }
+  -- "switch off the automatic route following for the KLM": "route following", the noun switched, is lateral
+  -- navigation
+  rule { "following", "lnav", prev = { 1, "route" }, when = function(g, i)
+    return g:word_in(math.max(1, i - 6), math.min(#g.t + 1, i + 6), "on off switch disable enable activate deactivate")
+  end }
   -- ("lateral nav off", "vertical nav on": "nav" is navigation's short word)
   rule { "lateral", "lnav", next = "navigation nav" }
   rule { "vnav", "vnav" }
@@ -1551,6 +1594,11 @@ return function(intent, rule, words)
   rule { "vertical vertically", "vnav", prev = { 4, "plan route" } }  -- "follow its flight plan vertically"
   rule { "vertical", "vnav", next = "profile navigation nav" }
   rule { "route rte waypoints", "listrte", prev = { 4, "show list display what print see look where check" } }
+  -- "tell me the route of the Emirates": the route told to the speaker ("tell KLM12 to follow its route" instructs)
+  rule { "route rte routing waypoints", "listrte", when = function(g, i)
+    local k = g:find_word(math.max(1, i - 4), i, "tell")
+    return k < i and g:word(k + 1, "me us")
+  end }
   -- ("what's your plan for the Transavia?" asks the addressee's own intentions: no route listed)
   rule { "plan", "listrte", prev = { 4, "show list display what print see look where check" },
          not_prev = { 1, "your our my" } }
@@ -2224,6 +2272,10 @@ return function(intent, rule, words)
     end
     return false
   end }
+  -- "run the scenario 5 times faster": the scenario running, at a rate, no file to load
+  rule { "scenario", false, prev = { 2, "run speed" }, near = { 3, "times faster slower quicker" } }
+  -- "the scenario feels a bit empty", "the scenario is too quiet": the scenario running, described, no file to load
+  rule { "scenario", false, prev = { 1, "the this" }, next = "@scenario_described" }
   -- "fast forward the scenario by 10 minutes", "pause the scenario": the scenario running, the object of a
   -- verb of the clock, no file to load
   rule { "scenario", false, prev = { 2, "forward ff pause freeze unfreeze unpause resume continue hold" } }

@@ -814,10 +814,10 @@ do
   check_eq(bt("ff an hour and a half"), "FF 5400")
   check_eq(bt("fast forward 2 min then slow the clock to real time"), "FF 120 ; DTMULT 1")
   -- positions from an aircraft: a distance and a compass point
-  check_eq(bt("move KL204 30 nm north"), "MOVE KL204 52.5 4")
-  check_eq(bt("shift EZY45 10 miles south of where it is now"), "MOVE EZY45 51.833333 5")
+  check_eq(bt("move KL204 30 nm north"), "MOVE KL204 52.499663 4")
+  check_eq(bt("shift EZY45 10 miles south of where it is now"), "MOVE EZY45 51.833446 5")
   check_eq(bt("create KL205 A320 20 nm east of KL204 with the same heading, level and speed"),
-    "CRE KL205 A320 52 4.541423 90 FL250 280")
+    "CRE KL205 A320 51.998761 4.541048 90 FL250 280")
   check_eq(bt("another Wizz: WZZ99, A321, 52.1 4.1, hdg 180, same FL as WZZ1234, 280 knots"),
     "CRE WZZ99 A321 52.1 4.1 180 FL340 280")
   check_eq(bt("callsign SAS11, A320, FL300, M.78, heading 045, at 52.6 4.2"), "CRE SAS11 A320 52.6 4.2 45 FL300 M0.78")
@@ -3001,16 +3001,16 @@ end
 do
   local _, ex = scene({ "CRE PH101 A320 51.0 3.0 090 FL220 260", "CRE SAS7 B738 50.0 6.0 180 FL300 300" })
   check_eq(ex("spawn an intruder 12 nm ahead of PH101, reciprocal heading, same altitude, call it TX1, type B738, 250 kt"),
-    "CRE TX1 B738 51 3.317803 270 FL220 250")
+    "CRE TX1 B738 50.99957 3.317587 270 FL220 250")
   check_eq(ex("TX2 A321 30 nm behind SAS7 on the same track, 2000 feet below, 20 kts quicker"),
-    "CRE TX2 A321 50.5 6 180 FL280 320")
+    "CRE TX2 A321 50.499663 6 180 FL280 320")
   check_eq(ex("intruder TX3, E190, 10 nm ahead of SAS7, coming the other way, FL300, 280 kt"),
-    "CRE TX3 E190 49.833333 6 0 FL300 280")
+    "CRE TX3 E190 49.833446 6 0 FL300 280")
   check_eq(ex("TX4 A320 right behind PH101 at 8 nm, same course, same level, same speed"),
-    "CRE TX4 A320 51 2.788131 90 FL220 260")
-  check_eq(ex("spawn TX6 A320 20 nm in front of SAS7, head-on, same level, 280 kt"), "CRE TX6 A320 49.666667 6 0 FL300 280")
+    "CRE TX4 A320 50.999809 2.788275 90 FL220 260")
+  check_eq(ex("spawn TX6 A320 20 nm in front of SAS7, head-on, same level, 280 kt"), "CRE TX6 A320 49.666891 6 0 FL300 280")
   -- (37 km is read as 19.98 NM, to 0.01 NM)
-  check_eq(ex("TX7 A320 37 km ahead of PH101, opposite direction, FL220, 280 kt"), "CRE TX7 A320 51 3.529142 270 FL220 280")
+  check_eq(ex("TX7 A320 37 km ahead of PH101, opposite direction, FL220, 280 kt"), "CRE TX7 A320 50.998807 3.528777 270 FL220 280")
   check_eq(ex("put an intruder 15 nm ahead of SAS7"), "ASK To create the aircraft I need its callsign, aircraft type. What should they be?")
   check_eq(ex("TX5 A320 15 nm ahead of SAS7 at FL300, 280 kt"), "ASK What heading should TX5 have?")
 end
@@ -12701,4 +12701,83 @@ do
   else
     print("skipped: waypoint conditions by navaid name need navdata (SQUAWK_NAVDATA)")
   end
+end
+
+-- Cycle 50 (f126b): a position given from other traffic described by its airline ("20 nm north of the Lufthansa
+-- one", "west of the TUI aircraft"), from where the aircraft is ("15 miles farther east"), and after "the" and an
+-- airline a distance, not a flight number ("move the Ryanair 20 nautical miles south"); all along a great circle.
+-- Two aircraft of the airline, "further north" with no distance, or "further north of" another, are asked
+do
+  local _, ex = scene({ "CRE RYR1JW B738 52.80 6.20 090 FL230 280", "CRE TUI3KP B738 52.60 10.20 250 FL210 280",
+    "CRE DLH4AX A320 52.20 6.40 280 FL200 300", "CRE DLH5AA A320 52.30 6.40 280 FL200 300" })
+  check_eq(ex("please add an A320 called TST1 12 nm south of the TUI aircraft, same heading, level and speed"),
+    "CRE TST1 A320 52.400135 10.2 250 FL210 280")
+  check_eq(ex("could you move the Ryanair 20 miles west of the TUI one"), "MOVE RYR1JW 52.598734 9.651571")
+  check_eq(ex("please shift the Ryanair some 15 miles farther east"), "MOVE RYR1JW 52.799282 6.613214")
+  check_eq(ex("move the Ryanair twenty nautical miles south of where it is now"), "MOVE RYR1JW 52.466891 6.2")
+  asked(ex("add an A320 called TST2 12 nm south of the Lufthansa one, heading 090, FL200, 250 knots"),
+    "two Lufthansa aircraft fly")
+  asked(ex("move the TUI further north"), "no distance")
+  asked(ex("move the TUI 10 nm further north of the Ryanair"), "further than what")
+end
+
+-- Cycle 50 (f126b): an encounter said as the purpose of an instruction to traffic flying ("to create a crossing
+-- with ...", "I'm hoping to create a conflict", "that should make the conflict a near miss", "that should make it a
+-- hard aircraft to follow") creates nothing; "and create a conflict" is still a creation, asked. "quite" is English
+-- unless another word marks the sentence Spanish ("I'm quite new to this" removed the aircraft)
+do
+  local _, ex = scene({ "CRE SAS12 A320 53.9 9.5 200 FL330 280", "CRE RYR4TG B738 52.8 8.2 045 FL260 300" })
+  check_eq(ex("please turn SAS12 left 30 degrees to create a crossing with the Ryanair"), "HDG SAS12 170 LEFT")
+  check_eq(ex("could RYR4TG climb to FL300? I am hoping to create an encounter the participants must spot."),
+    "ALT RYR4TG FL300")
+  check_eq(ex("turn the Ryanair right 15 degrees, that would make the conflict a near miss"), "HDG RYR4TG 60 RIGHT")
+  check_eq(ex("could SAS12 descend to FL310? That should make it a hard aircraft to follow."), "ALT SAS12 FL310")
+  asked(ex("turn SAS12 left 30 degrees and create a conflict"), "a creation said as an instruction")
+  check_eq(ex("I'm quite new here - could the Ryanair climb to FL280?"), "ALT RYR4TG FL280")
+end
+
+-- Cycle 50 (f126b): a remark after a complete request that instructs nothing: "the scenario feels a bit empty" (the
+-- scenario running, no file), "it is going to be the one they sequence" (the future, no destination), "Then we can
+-- see the conflict develop" (the speaker's own doing), a count of aircraft or "the one" in it ("when two aircraft get
+-- too close", "the two Airbuses"); one naming an aircraft, a value or an instruction is still asked
+do
+  local _, ex = scene({ "CRE KLM12 E190 52.0 4.0 090 FL200 250", "CRE EZY45 A320 52.2 4.4 180 FL150 240",
+    "CRE DLH7 A321 52.4 4.2 270 FL250 280" })
+  check_eq(ex("could KLM12 speed up to 270 knots? It lags a little and the scenario looks rather quiet."), "SPD KLM12 270")
+  check_eq(ex("could EZY45 descend to FL120? It's going to be the one our participants have to merge."),
+    "ALT EZY45 FL120")
+  check_eq(ex("please run the simulation 4 times faster. Then we could watch the encounter unfold sooner."), "DTMULT 4")
+  check_eq(ex("could KLM12 slow to 220 knots so that it arrives after the two Airbuses?"), "SPD KLM12 220")
+  check_eq(ex("please switch on conflict detection. We want them to notice when three aircraft get close."), "ASAS ON")
+  check_eq(ex("please run the simulation 4 times faster. Then we can climb DLH7 to FL300."),
+    "DTMULT 4 ; ALT DLH7 FL300")  -- (an instruction after "then we" is read, never set aside)
+  asked(ex("could KLM12 slow to 220 knots so that it arrives 20 minutes after the other one?"), "a value in the remark")
+end
+
+-- Cycle 50 (f126b): "run the scenario 5 times faster" (the scenario running, at a rate), "tell me the route of X"
+-- (LISTRTE), "switch off the automatic route following for X" (LNAV OFF); "run the scenario demo" still asks for
+-- the file, "tell X to follow its route" instructs, "X is route following now" switches nothing
+do
+  local _, ex = scene({ "CRE KLM12 E190 52.0 4.0 090 FL200 250", "ADDWPT KLM12 52.5 4.5" })
+  check_eq(ex("could you run the scenario 6 times faster for a while?"), "DTMULT 6")
+  check_eq(ex("could you tell me the route of KLM12, if it has one?"), "LISTRTE KLM12")
+  check_eq(ex("please switch off the automatic route following for KLM12. I'm not sure it needs it."), "LNAV KLM12 OFF")
+  check_eq(ex("KLM12 is route following now, climb FL240"), "ALT KLM12 FL240")
+  asked(ex("run the scenario demo"), "which file")
+end
+
+-- Cycle 50 (f126b): "a slow descent" / "a fast climb" beside a rate said is the rate's manner, no speed; with no
+-- rate said, "slow" is still the speed's word
+do
+  local _, ex = scene({ "CRE DLH8 A320 53.4 7.8 100 FL120 280" })
+  check_eq(ex("could DLH8 descend at 700 feet per minute? We'd like a slow descent."), "VS DLH8 -700")
+  asked(ex("could DLH8 slow down? We'd like a slow descent."), "no rate and no speed said")
+end
+
+-- Cycle 50 (f126b): a limit until the final's miles said "4 miles on final" is flown (the decision), also with a
+-- remark set aside after it; an instruction after it is still asked
+do
+  local _, ex = scene({ "CRE KLM16 E190 52.3 4.9 180 4000 200" })
+  check_eq(ex("could KLM16 keep 170 knots until 5 miles on final? I gather that is the usual practice."), "SPD KLM16 170")
+  asked(ex("could KLM16 keep 170 knots until 5 miles on final. Then descend to 2000 feet."), "an instruction after it")
 end
