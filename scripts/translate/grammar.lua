@@ -752,7 +752,7 @@ local function self_corrections(text)
     -- ("PRF441 no left turn": "no" with no mark after it, before a turn's side and an instruction's verb, may refuse
     -- it: G:unaccounted asks)
     local refused = nxt and SIDES[nxt.bare] and toks[j + 1] and G.refusable[toks[j + 1].bare]
-      and toks[j - 1].bare == "no" and not toks[j - 1].raw:match("%p$")
+      and j > k and toks[j - 1].bare == "no" and not toks[j - 1].raw:match("%p$")
     -- ("heading 330 -- no, the right, I mean a right turn onto heading 030", "Mach 0.80, sorry, to Mach 0.78": an
     -- article or "to" before the side or value said in its place; the word stays with it)
     local said = nxt

@@ -1051,7 +1051,8 @@ return function(intent, rule, words)
     end
     local refs = g:refs_in(1, i, "aircraft")
     local a = refs[#refs] and refs[#refs].exists and g:state(refs[#refs].name)
-    return a ~= nil and #(a.route or {}) == 0
+    if not a then return false end
+    return #(a.route or {}) == 0
   end
   rule { "direct dct", false, when = route_list_direct }
   -- "EZY45 route: SPY, BERGI", "route for UAL9: BEDUM, EEL, then ARTIP": a route written as a list

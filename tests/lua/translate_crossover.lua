@@ -1,5 +1,6 @@
 -- Crossover requests: the first words of one request of tests/data joined to the last words of another,
--- and a request with two neighbouring words swapped, through the translation graph offline. Every
+-- a request with two neighbouring words swapped, and a request begun mid-way (a word of one request, then a
+-- few words from the middle of another), through the translation graph offline. Every
 -- request, however odd, gets exactly one answer (commands, a question, or a note of what squawk does not
 -- simulate) and never raises: no stack overflow, no error in a rule or a handler.
 local graph = require("translate.graph")
@@ -42,7 +43,10 @@ local failed = 0
 for _ = 1, N do
   local a, b = requests[rand(#requests)], requests[rand(#requests)]
   local words = join(b, rand(#b), #b, join(a, 1, rand(#a), {}))
-  if rand(2) == 1 then
+  if rand(3) == 1 then
+    local s = rand(#b)
+    words = join(b, s, math.min(#b, s + rand(5)), { a[rand(#a)] })
+  elseif rand(2) == 1 then
     local k = rand(#words - 1)
     words[k], words[k + 1] = words[k + 1], words[k]
   end

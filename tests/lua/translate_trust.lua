@@ -12781,3 +12781,20 @@ do
   check_eq(ex("could KLM16 keep 170 knots until 5 miles on final? I gather that is the usual practice."), "SPD KLM16 170")
   asked(ex("could KLM16 keep 170 knots until 5 miles on final. Then descend to 2000 feet."), "an instruction after it")
 end
+
+-- Cycle 50 (fz): a request that opens with a turn's side and an instruction's verb before a hesitation ("left
+-- climb err") reads no word before the request as a refusal; it gets one answer and never raises
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL200 250" })
+  asked(ex("left climb err"), "no level after the hesitation")
+  asked(ex("left climb fl130 err fl150"), "a corrected level with a side before it")
+end
+
+-- Cycle 50 (fz): a route written as a list for an aircraft squawk does not have ("UAL182 route: direct HZA") is
+-- asked about its callsign and never raises; for an aircraft it has, the list is its route
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL200 250", "DEFWPT HZA 52.3 4.6" })
+  asked(ex("UAL182 route: direct HZA"), "a route for an aircraft not in the simulation")
+  asked(ex("give UAL182 a route: direct HZA"), "a route given to an aircraft not in the simulation")
+  check_eq(ex("KLM12 route: direct HZA"), "ADDWPT KLM12 HZA")
+end
