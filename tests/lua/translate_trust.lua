@@ -12301,3 +12301,31 @@ do
   local _, ex = scene({ "CRE BAW968 A320 52.6 9.0 010 FL180 280", "ADDWPT BAW968 52.8 9.0" })
   check_eq(ex("please delete the route of BAW968, I'm going to give it headings instead"), "DELRTE BAW968")
 end
+
+-- Cycle 50 (f130): a recogniser's levels and turns. A bare number after a correction that takes back a flight
+-- level is the flight level ("flight level eight zero correction seven zero": FL70, had issued ALT 0); a level of
+-- digits said one by one that is no level ("descend eight five") is asked, never re-read from one digit
+-- (had issued 8000) nor from a "zero" (0); "turn left three sixty" (a whole circle said as a number, no
+-- "heading") is asked: an orbit, or heading 360
+do
+  local _, ex = scene({ "CRE TOM72B B738 55.1 -3.2 090 FL140 280", "CRE LOG31 AT76 55.4 -3.9 270 FL80 210" })
+  check_eq(ex("tomjet seven two bravo descend flight level one one zero correction niner zero"), "ALT TOM72B FL90")
+  check_eq(ex("tomjet seven two bravo descend flight level eight zero correction seven zero"), "ALT TOM72B FL70")
+  check_eq(ex("tomjet seven two bravo descend FL110 correction 100"), "ALT TOM72B FL100")
+  check_eq(ex("tomjet seven two bravo descend flight level eight zero correction niner"), "ALT TOM72B 9000")
+  asked(ex("tomjet seven two bravo descend eight five"), "a level said digit by digit, no flight level")
+  asked(ex("tomjet seven two bravo descend seven zero"), "two digits bare: no ALT 0")
+  asked(ex("logan three one turn right three sixty"), "an orbit or heading 360")
+  asked(ex("logan three one turn left three hundred and sixty"), "an orbit or heading 360")
+  check_eq(ex("logan three one turn right heading three sixty"), "HDG LOG31 360 RIGHT")
+  check_eq(ex("logan three one turn left three six zero"), "HDG LOG31 360 LEFT")
+end
+
+-- Cycle 50 (f130): a flight number's last digit heard as the everyday word "on" ("logan three on descend": one,
+-- or a word?) is confirmed when other aircraft fly; "won" and digits said are read as before
+do
+  local _, ex = scene({ "CRE LOG31 AT76 55.4 -3.9 270 FL80 210", "CRE TOM72B B738 55.1 -3.2 090 FL140 280" })
+  asked(ex("logan three on descend flight level six zero"), "'on' closing the flight number")
+  check_eq(ex("logan three one descend flight level six zero"), "ALT LOG31 FL60")
+  check_eq(ex("logan three won descend flight level six zero"), "ALT LOG31 FL60")
+end
