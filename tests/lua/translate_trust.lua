@@ -12340,3 +12340,12 @@ do
   asked(ex("ryanair five kilo after boy descend flight level one two zero"), "'boy' only sounds somewhat like BOYNE")
   asked(ex("shamrock seven seven add waypoint boyne after liffey"), "a route position of a waypoint added")
 end
+
+-- Cycle 50 (f130): TUI Airways (TOM) by its former telephony "Tomson" as well as "Tomjet"; a number that differs
+-- is still asked
+do
+  local _, ex = scene({ "CRE TOM3KD B738 55.7 -4.5 090 FL90 250", "CRE LOG31 AT76 55.4 -3.9 270 FL80 210" })
+  check_eq(ex("delete tomson three kilo delta"), "DEL TOM3KD")
+  check_eq(ex("tomson three kilo delta climb flight level one two zero"), "ALT TOM3KD FL120")
+  asked(ex("tomson three kilo echo climb flight level one two zero"), "a letter that differs")
+end
