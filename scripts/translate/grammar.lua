@@ -9617,6 +9617,8 @@ end
 -- The words after which a waypoint of the aircraft's own route is named, a constraint's, a condition's or a limit's
 -- place ("cross X at", "after X descend", "until X"), for G.heard_route_place and G.confirmed_route_places.
 G.heard_slots = set_of({ "cross", "crossing", "after", "before", "until", "till", "at", "over", "passing", "via" })
+-- the words of a request that adds a waypoint to a route, and the slots that then say where it goes
+G.route_adding, G.route_position = set_of({ "add", "insert", "addwpt", "append" }), set_of({ "after", "before" })
 -- The waypoint of `route` (idents) that the word w, said in such a slot, sounds like (the same first letter, and
 -- squawk.translate.best_match at 0.5 or better, the level at which a direct-to's name is confirmed), or nil. A word
 -- squawk knows (KNOWN) is none.
@@ -9626,23 +9628,51 @@ function G.heard_route_name(w, route)
   local name = idx and score >= 0.5 and route[idx]
   return name and name:sub(1, 1):lower() == w:sub(1, 1) and name or nil
 end
--- "cross macy at FL240", "after camron descend ...", "until robber": a word straight after a place's slot
--- (G.heard_slots) that sounds like a waypoint the speaker confirmed (world.confirmed, the answer to
--- G:heard_route_place's question) on the route of an aircraft flying is that waypoint's ident; others stay as said.
-function G.confirmed_route_places(text, world)
-  local confirmed = {}
-  for _, a in ipairs(world.confirmed and world.aircraft or {}) do
-    for _, r in ipairs(a.route or {}) do
-      if world.confirmed[r] or world.confirmed[r:upper()] then confirmed[#confirmed + 1] = r:upper() end
+-- The one waypoint of `route` (idents) that the word w sounds like as closely as a direct-to's name is taken
+-- (squawk.translate.best_match at lexicon.waypoint_confirm: the same letters or the same sound key, "camron" for
+-- CAMRN, "liffey" for LIFFY), when no other waypoint of it sounds like w at all (G.heard_route_name); nil
+-- otherwise, and for w that is the ident itself.
+function G.sure_route_name(w, route)
+  local sure, alike = nil, 0
+  for _, r in ipairs(route) do
+    if G.heard_route_name(w, { r }) then
+      alike = alike + 1
+      local _, score = squawk.translate.best_match(w, { r })
+      if score >= lexicon.waypoint_confirm and r:lower() ~= w then sure = r end
     end
   end
-  if #confirmed == 0 then return text end
+  return alike == 1 and sure or nil
+end
+-- "cross macy at FL240", "after camron descend ...", "until robber": a word straight after a place's slot
+-- (G.heard_slots) that sounds like a waypoint the speaker confirmed (world.confirmed, the answer to
+-- G:heard_route_place's question) on the route of an aircraft flying is that waypoint's ident; so is one that
+-- sounds like exactly one waypoint of the routes flown, as closely as a direct-to's name is taken
+-- (G.sure_route_name); others stay as said (and are confirmed).
+function G.confirmed_route_places(text, world)
+  local confirmed, routed, seen = {}, {}, {}
+  for _, a in ipairs(world.aircraft) do
+    for _, r in ipairs(a.route or {}) do
+      if world.confirmed and (world.confirmed[r] or world.confirmed[r:upper()]) then confirmed[#confirmed + 1] = r:upper() end
+      if not seen[r:upper()] then routed[#routed + 1], seen[r:upper()] = r:upper(), true end
+    end
+  end
+  if #routed == 0 then return text end
   local toks, bare = plain_words(text)
+  -- (in a request that adds to a route, "after"/"before" place the new waypoint: a name there is confirmed)
+  local adding = false
+  for _, w in ipairs(bare) do adding = adding or G.route_adding[w] ~= nil end
   return tokens.rewrite(text, toks, function(i)
     if not (bare[i - 1] and G.heard_slots[bare[i - 1]]) or toks[i - 1]:match("%p$") then
       return nil
     end
-    local name = G.heard_route_name(bare[i], confirmed)
+    local name = #confirmed > 0 and G.heard_route_name(bare[i], confirmed)
+    -- (a word written with a capital, or a navaid's or an airport's name anywhere, "at lille" for LIL, is a
+    -- place's name, read as such)
+    local sure = not name and toks[i]:match("^%l") and world.navaids_named and world.airports_named
+      and not (adding and G.route_position[bare[i - 1]]) and G.sure_route_name(bare[i], routed)
+    if sure and #world.navaids_named(bare[i], 0, 0, 1e5) == 0 and #world.airports_named(bare[i]) == 0 then
+      name = sure
+    end
     return name and name .. (toks[i]:match("%p+$") or ""), i + 1
   end)
 end

@@ -1977,14 +1977,29 @@ function m:telephony_part_only(r)
   return part
 end
 
+-- The words of spoken aircraft reference r when its id's last digit was heard as an everyday word after the
+-- other digits said (lexicon.closing_homophones: "easy eight on descend" for EZY81), with other aircraft flying
+-- it might have been meant from; nil otherwise
+function m:homophone_closing(r)
+  if not r.spoken or r.heard or not r.exists or #self.fleet < 2 then return nil end
+  local k = r.e - 1
+  while k > r.b and self:word(k, "heavy super") do k = k - 1 end
+  local t, before = self.t[k], self.t[k - 1]
+  local digit = k > r.b and t.kind == "word" and not t.number_word and L.closing_homophones[t.text]
+  if digit and before.number_word and r.name:sub(-1) == digit then return self:raw(r.b, k + 1) end
+  return nil
+end
+
 -- A spoken callsign matched to an aircraft whose airline or digits differ
 -- from what was heard is asked about, unless the speaker confirmed it; so is one said with a later part of
--- its airline's telephony only (m:telephony_part_only).
+-- its airline's telephony only (m:telephony_part_only), or with its last digit heard as a word
+-- (m:homophone_closing).
 function m:confirm_callsigns(s)
   local c = L.callsign_confirm
   for _, r in ipairs(self:refs_in(s.b, s.e, "aircraft")) do
     local h = r.heard
-    local part = not (self.world.confirmed or {})[r.name] and self:telephony_part_only(r)
+    local confirmed = (self.world.confirmed or {})[r.name]
+    local part = not confirmed and (self:telephony_part_only(r) or self:homophone_closing(r))
     if part then
       self.confirm = self.confirm or { id = r.name, heard = part }
       self:need(string.format("Did you mean %s? I heard '%s'.", r.name, part))
@@ -2064,11 +2079,14 @@ end
 
 -- A value that grew out of range from a stutter or a misheard word ("one
 -- four fourteen thousand"): re-read from a shorter run of its words, longest
--- first, preferring multiples of `step`. nil when none fits [lo, hi].
-function m:repaired(q, value, lo, hi, step)
+-- first, preferring multiples of `step`. nil when none fits [lo, hi], for a
+-- run that reads zero ("nine zero" is never 0), and with `whole` for digits
+-- said one by one ("descend eight five": a level said digit by digit, one
+-- digit dropped from it is a level nobody said).
+function m:repaired(q, value, lo, hi, step, whole)
   if value >= lo and value <= hi then return value end
   local n = q.number
-  if n.typed then return nil end
+  if n.typed or (whole and n.groups == #n.digits and not n.hundred and not n.thousand) then return nil end
   -- a run may not start inside a compound ("seventy six thousand" is not six thousand)
   local function splits(b)
     return b > n.b and self:word(b - 1, "@tens") and self.t[b].number_word and not self:word(b, "@tens")
@@ -2077,7 +2095,7 @@ function m:repaired(q, value, lo, hi, step)
     for len = n.e - n.b - 1, 1, -1 do
       for b = n.b, n.e - len do
         local r = not splits(b) and self.u:number(b, b + len)
-        if r and r.thousand == n.thousand and r.value >= lo and r.value <= hi
+        if r and r.thousand == n.thousand and r.value >= lo and r.value <= hi and r.value ~= 0
             and (not round_only or r.value % step == 0) then
           return r.value
         end

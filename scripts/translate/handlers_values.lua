@@ -348,6 +348,17 @@ return function(H, f, wrap, compass)
     if not target then return self:need("What altitude should " .. ids[1] .. " " .. verb .. " to?") end
     local q = target
     local ft, fl = q.value, q.fl
+    -- "flight level eight zero correction nine zero": a bare number of two or three digits after a correction
+    -- that takes back a flight level is the flight level it corrects to (FL090), never feet
+    local relevelled = q.kind == "plain" and not fl and q.value >= 10 and q.value < 1000 and q.value % 1 == 0
+      and not q.number.hundred and not q.number.thousand
+    if relevelled then
+      relevelled = false
+      for _, o in ipairs(qs) do
+        if o.fl and o.e <= q.b and self:word_in(o.e, q.b, "@correction") then relevelled = true end
+      end
+      if relevelled then ft, fl = q.value * 100, true end
+    end
     -- "descend to height 600 metres on QFE": a height above the airfield, no altitude above the sea
     if not fl and self:word_in(s.b, #self.t + 1, "qfe") then
       return self:need(string.format("Which altitude for %s? I heard '%s' on QFE, a height above the airfield, "
@@ -377,7 +388,7 @@ return function(H, f, wrap, compass)
     if q.kind == "plain" and ft == 0 and not q.number.typed then
       return self:need(string.format("What altitude should %s %s to? I heard '%s'.", ids[1], verb, self:raw(q.b, q.e)))
     end
-    if q.kind == "plain" then
+    if q.kind == "plain" and not relevelled then
       if q.number.typed and #q.number.digits == 3 and q.number.digits:find("^0[1-9]") then
         ft, fl = ft * 100, true  -- "descend 070": three typed digits led by zero are a flight level
       elseif q.number.typed and q.number.digits:match("^[1-9]%d?$") and not q.number.thousand and not q.number.hundred then
@@ -458,8 +469,12 @@ return function(H, f, wrap, compass)
         return self:need("Which altitude for " .. ids[1] .. "? I heard " .. f.int(q.number.value) .. " metres.")
       end
     elseif not fl then
-      local r = self:repaired(q, ft, 0, 60000, 100)
-      if not r then return self:need("Which altitude for " .. ids[1] .. "? I heard " .. f.int(ft) .. " ft.") end
+      local r = self:repaired(q, ft, 0, 60000, 100, true)
+      if not r then
+        local n = q.number
+        return self:need("Which altitude for " .. ids[1] .. "? I heard " .. (not n.typed and n.groups == #n.digits
+          and "'" .. self:raw(q.b, q.e) .. "'" or f.int(ft) .. " ft") .. ".")
+      end
       if r < 100 and not q.number.typed then r = r * 1000 end
       ft = r
       -- cleared altitudes are whole hundreds of feet: a spoken 2710 has a
@@ -913,6 +928,14 @@ return function(H, f, wrap, compass)
     -- right 190" from 080) reads either way too: asked; without it ("l 230", "left 270, down to 3000", typed
     -- shorthand) it is the heading. A number typed with a leading zero ("turn left 090") is a heading: no
     -- turn's degrees are written so
+    -- "turn left three sixty", "turn right three hundred and sixty": a whole circle said as a number (not digit by
+    -- digit, no "heading") is an orbit, which squawk does not fly, or the heading 360: asked
+    local n = abs and abs.number
+    if hdg and not offset and way ~= 0 and abs and abs.kind == "plain" and abs.value == 360 and not n.typed
+        and (n.hundred or n.groups < #n.digits) and not self:word_in(s.b, s.e, "heading hdg") then
+      return self:need(string.format("Should %s make a full turn %s (an orbit, which squawk does not simulate), or "
+        .. "fly heading 360? I heard '%s'.", id, way < 0 and "left" or "right", self:raw(abs.b, abs.e)))
+    end
     if hdg and not offset and way ~= 0 and abs and abs.kind == "plain" and now and #ids == 1
         and (abs.number.typed or not abs.number.lead_digit)
         and not self:word_in(s.b, s.e, "heading hdg") and abs.value <= 360 then

@@ -1762,6 +1762,11 @@ return {
   -- read is exactly one aircraft's (grammar.lua homophone_ids)
   digit_homophones = { to = "two", too = "two", ["for"] = "four", fore = "four", won = "one", ate = "eight",
     oh = "zero" },
+  -- everyday words the callsign matcher also reads as a flight number's last digit after its other digits
+  -- (references.cpp heard_digit: "easy eight on descend" for EZY81): the word -> the digit. Read so the callsign
+  -- is confirmed, never taken (handlers.lua m:homophone_closing); "for", "to", "won" closing one stay read, as
+  -- R42's rows expect.
+  closing_homophones = { on = "1", a = "8" },
   -- verbs that open a creation ("create", "make a cactus 1496 ..."): an airline's telephony run into its
   -- number after one is the new aircraft's id (grammar.lua glued_telephony)
   creation_verbs = { create = true, creat = true, cre = true, spawn = true, generate = true, make = true },

@@ -305,6 +305,7 @@ local names = {
     { "stobart", "STK" },  -- (Stobart Air)
     { "jersey", "BEE" },  -- (Flybe's ICAO telephony)
     { "tomjet", "TOM" },  -- (TUI Airways' ICAO telephony)
+    { "tomson", "TOM" },  -- (its telephony as Thomsonfly and Thomson Airways)
     { "tuijet", "TUI" },  -- (TUIfly)
     { "beauty", "JAF" },  -- (TUI fly Belgium)
     { "orange", "TFL" },  -- (TUI fly Netherlands, formerly ArkeFly)

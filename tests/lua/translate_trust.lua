@@ -11548,18 +11548,16 @@ do
   local s = scene({ "CRE KLM12 A320 52.3 4.7 090 FL250 280", "DEFWPT LANDR 52.5 5.0", "ADDWPT KLM12 LANDR",
     "DEFWPT TELLR 52.6 5.5", "ADDWPT KLM12 TELLR", "DEFWPT MACEY 52.7 5.9", "ADDWPT KLM12 MACEY",
     "CRE EZY45 A320 51.9 4.0 270 FL200 260" })
-  local function yes(text, question, after)
-    local d = graph.dialogue({ sim = s, mode = "offline" })
-    check_eq(said(d:say(text)), "ASK " .. question)
-    check_eq(said(d:say("yes")), after)
-  end
-  yes("KLM12 cross lander at flight level two one zero", "Did you mean LANDR? I heard 'lander'.", "AT KLM12 LANDR ALT FL210")
-  yes("KLM12 after teller descend and maintain flight level one eight zero", "Did you mean TELLR? I heard 'teller'.",
-    "AT KLM12 TELLR DO ALT KLM12 FL180")
-  yes("KLM12 maintain two eight zero knots until teller", "Did you mean TELLR? I heard 'teller'.", "SPD KLM12 280")
-  yes("KLM12 descend and maintain flight level two one zero cross macy at flight level two one zero",
-    "Did you mean MACEY? I heard 'macy'.", "ALT KLM12 FL210 ; AT KLM12 MACEY ALT FL210")
   local ex = select(2, set_up(s, {}))
+  -- (cycle 50, f130: a name sounding like one waypoint of the routes as closely as a direct-to's is taken,
+  -- G.sure_route_name; the question of one less alike is tested there)
+  local function heard(text, _, after) check_eq(ex(text), after) end
+  heard("KLM12 cross lander at flight level two one zero", "Did you mean LANDR? I heard 'lander'.", "AT KLM12 LANDR ALT FL210")
+  heard("KLM12 after teller descend and maintain flight level one eight zero", "Did you mean TELLR? I heard 'teller'.",
+    "AT KLM12 TELLR DO ALT KLM12 FL180")
+  heard("KLM12 maintain two eight zero knots until teller", "Did you mean TELLR? I heard 'teller'.", "SPD KLM12 280")
+  heard("KLM12 descend and maintain flight level two one zero cross macy at flight level two one zero",
+    "Did you mean MACEY? I heard 'macy'.", "ALT KLM12 FL210 ; AT KLM12 MACEY ALT FL210")
   asked(ex("KLM12 cross banana at flight level two one zero"), "a crossing at a word like no waypoint of the route")
   asked(ex("EZY45 cross lander at flight level two one zero"), "LANDR is on no route of EZY45's")
   asked(ex("KLM12 macy flight level two one zero"), "a name heard in no slot, never re-read as 'mach'")
@@ -12797,4 +12795,54 @@ do
   asked(ex("UAL182 route: direct HZA"), "a route for an aircraft not in the simulation")
   asked(ex("give UAL182 a route: direct HZA"), "a route given to an aircraft not in the simulation")
   check_eq(ex("KLM12 route: direct HZA"), "ADDWPT KLM12 HZA")
+end
+
+-- Cycle 50 (f130): a recogniser's levels and turns. A bare number after a correction that takes back a flight
+-- level is the flight level ("flight level eight zero correction seven zero": FL70, had issued ALT 0); a level of
+-- digits said one by one that is no level ("descend eight five") is asked, never re-read from one digit
+-- (had issued 8000) nor from a "zero" (0); "turn left three sixty" (a whole circle said as a number, no
+-- "heading") is asked: an orbit, or heading 360
+do
+  local _, ex = scene({ "CRE TOM72B B738 55.1 -3.2 090 FL140 280", "CRE LOG31 AT76 55.4 -3.9 270 FL80 210" })
+  check_eq(ex("tomjet seven two bravo descend flight level one one zero correction niner zero"), "ALT TOM72B FL90")
+  check_eq(ex("tomjet seven two bravo descend flight level eight zero correction seven zero"), "ALT TOM72B FL70")
+  check_eq(ex("tomjet seven two bravo descend FL110 correction 100"), "ALT TOM72B FL100")
+  check_eq(ex("tomjet seven two bravo descend flight level eight zero correction niner"), "ALT TOM72B 9000")
+  asked(ex("tomjet seven two bravo descend eight five"), "a level said digit by digit, no flight level")
+  asked(ex("tomjet seven two bravo descend seven zero"), "two digits bare: no ALT 0")
+  asked(ex("logan three one turn right three sixty"), "an orbit or heading 360")
+  asked(ex("logan three one turn left three hundred and sixty"), "an orbit or heading 360")
+  check_eq(ex("logan three one turn right heading three sixty"), "HDG LOG31 360 RIGHT")
+  check_eq(ex("logan three one turn left three six zero"), "HDG LOG31 360 LEFT")
+end
+
+-- Cycle 50 (f130): a flight number's last digit heard as the everyday word "on" ("logan three on descend": one,
+-- or a word?) is confirmed when other aircraft fly; "won" and digits said are read as before
+do
+  local _, ex = scene({ "CRE LOG31 AT76 55.4 -3.9 270 FL80 210", "CRE TOM72B B738 55.1 -3.2 090 FL140 280" })
+  asked(ex("logan three on descend flight level six zero"), "'on' closing the flight number")
+  check_eq(ex("logan three one descend flight level six zero"), "ALT LOG31 FL60")
+  check_eq(ex("logan three won descend flight level six zero"), "ALT LOG31 FL60")
+end
+
+-- Cycle 50 (f130): a waypoint's name as a recogniser hears it, after a constraint's, condition's or limit's word,
+-- that sounds like exactly one waypoint of the routes flown as closely as a direct-to's name is taken (the same
+-- letters or sound key) is that waypoint; one that sounds less alike, a place's own name, or the position of a
+-- waypoint being added is still confirmed
+do
+  local _, ex = scene({ "DEFWPT LIFFY 53.5 -5.5", "DEFWPT BOYNE 53.7 -6.2", "CRE EIN77 A320 53.4 -6.3 090 FL150 280",
+    "ADDWPT EIN77 LIFFY", "CRE RYR5K B738 53.0 -6.0 270 FL200 290", "ADDWPT RYR5K BOYNE" })
+  check_eq(ex("shamrock seven seven after liffey descend flight level eight zero"), "AT EIN77 LIFFY DO ALT EIN77 FL80")
+  check_eq(ex("shamrock seven seven cross liffey at flight level one zero zero"), "AT EIN77 LIFFY ALT FL100")
+  asked(ex("ryanair five kilo after boy descend flight level one two zero"), "'boy' only sounds somewhat like BOYNE")
+  asked(ex("shamrock seven seven add waypoint boyne after liffey"), "a route position of a waypoint added")
+end
+
+-- Cycle 50 (f130): TUI Airways (TOM) by its former telephony "Tomson" as well as "Tomjet"; a number that differs
+-- is still asked
+do
+  local _, ex = scene({ "CRE TOM3KD B738 55.7 -4.5 090 FL90 250", "CRE LOG31 AT76 55.4 -3.9 270 FL80 210" })
+  check_eq(ex("delete tomson three kilo delta"), "DEL TOM3KD")
+  check_eq(ex("tomson three kilo delta climb flight level one two zero"), "ALT TOM3KD FL120")
+  asked(ex("tomson three kilo echo climb flight level one two zero"), "a letter that differs")
 end
