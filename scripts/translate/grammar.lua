@@ -4620,7 +4620,10 @@ function G:trailing_fix(s)
   if not r or r.b ~= k then return nil end
   local j = self:skip_fillers(r.e)
   while self.t[j] and self.t[j].kind == "punct" and self.t[j].text ~= "," do j = j + 1 end
-  if j < s.e then return nil end
+  -- ("climb FL150 once it passes NAXEL, if you could", "... after passing VEMAS, if possible", "..., thanks":
+  -- framing words only after a comma or "if", closing the request, are courtesy; a value, name or verb is not)
+  local opened = self:word(j, "if") or (self.t[j - 1] and self.t[j - 1].text == ",")
+  if j < s.e and not (opened and self:framing_only(self:word(j, "if") and j + 1 or j, s.e)) then return nil end
   return { b = c, e = r.e, name = r.name }
 end
 
@@ -6062,6 +6065,14 @@ local FRAMING = {}
 for _, k in ipairs({ "articles", "pronouns", "auxiliaries", "modals", "prepositions", "conjunctions", "discourse",
     "courtesy", "radiotelephony" }) do
   for _, w in ipairs(ACCOUNTED[k]) do FRAMING[w] = true end
+end
+-- True when tokens b to e - 1 are punctuation, fillers and framing words only.
+function G:framing_only(b, e)
+  for k = b, e - 1 do
+    local t = self.t[k]
+    if not (t.kind == "punct" or t.filler or (t.kind == "word" and FRAMING[t.text])) then return false end
+  end
+  return true
 end
 local MODALS = set_of(ACCOUNTED.modals)
 local FACILITIES = set_of(ACCOUNTED.facilities)

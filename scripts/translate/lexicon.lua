@@ -239,7 +239,8 @@ return {
         "if that is at all possible", "if at all possible", "if that is possible", "if that's possible",
         "if it is possible", "if it's possible", "if it's no trouble", "if it is no trouble", "if that's no trouble",
         "if that is no trouble", "would it be too much trouble", "is it too much trouble", "if that's a thing",
-        "if that is a thing", "of course", "after all", "i apologise", "i apologize", "my apologies", "as a separate thing", "block of trials",
+        "if that is a thing", "if that works", "if that works for you", "if it works", "if it works for you",
+        "of course", "after all", "i apologise", "i apologize", "my apologies", "as a separate thing", "block of trials",
         "blocks of trials",
         "if the computer can cope with it", "if the computer can cope", "if the simulation can cope with it",
         -- urgency ("descend FL200 at once", "right away": what squawk sends runs at once)

@@ -12846,3 +12846,25 @@ do
   check_eq(ex("tomson three kilo delta climb flight level one two zero"), "ALT TOM3KD FL120")
   asked(ex("tomson three kilo echo climb flight level one two zero"), "a letter that differs")
 end
+
+-- Cycle 50 (g132a): a condition of passing a waypoint closing the request, then a comma (or "if") and framing
+-- words only ("..., if you could", "..., if possible", "..., thanks"), runs at the waypoint; a value, name or
+-- verb after it is still asked about
+do
+  local _, ex = scene({ "DEFWPT NAXEL 59.5 18.2", "DEFWPT BALVI 59.7 18.0", "CRE SAS1417 A20N 59.30 18.40 330 FL110 260",
+    "ADDWPT SAS1417 NAXEL", "ADDWPT SAS1417 BALVI" })
+  check_eq(ex("Could SAS1417 descend to FL90 once it passes BALVI, if that's alright?"), "AT SAS1417 BALVI DO ALT SAS1417 FL90")
+  check_eq(ex("Please have SAS1417 reduce to 220 knots after passing NAXEL, thanks."), "AT SAS1417 NAXEL DO SPD SAS1417 220")
+  asked(ex("Please make SAS1417 climb to FL150 once it passes NAXEL, if it is below FL200."), "a level in the tail")
+  asked(ex("Please make SAS1417 climb to FL150 once it passes NAXEL, if you could turn it left too."), "a verb in the tail")
+  asked(ex("Please make SAS1417 climb to FL150 once it passes NAXEL, if not BALVI."), "a name in the tail")
+end
+
+-- Cycle 50 (g132a): "if that works" (for you) and "if it works" hedge the whole request, as "if possible"; a
+-- value after it is still asked about
+do
+  local _, ex = scene({ "DEFWPT GOSIV 59.5 18.2", "CRE SAS1417 A20N 59.30 18.40 330 FL110 260" })
+  check_eq(ex("Please add GOSIV to the route of SAS1417, if that works."), "ADDWPT SAS1417 GOSIV")
+  check_eq(ex("Descend SAS1417 to FL90 if that works for you."), "ALT SAS1417 FL90")
+  asked(ex("Descend SAS1417 to FL90 if that works, otherwise FL100."), "another level offered")
+end
