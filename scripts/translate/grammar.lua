@@ -3922,6 +3922,25 @@ function G:self_corrected()
     end
     local p = a - 1  -- the last instruction word before the run
     while marked and p >= 1 and not (self:intent_at(p) and not self:in_reason(p)) do p = p - 1 end
+    -- ("speed 250 and climb FL350... no wait, just climb FL350 first": "just"/"only" and the last instruction's
+    -- word said again after the run, with another instruction said before it and none of them said by that
+    -- word, takes nothing back but leaves unclear whether the earlier ones stand or wait: asked; "climb FL80,
+    -- direct BNN... wait, just climb" names the earlier one that stands; "climb FL260 and direct AUGSB, sorry,
+    -- just heading 250" replaces the last one)
+    if marked and p > 1 and self:word(c, SC_ONLY) and c + 1 <= #self.t and self:intent_at(c + 1)
+        and self.t[p].text == self.t[c + 1].text then
+      local other = false
+      for k = 1, p - 1 do
+        if self:intent_at(k) and not self:in_reason(k) then
+          if self.t[k].text == self.t[c + 1].text then other = false break end
+          other = true
+        end
+      end
+      if other then
+        return self:need(string.format("After '%s', should the instructions said before it still be given, or "
+          .. "only this one? Please say what stands in full.", (self:raw(c, #self.t + 1):gsub(" ([,.;:])", "%1"))))
+      end
+    end
     -- ("add BOBTA then DEBEK, actually just add ERBUS at the end of his route": with no instruction word
     -- before the run, the instruction said in its place names its verb again; the words from that verb's
     -- first saying are taken back)

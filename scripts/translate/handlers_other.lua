@@ -168,6 +168,15 @@ return function(H, f, compass)
     return out, points
   end
 
+  -- True when the word at i, said after "callsign", "called", ..., is written as a new callsign: with digits
+  -- ("SAS123", "n123ab"), in capitals ("SEABC"), a registration in lower case ("seabc"), or a capitalised word
+  -- squawk does not know ("Rainbow"); a plain English word ("I don't know the callsign yet") is none (asked for).
+  function m:callsign_written(i)
+    local t = self.t[i]
+    if not t or t.kind ~= "word" then return false end
+    return t.raw:match("%d") ~= nil or t.raw:match("^%u[%u%-]+$") ~= nil or lower_registration(t.raw)
+      or (t.raw:match("^%u") ~= nil and not self:known_word(i))
+  end
   function m:create_one(s, id_from)
     local id
     -- ("create Alaska six eleven" with ASA331 flying: the airline heard whole and a flight number
@@ -210,7 +219,7 @@ return function(H, f, compass)
     end
     if not id then
       local k = self:find_word(s.b, s.e, "@id_words")
-      if k + 1 < s.e and self.t[k + 1].kind == "word" then id = self.t[k + 1].raw end
+      if k + 1 < s.e and self:callsign_written(k + 1) then id = self.t[k + 1].raw end
     end
     -- ("create DTA 110 Boeing 737-700 ...", "create LAM 1200, E190, ..."): a known airline's ICAO code written in
     -- capitals apart from its flight number (digits written, four at most), before the type, is the new
@@ -1812,12 +1821,15 @@ return function(H, f, compass)
     end
     for i = b, math.min(e, #self.t + 1) - 1 do
       local t = self.t[i]
-      if not self.u:used(i) and t.kind == "word" and t.alpha and #t.text >= 4 and not t.keyword and not t.filler
+      -- (a capitalised word of under four letters opens a longer name only, "New Chitose": RJCC, not
+      -- "CHITOSE" RJCJ with "New" left over)
+      local short = #t.text < 4 and t.raw:match("^%u%l") ~= nil and i + 1 < e and proper(i + 1)
+      if not self.u:used(i) and t.kind == "word" and t.alpha and (#t.text >= 4 or short) and not t.keyword and not t.filler
           and not t.number_word and not L.phonetic[t.text] and (not placed or self:word(i - 1, "@place_words"))
           and (not proper_only or t.raw:match("^%u%l") ~= nil) and not (PREPOSITIONS[t.text] and t.raw:match("^%l")) then
         local nx, nx2 = self.t[i + 1], self.t[i + 2]
-        local phrases = { { t.text, i + 1 } }
-        if nx and i + 1 < e and nx.kind == "word" then table.insert(phrases, 1, { t.text .. " " .. nx.text, i + 2 }) end
+        local phrases = { short and { t.text .. " " .. nx.text, i + 2 } or { t.text, i + 1 } }
+        if not short and nx and i + 1 < e and nx.kind == "word" then table.insert(phrases, 1, { t.text .. " " .. nx.text, i + 2 }) end
         -- (three words: "Charles de Gaulle")
         if nx and nx2 and i + 2 < e and nx.kind == "word" and nx2.kind == "word" then
           table.insert(phrases, 1, { t.text .. " " .. nx.text .. " " .. nx2.text, i + 3 })
@@ -3157,12 +3169,24 @@ return function(H, f, compass)
   end
   function m:lnav(s) nav(self, s, "LNAV") end
   function m:vnav(s) nav(self, s, "VNAV") end
+  -- The position of the request's first word after its fillers and a polite opener that asks leave to act
+  -- ("is it possible to", "is it ok to", "is it too much trouble to": the instruction after it is requested,
+  -- not asked about; "is it on?" has no opener).
+  function m:request_start()
+    local first = self:skip_fillers(1)
+    if not (self:word(first, "is") and self:word(first + 1, "it")) then return first end
+    local to = self:find_word(first + 2, first + 6, "to")
+    if to < first + 6 and self:word_in(first + 2, to, "possible ok okay alright feasible trouble") then
+      return self:skip_fillers(to + 1)
+    end
+    return first
+  end
   -- True when the request asks what a setting is ("Is conflict detection switched on?", "what's the
   -- current zone radius?", "which resolution method is active?"): the bare command shows it.
   -- value: a setting with a value of its own (ZONER, DTLOOK, DT, RFACH), also asked for without "?"
   -- ("what's the current pz radius", "show me the time step") when no number is said
   function m:asks_setting(value)
-    local first = self:skip_fillers(1)
+    local first = self:request_start()
     if value and self:word(first, "what what's whats show display print") and #self:quantities(1, #self.t + 1) == 0 then
       return true
     end
@@ -3186,13 +3210,16 @@ return function(H, f, compass)
       if t.kind == "punct" and (t.text == "?" or t.text == "." or t.text == "!") then ends = k break end
     end
     -- ("how large is the protected zone radius?": "how" asks a size, no value said)
+    -- ("turn on conflict detection to see whether anything happens?": a "whether" after the switch's "on" or
+    -- "off" is the purpose of the instruction, not a question about the setting)
+    local checked = self:find_word(1, ends, "check whether")
     return self.t[ends].text == "?" and (self:word(first, "is are what what's whats which")
-      or self:word_in(1, ends, "check whether") or (self:word(first, "how") and #self:quantities(1, ends) == 0))
+      or (checked < ends and not self:word_in(1, checked, "@on @off")) or (self:word(first, "how") and #self:quantities(1, ends) == 0))
   end
   -- (a switch asked about: a question, or a request opening with "what" and no "on" or "off" in it, "what's the
   -- conflict detection setting", or with "is" or "are", "is conflict detection on": its state shown, never set)
   function m:switch(s, spec)
-    if self:asks_setting(self:on_off(s) < 0) or self:word(self:skip_fillers(1), "is are") then
+    if self:asks_setting(self:on_off(s) < 0) or self:word(self:request_start(), "is are") then
       -- ("what is the conflict detection interval?": DT shows it, with the time step, once in the request)
       if spec.cmd == "ASAS" and self:word(s.trig + 1, "interval") then
         for _, c in ipairs(self.out) do

@@ -12868,3 +12868,48 @@ do
   check_eq(ex("Descend SAS1417 to FL90 if that works for you."), "ALT SAS1417 FL90")
   asked(ex("Descend SAS1417 to FL90 if that works, otherwise FL100."), "another level offered")
 end
+
+-- Cycle 50 (g132w): "is it possible to" / "is it ok to" before a switch requests it, not a question about its
+-- state; a "whether" after the switch's "on" is the instruction's purpose; a question about the state is still
+-- shown
+do
+  local s, ex = scene({ "CRE KLM12 B738 52.0 4.0 090 FL200 250" })
+  check_eq(ex("Is it ok to switch conflict detection on? I'd like to see the alerts."), "ASAS ON")
+  local r = graph.translate("Is it possible to switch conflict detection off again?", { sim = s, mode = "offline" })
+  check_eq(r.confirm and r.confirm.commands[1], "ASAS OFF")
+  check_eq(ex("Please switch on conflict detection and fast-forward 2 minutes to check whether KLM12 gets an alert?"),
+    "ASAS ON ; FF 120")
+  check_eq(ex("Is it possible to check whether conflict detection is on?"), "ASAS")
+  check_eq(ex("Is conflict detection off?"), "ASAS")
+end
+
+-- Cycle 50 (g132w): a new aircraft's callsign after "callsign" or "called" must be written as one (digits,
+-- capitals, a registration, or a capitalised word squawk does not know); a plain English word is asked for
+do
+  local _, ex = scene({})
+  asked(ex("Create a Boeing 737 at 52.0 4.0, FL100, heading 090, 250 knots; the callsign comes later."),
+    "an English word after 'callsign'")
+  asked(ex("Create an A320 at 52.0 4.0, FL100, heading 090, 250 knots, callsign still unknown."),
+    "an English word after 'callsign'")
+  check_eq(ex("Create an A320 at 52.0 4.0, FL100, heading 090, 250 knots, callsign tra123."),
+    "CRE TRA123 A320 52 4 90 FL100 250")
+end
+
+-- Cycle 50 (g132w): "no wait, just <the last instruction again>" with other instructions said before it takes
+-- nothing back and leaves unclear whether those stand: asked; "just <another instruction>" replaces the last
+do
+  local _, ex = scene({ "CRE KLM12 B738 52.0 4.0 090 FL200 250" })
+  asked(ex("KLM12 reduce speed 220 and descend FL150, sorry, just descend FL150 for now"), "speed said before")
+  asked(ex("KLM12 turn left heading 040 and climb FL240... no wait, only climb FL240 first"), "heading said before")
+  check_eq(ex("KLM12 descend FL150, sorry, just descend FL160"), "ALT KLM12 FL160")
+end
+
+-- Cycle 50 (g132w): an airport said by a name that opens with a short capitalised word ("New Chitose") is the
+-- airport of the whole name, not the one bearing its last word alone
+do
+  local _, ex = navscene({ "CRE ANA63 B788 42.85 141.10 090 9000 240" }, "an airport's full name")
+  if ex then
+    check_eq(ex("ANA63, destination New Chitose."), "DEST ANA63 RJCC")
+    check_eq(ex("ANA63 destination Chitose"), "DEST ANA63 RJCJ")
+  end
+end
