@@ -1985,8 +1985,10 @@ function G:in_reason(i)
         -- ("descend to FL100, reason: lose the vertical overlap with TOM6RT": to the end of the sentence)
         inside, reason[k - 1] = true, true
       elseif punct and t.text == "," and (self.apart or {})[commas] and instructed(k)
+          and not self:word(k + 1, "no wait sorry actually correction")
           and self:commentary(k + 1, commentary_end(self, k + 1)) then
-        -- ("left 70 degrees - hard test of the turn model", "800 ft (testing reduced vertical)")
+        -- ("left 70 degrees - hard test of the turn model", "800 ft (testing reduced vertical)"; "to Heathrow -
+        -- no, hang on, sorry, to Stansted" opens a correction, never set apart)
         inside = true
       elseif punct and (t.text == "," or t.text == ";") and self:word(k + 1, CM_SUBJECTS) and instructed(k)
           and self:commentary(k + 1, commentary_end(self, k + 1)) then

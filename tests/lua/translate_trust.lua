@@ -12913,3 +12913,14 @@ do
     check_eq(ex("ANA63 destination Chitose"), "DEST ANA63 RJCJ")
   end
 end
+
+-- Cycle 50 (lead): a correction after a dash ("to Heathrow - no, hang on, sorry, to Stansted") is never set apart as
+-- commentary: the place it names is read or asked, never dropped; a remark after a dash still is
+do
+  local _, ex = navscene({ "CRE EZY8MX A320 51.05 -0.45 020 4000 200", "DEST EZY8MX EGKK" }, "a dash correction")
+  if ex then
+    asked(ex("please change the easyJet's destination to Heathrow - no, hang on, sorry, to Stansted"),
+      "a destination corrected after a dash")
+    check_eq(ex("EZY8MX turn left 70 degrees - hard test of the turn model"), "HDG EZY8MX 310 LEFT")
+  end
+end
