@@ -2080,9 +2080,10 @@ end
 -- A value that grew out of range from a stutter or a misheard word ("one
 -- four fourteen thousand"): re-read from a shorter run of its words, longest
 -- first, preferring multiples of `step`. nil when none fits [lo, hi], for a
--- run that reads zero ("nine zero" is never 0), and with `whole` for digits
--- said one by one ("descend eight five": a level said digit by digit, one
--- digit dropped from it is a level nobody said).
+-- run that reads zero ("nine zero" is never 0), when the first run that fits
+-- leaves out the value's closing zeros ("speed nine zero zero": 900 or 90?),
+-- and with `whole` for digits said one by one ("descend eight five": a level
+-- said digit by digit, one digit dropped from it is a level nobody said).
 function m:repaired(q, value, lo, hi, step, whole)
   if value >= lo and value <= hi then return value end
   local n = q.number
@@ -2091,13 +2092,19 @@ function m:repaired(q, value, lo, hi, step, whole)
   local function splits(b)
     return b > n.b and self:word(b - 1, "@tens") and self.t[b].number_word and not self:word(b, "@tens")
   end
+  -- (true when words [e, n.e) are all "zero": "two five zero zero" read as 250 left one out)
+  local function zeros_after(e)
+    local all = e < n.e
+    for k = e, n.e - 1 do all = all and self:word(k, "zero") end
+    return all
+  end
   for _, round_only in ipairs({ true, false }) do
     for len = n.e - n.b - 1, 1, -1 do
       for b = n.b, n.e - len do
         local r = not splits(b) and self.u:number(b, b + len)
         if r and r.thousand == n.thousand and r.value >= lo and r.value <= hi and r.value ~= 0
             and (not round_only or r.value % step == 0) then
-          return r.value
+          return not zeros_after(b + len) and r.value or nil
         end
       end
     end

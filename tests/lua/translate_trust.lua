@@ -12924,3 +12924,14 @@ do
     check_eq(ex("EZY8MX turn left 70 degrees - hard test of the turn model"), "HDG EZY8MX 310 LEFT")
   end
 end
+
+-- Cycle 50 (lead): a spoken value out of range that a shorter run of its words would fit only by leaving out its
+-- closing zeros ("speed nine zero zero": 900 or 90?) is asked; a stutter at its start ("two two two zero") and
+-- words heard after it ("one nine zero nine") are still re-read
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL200 250" })
+  asked(ex("klm12 speed nine zero zero knots"), "a speed's closing zero left out")
+  asked(ex("klm12 reduce speed two five zero zero"), "250 or 2500")
+  check_eq(ex("klm12 speed two two two zero knots"), "SPD KLM12 220")
+  check_eq(ex("klm12 reduce speed one nine zero nine"), "SPD KLM12 190")
+end
