@@ -2370,13 +2370,19 @@ local function schedule_at(t)
 end
 -- "delay 300 klm302 dct WP2", "schedule 600 klm303 fl300", "delay 5 min ...": BlueSky's DELAY or SCHEDULE typed by
 -- its name as the request's first word, the time straight after it (a bare whole number of seconds, as BlueSky
--- reads it, or a time with its unit), times every instruction of the request (self.at_all): "DELAY s" from now,
--- "SCHEDULE hh:mm:ss" at that simulation time. With a callsign straight after the name, no time, the wait is
--- asked for. Read before the request's instructions are parted (G:parse), the name and time marked used.
+-- reads it, a time with its unit, or one said in words: "delay half a minute"), times every instruction of the
+-- request (self.at_all): "DELAY s" from now, "SCHEDULE hh:mm:ss" at that simulation time. With a callsign straight
+-- after the name, no time, or a loose time ("delay a couple of minutes"), the wait is asked for. Read before the
+-- request's instructions are parted (G:parse), the name and time marked used.
 function m:typed_wait()
   local w = self:skip_fillers(1)
   if not self:word(w, "delay schedule") or self.u:used(w) then return nil end
-  local q = self:quantities(w + 1, #self.t + 1)[1]
+  -- (a time said in words straight after the name, "delay half a minute then ...", G:spoken_duration)
+  local q = self:spoken_duration(w + 1) or self:quantities(w + 1, #self.t + 1)[1]
+  if q and q.loose then
+    return self:need(string.format("How long should the instructions after '%s' wait? I heard '%s': please give a "
+      .. "time.", self.t[w].raw, self:raw(w + 1, q.e)))
+  end
   local bare = q and q.kind == "plain" and q.number.typed and q.value >= 0 and q.value % 1 == 0
   if not (q and q.b == w + 1 and (bare or q.kind == "time")) then
     -- (said as English, "schedule a pause at 20 min", it is the instruction's verb, read as before)

@@ -12935,3 +12935,12 @@ do
   check_eq(ex("klm12 speed two two two zero knots"), "SPD KLM12 220")
   check_eq(ex("klm12 reduce speed one nine zero nine"), "SPD KLM12 190")
 end
+
+-- Cycle 50 (lead): BlueSky's DELAY typed by name with its time said in words ("delay half a minute then ...") waits
+-- that long; a loose time ("a couple of minutes") is asked for, never dropped
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL200 250" })
+  check_eq(ex("delay a minute then KLM12 climb FL300"), "DELAY 60 ALT KLM12 FL300")
+  check_eq(ex("delay half a minute, then KLM12 climb FL300"), "DELAY 30 ALT KLM12 FL300")
+  asked(ex("delay a couple of minutes then KLM12 climb FL300"), "a loose time after 'delay'")
+end
