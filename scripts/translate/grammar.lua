@@ -6504,44 +6504,73 @@ function G:aside_alone(i, inside)
   end
 end
 
--- True when the words [b, e) name a place of the navdata (a navaid's name, an airport's name or words of it, its
--- city): one of code `code` when given, any when nil; false when a token there is no plain word (a value, an
--- instruction word, a word with a meaning or English squawk knows, an aircraft) or squawk has no navdata. The cheaper
--- look-ups go first.
-function G:place_named(b, e, code)
-  local w = self.world
-  if not (w.navaids_named and w.airports_named and w.airports_of_city and w.airports_with_words) then return false end
+-- The words [b, e) as one lower-case name, or nil when a token there is no plain word (a value, an instruction word,
+-- a word with a meaning, an aircraft; English squawk knows too unless `english` is set).
+function G:plain_name(b, e, english)
   local words = {}
   for k = b, e - 1 do
     local t = self.t[k]
-    if not t or t.kind ~= "word" or not t.alpha or MEANING[t.text] or self.triggers[k] or known_word(t.text)
-        or self:has_ref(k, k + 1, "aircraft") then
-      return false
+    if not t or t.kind ~= "word" or not t.alpha or MEANING[t.text] or self.triggers[k]
+        or (not english and known_word(t.text)) or self:has_ref(k, k + 1, "aircraft") then
+      return nil
     end
     words[#words + 1] = t.text
   end
-  local name = table.concat(words, " ")
-  for _, by in ipairs({ function() return w.navaids_named(name, 0, 0, 1e5) end, w.airports_named, w.airports_of_city,
-      w.airports_with_words }) do
-    for _, id in ipairs(by(name)) do
-      if not code or id:upper() == code then return true end
+  return #words > 0 and table.concat(words, " ") or nil
+end
+
+-- The codes of the navdata's places called `name` (a navaid's name, an airport's name, its city, the city's English
+-- name, lexicon.city_airports, and unless `whole`, words of an airport's name), within `nm` NM of lat, lon when given;
+-- f(code) is called for each until it returns true, and then true is returned. The cheaper look-ups go first; false
+-- without navdata.
+function G:any_place_named(name, f, lat, lon, nm, whole)
+  local w = self.world
+  if not (w.navaids_named and w.airports_named and w.airports_of_city and w.airports_with_words) then return false end
+  for _, said in ipairs({ name, lexicon.city_airports[name] }) do
+    for _, by in ipairs({ w.navaids_named, w.airports_named, w.airports_of_city, not whole and w.airports_with_words or nil }) do
+      for _, id in ipairs(by(said, lat or 0, lon or 0, nm or 1e5)) do
+        if f(id:upper()) then return true end
+      end
     end
   end
   return false
 end
 
--- "direct to nienburg NIE", "goes to braunschweig, EDVE", "EDDH hamburg": words of any case just before place ref r
--- (commas and kinds of place between) or just after it, one or two of them, that are the navdata's name of r's
--- code (a navaid's name, an airport's name, words of it, or its city) are marked in `inside`; any other name stays unexplained
--- (asked: "direct to hannover NIE")
-function G:name_beside_code(r, inside)
-  local code = r.name:upper()
-  local function names(b, e) return self:place_named(b, e, code) end
+-- True when the words [b, e) name a place of the navdata (G:any_place_named): the place of code `code` when given
+-- (the words may then be English squawk knows: "Nice", "Brussels"), any when nil.
+function G:place_named(b, e, code)
+  local name = self:plain_name(b, e, code ~= nil)
+  return name ~= nil and self:any_place_named(name, function(id) return not code or id == code end)
+end
+
+-- "direct to nienburg NIE", "goes to braunschweig, EDVE", "EDDH hamburg", "Milan Malpensa, LIMC": words just before
+-- place ref r (commas and kinds of place between) or just after it, one to three of them, that name r (or the place
+-- `code` issued for it, when given: "to the PAM VOR, Amsterdam" gives EHAM) are marked in
+-- `inside`: the navdata's name of r's code in any case, or capitalised words that name no place of the navdata
+-- farther than CITY_NM from r ("Heraklion, LGIR": a name it does not know; "Berlin, EDDB": the city's other airport
+-- lies near; a word of a far field's name is no other place). A name it gives only to places elsewhere (a navaid's
+-- name, an airport's name or city) stays unexplained (asked: "direct to Tucson, GBN", "direct
+-- to hannover NIE").
+local CITY_NM = 40  -- a place said "near" a city lies this near one of its airports [NM]
+function G:name_beside_code(r, inside, code)
+  code = code or r.name:upper()
+  local lat, lon
+  if self.world.user_waypoint_at then lat, lon = self.world.user_waypoint_at(code) end
+  local function names(b, e)
+    if self:place_named(b, e, code) then return true end
+    for k = b, e - 1 do
+      if not (self.t[k] and self.t[k].raw:match("^%u")) then return false end
+    end
+    local name = self:plain_name(b, e, true)
+    local function any() return true end
+    return name ~= nil and (not self:any_place_named(name, any, nil, nil, nil, true)
+      or lat ~= nil and self:any_place_named(name, any, lat, lon, CITY_NM))
+  end
   local function between(k) return self.t[k] and (self.t[k].kind == "punct" or self:word(k, "@airport_nouns @navaid_kinds")) end
   local e = r.b
   while e > 1 and r.b - e < 2 and between(e - 1) do e = e - 1 end
-  for n = 2, 1, -1 do
-    if e - n >= 1 and not inside[e - 1] and names(e - n, e) then
+  for n = 3, 1, -1 do
+    if e - n >= 1 and not inside[e - n] and names(e - n, e) then
       for k = e - n, r.b - 1 do inside[k] = true end
       break
     end
@@ -6559,7 +6588,6 @@ end
 -- The positions of tokens the parse explains beyond the words themselves: callsigns, places, types and
 -- values; a place's name beside its issued code; the name "instead of" replaces or a direct-to passes
 -- (`kinds`: G:issued); an ATC unit's place; comments and purposes; courtesy and value phrases.
-local CITY_NM = 40  -- a place said "near" a city lies this near one of its airports [NM]
 function G:explained_spans(issued, kinds)
   local inside = {}
   for _, r in ipairs(self.refs) do
@@ -6569,26 +6597,16 @@ function G:explained_spans(issued, kinds)
     for k = q.b, q.e - 1 do inside[k] = true end
   end
   -- a place said by its name beside its code as issued ("destination Frankfurt, EDDF", "EPKK Krakow",
-  -- "London Heathrow, EGLL", "Amsterdam Schiphol (EHAM)", "the Pampus VOR, PAM"): the capitalised words
-  -- just before it (commas, brackets and kinds of place between) and the one just after it
-  local function beside(k) return self.t[k].kind == "punct" or self:word(k, "@airport_nouns @navaid_kinds") end
+  -- "London Heathrow, EGLL", "Amsterdam Schiphol (EHAM)", "the Pampus VOR, PAM")
   for _, r in ipairs(self.refs) do
     if r.kind == "waypoint" and issued[r.name:lower()] then
-      local k = r.b - 1
-      while k >= 1 and r.b - k <= 4 and (beside(k) or self.t[k].raw:match("^%u")) do
-        inside[k], k = true, k - 1
-      end
-      k = r.e
-      if self.t[k] and self.t[k].kind == "punct" then k = k + 1 end
-      if self.t[k] and self.t[k].kind == "word" and self.t[k].raw:match("^%u") then inside[k] = true end
       self:name_beside_code(r, inside)
-      -- ("at the RIX VOR near Riga": the city it lies by, a name the navdata gives a city's airport)
+      -- ("at the RIX VOR near Riga": the city it lies by, a name the navdata gives a place near it)
       local n = self:word(r.e, "@navaid_kinds @airport_nouns") and r.e + 1 or r.e
       local city = self.t[n + 1] and self.t[n + 1].kind == "word" and self.t[n + 1].raw:match("^%u") and self.t[n + 1].text
       local lat, lon
       if self:word(n, "near by") and city and self.world.user_waypoint_at then lat, lon = self.world.user_waypoint_at(r.name) end
-      if lat and (#self.world.airports_of_city(lexicon.city_airports[city] or city, lat, lon, CITY_NM) > 0
-          or #self.world.airports_named(lexicon.city_airports[city] or city, lat, lon, CITY_NM) > 0) then
+      if lat and self:any_place_named(city, function() return true end, lat, lon, CITY_NM, true) then
         inside[n], inside[n + 1] = true, true
       end
       -- ("direct GRM, the Gardermoen VOR": its name after "the", with its kind of navaid or airport after it)

@@ -2947,23 +2947,6 @@ return function(H, f, compass)
     if b < as then return b, as end
     return nil
   end
-  -- ("going to st hubert, CYHU", "from victoria, CYYJ"): the navdata's name of the airport `code` said
-  -- just before its code `r` (up to three words, a comma between) is accounted for by it; any other words
-  -- stay leftovers, asked about
-  local function name_beside_code(self, r, code)
-    local named = self.world.airports_named
-    local e = (self.t[r.b - 1] or {}).text == "," and r.b - 1 or r.b
-    for b = math.max(1, e - 3), e - 1 do
-      local words = {}
-      for k = b, e - 1 do
-        if self.t[k].kind ~= "word" or self.u:used(k) then words = nil break end
-        words[#words + 1] = self.t[k].text
-      end
-      for _, ident in ipairs(named and words and named(table.concat(words, " ")) or {}) do
-        if ident == code then return self:explain(b, e) end
-      end
-    end
-  end
   -- (every aircraft said gets the place: "set YMML as the destination for JST614 and TGW202"; the place is
   -- read from the first one's position)
   local function dest_orig(self, s, cmd, what)
@@ -3043,7 +3026,9 @@ return function(H, f, compass)
       each(" " .. airport)
     elseif #w > 0 then
       local code = self:airport_meant(w[#w].name, self:state(id))
-      name_beside_code(self, w[#w], code)
+      local named = {}
+      self:name_beside_code(w[#w], named, code)
+      for k in pairs(named) do self:explain(k, k + 1) end
       each(" " .. code)
     elseif lat and lon then
       each(" " .. f.num(lat) .. " " .. f.num(lon))

@@ -1444,7 +1444,7 @@ return {
   -- cities of several large airports (Rome, Milan, London, Paris) are none of these: a name alone is asked
   city_airports = { munich = "munchen", nuremberg = "nurnberg", cologne = "koln bonn", vienna = "schwechat",
                     prague = "ruzyne", venice = "venezia tessera", lisbon = "lisboa", copenhagen = "kastrup",
-                    warsaw = "okecie", athens = "eleftherios venizelos", turin = "torino", florence = "firenze",
+                    warsaw = "okecie", berlin = "schonefeld", athens = "eleftherios venizelos", turin = "torino", florence = "firenze",
                     naples = "capodichino", budapest = "ferihegy", gothenburg = "landvetter",
                     amsterdam = "schiphol", oslo = "gardermoen", bergen = "flesland", stavanger = "sola",
                     trondheim = "vaernes",

@@ -12944,3 +12944,19 @@ do
   check_eq(ex("delay half a minute, then KLM12 climb FL300"), "DELAY 30 ALT KLM12 FL300")
   asked(ex("delay a couple of minutes then KLM12 climb FL300"), "a loose time after 'delay'")
 end
+
+-- Cycle 51 (lead): a place's name said beside its code is accounted for by one rule (G:name_beside_code): the
+-- navdata's name of that code, or capitalised words the navdata gives no place farther than 40 NM from it; a name
+-- of a place elsewhere is asked, in a condition's slot, a direct-to and a destination alike
+do
+  local _, ex = navscene({ "CRE AC301 A320 40.0 -104.0 090 FL200 280", "CRE AC302 A320 45.5 8.8 090 FL200 280",
+    "CRE AC303 A320 52.3 13.0 090 FL200 280" }, "a place's name beside its code, checked")
+  if ex then
+    check_eq(ex("ac301 direct to Tucson, GBN"),
+      "ASK I have ADDWPT AC301 GBN ; DIRECT AC301 GBN. What does 'Tucson' mean?")
+    check_eq(ex("ac302 dest Milan Malpensa, LIMC"), "DEST AC302 LIMC")
+    check_eq(ex("ac303 dest Berlin, EDDB"), "DEST AC303 EDDB")
+    asked(ex("ac303 dest Hamburg, EDDB"), "a city whose airport is far from the code")
+    asked(ex("ac302 destination LIMC. Nice and simple"), "a capitalised word after a full stop is no name")
+  end
+end
