@@ -12944,3 +12944,25 @@ do
   check_eq(ex("delay half a minute, then KLM12 climb FL300"), "DELAY 30 ALT KLM12 FL300")
   asked(ex("delay a couple of minutes then KLM12 climb FL300"), "a loose time after 'delay'")
 end
+
+-- Cycle 51 (f137): a condition in a Spanish or Portuguese speaker's English after "when" or "once" ("when it pass
+-- over X", "when you arrive to X", "when arrives to FL250", "when you are at X", "when you are with 240 knots") is
+-- the condition English says; "when you arrive" with nothing reached is still asked
+do
+  local _, ex = scene({ "DEFWPT ROSAL 40.5 -3.5", "DEFWPT NIBOL 40.7 -3.3", "CRE AEA21 B738 40.2 -3.8 030 FL150 280",
+    "ADDWPT AEA21 ROSAL", "ADDWPT AEA21 NIBOL" })
+  check_eq(ex("AEA21 descend FL90 when it pass over ROSAL"), "AT AEA21 ROSAL DO ALT AEA21 FL90")
+  check_eq(ex("AEA21 when you arrive to NIBOL reduce to 210 knots"), "AT AEA21 NIBOL DO SPD AEA21 210")
+  check_eq(ex("AEA21 descend FL100 when arrives to NIBOL"), "AT AEA21 NIBOL DO ALT AEA21 FL100")
+  check_eq(ex("AEA21 climb FL250 and when you arrive at FL230 turn right heading 090"),
+    "ALT AEA21 FL250 ; ATALT AEA21 FL230 HDG AEA21 90 RIGHT")
+  check_eq(ex("AEA21 reduce 240 knots and when you are with 240 knots descend FL100"),
+    "SPD AEA21 240 ; ATSPD AEA21 240 ALT AEA21 FL100")
+  check_eq(ex("AEA21 descend FL100 and when you are at ROSAL reduce 220 knots"),
+    "ALT AEA21 FL100 ; AT AEA21 ROSAL DO SPD AEA21 220")
+  asked(ex("AEA21 when you arrive descend FL100"), "nothing reached")
+  -- ("go down until FL100" after a speed: "until" the level to fly; a speed held "until" a level is still asked)
+  check_eq(ex("AEA21 fly at 230 knots and go down until FL100"), "SPD AEA21 230 ; ALT AEA21 FL100")
+  asked(ex("AEA21 reduce to 230 knots until FL100"), "a speed held until a level")
+end
+
