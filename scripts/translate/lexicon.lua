@@ -1113,7 +1113,8 @@ return {
   -- forward"): that fast time ended (OP), never started (handlers_other: fast_forward)
   ff_ended = { "stop", "end", "cancel", "quit", "exit", "finish", "abort", "halt", "cease", "terminate",
       "discontinue", "interrupt" },
-  on = { "on", "enable", "activate", "show", "start", "use", "engage", "engaged" },
+  -- ("connect also the VNAV": "conectar", as "disconnect" is off)
+  on = { "on", "enable", "activate", "show", "start", "use", "engage", "engaged", "connect", "connected" },
   -- a change of speed said by its direction alone ("go faster", "slow down")
   faster_slower = { "faster", "slower", "accelerate", "decelerate" },
   -- a runway, and the sides a runway's number is said with ("runway two seven left"): part of its name
@@ -1606,6 +1607,10 @@ return {
     { heard = { "you are at" }, means = "it is at", after = { "when", "once" } },
     { heard = { "you are with", "it is with", "you're with", "it's with" }, means = "it is at",
       between = { { "when", "once" }, { "#number", "fl", "flight", "speed", "mach" } } },
+    -- (false friends of a Spanish or Portuguese speaker for the simulation's clock: "put the simulation in normal
+    -- velocity again" for "velocidad" / "velocidade", "fast the simulation 30 minutes" for fast-forward)
+    { heard = { "velocity" }, means = "speed", after = { "normal", "double" } },
+    { heard = { "fast" }, means = "fast forward", before = { "the", "sim", "simulation" } },
   },
   -- A language said whole by a controller or instructor ("vire a la izquierda rumbo 170", "borra el iberia
   -- 6253", "montez au niveau 140", "tournez à gauche cap 030"), read as its English word for word (grammar.lua
