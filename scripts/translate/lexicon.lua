@@ -1611,6 +1611,10 @@ return {
     -- velocity again" for "velocidad" / "velocidade", "fast the simulation 30 minutes" for fast-forward)
     { heard = { "velocity" }, means = "speed", after = { "normal", "double" } },
     { heard = { "fast" }, means = "fast forward", before = { "the", "sim", "simulation" } },
+    -- (the detection's look-ahead said as a Spanish or Portuguese speaker says it: "put the conflict detection
+    -- looking 8 minutes in front", "mirando 8 minutos adelante")
+    { heard = { "looking" }, means = "look-ahead", between = { { "detection", "probe", "asas" }, { "#number" } } },
+    { heard = { "in front" }, means = "ahead", after = { "minutes", "minute", "mins", "min", "seconds", "secs" } },
   },
   -- A language said whole by a controller or instructor ("vire a la izquierda rumbo 170", "borra el iberia
   -- 6253", "montez au niveau 140", "tournez à gauche cap 030"), read as its English word for word (grammar.lua

@@ -12986,6 +12986,9 @@ do
   -- ("connect the LNAV", "conectar": on, as "disconnect" is off)
   check_eq(ex("Air Europa 21 connect the LNAV"), "LNAV AEA21 ON")
   check_eq(ex("disconnect the VNAV of AEA21"), "VNAV AEA21 OFF")
+  -- (the look-ahead "looking N minutes in front"; "looking" after no detection's name is no setting)
+  check_eq(ex("set the conflict detection looking 5 minutes in front"), "DTLOOK 300")
+  asked(ex("conflict detection on, AEA21 looking 5 minutes in front"), "no detection before 'looking'")
 end
 
 -- Cycle 51 (f137): a wind "in" a city and a move "until over" a navaid, as a Spanish or Portuguese speaker says them;
