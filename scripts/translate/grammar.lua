@@ -2640,7 +2640,9 @@ function G:level_limits()
         if rate and cleared then
           self:mark_used(q.b, q.e)
           self:explain(i, q.e)
-        elseif speed then
+        -- ("fly at 210 knots and go down until 7000 feet": "until" straight after a verb of climbing or descending
+        -- is the level to fly, "hasta" / "até" in a Spanish or Portuguese speaker's English, read by the handlers)
+        elseif speed and not (self:word(i - 1, "climb descend") or (self:word(i - 1, "up down") and self:word(i - 2, "go"))) then
           self:need(string.format("squawk cannot end an instruction at a level ('%s'). Should it hold until told "
             .. "otherwise?", self:raw(i, q.e)))
         end

@@ -955,6 +955,12 @@ return function(H, f, compass)
           self:explain(to + 1, to + 2)
         end
       end
+      -- ("move the Easy until over the VOR BCN": "until" for "to", a Spanish or Portuguese speaker's "hasta" /
+      -- "até", before the place moved to with no value after it)
+      local u = named_at and self:find_word(s.trig + 1, s.e, "until till")
+      if u and u < s.e and #self:quantities(u, s.e) == 0 and #self:refs_in(u + 1, s.e, "waypoint") > 0 then
+        self:explain(u, u + 1)
+      end
     end
     -- ("move the Ryanair to FL360, same position": where it is now, with the values said)
     local same = self:find_word(s.b, s.e, "same")
@@ -2583,7 +2589,8 @@ return function(H, f, compass)
   local function wind_place(self, s)
     for k = s.b, s.e - 1 do
       local nx = self.t[k + 1]
-      if self:word(k, "at over overhead near around above") and nx and nx.kind == "word" then
+      -- ("wind from 320 with 25 knots in Lisbon": "in" before a place's name, as Spanish and Portuguese say "en")
+      if self:word(k, "at over overhead near around above in") and nx and nx.kind == "word" then
         local r = self:refs_in(k + 1, k + 2, "waypoint")[1]
         if r and not self:word(r.b, "@navaid_kinds") then return r.name:upper() end
         local id = self:place_by_name(k + 1, math.min(s.e, k + 4))

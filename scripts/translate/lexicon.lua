@@ -1113,7 +1113,8 @@ return {
   -- forward"): that fast time ended (OP), never started (handlers_other: fast_forward)
   ff_ended = { "stop", "end", "cancel", "quit", "exit", "finish", "abort", "halt", "cease", "terminate",
       "discontinue", "interrupt" },
-  on = { "on", "enable", "activate", "show", "start", "use", "engage", "engaged" },
+  -- ("connect also the VNAV": "conectar", as "disconnect" is off)
+  on = { "on", "enable", "activate", "show", "start", "use", "engage", "engaged", "connect", "connected" },
   -- a change of speed said by its direction alone ("go faster", "slow down")
   faster_slower = { "faster", "slower", "accelerate", "decelerate" },
   -- a runway, and the sides a runway's number is said with ("runway two seven left"): part of its name
@@ -1593,6 +1594,27 @@ return {
     { heard = { "een" }, means = "one", before = { "#number" }, after = { "#number" } },
     -- (English typed by a Spanish speaker: "procede direct GAVOL", as "proceder" is spelled)
     { heard = { "procede", "proced" }, means = "proceed", before = { "direct", "direct-to", "to" } },
+    -- (a condition in a Spanish or Portuguese speaker's English, after "when" or "once": the verb not agreeing
+    -- with its subject, "arrive to" for "llegar a" / "chegar a", "be with" a speed for "estar con": "when it pass
+    -- over TOBEK", "when you arrive to RINOR", "when arrives to FL250", "when you are at CASAR", "when you are
+    -- with 250 knots"; read as the condition English says; a longer form before the shorter it opens with)
+    { heard = { "you pass over", "it pass over", "it passes over", "pass over", "passes over", "you pass",
+                "it pass" }, means = "passing", after = { "when", "once" } },
+    { heard = { "you arrive to", "you arrive at", "it arrive to", "it arrive at", "arrive to", "arrive at" },
+      means = "you reach", after = { "when", "once" } },
+    { heard = { "it arrives to", "it arrives at", "arrives to", "arrives at" }, means = "it reaches",
+      after = { "when", "once" } },
+    { heard = { "you are at" }, means = "it is at", after = { "when", "once" } },
+    { heard = { "you are with", "it is with", "you're with", "it's with" }, means = "it is at",
+      between = { { "when", "once" }, { "#number", "fl", "flight", "speed", "mach" } } },
+    -- (false friends of a Spanish or Portuguese speaker for the simulation's clock: "put the simulation in normal
+    -- velocity again" for "velocidad" / "velocidade", "fast the simulation 30 minutes" for fast-forward)
+    { heard = { "velocity" }, means = "speed", after = { "normal", "double" } },
+    { heard = { "fast" }, means = "fast forward", before = { "the", "sim", "simulation" } },
+    -- (the detection's look-ahead said as a Spanish or Portuguese speaker says it: "put the conflict detection
+    -- looking 8 minutes in front", "mirando 8 minutos adelante")
+    { heard = { "looking" }, means = "look-ahead", between = { { "detection", "probe", "asas" }, { "#number" } } },
+    { heard = { "in front" }, means = "ahead", after = { "minutes", "minute", "mins", "min", "seconds", "secs" } },
   },
   -- A language said whole by a controller or instructor ("vire a la izquierda rumbo 170", "borra el iberia
   -- 6253", "montez au niveau 140", "tournez à gauche cap 030"), read as its English word for word (grammar.lua

@@ -345,6 +345,7 @@ local names = {
     { "arabia", "ABY" },  -- (Air Arabia)
     { "oman air", "OMA" },
     { "volotea", "VOE" },
+    { "swiftair", "SWT" },  -- (Swiftair, Spain; its ICAO telephony is "Swift", an English word)
     { "shuttle", "SHT" },  -- (British Airways Shuttle)
     { "hansaline", "CLH" },  -- (Lufthansa CityLine)
     { "air serbia", "ASL" },

@@ -1285,6 +1285,10 @@ return function(intent, rule, words)
   end }
   rule { "remove delete del skip drop", "delwpt", near = { 8, "@route_nouns" },
          when = function(g, i) return g:has_ref(i + 1, i + 2, "waypoint") and no_direct(g, i) end }
+  -- "erase BARSA of the route", "I want to quit LALPI of its route" ("quitar" / "tirar", a Spanish or Portuguese
+  -- speaker's false friend): the same, the waypoint straight after the verb and a route noun after it
+  rule { "erase quit", "delwpt", near = { 8, "@route_nouns" }, when = function(g, i)
+    return g:has_ref(i + 1, i + 2, "waypoint") and g:followed_by(i + 1, 7, "@route_nouns") and no_direct(g, i) end }
   -- "Virgin 3 delete 54 North 30 West": a position said in degrees straight after the verb, for an aircraft
   -- that flies, is a point of its route (no deletion of the aircraft)
   rule { "forget delete remove del", "delwpt", when = degrees_for_flying }
@@ -1977,6 +1981,14 @@ return function(intent, rule, words)
   -- "which", then "is" or "are": the aircraft's value asked, no instruction ("which heading should it fly" is none)
   rule { "which", "pos", next = "altitude speed heading level", when = function(g, i)
     return g:word(i + 2, "is are") end }
+  -- "the Swiftair, which altitude has?", "which speed has the Iberia?": the same with "has" for "tiene" / "tem"
+  -- (a Spanish or Portuguese speaker's word order), a question closed by "?" with no "to" after the verb ("which
+  -- heading has it to fly?" asks for an instruction)
+  rule { "which", "pos", next = "altitude speed heading level", when = function(g, i)
+    return g:word(i + 2, "has have") and g.t[#g.t].text == "?" and not g:word_in(i + 3, #g.t + 1, "to") end }
+  -- "which is the route of the Vueling?": the route asked with "which" ("cuál es"), as the state is above
+  rule { "which", "listrte", next = "is", near = { 4, "route routing" }, when = function(g)
+    return g.t[#g.t].text == "?" end }
   -- "how fast is the Norwegian flying?", "how high is SAS1421 now?": a question of an aircraft's state
   -- (typed without "?" too, when the request ends at the aircraft or its verb: "how high is afr1442")
   rule { "how", "pos", next = "fast high", when = function(g, i)

@@ -12958,5 +12958,65 @@ do
     check_eq(ex("ac303 dest Berlin, EDDB"), "DEST AC303 EDDB")
     asked(ex("ac303 dest Hamburg, EDDB"), "a city whose airport is far from the code")
     asked(ex("ac302 destination LIMC. Nice and simple"), "a capitalised word after a full stop is no name")
+end
+
+-- Cycle 51 (f137): a condition in a Spanish or Portuguese speaker's English after "when" or "once" ("when it pass
+-- over X", "when you arrive to X", "when arrives to FL250", "when you are at X", "when you are with 240 knots") is
+-- the condition English says; "when you arrive" with nothing reached is still asked
+do
+  local _, ex = scene({ "DEFWPT ROSAL 40.5 -3.5", "DEFWPT NIBOL 40.7 -3.3", "CRE AEA21 B738 40.2 -3.8 030 FL150 280",
+    "ADDWPT AEA21 ROSAL", "ADDWPT AEA21 NIBOL" })
+  check_eq(ex("AEA21 descend FL90 when it pass over ROSAL"), "AT AEA21 ROSAL DO ALT AEA21 FL90")
+  check_eq(ex("AEA21 when you arrive to NIBOL reduce to 210 knots"), "AT AEA21 NIBOL DO SPD AEA21 210")
+  check_eq(ex("AEA21 descend FL100 when arrives to NIBOL"), "AT AEA21 NIBOL DO ALT AEA21 FL100")
+  check_eq(ex("AEA21 climb FL250 and when you arrive at FL230 turn right heading 090"),
+    "ALT AEA21 FL250 ; ATALT AEA21 FL230 HDG AEA21 90 RIGHT")
+  check_eq(ex("AEA21 reduce 240 knots and when you are with 240 knots descend FL100"),
+    "SPD AEA21 240 ; ATSPD AEA21 240 ALT AEA21 FL100")
+  check_eq(ex("AEA21 descend FL100 and when you are at ROSAL reduce 220 knots"),
+    "ALT AEA21 FL100 ; AT AEA21 ROSAL DO SPD AEA21 220")
+  asked(ex("AEA21 when you arrive descend FL100"), "nothing reached")
+  -- ("go down until FL100" after a speed: "until" the level to fly; a speed held "until" a level is still asked)
+  check_eq(ex("AEA21 fly at 230 knots and go down until FL100"), "SPD AEA21 230 ; ALT AEA21 FL100")
+  asked(ex("AEA21 reduce to 230 knots until FL100"), "a speed held until a level")
+end
+
+-- Cycle 51 (f137): Swiftair by its name; "which <state> has?" and "which is the route of ...?" (Spanish "cuál",
+-- "tiene") ask for the aircraft's state or route; "which heading has it to fly?" is no such question
+do
+  local _, ex = scene({ "DEFWPT ROSAL 40.5 -3.5", "CRE AEA21 B738 40.2 -3.8 030 FL150 280", "ADDWPT AEA21 ROSAL",
+    "CRE SWT45 AT72 40.0 -3.0 200 FL110 220" })
+  check_eq(ex("Swiftair 45 climb FL130"), "ALT SWT45 FL130")
+  check_eq(ex("the Swiftair, which speed has?"), "POS SWT45")
+  check_eq(ex("which level has the Swiftair?"), "POS SWT45")
+  check_eq(ex("Which is the route of the Air Europa?"), "LISTRTE AEA21")
+  asked(ex("which heading has it to fly?"), "an instruction asked for")
+  -- ("erase X of the route", "quit X of the route": the waypoint taken off; "quit X" with no route noun is asked)
+  check_eq(ex("AEA21 erase ROSAL of the route"), "DELWPT AEA21 ROSAL")
+  check_eq(ex("please quit ROSAL of the route of AEA21"), "DELWPT AEA21 ROSAL")
+  asked(ex("AEA21 quit ROSAL"), "no route noun")
+  -- (the clock's false friends: "velocity" after "normal" or "double", "fast the simulation")
+  check_eq(ex("put the simulation in double velocity"), "DTMULT 2")
+  check_eq(ex("fast the simulation 5 minutes"), "FF 300")
+  -- ("connect the LNAV", "conectar": on, as "disconnect" is off)
+  check_eq(ex("Air Europa 21 connect the LNAV"), "LNAV AEA21 ON")
+  check_eq(ex("disconnect the VNAV of AEA21"), "VNAV AEA21 OFF")
+  -- (the look-ahead "looking N minutes in front"; "looking" after no detection's name is no setting)
+  check_eq(ex("set the conflict detection looking 5 minutes in front"), "DTLOOK 300")
+  asked(ex("conflict detection on, AEA21 looking 5 minutes in front"), "no detection before 'looking'")
+end
+
+-- Cycle 51 (f137): a wind "in" a city and a move "until over" a navaid, as a Spanish or Portuguese speaker says them;
+-- "in" and a time is still asked
+do
+  local _, ex = navscene({ "CRE VLG7 A320 41.3 2.0 100 FL200 260" }, "a wind in a city")
+  if ex then
+    check_eq(ex("put the wind of 250 degrees 30 knots in Barcelona"), "WIND LEBL 250 30")
+    check_eq(ex("put the wind from 250 degrees with 30 knots in Girona"), "WIND LEGE 250 30")
+    asked(ex("put the wind of 250 degrees 30 knots in 10 minutes"), "a time, no place")
+  end
+  _, ex = navscene({ "CRE SWT45 AT72 40.0 -3.0 200 FL110 220" }, "a move until over a navaid")
+  if ex then
+    check_eq(ex("move the Swiftair until over the VOR CJN"), "MOVE SWT45 CJN")
   end
 end
