@@ -12958,6 +12958,7 @@ do
     check_eq(ex("ac303 dest Berlin, EDDB"), "DEST AC303 EDDB")
     asked(ex("ac303 dest Hamburg, EDDB"), "a city whose airport is far from the code")
     asked(ex("ac302 destination LIMC. Nice and simple"), "a capitalised word after a full stop is no name")
+  end
 end
 
 -- Cycle 51 (f137): a condition in a Spanish or Portuguese speaker's English after "when" or "once" ("when it pass
