@@ -1602,6 +1602,12 @@ function G:word_in(b, e, words)
   return self:said(words) and word_among(self.words, b, e, set_cache[words] or word_set(words, 2))
 end
 
+-- True when the word at i is "not" said before lexicon.additive_not ("not just heading and speed", "not only
+-- horizontally"): an addition to what follows, no negation of it.
+function G:additive_not(i)
+  return self:word(i, "not") and self:word(i + 1, "@additive_not")
+end
+
 -- A fraction said in words after "one" or "a" at i ("one half", "a quarter": lexicon.fractions), not the part
 -- of a number after "and" ("one and a half"): the position after it, or nil.
 function G:fraction_said(i)
@@ -2793,7 +2799,8 @@ function G:at_speed(s)
   -- (a bare number after "at" that this request gave the aircraft as its speed already: "reduce 180 knots, and once
   -- you're at one eighty descend FL70"; "when 250" with no "at" is asked)
   local bare = q.kind == "plain" and q.value >= 40 and q.value <= 700
-  local again = bare and not (noun or slowed) and self:word(q.b - 1, "at")
+  -- ("and when he's got two fifty, descend": the speed had, given already, as "at" says it)
+  local again = bare and not (noun or slowed) and self:word(q.b - 1, "at got")
   if not (q.kind == "speed" or q.kind == "mach" or (bare and (noun or slowed or again))) then return nil end
   local k = self:skip_fillers(q.e)
   while k < s.trig and ((self.t[k].kind == "punct" and self.t[k].text == ",") or self:word(k, "@condition_lead")
@@ -6818,8 +6825,11 @@ function G:described()
       local held = self:quantities(v, #self.t + 1)[1]
       if held and held.b == v and self:word(held.e, "@described") then k = held.e end
       local verb_at = self:word(k + 1, "@described_quantifiers") and k + 2 or k + 1
-      if self:word(k, "@described") and not self:word(verb_at, "@described_not")
-          and not self:word(self:word(r.b - 1, "the") and r.b - 2 or r.b - 1, "@described_after") then
+      local before = self:word(r.b - 1, "the a an") and r.b - 2 or r.b - 1
+      -- ("I've got the Tomjet above at 170": the object of lexicon.described_object, its clause from after the name)
+      if self:word(before, "@described_object") then k = r.e - 1 end
+      if (k == r.e - 1 or self:word(k, "@described") and not self:word(verb_at, "@described_not"))
+          and not self:word(before, "@described_after") then
         -- (the clause ends at punctuation, or at an instruction word after its first value: "KLM12 is at FL300
         -- climb FL320")
         local e = k + 1

@@ -3834,8 +3834,14 @@ return function(H, f, compass)
       return self:mark_used(s.trig, s.trig + 2)
     end
     local all = #self.t + 1
-    local off = self:word_in(1, all, "@off no not never")
-    local only = self:word_in(1, all, "only")
+    -- ("use vertical speed as well, not just heading and speed": "not just" adds, G:additive_not; its "only" or
+    -- "just" limits nothing)
+    local off, only = false, false
+    for k = 1, #self.t do
+      local additive = self:additive_not(k) or self:additive_not(k - 1)
+      off = off or (self:word(k, "@off no not never") and not additive)
+      only = only or (self:word(k, "only") and not additive)
+    end
     -- ("turn off lateral resolution", "horizontal resolutions off", "only resolve vertically"): the
     -- horizontal resolutions switched, RMETHH, which squawk lacks: asked, never RMETHV switched instead
     -- (the two words after k, up to punctuation: "vertical reso method off, horizontal only" is RMETHV OFF)
@@ -3848,10 +3854,11 @@ return function(H, f, compass)
     end
     for k = 1, #self.t do
       local e = after(k)
-      local horizontal_off = self:word(k, "@off no not never") and self:word_in(k + 1, e, "horizontal lateral")
+      local horizontal_off = self:word(k, "@off no not never") and not self:additive_not(k)
+        and self:word_in(k + 1, e, "horizontal lateral")
         and not self:word_in(k + 1, e, "vertical vertically")
       local off_horizontal = self:word(k, "horizontal lateral") and self:word_in(k + 1, e, "@off")
-      local vertical_only = self:word(k, "only") and (self:word(k - 1, "vertical vertically")
+      local vertical_only = self:word(k, "only") and not self:additive_not(k - 1) and (self:word(k - 1, "vertical vertically")
         or (self:word_in(k + 1, e, "vertical vertically") and not self:word_in(k + 1, e, "@off no not never")))
       if horizontal_off or off_horizontal or vertical_only then
         return self:need("squawk's resolutions are horizontal only (RMETHV OFF) or horizontal with vertical "

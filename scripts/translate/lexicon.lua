@@ -656,10 +656,16 @@ return {
   described = { "is", "are", "keeps", "stays", "remains", "sits", "currently" },
   described_not = { "cleared", "to", "instructed", "told", "requested", "now", "going", "gonna", "climbing",
                     "descending", "turning", "both", "also", "required", "obliged" },
+  -- an aircraft named as the object of one of these is described too, its clause to the next punctuation: "climb
+  -- FL130, I've got the Tomjet above at one seven zero", "we've got the KLM at FL170" (G:described)
+  described_object = { "got" },
   -- (nor after one of these: "once EZY45 is at 250 knots", "log where AFR1023 is")
   described_after = { "once", "when", "if", "until", "after", "before", "where", "whether", "unless", "while" },
   -- a word between the copula and what the aircraft are doing, read past ("KLM12 and EZY45 are both at FL350")
   described_quantifiers = { "both", "all" },
+  -- words after "not" that make it add, not negate: "use vertical speed as well, not just heading and speed" keeps
+  -- what follows and adds the rest (G:additive_not)
+  additive_not = { "just", "only", "merely", "simply", "solely" },
   -- words after which a clause is a new instruction
   then_words = { "then" },
   -- words that, as "then" does, open what follows a limit "until" a place ("maintain 250 knots till KAMOL,

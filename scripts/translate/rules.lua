@@ -1251,7 +1251,26 @@ return function(intent, rule, words)
   rule { "delete deleted remove removed", false, prev = { 1, "gets get got" },
          when = function(g, i) return not g:has_ref(math.max(1, i - 5), i, "aircraft") end }
   -- ("skip LANAK, route direct TLA": the direct-to passes it; no deletion)
-  local function no_direct(g, i) return not g:word(i, "skip") or not g:followed_by(i, 8, "direct directly dct straight") end
+  -- ("route direct LAM, he can skip BRAIN": a direct-to said before it, to a waypoint that an aircraft named flies
+  -- after the one skipped, passes it too; a waypoint after the direct's is still left out of the route)
+  local function passed_by_direct(g, i)
+    local skipped = g:refs_in(i + 1, i + 2, "waypoint")[1]
+    for d = math.max(1, i - 8), i - 1 do
+      local target = skipped and g:word(d, "direct directly dct straight") and g:refs_in(d + 1, math.min(d + 4, i), "waypoint")[1]
+      for _, r in ipairs(target and g:refs_in(1, #g.t + 1, "aircraft") or {}) do
+        local seen = false
+        for _, name in ipairs(r.exists and g:state(r.name).route or {}) do
+          if name:upper() == target.name:upper() then break end
+          seen = seen or name:upper() == skipped.name:upper()
+        end
+        if seen then return true end
+      end
+    end
+    return false
+  end
+  local function no_direct(g, i)
+    return not g:word(i, "skip") or not (g:followed_by(i, 8, "direct directly dct straight") or passed_by_direct(g, i))
+  end
   rule { "remove delete del skip", "delwpt", near = { 2, "waypoint wpt wp" }, when = no_direct }
   -- verb-final order: "APJ301 route delete all", "EVA15 route all clear" delete the whole route,
   -- "ANA25 waypoint HYOGO remove" the waypoint named before the verb

@@ -12944,3 +12944,48 @@ do
   check_eq(ex("delay half a minute, then KLM12 climb FL300"), "DELAY 30 ALT KLM12 FL300")
   asked(ex("delay a couple of minutes then KLM12 climb FL300"), "a loose time after 'delay'")
 end
+
+-- Cycle 51 (f136): an aircraft named as the object of "got" ("I've got the KLM above at FL240") is described, its
+-- level no instruction to it; an instruction given to it after the description is still read or asked
+do
+  local _, ex = scene({ "CRE BAW31 A320 52 4 090 FL180 280", "CRE KLM12 B738 52.2 4.2 270 FL240 280" })
+  check_eq(ex("BAW31, climb FL220 only, I've got the KLM above at two four zero and he's descending."),
+    "ALT BAW31 FL220")
+  check_eq(ex("BAW31 climb FL220, we've got KLM12 at FL240."), "ALT BAW31 FL220")
+  check_eq(ex("I've got KLM12 at FL240, climb him FL260"), "ALT KLM12 FL260")
+  asked(ex("I've got KLM12 at FL240."), "a description alone instructs nobody")
+end
+
+-- Cycle 51 (f136): "not just" / "not only" adds what follows to the rest, no negation: "use vertical speed too, not
+-- just heading" switches vertical resolutions on; a plain "not" still switches them off, "only vertical" asks
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL200 250" })
+  check_eq(ex("let the resolutions use vertical speed as well, not only heading and speed"), "RMETHV V/S")
+  check_eq(ex("resolutions may use vertical too, not just horizontal manoeuvres"), "RMETHV V/S")
+  check_eq(ex("the resolutions should not use vertical speed"), "RMETHV OFF")
+  asked(ex("resolutions should use vertical only"), "no vertical-only method")
+end
+
+-- Cycle 51 (f136): "route direct X, he can skip Y" with Y before X on the route: the direct-to passes Y, no
+-- deletion; Y after X on the route is still left out of it
+do
+  local _, ex = navscene({ "CRE UAE9 A388 51.95 1.00 230 FL180 300", "ADDWPT UAE9 BRAIN", "ADDWPT UAE9 LAM" },
+    "a waypoint skipped by a direct-to")
+  if ex then
+    check_eq(ex("UAE9, route direct LAM, he can skip BRAIN, it's a shortcut."), "DIRECT UAE9 LAM")
+    check_eq(ex("UAE9 direct BRAIN, then skip LAM on the route"), "DIRECT UAE9 BRAIN ; DELWPT UAE9 LAM")
+  end
+end
+
+-- Cycle 51 (f136): a condition said after an instruction, "and once he's at FL280, Mach .78", "and once he's
+-- passing FL110, left heading 160", "and when he's got two fifty, descend": the value after it waits for it
+do
+  local _, ex = scene({ "CRE BAW31 A320 52 4 090 FL180 280" })
+  check_eq(ex("BAW31 climb FL330, and once he's at FL300, Mach point seven eight"),
+    "ALT BAW31 FL330 ; ATALT BAW31 FL300 SPD BAW31 M0.78")
+  check_eq(ex("BAW31 descend FL100, and once he's passing FL140, right heading 200"),
+    "ALT BAW31 FL100 ; ATALT BAW31 FL140 HDG BAW31 200 RIGHT")
+  check_eq(ex("BAW31 reduce speed 240 knots, and when he's got two forty, descend FL120"),
+    "SPD BAW31 240 ; ATSPD BAW31 240 ALT BAW31 FL120")
+  asked(ex("BAW31 descend FL120, and when he's got two forty, reduce speed 220"), "a speed had, never given")
+end
