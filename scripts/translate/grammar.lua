@@ -2000,11 +2000,13 @@ function G:in_reason(i)
           and self:commentary(k + 1, commentary_end(self, k + 1)) then
         -- ("Fast-forward 20 minutes, we only care about the descent phase"; "...; we are studying how ...")
         inside = true
-      elseif punct and t.text == "," and self:word_in(k + 1, commentary_end(self, k + 1), COMMENTARY.reason_set)
+      elseif punct and (t.text == "," or t.text == ";")
+          and self:word_in(k + 1, commentary_end(self, k + 1), COMMENTARY.reason_set)
           and not self:word_in(k + 1, commentary_end(self, k + 1), "from")
           and (instructed(k) or #self:quantities(1, k) > 0)
           and self:commentary(k + 1, commentary_end(self, k + 1), false, false, true) then
-        -- ("reduce 260, sequencing into DXB", "slow to 210, DFW metering": the operational reason, its place too;
+        -- ("reduce 260, sequencing into DXB", "slow to 210, DFW metering", "left 110 degrees; we need him well out
+        -- of the way of the BIG stack": the operational reason, its place too;
         -- "inbound from Vigo" names where the aircraft comes from, no reason)
         inside = true
       elseif punct and t.text == "," and self:word(k + 1, "@aside_comments") and instructed(k)
@@ -2138,6 +2140,23 @@ function G:need_denied(k, e)
   end
   for x = r.e, e - 1 do
     if not self:word(x, "@need_denied_after") then return false end
+  end
+  for x = e, #self.t do
+    if self:intent_at(x) == "delete" then return true end
+  end
+  return false
+end
+
+-- True when the clause [k, e) says an aircraft does not belong in the exercise before it is removed later in the
+-- request ("Virgin 27G shouldn't be in this exercise at all; delete him"): the aircraft first, then only words of
+-- lexicon.presence_denied, a negation and one of its places among them.
+function G:presence_denied(k, e)
+  local r = self:refs_in(k, k + 1, "aircraft")[1]
+  if not r or not self:word_in(r.e, e, "not shouldn't isn't doesn't") or not self:word_in(r.e, e, "@presence_places") then
+    return false
+  end
+  for x = r.e, e - 1 do
+    if not (self:word(x, "@presence_denied @presence_places") or self.t[x].filler) then return false end
   end
   for x = e, #self.t do
     if self:intent_at(x) == "delete" then return true end
@@ -6732,7 +6751,7 @@ function G:explained_spans(issued, kinds)
         for x = unneeded, e - 1 do inside[x] = true end
         break
       end
-      if j == k and self:need_denied(k, e) then
+      if j == k and (self:need_denied(k, e) or self:presence_denied(k, e)) then
         for x = k, e - 1 do inside[x] = true end
         break
       end

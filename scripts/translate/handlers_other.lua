@@ -1033,10 +1033,11 @@ return function(H, f, compass)
       return self:delete_waypoint(s)
     end
     local ids = {}
-    -- ("we don't need it after all": "after all" ending its clause is the idiom, no aircraft counted)
+    -- ("we don't need it after all", "X shouldn't be in this exercise at all": "after all" or "at all" ending its
+    -- clause is the idiom, no aircraft counted)
     local all = false
     for k = s.b, s.e - 1 do
-      local idiom = self:word(k - 1, "after") and (not self.t[k + 1] or self.t[k + 1].kind == "punct")
+      local idiom = self:word(k - 1, "after at") and (not self.t[k + 1] or self.t[k + 1].kind == "punct")
       all = all or (self:word(k, "@all") and not idiom)
     end
     if all then

@@ -12989,3 +12989,34 @@ do
     "SPD BAW31 240 ; ATSPD BAW31 240 ALT BAW31 FL120")
   asked(ex("BAW31 descend FL120, and when he's got two forty, reduce speed 220"), "a speed had, never given")
 end
+
+-- Cycle 51 (f136): an aircraft said not to belong in the exercise ("X shouldn't be in this exercise at all; delete
+-- him") is the reason for the deletion that follows; "at all" ending a clause counts no aircraft; the reason alone,
+-- or with another aircraft deleted, is asked
+do
+  local _, ex = scene({ "CRE BAW31 A320 52 4 090 FL180 280", "CRE KLM12 B738 52.2 4.2 270 FL240 280" })
+  check_eq(ex("KLM12 isn't part of this scenario at all, remove it"), "DEL KLM12")
+  check_eq(ex("KLM12 shouldn't be here at all; delete it"), "DEL KLM12")
+  asked(ex("KLM12 shouldn't be in this exercise; delete BAW31"), "another aircraft deleted")
+  asked(ex("KLM12 shouldn't be in this exercise at all"), "a reason with nothing done")
+  asked(ex("delete them all"), "every aircraft deleted is confirmed")
+end
+
+-- Cycle 51 (f136): traffic told "beneath" or "underneath", and an inbound told where it sits, after an instruction:
+-- its level is the other aircraft's; an instructor's forecast opening "it'll"/"he'll" and a reason naming a stack
+-- after a semicolon are remarks
+do
+  local _, ex = scene({ "CRE BAW31 A320 52 4 090 FL180 280", "CRE KLM12 B738 52.2 4.2 270 FL240 280" })
+  check_eq(ex("BAW31 climb FL200, traffic underneath at one six zero."), "ALT BAW31 FL200")
+  check_eq(ex("BAW31 climb FL200, there's an inbound holding at FL210."), "ALT BAW31 FL200")
+  check_eq(ex("BAW31 descend FL150; it'll be tight on the KLM otherwise."), "ALT BAW31 FL150")
+  asked(ex("BAW31 descend FL150; it'll be tight on the KLM at FL140."), "a level in the forecast")
+  asked(ex("BAW31 climb FL200, inbound FL210."), "an inbound's level said bare")
+end
+do
+  local _, ex = navscene({ "CRE BAW31 A320 51.3 0.0 090 FL180 280" }, "a stack named in a reason")
+  if ex then
+    check_eq(ex("BAW31 turn left heading 300; we need him well clear of the BIG stack."), "HDG BAW31 300 LEFT")
+    asked(ex("BAW31 turn left heading 300; we need him well clear of BIG."), "a place with no reason word")
+  end
+end
