@@ -191,10 +191,18 @@ return function(H, f, compass)
         local q = self:quantities(r.e + oh, s.e)[1]
         local id = h.id
         local rest = q and q.b == r.e + oh and q.kind == "plain" and h.id:match("%d$") and q.number.digits
-        if rest then id = h.id .. ("0"):rep(oh) .. rest end
+        -- ("Speedbird seven | seven two Kilo": the letters spelled after the flight number end the callsign)
+        local e = rest and q.e
+        if rest then
+          rest = ("0"):rep(oh) .. rest
+          while self.t[e] and self.t[e].kind == "word" and L.phonetic[self.words[e]] and #rest < 8 do
+            rest, e = rest .. L.phonetic[self.words[e]], e + 1
+          end
+          id = h.id .. rest
+        end
         if not self:state(id) and not self:airline_and_digits_match(id, r.name) then
-          if rest then self:mark_used(q.b, q.e) end
-          r.name, r.exists, r.heard, r.e = id, false, nil, rest and q.e or r.e
+          if rest then self:mark_used(q.b, e) end
+          r.name, r.exists, r.heard, r.e = id, false, nil, rest and e or r.e
         end
       end
     end

@@ -1365,6 +1365,18 @@ return function(intent, rule, words)
     return r ~= nil and (k == i + 2 or g:word(r.e, "out")) and not g:has_ref(1, #g.t + 1, "type")
   end }
   rule { "take", "delete", near = { 5, "out" } }
+  -- "take Scandinavian one five zero one out of the exercise": a flying aircraft, however long its spoken callsign,
+  -- straight after the verb ("the" between), "out" straight after it, and then nothing in its clause or "of" the
+  -- exercise (lexicon.presence_places, @sim: "out of the hold" is no deletion)
+  rule { "take", "delete", when = function(g, i)
+    local k = g:word(i + 1, "the") and i + 2 or i + 1
+    local r = g:refs_in(k, k + 1, "aircraft")[1]
+    if not (r ~= nil and r.b == k and r.exists and g:word(r.e, "out")) then return false end
+    local o = r.e + 1
+    if not g.t[o] or g.t[o].kind == "punct" then return true end
+    o = g:word(o + 1, "the this our") and o + 2 or o + 1
+    return g:word(r.e + 1, "of") and g:word(o, "@presence_places @sim") or false
+  end }
 
   -- route
   rule { "proceed", false, near = { 3, "heading" } }

@@ -13020,3 +13020,24 @@ do
     asked(ex("BAW31 turn left heading 300; we need him well clear of BIG."), "a place with no reason word")
   end
 end
+
+-- Cycle 51 (f136): a new aircraft's spoken callsign whose first digit the matcher gave a flying aircraft
+-- ("Speedbird seven | seven two Kilo" beside BAW97M) keeps the letters spelled after its flight number
+do
+  local _, ex = scene({ "CRE BAW97M A319 51.20 -0.10 360 FL080 220" })
+  check_eq(ex("Create Speedbird Seven Seven Two Kilo, an A320, at 51 0 heading 135, FL130, 260 knots."),
+    "CRE BAW772K A320 51 0 135 FL130 260")
+  check_eq(ex("Create Speedbird Seven Four One Lima Mike, an A320, at 51 0 heading 135, FL130, 260 knots."),
+    "CRE BAW741LM A320 51 0 135 FL130 260")
+  check_eq(ex("Create Speedbird Seven Seven Two, an A320, at 51 0 heading 135, FL130, 260 knots."),
+    "CRE BAW772 A320 51 0 135 FL130 260")
+end
+
+-- Cycle 51 (f136): "take <aircraft> out of the exercise" deletes it, however long its spoken callsign; out of
+-- anything else ("out of the hold") is no deletion
+do
+  local _, ex = scene({ "CRE SAS1501 A20N 51.56 -0.10 180 7000 230", "CRE BAW97M A319 51.20 -0.10 360 FL080 220" })
+  check_eq(ex("Take Scandinavian One Five Zero One out of the scenario, please."), "DEL SAS1501")
+  check_eq(ex("take Scandinavian One Five Zero One out"), "DEL SAS1501")
+  asked(ex("take Scandinavian One Five Zero One out of the hold"), "a hold left, no deletion")
+end
