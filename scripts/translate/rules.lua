@@ -980,6 +980,10 @@ return function(intent, rule, words)
   rule { "pop", "create", next = "up" }  -- "pop up DAL88 B752 ..."
   -- "define a new waypoint called WP9", "define a new point ENT2 at ...": the new fix's noun after it
   rule { "new", false, next = "@waypoint_nouns point gate entry exit" }
+  -- ("define a new training point, TRN3, at ...", "a new reporting point": one word describing the fix between)
+  rule { "new", false, when = function(g, i)
+    return g:word(i + 2, "@waypoint_nouns point gate") and g.t[i + 1].kind == "word" and not g:has_ref(i + 1, i + 2)
+  end }
   -- ("creconfs: new one TVF88AB, B738, target AFR6204, ...": the new aircraft of a conflict set up before it is
   -- its intruder, no creation of its own)
   rule { "new", false, when = function(g, i)

@@ -13041,3 +13041,13 @@ do
   check_eq(ex("take Scandinavian One Five Zero One out"), "DEL SAS1501")
   asked(ex("take Scandinavian One Five Zero One out of the hold"), "a hold left, no deletion")
 end
+
+-- Cycle 51 (f136): one word describing a new fix between "new" and its noun ("define a new training point, TRN3,
+-- at ...") is no new aircraft; a fix with no name is still asked
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL200 250" })
+  check_eq(ex("Define a new training point, TP9, at fifty one decimal five north, zero decimal two east."),
+    "DEFWPT TP9 51.5 0.2")
+  check_eq(ex("define a new reporting waypoint RP7 at 52.1 4.3"), "DEFWPT RP7 52.1 4.3")
+  asked(ex("Define a new training point at fifty one decimal five north, zero decimal two east."), "no name")
+end
