@@ -2126,6 +2126,14 @@ function G:time_set_aside(text)
   end
   return found
 end
+-- True when a deletion is said at or after position e (the removal a clause before it gives the reason for).
+function G:deletion_from(e)
+  for x = e, #self.t do
+    if self:intent_at(x) == "delete" then return true end
+  end
+  return false
+end
+
 -- True when the clause [k, e) is the speaker's need of an aircraft, denied, before the aircraft is removed later in
 -- the request ("We will not need AFR1142 any more, so could you please delete it?", "I don't need the easyJet
 -- anymore, ..."): only words of lexicon.need_denied_before (a negation and a verb of needing among them), one
@@ -2141,10 +2149,7 @@ function G:need_denied(k, e)
   for x = r.e, e - 1 do
     if not self:word(x, "@need_denied_after") then return false end
   end
-  for x = e, #self.t do
-    if self:intent_at(x) == "delete" then return true end
-  end
-  return false
+  return self:deletion_from(e)
 end
 
 -- True when the clause [k, e) says an aircraft does not belong in the exercise before it is removed later in the
@@ -2158,10 +2163,7 @@ function G:presence_denied(k, e)
   for x = r.e, e - 1 do
     if not (self:word(x, "@presence_denied @presence_places") or self.t[x].filler) then return false end
   end
-  for x = e, #self.t do
-    if self:intent_at(x) == "delete" then return true end
-  end
-  return false
+  return self:deletion_from(e)
 end
 
 -- True when "before" at k opens a clause (to the next punctuation) that names one of lexicon.deadline_places
