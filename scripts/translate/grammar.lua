@@ -1602,6 +1602,12 @@ function G:word_in(b, e, words)
   return self:said(words) and word_among(self.words, b, e, set_cache[words] or word_set(words, 2))
 end
 
+-- True when the word at i is "not" said before lexicon.additive_not ("not just heading and speed", "not only
+-- horizontally"): an addition to what follows, no negation of it.
+function G:additive_not(i)
+  return self:word(i, "not") and self:word(i + 1, "@additive_not")
+end
+
 -- A fraction said in words after "one" or "a" at i ("one half", "a quarter": lexicon.fractions), not the part
 -- of a number after "and" ("one and a half"): the position after it, or nil.
 function G:fraction_said(i)
@@ -1994,11 +2000,13 @@ function G:in_reason(i)
           and self:commentary(k + 1, commentary_end(self, k + 1)) then
         -- ("Fast-forward 20 minutes, we only care about the descent phase"; "...; we are studying how ...")
         inside = true
-      elseif punct and t.text == "," and self:word_in(k + 1, commentary_end(self, k + 1), COMMENTARY.reason_set)
+      elseif punct and (t.text == "," or t.text == ";")
+          and self:word_in(k + 1, commentary_end(self, k + 1), COMMENTARY.reason_set)
           and not self:word_in(k + 1, commentary_end(self, k + 1), "from")
           and (instructed(k) or #self:quantities(1, k) > 0)
           and self:commentary(k + 1, commentary_end(self, k + 1), false, false, true) then
-        -- ("reduce 260, sequencing into DXB", "slow to 210, DFW metering": the operational reason, its place too;
+        -- ("reduce 260, sequencing into DXB", "slow to 210, DFW metering", "left 110 degrees; we need him well out
+        -- of the way of the BIG stack": the operational reason, its place too;
         -- "inbound from Vigo" names where the aircraft comes from, no reason)
         inside = true
       elseif punct and t.text == "," and self:word(k + 1, "@aside_comments") and instructed(k)
@@ -2118,6 +2126,14 @@ function G:time_set_aside(text)
   end
   return found
 end
+-- True when a deletion is said at or after position e (the removal a clause before it gives the reason for).
+function G:deletion_from(e)
+  for x = e, #self.t do
+    if self:intent_at(x) == "delete" then return true end
+  end
+  return false
+end
+
 -- True when the clause [k, e) is the speaker's need of an aircraft, denied, before the aircraft is removed later in
 -- the request ("We will not need AFR1142 any more, so could you please delete it?", "I don't need the easyJet
 -- anymore, ..."): only words of lexicon.need_denied_before (a negation and a verb of needing among them), one
@@ -2133,10 +2149,21 @@ function G:need_denied(k, e)
   for x = r.e, e - 1 do
     if not self:word(x, "@need_denied_after") then return false end
   end
-  for x = e, #self.t do
-    if self:intent_at(x) == "delete" then return true end
+  return self:deletion_from(e)
+end
+
+-- True when the clause [k, e) says an aircraft does not belong in the exercise before it is removed later in the
+-- request ("Virgin 27G shouldn't be in this exercise at all; delete him"): the aircraft first, then only words of
+-- lexicon.presence_denied, a negation and one of its places among them.
+function G:presence_denied(k, e)
+  local r = self:refs_in(k, k + 1, "aircraft")[1]
+  if not r or not self:word_in(r.e, e, "not shouldn't isn't doesn't") or not self:word_in(r.e, e, "@presence_places") then
+    return false
   end
-  return false
+  for x = r.e, e - 1 do
+    if not (self:word(x, "@presence_denied @presence_places") or self.t[x].filler) then return false end
+  end
+  return self:deletion_from(e)
 end
 
 -- True when "before" at k opens a clause (to the next punctuation) that names one of lexicon.deadline_places
@@ -2795,7 +2822,8 @@ function G:at_speed(s)
   -- (a bare number after "at" that this request gave the aircraft as its speed already: "reduce 180 knots, and once
   -- you're at one eighty descend FL70"; "when 250" with no "at" is asked)
   local bare = q.kind == "plain" and q.value >= 40 and q.value <= 700
-  local again = bare and not (noun or slowed) and self:word(q.b - 1, "at")
+  -- ("and when he's got two fifty, descend": the speed had, given already, as "at" says it)
+  local again = bare and not (noun or slowed) and self:word(q.b - 1, "at got")
   if not (q.kind == "speed" or q.kind == "mach" or (bare and (noun or slowed or again))) then return nil end
   local k = self:skip_fillers(q.e)
   while k < s.trig and ((self.t[k].kind == "punct" and self.t[k].text == ",") or self:word(k, "@condition_lead")
@@ -6745,7 +6773,7 @@ function G:explained_spans(issued, kinds)
         for x = unneeded, e - 1 do inside[x] = true end
         break
       end
-      if j == k and self:need_denied(k, e) then
+      if j == k and (self:need_denied(k, e) or self:presence_denied(k, e)) then
         for x = k, e - 1 do inside[x] = true end
         break
       end
@@ -6838,8 +6866,11 @@ function G:described()
       local held = self:quantities(v, #self.t + 1)[1]
       if held and held.b == v and self:word(held.e, "@described") then k = held.e end
       local verb_at = self:word(k + 1, "@described_quantifiers") and k + 2 or k + 1
-      if self:word(k, "@described") and not self:word(verb_at, "@described_not")
-          and not self:word(self:word(r.b - 1, "the") and r.b - 2 or r.b - 1, "@described_after") then
+      local before = self:word(r.b - 1, "the a an") and r.b - 2 or r.b - 1
+      -- ("I've got the Tomjet above at 170": the object of lexicon.described_object, its clause from after the name)
+      if self:word(before, "@described_object") then k = r.e - 1 end
+      if (k == r.e - 1 or self:word(k, "@described") and not self:word(verb_at, "@described_not"))
+          and not self:word(before, "@described_after") then
         -- (the clause ends at punctuation, or at an instruction word after its first value: "KLM12 is at FL300
         -- climb FL320")
         local e = k + 1

@@ -2194,6 +2194,9 @@ local RATE_LEAD = { reduce = true, increase = true, decrease = true, the = true,
 -- who does it, between the level and any instruction ("when passing FL200 it shall reduce the speed to 220")
 local SUBJECT_LEAD = { it = true, he = true, she = true, they = true, you = true, shall = true, should = true,
                        will = true, can = true, must = true }
+-- words between the level and a heading's own word, part of the instruction ("once passing FL110, left heading
+-- 160", "... turn right heading 130")
+local HEADING_LEAD = { left = true, right = true, turn = true }
 function m:at_altitude(s)
   if s.intent ~= "spd" and s.intent ~= "hdg" and s.intent ~= "maintain" and s.intent ~= "alt"
       and not NAV_INTENTS[s.intent] and s.intent ~= "vs" then
@@ -2264,7 +2267,7 @@ function m:at_altitude(s)
   local k = self:skip_fillers(q.e)
   while k < s.trig and (self:word(k, "@condition_lead") or (self.t[k].kind == "punct" and self.t[k].text == ",")
       or SUBJECT_LEAD[self.words[k]] or (s.intent == "spd" and SPEED_LEAD[self.words[k]])
-      or (s.intent == "vs" and RATE_LEAD[self.words[k]])) do
+      or (s.intent == "vs" and RATE_LEAD[self.words[k]]) or (s.intent == "hdg" and HEADING_LEAD[self.words[k]])) do
     k = self:skip_fillers(k + 1)
   end
   -- ("crossing FL150 ACA102 reduce 250": the instruction's callsign after a verb's condition; "both at
@@ -2675,9 +2678,14 @@ function m:leftovers(s)
           and not self.taken[held.b] and held
         -- ("climb FL160, then at FL160 280 knots": a level after "at" opening a clause straight before the speed,
         -- the level given already, is the one the speed waits for)
+        -- ("climb FL310, and once he's at FL280, Mach .78": a level closing a condition, G:bound_condition, a comma
+        -- between it and the speed)
         local prior = qs[k - 1]
-        if not held and alt_done and prior and prior.kind == "alt" and prior.e == q.b and not self.taken[prior.b]
-            and self:at_clause(prior) then
+        local comma = prior and self.t[prior.e] and self.t[prior.e].text == "," and prior.e + 1 == q.b
+        if not held and alt_done and prior and prior.kind == "alt" and (prior.e == q.b or comma)
+            and not self.taken[prior.b]
+            and (self:at_clause(prior) or self:word(prior.b - 1, "at passing reaching through leaving crossing")
+              and self:bound_condition(prior.b - 1)) then
           held = prior
         end
         -- ("climb FL370 and once level, Mach .80": the speed waits for the level this request gave the aircraft)

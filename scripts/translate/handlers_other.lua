@@ -191,10 +191,18 @@ return function(H, f, compass)
         local q = self:quantities(r.e + oh, s.e)[1]
         local id = h.id
         local rest = q and q.b == r.e + oh and q.kind == "plain" and h.id:match("%d$") and q.number.digits
-        if rest then id = h.id .. ("0"):rep(oh) .. rest end
+        -- ("Speedbird seven | seven two Kilo": the letters spelled after the flight number end the callsign)
+        local e = rest and q.e
+        if rest then
+          rest = ("0"):rep(oh) .. rest
+          while self.t[e] and self.t[e].kind == "word" and L.phonetic[self.words[e]] and #rest < 8 do
+            rest, e = rest .. L.phonetic[self.words[e]], e + 1
+          end
+          id = h.id .. rest
+        end
         if not self:state(id) and not self:airline_and_digits_match(id, r.name) then
-          if rest then self:mark_used(q.b, q.e) end
-          r.name, r.exists, r.heard, r.e = id, false, nil, rest and q.e or r.e
+          if rest then self:mark_used(q.b, e) end
+          r.name, r.exists, r.heard, r.e = id, false, nil, rest and e or r.e
         end
       end
     end
@@ -1039,10 +1047,11 @@ return function(H, f, compass)
       return self:delete_waypoint(s)
     end
     local ids = {}
-    -- ("we don't need it after all": "after all" ending its clause is the idiom, no aircraft counted)
+    -- ("we don't need it after all", "X shouldn't be in this exercise at all": "after all" or "at all" ending its
+    -- clause is the idiom, no aircraft counted)
     local all = false
     for k = s.b, s.e - 1 do
-      local idiom = self:word(k - 1, "after") and (not self.t[k + 1] or self.t[k + 1].kind == "punct")
+      local idiom = self:word(k - 1, "after at") and (not self.t[k + 1] or self.t[k + 1].kind == "punct")
       all = all or (self:word(k, "@all") and not idiom)
     end
     if all then
@@ -3826,8 +3835,14 @@ return function(H, f, compass)
       return self:mark_used(s.trig, s.trig + 2)
     end
     local all = #self.t + 1
-    local off = self:word_in(1, all, "@off no not never")
-    local only = self:word_in(1, all, "only")
+    -- ("use vertical speed as well, not just heading and speed": "not just" adds, G:additive_not; its "only" or
+    -- "just" limits nothing)
+    local off, only = false, false
+    for k = 1, #self.t do
+      local additive = self:additive_not(k) or self:additive_not(k - 1)
+      off = off or (self:word(k, "@off no not never") and not additive)
+      only = only or (self:word(k, "only") and not additive)
+    end
     -- ("turn off lateral resolution", "horizontal resolutions off", "only resolve vertically"): the
     -- horizontal resolutions switched, RMETHH, which squawk lacks: asked, never RMETHV switched instead
     -- (the two words after k, up to punctuation: "vertical reso method off, horizontal only" is RMETHV OFF)
@@ -3840,10 +3855,11 @@ return function(H, f, compass)
     end
     for k = 1, #self.t do
       local e = after(k)
-      local horizontal_off = self:word(k, "@off no not never") and self:word_in(k + 1, e, "horizontal lateral")
+      local horizontal_off = self:word(k, "@off no not never") and not self:additive_not(k)
+        and self:word_in(k + 1, e, "horizontal lateral")
         and not self:word_in(k + 1, e, "vertical vertically")
       local off_horizontal = self:word(k, "horizontal lateral") and self:word_in(k + 1, e, "@off")
-      local vertical_only = self:word(k, "only") and (self:word(k - 1, "vertical vertically")
+      local vertical_only = self:word(k, "only") and not self:additive_not(k - 1) and (self:word(k - 1, "vertical vertically")
         or (self:word_in(k + 1, e, "vertical vertically") and not self:word_in(k + 1, e, "@off no not never")))
       if horizontal_off or off_horizontal or vertical_only then
         return self:need("squawk's resolutions are horizontal only (RMETHV OFF) or horizontal with vertical "

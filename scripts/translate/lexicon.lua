@@ -656,10 +656,16 @@ return {
   described = { "is", "are", "keeps", "stays", "remains", "sits", "currently" },
   described_not = { "cleared", "to", "instructed", "told", "requested", "now", "going", "gonna", "climbing",
                     "descending", "turning", "both", "also", "required", "obliged" },
+  -- an aircraft named as the object of one of these is described too, its clause to the next punctuation: "climb
+  -- FL130, I've got the Tomjet above at one seven zero", "we've got the KLM at FL170" (G:described)
+  described_object = { "got" },
   -- (nor after one of these: "once EZY45 is at 250 knots", "log where AFR1023 is")
   described_after = { "once", "when", "if", "until", "after", "before", "where", "whether", "unless", "while" },
   -- a word between the copula and what the aircraft are doing, read past ("KLM12 and EZY45 are both at FL350")
   described_quantifiers = { "both", "all" },
+  -- words after "not" that make it add, not negate: "use vertical speed as well, not just heading and speed" keeps
+  -- what follows and adds the rest (G:additive_not)
+  additive_not = { "just", "only", "merely", "simply", "solely" },
   -- words after which a clause is a new instruction
   then_words = { "then" },
   -- words that, as "then" does, open what follows a limit "until" a place ("maintain 250 knots till KAMOL,
@@ -903,6 +909,8 @@ return {
   shown_together = { "both", "of", "them", "the", "and", "all", "two", "pair" },
   aside = { subjects = { "we", "i", "it", "he", "she", "they", "that", "this", "it's", "that's", "we're",
                          "we'll", "we'd", "i'm", "i'll", "i'd", "he's", "she's", "they're", "there's", "too",
+                         -- (the instructor's forecast: "he'll clip the danger area otherwise", "it'll be tight")
+                         "he'll", "she'll", "it'll", "they'll",
                          "participant", "participants", "experimenter", "researcher" },
           own = { "we", "i", "we're", "we'll", "we'd", "i'm", "i'll", "i'd" },
           -- the operational reason for a complete instruction, said after a comma ("he's inbound to FRA",
@@ -911,7 +919,10 @@ return {
           -- (one with "from" names where the aircraft comes from: asked)
           reasons = { "inbound", "sequencing", "sequence", "metering", "flow", "spacing", "ride", "rides",
                       "reports", "weather", "wx", "closed", "closure", "congestion", "sick", "medical", "arrivals",
-                      "departures", "turbulence", "chop", "choppy", "bumpy", "icing" },
+                      "departures", "turbulence", "chop", "choppy", "bumpy", "icing",
+                      -- (a holding stack named as what the vector or speed keeps clear of or prepares for: "we need
+                      -- him well out of the way of the BIG stack")
+                      "stack" },
           while_words = { "while", "whilst" },
           -- the same action described after a complete instruction, in an instructor's words (", give him a proper
           -- vector off", ", give her a decent climb"): one of `restate_verbs`, a pronoun and a noun of the kind of an
@@ -1092,6 +1103,12 @@ return {
   need_denied_before = { "we", "i", "will", "would", "do", "does", "not", "won't", "don't", "no", "longer", "need",
       "want", "require", "really", "actually" },
   need_denied_after = { "any", "more", "anymore", "longer" },
+  -- an aircraft said not to belong where it flies, before it is removed later in the request ("Virgin 27G
+  -- shouldn't be in this exercise at all; delete him", "KLM12 isn't part of the scenario, remove it",
+  -- G:presence_denied): the aircraft, then only these words, a negation and one of `presence_places` among them
+  presence_denied = { "should", "shouldn't", "is", "isn't", "does", "doesn't", "not", "really", "be", "belong", "in",
+                      "part", "of", "this", "the", "our", "at", "all" },
+  presence_places = { "exercise", "scenario", "simulation", "sim", "run", "session", "here" },
   -- verbs that end a movement: the direction after them is the one stopped, not the one flown (handlers:direction)
   halted = { "stop", "stops", "stopping", "cease", "halt", "discontinue", "terminate", "interrupt", "arrest" },
   -- words between "instead of"/"rather than" and the value they replace ("instead of the default 1.05",
@@ -1324,7 +1341,11 @@ return {
     -- Volotea at FL350": after an instruction, traffic told by the way it flies; its level is the other aircraft's)
     { what = "traffic information", words = "traffic", window = 2, after_instruction = true, to_end = true,
       near = { "opposite", "crossing", "converging", "overtaking", "same", "reciprocal", "climbing", "descending",
-               "ahead", "behind", "passing", "below", "above" } },
+               "ahead", "behind", "passing", "below", "above", "beneath", "underneath" } },
+    -- ("climb FL100, there's an inbound sitting at one one zero": after an instruction, an arrival told by where
+    -- it is; its level is the other aircraft's)
+    { what = "traffic information", words = "inbound", window = 2, after_instruction = true, to_end = true,
+      near = { "sitting", "holding", "level", "below", "above", "beneath", "underneath" } },
     -- "FPA -3 and speed 180": a flight path angle, which squawk's aircraft do not fly by (its value with it)
     { what = "flight path angles", words = "fpa", near = { "#number" }, window = 1 },
     -- "you are number two behind the Emirates", "number one for the approach": a place in the sequence, told

@@ -980,6 +980,10 @@ return function(intent, rule, words)
   rule { "pop", "create", next = "up" }  -- "pop up DAL88 B752 ..."
   -- "define a new waypoint called WP9", "define a new point ENT2 at ...": the new fix's noun after it
   rule { "new", false, next = "@waypoint_nouns point gate entry exit" }
+  -- ("define a new training point, TRN3, at ...", "a new reporting point": one word describing the fix between)
+  rule { "new", false, when = function(g, i)
+    return g:word(i + 2, "@waypoint_nouns point gate") and g.t[i + 1].kind == "word" and not g:has_ref(i + 1, i + 2)
+  end }
   -- ("creconfs: new one TVF88AB, B738, target AFR6204, ...": the new aircraft of a conflict set up before it is
   -- its intruder, no creation of its own)
   rule { "new", false, when = function(g, i)
@@ -1251,7 +1255,26 @@ return function(intent, rule, words)
   rule { "delete deleted remove removed", false, prev = { 1, "gets get got" },
          when = function(g, i) return not g:has_ref(math.max(1, i - 5), i, "aircraft") end }
   -- ("skip LANAK, route direct TLA": the direct-to passes it; no deletion)
-  local function no_direct(g, i) return not g:word(i, "skip") or not g:followed_by(i, 8, "direct directly dct straight") end
+  -- ("route direct LAM, he can skip BRAIN": a direct-to said before it, to a waypoint that an aircraft named flies
+  -- after the one skipped, passes it too; a waypoint after the direct's is still left out of the route)
+  local function passed_by_direct(g, i)
+    local skipped = g:refs_in(i + 1, i + 2, "waypoint")[1]
+    for d = math.max(1, i - 8), i - 1 do
+      local target = skipped and g:word(d, "direct directly dct straight") and g:refs_in(d + 1, math.min(d + 4, i), "waypoint")[1]
+      for _, r in ipairs(target and g:refs_in(1, #g.t + 1, "aircraft") or {}) do
+        local seen = false
+        for _, name in ipairs(r.exists and g:state(r.name).route or {}) do
+          if name:upper() == target.name:upper() then break end
+          seen = seen or name:upper() == skipped.name:upper()
+        end
+        if seen then return true end
+      end
+    end
+    return false
+  end
+  local function no_direct(g, i)
+    return not g:word(i, "skip") or not (g:followed_by(i, 8, "direct directly dct straight") or passed_by_direct(g, i))
+  end
   rule { "remove delete del skip", "delwpt", near = { 2, "waypoint wpt wp" }, when = no_direct }
   -- verb-final order: "APJ301 route delete all", "EVA15 route all clear" delete the whole route,
   -- "ANA25 waypoint HYOGO remove" the waypoint named before the verb
@@ -1350,6 +1373,18 @@ return function(intent, rule, words)
     return r ~= nil and (k == i + 2 or g:word(r.e, "out")) and not g:has_ref(1, #g.t + 1, "type")
   end }
   rule { "take", "delete", near = { 5, "out" } }
+  -- "take Scandinavian one five zero one out of the exercise": a flying aircraft, however long its spoken callsign,
+  -- straight after the verb ("the" between), "out" straight after it, and then nothing in its clause or "of" the
+  -- exercise (lexicon.presence_places, @sim: "out of the hold" is no deletion)
+  rule { "take", "delete", when = function(g, i)
+    local k = g:word(i + 1, "the") and i + 2 or i + 1
+    local r = g:refs_in(k, k + 1, "aircraft")[1]
+    if not (r ~= nil and r.b == k and r.exists and g:word(r.e, "out")) then return false end
+    local o = r.e + 1
+    if not g.t[o] or g.t[o].kind == "punct" then return true end
+    o = g:word(o + 1, "the this our") and o + 2 or o + 1
+    return g:word(r.e + 1, "of") and g:word(o, "@presence_places @sim") or false
+  end }
 
   -- route
   rule { "proceed", false, near = { 3, "heading" } }

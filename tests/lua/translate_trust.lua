@@ -13021,3 +13021,109 @@ do
     check_eq(ex("move the Swiftair until over the VOR CJN"), "MOVE SWT45 CJN")
   end
 end
+-- Cycle 51 (f136): an aircraft named as the object of "got" ("I've got the KLM above at FL240") is described, its
+-- level no instruction to it; an instruction given to it after the description is still read or asked
+do
+  local _, ex = scene({ "CRE BAW31 A320 52 4 090 FL180 280", "CRE KLM12 B738 52.2 4.2 270 FL240 280" })
+  check_eq(ex("BAW31, climb FL220 only, I've got the KLM above at two four zero and he's descending."),
+    "ALT BAW31 FL220")
+  check_eq(ex("BAW31 climb FL220, we've got KLM12 at FL240."), "ALT BAW31 FL220")
+  check_eq(ex("I've got KLM12 at FL240, climb him FL260"), "ALT KLM12 FL260")
+  asked(ex("I've got KLM12 at FL240."), "a description alone instructs nobody")
+end
+
+-- Cycle 51 (f136): "not just" / "not only" adds what follows to the rest, no negation: "use vertical speed too, not
+-- just heading" switches vertical resolutions on; a plain "not" still switches them off, "only vertical" asks
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL200 250" })
+  check_eq(ex("let the resolutions use vertical speed as well, not only heading and speed"), "RMETHV V/S")
+  check_eq(ex("resolutions may use vertical too, not just horizontal manoeuvres"), "RMETHV V/S")
+  check_eq(ex("the resolutions should not use vertical speed"), "RMETHV OFF")
+  asked(ex("resolutions should use vertical only"), "no vertical-only method")
+end
+
+-- Cycle 51 (f136): "route direct X, he can skip Y" with Y before X on the route: the direct-to passes Y, no
+-- deletion; Y after X on the route is still left out of it
+do
+  local _, ex = navscene({ "CRE UAE9 A388 51.95 1.00 230 FL180 300", "ADDWPT UAE9 BRAIN", "ADDWPT UAE9 LAM" },
+    "a waypoint skipped by a direct-to")
+  if ex then
+    check_eq(ex("UAE9, route direct LAM, he can skip BRAIN, it's a shortcut."), "DIRECT UAE9 LAM")
+    check_eq(ex("UAE9 direct BRAIN, then skip LAM on the route"), "DIRECT UAE9 BRAIN ; DELWPT UAE9 LAM")
+  end
+end
+
+-- Cycle 51 (f136): a condition said after an instruction, "and once he's at FL280, Mach .78", "and once he's
+-- passing FL110, left heading 160", "and when he's got two fifty, descend": the value after it waits for it
+do
+  local _, ex = scene({ "CRE BAW31 A320 52 4 090 FL180 280" })
+  check_eq(ex("BAW31 climb FL330, and once he's at FL300, Mach point seven eight"),
+    "ALT BAW31 FL330 ; ATALT BAW31 FL300 SPD BAW31 M0.78")
+  check_eq(ex("BAW31 descend FL100, and once he's passing FL140, right heading 200"),
+    "ALT BAW31 FL100 ; ATALT BAW31 FL140 HDG BAW31 200 RIGHT")
+  check_eq(ex("BAW31 reduce speed 240 knots, and when he's got two forty, descend FL120"),
+    "SPD BAW31 240 ; ATSPD BAW31 240 ALT BAW31 FL120")
+  asked(ex("BAW31 descend FL120, and when he's got two forty, reduce speed 220"), "a speed had, never given")
+end
+
+-- Cycle 51 (f136): an aircraft said not to belong in the exercise ("X shouldn't be in this exercise at all; delete
+-- him") is the reason for the deletion that follows; "at all" ending a clause counts no aircraft; the reason alone,
+-- or with another aircraft deleted, is asked
+do
+  local _, ex = scene({ "CRE BAW31 A320 52 4 090 FL180 280", "CRE KLM12 B738 52.2 4.2 270 FL240 280" })
+  check_eq(ex("KLM12 isn't part of this scenario at all, remove it"), "DEL KLM12")
+  check_eq(ex("KLM12 shouldn't be here at all; delete it"), "DEL KLM12")
+  asked(ex("KLM12 shouldn't be in this exercise; delete BAW31"), "another aircraft deleted")
+  asked(ex("KLM12 shouldn't be in this exercise at all"), "a reason with nothing done")
+  asked(ex("delete them all"), "every aircraft deleted is confirmed")
+end
+
+-- Cycle 51 (f136): traffic told "beneath" or "underneath", and an inbound told where it sits, after an instruction:
+-- its level is the other aircraft's; an instructor's forecast opening "it'll"/"he'll" and a reason naming a stack
+-- after a semicolon are remarks
+do
+  local _, ex = scene({ "CRE BAW31 A320 52 4 090 FL180 280", "CRE KLM12 B738 52.2 4.2 270 FL240 280" })
+  check_eq(ex("BAW31 climb FL200, traffic underneath at one six zero."), "ALT BAW31 FL200")
+  check_eq(ex("BAW31 climb FL200, there's an inbound holding at FL210."), "ALT BAW31 FL200")
+  check_eq(ex("BAW31 descend FL150; it'll be tight on the KLM otherwise."), "ALT BAW31 FL150")
+  asked(ex("BAW31 descend FL150; it'll be tight on the KLM at FL140."), "a level in the forecast")
+  asked(ex("BAW31 climb FL200, inbound FL210."), "an inbound's level said bare")
+end
+do
+  local _, ex = navscene({ "CRE BAW31 A320 51.3 0.0 090 FL180 280" }, "a stack named in a reason")
+  if ex then
+    check_eq(ex("BAW31 turn left heading 300; we need him well clear of the BIG stack."), "HDG BAW31 300 LEFT")
+    asked(ex("BAW31 turn left heading 300; we need him well clear of BIG."), "a place with no reason word")
+  end
+end
+
+-- Cycle 51 (f136): a new aircraft's spoken callsign whose first digit the matcher gave a flying aircraft
+-- ("Speedbird seven | seven two Kilo" beside BAW97M) keeps the letters spelled after its flight number
+do
+  local _, ex = scene({ "CRE BAW97M A319 51.20 -0.10 360 FL080 220" })
+  check_eq(ex("Create Speedbird Seven Seven Two Kilo, an A320, at 51 0 heading 135, FL130, 260 knots."),
+    "CRE BAW772K A320 51 0 135 FL130 260")
+  check_eq(ex("Create Speedbird Seven Four One Lima Mike, an A320, at 51 0 heading 135, FL130, 260 knots."),
+    "CRE BAW741LM A320 51 0 135 FL130 260")
+  check_eq(ex("Create Speedbird Seven Seven Two, an A320, at 51 0 heading 135, FL130, 260 knots."),
+    "CRE BAW772 A320 51 0 135 FL130 260")
+end
+
+-- Cycle 51 (f136): "take <aircraft> out of the exercise" deletes it, however long its spoken callsign; out of
+-- anything else ("out of the hold") is no deletion
+do
+  local _, ex = scene({ "CRE SAS1501 A20N 51.56 -0.10 180 7000 230", "CRE BAW97M A319 51.20 -0.10 360 FL080 220" })
+  check_eq(ex("Take Scandinavian One Five Zero One out of the scenario, please."), "DEL SAS1501")
+  check_eq(ex("take Scandinavian One Five Zero One out"), "DEL SAS1501")
+  asked(ex("take Scandinavian One Five Zero One out of the hold"), "a hold left, no deletion")
+end
+
+-- Cycle 51 (f136): one word describing a new fix between "new" and its noun ("define a new training point, TRN3,
+-- at ...") is no new aircraft; a fix with no name is still asked
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL200 250" })
+  check_eq(ex("Define a new training point, TP9, at fifty one decimal five north, zero decimal two east."),
+    "DEFWPT TP9 51.5 0.2")
+  check_eq(ex("define a new reporting waypoint RP7 at 52.1 4.3"), "DEFWPT RP7 52.1 4.3")
+  asked(ex("Define a new training point at fifty one decimal five north, zero decimal two east."), "no name")
+end
