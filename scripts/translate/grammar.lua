@@ -9596,7 +9596,10 @@ end
 -- two or three words run together (four or five letters, no punctuation between) are one: a word squawk
 -- does not know that is such a fix near the traffic, or one on an aircraft's route.
 local PLACE_SLOTS = { add = true, append = true, insert = true, dct = true, dtc = true, drct = true, direct = true,
-  after = true, before = true, via = true, over = true, cross = true, at = true, ["then"] = true }
+  after = true, before = true, via = true, over = true, cross = true, at = true, ["then"] = true,
+  -- (where a limit ends, what a distance is from and what vectors lead to: "spd 250 til ccc", "20 nm from dca",
+  -- "hdg 210 vctr alb")
+  ["until"] = true, till = true, from = true, vectors = true, vector = true, vctr = true, vect = true, vects = true }
 local TYPED_PLACE_NM = 250
 -- the slots of PLACE_SLOTS that are a place's verb: a word straight after one that squawk knows only as
 -- another word's inflection ("ezy45 add echos", ECHOS; "echo" is a command) is read as a place too

@@ -558,13 +558,15 @@ return {
             { word = "expedite", prev = "#number", next = "#end" } },
     hvy = { word = "heavy" }, adn = { word = "and" },
     -- (US en-route shorthand: "tl 20 trfc" traffic; "rchg fl240 spd 250", "lvg fl270 spd 270" a level reached or
-    -- left; "fph" fly present heading (after no number: "1800 fph" is a slip of fpm); "all acft"; "20 rt" a turn's side after its degrees; "corr" correction;
+    -- left; "vctr alb" vectors; "whats ur alt" your; "fph" fly present heading (after no number: "1800 fph" is a slip of fpm); "all acft"; "20 rt" a turn's side after its degrees; "corr" correction;
     -- "ff 1 hr"; "5 fnl" final; "trls off" the trails; "mv" move, opening the line)
     trfc = { word = "traffic" }, rchg = { word = "reaching" }, lvg = { word = "leaving" },
     fph = { word = "fly present heading", not_prev = "#number" }, acft = { word = "aircraft" },
     rt = { word = "right", prev = "#number" }, lt = { word = "left", prev = "#number" },
     corr = { word = "correction" }, hr = { word = "hour", prev = "#number" }, hrs = { word = "hours", prev = "#number" },
     fnl = { word = "final" }, trls = { word = "trails" }, mv = { word = "move", prev = "#start" },
+    vctr = { word = "vectors" }, vect = { word = "vectors" }, vects = { word = "vectors" },
+    ur = { word = "your", prev = "whats what's what is say report" },
     -- ("bel3qt tgt fl200 vs 1500": the level a climb or descent targets; "tgt ezy503" in a conflict set up)
     tgt = { word = "target" },
     -- ("crecon dlh602 a320 tgt ezy503 dpsi 180 ...": CRECONFS typed short)
@@ -1290,7 +1292,8 @@ return {
     -- ("250 kts till 10 dme", a point squawk cannot place: R51) are asked
     { what = "limits that end at a distance", words = "until till", own_clause = true,
       near = { "3", "4", "5", "6", "three", "four", "five", "six" }, window = 1,
-      and_near = { { "dme", "miles", "mile", "nm" }, 2 }, after_instruction = true,
+      -- ("til 5 fnl": a count straight before "final" is its miles, the unit left out as on a strip)
+      and_near = { { "dme", "miles", "mile", "nm", "final" }, 2 }, after_instruction = true,
       last = "dme miles mile nm final on out from touchdown threshold the , cleared for ils localizer localiser "
         .. "approach runway rwy l r c" },
     -- "reduce 160 knots to four DME", "speed 180 to 5 miles final": "to" for "until" before the same limit, its
