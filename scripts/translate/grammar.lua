@@ -1229,7 +1229,7 @@ for abbr, readings in pairs(lexicon.typed_abbreviations) do
   for _, a in ipairs(readings.word and { readings } or readings) do
     table.insert(ABBREVIATIONS[abbr], { word = a.word, next = a.next and word_set(a.next, 1),
       prev = a.prev and word_set(a.prev, 1), not_prev = a.not_prev and word_set(a.not_prev, 1),
-      after_next = a.after_next and word_set(a.after_next, 1) })
+      after_next = a.after_next and word_set(a.after_next, 1), hundreds = a.hundreds })
   end
 end
 local function typed_abbreviations(text)
@@ -1250,7 +1250,13 @@ local function typed_abbreviations(text)
     if set["#start"] and (k == 0 or (toks[k] and toks[k]:match("[,;:.!]$"))) then return true end
     if set["#end"] and (toks[k] == nil or toks[k - 1]:match("[,;:.!]$")) then return true end
     return w ~= nil and (set[w] or (set["#number"] and (w:match("^%d") or w:match("^fl%d")) ~= nil)
-      or (set["#place"] and toks[k]:match("^%u%u%u%u?%u?%p*$") ~= nil))
+      or (set["#place"] and toks[k]:match("^%u%u%u%u?%u?%p*$") ~= nil)
+      or (set["#name"] and w:match("^%a%a%a?%a?%a?$") ~= nil))
+  end
+  -- (a level change's verb typed short, `hundreds`: two typed digits of 30 to 99 after it are hundreds of feet)
+  local function in_hundreds(k)
+    local digits, punct = (toks[k] or ""):match("^([3-9]%d)(%p*)$")
+    if digits then toks[k] = tostring(tonumber(digits) * 100) .. " ft" .. punct end
   end
   local changed = false
   for k, w in ipairs(toks) do
@@ -1261,6 +1267,7 @@ local function typed_abbreviations(text)
       if (not a.next or fits(a.next, k + 1)) and (not a.prev or fits(a.prev, k - 1))
           and (not a.after_next or fits(a.after_next, k + 2)) and not (a.not_prev and fits(a.not_prev, k - 1)) then
         toks[k], changed = a.word .. punct, true
+        if a.hundreds and punct == "" then in_hundreds(k + 1) end
         break
       end
     end
@@ -9640,7 +9647,10 @@ end
 -- two or three words run together (four or five letters, no punctuation between) are one: a word squawk
 -- does not know that is such a fix near the traffic, or one on an aircraft's route.
 local PLACE_SLOTS = { add = true, append = true, insert = true, dct = true, dtc = true, drct = true, direct = true,
-  after = true, before = true, via = true, over = true, cross = true, at = true, ["then"] = true }
+  after = true, before = true, via = true, over = true, cross = true, at = true, ["then"] = true,
+  -- (where a limit ends, what a distance is from and what vectors lead to: "spd 250 til ccc", "20 nm from dca",
+  -- "hdg 210 vctr alb")
+  ["until"] = true, till = true, from = true, vectors = true, vector = true, vctr = true, vect = true, vects = true }
 local TYPED_PLACE_NM = 250
 -- the slots of PLACE_SLOTS that are a place's verb: a word straight after one that squawk knows only as
 -- another word's inflection ("ezy45 add echos", ECHOS; "echo" is a command) is read as a place too

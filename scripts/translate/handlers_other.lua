@@ -3443,6 +3443,11 @@ return function(H, f, compass)
     local set = self.t[s.trig + 1] and self.t[s.trig + 1].raw == ":" and 1 or 0
     if not q and self.t[s.trig].raw:upper() == "FF" and plain and plain.b == s.trig + 1 + set then
       self:take(plain)
+      -- ("ff 5", "ff 20": under half a minute, a count of minutes with the unit left out as likely as seconds)
+      if plain.value > 0 and plain.value < L.ff_bare_min_s then
+        return self:need(string.format("For how long should the simulation fast-forward: %s seconds or %s minutes? "
+          .. "Please give the unit.", f.num(plain.value), f.num(plain.value)))
+      end
       return self:emit("FF " .. f.num(plain.value))
     end
     -- "speed the simulation up by a factor of ten": a rate, no duration
@@ -3507,6 +3512,12 @@ return function(H, f, compass)
       return self:emit("FF")
     end
     if q.kind == "time" then
+      -- "fast forward to 1 hour": "to" before the time names a time on the clock as likely as a duration, asked;
+      -- "to 15 minutes from now", "to 30 minutes later" say the duration
+      if self:word(q.b - 1, "to") and q.b - 1 > s.trig and not self:word(q.e, "from later ahead hence") then
+        return self:need(string.format("Should the simulation fast-forward for %s, or until the simulation clock reaches %s?",
+          self:raw(q.b, q.e), self:raw(q.b, q.e)))
+      end
       -- "2 min 30 s": times in a row add up
       local total, last = 0, nil
       for _, t in ipairs(self:quantities(q.b, s.e)) do

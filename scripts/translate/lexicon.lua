@@ -499,17 +499,24 @@ return {
   -- "fl180" too; "#place": see pd; "#start": the line's first word or one after punctuation, for `prev`; "#end":
   -- none, the abbreviation closing its clause, for `next`);
   -- `after_next`, the same of the word after next (a callsign between: "trn hop7 rgt 20"); a list of such
-  -- readings is tried in order; `not_prev`, words that keep it as typed. Elsewhere it stays as typed ("direct
+  -- readings is tried in order; `not_prev`, words that keep it as typed; `hundreds`, a verb of a level change
+  -- typed short, after which two typed digits of 30 to 99 are hundreds of feet as on a flight strip ("dn 60":
+  -- 6000 ft; "dn 12", 1200 ft or 12000 with a digit lost, stays as typed, and asked); "#name", for `next`, a
+  -- word of two to five letters in any case (a fix's ident typed in lower case). Elsewhere it stays as typed ("direct
   -- TRN" is Turnberry, "trail red" a colour, "Red Cap" an airline).
   typed_abbreviations = {
     expd = { word = "expedite" }, expdt = { word = "expedite" }, til = { word = "until" },
     maint = { word = "maintain", next = "#number fl flight speed spd heading hdg altitude alt level present own" },
     mnt = { word = "maintain", next = "#number fl flight speed spd heading hdg altitude alt level present own" },
     -- (the vowels left out of a level change: "dsnd 5000", "clmb fl240")
-    dsnd = { word = "descend", next = "#number fl flight level to" },
-    dscnd = { word = "descend", next = "#number fl flight level to" },
-    dsc = { word = "descend", next = "#number fl flight level to" },
-    clmb = { word = "climb", next = "#number fl flight level to" },
+    dsnd = { word = "descend", next = "#number fl flight level to", hundreds = true },
+    dscnd = { word = "descend", next = "#number fl flight level to", hundreds = true },
+    dsc = { word = "descend", next = "#number fl flight level to", hundreds = true },
+    -- (US en-route shorthand, "dn fl240", "dn 110": descend; after a rate's or a speed's name, "vs dn 1500",
+    -- it is "down", and stays as typed)
+    dn = { word = "descend", next = "#number fl flight level to", not_prev = "vs rate speed spd mach turn",
+           hundreds = true },
+    clmb = { word = "climb", next = "#number fl flight level to", hundreds = true },
     trn = { { word = "turn", next = "left right lft rt lt rgt l r hdg heading" },
             { word = "turn", prev = "#start", after_next = "left right lft rt lt rgt l r hdg heading" } },
     -- (an experimenter's shorthand of the command words: "head 030", "incr 280", "rm ooabc", "del rte",
@@ -527,8 +534,8 @@ return {
     tl = { word = "turn left", next = "#number hdg heading" }, tr = { word = "turn right", next = "#number hdg heading" },
     fh = { word = "fly heading", next = "#number" },
     rsm = { word = "resume", next = "own normal nav navigation route speed" }, ctc = { word = "contact" },
-    dm = { word = "descend and maintain", next = "#number fl flight" },
-    cm = { word = "climb and maintain", next = "#number fl flight" },
+    dm = { word = "descend and maintain", next = "#number fl flight", hundreds = true },
+    cm = { word = "climb and maintain", next = "#number fl flight", hundreds = true },
     recl = { word = "recleared", next = "#number fl flight" }, rv = { word = "radar vectors", next = "hdg heading" },
     blw = { word = "below", next = "#number fl flight" }, abv = { word = "above", next = "#number fl flight" },
     red = { word = "reduce", next = "#number spd speed to", not_prev = "trail colour color a in" },
@@ -536,16 +543,30 @@ return {
     -- navaid or airport typed as its ident: "pd FIGGY" is "proceed direct FIGGY", "pd figgy" stays as typed)
     pd = { { word = "pilot's discretion", prev = "desc descend dsc dscnd dsnd climb clb clmb",
              next = "#number fl flight" },
-           { word = "proceed direct", next = "#place", not_prev = "desc descend dsc dscnd dsnd climb clb clmb" } },
+           { word = "proceed direct", next = "#place", not_prev = "desc descend dsc dscnd dsnd climb clb clmb" },
+           -- (after the level or the rate it qualifies, "dn fl300 pd", "dm 140 at 2000 fpm pd")
+           { word = "pilot's discretion", prev = "#number fpm ft feet" } },
     -- (FAA typed shorthand: "rs 210" reduce speed; "exp ILS" expect; "hvy" heavy; "8 thsnd" eight thousand;
     -- "adn" and)
     rs = { word = "reduce speed", next = "#number to" },
     -- ("SAS902 x NAXEL @ FL200": "x" before a fix's ident is "cross")
-    x = { word = "cross", next = "#place" },
+    x = { { word = "cross", next = "#place" },
+          -- (a fix typed in lower case, then the value to cross it at: "x lendy at 110", "x alb 110")
+          { word = "cross", next = "#name", after_next = "at #number" } },
     -- (and after a level or value closing its clause, "desc fl200 exp", expedite)
     exp = { { word = "expect", next = "ils rnav vis visual loc rwy runway approach app #number" },
             { word = "expedite", prev = "#number", next = "#end" } },
     hvy = { word = "heavy" }, adn = { word = "and" },
+    -- (US en-route shorthand: "tl 20 trfc" traffic; "rchg fl240 spd 250", "lvg fl270 spd 270" a level reached or
+    -- left; "vctr alb" vectors; "whats ur alt" your; "fph" fly present heading (after no number: "1800 fph" is a slip of fpm); "all acft"; "20 rt" a turn's side after its degrees; "corr" correction;
+    -- "ff 1 hr"; "5 fnl" final; "trls off" the trails; "mv" move, opening the line)
+    trfc = { word = "traffic" }, rchg = { word = "reaching" }, lvg = { word = "leaving" },
+    fph = { word = "fly present heading", not_prev = "#number" }, acft = { word = "aircraft" },
+    rt = { word = "right", prev = "#number" }, lt = { word = "left", prev = "#number" },
+    corr = { word = "correction" }, hr = { word = "hour", prev = "#number" }, hrs = { word = "hours", prev = "#number" },
+    fnl = { word = "final" }, trls = { word = "trails" }, mv = { word = "move", prev = "#start" },
+    vctr = { word = "vectors" }, vect = { word = "vectors" }, vects = { word = "vectors" },
+    ur = { word = "your", prev = "whats what's what is say report" },
     -- ("bel3qt tgt fl200 vs 1500": the level a climb or descent targets; "tgt ezy503" in a conflict set up)
     tgt = { word = "target" },
     -- ("crecon dlh602 a320 tgt ezy503 dpsi 180 ...": CRECONFS typed short)
@@ -1289,7 +1310,8 @@ return {
     -- ("250 kts till 10 dme", a point squawk cannot place: R51) are asked
     { what = "limits that end at a distance", words = "until till", own_clause = true,
       near = { "3", "4", "5", "6", "three", "four", "five", "six" }, window = 1,
-      and_near = { { "dme", "miles", "mile", "nm" }, 2 }, after_instruction = true,
+      -- ("til 5 fnl": a count straight before "final" is its miles, the unit left out as on a strip)
+      and_near = { { "dme", "miles", "mile", "nm", "final" }, 2 }, after_instruction = true,
       last = "dme miles mile nm final on out from touchdown threshold the , cleared for ils localizer localiser "
         .. "approach runway rwy l r c" },
     -- "reduce 160 knots to four DME", "speed 180 to 5 miles final": "to" for "until" before the same limit, its
@@ -1868,6 +1890,9 @@ return {
   reached_verbs = { "is", "it's", "you're", "he's", "she's", "they're", "are", "gets", "get" },
   -- the commands that take a time said (seconds; G:uncarried): a time is carried by one of their numbers only
   time_commands = { "DELAY", "FF", "DT", "DTLOOK", "CRECONFS", "TRAIL" },
+  -- [s] the least fast-forward read from "ff" and a number with no unit ("ff 30", "ff 300"); below it ("ff 5",
+  -- "ff 20") the number is as likely minutes with the unit left out, and the unit is asked
+  ff_bare_min_s = 30,
   -- a wait said before an instruction (handlers' at_time, DELAY): the verbs that say it ("wait 60 seconds then
   -- ...", "wait for 2 minutes and ...", "after waiting a minute"), the verbs said with an object before the time
   -- ("give it sixty seconds and then ...", "allow him 2 minutes, then ...") and those objects, the words that join

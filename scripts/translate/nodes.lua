@@ -506,6 +506,10 @@ function M.typed(state, ctx)
     if typed_kt and typed_kt >= 1 and typed_kt < lexicon.min_airborne_kt then return "english" end
     local typed_fpm = name == "VS" and tonumber(c:match("^%S+[%s,]+%S+[%s,]+([%-%+]?%d+)%s*$"))
     if typed_fpm and typed_fpm ~= 0 and math.abs(typed_fpm) < lexicon.min_typed_fpm then return "english" end
+    -- ("ff 5": a fast-forward in lower case shorter than lexicon.ff_bare_min_s is English, seconds or minutes
+    -- asked there; "FF 5" in capitals stays TrafScript, five seconds)
+    local typed_s = name == "FF" and verb ~= verb:upper() and tonumber(c:match("^%S+[%s,]+(%d+%.?%d*)%s*$"))
+    if typed_s and typed_s > 0 and typed_s < lexicon.ff_bare_min_s then return "english" end
     -- a heading beyond 360 is wrapped by TrafScript but asked about in English
     local h = canonical_name(c:match("^([%w_]+)")) == "HDG" and tonumber(c:match("^[%w_]+[%s,]+[%w_]+[%s,]+([%d%.]+)"))
     if h and h > 360 then return "english" end

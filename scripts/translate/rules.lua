@@ -1998,7 +1998,7 @@ return function(intent, rule, words)
   -- scenario restarted is a reset (confirmed first)
   rule { "restart start", "op", near = { 3, "clock" } }
   rule { "restart", "reset", near = { 3, "@sim" } }
-  rule { "what how know", "pos", near = { 4, "altitude speed heading position level" } }
+  rule { "what how know", "pos", near = { 4, "altitude speed heading position level alt lvl hdg spd" } }
   -- "what's AC004's current FL": the level flown now, "current" or "present" straight before the abbreviation
   rule { "what", "pos", when = function(g, i)
     local k = g:find_word(i + 1, i + 5, "current present")

@@ -13127,3 +13127,38 @@ do
   check_eq(ex("define a new reporting waypoint RP7 at 52.1 4.3"), "DEFWPT RP7 52.1 4.3")
   asked(ex("Define a new training point at fifty one decimal five north, zero decimal two east."), "no name")
 end
+-- Cycle 51 (f139): US en-route typed shorthand. Abbreviations are lexicon entries read as their words where the
+-- words beside them allow (dn, pd after a level, trfc, rchg, lvg, fph, corr, vctr, "20 lt", "whats ur hdg");
+-- two typed digits of 30 to 99 after a level verb typed short are hundreds of feet, fewer are asked; a
+-- lower-case "ff" under half a minute asks seconds or minutes, and "fast forward to <time>" asks clock or span
+do
+  local _, ex = scene({ "CRE SWA12 B737 41.30 -73.60 090 FL230 280", "CRE N55AB PA28 41.10 -73.40 180 5000 110" })
+  check_eq(ex("swa12 dn fl190 rs 250"), "ALT SWA12 FL190 ; SPD SWA12 250")
+  check_eq(ex("swa12 dn 70"), "ALT SWA12 7000")
+  asked(ex("swa12 dn 14"), "two typed digits under 30 after 'dn': 1400 or 14000 ft")
+  check_eq(ex("swa12 dn fl210 pd"), "ALT SWA12 FL210")
+  check_eq(ex("n55ab cm 70 pd"), "ALT N55AB 7000")
+  check_eq(ex("swa12 tr 30 trfc"), "HDG SWA12 120 RIGHT")
+  check_eq(ex("swa12 dn fl200, rchg spd 240"), "ALT SWA12 FL200 ; ATALT SWA12 FL200 SPD SWA12 240")
+  check_eq(ex("swa12 dn fl180 lvg fl210 spd 260"), "ALT SWA12 FL180 ; ATALT SWA12 FL210 SPD SWA12 260")
+  check_eq(ex("n55ab fph"), "HDG N55AB 180")
+  check_eq(ex("swa12 25 lt"), "HDG SWA12 65 LEFT")
+  check_eq(ex("n55ab whats ur hdg"), "POS N55AB")
+  check_eq(ex("n55ab 90 kts til 4 fnl"), "SPD N55AB 90")
+  asked(ex("n55ab 90 kts til 9 fnl"), "a limit further out than the final approach's 6 miles")
+  asked(ex("swa12 spd dn 20"), "'dn' after a speed's name is no descent")
+  check_eq(ex("ff 45"), "FF 45")
+  check_eq(ex("FF 8"), "FF 8")
+  check_eq(ex("ff 2 hrs"), "FF 7200")
+  asked(ex("ff 8"), "eight seconds or eight minutes")
+  asked(ex("fast forward to 2 hrs"), "a time on the clock or a duration")
+end
+do
+  local _, ex = navscene({ "CRE SWA12 B737 41.30 -73.60 090 FL230 280", "ADDWPT SWA12 SAX",
+    "CRE N55AB PA28 41.10 -73.40 180 5000 110" }, "lower-case idents in US shorthand")
+  if ex then
+    check_eq(ex("swa12 x sax at fl200"), "AT SWA12 SAX ALT FL200")
+    asked(ex("swa12 x sax 200"), "a crossing with a bare three-digit number")
+    check_eq(ex("n55ab hdg 200 vctr cmk"), "HDG N55AB 200")
+  end
+end
