@@ -1016,6 +1016,9 @@ return {
   -- "speed 270 is ok, descend FL150", "hdg 180 ist gut, just climb FL350" (the value, a copula or none, an
   -- approval, words that round it off, then the clause's end or another instruction); "keep FL370, just
   -- heading 150", "keep FL350 but slow down" (a verb of `verbs` before the value, a word of `only` or `but` after it)
+  -- words beside lexicon.kept_as_is's that keep an aircraft taken back as it is ("..., sorry, I meant the Ryanair,
+  -- the Eurowings can stay like it is": translate/handlers.lua m:aircraft_said_instead)
+  said_instead_kept = { "can", "may", "should", "stay", "like", "unchanged", "be" },
   kept_as_is = { copulas = { "is", "are", "'s", "looks", "look", "seems", "stays", "remains", "ist", "bleibt" },
                  approvals = { "fine", "ok", "okay", "good", "alright", "perfect", "great", "gut", "unchanged" },
                  -- (a copula that says it alone: "FL180 stays, speed 250")

@@ -12944,3 +12944,17 @@ do
   check_eq(ex("delay half a minute, then KLM12 climb FL300"), "DELAY 30 ALT KLM12 FL300")
   asked(ex("delay a couple of minutes then KLM12 climb FL300"), "a loose time after 'delay'")
 end
+
+-- Cycle 51 (f134): an aircraft said in place of the one instructed, after the instruction ("climb FL280, no, sorry,
+-- I meant DLH2EC", "? No, sorry, I meant the Eurowings, not the Condor", "..., the Eurowings can stay like it is")
+-- gets the instruction, the first none; other words after it with no instruction are asked
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL200 250", "CRE AFR34 A320 52.3 4.3 180 FL220 260",
+    "CRE BAW56 A319 52.5 4.6 270 FL240 250" })
+  check_eq(ex("Please let KLM12 climb to FL300, no, sorry, I meant AFR34."), "ALT AFR34 FL300")
+  check_eq(ex("Could you turn KLM12 onto heading 200? No, sorry, I meant AFR34, not KLM12."), "HDG AFR34 200")
+  check_eq(ex("Let KLM12 fly heading 200. Sorry, I meant AFR34, KLM12 can stay as it is."), "HDG AFR34 200")
+  check_eq(ex("turn KLM12 heading 200 -- sorry, AFR34 and BAW56"), "HDG AFR34 200 ; HDG BAW56 200")
+  asked(ex("turn KLM12 heading 200, sorry, I meant AFR34, BAW56 can stay like it is"), "a third aircraft kept")
+  check_eq(ex("turn KLM12 heading 200, sorry, AFR34 too"), "HDG KLM12 200 ; HDG AFR34 200")
+end
