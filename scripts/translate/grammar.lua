@@ -2547,7 +2547,27 @@ function G:bound_condition(k)
   return self:word(x, "@condition")
 end
 
--- A condition said after its instruction, ending the request ("reduce the SAS to 250 knots once it passes
+-- Where a condition opened at k and said after its instruction ends, its value's quantity ending at e: at the clause
+-- after a comma or "and" that holds an instruction and a word saying it runs at once (lexicon.at_once_words:
+-- "descend FL320 once it has slowed to 260 knots, and reduce to 260 knots now"), else the request's end. With no
+-- such word ("descend FL320 once it has slowed to 260 knots, and turn left heading 200"), which instruction waits
+-- is asked (self.ask).
+function G:condition_closed(k, e)
+  local x = self.t[e] and self.t[e].text == "," and e + 1 or e
+  if self:word(x, "and") then x = x + 1 end
+  if x > e and self:any_instruction_in(x, #self.t + 1) then
+    if self:word_in(x, #self.t + 1, "@at_once_words") then return x end
+    local b = k
+    while b > 1 and self.t[b - 1].kind ~= "punct" do b = b - 1 end
+    if self:any_instruction_in(b, k) then
+      self.ask = string.format("Which should wait for '%s': '%s' or '%s'?", self:raw(k, e),
+        self:raw(b, k), (self:raw(x, #self.t + 1):gsub(" ([,.;:])", "%1")))
+    end
+  end
+  return #self.t + 1
+end
+
+-- A condition said after its instruction, ending the request or a clause said to run at once (G:condition_closed) ("reduce the SAS to 250 knots once it passes
 -- flight level 100 on the way down", "slow EZY45 to 220 when it reaches FL120", "250 knots by the time it's
 -- passing FL200", "by the time it gets to FL200"): "once", "when" or "by the time", "it" or the aircraft, a
 -- verb of reaching, then a level and words with no value, aircraft or instruction of their own to the end;
@@ -2556,12 +2576,13 @@ end
 -- to 230"). Returns the position of the condition's first word, the value's quantity and the condition
 -- command ("ATALT" or "ATSPD"), or nil; "by the time" with no level so read is asked about (self.ask).
 function G:trailing_level_condition()
-  if not self:said("by once when after") then return nil end
+  if not self:said("by once when after soon") then return nil end
   for k = 2, #self.t do
     local by_time = self:word(k, "by") and self:word(k + 1, "the") and self:word(k + 2, "time")
     local by_level = self:word(k, "by") and not by_time
-    if self:word(k, "once when after") or by_time or by_level then
-      local v = by_time and k + 3 or k + 1
+    local opened = self:word(k, "once when after") and k + 1 or self:word(k, "as") and self:condition_word(k)
+    if opened or by_time or by_level then
+      local v = by_time and k + 3 or opened or k + 1
       local subject = v
       if self:word(v, "it it's he he's she she's you you're you've") or self:has_ref(v, v + 1, "aircraft") then
         v = v + 1
@@ -2583,9 +2604,10 @@ function G:trailing_level_condition()
       -- ("descend to 8000 once it has slowed to 230", "... once it's slowed to 230": a speed, ATSPD)
       if reached and slowed and not by_time then
         local q = first
+        local ce = self:condition_closed(k, q.e)
         if (q.kind == "speed" or q.kind == "mach" or (q.kind == "plain" and q.value < 1000))
-            and #self:quantities(q.e, #self.t + 1) == 0 and not self:any_instruction_in(q.e, #self.t + 1) then
-          return k, q, "ATSPD"
+            and #self:quantities(q.e, ce) == 0 and not self:any_instruction_in(q.e, ce) then
+          return k, q, "ATSPD", ce
         end
         return nil
       end
@@ -2594,11 +2616,12 @@ function G:trailing_level_condition()
         local q = self:quantities(v + 1, #self.t + 1)[1]
         if q and q.b == self:skip_fillers(v + 1) and (q.kind == "alt" or (q.kind == "plain" and q.value >= 1000 and not by_level)) then
           if by_level and not self:speed_before_level(k) then return nil end
-          for x = q.e, #self.t do
+          local ce = by_level and #self.t + 1 or self:condition_closed(k, q.e)
+          for x = q.e, ce - 1 do
             if self:intent_at(x) and not self:word(x, "@up @down") or self:has_ref(x, x + 1, "aircraft") then return nil end
           end
-          if #self:quantities(q.e, #self.t + 1) > 0 then return nil end
-          return k, q, "ATALT"
+          if #self:quantities(q.e, ce) > 0 then return nil end
+          return k, q, "ATALT", ce
         end
       end
       -- ("250 knots by the time it's level": a moment squawk cannot wait for, asked about)
@@ -10379,7 +10402,8 @@ function M.translate(text, world)
   local cond, rest = g:condition()
   if not g.ask then
     local k, level, kind = nil, nil, nil
-    if not cond then k, level, kind = g:trailing_level_condition() end
+    local ce  -- (the end of a trailing condition, the clause after it run at once: G:condition_closed)
+    if not cond then k, level, kind, ce = g:trailing_level_condition() end
     -- (a trailing condition holds the instruction of its own clause: the one after the last comma, "and"
     -- or "then" before it)
     local clause = rest
@@ -10392,7 +10416,7 @@ function M.translate(text, world)
     if k and not g.ask then
       -- (the condition's words: what the ATALT says)
       g:take(level)
-      g:explain(k, #g.t + 1)
+      g:explain(k, ce)
       local f = handlers.format
       local at = level.kind == "alt" and f.alt(level.value, level.fl) or level.kind == "mach" and f.mach(level.value)
         or f.int(level.value)
@@ -10404,6 +10428,7 @@ function M.translate(text, world)
         end
         g.out[c] = kind .. " " .. id .. " " .. at .. " " .. g.out[c]
       end
+      if ce <= #g.t and not g.ask then g:parse(ce, #g.t + 1) end
     end
     -- ("after DLL descend FL180 and slow to 290": an instruction of the same aircraft after one tied to a waypoint,
     -- itself tied to no place or condition, may wait for the waypoint too or run now: asked, never sent now)

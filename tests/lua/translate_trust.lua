@@ -12958,3 +12958,16 @@ do
   asked(ex("turn KLM12 heading 200, sorry, I meant AFR34, BAW56 can stay like it is"), "a third aircraft kept")
   check_eq(ex("turn KLM12 heading 200, sorry, AFR34 too"), "HDG KLM12 200 ; HDG AFR34 200")
 end
+
+-- Cycle 51 (f134): a condition said after its instruction ("as soon as it has slowed down to 260 knots", "when it has
+-- reached FL380") waits for that instruction alone when the clause after it is said to run at once ("..., and reduce
+-- to 260 knots now"); with no such word, which of the two waits is asked
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL360 290" })
+  check_eq(ex("KLM12 descend to FL320 as soon as it has slowed down to 260 knots, and reduce to 260 knots now"),
+    "ATSPD KLM12 260 ALT KLM12 FL320 ; SPD KLM12 260")
+  check_eq(ex("KLM12 fly Mach 0.78 when it has reached FL380, and climb to FL380 immediately"),
+    "ATALT KLM12 FL380 SPD KLM12 M0.78 ; ALT KLM12 FL380")
+  check_eq(ex("KLM12 descend to FL320 as soon as it has slowed to 260 knots"), "ATSPD KLM12 260 ALT KLM12 FL320")
+  asked(ex("KLM12 descend to FL320 once it has slowed to 260 knots, and turn left heading 200"), "which one waits")
+end
