@@ -2557,8 +2557,10 @@ function G:condition_closed(k, e)
   if self:word(x, "and") then x = x + 1 end
   if x > e and self:any_instruction_in(x, #self.t + 1) then
     if self:word_in(x, #self.t + 1, "@at_once_words") then return x end
+    -- (a condition opening a clause after "and" or "then", "climb FL110 and when passing 8000 feet speed up",
+    -- is the next instruction's)
     local b = k
-    while b > 1 and self.t[b - 1].kind ~= "punct" do b = b - 1 end
+    while b > 1 and self.t[b - 1].kind ~= "punct" and not self:word(b - 1, "and @then_words") do b = b - 1 end
     if self:any_instruction_in(b, k) then
       self.ask = string.format("Which should wait for '%s': '%s' or '%s'?", self:raw(k, e),
         self:raw(b, k), (self:raw(x, #self.t + 1):gsub(" ([,.;:])", "%1")))
