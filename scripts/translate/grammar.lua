@@ -1283,6 +1283,34 @@ local GAIN_LOSE = { gain = 1, lose = -1 }
 -- lexicon.value_names as a set (written_forms: a name glued to its value)
 G.value_name_set = set_of(lexicon.value_names)
 
+-- A number written with a decimal comma, as German and French write one ("47,5 north", "8,5 degrees east", "the
+-- horizontal resolution factor to 1,1"): `whole` (one to three digits) and `part` (one or two) around the comma,
+-- [b, e) in `text`, nothing glued before or after, before a hemisphere (a word of
+-- lexicon.coordinate_axes.hemispheres or its initial) with "degrees" or not, in its range, or after a word of
+-- lexicon.decimal_comma_after and "to", "of" or "at" or none; returns "whole.part", or nil (kept as written:
+-- "41,000", "FL300,250").
+G.decimal_comma_after = set_of(lexicon.decimal_comma_after)
+function G.decimal_comma(text, b, whole, part, e)
+  local glued = text:sub(e):match("^%a+")  -- (only a hemisphere's initial: "50,3N")
+  if #whole > 3 or #part > 2 or text:sub(b - 1, b - 1):match("[%w%.,]") or text:sub(e, e):match("[%d%.,]")
+      or glued and not glued:match("^[NSEWnsew]$") then
+    return nil
+  end
+  local after = text:sub(e):lower():gsub("^%s*", ""):gsub("^°%s*", ""):gsub("^degrees?%s+", "")
+  local word = after:match("^(%a+)")
+  local axis = word and (lexicon.coordinate_axes.hemispheres[word] or (word == "n" or word == "s") and "lat"
+    or (word == "e" or word == "w") and "lon")
+  local hemisphere = axis and tonumber(whole) <= (axis == "lat" and 90 or 180)
+  local before = text:sub(1, b - 1):lower()
+  local noun = before:match("(%a+)%s+%a+%s*$")
+  local joined = before:match("(%a+)%s*$")
+  if hemisphere or G.decimal_comma_after[joined]
+      or (G.decimal_comma_after[noun] and (joined == "to" or joined == "of" or joined == "at")) then
+    return whole .. "." .. part
+  end
+  return nil
+end
+
 local function written_forms(text, world)
   -- (each pattern pass runs through where(): only where `low`, the text in lower case, holds what the
   -- pattern requires, its first argument; a rewrite outside where() sets `low` again)
@@ -1301,6 +1329,8 @@ local function written_forms(text, world)
   -- "@ FL200", "x NAXEL @ 250", "@ 120 s ...": an at sign typed apart before a value or a name is "at"
   where("@", "(%s)@%s*(%w)", "%1at %2")
   where("@", "^@%s*(%w)", "at %1")
+  -- "47,5 north", "8,5 degrees east", "factor to 1,1": a decimal comma (G.decimal_comma) is the point
+  where("%d,%d", "()(%d+),(%d+)()", function(b, whole, part, e) return G.decimal_comma(text, b, whole, part, e) end)
   text = typed_abbreviations(lone_multipliers(tokens.numerals_apart(text, DIGIT_WORDS), world))
   text = hyphened_types(spelled(heard_forms(negated_values(G.readback_reported(readback_heard(self_corrections(G.cancel_corrections(unlabelled(foreign_digits(G.said_whole(text)))))))))))
   low = text:lower()

@@ -753,6 +753,9 @@ return {
   -- a coordinate's axis ("lat", "lon") by the label said before its number ("latitude 41.4 north") and by its
   -- hemisphere's word or letter (grammar.lua G.spoken_coordinates)
   -- (a hemisphere typed as its initial in capitals, "41.4 N", is that word's)
+  -- the nouns of a value that a number written with a decimal comma may follow ("the horizontal resolution factor
+  -- to 1,1"; grammar.lua G.decimal_comma)
+  decimal_comma_after = { "factor", "mach" },
   coordinate_axes = { labels = { latitude = "lat", longitude = "lon" },
                       hemispheres = { north = "lat", south = "lat", east = "lon", west = "lon" } },
   self_correction = { words = { "oh", "no", "wait", "sorry", "actually", "make", "that", "i", "mean", "meant", "uh", "um",

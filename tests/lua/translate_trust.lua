@@ -12971,3 +12971,14 @@ do
   check_eq(ex("KLM12 descend to FL320 as soon as it has slowed to 260 knots"), "ATSPD KLM12 260 ALT KLM12 FL320")
   asked(ex("KLM12 descend to FL320 once it has slowed to 260 knots, and turn left heading 200"), "which one waits")
 end
+
+-- Cycle 51 (f134): a decimal comma ("47,5 north", "8,5 degrees east", "factor to 1,1") is a decimal point before a
+-- hemisphere in its range or after a value's noun; a grouping ("10,000") and a list glued to a level stay as written
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL360 290" })
+  check_eq(ex("Could you move KLM12 to 51,4 north and 3,7 east, please?"), "MOVE KLM12 51.4 3.7")
+  check_eq(ex("define a waypoint WPX at 48,25 N and 7,5 degrees east"), "DEFWPT WPX 48.25 7.5")
+  check_eq(ex("set the vertical resolution factor to 1,2"), "RFACV 1.2")
+  check_eq(ex("KLM12 descend to 10,000 feet"), "ALT KLM12 10000")
+  asked(ex("KLM12 heading 270,5 north of the airway"), "a heading is no latitude")
+end
