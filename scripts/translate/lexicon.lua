@@ -755,7 +755,7 @@ return {
   -- (a hemisphere typed as its initial in capitals, "41.4 N", is that word's)
   -- the nouns of a value that a number written with a decimal comma may follow ("the horizontal resolution factor
   -- to 1,1"; grammar.lua G.decimal_comma)
-  decimal_comma_after = { "factor", "mach" },
+  decimal_comma_after = { "factor" },
   coordinate_axes = { labels = { latitude = "lat", longitude = "lon" },
                       hemispheres = { north = "lat", south = "lat", east = "lon", west = "lon" } },
   self_correction = { words = { "oh", "no", "wait", "sorry", "actually", "make", "that", "i", "mean", "meant", "uh", "um",
