@@ -4665,19 +4665,26 @@ function G:trailing_fix(s)
   if bare then c = bare end
   if c >= s.e or #self:quantities(s.trig, c) == 0 then return nil end
   local k = bare or self:skip_fillers(c + 1)
+  -- ("descend FL200, but only after BETOS", "climb FL300 only when it is over BUMIL": the condition's limiting
+  -- words before it, lexicon.condition_limiting, belong to it)
+  local lead = c
+  while not bare and lead - 1 > s.trig and (self:word(lead - 1, "@condition_limiting") or self.t[lead - 1].text == ",") do
+    lead = lead - 1
+  end
+  while self.t[lead].kind == "punct" do lead = lead + 1 end
   -- ("descend FL250 after Weser", "reduce 250 after WSR": "after" straight after the value of a level, speed,
   -- heading or rate, and the waypoint, its code or a name of the aircraft's route, closing the request;
   -- "expect lower after KURDI" is no such condition, nor ADDWPT's "after")
   if self:word(c, "after") and not self:word(k, "it you passing passes reaching reaches overflying") then
-    if self.u:used(c) or not self:value_before(s, c) then return nil end
+    if self.u:used(c) or not self:value_before(s, lead) then return nil end
     local e = s.e
     while e > k and self.t[e - 1].kind == "punct" and self.t[e - 1].text ~= "," do e = e - 1 end
     local r = self:refs_in(k, e, "waypoint")[1]
-    if r then return r.b == k and r.e == e and { b = c, e = r.e, name = r.name } or nil end
+    if r then return r.b == k and r.e == e and { b = lead, e = r.e, name = r.name } or nil end
     local a = self:refs_in(1, s.trig, "aircraft")
     local now = #a == 1 and self:state(a[1].name)
     local name = now and e > k and e <= k + 2 and self:place_by_name(k, e, now, true)
-    return name and { b = c, e = e, name = name } or nil
+    return name and { b = lead, e = e, name = name } or nil
   end
   if self:word(k, "it you") then k = self:skip_fillers(k + 1) end
   -- ("fl100 when past WYP": typed short, "past" is passing)
@@ -4687,7 +4694,7 @@ function G:trailing_fix(s)
     k = self:skip_fillers(k + 2)
   elseif self:word(k, "gets") and self:word(k + 1, "to") then
     k = self:skip_fillers(k + 2)
-  elseif not (self:word(k, "is it's") and self:word(k + 1, "at")) then
+  elseif not (self:word(k, "is it's") and self:word(k + 1, "at over")) then  -- ("once it is over BUMIL")
     return nil
   else
     k = self:skip_fillers(k + 2)
@@ -4700,7 +4707,7 @@ function G:trailing_fix(s)
   -- framing words only after a comma or "if", closing the request, are courtesy; a value, name or verb is not)
   local opened = self:word(j, "if") or (self.t[j - 1] and self.t[j - 1].text == ",")
   if j < s.e and not (opened and self:framing_only(self:word(j, "if") and j + 1 or j, s.e)) then return nil end
-  return { b = c, e = r.e, name = r.name }
+  return { b = lead, e = r.e, name = r.name }
 end
 
 -- "maintain 250 knots until SULUR then climb FL200", "speed 220 till VAKNX, then reduce 180": the

@@ -590,6 +590,9 @@ return {
   -- happens ("divert to EDDK, at TAU", "send it to MUC, after KERAX": asked; grammar.lua G:diversion_reason)
   diversion_not_reason = { "at", "after", "over", "passing", "abeam", "when", "once", "before", "by", "via",
                            "leaving", "reaching", "until", "till", "in", "on", "then", "and" },
+  -- words that limit an instruction to a condition said after it ("descend FL200, but only after BETOS", "climb
+  -- FL300 only when it is over BUMIL": grammar.lua G:trailing_fix)
+  condition_limiting = { "but", "only", "just" },
   -- words saying an instruction runs at once, closing a condition said after the instruction before ("descend FL320
   -- once it has slowed to 260 knots, and reduce to 260 knots now": grammar.lua G:condition_closed)
   at_once_words = { "now", "immediately", "already" },

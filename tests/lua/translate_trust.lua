@@ -12982,3 +12982,12 @@ do
   check_eq(ex("KLM12 descend to 10,000 feet"), "ALT KLM12 10000")
   asked(ex("KLM12 heading 270,5 north of the airway"), "a heading is no latitude")
 end
+
+-- Cycle 51 (f134): a waypoint condition after its instruction limited by "only" or "but only" ("descend to FL200,
+-- but only after BETOS", "climb FL300 only when it is over BUMIL") starts the instruction there (AT ... DO)
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL250 250", "ADDWPT KLM12 SUGOL", "ADDWPT KLM12 ARTIP" })
+  check_eq(ex("KLM12 should descend to FL200 only after SUGOL."), "AT KLM12 SUGOL DO ALT KLM12 FL200")
+  check_eq(ex("Please let KLM12 climb to FL300, but only when it is over ARTIP."), "AT KLM12 ARTIP DO ALT KLM12 FL300")
+  asked(ex("KLM12 descend to FL200, but EZY45 only after SUGOL"), "another aircraft named")
+end
