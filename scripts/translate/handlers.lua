@@ -2283,6 +2283,9 @@ function m:at_altitude(s)
   -- ("once it is above 8000 feet, accelerate": a bound closing a condition is the level crossed, G:bound_condition)
   local bound = self:find_word(b, a, "@above @below")
   if bound < a and self:bound_condition(bound) then a = bound end
+  -- ("when it is on FL260 accelerate", German "auf": "on" after a form of "be" closing a condition is "at")
+  local on = self:find_word(b, a, "on")
+  if on < a and self:word(on - 1, "is it's") and self:bound_condition(on) then a = on end
   if a >= s.trig and s.intent ~= "alt" then
     for i = b, self:said("level") and s.trig - 1 or 0 do
       if self:word(i, "level") and not self:word(i - 1, "flight") and self:word_in(math.max(b, i - 3), i, "@condition") then
@@ -2297,7 +2300,7 @@ function m:at_altitude(s)
   local reached = self:word(a, "hit hits reached reach reaches") and self:word_in(math.max(b, a - 3), a, "@condition")
   if self:word(a, "hit hits reached") and not reached then return nil end
   -- ("fly at 30000 ft and heading 100": the level flown at, an instruction of its own, no condition)
-  if self:word(a, "at") and self:word(a - 1, "fly flies stay remain cruise") then return nil end
+  if self:word(a, "at on") and self:word(a - 1, "fly flies stay remain cruise") then return nil end
   -- a value said before the condition is another instruction's, which must not wait for it
   if #self:quantities(b, a) > 0 then return nil end
   if (s.intent == "maintain" or s.intent == "alt" or NAV_INTENTS[s.intent] or s.intent == "vs")

@@ -12991,3 +12991,13 @@ do
   check_eq(ex("Please let KLM12 climb to FL300, but only when it is over ARTIP."), "AT KLM12 ARTIP DO ALT KLM12 FL300")
   asked(ex("KLM12 descend to FL200, but EZY45 only after SUGOL"), "another aircraft named")
 end
+
+-- Cycle 51 (f134): "when it is on FL260" (German "auf") closing a condition is "at" the level; "turn on heading"
+-- and "stay on FL260" are no condition
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL220 260" })
+  check_eq(ex("climb KLM12 to FL260, and when it is on FL260 accelerate to 290 knots"),
+    "ALT KLM12 FL260 ; ATALT KLM12 FL260 SPD KLM12 290")
+  check_eq(ex("KLM12, when it is on FL240, turn left heading 200"), "ATALT KLM12 FL240 HDG KLM12 200 LEFT")
+  check_eq(ex("KLM12 turn on heading 200"), "HDG KLM12 200")
+end
