@@ -12986,10 +12986,11 @@ end
 -- Cycle 51 (f134): a waypoint condition after its instruction limited by "only" or "but only" ("descend to FL200,
 -- but only after BETOS", "climb FL300 only when it is over BUMIL") starts the instruction there (AT ... DO)
 do
-  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL250 250", "ADDWPT KLM12 SUGOL", "ADDWPT KLM12 ARTIP" })
-  check_eq(ex("KLM12 should descend to FL200 only after SUGOL."), "AT KLM12 SUGOL DO ALT KLM12 FL200")
-  check_eq(ex("Please let KLM12 climb to FL300, but only when it is over ARTIP."), "AT KLM12 ARTIP DO ALT KLM12 FL300")
-  asked(ex("KLM12 descend to FL200, but EZY45 only after SUGOL"), "another aircraft named")
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL250 250", "DEFWPT WPA 52 4.5", "DEFWPT WPB 52 5",
+    "ADDWPT KLM12 WPA", "ADDWPT KLM12 WPB" })
+  check_eq(ex("KLM12 should descend to FL200 only after WPA."), "AT KLM12 WPA DO ALT KLM12 FL200")
+  check_eq(ex("Please let KLM12 climb to FL300, but only when it is over WPB."), "AT KLM12 WPB DO ALT KLM12 FL300")
+  asked(ex("KLM12 descend to FL200, but EZY45 only after WPA"), "another aircraft named")
 end
 
 -- Cycle 51 (f134): "when it is on FL260" (German "auf") closing a condition is "at" the level; "turn on heading"
@@ -13000,4 +13001,13 @@ do
     "ALT KLM12 FL260 ; ATALT KLM12 FL260 SPD KLM12 290")
   check_eq(ex("KLM12, when it is on FL240, turn left heading 200"), "ATALT KLM12 FL240 HDG KLM12 200 LEFT")
   check_eq(ex("KLM12 turn on heading 200"), "HDG KLM12 200")
+end
+
+-- Cycle 51 (f134): "... and start it" closing a request that named the simulation starts the clock; "start it" after
+-- an aircraft's instruction is no clock
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL220 260" })
+  check_eq(ex("Please set the speed of the simulation to factor 3 and start it."), "DTMULT 3 ; OP")
+  check_eq(ex("set the sim rate to 2 and then run it, please"), "DTMULT 2 ; OP")
+  check(not (ex("KLM12 climb FL300 and start it") or ""):find("OP"), "no clock started after an aircraft's instruction")
 end
