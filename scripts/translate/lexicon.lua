@@ -763,7 +763,7 @@ return {
                       hemispheres = { north = "lat", south = "lat", east = "lon", west = "lon" } },
   self_correction = { words = { "oh", "no", "wait", "sorry", "actually", "make", "that", "i", "mean", "meant", "uh", "um",
                                 "er", "say", "again", "scratch", "corr", "hmm", "typo", "never", "mind", "nevermind",
-                                "forget", "belay" },
+                                "forget", "belay", "better", "rather" },
                       markers = { "no", "wait", "sorry", "actually", "make that", "mean", "meant", "say again", "scratch",
                                   "corr", "never mind", "nevermind", "forget that", "belay" },
                       -- the markers that, closing the request, take back what came before with nothing said

@@ -13011,3 +13011,12 @@ do
   check_eq(ex("set the sim rate to 2 and then run it, please"), "DTMULT 2 ; OP")
   check(not (ex("KLM12 climb FL300 and start it") or ""):find("OP"), "no clock started after an aircraft's instruction")
 end
+
+-- Cycle 51 (f134): "better" or "rather" in a self-correction's run ("FL 340. Ah no, wait, better FL 350") is part of
+-- the correction; said without a marker ("FL340, better FL350") the second value is still asked about
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL310 260" })
+  check_eq(ex("Please let KLM12 climb to FL 340. Ah no, wait, better FL 350."), "ALT KLM12 FL350")
+  check_eq(ex("KLM12 reduce to 250 knots, no, rather 240 knots"), "SPD KLM12 240")
+  asked(ex("KLM12 climb to FL340, better FL350"), "no correction marker")
+end
