@@ -1290,6 +1290,34 @@ local GAIN_LOSE = { gain = 1, lose = -1 }
 -- lexicon.value_names as a set (written_forms: a name glued to its value)
 G.value_name_set = set_of(lexicon.value_names)
 
+-- A number written with a decimal comma, as German and French write one ("47,5 north", "8,5 degrees east", "the
+-- horizontal resolution factor to 1,1"): `whole` (one to three digits) and `part` (one or two) around the comma,
+-- [b, e) in `text`, nothing glued before or after, before a hemisphere (a word of
+-- lexicon.coordinate_axes.hemispheres or its initial) with "degrees" or not, in its range, or after a word of
+-- lexicon.decimal_comma_after and "to", "of" or "at" or none; returns "whole.part", or nil (kept as written:
+-- "41,000", "FL300,250").
+G.decimal_comma_after = set_of(lexicon.decimal_comma_after)
+function G.decimal_comma(text, b, whole, part, e)
+  local glued = text:sub(e):match("^%a+")  -- (only a hemisphere's initial: "50,3N")
+  if #whole > 3 or #part > 2 or text:sub(b - 1, b - 1):match("[%w%.,]") or text:sub(e, e):match("[%d%.,]")
+      or glued and not glued:match("^[NSEWnsew]$") then
+    return nil
+  end
+  local after = text:sub(e):lower():gsub("^%s*", ""):gsub("^°%s*", ""):gsub("^degrees?%s+", "")
+  local word = after:match("^(%a+)")
+  local axis = word and (lexicon.coordinate_axes.hemispheres[word] or (word == "n" or word == "s") and "lat"
+    or (word == "e" or word == "w") and "lon")
+  local hemisphere = axis and tonumber(whole) <= (axis == "lat" and 90 or 180)
+  local before = text:sub(1, b - 1):lower()
+  local noun = before:match("(%a+)%s+%a+%s*$")
+  local joined = before:match("(%a+)%s*$")
+  if hemisphere or G.decimal_comma_after[joined]
+      or (G.decimal_comma_after[noun] and (joined == "to" or joined == "of" or joined == "at")) then
+    return whole .. "." .. part
+  end
+  return nil
+end
+
 local function written_forms(text, world)
   -- (each pattern pass runs through where(): only where `low`, the text in lower case, holds what the
   -- pattern requires, its first argument; a rewrite outside where() sets `low` again)
@@ -1308,6 +1336,8 @@ local function written_forms(text, world)
   -- "@ FL200", "x NAXEL @ 250", "@ 120 s ...": an at sign typed apart before a value or a name is "at"
   where("@", "(%s)@%s*(%w)", "%1at %2")
   where("@", "^@%s*(%w)", "at %1")
+  -- "47,5 north", "8,5 degrees east", "factor to 1,1": a decimal comma (G.decimal_comma) is the point
+  where("%d,%d", "()(%d+),(%d+)()", function(b, whole, part, e) return G.decimal_comma(text, b, whole, part, e) end)
   text = typed_abbreviations(lone_multipliers(tokens.numerals_apart(text, DIGIT_WORDS), world))
   text = hyphened_types(spelled(heard_forms(negated_values(G.readback_reported(readback_heard(self_corrections(G.cancel_corrections(unlabelled(foreign_digits(G.said_whole(text)))))))))))
   low = text:lower()
@@ -2581,7 +2611,29 @@ function G:bound_condition(k)
   return self:word(x, "@condition")
 end
 
--- A condition said after its instruction, ending the request ("reduce the SAS to 250 knots once it passes
+-- Where a condition opened at k and said after its instruction ends, its value's quantity ending at e: at the clause
+-- after a comma or "and" that holds an instruction and a word saying it runs at once (lexicon.at_once_words:
+-- "descend FL320 once it has slowed to 260 knots, and reduce to 260 knots now"), else the request's end. With no
+-- such word ("descend FL320 once it has slowed to 260 knots, and turn left heading 200"), which instruction waits
+-- is asked (self.ask).
+function G:condition_closed(k, e)
+  local x = self.t[e] and self.t[e].text == "," and e + 1 or e
+  if self:word(x, "and") then x = x + 1 end
+  if x > e and self:any_instruction_in(x, #self.t + 1) then
+    if self:word_in(x, #self.t + 1, "@at_once_words") then return x end
+    -- (a condition opening a clause after "and" or "then", "climb FL110 and when passing 8000 feet speed up",
+    -- is the next instruction's)
+    local b = k
+    while b > 1 and self.t[b - 1].kind ~= "punct" and not self:word(b - 1, "and @then_words") do b = b - 1 end
+    if self:any_instruction_in(b, k) then
+      self.ask = string.format("Which should wait for '%s': '%s' or '%s'?", self:raw(k, e),
+        self:raw(b, k), (self:raw(x, #self.t + 1):gsub(" ([,.;:])", "%1")))
+    end
+  end
+  return #self.t + 1
+end
+
+-- A condition said after its instruction, ending the request or a clause said to run at once (G:condition_closed) ("reduce the SAS to 250 knots once it passes
 -- flight level 100 on the way down", "slow EZY45 to 220 when it reaches FL120", "250 knots by the time it's
 -- passing FL200", "by the time it gets to FL200"): "once", "when" or "by the time", "it" or the aircraft, a
 -- verb of reaching, then a level and words with no value, aircraft or instruction of their own to the end;
@@ -2590,12 +2642,13 @@ end
 -- to 230"). Returns the position of the condition's first word, the value's quantity and the condition
 -- command ("ATALT" or "ATSPD"), or nil; "by the time" with no level so read is asked about (self.ask).
 function G:trailing_level_condition()
-  if not self:said("by once when after") then return nil end
+  if not self:said("by once when after soon") then return nil end
   for k = 2, #self.t do
     local by_time = self:word(k, "by") and self:word(k + 1, "the") and self:word(k + 2, "time")
     local by_level = self:word(k, "by") and not by_time
-    if self:word(k, "once when after") or by_time or by_level then
-      local v = by_time and k + 3 or k + 1
+    local opened = self:word(k, "once when after") and k + 1 or self:word(k, "as") and self:condition_word(k)
+    if opened or by_time or by_level then
+      local v = by_time and k + 3 or opened or k + 1
       local subject = v
       if self:word(v, "it it's he he's she she's you you're you've") or self:has_ref(v, v + 1, "aircraft") then
         v = v + 1
@@ -2617,9 +2670,10 @@ function G:trailing_level_condition()
       -- ("descend to 8000 once it has slowed to 230", "... once it's slowed to 230": a speed, ATSPD)
       if reached and slowed and not by_time then
         local q = first
+        local ce = self:condition_closed(k, q.e)
         if (q.kind == "speed" or q.kind == "mach" or (q.kind == "plain" and q.value < 1000))
-            and #self:quantities(q.e, #self.t + 1) == 0 and not self:any_instruction_in(q.e, #self.t + 1) then
-          return k, q, "ATSPD"
+            and #self:quantities(q.e, ce) == 0 and not self:any_instruction_in(q.e, ce) then
+          return k, q, "ATSPD", ce
         end
         return nil
       end
@@ -2628,11 +2682,12 @@ function G:trailing_level_condition()
         local q = self:quantities(v + 1, #self.t + 1)[1]
         if q and q.b == self:skip_fillers(v + 1) and (q.kind == "alt" or (q.kind == "plain" and q.value >= 1000 and not by_level)) then
           if by_level and not self:speed_before_level(k) then return nil end
-          for x = q.e, #self.t do
+          local ce = by_level and #self.t + 1 or self:condition_closed(k, q.e)
+          for x = q.e, ce - 1 do
             if self:intent_at(x) and not self:word(x, "@up @down") or self:has_ref(x, x + 1, "aircraft") then return nil end
           end
-          if #self:quantities(q.e, #self.t + 1) > 0 then return nil end
-          return k, q, "ATALT"
+          if #self:quantities(q.e, ce) > 0 then return nil end
+          return k, q, "ATALT", ce
         end
       end
       -- ("250 knots by the time it's level": a moment squawk cannot wait for, asked about)
@@ -4647,19 +4702,26 @@ function G:trailing_fix(s)
   if bare then c = bare end
   if c >= s.e or #self:quantities(s.trig, c) == 0 then return nil end
   local k = bare or self:skip_fillers(c + 1)
+  -- ("descend FL200, but only after BETOS", "climb FL300 only when it is over BUMIL": the condition's limiting
+  -- words before it, lexicon.condition_limiting, belong to it)
+  local lead = c
+  while not bare and lead - 1 > s.trig and (self:word(lead - 1, "@condition_limiting") or self.t[lead - 1].text == ",") do
+    lead = lead - 1
+  end
+  while self.t[lead].kind == "punct" do lead = lead + 1 end
   -- ("descend FL250 after Weser", "reduce 250 after WSR": "after" straight after the value of a level, speed,
   -- heading or rate, and the waypoint, its code or a name of the aircraft's route, closing the request;
   -- "expect lower after KURDI" is no such condition, nor ADDWPT's "after")
   if self:word(c, "after") and not self:word(k, "it you passing passes reaching reaches overflying") then
-    if self.u:used(c) or not self:value_before(s, c) then return nil end
+    if self.u:used(c) or not self:value_before(s, lead) then return nil end
     local e = s.e
     while e > k and self.t[e - 1].kind == "punct" and self.t[e - 1].text ~= "," do e = e - 1 end
     local r = self:refs_in(k, e, "waypoint")[1]
-    if r then return r.b == k and r.e == e and { b = c, e = r.e, name = r.name } or nil end
+    if r then return r.b == k and r.e == e and { b = lead, e = r.e, name = r.name } or nil end
     local a = self:refs_in(1, s.trig, "aircraft")
     local now = #a == 1 and self:state(a[1].name)
     local name = now and e > k and e <= k + 2 and self:place_by_name(k, e, now, true)
-    return name and { b = c, e = e, name = name } or nil
+    return name and { b = lead, e = e, name = name } or nil
   end
   if self:word(k, "it you") then k = self:skip_fillers(k + 1) end
   -- ("fl100 when past WYP": typed short, "past" is passing)
@@ -4669,7 +4731,7 @@ function G:trailing_fix(s)
     k = self:skip_fillers(k + 2)
   elseif self:word(k, "gets") and self:word(k + 1, "to") then
     k = self:skip_fillers(k + 2)
-  elseif not (self:word(k, "is it's") and self:word(k + 1, "at")) then
+  elseif not (self:word(k, "is it's") and self:word(k + 1, "at over")) then  -- ("once it is over BUMIL")
     return nil
   else
     k = self:skip_fillers(k + 2)
@@ -4682,7 +4744,7 @@ function G:trailing_fix(s)
   -- framing words only after a comma or "if", closing the request, are courtesy; a value, name or verb is not)
   local opened = self:word(j, "if") or (self.t[j - 1] and self.t[j - 1].text == ",")
   if j < s.e and not (opened and self:framing_only(self:word(j, "if") and j + 1 or j, s.e)) then return nil end
-  return { b = c, e = r.e, name = r.name }
+  return { b = lead, e = r.e, name = r.name }
 end
 
 -- "maintain 250 knots until SULUR then climb FL200", "speed 220 till VAKNX, then reduce 180": the
@@ -10440,7 +10502,8 @@ function M.translate(text, world)
   local cond, rest = g:condition()
   if not g.ask then
     local k, level, kind = nil, nil, nil
-    if not cond then k, level, kind = g:trailing_level_condition() end
+    local ce  -- (the end of a trailing condition, the clause after it run at once: G:condition_closed)
+    if not cond then k, level, kind, ce = g:trailing_level_condition() end
     -- (a trailing condition holds the instruction of its own clause: the one after the last comma, "and"
     -- or "then" before it)
     local clause = rest
@@ -10453,7 +10516,7 @@ function M.translate(text, world)
     if k and not g.ask then
       -- (the condition's words: what the ATALT says)
       g:take(level)
-      g:explain(k, #g.t + 1)
+      g:explain(k, ce)
       local f = handlers.format
       local at = level.kind == "alt" and f.alt(level.value, level.fl) or level.kind == "mach" and f.mach(level.value)
         or f.int(level.value)
@@ -10465,6 +10528,7 @@ function M.translate(text, world)
         end
         g.out[c] = kind .. " " .. id .. " " .. at .. " " .. g.out[c]
       end
+      if ce <= #g.t and not g.ask then g:parse(ce, #g.t + 1) end
     end
     -- ("after DLL descend FL180 and slow to 290": an instruction of the same aircraft after one tied to a waypoint,
     -- itself tied to no place or condition, may wait for the waypoint too or run now: asked, never sent now)

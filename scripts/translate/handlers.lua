@@ -186,7 +186,7 @@ function m:acids(s)
     for _, r in ipairs(self:refs_in(b, e, "aircraft")) do
       -- (one named as context, "to avoid a conflict with KLM77", is not instructed)
       if (r.exists or not any_known) and not seen[r.name] and not r.false_start
-          and not self:as_context(r.b) and not self:in_reason(r.b) and not self:compared_with(r.b) then
+          and not self:as_context(r.b) and (r.said_instead or not self:in_reason(r.b)) and not self:compared_with(r.b) then
         -- ("climb KLM12 to FL260 as EZY45 passes", ", as for EZY45", "while EZY45 holds", "with EZY45": a
         -- second aircraft after "as", "as for", "while" or "with" that is no comparison may be a time, a reason,
         -- a topic or company as well as an aircraft added; after "as" or "while" and the instruction word also
@@ -233,6 +233,9 @@ function m:acids(s)
   end
   if addressed then
     for _, r in ipairs(self:refs_in(last_q.e, upto, "aircraft")) do
+      -- (aircraft said in place of the one named, "..., sorry, I meant KLM21", close the request:
+      -- m:aircraft_said_instead)
+      if r.said_instead then break end
       local clause = false
       for i = last_q.e, r.b - 1 do
         local t = self.t[i]
@@ -1887,6 +1890,8 @@ function m:false_starts()
       while c > 0 and (self.t[c].kind == "punct" or self.t[c].filler) do c = c - 1 end
       if last and c >= last.e and self:word(c, "@correction") and self:skip_fillers(r.e, false) > #self.t then
         last.false_start = true
+      elseif last and self:aircraft_said_instead(last, r) then
+        last.false_start = true
       end
       last = r
     end
@@ -1917,6 +1922,56 @@ function m:callsign_taken_back(b, e)
     end
   end
   return marked
+end
+
+-- True when aircraft reference r, said after a complete instruction to `last`, replaces it: r (and aircraft said
+-- after it with "and" or a comma) closes the request after a run of lexicon.self_correction words holding a marker
+-- ("climb FL280, no, sorry, I meant the Lufthansa 2EC", "turn heading 090? No, sorry, I meant the Eurowings"),
+-- optionally followed by "not" and `last` said again ("..., not the Condor") or `last` said again with words that
+-- keep it as it is (lexicon.kept_as_is, lexicon.said_instead_kept: "..., the Eurowings can stay like it is"). The
+-- run and the words after it are marked used and each aircraft said in last's place gets r.said_instead (the parse
+-- instructs them, also where "I meant ..." reads as the speaker's own remark: G:in_reason).
+local KEPT_AS_IS = {}
+for _, list in ipairs({ L.kept_as_is.copulas, L.kept_as_is.approvals, L.kept_as_is.rounding, L.said_instead_kept }) do
+  for _, w in ipairs(list) do KEPT_AS_IS[w] = true end
+end
+function m:aircraft_said_instead(last, r)
+  if r.name == last.name then return false end  -- (the same aircraft said again: "Sorry, the Wideroe, I mean")
+  local b, marked = r.b, false
+  while b > last.e and (self.t[b - 1].kind == "punct" or self.t[b - 1].filler or SELF_CORRECTION[self.t[b - 1].text]) do
+    b = b - 1
+    marked = marked or SC_MARKER[self.t[b].text] or self:word(b, "@correction")
+  end
+  if not marked or b == last.e or self:any_instruction_in(b, r.b) then return false end
+  local instead, e = { r }, self:skip_fillers(r.e, false)
+  local function ref_at(k)  -- (an aircraft said at k, after "the" or not)
+    local nx = self:refs_in(k, k + 1, "aircraft")[1] or self:word(k, "the") and self:refs_in(k + 1, k + 2, "aircraft")[1]
+    return nx and nx.exists and nx
+  end
+  local nx = ref_at(e) or self:word(e, "and") and ref_at(e + 1)
+  while nx and nx.name ~= last.name do
+    instead[#instead + 1] = nx
+    e = self:skip_fillers(nx.e, false)
+    nx = ref_at(e) or self:word(e, "and") and ref_at(e + 1)
+  end
+  local again = ref_at(self:word(e, "not") and e + 1 or e)
+  if again and again.name == last.name then
+    local k = self:skip_fillers(again.e, false)
+    while self.t[k] and KEPT_AS_IS[self.t[k].text] and not self:word(e, "not") do k = k + 1 end
+    if self:word(e, "not") or k > again.e then e, again.false_start = self:skip_fillers(k, false), true end
+  end
+  if e <= #self.t then
+    -- (another aircraft named in other words after the one said instead, no instruction among them: which
+    -- aircraft is meant is unknown)
+    if not self:any_instruction_in(r.e, #self.t + 1) and self:has_ref(r.e, #self.t + 1, "aircraft") then
+      self:need(string.format("Which aircraft should get the instruction: %s or %s?", last.name:upper(), r.name:upper()))
+    end
+    return false
+  end
+  self:mark_used(b, r.b)
+  self:mark_used(instead[#instead].e, #self.t + 1)
+  for _, x in ipairs(instead) do x.said_instead = true end
+  return true
 end
 
 -- True when the heard callsign's airline and digits are those of exactly one
@@ -2231,6 +2286,9 @@ function m:at_altitude(s)
   -- ("once it is above 8000 feet, accelerate": a bound closing a condition is the level crossed, G:bound_condition)
   local bound = self:find_word(b, a, "@above @below")
   if bound < a and self:bound_condition(bound) then a = bound end
+  -- ("when it is on FL260 accelerate", German "auf": "on" after a form of "be" closing a condition is "at")
+  local on = self:find_word(b, a, "on")
+  if on < a and self:word(on - 1, "is it's") and self:bound_condition(on) then a = on end
   if a >= s.trig and s.intent ~= "alt" then
     for i = b, self:said("level") and s.trig - 1 or 0 do
       if self:word(i, "level") and not self:word(i - 1, "flight") and self:word_in(math.max(b, i - 3), i, "@condition") then
@@ -2245,7 +2303,7 @@ function m:at_altitude(s)
   local reached = self:word(a, "hit hits reached reach reaches") and self:word_in(math.max(b, a - 3), a, "@condition")
   if self:word(a, "hit hits reached") and not reached then return nil end
   -- ("fly at 30000 ft and heading 100": the level flown at, an instruction of its own, no condition)
-  if self:word(a, "at") and self:word(a - 1, "fly flies stay remain cruise") then return nil end
+  if self:word(a, "at on") and self:word(a - 1, "fly flies stay remain cruise") then return nil end
   -- a value said before the condition is another instruction's, which must not wait for it
   if #self:quantities(b, a) > 0 then return nil end
   if (s.intent == "maintain" or s.intent == "alt" or NAV_INTENTS[s.intent] or s.intent == "vs")

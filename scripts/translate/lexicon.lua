@@ -611,6 +611,12 @@ return {
   -- happens ("divert to EDDK, at TAU", "send it to MUC, after KERAX": asked; grammar.lua G:diversion_reason)
   diversion_not_reason = { "at", "after", "over", "passing", "abeam", "when", "once", "before", "by", "via",
                            "leaving", "reaching", "until", "till", "in", "on", "then", "and" },
+  -- words that limit an instruction to a condition said after it ("descend FL200, but only after BETOS", "climb
+  -- FL300 only when it is over BUMIL": grammar.lua G:trailing_fix)
+  condition_limiting = { "but", "only", "just" },
+  -- words saying an instruction runs at once, closing a condition said after the instruction before ("descend FL320
+  -- once it has slowed to 260 knots, and reduce to 260 knots now": grammar.lua G:condition_closed)
+  at_once_words = { "now", "immediately", "already" },
   -- verbs that make a bare number in a condition a speed ("once AFR1023 slows to 250")
   speed_verbs = { "slows", "slowed", "slow", "accelerates", "accelerated", "decelerates", "decelerated" },
   -- words before a level that make the next instruction wait for it
@@ -777,11 +783,14 @@ return {
   -- a coordinate's axis ("lat", "lon") by the label said before its number ("latitude 41.4 north") and by its
   -- hemisphere's word or letter (grammar.lua G.spoken_coordinates)
   -- (a hemisphere typed as its initial in capitals, "41.4 N", is that word's)
+  -- the nouns of a value that a number written with a decimal comma may follow ("the horizontal resolution factor
+  -- to 1,1"; grammar.lua G.decimal_comma)
+  decimal_comma_after = { "factor" },
   coordinate_axes = { labels = { latitude = "lat", longitude = "lon" },
                       hemispheres = { north = "lat", south = "lat", east = "lon", west = "lon" } },
   self_correction = { words = { "oh", "no", "wait", "sorry", "actually", "make", "that", "i", "mean", "meant", "uh", "um",
                                 "er", "say", "again", "scratch", "corr", "hmm", "typo", "never", "mind", "nevermind",
-                                "forget", "belay" },
+                                "forget", "belay", "better", "rather" },
                       markers = { "no", "wait", "sorry", "actually", "make that", "mean", "meant", "say again", "scratch",
                                   "corr", "never mind", "nevermind", "forget that", "belay" },
                       -- the markers that, closing the request, take back what came before with nothing said
@@ -1048,6 +1057,9 @@ return {
   -- "speed 270 is ok, descend FL150", "hdg 180 ist gut, just climb FL350" (the value, a copula or none, an
   -- approval, words that round it off, then the clause's end or another instruction); "keep FL370, just
   -- heading 150", "keep FL350 but slow down" (a verb of `verbs` before the value, a word of `only` or `but` after it)
+  -- words beside lexicon.kept_as_is's that keep an aircraft taken back as it is ("..., sorry, I meant the Ryanair,
+  -- the Eurowings can stay like it is": translate/handlers.lua m:aircraft_said_instead)
+  said_instead_kept = { "can", "may", "should", "stay", "like", "unchanged", "be" },
   kept_as_is = { copulas = { "is", "are", "'s", "looks", "look", "seems", "stays", "remains", "ist", "bleibt" },
                  approvals = { "fine", "ok", "okay", "good", "alright", "perfect", "great", "gut", "unchanged" },
                  -- (a copula that says it alone: "FL180 stays, speed 250")

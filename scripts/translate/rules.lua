@@ -2135,6 +2135,12 @@ return function(intent, rule, words)
   rule { "start", "op", next = "it", when = function(g, i)
     return g:word(i + 2, "again") and not g:has_ref(1, #g.t + 1, "aircraft")
   end }
+  -- "set the speed of the simulation to factor 5 and start it": "it" the simulation named before, the clause after
+  -- "and" or "then" closing the request, no aircraft named
+  rule { "run start", "op", next = "it", when = function(g, i)
+    return g:word(i - 1, "and @then_words") and g:word_in(1, i - 1, "@sim") and g:skip_fillers(i + 2) > #g.t
+      and not g:has_ref(1, #g.t + 1, "aircraft")
+  end }
   rule { "go", "op", next = "on", near = { 4, "@sim" } }  -- "go on with the simulation"
   -- "set the sim running", "get it running again": the clock started
   rule { "running", "op", prev = { 1, "@sim it" }, not_near = { 4, "speed rate times real normal" }, when = function(g, i)

@@ -13162,3 +13162,79 @@ do
     check_eq(ex("n55ab hdg 200 vctr cmk"), "HDG N55AB 200")
   end
 end
+
+-- Cycle 51 (f134): an aircraft said in place of the one instructed, after the instruction ("climb FL280, no, sorry,
+-- I meant DLH2EC", "? No, sorry, I meant the Eurowings, not the Condor", "..., the Eurowings can stay like it is")
+-- gets the instruction, the first none; other words after it with no instruction are asked
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL200 250", "CRE AFR34 A320 52.3 4.3 180 FL220 260",
+    "CRE BAW56 A319 52.5 4.6 270 FL240 250" })
+  check_eq(ex("Please let KLM12 climb to FL300, no, sorry, I meant AFR34."), "ALT AFR34 FL300")
+  check_eq(ex("Could you turn KLM12 onto heading 200? No, sorry, I meant AFR34, not KLM12."), "HDG AFR34 200")
+  check_eq(ex("Let KLM12 fly heading 200. Sorry, I meant AFR34, KLM12 can stay as it is."), "HDG AFR34 200")
+  check_eq(ex("turn KLM12 heading 200 -- sorry, AFR34 and BAW56"), "HDG AFR34 200 ; HDG BAW56 200")
+  asked(ex("turn KLM12 heading 200, sorry, I meant AFR34, BAW56 can stay like it is"), "a third aircraft kept")
+  check_eq(ex("turn KLM12 heading 200, sorry, AFR34 too"), "HDG KLM12 200 ; HDG AFR34 200")
+end
+
+-- Cycle 51 (f134): a condition said after its instruction ("as soon as it has slowed down to 260 knots", "when it has
+-- reached FL380") waits for that instruction alone when the clause after it is said to run at once ("..., and reduce
+-- to 260 knots now"); with no such word, which of the two waits is asked
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL360 290" })
+  check_eq(ex("KLM12 descend to FL320 as soon as it has slowed down to 260 knots, and reduce to 260 knots now"),
+    "ATSPD KLM12 260 ALT KLM12 FL320 ; SPD KLM12 260")
+  check_eq(ex("KLM12 fly Mach 0.78 when it has reached FL380, and climb to FL380 immediately"),
+    "ATALT KLM12 FL380 SPD KLM12 M0.78 ; ALT KLM12 FL380")
+  check_eq(ex("KLM12 descend to FL320 as soon as it has slowed to 260 knots"), "ATSPD KLM12 260 ALT KLM12 FL320")
+  asked(ex("KLM12 descend to FL320 once it has slowed to 260 knots, and turn left heading 200"), "which one waits")
+end
+
+-- Cycle 51 (f134): a decimal comma ("47,5 north", "8,5 degrees east", "factor to 1,1") is a decimal point before a
+-- hemisphere in its range or after a value's noun; a grouping ("10,000") and a list glued to a level stay as written
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL360 290" })
+  check_eq(ex("Could you move KLM12 to 51,4 north and 3,7 east, please?"), "MOVE KLM12 51.4 3.7")
+  check_eq(ex("define a waypoint WPX at 48,25 N and 7,5 degrees east"), "DEFWPT WPX 48.25 7.5")
+  check_eq(ex("set the vertical resolution factor to 1,2"), "RFACV 1.2")
+  check_eq(ex("KLM12 descend to 10,000 feet"), "ALT KLM12 10000")
+  asked(ex("KLM12 heading 270,5 north of the airway"), "a heading is no latitude")
+end
+
+-- Cycle 51 (f134): a waypoint condition after its instruction limited by "only" or "but only" ("descend to FL200,
+-- but only after BETOS", "climb FL300 only when it is over BUMIL") starts the instruction there (AT ... DO)
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL250 250", "DEFWPT WPA 52 4.5", "DEFWPT WPB 52 5",
+    "ADDWPT KLM12 WPA", "ADDWPT KLM12 WPB" })
+  check_eq(ex("KLM12 should descend to FL200 only after WPA."), "AT KLM12 WPA DO ALT KLM12 FL200")
+  check_eq(ex("Please let KLM12 climb to FL300, but only when it is over WPB."), "AT KLM12 WPB DO ALT KLM12 FL300")
+  asked(ex("KLM12 descend to FL200, but EZY45 only after WPA"), "another aircraft named")
+end
+
+-- Cycle 51 (f134): "when it is on FL260" (German "auf") closing a condition is "at" the level; "turn on heading"
+-- and "stay on FL260" are no condition
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL220 260" })
+  check_eq(ex("climb KLM12 to FL260, and when it is on FL260 accelerate to 290 knots"),
+    "ALT KLM12 FL260 ; ATALT KLM12 FL260 SPD KLM12 290")
+  check_eq(ex("KLM12, when it is on FL240, turn left heading 200"), "ATALT KLM12 FL240 HDG KLM12 200 LEFT")
+  check_eq(ex("KLM12 turn on heading 200"), "HDG KLM12 200")
+end
+
+-- Cycle 51 (f134): "... and start it" closing a request that named the simulation starts the clock; "start it" after
+-- an aircraft's instruction is no clock
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL220 260" })
+  check_eq(ex("Please set the speed of the simulation to factor 3 and start it."), "DTMULT 3 ; OP")
+  check_eq(ex("set the sim rate to 2 and then run it, please"), "DTMULT 2 ; OP")
+  check(not (ex("KLM12 climb FL300 and start it") or ""):find("OP"), "no clock started after an aircraft's instruction")
+end
+
+-- Cycle 51 (f134): "better" or "rather" in a self-correction's run ("FL 340. Ah no, wait, better FL 350") is part of
+-- the correction; said without a marker ("FL340, better FL350") the second value is still asked about
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL310 260" })
+  check_eq(ex("Please let KLM12 climb to FL 340. Ah no, wait, better FL 350."), "ALT KLM12 FL350")
+  check_eq(ex("KLM12 reduce to 250 knots, no, rather 240 knots"), "SPD KLM12 240")
+  asked(ex("KLM12 climb to FL340, better FL350"), "no correction marker")
+end
