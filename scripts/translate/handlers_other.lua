@@ -3174,6 +3174,10 @@ return function(H, f, compass)
   -- not asked about; "is it on?" has no opener).
   function m:request_start()
     local first = self:skip_fillers(1)
+    -- ("hmm wait is conflict detection on?": the interjections before the question's first word)
+    while self:word(first, "@setting_question_interjections") and first < #self.t do
+      first = self:skip_fillers(first + 1)
+    end
     if not (self:word(first, "is") and self:word(first + 1, "it")) then return first end
     local to = self:find_word(first + 2, first + 6, "to")
     if to < first + 6 and self:word_in(first + 2, to, "possible ok okay alright feasible trouble") then
@@ -3834,8 +3838,14 @@ return function(H, f, compass)
       return self:mark_used(s.trig, s.trig + 2)
     end
     local all = #self.t + 1
-    local off = self:word_in(1, all, "@off no not never")
-    local only = self:word_in(1, all, "only")
+    -- ("use vertical too, not just heading and speed", "not only horizontal": "not" before "just" or "only" adds
+    -- to what is said, it negates nothing, and that "only" restricts nothing)
+    local function additive(k) return self:word(k, "not") and self:word(k + 1, "just only merely solely") end
+    local off, only = false, false
+    for k = 1, #self.t do
+      off = off or (self:word(k, "@off no not never") and not additive(k))
+      only = only or (self:word(k, "only") and not additive(k - 1))
+    end
     -- ("turn off lateral resolution", "horizontal resolutions off", "only resolve vertically"): the
     -- horizontal resolutions switched, RMETHH, which squawk lacks: asked, never RMETHV switched instead
     -- (the two words after k, up to punctuation: "vertical reso method off, horizontal only" is RMETHV OFF)
@@ -3848,7 +3858,9 @@ return function(H, f, compass)
     end
     for k = 1, #self.t do
       local e = after(k)
-      local horizontal_off = self:word(k, "@off no not never") and self:word_in(k + 1, e, "horizontal lateral")
+      -- (horizontal manoeuvres named by their kind, "not heading and speed")
+      local horizontal_off = self:word(k, "@off no not never") and not additive(k)
+        and self:word_in(k + 1, e, "horizontal lateral heading headings speed speeds")
         and not self:word_in(k + 1, e, "vertical vertically")
       local off_horizontal = self:word(k, "horizontal lateral") and self:word_in(k + 1, e, "@off")
       local vertical_only = self:word(k, "only") and (self:word(k - 1, "vertical vertically")
@@ -3865,7 +3877,9 @@ return function(H, f, compass)
         .. "speed too (RMETHV V/S): which should it use?")
     end
     -- (read at "horizontal": horizontal alone, G:vertical_resolutions)
-    self:emit((off or only or self:word(s.trig, "horizontal lateral")) and "RMETHV OFF" or "RMETHV V/S")
+    -- ("not only horizontal": horizontal and more, vertical speed too)
+    local horizontal_alone = self:word(s.trig, "horizontal lateral") and not additive(s.trig - 2)
+    self:emit((off or only or horizontal_alone) and "RMETHV OFF" or "RMETHV V/S")
     -- (its clause whole: "turn on MVP resolution and allow vertical manoeuvres" reads "allow" with the vertical)
     local lo, hi = self:clause_around(s.trig)
     self:mark_used(math.min(s.b, lo), math.max(s.e, hi))

@@ -621,6 +621,10 @@ return {
   -- are you at FL300?", "are you at FL300, KLM12?")
   state_question = { opens = { "is", "are", "was", "were", "does", "do", "did", "has", "what", "how" },
                      with_is = { "what", "how" } },
+  -- interjections said before a question about a setting ("hmm wait is conflict detection even on rn?"): passed
+  -- over to find the question's first word, which decides whether the setting is asked about or switched
+  setting_question_interjections = { "hmm", "hm", "wait", "oh", "ooh", "ah", "hey", "well", "alright", "ok", "okay",
+                                     "so", "um", "uh", "erm", "ehm" },
   -- a pilot's question back to the controller, no instruction (G:question_back): "say again (the level)"
   -- with no value in its clause asks for a repeat; "confirm cleared FL200?", "confirm heading 270?" with a value
   -- asks whether a clearance stands. Not after `not_after` ("I say again 260" is the controller's own repeat).
@@ -1008,7 +1012,10 @@ return {
   -- "maybe 280 knots"), and a value said loosely ("ish", "about", "or so") is the value said
   trailing_hedges = { words = { "maybe", "perhaps", "probably", "possibly", "unsure" },
                       pairs = { { "not", "sure" }, { "i", "think" }, { "i", "guess" }, { "i", "believe" },
-                                { "not", "certain" } } },
+                                { "not", "certain" } },
+                      -- a loose value's mark closed by a question mark ("turn to like 200-ish?"): a value the speaker
+                      -- asks about, not one said loosely
+                      questioned = { "ish" } },
   -- the speaker's own stop after "until" in a fast-forward with no duration ("until I say stop", "until I tell
   -- you", "until further notice"): fast time with no end (FF); anything else after "until" is an event, asked
   ff_stopped = { "stop", "stopped", "say", "tell", "told", "notice", "advised", "advise", "otherwise" },

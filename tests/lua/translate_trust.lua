@@ -12944,3 +12944,31 @@ do
   check_eq(ex("delay half a minute, then KLM12 climb FL300"), "DELAY 30 ALT KLM12 FL300")
   asked(ex("delay a couple of minutes then KLM12 climb FL300"), "a loose time after 'delay'")
 end
+
+-- Cycle 51 (f135): an interjection before a question about a setting ("hmm wait is conflict detection even on?")
+-- leaves it a question (the setting shown), never switched; said before the switch itself it still switches
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL200 250" })
+  check_eq(ex("oh wait, is conflict detection actually on?"), "ASAS")
+  check_eq(ex("hmm is asas even on rn?"), "ASAS")
+  check_eq(ex("hmm, switch conflict detection on"), "ASAS ON")
+end
+
+-- Cycle 51 (f135): "not just" / "not only" adds to what follows ("use vertical too, not just heading and speed"
+-- is RMETHV V/S); "not heading and speed" takes the horizontal resolutions away, which squawk cannot: asked
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL200 250" })
+  check_eq(ex("let resolutions go vertical too, not only heading changes"), "RMETHV V/S")
+  check_eq(ex("resolutions should be not only lateral"), "RMETHV V/S")
+  asked(ex("resolve with vertical, not with heading and speed"), "horizontal resolutions taken away")
+  check_eq(ex("resolutions horizontal only please"), "RMETHV OFF")
+end
+
+-- Cycle 51 (f135): a loose value closed by a question mark ("heading like 200-ish?") is asked; said loosely
+-- without one it is the value said
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL200 250" })
+  asked(ex("klm12 slow to 230ish?"), "a loose value asked about")
+  asked(ex("klm12 turn to like 140-ish?"), "a loose heading asked about")
+  check_eq(ex("klm12 slow to 230ish"), "SPD KLM12 230")
+end
