@@ -3194,6 +3194,11 @@ return function(H, f, compass)
     if value and self:word(first, "what what's whats show display print") and #self:quantities(1, #self.t + 1) == 0 then
       return true
     end
+    -- ("how big is the protected zone rn": a size asked, "?" typed or not, no value said)
+    if value and self:word(first, "how") and self:word(first + 1, "big large wide tall high") and self:word(first + 2, "is are")
+        and #self:quantities(1, #self.t + 1) == 0 then
+      return true
+    end
     -- ("which resolution method is active": a request opening with "which" asks, "?" or not; so does one asked
     -- indirectly, "could you tell me which resolution method is currently active")
     if (self:word(first, "which") or self:asked_indirectly()) and #self:quantities(1, #self.t + 1) == 0 then

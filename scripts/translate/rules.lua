@@ -2600,7 +2600,7 @@ return function(intent, rule, words)
   rule { "distance", "zone", prev = { 1, "safety" }, when = function(g, i)
     return g:word_in(1, #g.t + 1, "conflict conflicts detection") and not g:has_ref(1, #g.t + 1, "aircraft")
   end }
-  rule { "protected protection prot pz rpz hpz separation zone zoner zonedh radius", "zone" }  -- ("prot zone")
+  rule { "protected protection prot pz rpz hpz separation zone zones zoner zonedh radius", "zone" }  -- ("prot zone", "zones to 10 miles")
   rule { "sep", "zone", prev = { 1, "horizontal lateral vertical" } }  -- "horizontal sep back to 5nm"
   rule { "half", "zone", next = "height" }
   rule { "look", "dtlook", next = "ahead" }

@@ -12995,3 +12995,11 @@ do
   check_eq(ex("he consented, so start it back up"), "OP")
   asked(ex("KLM12 climb block FL250 to FL270"), "a block altitude")
 end
+
+-- Cycle 51 (f135): "how big is the protected zone rn" (no "?") shows the setting; "zones to 10 miles" sets it
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL200 250" })
+  check_eq(ex("how large is the protected zone atm"), "ZONER")
+  check_eq(ex("ok zones to 8 miles since it is en route"), "ZONER 8")
+  asked(ex("how big is KLM12"), "no setting named")
+end
