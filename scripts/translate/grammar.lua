@@ -7646,6 +7646,7 @@ end
 -- A hedge of lexicon.trailing_hedges straight after a value, closing its clause (the request's end or a
 -- mark after it: "descend fl300 maybe", "hdg 240, i think"), makes the request uncertain: asked, naming it.
 G.hedge_words = table.concat(lexicon.trailing_hedges.words, " ")
+G.questioned_hedges = table.concat(lexicon.trailing_hedges.questioned, " ")
 function G:hedged()
   local h = lexicon.trailing_hedges
   local function closes(k) return self.t[k] == nil or self.t[k].kind == "punct" end
@@ -7654,6 +7655,9 @@ function G:hedged()
     if self:word(k, G.hedge_words) and closes(k + 1) then said = self:raw(k, k + 1) end
     for _, p in ipairs(said and {} or h.pairs) do
       if self:word(k, p[1]) and self:word(k + 1, p[2]) and closes(k + 2) then said = self:raw(k, k + 2) end
+    end
+    if not said and self:word(k, G.questioned_hedges) and self.t[k + 1] and self.t[k + 1].text == "?" then
+      said = self:raw(k, k + 1) .. "?"
     end
     if said then
       self.ask = string.format("%s. You said '%s' after '%s': should I send it as said, or which value do you mean?",

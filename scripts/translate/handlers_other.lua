@@ -3175,6 +3175,10 @@ return function(H, f, compass)
   -- not asked about; "is it on?" has no opener).
   function m:request_start()
     local first = self:skip_fillers(1)
+    -- ("hmm wait is conflict detection on?": the interjections before the question's first word)
+    while self:word(first, "@setting_question_interjections") and first < #self.t do
+      first = self:skip_fillers(first + 1)
+    end
     if not (self:word(first, "is") and self:word(first + 1, "it")) then return first end
     local to = self:find_word(first + 2, first + 6, "to")
     if to < first + 6 and self:word_in(first + 2, to, "possible ok okay alright feasible trouble") then
@@ -3189,6 +3193,11 @@ return function(H, f, compass)
   function m:asks_setting(value)
     local first = self:request_start()
     if value and self:word(first, "what what's whats show display print") and #self:quantities(1, #self.t + 1) == 0 then
+      return true
+    end
+    -- ("how big is the protected zone rn": a size asked, "?" typed or not, no value said)
+    if value and self:word(first, "how") and self:word(first + 1, "big large wide tall high") and self:word(first + 2, "is are")
+        and #self:quantities(1, #self.t + 1) == 0 then
       return true
     end
     -- ("which resolution method is active": a request opening with "which" asks, "?" or not; so does one asked
@@ -3866,8 +3875,9 @@ return function(H, f, compass)
     end
     for k = 1, #self.t do
       local e = after(k)
+      -- (horizontal manoeuvres named by their kind, "not heading and speed")
       local horizontal_off = self:word(k, "@off no not never") and not self:additive_not(k)
-        and self:word_in(k + 1, e, "horizontal lateral")
+        and self:word_in(k + 1, e, "horizontal lateral heading headings speed speeds")
         and not self:word_in(k + 1, e, "vertical vertically")
       local off_horizontal = self:word(k, "horizontal lateral") and self:word_in(k + 1, e, "@off")
       local vertical_only = self:word(k, "only") and not self:additive_not(k - 1) and (self:word(k - 1, "vertical vertically")
@@ -3884,7 +3894,9 @@ return function(H, f, compass)
         .. "speed too (RMETHV V/S): which should it use?")
     end
     -- (read at "horizontal": horizontal alone, G:vertical_resolutions)
-    self:emit((off or only or self:word(s.trig, "horizontal lateral")) and "RMETHV OFF" or "RMETHV V/S")
+    -- ("not only horizontal": horizontal and more, vertical speed too)
+    local horizontal_alone = self:word(s.trig, "horizontal lateral") and not self:additive_not(s.trig - 2)
+    self:emit((off or only or horizontal_alone) and "RMETHV OFF" or "RMETHV V/S")
     -- (its clause whole: "turn on MVP resolution and allow vertical manoeuvres" reads "allow" with the vertical)
     local lo, hi = self:clause_around(s.trig)
     self:mark_used(math.min(s.b, lo), math.max(s.e, hi))

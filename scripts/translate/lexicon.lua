@@ -91,9 +91,11 @@ return {
         "now", "first", "next", "last", "soon", "quickly", "slightly", "fine", "good", "great", "sure",
         -- (how hard a turn is flown, which squawk's turn model does not take: "hard left heading 350", named in the
         -- note when said as the manner, not_simulated)
-        "hard", "sharp", "sharply",
+        "hard", "sharp", "sharply", "aggressive", "aggressively",
         -- (spoken hedges: "the clock is running kinda slow, go 2x")
         "kinda", "sorta", "somewhat",
+        -- (a chatty speaker's degree: "it's turning super aggressively")
+        "super",
         "ok", "okay", "oh", "hmm", "hm", "ehm", "erm", "uhm", "hey", "yes", "yeah", "sorry", "anyway", "righto", "exactly", "possibly", "currently",
         "precisely", "roughly", "approximately",
         -- (interjections of a chatty speaker: "Ooh, and add Rosun ...", "ah, and the Speedbird ...")
@@ -109,6 +111,8 @@ return {
         "pronto", "beleza",
         -- comparatives of a remark on the set-up ("a bit nicer", "closer to 90", "a shorter look-ahead")
         "nicer", "better", "closer", "shorter", "longer", "smaller", "larger", "bigger",
+        -- (a remark on the traffic given as the reason: "it and EDV5102 are gonna be way too close")
+        "close",
         -- (a size asked about: "how large is the protected zone radius?")
         "large", "big",
         -- a demonstration's remarks to its audience ("make it snappy", "for realism", "here's the fun part")
@@ -125,7 +129,8 @@ return {
         -- verbs of the speaker's own talk ("while I explain this")
         "explain", "brief", "talk", "discuss", "speak",
         -- an experimenter watching what a run does ("let's watch it", "see the effect")
-        "watch", "observe", "effect", "effects", "result", "results", "outcome", "happens",
+        "watch", "observe", "effect", "effects", "result", "results", "outcome", "happens", "happen", "happening",
+        "happened",
         -- the study a run belongs to, told as its story ("it departed there in our story", "for my study")
         "story", "study", "storyline", "narrative",
         -- a newcomer excusing or naming their words ("I apologise for my ignorance of the terminology, but ...", "I
@@ -133,7 +138,9 @@ return {
         "ignorance", "terminology", "term", "jargon", "apologise", "apologize", "apologies",
         -- an experiment's trials and its framing of what the simulation plays ("we pretend that ...", "could you
         -- arrange for the simulation to pause ...", "simply keep flying straight")
-        "trials", "pretend", "imagine", "arrange", "simply" },
+        "trials", "pretend", "imagine", "arrange", "simply",
+        -- (a participant's consent, the reason a run starts: "she's here and consented, start it back up")
+        "consent", "consented", "consents" },
     -- the people in the room, addressed ("ok observers, I'm going to start the clock", "ok folks, first one")
     audience = { "folks", "guys", "observers", "observer", "team", "gentlemen", "ladies", "y'all", "everybody",
         -- the same in Spanish and Portuguese, where instructors teach in English ("chicos, look:", "ok pessoal")
@@ -143,7 +150,7 @@ return {
         "sir", "madam", "ma'am" },
     -- chat shorthand and interjections of typed notes ("what's ryanair doing rn", "lol", "ugh", "thx")
     chat = { "rn", "atm", "asap", "lol", "lmao", "ugh", "argh", "meh", "oops", "tbh", "imo", "btw", "fyi", "plz",
-        "thx", "pls", "haha", "idk",
+        "thx", "pls", "haha", "idk", "tho", "tbf",
         -- a fault of the simulation given as the reason ("kill aza204 its bugged"), a break taken ("need coffee")
         "bugged", "buggy", "glitched", "glitchy",
         -- a programmer's look inside the simulation ("debug info on WJA661": its state shown)
@@ -257,6 +264,8 @@ return {
         -- a message said again, in Indian English as "I say again" is elsewhere ("Express India 1356, once again,
         -- descend 9000 feet"): never a condition
         "once again",
+        -- a part of the airspace a study is run in, in two words ("the high altitude en route block", as "en-route")
+        "en route",
         -- an aircraft handed to a teammate ("can you look after Logan 52B for me - ...")
         "look after",
         -- a demonstration's pointers to the audience ("watch the data block", "here's the fun part")
@@ -648,6 +657,10 @@ return {
   -- are you at FL300?", "are you at FL300, KLM12?")
   state_question = { opens = { "is", "are", "was", "were", "does", "do", "did", "has", "what", "how" },
                      with_is = { "what", "how" } },
+  -- interjections said before a question about a setting ("hmm wait is conflict detection even on rn?"): passed
+  -- over to find the question's first word, which decides whether the setting is asked about or switched
+  setting_question_interjections = { "hmm", "hm", "wait", "oh", "ooh", "ah", "hey", "well", "alright", "ok", "okay",
+                                     "so", "um", "uh", "erm", "ehm" },
   -- a pilot's question back to the controller, no instruction (G:question_back): "say again (the level)"
   -- with no value in its clause asks for a repeat; "confirm cleared FL200?", "confirm heading 270?" with a value
   -- asks whether a clearance stands. Not after `not_after` ("I say again 260" is the controller's own repeat).
@@ -1049,7 +1062,10 @@ return {
   -- "maybe 280 knots"), and a value said loosely ("ish", "about", "or so") is the value said
   trailing_hedges = { words = { "maybe", "perhaps", "probably", "possibly", "unsure" },
                       pairs = { { "not", "sure" }, { "i", "think" }, { "i", "guess" }, { "i", "believe" },
-                                { "not", "certain" } } },
+                                { "not", "certain" } },
+                      -- a loose value's mark closed by a question mark ("turn to like 200-ish?"): a value the speaker
+                      -- asks about, not one said loosely
+                      questioned = { "ish" } },
   -- the speaker's own stop after "until" in a fast-forward with no duration ("until I say stop", "until I tell
   -- you", "until further notice"): fast time with no end (FF); anything else after "until" is an event, asked
   ff_stopped = { "stop", "stopped", "say", "tell", "told", "notice", "advised", "advise", "otherwise" },

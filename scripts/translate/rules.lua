@@ -2131,9 +2131,11 @@ return function(intent, rule, words)
     local b = g:word(i - 1, "and") and g:word(i - 2, "ahead") and g:word(i - 3, "go") and i - 3 or i
     return g:alone_but(b, i + 2)
   end }
-  -- "could you start it again?": the clock, no aircraft named in the request
+  -- "could you start it again?", "start it up", "start it back up (and then KLM12 climb)": the clock, no aircraft
+  -- named before it for "it" to stand for
   rule { "start", "op", next = "it", when = function(g, i)
-    return g:word(i + 2, "again") and not g:has_ref(1, #g.t + 1, "aircraft")
+    return (g:word(i + 2, "again up") or (g:word(i + 2, "back") and g:word(i + 3, "up")))
+      and not g:has_ref(1, i, "aircraft")
   end }
   -- "set the speed of the simulation to factor 5 and start it": "it" the simulation named before, the clause after
   -- "and" or "then" closing the request, no aircraft named
@@ -2221,9 +2223,13 @@ return function(intent, rule, words)
   -- "step the sim 30 seconds", "run 2 minutes", "advance 60 s", "run fast for an hour": a duration straight
   -- after the verb (the sim named between, or nothing; "fast" and "for" before it) is how far to fast-forward
   -- ("sim step 0.5 s", "the simulation step 0.1 s": the step as a noun, the time step, is no verb)
-  rule { "run advance step", "ff", not_prev = { 1, "time" }, not_near = { 7, "real times faster x twice thrice" },
+  -- ("run it for 20 minutes real fast": "real" as "very" before "fast" names no rate)
+  rule { "run advance step", "ff", not_prev = { 1, "time" }, not_near = { 7, "times faster x twice thrice" },
          when = function(g, i)
     if g:word(i, "step") and g:word(i - 1, "the a sim simulation integration update") then return false end
+    for r = math.max(1, i - 7), math.min(#g.t, i + 7) do
+      if g:word(r, "real") and not g:word(r + 1, "fast quick quickly") then return false end
+    end
     local k = g:skip_fillers(i + 1)
     if g:word(k, "@sim it") then k = g:skip_fillers(k + 1) end  -- ("run it for 90 seconds")
     if g:word(k, "fast quickly ahead") then k = g:skip_fillers(k + 1) end
@@ -2270,10 +2276,12 @@ return function(intent, rule, words)
     return q ~= nil and q.b == g:skip_fillers(i + 2) and q.kind == "time" and not g:has_ref(1, #g.t + 1, "aircraft")
   end }
   rule { "skip", "ff", near = { 4, "ahead forward" } }  -- "skip one hour forward"
-  -- "skip 5 minutes": a time straight after it, no waypoint or aircraft named
+  -- "skip 5 minutes", "skip like 30 secs": a time straight after it (a loose one too), no waypoint or aircraft named
   rule { "skip", "ff", when = function(g, i)
-    local q = g:quantities(i + 1, math.min(#g.t + 1, i + 4))[1]
-    return q ~= nil and q.b == g:skip_fillers(i + 1) and q.kind == "time" and not g:has_ref(1, #g.t + 1, "aircraft")
+    local k = g:skip_fillers(i + 1)
+    if g:word(k, "@wait_hedges like") then k = g:skip_fillers(k + 1) end
+    local q = g:quantities(k, math.min(#g.t + 1, k + 3))[1]
+    return q ~= nil and q.b == k and q.kind == "time" and not g:has_ref(1, #g.t + 1, "aircraft")
   end }
   -- "play it forward 3 minutes", "roll the sim on 10 minutes", "step forward 30 s": the clock moved on
   -- by a time said after it, no aircraft named
@@ -2645,7 +2653,7 @@ return function(intent, rule, words)
   rule { "distance", "zone", prev = { 1, "safety" }, when = function(g, i)
     return g:word_in(1, #g.t + 1, "conflict conflicts detection") and not g:has_ref(1, #g.t + 1, "aircraft")
   end }
-  rule { "protected protection prot pz rpz hpz separation zone zoner zonedh radius", "zone" }  -- ("prot zone")
+  rule { "protected protection prot pz rpz hpz separation zone zones zoner zonedh radius", "zone" }  -- ("prot zone", "zones to 10 miles")
   rule { "sep", "zone", prev = { 1, "horizontal lateral vertical" } }  -- "horizontal sep back to 5nm"
   rule { "half", "zone", next = "height" }
   rule { "look", "dtlook", next = "ahead" }

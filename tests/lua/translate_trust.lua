@@ -13238,3 +13238,62 @@ do
   check_eq(ex("KLM12 reduce to 250 knots, no, rather 240 knots"), "SPD KLM12 240")
   asked(ex("KLM12 climb to FL340, better FL350"), "no correction marker")
 end
+
+-- Cycle 51 (f135): an interjection before a question about a setting ("hmm wait is conflict detection even on?")
+-- leaves it a question (the setting shown), never switched; said before the switch itself it still switches
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL200 250" })
+  check_eq(ex("oh wait, is conflict detection actually on?"), "ASAS")
+  check_eq(ex("hmm is asas even on rn?"), "ASAS")
+  check_eq(ex("hmm, switch conflict detection on"), "ASAS ON")
+end
+
+-- Cycle 51 (f135): "not just" / "not only" adds to what follows ("use vertical too, not just heading and speed"
+-- is RMETHV V/S); "not heading and speed" takes the horizontal resolutions away, which squawk cannot: asked
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL200 250" })
+  check_eq(ex("let resolutions go vertical too, not only heading changes"), "RMETHV V/S")
+  check_eq(ex("resolutions should be not only lateral"), "RMETHV V/S")
+  asked(ex("resolve with vertical, not with heading and speed"), "horizontal resolutions taken away")
+  check_eq(ex("resolutions horizontal only please"), "RMETHV OFF")
+end
+
+-- Cycle 51 (f135): a loose value closed by a question mark ("heading like 200-ish?") is asked; said loosely
+-- without one it is the value said
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL200 250" })
+  asked(ex("klm12 slow to 230ish?"), "a loose value asked about")
+  asked(ex("klm12 turn to like 140-ish?"), "a loose heading asked about")
+  check_eq(ex("klm12 slow to 230ish"), "SPD KLM12 230")
+end
+
+-- Cycle 51 (f135): "start it up" / "start it back up" starts the clock (OP) when no aircraft is named before it
+-- for "it" to stand for; "skip like 30 secs" and "run it for 20 minutes real fast" fast-forward that long
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL200 250" })
+  check_eq(ex("ok we're ready, start it up"), "OP")
+  check_eq(ex("start it back up and then KLM12 climb FL300"), "OP ; ALT KLM12 FL300")
+  asked(ex("KLM12 start it up"), "'it' is the aircraft named")
+  check_eq(ex("skip like 45 seconds"), "FF 45")
+  check_eq(ex("run it for 5 minutes real quick"), "FF 300")
+  asked(ex("run it for 5 minutes at real time"), "a rate and a duration")
+end
+
+-- Cycle 51 (f135): a chatty speaker's remarks beside an instruction carry none ("tho", "super aggressively",
+-- "nothing's really happening", "way too close", "she's consented", "en route"); a block altitude stays asked
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL200 250", "CRE KLM34 A320 52.2 4 090 FL220 250" })
+  check_eq(ex("KLM12 bank 20 degrees tho, it rolls super aggressively"), "BANK KLM12 20")
+  check_eq(ex("speed up the sim to 3x since nothing is happening"), "DTMULT 3")
+  check_eq(ex("KLM12 descend FL180, it and KLM34 are way too close"), "ALT KLM12 FL180")
+  check_eq(ex("he consented, so start it back up"), "OP")
+  asked(ex("KLM12 climb block FL250 to FL270"), "a block altitude")
+end
+
+-- Cycle 51 (f135): "how big is the protected zone rn" (no "?") shows the setting; "zones to 10 miles" sets it
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL200 250" })
+  check_eq(ex("how large is the protected zone atm"), "ZONER")
+  check_eq(ex("ok zones to 8 miles since it is en route"), "ZONER 8")
+  asked(ex("how big is KLM12"), "no setting named")
+end
