@@ -806,6 +806,10 @@ return {
     lower = { "alt_ft", -1 }, fastest = { "cas_kt", 1 }, faster = { "cas_kt", 1 }, quickest = { "cas_kt", 1 },
     quicker = { "cas_kt", 1 }, slowest = { "cas_kt", -1 }, slower = { "cas_kt", -1 } },
   compared_margin = { alt_ft = 100, cas_kt = 5 },
+  -- [deg] how far an aircraft's heading may lie from a cardinal point that describes it ("the one heading north":
+  -- less than this on either side; 45 keeps an aircraft on 135 out of both "south" and "east"); half of it from
+  -- an intercardinal point ("south-west"), a quarter from one between them ("north-north-east")
+  bearing_margin = 45,
   group_nouns = { "aircraft", "planes", "airplanes", "flights", "jets", "ones", "them", "all" },
   -- words that describe an aircraft before "from" and its airline ("the regional jet from Republic")
   aircraft_described = { "jet", "jets", "regional", "airliner", "one", "small", "big", "heavy", "little", "widebody",
