@@ -1879,6 +1879,42 @@ function m:bearing_refs()
   end
 end
 
+-- The aircraft flying described after "the" by when it was created: a group (compared_group), who created it
+-- or not, a verb of creating (lexicon.created_verbs) and a word of order (lexicon.created_order) after it or
+-- before the group ("the aircraft I created last", "the one we added first", "the last KLM I created", "the
+-- aircraft created most recently"). The last or first of the group in the order the traffic was created is the
+-- aircraft described (describe); with no word of order the words describe no aircraft here.
+function m:creation_refs()
+  local function order_at(k)  -- (true for the latest, false for the first, or nil; the token after it)
+    if self:word(k, "most") and self:word(k + 1, "recently") then return true, k + 2 end
+    local o = self.t[k] and L.created_order[self.t[k].text]
+    if o ~= nil then return o, k + 1 end
+    return nil, k
+  end
+  local i = 1
+  while i <= #self.t do
+    local latest, ids, e, v
+    if self:word(i, "the") and not self:word(i - 1, "@airline_context @aircraft_context @below @above") then
+      latest, v = order_at(i + 1)
+      ids, e = compared_group(self, v)
+      v = e and (self:word(e, "that which who") and e + 1 or e)
+      if v and self:word(v, "@created_by") then v = v + 1 end
+      if v and self:word(v, "have has had") then v = v + 1 end
+    end
+    if v and self:word(v, "@created_verbs") then
+      e = self:word(v + 1, "in") and v + 2 or v + 1  -- ("the one I put in last")
+      local after
+      after, e = order_at(e)
+      if latest == nil then latest = after end
+    end
+    if latest ~= nil and v and e > v and #ids > 0 then
+      i = describe(self, i, e, ids, { latest and ids[#ids] or ids[1] })
+    else
+      i = i + 1
+    end
+  end
+end
+
 -- Airline letters, flight digits and trailing letters of a callsign
 -- ("BAW96CA" -> "BAW", "96", "CA").
 local function airline_digits(id) return (id or ""):match("^(%a*)(%d*)(.*)$") end
