@@ -1915,6 +1915,38 @@ function m:creation_refs()
   end
 end
 
+-- An aircraft named after "the" by what it carries alone (lexicon.carried_described: "the cargo aircraft", "the
+-- freighter", "the charter flight"; an aircraft noun or "one" after the word, or a freighter): the traffic does
+-- not tell it, so it is asked about, never dropped while another aircraft said beside it is instructed.
+function m:carried_refs()
+  for i = 2, #self.t do
+    local e = self:word(i, "@carried_described") and self:word(i - 1, "the") and i + 1
+    if e and self:word(e, "@aircraft_nouns @group_nouns one jet jets") then e = e + 1 end
+    if e and (e > i + 1 or self:word(i, "freighter freighters")) and #self:refs_in(i - 1, e, "aircraft") == 0 then
+      return self:need(string.format("Which aircraft do you mean by '%s'? The traffic does not say what an "
+        .. "aircraft carries: please give its callsign.", self:raw(i - 1, e)))
+    end
+  end
+end
+
+-- An aircraft named by a description (type_refs' "the 777", described_refs, bearing_refs, creation_refs) that no
+-- command names, beside commands for others: asked about, never dropped ("define LOTUS ..., then send the 777
+-- there": the 777's instruction went unread). One named in a reason ("because the A350 goes through HAGIS") or
+-- compared with ("same as the A350") is traffic, no aircraft instructed.
+function m:described_uninstructed()
+  for _, r in ipairs(self.refs) do
+    if r.kind == "aircraft" and (r.by_type or r.by_description) and not r.false_start and not self:in_reason(r.b)
+        and not self:compared_with(r.b) then
+      local named = false
+      for _, line in ipairs(self.out) do named = named or line:find("%f[%w]" .. r.name .. "%f[%W]") ~= nil end
+      if not named then
+        return self:need(string.format("I have %s. What should '%s' (%s) do?", table.concat(self.out, " ; "),
+          self:raw(r.b, r.e), r.name))
+      end
+    end
+  end
+end
+
 -- Airline letters, flight digits and trailing letters of a callsign
 -- ("BAW96CA" -> "BAW", "96", "CA").
 local function airline_digits(id) return (id or ""):match("^(%a*)(%d*)(.*)$") end

@@ -816,6 +816,10 @@ return {
       "enter" },
   created_by = { "i", "we", "you", "i've", "we've", "you've" },
   created_order = { last = true, latest = true, recently = true, first = false, earliest = false },
+  -- what an aircraft carries, said after "the" to name it ("the cargo aircraft", "the freighter"): the traffic
+  -- tells no such thing, so the words are asked about (an airline or type said with them names the aircraft:
+  -- "the DHL cargo plane")
+  carried_described = { "cargo", "freighter", "freighters", "freight", "passenger", "charter" },
   -- [deg] how far an aircraft's heading may lie from a cardinal point that describes it ("the one heading north":
   -- less than this on either side; 45 keeps an aircraft on 135 out of both "south" and "east"); half of it from
   -- an intercardinal point ("south-west"), a quarter from one between them ("north-north-east")
