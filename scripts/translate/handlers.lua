@@ -159,9 +159,17 @@ function m:on_off(s)
   -- "drifting off its route, put it back on LNAV": switched back on, whatever went off before
   local back = self:find_word(b, s.e, "back")
   if back < s.e and self:word(back + 1, "on") then return 1 end
+  -- ("switch on the detection, but without resolution": "without" or "no" with only articles after it in the
+  -- segment, before the next instruction's word, switches that one off; "lnav off hdg 250" is LNAV's)
+  local function next_ones(k)
+    if not self:word(k, "without no") then return false end
+    local x = k + 1
+    while x < s.e and self:word(x, "the any a") do x = x + 1 end
+    return x == s.e and s.e <= #self.t and self:intent_at(s.e) ~= nil and self:intent_at(s.e) ~= false
+  end
   local function said(from, words)
     for k = from, s.e - 1 do
-      if self:word(k, words) and not self.noted[k] then return true end
+      if self:word(k, words) and not self.noted[k] and not next_ones(k) then return true end
     end
     return false
   end
