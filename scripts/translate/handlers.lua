@@ -1850,6 +1850,9 @@ end
 -- heading lies less than lexicon.bearing_margin degrees from the point fit: exactly one is the aircraft described
 -- (describe), none or several are asked about. The words are never a heading instructed.
 function m:bearing_refs()
+  local bound = false  -- (no verb of going and no "-bound" word: nothing to read)
+  for _, w in ipairs(self.words) do bound = bound or (w and w:sub(-5) == "bound") end
+  if not (bound or self:said("@compass_verbs")) then return end
   local i = 1
   while i <= #self.t do
     local b, ids, e, point = i, nil, nil, nil
@@ -1893,6 +1896,7 @@ end
 -- aircraft created most recently"). The last or first of the group in the order the traffic was created is the
 -- aircraft described (describe); with no word of order the words describe no aircraft here.
 function m:creation_refs()
+  if not self:said("@created_verbs") then return end  -- (no verb of creating: nothing to read)
   local function order_at(k)  -- (true for the latest, false for the first, or nil; the token after it)
     if self:word(k, "most") and self:word(k + 1, "recently") then return true, k + 2 end
     local o = self.t[k] and L.created_order[self.t[k].text]
