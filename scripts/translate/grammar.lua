@@ -10460,6 +10460,9 @@ function M.translate(text, world)
   g:airline_refs()
   g:type_refs()
   g:described_refs()
+  g:bearing_refs()
+  g:creation_refs()
+  g:carried_refs()
   g:prefix_refs()
   g:role_refs()
   g:false_starts()
@@ -10600,6 +10603,7 @@ function M.translate(text, world)
   if not g.ask and not g.leftover then g:uncarried_names() end
   if not g.ask and not g.leftover then g:unread_switch() end
   if not g.ask and not g.leftover then g:unaccounted() end
+  if not g.ask and not g.leftover and #g.out > 0 then g:described_uninstructed() end
   if not g.ask and not g.leftover and #g.out > 0 then g:delay_left() end
   if not g.ask and not g.leftover and g:values_only() then g:passage_left() end
   if not g.ask and not g.leftover and g:values_only() then g:going_on_left() end

@@ -159,9 +159,17 @@ function m:on_off(s)
   -- "drifting off its route, put it back on LNAV": switched back on, whatever went off before
   local back = self:find_word(b, s.e, "back")
   if back < s.e and self:word(back + 1, "on") then return 1 end
+  -- ("switch on the detection, but without resolution": "without" or "no" with only articles after it in the
+  -- segment, before the next instruction's word, switches that one off; "lnav off hdg 250" is LNAV's)
+  local function next_ones(k)
+    if not self:word(k, "without no") then return false end
+    local x = k + 1
+    while x < s.e and self:word(x, "the any a") do x = x + 1 end
+    return x == s.e and s.e <= #self.t and self:intent_at(s.e) ~= nil and self:intent_at(s.e) ~= false
+  end
   local function said(from, words)
     for k = from, s.e - 1 do
-      if self:word(k, words) and not self.noted[k] then return true end
+      if self:word(k, words) and not self.noted[k] and not next_ones(k) then return true end
     end
     return false
   end
@@ -1642,7 +1650,7 @@ local function compared_group(self, k)
   local count = COUNTS[self.t[k] and self.t[k].text or ""]
   if count then k = k + 1 end
   local t = self.t[k]
-  if not t or t.kind ~= "word" then return nil end
+  if not t or (t.kind ~= "word" and t.kind ~= "number") then return nil end  -- ("the eastbound 737")
   local function fleet_where(fits)
     local out = {}
     for _, a in ipairs(self.fleet) do
@@ -1662,10 +1670,91 @@ local function compared_group(self, k)
     if icao then return self:airline_fleet(icao, BRANDS[stem]), noun_after(k + 1), count end
   end
   local test, e = self:type_said(k)
+  if test and self:word(e, "s") then e = e + 1 end  -- ("the two 737s", said "737 s")
   if test then return fleet_where(function(a) return a.type ~= nil and test(a.type:upper()) end), noun_after(e), count end
+  -- ("the two A320s": a family or designator with its plural's "s")
+  local stem = t.text:match("^(%w+%d)s$")
+  local family = stem and (families()[stem] or families()[stem:sub(2)])
+  if family then
+    return fleet_where(function(a) return a.type ~= nil and family[a.type:upper()] == true end), noun_after(k + 1), count
+  end
   local icao, ae, codes = self:airline_at(k)
   if icao then return self:airline_fleet(icao, codes), noun_after(ae), count end
   return nil
+end
+
+-- The words [b, e) that describe aircraft flying (described_refs, bearing_refs), `ids` the group they were picked
+-- from and `picked` those that fit: the picked aircraft are references (kind "aircraft", by_description = true) in
+-- place of any heard in the words, which are explained; none picked is asked about, naming the group. With
+-- aircraft named by callsign elsewhere in the request, the words describe one of them ("turn ACA881 180, it's
+-- the one at FL370": explained, no second reference; one not named is asked about, never added). Returns e.
+local function describe(self, b, e, ids, picked, outer)
+  local named, others = {}, false
+  for _, r in ipairs(self.refs) do
+    if r.kind == "aircraft" and r.exists and not r.by_description and (r.b >= e or r.e <= b) then
+      named[r.name], others = true, true
+    end
+  end
+  for _, id in ipairs(others and picked or {}) do
+    if not named[id] then picked = nil break end
+  end
+  if not (picked and #picked > 0) then
+    self:need(string.format("Which aircraft do you mean by '%s'? Please give its callsign%s.", self:raw(b, e),
+      ids and #ids > 0 and (" (it may be " .. table.concat(ids, ", ") .. ")") or ""))
+    return e
+  end
+  if outer then  -- (the group picked from, "of the two A320s,", names no aircraft itself)
+    for n = #self.refs, 1, -1 do
+      if self.refs[n].b >= outer.b and self.refs[n].e <= outer.e then table.remove(self.refs, n) end
+    end
+    self:explain(outer.b, outer.e)
+    self:mark_used(outer.b, outer.e)
+  end
+  if not others then
+    for n = #self.refs, 1, -1 do
+      if self.refs[n].b >= b and self.refs[n].e <= e then table.remove(self.refs, n) end
+    end
+    local at = 1
+    while self.refs[at] and self.refs[at].b < b do at = at + 1 end
+    for n, id in ipairs(picked) do
+      table.insert(self.refs, at + n - 1, { kind = "aircraft", name = id, b = b, e = e, exists = true, by_description = true })
+    end
+  end
+  self:explain(b, e)
+  self:mark_used(b, e)
+  return e
+end
+
+-- True when the token at k is a comma or a colon.
+local function clause_mark(self, k) return self.t[k] ~= nil and (self.t[k].text == "," or self.t[k].text == ":") end
+
+-- The ids of `ids` that are in `group` too, in their order.
+local function within(ids, group)
+  local set, out = {}, {}
+  for _, id in ipairs(group) do set[id] = true end
+  for _, id in ipairs(ids) do
+    if set[id] then out[#out + 1] = id end
+  end
+  return out
+end
+
+-- The group said before the words at b, in their sentence, that they pick from: "of the two A320s" or "the two
+-- 737s" (a count needed after "the") opening a clause and ending at a comma or colon, "please" or fillers before
+-- it ("Of the two KLM aircraft, the higher one ...", "The two 737s please: the eastbound one ..."). Its ids
+-- (compared_group), the count said and its words' span {b, e}, or nil.
+local function outer_group(self, b)
+  local o = b - 1
+  while o >= 1 and not (self.t[o].kind == "punct" and not clause_mark(self, o)) do
+    local opens = o == 1 or self.t[o - 1].kind == "punct" or self:word(o - 1, "and")
+    local k = self:word(o, "of") and (self:word(o + 1, "the") and o + 2 or o + 1)
+      or self:word(o, "the") and COUNTS[self.words[o + 1] or ""] and o + 1
+    local ids, e, count
+    if opens and k then ids, e, count = compared_group(self, k) end
+    local x = e
+    while x and x < b and (self.t[x].filler or self:word(x, "please")) do x = x + 1 end
+    if x and x < b and clause_mark(self, x) then return ids, count, { b = o, e = x + 1 } end
+    o = o - 1
+  end
 end
 
 -- The aircraft flying described after "the" by how it compares with others or by its level: a word of
@@ -1688,7 +1777,7 @@ function m:described_refs()
   while i <= #self.t do
     local b, measure = i - 1, self.t[i].kind == "word" and L.compared_measures[self.t[i].text]
     local the = self:word(b, "the") and not self:word(b - 1, "@airline_context @aircraft_context @below @above")
-    local ids, e, count, picked
+    local ids, e, count, picked, outer
     if the and measure then
       if self:word(i + 1, "of") then
         local k = self:word(i + 2, "the both") and i + 3 or i + 2
@@ -1696,6 +1785,16 @@ function m:described_refs()
         if self:word(i + 2, "both") then count = 2 end
       elseif not self.t[i].text:match("er$") then
         ids, e, count = compared_group(self, i + 1)
+      end
+      -- ("of the two A320s, ... the lower one": the group said before; "the lowest, climb ...": every aircraft)
+      local o_ids, o_count
+      if not self:word(i + 1, "of") then o_ids, o_count, outer = outer_group(self, b) end
+      if o_ids then
+        ids, count = ids and within(ids, o_ids) or o_ids, o_count
+        e = e or (self:word(i + 1, "one") and i + 2 or i + 1)
+      elseif not ids and not self.t[i].text:match("er$") and clause_mark(self, i + 1) then
+        ids, e = {}, i + 1
+        for _, a in ipairs(self.fleet) do ids[#ids + 1] = a.id end
       end
       local field, sign, values = measure[1], measure[2], {}
       for _, id in ipairs(ids or {}) do
@@ -1721,37 +1820,144 @@ function m:described_refs()
         if #ids == 0 then ids = nil end
       end
     end
-    -- (with aircraft named by callsign elsewhere in the request, the words describe one of them, "turn ACA881 180,
-    -- it's the one at FL370": explained, no second reference; one not named is asked about, never added)
-    local named, others = {}, false
-    for _, r in ipairs(e and self.refs or {}) do
-      if r.kind == "aircraft" and r.exists and (r.b >= e or r.e <= b) then named[r.name], others = true, true end
-    end
-    for _, id in ipairs(others and picked or {}) do
-      if not named[id] then picked = nil break end
-    end
-    if e and not (picked and #picked > 0) then
-      self:need(string.format("Which aircraft do you mean by '%s'? Please give its callsign%s.", self:raw(b, e),
-        ids and #ids > 0 and (" (it may be " .. table.concat(ids, ", ") .. ")") or ""))
-      i = e
-    elseif e and others then
-      self:explain(b, e)
-      self:mark_used(b, e)
-      i = e
-    elseif e then
-      for n = #self.refs, 1, -1 do
-        if self.refs[n].b >= b and self.refs[n].e <= e then table.remove(self.refs, n) end
+    i = e and describe(self, b, e, ids, picked, outer) or i + 1
+  end
+end
+
+-- The compass point said from token k: one word ("south", "southwest"), two or three with or without hyphens
+-- between ("south-east", "north north-east"); its degrees (0 for north) and the token after it, or nil.
+local function point_said(self, k)
+  local words, last = {}, nil
+  while #words < 3 and self.t[k] and (self.t[k].text == "-" and #words > 0 or L.compass[self.t[k].text]) do
+    if self.t[k].text ~= "-" then words[#words + 1], last = self.t[k].text, k end
+    k = k + 1
+  end
+  if not last then return nil end
+  -- (the longest run of words that names a point: "south east" 135, "west" alone before "north" of another)
+  for n = #words, 1, -1 do
+    local deg = compass(words[1], words[2] and n >= 2 and words[2] or nil, n >= 3 and words[3] or nil)
+    if deg then
+      local e = last + 1
+      for _ = n + 1, #words do
+        repeat e = e - 1 until self.t[e].text ~= "-"
       end
-      local at = 1
-      while self.refs[at] and self.refs[at].b < b do at = at + 1 end
-      for n, id in ipairs(picked) do
-        table.insert(self.refs, at + n - 1, { kind = "aircraft", name = id, b = b, e = e, exists = true, by_description = true })
+      return deg % 360, e
+    end
+  end
+end
+
+-- The aircraft flying described after "the" by the way it flies: a group (compared_group: "one", "aircraft", a
+-- type, an airline) and a verb of going (lexicon.compass_verbs, "that is" or "which is" before it) with a compass
+-- point ("the one heading north", "the Embraer flying south-east", "the aircraft that is going west"), or a
+-- "-bound" word before the group ("the eastbound 737", "the westbound one"). The aircraft of the group whose
+-- heading lies less than lexicon.bearing_margin degrees from the point fit: exactly one is the aircraft described
+-- (describe), none or several are asked about. The words are never a heading instructed.
+function m:bearing_refs()
+  local bound = false  -- (no verb of going and no "-bound" word: nothing to read)
+  for _, w in ipairs(self.words) do bound = bound or (w and w:sub(-5) == "bound") end
+  if not (bound or self:said("@compass_verbs")) then return end
+  local i = 1
+  while i <= #self.t do
+    local b, ids, e, point = i, nil, nil, nil
+    if self:word(i, "the") and not self:word(i - 1, "@airline_context @aircraft_context @below @above") then
+      local bound = self.t[i + 1] and self.t[i + 1].kind == "word" and self.t[i + 1].text:match("^(%a+)bound$")
+      if bound and L.compass[bound] then
+        ids, e = compared_group(self, i + 2)
+        point = e and L.compass[bound]
+      else
+        ids, e = compared_group(self, i + 1)
+        local v = e and (self:word(e, "that which") and self:word(e + 1, "is") and e + 2 or e)
+        if v and self:word(v, "@compass_verbs") then
+          point, e = point_said(self, self:word(v + 1, "due") and v + 2 or v + 1)
+        end
       end
-      self:explain(b, e)
-      self:mark_used(b, e)
-      i = e
+    end
+    local o_ids, _, outer = nil, nil, nil
+    if point and e then o_ids, _, outer = outer_group(self, b) end
+    if o_ids then ids = within(ids, o_ids) end  -- ("of the two Air France, the one heading west")
+    if point and e then
+      -- (a cardinal point, 45 degrees either side; an intercardinal, 22.5; a point between them, 11.25)
+      local margin = L.bearing_margin / (point % 90 == 0 and 1 or point % 45 == 0 and 2 or 4)
+      local fits = {}
+      for _, a in ipairs(self.fleet) do
+        local in_group = false
+        for _, id in ipairs(ids) do in_group = in_group or id == a.id end
+        if in_group and a.hdg_deg and math.abs((a.hdg_deg - point + 540) % 360 - 180) < margin then
+          fits[#fits + 1] = a.id
+        end
+      end
+      i = describe(self, b, e, #fits > 0 and fits or ids, #fits == 1 and fits or nil, outer)
     else
       i = i + 1
+    end
+  end
+end
+
+-- The aircraft flying described after "the" by when it was created: a group (compared_group), who created it
+-- or not, a verb of creating (lexicon.created_verbs) and a word of order (lexicon.created_order) after it or
+-- before the group ("the aircraft I created last", "the one we added first", "the last KLM I created", "the
+-- aircraft created most recently"). The last or first of the group in the order the traffic was created is the
+-- aircraft described (describe); with no word of order the words describe no aircraft here.
+function m:creation_refs()
+  if not self:said("@created_verbs") then return end  -- (no verb of creating: nothing to read)
+  local function order_at(k)  -- (true for the latest, false for the first, or nil; the token after it)
+    if self:word(k, "most") and self:word(k + 1, "recently") then return true, k + 2 end
+    local o = self.t[k] and L.created_order[self.t[k].text]
+    if o ~= nil then return o, k + 1 end
+    return nil, k
+  end
+  local i = 1
+  while i <= #self.t do
+    local latest, ids, e, v
+    if self:word(i, "the") and not self:word(i - 1, "@airline_context @aircraft_context @below @above") then
+      latest, v = order_at(i + 1)
+      ids, e = compared_group(self, v)
+      v = e and (self:word(e, "that which who") and e + 1 or e)
+      if v and self:word(v, "@created_by") then v = v + 1 end
+      if v and self:word(v, "have has had") then v = v + 1 end
+    end
+    if v and self:word(v, "@created_verbs") then
+      e = self:word(v + 1, "in") and v + 2 or v + 1  -- ("the one I put in last")
+      local after
+      after, e = order_at(e)
+      if latest == nil then latest = after end
+    end
+    if latest ~= nil and v and e > v and #ids > 0 then
+      i = describe(self, i, e, ids, { latest and ids[#ids] or ids[1] })
+    else
+      i = i + 1
+    end
+  end
+end
+
+-- An aircraft named after "the" by what it carries alone (lexicon.carried_described: "the cargo aircraft", "the
+-- freighter", "the charter flight"; an aircraft noun or "one" after the word, or a freighter): the traffic does
+-- not tell it, so it is asked about, never dropped while another aircraft said beside it is instructed.
+function m:carried_refs()
+  for i = 2, #self.t do
+    local e = self:word(i, "@carried_described") and self:word(i - 1, "the") and i + 1
+    if e and self:word(e, "@aircraft_nouns @group_nouns one jet jets") then e = e + 1 end
+    if e and (e > i + 1 or self:word(i, "freighter freighters")) and #self:refs_in(i - 1, e, "aircraft") == 0 then
+      return self:need(string.format("Which aircraft do you mean by '%s'? The traffic does not say what an "
+        .. "aircraft carries: please give its callsign.", self:raw(i - 1, e)))
+    end
+  end
+end
+
+-- An aircraft named by a description (type_refs' "the 777", described_refs, bearing_refs, creation_refs) that no
+-- command names, beside commands for others: asked about, never dropped ("define LOTUS ..., then send the 777
+-- there": the 777's instruction went unread). One named in a reason ("because the A350 goes through HAGIS") or
+-- compared with ("same as the A350") is traffic, no aircraft instructed.
+function m:described_uninstructed()
+  for _, r in ipairs(self.refs) do
+    if r.kind == "aircraft" and (r.by_type or r.by_description) and not r.false_start and not self:in_reason(r.b)
+        and not self:compared_with(r.b) then
+      local named = false
+      for _, line in ipairs(self.out) do named = named or line:find("%f[%w]" .. r.name .. "%f[%W]") ~= nil end
+      if not named then
+        return self:need(string.format("I have %s. What should '%s' (%s) do?", table.concat(self.out, " ; "),
+          self:raw(r.b, r.e), r.name))
+      end
     end
   end
 end

@@ -853,8 +853,26 @@ return {
   -- compared ("the slowest of the aircraft", "the faster of the two planes")
   compared_measures = { highest = { "alt_ft", 1 }, higher = { "alt_ft", 1 }, lowest = { "alt_ft", -1 },
     lower = { "alt_ft", -1 }, fastest = { "cas_kt", 1 }, faster = { "cas_kt", 1 }, quickest = { "cas_kt", 1 },
-    quicker = { "cas_kt", 1 }, slowest = { "cas_kt", -1 }, slower = { "cas_kt", -1 } },
-  compared_margin = { alt_ft = 100, cas_kt = 5 },
+    quicker = { "cas_kt", 1 }, slowest = { "cas_kt", -1 }, slower = { "cas_kt", -1 },
+    -- (where it is: "the easternmost aircraft", "the northernmost one")
+    northernmost = { "lat", 1 }, southernmost = { "lat", -1 }, easternmost = { "lon", 1 }, westernmost = { "lon", -1 } },
+  -- (lat, lon: degrees, about a mile)
+  compared_margin = { alt_ft = 100, cas_kt = 5, lat = 0.02, lon = 0.02 },
+  -- an aircraft described by when it was created ("the aircraft I created last", "the first one we added", "the
+  -- one created most recently"): the verbs (as the lexer reads them: "created" is "create"), the people who
+  -- create, and the words of order (true: the latest)
+  created_verbs = { "create", "created", "make", "made", "add", "added", "spawn", "spawned", "generate", "put", "place",
+      "enter" },
+  created_by = { "i", "we", "you", "i've", "we've", "you've" },
+  created_order = { last = true, latest = true, recently = true, first = false, earliest = false },
+  -- what an aircraft carries, said after "the" to name it ("the cargo aircraft", "the freighter"): the traffic
+  -- tells no such thing, so the words are asked about (an airline or type said with them names the aircraft:
+  -- "the DHL cargo plane")
+  carried_described = { "cargo", "freighter", "freighters", "freight", "passenger", "charter" },
+  -- [deg] how far an aircraft's heading may lie from a cardinal point that describes it ("the one heading north":
+  -- less than this on either side; 45 keeps an aircraft on 135 out of both "south" and "east"); half of it from
+  -- an intercardinal point ("south-west"), a quarter from one between them ("north-north-east")
+  bearing_margin = 45,
   group_nouns = { "aircraft", "planes", "airplanes", "flights", "jets", "ones", "them", "all" },
   -- words that describe an aircraft before "from" and its airline ("the regional jet from Republic")
   aircraft_described = { "jet", "jets", "regional", "airliner", "one", "small", "big", "heavy", "little", "widebody",

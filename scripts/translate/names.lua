@@ -601,6 +601,9 @@ local names = {
     YVR = "CYVR", MEX = "MMMX", GRU = "SBGR", EZE = "SAEZ", SCL = "SCEL", BOG = "SKBO", LIM = "SPJC",
   },
   common = {
+    -- cargo groups by their name, each a brand below ("the DHL", "the ASL")
+    { "dhl", "BCS" },
+    { "asl", "TAY" },
     { "ba", "BAW" },
     { "british airways", "BAW" },
     { "british", "BAW" },
@@ -654,6 +657,11 @@ local names = {
     { "jetsmart", "JAT", "JES", "JZR" },  -- (JetSMART, JetSMART Argentina, JetSMART Peru)
     { "sky", "SKU", "SKX" },  -- (Sky Airline, Sky Airline Peru)
     { "jetstar", "JST", "JSA", "JJP" },  -- (Jetstar Airways, Jetstar Asia, Jetstar Japan)
+    -- cargo airlines known by their group's name, none of them telephony: "the DHL" (European Air Transport
+    -- Leipzig, DHL Air UK, DHL Aero Expreso, DHL International, and AStar's DHL), "the ASL" (ASL Airlines
+    -- Belgium, Ireland, France; ASL typed is Air Serbia's designator too, so either flying fits)
+    { "dhl", "BCS", "DHK", "DAE", "DHX", "DHL", shared = true },
+    { "asl", "TAY", "ABR", "FPO", "ASL", shared = true },
   },
   designators = { "B712", "B722", "B733", "B734", "B735", "B736", "B737", "B738", "B739", "B744", "B748", "B752",
     "B753", "B762", "B763", "B764", "B772", "B773", "B77W", "B77L", "B788", "B789", "B78X", "B38M", "B39M", "B3XM",

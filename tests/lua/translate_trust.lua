@@ -13297,3 +13297,47 @@ do
   check_eq(ex("ok zones to 8 miles since it is en route"), "ZONER 8")
   asked(ex("how big is KLM12"), "no setting named")
 end
+
+-- Cycle 51 (f138): an aircraft described by the way it flies ("the one heading north", "the eastbound 737"), by
+-- where it is ("the easternmost aircraft"), by when it was created ("the aircraft I created last") or picked from
+-- a group said before ("of the two A320s, the lower one", "the lowest, ..."): one fits -> that aircraft, several
+-- or none -> asked; the words are never a heading instructed
+do
+  local _, ex = scene({ "CRE AAA11 A320 52.0 4.0 020 FL240 280", "CRE BBB22 A320 52.5 4.5 200 FL300 250",
+    "CRE CCC33 B738 52.2 5.0 160 FL120 250", "CRE DDD44 B738 51.8 3.6 100 FL200 240" })
+  check_eq(ex("the one flying north, climb FL260"), "ALT AAA11 FL260")
+  check_eq(ex("the aircraft heading east please descend FL180"), "ALT DDD44 FL180")
+  check_eq(ex("the southbound 737, reduce 230 knots"), "SPD CCC33 230")
+  asked(ex("the one heading south, reduce 230 knots"), "two aircraft head south (200 and 160)")
+  asked(ex("the one heading south-west, climb FL320"), "none within 22.5 degrees of south-west (200, 160)")
+  check_eq(ex("of the two A320s, could the higher one descend FL280"), "ALT BBB22 FL280")
+  check_eq(ex("of the two 737s, please slow the faster one to 220 knots"), "SPD CCC33 220")
+  asked(ex("of the three A320s, the lower one descend FL200"), "the count said is not the group's size")
+  check_eq(ex("the lowest, climb FL140"), "ALT CCC33 FL140")
+  check_eq(ex("the easternmost aircraft turn left heading 090"), "HDG CCC33 90 LEFT")
+  check_eq(ex("the southernmost, descend FL190"), "ALT DDD44 FL190")
+  check_eq(ex("the aircraft I created last, delete it"), "DEL DDD44")
+  check_eq(ex("please show the position of the one we added first"), "POS AAA11")
+  asked(ex("the aircraft I created, climb FL300"), "no word of order: which one")
+end
+
+-- Cycle 51 (f138): "the cargo aircraft", "the freighter" are asked (the traffic tells no cargo), never dropped beside
+-- another aircraft instructed; "the DHL", "the ASL" are cargo groups' names; an aircraft described that no command
+-- names is asked
+do
+  local _, ex = scene({ "CRE BEL94H AT76 50.60 3.30 090 FL110 210", "CRE BCS5TG A306 50.70 4.60 240 FL070 230",
+    "CRE TAY3LK B734 50.70 4.90 090 FL100 250" })
+  asked(ex("please delete the ATR and the cargo aircraft"), "the cargo aircraft is not in the traffic's data")
+  asked(ex("the freighter, climb FL200"), "a freighter is not in the traffic's data")
+  check_eq(ex("the DHL cargo plane, descend to 5000 feet"), "ALT BCS5TG 5000")
+  check_eq(ex("the ASL, climb FL150"), "ALT TAY3LK FL150")
+  asked(ex("define waypoint LOTUS at 50.8 N 4.1 E and then send the ATR there"), "the ATR's instruction unread")
+end
+
+-- Cycle 51 (f138): "switch on X, but without Y": "without" switches Y off, never X
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL200 250" })
+  local out = ex("please switch on the conflict detection, but without resolution")
+  check(type(out) == "string" and not out:find("ASAS OFF", 1, true), "detection switched on, not off")
+  check_eq(ex("klm12 lnav off hdg 250"), "LNAV KLM12 OFF ; HDG KLM12 250")
+end
