@@ -6286,13 +6286,13 @@ function G:known_word(i) return self.t[i] ~= nil and self.t[i].kind == "word" an
 function G:meaning_carried(i, kinds)
   local text, nx = self.t[i].text, self:skip_fillers(i + 1)
   -- "before we add any traffic", "until I say stop", "before creating anything": the speaker's own next
-  -- step, which a command run now precedes; "when you get a sec": the listener's convenience
-  -- (never "when you reach it", "once you get there", "when you're level", "when you're down a bit": the level
-  -- reached, a condition)
+  -- step, which a command run now precedes; "when you get a sec": the listener's convenience (lexicon.convenience;
+  -- never "when you reach it", "when you're level": the level reached, a condition; never "when you are with the
+  -- tower", "once you see the field": a unit or an event squawk does not model, asked)
   local who = self.t[nx] and self.t[nx].kind == "word" and self.t[nx].text
   if who and (((text == "before" or text == "until") and (PERSONS[who] or who:match("%a%aing$")))
       or ((text == "when" or text == "whenever" or text == "once") and who:match("^you")
-        and not self:word_in(nx + 1, math.min(nx + 4, #self.t + 1), "reach reaches reaching there level lvl down up below above through past slowed passing passed hit crossing")
+        and self:word_in(nx + 1, math.min(nx + 5, #self.t + 1), "@convenience")
         and #self:quantities(nx + 1, math.min(nx + 5, #self.t + 1)) == 0)) then
     return true
   end

@@ -637,6 +637,12 @@ return {
   condition_lead = { "fly", "turn", "proceed", "route", "resume", "own", "navigation", "then", "set" },
   -- before the level an aircraft leaves, said with the one it is cleared to ("leaving FL260 for FL200")
   level_left = { "leaving", "passing", "vacating" },
+  -- the listener's convenience after "when you", "once you" ("when you get a sec", "once you have a moment",
+  -- "when you're free"): one of these among the four words after "you" makes the clause a courtesy, explained
+  -- (G:meaning_carried); any other "when you ..." ("when you are with the tower", "once you see the field") is a
+  -- condition squawk reads only of a level, speed, place or distance, else asked
+  convenience = { "sec", "secs", "second", "seconds", "moment", "minute", "chance", "time", "ready", "free", "able",
+                  "can", "could" },
   -- a climb or descent left to the pilot ("descend when ready"): said with no level, asked about
   discretion = { "when ready", "when able", "when you're ready", "at pilot's discretion", "at your discretion",
                  "at your own discretion", "at own discretion", "pilot's discretion" },

@@ -13341,3 +13341,16 @@ do
   check(type(out) == "string" and not out:find("ASAS OFF", 1, true), "detection switched on, not off")
   check_eq(ex("klm12 lnav off hdg 250"), "LNAV KLM12 OFF ; HDG KLM12 250")
 end
+
+
+-- Cycle 51 (fhz): a condition "when you ..." of a unit or an event squawk does not model is asked, never dropped
+-- (only the listener's convenience, "when you get a sec", is a courtesy)
+do
+  local _, ex = scene({ "CRE AEA21 A320 52 4 90 FL200 250" })
+  asked(ex("AEA21 when you are with the tower descend FL100"), "a unit, no condition squawk reads")
+  asked(ex("AEA21 descend FL100 when you are with approach"), "a unit, said after")
+  asked(ex("AEA21 when you have the traffic in sight descend FL100"), "an event squawk does not model")
+  asked(ex("AEA21 once you see the field climb FL300"), "an event squawk does not model")
+  check_eq(ex("AEA21 when you get a sec descend FL100"), "ALT AEA21 FL100")
+  check_eq(ex("AEA21 descend FL100 once you have a moment"), "ALT AEA21 FL100")
+end
