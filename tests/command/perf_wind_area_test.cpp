@@ -164,6 +164,32 @@ TEST_CASE("WIND refuses speeds physics does not give (issue 52); GETWIND stays i
   }
 }
 
+// BlueSky's WIND takes profile altitudes as 'float/alt' and multiplies them by ft
+// (traffic/windsim.py L12, L43): a plain number is feet, but an FL value is first
+// parsed to metres by txt2alt (FL300 -> 9144) and those metres are then read as feet
+// (9144 ft = 2787 m). GETWIND's altitude is a plain 'alt' (FL200 = 6096 m).
+// Expected strings recorded from BlueSky 22fdf9e via shared/bluesky_ref/run_bluesky.py.
+TEST_CASE("WIND profile altitudes as BlueSky reads them: feet, and FL as its metres in feet") {
+  Stack s(0);
+  SUBCASE("feet: FL200 lies between the layers") {
+    REQUIRE(s.exec("WIND 52 4 10000 250 20 30000 270 60"));
+    CHECK(s.exec("GETWIND 52 4 FL200").value() == "WIND AT 52, 4: 265/40");
+    CHECK(s.exec("GETWIND 52 4 6000").value() == "WIND AT 52, 4: 250/20");
+  }
+  SUBCASE("FL: the layers sit at 929 m and 2787 m, so FL200 gets the top layer's wind") {
+    REQUIRE(s.exec("WIND 52 4 FL100 250 20 FL300 270 60"));
+    CHECK(s.exec("GETWIND 52 4 FL200").value() == "WIND AT 52, 4: 270/60");
+    CHECK(s.exec("GETWIND 52 4 6000").value() == "WIND AT 52, 4: 265/39");
+    CHECK(s.exec("GETWIND 52 4 1000").value() == "WIND AT 52, 4: 250/20");
+  }
+  SUBCASE("mixed: 10000 ft (3048 m) above FL300 (2787 m) is not increasing and is refused") {
+    // BlueSky accepts it and hands the unsorted altitudes to numpy.interp, whose
+    // result is undefined for them; squawk refuses and leaves the field empty.
+    CHECK(!s.exec("WIND 52 4 10000 250 20 FL300 270 60"));
+    CHECK(s.sim().wind().dim() == 0);
+  }
+}
+
 TEST_CASE("a deadline stops a burst of queued commands inside one instant (--max-time)") {
   Stack s(0);
   REQUIRE(s.exec("CRE KL1 B738 52 4 90 FL200 250"));
