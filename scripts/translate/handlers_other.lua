@@ -1614,6 +1614,23 @@ return function(H, f, compass)
           end
           if large and #large > 0 then ids = large end
         end
+        -- (a name that a smaller field bears whole, and a large airport's name within L.city_nm of it holds among its
+        -- words, is either: "Changi" is WSAC "CHANGI AIR BASE" or WSSS "SINGAPORE CHANGI INTL", asked)
+        local with = self.world.airports_with_words
+        if #ids > 0 and list == named and class and with and locate then
+          local large, known = {}, {}
+          for _, id in ipairs(ids) do
+            known[id] = true
+            if class(id) == "LARGE" then large = nil break end
+          end
+          for _, id in ipairs(large and ids or {}) do
+            local lat, lon = locate(id)
+            for _, x in ipairs(lat and with(phrase, lat, lon, L.city_nm) or {}) do
+              if class(x) == "LARGE" and not known[x] then large[#large + 1], known[x] = x, true end
+            end
+          end
+          for _, x in ipairs(large or {}) do ids[#ids + 1] = x end
+        end
         if #ids == 0 and L.city_airports[phrase] then
           ids = kept(list(L.city_airports[phrase], ...))
           local large = {}

@@ -12905,12 +12905,12 @@ do
 end
 
 -- Cycle 50 (g132w): an airport said by a name that opens with a short capitalised word ("New Chitose") is the
--- airport of the whole name, not the one bearing its last word alone
+-- airport of the whole name, not the one bearing its last word alone (that name alone is either)
 do
   local _, ex = navscene({ "CRE ANA63 B788 42.85 141.10 090 9000 240" }, "an airport's full name")
   if ex then
     check_eq(ex("ANA63, destination New Chitose."), "DEST ANA63 RJCC")
-    check_eq(ex("ANA63 destination Chitose"), "DEST ANA63 RJCJ")
+    check_eq(ex("ANA63 destination Chitose"), "ASK Which airport is 'chitose': RJCJ or RJCC?")
   end
 end
 
@@ -13353,4 +13353,19 @@ do
   asked(ex("AEA21 once you see the field climb FL300"), "an event squawk does not model")
   check_eq(ex("AEA21 when you get a sec descend FL100"), "ALT AEA21 FL100")
   check_eq(ex("AEA21 descend FL100 once you have a moment"), "ALT AEA21 FL100")
+end
+
+-- Cycle 51 (lead): a name a smaller field bears whole that a large airport's name also holds ("Changi": WSAC
+-- "CHANGI AIR BASE" or WSSS "SINGAPORE CHANGI INTL") is asked, never the air base; an airline's name that a sister
+-- airline's name begins ("AirAsia", "AirAsia X") with both flying is asked
+do
+  local _, ex = navscene({ "CRE CPA733 A333 1.6 104.3 230 FL120 250" }, "a name an air base bears whole")
+  if ex then
+    asked(ex("CPA733, when 15 miles from Changi, reduce to 180 knots"), "the air base or the airport")
+    check_eq(ex("CPA733 destination WSSS"), "DEST CPA733 WSSS")
+  end
+  _, ex = scene({ "CRE AXM5106 A320 4.9 116.6 300 FL120 260", "CRE XAX522 A333 6.8 115.0 160 FL300 290" })
+  check_eq(ex("the AirAsia one, descend to FL100"), "ASK Which AirAsia: AXM5106 or XAX522?")
+  check_eq(ex("AirAsia X 522, descend to FL100"), "ALT XAX522 FL100")
+  check_eq(ex("AirAsia 5106 descend FL100"), "ALT AXM5106 FL100")
 end
