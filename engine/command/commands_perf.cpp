@@ -94,12 +94,18 @@ void add_perf_commands(std::vector<CommandDecl>& out) {
                  "LEGACY). Without arguments shows the model in use.",
                  {"PERF OPENAP", "PERF OPENAP /usr/lib/python3/dist-packages/openap/data", "PERF CLASS"}, perf,
                  {}});
-  out.push_back({"WIND", {}, "latlon,[float/alt/txt],...", "WIND lat,lon,[alt],dir,spd,[alt,dir,spd,...]",
-                 "Adds a wind definition at a position: a direction (where it blows from, deg) and speed (kt) "
-                 "for all altitudes, or altitude/direction/speed triples for a profile, altitudes in feet (an FL "
-                 "value is read as BlueSky reads it, its metres taken as feet: FL300 is 2787 m). Several "
-                 "positions are blended by inverse squared distance. WIND lat,lon,DEL clears the wind.",
-                 {"WIND 52 4 270 40", "WIND 52 4 10000 250 20 30000 270 60"}, wind, {}});
+  out.push_back({"WIND",
+                 {},
+                 "latlon,[float/alt/txt],...",
+                 "WIND lat,lon,[alt],dir,spd,[alt,dir,spd,...]",
+                 "Adds a wind definition at a position: a direction (where it blows from, deg) "
+                 "and speed (kt) for all altitudes, or altitude/direction/speed triples for a "
+                 "profile, altitudes in feet (an FL value is read as BlueSky reads it, its metres "
+                 "taken as feet: FL300 is 2787 m). Several positions are blended by inverse "
+                 "squared distance. WIND lat,lon,DEL clears the wind.",
+                 {"WIND 52 4 270 40", "WIND 52 4 10000 250 20 30000 270 60"},
+                 wind,
+                 {}});
   out.push_back({"GETWIND", {}, "latlon,[alt]", "GETWIND lat,lon,[alt]",
                  "Shows the wind at a position (and altitude) as direction/speed in kt.", {"GETWIND 52 4 FL200"},
                  getwind, {}});
