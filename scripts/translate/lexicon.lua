@@ -1411,6 +1411,10 @@ return {
     -- may be named before its clock position: "traffic, an Emirates 777, at your two o'clock")
     { what = "traffic information", words = "traffic", near = { "o'clock", "oclock", "clock" }, window = 9,
       to_end = true },
+    -- ("Speedbird 2490, traffic at one one zero", "traffic at FL110, climb FL170"): the level or place said after
+    -- "traffic at" is the other aircraft's, never one to fly (a clause opening with an imperative verb after a
+    -- comma is still an instruction)
+    { what = "traffic information", words = "traffic", near = { "at" }, window = 1, to_end = true },
     -- ("descend FL320, traffic opposite direction FL340", "maintain FL370, traffic crossing left to right, a
     -- Volotea at FL350": after an instruction, traffic told by the way it flies; its level is the other aircraft's)
     { what = "traffic information", words = "traffic", window = 2, after_instruction = true, to_end = true,

@@ -8425,7 +8425,9 @@ do
   asked(ex("Jet2 22M unable direct to nowhere, turn right heading 200"), "a refusal of no place")
   asked(ex("Jet2 22M unable to comply, turn right heading 200"), "unable before something else")
   asked(ex("Jet2 22M, if unable FL240, turn right heading 200"), "the pilot's unable")
-  asked(ex("Jet2 22M unable FL240 due traffic at FL230, turn right heading 200"), "a reason naming a value")
+  -- (the traffic's level, "traffic at FL230", is traffic information)
+  check_eq(ex("Jet2 22M unable FL240 due traffic at FL230, turn right heading 200"), "HDG EXS22M 200 RIGHT")
+  asked(ex("Jet2 22M unable FL240 due FL230, turn right heading 200"), "a reason naming a value")
   asked(ex("Jet2 22M unable"), "unable alone")
 end
 
@@ -13368,4 +13370,14 @@ do
   check_eq(ex("the AirAsia one, descend to FL100"), "ASK Which AirAsia: AXM5106 or XAX522?")
   check_eq(ex("AirAsia X 522, descend to FL100"), "ALT XAX522 FL100")
   check_eq(ex("AirAsia 5106 descend FL100"), "ALT AXM5106 FL100")
+end
+
+-- Cycle 51 (lead): traffic said "at" a level with no instruction is traffic information, never a clearance to
+-- that level or a heading of its digits; an instruction after a comma is still flown
+do
+  local _, ex = scene({ "CRE BAW2490 A320 51.5 -0.5 090 FL150 280" })
+  check_eq(ex("Speedbird 2490, traffic at one one zero."), "")
+  check_eq(ex("BAW2490 traffic at FL110"), "")
+  check_eq(ex("BAW2490 traffic at FL110, climb FL170"), "ALT BAW2490 FL170")
+  check_eq(ex("BAW2490 climb FL170, traffic at FL160"), "ALT BAW2490 FL170")
 end
