@@ -6002,12 +6002,22 @@ function G:unknown_names()
     end
     return self.t[colon] ~= nil and self.t[colon].text == ":" and self:has_ref(colon + 1, #self.t + 1, "aircraft")
   end
+  -- ("conflict detection for AEA21", "resolution looking at AEA21"): an aircraft a setting every aircraft shares is
+  -- said for, a setting's noun up to three words before its "for", "at" or "on", is no context
+  local function setting_for(r)
+    if not self:word(r.b - 1, "for at on") then return false end
+    for k = math.max(1, r.b - 4), r.b - 2 do
+      if self:word(k, "detection resolution resolutions alerts probe") then return true end
+    end
+    return false
+  end
   for _, r in ipairs(self.refs) do
     -- (one added, G:aircraft_added, is never context; in a reason, "also" before a verb adds nothing: "because the
     -- A350 also goes through HAGIS"; a direction does: "- we want ICE44 lower")
     if r.kind == "aircraft" and (not r.exists or (self:aircraft_added(r) and not (self:in_reason(r.b) and self:word(r.e, "also")
           and self.t[r.e + 1] and self.t[r.e + 1].kind == "word" and not self:intent_at(r.e + 1)))
-          or not (compared or self:in_reason(r.b) or lead_context(r) or self:as_context(r.b) or self:compared_with(r.b)))
+          or not ((compared and not setting_for(r)) or self:in_reason(r.b) or lead_context(r) or self:as_context(r.b)
+            or self:compared_with(r.b)))
         and not r.false_start
         and not (self.explained or {})[r.b]  -- (read as a value: "sim speed x2")
         and not self.noted[r.b]  -- (in a phrase of what squawk does not simulate: "contact Brussels one two seven")

@@ -13381,3 +13381,13 @@ do
   check_eq(ex("BAW2490 traffic at FL110, climb FL170"), "ALT BAW2490 FL170")
   check_eq(ex("BAW2490 climb FL170, traffic at FL160"), "ALT BAW2490 FL170")
 end
+
+-- Cycle 51 (lead): an aircraft named beside a setting that is every aircraft's ("conflict detection for AEA21") is
+-- asked, never dropped; "conflict" naming the setting is no context that excuses it ("to avoid a conflict with
+-- AEA21" still is)
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL200 250", "CRE AEA21 B738 40.4 -3.6 090 FL150 250" })
+  check_eq(ex("conflict detection for AEA21"), "ASK I have ASAS ON. What does 'AEA21' mean?")
+  check_eq(ex("turn on conflict resolution for AEA21"), "ASK I have RESO MVP. What does 'AEA21' mean?")
+  check_eq(ex("KLM12 climb FL300 to avoid a conflict with AEA21"), "ALT KLM12 FL300")
+end
