@@ -5977,6 +5977,21 @@ end
 -- A name that reads like a callsign no aircraft has, or an aircraft that
 -- no command carries ("ezy45 fl150 x7", "pause, then tell me where BAW123
 -- is"), is a leftover, asked about by name.
+-- "KLM12 climb FL300 and start it", "set dtmult 5 and start", "... then stop it": a verb that starts or stops the
+-- clock or the instruction before it, closing a request no clock command (OP, HOLD, FF) came from, is asked about,
+-- never dropped
+function G:clock_verb_left()
+  for _, line in ipairs(self.out) do
+    if line:match("^OP") or line:match("^HOLD") or line:match("^FF") then return end  -- ("ff 2 mins then stop")
+  end
+  local n = #self.t
+  while n > 0 and self.t[n].kind == "punct" do n = n - 1 end
+  local e = self:word(n, "it") and n - 1 or n
+  if e >= 2 and self:word(e, "start stop begin restart") and self:word(e - 1, "and @then_words") then
+    self.leftover = self:raw(e, n + 1)
+  end
+end
+
 function G:unknown_names()
   if #self.fleet == 0 then return end
   local out = table.concat(self.out, " "):upper()
@@ -10607,6 +10622,7 @@ function M.translate(text, world)
   if not g.ask then g:list_value() end
   if not g.ask then g:setting_twice() end
   if not g.ask then g:short_level() end
+  if not g.ask and not g.leftover and #g.out > 0 then g:clock_verb_left() end
   if not g.ask and not g.leftover then g:unknown_names() end
   if not g.ask and not g.leftover then g:clock_remark() end
   if not g.ask and not g.leftover then g:uncarried() end

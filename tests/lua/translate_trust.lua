@@ -13391,3 +13391,14 @@ do
   check_eq(ex("turn on conflict resolution for AEA21"), "ASK I have RESO MVP. What does 'AEA21' mean?")
   check_eq(ex("KLM12 climb FL300 to avoid a conflict with AEA21"), "ALT KLM12 FL300")
 end
+
+-- Cycle 51 (lead): "and start it", "and stop it", "then begin" closing a request no clock command came from are
+-- asked (the simulation's or the instruction's?), never dropped; with the simulation named it is the clock's
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL200 250" })
+  check_eq(ex("KLM12 climb FL300 and start it"), "ASK I have ALT KLM12 FL300. What does 'start it' mean?")
+  check_eq(ex("KLM12 climb FL300 and stop it"), "ASK I have ALT KLM12 FL300. What does 'stop it' mean?")
+  check_eq(ex("set dtmult 5 and start"), "ASK I have DTMULT 5. What does 'start' mean?")
+  check_eq(ex("set the speed of the simulation to factor 5 and start it"), "DTMULT 5 ; OP")
+  check_eq(ex("ff 2 mins then stop"), "FF 120")
+end
