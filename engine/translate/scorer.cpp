@@ -207,6 +207,13 @@ bool same_command(std::string_view produced, std::string_view expected) {
     return same_command(text::join(std::vector<std::string>(p.begin() + 4, p.end()), " "),
                         text::join(std::vector<std::string>(e.begin() + 4, e.end()), " "));
   }
+  // DELAY / SCHEDULE time CMD ...: the time (seconds or a clock time), then the command it runs,
+  // compared as one
+  if ((cmd == "DELAY" || cmd == "SCHEDULE") && p.size() > 2 && e.size() > 2) {
+    if (!same_arg(p[1], e[1], Arg::kTime)) return false;
+    return same_command(text::join(std::vector<std::string>(p.begin() + 2, p.end()), " "),
+                        text::join(std::vector<std::string>(e.begin() + 2, e.end()), " "));
+  }
   // RMETHV ON and V/S both switch vertical resolutions on, OFF and NONE off
   // (commands_asas.cpp rmethv).
   if (cmd == "RMETHV") {

@@ -98,6 +98,14 @@ TEST_CASE("a time compares in seconds as the simulator reads it: MM:SS and HH:MM
   CHECK_FALSE(score_case("SCHEDULE 1200 HOLD", false, "SCHEDULE 00:20:00 OP"));
 }
 
+TEST_CASE("DELAY and SCHEDULE compare the command they run as a command: FL070 is FL70") {
+  CHECK(score_case("DELAY 120 ALT EZS1485 FL70", false, "DELAY 0:02:00 ALT EZS1485 FL070"));
+  CHECK(score_case("SCHEDULE 600 SPD KLM1 250", false, "SCHEDULE 00:10:00 SPD KLM1 250.2"));
+  CHECK_FALSE(score_case("DELAY 120 ALT EZS1485 FL80", false, "DELAY 120 ALT EZS1485 FL070"));
+  CHECK_FALSE(score_case("DELAY 120 ALT KLM1 FL70", false, "DELAY 120 ALT EZS1485 FL70"));
+  CHECK_FALSE(score_case("DELAY 60 ALT EZS1485 FL70", false, "DELAY 120 ALT EZS1485 FL70"));
+}
+
 TEST_CASE(
     "AT acid wp alt/spd is the ALT and the SPD constraint at that waypoint, in either order") {
   CHECK(score_case("AT GFA272 MAKIN ALT FL100 ; AT GFA272 MAKIN SPD 250", false,
