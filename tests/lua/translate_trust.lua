@@ -13402,3 +13402,60 @@ do
   check_eq(ex("set the speed of the simulation to factor 5 and start it"), "DTMULT 5 ; OP")
   check_eq(ex("ff 2 mins then stop"), "FF 120")
 end
+
+-- Cycle 52 (f144): an instruction put as the controller's proposal ("I propose you to ...", "I suggest you ...",
+-- closed by "is that ok for you?") is the instruction; a proposal said of someone else stays asked
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL200 250" })
+  check_eq(ex("KLM12, I propose you to climb flight level two six zero"), "ALT KLM12 FL260")
+  check_eq(ex("KLM12, we suggest you a heading of one five zero, is that ok for you?"), "HDG KLM12 150")
+  check_eq(ex("KLM12 descend FL150, I recommend you two thousand feet per minute"), "ALT KLM12 FL150 2000")
+  asked(ex("KLM12, the pilot proposes flight level two six zero"), "a proposal that is the pilot's")
+  asked(ex("KLM12 proposes flight level two six zero"), "the aircraft's proposal")
+end
+
+-- Cycle 52 (f144): a French speaker's hesitation "euh" ("heu") is "uh"; a French word read before its value
+-- ("cap", "niveau", "vitesse", "monte") cut off and taken back by a correction is its English word, replaced
+-- by what follows; cut off with no correction after it, it stays asked
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL200 250" })
+  check_eq(ex("KLM12, euh, reduce speed two one zero"), "SPD KLM12 210")
+  check_eq(ex("KLM12, heu, climb FL250"), "ALT KLM12 FL250")
+  check_eq(ex("KLM12, vitesse... sorry, speed two two zero"), "SPD KLM12 220")
+  check_eq(ex("KLM12, niveau, correction, flight level two four zero"), "ALT KLM12 FL240")
+  asked(ex("KLM12, vitesse... two two zero"), "a French word cut off, no correction")
+  asked(ex("KLM12, cap... sorry"), "taken back with nothing after it")
+end
+
+-- Cycle 52 (f144): a condition on a speed "had" ("when you have two two zero") waits for the speed this request
+-- gave; "when level" and three digits waits for that flight level; a speed had that the request never gave is
+-- asked
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL200 250" })
+  check_eq(ex("KLM12 reduce two two zero knots, when you have two two zero, descend FL150"),
+    "SPD KLM12 220 ; ATSPD KLM12 220 ALT KLM12 FL150")
+  check_eq(ex("KLM12 descend level one five zero, when level one five zero, reduce speed two two zero knots"),
+    "ALT KLM12 FL150 ; ATALT KLM12 FL150 SPD KLM12 220")
+  asked(ex("KLM12 reduce two two zero knots, when you have two one zero, descend FL150"), "a speed never given")
+  asked(ex("KLM12, when you have two two zero, descend FL150"), "a speed had, none given")
+end
+
+-- Cycle 52 (f144): an approach named by its runway ("expect the ILS two four left", "localizer approach 27
+-- right") names the runway: its side is no turn's direction; a side said apart from the runway's number is
+-- still asked against the turn's
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL200 250" })
+  check_eq(ex("KLM12, expect vectors for the ILS two four left, turn right heading two zero zero"),
+    "HDG KLM12 200 RIGHT")
+  check_eq(ex("KLM12, expect localizer approach 27 right, turn left heading 050"), "HDG KLM12 50 LEFT")
+  asked(ex("KLM12, expect the ILS, two four left, turn right heading two zero zero"), "a side apart from the ILS")
+end
+
+-- Cycle 52 (f144): HOP!, telephony "Air Hop", is "the Hop" said alone; with two flying it is asked
+do
+  local _, ex = scene({ "CRE HOP45TR E145 46 5 090 FL090 230", "CRE AFR12 A320 46.5 5 180 FL200 250" })
+  check_eq(ex("make the Hop descend level eight zero"), "ALT HOP45TR FL80")
+  check_eq(ex("Air Hop four five tango romeo, climb FL110"), "ALT HOP45TR FL110")
+  _, ex = scene({ "CRE HOP45TR E145 46 5 090 FL090 230", "CRE HOP7 E145 46.5 5 180 FL100 250" })
+  asked(ex("make the Hop descend level eight zero"), "two Hops flying")
+end
