@@ -9373,8 +9373,8 @@ local function airline_values(text, fleet)
       return nil
     end)
   end
-  -- (the value said in words, one or two of them: "turn the Lufthansa ten degrees left", "the Finnair
-  -- thirty five degrees right")
+  -- (the value said in words, one or two of them, after an airline of one or two words: "turn the Lufthansa ten
+  -- degrees left", "the Finnair thirty five degrees right", "move the Air Portugal twenty miles to the south")
   local function spoken(ws)
     for w in ws:gmatch("[^%s%-]+") do
       if not NUMBER_WORDS[w:lower()] then return false end
@@ -9382,9 +9382,11 @@ local function airline_values(text, fleet)
     return true
   end
   for _, pattern in ipairs(the_said and { "(%f[%a][Tt]he%s+)(%a+)(%s+)([%a%-]+%s+[%a%-]+)(%s+)(%a+)",
-                                          "(%f[%a][Tt]he%s+)(%a+)(%s+)([%a%-]+)(%s+)(%a+)" } or {}) do
+                                          "(%f[%a][Tt]he%s+)(%a+)(%s+)([%a%-]+)(%s+)(%a+)",
+                                          "(%f[%a][Tt]he%s+)(%a+%s+%a+)(%s+)([%a%-]+%s+[%a%-]+)(%s+)(%a+)",
+                                          "(%f[%a][Tt]he%s+)(%a+%s+%a+)(%s+)([%a%-]+)(%s+)(%a+)" } or {}) do
     text = text:gsub(pattern, function(the, w, s1, n, s2, unit)
-      if AIRLINE_WORDS[w:lower()] and spoken(n) and lexicon.value_units[unit:lower()] then
+      if AIRLINE_WORDS[w:lower():gsub("%s+", " ")] and spoken(n) and lexicon.value_units[unit:lower()] then
         return the .. w .. "," .. s1 .. n .. s2 .. unit
       end
       return nil

@@ -248,7 +248,8 @@ return function(H, f, compass)
     -- ("create BCS1 type B744 ..."): with the type named after "type", another designator written as one word
     -- (letters, then digits) is the new callsign; ("create a Cessna 172 D-EABC at ..."): a registration written
     -- in capitals (five letters, no word squawk knows) straight after or before the type is the callsign; so is one
-    -- typed in lower case that opens with a nationality mark ("new c172 ooxyz ...")
+    -- typed in lower case that opens with a nationality mark ("new c172 ooxyz ..."); a comma may set it off
+    -- ("create a Cessna 172, HBKOF, at BERSU")
     local id_type
     if not id then
       local types = self:refs_in(s.b, s.e, "type")
@@ -264,7 +265,8 @@ return function(H, f, compass)
         end
       end
       for _, t in ipairs((id or #types ~= 1) and {} or types) do
-        for _, k in ipairs({ t.e, t.b - 1 }) do
+        local function comma(k) return self.t[k] and self.t[k].kind == "punct" and self.t[k].text == "," end
+        for _, k in ipairs({ comma(t.e) and t.e + 1 or t.e, comma(t.b - 1) and t.b - 2 or t.b - 1 }) do
           local w = self.t[k]
           -- (a fix, navaid or airport of that name, the scene's or the navdata's: no callsign)
           local place = w ~= nil and self.world.place_known ~= nil and self.world.place_known(w.raw) ~= nil

@@ -13459,3 +13459,39 @@ do
   _, ex = scene({ "CRE HOP45TR E145 46 5 090 FL090 230", "CRE HOP7 E145 46.5 5 180 FL100 250" })
   asked(ex("make the Hop descend level eight zero"), "two Hops flying")
 end
+
+-- Cycle 52 (f144): "directly" before the place a move sets the aircraft over ("put the KLM directly over
+-- NIRSI") is the move's manner, never a direct-to; "proceed directly over" a fix still is one
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL200 250", "DEFWPT NIRSI 52.2 4.3" })
+  check_eq(ex("can you put the KLM directly over NIRSI, level one two zero?"), "MOVE KLM12 NIRSI FL120")
+  check_eq(ex("move KLM12 directly above NIRSI"), "MOVE KLM12 NIRSI")
+  check_eq(ex("KLM12 proceed directly over NIRSI"), "ADDWPT KLM12 NIRSI ; DIRECT KLM12 NIRSI")
+end
+
+-- Cycle 52 (f144): an airline of two words said with "the" before a value said in words and its unit ("move the
+-- Air Portugal ten miles north") is the airline's one aircraft, the value a distance, never a flight number
+do
+  local _, ex = scene({ "CRE TAP457 A320 48 2 020 FL150 290", "CRE KLM12 A320 52 4 090 FL200 250" })
+  check_eq(ex("move the Air Portugal sixty miles to the north"), "MOVE TAP457 48.999326 2")
+  check_eq(ex("turn the Air Portugal thirty degrees left"), "HDG TAP457 350 LEFT")
+  asked(ex("Air Portugal sixty, climb FL200"), "a flight number no aircraft has")
+end
+
+-- Cycle 52 (f144): a new aircraft's registration set off by commas beside its type ("create a C172, HBKOF, at
+-- ...") is its callsign; a word squawk knows there is none, asked for
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL200 250", "DEFWPT NIRSI 52.2 4.3" })
+  check_eq(ex("create a Cessna 172, HBXYZ, at NIRSI, heading 090, 3000 feet, 100 knots"),
+    "CRE HBXYZ C172 NIRSI 90 3000 100")
+  asked(ex("create a Cessna 172, HELLO, at NIRSI, heading 090, 3000 feet, 100 knots"), "a known word, no callsign")
+end
+
+-- Cycle 52 (f144): "stop the fast time" ends fast time (OP), as "stop the fast forward" does; it had paused the
+-- simulation and started fast time with no end (HOLD ; FF). "stop the simulation" is still a pause
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL200 250" })
+  check_eq(ex("ok, stop the fast time now"), "OP")
+  check_eq(ex("stop this fast-time"), "OP")
+  check_eq(ex("stop the simulation"), "HOLD")
+end
