@@ -13495,3 +13495,11 @@ do
   check_eq(ex("stop this fast-time"), "OP")
   check_eq(ex("stop the simulation"), "HOLD")
 end
+
+-- Cycle 52 (f144): a move's level said as a difference ("2000 feet higher than the others") is no level: with a
+-- level said beside it that level is flown, alone it is asked
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL200 250", "DEFWPT NIRSI 52.2 4.3" })
+  check_eq(ex("move KLM12 directly over NIRSI, 2000 feet higher than now, so FL220"), "MOVE KLM12 NIRSI FL220")
+  asked(ex("move KLM12 directly over NIRSI, 2000 feet higher"), "a difference, no level")
+end
