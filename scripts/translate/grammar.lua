@@ -455,6 +455,13 @@ for _, h in ipairs(lexicon.heard_as) do
                                     between = h.between and { set_of(h.between[1]), set_of(h.between[2]) } })
   end
 end
+-- The words that, straight after a form of lexicon.heard_as read before its value, closed by punctuation, take
+-- it back ("cap... sorry, heading 240", "niveau, correction, level 120"): the form is its English word, which
+-- the self-correction then replaces (lexicon.self_correction.markers of one word, lexicon.correction).
+G.heard_taken_back = set_of(lexicon.correction)
+for _, w in ipairs(lexicon.self_correction.markers) do
+  if not w:find(" ") then G.heard_taken_back[w] = true end
+end
 -- Speech recognition's sound-alike forms of instruction words
 -- (lexicon.heard_as), rewritten only where the instruction word is expected.
 local function heard_forms(text)
@@ -474,6 +481,7 @@ local function heard_forms(text)
         local closed = last:match("%p$") ~= nil
         local joined_before = toks[i - 1] ~= nil and not toks[i - 1]:match("%p$")
         if (h.before and not closed and heard_word_is(toks[i + n], h.before))
+            or (h.before and closed and G.heard_taken_back[bare[i + n]])
             or (h.after and joined_before and heard_word_is(toks[i - 1], h.after))
             or (h.between and not closed and joined_before and heard_word_is(toks[i - 1], h.between[1])
                 and heard_word_is(toks[i + n], h.between[2])) then
@@ -2884,8 +2892,9 @@ function G:at_speed(s)
   -- (a bare number after "at" that this request gave the aircraft as its speed already: "reduce 180 knots, and once
   -- you're at one eighty descend FL70"; "when 250" with no "at" is asked)
   local bare = q.kind == "plain" and q.value >= 40 and q.value <= 700
-  -- ("and when he's got two fifty, descend": the speed had, given already, as "at" says it)
-  local again = bare and not (noun or slowed) and self:word(q.b - 1, "at got")
+  -- ("and when he's got two fifty, descend", "when you have two eight zero, descend": the speed had, given
+  -- already, as "at" says it)
+  local again = bare and not (noun or slowed) and self:word(q.b - 1, "at got have has")
   if not (q.kind == "speed" or q.kind == "mach" or (bare and (noun or slowed or again))) then return nil end
   local k = self:skip_fillers(q.e)
   while k < s.trig and ((self.t[k].kind == "punct" and self.t[k].text == ",") or self:word(k, "@condition_lead")
@@ -7810,17 +7819,18 @@ function G:opening_right()
   end
 end
 
--- "vectors for runway zero one left", "rwy 27 right": a runway's number and the side said after it
--- (lexicon.runway_sides) name the runway, never a value or a turn's direction ("zero one left" is no
--- turn of 1 degree left): they are marked used and the side is made a filler.
+-- "vectors for runway zero one left", "rwy 27 right", "expect the ILS (approach) two seven right": a runway's
+-- number and the side said after it (lexicon.runway_sides) name the runway, never a value or a turn's direction
+-- ("zero one left" is no turn of 1 degree left): they are marked used and the side is made a filler.
 function G:runway_sides()
   if not self:said("@runway") then return end
   for i = 1, #self.t - 2 do
     if self:word(i, "@runway") then
-      -- its number: typed ("27") or said digit by digit ("two seven", "zero one")
-      local k = i + 1
-      while k <= i + 2 and self.t[k] and (self.t[k].kind == "number" or self.t[k].number_word) do k = k + 1 end
-      if k > i + 1 and self:word(k, "@runway_sides") then
+      -- its number: typed ("27") or said digit by digit ("two seven", "zero one"), after "approach" if said
+      local k = self:word(i + 1, "approach") and i + 2 or i + 1
+      local first = k
+      while k <= first + 1 and self.t[k] and (self.t[k].kind == "number" or self.t[k].number_word) do k = k + 1 end
+      if k > first and self:word(k, "@runway_sides") then
         self:blank(k)
         self:mark_used(i + 1, k + 1)
       end
@@ -9363,8 +9373,8 @@ local function airline_values(text, fleet)
       return nil
     end)
   end
-  -- (the value said in words, one or two of them: "turn the Lufthansa ten degrees left", "the Finnair
-  -- thirty five degrees right")
+  -- (the value said in words, one or two of them, after an airline of one or two words: "turn the Lufthansa ten
+  -- degrees left", "the Finnair thirty five degrees right", "move the Air Portugal twenty miles to the south")
   local function spoken(ws)
     for w in ws:gmatch("[^%s%-]+") do
       if not NUMBER_WORDS[w:lower()] then return false end
@@ -9372,9 +9382,11 @@ local function airline_values(text, fleet)
     return true
   end
   for _, pattern in ipairs(the_said and { "(%f[%a][Tt]he%s+)(%a+)(%s+)([%a%-]+%s+[%a%-]+)(%s+)(%a+)",
-                                          "(%f[%a][Tt]he%s+)(%a+)(%s+)([%a%-]+)(%s+)(%a+)" } or {}) do
+                                          "(%f[%a][Tt]he%s+)(%a+)(%s+)([%a%-]+)(%s+)(%a+)",
+                                          "(%f[%a][Tt]he%s+)(%a+%s+%a+)(%s+)([%a%-]+%s+[%a%-]+)(%s+)(%a+)",
+                                          "(%f[%a][Tt]he%s+)(%a+%s+%a+)(%s+)([%a%-]+)(%s+)(%a+)" } or {}) do
     text = text:gsub(pattern, function(the, w, s1, n, s2, unit)
-      if AIRLINE_WORDS[w:lower()] and spoken(n) and lexicon.value_units[unit:lower()] then
+      if AIRLINE_WORDS[w:lower():gsub("%s+", " ")] and spoken(n) and lexicon.value_units[unit:lower()] then
         return the .. w .. "," .. s1 .. n .. s2 .. unit
       end
       return nil

@@ -2538,10 +2538,11 @@ function m:at_altitude(s)
   -- FL150. TAM88 turn" describes the traffic)
   for _, r in ipairs(self:word(a, "at") and {} or self:refs_in(k, k + 1, "aircraft")) do k = self:skip_fillers(r.e) end
   if k ~= s.trig then return nil end
-  -- ("passing two two zero increase Mach .78": three digits alone after a level passed, left or reached are
-  -- a flight level; so is a level said group-wise, "passing one hundred", for an aircraft flying where a climb
-  -- to it would be read so, at or above lexicon.groupwise_from_ft)
-  local passed = q.kind == "plain" and (self:word(a, "passing leaving reaching") or left)
+  -- ("passing two two zero increase Mach .78", "when level one three zero, increase speed 290": three digits
+  -- alone after a level passed, left, reached or levelled at are a flight level; so is a level said group-wise,
+  -- "passing one hundred", for an aircraft flying where a climb to it would be read so, at or above
+  -- lexicon.groupwise_from_ft)
+  local passed = q.kind == "plain" and (self:word(a, "passing leaving reaching level") or left)
   local fl_digits = passed and #q.number.digits == 3 and q.value >= 100 and q.value <= 600 and not q.number.thousand
     and not q.number.hundred
   local groupwise = passed and self:groupwise_level(q)

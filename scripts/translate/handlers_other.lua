@@ -248,7 +248,8 @@ return function(H, f, compass)
     -- ("create BCS1 type B744 ..."): with the type named after "type", another designator written as one word
     -- (letters, then digits) is the new callsign; ("create a Cessna 172 D-EABC at ..."): a registration written
     -- in capitals (five letters, no word squawk knows) straight after or before the type is the callsign; so is one
-    -- typed in lower case that opens with a nationality mark ("new c172 ooxyz ...")
+    -- typed in lower case that opens with a nationality mark ("new c172 ooxyz ..."); a comma may set it off
+    -- ("create a Cessna 172, HBKOF, at BERSU")
     local id_type
     if not id then
       local types = self:refs_in(s.b, s.e, "type")
@@ -264,7 +265,8 @@ return function(H, f, compass)
         end
       end
       for _, t in ipairs((id or #types ~= 1) and {} or types) do
-        for _, k in ipairs({ t.e, t.b - 1 }) do
+        local function comma(k) return self.t[k] and self.t[k].kind == "punct" and self.t[k].text == "," end
+        for _, k in ipairs({ comma(t.e) and t.e + 1 or t.e, comma(t.b - 1) and t.b - 2 or t.b - 1 }) do
           local w = self.t[k]
           -- (a fix, navaid or airport of that name, the scene's or the navdata's: no callsign)
           local place = w ~= nil and self.world.place_known ~= nil and self.world.place_known(w.raw) ~= nil
@@ -994,13 +996,20 @@ return function(H, f, compass)
           .. "latitude and longitude.", id, f.num(q.value) .. " NM", named_at))
       end
     end
-    local opt = {}
+    local opt, by = {}, nil
     for _, q in ipairs(qs) do
-      if q.kind == "alt" and not opt[1] then opt[1] = f.alt(q.value, q.fl) end
+      -- ("2000 feet higher than the others, so FL320": a difference said of a level is none; with no level said
+      -- beside it, asked)
+      by = by or (q.kind == "alt" and self:word(q.e, "higher lower") and q)
+      if q.kind == "alt" and not opt[1] and q ~= by then opt[1] = f.alt(q.value, q.fl) end
       if q.kind == "heading" and not opt[2] then opt[2] = f.num(q.value) end
       if q.kind == "speed" and not opt[3] then opt[3] = f.int(q.value) end
       if q.kind == "mach" and not opt[3] then opt[3] = f.mach(q.value) end
       if q.kind == "vs" and not opt[4] then opt[4] = f.int(q.value) end
+    end
+    if by and not opt[1] then
+      return self:need(string.format("Which level should %s be moved to? '%s' is a difference, not a level.", id,
+        self:raw(by.b, by.e + 1)))
     end
     -- a bare number left after the position is the altitude when it reads as one (whole hundreds of feet,
     -- "and keep it at 3500"); the last value, after the level and heading with no speed said, is the speed

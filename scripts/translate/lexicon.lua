@@ -293,7 +293,13 @@ return {
         -- the simulation's conflict resolution named by a pilot's word for it ("resolution advisories on, MVP")
         "resolution advisories", "resolution advisory",
         -- urgency, said with a negation ("descend FL150 without delay")
-        "without delay", "with no delay", "without any delay" },
+        "without delay", "with no delay", "without any delay",
+        -- an instruction put as the controller's proposal, as French "je vous propose" ("I propose you to turn
+        -- left heading 100", "I propose you a direct to MOPAR"), and the check it closes with ("..., it's ok for
+        -- you?"): the instruction given; said of someone else ("the pilot proposes ...") it stays asked
+        "i propose you", "we propose you", "i suggest you", "we suggest you", "i recommend you", "we recommend you",
+        "is it ok for you", "it's ok for you", "is that ok for you", "is it okay for you", "it's okay for you",
+        "is that okay for you" },
     -- the experimenter's account of a run in a remark beside a complete request, words that name no instruction,
     -- value, place or timing ("faster than I had intended", "we're comparing Mach cruise against fixed-CAS",
     -- "I'd like that to be reflected", "the transit phase", "I'll take a
@@ -585,6 +591,8 @@ return {
     -- corrects what it follows, "fl130 err fl150", "dir ridar err rokil")
     err = { word = "sorry" }, sry = { word = "sorry" }, erm = { word = "uh" }, umm = { word = "uh" }, uhh = { word = "uh" },
     uhm = { word = "uh" }, ehm = { word = "uh" },
+    -- (a French speaker's hesitation, said in English as "uh": "Swiss 77, euh, heading 240")
+    euh = { word = "uh" }, heu = { word = "uh" },
     -- (Indian English "revert" for "reply", the aircraft's own value asked for: "revert your level", "revert with
     -- your present speed"; "revert to heading 270" stays as said, and asked)
     revert = { { word = "report", next = "your" }, { word = "report", next = "with" } },
@@ -1207,8 +1215,9 @@ return {
   on = { "on", "enable", "activate", "show", "start", "use", "engage", "engaged", "connect", "connected" },
   -- a change of speed said by its direction alone ("go faster", "slow down")
   faster_slower = { "faster", "slower", "accelerate", "decelerate" },
-  -- a runway, and the sides a runway's number is said with ("runway two seven left"): part of its name
-  runway = { "runway", "rwy" },
+  -- a runway, or an approach named by its runway ("runway two seven left", "the ILS two seven right", "ILS
+  -- approach 27 left"), and the sides a runway's number is said with: part of its name
+  runway = { "runway", "rwy", "ils", "loc", "localizer", "localiser", "rnav", "rnp" },
   runway_sides = { "left", "right", "center", "centre" },
   -- turns and compass points
   left = { "left" },

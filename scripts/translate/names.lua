@@ -58,6 +58,7 @@ local names = {
     { "beeline", "BEL" },
     { "transavia", "TRA" },
     { "france soleil", "TVF" },  -- (Transavia France)
+    { "air hop", "HOP" },  -- (HOP!, Air France's regional airline)
     -- the Netherlands' and Belgium's leisure and regional airlines
     { "city", "KLC" },  -- (KLM Cityhopper)
     { "klm city", "KLC" },
@@ -626,6 +627,7 @@ local names = {
     { "cityhopper", "KLC" },
     { "klm cityhopper", "KLC" },
     { "tap air portugal", "TAP" },
+    { "hop", "HOP" },  -- (HOP!, telephony Air Hop)
     { "spirit", "NKS" },  -- (Spirit Airlines, telephony Spirit Wings)
     { "spirit airlines", "NKS" },
     { "expressjet", "ASQ" },  -- (ExpressJet, telephony Acey)

@@ -1393,6 +1393,9 @@ return function(intent, rule, words)
     local q = g:quantities(i + 2, #g.t + 1)[1]
     return q ~= nil and q.kind == "alt" and q.b == g:skip_fillers(i + 2)
   end }
+  -- "put the Swiss directly over LAPAT", "move it directly above BIG": "directly" before the place a move sets the
+  -- aircraft over is the move's manner, no direct-to
+  rule { "directly", false, next = "over above", prev = { 4, "move put place reposition teleport" } }
   rule { "direct directly dct dtc drct dir proceed direct-to", "direct" }  -- ("dtc": dct's letters swapped)
   rule { "straight", "direct", next = "to" }  -- "send IBE3141 straight to MITUM"
   -- "KAL123 to ENKAS go straight": the adverb closing the clause after "go", the place said after "to"
@@ -1978,6 +1981,12 @@ return function(intent, rule, words)
   rule { "interrupt interrupted", "hold", prev = { 4, "@sim" } }
   -- "run in fast time until I say stop": the stop is when the run ends, not an instruction
   rule { "stop", false, prev = { 3, "until" } }
+  -- "stop the fast time", "stop this fast forward": fast time ended (m:fast_forward reads the verb, OP), never a pause
+  rule { "stop", false, when = function(g, i)
+    local k = i + 1
+    while g:word(k, "the this that our your current") do k = k + 1 end
+    return g:word(k, "fast") and g:word(k + 1, "time forward")
+  end }
   rule { "stop", "hold", near = { 3, "@sim" } }
   -- "sim stop for a moment": the simulation named before its verb (verb-final order), no aircraft named
   rule { "stop", "hold", prev = { 1, "@sim" }, when = function(g) return not g:has_ref(1, #g.t + 1, "aircraft") end }

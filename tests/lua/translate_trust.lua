@@ -13402,3 +13402,104 @@ do
   check_eq(ex("set the speed of the simulation to factor 5 and start it"), "DTMULT 5 ; OP")
   check_eq(ex("ff 2 mins then stop"), "FF 120")
 end
+
+-- Cycle 52 (f144): an instruction put as the controller's proposal ("I propose you to ...", "I suggest you ...",
+-- closed by "is that ok for you?") is the instruction; a proposal said of someone else stays asked
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL200 250" })
+  check_eq(ex("KLM12, I propose you to climb flight level two six zero"), "ALT KLM12 FL260")
+  check_eq(ex("KLM12, we suggest you a heading of one five zero, is that ok for you?"), "HDG KLM12 150")
+  check_eq(ex("KLM12 descend FL150, I recommend you two thousand feet per minute"), "ALT KLM12 FL150 2000")
+  asked(ex("KLM12, the pilot proposes flight level two six zero"), "a proposal that is the pilot's")
+  asked(ex("KLM12 proposes flight level two six zero"), "the aircraft's proposal")
+end
+
+-- Cycle 52 (f144): a French speaker's hesitation "euh" ("heu") is "uh"; a French word read before its value
+-- ("cap", "niveau", "vitesse", "monte") cut off and taken back by a correction is its English word, replaced
+-- by what follows; cut off with no correction after it, it stays asked
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL200 250" })
+  check_eq(ex("KLM12, euh, reduce speed two one zero"), "SPD KLM12 210")
+  check_eq(ex("KLM12, heu, climb FL250"), "ALT KLM12 FL250")
+  check_eq(ex("KLM12, vitesse... sorry, speed two two zero"), "SPD KLM12 220")
+  check_eq(ex("KLM12, niveau, correction, flight level two four zero"), "ALT KLM12 FL240")
+  asked(ex("KLM12, vitesse... two two zero"), "a French word cut off, no correction")
+  asked(ex("KLM12, cap... sorry"), "taken back with nothing after it")
+end
+
+-- Cycle 52 (f144): a condition on a speed "had" ("when you have two two zero") waits for the speed this request
+-- gave; "when level" and three digits waits for that flight level; a speed had that the request never gave is
+-- asked
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL200 250" })
+  check_eq(ex("KLM12 reduce two two zero knots, when you have two two zero, descend FL150"),
+    "SPD KLM12 220 ; ATSPD KLM12 220 ALT KLM12 FL150")
+  check_eq(ex("KLM12 descend level one five zero, when level one five zero, reduce speed two two zero knots"),
+    "ALT KLM12 FL150 ; ATALT KLM12 FL150 SPD KLM12 220")
+  asked(ex("KLM12 reduce two two zero knots, when you have two one zero, descend FL150"), "a speed never given")
+  asked(ex("KLM12, when you have two two zero, descend FL150"), "a speed had, none given")
+end
+
+-- Cycle 52 (f144): an approach named by its runway ("expect the ILS two four left", "localizer approach 27
+-- right") names the runway: its side is no turn's direction; a side said apart from the runway's number is
+-- still asked against the turn's
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL200 250" })
+  check_eq(ex("KLM12, expect vectors for the ILS two four left, turn right heading two zero zero"),
+    "HDG KLM12 200 RIGHT")
+  check_eq(ex("KLM12, expect localizer approach 27 right, turn left heading 050"), "HDG KLM12 50 LEFT")
+  asked(ex("KLM12, expect the ILS, two four left, turn right heading two zero zero"), "a side apart from the ILS")
+end
+
+-- Cycle 52 (f144): HOP!, telephony "Air Hop", is "the Hop" said alone; with two flying it is asked
+do
+  local _, ex = scene({ "CRE HOP45TR E145 46 5 090 FL090 230", "CRE AFR12 A320 46.5 5 180 FL200 250" })
+  check_eq(ex("make the Hop descend level eight zero"), "ALT HOP45TR FL80")
+  check_eq(ex("Air Hop four five tango romeo, climb FL110"), "ALT HOP45TR FL110")
+  _, ex = scene({ "CRE HOP45TR E145 46 5 090 FL090 230", "CRE HOP7 E145 46.5 5 180 FL100 250" })
+  asked(ex("make the Hop descend level eight zero"), "two Hops flying")
+end
+
+-- Cycle 52 (f144): "directly" before the place a move sets the aircraft over ("put the KLM directly over
+-- NIRSI") is the move's manner, never a direct-to; "proceed directly over" a fix still is one
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL200 250", "DEFWPT NIRSI 52.2 4.3" })
+  check_eq(ex("can you put the KLM directly over NIRSI, level one two zero?"), "MOVE KLM12 NIRSI FL120")
+  check_eq(ex("move KLM12 directly above NIRSI"), "MOVE KLM12 NIRSI")
+  check_eq(ex("KLM12 proceed directly over NIRSI"), "ADDWPT KLM12 NIRSI ; DIRECT KLM12 NIRSI")
+end
+
+-- Cycle 52 (f144): an airline of two words said with "the" before a value said in words and its unit ("move the
+-- Air Portugal ten miles north") is the airline's one aircraft, the value a distance, never a flight number
+do
+  local _, ex = scene({ "CRE TAP457 A320 48 2 020 FL150 290", "CRE KLM12 A320 52 4 090 FL200 250" })
+  check_eq(ex("move the Air Portugal sixty miles to the north"), "MOVE TAP457 48.999326 2")
+  check_eq(ex("turn the Air Portugal thirty degrees left"), "HDG TAP457 350 LEFT")
+  asked(ex("Air Portugal sixty, climb FL200"), "a flight number no aircraft has")
+end
+
+-- Cycle 52 (f144): a new aircraft's registration set off by commas beside its type ("create a C172, HBKOF, at
+-- ...") is its callsign; a word squawk knows there is none, asked for
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL200 250", "DEFWPT NIRSI 52.2 4.3" })
+  check_eq(ex("create a Cessna 172, HBXYZ, at NIRSI, heading 090, 3000 feet, 100 knots"),
+    "CRE HBXYZ C172 NIRSI 90 3000 100")
+  asked(ex("create a Cessna 172, HELLO, at NIRSI, heading 090, 3000 feet, 100 knots"), "a known word, no callsign")
+end
+
+-- Cycle 52 (f144): "stop the fast time" ends fast time (OP), as "stop the fast forward" does; it had paused the
+-- simulation and started fast time with no end (HOLD ; FF). "stop the simulation" is still a pause
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL200 250" })
+  check_eq(ex("ok, stop the fast time now"), "OP")
+  check_eq(ex("stop this fast-time"), "OP")
+  check_eq(ex("stop the simulation"), "HOLD")
+end
+
+-- Cycle 52 (f144): a move's level said as a difference ("2000 feet higher than the others") is no level: with a
+-- level said beside it that level is flown, alone it is asked
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL200 250", "DEFWPT NIRSI 52.2 4.3" })
+  check_eq(ex("move KLM12 directly over NIRSI, 2000 feet higher than now, so FL220"), "MOVE KLM12 NIRSI FL220")
+  asked(ex("move KLM12 directly over NIRSI, 2000 feet higher"), "a difference, no level")
+end
