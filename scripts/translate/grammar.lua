@@ -346,8 +346,8 @@ local function turn_letters(text, sh)
   if not heading then return text end
   -- (a turn letter is a word of letters alone, so one of the text's runs of letters)
   local turn = false
-  for letters in text:gmatch("%a+") do
-    local d = sh[letters:lower()]
+  for letters in text:lower():gmatch("%a+") do
+    local d = sh[letters]
     if d == "left" or d == "right" then
       turn = true
       break
@@ -400,8 +400,8 @@ local function plain_words(text)
 end
 -- True when one of the words `bare` is a key of `set`.
 local function any_of(bare, set)
-  for _, w in ipairs(bare) do
-    if set[w] ~= nil then return true end
+  for k = 1, #bare do
+    if set[bare[k]] ~= nil then return true end
   end
   return false
 end
@@ -689,7 +689,8 @@ end
 -- True when the lower-case text holds one of the words of `patterns` whole ({word, pattern} as above; the
 -- pattern is tried only where a plain find sees the word).
 local function holds_word(lower, patterns)
-  for _, p in ipairs(patterns) do
+  for k = 1, #patterns do
+    local p = patterns[k]
     if lower:find(p.word, 1, true) and lower:find(p.pattern) then return true end
   end
   return false
@@ -1072,7 +1073,8 @@ local function value_homophones(text)
   local toks, bare = plain_words(text)
   local H = lexicon.digit_homophones
   local convert = {}
-  for k, w in ipairs(bare) do
+  for k = 1, #bare do
+    local w = bare[k]
     if VALUE_ANCHORS[w] and not toks[k]:match("%p$") then
       local j, said, heard = k + 1, 0, {}
       while j <= k + 3 and bare[j] and (DIGIT_WORDS[bare[j]] or H[bare[j]]) do
@@ -1243,8 +1245,8 @@ end
 local function typed_abbreviations(text)
   -- (a word typed of letters alone is one of its runs of letters: with none an abbreviation, none is read)
   local typed = false
-  for letters in text:gmatch("%a+") do
-    if ABBREVIATIONS[letters:lower()] then
+  for letters in text:lower():gmatch("%a+") do
+    if ABBREVIATIONS[letters] then
       typed = true
       break
     end
@@ -1607,7 +1609,10 @@ end
 -- self.words[i]: the text of token i when it is a word, else false (nil past the end).
 local function word_texts(toks)
   local words = {}
-  for i, t in ipairs(toks) do words[i] = t.kind == "word" and t.text end
+  for i = 1, #toks do
+    local t = toks[i]
+    words[i] = t.kind == "word" and t.text
+  end
   return words
 end
 
@@ -2229,8 +2234,9 @@ function G:preceded_by(i, span, words) return self:word_in(math.max(1, i - span)
 function G:number_at(i) local t = self.t[i] return t ~= nil and not self.u:used(i) and t.number_word end
 
 function G:refs_in(b, e, kind)
-  local out = {}
-  for _, r in ipairs(self.refs) do
+  local out, refs = {}, self.refs
+  for k = 1, #refs do
+    local r = refs[k]
     if r.kind == kind and r.b >= b and r.b < e then out[#out + 1] = r end
   end
   return out
@@ -2238,7 +2244,9 @@ end
 function G:has_ref(b, e, kind)
   local last = #self.t + 1
   if e < last then last = e end
-  for _, r in ipairs(self.refs) do
+  local refs = self.refs
+  for k = 1, #refs do
+    local r = refs[k]
     if r.kind == kind and r.b >= b and r.b < last then return true end
   end
   return false
@@ -2413,7 +2421,8 @@ function G:quantities(b, e)
   local q = self.qcache[key]
   if not q then
     q = self.u:quantities(b, e)
-    for _, x in ipairs(q) do
+    for k = 1, #q do
+      local x = q[k]
       local unit = self.t[x.e - 1]
       if x.kind == "dist" and unit and G.km_words[unit.text] and x.number then
         x.value = math.floor(x.number.value / 1.852 * 100 + 0.5) / 100
@@ -2521,8 +2530,9 @@ end
 -- self.said_sets[s]: true when a word of the rule condition set s may be in the request (it was when the
 -- request was read: a word blanked since is no longer there), nil when none is.
 local function sets_said(self)
-  local said = {}
-  for _, w in ipairs(self.words) do
+  local said, words = {}, self.words
+  for k = 1, #words do
+    local w = words[k]
     local sets = w and CONDITION_SETS[w]
     if sets then
       for s in pairs(sets) do said[s] = true end
@@ -2559,14 +2569,16 @@ function G:intent_at(i)
   local rules = live[all]
   if not rules then
     rules = {}
-    for _, r in ipairs(all) do
+    for k = 1, #all do
+      local r = all[k]
       if (not r.near or said[r.near[2]]) and (not r.prev or said[r.prev[2]]) then rules[#rules + 1] = r end
     end
     live[all] = rules
   end
   local found
   busy[i] = depth + 1
-  for _, r in ipairs(rules) do
+  for k = 1, #rules do
+    local r = rules[k]
     -- (r.near: followed within r.near[1] tokens by a word of r.near[2]; r.prev: preceded so; a set none
     -- of whose words is said is not looked for)
     local near, not_near, prev, not_prev = r.near, r.not_near, r.prev, r.not_prev
@@ -7330,7 +7342,7 @@ function G:unaccounted()
     return x and x.kind == "word" and x.text:match("^%a$") and not explained[k] and not self.noted[k]
       and not self.u:used(k)
   end
-  for i in ipairs(self.t) do
+  for i = 1, #self.t do
     local b = i - 1
     while self.t[b] and self.t[b].filler do b = b - 1 end
     if letter(i) and letter(i + 1) and not letter(i - 1)
@@ -7343,7 +7355,8 @@ function G:unaccounted()
   end
   -- ("KLM12 no need to climb to FL240", "no need for the descent"): what is not needed is no instruction; "no
   -- need" is asked wherever it stands outside a reason
-  for i, t in ipairs(self.t) do
+  for i = 1, #self.t do
+    local t = self.t[i]
     if t.text == "no" and self:word(i + 1, "need needs") and self:word(i + 2, "to for") and not explained[i]
         and not self.noted[i] and not self:in_reason(i) then
       self.leftover = self:raw(i, i + 2)
@@ -7354,7 +7367,8 @@ function G:unaccounted()
   -- an instruction's verb or noun (lexicon.refusable_verbs; fillers or a turn's side between, no comma) may refuse
   -- it or take back what came before: asked, naming both readings, never read as either ("no, descend" and
   -- "negative descend" are corrections)
-  for i, t in ipairs(self.t) do
+  for i = 1, #self.t do
+    local t = self.t[i]
     local v = t.text == "no" and i + 1
     while v and self.t[v] and (self.t[v].filler or self:word(v, "@left @right")) do v = v + 1 end
     if v and self:word(v, "@refusable_verbs") and not self.noted[i] and not self:in_reason(i) then
@@ -7367,7 +7381,8 @@ function G:unaccounted()
   -- ("KLM12 no higher than FL300", "not lower than 8000 feet", "no higher FL300"): "no" or "not" before a level's
   -- comparative bounds the level, it clears none, and squawk keeps no level limit: asked, never flown as the level
   -- ("climb FL300, no higher" bounds nothing of its own: no level after it)
-  for i, t in ipairs(self.t) do
+  for i = 1, #self.t do
+    local t = self.t[i]
     local v = (t.text == "no" or t.text == "not") and self:word(i + 1, "higher lower above below") and i + 2
     if v and self:word(v, "than") then v = v + 1 end
     local q = v and self:quantities(v, v + 6)[1]
@@ -7419,7 +7434,8 @@ function G:unaccounted()
     values_only = values_only and (direct or (c:match("^ALT ") or c:match("^SPD ") or c:match("^HDG ")
       or c:match("^VS ")) ~= nil)
   end
-  for i, t in ipairs(self.t) do
+  for i = 1, #self.t do
+    local t = self.t[i]
     if t.kind == "word" and not t.filler and (not t.number_word or scale_left(i))
         and not explained[i] and not self.noted[i] and not self.u:used(i) and not ignored[t.text]
         and (scale_left(i) or (t.text:match("^%a[%a'%-/]*$") and (MEANING[t.text] or COMMAND_ONLY[t.text] or MANNER[t.text] or not (known_word(t.text) or self:airline_word(i) or self:place_particle(i))
@@ -7576,7 +7592,8 @@ function G:alternatives()
     while value(e) do e = e + 1 end
     return b, e
   end
-  for i, t in ipairs(self.t) do
+  for i = 1, #self.t do
+    local t = self.t[i]
     if t.text == "or" and t.kind == "word" and not self:in_reason(i) and select(2, span(i)) == nil then
       local l, r = i - 1, i + 1
       while self.t[l] and (self.t[l].filler or self.t[l].kind == "punct") do l = l - 1 end
@@ -7785,7 +7802,8 @@ end
 function G:near_any(i, near, window)
   for k = i + 1, math.min(#self.t, i + (window or 4)) do
     local t = self.t[k]
-    for _, w in ipairs(near) do
+    for j = 1, #near do
+      local w = near[j]
       if (w == "#number" and t.kind == "number") or (w == "#number" and t.number_word)
           or (w == "#frequency" and self:frequency_said(k))
           or (w == "#waypoint" and #self:refs_in(k, k + 1, "waypoint") > 0 and not self:word(k, "@navaid_kinds"))
@@ -9115,8 +9133,8 @@ local NATIONLESS = set_of(lexicon.nationless_registrations)
 local function spelled_registrations(text, fleet)
   if #fleet == 0 then return text end
   local spelling = false  -- (a phonetic letter said)
-  for w in text:gmatch("[%w]+") do
-    if lexicon.phonetic[w:lower()] then
+  for w in text:lower():gmatch("[%w]+") do
+    if lexicon.phonetic[w] then
       spelling = true
       break
     end
@@ -9181,8 +9199,7 @@ local function abbreviated_registrations(text, fleet)
   -- (the words are read only where one may open a prefix: November or N, a maker, model or nickname, or
   -- the first word of a nickname of two; else only the bare suffix below is)
   local prefixed = false
-  for w in text:gmatch("[%w]+") do
-    w = w:lower()
+  for w in text:lower():gmatch("[%w]+") do
     if w == "november" or w == "n" or G.type_words()[w] or nicknames[w] or G.nickname_heads[w] then
       prefixed = true
       break
@@ -9529,7 +9546,8 @@ local function homophone_ids(text, world, parsed)
   parsed = parsed or {}
   local toks, bare = plain_words(text)
   local said, held
-  for i, w in ipairs(bare) do
+  for i = 1, #bare do
+    local w = bare[i]
     local digit = lexicon.digit_homophones[w]
     local prev, nxt = bare[i - 1], bare[i + 1]
     local glued = digit and prev and not toks[i - 1]:match("%p$") and (not nxt or not toks[i]:match("%p$"))
@@ -10021,7 +10039,8 @@ local function typed_places(text, world)
   -- (a name is read only after a word of PLACE_SLOTS: with none said, the words stand as they are)
   local padded = " " .. text:lower() .. " "
   local slots = padded:find(" where", 1, true) ~= nil
-  for _, p in ipairs(PLACE_SLOT_PATTERNS) do
+  for k = 1, #PLACE_SLOT_PATTERNS do
+    local p = PLACE_SLOT_PATTERNS[k]
     if padded:find(p.word, 1, true) and padded:find(p.pattern) then
       slots = true
       break
@@ -10233,11 +10252,11 @@ end
 -- so that every instruction reading a waypoint ("at", "after", "until", "cross ... at", "to be level by") reads
 -- it. A request with a word of an instruction that takes a position (create, move, define or add a waypoint, a
 -- wind) keeps the position as said, as does one whose degrees have a fraction or whose point no route of an
--- aircraft named holds. `u` is the utterance of `text`; nil when nothing was replaced.
+-- aircraft named holds. `u` is the utterance of `text`, `toks` its u:tokens() (read, never changed); nil when
+-- nothing was replaced.
 G.position_args = { lat = true, lon = true }
-function G.route_points_said(text, u, world)
+function G.route_points_said(text, u, world, toks)
   if not world.waypoints_at then return nil end
-  local toks = u:tokens()
   local qs = u:quantities(1, #toks + 1)
   local lat
   for _, q in ipairs(qs) do lat = lat or (q.kind == "lat" and q) end
@@ -10482,12 +10501,13 @@ function M.translate(text, world)
   local apart
   text, apart = set_apart(types.join(text, TYPES.phrases))
   local u = squawk.translate.utterance(text, world, NAMES)
-  local points = G.route_points_said(text, u, world)
+  local toks = u:tokens()
+  local points = G.route_points_said(text, u, world, toks)
   if points then
     text = points
     u = squawk.translate.utterance(text, world, NAMES)
+    toks = u:tokens()
   end
-  local toks = u:tokens()
   local g = setmetatable({ u = u, t = toks, words = word_texts(toks), refs = u:refs(), world = world,
     fleet = world.aircraft, out = {}, qcache = {}, taken = {}, noted = {}, cut_back = {}, triggers = {}, apart = apart,
     text_said = said }, G)

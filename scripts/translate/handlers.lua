@@ -1854,7 +1854,14 @@ end
 -- (describe), none or several are asked about. The words are never a heading instructed.
 function m:bearing_refs()
   local bound = false  -- (no verb of going and no "-bound" word: nothing to read)
-  for _, w in ipairs(self.words) do bound = bound or (w and w:sub(-5) == "bound") end
+  local words = self.words
+  for k = 1, #words do
+    local w = words[k]
+    if w and w:sub(-5) == "bound" then
+      bound = true
+      break
+    end
+  end
   if not (bound or self:said("@compass_verbs")) then return end
   local i = 1
   while i <= #self.t do

@@ -508,7 +508,9 @@ function M.join(text, phrases)
   phrases.by_first = index
   -- the phrases whose first word `text` holds (worth a pattern match), in their order in `phrases`
   local lower, hits = text:lower(), {}
-  for _, first in ipairs(index.firsts) do
+  local firsts = index.firsts
+  for j = 1, #firsts do
+    local first = firsts[j]
     if lower:find(first, 1, true) then
       for _, k in ipairs(index.at[first]) do hits[#hits + 1] = k end
     end
