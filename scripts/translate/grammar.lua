@@ -8822,7 +8822,26 @@ M.not_understood = UNDERSTOOD
 -- "AUA123 speed 250, DLH6CK the same", "..., DLH6CK too", "..., same for DLH6CK": another flying aircraft
 -- said with "same", "too", "likewise", "ditto" or "as well" after it, or after "same for" in a clause of
 -- its own, ending its clause, gets the request's instructions too. Returns the aircraft so named (their tokens used, never instructed by the parse).
-local SAME_AFTER = { same = true, too = true, likewise = true, ditto = true }
+-- Also the formal passive and its verb ("the same may be done for the SpiceJet also", "the same can be given to
+-- DLH6CK", "do the same for the Akasa"): G.same_opening; "also" closing the clause is "too". Called again after
+-- the passes that resolve an aircraft named by its airline or type ("the SpiceJet"), for those references.
+local SAME_AFTER = { same = true, too = true, likewise = true, ditto = true, also = true }
+-- The first token of "same ... for/to" ending just before b (the aircraft's words), with "the", "do the" or
+-- "give the" before "same": "same for", "the same may be done for", "give the same to", "do the same for"; nil
+-- when none. At most four words of a passive verb between ("may be done", "should also be given").
+function G:same_opening(b)
+  local SAME_PASSIVE = "may can should must shall could would will to be done given applied also"
+  local k = b - 1
+  if self:word(k, "the") then k = k - 1 end
+  if not self:word(k, "for to") then return nil end
+  k = k - 1
+  local stop = k - 4
+  while k > stop and k > 1 and self:word(k, SAME_PASSIVE) do k = k - 1 end
+  if not self:word(k, "same likewise") then return nil end
+  if self:word(k - 1, "the") then k = k - 1 end
+  if self:word(k - 1, "do give") then k = k - 1 end
+  return k
+end
 function G:same_for()
   local named = {}
   for _, r in ipairs(self.refs) do
@@ -8832,10 +8851,11 @@ function G:same_for()
       local e = (self.t[k] and SAME_AFTER[self.t[k].text] and k + 1)
         or (self:word(k, "as") and self:word(k + 1, "well") and k + 2) or nil
       local b = r.b
-      if not e and self:word(r.b - 1, "for") and self:word(r.b - 2, "same likewise") then
-        b = self:word(r.b - 3, "the") and r.b - 3 or r.b - 2
+      local from = self:same_opening(r.b)
+      if from then
+        b = from
         opens = b > 1 and (self.t[b - 1].kind == "punct" or self:word(b - 1, "and"))
-        e = r.e
+        e = e or r.e
       end
       if e and opens and (not self.t[e] or self.t[e].kind == "punct") then
         self:mark_used(b, e)
@@ -10485,6 +10505,7 @@ function M.translate(text, world)
   g:airline_refs()
   g:type_refs()
   g:described_refs()
+  for _, id in ipairs(g:same_for()) do same[#same + 1] = id end
   g:bearing_refs()
   g:creation_refs()
   g:carried_refs()
