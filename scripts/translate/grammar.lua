@@ -900,7 +900,8 @@ end
 -- straight after another value, ending its clause, is the one the speaker rules out (a readback
 -- corrected); it is dropped, with its "not", and the value before it stands; so is an apology closing the
 -- request after it ("fl200 not 180 sorry", lexicon.self_correction.apology). Anywhere else ("climb FL310
--- not 300 speed 250") the "not" stays, and is asked about.
+-- not 300 speed 250") the "not" stays, and is asked about. "and not" and "only, not" straight after the value are
+-- the same ruling out ("should go to FL370 and not FL380", "FL310 only, not FL330"; "and" dropped with it).
 local NEGATED_NOUNS = set_of({ "fl", "flight", "level", "heading", "speed", "mach", "point" })
 G.apology = set_of(lexicon.self_correction.apology)
 local function negated_values(text)
@@ -909,7 +910,10 @@ local function negated_values(text)
   local function value(t) return t and (t.raw:match("%d%p*$") or NUMBER_WORDS[t.bare] or UNIT_WORDS[t.bare]) end
   local put, done, from = tokens.splicer(text)
   for k, t in ipairs(toks) do
-    if t.bare == "not" and t.raw:lower() == "not" and value(toks[k - 1]) and k > from() then
+    -- (`v`: the value ruled out against: straight before "not", or before "and" or "only," there)
+    local v = k - 1
+    if toks[v] and (toks[v].raw:lower() == "and" or toks[v].raw:lower() == "only,") then v = v - 1 end
+    if t.bare == "not" and t.raw:lower() == "not" and value(toks[v]) and v > from() then
       local j, numbers, stop = k + 1, 0, false
       while toks[j] and (value(toks[j]) or (numbers == 0 and NEGATED_NOUNS[toks[j].bare])) do
         if value(toks[j]) then numbers = numbers + 1 end
@@ -923,7 +927,7 @@ local function negated_values(text)
       end
       if numbers > 0 and (stop or not toks[j]) then
         local last = toks[j - 1]
-        put(t.at, last.raw:match("(%p+)$") or "", last.e)
+        put(toks[k - 1].raw:lower() == "and" and toks[k - 1].at or t.at, last.raw:match("(%p+)$") or "", last.e)
       end
     end
   end
