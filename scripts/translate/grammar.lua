@@ -8723,6 +8723,35 @@ function G:crossing_without_place()
   end
 end
 
+-- "proceed to NIKOT directly, KABAR may be skipped", "direct NINAT, GUMIT is not required": a waypoint of the
+-- aircraft's route before the place of a DIRECT issued to it, said in a clause of its own that only calls it
+-- skipped or not needed, is what that direct-to does: set aside. A place after it on the route, or off the route,
+-- or a clause with any other word, stays and is asked about.
+function G:skipped_on_direct()
+  local skip = "may can should could will be is are not no longer required needed skipped omitted bypassed"
+  for _, line in ipairs(self.out) do
+    local id, to = line:match("^DIRECT (%S+) (%S+)$")
+    local route = id and (self:state(id) or {}).route or {}
+    local before = {}
+    for _, w in ipairs(route) do
+      if w:upper() == (to or ""):upper() then break end
+      before[w:upper()] = true
+    end
+    for _, r in ipairs(self.refs) do
+      if r.kind == "waypoint" and before[r.name:upper()] and (r.b == 1 or self.t[r.b - 1].kind == "punct") then
+        local e, said = r.e, {}
+        while self:word(e, skip) do said[self.words[e]] = true; e = e + 1 end
+        local negated = said["not"] or said["no"]
+        if (said.skipped or said.omitted or said.bypassed or (negated and (said.required or said.needed)))
+            and (not self.t[e] or self.t[e].kind == "punct") then
+          self:set_aside(r.b, e - 1)
+          return
+        end
+      end
+    end
+  end
+end
+
 -- "cleared to Dubai via track Charlie", "direct OMDB via the flight planned route": a direct-to issued in a request
 -- whose "via" names no waypoint, quantity or aircraft in its clause (an oceanic track, an airway, a route by its
 -- name) is asked: the route said is no straight line to the place, and squawk cannot fly it.
@@ -10623,6 +10652,7 @@ function M.translate(text, world)
   if not g.ask then g:crossing_without_place() end
   if not g.ask then g:direct_when_able() end
   if not g.ask then g:direct_via_unread() end
+  if not g.ask then g:skipped_on_direct() end
   g:same_again(same)
   if not g.ask then g:forgotten() end
   if not g.ask then g:described() end
