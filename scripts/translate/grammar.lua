@@ -9361,6 +9361,11 @@ local AIRLINE_WORDS = {}
 -- (one-word telephonies, and one-word names an airline is known by: "the British one")
 for _, a in ipairs(names.airlines) do AIRLINE_WORDS[a[1]] = a[2] end
 for _, a in ipairs(names.common) do AIRLINE_WORDS[a[1]] = AIRLINE_WORDS[a[1]] or a[2] end
+-- (telephonies and common names of one to three words -> the airline's ICAO prefix: "air india" AIC)
+G.airline_name_codes = {}
+for _, list in ipairs({ names.airlines, names.common }) do
+  for _, a in ipairs(list) do G.airline_name_codes[a[1]] = G.airline_name_codes[a[1]] or a[2] end
+end
 -- "put in a Transat A321, TSC 302, at FRANX": an airline's ICAO code typed in capitals apart from its flight
 -- number is joined to it when the request names that airline by a word of its own ("Transat": TSC).
 -- "Create Portugalia 1921, call sign PGA1921, ...": a callsign said by its airline's one-word telephony and
@@ -9369,6 +9374,19 @@ local function named_airline_ids(text)
   if text:find("[Cc]all[%s%-]*[Ss]ign") then
     text = text:gsub("%f[%a](%a+)%s+(%d+%a*)%s*,%s*[Cc]all[%s%-]*[Ss]ign%s+(%u%u%u)(%w+)%f[%W]", function(w, n, code, num)
       if AIRLINE_WORDS[w:lower()] == code and n:upper() == num:upper() then return code .. num end
+      return nil
+    end)
+  end
+  -- ("create SpiceJet SG 2709", "Air India AI 657"): the airline's IATA code typed between its name and the flight
+  -- number (names.iata, names.iata_digit) says the airline again, and is dropped
+  if text:find("%f[%w][%u%d]%u?%d?%s+%d") then
+    text = text:gsub("()%f[%w]([%u%d][%u%d])%s+(%d+%a?)%f[%W]", function(at, code, n)
+      local icao = names.iata[code] or names.iata_digit[code]
+      local before = icao and text:sub(1, at - 1):lower():match("(%a[%a ]*%a)%s+$")
+      for k = 1, before and 3 or 0 do
+        local name = before:match(string.rep("%a+%s+", k - 1) .. "%a+$")
+        if name and G.airline_name_codes[name] == icao then return n end
+      end
       return nil
     end)
   end
