@@ -2080,11 +2080,12 @@ return function(intent, rule, words)
   rule { "resume", false, when = function(g, i)
     return g:word(i - 1, "to") and g:word(i - 2, "able") and g:preceded_by(i - 2, 3, "advise report")
   end }
-  rule { "say report", "pos", near = { 3, "altitude speed heading position level airspeed mach alt lvl hdg spd pos fl" } }
+  rule { "say report", "pos", near = { 3, "altitude speed heading position level airspeed mach alt lvl hdg spd pos fl vertical" } }
   -- "say distance to TELIN", "report your distance from BIG": the aircraft's position asked, to judge it by
   rule { "say report", "pos", near = { 2, "distance" } }
-  -- ("report with your present level": the value "with" the reply)
-  rule { "report", "pos", next = "with", near = { 4, "altitude speed heading position level airspeed mach alt lvl hdg spd pos fl" } }
+  -- ("report with your present level": the value "with" the reply; "vertical" of a vertical speed said with "present"
+  -- or "current" before it, the speed itself past the window: "revert with its present vertical speed")
+  rule { "report", "pos", next = "with", near = { 4, "altitude speed heading position level airspeed mach alt lvl hdg spd pos fl vertical" } }
   -- "request your present heading", "request your level": the controller asking the aircraft's own value
   -- (a report, as "say"), never an instruction to keep it
   rule { "request", "pos", next = "your", near = { 3, "altitude speed heading position level airspeed mach alt lvl hdg spd pos fl" } }
