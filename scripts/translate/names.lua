@@ -662,9 +662,9 @@ local names = {
     { "latam", "TAM", "LAN", "LPE", "LNE", "DSM" },  -- (LATAM Brasil, Chile, Peru, Ecuador, Argentina)
     { "jetsmart", "JAT", "JES", "JZR" },  -- (JetSMART, JetSMART Argentina, JetSMART Peru)
     { "sky", "SKU", "SKX" },  -- (Sky Airline, Sky Airline Peru)
-    -- (AirAsia Malaysia, AirAsia X, Indonesia, Philippines and Thai AirAsia)
-    { "airasia", "AXM", "XAX", "AWQ", "APG", "AIQ" },
-    { "air asia", "AXM", "XAX", "AWQ", "APG", "AIQ" },
+    -- (AirAsia Malaysia, AirAsia X, Indonesia, Philippines, Thai AirAsia and AirAsia India)
+    { "airasia", "AXM", "XAX", "AWQ", "APG", "AIQ", "IAD" },
+    { "air asia", "AXM", "XAX", "AWQ", "APG", "AIQ", "IAD" },
     { "jetstar", "JST", "JSA", "JJP" },  -- (Jetstar Airways, Jetstar Asia, Jetstar Japan)
     -- cargo airlines known by their group's name, none of them telephony: "the DHL" (European Air Transport
     -- Leipzig, DHL Air UK, DHL Aero Expreso, DHL International, and AStar's DHL), "the ASL" (ASL Airlines

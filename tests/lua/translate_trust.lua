@@ -13474,3 +13474,12 @@ do
   check_eq(ex("Please give a climb of 1500 feet per minute to the Emirates triple seven."), "VS UAE508 1500")
   check_eq(ex("Vistara 871 heading 200 to stay clear of the Emirates."), "HDG VTI871 200")
 end
+
+-- Cycle 52 (f142): AirAsia India (IAD) is of the AirAsia brand: "the AirAsia" alone with it the only one flying is
+-- that aircraft; with another AirAsia flying it is asked
+do
+  local _, ex = scene({ "CRE IAD771 A320 12.9 77.6 090 FL200 260" })
+  check_eq(ex("The AirAsia may be given 210 knots only."), "SPD IAD771 210")
+  _, ex = scene({ "CRE IAD771 A320 12.9 77.6 090 FL200 260", "CRE AXM5106 A320 4.9 116.6 300 FL120 260" })
+  asked(ex("The AirAsia may be given 210 knots only."), "two AirAsia aircraft")
+end
