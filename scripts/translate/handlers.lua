@@ -1076,7 +1076,12 @@ function m:airline_refs()
       -- (`heard`: a callsign no aircraft flying has, the matcher's reading of the airline and the number after it)
       local heard = self:refs_in(i, i + 1, "aircraft")[1]
       heard = heard and heard.b == i and not heard.exists and heard
-      if the and (not inside[i] or heard) then test, te = self:type_said(e) end
+      -- ("IndiGo ATR may be climbed to FL150": the airline and a type opening a sentence, no number heard as a
+      -- callsign, describe the airline's aircraft of that type as after "the")
+      local opening = not prev or (prev.kind == "punct" and prev.text ~= ",")
+      if (the and (not inside[i] or heard)) or (opening and not heard and not inside[i]) then
+        test, te = self:type_said(e)
+      end
       if heard and te and te < heard.e then test = nil end
       for k = 1, test and #self.t or 0 do
         if self:intent_at(k) == "create" then test = nil end

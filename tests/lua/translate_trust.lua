@@ -13483,3 +13483,13 @@ do
   _, ex = scene({ "CRE IAD771 A320 12.9 77.6 090 FL200 260", "CRE AXM5106 A320 4.9 116.6 300 FL120 260" })
   asked(ex("The AirAsia may be given 210 knots only."), "two AirAsia aircraft")
 end
+
+-- Cycle 52 (f142): an airline and a type opening a sentence ("IndiGo ATR may be climbed ...") describe the airline's
+-- aircraft of that type, as after "the"; the airline alone with two flying, or a number heard as a callsign, is asked
+do
+  local _, ex = scene({ "CRE IGO640 A20N 14.2 77.5 170 FL130 260", "CRE IGO7730 AT76 13.4 77.8 120 7000 190" })
+  check_eq(ex("IndiGo ATR may be climbed to 9000 feet."), "ALT IGO7730 9000")
+  check_eq(ex("IndiGo A320 kindly descend to FL110."), "ALT IGO640 FL110")
+  asked(ex("IndiGo may be climbed to 9000 feet."), "two IndiGo flying")
+  asked(ex("IndiGo 320 descend FL110."), "a number heard as a callsign")
+end
