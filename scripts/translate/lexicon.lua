@@ -1611,7 +1611,7 @@ return {
     before = { "arrival", "arrivals", "departures", "inbound", "inbounds", "outbound", "tma", "acc", "fir", "cta",
         "uac", "sector", "airspace", "flow", "stream", "push", "bank" },
     after = { "into", "for", "to" },
-    leads = { "arrival", "arrivals", "inbound", "arriving", "bound", "flight", "flights" },
+    leads = { "arrival", "arrivals", "inbound", "arriving", "bound", "flight", "flights", "departing" },
     -- where an aircraft comes from said in a relative clause that identifies it, no origin set ("the Easy that's
     -- just departed Luton, Easy 55KJ, ..."): a word of `departs` after one of `relatives`, words of `relative_fill`
     -- between (G:relative_departure)

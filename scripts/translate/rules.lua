@@ -1589,6 +1589,8 @@ return function(intent, rule, words)
   end }
   -- (no origin where a relative clause says where the aircraft comes from to identify it: G:relative_departure)
   rule { "departed departing", false, when = function(g, i) return g:relative_departure(i) end }
+  -- ("it is departing to Chennai", "departing for Delhi": where it goes, a description, lexicon.described_places)
+  rule { "departed departing", false, next = "to for towards" }
   rule { "origin departed departing orig", "orig" }
   -- "set departure airport EDDL", "CFG7TK departure aerodrome EDDF": the airport it departed named
   rule { "departure", "orig", next = "airport aerodrome airfield" }

@@ -13493,3 +13493,14 @@ do
   asked(ex("IndiGo may be climbed to 9000 feet."), "two IndiGo flying")
   asked(ex("IndiGo 320 descend FL110."), "a number heard as a callsign")
 end
+
+-- Cycle 52 (f142): "departing to" a place is where the aircraft goes, a description, never its origin
+do
+  local _, ex = scene({ "CRE IGO7730 AT76 13.4 77.8 120 7000 190", "DEST IGO7730 VOMM" })
+  check(not ex("IndiGo 7730 climb to 9000 feet, it is departing to VOMM."):find("ORIG", 1, true), "no origin")
+  check_eq(ex("IndiGo 7730 departed VOBL."), "ORIG IGO7730 VOBL")
+  _, ex = navscene({ "CRE IGO7730 AT76 13.4 77.8 120 7000 190", "DEST IGO7730 VOMM" }, "a city departed to")
+  if ex then
+    check_eq(ex("IndiGo 7730 climb to 9000 feet, it is departing to Chennai."), "ALT IGO7730 9000")
+  end
+end
