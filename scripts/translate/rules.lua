@@ -1636,10 +1636,13 @@ return function(intent, rule, words)
   rule { "vertical vertically", "vnav", prev = { 4, "plan route" } }  -- "follow its flight plan vertically"
   rule { "vertical", "vnav", next = "profile navigation nav" }
   rule { "route rte waypoints", "listrte", prev = { 4, "show list display what print see look where check" } }
-  -- "tell me the route of the Emirates": the route told to the speaker ("tell KLM12 to follow its route" instructs)
+  -- "what is the next waypoint of Akasa 1402": the route's next point, shown with the route
+  rule { "waypoint", "listrte", prev = { 1, "next" }, when = function(g, i) return g:preceded_by(i, 4, "what which") end }
+  -- "tell me the route of the Emirates", "kindly tell the route of Air India 540": the route told to the speaker
+  -- ("tell KLM12 to follow its route" instructs)
   rule { "route rte routing waypoints", "listrte", when = function(g, i)
     local k = g:find_word(math.max(1, i - 4), i, "tell")
-    return k < i and g:word(k + 1, "me us")
+    return k < i and (g:word(k + 1, "me us") or (k + 2 == i and g:word(k + 1, "the")))
   end }
   -- ("what's your plan for the Transavia?" asks the addressee's own intentions: no route listed)
   rule { "plan", "listrte", prev = { 4, "show list display what print see look where check" },

@@ -13504,3 +13504,13 @@ do
     check_eq(ex("IndiGo 7730 climb to 9000 feet, it is departing to Chennai."), "ALT IGO7730 9000")
   end
 end
+
+-- Cycle 52 (f142): "kindly tell the route of X" and "what is the next waypoint of X" ask for the route (LISTRTE);
+-- "tell X to follow the route" still instructs
+do
+  local _, ex = scene({ "CRE AIC318 A321 11.5 79.8 035 FL120 260" })
+  check_eq(ex("Kindly tell the route of Air India 318."), "LISTRTE AIC318")
+  check_eq(ex("What is the next waypoint of Air India 318?"), "LISTRTE AIC318")
+  check_eq(ex("Tell the Air India to follow the route."), "LNAV AIC318 ON")
+  asked(ex("Air India 318 proceed to the next waypoint."), "no waypoint named")
+end
