@@ -13508,7 +13508,7 @@ end
 -- Cycle 52 (f142): "kindly tell the route of X" and "what is the next waypoint of X" ask for the route (LISTRTE);
 -- "tell X to follow the route" still instructs
 do
-  local _, ex = scene({ "CRE AIC318 A321 11.5 79.8 035 FL120 260" })
+  local _, ex = scene({ "DEFWPT PUNAX 11.9 80", "CRE AIC318 A321 11.5 79.8 035 FL120 260", "ADDWPT AIC318 PUNAX" })
   check_eq(ex("Kindly tell the route of Air India 318."), "LISTRTE AIC318")
   check_eq(ex("What is the next waypoint of Air India 318?"), "LISTRTE AIC318")
   check_eq(ex("Tell the Air India to follow the route."), "LNAV AIC318 ON")
