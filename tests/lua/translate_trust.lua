@@ -13478,7 +13478,8 @@ end
 -- Cycle 52 (f142): AirAsia India (IAD) is of the AirAsia brand: "the AirAsia" alone with it the only one flying is
 -- that aircraft; with another AirAsia flying it is asked
 do
-  local _, ex = navscene({ "CRE IAD771 A320 12.9 77.6 090 FL200 260" }, "the AirAsia India")
+  local _, ex = navscene({ "CRE IAD771 A320 12.9 77.6 090 FL200 260", "CRE IGO852 A320 13 77 180 FL220 260" },
+    "the AirAsia India")
   if ex then
     check_eq(ex("The AirAsia may be given 210 knots only."), "SPD IAD771 210")
     _, ex = navscene({ "CRE IAD771 A320 12.9 77.6 090 FL200 260", "CRE AXM5106 A320 4.9 116.6 300 FL120 260" }, "")
