@@ -909,7 +909,8 @@ end
 -- straight after another value, ending its clause, is the one the speaker rules out (a readback
 -- corrected); it is dropped, with its "not", and the value before it stands; so is an apology closing the
 -- request after it ("fl200 not 180 sorry", lexicon.self_correction.apology). Anywhere else ("climb FL310
--- not 300 speed 250") the "not" stays, and is asked about.
+-- not 300 speed 250") the "not" stays, and is asked about. "and not" and "only, not" straight after the value are
+-- the same ruling out ("should go to FL370 and not FL380", "FL310 only, not FL330"; "and" dropped with it).
 local NEGATED_NOUNS = set_of({ "fl", "flight", "level", "heading", "speed", "mach", "point" })
 G.apology = set_of(lexicon.self_correction.apology)
 local function negated_values(text)
@@ -918,7 +919,10 @@ local function negated_values(text)
   local function value(t) return t and (t.raw:match("%d%p*$") or NUMBER_WORDS[t.bare] or UNIT_WORDS[t.bare]) end
   local put, done, from = tokens.splicer(text)
   for k, t in ipairs(toks) do
-    if t.bare == "not" and t.raw:lower() == "not" and value(toks[k - 1]) and k > from() then
+    -- (`v`: the value ruled out against: straight before "not", or before "and" or "only," there)
+    local v = k - 1
+    if toks[v] and (toks[v].raw:lower() == "and" or toks[v].raw:lower() == "only,") then v = v - 1 end
+    if t.bare == "not" and t.raw:lower() == "not" and value(toks[v]) and v > from() then
       local j, numbers, stop = k + 1, 0, false
       while toks[j] and (value(toks[j]) or (numbers == 0 and NEGATED_NOUNS[toks[j].bare])) do
         if value(toks[j]) then numbers = numbers + 1 end
@@ -932,7 +936,7 @@ local function negated_values(text)
       end
       if numbers > 0 and (stop or not toks[j]) then
         local last = toks[j - 1]
-        put(t.at, last.raw:match("(%p+)$") or "", last.e)
+        put(toks[k - 1].raw:lower() == "and" and toks[k - 1].at or t.at, last.raw:match("(%p+)$") or "", last.e)
       end
     end
   end
@@ -8747,6 +8751,35 @@ function G:crossing_without_place()
   end
 end
 
+-- "proceed to NIKOT directly, KABAR may be skipped", "direct NINAT, GUMIT is not required": a waypoint of the
+-- aircraft's route before the place of a DIRECT issued to it, said in a clause of its own that only calls it
+-- skipped or not needed, is what that direct-to does: set aside. A place after it on the route, or off the route,
+-- or a clause with any other word, stays and is asked about.
+function G:skipped_on_direct()
+  local skip = "may can should could will be is are not no longer required needed skipped omitted bypassed"
+  for _, line in ipairs(self.out) do
+    local id, to = line:match("^DIRECT (%S+) (%S+)$")
+    local route = id and (self:state(id) or {}).route or {}
+    local before = {}
+    for _, w in ipairs(route) do
+      if w:upper() == (to or ""):upper() then break end
+      before[w:upper()] = true
+    end
+    for _, r in ipairs(self.refs) do
+      if r.kind == "waypoint" and before[r.name:upper()] and (r.b == 1 or self.t[r.b - 1].kind == "punct") then
+        local e, said = r.e, {}
+        while self:word(e, skip) do said[self.words[e]] = true; e = e + 1 end
+        local negated = said["not"] or said["no"]
+        if (said.skipped or said.omitted or said.bypassed or (negated and (said.required or said.needed)))
+            and (not self.t[e] or self.t[e].kind == "punct") then
+          self:set_aside(r.b, e - 1)
+          return
+        end
+      end
+    end
+  end
+end
+
 -- "cleared to Dubai via track Charlie", "direct OMDB via the flight planned route": a direct-to issued in a request
 -- whose "via" names no waypoint, quantity or aircraft in its clause (an oceanic track, an airway, a route by its
 -- name) is asked: the route said is no straight line to the place, and squawk cannot fly it.
@@ -8850,7 +8883,26 @@ M.not_understood = UNDERSTOOD
 -- "AUA123 speed 250, DLH6CK the same", "..., DLH6CK too", "..., same for DLH6CK": another flying aircraft
 -- said with "same", "too", "likewise", "ditto" or "as well" after it, or after "same for" in a clause of
 -- its own, ending its clause, gets the request's instructions too. Returns the aircraft so named (their tokens used, never instructed by the parse).
-local SAME_AFTER = { same = true, too = true, likewise = true, ditto = true }
+-- Also the formal passive and its verb ("the same may be done for the SpiceJet also", "the same can be given to
+-- DLH6CK", "do the same for the Akasa"): G.same_opening; "also" closing the clause is "too". Called again after
+-- the passes that resolve an aircraft named by its airline or type ("the SpiceJet"), for those references.
+local SAME_AFTER = { same = true, too = true, likewise = true, ditto = true, also = true }
+-- The first token of "same ... for/to" ending just before b (the aircraft's words), with "the", "do the" or
+-- "give the" before "same": "same for", "the same may be done for", "give the same to", "do the same for"; nil
+-- when none. At most four words of a passive verb between ("may be done", "should also be given").
+function G:same_opening(b)
+  local SAME_PASSIVE = "may can should must shall could would will to be done given applied also"
+  local k = b - 1
+  if self:word(k, "the") then k = k - 1 end
+  if not self:word(k, "for to") then return nil end
+  k = k - 1
+  local stop = k - 4
+  while k > stop and k > 1 and self:word(k, SAME_PASSIVE) do k = k - 1 end
+  if not self:word(k, "same likewise") then return nil end
+  if self:word(k - 1, "the") then k = k - 1 end
+  if self:word(k - 1, "do give") then k = k - 1 end
+  return k
+end
 function G:same_for()
   local named = {}
   for _, r in ipairs(self.refs) do
@@ -8860,10 +8912,11 @@ function G:same_for()
       local e = (self.t[k] and SAME_AFTER[self.t[k].text] and k + 1)
         or (self:word(k, "as") and self:word(k + 1, "well") and k + 2) or nil
       local b = r.b
-      if not e and self:word(r.b - 1, "for") and self:word(r.b - 2, "same likewise") then
-        b = self:word(r.b - 3, "the") and r.b - 3 or r.b - 2
+      local from = self:same_opening(r.b)
+      if from then
+        b = from
         opens = b > 1 and (self.t[b - 1].kind == "punct" or self:word(b - 1, "and"))
-        e = r.e
+        e = e or r.e
       end
       if e and opens and (not self.t[e] or self.t[e].kind == "punct") then
         self:mark_used(b, e)
@@ -9335,6 +9388,11 @@ local AIRLINE_WORDS = {}
 -- (one-word telephonies, and one-word names an airline is known by: "the British one")
 for _, a in ipairs(names.airlines) do AIRLINE_WORDS[a[1]] = a[2] end
 for _, a in ipairs(names.common) do AIRLINE_WORDS[a[1]] = AIRLINE_WORDS[a[1]] or a[2] end
+-- (telephonies and common names of one to three words -> the airline's ICAO prefix: "air india" AIC)
+G.airline_name_codes = {}
+for _, list in ipairs({ names.airlines, names.common }) do
+  for _, a in ipairs(list) do G.airline_name_codes[a[1]] = G.airline_name_codes[a[1]] or a[2] end
+end
 -- "put in a Transat A321, TSC 302, at FRANX": an airline's ICAO code typed in capitals apart from its flight
 -- number is joined to it when the request names that airline by a word of its own ("Transat": TSC).
 -- "Create Portugalia 1921, call sign PGA1921, ...": a callsign said by its airline's one-word telephony and
@@ -9343,6 +9401,19 @@ local function named_airline_ids(text)
   if text:find("[Cc]all[%s%-]*[Ss]ign") then
     text = text:gsub("%f[%a](%a+)%s+(%d+%a*)%s*,%s*[Cc]all[%s%-]*[Ss]ign%s+(%u%u%u)(%w+)%f[%W]", function(w, n, code, num)
       if AIRLINE_WORDS[w:lower()] == code and n:upper() == num:upper() then return code .. num end
+      return nil
+    end)
+  end
+  -- ("create SpiceJet SG 2709", "Air India AI 657"): the airline's IATA code typed between its name and the flight
+  -- number (names.iata, names.iata_digit) says the airline again, and is dropped
+  if text:find("%f[%w][%u%d]%u?%d?%s+%d") then
+    text = text:gsub("()%f[%w]([%u%d][%u%d])%s+(%d+%a?)%f[%W]", function(at, code, n)
+      local icao = names.iata[code] or names.iata_digit[code]
+      local before = icao and text:sub(1, at - 1):lower():match("(%a[%a ]*%a)%s+$")
+      for k = 1, before and 3 or 0 do
+        local name = before:match(string.rep("%a+%s+", k - 1) .. "%a+$")
+        if name and G.airline_name_codes[name] == icao then return n end
+      end
       return nil
     end)
   end
@@ -10517,6 +10588,7 @@ function M.translate(text, world)
   g:airline_refs()
   g:type_refs()
   g:described_refs()
+  for _, id in ipairs(g:same_for()) do same[#same + 1] = id end
   g:bearing_refs()
   g:creation_refs()
   g:carried_refs()
@@ -10630,6 +10702,7 @@ function M.translate(text, world)
   if not g.ask then g:crossing_without_place() end
   if not g.ask then g:direct_when_able() end
   if not g.ask then g:direct_via_unread() end
+  if not g.ask then g:skipped_on_direct() end
   g:same_again(same)
   if not g.ask then g:forgotten() end
   if not g.ask then g:described() end

@@ -914,6 +914,17 @@ function m:added_to(to, e)
   return false
 end
 
+-- True when "to" at `to` closes a value given to an aircraft whose words follow ("kindly give Mach 0.80 to the
+-- Emirates", "a descent of 1000 feet per minute may be given to the Akasa"): a verb of giving earlier in its clause.
+function m:given_to(to)
+  if not self:word(to, "to") then return false end
+  for k = to - 1, math.max(1, to - 12), -1 do
+    if self.t[k].kind == "punct" then return false end
+    if self:word(k, "give given giving gives assign assigned issue issued") then return true end
+  end
+  return false
+end
+
 -- An aircraft named by "the" and its airline alone ("could the Ryanair come
 -- down", "the easyJet's route", "the BA"), with exactly one aircraft of that
 -- airline flying, is a reference to it (added to self.refs, kind "aircraft",
@@ -1041,7 +1052,7 @@ function m:airline_refs()
       local the = prev and prev.kind == "word" and prev.text == "the"
           and (not self:word(i - 2, "@airline_context @aircraft_context @below @above")
             or self:word(e, "@route_nouns")  -- "add X to the KLM's route" (the lexer drops "'s")
-            or self:added_to(i - 2, e))
+            or self:added_to(i - 2, e) or self:given_to(i - 2))
       -- ("the regional jet from Republic, climb ...", "the plane from Delta": "the", words of an aircraft described
       -- and "from" before the airline capitalised name its aircraft, as "the Republic jet" does; `from_the`: the
       -- position of that "the")
@@ -1065,7 +1076,12 @@ function m:airline_refs()
       -- (`heard`: a callsign no aircraft flying has, the matcher's reading of the airline and the number after it)
       local heard = self:refs_in(i, i + 1, "aircraft")[1]
       heard = heard and heard.b == i and not heard.exists and heard
-      if the and (not inside[i] or heard) then test, te = self:type_said(e) end
+      -- ("IndiGo ATR may be climbed to FL150": the airline and a type opening a sentence, no number heard as a
+      -- callsign, describe the airline's aircraft of that type as after "the")
+      local opening = not prev or (prev.kind == "punct" and prev.text ~= ",")
+      if (the and (not inside[i] or heard)) or (opening and not heard and not inside[i]) then
+        test, te = self:type_said(e)
+      end
       if heard and te and te < heard.e then test = nil end
       for k = 1, test and #self.t or 0 do
         if self:intent_at(k) == "create" then test = nil end

@@ -89,6 +89,8 @@ return {
     discourse = { "well", "right", "alright", "just", "also", "too", "very", "really", "quite", "rather", "bit", "lot",
         "little", "only", "even", "still", "already", "again", "actually", "maybe", "perhaps", "probably",
         "now", "first", "next", "last", "soon", "quickly", "slightly", "fine", "good", "great", "sure",
+        -- (urgency of the whole request, "kindly do the needful urgently": what squawk sends runs at once)
+        "urgently",
         -- (how hard a turn is flown, which squawk's turn model does not take: "hard left heading 350", named in the
         -- note when said as the manner, not_simulated)
         "hard", "sharp", "sharply", "aggressive", "aggressively",
@@ -121,6 +123,8 @@ return {
     courtesy = { "please", "kindly", "thanks", "thank", "cheers", "like", "want", "wants", "wish", "let", "lets",
         "mind", "able", "possible", "chance", "ask", "tell", "make", "have", "try", "see", "help", "give",
         "put", "throw", "keep", "set", "bring", "take", "ready", "appreciate", "instruct", "sure",
+        -- (the formal passive of "bring": "it may be brought down to FL110", "the Akasa may be brought to 250 knots")
+        "brought",
         -- an aircraft handed to a teammate to deal with ("can you take Ayline 672 and sort its speed out")
         "sort",
         -- verbs of opinion that frame a request ("I think the easyJet should go direct")
@@ -261,6 +265,9 @@ return {
         "at the moment", "for a moment", "for now", "right now", "for the moment", "in order to", "in that order",
         "in this order", "sorry to bother you", "to be safe", "to be sure", "to be on the safe side", "just in case",
         "after that", "after this",
+        -- Indian English office courtesy closing a request ("..., kindly do the needful", "please revert once done":
+        -- do what was asked, reply when done); squawk's commands run as sent and answer nothing back
+        "do the needful", "revert once done", "revert when done", "revert after doing", "revert back",
         -- a message said again, in Indian English as "I say again" is elsewhere ("Express India 1356, once again,
         -- descend 9000 feet"): never a condition
         "once again",
@@ -354,6 +361,9 @@ return {
         "bump", "crank", "push", "knock", "dial", "stay", "remain", "return", "sit", "head", "hand",
         -- verbs that open the move an instruction names ("begin its descent to FL200", "commence descent")
         "begin", "begins", "commence", "commences", "initiate", "initiates",
+        -- (Indian English "prepone the descent", "kindly prepone its climb": the move made earlier than
+        -- planned; squawk's instruction runs at once, as "begin" it)
+        "prepone", "prepones", "preponed",
         -- legs of an approach a vector is for ("vectors for base"), and alerts
         "base", "downwind", "final", "spacing", "sequencing", "alert",
         -- controllers' written abbreviations of instruction words
@@ -1610,7 +1620,7 @@ return {
     before = { "arrival", "arrivals", "departures", "inbound", "inbounds", "outbound", "tma", "acc", "fir", "cta",
         "uac", "sector", "airspace", "flow", "stream", "push", "bank" },
     after = { "into", "for", "to" },
-    leads = { "arrival", "arrivals", "inbound", "arriving", "bound", "flight", "flights" },
+    leads = { "arrival", "arrivals", "inbound", "arriving", "bound", "flight", "flights", "departing" },
     -- where an aircraft comes from said in a relative clause that identifies it, no origin set ("the Easy that's
     -- just departed Luton, Easy 55KJ, ..."): a word of `departs` after one of `relatives`, words of `relative_fill`
     -- between (G:relative_departure)

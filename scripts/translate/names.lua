@@ -571,7 +571,7 @@ local names = {
     -- the Middle East, Africa and Asia
     EK = "UAE", FZ = "FDB", QR = "QTR", EY = "ETD", GF = "GFA", KU = "KAC", WY = "OMA", SV = "SVA", RJ = "RJA",
     LY = "ELY", MS = "MSR", AH = "DAH", TU = "TAR", ET = "ETH", KQ = "KQA", SA = "SAA", DT = "DTA", TM = "LAM",
-    MK = "MAU", KP = "SKK", KC = "KZR", HY = "UZB", AI = "AIC", PK = "PIA", UL = "ALK", SQ = "SIA", TG = "THA",
+    MK = "MAU", KP = "SKK", KC = "KZR", HY = "UZB", AI = "AIC", SG = "SEJ", IX = "AXB", QP = "AKJ", PK = "PIA", UL = "ALK", SQ = "SIA", TG = "THA",
     MH = "MAS", GA = "GIA", PR = "PAL", VN = "HVN", CX = "CPA", CI = "CAL", BR = "EVA", JL = "JAL", NH = "ANA",
     KE = "KAL", OZ = "AAR", CA = "CCA", MU = "CES", CZ = "CSN", HU = "CHH", QF = "QFA", NZ = "ANZ",
     -- the Americas
@@ -580,6 +580,10 @@ local names = {
     WS = "WJA", WG = "SWG", AV = "AVA", CM = "CMP", LA = "LAN", JJ = "TAM", LP = "LPE", XL = "LNE", AR = "ARG",
     CV = "CLX",
   },
+  -- iata_digit: an airline's IATA designator holding a digit -> its ICAO prefix, read only straight after the
+  -- airline's own name and before a flight number ("IndiGo 6E 5011": grammar.lua named_airline_ids); alone
+  -- ("6E 5011") it is no callsign squawk reads
+  iata_digit = { ["6E"] = "IGO", I5 = "IAD", G8 = "GOW", ["9W"] = "JAI" },
   -- iata_airports: a large airport's IATA code (three capital letters) -> its ICAO code, for codes certain; read
   -- typed in capitals where an airport is meant ("divert AUH", "send it to MUC": translate/handlers_other.lua
   -- dest_orig). Three capitals not listed are asked after "divert" or "send", never guessed from navdata names.
@@ -660,9 +664,9 @@ local names = {
     { "latam", "TAM", "LAN", "LPE", "LNE", "DSM" },  -- (LATAM Brasil, Chile, Peru, Ecuador, Argentina)
     { "jetsmart", "JAT", "JES", "JZR" },  -- (JetSMART, JetSMART Argentina, JetSMART Peru)
     { "sky", "SKU", "SKX" },  -- (Sky Airline, Sky Airline Peru)
-    -- (AirAsia Malaysia, AirAsia X, Indonesia, Philippines and Thai AirAsia)
-    { "airasia", "AXM", "XAX", "AWQ", "APG", "AIQ" },
-    { "air asia", "AXM", "XAX", "AWQ", "APG", "AIQ" },
+    -- (AirAsia Malaysia, AirAsia X, Indonesia, Philippines, Thai AirAsia and AirAsia India)
+    { "airasia", "AXM", "XAX", "AWQ", "APG", "AIQ", "IAD" },
+    { "air asia", "AXM", "XAX", "AWQ", "APG", "AIQ", "IAD" },
     { "jetstar", "JST", "JSA", "JJP" },  -- (Jetstar Airways, Jetstar Asia, Jetstar Japan)
     -- cargo airlines known by their group's name, none of them telephony: "the DHL" (European Air Transport
     -- Leipzig, DHL Air UK, DHL Aero Expreso, DHL International, and AStar's DHL), "the ASL" (ASL Airlines

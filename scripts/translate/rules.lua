@@ -1592,6 +1592,8 @@ return function(intent, rule, words)
   end }
   -- (no origin where a relative clause says where the aircraft comes from to identify it: G:relative_departure)
   rule { "departed departing", false, when = function(g, i) return g:relative_departure(i) end }
+  -- ("it is departing to Chennai", "departing for Delhi": where it goes, a description, lexicon.described_places)
+  rule { "departed departing", false, next = "to for towards" }
   rule { "origin departed departing orig", "orig" }
   -- "set departure airport EDDL", "CFG7TK departure aerodrome EDDF": the airport it departed named
   rule { "departure", "orig", next = "airport aerodrome airfield" }
@@ -1637,10 +1639,13 @@ return function(intent, rule, words)
   rule { "vertical vertically", "vnav", prev = { 4, "plan route" } }  -- "follow its flight plan vertically"
   rule { "vertical", "vnav", next = "profile navigation nav" }
   rule { "route rte waypoints", "listrte", prev = { 4, "show list display what print see look where check" } }
-  -- "tell me the route of the Emirates": the route told to the speaker ("tell KLM12 to follow its route" instructs)
+  -- "what is the next waypoint of Akasa 1402": the route's next point, shown with the route
+  rule { "waypoint", "listrte", prev = { 1, "next" }, when = function(g, i) return g:preceded_by(i, 4, "what which") end }
+  -- "tell me the route of the Emirates", "kindly tell the route of Air India 540": the route told to the speaker
+  -- ("tell KLM12 to follow its route" instructs)
   rule { "route rte routing waypoints", "listrte", when = function(g, i)
     local k = g:find_word(math.max(1, i - 4), i, "tell")
-    return k < i and g:word(k + 1, "me us")
+    return k < i and (g:word(k + 1, "me us") or (k + 2 == i and g:word(k + 1, "the")))
   end }
   -- ("what's your plan for the Transavia?" asks the addressee's own intentions: no route listed)
   rule { "plan", "listrte", prev = { 4, "show list display what print see look where check" },
@@ -2089,11 +2094,12 @@ return function(intent, rule, words)
   rule { "resume", false, when = function(g, i)
     return g:word(i - 1, "to") and g:word(i - 2, "able") and g:preceded_by(i - 2, 3, "advise report")
   end }
-  rule { "say report", "pos", near = { 3, "altitude speed heading position level airspeed mach alt lvl hdg spd pos fl" } }
+  rule { "say report", "pos", near = { 3, "altitude speed heading position level airspeed mach alt lvl hdg spd pos fl vertical" } }
   -- "say distance to TELIN", "report your distance from BIG": the aircraft's position asked, to judge it by
   rule { "say report", "pos", near = { 2, "distance" } }
-  -- ("report with your present level": the value "with" the reply)
-  rule { "report", "pos", next = "with", near = { 4, "altitude speed heading position level airspeed mach alt lvl hdg spd pos fl" } }
+  -- ("report with your present level": the value "with" the reply; "vertical" of a vertical speed said with "present"
+  -- or "current" before it, the speed itself past the window: "revert with its present vertical speed")
+  rule { "report", "pos", next = "with", near = { 4, "altitude speed heading position level airspeed mach alt lvl hdg spd pos fl vertical" } }
   -- "request your present heading", "request your level": the controller asking the aircraft's own value
   -- (a report, as "say"), never an instruction to keep it
   rule { "request", "pos", next = "your", near = { 3, "altitude speed heading position level airspeed mach alt lvl hdg spd pos fl" } }

@@ -13503,3 +13503,118 @@ do
   check_eq(ex("move KLM12 directly over NIRSI, 2000 feet higher than now, so FL220"), "MOVE KLM12 NIRSI FL220")
   asked(ex("move KLM12 directly over NIRSI, 2000 feet higher"), "a difference, no level")
 end
+
+-- Cycle 52 (f142): formal Indian English. "the same may be done for the SpiceJet also", "do the same for", "give
+-- the same to", "X also": the request's instructions given to an aircraft named by airline or type too (they had
+-- been dropped or asked); a clause that only says "the same" with no aircraft is still asked
+do
+  local _, ex = scene({ "CRE VTI871 A21N 19 73 090 FL300 270", "CRE SEJ413 B738 19.5 73.5 180 FL320 280",
+    "CRE AKJ220 B38M 18.5 72.5 000 FL280 260" })
+  check_eq(ex("Vistara 871 climb to FL340. The same may be done for the SpiceJet also."),
+    "ALT VTI871 FL340 ; ALT SEJ413 FL340")
+  check_eq(ex("Vistara 871 speed 250 knots, do the same for the Akasa."), "SPD VTI871 250 ; SPD AKJ220 250")
+  check_eq(ex("Vistara 871 heading 120 and give the same to the Akasa."), "HDG VTI871 120 ; HDG AKJ220 120")
+  check_eq(ex("Vistara 871 climb FL340, SpiceJet 413 also."), "ALT VTI871 FL340 ; ALT SEJ413 FL340")
+  check_eq(ex("Vistara 871 climb FL340, the same should be done for Akasa 220."), "ALT VTI871 FL340 ; ALT AKJ220 FL340")
+  asked(ex("Vistara 871 climb FL340, the same may be done for the Qatar also."), "no Qatar flying")
+  asked(ex("Vistara 871 heading 120, the same may be done for the Akasa, and Akasa 220 speed 250."),
+    "the same as which instruction")
+end
+
+-- Cycle 52 (f142): Indian English office courtesy ("kindly do the needful", "please revert once done") and
+-- "prepone the descent", "may be brought down to" are read; "revert to the previous heading" is still asked
+do
+  local _, ex = scene({ "CRE VTI871 A21N 19 73 090 FL300 270", "CRE AKJ220 B38M 18.5 72.5 000 FL280 260" })
+  check_eq(ex("Vistara 871 heading 150, Akasa 220 heading 330, kindly do the needful urgently."),
+    "HDG VTI871 150 ; HDG AKJ220 330")
+  check_eq(ex("Kindly climb Vistara 871 to FL340. Please revert once done."), "ALT VTI871 FL340")
+  check_eq(ex("Kindly prepone the climb of the Vistara to FL340."), "ALT VTI871 FL340")
+  check_eq(ex("The Akasa may be brought down to FL200 now itself."), "ALT AKJ220 FL200")
+  asked(ex("Vistara 871 kindly revert to the previous heading."), "no heading said")
+  check_eq(ex("Akasa 220 kindly revert with its present vertical speed."), "POS AKJ220")
+  check_eq(ex("Akasa 220 kindly report its current vertical speed."), "POS AKJ220")
+end
+
+-- Cycle 52 (f142): a value ruled out after "and not" or "only, not" is dropped as after "not"; a "not" that rules
+-- out no value of the same kind is still asked
+do
+  local _, ex = scene({ "CRE VTI871 A21N 19 73 090 FL300 270" })
+  check_eq(ex("Vistara 871 should climb to FL340 and not FL360."), "ALT VTI871 FL340")
+  check_eq(ex("Correction, Vistara 871 heading 120 only, not 150."), "HDG VTI871 120")
+  asked(ex("Vistara 871 climb FL340 and not too fast."), "a manner ruled out, no value")
+end
+
+-- Cycle 52 (f142): a waypoint of the route before a direct-to's place, said skipped or not required in its own
+-- clause, is what the direct-to does; one after the place, or "is required", is asked
+do
+  local _, ex = scene({ "DEFWPT PUNAX 19.2 74", "DEFWPT TOREM 19.4 75", "CRE VTI871 A21N 19 73 090 FL300 270",
+    "ADDWPT VTI871 PUNAX", "ADDWPT VTI871 TOREM" })
+  check_eq(ex("Vistara 871 proceed to TOREM directly, PUNAX may be skipped."), "DIRECT VTI871 TOREM")
+  check_eq(ex("Vistara 871 direct TOREM, PUNAX is not required."), "DIRECT VTI871 TOREM")
+  asked(ex("Vistara 871 direct TOREM, PUNAX is required."), "a waypoint kept, no skip")
+  asked(ex("Vistara 871 direct TOREM, PUNAX may be skipped later."), "a clause with more than the skip")
+end
+
+-- Cycle 52 (f142): an airline's IATA code typed between its name and the flight number ("SpiceJet SG 413", "IndiGo
+-- 6E 702") is the airline said again; the code alone apart from its number is still asked (Cycle 24's decision)
+do
+  local _, ex = scene({ "CRE SEJ413 B738 19.5 73.5 180 FL320 280", "CRE IGO702 A20N 18.9 72.9 270 FL240 260" })
+  check_eq(ex("SpiceJet SG 413 descend FL280."), "ALT SEJ413 FL280")
+  check_eq(ex("IndiGo 6E 702 heading 300 please."), "HDG IGO702 300")
+  check_eq(ex("create SpiceJet SG 1170, Boeing 737-800, at 19.8 N 73.1 E, heading 090, FL150, 250 knots"),
+    "CRE SEJ1170 B738 19.8 73.1 90 FL150 250")
+  asked(ex("SG 413 descend FL280."), "a code alone apart from its number")
+  asked(ex("6E 702 heading 300 please."), "a digit code alone")
+end
+
+-- Cycle 52 (f142): a value given "to the" airline's aircraft names the addressee; "to the" after another verb stays
+-- other traffic
+do
+  local _, ex = scene({ "CRE VTI871 A21N 19 73 090 FL300 270", "CRE UAE508 B77W 19.5 72.5 045 FL360 280" })
+  check_eq(ex("Kindly give 260 knots to the Emirates."), "SPD UAE508 260")
+  check_eq(ex("Please give a climb of 1500 feet per minute to the Emirates triple seven."), "VS UAE508 1500")
+  check_eq(ex("Vistara 871 heading 200 to stay clear of the Emirates."), "HDG VTI871 200")
+end
+
+-- Cycle 52 (f142): AirAsia India (IAD) is of the AirAsia brand: "the AirAsia" alone with it the only one flying is
+-- that aircraft; with another AirAsia flying it is asked
+do
+  local _, ex = navscene({ "CRE IAD771 A320 12.9 77.6 090 FL200 260", "CRE IGO852 A320 13 77 180 FL220 260" },
+    "the AirAsia India")
+  if ex then
+    check_eq(ex("The AirAsia may be given 210 knots only."), "SPD IAD771 210")
+    _, ex = navscene({ "CRE IAD771 A320 12.9 77.6 090 FL200 260", "CRE AXM5106 A320 4.9 116.6 300 FL120 260" }, "")
+    asked(ex("The AirAsia may be given 210 knots only."), "two AirAsia aircraft")
+  end
+end
+
+-- Cycle 52 (f142): an airline and a type opening a sentence ("IndiGo ATR may be climbed ...") describe the airline's
+-- aircraft of that type, as after "the"; the airline alone with two flying, or a number heard as a callsign, is asked
+do
+  local _, ex = scene({ "CRE IGO640 A20N 14.2 77.5 170 FL130 260", "CRE IGO7730 AT76 13.4 77.8 120 7000 190" })
+  check_eq(ex("IndiGo ATR may be climbed to 9000 feet."), "ALT IGO7730 9000")
+  check_eq(ex("IndiGo A320 kindly descend to FL110."), "ALT IGO640 FL110")
+  asked(ex("IndiGo may be climbed to 9000 feet."), "two IndiGo flying")
+  asked(ex("IndiGo 320 descend FL110."), "a number heard as a callsign")
+end
+
+-- Cycle 52 (f142): "departing to" a place is where the aircraft goes, a description, never its origin
+do
+  local _, ex = scene({ "CRE IGO7730 AT76 13.4 77.8 120 7000 190" })
+  check(not ex("IndiGo 7730 climb to 9000 feet, it is departing to VOMM."):find("ORIG", 1, true), "no origin")
+  check_eq(ex("IndiGo 7730 departed VOBL."), "ORIG IGO7730 VOBL")
+  _, ex = navscene({ "CRE IGO7730 AT76 13.4 77.8 120 7000 190", "DEST IGO7730 VOMM" }, "a city departed to")
+  if ex then
+    check_eq(ex("IndiGo 7730 climb to 9000 feet, it is departing to Chennai."), "ALT IGO7730 9000")
+  end
+end
+
+-- Cycle 52 (f142): "kindly tell the route of X" and "what is the next waypoint of X" ask for the route (LISTRTE);
+-- "tell X to follow the route" still instructs
+do
+  local _, ex = scene({ "DEFWPT PUNAX 11.9 80", "CRE AIC318 A321 11.5 79.8 035 FL120 260", "ADDWPT AIC318 PUNAX" })
+  check_eq(ex("Kindly tell the route of Air India 318."), "LISTRTE AIC318")
+  check_eq(ex("What is the next waypoint of Air India 318?"), "LISTRTE AIC318")
+  check_eq(ex("Tell the Air India to follow the route."), "LNAV AIC318 ON")
+  asked(ex("Air India 318 proceed to the next waypoint."), "no waypoint named")
+end
