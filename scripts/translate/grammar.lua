@@ -8822,7 +8822,7 @@ M.not_understood = UNDERSTOOD
 -- "AUA123 speed 250, DLH6CK the same", "..., DLH6CK too", "..., same for DLH6CK": another flying aircraft
 -- said with "same", "too", "likewise", "ditto" or "as well" after it, or after "same for" in a clause of
 -- its own, ending its clause, gets the request's instructions too. Returns the aircraft so named (their tokens used, never instructed by the parse).
-local SAME_AFTER = { same = true, too = true, likewise = true, ditto = true }
+local SAME_AFTER = { same = true, too = true, also = true, likewise = true, ditto = true }
 function G:same_for()
   local named = {}
   for _, r in ipairs(self.refs) do
@@ -10480,11 +10480,11 @@ function M.translate(text, world)
     fleet = world.aircraft, out = {}, qcache = {}, taken = {}, noted = {}, cut_back = {}, triggers = {}, apart = apart,
     text_said = said }, G)
   g:settle_callsigns()
-  local same = g:same_for()
   g:airline_types()
   g:airline_refs()
   g:type_refs()
   g:described_refs()
+  local same = g:same_for()
   g:bearing_refs()
   g:creation_refs()
   g:carried_refs()
