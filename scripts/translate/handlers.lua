@@ -585,6 +585,17 @@ function m:compared_with(i)
   return self:word(k, "like") and not self:word(k - 1, "@wish_before_like")
 end
 
+-- True when "and" at k joins the second of two aircraft said after "between" in the same clause ("a conflict
+-- between the Air France and the Ryanair"): that aircraft is context, as the first is.
+local function second_between(self, k)
+  if not self:word(k, "and") then return false end
+  for j = k - 1, math.max(1, k - 8), -1 do
+    if self.t[j].kind == "punct" or self:intent_at(j) then return false end
+    if self:word(j, "between") then return true end
+  end
+  return false
+end
+
 -- An airline said with no flight number ("KLM, climb ..."): the question
 -- names its aircraft when more than one fits, and says so when none flies
 -- ("the Ryanair" with no RYR aircraft).
@@ -1038,7 +1049,7 @@ function m:airline_refs()
     else
       local nxt = self.t[e]
       local prev = self.t[i - 1]
-      local the = prev and prev.kind == "word" and prev.text == "the"
+      local the = prev and prev.kind == "word" and prev.text == "the" and not second_between(self, i - 2)
           and (not self:word(i - 2, "@airline_context @aircraft_context @below @above")
             or self:word(e, "@route_nouns")  -- "add X to the KLM's route" (the lexer drops "'s")
             or self:added_to(i - 2, e))
