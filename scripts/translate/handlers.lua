@@ -1636,10 +1636,13 @@ function m:type_refs()
     if test and the then fits, e = airline_after_type(self, fits, i, e) end
     if callsigns and test then
       local opens = the and (k == 1 or self.t[k - 1].kind == "punct" or self:word(k - 1, "and @then_words"))
-      -- (one aircraft no callsign names, said so opening a clause with no instruction word straight after, "and the
-      -- A321 may be turned left", is asked about: the clause's instructions are never left to the aircraft before)
-      local said = self:intent_at(self:skip_fillers(e, false))
-      if opens and #fits == 1 and not named[fits[1]] and not said and not self:in_reason(i) then
+      -- (one aircraft no callsign names, said so opening a clause with a modal straight after, "and the A321 may be
+      -- turned left", "the 737 should descend", is asked about: the clause's instructions are never left to the
+      -- aircraft before; "the 777 is above" describes traffic)
+      local after = self:skip_fillers(e, false)
+      local said = self:intent_at(after)
+      if opens and #fits == 1 and not named[fits[1]] and not said and self:word(after, "@own_modals")
+          and not self:in_reason(i) then
         self:need(string.format("Is '%s' %s? Please give its callsign.", self:raw(i, e), fits[1]))
       end
       if not (opens and said and #fits == 1 and not named[fits[1]]) then test, fits = nil, {} end
