@@ -585,6 +585,17 @@ function m:compared_with(i)
   return self:word(k, "like") and not self:word(k - 1, "@wish_before_like")
 end
 
+-- True when "and" at k joins the second of two aircraft said after "between" in the same clause ("a conflict
+-- between the Air France and the Ryanair"): that aircraft is context, as the first is.
+local function second_between(self, k)
+  if not self:word(k, "and") then return false end
+  for j = k - 1, math.max(1, k - 8), -1 do
+    if self.t[j].kind == "punct" or self:intent_at(j) then return false end
+    if self:word(j, "between") then return true end
+  end
+  return false
+end
+
 -- An airline said with no flight number ("KLM, climb ..."): the question
 -- names its aircraft when more than one fits, and says so when none flies
 -- ("the Ryanair" with no RYR aircraft).
@@ -1049,7 +1060,7 @@ function m:airline_refs()
     else
       local nxt = self.t[e]
       local prev = self.t[i - 1]
-      local the = prev and prev.kind == "word" and prev.text == "the"
+      local the = prev and prev.kind == "word" and prev.text == "the" and not second_between(self, i - 2)
           and (not self:word(i - 2, "@airline_context @aircraft_context @below @above")
             or self:word(e, "@route_nouns")  -- "add X to the KLM's route" (the lexer drops "'s")
             or self:added_to(i - 2, e) or self:given_to(i - 2))
@@ -1544,6 +1555,29 @@ end
 -- A type word opening the request before an instruction with no "the" ("Cessna, heading 045", "dash 8
 -- turn right 20") calls the aircraft without its registration: kept too ({..., called = true}) and asked,
 -- with one aircraft of the type flying as well. A type said after "a"/"an" ("create a 747") is a new aircraft's type, never a reference.
+-- ("the A321 IndiGo", "the 737 Ryanair"): an airline said straight after a type, after "the", narrows the type's
+-- aircraft `fits` (ids) to that airline's and the words to [i, the airline's end): returns those ids and that end,
+-- the airline's own reference (airline_refs) taken out; none of the airline's fits is asked about, naming both
+-- words (the airline alone is never read as some other aircraft of it). Without an airline, `fits` and `e` as given.
+local function airline_after_type(self, fits, i, e)
+  local icao, ae, codes = self:airline_at(e)
+  if not icao or (self.t[ae] and (self.t[ae].kind == "number" or self.t[ae].number_word)) then return fits, e end
+  local of = {}
+  for _, id in ipairs(self:airline_fleet(icao, codes)) do of[id] = true end
+  local both = {}
+  for _, id in ipairs(fits) do
+    if of[id] then both[#both + 1] = id end
+  end
+  for n = #self.refs, 1, -1 do
+    local r = self.refs[n]
+    if r.b >= e and r.e <= ae and r.by_airline then table.remove(self.refs, n) end
+  end
+  if #both == 0 then
+    self:need(string.format("Which aircraft is '%s'? Please give its callsign.", self:raw(i, ae)))
+  end
+  return both, ae
+end
+
 function m:type_refs()
   -- ("the Pilatus N48TX", "the Baron N218PK": a type, maker or family said between "the" and the callsign of
   -- a flying aircraft of that type describes it)
@@ -1615,9 +1649,19 @@ function m:type_refs()
     for _, a in ipairs(test and self.fleet or {}) do
       if a.type and test(a.type:upper()) then fits[#fits + 1] = a.id end
     end
+    if test and the then fits, e = airline_after_type(self, fits, i, e) end
     if callsigns and test then
       local opens = the and (k == 1 or self.t[k - 1].kind == "punct" or self:word(k - 1, "and @then_words"))
-      if not (opens and self:intent_at(e) and #fits == 1 and not named[fits[1]]) then test, fits = nil, {} end
+      -- (one aircraft no callsign names, said so opening a clause with a modal straight after, "and the A321 may be
+      -- turned left", "the 737 should descend", is asked about: the clause's instructions are never left to the
+      -- aircraft before; "the 777 is above" describes traffic)
+      local after = self:skip_fillers(e, false)
+      local said = self:intent_at(after)
+      if opens and #fits == 1 and not named[fits[1]] and not said and self:word(after, "@own_modals")
+          and not self:in_reason(i) then
+        self:need(string.format("Is '%s' %s? Please give its callsign.", self:raw(i, e), fits[1]))
+      end
+      if not (opens and said and #fits == 1 and not named[fits[1]]) then test, fits = nil, {} end
     end
     -- ("the CRJ": a family in capitals the lexer took for an unknown place)
     if #fits == 1 then

@@ -3945,6 +3945,17 @@ return function(H, f, compass)
     if self:asks_setting(true) and #self:quantities(s.b, s.e) == 0 then
       return self:emit(vertical and "ZONEDH" or "ZONER")
     end
+    -- ("Is the protected zone half height still 1000 feet?": a yes-no question about its value shows the
+    -- setting, the value said being the one asked about; never set; a value said after the question is asked about)
+    if self:word(self:request_start(), "is are") and self:asks_setting(true) then
+      local q = 1
+      while self.t[q] and self.t[q].text ~= "?" do q = q + 1 end
+      if #self:quantities(q + 1, #self.t + 1) > 0 then
+        return self:need("Should the protected zone be shown, or set? Please say the value to set alone.")
+      end
+      self:mark_used(s.b, s.e)
+      return self:emit(vertical and "ZONEDH" or "ZONER")
+    end
     local before = #self.out
     local heights = {}  -- { value (ft), index of its ZONEDH line in self.out }
     local qs, named = {}, false

@@ -13618,3 +13618,54 @@ do
   check_eq(ex("Tell the Air India to follow the route."), "LNAV AIC318 ON")
   asked(ex("Air India 318 proceed to the next waypoint."), "no waypoint named")
 end
+-- Cycle 52 (fwr): "X also" ending a clause, X an airline or type said with "the", gets every instruction of the
+-- request (had taken only the last from the aircraft first named)
+do
+  local _, ex = scene({ "CRE VTI301 A320 19 73 090 FL200 280", "CRE SEJ702 B738 19.5 73.5 270 FL180 270" })
+  check_eq(ex("Vistara 301 climb FL240 and increase 290 knots, the SpiceJet also."),
+    "ALT VTI301 FL240 ; SPD VTI301 290 ; ALT SEJ702 FL240 ; SPD SEJ702 290")
+  check_eq(ex("Vistara 301 climb FL240 and increase 290 knots and the SpiceJet also."),
+    "ALT VTI301 FL240 ; SPD VTI301 290 ; ALT SEJ702 FL240 ; SPD SEJ702 290")
+  check_eq(ex("Vistara 301 climb FL240 and increase 290 knots, same for the SpiceJet."),
+    "ALT VTI301 FL240 ; SPD VTI301 290 ; ALT SEJ702 FL240 ; SPD SEJ702 290")
+  asked(ex("Vistara 301 climb FL240 and increase 290 knots, the Qatar also."), "no Qatar flying")
+end
+
+-- Cycle 52 (fwr): a type said after "the" with an airline after it ("the A321 IndiGo") is that airline's aircraft of
+-- the type; one opening a clause with no instruction word after it is asked, never left to the aircraft before
+do
+  local _, ex = scene({ "CRE VTI301 A20N 19 73 090 FL200 280", "CRE VTI518 A21N 19.5 73.5 270 FL180 270",
+                        "CRE SEJ702 B738 19.2 73.2 180 FL160 260" })
+  check_eq(ex("Vistara 301 climb FL240, and the A321 Vistara turn right heading 030."),
+    "ALT VTI301 FL240 ; HDG VTI518 30 RIGHT")
+  asked(ex("Vistara 301 climb FL240, and the 737 Vistara turn right heading 030."), "no Vistara 737: asked")
+  asked(ex("Vistara 301 climb FL240, and the A321 Vistara can be turned right heading 030."), "no instruction word after")
+end
+
+-- Cycle 52 (fwr): the second aircraft of "between the X and the Y" said by its airline is context, never instructed
+do
+  local _, ex = scene({ "CRE DLH4 A320 50 8 090 FL330 M.78", "CRE EZY5 A320 50 9 270 FL330 M.78" })
+  check_eq(ex("there is a conflict between the Lufthansa and the easyJet, make the easyJet descend FL310"),
+    "ALT EZY5 FL310")
+  check_eq(ex("make the Lufthansa and the easyJet descend FL310"), "ALT DLH4 FL310 ; ALT EZY5 FL310")
+end
+
+-- Cycle 52 (fwr): a yes-no question about the protected zone's value shows the setting, never sets it; a value
+-- said after the question is asked
+do
+  local _, ex = scene({ "CRE DLH4 A320 50 8 090 FL330 M.78" })
+  check_eq(ex("Is the protected zone radius still 5 nm?"), "ZONER")
+  check_eq(ex("Are we still at a PZ half height of 1000 ft?"), "ZONEDH")
+  asked(ex("Is the protected zone radius 5 nm? Then set it to 3 nm."), "a value after the question")
+  check_eq(ex("set the protected zone radius to 3 nm"), "ZONER 3")
+end
+
+-- Cycle 52 (fwr): a city said by its English name whose navdata airport of that name is the old, lesser one is its
+-- large airport (lexicon.city_airports: "Bangalore" is VOBL, never VOBG, HAL)
+do
+  local _, ex = navscene({ "CRE IGO11 A20N 13.5 77.5 180 FL120 260" }, "the Bangalore airport checks")
+  if ex then
+    check_eq(ex("IGO11 change destination to Bangalore"), "DEST IGO11 VOBL")
+    check_eq(ex("create IGO12 A320 at Bangalore airport heading 090 FL050 200"), "CRE IGO12 A320 VOBL 90 FL50 200")
+  end
+end
