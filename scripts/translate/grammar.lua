@@ -689,7 +689,7 @@ end
 -- "30 degrees right, er, left": a side, hesitations only (lexicon.hesitations, "hmm") and the other side is
 -- the side corrected ("right, correction, left")
 local SIDE_HESITATIONS = set_of(lexicon.hesitations)
-SIDE_HESITATIONS.hmm = true
+SIDE_HESITATIONS.hmm, SIDE_HESITATIONS.ehm, SIDE_HESITATIONS.erm, SIDE_HESITATIONS.uhm = true, true, true, true
 local function hesitated_sides(text)
   local lower = text:lower()
   if not lower:find("%f[%a]left%f[%A]") or not lower:find("%f[%a]right%f[%A]") then return text end
@@ -724,8 +724,32 @@ function G.formal_apologies(text)
   end
   return text
 end
+-- "Condor, eh, Speedbird 948 I mean, heading 130", "FL240, FL250 I mean": one to three words said after a comma,
+-- or after a hesitation (SIDE_HESITATIONS) and a mark, then "I mean" or "I meant" straight after them and before
+-- a mark or the end, are said in place of what came before: "I mean" is moved before them, where the
+-- self-corrections read it ("Condor, eh, I mean Speedbird 948, heading 130").
+function G.meant_after_hesitation(text)
+  local lower = text:lower()
+  if not lower:find("%f[%a]i%s+meant?%f[%A]") then return text end
+  local toks = bare_words(text)
+  local put, done = tokens.splicer(text)
+  for k = 3, #toks - 1 do
+    local mean = toks[k + 1]
+    if toks[k].bare == "i" and (mean.bare == "mean" or mean.bare == "meant") and not toks[k].raw:match("%p$")
+        and (mean.raw:match("%p$") or not toks[k + 2]) and not toks[k - 1].raw:match("%p$") then
+      local s = k - 1
+      while s > k - 3 and toks[s - 1] and not toks[s - 1].raw:match("%p$") do s = s - 1 end
+      local h = toks[s - 1]
+      if h and (h.raw:match(",$") or h.raw:match("%p$") and SIDE_HESITATIONS[h.bare] and toks[s - 2]) then
+        put(toks[s].at, "I " .. mean.bare .. " ", toks[s].at)
+        put(toks[k - 1].e, "", mean.at + #mean.bare)
+      end
+    end
+  end
+  return done()
+end
 local function self_corrections(text)
-  text = hesitated_sides(G.formal_apologies(text))
+  text = G.meant_after_hesitation(hesitated_sides(G.formal_apologies(text)))
   if not holds_word(text:lower(), SC_MARKER_PATTERNS) then return text end
   local words, markers, after = SC_WORDS, SC_MARKERS, SC_AFTER
   local toks = bare_words(text)
@@ -5753,8 +5777,9 @@ function G:dangling_correction()
   while first > 1 and (self.t[first - 1].kind == "punct" or SC_WORDS[self.words[first - 1]]) do first = first - 1 end
   local said = {}
   if first <= last then  -- (the words as said are read only where such a run closes the request)
-    -- (a formal apology as "sorry": "turn left heading 300, pardon me")
-    for w in G.formal_apologies(self.text_said or ""):lower():gmatch("[%a']+") do said[#said + 1] = w end
+    -- (a formal apology as "sorry": "turn left heading 300, pardon me"; a word of another language as its English
+    -- word, lexicon.said_whole: "turn left 20, nee")
+    for w in G.formal_apologies(G.said_whole(self.text_said or "")):lower():gmatch("[%a']+") do said[#said + 1] = w end
   end
   local marked = false
   for k = math.max(1, #said - (last - first)), #said do

@@ -1854,12 +1854,15 @@ return {
       -- (said the same in another language, read here: "ja"; "oké", its accent taken off, is also the OKE VOR:
       -- lexicon.asides_alone's)
       ja = "yes",
+      -- ("nee", no: the self-correction marker of a Dutch speaker's English, "heading 250, nee, 260")
+      nee = "no",
       -- digits and numbers ("vier" and "acht" as in German)
       nul = "zero", twee = "two", drie = "three", vier = "four", vijf = "five", zes = "six", zeven = "seven",
       acht = "eight", negen = "nine", tien = "ten", twaalf = "twelve", twintig = "twenty", dertig = "thirty",
       veertig = "forty", vijftig = "fifty", honderd = "hundred", duizend = "thousand",
     },
-    shared = { ja = true, vier = true, acht = true },
+    -- (and "nee" alone, a habit in English, is no sign that the sentence is Dutch)
+    shared = { ja = true, vier = true, acht = true, nee = true },
     -- small words also English or another language's, read only in a Dutch sentence ("pauze even": for a moment)
     joining = { de = "the", het = "the", en = "and", op = "to", van = "of", met = "with", even = "for a moment",
       links = "left", rechts = "right" },

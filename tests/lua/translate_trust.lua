@@ -13402,3 +13402,18 @@ do
   check_eq(ex("set the speed of the simulation to factor 5 and start it"), "DTMULT 5 ; OP")
   check_eq(ex("ff 2 mins then stop"), "FF 120")
 end
+
+-- Cycle 52 (f143): self-corrections of a Dutch speaker's English: "nee" (no) is the marker wherever said; one to
+-- three words after a comma or a hesitation, then "I mean", are said in place of what came before; a marker with
+-- nothing after it is still asked
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL200 250", "CRE AEA21 B738 52.4 4.6 090 FL150 250",
+    "CRE TRA5QK B738 52.10 5.40 300 FL200 290", "CRE DLH4AX A321 51.90 5.90 320 FL260 300" })
+  check_eq(ex("KLM12 heading 250, nee, 260"), "HDG KLM12 260")
+  check_eq(ex("KLM12 climb FL300, nee, FL280"), "ALT KLM12 FL280")
+  check_eq(ex("KLM12, eh, AEA21 I mean, climb FL300"), "ALT AEA21 FL300")
+  check_eq(ex("Lufthansa, ehm, Transavia 5QK I mean, reduce 250"), "SPD TRA5QK 250")
+  check_eq(ex("KLM12 reduce 230, eh, 220 I mean"), "SPD KLM12 220")
+  check_eq(ex("KLM12 heading 250, nee"), "ASK You said 'no' with nothing after it. What is the corrected instruction?")
+  asked(ex("KLM12 climb FL300, eh, heading 250 I mean"), "instead of")
+end
