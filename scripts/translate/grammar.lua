@@ -724,10 +724,11 @@ function G.formal_apologies(text)
   end
   return text
 end
--- "Condor, eh, Speedbird 948 I mean, heading 130", "FL240, FL250 I mean": one to three words said after a comma,
--- or after a hesitation (SIDE_HESITATIONS) and a mark, then "I mean" or "I meant" straight after them and before
--- a mark or the end, are said in place of what came before: "I mean" is moved before them, where the
--- self-corrections read it ("Condor, eh, I mean Speedbird 948, heading 130").
+-- "Condor, eh, Speedbird 948 I mean, heading 130", "FL240, FL250 I mean, and ...": one to three words said after a
+-- comma, or after a hesitation (SIDE_HESITATIONS) and a mark, then "I mean" or "I meant" straight after them, a
+-- mark and more words, are said in place of what came before: "I mean" is moved before them, where the
+-- self-corrections read it ("Condor, eh, I mean Speedbird 948, heading 130"). Closing the request, "I mean" says
+-- who or what was meant ("..., Lufthansa 4AX I mean": handlers.lua m:aircraft_named_after), no replacement.
 function G.meant_after_hesitation(text)
   local lower = text:lower()
   if not lower:find("%f[%a]i%s+meant?%f[%A]") then return text end
@@ -736,7 +737,7 @@ function G.meant_after_hesitation(text)
   for k = 3, #toks - 1 do
     local mean = toks[k + 1]
     if toks[k].bare == "i" and (mean.bare == "mean" or mean.bare == "meant") and not toks[k].raw:match("%p$")
-        and (mean.raw:match("%p$") or not toks[k + 2]) and not toks[k - 1].raw:match("%p$") then
+        and mean.raw:match("%p$") and toks[k + 2] and not toks[k - 1].raw:match("%p$") then
       local s = k - 1
       while s > k - 3 and toks[s - 1] and not toks[s - 1].raw:match("%p$") do s = s - 1 end
       local h = toks[s - 1]
@@ -2908,8 +2909,8 @@ function G:at_speed(s)
   -- (a bare number after "at" that this request gave the aircraft as its speed already: "reduce 180 knots, and once
   -- you're at one eighty descend FL70"; "when 250" with no "at" is asked)
   local bare = q.kind == "plain" and q.value >= 40 and q.value <= 700
-  -- ("and when he's got two fifty, descend": the speed had, given already, as "at" says it)
-  local again = bare and not (noun or slowed) and self:word(q.b - 1, "at got")
+  -- ("and when he's got two fifty, descend", "when he has 250, climb": the speed had, given already, as "at" says it)
+  local again = bare and not (noun or slowed) and self:word(q.b - 1, "at got has have")
   if not (q.kind == "speed" or q.kind == "mach" or (bare and (noun or slowed or again))) then return nil end
   local k = self:skip_fillers(q.e)
   while k < s.trig and ((self.t[k].kind == "punct" and self.t[k].text == ",") or self:word(k, "@condition_lead")
@@ -4655,6 +4656,9 @@ function G:trailing_level(s)
   local cut = c
   while cut - 1 > s.trig and (self.t[cut - 1].kind == "punct" or self:word(cut - 1, "but only")) do cut = cut - 1 end
   local q = self:quantities(c + 1, s.e)[1]
+  -- (three digits alone, the flight level this request cleared an aircraft to: "..., when he is at 340")
+  local given = q and self:level_given(q)
+  if given then q = { kind = "alt", value = given, fl = true, b = q.b, e = q.e } end
   if not q or not (q.kind == "alt" or (q.kind == "plain" and q.fl)) then return nil end
   local reached = bare
   for i = c + 1, q.b - 1 do
