@@ -7958,6 +7958,32 @@ end
 -- instruction, is no instruction when it is what the aircraft named before it (or, with none before, the one
 -- named after it) flies or was given: set aside, the instructions beside it read alone. Another value there,
 -- or no aircraft to hold it against, is asked, never issued.
+-- An aircraft said to go on as it flies (lexicon.aircraft_kept: "..., and KLM1234 stays on his route", "The KLM
+-- stays where he is."): the aircraft opening a clause (the request's start, a mark or "and" before it), a verb of
+-- `verbs`, then only `words` to a mark or the end, with an instruction said elsewhere in the request, is no
+-- instruction and not instructed (r.false_start): its words are marked used. A value in the clause ("KLM1234
+-- stays at FL240") leaves it to the instructions.
+G.aircraft_kept_sets = { verbs = set_of(lexicon.aircraft_kept.verbs), words = set_of(lexicon.aircraft_kept.words) }
+function G:aircraft_kept()
+  local K = G.aircraft_kept_sets
+  if not self:said(K.verbs) then return end
+  for _, r in ipairs(self.refs) do
+    local k = self:skip_fillers(r.e, false)
+    local opens = r.b == self:skip_fillers(1, false) or self.t[r.b - 1].kind == "punct" or self:word(r.b - 1, "and")
+      or self:word(r.b - 1, "the") and (r.b == 2 or self.t[r.b - 2].kind == "punct" or self:word(r.b - 2, "and"))
+    if r.kind == "aircraft" and r.exists and opens and self:word(k, K.verbs) then
+      local e = k + 1
+      while self.t[e] and (self.t[e].filler or self:word(e, K.words)) do e = e + 1 end
+      local b = self:word(r.b - 1, "the") and r.b - 1 or r.b
+      if (not self.t[e] or self.t[e].kind == "punct")
+          and (self:any_instruction_in(1, b) or self:any_instruction_in(e, #self.t + 1)) then
+        self:mark_used(b, e)
+        r.false_start = true
+      end
+    end
+  end
+end
+
 G.kept_sets = {}
 for k, list in pairs(lexicon.kept_as_is) do G.kept_sets[k] = set_of(list) end
 G.kept_kinds = { alt = true, speed = true, mach = true, heading = true }
@@ -10551,6 +10577,7 @@ function M.translate(text, world)
   g:refused()
   g:replaced_values()
   g:kept_values()
+  g:aircraft_kept()
   g:kept_present()
   g:infinitive_after_condition()
   g:acknowledged()

@@ -1119,6 +1119,14 @@ return {
                    speed = "speed" },
                  -- the instruction word that sets each kind: a kept present value beside one of these is asked
                  present_intents = { alt = "alt", heading = "hdg", speed = "spd" } },
+  -- an aircraft said to go on as it flies, in a clause of its own beside instructions to others ("..., and KLM1234
+  -- stays on his route", "The KLM stays where he is.", "Lufthansa 3PK keeps his speed.", "City 1569 stay."): the
+  -- aircraft, one of `verbs`, then only `words` to the clause's end (no value: "stays at FL240" is no such clause);
+  -- G:aircraft_kept
+  aircraft_kept = { verbs = { "stays", "stay", "remains", "remain", "keeps", "keep" },
+                    words = { "where", "he", "she", "it", "they", "is", "are", "on", "his", "her", "its", "their",
+                              "the", "route", "as", "speed", "level", "heading", "altitude", "present", "current",
+                              "own", "for", "now", "unchanged", "same", "at", "planned", "course" } },
   -- a remark that a place named is on the aircraft's route (G:route_remarks): ", which I believe is on its
   -- planned route", "? I believe BOSIO is on its route.", "? That is the Viseu beacon, on its planned route."; a
   -- clause or sentence of these words, the places named and a name before one of `place_nouns`

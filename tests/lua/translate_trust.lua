@@ -13446,3 +13446,16 @@ do
   asked(ex("AEA21 climb FL300, and when he is at 300 KLM12 heading 270."), "another aircraft's level")
   asked(ex("KLM12 reduce to 230 knots and when he has 220, climb to FL300."), "a speed not given")
 end
+
+-- Cycle 52 (f143): an aircraft said to go on as it flies, in a clause of its own beside instructions to others
+-- ("..., and AEA21 stays on his route", "AEA21 keeps his speed."), is no instruction and no unknown word; a clause
+-- that says more ("AEA21 stays low") is still asked
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL200 250", "CRE AEA21 B738 52.4 4.6 090 FL150 250",
+    "CRE TRA5QK B738 52.10 5.40 300 FL200 290" })
+  check_eq(ex("KLM12 climb FL300, and AEA21 stays on his route."), "ALT KLM12 FL300")
+  check_eq(ex("KLM12 climb FL300. The Transavia stays where he is."), "ALT KLM12 FL300")
+  check_eq(ex("KLM12 climb FL300, AEA21 keeps his speed."), "ALT KLM12 FL300")
+  check_eq(ex("KLM12 climb FL300, AEA21 stays low."), "ASK I have ALT KLM12 FL300. What does 'AEA21' mean?")
+  asked(ex("AEA21 stays where he is."), "no instruction at all")
+end
