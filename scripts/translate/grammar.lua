@@ -7960,8 +7960,9 @@ end
 -- or no aircraft to hold it against, is asked, never issued.
 -- An aircraft said to go on as it flies (lexicon.aircraft_kept: "..., and KLM1234 stays on his route", "The KLM
 -- stays where he is."): the aircraft opening a clause (the request's start, a mark or "and" before it), a verb of
--- `verbs`, then only `words` to a mark or the end, with an instruction said elsewhere in the request, is no
--- instruction and not instructed (r.false_start): its words are marked used. A value in the clause ("KLM1234
+-- `verbs`, then only `words` to a mark or the end, with instructions to another aircraft said elsewhere in the
+-- request (its name before any said after the clause), is no instruction and not instructed (r.false_start): its
+-- words are marked used. A value in the clause ("KLM1234
 -- stays at FL240") leaves it to the instructions.
 G.aircraft_kept_sets = { verbs = set_of(lexicon.aircraft_kept.verbs), words = set_of(lexicon.aircraft_kept.words) }
 function G:aircraft_kept()
@@ -7975,7 +7976,16 @@ function G:aircraft_kept()
       local e = k + 1
       while self.t[e] and (self.t[e].filler or self:word(e, K.words)) do e = e + 1 end
       local b = self:word(r.b - 1, "the") and r.b - 1 or r.b
-      if (not self.t[e] or self.t[e].kind == "punct")
+      -- (the instructions are another aircraft's: one named before them, "ANA12 keep present heading, turn 10
+      -- degrees left" turns ANA12)
+      local other = false
+      for _, o in ipairs(self.refs) do
+        other = other or (o.kind == "aircraft" and o.exists and o.name ~= r.name and (o.e <= b or o.b >= e))
+      end
+      local x = e
+      while x <= #self.t and not self:intent_at(x) do x = x + 1 end
+      if (not self.t[e] or self.t[e].kind == "punct") and other
+          and (x > #self.t or self:has_ref(e, x, "aircraft"))
           and (self:any_instruction_in(1, b) or self:any_instruction_in(e, #self.t + 1)) then
         self:mark_used(b, e)
         r.false_start = true

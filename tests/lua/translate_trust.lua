@@ -13458,4 +13458,5 @@ do
   check_eq(ex("KLM12 climb FL300, AEA21 keeps his speed."), "ALT KLM12 FL300")
   check_eq(ex("KLM12 climb FL300, AEA21 stays low."), "ASK I have ALT KLM12 FL300. What does 'AEA21' mean?")
   asked(ex("AEA21 stays where he is."), "no instruction at all")
+  check_eq(ex("KLM12 keep present heading, turn 10 degrees left"), "HDG KLM12 80 LEFT")
 end
