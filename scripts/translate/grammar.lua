@@ -698,7 +698,7 @@ end
 -- "30 degrees right, er, left": a side, hesitations only (lexicon.hesitations, "hmm") and the other side is
 -- the side corrected ("right, correction, left")
 local SIDE_HESITATIONS = set_of(lexicon.hesitations)
-SIDE_HESITATIONS.hmm = true
+SIDE_HESITATIONS.hmm, SIDE_HESITATIONS.ehm, SIDE_HESITATIONS.erm, SIDE_HESITATIONS.uhm = true, true, true, true
 local function hesitated_sides(text)
   local lower = text:lower()
   if not lower:find("%f[%a]left%f[%A]") or not lower:find("%f[%a]right%f[%A]") then return text end
@@ -733,8 +733,33 @@ function G.formal_apologies(text)
   end
   return text
 end
+-- "Condor, eh, Speedbird 948 I mean, heading 130", "FL240, FL250 I mean, and ...": one to three words said after a
+-- comma, or after a hesitation (SIDE_HESITATIONS) and a mark, then "I mean" or "I meant" straight after them, a
+-- mark and more words, are said in place of what came before: "I mean" is moved before them, where the
+-- self-corrections read it ("Condor, eh, I mean Speedbird 948, heading 130"). Closing the request, "I mean" says
+-- who or what was meant ("..., Lufthansa 4AX I mean": handlers.lua m:aircraft_named_after), no replacement.
+function G.meant_after_hesitation(text)
+  local lower = text:lower()
+  if not lower:find("%f[%a]i%s+meant?%f[%A]") then return text end
+  local toks = bare_words(text)
+  local put, done = tokens.splicer(text)
+  for k = 3, #toks - 1 do
+    local mean = toks[k + 1]
+    if toks[k].bare == "i" and (mean.bare == "mean" or mean.bare == "meant") and not toks[k].raw:match("%p$")
+        and mean.raw:match("%p$") and toks[k + 2] and not toks[k - 1].raw:match("%p$") then
+      local s = k - 1
+      while s > k - 3 and toks[s - 1] and not toks[s - 1].raw:match("%p$") do s = s - 1 end
+      local h = toks[s - 1]
+      if h and (h.raw:match(",$") or h.raw:match("%p$") and SIDE_HESITATIONS[h.bare] and toks[s - 2]) then
+        put(toks[s].at, "I " .. mean.bare .. " ", toks[s].at)
+        put(toks[k - 1].e, "", mean.at + #mean.bare)
+      end
+    end
+  end
+  return done()
+end
 local function self_corrections(text)
-  text = hesitated_sides(G.formal_apologies(text))
+  text = G.meant_after_hesitation(hesitated_sides(G.formal_apologies(text)))
   if not holds_word(text:lower(), SC_MARKER_PATTERNS) then return text end
   local words, markers, after = SC_WORDS, SC_MARKERS, SC_AFTER
   local toks = bare_words(text)
@@ -4656,6 +4681,9 @@ function G:trailing_level(s)
   local cut = c
   while cut - 1 > s.trig and (self.t[cut - 1].kind == "punct" or self:word(cut - 1, "but only")) do cut = cut - 1 end
   local q = self:quantities(c + 1, s.e)[1]
+  -- (three digits alone, the flight level this request cleared an aircraft to: "..., when he is at 340")
+  local given = q and self:level_given(q)
+  if given then q = { kind = "alt", value = given, fl = true, b = q.b, e = q.e } end
   if not q or not (q.kind == "alt" or (q.kind == "plain" and q.fl)) then return nil end
   local reached = bare
   for i = c + 1, q.b - 1 do
@@ -5778,8 +5806,9 @@ function G:dangling_correction()
   while first > 1 and (self.t[first - 1].kind == "punct" or SC_WORDS[self.words[first - 1]]) do first = first - 1 end
   local said = {}
   if first <= last then  -- (the words as said are read only where such a run closes the request)
-    -- (a formal apology as "sorry": "turn left heading 300, pardon me")
-    for w in G.formal_apologies(self.text_said or ""):lower():gmatch("[%a']+") do said[#said + 1] = w end
+    -- (a formal apology as "sorry": "turn left heading 300, pardon me"; a word of another language as its English
+    -- word, lexicon.said_whole: "turn left 20, nee")
+    for w in G.formal_apologies(G.said_whole(self.text_said or "")):lower():gmatch("[%a']+") do said[#said + 1] = w end
   end
   local marked = false
   for k = math.max(1, #said - (last - first)), #said do
@@ -7961,6 +7990,42 @@ end
 -- instruction, is no instruction when it is what the aircraft named before it (or, with none before, the one
 -- named after it) flies or was given: set aside, the instructions beside it read alone. Another value there,
 -- or no aircraft to hold it against, is asked, never issued.
+-- An aircraft said to go on as it flies (lexicon.aircraft_kept: "..., and KLM1234 stays on his route", "The KLM
+-- stays where he is."): the aircraft opening a clause (the request's start, a mark or "and" before it), a verb of
+-- `verbs`, then only `words` to a mark or the end, with instructions to another aircraft said elsewhere in the
+-- request (its name before any said after the clause), is no instruction and not instructed (r.false_start): its
+-- words are marked used. A value in the clause ("KLM1234
+-- stays at FL240") leaves it to the instructions.
+G.aircraft_kept_sets = { verbs = set_of(lexicon.aircraft_kept.verbs), words = set_of(lexicon.aircraft_kept.words) }
+function G:aircraft_kept()
+  local K = G.aircraft_kept_sets
+  if not self:said(K.verbs) then return end
+  for _, r in ipairs(self.refs) do
+    local k = self:skip_fillers(r.e, false)
+    local opens = r.b == self:skip_fillers(1, false) or self.t[r.b - 1].kind == "punct" or self:word(r.b - 1, "and")
+      or self:word(r.b - 1, "the") and (r.b == 2 or self.t[r.b - 2].kind == "punct" or self:word(r.b - 2, "and"))
+    if r.kind == "aircraft" and r.exists and opens and self:word(k, K.verbs) then
+      local e = k + 1
+      while self.t[e] and (self.t[e].filler or self:word(e, K.words)) do e = e + 1 end
+      local b = self:word(r.b - 1, "the") and r.b - 1 or r.b
+      -- (the instructions are another aircraft's: one named before them, "ANA12 keep present heading, turn 10
+      -- degrees left" turns ANA12)
+      local other = false
+      for _, o in ipairs(self.refs) do
+        other = other or (o.kind == "aircraft" and o.exists and o.name ~= r.name and (o.e <= b or o.b >= e))
+      end
+      local x = e
+      while x <= #self.t and not self:intent_at(x) do x = x + 1 end
+      if (not self.t[e] or self.t[e].kind == "punct") and other
+          and (x > #self.t or self:has_ref(e, x, "aircraft"))
+          and (self:any_instruction_in(1, b) or self:any_instruction_in(e, #self.t + 1)) then
+        self:mark_used(b, e)
+        r.false_start = true
+      end
+    end
+  end
+end
+
 G.kept_sets = {}
 for k, list in pairs(lexicon.kept_as_is) do G.kept_sets[k] = set_of(list) end
 G.kept_kinds = { alt = true, speed = true, mach = true, heading = true }
@@ -10626,6 +10691,7 @@ function M.translate(text, world)
   g:refused()
   g:replaced_values()
   g:kept_values()
+  g:aircraft_kept()
   g:kept_present()
   g:infinitive_after_condition()
   g:acknowledged()

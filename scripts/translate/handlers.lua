@@ -287,7 +287,8 @@ function m:acids(s)
       end
       -- (an aircraft noun after an aircraft described belongs to it: "and the Frontier aircraft as well")
       local tail = self:word(r.e, "@aircraft_nouns") and r.e + 1 or r.e
-      if seen[r.name] and self.t[k] and self.t[k].kind == "punct" and own and not self:word(tail, "too also")
+      if seen[r.name] and not r.false_start and self.t[k] and self.t[k].kind == "punct" and own
+          and not self:word(tail, "too also")
           and not (self:word(tail, "as") and self:word(tail + 1, "well")) then
         local kept = {}
         for _, id in ipairs(ids) do
@@ -2158,6 +2159,9 @@ function m:false_starts()
             and airline_digits(r.heard.id) == airline_digits(nxt.name))) then
       r.false_start = true
     end
+    if r.kind == "aircraft" and not r.false_start and self:aircraft_named_after(r) then
+      r.false_start = true
+    end
     if r.kind == "aircraft" and not r.false_start then
       local c = r.b - 1
       while c > 0 and (self.t[c].kind == "punct" or self.t[c].filler) do c = c - 1 end
@@ -2169,6 +2173,27 @@ function m:false_starts()
       last = r
     end
   end
+end
+
+-- True when aircraft reference r names, after a mark and closing the request, the aircraft an earlier reference
+-- described by its airline alone ("the Martinair ... . Martinair 7124 that is.", "the Ryanair also heading 090.
+-- Ryanair 8XP I mean."): only punctuation, fillers and "that is", "I mean" or "I meant" follow it. Those words are
+-- marked used; r says who was meant and is instructed through the description.
+function m:aircraft_named_after(r)
+  local c = r.b - 1
+  while c > 0 and self.t[c].filler do c = c - 1 end
+  if c < 1 or self.t[c].kind ~= "punct" then return false end
+  local described = false
+  for _, p in ipairs(self.refs) do
+    if p.b < r.b and p.kind == "aircraft" and p.by_airline and p.name == r.name then described = true end
+  end
+  local e = self:skip_fillers(r.e, false)
+  if self:word(e, "that") and self:word(e + 1, "is") or self:word(e, "i") and self:word(e + 1, "mean meant") then
+    e = self:skip_fillers(e + 2, false)
+  end
+  if not described or e <= #self.t then return false end
+  self:mark_used(r.b, #self.t + 1)
+  return true
 end
 
 -- True when the words between two callsigns, [b, e), take the first back: punctuation, fillers and
@@ -2511,6 +2536,19 @@ end
 -- (a direct-to waits for a level passed, left or reached; so does a switch of navigation: "on reaching FL120
 -- resume own navigation"): "ATALT id alt" or nil.
 local NAV_INTENTS = { direct = true, lnav = true, vnav = true }
+-- The level [ft] a bare number of three digits, 100 to 600, names when this request already cleared aircraft `id`
+-- (any aircraft: id nil) to that flight level ("climb to FL340, then heading 270 when he is at 340"), else nil.
+function m:level_given(q, id)
+  if q.kind ~= "plain" or #q.number.digits ~= 3 or q.value < 100 or q.value > 600 or q.number.thousand
+      or q.number.hundred then
+    return nil
+  end
+  for _, c in ipairs(self.out) do
+    local who, level = c:match("^ALT (%S+) (%S+)")
+    if level == "FL" .. f.int(q.value) and (not id or who == id) then return q.value * 100 end
+  end
+  return nil
+end
 -- words between the level and a speed's own word, part of the instruction ("when it passes FL130 drop the
 -- speed to 230", "... bring its speed back to 240")
 local SPEED_LEAD = { drop = true, bring = true, cut = true, take = true, pull = true, knock = true, the = true,
@@ -2613,6 +2651,10 @@ function m:at_altitude(s)
   local fl_digits = passed and #q.number.digits == 3 and q.value >= 100 and q.value <= 600 and not q.number.thousand
     and not q.number.hundred
   local groupwise = passed and self:groupwise_level(q)
+  -- ("climb FL230, and when he is at 230 Mach .78": three digits alone after "at", the level this request cleared
+  -- the aircraft to, are that level; checked for the instruction's aircraft below)
+  local given = q.kind == "plain" and self:word(a, "at") and self:level_given(q)
+  fl_digits = fl_digits or given
   if q.kind ~= "alt" and not fl_digits and not groupwise
       and not (q.kind == "plain" and (q.number.thousand or q.value >= 1000)) then
     return nil
@@ -2620,6 +2662,7 @@ function m:at_altitude(s)
   local ids = self:acids(s)
   if #ids == 0 then return nil end
   if groupwise and ((self:state(ids[1]) or {}).alt_ft or 0) < L.groupwise_from_ft then return nil end
+  if given and not self:level_given(q, ids[1]) then return nil end
   -- ("reduce speed 250, on reaching two five zero descend FL150": three digits alone that this request gave the
   -- aircraft as its speed [kt], and not as its level, are the speed reached: ATSPD; given as both, asked)
   if fl_digits and q.kind == "plain" then

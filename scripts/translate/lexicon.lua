@@ -1137,6 +1137,14 @@ return {
                    speed = "speed" },
                  -- the instruction word that sets each kind: a kept present value beside one of these is asked
                  present_intents = { alt = "alt", heading = "hdg", speed = "spd" } },
+  -- an aircraft said to go on as it flies, in a clause of its own beside instructions to others ("..., and KLM1234
+  -- stays on his route", "The KLM stays where he is.", "Lufthansa 3PK keeps his speed.", "City 1569 stay."): the
+  -- aircraft, one of `verbs`, then only `words` to the clause's end (no value: "stays at FL240" is no such clause);
+  -- G:aircraft_kept
+  aircraft_kept = { verbs = { "stays", "stay", "remains", "remain", "keeps", "keep" },
+                    words = { "where", "he", "she", "it", "they", "is", "are", "on", "his", "her", "its", "their",
+                              "the", "route", "as", "speed", "level", "heading", "altitude", "present", "current",
+                              "own", "for", "now", "unchanged", "same", "at", "planned", "course" } },
   -- a remark that a place named is on the aircraft's route (G:route_remarks): ", which I believe is on its
   -- planned route", "? I believe BOSIO is on its route.", "? That is the Viseu beacon, on its planned route."; a
   -- clause or sentence of these words, the places named and a name before one of `place_nouns`
@@ -1874,12 +1882,15 @@ return {
       -- (said the same in another language, read here: "ja"; "oké", its accent taken off, is also the OKE VOR:
       -- lexicon.asides_alone's)
       ja = "yes",
+      -- ("nee", no: the self-correction marker of a Dutch speaker's English, "heading 250, nee, 260")
+      nee = "no",
       -- digits and numbers ("vier" and "acht" as in German)
       nul = "zero", twee = "two", drie = "three", vier = "four", vijf = "five", zes = "six", zeven = "seven",
       acht = "eight", negen = "nine", tien = "ten", twaalf = "twelve", twintig = "twenty", dertig = "thirty",
       veertig = "forty", vijftig = "fifty", honderd = "hundred", duizend = "thousand",
     },
-    shared = { ja = true, vier = true, acht = true },
+    -- (and "nee" alone, a habit in English, is no sign that the sentence is Dutch)
+    shared = { ja = true, vier = true, acht = true, nee = true },
     -- small words also English or another language's, read only in a Dutch sentence ("pauze even": for a moment)
     joining = { de = "the", het = "the", en = "and", op = "to", van = "of", met = "with", even = "for a moment",
       links = "left", rechts = "right" },

@@ -13669,3 +13669,61 @@ do
     check_eq(ex("create IGO12 A320 at Bangalore airport heading 090 FL050 200"), "CRE IGO12 A320 VOBL 90 FL50 200")
   end
 end
+
+-- Cycle 52 (f143): self-corrections of a Dutch speaker's English: "nee" (no) is the marker wherever said; one to
+-- three words after a comma or a hesitation, then "I mean", are said in place of what came before; a marker with
+-- nothing after it is still asked
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL200 250", "CRE AEA21 B738 52.4 4.6 090 FL150 250",
+    "CRE TRA5QK B738 52.10 5.40 300 FL200 290", "CRE DLH4AX A321 51.90 5.90 320 FL260 300" })
+  check_eq(ex("KLM12 heading 250, nee, 260"), "HDG KLM12 260")
+  check_eq(ex("KLM12 climb FL300, nee, FL280"), "ALT KLM12 FL280")
+  check_eq(ex("KLM12, eh, AEA21 I mean, climb FL300"), "ALT AEA21 FL300")
+  check_eq(ex("Lufthansa, ehm, Transavia 5QK I mean, reduce 250"), "SPD TRA5QK 250")
+  check_eq(ex("KLM12 reduce 230, eh, 220 I mean, and climb FL300"), "SPD KLM12 220 ; ALT KLM12 FL300")
+  check_eq(ex("KLM12 reduce 230, eh, 220 I mean"), "ASK I have SPD KLM12 230. What does '220' mean?")
+  check_eq(ex("KLM12 heading 250, nee"), "ASK You said 'no' with nothing after it. What is the corrected instruction?")
+  asked(ex("KLM12 climb FL300, eh, heading 250 I mean, thanks"), "instead or as well")
+end
+
+-- Cycle 52 (f143): an aircraft described by its airline ("the Transavia") and named by its callsign in a closing
+-- sentence or clause of its own ("Transavia 5QK that is.", "Lufthansa 4AX I mean.") is that aircraft, named once;
+-- another aircraft named so is still asked about
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL200 250", "CRE TRA5QK B738 52.10 5.40 300 FL200 290",
+    "CRE DLH4AX A321 51.90 5.90 320 FL260 300" })
+  check_eq(ex("The Transavia descend FL160. Transavia 5QK that is."), "ALT TRA5QK FL160")
+  check_eq(ex("KLM12 and the Lufthansa both 240 knots, Lufthansa 4AX I mean."), "SPD KLM12 240 ; SPD DLH4AX 240")
+  check_eq(ex("KLM12 170 knots, the Transavia too. Transavia 5QK I mean."), "SPD KLM12 170 ; SPD TRA5QK 170")
+  check_eq(ex("The Transavia descend FL160. KLM12 that is."), "ASK I have ALT TRA5QK FL160. What does 'KLM12' mean?")
+end
+
+-- Cycle 52 (f143): a condition's bare value the request already gave the same aircraft ("climb to FL300, and when
+-- he is at 300 ...", "reduce to 230 knots and when he has 230, ...") is that level or speed, waited for; a value
+-- given to no one, or to another aircraft, is still asked
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL200 250", "CRE AEA21 B738 52.4 4.6 090 FL150 250" })
+  check_eq(ex("KLM12 climb to FL300, and when he is at 300 heading 270."),
+    "ALT KLM12 FL300 ; ATALT KLM12 FL300 HDG KLM12 270")
+  check_eq(ex("KLM12 climb to FL300. Then heading 270, when he is at 300."),
+    "ALT KLM12 FL300 ; ATALT KLM12 FL300 HDG KLM12 270")
+  check_eq(ex("KLM12 reduce to 230 knots and when he has 230, climb to FL300."),
+    "SPD KLM12 230 ; ATSPD KLM12 230 ALT KLM12 FL300")
+  asked(ex("KLM12 climb to FL300, and when he is at 290 heading 270."), "a level not given")
+  asked(ex("AEA21 climb FL300, and when he is at 300 KLM12 heading 270."), "another aircraft's level")
+  asked(ex("KLM12 reduce to 230 knots and when he has 220, climb to FL300."), "a speed not given")
+end
+
+-- Cycle 52 (f143): an aircraft said to go on as it flies, in a clause of its own beside instructions to others
+-- ("..., and AEA21 stays on his route", "AEA21 keeps his speed."), is no instruction and no unknown word; a clause
+-- that says more ("AEA21 stays low") is still asked
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL200 250", "CRE AEA21 B738 52.4 4.6 090 FL150 250",
+    "CRE TRA5QK B738 52.10 5.40 300 FL200 290" })
+  check_eq(ex("KLM12 climb FL300, and AEA21 stays on his route."), "ALT KLM12 FL300")
+  check_eq(ex("KLM12 climb FL300. The Transavia stays where he is."), "ALT KLM12 FL300")
+  check_eq(ex("KLM12 climb FL300, AEA21 keeps his speed."), "ALT KLM12 FL300")
+  check_eq(ex("KLM12 climb FL300, AEA21 stays low."), "ASK I have ALT KLM12 FL300. What does 'AEA21' mean?")
+  asked(ex("AEA21 stays where he is."), "no instruction at all")
+  check_eq(ex("KLM12 keep present heading, turn 10 degrees left"), "HDG KLM12 80 LEFT")
+end
