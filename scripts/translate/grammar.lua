@@ -9534,9 +9534,8 @@ do
 end
 function G.common_named(text, world, parsed)
   if #world.aircraft == 0 or not text:find("%d") and not text:find("%a%s+%a") then return text end
-  local said
+  local said, lower = nil, text:lower()
   for _, c in ipairs(G.common_read) do
-    local lower = text:lower()
     local at = lower:find(c[1], 1, true) and lower:find("%f[%w]" .. c[1]:gsub("%p", "%%%0") .. "%f[%W]")
     local nx = at and lower:match("^%s+(%w+)", at + #c[1])
     local before = at and lower:sub(1, at - 1):match("(%a+)%s+$")
