@@ -9677,6 +9677,45 @@ function G.one_new_aircraft(read, said, world, parsed)
   end
   return new or nil
 end
+-- "climb Qatar 846", "delete Malaysia 2608", "direct Hong Kong Airlines 612 to LIMES": a name an airline is known
+-- by that is no telephony (names.common; the callsign matcher knows telephony only) said before a flight number
+-- (digits, or a digit said), wherever it stands, is read as the airline's telephony (its ICAO designator where
+-- squawk knows none) when the text so read names exactly one aircraft flying, matched exactly, that the text as
+-- said does not, and keeps every one it does; anything else stays as said. A name said straight after a word of
+-- another airline's name ("AirAsia Malaysia 88") is part of that name; one that is an airline's two-letter code
+-- ("BA 456") is a partial callsign, asked.
+G.common_read = {}  -- {name (lower case), what the matcher reads for it}, longest name first
+do
+  local telephony, said = {}, {}  -- (an airline's first telephony; the names that are a telephony)
+  for _, a in ipairs(names.airlines) do
+    telephony[a[2]], said[a[1]] = telephony[a[2]] or a[1], true
+  end
+  for _, a in ipairs(names.common) do
+    if not said[a[1]] and not names.iata[a[1]:upper()] then
+      G.common_read[#G.common_read + 1] = { a[1], telephony[a[2]] or a[2] }
+    end
+  end
+  table.sort(G.common_read, function(x, y) return #x[1] > #y[1] end)
+end
+function G.common_named(text, world, parsed)
+  if #world.aircraft == 0 or not text:find("%d") and not text:find("%a%s+%a") then return text end
+  local said, lower = nil, text:lower()
+  for _, c in ipairs(G.common_read) do
+    local at = lower:find(c[1], 1, true) and lower:find("%f[%w]" .. c[1]:gsub("%p", "%%%0") .. "%f[%W]")
+    local nx = at and lower:match("^%s+(%w+)", at + #c[1])
+    local before = at and lower:sub(1, at - 1):match("(%a+)%s+$")
+    if nx and (nx:match("^%d") or SAID_DIGIT[nx]) and not (before and (AIRLINE_WORDS[before] or G.name_words[before])) then
+      local read = text:sub(1, at - 1) .. (text:sub(at, at):match("%u") and c[2]:gsub("%f[%a]%a", string.upper) or c[2])
+        .. text:sub(at + #c[1])
+      parsed = parsed or {}
+      said = said or exact_aircraft(text, world, parsed)
+      local keeps = G.one_new_aircraft(read, said, world, parsed) ~= nil
+      for id in pairs(keeps and said or {}) do keeps = keeps and exact_aircraft(read, world, parsed)[id] end
+      if keeps then return G.common_named(read, world, parsed) end
+    end
+  end
+  return text
+end
 local function homophone_ids(text, world, parsed)
   if #world.aircraft == 0 then return text end
   parsed = parsed or {}
@@ -10597,7 +10636,7 @@ function M.translate(text, world)
   end
   text = airline_values(named_airline_ids(split_ids(unglued_ids(G.iata_ids(text, world.aircraft), world.aircraft),
     world.aircraft)), world.aircraft)
-  text = homophone_ids(G.hundreds_callsign(G.recognised_callsigns(glued_telephony(G.joined_telephony(text),
+  text = homophone_ids(G.hundreds_callsign(G.recognised_callsigns(glued_telephony(G.common_named(G.joined_telephony(text), world),
     world.aircraft), world), world), world)
   local abbreviated
   text, abbreviated = abbreviated_registrations(text, world.aircraft)

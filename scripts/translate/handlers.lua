@@ -2343,6 +2343,40 @@ function m:homophone_closing(r)
   return nil
 end
 
+-- The words that say the callsign of spoken aircraft reference r when the callsign matcher read r from the
+-- request's opening words with words of the request glued before them ("climb Foobar 846" heard as
+-- CLIMBFOOBAR846: words squawk knows, none an airline's, lead it) and the words after them, before the flight
+-- number, do not name r's airline (its ICAO prefix, a name of it or of its brand, matched better than
+-- lexicon.callsign_confirm.airline: "climb quatar 846" names QTR846's): no aircraft may be suggested for them.
+-- nil otherwise (and when no word is left after them: "AC 851" may be Air Canada's).
+function m:airline_unsaid(r)
+  local k = r.b
+  while k < r.e and self:known_word(k) and not self.t[k].number_word and not L.phonetic[self.t[k].text]
+      and not self:airline_at(k) do
+    k = k + 1
+  end
+  if k == r.b or not r.heard then return nil end
+  local said = ""
+  for x = k, r.e - 1 do
+    if self.t[x].kind ~= "word" or self.t[x].number_word or L.phonetic[self.t[x].text] then break end
+    said = said .. self.t[x].text
+  end
+  local prefix = airline_digits(r.name)
+  local of = { prefix:lower() }
+  airline_names()
+  for name, icao in pairs(AIRLINE_NAMES) do
+    if icao == prefix then of[#of + 1] = name:gsub(" ", "") end
+  end
+  for name, codes in pairs(BRANDS) do
+    for _, code in ipairs(codes) do
+      if code == prefix then of[#of + 1] = name:gsub(" ", "") end
+    end
+  end
+  local _, score = squawk.translate.best_match(said, of)
+  if said == "" or score > L.callsign_confirm.airline then return nil end
+  return self:raw(k, r.e)
+end
+
 -- A spoken callsign matched to an aircraft whose airline or digits differ
 -- from what was heard is asked about, unless the speaker confirmed it; so is one said with a later part of
 -- its airline's telephony only (m:telephony_part_only), or with its last digit heard as a word
@@ -2361,8 +2395,13 @@ function m:confirm_callsigns(s)
         and not self:airline_and_digits_match(h.id, r.name)
         and (self:strict_callsigns() or h.airline < c.airline or h.digits < c.digits
           or self:letters_conflict(h.id, r.name)) then
-      self.confirm = self.confirm or { id = r.name, heard = h.id }
-      self:need(string.format("Did you mean %s? I heard %s.", r.name, h.id))
+      local unsaid = self:airline_unsaid(r)
+      if unsaid then
+        self:need(string.format("There is no aircraft '%s'. Which aircraft do you mean?", unsaid))
+      else
+        self.confirm = self.confirm or { id = r.name, heard = h.id }
+        self:need(string.format("Did you mean %s? I heard %s.", r.name, h.id))
+      end
     end
   end
 end

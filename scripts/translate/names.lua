@@ -2,8 +2,10 @@
 -- and handed to the C++ callsign and type matchers):
 --   airlines: radio telephony (lower case, single spaces) -> ICAO prefix
 --   common: names an airline is known by that are no telephony
---   (lower case) -> ICAO prefix; read only for an airline said without a
---   flight number ("the BA", "the CityLine")
+--   (lower case) -> ICAO prefix; read for an airline said without a
+--   flight number ("the BA", "the CityLine"), and before one as the
+--   airline's telephony ("climb Qatar 846": translate/grammar.lua
+--   G.common_named)
 --   brands: a name (telephony or common) that several airlines fly under ->
 --   their ICAO prefixes; an airline said alone by that name is the one
 --   aircraft of any of them flying ("the Transavia": TRA or TVF), and a
@@ -372,6 +374,8 @@ local names = {
     { "airasia", "AXM" },
     { "air asia x", "XAX" },
     { "airasia x", "XAX" },
+    { "airasia malaysia", "AXM" },
+    { "air asia malaysia", "AXM" },
     { "scoot", "TGW" },
     { "tigerair", "TGW" },  -- (Tiger Airways, merged into Scoot, which kept its designator)
     { "tiger airways", "TGW" },
@@ -545,6 +549,9 @@ local names = {
     { "air hongkong", "AHK" },
     { "air hong kong", "AHK" },
     { "batik", "BTK" },
+    { "batik air", "BTK" },  -- (Batik Air Indonesia; a brand, below)
+    { "batik air indonesia", "BTK" },
+    { "batik air malaysia", "MXD" },  -- (formerly Malindo Air, telephony Malindo)
     { "supergreen", "CTV" },  -- (Citilink)
     { "wagon air", "AWQ" },  -- (Indonesia AirAsia)
     { "cool red", "APG" },  -- (Philippines AirAsia)
@@ -639,6 +646,11 @@ local names = {
     { "qatar airways", "QTR" },
     { "qatar", "QTR" },
     { "cathay pacific", "CPA" },
+    { "malaysia airlines", "MAS" },
+    { "malaysia", "MAS" },
+    { "hk express", "HKE" },  -- (telephony Hongkong Shuttle)
+    { "hong kong express", "HKE" },
+    { "hong kong airlines", "CRK" },  -- (telephony Bauhinia)
     { "ita", "ITY" },  -- (ITA Airways, telephony Itarrow)
     { "ita airways", "ITY" },
     { "smartwings", "TVS" },
@@ -668,6 +680,9 @@ local names = {
     { "airasia", "AXM", "XAX", "AWQ", "APG", "AIQ", "IAD" },
     { "air asia", "AXM", "XAX", "AWQ", "APG", "AIQ", "IAD" },
     { "jetstar", "JST", "JSA", "JJP" },  -- (Jetstar Airways, Jetstar Asia, Jetstar Japan)
+    -- (Batik Air Indonesia and Batik Air Malaysia)
+    { "batik air", "BTK", "MXD" },
+    { "batik", "BTK", "MXD" },
     -- cargo airlines known by their group's name, none of them telephony: "the DHL" (European Air Transport
     -- Leipzig, DHL Air UK, DHL Aero Expreso, DHL International, and AStar's DHL), "the ASL" (ASL Airlines
     -- Belgium, Ireland, France; ASL typed is Air Serbia's designator too, so either flying fits)

@@ -13727,3 +13727,25 @@ do
   asked(ex("AEA21 stays where he is."), "no instruction at all")
   check_eq(ex("KLM12 keep present heading, turn 10 degrees left"), "HDG KLM12 80 LEFT")
 end
+
+-- Cycle 52 (fcn): an airline said by a name it is known by (names.common: "Qatar", "Malaysia", "British Airways")
+-- before its flight number is that callsign wherever it stands, matched exactly as a telephony is; a verb the
+-- matcher glued to an airline it cannot name suggests no aircraft; HK Express, Hong Kong Airlines, Batik Air
+do
+  local _, ex = scene({ "CRE QTR615 B788 25.2 51.6 120 FL330 280", "CRE CPA615 A359 22.3 114.2 090 FL350 280",
+    "CRE BAW615 B77W 51.5 -0.5 090 FL310 280", "CRE MAS615 A333 3.1 101.5 300 FL290 280",
+    "CRE HKE329 A320 22.3 114.0 200 FL240 270", "CRE CRK770 A332 22.4 114.1 180 FL260 270",
+    "CRE MXD52 B738 3.0 101.6 010 FL220 260" })
+  check_eq(ex("descend Qatar 615 to FL290"), "ALT QTR615 FL290")
+  check_eq(ex("turn British Airways 615 left heading 270"), "HDG BAW615 270 LEFT")
+  check_eq(ex("reduce Malaysia Airlines six one five to 250 knots"), "SPD MAS615 250")
+  check_eq(ex("give Qatar Airways 615 a new destination, OMDB"), "DEST QTR615 OMDB")
+  check_eq(ex("remove Malaysia 615 from the scenario"), "DEL MAS615")
+  check_eq(ex("descend HK Express 329 to FL200"), "ALT HKE329 FL200")
+  check_eq(ex("Hong Kong Express 329 climb FL260"), "ALT HKE329 FL260")
+  check_eq(ex("turn Hong Kong Airlines 770 right heading 090"), "HDG CRK770 90 RIGHT")
+  check_eq(ex("Batik Air 52 descend FL180"), "ALT MXD52 FL180")
+  -- a flight number no aircraft of that airline has is asked; a name no aircraft's airline bears suggests none
+  asked(ex("descend Qatar 616 to FL290"), "Qatar 616 flies not")
+  check_eq(ex("descend Zorbair 615 to FL290"), "ASK There is no aircraft 'Zorbair 615'. Which aircraft do you mean?")
+end
