@@ -13402,3 +13402,19 @@ do
   check_eq(ex("set the speed of the simulation to factor 5 and start it"), "DTMULT 5 ; OP")
   check_eq(ex("ff 2 mins then stop"), "FF 120")
 end
+
+-- Cycle 52 (f145): a navaid said by its navdata name in a limit's, a constraint's or a condition's slot ("until
+-- ockham", "when you get to lambourne") is the one navaid of that name on the routes flown; a name off the route
+-- of the aircraft addressed is still asked
+do
+  local _, ex = navscene({ "CRE EZY45TC A319 51.25 0.20 300 FL090 250", "ADDWPT EZY45TC BIG", "ADDWPT EZY45TC OCK",
+    "CRE RYR8KL B738 51.80 0.40 200 FL150 290", "ADDWPT RYR8KL LAM" }, "a navaid said by its name")
+  if ex then
+    check_eq(ex("easy four five tango charlie hold two thirty knots till ockham"), "SPD EZY45TC 230")
+    check_eq(ex("ryanair eight kilo lima when you reach lambourne climb flight level one six zero"),
+      "AT RYR8KL LAM DO ALT RYR8KL FL160")
+    check_eq(ex("ryanair eight kilo lima once you get to lambourne turn left heading one eight zero"),
+      "AT RYR8KL LAM DO HDG RYR8KL 180 LEFT")
+    asked(ex("easy four five tango charlie hold two thirty knots till lambourne"), "a navaid off its route")
+  end
+end
