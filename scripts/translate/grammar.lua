@@ -9827,6 +9827,34 @@ function G.sure_route_name(w, route)
   end
   return alike == 1 and sure or nil
 end
+-- "direct test one", "add test 2 to the route": a waypoint the user defined (world.waypoints) whose name is letters
+-- then digits (TEST1, WP12), said as its letters' word then each digit (as a word, SAID_DIGIT, or a numeral), is that
+-- name; a digit more after them ("test one two" with TEST1 only) leaves the words as said.
+function G.spoken_user_waypoints(text, world)
+  local spoken = {}
+  for _, n in ipairs(world.waypoints or {}) do
+    local letters, digits = n:match("^(%a+)(%d%d?%d?)$")
+    if letters then
+      local l = letters:lower()
+      spoken[l] = spoken[l] or {}
+      spoken[l][digits] = n:upper()
+    end
+  end
+  if not next(spoken) then return text end
+  local toks, bare = plain_words(text)
+  local function digit(k) return bare[k] and (SAID_DIGIT[bare[k]] or bare[k]:match("^%d$")) end
+  return tokens.rewrite(text, toks, function(i)
+    local names = spoken[bare[i]]
+    if not names or toks[i]:match("%p$") then return nil end
+    local digits, k = "", i + 1
+    while digit(k) and #digits < 3 do
+      digits, k = digits .. digit(k), k + 1
+      if toks[k - 1]:match("%p$") then break end
+    end
+    if not names[digits] or (digit(k) and not toks[k - 1]:match("%p$")) then return nil end
+    return names[digits] .. (toks[k - 1]:match("%p+$") or ""), k
+  end)
+end
 -- The ident of the one navaid on the routes flown (`routed`: a set of upper-case idents) whose navdata name is the
 -- word w ("until ockham" for OCK, "when you get to lambourne" for LAM), or nil: a name that gives no navaid of
 -- those routes, or two, or an airport's or a city's name too ("to manchester": EGCC or MCT), stays as said (asked).
@@ -10475,7 +10503,8 @@ function M.translate(text, world)
   local run_together
   text, run_together = G.run_together_position(text)
   if run_together then return { commands = {}, ask = run_together } end
-  text = G.confirmed_route_places(G.spelled_route_places(typed_places(G.named_idents(written_forms(text, world), world),
+  text = G.confirmed_route_places(G.spelled_route_places(typed_places(G.named_idents(
+    G.spoken_user_waypoints(written_forms(text, world), world), world),
     world), world), world)
   text = G.terse_altitude(spelled_airports(text, world), world)
   local run_on

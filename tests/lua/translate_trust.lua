@@ -13418,3 +13418,17 @@ do
     asked(ex("easy four five tango charlie hold two thirty knots till lambourne"), "a navaid off its route")
   end
 end
+
+-- Cycle 52 (f145): a user waypoint named letters then digits (TEST1, WP12) said as the word then each digit ("test
+-- one", "wp one two") is that waypoint; a digit more than its name holds ("test one two" with TEST1 only) is asked
+do
+  local s = scene({ "DEFWPT TEST1 51.6 -0.7", "DEFWPT WP12 51.2 -0.2", "CRE SHT8 A320 51.45 -0.3 250 FL080 250" })
+  local function ex(text)
+    return said(graph.translate(text, { sim = s, mode = "offline", waypoints = { "TEST1", "WP12" } }))
+  end
+  check_eq(ex("shuttle eight proceed direct test one"), "ADDWPT SHT8 TEST1 ; DIRECT SHT8 TEST1")
+  check_eq(ex("shuttle eight add wp one two to the route"), "ADDWPT SHT8 WP12")
+  check_eq(ex("shuttle eight direct wp 1 2"), "ADDWPT SHT8 WP12 ; DIRECT SHT8 WP12")
+  asked(ex("shuttle eight direct test one two"), "a digit more than TEST1 holds")
+  asked(ex("shuttle eight direct wp one"), "WP1 is no waypoint")
+end
