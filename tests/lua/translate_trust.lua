@@ -13432,3 +13432,15 @@ do
   asked(ex("shuttle eight direct test one two"), "a digit more than TEST1 holds")
   asked(ex("shuttle eight direct wp one"), "WP1 is no waypoint")
 end
+
+-- Cycle 52 (f145): operators a recogniser writes by name: Aurigny (telephony Ayline, AUR) and BA CityFlyer ("the
+-- city flyer", CFE), in a list of instructions too; "british airways" with BAW and CFE flying is still asked
+do
+  local _, ex = scene({ "CRE AUR64 AT76 51.0 -1.0 045 FL050 200", "CRE CFE23 E190 51.5 0.2 090 3000 220",
+    "CRE BAW2FN A35K 51.47 -0.8 270 FL100 280" })
+  check_eq(ex("speedbird two foxtrot november climb flight level one two zero and ayline six four climb flight "
+    .. "level seven zero"), "ALT BAW2FN FL120 ; ALT AUR64 FL70")
+  check_eq(ex("the aurigny turn left heading three six zero"), "HDG AUR64 360 LEFT")
+  check_eq(ex("the city flyer reduce two hundred knots"), "SPD CFE23 200")
+  asked(ex("the british airways one reduce two hundred knots"), "BAW2FN or CFE23")
+end
