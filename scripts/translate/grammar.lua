@@ -10032,6 +10032,64 @@ function G.sure_route_name(w, route)
   end
   return alike == 1 and sure or nil
 end
+-- "direct test one", "add test 2 to the route": a waypoint the user defined (world.waypoints) whose name is letters
+-- then digits (TEST1, WP12), said as its letters' word then each digit (as a word, SAID_DIGIT, or a numeral), is that
+-- name; a digit more after them ("test one two" with TEST1 only) leaves the words as said.
+function G.spoken_user_waypoints(text, world)
+  local spoken = {}
+  for _, n in ipairs(world.waypoints or {}) do
+    local letters, digits = n:match("^(%a+)(%d%d?%d?)$")
+    if letters then
+      local l = letters:lower()
+      spoken[l] = spoken[l] or {}
+      spoken[l][digits] = n:upper()
+    end
+  end
+  if not next(spoken) then return text end
+  local toks, bare = plain_words(text)
+  local function digit(k) return bare[k] and (SAID_DIGIT[bare[k]] or bare[k]:match("^%d$")) end
+  return tokens.rewrite(text, toks, function(i)
+    local names = spoken[bare[i]]
+    if not names or toks[i]:match("%p$") then return nil end
+    local digits, k = "", i + 1
+    while digit(k) and #digits < 3 do
+      digits, k = digits .. digit(k), k + 1
+      if toks[k - 1]:match("%p$") then break end
+    end
+    if not names[digits] or (digit(k) and not toks[k - 1]:match("%p$")) then return nil end
+    return names[digits] .. (toks[k - 1]:match("%p+$") or ""), k
+  end)
+end
+-- The ident of the one navaid on the routes flown (`routed`: a set of upper-case idents) whose navdata name is the
+-- word w ("until ockham" for OCK, "when you get to lambourne" for LAM), or nil: a name that gives no navaid of
+-- those routes, or two, or an airport's or a city's name too ("to manchester": EGCC or MCT), stays as said (asked).
+-- True when the word bare[i] (the plain words of a request) is in a slot where a navaid's name of the routes flown
+-- is read (G.routed_navaid_name): after a limit's, a constraint's or a condition's word ("until ockham", "cross
+-- ockham", "after ockham"), or a place reached ("reaching ockham", "when you get to ockham"); "at" and a bare "to"
+-- ("land at ezeiza", "inbound to boston") may name an airport: none.
+G.navaid_slots = set_of({ "until", "till", "cross", "crossing", "after", "before", "over", "passing", "via", "reach",
+  "reaches", "reaching" })
+G.navaid_reached = set_of({ "get", "gets", "getting", "got" })
+function G.navaid_slot(bare, i)
+  local w = bare[i - 1]
+  if w == "to" then return G.navaid_reached[bare[i - 2] or ""] ~= nil end
+  return w ~= nil and G.navaid_slots[w] ~= nil
+end
+function G.routed_navaid_name(w, routed, world)
+  if not (world.navaids_named and world.airports_named and world.airports_of_city) or #w < 4 or not w:match("^%a+$")
+      or known_word(w) or #world.airports_named(w) > 0 or #world.airports_of_city(w) > 0 then
+    return nil
+  end
+  local found
+  for _, id in ipairs(world.navaids_named(w, 0, 0, 1e5)) do
+    local up = id:upper()
+    if routed[up] then
+      if found and found ~= up then return nil end
+      found = up
+    end
+  end
+  return found
+end
 -- "cross macy at FL240", "after camron descend ...", "until robber": a word straight after a place's slot
 -- (G.heard_slots) that sounds like a waypoint the speaker confirmed (world.confirmed, the answer to
 -- G:heard_route_place's question) on the route of an aircraft flying is that waypoint's ident; so is one that
@@ -10051,17 +10109,17 @@ function G.confirmed_route_places(text, world)
   local adding = false
   for _, w in ipairs(bare) do adding = adding or G.route_adding[w] ~= nil end
   return tokens.rewrite(text, toks, function(i)
-    if not (bare[i - 1] and G.heard_slots[bare[i - 1]]) or toks[i - 1]:match("%p$") then
-      return nil
-    end
-    local name = #confirmed > 0 and G.heard_route_name(bare[i], confirmed)
+    local slot = G.heard_slots[bare[i - 1]]
+    if not (slot or G.navaid_slot(bare, i)) or toks[i - 1]:match("%p$") then return nil end
+    local name = slot and #confirmed > 0 and G.heard_route_name(bare[i], confirmed)
     -- (a word written with a capital, or a navaid's or an airport's name anywhere, "at lille" for LIL, is a
     -- place's name, read as such)
-    local sure = not name and toks[i]:match("^%l") and world.navaids_named and world.airports_named
+    local sure = slot and not name and toks[i]:match("^%l") and world.navaids_named and world.airports_named
       and not (adding and G.route_position[bare[i - 1]]) and G.sure_route_name(bare[i], routed)
     if sure and #world.navaids_named(bare[i], 0, 0, 1e5) == 0 and #world.airports_named(bare[i]) == 0 then
       name = sure
     end
+    name = name or (G.navaid_slot(bare, i) and toks[i]:match("^%l+%p*$") and G.routed_navaid_name(bare[i], seen, world))
     return name and name .. (toks[i]:match("%p+$") or ""), i + 1
   end)
 end
@@ -10651,7 +10709,8 @@ function M.translate(text, world)
   local run_together
   text, run_together = G.run_together_position(text)
   if run_together then return { commands = {}, ask = run_together } end
-  text = G.confirmed_route_places(G.spelled_route_places(typed_places(G.named_idents(written_forms(text, world), world),
+  text = G.confirmed_route_places(G.spelled_route_places(typed_places(G.named_idents(
+    G.spoken_user_waypoints(written_forms(text, world), world), world),
     world), world), world)
   text = G.terse_altitude(spelled_airports(text, world), world)
   local run_on

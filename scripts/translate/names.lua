@@ -306,6 +306,8 @@ local names = {
     { "loganair", "LOG" },
     { "logan", "LOG" },  -- (Loganair's ICAO telephony)
     { "stobart", "STK" },  -- (Stobart Air)
+    { "aurigny", "AUR" },
+    { "ayline", "AUR" },  -- (Aurigny's ICAO telephony)
     { "jersey", "BEE" },  -- (Flybe's ICAO telephony)
     { "tomjet", "TOM" },  -- (TUI Airways' ICAO telephony)
     { "tomson", "TOM" },  -- (its telephony as Thomsonfly and Thomson Airways)
@@ -622,6 +624,8 @@ local names = {
     { "british airways", "BAW" },
     { "british", "BAW" },
     { "cityline", "CLH" },
+    { "cityflyer", "CFE" },
+    { "city flyer", "CFE" },
     { "lufthansa cityline", "CLH" },
     { "american airlines", "AAL" },
     { "united airlines", "UAL" },

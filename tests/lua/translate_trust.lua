@@ -13749,3 +13749,45 @@ do
   asked(ex("descend Qatar 616 to FL290"), "Qatar 616 flies not")
   check_eq(ex("descend Zorbair 615 to FL290"), "ASK There is no aircraft 'Zorbair 615'. Which aircraft do you mean?")
 end
+
+-- Cycle 52 (f145): a navaid said by its navdata name in a limit's, a constraint's or a condition's slot ("until
+-- ockham", "when you get to lambourne") is the one navaid of that name on the routes flown; a name off the route
+-- of the aircraft addressed is still asked
+do
+  local _, ex = navscene({ "CRE EZY45TC A319 51.25 0.20 300 FL090 250", "ADDWPT EZY45TC BIG", "ADDWPT EZY45TC OCK",
+    "CRE RYR8KL B738 51.80 0.40 200 FL150 290", "ADDWPT RYR8KL LAM" }, "a navaid said by its name")
+  if ex then
+    check_eq(ex("easy four five tango charlie hold two thirty knots till ockham"), "SPD EZY45TC 230")
+    check_eq(ex("ryanair eight kilo lima when you reach lambourne climb flight level one six zero"),
+      "AT RYR8KL LAM DO ALT RYR8KL FL160")
+    check_eq(ex("ryanair eight kilo lima once you get to lambourne turn left heading one eight zero"),
+      "AT RYR8KL LAM DO HDG RYR8KL 180 LEFT")
+    asked(ex("easy four five tango charlie hold two thirty knots till lambourne"), "a navaid off its route")
+  end
+end
+
+-- Cycle 52 (f145): a user waypoint named letters then digits (TEST1, WP12) said as the word then each digit ("test
+-- one", "wp one two") is that waypoint; a digit more than its name holds ("test one two" with TEST1 only) is asked
+do
+  local s = scene({ "DEFWPT TEST1 51.6 -0.7", "DEFWPT WP12 51.2 -0.2", "CRE SHT8 A320 51.45 -0.3 250 FL080 250" })
+  local function ex(text)
+    return said(graph.translate(text, { sim = s, mode = "offline", waypoints = { "TEST1", "WP12" } }))
+  end
+  check_eq(ex("shuttle eight proceed direct test one"), "ADDWPT SHT8 TEST1 ; DIRECT SHT8 TEST1")
+  check_eq(ex("shuttle eight add wp one two to the route"), "ADDWPT SHT8 WP12")
+  check_eq(ex("shuttle eight direct wp 1 2"), "ADDWPT SHT8 WP12 ; DIRECT SHT8 WP12")
+  asked(ex("shuttle eight direct test one two"), "a digit more than TEST1 holds")
+  asked(ex("shuttle eight direct wp one"), "WP1 is no waypoint")
+end
+
+-- Cycle 52 (f145): operators a recogniser writes by name: Aurigny (telephony Ayline, AUR) and BA CityFlyer ("the
+-- city flyer", CFE), in a list of instructions too; "british airways" with BAW and CFE flying is still asked
+do
+  local _, ex = scene({ "CRE AUR64 AT76 51.0 -1.0 045 FL050 200", "CRE CFE23 E190 51.5 0.2 090 3000 220",
+    "CRE BAW2FN A35K 51.47 -0.8 270 FL100 280" })
+  check_eq(ex("speedbird two foxtrot november climb flight level one two zero and ayline six four climb flight "
+    .. "level seven zero"), "ALT BAW2FN FL120 ; ALT AUR64 FL70")
+  check_eq(ex("the aurigny turn left heading three six zero"), "HDG AUR64 360 LEFT")
+  check_eq(ex("the city flyer reduce two hundred knots"), "SPD CFE23 200")
+  asked(ex("the british airways one reduce two hundred knots"), "BAW2FN or CFE23")
+end
