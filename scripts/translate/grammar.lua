@@ -1969,15 +1969,13 @@ function G:declared(b, e)
     x = self:find_word(x + 2, e, COMMENTARY.decl.subjects)
     if x >= e then return false end
   end
+  -- (an instruction word in the subject before a copula is a noun only in a remark on the study: "Real time is a bit
+  -- slow for my supervisor's patience")
+  local subject = x
   if not self:word(x, COMMENTARY.decl.subjects) then
-    local v = self:find_word(x + 1, e, COMMENTARY.decl.copulas)
-    if v >= e then return false end
-    -- (an instruction word in the subject is a noun only in a remark on the study with no comparison: "Real time
-    -- is a bit slow for my supervisor's patience"; "Left is better." takes the turn back)
-    local noun = self:word_in(b, e, COMMENTARY.decl.study) and not self:word_in(b, e, COMMENTARY.decl.compared)
-    for y = x, v - 1 do
-      if self:intent_at(y) and not noun then return false end
-    end
+    subject = self:find_word(x + 1, e, COMMENTARY.decl.copulas)
+    if subject >= e then return false end
+    if not self:word_in(b, e, COMMENTARY.decl.study) then subject = x end
   end
   for _, q in ipairs(self:quantities(b, e)) do
     if not ((q.b > b and self:aircraft_count(q)) or self:label_number(q)) then return false end
@@ -1986,16 +1984,15 @@ function G:declared(b, e)
     if not self:word(r.b, "@not_names") then return false end
   end
   local wished, instructs = self:word_in(b, e, COMMENTARY.decl.requests), false
-  -- (a name in capitals the request knows as no place may be one, "It is going to Jakarta": only a belief told names
-  -- it, "Then it heads towards Utrecht, I believe")
-  local believed = self:word_in(b, e, COMMENTARY.decl.believed)
+  -- (a name in capitals may be a place, "It is going to Jakarta", "so Stuttgart is its destination"; opening the
+  -- remark, a word squawk knows is no name: only a belief told with no instruction word names one, "Then it heads
+  -- towards Utrecht, I believe")
+  local believed, named = self:word_in(b, e, COMMENTARY.decl.believed), false
   for y = b, e - 1 do
     local t = self.t[y]
     if self.noted[y] then return false end
-    if t.kind == "word" and y > x and t.raw:match("^%u") and not self:word(y, COMMENTARY.decl.subjects)
-        and not believed then
-      return false
-    end
+    named = named or (t.kind == "word" and t.raw:match("^%u") ~= nil and (y > b or not KNOWN[t.text])
+      and not self:word(y, COMMENTARY.decl.subjects))
     if t.kind == "word" then
       local last = y == e - 1 or self.t[y + 1].kind == "punct"
       if COMMENTARY.decl.blocks[t.text] or self:word(y, "@correction") or (last and t.text == "too")
@@ -2008,12 +2005,12 @@ function G:declared(b, e)
         -- (what a question word opens is what is studied or told, "a test of how the geometry affects detection";
         -- a habit told is no instruction, "long-haul aircraft usually fly faster")
         local told = self:word_in(b, y, COMMENTARY.decl.told)
-        if not (noun or past or told) then return false end
+        if not (noun or past or told or y < subject) then return false end
         instructs = true
       end
     end
   end
-  return not (wished and instructs)
+  return not (wished and instructs) and not (named and (instructs or not believed))
 end
 
 -- True when the sentence opening at k is a remark in the declarative shape (G:declared), or opened by an apology
@@ -2230,9 +2227,15 @@ function G:in_reason(i)
       elseif k == opening and t.kind == "word" and self:apology_lead_end(k) then
         -- ("Sorry to disturb, may I see the route of ...")
         inside, lead_end, reason[k] = true, self:apology_lead_end(k), true
-      elseif punct and (t.text == "," or t.text == ";") and instructed(k)
-          and (self:word(k + 1, COMMENTARY.decl.subjects) or self:apology_end(k + 1, #self.t + 1) > k + 1)
-          and self:declared_clause(k + 1) then
+      elseif k == opening and t.kind == "word" and self:declared_clause(k) and self.t[self:declared_clause(k)]
+          and self.t[self:declared_clause(k)].text == "," and self:instructed_after(self:declared_clause(k)) then
+        -- ("ok so this is the minneapolis one, can we run it at 2x": the remark opening the request, to its comma)
+        inside, lead_end, reason[k] = true, self:declared_clause(k), true
+      elseif punct and (t.text == "," or t.text == ";")
+          and (self:word(k + 1, COMMENTARY.decl.subjects) or self:word(k + 1, COMMENTARY.decl.openers)
+            or self:apology_end(k + 1, #self.t + 1) > k + 1)
+          and self:declared_clause(k + 1) and (instructed(k) or self:has_ref(1, k, "aircraft")
+            or self:instructed_after(self:declared_clause(k + 1))) then
         -- ("Please delete the Hongkong Shuttle flight, I created it by mistake", "climb back to FL120 please, sorry I
         -- descended it by mistake", "..., sorry I know it is not simulated, maybe just descend to 2000 feet")
         inside = true

@@ -1041,10 +1041,9 @@ return {
                          "it'll" },
             copulas = { "is", "isn't", "are", "aren't", "was", "wasn't", "were", "weren't", "allows", "permits" },
             -- (words of a remark on the study, the instruction words before its copula nouns: "Real time is a bit
-            -- slow for my supervisor's patience"; with a comparison, `compared`, it may take an instruction back)
+            -- slow for my supervisor's patience")
             study = { "my", "our", "participant", "participants", "experiment", "thesis", "study", "supervisor",
                       "scenario", "trial" },
-            compared = { "better", "worse", "preferable", "rather", "instead" },
             -- (a remark told as the speaker's belief may name a place, "Then it heads towards Utrecht, I believe")
             believed = { "believe", "think", "guess", "suppose" },
             -- (an instruction word after a question word or a word of habit is told, never instructed)

@@ -13433,6 +13433,10 @@ do
   asked(ex("KLM12 descend to FL150, sorry I said it by mistake."), "the speaker's own saying judged")
   check_eq(ex("KLM12 descend to FL150. Sorry, FL160."), "ALT KLM12 FL160")
   check_eq(ex("KLM12 descend to FL150, sorry I meant AEA21."), "ALT AEA21 FL150")
+  check_eq(ex("KLM12 climb to FL300, if the weather allows."), "ALT KLM12 FL300")
+  check_eq(ex("ok so this is the second trial, can KLM12 climb to FL300"), "ALT KLM12 FL300")
+  check_eq(ex("Could KLM12 climb to FL300? Real time is too slow for my participants."), "ALT KLM12 FL300")
+  asked(ex("KLM12 climb to FL300, so Stuttgart is its destination, I guess."), "a correction's place")
   local _, zone = scene({ "CRE KLM12 A320 52 4 090 FL200 250" })
   check_eq(zone("Could you make the protected zone radius 3 nautical miles? In my thesis we use a smaller one."), "ZONER 3")
 end
