@@ -1921,10 +1921,6 @@ local function study_label_end(self, k)
   return nil
 end
 
--- True when the sentence opening at k is a remark beside the sentences that instruct: it ends the
--- request or with a full stop or "!" (a question may ask for something, a colon labels what follows),
--- something is instructed before it (`instructed(k)`) or after it, and it is commentary with no aircraft
--- in it (no value, place, aircraft or instruction word).
 -- True when an instruction word or an aircraft is said after position e.
 function G:instructed_after(e)
   for x = e + 1, #self.t do
@@ -1933,6 +1929,10 @@ function G:instructed_after(e)
   return false
 end
 
+-- True when the sentence opening at k is a remark beside the sentences that instruct: it ends the
+-- request or with a full stop or "!" (a question may ask for something, a colon labels what follows),
+-- something is instructed before it (`instructed(k)`) or after it, and it is commentary with no aircraft
+-- in it (no value, place, aircraft or instruction word).
 function G:remark_sentence(k, instructed)
   local e = commentary_end(self, k)
   local stop = self.t[e]
@@ -2033,13 +2033,18 @@ end
 -- The end of the remark in the declarative shape (G:declared) that the clause opening at b is, up to its next comma
 -- or else to the end of its sentence (commentary_end); nil when it is none.
 function G:declared_clause(b)
+  self.declared_memo = self.declared_memo or {}
+  local memo = self.declared_memo[b]
+  if memo ~= nil then return memo or nil end
   local e = commentary_end(self, b)
   local comma = b
   while comma < e and self.t[comma].text ~= "," do comma = comma + 1 end
+  memo = false
   for _, stop in ipairs({ comma, e }) do
-    if self:declared(self:apology_end(b, stop), stop) then return stop end
+    if not memo and self:declared(self:apology_end(b, stop), stop) then memo = stop end
   end
-  return nil
+  self.declared_memo[b] = memo
+  return memo or nil
 end
 
 -- The comma ending an apology that opens the request at k ("Sorry to trouble you, could you ...", "Sorry to
