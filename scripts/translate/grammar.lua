@@ -2023,11 +2023,12 @@ function G:declared_remark(k, instructed)
   local e = commentary_end(self, k)
   local stop = self.t[e]
   if stop and not (stop.text == "." or stop.text == "!") then return false end
+  local b = self:apology_end(k, e)
+  local alone = b > k and b == e
+  if not (alone or self:declared(b, e)) then return false end  -- (the shape first: it rules out most sentences)
   local after = self:instructed_after(e)
   if not (after or instructed(k) or self:has_ref(1, k, "aircraft") or #self:quantities(1, k) > 0) then return false end
-  local b = self:apology_end(k, e)
-  if b > k and b == e then return after or self:word_in(1, k, "@correction") or self:word_in(1, k, SC_MARKERS) end
-  return self:declared(b, e)
+  return not alone or after or self:word_in(1, k, "@correction") or self:word_in(1, k, SC_MARKERS)
 end
 
 -- The end of the remark in the declarative shape (G:declared) that the clause opening at b is, up to its next comma
