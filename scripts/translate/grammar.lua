@@ -1963,6 +1963,14 @@ local function study_label_end(self, k)
   return nil
 end
 
+-- True when an instruction word or an aircraft is said after position e.
+function G:instructed_after(e)
+  for x = e + 1, #self.t do
+    if self:intent_at(x) ~= nil or self:has_ref(x, x + 1, "aircraft") then return true end
+  end
+  return false
+end
+
 -- True when the sentence opening at k is a remark beside the sentences that instruct: it ends the
 -- request or with a full stop or "!" (a question may ask for something, a colon labels what follows),
 -- something is instructed before it (`instructed(k)`) or after it, and it is commentary with no aircraft
@@ -1971,14 +1979,125 @@ function G:remark_sentence(k, instructed)
   local e = commentary_end(self, k)
   local stop = self.t[e]
   if (stop and not (stop.text == "." or stop.text == "!")) or self:has_ref(k, e, "aircraft") then return false end
-  local after = false
-  for x = e + 1, #self.t do
-    if self:intent_at(x) ~= nil or self:has_ref(x, x + 1, "aircraft") then
-      after = true
-      break
+  return (instructed(k) or self:instructed_after(e)) and self:commentary(k, e)
+end
+
+COMMENTARY.decl = {}
+for key, words in pairs(COMMENTARY.declared) do COMMENTARY.decl[key] = set_of(words) end
+
+-- The position after an apology opening the span b .. e-1 ("sorry", "I am sorry", "I'm sorry", "apologies", then
+-- "to" and one of declared.apology_verbs with "you", then a comma: "Sorry to disturb,"), or b when none opens it.
+function G:apology_end(b, e)
+  local x = b
+  if self:word(x, "i'm") and self:word(x + 1, "sorry") then x = x + 1
+  elseif self:word(x, "i") and self:word(x + 1, "am") and self:word(x + 2, "sorry") then x = x + 2 end
+  if not self:word(x, COMMENTARY.decl.apologies) then return b end
+  x = x + 1
+  if self:word(x, "to") and self:word(x + 1, COMMENTARY.decl.apology_verbs) then x = x + (self:word(x + 2, "you") and 3 or 2) end
+  if x < e and self.t[x].text == "," then x = x + 1 end
+  return x
+end
+
+-- True when the tokens b .. e-1 are a remark in the declarative shape (lexicon.aside.declared): a subject before
+-- its verb, no aircraft, place or value (but a count of aircraft or a label's number, G:commentary), no
+-- instruction word but a noun or a past form, none beside a wish or a modal, and none of declared.blocks or of
+-- lexicon.correction: told of the run, the experiment or the speaker, it instructs nothing.
+function G:declared(b, e)
+  local x = b
+  while x < e and self:word(x, COMMENTARY.decl.openers) do x = x + 1 end
+  if x >= e or self:has_ref(b, e, "aircraft") then return false end
+  if self:word(x, COMMENTARY.decl.frames) and self:word(x + 1, COMMENTARY.decl.possessives) then
+    -- ("In my thesis we use a smaller one": the frame, then its own subject)
+    x = self:find_word(x + 2, e, COMMENTARY.decl.subjects)
+    if x >= e then return false end
+  end
+  -- (an instruction word in the subject before a copula is a noun only in a remark on the study: "Real time is a bit
+  -- slow for my supervisor's patience")
+  local subject = x
+  if not self:word(x, COMMENTARY.decl.subjects) then
+    subject = self:find_word(x + 1, e, COMMENTARY.decl.copulas)
+    if subject >= e then return false end
+    if not self:word_in(b, e, COMMENTARY.decl.study) then subject = x end
+  end
+  for _, q in ipairs(self:quantities(b, e)) do
+    if not ((q.b > b and self:aircraft_count(q)) or self:label_number(q)) then return false end
+  end
+  for _, r in ipairs(self:refs_in(b, e, "waypoint")) do
+    if not self:word(r.b, "@not_names") then return false end
+  end
+  local wished, instructs = self:word_in(b, e, COMMENTARY.decl.requests), false
+  -- (a name in capitals may be a place, "It is going to Jakarta", "so Stuttgart is its destination"; opening the
+  -- remark, a word squawk knows is no name: only a belief told with no instruction word names one, "Then it heads
+  -- towards Utrecht, I believe")
+  local believed, named = self:word_in(b, e, COMMENTARY.decl.believed), false
+  for y = b, e - 1 do
+    local t = self.t[y]
+    if self.noted[y] then return false end
+    named = named or (t.kind == "word" and t.raw:match("^%u") ~= nil and (y > b or not KNOWN[t.text])
+      and not self:word(y, COMMENTARY.decl.subjects))
+    if t.kind == "word" then
+      local last = y == e - 1 or self.t[y + 1].kind == "punct"
+      if COMMENTARY.decl.blocks[t.text] or self:word(y, "@correction") or (last and t.text == "too")
+          or (t.text == "no" and (self:word(y + 1, "wait") or (self.t[y + 1] or t).kind == "punct")) then
+        return false
+      end
+      if self:intent_at(y) then
+        local noun = self:word(y - 1, COMMENTARY.decl.nouns_after) or self:word(y - 2, COMMENTARY.decl.nouns_after)
+        local past = t.raw:lower():match("[^e]ed$") ~= nil and not self:word(y - 1, "to")
+        -- (what a question word opens is what is studied or told, "a test of how the geometry affects detection";
+        -- a habit told is no instruction, "long-haul aircraft usually fly faster")
+        local told = self:word_in(b, y, COMMENTARY.decl.told)
+        if not (noun or past or told or y < subject) then return false end
+        instructs = true
+      end
     end
   end
-  return (instructed(k) or after) and self:commentary(k, e)
+  return not (wished and instructs) and not (named and (instructs or not believed))
+end
+
+-- True when the sentence opening at k is a remark in the declarative shape (G:declared), or opened by an apology
+-- ("Sorry, my supervisor is calling me."): it ends the request or with a full stop or "!", and an instruction,
+-- aircraft or value is said before it or an instruction or aircraft after it. An apology alone ("Sorry!") is one
+-- only after a correction said before it ("one two zero? No wait, one three zero. Sorry!") or before more of the
+-- request: closing the request after an instruction, it may announce a correction never said (asked,
+-- G:dangling_correction).
+function G:declared_remark(k, instructed)
+  local e = commentary_end(self, k)
+  local stop = self.t[e]
+  if stop and not (stop.text == "." or stop.text == "!") then return false end
+  local b = self:apology_end(k, e)
+  local alone = b > k and b == e
+  if not (alone or self:declared(b, e)) then return false end  -- (the shape first: it rules out most sentences)
+  local after = self:instructed_after(e)
+  if not (after or instructed(k) or self:has_ref(1, k, "aircraft") or #self:quantities(1, k) > 0) then return false end
+  return not alone or after or self:word_in(1, k, "@correction") or self:word_in(1, k, SC_MARKERS)
+end
+
+-- The end of the remark in the declarative shape (G:declared) that the clause opening at b is, up to its next comma
+-- or else to the end of its sentence (commentary_end); nil when it is none.
+function G:declared_clause(b)
+  self.declared_memo = self.declared_memo or {}
+  local memo = self.declared_memo[b]
+  if memo ~= nil then return memo or nil end
+  local e = commentary_end(self, b)
+  local comma = b
+  while comma < e and self.t[comma].text ~= "," do comma = comma + 1 end
+  memo = false
+  for _, stop in ipairs({ comma, e }) do
+    if not memo and self:declared(self:apology_end(b, stop), stop) then memo = stop end
+  end
+  self.declared_memo[b] = memo
+  return memo or nil
+end
+
+-- The comma ending an apology that opens the request at k ("Sorry to trouble you, could you ...", "Sorry to
+-- disturb, may I see ..."): an apology with its verb, nothing else before the comma; nil when none.
+function G:apology_lead_end(k)
+  local b = self:apology_end(k, #self.t + 1)
+  if b > k and self.t[b - 1].text == "," and self:word_in(k, b, COMMENTARY.decl.apology_verbs) then
+    return b - 1
+  end
+  return nil
 end
 
 -- True when the colon at k follows "note" or "comment" opening the request and one sentence runs from it to
@@ -2150,6 +2269,26 @@ function G:in_reason(i)
       elseif start and t.kind == "word" and self:remark_sentence(k, instructed) then
         -- ("... 290 knots. First arrival of batch B.", "Let's start with the baseline pair. SAS1A A320 ..."
         inside, reason[k] = true, true
+      elseif start and t.kind == "word" and self:declared_remark(k, instructed) then
+        -- ("Could you please pause? Sorry, my supervisor is calling me.", "... FL140. I created it a bit too low.")
+        inside, reason[k] = true, true
+      elseif k == opening and t.kind == "word" and self:apology_lead_end(k) then
+        -- ("Sorry to disturb, may I see the route of ...")
+        inside, lead_end, reason[k] = true, self:apology_lead_end(k), true
+      elseif k == opening and t.kind == "word" and self:declared_clause(k) and self.t[self:declared_clause(k)]
+          and self.t[self:declared_clause(k)].text == "," and self:instructed_after(self:declared_clause(k)) then
+        -- ("ok so this is the minneapolis one, can we run it at 2x": the remark opening the request, to its comma)
+        inside, lead_end, reason[k] = true, self:declared_clause(k), true
+      elseif punct and (t.text == "," or t.text == ";")
+          and (self:word(k + 1, COMMENTARY.decl.subjects) or self:word(k + 1, COMMENTARY.decl.openers)
+            or self:apology_end(k + 1, #self.t + 1) > k + 1)
+          and self:declared_clause(k + 1) and (instructed(k) or self:has_ref(1, k, "aircraft")
+            or self:instructed_after(self:declared_clause(k + 1))) then
+        -- ("Please delete the Hongkong Shuttle flight, I created it by mistake", "climb back to FL120 please, sorry I
+        -- descended it by mistake", "..., sorry I know it is not simulated, maybe just descend to 2000 feet")
+        inside = true
+        local stop = self.t[self:declared_clause(k + 1)]
+        if stop and stop.text == "," then lead_end = self:declared_clause(k + 1) end
       elseif k == lead_end then
         inside = false
       elseif punct and t.text ~= "," then
@@ -4037,6 +4176,9 @@ function G:self_corrected()
           or (self.t[c].text == "make" and self:word(c + 1, "it") and self:quantities(c + 2, c + 3)[1] ~= nil)
         c = c + 1
       end
+      -- ("Could you please pause? Sorry, my supervisor is calling me.": an apology opening a remark set aside,
+      -- G:declared_remark, takes nothing back)
+      marked = marked and not self:in_reason(a + 1)
       -- ("..., uhh just the hdg for now": "just/only the" and a kind of instruction ending the request, after a
       -- pause with no marker, says what stands all the same)
       local just_the = not marked and self:word(c, SC_ONLY) and self:word(c + 1, "the") and self.t[c + 2] ~= nil
@@ -5816,7 +5958,15 @@ function G:dangling_correction()
       or false
   end
   while first <= last and self.t[first].kind == "punct" do first = first + 1 end
-  if marked and first > 1 and not self:apology_after_remark(first, last) then
+  -- (an apology closing a remark set aside, G:declared_remark: "... 10.9 east? I placed it wrongly at the start,
+  -- sorry.", or said alone after a correction: "... one three zero. Sorry!")
+  local before = first - 1
+  while before > 1 and self.t[before].text == "," do before = before - 1 end
+  local opens = before
+  while opens > 1 and not (self.t[opens - 1].kind == "punct" and self.t[opens - 1].text ~= ",") do opens = opens - 1 end
+  local aside = self:in_reason(first) and ((self.t[before].kind == "word" and self:declared(opens, before + 1))
+    or self:word_in(1, first, "@correction") or self:word_in(1, first, SC_MARKERS))
+  if marked and first > 1 and not self:apology_after_remark(first, last) and not aside then
     self:need(string.format("You said '%s' with nothing after it. What is the corrected instruction?",
       self:raw(first, last + 1)))
   end

@@ -3979,7 +3979,11 @@ return function(H, f, compass)
       end
     end
     for _, q in ipairs(self:quantities(s.b, s.e)) do
-      if (q.kind ~= "plain" or q.b > s.trig) and not (qs[1] and qs[1].b == q.b) then qs[#qs + 1] = q end
+      -- (not "one" standing for a zone in a remark set aside: "? In my thesis we use a smaller one.")
+      if (q.kind ~= "plain" or q.b > s.trig) and not (qs[1] and qs[1].b == q.b)
+          and not (self:aircraft_count(q) and self:in_reason(q.b)) then
+        qs[#qs + 1] = q
+      end
     end
     table.sort(qs, function(a, b) return a.b < b.b end)
     for _, q in ipairs(qs) do

@@ -1038,7 +1038,45 @@ return {
                            "part",
                            -- (a report's parts, "as I need it for the figure in section 2")
                            "section", "figure", "fig", "table", "chapter", "appendix", "annex", "paragraph",
-                           "page" } },
+                           "page" },
+          -- a remark in its own sentence, or its own clause after a comma, in the declarative shape (G:declared):
+          -- a subject and its verb, never a request, beside an instruction ("Sorry, my supervisor is calling me.",
+          -- "I am sorry, I created it a bit too low.", "Then the geometry is symmetric.", ", I created it by
+          -- mistake"). It may open with an apology (`apologies`, "I am"/"I'm" before, "to" and one of
+          -- `apology_verbs` and "you" after: "Sorry to disturb,"), then one of `openers`; its subject is one of
+          -- `subjects`, or the words before a verb of `copulas` (no instruction word among them: "VFR traffic
+          -- isn't part of this experiment"), or one of `subjects` after a phrase of `frames` and a possessive
+          -- ("In my thesis we use a smaller one"). An instruction word in it is the remark's only as a noun
+          -- (after one of `nouns_after` within two words: "a gentle descent") or in the past ("-ed": "I
+          -- descended it by mistake"); any other, one beside one of `requests` (a wish or a modal: "it should
+          -- descend", "I want it to turn") or any of `blocks` (a correction or an addition) keeps it asked
+          declared = {
+            apologies = { "sorry", "apologies" },
+            apology_verbs = { "bother", "trouble", "disturb", "interrupt" },
+            openers = { "then", "so", "if", "but", "well", "anyway" },
+            subjects = { "i", "we", "it", "that", "this", "they", "there", "he", "she", "i'm", "i've", "we've",
+                         "we're", "it's", "that's", "there's", "they're", "he's", "she's", "i'll", "we'll",
+                         "it'll" },
+            copulas = { "is", "isn't", "are", "aren't", "was", "wasn't", "were", "weren't", "allows", "permits" },
+            -- (words of a remark on the study, the instruction words before its copula nouns: "Real time is a bit
+            -- slow for my supervisor's patience")
+            study = { "my", "our", "participant", "participants", "experiment", "thesis", "study", "supervisor",
+                      "scenario", "trial" },
+            -- (a remark told as the speaker's belief may name a place, "Then it heads towards Utrecht, I believe")
+            believed = { "believe", "think", "guess", "suppose" },
+            -- (an instruction word after a question word or a word of habit is told, never instructed)
+            told = { "how", "what", "whether", "why", "usually", "normally", "typically", "generally", "always",
+                     "often" },
+            frames = { "in", "for", "during" },
+            possessives = { "my", "our" },
+            nouns_after = { "the", "a", "an", "this", "that", "our", "its", "their", "his", "her", "my", "your",
+                            "no", "any", "some" },
+            requests = { "want", "wants", "need", "needs", "like", "would", "wish", "should", "must", "can",
+                         "could", "will", "may", "might", "shall", "i'd", "we'd", "i'll", "we'll", "it'll" },
+            blocks = { "please", "kindly", "let", "let's", "you", "your", "instead", "rather", "actually", "meant",
+                       "mean", "wait", "also", "again", "same", "both", "either", "better", "worse", "preferable",
+                       -- (the speaker's own saying judged: "I typed it wrong", "I said it by mistake")
+                       "said", "typed", "misspoke", "wrong", "mixed" } } },
   -- a clearance quoted whole in double quotes ('the transcript reads "KLM12, turn left heading 230"; replay it'):
   -- the words outside the quotes name it to be given again with one of `frames` and hold none of `not_frames`
   -- (text for the log, a negation, a correction or a condition), no value but a callsign or a time of day and no

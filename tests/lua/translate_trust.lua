@@ -13791,3 +13791,41 @@ do
   check_eq(ex("the city flyer reduce two hundred knots"), "SPD CFE23 200")
   asked(ex("the british airways one reduce two hundred knots"), "BAW2FN or CFE23")
 end
+
+-- Cycle 52 (fcs): a remark in its own sentence or clause in the declarative shape (a subject and its verb, an
+-- apology, thanks) beside an instruction is set aside; one that could instruct (a wish or a modal with an
+-- instruction word, a present-tense instruction, a correction, a value, an aircraft, a name that may be a place) is
+-- still asked or read
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL200 250", "CRE AEA21 B738 52.3 4.5 180 FL150 250" })
+  check_eq(ex("Could KLM12 descend to FL150? Sorry, my colleague is calling me."), "ALT KLM12 FL150")
+  check_eq(ex("Could KLM12 descend to FL150? I am sorry, I created it a bit too high."), "ALT KLM12 FL150")
+  check_eq(ex("KLM12 descend to FL150 please, sorry I climbed it by mistake."), "ALT KLM12 FL150")
+  check_eq(ex("Please delete AEA21, I created it by mistake."), "DEL AEA21")
+  check_eq(ex("Sorry to bother you, could KLM12 descend to FL150?"), "ALT KLM12 FL150")
+  check_eq(ex("Could KLM12 descend to FL150? Then the picture is symmetric."), "ALT KLM12 FL150")
+  check_eq(ex("Could KLM12 descend to FL150? Sorry if that is too low for it."), "ALT KLM12 FL150")
+  check_eq(ex("Could KLM12 descend to FL150? Cargo traffic isn't part of my study."), "ALT KLM12 FL150")
+  check_eq(ex("KLM12 descend to FL150. I defined the point before the run."), "ALT KLM12 FL150")
+  check_eq(ex("KLM12 descend to FL150. It's a test of how the vertical geometry affects detection."), "ALT KLM12 FL150")
+  check_eq(ex("KLM12 descend to FL150. Then it heads towards Rotterdam, I believe."), "ALT KLM12 FL150")
+  check_eq(ex("KLM12 descend to FL150. I created it too high, sorry."), "ALT KLM12 FL150")
+  check_eq(ex("KLM12 climb to flight level two one zero? No wait, two two zero. Sorry!"), "ALT KLM12 FL220")
+  -- near variants: still asked or read as said
+  asked(ex("KLM12 descend to FL150. Sorry!"), "an apology closing the request, no correction before it")
+  asked(ex("KLM12 descend to FL150. I typed that wrong, sorry."), "the speaker's own saying judged")
+  asked(ex("KLM12 descend to FL150. Then it turns left."), "a present-tense instruction")
+  asked(ex("KLM12 descend to FL150. I want it to turn left."), "a wish with an instruction word")
+  asked(ex("KLM12 descend to FL150. It should turn left."), "a modal with an instruction word")
+  asked(ex("KLM12 descend to FL150. I think it goes to FL100."), "a value in the remark")
+  asked(ex("KLM12 descend to FL150. AEA21 is too close."), "an aircraft in the remark")
+  asked(ex("KLM12 descend to FL150, sorry I said it by mistake."), "the speaker's own saying judged")
+  check_eq(ex("KLM12 descend to FL150. Sorry, FL160."), "ALT KLM12 FL160")
+  check_eq(ex("KLM12 descend to FL150, sorry I meant AEA21."), "ALT AEA21 FL150")
+  check_eq(ex("KLM12 climb to FL300, if the weather allows."), "ALT KLM12 FL300")
+  check_eq(ex("ok so this is the second trial, can KLM12 climb to FL300"), "ALT KLM12 FL300")
+  check_eq(ex("Could KLM12 climb to FL300? Real time is too slow for my participants."), "ALT KLM12 FL300")
+  asked(ex("KLM12 climb to FL300, so Stuttgart is its destination, I guess."), "a correction's place")
+  local _, zone = scene({ "CRE KLM12 A320 52 4 090 FL200 250" })
+  check_eq(zone("Could you make the protected zone radius 3 nautical miles? In my thesis we use a smaller one."), "ZONER 3")
+end
