@@ -2279,7 +2279,7 @@ function G:in_reason(i)
           and self.t[self:declared_clause(k)].text == "," and self:instructed_after(self:declared_clause(k)) then
         -- ("ok so this is the minneapolis one, can we run it at 2x": the remark opening the request, to its comma)
         inside, lead_end, reason[k] = true, self:declared_clause(k), true
-      elseif punct and (t.text == "," or t.text == ";")
+      elseif punct and (t.text == "," or t.text == ";") and not self:word(k - 1, "no @correction")
           and (self:word(k + 1, COMMENTARY.decl.subjects) or self:word(k + 1, COMMENTARY.decl.openers)
             or self:apology_end(k + 1, #self.t + 1) > k + 1)
           and self:declared_clause(k + 1) and (instructed(k) or self:has_ref(1, k, "aircraft")
@@ -4177,8 +4177,9 @@ function G:self_corrected()
         c = c + 1
       end
       -- ("Could you please pause? Sorry, my supervisor is calling me.": an apology opening a remark set aside,
-      -- G:declared_remark, takes nothing back)
-      marked = marked and not self:in_reason(a + 1)
+      -- G:declared_remark, takes nothing back; "Move EXPB? No. Move ..." and "..., no, that is already the next
+      -- one." still do)
+      marked = marked and not (self:word(a + 1, COMMENTARY.decl.apologies) and self:in_reason(a + 1))
       -- ("..., uhh just the hdg for now": "just/only the" and a kind of instruction ending the request, after a
       -- pause with no marker, says what stands all the same)
       local just_the = not marked and self:word(c, SC_ONLY) and self:word(c + 1, "the") and self.t[c + 2] ~= nil

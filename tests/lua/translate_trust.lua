@@ -13829,3 +13829,15 @@ do
   local _, zone = scene({ "CRE KLM12 A320 52 4 090 FL200 250" })
   check_eq(zone("Could you make the protected zone radius 3 nautical miles? In my thesis we use a smaller one."), "ZONER 3")
 end
+
+-- Cycle 52 (lead): a correction is never a remark set aside. "X? No." takes X back ("Move TULIP? No. Move it to
+-- DAHLI") and a remark after "no," gives the reason of a taking back, still asked when nothing replaces what it took
+-- back; only an apology opening a remark takes nothing back
+do
+  local _, ex = scene({ "DEFWPT TULIP 52.3 4.6", "DEFWPT DAHLI 52.5 4.8", "CRE KL204 A320 52.0 4.0 090 FL250 280",
+    "ADDWPT KL204 TULIP", "ADDWPT KL204 DAHLI" })
+  check_eq(ex("Move TULIP? No. Move KL204 to DAHLI at FL200."), "MOVE KL204 DAHLI FL200")
+  asked(ex("Move TULIP? No. Move KL204 to WPZ9 at FL200."), "the place taken back, the other unknown")
+  asked(ex("KL204 direct DAHLI, no, that is already the next one. Just speed 250."), "a direct-to taken back")
+  check_eq(ex("KL204 speed 250. Sorry, my phone is ringing."), "SPD KL204 250")
+end
