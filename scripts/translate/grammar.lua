@@ -3178,6 +3178,13 @@ function G:condition()
         or not (valued or self:any_instruction_in(q.e, #self.t + 1)) then
       return nil, 1
     end
+    -- ("After DUS the Speedbird must descend to FL200. So: ...": a sentence ending at the value holds no
+    -- instruction waiting for it; the value is its own sentence's, read there)
+    local ends = q.e
+    while self.t[ends] and self.t[ends].kind == "word" and self.t[ends].filler do ends = ends + 1 end
+    if self.t[ends] and self.t[ends].kind == "punct" and (". ! ? ; :"):find(self.t[ends].text, 1, true) then
+      return nil, 1
+    end
     comma, rest = q.e, q.e
   end
   -- ("when reaching FL230... disregard, descend FL190", "..., scratch that, descend FL190": a condition taken back
@@ -4207,6 +4214,11 @@ function G:self_corrected()
         while self.t[c] and (self.t[c].kind == "punct" or self.t[c].filler) do c = c + 1 end
       end
     end
+    local left_as_is = marked and self:left_as_is_end(c)
+    if left_as_is then
+      c = left_as_is
+      while self.t[c] and (self.t[c].kind == "punct" or self.t[c].filler) do c = c + 1 end
+    end
     local p = a - 1  -- the last instruction word before the run
     while marked and p >= 1 and not (self:intent_at(p) and not self:in_reason(p)) do p = p - 1 end
     -- ("speed 250 and climb FL350... no wait, just climb FL350 first": "just"/"only" and the last instruction's
@@ -4345,7 +4357,7 @@ function G:self_corrected()
         local w = self:word(c, SC_ONLY) and c + 1 or c
         -- ("never mind", "forget that", "scratch that" take it back in words; the same verb is no other kind)
         if w == c and not self:word(c, "it") and not SC_SETTING[self.words[c]]
-            and not self:word_in(a, c, "never nevermind forget scratch") and self.words[c] ~= self.words[p]
+            and not left_as_is and not self:word_in(a, c, "never nevermind forget scratch") and self.words[c] ~= self.words[p]
             and not same_family(self:intent_at(p) or valued, self:intent_at(c)) then
           local e = c
           while self.t[e] and self.t[e].kind ~= "punct" do e = e + 1 end
@@ -4366,6 +4378,81 @@ function G:self_corrected()
       end
     else
       a = a + 1
+    end
+  end
+end
+
+-- The token after a phrase of lexicon.self_correction.left_as_is said at c and ending its clause (punctuation or
+-- the end after it), else nil
+function G:left_as_is_end(c)
+  if not self:word(c, "leave keep") then return nil end
+  for _, phrase in ipairs(SC.left_as_is) do
+    local k = c
+    for _, w in ipairs(PHRASE_WORDS[phrase]) do
+      if not (self.t[k] and self.t[k].kind == "word" and self.t[k].text == w) then k = nil break end
+      k = k + 1
+    end
+    if k and (not self.t[k] or self.t[k].kind == "punct") then return k end
+  end
+  return nil
+end
+
+-- "After DUS the Speedbird must descend to FL200. So: Speedbird 948 at DUS descend FL200": one level or speed
+-- tied to one aircraft's waypoint said twice in the request (as "AT id wp DO ALT id v" or as the constraint "AT id
+-- wp ALT v") is one instruction restated: the first command stands, the later one is dropped. Said twice with two
+-- values, which one stands is asked, but for a constraint and then a change after the waypoint ("cross LAM at
+-- FL120, thereafter descend FL90").
+function G:restated_at_place()
+  local seen, kept = {}, {}
+  for _, c in ipairs(self.out) do
+    local id, wp, cmd, v = c:match("^AT (%S+) (%S+) DO (%u+) %S+ (%S+)$")
+    local after = id ~= nil
+    if not id then id, wp, cmd, v = c:match("^AT (%S+) (%S+) (%u+) (%S+)$") end
+    local key = id and (cmd == "ALT" or cmd == "SPD") and table.concat({ id, wp, cmd }, " ")
+    local first = key and seen[key]
+    if first and first.v ~= v and not (after and not first.after) then
+      return self:need(string.format("I heard '%s' and '%s' for %s at %s: which one stands?", first.c, c, id, wp))
+    end
+    if key and not first then seen[key] = { v = v, c = c, after = after } end
+    if not (first and first.v == v) then kept[#kept + 1] = c end
+  end
+  self.out = kept
+end
+
+-- "KLM12 at SPY speed 200, after that he goes to EHAM": a clause opened by a word of lexicon.onward.openers, then
+-- one of its subjects, verbs, "to" or "on to" and one place closing the request, says where the aircraft named
+-- before flies on: a place on its route is a remark, set aside (no command); any other is asked, never made its
+-- destination.
+G.onward = { openers = set_of(lexicon.onward.openers), subjects = set_of(lexicon.onward.subjects) }
+function G:onward_remark()
+  local O = lexicon.onward
+  if not self:said(G.onward.subjects) then return end
+  for b = 2, #self.t - 3 do
+    local k = self:word(b, "after") and self:word(b + 1, "that") and b + 1
+    if self.t[b - 1].kind == "punct" and (k or self:word(b, G.onward.openers)) and self:word((k or b) + 1, G.onward.subjects) then
+      k = k or b
+      local v = k + 2
+      local e
+      for _, verb in ipairs(O.verbs) do
+        local x = v
+        for _, w in ipairs(PHRASE_WORDS[verb]) do x = x and self:word(x, w) and x + 1 or nil end
+        if x then e = x break end
+      end
+      if e and self:word(e, "on") then e = e + 1 end
+      local r = e and self:word(e, "to") and self:refs_in(e + 1, e + 2, "waypoint")[1]
+      local close = r and r.e
+      while close and self.t[close] and self.t[close].kind == "punct" do close = close + 1 end
+      local id
+      for _, a in ipairs(self.refs) do
+        if a.kind == "aircraft" and a.e <= b then id = a.name end
+      end
+      if r and id and close > #self.t then
+        if not self:on_route(id, r.name) then
+          return self:need(string.format("Should %s's destination be %s, or is '%s' only where it flies on? "
+            .. "Please say it as an instruction.", id, r.name, (self:raw(b, r.e):gsub(" ([,.;:])", "%1"))))
+        end
+        self:set_aside(b, r.e - 1)
+      end
     end
   end
 end
@@ -5928,6 +6015,16 @@ function G:dangling_correction()
     self:need(string.format("You said '%s' with nothing after it. What is the corrected instruction?",
       self.t[last].raw:lower()))
     return
+  end
+  -- ("conflict detection off. No, leave it.": a phrase of lexicon.self_correction.left_as_is after a marker,
+  -- closing the request, takes back what was said before with nothing in its place: asked)
+  for k = math.max(2, last - 5), last do
+    local m = k - 1
+    while m > 1 and self.t[m].kind == "punct" do m = m - 1 end
+    if SC_MARKERS[self.words[m]] and (self:left_as_is_end(k) or 0) > last then
+      return self:need(string.format("You said '%s': should nothing be done? Please say what stands.",
+        (self:raw(m, last + 1):gsub(" ([,.;:])", "%1"))))
+    end
   end
   -- a remark closing the request that judges what was said, opened by the speaker or "that" ("climb FL100, that
   -- was wrong", "... I got it mixed up, sorry": lexicon.self_correction_judges, lexicon.self_correction.judged),
@@ -10932,6 +11029,7 @@ function M.translate(text, world)
     end
   end
   g:route_remarks()
+  g:onward_remark()
   g:limit_released()
   local note = g:not_simulated()
   g:self_corrected()
@@ -11010,6 +11108,7 @@ function M.translate(text, world)
       end
     end
   end
+  if not g.ask then g:restated_at_place() end
   if not g.ask then g:passing_level_flown() end
   if not g.ask then g:level_never_crossed() end
   if not g.ask then g:respectively() end

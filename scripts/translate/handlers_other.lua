@@ -3679,6 +3679,12 @@ return function(H, f, compass)
       if self.out[#self.out] == "OP" and self:word(normal - 1, "at") then
         return self:explain(math.min(s.b, normal - 1), s.e)
       end
+      -- ("CFG1FD 280 knots. After that normal speed again.": with an aircraft named in the request and no word of
+      -- lexicon.sim in the segment, whose normal speed is meant is unclear: asked)
+      if self:has_ref(1, #self.t + 1, "aircraft") and not self:word_in(s.b, s.e, "@sim real") then
+        return self:need(string.format("Should the aircraft resume its normal speed, or the simulation run at "
+          .. "real-time rate (DTMULT 1)? I heard '%s'.", (self:raw(s.b, s.e):gsub(" ([,.;:])", "%1"):gsub("[%s%p]+$", ""))))
+      end
       return self:emit("DTMULT 1")
     end
     local real = self:find_word(s.b, s.e, "real")  -- "slow the clock to real time"

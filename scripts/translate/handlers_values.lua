@@ -789,6 +789,25 @@ return function(H, f, wrap, compass)
       rel = { kind = rel.kind, value = rel.value, b = rel.b, e = rel.e, turn = turn, number = rel.number, to = rel.to,
               changed = rel.changed }
     end
+    -- ("turn left heading 100, sorry, fly present heading", "..., no, continue present heading"): the present
+    -- heading said after a self-correction marker or "correction" that follows the value takes the value and its
+    -- side back (the heading it flies, no turn); a side said after the marker too, or no marker between, is asked
+    -- ("from your present heading", "30 degrees right of its present heading" say what a turn counts from)
+    local said_value = abs or rel
+    local kept = said_value and said_value.e
+    while kept and kept < s.e and not (self:word(kept, "@present") and self:word(kept + 1, "heading hdg")) do
+      kept = kept + 1
+    end
+    local from = kept and (self:word(kept - 1, "your its the") and kept - 2 or kept - 1)
+    if kept and kept < s.e and not self:word(from, "from of off") then
+      -- (said with no marker, "turn right heading 200, continue present heading", which one stands is unclear)
+      if not self:word_in(said_value.e, kept, SIDE_MARKERS .. " @correction")
+          or self:word_in(said_value.e, s.e, "@left @right") then
+        return self:need(string.format("Should %s turn, or keep its present heading? I heard '%s'.", ids[1],
+          (self:raw(s.trig, s.e):gsub(" ([,.;:])", "%1"))))
+      end
+      abs, rel, turn = nil, nil, 0
+    end
     local named
     for i = s.b, s.e - 1 do
       if named then break end

@@ -667,10 +667,17 @@ return {
   -- the end of a limit until a place said after it, closing the request ("maintain 270 knots until SUNSS; thereafter
   -- it may fly at its own discretion", "... until CIVET, and then resume its normal speed"): an opener, then only
   -- `words`, one of `release` among them (G:limit_released)
+  -- where an aircraft flies on after an instruction, said of it as a fact ("KLM12 at SPY speed 200, after that he
+  -- goes to EHAM"): an opener ("after that" too), a pronoun, a verb and "to", then the place (G:onward_remark)
+  onward = { openers = { "then", "afterwards", "afterward", "thereafter" },
+             subjects = { "he", "she", "it", "they" },
+             verbs = { "goes", "flies", "heads", "continues", "proceeds", "is going", "is heading", "will go",
+                       "will fly", "will continue" } },
   limit_release = { openers = { "then", "thereafter", "afterwards", "afterward" },
                     words = { "it", "may", "can", "is", "free", "to", "fly", "at", "its", "own", "their", "his", "her",
                               "your", "pilot's", "pilots", "pilot", "discretion", "resume", "resumes", "normal",
-                              "usual", "speed", "speeds", "no", "restriction", "restrictions", "the", "be", "then" },
+                              "usual", "speed", "speeds", "no", "restriction", "restrictions", "the", "be", "then",
+                              "again", "back" },
                     release = { "discretion", "normal", "usual", "restriction", "restrictions" } },
   -- before an instruction word: the instruction is only announced, not given
   not_a_clearance = { "expect" },
@@ -840,6 +847,10 @@ return {
                       -- the first words of the markers that take back what they follow in words ("never mind",
                       -- "forget that", "scratch that"): before an instruction's word, no value is corrected
                       dropping = { "never", "nevermind", "forget", "scratch", "belay" },
+                      -- said after a marker and ending its clause, what was said before is left as it was: taken
+                      -- back as "forget that" takes it back ("detection off. Ah no, leave it. ..." keeps detection)
+                      left_as_is = { "leave it as it is", "leave it as is", "leave it like that", "leave it alone",
+                                     "leave it on", "leave it", "leave that", "keep it as it is", "keep it as is" },
                       -- "... actually no, just the descent": after a self-correction, "just"/"only" and one of these
                       -- names the instructions said before it that stand (by the command they issued)
                       only = { "just", "only" },

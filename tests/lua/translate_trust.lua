@@ -13841,3 +13841,33 @@ do
   asked(ex("KL204 direct DAHLI, no, that is already the next one. Just speed 250."), "a direct-to taken back")
   check_eq(ex("KL204 speed 250. Sorry, my phone is ringing."), "SPD KL204 250")
 end
+
+-- Cycle 52 (h1): corrections and retractions dropped or misread. A present heading said after a self-correction
+-- takes the heading and its side back; "no, leave it" takes back what came before as "forget that" does; the
+-- aircraft's normal speed after a limit is never the simulation's rate; one level tied to a waypoint said twice is
+-- one instruction; where the aircraft flies on, said as a fact, is no destination set
+do
+  local _, ex = navscene({ "CRE KLM12 B738 52.0 4.5 180 FL150 250", "ADDWPT KLM12 SPY", "ADDWPT KLM12 EHAM",
+    "CRE DLH4 A320 51.5 6.8 120 FL200 280", "ADDWPT DLH4 DUS", "CRE AFR7 A320 51.7 6.5 230 FL190 290",
+    "ADDWPT AFR7 ELDAR" }, "corrections and retractions")
+  if ex then
+    check_eq(ex("KLM12 turn right heading 200, sorry, fly present heading"), "HDG KLM12 180")
+    check_eq(ex("KLM12 turn left heading 240, no, continue present heading"), "HDG KLM12 180")
+    check_eq(ex("KLM12 turn right 20 degrees from present heading"), "HDG KLM12 200 RIGHT")
+    check_eq(ex("KLM12 turn twenty degrees to the left of its present heading"), "HDG KLM12 160 LEFT")
+    asked(ex("KLM12 turn right heading 200, continue present heading"), "a present heading with no correction")
+    asked(ex("KLM12 turn right heading 200, sorry, present heading, right"), "a side said after the correction")
+    check_eq(ex("Conflict detection off. No wait, leave it. Resolution MVP on."), "RESO MVP")
+    check_eq(ex("KLM12 speed 220. No, leave it as it is. Climb KLM12 to FL170 instead."), "ALT KLM12 FL170")
+    asked(ex("Conflict resolution off. No, leave it."), "taken back with nothing in its place")
+    check_eq(ex("AFR7 270 knots until ELDAR, after that its normal speed again."), "SPD AFR7 270")
+    check_eq(ex("AFR7 270 knots until ELDAR, then back to normal speed."), "SPD AFR7 270")
+    check_eq(ex("Set the sim to normal speed again."), "DTMULT 1")
+    asked(ex("AFR7 270 knots. After that normal speed again."), "whose normal speed: the aircraft's or the sim's")
+    check_eq(ex("After DUS the Lufthansa has to climb to FL240. So: DLH4 at DUS climb FL240."),
+      "AT DLH4 DUS DO ALT DLH4 FL240")
+    asked(ex("After DUS the Lufthansa has to climb to FL240. So: DLH4 at DUS climb FL250."), "two levels at DUS")
+    check_eq(ex("KLM12 speed 220, then it goes on to EHAM."), "SPD KLM12 220")
+    asked(ex("KLM12 at SPY speed 220, then he heads to EDDF."), "a place off its route said as where it flies on")
+  end
+end
