@@ -13841,3 +13841,21 @@ do
   asked(ex("KL204 direct DAHLI, no, that is already the next one. Just speed 250."), "a direct-to taken back")
   check_eq(ex("KL204 speed 250. Sorry, my phone is ringing."), "SPD KL204 250")
 end
+
+-- Cycle 52 (h2): places. A coordinate's degrees and minutes said in words are both read (never the minutes
+-- dropped); a direct-to whose place is a hold is asked (no hold is simulated); a waypoint placed by its order on
+-- a route ("the next waypoint") is never read as a waypoint's name
+do
+  local _, ex = scene({ "DEFWPT KOMPA 47.2 6.1", "CRE SWR41 A320 47.0 6.0 090 FL200 260", "ADDWPT SWR41 KOMPA",
+    "CRE EZS12 A320 46.5 6.5 180 FL150 250" })
+  check_eq(ex("define a waypoint BRAVO at forty-seven degrees thirty north, six degrees fifteen east"), "DEFWPT BRAVO 47.5 6.25")
+  check_eq(ex("define waypoint BRAVO at four seven degrees one two minutes north, zero zero six degrees zero east"),
+    "DEFWPT BRAVO 47.2 6")
+  check_eq(ex("define waypoint BRAVO at 47 degrees twenty north, 6 degrees 0 east"), "DEFWPT BRAVO 47.333333 6")
+  asked(ex("define waypoint BRAVO at forty-seven degrees seventy north, six degrees zero east"), "minutes of 70")
+  asked(ex("SWR41 proceed to the hold at KOMPA"), "a hold flown to")
+  asked(ex("SWR41 proceed into the published holding over KOMPA"), "a hold flown to, another wording")
+  check_eq(ex("SWR41 proceed to KOMPA"), "DIRECT SWR41 KOMPA")
+  asked(ex("EZS12 proceed to the next waypoint"), "no route to hold a next waypoint")
+  asked(ex("EZS12 direct to the last fix"), "no route to hold a last waypoint")
+end
