@@ -13859,3 +13859,20 @@ do
   asked(ex("EZS12 proceed to the next waypoint"), "no route to hold a next waypoint")
   asked(ex("EZS12 direct to the last fix"), "no route to hold a last waypoint")
 end
+
+-- Cycle 52 (h2): where the scenario names its waypoints (a route's, defined) by the phonetic alphabet, another such word that names a
+-- navaid of another ident ("TANGO", the TGO VORTAC) is asked (a waypoint not yet defined is as likely), unless the
+-- navaid's kind is said after it
+do
+  local _, ex = navscene({ "DEFWPT KOMPA 48.3 8.9", "DEFWPT ECHO 48.4 8.5", "CRE DLH7TX A320 48.2 8.7 090 FL200 260",
+    "ADDWPT DLH7TX ECHO", "ADDWPT DLH7TX KOMPA" }, "a phonetic word naming a navaid")
+  if ex then
+    asked(ex("DLH7TX add TANGO after KOMPA"), "TANGO: the navaid TGO or a waypoint not yet defined")
+    asked(ex("DLH7TX proceed direct TANGO"), "TANGO in a direct-to")
+    check_eq(ex("DLH7TX proceed direct the TANGO VOR"), "ADDWPT DLH7TX TGO ; DIRECT DLH7TX TGO")
+    check_eq(ex("define waypoint TANGO at 48.5 9.0"), "DEFWPT TANGO 48.5 9")
+  end
+  -- (no waypoint of the scenario named by a letter: the navaid of the name, as before)
+  local _, near = navscene({ "DEFWPT KOMPA 48.3 8.9", "CRE DLH7TX A320 48.2 8.7 090 FL200 260" }, "a navaid name")
+  if near then check_eq(near("DLH7TX add TANGO after KOMPA"), "ADDWPT DLH7TX TGO,,,KOMPA") end
+end
