@@ -3069,6 +3069,13 @@ return function(H, f, compass)
       self:confirm_before(string.format("The airport I found by that name is %s, more than %d NM from %s. Is that the "
         .. "%s? (yes or no; else please give the ICAO code)", airport, L.navaid_range_nm, id, what))
     end
+    -- a city said where the airport found by its name is a small field ("destination Montpellier" is LFNG
+    -- "Montpellier Candillargues", the city's traffic flying to LFMT "MEDITERRANEE", whose name holds no word of
+    -- the city): confirmed, never sent in silence; an airport spelled or typed by its code is the one meant
+    if airport and not spelled and class and class(airport) == "SMALL" then
+      self:confirm_before(string.format("The airport I found by that name is %s, a small field. Is that the %s of %s? "
+        .. "(yes or no; else please give the ICAO code)", airport, what, id))
+    end
     -- (two places said for one destination, "fly to PAM next, then on to Schiphol": which?)
     if airport and #w > 0 and w[#w].name:upper() ~= airport and self:airport_meant(w[#w].name, a) ~= airport then
       return self:need(string.format("Which should be the %s of %s: %s or %s?", what, id, w[#w].name, airport))

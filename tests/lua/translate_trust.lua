@@ -13876,3 +13876,16 @@ do
   local _, near = navscene({ "DEFWPT KOMPA 48.3 8.9", "CRE DLH7TX A320 48.2 8.7 090 FL200 260" }, "a navaid name")
   if near then check_eq(near("DLH7TX add TANGO after KOMPA"), "ADDWPT DLH7TX TGO,,,KOMPA") end
 end
+
+-- Cycle 52 (h2): a city said as a destination or an origin whose airport found by name is a small field (LFLG "Grenoble
+-- Le Versoud", where the city's traffic flies to LFLS "SAINT GEOIRS") is confirmed, never sent in silence
+do
+  local _, ex = navscene({ "CRE AFR22KL A320 44.9 5.2 180 FL200 260" }, "a city's small field")
+  if ex then
+    asked(ex("AFR22KL destination Grenoble"), "Grenoble: the small field LFLG")
+    asked(ex("AFR22KL change the destination to Montpellier"), "Montpellier: the small field LFNG")
+    asked(ex("AFR22KL origin Grenoble"), "an origin too")
+    check_eq(ex("AFR22KL destination Marseille"), "DEST AFR22KL LFML")
+    check_eq(ex("AFR22KL destination LFLS"), "DEST AFR22KL LFLS")
+  end
+end
