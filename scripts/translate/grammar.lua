@@ -9370,6 +9370,56 @@ function G.type_words()
   end
   return G.type_words_built
 end
+-- "forty-five degrees forty-five north", "five degrees zero east", "four five degrees three zero minutes north": a
+-- coordinate's degrees and minutes said in words (digits one by one, or a number below a hundred: tens and a
+-- unit, a teen, a unit; or numerals) before "degrees" and before the hemisphere (lexicon.coordinate_axes.hemispheres, "minutes"
+-- between or not) are written as numerals ("45 degrees 45 north"), which the position reads as degrees and
+-- minutes (minutes of 60 or more are then asked about); a number in words anywhere else stays as said.
+G.spoken_teens = { ten = 10, eleven = 11, twelve = 12, thirteen = 13, fourteen = 14, fifteen = 15,
+  sixteen = 16, seventeen = 17, eighteen = 18, nineteen = 19 }
+function G.spoken_degrees_minutes(text)
+  local low = text:lower()
+  if not low:find("deg", 1, true) then return text end
+  local toks = {}  -- each word: b, e (the text's positions, e past it), w (lower case, no punctuation), bare
+  for b, w, e in text:gsub("(%a)%-(%a)", "%1 %2"):gmatch("()(%S+)()") do
+    local lw = w:lower()
+    toks[#toks + 1] = { b = b, e = e, w = (lw:gsub("[%p]+$", "")), bare = not lw:find("%p$") }
+  end
+  if #toks < 4 then return text end
+  -- the number said in words from word k on: its value and the word after it, else nil
+  local function number(k)
+    local t = toks[k]
+    if not t or not t.bare then return nil end
+    if t.w:match("^%d%d?%d?$") then return tonumber(t.w), k + 1 end
+    local tens = G.coordinate_tens[t.w]
+    if tens then
+      local u = toks[k + 1] and toks[k + 1].bare and SAID_DIGIT[toks[k + 1].w]
+      if u and u ~= "0" then return tens * 10 + tonumber(u), k + 2 end
+      return tens * 10, k + 1
+    end
+    if G.spoken_teens[t.w] then return G.spoken_teens[t.w], k + 1 end
+    local digits, j = "", k
+    while toks[j] and toks[j].bare and SAID_DIGIT[toks[j].w] and #digits < 3 do digits, j = digits .. SAID_DIGIT[toks[j].w], j + 1 end
+    if digits ~= "" then return tonumber(digits), j end
+    return nil
+  end
+  local HEMI = lexicon.coordinate_axes.hemispheres
+  local put, done = require("translate.tokens").splicer(text)
+  local k = 1
+  while k <= #toks do
+    local deg, d = number(k)
+    local min, m
+    if deg and toks[d] and toks[d].w:match("^deg") and toks[d].bare then min, m = number(d + 1) end
+    local h = m and ((toks[m] and toks[m].w:match("^min")) and toks[m].bare and m + 1 or m)
+    if min and toks[h] and (HEMI[toks[h].w] or HEMISPHERES[toks[h].w]) then
+      put(toks[k].b, string.format("%d %s %d ", deg, text:sub(toks[d].b, toks[d].e - 1), min), toks[m].b)
+      k = m
+    else
+      k = k + 1
+    end
+  end
+  return done()
+end
 -- "four eight decimal three five one one decimal eight": a latitude and a longitude said digit by digit with a
 -- decimal mark each ("decimal", "point") and nothing between them, so that the digits between the two marks
 -- hold the latitude's decimals and the longitude's degrees run together. Returns the text and nil when no such
@@ -10949,6 +10999,7 @@ function M.translate(text, world)
   if abbreviated then return { commands = {}, ask = abbreviated } end
   text = spelled_registrations(text, world.aircraft)
   local types = require("translate.types")
+  text = G.spoken_degrees_minutes(text)
   local dm = impossible_minutes(text)
   if dm then
     return { commands = {}, ask = string.format("'%s' is no position: minutes run from 0 to 59. Which latitude "

@@ -1323,6 +1323,12 @@ function m:navaid_name_refs()
   local named, locate = self.world.navaids_named, self.world.locate
   if not named or not locate then return end
   local defining = self:word_in(1, #self.t + 1, "create define defwpt make add new")
+  -- (a waypoint defined or on a route named by a word of the phonetic alphabet: "SIERRA")
+  local lettered = false
+  for _, w in ipairs(self.world.waypoints or {}) do lettered = lettered or L.phonetic[w:lower()] ~= nil end
+  for _, a in ipairs(self.fleet) do
+    for _, w in ipairs(a.route or {}) do lettered = lettered or L.phonetic[w:lower()] ~= nil end
+  end
   local near = {}
   for _, a in ipairs(self.fleet) do
     if a.lat then near[#near + 1] = a end
@@ -1372,6 +1378,13 @@ function m:navaid_name_refs()
         end
         local vor = station and named(r.name, at[1][1], at[1][2], L.navaid_station_nm, "VOR") or {}
         if #vor == 1 and seen[vor[1]] then ids = vor end
+        -- ("add TANGO after SIERRA": where the scenario names its own waypoints by words of the phonetic alphabet,
+        -- another such word is as likely one of them not yet defined as the navaid of that name: asked; the kind
+        -- said after it, "the TANGO VOR", names the navaid)
+        if L.phonetic[self.t[r.b].text] and not self:word(r.e, "@navaid_kinds") and lettered then
+          return self:need(string.format("Which place is '%s': the navaid %s of that name, or a waypoint %s not yet "
+            .. "defined (please give its position)?", r.name, table.concat(ids, " or "), r.name))
+        end
         r.name = self:one_named(ids, "navaid", r.name, math.huge)
       end
     end

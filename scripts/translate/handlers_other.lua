@@ -2052,7 +2052,8 @@ return function(H, f, compass)
     end
     if #letters >= 2 then return letters end
     local t = self.t[i]
-    if i < e and t.kind == "word" and t.alpha and #t.text >= 3 and not t.keyword and not t.number_word then
+    if i < e and t.kind == "word" and t.alpha and #t.text >= 3 and not t.keyword and not t.number_word
+        and not self:word(i, "@route_ordinals") then
       return t.text:upper()
     end
     return nil
@@ -2126,6 +2127,14 @@ return function(H, f, compass)
 
   function m:direct_one(s, id)
     local a = self:state(id)
+    -- "proceed to the hold at MTG", "go into the published holding over MTG": the place flown to is a hold, which
+    -- squawk does not simulate; flying direct to its fix and on along the route is not what was said: asked
+    local k = s.trig + 1
+    while k < s.e and self:word(k, "to into the a an its published") do k = k + 1 end
+    if k < s.e and self:word(k, "hold holding") then
+      return self:need(string.format("squawk does not simulate holding patterns ('%s'). Should %s fly direct to its "
+        .. "fix and on along its route, or is nothing to be sent?", self:raw(k, s.e), id))
+    end
     -- "add TABUM to its route and send it direct there", "add SPY and then go direct to it": the
     -- waypoint this request added just before
     local added
@@ -3059,6 +3068,13 @@ return function(H, f, compass)
     if airport and a and a.lat and not near and class and #w == 0 and not (self.city_airport or {})[airport] then
       self:confirm_before(string.format("The airport I found by that name is %s, more than %d NM from %s. Is that the "
         .. "%s? (yes or no; else please give the ICAO code)", airport, L.navaid_range_nm, id, what))
+    end
+    -- a city said where the airport found by its name is a small field ("destination Montpellier" is LFNG
+    -- "Montpellier Candillargues", the city's traffic flying to LFMT "MEDITERRANEE", whose name holds no word of
+    -- the city): confirmed, never sent in silence; an airport spelled or typed by its code is the one meant
+    if airport and not spelled and class and class(airport) == "SMALL" then
+      self:confirm_before(string.format("The airport I found by that name is %s, a small field. Is that the %s of %s? "
+        .. "(yes or no; else please give the ICAO code)", airport, what, id))
     end
     -- (two places said for one destination, "fly to PAM next, then on to Schiphol": which?)
     if airport and #w > 0 and w[#w].name:upper() ~= airport and self:airport_meant(w[#w].name, a) ~= airport then

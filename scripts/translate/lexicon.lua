@@ -1711,6 +1711,9 @@ return {
   pronouns = { it = true, its = true, him = true, her = true, them = true, they = true },
   -- words skipped before a spoken waypoint name
   before_name = { "to", "the", "ah", "uh", "direct", "via", "now", "point" },
+  -- words that place a waypoint by its order on a route ("the next waypoint", "the last fix"): no name of their own,
+  -- so never a waypoint's name heard where nothing is known to match it (handlers_other m:spoken_name)
+  route_ordinals = { "next", "following", "subsequent", "last", "final", "first", "previous", "preceding" },
   -- the nationality letter and first letter of registrations said without that nationality letter (Canada's
   -- C-F..., C-G..., C-I...: "Golf Kilo Whiskey Alpha" is C-GKWA)
   nationless_registrations = { "CF", "CG", "CI" },

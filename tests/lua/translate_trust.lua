@@ -13871,3 +13871,51 @@ do
     asked(ex("KLM12 at SPY speed 220, then he heads to EDDF."), "a place off its route said as where it flies on")
   end
 end
+
+-- Cycle 52 (h2): places. A coordinate's degrees and minutes said in words are both read (never the minutes
+-- dropped); a direct-to whose place is a hold is asked (no hold is simulated); a waypoint placed by its order on
+-- a route ("the next waypoint") is never read as a waypoint's name
+do
+  local _, ex = scene({ "DEFWPT KOMPA 47.2 6.1", "CRE SWR41 A320 47.0 6.0 090 FL200 260", "ADDWPT SWR41 KOMPA",
+    "CRE EZS12 A320 46.5 6.5 180 FL150 250" })
+  check_eq(ex("define a waypoint BRAVO at forty-seven degrees thirty north, six degrees fifteen east"), "DEFWPT BRAVO 47.5 6.25")
+  check_eq(ex("define waypoint BRAVO at four seven degrees one two minutes north, zero zero six degrees zero east"),
+    "DEFWPT BRAVO 47.2 6")
+  check_eq(ex("define waypoint BRAVO at 47 degrees twenty north, 6 degrees 0 east"), "DEFWPT BRAVO 47.333333 6")
+  asked(ex("define waypoint BRAVO at forty-seven degrees seventy north, six degrees zero east"), "minutes of 70")
+  asked(ex("SWR41 proceed to the hold at KOMPA"), "a hold flown to")
+  asked(ex("SWR41 proceed into the published holding over KOMPA"), "a hold flown to, another wording")
+  check_eq(ex("SWR41 proceed to KOMPA"), "DIRECT SWR41 KOMPA")
+  asked(ex("EZS12 proceed to the next waypoint"), "no route to hold a next waypoint")
+  asked(ex("EZS12 direct to the last fix"), "no route to hold a last waypoint")
+end
+
+-- Cycle 52 (h2): where the scenario names its waypoints (a route's, defined) by the phonetic alphabet, another such word that names a
+-- navaid of another ident ("TANGO", the TGO VORTAC) is asked (a waypoint not yet defined is as likely), unless the
+-- navaid's kind is said after it
+do
+  local _, ex = navscene({ "DEFWPT KOMPA 48.3 8.9", "DEFWPT ECHO 48.4 8.5", "CRE DLH7TX A320 48.2 8.7 090 FL200 260",
+    "ADDWPT DLH7TX ECHO", "ADDWPT DLH7TX KOMPA" }, "a phonetic word naming a navaid")
+  if ex then
+    asked(ex("DLH7TX add TANGO after KOMPA"), "TANGO: the navaid TGO or a waypoint not yet defined")
+    asked(ex("DLH7TX proceed direct TANGO"), "TANGO in a direct-to")
+    check_eq(ex("DLH7TX proceed direct the TANGO VOR"), "ADDWPT DLH7TX TGO ; DIRECT DLH7TX TGO")
+    check_eq(ex("define waypoint TANGO at 48.5 9.0"), "DEFWPT TANGO 48.5 9")
+  end
+  -- (no waypoint of the scenario named by a letter: the navaid of the name, as before)
+  local _, near = navscene({ "DEFWPT KOMPA 48.3 8.9", "CRE DLH7TX A320 48.2 8.7 090 FL200 260" }, "a navaid name")
+  if near then check_eq(near("DLH7TX add TANGO after KOMPA"), "ADDWPT DLH7TX TGO,,,KOMPA") end
+end
+
+-- Cycle 52 (h2): a city said as a destination or an origin whose airport found by name is a small field (LFLG "Grenoble
+-- Le Versoud", where the city's traffic flies to LFLS "SAINT GEOIRS") is confirmed, never sent in silence
+do
+  local _, ex = navscene({ "CRE AFR22KL A320 44.9 5.2 180 FL200 260" }, "a city's small field")
+  if ex then
+    asked(ex("AFR22KL destination Grenoble"), "Grenoble: the small field LFLG")
+    asked(ex("AFR22KL change the destination to Montpellier"), "Montpellier: the small field LFNG")
+    asked(ex("AFR22KL origin Grenoble"), "an origin too")
+    check_eq(ex("AFR22KL destination Marseille"), "DEST AFR22KL LFML")
+    check_eq(ex("AFR22KL destination LFLS"), "DEST AFR22KL LFLS")
+  end
+end
