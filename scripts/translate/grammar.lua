@@ -9119,22 +9119,29 @@ function G:same_opening(b)
   if self:word(k - 1, "do give") then k = k - 1 end
   return k
 end
+-- The span [from, to) of an aircraft's words [b, e) said in that shape with its "same" words, ending its
+-- clause; nil when not so said.
+function G:same_span(b, e)
+  local opens = true
+  local k = self:skip_fillers(e, false)
+  local to = (self.t[k] and SAME_AFTER[self.t[k].text] and k + 1)
+    or (self:word(k, "as") and self:word(k + 1, "well") and k + 2) or nil
+  local from = self:same_opening(b)
+  if from then
+    b = from
+    opens = b > 1 and (self.t[b - 1].kind == "punct" or self:word(b - 1, "and"))
+    to = to or e
+  end
+  while to and self.t[to] and self.t[to].filler do to = to + 1 end
+  if to and opens and (not self.t[to] or self.t[to].kind == "punct") then return b, to end
+  return nil
+end
 function G:same_for()
   local named = {}
   for _, r in ipairs(self.refs) do
     if r.kind == "aircraft" and r.exists and not r.false_start and r.b > 1 then
-      local opens = true
-      local k = self:skip_fillers(r.e, false)
-      local e = (self.t[k] and SAME_AFTER[self.t[k].text] and k + 1)
-        or (self:word(k, "as") and self:word(k + 1, "well") and k + 2) or nil
-      local b = r.b
-      local from = self:same_opening(r.b)
-      if from then
-        b = from
-        opens = b > 1 and (self.t[b - 1].kind == "punct" or self:word(b - 1, "and"))
-        e = e or r.e
-      end
-      if e and opens and (not self.t[e] or self.t[e].kind == "punct") then
+      local b, e = self:same_span(r.b, r.e)
+      if b then
         self:mark_used(b, e)
         r.false_start = true
         named[#named + 1] = r.name
@@ -9157,6 +9164,14 @@ function G:same_again(named)
       return
     end
     id = acid
+  end
+  -- (a value counted from the aircraft's own state, "turn left 10" as HDG 080, is no value to copy: asked)
+  for _, line in ipairs(self.out) do
+    if not self:values_said(line) then
+      self.ask = string.format("Should %s make the same change from its own state, or take %s's value (%s)? Please "
+        .. "say it for %s.", table.concat(named, " and "), id, line, table.concat(named, " and "))
+      return
+    end
   end
   local out = {}
   for _, line in ipairs(self.out) do out[#out + 1] = line end

@@ -13841,3 +13841,27 @@ do
   asked(ex("KL204 direct DAHLI, no, that is already the next one. Just speed 250."), "a direct-to taken back")
   check_eq(ex("KL204 speed 250. Sorry, my phone is ringing."), "SPD KL204 250")
 end
+
+-- Cycle 52 (h3): aircraft sets. "same to the X" (no verb) and "the X too"/"also" with X an airline, a type or a
+-- maker name the one aircraft of it flying, or ask; never a silent drop
+do
+  local _, ex = scene({ "CRE ETD401 A320 24.0 54.0 090 FL200 280", "CRE QTR77 B738 24.2 54.2 090 FL220 280",
+    "CRE UAE9 B77W 24.4 54.4 090 FL240 280" })
+  check_eq(ex("ETD401 speed 250, same to the Qatari"), "SPD ETD401 250 ; SPD QTR77 250")
+  check_eq(ex("ETD401 speed 250, the same to the Emirates please"), "SPD ETD401 250 ; SPD UAE9 250")
+  check_eq(ex("ETD401 climb FL300 and the 737 too"), "ALT ETD401 FL300 ; ALT QTR77 FL300")
+  check_eq(ex("ETD401 climb FL300, same for the triple seven"), "ALT ETD401 FL300 ; ALT UAE9 FL300")
+  asked(ex("ETD401 climb FL300 and the Boeing also"), "two Boeings flying")
+  asked(ex("ETD401 climb FL300 and the Airbus too"), "the only Airbus is the one instructed")
+  asked(ex("ETD401 climb FL300 and the Embraer as well"), "no Embraer flying")
+  asked(ex("ETD401 speed 250, same to the Lufthansa"), "no Lufthansa flying")
+end
+
+-- Cycle 52 (h3): "the same" for a value counted from the aircraft's own state ("turn left 10", "descend by 2000
+-- feet") is asked, never copied as the first aircraft's heading or level
+do
+  local _, ex = scene({ "CRE SAS31 A320 55.0 10.0 090 FL330 280", "CRE NAX7 B77W 55.5 10.5 270 FL330 270" })
+  asked(ex("SAS31 turn right 15 degrees, NAX7 too"), "a relative turn copied")
+  asked(ex("SAS31 climb by 1000 feet, same for the 777"), "a relative climb copied")
+  check_eq(ex("SAS31 turn left heading 080, and the 777 as well"), "HDG SAS31 80 LEFT ; HDG NAX7 80 LEFT")
+end
