@@ -8876,6 +8876,20 @@ function G:setting_twice()
   if q then return self:need(q) end
 end
 
+-- "Is DTMULT still 5?", "is the look-ahead still 300 seconds?": a request opening with "is" or "are" and no verb of
+-- setting (lexicon.setting_verbs) asks about a value; a setting given a value (a command with a value and no
+-- aircraft) is asked, never set.
+function G:setting_question()
+  if not self:word(self:request_start(), "is are") or self:word_in(1, #self.t + 1, "@setting_verbs") then return end
+  for _, line in ipairs(self.out) do
+    local cmd, value = line:match("^(%u+) (%S+)")
+    if cmd and not self:state(value) then
+      return self:need(string.format("Should %s be shown, or set to %s? To set it, please say \"set %s\".", cmd,
+        line:sub(#cmd + 2), line))
+    end
+  end
+end
+
 -- "Alaska 1294 and United 1562, descend and maintain 10000 and 9000 respectively": with "respectively",
 -- the values said after the aircraft go to them in the order both were said, one value each, when the
 -- request issued one ALT, SPD or HDG per aircraft; any other shape is asked about (never one value for all).
@@ -11056,6 +11070,7 @@ function M.translate(text, world)
   if not g.ask and #g.out > 1 then g:side_by_side_callsigns() end
   if not g.ask then g:list_value() end
   if not g.ask then g:setting_twice() end
+  if not g.ask then g:setting_question() end
   if not g.ask then g:short_level() end
   if not g.ask and not g.leftover and #g.out > 0 then g:clock_verb_left() end
   if not g.ask and not g.leftover then g:unknown_names() end

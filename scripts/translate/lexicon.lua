@@ -683,6 +683,9 @@ return {
                      with_is = { "what", "how" } },
   -- interjections said before a question about a setting ("hmm wait is conflict detection even on rn?"): passed
   -- over to find the question's first word, which decides whether the setting is asked about or switched
+  -- verbs that change a setting; a request opening "is"/"are" with none of them asks about a value (G:setting_question)
+  setting_verbs = { "set", "change", "make", "increase", "decrease", "reduce", "raise", "lower", "put", "switch",
+    "turn", "bring", "double", "halve", "adjust", "reset", "keep" },
   setting_question_interjections = { "hmm", "hm", "wait", "oh", "ooh", "ah", "hey", "well", "alright", "ok", "okay",
                                      "so", "um", "uh", "erm", "ehm" },
   -- a pilot's question back to the controller, no instruction (G:question_back): "say again (the level)"

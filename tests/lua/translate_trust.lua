@@ -13865,3 +13865,13 @@ do
   asked(ex("SAS31 climb by 1000 feet, same for the 777"), "a relative climb copied")
   check_eq(ex("SAS31 turn left heading 080, and the 777 as well"), "HDG SAS31 80 LEFT ; HDG NAX7 80 LEFT")
 end
+
+-- Cycle 52 (h3): a yes-no question about a setting's value ("is DTMULT still 5?") is asked, never set
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL200 250" })
+  asked(ex("Is DTMULT still 8?"), "a question about the rate")
+  asked(ex("are we still looking ahead 240 seconds?"), "a question about the look-ahead")
+  asked(ex("is the sim running at 3x"), "a question about the rate, no question mark")
+  check_eq(ex("is it possible to set DTMULT to 8?"), "DTMULT 8")
+  check_eq(ex("Is the resolution still MVP?"), "RESO")
+end
