@@ -1215,6 +1215,9 @@ return {
   passed_over = { "skip", "skipping", "bypass", "bypassing", "omit", "omitting", "not", "instead" },
   below = { "below", "under" },
   above = { "above", "over" },
+  -- a level said against another aircraft's ("1000 feet lower than KLM880", "2000 ft above the Airbus")
+  level_below = { "below", "under", "lower", "beneath" },
+  level_above = { "above", "over", "higher" },
   relative = { "present", "current", "actual", "by" },
   -- words after an amount that name what it is counted from ("by 20 knots relative to what it is doing",
   -- "compared with what it flies now"): the present value

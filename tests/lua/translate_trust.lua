@@ -13875,3 +13875,16 @@ do
   check_eq(ex("is it possible to set DTMULT to 8?"), "DTMULT 8")
   check_eq(ex("Is the resolution still MVP?"), "RESO")
 end
+
+-- Cycle 52 (h3): a new aircraft's level said against another aircraft's ("1000 feet lower than KLM880") is counted
+-- from that aircraft's level, or asked; never the height said taken as the level
+do
+  local _, ex = scene({ "CRE MAS30 B772 3.0 101.0 270 FL350 290", "CRE AXM5 A320 3.5 101.5 090 FL300 280" })
+  check_eq(ex("create MAS31, a B772, at 3.2 N 101.2 E, 2000 ft lower than MAS30, heading 270, 290 knots"),
+    "CRE MAS31 B772 3.2 101.2 270 FL330 290")
+  check_eq(ex("create MAS31 B772 at 3.2 N 101.2 E, 1000 ft above AXM5, heading 090, 280 knots"),
+    "CRE MAS31 B772 3.2 101.2 90 FL310 280")
+  asked(ex("create MAS31 B772 at 3.2 N 101.2 E, 1000 ft higher than MAS99, heading 090, 280 knots"), "no such aircraft")
+  asked(ex("create MAS31 B772 at 3.2 N 101.2 E, 1000 ft lower, heading 090, 280 knots"), "lower than what")
+  asked(ex("create MAS31 B772 at 3.2 N 101.2 E, 1000 ft below the Airbus, heading 090, 280 knots"), "an aircraft described")
+end
