@@ -8983,8 +8983,9 @@ end
 
 -- "proceed to NIKOT directly, KABAR may be skipped", "direct NINAT, GUMIT is not required": a waypoint of the
 -- aircraft's route before the place of a DIRECT issued to it, said in a clause of its own that only calls it
--- skipped or not needed, is what that direct-to does: set aside. A place after it on the route, or off the route,
--- or a clause with any other word, stays and is asked about.
+-- skipped or not needed, is what that direct-to does: set aside. A place so called skipped that lies after it on
+-- the route, or off the route, is asked (the remark does not match the direct-to); a clause with any other word
+-- stays and is asked about.
 function G:skipped_on_direct()
   local skip = "may can should could will be is are not no longer required needed skipped omitted bypassed"
   for _, line in ipairs(self.out) do
@@ -8995,13 +8996,19 @@ function G:skipped_on_direct()
       if w:upper() == (to or ""):upper() then break end
       before[w:upper()] = true
     end
-    for _, r in ipairs(self.refs) do
-      if r.kind == "waypoint" and before[r.name:upper()] and (r.b == 1 or self.t[r.b - 1].kind == "punct") then
+    for _, r in ipairs(id and self.refs or {}) do
+      if r.kind == "waypoint" and (r.b == 1 or self.t[r.b - 1].kind == "punct") then
         local e, said = r.e, {}
         while self:word(e, skip) do said[self.words[e]] = true; e = e + 1 end
         local negated = said["not"] or said["no"]
         if (said.skipped or said.omitted or said.bypassed or (negated and (said.required or said.needed)))
             and (not self.t[e] or self.t[e].kind == "punct") then
+          if not before[r.name:upper()] then
+            -- (the remark does not match what the direct-to does: asked)
+            return self:need(string.format("I have %s, which skips only the waypoints before %s on %s's route; %s is "
+              .. "not one of them. Should %s be deleted from the route, or is another direct-to meant?",
+              table.concat(self.out, " ; "), to, id, r.name, r.name))
+          end
           self:set_aside(r.b, e - 1)
           return
         end

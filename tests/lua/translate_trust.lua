@@ -13888,3 +13888,15 @@ do
   asked(ex("create MAS31 B772 at 3.2 N 101.2 E, 1000 ft lower, heading 090, 280 knots"), "lower than what")
   asked(ex("create MAS31 B772 at 3.2 N 101.2 E, 1000 ft below the Airbus, heading 090, 280 knots"), "an aircraft described")
 end
+
+-- Cycle 52 (h3): a waypoint called skipped that the direct-to does not skip (after its place, or off the route) is
+-- asked; one before it is set aside as before
+do
+  local _, ex = scene({ "DEFWPT ALPHA1 52.1 4.1", "DEFWPT BRAVO2 52.3 4.3", "DEFWPT CHARL3 52.5 4.5",
+    "DEFWPT DELTA4 52.0 4.9", "CRE KLM15 A320 52.0 4.0 045 FL200 250", "ADDWPT KLM15 ALPHA1", "ADDWPT KLM15 BRAVO2",
+    "ADDWPT KLM15 CHARL3" })
+  check_eq(ex("KLM15 direct BRAVO2, ALPHA1 can be skipped"), "DIRECT KLM15 BRAVO2")
+  asked(ex("KLM15 direct BRAVO2, CHARL3 can be skipped"), "the place after the direct-to's")
+  asked(ex("KLM15 direct ALPHA1, BRAVO2 is not needed"), "the place after the direct-to's, 'not needed'")
+  asked(ex("KLM15 direct BRAVO2, DELTA4 may be omitted"), "a place off the route")
+end
