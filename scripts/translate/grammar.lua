@@ -8973,6 +8973,20 @@ function G:setting_twice()
   if q then return self:need(q) end
 end
 
+-- "Is DTMULT still 5?", "is the look-ahead still 300 seconds?": a request opening with "is" or "are" and no verb of
+-- setting (lexicon.setting_verbs) asks about a value; a setting given a value (a command with a value and no
+-- aircraft) is asked, never set.
+function G:setting_question()
+  if not self:word(self:request_start(), "is are") or self:word_in(1, #self.t + 1, "@setting_verbs") then return end
+  for _, line in ipairs(self.out) do
+    local cmd, value = line:match("^(%u+) (%S+)")
+    if cmd and not self:state(value) then
+      return self:need(string.format("Should %s be shown, or set to %s? To set it, please say \"set %s\".", cmd,
+        line:sub(#cmd + 2), line))
+    end
+  end
+end
+
 -- "Alaska 1294 and United 1562, descend and maintain 10000 and 9000 respectively": with "respectively",
 -- the values said after the aircraft go to them in the order both were said, one value each, when the
 -- request issued one ALT, SPD or HDG per aircraft; any other shape is asked about (never one value for all).
@@ -9066,8 +9080,9 @@ end
 
 -- "proceed to NIKOT directly, KABAR may be skipped", "direct NINAT, GUMIT is not required": a waypoint of the
 -- aircraft's route before the place of a DIRECT issued to it, said in a clause of its own that only calls it
--- skipped or not needed, is what that direct-to does: set aside. A place after it on the route, or off the route,
--- or a clause with any other word, stays and is asked about.
+-- skipped or not needed, is what that direct-to does: set aside. A place so called skipped that lies after it on
+-- the route, or off the route, is asked (the remark does not match the direct-to); a clause with any other word
+-- stays and is asked about.
 function G:skipped_on_direct()
   local skip = "may can should could will be is are not no longer required needed skipped omitted bypassed"
   for _, line in ipairs(self.out) do
@@ -9078,13 +9093,19 @@ function G:skipped_on_direct()
       if w:upper() == (to or ""):upper() then break end
       before[w:upper()] = true
     end
-    for _, r in ipairs(self.refs) do
-      if r.kind == "waypoint" and before[r.name:upper()] and (r.b == 1 or self.t[r.b - 1].kind == "punct") then
+    for _, r in ipairs(id and self.refs or {}) do
+      if r.kind == "waypoint" and (r.b == 1 or self.t[r.b - 1].kind == "punct") then
         local e, said = r.e, {}
         while self:word(e, skip) do said[self.words[e]] = true; e = e + 1 end
         local negated = said["not"] or said["no"]
         if (said.skipped or said.omitted or said.bypassed or (negated and (said.required or said.needed)))
             and (not self.t[e] or self.t[e].kind == "punct") then
+          if not before[r.name:upper()] then
+            -- (the remark does not match what the direct-to does: asked)
+            return self:need(string.format("I have %s, which skips only the waypoints before %s on %s's route; %s is "
+              .. "not one of them. Should %s be deleted from the route, or is another direct-to meant?",
+              table.concat(self.out, " ; "), to, id, r.name, r.name))
+          end
           self:set_aside(r.b, e - 1)
           return
         end
@@ -9216,22 +9237,29 @@ function G:same_opening(b)
   if self:word(k - 1, "do give") then k = k - 1 end
   return k
 end
+-- The span [from, to) of an aircraft's words [b, e) said in that shape with its "same" words, ending its
+-- clause; nil when not so said.
+function G:same_span(b, e)
+  local opens = true
+  local k = self:skip_fillers(e, false)
+  local to = (self.t[k] and SAME_AFTER[self.t[k].text] and k + 1)
+    or (self:word(k, "as") and self:word(k + 1, "well") and k + 2) or nil
+  local from = self:same_opening(b)
+  if from then
+    b = from
+    opens = b > 1 and (self.t[b - 1].kind == "punct" or self:word(b - 1, "and"))
+    to = to or e
+  end
+  while to and self.t[to] and self.t[to].filler do to = to + 1 end
+  if to and opens and (not self.t[to] or self.t[to].kind == "punct") then return b, to end
+  return nil
+end
 function G:same_for()
   local named = {}
   for _, r in ipairs(self.refs) do
     if r.kind == "aircraft" and r.exists and not r.false_start and r.b > 1 then
-      local opens = true
-      local k = self:skip_fillers(r.e, false)
-      local e = (self.t[k] and SAME_AFTER[self.t[k].text] and k + 1)
-        or (self:word(k, "as") and self:word(k + 1, "well") and k + 2) or nil
-      local b = r.b
-      local from = self:same_opening(r.b)
-      if from then
-        b = from
-        opens = b > 1 and (self.t[b - 1].kind == "punct" or self:word(b - 1, "and"))
-        e = e or r.e
-      end
-      if e and opens and (not self.t[e] or self.t[e].kind == "punct") then
+      local b, e = self:same_span(r.b, r.e)
+      if b then
         self:mark_used(b, e)
         r.false_start = true
         named[#named + 1] = r.name
@@ -9254,6 +9282,14 @@ function G:same_again(named)
       return
     end
     id = acid
+  end
+  -- (a value counted from the aircraft's own state, "turn left 10" as HDG 080, is no value to copy: asked)
+  for _, line in ipairs(self.out) do
+    if not self:values_said(line) then
+      self.ask = string.format("Should %s make the same change from its own state, or take %s's value (%s)? Please "
+        .. "say it for %s.", table.concat(named, " and "), id, line, table.concat(named, " and "))
+      return
+    end
   end
   local out = {}
   for _, line in ipairs(self.out) do out[#out + 1] = line end
@@ -11191,6 +11227,7 @@ function M.translate(text, world)
   if not g.ask and #g.out > 1 then g:side_by_side_callsigns() end
   if not g.ask then g:list_value() end
   if not g.ask then g:setting_twice() end
+  if not g.ask then g:setting_question() end
   if not g.ask then g:short_level() end
   if not g.ask and not g.leftover and #g.out > 0 then g:clock_verb_left() end
   if not g.ask and not g.leftover then g:unknown_names() end

@@ -1064,7 +1064,7 @@ function m:airline_refs()
       local the = prev and prev.kind == "word" and prev.text == "the" and not second_between(self, i - 2)
           and (not self:word(i - 2, "@airline_context @aircraft_context @below @above")
             or self:word(e, "@route_nouns")  -- "add X to the KLM's route" (the lexer drops "'s")
-            or self:added_to(i - 2, e) or self:given_to(i - 2))
+            or self:added_to(i - 2, e) or self:given_to(i - 2) or self:same_opening(i))
       -- ("the regional jet from Republic, climb ...", "the plane from Delta": "the", words of an aircraft described
       -- and "from" before the airline capitalised name its aircraft, as "the Republic jet" does; `from_the`: the
       -- position of that "the")
@@ -1675,7 +1675,19 @@ function m:type_refs()
           and not self:in_reason(i) then
         self:need(string.format("Is '%s' %s? Please give its callsign.", self:raw(i, e), fits[1]))
       end
-      if not (opens and said and #fits == 1 and not named[fits[1]]) then test, fits = nil, {} end
+      -- ("AIC543 descend FL90 and the Boeing also", "..., same for the Airbus"): a type or maker said in the
+      -- shape of G:same_span names the one aircraft of it flying that no callsign names; several, none or only
+      -- the one named already are asked about
+      local same = the and self:same_span(i, e)
+      local one = #fits == 1 and not named[fits[1]]
+      if same and #fits > 1 then
+        self:need(string.format("Which %s do you mean: %s? Please give its callsign.", self:raw(i, e),
+          table.concat(fits, " or ")))
+      elseif same and not one then
+        self:need(string.format("Which aircraft is '%s'? No other aircraft flying is of it; please give its callsign.",
+          self:raw(i, e)))
+      end
+      if not ((opens and said or same) and one) then test, fits = nil, {} end
     end
     -- ("the CRJ": a family in capitals the lexer took for an unknown place)
     if #fits == 1 then

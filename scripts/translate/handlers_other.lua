@@ -390,6 +390,29 @@ return function(H, f, compass)
         end
       end
     end
+    -- "1000 feet lower than KLM880", "2000 ft above the Airbus": a height said against another aircraft flying is
+    -- counted from that aircraft's level (feet); a comparative ("lower", "higher than") or "the" and an airline or
+    -- type after it with no aircraft flying named straight after is asked ("3000 metres over ARTIP" is a place's)
+    for _, q in ipairs(alt and {} or qs) do
+      if q.kind == "alt" and not q.fl and not self.taken[q.b] and self:word(q.e, "@level_below @level_above") then
+        local than = self:word(q.e + 1, "than")
+        local k = than and q.e + 2 or q.e + 1
+        if self:word(k, "that") and self:word(k + 1, "of") then k = k + 2 end
+        local r = self:refs_in(k, k + 2, "aircraft")[1]
+        r = r and (r.b == k or (r.b == k + 1 and self:word(k, "the"))) and r
+        local a = r and self:state(r.name)
+        -- (an aircraft described, "the Airbus", "the Lufthansa", names no level of its own here: asked)
+        local described = self:word(k, "the") and (self:airline_at(k + 1) or self:type_said(k + 1))
+        if not a and (r or than or described or self:word(q.e, "lower higher")) then
+          return self:need(string.format("What level should %s have? I heard '%s' and no aircraft flying to count it "
+            .. "from; please give the level.", id, self:raw(q.b, q.e + 1)))
+        end
+        if not a then break end
+        alt, fl = a.alt_ft + (self:word(q.e, "@level_below") and -1 or 1) * self:take(q).value, true
+        self:explain(q.e, r.e)
+        break
+      end
+    end
     for _, q in ipairs(qs) do
       if q.kind == "heading" and not hdg then hdg = q.value end
       -- "flying 300 deg": an angle with no turn is the heading

@@ -690,6 +690,9 @@ return {
                      with_is = { "what", "how" } },
   -- interjections said before a question about a setting ("hmm wait is conflict detection even on rn?"): passed
   -- over to find the question's first word, which decides whether the setting is asked about or switched
+  -- verbs that change a setting; a request opening "is"/"are" with none of them asks about a value (G:setting_question)
+  setting_verbs = { "set", "change", "make", "increase", "decrease", "reduce", "raise", "lower", "put", "switch",
+    "turn", "bring", "double", "halve", "adjust", "reset", "keep" },
   setting_question_interjections = { "hmm", "hm", "wait", "oh", "ooh", "ah", "hey", "well", "alright", "ok", "okay",
                                      "so", "um", "uh", "erm", "ehm" },
   -- a pilot's question back to the controller, no instruction (G:question_back): "say again (the level)"
@@ -1223,6 +1226,9 @@ return {
   passed_over = { "skip", "skipping", "bypass", "bypassing", "omit", "omitting", "not", "instead" },
   below = { "below", "under" },
   above = { "above", "over" },
+  -- a level said against another aircraft's ("1000 feet lower than KLM880", "2000 ft above the Airbus")
+  level_below = { "below", "under", "lower", "beneath" },
+  level_above = { "above", "over", "higher" },
   relative = { "present", "current", "actual", "by" },
   -- words after an amount that name what it is counted from ("by 20 knots relative to what it is doing",
   -- "compared with what it flies now"): the present value

@@ -13919,3 +13919,62 @@ do
     check_eq(ex("AFR22KL destination LFLS"), "DEST AFR22KL LFLS")
   end
 end
+
+-- Cycle 52 (h3): aircraft sets. "same to the X" (no verb) and "the X too"/"also" with X an airline, a type or a
+-- maker name the one aircraft of it flying, or ask; never a silent drop
+do
+  local _, ex = scene({ "CRE ETD401 A320 24.0 54.0 090 FL200 280", "CRE QTR77 B738 24.2 54.2 090 FL220 280",
+    "CRE UAE9 B77W 24.4 54.4 090 FL240 280" })
+  check_eq(ex("ETD401 speed 250, same to the Qatari"), "SPD ETD401 250 ; SPD QTR77 250")
+  check_eq(ex("ETD401 speed 250, the same to the Emirates please"), "SPD ETD401 250 ; SPD UAE9 250")
+  check_eq(ex("ETD401 climb FL300 and the 737 too"), "ALT ETD401 FL300 ; ALT QTR77 FL300")
+  check_eq(ex("ETD401 climb FL300, same for the triple seven"), "ALT ETD401 FL300 ; ALT UAE9 FL300")
+  asked(ex("ETD401 climb FL300 and the Boeing also"), "two Boeings flying")
+  asked(ex("ETD401 climb FL300 and the Airbus too"), "the only Airbus is the one instructed")
+  asked(ex("ETD401 climb FL300 and the Embraer as well"), "no Embraer flying")
+  asked(ex("ETD401 speed 250, same to the Lufthansa"), "no Lufthansa flying")
+end
+
+-- Cycle 52 (h3): "the same" for a value counted from the aircraft's own state ("turn left 10", "descend by 2000
+-- feet") is asked, never copied as the first aircraft's heading or level
+do
+  local _, ex = scene({ "CRE SAS31 A320 55.0 10.0 090 FL330 280", "CRE NAX7 B77W 55.5 10.5 270 FL330 270" })
+  asked(ex("SAS31 turn right 15 degrees, NAX7 too"), "a relative turn copied")
+  asked(ex("SAS31 climb by 1000 feet, same for the 777"), "a relative climb copied")
+  check_eq(ex("SAS31 turn left heading 080, and the 777 as well"), "HDG SAS31 80 LEFT ; HDG NAX7 80 LEFT")
+end
+
+-- Cycle 52 (h3): a yes-no question about a setting's value ("is DTMULT still 5?") is asked, never set
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL200 250" })
+  asked(ex("Is DTMULT still 8?"), "a question about the rate")
+  asked(ex("are we still looking ahead 240 seconds?"), "a question about the look-ahead")
+  asked(ex("is the sim running at 3x"), "a question about the rate, no question mark")
+  check_eq(ex("is it possible to set DTMULT to 8?"), "DTMULT 8")
+  check_eq(ex("Is the resolution still MVP?"), "RESO")
+end
+
+-- Cycle 52 (h3): a new aircraft's level said against another aircraft's ("1000 feet lower than KLM880") is counted
+-- from that aircraft's level, or asked; never the height said taken as the level
+do
+  local _, ex = scene({ "CRE MAS30 B772 3.0 101.0 270 FL350 290", "CRE AXM5 A320 3.5 101.5 090 FL300 280" })
+  check_eq(ex("create MAS31, a B772, at 3.2 N 101.2 E, 2000 ft lower than MAS30, heading 270, 290 knots"),
+    "CRE MAS31 B772 3.2 101.2 270 FL330 290")
+  check_eq(ex("create MAS31 B772 at 3.2 N 101.2 E, 1000 ft above AXM5, heading 090, 280 knots"),
+    "CRE MAS31 B772 3.2 101.2 90 FL310 280")
+  asked(ex("create MAS31 B772 at 3.2 N 101.2 E, 1000 ft higher than MAS99, heading 090, 280 knots"), "no such aircraft")
+  asked(ex("create MAS31 B772 at 3.2 N 101.2 E, 1000 ft lower, heading 090, 280 knots"), "lower than what")
+  asked(ex("create MAS31 B772 at 3.2 N 101.2 E, 1000 ft below the Airbus, heading 090, 280 knots"), "an aircraft described")
+end
+
+-- Cycle 52 (h3): a waypoint called skipped that the direct-to does not skip (after its place, or off the route) is
+-- asked; one before it is set aside as before
+do
+  local _, ex = scene({ "DEFWPT ALPHA1 52.1 4.1", "DEFWPT BRAVO2 52.3 4.3", "DEFWPT CHARL3 52.5 4.5",
+    "DEFWPT DELTA4 52.0 4.9", "CRE KLM15 A320 52.0 4.0 045 FL200 250", "ADDWPT KLM15 ALPHA1", "ADDWPT KLM15 BRAVO2",
+    "ADDWPT KLM15 CHARL3" })
+  check_eq(ex("KLM15 direct BRAVO2, ALPHA1 can be skipped"), "DIRECT KLM15 BRAVO2")
+  asked(ex("KLM15 direct BRAVO2, CHARL3 can be skipped"), "the place after the direct-to's")
+  asked(ex("KLM15 direct ALPHA1, BRAVO2 is not needed"), "the place after the direct-to's, 'not needed'")
+  asked(ex("KLM15 direct BRAVO2, DELTA4 may be omitted"), "a place off the route")
+end
