@@ -5200,10 +5200,12 @@ function G:when_reached(s)
 end
 
 -- The position after the words at k that lead into the instruction word at trig ("start its descent", "begin the
--- climb"): "start" or "begin" and a determiner, before trig only; else k.
+-- climb", "route direct", "fly direct"): "start" or "begin" and a determiner, or "route", "fly" or "track" before
+-- "direct", before trig only; else k.
 function G:instruction_lead(k, trig)
   local v = k
   if self:word(v, "start begin") then v = self:skip_fillers(v + 1) end
+  if self:word(v, "route fly track") and self:word(v + 1, "direct dct") then v = v + 1 end
   if v > k and self:word(v, "its the your his her their") then v = self:skip_fillers(v + 1) end
   return v == trig and v or k
 end

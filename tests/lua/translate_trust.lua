@@ -13978,3 +13978,12 @@ do
   asked(ex("KLM15 direct ALPHA1, BRAVO2 is not needed"), "the place after the direct-to's, 'not needed'")
   asked(ex("KLM15 direct BRAVO2, DELTA4 may be omitted"), "a place off the route")
 end
+
+-- Cycle 52 (lead): "on reaching" before "route direct" or "fly direct" waits for the level cleared before it, as
+-- before "direct" or "proceed direct" (the direct-to had been flown at once); with no level cleared it is asked
+do
+  local _, ex = scene({ "DEFWPT TULIP 52.3 4.6", "CRE KL204 A320 52.0 4.0 090 FL200 280", "ADDWPT KL204 TULIP" })
+  check_eq(ex("KL204 climb FL250, on reaching route direct TULIP"), "ALT KL204 FL250 ; ATALT KL204 FL250 DIRECT KL204 TULIP")
+  check_eq(ex("KL204 descend FL150 and on reaching fly direct TULIP"), "ALT KL204 FL150 ; ATALT KL204 FL150 DIRECT KL204 TULIP")
+  asked(ex("KL204 on reaching route direct TULIP"), "no level cleared to reach")
+end
