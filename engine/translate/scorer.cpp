@@ -165,6 +165,15 @@ void command_first(std::vector<std::string>& v) {
   if (v.size() >= 2 && !command::Registry::instance().find(v[0]) && command::Registry::instance().find(v[1]))
     std::swap(v[0], v[1]);
 }
+
+// True when the commands that follow the first n words of p and e (a condition's or a delay's
+// fields) are equal, compared as commands (same_command).
+bool same_tail(const std::vector<std::string>& p, const std::vector<std::string>& e, size_t n) {
+  auto tail = [n](const std::vector<std::string>& v) {
+    return text::join(std::vector<std::string>(v.begin() + n, v.end()), " ");
+  };
+  return same_command(tail(p), tail(e));
+}
 }  // namespace
 
 bool same_command(std::string_view produced, std::string_view expected) {
@@ -184,8 +193,7 @@ bool same_command(std::string_view produced, std::string_view expected) {
     if (p.size() < 4 || e.size() < 4) return p.size() == e.size() && text::iequals(text::join(p, " "), text::join(e, " "));
     Arg k = cmd == "ATALT" ? Arg::kAlt : Arg::kSpd;
     if (!text::iequals(p[1], e[1]) || !same_arg(p[2], e[2], k)) return false;
-    return same_command(text::join(std::vector<std::string>(p.begin() + 3, p.end()), " "),
-                        text::join(std::vector<std::string>(e.begin() + 3, e.end()), " "));
+    return same_tail(p, e, 3);
   }
   // AT acid wpt DO CMD ... (STACK is DO): the aircraft and waypoint, then the command run there,
   // compared as one
@@ -195,8 +203,7 @@ bool same_command(std::string_view produced, std::string_view expected) {
   if (cmd == "AT" && (stored(p) || stored(e))) {
     if (!stored(p) || !stored(e) || !text::iequals(p[1], e[1]) || !text::iequals(p[2], e[2]))
       return false;
-    return same_command(text::join(std::vector<std::string>(p.begin() + 4, p.end()), " "),
-                        text::join(std::vector<std::string>(e.begin() + 4, e.end()), " "));
+    return same_tail(p, e, 4);
   }
   // ATDIST acid wpt dist CMD ...: the place and distance [NM], then the command it runs, compared
   // as one
@@ -204,15 +211,13 @@ bool same_command(std::string_view produced, std::string_view expected) {
     if (!text::iequals(p[1], e[1]) || !text::iequals(p[2], e[2]) ||
         !same_arg(p[3], e[3], Arg::kNum))
       return false;
-    return same_command(text::join(std::vector<std::string>(p.begin() + 4, p.end()), " "),
-                        text::join(std::vector<std::string>(e.begin() + 4, e.end()), " "));
+    return same_tail(p, e, 4);
   }
   // DELAY / SCHEDULE time CMD ...: the time (seconds or a clock time), then the command it runs,
   // compared as one
   if ((cmd == "DELAY" || cmd == "SCHEDULE") && p.size() > 2 && e.size() > 2) {
     if (!same_arg(p[1], e[1], Arg::kTime)) return false;
-    return same_command(text::join(std::vector<std::string>(p.begin() + 2, p.end()), " "),
-                        text::join(std::vector<std::string>(e.begin() + 2, e.end()), " "));
+    return same_tail(p, e, 2);
   }
   // RMETHV ON and V/S both switch vertical resolutions on, OFF and NONE off
   // (commands_asas.cpp rmethv).
