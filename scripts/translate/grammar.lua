@@ -5775,14 +5775,16 @@ function G:at_waypoint(s, spec)
       if in_route and not other and (alt or spd) then
         -- an instruction with its own value said before the crossing ("descend to FL120, cross DESDI at
         -- or below FL150"): its command first, from the words before the crossing. A level to be reached by
-        -- the waypoint is that constraint alone, never a level cleared now as well ("descend FL100 to be
-        -- level by BIG": the AT constraint only), except above the aircraft: the constraint alone climbs it
-        -- nowhere with VNAV off, so "climb FL370 to be level by DOGAL" is the climb cleared now and the
-        -- constraint
+        -- the waypoint ("descend FL100 to be level by BIG") is the level cleared now and the AT constraint,
+        -- as in BlueSky, where the constraint alone steers only an aircraft with VNAV on; with VNAV on, a
+        -- descent is the constraint alone (VNAV plans its top of descent to meet it)
         local lead = be_at and be_at < r.b and be_at - 2 or r.b - 1
         local climb = level_by and now and now.alt_ft and level_by.value > now.alt_ft + 50
-        if spec and spec.handler and (climb or not level_by) and s.trig < lead and #self:quantities(s.b, lead) > 0 then
+        local planned = level_by and not climb and now and now.vnav == true
+        if spec and spec.handler and not planned and s.trig < lead and #self:quantities(s.b, lead) > 0 then
           self[spec.handler](self, { intent = s.intent, b = s.b, trig = s.trig, e = lead }, spec)
+        elseif level_by and not planned then
+          self:emit("ALT " .. ids[1] .. " " .. f.alt(level_by.value, level_by.fl))  -- ("be level FL240 by ALFA")
         end
         -- "cross SUGOL at or above FL150", "at least 250 knots": BlueSky's AT sets the exact value, so a
         -- bound runs only after a yes to that exact constraint

@@ -3965,20 +3965,26 @@ do
 end
 
 -- A climb or descent to be level by a waypoint of the route ("descend FL240 level by ALFA", "descend to
--- reach FL240 by ALFA", "be level FL240 by ALFA"): the level is one AT constraint there, never a level
--- cleared now as well; a waypoint off the route, or another value said after it, is asked about
+-- reach FL240 by ALFA", "be level FL240 by ALFA"): the level cleared now and the AT constraint there (the
+-- constraint alone moves an aircraft with VNAV off nowhere); with VNAV on, a descent is the constraint alone,
+-- which VNAV plans to meet. A waypoint off the route, or another value said after it, is asked about
 do
   local _, ex = scene({ "CRE KLM12 B738 52 4 090 FL300 280", "DEFWPT ALFA 52.1 4.5", "DEFWPT BRAVO 52.3 4.9",
     "ADDWPT KLM12 ALFA" })
-  check_eq(ex("KLM12 descend FL240 level by ALFA"), "AT KLM12 ALFA ALT FL240")
-  check_eq(ex("KLM12 descend to reach FL240 by ALFA"), "AT KLM12 ALFA ALT FL240")
-  check_eq(ex("KLM12, be level FL240 by ALFA"), "AT KLM12 ALFA ALT FL240")
-  check_eq(ex("KLM12 descend FL240 to be level at ALFA"), "AT KLM12 ALFA ALT FL240")
-  check_eq(ex("klm12 desc FL240 to be lvl by ALFA"), "AT KLM12 ALFA ALT FL240")
-  check_eq(ex("KLM12 descend FL240, to be level by ALFA"), "AT KLM12 ALFA ALT FL240")
+  local both = "ALT KLM12 FL240 ; AT KLM12 ALFA ALT FL240"
+  check_eq(ex("KLM12 descend FL240 level by ALFA"), both)
+  check_eq(ex("KLM12 descend to reach FL240 by ALFA"), both)
+  check_eq(ex("KLM12, be level FL240 by ALFA"), both)
+  check_eq(ex("KLM12 descend FL240 to be level at ALFA"), both)
+  check_eq(ex("klm12 desc FL240 to be lvl by ALFA"), both)
+  check_eq(ex("KLM12 descend FL240, to be level by ALFA"), both)
   asked(ex("KLM12 descend FL240 by ALFA"), "no 'level' or 'reach': by the waypoint or a change?")
   asked(ex("KLM12 descend FL240 level by BRAVO"), "BRAVO is off the route")
   asked(ex("KLM12 descend FL240 level by ALFA 250 knots"), "a speed after the waypoint")
+  local _, vx = scene({ "CRE KLM12 B738 52 4 090 FL300 280", "DEFWPT ALFA 52.1 4.5", "ADDWPT KLM12 ALFA",
+    "VNAV KLM12 ON" })
+  check_eq(vx("KLM12 descend FL240 level by ALFA"), "AT KLM12 ALFA ALT FL240")
+  check_eq(vx("KLM12 climb FL340 level by ALFA"), "ALT KLM12 FL340 ; AT KLM12 ALFA ALT FL340")
 end
 
 -- A navaid said exactly by its name near the aircraft ("direct Pampus": PAM) is that navaid, before a
@@ -5796,14 +5802,14 @@ do
   end
 end
 
--- Cycle 36 (R73): "level by" a navaid said by its name is the AT constraint at that navaid's ident; a name
--- that is no navaid near the traffic is still asked
+-- Cycle 36 (R73): "level by" a navaid said by its name is the AT constraint at that navaid's ident (beside the level
+-- cleared now); a name that is no navaid near the traffic is still asked
 do
   local _, ex = navscene({ "CRE KLM56 B738 52.6 4.6 090 FL120 250", "ADDWPT KLM56 SPY", "ADDWPT KLM56 PAM" },
     "level by a navaid by name")
   if ex then
-    check_eq(ex("KLM56, descend flight level niner zero, level by Spijkerboor"), "AT KLM56 SPY ALT FL90")
-    check_eq(ex("KLM56 descend FL80 level by Pampus"), "AT KLM56 PAM ALT FL80")
+    check_eq(ex("KLM56, descend flight level niner zero, level by Spijkerboor"), "ALT KLM56 FL90 ; AT KLM56 SPY ALT FL90")
+    check_eq(ex("KLM56 descend FL80 level by Pampus"), "ALT KLM56 FL80 ; AT KLM56 PAM ALT FL80")
     asked(ex("KLM56 descend FL90, level by Blorpton"), "no navaid of that name")
   end
 end
@@ -6559,12 +6565,12 @@ do
 end
 
 -- Cycle 39 (fix79): "be level FL190 over PUNPU", "to reach ... overhead X": a level to be reached over a
--- waypoint of the route is its AT constraint; over a waypoint off the route it is asked
+-- waypoint of the route is the level cleared now and its AT constraint; over a waypoint off the route it is asked
 do
   local _, ex = scene({ "CRE CMP40 B738 9.4 -79.0 210 FL260 290", "DEFWPT KARIN 8.9 -79.3", "DEFWPT TOMAS 9.9 -79.9",
     "ADDWPT CMP40 KARIN" })
-  check_eq(ex("CMP40 be level flight level one seven zero over KARIN"), "AT CMP40 KARIN ALT FL170")
-  check_eq(ex("CMP40 descend to reach FL150 overhead KARIN"), "AT CMP40 KARIN ALT FL150")
+  check_eq(ex("CMP40 be level flight level one seven zero over KARIN"), "ALT CMP40 FL170 ; AT CMP40 KARIN ALT FL170")
+  check_eq(ex("CMP40 descend to reach FL150 overhead KARIN"), "ALT CMP40 FL150 ; AT CMP40 KARIN ALT FL150")
   asked(ex("CMP40 be level FL170 over TOMAS"), "over a waypoint off the route")
 end
 
@@ -11606,13 +11612,13 @@ do
   end
 end
 
--- Cycle 49 (f120): a climb to a level to be reached by a waypoint is the climb cleared now and the constraint (the
--- constraint alone climbs nothing with VNAV off); a descent stays the constraint alone (translate61's decision)
+-- Cycle 49 (f120): a climb or descent to a level to be reached by a waypoint is the level cleared now and the
+-- constraint (the constraint alone moves nothing with VNAV off)
 do
   local _, ex = scene({ "CRE KLM12 A320 52.3 4.7 270 FL300 280", "DEFWPT WPA 52.3 4.0", "ADDWPT KLM12 WPA" })
   check_eq(ex("KLM12 climb FL340 to be level by WPA"), "ALT KLM12 FL340 ; AT KLM12 WPA ALT FL340")
   check_eq(ex("KLM12 climb to reach FL340 by WPA"), "ALT KLM12 FL340 ; AT KLM12 WPA ALT FL340")
-  check_eq(ex("KLM12 descend FL240 to be level by WPA"), "AT KLM12 WPA ALT FL240")
+  check_eq(ex("KLM12 descend FL240 to be level by WPA"), "ALT KLM12 FL240 ; AT KLM12 WPA ALT FL240")
   asked(ex("KLM12 climb FL340 by WPA"), "'by' with no 'level' or 'reach'")
 end
 
