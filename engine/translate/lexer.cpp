@@ -1,5 +1,6 @@
 #include "translate/lexer.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 
@@ -57,13 +58,40 @@ bool all_of(std::string_view s, bool (*pred)(char)) {
   return true;
 }
 
-// "41,000" / "1,200,000": digit groups of three after the first.
-bool thousands_grouped(std::string_view s) {
-  auto parts = text::split(s, ',');
+// "41,000" / "1,200,000" (sep ','), "5.000" (sep '.'), "5'000" (sep '\''): digit groups of three
+// after the first, which has one to three digits (and, with '.' or '\'', no leading zero: "0.500"
+// is a decimal).
+bool thousands_grouped(std::string_view s, char sep = ',') {
+  auto parts = text::split(s, sep);
   if (parts.size() < 2 || parts[0].empty() || parts[0].size() > 3 || !all_of(parts[0], is_digit)) return false;
+  if (sep != ',' && parts[0][0] == '0') return false;
   for (size_t i = 1; i < parts.size(); ++i)
     if (parts[i].size() != 3 || !all_of(parts[i], is_digit)) return false;
   return true;
+}
+
+// The whole number a thousands grouping with separator `sep` writes ("5.000" -> 5000).
+double grouped_value(std::string_view s, char sep) {
+  std::string digits;
+  for (char ch : s)
+    if (ch != sep) digits += ch;
+  return text::to_double(digits).value_or(0.0);
+}
+
+// "5'000", "12’500" (a typographic apostrophe): the apostrophe groups thousands as Swiss
+// German writes them (it is never a decimal point); the text with a plain apostrophe, or "" when
+// `s` is no such grouping.
+std::string apostrophe_grouped(std::string_view s) {
+  std::string plain;
+  for (size_t i = 0; i < s.size(); ++i) {
+    if (s.substr(i, 3) == "\xE2\x80\x99") {
+      plain += '\'';
+      i += 2;
+    } else {
+      plain += s[i];
+    }
+  }
+  return thousands_grouped(plain, '\'') ? plain : std::string();
 }
 
 // "0,76": a zero, a decimal comma and one to three digits, as French and Arabic write a decimal (a
@@ -142,10 +170,18 @@ void lex_core(std::string_view c, std::vector<Token>& out) {
   }
   if (c.find('\xB0') != std::string_view::npos && lex_dms(c, out)) return;
   if (thousands_grouped(c)) {
-    std::string digits;
-    for (char ch : c)
-      if (ch != ',') digits += ch;
-    out.push_back(number(text::to_double(digits).value_or(0.0), c, false));
+    out.push_back(number(grouped_value(c, ','), c, false));
+    return;
+  }
+  // "1.200.000": dots between groups of three, more than one, are a thousands grouping (no decimal
+  // has two points); one dot ("5.000") is a decimal here and read as a grouping only before feet
+  // (read_beside).
+  if (std::count(c.begin(), c.end(), '.') > 1 && thousands_grouped(c, '.')) {
+    out.push_back(number(grouped_value(c, '.'), c, false));
+    return;
+  }
+  if (auto plain = apostrophe_grouped(c); !plain.empty()) {
+    out.push_back(number(grouped_value(plain, '\''), c, false));
     return;
   }
   if (zero_decimal_comma(c)) {
@@ -248,6 +284,33 @@ void lex_chunk(std::string_view c, std::vector<Token>& out) {
   out.insert(out.end(), tail.begin(), tail.end());
 }
 
+// Units of a height or a vertical speed in feet ("ft/min" lexes as "ft" "per" "min").
+bool feet_unit(const Token& t) {
+  return t.kind == TokKind::kWord &&
+         (t.text == "ft" || t.text == "feet" || t.text == "foot" || t.text == "fpm");
+}
+
+// Numbers whose reading depends on the token beside them, read in place over the token list:
+//  - "5.000 ft", "2.500 fpm", "12.000ft": one dot and a group of three digits before a unit of feet
+//    groups thousands (5000), as German writes them: feet or feet per minute to three decimal
+//    places are no value anyone says, and "0.500 ft" (a leading zero) is no grouping;
+//  - "Mach ,78": a comma and one to three digits after "mach" is its decimal (0.78), as a decimal
+//    comma writes ".78".
+void read_beside(std::vector<Token>& out) {
+  for (size_t i = 0; i < out.size(); ++i) {
+    Token& t = out[i];
+    if (t.kind == TokKind::kNumber && i + 1 < out.size() && feet_unit(out[i + 1]) &&
+        thousands_grouped(t.raw, '.')) {
+      t.num = grouped_value(t.raw, '.');
+      t.spelled = false;
+    } else if (t.kind == TokKind::kWord && i > 0 && out[i - 1].kind == TokKind::kWord &&
+               out[i - 1].text == "mach" && t.raw.size() >= 2 && t.raw.size() <= 4 &&
+               t.raw[0] == ',' && all_of(std::string_view(t.raw).substr(1), is_digit)) {
+      t = number(text::to_double("0." + t.raw.substr(1)).value_or(0.0), t.raw, true);
+    }
+  }
+}
+
 }  // namespace
 
 bool has_digit(std::string_view s) {
@@ -282,6 +345,7 @@ std::vector<Token> lex(std::string_view u) {
     lex_chunk(u.substr(i, j - i), out);
     i = j;
   }
+  read_beside(out);
   return out;
 }
 

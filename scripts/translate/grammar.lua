@@ -1332,14 +1332,16 @@ G.value_name_set = set_of(lexicon.value_names)
 -- A number written with a decimal comma, as German and French write one ("47,5 north", "8,5 degrees east", "the
 -- horizontal resolution factor to 1,1"): `whole` (one to three digits) and `part` (one or two) around the comma,
 -- [b, e) in `text`, nothing glued before or after, before a hemisphere (a word of
--- lexicon.coordinate_axes.hemispheres or its initial) with "degrees" or not, in its range, or after a word of
+-- lexicon.coordinate_axes.hemispheres or its initial) with "degrees" or not, in its range, before a unit of
+-- lexicon.decimal_comma_units, glued or not ("4,5 NM", "2,5nm"), or after a word of
 -- lexicon.decimal_comma_after and "to", "of" or "at" or none; returns "whole.part", or nil (kept as written:
 -- "41,000", "FL300,250").
 G.decimal_comma_after = set_of(lexicon.decimal_comma_after)
+G.decimal_comma_units = set_of(lexicon.decimal_comma_units)
 function G.decimal_comma(text, b, whole, part, e)
-  local glued = text:sub(e):match("^%a+")  -- (only a hemisphere's initial: "50,3N")
+  local glued = text:sub(e):match("^%a+")  -- (only a hemisphere's initial or a unit: "50,3N", "2,5nm")
   if #whole > 3 or #part > 2 or text:sub(b - 1, b - 1):match("[%w%.,]") or text:sub(e, e):match("[%d%.,]")
-      or glued and not glued:match("^[NSEWnsew]$") then
+      or glued and not glued:match("^[NSEWnsew]$") and not G.decimal_comma_units[glued:lower()] then
     return nil
   end
   local after = text:sub(e):lower():gsub("^%s*", ""):gsub("^°%s*", ""):gsub("^degrees?%s+", "")
@@ -1347,10 +1349,11 @@ function G.decimal_comma(text, b, whole, part, e)
   local axis = word and (lexicon.coordinate_axes.hemispheres[word] or (word == "n" or word == "s") and "lat"
     or (word == "e" or word == "w") and "lon")
   local hemisphere = axis and tonumber(whole) <= (axis == "lat" and 90 or 180)
+  if hemisphere or G.decimal_comma_units[word] then return whole .. "." .. part end
   local before = text:sub(1, b - 1):lower()
   local noun = before:match("(%a+)%s+%a+%s*$")
   local joined = before:match("(%a+)%s*$")
-  if hemisphere or G.decimal_comma_after[joined]
+  if G.decimal_comma_after[joined]
       or (G.decimal_comma_after[noun] and (joined == "to" or joined == "of" or joined == "at")) then
     return whole .. "." .. part
   end
@@ -1592,21 +1595,22 @@ local function written_forms(text, world)
   end)
   -- an amount with its unit and "more"/"less" after it, or "gain"/"lose" before it ("20 kt less", "lose 4000
   -- ft", "gain 1000 feet"): that many faster/slower, up/down
-  -- ("2000 ft more or less", "20 kt less than ...": an estimate or a bound, left as typed)
+  -- ("2000 ft more or less", "20 kt less than ...": an estimate or a bound, left as typed; the amount is the whole
+  -- number, a point, comma or apostrophe in it included: "2.000 ft more", "1,5 kt less")
   if low:find("more", 1, true) or low:find("less", 1, true) then
-    text = text:gsub("%f[%w](%d+)(%s*)(%a+)%s+(%a+)%f[%A]()", function(n, space, unit, word, at)
+    text = text:gsub("%f[%w%.,'](%d+[%.,']?%d*)(%s*)(%a+)%s+(%a+)%f[%A]()", function(n, space, unit, word, at)
       local kind, dir = UNIT_CHANGE[unit:lower()], MORE_LESS[word:lower()]
       local nx = (text:match("^%s+(%a+)", at) or ""):lower()
-      if not (kind and dir) or nx == "or" or nx == "than" then return nil end
+      if not (kind and dir) or nx == "or" or nx == "than" or n:match("%D$") then return nil end
       if kind == "speed" then return n .. space .. unit .. (dir > 0 and " faster" or " slower") end
       return (dir > 0 and "up " or "down ") .. n .. space .. unit
     end)
     low = text:lower()
   end
   if low:find("gain", 1, true) or low:find("lose", 1, true) then
-    text = text:gsub("%f[%a](%a+)(%s+)(%d+)(%s*)(%a+)%f[%A]", function(verb, space, n, space2, unit)
+    text = text:gsub("%f[%a](%a+)(%s+)(%d+[%.,']?%d*)(%s*)(%a+)%f[%A]", function(verb, space, n, space2, unit)
       local dir, kind = GAIN_LOSE[verb:lower()], UNIT_CHANGE[unit:lower()]
-      if not (kind and dir) then return nil end
+      if not (kind and dir) or n:match("%D$") then return nil end
       if kind == "speed" then return n .. space2 .. unit .. (dir > 0 and " faster" or " slower") end
       return (dir > 0 and "up" or "down") .. space .. n .. space2 .. unit
     end)
@@ -8949,6 +8953,60 @@ function G:short_level()
   end
 end
 
+-- An altitude or a protected zone half height under G.least_told ft, or a vertical speed under G.least_told ft/min,
+-- other than 0 (level off, on the ground), in an ALT, VS, CRE, MOVE or ZONEDH line ("descend to 9 ft", a number
+-- cut short or written with a point before three figures: "1.000"), is none an aircraft is told: asked, naming the
+-- value, its unit and the number heard for it, never issued.
+G.least_told = 100  -- [ft], [ft/min]
+G.told_values = { alt = { "an altitude", "ft" }, vs = { "a vertical speed", "ft/min" },
+                  zone = { "a protected zone half height", "ft" } }
+G.told_units = set_of({ "ft", "feet", "foot", "fpm", "m", "metres", "meters" })
+function G:implausible_values()
+  local function small(v)
+    v = tonumber(v)
+    return v ~= nil and v ~= 0 and math.abs(v) < G.least_told
+  end
+  for _, line in ipairs(self.out) do
+    local f = {}
+    for w in line:gmatch("%S+") do f[#f + 1] = w end
+    -- (the value's kind and field: an ALT's rate after its altitude; CRE's altitude after its position (a place, or
+    -- a latitude and longitude) and heading; MOVE's after its position)
+    local kind, k
+    if f[1] == "ALT" then
+      kind, k = small(f[3]) and "alt" or "vs", small(f[3]) and 3 or 4
+    elseif f[1] == "VS" then
+      kind, k = "vs", 3
+    elseif f[1] == "ZONEDH" then
+      kind, k = "zone", 2
+    elseif f[1] == "CRE" then
+      kind, k = "alt", tonumber(f[4]) and 7 or 6
+    elseif f[1] == "MOVE" then
+      kind, k = "alt", tonumber(f[3]) and 5 or 4
+    end
+    if kind and small(f[k]) then
+      -- (the number heard for it: one with its unit after it first, "8 ft" rather than the "8" of "8 E")
+      local v, heard, unit = math.floor(math.abs(tonumber(f[k])) + 0.5), nil, nil
+      for pass = 1, 2 do
+        for i, t in ipairs(self.t) do
+          local after = self.t[i + 1] and self.t[i + 1].kind == "word" and self.t[i + 1]
+          if not heard and t.kind == "number" and math.floor(math.abs(t.num) + 0.5) == v
+              and (pass == 2 or after and G.told_units[after.text]) then
+            heard, unit = t.raw, after and G.told_units[after.text] and " " .. after.raw or ""
+          end
+        end
+      end
+      local what = G.told_values[kind]
+      local doubt = heard and string.format(" I heard '%s%s'.", heard, unit) or ""
+      if heard and heard:match("^%d%d?%d?%.%d%d%d$") then
+        doubt = string.format(" I heard '%s%s': %s, with the point grouping thousands?", heard, unit,
+          (heard:gsub("%.", "")))
+      end
+      return self:need(string.format("I have %s, but %s of %s %s is too small to be meant.%s Which value do you "
+        .. "mean?", line, what[1], f[k], what[2], doubt))
+    end
+  end
+end
+
 -- One setting of the simulation given two values in one request ("dtmult 8, and then 4x", "zoner 5 then 3"): the
 -- second would replace the first at once, with no time between (a fast-forward between them is one: "dtmult 8, ff
 -- 60, dtmult 4"), so which value, and from when, is asked. (G.set_once: the commands of one value and no aircraft.)
@@ -11233,6 +11291,7 @@ function M.translate(text, world)
   if not g.ask then g:setting_twice() end
   if not g.ask then g:setting_question() end
   if not g.ask then g:short_level() end
+  if not g.ask then g:implausible_values() end
   if not g.ask and not g.leftover and #g.out > 0 then g:clock_verb_left() end
   if not g.ask and not g.leftover then g:unknown_names() end
   if not g.ask and not g.leftover then g:clock_remark() end

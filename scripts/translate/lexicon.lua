@@ -833,6 +833,9 @@ return {
   -- the nouns of a value that a number written with a decimal comma may follow ("the horizontal resolution factor
   -- to 1,1"; grammar.lua G.decimal_comma)
   decimal_comma_after = { "factor" },
+  -- the units of a distance, which takes a decimal, that a number written with a decimal comma may precede ("a
+  -- zone of 4,5 NM"; grammar.lua G.decimal_comma)
+  decimal_comma_units = { "nm", "nmi", "miles", "mile", "nautical", "km", "dme" },
   coordinate_axes = { labels = { latitude = "lat", longitude = "lon" },
                       hemispheres = { north = "lat", south = "lat", east = "lon", west = "lon" } },
   self_correction = { words = { "oh", "no", "wait", "sorry", "actually", "make", "that", "i", "mean", "meant", "uh", "um",

@@ -13993,3 +13993,27 @@ do
   check_eq(ex("KL204 descend FL150 and on reaching fly direct TULIP"), "ALT KL204 FL150 ; ATALT KL204 FL150 DIRECT KL204 TULIP")
   asked(ex("KL204 on reaching route direct TULIP"), "no level cleared to reach")
 end
+
+-- Cycle 53 (fnum): a point grouping thousands before feet ("11.000 feet", "1.500 ft per minute"), an apostrophe
+-- grouping them ("11'000 ft"), a decimal comma before a distance ("2,5 NM") or after Mach ("Mach ,79") are read; an
+-- altitude, rate or zone half height too small to be meant (a few feet, a few ft/min) is asked, never issued
+do
+  local _, ex = scene({ "CRE DLH41 A320 50.0 8.0 090 FL200 280", "CRE EWG12 A319 49.5 8.5 270 8000 250" })
+  check_eq(ex("DLH41 descend to FL 120 with 1.500 ft per minute"), "ALT DLH41 FL120 1500")
+  check_eq(ex("EWG12 climb to 11.000 feet"), "ALT EWG12 11000")
+  check_eq(ex("EWG12 climb to 11'000 ft"), "ALT EWG12 11000")
+  check_eq(ex("EWG12 climb 1.000 ft more"), "ALT EWG12 9000")
+  check_eq(ex("EWG12 lose 1.000 ft"), "ALT EWG12 7000")
+  check_eq(ex("set the zone height to 1.000 ft"), "ZONEDH 1000")
+  check_eq(ex("set the protected zone radius to 2,5 NM"), "ZONER 2.5")
+  check_eq(ex("set the zone radius to 4.500 NM"), "ZONER 4.5")
+  check_eq(ex("DLH41 fly Mach ,79"), "SPD DLH41 M0.79")
+  check_eq(ex("create KLM7 A320 at 50.2 N 8.4 E heading 090, 6.000 ft, 250 knots"), "CRE KLM7 A320 50.2 8.4 90 6000 250")
+  check_eq(ex("DLH41 vs 0"), "VS DLH41 0")
+  asked(ex("EWG12 descend to 7.000"), "a point before three figures, no unit: 7 or 7000")
+  asked(ex("DLH41 descend to FL 120 with 1.500"), "a point before three figures after a level, no unit")
+  asked(ex("EWG12 descend to 7 feet"), "an altitude of 7 ft")
+  asked(ex("DLH41 descend with 5 fpm"), "a rate of 5 ft/min")
+  asked(ex("set the zone height to 2 ft"), "a zone half height of 2 ft")
+  asked(ex("create KLM7 A320 at 50.2 N 8.4 E heading 090, 6 ft, 250 knots"), "a new aircraft at 6 ft")
+end

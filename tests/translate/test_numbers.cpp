@@ -101,6 +101,42 @@ TEST_CASE("lexer: glued units, ids, possessives, quotes, degrees") {
   CHECK(lex("").empty());
 }
 
+TEST_CASE("lexer: a point or an apostrophe grouping thousands; a decimal comma after Mach") {
+  // a point and a group of three before a unit of feet groups thousands (no value has three
+  // decimals)
+  CHECK(lex("5.000 ft")[0].num == 5000);
+  CHECK_FALSE(lex("5.000 ft")[0].spelled);
+  CHECK(lex("5.000 ft")[0].raw == "5.000");
+  CHECK(lex("12.000ft")[0].num == 12000);
+  CHECK(lex("1.800 fpm")[0].num == 1800);
+  CHECK(lex("3.000 ft/min")[0].num == 3000);
+  CHECK(lex("2.500 feet per minute")[0].num == 2500);
+  // no unit of feet, a leading zero, or figures that are no group of three: the decimal as written
+  CHECK(lex("5.000")[0].num == 5);
+  CHECK(lex("4.500 nm")[0].num == doctest::Approx(4.5));
+  CHECK(lex("0.500 ft")[0].num == doctest::Approx(0.5));
+  CHECK(lex("2.50 ft")[0].num == doctest::Approx(2.5));
+  CHECK(lex("118.100")[0].num == doctest::Approx(118.1));
+  // two points or more: no decimal, a grouping
+  CHECK(lex("1.200.000")[0].num == 1200000);
+  CHECK(lex("1.20.000")[0].kind == TokKind::kWord);
+  // an apostrophe (plain or typographic) groups thousands wherever it stands
+  CHECK(lex("5'000 ft")[0].num == 5000);
+  CHECK(lex(std::string("12") + "\xE2\x80\x99" + "500")[0].num == 12500);
+  CHECK(lex("5'00")[0].kind == TokKind::kWord);
+  // "Mach ,78": the comma is the decimal point after "mach" only
+  auto m = lex("Mach ,78");
+  REQUIRE(m.size() == 2);
+  CHECK(m[1].kind == TokKind::kNumber);
+  CHECK(m[1].num == doctest::Approx(0.78));
+  CHECK(lex("heading ,78")[1].kind == TokKind::kWord);
+  // the quantities read the grouped value with its unit
+  CHECK(qty("descend to 9.000 ft")[0].kind == QKind::kAlt);
+  CHECK(qty("descend to 9.000 ft")[0].value == 9000);
+  CHECK(qty("with 2.000 ft/min")[0].kind == QKind::kVs);
+  CHECK(qty("with 2.000 ft/min")[0].value == 2000);
+}
+
 TEST_CASE("quantities: units decide the kind") {
   auto q = qty("flight level three five zero");
   REQUIRE(q.size() == 1);
