@@ -469,10 +469,17 @@ function m:acids(s)
   for _, u in ipairs(#ids > 0 and self.airline_unresolved or {}) do
     if u.b >= s.b and u.e <= s.e then self:airline_only(u) end
   end
-  -- "the Ryanair and the Boeing climb FL260" with two Boeings flying: a type that names no one aircraft, said beside
-  -- one named, likewise
+  -- "the Ryanair and the Boeing climb FL260" with two Boeings flying: a type that names no one aircraft, joined by
+  -- "and" to one named or said beside one named not of it, likewise ("the American one, the 737" with AAL1960 a
+  -- 737 describes that aircraft again)
   for _, u in ipairs(#ids > 0 and self.type_unresolved or {}) do
-    if u.b >= s.b and u.e <= s.e then self:type_only(u) end
+    local fits_named = false
+    for _, id in ipairs(ids) do
+      for _, f in ipairs(u.ids) do fits_named = fits_named or f == id end
+    end
+    local k = self:word(u.b - 1, "the") and u.b - 2 or u.b - 1
+    if self:word(k, "to") then k = k - 1 end
+    if u.b >= s.b and u.e <= s.e and (self:word(k, "and") or not fits_named) then self:type_only(u) end
   end
   if #ids > 0 then self.subject, self.subjects = ids[1], { table.unpack(ids) } end
   return ids
