@@ -14022,6 +14022,7 @@ do
   check_eq(ex("assign FL240 to the Airbus and to the Embraer"), "ALT EZY45 FL240 ; ALT AZA9 FL240")
   asked(ex("assign FL240 to the Boeing"), "three Boeings")
   asked(ex("the Airbus and the Boeing climb FL260"), "three Boeings beside the one Airbus")
+  check_eq(ex("the Lufthansa one, the Boeing, climb FL260"), "ALT DLH4 FL260")
   asked(ex("the one flying northwest, descend FL190"), "315 and 290 both near northwest")
   check_eq(ex("the one flying southeast, descend FL170"), "ALT AZA9 FL170")
   check_eq(ex("turn the southwest one toward TULIP"), "HDG SWA12 TULIP")
