@@ -654,6 +654,26 @@ local function spelled(text)
   end)
 end
 
+-- A capital "A" spelled in a callsign ("create Lufthansa 1 A B, an A321", "Speedbird 12 C A, heading 090"): after a
+-- flight number's digits (spelled capital letters between or not) and before a spelled capital letter, a mark or
+-- the end, it is the letter, never the article (a noun follows that); written as its phonetic word, which the
+-- callsign reader takes as it takes every other capital letter.
+function G.spelled_letter_a(text)
+  if not text:find("%f[%w]A%f[%W]") then return text end
+  local toks = {}
+  for w in text:gmatch("%S+") do toks[#toks + 1] = w end
+  return tokens.rewrite(text, toks, function(i)
+    local mark = toks[i]:match("^A([,%.;:!%?]*)$")
+    if not mark then return nil end
+    local k = i - 1
+    while k > 1 and toks[k]:match("^%u$") do k = k - 1 end
+    if k < 1 or not toks[k]:match("^%d+$") then return nil end
+    local nxt = toks[i + 1]
+    if mark == "" and nxt and not nxt:match("^%u[,%.;:!%?]*$") then return nil end
+    return "Alpha" .. mark, i + 1
+  end)
+end
+
 -- Self-corrections said in words (lexicon.self_correction) become the word "correction", which the
 -- value handlers read: "reduce 270, no wait, 260" is "reduce 270 , correction , 260".
 local DIGIT_WORDS = set_of({ "zero", "oh", "one", "two", "three", "four", "five", "six", "seven", "eight", "nine",
@@ -1381,7 +1401,7 @@ local function written_forms(text, world)
   -- "47,5 north", "8,5 degrees east", "factor to 1,1": a decimal comma (G.decimal_comma) is the point
   where("%d,%d", "()(%d+),(%d+)()", function(b, whole, part, e) return G.decimal_comma(text, b, whole, part, e) end)
   text = typed_abbreviations(lone_multipliers(tokens.numerals_apart(text, DIGIT_WORDS), world))
-  text = hyphened_types(spelled(heard_forms(negated_values(G.readback_reported(readback_heard(self_corrections(G.cancel_corrections(unlabelled(foreign_digits(G.said_whole(text)))))))))))
+  text = hyphened_types(spelled(G.spelled_letter_a(heard_forms(negated_values(G.readback_reported(readback_heard(self_corrections(G.cancel_corrections(unlabelled(foreign_digits(G.said_whole(text))))))))))))
   low = text:lower()
   -- a position typed as whole degrees after the hemisphere, then minutes ("N55 50.0 W003 20.0", "S33 57
   -- E151 10"): decimal degrees before their hemisphere ("55.833333 N 3.333333 W"); minutes of 60 or more
@@ -2002,6 +2022,20 @@ function G:apology_end(b, e)
   return x
 end
 
+-- True when the instruction word at y is the noun a copula predicates ("it is noise", "that's only turbulence",
+-- "it's just noise for this run"): a copula right before it or with one of lexicon's declared.predicate_adverbs
+-- between, or after a subject whose copula the lexer dropped ("it" of "it's") with such an adverb between or with
+-- a word in no verb's third-person or past form ("he climbs too steep" is told with its verb).
+function G:predicate_noun(y)
+  local D = COMMENTARY.decl
+  if self:word(y - 1, D.copulas) then return true end
+  if self:word(y - 1, D.predicate_adverbs) then
+    return self:word(y - 2, D.copulas) or self:word(y - 2, D.copular_subjects)
+  end
+  local w = self.t[y].raw:lower()
+  return self:word(y - 1, D.copular_subjects) and not (w:match("[^s]s$") or w:match("ed$"))
+end
+
 -- True when the tokens b .. e-1 are a remark in the declarative shape (lexicon.aside.declared): a subject before
 -- its verb, no aircraft, place or value (but a count of aircraft or a label's number, G:commentary), no
 -- instruction word but a noun or a past form, none beside a wish or a modal, and none of declared.blocks or of
@@ -2047,6 +2081,7 @@ function G:declared(b, e)
       end
       if self:intent_at(y) then
         local noun = self:word(y - 1, COMMENTARY.decl.nouns_after) or self:word(y - 2, COMMENTARY.decl.nouns_after)
+          or self:predicate_noun(y)
         local past = t.raw:lower():match("[^e]ed$") ~= nil and not self:word(y - 1, "to")
         -- (what a question word opens is what is studied or told, "a test of how the geometry affects detection";
         -- a habit told is no instruction, "long-haul aircraft usually fly faster")
@@ -9943,8 +9978,8 @@ local function airline_values(text, fleet)
   end
   -- "VLG12AB velocity 250 knots", "increase the velocity of TAP57": an airline's telephony that is also the
   -- noun of a value (lexicon.value_noun_airlines: word -> {ICAO prefix, the noun's plain word}) is that noun
-  -- before a number and its unit, unless the airline and the number said digit by digit are an aircraft
-  -- flying ("Velocity 250, 280 knots"), and after an article or a possessive when no aircraft of the airline
+  -- before a number and its unit or after another value's number or unit, unless the airline and the number said
+  -- digit by digit are an aircraft flying ("Velocity 250, 280 knots"), and after an article or a possessive when no aircraft of the airline
   -- flies
   if text:lower():find("velocity", 1, true) then
     local toks = {}
@@ -9967,6 +10002,13 @@ local function airline_values(text, fleet)
       end
       local unit = k > i + 1 and toks[k] and toks[k]:lower():gsub("%p+$", "")
       if unit and lexicon.value_units[unit] and not (digits and ids[icao .. digits]) then return plain, i + 1 end
+      -- (straight after another value's number or unit: the next field of a list, "heading 090 altitude 14000 feet
+      -- velocity 240")
+      local before = i > 1 and toks[i - 1]:lower()
+      if before and (before:match("^%d[%d%.]*$") or lexicon.value_units[before])
+          and not (digits and ids[icao .. digits]) then
+        return plain, i + 1
+      end
       return nil
     end)
   end
@@ -10559,6 +10601,48 @@ function G.terse_altitude(text, world)
   if not bare or labelled == 0 then return text end
   return (text:gsub("%f[%w]" .. bare .. "%f[%W]", bare .. "ft", 1))
 end
+-- A navaid said by its name of two or three words with its kind after it ("direct las vegas vortac"), one of the
+-- words itself the name of another point (the fix VEGAS): the words, when nav.dat names exactly one navaid of that
+-- kind (lexicon.navaid_types) so within lexicon.navaid_range_nm of the traffic (of any aircraft; anywhere when none
+-- flies), become its ident, the kind kept after it, so that point is never read instead; a name of several navaids
+-- or none, and a name with no word that is a point's (read where it is said: "cross the Phoenix VOR at"), stay as
+-- said.
+function G.navaids_by_kind(text, world)
+  local named, locate = world.navaids_named, world.user_waypoint_at
+  if not (named and locate) then return text end
+  local lower = text:lower()
+  if not (lower:find("vor", 1, true) or lower:find("ndb", 1, true) or lower:find("dme", 1, true)) then return text end
+  local toks = {}
+  for w in text:gmatch("%S+") do toks[#toks + 1] = w end
+  local function found(name, kind)
+    local seen, n, only = {}, 0, nil
+    local places = #world.aircraft > 0 and world.aircraft or { { lat = 0, lon = 0 } }
+    local range = #world.aircraft > 0 and lexicon.navaid_range_nm or 1e5
+    for _, a in ipairs(places) do
+      for _, id in ipairs(a.lat and named(name, a.lat, a.lon, range, kind) or {}) do
+        if not seen[id] then seen[id], n, only = true, n + 1, id end
+      end
+    end
+    return n == 1 and only or nil
+  end
+  return tokens.rewrite(text, toks, function(i)
+    for n = 3, 2, -1 do
+      local kw = toks[i + n] and toks[i + n]:lower():match("^(%a+)%p*$")
+      local kind = kw and lexicon.navaid_types[kw]
+      if kind then
+        local words, ok, point = {}, true, false
+        for k = i, i + n - 1 do
+          ok = ok and toks[k]:match("^%a[%a%-']*$") ~= nil
+          point = point or (#toks[k] >= 3 and locate(toks[k]:upper()) ~= nil)
+          words[#words + 1] = toks[k]
+        end
+        local id = ok and point and found(table.concat(words, " "), kind)
+        if id then return id:upper(), i + n end
+      end
+    end
+  end)
+end
+
 -- A place said by its name with its ident in apposition ("add Thermal, that is TRM, to the route", "passes the
 -- Homeland VOR, HDF, ...", "direct to Truth or Consequences, TCS", "Palm Springs International (KPSP)"): one to
 -- four capitalised words (lexicon.place_name_joiners between them, "the" before and a word of navaid_kinds or
@@ -11107,7 +11191,7 @@ function M.translate(text, world)
   text, run_together = G.run_together_position(text)
   if run_together then return { commands = {}, ask = run_together } end
   text = G.confirmed_route_places(G.spelled_route_places(typed_places(G.named_idents(
-    G.spoken_user_waypoints(written_forms(text, world), world), world),
+    G.spoken_user_waypoints(G.navaids_by_kind(written_forms(text, world), world), world), world),
     world), world), world)
   text = G.terse_altitude(spelled_airports(text, world), world)
   local run_on

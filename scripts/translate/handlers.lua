@@ -152,7 +152,9 @@ function m:opposite_motions(b, e)
 end
 
 -- 1 on, 0 off, -1 not said. A word of a report set aside as not simulated ("I think someone switched that off
--- by accident": what was done, self.noted) switches nothing.
+-- by accident": what was done, self.noted) switches nothing. A word in a remark set aside (G:in_reason: "switch on
+-- LNAV, I think it is off", the state the speaker tells) counts only when no word outside one switches; then the
+-- second result is true (told, not asked for: m:switch_told).
 function m:on_off(s)
   -- (the switching word just before the segment counts: "disconnect LNAV of X")
   local b = (s.b > 1 and self:word(s.b - 1, "off on @off @on")) and s.b - 1 or s.b
@@ -167,20 +169,35 @@ function m:on_off(s)
     while x < s.e and self:word(x, "the any a") do x = x + 1 end
     return x == s.e and s.e <= #self.t and self:intent_at(s.e) ~= nil and self:intent_at(s.e) ~= false
   end
-  local function said(from, words)
+  local function said(from, words, told)
     for k = from, s.e - 1 do
-      if self:word(k, words) and not self.noted[k] and not next_ones(k) then return true end
+      if self:word(k, words) and not self.noted[k] and (told or not self:in_reason(k)) and not next_ones(k) then
+        return true
+      end
     end
     return false
   end
-  if said(b, "@off") or said(s.b, "@off_after") then return 0 end
-  for k = b, s.e - 1 do
-    if self:word(k, "@off_made") and not self:in_reason(k) and self:word_in(math.max(b, k - 5), k, "make let have") then
-      return 0
+  local function read(told)
+    if said(b, "@off", told) or said(s.b, "@off_after", told) then return 0 end
+    for k = b, s.e - 1 do
+      if self:word(k, "@off_made") and not self:in_reason(k) and self:word_in(math.max(b, k - 5), k, "make let have") then
+        return 0
+      end
     end
+    if said(b, "@on", told) then return 1 end
+    return -1
   end
-  if said(b, "@on") then return 1 end
-  return -1
+  local on = read(false)
+  if on >= 0 then return on end
+  on = read(true)
+  return on, on >= 0
+end
+
+-- True when segment s switches only by a word in a remark set aside ("LNAV, I think it is off"): the state the
+-- speaker tells, not what to set (asked where a switch would follow it).
+function m:switch_told(s)
+  local _, told = self:on_off(s)
+  return told == true
 end
 
 -- Aircraft a segment talks about: those after its trigger, else before it,
@@ -451,6 +468,18 @@ function m:acids(s)
   -- about, never dropped beside the one that does
   for _, u in ipairs(#ids > 0 and self.airline_unresolved or {}) do
     if u.b >= s.b and u.e <= s.e then self:airline_only(u) end
+  end
+  -- "the Ryanair and the Boeing climb FL260" with two Boeings flying: a type that names no one aircraft, joined by
+  -- "and" to one named or said beside one named not of it, likewise ("the American one, the 737" with AAL1960 a
+  -- 737 describes that aircraft again)
+  for _, u in ipairs(#ids > 0 and self.type_unresolved or {}) do
+    local fits_named = false
+    for _, id in ipairs(ids) do
+      for _, f in ipairs(u.ids) do fits_named = fits_named or f == id end
+    end
+    local k = self:word(u.b - 1, "the") and u.b - 2 or u.b - 1
+    if self:word(k, "to") then k = k - 1 end
+    if u.b >= s.b and u.e <= s.e and (self:word(k, "and") or not fits_named) then self:type_only(u) end
   end
   if #ids > 0 then self.subject, self.subjects = ids[1], { table.unpack(ids) } end
   return ids
@@ -1658,7 +1687,9 @@ function m:type_refs()
       end
     end
     local k = the and b - 1 or b
-    if test and self:word(k - 1, "@airline_context @aircraft_context @below @above") then test = nil end
+    if test and self:word(k - 1, "@airline_context @aircraft_context @below @above") and not self:recipient_to(k - 1) then
+      test = nil
+    end
     local fits = {}
     for _, a in ipairs(test and self.fleet or {}) do
       if a.type and test(a.type:upper()) then fits[#fits + 1] = a.id end
@@ -1711,6 +1742,19 @@ function m:type_refs()
     i = read and self:insert_ref(fits, i, e, "by_type") or i + 1
     ::next_token::
   end
+end
+
+-- True when "to" at k names who receives what a verb of lexicon.recipient_verbs gives, said before it in its
+-- sentence ("give Vienna as destination to the Ryanair and to the Embraer", "assign FL200 to the Airbus"): the
+-- aircraft after it is instructed, never a place or traffic.
+function m:recipient_to(k)
+  if not self:word(k, "to") then return false end
+  for x = k - 1, 1, -1 do
+    local t = self.t[x]
+    if t.kind == "punct" and t.text ~= "," then return false end
+    if self:word(x, "@recipient_verbs") then return true end
+  end
+  return false
 end
 
 -- A type said alone that several aircraft flying are of (type_refs): the question names them.
@@ -1936,8 +1980,9 @@ end
 -- type, an airline) and a verb of going (lexicon.compass_verbs, "that is" or "which is" before it) with a compass
 -- point ("the one heading north", "the Embraer flying south-east", "the aircraft that is going west"), or a
 -- "-bound" word before the group ("the eastbound 737", "the westbound one"). The aircraft of the group whose
--- heading lies less than lexicon.bearing_margin degrees from the point fit: exactly one is the aircraft described
--- (describe), none or several are asked about. The words are never a heading instructed.
+-- heading lies less than lexicon.bearing_margin degrees from the point fit (half that for an intercardinal point, a
+-- quarter between): exactly one, with no other of the group within one and a half times that (at most
+-- bearing_margin), is the aircraft described (describe), none or several are asked about. The words are never a heading instructed.
 function m:bearing_refs()
   local bound = false  -- (no verb of going and no "-bound" word: nothing to read)
   local words = self.words
@@ -1970,15 +2015,20 @@ function m:bearing_refs()
     if o_ids then ids = within(ids, o_ids) end  -- ("of the two Air France, the one heading west")
     if point and e then
       -- (a cardinal point, 45 degrees either side; an intercardinal, 22.5; a point between them, 11.25)
+      -- (another of the group near the sector's edge, within half the margin beyond it and at most
+      -- lexicon.bearing_margin from the point, may be the one meant: "heading southwest" with one on 225 and one
+      -- on 250, asked; one on 190 is south)
       local margin = L.bearing_margin / (point % 90 == 0 and 1 or point % 45 == 0 and 2 or 4)
-      local fits = {}
+      local band = math.min(1.5 * margin, L.bearing_margin)
+      local fits, near = {}, {}
       for _, a in ipairs(self.fleet) do
         local in_group = false
         for _, id in ipairs(ids) do in_group = in_group or id == a.id end
-        if in_group and a.hdg_deg and math.abs((a.hdg_deg - point + 540) % 360 - 180) < margin then
-          fits[#fits + 1] = a.id
-        end
+        local off = a.hdg_deg and math.abs((a.hdg_deg - point + 540) % 360 - 180)
+        if in_group and off and off < margin then fits[#fits + 1] = a.id end
+        if in_group and off and off < band then near[#near + 1] = a.id end
       end
+      if #fits == 1 and #near > 1 then fits = near end
       i = describe(self, b, e, #fits > 0 and fits or ids, #fits == 1 and fits or nil, outer)
     else
       i = i + 1

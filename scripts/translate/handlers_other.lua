@@ -704,6 +704,14 @@ return function(H, f, compass)
     if spd and spd < L.min_airborne_kt and alt and alt > 0 then
       return self:need(string.format("%s would fly at %s kt: which speed should it have?", id:upper(), f.int(spd)))
     end
+    -- (the speed's field named with no speed read, "... 14000 feet speed", "velocity fast": asked, never left out)
+    if not spd and not mach then
+      for i = s.trig + 1, s.e - 1 do
+        if self:word(i, "speed spd airspeed") and not self:in_reason(i) and not self.noted[i] then
+          return self:need(string.format("What speed should %s have?", id:upper()))
+        end
+      end
+    end
     id = id:upper()
     local cmd = "CRE " .. id .. " " .. actype .. " " .. (named_at or (f.num(lat) .. " " .. f.num(lon)))
     if hdg or alt or spd or mach then cmd = cmd .. " " .. f.num(hdg or 0) end
@@ -3186,6 +3194,9 @@ return function(H, f, compass)
   local function nav(self, s, cmd)
     local id = self:acid(s, "switch " .. cmd)
     if not id then return end
+    if self:switch_told(s) then
+      return self:need(string.format("Should %s's %s be switched on or off?", id, cmd))
+    end
     local on, now = on_off(self, s), self:state(id)
     -- "resume own navigation" for an aircraft with no route and no waypoint named: nothing to fly
     -- (the switch named, "lnav on", is set as asked; a direct-to in the request names its place); "comply with

@@ -811,8 +811,16 @@ return function(H, f, wrap, compass)
     local named
     for i = s.b, s.e - 1 do
       if named then break end
-      -- a compass word of a callsign ("Southwest 963") or a place ("northeast of") is no heading
-      if self.t[i].kind == "word" and compass(self.t[i].text) and not self.u:used(i) and not self:word(i + 1, "of") then
+      -- a compass word of a callsign ("Southwest 963", "the southwest one": inside an aircraft's reference) or a
+      -- place ("northeast of") is no heading
+      local function of_aircraft()
+        for _, r in ipairs(self.refs) do
+          if r.kind == "aircraft" and r.b <= i and i < r.e then return true end
+        end
+        return false
+      end
+      if self.t[i].kind == "word" and compass(self.t[i].text) and not self.u:used(i) and not self:word(i + 1, "of")
+          and not of_aircraft() then
         named = compass(self.t[i].text, i + 1 < s.e and self.t[i + 1].text or "", i + 2 < s.e and self.t[i + 2].text or "")
         -- a compass point leaned toward ("more to the north", "a bit further east") names no heading
         local v = named and self:find_word(math.max(s.b, i - 3), i, "@vague_direction") or i

@@ -980,6 +980,9 @@ return {
   -- verbs of one aircraft nearing another, said before "on" (or "up on") the other ("KLM12 is creeping up on the
   -- Easy", "closing on EZY45", "gaining on the Ryanair"): the other is the traffic neared, never instructed
   neared_verbs = { "closing", "gaining", "creeping", "catching", "sneaking", "bearing", "coming", "converging", "homing" },
+  -- verbs whose "to" names the aircraft that receives what they give ("give FL200 to the Embraer": handlers.lua
+  -- m:recipient_to)
+  recipient_verbs = { "give", "assign", "issue", "allocate" },
   -- words before an airline said alone ("pointing at the Lufthansa", "too close to the BA", "into the
   -- Austrian's level", "climb through the Lufthansa's level") that make it other traffic, not the aircraft instructed
   airline_context = { "at", "into", "to", "with", "near", "from", "past", "towards", "toward", "except", "but",
@@ -1086,6 +1089,10 @@ return {
                      "often" },
             frames = { "in", "for", "during" },
             possessives = { "my", "our" },
+            -- (a copula's predicate: a subject that held its copula, as the lexer keeps it ("it" of "it's"), and the
+            -- adverbs between it and the noun)
+            copular_subjects = { "it", "that", "there", "he", "she" },
+            predicate_adverbs = { "just", "only", "mostly", "merely", "simply", "all", "basically", "really" },
             nouns_after = { "the", "a", "an", "this", "that", "our", "its", "their", "his", "her", "my", "your",
                             "no", "any", "some" },
             requests = { "want", "wants", "need", "needs", "like", "would", "wish", "should", "must", "can",

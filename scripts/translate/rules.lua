@@ -2228,9 +2228,13 @@ return function(intent, rule, words)
   -- "start the next exercise from file munich_arrivals": a scenario file to load (IC), not the clock
   rule { "start", "ic", near = { 6, "file" } }
   rule { "start", "op", near = { 3, "@sim" } }
-  rule { "run", false, when = function(g, i)  -- "run in fast time": the fast time is the instruction
-    local k = g:find_word(i + 1, i + 4, "fast")
-    return k < i + 4 and g:word(k + 1, "time")
+  -- "run in fast time", "run the simulation in fast time": the fast time is the instruction (the sim named
+  -- after the verb or not)
+  rule { "run", false, when = function(g, i)
+    local k = i + 1
+    if g:word(k, "the") and g:word(k + 1, "@sim") then k = k + 2 elseif g:word(k, "it @sim") then k = k + 1 end
+    local f = g:find_word(k, k + 3, "fast")
+    return f < k + 3 and g:word(f + 1, "time")
   end }
   rule { "run advance", "ff", near = { 7, "for minutes minute seconds second hours hour min sec" },
          not_near = { 7, "real times faster x twice thrice" },

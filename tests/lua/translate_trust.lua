@@ -14017,3 +14017,50 @@ do
   asked(ex("set the zone height to 2 ft"), "a zone half height of 2 ft")
   asked(ex("create KLM7 A320 at 50.2 N 8.4 E heading 090, 6 ft, 250 knots"), "a new aircraft at 6 ft")
 end
+
+-- Cycle 53 (fwr): a remark's words never become a setting ("it's only noise" is no NOISE ON; "I believe it is off"
+-- switches nothing, and with no other switching word the switch is asked); "run the sim in fast time" is the fast
+-- time alone; a capital A spelled in a callsign is its letter; a field named in a creation is used or asked;
+-- "to" after "give"/"assign" names the aircraft instructed; a compass word inside an aircraft's reference is no
+-- heading; a compass description with a second aircraft close to the point is asked
+do
+  local _, ex = scene({ "DEFWPT TULIP 52.3 4.6", "CRE KLM77 B738 52.1 4.5 180 FL150 250",
+    "CRE SWA12 B737 52.0 4.0 315 FL200 280", "CRE EZY45 A320 52.2 4.2 290 FL220 280",
+    "CRE AZA9 E190 52.4 4.4 120 FL180 260", "CRE DLH4 B738 52.3 4.1 250 FL250 290" })
+  check_eq(ex("delete KLM77, it's only noise in this scenario"), "DEL KLM77")
+  check_eq(ex("delete KLM77, it's noise"), "DEL KLM77")
+  check_eq(ex("KLM77 switch on VNAV, I believe it is off"), "VNAV KLM77 ON")
+  asked(ex("KLM77 VNAV, I believe it's on"), "the only switching word is the state told")
+  check_eq(ex("please run the sim in fast time until I tell you"), "FF")
+  check_eq(ex("run the simulation and fast forward 2 minutes"), "OP ; FF 120")
+  check_eq(ex("create Speedbird 4 A C, a B744, at 51.5 N 0.5 W, heading 270, FL 200, 300 knots"),
+    "CRE BAW4AC B744 51.5 -0.5 270 FL200 300")
+  check_eq(ex("create Speedbird 4 C A, an A320, at 51.5 N 0.5 W, heading 270, FL 200, 300 knots"),
+    "CRE BAW4CA A320 51.5 -0.5 270 FL200 300")
+  check_eq(ex("create Speedbird 4 A B744 at 51.5 N 0.5 W, heading 270, FL 200, 300 knots"),
+    "CRE BAW4 B744 51.5 -0.5 270 FL200 300")
+  check_eq(ex("create IBE33 A320 at 40.4 N 3.7 W heading 180 altitude 9000 feet velocity 250"),
+    "CRE IBE33 A320 40.4 -3.7 180 9000 250")
+  asked(ex("create IBE33 A320 at 40.4 N 3.7 W heading 180 altitude 9000 feet velocity"), "a speed field with no speed")
+  asked(ex("create IBE33 A320 at 40.4 N 3.7 W heading 180 altitude 9000 feet speed"), "a speed field with no speed")
+  check_eq(ex("assign FL240 to the Airbus and to the Embraer"), "ALT EZY45 FL240 ; ALT AZA9 FL240")
+  asked(ex("assign FL240 to the Boeing"), "three Boeings")
+  asked(ex("the Airbus and the Boeing climb FL260"), "three Boeings beside the one Airbus")
+  check_eq(ex("the Lufthansa one, the Boeing, climb FL260"), "ALT DLH4 FL260")
+  asked(ex("the one flying northwest, descend FL190"), "315 and 290 both near northwest")
+  check_eq(ex("the one flying southeast, descend FL170"), "ALT AZA9 FL170")
+  check_eq(ex("turn the southwest one toward TULIP"), "HDG SWA12 TULIP")
+  check_eq(ex("turn the southwest one southeast"), "HDG SWA12 135")
+end
+
+-- Cycle 53 (fwr): a navaid said by its name and its kind ("the las vegas vor") is that navaid, never a fix named like
+-- one word of the name; a name no navaid of the kind said has is asked
+do
+  local _, ex = navscene({ "CRE UAL77 B738 36.3 -115.6 090 FL200 280", "CRE SKW5 CRJ9 36.0 -115.3 270 FL120 250",
+    "CRE AAL9 A321 35.9 -115.0 300 FL150 260" }, "navaids said with their kind")
+  if ex then
+    check_eq(ex("UAL77 proceed direct the las vegas vor"), "ADDWPT UAL77 LAS ; DIRECT UAL77 LAS")
+    check_eq(ex("UAL77 direct boulder city vortac"), "ADDWPT UAL77 BLD ; DIRECT UAL77 BLD")
+    asked(ex("UAL77 direct las vegas ndb"), "no NDB has that name")
+  end
+end
