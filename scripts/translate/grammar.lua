@@ -2838,6 +2838,31 @@ function G:bound_condition(k)
   return self:word(x, "@condition")
 end
 
+-- True when quantity q reads as a level: an altitude or flight level with its unit, or a plain number in thousands
+-- of feet ("passing 12000", "when level at eight thousand").
+function G.level_value(q)
+  return q.kind == "alt" or (q.kind == "plain" and q.number ~= nil and (q.number.thousand or q.value >= 1000))
+end
+
+-- True when the words straight before position b open a level condition at a clause's start (after a comma or
+-- "and"): "passing" / "reaching" / "leaving", "when level at", or a bare "above" / "below" (G:bare_bound).
+function G:level_opening(b)
+  local k = b - 1
+  local levelled = self:word(k, "at") and self:word(k - 1, "level") and self:word(k - 2, "when once")
+  if levelled then k = k - 2 end
+  if not (levelled or self:word(k, "passing reaching leaving") or self:bare_bound(k)) then return false end
+  if self:word(k - 1, "@condition") then k = k - 1 end
+  return k == 1 or self.t[k - 1].kind == "punct" or self:word(k - 1, "and")
+end
+
+-- True when "above" or "below" at k is said bare, opening a clause after a comma or "and" with no condition word
+-- ("speed 250, above FL100 speed 300"): the level of a speed limit's band, the level the aircraft crosses into it
+-- (M:at_altitude reads it only when the aircraft crosses it that way, climbing into "above", descending into
+-- "below").
+function G:bare_bound(k)
+  return self:word(k, "above below") and (k == 1 or self.t[k - 1].kind == "punct" or self:word(k - 1, "and"))
+end
+
 -- Where a condition opened at k and said after its instruction ends, its value's quantity ending at e: at the clause
 -- after a comma or "and" that holds an instruction and a word saying it runs at once (lexicon.at_once_words:
 -- "descend FL320 once it has slowed to 260 knots, and reduce to 260 knots now"), else the request's end. With no
@@ -3730,6 +3755,9 @@ function G:segments(b, e)
           -- reached or left after a condition word)
             or (q.kind == "alt" and #self:quantities(last.trig, q.b) > 0 and self:word(q.b - 1, "passing reaching leaving")
               and self:word(q.b - 2, "@condition"))
+          -- ("reduce 280, passing FL230 reduce 250", "speed 250, above FL100 speed 300", "reduce 210, when level at
+          -- 8000 reduce 190": a level passed, crossed or levelled at opening the second's clause, G:level_opening)
+            or (G.level_value(q) and tr.intent == "spd" and #self:quantities(last.trig, q.b) > 0 and self:level_opening(q.b))
         end
         -- ("reduce 270 after GAVOL speed 250": a waypoint passed after the first's value, straight before the
         -- second instruction word, is the second's condition)
@@ -3807,6 +3835,14 @@ function G:segments(b, e)
         local waited = self:word(cond, "after") and self:quantities(cond + 1, start)[1]
         if waited and waited.kind == "time" and waited.b == cond + 1 and not self:linked(cond) then cond = start end
         if cond < start then start = cond end
+        -- (", above FL100 speed 300": a bare bound before a speed's word, after the last instruction's value, opens
+        -- the speed's clause, G:bare_bound)
+        for _, q in ipairs(tr.intent == "spd" and self:quantities(last.trig + 1, start) or {}) do
+          if G.level_value(q) and self:bare_bound(q.b - 1) and #self:quantities(last.trig, q.b) > 0 then
+            start = math.min(start, q.b - 1)
+            break
+          end
+        end
         -- (", in 2 minutes turn left heading 220", "and in 2 min EZY45 descend": a wait after "in" opening the clause
         -- straight before the instruction word, after the instruction before's value, is this one's, as "after 2
         -- minutes" is)
@@ -5851,13 +5887,13 @@ function G:at_waypoint(s, spec)
       end
     end
     -- ("descend and maintain 10000, at MAPEL reduce speed to 250", "climb FL200 then after MAPEL turn left heading
-    -- 300"): a clause opened by "at", "after" or "over" and the waypoint after the instruction's value, behind a
-    -- comma or "then", closing the segment: the instruction is made, and the next one starts at the waypoint
-    -- (self.at_next: AT acid wp DO, G:parse)
+    -- 300", "climb FL170 and at FEVER increase speed to 320"): a clause opened by "at", "after" or "over" and the
+    -- waypoint after the instruction's value, behind a comma, "and" or "then", closing the segment: the instruction
+    -- is made, and the next one starts at the waypoint (self.at_next: AT acid wp DO, G:parse)
     local lead = r.b - 1
     if lead > s.trig and self:word(lead, "at after over overhead") and #self:quantities(s.trig, lead) > 0
         and self.t[lead - 1] and ((self.t[lead - 1].kind == "punct" and self.t[lead - 1].text == ",")
-          or self:word(lead - 1, "@then_words"))
+          or self:word(lead - 1, "@then_words and"))
         and self:skip_fillers(r.e) >= s.e and s.e <= #self.t and spec and spec.handler and not self:in_reason(r.b) then
       self[spec.handler](self, { intent = s.intent, b = s.b, trig = s.trig, e = lead - 1 }, spec)
       self:explain(lead - 1, r.e)

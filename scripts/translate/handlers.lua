@@ -2711,6 +2711,9 @@ function m:at_altitude(s)
   -- ("once it is above 8000 feet, accelerate": a bound closing a condition is the level crossed, G:bound_condition)
   local bound = self:find_word(b, a, "@above @below")
   if bound < a and self:bound_condition(bound) then a = bound end
+  -- ("speed 250, above FL100 speed 300": a bare bound opening a speed's clause, G:bare_bound; its direction below)
+  local bare = bound < a and s.intent == "spd" and self:bare_bound(bound)
+  if bare then a = bound end
   -- ("when it is on FL260 accelerate", German "auf": "on" after a form of "be" closing a condition is "at")
   local on = self:find_word(b, a, "on")
   if on < a and self:word(on - 1, "is it's") and self:bound_condition(on) then a = on end
@@ -2794,6 +2797,12 @@ function m:at_altitude(s)
       self:mark_used(q.b, q.e)  -- the condition's speed is not the instruction's value
       return "ATSPD " .. ids[1] .. " " .. f.int(q.value)
     end
+  end
+  -- (a bare bound is crossed into: "above" by an aircraft below the level, "below" by one above it; else asked)
+  local level_ft = groupwise or (fl_digits and q.value * 100) or q.value
+  local at_ft = bare and (self:state(ids[1]) or {}).alt_ft
+  if bare and not (at_ft and (self:word(bound, "above") and at_ft < level_ft or self:word(bound, "below") and at_ft > level_ft)) then
+    return nil
   end
   self:mark_used(q.b, q.e)  -- the condition's altitude is not the instruction's value
   if noun then self:explain(noun, noun + 1) end

@@ -117,6 +117,7 @@ local names = {
     { "piedmont", "PDT" },
     { "blue streak", "JIA" },
     { "lindbergh", "GJS" },
+    { "commutair", "UCA" },
     { "air wisconsin", "AWI" },
     { "acey", "ASQ" },  -- (ExpressJet's ICAO telephony)
     { "horizon", "QXE" },

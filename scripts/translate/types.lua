@@ -335,7 +335,15 @@ function M.spoken(text, built, phonetic)
     -- letter or name, a designator's letters, "seven" or a Boeing family's number)
     local ph = phonetic or {}
     if not (LETTERS[w] or w == "airbus" or w == "boeing" or w == "embraer" or built.makers[w] or built.prefixes[w]
-        or w == "seven" or w:match("^7%d7$") or ph[w] or (w:find("%p$") and ph[(w:gsub("%p+$", ""))])) then
+        or w == "seven" or w:match("^7%d7$") or w == "dash" or ph[w] or (w:find("%p$") and ph[(w:gsub("%p+$", ""))])) then
+      return nil
+    end
+    -- ("dash 8 four hundred", "dash eight four hundred": the Dash 8's variant in hundreds said after it, "dash 8-400")
+    if w == "dash" then
+      local function word(j) return toks[j] and not toks[j - 1]:match("%p$") and (toks[j]:lower():gsub("%p+$", "")) end
+      local name = (word(i + 1) == "8" or word(i + 1) == "eight") and DIGITS[word(i + 2) or ""]
+        and word(i + 3) == "hundred" and "dash 8-" .. DIGITS[word(i + 2)] .. "00"
+      if name and built.known[name] then return name .. (toks[i + 3]:match("%p+$") or ""), i + 4 end
       return nil
     end
     local spelled, after = spelled_designator(toks, i, built, ph)
@@ -360,18 +368,21 @@ function M.spoken(text, built, phonetic)
       after = toks[i + 2]:match("%p*$")
     end
     local family = w == "seven" and tens and TENS[tens] and DIGITS[unit or ""] == "7" and "7" .. TENS[tens] .. "7"
+    -- (the family so said, and the token after it where a variant may follow: "seven sixty-seven three hundred")
+    local fam, j
     if family and built.known["boeing " .. family] then
       best = { name = family .. (after or ""), e = e }
       maker = nil
+      if (after or "") == "" then fam, j = family, e end
     end
     -- ("triple seven 300ER", lexed "seven seven seven 300ER"; "777 300ER"; "seven four seven four hundred"): a
-    -- Boeing family said digit by digit or typed, with one of its variants said straight after it ("300ER",
-    -- "300 ER", "three hundred ER"), is that variant; the family so said alone stays as said (digits)
-    if not best then
+    -- Boeing family said digit by digit, in tens or typed, with one of its variants said straight after it
+    -- ("300ER", "300 ER", "three hundred ER"), is that variant; the family so said alone stays as said (digits)
+    if not best or fam then
       local function bare(j) return toks[j] and (toks[j]:lower():gsub("%p+$", "")) or "" end
       local function open(j) return toks[j] ~= nil and not toks[j]:match("%p$") end
-      local fam, j
-      if w:match("^7%d7$") then
+      if fam then
+      elseif w:match("^7%d7$") then
         fam, j = w, i + 1
       elseif w == "seven" and open(i) and open(i + 1) and DIGITS[bare(i + 1)] and bare(i + 2) == "seven" then
         fam, j = "7" .. DIGITS[bare(i + 1)] .. "7", i + 3
@@ -398,8 +409,13 @@ function M.spoken(text, built, phonetic)
           k = k + 1
           x, nx = nx, bare(k + 1)
         end
-        if DIGITS[x] and nx == "hundred" and #digits == 3 and not variant then
+        local hy_tens, hy_unit = x:match("^(%a+)%-(%a+)$")
+        if prefix and digits == "" and DIGITS[x] and nx == "hundred" and built.known[lead .. DIGITS[x]] then
+          digits, k = DIGITS[x], k + 2  -- ("CRJ seven hundred": the letters, then the variant's hundreds, CRJ7)
+        elseif DIGITS[x] and nx == "hundred" and #digits == 3 and not variant then
           variant, k = DIGITS[x] .. "00", k + 2
+        elseif TENS[hy_tens or ""] and DIGITS[hy_unit or ""] and DIGITS[hy_unit] ~= "0" and not variant then
+          digits, k = digits .. TENS[hy_tens] .. DIGITS[hy_unit], k + 1  -- ("e one seventy-five": E175)
         elseif #digits == 3 and not variant and short_name(built, lead .. digits, short_variant(x)) then
           variant, k = short_variant(x), k + 1  -- ("boeing seven eight seven nine": the 787-9)
         elseif variant then

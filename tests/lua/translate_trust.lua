@@ -11247,8 +11247,9 @@ end
 -- FL100" is still the speed from that level); a remark on a limit is no instruction
 do
   local _, ex = scene({ "CRE AAL22 A321 40.85 -73.60 035 9000 250" })
+  -- (a bare bound opening a speed's clause, crossed climbing into "above": the band's level, cycle 53 fus)
   check_eq(ex("AAL22 climb and maintain 17000, above one two thousand increase speed to 300 knots"),
-    "ASK I have ALT AAL22 17000 ; SPD AAL22 300. What does 'one two thousand' mean?")
+    "ALT AAL22 17000 ; ATALT AAL22 12000 SPD AAL22 300")
   asked(ex("AAL22 climb and maintain 17000 above FL120"), "a bound level beside the level cleared")
   asked(ex("AAL22 above 12000 increase speed to 300 knots"), "a bound before a speed")
   asked(ex("AAL22 reduce speed to 250 knots below 10000"), "a bound after a speed, no unit")
@@ -12015,13 +12016,14 @@ do
 end
 
 -- Cycle 49 (f117): a bound closing a condition ("once it is above 8000 feet, accelerate", "when below FL100 ...")
--- is the level crossed, which the instruction after it waits for (ATALT); a bound with no condition word stays asked
+-- is the level crossed, which the instruction after it waits for (ATALT); a bare bound before a speed is read only
+-- where the aircraft crosses into it (cycle 53, fus), and a level it will not pass is asked
 do
   local _, ex = scene({ "CRE KLM12 A320 52.3 4.7 090 4000 250" })
   check_eq(ex("Please climb KLM12 to FL150 and, once it is above 9000 feet, accelerate it to 300 knots."),
     "ALT KLM12 FL150 ; ATALT KLM12 9000 SPD KLM12 300")
   check_eq(ex("climb KLM12 to FL150, when above FL100 speed 300 knots"), "ALT KLM12 FL150 ; ATALT KLM12 FL100 SPD KLM12 300")
-  asked(ex("climb KLM12 to FL150, above 9000 feet speed 300 knots"), "a bound with no condition word")
+  check_eq(ex("climb KLM12 to FL150, above 9000 feet speed 300 knots"), "ALT KLM12 FL150 ; ATALT KLM12 9000 SPD KLM12 300")
   asked(ex("climb KLM12 to FL150 and once it is above FL200 accelerate to 300 knots"), "a level it will not pass")
 end
 
@@ -14063,4 +14065,96 @@ do
     check_eq(ex("UAL77 direct boulder city vortac"), "ADDWPT UAL77 BLD ; DIRECT UAL77 BLD")
     asked(ex("UAL77 direct las vegas ndb"), "no NDB has that name")
   end
+end
+
+-- Cycle 53 (fus): US FAA controller phraseology (JO 7110.65) typed as said, over one Chicago Center scene: a
+-- speed with a level condition after another speed, "and at FIX" opening the next instruction, a type said with
+-- its series in hundreds, CommutAir's telephony, and the clearances read already, kept
+do
+  local _, ex = scene({ "DEFWPT BOSCO 41.5 -88.5", "DEFWPT LENDY 41.7 -87.8", "DEFWPT WATSN 41.9 -88.1",
+    "DEFWPT KRENA 41.3 -87.9", "CRE AAL1036 B738 41.2 -88.0 045 FL240 300", "ADDWPT AAL1036 BOSCO",
+    "ADDWPT AAL1036 LENDY", "CRE SKW5432 CRJ7 41.3 -88.3 090 12000 280", "ADDWPT SKW5432 WATSN",
+    "CRE N731DK C172 41.6 -88.6 270 4500 110", "CRE RPA4512 E75L 41.0 -87.5 315 FL190 290", "ADDWPT RPA4512 KRENA",
+    "CRE EJA525 C56X 41.8 -88.4 180 FL230 270", "CRE JIA5301 CRJ9 41.4 -87.6 250 11000 260",
+    "CRE AWE1496 A320 41.1 -88.2 020 FL310 290", "CRE ENY3410 E75L 41.5 -87.7 200 9000 250",
+    "CRE LXJ412 CL35 41.7 -88.0 090 FL350 300", "CRE JZA823 DH8D 41.9 -87.6 300 14000 240",
+    "CRE UCA4455 E145 41.0 -88.8 090 6000 220" })
+  -- a speed band's level said bare ("above FL100 speed 300"): the level crossed into it, climbing into "above",
+  -- descending into "below"; the other way, or a level the aircraft will not pass, asked
+  check_eq(ex("Commutair forty-four fifty-five, climb and maintain flight level two four zero, above flight level one "
+    .. "zero zero speed three zero zero knots"), "ALT UCA4455 FL240 ; ATALT UCA4455 FL100 SPD UCA4455 300")
+  check_eq(ex("UCA4455 climb and maintain flight level two four zero, speed two five zero knots, above flight level "
+    .. "one zero zero speed three zero zero knots"),
+    "ALT UCA4455 FL240 ; SPD UCA4455 250 ; ATALT UCA4455 FL100 SPD UCA4455 300")
+  check_eq(ex("Commutair 4455 climb and maintain one two thousand, above one zero thousand increase speed to two eight zero"),
+    "ALT UCA4455 12000 ; ATALT UCA4455 10000 SPD UCA4455 280")
+  check_eq(ex("Cactus fourteen ninety-six, descend and maintain one one thousand, below flight level two zero zero "
+    .. "reduce speed to two five zero"), "ALT AWE1496 11000 ; ATALT AWE1496 FL200 SPD AWE1496 250")
+  check_eq(ex("Cactus 1496 descend and maintain one one thousand, reduce speed to two eight zero, below flight level two "
+    .. "zero zero speed two five zero"), "ALT AWE1496 11000 ; SPD AWE1496 280 ; ATALT AWE1496 FL200 SPD AWE1496 250")
+  asked(ex("UCA4455 climb and maintain eight thousand, above flight level one zero zero speed three zero zero knots"),
+    "a band's level the climb never reaches")
+  asked(ex("Commutair 4455 speed two five zero, below flight level one zero zero speed two two zero"),
+    "'below' for an aircraft already below it")
+  asked(ex("Cactus 1496 descend and maintain one one thousand, above flight level two zero zero speed three zero zero"),
+    "'above' for a descent: a speed kept until the level, not simulated")
+  -- a level passed or levelled at, after a first speed, opens the second speed's clause
+  check_eq(ex("American ten thirty-six, reduce speed to two eight zero, passing flight level two three zero reduce "
+    .. "speed to two five zero"), "SPD AAL1036 280 ; ATALT AAL1036 FL230 SPD AAL1036 250")
+  check_eq(ex("American 1036 reduce speed to two eight zero and passing flight level two three zero reduce speed to "
+    .. "two five zero"), "SPD AAL1036 280 ; ATALT AAL1036 FL230 SPD AAL1036 250")
+  check_eq(ex("Jazz eight twenty-three, climb and maintain one six thousand, reduce speed to two one zero, when level "
+    .. "at one six thousand reduce one niner zero"), "ALT JZA823 16000 ; SPD JZA823 210 ; ATALT JZA823 16000 SPD JZA823 190")
+  asked(ex("American 1036 reduce speed to two eight zero, two five zero"), "two speeds, no condition between")
+  -- "and at FIX" after an instruction's value opens the next instruction there (AT ... DO); off the route, or a
+  -- speed said before "at FIX" (met there or started there?), asked
+  check_eq(ex("Brickyard forty-five twelve, descend and maintain one four thousand and at KRENA reduce speed to two "
+    .. "five zero"), "ALT RPA4512 14000 ; AT RPA4512 KRENA DO SPD RPA4512 250")
+  asked(ex("Brickyard 4512 descend and maintain one four thousand and at WATSN reduce speed to two five zero"),
+    "a waypoint off the aircraft's route")
+  asked(ex("Brickyard 4512 reduce speed to two three zero at KRENA"), "a speed met at KRENA or started there")
+  -- a type said with its series in hundreds
+  check_eq(ex("create Skywest fifty-two oh one, CRJ seven hundred, at WATSN, heading zero four five, one zero thousand, "
+    .. "two five zero knots"), "CRE SKW5201 CRJ7 WATSN 45 10000 250")
+  check_eq(ex("create UPS twelve forty-four, a seven sixty-seven three hundred, at WATSN, heading zero niner zero, four "
+    .. "thousand, two one zero knots"), "CRE UPS1244 B763 WATSN 90 4000 210")
+  check_eq(ex("create Delta two fifty, a seven thirty-seven niner hundred, at BOSCO, heading one eight zero, one five "
+    .. "thousand, two eight zero knots"), "CRE DAL250 B739 BOSCO 180 15000 280")
+  check_eq(ex("create Jazz seventy-six twenty-three, dash eight four hundred, at LENDY, heading one five zero, niner "
+    .. "thousand, two two zero knots"), "CRE JZA7623 DH8D LENDY 150 9000 220")
+  check_eq(ex("create Envoy thirty-four eleven, an E one seventy-five, at KRENA, heading one eight zero, niner thousand, "
+    .. "two five zero knots"), "CRE ENY3411 E75L KRENA 180 9000 250")
+  check_eq(ex("create United twelve, a seven seventy-seven two hundred, at LENDY, heading one eight zero, flight level "
+    .. "three five zero, two eight zero knots"), "CRE UAL12 B772 LENDY 180 FL350 280")
+  asked(ex("create Skywest 5202, a CRJ three hundred, at WATSN, heading 045, 10000, 250 knots"), "no CRJ-300")
+  asked(ex("create United 13, a seven sixty-seven five hundred, at WATSN, heading 180, FL350, 280 knots"), "no 767-500")
+  asked(ex("create Jazz 7624, a dash eight five hundred, at WATSN, heading 150, 9000, 220 knots"), "no Dash 8-500")
+  asked(ex("create Delta 251, a seven thirty-seven, at BOSCO, heading 180, 15000, 280 knots"), "the 737 family alone")
+  -- CommutAir's telephony
+  check_eq(ex("Commutair forty-four fifty-five, turn left heading three six zero"), "HDG UCA4455 360 LEFT")
+  -- 7110.65 clearances read already, kept
+  check_eq(ex("American ten thirty-six, climb and maintain flight level three one zero"), "ALT AAL1036 FL310")
+  check_eq(ex("Skywest fifty-four thirty-two, cross WATSN at and maintain one zero thousand"), "AT SKW5432 WATSN ALT 10000")
+  check_eq(ex("American 1036 cross BOSCO at and maintain flight level two zero zero"), "AT AAL1036 BOSCO ALT FL200")
+  asked(ex("Skywest 5432 cross WATSN at or above one one thousand"), "only an exact constraint")
+  check_eq(ex("Execjet five twenty-five, climb and maintain flight level three five zero, when able proceed direct LENDY"),
+    "ALT EJA525 FL350 ; ADDWPT EJA525 LENDY ; DIRECT EJA525 LENDY")
+  check_eq(ex("Blue Streak fifty-three oh one, descend and maintain eight thousand, upon reaching eight thousand reduce "
+    .. "speed to two one zero"), "ALT JIA5301 8000 ; ATALT JIA5301 8000 SPD JIA5301 210")
+  check_eq(ex("Cactus 1496 reduce speed to two five zero, when slowed to two five zero descend and maintain one two "
+    .. "thousand"), "SPD AWE1496 250 ; ATSPD AWE1496 250 ALT AWE1496 12000")
+  asked(ex("Cactus fourteen ninety-six, descend and maintain flight level two four zero, when slowed to two five zero "
+    .. "descend and maintain one two thousand"), "slowed with no speed cleared")
+  check_eq(ex("Cactus 1496 increase speed to three one zero"), "SPD AWE1496 310")
+  check_eq(ex("Envoy thirty-four ten, maintain two one zero knots or greater"), "SPD ENY3410 210")
+  asked(ex("Brickyard 4512 maintain maximum forward speed"), "no speed said")
+  check_eq(ex("November seven three one delta kilo, turn right heading three six zero"), "HDG N731DK 360 RIGHT")
+  check_eq(ex("N731DK descend and maintain three thousand"), "ALT N731DK 3000")
+  check_eq(ex("Skywest 5432 climb and maintain one four thousand, upon reaching proceed direct WATSN"),
+    "ALT SKW5432 14000 ; ATALT SKW5432 14000 DIRECT SKW5432 WATSN")
+  check_eq(ex("Execjet 525 descend and maintain flight level one niner zero at two thousand feet per minute"),
+    "ALT EJA525 FL190 2000")
+  check_eq(ex("Flexjet four twelve, turn ten degrees left"), "HDG LXJ412 80 LEFT")
+  asked(ex("Flexjet 412 descend via the arrival"), "no level said")
+  asked(ex("Envoy 3410 after KRENA descend and maintain four thousand"), "KRENA off its route")
 end
