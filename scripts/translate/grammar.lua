@@ -7814,6 +7814,7 @@ function G:passage_left()
   -- noted, "the NDB", is in it)
   local nouns = "@passage_nouns @navaid_kinds @airport_nouns"
   local function carried(k) return self.taken[k] or (self.u:used(k) and not self:word(k, nouns)) end
+  if not self:said("@passage @passage_at") then return end
   for i in ipairs(self.t) do
     if (self:word(i, "@passage") or (self:word(i, "@passage_at") and self:word(self:skip_fillers(i + 1), nouns)))
         and not (explained[i] or self.noted[i] or carried(i)) and not self:in_reason(i) then
@@ -7834,6 +7835,7 @@ end
 -- on along something squawk did not read: the leftover, named to the end of its clause. ("report back on track" is
 -- the pilot's report.)
 function G:going_on_left()
+  if not self:said("@going_on") then return end
   local explained = self.explained or {}
   for i in ipairs(self.t) do
     if self:word(i, "@going_on") and not (self:word(i, "back") and not self:word(i + 1, "on"))
