@@ -2178,6 +2178,7 @@ function G:in_reason(i)
     local lead_end            -- the comma that ends a lead-in ("For the overtake case, ...")
     local toks, reason = self.t, self.reason
     local opening = self:skip_fillers(1)  -- (the request's first word)
+    local relative_said = self:said("@past_relatives")  -- (G:past_told opens on one)
     for k = 1, #toks do
       reason[k] = inside
       local t = toks[k]
@@ -2227,7 +2228,7 @@ function G:in_reason(i)
         inside, reason[k] = true, reason[k] or w == "then"
       elseif punct and t.text == "," and self:diversion_reason(k) then
         inside = true
-      elseif not start and self:past_told(k) then
+      elseif not start and relative_said and self:past_told(k) then
         -- ("resume the simulation from the point at which it was paused": the past told, nothing instructed)
         inside, reason[k] = true, true
       elseif ((w and CM_WHILE[w] and self:word(k + 1, CM_OWN))
