@@ -7625,7 +7625,7 @@ function G:unaccounted()
   -- quoted: the instruction it anchors never goes alone)
   local function letter(k)
     local x = self.t[k]
-    return x and x.kind == "word" and x.text:match("^%a$") and not explained[k] and not self.noted[k]
+    return x and x.kind == "word" and #x.text == 1 and x.text:match("^%a$") and not explained[k] and not self.noted[k]
       and not self.u:used(k)
   end
   for i = 1, #self.t do
