@@ -2217,6 +2217,7 @@ function G:in_reason(i)
     local lead_end            -- the comma that ends a lead-in ("For the overtake case, ...")
     local toks, reason = self.t, self.reason
     local opening = self:skip_fillers(1)  -- (the request's first word)
+    local relative_said = self:said("@past_relatives")  -- (G:past_told opens on one)
     for k = 1, #toks do
       reason[k] = inside
       local t = toks[k]
@@ -2266,7 +2267,7 @@ function G:in_reason(i)
         inside, reason[k] = true, reason[k] or w == "then"
       elseif punct and t.text == "," and self:diversion_reason(k) then
         inside = true
-      elseif not start and self:past_told(k) then
+      elseif not start and relative_said and self:past_told(k) then
         -- ("resume the simulation from the point at which it was paused": the past told, nothing instructed)
         inside, reason[k] = true, true
       elseif ((w and CM_WHILE[w] and self:word(k + 1, CM_OWN))
@@ -7699,7 +7700,7 @@ function G:unaccounted()
   -- quoted: the instruction it anchors never goes alone)
   local function letter(k)
     local x = self.t[k]
-    return x and x.kind == "word" and x.text:match("^%a$") and not explained[k] and not self.noted[k]
+    return x and x.kind == "word" and #x.text == 1 and x.text:match("^%a$") and not explained[k] and not self.noted[k]
       and not self.u:used(k)
   end
   for i = 1, #self.t do
@@ -7889,6 +7890,7 @@ function G:passage_left()
   -- noted, "the NDB", is in it)
   local nouns = "@passage_nouns @navaid_kinds @airport_nouns"
   local function carried(k) return self.taken[k] or (self.u:used(k) and not self:word(k, nouns)) end
+  if not self:said("@passage @passage_at") then return end
   for i in ipairs(self.t) do
     if (self:word(i, "@passage") or (self:word(i, "@passage_at") and self:word(self:skip_fillers(i + 1), nouns)))
         and not (explained[i] or self.noted[i] or carried(i)) and not self:in_reason(i) then
@@ -7909,6 +7911,7 @@ end
 -- on along something squawk did not read: the leftover, named to the end of its clause. ("report back on track" is
 -- the pilot's report.)
 function G:going_on_left()
+  if not self:said("@going_on") then return end
   local explained = self.explained or {}
   for i in ipairs(self.t) do
     if self:word(i, "@going_on") and not (self:word(i, "back") and not self:word(i + 1, "on"))

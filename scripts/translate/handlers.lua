@@ -1898,6 +1898,7 @@ end
 -- the words are asked about, naming the aircraft of the group. Said after a word of other traffic ("behind the
 -- slowest aircraft") they describe no aircraft instructed. Size words never compare (SIZE_WORDS).
 function m:described_refs()
+  if not self:said("the") then return end  -- (every description opens with "the")
   local function by_id(id)
     for _, a in ipairs(self.fleet) do
       if a.id == id then return a end
@@ -1984,6 +1985,7 @@ end
 -- quarter between): exactly one, with no other of the group within one and a half times that (at most
 -- bearing_margin), is the aircraft described (describe), none or several are asked about. The words are never a heading instructed.
 function m:bearing_refs()
+  if not self:said("the") then return end  -- (every description opens with "the")
   local bound = false  -- (no verb of going and no "-bound" word: nothing to read)
   local words = self.words
   for k = 1, #words do
@@ -2077,6 +2079,7 @@ end
 -- freighter", "the charter flight"; an aircraft noun or "one" after the word, or a freighter): the traffic does
 -- not tell it, so it is asked about, never dropped while another aircraft said beside it is instructed.
 function m:carried_refs()
+  if not self:said("@carried_described") then return end
   for i = 2, #self.t do
     local e = self:word(i, "@carried_described") and self:word(i - 1, "the") and i + 1
     if e and self:word(e, "@aircraft_nouns @group_nouns one jet jets") then e = e + 1 end
