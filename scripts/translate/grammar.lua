@@ -10685,6 +10685,21 @@ local function typed_places(text, world)
   return table.concat(out)
 end
 
+-- "tell me, on which flight level the A320 is": a comma between one of lexicon.clause_comma_verbs (with "me" or
+-- "us" after it, or alone) and one of lexicon.clause_comma_openers (or a preposition and "which") is dropped; the
+-- clause it opens is the verb's question, as written with no comma
+function G.clause_commas(text)
+  return (text:gsub("(%f[%a](%a+)%s*(%a*)),(%s+)(%a+)(%s*)(%a*)", function(said, verb, obj, space, w1, s2, w2)
+    local v, o = verb:lower(), obj:lower()
+    local told = lexicon.clause_comma_verbs[o] and "" or (o == "me" or o == "us") and lexicon.clause_comma_verbs[v]
+    if not told then return nil end
+    local a, b = w1:lower(), w2:lower()
+    if lexicon.clause_comma_openers[a] or (b == "which" and lexicon.clause_comma_prepositions[a]) then
+      return said .. space .. w1 .. s2 .. w2
+    end
+    return nil
+  end))
+end
 local DESCRIBED_AFTER = { there = true, here = true, already = true, still = true, at = true, currently = true,
   maintaining = true, cruising = true, established = true }
 -- A homework answer's label opening the text ("Q3a answer:", "Question 2:", "Answer:"): no instruction
@@ -10959,6 +10974,7 @@ function M.translate(text, world)
       if DESCRIBED_AFTER[w] then return name .. " is " .. w end
     end)
   end
+  if text:find(",", 1, true) then text = G.clause_commas(text) end
   -- "330/FL350/280kt": values written with slashes between (each part holding a digit) are values apart;
   -- a fraction "1/2" stays whole; "VLG2211 / A320 / 42.3 -2.0 / 040": a slash with spaces on both sides
   -- separates fields as a comma does

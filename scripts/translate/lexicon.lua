@@ -1212,6 +1212,9 @@ return {
   -- after a value or a dash, a clause opening with one of these says what should follow, no instruction
   purpose_modals = { "should", "will", "would", "must" },
   -- verbs that describe the scenario running after it ("the scenario feels a bit empty")
+  -- the prepositions before "the <name> scenario" that speak of the scenario the study is at, no file to load
+  -- ("we start now with the Frankfurt scenario", "aircraft for the Stuttgart scenario")
+  scenario_spoken_of = { "with", "for", "of", "in", "about", "from" },
   scenario_described = { "feels", "felt", "looks", "seems", "is", "was", "gets", "becomes", "appears", "sounds" },
   -- modals after "then" and the speaker ("Then we can see the conflict develop"): what the speaker does next
   own_modals = { "can", "could", "will", "may", "might", "should" },
@@ -2060,6 +2063,17 @@ return {
   setting_nouns = { "ahead", "lookahead", "look-ahead", "dtlook", "radius", "zoner", "zonedh", "zone", "height",
       "multiplier", "dtmult" },
   told_me_verbs = { "tell", "show", "give", "remind", "let" },
+  -- a comma written, as German, Dutch and Scandinavian punctuation requires, between a verb of telling or knowing
+  -- and the question clause it opens ("Could you tell me, on which flight level the A320 is?", "I would like to
+  -- know, which speed the Condor flies"): the verbs (with "me" or "us" after them, or alone) and the words that
+  -- open the clause, and the prepositions said before "which" ("on which"); the comma is no break between two
+  -- requests (sets)
+  clause_comma_verbs = { tell = true, say = true, show = true, know = true, explain = true, ask = true, see = true,
+    check = true },
+  clause_comma_openers = { which = true, what = true, where = true, when = true, whether = true, how = true,
+    ["if"] = true, who = true, why = true },
+  clause_comma_prepositions = { on = true, at = true, ["in"] = true, with = true, to = true, from = true,
+    ["for"] = true, by = true, over = true },
   indirect_question_adverbs = { "currently", "now", "presently", "still", "actually", "just" },
   wait_hedges = { "about", "around", "roughly", "approximately", "nearly", "almost", "just", "maybe" },
   -- a time said in words the quantities do not read (G:spoken_durations): one unit after "a" or "an" ("a minute",

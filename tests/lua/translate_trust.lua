@@ -13993,3 +13993,36 @@ do
   check_eq(ex("KL204 descend FL150 and on reaching fly direct TULIP"), "ALT KL204 FL150 ; ATALT KL204 FL150 DIRECT KL204 TULIP")
   asked(ex("KL204 on reaching route direct TULIP"), "no level cleared to reach")
 end
+
+-- Cycle 53 (f148): a question about what an aircraft does with an adverb of time between it and "doing" ("what is
+-- the Edelweiss actually doing?", German "aktuell": at present) shows it, as without the adverb
+do
+  local _, ex = scene({ "CRE EDW14 A320 47.0 8.0 090 FL200 260", "CRE SWR2 A333 47.5 8.5 270 FL300 280" })
+  check_eq(ex("What is the Edelweiss actually doing?"), "POS EDW14")
+  check_eq(ex("what is SWR2 currently doing"), "POS SWR2")
+  check_eq(ex("What is the Swiss now doing?"), "POS SWR2")
+  asked(ex("What is the Condor actually doing?"), "no Condor flying")
+end
+
+-- Cycle 53 (f148): a comma between a verb of telling or knowing and the question clause it opens (German
+-- punctuation: "tell me, on which flight level ...") is no break; the clause is that verb's question
+do
+  local _, ex = scene({ "CRE EDW14 A320 47.0 8.0 090 FL200 260", "CRE SWR2 A333 47.5 8.5 270 FL300 280" })
+  check_eq(ex("Could you tell me, at which altitude the Edelweiss is?"), "POS EDW14")
+  check_eq(ex("I would like to know, on which level the Swiss flies."), "POS SWR2")
+  check_eq(ex("Please tell me, which performance model squawk uses."), "PERF")
+  asked(ex("Could you tell me, on which flight level the Condor is?"), "no Condor flying")
+end
+
+-- Cycle 53 (f148): "the <name> scenario" said after "with", "for", "of", "in" ("We start now with the Zurich
+-- scenario.", "Now we come to the Basel scenario.") is the scenario the study is at, no file to load; after
+-- "load", "switch to" or as the object of "start" the file is still asked
+do
+  local _, ex = scene({ "CRE EDW14 A320 47.0 8.0 090 FL200 260" })
+  check_eq(ex("We begin now with the Zurich scenario of the experiment. Please let the Edelweiss climb to FL 240."),
+    "ALT EDW14 FL240")
+  check_eq(ex("Now we come to the Basel scenario. Please let the Edelweiss descend to FL 120."), "ALT EDW14 FL120")
+  asked(ex("Please switch to the Basel scenario."), "a scenario to load")
+  asked(ex("Start the Basel scenario."), "a scenario to load")
+  asked(ex("Please load the Zurich scenario and let the Edelweiss climb to FL 240."), "a scenario to load")
+end
