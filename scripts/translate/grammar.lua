@@ -8439,6 +8439,30 @@ function G:infinitive_after_condition()
   end
 end
 
+-- "accelerate the KLM to 300 knots, and when it has reached 300 knots, it shall climb to FL 350": after a condition
+-- set off by commas (its clause opening with a word of lexicon.condition, after "and", "then" or "only"), the main
+-- clause's subject and modal in the German word order ("it shall", "he should", "they will", "both shall", "let it";
+-- lexicon.main_clause_subjects and lexicon.main_clause_modals) before the instruction word it holds are the
+-- sentence's grammar, no words of their own: fillers, so the instruction reads with its condition.
+function G:subject_after_condition()
+  if not self:said("@condition") then return end
+  for k = 3, #self.t - 2 do
+    if self.t[k - 1].text == "," and (self:word(k, "@main_clause_subjects") or self:word(k, "let")) then
+      local v = self:word(k, "let") and self:word(k + 1, "@main_clause_subjects") and k + 2
+        or not self:word(k, "let") and self:word(k + 1, "@main_clause_modals") and k + 2
+      if v and self:intent_at(v) then
+        local c = k - 2
+        while c > 1 and self.t[c - 1].kind ~= "punct" do c = c - 1 end
+        local w = c
+        while self:word(w, "and then only") do w = w + 1 end
+        if self:word(w, "@condition") and (c == 1 or self.t[c - 1].text == ",") then
+          for x = k, v - 1 do self:blank(x) end
+        end
+      end
+    end
+  end
+end
+
 -- "roger Mayday, descend FL100", "pan pan acknowledged, turn left heading 210", "emergency descent approved,
 -- descend and maintain 10000": a distress or urgency call acknowledged, or a request granted
 -- (lexicon.acknowledged), is set aside: no command, the instructions beside it read alone. The call's words
@@ -11108,6 +11132,7 @@ function M.translate(text, world)
   g:described_refs()
   for _, id in ipairs(g:same_for()) do same[#same + 1] = id end
   g:bearing_refs()
+  g:created_just_said()
   g:creation_refs()
   g:carried_refs()
   g:prefix_refs()
@@ -11148,6 +11173,7 @@ function M.translate(text, world)
   g:aircraft_kept()
   g:kept_present()
   g:infinitive_after_condition()
+  g:subject_after_condition()
   g:acknowledged()
   g:stations()
   g:exercise_names()

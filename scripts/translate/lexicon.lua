@@ -634,6 +634,10 @@ return {
   instruction_nouns = { "speed", "spd", "altitude", "alt", "level", "fl", "flight", "heading", "hdg", "mach" },
   -- words that open a condition: "when AC01 reaches FL200, ..."
   condition = { "when", "once", "after" },
+  -- the main clause's subject and modal after a condition, German word order ("when it has reached 300 knots, it
+  -- shall climb to FL350"; G:subject_after_condition)
+  main_clause_subjects = { "it", "he", "she", "they", "both" },
+  main_clause_modals = { "shall", "should", "will", "must", "can" },
   -- words that, opening the clause after a diversion and its comma, make it no reason but when or where it
   -- happens ("divert to EDDK, at TAU", "send it to MUC, after KERAX": asked; grammar.lua G:diversion_reason)
   diversion_not_reason = { "at", "after", "over", "passing", "abeam", "when", "once", "before", "by", "via",
@@ -902,6 +906,9 @@ return {
   created_verbs = { "create", "created", "make", "made", "add", "added", "spawn", "spawned", "generate", "put", "place",
       "enter" },
   created_by = { "i", "we", "you", "i've", "we've", "you've" },
+  -- the adverbs before "created" that say the aircraft was just created ("the before created aircraft", German
+  -- "das vorher erstellte"; "the newly created one"; handlers' created_just_said)
+  created_just = { "before", "just", "newly", "previously", "recently", "earlier" },
   created_order = { last = true, latest = true, recently = true, first = false, earliest = false },
   -- what an aircraft carries, said after "the" to name it ("the cargo aircraft", "the freighter"): the traffic
   -- tells no such thing, so the words are asked about (an airline or type said with them names the aircraft:
