@@ -8517,6 +8517,30 @@ function G:infinitive_after_condition()
   end
 end
 
+-- "accelerate the KLM to 300 knots, and when it has reached 300 knots, it shall climb to FL 350": after a condition
+-- set off by commas (its clause opening with a word of lexicon.condition, after "and", "then" or "only"), the main
+-- clause's subject and modal in the German word order ("it shall", "he should", "they will", "both shall", "let it";
+-- lexicon.main_clause_subjects and lexicon.main_clause_modals) before the instruction word it holds are the
+-- sentence's grammar, no words of their own: fillers, so the instruction reads with its condition.
+function G:subject_after_condition()
+  if not self:said("@condition") then return end
+  for k = 3, #self.t - 2 do
+    if self.t[k - 1].text == "," and (self:word(k, "@main_clause_subjects") or self:word(k, "let")) then
+      local v = self:word(k, "let") and self:word(k + 1, "@main_clause_subjects") and k + 2
+        or not self:word(k, "let") and self:word(k + 1, "@main_clause_modals") and k + 2
+      if v and self:intent_at(v) then
+        local c = k - 2
+        while c > 1 and self.t[c - 1].kind ~= "punct" do c = c - 1 end
+        local w = c
+        while self:word(w, "and then only") do w = w + 1 end
+        if self:word(w, "@condition") and (c == 1 or self.t[c - 1].text == ",") then
+          for x = k, v - 1 do self:blank(x) end
+        end
+      end
+    end
+  end
+end
+
 -- "roger Mayday, descend FL100", "pan pan acknowledged, turn left heading 210", "emergency descent approved,
 -- descend and maintain 10000": a distress or urgency call acknowledged, or a request granted
 -- (lexicon.acknowledged), is set aside: no command, the instructions beside it read alone. The call's words
@@ -10866,6 +10890,21 @@ local function typed_places(text, world)
   return table.concat(out)
 end
 
+-- "tell me, on which flight level the A320 is": a comma between one of lexicon.clause_comma_verbs (with "me" or
+-- "us" after it, or alone) and one of lexicon.clause_comma_openers (or a preposition and "which") is dropped; the
+-- clause it opens is the verb's question, as written with no comma
+function G.clause_commas(text)
+  return (text:gsub("(%f[%a](%a+)%s*(%a*)),(%s+)(%a+)(%s*)(%a*)", function(said, verb, obj, space, w1, s2, w2)
+    local v, o = verb:lower(), obj:lower()
+    local told = lexicon.clause_comma_verbs[o] and "" or (o == "me" or o == "us") and lexicon.clause_comma_verbs[v]
+    if not told then return nil end
+    local a, b = w1:lower(), w2:lower()
+    if lexicon.clause_comma_openers[a] or (b == "which" and lexicon.clause_comma_prepositions[a]) then
+      return said .. space .. w1 .. s2 .. w2
+    end
+    return nil
+  end))
+end
 local DESCRIBED_AFTER = { there = true, here = true, already = true, still = true, at = true, currently = true,
   maintaining = true, cruising = true, established = true }
 -- A homework answer's label opening the text ("Q3a answer:", "Question 2:", "Answer:"): no instruction
@@ -11140,6 +11179,7 @@ function M.translate(text, world)
       if DESCRIBED_AFTER[w] then return name .. " is " .. w end
     end)
   end
+  if text:find(",", 1, true) then text = G.clause_commas(text) end
   -- "330/FL350/280kt": values written with slashes between (each part holding a digit) are values apart;
   -- a fraction "1/2" stays whole; "VLG2211 / A320 / 42.3 -2.0 / 040": a slash with spaces on both sides
   -- separates fields as a comma does
@@ -11273,6 +11313,7 @@ function M.translate(text, world)
   g:described_refs()
   for _, id in ipairs(g:same_for()) do same[#same + 1] = id end
   g:bearing_refs()
+  g:created_just_said()
   g:creation_refs()
   g:carried_refs()
   g:prefix_refs()
@@ -11313,6 +11354,7 @@ function M.translate(text, world)
   g:aircraft_kept()
   g:kept_present()
   g:infinitive_after_condition()
+  g:subject_after_condition()
   g:acknowledged()
   g:stations()
   g:exercise_names()

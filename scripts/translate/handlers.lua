@@ -2075,6 +2075,30 @@ function m:creation_refs()
   end
 end
 
+-- "create a Eurowings A320 ... and let the before created aircraft climb to FL 200", "..., then turn the newly
+-- created plane left", "... and let the new aircraft climb": "the", perhaps a word of lexicon.created_just, a verb of
+-- creating or "new", and an aircraft noun, said after the request created exactly one aircraft (one
+-- creation verb, one type named after it), name that new aircraft as "it" would: the words are fillers, so the
+-- instruction is the new aircraft's. With two created, or none, they are read as before (a description, asked).
+function m:created_just_said()
+  if not self:said("@creation_verbs") then return end
+  for i = 2, #self.t - 2 do
+    if self:word(i, "the") then
+      local v = self:word(i + 1, "@created_just") and i + 2 or i + 1
+      local n = self:word(v, "@created_verbs new") and v + 1
+      if n and self:word(n, "@aircraft_nouns") then
+        local made, at = 0, nil
+        for k = 1, i - 1 do
+          if self:word(k, "@creation_verbs") then made, at = made + 1, at or k end
+        end
+        if made == 1 and #self:refs_in(at, i, "type") == 1 then
+          for k = i, n do self:blank(k) end
+        end
+      end
+    end
+  end
+end
+
 -- An aircraft named after "the" by what it carries alone (lexicon.carried_described: "the cargo aircraft", "the
 -- freighter", "the charter flight"; an aircraft noun or "one" after the word, or a freighter): the traffic does
 -- not tell it, so it is asked about, never dropped while another aircraft said beside it is instructed.

@@ -634,6 +634,10 @@ return {
   instruction_nouns = { "speed", "spd", "altitude", "alt", "level", "fl", "flight", "heading", "hdg", "mach" },
   -- words that open a condition: "when AC01 reaches FL200, ..."
   condition = { "when", "once", "after" },
+  -- the main clause's subject and modal after a condition, German word order ("when it has reached 300 knots, it
+  -- shall climb to FL350"; G:subject_after_condition)
+  main_clause_subjects = { "it", "he", "she", "they", "both" },
+  main_clause_modals = { "shall", "should", "will", "must", "can" },
   -- words that, opening the clause after a diversion and its comma, make it no reason but when or where it
   -- happens ("divert to EDDK, at TAU", "send it to MUC, after KERAX": asked; grammar.lua G:diversion_reason)
   diversion_not_reason = { "at", "after", "over", "passing", "abeam", "when", "once", "before", "by", "via",
@@ -905,6 +909,9 @@ return {
   created_verbs = { "create", "created", "make", "made", "add", "added", "spawn", "spawned", "generate", "put", "place",
       "enter" },
   created_by = { "i", "we", "you", "i've", "we've", "you've" },
+  -- the adverbs before "created" that say the aircraft was just created ("the before created aircraft", German
+  -- "das vorher erstellte"; "the newly created one"; handlers' created_just_said)
+  created_just = { "before", "just", "newly", "previously", "recently", "earlier" },
   created_order = { last = true, latest = true, recently = true, first = false, earliest = false },
   -- what an aircraft carries, said after "the" to name it ("the cargo aircraft", "the freighter"): the traffic
   -- tells no such thing, so the words are asked about (an airline or type said with them names the aircraft:
@@ -1222,6 +1229,9 @@ return {
   -- after a value or a dash, a clause opening with one of these says what should follow, no instruction
   purpose_modals = { "should", "will", "would", "must" },
   -- verbs that describe the scenario running after it ("the scenario feels a bit empty")
+  -- the prepositions before "the <name> scenario" that speak of the scenario the study is at, no file to load
+  -- ("we start now with the Frankfurt scenario", "aircraft for the Stuttgart scenario")
+  scenario_spoken_of = { "with", "for", "of", "in", "about", "from" },
   scenario_described = { "feels", "felt", "looks", "seems", "is", "was", "gets", "becomes", "appears", "sounds" },
   -- modals after "then" and the speaker ("Then we can see the conflict develop"): what the speaker does next
   own_modals = { "can", "could", "will", "may", "might", "should" },
@@ -2070,6 +2080,17 @@ return {
   setting_nouns = { "ahead", "lookahead", "look-ahead", "dtlook", "radius", "zoner", "zonedh", "zone", "height",
       "multiplier", "dtmult" },
   told_me_verbs = { "tell", "show", "give", "remind", "let" },
+  -- a comma written, as German, Dutch and Scandinavian punctuation requires, between a verb of telling or knowing
+  -- and the question clause it opens ("Could you tell me, on which flight level the A320 is?", "I would like to
+  -- know, which speed the Condor flies"): the verbs (with "me" or "us" after them, or alone) and the words that
+  -- open the clause, and the prepositions said before "which" ("on which"); the comma is no break between two
+  -- requests (sets)
+  clause_comma_verbs = { tell = true, say = true, show = true, know = true, explain = true, ask = true, see = true,
+    check = true },
+  clause_comma_openers = { which = true, what = true, where = true, when = true, whether = true, how = true,
+    ["if"] = true, who = true, why = true },
+  clause_comma_prepositions = { on = true, at = true, ["in"] = true, with = true, to = true, from = true,
+    ["for"] = true, by = true, over = true },
   indirect_question_adverbs = { "currently", "now", "presently", "still", "actually", "just" },
   wait_hedges = { "about", "around", "roughly", "approximately", "nearly", "almost", "just", "maybe" },
   -- a time said in words the quantities do not read (G:spoken_durations): one unit after "a" or "an" ("a minute",

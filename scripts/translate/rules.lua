@@ -1734,11 +1734,16 @@ return function(intent, rule, words)
   rule { "where", "pos", next = "is are 's" }
   rule { "where's wheres", "pos" }  -- ("wheres the speedbird": typed without the apostrophe)
   rule { "doing", "pos", prev = { 4, "what what's whats" } }  -- "what's klm12 doing"
-  -- "what's Qantas one four one doing", "what is Velocity 923 doing": a callsign said in words of any length
+  -- "what's Qantas one four one doing", "what is Velocity 923 doing": a callsign said in words of any length;
+  -- at most two of lexicon.indirect_question_adverbs between it and "doing" ("what is the Emirates actually
+  -- doing?", German "aktuell": at present)
   rule { "doing", "pos", when = function(g, i)
+    local e = i
+    while e > i - 2 and g:word(e - 1, "@indirect_question_adverbs") do e = e - 1 end
     for _, r in ipairs(g.refs) do
-      if r.kind == "aircraft" and r.e == i then
-        local k = g:word(r.b - 1, "is") and r.b - 2 or r.b - 1
+      if r.kind == "aircraft" and r.e == e then
+        local k = g:word(r.b - 1, "the") and r.b - 2 or r.b - 1
+        k = g:word(k, "is") and k - 1 or k
         -- (a spoken callsign's reference may take in the question's words before it: "what is LOT two eight")
         return g:word(k, "what what's whats") or g:word(r.b, "what what's whats")
       end
@@ -2352,6 +2357,17 @@ return function(intent, rule, words)
       if g:word(k, "this that it here") and g:word(k + 1, "is was the our") then return true end
     end
     return false
+  end }
+  -- "We start now with the Frankfurt scenario of our study.", "Now we come to the Munich scenario.", "some aircraft
+  -- for the Stuttgart scenario": a scenario named by one word after "the" or "our", said after one of
+  -- lexicon.scenario_spoken_of ("to" only after "come", "came", "coming"), is the one the study is at, no file to
+  -- load (unless a file is named after it, or a verb of loading or switching is said)
+  rule { "scenario", false, not_near = { 6, "load open ic switch change" }, when = function(g, i)
+    if not g:word(i - 2, "the our") or g.t[i - 1].kind ~= "word" then return false end
+    for k = i + 1, math.min(#g.t, i + 3) do
+      if g.t[k].raw:find("[%./]") and g.t[k].kind ~= "punct" then return false end
+    end
+    return g:word(i - 3, "@scenario_spoken_of") or g:word(i - 3, "to") and g:word(i - 4, "come came coming")
   end }
   -- "run the scenario 5 times faster": the scenario running, at a rate, no file to load
   rule { "scenario", false, prev = { 2, "run speed" }, near = { 3, "times faster slower quicker" } }

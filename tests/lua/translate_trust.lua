@@ -14158,3 +14158,63 @@ do
   asked(ex("Flexjet 412 descend via the arrival"), "no level said")
   asked(ex("Envoy 3410 after KRENA descend and maintain four thousand"), "KRENA off its route")
 end
+
+-- Cycle 53 (f148): a question about what an aircraft does with an adverb of time between it and "doing" ("what is
+-- the Edelweiss actually doing?", German "aktuell": at present) shows it, as without the adverb
+do
+  local _, ex = scene({ "CRE EDW14 A320 47.0 8.0 090 FL200 260", "CRE SWR2 A333 47.5 8.5 270 FL300 280" })
+  check_eq(ex("What is the Edelweiss actually doing?"), "POS EDW14")
+  check_eq(ex("what is SWR2 currently doing"), "POS SWR2")
+  check_eq(ex("What is the Swiss now doing?"), "POS SWR2")
+  asked(ex("What is the Condor actually doing?"), "no Condor flying")
+end
+
+-- Cycle 53 (f148): a comma between a verb of telling or knowing and the question clause it opens (German
+-- punctuation: "tell me, on which flight level ...") is no break; the clause is that verb's question
+do
+  local _, ex = scene({ "CRE EDW14 A320 47.0 8.0 090 FL200 260", "CRE SWR2 A333 47.5 8.5 270 FL300 280" })
+  check_eq(ex("Could you tell me, at which altitude the Edelweiss is?"), "POS EDW14")
+  check_eq(ex("I would like to know, on which level the Swiss flies."), "POS SWR2")
+  check_eq(ex("Please tell me, which performance model squawk uses."), "PERF")
+  asked(ex("Could you tell me, on which flight level the Condor is?"), "no Condor flying")
+end
+
+-- Cycle 53 (f148): "the <name> scenario" said after "with", "for", "of", "in" ("We start now with the Zurich
+-- scenario.", "Now we come to the Basel scenario.") is the scenario the study is at, no file to load; after
+-- "load", "switch to" or as the object of "start" the file is still asked
+do
+  local _, ex = scene({ "CRE EDW14 A320 47.0 8.0 090 FL200 260" })
+  check_eq(ex("We begin now with the Zurich scenario of the experiment. Please let the Edelweiss climb to FL 240."),
+    "ALT EDW14 FL240")
+  check_eq(ex("Now we come to the Basel scenario. Please let the Edelweiss descend to FL 120."), "ALT EDW14 FL120")
+  asked(ex("Please switch to the Basel scenario."), "a scenario to load")
+  asked(ex("Start the Basel scenario."), "a scenario to load")
+  asked(ex("Please load the Zurich scenario and let the Edelweiss climb to FL 240."), "a scenario to load")
+end
+
+-- Cycle 53 (f148): after a condition set off by commas, the main clause's subject and modal in German word order
+-- ("..., when it has reached 300 knots, it shall climb to FL 350", "..., let it ...") are the sentence's grammar:
+-- the instruction waits for the condition; another aircraft named there is still asked
+do
+  local _, ex = scene({ "CRE SWR2 A333 47.5 8.5 270 FL300 280", "CRE EDW14 A320 47.0 8.0 090 FL200 260" })
+  check_eq(ex("Please let the Swiss slow down to 250 knots, and when it has reached 250 knots, it should descend to FL 260."),
+    "SPD SWR2 250 ; ATSPD SWR2 250 ALT SWR2 FL260")
+  check_eq(ex("Please let the Edelweiss climb to FL 240, and when it is at FL 240, let it turn right heading 180."),
+    "ALT EDW14 FL240 ; ATALT EDW14 FL240 HDG EDW14 180 RIGHT")
+  check_eq(ex("When the Swiss has reached FL 320, it shall reduce to 260 knots."), "ATALT SWR2 FL320 SPD SWR2 260")
+  asked(ex("Please let the Swiss slow down to 250 knots, and when it has reached 250 knots, the Edelweiss shall climb to FL 240."),
+    "another aircraft after the condition")
+end
+
+-- Cycle 53 (f148): "the before created aircraft", "the newly created plane", "the new aircraft" after a request that
+-- created exactly one aircraft is that new aircraft; with two created, or none, it is asked
+do
+  local _, ex = scene({ "CRE SWR2 A333 47.5 8.5 270 FL300 280" })
+  check_eq(ex("Please create an Edelweiss A320 with callsign EDW31 at 47.2 N 8.1 E, heading 090, FL 150, 260 knots, and let the before created aircraft climb to FL 220."),
+    "CRE EDW31 A320 47.2 8.1 90 FL150 260 ; ALT EDW31 FL220")
+  check_eq(ex("Please create EDW31, an A320, at 47.2 N 8.1 E, heading 090, FL 150, 260 knots, and turn the newly created plane left heading 060."),
+    "CRE EDW31 A320 47.2 8.1 90 FL150 260 ; HDG EDW31 60 LEFT")
+  asked(ex("Please let the before created aircraft climb to FL 220."), "no aircraft created in the request")
+  asked(ex("Please create EDW31 A320 at 47.2 N 8.1 E, heading 090, FL 150, 260 knots and EDW32 A320 at 47.3 N 8.1 E, heading 090, FL 170, 260 knots, and let the before created aircraft climb to FL 220."),
+    "two aircraft created")
+end
