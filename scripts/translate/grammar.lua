@@ -9154,9 +9154,12 @@ function G:skipped_on_direct()
     end
     for _, r in ipairs(id and self.refs or {}) do
       -- ("direct SLI, skip PDZ", "skipping the Paradise VOR": a verb of skipping before the place, which must be
-      -- one the direct-to skips too)
+      -- one the direct-to skips too, unless it is deleted: "direct BRAIN, then skip LAM on the route")
       local v = self:word(r.b - 1, "the") and r.b - 2 or r.b - 1
-      if r.kind == "waypoint" and not before[r.name:upper()] and self:word(v, "skip skipping bypass bypassing omit omitting") then
+      local deleted = false
+      for _, o in ipairs(self.out) do deleted = deleted or o:upper() == ("DELWPT " .. id .. " " .. r.name):upper() end
+      if r.kind == "waypoint" and not before[r.name:upper()] and not deleted
+          and self:word(v, "skip skipping bypass bypassing omit omitting") then
         return self:need(string.format("I have %s, which skips only the waypoints before %s on %s's route; %s is "
           .. "not one of them. Should %s be deleted from the route, or is another direct-to meant?",
           table.concat(self.out, " ; "), to, id, r.name, r.name))
