@@ -1586,6 +1586,8 @@ local function written_forms(text, world)
     if DIGIT_WORDS[d:lower()] then return d .. " " .. d .. " " .. d end
     return nil
   end)
+  -- ("the triple 7", "Egyptair triple 7": one digit typed, the three of them)
+  where("triple", "%f[%a][Tt][Rr][Ii][Pp][Ll][Ee]%s+(%d)%f[^%w.,]", "%1%1%1")
   where("ray", "%f[%a]([Xx])[%- ]([Rr][Aa][Yy])%f[%A]", "%1%2")
   where("trot", "%f[%a]([Ff][Oo][Xx])[%- ]([Tt][Rr][Oo][Tt])%f[%A]", "%1%2")
   where("nine her", "%f[%a]([Nn][Ii][Nn])[Ee] [Hh][Ee][Rr]%f[%A]", "%1er")
@@ -4990,8 +4992,15 @@ function G:trailing_level(s)
   -- (three digits alone, the flight level this request cleared an aircraft to: "..., when he is at 340")
   local given = q and self:level_given(q)
   if given then q = { kind = "alt", value = given, fl = true, b = q.b, e = q.e } end
+  -- (digits typed with no unit after "after" or a word of passing, whole hundreds from 2400 to 45000: feet, "speed
+  -- 250 after 10000", "..., after passing 12000"; "after 1200" may be a time of day, asked)
+  if q and q.kind == "plain" and not q.fl and q.number and q.number.typed and q.value >= 2400 and q.value <= 45000
+      and q.value % 100 == 0 then
+    q = { kind = "alt", value = q.value, fl = false, b = q.b, e = q.e }
+  end
   if not q or not (q.kind == "alt" or (q.kind == "plain" and q.fl)) then return nil end
-  local reached = bare
+  -- ("250 after 10000": the level straight after "after" is passed)
+  local reached = bare or (self:word(c, "after") and q.b == self:skip_fillers(c + 1))
   for i = c + 1, q.b - 1 do
     if self:word(i, "reaches reaching reach passes passing gets get at through below above crosses crossing") then
       reached = true
@@ -6963,7 +6972,8 @@ end
 -- that identifies it ("the Easy that's just departed Luton", "the Ryanair which left Dublin"): a word of `relatives`
 -- before it, only words of `relative_fill` between; or a pronoun of `narrated` with "just" among those words ("It
 -- has just departed Schiphol").
-function G:relative_departure(i)
+-- lexicon.described_places' word lists of a relative clause, as sets
+function G:relative_departure_sets()
   local L = lexicon.described_places
   local R = G.relative_sets
   if not R then
@@ -6971,6 +6981,10 @@ function G:relative_departure(i)
       narrated = set_of(L.narrated) }
     G.relative_sets = R
   end
+  return R
+end
+function G:relative_departure(i)
+  local R = self:relative_departure_sets()
   local words = self.words
   if not (words[i] and R.departs[words[i]]) then return false end
   local k, just = i - 1, false
@@ -6979,6 +6993,44 @@ function G:relative_departure(i)
     k = k - 1
   end
   return words[k] ~= nil and (R.relatives[words[k]] == true or (just and R.narrated[words[k]] == true))
+end
+
+-- The span [b, e) of words from i that say of the aircraft named straight before them that it has just left the
+-- ground, to identify it, no place said: a phrase of lexicon.described_places.departs_alone at i, after the
+-- aircraft's reference or after a word of `relatives` (words of `relative_fill` between) that follows it, with
+-- punctuation or the request's end after ("the Southwest that just took off, climb ...", "the United departing,
+-- climb ..."); nil otherwise.
+function G:departure_described(i)
+  local L = lexicon.described_places
+  local D = G.departs_alone
+  if not D then
+    D = {}
+    for _, p in ipairs(L.departs_alone) do
+      local words = {}
+      for x in p:gmatch("%S+") do words[#words + 1] = x end
+      D[words[1]] = D[words[1]] or {}
+      table.insert(D[words[1]], words)
+    end
+    G.departs_alone = D
+  end
+  local words = self.words
+  local phrases = words[i] and D[words[i]]
+  if not phrases then return nil end
+  local e
+  for _, p in ipairs(phrases) do
+    local ok = true
+    for x = 2, #p do ok = ok and words[i + x - 1] == p[x] end
+    if ok then e = i + #p end
+  end
+  if not e or (self.t[e] and self.t[e].kind ~= "punct") then return nil end
+  local R = self:relative_departure_sets()
+  local k = i - 1
+  while k > i - 4 and words[k] and R.fill[words[k]] do k = k - 1 end
+  if words[k] and R.relatives[words[k]] then k = k - 1 end
+  for _, r in ipairs(self:refs_in(math.max(1, k - 4), k + 1, "aircraft")) do
+    if r.e == k + 1 then return k + 1, e end
+  end
+  return nil
 end
 
 -- lexicon.asides_alone by their first word, each as its words
@@ -7190,6 +7242,9 @@ function G:explained_spans(issued, kinds)
     for k = i - 2, place_e and i - 1 or i - 3 do
       if self:relative_departure(k) then for x = k, i - 1 do inside[x] = true end end
     end
+    -- ("the Southwest that just took off, climb ...": the relative clause with no place, G:departure_described)
+    local dep_b, dep_e = self:departure_described(i)
+    for x = dep_b or 0, dep_b and dep_e - 1 or -1 do inside[x] = true end
     -- "climb FL360, not above": the level said is a limit too, when nothing follows in its clause ("not
     -- above FL370" names another level, asked about)
     if w == "not" and (nw == "above" or nw == "below") then
@@ -9254,6 +9309,17 @@ function G:skipped_on_direct()
       before[w:upper()] = true
     end
     for _, r in ipairs(id and self.refs or {}) do
+      -- ("direct SLI, skip PDZ", "skipping the Paradise VOR": a verb of skipping before the place, which must be
+      -- one the direct-to skips too, unless it is deleted: "direct BRAIN, then skip LAM on the route")
+      local v = self:word(r.b - 1, "the") and r.b - 2 or r.b - 1
+      local deleted = false
+      for _, o in ipairs(self.out) do deleted = deleted or o:upper() == ("DELWPT " .. id .. " " .. r.name):upper() end
+      if r.kind == "waypoint" and not before[r.name:upper()] and not deleted
+          and self:word(v, "skip skipping bypass bypassing omit omitting") then
+        return self:need(string.format("I have %s, which skips only the waypoints before %s on %s's route; %s is "
+          .. "not one of them. Should %s be deleted from the route, or is another direct-to meant?",
+          table.concat(self.out, " ; "), to, id, r.name, r.name))
+      end
       if r.kind == "waypoint" and (r.b == 1 or self.t[r.b - 1].kind == "punct") then
         local e, said = r.e, {}
         while self:word(e, skip) do said[self.words[e]] = true; e = e + 1 end
@@ -9917,6 +9983,21 @@ do
   G.IATA_TYPES = {}
   for _, d in ipairs(TYPES.designators) do G.IATA_TYPES[d:upper()] = true end
 end
+
+-- The ICAO code of the large airport whose IATA code (names.iata_airports) is the word at k, where a place is
+-- said: typed in capitals ("send it to SFO"), or in lower case when it is no English word (squawk's, or
+-- lexicon.iata_words: "send united 1725 to sfo"; never "sea", "add", "man"); nil otherwise.
+G.IATA_WORDS = set_of(lexicon.iata_words)
+function G:iata_airport_at(k)
+  local t = self.t[k]
+  if t == nil or t.kind ~= "word" or not t.raw:match("^%a%a%a$") then return nil end
+  if t.raw:match("^%u%u%u$") then return G.IATA_AIRPORTS[t.raw] end
+  if t.raw:match("^%l%l%l$") and not G.IATA_WORDS[t.raw] and not self:known_word(k) then
+    return G.IATA_AIRPORTS[t.raw:upper()]
+  end
+  return nil
+end
+
 function G.iata_ids(text, fleet)
   if #fleet == 0 or not text:find("%u%u%d") then return text end
   local ids, own = {}, {}
@@ -10566,10 +10647,11 @@ end
 -- those routes, or two, or an airport's or a city's name too ("to manchester": EGCC or MCT), stays as said (asked).
 -- True when the word bare[i] (the plain words of a request) is in a slot where a navaid's name of the routes flown
 -- is read (G.routed_navaid_name): after a limit's, a constraint's or a condition's word ("until ockham", "cross
--- ockham", "after ockham"), or a place reached ("reaching ockham", "when you get to ockham"); "at" and a bare "to"
+-- ockham", "after ockham", "passes ockham"), a place reached ("reaching ockham", "when you get to ockham") or one a
+-- direct-to skips ("skip ockham": G:skipped_on_direct asks about one it does not skip); "at" and a bare "to"
 -- ("land at ezeiza", "inbound to boston") may name an airport: none.
-G.navaid_slots = set_of({ "until", "till", "cross", "crossing", "after", "before", "over", "passing", "via", "reach",
-  "reaches", "reaching" })
+G.navaid_slots = set_of({ "until", "till", "cross", "crossing", "after", "before", "over", "passing", "passes", "via",
+  "reach", "reaches", "reaching", "skip", "skipping", "bypass", "bypassing", "omit", "omitting" })
 G.navaid_reached = set_of({ "get", "gets", "getting", "got" })
 function G.navaid_slot(bare, i)
   local w = bare[i - 1]

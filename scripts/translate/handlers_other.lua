@@ -2998,15 +2998,17 @@ return function(H, f, compass)
     return code
   end
   -- "divert AUH", "send it to DXB", "destination MUC": three capitals typed where the place is said, straight after
-  -- the instruction word (an aircraft, "to", "it", "him", "her" or "them" between). A large airport's IATA code
-  -- (names.iata_airports) whose airport the navdata holds is that airport, returned with the code's token (marked
-  -- used); after "divert" or "send", any other (and any without navdata) is false, asked, never guessed from the
+  -- the instruction word (an aircraft, "the", "to", "it", "him", "her" or "them" between). A large airport's IATA code
+  -- (names.iata_airports; in lower case too when no English word, G:iata_airport_at: "send it to sfo") whose
+  -- airport the navdata holds is that airport, returned with the code's token (marked used); after "divert" or
+  -- "send", three capitals of any other (and any without navdata) are false, asked, never guessed from the
   -- navdata's names; nil when no such word stands there.
   local function iata_airport(self, s)
-    local k = place_start(self, s, "to it him her them")
+    local k = place_start(self, s, "to it him her them the")
     local t = self.t[k]
-    if k >= s.e or t.kind ~= "word" or not t.raw:match("^%u%u%u$") then return nil end
-    local code, class = self.IATA_AIRPORTS[t.raw], self.world.airport_class
+    if k >= s.e or t.kind ~= "word" then return nil end
+    local code, class = self:iata_airport_at(k), self.world.airport_class
+    if not code and not t.raw:match("^%u%u%u$") then return nil end
     if code and class and (class(code) or "") ~= "" then
       self:mark_used(k, k + 1)
       self:explain(k, k + 1)
@@ -3874,7 +3876,9 @@ return function(H, f, compass)
   end
   function m:resolution(s)
     local b = s.b > 1 and s.b - 1 or s.b
-    if self:asks_setting() then
+    -- ("what's the resolution method", "?" typed or not: the method asked, when none is named and no switch said)
+    local named = self:word_in(1, #self.t + 1, "mvp") or self:word_in(b, s.e, "@mvp") or self:on_off(s) >= 0
+    if self:asks_setting(not named) then
       -- ("is MVP resolution currently on?": the method asked about names the setting shown)
       for k = 1, #self.t do
         if self:word(k, "mvp") then self:explain(k, k + 1) end

@@ -646,7 +646,12 @@ return function(H, f, wrap, compass)
           -- ("10 knots faster"; after a word speech recognition writes for "to" or "two", "reduce speed too two
           -- zero knots", the knots are no change: the speed's first digit may be lost, asked)
           or (q.kind == "speed" and q.value < 40 and dir ~= 0 and not q.to
-            and not self:word(q.b - 1, "@two_heard")) then
+            and not self:word(q.b - 1, "@two_heard"))
+          -- (a number typed in digits under 40, no unit, straight after "speed up" or "slow down": "speed up 15", "slow
+          -- it down 20" are knots of change, no speed an aircraft flies; said in words, after "to" or after another
+          -- verb, "reduce 25" (250 typed short?), it is still asked)
+          or (q.kind == "plain" and q.number.typed and q.value >= 1 and q.value < 40 and dir ~= 0
+            and self:word(q.b - 1, "up down")) then
         local a = self:state(id)
         if not a or (a.cas_kt or 0) <= 0 then return self:need("What is the current speed of " .. id .. "?") end
         if dir == 0 then return self:need("Should " .. id .. " fly faster or slower?") end

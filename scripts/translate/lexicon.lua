@@ -1641,6 +1641,10 @@ return {
       "swanwick", "london", "manchester", "brest", "reims", "langen", "rhein", "karlsruhe", "padova", "bodo",
       "canarias", "moncton", "montreal", "edmonton", "anchorage", "oakland", "sondrestrom" },
   airport_nouns = { "airport", "international", "intl", "airfield", "aerodrome" },
+  -- large airports' IATA codes (names.iata_airports) that are English words typed in lower case, never read as the
+  -- code ("send it to sea", "add", "man"; in capitals, "SEA", they are the code)
+  iata_words = { "add", "bah", "bog", "bud", "del", "den", "doh", "dub", "ham", "lax", "mad", "man", "sat", "sea",
+    "sin", "vie", "dal", "mel", "aus", "str", "pek" },
   -- cities English names otherwise than the navdata, each with the name the navdata gives its one
   -- large airport (its own language's name, or the airport's: "Munich" is MUNCHEN, "Vienna" SCHWECHAT);
   -- cities of several large airports (Rome, Milan, London, Paris) are none of these: a name alone is asked
@@ -1709,6 +1713,10 @@ return {
     -- just departed Luton, Easy 55KJ, ..."): a word of `departs` after one of `relatives`, words of `relative_fill`
     -- between (G:relative_departure)
     departs = { "departed", "departing", "left", "leaving" },
+    -- the same said with no place, ending its clause straight after the aircraft or its relative word ("the Southwest
+    -- that just took off, climb it ...", "the United departing, climb ..."): a description, no origin set
+    -- (G:departure_described)
+    departs_alone = { "departed", "departing", "took off", "taken off", "lifted off" },
     relatives = { "that", "that's", "thats", "which", "who", "who's", "whos" },
     relative_fill = { "just", "has", "have", "had", "is", "was", "now", "recently", "only", "since" },
     -- the same told of the aircraft as a pronoun, "just" between ("It has just departed Schiphol in my story"): the

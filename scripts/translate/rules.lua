@@ -1488,21 +1488,42 @@ return function(intent, rule, words)
     local at = g:word(i + 1, "at in") and i + 1 or g:word(i + 1, "it him her them") and g:word(i + 2, "at in") and i + 2
     return at and earlier(g, i, "addwpt") and airport_at(g, at + 1) or false
   end }
+  -- True when the words from k, two or three alphabetic ones, are the whole name (its generic words, "intl", left
+  -- out: sim:airports_named) of a large or medium airport of the navdata ("san diego": KSAN "SAN DIEGO INTL")
+  local function named_airport_phrase(g, k)
+    local named, class = g.world.airports_named, g.world.airport_class
+    if not named or not class then return false end
+    local words = {}
+    for n = 1, 3 do
+      local t = g.t[k + n - 1]
+      if t == nil or t.kind ~= "word" or not t.alpha then return false end
+      words[n] = t.text
+      for _, id in ipairs(n > 1 and named(table.concat(words, " ")) or {}) do
+        if class(id) == "LARGE" or class(id) == "MEDIUM" then return true end
+      end
+    end
+    return false
+  end
   -- True when the word at k names an airport where one is meant: an airport's ICAO code, a name of the navdata's
   -- airports, a city of lexicon.city_airports, or (`placed`: said where a place is, after "to" or "divert")
   -- three capitals (an IATA code, names.iata_airports, or asked by the handler: "send it to MUC") or a
   -- capitalised word a large airport's name starts with ("Austin") or a navaid beside large or medium airports
   -- bears ("divert to Belfast": EGAA beside the BELFAST VOR; sim:airports_beside_navaids)
+  -- (`placed`, in lower case too: a large airport's IATA code that is no English word, "send it to sfo"; a name of
+  -- two or three words a large or medium airport bears, "send the alaska to san diego"; a word no English squawk
+  -- knows that names navaids beside such airports, "send the ups to oakland")
   local function airport_word(g, k, placed)
     for _, r in ipairs(g:refs_in(k, k + 1, "waypoint")) do
       if r.b == k and r.name:match("^%a%a%a%a$") then return true end
     end
     local t, named, city = g.t[k], g.world.airports_named, g.world.airports_of_city
     if t == nil or t.kind ~= "word" then return false end
-    if placed and t.raw:match("^%u%u%u$") then return true end
+    if placed and (t.raw:match("^%u%u%u$") or g:iata_airport_at(k)) then return true end
+    if placed and named_airport_phrase(g, k) then return true end
+    local beside = g.world.airports_beside_navaids
     return named ~= nil and t.alpha and #t.text >= 4 and (#named(t.text) > 0 or CITY_AIRPORTS[t.text] ~= nil
-      or (placed and t.raw:match("^%u") ~= nil and (#city(t.text) > 0
-        or (g.world.airports_beside_navaids ~= nil and #g.world.airports_beside_navaids(t.text) > 0))))
+      or (placed and (t.raw:match("^%u") ~= nil or not g:known_word(k)) and ((t.raw:match("^%u") ~= nil and #city(t.text) > 0)
+        or (beside ~= nil and #beside(t.text) > 0))))
   end
   -- "Send UPS2971 to Louisville, KSDF", "send AAL100 to KBOS and have it climb": an airport (four letters) sent
   -- to; "send it to Heathrow": the one word after "to" names an airport of the navdata ("divert Ryanair
@@ -1591,7 +1612,7 @@ return function(intent, rule, words)
     return q ~= nil and q.b == v and (q.kind == "mach" or q.kind == "speed")
   end }
   -- (no origin where a relative clause says where the aircraft comes from to identify it: G:relative_departure)
-  rule { "departed departing", false, when = function(g, i) return g:relative_departure(i) end }
+  rule { "departed departing", false, when = function(g, i) return g:relative_departure(i) or g:departure_described(i) ~= nil end }
   -- ("it is departing to Chennai", "departing for Delhi": where it goes, a description, lexicon.described_places)
   rule { "departed departing", false, next = "to for towards" }
   rule { "origin departed departing orig", "orig" }

@@ -75,6 +75,8 @@ local function pattern_names(d)
   if f then out[#out + 1] = { "boeing", "7" .. f .. "7-" .. v .. "00" } end
   f, v = d:match("^A3(%d)(%d)$")
   if f and tonumber(f) >= 3 then out[#out + 1] = { "airbus", "a3" .. f .. "0-" .. v .. "00" } end
+  -- (the A300: A306 is the A300-600, of the family "a300"; A310 is its own designator, below)
+  if f == "0" then out[#out + 1] = { "airbus", "a300-" .. v .. "00" } end
   if f and tonumber(f) < 3 then
     out[#out + 1] = { "airbus", d:lower() }
     for _, series in ipairs(A32_SERIES[d] or {}) do out[#out + 1] = { "airbus", d:lower() .. "-" .. series } end

@@ -14218,3 +14218,89 @@ do
   asked(ex("Please create EDW31 A320 at 47.2 N 8.1 E, heading 090, FL 150, 260 knots and EDW32 A320 at 47.3 N 8.1 E, heading 090, FL 170, 260 knots, and let the before created aircraft climb to FL 220."),
     "two aircraft created")
 end
+
+-- Cycle 53 (f150): "send X to" a place typed in lower case or in two words: an airport's whole name ("san diego"),
+-- a navaid name beside the airport ("oakland"), a large airport's IATA code that is no English word ("sfo"); an
+-- English word after "to" ("sea", "the left") is asked
+do
+  local _, ex = navscene({ "CRE JBU5 A320 37.5 -122.0 300 FL120 260", "CRE SKW12 CRJ9 32.9 -117.0 000 FL110 250" },
+    "lower-case destinations after send")
+  if ex then
+    check_eq(ex("send the skywest to san diego"), "DEST SKW12 KSAN")
+    check_eq(ex("pls send JBU5 to San Jose"), "DEST JBU5 KSJC")
+    check_eq(ex("send jetblue 5 to oakland"), "DEST JBU5 KOAK")
+    check_eq(ex("send the jetblue to sfo"), "DEST JBU5 KSFO")
+    asked(ex("send the jetblue to sea"), "'sea' is an English word, no airport code")
+    asked(ex("send the jetblue to the left"), "no place after 'to'")
+  end
+end
+
+-- Cycle 53 (f150): "the triple 7" typed with a digit is the 777, as "the triple seven" is; two 777s flying, asked
+do
+  local _, ex = scene({ "CRE AAL32 B77W 34.3 -114.8 070 FL370 280", "CRE HAL12 A332 34.0 -113.5 260 FL380 260" })
+  check_eq(ex("turn the triple 7 left 20 degrees"), "HDG AAL32 50 LEFT")
+  local _, two = scene({ "CRE AAL32 B77W 34.3 -114.8 070 FL370 280", "CRE UAL9 B772 34.0 -113.5 260 FL380 260" })
+  asked(two("the triple 7 climb fl390"), "two 777s flying")
+end
+
+-- Cycle 53 (f150): "the a300" is the A300 family (A306, the A300-600); none flying, asked
+do
+  local _, ex = scene({ "CRE FDX603 A306 34.8 -115.9 250 FL310 290", "CRE UAL20 A320 34.2 -117.3 060 FL240 270" })
+  check_eq(ex("get rid of the a300"), "DEL FDX603")
+  check_eq(ex("the A300 turn right heading 300"), "HDG FDX603 300 RIGHT")
+  local _, none = scene({ "CRE UAL20 A320 34.2 -117.3 060 FL240 270", "CRE DAL7 A321 34.0 -117.0 090 FL250 270" })
+  asked(none("delete the a300"), "no A300 flying")
+end
+
+-- Cycle 53 (f150): digits under 40 typed straight after "speed up" / "slow down" are knots of change; after another
+-- verb ("reduce 25"), after "to" or said in words they are still asked
+do
+  local _, ex = scene({ "CRE FFT20 A20N 39.1 -104.9 010 FL110 250" })
+  check_eq(ex("FFT20 speed up 10 pls"), "SPD FFT20 260")
+  check_eq(ex("slow FFT20 down 30"), "SPD FFT20 220")
+  asked(ex("FFT20 reduce 25"), "250 typed short?")
+  asked(ex("FFT20 slow down to 20"), "a speed of 20 kt")
+  asked(ex("FFT20 speed up fifteen"), "said in words")
+end
+
+-- Cycle 53 (f150): "the X that just took off", "the X departing" ending its clause describe the aircraft (no origin);
+-- with two of the airline flying the description chooses none: asked
+do
+  local _, ex = scene({ "CRE SWA17 B737 39.86 -104.67 180 6500 190", "CRE UAL41 A320 40.3 -104.4 200 FL150 260" })
+  check_eq(ex("the southwest that just took off, climb it to FL230"), "ALT SWA17 FL230")
+  check_eq(ex("the Southwest departing, turn left heading 150"), "HDG SWA17 150 LEFT")
+  local _, two = scene({ "CRE SWA17 B737 39.86 -104.67 180 6500 190", "CRE SWA41 A320 40.3 -104.4 200 FL150 260" })
+  asked(two("the southwest that just took off, climb it to FL230"), "two Southwests flying")
+  check_eq(ex("SWA17 departing KDEN"), "ORIG SWA17 KDEN")
+end
+
+-- Cycle 53 (f150): a route's navaid named in lower case after "skip" or "passes" is that navaid; one "skip" names
+-- that the direct-to does not skip (after its place, or the place itself) is asked, in capitals too
+do
+  local _, ex = navscene({ "CRE UAL15 B739 34.0 -117.2 265 FL140 280", "ADDWPT UAL15 PDZ", "ADDWPT UAL15 SLI" },
+    "a navaid skipped by name")
+  if ex then
+    check_eq(ex("UAL15 direct SLI, skipping paradise"), "DIRECT UAL15 SLI")
+    check_eq(ex("when UAL15 passes paradise have it go down to 10000"), "AT UAL15 PDZ DO ALT UAL15 10000")
+    asked(ex("UAL15 direct PDZ, skip seal beach"), "SLI comes after PDZ")
+    asked(ex("UAL15 direct PDZ, skip SLI"), "SLI comes after PDZ, in capitals")
+    asked(ex("UAL15 direct SLI, skip SLI"), "the direct-to's own waypoint")
+  end
+end
+
+-- Cycle 53 (f150): a level typed as digits with no unit after "after" closing a speed or heading ("speed 250 after
+-- 10000") is passed; a number that may be a time of day ("after 1200") is asked
+do
+  local _, ex = scene({ "CRE SWA13 B737 37.7 -122.2 300 2500 180" })
+  check_eq(ex("SWA13 speed 250 after 10000"), "ATALT SWA13 10000 SPD SWA13 250")
+  check_eq(ex("SWA13 heading 090 after passing 5000"), "ATALT SWA13 5000 HDG SWA13 90")
+  asked(ex("SWA13 speed 250 after 1200"), "a time of day?")
+end
+
+-- Cycle 53 (f150): "what's the resolution method" with no question mark shows it; a method or switch said sets it
+do
+  local _, ex = scene({ "CRE SWA13 B737 37.7 -122.2 300 2500 180" })
+  check_eq(ex("what's the resolution method rn"), "RESO")
+  check_eq(ex("what's the resolution method, switch it to mvp"), "RESO MVP")
+  asked(ex("change the resolution method"), "which method")
+end
