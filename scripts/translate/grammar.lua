@@ -535,11 +535,14 @@ function G.said_whole(text)
   -- (the form of `index` starting at token i, or nil; punctuation may close its last word only; `joining`
   -- forms only when `marked`)
   -- (a word typed in capitals is a name or a code, never a form: "over OKE", "direct JA")
+  -- (a joining word capitalised inside the request before a capitalised word opens a name: "at El Dorado", "la
+  -- Aurora" and "Los Angeles" are places, never "the")
   local function form_at(index, toks, bare, i, marked)
     local forms = index[bare[i]]
     if not forms or toks[i]:match("^%u%u+%p*$") then return nil end
+    local names = i > 1 and toks[i]:match("^%u%l*$") and toks[i + 1] and toks[i + 1]:match("^%u") ~= nil
     for _, h in ipairs(forms) do
-      local ok = marked or not h.joining
+      local ok = (marked or not h.joining) and not (names and h.joining)
       for k = 2, #h.words do ok = ok and bare[i + k - 1] == h.words[k] and not toks[i + k - 2]:match("%p$") end
       if ok then return h end
     end

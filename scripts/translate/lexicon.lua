@@ -1651,6 +1651,12 @@ return {
                     ["santo domingo"] = "las americas", kingston = "norman manley", ["montego bay"] = "sangster",
                     nassau = "lynden pindling", ["port of spain"] = "piarco", ["grand cayman"] = "owen roberts",
                     ["panama city"] = "tocumen", bogota = "eldorado", ["port-au-prince"] = "toussaint louverture",
+                    -- (Central and South America by the city's name in English or Spanish, and Bogotá's airport
+                    -- said in two words, "El Dorado", as the navdata's ELDORADO)
+                    guatemala = "la aurora", ["guatemala city"] = "la aurora", ["ciudad de guatemala"] = "la aurora",
+                    ["ciudad de mexico"] = "licenciado benito juarez", ["san salvador"] = "el salvador",
+                    cali = "alfonso bonilla aragon", guayaquil = "jose joaquin de olmedo",
+                    barranquilla = "ernesto cortissoz", ["el dorado"] = "eldorado",
                     curacao = "hato", aruba = "reina beatrix", bonaire = "flamingo",
                     -- (West and Central Africa: capitals and hubs whose one airport the navdata names otherwise)
                     lagos = "murtala muhammed", abuja = "nnamdi azikiwe", kano = "mallam aminu", accra = "kotoka",

@@ -14045,3 +14045,25 @@ do
   check_eq(ex("the Aeroenlace is doing what?"), "POS VIV310")
   check_eq(ex("Volaris 2019 is doing what now"), "POS VOI2019")
 end
+
+-- Cycle 53 (f151): "in the ground" for "on the ground" in a creation; Central and South American cities and
+-- "El Dorado" by the navdata's airport names; a capitalised "El", "La" before a capitalised word opens a name
+-- in a sentence a Spanish word marks Spanish ("at El Dorado", never "at the Dorado")
+do
+  local _, ex = scene({ "CRE KLM12 A320 52.0 4.0 090 FL200 250" })
+  check_eq(ex("create KLM13 A320 at 52.1 4.1 heading 090, in the ground"), "CRE KLM13 A320 52.1 4.1 90 0 0")
+  check_eq(ex("create KLM13 A320 at 52.1 4.1 heading 090 in ground"), "CRE KLM13 A320 52.1 4.1 90 0 0")
+  asked(ex("create KLM13 A320 at 52.1 4.1 heading 090 in the ground, FL100"), "on the ground and a level")
+end
+do
+  local _, ex = navscene({ "CRE AVA154 A319 4.30 -74.50 040 FL140 250", "CRE VOI6120 A20N 14.00 -91.20 080 FL340 275" },
+    "Latin American airports by city")
+  if ex then
+    check_eq(ex("VOI6120 destination Guatemala"), "DEST VOI6120 MGGT")
+    check_eq(ex("VOI6120 destination Guatemala la Aurora MGGT"), "DEST VOI6120 MGGT")
+    check_eq(ex("AVA154 destination El Dorado"), "DEST AVA154 SKBO")
+    check_eq(ex("create the vuelo AVA4456, A320, at El Dorado SKBO heading 130, in ground"),
+      "CRE AVA4456 A320 SKBO 130 0 0")
+    asked(ex("AVA154 destination Bogota El Dorado"), "a city and an airport name of two words: not read yet")
+  end
+end
