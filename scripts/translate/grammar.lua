@@ -535,11 +535,14 @@ function G.said_whole(text)
   -- (the form of `index` starting at token i, or nil; punctuation may close its last word only; `joining`
   -- forms only when `marked`)
   -- (a word typed in capitals is a name or a code, never a form: "over OKE", "direct JA")
+  -- (a joining word capitalised inside the request before a capitalised word opens a name: "at El Dorado", "la
+  -- Aurora" and "Los Angeles" are places, never "the")
   local function form_at(index, toks, bare, i, marked)
     local forms = index[bare[i]]
     if not forms or toks[i]:match("^%u%u+%p*$") then return nil end
+    local names = i > 1 and toks[i]:match("^%u%l*$") and toks[i + 1] and toks[i + 1]:match("^%u") ~= nil
     for _, h in ipairs(forms) do
-      local ok = marked or not h.joining
+      local ok = (marked or not h.joining) and not (names and h.joining)
       for k = 2, #h.words do ok = ok and bare[i + k - 1] == h.words[k] and not toks[i + k - 2]:match("%p$") end
       if ok then return h end
     end
@@ -1344,6 +1347,7 @@ local SIGNED_CHANGE = { speed = "speed", spd = "speed", alt = "alt", altitude = 
 -- 4000 ft"): unit (lower case) -> "speed" | "alt"; the words -> +1 (faster, up) | -1 (slower, down)
 local UNIT_CHANGE = { kt = "speed", kts = "speed", knots = "speed", ft = "alt", feet = "alt" }
 local MORE_LESS = { more = 1, less = -1 }
+G.descent_words = set_of(lexicon.vertical_motion.down)
 local GAIN_LOSE = { gain = 1, lose = -1 }
 
 -- lexicon.value_names as a set (written_forms: a name glued to its value)
@@ -1618,12 +1622,16 @@ local function written_forms(text, world)
   -- an amount with its unit and "more"/"less" after it, or "gain"/"lose" before it ("20 kt less", "lose 4000
   -- ft", "gain 1000 feet"): that many faster/slower, up/down
   -- ("2000 ft more or less", "20 kt less than ...": an estimate or a bound, left as typed; the amount is the whole
-  -- number, a point, comma or apostrophe in it included: "2.000 ft more", "1,5 kt less")
+  -- number, a point, comma or apostrophe in it included: "2.000 ft more", "1,5 kt less"; "descend 3000 feet
+  -- more": "more" after a word of a descent said straight before the amount is that much further down)
   if low:find("more", 1, true) or low:find("less", 1, true) then
-    text = text:gsub("%f[%w%.,'](%d+[%.,']?%d*)(%s*)(%a+)%s+(%a+)%f[%A]()", function(n, space, unit, word, at)
+    text = text:gsub("()%f[%w%.,'](%d+[%.,']?%d*)(%s*)(%a+)%s+(%a+)%f[%A]()", function(b, n, space, unit, word, at)
       local kind, dir = UNIT_CHANGE[unit:lower()], MORE_LESS[word:lower()]
       local nx = (text:match("^%s+(%a+)", at) or ""):lower()
       if not (kind and dir) or nx == "or" or nx == "than" or n:match("%D$") then return nil end
+      if kind == "alt" and dir > 0 and G.descent_words[(text:sub(1, b - 1):match("(%a+)%s+$") or ""):lower()] then
+        dir = -1
+      end
       if kind == "speed" then return n .. space .. unit .. (dir > 0 and " faster" or " slower") end
       return (dir > 0 and "up " or "down ") .. n .. space .. unit
     end)
@@ -5625,6 +5633,11 @@ function G:at_waypoint(s, spec)
     if self:word(first, "after") and self:word(opens, passed) then opens = self:skip_fillers(opens + 1) end
   elseif self:word(first, "when on upon once") and self:word(self:skip_fillers(first + 1), passed) then
     opens = self:skip_fillers(self:skip_fillers(first + 1) + 1)
+  elseif self:word(first, "in") then
+    -- ("Volaris 3410 in COSCO reduce to 220 knots": "in" for Spanish "en", before a waypoint of the route of the
+    -- one aircraft addressed, as "at"; any other place after "in" opens nothing)
+    local r, ids = self:refs_in(first + 1, first + 2, "waypoint")[1], self:acids(s)
+    if r and r.b == first + 1 and r.exists and #ids == 1 and self:on_route(ids[1], r.name) then opens = first + 1 end
   end
   if opens and #refs == 0 and opens < s.trig and s.trig < s.e and #self:quantities(opens, s.trig) == 0 then
     local ids = self:acids(s)
@@ -10071,6 +10084,16 @@ end
 local function airline_values(text, fleet)
   local ids = {}
   for _, a in ipairs(fleet) do ids[a.id:upper()] = true end
+  -- the noun's plain word when `w` is the telephony of lexicon.value_noun_airlines and no aircraft of that
+  -- airline flies (nil otherwise)
+  local function idle_noun(w)
+    local noun = lexicon.value_noun_airlines[w:lower()]
+    if not noun then return nil end
+    for id in pairs(ids) do
+      if id:sub(1, #noun[1]) == noun[1] and id:sub(#noun[1] + 1):match("^%d") then return nil end
+    end
+    return noun[2]
+  end
   -- (the passes up to "velocity" read an airline after "the" ("The"): with no "the" said, none changes the text)
   local the_said = text:find("the", 1, true) or text:find("The", 1, true)
   -- "the Ryanair one", "the lufthansa one": "one" is the aircraft, no flight number 1 (unless an
@@ -10094,7 +10117,7 @@ local function airline_values(text, fleet)
   for _, pattern in ipairs(the_said and { "(%f[%a][Tt]he%s+)(%a+)(%s+)(%d+)(%s+)(%a+)()",
                                           "(%f[%a][Tt]he%s+)(%a+%s+%a+)(%s+)(%d+)(%s+)(%a+)()" } or {}) do
     text = text:gsub(pattern, function(the, w, s1, n, s2, unit, pos)
-      local icao = AIRLINE_WORDS[w:lower():gsub("%s+", " ")]
+      local icao = not idle_noun(w) and AIRLINE_WORDS[w:lower():gsub("%s+", " ")]
       if icao and not ids[icao .. n] and (lexicon.value_units[unit:lower()] or turn_by(n, unit:lower(), pos)) then
         return the .. w .. "," .. s1 .. n .. s2 .. unit
       end
@@ -10123,8 +10146,10 @@ local function airline_values(text, fleet)
   -- "VLG12AB velocity 250 knots", "increase the velocity of TAP57": an airline's telephony that is also the
   -- noun of a value (lexicon.value_noun_airlines: word -> {ICAO prefix, the noun's plain word}) is that noun
   -- before a number and its unit or after another value's number or unit, unless the airline and the number said
-  -- digit by digit are an aircraft flying ("Velocity 250, 280 knots"), and after an article or a possessive when no aircraft of the airline
-  -- flies
+  -- digit by digit are an aircraft flying ("Velocity 250, 280 knots"); and, when no aircraft of the airline flies,
+  -- after an article or a possessive, or before a number after a word of the request that is no "and" or "then"
+  -- and no punctuation ("put velocity 260", "the Volaris velocity 230": a Spanish or Portuguese speaker's
+  -- "velocidad"; the request's first word, "Velocity 250, climb ...", stays a callsign, matched or asked)
   if text:lower():find("velocity", 1, true) then
     local toks = {}
     for w in text:gmatch("%S+") do toks[#toks + 1] = w end
@@ -10132,10 +10157,11 @@ local function airline_values(text, fleet)
       local noun = not toks[i]:match("%p$") and lexicon.value_noun_airlines[toks[i]:lower()]
       if not noun then return nil end
       local icao, plain = noun[1], noun[2]
-      if i > 1 and lexicon.value_noun_before[toks[i - 1]:lower()] then
-        local flies = false
-        for id in pairs(ids) do flies = flies or id:sub(1, #icao) == icao and id:sub(#icao + 1):match("^%d") ~= nil end
-        if not flies then return plain, i + 1 end
+      local before = i > 1 and toks[i - 1]:lower()
+      if before and idle_noun(toks[i]) and (lexicon.value_noun_before[before] or not before:match("%p$")
+          and before ~= "and" and before ~= "then" and toks[i + 1] and (toks[i + 1]:match("^%d")
+          or NUMBER_WORDS[toks[i + 1]:lower():gsub("%p+$", "")])) then
+        return plain, i + 1
       end
       local k, digits = i + 1, ""
       while toks[k] and not toks[k - 1]:match("%p$") do
@@ -10148,7 +10174,6 @@ local function airline_values(text, fleet)
       if unit and lexicon.value_units[unit] and not (digits and ids[icao .. digits]) then return plain, i + 1 end
       -- (straight after another value's number or unit: the next field of a list, "heading 090 altitude 14000 feet
       -- velocity 240")
-      local before = i > 1 and toks[i - 1]:lower()
       if before and (before:match("^%d[%d%.]*$") or lexicon.value_units[before])
           and not (digits and ids[icao .. digits]) then
         return plain, i + 1

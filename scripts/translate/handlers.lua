@@ -1121,7 +1121,7 @@ function m:airline_refs()
       -- callsign, describe the airline's aircraft of that type as after "the")
       local opening = not prev or (prev.kind == "punct" and prev.text ~= ",")
       if (the and (not inside[i] or heard)) or (opening and not heard and not inside[i]) then
-        test, te = self:type_said(e)
+        test, te = self:type_said(the and self:after_of(e) or e)
       end
       if heard and te and te < heard.e then test = nil end
       for k = 1, test and #self.t or 0 do
@@ -1486,11 +1486,32 @@ local SIZE_WORDS = { big = true, bigger = true, biggest = true, large = true, sm
 local MAX_OF = { rate = true, speed = true, power = true, thrust = true, descent = true, level = true,
                  altitude = true, range = true, bank = true, value = true, performance = true, mach = true }
 
+-- The token after "of" or "of the" at token k, else k: an airline and a type joined as a Spanish or Portuguese
+-- speaker joins them with "de" ("the 737 of Aeromexico", "the Aeromexico of the 787": the Aeromexico 737, 787).
+function m:after_of(k)
+  if not self:word(k, "of") then return k end
+  return self:word(k + 1, "the") and k + 2 or k + 1
+end
+
 -- The type said at token i ("777", "Boeing 777", "seven seven seven", "dash 8", "Cessna", "MAX",
 -- "Dreamliner", "King Air", "A320"): (test, e) with test(designator) true for the types it names and e the token
 -- after it, or nil. A family's number names each of its variants; a designator or variant names itself;
--- a maker names its types; a nickname (types.nicknames) its patterns.
+-- a maker names its types; a nickname (types.nicknames) its patterns. A nickname said straight after a type
+-- narrows it to the types of both ("the 737 MAX", "the Boeing 737 MAX").
 function m:type_said(i)
+  local test, e = self:type_named(i)
+  local nick = test and self.t[e] and self.t[e].kind == "word" and require("translate.types").nicknames[self.t[e].text]
+  if not nick then return test, e end
+  local both = {}
+  for _, set in pairs(families()) do
+    for d in pairs(set) do
+      for _, p in ipairs(nick) do if test(d) and d:match(p) then both[d] = true end end
+    end
+  end
+  if not next(both) then return test, e end
+  return function(d) return both[d] == true end, e + 1
+end
+function m:type_named(i)
   local t = self.t[i]
   if not t then return nil end
   local fams = families()
@@ -1603,7 +1624,7 @@ end
 -- the airline's own reference (airline_refs) taken out; none of the airline's fits is asked about, naming both
 -- words (the airline alone is never read as some other aircraft of it). Without an airline, `fits` and `e` as given.
 local function airline_after_type(self, fits, i, e)
-  local icao, ae, codes = self:airline_at(e)
+  local icao, ae, codes = self:airline_at(self:after_of(e))
   if not icao or (self.t[ae] and (self.t[ae].kind == "number" or self.t[ae].number_word)) then return fits, e end
   local of = {}
   for _, id in ipairs(self:airline_fleet(icao, codes)) do of[id] = true end
@@ -2692,7 +2713,7 @@ function m:level_given(q, id)
 end
 -- words between the level and a speed's own word, part of the instruction ("when it passes FL130 drop the
 -- speed to 230", "... bring its speed back to 240")
-local SPEED_LEAD = { drop = true, bring = true, cut = true, take = true, pull = true, knock = true, the = true,
+local SPEED_LEAD = { drop = true, bring = true, cut = true, take = true, pull = true, knock = true, put = true, the = true,
                      its = true, your = true, his = true, her = true, their = true }
 -- words between the level and a rate's own word, part of the instruction ("passing 150 reduce rate to 1000",
 -- "leaving FL100 increase your rate to 2000")

@@ -570,9 +570,10 @@ return function(H, f, compass)
       end
     end
     -- "on the ground", "on ground", "ready for departure" (or take-off): altitude 0 ft and speed 0 kt; with a
-    -- level or speed said as well, asked
+    -- level or speed said as well, asked ("in the ground", "in ground": a Spanish speaker's "en tierra", the same)
     for i = s.trig, s.e - 1 do
-      local g = self:word(i, "on") and (self:word(i + 1, "the") and i + 2 or i + 1)
+      local g = self:word(i + 1, "the") and i + 2 or i + 1
+      if not (self:word(i, "on") or (self:word(i, "in") and self:word(g, "ground"))) then g = nil end
       if self:word(i, "ready") and self:word(i + 1, "for") then
         g = self:word(i + 2, "take") and self:word(i + 3, "off") and i + 3 or i + 2
         if not self:word(g, "departure takeoff take-off off") then g = nil end

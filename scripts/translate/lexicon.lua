@@ -1586,6 +1586,8 @@ return {
     -- aircraft's own rate; the phrase is the word alone, noted and left to its instruction
     { what = "how fast or hard a change is flown", words = "expedite expedited quickly fast hard sharp sharply",
       manner = true },
+    -- (and "rapid", "rapidly": a Spanish or Portuguese speaker's "rápido" for quickly, "climb FL270 rapid")
+    { what = "how fast or hard a change is flown", words = "rapid rapidly", manner = true },
     -- "descend FL150 at a good rate", "at your best rate KLM12 climb FL300": the same said of the rate, with no value
     -- (`rate_manner`: G:rate_manner, lexicon.rate_manner), noted from "at" or "with" before it to the rate's word and
     -- the motion it names ("of descent"); a gentler one ("at a slow rate") is asked
@@ -1673,6 +1675,12 @@ return {
                     ["santo domingo"] = "las americas", kingston = "norman manley", ["montego bay"] = "sangster",
                     nassau = "lynden pindling", ["port of spain"] = "piarco", ["grand cayman"] = "owen roberts",
                     ["panama city"] = "tocumen", bogota = "eldorado", ["port-au-prince"] = "toussaint louverture",
+                    -- (Central and South America by the city's name in English or Spanish, and Bogotá's airport
+                    -- said in two words, "El Dorado", as the navdata's ELDORADO)
+                    guatemala = "la aurora", ["guatemala city"] = "la aurora", ["ciudad de guatemala"] = "la aurora",
+                    ["ciudad de mexico"] = "licenciado benito juarez", ["san salvador"] = "el salvador",
+                    cali = "alfonso bonilla aragon", guayaquil = "jose joaquin de olmedo",
+                    barranquilla = "ernesto cortissoz", ["el dorado"] = "eldorado",
                     curacao = "hato", aruba = "reina beatrix", bonaire = "flamingo",
                     -- (West and Central Africa: capitals and hubs whose one airport the navdata names otherwise)
                     lagos = "murtala muhammed", abuja = "nnamdi azikiwe", kano = "mallam aminu", accra = "kotoka",
@@ -1818,6 +1826,13 @@ return {
     { heard = { "it arrives to", "it arrives at", "arrives to", "arrives at" }, means = "it reaches",
       after = { "when", "once" } },
     { heard = { "you are at" }, means = "it is at", after = { "when", "once" } },
+    -- (and "arrive" said alone, for "llegar" / "chegar" with no place: "descend FL180 and when you arrive reduce
+    -- to 250", "when it arrives there": the level or place this request cleared it to, G:reached_opening)
+    { heard = { "you arrive there", "it arrives there", "it arrive there", "you arrive", "it arrives", "it arrive" },
+      means = "you get there", after = { "when", "once" } },
+    -- ("when you are over VIPSA descend FL120": "estar sobre", the waypoint passed)
+    { heard = { "you are over", "it is over", "you're over", "it's over" }, means = "passing",
+      after = { "when", "once" } },
     { heard = { "you are with", "it is with", "you're with", "it's with" }, means = "it is at",
       between = { { "when", "once" }, { "#number", "fl", "flight", "speed", "mach" } } },
     -- (false friends of a Spanish or Portuguese speaker for the simulation's clock: "put the simulation in normal
@@ -1842,7 +1857,7 @@ return {
       -- instructions and their nouns
       vire = "turn", gire = "turn", izquierda = "left", derecha = "right", ["a la izquierda"] = "left",
       ["a la derecha"] = "right", ["por la izquierda"] = "left", ["por la derecha"] = "right",
-      grados = "degrees", rumbo = "heading", nivel = "level", ["nivel de vuelo"] = "flight level",
+      grados = "degrees", rumbo = "heading", nivel = "level", ["nivel de vuelo"] = "flight level", vuelo = "flight",
       velocidad = "speed", ["velocidad doble"] = "double speed", baje = "descend", descienda = "descend",
       ascienda = "climb", mantenga = "maintain", mantener = "maintain",
       -- (what is flown now, kept: read with its verb only; false: said alone, the phrase stays as said, and
@@ -1882,10 +1897,18 @@ return {
       ["añada"] = "add", anada = "add", quita = "remove", retira = "remove",
       nuevo = "new", nueva = "new", avion = "aircraft", ["avión"] = "aircraft", aeronave = "aircraft",
       ["deteccion de conflictos"] = "conflict detection", ["detección de conflictos"] = "conflict detection",
+      -- a value taken back and said again ("climb to FL190, perdón, FL180"; "corrijo": I correct)
+      perdon = "sorry", ["perdón"] = "sorry", perdona = "sorry", ["perdóname"] = "sorry", perdoname = "sorry",
+      disculpe = "sorry", disculpa = "sorry", corrijo = "correction", correccion = "correction",
+      ["corrección"] = "correction",
+      -- a moment asked for ("pause, un momento por favor": as English "one moment")
+      ["un momento"] = "one moment",
+      -- how fast a change is flown ("sube rápido a FL270")
+      ["rápido"] = "quickly", rapido = "quickly",
     },
     -- words of `words` said the same in Portuguese or Italian: no sign of Spanish alone
     shared = { destino = true, crea = true, continua = true, minuto = true, nivel = true, pause = true, vira = true,
-      gira = true, carga = true, metros = true, altitud = true },
+      gira = true, carga = true, metros = true, altitud = true, ["rápido"] = true, rapido = true },
     -- words also English, Portuguese or Italian ("a", "con", "en", "suba"; "quite", English "I'm quite new to
     -- this"): read only in a sentence another word marks Spanish
     joining = { a = "at", al = "to the", la = "the", el = "the", los = "the", las = "the", un = "a", una = "a",

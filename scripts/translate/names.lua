@@ -320,6 +320,7 @@ local names = {
     { "pollot", "LOT" },
     { "futura", "FUA" },
     { "viva", "VIV" },
+    { "aeroenlace", "VIV" },  -- (its telephony "Aeroenlaces" said in the singular, as Mexican controllers say it)
     { "scooter", "TGW" },  -- (Scoot)
     { "rex", "RXA" },  -- (Regional Express)
     { "q-link", "QLK" },  -- (QantasLink's ICAO telephony, said and typed "Q-Link", "Q Link", "QLink")

@@ -1783,6 +1783,20 @@ return function(intent, rule, words)
     end
     return false
   end }
+  -- the question in the order of a statement, "what" closing the request ("the TACA is doing what?", "KLM12 is
+  -- doing what now", a Spanish speaker's "está haciendo qué"): the aircraft, "is" or "are" or neither, at most two
+  -- of lexicon.indirect_question_adverbs, then "doing what"
+  rule { "doing", "pos", when = function(g, i)
+    local w = g:word(i + 2, "now") and i + 3 or i + 2
+    if not g:word(i + 1, "what") or (g.t[w] and g.t[w].kind ~= "punct") then return false end
+    local k = i - 1
+    while k > i - 3 and g:word(k, "@indirect_question_adverbs") do k = k - 1 end
+    if g:word(k, "is are") then k = k - 1 end
+    for _, r in ipairs(g.refs) do
+      if r.kind == "aircraft" and r.e == k + 1 then return true end
+    end
+    return false
+  end }
   -- "where's EZY45?" (the lexer drops the 's), "tell me where BAW123 is"
   rule { "where", "pos", when = function(g, i) return g:has_ref(i + 1, i + 5, "aircraft") end }
   -- "where's the MERIT intersection?"

@@ -14304,3 +14304,76 @@ do
   check_eq(ex("what's the resolution method, switch it to mvp"), "RESO MVP")
   asked(ex("change the resolution method"), "which method")
 end
+-- Cycle 53 (f151): a Spanish-speaking technician's English. "velocity" for speed ("velocidad") with no Velocity
+-- aircraft flying; "arrive" and "be over" for reaching; "the 737 of Aeromexico"; Spanish words read as their
+-- English (lexicon.said_whole.spanish: "vuelo", "perdón", "un momento", "rápido"); "rapid" as a manner; "3000 feet
+-- more" after a descent; "in FIX" for "at FIX"; "X is doing what?"
+do
+  local _, ex = scene({ "DEFWPT TOLPA 19.5 -99.5", "DEFWPT MARGO 19.8 -99.8", "DEFWPT ZUMPA 19.1 -98.9",
+    "CRE AMX402 B788 19.80 -99.00 010 FL280 300", "CRE AMX118 B738 19.20 -98.60 100 FL200 280",
+    "CRE VOI2019 A321 19.60 -99.70 300 FL230 290", "ADDWPT VOI2019 TOLPA", "ADDWPT VOI2019 MARGO",
+    "CRE VIV310 A320 19.0 -99.2 090 FL150 260", "CRE SWG88 B38M 19.4 -99.4 180 FL200 280" })
+  -- "velocity" before a number or after an article, with no VOZ aircraft flying
+  check_eq(ex("Volaris 2019 put velocity 250 and descend FL200"), "SPD VOI2019 250 ; ALT VOI2019 FL200")
+  check_eq(ex("the Volaris, put it in velocity 260 please"), "SPD VOI2019 260")
+  check_eq(ex("Aeromexico 118 increase the velocity 20 knots"), "SPD AMX118 300")
+  check_eq(ex("Aeromexico 118 set velocity two five zero"), "SPD AMX118 250")
+  asked(ex("Velocity 250, climb FL300"), "the request's first word stays a callsign")
+  -- reaching said with "arrive" or "be over"; "put" before a speed after the condition
+  check_eq(ex("Aeromexico 118 climb FL240 and when you arrive reduce to 250"),
+    "ALT AMX118 FL240 ; ATALT AMX118 FL240 SPD AMX118 250")
+  check_eq(ex("Aeromexico 118 climb FL240, when it arrives there put the speed 250"),
+    "ALT AMX118 FL240 ; ATALT AMX118 FL240 SPD AMX118 250")
+  check_eq(ex("Volaris 2019 when you are over MARGO descend FL150"), "AT VOI2019 MARGO DO ALT VOI2019 FL150")
+  asked(ex("Volaris 2019 when you are over ZUMPA descend FL150"), "a waypoint off the route")
+  -- "in" a waypoint of the route, as "at"
+  check_eq(ex("Volaris 2019 in TOLPA reduce to 240 knots"), "AT VOI2019 TOLPA DO SPD VOI2019 240")
+  asked(ex("Volaris 2019 in ZUMPA reduce to 240 knots"), "'in' a waypoint off the route")
+  -- the airline and the type joined by "of"
+  check_eq(ex("the Aeromexico of the 787 climb FL330"), "ALT AMX402 FL330")
+  check_eq(ex("the 737 of Aeromexico, reduce the velocity to 250"), "SPD AMX118 250")
+  check_eq(ex("the 737 MAX of Sunwing climb FL240"), "ALT SWG88 FL240")
+  check_eq(ex("the 737 MAX descend FL180"), "ALT SWG88 FL180")
+  asked(ex("the 737 of the Volaris climb FL300"), "no Volaris 737 flying")
+  asked(ex("the Airbus of Aeromexico climb FL300"), "no Aeromexico Airbus flying")
+  -- Spanish words
+  check_eq(ex("vuelo VIV310 realize a climb to FL190 please"), "ALT VIV310 FL190")
+  check_eq(ex("Volaris 2019 descend to FL200, perdón, FL210"), "ALT VOI2019 FL210")
+  check_eq(ex("Volaris 2019 reduce speed 240, disculpe, 250"), "SPD VOI2019 250")
+  asked(ex("Volaris 2019 descend FL200, perdon"), "taken back with nothing after it")
+  check_eq(ex("pause, un momento por favor"), "HOLD")
+  asked(ex("Volaris 2019 descend FL200, un momento"), "a moment after an instruction")
+  check_eq(ex("Aeroenlace 310 climb FL210 rapid, 2500 feet per minute"), "ALT VIV310 FL210 2500")
+  check(ex("Aeroenlace 310 descend FL100 rápido"):find("ALT VIV310 FL100", 1, true) ~= nil, "rápido as a manner")
+  check_eq(ex("advance 5 minutes rapid please"), "FF 300")
+  -- "more" after a descent is further down
+  check_eq(ex("Aeroenlace 310 descend 3000 feet more"), "ALT VIV310 12000")
+  check_eq(ex("Aeroenlace 310 climb 2000 feet more"), "ALT VIV310 17000")
+  asked(ex("Aeroenlace 310 descend 2000 feet more or less"), "an estimate")
+  -- the telephony "Aeroenlaces" said in the singular; the question in a statement's order
+  check_eq(ex("where is the Aeroenlace actually"), "POS VIV310")
+  check_eq(ex("the Aeroenlace is doing what?"), "POS VIV310")
+  check_eq(ex("Volaris 2019 is doing what now"), "POS VOI2019")
+end
+
+-- Cycle 53 (f151): "in the ground" for "on the ground" in a creation; Central and South American cities and
+-- "El Dorado" by the navdata's airport names; a capitalised "El", "La" before a capitalised word opens a name
+-- in a sentence a Spanish word marks Spanish ("at El Dorado", never "at the Dorado")
+do
+  local _, ex = scene({ "CRE KLM12 A320 52.0 4.0 090 FL200 250" })
+  check_eq(ex("create KLM13 A320 at 52.1 4.1 heading 090, in the ground"), "CRE KLM13 A320 52.1 4.1 90 0 0")
+  check_eq(ex("create KLM13 A320 at 52.1 4.1 heading 090 in ground"), "CRE KLM13 A320 52.1 4.1 90 0 0")
+  asked(ex("create KLM13 A320 at 52.1 4.1 heading 090 in the ground, FL100"), "on the ground and a level")
+end
+do
+  local _, ex = navscene({ "CRE AVA154 A319 4.30 -74.50 040 FL140 250", "CRE VOI6120 A20N 14.00 -91.20 080 FL340 275" },
+    "Latin American airports by city")
+  if ex then
+    check_eq(ex("VOI6120 destination Guatemala"), "DEST VOI6120 MGGT")
+    check_eq(ex("VOI6120 destination Guatemala la Aurora MGGT"), "DEST VOI6120 MGGT")
+    check_eq(ex("AVA154 destination El Dorado"), "DEST AVA154 SKBO")
+    check_eq(ex("create the vuelo AVA4456, A320, at El Dorado SKBO heading 130, in ground"),
+      "CRE AVA4456 A320 SKBO 130 0 0")
+    asked(ex("AVA154 destination Bogota El Dorado"), "a city and an airport name of two words: not read yet")
+  end
+end
