@@ -930,6 +930,11 @@ return function(H, f, wrap, compass)
         and now then
       -- ("maintain present heading"; "maintain heading", "keep your heading" with no value said: the one it flies;
       -- "stop turn", "stop the turn": the one it flies when stopping)
+      -- ("turn right present heading": a side said with the heading it flies names no heading to turn to; asked)
+      if turn ~= 0 and self:word_in(math.max(1, s.trig - 2), s.e, "@present") then
+        return self:need(string.format("Should %s turn %s, or keep its present heading? I heard '%s'.", id,
+          turn < 0 and "left" or "right", (self:raw(s.trig, s.e):gsub(" ([,.;:])", "%1"))))
+      end
       offset = 0
     elseif #refs >= 2 and self:word_in(s.b, s.e, "@same_as") then
       local src = self:state(refs[#refs].name)
