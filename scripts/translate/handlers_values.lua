@@ -835,6 +835,8 @@ return function(H, f, wrap, compass)
       local r = self:refs_in(at, math.min(s.e, at + 3), "waypoint")[1]
       if r then self:explain(tw, r.e) end
       toward = r and r.name:upper() or self:place_by_name(at, s.e, now)
+      -- ("toward O'Hare": an airport said by a distinctive part of its name, as a destination is read)
+      if not toward and now and not self.ask then toward = self:airport_by_words(at, math.min(s.e, at + 3), now) end
     end
     local hdg, offset  -- offset: degrees from each aircraft's present heading
     -- ("turn left by 90 degrees and, in two minutes, onto heading 070": a heading said after a turn's degrees in the

@@ -747,11 +747,12 @@ return function(intent, rule, words)
   rule { "point fly towards toward head send steer face facing", "hdg", near = { 4, "@compass" } }
   -- "fly towards Kempten", "turn the Lufthansa towards the Innsbruck airport", "fly in the direction of
   -- STUDYB": the heading that points at a place (HDG's name: the bearing to it)
-  rule { "fly flies turn head steer", "hdg", when = function(g, i)
+  local function toward_place(g, i)
     local e = math.min(#g.t + 1, i + 6)
     local k = g:find_word(i + 1, e, "towards toward direction")
     return k < e and (not g:word(k, "direction") or g:word(k + 1, "of")) and not g:intent_at(k)
-  end }
+  end
+  rule { "fly flies turn head steer", "hdg", when = toward_place }
   -- "point JST501 to 200 degrees", "point it onto 090 degrees": an aircraft pointed at a number of degrees
   rule { "point", "hdg", when = function(g, i)
     local r = g:refs_in(i + 1, math.min(#g.t + 1, i + 2), "aircraft")[1]
@@ -1412,6 +1413,9 @@ return function(intent, rule, words)
       or (g:word(w + 1, "@navaid_kinds") and g:place_by_name(w, w + 1) ~= nil))
   end
   rule { "point", "direct", not_near = { 4, "@compass" }, when = to_waypoint }
+  -- "point the CRJ toward O'Hare", "aim it towards Baltimore airport": a place no waypoint (an airport, a city) is
+  -- the heading that points at it, as "fly towards" (a waypoint pointed at is flown to, above)
+  rule { "point aim", "hdg", when = function(g, i) return toward_place(g, i) and not to_waypoint(g, i) end }
   rule { "skip", "direct", next = "ahead", when = function(g, i) return g:word(i + 2, "to") and to_waypoint(g, i) end }
   -- "VOZ1234 track to BURLI": a waypoint (no airport) the aircraft tracks to, flown to directly
   rule { "track", "direct", next = "to", when = function(g, i)
