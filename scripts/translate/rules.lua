@@ -1643,6 +1643,12 @@ return function(intent, rule, words)
   rule { "vertical vertically", "vnav", prev = { 4, "plan route" } }  -- "follow its flight plan vertically"
   rule { "vertical", "vnav", next = "profile navigation nav" }
   rule { "route rte waypoints", "listrte", prev = { 4, "show list display what print see look where check" } }
+  -- "pull up the route for the United", "bring up the flight plan of KLM12", "call up its routing": a phrasal verb
+  -- of showing, "up" straight after it, before the noun
+  rule { "route rte routing waypoints plan", "listrte", when = function(g, i)
+    local k = g:find_word(math.max(1, i - 4), i, "pull bring call")
+    return k < i and g:word(k + 1, "up")
+  end }
   -- "what is the next waypoint of Akasa 1402": the route's next point, shown with the route
   rule { "waypoint", "listrte", prev = { 1, "next" }, when = function(g, i) return g:preceded_by(i, 4, "what which") end }
   -- "tell me the route of the Emirates", "kindly tell the route of Air India 540": the route told to the speaker
