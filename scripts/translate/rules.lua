@@ -2227,6 +2227,8 @@ return function(intent, rule, words)
          not_near = { 6, "vertically vertical profile altitude altitudes level levels" } }
   rule { "run", "op", next = "again" }  -- "let it run again"
   rule { "run", "ff", next = "forward ahead" }  -- "run forward 45 seconds"
+  -- "run it forward by 2 minutes", "run things ahead 5 minutes": the simulation as the object between
+  rule { "run", "ff", next = "it things everything", when = function(g, i) return g:word(i + 2, "forward ahead") end }
   rule { "run", "dtmult", near = { 4, "times x" } }
   -- "run x2", "run x4": the multiplier typed straight after the verb, nothing after it
   rule { "run", "dtmult", when = function(g, i)
