@@ -14037,3 +14037,12 @@ do
     asked(nx("point the CRJ toward Flurbo"), "a name no airport bears")
   end
 end
+
+-- Cycle 53 (fpe): US regional airlines by their common name ("the Republic flight", "the PSA jet")
+do
+  local _, ex = scene({ "CRE RPA47 E175 38.70 -77.90 030 FL140 270", "CRE JIA50 CRJ7 39.20 -76.85 230 9000 250",
+    "CRE RPA48 E170 38.90 -77.20 090 FL120 260" })
+  check_eq(ex("could the PSA jet slow to 220"), "SPD JIA50 220")
+  check_eq(ex("Republic 47 descend FL120"), "ALT RPA47 FL120")
+  asked(ex("could you have the Republic flight slow to 250"), "two Republic aircraft flying")
+end
