@@ -6372,10 +6372,10 @@ function G:uncarried()
 end
 
 -- True when aircraft ref r is added to an instruction by the words around it ("climb FL190 - TOM6RT as well",
--- "same for TOM6RT", "and also TOM6RT") or given a direction of its own (", we want TOM6RT lower").
+-- "same for TOM6RT", "do the same for the Tomjet", "and also TOM6RT") or given a direction of its own (", we want TOM6RT lower").
 function G:aircraft_added(r)
   return self:word(r.e, "too also @up @down @faster_slower") or (self:word(r.e, "as") and self:word(r.e + 1, "well"))
-    or self:word(r.b - 1, "also likewise ditto") or (self:word(r.b - 1, "for") and self:word(r.b - 2, "same"))
+    or self:word(r.b - 1, "also likewise ditto") or self:same_opening(r.b) ~= nil
 end
 
 -- A name that reads like a callsign no aircraft has, or an aircraft that
@@ -9477,7 +9477,8 @@ function G:same_opening(b)
   return k
 end
 -- The span [from, to) of an aircraft's words [b, e) said in that shape with its "same" words, ending its
--- clause; nil when not so said.
+-- clause; nil when not so said. Courtesy before "same" or closing the clause ("..., kindly same for the IndiGo",
+-- "..., same for DLH6CK kindly") carries no instruction and keeps the aircraft named.
 function G:same_span(b, e)
   local opens = true
   local k = self:skip_fillers(e, false)
@@ -9486,10 +9487,12 @@ function G:same_span(b, e)
   local from = self:same_opening(b)
   if from then
     b = from
-    opens = b > 1 and (self.t[b - 1].kind == "punct" or self:word(b - 1, "and"))
+    local c = b - 1
+    if self:word(c, "please kindly") then c = c - 1 end
+    opens = c >= 1 and (self.t[c].kind == "punct" or self:word(c, "and"))
     to = to or e
   end
-  while to and self.t[to] and self.t[to].filler do to = to + 1 end
+  while to and self.t[to] and (self.t[to].filler or self:word(to, "please kindly")) do to = to + 1 end
   if to and opens and (not self.t[to] or self.t[to].kind == "punct") then return b, to end
   return nil
 end

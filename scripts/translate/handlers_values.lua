@@ -848,6 +848,8 @@ return function(H, f, wrap, compass)
       local r = self:refs_in(at, math.min(s.e, at + 3), "waypoint")[1]
       if r then self:explain(tw, r.e) end
       toward = r and r.name:upper() or self:place_by_name(at, s.e, now)
+      -- ("toward O'Hare": an airport said by a distinctive part of its name, as a destination is read)
+      if not toward and now and not self.ask then toward = self:airport_by_words(at, math.min(s.e, at + 3), now) end
     end
     local hdg, offset  -- offset: degrees from each aircraft's present heading
     -- ("turn left by 90 degrees and, in two minutes, onto heading 070": a heading said after a turn's degrees in the
@@ -943,6 +945,11 @@ return function(H, f, wrap, compass)
         and now then
       -- ("maintain present heading"; "maintain heading", "keep your heading" with no value said: the one it flies;
       -- "stop turn", "stop the turn": the one it flies when stopping)
+      -- ("turn right present heading": a side said with the heading it flies names no heading to turn to; asked)
+      if turn ~= 0 and self:word_in(math.max(1, s.trig - 2), s.e, "@present") then
+        return self:need(string.format("Should %s turn %s, or keep its present heading? I heard '%s'.", id,
+          turn < 0 and "left" or "right", (self:raw(s.trig, s.e):gsub(" ([,.;:])", "%1"))))
+      end
       offset = 0
     elseif #refs >= 2 and self:word_in(s.b, s.e, "@same_as") then
       local src = self:state(refs[#refs].name)

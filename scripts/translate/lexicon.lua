@@ -373,7 +373,8 @@ return {
         "console", "screen", "display", "window", "map", "scope", "draw", "board", "scene", "trajectory",
         "trajectories",
         -- the experiment a request is made for ("for the next trial", "the participant keeps missing it", "seed
-        -- 7 for reproducibility")
+        -- 7 for reproducibility", "so I can check it against the script": the session's written plan)
+        "script", "scripts", "protocol",
         "trial", "trials", "participant", "participants", "session", "sessions", "calibration", "experiment",
         "experiments", "reproducibility", "reproducible", "repeatability", "repeatable", "determinism",
         "deterministic",

@@ -647,6 +647,8 @@ local names = {
     { "hop", "HOP" },  -- (HOP!, telephony Air Hop)
     { "spirit", "NKS" },  -- (Spirit Airlines, telephony Spirit Wings)
     { "spirit airlines", "NKS" },
+    { "republic", "RPA" },  -- (Republic Airways, telephony Brickyard)
+    { "psa", "JIA" },  -- (PSA Airlines, telephony Blue Streak)
     { "expressjet", "ASQ" },  -- (ExpressJet, telephony Acey)
     { "express jet", "ASQ" },
     { "qatar airways", "QTR" },

@@ -747,11 +747,12 @@ return function(intent, rule, words)
   rule { "point fly towards toward head send steer face facing", "hdg", near = { 4, "@compass" } }
   -- "fly towards Kempten", "turn the Lufthansa towards the Innsbruck airport", "fly in the direction of
   -- STUDYB": the heading that points at a place (HDG's name: the bearing to it)
-  rule { "fly flies turn head steer", "hdg", when = function(g, i)
+  local function toward_place(g, i)
     local e = math.min(#g.t + 1, i + 6)
     local k = g:find_word(i + 1, e, "towards toward direction")
     return k < e and (not g:word(k, "direction") or g:word(k + 1, "of")) and not g:intent_at(k)
-  end }
+  end
+  rule { "fly flies turn head steer", "hdg", when = toward_place }
   -- "point JST501 to 200 degrees", "point it onto 090 degrees": an aircraft pointed at a number of degrees
   rule { "point", "hdg", when = function(g, i)
     local r = g:refs_in(i + 1, math.min(#g.t + 1, i + 2), "aircraft")[1]
@@ -1412,6 +1413,9 @@ return function(intent, rule, words)
       or (g:word(w + 1, "@navaid_kinds") and g:place_by_name(w, w + 1) ~= nil))
   end
   rule { "point", "direct", not_near = { 4, "@compass" }, when = to_waypoint }
+  -- "point the CRJ toward O'Hare", "aim it towards Baltimore airport": a place no waypoint (an airport, a city) is
+  -- the heading that points at it, as "fly towards" (a waypoint pointed at is flown to, above)
+  rule { "point aim", "hdg", when = function(g, i) return toward_place(g, i) and not to_waypoint(g, i) end }
   rule { "skip", "direct", next = "ahead", when = function(g, i) return g:word(i + 2, "to") and to_waypoint(g, i) end }
   -- "VOZ1234 track to BURLI": a waypoint (no airport) the aircraft tracks to, flown to directly
   rule { "track", "direct", next = "to", when = function(g, i)
@@ -1660,6 +1664,12 @@ return function(intent, rule, words)
   rule { "vertical vertically", "vnav", prev = { 4, "plan route" } }  -- "follow its flight plan vertically"
   rule { "vertical", "vnav", next = "profile navigation nav" }
   rule { "route rte waypoints", "listrte", prev = { 4, "show list display what print see look where check" } }
+  -- "pull up the route for the United", "bring up the flight plan of KLM12", "call up its routing": a phrasal verb
+  -- of showing, "up" straight after it, before the noun
+  rule { "route rte routing waypoints plan", "listrte", when = function(g, i)
+    local k = g:find_word(math.max(1, i - 4), i, "pull bring call")
+    return k < i and g:word(k + 1, "up")
+  end }
   -- "what is the next waypoint of Akasa 1402": the route's next point, shown with the route
   rule { "waypoint", "listrte", prev = { 1, "next" }, when = function(g, i) return g:preceded_by(i, 4, "what which") end }
   -- "tell me the route of the Emirates", "kindly tell the route of Air India 540": the route told to the speaker
@@ -2257,6 +2267,8 @@ return function(intent, rule, words)
          not_near = { 6, "vertically vertical profile altitude altitudes level levels" } }
   rule { "run", "op", next = "again" }  -- "let it run again"
   rule { "run", "ff", next = "forward ahead" }  -- "run forward 45 seconds"
+  -- "run it forward by 2 minutes", "run things ahead 5 minutes": the simulation as the object between
+  rule { "run", "ff", next = "it things everything", when = function(g, i) return g:word(i + 2, "forward ahead") end }
   rule { "run", "dtmult", near = { 4, "times x" } }
   -- "run x2", "run x4": the multiplier typed straight after the verb, nothing after it
   rule { "run", "dtmult", when = function(g, i)

@@ -14377,3 +14377,56 @@ do
     asked(ex("AVA154 destination Bogota El Dorado"), "a city and an airport name of two words: not read yet")
   end
 end
+
+-- Cycle 53 (fpe): the polite plain-word experimenter. Courtesy around "same for" keeps the aircraft it adds; an
+-- airline after "same for the" that does not close its clause is asked, never dropped
+do
+  local _, ex = scene({ "CRE KLM55X B738 52.3 4.7 090 FL200 280", "CRE IGO123 A20N 52.5 4.9 180 FL220 270",
+    "CRE AFR12 A320 52.1 4.5 270 FL240 290" })
+  check_eq(ex("KLM55X climb FL250, same for the IndiGo kindly"), "ALT KLM55X FL250 ; ALT IGO123 FL250")
+  check_eq(ex("KLM55X climb FL250, kindly the same for AFR12"), "ALT KLM55X FL250 ; ALT AFR12 FL250")
+  asked(ex("KLM55X climb FL250, same for the Air France sir"), "an unknown word closing 'same for the' airline")
+  asked(ex("KLM55X climb FL250, same for the IndiGo thank you"), "thanks after 'same for the' airline")
+end
+
+-- Cycle 53 (fpe): a turn's side said with the present heading is asked; the present heading alone is flown
+do
+  local _, ex = scene({ "CRE KLM56 B738 52.3 4.7 120 FL200 280" })
+  asked(ex("KLM56 turn left present heading"), "a side with the present heading")
+  asked(ex("KLM56 turn right, present heading please"), "a side with the present heading, comma")
+  check_eq(ex("KLM56 continue present heading"), "HDG KLM56 120")
+end
+
+-- Cycle 53 (fpe): "pull up the route", "run it forward by N minutes", a remark naming the session's script
+do
+  local _, ex = scene({ "CRE UAL15 B738 41.95 -88.70 090 FL120 280", "CRE DAL98 A320 42.10 -88.45 135 FL230 300" })
+  check_eq(ex("could you bring up the flight plan for the Delta"), "LISTRTE DAL98")
+  check_eq(ex("pull up UAL15's route so we can compare it with the protocol"), "LISTRTE UAL15")
+  asked(ex("pull up the route"), "no aircraft named")
+  check_eq(ex("could you run it forward by 3 minutes"), "FF 180")
+  check_eq(ex("run it ahead 45 seconds please"), "FF 45")
+  check_eq(ex("run it"), "OP")
+end
+
+-- Cycle 53 (fpe): "point"/"aim" an aircraft toward a place: a waypoint is flown to, an airport or a city is the
+-- heading to it (an airport said by a distinctive part of its name with navdata)
+do
+  local _, ex = scene({ "DEFWPT LABQ1 42.0 -87.5", "CRE SKW52 CRJ9 42.40 -87.85 180 8000 240" })
+  check_eq(ex("point SKW52 toward LABQ1"), "ADDWPT SKW52 LABQ1 ; DIRECT SKW52 LABQ1")
+  asked(ex("aim SKW52 toward the traffic"), "no place after toward")
+  local _, nx = navscene({ "CRE SKW52 CRJ9 42.40 -87.85 180 8000 240" }, "airports pointed at by name")
+  if nx then
+    check_eq(nx("could you point the CRJ toward O'Hare"), "HDG SKW52 KORD")
+    check_eq(nx("aim SKW52 towards Midway please"), "HDG SKW52 KMDW")
+    asked(nx("point the CRJ toward Flurbo"), "a name no airport bears")
+  end
+end
+
+-- Cycle 53 (fpe): US regional airlines by their common name ("the Republic flight", "the PSA jet")
+do
+  local _, ex = scene({ "CRE RPA47 E175 38.70 -77.90 030 FL140 270", "CRE JIA50 CRJ7 39.20 -76.85 230 9000 250",
+    "CRE RPA48 E170 38.90 -77.20 090 FL120 260" })
+  check_eq(ex("could the PSA jet slow to 220"), "SPD JIA50 220")
+  check_eq(ex("Republic 47 descend FL120"), "ALT RPA47 FL120")
+  asked(ex("could you have the Republic flight slow to 250"), "two Republic aircraft flying")
+end
