@@ -1200,7 +1200,7 @@ return function(H, f, compass)
     if navaid then return self:place_by_name(b, e, a) or navaid end
     -- (a typed name with two letters swapped is confirmed below, never taken as sounding the same)
     if best and best_score >= L.waypoint_confirm and not swapped_letters(best_word, best:lower()) then
-      self:explain(best_span[1], best_span[2])
+      self:explain_place(best_span[1], best_span[2])
       return best
     end
     local place = self:place_by_name(b, e, a)
@@ -1521,11 +1521,36 @@ return function(H, f, compass)
       local id, phrase = self:navaid_by_name(b, e, r)
       if id then return city_airport(id, phrase, r) end
     end
+    -- (a name of several words that an airport near an aircraft holds whole, "direct colorado springs": KCOS,
+    -- before an airport anywhere named by a part of it, FASI "SPRINGS")
+    for _, r in ipairs(near) do
+      local id = r.lat and self:airport_by_words(b, e, r, 2)
+      if id then return id end
+    end
     local airport = self:airport_by_name(b, e)
-    if airport then return beside(airport) end
+    if airport then
+      if a then self:far_from_aircraft(airport, a) end
+      return beside(airport)
+    end
     if #near > 0 then return nil end
     -- with no traffic to place it near, the name of one navaid anywhere (several are asked about)
     return (self:navaid_by_name(b, e, { lat = 0, lon = 0 }, math.huge))
+  end
+
+  -- An airport found by its name anywhere where the aircraft `a` is sent, farther than lexicon.region_nm from it
+  -- (another continent: "direct springs" over Colorado is FASI "SPRINGS" in South Africa), is asked about, naming
+  -- the words and the airport; never flown to on a word that names a place far away.
+  function m:far_from_aircraft(airport, a)
+    local at = self.world.user_waypoint_at
+    if not (at and a.lat) then return end
+    local lat, lon = at(airport)
+    if not lat then return end
+    local dlat, dlon = lat - a.lat, ((lon - a.lon + 180) % 360 - 180) * math.cos(math.rad(a.lat))
+    if 60 * math.sqrt(dlat * dlat + dlon * dlon) <= L.region_nm then return end
+    local span = (self.place_spans or {})[#(self.place_spans or {})]
+    self:need(string.format("Which place is '%s'? The one I found by that name is the airport %s, more than %d NM "
+      .. "from %s. Please give its ICAO code or ident.", span and self:raw(span.b, span.e) or airport, airport,
+      L.region_nm, a.id))
   end
 
   -- A navaid said by its navdata name ("direct Canarsie" -> CRI, "Point Reyes" -> PYE), where no
@@ -1590,7 +1615,7 @@ return function(H, f, compass)
           if #held == 1 then ids = held end
           local id = self:one_named(ids, "navaid", phrase, math.huge)
           if id then
-            self:explain(i, p[2])
+            self:explain_place(i, p[2])
             return id, not kind and phrase or nil
           end
         end
@@ -1762,7 +1787,7 @@ return function(H, f, compass)
             for _, c in ipairs(found) do
               if (not near or c.nm < L.region_ratio * first.nm) and #ids < 4 then ids[#ids + 1] = c.id end
             end
-            self:explain(i, self:word(i + n, "@airport_nouns") and i + n + 1 or i + n)
+            self:explain_place(i, self:word(i + n, "@airport_nouns") and i + n + 1 or i + n)
             if #ids > 1 then
               self:need(string.format("Which airport is '%s': %s?", self:raw(i, i + n), table.concat(ids, " or ")))
             end
@@ -1834,7 +1859,7 @@ return function(H, f, compass)
               end
             end
             if #found == 1 then
-              self:explain(i, self:word(i + n + 1, "@airport_nouns") and i + n + 2 or i + n + 1)
+              self:explain_place(i, self:word(i + n + 1, "@airport_nouns") and i + n + 2 or i + n + 1)
               return found[1]
             end
           end
@@ -1848,8 +1873,9 @@ return function(H, f, compass)
   -- Midway" -> KMDW "CHICAGO MIDWAY INTL", "is going to Kennedy" -> KJFK "JOHN F KENNEDY INTL"): one to
   -- three words in [b, e), the first no English squawk knows, that the name of exactly one airport
   -- within lexicon.navaid_range_nm of `near` {lat, lon} [deg] holds (sim:airports_with_words); the
-  -- question names them when several do (at most 4), nil when none.
-  function m:airport_by_words(b, e, near)
+  -- question names them when several do (at most 4), nil when none; `min_words` (default 1): the fewest words
+  -- the name found is said in.
+  function m:airport_by_words(b, e, near, min_words)
     local with = self.world.airports_with_words
     if not with or not near.lat then return nil end
     local function free(k) return k < e and self.t[k] and self.t[k].kind == "word" and self.t[k].alpha
@@ -1859,7 +1885,7 @@ return function(H, f, compass)
         for n = 3, 1, -1 do
           local words = {}
           for k = i, i + n - 1 do words[#words + 1] = free(k) and self.t[k].text or nil end
-          if #words == n and (n > 1 or #words[1] >= 4) then
+          if #words == n and (n > 1 or #words[1] >= 4) and n >= (min_words or 1) then
             local phrase = table.concat(words, " ")
             local ids, class = {}, self.world.airport_class
             for _, x in ipairs(with(phrase, near.lat, near.lon, L.navaid_range_nm)) do
@@ -1867,7 +1893,7 @@ return function(H, f, compass)
             end
             local id = self:one_named(ids, "airport", phrase, 4)
             if id then
-              self:explain(i, self:word(i + n, "@airport_nouns") and i + n + 1 or i + n)
+              self:explain_place(i, self:word(i + n, "@airport_nouns") and i + n + 1 or i + n)
               return id
             end
           end
@@ -1886,6 +1912,14 @@ return function(H, f, compass)
   -- airport bears it (VEAN is "ALONG"): lexicon.accounted.prepositions as a set
   local PREPOSITIONS = {}
   for _, w in ipairs(L.accounted.prepositions) do PREPOSITIONS[w] = true end
+
+  -- The words [b, e) read as a place's name: explained, and kept in self.place_spans ({b =, e =}; the last
+  -- names the place in m:far_from_aircraft's question).
+  function m:explain_place(b, e)
+    self:explain(b, e)
+    self.place_spans = self.place_spans or {}
+    self.place_spans[#self.place_spans + 1] = { b = b, e = e }
+  end
 
   function m:airport_named_in(b, e, named, placed, proper_only, nearby)
     local function proper(k)
@@ -1937,7 +1971,7 @@ return function(H, f, compass)
             for _, a in ipairs(with and with(phrase) or {}) do large = large + (cls(a) == "LARGE" and 1 or 0) end
             self.airport_said_city = large > 1
             -- (with "airport" after it, a capitalised word before the name is its city: "Beijing Capital")
-            self:explain(((city or with_city) and proper(i - 1)) and i - 1 or i, city and after + 1 or after)
+            self:explain_place(((city or with_city) and proper(i - 1)) and i - 1 or i, city and after + 1 or after)
             -- (the name said again, "go to Stuttgart, so Stuttgart is its destination", is the same place)
             for k = after, math.min(e, #self.t + 1) - 1 do
               if self:word(k, t.text) and not self.u:used(k) then self:explain(k, k + 1) end
@@ -2086,9 +2120,35 @@ return function(H, f, compass)
     local t = self.t[i]
     if i < e and t.kind == "word" and t.alpha and #t.text >= 3 and not t.keyword and not t.number_word
         and not self:word(i, "@route_ordinals") then
+      local name_e = self:name_goes_on(i, e)
+      if name_e then
+        return self:need(string.format("Which place is '%s'? Please give its ICAO code or ident.", self:raw(i, name_e)))
+      end
       return t.text:upper()
     end
     return nil
+  end
+
+  -- The end of a place's name that the word at i opens and one or two unread words after it (before e) go on
+  -- with, the words together naming a place of the navdata anywhere (an airport whose name holds them, an
+  -- airport or a navaid of that name: "santa barbara", "las vegas"), a navaid kind said after them included
+  -- ("las vegas ndb"); nil when the word stands alone. A place read from the word at i alone is read from part of
+  -- that name.
+  function m:name_goes_on(i, e)
+    local w = self.world
+    if not (w.airports_with_words and w.airports_named and w.navaids_named) then return nil end
+    local words, found = { self.t[i].text }, nil
+    for k = i + 1, math.min(e, i + 3) - 1 do
+      local x = self.t[k]
+      if self.u:used(k) or x.kind ~= "word" or not x.alpha or x.keyword or x.filler or x.number_word then break end
+      words[#words + 1] = x.text
+      local phrase = table.concat(words, " ")
+      if #w.airports_with_words(phrase) > 0 or #w.airports_named(phrase) > 0 or #w.navaids_named(phrase, 0, 0, 1e5) > 0 then
+        found = k + 1
+      end
+    end
+    if found and self:word(found, "@navaid_kinds") and found < e then found = found + 1 end
+    return found
   end
 
   -- A position said in degrees where a waypoint is meant ("direct 54 North 020 West", "after 56 North
@@ -3083,6 +3143,12 @@ return function(H, f, compass)
     local spelled = coded or spelled_airport(self, s) or typed_airport(self, s)
     local near = spelled or (a and self:airport_of_city_said(s.b, s.e, a)) or (a and self:airport_by_name(s.b, s.e, a, true))
     local airport = near or self:airport_by_name(s.b, s.e)
+    -- (a name of several words that an airport near the aircraft holds whole, "colorado springs": KCOS "CITY OF
+    -- COLORADO SPRINGS MUNI", before one anywhere named by a part of it, FASI "SPRINGS" in South Africa)
+    if not near and a and #w == 0 then
+      near = self:airport_by_words(s.b, s.e, a, 2)
+      airport = near or airport
+    end
     -- (a city whose airport lies farther, none of its name read through lexicon.city_airports: the region's,
     -- "destination Cordoba" from Buenos Aires SACO, not LEBA in Spain; else the one found, confirmed below)
     if not near and a and #w == 0 and not (airport and (self.city_airport or {})[airport]) then

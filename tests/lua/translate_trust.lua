@@ -14430,3 +14430,38 @@ do
   check_eq(ex("Republic 47 descend FL120"), "ALT RPA47 FL120")
   asked(ex("could you have the Republic flight slow to 250"), "two Republic aircraft flying")
 end
+-- Cycle 53 (hz2): a place named in several words is read on all of them (an airport near the traffic whose name
+-- holds them) before an airport anywhere named by one of them; an airport found by name farther than
+-- lexicon.region_nm from every aircraft is asked about
+do
+  local _, ex = navscene({ "CRE FFT2021 A20N 39.10 -104.90 010 FL110 250" }, "US places of several words")
+  if ex then
+    check_eq(ex("FFT2021 destination colorado springs"), "DEST FFT2021 KCOS")
+    check_eq(ex("send FFT2021 direct to colorado springs"), "ADDWPT FFT2021 KCOS ; DIRECT FFT2021 KCOS")
+    asked(ex("FFT2021 direct springs"), "FASI in South Africa on one common word")
+    asked(ex("FFT2021 direct kuala lumpur"), "another continent")
+    asked(ex("FFT2021 destination palm springs"), "far from the aircraft: confirmed")
+    asked(ex("FFT2021 destination grand rapids"), "no airport of that name near")
+    asked(ex("FFT2021 destination santa barbara"), "no airport of that name near")
+    -- (a word said where nothing is known to match it, the next words going on with a place's name: never the
+    -- fix of the first word's name)
+    asked(ex("FFT2021 direct santa barbara"), "part of a name: not the fix SANTA")
+    asked(ex("FFT2021 direct grand rapids"), "part of a name: not the fix GRAND")
+    asked(ex("FFT2021 direct las vegas ndb"), "no NDB of that name")
+  end
+  local _, exv = navscene({ "CRE UAL12 A320 36.5 -115.5 010 FL110 250", "ADDWPT UAL12 BTY" }, "a navaid of two words")
+  if exv then
+    check_eq(exv("UAL12 direct las vegas"), "ADDWPT UAL12 LAS ; DIRECT UAL12 LAS")
+    asked(exv("UAL12 direct las vegas ndb"), "no NDB of that name")
+  end
+  local _, ex2 = navscene({ "CRE AFR12 A320 48.60 2.30 010 FL110 250" }, "European places of several words")
+  if ex2 then
+    check_eq(ex2("AFR12 destination le bourget"), "DEST AFR12 LFPB")
+    asked(ex2("AFR12 direct springs"), "another continent")
+  end
+  local _, ex3 = navscene({ "CRE MAS12 A320 3.30 101.30 010 FL110 250" }, "Asian places of several words")
+  if ex3 then
+    check_eq(ex3("MAS12 destination kuala lumpur"), "DEST MAS12 WMKK")
+    asked(ex3("MAS12 direct lumpur springs"), "a part of no name near")
+  end
+end
