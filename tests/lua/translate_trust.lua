@@ -14411,6 +14411,6 @@ end
 do
   local _, ex = scene({ "CRE KLM12 B738 52.3 4.76 090 FL100 250" })
   check_eq(ex("seed is 42"), "SEED 42")
-  check_eq(ex("KLM12 direct SPY, the detection is still on"), "DIRECT KLM12 SPY")
+  check_eq(ex("KLM12 direct SPY, the detection is still on"), "ADDWPT KLM12 SPY ; DIRECT KLM12 SPY")
   check_eq(ex("KLM12 climb FL180, no more trails please"), "ALT KLM12 FL180 ; TRAIL OFF")
 end
