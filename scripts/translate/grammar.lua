@@ -1798,6 +1798,7 @@ local CM_BLOCKS, CM_DETERMINERS = set_of(COMMENTARY.blocks), set_of(COMMENTARY.d
 local CM_WHILE, CM_LATER, CM_LEAD_CONTEXT = set_of(COMMENTARY.while_words), set_of(COMMENTARY.later),
   set_of(COMMENTARY.lead_context)
 COMMENTARY.reason_set, COMMENTARY.study_set = set_of(COMMENTARY.reasons), set_of(COMMENTARY.study_labels)
+COMMENTARY.put_off_later_set = set_of(COMMENTARY.put_off_later)
 COMMENTARY.restate_set, COMMENTARY.intention_set = set_of(COMMENTARY.restate_verbs), set_of(COMMENTARY.intention)
 COMMENTARY.restated_sets = {}
 for intent, nouns in pairs(COMMENTARY.restated) do COMMENTARY.restated_sets[intent] = set_of(nouns) end
@@ -2104,6 +2105,38 @@ function G:declared(b, e)
   return not (wished and instructs) and not (named and (instructs or not believed))
 end
 
+-- True when the clause opening at b (to its next comma or its sentence's end) tells a state beside the request: a
+-- remark in the declarative shape (G:declared) whose subject is a noun phrase opened by one of
+-- declared.nouns_after before its copula ("the detection is on anyway", "the traffic trails are on already", "in my
+-- experiment the noise is off", a frame and its possessive first: "the zone is not active yet"; a switch's state
+-- only with the frame or one of declared.state_told), or the predicate whose copula was dropped, one of
+-- declared.predicate_adverbs then one of declared.judgements ("just noise", "only noise in the background"). The
+-- setting or instruction words in it are nouns of what is told, never switched or sent.
+function G:state_remark(b)
+  local D = COMMENTARY.decl
+  local e = commentary_end(self, b)
+  local comma = b
+  while comma < e and self.t[comma].text ~= "," do comma = comma + 1 end
+  local function instruction(y) local i = self:intent_at(y) return i ~= nil and i ~= false end
+  local x = b
+  local framed = self:word(x, D.frames) and self:word(x + 1, D.possessives)
+  if framed then x = x + 3 end
+  if x >= comma or #self:quantities(b, comma) > 0 or self:has_ref(b, comma, "aircraft") then return false end
+  if self:word(x, D.predicate_adverbs) then
+    return self:word(x + 1, D.judgements) and instruction(x + 1) and not self:word_in(x + 2, comma, "@on @off")
+  end
+  local copula = self:find_word(x + 1, comma, D.copulas)
+  if not (self:word(x, D.nouns_after) and copula < comma and self:declared(x, comma)) then return false end
+  -- (a switch's state with no frame or told adverb may be wished: "..., the trails are on" stays read)
+  if self:word_in(copula, comma, "@on @off") and not (framed or self:word_in(copula, comma, D.state_told)) then
+    return false
+  end
+  for y = x + 1, copula - 1 do
+    if instruction(y) then return true end
+  end
+  return false
+end
+
 -- True when the sentence opening at k is a remark in the declarative shape (G:declared), or opened by an apology
 -- ("Sorry, my supervisor is calling me."): it ends the request or with a full stop or "!", and an instruction,
 -- aircraft or value is said before it or an instruction or aircraft after it. An apology alone ("Sorry!") is one
@@ -2256,6 +2289,9 @@ function G:in_reason(i)
         -- ("reduce 260, sequencing into DXB", "slow to 210, DFW metering", "left 110 degrees; we need him well out
         -- of the way of the BIG stack": the operational reason, its place too;
         -- "inbound from Vigo" names where the aircraft comes from, no reason)
+        inside = true
+      elseif punct and (t.text == "," or t.text == ";") and instructed(k) and self:state_remark(k + 1) then
+        -- ("turn right heading 180, the detection is on anyway", "delete the cessna, just noise": the state told)
         inside = true
       elseif punct and t.text == "," and self:word(k + 1, "@aside_comments") and instructed(k)
           and not self:has_ref(k + 1, commentary_end(self, k + 1), "aircraft")
@@ -7738,8 +7774,20 @@ G.bare_beside_place = { report = true, noun = true, area = true, put_off = true 
 -- True when the word at i, of G.bare_left, is said bare where its kind is asked (G.bare_asks); a word other than a
 -- place's straight before an instruction word is its manner ("continue climb", "cleared descend"), as
 -- is "hold" opening the request ("hold KLM12 climb FL300": the simulation's hold, asked)
+-- (a word of lexicon.aside.put_off_later closing the request in a clause, after its comma, "and" or "then", that holds a
+-- word a command read, with an aircraft named, puts that command off too: "KLM12 climb FL190, we should pause
+-- soon", "..., delete it shortly" are asked)
 function G:bare_asked(i)
   local kind = G.bare_left[self.t[i].text]
+  if self:word(i, COMMENTARY.put_off_later_set) and self:has_ref(1, #self.t + 1, "aircraft") then
+    local n = i + 1
+    while self.t[n] and self.t[n].kind == "punct" do n = n + 1 end
+    local k = i - 1
+    while n > #self.t and k >= 1 and self.t[k].kind ~= "punct" and not self:word(k, "and then") do
+      if self.triggers[k] then return true end
+      k = k - 1
+    end
+  end
   local what = self:said_bare(i, kind ~= "place")
   return what and (G.bare_asks[kind][what] or (kind == "noted" and what == "start" and self:word(i, "hold"))) or false
 end

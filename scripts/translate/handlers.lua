@@ -161,6 +161,8 @@ function m:on_off(s)
   -- "drifting off its route, put it back on LNAV": switched back on, whatever went off before
   local back = self:find_word(b, s.e, "back")
   if back < s.e and self:word(back + 1, "on") then return 1 end
+  -- "no more noise please", "no more trails": the switch's noun after "no more" is switched off
+  if s.trig and self:word(s.trig - 1, "more") and self:word(s.trig - 2, "no") and not self:in_reason(s.trig) then return 0 end
   -- ("switch on the detection, but without resolution": "without" or "no" with only articles after it in the
   -- segment, before the next instruction's word, switches that one off; "lnav off hdg 250" is LNAV's)
   local function next_ones(k)

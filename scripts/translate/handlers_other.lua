@@ -3819,8 +3819,14 @@ return function(H, f, compass)
     end
     self:need("How many times real time should the simulation run?")
   end
+  -- ("KLM12 to FL110, seed is 42 by the way": a seed told with a copula beside an aircraft's instruction may be the
+  -- one the run has; asked)
   function m:seed(s)
     local q = first(self, s, { plain = true })
+    if q and self:word(s.trig + 1, "is was") and self:has_ref(1, #self.t + 1, "aircraft") then
+      return self:need(string.format("Should I set the random seed to %s now (SEED %s), or is it the seed the run "
+        .. "already has?", f.int(q.value), f.int(q.value)))
+    end
     if q then return self:emit("SEED " .. f.int(q.value)) end
     self:need("Which random seed should I set?")
   end

@@ -1048,6 +1048,9 @@ return {
           -- condition (no value, place or instruction word in it), the rest commentary; never an instruction now
           intention = { "i'll", "we'll" },
           later = { "later", "afterwards", "afterward" },
+          -- (words of accounted.bare_asked.put_off that put an instruction off by a time not given, never ordering it
+          -- after the one before as "afterwards" does: G:bare_asked)
+          put_off_later = { "soon", "shortly" },
           lead_context = { "for", "behind", "against", "on", "with", "near", "versus", "vs" },
           leads = { "for", "to" },
           -- (a note to oneself, "note to self:", is the speaker's, to the end of its sentence)
@@ -1101,6 +1104,11 @@ return {
             -- adverbs between it and the noun)
             copular_subjects = { "it", "that", "there", "he", "she" },
             predicate_adverbs = { "just", "only", "mostly", "merely", "simply", "all", "basically", "really" },
+            -- (a setting's name that is also a word of judgement, its copula dropped after one of predicate_adverbs:
+            -- "delete the cessna, just noise" judges the aircraft)
+            judgements = { "noise" },
+            -- (the adverbs marking a setting's state as told, never wished: "the detection is on anyway")
+            state_told = { "already", "anyway", "anyhow", "still", "yet" },
             nouns_after = { "the", "a", "an", "this", "that", "our", "its", "their", "his", "her", "my", "your",
                             "no", "any", "some" },
             requests = { "want", "wants", "need", "needs", "like", "would", "wish", "should", "must", "can",

@@ -1351,8 +1351,19 @@ return function(intent, rule, words)
   rule { "forget delete remove del", "delwpt", when = function(g, i) return navaid_on_route(g, i, true) end }
   -- "clear the route of EWG7LP", "clear UAL485's route completely", "kill the whole route on ASA31": the
   -- whole route, no waypoint named
+  -- (the route's noun in the verb's own clause: "delete KLM123, the route is finished" tells why, no comma between)
   rule { "clear delete remove erase wipe kill", "delrte", near = { 4, "@route_nouns" },
-         when = function(g) return not g:has_ref(1, #g.t + 1, "waypoint") end }
+         when = function(g, i)
+           if g:has_ref(1, #g.t + 1, "waypoint") then return false end
+           for k = math.max(1, i - 4), math.min(#g.t, i + 4) do
+             if g:word(k, "@route_nouns") then
+               local clause = true
+               for x = math.min(i, k), math.max(i, k) do clause = clause and g.t[x].text ~= "," end
+               if clause then return true end
+             end
+           end
+           return false
+         end }
   -- "cancel your route", "cancel the route of CHH7423": the whole route, the noun straight after the verb (or its
   -- article), no waypoint named, and nothing after it that a cancelled route would not be ("cancel route
   -- restrictions": a restriction lifted)

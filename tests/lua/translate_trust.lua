@@ -14465,3 +14465,40 @@ do
     asked(ex3("MAS12 direct lumpur springs"), "a part of no name near")
   end
 end
+
+-- Cycle 53 (hz3): a remark's words beside a real instruction are no command: a setting's state told with a
+-- frame or a told adverb, the copula dropped before a judgement ("just noise"), "no more" a switch's noun, a route
+-- told after the deletion's comma, a seed told with a copula, a put-off word in the clause of a command read
+do
+  local _, ex = scene({ "CRE KLM12 B738 52.3 4.76 090 FL100 250", "CRE C172X C172 52.2 4.9 180 3000 100",
+    "CRE DLH4 A320 52.4 4.6 270 FL200 280" })
+  check_eq(ex("delete the cessna, just noise"), "DEL C172X")
+  check_eq(ex("remove the cessna, only noise"), "DEL C172X")
+  check_eq(ex("DLH4 descend FL130, just noise in the background"), "ALT DLH4 FL130")
+  check_eq(ex("KLM12 turn right heading 180, the detection is on anyway"), "HDG KLM12 180 RIGHT")
+  check_eq(ex("KLM12 heading 200; the resolution is off anyway"), "HDG KLM12 200")
+  check_eq(ex("DLH4 descend FL160, in my experiment the noise is off"), "ALT DLH4 FL160")
+  check_eq(ex("KLM12 descend FL080, the zone is not active yet"), "ALT KLM12 FL80")
+  check_eq(ex("KLM12 climb FL200, no more noise please"), "ALT KLM12 FL200 ; NOISE OFF")
+  -- near variants still read or asked: a state said with no frame or told adverb may be wished, a switch said
+  check_eq(ex("KLM12 climb FL150, the trails are on"), "ALT KLM12 FL150 ; TRAIL ON")
+  check_eq(ex("KLM12 climb FL150, noise on"), "ALT KLM12 FL150 ; NOISE ON")
+  check_eq(ex("KLM12 heading 200, make sure the detection is on"), "HDG KLM12 200 ; ASAS ON")
+  asked(ex("KLM12 climb FL150, just trails"), "trails after 'just' is no judgement: shown or hidden asked")
+  -- the route told after the deletion's comma deletes no route
+  asked(ex("delete KLM12, the route is finished"), "the aircraft or a waypoint: no DELRTE")
+  check_eq(ex("delete the route of KLM12"), "DELRTE KLM12")
+  -- a seed told with a copula beside an instruction is asked; typed as a setting it is set
+  asked(ex("KLM12 to FL110, seed is 42 by the way"), "the seed told or set?")
+  check_eq(ex("KLM12 to FL110, seed 42"), "ALT KLM12 FL110 ; SEED 42")
+  -- a put-off word closing the clause of a command read puts that command off: asked
+  asked(ex("KLM12 climb FL190, we should pause soon"), "when to pause")
+  asked(ex("KLM12 climb FL190, delete it shortly"), "when to delete")
+  check_eq(ex("KLM12 climb FL190, pause"), "ALT KLM12 FL190 ; HOLD")
+end
+do
+  local _, ex = scene({ "CRE KLM12 B738 52.3 4.76 090 FL100 250" })
+  check_eq(ex("seed is 42"), "SEED 42")
+  check_eq(ex("KLM12 direct SPY, the detection is still on"), "ADDWPT KLM12 SPY ; DIRECT KLM12 SPY")
+  check_eq(ex("KLM12 climb FL180, no more trails please"), "ALT KLM12 FL180 ; TRAIL OFF")
+end
