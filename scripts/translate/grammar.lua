@@ -10175,6 +10175,25 @@ local function airline_values(text, fleet)
       return nil
     end)
   end
+  -- ("let the Condor turn 45 degrees right", "the Lufthansa now climb 2000 feet": a number with its unit said after
+  -- "the", an airline and a verb of lexicon.airline_value_verbs (one of airline_value_leads before it or none) is the
+  -- value, never a flight number with the airline's words misheard before it: a comma keeps the callsign matcher
+  -- from reading another aircraft flying with that number, UAE45, out of the words)
+  local function value_verb(ws)
+    local first, last = ws:match("^(%a+)%s+(%a+)%s+$")
+    if not first then return lexicon.airline_value_verbs[ws:match("%a+"):lower()] end
+    return lexicon.airline_value_verbs[last:lower()] and lexicon.airline_value_leads[first:lower()]
+  end
+  for _, pattern in ipairs(the_said and { "(%f[%a][Tt]he%s+)(%a+)(%s+)(%a+%s+)(%d+)(%s+)(%a+)",
+                                          "(%f[%a][Tt]he%s+)(%a+)(%s+)(%a+%s+%a+%s+)(%d+)(%s+)(%a+)",
+                                          "(%f[%a][Tt]he%s+)(%a+%s+%a+)(%s+)(%a+%s+)(%d+)(%s+)(%a+)" } or {}) do
+    text = text:gsub(pattern, function(the, w, s1, between, n, s2, unit)
+      if AIRLINE_WORDS[w:lower():gsub("%s+", " ")] and value_verb(between) and lexicon.value_units[unit:lower()] then
+        return the .. w .. "," .. s1 .. between .. n .. s2 .. unit
+      end
+      return nil
+    end)
+  end
   -- (the value said in words, one or two of them, after an airline of one or two words: "turn the Lufthansa ten
   -- degrees left", "the Finnair thirty five degrees right", "move the Air Portugal twenty miles to the south")
   local function spoken(ws)

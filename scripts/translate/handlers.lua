@@ -968,6 +968,45 @@ function m:given_to(to)
   return false
 end
 
+-- An airline and a type's number or designator said where the callsign matcher read a callsign of that airline
+-- that flies ("the Austrian 767" heard as AUA767 and matched inexactly to AUA7LN; "the Lufthansa 747" with DLH747
+-- flying): which reading stands. `r`: that reference (from token i; the type ends before token te); `typed`: ids of
+-- the airline's aircraft flying of the type, or nil; `the`: the airline said after "the". Returns the ids the type
+-- names (r is then dropped by airline_refs), or nil to keep r as read. The callsign is linked to what was said when
+-- it is exact or one slip from what was heard (m:near_callsigns). After "the", the type names its aircraft when the
+-- callsign is not linked; a linked callsign of another aircraft and the type's aircraft are both named in a question.
+-- A callsign not linked is never offered, its only link being the type's number: with none of the airline's aircraft
+-- of the type flying, or without "the", the question names what was heard. A question drops r, so that no yes to it
+-- confirms that aircraft.
+function m:callsign_or_type(i, te, r, typed, the)
+  -- (a callsign said in full with more digits after it, "Egyptair 777 20 miles before FAROE" for MSR777, is linked;
+  -- one heard from part of the type's words, "Delta seven" of "the Delta seven fifty-seven", leaves the rest unread)
+  local linked, has = not r.heard or r.heard.id:sub(1, #r.name) == r.name:upper(), false
+  for _, id in ipairs(r.heard and te == r.e and self:near_callsigns(r.heard.id) or {}) do
+    linked = linked or id == r.name
+  end
+  for _, id in ipairs(typed or {}) do has = has or id == r.name end
+  if has then return r.heard and typed or nil end
+  if the and typed and not linked then return typed end
+  if linked and not typed then return nil end
+  local said = self:raw(i, te)
+  if typed then
+    local kinds = {}
+    for _, id in ipairs(typed) do kinds[#kinds + 1] = string.format("%s, a %s", id, (self:state(id).type or "?"):upper()) end
+    local call = not r.heard and string.format("%s by its callsign", r.name)
+      or linked and string.format("%s by a callsign heard as %s", r.name, r.heard.id) or "no aircraft flies with it"
+    self:need(string.format("Which aircraft is '%s'? As a callsign: %s; as the airline's type: %s. Please give its "
+      .. "callsign.", said, call, table.concat(kinds, " or ")))
+  else
+    self:need(string.format("Which aircraft is '%s'? No aircraft of that airline has it for its callsign or its "
+      .. "type. Please give its callsign.", said))
+  end
+  for k = #self.refs, 1, -1 do
+    if self.refs[k] == r then table.remove(self.refs, k) end
+  end
+  return nil
+end
+
 -- An aircraft named by "the" and its airline alone ("could the Ryanair come
 -- down", "the easyJet's route", "the BA"), with exactly one aircraft of that
 -- airline flying, is a reference to it (added to self.refs, kind "aircraft",
@@ -1116,16 +1155,20 @@ function m:airline_refs()
       -- after the type)
       local typed, type_e
       local test, te
-      -- (`heard`: a callsign no aircraft flying has, the matcher's reading of the airline and the number after it)
-      local heard = self:refs_in(i, i + 1, "aircraft")[1]
-      heard = heard and heard.b == i and not heard.exists and heard
+      -- (`said_at`: the callsign the matcher read from the airline's words on; `heard`: one no aircraft flying has,
+      -- the matcher's reading of the airline and the number after it)
+      local said_at = self:refs_in(i, i + 1, "aircraft")[1]
+      said_at = said_at and said_at.b == i and said_at
+      local heard = said_at and not said_at.exists and said_at
       -- ("IndiGo ATR may be climbed to FL150": the airline and a type opening a sentence, no number heard as a
-      -- callsign, describe the airline's aircraft of that type as after "the")
+      -- callsign, describe the airline's aircraft of that type as after "the"; "Austrian 767, climb ..." matched
+      -- inexactly is weighed by m:callsign_or_type)
       local opening = not prev or (prev.kind == "punct" and prev.text ~= ",")
-      if (the and (not inside[i] or heard)) or (opening and not heard and not inside[i]) then
-        test, te = self:type_said(the and self:after_of(e) or e)
+      if (the and (not inside[i] or said_at))
+          or (opening and ((said_at and said_at.heard) or (not heard and not inside[i]))) then
+        test, te = self:type_said(the and self:after_of(e) or e, true)
       end
-      if heard and te and te < heard.e then test = nil end
+      if said_at and te and te < said_at.e then test = nil end
       for k = 1, test and #self.t or 0 do
         if self:intent_at(k) == "create" then test = nil end
       end
@@ -1138,6 +1181,7 @@ function m:airline_refs()
             end
           end
         end
+        if said_at and said_at.exists then typed = self:callsign_or_type(i, te, said_at, typed, the) end
         type_e = typed and te
       end
       local ok = not inside[i] and not inside[e - 1]
@@ -1159,7 +1203,8 @@ function m:airline_refs()
         -- the callsign, and `typed` is not read)
         for k = #self.refs, 1, -1 do
           local r = self.refs[k]
-          if (r.b >= e and r.b < type_e) or (r.kind == "aircraft" and r.b == i and r.e <= type_e and not r.exists) then
+          if (r.b >= e and r.b < type_e)
+              or (r.kind == "aircraft" and r.b == i and r.e <= type_e and (not r.exists or r.heard)) then
             table.remove(self.refs, k)
           end
         end
@@ -1499,9 +1544,10 @@ end
 -- "Dreamliner", "King Air", "A320"): (test, e) with test(designator) true for the types it names and e the token
 -- after it, or nil. A family's number names each of its variants; a designator or variant names itself;
 -- a maker names its types; a nickname (types.nicknames) its patterns. A nickname said straight after a type
--- narrows it to the types of both ("the 737 MAX", "the Boeing 737 MAX").
-function m:type_said(i)
-  local test, e = self:type_named(i)
+-- narrows it to the types of both ("the 737 MAX", "the Boeing 737 MAX"). `after_airline`: i follows an airline's
+-- name, where a family's number said group-wise reads as after "the" ("the Delta seven fifty-seven").
+function m:type_said(i, after_airline)
+  local test, e = self:type_named(i, after_airline)
   local nick = test and self.t[e] and self.t[e].kind == "word" and require("translate.types").nicknames[self.t[e].text]
   if not nick then return test, e end
   local both = {}
@@ -1513,7 +1559,7 @@ function m:type_said(i)
   if not next(both) then return test, e end
   return function(d) return both[d] == true end, e + 1
 end
-function m:type_named(i)
+function m:type_named(i, after_airline)
   local t = self.t[i]
   if not t then return nil end
   local fams = families()
@@ -1540,7 +1586,8 @@ function m:type_named(i)
   if self:word(i - 1, "the") and #said == 2 and (said:sub(1, 1) == "7" or said:sub(1, 1) == "3") then
     return pattern_of({ "^" .. (said:sub(1, 1) == "7" and "B" or "A") .. said .. "%w$" }), i + 2
   end
-  local tens = #said == 1 and self:word(i - 1, "the") and self.t[i + 1] and TENS_WORDS[self.t[i + 1].text]
+  local tens = #said == 1 and (after_airline or self:word(i - 1, "the")) and self.t[i + 1]
+    and TENS_WORDS[self.t[i + 1].text]
   if tens then
     local d3 = self.t[i + 2] and self.t[i + 2].kind == "word" and DIGIT_WORDS[self.t[i + 2].text]
     local num, e = said .. tens .. ((d3 and d3 ~= "0") and d3 or "0"), (d3 and d3 ~= "0") and i + 3 or i + 2
@@ -1560,6 +1607,10 @@ function m:type_named(i)
     end
   end
   if t.kind == "number" and fams[t.text] then return set_of(fams[t.text]), i + 1 end
+  -- ("the Condor B757", "the B777": a Boeing family's number typed after the maker's letter as a designator is, no
+  -- designator itself, names the family; not where an aircraft flying has it for its callsign)
+  local lettered = t.kind == "word" and t.text:match("^b(7%d7)$")
+  if lettered and fams[lettered] and not self:state(t.raw) then return set_of(fams[lettered]), i + 1 end
   -- ("the 350", "the 321": an Airbus family's number without its letter, the whole family, when it names no
   -- callsign heard; "the 738": else the digits of one Airbus or Boeing designator, B738)
   if t.kind == "number" and self:word(i - 1, "the") and fams["a" .. t.text]

@@ -2055,6 +2055,12 @@ return {
   -- nautical miles south"): no flight number
   value_units = { degrees = true, degree = true, knots = true, knot = true, kts = true, feet = true, ft = true,
                   percent = true, nm = true, nautical = true, miles = true, mile = true, km = true },
+  -- verbs of a relative value said between an airline's name and a number with one of value_units ("let the Condor
+  -- turn 45 degrees right"), and words that may stand before them ("the Lufthansa now climb 2000 feet"): the
+  -- number is the value, no flight number (grammar.lua airline_values)
+  airline_value_verbs = { turn = true, climb = true, descend = true, reduce = true, increase = true, slow = true,
+                          accelerate = true, decelerate = true, veer = true, offset = true },
+  airline_value_leads = { now = true, please = true, immediately = true },
   -- airlines' telephony that is also the noun of a value, word -> {ICAO prefix, the noun's plain word}: before
   -- a number and its unit, or after one of value_noun_before with none of the airline flying, it is that noun
   -- ("VLG12AB velocity 250 knots", "reduce the velocity"; grammar.lua airline_values)

@@ -14502,3 +14502,40 @@ do
   check_eq(ex("KLM12 direct SPY, the detection is still on"), "ADDWPT KLM12 SPY ; DIRECT KLM12 SPY")
   check_eq(ex("KLM12 climb FL180, no more trails please"), "ALT KLM12 FL180 ; TRAIL OFF")
 end
+
+-- Cycle 53 (hz1): a number said after an airline's name that is no flight number of the aircraft: a type's number
+-- or designator names the airline's aircraft of that type (or both readings are asked, never a did-you-mean whose
+-- only link is the type's number); a value with its unit after "the", an airline and a verb is the value
+do
+  local _, ex = scene({ "CRE OAL3KP E190 38.0 23.0 090 FL180 260", "CRE OAL61T A321 38.4 23.4 270 FL250 280",
+    "CRE SWR12 A320 38.8 23.8 180 FL300 280" })
+  check_eq(ex("the Olympic 321, descend FL200"), "ALT OAL61T FL200")
+  check_eq(ex("can the Olympic three twenty one reduce to 250 knots"), "SPD OAL61T 250")
+  check_eq(ex("the Olympic A321, turn left heading 200"), "HDG OAL61T 200 LEFT")
+  -- no Olympic of the type flies: asked, naming what was said, and no aircraft offered
+  local r = ex("the Olympic 737, descend FL200")
+  asked(r, "no aircraft of the airline of that type")
+  check(not r:find("Did you mean", 1, true) and not r:find("OAL3KP", 1, true), "no did-you-mean from a type's number")
+  -- without "the" the number may be a callsign: both readings asked
+  r = ex("Olympic 321, descend FL200")
+  asked(r, "a type's number without 'the'")
+  check(r:find("OAL61T", 1, true) ~= nil and not r:find("Did you mean", 1, true), "the type's reading named")
+end
+do
+  -- a flying callsign that is the airline and the type's number, with another of the airline of that type: both asked
+  local _, ex = scene({ "CRE SAS737 A320 59.0 17.0 090 FL200 260", "CRE SAS9RE B738 59.4 17.4 270 FL340 280" })
+  local r = ex("the Scandinavian 737, climb FL360")
+  asked(r, "a callsign flying and a type of the airline")
+  check(r:find("SAS737", 1, true) ~= nil and r:find("SAS9RE", 1, true) ~= nil, "both readings named")
+  check_eq(ex("Scandinavian 737, climb FL360"), "ALT SAS737 FL360")
+end
+do
+  local _, ex = scene({ "CRE TAP6WB B752 40.0 -8.0 090 FL200 260", "CRE KLM62 A320 40.4 -8.4 270 FL250 280",
+    "CRE IBE8TX A320 40.8 -8.8 180 FL300 280" })
+  check_eq(ex("delete the Air Portugal B757"), "DEL TAP6WB")
+  check_eq(ex("the Air Portugal seven fifty-seven, climb FL240"), "ALT TAP6WB FL240")
+  -- a value with its unit after the airline and a verb: never KLM62's flight number
+  check_eq(ex("let the Iberia turn 62 degrees to the left"), "HDG IBE8TX 118 LEFT")
+  check_eq(ex("the Iberia now turn 62 degrees right"), "HDG IBE8TX 242 RIGHT")
+  asked(ex("let the Iberia turn 62"), "a number with no unit after the airline and a verb")
+end
