@@ -4155,6 +4155,7 @@ end
 -- marked used and noted.
 local SC = lexicon.self_correction
 local SC_KEPT, SC_ONLY, SC_SETTING = {}, set_of(SC.only), set_of(SC.setting)
+G.sc_left_named = set_of(SC.left_named)
 for cmd, nouns in pairs(SC.just_the) do for _, w in ipairs(nouns) do SC_KEPT[w] = cmd end end
 -- "reduce speed 220... no, make it 210", "descend to 26 thousand ft, sorry, 27 thousand": a value alone after
 -- the self-correction run [a, c) (after "make it" too), ending its clause, of the kind of the value said since
@@ -4336,7 +4337,13 @@ function G:self_corrected()
         while self.t[c] and (self.t[c].kind == "punct" or self.t[c].filler) do c = c + 1 end
       end
     end
-    local left_as_is = marked and self:left_as_is_end(c)
+    local left_as_is, left_kind = false, nil
+    if marked then left_as_is, left_kind = self:left_as_is_end(c) end
+    -- ("heading 360, sorry, leave its speed, ...": the kind named is not the instruction said before the run: asked)
+    if left_kind and not self:kept_clause_end(left_kind:lower(), a) then
+      return self:need(string.format("You said '%s', but no %s was given before it. What stands?",
+        self:raw(c, left_as_is), self.t[c + 2].text))
+    end
     if left_as_is then
       c = left_as_is
       while self.t[c] and (self.t[c].kind == "punct" or self.t[c].filler) do c = c + 1 end
@@ -4505,9 +4512,14 @@ function G:self_corrected()
 end
 
 -- The token after a phrase of lexicon.self_correction.left_as_is said at c and ending its clause (punctuation or
--- the end after it), else nil
+-- the end after it), else nil. "leave its heading", "keep the speed" (a word of lexicon.self_correction.left_named
+-- and a noun of .just_the, ending the clause) is such a phrase too; the command it names (HDG, SPD, ...) is
+-- returned second.
 function G:left_as_is_end(c)
   if not self:word(c, "leave keep") then return nil end
+  local noun = self.t[c + 2]
+  local kind = self:word(c + 1, G.sc_left_named) and noun and noun.kind == "word" and SC_KEPT[noun.text]
+  if kind and (not self.t[c + 3] or self.t[c + 3].kind == "punct") then return c + 3, kind end
   for _, phrase in ipairs(SC.left_as_is) do
     local k = c
     for _, w in ipairs(PHRASE_WORDS[phrase]) do

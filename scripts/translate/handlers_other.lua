@@ -3917,11 +3917,23 @@ return function(H, f, compass)
       end
     end
     -- "a note on screen saying baseline run", "a message that says trial 2": the words after, as typed
+    -- (a "?" closing a polite question, "could you put a note on screen saying trial 3 begins?", closes the
+    -- request, not the note; the note read as a question itself, "... saying are you ready?", is asked)
     local saying = self:find_word(s.trig + 1, s.e, "saying says reading")
     if saying + 1 < s.e then
+      local e = s.e
+      if self.t[e - 1].text == "?" and e - 1 == #self.t and self:word(self:skip_fillers(1), "@polite_openings")
+          and self:word(self:skip_fillers(1) + 1, "you") then
+        if self:word(saying + 1, "@echo_question_openers") then
+          return self:need(string.format("Should the note read '%s' with the question mark, or without it?",
+            self:raw(saying + 1, e - 1)))
+        end
+        e = e - 1
+        self:explain(e, s.e)
+      end
       self:explain(s.trig + 1, saying + 1)
-      self:mark_used(saying + 1, s.e)
-      return self:emit("ECHO " .. self:raw(saying + 1, s.e))
+      self:mark_used(saying + 1, e)
+      return self:emit("ECHO " .. self:raw(saying + 1, e))
     end
     -- "print baseline no reso to the console", "print hello_3 in the console": the words between the verb
     -- and where they go, as typed ("echo the text RUN 4 START to the console": after "the text")

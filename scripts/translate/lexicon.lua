@@ -861,7 +861,11 @@ return {
                       -- said after a marker and ending its clause, what was said before is left as it was: taken
                       -- back as "forget that" takes it back ("detection off. Ah no, leave it. ..." keeps detection)
                       left_as_is = { "leave it as it is", "leave it as is", "leave it like that", "leave it alone",
-                                     "leave it on", "leave it", "leave that", "keep it as it is", "keep it as is" },
+                                     "leave it on", "leave it", "leave that one", "leave this one", "leave that",
+                                     "keep it as it is", "keep it as is", "keep that one" },
+                      -- said between "leave"/"keep" and a noun of just_the ("leave its heading"): the instruction
+                      -- of that kind said before the marker is left as it was (grammar.lua G:left_as_is_end)
+                      left_named = { "its", "the", "his", "her", "their" },
                       -- "... actually no, just the descent": after a self-correction, "just"/"only" and one of these
                       -- names the instructions said before it that stand (by the command they issued)
                       only = { "just", "only" },
@@ -2121,6 +2125,10 @@ return {
   -- verbs of a request to be told something ("tell me the destination of EIN655", "let me know the origin")
   -- the modal verbs that open a polite question asking for an instruction ("could you please resume the run?")
   polite_openings = { "could", "can", "would", "will" },
+  -- the first words of a note's text that make it a question of its own ("... saying are you ready?"): its closing
+  -- "?" may be the note's or the request's (handlers_other.lua m:echo)
+  echo_question_openers = { "who", "what", "where", "when", "why", "how", "which", "is", "are", "am", "was", "were",
+      "do", "does", "did", "have", "has", "can", "could", "will", "would", "shall", "should", "may" },
   -- the names of the simulation's settings before a verb that changes them ("the look-ahead should be reduced
   -- to two minutes")
   setting_nouns = { "ahead", "lookahead", "look-ahead", "dtlook", "radius", "zoner", "zonedh", "zone", "height",

@@ -14539,3 +14539,36 @@ do
   check_eq(ex("the Iberia now turn 62 degrees right"), "HDG IBE8TX 242 RIGHT")
   asked(ex("let the Iberia turn 62"), "a number with no unit after the airline and a verb")
 end
+
+-- Cycle 53 (hz4): corrections that take an instruction back by naming it ("sorry, leave its heading", "no, wait -
+-- leave that one"); a route's levels said "included" with following it; a polite question's "?" after a note
+do
+  local _, ex = scene({ "CRE FIN8LK A320 60.0 24.0 090 FL240 280", "CRE TAP6WB B752 60.4 24.4 270 FL250 280",
+    "CRE IBE8TX A321 60.8 24.8 180 FL300 280" })
+  check_eq(ex("Might the Finnair take heading 200 - ah, sorry, leave the heading, just descend it to FL200."),
+    "ALT FIN8LK FL200")
+  check_eq(ex("Would the Iberia turn left onto 150 - no, sorry, leave its heading, reduce it to 250 knots."),
+    "SPD IBE8TX 250")
+  -- the kind named is not the instruction said before: asked
+  asked(ex("Might the Finnair take heading 200 - sorry, leave its speed, just descend it to FL200."),
+    "a kind left as it was that was never given")
+  -- nothing said in its place: asked
+  asked(ex("Might the Finnair take heading 200 - oh, sorry, leave the heading."), "nothing said in its place")
+  check_eq(ex("Would you remove the Iberia? Sorry - leave that one, remove the Air Portugal."), "DEL TAP6WB")
+  asked(ex("Would you remove the Iberia? No, wait - leave that one."), "a deletion taken back, nothing in its place")
+end
+do
+  local _, ex = scene({ "CRE FIN8LK A320 60.0 24.0 090 FL240 280", "ADDWPT FIN8LK TOMVI", "ADDWPT FIN8LK DEGAV" })
+  check_eq(ex("Could the Finnair follow its route, heights and speeds included?"), "LNAV FIN8LK ON ; VNAV FIN8LK ON")
+  check_eq(ex("FIN8LK follow the route, the heights included"), "LNAV FIN8LK ON ; VNAV FIN8LK ON")
+  -- a value in the clause, or "including" in the route's own clause: no profile read
+  asked(ex("FIN8LK follow the route including the altitudes"), "levels named inside the route's clause")
+  check(not ex("FIN8LK follow the route, FL200 included"):find("VNAV", 1, true), "a value is no profile")
+end
+do
+  local _, ex = scene({ "CRE FIN8LK A320 60.0 24.0 090 FL240 280" })
+  check_eq(ex("Would you put a short note on screen saying Block two is over?"), "ECHO Block two is over")
+  -- a note that is a question itself: whether its "?" is printed is asked
+  asked(ex("Could you put a note on screen saying is everyone ready?"), "a note that reads as a question")
+  check_eq(ex("Put a note on screen saying is everyone ready?"), "ECHO is everyone ready ?")
+end
