@@ -14558,7 +14558,7 @@ do
   asked(ex("Would you remove the Iberia? No, wait - leave that one."), "a deletion taken back, nothing in its place")
 end
 do
-  local _, ex = scene({ "CRE FIN8LK A320 60.0 24.0 090 FL240 280", "ADDWPT FIN8LK TOMVI", "ADDWPT FIN8LK DEGAV" })
+  local _, ex = scene({ "CRE FIN8LK A320 60.0 24.0 090 FL240 280", "ADDWPT FIN8LK 60.5 25.0", "ADDWPT FIN8LK 61.0 26.0" })
   check_eq(ex("Could the Finnair follow its route, heights and speeds included?"), "LNAV FIN8LK ON ; VNAV FIN8LK ON")
   check_eq(ex("FIN8LK follow the route, the heights included"), "LNAV FIN8LK ON ; VNAV FIN8LK ON")
   -- a value in the clause, or "including" in the route's own clause: no profile read
