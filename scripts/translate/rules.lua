@@ -2350,14 +2350,14 @@ return function(intent, rule, words)
   rule { "real", "op", next = "time" }
   rule { "fast", "ff", next = "forward" }
   rule { "ff fastforward fwd", "ff" }
-  rule { "skip", "ff", next = "ahead forward" }
+  rule { "skip skipping", "ff", next = "ahead forward" }  -- "would you mind skipping ahead 30 seconds?"
   rule { "jump", "ff", near = { 3, "ahead forward" } }  -- "jump forward five minutes", "jump us forward"
   -- "go forward 90 seconds", "go forward 2 minutes": a time straight after "forward", no aircraft named
   rule { "go", "ff", next = "forward", when = function(g, i)
     local q = g:quantities(i + 2, math.min(#g.t + 1, i + 5))[1]
     return q ~= nil and q.b == g:skip_fillers(i + 2) and q.kind == "time" and not g:has_ref(1, #g.t + 1, "aircraft")
   end }
-  rule { "skip", "ff", near = { 4, "ahead forward" } }  -- "skip one hour forward"
+  rule { "skip skipping", "ff", near = { 4, "ahead forward" } }  -- "skip one hour forward"
   -- "skip 5 minutes", "skip like 30 secs": a time straight after it (a loose one too), no waypoint or aircraft named
   rule { "skip", "ff", when = function(g, i)
     local k = g:skip_fillers(i + 1)
