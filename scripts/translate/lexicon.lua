@@ -1312,7 +1312,9 @@ return {
   -- G:presence_denied): the aircraft, then only these words, a negation and one of `presence_places` among them
   presence_denied = { "should", "shouldn't", "is", "isn't", "does", "doesn't", "not", "really", "be", "belong", "in",
                       "part", "of", "this", "the", "our", "at", "all" },
-  presence_places = { "exercise", "scenario", "simulation", "sim", "run", "session", "here" },
+  presence_places = { "exercise", "scenario", "simulation", "sim", "run", "session", "here",
+      -- (an aircraft taken "out of the picture": out of the run)
+      "picture" },
   -- verbs that end a movement: the direction after them is the one stopped, not the one flown (handlers:direction)
   halted = { "stop", "stops", "stopping", "cease", "halt", "discontinue", "terminate", "interrupt", "arrest" },
   -- words between "instead of"/"rather than" and the value they replace ("instead of the default 1.05",

@@ -1388,7 +1388,7 @@ return function(intent, rule, words)
   -- "take Scandinavian one five zero one out of the exercise": a flying aircraft, however long its spoken callsign,
   -- straight after the verb ("the" between), "out" straight after it, and then nothing in its clause or "of" the
   -- exercise (lexicon.presence_places, @sim: "out of the hold" is no deletion)
-  rule { "take", "delete", when = function(g, i)
+  rule { "take taking", "delete", when = function(g, i)
     local k = g:word(i + 1, "the") and i + 2 or i + 1
     local r = g:refs_in(k, k + 1, "aircraft")[1]
     if not (r ~= nil and r.b == k and r.exists and g:word(r.e, "out")) then return false end

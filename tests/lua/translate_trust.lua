@@ -14562,3 +14562,12 @@ do
   check_eq(ex("fast-forward, please, and I'll say when to stop"), "FF")
   asked(ex("fast-forward, and I'll say when to climb"), "a 'when' that is no stop of the fast-forward")
 end
+do
+  -- "taking X out of the picture": the aircraft taken out of the run, as "take X out of the exercise"
+  local _, ex = scene({ "CRE KLM12 B738 52.0 4.0 090 FL220 280", "CRE WIF512 DH8D 52.4 4.4 270 FL300 280" })
+  check_eq(ex("Would you mind awfully taking the Wideroe out of the picture?"), "DEL WIF512")
+  check_eq(ex("could you take the KLM out of the picture"), "DEL KLM12")
+  check_eq(ex("would you mind taking KLM12 out of the exercise"), "DEL KLM12")
+  asked(ex("would you mind taking the Wideroe out of the hold"), "out of the hold is no deletion")
+  asked(ex("the Wideroe is out of the picture"), "a remark that it is out names no instruction")
+end
