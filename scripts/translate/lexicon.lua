@@ -118,7 +118,10 @@ return {
         -- (a size asked about: "how large is the protected zone radius?")
         "large", "big",
         -- a demonstration's remarks to its audience ("make it snappy", "for realism", "here's the fun part")
-        "snappy", "realism", "realistic", "fun" },
+        "snappy", "realism", "realistic", "fun",
+        -- (a British speaker's understated degree on the whole request: "would you mind awfully having ...",
+        -- "would you mind terribly deleting ...")
+        "awfully", "terribly" },
     -- courtesy and framing of a request
     courtesy = { "please", "kindly", "thanks", "thank", "cheers", "like", "want", "wants", "wish", "let", "lets",
         "mind", "able", "possible", "chance", "ask", "tell", "make", "have", "try", "see", "help", "give",
@@ -297,6 +300,23 @@ return {
         "right on top of", "on top of",
         -- the speaker holding the room a moment ("hang on, freeze it there")
         "hang on", "bear with me", "stand by",
+        -- a British speaker's understatement of a change whose value is said ("turn right a touch, heading 020",
+        -- "come down a touch, say FL120"): the value said is the one flown, as "a bit"
+        "a touch", "just a touch",
+        -- the pace of a request left to the aircraft ("when it's ready, no rush", "in its own time"): what squawk
+        -- sends runs at once
+        "when it's ready", "when it is ready", "when it's able", "when it is able", "no rush", "no hurry",
+        "there's no rush", "there's no hurry", "in its own time", "in their own time",
+        -- the speaker's own stop of a fast-forward said in a clause of its own ("fast-forward, and I'll say when
+        -- to stop"): fast time with no end
+        "i'll say when to stop", "i will say when to stop", "i'll tell you when to stop",
+        "i will tell you when to stop",
+        -- the reason an aircraft is removed ("remove it please, it's just clutter")
+        "it's just clutter", "it is just clutter", "it's clutter", "just clutter",
+        -- a British speaker's apology or hedge opening a request ("sorry to be a pain, but ...", "would it be
+        -- terribly inconvenient to ...")
+        "sorry to be a pain", "sorry to be a nuisance", "would it be inconvenient", "would it be terribly inconvenient",
+        "would it be awfully inconvenient", "would it be too inconvenient",
         -- the simulation's conflict resolution named by a pilot's word for it ("resolution advisories on, MVP")
         "resolution advisories", "resolution advisory",
         -- urgency, said with a negation ("descend FL150 without delay")
@@ -667,7 +687,8 @@ return {
   convenience = { "sec", "secs", "second", "seconds", "moment", "minute", "chance", "time", "ready", "free", "able",
                   "can", "could" },
   -- a climb or descent left to the pilot ("descend when ready"): said with no level, asked about
-  discretion = { "when ready", "when able", "when you're ready", "at pilot's discretion", "at your discretion",
+  discretion = { "when ready", "when able", "when you're ready", "when it's ready", "when it is ready", "when it's able",
+                 "when it is able", "at pilot's discretion", "at your discretion",
                  "at your own discretion", "at own discretion", "pilot's discretion" },
   -- the end of a limit until a place said after it, closing the request ("maintain 270 knots until SUNSS; thereafter
   -- it may fly at its own discretion", "... until CIVET, and then resume its normal speed"): an opener, then only
@@ -1295,7 +1316,9 @@ return {
   -- G:presence_denied): the aircraft, then only these words, a negation and one of `presence_places` among them
   presence_denied = { "should", "shouldn't", "is", "isn't", "does", "doesn't", "not", "really", "be", "belong", "in",
                       "part", "of", "this", "the", "our", "at", "all" },
-  presence_places = { "exercise", "scenario", "simulation", "sim", "run", "session", "here" },
+  presence_places = { "exercise", "scenario", "simulation", "sim", "run", "session", "here",
+      -- (an aircraft taken "out of the picture": out of the run)
+      "picture" },
   -- verbs that end a movement: the direction after them is the one stopped, not the one flown (handlers:direction)
   halted = { "stop", "stops", "stopping", "cease", "halt", "discontinue", "terminate", "interrupt", "arrest" },
   -- words between "instead of"/"rather than" and the value they replace ("instead of the default 1.05",

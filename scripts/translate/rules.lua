@@ -1410,7 +1410,7 @@ return function(intent, rule, words)
   -- "take Scandinavian one five zero one out of the exercise": a flying aircraft, however long its spoken callsign,
   -- straight after the verb ("the" between), "out" straight after it, and then nothing in its clause or "of" the
   -- exercise (lexicon.presence_places, @sim: "out of the hold" is no deletion)
-  rule { "take", "delete", when = function(g, i)
+  rule { "take taking", "delete", when = function(g, i)
     local k = g:word(i + 1, "the") and i + 2 or i + 1
     local r = g:refs_in(k, k + 1, "aircraft")[1]
     if not (r ~= nil and r.b == k and r.exists and g:word(r.e, "out")) then return false end
@@ -2372,14 +2372,14 @@ return function(intent, rule, words)
   rule { "real", "op", next = "time" }
   rule { "fast", "ff", next = "forward" }
   rule { "ff fastforward fwd", "ff" }
-  rule { "skip", "ff", next = "ahead forward" }
+  rule { "skip skipping", "ff", next = "ahead forward" }  -- "would you mind skipping ahead 30 seconds?"
   rule { "jump", "ff", near = { 3, "ahead forward" } }  -- "jump forward five minutes", "jump us forward"
   -- "go forward 90 seconds", "go forward 2 minutes": a time straight after "forward", no aircraft named
   rule { "go", "ff", next = "forward", when = function(g, i)
     local q = g:quantities(i + 2, math.min(#g.t + 1, i + 5))[1]
     return q ~= nil and q.b == g:skip_fillers(i + 2) and q.kind == "time" and not g:has_ref(1, #g.t + 1, "aircraft")
   end }
-  rule { "skip", "ff", near = { 4, "ahead forward" } }  -- "skip one hour forward"
+  rule { "skip skipping", "ff", near = { 4, "ahead forward" } }  -- "skip one hour forward"
   -- "skip 5 minutes", "skip like 30 secs": a time straight after it (a loose one too), no waypoint or aircraft named
   rule { "skip", "ff", when = function(g, i)
     local k = g:skip_fillers(i + 1)

@@ -14572,3 +14572,35 @@ do
   asked(ex("Could you put a note on screen saying is everyone ready?"), "a note that reads as a question")
   check_eq(ex("Put a note on screen saying is everyone ready?"), "ECHO is everyone ready ?")
 end
+
+-- Cycle 53 (f152): a British speaker's understatement around an instruction whose value is said: "would you mind
+-- awfully/terribly", "a touch", "when it's ready", "no rush", "in its own time", "sorry to be a pain", "would it be
+-- terribly inconvenient", "it's just clutter", "skipping ahead", "and I'll say when to stop"
+do
+  local _, ex = scene({ "CRE KLM12 B738 52.0 4.0 090 FL220 280", "CRE BAW9 A320 52.4 4.4 270 FL300 280" })
+  check_eq(ex("Would you mind terribly having the KLM climb to FL240?"), "ALT KLM12 FL240")
+  asked(ex("would you mind awfully having the KLM climb?"), "an understated climb with no level")
+  check_eq(ex("the KLM could come down a touch, say FL200"), "ALT KLM12 FL200")
+  check_eq(ex("the Speedbird ought to turn left a touch, heading 250 say"), "HDG BAW9 250 LEFT")
+  asked(ex("the KLM could come down a touch"), "a touch is no value")
+  check_eq(ex("the KLM could slow to 250 knots when it's ready, no hurry"), "SPD KLM12 250")
+  check_eq(ex("the KLM ought to climb to FL260 in its own time"), "ALT KLM12 FL260")
+  asked(ex("the KLM could descend when it's ready, no rush"), "a descent left to the aircraft with no level")
+  check_eq(ex("delete the Speedbird please, it's just clutter"), "DEL BAW9")
+  check_eq(ex("would it be terribly inconvenient to delete KLM12?"), "DEL KLM12")
+  asked(ex("would it be terribly inconvenient?"), "a hedge with no instruction")
+  check_eq(ex("sorry to be a pain, but could KLM12 climb to FL260"), "ALT KLM12 FL260")
+  check_eq(ex("would you mind skipping ahead 2 minutes?"), "FF 120")
+  asked(ex("would you mind skipping ahead to the conflict?"), "fast time until an event")
+  check_eq(ex("fast-forward, please, and I'll say when to stop"), "FF")
+  asked(ex("fast-forward, and I'll say when to climb"), "a 'when' that is no stop of the fast-forward")
+end
+do
+  -- "taking X out of the picture": the aircraft taken out of the run, as "take X out of the exercise"
+  local _, ex = scene({ "CRE KLM12 B738 52.0 4.0 090 FL220 280", "CRE WIF512 DH8D 52.4 4.4 270 FL300 280" })
+  check_eq(ex("Would you mind awfully taking the Wideroe out of the picture?"), "DEL WIF512")
+  check_eq(ex("could you take the KLM out of the picture"), "DEL KLM12")
+  check_eq(ex("would you mind taking KLM12 out of the exercise"), "DEL KLM12")
+  asked(ex("would you mind taking the Wideroe out of the hold"), "out of the hold is no deletion")
+  asked(ex("the Wideroe is out of the picture"), "a remark that it is out names no instruction")
+end
