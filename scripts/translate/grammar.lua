@@ -1058,8 +1058,20 @@ local function assent_dropped(text)
   end
   return said
 end
+G.question_labels, G.question_openers = set_of(lexicon.question_labels), set_of(lexicon.echo_question_openers)
+-- "Quick ask: what's the look-ahead set to?": a label of lexicon.question_labels opening the line before a colon,
+-- comma or dash and a question's first word (lexicon.echo_question_openers) is dropped; before anything else it
+-- stays (and is asked about)
+function G.question_label_dropped(text)
+  local label, question = text:match("^%s*(%a[%a%s]-)%s*[:,%-]%s*(%a.*)$")
+  if label and G.question_labels[label:lower():gsub("%s+", " ")]
+      and G.question_openers[question:lower():match("^%a+")] then
+    return question
+  end
+  return text
+end
 local function unlabelled(text)
-  text = assent_dropped(text)
+  text = G.question_label_dropped(assent_dropped(text))
   local greeting, after = text:match("^%s*(%a+)%s*,?%s+(.+)$")
   if greeting and GREETINGS[greeting:lower()] then
     local name, next_word = after:match("^(%a+)%s*,?%s+(%a.*)$")

@@ -809,6 +809,11 @@ return {
                   "piloto", "operador", "controlador", "instrutor", "instrutora", "instructeur", "instructrice",
                   "superviseur", "pilote", "operateur", "controleur", "ausbilder", "ausbilderin", "fluglotse",
                   "lotse", "pilotin", "betreiber", "piloot", "ekpaideftis", "epoptis", "pilotos", "elegktis" },
+  -- a label a speaker puts before a question of their own ("Quick ask: what's the look-ahead set to?", "quick sanity
+  -- check, what resolution method are we running?", "quick one: is United 12 climbing?"): one of these phrases,
+  -- then a colon, comma or dash, then a word of echo_question_openers; the label is no part of the request
+  question_labels = { "quick ask", "quick question", "quick one", "quick check", "quick sanity check", "sanity check",
+                      "one question", "question" },
   -- what a note before a colon is of, besides a role ("exercise note: freeze the simulation"): a label
   note_owners = { "exercise", "scenario", "session", "trial", "run" },
   -- labels of two words that open a line without a colon, as speech recognition writes them ("sim op

@@ -1238,6 +1238,9 @@ return function(intent, rule, words)
   -- "add a320 ezy12 at ...", "new: DLH9CK A321neo ...", "insert SAS19K B736 at ...": a type or a new callsign
   -- right after the verb
   rule { "add put new spawn insert adding inject injecting", "create", when = function(g, i) return g:new_aircraft_follows(i) end }
+  -- "spin up American 601, an A321, ...", "let's spin up a 747 ...": "spin up" (a session's word for starting
+  -- something new) before a new callsign or a type
+  rule { "spin", "create", next = "up", when = function(g, i) return g:new_aircraft_follows(i + 1) end }
   -- "callsign SWR19, A333, FL360, ...": a request that opens with a new callsign and its type
   rule { "callsign", "create", when = function(g, i)
     return g:skip_fillers(1) == i and g:new_aircraft_follows(i) and g:has_ref(i + 1, i + 6, "type")
