@@ -1070,8 +1070,28 @@ function G.question_label_dropped(text)
   end
   return text
 end
+G.topic_shift = { leads = set_of(lexicon.topic_shift.leads), verbs = set_of(lexicon.topic_shift.verbs),
+  particles = set_of(lexicon.topic_shift.particles) }
+-- "Can we circle back to the Delta? I'd like it at 250 knots": the words that turn to an aircraft
+-- (lexicon.topic_shift) are dropped before its "the ..." when a mark ends that and more is said after it
+function G.topic_shift_dropped(text)
+  local toks = bare_words(text)
+  local k, ts = 1, G.topic_shift
+  while k <= 2 and toks[k] and ts.leads[toks[k].bare] and not toks[k].raw:match("%p$") do k = k + 1 end
+  local verb, particle, to, the = toks[k], toks[k + 1], toks[k + 2], toks[k + 3]
+  if not (the and ts.verbs[verb.bare] and ts.particles[particle.bare] and to.bare == "to" and the.bare == "the")
+      or verb.raw:match("%p$") or particle.raw:match("%p$") or to.raw:match("%p$") then
+    return text
+  end
+  for j = k + 3, k + 6 do
+    local t = toks[j]
+    if not t then return text end
+    if t.raw:match("[,%.%?;:!]$") then return toks[j + 1] and text:sub(the.at) or text end
+  end
+  return text
+end
 local function unlabelled(text)
-  text = G.question_label_dropped(assent_dropped(text))
+  text = G.topic_shift_dropped(G.question_label_dropped(assent_dropped(text)))
   local greeting, after = text:match("^%s*(%a+)%s*,?%s+(.+)$")
   if greeting and GREETINGS[greeting:lower()] then
     local name, next_word = after:match("^(%a+)%s*,?%s+(%a.*)$")

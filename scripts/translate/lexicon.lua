@@ -339,7 +339,7 @@ return {
     accompaniments = { "change", "changes", "alter", "adjust", "modify", "update", "amend", "make", "makes",
         "configure", "configures", "reconfigure",
         "shrink", "enlarge", "widen", "expand", "tighten", "relax", "margin", "buffer", "interval", "shorten",
-        "lengthen",
+        "lengthen", "extend", "extends", "extended",
         -- the dimensions of a setting ("the vertical size of the PZ")
         "size", "sizes", "dimension", "dimensions", "extent",
         -- a setting's work said formally ("resolutions computed with the MVP method", "perform conflict detection
@@ -814,6 +814,14 @@ return {
   -- then a colon, comma or dash, then a word of echo_question_openers; the label is no part of the request
   question_labels = { "quick ask", "quick question", "quick one", "quick check", "quick sanity check", "sanity check",
                       "one question", "question" },
+  -- a meeting's words that turn to another aircraft before what is said about it ("Can we circle back to the
+  -- Delta? I'd like it at 250 knots", "let's move on to the United, ..."): up to two words of `leads`, a verb of
+  -- `verbs`, a word of `particles`, "to", then "the" and at most three words ending in a mark, with more said after
+  -- it; all but "the ..." is dropped, which then names the aircraft as "the Delta, ..." does
+  topic_shift = { leads = { "can", "could", "we", "let's", "lets", "so", "now", "ok", "okay", "alright" },
+                  verbs = { "circle", "circling", "come", "coming", "go", "going", "get", "getting", "move", "moving",
+                            "jump", "jumping", "switch", "switching" },
+                  particles = { "back", "on", "over" } },
   -- what a note before a colon is of, besides a role ("exercise note: freeze the simulation"): a label
   note_owners = { "exercise", "scenario", "session", "trial", "run" },
   -- labels of two words that open a line without a colon, as speech recognition writes them ("sim op
