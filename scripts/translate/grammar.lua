@@ -4369,6 +4369,12 @@ function G:self_corrected()
         while self.t[c] and (self.t[c].kind == "punct" or self.t[c].filler) do c = c + 1 end
       end
     end
+    -- ("add SHNON... scratch that, let's put TRUPS ...": "let's" (read as "let") or "let us" before the
+    -- instruction said in its place belongs to the run)
+    if marked then
+      local l = self:word(c, "let lets") and (self:word(c + 1, "us") and c + 2 or c + 1)
+      if l and self:intent_at(l) then c = l end
+    end
     local left_as_is, left_kind = false, nil
     if marked then left_as_is, left_kind = self:left_as_is_end(c) end
     -- ("heading 360, sorry, leave its speed, ...": the kind named is not the instruction said before the run: asked)
