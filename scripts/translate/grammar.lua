@@ -1077,7 +1077,7 @@ G.topic_shift = { leads = set_of(lexicon.topic_shift.leads), verbs = set_of(lexi
 function G.topic_shift_dropped(text)
   local toks = bare_words(text)
   local k, ts = 1, G.topic_shift
-  while k <= 2 and toks[k] and ts.leads[toks[k].bare] and not toks[k].raw:match("%p$") do k = k + 1 end
+  while k <= 2 and toks[k] and ts.leads[toks[k].bare] do k = k + 1 end
   local verb, particle, to, the = toks[k], toks[k + 1], toks[k + 2], toks[k + 3]
   if not (the and ts.verbs[verb.bare] and ts.particles[particle.bare] and to.bare == "to" and the.bare == "the")
       or verb.raw:match("%p$") or particle.raw:match("%p$") or to.raw:match("%p$") then

@@ -14604,3 +14604,27 @@ do
   asked(ex("would you mind taking the Wideroe out of the hold"), "out of the hold is no deletion")
   asked(ex("the Wideroe is out of the picture"), "a remark that it is out names no instruction")
 end
+
+-- Cycle 54 (f156): a US engineer's meeting English: a label before a question ("quick ask:", "quick sanity
+-- check,"), "spin up" a new aircraft, turning to an aircraft ("can we circle back to the Delta?"), "extend" a
+-- setting, and "let's" after a self-correction
+do
+  local _, ex = scene({ "CRE DAL88 A321 38.7 -78.1 060 FL240 300", "CRE UAL12 B739 38.9 -78.3 090 FL200 290",
+    "CRE UAL14 B738 39.4 -76.3 230 11000 250" })
+  check_eq(ex("Quick ask: what's the look-ahead set to right now?"), "DTLOOK")
+  check_eq(ex("quick sanity check - which resolution method is on?"), "RESO")
+  check_eq(ex("Quick question, is the Delta descending?"), "POS DAL88")
+  asked(ex("Quick ask: the Delta"), "a question label before no question")
+  check_eq(ex("let's spin up a B738 called SWA41 at 39.1 -77.2 heading 180 FL150 250 knots"),
+    "CRE SWA41 B738 39.1 -77.2 180 FL150 250")
+  asked(ex("spin up the Delta"), "'spin up' before an aircraft flying creates nothing")
+  check_eq(ex("Could we circle back to the Delta? I want it at FL260."), "ALT DAL88 FL260")
+  check_eq(ex("ok, moving on to the Delta: turn left heading 020"), "HDG DAL88 20 LEFT")
+  asked(ex("Can we go back to the United? Heading 100."), "two United flying")
+  asked(ex("Can we circle back to the Delta?"), "turning to an aircraft with nothing said about it")
+  check_eq(ex("extend the look-ahead to six minutes"), "DTLOOK 360")
+  asked(ex("extend the look-ahead"), "a longer look-ahead with no value")
+  check_eq(ex("Delta 88 climb to FL280... no wait, let's climb to FL300"), "ALT DAL88 FL300")
+  check_eq(ex("Delta 88, descend to FL200, sorry, let us descend to FL220"), "ALT DAL88 FL220")
+  asked(ex("Delta 88 climb to FL280... no wait, let's turn"), "a turn said in place of the climb with no heading")
+end
