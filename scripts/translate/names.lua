@@ -616,6 +616,10 @@ local names = {
     EWR = "KEWR", LGA = "KLGA", BOS = "KBOS", ORD = "KORD", ATL = "KATL", LAX = "KLAX", SFO = "KSFO",
     SEA = "KSEA", DEN = "KDEN", MIA = "KMIA", PHX = "KPHX", LAS = "KLAS", MCO = "KMCO", IAD = "KIAD",
     DCA = "KDCA", CLT = "KCLT", MSP = "KMSP", DTW = "KDTW", PHL = "KPHL", YYZ = "CYYZ", YUL = "CYUL",
+    -- (the other large US airports whose code is no English word: "set its destination to BWI")
+    BWI = "KBWI", TPA = "KTPA", SLC = "KSLC", PDX = "KPDX", STL = "KSTL", MDW = "KMDW", BNA = "KBNA", RDU = "KRDU",
+    MSY = "KMSY", CLE = "KCLE", CVG = "KCVG", CMH = "KCMH", MCI = "KMCI", SJC = "KSJC", SMF = "KSMF", FLL = "KFLL",
+    RIC = "KRIC", ORF = "KORF", HNL = "PHNL", BDL = "KBDL", SNA = "KSNA",
     YVR = "CYVR", MEX = "MMMX", GRU = "SBGR", EZE = "SAEZ", SCL = "SCEL", BOG = "SKBO", LIM = "SPJC",
   },
   common = {

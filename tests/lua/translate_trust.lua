@@ -14628,3 +14628,12 @@ do
   check_eq(ex("Delta 88, descend to FL200, sorry, let us descend to FL220"), "ALT DAL88 FL220")
   asked(ex("Delta 88 climb to FL280... no wait, let's turn"), "a turn said in place of the climb with no heading")
 end
+do
+  -- the large US airports by their IATA code where an airport is meant (a code not listed is asked)
+  local _, ex = navscene({ "CRE JBU12 A320 39.1 -76.9 200 10000 250" }, "US airports by IATA code")
+  if ex then
+    check_eq(ex("set the JetBlue's destination to BWI"), "DEST JBU12 KBWI")
+    check_eq(ex("divert the JetBlue to MSY"), "DEST JBU12 KMSY")
+    asked(ex("divert the JetBlue to QQX"), "three capitals no airport's code squawk knows")
+  end
+end
