@@ -1707,7 +1707,14 @@ return function(intent, rule, words)
     return k < i and g:word(k + 1, "up")
   end }
   -- "what is the next waypoint of Akasa 1402": the route's next point, shown with the route
-  rule { "waypoint", "listrte", prev = { 1, "next" }, when = function(g, i) return g:preceded_by(i, 4, "what which") end }
+  rule { "waypoint", "listrte", prev = { 1, "next active" }, when = function(g, i) return g:preceded_by(i, 5, "what which") end }
+  -- "let's get the route for the American up on screen", "put the United's route on the screen": the route shown,
+  -- "on (the) screen" within six words after the noun, a verb of showing or placing at most four before it
+  rule { "route rte routing waypoints plan", "listrte", when = function(g, i)
+    local k = g:find_word(i + 1, math.min(#g.t + 1, i + 7), "on")
+    local e = g:word(k + 1, "the") and k + 2 or k + 1
+    return k <= i + 6 and g:word(e, "screen") and g:find_word(math.max(1, i - 4), i, "get put bring have show") < i
+  end }
   -- "tell me the route of the Emirates", "kindly tell the route of Air India 540": the route told to the speaker
   -- ("tell KLM12 to follow its route" instructs)
   rule { "route rte routing waypoints", "listrte", when = function(g, i)

@@ -14637,3 +14637,12 @@ do
     asked(ex("divert the JetBlue to QQX"), "three capitals no airport's code squawk knows")
   end
 end
+do
+  -- a route shown "(up) on screen", and the "active" waypoint asked as the next one
+  local _, ex = scene({ "CRE AAL14 A321 37.3 -76.6 200 FL280 290", "CRE UAL78 B753 37.7 -77.8 030 FL300 290" })
+  check_eq(ex("can we get the flight plan of the American up on screen?"), "LISTRTE AAL14")
+  check_eq(ex("put the United's route on the screen please"), "LISTRTE UAL78")
+  asked(ex("put the United on the screen"), "an aircraft put on screen names no route")
+  check_eq(ex("what is the United's active waypoint?"), "LISTRTE UAL78")
+  asked(ex("the United's active waypoint"), "the noun alone, no question")
+end
