@@ -121,7 +121,10 @@ return {
         "snappy", "realism", "realistic", "fun",
         -- (a British speaker's understated degree on the whole request: "would you mind awfully having ...",
         -- "would you mind terribly deleting ...")
-        "awfully", "terribly" },
+        "awfully", "terribly",
+        -- an Irish or British speaker's warm acknowledgement before or between instructions ("grand, now the
+        -- Ryanair ...", "ok lovely, the Delta can start down", "sound, the Emerald can have 250 knots")
+        "grand", "lovely", "sound" },
     -- courtesy and framing of a request
     courtesy = { "please", "kindly", "thanks", "thank", "cheers", "like", "want", "wants", "wish", "let", "lets",
         "mind", "able", "possible", "chance", "ask", "tell", "make", "have", "try", "see", "help", "give",
