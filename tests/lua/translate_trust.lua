@@ -14639,3 +14639,11 @@ do
   asked(ex("the KLM and the Speedbird, what's it up to?"), "'it' with two aircraft said")
   check_eq(ex("the KLM, what's it up to, climb it to FL260"), "ALT KLM12 FL260")
 end
+do
+  -- an airline said inside a description by the way it flies ("the Aer Lingus heading west") with two of it flying
+  local _, ex = scene({ "CRE EIN104 A332 53.50 -6.60 280 FL080 250", "CRE EIN2KR A20N 53.55 -6.10 040 FL100 250" })
+  check_eq(ex("the Aer Lingus heading west, up to FL150"), "ALT EIN104 FL150")
+  check_eq(ex("could you climb the Shamrock flying north-east to FL200"), "ALT EIN2KR FL200")
+  asked(ex("the Aer Lingus heading south, climb FL150"), "neither Aer Lingus heads south")
+  asked(ex("the Aer Lingus, climb FL150"), "two Aer Lingus flying, no description")
+end
