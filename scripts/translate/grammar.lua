@@ -192,11 +192,12 @@ local function know_all(v, seen)
   -- "sorry", .described only inside a correction's run, .judged: none), lexicon.limit_release only after a limit's
   -- place, lexicon.replaced_lead
   -- only before a value replaced, lexicon.ff_ended only before a fast-forward ended, lexicon.countries only
-  -- inside a callsign read)
+  -- inside a callsign read, lexicon.described_places.regions only as a place that describes an aircraft)
   if type(v) ~= "table" or seen[v] or v == lexicon.accounted.courtesy_phrases or v == lexicon.accounted.value_phrases
       or v == lexicon.typed_abbreviations
       or v == lexicon.aside or v == lexicon.self_correction.just_the or v == lexicon.foreign_digits or v == lexicon.foreign_hesitation_digits
       or v == lexicon.atc_units or v == lexicon.city_airports or v == lexicon.label_roles or v == lexicon.bare_labels
+      or v == lexicon.described_places.regions
       or v == lexicon.addressed_roles or v == lexicon.readback_heard or v == lexicon.nationless_registrations
       or v == lexicon.manner or v == lexicon.rate_manner or v == lexicon.deadline_places or v == lexicon.held_value
       or v == lexicon.dictated_punctuation or v == lexicon.acknowledged or v == lexicon.said_whole or v == lexicon.heard_as
@@ -7067,6 +7068,49 @@ function G:described_place(i)
   return nil
 end
 
+-- The end of a place said at i to describe the aircraft named straight before it, "the" and the aircraft opening
+-- its clause and the place closing it at a comma (lexicon.described_places.moving: "the Ryanair out of Cork, up to
+-- 17 thousand", "the easyJet going into the Isle of Man, start it down"): one to four words of `moving` between,
+-- the first of `moving_leads`; the place an airport's city or name (G:described_place's names) or one of `regions`;
+-- nil when it is none.
+function G:moving_place(i)
+  local L = lexicon.described_places
+  local M = G.moving_sets
+  if not M then
+    M = { moving = set_of(L.moving), leads = set_of(L.moving_leads), regions = set_of(L.regions) }
+    G.moving_sets = M
+  end
+  local t = self.t[i]
+  if not (t and t.kind == "word" and t.raw:match("^%u") and self.words[i - 1] and M.moving[self.words[i - 1]]) then
+    return nil
+  end
+  local k = i - 1
+  while k >= i - 4 and self.words[k] and M.moving[self.words[k]] do k = k - 1 end
+  if not M.leads[self.words[k + 1]] then return nil end
+  local ref
+  for _, r in ipairs(self:refs_in(math.max(1, k - 4), k + 1, "aircraft")) do
+    if r.e == k + 1 and r.exists then ref = r end
+  end
+  if not ref then return nil end
+  local o = ref.b - 2  -- (said with "the": "DLH4AX inbound from Oslo, ..." states where a callsign comes from)
+  if not self:word(ref.b - 1, "the") or (o >= 1 and self.t[o].kind ~= "punct" and not self:word(o, "and")) then
+    return nil
+  end
+  local w = self.world
+  for e = math.min(#self.t, i + 3), i + 1, -1 do
+    local words = {}
+    for x = i, e - 1 do words[#words + 1] = self.t[x].text end
+    local name = table.concat(words, " ")
+    local closes = self.t[e] ~= nil and self.t[e].text == ","
+    if closes and (M.regions[name] or (e <= i + 2 and (lexicon.city_airports[name]
+        or (w.airports_named and #w.airports_named(name) > 0)
+        or (w.airports_with_words and #w.airports_with_words(name) > 0)))) then
+      return e
+    end
+  end
+  return nil
+end
+
 -- True when the word at i (lexicon.described_places.departs) says where an aircraft comes from in a relative clause
 -- that identifies it ("the Easy that's just departed Luton", "the Ryanair which left Dublin"): a word of `relatives`
 -- before it, only words of `relative_fill` between; or a pronoun of `narrated` with "just" among those words ("It
@@ -7335,7 +7379,7 @@ function G:explained_spans(issued, kinds)
       inside[i] = true
     end
     -- "a Charlotte arrival", "the arrival into Atlanta": a city named to describe (G:described_place)
-    local place_e = self:described_place(i)
+    local place_e = self:described_place(i) or self:moving_place(i)
     for k = i, place_e and place_e - 1 or 0 do inside[k] = true end
     -- ("that's just departed Luton", "which departed from Luton": the verb of the relative clause with its place)
     for k = i - 2, place_e and i - 1 or i - 3 do

@@ -1918,6 +1918,12 @@ local function describe(self, b, e, ids, picked, outer)
     for n = #self.refs, 1, -1 do
       if self.refs[n].b >= b and self.refs[n].e <= e then table.remove(self.refs, n) end
     end
+    -- (an airline said inside the words, "the Aer Lingus heading west" with two flying, is picked from: no longer
+    -- asked which)
+    local unresolved = self.airline_unresolved or {}
+    for n = #unresolved, 1, -1 do
+      if unresolved[n].b >= b and unresolved[n].e <= e then table.remove(unresolved, n) end
+    end
     local at = 1
     while self.refs[at] and self.refs[at].b < b do at = at + 1 end
     for n, id in ipairs(picked) do

@@ -121,7 +121,10 @@ return {
         "snappy", "realism", "realistic", "fun",
         -- (a British speaker's understated degree on the whole request: "would you mind awfully having ...",
         -- "would you mind terribly deleting ...")
-        "awfully", "terribly" },
+        "awfully", "terribly",
+        -- an Irish or British speaker's warm acknowledgement before or between instructions ("grand, now the
+        -- Ryanair ...", "ok lovely, the Delta can start down", "sound, the Emerald can have 250 knots")
+        "grand", "lovely", "sound" },
     -- courtesy and framing of a request
     courtesy = { "please", "kindly", "thanks", "thank", "cheers", "like", "want", "wants", "wish", "let", "lets",
         "mind", "able", "possible", "chance", "ask", "tell", "make", "have", "try", "see", "help", "give",
@@ -253,7 +256,7 @@ return {
         "if that is at all possible", "if at all possible", "if that is possible", "if that's possible",
         "if it is possible", "if it's possible", "if it's no trouble", "if it is no trouble", "if that's no trouble",
         "if that is no trouble", "would it be too much trouble", "is it too much trouble", "if that's a thing",
-        "if that is a thing", "if that works", "if that works for you", "if it works", "if it works for you",
+        "if that is a thing", "thanks a million", "thanks a mil", "if that works", "if that works for you", "if it works", "if it works for you",
         "of course", "after all", "i apologise", "i apologize", "my apologies", "as a separate thing", "block of trials",
         "blocks of trials",
         "if the computer can cope with it", "if the computer can cope", "if the simulation can cope with it",
@@ -930,7 +933,9 @@ return {
   sim = { "simulation", "sim", "simulator", "time", "exercise", "clock", "episode", "env", "environment", "replay",
           "playback", "serial" },
   -- (an agent: an aircraft, in a learning environment's words)
-  aircraft_nouns = { "aircraft", "plane", "airplane", "flight", "agent" },
+  aircraft_nouns = { "aircraft", "plane", "airplane", "flight", "agent",
+      -- (an aircraft as its pilot, in an Irish or British speaker's word: "the lowest fella there")
+      "fella", "fellow" },
   -- words that compare the aircraft flying by their state, said after "the" (G:described_refs): the field of
   -- the aircraft's state compared and +1 for the most of it, -1 for the least; how near two values are for the
   -- words to tell those aircraft apart no more (ft, kt); the nouns naming every aircraft flying as the group
@@ -960,7 +965,7 @@ return {
   -- less than this on either side; 45 keeps an aircraft on 135 out of both "south" and "east"); half of it from
   -- an intercardinal point ("south-west"), a quarter from one between them ("north-north-east")
   bearing_margin = 45,
-  group_nouns = { "aircraft", "planes", "airplanes", "flights", "jets", "ones", "them", "all" },
+  group_nouns = { "aircraft", "planes", "airplanes", "flights", "jets", "ones", "them", "all", "fellas" },
   -- words that describe an aircraft before "from" and its airline ("the regional jet from Republic")
   aircraft_described = { "jet", "jets", "regional", "airliner", "one", "small", "big", "heavy", "little", "widebody",
       "narrowbody", "turboprop", "prop", "aeroplane" },
@@ -1760,7 +1765,7 @@ return {
   -- A city or airport named to describe an aircraft or airspace, no place instructed: said before one of
   -- `before` ("a Charlotte arrival", "the Madrid TMA", "Barcelona ACC"), or after one of `after` said straight
   -- after one of `leads` ("the arrival into Atlanta", "inbound to Lisbon", "bound for Vigo"); a place an aircraft
-  -- comes from ("inbound from Vigo") is no description here (it is asked)
+  -- comes from after its callsign ("DLH4AX inbound from Vigo, ...") is no description here (it is asked)
   described_places = {
     before = { "arrival", "arrivals", "departures", "inbound", "inbounds", "outbound", "tma", "acc", "fir", "cta",
         "uac", "sector", "airspace", "flow", "stream", "push", "bank" },
@@ -1778,7 +1783,19 @@ return {
     relative_fill = { "just", "has", "have", "had", "is", "was", "now", "recently", "only", "since" },
     -- the same told of the aircraft as a pronoun, "just" between ("It has just departed Schiphol in my story"): the
     -- recent past narrated, no origin set
-    narrated = { "it", "it's", "its", "he", "he's", "she", "she's" } },
+    narrated = { "it", "it's", "its", "he", "he's", "she", "she's" },
+    -- where an aircraft flies to, from or over, said straight after the aircraft opening its clause, the place
+    -- closing it at a comma, to identify it, no place instructed ("the Ryanair out of Cork, up to 17 thousand",
+    -- "the Loganair going into Derry, bring it down", "the Aer Lingus coming over Wales, go direct VATRY"): only
+    -- words of `moving` between the aircraft and the place (G:moving_place), one to four of them, the first one of
+    -- `moving_leads` ("the Ryanair to Cork," may send it there: asked)
+    moving_leads = { "going", "coming", "heading", "headed", "flying", "routing", "bound", "inbound", "outbound",
+        "out", "off", "over", "from" },
+    moving = { "going", "coming", "heading", "headed", "flying", "routing", "out", "of", "off", "over", "into", "in",
+        "to", "down", "up", "toward", "towards", "across", "from", "for", "the", "bound", "inbound", "outbound" },
+    -- regions and countries said as such a place, lower case, that no airport is named after
+    regions = { "scotland", "wales", "england", "ireland", "northern ireland", "isle of man", "the isle of man",
+        "france", "spain", "iceland", "norway", "cornwall", "the continent" } },
   -- kinds of navaid, said beside a navaid's name ("the Pampus VOR, PAM")
   navaid_kinds = { "vor", "ndb", "dme", "vortac", "navaid", "beacon" },
   -- words that put a place's ident after its name ("Thermal, that is TRM"), and the lower-case words inside a

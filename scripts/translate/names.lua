@@ -208,6 +208,7 @@ local names = {
     { "cobalt", "FCB" },
     { "jetset", "JSX" },
     { "aer lingus", "EIN" },
+    { "emerald", "EAI" },  -- (Emerald Airlines, Dublin: Aer Lingus Regional)
     -- CityJet, Dublin: its telephony and its name
     { "city ireland", "BCY" },
     { "cityjet", "BCY" },
@@ -668,6 +669,8 @@ local names = {
     { "smartwings", "TVS" },
     { "pegasus", "PGT" },
     { "netjets", "NJE" },  -- (a brand: NetJets Europe, NJE, and NetJets Aviation, EJA)
+    { "air corps", "IRL" },  -- (the Irish Air Corps, telephony Irish)
+    { "irish air corps", "IRL" },
   },
   brands = {
     { "transavia", "TRA", "TVF" },

@@ -244,9 +244,14 @@ return function(intent, rule, words)
     local q = g:skip_fillers(1)
     return g:word(q, "is") and g:has_ref(q + 1, i, "aircraft") and #g:quantities(1, #g.t + 1) == 0
   end }
+  -- (the aircraft said first, before a comma, and the question of it by a pronoun: "the Delta, what's it up to?")
   rule { "up", "pos", next = "to", when = function(g, i)
     local q = g:skip_fillers(1)
-    return g:word(q, "what's whats what") and g:has_ref(q + 1, i, "aircraft") and g:skip_fillers(i + 2) > #g.t
+    local fronted = g.t[q] ~= nil and g.t[q].kind ~= "punct" and g:word(i - 1, "it he she")
+      and g:word(i - 2, "what's whats what") and g.t[i - 3] ~= nil and g.t[i - 3].text == ","
+      and #g:refs_in(q, i - 3, "aircraft") == 1
+    return (fronted or (g:word(q, "what's whats what") and g:has_ref(q + 1, i, "aircraft")))
+      and g:skip_fillers(i + 2) > #g.t
   end }
   -- altitude
   -- ("rate of climb 1500", "rate descend 2000": the motion the rate's word names, straight after it or "of")
@@ -2105,7 +2110,8 @@ return function(intent, rule, words)
   -- scenario restarted is a reset (confirmed first)
   rule { "restart start", "op", near = { 3, "clock" } }
   rule { "restart", "reset", near = { 3, "@sim" } }
-  rule { "what how know", "pos", near = { 4, "altitude speed heading position level alt lvl hdg spd" } }
+  -- (the measure asked by its other names: "what height is it at?", "the Dreamliner, what's its Mach number?")
+  rule { "what how know", "pos", near = { 4, "altitude speed heading position level alt lvl hdg spd height mach" } }
   -- "what's AC004's current FL": the level flown now, "current" or "present" straight before the abbreviation
   rule { "what", "pos", when = function(g, i)
     local k = g:find_word(i + 1, i + 5, "current present")

@@ -14646,3 +14646,46 @@ do
   check_eq(ex("what is the United's active waypoint?"), "LISTRTE UAL78")
   asked(ex("the United's active waypoint"), "the noun alone, no question")
 end
+
+-- Cycle 54 (f154): a warm, indirect Irish speaker: "grand", "lovely", "sound" as acknowledgements, "thanks a
+-- million", the Emerald and the Air Corps by name, an aircraft described by where it flies ("the Loganair going
+-- into Derry, ..."), the aircraft's state asked by "height" or "Mach number" and "the Delta, what's it up to?"
+do
+  local _, ex = scene({ "CRE KLM12 B738 52.0 4.0 090 FL220 280", "CRE EAI7QP AT76 52.4 4.4 270 FL150 230",
+    "CRE IRL260 PC12 52.2 4.2 180 6000 200" })
+  check_eq(ex("grand, the KLM can come down to FL180 now"), "ALT KLM12 FL180")
+  check_eq(ex("lovely, and the Emerald could slow to 210 knots"), "SPD EAI7QP 210")
+  check_eq(ex("sound, turn the KLM right heading 120, thanks a million"), "HDG KLM12 120 RIGHT")
+  asked(ex("grand, the KLM"), "an acknowledgement and an aircraft name no instruction")
+  asked(ex("lovely, the KLM could come down a bit"), "a descent with no level")
+  check_eq(ex("the Air Corps one, climb it to 8000 feet"), "ALT IRL260 8000")
+  check_eq(ex("the Irish Air Corps PC-12, left heading 090"), "HDG IRL260 90 LEFT")
+  asked(ex("Emerald 9XX, climb FL200"), "no such Emerald aircraft flies")
+end
+do
+  local _, ex = scene({ "CRE KLM12 B738 52.0 4.0 090 FL220 280", "CRE EZY31 A320 52.4 4.4 270 FL150 250",
+    "CRE EZY77 A320 52.6 4.6 090 FL170 250" })
+  check_eq(ex("the KLM coming over from Scotland, descend to FL200"), "ALT KLM12 FL200")
+  check_eq(ex("the KLM heading out to the Isle of Man, speed 250 knots"), "SPD KLM12 250")
+  check_eq(ex("and the KLM flying over Wales, could it turn left heading 060"), "HDG KLM12 60 LEFT")
+  asked(ex("the easyJet going into Wales, descend FL120"), "the place describes none of two easyJets")
+  asked(ex("the KLM to Scotland, descend FL200"), "'to' alone may send it there")
+  asked(ex("KLM12 coming from Scotland, descend FL200"), "a callsign's statement of where it comes from")
+  asked(ex("the KLM going into Narnia, descend FL200"), "a place squawk does not know")
+end
+do
+  local _, ex = scene({ "CRE KLM12 B738 52.0 4.0 090 FL220 280", "CRE BAW9 B789 52.4 4.4 270 FL380 280" })
+  check_eq(ex("the KLM, what's it up to?"), "POS KLM12")
+  check_eq(ex("the Dreamliner, what's its Mach number?"), "POS BAW9")
+  check_eq(ex("what height is the KLM at?"), "POS KLM12")
+  asked(ex("the KLM and the Speedbird, what's it up to?"), "'it' with two aircraft said")
+  check_eq(ex("the KLM, what's it up to, climb it to FL260"), "ALT KLM12 FL260")
+end
+do
+  -- an airline said inside a description by the way it flies ("the Aer Lingus heading west") with two of it flying
+  local _, ex = scene({ "CRE EIN104 A332 53.50 -6.60 280 FL080 250", "CRE EIN2KR A20N 53.55 -6.10 040 FL100 250" })
+  check_eq(ex("the Aer Lingus heading west, up to FL150"), "ALT EIN104 FL150")
+  check_eq(ex("could you climb the Shamrock flying north-east to FL200"), "ALT EIN2KR FL200")
+  asked(ex("the Aer Lingus heading south, climb FL150"), "neither Aer Lingus heads south")
+  asked(ex("the Aer Lingus, climb FL150"), "two Aer Lingus flying, no description")
+end
