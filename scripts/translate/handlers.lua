@@ -358,7 +358,14 @@ function m:acids(s)
   -- ("both the Finnair and the airBaltic": two aircraft named, no two of one airline)
   if icao and self:word(ae, "and") then icao = nil end
   local pair = icao and self:airline_fleet(icao, codes) or {}
-  if icao and #pair ~= 2 then
+  -- ("both Boeings", "both the A320s": the two aircraft flying of the maker or type said in the plural, when the
+  -- instruction names no aircraft else; "..., so that both Boeings fly the same speed" names none)
+  local typed
+  if both < s.e and not icao and #ids == 0 then
+    typed, ae = self:type_plural(self:word(both + 1, "the") and both + 2 or both + 1)
+    pair = typed or pair
+  end
+  if (icao or typed) and #pair ~= 2 then
     self:need(string.format("Which two aircraft does 'both %s' mean? Please give their callsigns.", self:raw(both + 1, ae)))
   elseif #pair == 2 then
     self:explain(both, ae)
@@ -957,6 +964,19 @@ function m:added_to(to, e)
   return false
 end
 
+-- True when the airline said at token i, written with a capital, is the object of the request's own preposition with
+-- its article dropped (a second-language speaker's "the"): after "of" or "for" straight after a route noun or
+-- "destination" ("show me route of Lufthansa", "set destination of Air France to Krakow", "route for Smartwings"),
+-- or after "for" or "to" straight after a verb of adding or giving that opens its clause ("add for Smartwings
+-- waypoint JAB", "give to Wizz direct AGESI"). Traffic words before the preposition ("clear of Lufthansa",
+-- "turn for Wizz") are none of these.
+function m:object_article_dropped(i)
+  if not self.t[i].raw:match("^%u") then return false end
+  if self:word(i - 1, "of for") and self:word(i - 2, "@route_nouns destination") then return true end
+  local opens = i == 3 or (self.t[i - 3] and (self.t[i - 3].kind == "punct" or self:word(i - 3, "please and")))
+  return self:word(i - 1, "for to") and self:word(i - 2, "add insert give") and opens
+end
+
 -- True when "to" at `to` closes a value given to an aircraft whose words follow ("kindly give Mach 0.80 to the
 -- Emirates", "a descent of 1000 feet per minute may be given to the Akasa"): a verb of giving earlier in its clause.
 function m:given_to(to)
@@ -1185,7 +1205,7 @@ function m:airline_refs()
         type_e = typed and te
       end
       local ok = not inside[i] and not inside[e - 1]
-          and (the or for_it or self:addressed_alone(i, e) or self:asked_where(i, e))
+          and (the or for_it or self:addressed_alone(i, e) or self:asked_where(i, e) or self:object_article_dropped(i))
           and not (nxt and (nxt.kind == "number" or nxt.number_word or L.phonetic[nxt.text]
             or self:word(e, "heavy super")) and not (the and pronoun_one(e)))
           and (typed or not self:new_aircraft_follows(e - 1))
@@ -1485,6 +1505,19 @@ local function makers()
   return MAKERS, MODELS, SHORT
 end
 
+-- The one designator of `set` ({[designator] = true}: a maker's types) whose digits are `digits` ("738" -> B738,
+-- "195" -> E195), or nil when none or several
+local function designator_of_digits(digits, set)
+  local found
+  for d in pairs(set) do
+    if d:match("^%u(%d%d%d)$") == digits then
+      if found then return nil end
+      found = d
+    end
+  end
+  return found
+end
+
 -- "add a Ryanair 737, RYR81JC, ...", "a United 757, UAL1540", "a Ryanair 738, ...": an airline and a
 -- model number (or a designator's digits) after an article, with a callsign said straight after, are
 -- the new aircraft's airline and type, no flight number (the C++ matcher read
@@ -1619,6 +1652,10 @@ function m:type_named(i, after_airline)
   end
   local short = select(3, makers())[t.text]
   if t.kind == "number" and short then return function(d) return d == short or aliases()[d] == short end, i + 1 end
+  -- ("the 195", "the 175": after "the", the digits of one Embraer E-Jet's designator; aliases read E175 as E75L)
+  local ejet = t.kind == "number" and self:word(i - 1, "the") and t.text:match("^1[4-9]%d$")
+    and designator_of_digits(t.text, makers().embraer or {})
+  if ejet then return function(d) return d == ejet or aliases()[ejet] == d end, i + 1 end
   if t.kind ~= "word" then return nil end
   local nicknames = require("translate.types").nicknames
   local two = self.t[i + 1] and nicknames[t.text .. " " .. self.t[i + 1].text]  -- ("the King Air")
@@ -1648,6 +1685,10 @@ function m:type_named(i, after_airline)
   if makers()[t.text] then
     local nx = self.t[i + 1]
     if nx and nx.kind == "number" and fams[nx.text] then return set_of(fams[nx.text]), i + 2 end
+    -- ("the Boeing 738", "the Boeing 789", "the Embraer 190": a designator's digits after its maker name that one
+    -- designator of the maker's)
+    local own = nx and nx.kind == "number" and designator_of_digits(nx.text, makers()[t.text])
+    if own then return function(d) return d == own or aliases()[own] == d end, i + 2 end
     -- ("the Airbus three thirty", "the Boeing seven eighty seven", "the Airbus three three zero": a family's
     -- number said in words after its maker, the Airbus letter left out)
     local num, e = said_number(i + 1)
@@ -1885,6 +1926,21 @@ local function compared_group(self, k)
   local icao, ae, codes = self:airline_at(k)
   if icao then return self:airline_fleet(icao, codes), noun_after(ae), count end
   return nil
+end
+
+-- The aircraft flying of the maker or type said in the plural at token k ("Boeings", "Airbuses", "Embraers",
+-- "737s", "A320s", "737 s") and the token after the words; nil for any other words there (an airline's plural,
+-- "aircraft", "planes")
+function m:type_plural(k)
+  local t = self.t[k]
+  if not t or (t.text:sub(-1) ~= "s" and not self:word(k + 1, "s")) then return nil end
+  if not AIRLINE_NAMES then airline_names() end
+  if self:word(k, "@aircraft_nouns @group_nouns one") or AIRLINE_NAMES[t.text:sub(1, -2)]
+      or AIRLINE_NAMES[t.text:sub(1, -3)] or self:airline_at(k) then
+    return nil
+  end
+  local ids, e = compared_group(self, k)
+  return ids, e
 end
 
 -- The words [b, e) that describe aircraft flying (described_refs, bearing_refs), `ids` the group they were picked

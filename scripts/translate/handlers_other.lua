@@ -2217,6 +2217,12 @@ return function(H, f, compass)
     for _, id in ipairs(ids) do self:direct_one(s, id) end
   end
 
+  -- The open airport aircraft state `a`'s route ends at (ICAO code), or nil
+  local function route_airport(self, a)
+    local last = a and a.route and a.route[#a.route]
+    local class = last and self.world.airport_class and self.world.airport_class(last) or ""
+    return class ~= "" and class ~= "CLOSED" and last or nil
+  end
   function m:direct_one(s, id)
     local a = self:state(id)
     -- "proceed to the hold at MTG", "go into the published holding over MTG": the place flown to is a hold, which
@@ -2234,11 +2240,14 @@ return function(H, f, compass)
       added = added or self.out[c]:match("^ADDWPT " .. id:gsub("%p", "%%%0") .. " ([^%s,]+)$")
         or self.out[c]:match("^DEST " .. id:gsub("%p", "%%%0") .. " (%a+)$")  -- ("dest EHAM and direct to it")
     end
-    -- "send AEA44 straight to the airport", "direct to its destination": the destination it has
+    -- "send AEA44 straight to the airport", "direct to its destination": the destination it has, else the open
+    -- airport its route ends at; "direct to airport", its article dropped by a second-language speaker, too
     local dest_word = self:find_word(s.trig + 1, s.e, "airport destination")
-    local to_dest = a and a.dest and a.dest ~= "" and dest_word < s.e and self:word(dest_word - 1, "the its his her")
+    local dest = a and a.dest ~= "" and a.dest or route_airport(self, a)
+    local to_dest = dest and dest_word < s.e and (self:word(dest_word - 1, "the its his her")
+        or (self:word(dest_word - 1, "to") and dest_word - 1 > s.trig))
       and #self:refs_in(s.trig, s.e, "waypoint") == 0 and (dest_word + 1 >= s.e or self.t[dest_word + 1].kind == "punct")
-      and a.dest
+      and dest
     if to_dest then self:explain(dest_word - 1, dest_word + 1) end
     local point = self:point_at(s.trig + 1, s.e, id)
     if point == false then return end

@@ -1901,6 +1901,10 @@ return {
       after = { "when", "once" } },
     { heard = { "you are with", "it is with", "you're with", "it's with" }, means = "it is at",
       between = { { "when", "once" }, { "#number", "fl", "flight", "speed", "mach" } } },
+    -- (the aircraft called "he" or "she", as a speaker of a language whose noun for it has that gender says it,
+    -- Polish "on", Russian "он", German "er": "when he is over EROBI descend FL70", "once she's at FL100")
+    { heard = { "he is over", "she is over", "he's over", "she's over" }, means = "passing", after = { "when", "once" } },
+    { heard = { "he is at", "she is at", "he's at", "she's at" }, means = "it is at", after = { "when", "once" } },
     -- (false friends of a Spanish or Portuguese speaker for the simulation's clock: "put the simulation in normal
     -- velocity again" for "velocidad" / "velocidade", "fast the simulation 30 minutes" for fast-forward)
     { heard = { "velocity" }, means = "speed", after = { "normal", "double" } },

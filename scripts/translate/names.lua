@@ -226,6 +226,9 @@ local names = {
     { "air berlin", "BER" },
     { "malev", "MAH" },
     { "pollot", "LOT" },
+    { "enter", "ENT" },  -- (Enter Air, Poland's charter airline)
+    { "sprintair", "SRN" },  -- (SprintAir, Poland's cargo and charter airline; also said "Sprint Air")
+    { "sprint air", "SRN" },
     { "czech", "CSA" },
     { "olympic", "OAL" },
     { "cyprus", "CYP" },

@@ -749,6 +749,13 @@ return function(intent, rule, words)
     local t = g.t[i + 1]
     return t ~= nil and t.kind == "number" and t.text:match("^%d%d%d$") ~= nil and tonumber(t.text) <= 360
   end }
+  -- "bank max 30 degrees in turns", "limit the bank to 25 when turning": when a bank limit applies, no turn
+  rule { "turn turns turning", false, prev = { 2, "in when while during" }, when = function(g, i)
+    for k = i - 1, math.max(1, i - 8), -1 do
+      if g:word(k, "bank banking") then return true end
+    end
+    return false
+  end }
   rule { "turn switch", false, when = function(g, i) return g:switch_follows(i) end }
   rule { "turn turning", "hdg" }
   -- "rotate BAW123 30 degrees to the left", "nudge N123AB 15 degrees left": a turn by an amount

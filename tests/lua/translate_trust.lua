@@ -14689,3 +14689,62 @@ do
   asked(ex("the Aer Lingus heading south, climb FL150"), "neither Aer Lingus heads south")
   asked(ex("the Aer Lingus, climb FL150"), "two Aer Lingus flying, no description")
 end
+
+-- Cycle 54 (f155): non-native polite English (a Polish speaker's articles dropped, "he" for the aircraft)
+do
+  -- a type named by a designator's digits: after its maker ("the Boeing 738"), an E-Jet's after "the" ("the 175")
+  local _, ex = scene({ "CRE SPL12 E190 52.0 20.0 090 FL220 280", "CRE SPL34 E175 52.2 20.2 090 FL240 280",
+                        "CRE KLM56 B738 52.4 20.4 270 FL300 280", "CRE KLM78 B38M 52.6 20.6 270 FL320 280" })
+  check_eq(ex("the 175 turn right 30 degrees"), "HDG SPL34 120 RIGHT")
+  check_eq(ex("the Boeing 738 reduce 250 knots"), "SPD KLM56 250")
+  check_eq(ex("the Embraer 190 climb FL260"), "ALT SPL12 FL260")
+  asked(ex("the Boeing descend FL200"), "two Boeings fly")
+  asked(ex("the 195 descend FL200"), "no E195 flies")
+  asked(ex("190 descend FL200"), "digits with no article are no type")
+  -- the two aircraft of a maker said in the plural after "both"
+  check_eq(ex("both Embraers descend FL200"), "ALT SPL12 FL200 ; ALT SPL34 FL200")
+  check_eq(ex("both the Boeings climb FL340"), "ALT KLM56 FL340 ; ALT KLM78 FL340")
+  asked(ex("both Airbuses descend FL200"), "no two Airbuses fly")
+  -- (a plural in the purpose of an instruction to one aircraft names no aircraft)
+  check_eq(ex("KLM56 reduce 250 knots so that both Boeings fly the same speed"), "SPD KLM56 250")
+end
+do
+  -- an airline as the object of the request's preposition, its article dropped
+  local _, ex = navscene({ "CRE SWR12 A320 47.0 8.0 090 FL220 280", "CRE ENT34 B738 47.2 8.2 090 FL240 280",
+                           "CRE SRN56 AT72 47.4 8.4 270 FL120 220", "CRE DLH7 A321 47.6 8.6 270 FL300 280",
+                           "CRE DLH8 A320 47.8 8.8 270 FL320 280" }, "an airline after a preposition, places by name")
+  if ex then
+    check_eq(ex("please show me route of Swiss"), "LISTRTE SWR12")
+    check_eq(ex("give to Sprint Air direct ZUE"), "ADDWPT SRN56 ZUE ; DIRECT SRN56 ZUE")
+    check_eq(ex("add for Enter waypoint ZUE"), "ADDWPT ENT34 ZUE")
+    check_eq(ex("set destination of Swiss to Geneva"), "DEST SWR12 LSGG")
+    check_eq(ex("delete Enter 34 please"), "DEL ENT34")
+    asked(ex("show me route of Lufthansa"), "two Lufthansa aircraft fly")
+    asked(ex("Swiss turn left 20 degrees"), "an airline addressed alone is a callsign cut short")
+    asked(ex("DLH7 keep clear of Swiss"), "an airline after 'clear of' is traffic")
+  end
+end
+do
+  -- "when he is over FIX", "once she's at FIX": the aircraft called "he" or "she" in a condition
+  local _, ex = navscene({ "CRE RYR5TK B738 51.70 20.40 60 FL110 260", "ADDWPT RYR5TK EROBI", "ADDWPT RYR5TK EPWA" },
+    "a condition at a fix of the navdata")
+  if ex then
+    check_eq(ex("RYR5TK, when he is over EROBI, descend FL70"), "AT RYR5TK EROBI DO ALT RYR5TK FL70")
+    check_eq(ex("RYR5TK once she's at EROBI reduce 220"), "AT RYR5TK EROBI DO SPD RYR5TK 220")
+    asked(ex("RYR5TK, when he is over the river, descend FL70"), "a place that is no waypoint")
+  end
+end
+do
+  -- "direct to airport", its article dropped: the destination, else the open airport the route ends at
+  local _, ex = navscene({ "CRE WZZ1 A320 52.40 20.20 105 FL160 290", "ADDWPT WZZ1 AGESI", "ADDWPT WZZ1 EPWA",
+                           "CRE ENT2 B738 52.05 20.75 240 FL080 230", "ADDWPT ENT2 KRN" }, "routes of the navdata")
+  if ex then
+    check_eq(ex("WZZ1, please go direct to airport"), "DIRECT WZZ1 EPWA")
+    check_eq(ex("WZZ1 skip AGESI and go direct to the airport"), "DIRECT WZZ1 EPWA")
+    asked(ex("ENT2 direct to airport"), "a route ending at a fix names no airport")
+    -- a bank limit "in turns": when the limit applies, no turn
+    check_eq(ex("WZZ1 please bank max 25 degrees in turns"), "BANK WZZ1 25")
+    check_eq(ex("ENT2 max bank 30 degrees in the turns"), "BANK ENT2 30")
+    asked(ex("ENT2 bank 30 degrees when turning left"), "a turn's side with no heading")
+  end
+end
