@@ -317,7 +317,9 @@ return function(H, f, wrap, compass)
     local target = self:pick(self:corrected(#with_unit > 0 and with_unit or plain, with_unit, plain, s), s, "maintain")
     local dir = self:direction(s)
     local verb = dir > 0 and "climb" or dir < 0 and "descend" or "fly"
-    if self:word_in(s.b, s.e, "double") and now then
+    -- ("double the altitude": twice the level flown; "double-check the altitude", a verb, doubles nothing)
+    local twice = self:find_word(s.b, s.e, "double")
+    if twice < s.e and not self:word(twice + 1, "check checked checks checking") and now then
       for _, id in ipairs(ids) do self:emit("ALT " .. id .. " " .. f.int((now.alt_ft or 0) * 2)) end
       return
     end

@@ -14667,3 +14667,11 @@ do
   check_eq(ex("United 88, make a left turn heading 270"), "HDG UAL88 270 LEFT")
   check_eq(ex("United 88, a left turn to 270"), "HDG UAL88 270 LEFT")
 end
+
+-- Cycle 54 (fwb): "double-check" is a verb, no doubling of the altitude ("double the altitude" still is)
+do
+  local _, ex = scene({ "CRE AAL77 B738 38.4 -77.2 180 12000 250" })
+  check_eq(ex("American 77, double-check your altitude and climb to one four thousand"), "ALT AAL77 14000")
+  asked(ex("American 77, please double-check your altitude"), "a check is no level")
+  check_eq(ex("American 77, double your altitude"), "ALT AAL77 24000")
+end
