@@ -3385,6 +3385,30 @@ function G:condition()
   return nil, rest
 end
 
+-- How far a condition opening the request holds (G:condition; its instructions from `rest`): every instruction
+-- after it, unless a later clause (after a mark or "and", an instruction read before it) holds a word saying it runs
+-- at once (lexicon.at_once_words: "once you reach FL150, reduce to 250 knots; descend to FL150 now"): that clause and
+-- what follows run now, and its first token is returned. Another instruction after a full stop, a semicolon or "!"
+-- with no such word may wait too or run now: asked (self.ask). nil when the condition holds all.
+function G:condition_scope(rest)
+  for x = rest + 1, #self.t do
+    local mark = self.t[x].kind == "punct"
+    if (mark or self:word(x, "and")) and self:any_instruction_in(rest, x) and self:any_instruction_in(x + 1, #self.t + 1) then
+      local e = x + 1
+      while e <= #self.t and self.t[e].kind ~= "punct" and not self:word(e, "and") do e = e + 1 end
+      if self:word_in(x + 1, e, "@at_once_words") then return x + 1 end
+      if mark and (". ; !"):find(self.t[x].text, 1, true) then
+        local c = self:find_word(1, rest, "@condition")
+        self.ask = string.format("Should '%s' also wait for '%s', or run now?",
+          (self:raw(x + 1, #self.t + 1):gsub(" ([,.;:!])", "%1"):gsub("[%s%p]+$", "")),
+          (self:raw(c < rest and c or 1, rest):gsub(" ([,.;:!])", "%1"):gsub("[%s%p]+$", "")))
+        return nil
+      end
+    end
+  end
+  return nil
+end
+
 -- A place said by its name closing the condition i .. comma - 1 straight after a verb of reaching ("when the BA
 -- gets to Biggin, ...", "when you reach Glasgow VOR, ...": lexicon.reached_place_words), near aircraft `id`
 -- (m:place_by_name): { {name =, exists = true, b =, e =} } (its tokens b .. e - 1, marked used), else {}.
@@ -11364,6 +11388,43 @@ function G.route_points_said(text, u, world, toks)
   return done()
 end
 
+-- A number said in words joined by hyphens ("four-fifty-one", "three-oh-five", "thirty-three-oh-two",
+-- "one-double-zero", "six-o-seven"): a word whose every hyphen-separated part is a number word (NUMBER_WORDS,
+-- lexicon.hyphen_number_parts) is those words apart, read as the same words said with spaces (the lexer
+-- would drop a hyphen-glued word between two digits as noise: "four-fifty-one" read 41). A word with any
+-- other part ("nine-year", "one-way", "737-800") stays as written.
+function G.number_words_apart(text)
+  if not text:find("%a%-%a") then return text end
+  return (text:gsub("%f[%w][%a%-]+%f[^%w%-]", function(w)
+    if not w:find("-", 1, true) then return nil end
+    for part in (w .. "-"):gmatch("([^-]*)%-") do
+      local p = part:lower()
+      if not (NUMBER_WORDS[p] or lexicon.hyphen_number_parts[p]) then return nil end
+    end
+    return (w:gsub("%-", " "))
+  end))
+end
+-- A zero said "oh" or "o" inside a number ("heading three oh five", "JetBlue six o seven", "double oh seven"):
+-- after a digit word or a number word below a hundred (or "double"/"triple") and before a digit word, with no mark between,
+-- it is "zero" (the lexer would read "oh" as a hesitation and drop a lone "o" as a stray letter: "three oh
+-- five" read 35). "oh" closing a number ("two two oh") and one after a mark ("two, oh, three") stay.
+function G.spoken_zeros(text)
+  local low = text:lower()
+  if not (low:find(" oh ", 1, true) or low:find(" o ", 1, true)) then return text end
+  local toks, bare = plain_words(text)
+  local out
+  for i = 2, #toks - 1 do
+    local before = bare[i - 1]
+    if (bare[i] == "oh" or bare[i] == "o") and toks[i] == toks[i]:match("^%a+") and not toks[i - 1]:match("%p$")
+        and (DIGIT_WORDS[before] or G.below_hundred[before] or before == "double" or before == "triple")
+        and DIGIT_WORDS[bare[i + 1]] then
+      out = out or table.move(toks, 1, #toks, 1, {})
+      out[i] = "zero"
+    end
+  end
+  return out and table.concat(out, " ") or text
+end
+
 function M.translate(text, world)
   local said = text
   world = world or {}
@@ -11372,7 +11433,7 @@ function M.translate(text, world)
   local quoted = M.quoted_clearance(text, world)
   if quoted then return quoted end
   if text:find("\xC3", 1, true) then text = text:gsub("[\xC3][\x80-\xBF]", lexicon.accents) end  -- (UTF-8 Latin-1 letters)
-  text = G.id_label(numbered_steps(text), world)
+  text = G.id_label(numbered_steps(G.spoken_zeros(G.number_words_apart(text))), world)
   -- ("climb to 10 km", "descend to 7.5 km": a level in kilometres straight after the vertical verb, as metres)
   if text:find("km", 1, true) then
     for _, verb in ipairs({ "[Cc]limbs?%s+to", "[Cc]limbs?", "[Dd]escends?%s+to", "[Dd]escends?" }) do
@@ -11634,6 +11695,7 @@ function M.translate(text, world)
   -- only what is not simulated was said: no instruction word and no value left
   if note and not g:any_instruction() and #g:quantities(1, #g.t + 1) == 0 then return { commands = {}, note = note } end
   local cond, rest = g:condition()
+  local now_from = cond and not g.ask and g:condition_scope(rest)
   if not g.ask then
     local k, level, kind = nil, nil, nil
     local ce  -- (the end of a trailing condition, the clause after it run at once: G:condition_closed)
@@ -11646,7 +11708,7 @@ function M.translate(text, world)
     end
     if clause > rest then g:parse(rest, clause) end
     local before = #g.out
-    g:parse(clause, k or #g.t + 1)
+    g:parse(clause, k or now_from or #g.t + 1)
     if k and not g.ask then
       -- (the condition's words: what the ATALT says)
       g:take(level)
@@ -11691,6 +11753,7 @@ function M.translate(text, world)
           g.out[c] = cond .. " " .. g.out[c]
         end
       end
+      if now_from and not g.ask then g:parse(now_from, #g.t + 1) end
     end
   end
   if not g.ask then g:restated_at_place() end

@@ -2581,6 +2581,32 @@ function m:homophone_closing(r)
   return nil
 end
 
+-- The words of spoken aircraft reference r when they are its flight number's digits alone said in words ("six
+-- zero five, climb FL160"), r an airline's callsign (letters, then digits) that no other reference of the request
+-- names with its airline: the airline went unsaid, and issue 44 point 3 takes a callsign only when its airline and
+-- every character are said, so it is confirmed, never taken; nil otherwise. Not so: digits typed ("1723 direct
+-- XING2", a typist's shorthand older rounds read), a registration ("N512TX" has no airline to say), an aircraft
+-- described ("the triple seven": "the" before it, or a reference of its own kind, r.by_type, r.by_description,
+-- ...), and a number listed after a callsign of its airline ("KLM 1394 and 1349").
+function m:number_only(r)
+  if not r.name:match("^%a%a%a?%d") or r.name:match("^N%d") or self:word(r.b - 1, "the") then return nil end
+  for key in pairs(r) do
+    if key:match("^by_") then return nil end
+  end
+  for x = r.b, r.e - 1 do
+    if not (self.t[x].kind == "word" and (self.t[x].number_word or self.t[x].filler)) then return nil end
+  end
+  local airline, before = r.name:match("^%a+"), self.t[r.b - 1]
+  local listed = before and (self:word(r.b - 1, "and") or (before.kind == "punct" and before.text == ","))
+  for _, o in ipairs(self.refs) do
+    if o.kind == "aircraft" and o.b ~= r.b and (o.name == r.name
+        or (listed and o.e == r.b - 1 and o.name:match("^%a+") == airline)) then
+      return nil
+    end
+  end
+  return self:raw(r.b, r.e)
+end
+
 -- The words that say the callsign of spoken aircraft reference r when the callsign matcher read r from the
 -- request's opening words with words of the request glued before them ("climb Foobar 846" heard as
 -- CLIMBFOOBAR846: words squawk knows, none an airline's, lead it) and the words after them, before the flight
@@ -2624,7 +2650,7 @@ function m:confirm_callsigns(s)
   for _, r in ipairs(self:refs_in(s.b, s.e, "aircraft")) do
     local h = r.heard
     local confirmed = (self.world.confirmed or {})[r.name]
-    local part = not confirmed and (self:telephony_part_only(r) or self:homophone_closing(r))
+    local part = not confirmed and (self:telephony_part_only(r) or self:homophone_closing(r) or self:number_only(r))
     if part then
       self.confirm = self.confirm or { id = r.name, heard = part }
       self:need(string.format("Did you mean %s? I heard '%s'.", r.name, part))

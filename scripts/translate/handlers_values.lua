@@ -317,7 +317,9 @@ return function(H, f, wrap, compass)
     local target = self:pick(self:corrected(#with_unit > 0 and with_unit or plain, with_unit, plain, s), s, "maintain")
     local dir = self:direction(s)
     local verb = dir > 0 and "climb" or dir < 0 and "descend" or "fly"
-    if self:word_in(s.b, s.e, "double") and now then
+    -- ("double the altitude": twice the level flown; "double-check the altitude", a verb, doubles nothing)
+    local twice = self:find_word(s.b, s.e, "double")
+    if twice < s.e and not self:word(twice + 1, "check checked checks checking") and now then
       for _, id in ipairs(ids) do self:emit("ALT " .. id .. " " .. f.int((now.alt_ft or 0) * 2)) end
       return
     end
@@ -969,6 +971,16 @@ return function(H, f, wrap, compass)
     -- turn's degrees are written so
     -- "turn left three sixty", "turn right three hundred and sixty": a whole circle said as a number (not digit by
     -- digit, no "heading") is an orbit, which squawk does not fly, or the heading 360: asked
+    -- "do a left two-seventy", "make a right 270": "a", a side and straight after it a number, no "heading", names
+    -- a turn of that many degrees (a manoeuvre, the noun "a left 270") as well as the heading: asked ("a left turn
+    -- to 270" names the heading)
+    local article = abs and abs.kind == "plain" and way ~= 0 and not offset and hdg
+      and not self:word_in(s.b, s.e, "heading hdg") and self:find_word(s.b, abs.b, "a")
+    if article and article < abs.b and self:word(article + 1, "@left @right")
+        and self:skip_fillers(article + 2) == abs.b then
+      return self:need(string.format("Should %s turn %s by %s degrees, or fly heading %s? I heard '%s'.", id,
+        way < 0 and "left" or "right", f.num(abs.value), f.num(wrap(hdg)), self:raw(article, abs.e)))
+    end
     local n = abs and abs.number
     if hdg and not offset and way ~= 0 and abs and abs.kind == "plain" and abs.value == 360 and not n.typed
         and (n.hundred or n.groups < #n.digits) and not self:word_in(s.b, s.e, "heading hdg") then

@@ -2108,6 +2108,10 @@ return {
   -- nouns naming the place said after a word of a place's slot ("add waypoint rosig", "direct to the fix
   -- kudes"): the slot goes on over them, and over "the" before one (grammar.lua typed_places)
   place_nouns = { waypoint = true, wpt = true, fix = true, point = true },
+  -- words that are parts of a number said in words besides the number words themselves: a zero ("oh", "o") and
+  -- a digit said twice or three times ("double", "triple"); a word joined by hyphens of these and number words
+  -- only is a number said ("six-oh-seven", "one-double-zero"; grammar.lua G.number_words_apart)
+  hyphen_number_parts = { oh = true, o = true, double = true, triple = true },
   -- tens words, which join the unit digit after them into one number
   tens = { "twenty", "thirty", "forty", "fourty", "fifty", "sixty", "seventy", "eighty", "ninety" },
   -- words speech recognition writes for a spoken "two" before digits

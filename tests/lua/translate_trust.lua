@@ -14748,3 +14748,74 @@ do
     asked(ex("ENT2 bank 30 degrees when turning left"), "a turn's side with no heading")
   end
 end
+
+-- Cycle 54 (fwb): numbers said in words joined by hyphens ("four-fifty-one", "three-oh-five", "one-double-zero")
+-- are the words said apart; a zero said "oh" or "o" between digits is a zero
+do
+  local _, ex = scene({ "CRE ASA372 B739 47.4 -122.3 180 FL210 290", "CRE QXE2604 DH8D 47.6 -122.1 090 12000 240",
+    "CRE SKW507 CRJ7 47.2 -122.6 300 9000 250", "CRE ASA66 A320 47.9 -122.0 010 FL250 300" })
+  check_eq(ex("Alaska three-seventy-two, climb flight level two-three-zero"), "ALT ASA372 FL230")
+  check_eq(ex("Horizon twenty-six-oh-four, reduce speed two-ten"), "SPD QXE2604 210")
+  check_eq(ex("Skywest five-o-seven, descend to seven-thousand"), "ALT SKW507 7000")
+  check_eq(ex("Skywest five o seven, turn left heading two-oh-five"), "HDG SKW507 205 LEFT")
+  check_eq(ex("Alaska double-six, fly heading three-three-five"), "HDG ASA66 335")
+  check_eq(ex("Alaska three seven two, heading three oh five"), "HDG ASA372 305")
+  check_eq(ex("Alaska three seven two, speed two-sixty-five knots"), "SPD ASA372 265")
+  check_eq(ex("Horizon two six zero four, descend flight level one-double-zero"), "ALT QXE2604 FL100")
+  check_eq(ex("Alaska double-six, climb at one-thousand-five-hundred feet per minute to flight level two-seven-zero"),
+    "ALT ASA66 FL270 1500")
+  -- a word with another part stays as written; "oh" after a mark is no digit
+  asked(ex("Alaska three seven two, heading two, oh, three one zero"), "an interjection between two values")
+  check(not ex("Alaska three-seventy-two, one-way climb flight level two-three-zero"):find("FL23[^0]"),
+    "a hyphened word with another part is no number")
+end
+
+-- Cycle 54 (fwb): a condition opening the request holds its instructions until a clause said to run now ("...;
+-- descend to FL150 now"); another instruction after a full stop or a semicolon with no such word is asked
+do
+  local _, ex = scene({ "CRE EIN45 A320 53.4 -6.3 090 FL230 290", "CRE RYR7TK B738 53.0 -6.0 270 FL190 280" })
+  check_eq(ex("Shamrock 45, once you reach FL160, reduce to 240 knots; descend to FL160 now"),
+    "ATALT EIN45 FL160 SPD EIN45 240 ; ALT EIN45 FL160")
+  check_eq(ex("Shamrock 45, once at FL160, turn left heading 040. Descend FL160 immediately."),
+    "ATALT EIN45 FL160 HDG EIN45 40 LEFT ; ALT EIN45 FL160")
+  check_eq(ex("Shamrock 45, when you get to FL160, reduce to 240 knots, and descend to FL160 now"),
+    "ATALT EIN45 FL160 SPD EIN45 240 ; ALT EIN45 FL160")
+  -- (a comma and no word of now: the condition still holds everything after it)
+  check_eq(ex("Shamrock 45, when passing FL160, reduce to 240 knots, turn left heading 040"),
+    "ATALT EIN45 FL160 SPD EIN45 240 ; ATALT EIN45 FL160 HDG EIN45 40 LEFT")
+  asked(ex("Shamrock 45, when passing FL160, reduce to 240 knots; turn left heading 040"),
+    "a second sentence after a condition's instruction, no word of now")
+end
+
+-- Cycle 54 (fwb): a callsign said by its flight number alone ("six zero five, climb"), no airline, is confirmed
+do
+  local _, ex = scene({ "CRE AEE318 A320 37.9 23.7 090 FL150 280", "CRE OAL96 DH8D 38.2 23.9 180 FL110 230",
+    "CRE N747GS C172 37.8 23.6 000 3000 100" })
+  asked(ex("three one eight, climb FL170"), "digits alone, no airline")
+  asked(ex("three one eight, descend FL120"), "digits alone, no airline")
+  asked(ex("nine six, turn right heading 200"), "two digits alone, no airline")
+  asked(ex("three oh eight, climb FL170"), "digits alone, a zero said oh")
+  -- (typed digits alone, a typist's shorthand older rounds read; "the" and digits, an aircraft described)
+  check_eq(ex("318 descend FL120"), "ALT AEE318 FL120")
+  check_eq(ex("Aegean three one eight, climb FL170"), "ALT AEE318 FL170")
+  check_eq(ex("Olympic 96, reduce 210"), "SPD OAL96 210")
+  check_eq(ex("N747GS climb 4000"), "ALT N747GS 4000")
+end
+
+-- Cycle 54 (fwb): "do a left two-seventy", "make a right 220": a side after "a" with its number straight after and no
+-- "heading" is a turn of that many degrees or the heading: asked
+do
+  local _, ex = scene({ "CRE UAL88 B772 40.6 -73.8 060 9000 250" })
+  asked(ex("United 88, do a left two-seventy for spacing"), "a left 270, turn or heading")
+  asked(ex("United 88, make a right two-twenty"), "a right 220, turn or heading")
+  check_eq(ex("United 88, make a left turn heading 270"), "HDG UAL88 270 LEFT")
+  check_eq(ex("United 88, a left turn to 270"), "HDG UAL88 270 LEFT")
+end
+
+-- Cycle 54 (fwb): "double-check" is a verb, no doubling of the altitude ("double the altitude" still is)
+do
+  local _, ex = scene({ "CRE AAL77 B738 38.4 -77.2 180 12000 250" })
+  check_eq(ex("American 77, double-check your altitude and climb to one four thousand"), "ALT AAL77 14000")
+  asked(ex("American 77, please double-check your altitude"), "a check is no level")
+  check_eq(ex("American 77, double your altitude"), "ALT AAL77 24000")
+end
