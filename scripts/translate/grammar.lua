@@ -1775,49 +1775,79 @@ function G:find_word(b, e, words)
   return e
 end
 
--- LIST_WORDS[words]: the words of a word list or set (G:word's `words`), as an array
-local LIST_WORDS = setmetatable({}, { __mode = "k" })
--- True when a word of `words` may be in the request: it was when the request was first asked about (a word
--- is only ever blanked, so a false stays true). Per request and list; a guard in front of a scan for words
--- that are seldom said.
-function G:said(words)
-  local memo = self.said_memo  -- per request: memo[words] = the answer
-  if not memo then
-    memo = {}
-    self.said_memo = memo
-    local present = {}  -- present[w] for each word said
-    local texts = self.words
-    for k = 1, #texts do
-      if texts[k] then present[texts[k]] = true end
+do  -- (G:said's tables, its own)
+  -- LIST_WORDS[words]: the words of a word list or set (G:word's `words`), as an array
+  local LIST_WORDS = setmetatable({}, { __mode = "k" })
+  -- SAID_LISTS.of[w]: the word lists given as strings (G:said's `words`) that hold the word w, each list once
+  -- it was first asked about; SAID_LISTS.serial[words]: its place in that order (.seen: how many so far).
+  local SAID_LISTS = { of = {}, serial = {}, seen = 0 }
+  -- True when a word of `words` may be in the request: it was when the request was first asked about (a word
+  -- is only ever blanked, so a false stays true). Per request and list; a guard in front of a scan for words
+  -- that are seldom said.
+  function G:said(words)
+    local memo = self.said_memo  -- per request: memo[words] = the answer
+    if not memo then
+      memo = {}
+      self.said_memo = memo
+      -- present[w] for each word said; held[words] for each list of SAID_LISTS holding a word said (the lists
+      -- seen up to now, self.lists_seen)
+      local present, held = {}, {}
+      local texts = self.words
+      for k = 1, #texts do
+        local w = texts[k]
+        if w and not present[w] then
+          present[w] = true
+          local lists = SAID_LISTS.of[w]
+          for j = 1, lists and #lists or 0 do held[lists[j]] = true end
+        end
+      end
+      self.present, self.held, self.lists_seen = present, held, SAID_LISTS.seen
     end
-    self.present = present
-  end
-  local v = memo[words]
-  if v ~= nil then return v end
-  local list = LIST_WORDS[words]
-  if not list then
-    list = {}
-    for w, x in pairs(set_cache[words] or word_set(words, 2)) do
-      if x then list[#list + 1] = w end
-    end
-    LIST_WORDS[words] = list
-  end
-  -- (the shorter of the list and the request is walked)
-  local texts = self.words
-  if #list > #texts then
-    v = word_among(texts, 1, #texts + 1, set_cache[words] or word_set(words, 2))
-  else
-    local present = self.present
-    v = false
-    for k = 1, #list do
-      if present[list[k]] then
-        v = true
-        break
+    local v = memo[words]
+    if v ~= nil then return v end
+    local list = LIST_WORDS[words]
+    if not list then
+      list = {}
+      for w, x in pairs(set_cache[words] or word_set(words, 2)) do
+        if x then list[#list + 1] = w end
+      end
+      LIST_WORDS[words] = list
+      -- (a list holding "", a blanked word's text, is asked about as it stands, as it may come to be said)
+      if type(words) == "string" and not (set_cache[words] or word_set(words, 2))[""] then
+        local of = SAID_LISTS.of
+        SAID_LISTS.seen = SAID_LISTS.seen + 1
+        SAID_LISTS.serial[words] = SAID_LISTS.seen
+        for k = 1, #list do
+          local w = list[k]
+          of[w] = of[w] or {}
+          of[w][#of[w] + 1] = words
+        end
       end
     end
+    -- (the shorter of the list and the request is walked; a list seen before the request was first asked about
+    -- holds a word said exactly when self.held says so, and the request's words now are among those then)
+    local texts = self.words
+    local serial = SAID_LISTS.serial[words]
+    local known = serial ~= nil and serial <= self.lists_seen
+    if known and not self.held[words] then
+      v = false
+    elseif #list > #texts then
+      v = word_among(texts, 1, #texts + 1, set_cache[words] or word_set(words, 2))
+    elseif known then
+      v = true
+    else
+      local present = self.present
+      v = false
+      for k = 1, #list do
+        if present[list[k]] then
+          v = true
+          break
+        end
+      end
+    end
+    memo[words] = v
+    return v
   end
-  memo[words] = v
-  return v
 end
 
 function G:followed_by(i, span, words) return self:word_in(i + 1, math.min(#self.t + 1, i + 1 + span), words) end
