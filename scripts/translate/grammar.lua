@@ -1466,8 +1466,12 @@ local function written_forms(text, world)
   end
   -- "ff 2m": minutes after fast-forward's abbreviation (no metres of time)
   where("ff", "%f[%w]([Ff][Ff]%s+%d+%.?%d*)%s?[Mm]%f[%W]", "%1 min")
-  -- "whats" typed without its apostrophe is "what's" ("whats DERLA's position")
-  where("whats", "%f[%a]([Ww])[Hh][Aa][Tt][Ss]%f[%A]", "%1hat's")
+  -- a contraction written without its apostrophe ("whats DERLA's position", "once youre at 250"),
+  -- lexicon.apostrophe_dropped, is the contraction (its first letter's case kept)
+  where("%a%a%a", "%f[%a](%a)(%a%a+)%f[%A]", function(first, rest)
+    local spelled = lexicon.apostrophe_dropped[(first .. rest):lower()]
+    return spelled and first .. spelled:sub(2)
+  end)
   -- "realtime" written as one word
   where("realtime", "%f[%a]([Rr][Ee][Aa][Ll])([Tt][Ii][Mm][Ee])%f[%A]", "%1 %2")
   -- "v/s 2500 down": the vertical speed's abbreviation written with a slash
@@ -5148,12 +5152,13 @@ function G:trailing_fix(s)
     return name and { b = lead, e = e, name = name } or nil
   end
   if self:word(k, "it you") then k = self:skip_fillers(k + 1) end
-  -- ("fl100 when past WYP": typed short, "past" is passing)
-  if self:word(k, "passing passes reaching reaches overflying past") then
+  -- ("fl100 when past WYP": typed short, "past" is passing; "climb FL390 once you reach BURAM", "... when you
+  -- pass LOHRE": the verb's bare form after "you")
+  if self:word(k, "passing passes reaching reaches overflying past reach pass") then
     k = self:skip_fillers(k + 1)
-  elseif self:word(k, "has") and self:word(k + 1, "passed") then  -- ("once it has passed YHZ")
+  elseif self:word(k, "has have") and self:word(k + 1, "passed reached") then  -- ("once it has passed YHZ")
     k = self:skip_fillers(k + 2)
-  elseif self:word(k, "gets") and self:word(k + 1, "to") then
+  elseif self:word(k, "gets get") and self:word(k + 1, "to") then
     k = self:skip_fillers(k + 2)
   elseif not (self:word(k, "is it's") and self:word(k + 1, "at over")) then  -- ("once it is over BUMIL")
     return nil

@@ -2764,14 +2764,26 @@ function m:level_given(q, id)
   end
   return nil
 end
+-- True when `ft` [ft] lies strictly between aircraft `id`'s altitude and the level this request cleared it to
+-- (its ALT line): a level it crosses on the way ("climb FL160 and when passing one hundred turn left" from FL90).
+function m:on_the_way(id, ft)
+  local a = self:state(id)
+  for _, c in ipairs(self.out) do
+    local who, to = c:match("^ALT (%S+) (%S+)")
+    local fl = to and to:match("^FL(%d+)$")
+    local cleared = fl and tonumber(fl) * 100 or tonumber(to or "")
+    if who == id and cleared and a and a.alt_ft and (ft - a.alt_ft) * (ft - cleared) < 0 then return true end
+  end
+  return false
+end
 -- words between the level and a speed's own word, part of the instruction ("when it passes FL130 drop the
 -- speed to 230", "... bring its speed back to 240")
 local SPEED_LEAD = { drop = true, bring = true, cut = true, take = true, pull = true, knock = true, put = true, the = true,
                      its = true, your = true, his = true, her = true, their = true }
 -- words between the level and a rate's own word, part of the instruction ("passing 150 reduce rate to 1000",
--- "leaving FL100 increase your rate to 2000")
+-- "leaving FL100 increase your rate to 2000", "after passing FL150 descend rate 1500": the rate's direction)
 local RATE_LEAD = { reduce = true, increase = true, decrease = true, the = true, its = true, your = true,
-                    his = true, her = true, their = true }
+                    his = true, her = true, their = true, descend = true, climb = true }
 -- who does it, between the level and any instruction ("when passing FL200 it shall reduce the speed to 220")
 local SUBJECT_LEAD = { it = true, he = true, she = true, they = true, you = true, shall = true, should = true,
                        will = true, can = true, must = true }
@@ -2879,7 +2891,10 @@ function m:at_altitude(s)
   end
   local ids = self:acids(s)
   if #ids == 0 then return nil end
-  if groupwise and ((self:state(ids[1]) or {}).alt_ft or 0) < L.groupwise_from_ft then return nil end
+  if groupwise and ((self:state(ids[1]) or {}).alt_ft or 0) < L.groupwise_from_ft
+      and not self:on_the_way(ids[1], groupwise) then
+    return nil
+  end
   if given and not self:level_given(q, ids[1]) then return nil end
   -- ("reduce speed 250, on reaching two five zero descend FL150": three digits alone that this request gave the
   -- aircraft as its speed [kt], and not as its level, are the speed reached: ATSPD; given as both, asked)

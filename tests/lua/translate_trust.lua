@@ -14604,3 +14604,27 @@ do
   asked(ex("would you mind taking the Wideroe out of the hold"), "out of the hold is no deletion")
   asked(ex("the Wideroe is out of the picture"), "a remark that it is out names no instruction")
 end
+
+-- Cycle 54 (f157): conditions as a speech recogniser writes them: a contraction without its apostrophe ("once
+-- youre at"), "start down" after a condition, a level said group-wise that the aircraft crosses on its way ("when
+-- passing one hundred"), "once you reach FIX" after its instruction, a rate's verb after a level passed
+do
+  local _, ex = scene({ "CRE AFR21 A320 49.0 2.5 090 FL120 280", "DEFWPT PONTA 49.0 3.0", "DEFWPT KOTAL 49.0 3.5",
+                        "ADDWPT AFR21 PONTA", "ADDWPT AFR21 KOTAL", "CRE EZY7 A319 48.5 3.0 180 FL90 250" })
+  check_eq(ex("air france two one slow to two six zero and once youre at two sixty start down to flight level eight zero"),
+    "SPD AFR21 260 ; ATSPD AFR21 260 ALT AFR21 FL80")
+  check_eq(ex("afr21 reduce 240 and when youre at 240 begin descending to FL90"),
+    "SPD AFR21 240 ; ATSPD AFR21 240 ALT AFR21 FL90")
+  check_eq(ex("theres traffic ahead, afr21 descend FL100"), "ALT AFR21 FL100")
+  check_eq(ex("ezy7 climb FL150 and when passing one hundred and twenty turn right heading 220"),
+    "ALT EZY7 FL150 ; ATALT EZY7 FL120 HDG EZY7 220 RIGHT")
+  -- a group-wise level the aircraft will not cross on its way from FL90 is asked, as before
+  asked(ex("ezy7 climb FL150 and when passing two hundred turn right heading 220"), "a level off the way")
+  asked(ex("ezy7 descend FL60 and when passing one hundred reduce 220"), "a level behind the aircraft")
+  check_eq(ex("afr21 descend FL100 once you reach ponta"), "AT AFR21 PONTA DO ALT AFR21 FL100")
+  check_eq(ex("afr21 reduce 250 when you pass kotal"), "AT AFR21 KOTAL DO SPD AFR21 250")
+  check_eq(ex("afr21 turn left heading 150 once you have passed PONTA"), "AT AFR21 PONTA DO HDG AFR21 150 LEFT")
+  asked(ex("afr21 descend FL100 once you reach it"), "no level cleared before 'reach it'")
+  check_eq(ex("afr21 turn left heading 200, when passing FL110 descend rate 1200"),
+    "HDG AFR21 200 LEFT ; ATALT AFR21 FL110 VS AFR21 -1200")
+end
