@@ -14628,3 +14628,15 @@ do
   check_eq(ex("afr21 turn left heading 200, when passing FL110 descend rate 1200"),
     "HDG AFR21 200 LEFT ; ATALT AFR21 FL110 VS AFR21 -1200")
 end
+do
+  -- a city's airport said in a recogniser's lower case with its noun: "munich airport" is the airport; the city alone
+  -- in lower case, where navaids bear the name, is still asked
+  local _, ex = navscene({ "CRE DLH7 A320 48.60 10.80 010 FL110 250" }, "lower-case city airports")
+  if ex then
+    check_eq(ex("create lufthansa four five six a three twenty at munich airport heading one eight zero flight level "
+      .. "eight zero speed two fifty"), "CRE DLH456 A320 EDDM 180 FL80 250")
+    check_eq(ex("where is stuttgart airport"), "POS EDDS")
+    check_eq(ex("dlh7 set destination nuremberg airport"), "DEST DLH7 EDDN")
+    asked(ex("create DLH456 A320 at frankfurt heading 180 FL80 250 knots"), "a lower-case city that navaids bear")
+  end
+end
