@@ -96,12 +96,16 @@ function m:motion_said(i, list, names)
   return not self:word(v, "@halted")
 end
 
+-- lexicon.self_correction.markers of one word, as a set (m:marker_after_value)
+local MARKER_WORDS = {}
+for _, w in ipairs(L.self_correction.markers) do if not w:find(" ") then MARKER_WORDS[w] = true end end
+
 function m:direction(s)
   local names = self:refs_in(s.b, s.e, "aircraft")
   local function said(i, list) return self:motion_said(i, list, names) end
   -- a direction said after a correction replaces the one before it ("climb FL260, correction, descend FL220")
-  for i = self:said("@correction") and s.e - 1 or 0, s.b, -1 do
-    if self:word(i, "@correction") then
+  for i = (self:said("@correction") or self:said(MARKER_WORDS)) and s.e - 1 or 0, s.b, -1 do
+    if self:word(i, "@correction") or self:marker_after_value(i) then
       for k = i + 1, s.e - 1 do
         if said(k, "@up") then return 1 end
         if said(k, "@down") then return -1 end
@@ -125,6 +129,18 @@ end
 -- or as the instruction's word ("go up, descend at 2000 fpm"); a verb after a level ("climb FL300 descend") is a word left over,
 -- asked by the accounting. Words noted as not simulated ("expect descent"), in a reason or of a motion stopped
 -- ("stop descent, climb FL250") move nothing.
+-- True when the word at i is a self-correction marker (lexicon.self_correction.markers, one word) closing a run of
+-- such markers and fillers said straight after a value, with no punctuation ("climb flight level three niner zero
+-- uh wait no descend ...", a recogniser's transcript): the value before it is taken back as after "correction".
+function m:marker_after_value(i)
+  if not MARKER_WORDS[self.words[i] or ""] or self:word(i + 1, MARKER_WORDS) then return false end
+  local k = i - 1
+  while k > 0 and self.t[k].kind == "word" and (self.t[k].filler or MARKER_WORDS[self.words[k]]) do k = k - 1 end
+  for _, q in ipairs(self:quantities(math.max(1, k - 6), k + 1)) do
+    if q.e == k + 1 then return true end
+  end
+  return false
+end
 function m:opposite_motions(b, e)
   -- (no climb's word or no descent's word said in the request: none to oppose)
   if not ((self:said(self.motion.up) or self:said("up")) and (self:said(self.motion.down) or self:said("down"))) then
@@ -137,7 +153,7 @@ function m:opposite_motions(b, e)
     if q.kind ~= "alt" then signs[q.b - 1], signs[q.e] = true, true end
   end
   for i = b, e - 1 do
-    if self:word(i, "@correction") then up, down = nil, nil end
+    if self:word(i, "@correction") or self:marker_after_value(i) then up, down = nil, nil end
     local sign = signs[i] or self.triggers[i]
     if not (last and i >= last.e and last.kind == "alt") then
       local u = self:motion_said(i, self.motion.up, names) or (sign and self:word(i, "up"))
@@ -2701,9 +2717,18 @@ end
 -- the plain ones), unless a correction is followed by a value of either
 -- kind ("flight level two four zero correction two six zero"): then the
 -- values after the last correction word.
-function m:corrected(cands, with_unit, plain, s)
+-- The last correction word of segment s ("correction", or a marker straight after a value: m:marker_after_value),
+-- else nil.
+function m:last_correction(s)
   local corr
-  for i = s.b, self:said("@correction") and s.e - 1 or 0 do if self:word(i, "@correction") then corr = i end end
+  local any = self:said("@correction") or self:said(MARKER_WORDS)
+  for i = s.b, any and s.e - 1 or 0 do
+    if self:word(i, "@correction") or self:marker_after_value(i) then corr = i end
+  end
+  return corr
+end
+function m:corrected(cands, with_unit, plain, s)
+  local corr = self:last_correction(s)
   if not corr then return cands end
   local later = {}
   for _, list in ipairs({ with_unit, plain }) do
@@ -2719,8 +2744,7 @@ end
 -- The value picked is taken (G:take): the leftover check knows it was read.
 function m:pick(c, s, repeated)
   if #c == 0 then return nil end
-  local corr
-  for i = s.b, self:said("@correction") and s.e - 1 or 0 do if self:word(i, "@correction") then corr = i end end
+  local corr = self:last_correction(s)
   if corr then
     for _, q in ipairs(c) do if q.b > corr then return self:take(q) end end
     return self:take(c[#c])

@@ -14640,3 +14640,17 @@ do
     asked(ex("create DLH456 A320 at frankfurt heading 180 FL80 250 knots"), "a lower-case city that navaids bear")
   end
 end
+do
+  -- corrections in a recogniser's transcript and non-native radiotelephony: "negative" before a level's name is the
+  -- correction, no sign; an apology after the corrected value; "wait no" straight after a value, no punctuation
+  local _, ex = scene({ "CRE AZA12 A320 42.0 12.0 090 FL120 280", "CRE SAS4 A320 42.5 12.5 270 FL300 280" })
+  check_eq(ex("AZA12 descend FL 70 negative FL 80 sorry"), "ALT AZA12 FL80")
+  check_eq(ex("AZA12 turn right heading 120 negative heading 140"), "HDG AZA12 140 RIGHT")
+  check_eq(ex("AZA12 reduce speed 220 correction 230 sorry"), "SPD AZA12 230")
+  asked(ex("AZA12 descend FL70 sorry"), "an apology with no correction before it")
+  check_eq(ex("sas four climb flight level three two zero uh wait no descend flight level two eight zero"),
+    "ALT SAS4 FL280")
+  -- "no" alone before a verb may refuse it: still asked
+  asked(ex("sas4 climb FL320 uh no descend FL280"), "a bare 'no' before a verb")
+  asked(ex("sas4 climb FL320 descend FL280"), "both motions with no correction")
+end
