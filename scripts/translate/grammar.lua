@@ -1499,8 +1499,18 @@ local function written_forms(text, world)
   end
   -- "ff 2m": minutes after fast-forward's abbreviation (no metres of time)
   where("ff", "%f[%w]([Ff][Ff]%s+%d+%.?%d*)%s?[Mm]%f[%W]", "%1 min")
-  -- "whats" typed without its apostrophe is "what's" ("whats DERLA's position")
-  where("whats", "%f[%a]([Ww])[Hh][Aa][Tt][Ss]%f[%A]", "%1hat's")
+  -- a contraction written without its apostrophe ("whats DERLA's position", "once youre at 250"),
+  -- lexicon.apostrophe_dropped, is the contraction (its first letter's case kept)
+  where("%a%a%a", "%f[%a](%a)(%a%a+)%f[%A]", function(first, rest)
+    local spelled = lexicon.apostrophe_dropped[(first .. rest):lower()]
+    return spelled and first .. spelled:sub(2)
+  end)
+  -- "descend to FL 80 negative FL 90": "negative" straight before a level's, heading's or speed's name is the
+  -- correction, no sign of the value after it (set off by a comma, as "negative, FL90" is written)
+  where("negative", "%f[%a]([Nn][Ee][Gg][Aa][Tt][Ii][Vv][Ee])(%s+)(%a+)", function(neg, space, nx)
+    local n = nx:lower()
+    if n == "flight" or (G.value_name_set[n] and n ~= "vs" and n ~= "rate") then return neg .. "," .. space .. nx end
+  end)
   -- "realtime" written as one word
   where("realtime", "%f[%a]([Rr][Ee][Aa][Ll])([Tt][Ii][Mm][Ee])%f[%A]", "%1 %2")
   -- "v/s 2500 down": the vertical speed's abbreviation written with a slash
@@ -5241,12 +5251,13 @@ function G:trailing_fix(s)
     return name and { b = lead, e = e, name = name } or nil
   end
   if self:word(k, "it you") then k = self:skip_fillers(k + 1) end
-  -- ("fl100 when past WYP": typed short, "past" is passing)
-  if self:word(k, "passing passes reaching reaches overflying past") then
+  -- ("fl100 when past WYP": typed short, "past" is passing; "climb FL390 once you reach BURAM", "... when you
+  -- pass LOHRE": the verb's bare form after "you")
+  if self:word(k, "passing passes reaching reaches overflying past reach pass") then
     k = self:skip_fillers(k + 1)
-  elseif self:word(k, "has") and self:word(k + 1, "passed") then  -- ("once it has passed YHZ")
+  elseif self:word(k, "has have") and self:word(k + 1, "passed reached") then  -- ("once it has passed YHZ")
     k = self:skip_fillers(k + 2)
-  elseif self:word(k, "gets") and self:word(k + 1, "to") then
+  elseif self:word(k, "gets get") and self:word(k + 1, "to") then
     k = self:skip_fillers(k + 2)
   elseif not (self:word(k, "is it's") and self:word(k + 1, "at over")) then  -- ("once it is over BUMIL")
     return nil
@@ -6182,8 +6193,7 @@ function G:unexplained(s, n_before)
   for c = n_before + 1, #self.out do
     for _, n in ipairs(line_numbers(self.out[c])) do nums[#nums + 1] = n end
   end
-  local corrected = 0
-  for i = s.b, self:said("@correction") and s.e - 1 or 0 do if self:word(i, "@correction") then corrected = i end end
+  local corrected = self:last_correction(s) or 0
   local relative = self:word_in(s.b, s.e, "@relative @same_as @below @above")
   -- with no instruction word the first value with a unit is the instruction ("ezy45 fl120 7", "klm12 1500 fpm 9000")
   local opened = s.intent ~= "infer" and s.trig or nil
@@ -6307,6 +6317,11 @@ function G:dangling_correction()
   while opens > 1 and not (self.t[opens - 1].kind == "punct" and self.t[opens - 1].text ~= ",") do opens = opens - 1 end
   local aside = self:in_reason(first) and ((self.t[before].kind == "word" and self:declared(opens, before + 1))
     or self:word_in(1, first, "@correction") or self:word_in(1, first, SC_MARKERS))
+  -- (an apology straight after a correction's new value, "descend FL80 negative FL90 sorry", "heading 200,
+  -- correction, 220, sorry": it apologises for the value taken back, the new one stands)
+  local marker = before
+  while marker > 1 and not (self:word(marker, "@correction") or SC_MARKERS[self.words[marker]]) do marker = marker - 1 end
+  aside = aside or (marker > 1 and #self:quantities(marker + 1, first) > 0)
   if marked and first > 1 and not self:apology_after_remark(first, last) and not aside then
     self:need(string.format("You said '%s' with nothing after it. What is the corrected instruction?",
       self:raw(first, last + 1)))
@@ -6421,8 +6436,7 @@ function G:uncarried()
     for _, n in ipairs(all) do nums[#nums + 1] = n end
     for _, n in ipairs(timed) do times[#times + 1] = n end
   end
-  local corrected = 0
-  for i = 1, self:said("@correction") and #self.t or 0 do if self:word(i, "@correction") then corrected = i end end
+  local corrected = self:last_correction({ b = 1, e = #self.t + 1 }) or 0
   local first = 1
   -- (a word of direction or motion, "go higher to 36000" unread, opens the instructions as a verb does)
   while first <= #self.t and not self:intent_at(first) and not (self.t[first].kind == "word"
@@ -7991,10 +8005,10 @@ function G:unaccounted()
   -- ("PRF441 no descend FL090", "KLM12 heading 100 no turn left heading 120", "no left turn"): "no" straight before
   -- an instruction's verb or noun (lexicon.refusable_verbs; fillers or a turn's side between, no comma) may refuse
   -- it or take back what came before: asked, naming both readings, never read as either ("no, descend" and
-  -- "negative descend" are corrections)
+  -- "negative descend" are corrections, and so is "wait no descend" straight after a value, m:marker_after_value)
   for i = 1, #self.t do
     local t = self.t[i]
-    local v = t.text == "no" and i + 1
+    local v = t.text == "no" and not (self:word(i - 1, "wait") and self:marker_after_value(i)) and i + 1
     while v and self.t[v] and (self.t[v].filler or self:word(v, "@left @right")) do v = v + 1 end
     if v and self:word(v, "@refusable_verbs") and not self.noted[i] and not self:in_reason(i) then
       local said = self:raw(i + 1, v + 1)

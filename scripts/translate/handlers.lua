@@ -96,12 +96,16 @@ function m:motion_said(i, list, names)
   return not self:word(v, "@halted")
 end
 
+-- lexicon.self_correction.markers of one word, as a set (m:marker_after_value)
+local MARKER_WORDS = {}
+for _, w in ipairs(L.self_correction.markers) do if not w:find(" ") then MARKER_WORDS[w] = true end end
+
 function m:direction(s)
   local names = self:refs_in(s.b, s.e, "aircraft")
   local function said(i, list) return self:motion_said(i, list, names) end
   -- a direction said after a correction replaces the one before it ("climb FL260, correction, descend FL220")
-  for i = self:said("@correction") and s.e - 1 or 0, s.b, -1 do
-    if self:word(i, "@correction") then
+  for i = (self:said("@correction") or self:said(MARKER_WORDS)) and s.e - 1 or 0, s.b, -1 do
+    if self:word(i, "@correction") or self:marker_after_value(i) then
       for k = i + 1, s.e - 1 do
         if said(k, "@up") then return 1 end
         if said(k, "@down") then return -1 end
@@ -125,6 +129,18 @@ end
 -- or as the instruction's word ("go up, descend at 2000 fpm"); a verb after a level ("climb FL300 descend") is a word left over,
 -- asked by the accounting. Words noted as not simulated ("expect descent"), in a reason or of a motion stopped
 -- ("stop descent, climb FL250") move nothing.
+-- True when the word at i is a self-correction marker (lexicon.self_correction.markers, one word) closing a run of
+-- such markers and fillers said straight after a value, with no punctuation ("climb flight level three niner zero
+-- uh wait no descend ...", a recogniser's transcript): the value before it is taken back as after "correction".
+function m:marker_after_value(i)
+  if not MARKER_WORDS[self.words[i] or ""] or self:word(i + 1, MARKER_WORDS) then return false end
+  local k = i - 1
+  while k > 0 and self.t[k].kind == "word" and (self.t[k].filler or MARKER_WORDS[self.words[k]]) do k = k - 1 end
+  for _, q in ipairs(self:quantities(math.max(1, k - 6), k + 1)) do
+    if q.e == k + 1 then return true end
+  end
+  return false
+end
 function m:opposite_motions(b, e)
   -- (no climb's word or no descent's word said in the request: none to oppose)
   if not ((self:said(self.motion.up) or self:said("up")) and (self:said(self.motion.down) or self:said("down"))) then
@@ -137,7 +153,7 @@ function m:opposite_motions(b, e)
     if q.kind ~= "alt" then signs[q.b - 1], signs[q.e] = true, true end
   end
   for i = b, e - 1 do
-    if self:word(i, "@correction") then up, down = nil, nil end
+    if self:word(i, "@correction") or self:marker_after_value(i) then up, down = nil, nil end
     local sign = signs[i] or self.triggers[i]
     if not (last and i >= last.e and last.kind == "alt") then
       local u = self:motion_said(i, self.motion.up, names) or (sign and self:word(i, "up"))
@@ -2789,9 +2805,18 @@ end
 -- the plain ones), unless a correction is followed by a value of either
 -- kind ("flight level two four zero correction two six zero"): then the
 -- values after the last correction word.
-function m:corrected(cands, with_unit, plain, s)
+-- The last correction word of segment s ("correction", or a marker straight after a value: m:marker_after_value),
+-- else nil.
+function m:last_correction(s)
   local corr
-  for i = s.b, self:said("@correction") and s.e - 1 or 0 do if self:word(i, "@correction") then corr = i end end
+  local any = self:said("@correction") or self:said(MARKER_WORDS)
+  for i = s.b, any and s.e - 1 or 0 do
+    if self:word(i, "@correction") or self:marker_after_value(i) then corr = i end
+  end
+  return corr
+end
+function m:corrected(cands, with_unit, plain, s)
+  local corr = self:last_correction(s)
   if not corr then return cands end
   local later = {}
   for _, list in ipairs({ with_unit, plain }) do
@@ -2807,8 +2832,7 @@ end
 -- The value picked is taken (G:take): the leftover check knows it was read.
 function m:pick(c, s, repeated)
   if #c == 0 then return nil end
-  local corr
-  for i = s.b, self:said("@correction") and s.e - 1 or 0 do if self:word(i, "@correction") then corr = i end end
+  local corr = self:last_correction(s)
   if corr then
     for _, q in ipairs(c) do if q.b > corr then return self:take(q) end end
     return self:take(c[#c])
@@ -2852,14 +2876,26 @@ function m:level_given(q, id)
   end
   return nil
 end
+-- True when `ft` [ft] lies strictly between aircraft `id`'s altitude and the level this request cleared it to
+-- (its ALT line): a level it crosses on the way ("climb FL160 and when passing one hundred turn left" from FL90).
+function m:on_the_way(id, ft)
+  local a = self:state(id)
+  for _, c in ipairs(self.out) do
+    local who, to = c:match("^ALT (%S+) (%S+)")
+    local fl = to and to:match("^FL(%d+)$")
+    local cleared = fl and tonumber(fl) * 100 or tonumber(to or "")
+    if who == id and cleared and a and a.alt_ft and (ft - a.alt_ft) * (ft - cleared) < 0 then return true end
+  end
+  return false
+end
 -- words between the level and a speed's own word, part of the instruction ("when it passes FL130 drop the
 -- speed to 230", "... bring its speed back to 240")
 local SPEED_LEAD = { drop = true, bring = true, cut = true, take = true, pull = true, knock = true, put = true, the = true,
                      its = true, your = true, his = true, her = true, their = true }
 -- words between the level and a rate's own word, part of the instruction ("passing 150 reduce rate to 1000",
--- "leaving FL100 increase your rate to 2000")
+-- "leaving FL100 increase your rate to 2000", "after passing FL150 descend rate 1500": the rate's direction)
 local RATE_LEAD = { reduce = true, increase = true, decrease = true, the = true, its = true, your = true,
-                    his = true, her = true, their = true }
+                    his = true, her = true, their = true, descend = true, climb = true }
 -- who does it, between the level and any instruction ("when passing FL200 it shall reduce the speed to 220")
 local SUBJECT_LEAD = { it = true, he = true, she = true, they = true, you = true, shall = true, should = true,
                        will = true, can = true, must = true }
@@ -2967,7 +3003,10 @@ function m:at_altitude(s)
   end
   local ids = self:acids(s)
   if #ids == 0 then return nil end
-  if groupwise and ((self:state(ids[1]) or {}).alt_ft or 0) < L.groupwise_from_ft then return nil end
+  if groupwise and ((self:state(ids[1]) or {}).alt_ft or 0) < L.groupwise_from_ft
+      and not self:on_the_way(ids[1], groupwise) then
+    return nil
+  end
   if given and not self:level_given(q, ids[1]) then return nil end
   -- ("reduce speed 250, on reaching two five zero descend FL150": three digits alone that this request gave the
   -- aircraft as its speed [kt], and not as its level, are the speed reached: ATSPD; given as both, asked)

@@ -1921,6 +1921,14 @@ return function(H, f, compass)
     self.place_spans[#self.place_spans + 1] = { b = b, e = e }
   end
 
+  -- True when the lower-case word at i opens a name of one or two words that an airport noun closes before e
+  -- ("frankfurt airport", "san francisco airport" in a recogniser's lower case): the noun says what a capital
+  -- would have.
+  function m:named_airport_lower(i, e)
+    return (i + 1 < e and self:word(i + 1, "@airport_nouns"))
+      or (i + 2 < e and self.t[i + 1].kind == "word" and self:word(i + 2, "@airport_nouns"))
+  end
+
   function m:airport_named_in(b, e, named, placed, proper_only, nearby)
     local function proper(k)
       local t = self.t[k]
@@ -1933,7 +1941,8 @@ return function(H, f, compass)
       local short = #t.text < 4 and t.raw:match("^%u%l") ~= nil and i + 1 < e and proper(i + 1)
       if not self.u:used(i) and t.kind == "word" and t.alpha and (#t.text >= 4 or short) and not t.keyword and not t.filler
           and not t.number_word and not L.phonetic[t.text] and (not placed or self:word(i - 1, "@place_words"))
-          and (not proper_only or t.raw:match("^%u%l") ~= nil) and not (PREPOSITIONS[t.text] and t.raw:match("^%l")) then
+          and (not proper_only or t.raw:match("^%u%l") ~= nil or self:named_airport_lower(i, e))
+          and not (PREPOSITIONS[t.text] and t.raw:match("^%l")) then
         local nx, nx2 = self.t[i + 1], self.t[i + 2]
         local phrases = { short and { t.text .. " " .. nx.text, i + 2 } or { t.text, i + 1 } }
         if not short and nx and i + 1 < e and nx.kind == "word" then table.insert(phrases, 1, { t.text .. " " .. nx.text, i + 2 }) end

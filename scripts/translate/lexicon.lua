@@ -542,6 +542,16 @@ return {
                 -- (two letters swapped, or the vowels left out: "hgd 240", "sdp 270", "rdc 250 kts")
                 hgd = "heading", sdp = "speed", rdc = "reduce",
                 rod = "rate of descent", roc = "rate of climb" },
+  -- contractions a speech recogniser or a hurried typist writes without their apostrophe ("once youre at two
+  -- fifty", "weve got a conflict", "whats DERLA's position"), read as the contraction: only forms that are no
+  -- English word and no navaid's ident ("were", "well", "ill", "its", "lets", "hell", "shell", "wed", "id",
+  -- "wont" and "im", the IM NDBs, stay as written)
+  apostrophe_dropped = { youre = "you're", youve = "you've", youll = "you'll", youd = "you'd", weve = "we've",
+                         theyre = "they're", theyve = "they've", theyll = "they'll", ive = "i've", itll = "it'll",
+                         whats = "what's", thats = "that's", theres = "there's", wheres = "where's",
+                         heres = "here's", dont = "don't", doesnt = "doesn't", didnt = "didn't", cant = "can't",
+                         isnt = "isn't", arent = "aren't", wasnt = "wasn't", werent = "weren't", hasnt = "hasn't",
+                         havent = "haven't", couldnt = "couldn't", wouldnt = "wouldn't", shouldnt = "shouldn't" },
   -- controllers' typed abbreviations of instruction words (text ATC on the online networks), read as the
   -- words they stand for where a word beside them shows the instruction: `word`, the words read; `next` /
   -- `prev`, words one of which must be the next / the previous word ("#number": a value typed with digits,
@@ -679,8 +689,10 @@ return {
   level_condition = { "when", "once", "passing", "leaving", "reaching", "after" },
   -- words between such a level and the instruction word that waits for it, part of the instruction
   -- ("when passing FL90 fly heading 090", "after passing FL100 resume own navigation direct HEMEL", "when at
-  -- 12000 set speed 240")
-  condition_lead = { "fly", "turn", "proceed", "route", "resume", "own", "navigation", "then", "set" },
+  -- 12000 set speed 240", "once you're at 250 start down to FL100": a verb of starting before a level change's
+  -- "down" or "descending")
+  condition_lead = { "fly", "turn", "proceed", "route", "resume", "own", "navigation", "then", "set", "start",
+                     "begin" },
   -- before the level an aircraft leaves, said with the one it is cleared to ("leaving FL260 for FL200")
   level_left = { "leaving", "passing", "vacating" },
   -- the listener's convenience after "when you", "once you" ("when you get a sec", "once you have a moment",

@@ -14819,3 +14819,53 @@ do
   asked(ex("American 77, please double-check your altitude"), "a check is no level")
   check_eq(ex("American 77, double your altitude"), "ALT AAL77 24000")
 end
+
+-- Cycle 54 (f157): conditions as a speech recogniser writes them: a contraction without its apostrophe ("once
+-- youre at"), "start down" after a condition, a level said group-wise that the aircraft crosses on its way ("when
+-- passing one hundred"), "once you reach FIX" after its instruction, a rate's verb after a level passed
+do
+  local _, ex = scene({ "CRE AFR21 A320 49.0 2.5 090 FL120 280", "DEFWPT PONTA 49.0 3.0", "DEFWPT KOTAL 49.0 3.5",
+                        "ADDWPT AFR21 PONTA", "ADDWPT AFR21 KOTAL", "CRE EZY7 A319 48.5 3.0 180 FL90 250" })
+  check_eq(ex("air france two one slow to two six zero and once youre at two sixty start down to flight level eight zero"),
+    "SPD AFR21 260 ; ATSPD AFR21 260 ALT AFR21 FL80")
+  check_eq(ex("afr21 reduce 240 and when youre at 240 begin descending to FL90"),
+    "SPD AFR21 240 ; ATSPD AFR21 240 ALT AFR21 FL90")
+  check_eq(ex("theres traffic ahead, afr21 descend FL100"), "ALT AFR21 FL100")
+  check_eq(ex("ezy7 climb FL150 and when passing one hundred and twenty turn right heading 220"),
+    "ALT EZY7 FL150 ; ATALT EZY7 FL120 HDG EZY7 220 RIGHT")
+  -- a group-wise level the aircraft will not cross on its way from FL90 is asked, as before
+  asked(ex("ezy7 climb FL150 and when passing two hundred turn right heading 220"), "a level off the way")
+  asked(ex("ezy7 descend FL60 and when passing one hundred reduce 220"), "a level behind the aircraft")
+  check_eq(ex("afr21 descend FL100 once you reach ponta"), "AT AFR21 PONTA DO ALT AFR21 FL100")
+  check_eq(ex("afr21 reduce 250 when you pass kotal"), "AT AFR21 KOTAL DO SPD AFR21 250")
+  check_eq(ex("afr21 turn left heading 150 once you have passed PONTA"), "AT AFR21 PONTA DO HDG AFR21 150 LEFT")
+  asked(ex("afr21 descend FL100 once you reach it"), "no level cleared before 'reach it'")
+  check_eq(ex("afr21 turn left heading 200, when passing FL110 descend rate 1200"),
+    "HDG AFR21 200 LEFT ; ATALT AFR21 FL110 VS AFR21 -1200")
+end
+do
+  -- a city's airport said in a recogniser's lower case with its noun: "munich airport" is the airport; the city alone
+  -- in lower case, where navaids bear the name, is still asked
+  local _, ex = navscene({ "CRE DLH7 A320 48.60 10.80 010 FL110 250" }, "lower-case city airports")
+  if ex then
+    check_eq(ex("create lufthansa four five six a three twenty at munich airport heading one eight zero flight level "
+      .. "eight zero speed two fifty"), "CRE DLH456 A320 EDDM 180 FL80 250")
+    check_eq(ex("where is stuttgart airport"), "POS EDDS")
+    check_eq(ex("dlh7 set destination nuremberg airport"), "DEST DLH7 EDDN")
+    asked(ex("create DLH456 A320 at frankfurt heading 180 FL80 250 knots"), "a lower-case city that navaids bear")
+  end
+end
+do
+  -- corrections in a recogniser's transcript and non-native radiotelephony: "negative" before a level's name is the
+  -- correction, no sign; an apology after the corrected value; "wait no" straight after a value, no punctuation
+  local _, ex = scene({ "CRE AZA12 A320 42.0 12.0 090 FL120 280", "CRE SAS4 A320 42.5 12.5 270 FL300 280" })
+  check_eq(ex("AZA12 descend FL 70 negative FL 80 sorry"), "ALT AZA12 FL80")
+  check_eq(ex("AZA12 turn right heading 120 negative heading 140"), "HDG AZA12 140 RIGHT")
+  check_eq(ex("AZA12 reduce speed 220 correction 230 sorry"), "SPD AZA12 230")
+  asked(ex("AZA12 descend FL70 sorry"), "an apology with no correction before it")
+  check_eq(ex("sas four climb flight level three two zero uh wait no descend flight level two eight zero"),
+    "ALT SAS4 FL280")
+  -- "no" alone before a verb may refuse it: still asked
+  asked(ex("sas4 climb FL320 uh no descend FL280"), "a bare 'no' before a verb")
+  asked(ex("sas4 climb FL320 descend FL280"), "both motions with no correction")
+end
