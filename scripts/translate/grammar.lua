@@ -7447,10 +7447,11 @@ function G:described()
   local described, grouped = {}, {}
   for _, r in ipairs(self.refs) do
     if r.kind == "aircraft" and r.exists and not grouped[r.b] then
-      -- (a group: "X and Y are ...")
+      -- (a group: "X and Y are ...", "the X and the Y are ...")
       local k, group = r.e, { r }
-      while self:word(k, "and") and self:has_ref(k + 1, k + 2, "aircraft") do
-        local o = self:refs_in(k + 1, k + 2, "aircraft")[1]
+      local function next_at(x) return self:word(x, "the") and x + 1 or x end
+      while self:word(k, "and") and self:has_ref(next_at(k + 1), next_at(k + 1) + 1, "aircraft") do
+        local o = self:refs_in(next_at(k + 1), next_at(k + 1) + 1, "aircraft")[1]
         group[#group + 1], k, grouped[o.b] = o, o.e, true
       end
       -- ("RYR8 at FL210 is traffic": the aircraft's value said before the copula)
@@ -7478,7 +7479,9 @@ function G:described()
   for id, span in pairs(described) do
     local elsewhere, other_before = false, false
     for _, o in ipairs(self.refs) do
-      if o.kind == "aircraft" and o.name:upper() == id and (o.b < span.b or o.b >= span.e) then elsewhere = true end
+      if o.kind == "aircraft" and o.name:upper() == id and (o.b < span.b or o.b >= span.e) and not o.false_start then
+        elsewhere = true
+      end
       if o.kind == "aircraft" and o.b < span.b and not described[o.name:upper()] then other_before = true end
     end
     local values = {}
@@ -7492,7 +7495,9 @@ function G:described()
         if line:find("%f[%w]" .. id .. "%f[^%w]") then
           local own = false
           for _, v in ipairs(values) do own = own or line:find("%f[%d]" .. v .. "%f[^%d]") ~= nil end
-          if not own and not other_before then
+          if not own and self:given_to_named_after(line, id, span.e) then
+            kept = kept  -- (the named aircraft's instruction, not the described one's: left out)
+          elseif not own and not other_before then
             kept[#kept + 1] = line
           elseif not own then
             self.ask = string.format("I have %s, but %s was only described, not told to do anything. Which "
@@ -7530,6 +7535,23 @@ function G:described()
       end
     end
   end
+end
+
+-- True when command `line` of described aircraft `id` is given alike to another aircraft named by name after token
+-- e, not described, with no pronoun or quantifier after e that could take the described one in ("the Ryanair is
+-- close, put the Aer Lingus down to FL290": the instruction names its own aircraft; "..., descend it and DLH4"
+-- does not say so)
+function G:given_to_named_after(line, id, e)
+  if self:word_in(e, #self.t + 1, "it him her them both all each everyone everybody") then return false end
+  for _, o in ipairs(self.refs) do
+    local other = o.kind == "aircraft" and o.exists and o.b >= e and not o.false_start and o.name:upper()
+    if other and other ~= id then
+      for _, l in ipairs(self.out) do
+        if l:gsub("%f[%w]" .. other .. "%f[^%w]", id) == line and l ~= line then return true end
+      end
+    end
+  end
+  return false
 end
 
 -- Once the request is read, a word no part of the parse explains is a leftover: a negation or a
@@ -8482,6 +8504,57 @@ function G:aircraft_kept()
       end
     end
   end
+end
+
+-- "..., put the Aer Lingus down to FL290 and leave the Ryanair be", "..., keep the easyJet as it is": an aircraft
+-- told to be left as it flies (lexicon.aircraft_left_alone: a verb opening a clause, the aircraft, words of
+-- leaving to the clause's end), with an instruction to another aircraft said elsewhere, is no instruction and not
+-- instructed (r.false_start); its words are marked used. Named in an instruction of its own elsewhere ("climb
+-- the Ryanair FL300 and leave the Ryanair be") it is left to the parse, which asks.
+G.aircraft_left_sets = { verbs = set_of(lexicon.aircraft_left_alone.verbs),
+  words = set_of(lexicon.aircraft_left_alone.words) }
+function G:aircraft_left_alone()
+  local K = G.aircraft_left_sets
+  if not self:said(K.verbs) then return end
+  for _, r in ipairs(self.refs) do
+    local v = self:word(r.b - 1, "the") and r.b - 2 or r.b - 1
+    local opens = v >= 1 and self:word(v, K.verbs)
+      and (v == self:skip_fillers(1, false) or self.t[v - 1].kind == "punct" or self:word(v - 1, "and"))
+    if r.kind == "aircraft" and r.exists and opens then
+      local e = r.e
+      while self.t[e] and (self.t[e].filler or self:word(e, K.words)) do e = e + 1 end
+      local other, again = false, false
+      for _, o in ipairs(self.refs) do
+        if o.kind == "aircraft" and o.exists and (o.e <= v or o.b >= e) then
+          if o.name ~= r.name then other = true else again = true end
+        end
+      end
+      if e > r.e and (not self.t[e] or self.t[e].kind == "punct") and other
+          and (self:any_instruction_in(1, v) or self:any_instruction_in(e, #self.t + 1))
+          and not (again and not self:only_described(r.name, v, e)) then
+        self:mark_used(v, e)
+        r.false_start = true
+      end
+    end
+  end
+end
+
+-- True when every reference to aircraft `name` outside [b, e) is the subject of a verb of lexicon.described, alone
+-- or in a group joined by "and" ("the Ryanair and the Aer Lingus are crossing")
+function G:only_described(name, b, e)
+  for _, o in ipairs(self.refs) do
+    if o.kind == "aircraft" and o.name == name and (o.e <= b or o.b >= e) then
+      local k = o.e
+      while self:word(k, "and") do
+        local x = self:word(k + 1, "the") and k + 2 or k + 1
+        local nx = self:refs_in(x, x + 1, "aircraft")[1]
+        if not nx then break end
+        k = nx.e
+      end
+      if not self:word(k, "@described") then return false end
+    end
+  end
+  return true
 end
 
 G.kept_sets = {}
@@ -11541,6 +11614,7 @@ function M.translate(text, world)
   g:replaced_values()
   g:kept_values()
   g:aircraft_kept()
+  g:aircraft_left_alone()
   g:kept_present()
   g:infinitive_after_condition()
   g:subject_after_condition()

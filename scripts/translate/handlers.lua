@@ -2082,7 +2082,10 @@ function m:bearing_refs()
         ids, e = compared_group(self, i + 1)
         local v = e and (self:word(e, "that which") and self:word(e + 1, "is") and e + 2 or e)
         if v and self:word(v, "@compass_verbs") then
-          point, e = point_said(self, self:word(v + 1, "due") and v + 2 or v + 1)
+          local k = v + 1
+          while k < v + 3 and self:word(k, "@compass_particles") do k = k + 1 end
+          if self:word(k, "to towards") and self:word(k + 1, "the") then k = k + 2 end  -- ("out to the west")
+          point, e = point_said(self, k)
         end
       end
     end

@@ -3391,9 +3391,19 @@ return function(H, f, compass)
         -- ("update interval 2 s", "the detection interval could be set to 0.5 seconds")
         if q.kind == "time" and (self:word(q.b - 1, "every each interval")
             or (self:word(s.trig + 1, "interval") and q.b > s.trig)) then
-          if self:on_off(s) >= 0 then self:emit("ASAS " .. on_off(self, s)) end
+          -- ("set detection interval on 2 seconds": an "on" straight before the value, no other switching word, says
+          -- "to", no switch)
+          local to = self:word(q.b - 1, "on") and not self:word_in(s.b, q.b - 1, "@on @off")
+            and not self:word_in(q.b, s.e, "@on @off") and q.b - 1
+          if to then self:explain(to, to + 1)
+          elseif self:on_off(s) >= 0 then self:emit("ASAS " .. on_off(self, s)) end
           return self:emit("DT ASAS " .. f.num(self:take(q).value))
         end
+      end
+      -- ("set the detection interval on": the interval named with no time, the "on" its missing value's "to")
+      if self:word(s.trig + 1, "interval") then
+        self.ask = "What interval should conflict detection run at (seconds)?"
+        return
       end
     end
     -- "detection statebased", "state-based detection": CDMETHOD's method, which is on

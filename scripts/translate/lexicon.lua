@@ -1248,6 +1248,13 @@ return {
                     words = { "where", "he", "she", "it", "they", "is", "are", "on", "his", "her", "its", "their",
                               "the", "route", "as", "speed", "level", "heading", "altitude", "present", "current",
                               "own", "for", "now", "unchanged", "same", "at", "planned", "course" } },
+  -- an aircraft that a verb of `verbs` tells to be left as it flies, in a clause of its own beside instructions to
+  -- others ("..., and leave the Ryanair be", "..., let the KLM be", "..., keep the easyJet as it is", "leave KLM12
+  -- alone"): the verb, "the" or not, the aircraft, then at least one of `words` to the clause's end
+  -- (G:aircraft_left_alone)
+  aircraft_left_alone = { verbs = { "leave", "let", "keep" },
+                          words = { "be", "alone", "as", "it", "is", "where", "he", "she", "they", "are", "like",
+                                    "that", "unchanged", "untouched", "for", "now" } },
   -- a remark that a place named is on the aircraft's route (G:route_remarks): ", which I believe is on its
   -- planned route", "? I believe BOSIO is on its route.", "? That is the Viseu beacon, on its planned route."; a
   -- clause or sentence of these words, the places named and a name before one of `place_nouns`
@@ -1354,6 +1361,9 @@ return {
   -- verbs of going before a compass point that is the heading ("flying south")
   compass_verbs = { "flying", "heading", "going", "tracking", "travelling", "traveling", "moving", "pointing",
       "facing", "flies", "headed" },
+  -- words between a verb of going and its compass point that leave the point as said ("the Shamrock heading out
+  -- west", "the one going due north", "the Ryanair flying back east", "the Embraer heading off south")
+  compass_particles = { "due", "out", "off", "back", "away" },
   -- words that make a compass point a direction to lean toward, not a heading ("more to the north", "a bit
   -- further east", "slightly west"): no heading value, asked
   vague_direction = { "more", "further", "farther", "slightly", "bit", "little", "somewhat", "something" },

@@ -2155,6 +2155,9 @@ return function(intent, rule, words)
   -- "give the position of the Canberra VOR": the same asked with no one named to give it to
   rule { "give", "pos", next = "the", near = { 2, "position positions" } }
   -- "are you able (for) FL370", "confirm on heading south": a question to the pilot, not a clearance
+  -- "would you be able to turn the Channex ...", "will you be able to delete it": the operator asked, politely, to
+  -- do what the verb after "to" says (no question to the pilot: "be" after "you" frames a request)
+  rule { "able", false, prev = { 1, "be" }, next = "to", when = function(g, i) return g:word(i - 2, "you") end }
   rule { "able", "pos", prev = { 2, "you" } }
   rule { "confirm", "pos", near = { 3, "heading altitude level speed mach" } }
   -- "verify AC002 state (alt, spd, hdg)", "verify its altitude": the aircraft's values asked for
