@@ -3492,6 +3492,49 @@ function G:limit_released()
   end
 end
 
+-- "CSA6AT descend 5000 feet, he goes to Mosnov": where the aircraft named before goes, told in a clause of its own
+-- after an instruction (lexicon.destination_told), is a remark when the place (one to three words to the clause's
+-- end: an ident, or an airport's name) is on that aircraft's route or its destination: set aside, nothing set.
+-- Another place is left to the instructions (a new destination may be meant).
+G.destination_told_sets = {}
+for k, list in pairs(lexicon.destination_told) do G.destination_told_sets[k] = set_of(list) end
+function G:destination_told()
+  local D = G.destination_told_sets
+  if not (self:said(D.subjects) and self:said(D.motion)) then return end
+  for b = 2, #self.t - 2 do
+    local opens = self.t[b - 1].kind == "punct" or (self:word(b - 1, "and") and b > 2 and self.t[b - 2].kind == "punct")
+    if opens and self:word(b, D.subjects) then
+      local k, moved = b + 1, false
+      while self:word(k, D.verbs) do
+        moved = moved or self:word(k, D.motion)
+        k = k + 1
+      end
+      local e = k + 1
+      while e <= #self.t and e < k + 4 and self.t[e].kind == "word" and self.t[e].raw:match("^%u") do e = e + 1 end
+      local id
+      for _, r in ipairs(self.refs) do
+        if r.kind == "aircraft" and r.exists and r.e <= b then id = r.name end
+      end
+      local a = id and self:state(id)
+      if moved and self:word(k, D.to) and e > k + 1 and (e > #self.t or self.t[e].kind == "punct") and a
+          and self:any_instruction_in(1, b) and not self:has_ref(b, e, "aircraft") then
+        local held = {}
+        for _, x in ipairs(a.route or {}) do held[x:upper()] = true end
+        if a.dest and a.dest ~= "" then held[a.dest:upper()] = true end
+        local phrase = self:raw(k + 1, e)
+        local w, found = self.world, held[phrase:upper()] == true
+        for _, list in ipairs({ w.airports_named and w.airports_named(phrase) or {},
+            w.airports_with_words and a.lat and w.airports_with_words(phrase, a.lat, a.lon, lexicon.navaid_range_nm) or {},
+            w.airports_of_city and w.airports_of_city(phrase) or {},
+            w.airports_named and lexicon.city_airports[phrase:lower()] and w.airports_named(lexicon.city_airports[phrase:lower()]) or {} }) do
+          for _, x in ipairs(list) do found = found or held[x:upper()] == true end
+        end
+        if found then self:set_aside(b, e - 1) end
+      end
+    end
+  end
+end
+
 function G:route_remarks()
   local R = G.route_remark_sets
   if not self:said(R.route_nouns) then return end
@@ -11604,6 +11647,7 @@ function M.translate(text, world)
     end
   end
   g:route_remarks()
+  g:destination_told()
   g:onward_remark()
   g:limit_released()
   local note = g:not_simulated()

@@ -3476,6 +3476,9 @@ return function(H, f, compass)
       described = described or (icao ~= nil and #self:airline_fleet(icao, codes) > 0)
     end
     for _, u in ipairs(self.type_unresolved or {}) do described = described or (u.b >= s.b and u.b < s.e) end
+    -- ("where's the Belfast City arrival?": a place named before a noun of lexicon.described_places.before describes
+    -- an aircraft, G:described_place; never the place shown)
+    for i = s.b, no_aircraft and not described and s.e - 1 or 0 do described = described or self:described_place(i) ~= nil end
     named = named or (no_aircraft and not described and not doing and self:place_by_name(s.b, s.e))
     if named then return self:emit("POS " .. named) end
     if kind_said and no_aircraft then return self:need("Which navaid do you mean? Please give its identifier.") end

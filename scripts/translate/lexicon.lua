@@ -1255,6 +1255,16 @@ return {
   aircraft_left_alone = { verbs = { "leave", "let", "keep" },
                           words = { "be", "alone", "as", "it", "is", "where", "he", "she", "they", "are", "like",
                                     "that", "unchanged", "untouched", "for", "now" } },
+  -- a remark where the aircraft named before goes, in a clause of its own after its instruction ("descend 5000
+  -- feet, he goes to Mosnov", "..., it's going to Modlin", "..., she flies to LKMT"): a pronoun of
+  -- `subjects`, words of `verbs` (one of `motion` among them), one of `to`, then the place to the clause's end
+  -- (G:destination_told)
+  destination_told = { subjects = { "he", "she", "it", "they", "he's", "she's", "it's", "they're" },
+                       verbs = { "goes", "go", "going", "flies", "fly", "flying", "heads", "heading", "is", "are",
+                                 "'s", "continues", "continuing", "proceeds", "proceeding" },
+                       motion = { "goes", "go", "going", "flies", "fly", "flying", "heads", "heading", "continues",
+                                  "continuing", "proceeds", "proceeding" },
+                       to = { "to", "towards", "toward", "for" } },
   -- a remark that a place named is on the aircraft's route (G:route_remarks): ", which I believe is on its
   -- planned route", "? I believe BOSIO is on its route.", "? That is the Viseu beacon, on its planned route."; a
   -- clause or sentence of these words, the places named and a name before one of `place_nouns`

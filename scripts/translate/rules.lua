@@ -1782,6 +1782,15 @@ return function(intent, rule, words)
 
   -- information and repositioning
   rule { "where", false, near = { 5, "route" } }  -- "show me where its route goes": the route is listed
+  -- "where is the Shamrock routing?", "show me where KLM12 is routed", "where's the Speedbird going next?": the
+  -- route asked (the question's verb, or "next" after a verb of going, within the seven words after "where")
+  rule { "where where's wheres", "listrte", when = function(g, i)
+    local e = math.min(#g.t + 1, i + 8)
+    local k = g:find_word(i + 1, e, "routing routed")
+    local n = g:find_word(i + 1, e, "next")
+    return (k < e or (n < e and g:word_in(i + 1, n, "going heading headed off flying"))) and g:has_ref(i + 1, e, "aircraft")
+      and #g:quantities(i, #g.t + 1) == 0
+  end }
   -- "where is the Air Portugal going?", "where's TAP447 headed to": the destination asked, not the
   -- position; the question opens the request and ends with its verb ("where is UAL57 going to cross
   -- GIPNO?" and "too high for where it's going" are no such question)
