@@ -2031,7 +2031,7 @@ end
 
 -- The compass point said from token k: one word ("south", "southwest"), two or three with or without hyphens
 -- between ("south-east", "north north-east"); its degrees (0 for north) and the token after it, or nil.
-local function point_said(self, k)
+function m:point_said(k)
   local words, last = {}, nil
   while #words < 3 and self.t[k] and (self.t[k].text == "-" and #words > 0 or L.compass[self.t[k].text]) do
     if self.t[k].text ~= "-" then words[#words + 1], last = self.t[k].text, k end
@@ -2085,7 +2085,7 @@ function m:bearing_refs()
           local k = v + 1
           while k < v + 3 and self:word(k, "@compass_particles") do k = k + 1 end
           if self:word(k, "to towards") and self:word(k + 1, "the") then k = k + 2 end  -- ("out to the west")
-          point, e = point_said(self, k)
+          point, e = self:point_said(k)
         end
       end
     end

@@ -448,15 +448,16 @@ return function(H, f, compass)
     -- "westbound", "on a northerly heading", "flying south": a compass point as the heading (not "10 nm
     -- north of ...", a position; not "northwards", a way to lean that names no heading); with a heading
     -- said, one within 90 degrees of it describes it ("an eastbound, ... heading 080")
+    -- (after a verb of going, the point of one to three words: "going north-east" is 045, not north)
     for i = s.b, s.e - 1 do
       local t = self.t[i]
-      local point = t.kind == "word" and not self:word(i + 1, "of")
-        and (t.text:match("^(%a+)bound$") or t.text:match("^(%a+)erly$")
-          or (self:word(i - 1, "@compass_verbs") and t.text))
-      local c = point and not points_back[i] and L.compass[point]
+      local point = t.kind == "word" and (t.text:match("^(%a+)bound$") or t.text:match("^(%a+)erly$"))
+      local c, e = point and L.compass[point], i + 1
+      if not point and t.kind == "word" and self:word(i - 1, "@compass_verbs") then c, e = self:point_said(i) end
+      c = c and e and not self:word(e, "of") and not points_back[i] and c
       if c and (not hdg or math.abs((c - hdg + 180) % 360 - 180) < 90) then
         hdg = hdg or c
-        self:explain(i, i + 1)
+        self:explain(i, e)
       end
     end
     -- "the same heading, level and speed as KL204", "same FL as WZZ1234"
