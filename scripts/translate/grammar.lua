@@ -3589,6 +3589,49 @@ function G:limit_released()
   end
 end
 
+-- "CSA6AT descend 5000 feet, he goes to Mosnov": where the aircraft named before goes, told in a clause of its own
+-- after an instruction (lexicon.destination_told), is a remark when the place (one to three words to the clause's
+-- end: an ident, or an airport's name) is on that aircraft's route or its destination: set aside, nothing set.
+-- Another place is left to the instructions (a new destination may be meant).
+G.destination_told_sets = {}
+for k, list in pairs(lexicon.destination_told) do G.destination_told_sets[k] = set_of(list) end
+function G:destination_told()
+  local D = G.destination_told_sets
+  if not (self:said(D.subjects) and self:said(D.motion)) then return end
+  for b = 2, #self.t - 2 do
+    local opens = self.t[b - 1].kind == "punct" or (self:word(b - 1, "and") and b > 2 and self.t[b - 2].kind == "punct")
+    if opens and self:word(b, D.subjects) then
+      local k, moved = b + 1, false
+      while self:word(k, D.verbs) do
+        moved = moved or self:word(k, D.motion)
+        k = k + 1
+      end
+      local e = k + 1
+      while e <= #self.t and e < k + 4 and self.t[e].kind == "word" and self.t[e].raw:match("^%u") do e = e + 1 end
+      local id
+      for _, r in ipairs(self.refs) do
+        if r.kind == "aircraft" and r.exists and r.e <= b then id = r.name end
+      end
+      local a = id and self:state(id)
+      if moved and self:word(k, D.to) and e > k + 1 and (e > #self.t or self.t[e].kind == "punct") and a
+          and self:any_instruction_in(1, b) and not self:has_ref(b, e, "aircraft") then
+        local held = {}
+        for _, x in ipairs(a.route or {}) do held[x:upper()] = true end
+        if a.dest and a.dest ~= "" then held[a.dest:upper()] = true end
+        local phrase = self:raw(k + 1, e)
+        local w, found = self.world, held[phrase:upper()] == true
+        for _, list in ipairs({ w.airports_named and w.airports_named(phrase) or {},
+            w.airports_with_words and a.lat and w.airports_with_words(phrase, a.lat, a.lon, lexicon.navaid_range_nm) or {},
+            w.airports_of_city and w.airports_of_city(phrase) or {},
+            w.airports_named and lexicon.city_airports[phrase:lower()] and w.airports_named(lexicon.city_airports[phrase:lower()]) or {} }) do
+          for _, x in ipairs(list) do found = found or held[x:upper()] == true end
+        end
+        if found then self:set_aside(b, e - 1) end
+      end
+    end
+  end
+end
+
 function G:route_remarks()
   local R = G.route_remark_sets
   if not self:said(R.route_nouns) then return end
@@ -7597,10 +7640,11 @@ function G:described()
   local described, grouped = {}, {}
   for _, r in ipairs(self.refs) do
     if r.kind == "aircraft" and r.exists and not grouped[r.b] then
-      -- (a group: "X and Y are ...")
+      -- (a group: "X and Y are ...", "the X and the Y are ...")
       local k, group = r.e, { r }
-      while self:word(k, "and") and self:has_ref(k + 1, k + 2, "aircraft") do
-        local o = self:refs_in(k + 1, k + 2, "aircraft")[1]
+      local function next_at(x) return self:word(x, "the") and x + 1 or x end
+      while self:word(k, "and") and self:has_ref(next_at(k + 1), next_at(k + 1) + 1, "aircraft") do
+        local o = self:refs_in(next_at(k + 1), next_at(k + 1) + 1, "aircraft")[1]
         group[#group + 1], k, grouped[o.b] = o, o.e, true
       end
       -- ("RYR8 at FL210 is traffic": the aircraft's value said before the copula)
@@ -7628,7 +7672,9 @@ function G:described()
   for id, span in pairs(described) do
     local elsewhere, other_before = false, false
     for _, o in ipairs(self.refs) do
-      if o.kind == "aircraft" and o.name:upper() == id and (o.b < span.b or o.b >= span.e) then elsewhere = true end
+      if o.kind == "aircraft" and o.name:upper() == id and (o.b < span.b or o.b >= span.e) and not o.false_start then
+        elsewhere = true
+      end
       if o.kind == "aircraft" and o.b < span.b and not described[o.name:upper()] then other_before = true end
     end
     local values = {}
@@ -7642,7 +7688,9 @@ function G:described()
         if line:find("%f[%w]" .. id .. "%f[^%w]") then
           local own = false
           for _, v in ipairs(values) do own = own or line:find("%f[%d]" .. v .. "%f[^%d]") ~= nil end
-          if not own and not other_before then
+          if not own and self:given_to_named_after(line, id, span.e) then
+            kept = kept  -- (the named aircraft's instruction, not the described one's: left out)
+          elseif not own and not other_before then
             kept[#kept + 1] = line
           elseif not own then
             self.ask = string.format("I have %s, but %s was only described, not told to do anything. Which "
@@ -7680,6 +7728,23 @@ function G:described()
       end
     end
   end
+end
+
+-- True when command `line` of described aircraft `id` is given alike to another aircraft named by name after token
+-- e, not described, with no pronoun or quantifier after e that could take the described one in ("the Ryanair is
+-- close, put the Aer Lingus down to FL290": the instruction names its own aircraft; "..., descend it and DLH4"
+-- does not say so)
+function G:given_to_named_after(line, id, e)
+  if self:word_in(e, #self.t + 1, "it him her them both all each everyone everybody") then return false end
+  for _, o in ipairs(self.refs) do
+    local other = o.kind == "aircraft" and o.exists and o.b >= e and not o.false_start and o.name:upper()
+    if other and other ~= id then
+      for _, l in ipairs(self.out) do
+        if l:gsub("%f[%w]" .. other .. "%f[^%w]", id) == line and l ~= line then return true end
+      end
+    end
+  end
+  return false
 end
 
 -- Once the request is read, a word no part of the parse explains is a leftover: a negation or a
@@ -8632,6 +8697,57 @@ function G:aircraft_kept()
       end
     end
   end
+end
+
+-- "..., put the Aer Lingus down to FL290 and leave the Ryanair be", "..., keep the easyJet as it is": an aircraft
+-- told to be left as it flies (lexicon.aircraft_left_alone: a verb opening a clause, the aircraft, words of
+-- leaving to the clause's end), with an instruction to another aircraft said elsewhere, is no instruction and not
+-- instructed (r.false_start); its words are marked used. Named in an instruction of its own elsewhere ("climb
+-- the Ryanair FL300 and leave the Ryanair be") it is left to the parse, which asks.
+G.aircraft_left_sets = { verbs = set_of(lexicon.aircraft_left_alone.verbs),
+  words = set_of(lexicon.aircraft_left_alone.words) }
+function G:aircraft_left_alone()
+  local K = G.aircraft_left_sets
+  if not self:said(K.verbs) then return end
+  for _, r in ipairs(self.refs) do
+    local v = self:word(r.b - 1, "the") and r.b - 2 or r.b - 1
+    local opens = v >= 1 and self:word(v, K.verbs)
+      and (v == self:skip_fillers(1, false) or self.t[v - 1].kind == "punct" or self:word(v - 1, "and"))
+    if r.kind == "aircraft" and r.exists and opens then
+      local e = r.e
+      while self.t[e] and (self.t[e].filler or self:word(e, K.words)) do e = e + 1 end
+      local other, again = false, false
+      for _, o in ipairs(self.refs) do
+        if o.kind == "aircraft" and o.exists and (o.e <= v or o.b >= e) then
+          if o.name ~= r.name then other = true else again = true end
+        end
+      end
+      if e > r.e and (not self.t[e] or self.t[e].kind == "punct") and other
+          and (self:any_instruction_in(1, v) or self:any_instruction_in(e, #self.t + 1))
+          and not (again and not self:only_described(r.name, v, e)) then
+        self:mark_used(v, e)
+        r.false_start = true
+      end
+    end
+  end
+end
+
+-- True when every reference to aircraft `name` outside [b, e) is the subject of a verb of lexicon.described, alone
+-- or in a group joined by "and" ("the Ryanair and the Aer Lingus are crossing")
+function G:only_described(name, b, e)
+  for _, o in ipairs(self.refs) do
+    if o.kind == "aircraft" and o.name == name and (o.e <= b or o.b >= e) then
+      local k = o.e
+      while self:word(k, "and") do
+        local x = self:word(k + 1, "the") and k + 2 or k + 1
+        local nx = self:refs_in(x, x + 1, "aircraft")[1]
+        if not nx then break end
+        k = nx.e
+      end
+      if not self:word(k, "@described") then return false end
+    end
+  end
+  return true
 end
 
 G.kept_sets = {}
@@ -11718,6 +11834,7 @@ function M.translate(text, world)
     end
   end
   g:route_remarks()
+  g:destination_told()
   g:onward_remark()
   g:limit_released()
   local note = g:not_simulated()
@@ -11728,6 +11845,7 @@ function M.translate(text, world)
   g:replaced_values()
   g:kept_values()
   g:aircraft_kept()
+  g:aircraft_left_alone()
   g:kept_present()
   g:infinitive_after_condition()
   g:subject_after_condition()

@@ -2109,7 +2109,7 @@ end
 
 -- The compass point said from token k: one word ("south", "southwest"), two or three with or without hyphens
 -- between ("south-east", "north north-east"); its degrees (0 for north) and the token after it, or nil.
-local function point_said(self, k)
+function m:point_said(k)
   local words, last = {}, nil
   while #words < 3 and self.t[k] and (self.t[k].text == "-" and #words > 0 or L.compass[self.t[k].text]) do
     if self.t[k].text ~= "-" then words[#words + 1], last = self.t[k].text, k end
@@ -2160,7 +2160,10 @@ function m:bearing_refs()
         ids, e = compared_group(self, i + 1)
         local v = e and (self:word(e, "that which") and self:word(e + 1, "is") and e + 2 or e)
         if v and self:word(v, "@compass_verbs") then
-          point, e = point_said(self, self:word(v + 1, "due") and v + 2 or v + 1)
+          local k = v + 1
+          while k < v + 3 and self:word(k, "@compass_particles") do k = k + 1 end
+          if self:word(k, "to towards") and self:word(k + 1, "the") then k = k + 2 end  -- ("out to the west")
+          point, e = self:point_said(k)
         end
       end
     end

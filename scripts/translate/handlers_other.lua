@@ -448,15 +448,16 @@ return function(H, f, compass)
     -- "westbound", "on a northerly heading", "flying south": a compass point as the heading (not "10 nm
     -- north of ...", a position; not "northwards", a way to lean that names no heading); with a heading
     -- said, one within 90 degrees of it describes it ("an eastbound, ... heading 080")
+    -- (after a verb of going, the point of one to three words: "going north-east" is 045, not north)
     for i = s.b, s.e - 1 do
       local t = self.t[i]
-      local point = t.kind == "word" and not self:word(i + 1, "of")
-        and (t.text:match("^(%a+)bound$") or t.text:match("^(%a+)erly$")
-          or (self:word(i - 1, "@compass_verbs") and t.text))
-      local c = point and not points_back[i] and L.compass[point]
+      local point = t.kind == "word" and (t.text:match("^(%a+)bound$") or t.text:match("^(%a+)erly$"))
+      local c, e = point and L.compass[point], i + 1
+      if not point and t.kind == "word" and self:word(i - 1, "@compass_verbs") then c, e = self:point_said(i) end
+      c = c and e and not self:word(e, "of") and not points_back[i] and c
       if c and (not hdg or math.abs((c - hdg + 180) % 360 - 180) < 90) then
         hdg = hdg or c
-        self:explain(i, i + 1)
+        self:explain(i, e)
       end
     end
     -- "the same heading, level and speed as KL204", "same FL as WZZ1234"
@@ -3409,9 +3410,19 @@ return function(H, f, compass)
         -- ("update interval 2 s", "the detection interval could be set to 0.5 seconds")
         if q.kind == "time" and (self:word(q.b - 1, "every each interval")
             or (self:word(s.trig + 1, "interval") and q.b > s.trig)) then
-          if self:on_off(s) >= 0 then self:emit("ASAS " .. on_off(self, s)) end
+          -- ("set detection interval on 2 seconds": an "on" straight before the value, no other switching word, says
+          -- "to", no switch)
+          local to = self:word(q.b - 1, "on") and not self:word_in(s.b, q.b - 1, "@on @off")
+            and not self:word_in(q.b, s.e, "@on @off") and q.b - 1
+          if to then self:explain(to, to + 1)
+          elseif self:on_off(s) >= 0 then self:emit("ASAS " .. on_off(self, s)) end
           return self:emit("DT ASAS " .. f.num(self:take(q).value))
         end
+      end
+      -- ("set the detection interval on": the interval named with no time, the "on" its missing value's "to")
+      if self:word(s.trig + 1, "interval") then
+        self.ask = "What interval should conflict detection run at (seconds)?"
+        return
       end
     end
     -- "detection statebased", "state-based detection": CDMETHOD's method, which is on
@@ -3484,6 +3495,9 @@ return function(H, f, compass)
       described = described or (icao ~= nil and #self:airline_fleet(icao, codes) > 0)
     end
     for _, u in ipairs(self.type_unresolved or {}) do described = described or (u.b >= s.b and u.b < s.e) end
+    -- ("where's the Belfast City arrival?": a place named before a noun of lexicon.described_places.before describes
+    -- an aircraft, G:described_place; never the place shown)
+    for i = s.b, no_aircraft and not described and s.e - 1 or 0 do described = described or self:described_place(i) ~= nil end
     named = named or (no_aircraft and not described and not doing and self:place_by_name(s.b, s.e))
     if named then return self:emit("POS " .. named) end
     if kind_said and no_aircraft then return self:need("Which navaid do you mean? Please give its identifier.") end

@@ -1278,6 +1278,23 @@ return {
                     words = { "where", "he", "she", "it", "they", "is", "are", "on", "his", "her", "its", "their",
                               "the", "route", "as", "speed", "level", "heading", "altitude", "present", "current",
                               "own", "for", "now", "unchanged", "same", "at", "planned", "course" } },
+  -- an aircraft that a verb of `verbs` tells to be left as it flies, in a clause of its own beside instructions to
+  -- others ("..., and leave the Ryanair be", "..., let the KLM be", "..., keep the easyJet as it is", "leave KLM12
+  -- alone"): the verb, "the" or not, the aircraft, then at least one of `words` to the clause's end
+  -- (G:aircraft_left_alone)
+  aircraft_left_alone = { verbs = { "leave", "let", "keep" },
+                          words = { "be", "alone", "as", "it", "is", "where", "he", "she", "they", "are", "like",
+                                    "that", "unchanged", "untouched", "for", "now" } },
+  -- a remark where the aircraft named before goes, in a clause of its own after its instruction ("descend 5000
+  -- feet, he goes to Mosnov", "..., it's going to Modlin", "..., she flies to LKMT"): a pronoun of
+  -- `subjects`, words of `verbs` (one of `motion` among them), one of `to`, then the place to the clause's end
+  -- (G:destination_told)
+  destination_told = { subjects = { "he", "she", "it", "they", "he's", "she's", "it's", "they're" },
+                       verbs = { "goes", "go", "going", "flies", "fly", "flying", "heads", "heading", "is", "are",
+                                 "'s", "continues", "continuing", "proceeds", "proceeding" },
+                       motion = { "goes", "go", "going", "flies", "fly", "flying", "heads", "heading", "continues",
+                                  "continuing", "proceeds", "proceeding" },
+                       to = { "to", "towards", "toward", "for" } },
   -- a remark that a place named is on the aircraft's route (G:route_remarks): ", which I believe is on its
   -- planned route", "? I believe BOSIO is on its route.", "? That is the Viseu beacon, on its planned route."; a
   -- clause or sentence of these words, the places named and a name before one of `place_nouns`
@@ -1384,6 +1401,9 @@ return {
   -- verbs of going before a compass point that is the heading ("flying south")
   compass_verbs = { "flying", "heading", "going", "tracking", "travelling", "traveling", "moving", "pointing",
       "facing", "flies", "headed" },
+  -- words between a verb of going and its compass point that leave the point as said ("the Shamrock heading out
+  -- west", "the one going due north", "the Ryanair flying back east", "the Embraer heading off south")
+  compass_particles = { "due", "out", "off", "back", "away" },
   -- words that make a compass point a direction to lean toward, not a heading ("more to the north", "a bit
   -- further east", "slightly west"): no heading value, asked
   vague_direction = { "more", "further", "farther", "slightly", "bit", "little", "somewhat", "something" },

@@ -1804,6 +1804,15 @@ return function(intent, rule, words)
 
   -- information and repositioning
   rule { "where", false, near = { 5, "route" } }  -- "show me where its route goes": the route is listed
+  -- "where is the Shamrock routing?", "show me where KLM12 is routed", "where's the Speedbird going next?": the
+  -- route asked (the question's verb, or "next" after a verb of going, within the seven words after "where")
+  rule { "where where's wheres", "listrte", when = function(g, i)
+    local e = math.min(#g.t + 1, i + 8)
+    local k = g:find_word(i + 1, e, "routing routed")
+    local n = g:find_word(i + 1, e, "next")
+    return (k < e or (n < e and g:word_in(i + 1, n, "going heading headed off flying"))) and g:has_ref(i + 1, e, "aircraft")
+      and #g:quantities(i, #g.t + 1) == 0
+  end }
   -- "where is the Air Portugal going?", "where's TAP447 headed to": the destination asked, not the
   -- position; the question opens the request and ends with its verb ("where is UAL57 going to cross
   -- GIPNO?" and "too high for where it's going" are no such question)
@@ -2178,6 +2187,9 @@ return function(intent, rule, words)
   -- "give the position of the Canberra VOR": the same asked with no one named to give it to
   rule { "give", "pos", next = "the", near = { 2, "position positions" } }
   -- "are you able (for) FL370", "confirm on heading south": a question to the pilot, not a clearance
+  -- "would you be able to turn the Channex ...", "will you be able to delete it": the operator asked, politely, to
+  -- do what the verb after "to" says (no question to the pilot: "be" after "you" frames a request)
+  rule { "able", false, prev = { 1, "be" }, next = "to", when = function(g, i) return g:word(i - 2, "you") end }
   rule { "able", "pos", prev = { 2, "you" } }
   rule { "confirm", "pos", near = { 3, "heading altitude level speed mach" } }
   -- "verify AC002 state (alt, spd, hdg)", "verify its altitude": the aircraft's values asked for

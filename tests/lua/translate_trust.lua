@@ -14869,3 +14869,76 @@ do
   asked(ex("sas4 climb FL320 uh no descend FL280"), "a bare 'no' before a verb")
   asked(ex("sas4 climb FL320 descend FL280"), "both motions with no correction")
 end
+-- Cycle 54 (fwa): descriptions and remarks read as instructions or settings
+do
+  local _, ex = scene({ "CRE EIN111 A332 52.75 -9.30 270 FL180 280", "DEFWPT UNBEG 52.9 -12.0", "ADDWPT EIN111 UNBEG",
+    "CRE DAL44 B763 52.90 -10.00 090 FL350 280", "CRE RYR5PJ B738 52.75 -8.70 200 FL110 250" })
+  -- a verb of going, a particle, a compass point: the aircraft described, no heading
+  check_eq(ex("the Shamrock heading out west, descend FL150 please"), "ALT EIN111 FL150")
+  check_eq(ex("the Delta going off east, climb it to FL370"), "ALT DAL44 FL370")
+  check_eq(ex("the Ryanair heading back south, slow to 220 knots"), "SPD RYR5PJ 220")
+  check_eq(ex("the Shamrock flying out to the west, direct UNBEG"), "DIRECT EIN111 UNBEG")
+  -- a point the aircraft does not fly describes none: asked; the comma before the heading makes it the instruction
+  asked(ex("the Shamrock heading out north, direct UNBEG"), "a description that fits no aircraft")
+  check_eq(ex("the Shamrock, turn to the west"), "HDG EIN111 270")
+  -- "would you be able to VERB": the request itself, no question to the pilot
+  check_eq(ex("would you be able to turn the Delta right by 30 degrees"), "HDG DAL44 120 RIGHT")
+  check_eq(ex("could you be able to slow the Ryanair to 230 knots"), "SPD RYR5PJ 230")
+  check_eq(ex("will you be able to delete the Delta?"), "DEL DAL44")
+  asked(ex("would you be able to turn the Delta"), "a turn with no value")
+end
+do
+  local _, ex = scene({ "CRE EIN262 A320 53.60 -3.80 100 FL310 290", "CRE RYR15AW B738 53.45 -3.30 290 FL280 290",
+    "CRE TOM84C B38M 54.10 -3.50 180 FL360 280" })
+  -- an aircraft left as it is beside another's instruction is not instructed
+  check_eq(ex("descend the Aer Lingus to FL290 and leave the Ryanair alone"), "ALT EIN262 FL290")
+  check_eq(ex("slow the Tomjet to 250 knots and let the Ryanair be"), "SPD TOM84C 250")
+  check_eq(ex("leave the Ryanair as it is, turn the Aer Lingus left heading 040"), "HDG EIN262 40 LEFT")
+  check_eq(ex("descend the Aer Lingus to FL290, keep the Ryanair where it is"), "ALT EIN262 FL290")
+  -- a group described before the instruction that names one of them: the other is not its object
+  check_eq(ex("the Ryanair and the Tomjet are close, put the Tomjet down to FL300"), "ALT TOM84C FL300")
+  check_eq(ex("the Ryanair and the Aer Lingus are crossing, bring the Aer Lingus down to FL290 and leave the Ryanair be"),
+    "ALT EIN262 FL290")
+  check_eq(ex("the Ryanair is close, put the Aer Lingus on heading 200"), "HDG EIN262 200")
+  -- "them" takes both in
+  check_eq(ex("the Ryanair and the Tomjet are close, put them down to FL270"), "ALT RYR15AW FL270 ; ALT TOM84C FL270")
+  -- nothing said of the aircraft but "leave": not left alone, asked
+  asked(ex("descend the Aer Lingus to FL290 and leave the Ryanair"), "'leave' with no word of leaving it as it is")
+end
+do
+  local _, ex = scene({ "CRE LOT26 B788 51.80 19.50 150 FL350 280" })
+  -- "on" before the interval's value says "to": no switch
+  check_eq(ex("set detection interval on 2 seconds"), "DT ASAS 2")
+  check_eq(ex("put the conflict detection interval on 4 s"), "DT ASAS 4")
+  check_eq(ex("switch on the detection, interval 3 seconds"), "ASAS ON ; DT ASAS 3")
+  asked(ex("set the detection interval on"), "an interval with no time")
+end
+do
+  local _, ex = scene({ "DEFWPT MOSNV 49.7 18.1", "DEFWPT OTAXX 49.65 18.3", "CRE CSA6AT AT76 49.60 18.50 290 FL140 230",
+    "ADDWPT CSA6AT OTAXX", "ADDWPT CSA6AT MOSNV", "CRE AFR1842 A320 49.40 17.60 085 FL330 280" })
+  -- where the aircraft goes, told after its instruction, a place of its route: a remark
+  check_eq(ex("CSA6AT descend 5000 feet, he goes to MOSNV"), "ALT CSA6AT 5000")
+  check_eq(ex("CSA6AT reduce 200 knots, it is going to OTAXX"), "SPD CSA6AT 200")
+  check_eq(ex("CSA6AT descend FL100. He flies to MOSNV."), "ALT CSA6AT FL100")
+  check(not ex("AFR1842 climb FL350, he goes to MOSNV"):find("ALT AFR1842 FL350$"), "a place off its route is no remark")
+  -- "where ... routing", "going next": the route listed; "where is X going?" its destination (DEST)
+  check_eq(ex("where is the Air France routing?"), "LISTRTE AFR1842")
+  check_eq(ex("can you show me where CSA6AT is routed"), "LISTRTE CSA6AT")
+  check_eq(ex("where's the CSA heading next?"), "LISTRTE CSA6AT")
+  check_eq(ex("where is the Air France going?"), "DEST AFR1842")
+  -- a create's compass point of two words after a verb of going is the heading
+  check_eq(ex("add an ATR 72, callsign EAI22R, at 53.2 north 6.0 west, going north-east at FL140 and 220 knots"),
+    "CRE EAI22R AT72 53.2 -6 45 FL140 220")
+  check_eq(ex("create a Boeing 737-800 callsign RYR7 at 52 north 4 east, flying south west, FL200, 250 knots"),
+    "CRE RYR7 B738 52 4 225 FL200 250")
+end
+do
+  local _, ex = navscene({ "CRE BAW2GL A320 54.90 -5.20 200 FL170 280", "ADDWPT BAW2GL MAGEE", "DEST BAW2GL EGAC",
+    "CRE CSA6AT AT76 49.60 18.50 290 FL140 230", "ADDWPT CSA6AT LKMT" }, "places by name in a remark or a question")
+  if ex then
+    check_eq(ex("CSA6AT descend 5000 feet, he goes to Mosnov"), "ALT CSA6AT 5000")
+    -- an airport named before "arrival" describes an aircraft: never the airport's position
+    asked(ex("where's the Belfast City arrival?"), "an aircraft described by its destination")
+    check_eq(ex("where is Belfast City airport?"), "POS EGAC")
+  end
+end
