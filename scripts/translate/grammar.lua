@@ -2201,13 +2201,57 @@ function G:state_remark(b)
   local copula = self:find_word(x + 1, comma, D.copulas)
   if not (self:word(x, D.nouns_after) and copula < comma and self:declared(x, comma)) then return false end
   -- (a switch's state with no frame or told adverb may be wished: "..., the trails are on" stays read)
-  if self:word_in(copula, comma, "@on @off") and not (framed or self:word_in(copula, comma, D.state_told)) then
+  if self:word_in(copula, comma, "@on @off") and not (framed or self:state_told(x, comma)) then
     return false
   end
   for y = x + 1, copula - 1 do
     if instruction(y) then return true end
   end
   return false
+end
+
+-- True when tokens b .. e - 1 tell a state, never wish it: a word of declared.state_told ("already", "anyway",
+-- "btw"), "by the way", or a copula in the past (declared.past_copulas: "the trails were on").
+function G:state_told(b, e)
+  local D = COMMENTARY.decl
+  if self:word_in(b, e, D.state_told) or self:word_in(b, e, D.past_copulas) then return true end
+  for x = b, e - 3 do
+    if self:word(x, "by") and self:word(x + 1, "the") and self:word(x + 2, "way") then return true end
+  end
+  return false
+end
+
+-- "the traffic trails are on already", "seed was 3 by the way", "the simulation was paused anyway": a clause (to its
+-- mark) with a copula of declared.copulas that tells a state (G:state_told), a word of a setting's intent
+-- (declared.settings) as its subject or state, and no aircraft and no wish or modal (declared.requests) in it, not
+-- set aside as a remark beside an instruction (G:state_remark), tells how the simulation is or was: asked, never
+-- set. Read: "the trails are on" (it may be wished), "trails on", "set the seed to 3".
+function G:told_setting()
+  local D = COMMENTARY.decl
+  if not self:said(D.copulas) then return end
+  local b = 1
+  for k = 1, #self.t + 1 do
+    local t = self.t[k]
+    if not t or t.kind == "punct" then
+      local copula = self:find_word(b, k, D.copulas)
+      -- (its subject before the copula, or a question in the past, "was the seed 3?": "is the resolution still MVP?"
+      -- asks for the setting)
+      local opens = copula > self:skip_fillers(b) or self:word(copula, D.past_copulas)
+      if copula < k and opens and self:state_told(b, k) and not self:word_in(b, k, D.requests)
+          and not self:has_ref(b, k, "aircraft") then
+        -- (the setting's word is the copula's subject or after it: "the traffic trails are on", "the simulation
+        -- was paused", "the sim is already running at 4x"; "speed it up while the aircraft are still apart" tells no
+        -- setting's state)
+        for x = math.max(b, copula - 3), k - 1 do
+          if D.settings[self:intent_at(x) or ""] and not self:in_reason(x) then
+            return self:need(string.format("'%s' tells how the simulation is or was, no instruction. Should I "
+              .. "change anything? Please say it as an instruction.", self:raw(b, k)))
+          end
+        end
+      end
+      b = k + 1
+    end
+  end
 end
 
 -- True when the sentence opening at k is a remark in the declarative shape (G:declared), or opened by an apology
@@ -2303,6 +2347,22 @@ function G:diversion_reason(k)
     if self.t[y].kind == "word" and not self:has_ref(y, y + 1, "waypoint") then words = words + 1 end
   end
   return words > 0
+end
+
+-- True when the "but" at k opens a clause of its own that contrasts with what was said before it ("sorry to be a
+-- pain, but the Dash 8 should climb", "sorry but the Lufthansa ..."): after a mark, an apology (declared.apologies) or
+-- at the request's start, fillers between. "all but the Lufthansa" excepts the aircraft after it.
+function G:contrastive_but(k)
+  if not self:word(k, "but") then return false end
+  local p = k - 1
+  while p >= 1 and self.t[p].filler do p = p - 1 end
+  return p < 1 or self.t[p].kind == "punct" or self:word(p, COMMENTARY.decl.apologies)
+end
+-- True when the word at k, before an aircraft described ("the Lufthansa", "the Dash 8", "the lower one"), makes it
+-- other traffic, never the aircraft instructed: a word of lexicon.airline_context, aircraft_context, below or above
+-- ("too close to the Lufthansa", "above the Dash 8"), a contrastive "but" (G:contrastive_but) excepted.
+function G:other_traffic_before(k)
+  return self:word(k, "@airline_context @aircraft_context @below @above") and not self:contrastive_but(k)
 end
 
 local REASON_WORDS = word_set("@reason")
@@ -9206,6 +9266,66 @@ function G:value_next(i)
   return q ~= nil and q.b == v
 end
 
+-- Value nouns named with no value in a clause of their own ("..., speeds included", "... and the speeds", "..., with
+-- the heights and speeds", "..., speed restrictions too", "Levels included."): words of lexicon.route_value_nouns,
+-- "and" between two of them, at most an article or possessive before them, opened by a mark, "and" or "with" and
+-- closed by a word of lexicon.route_value_closers or "as well" (after a mark the closer is needed: "..., speed" is a
+-- value cut off, G:dangling_value_name; "? Altitude, speed, everything" asks for them), then the end of the request
+-- or a mark; no value in it. For the word at i, one of its words: the first token of the clause after its opener,
+-- the token after its last word, and its first noun; nil else.
+function G:values_named_alone(i)
+  local function noun(x) return self:word(x, "@route_value_nouns") end
+  if not noun(i) then return nil end
+  local n, last = i, i
+  while noun(n - 1) or (self:word(n - 1, "and") and noun(n - 2)) do n = noun(n - 1) and n - 1 or n - 2 end
+  while noun(last + 1) or (self:word(last + 1, "and") and noun(last + 2)) do
+    last = noun(last + 1) and last + 1 or last + 2
+  end
+  local b = self:word(n - 1, "the its their his her") and n - 1 or n
+  local opener = self.t[b - 1]
+  if b < 3 or not opener or not (opener.kind == "punct" or self:word(b - 1, "and with")) then return nil end
+  -- (a list of values named, "say heading and speed", or "along with" them, asks for them: no clause of its own)
+  if self:word(b - 2, "@value_names @route_value_nouns along") then return nil end
+  local k = last + 1
+  if self:word(k, "@route_value_closers") then
+    k = k + 1
+  elseif self:word(k, "as") and self:word(k + 1, "well") then
+    k = k + 2
+  elseif opener.kind == "punct" then
+    return nil
+  end
+  if (self.t[k] and self.t[k].kind ~= "punct") or #self:quantities(b, k) > 0 then return nil end
+  return b, k, n
+end
+-- True when the clause of G:values_named_alone opening at b follows a route instruction in its sentence (or the one
+-- before, when the clause is a sentence of its own): a verb of lexicon.route_value_verbs before a route noun or
+-- "navigation" ("follow the route", "resume own navigation"), no direct-to between them and the clause. The values
+-- are the route's own, flown with VNAV.
+function G:route_values_followed(b)
+  local route = false
+  for x = b - 2, 1, -1 do
+    if (self.t[x].kind == "punct" and self.t[x].text ~= ",") or self:word(x, "direct dct") then return false end
+    route = route or self:word(x, "@route_nouns navigation nav")
+    if self:word(x, "@route_value_verbs") then return route end
+  end
+  return false
+end
+-- "direct ALFA, speeds included", "climb FL200 and the levels too": values named with no value (G:values_named_alone)
+-- that no route followed reads (G:route_values_followed) and no VNAV sent carries: asked, naming the words, never
+-- dropped.
+function G:values_named_unread()
+  for _, line in ipairs(self.out) do
+    if line:match("^VNAV %S+ ON$") then return end
+  end
+  for i = 1, #self.t do
+    local b, k, n = self:values_named_alone(i)
+    if n == i and not self:in_reason(i) and not self.noted[i] then
+      return self:need(string.format("I have %s. What does '%s' mean: its route's levels and speeds (VNAV ON), or "
+        .. "a value to fly? Please say which.", #self.out > 0 and table.concat(self.out, " ; ") or "no instruction",
+        self:raw(b, k)))
+    end
+  end
+end
 -- True when "resume normal speed" or "resume published speed" at i is the whole request to one aircraft flying its
 -- route's profile (LNAV and VNAV on, named before it): the profile's speed given back, VNAV ON. Not beside another
 -- instruction ("turn left heading 250, resume normal speed", "climb FL270 and ..."): VNAV ON flies the route's
@@ -11959,6 +12079,8 @@ function M.translate(text, world)
   if not g.ask and not g.leftover then g:uncarried() end
   if not g.ask and not g.leftover then g:uncarried_names() end
   if not g.ask and not g.leftover then g:unread_switch() end
+  if not g.ask and not g.leftover then g:told_setting() end
+  if not g.ask and not g.leftover then g:values_named_unread() end
   if not g.ask and not g.leftover then g:unaccounted() end
   if not g.ask and not g.leftover and #g.out > 0 then g:described_uninstructed() end
   if not g.ask and not g.leftover and #g.out > 0 then g:delay_left() end

@@ -920,7 +920,7 @@ function m:airline_group_refs(inside)
     if w == "the" or w == "all" or w == "both" then
       -- (other traffic: "away from the Vuelings", "above the two Vuelings", "behind both Vuelings", "clear of the
       -- Vuelings")
-      local b = self:word(i, "the all both") and not self:word(i - 1, "@airline_context @aircraft_context @below @above")
+      local b = self:word(i, "the all both") and not self:other_traffic_before(i - 1)
         and not self:word(i - 1, "from of") and i
       local k = b and (self:word(i + 1, "the") and i + 2 or i + 1)
       local count = b and COUNTS[self.t[k] and self.t[k].text or ""]
@@ -1168,7 +1168,7 @@ function m:airline_refs()
       local nxt = self.t[e]
       local prev = self.t[i - 1]
       local the = prev and prev.kind == "word" and prev.text == "the" and not second_between(self, i - 2)
-          and (not self:word(i - 2, "@airline_context @aircraft_context @below @above")
+          and (not self:other_traffic_before(i - 2)
             or self:word(e, "@route_nouns")  -- "add X to the KLM's route" (the lexer drops "'s")
             or self:added_to(i - 2, e) or self:given_to(i - 2) or self:same_opening(i))
       -- ("the regional jet from Republic, climb ...", "the plane from Delta": "the", words of an aircraft described
@@ -1178,7 +1178,7 @@ function m:airline_refs()
       if self:word(i - 1, "from") and self.t[i].raw:match("^%u") then
         local k = i - 2
         while k > i - 5 and self:word(k, "@aircraft_nouns @aircraft_described") do k = k - 1 end
-        if k < i - 2 and self:word(k, "the") and not self:word(k - 1, "@airline_context @aircraft_context @below @above") then
+        if k < i - 2 and self:word(k, "the") and not self:other_traffic_before(k - 1) then
           from_the = k
         end
       end
@@ -1818,7 +1818,7 @@ function m:type_refs()
       end
     end
     local k = the and b - 1 or b
-    if test and self:word(k - 1, "@airline_context @aircraft_context @below @above") and not self:recipient_to(k - 1) then
+    if test and self:other_traffic_before(k - 1) and not self:recipient_to(k - 1) then
       test = nil
     end
     local fits = {}
@@ -2059,7 +2059,7 @@ function m:described_refs()
   local i = 2
   while i <= #self.t do
     local b, measure = i - 1, self.t[i].kind == "word" and L.compared_measures[self.t[i].text]
-    local the = self:word(b, "the") and not self:word(b - 1, "@airline_context @aircraft_context @below @above")
+    local the = self:word(b, "the") and not self:other_traffic_before(b - 1)
     local ids, e, count, picked, outer
     if the and measure then
       if self:word(i + 1, "of") then
@@ -2151,7 +2151,7 @@ function m:bearing_refs()
   local i = 1
   while i <= #self.t do
     local b, ids, e, point = i, nil, nil, nil
-    if self:word(i, "the") and not self:word(i - 1, "@airline_context @aircraft_context @below @above") then
+    if self:word(i, "the") and not self:other_traffic_before(i - 1) then
       local bound = self.t[i + 1] and self.t[i + 1].kind == "word" and self.t[i + 1].text:match("^(%a+)bound$")
       if bound and L.compass[bound] then
         ids, e = compared_group(self, i + 2)
@@ -2209,7 +2209,7 @@ function m:creation_refs()
   local i = 1
   while i <= #self.t do
     local latest, ids, e, v
-    if self:word(i, "the") and not self:word(i - 1, "@airline_context @aircraft_context @below @above") then
+    if self:word(i, "the") and not self:other_traffic_before(i - 1) then
       latest, v = order_at(i + 1)
       ids, e = compared_group(self, v)
       v = e and (self:word(e, "that which who") and e + 1 or e)

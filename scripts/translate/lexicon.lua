@@ -1016,6 +1016,15 @@ return {
                       meter = true },
   waypoint_nouns = { "waypoint", "wpt", "wp", "fix", "waypoints", "fixes", "wpts", "wps" },
   route_nouns = { "route", "plan", "path", "routing", "rte" },
+  -- the route's own values named with no value after a route instruction ("follow the route, speeds included",
+  -- "resume own navigation, levels too", "..., speed restrictions too": G:values_named_alone): the nouns (plurals
+  -- as said; the constraints on them too), the words closing such a clause ("as well" is matched as two words), and
+  -- the verbs that fly a route whose values they are
+  route_value_nouns = { "speed", "speeds", "level", "levels", "altitude", "altitudes", "height", "heights",
+                        "restriction", "restrictions", "constraint", "constraints" },
+  route_value_closers = { "included", "too", "also" },
+  route_value_verbs = { "follow", "follows", "following", "resume", "resumes", "resuming", "rejoin", "rejoins",
+                        "continue", "continues" },
   articles_new = { "a", "an", "new", "second", "another", "more" },
   -- families whose first variant in the data is not the one every writer means by the family's name alone
   -- ("a Boeing 767": B762 in the data, B763 meant; "a United 787": B788 or B789; "a 737", "a Southwest 737":
@@ -1162,8 +1171,14 @@ return {
             -- (a setting's name that is also a word of judgement, its copula dropped after one of predicate_adverbs:
             -- "delete the cessna, just noise" judges the aircraft)
             judgements = { "noise" },
-            -- (the adverbs marking a setting's state as told, never wished: "the detection is on anyway")
-            state_told = { "already", "anyway", "anyhow", "still", "yet" },
+            -- (the adverbs marking a setting's state as told, never wished: "the detection is on anyway", "the seed is
+            -- 42 btw"; "by the way" too, G:state_told)
+            state_told = { "already", "anyway", "anyhow", "still", "yet", "btw", "fyi", "incidentally" },
+            -- (a copula in the past tells a state, never wishes one: "the trails were on")
+            past_copulas = { "was", "wasn't", "were", "weren't" },
+            -- (the intents that set the simulation's settings, whose state such a clause tells: G:told_setting)
+            settings = { "trail", "seed", "dtmult", "dt", "dtlook", "noise", "asas", "reso", "rmethv", "rfac", "zone",
+                         "hold", "op", "ff", "resnav", "wind", "perf" },
             nouns_after = { "the", "a", "an", "this", "that", "our", "its", "their", "his", "her", "my", "your",
                             "no", "any", "some" },
             requests = { "want", "wants", "need", "needs", "like", "would", "wish", "should", "must", "can",

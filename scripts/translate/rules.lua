@@ -314,27 +314,12 @@ return function(intent, rule, words)
     end
     return false
   end }
-  -- "follow its route, heights and speeds included", "follow the route, its levels included": the route's levels
-  -- named as part of following it, in a clause of their own after a comma, "included" after them (no value in
-  -- it), are flown too (VNAV)
-  rule { "altitude altitudes level levels height heights", "vnav", when = function(g, i)
-    local b = g:word(i - 1, "the its their his her") and i - 1 or i
-    if g:word(b - 1, "and") and g:word(b - 2, "speed speeds") then b = g:word(b - 3, "the its their his her") and b - 3 or b - 2 end
-    local e = i + 1
-    if g:word(e, "and") and g:word(e + 1, "speed speeds") then e = e + 2 end
-    -- (a clause of its own, after a comma; "follow the route, including the altitudes" is asked)
-    if not g:word(e, "included") then return false end
-    e = e + 1
-    if (g.t[b - 1] or {}).text ~= "," or (g.t[e] and g.t[e].kind ~= "punct") or #g:quantities(b, e) > 0 then
-      return false
-    end
-    local route = false
-    for x = b - 1, 1, -1 do
-      if g.t[x].kind == "punct" and g.t[x].text ~= "," then return false end
-      route = route or g:word(x, "@route_nouns")
-      if g:word(x, "follow follows following") then return route end
-    end
-    return false
+  -- "follow its route, heights and speeds included", "follow the route and the speeds", "resume own navigation,
+  -- levels too": the route's values named with no value in a clause of their own after following it
+  -- (G:values_named_alone, G:route_values_followed) are flown too (VNAV: the route's levels and speeds)
+  rule { "@route_value_nouns", "vnav", when = function(g, i)
+    local b = g:values_named_alone(i)
+    return b ~= nil and g:route_values_followed(b)
   end }
   rule { "climb climbing descend descending altitude alt cruise altitudes desc clb", "alt" }
   -- "rise to FL200", "ascend to FL200": a climb said so, with its level after it

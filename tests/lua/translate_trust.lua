@@ -14942,3 +14942,45 @@ do
     check_eq(ex("where is Belfast City airport?"), "POS EGAC")
   end
 end
+
+-- Cycle 54 (hzl): the route's values named with no value after a route instruction; a setting's state told, never
+-- set; a contrastive "but" before an aircraft described
+do
+  local _, ex = scene({ "CRE FIN8LK A320 60.0 24.0 090 FL240 280", "ADDWPT FIN8LK 60.5 25.0", "ADDWPT FIN8LK 61.0 26.0",
+    "CRE KLM12 B738 60.2 24.4 270 FL300 280" })
+  check_eq(ex("FIN8LK follow the route again, speeds included"), "LNAV FIN8LK ON ; VNAV FIN8LK ON")
+  check_eq(ex("FIN8LK follow your route and the speeds"), "LNAV FIN8LK ON ; VNAV FIN8LK ON")
+  check_eq(ex("FIN8LK rejoin the route, altitudes too"), "LNAV FIN8LK ON ; VNAV FIN8LK ON")
+  check_eq(ex("FIN8LK resume own navigation, speed restrictions as well"), "LNAV FIN8LK ON ; VNAV FIN8LK ON")
+  check_eq(ex("FIN8LK continue on the route. Levels included."), "LNAV FIN8LK ON ; VNAV FIN8LK ON")
+  -- no route followed, or a value instruction beside them: asked, naming the words
+  asked(ex("KLM12 climb FL320, speeds included"), "values named with no route followed")
+  asked(ex("KLM12 reduce to 250 knots and the levels too"), "levels named beside a speed")
+  asked(ex("FIN8LK follow the route, speeds"), "a value name cut off")
+  -- a list of values asked for is no clause of their own
+  check_eq(ex("FIN8LK say heading and speed"), "POS FIN8LK")
+end
+do
+  local _, ex = scene({ "CRE KLM12 B738 52.0 4.0 090 FL220 280" })
+  asked(ex("the conflict detection is already on"), "a switch's state told with 'already'")
+  asked(ex("the random seed was 7"), "a seed told in the past")
+  asked(ex("noise is off anyway"), "a switch's state told with 'anyway'")
+  asked(ex("the sim rate was 2x by the way"), "a rate told 'by the way'")
+  asked(ex("were the trails off?"), "a question in the past")
+  check_eq(ex("KLM12 descend FL180, the trails were already on"), "ALT KLM12 FL180")
+  -- wished or ordered: read
+  check_eq(ex("switch the trails on"), "TRAIL ON")
+  check_eq(ex("make the seed 7"), "SEED 7")
+  check_eq(ex("the trails are on"), "TRAIL ON")
+  check_eq(ex("the trails should be on"), "TRAIL ON")
+end
+do
+  local _, ex = scene({ "CRE WIF6KG DH8D 55.6 11.6 090 12000 220", "CRE DLH4AX A321 54.95 12.8 000 FL180 300",
+    "CRE SAS1437 A20N 55.2 11.9 060 FL140 290" })
+  check_eq(ex("I hate to ask, but the Dash 8 could climb to FL130"), "ALT WIF6KG FL130")
+  check_eq(ex("sorry but the Lufthansa should come down to FL160"), "ALT DLH4AX FL160")
+  -- two aircraft fit: asked
+  asked(ex("sorry, but the Airbus should climb to FL200"), "two Airbuses fit")
+  -- "all but": the aircraft after it is excepted
+  asked(ex("all aircraft but the Dash 8 climb FL200"), "an aircraft excepted")
+end
