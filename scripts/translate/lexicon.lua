@@ -905,6 +905,19 @@ return {
                       only = { "just", "only" },
                       -- an apology closing a value ruled out ("fl200 not 180 sorry"): the value before stands
                       apology = { "sorry", "apologies", "oops", "soz" },
+                      -- said after a marker, an apology or a hesitation and closing the request, the speaker
+                      -- stops to think or drops what was said with nothing in its place ("climb FL280... no wait,
+                      -- let's see", "speed 250, sorry, let me think", "..., no, forget it"): taken back, asked
+                      -- (grammar.lua G:withheld_start)
+                      withheld = { "let's see", "let us see", "let me see", "let me think", "let me check",
+                                   "let me check something", "let me think about it", "let me double-check",
+                                   "let me double check", "hold on", "hang on", "hold that thought", "stand by",
+                                   "standby", "bear with me", "one moment", "a moment", "one second", "a second",
+                                   "one sec", "a sec", "just a moment", "just a second", "just a sec",
+                                   "wait a second", "wait a moment", "wait a minute", "wait a sec",
+                                   "give me a second", "give me a moment", "give me a sec", "forget it",
+                                   "scrap that", "ignore that", "cancel that", "not that", "not yet",
+                                   "i'm not sure", "not sure" },
                       -- formal apologies, read as "sorry" (a marker) wherever they are said ("Mach 0.80 --
                       -- pardon me, Mach 0.78", "the United -- no, forgive me, the Southwest")
                       formal_apology = { "i beg your pardon", "beg your pardon", "pardon me", "forgive me",

@@ -14646,3 +14646,22 @@ do
   check_eq(ex("what is the United's active waypoint?"), "LISTRTE UAL78")
   asked(ex("the United's active waypoint"), "the noun alone, no question")
 end
+do
+  -- a self-correction closed by the speaker stopping to think or dropping it ("no wait, let's see", "sorry, let me
+  -- think", "no, forget it"): what came before is taken back, nothing issued; a replacement after it is read
+  local _, ex = scene({ "CRE DAL77 A321 52 4 090 FL200 280", "CRE KLM12 B738 52.1 4.1 180 FL150 260" })
+  asked(ex("climb the Delta to FL280... no wait, let's see"), "'no wait, let's see' takes the climb back")
+  asked(ex("KLM12 speed 250... sorry, let me think"), "'sorry, let me think' takes the speed back")
+  asked(ex("descend KLM12 to FL100, hmm, actually hold on"), "'hmm, actually hold on' takes the descent back")
+  asked(ex("DAL77 climb FL300, actually, let me check something"), "'actually, let me check' takes it back")
+  asked(ex("KLM12 speed 250, no, forget it"), "'no, forget it' takes the speed back")
+  asked(ex("KLM12 speed 250, no, stand by"), "'no, stand by' takes the speed back")
+  asked(ex("KLM12 turn right heading 090... sorry, hold that thought"), "'sorry, hold that thought' takes it back")
+  asked(ex("KLM12 heading 200, sorry, I'm not sure"), "'sorry, I'm not sure' takes the heading back")
+  asked(ex("KLM12 speed 220, no, cancel that"), "'no, cancel that' takes the speed back")
+  asked(ex("DAL77 climb FL300 and KLM12 heading 200, sorry, let me think"), "both taken back")
+  asked(ex("DAL77 climb FL300, no, scratch that"), "'no, scratch that' takes the climb back")
+  check_eq(ex("KLM12 speed 250, hmm, hold on, make that 240"), "SPD KLM12 240")
+  check_eq(ex("DAL77 climb FL300, no, scratch that, FL280"), "ALT DAL77 FL280")
+  check_eq(ex("pause the sim, hang on"), "HOLD")
+end
