@@ -2120,6 +2120,9 @@ return {
   value_noun_airlines = { velocity = { "VOZ", "speed" } },
   value_noun_before = { the = true, a = true, your = true, its = true, his = true, her = true, their = true },
   -- speed units that may stand apart from their number ("two one zero, knots")
+  -- informal verbs of changing a value ("bump it to 280 knots", "crank it up to Mach .80"): a speed when a
+  -- speed's unit follows them (rules.lua)
+  informal_value_verbs = { "bump", "crank", "push", "knock" },
   speed_units = { "knots", "knot", "kts", "kt", "knts", "kits" },  -- ("250 kits": kts typed with a slip)
   -- an intruder set up against an aircraft (CRECONFS): the nouns that name it, and the words before
   -- or after its closest approach, its loss of separation and a head-on course

@@ -14665,3 +14665,17 @@ do
   check_eq(ex("DAL77 climb FL300, no, scratch that, FL280"), "ALT DAL77 FL280")
   check_eq(ex("pause the sim, hang on"), "HOLD")
 end
+do
+  -- a condition on the level reached said with an informal verb of changing the speed ("once it's level, bump it
+  -- to 280 knots"): ATALT on the level cleared; with no unit after the verb ("bump to 280") asked
+  local _, ex = scene({ "CRE DAL77 A321 52 4 090 FL200 280", "CRE KLM12 B738 52.1 4.1 180 FL150 260" })
+  check_eq(ex("DAL77 climb FL300, once it's level, bump it to 280 knots"),
+    "ALT DAL77 FL300 ; ATALT DAL77 FL300 SPD DAL77 280")
+  check_eq(ex("DAL77 climb FL300; when it's level, bump to Mach point eight zero"),
+    "ALT DAL77 FL300 ; ATALT DAL77 FL300 SPD DAL77 M0.8")
+  check_eq(ex("KLM12 descend FL100, once it's down there, crank it down to 220 knots"),
+    "ALT KLM12 FL100 ; ATALT KLM12 FL100 SPD KLM12 220")
+  check_eq(ex("DAL77 climb FL300, once level, push it up to 300 knots"),
+    "ALT DAL77 FL300 ; ATALT DAL77 FL300 SPD DAL77 300")
+  asked(ex("DAL77 climb FL300, when it's level, bump to 280"), "'bump to 280' names no kind of value")
+end
