@@ -6362,11 +6362,47 @@ function G:closing_remark(e)
   return nil
 end
 
+-- The first token of a run closing the request at token last: a phrase of lexicon.self_correction.withheld, and
+-- before it self-correction words, apologies, hesitations and punctuation holding a marker, an apology or a
+-- hesitation ("no wait, let's see", "sorry, let me think", "hmm, hold on"), with an instruction's words before the
+-- run; else nil ("let's" is read as "let").
+G.sc_withheld_hesitations = set_of(lexicon.hesitations)
+G.sc_withheld_hesitations.hmm, G.sc_withheld_hesitations.hm = true, true
+function G:withheld_start(last)
+  local b
+  for _, phrase in ipairs(SC.withheld) do
+    local words = PHRASE_WORDS[phrase]
+    local k = last - #words + 1
+    if k > 1 and (not b or k < b) then
+      for j, w in ipairs(words) do
+        if self.words[k + j - 1] ~= (w:gsub("'s$", "")) then k = nil break end
+      end
+      b = k or b
+    end
+  end
+  if not b then return nil end
+  local first, marked = b, false
+  while first > 1 do
+    local t, w = self.t[first - 1], self.words[first - 1]
+    if not (t.kind == "punct" or t.filler or SC_WORDS[w] or G.apology[w] or G.sc_withheld_hesitations[w]) then break end
+    marked = marked or t.filler or SC_MARKERS[w] or G.apology[w] or G.sc_withheld_hesitations[w] or false
+    first = first - 1
+  end
+  while first < b and self.t[first].kind == "punct" do first = first + 1 end
+  return marked and first > 1 and first or nil
+end
+
 -- "descend flight level one two zero, uh, correction": a correction with
 -- nothing after it says the request is wrong without saying how; asked.
 function G:dangling_correction()
   local last = #self.t
   while last > 0 and (self.t[last].kind == "punct" or self.t[last].filler) do last = last - 1 end
+  -- (a self-correction closed by the speaker stopping to think or dropping it: G:withheld_start)
+  local withheld = last > 0 and #self.out > 0 and self:withheld_start(last)
+  if withheld then
+    return self:need(string.format("You said '%s' with nothing after it, taking back %s. What is the corrected "
+      .. "instruction?", (self:raw(withheld, last + 1):gsub(" ([,.;:])", "%1")), table.concat(self.out, " ; ")))
+  end
   if last > 0 and self:word(last, "@correction") then
     self:need(string.format("You said '%s' with nothing after it. What is the corrected instruction?",
       self.t[last].raw:lower()))

@@ -920,6 +920,19 @@ return {
                       only = { "just", "only" },
                       -- an apology closing a value ruled out ("fl200 not 180 sorry"): the value before stands
                       apology = { "sorry", "apologies", "oops", "soz" },
+                      -- said after a marker, an apology or a hesitation and closing the request, the speaker
+                      -- stops to think or drops what was said with nothing in its place ("climb FL280... no wait,
+                      -- let's see", "speed 250, sorry, let me think", "..., no, forget it"): taken back, asked
+                      -- (grammar.lua G:withheld_start)
+                      withheld = { "let's see", "let us see", "let me see", "let me think", "let me check",
+                                   "let me check something", "let me think about it", "let me double-check",
+                                   "let me double check", "hold on", "hang on", "hold that thought", "stand by",
+                                   "standby", "bear with me", "one moment", "a moment", "one second", "a second",
+                                   "one sec", "a sec", "just a moment", "just a second", "just a sec",
+                                   "wait a second", "wait a moment", "wait a minute", "wait a sec",
+                                   "give me a second", "give me a moment", "give me a sec", "forget it",
+                                   "scrap that", "ignore that", "cancel that", "not that", "not yet",
+                                   "i'm not sure", "not sure" },
                       -- formal apologies, read as "sorry" (a marker) wherever they are said ("Mach 0.80 --
                       -- pardon me, Mach 0.78", "the United -- no, forgive me, the Southwest")
                       formal_apology = { "i beg your pardon", "beg your pardon", "pardon me", "forgive me",
@@ -2179,6 +2192,9 @@ return {
   value_noun_airlines = { velocity = { "VOZ", "speed" } },
   value_noun_before = { the = true, a = true, your = true, its = true, his = true, her = true, their = true },
   -- speed units that may stand apart from their number ("two one zero, knots")
+  -- informal verbs of changing a value ("bump it to 280 knots", "crank it up to Mach .80"): a speed when a
+  -- speed's unit follows them (rules.lua)
+  informal_value_verbs = { "bump", "crank", "push", "knock" },
   speed_units = { "knots", "knot", "kts", "kt", "knts", "kits" },  -- ("250 kits": kts typed with a slip)
   -- an intruder set up against an aircraft (CRECONFS): the nouns that name it, and the words before
   -- or after its closest approach, its loss of separation and a head-on course

@@ -704,6 +704,10 @@ return function(intent, rule, words)
     return g:word(i + 1, "@sim") or (g:word(i + 1, "the") and g:word(i + 2, "@sim"))
   end }
   rule { "slow slower faster accelerate decelerate", "spd" }
+  -- "once it's level, bump it to 280 knots", "crank it up to Mach .80": an informal verb of changing a value
+  -- (lexicon.informal_value_verbs) with a speed's unit or "Mach" within five words after it is a speed; with no
+  -- unit ("bump to 280") it names no value's kind and stays unread
+  rule { "@informal_value_verbs", "spd", near = { 5, "@speed_units mach" } }
   -- "and give it 280 knots": a speed given to the aircraft
   rule { "give", "spd", next = "it him her them", near = { 4, "@speed_units" } }
   -- "increase the level to FL130", "reduce your level to FL070": the level named straight after the verb

@@ -14984,3 +14984,37 @@ do
   -- "all but": the aircraft after it is excepted
   asked(ex("all aircraft but the Dash 8 climb FL200"), "an aircraft excepted")
 end
+
+do
+  -- a self-correction closed by the speaker stopping to think or dropping it ("no wait, let's see", "sorry, let me
+  -- think", "no, forget it"): what came before is taken back, nothing issued; a replacement after it is read
+  local _, ex = scene({ "CRE DAL77 A321 52 4 090 FL200 280", "CRE KLM12 B738 52.1 4.1 180 FL150 260" })
+  asked(ex("climb the Delta to FL280... no wait, let's see"), "'no wait, let's see' takes the climb back")
+  asked(ex("KLM12 speed 250... sorry, let me think"), "'sorry, let me think' takes the speed back")
+  asked(ex("descend KLM12 to FL100, hmm, actually hold on"), "'hmm, actually hold on' takes the descent back")
+  asked(ex("DAL77 climb FL300, actually, let me check something"), "'actually, let me check' takes it back")
+  asked(ex("KLM12 speed 250, no, forget it"), "'no, forget it' takes the speed back")
+  asked(ex("KLM12 speed 250, no, stand by"), "'no, stand by' takes the speed back")
+  asked(ex("KLM12 turn right heading 090... sorry, hold that thought"), "'sorry, hold that thought' takes it back")
+  asked(ex("KLM12 heading 200, sorry, I'm not sure"), "'sorry, I'm not sure' takes the heading back")
+  asked(ex("KLM12 speed 220, no, cancel that"), "'no, cancel that' takes the speed back")
+  asked(ex("DAL77 climb FL300 and KLM12 heading 200, sorry, let me think"), "both taken back")
+  asked(ex("DAL77 climb FL300, no, scratch that"), "'no, scratch that' takes the climb back")
+  check_eq(ex("KLM12 speed 250, hmm, hold on, make that 240"), "SPD KLM12 240")
+  check_eq(ex("DAL77 climb FL300, no, scratch that, FL280"), "ALT DAL77 FL280")
+  check_eq(ex("pause the sim, hang on"), "HOLD")
+end
+do
+  -- a condition on the level reached said with an informal verb of changing the speed ("once it's level, bump it
+  -- to 280 knots"): ATALT on the level cleared; with no unit after the verb ("bump to 280") asked
+  local _, ex = scene({ "CRE DAL77 A321 52 4 090 FL200 280", "CRE KLM12 B738 52.1 4.1 180 FL150 260" })
+  check_eq(ex("DAL77 climb FL300, once it's level, bump it to 280 knots"),
+    "ALT DAL77 FL300 ; ATALT DAL77 FL300 SPD DAL77 280")
+  check_eq(ex("DAL77 climb FL300; when it's level, bump to Mach point eight zero"),
+    "ALT DAL77 FL300 ; ATALT DAL77 FL300 SPD DAL77 M0.8")
+  check_eq(ex("KLM12 descend FL100, once it's down there, crank it down to 220 knots"),
+    "ALT KLM12 FL100 ; ATALT KLM12 FL100 SPD KLM12 220")
+  check_eq(ex("DAL77 climb FL300, once level, push it up to 300 knots"),
+    "ALT DAL77 FL300 ; ATALT DAL77 FL300 SPD DAL77 300")
+  asked(ex("DAL77 climb FL300, when it's level, bump to 280"), "'bump to 280' names no kind of value")
+end
