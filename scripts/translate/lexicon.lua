@@ -2254,6 +2254,9 @@ return {
   clause_comma_prepositions = { on = true, at = true, ["in"] = true, with = true, to = true, from = true,
     ["for"] = true, by = true, over = true },
   indirect_question_adverbs = { "currently", "now", "presently", "still", "actually", "just" },
+  -- words said loosely before a value ("to like four times", "about 4x", "around 3 times"): the value said is
+  -- the one used
+  value_hedges = { "like", "about", "around", "roughly", "approximately", "maybe" },
   wait_hedges = { "about", "around", "roughly", "approximately", "nearly", "almost", "just", "maybe" },
   -- a time said in words the quantities do not read (G:spoken_durations): one unit after "a" or "an" ("a minute",
   -- "an hour and a half", "half a minute", "a quarter of an hour"; seconds each, lexicon.fractions for the parts),
