@@ -1743,7 +1743,9 @@ return {
   atc_units = { "shanwick", "gander", "scottish", "maastricht", "reykjavik", "santa maria", "new york", "shannon",
       "swanwick", "london", "manchester", "brest", "reims", "langen", "rhein", "karlsruhe", "padova", "bodo",
       "canarias", "moncton", "montreal", "edmonton", "anchorage", "oakland", "sondrestrom" },
-  airport_nouns = { "airport", "international", "intl", "airfield", "aerodrome" },
+  -- (with the kinds of airport said after its name, as "International" is: "Reagan National", "Lakefront Municipal")
+  airport_nouns = { "airport", "international", "intl", "airfield", "aerodrome", "national", "natl", "regional", "rgnl",
+    "municipal", "muni" },
   -- large airports' IATA codes (names.iata_airports) that are English words typed in lower case, never read as the
   -- code ("send it to sea", "add", "man"; in capitals, "SEA", they are the code)
   iata_words = { "add", "bah", "bog", "bud", "del", "den", "doh", "dub", "ham", "lax", "mad", "man", "sat", "sea",

@@ -15012,3 +15012,17 @@ do
   check_eq(ex("remove lufthansa cargo 8040"), "DEL GEC8040")
   check_eq(ex("lufthansa eight zero four zero descend FL90"), "ALT DLH8040 FL90")
 end
+-- an airport's kind said after its name ("Reagan National") is accounted as "International" is
+do
+  local us = squawk.sim.new()
+  if #us:airports_with_words("reagan") >= 1 then
+    check(us:exec("CRE AAL77 A319 38.55 -77.15 360 7000 230"))
+    local _, ex = set_up(us, {})
+    check_eq(ex("AAL77 set the destination to Reagan National"), "DEST AAL77 KDCA")
+    check_eq(ex("AAL77 origin reagan national"), "ORIG AAL77 KDCA")
+    -- the kind alone names no airport: asked
+    check(ex("AAL77 destination national"):find("^ASK") ~= nil)
+  else
+    print("skipped: an airport's kind after its name needs navdata (SQUAWK_NAVDATA)")
+  end
+end
