@@ -1756,7 +1756,9 @@ return {
   atc_units = { "shanwick", "gander", "scottish", "maastricht", "reykjavik", "santa maria", "new york", "shannon",
       "swanwick", "london", "manchester", "brest", "reims", "langen", "rhein", "karlsruhe", "padova", "bodo",
       "canarias", "moncton", "montreal", "edmonton", "anchorage", "oakland", "sondrestrom" },
-  airport_nouns = { "airport", "international", "intl", "airfield", "aerodrome" },
+  -- (with the kinds of airport said after its name, as "International" is: "Reagan National", "Lakefront Municipal")
+  airport_nouns = { "airport", "international", "intl", "airfield", "aerodrome", "national", "natl", "regional", "rgnl",
+    "municipal", "muni" },
   -- large airports' IATA codes (names.iata_airports) that are English words typed in lower case, never read as the
   -- code ("send it to sea", "add", "man"; in capitals, "SEA", they are the code)
   iata_words = { "add", "bah", "bog", "bud", "del", "den", "doh", "dub", "ham", "lax", "mad", "man", "sat", "sea",
@@ -2270,6 +2272,9 @@ return {
   clause_comma_prepositions = { on = true, at = true, ["in"] = true, with = true, to = true, from = true,
     ["for"] = true, by = true, over = true },
   indirect_question_adverbs = { "currently", "now", "presently", "still", "actually", "just" },
+  -- words said loosely before a value ("to like four times", "about 4x", "around 3 times"): the value said is
+  -- the one used
+  value_hedges = { "like", "about", "around", "roughly", "approximately", "maybe" },
   wait_hedges = { "about", "around", "roughly", "approximately", "nearly", "almost", "just", "maybe" },
   -- a time said in words the quantities do not read (G:spoken_durations): one unit after "a" or "an" ("a minute",
   -- "an hour and a half", "half a minute", "a quarter of an hour"; seconds each, lexicon.fractions for the parts),

@@ -609,9 +609,12 @@ return function(intent, rule, words)
   rule { "speed speedup speed-up", "dtmult", near = { 4, "of factor" }, when = function(g, i)
     return (g:word(i, "speedup speed-up") or g:word(i + 1, "up")) and not g:has_ref(1, #g.t + 1, "aircraft")
   end }
-  -- "speed it up 4x", "speed the sim up x2": a factor glued to its x, no aircraft named
+  -- "speed it up 4x", "speed the sim up x2": a factor glued to its x, no aircraft named ("speed this up to like
+  -- four times", "to about 4x": a hedge of lexicon.value_hedges before the factor widens the window by its word)
   rule { "speed", "dtmult", near = { 3, "up" }, when = function(g, i)
-    for _, q in ipairs(g:quantities(i + 1, math.min(#g.t + 1, i + 5))) do
+    local e = i + 5
+    for k = i + 1, i + 4 do if g:word(k, "@value_hedges") then e = e + 1 end end
+    for _, q in ipairs(g:quantities(i + 1, math.min(#g.t + 1, e))) do
       if q.kind == "mult" then return not g:has_ref(1, #g.t + 1, "aircraft") end
     end
     -- ("x2" reads like a callsign no aircraft has: no other aircraft named)
@@ -978,12 +981,23 @@ return function(intent, rule, words)
       -- ("conflict pair: CRECONFS INT9 ...": the command's name said after the noun sets the conflict up)
       and not g:word_in(i + 1, #g.t + 1, "creconfs")
   end }
-  -- "spawn 3 aircraft", "generate 5 aircraft at FL300, type B738", "sample 8 planes": a count of
-  -- aircraft with no callsign is random traffic
+  -- "spawn 3 aircraft", "generate 5 aircraft at FL300, type B738", "sample 8 planes", "create ten aircraft",
+  -- "spawn twenty five jets": a count of aircraft (in digits or in words, a whole number from 2) with no
+  -- callsign is random traffic ("create two aircraft: KLM11 ..., and KLM12 ...": the count of the new callsigns
+  -- said after it, no random traffic)
   rule { "create spawn generate add sample", "mcre", when = function(g, i)
     local k = g:skip_fillers(i + 1)
     local t = g.t[k]
-    return t ~= nil and t.kind == "number" and g:word(k + 1, "@counted_aircraft")
+    if t ~= nil and t.kind == "number" and g:word(k + 1, "@counted_aircraft") then return true end
+    local q = t ~= nil and t.number_word and g:quantities(k, k + 4)[1]
+    if not (q and q.b == k and q.kind == "plain" and not q.number.decimal and q.value >= 2
+        and g:word(q.e, "@counted_aircraft")) then
+      return false
+    end
+    for _, r in ipairs(g:refs_in(q.e + 1, #g.t + 1, "aircraft")) do
+      if not r.exists then return false end
+    end
+    return true
   end }
   -- ("creating N48TX, PC12, ..."; "set the seed before creating anything" names no creation)
   rule { "creating spawning", false, prev = { 1, "before after without" } }

@@ -15018,3 +15018,45 @@ do
     "ALT DAL77 FL300 ; ATALT DAL77 FL300 SPD DAL77 300")
   asked(ex("DAL77 climb FL300, when it's level, bump to 280"), "'bump to 280' names no kind of value")
 end
+
+-- Cycle 54 (fx2): a count of aircraft said in words is random traffic; a hedge before a clock's factor; an
+-- airline's cargo brand by its own name
+do
+  local _, ex = scene({ "CRE KLM12 B738 52.0 4.0 090 FL220 280" })
+  check_eq(ex("spawn six aircraft"), "MCRE 6")
+  check_eq(ex("generate twelve planes at FL250"), "MCRE 12 * FL250")
+  check_eq(ex("add thirty five jets, type B738"), "MCRE 35 B738")
+  -- the count of the new callsigns said after it: each created
+  check_eq(ex("create two aircraft: TST1 A320 at 52.1 4.2 heading 090 FL200 250, and TST2 A320 at 52.1 5.2 heading 270 FL200 250"),
+    "CRE TST1 A320 52.1 4.2 90 FL200 250 ; CRE TST2 A320 52.1 5.2 270 FL200 250")
+  -- "one aircraft" is no random traffic: asked for the creation's values
+  asked(ex("create one aircraft"), "one aircraft, no callsign")
+end
+do
+  local _, ex = scene({ "CRE KLM12 B738 52.0 4.0 090 FL220 280", "CRE BAW4 A320 52.4 4.4 180 FL200 270" })
+  check_eq(ex("could we speed things up to like eight times"), "DTMULT 8")
+  check_eq(ex("speed the sim up to about 3x"), "DTMULT 3")
+  check_eq(ex("speed KLM12 up to like 290"), "SPD KLM12 290")
+  -- no factor said: asked
+  asked(ex("speed this up like a lot"), "no factor said")
+end
+do
+  local _, ex = scene({ "CRE GEC8040 B77L 50.1 8.2 300 FL100 260", "CRE DLH8040 A321 50.3 8.9 230 FL110 260" })
+  check_eq(ex("lufthansa cargo eight zero four zero climb FL140"), "ALT GEC8040 FL140")
+  check_eq(ex("remove lufthansa cargo 8040"), "DEL GEC8040")
+  check_eq(ex("lufthansa eight zero four zero descend FL90"), "ALT DLH8040 FL90")
+end
+-- an airport's kind said after its name ("Reagan National") is accounted as "International" is
+do
+  local us = squawk.sim.new()
+  if #us:airports_with_words("reagan") >= 1 then
+    check(us:exec("CRE AAL77 A319 38.55 -77.15 360 7000 230"))
+    local _, ex = set_up(us, {})
+    check_eq(ex("AAL77 set the destination to Reagan National"), "DEST AAL77 KDCA")
+    check_eq(ex("AAL77 origin reagan national"), "ORIG AAL77 KDCA")
+    -- the kind alone names no airport: asked
+    check(ex("AAL77 destination national"):find("^ASK") ~= nil)
+  else
+    print("skipped: an airport's kind after its name needs navdata (SQUAWK_NAVDATA)")
+  end
+end
