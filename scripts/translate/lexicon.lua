@@ -663,6 +663,10 @@ return {
     bit = { word = "zone", prev = "vertical horizontal lateral" },
     -- ("stretch the look-ahead to 8 minutes", "stretch the bubble"): a setting lengthened; "stretch" said of
     -- anything else (an aircraft's downwind, its speed) stays as said, and asked
+    -- ("speed the whole thing up, ten times", "slow the whole lot down"): the simulation, said whole before the
+    -- particle of a rate's change; "the whole thing" anywhere else stays as said
+    thing = { word = "simulation", prev = "whole", next = "up down" },
+    lot = { word = "simulation", prev = "whole", next = "up down" },
     stretch = { { word = "extend", next = "the", after_next = "look-ahead lookahead look bubble zone protected" },
                 { word = "extend", next = "look-ahead lookahead look" } } },
   -- words that, typed before "=", name a setting or a value ("pz=5nm", "lookahead=300", "altitude=fl300"), beside

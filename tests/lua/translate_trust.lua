@@ -15000,3 +15000,12 @@ do
   asked(ex("KLM12, stretch to 280 knots"), "stretch said of an aircraft's speed")
   asked(ex("stretch the downwind"), "stretch said of no setting")
 end
+-- Cycle 54 (fx1): "the whole thing" / "the whole lot" before "up" or "down" is the simulation's rate
+do
+  local _, ex = scene({ "CRE KLM12 B738 52.0 4.0 090 FL220 280" })
+  check_eq(ex("could you speed the whole thing up, five times"), "DTMULT 5")
+  check_eq(ex("slow the whole lot down, half speed"), "DTMULT 0.5")
+  -- no rate said, or the whole thing not the simulation's: asked
+  asked(ex("speed the whole thing up"), "a speed-up with no rate")
+  asked(ex("cancel the whole thing"), "the whole thing cancelled")
+end
