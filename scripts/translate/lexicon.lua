@@ -655,8 +655,20 @@ return {
     velocity = { word = "speed", prev = "vertical" },
     -- (a collision volume, "the hitbox radius", "vertical hitbox 1000 ft": the protected zone)
     hitbox = { word = "protected zone" },
-    -- ("make the separation bubble 3 nm", "the safety bubble": the protected zone around each aircraft)
-    bubble = { word = "protected zone", prev = "separation safety" } },
+    -- ("make the separation bubble 3 nm", "the safety bubble", "make the bubble 3 miles": the protected zone around
+    -- each aircraft; with an aircraft named and no zone's value, the setting asks which value is meant)
+    bubble = { word = "protected zone", prev = "separation safety the" },
+    -- ("the vertical bit, 500 feet either side", "the horizontal bit, 3 miles": the zone's dimension named in plain
+    -- words; "a bit" of anything else stays as said)
+    bit = { word = "zone", prev = "vertical horizontal lateral" },
+    -- ("stretch the look-ahead to 8 minutes", "stretch the bubble"): a setting lengthened; "stretch" said of
+    -- anything else (an aircraft's downwind, its speed) stays as said, and asked
+    -- ("speed the whole thing up, ten times", "slow the whole lot down"): the simulation, said whole before the
+    -- particle of a rate's change; "the whole thing" anywhere else stays as said
+    thing = { word = "simulation", prev = "whole", next = "up down" },
+    lot = { word = "simulation", prev = "whole", next = "up down" },
+    stretch = { { word = "extend", next = "the", after_next = "look-ahead lookahead look bubble zone protected" },
+                { word = "extend", next = "look-ahead lookahead look" } } },
   -- words that, typed before "=", name a setting or a value ("pz=5nm", "lookahead=300", "altitude=fl300"), beside
   -- the registry's names and the shorthand
   setting_keys = { "pz", "rpz", "lookahead", "altitude", "speed", "heading", "level", "fl", "mach", "rate",

@@ -7589,7 +7589,7 @@ do
   local _, ex = scene({ "CRE N4471T PA28 33.3 -111.6 270 5500 110" })
   check_eq(ex("set the separation bubble to 4 nm"), "ZONER 4")
   check_eq(ex("make the safety bubble radius 2.5 nautical miles"), "ZONER 2.5")
-  asked(ex("make the bubble 4 nm"), "a bubble that is no separation's")
+  check_eq(ex("make the bubble 4 nm"), "ZONER 4")
 end
 
 -- Cycle 42 (g89b): "after/at/over FIX direct WPT": a request that opens with a waypoint of the route and gives a
@@ -15059,4 +15059,30 @@ do
   else
     print("skipped: an airport's kind after its name needs navdata (SQUAWK_NAVDATA)")
   end
+end
+
+-- Cycle 54 (fx1): the detection settings in plain words: "the bubble" (the protected zone), "the vertical bit" /
+-- "the horizontal bit" (its dimensions), "stretch" said of a setting
+do
+  local _, ex = scene({ "CRE KLM12 B738 52.0 4.0 090 FL220 280", "CRE BAW7 A320 52.3 4.4 270 FL240 290" })
+  check_eq(ex("can we shrink the bubble to 2.5 miles for this run"), "ZONER 2.5")
+  check_eq(ex("the bubble, 4 nm please"), "ZONER 4")
+  check_eq(ex("now the vertical bit, 800 feet either side"), "ZONEDH 800")
+  check_eq(ex("and the horizontal bit to 6 miles"), "ZONER 6")
+  check_eq(ex("stretch the look-ahead to 6 minutes"), "DTLOOK 360")
+  check_eq(ex("stretch the bubble to 7 miles"), "ZONER 7")
+  -- said of an aircraft, or with no value: asked
+  asked(ex("KLM12 is inside the bubble of BAW7"), "an aircraft in the bubble")
+  asked(ex("KLM12, the vertical bit, 1500 a minute"), "a vertical rate named as a zone's height")
+  asked(ex("KLM12, stretch to 280 knots"), "stretch said of an aircraft's speed")
+  asked(ex("stretch the downwind"), "stretch said of no setting")
+end
+-- Cycle 54 (fx1): "the whole thing" / "the whole lot" before "up" or "down" is the simulation's rate
+do
+  local _, ex = scene({ "CRE KLM12 B738 52.0 4.0 090 FL220 280" })
+  check_eq(ex("could you speed the whole thing up, five times"), "DTMULT 5")
+  check_eq(ex("slow the whole lot down, half speed"), "DTMULT 0.5")
+  -- no rate said, or the whole thing not the simulation's: asked
+  asked(ex("speed the whole thing up"), "a speed-up with no rate")
+  asked(ex("cancel the whole thing"), "the whole thing cancelled")
 end
