@@ -1324,6 +1324,7 @@ for abbr, readings in pairs(lexicon.typed_abbreviations) do
   for _, a in ipairs(readings.word and { readings } or readings) do
     table.insert(ABBREVIATIONS[abbr], { word = a.word, next = a.next and word_set(a.next, 1),
       prev = a.prev and word_set(a.prev, 1), not_prev = a.not_prev and word_set(a.not_prev, 1),
+      not_next = a.not_next and word_set(a.not_next, 1),
       after_next = a.after_next and word_set(a.after_next, 1), hundreds = a.hundreds })
   end
 end
@@ -1360,7 +1361,8 @@ local function typed_abbreviations(text)
     for j = 1, readings and #readings or 0 do
       local a = readings[j]
       if (not a.next or fits(a.next, k + 1)) and (not a.prev or fits(a.prev, k - 1))
-          and (not a.after_next or fits(a.after_next, k + 2)) and not (a.not_prev and fits(a.not_prev, k - 1)) then
+          and (not a.after_next or fits(a.after_next, k + 2)) and not (a.not_prev and fits(a.not_prev, k - 1))
+          and not (a.not_next and fits(a.not_next, k + 1)) then
         toks[k], changed = a.word .. punct, true
         if a.hundreds and punct == "" then in_hundreds(k + 1) end
         break
@@ -1573,6 +1575,20 @@ local function written_forms(text, world)
     end)
   end
   text = value_homophones(split_digits(text))
+  -- "dlh4ax up 2000", "down 1500 pls": a bare whole or half thousand typed after "up" or "down" is a change of
+  -- level by that many feet, as "up 2000 ft" (after a rate's or a speed's name, "vs up 2000", or before a unit,
+  -- it stays as typed; "up 20" stays too, and is asked)
+  where("%a%s+%d", "()%f[%a]([UuDd][PpOo][Ww]?[Nn]?)(%s+)(%d%d%d%d?)()%f[^%w%.]", function(at, dir, space, digits, e)
+    local d, n = dir:lower(), tonumber(digits)
+    if (d ~= "up" and d ~= "down") or n < 1000 or n % 500 ~= 0 then return nil end
+    local before = text:sub(1, at - 1):lower():match("(%a+)%s*$")
+    local unit = text:sub(e):match("^%s*(%a+)")
+    if (before and word_set(lexicon.typed_abbreviations.dn.not_prev, 1)[before])
+        or (unit and lexicon.level_split_units[unit:lower()]) then
+      return nil
+    end
+    return dir .. space .. digits .. " ft"
+  end)
   low = text:lower()
   where("%a%d", "%f[%w](%a+)(%d+)%f[^%w%.]", function(pre, digits)
     local w = sh[pre:lower()]
@@ -1640,9 +1656,14 @@ local function written_forms(text, world)
   where("nine her", "%f[%a]([Nn][Ii][Nn])[Ee] [Hh][Ee][Rr]%f[%A]", "%1er")
   where("\xC2\xB0", "(%d)\xC2\xB0(%s)", "%1 degrees%2")
   where("\xC2\xB0", "(%d)\xC2\xB0$", "%1 degrees")
-  -- a change typed with its sign and unit ("+20 kts", "-1000 ft"): that many faster/slower, up/down
-  where("[%+%-]%d", "%f[^%s]([%+%-])(%d+)%s*(%a+)%f[%A]", function(sign, n, unit)
+  -- a change typed with its sign and unit ("+20 kts", "-1000 ft"): that many faster/slower, up/down; in degrees
+  -- ("+30 deg", "-15 degrees") a turn right/left by that much (a number after it, "-33 deg 151 deg", makes it a
+  -- coordinate, left as typed)
+  where("[%+%-]%d", "%f[^%s]([%+%-])(%d+)%s*(%a+)%f[%A]()", function(sign, n, unit, e)
     local u = unit:lower()
+    if (u == "deg" or u == "degrees") and tonumber(n) <= 180 and not text:sub(e):match("^%s*[%+%-]?%d") then
+      return "turn " .. (sign == "+" and "right " or "left ") .. n .. " degrees"
+    end
     if u == "kts" or u == "kt" or u == "knots" then
       return n .. " " .. unit .. (sign == "+" and " faster" or " slower")
     end

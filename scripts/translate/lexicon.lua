@@ -558,7 +558,7 @@ return {
   -- "fl180" too; "#place": see pd; "#start": the line's first word or one after punctuation, for `prev`; "#end":
   -- none, the abbreviation closing its clause, for `next`);
   -- `after_next`, the same of the word after next (a callsign between: "trn hop7 rgt 20"); a list of such
-  -- readings is tried in order; `not_prev`, words that keep it as typed; `hundreds`, a verb of a level change
+  -- readings is tried in order; `not_prev` / `not_next`, words before / after it that keep it as typed; `hundreds`, a verb of a level change
   -- typed short, after which two typed digits of 30 to 99 are hundreds of feet as on a flight strip ("dn 60":
   -- 6000 ft; "dn 12", 1200 ft or 12000 with a digit lost, stays as typed, and asked); "#name", for `next`, a
   -- word of two to five letters in any case (a fix's ident typed in lower case). Elsewhere it stays as typed ("direct
@@ -587,6 +587,10 @@ return {
     rm = { word = "remove", prev = "#start" },
     del = { word = "delete", next = "rte route wpt waypoint" },
     rte = { word = "route" },
+    -- ("add wp sopok", "new wp ctr at 52.31n 4.76e": a waypoint typed short after a verb or an article; elsewhere,
+    -- or before a number, "add wp one two" (a user waypoint WP12), it stays as typed)
+    wp = { word = "waypoint", prev = "add new a the",
+           not_next = "#number zero one two three four five six seven eight nine niner" },
     lvl = { word = "level", not_prev = "dct direct to via add after over cross at" },
     vert = { word = "vertical", next = "sep separation speed spd rate" },
     sep = { word = "separation", prev = "vertical horizontal lateral min minimum" },
@@ -616,12 +620,19 @@ return {
     exp = { { word = "expect", next = "ils rnav vis visual loc rwy runway approach app #number" },
             { word = "expedite", prev = "#number", next = "#end" } },
     hvy = { word = "heavy" }, adn = { word = "and" },
+    -- (chat's "n" for "and" between a value and the next instruction, "desc fl160 n spd 250", "spd 210 n hdg
+    -- 090"; before a number it is a hemisphere, "52.3 n 4.7 e", and after a word no value, "ba 123 n", it stays)
+    n = { word = "and", prev = "#number",
+          next = "@instruction_nouns climb clb desc descend dsc turn contact ctc direct dct dir reduce increase vs" },
     -- (US en-route shorthand: "tl 20 trfc" traffic; "rchg fl240 spd 250", "lvg fl270 spd 270" a level reached or
     -- left; "vctr alb" vectors; "whats ur alt" your; "fph" fly present heading (after no number: "1800 fph" is a slip of fpm); "all acft"; "20 rt" a turn's side after its degrees; "corr" correction;
     -- "ff 1 hr"; "5 fnl" final; "trls off" the trails; "mv" move, opening the line)
     trfc = { word = "traffic" }, rchg = { word = "reaching" }, lvg = { word = "leaving" },
     fph = { word = "fly present heading", not_prev = "#number" }, acft = { word = "aircraft" },
-    rt = { word = "right", prev = "#number" }, lt = { word = "left", prev = "#number" },
+    rt = { word = "right", prev = "#number deg degrees" }, lt = { word = "left", prev = "#number deg degrees" },
+    -- (the side typed without its vowels after the degrees of a turn, "25 lft", "10 deg rgt")
+    lft = { word = "left", prev = "#number deg degrees" }, rgt = { word = "right", prev = "#number deg degrees" },
+    rght = { word = "right", prev = "#number deg degrees" },
     corr = { word = "correction" }, hr = { word = "hour", prev = "#number" }, hrs = { word = "hours", prev = "#number" },
     fnl = { word = "final" }, trls = { word = "trails" }, mv = { word = "move", prev = "#start" },
     vctr = { word = "vectors" }, vect = { word = "vectors" }, vects = { word = "vectors" },
@@ -634,7 +645,7 @@ return {
     -- (hesitations typed as said: "mach .. erm spd 270"; a typed "err" or "sry" is "sorry": what follows it
     -- corrects what it follows, "fl130 err fl150", "dir ridar err rokil")
     err = { word = "sorry" }, sry = { word = "sorry" }, erm = { word = "uh" }, umm = { word = "uh" }, uhh = { word = "uh" },
-    uhm = { word = "uh" }, ehm = { word = "uh" },
+    uhm = { word = "uh" }, ehm = { word = "uh" }, ahh = { word = "uh" }, ahm = { word = "uh" },
     -- (a French speaker's hesitation, said in English as "uh": "Swiss 77, euh, heading 240")
     euh = { word = "uh" }, heu = { word = "uh" },
     -- (Indian English "revert" for "reply", the aircraft's own value asked for: "revert your level", "revert with

@@ -1170,9 +1170,10 @@ return function(intent, rule, words)
     -- ("bel3kf add bitbu fl200", "add resmi fl60 210": the level typed straight after the name)
     local typed = r and g:quantities(r.e, #g.t + 1)[1]
     level = level or (typed and typed.b == r.e and typed.kind == "alt" and typed.fl)
-    -- ("CFG1KZ add RARUP at the end": the end of its route, where ADDWPT puts it)
-    local at_end = r and g:word(r.e, "at") and g:word(r.e + 1, "the") and g:word(r.e + 2, "end")
-    for x = at_end and r.e + 3 or #g.t + 1, #g.t do at_end = at_end and (g.t[x].kind == "punct" or g.t[x].filler) end
+    -- ("CFG1KZ add RARUP at the end", typed "add rarup at end": the end of its route, where ADDWPT puts it)
+    local the = r and g:word(r.e + 1, "the") and 1 or 0
+    local at_end = r and g:word(r.e, "at") and g:word(r.e + 1 + the, "end")
+    for x = at_end and r.e + 2 + the or #g.t + 1, #g.t do at_end = at_end and (g.t[x].kind == "punct" or g.t[x].filler) end
     local listed = last ~= r and (not tail or (tail.kind == "punct" and tail.text ~= "."))
     return flying and r ~= nil and (not nx or (nx.kind == "punct" and nx.text ~= ".") or level or at_end or listed)
       and not g:new_aircraft_follows(i) and not g:word_in(1, #g.t + 1, "@correction no")

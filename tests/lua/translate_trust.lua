@@ -15086,3 +15086,51 @@ do
   asked(ex("speed the whole thing up"), "a speed-up with no rate")
   asked(ex("cancel the whole thing"), "the whole thing cancelled")
 end
+
+-- Cycle 54 (f160): an experimenter's chat shorthand: a turn's side typed without vowels after its degrees
+do
+  local _, ex = scene({ "CRE KLM12 B738 52.0 4.0 090 FL220 280", "CRE BAW7 A320 52.3 4.4 270 FL240 290" })
+  check_eq(ex("klm12 30 lft"), "HDG KLM12 60 LEFT")
+  check_eq(ex("baw7 15 deg rgt pls"), "HDG BAW7 285 RIGHT")
+  check_eq(ex("klm12 20 degrees rt"), "HDG KLM12 110 RIGHT")
+  -- with no number before it no turn is read: asked
+  asked(ex("klm12 lft"), "a side with no degrees")
+end
+-- Cycle 54 (f160): chat's "n" for "and" between a value and the next instruction
+do
+  local _, ex = scene({ "CRE KLM12 B738 52.0 4.0 090 FL220 280" })
+  check_eq(ex("klm12 climb fl260 n spd 300"), "ALT KLM12 FL260 ; SPD KLM12 300")
+  check_eq(ex("klm12 spd 240 n turn left hdg 030"), "SPD KLM12 240 ; HDG KLM12 30 LEFT")
+  -- before a number it is a hemisphere, so a level then "n 250" is no instruction: asked
+  asked(ex("klm12 fl260 n 250"), "'n' before a number")
+  asked(ex("move klm12 52 n hdg 090"), "a latitude with no longitude")
+end
+-- Cycle 54 (f160): "up"/"down" before a bare whole or half thousand: a change of level by that many feet
+do
+  local _, ex = scene({ "CRE KLM12 B738 52.0 4.0 090 FL220 280" })
+  check_eq(ex("klm12 up 3000"), "ALT KLM12 25000")
+  check_eq(ex("klm12 down 1500 pls"), "ALT KLM12 20500")
+  -- a rate's name before it keeps the rate; a small number is no level: asked
+  check_eq(ex("klm12 vs down 1500"), "VS KLM12 -1500")
+  asked(ex("klm12 up 30"), "'up' with a small bare number")
+end
+-- Cycle 54 (f160): a turn typed as a signed number of degrees ("+30 deg")
+do
+  local _, ex = scene({ "CRE KLM12 B738 52.0 4.0 090 FL220 280" })
+  check_eq(ex("klm12 +40 deg"), "HDG KLM12 130 RIGHT")
+  check_eq(ex("klm12 -20 degrees"), "HDG KLM12 70 LEFT")
+  -- a signed number with no unit or name could be a level, a rate or a turn: asked
+  asked(ex("klm12 +40"), "a signed number with no unit")
+end
+-- Cycle 54 (f160): "add X at end" typed with no article, "wp" for waypoint after a verb, "ahh" a hesitation
+do
+  local _, ex = scene({ "CRE KLM12 B738 52.0 4.0 090 FL220 280" })
+  check_eq(ex("klm12 fl240 ahh no fl250"), "ALT KLM12 FL250")
+  local _, nx = navscene({ "CRE KLM12 B738 52.0 4.0 090 FL220 280", "ADDWPT KLM12 NIK" }, "a fix added at the end")
+  if nx then
+    check_eq(nx("klm12 add lopik at end"), "ADDWPT KLM12 LOPIK")
+    check_eq(nx("klm12 add wp lopik at end pls"), "ADDWPT KLM12 LOPIK")
+    -- "at end" followed by another value stays unclear: asked
+    asked(nx("klm12 add lopik at end fl200"), "a level after 'at end'")
+  end
+end
