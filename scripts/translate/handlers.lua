@@ -3254,6 +3254,12 @@ function m:at_distance(s)
         self:explain(q.e, p)  -- ("out from", "prior to")
         return "ATDIST " .. ids[1] .. " " .. name .. " " .. f.num(q.value)
       end
+      -- ("at 15nm from it descend 4000", "10 miles from touchdown reduce 180": a distance from words that name
+      -- no place squawk knows is a condition it cannot place either: asked, never dropped)
+      if q.kind == "dist" and p and self:word(k, "from") then
+        return self:need(string.format("'%s': from which place? squawk waits for a distance from a named fix, "
+          .. "navaid or airport (ATDIST).", self:raw(q.b, math.min(s.e, p + 1))))
+      end
       -- ("at 30 DME reduce 180", "at 12 miles descend 4000": a distance opening the instruction with no place it
       -- is counted from is a condition squawk cannot place, asked, never dropped)
       if q.kind == "dist" and self:word(q.b - 1, "at") and not p then
