@@ -15104,7 +15104,7 @@ do
   local _, ex = scene({ "CRE UAL77 A320 43.4 -79.2 310 FL230 280", "CRE ACA12 B38M 43.9 -80.0 090 FL230 280" })
   check_eq(ex("United 77, come left about 20 degrees, then climb FL260"), "HDG UAL77 290 LEFT ; ALT UAL77 FL260")
   check_eq(ex("Air Canada 12 bring it right roughly 40 degrees and descend FL200"), "HDG ACA12 130 RIGHT ; ALT ACA12 FL200")
-  check_eq(ex("ACA12 come left by approximately 10 degrees"), "HDG ACA12 080 LEFT")
+  check_eq(ex("ACA12 come left by approximately 10 degrees"), "HDG ACA12 80 LEFT")
   -- "right about" with no degrees and no number: no turn
   asked(ex("ACA12 descend FL200 right about now"), "right about now is no turn")
 end
