@@ -773,7 +773,7 @@ return function(intent, rule, words)
   -- loosely (lexicon.value_hedges) is the turn by that number
   rule { "left right", "hdg", not_prev = { 2, "turn heading" }, when = function(g, i)
     local k = g:word(i + 1, "by") and i + 2 or i + 1
-    return g:word(k, "@value_hedges approximately roughly") and g:number_at(k + 1) and g:word(k + 2, "degrees degree deg")
+    return g:word(k, "@value_hedges") and g:number_at(k + 1) and g:word(k + 2, "degrees degree deg")
   end }
   rule { "left right", "hdg", next = "onto", when = function(g, i) return g:number_at(i + 2) end }  -- "round left onto 290"
   rule { "point fly towards toward head send steer face facing", "hdg", near = { 4, "@compass" } }
