@@ -11472,8 +11472,10 @@ local function typed_places(text, world)
     local lead, word = parts[k][1], parts[k][2]
     local raw, rest = word:match("^(%a[%a%d]*)(.*)$")
     local w = raw and raw:lower()
+    -- (a three-letter ident ending in "s" that squawk knows only as an inflection, "from dus" as "due"'s, is no
+    -- known word)
     local named = w and slot and #w >= 3 and #w <= 5 and (not capitals or raw:match("^%u%l+$"))
-      and (not known_word(w) or (not KNOWN[w] and G.place_verbs[(out[#out] or ""):lower():match("(%a+)$") or ""]))
+      and (not known_word(w) or (not KNOWN[w] and ((#w == 3 and w:sub(3) == "s") or G.place_verbs[(out[#out] or ""):lower():match("(%a+)$") or ""])))
       and not ids[w] and not lexicon.shorthand[w] and near(w)
     k = k + 1
     -- ("cross e c k at FL190", "at j v l descend ...": an ident spelled letter by letter, the whole run of

@@ -3254,6 +3254,15 @@ function m:at_distance(s)
         self:explain(q.e, p)  -- ("out from", "prior to")
         return "ATDIST " .. ids[1] .. " " .. name .. " " .. f.num(q.value)
       end
+      -- ("at 15nm from it descend 4000", "UPS77 10 miles from touchdown reduce 180": a distance opening a
+      -- condition, after "at", "when", "once" or the callsign, from words that name no place squawk knows, is a
+      -- condition it cannot place either: asked, never dropped; "you're 15 miles from the marker" informs)
+      local opens = self:word(q.b - 1, "at when once")
+      for _, r in ipairs(opens and {} or self:refs_in(s.b, q.b, "aircraft")) do opens = opens or r.e == q.b end
+      if q.kind == "dist" and p and self:word(k, "from") and opens then
+        return self:need(string.format("'%s': from which place? squawk waits for a distance from a named fix, "
+          .. "navaid or airport (ATDIST).", self:raw(q.b, math.min(s.e, p + 1))))
+      end
       -- ("at 30 DME reduce 180", "at 12 miles descend 4000": a distance opening the instruction with no place it
       -- is counted from is a condition squawk cannot place, asked, never dropped)
       if q.kind == "dist" and self:word(q.b - 1, "at") and not p then

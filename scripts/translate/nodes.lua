@@ -480,7 +480,17 @@ function M.typed(state, ctx)
     -- "KL204 turn 30 right" is a turn of 30 degrees in English, heading 030 in TrafScript:
     -- a turn of one or two digits, with a side or none ("exp1 turn 30": 30 degrees or heading
     -- 030?), typed with the English word "turn", is English
-    if name == "HDG" and c:match("^(%S+)"):lower() == "turn" and c:match("^(%S+)") ~= "TURN"
+    local turn_typed = name == "HDG" and c:match("^(%S+)"):lower() == "turn" and c:match("^(%S+)") ~= "TURN"
+    -- "wzz6lj turn 250 left": three digits with no leading zero and a side read as a turn of that many
+    -- degrees as well as the heading: asked ("turn 090 left", a leading zero, is the heading)
+    local who, deg, way = c:match("^%S+[%s,]+(%S+)[%s,]+([1-3]%d%d)[%s,]+([LlRr]%a*)%s*$")
+    if turn_typed and who and tonumber(deg) <= 360 then
+      state.ask = string.format("Should %s turn %s by %s degrees, or fly heading %s?",
+        who:upper(), way:sub(1, 1):lower() == "l" and "left" or "right", deg, deg)
+      M.say(state, "typed", "asks: " .. state.ask)
+      return "ask"
+    end
+    if turn_typed
         and (c:match("^%S+[%s,]+%S+[%s,]+%d%d?[%s,]+[LlRr]%a*%s*$") or c:match("^%S+[%s,]+%S+[%s,]+%d%d?%s*$")) then
       return "english"
     end

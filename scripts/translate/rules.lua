@@ -769,6 +769,12 @@ return function(intent, rule, words)
     return false
   end }
   rule { "left right", "hdg", next = "by", not_prev = { 2, "turn" }, when = function(g, i) return g:number_at(i + 2) end }
+  -- "come left about 30 degrees", "bring it right by roughly 20 degrees": a side and a number of degrees said
+  -- loosely (lexicon.value_hedges) is the turn by that number
+  rule { "left right", "hdg", not_prev = { 2, "turn heading" }, when = function(g, i)
+    local k = g:word(i + 1, "by") and i + 2 or i + 1
+    return g:word(k, "@value_hedges") and g:number_at(k + 1) and g:word(k + 2, "degrees degree deg")
+  end }
   rule { "left right", "hdg", next = "onto", when = function(g, i) return g:number_at(i + 2) end }  -- "round left onto 290"
   rule { "point fly towards toward head send steer face facing", "hdg", near = { 4, "@compass" } }
   -- "fly towards Kempten", "turn the Lufthansa towards the Innsbruck airport", "fly in the direction of
@@ -2025,6 +2031,8 @@ return function(intent, rule, words)
     return false
   end }
   rule { "move mv reposition teleport shift place relocate tp teleported", "move" }
+  -- "could the Pascan be moved over Quebec airport", "can it get repositioned to ...": the passive asked for
+  rule { "moved repositioned relocated", "move", prev = { 1, "be get" } }
   -- "warp KLM58 to GAME2": an aircraft warped to a place ("time warp" is none)
   rule { "warp", "move", when = function(g, i) return g:has_ref(i + 1, i + 3, "aircraft") and g:followed_by(i, 4, "to") end }
   -- "pop QFA12 over to -27.3 152.8": an aircraft flying "popped over to" a place is moved there

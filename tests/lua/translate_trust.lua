@@ -15134,3 +15134,48 @@ do
     asked(nx("klm12 add lopik at end fl200"), "a level after 'at end'")
   end
 end
+
+-- Cycle 54 (hzf): a typed "turn" with three digits and a side: a turn of that many degrees or the heading? Asked
+do
+  local _, ex = scene({ "CRE WZZ7AB A321 51.3 5.7 290 FL110 260", "CRE KLM44 B738 51.6 5.6 030 FL090 240" })
+  asked(ex("wzz7ab turn 240 left"), "typed turn of 240 left: degrees or heading")
+  asked(ex("klm44 turn 110 right"), "typed turn of 110 right: degrees or heading")
+  asked(ex("klm44 turn 300 l"), "typed turn 300 l")
+  -- a leading zero is the heading, capitals TrafScript, no side the heading
+  check_eq(ex("klm44 turn 080 right"), "HDG klm44 080 right")
+  check_eq(ex("WZZ7AB TURN 240 LEFT"), "HDG WZZ7AB 240 LEFT")
+  check_eq(ex("wzz7ab turn 240"), "HDG wzz7ab 240")
+end
+-- Cycle 54 (hzf): a side and a number of degrees said loosely ("come left about 30 degrees") is the turn; with a
+-- level after it, neither is dropped
+do
+  local _, ex = scene({ "CRE UAL77 A320 43.4 -79.2 310 FL230 280", "CRE ACA12 B38M 43.9 -80.0 090 FL230 280" })
+  check_eq(ex("United 77, come left about 20 degrees, then climb FL260"), "HDG UAL77 290 LEFT ; ALT UAL77 FL260")
+  check_eq(ex("Air Canada 12 bring it right roughly 40 degrees and descend FL200"), "HDG ACA12 130 RIGHT ; ALT ACA12 FL200")
+  check_eq(ex("ACA12 come left by approximately 10 degrees"), "HDG ACA12 80 LEFT")
+  -- "right about" with no degrees and no number: no turn
+  asked(ex("ACA12 descend FL200 right about now"), "right about now is no turn")
+end
+-- Cycle 54 (hzf): "be moved" / "get repositioned" asks for a move (MOVE), never only its level
+do
+  local _, ex = scene({ "CRE PSC55 SF34 46.9 -71.7 120 6000 190" })
+  check_eq(ex("could the Pascan be moved to 46.8 -71.4 at 4000 feet"), "MOVE PSC55 46.8 -71.4 4000")
+  check_eq(ex("can PSC55 get repositioned to 47.0 -71.2"), "MOVE PSC55 47 -71.2")
+  -- where it goes not understood: asked, not the level alone
+  asked(ex("could the Pascan be moved over the big lake at 3000 feet"), "a move to a place not known")
+  -- "was moved" describes: no move
+  check_eq(ex("the Pascan was moved earlier, climb 8000"), "ALT PSC55 8000")
+end
+-- Cycle 54 (hzf): a distance condition from a place typed in lower case ("from dus", an ident read as a plural)
+-- is ATDIST; from words that name no place it is asked, never dropped
+do
+  local _, ex = navscene({ "CRE DLH4K CRJ9 51.1 7.1 320 FL090 250", "CRE UPS77 B763 51.0 6.5 030 FL200 280" },
+    "distance conditions from typed idents")
+  if ex then
+    check_eq(ex("dlh4k at 20nm from dus desc 5000"), "ATDIST DLH4K DUS 20 ALT DLH4K 5000")
+    check_eq(ex("ups77 12nm from dus -> fl100"), "ATDIST UPS77 DUS 12 ALT UPS77 FL100")
+    asked(ex("dlh4k at 15nm from it desc 4000"), "a distance from 'it'")
+    asked(ex("ups77 10 miles from touchdown reduce 180"), "a distance from touchdown")
+    asked(ex("dlh4k at 15nm from the airport desc 4000"), "a distance from 'the airport'")
+  end
+end
