@@ -146,8 +146,8 @@ bool hyphen_number_part(const Token& t) {
 
 // A word joined by hyphens whose every part is a hyphen_number_part ("forty-five", "four-fifty-one",
 // "thirty-three-oh-two", "one-double-zero", "two-four-zero") is those words said apart: the parts
-// lose their glue (no part is noise between digits), and an "oh"/"o" part before a digit word is
-// the digit zero. A word with any other part ("nine-year", "one-way") keeps its glue.
+// lose their glue (no part is noise between digits), and an "oh"/"o" part after the first is the
+// digit zero ("two-two-oh" = 220). A word with any other part ("nine-year", "one-way") keeps its glue.
 void words_of_hyphened_numbers(std::vector<Token>& t) {
   for (size_t b = 0; b < t.size();) {
     size_t e = b + 1;
@@ -156,7 +156,7 @@ void words_of_hyphened_numbers(std::vector<Token>& t) {
     for (size_t k = b; numbers && k < e; ++k) numbers = hyphen_number_part(t[k]);
     for (size_t k = b; numbers && k < e; ++k) {
       t[k].glued = false;
-      if (k > b && (t[k].text == "oh" || t[k].text == "o") && digit_at(t, k + 1) >= 0) t[k].text = "zero";
+      if (k > b && (t[k].text == "oh" || t[k].text == "o")) t[k].text = "zero";
     }
     b = e;
   }

@@ -49,7 +49,7 @@ struct SpokenNumber {
 // digit at the end ("speed two once" = 21). Rewrites those tokens' text in
 // place. A word joined by hyphens of number words only ("forty-five",
 // "four-fifty-one", "three-oh-two", "one-double-zero") is those words said
-// apart ("oh"/"o" before a digit word is zero). A lone lower-case letter, or
+// apart ("oh"/"o" after the first part is zero). A lone lower-case letter, or
 // another word hyphen-glued to a digit word, between two digit words ("three
 // f four zero", "one nine-year zero") is noise and is removed.
 void fold_digit_homophones(std::vector<Token>& toks);

@@ -11706,7 +11706,7 @@ end
 
 -- A number said in words joined by hyphens ("four-fifty-one", "three-oh-five", "thirty-three-oh-two",
 -- "one-double-zero", "six-o-seven"): a word whose every hyphen-separated part is a number word (NUMBER_WORDS,
--- lexicon.hyphen_number_parts) is those words apart, read as the same words said with spaces, so that the
+-- lexicon.hyphen_number_parts) is those words apart ("oh"/"o" after the first part a zero), read as the same words said with spaces, so that the
 -- passes over the text before the lexer (self-corrections "... sorry, three-one-zero knots") read its number
 -- words (the lexer splits such a word alike: number_words.cpp fold_digit_homophones). A word with any other
 -- part ("nine-year", "one-way", "737-800") stays as written.
@@ -11718,7 +11718,8 @@ function G.number_words_apart(text)
       local p = part:lower()
       if not (NUMBER_WORDS[p] or lexicon.hyphen_number_parts[p]) then return nil end
     end
-    return (w:gsub("%-", " "))
+    -- (an "oh"/"o" after the first part, closing included, is a zero: "two-two-oh" = 220)
+    return (w:gsub("%-[Oo][Hh]?%f[^%a]", " zero"):gsub("%-", " "))
   end))
 end
 -- A zero said "oh" or "o" inside a number ("heading three oh five", "JetBlue six o seven", "double oh seven"):

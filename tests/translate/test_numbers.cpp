@@ -272,7 +272,8 @@ TEST_CASE("a word joined by hyphens of number words only is those words apart") 
   CHECK(read("squawk six-o-seven") == "squawk six zero seven");
   CHECK(read("level two-four-zero") == "level two four zero");
   CHECK(read("one-double-zero") == "one double zero");
-  CHECK(read("two-two-oh") == "two two oh");                  // "oh" closing stays
+  CHECK(read("two-two-oh") == "two two zero");                // closing too
+  CHECK(read("oh-two") == "oh two");                          // not after a part
   CHECK(read("one nine-year zero") == "one nine zero");       // another part: the word is noise
   CHECK(read("one-way street") == "one way~ street");         // not between digits: kept, glued
   auto t = lex("forty-five point three");
