@@ -137,6 +137,31 @@ constexpr std::array<Homophone, 10> kHeard = {{{"to", "two", 2},
                                                {"a", "eight", 8},
                                                {"fine", "five", 5}}};
 
+// A part of a number said in words joined by hyphens: a number word, a zero said "oh"/"o", or a
+// digit said twice or three times ("double", "triple").
+bool hyphen_number_part(const Token& t) {
+  return t.kind == TokKind::kWord &&
+         (is_number_word(t) || t.text == "oh" || t.text == "o" || t.text == "double" || t.text == "triple");
+}
+
+// A word joined by hyphens whose every part is a hyphen_number_part ("forty-five", "four-fifty-one",
+// "thirty-three-oh-two", "one-double-zero", "two-four-zero") is those words said apart: the parts
+// lose their glue (no part is noise between digits), and an "oh"/"o" part after the first is the
+// digit zero ("two-two-oh" = 220). A word with any other part ("nine-year", "one-way") keeps its glue.
+void words_of_hyphened_numbers(std::vector<Token>& t) {
+  for (size_t b = 0; b < t.size();) {
+    size_t e = b + 1;
+    while (e < t.size() && t[e].glued && t[e].kind == TokKind::kWord) ++e;
+    bool numbers = e - b >= 2;
+    for (size_t k = b; numbers && k < e; ++k) numbers = hyphen_number_part(t[k]);
+    for (size_t k = b; numbers && k < e; ++k) {
+      t[k].glued = false;
+      if (k > b && (t[k].text == "oh" || t[k].text == "o")) t[k].text = "zero";
+    }
+    b = e;
+  }
+}
+
 }  // namespace
 
 int heard_digit(const std::string& w) {
@@ -147,6 +172,7 @@ int heard_digit(const std::string& w) {
 
 void fold_digit_homophones(std::vector<Token>& t) {
   auto digit = [&](size_t i) { return i < t.size() && t[i].kind == TokKind::kWord && digit_word(t[i].text) >= 0; };
+  words_of_hyphened_numbers(t);
   for (size_t i = 1; i + 1 < t.size();) {
     const std::string& r = t[i].raw;
     const bool letter = r.size() == 1 && r[0] >= 'b' && r[0] <= 'z' && r != "i";

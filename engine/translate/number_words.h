@@ -47,9 +47,11 @@ struct SpokenNumber {
 // "ate"/"a" eight, "fine" five ("two on zero" = 210, "one a four" = 184); "fine" also after two digits
 // ("three three fine" = 335); "won"/"once"/"ones"/"ate"/"fine" also after a
 // digit at the end ("speed two once" = 21). Rewrites those tokens' text in
-// place. A lone lower-case letter, or a word hyphen-glued to a digit word,
-// between two digit words ("three f four zero", "one nine-year zero") is
-// noise and is removed.
+// place. A word joined by hyphens of number words only ("forty-five",
+// "four-fifty-one", "three-oh-two", "one-double-zero") is those words said
+// apart ("oh"/"o" after the first part is zero). A lone lower-case letter, or
+// another word hyphen-glued to a digit word, between two digit words ("three
+// f four zero", "one nine-year zero") is noise and is removed.
 void fold_digit_homophones(std::vector<Token>& toks);
 
 // The digit a word that sounds like one stands for, as fold_digit_homophones

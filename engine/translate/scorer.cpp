@@ -74,6 +74,7 @@ bool same_arg(const std::string& a, const std::string& b, Arg kind) {
     return u && v && std::fabs(*u - *v) <= tol;
   };
   if (a.empty() || b.empty()) return a.empty() && b.empty();
+  if (text::iequals(a, b)) return true;
   switch (kind) {
     case Arg::kAlt: {
       auto u = alt_ft(a), v = alt_ft(b);
@@ -116,6 +117,41 @@ bool same_arg(const std::string& a, const std::string& b, Arg kind) {
   return false;
 }
 
+// Argument kinds of `args` (after the command name) by the command registry's type list: an
+// altitude, a speed, a heading, a vertical speed or a time compared as one (FL080 = FL80 = 8000 ft
+// wherever the registry declares an altitude); a position (latlon, wpt) given as two numbers is a
+// latitude and a longitude, given as a name one word; every other type a number or a word. Empty
+// when the registry does not know the command.
+std::vector<Arg> registry_kinds(const std::string& cmd, const std::vector<std::string>& args) {
+  const auto* d = command::Registry::instance().find(cmd);
+  if (!d || d->signature.params.empty()) return {};
+  const auto& params = d->signature.params;
+  auto has = [](const command::ParamSpec& p, command::ArgType t) {
+    return std::find(p.alternatives.begin(), p.alternatives.end(), t) != p.alternatives.end();
+  };
+  std::vector<Arg> out;
+  for (size_t i = 0, k = 0; i < args.size(); ++k) {
+    if (k >= params.size() && !d->signature.repeat_last) break;
+    const auto& p = params[std::min(k, params.size() - 1)];
+    using T = command::ArgType;
+    if ((has(p, T::kLatLon) || has(p, T::kWpt)) && text::to_double(args[i]) && i + 1 < args.size() &&
+        text::to_double(args[i + 1])) {
+      out.push_back(Arg::kLat);
+      out.push_back(Arg::kLon);
+      i += 2;
+      continue;
+    }
+    out.push_back(has(p, T::kAlt)    ? Arg::kAlt
+                  : has(p, T::kSpd)  ? Arg::kSpd
+                  : has(p, T::kHdg)  ? Arg::kHdg
+                  : has(p, T::kVspd) ? Arg::kVs
+                  : has(p, T::kTime) ? Arg::kTime
+                                     : Arg::kNum);
+    ++i;
+  }
+  return out;
+}
+
 // Argument kinds after the command name; the last kind repeats.
 std::vector<Arg> arg_kinds(const std::string& cmd, const std::vector<std::string>& args) {
   using A = Arg;
@@ -124,7 +160,6 @@ std::vector<Arg> arg_kinds(const std::string& cmd, const std::vector<std::string
       return {A::kWord, A::kWord, A::kWord, A::kHdg, A::kAlt, A::kSpd};
     return {A::kWord, A::kWord, A::kLat, A::kLon, A::kHdg, A::kAlt, A::kSpd};
   }
-  if (cmd == "MOVE") return {A::kWord, A::kLat, A::kLon, A::kAlt, A::kHdg, A::kSpd, A::kNum};
   if (cmd == "ALT") return {A::kWord, A::kAlt, A::kMagnitude};  // ALT reads |vspd|
   if (cmd == "SPD") return {A::kWord, A::kSpd};
   if (cmd == "VS") return {A::kWord, A::kVs};
@@ -139,6 +174,8 @@ std::vector<Arg> arg_kinds(const std::string& cmd, const std::vector<std::string
       return {A::kWord, A::kLat, A::kLon, A::kAlt, A::kSpd, A::kWord};
     return {A::kWord, A::kWord, A::kAlt, A::kSpd, A::kWord};
   }
+  auto kinds = registry_kinds(cmd, args);
+  if (!kinds.empty()) return kinds;
   return {A::kNum};
 }
 

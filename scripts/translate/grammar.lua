@@ -11729,9 +11729,10 @@ end
 
 -- A number said in words joined by hyphens ("four-fifty-one", "three-oh-five", "thirty-three-oh-two",
 -- "one-double-zero", "six-o-seven"): a word whose every hyphen-separated part is a number word (NUMBER_WORDS,
--- lexicon.hyphen_number_parts) is those words apart, read as the same words said with spaces (the lexer
--- would drop a hyphen-glued word between two digits as noise: "four-fifty-one" read 41). A word with any
--- other part ("nine-year", "one-way", "737-800") stays as written.
+-- lexicon.hyphen_number_parts) is those words apart ("oh"/"o" after the first part a zero), read as the same words said with spaces, so that the
+-- passes over the text before the lexer (self-corrections "... sorry, three-one-zero knots") read its number
+-- words (the lexer splits such a word alike: number_words.cpp fold_digit_homophones). A word with any other
+-- part ("nine-year", "one-way", "737-800") stays as written.
 function G.number_words_apart(text)
   if not text:find("%a%-%a") then return text end
   return (text:gsub("%f[%w][%a%-]+%f[^%w%-]", function(w)
@@ -11740,7 +11741,8 @@ function G.number_words_apart(text)
       local p = part:lower()
       if not (NUMBER_WORDS[p] or lexicon.hyphen_number_parts[p]) then return nil end
     end
-    return (w:gsub("%-", " "))
+    -- (an "oh"/"o" after the first part, closing included, is a zero: "two-two-oh" = 220)
+    return (w:gsub("%-[Oo][Hh]?%f[^%a]", " zero"):gsub("%-", " "))
   end))
 end
 -- A zero said "oh" or "o" inside a number ("heading three oh five", "JetBlue six o seven", "double oh seven"):

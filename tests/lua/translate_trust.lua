@@ -15179,3 +15179,23 @@ do
     asked(ex("dlh4k at 15nm from the airport desc 4000"), "a distance from 'the airport'")
   end
 end
+
+-- Cycle 54 (hzn): a number said in words joined by hyphens is its words apart, in every value: never a part
+-- dropped as noise between digits ("forty-five point three" read 0.3), an "oh" after the first part a zero
+do
+  local _, ex = scene({ "CRE KLM12 B738 52.0 4.0 090 FL100 250" })
+  check_eq(ex("define waypoint GATE2 at forty-five point three north, seventy-four point seven west"),
+    "DEFWPT GATE2 45.3 -74.7")
+  check_eq(ex("move KLM12 to fifty-two point one north, four point three east"), "MOVE KLM12 52.1 4.3")
+  check_eq(ex("KLM12 climb to one-two-thousand feet"), "ALT KLM12 12000")
+  check_eq(ex("KLM12 climb flight level three-thirty"), "ALT KLM12 FL330")
+  check_eq(ex("KLM12 turn left heading one-eight-zero"), "HDG KLM12 180 LEFT")
+  check_eq(ex("KLM12 heading thirty-three-oh"), "HDG KLM12 330")
+  check_eq(ex("KLM12 turn right heading two-two-oh"), "HDG KLM12 220 RIGHT")
+  check_eq(ex("KLM12 speed two-twenty-five knots"), "SPD KLM12 225")
+  check_eq(ex("KLM12 maintain two-hundred-and-ten knots"), "SPD KLM12 210")
+  check_eq(ex("KLM12 descend to four-thousand-five-hundred feet"), "ALT KLM12 4500")
+  -- a hyphened word with another part between digits stays noise; a descent to a level above: asked
+  check_eq(ex("KLM12 climb one nine-year zero"), "ALT KLM12 FL190")
+  asked(ex("KLM12 descend flight level two-four-zero"), "a descent to a level above")
+end

@@ -257,6 +257,32 @@ TEST_CASE("digit homophones between digits are digits") {
   CHECK(read("it is too late") == "it is too late");
 }
 
+TEST_CASE("a word joined by hyphens of number words only is those words apart") {
+  auto read = [](const char* s) {
+    auto t = lex(s);
+    fold_digit_homophones(t);
+    std::string words;
+    for (const auto& tok : t) words += (words.empty() ? "" : " ") + tok.text + (tok.glued ? "~" : "");
+    return words;
+  };
+  CHECK(read("GATE2 at forty-five point three north") == "gate2 at forty five point three north");
+  CHECK(read("climb two four-fifty-one") == "climb two four fifty one");
+  CHECK(read("frequency one-two-thousand") == "frequency one two thousand");
+  CHECK(read("heading thirty-three-oh-two") == "heading thirty three zero two");
+  CHECK(read("squawk six-o-seven") == "squawk six zero seven");
+  CHECK(read("level two-four-zero") == "level two four zero");
+  CHECK(read("one-double-zero") == "one double zero");
+  CHECK(read("two-two-oh") == "two two zero");                // closing too
+  CHECK(read("oh-two") == "oh two");                          // not after a part
+  CHECK(read("one nine-year zero") == "one nine zero");       // another part: the word is noise
+  CHECK(read("one-way street") == "one way~ street");         // not between digits: kept, glued
+  auto t = lex("forty-five point three");
+  fold_digit_homophones(t);
+  auto n = read_number(t, 0);
+  REQUIRE(n.has_value());
+  CHECK(n->value == doctest::Approx(45.3));
+}
+
 TEST_CASE("a speed said after thousand is a value of its own") {
   auto t = lex("one zero thousand two hundred and fifty knots");
   auto n = read_number(t, 0);

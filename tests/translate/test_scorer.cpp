@@ -65,6 +65,12 @@ TEST_CASE("AT's constraint compares as an altitude or a speed") {
   CHECK(same_command("AT SWR18L KLO ALT 8000", "AT SWR18L KLO ALT FL080"));
   CHECK(same_command("AT SWR18L KLO SPD 250", "AT SWR18L KLO SPD 250"));
   CHECK_FALSE(same_command("AT SWR18L KLO ALT FL90", "AT SWR18L KLO ALT FL080"));
+  // every altitude argument the registry declares: FL080 = FL80 = 8000 ft, by the argument's place
+  CHECK(same_command("MOVE JAF3KM BUB FL080 250", "MOVE JAF3KM BUB FL80 250"));
+  CHECK(same_command("MOVE JAF3KM 52.1 4.2 FL080 250", "MOVE JAF3KM 52.1 4.2 8000 250"));
+  CHECK_FALSE(same_command("MOVE JAF3KM BUB FL090 250", "MOVE JAF3KM BUB FL80 250"));
+  CHECK_FALSE(same_command("MOVE JAF3KM BUB FL080 250", "MOVE JAF3KM SPY FL80 250"));
+  CHECK(same_command("ATALT KL1 FL080 SPD KL1 250", "ATALT KL1 FL80 SPD KL1 250"));
   CHECK_FALSE(same_command("AT SWR18L KLO SPD 250", "AT SWR18L KLO ALT 250"));
 }
 
