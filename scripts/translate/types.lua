@@ -284,6 +284,13 @@ local TEENS = { ten = "10", eleven = "11", twelve = "12", thirteen = "13", fourt
 local TENS = { twenty = "2", thirty = "3", forty = "4", fifty = "5", sixty = "6", seventy = "7", eighty = "8",
                ninety = "9" }
 local LETTERS = { a = "airbus", b = "boeing", e = "embraer" }
+-- Designator letters that are also English words ("at" of AT45, "be" of BE40): read as a designator's letters
+-- before its digits said in words only after an article or "type" ("an at seventy-six", "the be forty"); otherwise
+-- the word is the preposition or the verb, and the number after it a value ("waypoint GATE2 at forty-five point
+-- three north")
+local WORD_PREFIXES = { at = true, be = true, an = true, as = true, ["do"] = true, ["in"] = true, is = true, it = true,
+  on = true, ["or"] = true, so = true, to = true, up = true, us = true, we = true }
+local PREFIX_OPENERS = { a = true, an = true, the = true, type = true }
 -- A variant said as one number after its family ("787 9", "seven eight seven nine", "787 ten"): its digits, or ""
 local function short_variant(w)
   return DIGITS[w] or TEENS[w] or (w:match("^%d%d?$")) or ""
@@ -358,7 +365,8 @@ function M.spoken(text, built, phonetic)
     if not maker and (w == "airbus" or w == "boeing" or w == "embraer" or built.makers[w]) then
       maker, lead = w, w .. " "
       if w == "airbus" and toks[k] and toks[k]:lower() == "a" then lead, k = "a", k + 1 end
-    elseif not maker and built.prefixes[w] then
+    elseif not maker and built.prefixes[w]
+        and not (WORD_PREFIXES[w] and not PREFIX_OPENERS[(toks[i - 1] or ""):lower():gsub("%p+$", "")]) then
       maker, lead, prefix = w, w, true
     end
     local best

@@ -15199,3 +15199,19 @@ do
   check_eq(ex("KLM12 climb one nine-year zero"), "ALT KLM12 FL190")
   asked(ex("KLM12 descend flight level two-four-zero"), "a descent to a level above")
 end
+
+-- Cycle 54 (lead): a designator's letters that are an English word ("at" of AT45, "be" of BE40) open a type said in
+-- words only after an article or "type"; otherwise the number after them is a value
+do
+  local _, ex = scene({ "CRE ACA12 A320 45.0 -74.0 090 FL100 250" })
+  check_eq(ex("please define a new waypoint, call it GATE2, at forty-five point three north, seventy-four point seven west"),
+    "DEFWPT GATE2 45.3 -74.7")
+  check_eq(ex("create a new aircraft ACA7 A320 at forty five north seventy four west heading 090 FL100 250 knots"),
+    "CRE ACA7 A320 45 -74 90 FL100 250")
+  check_eq(ex("create ACA7, an at forty five, at 45 north 74 west heading 090 FL100 250 knots"),
+    "CRE ACA7 AT45 45 -74 90 FL100 250")
+  check_eq(ex("create ACA7 type at seventy six at 45 north 74 west heading 090 FL100 250 knots"),
+    "CRE ACA7 AT76 45 -74 90 FL100 250")
+  -- no article: "be forty" is no type, and the creation lacks one: asked
+  asked(ex("create ACA7 be forty at 45 north 74 west heading 090 FL100 250 knots"), "'be forty' with no article")
+end
