@@ -2263,6 +2263,11 @@ return {
   -- verbs of a request to be told something ("tell me the destination of EIN655", "let me know the origin")
   -- the modal verbs that open a polite question asking for an instruction ("could you please resume the run?")
   polite_openings = { "could", "can", "would", "will" },
+  -- longer openings of a polite request that an aircraft named next is to act on (grammar.lua G:request_opening:
+  -- "would it be possible to have the Porter, once it reaches OAKVL, turn ...", "I wonder if the Jazz, once ...")
+  request_openings = { "would it be possible to have", "would it be possible for", "is it possible to have",
+      "is it possible for", "could you have", "could you get", "can you have", "can you get", "would you have",
+      "i wonder if", "i was wondering if", "we wonder if", "we were wondering if" },
   -- the first words of a note's text that make it a question of its own ("... saying are you ready?"): its closing
   -- "?" may be the note's or the request's (handlers_other.lua m:echo)
   echo_question_openers = { "who", "what", "where", "when", "why", "how", "which", "is", "are", "am", "was", "were",
