@@ -251,6 +251,10 @@ return {
     courtesy_phrases = { "pull up", "when you get a chance", "when you can", "when you're ready", "when ready",
         "when able", "if able", "if you can", "if you could", "if you would", "if possible",
         "if you don't mind", "if it's not too much trouble", "as soon as possible", "as soon as you can",
+        -- the listener's convenience and leave said whole ("..., please, when convenient", "if that's alright with you")
+        "when convenient", "whenever convenient", "when it's convenient", "when it is convenient", "at your convenience",
+        "if that's alright with you", "if that's all right with you", "if that's alright", "if that's all right",
+        "if that is alright", "if that is all right", "if that's okay", "if that's ok",
         -- a polite speaker's hedges on the whole request ("..., if that is at all possible", "would it be too much
         -- trouble to ask ...", "if it's no trouble", "if that's a thing", "of course", "we don't need it after all")
         "if that is at all possible", "if at all possible", "if that is possible", "if that's possible",

@@ -15108,3 +15108,11 @@ do
   check_eq(ex("Could KLM12, when it's down at FL200... no, I mean, could it descend to FL200, and when it's there, "
     .. "slow to 250?"), "ALT KLM12 FL200 ; ATALT KLM12 FL200 SPD KLM12 250")
 end
+-- Cycle 54 (f159): "when convenient", "at your convenience", "if that's alright with you": courtesy, said whole
+do
+  local _, ex = scene({ "CRE KLM12 B738 52.0 4.0 090 FL220 280", "CRE BAW7 A320 52.3 4.4 270 FL240 290" })
+  check_eq(ex("Could KLM12 descend to flight level two zero zero, please, when convenient?"), "ALT KLM12 FL200")
+  check_eq(ex("BAW7 climb FL260 whenever convenient, if that's all right"), "ALT BAW7 FL260")
+  -- no level said: asked as "descend when ready" is
+  asked(ex("Could KLM12 descend when convenient?"), "a descent at the listener's convenience with no level")
+end
