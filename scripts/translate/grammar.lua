@@ -3017,7 +3017,7 @@ end
 -- it (LINKING, with the forms of "be" and "have"), and a verb of reaching, passing or slowing.
 local ARRIVING = {}
 for w in ([[it it's its he he's she she's they they're you you're you've is are 's 're has have 've had been be
-  pass passes passed passing reach reaches reached reaching hit hits hitting get gets got getting to at level
+  pass passes passed passing past reach reaches reached reaching hit hits hitting get gets got getting to at level
   through cross crosses crossed crossing down up below above under over drop drops dropped climbs climbed
   descends descended slows slowed slow accelerates accelerated decelerates decelerated out of leaves left
   leaving]]):gmatch("%S+") do ARRIVING[w] = true end
@@ -3357,12 +3357,34 @@ function G:at_speed(s)
   return "ATSPD " .. ids[1] .. " " .. (q.kind == "mach" and f.mach(q.value) or f.int(q.value))
 end
 
+-- The position after a polite or wishing opening at i that asks for what the aircraft named after it should do
+-- ("would it be possible to have the Porter, ...": lexicon.request_openings; "could the Porter, once it reaches
+-- OAKVL, turn ...": lexicon.polite_openings; "I'd like the Rouge, once ...", "we would like":
+-- lexicon.wish_before_like words, then "like"), skipping fillers after it; else i.
+function G:request_opening(i)
+  for _, p in ipairs(lexicon.request_openings) do
+    local k = i
+    for w in p:gmatch("%S+") do
+      if not self:word(k, w) then k = nil break end
+      k = k + 1
+    end
+    if k then return self:skip_fillers(k) end
+  end
+  if self:word(i, "@polite_openings") then return self:skip_fillers(i + 1) end
+  local k = i
+  while k < i + 3 and self:word(k, "@wish_before_like") do k = k + 1 end
+  if k > i and self:word(k, "like") then return self:skip_fillers(k + 1) end
+  return i
+end
+
 function G:condition()
   local i = 1
   while self.t[i] and self.t[i].kind == "word" and self.t[i].filler do i = i + 1 end
   -- "ACA102 when you're down to FL150 slow to 250": a condition said after the aircraft's callsign, its value
-  -- joined to its word by ARRIVING words only
-  local lead = not self:condition_word(i) and self:refs_in(i, i + 1, "aircraft")[1]
+  -- joined to its word by ARRIVING words only ("could the Porter, once it reaches OAKVL, ...": after a polite
+  -- opening, G:request_opening)
+  local opened = not self:condition_word(i) and self:request_opening(i)
+  local lead = opened and self:refs_in(opened, opened + 1, "aircraft")[1]
   if lead then
     local c = self:skip_fillers(lead.e)
     if self.t[c] and self.t[c].kind == "punct" and self.t[c].text == "," then c = self:skip_fillers(c + 1) end
@@ -3371,7 +3393,13 @@ function G:condition()
     -- ("DAL415, when you get to ERLIN, go direct ATL": a waypoint reached by a verb of reaching, said before any
     -- value; never with the instruction taken back or said to be flown now)
     local wp = v and self:refs_in(v, #self.t + 1, "waypoint")[1]
-    if wp and (not q or wp.b < q.b) and self:word_in(v, wp.b, "get gets reach reaches pass passes cross crosses")
+    -- (a participle or "past" only with a comma closing the condition at the waypoint: "could the Speedbird, when
+    -- it's passing RAGID, descend ...", "once it's past TOTUX, ..."; "after passing NEVRI descend FL90, ..." is read
+    -- by the instruction's own condition)
+    local verbs = self.t[wp and wp.e or 1] and self.t[wp and wp.e or 1].text == ","
+      and "get gets reach reaches reached reaching pass passes passed passing past cross crosses crossed crossing"
+      or "get gets reach reaches pass passes cross crosses"
+    if wp and (not q or wp.b < q.b) and self:word_in(v, wp.b, verbs)
         and not self:word_in(v, #self.t + 1, "@correction now") then
       q = wp
     end
@@ -3382,6 +3410,16 @@ function G:condition()
       and self:reached_by_name(v, cm, lead.name)[1]
     if named then q = named end
     if not q then return nil, 1 end
+    -- ("the Porter, when it's down at FL200... no, I mean, could it descend to FL200, ...": a self-correction said
+    -- after the condition's value, before the next instruction word, takes the condition back: none is read here)
+    local nx = q.e
+    while nx <= #self.t and not self:intent_at(nx) do nx = nx + 1 end
+    local taken = math.min(self:find_word(q.e, nx, "@correction"), self:find_word(q.e, nx, SC_MARKERS))
+    if taken < nx then
+      self:mark_used(c, taken)
+      for k = c, taken - 1 do self.noted[k] = true end
+      return nil, 1
+    end
     -- ("DLH4AB when reaching speed 250, descend FL200": the speed's noun straight before its number)
     for x = v, q.b - 1 do
       if not (self.t[x].filler or ARRIVING[self.words[x]] or (x == q.b - 1 and self:word(x, "speed airspeed"))) then

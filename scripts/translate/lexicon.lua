@@ -251,6 +251,10 @@ return {
     courtesy_phrases = { "pull up", "when you get a chance", "when you can", "when you're ready", "when ready",
         "when able", "if able", "if you can", "if you could", "if you would", "if possible",
         "if you don't mind", "if it's not too much trouble", "as soon as possible", "as soon as you can",
+        -- the listener's convenience and leave said whole ("..., please, when convenient", "if that's alright with you")
+        "when convenient", "whenever convenient", "when it's convenient", "when it is convenient", "at your convenience",
+        "if that's alright with you", "if that's all right with you", "if that's alright", "if that's all right",
+        "if that is alright", "if that is all right", "if that's okay", "if that's ok",
         -- a polite speaker's hedges on the whole request ("..., if that is at all possible", "would it be too much
         -- trouble to ask ...", "if it's no trouble", "if that's a thing", "of course", "we don't need it after all")
         "if that is at all possible", "if at all possible", "if that is possible", "if that's possible",
@@ -2274,6 +2278,11 @@ return {
   -- verbs of a request to be told something ("tell me the destination of EIN655", "let me know the origin")
   -- the modal verbs that open a polite question asking for an instruction ("could you please resume the run?")
   polite_openings = { "could", "can", "would", "will" },
+  -- longer openings of a polite request that an aircraft named next is to act on (grammar.lua G:request_opening:
+  -- "would it be possible to have the Porter, once it reaches OAKVL, turn ...", "I wonder if the Jazz, once ...")
+  request_openings = { "would it be possible to have", "would it be possible for", "is it possible to have",
+      "is it possible for", "could you have", "could you get", "can you have", "can you get", "would you have",
+      "i wonder if", "i was wondering if", "we wonder if", "we were wondering if" },
   -- the first words of a note's text that make it a question of its own ("... saying are you ready?"): its closing
   -- "?" may be the note's or the request's (handlers_other.lua m:echo)
   echo_question_openers = { "who", "what", "where", "when", "why", "how", "which", "is", "are", "am", "was", "were",

@@ -15215,3 +15215,33 @@ do
   -- no article: "be forty" is no type, and the creation lacks one: asked
   asked(ex("create ACA7 be forty at 45 north 74 west heading 090 FL100 250 knots"), "'be forty' with no article")
 end
+
+-- Cycle 54 (f159): a waypoint condition said between a polite or wishing opening's aircraft and its instruction
+-- ("could the Porter, once it reaches OAKVL, turn ...", "I'd like the Rouge, once it has passed EBGUR, to slow ...")
+do
+  local _, ex = scene({ "DEFWPT TARNO 52.3 4.3", "DEFWPT MOLEN 52.6 4.6", "CRE KLM12 B738 52.0 4.0 090 FL220 280",
+    "ADDWPT KLM12 TARNO", "ADDWPT KLM12 MOLEN", "CRE BAW7 A320 52.3 4.4 270 FL240 290" })
+  check_eq(ex("Could KLM12, once it reaches TARNO, turn onto a heading of zero six zero?"),
+    "AT KLM12 TARNO DO HDG KLM12 60")
+  check_eq(ex("Would KLM12, when it's passing MOLEN, be able to descend to flight level one eight zero?"),
+    "AT KLM12 MOLEN DO ALT KLM12 FL180")
+  check_eq(ex("I'd like KLM12, once it has passed TARNO, to slow down to 250, if that's possible."),
+    "AT KLM12 TARNO DO SPD KLM12 250")
+  check_eq(ex("Would it be possible to have KLM12, once it's past TARNO, climb to FL260?"),
+    "AT KLM12 TARNO DO ALT KLM12 FL260")
+  check_eq(ex("I wonder if KLM12, once it passes MOLEN, could come down to around FL200?"),
+    "AT KLM12 MOLEN DO ALT KLM12 FL200")
+  check_eq(ex("KLM12, once it's past TARNO, could it descend to FL200?"), "AT KLM12 TARNO DO ALT KLM12 FL200")
+  -- a waypoint off the aircraft's route: asked; a condition taken back by a self-correction: read without it
+  asked(ex("Could BAW7, once it passes TARNO, descend to FL200?"), "a waypoint off the route")
+  check_eq(ex("Could KLM12, when it's down at FL200... no, I mean, could it descend to FL200, and when it's there, "
+    .. "slow to 250?"), "ALT KLM12 FL200 ; ATALT KLM12 FL200 SPD KLM12 250")
+end
+-- Cycle 54 (f159): "when convenient", "at your convenience", "if that's alright with you": courtesy, said whole
+do
+  local _, ex = scene({ "CRE KLM12 B738 52.0 4.0 090 FL220 280", "CRE BAW7 A320 52.3 4.4 270 FL240 290" })
+  check_eq(ex("Could KLM12 descend to flight level two zero zero, please, when convenient?"), "ALT KLM12 FL200")
+  check_eq(ex("BAW7 climb FL260 whenever convenient, if that's all right"), "ALT BAW7 FL260")
+  -- no level said: asked as "descend when ready" is
+  asked(ex("Could KLM12 descend when convenient?"), "a descent at the listener's convenience with no level")
+end
