@@ -8717,6 +8717,24 @@ function G:runway_sides()
   end
 end
 
+-- "fl100 left", "5000ft, rt": a turn's side said straight after a level with no verb before it (a comma between
+-- at most) and no heading or amount after the side (nothing, punctuation, "and" or "then") names no turn to fly:
+-- asked, the side named, never dropped ("fl100 left heading 270", "fl100 left 20" read the turn; after a verb,
+-- "climb FL300 left", the side is asked as a word left over).
+function G:side_after_level()
+  for _, q in ipairs(self:quantities(1, #self.t + 1)) do
+    local c = self.t[q.e]
+    local i = q.kind == "alt" and (c and c.kind == "punct" and c.text == "," and q.e + 1 or q.e)
+    if i and self:word(i, "@left @right") and not self.u:used(i) and not self:instruction_before(q.b) then
+      local nxt = self.t[i + 1]
+      if not nxt or nxt.kind == "punct" or self:word(i + 1, "and then") then
+        return self:need(string.format("Which turn do you mean by '%s' after '%s'? Please say the heading or the "
+          .. "degrees to turn.", self.t[i].raw, self:raw(q.b, q.e)))
+      end
+    end
+  end
+end
+
 -- True when an aircraft is named just before token i (fillers and commas between).
 function G:callsign_before(i)
   for _, r in ipairs(self.refs) do
@@ -12037,6 +12055,7 @@ function M.translate(text, world)
   g:opening_right()
   g:urgent_right()
   g:runway_sides()
+  g:side_after_level()
   g:level_limits()
   -- a latitude beyond a pole or a longitude beyond the antimeridian ("95 N", "190 W") is no position
   for _, q in ipairs(g:quantities(1, #g.t + 1)) do

@@ -1448,7 +1448,7 @@ return {
   faster_slower = { "faster", "slower", "accelerate", "decelerate" },
   -- a runway, or an approach named by its runway ("runway two seven left", "the ILS two seven right", "ILS
   -- approach 27 left"), and the sides a runway's number is said with: part of its name
-  runway = { "runway", "rwy", "ils", "loc", "localizer", "localiser", "rnav", "rnp" },
+  runway = { "runway", "rwy", "land", "landing", "ils", "loc", "localizer", "localiser", "rnav", "rnp" },
   runway_sides = { "left", "right", "center", "centre" },
   -- turns and compass points
   left = { "left" },
@@ -1582,6 +1582,9 @@ return {
     { what = "approach clearances", words = "cleared clear",
       near = { "approach", "land", "landing", "takeoff", "take-off", "ils", "visual", "option" } },
     { what = "approach clearances", words = "visual", near = { "runway", "approach" } },
+    -- "land 27 left", "runway 09 right", "rwy two seven": a runway named by its number straight after the word
+    -- (the side after it is the runway's, never a turn: G:runway_sides)
+    { what = "approach clearances", words = "land landing runway rwy", near = { "#number" }, window = 1 },
     { what = "approach clearances", words = "intercept established join",
       near = { "localizer", "localiser", "glideslope", "ils", "final" } },
     { what = "altimeter settings", words = "altimeter qnh qfe", one_value = true },

@@ -15245,3 +15245,30 @@ do
   -- no level said: asked as "descend when ready" is
   asked(ex("Could KLM12 descend when convenient?"), "a descent at the listener's convenience with no level")
 end
+
+-- Cycle 54 (hzt): a runway named by its number and side after "land"/"runway"/"rwy" is an approach matter, never a turn
+do
+  local s, ex = scene({ "CRE KLM12 B738 52.0 4.0 090 FL100 250" })
+  local function note(text)
+    local t = graph.translate(text, { sim = s, mode = "offline" })
+    return #t.commands == 0 and not t.ask and (t.note or ""):find("approach clearances", 1, true) ~= nil
+  end
+  check(note("klm12 land 09 right"), "land 09 right")
+  check(note("klm12 rwy two two left"), "rwy two two left")
+  check(note("klm12 landing runway 18 centre"), "landing runway 18 centre")
+  -- the level said beside it still runs
+  check_eq(ex("klm12 descend 4000 land 22 right"), "ALT KLM12 4000")
+  -- a turn by degrees still reads; the bare typed "20 left" is the turn (rows of tests/data expect it)
+  check_eq(ex("klm12 turn left 20"), "HDG KLM12 70 LEFT")
+  check_eq(ex("klm12 20 left"), "HDG KLM12 70 LEFT")
+end
+-- Cycle 54 (hzt): a turn's side after a level with no heading or amount after it: asked, never dropped
+do
+  local _, ex = scene({ "CRE KLM12 B738 52.0 4.0 090 FL100 250" })
+  asked(ex("klm12 fl120 right"), "a side after a level")
+  asked(ex("klm12 fl120 lft"), "a side typed short after a level")
+  asked(ex("klm12 6000ft, rt"), "a side after a level and a comma")
+  asked(ex("klm12 fl120 left and speed 220"), "a side after a level, then another instruction")
+  check_eq(ex("klm12 fl120 left 20"), "ALT KLM12 FL120 ; HDG KLM12 70 LEFT")
+  check_eq(ex("klm12 fl120 right heading 180"), "ALT KLM12 FL120 ; HDG KLM12 180 RIGHT")
+end
