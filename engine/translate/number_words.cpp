@@ -140,14 +140,15 @@ constexpr std::array<Homophone, 10> kHeard = {{{"to", "two", 2},
 // A part of a number said in words joined by hyphens: a number word, a zero said "oh"/"o", or a
 // digit said twice or three times ("double", "triple").
 bool hyphen_number_part(const Token& t) {
-  return t.kind == TokKind::kWord &&
-         (is_number_word(t) || t.text == "oh" || t.text == "o" || t.text == "double" || t.text == "triple");
+  return t.kind == TokKind::kWord && (is_number_word(t) || t.text == "oh" || t.text == "o" ||
+                                      t.text == "double" || t.text == "triple");
 }
 
-// A word joined by hyphens whose every part is a hyphen_number_part ("forty-five", "four-fifty-one",
-// "thirty-three-oh-two", "one-double-zero", "two-four-zero") is those words said apart: the parts
-// lose their glue (no part is noise between digits), and an "oh"/"o" part after the first is the
-// digit zero ("two-two-oh" = 220). A word with any other part ("nine-year", "one-way") keeps its glue.
+// A word joined by hyphens whose every part is a hyphen_number_part ("forty-five",
+// "four-fifty-one", "thirty-three-oh-two", "one-double-zero", "two-four-zero") is those words said
+// apart: the parts lose their glue (no part is noise between digits), and an "oh"/"o" part after
+// the first is the digit zero ("two-two-oh" = 220). A word with any other part ("nine-year",
+// "one-way") keeps its glue.
 void words_of_hyphened_numbers(std::vector<Token>& t) {
   for (size_t b = 0; b < t.size();) {
     size_t e = b + 1;

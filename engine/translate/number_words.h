@@ -44,7 +44,8 @@ struct SpokenNumber {
 
 // Speech recognition writes digits as words that sound alike: between two
 // digit words, "to"/"too" is two, "on"/"won"/"once"/"ones" one, "for" four,
-// "ate"/"a" eight, "fine" five ("two on zero" = 210, "one a four" = 184); "fine" also after two digits
+// "ate"/"a" eight, "fine" five ("two on zero" = 210, "one a four" = 184); "fine" also after two
+// digits
 // ("three three fine" = 335); "won"/"once"/"ones"/"ate"/"fine" also after a
 // digit at the end ("speed two once" = 21). Rewrites those tokens' text in
 // place. A word joined by hyphens of number words only ("forty-five",

@@ -134,8 +134,8 @@ std::vector<Arg> registry_kinds(const std::string& cmd, const std::vector<std::s
     if (k >= params.size() && !d->signature.repeat_last) break;
     const auto& p = params[std::min(k, params.size() - 1)];
     using T = command::ArgType;
-    if ((has(p, T::kLatLon) || has(p, T::kWpt)) && text::to_double(args[i]) && i + 1 < args.size() &&
-        text::to_double(args[i + 1])) {
+    if ((has(p, T::kLatLon) || has(p, T::kWpt)) && text::to_double(args[i]) &&
+        i + 1 < args.size() && text::to_double(args[i + 1])) {
       out.push_back(Arg::kLat);
       out.push_back(Arg::kLon);
       i += 2;

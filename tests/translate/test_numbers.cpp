@@ -225,14 +225,19 @@ TEST_CASE("quantities: latitude and longitude forms") {
   CHECK(q[1].value == doctest::Approx(4.763333).epsilon(1e-5));
 }
 
+// The words of `s` after lex and fold_digit_homophones, joined by spaces; with `glue`, a token
+// glued to the next is marked "~".
+static std::string folded(const char* s, bool glue = false) {
+  auto t = lex(s);
+  fold_digit_homophones(t);
+  std::string words;
+  for (const auto& tok : t)
+    words += (words.empty() ? "" : " ") + tok.text + (glue && tok.glued ? "~" : "");
+  return words;
+}
+
 TEST_CASE("digit homophones between digits are digits") {
-  auto read = [](const char* s) {
-    auto t = lex(s);
-    fold_digit_homophones(t);
-    std::string words;
-    for (const auto& tok : t) words += (words.empty() ? "" : " ") + tok.text;
-    return words;
-  };
+  auto read = [](const char* s) { return folded(s); };
   CHECK(read("maintain two on zero knots") == "maintain two one zero knots");
   CHECK(read("speed two to zero") == "speed two two zero");
   CHECK(read("heading three three fine") == "heading three three five");
@@ -258,13 +263,7 @@ TEST_CASE("digit homophones between digits are digits") {
 }
 
 TEST_CASE("a word joined by hyphens of number words only is those words apart") {
-  auto read = [](const char* s) {
-    auto t = lex(s);
-    fold_digit_homophones(t);
-    std::string words;
-    for (const auto& tok : t) words += (words.empty() ? "" : " ") + tok.text + (tok.glued ? "~" : "");
-    return words;
-  };
+  auto read = [](const char* s) { return folded(s, true); };
   CHECK(read("GATE2 at forty-five point three north") == "gate2 at forty five point three north");
   CHECK(read("climb two four-fifty-one") == "climb two four fifty one");
   CHECK(read("frequency one-two-thousand") == "frequency one two thousand");
@@ -272,10 +271,10 @@ TEST_CASE("a word joined by hyphens of number words only is those words apart") 
   CHECK(read("squawk six-o-seven") == "squawk six zero seven");
   CHECK(read("level two-four-zero") == "level two four zero");
   CHECK(read("one-double-zero") == "one double zero");
-  CHECK(read("two-two-oh") == "two two zero");                // closing too
-  CHECK(read("oh-two") == "oh two");                          // not after a part
-  CHECK(read("one nine-year zero") == "one nine zero");       // another part: the word is noise
-  CHECK(read("one-way street") == "one way~ street");         // not between digits: kept, glued
+  CHECK(read("two-two-oh") == "two two zero");           // closing too
+  CHECK(read("oh-two") == "oh two");                     // not after a part
+  CHECK(read("one nine-year zero") == "one nine zero");  // another part: the word is noise
+  CHECK(read("one-way street") == "one way~ street");    // not between digits: kept, glued
   auto t = lex("forty-five point three");
   fold_digit_homophones(t);
   auto n = read_number(t, 0);
