@@ -1325,7 +1325,7 @@ for abbr, readings in pairs(lexicon.typed_abbreviations) do
     table.insert(ABBREVIATIONS[abbr], { word = a.word, next = a.next and word_set(a.next, 1),
       prev = a.prev and word_set(a.prev, 1), not_prev = a.not_prev and word_set(a.not_prev, 1),
       not_next = a.not_next and word_set(a.not_next, 1),
-      after_next = a.after_next and word_set(a.after_next, 1), hundreds = a.hundreds })
+      after_next = a.after_next and word_set(a.after_next, 1), hundreds = a.hundreds, caps_kept = a.caps_kept })
   end
 end
 local function typed_abbreviations(text)
@@ -1360,7 +1360,8 @@ local function typed_abbreviations(text)
     local readings = letters and ABBREVIATIONS[letters:lower()]
     for j = 1, readings and #readings or 0 do
       local a = readings[j]
-      if (not a.next or fits(a.next, k + 1)) and (not a.prev or fits(a.prev, k - 1))
+      if not (a.caps_kept and letters:match("^%u%u+$")) and (not a.next or fits(a.next, k + 1))
+          and (not a.prev or fits(a.prev, k - 1))
           and (not a.after_next or fits(a.after_next, k + 2)) and not (a.not_prev and fits(a.not_prev, k - 1))
           and not (a.not_next and fits(a.not_next, k + 1)) then
         toks[k], changed = a.word .. punct, true

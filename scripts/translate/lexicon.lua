@@ -314,12 +314,18 @@ return {
         -- sends runs at once
         "when it's ready", "when it is ready", "when it's able", "when it is able", "no rush", "no hurry",
         "there's no rush", "there's no hurry", "in its own time", "in their own time",
+        -- (the same said as no trouble to the speaker, "heading 090, no bother", Scots "nae bother")
+        "no bother", "no bother at all",
+        -- the speaker's own side ready again, Scots and northern English ("ok that's us, set it going again")
+        "that's us", "that's us ready", "that's us done",
         -- the speaker's own stop of a fast-forward said in a clause of its own ("fast-forward, and I'll say when
         -- to stop"): fast time with no end
         "i'll say when to stop", "i will say when to stop", "i'll tell you when to stop",
         "i will tell you when to stop",
         -- the reason an aircraft is removed ("remove it please, it's just clutter")
         "it's just clutter", "it is just clutter", "it's clutter", "just clutter",
+        -- (an aircraft whose part in the exercise is over: "take the Jet2 off, it's finished")
+        "it's finished", "it is finished", "it's done with", "it's finished with",
         -- a British speaker's apology or hedge opening a request ("sorry to be a pain, but ...", "would it be
         -- terribly inconvenient to ...")
         "sorry to be a pain", "sorry to be a nuisance", "would it be inconvenient", "would it be terribly inconvenient",
@@ -652,6 +658,24 @@ return {
     uhm = { word = "uh" }, ehm = { word = "uh" }, ahh = { word = "uh" }, ahm = { word = "uh" },
     -- (a French speaker's hesitation, said in English as "uh": "Swiss 77, euh, heading 240")
     euh = { word = "uh" }, heu = { word = "uh" },
+    -- Scots words, each read as the one English word it stands for ("gie it 250 knots", "slow it tae 230", "send
+    -- it intae Newcastle", "drop ROBEM fae the route", "move it back oot", "whit level's the KLM at", "the A320 wi
+    -- the Lufthansa colours", "descend FL70, naw, FL80", "haud on", "nae rush", "och", "aye, take the Loganair
+    -- down", "the wee Saab", "the big yin", "what's it at the noo"). `caps_kept`: typed in capitals it is an
+    -- ident and stays as typed ("remove TAE from the route": the OITA VOR); a navaid's ident (TAE, WI, AYE, YIN)
+    -- also stays after a word that names a place ("direct tae", "via wi")
+    gie = { word = "give", caps_kept = true }, gies = { word = "give us", caps_kept = true },
+    tae = { word = "to", not_prev = "direct dct dir via to at over after cross from", caps_kept = true },
+    intae = { word = "into", caps_kept = true }, ontae = { word = "onto", caps_kept = true },
+    fae = { word = "from", caps_kept = true }, oot = { word = "out", caps_kept = true },
+    whit = { word = "what", caps_kept = true },
+    wi = { word = "with", not_prev = "direct dct dir via to at over after cross from", caps_kept = true },
+    naw = { word = "no", caps_kept = true }, nae = { word = "no", caps_kept = true },
+    haud = { word = "hold", caps_kept = true }, och = { word = "oh", caps_kept = true },
+    aye = { word = "yes", not_prev = "direct dct dir via to at over after cross from", caps_kept = true },
+    wee = { word = "small", caps_kept = true },
+    yin = { word = "one", prev = "big wee small the that this", caps_kept = true },
+    noo = { word = "now", prev = "the", caps_kept = true },
     -- (Indian English "revert" for "reply", the aircraft's own value asked for: "revert your level", "revert with
     -- your present speed"; "revert to heading 270" stays as said, and asked)
     revert = { { word = "report", next = "your" }, { word = "report", next = "with" } },

@@ -1068,8 +1068,11 @@ return function(intent, rule, words)
   rule { "add append insert give", "addwpt", next = "it", near = { 8, "@route_nouns" } }
   -- "stick KMCO on the end of Frontier 2231's route", "tack FLYNN onto the end of its route": a waypoint
   -- straight after the verb, put at the route's end (not "stick to the route", which adds nothing)
-  rule { "stick tack", "addwpt", near = { 8, "@route_nouns" },
-         when = function(g, i) return g:has_ref(i + 1, i + 2, "waypoint") and g:word_in(i + 2, i + 5, "end") end }
+  -- ("stick our ARTHR point on the end of the easyJet's route": the waypoint after a possessive, "point" after it)
+  rule { "stick tack", "addwpt", near = { 10, "@route_nouns" }, when = function(g, i)
+    local k = g:word(i + 1, "our my the") and i + 2 or i + 1
+    return g:has_ref(k, k + 1, "waypoint") and g:word_in(k + 1, k + 5, "end")
+  end }
   -- "add Lambourne to the end of the Air France's route", "add glen rose to skywest 4420's route", "put Wallasey
   -- in the route": a navaid or airport said by its name of one or two words
   rule { "add append insert put", "addwpt", near = { 10, "@route_nouns" }, when = function(g, i)
@@ -1260,6 +1263,12 @@ return function(intent, rule, words)
   -- "add a320 ezy12 at ...", "new: DLH9CK A321neo ...", "insert SAS19K B736 at ...": a type or a new callsign
   -- right after the verb
   rule { "add put new spawn insert adding inject injecting", "create", when = function(g, i) return g:new_aircraft_follows(i) end }
+  -- "stick a Loganair Twin Otter in over Glasgow", "chuck a Bristow S92 in at ...", "chuck in a Cathay 777":
+  -- British "stick" and "chuck" for "put", an article and a type or a new callsign straight after
+  rule { "stick chuck", "create", when = function(g, i)
+    local k = g:word(i + 1, "in on") and i + 2 or i + 1
+    return g:word(k, "@articles_new") and g:new_aircraft_follows(k) and not g:word_in(1, #g.t + 1, "random")
+  end }
   -- "spin up American 601, an A321, ...", "let's spin up a 747 ...": "spin up" (a session's word for starting
   -- something new) before a new callsign or a type
   rule { "spin", "create", next = "up", when = function(g, i) return g:new_aircraft_follows(i + 1) end }
@@ -1434,15 +1443,16 @@ return function(intent, rule, words)
   rule { "take", "delete", near = { 5, "out" } }
   -- "take Scandinavian one five zero one out of the exercise": a flying aircraft, however long its spoken callsign,
   -- straight after the verb ("the" between), "out" straight after it, and then nothing in its clause or "of" the
-  -- exercise (lexicon.presence_places, @sim: "out of the hold" is no deletion)
+  -- exercise (lexicon.presence_places, @sim: "out of the hold" is no deletion); "take the Jet2 off, it's finished":
+  -- "off" closing its clause the same ("take the Jet2 off the route" is LNAV's)
   rule { "take taking", "delete", when = function(g, i)
     local k = g:word(i + 1, "the") and i + 2 or i + 1
     local r = g:refs_in(k, k + 1, "aircraft")[1]
-    if not (r ~= nil and r.b == k and r.exists and g:word(r.e, "out")) then return false end
+    if not (r ~= nil and r.b == k and r.exists and g:word(r.e, "out off")) then return false end
     local o = r.e + 1
     if not g.t[o] or g.t[o].kind == "punct" then return true end
     o = g:word(o + 1, "the this our") and o + 2 or o + 1
-    return g:word(r.e + 1, "of") and g:word(o, "@presence_places @sim") or false
+    return g:word(r.e, "out") and g:word(r.e + 1, "of") and g:word(o, "@presence_places @sim") or false
   end }
 
   -- route
@@ -1592,13 +1602,14 @@ return function(intent, rule, words)
   -- 23AB to Eindhoven", "KLM1234 divert to EHRD": diverted to an airport, the new destination)
   -- ("route VIR9 to Heathrow", "send him to Charleroi": a city said for its airport, lexicon.city_airports,
   -- is an airport too)
+  -- ("send the Jet2 into Newcastle", Scots "intae": the airport it is sent in to land at, as "to")
   local function sent_to_airport(g, i)
-    local to = g:find_word(i + 1, math.min(#g.t + 1, i + 5), "to")
+    local to = g:find_word(i + 1, math.min(#g.t + 1, i + 5), "to into")
     if g:word(to - 1, "straight direct directly") then return false end  -- ("send it straight to Barcelona")
     for _, r in ipairs(g:refs_in(to + 1, math.min(#g.t + 1, to + 5), "waypoint")) do
       if r.name:match("^%a%a%a%a$") then return true end
     end
-    return airport_word(g, to + 1, g:word(to, "to"))
+    return airport_word(g, to + 1, g:word(to, "to into"))
   end
   rule { "send divert diverting", "dest", when = sent_to_airport }
   -- "UAE201 divert AUH", "divert Cologne", "divert DLH458 EDDK": the place straight after "divert" (and the
@@ -2293,6 +2304,19 @@ return function(intent, rule, words)
   rule { "running", "op", prev = { 1, "@sim it" }, not_near = { 4, "speed rate times real normal" }, when = function(g, i)
     local b = g:word(i - 2, "the") and i - 2 or i - 1
     return g:word(b - 1, "set get")
+  end }
+  -- "set it going again", "get the sim going": the clock started, said alone or as a clause of its own with no
+  -- aircraft named anywhere ("get it going north" is said of an aircraft, and asked)
+  rule { "going", "op", prev = { 1, "@sim it" }, when = function(g, i)
+    local b = g:word(i - 2, "the") and i - 2 or i - 1
+    local e = g:word(i + 1, "again") and i + 2 or i + 1
+    return g:word(b - 1, "set get") and not g:has_ref(1, #g.t + 1, "aircraft")
+      and (g:alone_but(b - 1, e) or g:clause_alone(b - 1, e))
+  end }
+  -- "off we go", "right, off we go again": the clock started, said alone or as a clause of its own
+  rule { "off", "op", when = function(g, i)
+    local e = g:word(i + 3, "again") and i + 4 or i + 3
+    return g:word(i + 1, "we") and g:word(i + 2, "go") and (g:alone_but(i, e) or g:clause_alone(i, e))
   end }
   -- "go", "resume (please)": the whole request starts the clock
   rule { "go resume run play", "op", when = function(g, i) return g:alone(i) end }  -- ("ok run", "play")

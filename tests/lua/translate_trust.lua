@@ -15272,3 +15272,46 @@ do
   check_eq(ex("klm12 fl120 left 20"), "ALT KLM12 FL120 ; HDG KLM12 70 LEFT")
   check_eq(ex("klm12 fl120 right heading 180"), "ALT KLM12 FL120 ; HDG KLM12 180 RIGHT")
 end
+
+-- Cycle 55 (f165): Scots words read as the one English word each stands for ("gie" give, "tae" to, "intae" into,
+-- "fae" from, "oot" out, "whit" what, "wi" with, "naw"/"nae" no, "haud" hold, "och" oh, "aye" yes, "wee" small,
+-- "yin" one after an article or adjective, "the noo" now); a navaid's ident spelt the same after a place's word
+-- stays the place
+do
+  local _, ex = scene({ "DEFWPT TAE 52.5 4.5", "CRE KLM12 B738 52.0 4.0 090 FL220 280", "ADDWPT KLM12 TAE",
+    "CRE BAW7 A320 52.3 4.4 270 FL240 290", "CRE GABCD C172 52.1 4.1 180 3000 100" })
+  check_eq(ex("aye, KLM12 gie it 250 knots"), "SPD KLM12 250")
+  check_eq(ex("och, BAW7 climb tae FL260, nae bother"), "ALT BAW7 FL260")
+  check_eq(ex("the wee Cessna, gie it 90 knots"), "SPD GABCD 90")
+  check_eq(ex("whit level's BAW7 at?"), "POS BAW7")
+  check_eq(ex("KLM12, take TAE oot the route"), "DELWPT KLM12 TAE")
+  check_eq(ex("KLM12, remove TAE fae the route"), "DELWPT KLM12 TAE")
+  check_eq(ex("KLM12 direct TAE"), "DIRECT KLM12 TAE")
+  check_eq(ex("KLM12, remove TAE from the route"), "DELWPT KLM12 TAE")
+  check_eq(ex("BAW7 descend FL200, naw, FL210"), "ALT BAW7 FL210")
+  check_eq(ex("haud on, pause it"), "HOLD")
+  -- "gie" with no value, "wee" of no aircraft said: still asked
+  asked(ex("KLM12 gie it a wee bit more"), "no value given")
+  asked(ex("the wee yin, climb FL100"), "'the small one' with no small aircraft named")
+end
+-- Cycle 55 (f165): the clock started in Scots and British idiom ("set it going again", "off we go", "ok that's us"),
+-- an aircraft taken off the exercise ("take the KLM off, it's finished"), creations with "stick"/"chuck ... in",
+-- a waypoint stuck "on the end of" a route after a possessive
+do
+  local _, ex = scene({ "DEFWPT TARNO 52.3 4.3", "CRE KLM12 B738 52.0 4.0 090 FL220 280",
+    "CRE BAW7 A320 52.3 4.4 270 FL240 290" })
+  check_eq(ex("ok that's us, set it going again"), "OP")
+  check_eq(ex("get the sim going"), "OP")
+  check_eq(ex("right, off we go"), "OP")
+  check_eq(ex("BAW7 climb FL260, then off we go"), "ALT BAW7 FL260 ; OP")
+  check_eq(ex("take the KLM off, it's finished"), "DEL KLM12")
+  check_eq(ex("chuck a Speedbird A320 in at TARNO, BAW33, heading 270, FL100, 250 knots"),
+    "CRE BAW33 A320 TARNO 270 FL100 250")
+  check_eq(ex("stick an A320 on at TARNO, call it BAW44, heading 180, FL120, 260 knots"),
+    "CRE BAW44 A320 TARNO 180 FL120 260")
+  check_eq(ex("stick our TARNO point on the end of the KLM's route"), "ADDWPT KLM12 TARNO")
+  -- said of an aircraft, or its route: never the clock or a deletion
+  asked(ex("the KLM, get it going north"), "'get it going' said of an aircraft")
+  asked(ex("BAW7, off we go"), "'off we go' after a callsign alone")
+  check(not ex("take the KLM off the route"):match("DEL"), "'off the route' is no deletion")
+end
