@@ -15300,3 +15300,14 @@ do
   check_eq(sx("southwest twelve one six zero knots until five d m e"), "SPD SWA12 160")
   asked(sx("southwest twelve one six zero knots until one five d m e"), "a limit 15 DME out")
 end
+-- Cycle 55 (f164): a level straight after a level and "at", before a speed or heading, is the condition it waits for
+do
+  local _, ex = scene({ "CRE FFT31 A321 39.90 -104.70 180 9000 250" })
+  check_eq(ex("frontier thirty one climb and maintain one seven thousand at one two thousand reduce speed to two "
+    .. "three zero"), "ALT FFT31 17000 ; ATALT FFT31 12000 SPD FFT31 230")
+  check_eq(ex("frontier thirty one climb and maintain flight level two two zero at one four thousand feet turn "
+    .. "left heading one five zero"), "ALT FFT31 FL220 ; ATALT FFT31 14000 HDG FFT31 150 LEFT")
+  -- no instruction after it: asked
+  asked(ex("frontier thirty one climb and maintain flight level two two zero at one four thousand"),
+    "a level after a level and 'at', nothing after")
+end
