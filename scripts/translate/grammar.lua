@@ -8345,6 +8345,10 @@ function G:heard_route_place()
       local name = G.heard_route_name(t.text, route)
       if name then
         self.confirm = self.confirm or { id = name, heard = t.raw }
+        -- (in a request that adds to a route, "after"/"before" place the new waypoint: a name there stays confirmed)
+        local placing = G.route_position[self.words[k - 1]] and self:said("add insert addwpt append")
+        self.heard_sure = not placing and t.raw:match("^%l+$") and G.sure_route_name(t.text, route) == name
+          and G.heard_nowhere_else(t.text, name, self.world) and name or nil
         return self:need(string.format("Did you mean %s? I heard '%s'.", name, t.raw))
       end
     end
@@ -11197,14 +11201,22 @@ end
 G.heard_slots = set_of({ "cross", "crossing", "after", "before", "until", "till", "at", "over", "passing", "via" })
 -- the words of a request that adds a waypoint to a route, and the slots that then say where it goes
 G.route_adding, G.route_position = set_of({ "add", "insert", "addwpt", "append" }), set_of({ "after", "before" })
--- The waypoint of `route` (idents) that the word w, said in such a slot, sounds like (the same first letter, and
+-- The sound a lower-case word or ident begins with: its first letter, or the letter lexicon.first_sounds gives a
+-- spelling of it ("cubs" and KUBBS both begin with "k", "phil" with "f").
+local function first_sound(w)
+  for _, s in ipairs(lexicon.first_sounds) do
+    if w:find(s[1]) then return s[2] end
+  end
+  return w:sub(1, 1)
+end
+-- The waypoint of `route` (idents) that the word w, said in such a slot, sounds like (the same first sound, and
 -- squawk.translate.best_match at 0.5 or better, the level at which a direct-to's name is confirmed), or nil. A word
 -- squawk knows (KNOWN) is none.
 function G.heard_route_name(w, route)
   if #w < 3 or not w:match("^%a+$") or known_word(w) or #route == 0 then return nil end
   local idx, score = squawk.translate.best_match(w, route)
   local name = idx and score >= 0.5 and route[idx]
-  return name and name:sub(1, 1):lower() == w:sub(1, 1) and name or nil
+  return name and first_sound(name:lower()) == first_sound(w) and name or nil
 end
 -- The one waypoint of `route` (idents) that the word w sounds like as closely as a direct-to's name is taken
 -- (squawk.translate.best_match at lexicon.waypoint_confirm: the same letters or the same sound key, "camron" for
@@ -11220,6 +11232,25 @@ function G.sure_route_name(w, route)
     end
   end
   return alike == 1 and sure or nil
+end
+-- True when the word w, heard in a place's slot for the waypoint `name` of the instructed aircraft's route (that
+-- route's only one it sounds like, G.sure_route_name), sounds as closely (lexicon.waypoint_confirm, the same first
+-- sound) like no other waypoint of any route flown and names no navaid or airport: "cross payton at FL180" for PAITN
+-- with PLANO only loosely alike on another route. The request is then read as if the speaker had confirmed it.
+function G.heard_nowhere_else(w, name, world)
+  if not (world.navaids_named and world.airports_named) or #world.navaids_named(w, 0, 0, 1e5) > 0
+      or #world.airports_named(w) > 0 then
+    return false
+  end
+  for _, a in ipairs(world.aircraft) do
+    for _, r in ipairs(a.route or {}) do
+      if r:upper() ~= name and G.heard_route_name(w, { r }) then
+        local _, score = squawk.translate.best_match(w, { r })
+        if score >= lexicon.waypoint_confirm then return false end
+      end
+    end
+  end
+  return true
 end
 -- "direct test one", "add test 2 to the route": a waypoint the user defined (world.waypoints) whose name is letters
 -- then digits (TEST1, WP12), said as its letters' word then each digit (as a word, SAID_DIGIT, or a numeral), is that
@@ -12217,7 +12248,7 @@ function M.translate(text, world)
     g.ask = string.format("I have %s. Which time is '%s': hours and minutes, or minutes and seconds? Please "
       .. "type it h:mm:ss.", table.concat(g.out, " ; "), two_part)
   end
-  if g.ask then return { commands = {}, ask = g.ask, confirm = g.confirm, ignorable = g.ignorable } end
+  if g.ask then return { commands = {}, ask = g.ask, confirm = g.confirm, ignorable = g.ignorable, heard_sure = g.heard_sure } end
   if #g.out == 0 and note then return { commands = {}, note = note } end
   if #g.out == 0 then return { commands = {}, ask = UNDERSTOOD } end
   -- a command said twice in one request ("send the KLM direct to SPY ... add SPY and then go direct to it")
@@ -12231,8 +12262,20 @@ end
 -- A request asked about is read again with its typing slips (translate/typos.lua) read as the words they may be.
 M.read_typed, M.typos = M.translate, require("translate.typos")
 M.typos.not_understood = UNDERSTOOD
-function M.translate(text, world)
+-- A waypoint heard as a word that can only be one waypoint of the instructed aircraft's route (G.heard_nowhere_else)
+-- is read as confirmed: the request is read again with that ident in world.confirmed; a question then stands as first
+-- asked.
+function M.read_heard(text, world)
   local r = M.read_typed(text, world)
+  if not (r.ask and r.heard_sure) then return r end
+  local confirmed = { [r.heard_sure] = true }
+  for k, v in pairs(world.confirmed or {}) do confirmed[k] = v end
+  local again = M.read_typed(text, setmetatable({ confirmed = confirmed }, { __index = world }))
+  r.heard_sure = nil
+  return again.ask and r or again
+end
+function M.translate(text, world)
+  local r = M.read_heard(text, world)
   if not r.ask then return r end
   return M.typos.reread(text, world or {}, r, M.read_typed)
 end

@@ -3325,12 +3325,19 @@ function m:sentence_before(q, trig)
 end
 
 -- True when quantity q is said after "at" that opens a clause after a value said before it: a comma, "and" or
--- "then" before "at" ("climb FL160, at FL160 ...", "... then at FL160 ...", "... and at FL140 ...").
+-- "then" before "at" ("climb FL160, at FL160 ...", "... then at FL160 ...", "... and at FL140 ..."), or a level
+-- straight before "at" when q is a level too (a recogniser's "climb and maintain FL240 at 15000 increase speed":
+-- no level is said "at" another).
 function m:at_clause(q)
   local k = q.b - 2
-  return self:word(q.b - 1, "at") and self.t[k] ~= nil
-    and ((self.t[k].kind == "punct" and self.t[k].text == ",") or self:word(k, "and @then_words"))
-    and #self:quantities(1, k) > 0
+  if not (self:word(q.b - 1, "at") and self.t[k] ~= nil) then return false end
+  if (self.t[k].kind == "punct" and self.t[k].text == ",") or self:word(k, "and @then_words") then
+    return #self:quantities(1, k) > 0
+  end
+  if q.kind ~= "alt" then return false end
+  local before = self:quantities(1, q.b - 1)
+  before = before[#before]
+  return before ~= nil and before.kind == "alt" and before.e == q.b - 1
 end
 
 -- "AC02: heading 180, FL200, 250 kts", "dct NORKU FL200": values with

@@ -1206,6 +1206,8 @@ return function(H, f, compass)
     end
     local place = self:place_by_name(b, e, a)
     if place then return place end
+    place = self:routed_navaid_by_airport_word(b, e, a) or self:heard_on_routes(b, e, seen)
+    if place then return place end
     -- a name that sounds like a known one is confirmed, never substituted,
     -- unless it is the only name it could be
     if best and best_score >= 0.5 and not (self.world.confirmed or {})[best] then
@@ -1215,6 +1217,58 @@ return function(H, f, compass)
     if best and best_score >= 0.5 then
       self:explain(best_span[1], best_span[2])
       return best
+    end
+    return nil
+  end
+
+  -- The one navaid of the route of the aircraft `a` that stands beside (lexicon.city_navaid_nm) an airport whose name
+  -- holds a word said in [b, e) ("direct rockford": RFD, "CHICAGO/ROCKFORD", beside KRFD "CHICAGO ROCKFORD INTL"),
+  -- or nil: none, or two of its route.
+  function m:routed_navaid_by_airport_word(b, e, a)
+    local w = self.world
+    if not (a and a.lat and w.airports_with_words and w.airports_beside) then return nil end
+    for i = b, math.min(e, #self.t + 1) - 1 do
+      local t = self.t[i]
+      if not self.u:used(i) and t.kind == "word" and t.alpha and not t.keyword and not t.filler and #t.text >= 4 then
+        local bears, found = {}, nil
+        for _, id in ipairs(w.airports_with_words(t.text, a.lat, a.lon, L.navaid_range_nm)) do bears[id] = true end
+        for _, r in ipairs(next(bears) and a.route or {}) do
+          for _, id in ipairs(w.airports_beside(r, a.lat, a.lon, L.city_navaid_nm)) do
+            if bears[id] then
+              if found and found ~= r then return nil end
+              found = r
+            end
+          end
+        end
+        if found then
+          self:explain_place(i, i + 1)
+          return found
+        end
+      end
+    end
+    return nil
+  end
+
+  -- The waypoint of the routes flown, none of the set `known` (the names m:waypoint matched already), that a
+  -- lower-case word said in [b, e) sounds like as closely as a direct-to's name is taken, when it sounds like no
+  -- other of them and names no navaid or airport (G.sure_route_name, G.heard_nowhere_else: "direct watson" for
+  -- WATSN on another aircraft's route), or nil.
+  function m:heard_on_routes(b, e, known)
+    local routed, seen = {}, {}
+    for _, a in ipairs(self.world.aircraft) do
+      for _, r in ipairs(a.route or {}) do
+        if not seen[r:upper()] then routed[#routed + 1], seen[r:upper()] = r:upper(), true end
+      end
+    end
+    for i = b, math.min(e, #self.t + 1) - 1 do
+      local t = self.t[i]
+      if not self.u:used(i) and t.kind == "word" and not t.keyword and not t.filler and t.raw:match("^%l+$") then
+        local name = #routed > 0 and self.sure_route_name(t.text, routed)
+        if name and not known[name] and self.heard_nowhere_else(t.text, name, self.world) then
+          self:explain_place(i, i + 1)
+          return name
+        end
+      end
     end
     return nil
   end
@@ -1587,6 +1641,8 @@ return function(H, f, compass)
           -- ("saint prex" for the navdata's "ST. PREX", "st gallen" for "SAINT GALLEN")
           local saint = L.saint_forms[t.text]
           if saint then phrases[#phrases + 1] = { saint .. " " .. nx.text, i + 2 } end
+          -- (a one-word name a recogniser split in two, "du page" for DUPAGE, DPA)
+          phrases[#phrases + 1] = { t.text .. nx.text, i + 2 }
         end
         if #t.text >= 4 and not t.keyword and not two_words then phrases[#phrases + 1] = { t.text, i + 1 } end
         for _, p in ipairs(phrases) do

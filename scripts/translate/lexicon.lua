@@ -2388,8 +2388,11 @@ return {
   -- resolution methods said in words
   mvp = { "mvp", "voltage", "potential" },
   -- abbreviations a recogniser may spell letter by letter ("f l one two zero"), beside the words of
-  -- not_names and not_simulated
-  spelled = { "fl", "mvp" },
+  -- not_names and not_simulated; the navaid kinds a limit or a place names ("till four d m e", "the o b k v o r")
+  spelled = { "fl", "mvp", "dme", "vor", "ndb" },
+  -- spellings of a word's first sound (a Lua pattern at the word's start, the letter it sounds as), tried in order:
+  -- a fix heard by a recogniser keeps its first sound, not always its first letter ("cubs" for KUBBS, "fil" for PHIL)
+  first_sounds = { { "^ph", "f" }, { "^c[eiy]", "s" }, { "^c", "k" }, { "^q", "k" }, { "^kn", "n" }, { "^wr", "r" } },
   -- words of an altimeter setting: an altitude said with one is a level above the sea, no change by
   -- that much ("descend 3000 feet QNH 1008")
   altimeter = { "qnh", "altimeter", "qfe" },

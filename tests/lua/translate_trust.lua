@@ -15315,3 +15315,42 @@ do
   asked(ex("BAW7, off we go"), "'off we go' after a callsign alone")
   check(not ex("take the KLM off the route"):match("DEL"), "'off the route' is no deletion")
 end
+
+-- Cycle 55 (f164): fixes and navaids a recogniser writes as the words they sound like
+do
+  local _, ex = navscene({ "CRE AAL22 B738 42.70 -86.50 225 FL200 290", "ADDWPT AAL22 PAITN", "ADDWPT AAL22 KUBBS",
+    "CRE SKW9 E75L 41.45 -89.30 065 12000 250", "ADDWPT SKW9 BENKY", "ADDWPT SKW9 PLANO",
+    "CRE JBU4 A320 40.90 -88.60 345 FL300 270", "ADDWPT JBU4 RFD", "CRE FFT7 A321 42.10 -88.60 100 11000 250",
+    "ADDWPT FFT7 DPA", "CRE KLM6 B789 41.30 -85.40 275 FL230 290", "ADDWPT KLM6 WATSN",
+    "CRE DLH8 A359 41.60 -85.70 270 FL250 290" }, "fixes heard as words")
+  if ex then
+    -- a fix's first sound, not its first letter: "cubs" is KUBBS on the aircraft's route
+    check_eq(ex("american twenty two cross cubs at one zero thousand"), "AT AAL22 KUBBS ALT 10000")
+    check_eq(ex("american twenty two reduce two five zero knots until cubs"), "SPD AAL22 250")
+    -- the one waypoint of the aircraft's own route the word sounds like, another route's PLANO only loosely alike
+    check_eq(ex("american twenty two cross payton at flight level one niner zero"), "AT AAL22 PAITN ALT FL190")
+    -- a waypoint of another aircraft's route, off this one's: still asked
+    asked(ex("skywest nine cross payton at one one thousand"), "a sound-alike off the aircraft's route")
+    -- a navaid's one-word name split in two; a navaid of the route named after the airport beside it
+    check_eq(ex("frontier seven proceed direct du page"), "DIRECT FFT7 DPA")
+    check_eq(ex("jetblue four proceed direct rockford"), "DIRECT JBU4 RFD")
+    asked(ex("frontier seven proceed direct rockford"), "a navaid beside the airport, off the aircraft's route")
+    -- a routeless aircraft sent to the one waypoint of the routes flown that the word sounds like
+    check_eq(ex("lufthansa eight proceed direct watson"), "ADDWPT DLH8 WATSN ; DIRECT DLH8 WATSN")
+  end
+  -- a navaid kind spelled letter by letter is the word: a limit until the final's 3 to 6 miles flown, farther asked
+  local _, sx = scene({ "CRE SWA12 B737 41.55 -87.30 310 5000 220" })
+  check_eq(sx("southwest twelve one six zero knots until five d m e"), "SPD SWA12 160")
+  asked(sx("southwest twelve one six zero knots until one five d m e"), "a limit 15 DME out")
+end
+-- Cycle 55 (f164): a level straight after a level and "at", before a speed or heading, is the condition it waits for
+do
+  local _, ex = scene({ "CRE FFT31 A321 39.90 -104.70 180 9000 250" })
+  check_eq(ex("frontier thirty one climb and maintain one seven thousand at one two thousand reduce speed to two "
+    .. "three zero"), "ALT FFT31 17000 ; ATALT FFT31 12000 SPD FFT31 230")
+  check_eq(ex("frontier thirty one climb and maintain flight level two two zero at one four thousand feet turn "
+    .. "left heading one five zero"), "ALT FFT31 FL220 ; ATALT FFT31 14000 HDG FFT31 150 LEFT")
+  -- no instruction after it: asked
+  asked(ex("frontier thirty one climb and maintain flight level two two zero at one four thousand"),
+    "a level after a level and 'at', nothing after")
+end
