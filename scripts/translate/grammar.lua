@@ -9488,11 +9488,17 @@ function G:clock_limit(i)
   end
   return nil
 end
--- True when the clause from token b (to its next punctuation) holds a vertical speed or a number with no unit.
-function G:clause_rate_value(b)
+-- True when the clause from token b (to its next punctuation) opens with a vertical speed: a noun of
+-- lexicon.clause_rates ("rate", "vertical speed") with a value after it in the clause, or a value with a unit of
+-- vertical speed ("3000 fpm", "at 2000 a minute").
+function G:clause_opens_rate(b)
   local e = b
   while self.t[e] and self.t[e].kind ~= "punct" do e = e + 1 end
-  for _, q in ipairs(self:quantities(b, e)) do
+  local qs = self:quantities(b, e)
+  local at = self:word(b, "at") and b + 1 or b
+  if qs[1] and qs[1].kind == "vs" and qs[1].b == at then return true end
+  if not (self:word(b, "@clause_rates") and self:intent_at(b) == "vs") then return false end
+  for _, q in ipairs(qs) do
     if q.kind == "vs" or q.kind == "plain" then return true end
   end
   return false
@@ -9600,12 +9606,12 @@ function G:not_simulated()
         -- ("traffic eleven o'clock, turn left 20 degrees": a clause opening with an imperative verb of
         -- lexicon.clause_verbs after a comma is an instruction, also after traffic information)
         if class.to_end and x.text == "," and self:word(e + 1, "@clause_verbs") and self:intent_at(e + 1) then break end
-        -- ("expedite descent FL140 traffic below, rate three thousand or more": a vertical-speed noun of
-        -- lexicon.clause_rates opening the clause after a comma, with its value after it, is the rate of the climb or
-        -- descent said before the traffic, never the traffic's)
-        if class.to_end and x.text == "," and self:word(e + 1, "@clause_rates") and self:intent_at(e + 1) == "vs"
-            and self:intent_at(self:find_word(1, i, "@clause_verbs")) == "alt"
-            and self:clause_rate_value(e + 2) then
+        -- ("expedite descent FL140 traffic below, rate three thousand or more", "..., at 2000 fpm or more": a
+        -- vertical-speed noun of lexicon.clause_rates with a value in its clause, or a vertical speed with its unit,
+        -- opening the clause after a comma is the rate of the climb or descent said before the traffic, never the
+        -- traffic's)
+        if class.to_end and x.text == "," and self:intent_at(self:find_word(1, i, "@clause_verbs")) == "alt"
+            and self:clause_opens_rate(e + 1) then
           break
         end
         -- ("expect ILS runway 05 right descend 11000": a runway designator, its number and side, completes what

@@ -1041,7 +1041,7 @@ return {
   clause_verbs = { "turn", "climb", "descend", "reduce", "increase", "fly", "proceed", "expedite" },
   -- nouns of a vertical speed that, opening the clause after traffic information and its comma with a value after
   -- them, give the rate of the climb or descent said before it (grammar.lua G:not_simulated)
-  clause_rates = { "rate" },
+  clause_rates = { "rate", "vertical" },
   -- phrases that pick one aircraft of several named together ("put one of them at FL190", "climb either of them"):
   -- which one is asked (handlers.lua m:acids)
   partitive_selectors = { "one of them", "one of those", "one of these", "one of the two", "one of both",

@@ -15298,6 +15298,7 @@ do
   local _, ex = scene({ "CRE KLM12 B738 52.0 4.0 090 FL220 280", "CRE BAW7 B738 52.3 4.4 270 FL200 290" })
   check_eq(ex("KLM12 descend FL80 traffic beneath, rate 2500 or more"), "ALT KLM12 FL80 2500")
   check_eq(ex("BAW7 climb FL310, traffic above, rate at least 1500"), "ALT BAW7 FL310 1500")
+  check_eq(ex("KLM12 descend FL80 traffic beneath, 2500 fpm or more"), "ALT KLM12 FL80 2500")
   -- a manner, no value: the traffic's clause as before (the descent flown at its own rate)
   check_eq(ex("KLM12 descend FL80 traffic beneath, good rate"), "ALT KLM12 FL80")
 end
