@@ -4438,6 +4438,14 @@ function G:value_said_again(p, a, c)
   return true
 end
 
+-- True when the word before token a is an instruction whose one command takes no argument ("unpause" OP, "pause"
+-- HOLD): complete as said, so "make it" and a value after it ("unpause, make it three times") is no value said
+-- again for it but an instruction of its own.
+function G:complete_before(a)
+  local spec = M.intents[self:intent_at(a - 1) or ""]
+  return spec ~= nil and spec.cmd ~= nil and not spec.args and not spec.value
+end
+
 -- A pilot's question back to the controller (lexicon.question_back) is asked about, never read as the
 -- instruction whose words it holds: "say again the level for FIN7?" (a repeat asked for: no value in its
 -- clause) and "confirm cleared FL200?" (a clearance asked about: a value or place in its clause). A clause runs to
@@ -4563,7 +4571,8 @@ function G:self_corrected()
         marked = marked or (SC_MARKERS[self.t[c].text]
           and (self.t[c].text ~= "no" or (nx and (nx.kind == "punct" or SC_WORDS[nx.text]))))
           or (nx ~= nil and SC_MARKERS[self.t[c].text .. " " .. nx.text])
-          or (self.t[c].text == "make" and self:word(c + 1, "it") and self:quantities(c + 2, c + 3)[1] ~= nil)
+          or (self.t[c].text == "make" and self:word(c + 1, "it") and self:quantities(c + 2, c + 3)[1] ~= nil
+            and not self:complete_before(a))
         c = c + 1
       end
       -- ("Could you please pause? Sorry, my supervisor is calling me.": an apology opening a remark set aside,
@@ -9484,6 +9493,22 @@ function G:clock_limit(i)
   end
   return nil
 end
+-- True when the clause from token b (to its next punctuation) opens with a vertical speed: a noun of
+-- lexicon.clause_rates ("rate", "vertical speed") with a value after it in the clause, or a value with a unit of
+-- vertical speed ("3000 fpm", "at 2000 a minute").
+function G:clause_opens_rate(b)
+  local e = b
+  while self.t[e] and self.t[e].kind ~= "punct" do e = e + 1 end
+  local qs = self:quantities(b, e)
+  local at = self:word(b, "at") and b + 1 or b
+  if qs[1] and qs[1].kind == "vs" and qs[1].b == at then return true end
+  if not (self:word(b, "@clause_rates") and self:intent_at(b) == "vs") then return false end
+  for _, q in ipairs(qs) do
+    if q.kind == "vs" or q.kind == "plain" then return true end
+  end
+  return false
+end
+
 function G:not_simulated()
   local found, seen, after = {}, {}, {}
   local i = 1
@@ -9586,6 +9611,14 @@ function G:not_simulated()
         -- ("traffic eleven o'clock, turn left 20 degrees": a clause opening with an imperative verb of
         -- lexicon.clause_verbs after a comma is an instruction, also after traffic information)
         if class.to_end and x.text == "," and self:word(e + 1, "@clause_verbs") and self:intent_at(e + 1) then break end
+        -- ("expedite descent FL140 traffic below, rate three thousand or more", "..., at 2000 fpm or more": a
+        -- vertical-speed noun of lexicon.clause_rates with a value in its clause, or a vertical speed with its unit,
+        -- opening the clause after a comma is the rate of the climb or descent said before the traffic, never the
+        -- traffic's)
+        if class.to_end and x.text == "," and self:intent_at(self:find_word(1, i, "@clause_verbs")) == "alt"
+            and self:clause_opens_rate(e + 1) then
+          break
+        end
         -- ("expect ILS runway 05 right descend 11000": a runway designator, its number and side, completes what
         -- a class with `clause` announces; an imperative verb of lexicon.clause_verbs after it is an instruction)
         if class.clause and self:word(e, "@clause_verbs") and self:intent_at(e) then

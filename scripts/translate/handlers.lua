@@ -506,8 +506,35 @@ function m:acids(s)
     if self:word(k, "to") then k = k - 1 end
     if u.b >= s.b and u.e <= s.e and (self:word(k, "and") or not fits_named) then self:type_only(u) end
   end
+  -- "the two jets at FL200, put one of them at FL190", "climb either of them": a selector of
+  -- lexicon.partitive_selectors said in the segment picks one of the aircraft named together, never each of them:
+  -- asked which
+  local picked = #ids > 1 and self:partitive_said(s.b, s.e)
+  if picked then
+    self:need(string.format("Which aircraft: %s? I heard '%s'.", table.concat(ids, " or "),
+      self:raw(picked.b, picked.e)))
+  end
   if #ids > 0 then self.subject, self.subjects = ids[1], { table.unpack(ids) } end
   return ids
+end
+
+-- The first phrase of lexicon.partitive_selectors said in [b, e), as { b, e } of its tokens, or nil.
+local PARTITIVES = {}
+for _, p in ipairs(L.partitive_selectors) do
+  local words = {}
+  for w in p:gmatch("%S+") do words[#words + 1] = w end
+  PARTITIVES[#PARTITIVES + 1] = words
+end
+function m:partitive_said(b, e)
+  for k = b, e - 1 do
+    for _, words in ipairs(PARTITIVES) do
+      local n = #words
+      local fits = k + n <= e
+      for x = 1, fits and n or 0 do fits = fits and self:word(k + x - 1, words[x]) end
+      if fits then return { b = k, e = k + n } end
+    end
+  end
+  return nil
 end
 
 -- "klm33 hdg 100 and ryr8", "klm33 fl310, ryr8", "klm33 direct SPY ryr8": an instruction of how to fly (a value's,

@@ -167,7 +167,17 @@ return function(H, f, wrap, compass)
       if last.kind == "alt" then return self:altitude(s) end
       if last.kind == "heading" then return self:heading(s) end
     end
-    if self:word_in(s.trig, s.e, "heading") then return self:heading(s) end
+    local h = self:find_word(s.trig, s.e, "heading")
+    if h < s.e then
+      -- ("maintain... ah, whatever, just give it a heading": a verb that gives or sets, said between, opens an
+      -- instruction of its own that names no heading; the heading kept is never read across it: asked)
+      if self:word_in(s.trig + 1, h, "@recipient_verbs @setting_verbs") then
+        local ids = self:acids(s)
+        return self:need(string.format("What heading should %s fly? '%s' names no heading.", ids[1] or "it",
+          (self:raw(s.trig, h + 1):gsub(" ([,.;:])", "%1"))))
+      end
+      return self:heading(s)
+    end
     -- "maintain present speed": the speed instruction that follows says it
     if #qs == 0 and self:word(s.e, "speed spd airspeed") then
       self:acids(s)  -- the aircraft it names is the speed instruction's subject

@@ -1063,6 +1063,14 @@ return {
   maker_plurals = { "airbuses", "boeings", "embraers", "bombardiers", "cessnas", "atrs", "dreamliners", "jumbos" },
   -- imperative verbs that open an instruction of their own after a comma, even after traffic information
   clause_verbs = { "turn", "climb", "descend", "reduce", "increase", "fly", "proceed", "expedite" },
+  -- nouns of a vertical speed that, opening the clause after traffic information and its comma with a value after
+  -- them, give the rate of the climb or descent said before it (grammar.lua G:not_simulated)
+  clause_rates = { "rate", "vertical" },
+  -- phrases that pick one aircraft of several named together ("put one of them at FL190", "climb either of them"):
+  -- which one is asked (handlers.lua m:acids)
+  partitive_selectors = { "one of them", "one of those", "one of these", "one of the two", "one of both",
+    "either of them", "either of those", "either of these", "either of the", "either one", "any of them",
+    "any one of", "one or the other", "whichever", "the first one", "the second one", "the former", "the latter" },
   -- instruction verbs, their -ing forms and nouns that "no" said straight before, with no comma between ("PRF441
   -- no descend FL090", "no climbing", "no descent", "no left turn": a turn's side may come between), may refuse
   -- ("do not descend", in English as a second language) as well as take back what came before ("no, descend"):

@@ -15354,3 +15354,43 @@ do
   asked(ex("frontier thirty one climb and maintain flight level two two zero at one four thousand"),
     "a level after a level and 'at', nothing after")
 end
+
+-- Cycle 55 (fwa): "make it" and a value after an instruction that takes no value ("unpause, make it 3x") is an
+-- instruction of its own, never a value said again that takes the unpause back
+do
+  local _, ex = scene({ "CRE KLM12 B738 52.0 4.0 090 FL220 280" })
+  check_eq(ex("resume, and make it four times"), "OP ; DTMULT 4")
+  check_eq(ex("unfreeze, make it 2x"), "OP ; DTMULT 2")
+  -- a value said again after a value instruction still replaces it; a rate after a pause is asked as before
+  check_eq(ex("KLM12 reduce 220, make it 210"), "SPD KLM12 210")
+  asked(ex("pause, and make it three times"), "a rate after a pause")
+end
+-- Cycle 55 (fwa): "maintain..." cut off, then a verb that gives or sets a heading with no value: asked, never the
+-- heading kept
+do
+  local _, ex = scene({ "CRE KLM12 B738 52.0 4.0 090 FL220 280" })
+  asked(ex("KLM12 maintain... ok, whatever, just assign it a heading"), "maintain cut off, a heading given with no value")
+  asked(ex("KLM12 maintain... set a heading"), "maintain cut off, a heading set with no value")
+  check_eq(ex("KLM12 maintain... set a heading of 120"), "HDG KLM12 120")
+  check_eq(ex("KLM12 maintain... present heading"), "HDG KLM12 90")
+end
+-- Cycle 55 (fwa): a rate opening the clause after traffic information is the climb's or descent's, never dropped
+-- with the traffic
+do
+  local _, ex = scene({ "CRE KLM12 B738 52.0 4.0 090 FL220 280", "CRE BAW7 B738 52.3 4.4 270 FL200 290" })
+  check_eq(ex("KLM12 descend FL80 traffic beneath, rate 2500 or more"), "ALT KLM12 FL80 2500")
+  check_eq(ex("BAW7 climb FL310, traffic above, rate at least 1500"), "ALT BAW7 FL310 1500")
+  check_eq(ex("KLM12 descend FL80 traffic beneath, 2500 fpm or more"), "ALT KLM12 FL80 2500")
+  -- a manner, no value: the traffic's clause as before (the descent flown at its own rate)
+  check_eq(ex("KLM12 descend FL80 traffic beneath, good rate"), "ALT KLM12 FL80")
+end
+-- Cycle 55 (fwa): "one of them", "either of them", "the latter": one aircraft of several named together, asked
+do
+  local _, ex = scene({ "CRE KLM15 B738 52.0 4.0 090 FL230 280", "CRE BAW7 B738 52.3 4.4 270 FL230 290",
+    "CRE DLH4 A320 52.1 4.8 180 FL300 270" })
+  asked(ex("the two jets at FL230, descend either of them to FL200"), "either of them")
+  asked(ex("KLM15 and BAW7, one of those to FL200"), "one of those")
+  asked(ex("KLM15 and BAW7, one or the other up to FL240"), "one or the other")
+  asked(ex("the two jets at FL230, take the latter down to FL200"), "the latter")
+  check_eq(ex("the two jets at FL230, descend them to FL200"), "ALT KLM15 FL200 ; ALT BAW7 FL200")
+end
