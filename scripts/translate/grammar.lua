@@ -6159,6 +6159,16 @@ function G:at_waypoint(s, spec)
       elseif level_by then
         other, said = #said > 0, { level_by }
       end
+      -- ("cross AKO at FL280 maintain Mach .78", "cross DIK at 11000 and keep 250 knots": a speed after a verb of
+      -- lexicon.keep_verbs following the crossing's level is an instruction of its own, SPD now, beside the constraint)
+      local kept
+      for _, q in ipairs(crossed and said or {}) do
+        if not kept and (q.kind == "speed" or q.kind == "mach") and said[1] ~= q
+            and self:find_word(said[1].e, q.b, "@keep_verbs") < q.b then
+          kept = self:find_word(said[1].e, q.b, "@keep_verbs")
+        end
+      end
+      if kept then said = self:quantities(r.e, kept) end
       for _, q in ipairs(said) do
         -- ("cross BEBEX at 6000": after a crossing, a bare number in hundreds of feet, 1000 or more, is a level)
         -- (so is one after a climb or descent: "at MIRSI descend 4000", as the climb or descent alone reads it,
@@ -6230,6 +6240,7 @@ function G:at_waypoint(s, spec)
             .. (spd.kind == "mach" and f.mach(spd.value) or f.int(spd.value)))
           self:take(spd)
         end
+        if kept then self:speed({ intent = "spd", b = kept, trig = kept, e = s.e }, M.intents.spd) end
         return true
       end
     end
@@ -6556,12 +6567,29 @@ end
 
 -- "aua513 dlh1kz climb fl180": two aircraft typed side by side, nothing between them and no word of
 -- lexicon.all ("both") in the request, may be a callsign typed again in place of the first; asked
--- (a comma or "and" between lists them).
+-- (a comma or "and" between lists them). So are two with only an interjection between them ("TAM39, uh, the AZU41
+-- climb": G:interjected_between), a slip's pause as likely as a list.
+G.slip_interjections = set_of(lexicon.hesitations)
+for _, list in ipairs({ lexicon.setting_question_interjections, lexicon.accounted.chat }) do
+  for _, w in ipairs(list) do G.slip_interjections[w] = true end
+end
+-- True when the tokens b .. e-1 are commas, fillers other than "and" and at least one interjection of
+-- G.slip_interjections.
+function G:interjected_between(b, e)
+  local said = false
+  for k = b, e - 1 do
+    local t = self.t[k]
+    if G.slip_interjections[self.words[k] or ""] then said = true
+    elseif self:word(k, "and") or not (t.filler or (t.kind == "punct" and t.text == ",")) then return false end
+  end
+  return said
+end
 function G:side_by_side_callsigns()
   local prev
   for _, r in ipairs(self.refs) do
     if r.kind == "aircraft" and r.exists then
-      if prev and prev.e == r.b and prev.name:upper() ~= r.name:upper() and not self:word_in(1, #self.t + 1, "@all") then
+      if prev and (prev.e == r.b or self:interjected_between(prev.e, r.b)) and prev.name:upper() ~= r.name:upper()
+          and not self:word_in(1, #self.t + 1, "@all") then
         self:need(string.format("Which aircraft do you mean: %s, %s or both?", prev.name:upper(), r.name:upper()))
         return
       end
@@ -9799,10 +9827,15 @@ function G:setting_twice()
 end
 
 -- "Is DTMULT still 5?", "is the look-ahead still 300 seconds?": a request opening with "is" or "are" and no verb of
--- setting (lexicon.setting_verbs) asks about a value; a setting given a value (a command with a value and no
+-- setting (lexicon.setting_verbs), or asking in a statement's word order ("the seed is 3?", "the trails are on?":
+-- m:statement_order_question), asks about a value; a setting given a value (a command with a value and no
 -- aircraft) is asked, never set.
 function G:setting_question()
-  if not self:word(self:request_start(), "is are") or self:word_in(1, #self.t + 1, "@setting_verbs") then return end
+  local first = self:request_start()
+  if not (self:word(first, "is are") or self:statement_order_question(first, self:first_sentence_end()))
+      or self:word_in(1, #self.t + 1, "@setting_verbs") then
+    return
+  end
   for _, line in ipairs(self.out) do
     local cmd, value = line:match("^(%u+) (%S+)")
     if cmd and not self:state(value) then
@@ -11660,6 +11693,7 @@ function G.clause_commas(text)
     return nil
   end))
 end
+local STATE_AFTER_S = set_of(lexicon.state_after_s)
 local DESCRIBED_AFTER = { there = true, here = true, already = true, still = true, at = true, currently = true,
   maintaining = true, cruising = true, established = true }
 -- A homework answer's label opening the text ("Q3a answer:", "Question 2:", "Answer:"): no instruction
@@ -11971,6 +12005,11 @@ function M.translate(text, world)
   if text:find("'s ", 1, true) or text:find("\xE2\x80\x99s ", 1, true) then
     text = text:gsub("(%f[%w][%u%d][%w]*)['\xE2\x80\x99]+s (%l+)", function(name, w)
       if DESCRIBED_AFTER[w] then return name .. " is " .. w end
+    end)
+    -- ("detection's on?", "the resolution's switched off": a word's "'s" before a state of lexicon.state_after_s is
+    -- "is")
+    text = text:gsub("(%f[%a]%a+)['\xE2\x80\x99]+s (%a+)", function(name, w)
+      if STATE_AFTER_S[w:lower()] and name:lower() ~= "let" then return name .. " is " .. w end
     end)
   end
   if text:find(",", 1, true) then text = G.clause_commas(text) end

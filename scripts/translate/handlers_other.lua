@@ -3434,17 +3434,42 @@ return function(H, f, compass)
     end
     -- (a question: "is ... on?", "what is ...?", "can you check which/whether ...?"; its first sentence, a
     -- remark may follow: "Is the conflict detection on now? I can't see any alerts.")
-    local ends = #self.t
-    for k = 1, #self.t do
-      local t = self.t[k]
-      if t.kind == "punct" and (t.text == "?" or t.text == "." or t.text == "!") then ends = k break end
-    end
+    local ends = self:first_sentence_end()
     -- ("how large is the protected zone radius?": "how" asks a size, no value said)
     -- ("turn on conflict detection to see whether anything happens?": a "whether" after the switch's "on" or
     -- "off" is the purpose of the instruction, not a question about the setting)
     local checked = self:find_word(1, ends, "check whether")
     return self.t[ends].text == "?" and (self:word(first, "is are what what's whats which")
+      or self:statement_order_question(first, ends)
       or (checked < ends and not self:word_in(1, checked, "@on @off")) or (self:word(first, "how") and #self:quantities(1, ends) == 0))
+  end
+  -- The position of the request's first "?", "." or "!" (its last token when none).
+  function m:first_sentence_end()
+    for k = 1, #self.t do
+      local t = self.t[k]
+      if t.kind == "punct" and (t.text == "?" or t.text == "." or t.text == "!") then return k end
+    end
+    return #self.t
+  end
+  -- True when the sentence first .. ends (its "?") asks about a setting in a statement's word order: the setting's
+  -- name (an intent of lexicon.aside.declared.settings) within the three words before a copula of
+  -- lexicon.setting_question_copulas ("the detection is on?", "detection's on?" as the text reads it, "resolution is
+  -- active?", "the seed is 3?"), and no verb of setting (lexicon.setting_verbs) said: "turn the detection on?" and
+  -- "make sure detection is on?" are no such question, nor one a question word opens ("for the detection, what is
+  -- the look-ahead?"), nor a copula after a mark ("detection, is that the look-ahead?").
+  function m:statement_order_question(first, ends)
+    if not (self.t[ends] and self.t[ends].text == "?") then return false end
+    if self:word_in(1, ends, "@setting_verbs") or self:word_in(first, ends, "what what's whats which how whether") then
+      return false
+    end
+    for x = first, ends - 1 do
+      if L.aside.decl.settings[self:intent_at(x) or ""] then
+        local copula = self:find_word(x + 1, math.min(x + 4, ends), "@setting_question_copulas")
+        local between = copula < ends and self:raw(x + 1, copula) or ""
+        if self:word(copula, "@setting_question_copulas") and not between:find("[%p]") then return true end
+      end
+    end
+    return false
   end
   -- (a switch asked about: a question, or a request opening with "what" and no "on" or "off" in it, "what's the
   -- conflict detection setting", or with "is" or "are", "is conflict detection on": its state shown, never set)

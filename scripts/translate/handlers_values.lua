@@ -572,13 +572,26 @@ return function(H, f, wrap, compass)
       else
         target_ft, alt = ft, f.alt(ft, fl)
       end
+      -- "descend and maintain to four thousand": a "to" (lexicon.two_heard) between "maintain" (lexicon.keep_verbs,
+      -- which takes none) and a spoken number of one digit's thousands may be "two" (24000 ft), as in "flight level
+      -- to four zero": the reading the verb allows from the present altitude, asked when both or neither are
+      local n = q.number
+      if not relative and not fl and not n.typed and n.thousand and n.digits:match("^[1-9]$")
+          and self:word(q.b - 1, "@two_heard") and self:word(q.b - 2, "@keep_verbs") then
+        local two, cur = (20 + tonumber(n.digits)) * 1000, (self:state(id) or {}).alt_ft
+        local function fits(x) return cur ~= nil and ((dir > 0 and x > cur + 50) or (dir < 0 and x < cur - 50)) end
+        if fits(two) == fits(target_ft) then
+          return self:need(string.format("Should %s %s to %s ft or to %s ft? I heard '%s %s'.", id, verb, f.int(two),
+            f.int(target_ft), self.t[q.b - 1].raw, self:raw(q.b, q.e)))
+        end
+        if fits(two) then target_ft, alt = two, f.alt(two, false) end
+      end
       -- a climb to a lower level, or a descent to a higher one, contradicts the verb
       local a = self:state(id)
       if a and dir ~= 0 and self:word_in(s.b, s.e, "climb climbing descend descending descent") then
         local cur = a.alt_ft or 0
         -- "descend two eight thousand" straight after the verb may be "descend to eight
         -- thousand" (lexicon.two_heard): the reading the verb allows, asked when both are
-        local n = q.number
         if not relative and not fl and q.b == s.trig + 1 and self:word(s.trig, "climb descend") and not n.typed
             and n.thousand and self.t[q.b].raw:lower() == "two" and #n.digits >= 2 and n.digits:sub(1, 1) == "2"
             and target_ft == tonumber(n.digits) * 1000 then

@@ -787,6 +787,12 @@ return {
     "turn", "bring", "double", "halve", "adjust", "reset", "keep" },
   setting_question_interjections = { "hmm", "hm", "wait", "oh", "ooh", "ah", "hey", "well", "alright", "ok", "okay",
                                      "so", "um", "uh", "erm", "ehm" },
+  -- the copulas of a question about a setting in a statement's word order, its name before them ("the detection is
+  -- on?", "detection's on?": m:statement_order_question)
+  setting_question_copulas = { "is", "are", "isn't", "aren't" },
+  -- the states a word's "'s" stands before as "is" ("detection's on?", "resolution's switched off": no possessive;
+  -- "active" is none, "the United's active waypoint")
+  state_after_s = { "on", "off", "enabled", "disabled", "switched", "turned" },
   -- a pilot's question back to the controller, no instruction (G:question_back): "say again (the level)"
   -- with no value in its clause asks for a repeat; "confirm cleared FL200?", "confirm heading 270?" with a value
   -- asks whether a clearance stands. Not after `not_after` ("I say again 260" is the controller's own repeat).
@@ -984,10 +990,12 @@ return {
                                    "give me a second", "give me a moment", "give me a sec", "forget it",
                                    "scrap that", "ignore that", "cancel that", "not that", "not yet",
                                    "i'm not sure", "not sure" },
-                      -- formal apologies, read as "sorry" (a marker) wherever they are said ("Mach 0.80 --
-                      -- pardon me, Mach 0.78", "the United -- no, forgive me, the Southwest")
+                      -- formal apologies, and a slip's exclamation as typed ("oops", "ops", "opps", "oups"),
+                      -- read as "sorry" (a marker) wherever they are said ("Mach 0.80 -- pardon me, Mach 0.78",
+                      -- "the United -- no, forgive me, the Southwest", "Gol 12, ops, Gol 21, descend ...")
                       formal_apology = { "i beg your pardon", "beg your pardon", "pardon me", "forgive me",
-                                         "excuse me", "my apologies" },
+                                         "excuse me", "my apologies", "oops", "ops", "opps", "oups", "whoops",
+                                         "woops", "oopsie", "whoopsie" },
                       -- words that describe the aircraft said in place of one taken back ("American 100 -- no,
                       -- the second aircraft, United 200"; aircraft nouns too): part of the correction's run
                       described = { "the", "a", "an", "first", "second", "third", "fourth", "other" },

@@ -15394,3 +15394,43 @@ do
   asked(ex("the two jets at FL230, take the latter down to FL200"), "the latter")
   check_eq(ex("the two jets at FL230, descend them to FL200"), "ALT KLM15 FL200 ; ALT BAW7 FL200")
 end
+
+-- Cycle 55 (fwb): a question about a setting in a statement's word order ("the detection is on?") shows it or is
+-- asked, never set; the request to set it ("turn the detection on?") and the statement ("the trails are on") are read
+do
+  local _, ex = scene({ "CRE KLM12 B738 52.0 4.0 090 FL220 280" })
+  check_eq(ex("conflict detection is off?"), "ASAS")
+  check_eq(ex("the conflict resolution is active?"), "RESO")
+  check_eq(ex("asas's switched on?"), "ASAS")
+  asked(ex("the look-ahead time is 200 seconds?"), "a value told as a question")
+  asked(ex("the aircraft trails are off?"), "trails told as a question")
+  check_eq(ex("switch conflict detection on?"), "ASAS ON")
+end
+-- Cycle 55 (fwb): "oops" as typed ("ops", "opps", "oups", "whoops") corrects the callsign before it; two callsigns
+-- with only an interjection between them ("uh", "hmm", "lol") are asked, never both instructed
+do
+  local _, ex = scene({ "CRE KLM12 B738 52.0 4.0 090 FL220 280", "CRE BAW7 A320 52.3 4.4 270 FL240 290" })
+  check_eq(ex("KLM12, opps, BAW7, descend FL200"), "ALT BAW7 FL200")
+  check_eq(ex("BAW7 whoops I mean KLM12 turn left heading 050"), "HDG KLM12 50 LEFT")
+  check_eq(ex("KLM12, oups, BAW7 speed 250"), "SPD BAW7 250")
+  asked(ex("KLM12, hmm, BAW7, descend FL200"), "an interjection between two callsigns")
+  asked(ex("the KLM12 erm the BAW7 climb FL260"), "a hesitation between two callsigns")
+  check_eq(ex("KLM12 and BAW7 descend FL200"), "ALT KLM12 FL200 ; ALT BAW7 FL200")
+end
+-- Cycle 55 (fwb): "and maintain to N thousand" (one digit's thousands) may be "two N thousand": the verb's direction
+-- decides, asked when both readings fit; "descend to N thousand" is read
+do
+  local _, ex = scene({ "CRE KLM12 B738 52.0 4.0 090 FL330 280", "CRE BAW7 A320 52.3 4.4 270 12000 290" })
+  asked(ex("klm twelve descend and maintain to six thousand"), "to six thousand from FL330")
+  check_eq(ex("speedbird seven climb and maintain to three thousand"), "ALT BAW7 23000")
+  check_eq(ex("speedbird seven descend and maintain to three thousand"), "ALT BAW7 3000")
+  check_eq(ex("klm twelve descend to six thousand"), "ALT KLM12 6000")
+end
+-- Cycle 55 (fwb): a speed after "maintain" or "keep" following a crossing's level is its own SPD, not the crossing's
+do
+  local _, ex = scene({ "DEFWPT TARNO 52.3 4.3", "CRE KLM12 B738 52.0 4.0 090 FL330 280", "ADDWPT KLM12 TARNO" })
+  check_eq(ex("KLM12 cross TARNO at FL240 maintain mach .76"), "AT KLM12 TARNO ALT FL240 ; SPD KLM12 M0.76")
+  check_eq(ex("KLM12 cross TARNO at FL240, keep 280 knots"), "AT KLM12 TARNO ALT FL240 ; SPD KLM12 280")
+  check_eq(ex("KLM12 cross TARNO at FL240 and 280 knots"), "AT KLM12 TARNO ALT FL240 ; AT KLM12 TARNO SPD 280")
+  asked(ex("KLM12 cross TARNO at FL240 speed 280"), "a bare speed after the crossing's level")
+end
