@@ -631,8 +631,12 @@ return function(intent, rule, words)
   rule { "speed", "dtmult", near = { 3, "up" }, when = function(g, i)
     return not g:has_ref(1, #g.t + 1, "aircraft") and g:word_in(1, #g.t + 1, "@multipliers")
   end }
+  -- ("speed the sim up heaps, like times ten": a degree of lexicon.speedup_degrees before the factor widens the
+  -- window by its word)
   rule { "speed spd airspeed", "dtmult", when = function(g, i)
-    return g:followed_by(i, 6, "times x") and (g:followed_by(i, 3, "@sim") or g:preceded_by(i, 2, "@sim"))
+    local n = 6
+    for k = i + 1, i + 5 do if g:word(k, "@speedup_degrees") then n = n + 1 end end
+    return g:followed_by(i, n, "times x") and (g:followed_by(i, 3, "@sim") or g:preceded_by(i, 2, "@sim"))
   end }
   -- "set the speed to 20 times real time": a rate of the clock, no aircraft named
   rule { "speed", "dtmult", when = function(g, i)
@@ -2268,6 +2272,14 @@ return function(intent, rule, words)
   rule { "go run", "op", when = function(g, i)
     local b = g:word(i - 1, "it") and i - 1 or (g:word(i - 1, "@sim") and g:word(i - 2, "the") and i - 2 or nil)
     return b ~= nil and g:word(b - 1, "let") and (g:alone_but(b - 1, i + 1) or g:clause_alone(b - 1, i + 1))
+  end }
+  -- "ok, let's go", "righto let's go" (the lexer reads "let's" as "let", "righto" as "right"): the run started, said
+  -- alone or as a clause of its own, an acknowledgement before it ("let's go with heading 270" is no clause of its
+  -- own)
+  rule { "go", "op", prev = { 1, "let lets" }, when = function(g, i)
+    local b = i - 1
+    while b > 1 and g:word(b - 1, "right alright ok okay so well") do b = b - 1 end
+    return g:alone_but(b, i + 1) or g:clause_alone(b, i + 1)
   end }
   -- "pause, time step 0.1, then start again": the clock started again, a clause of its own
   rule { "start", "op", next = "again", when = function(g, i) return g:clause_alone(i, i + 2) end }
