@@ -863,8 +863,10 @@ return function(intent, rule, words)
   rule { "fix point gate entry exit", "defwpt", not_prev = { 3, "put place create make add define" }, when = function(g, i)
     return (g:preceded_by(i, 3, "new reference target") or g:followed_by(i, 2, "@named")) and new_fix_at(g, i)
   end }
+  -- ("put a new waypoint in called GEELO at 38 10 south 144 21 east": a waypoint said new, likewise)
   rule { "put place create make add", "defwpt", when = function(g, i)
-    return g:word(i + 1, "the a an") and g:word(i + 2, "new") and g:followed_by(i + 2, 4, "fix point gate entry exit")
+    return g:word(i + 1, "the a an") and g:word(i + 2, "new")
+      and g:followed_by(i + 2, 4, "fix point gate entry exit @waypoint_nouns")
       and new_fix_at(g, i, 11)
   end }
   -- "add a waypoint called ENTRY at 52 N 3.5 E": a new waypoint, when no flying aircraft is named
