@@ -3185,6 +3185,10 @@ function G:level_limits()
           self:explain(i, q.e)
         -- ("fly at 210 knots and go down until 7000 feet": "until" straight after a verb of climbing or descending
         -- is the level to fly, "hasta" / "até" in a Spanish or Portuguese speaker's English, read by the handlers)
+        -- ("speed 250 until ten thousand, then 300": the level is when the next instruction runs, G:until_level_then)
+        elseif self:until_level_end(i) and (speed or self:speed_instructed(b, i)) then
+          self:mark_used(q.b, q.e)
+          self:explain(i, q.e)
         elseif speed and not (self:word(i - 1, "climb descend") or (self:word(i - 1, "up down") and self:word(i - 2, "go"))) then
           self:need(string.format("squawk cannot end an instruction at a level ('%s'). Should it hold until told "
             .. "otherwise?", self:raw(i, q.e)))
@@ -3193,6 +3197,14 @@ function G:level_limits()
       self:distance_limit(i, v, q)
     end
   end
+end
+
+-- True when a speed instruction's word is said in tokens b .. e-1 ("speed 250", "reduce to 250").
+function G:speed_instructed(b, e)
+  for x = b, e - 1 do
+    if self:intent_at(x) == "spd" then return true end
+  end
+  return false
 end
 
 -- A distance from a place after "until" ("maintain 250 knots or greater until 20 miles from FFM", "until 15 miles
@@ -4088,6 +4100,12 @@ function G:segments(b, e)
             dist_between = dist_between or (named and p - 1 > between[1].e - 1
               and self:word(p - 1, "after passing over leaving reaching"))
           end
+        end
+        -- ("speed 250 until ten thousand, then 300": the first ended at a level straight before the second's "then",
+        -- which waits for it, G:until_level_then)
+        if between then
+          local u = self:find_word(last.trig + 1, tr.pos, "until till")
+          dist_between = dist_between or (u < tr.pos and self:until_level_end(u) == tr.pos)
         end
         -- ("reduce speed 250, after SUMAG 220": a value again from a place opens its own instruction, G:after_place_value)
         if (last.intent == tr.intent or alt_pair or kept_noun) and not this.single
@@ -5011,7 +5029,8 @@ function G:parse(b, e)
       -- ("maintain 250 knots until SULUR then climb FL200": the instruction after "then" starts at the place,
       -- never waits for the value before it)
       local until_wp = self:until_then(segs, k)
-      if until_wp then before = nil end
+      local until_lvl = not until_wp and self:until_level_then(segs, k)
+      if until_wp or until_lvl then before = nil end
       local at_next = self.at_next
       self.at_next = nil
       local at = self:at_altitude(s) or self:at_speed(s) or self:at_speed_again(s) or self:at_distance(s)
@@ -5066,6 +5085,9 @@ function G:parse(b, e)
         if self:do_at(id, until_wp.name, n_before) then
           n_before = n_before - self:kept_until(segs[k - 1], seg_out[k - 1], n_before, id)
         end
+      elseif until_lvl and not at and not self.ask and #self.out > n_before then
+        at = "ATALT " .. self.out[n_before + 1]:match("^%u+ (%S+)") .. " "
+          .. handlers.format.alt(until_lvl.q.value, until_lvl.q.fl)
       elseif tail and not self.ask and #self.out > n_before then
         self:do_at(self.out[n_before + 1]:match("^%u+ (%S+)"), tail.name, n_before)
       elseif at_next and not self.ask and #self.out > n_before then
@@ -5476,6 +5498,51 @@ function G:until_then(segs, k)
   return nil
 end
 
+-- The level said after "until" or "till" at u ("until ten thousand", "till passing FL100", "until it's reaching
+-- 8000 feet"; a subject and a verb of reaching between at most): its quantity, a level, else nil. Read once per
+-- request and position (G:level_limits marks the level used, which the quantities then leave out).
+function G:until_level(u)
+  self.until_levels = self.until_levels or {}
+  local memo = self.until_levels[u]
+  if memo == nil then
+    local v = self:skip_fillers(u + 1)
+    if self:word(v, "@reached_subjects") then v = self:skip_fillers(v + 1) end
+    if self:word(v, "@reached_verbs") then v = self:skip_fillers(v + 1) end
+    if self:word(v, "passing reaching") then v = self:skip_fillers(v + 1) end
+    local q = self:quantities(v, #self.t + 1)[1]
+    memo = q and q.b == v and q.kind == "alt" and q or false
+    self.until_levels[u] = memo
+  end
+  return memo or nil
+end
+
+-- The token after the level that "until" or "till" at u names (G:until_level) and a comma and "and" after it, when
+-- that token is "then" or one of lexicon.until_then_words ("speed 250 until ten thousand, then 300"); else nil.
+function G:until_level_end(u)
+  local q = self:until_level(u)
+  if not q then return nil end
+  local n = self:skip_fillers(q.e)
+  if self.t[n] and self.t[n].text == "," then n = self:skip_fillers(n + 1) end
+  if self:word(n, "and") then n = n + 1 end
+  return self:word(n, "then @until_then_words") and n or nil
+end
+
+-- "speed 250 until ten thousand, then 300", "maintain 250 knots till passing FL100, then increase 300": the
+-- instruction before ends at a level, "until" or "till" and the level (G:until_level) straight before the "then" (a
+-- comma or "and" between at most) that opens segment k; segment k's instructions wait for that level (ATALT):
+-- { u = the "until" token, q = the level's quantity }, else nil.
+function G:until_level_then(segs, k)
+  local s, p = segs[k], segs[k - 1]
+  if not p then return nil end
+  for u = p.trig + 1, s.trig - 1 do
+    local n = self:word(u, "until till") and self:until_level_end(u)
+    if n and (n == s.trig or (s["then"] and self:skip_fillers(n + 1) == s.trig)) then
+      return { u = u, q = self:until_level(u) }
+    end
+  end
+  return nil
+end
+
 -- The kind ("spd" or "alt") of a value said bare after the "then" (or lexicon.until_then_words) at i, straight
 -- after "until" (or "till") and a waypoint (a comma between at most), when the clause before holds a value of that kind ("maintain 280 knots until PEKIR then 250": a speed,
 -- with or without its unit; "maintain FL160 until PEKIR then FL120": a level by its unit, FL or feet); nil otherwise.
@@ -5483,7 +5550,12 @@ function G:until_then_value(i)
   local r = self.refs and self:refs_in(math.max(1, i - 5), i, "waypoint")[1]
   local n = r and self:skip_fillers(r.e)
   if n and self.t[n] and self.t[n].text == "," then n = self:skip_fillers(n + 1) end
-  if not r or n ~= i or not self:word(r.b - 1, "until till") then return nil end
+  if not r or n ~= i or not self:word(r.b - 1, "until till") then
+    -- (a level after "until" instead of the waypoint: "speed 250 until ten thousand, then 300", G:until_level_then)
+    local u = self:find_word(math.max(1, i - 7), i, "until till")
+    if u >= i or self:until_level_end(u) ~= i then return nil end
+    r = { b = u + 1 }
+  end
   local q = self:quantities(i + 1, #self.t + 1)[1]
   if not q or q.b ~= self:skip_fillers(i + 1) then return nil end
   local before = self:quantities(math.max(1, r.b - 8), r.b - 1)

@@ -124,7 +124,10 @@ return {
         "awfully", "terribly",
         -- an Irish or British speaker's warm acknowledgement before or between instructions ("grand, now the
         -- Ryanair ...", "ok lovely, the Delta can start down", "sound, the Emerald can have 250 knots")
-        "grand", "lovely", "sound" },
+        "grand", "lovely", "sound",
+        -- an Australian speaker's acknowledgement and degree ("no worries, the Saab can go", "heaps of traffic ahead",
+        -- "speed it up heaps, like times ten": "heaps" is "a lot", the value said with it is the one meant)
+        "no worries", "no dramas", "heaps" },
     -- courtesy and framing of a request
     courtesy = { "please", "kindly", "thanks", "thank", "cheers", "like", "want", "wants", "wish", "let", "lets",
         "mind", "able", "possible", "chance", "ask", "tell", "make", "have", "try", "see", "help", "give",
@@ -2350,6 +2353,9 @@ return {
   -- words said loosely before a value ("to like four times", "about 4x", "around 3 times"): the value said is
   -- the one used
   value_hedges = { "like", "about", "around", "roughly", "approximately", "maybe" },
+  -- how much faster the run is wished, said between "speed it up" and its factor ("speed the sim up heaps, like times
+  -- ten", "speed it up a lot, 4x"): the factor said is the rate
+  speedup_degrees = { "heaps", "lots", "loads", "lot", "bit", "a" },
   wait_hedges = { "about", "around", "roughly", "approximately", "nearly", "almost", "just", "maybe" },
   -- a time said in words the quantities do not read (G:spoken_durations): one unit after "a" or "an" ("a minute",
   -- "an hour and a half", "half a minute", "a quarter of an hour"; seconds each, lexicon.fractions for the parts),

@@ -676,6 +676,10 @@ local names = {
     { "netjets", "NJE" },  -- (a brand: NetJets Europe, NJE, and NetJets Aviation, EJA)
     { "air corps", "IRL" },  -- (the Irish Air Corps, telephony Irish)
     { "irish air corps", "IRL" },
+    -- a flag carrier by its country's people, where the country's name is its telephony ("the New Zealander": Air New
+    -- Zealand; "the Singaporean": Singapore Airlines)
+    { "new zealander", "ANZ" },
+    { "singaporean", "SIA" },
   },
   brands = {
     { "transavia", "TRA", "TVF" },
@@ -708,6 +712,9 @@ local names = {
     -- Belgium, Ireland, France; ASL typed is Air Serbia's designator too, so either flying fits)
     { "dhl", "BCS", "DHK", "DAE", "DHX", "DHL", shared = true },
     { "asl", "TAY", "ABR", "FPO", "ASL", shared = true },
+    -- "Kiwi": the Royal New Zealand Air Force's telephony and New Zealand's nickname, said of Air New Zealand ("the
+    -- Kiwi out east"); either flying fits, both flying is asked
+    { "kiwi", "KIW", "ANZ" },
   },
   designators = { "B712", "B722", "B733", "B734", "B735", "B736", "B737", "B738", "B739", "B744", "B748", "B752",
     "B753", "B762", "B763", "B764", "B772", "B773", "B77W", "B77L", "B788", "B789", "B78X", "B38M", "B39M", "B3XM",

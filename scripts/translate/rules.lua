@@ -631,8 +631,12 @@ return function(intent, rule, words)
   rule { "speed", "dtmult", near = { 3, "up" }, when = function(g, i)
     return not g:has_ref(1, #g.t + 1, "aircraft") and g:word_in(1, #g.t + 1, "@multipliers")
   end }
+  -- ("speed the sim up heaps, like times ten": a degree of lexicon.speedup_degrees before the factor widens the
+  -- window by its word)
   rule { "speed spd airspeed", "dtmult", when = function(g, i)
-    return g:followed_by(i, 6, "times x") and (g:followed_by(i, 3, "@sim") or g:preceded_by(i, 2, "@sim"))
+    local n = 6
+    for k = i + 1, i + 5 do if g:word(k, "@speedup_degrees") then n = n + 1 end end
+    return g:followed_by(i, n, "times x") and (g:followed_by(i, 3, "@sim") or g:preceded_by(i, 2, "@sim"))
   end }
   -- "set the speed to 20 times real time": a rate of the clock, no aircraft named
   rule { "speed", "dtmult", when = function(g, i)
@@ -859,8 +863,10 @@ return function(intent, rule, words)
   rule { "fix point gate entry exit", "defwpt", not_prev = { 3, "put place create make add define" }, when = function(g, i)
     return (g:preceded_by(i, 3, "new reference target") or g:followed_by(i, 2, "@named")) and new_fix_at(g, i)
   end }
+  -- ("put a new waypoint in called GEELO at 38 10 south 144 21 east": a waypoint said new, likewise)
   rule { "put place create make add", "defwpt", when = function(g, i)
-    return g:word(i + 1, "the a an") and g:word(i + 2, "new") and g:followed_by(i + 2, 4, "fix point gate entry exit")
+    return g:word(i + 1, "the a an") and g:word(i + 2, "new")
+      and g:followed_by(i + 2, 4, "fix point gate entry exit @waypoint_nouns")
       and new_fix_at(g, i, 11)
   end }
   -- "add a waypoint called ENTRY at 52 N 3.5 E": a new waypoint, when no flying aircraft is named
@@ -2279,6 +2285,14 @@ return function(intent, rule, words)
   rule { "go run", "op", when = function(g, i)
     local b = g:word(i - 1, "it") and i - 1 or (g:word(i - 1, "@sim") and g:word(i - 2, "the") and i - 2 or nil)
     return b ~= nil and g:word(b - 1, "let") and (g:alone_but(b - 1, i + 1) or g:clause_alone(b - 1, i + 1))
+  end }
+  -- "ok, let's go", "righto let's go" (the lexer reads "let's" as "let", "righto" as "right"): the run started, said
+  -- alone or as a clause of its own, an acknowledgement before it ("let's go with heading 270" is no clause of its
+  -- own)
+  rule { "go", "op", prev = { 1, "let lets" }, when = function(g, i)
+    local b = i - 1
+    while b > 1 and g:word(b - 1, "right alright ok okay so well") do b = b - 1 end
+    return g:alone_but(b, i + 1) or g:clause_alone(b, i + 1)
   end }
   -- "pause, time step 0.1, then start again": the clock started again, a clause of its own
   rule { "start", "op", next = "again", when = function(g, i) return g:clause_alone(i, i + 2) end }

@@ -169,6 +169,11 @@ M.nicknames = {
   -- ("the MAX": any 737 MAX; "the bus": any Airbus airliner)
   max = { "^B3%wM$" },
   bus = { "^A3%d%w$", "^A%d%dN$", "^BCS%d$" },
+  -- ("the widebody": a wide-body airliner, two aisles: Boeing 747/767/777/787, Airbus A300/A310, A330/A340/A350/A380,
+  -- MD-11, DC-10; the 757 is none)
+  widebody = { "^B7[4678]%w$", "^A30%d$", "^A310$", "^A3[345]%w$", "^A388$", "^MD11$", "^DC10$" },
+  ["wide-body"] = { "^B7[4678]%w$", "^A30%d$", "^A310$", "^A3[345]%w$", "^A388$", "^MD11$", "^DC10$" },
+  ["wide body"] = { "^B7[4678]%w$", "^A30%d$", "^A310$", "^A3[345]%w$", "^A388$", "^MD11$", "^DC10$" },
   -- ("the E-jet": Embraer's E170 to E195 and the E2s, and the ERJ 135/145 the name is given to as well, R90)
   ejet = { "^E1[79][05]$", "^E75%u$", "^E29[05]$", "^E1[34]5$", "^E[34]5%u$" },
   ["e-jet"] = { "^E1[79][05]$", "^E75%u$", "^E29[05]$", "^E1[34]5$", "^E[34]5%u$" },

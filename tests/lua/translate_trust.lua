@@ -15434,3 +15434,56 @@ do
   check_eq(ex("KLM12 cross TARNO at FL240 and 280 knots"), "AT KLM12 TARNO ALT FL240 ; AT KLM12 TARNO SPD 280")
   asked(ex("KLM12 cross TARNO at FL240 speed 280"), "a bare speed after the crossing's level")
 end
+
+-- Cycle 55 (f161): an Australian speaker's acknowledgements and degrees: "no worries", "no dramas", "heaps"
+do
+  local _, ex = scene({ "CRE QFA12 B738 -33.9 151.2 090 FL200 280", "CRE RXA40 SF34 -34.5 150.8 020 9000 200" })
+  check_eq(ex("no worries, the Saab can have one eight zero knots"), "SPD RXA40 180")
+  check_eq(ex("remove the Saab, no dramas about the others"), "DEL RXA40")
+  check_eq(ex("the Saab, reduce to 190, heaps of time"), "SPD RXA40 190")
+  check_eq(ex("speed the simulation up heaps, times eight"), "DTMULT 8")
+  -- a degree with no factor still asks how to speed up; "no" alone still corrects
+  asked(ex("speed the sim up heaps"), "a speed-up with no factor")
+  check_eq(ex("the Saab climb FL100, no, FL110"), "ALT RXA40 FL110")
+end
+-- Cycle 55 (f161): "let's go" (read "let go"), alone or as a clause of its own, an acknowledgement before it: OP
+do
+  local _, ex = scene({ "CRE QFA12 B738 -33.9 151.2 090 FL200 280" })
+  check_eq(ex("righto, let's go"), "OP")
+  check_eq(ex("alright let's go"), "OP")
+  check_eq(ex("QFA12 climb FL240, then let's go"), "ALT QFA12 FL240 ; OP")
+  -- "let's go with ..." names what is wished, never the run
+  check_eq(ex("let's go with heading 300 for QFA12"), "HDG QFA12 300")
+end
+-- Cycle 55 (f161): a flag carrier by its people ("the New Zealander"), "the Kiwi" (RNZAF telephony, New Zealand's
+-- nickname: KIW or ANZ, both flying asked), "the widebody" (a family of wide-body designators)
+do
+  local _, ex = scene({ "CRE ANZ77 B789 -34.0 152.0 270 FL350 290", "CRE SIA9 A359 -35.0 149.0 060 FL330 290",
+    "CRE QFA12 B738 -33.9 151.2 090 FL200 280" })
+  check_eq(ex("the New Zealander, descend FL310"), "ALT ANZ77 FL310")
+  check_eq(ex("the Kiwi, turn left heading 250"), "HDG ANZ77 250 LEFT")
+  check_eq(ex("the Singaporean, speed 270"), "SPD SIA9 270")
+  local _, ex2 = scene({ "CRE ANZ77 B789 -34.0 152.0 270 FL350 290", "CRE KIW5 C130 -35.0 151.0 090 FL200 250" })
+  asked(ex2("the Kiwi, descend FL180"), "the Kiwi with an RNZAF and an Air New Zealand aircraft flying")
+  -- two wide-bodies flying: asked; one: read
+  asked(ex("the widebody, climb FL370"), "two wide-bodies flying")
+  local _, ex3 = scene({ "CRE QFA40 A332 -36.2 146.9 060 FL350 280", "CRE VOZ8 B738 -35.2 148.0 230 FL360 270" })
+  check_eq(ex3("the wide-body, turn right 15 degrees"), "HDG QFA40 75 RIGHT")
+end
+-- Cycle 55 (f161): a speed held until a level, "then" a new value or instruction: the next waits for the level (ATALT)
+do
+  local _, ex = scene({ "CRE QFA12 B738 -33.9 151.2 090 6000 230", "ALT QFA12 FL240" })
+  check_eq(ex("QFA12 speed 240 until passing FL120, then 290"), "SPD QFA12 240 ; ATALT QFA12 FL120 SPD QFA12 290")
+  check_eq(ex("QFA12, two thirty knots till eleven thousand, then heading 120"),
+    "SPD QFA12 230 ; ATALT QFA12 11000 HDG QFA12 120")
+  -- no "then": the end of the limit is not simulated, asked as before; a level never passed: asked
+  asked(ex("QFA12 speed 240 until eleven thousand"), "a speed limit to a level with nothing after it")
+  asked(ex("QFA12 speed 240 until 4000 feet, then 290"), "a level the climbing aircraft never passes")
+end
+-- Cycle 55 (f161): "put a new waypoint (in) called X at POS": a waypoint said new, its name and position within reach
+do
+  local _, ex = scene({ "CRE QFA12 B738 -37.9 144.9 090 FL200 280" })
+  check_eq(ex("put a new waypoint in called BAYSD at 38 05 south 144 40 east"), "DEFWPT BAYSD -38.083333 144.666667")
+  -- no name: asked
+  asked(ex("put a new waypoint at 38 05 south 144 40 east"), "a new waypoint with no name")
+end
