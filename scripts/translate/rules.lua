@@ -513,6 +513,11 @@ return function(intent, rule, words)
   rule { "speed", false, prev = { 1, "that the" }, when = function(g, i)
     return g:word(i - 2, "at") and g:find_word(math.max(1, i - 5), i - 2, "when once") < i - 2
   end }
+  -- "when the speed is 230 descend FL090", "once speed reaches 250", "when speed reached descend": the noun as the
+  -- subject of a verb of reaching after a condition word (G:at_speed, G:when_reached), no speed instruction of its own
+  rule { "speed airspeed", false, prev = { 2, "@condition" }, when = function(g, i)
+    return g:word(i + 1, "is 's reaches reached hits") and (g:word(i - 1, "@condition") or g:word(i - 1, "the that"))
+  end }
   -- "climb FL380, passing FL360 Mach .79", "when passing FL300 M.77", "climb FL370, reaching Mach .79": a
   -- Mach number said with no verb straight after a level passed or reached (or "reaching" alone: the
   -- level cleared) is a speed instruction of its own, which waits for that level (m:at_altitude); only after
