@@ -2667,6 +2667,14 @@ return function(intent, rule, words)
   -- "asas dt 2 sec", "dt asas 2": the interval of conflict detection (DT ASAS), no switch
   rule { "detection asas cd", false, near = { 1, "dt timestep" } }
   rule { "detection asas cdmethod cd", "asas" }
+  -- "check the conflicts every 2 seconds", "check for conflicts every 5 s": how often conflict detection runs (DT
+  -- ASAS, m:time_step), "every" and its time straight after the conflicts
+  rule { "check checks checking", "dt", near = { 3, "conflict conflicts" }, when = function(g, i)
+    local k = g:skip_fillers(i + 1)
+    if g:word(k, "for the") then k = g:skip_fillers(k + 1) end
+    if g:word(k, "the") then k = g:skip_fillers(k + 1) end
+    return g:word(k, "conflict conflicts") and g:word(k + 1, "every")
+  end }
   -- a switch said where word i is: an on or off word straight after it, or a switching verb in the four words
   -- before ("conflict alerts on", "turn on the conflict probe"; "on the conflict probe" switches nothing)
   local function switched(g, i)
@@ -2714,6 +2722,11 @@ return function(intent, rule, words)
   -- "after a resolution aircraft should resume nav once past CPA": when navigation resumes after one (RESNAV)
   rule { "resolution resolutions resolving", false, prev = { 2, "after following" }, when = function(g, i)
     return g:word_in(i + 1, math.min(#g.t + 1, i + 8), "resume resumes") and g:word_in(i + 1, #g.t + 1, "cpa")
+  end }
+  -- "the resolution should resume navigation after the CPA": what a resolution should do when it ends (RESNAV),
+  -- a modal verb straight after it, no method to set
+  rule { "resolution resolutions", false, next = "should shall must will", when = function(g, i)
+    return g:word_in(i + 2, math.min(#g.t + 1, i + 4), "resume resumes") and g:word_in(i + 2, #g.t + 1, "cpa")
   end }
   -- "LATAM 3090 climb FL160, vertical resolution", "turn left 30 degrees - a lateral resolution": the kind of
   -- resolution an instruction before it is, named after it to the end of the request (no setting)
@@ -2779,9 +2792,11 @@ return function(intent, rule, words)
   rule { "mvp", "reso", next = "on" }  -- "and MVP on"
   -- "pz 5 nm, dh 1000, lookahead 300, mvp": the method named alone as an item of a list of conflict
   -- detection settings
+  -- ("turn on the ASAS and the MVP": "the" between)
   rule { "mvp", "reso", when = function(g, i)
-    local before, after = g.t[i - 1], g.t[i + 1]
-    return before ~= nil and (before.kind == "punct" or g:word(i - 1, "and"))
+    local b = g:word(i - 1, "the") and i - 2 or i - 1
+    local before, after = g.t[b], g.t[i + 1]
+    return before ~= nil and (before.kind == "punct" or g:word(b, "and"))
       and (after == nil or after.kind == "punct")
       and g:word_in(1, i - 1, "pz rpz zone zoner zonedh dh dtlook lookahead asas cdmethod detection")
   end }
