@@ -2792,12 +2792,12 @@ return function(intent, rule, words)
   rule { "mvp", "reso", next = "on" }  -- "and MVP on"
   -- "pz 5 nm, dh 1000, lookahead 300, mvp": the method named alone as an item of a list of conflict
   -- detection settings
-  -- ("turn on the ASAS and the MVP": "the" between)
+  -- ("turn on the ASAS and the MVP and put look ahead 240 seconds": "the" between, "and" after)
   rule { "mvp", "reso", when = function(g, i)
     local b = g:word(i - 1, "the") and i - 2 or i - 1
     local before, after = g.t[b], g.t[i + 1]
     return before ~= nil and (before.kind == "punct" or g:word(b, "and"))
-      and (after == nil or after.kind == "punct")
+      and (after == nil or after.kind == "punct" or g:word(i + 1, "and"))
       and g:word_in(1, i - 1, "pz rpz zone zoner zonedh dh dtlook lookahead asas cdmethod detection")
   end }
   -- ("3 mile separation horizontally", "a 1000 ft separation"): a distance or height said just before it,
