@@ -3339,7 +3339,8 @@ function G:at_speed(s)
   if not q then return nil end
   local noun, slowed = false, false
   for x = v, q.b - 1 do
-    if x == q.b - 1 and self:word(x, "speed airspeed") then
+    -- (the noun as the subject of a verb of reaching: "when the speed is 230", "once speed reaches 250")
+    if not noun and self:word(x, "speed airspeed") then
       noun = true
     elseif not (self.t[x].filler or ARRIVING[self.words[x]]) then
       return nil
@@ -5653,6 +5654,16 @@ function G:when_reached(s)
       if not (self.t[i].filler or self:word(i, "you you're are it it's is")) then return false end
     end
     return true, "speed"
+  end
+  -- ("when speed reached", "once the speed is reached", "when that speed has been reached": the noun as the subject
+  -- of a verb of reaching, with no value: the speed of the instruction before, reached)
+  if at < s.trig and self:skip_fillers(self:word(verb, "that the") and verb + 1 or verb) == at then
+    local k = self:skip_fillers(at + 1)
+    if self:word(k, "is 's has") then k = self:skip_fillers(k + 1) end
+    if self:word(k, "been") then k = self:skip_fillers(k + 1) end
+    if self:word(k, "reached achieved attained") then
+      return self:instruction_lead(self:skip_fillers(k + 1), s.trig) == s.trig, "speed"
+    end
   end
   -- ("when reaching", "when you reach it", "once it reaches that", "when you hit it": the level of the
   -- instruction before; "once you have it", "when you've got it": its value, held)

@@ -369,6 +369,12 @@ function m:acids(s)
   -- ("both Lufthansa planes", "both the easyJets": the two aircraft of the airline named after it, when
   -- exactly two of it fly)
   local both = self:find_word(s.b, s.e, "both")
+  -- ("put the two Azul at FL120", "the two LATAM, set speed 250": "the two" before an airline or a type names its
+  -- aircraft as "both" does; "of the two KLM, the higher one", "one of them" pick one: the reading of "both" left)
+  local two = both == s.e and self:find_word(s.b, s.e, "two")
+  if two and two < s.e and self:word(two - 1, "the") and not self:word(two - 2, "of") and not self:said("one") then
+    both = two
+  end
   local icao, ae, codes
   if both < s.e then icao, ae, codes = self:airline_at(self:word(both + 1, "the") and both + 2 or both + 1) end
   -- ("both the Finnair and the airBaltic": two aircraft named, no two of one airline)
@@ -382,9 +388,11 @@ function m:acids(s)
     pair = typed or pair
   end
   if (icao or typed) and #pair ~= 2 then
-    self:need(string.format("Which two aircraft does 'both %s' mean? Please give their callsigns.", self:raw(both + 1, ae)))
+    self:need(string.format("Which two aircraft does '%s' mean? Please give their callsigns.",
+      self:raw(self:word(both, "both") and both or both - 1, ae)))
   elseif #pair == 2 then
     self:explain(both, ae)
+    if two == both then self:mark_used(two, two + 1) end  -- (the count is no value)
     ids = pair
   elseif #ids == 0 and self:word_in(s.b, s.e, "both") then
     local named = {}

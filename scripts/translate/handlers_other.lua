@@ -3807,6 +3807,8 @@ return function(H, f, compass)
     -- ("asas dt 2 sec", "dt asas 2": conflict detection's own interval, DT ASAS)
     local asas = self:word(s.trig - 1, "detection asas cd") and s.trig - 1
       or self:word(s.trig + 1, "detection asas cd") and s.trig + 1
+      -- ("check the conflicts every 2 seconds": the conflicts checked, rules.lua)
+      or self:word(s.trig, "check checks checking") and self:find_word(s.trig, s.e, "conflict conflicts")
     if asas then self:explain(asas, asas + 1) end
     local q = first(self, s, { time = true, plain = true })
     -- ("tick rate 20 hz": a rate in hertz is a step of its inverse in seconds)
@@ -4082,6 +4084,14 @@ return function(H, f, compass)
         if self:word(k, "mvp") then self:explain(k, k + 1) end
       end
       return self:emit("RESO")
+    end
+    -- ("ASAS on and the MVP off", "switch off the MVP": the method named, an off word straight after it or
+    -- before it)
+    local mvp = self:find_word(b, s.e, "mvp")
+    local p = self:word(mvp - 1, "the") and mvp - 2 or mvp - 1
+    if mvp < s.e and (self:word(mvp + 1, "@off") or self:word(p, "@off")) then
+      self:explain(mvp, mvp + 1)
+      return self:emit("RESO OFF")
     end
     if self:word_in(1, #self.t + 1, "mvp") or self:word_in(b, s.e, "@mvp") then return self:emit("RESO MVP") end
     if self:on_off(s) == 0 then return self:emit("RESO OFF") end

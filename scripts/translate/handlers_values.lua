@@ -526,8 +526,14 @@ return function(H, f, wrap, compass)
       or (self:word(q.b - 1, "up down drop") and self:word(q.e - 1, "@feet"))
       -- "1000 feet lower", "2000 ft up": an amount in feet straight before the comparative is a change
       or (self:word(q.e, "higher lower up down") and self:word(q.e - 1, "@feet"))
-      -- "another thousand feet", "a further 500 ft": one more step of that size
-      or self:word(q.b - 1, "another further"))
+      -- "another thousand feet", "a further 500 ft", "an extra 1000 ft", "climb more 1000 feet" (Portuguese "mais"):
+      -- one more step of that size
+      or self:word(q.b - 1, "another further extra more"))
+    -- ("climb more 37000 feet": a step of 10000 ft or more after "more" or "extra" may be the level itself, "climb
+    -- more, to 37000": asked)
+    if relative and not q.by and ft >= 10000 and self:word(q.b - 1, "extra more") then
+      return self:need(string.format("Should %s %s to %s ft or by %s ft?", ids[1], verb, f.int(ft), f.int(ft)))
+    end
     -- (a value said after a correction replaces a level said before it: "climb 9000... correction, 5000"
     -- is a level, never a step)
     -- ("climb 3000" below the aircraft, no "by" said: a climb to a level below it, or a climb by that much?

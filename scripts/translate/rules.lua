@@ -513,6 +513,11 @@ return function(intent, rule, words)
   rule { "speed", false, prev = { 1, "that the" }, when = function(g, i)
     return g:word(i - 2, "at") and g:find_word(math.max(1, i - 5), i - 2, "when once") < i - 2
   end }
+  -- "when the speed is 230 descend FL090", "once speed reaches 250", "when speed reached descend": the noun as the
+  -- subject of a verb of reaching after a condition word (G:at_speed, G:when_reached), no speed instruction of its own
+  rule { "speed airspeed", false, prev = { 2, "@condition" }, when = function(g, i)
+    return g:word(i + 1, "is 's reaches reached hits") and (g:word(i - 1, "@condition") or g:word(i - 1, "the that"))
+  end }
   -- "climb FL380, passing FL360 Mach .79", "when passing FL300 M.77", "climb FL370, reaching Mach .79": a
   -- Mach number said with no verb straight after a level passed or reached (or "reaching" alone: the
   -- level cleared) is a speed instruction of its own, which waits for that level (m:at_altitude); only after
@@ -2700,6 +2705,14 @@ return function(intent, rule, words)
   -- "asas dt 2 sec", "dt asas 2": the interval of conflict detection (DT ASAS), no switch
   rule { "detection asas cd", false, near = { 1, "dt timestep" } }
   rule { "detection asas cdmethod cd", "asas" }
+  -- "check the conflicts every 2 seconds", "check for conflicts every 5 s": how often conflict detection runs (DT
+  -- ASAS, m:time_step), "every" and its time straight after the conflicts
+  rule { "check checks checking", "dt", near = { 3, "conflict conflicts" }, when = function(g, i)
+    local k = g:skip_fillers(i + 1)
+    if g:word(k, "for the") then k = g:skip_fillers(k + 1) end
+    if g:word(k, "the") then k = g:skip_fillers(k + 1) end
+    return g:word(k, "conflict conflicts") and g:word(k + 1, "every")
+  end }
   -- a switch said where word i is: an on or off word straight after it, or a switching verb in the four words
   -- before ("conflict alerts on", "turn on the conflict probe"; "on the conflict probe" switches nothing)
   local function switched(g, i)
@@ -2747,6 +2760,11 @@ return function(intent, rule, words)
   -- "after a resolution aircraft should resume nav once past CPA": when navigation resumes after one (RESNAV)
   rule { "resolution resolutions resolving", false, prev = { 2, "after following" }, when = function(g, i)
     return g:word_in(i + 1, math.min(#g.t + 1, i + 8), "resume resumes") and g:word_in(i + 1, #g.t + 1, "cpa")
+  end }
+  -- "the resolution should resume navigation after the CPA": what a resolution should do when it ends (RESNAV),
+  -- a modal verb straight after it, no method to set
+  rule { "resolution resolutions", false, next = "should shall must will", when = function(g, i)
+    return g:word_in(i + 2, math.min(#g.t + 1, i + 4), "resume resumes") and g:word_in(i + 2, #g.t + 1, "cpa")
   end }
   -- "LATAM 3090 climb FL160, vertical resolution", "turn left 30 degrees - a lateral resolution": the kind of
   -- resolution an instruction before it is, named after it to the end of the request (no setting)
@@ -2812,10 +2830,12 @@ return function(intent, rule, words)
   rule { "mvp", "reso", next = "on" }  -- "and MVP on"
   -- "pz 5 nm, dh 1000, lookahead 300, mvp": the method named alone as an item of a list of conflict
   -- detection settings
+  -- ("turn on the ASAS and the MVP and put look ahead 240 seconds": "the" between, "and" after)
   rule { "mvp", "reso", when = function(g, i)
-    local before, after = g.t[i - 1], g.t[i + 1]
-    return before ~= nil and (before.kind == "punct" or g:word(i - 1, "and"))
-      and (after == nil or after.kind == "punct")
+    local b = g:word(i - 1, "the") and i - 2 or i - 1
+    local before, after = g.t[b], g.t[i + 1]
+    return before ~= nil and (before.kind == "punct" or g:word(b, "and"))
+      and (after == nil or after.kind == "punct" or g:word(i + 1, "and"))
       and g:word_in(1, i - 1, "pz rpz zone zoner zonedh dh dtlook lookahead asas cdmethod detection")
   end }
   -- ("3 mile separation horizontally", "a 1000 ft separation"): a distance or height said just before it,

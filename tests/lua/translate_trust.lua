@@ -15487,3 +15487,45 @@ do
   -- no name: asked
   asked(ex("put a new waypoint at 38 05 south 144 40 east"), "a new waypoint with no name")
 end
+
+-- Cycle 55 (f163): a condition on a speed said with the noun as the subject of a verb of reaching
+do
+  local _, ex = scene({ "CRE KLM12 B738 52.0 4.0 090 FL220 280", "CRE BAW7 A320 52.3 4.4 270 FL240 290" })
+  check_eq(ex("KLM12 when the speed is 250 climb FL260"), "ATSPD KLM12 250 ALT KLM12 FL260")
+  check_eq(ex("BAW7 slow to 240, once speed reaches 240 turn left heading 200"),
+    "SPD BAW7 240 ; ATSPD BAW7 240 HDG BAW7 200 LEFT")
+  check_eq(ex("KLM12 reduce 250 knots, when that speed is reached descend FL180"),
+    "SPD KLM12 250 ; ATSPD KLM12 250 ALT KLM12 FL180")
+  check_eq(ex("BAW7 reduce to 260, when speed reached climb FL260"), "SPD BAW7 260 ; ATSPD BAW7 260 ALT BAW7 FL260")
+  -- no speed given before "when speed reached": asked, never run at once
+  asked(ex("KLM12 when speed reached descend FL180"), "a speed reached with none given")
+end
+-- Cycle 55 (f163): "more", "extra" straight before an amount in feet: the step ("climb more 1000 feet")
+do
+  local _, ex = scene({ "CRE KLM12 B738 52.0 4.0 090 FL220 280" })
+  check_eq(ex("KLM12 climb more 2000 feet"), "ALT KLM12 24000")
+  check_eq(ex("KLM12 descend an extra 1000 ft"), "ALT KLM12 21000")
+  -- a step of 10000 ft or more after "more" may be the level itself: asked
+  asked(ex("KLM12 climb more 26000 feet"), "a large step after 'more'")
+end
+-- Cycle 55 (f163): "the two <airline or type>" names both, when exactly two fly; one picked among them is not both
+do
+  local _, ex = scene({ "CRE KLM12 B738 52.0 4.0 090 FL220 280", "CRE KLM34 E190 52.2 4.1 180 FL200 260",
+    "CRE BAW7 A320 52.3 4.4 270 FL240 290", "CRE BAW9 A320 52.1 4.6 270 FL260 290", "CRE BAW11 A321 52.5 4.2 90 FL300 290" })
+  check_eq(ex("set the two KLM speed 240"), "SPD KLM12 240 ; SPD KLM34 240")
+  check_eq(ex("put the two KLM at FL180"), "ALT KLM12 FL180 ; ALT KLM34 FL180")
+  -- three of the airline fly: asked
+  asked(ex("descend the two Speedbird to FL200"), "'the two' of an airline with three flying")
+  -- "of the two KLM, the lower one": the one picked, never both
+  check_eq(ex("of the two KLM, the lower one descend FL150"), "ALT KLM34 FL150")
+end
+-- Cycle 55 (f163): conflict detection and resolution settings in plain words
+do
+  local _, ex = scene({})
+  check_eq(ex("please check for conflicts every 3 seconds"), "DT ASAS 3")
+  check_eq(ex("switch on the ASAS and the MVP"), "ASAS ON ; RESO MVP")
+  check_eq(ex("the resolutions must resume navigation past the CPA"), "RESNAV PASTCPA")
+  -- "MVP off": resolution switched off (confirmed as every switch-off is), never RESO MVP
+  asked(ex("ASAS on, MVP off"), "MVP switched off")
+  asked(ex("check the conflicts every second"), "how often, no number")
+end
