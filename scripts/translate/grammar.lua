@@ -11352,7 +11352,7 @@ G.heard_slots = set_of({ "cross", "crossing", "after", "before", "until", "till"
 G.route_adding, G.route_position = set_of({ "add", "insert", "addwpt", "append" }), set_of({ "after", "before" })
 -- The sound a lower-case word or ident begins with: its first letter, or the letter lexicon.first_sounds gives a
 -- spelling of it ("cubs" and KUBBS both begin with "k", "phil" with "f").
-local function first_sound(w)
+function G.first_sound(w)
   for _, s in ipairs(lexicon.first_sounds) do
     if w:find(s[1]) then return s[2] end
   end
@@ -11365,7 +11365,7 @@ function G.heard_route_name(w, route)
   if #w < 3 or not w:match("^%a+$") or known_word(w) or #route == 0 then return nil end
   local idx, score = squawk.translate.best_match(w, route)
   local name = idx and score >= 0.5 and route[idx]
-  return name and first_sound(name:lower()) == first_sound(w) and name or nil
+  return name and G.first_sound(name:lower()) == G.first_sound(w) and name or nil
 end
 -- The one waypoint of `route` (idents) that the word w sounds like as closely as a direct-to's name is taken
 -- (squawk.translate.best_match at lexicon.waypoint_confirm: the same letters or the same sound key, "camron" for
@@ -11776,7 +11776,7 @@ function G.clause_commas(text)
     return nil
   end))
 end
-local STATE_AFTER_S = set_of(lexicon.state_after_s)
+G.state_after_s = set_of(lexicon.state_after_s)
 local DESCRIBED_AFTER = { there = true, here = true, already = true, still = true, at = true, currently = true,
   maintaining = true, cruising = true, established = true }
 -- A homework answer's label opening the text ("Q3a answer:", "Question 2:", "Answer:"): no instruction
@@ -12092,7 +12092,7 @@ function M.translate(text, world)
     -- ("detection's on?", "the resolution's switched off": a word's "'s" before a state of lexicon.state_after_s is
     -- "is")
     text = text:gsub("(%f[%a]%a+)['\xE2\x80\x99]+s (%a+)", function(name, w)
-      if STATE_AFTER_S[w:lower()] and name:lower() ~= "let" then return name .. " is " .. w end
+      if G.state_after_s[w:lower()] and name:lower() ~= "let" then return name .. " is " .. w end
     end)
   end
   if text:find(",", 1, true) then text = G.clause_commas(text) end
