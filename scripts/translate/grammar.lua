@@ -2264,16 +2264,87 @@ function G:told_setting()
         -- (the setting's word is the copula's subject or after it: "the traffic trails are on", "the simulation
         -- was paused", "the sim is already running at 4x"; "speed it up while the aircraft are still apart" tells no
         -- setting's state)
+        local told = self:rate_told(b, k)
         for x = math.max(b, copula - 3), k - 1 do
-          if D.settings[self:intent_at(x) or ""] and not self:in_reason(x) then
-            return self:need(string.format("'%s' tells how the simulation is or was, no instruction. Should I "
-              .. "change anything? Please say it as an instruction.", self:raw(b, k)))
-          end
+          told = told or D.settings[self:intent_at(x) or ""] and not self:in_reason(x)
+        end
+        if told then
+          return self:need(string.format("'%s' tells how the simulation is or was, no instruction. Should I "
+            .. "change anything? Please say it as an instruction.", self:raw(b, k)))
         end
       end
       b = k + 1
     end
   end
+end
+
+-- A waypoint said loosely (lexicon.place_hedges: "once it passes RAGID or so", "roughly at RAGID") that a command
+-- of self.out runs at or meets ("AT id WPT ..."): the condition would hold exactly there, so it is asked.
+local PLACE_HEDGES = {}
+for k, list in pairs(lexicon.place_hedges) do PLACE_HEDGES[k] = table.concat(list, " ") end
+function G:hedged_place()
+  local H = PLACE_HEDGES
+  for _, r in ipairs(self.refs) do
+    local x = r.b - (self:word(r.b - 1, "at") and 2 or 1)
+    local b = self:word(x, H.before) and x or r.b
+    local e = (self:word(r.e, H.after) and r.e + 1)
+      or (self:word(r.e, "or") and self:word(r.e + 1, H.after_or) and r.e + 2) or r.e
+    if r.kind == "waypoint" and r.name and (b < r.b or e > r.e) then
+      for _, c in ipairs(self.out) do
+        if c:match("^AT %S+ (%S+) ") == r.name:upper() then
+          self.ask = string.format("I have %s, run exactly at %s, but you said '%s'. Should it happen at %s, or "
+            .. "where?", c, r.name:upper(), self:raw(b, e), r.name:upper())
+          return
+        end
+      end
+    end
+  end
+end
+
+-- An aircraft matched by a callsign whose airline was said with more words than the matcher read ("lufthansa
+-- cityline 400" matched to DLH400: "lufthansa cityline" names CLH, Lufthansa CityLine): the longest airline name
+-- (G.airline_name_codes, up to three words) opening the reference names another airline than the aircraft's, so
+-- a word of it was dropped: asked, never sent to the aircraft of the shorter name. A brand said after the airline's
+-- whole name ("british airways cityflyer 31") is read the same way.
+function G:airline_word_dropped()
+  for _, r in ipairs(self.refs) do
+    if r.kind == "aircraft" and r.exists and not r.heard then
+      -- (only where a shorter name of the same words is the aircraft's airline, "lufthansa": a brand family's
+      -- name matched to another of its airlines, "Transavia" TVF, is the matcher's)
+      local own, code, seen = r.name:upper():match("^(%u%u%u)%d"), nil, false
+      local b = own and r.b or r.e
+      -- (a letter or digit said is the flight number's: "Ryanair seven delta whiskey")
+      while b < r.e and not code and not (lexicon.phonetic[self.words[b] or ""] or self.t[b].number_word) do
+        local found, name, last = nil, nil, b
+        for k = b, math.min(b + 2, r.e - 1) do
+          if not self.words[k] then break end
+          name = name and name .. " " .. self.words[k] or self.words[k]
+          if G.airline_name_codes[name] then found, last = G.airline_name_codes[name], k end
+          seen = seen or G.airline_name_codes[name] == own
+        end
+        if found ~= own then code = found end
+        if not found then break end  -- (a name squawk's tables do not hold, "Nor Shuttle": the matcher's)
+        b = last + 1
+      end
+      if code and seen then
+        self.ask = string.format("Which aircraft is '%s'? It names %s, an airline other than %s's. Please give its "
+          .. "callsign.", self:raw(r.b, r.e), code, r.name:upper())
+        return
+      end
+    end
+  end
+end
+
+-- True when tokens b .. e - 1 name the simulation's rate by its value alone, a multiplier ("4x", "x4") outside a
+-- remark with no instruction word anywhere in them: "the sim is already running at 4x" tells the rate (DTMULT).
+function G:rate_told(b, e)
+  local rate = false
+  for _, q in ipairs(self:quantities(b, e)) do rate = rate or (q.kind == "mult" and not self:in_reason(q.b)) end
+  if not rate then return false end
+  for x = b, e - 1 do
+    if self:intent_at(x) then return false end
+  end
+  return true
 end
 
 -- True when the sentence opening at k is a remark in the declarative shape (G:declared), or opened by an apology
@@ -3561,16 +3632,19 @@ end
 -- How far a condition opening the request holds (G:condition; its instructions from `rest`): every instruction
 -- after it, unless a later clause (after a mark or "and", an instruction read before it) holds a word saying it runs
 -- at once (lexicon.at_once_words: "once you reach FL150, reduce to 250 knots; descend to FL150 now"): that clause and
--- what follows run now, and its first token is returned. Another instruction after a full stop, a semicolon or "!"
--- with no such word may wait too or run now: asked (self.ask). nil when the condition holds all.
+-- what follows run now, and its first token is returned. Another instruction after a full stop, a semicolon, "!" or
+-- a question mark (the condition's request asked as a question, "when it passes RAGID, could it descend to FL280?
+-- And reduce to 250") with no such word may wait too or run now: asked (self.ask). nil when the condition holds all.
 function G:condition_scope(rest)
   for x = rest + 1, #self.t do
     local mark = self.t[x].kind == "punct"
     if (mark or self:word(x, "and")) and self:any_instruction_in(rest, x) and self:any_instruction_in(x + 1, #self.t + 1) then
-      local e = x + 1
+      local e = (mark and self:word(x + 1, "and")) and x + 2 or x + 1  -- (a mark, then "And right now ...")
       while e <= #self.t and self.t[e].kind ~= "punct" and not self:word(e, "and") do e = e + 1 end
       if self:word_in(x + 1, e, "@at_once_words") then return x + 1 end
-      if mark and (". ; !"):find(self.t[x].text, 1, true) then
+      -- (after a question, a remark on it, "That's the limit I'm modelling", is no instruction to wait)
+      local remark = self.t[x].text == "?" and self:declared_clause(x + 1)
+      if mark and (". ; ! ?"):find(self.t[x].text, 1, true) and not remark then
         local c = self:find_word(1, rest, "@condition")
         self.ask = string.format("Should '%s' also wait for '%s', or run now?",
           (self:raw(x + 1, #self.t + 1):gsub(" ([,.;:!])", "%1"):gsub("[%s%p]+$", "")),
@@ -12385,6 +12459,8 @@ function M.translate(text, world)
   if not g.ask and not g.leftover then g:uncarried_names() end
   if not g.ask and not g.leftover then g:unread_switch() end
   if not g.ask and not g.leftover then g:told_setting() end
+  if not g.ask and not g.leftover and #g.out > 0 then g:hedged_place() end
+  if not g.ask and #g.out > 0 then g:airline_word_dropped() end
   if not g.ask and not g.leftover then g:values_named_unread() end
   if not g.ask and not g.leftover then g:unaccounted() end
   if not g.ask and not g.leftover and #g.out > 0 then g:described_uninstructed() end

@@ -2022,6 +2022,21 @@ return function(H, f, compass)
           local cls = self.world.airport_class
           local with_city = nearby and #ids == 0 and proper(i - 1) and not proper(after) and after == i + 1 and cls
             and #named(self.t[i - 1].text .. " " .. phrase) == 0
+          -- (a word that, with the phrase, is words of another airport's name anywhere may be no city: "Billy
+          -- Bishop" before KFNT "BISHOP INTL" is also CYOS "BILLY BISHOP RGNL", or a name the navdata does not
+          -- hold (Toronto's CYTZ, "CITY CENTRE"): asked, both named)
+          local whole = (with_city or (city and proper(i - 1))) and self.world.airports_with_words
+          local others, apart = whole and whole(self.t[i - 1].text .. " " .. phrase) or {}, false
+          for _, id in ipairs(#others > 0 and named(phrase) or {}) do
+            apart = true
+            for _, x in ipairs(others) do apart = apart and x ~= id end
+          end
+          if apart then
+            for _, id in ipairs(named(phrase)) do table.insert(others, 1, id) end
+            self:need(string.format("Which airport is '%s': %s? Please give its ICAO code.",
+              self:raw(i - 1, after), table.concat(others, " or ")))
+            return nil
+          end
           if with_city then
             for _, id in ipairs(named(phrase)) do
               if cls(id) == "LARGE" or cls(id) == "MEDIUM" then ids[#ids + 1] = id end
@@ -2186,7 +2201,12 @@ return function(H, f, compass)
     local t = self.t[i]
     if i < e and t.kind == "word" and t.alpha and #t.text >= 3 and not t.keyword and not t.number_word
         and not self:word(i, "@route_ordinals") then
+      -- ("direct to Reagan": a word of an airport's name, "RONALD REAGAN WASHINGTON NATL", that names no place of
+      -- the navdata itself is that airport's, said by a name squawk does not read as a place: asked)
+      local w = self.world
       local name_e = self:name_goes_on(i, e)
+        or (w.place_known and w.airports_with_words and not w.place_known(t.text:upper())
+          and #w.airports_with_words(t.text) > 0 and i + 1)
       if name_e then
         return self:need(string.format("Which place is '%s'? Please give its ICAO code or ident.", self:raw(i, name_e)))
       end

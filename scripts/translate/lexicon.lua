@@ -1333,6 +1333,10 @@ return {
   -- a hedge said straight after a value, closing its clause ("descend fl300 maybe", "heading 240 I think"): the
   -- speaker is unsure of the value, which is asked; a hedge before it is courtesy ("could you maybe descend",
   -- "maybe 280 knots"), and a value said loosely ("ish", "about", "or so") is the value said
+  -- a place said loosely ("RAGID or so", "about RAGID", "roughly at RAGID", "RAGID-ish"): an instruction tied to it
+  -- would run exactly there, so it is asked (G:hedged_place); `before` straight before the name or before an "at"
+  -- before it, `after` straight after it, `after_or` after an "or" after it
+  place_hedges = { before = { "about", "around", "roughly", "approximately" }, after = { "ish" }, after_or = { "so" } },
   trailing_hedges = { words = { "maybe", "perhaps", "probably", "possibly", "unsure" },
                       pairs = { { "not", "sure" }, { "i", "think" }, { "i", "guess" }, { "i", "believe" },
                                 { "not", "certain" } },

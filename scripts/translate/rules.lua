@@ -778,11 +778,14 @@ return function(intent, rule, words)
     return false
   end }
   rule { "left right", "hdg", next = "by", not_prev = { 2, "turn" }, when = function(g, i) return g:number_at(i + 2) end }
-  -- "come left about 30 degrees", "bring it right by roughly 20 degrees": a side and a number of degrees said
-  -- loosely (lexicon.value_hedges) is the turn by that number
+  -- "come left about 30 degrees", "bring it right by roughly 20 degrees", "come right about 20, climb FL250": a side
+  -- and a number said loosely (lexicon.value_hedges) with "degrees" or nothing after it (its clause ends there) is
+  -- the turn as the number said bare ("come right 20")
   rule { "left right", "hdg", not_prev = { 2, "turn heading" }, when = function(g, i)
     local k = g:word(i + 1, "by") and i + 2 or i + 1
-    return g:word(k, "@value_hedges") and g:number_at(k + 1) and g:word(k + 2, "degrees degree deg")
+    local after = g.t[k + 2]
+    return g:word(k, "@value_hedges") and g:number_at(k + 1)
+      and (after == nil or after.kind == "punct" or g:word(k + 2, "degrees degree deg and then"))
   end }
   rule { "left right", "hdg", next = "onto", when = function(g, i) return g:number_at(i + 2) end }  -- "round left onto 290"
   rule { "point fly towards toward head send steer face facing", "hdg", near = { 4, "@compass" } }

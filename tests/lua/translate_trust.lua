@@ -15529,3 +15529,61 @@ do
   asked(ex("ASAS on, MVP off"), "MVP switched off")
   asked(ex("check the conflicts every second"), "how often, no number")
 end
+
+-- Cycle 55 (hzl): the simulation's rate told by its value alone in a clause of state ("already", "still", a past
+-- copula) is asked, never set; the rate said as a wish is still set
+do
+  local _, ex = scene({ "CRE KLM12 B738 52.0 4.0 090 FL220 280" })
+  asked(ex("the simulation is still running at 2x"), "a rate told as the state")
+  asked(ex("the sim was at 8x"), "a rate told in the past")
+  check_eq(ex("run the simulation at 2x"), "DTMULT 2")
+  check_eq(ex("the sim is running at 3x"), "DTMULT 3")
+end
+-- Cycle 55 (hzl): a turn by "about N" with no unit is the turn by N; a unit of another kind after it is asked
+do
+  local _, ex = scene({ "CRE KLM12 B738 52.0 4.0 090 FL220 280" })
+  check_eq(ex("klm12 come left about 15, descend FL200"), "HDG KLM12 75 LEFT ; ALT KLM12 FL200")
+  check_eq(ex("klm12 come right roughly 30 and descend FL200"), "HDG KLM12 120 RIGHT ; ALT KLM12 FL200")
+  asked(ex("klm12 come right about 30 miles"), "a side and a distance")
+end
+-- Cycle 55 (hzl): a brand said after an airline's name names the brand's airline, never the parent's aircraft
+do
+  local _, ex = scene({ "CRE DLH812 A320 52.0 4.0 090 FL220 280", "CRE BAW31 A320 52.3 4.2 270 FL240 280" })
+  asked(ex("lufthansa cityline 812 descend FL200"), "Lufthansa CityLine with only DLH812 flying")
+  asked(ex("Lufthansa CityLine 812, turn left heading 200"), "Lufthansa CityLine in capitals")
+  asked(ex("british airways cityflyer 31 climb FL260"), "BA CityFlyer with only BAW31 flying")
+  check_eq(ex("lufthansa 812 descend FL200"), "ALT DLH812 FL200")
+  check_eq(ex("british airways 31 climb FL260"), "ALT BAW31 FL260")
+end
+-- Cycle 55 (hzl): a place said loosely in a condition ("or so", "about", "-ish") is asked; a question mark closing
+-- a condition's instruction leaves the next instruction's wait asked
+do
+  local _, ex = navscene({ "CRE ACA55 B38M 44.30 -78.20 240 FL340 290", "ADDWPT ACA55 RAGID", "ADDWPT ACA55 DEDKI" },
+    "places said loosely and conditions closed by a question")
+  if ex then
+    asked(ex("ACA55, once past DEDKI or so, descend FL300"), "a waypoint 'or so'")
+    asked(ex("ACA55 after RAGID-ish reduce speed 260"), "a waypoint '-ish'")
+    check_eq(ex("ACA55 after DEDKI descend FL300"), "AT ACA55 DEDKI DO ALT ACA55 FL300")
+    asked(ex("when ACA55 passes DEDKI, could it descend FL300? And reduce speed 260."), "after a question")
+    check_eq(ex("when ACA55 passes DEDKI, could it descend FL300? And right now reduce speed 260."),
+      "AT ACA55 DEDKI DO ALT ACA55 FL300 ; SPD ACA55 260")
+  end
+end
+-- Cycle 55 (hzl): a direct-to a word of an airport's name that names no place itself is asked, never sent
+do
+  local _, ex = navscene({ "CRE SWA77 B737 38.7 -77.3 360 9000 250" }, "a direct-to an airport's name")
+  if ex then
+    asked(ex("SWA77 proceed direct to Dulles"), "Dulles")
+    asked(ex("SWA77 direct Reagan"), "Reagan")
+    check_eq(ex("SWA77 direct KIAD"), "ADDWPT SWA77 KIAD ; DIRECT SWA77 KIAD")
+  end
+end
+-- Cycle 55 (hzl): a capitalised word before an airport's name that, with the name, is words of another airport's
+-- name is no city of the first: both asked, no word dropped
+do
+  local _, ex = navscene({ "CRE POE9 DH8D 43.45 -79.10 305 6000 210" }, "a word before an airport's name")
+  if ex then
+    asked(ex("POE9 destination Billy Bishop airport"), "Billy Bishop: KFNT or CYOS")
+    check_eq(ex("POE9 destination Toronto Pearson"), "DEST POE9 CYYZ")
+  end
+end
