@@ -192,7 +192,8 @@ local function know_all(v, seen)
   -- "sorry", .described only inside a correction's run, .judged: none), lexicon.limit_release only after a limit's
   -- place, lexicon.replaced_lead
   -- only before a value replaced, lexicon.ff_ended only before a fast-forward ended, lexicon.countries only
-  -- inside a callsign read, lexicon.described_places.regions only as a place that describes an aircraft)
+  -- inside a callsign read, lexicon.described_places.regions only as a place that describes an aircraft,
+  -- lexicon.screen_position only where an aircraft's place on the screen is read)
   if type(v) ~= "table" or seen[v] or v == lexicon.accounted.courtesy_phrases or v == lexicon.accounted.value_phrases
       or v == lexicon.typed_abbreviations
       or v == lexicon.aside or v == lexicon.self_correction.just_the or v == lexicon.foreign_digits or v == lexicon.foreign_hesitation_digits
@@ -206,7 +207,7 @@ local function know_all(v, seen)
       or v == lexicon.self_correction.apology or v == lexicon.replaced_lead or v == lexicon.ff_ended
       or v == lexicon.self_correction.formal_apology or v == lexicon.self_correction.described
       or v == lexicon.self_correction.judged or v == lexicon.limit_release
-      or v == lexicon.countries then
+      or v == lexicon.countries or v == lexicon.screen_position then
     return
   end
   seen[v] = true
@@ -12300,6 +12301,7 @@ function M.translate(text, world)
   g:airline_types()
   g:airline_refs()
   g:type_refs()
+  g:position_refs()
   g:described_refs()
   for _, id in ipairs(g:same_for()) do same[#same + 1] = id end
   g:bearing_refs()

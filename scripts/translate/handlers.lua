@@ -2094,7 +2094,7 @@ function m:described_refs()
   local i = 2
   while i <= #self.t do
     local b, measure = i - 1, self.t[i].kind == "word" and L.compared_measures[self.t[i].text]
-    local the = self:word(b, "the") and not self:other_traffic_before(b - 1)
+    local the = self:word(b, "the") and not self:other_traffic_before(b - 1) and not (self.positioned or {})[b]
     local ids, e, count, picked, outer
     if the and measure then
       if self:word(i + 1, "of") then
@@ -2164,6 +2164,25 @@ function m:point_said(k)
   end
 end
 
+-- The aircraft of `ids` (in the fleet's order) heading toward the compass point `point` [deg], as bearing_refs
+-- reads "the one heading north": those whose heading lies less than lexicon.bearing_margin from a cardinal point
+-- (22.5 degrees from an intercardinal, 11.25 from a point between); another of them near the sector's edge, within
+-- half the margin beyond it and at most lexicon.bearing_margin from the point, may be the one meant ("heading
+-- southwest" with one on 225 and one on 250: both fit; one on 190 is south).
+local function heading_toward(self, ids, point)
+  local margin = L.bearing_margin / (point % 90 == 0 and 1 or point % 45 == 0 and 2 or 4)
+  local band = math.min(1.5 * margin, L.bearing_margin)
+  local set, fits, near = {}, {}, {}
+  for _, id in ipairs(ids) do set[id] = true end
+  for _, a in ipairs(self.fleet) do
+    local off = set[a.id] and a.hdg_deg and math.abs((a.hdg_deg - point + 540) % 360 - 180)
+    if off and off < margin then fits[#fits + 1] = a.id end
+    if off and off < band then near[#near + 1] = a.id end
+  end
+  if #fits == 1 and #near > 1 then return near end
+  return fits
+end
+
 -- The aircraft flying described after "the" by the way it flies: a group (compared_group: "one", "aircraft", a
 -- type, an airline) and a verb of going (lexicon.compass_verbs, "that is" or "which is" before it) with a compass
 -- point ("the one heading north", "the Embraer flying south-east", "the aircraft that is going west"), or a
@@ -2186,7 +2205,7 @@ function m:bearing_refs()
   local i = 1
   while i <= #self.t do
     local b, ids, e, point = i, nil, nil, nil
-    if self:word(i, "the") and not self:other_traffic_before(i - 1) then
+    if self:word(i, "the") and not self:other_traffic_before(i - 1) and not (self.positioned or {})[i] then
       local bound = self.t[i + 1] and self.t[i + 1].kind == "word" and self.t[i + 1].text:match("^(%a+)bound$")
       if bound and L.compass[bound] then
         ids, e = compared_group(self, i + 2)
@@ -2206,24 +2225,320 @@ function m:bearing_refs()
     if point and e then o_ids, _, outer = outer_group(self, b) end
     if o_ids then ids = within(ids, o_ids) end  -- ("of the two Air France, the one heading west")
     if point and e then
-      -- (a cardinal point, 45 degrees either side; an intercardinal, 22.5; a point between them, 11.25)
-      -- (another of the group near the sector's edge, within half the margin beyond it and at most
-      -- lexicon.bearing_margin from the point, may be the one meant: "heading southwest" with one on 225 and one
-      -- on 250, asked; one on 190 is south)
-      local margin = L.bearing_margin / (point % 90 == 0 and 1 or point % 45 == 0 and 2 or 4)
-      local band = math.min(1.5 * margin, L.bearing_margin)
-      local fits, near = {}, {}
-      for _, a in ipairs(self.fleet) do
-        local in_group = false
-        for _, id in ipairs(ids) do in_group = in_group or id == a.id end
-        local off = a.hdg_deg and math.abs((a.hdg_deg - point + 540) % 360 - 180)
-        if in_group and off and off < margin then fits[#fits + 1] = a.id end
-        if in_group and off and off < band then near[#near + 1] = a.id end
-      end
-      if #fits == 1 and #near > 1 then fits = near end
+      local fits = heading_toward(self, ids, point)
       i = describe(self, b, e, #fits > 0 and fits or ids, #fits == 1 and fits or nil, outer)
     else
       i = i + 1
+    end
+  end
+end
+
+-- True when the word at i is one of lexicon.screen_position's list `list` (its words or keys).
+local SCREEN = {}
+local function screen(self, i, list)
+  if not SCREEN[list] then
+    SCREEN[list] = {}
+    for k, v in pairs(L.screen_position[list]) do SCREEN[list][type(k) == "number" and v or k] = true end
+  end
+  return self.words[i] ~= nil and SCREEN[list][self.words[i]] == true
+end
+
+-- The place said at token p after "next to", "near", "by" (position_refs): a waypoint, navaid or airport the
+-- request names there (its ref), or one or two capitalised words naming one (m:place_by_name: "Pearson"), that
+-- the navdata or the scenario locates; its {lat, lon} and the token after it, or nil.
+local function place_at(self, p)
+  local locate = self.world.locate
+  if not locate then return nil end
+  for _, r in ipairs(self.refs) do
+    if r.b == p and r.kind ~= "aircraft" then
+      local lat, lon = locate(r.name)
+      if lat then return { lat, lon }, r.e end
+    end
+  end
+  local e = p
+  while e < p + 2 and self.t[e] and self.t[e].kind == "word" and self.t[e].alpha and self.t[e].raw:match("^%u%l")
+      and not self.t[e].keyword and not self:has_ref(e, e + 1, "aircraft") do
+    e = e + 1
+  end
+  -- (the airports of the name near the traffic, else its navaids, all within position_lead_nm of the first: one
+  -- place; "Pearson" is CYYZ, not also the YTP VOR beside it)
+  local w, at = self.world, nil
+  local phrase = e > p and self:raw(p, e)
+  local function nm(lat, lon, x) return 60 * math.sqrt((lat - x[1]) ^ 2 + ((lon - x[2]) * math.cos(math.rad(lat))) ^ 2) end
+  for _, kind in ipairs({ "airports", "navaids" }) do
+    for _, a in ipairs(not at and phrase and w.airports_named and w.navaids_named and self.fleet or {}) do
+      local ids = {}
+      if kind == "navaids" and a.lat then ids = w.navaids_named(phrase:lower(), a.lat, a.lon, L.navaid_range_nm) end
+      if kind == "airports" and a.lat then
+        for _, id in ipairs(w.airports_named(phrase)) do ids[#ids + 1] = id end
+        for _, id in ipairs(w.airports_with_words and w.airports_with_words(phrase, a.lat, a.lon, L.navaid_range_nm)
+            or {}) do
+          ids[#ids + 1] = id
+        end
+      end
+      for _, id in ipairs(ids) do
+        local lat, lon = locate(id)
+        if lat and nm(lat, lon, { a.lat, a.lon }) <= L.navaid_range_nm then
+          if at and nm(lat, lon, at) > L.position_lead_nm then return nil end
+          at = at or { lat, lon }
+        end
+      end
+    end
+  end
+  if at then return at, e end
+end
+
+-- The side said from token k where an aircraft is on the north-up screen or map (position_refs): "at the top",
+-- "on the far left", "up in the top left corner", "at the bottom right of the screen", "down in the south-west",
+-- "in the middle", "near the top left", or a place it is next to ("right next to Pearson", "near LINNG"). Returns
+-- a spec (dir: the unit vector {east, north} of the side or corner; middle: the traffic's centre; place: {lat,
+-- lon}; point and of: the side, in degrees, of a place {lat, lon}, nil where unknown) and the token after the
+-- words, or nil.
+local function side_said(self, k)
+  local x = k
+  while screen(self, x, "leaning") do x = x + 1 end
+  local near = screen(self, x, "near") and x + 1
+    or screen(self, x, "near_to") and self:word(x + 1, "to") and x + 2
+  if near and not self:word(near, "the") then
+    local place, e = place_at(self, near)
+    if place then return { place = place }, e end
+    return nil
+  end
+  -- ("north-east of the field", "south-east of Pearson": the side of a place; the field is the one airport the
+  -- traffic's destinations name, else unknown: nothing fits)
+  local deg, pe = self:point_said(x)
+  if deg and self:word(pe, "of") then
+    if self:word(pe + 1, "the") and screen(self, pe + 2, "fields") then
+      local dest, one = nil, true
+      for _, a in ipairs(self.fleet) do
+        if a.dest and a.dest ~= "" then
+          one, dest = one and (dest == nil or dest == a.dest), dest or a.dest
+        end
+      end
+      local lat, lon = nil, nil
+      if dest and one and self.world.locate then lat, lon = self.world.locate(dest) end
+      return { point = deg, of = lat and { lat, lon } }, pe + 3
+    end
+    local place, e = place_at(self, pe + 1)
+    if place then return { point = deg, of = place }, e end
+    return nil
+  end
+  if not (near or screen(self, x, "at")) then return nil end
+  x = near or x + 1
+  if not self:word(x, "the") then return nil end
+  x = x + 1
+  while self:word(x, "very far") do x = x + 1 end
+  local spec
+  if screen(self, x, "middle") then
+    spec, x = { middle = true }, x + 1
+  else
+    local east, north, axes = 0, 0, {}
+    while self.t[x] and L.screen_position.sides[self.t[x].text] do
+      local d = L.screen_position.sides[self.t[x].text]
+      local axis = d[1] ~= 0 and "x" or "y"
+      if axes[axis] then return nil end  -- ("the left right": no side)
+      axes[axis], east, north, x = self.t[x].text, east + d[1], north + d[2], x + 1
+      if self.t[x] and self.t[x].text == "-" then x = x + 1 end
+    end
+    -- ("the upper one", "the lower left": upper and lower only with a side beside them; lower alone compares levels)
+    if (axes.y == "upper" or axes.y == "lower") and not axes.x then return nil end
+    if not axes.x and not axes.y then
+      local deg, e = self:point_said(x)
+      if not deg then return nil end
+      east, north, x = math.sin(math.rad(deg)), math.cos(math.rad(deg)), e
+    end
+    local n = math.sqrt(east * east + north * north)
+    spec = { dir = { east / n, north / n } }
+  end
+  while screen(self, x, "nouns") do x = x + 1 end
+  if self:word(x, "of") and self:word(x + 1, "the") and screen(self, x + 2, "names") then x = x + 3 end
+  return spec, x
+end
+
+-- One part of an aircraft's description said between commas (position_refs): an aircraft group after "the" (size
+-- words, lexicon.aircraft_described words and a type after an airline narrow or add nothing else: "the big one",
+-- "the little Jazz jet", "the Air Canada A320"), then any sides said (side_said) and ways it flies ("heading
+-- north-west", "the one going east"); a part after a comma may open with a side or a way it flies. Returns
+-- { b, e, ids (nil: any aircraft), sides = { {spec, b, e} }, points = { deg } }, or nil.
+local function description_part(self, b)
+  local part, x = { b = b, sides = {}, points = {} }, b
+  if self:word(b, "the") then
+    x = b + 1
+    while self.t[x] and SIZE_WORDS[self.t[x].text] do x = x + 1 end
+    local ids, e, count = compared_group(self, x)
+    if not ids or count then return nil end  -- ("the two Boeings" are no one aircraft)
+    local test, te = self:type_said(e)
+    if test then
+      local typed = {}
+      for _, a in ipairs(self.fleet) do
+        if a.type and test(a.type:upper()) then typed[#typed + 1] = a.id end
+      end
+      ids, e = within(ids, typed), te
+    end
+    while self:word(e, "@aircraft_described") and not self:word(e, "one") do e = e + 1 end
+    part.ids, x = ids, e
+  end
+  while true do
+    local spec, e = side_said(self, x)
+    if spec then
+      part.sides[#part.sides + 1] = { spec = spec, b = x, e = e }
+      x = e
+    else
+      local v = self:word(x, "that which") and self:word(x + 1, "is") and x + 2 or x
+      if not self:word(v, "@compass_verbs") then break end
+      local k = v + 1
+      while k < v + 3 and self:word(k, "@compass_particles") do k = k + 1 end
+      local point
+      point, e = self:point_said(k)
+      if not point then break end
+      part.points[#part.points + 1], x = point, e
+    end
+  end
+  part.e = x
+  if x == b or not (part.ids or #part.sides > 0 or #part.points > 0) then return nil end
+  return part
+end
+
+-- The aircraft of `ids` that the side `spec` (side_said) picks, or nil and those it could not tell apart. The
+-- traffic is laid on the north-up screen in NM about its centre. A side or corner: the one furthest along it,
+-- on that side of the screen's centre line (else the words contradict the others: none), leading the runner-up
+-- by lexicon.position_lead of the traffic's spread along it and at least position_lead_nm. The middle: the one
+-- nearest the traffic's centre by that lead (of the traffic's larger spread). Near a place: the nearest, within
+-- position_near_nm (or that fraction of the spread) of it, the runner-up at least twice as far and
+-- position_lead_nm further.
+local function side_pick(self, ids, spec)
+  if spec.point then  -- (the side of a place: a quadrant about the point's bearing)
+    local fits = {}
+    for _, a in ipairs(spec.of and self.fleet or {}) do
+      for _, id in ipairs(ids) do
+        if id == a.id and a.lat then
+          local dlat, dlon = a.lat - spec.of[1], (a.lon - spec.of[2]) * math.cos(math.rad(a.lat))
+          local brg = math.deg(math.atan(dlon, dlat)) % 360
+          if math.abs((brg - spec.point + 540) % 360 - 180) < L.bearing_margin then fits[#fits + 1] = id end
+        end
+      end
+    end
+    return #fits == 1 and fits[1] or nil, fits
+  end
+  local lat0, lon0, n = 0, 0, 0
+  for _, a in ipairs(self.fleet) do
+    if a.lat then lat0, lon0, n = lat0 + a.lat, lon0 + a.lon, n + 1 end
+  end
+  if n == 0 then return nil, ids end
+  lat0, lon0 = lat0 / n, lon0 / n
+  local k = 60 * math.cos(math.rad(lat0))
+  local function xy(lat, lon) return (lon - lon0) * k, (lat - lat0) * 60 end
+  local box = { math.huge, -math.huge, math.huge, -math.huge }
+  for _, a in ipairs(self.fleet) do
+    if a.lat then
+      local x, y = xy(a.lat, a.lon)
+      box = { math.min(box[1], x), math.max(box[2], x), math.min(box[3], y), math.max(box[4], y) }
+    end
+  end
+  local cx, cy = (box[1] + box[2]) / 2, (box[3] + box[4]) / 2
+  local spread = math.max(box[2] - box[1], box[4] - box[3])
+  local function score(a)  -- (the larger the better)
+    local x, y = xy(a.lat, a.lon)
+    if spec.dir then return x * spec.dir[1] + y * spec.dir[2] end
+    local px, py = cx, cy
+    if spec.place then px, py = xy(spec.place[1], spec.place[2]) end
+    return -math.sqrt((x - px) ^ 2 + (y - py) ^ 2)
+  end
+  if spec.dir then  -- (the traffic's spread and centre line along the side)
+    local lo, hi = math.huge, -math.huge
+    for _, a in ipairs(self.fleet) do
+      if a.lat then lo, hi = math.min(lo, score(a)), math.max(hi, score(a)) end
+    end
+    spread, cx = hi - lo, (hi + lo) / 2
+  end
+  local scored = {}
+  for _, a in ipairs(self.fleet) do
+    for _, id in ipairs(ids) do
+      if id == a.id and a.lat then scored[#scored + 1] = { id = id, v = score(a) } end
+    end
+  end
+  table.sort(scored, function(p, q) return p.v > q.v end)
+  local first, second = scored[1], scored[2]
+  if not first then return nil, ids end
+  local lead = math.max(L.position_lead_nm, L.position_lead * spread)
+  if spec.place then lead = math.max(lead, -first.v) end
+  local ties = {}
+  for _, p in ipairs(scored) do
+    if first.v - p.v < lead then ties[#ties + 1] = p.id end
+  end
+  local fits = (not spec.dir or first.v > cx or spread == 0)
+    and (not spec.place or -first.v <= math.max(L.position_near_nm, L.position_lead * spread))
+  if not fits then return nil, {} end
+  if second and first.v - second.v < lead then return nil, ties end
+  return first.id, ties
+end
+
+-- The aircraft flying described by where it is on the north-up screen or map ("the one at the bottom right of the
+-- screen", "the plane on the far left", "the Air Canada down in the south-west", "the plane in the middle", "the
+-- little Jazz jet sitting near Pearson"), with the other parts of its description said between commas beside it
+-- ("the Delta, the Embraer up in the top left corner, ...", "the plane at the bottom right, the one going west,
+-- ...", "the aircraft at the bottom of the screen, heading north-west, ...", "the plane in the middle, right next
+-- to Pearson, ..."): of the aircraft that fit every other part (group, type, way it flies), the one each side
+-- picks (side_pick) is the aircraft described (describe); sides that pick none, or different ones, and parts that
+-- no aircraft fits together are asked about, naming those that could be meant. Runs before described_refs and
+-- bearing_refs, which leave the words read here alone (self.positioned).
+function m:position_refs()
+  if not self:said("the") then return end
+  local said = self:said("@compass")
+  for k = 1, #self.t do said = said or screen(self, k, "at") or screen(self, k, "near") or screen(self, k, "near_to") end
+  if not said then return end
+  self.positioned = self.positioned or {}
+  local i = 1
+  while i <= #self.t do
+    local first = self:word(i, "the") and not self:other_traffic_before(i - 1) and description_part(self, i)
+    local parts, e = { first or nil }, first and first.e
+    while e and clause_mark(self, e) do  -- (the parts said after it between commas)
+      local nx = description_part(self, self:word(e + 1, "the") and e + 1 or self:skip_fillers(e + 1))
+      if not (nx and (clause_mark(self, nx.e) or self.t[nx.e] and self.t[nx.e].kind == "punct")) then break end
+      parts[#parts + 1], e = nx, nx.e
+    end
+    -- (a part after them this reads no word of, "the four-engine one,", is no part dropped: asked)
+    local unread = e and clause_mark(self, e) and self:word(e + 1, "the") and e + 1
+    while unread and self.t[unread] and self.t[unread].kind ~= "punct" do unread = unread + 1 end
+    if unread and clause_mark(self, unread) and self:word(unread - 1, "one @aircraft_nouns") then e = unread end
+    local sides = 0
+    for _, p in ipairs(parts) do sides = sides + #p.sides end  -- (none without a first part)
+    if sides == 0 then
+      i = i + 1
+    else
+      local ids = {}
+      for _, a in ipairs(self.fleet) do ids[#ids + 1] = a.id end
+      for _, p in ipairs(parts) do
+        if p.ids then ids = within(ids, p.ids) end
+        for _, point in ipairs(p.points) do ids = heading_toward(self, ids, point) end
+      end
+      local picked, named = nil, ids
+      for _, p in ipairs(parts) do
+        for _, side in ipairs(p.sides) do
+          if side.spec.point and not side.spec.of then
+            self:need(string.format("Which airport do you mean by '%s'? The traffic's destinations name no one "
+              .. "airport: please name it, or give the aircraft's callsign.", self:raw(side.b, side.e)))
+          end
+          local id, ties = side_pick(self, ids, side.spec)
+          if not id or (picked and picked ~= id) then picked, named = false, #ties > 0 and ties or ids end
+          if picked == nil then picked = id end
+        end
+      end
+      local b, unresolved = parts[1].b, self.type_unresolved or {}
+      for n = #unresolved, 1, -1 do
+        if unresolved[n].b >= b and unresolved[n].b < e then table.remove(unresolved, n) end
+      end
+      for x = b, e - 1 do self.positioned[x] = true end
+      self:mark_used(b, e)  -- (asked or read, the words are no value: "the one north-east" is no latitude)
+      for _, p in ipairs(picked and parts or {}) do  -- (a side read is no turn's side: "the top left")
+        for _, side in ipairs(p.sides) do
+          for x = side.b, side.e - 1 do
+            if self:word(x, "@left @right") then self:blank(x) end
+          end
+        end
+      end
+      if unread and e == unread then named, picked = picked and { picked } or named, nil end
+      i = describe(self, b, e, named, picked and { picked } or nil)
     end
   end
 end

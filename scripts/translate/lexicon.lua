@@ -1034,6 +1034,30 @@ return {
     northernmost = { "lat", 1 }, southernmost = { "lat", -1 }, easternmost = { "lon", 1 }, westernmost = { "lon", -1 } },
   -- (lat, lon: degrees, about a mile)
   compared_margin = { alt_ft = 100, cas_kt = 5, lat = 0.02, lon = 0.02 },
+  -- where an aircraft is on the north-up screen or map (handlers: position_refs; accounted for only where that
+  -- reads them, so "at the top of the hour" stays asked): a side's words and its direction {east, north} (two make
+  -- a corner: "the top left"); the words of the traffic's centre; the nouns a side may end with ("the top left
+  -- corner") and the displays it may be "of" ("of the screen"); the words opening a side said after the aircraft
+  -- ("the one at the top", "the plane up in the top left", "the Air Canada down in the south-west", "near the top
+  -- left"), and those before it that change nothing ("very", "far"); the words of an aircraft said by the place
+  -- it is next to ("the one next to Pearson", "right by LINNG"); the airport of an exercise said by a noun
+  -- ("north-east of the field")
+  screen_position = {
+    sides = { top = { 0, 1 }, upper = { 0, 1 }, bottom = { 0, -1 }, lower = { 0, -1 }, left = { -1, 0 },
+              right = { 1, 0 } },
+    middle = { "middle", "centre", "center" },
+    nouns = { "corner", "side", "edge", "end", "part", "area", "bit" },
+    names = { "screen", "scope", "map", "display", "radar", "picture" },
+    at = { "at", "on", "in", "near", "towards", "toward" },
+    leaning = { "up", "down", "over", "out", "right", "just", "very", "far", "sitting", "that's", "currently" },
+    near = { "near", "beside", "by" },
+    near_to = { "next", "close", "closest", "nearest" },
+    fields = { "field", "airport", "aerodrome", "airfield" } },
+  -- how clearly the aircraft picked must stand out of the others that fit: its lead over the runner-up along the
+  -- side (or, in the middle or near a place, its distance's lead), at least this fraction of the traffic's
+  -- spread along that side and at least position_lead_nm [NM]; one near a place lies within position_near_nm
+  -- [NM] (or that fraction of the traffic's spread) of it
+  position_lead = 0.15, position_lead_nm = 3, position_near_nm = 10,
   -- an aircraft described by when it was created ("the aircraft I created last", "the first one we added", "the
   -- one created most recently"): the verbs (as the lexer reads them: "created" is "create"), the people who
   -- create, and the words of order (true: the latest)

@@ -15587,3 +15587,59 @@ do
     check_eq(ex("POE9 destination Toronto Pearson"), "DEST POE9 CYYZ")
   end
 end
+
+-- Cycle 55 (fsp): an aircraft named by where it is on the north-up screen or map ("the one at the top right of
+-- the screen", "the plane on the far left", "the Boeing down in the south-west", "the plane in the middle"), the
+-- other parts of its description said between commas narrowing the aircraft it is picked from; a near tie, a
+-- side no aircraft that fits lies on, or a part this reads nothing of: asked
+do
+  local _, ex = scene({ "CRE AAA11 A320 52.9 3.6 090 FL240 280", "CRE BBB22 B738 52.9 5.0 270 FL300 250",
+    "CRE CCC33 A320 51.7 5.1 180 FL120 250", "CRE DDD44 B738 51.8 3.5 020 FL200 240",
+    "CRE EEE55 E190 52.35 4.65 000 FL150 240" })
+  check_eq(ex("the one at the top right of the screen, climb FL320"), "ALT BBB22 FL320")
+  check_eq(ex("could the A320 down in the bottom right corner reduce to 220 knots?"), "SPD CCC33 220")
+  check_eq(ex("the Boeing in the south-west, what is it doing?"), "POS DDD44")
+  check_eq(ex("The plane in the middle, turn left heading 180"), "HDG EEE55 180 LEFT")
+  -- a way it flies said beside it: of the two heading north, the one at the bottom left
+  check_eq(ex("The one going north, the one at the bottom left, could it climb to FL220?"), "ALT DDD44 FL220")
+  check_eq(ex("The aircraft at the very bottom of the screen, heading south, descend FL100"), "ALT CCC33 FL100")
+  -- a side's "left" is no turn's side
+  check_eq(ex("the one at the top left, could it turn right heading 120?"), "HDG AAA11 120 RIGHT")
+  -- a near tie (3.6 and 3.5 degrees east, about 4 NM apart of a 59 NM spread): asked, naming both
+  local tie = ex("the plane on the far left, descend FL200")
+  asked(tie, "two aircraft on the far left within the margin")
+  check(tie:find("AAA11", 1, true) ~= nil and tie:find("DDD44", 1, true) ~= nil, "the question names both: " .. tie)
+  -- the only Embraer lies east of the screen's centre: "at the top left" contradicts it
+  asked(ex("the Embraer at the top left, climb FL200"), "the Embraer is not at the top left")
+  -- a part this reads nothing of is no part dropped
+  asked(ex("the aircraft at the top right, the two-engine one, climb FL310"), "'the two-engine one' read nothing")
+  -- a side said alone, attached to no aircraft, is still asked about
+  asked(ex("BBB22 climb FL310 at the top of the screen"), "'at the top of the screen' describes no aircraft")
+  -- "north-east of the field" with no destination naming the field: asked which airport
+  asked(ex("the Boeing north-east of the field, climb FL310"), "the field is unknown")
+end
+do
+  local _, ex = scene({ "CRE AAA11 A320 52.9 3.6 090 FL240 280", "CRE FFF66 B738 52.8 3.75 270 FL300 250",
+    "CRE CCC33 A320 51.7 5.1 180 FL120 250" })
+  -- two aircraft compete for the top left corner (about 2 NM apart along it): asked, naming them
+  local corner = ex("the one in the top left corner, descend FL200")
+  asked(corner, "two aircraft in the top left corner")
+  check(corner:find("AAA11", 1, true) ~= nil and corner:find("FFF66", 1, true) ~= nil, "names both: " .. corner)
+  -- the type narrows them first: the A320 in the top left
+  check_eq(ex("the A320 in the top left corner, descend FL200"), "ALT AAA11 FL200")
+end
+do
+  local nav, ex = navscene({ "CRE AAA11 A320 52.9 3.6 090 FL240 280", "CRE BBB22 B738 52.9 5.0 270 FL300 250",
+    "CRE CCC33 A320 51.7 5.1 180 FL120 250", "CRE EEE55 E190 52.35 4.65 000 FL150 240", "DEST AAA11 EHAM",
+    "DEST BBB22 EHAM" }, "aircraft by place")
+  if nav then
+    check_eq(ex("The plane right next to Schiphol, what is it doing?"), "POS EEE55")
+    check_eq(ex("the one north-east of Schiphol, climb FL320"), "ALT BBB22 FL320")
+    -- the A320s are far from it: "near Schiphol" contradicts them
+    asked(ex("the A320 near Schiphol, climb FL320"), "no A320 is near Schiphol")
+    -- the field: the one airport the destinations name
+    check_eq(ex("the Boeing north-east of the field, descend FL200"), "ALT BBB22 FL200")
+    check_eq(ex("the A320 south-east of the field, climb FL200"), "ALT CCC33 FL200")
+    asked(ex("the A320 north-east of the field, descend FL200"), "no A320 north-east of Schiphol")
+  end
+end
