@@ -2183,6 +2183,25 @@ local function heading_toward(self, ids, point)
   return fits
 end
 
+-- The way an aircraft flies, said from token v (bearing_refs, position_refs): a verb of going (lexicon.compass_verbs),
+-- its particles, perhaps "to" or "towards" (and "the"), and a compass point ("flying south-east", "heading out
+-- west", "going out to the west", "flying to south-east"), or "-ward(s)" on a point ("flying southward"); or a verb
+-- of coming (lexicon.compass_from_verbs), "from" (and "the") and the point it flies away from ("coming from the
+-- east": flying west, 270). Its heading's point [deg] and the token after the words, or nil.
+function m:way_said(v)
+  local from = self:word(v, "@compass_from_verbs") and self:word(v + 1, "from")
+  if not (from or self:word(v, "@compass_verbs")) then return nil end
+  local k = from and v + 2 or v + 1
+  while not from and k < v + 3 and self:word(k, "@compass_particles") do k = k + 1 end
+  if not from and self:word(k, "to towards") then k = k + 1 end
+  if k > v + 1 and self:word(k, "the") then k = k + 1 end
+  local point, e = self:point_said(k)
+  local stem = not point and self.words[k] and self.words[k]:match("^(%a+)wards?$")
+  if stem and L.compass[stem] then point, e = L.compass[stem], k + 1 end
+  if point and from then point = (point + 180) % 360 end
+  return point, e
+end
+
 -- The aircraft flying described after "the" by the way it flies: a group (compared_group: "one", "aircraft", a
 -- type, an airline) and a verb of going (lexicon.compass_verbs, "that is" or "which is" before it) with a compass
 -- point ("the one heading north", "the Embraer flying south-east", "the aircraft that is going west"), or a
@@ -2201,7 +2220,7 @@ function m:bearing_refs()
       break
     end
   end
-  if not (bound or self:said("@compass_verbs")) then return end
+  if not (bound or self:said("@compass_verbs") or self:said("@compass_from_verbs")) then return end
   local i = 1
   while i <= #self.t do
     local b, ids, e, point = i, nil, nil, nil
@@ -2213,12 +2232,8 @@ function m:bearing_refs()
       else
         ids, e = compared_group(self, i + 1)
         local v = e and (self:word(e, "that which") and self:word(e + 1, "is") and e + 2 or e)
-        if v and self:word(v, "@compass_verbs") then
-          local k = v + 1
-          while k < v + 3 and self:word(k, "@compass_particles") do k = k + 1 end
-          if self:word(k, "to towards") and self:word(k + 1, "the") then k = k + 2 end  -- ("out to the west")
-          point, e = self:point_said(k)
-        end
+        if v then point, e = self:way_said(v) end
+        e = point and e
       end
     end
     local o_ids, _, outer = nil, nil, nil
@@ -2340,8 +2355,9 @@ local function side_said(self, k)
       axes[axis], east, north, x = self.t[x].text, east + d[1], north + d[2], x + 1
       if self.t[x] and self.t[x].text == "-" then x = x + 1 end
     end
-    -- ("the upper one", "the lower left": upper and lower only with a side beside them; lower alone compares levels)
-    if (axes.y == "upper" or axes.y == "lower") and not axes.x then return nil end
+    -- ("the upper one", "the lower left", "the upper side": upper and lower only with a side or a noun of
+    -- lexicon.screen_position beside them; lower alone compares levels)
+    if (axes.y == "upper" or axes.y == "lower") and not axes.x and not screen(self, x, "nouns") then return nil end
     if not axes.x and not axes.y then
       local deg, e = self:point_said(x)
       if not deg then return nil end
@@ -2351,15 +2367,18 @@ local function side_said(self, k)
     spec = { dir = { east / n, north / n } }
   end
   while screen(self, x, "nouns") do x = x + 1 end
-  if self:word(x, "of") and self:word(x + 1, "the") and screen(self, x + 2, "names") then x = x + 3 end
+  local d = self:word(x, "of") and (self:word(x + 1, "the") and x + 2 or x + 1)  -- ("of the screen", "of screen")
+  if d and screen(self, d, "names") then x = d + 1 end
   return spec, x
 end
 
 -- One part of an aircraft's description said between commas (position_refs): an aircraft group after "the" (size
 -- words, lexicon.aircraft_described words and a type after an airline narrow or add nothing else: "the big one",
 -- "the little Jazz jet", "the Air Canada A320"), then any sides said (side_said) and ways it flies ("heading
--- north-west", "the one going east"); a part after a comma may open with a side or a way it flies. Returns
--- { b, e, ids (nil: any aircraft), sides = { {spec, b, e} }, points = { deg } }, or nil.
+-- north-west", "the one going east", way_said) and one superlative after "which is the" or "and" ("the aircraft
+-- which is the highest now", "the one flying south and slowest"); a part after a comma may open with a side or a
+-- way it flies. Returns { b, e, ids (nil: any aircraft), sides = { {spec, b, e} }, points = { deg }, measure (nil
+-- or lexicon.compared_measures' entry) }, or nil.
 local function description_part(self, b)
   local part, x = { b = b, sides = {}, points = {} }, b
   if self:word(b, "the") then
@@ -2385,17 +2404,23 @@ local function description_part(self, b)
       x = e
     else
       local v = self:word(x, "that which") and self:word(x + 1, "is") and x + 2 or x
-      if not self:word(v, "@compass_verbs") then break end
-      local k = v + 1
-      while k < v + 3 and self:word(k, "@compass_particles") do k = k + 1 end
       local point
-      point, e = self:point_said(k)
-      if not point then break end
-      part.points[#part.points + 1], x = point, e
+      point, e = self:way_said(v)
+      -- ("which is the highest now", "flying south and slowest": a superlative of lexicon.compared_measures)
+      local k = self:word(v, "and") and v + 1 or v
+      if self:word(k, "the") and k > x then k = k + 1 end
+      local measure = not point and not part.measure and k > x and L.compared_measures[self.words[k] or ""]
+      if measure and not self.words[k]:match("er$") then
+        part.measure, x = measure, self:word(k + 1, "now currently") and k + 2 or k + 1
+      elseif not point then
+        break
+      else
+        part.points[#part.points + 1], x = point, e
+      end
     end
   end
   part.e = x
-  if x == b or not (part.ids or #part.sides > 0 or #part.points > 0) then return nil end
+  if x == b or not (part.ids or #part.sides > 0 or #part.points > 0 or part.measure) then return nil end
   return part
 end
 
@@ -2473,6 +2498,24 @@ local function side_pick(self, ids, spec)
   return first.id, ties
 end
 
+-- The aircraft of `ids` (in their order) that lead on the measure `measure` (lexicon.compared_measures' entry:
+-- field, sign): the one furthest ahead and any within lexicon.compared_margin of it (several: a near tie, asked);
+-- none where an aircraft lacks the field.
+local function measure_leaders(self, ids, measure)
+  local field, sign, value = measure[1], measure[2], {}
+  for _, a in ipairs(self.fleet) do value[a.id] = a[field] and sign * a[field] end
+  local best = -math.huge
+  for _, id in ipairs(ids) do
+    if not value[id] then return {} end
+    best = math.max(best, value[id])
+  end
+  local out = {}
+  for _, id in ipairs(ids) do
+    if best - value[id] <= L.compared_margin[field] then out[#out + 1] = id end
+  end
+  return out
+end
+
 -- The aircraft flying described by where it is on the north-up screen or map ("the one at the bottom right of the
 -- screen", "the plane on the far left", "the Air Canada down in the south-west", "the plane in the middle", "the
 -- little Jazz jet sitting near Pearson"), with the other parts of its description said between commas beside it
@@ -2484,7 +2527,7 @@ end
 -- bearing_refs, which leave the words read here alone (self.positioned).
 function m:position_refs()
   if not self:said("the") then return end
-  local said = self:said("@compass")
+  local said = self:said("@compass @compass_verbs @compass_from_verbs @compared_measures")
   for k = 1, #self.t do said = said or screen(self, k, "at") or screen(self, k, "near") or screen(self, k, "near_to") end
   if not said then return end
   self.positioned = self.positioned or {}
@@ -2501,9 +2544,11 @@ function m:position_refs()
     local unread = e and clause_mark(self, e) and self:word(e + 1, "the") and e + 1
     while unread and self.t[unread] and self.t[unread].kind ~= "punct" do unread = unread + 1 end
     if unread and clause_mark(self, unread) and self:word(unread - 1, "one @aircraft_nouns") then e = unread end
-    local sides = 0
-    for _, p in ipairs(parts) do sides = sides + #p.sides end  -- (none without a first part)
-    if sides == 0 then
+    local sides, ways = 0, 0
+    for _, p in ipairs(parts) do  -- (none without a first part)
+      sides, ways = sides + #p.sides, ways + (p.measure and 1 or 0) + (#parts > 1 and #p.points or 0)
+    end
+    if sides + ways == 0 then
       i = i + 1
     else
       local ids = {}
@@ -2512,7 +2557,11 @@ function m:position_refs()
         if p.ids then ids = within(ids, p.ids) end
         for _, point in ipairs(p.points) do ids = heading_toward(self, ids, point) end
       end
+      for _, p in ipairs(parts) do
+        if p.measure then ids = measure_leaders(self, ids, p.measure) end
+      end
       local picked, named = nil, ids
+      if sides == 0 then picked = #ids == 1 and ids[1] or false end
       for _, p in ipairs(parts) do
         for _, side in ipairs(p.sides) do
           if side.spec.point and not side.spec.of then

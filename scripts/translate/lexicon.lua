@@ -1530,6 +1530,9 @@ return {
   -- words between a verb of going and its compass point that leave the point as said ("the Shamrock heading out
   -- west", "the one going due north", "the Ryanair flying back east", "the Embraer heading off south")
   compass_particles = { "due", "out", "off", "back", "away" },
+  -- verbs of coming before "from" and the compass point an aircraft flies away from ("the one coming from the
+  -- east" flies west: G:way_said)
+  compass_from_verbs = { "coming", "approaching", "arriving", "inbound" },
   -- words that make a compass point a direction to lean toward, not a heading ("more to the north", "a bit
   -- further east", "slightly west"): no heading value, asked
   vague_direction = { "more", "further", "farther", "slightly", "bit", "little", "somewhat", "something" },

@@ -680,6 +680,7 @@ local names = {
     -- Zealand; "the Singaporean": Singapore Airlines)
     { "new zealander", "ANZ" },
     { "singaporean", "SIA" },
+    { "korean", "KAL" },  -- (Korean Air; brands: any Korean airline)
   },
   brands = {
     { "transavia", "TRA", "TVF" },
@@ -715,6 +716,9 @@ local names = {
     -- "Kiwi": the Royal New Zealand Air Force's telephony and New Zealand's nickname, said of Air New Zealand ("the
     -- Kiwi out east"); either flying fits, both flying is asked
     { "kiwi", "KIW", "ANZ" },
+    -- "the Korean one": an aircraft of a Korean airline (Korean Air, Asiana, Jeju Air, Jin Air, T'way, Air Busan);
+    -- one of them flying fits, two flying are asked
+    { "korean", "KAL", "AAR", "JJA", "JNA", "TWB", "ABL" },
   },
   designators = { "B712", "B722", "B733", "B734", "B735", "B736", "B737", "B738", "B739", "B744", "B748", "B752",
     "B753", "B762", "B763", "B764", "B772", "B773", "B77W", "B77L", "B788", "B789", "B78X", "B38M", "B39M", "B3XM",

@@ -178,6 +178,10 @@ M.nicknames = {
   ejet = { "^E1[79][05]$", "^E75%u$", "^E29[05]$", "^E1[34]5$", "^E[34]5%u$" },
   ["e-jet"] = { "^E1[79][05]$", "^E75%u$", "^E29[05]$", "^E1[34]5$", "^E[34]5%u$" },
   ["e jet"] = { "^E1[79][05]$", "^E75%u$", "^E29[05]$", "^E1[34]5$", "^E[34]5%u$" },
+  -- ("the regional jet": a jet airliner of under about 130 seats: the CRJs, the E-jets and ERJs, the Superjet,
+  -- ARJ21, BAe 146 / Avro RJ, Fokker 70/100, Dornier 328JET; no turboprop)
+  ["regional jet"] = { "^CRJ%w$", "^E1[79][05]$", "^E75%u$", "^E29[05]$", "^E1[34]5$", "^E[34]5%u$", "^SU95$",
+    "^AJ27$", "^B46[123]$", "^RJ%w%w$", "^F70$", "^F100$", "^J328$" },
 }
 
 function M.build(designators)

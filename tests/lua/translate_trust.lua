@@ -15643,3 +15643,37 @@ do
     asked(ex("the A320 north-east of the field, descend FL200"), "no A320 north-east of Schiphol")
   end
 end
+
+-- Cycle 55 (fbh): aircraft by the way they fly and by comparison, said after "which is" / "and" and between commas
+do
+  local _, ex = scene({ "CRE AAA11 A320 52.0 4.0 300 FL240 280", "CRE KAL88 B738 52.2 4.6 330 FL300 250",
+    "CRE CCC33 E190 51.7 5.1 140 FL120 250", "CRE DDD44 A333 52.5 4.2 170 FL120 300",
+    "CRE EEE55 A320 51.9 5.0 175 FL380 240" })
+  -- two fly north-west: the airline said between commas picks one; without it both are named
+  check_eq(ex("the plane flying north-west, the Korean one, climb FL320"), "ALT KAL88 FL320")
+  local nw = ex("the plane flying north-west, climb FL320")
+  asked(nw, "two aircraft fly north-west")
+  check(nw:find("AAA11", 1, true) ~= nil and nw:find("KAL88", 1, true) ~= nil, "names both: " .. nw)
+  -- "flying to south-east", "coming from the north-west" (flies south-east), "-ward"
+  check_eq(ex("the aircraft which is flying to south-east, turn right heading 200"), "HDG CCC33 200 RIGHT")
+  check_eq(ex("the aircraft coming from the north-west, descend FL100"), "ALT CCC33 FL100")
+  asked(ex("the aircraft coming from the north, descend FL100"), "two aircraft fly south")
+  -- a superlative after the way it flies or after "which is the"
+  check_eq(ex("the aircraft which is flying southward and slowest, descend FL100"), "ALT EEE55 FL100")
+  check_eq(ex("the aircraft which is the highest now, reduce speed to 230"), "SPD EEE55 230")
+  local low = ex("the aircraft which is the lowest now, climb FL150")
+  asked(low, "two aircraft at FL120: a near tie")
+  check(low:find("CCC33", 1, true) ~= nil and low:find("DDD44", 1, true) ~= nil, "names both: " .. low)
+  -- "the upper side of screen": a side with its noun; "the upper one" alone still compares nothing here
+  check_eq(ex("the aircraft flying south, on the upper side of screen, descend FL100"), "ALT DDD44 FL100")
+  asked(ex("the upper one, descend FL100"), "'upper' alone names no side")
+  -- a regional jet by its class
+  check_eq(ex("the regional jet, climb FL200"), "ALT CCC33 FL200")
+end
+do
+  local _, ex = scene({ "CRE KAL88 B738 52.2 4.6 330 FL300 250", "CRE AAR12 A321 51.7 5.1 140 FL120 250",
+    "CRE CCC33 E190 51.7 5.1 140 FL120 250", "CRE RRR44 CRJ9 52.5 4.2 170 FL120 300" })
+  -- two Korean airlines, two regional jets: asked which
+  asked(ex("the Korean one, climb FL320"), "KAL88 and AAR12 are both Korean")
+  asked(ex("the regional jet, climb FL200"), "two regional jets")
+end
