@@ -4084,7 +4084,8 @@ function G:segments(b, e)
   -- (a condition said in the clause keeps it whole; one after the clause's end, "klm33 fl260, once level hdg 300",
   -- opens the next instruction)
   if own and self:has_ref(b, qs[1].b, "aircraft") then
-    for k = qs[#qs].e, self:word_in(b, qs[#qs].e, "@level_condition @condition") and 0 or trig[1].pos - 1 do
+    local last_k = trig[1].pos - ((self:word(trig[1].pos, "then") and self:until_then_value(trig[1].pos)) and 0 or 1)
+    for k = qs[#qs].e, self:word_in(b, qs[#qs].e, "@level_condition @condition") and 0 or last_k do
       -- ("klm33 fl220 and ryr8 hdg 240", "klm33 fl220 ryr8 hdg 240": another flying aircraft after "and" or
       -- straight after the value parts them as a comma does)
       local at = (self:word(k, "and") and k + 1) or (k == qs[#qs].e and k)
@@ -4092,7 +4093,10 @@ function G:segments(b, e)
       local first = other and self:refs_in(b, qs[1].b, "aircraft")[1]
       if self.t[k].kind == "punct" or self:word(k, "@then_words") or (timed and self:word(k, "and")) or (other and other.exists
           and other.name:upper() ~= first.name:upper()) then
-        if not self:word_in(qs[#qs].e, k, "@level_condition @condition") then segs[1] = { intent = "infer", b = b, trig = b, e = k } end
+        -- ("BTI6AL 200 knots until ROKLA then 180": a limit until a place, the value again after it, G:until_then_value)
+        if not self:word_in(qs[#qs].e, k, "@level_condition @condition") or self:until_then_value(k) then
+          segs[1] = { intent = "infer", b = b, trig = b, e = k }
+        end
         break
       end
     end
@@ -4185,7 +4189,9 @@ function G:segments(b, e)
         end
         -- ("reduce speed 250, after SUMAG 220": a value again from a place opens its own instruction, G:after_place_value)
         if (last.intent == tr.intent or alt_pair or kept_noun) and not this.single
-            and not self:addressee_between(last, tr.pos) and not dist_between and not self:word(tr.pos, "after") then
+            and not self:addressee_between(last, tr.pos) and not dist_between and not self:word(tr.pos, "after")
+            and not (self:word(tr.pos, "then @until_then_words") and self:until_then_value(tr.pos)
+              and not (trig[k + 1] and trig[k + 1].pos == self:skip_fillers(tr.pos + 1))) then
           if tr.intent == "alt" or kept_noun then last.intent = tr.intent end
           merged = true
         end
@@ -5655,15 +5661,22 @@ end
 
 -- "reduce speed 250, after SUMAG 220", "maintain FL230, after BOYSE FL150": the kind (G:value_again_kind) of a
 -- value said bare straight after "after" (at i) and a waypoint, opening a clause (a comma or "and" before it) that
--- follows a value; the value is that instruction again, from the place (G:until_then). nil otherwise.
+-- (or "then") follows a value; the value is that instruction again, from the place (G:until_then). nil otherwise.
 function G:after_place_value(i)
   local r = self.refs and self:refs_in(i + 1, math.min(#self.t + 1, i + 4), "waypoint")[1]
   if not r or r.b ~= self:skip_fillers(i + 1) then return nil end
   local q = self:quantities(r.e, #self.t + 1)[1]
   if not q or q.b ~= self:skip_fillers(r.e) then return nil end
+  -- ("speed 250 then after NUKSI 220", "..., and then after NUKSI 220": a "then" before "after" waits for the place
+  -- named, never for the value before it)
   local c = i - 1
+  local thn = self:word(c, "then")
+  if thn then c = c - 1 end
   if self:word(c, "and") then c = c - 1 end
-  if not (self.t[c] and self.t[c].text == ",") then return nil end
+  if not (self.t[c] and self.t[c].text == ",") then
+    if not thn then return nil end
+    c = c + 1
+  end
   local before = self:quantities(math.max(1, c - 8), c)
   local p = before[#before]
   if not p or p.e ~= c then return nil end

@@ -15677,3 +15677,19 @@ do
   asked(ex("the Korean one, climb FL320"), "KAL88 and AAR12 are both Korean")
   asked(ex("the regional jet, climb FL200"), "two regional jets")
 end
+
+-- Cycle 55 (f167): a value again at a place on the route after a bare "then" ("200 knots until ROKLA then 180",
+-- "speed 250 then after NUKSI 220"): the place is the condition, the "then" waits for nothing else
+do
+  local _, ex = scene({ "CRE NSZ44 B738 58.0 11.0 090 FL150 280", "DEFWPT VARGA 58.0 11.5", "DEFWPT TORNE 58.0 12.0",
+                        "ADDWPT NSZ44 VARGA", "ADDWPT NSZ44 TORNE" })
+  check_eq(ex("NSZ44 210 knots until VARGA then 190"), "SPD NSZ44 210 ; AT NSZ44 VARGA DO SPD NSZ44 190")
+  check_eq(ex("NSZ44 speed 260 knots till TORNE, then 240 knots"), "SPD NSZ44 260 ; AT NSZ44 TORNE DO SPD NSZ44 240")
+  check_eq(ex("NSZ44 FL140 until VARGA then FL120"), "ALT NSZ44 FL140 ; AT NSZ44 VARGA DO ALT NSZ44 FL120")
+  check_eq(ex("NSZ44 reduce 260 knots then after TORNE 230"), "SPD NSZ44 260 ; AT NSZ44 TORNE DO SPD NSZ44 230")
+  check_eq(ex("NSZ44 speed 260 and then after VARGA 240"), "SPD NSZ44 260 ; AT NSZ44 VARGA DO SPD NSZ44 240")
+  -- no place named: a bare value after "then" is still asked
+  asked(ex("NSZ44 250 knots then 220"), "no place or level for the second value")
+  -- a value of another kind after "until VARGA then" is asked, never put at the place
+  asked(ex("NSZ44 250 knots until VARGA then FL120"), "a level after a speed's limit")
+end
