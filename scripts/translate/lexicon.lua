@@ -1049,7 +1049,7 @@ return {
     nouns = { "corner", "side", "edge", "end", "part", "area", "bit" },
     names = { "screen", "scope", "map", "display", "radar", "picture" },
     at = { "at", "on", "in", "near", "towards", "toward" },
-    leaning = { "up", "down", "over", "out", "right", "just", "very", "far", "sitting", "that's", "currently" },
+    leaning = { "up", "down", "over", "out", "way", "right", "just", "very", "far", "sitting", "that's", "currently" },
     near = { "near", "beside", "by" },
     near_to = { "next", "close", "closest", "nearest" },
     fields = { "field", "airport", "aerodrome", "airfield" } },
