@@ -2812,7 +2812,7 @@ end
 -- True when [b, e) opens the request as a clause of its own before another ("go, 3x", "off we go, KLM12 climb
 -- FL100"): every token before b is a filler, token e is punctuation and a word that is no filler follows it.
 function G:clause_opens(b, e)
-  return self:skip_fillers(1) == b and self.t[e] ~= nil and self.t[e].kind == "punct"
+  return self:skip_fillers(1) >= b and self.t[e] ~= nil and self.t[e].kind == "punct"
     and self:skip_fillers(e + 1) <= #self.t
 end
 

@@ -2261,7 +2261,7 @@ return function(intent, rule, words)
   rule { "carry", "op", next = "on", near = { 4, "@sim" } }  -- "carry on with the simulation"
   rule { "carry go", "op", next = "on", when = function(g, i) return g:alone_but(i, i + 2) end }  -- "carry on", "go on"
   -- "..., then carry on", "..., then go", "ok carry on, run it", "OK, go on, and run at 2x": a clause of its own
-  rule { "carry go", "op", next = "on", when = function(g, i) return g:clause_alone(i, i + 2) or g:clause_opens(i, i + 2) end }
+  rule { "carry go", "op", next = "on", when = function(g, i) return g:clause_alone(i, i + 2) end }
   rule { "keep", "op", next = "going", when = function(g, i)
     return g:alone_but(i, i + 2) or g:clause_alone(i, i + 2) or g:clause_opens(i, i + 2)
   end }
