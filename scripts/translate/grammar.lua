@@ -2809,6 +2809,13 @@ function G:clause_alone(b, e)
   return true
 end
 
+-- True when [b, e) opens the request as a clause of its own before another ("go, 3x", "off we go, KLM12 climb
+-- FL100"): every token before b is a filler, token e is punctuation and a word that is no filler follows it.
+function G:clause_opens(b, e)
+  return self:skip_fillers(1) >= b and self.t[e] ~= nil and self.t[e].kind == "punct"
+    and self:skip_fillers(e + 1) <= #self.t
+end
+
 -- The clause holding token i: [lo, hi), bounded by punctuation and by "and", "then" or "but" between two
 -- instructions' words ("turn on MVP resolution and let it use vertical too": "turn on MVP resolution").
 function G:clause_around(i)

@@ -526,12 +526,17 @@ function m:acids(s)
   return ids
 end
 
--- The first phrase of lexicon.partitive_selectors said in [b, e), as { b, e } of its tokens, or nil.
+-- The first phrase of lexicon.partitive_selectors, or of lexicon.ordinal_selectors said as a noun of its own (the
+-- token after it punctuation, the end, an instruction verb or a word of its `next`), said in [b, e), as { b, e } of
+-- its tokens, or nil.
 local PARTITIVES = {}
-for _, p in ipairs(L.partitive_selectors) do
-  local words = {}
-  for w in p:gmatch("%S+") do words[#words + 1] = w end
-  PARTITIVES[#PARTITIVES + 1] = words
+local ORDINAL_NEXT = table.concat(L.ordinal_selectors.next, " ") .. " " .. table.concat(L.clause_verbs, " ")
+for _, list in ipairs({ L.partitive_selectors, L.ordinal_selectors.words }) do
+  for _, p in ipairs(list) do
+    local words = { ordinal = list == L.ordinal_selectors.words }
+    for w in p:gmatch("%S+") do words[#words + 1] = w end
+    PARTITIVES[#PARTITIVES + 1] = words
+  end
 end
 function m:partitive_said(b, e)
   for k = b, e - 1 do
@@ -539,6 +544,10 @@ function m:partitive_said(b, e)
       local n = #words
       local fits = k + n <= e
       for x = 1, fits and n or 0 do fits = fits and self:word(k + x - 1, words[x]) end
+      local nx = self.t[k + n]
+      if fits and words.ordinal then
+        fits = nx == nil or nx.kind == "punct" or self:word(k + n, ORDINAL_NEXT)
+      end
       if fits then return { b = k, e = k + n } end
     end
   end
@@ -2338,6 +2347,9 @@ local function side_said(self, k)
     if place then return { point = deg, of = place }, e end
     return nil
   end
+  -- ("out west", "up north", "down in the south" is below): a compass point straight after words of `leaning`,
+  -- the side of the map that way
+  if deg and x > k then return { dir = { math.sin(math.rad(deg)), math.cos(math.rad(deg)) } }, pe end
   if not (near or screen(self, x, "at")) then return nil end
   x = near or x + 1
   if not self:word(x, "the") then return nil end

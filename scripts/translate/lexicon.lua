@@ -1049,7 +1049,7 @@ return {
     nouns = { "corner", "side", "edge", "end", "part", "area", "bit" },
     names = { "screen", "scope", "map", "display", "radar", "picture" },
     at = { "at", "on", "in", "near", "towards", "toward" },
-    leaning = { "up", "down", "over", "out", "right", "just", "very", "far", "sitting", "that's", "currently" },
+    leaning = { "up", "down", "over", "out", "way", "right", "just", "very", "far", "sitting", "that's", "currently" },
     near = { "near", "beside", "by" },
     near_to = { "next", "close", "closest", "nearest" },
     fields = { "field", "airport", "aerodrome", "airfield" } },
@@ -1106,6 +1106,12 @@ return {
   partitive_selectors = { "one of them", "one of those", "one of these", "one of the two", "one of both",
     "either of them", "either of those", "either of these", "either of the", "either one", "any of them",
     "any one of", "one or the other", "whichever", "the first one", "the second one", "the former", "the latter" },
+  -- ordinals that pick one of several aircraft named together when said as a noun of their own ("put the first at
+  -- FL190", "the second, climb FL250", "the first of them"): the word after is punctuation, the request's end, an
+  -- instruction verb (clause_verbs) or one of `then`; "the first fix", "the second turn" name no aircraft
+  ordinal_selectors = { words = { "the first", "the second" },
+    next = { "at", "to", "of", "one", "aircraft", "plane", "flight", "jet", "please", "should", "can", "could", "will",
+      "needs", "must", "then", "and", "maintain", "go", "stop", "slow", "speed", "heading", "level" } },
   -- instruction verbs, their -ing forms and nouns that "no" said straight before, with no comma between ("PRF441
   -- no descend FL090", "no climbing", "no descent", "no left turn": a turn's side may come between), may refuse
   -- ("do not descend", in English as a second language) as well as take back what came before ("no, descend"):

@@ -2262,7 +2262,9 @@ return function(intent, rule, words)
   rule { "carry go", "op", next = "on", when = function(g, i) return g:alone_but(i, i + 2) end }  -- "carry on", "go on"
   -- "..., then carry on", "..., then go", "ok carry on, run it", "OK, go on, and run at 2x": a clause of its own
   rule { "carry go", "op", next = "on", when = function(g, i) return g:clause_alone(i, i + 2) end }
-  rule { "keep", "op", next = "going", when = function(g, i) return g:alone_but(i, i + 2) or g:clause_alone(i, i + 2) end }
+  rule { "keep", "op", next = "going", when = function(g, i)
+    return g:alone_but(i, i + 2) or g:clause_alone(i, i + 2) or g:clause_opens(i, i + 2)
+  end }
   rule { "run", "op", next = "it", when = function(g, i) return g:clause_alone(i, i + 2) end }
   -- "run it and fast forward 3 minutes", "run the sim and ff 60 s": the clock started, then moved on
   rule { "run", "op", when = function(g, i)
@@ -2271,6 +2273,8 @@ return function(intent, rule, words)
     return g:word(k, "and") and g:word(k + 1, "fast ff")
   end }
   rule { "go resume continue unpause run play", "op", when = function(g, i) return g:clause_alone(i, i + 1) end }
+  -- "go, 3x", "play, and make it three times", "go, KLM12 climb FL100": opening the request, a clause of its own
+  rule { "go play", "op", when = function(g, i) return g:clause_opens(i, i + 1) end }
   -- "set multiplier 8 and run", "descend FL080 then run (it)": the clock started after another instruction, the
   -- verb ending the text ("and run at 4x" is the rate's)
   rule { "run", "op", prev = { 1, "and then" }, when = function(g, i)
@@ -2300,7 +2304,7 @@ return function(intent, rule, words)
   rule { "go", "op", prev = { 1, "let lets" }, when = function(g, i)
     local b = i - 1
     while b > 1 and g:word(b - 1, "right alright ok okay so well") do b = b - 1 end
-    return g:alone_but(b, i + 1) or g:clause_alone(b, i + 1)
+    return g:alone_but(b, i + 1) or g:clause_alone(b, i + 1) or g:clause_opens(b, i + 1)
   end }
   -- "pause, time step 0.1, then start again": the clock started again, a clause of its own
   rule { "start", "op", next = "again", when = function(g, i) return g:clause_alone(i, i + 2) end }
@@ -2338,7 +2342,7 @@ return function(intent, rule, words)
   -- "off we go", "right, off we go again": the clock started, said alone or as a clause of its own
   rule { "off", "op", when = function(g, i)
     local e = g:word(i + 3, "again") and i + 4 or i + 3
-    return g:word(i + 1, "we") and g:word(i + 2, "go") and (g:alone_but(i, e) or g:clause_alone(i, e))
+    return g:word(i + 1, "we") and g:word(i + 2, "go") and (g:alone_but(i, e) or g:clause_alone(i, e) or g:clause_opens(i, e))
   end }
   -- "go", "resume (please)": the whole request starts the clock
   rule { "go resume run play", "op", when = function(g, i) return g:alone(i) end }  -- ("ok run", "play")

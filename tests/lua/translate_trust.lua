@@ -2929,7 +2929,9 @@ do
   asked(ex("could you turn our test aircraft left heading 200"), "two test aircraft")
   check(ex("bring the SAS one down to FL90"):match("^ASK Which SAS") ~= nil, "two SAS")
   -- the airline said again with its flight number in the same sentence names that one
-  check_eq(ex("the SAS up north, SAS 88, should climb to FL200"), "ALT SAS88 FL200")
+  check_eq(ex("the SAS, SAS 88, should climb to FL200"), "ALT SAS88 FL200")
+  -- "up north" is where it is on the map: SAS88 lies in the south half of the traffic (55-59.5 N), asked
+  asked(ex("the SAS up north, SAS 88, should climb to FL200"), "SAS88 is not up north")
   asked(ex("the SAS should climb to FL200, SAS88 too"), "an instruction between")
 end
 do
@@ -15692,4 +15694,44 @@ do
   asked(ex("NSZ44 250 knots then 220"), "no place or level for the second value")
   -- a value of another kind after "until VARGA then" is asked, never put at the place
   asked(ex("NSZ44 250 knots until VARGA then FL120"), "a level after a speed's limit")
+end
+
+-- Cycle 55 (hzg): a resume word opening a request as a clause of its own before another ("go, 4x", "off we go, ...
+-- descend"): the clock started (OP) with the rest, never dropped
+do
+  local _, ex = scene({ "CRE AAA11 A320 52.9 3.6 090 FL240 280", "CRE BBB22 B738 52.9 5.0 270 FL300 250" })
+  check_eq(ex("go, 4x"), "OP ; DTMULT 4")
+  check_eq(ex("play, and make it five times"), "OP ; DTMULT 5")
+  check_eq(ex("off we go, BBB22 descend FL200"), "OP ; ALT BBB22 FL200")
+  check_eq(ex("ok let's go, AAA11 climb FL260"), "OP ; ALT AAA11 FL260")
+  check_eq(ex("go"), "OP")
+  -- the instruction after it names no aircraft of two: still asked
+  asked(ex("go, climb FL260"), "which aircraft climbs")
+end
+
+-- Cycle 55 (hzg): an ordinal said as a noun of its own ("the first", "the second") after aircraft named together
+-- picks one of them: asked which, never both; "the first fix" names no aircraft
+do
+  local _, ex = scene({ "CRE AAA11 A320 52.9 3.6 090 FL240 280", "CRE BBB22 B738 52.9 5.0 270 FL300 250",
+    "CRE CCC33 A320 51.7 5.1 180 FL120 250" })
+  local q = ex("AAA11 and BBB22, put the second at FL190")
+  asked(q, "'the second' picks one of two")
+  check(q:find("AAA11", 1, true) ~= nil and q:find("BBB22", 1, true) ~= nil, "names both: " .. q)
+  asked(ex("AAA11 and CCC33, the first, descend FL100"), "'the first' picks one of two")
+  asked(ex("AAA11 and BBB22 the first should climb FL310"), "'the first' picks one of two")
+  check_eq(ex("AAA11 and BBB22 climb FL310"), "ALT AAA11 FL310 ; ALT BBB22 FL310")
+end
+
+-- Cycle 55 (hzg): a compass point straight after "out", "up", "down", "way out" following an aircraft ("the Jetstar
+-- out west", "the Boeing up north") is where it is on the map (position_refs), checked against the traffic: a side
+-- the aircraft is not on is asked, never dropped
+do
+  local _, ex = scene({ "CRE JST12 A320 52.0 6.0 090 FL200 250", "CRE QFA1 B738 52.0 4.0 090 FL200 250",
+    "CRE RYR8ZK B738 52.0 3.0 090 FL080 250", "CRE AAA11 A320 53.0 4.5 090 FL220 250" })
+  asked(ex("the Jetstar out west, climb FL250"), "the only Jetstar is in the east")
+  check_eq(ex("the Jetstar out east, climb FL250"), "ALT JST12 FL250")
+  check_eq(ex("the Boeing way out west, climb FL100"), "ALT RYR8ZK FL100")
+  asked(ex("the Boeing out east, climb FL250"), "neither Boeing is in the east")
+  check_eq(ex("the A320 up north, descend FL180"), "ALT AAA11 FL180")
+  asked(ex("the Boeing up north, descend FL180"), "neither Boeing lies in the north")
 end
