@@ -184,6 +184,23 @@ return function(H, f, compass)
     return t.raw:match("%d") ~= nil or t.raw:match("^%u[%u%-]+$") ~= nil or lower_registration(t.raw)
       or (t.raw:match("^%u") ~= nil and not self:known_word(i))
   end
+  -- ("create DTA 110 Boeing 737-700 ...", "create LAM 1200, E190, ...", "a conflicting aircraft ANA 901, Boeing
+  -- 777-200, ..."): a known airline's ICAO code written in capitals apart from its flight number (digits written,
+  -- four at most), before the type in [s.b, s.e), is the new callsign (its tokens used and explained); a code squawk
+  -- knows no airline by is none. Returns the callsign and the code's token, or nil.
+  function m:code_apart_callsign(s)
+    local first = self:refs_in(s.b, s.e, "type")[1]
+    for k = s.b, (first and first.b or s.e) - 2 do
+      local w, q = self.t[k], self:quantities(k + 1, k + 2)[1]
+      if w.kind == "word" and AIRLINE_CODES[w.raw] and q and q.b == k + 1 and q.kind == "plain"
+          and self.t[k + 1].raw:match("^%d%d?%d?%d?$") and not self:refs_in(k, k + 2, "aircraft")[1] then
+        self:mark_used(k + 1, k + 2)
+        self:explain(k, k + 2)
+        return w.raw .. self.t[k + 1].raw, k
+      end
+    end
+    return nil
+  end
   function m:create_one(s, id_from)
     local id
     -- ("create Alaska six eleven" with ASA331 flying: the airline heard whole and a flight number
@@ -247,21 +264,8 @@ return function(H, f, compass)
         end
       end
     end
-    -- ("create DTA 110 Boeing 737-700 ...", "create LAM 1200, E190, ..."): a known airline's ICAO code written in
-    -- capitals apart from its flight number (digits written, four at most), before the type, is the new
-    -- callsign; a code squawk knows no airline by is no callsign (asked for)
     if not id then
-      local first = self:refs_in(s.b, s.e, "type")[1]
-      for k = s.b, (first and first.b or s.e) - 2 do
-        local w, q = self.t[k], self:quantities(k + 1, k + 2)[1]
-        if w.kind == "word" and AIRLINE_CODES[w.raw] and q and q.b == k + 1 and q.kind == "plain"
-            and self.t[k + 1].raw:match("^%d%d?%d?%d?$") and not self:refs_in(k, k + 2, "aircraft")[1] then
-          id, code_at = w.raw .. self.t[k + 1].raw, k
-          self:mark_used(k + 1, k + 2)
-          self:explain(k, k + 2)
-          break
-        end
-      end
+      id, code_at = self:code_apart_callsign(s)
     end
     -- ("create BCS1 type B744 ..."): with the type named after "type", another designator written as one word
     -- (letters, then digits) is the new callsign; ("create a Cessna 172 D-EABC at ..."): a registration written
@@ -769,11 +773,12 @@ return function(H, f, compass)
         if target and r.name ~= target then other = other or r.name end
         target, target_e = target or r.name, target_e or r.e
       else
-        id = id or r.name:upper()
+        id = id or self:brand_callsign(r):upper()
       end
     end
     local named = self:find_word(s.b, s.e, "@named")
     if not id and named + 1 < s.e and self.t[named + 1].kind == "word" then id = self.t[named + 1].raw:upper() end
+    id = id or self:code_apart_callsign(s)
     local actype = (self:refs_in(s.b, s.e, "type")[1] or {}).name
     if not id or not actype then return self:need("What callsign and aircraft type should the intruder have?") end
     -- ("intruder on the Speedbird, I2, A320": the one aircraft of the airline said, the new one named after it)

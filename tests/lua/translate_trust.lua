@@ -15683,3 +15683,13 @@ do
     asked(ex("JAL9, destination Chitose"), "RJCJ and RJCC are both Chitose")
   end
 end
+do
+  local _, ex = scene({ "CRE JAL61 B789 34.9 137.0 090 FL330 290", "CRE ANA10 B763 34.9 138.0 270 FL330 290" })
+  -- an intruder's callsign written as a known airline's code apart from its flight number; SKY typed is Skymark's
+  check_eq(ex("create an intruder JAL 902, B772, against ANA10, 60 degrees, cpa 0, 200 seconds to loss of separation"),
+    "CRECONFS JAL902 B772 ANA10 60 0 200")
+  check_eq(ex("create an intruder SKY 44, B738, against ANA10, 60 degrees, cpa 0, 200 seconds to loss of separation"),
+    "CRECONFS SKY44 B738 ANA10 60 0 200")
+  asked(ex("create an intruder QQX 44, B738, against ANA10, 60 degrees, cpa 0, 200 seconds to loss of separation"),
+    "QQX is no airline's code")
+end
