@@ -10857,6 +10857,36 @@ G.airline_name_codes = {}
 for _, list in ipairs({ names.airlines, names.common }) do
   for _, a in ipairs(list) do G.airline_name_codes[a[1]] = G.airline_name_codes[a[1]] or a[2] end
 end
+-- "delete the aircraft of Ibex", "the plane of Japan Airlines": "the", a noun of lexicon.aircraft_nouns, "of" and an
+-- airline's telephony or common name (G.airline_name_codes, one to three words) with no flight number after it is
+-- read as "the Ibex aircraft" (the callsign matcher's airline said alone: its one aircraft flying, several asked);
+-- a flight number after the name ("the aircraft of Ibex 31") leaves the text as said. Returns the text.
+G.aircraft_nouns = {}
+for _, w in ipairs(lexicon.aircraft_nouns) do G.aircraft_nouns[w] = true end
+function G.aircraft_of_airline(text)
+  if not text:find(" of ", 1, true) then return text end
+  local from = 1
+  while true do
+    local b, noun, p = text:match("()%f[%a][Tt]he%s+(%a+)%s+[Oo]f%s+()", from)
+    if not b then return text end
+    from = p
+    local words, ends, k = {}, {}, p
+    while G.aircraft_nouns[noun:lower()] and #words < 3 do
+      local w, e = text:match("^(%a+)()", k)
+      if not w then break end
+      words[#words + 1], ends[#ends + 1] = w, e
+      k = text:match("^ +()", e) or e
+    end
+    for n = #words, 1, -1 do
+      local after = text:sub(ends[n]):match("^[%s,]*(%w+)")
+      if G.airline_name_codes[table.concat(words, " ", 1, n):lower()]
+          and not (after and (after:match("^%d") or SAID_DIGIT[after:lower()])) then
+        text = text:sub(1, b + 3) .. text:sub(p, ends[n] - 1) .. " " .. noun .. text:sub(ends[n])
+        break
+      end
+    end
+  end
+end
 -- "put in a Transat A321, TSC 302, at FRANX": an airline's ICAO code typed in capitals apart from its flight
 -- number is joined to it when the request names that airline by a word of its own ("Transat": TSC).
 -- "Create Portugalia 1921, call sign PGA1921, ...": a callsign said by its airline's one-word telephony and
@@ -12264,7 +12294,7 @@ function M.translate(text, world)
   end
   text = airline_values(named_airline_ids(split_ids(unglued_ids(G.iata_ids(text, world.aircraft), world.aircraft),
     world.aircraft)), world.aircraft)
-  text = homophone_ids(G.hundreds_callsign(G.recognised_callsigns(glued_telephony(G.common_named(G.joined_telephony(text), world),
+  text = homophone_ids(G.hundreds_callsign(G.recognised_callsigns(glued_telephony(G.common_named(G.joined_telephony(G.aircraft_of_airline(text)), world),
     world.aircraft), world), world), world)
   local abbreviated
   text, abbreviated = abbreviated_registrations(text, world.aircraft)

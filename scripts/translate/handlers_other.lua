@@ -99,6 +99,13 @@ return function(H, f, compass)
   -- TAM or LAN or ...), the prefix of the one of them flying now; with none or several flying, the name's
   -- own airline, asked about where the brand is `shared`.
   function m:brand_callsign(r)
+    -- ("create SKY 88"): an airline's ICAO designator typed in capitals is that airline, though the word is also
+    -- another airline's telephony (Skymark SKY, not Sky Airline SKU)
+    local raw, digits = (self.t[r.b] or {}).raw or "", r.name:match("^%a+(%d%w*)$")
+    if digits and raw:match("^%u%u%u$") and AIRLINE_CODES[raw] and r.name:upper():sub(1, 3) ~= raw then
+      self:explain(r.b, r.e)
+      return raw .. digits
+    end
     local icao, _, codes = self:airline_at(r.b)
     if not codes or r.name:upper():sub(1, #icao) ~= icao then return r.name end
     local flying = {}
@@ -177,6 +184,23 @@ return function(H, f, compass)
     return t.raw:match("%d") ~= nil or t.raw:match("^%u[%u%-]+$") ~= nil or lower_registration(t.raw)
       or (t.raw:match("^%u") ~= nil and not self:known_word(i))
   end
+  -- ("create DTA 110 Boeing 737-700 ...", "create LAM 1200, E190, ...", "a conflicting aircraft ANA 901, Boeing
+  -- 777-200, ..."): a known airline's ICAO code written in capitals apart from its flight number (digits written,
+  -- four at most), before the type in [s.b, s.e), is the new callsign (its tokens used and explained); a code squawk
+  -- knows no airline by is none. Returns the callsign and the code's token, or nil.
+  function m:code_apart_callsign(s)
+    local first = self:refs_in(s.b, s.e, "type")[1]
+    for k = s.b, (first and first.b or s.e) - 2 do
+      local w, q = self.t[k], self:quantities(k + 1, k + 2)[1]
+      if w.kind == "word" and AIRLINE_CODES[w.raw] and q and q.b == k + 1 and q.kind == "plain"
+          and self.t[k + 1].raw:match("^%d%d?%d?%d?$") and not self:refs_in(k, k + 2, "aircraft")[1] then
+        self:mark_used(k + 1, k + 2)
+        self:explain(k, k + 2)
+        return w.raw .. self.t[k + 1].raw, k
+      end
+    end
+    return nil
+  end
   function m:create_one(s, id_from)
     local id
     -- ("create Alaska six eleven" with ASA331 flying: the airline heard whole and a flight number
@@ -225,25 +249,23 @@ return function(H, f, compass)
         break
       end
     end
+    local code_at  -- (the token of an airline's code written apart from its flight number: no place)
     if not id then
       local k = self:find_word(s.b, s.e, "@id_words")
-      if k + 1 < s.e and self:callsign_written(k + 1) then id = self.t[k + 1].raw end
-    end
-    -- ("create DTA 110 Boeing 737-700 ...", "create LAM 1200, E190, ..."): a known airline's ICAO code written in
-    -- capitals apart from its flight number (digits written, four at most), before the type, is the new
-    -- callsign; a code squawk knows no airline by is no callsign (asked for)
-    if not id then
-      local first = self:refs_in(s.b, s.e, "type")[1]
-      for k = s.b, (first and first.b or s.e) - 2 do
-        local w, q = self.t[k], self:quantities(k + 1, k + 2)[1]
-        if w.kind == "word" and AIRLINE_CODES[w.raw] and q and q.b == k + 1 and q.kind == "plain"
-            and self.t[k + 1].raw:match("^%d%d?%d?%d?$") and not self:refs_in(k, k + 2, "aircraft")[1] then
-          id = w.raw .. self.t[k + 1].raw
-          self:mark_used(k + 1, k + 2)
-          self:explain(k, k + 2)
-          break
+      if k + 1 < s.e and self:callsign_written(k + 1) then
+        id = self.t[k + 1].raw
+        -- ("callsign ANA 55", "callsign ADO 27"): a known airline's ICAO code in capitals, then its flight number
+        -- written apart (digits, four at most), is one callsign
+        local n = self.t[k + 2]
+        if AIRLINE_CODES[id] and k + 2 < s.e and n.kind == "number" and n.raw:match("^%d%d?%d?%d?$") then
+          id, code_at = id .. n.raw, k + 1
+          self:mark_used(k + 1, k + 3)
+          self:explain(k + 1, k + 3)
         end
       end
+    end
+    if not id then
+      id, code_at = self:code_apart_callsign(s)
     end
     -- ("create BCS1 type B744 ..."): with the type named after "type", another designator written as one word
     -- (letters, then digits) is the new callsign; ("create a Cessna 172 D-EABC at ..."): a registration written
@@ -495,7 +517,7 @@ return function(H, f, compass)
       for _, r in ipairs(places) do
         local near = self.fleet[1] or { lat = 0, lon = 0 }
         -- (a navaid's kind said after its name, "over Sparta VOR", is no place of its own)
-        if not self:word(r.b, "@navaid_kinds") then
+        if not self:word(r.b, "@navaid_kinds") and r.b ~= code_at then
           -- ("over Cedar Creek": the navaid the words name together, not the fix CREEK)
           local whole
           if named_at == nil then whole = self:whole_place_name(r, from, s.e, nil) end
@@ -751,11 +773,12 @@ return function(H, f, compass)
         if target and r.name ~= target then other = other or r.name end
         target, target_e = target or r.name, target_e or r.e
       else
-        id = id or r.name:upper()
+        id = id or self:brand_callsign(r):upper()
       end
     end
     local named = self:find_word(s.b, s.e, "@named")
     if not id and named + 1 < s.e and self.t[named + 1].kind == "word" then id = self.t[named + 1].raw:upper() end
+    id = id or self:code_apart_callsign(s)
     local actype = (self:refs_in(s.b, s.e, "type")[1] or {}).name
     if not id or not actype then return self:need("What callsign and aircraft type should the intruder have?") end
     -- ("intruder on the Speedbird, I2, A320": the one aircraft of the airline said, the new one named after it)
@@ -1094,7 +1117,8 @@ return function(H, f, compass)
     local all = false
     for k = s.b, s.e - 1 do
       local idiom = self:word(k - 1, "after at") and (not self.t[k + 1] or self.t[k + 1].kind == "punct")
-      all = all or (self:word(k, "@all") and not idiom)
+      -- (nor "all" opening an airline's name: "delete the All Nippon")
+      all = all or (self:word(k, "@all") and not idiom and not self:airline_at(k))
     end
     if all then
       for _, a in ipairs(self.fleet) do ids[#ids + 1] = a.id end
@@ -1830,7 +1854,10 @@ return function(H, f, compass)
     end
     for i = b, math.min(e, #self.t + 1) - 1 do
       for n = 3, 1, -1 do
-        local ok, words = #(self.t[i] or {}).text >= 4, {}
+        -- (a capitalised word of under four letters opens a longer name only: "New Chitose" is RJCC, never
+        -- "Chitose" RJCJ with "New" left over)
+        local first = self.t[i] or {}
+        local ok, words = #first.text >= 4 or (n > 1 and (first.raw or ""):match("^%u%l") ~= nil), {}
         for k = i, i + n - 1 do
           ok = ok and word(k)
           words[#words + 1] = ok and self.t[k].text or nil

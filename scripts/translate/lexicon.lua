@@ -1931,7 +1931,10 @@ return {
                     -- (transatlantic destinations: the city's or island's one large or international airport named
                     -- after a person; Toronto's other, CITY CENTRE, is a small field)
                     toronto = "lester b pearson", antigua = "v c bird", ["saint maarten"] = "princess juliana",
-                    ["st maarten"] = "princess juliana", ["sint maarten"] = "princess juliana" },
+                    ["st maarten"] = "princess juliana", ["sint maarten"] = "princess juliana",
+                    -- (Japan: the airport known by its district, which the navdata names after its city)
+                    haneda = "tokyo intl", ["tokyo haneda"] = "tokyo intl", itami = "osaka intl",
+                    ["osaka itami"] = "osaka intl" },
   -- prepositions before a place named by its name ("at Barajas", "over Schiphol")
   place_words = { "at", "over", "above", "near", "from", "overhead" },
   -- A city or airport named to describe an aircraft or airspace, no place instructed: said before one of

@@ -409,6 +409,7 @@ local names = {
     -- Japanese and Korean carriers by their ICAO telephony
     { "jai ocean", "JTA" },  -- (Japan Transocean Air)
     { "new sky", "SNJ" },  -- (Solaseed Air)
+    { "air do", "ADO" },  -- (AIRDO)
     { "fuji dream", "FDA" },
     { "ibex", "IBX" },
     { "oriental bridge", "ORC" },  -- (Oriental Air Bridge)
@@ -681,6 +682,13 @@ local names = {
     { "new zealander", "ANZ" },
     { "singaporean", "SIA" },
     { "korean", "KAL" },  -- (Korean Air; brands: any Korean airline)
+    -- Japanese airlines by the name passengers know, beside their telephony above ("the Peach", "the Solaseed
+    -- aircraft", "the Japan Airlines Boeing 737")
+    { "japan airlines", "JAL" },
+    { "peach", "APJ" },  -- (Peach Aviation, telephony Air Peach)
+    { "solaseed", "SNJ" },  -- (Solaseed Air, telephony New Sky)
+    { "solaseed air", "SNJ" },
+    { "airdo", "ADO" },
   },
   brands = {
     { "transavia", "TRA", "TVF" },

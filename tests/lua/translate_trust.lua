@@ -15735,3 +15735,54 @@ do
   check_eq(ex("the A320 up north, descend FL180"), "ALT AAA11 FL180")
   asked(ex("the Boeing up north, descend FL180"), "neither Boeing lies in the north")
 end
+
+-- Cycle 55 (fjp): Japanese airlines by telephony and brand, a new callsign's code written apart, airports by name
+do
+  local _, ex = scene({ "CRE ADO42 B763 35.0 136.0 090 FL150 270", "CRE APJ7 A320 34.5 135.5 180 FL120 260",
+    "CRE SNJ5 B738 34.8 136.4 270 FL160 280", "CRE ANA12 B788 35.2 135.8 045 FL200 290",
+    "CRE JAL9 B738 34.9 135.9 000 FL180 280" })
+  check_eq(ex("Air Do 42, climb flight level 200"), "ALT ADO42 FL200")
+  check_eq(ex("the Peach, turn left heading 090"), "HDG APJ7 90 LEFT")
+  check_eq(ex("the Solaseed, reduce speed 230 knots"), "SPD SNJ5 230")
+  -- "the plane of <airline>" is the airline's one aircraft flying
+  check_eq(ex("the plane of Air Do, descend to 8000 feet"), "ALT ADO42 8000")
+  -- "All" opening an airline's name is no "every aircraft"
+  check_eq(ex("delete the All Nippon"), "DEL ANA12")
+  -- a known airline's code written apart from its flight number after "callsign" is one callsign; typed in capitals
+  -- it is that airline's, though the word is another airline's telephony (Skymark SKY, not Sky Airline SKU)
+  check_eq(ex("create an aircraft, callsign SKY 88, B738, at 33.5 130.5, heading 090, FL100, 250 knots"),
+    "CRE SKY88 B738 33.5 130.5 90 FL100 250")
+  -- a code squawk knows no airline by stays asked
+  asked(ex("create an aircraft, callsign QQX 12, B738, at 33.5 130.5, heading 090, FL100, 250 knots"),
+    "QQX is no airline's code: '12' is asked")
+end
+do
+  local _, ex = scene({ "CRE ADO42 B763 35.0 136.0 090 FL150 270", "CRE ADO43 B763 35.5 136.0 090 FL150 270" })
+  -- two aircraft of the airline flying: asked which
+  asked(ex("the aircraft of Air Do, descend to 8000 feet"), "two Air Do aircraft fly")
+  -- a flight number after the name is a callsign, as said
+  check_eq(ex("the aircraft of Air Do 43, descend to 8000 feet"), "ALT ADO43 8000")
+end
+do
+  local nav, ex = navscene({ "CRE ANA12 B788 35.2 139.8 045 FL200 290", "CRE JAL9 B738 34.9 139.9 000 FL180 280" },
+    "Japanese airports by name")
+  if nav then
+    check_eq(ex("ANA12 destination Itami"), "DEST ANA12 RJOO")
+    check_eq(ex("set the origin of ANA12 as Haneda"), "ORIG ANA12 RJTT")
+    check_eq(ex("create an aircraft, callsign ANA 58, B788, at Haneda, heading 160, 3000 feet, 200 knots"),
+      "CRE ANA58 B788 RJTT 160 3000 200")
+    -- "New Chitose" is RJCC whole; "Chitose" alone names two airports: asked
+    check_eq(ex("JAL9, destination New Chitose"), "DEST JAL9 RJCC")
+    asked(ex("JAL9, destination Chitose"), "RJCJ and RJCC are both Chitose")
+  end
+end
+do
+  local _, ex = scene({ "CRE JAL61 B789 34.9 137.0 090 FL330 290", "CRE ANA10 B763 34.9 138.0 270 FL330 290" })
+  -- an intruder's callsign written as a known airline's code apart from its flight number; SKY typed is Skymark's
+  check_eq(ex("create an intruder JAL 902, B772, against ANA10, 60 degrees, cpa 0, 200 seconds to loss of separation"),
+    "CRECONFS JAL902 B772 ANA10 60 0 200")
+  check_eq(ex("create an intruder SKY 44, B738, against ANA10, 60 degrees, cpa 0, 200 seconds to loss of separation"),
+    "CRECONFS SKY44 B738 ANA10 60 0 200")
+  asked(ex("create an intruder QQX 44, B738, against ANA10, 60 degrees, cpa 0, 200 seconds to loss of separation"),
+    "QQX is no airline's code")
+end
