@@ -5049,15 +5049,16 @@ end
 local tied_to_waypoint
 
 -- "Could you tell me the route of JAL515? Ah, it does not have a route. Then please tell me its position", "show
--- the route of KLM12, never mind the route, show its position": the noun of segment k's instruction (one with no
--- value said before the mark) said again after a mark that ends its clause, a word of lexicon.withdrawn within the
+-- the route of KLM12, never mind the route, show its position": the noun of segment k's instruction (no value said
+-- in the segment) said again after a mark that ends its clause, a word of lexicon.withdrawn within the
 -- four words before it: the speaker takes that request back. True when another instruction follows, said in its
 -- place (the words from the withdrawing word to the noun set aside); asked when none does; false otherwise.
 function G:withdrawn(segs, k)
   local s = segs[k]
   local p = s.trig + 1
   while p < s.e and self.t[p].kind ~= "punct" do p = p + 1 end
-  if #self:quantities(s.trig, p) > 0 then return false end
+  -- (a value anywhere in it, "zone radius four miles... no, set the zone radius to six", is a self-correction's)
+  if #self:quantities(s.trig, s.e) > 0 then return false end
   for x = p + 1, s.e - 1 do
     if self.words[x] == self.words[s.trig] then
       local neg = self:find_word(math.max(p + 1, x - 4), x, "@withdrawn")
