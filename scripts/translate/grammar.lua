@@ -3094,13 +3094,14 @@ end
 -- ---- conditions: "When AC01 reaches FL200, ..." ----
 -- The words that may join a condition word to its value ("ACA102 when you're down to FL150", "ACA871 once it's
 -- slowed to 220", "CFG1KZ when you have reached 250 kt", "reduce 250 after it drops below FL150"): who reaches
--- it (LINKING, with the forms of "be" and "have"), and a verb of reaching, passing or slowing.
+-- it (LINKING, with the forms of "be" and "have"), and a verb of reaching, passing or slowing ("becomes": "when the
+-- speed becomes 250").
 local ARRIVING = {}
 for w in ([[it it's its he he's she she's they they're you you're you've is are 's 're has have 've had been be
   pass passes passed passing past reach reaches reached reaching hit hits hitting get gets got getting to at level
   through cross crosses crossed crossing down up below above under over drop drops dropped climbs climbed
   descends descended slows slowed slow accelerates accelerated decelerates decelerated out of leaves left
-  leaving]]):gmatch("%S+") do ARRIVING[w] = true end
+  leaving become becomes became]]):gmatch("%S+") do ARRIVING[w] = true end
 
 local LINKING = {}
 for w in ([[it it's its he he's she she's they they're you you're you've is are 's 're has have 've had been be
@@ -5060,6 +5061,34 @@ end
 -- (defined with G:at_waypoint)
 local tied_to_waypoint
 
+-- "Could you tell me the route of JAL515? Ah, it does not have a route. Then please tell me its position", "show
+-- the route of KLM12, never mind the route, show its position": the noun of segment k's instruction (no value said
+-- in the segment) said again after a mark that ends its clause, a word of lexicon.withdrawn within the
+-- four words before it: the speaker takes that request back. True when another instruction follows, said in its
+-- place (the words from the withdrawing word to the noun set aside); asked when none does; false otherwise.
+function G:withdrawn(segs, k)
+  local s = segs[k]
+  local p = s.trig + 1
+  while p < s.e and self.t[p].kind ~= "punct" do p = p + 1 end
+  -- (a value anywhere in it, "zone radius four miles... no, set the zone radius to six", is a self-correction's)
+  if #self:quantities(s.trig, s.e) > 0 then return false end
+  for x = p + 1, s.e - 1 do
+    if self.words[x] == self.words[s.trig] then
+      local neg = self:find_word(math.max(p + 1, x - 4), x, "@withdrawn")
+      if neg < x then
+        if not segs[k + 1] then
+          self:need(string.format("'%s' takes back '%s'. What should I do instead?", self:raw(neg, x + 1),
+            (self:raw(s.b, p):gsub("^[%s%p]+", ""))))
+          return false
+        end
+        self:set_aside(neg, x)
+        return true
+      end
+    end
+  end
+  return false
+end
+
 function G:parse(b, e)
   self:typed_wait()
   local segs = self:split_ellipsis(self:segments(b, e))
@@ -5110,6 +5139,8 @@ function G:parse(b, e)
         and #self:quantities(s.b, s.e) == 0 then
       skip = true
     end
+    local withdrawn = self:withdrawn(segs, k)
+    if self.ask then break end
     seg_out[k] = #self.out
     if not skip then
       local before = self.last_cond
@@ -5276,6 +5307,8 @@ function G:parse(b, e)
       self.ask = nil
       self:explain(s.trig, nx.b)
     end
+    -- (a request taken back: read for its aircraft, which the next may name as "it", its commands dropped)
+    for x = #self.out, withdrawn and seg_out[k] + 1 or #self.out + 1, -1 do self.out[x] = nil end
     issued_by[k] = #self.out > prev_out
   end
   self:valueless_left(segs, valueless, issued_by)

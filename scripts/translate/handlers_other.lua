@@ -3388,6 +3388,7 @@ return function(H, f, compass)
     if self:switch_told(s) then
       return self:need(string.format("Should %s's %s be switched on or off?", id, cmd))
     end
+    if self:nav_asked(s) then return self:emit(cmd .. " " .. id) end
     local on, now = on_off(self, s), self:state(id)
     -- "resume own navigation" for an aircraft with no route and no waypoint named: nothing to fly
     -- (the switch named, "lnav on", is set as asked; a direct-to in the request names its place); "comply with
@@ -3435,6 +3436,19 @@ return function(H, f, compass)
     end
     self:emit(cmd .. " " .. id .. " " .. on)
   end
+  -- True when the sentence of segment s asks whether an aircraft's switch is on ("is lnav on for KLM12?", "KLM12,
+  -- is VNAV engaged?", "is KLM12 on lnav?", "KLM12's lnav is on?"): the request opens with "is"/"are", or the
+  -- sentence closes with "?" and holds a copula (lexicon.setting_question_copulas);
+  -- no verb of setting in it and no leave asked ("KLM12, is it possible to get lnav on?"). The switch is then shown
+  -- (the command with no state), never set. "KLM12 lnav on?" (no copula) is switched as before.
+  function m:nav_asked(s)
+    local b, e = s.trig, s.trig
+    while b > 1 and not (self.t[b - 1].kind == "punct" and self.t[b - 1].text:match("^[.?!]$")) do b = b - 1 end
+    while e < #self.t and not (self.t[e].kind == "punct" and self.t[e].text:match("^[.?!]$")) do e = e + 1 end
+    if self:word_in(b, e + 1, "@setting_verbs") or self:word_in(b, e + 1, "@leave_asked") then return false end
+    if self:word(b == 1 and self:request_start() or self:skip_fillers(b), "is are") then return true end
+    return self.t[e].text == "?" and self:word_in(b, e, "@setting_question_copulas")
+  end
   function m:lnav(s) nav(self, s, "LNAV") end
   function m:vnav(s) nav(self, s, "VNAV") end
   -- The position of the request's first word after its fillers and a polite opener that asks leave to act
@@ -3448,7 +3462,7 @@ return function(H, f, compass)
     end
     if not (self:word(first, "is") and self:word(first + 1, "it")) then return first end
     local to = self:find_word(first + 2, first + 6, "to")
-    if to < first + 6 and self:word_in(first + 2, to, "possible ok okay alright feasible trouble") then
+    if to < first + 6 and self:word_in(first + 2, to, "@leave_asked") then
       return self:skip_fillers(to + 1)
     end
     return first

@@ -793,6 +793,13 @@ return {
   -- the copulas of a question about a setting in a statement's word order, its name before them ("the detection is
   -- on?", "detection's on?": m:statement_order_question)
   setting_question_copulas = { "is", "are", "isn't", "aren't" },
+  -- the words that, within four words before the noun of a request said before ("it does not have a route", "it
+  -- has no route", "never mind the route"), take that request back (G:withdrawn)
+  withdrawn = { "not", "no", "never", "nevermind", "doesn't", "doesnt", "hasn't", "hasnt", "don't", "dont",
+                "isn't", "isnt", "without" },
+  -- the words of a polite opener that asks leave to act ("is it possible to", "is it ok to"): the instruction after
+  -- it is requested, not asked about (m:request_start, m:nav_asked)
+  leave_asked = { "possible", "ok", "okay", "alright", "feasible", "trouble" },
   -- the states a word's "'s" stands before as "is" ("detection's on?", "resolution's switched off": no possessive;
   -- "active" is none, "the United's active waypoint")
   state_after_s = { "on", "off", "enabled", "disabled", "switched", "turned" },

@@ -513,10 +513,11 @@ return function(intent, rule, words)
   rule { "speed", false, prev = { 1, "that the" }, when = function(g, i)
     return g:word(i - 2, "at") and g:find_word(math.max(1, i - 5), i - 2, "when once") < i - 2
   end }
-  -- "when the speed is 230 descend FL090", "once speed reaches 250", "when speed reached descend": the noun as the
+  -- "when the speed is 230 descend FL090", "once speed reaches 250", "when speed reached descend", "only after the
+  -- speed becomes 250, descend": the noun as the
   -- subject of a verb of reaching after a condition word (G:at_speed, G:when_reached), no speed instruction of its own
   rule { "speed airspeed", false, prev = { 2, "@condition" }, when = function(g, i)
-    return g:word(i + 1, "is 's reaches reached hits") and (g:word(i - 1, "@condition") or g:word(i - 1, "the that"))
+    return g:word(i + 1, "is 's reaches reached hits becomes become") and (g:word(i - 1, "@condition") or g:word(i - 1, "the that"))
   end }
   -- "climb FL380, passing FL360 Mach .79", "when passing FL300 M.77", "climb FL370, reaching Mach .79": a
   -- Mach number said with no verb straight after a level passed or reached (or "reaching" alone: the
@@ -2835,6 +2836,9 @@ return function(intent, rule, words)
   -- "enable MVP", "switch to MVP": the method named alone is resolution by it
   rule { "mvp", "reso", prev = { 3, "@on switch" } }
   rule { "mvp", "reso", next = "on" }  -- "and MVP on"
+  -- ("turn the MVP off and the ASAS on", "MVP off, detection on": the method switched off is resolution's own
+  -- switch, G handlers' m:reso switches it off; never an aircraft's name)
+  rule { "mvp", "reso", next = "@off" }
   -- "pz 5 nm, dh 1000, lookahead 300, mvp": the method named alone as an item of a list of conflict
   -- detection settings
   -- ("turn on the ASAS and the MVP and put look ahead 240 seconds": "the" between, "and" after)

@@ -15786,3 +15786,40 @@ do
   asked(ex("create an intruder QQX 44, B738, against ANA10, 60 degrees, cpa 0, 200 seconds to loss of separation"),
     "QQX is no airline's code")
 end
+
+-- Cycle 55 (hzf): a speed condition said with "becomes"; a request taken back by a later sentence; a question about
+-- an aircraft's LNAV or VNAV; two switches with their own states in one request
+do
+  local s, ex = scene({ "CRE TRA401 A320 51.5 3.2 120 FL230 290", "CRE EZY88 A319 51.9 3.9 300 FL180 270" })
+  -- "only after the speed becomes N": the level waits for that speed (ATSPD), never issued at once
+  check_eq(ex("TRA401, slow down to 260 knots, and only after the speed becomes 260, descend to FL170."),
+    "SPD TRA401 260 ; ATSPD TRA401 260 ALT TRA401 FL170")
+  check_eq(ex("EZY88 reduce to 240 knots and when the speed becomes 240 knots turn left heading 250"),
+    "SPD EZY88 240 ; ATSPD EZY88 240 HDG EZY88 250 LEFT")
+  -- with no speed said after "becomes" the moment is unknown: asked
+  asked(ex("TRA401 reduce speed 260, when the speed becomes low descend FL170"), "'becomes low' is no speed")
+  -- a request taken back by a later sentence naming its noun: the instruction after it stands alone
+  check_eq(ex("Can you show me the route of EZY88? Oh, it has no route. Then show me its position please."),
+    "POS EZY88")
+  check_eq(ex("list the route of TRA401, never mind the route, where is it?"), "POS TRA401")
+  -- taken back with nothing in its place: asked
+  asked(ex("show me the route of EZY88. Hmm, it doesn't have a route."), "the request is taken back")
+  -- the noun said again with no word taking it back: both stand
+  check_eq(ex("show me the route of EZY88? It has a route. Then show me its position."),
+    "LISTRTE EZY88 ; POS EZY88")
+  -- a question about an aircraft's switch shows it (the command with no state), never sets it
+  check_eq(ex("is vnav on for TRA401?"), "VNAV TRA401")
+  check_eq(ex("EZY88, is LNAV engaged?"), "LNAV EZY88")
+  check_eq(ex("TRA401's lnav is off?"), "LNAV TRA401")
+  -- leave asked, and a typed "?" on an instruction with no copula: switched as before
+  check_eq(ex("is it ok to switch lnav on for EZY88?"), "LNAV EZY88 ON")
+  check_eq(ex("TRA401 vnav off?"), "VNAV TRA401 OFF")
+  -- two switches with their own states: each its own (the switch-off confirmed first)
+  local function confirmed(text)
+    local r = graph.translate(text, { sim = s, mode = "offline" })
+    return r.confirm and r.confirm.commands and table.concat(r.confirm.commands, " ; ") or ""
+  end
+  check_eq(confirmed("switch the MVP off and the detection on"), "RESO OFF ; ASAS ON")
+  check_eq(confirmed("put the ASAS on and the MVP off"), "ASAS ON ; RESO OFF")
+  check_eq(ex("turn the detection on and the trails off"), "ASAS ON ; TRAIL OFF")
+end
