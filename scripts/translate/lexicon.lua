@@ -153,7 +153,9 @@ return {
         -- arrange for the simulation to pause ...", "simply keep flying straight")
         "trials", "pretend", "imagine", "arrange", "simply",
         -- (a participant's consent, the reason a run starts: "she's here and consented, start it back up")
-        "consent", "consented", "consents" },
+        "consent", "consented", "consents",
+        -- what the speaker thanks for, said with no article by a non-native speaker ("thank you for cooperation")
+        "cooperation", "cooperating", "patience" },
     -- the people in the room, addressed ("ok observers, I'm going to start the clock", "ok folks, first one")
     audience = { "folks", "guys", "observers", "observer", "team", "gentlemen", "ladies", "y'all", "everybody",
         -- the same in Spanish and Portuguese, where instructors teach in English ("chicos, look:", "ok pessoal")
@@ -534,7 +536,7 @@ return {
   -- instruction words of three letters or more that a typing slip one edit from them is read as, beside
   -- spelling.targets (translate/typos.lua: only in a request asked about, every reading of the slip tried), and
   -- how far from the traffic a fix, navaid or airport of the slip's letters keeps it as typed (nautical miles)
-  typo_targets = { "and", "then", "fpm", "route", "hdg", "mach", "level", "proceed" },
+  typo_targets = { "and", "then", "fpm", "route", "hdg", "mach", "level", "proceed", "please" },
   typo_place_nm = 250,
   -- units after a value that keep "FL 2 10" two values ("fl 2 10 knots"): a level's figures are never split before them
   level_split_units = { knots = true, kts = true, kt = true, knot = true, degrees = true, deg = true, nm = true,
