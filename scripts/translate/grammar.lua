@@ -702,6 +702,9 @@ end
 local SC_WORDS, SC_MARKERS, SC_AFTER = set_of(lexicon.self_correction.words),
   set_of(lexicon.self_correction.markers), set_of(lexicon.self_correction.after)
 local SC_CLOSING = set_of(lexicon.self_correction.closing)
+-- (G.sc_value_words: the words of a run between two values, lexicon.self_correction's words and value_words)
+G.sc_value_words = set_of(lexicon.self_correction.value_words)
+for w in pairs(SC_WORDS) do G.sc_value_words[w] = true end
 -- (G.sc_dropping: the first words of the markers that take back in words, a set)
 G.sc_dropping = set_of(lexicon.self_correction.dropping)
 -- {word, pattern} of the first word of each marker, the pattern finding it as a whole word in lower-case
@@ -783,10 +786,48 @@ function G.meant_after_hesitation(text)
   end
   return done()
 end
+-- "speed 250 knots... sorry, I mistook, 230 knots": a slip admitted (lexicon.self_correction.admitted) and set
+-- off by a mark with more words after it is the marker "sorry"; anywhere else it is left as said.
+G.admitted_patterns = {}
+for _, p in ipairs(lexicon.self_correction.admitted) do
+  G.admitted_patterns[#G.admitted_patterns + 1] = { last = p:match("(%S+)$"),
+    pattern = "%f[%w]" .. p:gsub(" ", "%%s+") .. "()%s*[,;:%.!%-]+%s*%w" }
+end
+function G.admitted_slips(text)
+  local lower = text:lower()
+  for _, a in ipairs(G.admitted_patterns) do
+    if lower:find(a.last, 1, true) then
+      local b, _, e = lower:find(a.pattern)
+      while b do
+        text = text:sub(1, b - 1) .. "sorry" .. text:sub(e)
+        lower = text:lower()
+        b, _, e = lower:find(a.pattern)
+      end
+    end
+  end
+  return text
+end
+-- {first, rest} of each phrase of lexicon.self_correction.restated ("it is": "it", {"is"})
+G.restated = {}
+for _, p in ipairs(lexicon.self_correction.restated) do
+  local ws = {}
+  for w in p:gmatch("%S+") do ws[#ws + 1] = w end
+  G.restated[#G.restated + 1] = ws
+end
+-- The index of the word after a phrase of G.restated said from toks[j] with no mark inside it, else nil.
+function G.after_restated(toks, j)
+  for _, ws in ipairs(G.restated) do
+    local n = 0
+    while n < #ws and toks[j + n] and toks[j + n].bare == ws[n + 1]
+        and (n == #ws - 1 or not toks[j + n].raw:match("%p$")) do n = n + 1 end
+    if n == #ws and not toks[j + n - 1].raw:match("%p$") and toks[j + n] then return j + n end
+  end
+  return nil
+end
 local function self_corrections(text)
-  text = G.meant_after_hesitation(hesitated_sides(G.formal_apologies(text)))
+  text = G.meant_after_hesitation(hesitated_sides(G.formal_apologies(G.admitted_slips(text))))
   if not holds_word(text:lower(), SC_MARKER_PATTERNS) then return text end
-  local words, markers, after = SC_WORDS, SC_MARKERS, SC_AFTER
+  local words, markers, after = G.sc_value_words, SC_MARKERS, SC_AFTER
   local toks = bare_words(text)
   local function value(t) return t and (t.raw:match("%d%p*$") or NUMBER_WORDS[t.bare] or UNIT_WORDS[t.bare]) end
   local put, done = tokens.splicer(text)
@@ -818,6 +859,9 @@ local function self_corrections(text)
     if nxt and (nxt.bare == "the" or nxt.bare == "a" or nxt.bare == "to") and toks[j + 1] and not nxt.raw:match("%p$") then
       said = toks[j + 1]
     end
+    -- ("I am sorry, it is 260": the phrase restating is part of the run, the value after it said in place)
+    local restated = marked and nxt and G.after_restated(toks, j)
+    if restated then nxt, said = toks[restated], toks[restated] end
     if j > k and marked and not refused and not (dropping and after[nxt and nxt.bare or ""] and not SIDES[nxt.bare])
         and not (toks[k - 2] and toks[k - 2].bare == "not" and G.apology[toks[k].bare])
         and (value(toks[k - 1]) or (toks[k - 1] and SIDES[toks[k - 1].bare]) or position) and nxt

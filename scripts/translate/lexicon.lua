@@ -957,6 +957,9 @@ return {
   self_correction = { words = { "oh", "no", "wait", "sorry", "actually", "make", "that", "i", "mean", "meant", "uh", "um",
                                 "er", "say", "again", "scratch", "corr", "hmm", "typo", "never", "mind", "nevermind",
                                 "forget", "belay", "better", "rather" },
+                      -- words of an apology ("I am sorry", "I'm sorry") also part of a run between two values
+                      -- (grammar.lua self_corrections: "flight level 110, I am sorry, flight level 100")
+                      value_words = { "am", "i'm" },
                       markers = { "no", "wait", "sorry", "actually", "make that", "mean", "meant", "say again", "scratch",
                                   "corr", "never mind", "nevermind", "forget that", "belay" },
                       -- the markers that, closing the request, take back what came before with nothing said
@@ -998,6 +1001,15 @@ return {
                       -- formal apologies, and a slip's exclamation as typed ("oops", "ops", "opps", "oups"),
                       -- read as "sorry" (a marker) wherever they are said ("Mach 0.80 -- pardon me, Mach 0.78",
                       -- "the United -- no, forgive me, the Southwest", "Gol 12, ops, Gol 21, descend ...")
+                      -- the speaker admitting a slip, set off by a mark and followed by more of the request
+                      -- ("speed 250 knots... sorry, I mistook, 230 knots", "FL110, my mistake, FL100"): read as
+                      -- "sorry" (a marker); closing the request or running on ("I made a mistake when creating
+                      -- it") they are no marker (judged)
+                      admitted = { "i mistook", "i made a mistake", "i made an error", "my mistake", "my error",
+                                   "i was mistaken", "i was wrong" },
+                      -- said after a marker, before the value said in place of the one taken back ("I am sorry,
+                      -- it is 260"): part of the correction's run
+                      restated = { "it is", "it's", "it should be" },
                       formal_apology = { "i beg your pardon", "beg your pardon", "pardon me", "forgive me",
                                          "excuse me", "my apologies", "oops", "ops", "opps", "oups", "whoops",
                                          "woops", "oopsie", "whoopsie" },
