@@ -4560,7 +4560,8 @@ for cmd, nouns in pairs(SC.just_the) do for _, w in ipairs(nouns) do SC_KEPT[w] 
 -- the instruction word at p, replaces it; true when it did. Said "exactly" ("at or below FL090, sorry make it
 -- exactly FL090"), it takes back the bound said before the value too (its words noted).
 function G:value_said_again(p, a, c)
-  local v = self:word(c, "it") and self:word(c - 1, "make") and c + 1 or c
+  -- ("2.5 NM, sorry, please use 4 NM": "use" and the value alone, as "make it")
+  local v = (self:word(c, "it") and self:word(c - 1, "make") or self:word(c, "use")) and c + 1 or c
   local exact = self:word(v, "exactly precisely")
   if exact then v = v + 1 end
   local new = self:quantities(v, #self.t + 1)[1]
@@ -4696,6 +4697,36 @@ function G:clause_value(b)
   return false
 end
 
+-- "descend to flight level 310... I am sorry, not 310 because the Fuji Dream is there. Please descend to flight
+-- level 320", "2.5 NM, sorry, 2.5 is too small, please use 4 NM": after a self-correction run ending at c, the value
+-- said last before the run (at a) said again after "not", or before a word of lexicon.ruled_out_verbs, opens the
+-- reason it is taken back: a clause of at most twelve words with no instruction in it, ending in a mark with more
+-- said after it, no aircraft said first after it. It belongs to the run (what it names is context); the index
+-- after it, or c when none is said.
+G.ruled_out_verbs = set_of(lexicon.ruled_out_verbs)
+function G:ruled_out_reason_end(a, c)
+  local before = self:quantities(1, a)
+  local old = before[#before]
+  if not old then return c end
+  local n = self:word(c, "not") and c + 1 or c
+  local t = self.t[n]
+  if not (t and t.kind ~= "punct" and (n > c or self.t[n + 1] and G.ruled_out_verbs[self.t[n + 1].text])) then return c end
+  local same = false
+  for k = old.b, old.e - 1 do same = same or self.t[k].text == t.text end
+  if not same then return c end
+  local k = n + 1
+  while k < n + 13 and self.t[k] and self.t[k].kind ~= "punct" and not self:intent_at(k) do k = k + 1 end
+  if not (self.t[k] and self.t[k].kind == "punct" and self.t[k].text ~= "?") then return c end
+  while self.t[k] and (self.t[k].kind == "punct" or self.t[k].filler) do k = k + 1 end
+  -- (an aircraft said next is another instruction, no replacement: the value ruled out is asked about)
+  if not self.t[k] or self:has_ref(k, k + 1, "aircraft")
+      or self:word(k, "the") and self:has_ref(k + 1, k + 2, "aircraft") then
+    return c
+  end
+  for i = c, k - 1 do self.noted[i] = true end
+  return k
+end
+
 function G:self_corrected()
   local a = 2
   while a <= #self.t do
@@ -4743,6 +4774,15 @@ function G:self_corrected()
         c = k
         while self.t[c] and (self.t[c].kind == "punct" or self.t[c].filler) do c = c + 1 end
       end
+    end
+    if marked then
+      c = self:ruled_out_reason_end(a, c)
+    elseif c > a and self:word(c, "am i'm") and self:word(c + 1, "sorry") then
+      -- ("310... I am sorry, not 310 because ...": an apology with "am" is a marker only before such a reason)
+      local s = c + 2
+      while self.t[s] and (self.t[s].kind == "punct" or self.t[s].filler) do s = s + 1 end
+      local e = self:ruled_out_reason_end(a, s)
+      if e > s then c, marked = e, true end
     end
     -- ("add SHNON... scratch that, let's put TRUPS ...": "let's" (read as "let") or "let us" before the
     -- instruction said in its place belongs to the run)

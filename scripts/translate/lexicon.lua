@@ -872,6 +872,9 @@ return {
   -- the first words of a remark that judges what the speaker said ("that was wrong", "I got it mixed up", "my
   -- mistake": G:dangling_correction)
   self_correction_judges = { "that", "that's", "this", "i", "i've", "i'd", "my" },
+  -- said after a value taken back by a self-correction and said again, the judgement that opens the reason it is
+  -- taken back ("2.5 NM, sorry, 2.5 is too small, please use 4 NM": grammar.lua G:ruled_out_reason_end)
+  ruled_out_verbs = { "is", "was", "would", "will", "seems", "looks" },
   self_correction_reason_openers = { "it's", "that's", "its", "it", "that", "he's", "she's", "they're" },
   -- who speaks, said as a label before the request ("instructor: KLM101 turn right", "instructor here:
   -- create ...", "sim op: ..."): the label is no part of the request
