@@ -189,7 +189,8 @@ local function know_all(v, seen)
   -- and lexicon.digit_homophones digits only inside a callsign read ("won", "ate"); lexicon.kept_as_is only
   -- where a value is read as kept; lexicon.id_labels only the letters of a label's id, lexicon.terse_list only
   -- the words of a terse list, lexicon.self_correction.apology only after a value ruled out (.formal_apology read as
-  -- "sorry", .described only inside a correction's run, .judged: none), lexicon.limit_release only after a limit's
+  -- "sorry", .described only inside a correction's run, .judged: none, .admitted read as "sorry" where set off),
+  -- lexicon.limit_release only after a limit's
   -- place, lexicon.replaced_lead
   -- only before a value replaced, lexicon.ff_ended only before a fast-forward ended, lexicon.countries only
   -- inside a callsign read, lexicon.described_places.regions only as a place that describes an aircraft,
@@ -206,7 +207,7 @@ local function know_all(v, seen)
       or v == lexicon.kept_as_is or v == lexicon.id_labels or v == lexicon.terse_list
       or v == lexicon.self_correction.apology or v == lexicon.replaced_lead or v == lexicon.ff_ended
       or v == lexicon.self_correction.formal_apology or v == lexicon.self_correction.described
-      or v == lexicon.self_correction.judged or v == lexicon.limit_release
+      or v == lexicon.self_correction.judged or v == lexicon.self_correction.admitted or v == lexicon.limit_release
       or v == lexicon.countries or v == lexicon.screen_position then
     return
   end
