@@ -189,7 +189,8 @@ local function know_all(v, seen)
   -- and lexicon.digit_homophones digits only inside a callsign read ("won", "ate"); lexicon.kept_as_is only
   -- where a value is read as kept; lexicon.id_labels only the letters of a label's id, lexicon.terse_list only
   -- the words of a terse list, lexicon.self_correction.apology only after a value ruled out (.formal_apology read as
-  -- "sorry", .described only inside a correction's run, .judged: none), lexicon.limit_release only after a limit's
+  -- "sorry", .described only inside a correction's run, .judged: none, .admitted read as "sorry" where set off),
+  -- lexicon.limit_release only after a limit's
   -- place, lexicon.replaced_lead
   -- only before a value replaced, lexicon.ff_ended only before a fast-forward ended, lexicon.countries only
   -- inside a callsign read, lexicon.described_places.regions only as a place that describes an aircraft,
@@ -206,7 +207,7 @@ local function know_all(v, seen)
       or v == lexicon.kept_as_is or v == lexicon.id_labels or v == lexicon.terse_list
       or v == lexicon.self_correction.apology or v == lexicon.replaced_lead or v == lexicon.ff_ended
       or v == lexicon.self_correction.formal_apology or v == lexicon.self_correction.described
-      or v == lexicon.self_correction.judged or v == lexicon.limit_release
+      or v == lexicon.self_correction.judged or v == lexicon.self_correction.admitted or v == lexicon.limit_release
       or v == lexicon.countries or v == lexicon.screen_position then
     return
   end
@@ -702,6 +703,9 @@ end
 local SC_WORDS, SC_MARKERS, SC_AFTER = set_of(lexicon.self_correction.words),
   set_of(lexicon.self_correction.markers), set_of(lexicon.self_correction.after)
 local SC_CLOSING = set_of(lexicon.self_correction.closing)
+-- (G.sc_value_words: the words of a run between two values, lexicon.self_correction's words and value_words)
+G.sc_value_words = set_of(lexicon.self_correction.value_words)
+for w in pairs(SC_WORDS) do G.sc_value_words[w] = true end
 -- (G.sc_dropping: the first words of the markers that take back in words, a set)
 G.sc_dropping = set_of(lexicon.self_correction.dropping)
 -- {word, pattern} of the first word of each marker, the pattern finding it as a whole word in lower-case
@@ -783,10 +787,48 @@ function G.meant_after_hesitation(text)
   end
   return done()
 end
+-- "speed 250 knots... sorry, I mistook, 230 knots": a slip admitted (lexicon.self_correction.admitted) and set
+-- off by a mark with more words after it is the marker "sorry"; anywhere else it is left as said.
+G.admitted_patterns = {}
+for _, p in ipairs(lexicon.self_correction.admitted) do
+  G.admitted_patterns[#G.admitted_patterns + 1] = { last = p:match("(%S+)$"),
+    pattern = "%f[%w]" .. p:gsub(" ", "%%s+") .. "()%s*[,;:%.!%-]+%s*%w" }
+end
+function G.admitted_slips(text)
+  local lower = text:lower()
+  for _, a in ipairs(G.admitted_patterns) do
+    if lower:find(a.last, 1, true) then
+      local b, _, e = lower:find(a.pattern)
+      while b do
+        text = text:sub(1, b - 1) .. "sorry" .. text:sub(e)
+        lower = text:lower()
+        b, _, e = lower:find(a.pattern)
+      end
+    end
+  end
+  return text
+end
+-- {first, rest} of each phrase of lexicon.self_correction.restated ("it is": "it", {"is"})
+G.restated = {}
+for _, p in ipairs(lexicon.self_correction.restated) do
+  local ws = {}
+  for w in p:gmatch("%S+") do ws[#ws + 1] = w end
+  G.restated[#G.restated + 1] = ws
+end
+-- The index of the word after a phrase of G.restated said from toks[j] with no mark inside it, else nil.
+function G.after_restated(toks, j)
+  for _, ws in ipairs(G.restated) do
+    local n = 0
+    while n < #ws and toks[j + n] and toks[j + n].bare == ws[n + 1]
+        and (n == #ws - 1 or not toks[j + n].raw:match("%p$")) do n = n + 1 end
+    if n == #ws and not toks[j + n - 1].raw:match("%p$") and toks[j + n] then return j + n end
+  end
+  return nil
+end
 local function self_corrections(text)
-  text = G.meant_after_hesitation(hesitated_sides(G.formal_apologies(text)))
+  text = G.meant_after_hesitation(hesitated_sides(G.formal_apologies(G.admitted_slips(text))))
   if not holds_word(text:lower(), SC_MARKER_PATTERNS) then return text end
-  local words, markers, after = SC_WORDS, SC_MARKERS, SC_AFTER
+  local words, markers, after = G.sc_value_words, SC_MARKERS, SC_AFTER
   local toks = bare_words(text)
   local function value(t) return t and (t.raw:match("%d%p*$") or NUMBER_WORDS[t.bare] or UNIT_WORDS[t.bare]) end
   local put, done = tokens.splicer(text)
@@ -818,6 +860,9 @@ local function self_corrections(text)
     if nxt and (nxt.bare == "the" or nxt.bare == "a" or nxt.bare == "to") and toks[j + 1] and not nxt.raw:match("%p$") then
       said = toks[j + 1]
     end
+    -- ("I am sorry, it is 260": the phrase restating is part of the run, the value after it said in place)
+    local restated = marked and nxt and G.after_restated(toks, j)
+    if restated then nxt, said = toks[restated], toks[restated] end
     if j > k and marked and not refused and not (dropping and after[nxt and nxt.bare or ""] and not SIDES[nxt.bare])
         and not (toks[k - 2] and toks[k - 2].bare == "not" and G.apology[toks[k].bare])
         and (value(toks[k - 1]) or (toks[k - 1] and SIDES[toks[k - 1].bare]) or position) and nxt
@@ -4530,7 +4575,8 @@ for cmd, nouns in pairs(SC.just_the) do for _, w in ipairs(nouns) do SC_KEPT[w] 
 -- the instruction word at p, replaces it; true when it did. Said "exactly" ("at or below FL090, sorry make it
 -- exactly FL090"), it takes back the bound said before the value too (its words noted).
 function G:value_said_again(p, a, c)
-  local v = self:word(c, "it") and self:word(c - 1, "make") and c + 1 or c
+  -- ("2.5 NM, sorry, please use 4 NM": "use" and the value alone, as "make it")
+  local v = (self:word(c, "it") and self:word(c - 1, "make") or self:word(c, "use")) and c + 1 or c
   local exact = self:word(v, "exactly precisely")
   if exact then v = v + 1 end
   local new = self:quantities(v, #self.t + 1)[1]
@@ -4666,6 +4712,36 @@ function G:clause_value(b)
   return false
 end
 
+-- "descend to flight level 310... I am sorry, not 310 because the Fuji Dream is there. Please descend to flight
+-- level 320", "2.5 NM, sorry, 2.5 is too small, please use 4 NM": after a self-correction run ending at c, the value
+-- said last before the run (at a) said again after "not", or before a word of lexicon.ruled_out_verbs, opens the
+-- reason it is taken back: a clause of at most twelve words with no instruction in it, ending in a mark with more
+-- said after it, no aircraft said first after it. It belongs to the run (what it names is context); the index
+-- after it, or c when none is said.
+G.ruled_out_verbs = set_of(lexicon.ruled_out_verbs)
+function G:ruled_out_reason_end(a, c)
+  local before = self:quantities(1, a)
+  local old = before[#before]
+  if not old then return c end
+  local n = self:word(c, "not") and c + 1 or c
+  local t = self.t[n]
+  if not (t and t.kind ~= "punct" and (n > c or self.t[n + 1] and G.ruled_out_verbs[self.t[n + 1].text])) then return c end
+  local same = false
+  for k = old.b, old.e - 1 do same = same or self.t[k].text == t.text end
+  if not same then return c end
+  local k = n + 1
+  while k < n + 13 and self.t[k] and self.t[k].kind ~= "punct" and not self:intent_at(k) do k = k + 1 end
+  if not (self.t[k] and self.t[k].kind == "punct" and self.t[k].text ~= "?") then return c end
+  while self.t[k] and (self.t[k].kind == "punct" or self.t[k].filler) do k = k + 1 end
+  -- (an aircraft said next is another instruction, no replacement: the value ruled out is asked about)
+  if not self.t[k] or self:has_ref(k, k + 1, "aircraft")
+      or self:word(k, "the") and self:has_ref(k + 1, k + 2, "aircraft") then
+    return c
+  end
+  for i = c, k - 1 do self.noted[i] = true end
+  return k
+end
+
 function G:self_corrected()
   local a = 2
   while a <= #self.t do
@@ -4713,6 +4789,15 @@ function G:self_corrected()
         c = k
         while self.t[c] and (self.t[c].kind == "punct" or self.t[c].filler) do c = c + 1 end
       end
+    end
+    if marked then
+      c = self:ruled_out_reason_end(a, c)
+    elseif c > a and self:word(c, "am i'm") and self:word(c + 1, "sorry") then
+      -- ("310... I am sorry, not 310 because ...": an apology with "am" is a marker only before such a reason)
+      local s = c + 2
+      while self.t[s] and (self.t[s].kind == "punct" or self.t[s].filler) do s = s + 1 end
+      local e = self:ruled_out_reason_end(a, s)
+      if e > s then c, marked = e, true end
     end
     -- ("add SHNON... scratch that, let's put TRUPS ...": "let's" (read as "let") or "let us" before the
     -- instruction said in its place belongs to the run)

@@ -2827,6 +2827,10 @@ function m:false_starts()
             and airline_digits(r.heard.id) == airline_digits(nxt.name))) then
       r.false_start = true
     end
+    if r.kind == "aircraft" and nxt and nxt.kind == "aircraft" and not r.false_start
+        and self:verb_said_again(r.e, nxt) then
+      r.false_start = true
+    end
     if r.kind == "aircraft" and not r.false_start and self:aircraft_named_after(r) then
       r.false_start = true
     end
@@ -2888,6 +2892,23 @@ function m:callsign_taken_back(b, e)
     end
   end
   return marked
+end
+
+-- True when the words from b (after an aircraft) are an instruction's verb, a run taken back (m:callsign_taken_back)
+-- and aircraft reference nxt, then the same verb ("make the Skymark to descend... sorry, I mean the China Eastern,
+-- to descend to 9000 feet"): the aircraft before the run is taken back, the verb is said for nxt. "to" may precede
+-- each verb; a verb said only once ("the Skymark descend, sorry, the China Eastern, climb ...") is no such run.
+function m:verb_said_again(b, nxt)
+  local function verb_at(k)
+    k = self:skip_fillers(k, true)
+    if self:word(k, "to") then k = k + 1 end
+    local t = self.t[k]
+    return t and t.kind ~= "punct" and self:word(k, "@refusable_verbs") and k or nil
+  end
+  local v = verb_at(b)
+  if not v or v + 1 >= nxt.b or not self:callsign_taken_back(v + 1, nxt.b) then return false end
+  local again = verb_at(nxt.e)
+  return again ~= nil and self.t[again].text == self.t[v].text
 end
 
 -- True when aircraft reference r, said after a complete instruction to `last`, replaces it: r (and aircraft said

@@ -153,7 +153,9 @@ return {
         -- arrange for the simulation to pause ...", "simply keep flying straight")
         "trials", "pretend", "imagine", "arrange", "simply",
         -- (a participant's consent, the reason a run starts: "she's here and consented, start it back up")
-        "consent", "consented", "consents" },
+        "consent", "consented", "consents",
+        -- what the speaker thanks for, said with no article by a non-native speaker ("thank you for cooperation")
+        "cooperation", "cooperating", "patience" },
     -- the people in the room, addressed ("ok observers, I'm going to start the clock", "ok folks, first one")
     audience = { "folks", "guys", "observers", "observer", "team", "gentlemen", "ladies", "y'all", "everybody",
         -- the same in Spanish and Portuguese, where instructors teach in English ("chicos, look:", "ok pessoal")
@@ -534,7 +536,7 @@ return {
   -- instruction words of three letters or more that a typing slip one edit from them is read as, beside
   -- spelling.targets (translate/typos.lua: only in a request asked about, every reading of the slip tried), and
   -- how far from the traffic a fix, navaid or airport of the slip's letters keeps it as typed (nautical miles)
-  typo_targets = { "and", "then", "fpm", "route", "hdg", "mach", "level", "proceed" },
+  typo_targets = { "and", "then", "fpm", "route", "hdg", "mach", "level", "proceed", "please" },
   typo_place_nm = 250,
   -- units after a value that keep "FL 2 10" two values ("fl 2 10 knots"): a level's figures are never split before them
   level_split_units = { knots = true, kts = true, kt = true, knot = true, degrees = true, deg = true, nm = true,
@@ -877,6 +879,9 @@ return {
   -- the first words of a remark that judges what the speaker said ("that was wrong", "I got it mixed up", "my
   -- mistake": G:dangling_correction)
   self_correction_judges = { "that", "that's", "this", "i", "i've", "i'd", "my" },
+  -- said after a value taken back by a self-correction and said again, the judgement that opens the reason it is
+  -- taken back ("2.5 NM, sorry, 2.5 is too small, please use 4 NM": grammar.lua G:ruled_out_reason_end)
+  ruled_out_verbs = { "is", "was", "would", "will", "seems", "looks" },
   self_correction_reason_openers = { "it's", "that's", "its", "it", "that", "he's", "she's", "they're" },
   -- who speaks, said as a label before the request ("instructor: KLM101 turn right", "instructor here:
   -- create ...", "sim op: ..."): the label is no part of the request
@@ -962,6 +967,9 @@ return {
   self_correction = { words = { "oh", "no", "wait", "sorry", "actually", "make", "that", "i", "mean", "meant", "uh", "um",
                                 "er", "say", "again", "scratch", "corr", "hmm", "typo", "never", "mind", "nevermind",
                                 "forget", "belay", "better", "rather" },
+                      -- words of an apology ("I am sorry", "I'm sorry") also part of a run between two values
+                      -- (grammar.lua self_corrections: "flight level 110, I am sorry, flight level 100")
+                      value_words = { "am", "i'm" },
                       markers = { "no", "wait", "sorry", "actually", "make that", "mean", "meant", "say again", "scratch",
                                   "corr", "never mind", "nevermind", "forget that", "belay" },
                       -- the markers that, closing the request, take back what came before with nothing said
@@ -1003,6 +1011,15 @@ return {
                       -- formal apologies, and a slip's exclamation as typed ("oops", "ops", "opps", "oups"),
                       -- read as "sorry" (a marker) wherever they are said ("Mach 0.80 -- pardon me, Mach 0.78",
                       -- "the United -- no, forgive me, the Southwest", "Gol 12, ops, Gol 21, descend ...")
+                      -- the speaker admitting a slip, set off by a mark and followed by more of the request
+                      -- ("speed 250 knots... sorry, I mistook, 230 knots", "FL110, my mistake, FL100"): read as
+                      -- "sorry" (a marker); closing the request or running on ("I made a mistake when creating
+                      -- it") they are no marker (judged)
+                      admitted = { "i mistook", "i made a mistake", "i made an error", "my mistake", "my error",
+                                   "i was mistaken", "i was wrong" },
+                      -- said after a marker, before the value said in place of the one taken back ("I am sorry,
+                      -- it is 260"): part of the correction's run
+                      restated = { "it is", "it's", "it should be" },
                       formal_apology = { "i beg your pardon", "beg your pardon", "pardon me", "forgive me",
                                          "excuse me", "my apologies", "oops", "ops", "opps", "oups", "whoops",
                                          "woops", "oopsie", "whoopsie" },

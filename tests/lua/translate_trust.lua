@@ -15823,3 +15823,43 @@ do
   check_eq(confirmed("put the ASAS on and the MVP off"), "ASAS ON ; RESO OFF")
   check_eq(ex("turn the detection on and the trails off"), "ASAS ON ; TRAIL OFF")
 end
+
+-- Cycle 55 (fcr): a slip admitted ("I mistook", "my mistake") is a correction marker; "I am sorry" and "it is"
+-- belong to the run between two values; "thank you for cooperation"; "Plese"
+do
+  local _, ex = scene({ "CRE AAA11 A320 52.9 3.6 090 FL240 280", "CRE BBB22 B738 52.9 5.0 270 FL300 250" })
+  check_eq(ex("AAA11, reduce speed to 240 knots. I am sorry, I mistook, it is 250."), "SPD AAA11 250")
+  check_eq(ex("BBB22 descend to flight level 260, my mistake, flight level 270."), "ALT BBB22 FL270")
+  check_eq(ex("BBB22 descend to flight level 260, I'm sorry, flight level 270."), "ALT BBB22 FL270")
+  check_eq(ex("AAA11 heading 120 please... sorry, I made a mistake, heading 130."), "HDG AAA11 130")
+  check_eq(ex("AAA11, please increase speed to 300 knots. No, I mistook, please reduce to 260 knots."),
+    "SPD AAA11 260")
+  -- a slip admitted only after the second value, closing the request: which one stands is asked
+  asked(ex("BBB22 descend to flight level 260, it should be flight level 270, I was wrong."), "admitted last")
+  -- "it is" with no marker before it corrects nothing: still asked
+  asked(ex("BBB22 descend to flight level 260, it is 270."), "no marker: 'it is 270' is no correction")
+  -- a slip admitted closing the request, with nothing in its place: the value stands or is asked, never replaced
+  check(not ex("Please delete BBB22, I made a mistake when creating it."):find("270", 1, true), "no value invented")
+  check_eq(ex("AAA11, climb to flight level 250 and speed 260 knots, thank you for cooperation."),
+    "ALT AAA11 FL250 ; SPD AAA11 260")
+  check_eq(ex("Plese make AAA11 to climb to flight level 250."), "ALT AAA11 FL250")
+  check_eq(ex("Please make AAA11 to descend until flight level 200."), "ALT AAA11 FL200")
+end
+do
+  local _, ex = scene({ "CRE AAA11 A320 52.9 3.6 090 FL240 280", "CRE BBB22 B738 52.9 5.0 270 FL300 250",
+    "CRE CCC33 E190 52.0 4.0 180 FL280 250" })
+  -- a value ruled out with its reason, the instruction said again in its place
+  check_eq(ex("BBB22, please descend to flight level 280... I am sorry, not 280 because CCC33 is there. Please "
+    .. "descend to flight level 290."), "ALT BBB22 FL290")
+  check_eq(ex("Set the horizontal protected zone to 3 NM, sorry, 3 is too small, please use 5 NM."), "ZONER 5")
+  check_eq(ex("AAA11 reduce speed to 240 knots, sorry, use 230 knots."), "SPD AAA11 230")
+  -- another aircraft said after the reason: no replacement, the value ruled out is asked about
+  asked(ex("BBB22, please descend to flight level 280... I am sorry, not 280 because CCC33 is there. AAA11 "
+    .. "descend to flight level 290."), "another aircraft after the reason")
+  -- "use" with no marker before it replaces nothing
+  asked(ex("AAA11 reduce speed to 240 knots, use 230 knots."), "no marker before 'use'")
+  -- an aircraft taken back between a verb and the same verb said again
+  check_eq(ex("Please make the Airbus to descend... sorry, I mean the Boeing, to descend to FL260."),
+    "ALT BBB22 FL260")
+  check_eq(ex("Please make AAA11 to climb, sorry, I mean CCC33, to climb to FL300."), "ALT CCC33 FL300")
+end
