@@ -2261,7 +2261,8 @@ return {
       echtzeit = "real time", zuruck = "back", zurueck = "back", neuer = "new", neue = "new", neuen = "new",
       ["am ende"] = "at the end", ["ans ende"] = "at the end", uberspringen = "skip",
       ueberspringen = "skip", einfugen = "add", einfuegen = "add", raus = "remove", ["aus der route"] = "from the route",
-      beide = "both", ja = "yes", hohe = "altitude", hoehe = "altitude", auf = "to", noch = "add",
+      beide = "both", ja = "yes", hohe = "altitude", hoehe = "altitude", auf = "to", noch = "add", uber = "over",
+      ueber = "over",
       -- questions about an aircraft or a place ("was macht X": what X is doing, its state; "wo ist KPT?")
       ["was macht"] = "status of", ["was ist"] = "what is", ["wo ist"] = "where is", wo = "where",
       -- colours of a trail
@@ -2270,8 +2271,7 @@ return {
     -- words of `words` said the same in Dutch or English: no sign of German alone
     shared = { vier = true, acht = true, wo = true, rot = true, ja = true },
     -- words also English or another language's, read only in a German sentence ("auf", "null" for zero)
-    joining = { null = "zero", uber = "over", ueber = "over",
-      direkt = "direct", der = "the", die = "the", das = "the" },
+    joining = { null = "zero", direkt = "direct", der = "the", die = "the", das = "the" },
   },
   -- Dutch words in a Dutch or Belgian controller's or sim operator's English ("trails aan graag", "zet hem op tien
   -- keer real time", "gooi KLM886 maar weg", "maak een Transavia aan ...")

@@ -15921,4 +15921,6 @@ do
   -- a typed flight number alone, closed by letters: confirmed, never taken (its airline unsaid)
   asked(ex("8k fl200"), "'8k' names no airline")
   asked(ex("31 fl200, 8K kurs 090") , "'8K' names no airline")
+  -- "über" (over) a place
+  check_eq(ex("wind 270/30 über WPTAA"), "WIND WPTAA 270 30")
 end
