@@ -11217,8 +11217,13 @@ local function glued_telephony(text, fleet)
   return (text:gsub("()%f[%w](%a+)(%d%w*)%f[%W]", function(at, word, number)
     local icao = not prefixes[word:upper()] and GLUED_AIRLINES[word:lower()]
     local id = icao and ids[(icao .. number):upper()]
+    if not G.icao_codes then  -- (every airline's ICAO designator, upper case -> true)
+      G.icao_codes = {}
+      for _, a in ipairs(names.airlines) do G.icao_codes[a[2]] = true end
+    end
+    -- (a word that is itself an airline's ICAO designator, "tui1ab" with TUI TUIfly's, is that airline's id)
     if icao and not id and #number <= 4 and number:match("^%d+%a?%a?$")
-        and not (word:match("^%u%u+$") and #word + #number <= 8) then
+        and not (word:match("^%u%u+$") and #word + #number <= 8) and not G.icao_codes[word:upper()] then
       for w in text:sub(1, at - 1):lower():gmatch("%a+") do
         if lexicon.creation_verbs[w] then id = (icao .. number):upper() end
       end

@@ -3044,8 +3044,10 @@ function m:number_only(r)
   for key in pairs(r) do
     if key:match("^by_") then return nil end
   end
+  -- (a typed flight number closed by one or two letters, "4ab fl230" for DLH4AB, is confirmed as a said one is)
+  local typed = self.t[r.b].kind == "number" and self:raw(r.b, r.e):match("^%d+%s?%a%a?$")
   for x = r.b, r.e - 1 do
-    if not (self.t[x].kind == "word" and (self.t[x].number_word or self.t[x].filler)) then return nil end
+    if not (typed or self.t[x].kind == "word" and (self.t[x].number_word or self.t[x].filler)) then return nil end
   end
   local airline, before = r.name:match("^%a+"), self.t[r.b - 1]
   local listed = before and (self:word(r.b - 1, "and") or (before.kind == "punct" and before.text == ","))

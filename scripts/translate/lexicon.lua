@@ -2060,6 +2060,22 @@ return {
     -- ("run the simulation at for times real time": a multiplier's digit heard as a word)
     { heard = { "for", "fore" }, means = "four", before = { "times" } },
     { heard = { "nots", "notts", "nuts", "knot's" }, means = "knots", after = { "#number" } },
+    -- German "rechts"/"links" (right/left; lexicon.said_whole.dutch reads them in a Dutch sentence): straight before
+    -- a number, no "kurs" (heading) between, the side of a turn that number may be the degrees of ("rechts 20",
+    -- "links 090", "rechts 200": read as "turn right ..." is, asked where the heading and the turn differ); after
+    -- a number or before a heading's word, the side alone ("30 links", "20 grad rechts", "links kurs 090")
+    { heard = { "rechts" }, means = "turn right", before = { "#number" }, not_after = { "turn", "heading", "hdg" } },
+    { heard = { "links" }, means = "turn left", before = { "#number" }, not_after = { "turn", "heading", "hdg" } },
+    { heard = { "rechts" }, means = "right", before = { "heading", "hdg", "to", "on", "onto", "auf", "kurs", "steuerkurs",
+        "turn" }, after = { "#number", "degrees", "degree", "grad", "turn" } },
+    { heard = { "links" }, means = "left", before = { "heading", "hdg", "to", "on", "onto", "auf", "kurs", "steuerkurs",
+        "turn" }, after = { "#number", "degrees", "degree", "grad", "turn" } },
+    -- German "an"/"ein" (on) and "aus" (off) straight after what is switched ("vnav ein", "trails an", "asas aus",
+    -- "lnav aus kurs 240"); elsewhere "an" is English's article and "ein" Aer Lingus's code
+    { heard = { "an", "ein" }, means = "on", after = { "vnav", "lnav", "trail", "trails", "asas", "cdr", "reso",
+                                                     "resolution", "detection", "swrad" } },
+    { heard = { "aus" }, means = "off", after = { "vnav", "lnav", "trail", "trails", "asas", "cdr", "reso",
+                                                "resolution", "detection", "swrad" } },
     { heard = { "two", "too" }, means = "to",
       between = { { "climb", "descend", "maintain", "turn", "left", "right", "reduce", "increase" },
                   { "flight", "level", "fl", "heading", "speed", "altitude" } } },
@@ -2224,7 +2240,7 @@ return {
       steigen = "climb", ["steigen sie"] = "climb", steigt = "climb", sinken = "descend",
       ["sinken sie"] = "descend", sinkt = "descend", ["steigen auf"] = "climb to", ["steigen sie auf"] = "climb to",
       ["sinken auf"] = "descend to", ["sinken sie auf"] = "descend to", flugflache = "flight level",
-      flugflaeche = "flight level", rechts = "right", ["drehen sie"] = "turn", drehen = "turn",
+      flugflaeche = "flight level", ["drehen sie"] = "turn", drehen = "turn",
       steuerkurs = "heading", geschwindigkeit = "speed", knoten = "knots", fuss = "feet",
       reduzieren = "reduce", ["reduzieren sie"] = "reduce", bitte = "please", danke = "thanks",
       weiter = "continue", ["neues flugzeug"] = "create", loschen = "delete", loeschen = "delete",
@@ -2236,12 +2252,26 @@ return {
       genf = "geneva", wien = "vienna", munchen = "munich", muenchen = "munich", koln = "cologne",
       koeln = "cologne", nurnberg = "nuremberg", nuernberg = "nuremberg", mailand = "milan", prag = "prague",
       warschau = "warsaw", brussel = "brussels", bruessel = "brussels", venedig = "venice",
+      -- an engineer's typed shorthand ("clh2k kurs 210", "links kurs 090", "20 grad rechts" a relative turn,
+      -- "1000 ft höher", "sinkrate 1000", "mit 2000 fpm" its rate, "LAKOL löschen"; "sinkn", "stiegen" as typed)
+      kurs = "heading", grad = "degrees", hoher = "higher", hoeher = "higher", tiefer = "lower",
+      sinkrate = "rate of descent", steigrate = "rate of climb", mit = "with", sinkn = "descend",
+      stiegen = "climb", steig = "climb", und = "and", nein = "no", wegen = "due to", konflikt = "conflict",
+      kontakt = "contact", flieger = "aircraft", zeigen = "show", schneller = "faster", langsamer = "slower",
+      echtzeit = "real time", zuruck = "back", zurueck = "back", neuer = "new", neue = "new", neuen = "new",
+      ["am ende"] = "at the end", ["ans ende"] = "at the end", uberspringen = "skip",
+      ueberspringen = "skip", einfugen = "add", einfuegen = "add", raus = "remove", ["aus der route"] = "from the route",
+      beide = "both", ja = "yes", hohe = "altitude", hoehe = "altitude", auf = "to", noch = "add", uber = "over",
+      ueber = "over",
+      -- questions about an aircraft or a place ("was macht X": what X is doing, its state; "wo ist KPT?")
+      ["was macht"] = "status of", ["was ist"] = "what is", ["wo ist"] = "where is", wo = "where",
+      -- colours of a trail
+      rot = "red", gelb = "yellow", grun = "green", gruen = "green", blau = "blue", weiss = "white",
     },
-    -- words of `words` said the same in Dutch: no sign of German alone
-    shared = { vier = true, acht = true, rechts = true },
-    -- words also English or another language's, read only in a German sentence ("links", "auf", "null" for zero)
-    joining = { auf = "to", und = "and", null = "zero", uber = "over", ueber = "over", links = "left",
-      direkt = "direct", kurs = "heading" },
+    -- words of `words` said the same in Dutch or English: no sign of German alone
+    shared = { vier = true, acht = true, wo = true, rot = true, ja = true },
+    -- words also English or another language's, read only in a German sentence ("auf", "null" for zero)
+    joining = { null = "zero", direkt = "direct", der = "the", die = "the", das = "the" },
   },
   -- Dutch words in a Dutch or Belgian controller's or sim operator's English ("trails aan graag", "zet hem op tien
   -- keer real time", "gooi KLM886 maar weg", "maak een Transavia aan ...")

@@ -1380,6 +1380,25 @@ return function(intent, rule, words)
   end }
   rule { "remove delete del skip drop", "delwpt", near = { 8, "@route_nouns" },
          when = function(g, i) return g:has_ref(i + 1, i + 2, "waypoint") and no_direct(g, i) end }
+  -- "AUA915 LAKOL delete", "DLH9YE UPALA remove, then direct ERNAS", "DLH4AB MAH from the route remove" (German's
+  -- verb last: "LAKOL löschen", "UPALA raus", "MAH aus der route raus"): a waypoint of the aircraft's route said
+  -- straight before the verb, or before "from the route" and the verb, is the one left out of it
+  rule { "forget delete remove del", "delwpt", when = function(g, i)
+    local k = i - 1
+    while k > 1 and g:word(k, "from the its @route_nouns") do k = k - 1 end
+    local w
+    for _, r in ipairs(g:refs_in(math.max(1, k - 2), k + 1, "waypoint")) do
+      if r.e == k + 1 then w = r end
+    end
+    if not w then return false end
+    for _, r in ipairs(g:refs_in(1, #g.t + 1, "aircraft")) do
+      local st = r.exists and g:state(r.name)
+      for _, name in ipairs(st and st.route or {}) do
+        if name:upper() == w.name:upper() then return true end
+      end
+    end
+    return false
+  end }
   -- "erase BARSA of the route", "I want to quit LALPI of its route" ("quitar" / "tirar", a Spanish or Portuguese
   -- speaker's false friend): the same, the waypoint straight after the verb and a route noun after it
   rule { "erase quit", "delwpt", near = { 8, "@route_nouns" }, when = function(g, i)

@@ -15868,3 +15868,59 @@ do
     "ALT BBB22 FL260")
   check_eq(ex("Please make AAA11 to climb, sorry, I mean CCC33, to climb to FL300."), "ALT CCC33 FL300")
 end
+
+-- Cycle 56 (fde): German words in an engineer's typed shorthand, read as the English they stand for
+-- (lexicon.said_whole.german, lexicon.heard_as), and a typed flight number alone confirmed
+do
+  local _, ex = scene({ "CRE OAL31 A320 52.0 4.0 100 FL220 280", "CRE SXS8K B738 52.3 4.6 270 FL180 260",
+    "DEFWPT WPTAA 52.4 4.9", "DEFWPT WPTBB 52.6 5.3", "ADDWPT OAL31 WPTAA", "ADDWPT OAL31 WPTBB" })
+  -- "kurs" (heading); a side before "kurs" is the turn's way
+  check_eq(ex("sxs8k kurs 045"), "HDG SXS8K 45")
+  check_eq(ex("oal31 rechts kurs 170 bitte"), "HDG OAL31 170 RIGHT")
+  check_eq(ex("sxs8k links auf kurs 200"), "HDG SXS8K 200 LEFT")
+  check_eq(ex("oal31 kurs 140 rechts, fl240"), "HDG OAL31 140 RIGHT ; ALT OAL31 FL240")
+  -- a number and a side, with or without "grad": a turn by that many degrees
+  check_eq(ex("sxs8k 25 grad links"), "HDG SXS8K 245 LEFT")
+  check_eq(ex("oal31 35 rechts"), "HDG OAL31 135 RIGHT")
+  check_eq(ex("oal31 links 10 grad"), "HDG OAL31 90 LEFT")
+  -- a side before a bare number: a heading or a turn of that many degrees where the two differ, asked
+  asked(ex("oal31 rechts 230"), "'rechts 230': heading 230 or a turn of 230 degrees")
+  asked(ex("sxs8k links 120"), "'links 120': heading 120 or a turn of 120 degrees")
+  -- higher and lower by a step
+  check_eq(ex("oal31 2000 ft höher"), "ALT OAL31 24000")
+  check_eq(ex("sxs8k 1000 ft tiefer bitte"), "ALT SXS8K 17000")
+  -- the rate of a climb or descent
+  check_eq(ex("sxs8k sinkrate 1200"), "VS SXS8K -1200")
+  check_eq(ex("oal31 steigrate 900 auf fl260"), "VS OAL31 900 ; ALT OAL31 FL260")
+  check_eq(ex("sxs8k sinkn fl120"), "ALT SXS8K FL120")
+  check_eq(ex("oal31 stiegen fl300"), "ALT OAL31 FL300")
+  -- switches: "an"/"ein" on and "aus" off only straight after what is switched
+  check_eq(ex("oal31 vnav ein"), "VNAV OAL31 ON")
+  check_eq(ex("sxs8k lnav aus kurs 300"), "LNAV SXS8K OFF ; HDG SXS8K 300")
+  check_eq(ex("trails an"), "TRAIL ON")
+  -- "und" between instructions, "beide" for both, "ja" and a reason after "wegen"
+  check_eq(ex("oal31 dest EHAM und vnav an"), "DEST OAL31 EHAM ; VNAV OAL31 ON")
+  check_eq(ex("oal31 und sxs8k beide spd 270"), "SPD OAL31 270 ; SPD SXS8K 270")
+  check_eq(ex("ja, sxs8k fl200"), "ALT SXS8K FL200")
+  check_eq(ex("oal31 fl240 wegen konflikt"), "ALT OAL31 FL240")
+  -- questions about an aircraft show its position
+  check_eq(ex("was macht sxs8k"), "POS SXS8K")
+  check_eq(ex("oal31 was ist die höhe?"), "POS OAL31")
+  check_eq(ex("sxs8k wo?"), "POS SXS8K")
+  -- a waypoint of the route said before the verb of deletion is left out of the route
+  check_eq(ex("oal31 WPTBB löschen"), "DELWPT OAL31 WPTBB")
+  check_eq(ex("oal31 WPTAA aus der route raus"), "DELWPT OAL31 WPTAA")
+  check_eq(ex("sxs8k raus"), "DEL SXS8K")
+  -- a name on no route before the verb deletes no waypoint, nor the aircraft unasked
+  asked(ex("sxs8k WPTAA löschen"), "WPTAA is on no route of SXS8K's")
+  -- a point added at the end of the route
+  check_eq(ex("sxs8k noch WPTBB ans ende"), "ADDWPT SXS8K WPTBB")
+  -- the clock
+  check_eq(ex("zurück auf echtzeit"), "DTMULT 1")
+  check_eq(ex("sim 2x schneller"), "DTMULT 2")
+  -- a typed flight number alone, closed by letters: confirmed, never taken (its airline unsaid)
+  asked(ex("8k fl200"), "'8k' names no airline")
+  asked(ex("31 fl200, 8K kurs 090") , "'8K' names no airline")
+  -- "über" (over) a place
+  check_eq(ex("wind 270/30 über WPTAA"), "WIND WPTAA 270 30")
+end
