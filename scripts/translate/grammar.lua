@@ -1225,6 +1225,88 @@ local function value_homophones(text)
     if convert[i] then return H[bare[i]] .. (toks[i]:match("%p+$") or ""), i + 1 end
   end)
 end
+-- "direct Bombay VOR", "after the Madras VOR": a city's other name (lexicon.navaid_city_names) straight before a
+-- navaid's kind (lexicon.navaid_kind_words) is the name the navdata gives the navaid ("Mumbai VOR").
+G.navaid_kinds = set_of(lexicon.navaid_kind_words)
+function G.navaid_city_names(text)
+  local low = text:lower()
+  local any = false
+  for old in pairs(lexicon.navaid_city_names) do any = any or low:find(old, 1, true) ~= nil end
+  if not any then return text end
+  local toks, bare = plain_words(text)
+  return tokens.rewrite(text, toks, function(i)
+    local new = lexicon.navaid_city_names[bare[i]]
+    if not new or toks[i]:match("%p$") or not G.navaid_kinds[bare[i + 1] or ""] then return nil end
+    return (toks[i]:match("^%u") and (new:sub(1, 1):upper() .. new:sub(2)) or new), i + 1
+  end)
+end
+-- "old the simulation for a moment", "please old the sim": "old" a recogniser wrote for "hold" with its h dropped,
+-- in a sim-control position (opening the request or after "please", "ok", "okay", "now", "and" or a mark) before
+-- "simulation", "sim" or "scenario" ("the" between or not), is "hold"; "old" anywhere else stays as said.
+G.sim_objects = set_of({ "simulation", "sim", "scenario" })
+G.sim_old_leads = set_of({ "please", "ok", "okay", "now", "and" })
+function G.sim_old(text)
+  if not text:lower():find("old", 1, true) then return text end
+  local toks, bare = plain_words(text)
+  return tokens.rewrite(text, toks, function(i)
+    if bare[i] ~= "old" or toks[i]:match("%p$") then return nil end
+    if not (i == 1 or toks[i - 1]:match("%p$") or (G.sim_old_leads[bare[i - 1]] and (i == 2 or toks[i - 2]:match("%p$")))) then
+      return nil
+    end
+    local k = bare[i + 1] == "the" and i + 2 or i + 1
+    if not G.sim_objects[bare[k] or ""] then return nil end
+    return (toks[i]:match("^O") and "Hold" or "hold"), i + 1
+  end)
+end
+-- Words speech recognition writes for a digit (lexicon.digit_homophones) where the other reading leaves the
+-- value incomplete or impossible, read as that digit:
+--  * before "thousand" with no digit before it: "for" or "fore" ("descend to for thousand feet": 4000 ft;
+--    "descend for thousand five hundred": 4500 ft), and "to" or "too" after a "to" ("descend to to thousand":
+--    2000 ft). A lone "to" stays ("descend to thousand feet" has lost its digit: asked);
+--  * a speed of three words straight after "speed", "reduce" or "increase": "to", then "to", "too", "for" or
+--    "fore", then a digit word, before "knots" or the clause's end ("reduce speed to to zero knots": 220 kt;
+--    "to for zero": 240 kt), where one "to" is the preposition and the other word a digit. A single "to" before
+--    two digit words stays ("reduce speed to five zero": 50 kt asked, or 250; "to nine zero" is a light
+--    aircraft's 90 kt), as does "to" and a whole three-digit speed ("to two one zero").
+G.speed_homophone_anchors = set_of({ "speed", "reduce", "increase" })
+G.speed_homophone_ends = set_of({ "knots", "knot", "kts", "kt", "and", "then" })
+function G.thousand_speed_homophones(text)
+  local low = text:lower()
+  if not (low:find("thousand", 1, true) or low:find("to ", 1, true)) then return text end
+  local toks, bare = plain_words(text)
+  local H = lexicon.digit_homophones
+  local convert = {}
+  for k = 1, #bare do
+    local w = bare[k]
+    if w == "thousand" and k > 1 and H[bare[k - 1]] and not toks[k - 1]:match("%p$") then
+      local h, before = bare[k - 1], bare[k - 2]
+      local loose = not before or not (DIGIT_WORDS[before] or NUMBER_WORDS[before] or before:match("^%d"))
+      if (h == "for" or h == "fore") and loose then
+        convert[k - 1] = true
+      elseif (h == "to" or h == "too") and (before == "to" or before == "too") and not toks[k - 2]:match("%p$") then
+        convert[k - 1] = true
+      end
+    elseif G.speed_homophone_anchors[w] and bare[k + 1] == "to" and not toks[k]:match("%p$") then
+      local digits, heard, j = 0, {}, k + 1
+      while j <= k + 3 and bare[j] and (DIGIT_WORDS[bare[j]] or H[bare[j]]) do
+        if DIGIT_WORDS[bare[j]] then digits = digits + 1
+        elseif bare[j] == "to" or bare[j] == "too" or bare[j] == "for" or bare[j] == "fore" then heard[#heard + 1] = j
+        else break end
+        if toks[j]:match("%p$") and j < k + 3 then j = k + 9; break end
+        j = j + 1
+      end
+      local after = bare[j]
+      if j == k + 4 and digits >= 1 and #heard >= 2 and DIGIT_WORDS[bare[k + 3]] and not toks[k + 1]:match("%p$")
+          and (toks[k + 3]:match("%p$") or not after or G.speed_homophone_ends[after]) then
+        for _, h in ipairs(heard) do convert[h] = true end
+      end
+    end
+  end
+  if not next(convert) then return text end
+  return tokens.rewrite(text, toks, function(i)
+    if convert[i] then return H[bare[i]] .. (toks[i]:match("%p+$") or ""), i + 1 end
+  end)
+end
 -- The axis ("lat" or "lon", lexicon.coordinate_axes.hemispheres) a word of bare_words names as a hemisphere (its
 -- initial only in capitals: "N", "W"), else nil.
 G.hemisphere_initials = {}
@@ -1621,7 +1703,7 @@ local function written_forms(text, world)
       return before .. " direct " .. after
     end)
   end
-  text = value_homophones(split_digits(text))
+  text = G.navaid_city_names(G.sim_old(G.thousand_speed_homophones(value_homophones(split_digits(text)))))
   -- "dlh4ax up 2000", "down 1500 pls": a bare whole or half thousand typed after "up" or "down" is a change of
   -- level by that many feet, as "up 2000 ft" (after a rate's or a speed's name, "vs up 2000", or before a unit,
   -- it stays as typed; "up 20" stays too, and is asked)
@@ -11593,6 +11675,87 @@ function G.spelled_route_places(text, world)
     return letters .. (toks[k - 1]:match("%p+$") or ""), k
   end)
 end
+-- "create i fly one one to a three twenty one ...", "create Indigo four five for an A320 ...": in a request to create
+-- an aircraft, a word speech recognition writes for a digit ("to", "too", "for", "fore") straight after the digit
+-- words of the callsign and before "a" or "an" and the type may be the callsign's last digit (IGO112) or a word
+-- (IGO11): the question to ask, else nil. Digits typed ("KLM12 to an A320") are read as written.
+function G.create_digit_homophone(text)
+  local toks, bare = plain_words(text)
+  if not (bare[1] == "create" or bare[2] == "create" or bare[1] == "spawn") then return nil end
+  for k = 2, #bare - 2 do
+    local h = bare[k]
+    if (h == "to" or h == "too" or h == "for" or h == "fore") and DIGIT_WORDS[bare[k - 1]]
+        and not toks[k - 1]:match("%p$") and not toks[k]:match("%p$") and (bare[k + 1] == "a" or bare[k + 1] == "an") then
+      return string.format("I heard '%s' after the callsign's digits: is it a digit of the callsign ('%s'), or no "
+        .. "part of it? Please say the callsign again.", toks[k], lexicon.digit_homophones[h])
+    end
+  end
+  return nil
+end
+-- "cleared direct to ack mill", "after oh pa mo descend", "move it to ah nee ro" (AKMIL, OPAMO, ANIRO on the route of
+-- an aircraft flying): two or three short lower-case words a recogniser wrote for one fix name's syllables,
+-- straight after a place's slot (PLACE_SLOTS, "to", "passing"), are joined into one word when that word is a
+-- waypoint on one aircraft's route that no other waypoint of it sounds like (G.sure_route_name), that sounds as
+-- closely like no waypoint of another route and names no navaid or airport (G.heard_nowhere_else), with the same
+-- vowel sounds (G.vowel_skeleton: "toe bax" is no TOBIX). The joined word is then read as a name heard; words that
+-- join into nothing so sure stay as said (asked).
+-- The vowel sounds of a lower-case word in order, repeats run together: "ee", "ea", "ie" and "y" sound "i", "oo"
+-- and "ou" "u", "oe", "oa" and "ow" "o", a closing "e" after a consonant is silent ("ah nee ro" and ANIRO: "aio";
+-- "toe bax" "oa", TOBIX "oi").
+G.vowel_spellings = { { "ee", "i" }, { "ea", "i" }, { "ie", "i" }, { "oo", "u" }, { "ou", "u" }, { "oe", "o" },
+  { "oa", "o" }, { "ow", "o" }, { "y", "i" } }
+function G.vowel_skeleton(w)
+  w = w:gsub("([^aeiouy])e$", "%1")
+  for _, v in ipairs(G.vowel_spellings) do w = w:gsub(v[1], v[2]) end
+  return (w:gsub("[^aeiou]", ""):gsub("(%a)%1+", "%1"))
+end
+-- (words of a sentence's frame, never a syllable of a fix name: "add to the route of ...")
+G.syllable_stops = set_of({ "the", "to", "a", "an", "of", "and", "then", "at", "for", "from", "with", "via", "it",
+  "its", "route", "point", "waypoint", "fix", "over", "direct", "is", "in", "on", "by", "or", "vor", "ndb", "dme",
+  "please", "now", "him", "her", "them", "this", "that" })
+function G.syllable_route_places(text, world)
+  local routes = {}
+  for _, a in ipairs(world.aircraft or {}) do
+    if a.route and #a.route > 0 then routes[#routes + 1] = a.route end
+  end
+  if #routes == 0 then return text end
+  local toks, bare = plain_words(text)
+  local function part(k)
+    return toks[k] and toks[k]:match("^%l+%p?$") and #bare[k] <= 5 and #bare[k] >= 1
+      and not G.syllable_stops[bare[k]]
+  end
+  local function sure_name(w)
+    if #w < 4 or #w > 8 then return nil end
+    local found
+    for _, route in ipairs(routes) do
+      local name = G.sure_route_name(w, route)
+      if name then
+        if found and found ~= name then return nil end
+        found = name
+      end
+    end
+    return found and G.heard_nowhere_else(w, found, world) and found or nil
+  end
+  return tokens.rewrite(text, toks, function(i)
+    local slot = bare[i - 1]
+    if not (slot and (PLACE_SLOTS[slot] or G.spelled_slots[slot]) and part(i)) or toks[i - 1]:match("%p$")
+        or toks[i]:match("%p$") then
+      return nil
+    end
+    for n = 3, 2, -1 do
+      local k, ok = i + n - 1, true
+      for j = i, k do ok = ok and part(j) and (j == k or not toks[j]:match("%p$")) end
+      -- (the last syllable is no digit's word: "direct ack one" is a name and a number)
+      if ok and not (DIGIT_WORDS[bare[k]] or NUMBER_WORDS[bare[k]]) then
+        local w = table.concat(bare, "", i, k)
+        local name = sure_name(w)
+        if name and G.vowel_skeleton(w) == G.vowel_skeleton(name:lower()) then
+          return w .. (toks[k]:match("%p+$") or ""), k + 1
+        end
+      end
+    end
+  end)
+end
 -- The words after which a waypoint of the aircraft's own route is named, a constraint's, a condition's or a limit's
 -- place ("cross X at", "after X descend", "until X"), for G.heard_route_place and G.confirmed_route_places.
 G.heard_slots = set_of({ "cross", "crossing", "after", "before", "until", "till", "at", "over", "passing", "via" })
@@ -12433,9 +12596,11 @@ function M.translate(text, world)
   local run_together
   text, run_together = G.run_together_position(text)
   if run_together then return { commands = {}, ask = run_together } end
-  text = G.confirmed_route_places(G.spelled_route_places(typed_places(G.named_idents(
+  local create_digit = G.create_digit_homophone(text)
+  if create_digit then return { commands = {}, ask = create_digit } end
+  text = G.confirmed_route_places(G.spelled_route_places(G.syllable_route_places(typed_places(G.named_idents(
     G.spoken_user_waypoints(G.navaids_by_kind(written_forms(text, world), world), world), world),
-    world), world), world)
+    world), world), world), world)
   text = G.terse_altitude(spelled_airports(text, world), world)
   local run_on
   text, run_on = G.run_on_values(text)

@@ -218,6 +218,62 @@ function m:switch_told(s)
   return told == true
 end
 
+-- "VTI305 and AIC865, you are in conflict, VTI305 turn right heading 240": aircraft said together, words of a clause
+-- of their own, then one of them said again straight before the instruction's word, in [b, trig): the instruction is
+-- that one's alone (the pair was addressed for the traffic; the words from b to it are explained), returned as a
+-- reference. Said again by its airline's word alone ("..., Vistara turn right"), which one is asked. Else nil.
+function m:readdressed(b, trig)
+  local refs = {}
+  for _, r in ipairs(self:refs_in(b, trig, "aircraft")) do
+    if r.exists and not r.false_start then refs[#refs + 1] = r end
+  end
+  if #refs < 2 then return nil end
+  local k = trig - 1
+  while k > b and (self.t[k].kind == "punct" or self.t[k].filler) do k = k - 1 end
+  local last = refs[#refs]
+  local pair = last.e == k + 1 and #refs - 1 or #refs
+  if pair < 2 then return nil end
+  local from = refs[pair].e
+  local upto = last.e == k + 1 and last.b or k
+  local clause = false
+  for x = from, upto - 1 do
+    local t = self.t[x]
+    if t.kind == "word" and not t.filler and not self:word(x, "and") then clause = true end
+  end
+  if last.e == k + 1 then
+    if not clause then return nil end
+    for i = 1, pair do
+      if refs[i].name == last.name then
+        self:explain(b, last.b)
+        return last
+      end
+    end
+    return nil
+  end
+  local of, heard = {}, nil
+  for x = math.max(from, k - 2), k do
+    local icao, e, codes = self:airline_at(x)
+    if icao and e == k + 1 and not heard then
+      local said = {}
+      for y = x, k do said[#said + 1] = self.t[y].raw end
+      heard = table.concat(said, " ")
+      of[icao] = true
+      for _, c in ipairs(type(codes) == "table" and codes or {}) do of[c] = true end
+    end
+  end
+  local named = {}
+  for i = 1, pair do
+    if of[refs[i].name:upper():match("^(%u+)%d") or ""] then named[#named + 1] = refs[i].name:upper() end
+  end
+  if #named >= 1 then
+    local all = {}
+    for i = 1, pair do all[#all + 1] = refs[i].name:upper() end
+    self:need(string.format("Which aircraft should get the instruction: %s? I heard '%s' after %s were named "
+      .. "together. Please give its callsign.", table.concat(named, " or "), heard, table.concat(all, " and ")))
+  end
+  return nil
+end
+
 -- Aircraft a segment talks about: those after its trigger, else before it,
 -- else the utterance's subject (all the aircraft named together for the
 -- instruction before), else one named later, else the only aircraft.
@@ -350,7 +406,12 @@ function m:acids(s)
     end
     -- (said with "is" or "are" the clause describes them: explained)
     if from > s.b and self:word_in(s.b, from, "is are was were") then self:explain(s.b, from) end
-    take(from, s.trig)
+    local again = self:readdressed(from, s.trig)
+    if again then
+      ids[1], seen[again.name] = again.name, true
+    else
+      take(from, s.trig)
+    end
   end
   -- ("KLM12 is near EZY45, turn him left heading 130": one aircraft said by "him" or "her" beside the instruction
   -- word, or "it" straight after it, with more than one named for it: which one is not known, asked)

@@ -2506,6 +2506,11 @@ return {
   -- abbreviations a recogniser may spell letter by letter ("f l one two zero"), beside the words of
   -- not_names and not_simulated; the navaid kinds a limit or a place names ("till four d m e", "the o b k v o r")
   spelled = { "fl", "mvp", "dme", "vor", "ndb" },
+  -- a city's other name -> the name the navdata gives its navaids, read before a navaid's kind ("direct Bombay VOR":
+  -- MUMBAI VOR-DME, BBB; "the Bengaluru VOR": BANGALORE VOR-DME, BBG); airports keep their own names (airport_names)
+  navaid_city_names = { bombay = "mumbai", madras = "chennai", calcutta = "kolkata", bengaluru = "bangalore" },
+  -- the words of a navaid's kind that such a name is read before
+  navaid_kind_words = { "vor", "ndb", "dme", "vordme", "vortac", "beacon" },
   -- spellings of a word's first sound (a Lua pattern at the word's start, the letter it sounds as), tried in order:
   -- a fix heard by a recogniser keeps its first sound, not always its first letter ("cubs" for KUBBS, "fil" for PHIL)
   first_sounds = { { "^ph", "f" }, { "^c[eiy]", "s" }, { "^c", "k" }, { "^q", "k" }, { "^kn", "n" }, { "^wr", "r" } },

@@ -507,6 +507,12 @@ local names = {
     { "air tanzania", "ATC" },
     { "airlink", "LNK" },
     { "link", "LNK" },  -- (Airlink's ICAO telephony)
+    -- South Africa's low-cost airlines by the name controllers there say: Mango (MNO; ICAO telephony Tulca) and
+    -- kulula.com, flown by Comair (CAW, telephony Comair)
+    { "mango", "MNO" },
+    { "tulca", "MNO" },
+    { "kulula", "CAW" },
+    { "comair", "CAW" },
     { "aerolineas", "ARG" },
     -- airlines of South America: ICAO telephony ("Bondi 5120": Flybondi; "Rocksmart 252": JetSMART), and the
     -- airline's own name where controllers and instructors there say it ("LATAM 3402", "JetSMART 252")

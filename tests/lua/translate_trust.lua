@@ -15923,4 +15923,69 @@ do
   asked(ex("31 fl200, 8K kurs 090") , "'8K' names no airline")
   -- "über" (over) a place
   check_eq(ex("wind 270/30 über WPTAA"), "WIND WPTAA 270 30")
+-- Cycle 56 (f170): a speech recogniser's output of Indian controllers; airline names used as telephony in South
+-- Africa (Mango, kulula.com)
+do
+  local _, ex = scene({ "CRE MNO404 A320 -26.0 28.0 090 FL250 280", "CRE CAW882 B738 -26.2 28.2 270 FL200 280",
+    "CRE LNK19 E145 -26.1 28.4 180 FL150 250" })
+  check_eq(ex("Please delete Mango four zero four"), "DEL MNO404")
+  check_eq(ex("Kulula eight eight two, descend flight level one one zero"), "ALT CAW882 FL110")
+  check_eq(ex("Comair eight eight two turn left heading two one zero"), "HDG CAW882 210 LEFT")
+  check_eq(ex("Create a Mango Airbus three twenty, Mango five five, at -26.4 28.6, heading 120, FL90, 250 knots"),
+    "CRE MNO55 A320 -26.4 28.6 120 FL90 250")
+  check_eq(ex("create kulula seven one, a B738, at -26.5 28.5 heading 300 FL120 260 knots"),
+    "CRE CAW71 B738 -26.5 28.5 300 FL120 260")
+  -- the airline alone stays asked
+  asked(ex("Mango, climb flight level three zero zero"), "an airline said alone")
+end
+do
+  local _, ex = scene({ "CRE VTI77 A20N 19.2 72.3 100 9000 250", "CRE AKJ31 B38M 18.6 72.5 340 FL110 260",
+    "CRE IGO5 A320 19.0 72.9 200 FL120 250" })
+  -- "for"/"fore" before "thousand" with no digit before it, "to" after another "to": that digit
+  check_eq(ex("vistara seven seven descend to for thousand feet"), "ALT VTI77 4000")
+  check_eq(ex("vistara seven seven, descend for thousand five hundred feet"), "ALT VTI77 4500")
+  check_eq(ex("indigo five descend to to thousand five hundred"), "ALT IGO5 2500")
+  check_eq(ex("indigo five descend and maintain to too thousand feet"), "ALT IGO5 2000")
+  -- a lone "to" before "thousand" has lost its digit: asked
+  asked(ex("vistara seven seven descend to thousand feet"), "'to thousand': a digit lost")
+  -- a speed started by "to" with one or two digit words: "to" is the first digit
+  check_eq(ex("akasa three one, increase speed to to zero knots"), "SPD AKJ31 220")
+  check_eq(ex("indigo five reduce to for zero knots"), "SPD IGO5 240")
+  check_eq(ex("indigo five reduce speed to one niner zero knots"), "SPD IGO5 190")
+  asked(ex("akasa three one reduce speed to zero knots"), "'to zero': no speed")
+  -- a single "to" before two digit words: 50 kt, or 250 with "to" a digit: asked
+  asked(ex("akasa three one reduce speed to eight zero knots"), "'to eight zero': 80 or 280")
+  -- in a creation, "to"/"for" after the callsign's digits and before "a"/"an" and the type: asked
+  asked(ex("create indigo four four to a three twenty at 19.4 72.8 heading 090 5000 feet 200 knots"),
+    "'to' after a new callsign's digits")
+  asked(ex("create vistara six for an a three twenty at 19.4 72.8 heading 090 5000 feet 200 knots"),
+    "'for' after a new callsign's digits")
+  check_eq(ex("create indigo four four, a three twenty, at 19.4 72.8 heading 090 5000 feet 200 knots"),
+    "CRE IGO44 A320 19.4 72.8 90 5000 200")
+  -- "old" for "hold" opening a sim-control request
+  check_eq(ex("old the simulation please"), "HOLD")
+  check_eq(ex("ok, old the sim"), "HOLD")
+  asked(ex("the old simulation was better"), "'old' as an adjective")
+  -- two aircraft addressed for traffic, then one said again: only that one is instructed
+  check_eq(ex("vistara seven seven and akasa three one, traffic is each other, akasa three one turn left heading "
+    .. "one two zero"), "HDG AKJ31 120 LEFT")
+  asked(ex("vistara seven seven and akasa three one you are in conflict, akasa turn left heading one two zero"),
+    "the airline alone after two aircraft named together")
+  check_eq(ex("vistara seven seven and akasa three one turn left heading one two zero"),
+    "HDG VTI77 120 LEFT ; HDG AKJ31 120 LEFT")
+end
+do
+  local nav, ex = navscene({ "CRE SEJ101 B738 11.5 80.3 335 FL130 280", "ADDWPT SEJ101 AKMIL", "ADDWPT SEJ101 MMV",
+    "CRE AIC22 B38M 14.8 76.6 115 FL170 290", "ADDWPT AIC22 OPAMO", "ADDWPT AIC22 BBG",
+    "CRE IGO7 A20N 19.3 73.25 240 7000 230", "ADDWPT IGO7 BBB" }, "fix names split into syllables, navaids by a city's other name")
+  if nav then
+    -- a fix's syllables said apart, that join into the one waypoint of a route they can be
+    check_eq(ex("spicejet one zero one cleared direct ack mill"), "DIRECT SEJ101 AKMIL")
+    check_eq(ex("air india two two proceed direct to oh pa mo"), "DIRECT AIC22 OPAMO")
+    -- syllables that join into no route's waypoint stay as said: asked
+    asked(ex("spicejet one zero one cleared direct bob kat"), "syllables of no waypoint")
+    -- a city's other name before a navaid's kind
+    check_eq(ex("indigo seven proceed direct bombay v o r"), "DIRECT IGO7 BBB")
+    check_eq(ex("air india two two proceed direct Bengaluru VOR"), "DIRECT AIC22 BBG")
+  end
 end
