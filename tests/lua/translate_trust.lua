@@ -15923,6 +15923,7 @@ do
   asked(ex("31 fl200, 8K kurs 090") , "'8K' names no airline")
   -- "über" (over) a place
   check_eq(ex("wind 270/30 über WPTAA"), "WIND WPTAA 270 30")
+end
 -- Cycle 56 (f170): a speech recogniser's output of Indian controllers; airline names used as telephony in South
 -- Africa (Mango, kulula.com)
 do
