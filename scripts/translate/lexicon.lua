@@ -2236,11 +2236,20 @@ return {
       genf = "geneva", wien = "vienna", munchen = "munich", muenchen = "munich", koln = "cologne",
       koeln = "cologne", nurnberg = "nuremberg", nuernberg = "nuremberg", mailand = "milan", prag = "prague",
       warschau = "warsaw", brussel = "brussels", bruessel = "brussels", venedig = "venice",
+      -- the words of a condition or a sequence between instructions ("sinken FL100 dann dct MUN", "bei KIRDI dann
+      -- sinken FL150", "spd 250 bei FL100", "spd 220 bis MORED", "wenn fl250 durch dann spd 300": "durch" is the
+      -- level passed, said after it)
+      dann = "then", danach = "then", ["und dann"] = "then", ["und danach"] = "then", bei = "at", wenn = "when",
+      sobald = "once", bis = "until", durch = "passed", erreicht = "reached", meilen = "miles",
+      -- (a handover said after the instruction, "dann kontakt rhein 132.4": what squawk does not simulate)
+      kontakt = "contact",
     },
     -- words of `words` said the same in Dutch: no sign of German alone
     shared = { vier = true, acht = true, rechts = true },
     -- words also English or another language's, read only in a German sentence ("links", "auf", "null" for zero)
     joining = { auf = "to", und = "and", null = "zero", uber = "over", ueber = "over", links = "left",
+      -- ("ab FL100 dann spd 250": from that level on, the level passed)
+      ab = "passing",
       direkt = "direct", kurs = "heading" },
   },
   -- Dutch words in a Dutch or Belgian controller's or sim operator's English ("trails aan graag", "zet hem op tien
