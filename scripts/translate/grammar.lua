@@ -3228,7 +3228,7 @@ for w in ([[it it's its he he's she she's they they're you you're you've is are 
   pass passes passed passing past reach reaches reached reaching hit hits hitting get gets got getting to at level
   through cross crosses crossed crossing down up below above under over drop drops dropped climbs climbed
   descends descended slows slowed slow accelerates accelerated decelerates decelerated out of leaves left
-  leaving become becomes became]]):gmatch("%S+") do ARRIVING[w] = true end
+  leaving become becomes became established]]):gmatch("%S+") do ARRIVING[w] = true end
 
 local LINKING = {}
 for w in ([[it it's its he he's she she's they they're you you're you've is are 's 're has have 've had been be
@@ -3303,10 +3303,11 @@ end
 -- to 230"). Returns the position of the condition's first word, the value's quantity and the condition
 -- command ("ATALT" or "ATSPD"), or nil; "by the time" with no level so read is asked about (self.ask).
 function G:trailing_level_condition()
-  if not self:said("by once when after soon") then return nil end
+  if not self:said("by once when after soon at") then return nil end
   for k = 2, #self.t do
     local by_time = self:word(k, "by") and self:word(k + 1, "the") and self:word(k + 2, "time")
-    local by_level = self:word(k, "by") and not by_time
+    -- ("speed 250 at FL100", "mach .78 at FL280": "at" and the level straight after a speed instruction, as "by")
+    local by_level = self:word(k, "by at") and not by_time
     local opened = self:word(k, "once when after") and k + 1 or self:word(k, "as") and self:condition_word(k)
     if opened or by_time or by_level then
       local v = by_time and k + 3 or opened or k + 1
@@ -3341,9 +3342,24 @@ function G:trailing_level_condition()
       if by_level then v = k end
       if reached or by_level then
         local q = self:quantities(v + 1, #self.t + 1)[1]
-        if q and q.b == self:skip_fillers(v + 1) and (q.kind == "alt" or (q.kind == "plain" and q.value >= 1000 and not by_level)) then
-          if by_level and not self:speed_before_level(k) then return nil end
+        -- (after "at", a bare number of feet too: "heading 250 at 8000")
+        local at_feet = by_level and self:word(k, "at") and q and q.kind == "plain" and q.value >= 1000
+          and q.value <= 60000 and q.value % 100 == 0
+        if not (q and q.b == self:skip_fillers(v + 1) and (q.kind == "alt" or at_feet
+            or (q.kind == "plain" and q.value >= 1000 and not by_level))) then
+          q = nil
+        elseif by_level and self:word(k, "at") then
+          q = self:speed_at_level(k, q)
+        elseif by_level and not self:speed_before_level(k) then
+          return nil
+        end
+        if q then
           local ce = by_level and #self.t + 1 or self:condition_closed(k, q.e)
+          -- (after "at", the clause's end: "speed 250 at FL100, heading 200", the heading runs now)
+          if by_level and self:word(k, "at") then
+            ce = q.e
+            while ce <= #self.t and self.t[ce].kind ~= "punct" and not self:word(ce, "and @then_words") do ce = ce + 1 end
+          end
           for x = q.e, ce - 1 do
             if self:intent_at(x) and not self:word(x, "@up @down") or self:has_ref(x, x + 1, "aircraft") then return nil end
           end
@@ -3482,6 +3498,50 @@ function G:level_never_crossed()
       end
     end
   end
+end
+
+-- Level q said after "at" at k, when it is the condition of the speed instruction of its own clause ("speed 250
+-- at FL100", "descend FL80, mach .78 at FL280": what the speed waits for, ATALT), else nil. Not when the clause
+-- holds a level or vertical rate instruction ("descend FL100 at 250 knots") nor when its aircraft flies that
+-- level now ("speed 250 at FL140", at FL140: it would never cross it, no condition).
+function G:speed_at_level(k, q)
+  local spd, hdg, x = false, false, k - 1
+  while x >= 1 and not (self.t[x].kind == "punct" or self:word(x, "and @then_words")) do
+    local intent = self:intent_at(x)
+    if intent == "alt" or intent == "vs" then return nil end
+    spd = spd or intent == "spd" or self:word(x, "mach")
+    hdg = hdg or intent == "hdg"
+    x = x - 1
+  end
+  -- (a heading the same: "descend 6000, then heading 250 at 8000", when a clause before cleared a level, so that
+  -- the level after "at" is none to fly)
+  local cleared = false
+  if hdg and not spd then
+    for y = x, 1, -1 do
+      if self:intent_at(y) == "alt" then cleared = true break end
+    end
+  end
+  for _, r in ipairs(self:refs_in(1, #self.t + 1, "aircraft")) do
+    local a = self:state(r.name)
+    if a and a.alt_ft and math.abs(a.alt_ft - q.value) <= 50 then return nil end
+  end
+  -- (a heading alone in the request with a level after "at", "turn left heading 200 at FL100": a level to fly
+  -- or one to wait for, asked)
+  if hdg and not spd and not cleared then
+    local only = true
+    for y = 1, #self.t do
+      local intent = self:intent_at(y)
+      only = only and (not intent or intent == "hdg")
+    end
+    if only then
+      local level = q.kind == "alt" and handlers.format.alt(q.value, q.fl) or handlers.format.int(q.value) .. " ft"
+      self.ask = string.format("Should the heading wait until the aircraft passes %s (ATALT), or should it also "
+        .. "climb or descend to %s?", level, level)
+    end
+    return nil
+  end
+  if not (spd or cleared) then return nil end
+  return q
 end
 
 -- True when the words before position k give a speed instruction and no level one ("speed 250 by FL200",
@@ -4390,7 +4450,10 @@ function G:segments(b, e)
         -- minutes" is)
         local wait = self:find_word(last.trig + 1, start, "in")
         local tq = wait < start and self:quantities(wait + 1, start)[1]
-        if tq and tq.kind == "time" and tq.b == wait + 1 and self:skip_fillers(tq.e) == start and self:linked(wait)
+        -- ("in about 2 minutes", "in like three minutes": a hedge between)
+        local tb = wait + 1
+        while tq and tb < tq.b and (self.t[tb].filler or self:word(tb, "@wait_hedges like")) do tb = tb + 1 end
+        if tq and tq.kind == "time" and tq.b == tb and self:skip_fillers(tq.e) == start and self:linked(wait)
             and #self:quantities(last.trig, wait) > 0 then
           start = wait
         end
@@ -5419,11 +5482,28 @@ function G:parse(b, e)
       -- else was understood. One whose value is named by what it is ("reduce to minimum clean speed, say
       -- speed") is asked all the same (the words kept out of the lexicon's lists, so that one nothing read
       -- elsewhere is still asked about by name).
+      local set_aside = false
       if self.ask and spec and spec.value and self:values_after_trigger(s) == 0 and not self:change_word(s.trig)
           and not self:word_in(s.trig + 1, s.e, "minimum maximum min max best optimum optimal clean econ economy") then
         self.pending = self.pending or self.ask
         valueless[#valueless + 1] = { k = k, ask = self.ask }
         self.ask = nil
+        set_aside = true
+      end
+      -- ("descend to 10000, turn left heading 070, and slow to 240 once it's level": the level this request
+      -- cleared the same aircraft to, an instruction of another kind between)
+      if unheld and not self.ask and #self.out == n_before + 1 then
+        local id = self.out[#self.out]:match("^%u+ (%S+)")
+        for c = n_before, 1, -1 do
+          local level = id and self.out[c]:match("^ALT " .. id:gsub("%p", "%%%0") .. " (%S+)$")
+          if level then
+            before, unheld = "ATALT " .. id .. " " .. level, false
+            break
+          end
+        end
+      end
+      if set_aside then
+        -- (set aside above, a valueless instruction)
       elseif unheld and not self.ask then
         self:need("I have " .. table.concat(self.out, " ; ") .. ". No level was cleared before '"
           .. self:raw(reached_cut, s0.e) .. "': which level should the last instruction wait for?")
@@ -5857,8 +5937,19 @@ end
 -- place is of that kind (a speed, with or without its unit: p by its unit or its noun or verb of speed; a level
 -- by its unit, FL or feet); nil otherwise.
 function G:value_again_kind(p, q)
-  local after = self.t[q.e]
+  -- ("until KORRY, and then 220 after that", "then 220 afterwards": the words that say "then" again close it)
+  local a = q.e
+  if self:word(a, "after") and self:word(a + 1, "that") then
+    a = a + 2
+  elseif self:word(a, "afterwards afterward thereafter") then
+    a = a + 1
+  end
+  local after = self.t[a]
   if after and after.kind ~= "punct" then return nil end
+  if a > q.e then
+    self:mark_used(q.e, a)
+    self:explain(q.e, a)
+  end
   local function speed(x) return x.kind == "speed" or x.kind == "mach" end
   local p_speed = speed(p) or (p.kind == "plain" and self:word(p.b - 1, "speed airspeed @speed_verbs"))
   if p_speed and (speed(q) or (q.kind == "plain" and q.value >= 100 and q.value <= 400)) then return "spd" end
@@ -5964,6 +6055,12 @@ function G:when_reached(s)
   -- instruction before; "once you have it", "when you've got it": its value, held)
   local subject = self:word(verb, "you it he she they")
   if subject then verb = self:skip_fillers(verb + 1) end
+  -- ("once you've got that speed", "when it has got it": the subject and "have" said before "got")
+  if self:word(verb, "you've they've it's he's she's") and self:word(self:skip_fillers(verb + 1), "got") then
+    subject, verb = true, self:skip_fillers(verb + 1)
+  elseif subject and self:word(verb, "has have 've") and self:word(self:skip_fillers(verb + 1), "got") then
+    verb = self:skip_fillers(verb + 1)
+  end
   -- ("once slowed", "when you've slowed down", "once it has slowed to that": the speed of the instruction before,
   -- reached; true and "speed")
   local slowed = verb
@@ -6028,7 +6125,7 @@ function G:trailing_reached(s)
   for i = c + 1, s.e - 1 do
     if self:word(i, "there level lvl reach reaches reaching levels levelled leveled") then named = true
     elseif not (self.t[i].kind == "punct" or self.t[i].filler
-        or self:word(i, "it it's its is gets get you you're are that please arrives arrive has have")) then
+        or self:word(i, "it it's its is gets get you you're are that please arrives arrive has have up down")) then
       return nil
     end
   end
@@ -6329,12 +6426,24 @@ function G:at_waypoint(s, spec)
   -- (the clause's opening words: "at", "over", "overhead", "after", "after/when/on/upon/once passing",
   -- "leaving", "overflying", "reaching", "past" or "over", "passing", "reaching", "leave", "leaving")
   local opens
+  self.place_passed_e = nil
   local passed = "passing leaving overflying reaching past over"
   if self:word(first, "at over overhead after passing reaching leave leaving") then
     opens = self:skip_fillers(first + 1)
     if self:word(first, "after") and self:word(opens, passed) then opens = self:skip_fillers(opens + 1) end
   elseif self:word(first, "when on upon once") and self:word(self:skip_fillers(first + 1), passed) then
     opens = self:skip_fillers(self:skip_fillers(first + 1) + 1)
+  elseif self:word(first, "when once") then
+    -- ("when ROTAX reached then climb FL150", "once KIRDI is passed, descend FL100": the waypoint, then the verb of
+    -- passing it; `passed_e`, the token after that verb)
+    local r = self:refs_in(first + 1, s.trig, "waypoint")[1]
+    local v = r and r.b == self:skip_fillers(first + 1) and self:skip_fillers(r.e)
+    if v and self:word(v, "is has") then v = self:skip_fillers(v + 1) end
+    if v and self:word(v, "been") then v = self:skip_fillers(v + 1) end
+    if v and v < s.trig and self:word(v, "reached passed") then
+      opens = r.b
+      self.place_passed_e = v + 1
+    end
   elseif self:word(first, "in") then
     -- ("Volaris 3410 in COSCO reduce to 220 knots": "in" for Spanish "en", before a waypoint of the route of the
     -- one aircraft addressed, as "at"; any other place after "in" opens nothing)
@@ -6483,8 +6592,14 @@ function G:at_waypoint(s, spec)
     -- value, as "after" does)
     local passed_first = self:word(first, "after") or (self:word(first, "when on upon once")
       and self:word(self:skip_fillers(first + 1), "passing past overflying leaving"))
+    -- ("at UPALA then FL120", "at ELDAR, then speed 250": "then" after the opening waypoint says what follows
+    -- is done there, no constraint)
+    local re = opened and self.place_passed_e or r.e
+    local then_at = opened and self:word(self:skip_fillers(re), "@then_words")
+      or (opened and self.t[re] and self.t[re].text == "," and self:word(self:skip_fillers(re + 1), "@then_words"))
+    if opened and self.place_passed_e then passed_first = true end
     local verb = s.intent ~= "infer" and (not self:word(s.trig, "@instruction_nouns")
-        or (opened and (self:word(first, "leave leaving") or passed_first)))
+        or (opened and (self:word(first, "leave leaving") or passed_first or then_at)))
       and not (self:word(first, "passing leaving") and self.t[s.trig].text:match("ing$")
         and not self:word(s.trig, "@instruction_nouns"))
       and not self:word_in(s.b, s.e, "cross crossing crosses now immediately @correction")
@@ -6500,12 +6615,16 @@ function G:at_waypoint(s, spec)
           or (passed_first and (q.kind == "speed" or q.kind == "mach")))
       end
     end
+    if then_at and cond_b and s.intent == "infer" and not self:has_ref(s.b, r.b, "waypoint")
+        and #self:quantities(r.e, s.e) > 0 and #self:quantities(s.b, r.b) == 0 then
+      never_constraint = true
+    end
     local handler = spec and spec.handler or (never_constraint and s.intent == "infer" and "infer")
     if cond_b and (verb or never_constraint) and (s.trig > r.e - 1 or s.intent == "infer")
         and not (crossed or constrained or be_at or shown or level_by or clause_at)
         and handler and #self:acids(s) == 1 then
       local n0 = #self.out
-      self:explain(cond_b, r.e)
+      self:explain(cond_b, opened and self.place_passed_e or r.e)
       self[handler](self, s, spec)
       if not self.ask and self:do_at(self:acids(s)[1], r.name, n0) then
         self.waypoint_do = { id = self:acids(s)[1], wp = r.name, n = #self.out }

@@ -3627,6 +3627,16 @@ function m:at_time(s)
   for _, q in ipairs(self:durations(s.b, s.e)) do
     local w = q.b - 1
     while w > 0 and self.t[w].filler do w = w - 1 end
+    -- ("in about two minutes", "in like three minutes": a number of minutes said loosely after "in" or "after" is
+    -- the time said, as "about 250 knots" is that speed)
+    local hedge = w
+    while hedge > 1 and (self.t[hedge].filler or self:word(hedge, "@wait_hedges like")) do
+      hedge = hedge - 1
+    end
+    if hedge < w and not q.loose and self:word(hedge, "in after") then
+      self:mark_used(hedge + 1, w + 1)
+      w = hedge
+    end
     -- (a time of the record in an aside set apart, ", as the controller did at 10:42:15", G:in_reason: accounted)
     if not q.spoken and self:in_reason(q.b) and self:word_in(math.max(1, q.b - 6), q.b, "@record_past") then
       self:mark_used(q.b, q.e)

@@ -2267,11 +2267,18 @@ return {
       ["was macht"] = "status of", ["was ist"] = "what is", ["wo ist"] = "where is", wo = "where",
       -- colours of a trail
       rot = "red", gelb = "yellow", grun = "green", gruen = "green", blau = "blue", weiss = "white",
+      -- the words of a condition or a sequence between instructions ("sinken FL100 dann dct MUN", "bei KIRDI dann
+      -- sinken FL150", "spd 250 bei FL100", "spd 220 bis MORED", "wenn fl250 durch dann spd 300": "durch" is the
+      -- level passed, said after it)
+      dann = "then", danach = "then", ["und dann"] = "then", ["und danach"] = "then", bei = "at", wenn = "when",
+      sobald = "once", bis = "until", durch = "passed", erreicht = "reached", meilen = "miles",
     },
     -- words of `words` said the same in Dutch or English: no sign of German alone
     shared = { vier = true, acht = true, wo = true, rot = true, ja = true },
     -- words also English or another language's, read only in a German sentence ("auf", "null" for zero)
-    joining = { null = "zero", direkt = "direct", der = "the", die = "the", das = "the" },
+    joining = { null = "zero", direkt = "direct", der = "the", die = "the", das = "the",
+      -- ("ab FL100 dann spd 250": from that level on, the level passed)
+      ab = "passing" },
   },
   -- Dutch words in a Dutch or Belgian controller's or sim operator's English ("trails aan graag", "zet hem op tien
   -- keer real time", "gooi KLM886 maar weg", "maak een Transavia aan ...")

@@ -10925,8 +10925,9 @@ do
   check_eq(ex("45 seconds from now SWR22 reduce 240 knots"), "DELAY 45 SPD SWR22 240")
   check_eq(ex("give it one more minute, then SWR22 reduce 240 knots"), "DELAY 60 SPD SWR22 240")
   check_eq(ex("give him another minute and DLH7 descend FL110"), "DELAY 60 ALT DLH7 FL110")
-  -- (an amount said loosely is asked)
-  check_eq(ex("in about a minute DLH7 descend FL110"), "ASK I have ALT DLH7 FL110. What does 'in about a minute' mean?")
+  -- (a time said with a hedge, "about", is the time said, as "about 250 knots" is that speed; an amount with no
+  -- number, "a few minutes", is asked)
+  check_eq(ex("in about a minute DLH7 descend FL110"), "DELAY 60 ALT DLH7 FL110")
   -- (the same figure as the heading: the time is still the wait's, and asked when nothing reads it)
   check_eq(ex("wait 90 seconds then DLH7 left heading 090"), "DELAY 90 HDG DLH7 90 LEFT")
   check_eq(ex("let 90 seconds pass and then DLH7 left heading 090"),
@@ -15988,5 +15989,65 @@ do
     -- a city's other name before a navaid's kind
     check_eq(ex("indigo seven proceed direct bombay v o r"), "DIRECT IGO7 BBB")
     check_eq(ex("air india two two proceed direct Bengaluru VOR"), "DIRECT AIC22 BBG")
+  end
+end
+-- Cycle 56 (fcd): conditions and sequencing between instructions. A level said after "at" straight after a speed
+-- (or after a heading, once a level was cleared before) is what it waits for, never a level to fly; "once it's
+-- level" after an instruction of another kind; "once you've got that speed"; "when established at"; a wait said
+-- loosely ("in about two minutes"); "then 220 after that" after a limit "until" a place; "at FIX then FL120";
+-- German condition words (dann, bei, ab, wenn, bis, durch, erreicht)
+do
+  local _, ex = scene({ "CRE TVF31 A320 52.9 3.6 090 FL240 280", "CRE BEE44 DH8D 52.9 5.0 270 FL150 240" })
+  check_eq(ex("TVF31 reduce speed to 260 knots at flight level 200"), "ATALT TVF31 FL200 SPD TVF31 260")
+  check_eq(ex("BEE44 speed two one zero at eight thousand feet please"), "ATALT BEE44 8000 SPD BEE44 210")
+  check_eq(ex("TVF31 mach .74 at FL180"), "ATALT TVF31 FL180 SPD TVF31 M0.74")
+  check_eq(ex("TVF31 descend FL160, speed 250 at FL200"), "ALT TVF31 FL160 ; ATALT TVF31 FL200 SPD TVF31 250")
+  check_eq(ex("TVF31 speed 250 at FL200, turn left heading 010"),
+    "ATALT TVF31 FL200 SPD TVF31 250 ; HDG TVF31 10 LEFT")
+  check_eq(ex("BEE44 descend 9000 then heading 300 at 11000"), "ALT BEE44 9000 ; ATALT BEE44 11000 HDG BEE44 300")
+  -- a heading alone with a level after "at": to fly or to wait for, asked (it had climbed the aircraft)
+  asked(ex("BEE44 turn right heading 300 at FL170"), "a heading at a level, no level cleared")
+  asked(ex("TVF31 heading 050 at 20000 feet"), "a heading at a level in feet")
+  -- a level instruction's "at" is its speed, not a condition; the level it flies now, none; a level it will not
+  -- cross with the level cleared, asked
+  check_eq(ex("TVF31 descend FL200 at 250 knots"), "ALT TVF31 FL200 ; SPD TVF31 250")
+  check(not ex("TVF31 speed 250 at FL240"):find("ATALT", 1, true), "the level it flies now is no condition")
+  asked(ex("TVF31 climb FL300, speed 250 at FL200"), "FL200 is not on the way from FL240 to FL300")
+  -- "once it's level" after a heading between: the level cleared before
+  check_eq(ex("BEE44 descend to 9000 feet, turn right heading 300, and reduce to 200 once it's level"),
+    "ALT BEE44 9000 ; HDG BEE44 300 RIGHT ; ATALT BEE44 9000 SPD BEE44 200")
+  check_eq(ex("TVF31 climb FL280 and then increase to 300 knots once it gets up there"),
+    "ALT TVF31 FL280 ; ATALT TVF31 FL280 SPD TVF31 300")
+  asked(ex("TVF31 turn left heading 200 and slow to 240 once it's level"), "no level cleared")
+  check_eq(ex("BEE44 slow to 200 knots, and once you've got that speed descend 8000 feet"),
+    "SPD BEE44 200 ; ATSPD BEE44 200 ALT BEE44 8000")
+  check_eq(ex("TVF31 reduce speed two three zero knots when established at two three zero descend FL200"),
+    "SPD TVF31 230 ; ATSPD TVF31 230 ALT TVF31 FL200")
+  -- a wait said loosely with a number is that wait; with no number, asked
+  check_eq(ex("in about three minutes, could BEE44 turn right heading 330?"), "DELAY 180 HDG BEE44 330 RIGHT")
+  check_eq(ex("TVF31 heading 100, and then, in like two minutes, turn left to 050"),
+    "HDG TVF31 100 ; DELAY 120 HDG TVF31 50 LEFT")
+  asked(ex("in a few minutes BEE44 turn right heading 330"), "a loose wait")
+  -- German: "dann" between two instructions, "bei"/"ab"/"wenn ... durch" a level waited for
+  check_eq(ex("bee44 sinken 9000 dann hdg 200"), "ALT BEE44 9000 ; HDG BEE44 200")
+  check_eq(ex("tvf31 hdg 120 dann fl260"), "HDG TVF31 120 ; ALT TVF31 FL260")
+  check_eq(ex("tvf31 sinken fl200, ab fl220 spd 260"), "ALT TVF31 FL200 ; ATALT TVF31 FL220 SPD TVF31 260")
+  check_eq(ex("tvf31 spd 260 bei FL220"), "ATALT TVF31 FL220 SPD TVF31 260")
+  check_eq(ex("tvf31 wenn fl220 durch dann spd 260"), "ATALT TVF31 FL220 SPD TVF31 260")
+end
+do
+  local _, ex = navscene({ "CRE TVF32 A320 52.0 4.0 090 FL240 280", "ADDWPT TVF32 SPY", "ADDWPT TVF32 PAM" },
+    "fcd's conditions at a waypoint")
+  if ex then
+    -- "at FIX then LEVEL": what follows "then" is done there, no constraint; without "then", the constraint
+    check_eq(ex("TVF32 at SPY then FL200"), "AT TVF32 SPY DO ALT TVF32 FL200")
+    check_eq(ex("TVF32 at SPY FL200"), "AT TVF32 SPY ALT FL200")
+    check_eq(ex("tvf32 bei PAM dann sinken FL180"), "AT TVF32 PAM DO ALT TVF32 FL180")
+    check_eq(ex("TVF32 when PAM is reached, descend FL180"), "AT TVF32 PAM DO ALT TVF32 FL180")
+    check_eq(ex("tvf32 wenn SPY erreicht dann sinken FL200"), "AT TVF32 SPY DO ALT TVF32 FL200")
+    -- a limit until a place of the route, then the value from there, "after that" said again
+    check_eq(ex("TVF32 maintain 270 knots until PAM, and then 240 after that"),
+      "SPD TVF32 270 ; AT TVF32 PAM DO SPD TVF32 240")
+    check_eq(ex("tvf32 spd 260 bis PAM"), "SPD TVF32 260")
   end
 end
