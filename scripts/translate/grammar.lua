@@ -5039,8 +5039,14 @@ function G:self_corrected()
         a = c
       elseif left_as_is and p >= 1 then
         -- ("direct SPY... no, leave that. KLM12, climb FL280": the last instruction, from its word, taken back
-        -- whole with its values and places; what follows is read alone)
-        self:set_aside(p, c - 1)
+        -- whole with its values and places, and the words of that instruction before its last word, "turn left"
+        -- of "turn left heading 200"; what follows is read alone)
+        local from = p
+        while from > 1 and self.t[from - 1].kind == "word" and not self:has_ref(from - 1, from, "aircraft")
+            and (self:intent_at(from - 1) or self:word(from - 1, "@left @right to")) do
+          from = from - 1
+        end
+        self:set_aside(from, c - 1)
         a = c
       elseif self:value_said_again(p, a, c) then
         a = c

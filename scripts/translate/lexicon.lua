@@ -268,6 +268,8 @@ return {
         "if that is a thing", "thanks a million", "thanks a mil", "if that works", "if that works for you", "if it works", "if it works for you",
         "of course", "after all", "i apologise", "i apologize", "my apologies", "as a separate thing", "block of trials",
         "blocks of trials",
+        -- a researcher's aside on their own frankness ("I'm honestly not sure", "Honestly, ...")
+        "honestly",
         "if the computer can cope with it", "if the computer can cope", "if the simulation can cope with it",
         -- urgency ("descend FL200 at once", "right away": what squawk sends runs at once)
         -- (the speaker's opinion, in a report: "..., which is what the controller ought to have done, in my view")
@@ -2531,5 +2533,8 @@ return {
     "not heard", "unheard", "illegible", "static" },
   asides_alone = { "ist gut", "alles gut", "alles klar", "passt", "passt so", "sehr gut", "na gut", "gut", "prima",
     "genau", "jawohl", "vielen dank", "danke schon", "dankeschon", "is goed", "goed zo", "in orde", "mooi", "oke",
-    "klopt", "okidoki" },
+    "klopt", "okidoki",
+    -- a South African instructor's sympathy ("Ag shame, ...", "..., ag shame, turn right ...") and a break named
+    -- beside a pause ("Pause the exercise, tea break")
+    "ag shame", "shame", "eish", "tea break", "coffee break", "lunch break", "comfort break" },
 }
