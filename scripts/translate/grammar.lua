@@ -2227,7 +2227,15 @@ end
 -- The sentences that tell an aircraft's state (G:state_sentence) are set aside whole: their values, places and
 -- aircraft are what is told, no command's.
 function G:state_remarks()
-  if not self:said(G.state_sets.pronouns) and not self:said(G.state_sets.subjects) then return end
+  -- (only where a sentence or a clause after a comma opens with a pronoun subject: the reasons are found then)
+  local S, opens = G.state_sets, false
+  for k = 1, #self.t do
+    if (k == 1 or self.t[k - 1].kind == "punct") and self.t[k].kind == "word" then
+      local x = self:skip_fillers(k)
+      opens = opens or self:word(x, S.subjects) or self:word(x, S.pronouns)
+    end
+  end
+  if not opens then return end
   self:in_reason(1)
   for _, span in ipairs(self.state_spans or {}) do self:set_aside(span[1], span[2]) end
 end
