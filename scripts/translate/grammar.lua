@@ -194,7 +194,8 @@ local function know_all(v, seen)
   -- place, lexicon.replaced_lead
   -- only before a value replaced, lexicon.ff_ended only before a fast-forward ended, lexicon.countries only
   -- inside a callsign read, lexicon.described_places.regions only as a place that describes an aircraft,
-  -- lexicon.screen_position only where an aircraft's place on the screen is read)
+  -- lexicon.screen_position only where an aircraft's place on the screen is read, lexicon.unheard_markers only
+  -- to ask a request again)
   if type(v) ~= "table" or seen[v] or v == lexicon.accounted.courtesy_phrases or v == lexicon.accounted.value_phrases
       or v == lexicon.typed_abbreviations
       or v == lexicon.aside or v == lexicon.self_correction.just_the or v == lexicon.foreign_digits or v == lexicon.foreign_hesitation_digits
@@ -208,7 +209,7 @@ local function know_all(v, seen)
       or v == lexicon.self_correction.apology or v == lexicon.replaced_lead or v == lexicon.ff_ended
       or v == lexicon.self_correction.formal_apology or v == lexicon.self_correction.described
       or v == lexicon.self_correction.judged or v == lexicon.self_correction.admitted or v == lexicon.limit_release
-      or v == lexicon.countries or v == lexicon.screen_position then
+      or v == lexicon.countries or v == lexicon.screen_position or v == lexicon.unheard_markers then
     return
   end
   seen[v] = true
@@ -825,9 +826,48 @@ function G.after_restated(toks, j)
   end
   return nil
 end
+-- True when the words toks[k .. j - 1] are hesitations only (lexicon.hesitations, "erm", "uhm", "hmm") between two
+-- digit strings of the same length (two or more digits, each one numeral, "fl250", or digit words said one by
+-- one): the first after a word of a value (lexicon.self_correction.after, "to", "at", an instruction's verb) or
+-- prefixed by its letters ("fl250"), the second with no unit word or more digits after it.
+G.hesitation_words = set_of(lexicon.hesitations)
+G.hesitation_words.erm, G.hesitation_words.uhm, G.hesitation_words.hmm = true, true, true
+G.valued_before = set_of({ "to", "at", "climb", "descend", "maintain", "reduce", "increase", "hdg", "spd", "alt" })
+for _, w in ipairs(lexicon.self_correction.after) do G.valued_before[w] = true end
+G.digit_words = set_of({ "zero", "one", "two", "three", "four", "five", "six", "seven", "eight", "nine", "niner",
+  "tree", "fife", "fower" })
+G.hesitation_patterns = {}
+for w in pairs(G.hesitation_words) do
+  G.hesitation_patterns[#G.hesitation_patterns + 1] = { word = w, pattern = "%f[%w]" .. w .. "%f[%W]" }
+end
+function G.hesitant_value(toks, k, j)
+  for x = k, j - 1 do
+    if not (G.hesitation_words[toks[x].bare] or toks[x].bare == "") then return false end
+  end
+  -- the digits of the string ending at toks[e] (step -1) or starting there (step 1), the token past it
+  local function digits(e, step)
+    local t = toks[e]
+    if not t then return 0, e end
+    local numeral = t.bare:match("^%a?%a?(%d+)$")
+    if numeral then return #numeral, e + step end
+    local n = 0
+    while toks[e] and G.digit_words[toks[e].bare] and (n == 0 or not toks[step > 0 and e - 1 or e].raw:match("%p$")) do
+      n, e = n + 1, e + step
+    end
+    return n, e
+  end
+  local before, b = digits(k - 1, -1)
+  local after, e = digits(j, 1)
+  if before < 2 or before ~= after then return false end
+  local lead = toks[k - 1].bare:match("^%a%a?%d") or (toks[b] and G.valued_before[toks[b].bare])
+  return lead and not (toks[e] and not toks[e - 1].raw:match("%p$") and (UNIT_WORDS[toks[e].bare]
+    or NUMBER_WORDS[toks[e].bare] or toks[e].bare:match("^%d")))
+end
 local function self_corrections(text)
   text = G.meant_after_hesitation(hesitated_sides(G.formal_apologies(G.admitted_slips(text))))
-  if not holds_word(text:lower(), SC_MARKER_PATTERNS) then return text end
+  if not holds_word(text:lower(), SC_MARKER_PATTERNS) and not holds_word(text:lower(), G.hesitation_patterns) then
+    return text
+  end
   local words, markers, after = G.sc_value_words, SC_MARKERS, SC_AFTER
   local toks = bare_words(text)
   local function value(t) return t and (t.raw:match("%d%p*$") or NUMBER_WORDS[t.bare] or UNIT_WORDS[t.bare]) end
@@ -863,6 +903,10 @@ local function self_corrections(text)
     -- ("I am sorry, it is 260": the phrase restating is part of the run, the value after it said in place)
     local restated = marked and nxt and G.after_restated(toks, j)
     if restated then nxt, said = toks[restated], toks[restated] end
+    -- ("flight level one three zero, uh, one four zero", "heading 270, um, 280": a hesitation alone between two
+    -- values of as many digits, the first after a value's word, the second ending its clause with no unit: the
+    -- second said in place of the first, G.hesitant_value)
+    marked = marked or (j > k and G.hesitant_value(toks, k, j))
     if j > k and marked and not refused and not (dropping and after[nxt and nxt.bare or ""] and not SIDES[nxt.bare])
         and not (toks[k - 2] and toks[k - 2].bare == "not" and G.apology[toks[k].bare])
         and (value(toks[k - 1]) or (toks[k - 1] and SIDES[toks[k - 1].bare]) or position) and nxt
@@ -2229,6 +2273,65 @@ function G:instructed_after(e)
   return false
 end
 
+-- True when the sentence opening at k (or the clause after the comma at k - 1) tells the state of an aircraft
+-- named by a pronoun, after an instruction (`instructed(k)`), to the end of its sentence ("They're both heading
+-- east.", "It's at 220 right now, I think.", ", it's about to cross the FedEx's path"; lexicon.aside.state): its
+-- subject and copula, adverbs, then a predicate; no wish, modal, correction, condition or sequence word in it
+-- (state.blocks), no instruction word after the predicate's (but the verb of "about to") and the sentence ends the
+-- request or with a full stop or "!". A question ("It's at 220 now?") or a clause going on to instruct ("it's at
+-- 220, take it to 240") is none.
+G.state_sets = {}
+for key, words in pairs(lexicon.aside.state) do G.state_sets[key] = set_of(words) end
+function G:state_sentence(k, instructed)
+  local S = G.state_sets
+  local e = commentary_end(self, k)
+  local stop = self.t[e]
+  if stop and not (stop.text == "." or stop.text == "!") then return false end
+  local x = self:skip_fillers(k)
+  -- (the lexer drops the copula of "it's" before a word it does not keep it for: "It heading east")
+  if self:word(x, S.subjects) then x = x + 1
+  elseif self:word(x, S.pronouns) and self:word(x + 1, S.copulas) then x = x + 2
+  elseif self:word(x, "it he she") and self.t[x].raw:match("^%a+$") then x = x + 1
+  else return false end
+  while x < e and self:word(x, S.adverbs) do x = x + 1 end
+  if x >= e or not self:word(x, S.predicates) or self:word_in(k, e, S.blocks) and not self:about_to(k, e) then
+    return false
+  end
+  for y = x + 1, e - 1 do
+    if self:intent_at(y) and not (self:word(y - 1, "to") and self:word(y - 2, "about")) then return false end
+  end
+  if not instructed(k) then return false end
+  self.state_spans = self.state_spans or {}
+  self.state_spans[#self.state_spans + 1] = { k, e - 1 }
+  return true
+end
+
+-- The sentences that tell an aircraft's state (G:state_sentence) are set aside whole: their values, places and
+-- aircraft are what is told, no command's.
+function G:state_remarks()
+  -- (only where a sentence or a clause after a comma opens with a pronoun subject: the reasons are found then)
+  local S, opens = G.state_sets, false
+  for k = 1, #self.t do
+    if (k == 1 or self.t[k - 1].kind == "punct") and self.t[k].kind == "word" then
+      local x = self:skip_fillers(k)
+      opens = opens or self:word(x, S.subjects) or self:word(x, S.pronouns)
+    end
+  end
+  if not opens then return end
+  self:in_reason(1)
+  for _, span in ipairs(self.state_spans or {}) do self:set_aside(span[1], span[2]) end
+end
+
+-- True when the only word of lexicon.aside.state.blocks in tokens b .. e - 1 is the "to" of "about to".
+function G:about_to(b, e)
+  for y = b, e - 1 do
+    if self:word(y, G.state_sets.blocks) and not (self:word(y, "to") and self:word(y - 1, "about")) then
+      return false
+    end
+  end
+  return true
+end
+
 -- True when the sentence opening at k is a remark beside the sentences that instruct: it ends the
 -- request or with a full stop or "!" (a question may ask for something, a colon labels what follows),
 -- something is instructed before it (`instructed(k)`) or after it, and it is commentary with no aircraft
@@ -2705,6 +2808,9 @@ function G:in_reason(i)
         -- ("fast forward 60 sec then I'll hand over to the pseudo pilot", "... 3 times faster? Then we can see the
         -- conflict develop", "set the sim rate to 5 for when we restart": the experimenter's own doing after the
         -- instruction, or when it is for)
+        inside, reason[k] = true, true
+      elseif (start or punct and t.text == ",") and self:state_sentence(punct and k + 1 or k, instructed) then
+        -- ("Could the Lufthansa and the JetBlue both climb to FL310? They're both heading east.": the state told)
         inside, reason[k] = true, true
       elseif start and t.kind == "word" and self:remark_sentence(k, instructed) then
         -- ("... 290 knots. First arrival of batch B.", "Let's start with the baseline pair. SAS1A A320 ..."
@@ -5083,6 +5189,17 @@ function G:self_corrected()
         self:mark_used(b, c)
         for k = b, c - 1 do self.noted[k] = true end
         self.cut_back[b] = c
+        a = c
+      elseif left_as_is and p >= 1 then
+        -- ("direct SPY... no, leave that. KLM12, climb FL280": the last instruction, from its word, taken back
+        -- whole with its values and places, and the words of that instruction before its last word, "turn left"
+        -- of "turn left heading 200"; what follows is read alone)
+        local from = p
+        while from > 1 and self.t[from - 1].kind == "word" and not self:has_ref(from - 1, from, "aircraft")
+            and (self:intent_at(from - 1) or self:word(from - 1, "@left @right to")) do
+          from = from - 1
+        end
+        self:set_aside(from, c - 1)
         a = c
       elseif self:value_said_again(p, a, c) then
         a = c
@@ -12753,6 +12870,7 @@ function M.translate(text, world)
   local g = setmetatable({ u = u, t = toks, words = word_texts(toks), refs = u:refs(), world = world,
     fleet = world.aircraft, out = {}, qcache = {}, taken = {}, noted = {}, cut_back = {}, triggers = {}, apart = apart,
     text_said = said }, G)
+  if FPOL_DEBUG_TOKS then local o={} for k,t in ipairs(toks) do o[#o+1]=k..':'..t.raw..'|'..t.text..'/'..t.kind..(t.filler and '*' or '') end print(table.concat(o,' ')) end
   g:settle_callsigns()
   local same = g:same_for()
   g:airline_types()
@@ -12792,6 +12910,7 @@ function M.translate(text, world)
     end
   end
   g:route_remarks()
+  g:state_remarks()
   g:destination_told()
   g:onward_remark()
   g:limit_released()
@@ -12964,7 +13083,26 @@ function M.read_heard(text, world)
   r.heard_sure = nil
   return again.ask and r or again
 end
+-- The transcriber's mark of words not heard (lexicon.unheard_markers) in brackets, parentheses, angle brackets or
+-- asterisks, as written, or nil: "descend eight thousand... [unintelligible]... feet" may have lost a digit.
+function G.unheard_mark(text)
+  if not text:find("[%[%(<%*]") then return nil end
+  for _, pattern in ipairs({ "%b[]", "%b()", "%b<>", "%*[^%*]+%*" }) do
+    for mark in text:gmatch(pattern) do
+      local low = " " .. mark:lower():gsub("[^%a%-]+", " ") .. " "
+      for _, w in ipairs(lexicon.unheard_markers) do
+        if low:find(" " .. w .. " ", 1, true) then return mark end
+      end
+    end
+  end
+  return nil
+end
 function M.translate(text, world)
+  local unheard = G.unheard_mark(text)
+  if unheard then
+    return { commands = {}, ask = string.format("Part of the request was not heard ('%s'). Please say it again.",
+      unheard) }
+  end
   local r = M.read_heard(text, world)
   if not r.ask then return r end
   return M.typos.reread(text, world or {}, r, M.read_typed)

@@ -268,6 +268,8 @@ return {
         "if that is a thing", "thanks a million", "thanks a mil", "if that works", "if that works for you", "if it works", "if it works for you",
         "of course", "after all", "i apologise", "i apologize", "my apologies", "as a separate thing", "block of trials",
         "blocks of trials",
+        -- a researcher's aside on their own frankness ("I'm honestly not sure", "Honestly, ...")
+        "honestly",
         "if the computer can cope with it", "if the computer can cope", "if the simulation can cope with it",
         -- urgency ("descend FL200 at once", "right away": what squawk sends runs at once)
         -- (the speaker's opinion, in a report: "..., which is what the controller ought to have done, in my view")
@@ -969,9 +971,11 @@ return {
                                 "forget", "belay", "better", "rather" },
                       -- words of an apology ("I am sorry", "I'm sorry") also part of a run between two values
                       -- (grammar.lua self_corrections: "flight level 110, I am sorry, flight level 100")
-                      value_words = { "am", "i'm" },
+                      -- ("heading 270, actually no, let's make that 280": "let's" before "make that" belongs to the
+                      -- run; "fl250 nein fl270", "kurs 300.. ne 310": German "nein", "ne" (no) are its markers)
+                      value_words = { "am", "i'm", "let's", "lets", "let", "nein", "ne" },
                       markers = { "no", "wait", "sorry", "actually", "make that", "mean", "meant", "say again", "scratch",
-                                  "corr", "never mind", "nevermind", "forget that", "belay" },
+                                  "corr", "never mind", "nevermind", "forget that", "belay", "nein", "ne" },
                       -- the markers that, closing the request, take back what came before with nothing said
                       -- in its place ("turn left 20, sorry": asked); "I mean" closing it points back at what
                       -- it follows ("the Wideroe, I mean"), "actually" closing it is "in fact" ("going to
@@ -1237,6 +1241,29 @@ return {
                       -- (a holding stack named as what the vector or speed keeps clear of or prepares for: "we need
                       -- him well out of the way of the BIG stack")
                       "stack" },
+          -- a sentence after a request that tells the state of the aircraft it names by a pronoun (grammar.lua
+          -- G:state_sentence: "They're both heading east.", "It's at 220 right now, I think.", "It's way ahead of
+          -- everybody."): `subjects` (with their copula) or `pronouns` then one of `copulas`, any of `adverbs`, then
+          -- one of `predicates` (a participle of motion or a word of place, level or pace): told, never instructed
+          state = { subjects = { "it's", "they're", "he's", "she's" },
+                    pronouns = { "it", "they", "he", "she" },
+                    copulas = { "is", "are", "was", "were", "'s", "'re" },
+                    adverbs = { "both", "all", "still", "already", "now", "currently", "just", "really", "probably",
+                                "definitely", "clearly", "obviously", "kind", "sort", "of", "quite", "pretty" },
+                    predicates = { "heading", "going", "flying", "climbing", "descending", "turning", "tracking",
+                                   "cruising", "catching", "closing", "converging", "getting", "coming", "moving",
+                                   "travelling", "traveling", "gaining", "overtaking", "overshooting", "passing",
+                                   "approaching", "sitting", "drifting", "routing", "heading", "running", "level",
+                                   "at", "on", "about", "ahead", "behind", "close", "closer", "low", "lower", "high",
+                                   "higher", "fast", "faster", "slow", "slower", "above", "below", "way", "a",
+                                   "too", "near", "nearly", "almost", "well", "miles", "right", "off", "headed",
+                                   "pointing", "pointed" },
+                    -- (words that make the sentence a wish, a correction or a sequence: never told)
+                    blocks = { "please", "you", "your", "let", "let's", "instead", "rather", "actually", "wait",
+                               "no", "not", "sorry", "make", "meant", "mean", "again", "then", "also",
+                               "should", "could", "can", "would", "will", "must", "need", "needs", "want", "wants",
+                               "like", "shall", "may", "might", "to", "if", "when", "once", "after", "until",
+                               "correction", "disregard", "negative", "one" } },
           while_words = { "while", "whilst" },
           -- the same action described after a complete instruction, in an instructor's words (", give him a proper
           -- vector off", ", give her a decent climb"): one of `restate_verbs`, a pronoun and a noun of the kind of an
@@ -2540,7 +2567,16 @@ return {
   -- short German and Dutch asides of acknowledgement ("ist gut, ...", "..., alles klar", "goed zo"): accounted for
   -- only where one stands alone in its clause (the request's edge or punctuation on both sides, fillers between);
   -- after a value ("hdg 180 ist gut, just ...") it says the value is fine, which is asked
+  -- a transcriber's mark that words were not heard, in brackets, parentheses, angle brackets or asterisks
+  -- ("[unintelligible]", "(garbled)", "<inaudible>"): the request is asked again, never read without them
+  -- (grammar.lua M.translate)
+  unheard_markers = { "unintelligible", "inaudible", "garbled", "unreadable", "indistinct", "incomprehensible",
+    "crosstalk", "cross-talk", "blocked", "muffled", "mumbled", "mumbling", "unclear", "cut off", "cut out",
+    "not heard", "unheard", "illegible", "static" },
   asides_alone = { "ist gut", "alles gut", "alles klar", "passt", "passt so", "sehr gut", "na gut", "gut", "prima",
     "genau", "jawohl", "vielen dank", "danke schon", "dankeschon", "is goed", "goed zo", "in orde", "mooi", "oke",
-    "klopt", "okidoki" },
+    "klopt", "okidoki",
+    -- a South African instructor's sympathy ("Ag shame, ...", "..., ag shame, turn right ...") and a break named
+    -- beside a pause ("Pause the exercise, tea break")
+    "ag shame", "shame", "eish", "tea break", "coffee break", "lunch break", "comfort break" },
 }

@@ -16050,4 +16050,37 @@ do
       "SPD TVF32 270 ; AT TVF32 PAM DO SPD TVF32 240")
     check_eq(ex("tvf32 spd 260 bis PAM"), "SPD TVF32 260")
   end
+-- Cycle 56 (fpol): remarks and corrections around a polite request. A sentence telling an aircraft's state by a
+-- pronoun after a request is told, never instructed; a value corrected by "actually no, let's make that", a
+-- hesitation alone between two values of as many digits, or German "nein"/"ne" is the value said last; a
+-- transcriber's mark of words not heard asks the request again; "no, leave that" takes back the instruction before.
+do
+  local _, ex = scene({ "CRE AAA11 A320 52.9 3.6 090 FL240 280", "CRE BBB22 B738 52.9 5.0 270 FL300 250",
+    "CRE CCC33 E190 52.0 4.0 180 FL280 250" })
+  -- the state told: no heading, level or speed issued from it
+  check_eq(ex("Would AAA11 and BBB22 both be able to climb to FL310? They're both heading west."),
+    "ALT AAA11 FL310 ; ALT BBB22 FL310")
+  check_eq(ex("Could BBB22 and CCC33 descend to FL260 please? They are both heading south now."),
+    "ALT BBB22 FL260 ; ALT CCC33 FL260")
+  check_eq(ex("Could CCC33 climb to FL290? It's still at 280 at the moment, I believe."), "ALT CCC33 FL290")
+  check_eq(ex("Can AAA11 reduce to 250 knots, please? He's way ahead of the others."), "SPD AAA11 250")
+  check_eq(ex("Could BBB22 turn left heading 240? It's about to cross CCC33's path, I think."),
+    "HDG BBB22 240 LEFT")
+  -- a state sentence that goes on to instruct, or asks, is no remark
+  asked(ex("Could AAA11 climb to FL260? It's heading 090, turn it to 140."), "an instruction after the state")
+  asked(ex("Could AAA11 climb to FL260? They're both heading west, turn them to 300."), "instructs after the state")
+  -- a value corrected in words: the last one stands, never the one it replaced
+  check_eq(ex("Could CCC33 turn to heading 200, actually no, let's make that 210."), "HDG CCC33 210")
+  check_eq(ex("Could AAA11 climb to flight level two five zero, uh, two six zero."), "ALT AAA11 FL260")
+  check_eq(ex("BBB22 descend flight level 290, um, 280 please"), "ALT BBB22 FL280")
+  check_eq(ex("ccc33 fl290 nein fl300"), "ALT CCC33 FL300")
+  check_eq(ex("aaa11 hdg 100.. ne 110 bitte"), "HDG AAA11 110")
+  -- a hesitation before a value of another kind (a unit, or more digits) corrects nothing
+  check_eq(ex("AAA11 climb FL260, uh, 250 knots"), "ALT AAA11 FL260 ; SPD AAA11 250")
+  -- words not heard: asked again, never read without them
+  asked(ex("AAA11, descend eight thousand... uh... [unintelligible]... feet"), "[unintelligible]")
+  asked(ex("BBB22 turn left heading (garbled) zero"), "(garbled)")
+  asked(ex("CCC33 climb flight level <inaudible> please"), "<inaudible>")
+  -- an instruction taken back with "no, leave that": only what follows stands
+  check_eq(ex("AAA11, turn left heading 200... no, leave that. AAA11, climb FL280"), "ALT AAA11 FL280")
 end
