@@ -15924,3 +15924,18 @@ do
     check_eq(ex("The Korean Air is going to Gimpo, please let it descend to FL200."), "ALT KAL305 FL200")
   end
 end
+do
+  -- (f171) the route told with the aircraft's name in the possessive; the state asked with "what is the X altitude
+  -- and speed now?"
+  local _, ex = scene({ "CRE ABL306 A321 35.3 129.4 230 FL170 270", "CRE KAL940 B739 34.9 128.5 060 FL210 280",
+    "CRE JNA52 B738 35.6 128.2 150 FL190 280" })
+  check_eq(ex("Please tell me the Air Busan's route."), "LISTRTE ABL306")
+  check_eq(ex("could you tell me the Korean Air's route please"), "LISTRTE KAL940")
+  check_eq(ex("please tell me JNA52's route"), "LISTRTE JNA52")
+  check(not ex("please tell me if the Jin Air leaves the route"):find("LISTRTE", 1, true), "a report asked for")
+  check_eq(ex("what is the Korean Air altitude and speed now?"), "POS KAL940")
+  check_eq(ex("what's the Air Busan heading and speed currently?"), "POS ABL306")
+  check_eq(ex("what is the Jin Air's level now?"), "POS JNA52")
+  -- a question with an instruction after it is still asked about
+  asked(ex("what is the Air Busan speed now? reduce to 250"), "a question before an instruction")
+end
