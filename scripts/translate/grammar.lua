@@ -4141,6 +4141,33 @@ function G:destination_told()
   end
 end
 
+-- "The Korean Air is going to Jeju, please make it descend to FL150": where the aircraft named first goes, stated as a
+-- fact in the request's opening clause (lexicon.destination_preface: the aircraft, "is"/"are", a verb of going, "to",
+-- the place of one to three words to a comma or full stop) with an instruction said after it, no other aircraft
+-- named, is context for that instruction: set aside, nothing set (the aircraft stays named, for "it" after). A word of .change anywhere in the
+-- request ("..., it is going to Gimpo now", "set it as destination") leaves it to the rules (DEST), as does the
+-- statement said alone.
+G.destination_preface_sets = {}
+for k, list in pairs(lexicon.destination_preface) do G.destination_preface_sets[k] = set_of(list) end
+function G:destination_preface()
+  local D = G.destination_preface_sets
+  if not (self:said(D.verbs) and self:said(D.to)) or self:said(D.change) then return end
+  local r = self.refs[1]
+  for _, x in ipairs(self.refs) do
+    if x.kind == "aircraft" and (not r or x.b < r.b or r.kind ~= "aircraft") then r = x end
+  end
+  if not (r and r.kind == "aircraft" and r.exists) or self:any_instruction_in(1, r.b) then return end
+  local b = r.e
+  if not (self:word(b, D.be) and self:word(b + 1, D.verbs) and self:word(b + 2, D.to)) then return end
+  local e = b + 3
+  while e <= #self.t and self.t[e].kind == "word" and e < b + 6 do e = e + 1 end
+  local t = self.t[e]
+  if e == b + 3 or not (t and t.kind == "punct" and (t.text == "," or t.text == ".")) then return end
+  -- (only the aircraft named is instructed after it: "..., and the Asiana climb FL300" is another's request)
+  if self:has_ref(b + 3, #self.t + 1, "aircraft") or not self:any_instruction_in(e + 1, #self.t + 1) then return end
+  self:set_aside(b, e - 1)
+end
+
 function G:route_remarks()
   local R = G.route_remark_sets
   if not self:said(R.route_nouns) then return end
@@ -5029,16 +5056,26 @@ function G:self_corrected()
     end
     -- ("insert SINCA... no wait, it's already there, add BURNY": the reason the instruction is taken back, a clause
     -- of at most six words opened by a pronoun of lexicon.self_correction_reason_openers and ending in a comma,
-    -- no value, place or instruction in it, belongs to the run)
+    -- no value, place or instruction in it, belongs to the run; "..., ah no, it is already in the route. Then
+    -- please let it go direct to MKG": a state told with "already" may end in a full stop too, and the
+    -- instruction said after it, "then", "please", "let it", "go" before its word, replaces the one taken back)
+    local replaced, withdrawn = false, false
     if marked and self:word(c, "@self_correction_reason_openers") then
-      local k = c + 1
+      local k, told = c + 1, false
       while k < c + 7 and self.t[k] and self.t[k].kind == "word" and not self:intent_at(k)
           and not self:has_ref(k, k + 1) and #self:quantities(k, k + 1) == 0 do
+        told = told or self:word(k, "already")
         k = k + 1
       end
-      if self.t[k] and self.t[k].text == "," then
+      if self.t[k] and (self.t[k].text == "," or told and self.t[k].text == ".") then
         c = k
         while self.t[c] and (self.t[c].kind == "punct" or self.t[c].filler) do c = c + 1 end
+        local v = c
+        while told and v < c + 6 and self:word(v, "then so please let it just go") and not self:intent_at(v) do
+          v = v + 1
+        end
+        if told and v > c and self:intent_at(v) then c, replaced = v, true end
+        withdrawn = told and not self:intent_at(v)
       end
     end
     if marked then
@@ -5069,6 +5106,18 @@ function G:self_corrected()
     end
     local p = a - 1  -- the last instruction word before the run
     while marked and p >= 1 and not (self:intent_at(p) and not self:in_reason(p)) do p = p - 1 end
+    -- (taken back for a state told, "... ah no, it is already there.", with no instruction in its place: the last
+    -- instruction before the run, from its instruction word, is dropped)
+    if marked and withdrawn and p >= 1 then
+      self:mark_used(p, c)
+      for k = p, c - 1 do self.noted[k] = true end
+      local refs = {}
+      for _, r in ipairs(self.refs) do
+        if r.b < p or r.b >= c then refs[#refs + 1] = r end
+      end
+      self.refs = refs
+      a, marked = c - 1, false
+    end
     -- ("speed 250 and climb FL350... no wait, just climb FL350 first": "just"/"only" and the last instruction's
     -- word said again after the run, with another instruction said before it and none of them said by that
     -- word, takes nothing back but leaves unclear whether the earlier ones stand or wait: asked; "climb FL80,
@@ -5205,7 +5254,7 @@ function G:self_corrected()
         a = c
       elseif self:intent_at(self:word(c, "it") and self:word(c - 1, "make") and c + 1 or self:word(c, SC_ONLY) and c + 1
             or self:word(c, SC_SETTING) and (self:word(c + 1, "the") and c + 2 or c + 1) or c)
-          and not self:word_in(a, c, "and also then") then
+          and (replaced or not self:word_in(a, c, "and also then")) then
         -- another instruction said in its place ("direct TWEED... no, make it heading 200", "half height 1000...
         -- no, set zone half height to 500" after a verb of lexicon.self_correction.setting, "climb FL200,
         -- no wait, descend FL90", "..., sorry, I mean just turn to heading 250"): the last one before the
@@ -5215,7 +5264,7 @@ function G:self_corrected()
         -- asked as G:parse asks after "correction")
         local w = self:word(c, SC_ONLY) and c + 1 or c
         -- ("never mind", "forget that", "scratch that" take it back in words; the same verb is no other kind)
-        if w == c and not self:word(c, "it") and not SC_SETTING[self.words[c]]
+        if w == c and not replaced and not self:word(c, "it") and not SC_SETTING[self.words[c]]
             and not left_as_is and not self:word_in(a, c, "never nevermind forget scratch") and self.words[c] ~= self.words[p]
             and not same_family(self:intent_at(p) or valued, self:intent_at(c)) then
           local e = c
@@ -12912,6 +12961,7 @@ function M.translate(text, world)
   g:route_remarks()
   g:state_remarks()
   g:destination_told()
+  g:destination_preface()
   g:onward_remark()
   g:limit_released()
   local note = g:not_simulated()

@@ -1478,6 +1478,16 @@ return {
                        motion = { "goes", "go", "going", "flies", "fly", "flying", "heads", "heading", "continues",
                                   "continuing", "proceeds", "proceeding" },
                        to = { "to", "towards", "toward", "for" } },
+  -- where an aircraft named goes, stated as a fact in the request's opening clause before instructions to it ("The
+  -- Korean Air is going to Jeju, please make it descend ...", "KAL12 is flying to Gimpo, speed 250"): `be` and a
+  -- word of `verbs`, one of `to`, then the place to the clause's end; no word of `change` anywhere in the request
+  -- (G:destination_preface)
+  destination_preface = { be = { "is", "are", "'s" },
+                          verbs = { "going", "flying", "heading", "headed", "proceeding", "travelling", "traveling" },
+                          to = { "to", "towards", "toward", "for" },
+                          change = { "now", "actually", "instead", "rather", "new", "change", "changed", "set",
+                                     "destination", "dest", "divert", "diverting", "reroute", "send", "not", "no",
+                                     "correction", "sorry", "wrong" } },
   -- a remark that a place named is on the aircraft's route (G:route_remarks): ", which I believe is on its
   -- planned route", "? I believe BOSIO is on its route.", "? That is the Viseu beacon, on its planned route."; a
   -- clause or sentence of these words, the places named and a name before one of `place_nouns`

@@ -385,8 +385,12 @@ local names = {
     { "airasia malaysia", "AXM" },
     { "air asia malaysia", "AXM" },
     { "scoot", "TGW" },
-    { "tigerair", "TGW" },  -- (Tiger Airways, merged into Scoot, which kept its designator)
+    -- "Tigerair": today Tigerair Taiwan (TTW, telephony SMART CAT), the one airline left flying under the name;
+    -- TGW is Tiger Airways' designator, kept by Scoot (a brand, below)
+    { "tigerair", "TTW" },
     { "tiger airways", "TGW" },
+    { "smart cat", "TTW" },
+    { "tigerair taiwan", "TTW" },
     { "vietnam", "HVN" },
     { "vietnam airlines", "HVN" },
     { "vietjet", "VJC" },
@@ -419,6 +423,11 @@ local names = {
     { "air seoul", "ASV" },
     { "eastar", "ESR" },  -- (Eastar Jet)
     { "china airlines", "CAL" },
+    -- Taiwan's other airlines by ICAO telephony, and the airline's own name where controllers there say it
+    { "mandarin", "MDA" },  -- (Mandarin Airlines)
+    { "glory", "UIA" },  -- (UNI Air)
+    { "uni air", "UIA" },
+    { "uniair", "UIA" },
     { "starlux", "SJX" },
     { "shenzhen", "CSZ" },
     { "shenzhen air", "CSZ" },
@@ -695,6 +704,14 @@ local names = {
     { "solaseed", "SNJ" },  -- (Solaseed Air, telephony New Sky)
     { "solaseed air", "SNJ" },
     { "airdo", "ADO" },
+    -- Taiwan's and Korea's airlines by the name passengers know, beside their telephony above ("the Mandarin
+    -- Airlines E190", "the T'way")
+    { "mandarin airlines", "MDA" },
+    { "uni airways", "UIA" },
+    { "t'way", "TWB" },
+    { "tway", "TWB" },
+    { "t'way air", "TWB" },
+    { "jeju airlines", "JJA" },
   },
   brands = {
     { "transavia", "TRA", "TVF" },
@@ -733,6 +750,8 @@ local names = {
     -- "the Korean one": an aircraft of a Korean airline (Korean Air, Asiana, Jeju Air, Jin Air, T'way, Air Busan);
     -- one of them flying fits, two flying are asked
     { "korean", "KAL", "AAR", "JJA", "JNA", "TWB", "ABL" },
+    -- "Tigerair": Tigerair Taiwan (TTW) and Tiger Airways' designator, now Scoot's (TGW); one of them flying fits
+    { "tigerair", "TTW", "TGW" },
   },
   designators = { "B712", "B722", "B733", "B734", "B735", "B736", "B737", "B738", "B739", "B744", "B748", "B752",
     "B753", "B762", "B763", "B764", "B772", "B773", "B77W", "B77L", "B788", "B789", "B78X", "B38M", "B39M", "B3XM",

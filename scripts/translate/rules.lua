@@ -1784,9 +1784,24 @@ return function(intent, rule, words)
   end }
   -- "tell me the route of the Emirates", "kindly tell the route of Air India 540": the route told to the speaker
   -- ("tell KLM12 to follow its route" instructs)
+  -- ("please tell me the Jin Air's route": only "the", the aircraft and its "'s" between "me" and the noun)
   rule { "route rte routing waypoints", "listrte", when = function(g, i)
     local k = g:find_word(math.max(1, i - 4), i, "tell")
-    return k < i and (g:word(k + 1, "me us") or (k + 2 == i and g:word(k + 1, "the")))
+    if k < i then return g:word(k + 1, "me us") or (k + 2 == i and g:word(k + 1, "the")) end
+    k = g:find_word(math.max(1, i - 8), i, "tell")
+    if not (k < i and g:word(k + 1, "me us")) then return false end
+    local named, x = false, k + 2
+    while x < i do
+      local r = g:refs_in(x, i, "aircraft")[1]
+      if r and r.b == x then
+        x, named = r.e, true
+      elseif g:word(x, "the 's s") or (g.t[x].kind == "punct" and g.t[x].text == "'") then
+        x = x + 1
+      else
+        return false
+      end
+    end
+    return named
   end }
   -- ("what's your plan for the Transavia?" asks the addressee's own intentions: no route listed)
   rule { "plan", "listrte", prev = { 4, "show list display what print see look where check" },
@@ -2183,6 +2198,24 @@ return function(intent, rule, words)
   -- scenario restarted is a reset (confirmed first)
   rule { "restart start", "op", near = { 3, "clock" } }
   rule { "restart", "reset", near = { 3, "@sim" } }
+  -- "what is the Air Busan altitude and speed now?": "what" opening the request, the aircraft (its "'s" dropped), then
+  -- only measures of its state ("and" or a comma between) and "now" or "currently" at most to the end: its state
+  -- asked (POS), no instruction
+  rule { "what what's whats", "pos", when = function(g, i)
+    if g:skip_fillers(1) ~= i then return false end
+    local k = g:word(i + 1, "is are") and i + 2 or i + 1
+    if g:word(k, "the") then k = k + 1 end
+    local r = g:refs_in(k, k + 1, "aircraft")[1]
+    if not (r and r.b == k) then return false end
+    k = r.e
+    local measured = false
+    while g:word(k, "altitude speed heading level position height mach and current present now currently")
+        or (g.t[k] and g.t[k].kind == "punct" and g.t[k].text == ",") do
+      measured = measured or g:word(k, "altitude speed heading level position height mach")
+      k = k + 1
+    end
+    return measured and (g.t[k] == nil or (g.t[k].kind == "punct" and k == #g.t))
+  end }
   -- (the measure asked by its other names: "what height is it at?", "the Dreamliner, what's its Mach number?")
   rule { "what how know", "pos", near = { 4, "altitude speed heading position level alt lvl hdg spd height mach" } }
   -- "what's AC004's current FL": the level flown now, "current" or "present" straight before the abbreviation

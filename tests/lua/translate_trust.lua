@@ -16084,3 +16084,73 @@ do
   -- an instruction taken back with "no, leave that": only what follows stands
   check_eq(ex("AAA11, turn left heading 200... no, leave that. AAA11, climb FL280"), "ALT AAA11 FL280")
 end
+-- Cycle 56 (f171): Taiwan's and Korea's airlines by telephony and by name ("Tigerair" is Tigerair Taiwan, TTW;
+-- Mandarin, Glory/UNI Air, Smart Cat, "the T'way"); a destination stated in the opening clause
+-- before instructions to that aircraft is context; an instruction withdrawn for a state told ("ah no, it is
+-- already on the route.") is dropped, the one said after "Then please ..." replaces it
+do
+  local _, ex = scene({ "CRE TTW118 A320 24.9 121.3 210 FL250 270", "CRE MDA512 E190 23.0 120.6 350 FL160 260",
+    "CRE UIA603 AT72 23.3 120.1 200 FL140 220", "CRE CAL77 A359 25.1 122.2 300 FL330 280",
+    "CRE TWB417 B738 24.6 121.1 120 FL120 250", "CRE KAL305 A333 24.4 121.9 010 FL280 290",
+    "CRE AAR77 A321 24.0 122.0 090 FL240 280", "CRE CPA88 A333 23.5 121.0 010 FL360 290",
+    "DEFWPT WPTAA 24.0 121.5", "ADDWPT CPA88 WPTAA" })
+  check_eq(ex("Tigerair one one eight, turn left heading 150 please"), "HDG TTW118 150 LEFT")
+  check_eq(ex("Smart Cat 118 climb FL270"), "ALT TTW118 FL270")
+  check_eq(ex("could you make the Tigerair slow down to 240 knots"), "SPD TTW118 240")
+  check_eq(ex("please let the Mandarin climb to FL200"), "ALT MDA512 FL200")
+  check_eq(ex("Mandarin Airlines 512 turn right heading 020"), "HDG MDA512 20 RIGHT")
+  check_eq(ex("the UNI Air reduce speed to 200 knots"), "SPD UIA603 200")
+  check_eq(ex("Glory six zero three descend to 9000 feet"), "ALT UIA603 9000")
+  check_eq(ex("please let the China Airlines descend to FL310"), "ALT CAL77 FL310")
+  check_eq(ex("show me the position of the T'way"), "POS TWB417")
+  -- a flight number no Tigerair flying has: asked, never another aircraft
+  asked(ex("Tigerair 119 climb FL270"), "Tigerair 119 with TTW118 flying")
+  -- the destination stated before instructions to the aircraft: context, nothing set
+  check_eq(ex("The Korean Air is going to Gimpo, please let it climb to FL300."), "ALT KAL305 FL300")
+  check_eq(ex("Asiana 77 is flying to Jeju. Please reduce its speed to 250 knots."), "SPD AAR77 250")
+  -- another aircraft instructed after it: the statement is no context of that instruction
+  check(not ex("The Korean Air is going to Gimpo, and the Asiana climb FL300"):find("ALT KAL305", 1, true),
+    "the Asiana's climb given to the Korean Air")
+  -- a request withdrawn for a state told, replaced after "Then please"
+  check_eq(ex("Cathay 88 add the waypoint WPTAA... oh no, it is already on the route. Then please let it fly "
+    .. "direct to WPTAA."), "DIRECT CPA88 WPTAA")
+  check_eq(ex("Cathay 88 add the waypoint WPTAA, ah no, it is already there, so go direct WPTAA please"),
+    "DIRECT CPA88 WPTAA")
+  check_eq(ex("Cathay 88 climb FL380... oh no, it is already there. Then please turn right heading 100."),
+    "HDG CPA88 100 RIGHT")
+  -- withdrawn with nothing in its place: nothing issued
+  check(not ex("Cathay 88 add the waypoint WPTAA... ah no, it is already there."):find("ADDWPT", 1, true),
+    "a waypoint withdrawn still added")
+end
+do
+  -- Tiger Airways' old designator (now Scoot's) flying beside Tigerair Taiwan: "Tigerair 31" is Tigerair Taiwan's
+  -- (as "Transavia 31" is TRA31 beside TVF31), "the Tigerair" alone is asked, "Scoot 31" is TGW31
+  local _, ex = scene({ "CRE TTW31 A320 24.9 121.3 210 FL250 270", "CRE TGW31 A320 1.3 103.9 180 FL250 290" })
+  check_eq(ex("Tigerair 31 climb FL270"), "ALT TTW31 FL270")
+  check_eq(ex("Scoot 31 climb FL270"), "ALT TGW31 FL270")
+  asked(ex("the Tigerair climb FL270"), "two Tigerair aircraft flying")
+end
+do
+  local _, ex = navscene({ "CRE KAL305 A333 36.4 126.9 190 FL280 290" }, "a destination stated as a fact")
+  if ex then
+    -- said alone, or with a change, the destination stated is set as before
+    check_eq(ex("KAL305 is going to Gimpo"), "DEST KAL305 RKSS")
+    check_eq(ex("The Korean Air is going to Gimpo now, descend FL200"), "DEST KAL305 RKSS ; ALT KAL305 FL200")
+    check_eq(ex("The Korean Air is going to Gimpo, please let it descend to FL200."), "ALT KAL305 FL200")
+  end
+end
+do
+  -- (f171) the route told with the aircraft's name in the possessive; the state asked with "what is the X altitude
+  -- and speed now?"
+  local _, ex = scene({ "CRE ABL306 A321 35.3 129.4 230 FL170 270", "CRE KAL940 B739 34.9 128.5 060 FL210 280",
+    "CRE JNA52 B738 35.6 128.2 150 FL190 280" })
+  check_eq(ex("Please tell me the Air Busan's route."), "LISTRTE ABL306")
+  check_eq(ex("could you tell me the Korean Air's route please"), "LISTRTE KAL940")
+  check_eq(ex("please tell me JNA52's route"), "LISTRTE JNA52")
+  check(not ex("please tell me if the Jin Air leaves the route"):find("LISTRTE", 1, true), "a report asked for")
+  check_eq(ex("what is the Korean Air altitude and speed now?"), "POS KAL940")
+  check_eq(ex("what's the Air Busan heading and speed currently?"), "POS ABL306")
+  check_eq(ex("what is the Jin Air's level now?"), "POS JNA52")
+  -- a question with an instruction after it is still asked about
+  asked(ex("what is the Air Busan speed now? reduce to 250"), "a question before an instruction")
+end
