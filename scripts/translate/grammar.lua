@@ -7112,13 +7112,25 @@ end
 G.sc_withheld_hesitations = set_of(lexicon.hesitations)
 G.sc_withheld_hesitations.hmm, G.sc_withheld_hesitations.hm = true, true
 function G:withheld_start(last)
+  local by_last = G.sc_withheld_by_last
+  if not by_last then
+    -- by_last[w]: the phrases of SC.withheld whose last word is w, each as its words with "'s" dropped (built once)
+    by_last = {}
+    for _, phrase in ipairs(SC.withheld) do
+      local words = {}
+      for _, w in ipairs(PHRASE_WORDS[phrase]) do words[#words + 1] = (w:gsub("'s$", "")) end
+      local w = words[#words]
+      by_last[w] = by_last[w] or {}
+      by_last[w][#by_last[w] + 1] = words
+    end
+    G.sc_withheld_by_last = by_last
+  end
   local b
-  for _, phrase in ipairs(SC.withheld) do
-    local words = PHRASE_WORDS[phrase]
+  for _, words in ipairs(by_last[self.words[last]] or {}) do
     local k = last - #words + 1
     if k > 1 and (not b or k < b) then
-      for j, w in ipairs(words) do
-        if self.words[k + j - 1] ~= (w:gsub("'s$", "")) then k = nil break end
+      for j = 1, #words do
+        if self.words[k + j - 1] ~= words[j] then k = nil break end
       end
       b = k or b
     end
