@@ -16050,6 +16050,7 @@ do
       "SPD TVF32 270 ; AT TVF32 PAM DO SPD TVF32 240")
     check_eq(ex("tvf32 spd 260 bis PAM"), "SPD TVF32 260")
   end
+end
 -- Cycle 56 (fpol): remarks and corrections around a polite request. A sentence telling an aircraft's state by a
 -- pronoun after a request is told, never instructed; a value corrected by "actually no, let's make that", a
 -- hesitation alone between two values of as many digits, or German "nein"/"ne" is the value said last; a
