@@ -2483,6 +2483,11 @@ local function description_part(self, b)
   if self:word(b, "the") then
     x = b + 1
     while self.t[x] and SIZE_WORDS[self.t[x].text] do x = x + 1 end
+    -- ("the furthest east aircraft", "the most westerly one": the superlative of position before the group)
+    if self:word(x, "furthest farthest most") then
+      local spec, se = side_said(self, x)
+      if spec then part.sides[1], x = { spec = spec, b = x, e = se }, se end
+    end
     local ids, e, count = compared_group(self, x)
     if not ids or count then return nil end  -- ("the two Boeings" are no one aircraft)
     local test, te = self:type_said(e)
@@ -2626,7 +2631,7 @@ end
 -- bearing_refs, which leave the words read here alone (self.positioned).
 function m:position_refs()
   if not self:said("the") then return end
-  local said = self:said("@compass @compass_verbs @compass_from_verbs @compared_measures")
+  local said = self:said("@compass @compass_verbs @compass_from_verbs @compared_measures furthest farthest most")
   for k = 1, #self.t do said = said or screen(self, k, "at") or screen(self, k, "near") or screen(self, k, "near_to") end
   if not said then return end
   self.positioned = self.positioned or {}

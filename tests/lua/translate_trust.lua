@@ -15888,6 +15888,11 @@ do
   check_eq(ex("could the aircraft furthest north climb to FL110"), "ALT BEE21 FL110")
   check_eq(ex("the plane farthest to the east, descend FL290"), "ALT FDX88 FL290")
   check_eq(ex("the one most to the south climb FL200"), "ALT KLM77 FL200")
+  check_eq(ex("the most easterly aircraft, please climb FL330"), "ALT FDX88 FL330")
+  check_eq(ex("could the furthest north plane climb FL110"), "ALT BEE21 FL110")
+  check_eq(ex("the most southerly KLM, climb FL200"), "ALT KLM77 FL200")
+  -- the furthest of a group on the other side of the traffic's centre: asked
+  asked(ex("the most northerly KLM, climb FL200"), "KLM12 is in the south half")
   check_eq(ex("the fast one speed 250"), "SPD FDX88 250")
   check_eq(ex("the Airbus that's flying east, climb FL260"), "ALT KLM12 FL260")
   check_eq(ex("Could the plane furthest east descend FL290, and also KLM12 to FL240?"), "ALT FDX88 FL290 ; ALT KLM12 FL240")
