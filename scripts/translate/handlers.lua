@@ -2325,7 +2325,21 @@ function m:bearing_refs()
     if o_ids then ids = within(ids, o_ids) end  -- ("of the two Air France, the one heading west")
     if point and e then
       local fits = heading_toward(self, ids, point)
-      i = describe(self, b, e, #fits > 0 and fits or ids, #fits == 1 and fits or nil, outer)
+      local picked = #fits == 1 and fits or nil
+      -- ("Could the jumbo climb to FL340? It's the one going east, I think.": said after "it's"/"that's" with no
+      -- instruction after it, the words describe the aircraft named elsewhere; several fitting, of which exactly
+      -- that one is named, it is the one meant)
+      local remark = self:word(b - 1, "it that") or (self:word(b - 1, "is") and self:word(b - 2, "it that"))
+      if #fits > 1 and remark and not self:intent_at(self:skip_fillers(e, false)) then
+        local named = {}
+        for _, r in ipairs(self.refs) do
+          if r.kind == "aircraft" and r.exists and (r.e <= b or r.b >= e) then named[r.name] = true end
+        end
+        local one = {}
+        for _, id in ipairs(fits) do if named[id] then one[#one + 1] = id end end
+        if #one == 1 then picked = one end
+      end
+      i = describe(self, b, e, #fits > 0 and fits or ids, picked, outer)
     else
       i = i + 1
     end

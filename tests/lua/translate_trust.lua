@@ -15899,6 +15899,15 @@ do
   -- a side said after the turn's value with no correction marker ("that" alone is none) is no turn's side
   check_eq(ex("KLM12 turn left heading 060. That's the Airbus, right?"), "HDG KLM12 60 LEFT")
   check_eq(ex("KLM12 turn left heading 060, make that right"), "HDG KLM12 60 RIGHT")
+  -- a way it flies said as a remark after "it's"/"that's": the aircraft named, when it is one of those that fit
+  do
+    local _, ex3 = scene({ "CRE KLM12 A320 52.0 4.0 090 FL250 280", "CRE DLH5 B748 52.3 4.8 080 FL330 290",
+      "CRE SAS9 CRJ9 52.6 4.2 260 FL210 260" })
+    check_eq(ex3("Would the jumbo climb FL350? It's the one flying east, I believe."), "ALT DLH5 FL350")
+    check_eq(ex3("DLH5 climb FL350, that's the one heading east"), "ALT DLH5 FL350")
+    asked(ex3("Would the jumbo climb FL350? It's the one flying west, I believe."), "the jumbo flies east")
+    asked(ex3("the jumbo climb FL350 and the one flying east descend FL200"), "an instruction of its own")
+  end
   -- a description of an aircraft other than the one named, said as a remark: asked
   asked(ex("KLM12 climb FL260, it's the one furthest east"), "the one furthest east is FDX88, not KLM12")
   -- what an aircraft carries is still not told by the traffic
