@@ -2030,8 +2030,18 @@ local function describe(self, b, e, ids, picked, outer)
   local k = b - 1
   if self:word(k, "could can would will please") and (k == 1 or self.t[k - 1].kind == "punct") then k = k - 1 end
   if self:word(k, "also") then k = k - 1 end
+  local after = self:skip_fillers(e, false)
   local own = (k < 1 or self.t[k].kind == "punct" or self:word(k, "and @then_words"))
-    and self:intent_at(self:skip_fillers(e, false)) ~= nil
+    and self.t[after] ~= nil and self.t[after].kind ~= "punct" and self:intent_at(after) ~= nil
+  -- (never in apposition to an aircraft named before it that has no instruction yet: "DAL1960, the one at the
+  -- bottom, climb FL260" is one aircraft)
+  for _, r in ipairs(own and self.refs or {}) do
+    if r.kind == "aircraft" and r.e <= b then
+      local told = false
+      for x = r.e, b - 1 do told = told or self:intent_at(x) ~= nil end
+      own = own and told
+    end
+  end
   for _, id in ipairs(others and not own and picked or {}) do
     if not named[id] then picked = nil break end
   end

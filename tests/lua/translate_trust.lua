@@ -15896,6 +15896,11 @@ do
   check_eq(ex("the fast one speed 250"), "SPD FDX88 250")
   check_eq(ex("the Airbus that's flying east, climb FL260"), "ALT KLM12 FL260")
   check_eq(ex("Could the plane furthest east descend FL290, and also KLM12 to FL240?"), "ALT FDX88 FL290 ; ALT KLM12 FL240")
+  -- a description in apposition to an aircraft named before or after it is that aircraft, else asked: never a second
+  asked(ex("KLM12, the one furthest east, climb FL260"), "KLM12 is not the one furthest east")
+  asked(ex("KLM12, the one furthest east climb FL260"), "KLM12 is not the one furthest east")
+  asked(ex("the one furthest east, KLM12, climb FL260"), "KLM12 is not the one furthest east")
+  check_eq(ex("KLM12 climb FL260, and the one furthest east descend FL290"), "ALT KLM12 FL260 ; ALT FDX88 FL290")
   -- a side said after the turn's value with no correction marker ("that" alone is none) is no turn's side
   check_eq(ex("KLM12 turn left heading 060. That's the Airbus, right?"), "HDG KLM12 60 LEFT")
   check_eq(ex("KLM12 turn left heading 060, make that right"), "HDG KLM12 60 RIGHT")
