@@ -1764,6 +1764,13 @@ function m:type_named(i, after_airline)
   if nick and t.text == "max" and (MAX_OF[self.t[i + 1] and self.t[i + 1].text or ""] or self:word(i - 2, "at to")) then
     return nil
   end
+  -- (a role, "the helicopter", "the trijet": an aircraft of a type the type data does not know may be one too, so
+  -- it fits as well and the words are asked about, naming both)
+  local types = require("translate.types")
+  if nick and types.role_words[t.text] then
+    local fits = pattern_of(nick)
+    return function(d) return fits(d) or not types.known_designator(d) end, i + 1
+  end
   if nick then return pattern_of(nick), i + 1 end
   return nil
 end
@@ -2168,6 +2175,8 @@ function m:described_refs()
             or (not plain and values[1].v - values[2].v > L.compared_margin[field])) then
         picked = { values[1].id }
       end
+      -- (a plain word that picks no one is left as said: "He is the fast one in this scenario" is a remark)
+      if plain and not picked then ids, e = nil, nil end
     elseif the and self:head_on_at(COUNTS[self.t[i].text] == 2 and i + 1 or i) then
       -- ("the two head-on ones", "the head-on pair", "the two head-on aircraft": the pair flying head-on,
       -- m:head_on_pairs; a count of two or a plural noun or "pair" after the words)

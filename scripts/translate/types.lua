@@ -193,6 +193,20 @@ M.nicknames = {
 
 -- ("the helicopter", "the chopper", "the turboprop"): a role named by the performance models' class of a type
 -- (squawk.sim.types()' class) is every designator of that class
+-- M.role_words: the nicknames that name a role or class rather than a family (an aircraft of an unknown type may be
+-- one); M.known_designator(d): true for a designator the type data or names.designators know
+M.role_words = { helicopter = true, chopper = true, helo = true, turboprop = true, trijet = true, ["tri-jet"] = true }
+local known_designators
+function M.known_designator(d)
+  if not known_designators then
+    known_designators = {}
+    for _, t in ipairs(squawk and squawk.sim and squawk.sim.types and squawk.sim.types() or {}) do
+      known_designators[t.designator:upper()] = true
+    end
+    for _, x in ipairs(require("translate.names").designators) do known_designators[x] = true end
+  end
+  return known_designators[d] == true
+end
 do
   local CLASS_WORDS = { helicopter = "helicopter", chopper = "helicopter", helo = "helicopter", turboprop = "turboprop" }
   local list = squawk and squawk.sim and squawk.sim.types and squawk.sim.types() or {}

@@ -15936,6 +15936,14 @@ do
   check_eq(ex("the aircraft farthest south, climb FL260"), "ALT KLM12 FL260")
 end
 do
+  -- an aircraft of a type the type data does not know may be the helicopter too: asked, naming both
+  local _, ex = scene({ "CRE NOR12 S92 57.4 -1.5 250 3000 140", "CRE CHC7 EC25 57.15 -1.2 270 2000 130",
+    "CRE LOG8 E145 56.95 -2.05 330 FL070 230" })
+  asked(ex("could the helicopter turn left heading 240 please"), "EC25 is unknown to the type data")
+  -- a plain word of state that picks no one is left as said (a remark), never a description asked
+  check_eq(ex("LOG8 speed 240. He is the fast one today."), "SPD LOG8 240")
+end
+do
   -- the head-on pair: opposite headings, each pointing at the other, less than 1000 ft apart
   local _, ex = scene({ "CRE AAL105 A319 52.0 4.0 090 FL200 280", "CRE BAW27 A320 52.0 5.0 270 FL200 280",
     "CRE DAL388 B738 51.7 4.6 360 FL220 270", "CRE EZY49 A320 52.3 4.6 180 FL180 270" })
