@@ -1271,11 +1271,15 @@ function m:airline_refs()
       i = i + 1  -- (no airline named at i)
     else
       local nxt = self.t[e]
-      local prev = self.t[i - 1]
-      local the = prev and prev.kind == "word" and prev.text == "the" and not second_between(self, i - 2)
-          and (not self:other_traffic_before(i - 2)
+      -- ("the big FedEx trijet", "the little Jazz": a size word between "the" and the airline narrows nothing;
+      -- `p`: the token after "the")
+      local p = self:word(i - 1, "big little small large") and self:word(i - 2, "the") and i - 1 or i
+      local prev = self.t[p - 1]
+      local the = prev and prev.kind == "word" and prev.text == "the" and not second_between(self, p - 2)
+          and (not self:other_traffic_before(p - 2)
             or self:word(e, "@route_nouns")  -- "add X to the KLM's route" (the lexer drops "'s")
-            or self:added_to(i - 2, e) or self:given_to(i - 2) or self:same_opening(i))
+            or self:added_to(p - 2, e) or self:given_to(p - 2) or self:same_opening(i))
+      if the and p < i then self:explain(p, i) end
       -- ("the regional jet from Republic, climb ...", "the plane from Delta": "the", words of an aircraft described
       -- and "from" before the airline capitalised name its aircraft, as "the Republic jet" does; `from_the`: the
       -- position of that "the")
@@ -1821,6 +1825,13 @@ function m:type_named(i, after_airline)
   if nick and t.text == "max" and (MAX_OF[self.t[i + 1] and self.t[i + 1].text or ""] or self:word(i - 2, "at to")) then
     return nil
   end
+  -- (a role, "the helicopter", "the trijet": an aircraft of a type the type data does not know may be one too, so
+  -- it fits as well and the words are asked about, naming both)
+  local types = require("translate.types")
+  if nick and types.role_words[t.text] then
+    local fits = pattern_of(nick)
+    return function(d) return fits(d) or not types.known_designator(d) end, i + 1
+  end
   if nick then return pattern_of(nick), i + 1 end
   return nil
 end
@@ -1971,6 +1982,12 @@ function m:type_refs()
       table.insert(self.type_unresolved, { b = b, e = e, ids = fits, called = called })
     end
     local read = #fits == 1 and not called
+    -- ("the Embraer one": "one" after the type, no number or letter after it, is the pronoun, part of the words)
+    local nx = self.t[e + 1]
+    if read and the and self:word(e, "one") and not (nx and (nx.kind == "number" or nx.number_word
+        or L.phonetic[nx.text] or self:word(e + 1, "heavy super"))) then
+      e = e + 1
+    end
     if read then  -- (its numbers too: "where's the 777")
       self:explain(b, e)
       self:mark_used(i, e)
@@ -2076,7 +2093,24 @@ local function describe(self, b, e, ids, picked, outer)
       named[r.name], others = true, true
     end
   end
-  for _, id in ipairs(others and picked or {}) do
+  -- (a description opening a clause of its own with an instruction straight after it, "could the one at the
+  -- bottom of the screen climb to FL250, and also the Copa to FL230", names the aircraft it picks, named or not)
+  local k = b - 1
+  if self:word(k, "could can would will please") and (k == 1 or self.t[k - 1].kind == "punct") then k = k - 1 end
+  if self:word(k, "also") then k = k - 1 end
+  local after = self:skip_fillers(e, false)
+  local own = (k < 1 or self.t[k].kind == "punct" or self:word(k, "and @then_words"))
+    and self.t[after] ~= nil and self.t[after].kind ~= "punct" and self:intent_at(after) ~= nil
+  -- (never in apposition to an aircraft named before it that has no instruction yet: "DAL1960, the one at the
+  -- bottom, climb FL260" is one aircraft)
+  for _, r in ipairs(own and self.refs or {}) do
+    if r.kind == "aircraft" and r.e <= b then
+      local told = false
+      for x = r.e, b - 1 do told = told or self:intent_at(x) ~= nil end
+      own = own and told
+    end
+  end
+  for _, id in ipairs(others and not own and picked or {}) do
     if not named[id] then picked = nil break end
   end
   if not (picked and #picked > 0) then
@@ -2091,7 +2125,7 @@ local function describe(self, b, e, ids, picked, outer)
     self:explain(outer.b, outer.e)
     self:mark_used(outer.b, outer.e)
   end
-  if not others then
+  if not others or own then
     for n = #self.refs, 1, -1 do
       if self.refs[n].b >= b and self.refs[n].e <= e then table.remove(self.refs, n) end
     end
@@ -2164,6 +2198,13 @@ function m:described_refs()
   local i = 2
   while i <= #self.t do
     local b, measure = i - 1, self.t[i].kind == "word" and L.compared_measures[self.t[i].text]
+    -- ("the slow one": a plain word of lexicon.compared_plain before "one" or an aircraft noun, by a clear lead;
+    -- never "of" a group after it, "the slow one of the stream", nor in a request that creates, where it
+    -- describes the new aircraft)
+    local plain = not measure and self.t[i].kind == "word" and L.compared_plain[self.t[i].text]
+      and self:word(i + 1, "one @aircraft_nouns") and not self:word(i + 2, "of")
+      and not self:said("@creation_verbs") and L.compared_plain[self.t[i].text]
+    measure = measure or plain
     local the = self:word(b, "the") and not self:other_traffic_before(b - 1) and not (self.positioned or {})[b]
     local ids, e, count, picked, outer
     if the and measure then
@@ -2191,8 +2232,24 @@ function m:described_refs()
       end
       table.sort(values, function(x, y) return x.v > y.v end)
       if ids and #values == #ids and #ids >= (self.t[i].text:match("er$") and 2 or 1) and (not count or count == #ids)
-          and (not values[2] or values[1].v - values[2].v > L.compared_margin[field]) then
+          and (not values[2] or (plain and values[1].v - values[2].v >= L.compared_plain_margin[field])
+            or (not plain and values[1].v - values[2].v > L.compared_margin[field])) then
         picked = { values[1].id }
+      end
+      -- (a plain word that picks no one is left as said: "He is the fast one in this scenario" is a remark)
+      if plain and not picked then ids, e = nil, nil end
+    elseif the and self:head_on_at(COUNTS[self.t[i].text] == 2 and i + 1 or i) then
+      -- ("the two head-on ones", "the head-on pair", "the two head-on aircraft": the pair flying head-on,
+      -- m:head_on_pairs; a count of two or a plural noun or "pair" after the words)
+      local two = COUNTS[self.t[i].text] == 2
+      local k = self:head_on_at(two and i + 1 or i)
+      local noun = self:word(k, "ones pair planes aircraft jets flights traffic")
+      if noun or two then
+        local pairs = self:head_on_pairs()
+        ids, e, count, picked = {}, noun and k + 1 or k, 2, nil
+        for _, pr in ipairs(pairs) do ids[#ids + 1], ids[#ids + 2] = pr[1], pr[2] end
+        if #pairs == 1 then picked = ids end
+        if #ids == 0 then ids = nil end
       end
     elseif the then
       -- ("the aircraft at flight level 230", "the two aircraft at FL250": a count, an aircraft noun, "at" a level)
@@ -2210,6 +2267,36 @@ function m:described_refs()
     end
     i = e and describe(self, b, e, ids, picked, outer) or i + 1
   end
+end
+
+-- The token after "head-on" said at k (the lexer splits it: "head on"), or nil.
+function m:head_on_at(k)
+  if self:word(k, "head-on") then return k + 1 end
+  if self:word(k, "head") and self:word(k + 1, "on") then return k + 2 end
+end
+
+-- The pairs of aircraft flying head-on ({id, id} in the fleet's order): headings within lexicon.head_on_deg of
+-- opposite, each pointing at the other (the bearing to the other within head_on_deg of its heading), and less
+-- than lexicon.head_on_ft apart in level (opposite tracks 2000 ft apart are no head-on pair).
+function m:head_on_pairs()
+  local out, tol = {}, L.head_on_deg
+  local function off(a, b) return math.abs((a - b + 540) % 360 - 180) end
+  local function bearing(a, b)
+    local dlat, dlon = b.lat - a.lat, (b.lon - a.lon) * math.cos(math.rad((a.lat + b.lat) / 2))
+    return math.deg(math.atan(dlon, dlat)) % 360
+  end
+  local fleet = self.fleet
+  for x = 1, #fleet do
+    for y = x + 1, #fleet do
+      local a, b = fleet[x], fleet[y]
+      if a.lat and b.lat and a.hdg_deg and b.hdg_deg and off(a.hdg_deg, (b.hdg_deg + 180) % 360) <= tol
+          and off(bearing(a, b), a.hdg_deg) <= tol and off(bearing(b, a), b.hdg_deg) <= tol
+          and a.alt_ft and b.alt_ft and math.abs(a.alt_ft - b.alt_ft) < L.head_on_ft then
+        out[#out + 1] = { a.id, b.id }
+      end
+    end
+  end
+  return out
 end
 
 -- The compass point said from token k: one word ("south", "southwest"), two or three with or without hyphens
@@ -2251,6 +2338,12 @@ local function heading_toward(self, ids, point)
   end
   if #fits == 1 and #near > 1 then return near end
   return fits
+end
+
+-- True when the token at k is "that" or "which" of "that's"/"which's" before a verb of going or coming (the
+-- lexer drops "'s": "the Airbus that's heading east" is read "that heading").
+function m:relative_is(k)
+  return self:word(k, "that which") and self:word(k + 1, "@compass_verbs @compass_from_verbs")
 end
 
 -- The way an aircraft flies, said from token v (bearing_refs, position_refs): a verb of going (lexicon.compass_verbs),
@@ -2301,7 +2394,8 @@ function m:bearing_refs()
         point = e and L.compass[bound]
       else
         ids, e = compared_group(self, i + 1)
-        local v = e and (self:word(e, "that which") and self:word(e + 1, "is") and e + 2 or e)
+        local v = e and (self:word(e, "that which") and self:word(e + 1, "is") and e + 2
+          or self:relative_is(e) and e + 1 or e)
         if v then point, e = self:way_said(v) end
         e = point and e
       end
@@ -2311,7 +2405,21 @@ function m:bearing_refs()
     if o_ids then ids = within(ids, o_ids) end  -- ("of the two Air France, the one heading west")
     if point and e then
       local fits = heading_toward(self, ids, point)
-      i = describe(self, b, e, #fits > 0 and fits or ids, #fits == 1 and fits or nil, outer)
+      local picked = #fits == 1 and fits or nil
+      -- ("Could the jumbo climb to FL340? It's the one going east, I think.": said after "it's"/"that's" with no
+      -- instruction after it, the words describe the aircraft named elsewhere; several fitting, of which exactly
+      -- that one is named, it is the one meant)
+      local remark = self:word(b - 1, "it that") or (self:word(b - 1, "is") and self:word(b - 2, "it that"))
+      if #fits > 1 and remark and not self:intent_at(self:skip_fillers(e, false)) then
+        local named = {}
+        for _, r in ipairs(self.refs) do
+          if r.kind == "aircraft" and r.exists and (r.e <= b or r.b >= e) then named[r.name] = true end
+        end
+        local one = {}
+        for _, id in ipairs(fits) do if named[id] then one[#one + 1] = id end end
+        if #one == 1 then picked = one end
+      end
+      i = describe(self, b, e, #fits > 0 and fits or ids, picked, outer)
     else
       i = i + 1
     end
@@ -2382,6 +2490,18 @@ end
 local function side_said(self, k)
   local x = k
   while screen(self, x, "leaning") do x = x + 1 end
+  -- ("furthest north", "farthest to the south", "the most westerly", "most to the east": the one furthest along
+  -- that side, as "at the top" reads)
+  local most = self:word(x, "furthest farthest most") and x + 1
+  if most then
+    local y = self:word(most, "to") and most + 1 or most
+    if self:word(y, "the") then y = y + 1 end
+    local deg, pe = self:point_said(y)
+    local ly = not deg and self.words[y] and self.words[y]:match("^(%a+)erly$")
+    if ly and L.compass[ly] and L.compass[ly] % 90 == 0 then deg, pe = L.compass[ly], y + 1 end
+    if deg then return { dir = { math.sin(math.rad(deg)), math.cos(math.rad(deg)) } }, pe end
+    return nil
+  end
   local near = screen(self, x, "near") and x + 1
     or screen(self, x, "near_to") and self:word(x + 1, "to") and x + 2
   if near and not self:word(near, "the") then
@@ -2457,6 +2577,11 @@ local function description_part(self, b)
   if self:word(b, "the") then
     x = b + 1
     while self.t[x] and SIZE_WORDS[self.t[x].text] do x = x + 1 end
+    -- ("the furthest east aircraft", "the most westerly one": the superlative of position before the group)
+    if self:word(x, "furthest farthest most") then
+      local spec, se = side_said(self, x)
+      if spec then part.sides[1], x = { spec = spec, b = x, e = se }, se end
+    end
     local ids, e, count = compared_group(self, x)
     if not ids or count then return nil end  -- ("the two Boeings" are no one aircraft)
     local test, te = self:type_said(e)
@@ -2476,7 +2601,7 @@ local function description_part(self, b)
       part.sides[#part.sides + 1] = { spec = spec, b = x, e = e }
       x = e
     else
-      local v = self:word(x, "that which") and self:word(x + 1, "is") and x + 2 or x
+      local v = self:word(x, "that which") and self:word(x + 1, "is") and x + 2 or self:relative_is(x) and x + 1 or x
       local point
       point, e = self:way_said(v)
       -- ("which is the highest now", "flying south and slowest": a superlative of lexicon.compared_measures)
@@ -2600,7 +2725,7 @@ end
 -- bearing_refs, which leave the words read here alone (self.positioned).
 function m:position_refs()
   if not self:said("the") then return end
-  local said = self:said("@compass @compass_verbs @compass_from_verbs @compared_measures")
+  local said = self:said("@compass @compass_verbs @compass_from_verbs @compared_measures furthest farthest most")
   for k = 1, #self.t do said = said or screen(self, k, "at") or screen(self, k, "near") or screen(self, k, "near_to") end
   if not said then return end
   self.positioned = self.positioned or {}

@@ -5,12 +5,28 @@
 return function(H, f, wrap, compass)
   local m = H.methods
   local L = require("translate.lexicon")
-  -- the words of lexicon.self_correction.markers, a word list (G:word's form)
-  local SIDE_MARKERS = {}
+  -- the one-word markers of lexicon.self_correction.markers, a word list (G:word's form), and the markers of
+  -- several words as lists of their words ("make that": "that" alone, "That's the Air France, right?", marks
+  -- no correction)
+  local SIDE_MARKERS, SIDE_PHRASES = {}, {}
   for _, marker in ipairs(L.self_correction.markers) do
-    for w in marker:gmatch("%a+") do SIDE_MARKERS[#SIDE_MARKERS + 1] = w end
+    local words = {}
+    for w in marker:gmatch("%a+") do words[#words + 1] = w end
+    if #words == 1 then SIDE_MARKERS[#SIDE_MARKERS + 1] = words[1] else SIDE_PHRASES[#SIDE_PHRASES + 1] = words end
   end
   SIDE_MARKERS = table.concat(SIDE_MARKERS, " ")
+  -- True when a self-correction marker is said in [b, e).
+  local function marker_in(self, b, e)
+    if self:word_in(b, e, SIDE_MARKERS) then return true end
+    for k = b, e - 1 do
+      for _, words in ipairs(SIDE_PHRASES) do
+        local all = k + #words <= e
+        for n = 1, all and #words or 0 do all = all and self.words[k + n - 1] == words[n] end
+        if all then return true end
+      end
+    end
+    return false
+  end
 
   function m:infer(s)
     local qs = self:quantities(s.b, s.e)
@@ -812,7 +828,7 @@ return function(H, f, wrap, compass)
     local value_end = (abs and abs.e) or (rel and rel.e) or s.e
     for x = first + 1, first < s.e and s.e - 1 or 0 do
       if self:word(x, "@left @right") and self.words[x] ~= self.words[first] and not self.noted[x] then
-        if self:word_in(first + 1, x, SIDE_MARKERS) then
+        if marker_in(self, first + 1, x) then
           turn, tb = self:word(x, "@right") and 1 or -1, x
         elseif x < value_end then
           return self:need(string.format("Should %s turn left or right? I heard '%s' and '%s'.", ids[1],
@@ -837,7 +853,7 @@ return function(H, f, wrap, compass)
     local from = kept and (self:word(kept - 1, "your its the") and kept - 2 or kept - 1)
     if kept and kept < s.e and not self:word(from, "from of off") then
       -- (said with no marker, "turn right heading 200, continue present heading", which one stands is unclear)
-      if not self:word_in(said_value.e, kept, SIDE_MARKERS .. " @correction")
+      if not (marker_in(self, said_value.e, kept) or self:word_in(said_value.e, kept, "@correction"))
           or self:word_in(said_value.e, s.e, "@left @right") then
         return self:need(string.format("Should %s turn, or keep its present heading? I heard '%s'.", ids[1],
           (self:raw(s.trig, s.e):gsub(" ([,.;:])", "%1"))))

@@ -1062,6 +1062,14 @@ return {
     northernmost = { "lat", 1 }, southernmost = { "lat", -1 }, easternmost = { "lon", 1 }, westernmost = { "lon", -1 } },
   -- (lat, lon: degrees, about a mile)
   compared_margin = { alt_ft = 100, cas_kt = 5, lat = 0.02, lon = 0.02 },
+  -- the plain words that describe one aircraft by its state before "one" or an aircraft noun ("the slow one", "the
+  -- high aircraft"), read as the superlative, and how far the aircraft picked must lead the next for the plain
+  -- word to fit it alone (ft, kt: at least this)
+  compared_plain = { slow = { "cas_kt", -1 }, fast = { "cas_kt", 1 }, low = { "alt_ft", -1 }, high = { "alt_ft", 1 } },
+  compared_plain_margin = { alt_ft = 2000, cas_kt = 20 },
+  -- [deg] two aircraft fly head-on ("the two head-on ones") when their headings lie within this of opposite and
+  -- each heads within this of the bearing to the other, and fly less than head_on_ft [ft] apart in level
+  head_on_deg = 20, head_on_ft = 1000,
   -- where an aircraft is on the north-up screen or map (handlers: position_refs; accounted for only where that
   -- reads them, so "at the top of the hour" stays asked): a side's words and its direction {east, north} (two make
   -- a corner: "the top left"); the words of the traffic's centre; the nouns a side may end with ("the top left

@@ -104,7 +104,11 @@ local function pattern_names(d)
   -- (the 747's last series is named by its digit alone, as the 787s are: "747-8", "747-8i")
   if d == "B748" then out[#out + 1] = { "boeing", "747-8" }; out[#out + 1] = { "boeing", "747-8i" } end
   if d == "B77W" then out[#out + 1] = { "boeing", "777-300er" } end
-  if d == "B77L" then out[#out + 1] = { "boeing", "777-200lr" } end
+  -- (the 777 freighter, 777F, flies under the 777-200LR's designator)
+  if d == "B77L" then
+    out[#out + 1] = { "boeing", "777-200lr" }; out[#out + 1] = { "boeing", "777f" }
+    out[#out + 1] = { "boeing", "777 freighter" }
+  end
   if d == "A35K" then out[#out + 1] = { "airbus", "a350-1000" } end
   local c = d:match("^CRJ(%d)$")
   if c then
@@ -182,7 +186,38 @@ M.nicknames = {
   -- ARJ21, BAe 146 / Avro RJ, Fokker 70/100, Dornier 328JET; no turboprop)
   ["regional jet"] = { "^CRJ%w$", "^E1[79][05]$", "^E75%u$", "^E29[05]$", "^E1[34]5$", "^E[34]5%u$", "^SU95$",
     "^AJ27$", "^B46[123]$", "^RJ%w%w$", "^F70$", "^F100$", "^J328$" },
+  -- ("the trijet": an airliner or business jet with three engines: MD-11, DC-10, TriStar, 727, Falcon 50/900/7X/8X)
+  trijet = { "^MD11$", "^DC10$", "^L101$", "^B72%w$", "^FA50$", "^F900$", "^FA[78]X$" },
+  ["tri-jet"] = { "^MD11$", "^DC10$", "^L101$", "^B72%w$", "^FA50$", "^F900$", "^FA[78]X$" },
 }
+
+-- ("the helicopter", "the chopper", "the turboprop"): a role named by the performance models' class of a type
+-- (squawk.sim.types()' class) is every designator of that class
+-- M.role_words: the nicknames that name a role or class rather than a family (an aircraft of an unknown type may be
+-- one); M.known_designator(d): true for a designator the type data or names.designators know
+M.role_words = { helicopter = true, chopper = true, helo = true, turboprop = true, trijet = true, ["tri-jet"] = true }
+local known_designators
+function M.known_designator(d)
+  if not known_designators then
+    known_designators = {}
+    for _, t in ipairs(squawk and squawk.sim and squawk.sim.types and squawk.sim.types() or {}) do
+      known_designators[t.designator:upper()] = true
+    end
+    for _, x in ipairs(require("translate.names").designators) do known_designators[x] = true end
+  end
+  return known_designators[d] == true
+end
+do
+  local CLASS_WORDS = { helicopter = "helicopter", chopper = "helicopter", helo = "helicopter", turboprop = "turboprop" }
+  local list = squawk and squawk.sim and squawk.sim.types and squawk.sim.types() or {}
+  for word, class in pairs(CLASS_WORDS) do
+    local patterns = {}
+    for _, t in ipairs(list) do
+      if t.class == class then patterns[#patterns + 1] = "^" .. t.designator:upper() .. "$" end
+    end
+    if #patterns > 0 then M.nicknames[word] = patterns end
+  end
+end
 
 function M.build(designators)
   local rows, seen, phrases, known, makers = {}, {}, {}, {}, {}
@@ -412,6 +447,8 @@ function M.spoken(text, built, phonetic)
         if not v and short_name(built, fam, short_variant(bare(j))) then v = short_variant(bare(j)) end
         if v and v:match("%d$") and open(k - 1) and (bare(k) == "er" or bare(k) == "lr") then v, k = v .. bare(k), k + 1 end
         local name = v and fam .. "-" .. v
+        -- ("triple seven freighter": the family's freighter where one designator is named so, B77L)
+        if not v and bare(j) == "freighter" and built.known[fam .. " freighter"] then name, k = fam .. " freighter", j + 1 end
         if name and built.known[name] then best = { name = name .. (toks[k - 1]:match("%p+$") or ""), e = k } end
       end
     end

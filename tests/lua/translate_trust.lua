@@ -16155,3 +16155,95 @@ do
   -- a question with an instruction after it is still asked about
   asked(ex("what is the Air Busan speed now? reduce to 250"), "a question before an instruction")
 end
+-- Cycle 56 (fdsc): aircraft named by description: a role or class of type (helicopter, turboprop, trijet), a size
+-- word before the airline, "the <type> one", a superlative of position ("furthest north", "most to the south") or
+-- a plain word of state ("the slow one") by a clear lead, "the Airbus that's heading east", the head-on pair, a
+-- description opening its own clause beside another aircraft named; "That's the Airbus, right?" turns no one right;
+-- "a triple seven freighter" is a B77L
+do
+  local _, ex = scene({ "CRE KLM12 A320 52.0 4.0 090 FL250 280", "CRE PHHEL EC35 52.3 4.8 000 1500 110",
+    "CRE BEE21 DH8D 52.6 4.2 200 9000 220", "CRE FDX88 MD11 52.1 5.1 270 FL310 300",
+    "CRE KLM77 E190 51.8 4.5 180 FL190 260" })
+  check_eq(ex("Would the helicopter please descend to 1000 feet?"), "ALT PHHEL 1000")
+  check_eq(ex("the chopper, turn right heading 180"), "HDG PHHEL 180 RIGHT")
+  check_eq(ex("please delete the helicopter"), "DEL PHHEL")
+  check_eq(ex("Could you kindly climb the turboprop to 11000 feet?"), "ALT BEE21 11000")
+  check_eq(ex("the big FedEx trijet, speed 280 please"), "SPD FDX88 280")
+  check_eq(ex("the trijet reduce to Mach .80 if that's ok"), "SPD FDX88 M0.8")
+  check_eq(ex("I'd like the KLM Embraer one to turn left 10 degrees"), "HDG KLM77 170 LEFT")
+  check_eq(ex("could the aircraft furthest north climb to FL110"), "ALT BEE21 FL110")
+  check_eq(ex("the plane farthest to the east, descend FL290"), "ALT FDX88 FL290")
+  check_eq(ex("the one most to the south climb FL200"), "ALT KLM77 FL200")
+  check_eq(ex("the most easterly aircraft, please climb FL330"), "ALT FDX88 FL330")
+  check_eq(ex("could the furthest north plane climb FL110"), "ALT BEE21 FL110")
+  check_eq(ex("the most southerly KLM, climb FL200"), "ALT KLM77 FL200")
+  -- the furthest of a group on the other side of the traffic's centre: asked
+  asked(ex("the most northerly KLM, climb FL200"), "KLM12 is in the south half")
+  check_eq(ex("the fast one speed 250"), "SPD FDX88 250")
+  check_eq(ex("the Airbus that's flying east, climb FL260"), "ALT KLM12 FL260")
+  check_eq(ex("Could the plane furthest east descend FL290, and also KLM12 to FL240?"), "ALT FDX88 FL290 ; ALT KLM12 FL240")
+  -- a description in apposition to an aircraft named before or after it is that aircraft, else asked: never a second
+  asked(ex("KLM12, the one furthest east, climb FL260"), "KLM12 is not the one furthest east")
+  asked(ex("KLM12, the one furthest east climb FL260"), "KLM12 is not the one furthest east")
+  asked(ex("the one furthest east, KLM12, climb FL260"), "KLM12 is not the one furthest east")
+  check_eq(ex("KLM12 climb FL260, and the one furthest east descend FL290"), "ALT KLM12 FL260 ; ALT FDX88 FL290")
+  -- a side said after the turn's value with no correction marker ("that" alone is none) is no turn's side
+  check_eq(ex("KLM12 turn left heading 060. That's the Airbus, right?"), "HDG KLM12 60 LEFT")
+  check_eq(ex("KLM12 turn left heading 060, make that right"), "HDG KLM12 60 RIGHT")
+  -- a way it flies said as a remark after "it's"/"that's": the aircraft named, when it is one of those that fit
+  do
+    local _, ex3 = scene({ "CRE KLM12 A320 52.0 4.0 090 FL250 280", "CRE DLH5 B748 52.3 4.8 080 FL330 290",
+      "CRE SAS9 CRJ9 52.6 4.2 260 FL210 260" })
+    check_eq(ex3("Would the jumbo climb FL350? It's the one flying east, I believe."), "ALT DLH5 FL350")
+    check_eq(ex3("DLH5 climb FL350, that's the one heading east"), "ALT DLH5 FL350")
+    asked(ex3("Would the jumbo climb FL350? It's the one flying west, I believe."), "the jumbo flies east")
+    asked(ex3("the jumbo climb FL350 and the one flying east descend FL200"), "an instruction of its own")
+  end
+  -- a description of an aircraft other than the one named, said as a remark: asked
+  asked(ex("KLM12 climb FL260, it's the one furthest east"), "the one furthest east is FDX88, not KLM12")
+  -- what an aircraft carries is still not told by the traffic
+  asked(ex("the freighter climb FL330"), "a freighter is no type")
+  asked(ex("the big Delta climb FL200"), "no Delta flying")
+  check_eq(ex("create UPS77, a triple seven freighter, at 52.5 4.5 heading 120 FL170 290"),
+    "CRE UPS77 B77L 52.5 4.5 120 FL170 290")
+end
+do
+  -- two of a class, near ties of position and of state: asked, naming them
+  local _, ex = scene({ "CRE KLM12 A320 52.0 4.0 090 FL250 280", "CRE PHHEL EC35 52.3 4.8 000 1500 110",
+    "CRE PHHE2 H135 52.1 4.3 000 1500 110", "CRE BEE21 DH8D 52.6 4.2 200 9000 220",
+    "CRE BEE22 AT76 52.59 4.6 200 9000 225", "CRE FDX88 MD11 52.1 5.1 270 FL310 300",
+    "CRE DLH3 B763 52.11 5.09 270 FL310 290" })
+  asked(ex("Would the helicopter please descend to 1000 feet?"), "two helicopters")
+  asked(ex("the turboprop climb FL100"), "two turboprops")
+  asked(ex("could the aircraft furthest north climb to FL110"), "BEE21 and BEE22 are level north")
+  asked(ex("the one furthest east descend FL290"), "FDX88 and DLH3 are level east")
+  asked(ex("the slow one climb FL100"), "two at 110 kt")
+  check_eq(ex("the trijet climb FL330"), "ALT FDX88 FL330")
+  check_eq(ex("the aircraft farthest south, climb FL260"), "ALT KLM12 FL260")
+end
+do
+  -- an aircraft of a type the type data does not know may be the helicopter too: asked, naming both
+  local _, ex = scene({ "CRE NOR12 S92 57.4 -1.5 250 3000 140", "CRE CHC7 EC25 57.15 -1.2 270 2000 130",
+    "CRE LOG8 E145 56.95 -2.05 330 FL070 230" })
+  asked(ex("could the helicopter turn left heading 240 please"), "EC25 is unknown to the type data")
+  -- a plain word of state that picks no one is left as said (a remark), never a description asked
+  check_eq(ex("LOG8 speed 240. He is the fast one today."), "SPD LOG8 240")
+end
+do
+  -- the head-on pair: opposite headings, each pointing at the other, less than 1000 ft apart
+  local _, ex = scene({ "CRE AAL105 A319 52.0 4.0 090 FL200 280", "CRE BAW27 A320 52.0 5.0 270 FL200 280",
+    "CRE DAL388 B738 51.7 4.6 360 FL220 270", "CRE EZY49 A320 52.3 4.6 180 FL180 270" })
+  local function sorted(text)
+    local parts = {}
+    for part in text:gmatch("[^;]+") do parts[#parts + 1] = part:match("^%s*(.-)%s*$") end
+    table.sort(parts)
+    return table.concat(parts, " ; ")
+  end
+  check_eq(sorted(ex("Could the two head-on ones both turn left fifteen degrees please?")),
+    "HDG AAL105 75 LEFT ; HDG BAW27 255 LEFT")
+  check_eq(sorted(ex("the head-on pair, climb FL240")), "ALT AAL105 FL240 ; ALT BAW27 FL240")
+  asked(ex("the head-on one turn left 10 degrees"), "one of a pair")
+  local _, ex2 = scene({ "CRE AAL105 A319 52.0 4.0 090 FL200 280", "CRE BAW27 A320 52.0 5.0 270 FL200 280",
+    "CRE DAL388 B738 51.7 4.6 360 FL200 270", "CRE EZY49 A320 52.3 4.6 180 FL200 270" })
+  asked(ex2("the two head-on aircraft turn right 20 degrees"), "two head-on pairs")
+end
