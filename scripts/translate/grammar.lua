@@ -3114,6 +3114,13 @@ function G:change_of(q)
   local of = q and q.b - 1
   if not (of and self:word(of, "of")) then return false end
   if self:word(of - 1, "@change_of_verbs") then return true end
+  -- ("descend the Alitalia of 2000 feet": the aircraft said between the verb and "of")
+  for _, r in ipairs(self.refs) do
+    if r.kind == "aircraft" and r.e == of then
+      local v = self:word(r.b - 1, "the") and r.b - 2 or r.b - 1
+      if self:word(v, "@change_of_verbs") then return true end
+    end
+  end
   if not self:word(of - 1, "@change_of_nouns") then return false end
   local v = self:word(of - 2, "the its") and of - 3 or of - 2
   return self:word(v, "@change_of_verbs")

@@ -16265,6 +16265,7 @@ do
   check_eq(ex("AFR7 decrease the speed of 30 knots"), "SPD AFR7 260")
   check_eq(ex("TAP55 increase its velocity of 20 kts"), "SPD TAP55 240")
   check_eq(ex("IBE31 reduce of 10 knots"), "SPD IBE31 250")
+  check_eq(ex("descend the Iberia of 1500 ft"), "ALT IBE31 12500")
   check_eq(ex("IBE31 turn on the left of 25 degrees"), "HDG IBE31 95 LEFT")
   check_eq(ex("AFR7 turn on the right of 40"), "HDG AFR7 290 RIGHT")
   check_eq(ex("TAP55, turn on the right, 30 degrees"), "HDG TAP55 40 RIGHT")
