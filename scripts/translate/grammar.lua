@@ -3108,8 +3108,32 @@ function G:alone_with_aircraft(i, skip_b, skip_e)
   return true
 end
 
--- "turn on/off ..." / "switch on ...": a switch, not a turn.
+-- True when quantity q is the size of a change said with "of" (lexicon.change_of_verbs: "go down of 2000 feet",
+-- "reduce the speed of 40 knots", "turn on the right of 30 degrees"), never a value reached.
+function G:change_of(q)
+  local of = q and q.b - 1
+  if not (of and self:word(of, "of")) then return false end
+  if self:word(of - 1, "@change_of_verbs") then return true end
+  -- ("descend the Alitalia of 2000 feet": the aircraft said between the verb and "of")
+  for _, r in ipairs(self.refs) do
+    if r.kind == "aircraft" and r.e == of then
+      local v = self:word(r.b - 1, "the") and r.b - 2 or r.b - 1
+      if self:word(v, "@change_of_verbs") then return true end
+    end
+  end
+  if not self:word(of - 1, "@change_of_nouns") then return false end
+  local v = self:word(of - 2, "the its") and of - 3 or of - 2
+  return self:word(v, "@change_of_verbs")
+end
+
+-- "turn on/off ..." / "switch on ...": a switch, not a turn. True when a switch's "on" or "off" follows the verb at
+-- i ("turn on the conflict alerts"); "on" before a side, "turn on the left, 45 degrees", "turn on the right of 30",
+-- is where the turn goes.
 function G:switch_follows(i)
+  if self:word(i + 1, "on") and (self:word(i + 2, "left right")
+      or (self:word(i + 2, "the") and self:word(i + 3, "left right"))) then
+    return false
+  end
   local stop = i + 1
   while stop <= #self.t and stop < i + 5 and not self.t[stop].number_word and not self:word(stop, "left right heading") do
     stop = stop + 1

@@ -430,6 +430,10 @@ return function(H, f, wrap, compass)
         local doubt = self:short_level_doubt(q, ft * 1000, now, dir, ids[1], verb)
         if doubt then return self:need(doubt) end
         ft = ft * 1000  -- "maintain niner (thousand)"
+      elseif ft >= 100 and ft < 1000 and (self:change_of(q) or self:change_of_corrected(q, s)) then
+        -- ("go up of 500": an amount of change, G:change_of, in hundreds of feet, or a flight level said bare?)
+        return self:need(string.format("Should %s %s by %s ft, or to %s? I heard '%s'.", ids[1], verb, f.int(ft),
+          f.alt(ft * 100, true), self:raw(q.b - 1, q.e)))
       elseif ft >= 100 and ft < 1000 and not q.number.hundred then
         ft, fl = ft * 100, true  -- "climb three five zero": a flight level
       elseif ft >= 100 and ft < 1000 and not q.by then
@@ -544,10 +548,15 @@ return function(H, f, wrap, compass)
       or (self:word(q.e, "higher lower up down") and self:word(q.e - 1, "@feet"))
       -- "another thousand feet", "a further 500 ft", "an extra 1000 ft", "climb more 1000 feet" (Portuguese "mais"):
       -- one more step of that size
-      or self:word(q.b - 1, "another further extra more"))
+      or self:word(q.b - 1, "another further extra more")
+      -- "go down of 2000 feet", "climb of 1000" (G:change_of); a value said after a correction of such an amount,
+      -- "go down of 1500 feet, no, 2000", corrects the amount (never after "to": "..., no, to 9000 feet")
+      or self:change_of(q) or self:change_of_corrected(q, s))
     -- ("climb more 37000 feet": a step of 10000 ft or more after "more" or "extra" may be the level itself, "climb
     -- more, to 37000": asked)
-    if relative and not q.by and ft >= 10000 and self:word(q.b - 1, "extra more") then
+    -- (nor is a step of 10000 ft or more said with "of", "go down of 12000 feet": G:change_of)
+    if relative and not q.by and ft >= 10000 and (self:word(q.b - 1, "extra more") or self:change_of(q)
+        or self:change_of_corrected(q, s)) then
       return self:need(string.format("Should %s %s to %s ft or by %s ft?", ids[1], verb, f.int(ft), f.int(ft)))
     end
     -- (a value said after a correction replaces a level said before it: "climb 9000... correction, 5000"
@@ -650,6 +659,25 @@ return function(H, f, wrap, compass)
     end
   end
 
+  -- True when q corrects an amount of change said with "of" before it (G:change_of), with no "to": "go down of 1500
+  -- feet... no, 2000" is 2000 ft down (the run taken back, G:self_corrected, is used: "of" is the last word before
+  -- q outside it), as is "go down of 1500 feet correction 2000".
+  function m:change_of_corrected(q, s)
+    if q.to then return false end
+    local k, number = q.b - 1, false
+    while k > s.b and self.u:used(k) do
+      number = number or self.t[k].kind == "number"
+      k = k - 1
+    end
+    if number and self:change_of({ b = k + 1 }) then return true end
+    local corr = self:last_correction(s)
+    if not corr or q.b < corr then return false end
+    for _, o in ipairs(self:quantities(s.b, corr)) do
+      if self:change_of(o) then return true end
+    end
+    return false
+  end
+
   function m:speed(s)
     local ids = self:acids(s)
     if #ids == 0 then return self:need("Which aircraft should change speed? Please give its callsign.") end
@@ -698,7 +726,10 @@ return function(H, f, wrap, compass)
           -- it down 20" are knots of change, no speed an aircraft flies; said in words, after "to" or after another
           -- verb, "reduce 25" (250 typed short?), it is still asked)
           or (q.kind == "plain" and q.number.typed and q.value >= 1 and q.value < 40 and dir ~= 0
-            and self:word(q.b - 1, "up down")) then
+            and self:word(q.b - 1, "up down"))
+          -- "reduce of 10 knots", "reduce the velocity of 40 knots" (G:change_of): a change, asked when 100 kt or
+          -- more ("reduce the speed of 250 knots": the speed itself?) or when it leaves under 40 kt
+          or ((q.kind == "speed" or q.kind == "plain") and (self:change_of(q) or self:change_of_corrected(q, s))) then
         local a = self:state(id)
         if not a or (a.cas_kt or 0) <= 0 then return self:need("What is the current speed of " .. id .. "?") end
         if dir == 0 then return self:need("Should " .. id .. " fly faster or slower?") end
@@ -710,7 +741,13 @@ return function(H, f, wrap, compass)
         end
         -- (the change's sign is its direction word's: "minus 20 knots" is 20 knots slower, never faster)
         local delta = math.abs(q.kind == "percent" and a.cas_kt * q.value / 100 or q.value)
-        spd = f.int(a.cas_kt + (dir < 0 and -delta or delta))
+        local to_kt = a.cas_kt + (dir < 0 and -delta or delta)
+        if q.kind ~= "percent" and not q.by and (delta >= 100 or to_kt < 40 or to_kt > 700)
+            and (self:change_of(q) or self:change_of_corrected(q, s)) then
+          return self:need(string.format("%s flies %s kt: should it fly %s kt, or change its speed by %s kt? I heard "
+            .. "'%s'.", id, f.int(a.cas_kt), f.int(delta), f.int(delta), self:raw(q.b - 1, q.e)))
+        end
+        spd = f.int(to_kt)
         self:as_change(q)
       else
         local kt = q.value

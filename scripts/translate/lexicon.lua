@@ -1532,6 +1532,15 @@ return {
   level_below = { "below", "under", "lower", "beneath" },
   level_above = { "above", "over", "higher" },
   relative = { "present", "current", "actual", "by" },
+  -- an amount after "of" straight after one of `change_of_verbs` ("go down of 2000 feet", "climb of 1000", "reduce
+  -- of 10 knots", "turn on the right of 30 degrees"), or after such a verb, "the" or "its" (or neither) and one of
+  -- `change_of_nouns` ("reduce the velocity of 40 knots"), is the size of the change: Italian "di", Spanish,
+  -- Portuguese and French "de", said as "of" (G:change_of). After any other word ("a level of 9000", "heading of
+  -- 270", "to a speed of 250") it is the value itself.
+  change_of_verbs = { "climb", "climbs", "climbing", "descend", "descends", "descending", "up", "down", "increase",
+                      "increases", "reduce", "reduces", "decrease", "decreases", "raise", "lower", "drop", "slow",
+                      "accelerate", "decelerate", "left", "right" },
+  change_of_nouns = { "speed", "velocity", "altitude", "level", "height", "heading" },
   -- words after an amount that name what it is counted from ("by 20 knots relative to what it is doing",
   -- "compared with what it flies now"): the present value
   counted_from = { "relative", "compared", "relatively" },

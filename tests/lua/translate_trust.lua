@@ -16247,3 +16247,43 @@ do
     "CRE DAL388 B738 51.7 4.6 360 FL200 270", "CRE EZY49 A320 52.3 4.6 180 FL200 270" })
   asked(ex2("the two head-on aircraft turn right 20 degrees"), "two head-on pairs")
 end
+
+-- Cycle 56 (frel): "of N" after a verb of change is the change (Italian "di", Spanish, Portuguese and French "de"):
+-- "go down of 2500 feet", "climb of 3000", "slow down of 15 knots", "decrease the speed of 30 knots", "turn on the
+-- left of 25 degrees"; a value after "of" that ends a noun phrase ("a level of 13000", "heading of 090", "to a
+-- speed of 230") is the value itself; a change said with "of" that leaves no sense (under the ground, under 40 kt, a
+-- step of 10000 ft or more, 100 kt or more, a bare three-digit number) is asked; "turn on the right" is a turn, no
+-- switch
+do
+  local _, ex = scene({ "CRE IBE31 A320 40.0 -3.0 120 FL140 260", "CRE AFR7 A321 40.3 -3.4 250 FL230 290",
+    "CRE TAP55 A319 40.6 -3.1 010 7000 220", "CRE PHABC C172 40.1 -3.2 180 2500 95" })
+  check_eq(ex("IBE31 go down of 2500 feet please"), "ALT IBE31 11500")
+  check_eq(ex("the Iberia, descend of 3000"), "ALT IBE31 11000")
+  check_eq(ex("AFR7 climb of three thousand feet"), "ALT AFR7 26000")
+  check_eq(ex("could you make TAP55 go up of 1000 ft?"), "ALT TAP55 8000")
+  check_eq(ex("AFR7 slow down of 15 knots and descend of 2000 feet"), "SPD AFR7 275 ; ALT AFR7 21000")
+  check_eq(ex("AFR7 decrease the speed of 30 knots"), "SPD AFR7 260")
+  check_eq(ex("TAP55 increase its velocity of 20 kts"), "SPD TAP55 240")
+  check_eq(ex("IBE31 reduce of 10 knots"), "SPD IBE31 250")
+  check_eq(ex("descend the Iberia of 1500 ft"), "ALT IBE31 12500")
+  check_eq(ex("IBE31 turn on the left of 25 degrees"), "HDG IBE31 95 LEFT")
+  check_eq(ex("AFR7 turn on the right of 40"), "HDG AFR7 290 RIGHT")
+  check_eq(ex("TAP55, turn on the right, 30 degrees"), "HDG TAP55 40 RIGHT")
+  check_eq(ex("IBE31 turn on the left heading 070"), "HDG IBE31 70 LEFT")
+  -- a correction of an amount said with "of" corrects the amount; "to" after the correction is a level
+  check_eq(ex("AFR7 go down of 1000 feet... no, sorry, 3000"), "ALT AFR7 20000")
+  check_eq(ex("AFR7 go down of 1000 feet, no, to 15000 feet"), "ALT AFR7 15000")
+  -- "of" ending a noun phrase names the value itself
+  check_eq(ex("IBE31 climb to a level of 16000 feet"), "ALT IBE31 16000")
+  check_eq(ex("AFR7 reduce to a speed of 230 knots"), "SPD AFR7 230")
+  check_eq(ex("IBE31 turn left heading of 090"), "HDG IBE31 90 LEFT")
+  -- changes that leave no sense are asked, never flown as the value said
+  asked(ex("TAP55 go down of 8000 feet"), "8000 ft down from 7000 ft is under the ground")
+  asked(ex("IBE31 descend of 11000 feet"), "a step of 10000 ft or more")
+  asked(ex("AFR7 reduce the speed of 240 knots"), "a change of 100 kt or more: the speed itself?")
+  asked(ex("PHABC slow down of 60 knots"), "95 kt less 60 is under 40 kt")
+  asked(ex("IBE31 go up of 600"), "a bare three digits after 'of': 600 ft or FL600?")
+  asked(ex("IBE31 turn on the right of 190"), "a turn of 190 degrees or heading 190?")
+  -- "turn on" a switch is still a switch
+  check(not ex("turn on the conflict detection"):match("HDG"), "a switch turned on is no turn")
+end
