@@ -402,6 +402,12 @@ local names = {
     { "brunei", "RBA" },
     { "royal brunei", "RBA" },
     { "bangkok air", "BKP" },
+    -- Thailand's airlines by their ICAO telephony: Thai AirAsia (AIQ, "Thai Asia"), Thai Smile (THD), Thai Lion
+    -- Air (TLM, "Mentari"), Nok Air (NOK)
+    { "thai asia", "AIQ" },
+    { "thai smile", "THD" },
+    { "mentari", "TLM" },
+    { "nok air", "NOK" },
     { "niugini", "ANG" },
     { "air niugini", "ANG" },
     { "jeju air", "JJA" },

@@ -759,6 +759,12 @@ return function(intent, rule, words)
     return false
   end }
   rule { "turn switch", false, when = function(g, i) return g:switch_follows(i) end }
+  -- "turn right direct BKK", "turn left and proceed direct RIDEX": the way to turn onto a direct-to, no heading
+  rule { "turn turning", false, next = "left right", when = function(g, i)
+    local k = g:word(i + 2, "and then") and i + 3 or i + 2
+    if g:word(k, "proceed fly") then k = k + 1 end
+    return g:word(k, "direct directly dct")
+  end }
   rule { "turn turning", "hdg" }
   -- "rotate BAW123 30 degrees to the left", "nudge N123AB 15 degrees left": a turn by an amount
   rule { "rotate nudge veer swing yaw", "hdg", near = { 6, "left right degrees degree" } }

@@ -442,6 +442,11 @@ function M.spoken(text, built, phonetic)
         fam, j = "7" .. DIGITS[bare(i + 1)] .. "7", i + 3
       end
       if fam and built.known["boeing " .. fam] and open(j - 1) and toks[j] then
+        -- ("787 dash 9", "seven eight seven dash nine": "dash" is the hyphen before a variant said as one
+        -- number that names one model, 787-9; "737 dash 8", the 737-8 or the 737-800, stays unread)
+        if bare(j) == "dash" and open(j) and toks[j + 1] and short_name(built, fam, short_variant(bare(j + 1))) then
+          j = j + 1
+        end
         local v, k = bare(j):match("^%-?(%d00%a*)$"), j + 1
         if not v and DIGITS[bare(j)] and open(j) and bare(j + 1) == "hundred" then v, k = DIGITS[bare(j)] .. "00", j + 2 end
         if not v and short_name(built, fam, short_variant(bare(j))) then v = short_variant(bare(j)) end
@@ -464,6 +469,11 @@ function M.spoken(text, built, phonetic)
             and bare(k + 2) == "hundred" then
           k = k + 1
           x, nx = nx, bare(k + 1)
+        end
+        -- ("seven eight seven dash nine": "dash" before a variant said as one number naming one model, 787-9)
+        if x == "dash" and nx and #digits == 3 and not variant and short_name(built, lead .. digits, short_variant(nx)) then
+          k = k + 1
+          x, nx = nx, toks[k]:match("%p$") == nil and bare(k + 1) or nil
         end
         local hy_tens, hy_unit = x:match("^(%a+)%-(%a+)$")
         if prefix and digits == "" and DIGITS[x] and nx == "hundred" and built.known[lead .. DIGITS[x]] then

@@ -16287,3 +16287,45 @@ do
   -- "turn on" a switch is still a switch
   check(not ex("turn on the conflict detection"):match("HDG"), "a switch turned on is no turn")
 end
+-- Cycle 56 (fsea): Southeast Asian telephony (names.airlines: "Thai Asia" AIQ, "Thai Smile" THD, "Mentari" TLM, "Nok
+-- Air" NOK), said first, last, in a deletion and a creation; a Boeing variant after "dash"
+do
+  local _, ex = scene({ "CRE AIQ102 A320 13.6 100.9 090 FL130 280", "CRE AXM102 A320 14.2 100.3 160 FL190 290",
+    "CRE THD112 A320 13.4 100.2 060 9000 250", "CRE TLM511 B738 14.3 101.3 255 FL210 290",
+    "CRE NOK312 B738 14.0 100.5 340 FL110 270" })
+  check_eq(ex("Thai Asia one zero two, climb flight level two three zero"), "ALT AIQ102 FL230")
+  check_eq(ex("thai asia 102 turn left heading 040, climb FL150"), "HDG AIQ102 40 LEFT ; ALT AIQ102 FL150")
+  check_eq(ex("Red Cap one zero two descend FL150"), "ALT AXM102 FL150")
+  check_eq(ex("descend flight level one one zero, Mentari five one one"), "ALT TLM511 FL110")
+  check_eq(ex("Nok Air tree one two, turn right heading zero one zero"), "HDG NOK312 10 RIGHT")
+  check_eq(ex("remove Thai Smile one one two"), "DEL THD112")
+  check_eq(ex("please delete nok air 312"), "DEL NOK312")
+  check_eq(ex("create Thai Smile one one three, A320, at 13.5 100.2, heading zero one five, FL100, 250 knots"),
+    "CRE THD113 A320 13.5 100.2 15 FL100 250")
+  -- the telephony of one airline with another's flight number: asked, never the other airline's aircraft
+  asked(ex("Mentari 312 climb FL200"), "NOK312 is Nok Air's, not Mentari's")
+  asked(ex("Thai Smile five one one descend FL150"), "TLM511 is Mentari's, not Thai Smile's")
+  asked(ex("Thai 102 climb FL200"), "'Thai' is Thai Airways (THA), no THA102 flying")
+  asked(ex("Red Cap 102 confirm cleared FL200"), "whether a clearance stands")
+  -- a Boeing variant said as one number after "dash": the model it names
+  check_eq(ex("create TGW5, Boeing seven eight seven dash nine, at 1.2 103.5, heading 270, FL120, 280 knots"),
+    "CRE TGW5 B789 1.2 103.5 270 FL120 280")
+  check_eq(ex("create TGW6 a 787 dash 10 at 1.2 103.5 heading 270 FL120 280"), "CRE TGW6 B78X 1.2 103.5 270 FL120 280")
+  check_eq(ex("create TGW7, a seven eight seven dash eight, at 1.2 103.5, heading 270, FL120, 280 knots"),
+    "CRE TGW7 B788 1.2 103.5 270 FL120 280")
+  -- "737 dash 8" is the 737-8 (MAX, B38M) or the 737-800 (B738) said short; "787 dash" names no variant
+  asked(ex("create MAS624, a seven three seven dash eight, at 1.2 103.5, heading 320, FL120, 250"), "B738 or B38M")
+  asked(ex("create TGW8 Boeing seven eight seven dash at 1.2 103.5 heading 270 FL120 280"), "no variant")
+end
+do
+  -- "turn left/right direct FIX": the way the aircraft turns onto a direct-to, no heading asked for; a position said
+  -- with "decimal" and north/east after a telephony moves the aircraft there
+  local _, ex = scene({ "CRE NOK312 B738 14.0 100.5 340 FL110 270", "DEFWPT WPTKK 14.6 100.9" })
+  check_eq(ex("Nok Air 312 climb flight level one three zero, turn right direct WPTKK"),
+    "ALT NOK312 FL130 ; ADDWPT NOK312 WPTKK ; DIRECT NOK312 WPTKK")
+  check_eq(ex("NOK312 turn left and proceed direct WPTKK"), "ADDWPT NOK312 WPTKK ; DIRECT NOK312 WPTKK")
+  asked(ex("NOK312 turn right direct"), "direct to no place")
+  check_eq(ex("NOK312 turn right 30 degrees"), "HDG NOK312 10 RIGHT")
+  check_eq(ex("move Nok Air 312 to one four decimal three north one zero zero decimal four east"),
+    "MOVE NOK312 14.3 100.4")
+end
