@@ -12965,6 +12965,7 @@ function M.translate(text, world)
   g:described_refs()
   for _, id in ipairs(g:same_for()) do same[#same + 1] = id end
   g:bearing_refs()
+  g:destination_refs()
   g:created_just_said()
   g:creation_refs()
   g:carried_refs()

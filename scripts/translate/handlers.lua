@@ -2340,10 +2340,39 @@ local function heading_toward(self, ids, point)
   return fits
 end
 
+-- The place gone to from token k ("go to X", "fly to X": rules.lua) when it is no airport: "the" perhaps, then a
+-- waypoint reference that is no four-letter code (a fix, a navaid's ident, a waypoint the simulation defined), or
+-- one or two capitalised words and a navaid's noun ("the Caselle VOR", "Saronno NDB"). The token after it, or nil
+-- (always in a request ending with a question mark).
+function m:place_gone_to(k)
+  -- (a question, "does the Ryanair go to GATE2?", is no instruction to go there)
+  if self.t[#self.t] and self.t[#self.t].text == "?" then return nil end
+  if self:word(k, "the") then k = k + 1 end
+  local r = self:refs_in(k, k + 1, "waypoint")[1]
+  if r and r.b == k then
+    -- (a navaid on an airport that bears its code, "JFK", "YYZ", or a large airport's IATA code: the airport's)
+    local w, name = self.world, r.name:upper()
+    local lat, lon = nil, nil
+    if w.locate then lat, lon = w.locate(name) end
+    local coded = #name == 3 and ((require("translate.names").iata_airports or {})[name]
+      or lat and lon and w.airports_coded and #w.airports_coded(name, lat, lon) > 0)
+    if name:match("^%a%a%a%a$") or coded then return nil end
+    if self:word(r.e, "at") then return nil end  -- ("go to EXP1 at FL120": the waypoint's constraint, ADDWPT)
+    return r.e
+  end
+  local e = k
+  while e < k + 2 and self.t[e] and self.t[e].kind == "word" and self.t[e].alpha and self.t[e].raw:match("^%u%l")
+      and not self:has_ref(e, e + 1, "aircraft") do
+    e = e + 1
+  end
+  if e > k and self:word(e, "vor ndb vortac") then return e + 1 end
+  return nil
+end
+
 -- True when the token at k is "that" or "which" of "that's"/"which's" before a verb of going or coming (the
 -- lexer drops "'s": "the Airbus that's heading east" is read "that heading").
 function m:relative_is(k)
-  return self:word(k, "that which") and self:word(k + 1, "@compass_verbs @compass_from_verbs")
+  return self:word(k, "that which") and self:word(k + 1, "@compass_verbs @compass_from_verbs @compass_relative_verbs")
 end
 
 -- The way an aircraft flies, said from token v (bearing_refs, position_refs): a verb of going (lexicon.compass_verbs),
@@ -2353,7 +2382,8 @@ end
 -- east": flying west, 270). Its heading's point [deg] and the token after the words, or nil.
 function m:way_said(v)
   local from = self:word(v, "@compass_from_verbs") and self:word(v + 1, "from")
-  if not (from or self:word(v, "@compass_verbs")) then return nil end
+  if not (from or self:word(v, "@compass_verbs")
+      or self:word(v, "@compass_relative_verbs") and self:word(v - 1, "that which")) then return nil end
   local k = from and v + 2 or v + 1
   while not from and k < v + 3 and self:word(k, "@compass_particles") do k = k + 1 end
   if not from and self:word(k, "to towards") then k = k + 1 end
@@ -2383,7 +2413,8 @@ function m:bearing_refs()
       break
     end
   end
-  if not (bound or self:said("@compass_verbs") or self:said("@compass_from_verbs")) then return end
+  if not (bound or self:said("@compass_verbs") or self:said("@compass_from_verbs")
+      or self:said("@compass_relative_verbs")) then return end
   local i = 1
   while i <= #self.t do
     local b, ids, e, point = i, nil, nil, nil
@@ -2420,6 +2451,66 @@ function m:bearing_refs()
         if #one == 1 then picked = one end
       end
       i = describe(self, b, e, #fits > 0 and fits or ids, picked, outer)
+    else
+      i = i + 1
+    end
+  end
+end
+
+-- The aircraft flying described after "the" by where it is going, in the addressing position: a group
+-- (compared_group: an airline, a type, "one") and "for", "to", "bound for", "going to" or "flying to" an airport
+-- named by one or two capitalised words (its navdata name, lexicon.city_airports' city, or its ICAO code),
+-- opening the request or a clause and ending at a comma ("the Alitalia for Genova, turn left ...", Italian
+-- "l'Alitalia per Genova"). The one aircraft of the group whose destination is that airport, none of the others'
+-- destinations unknown, is the aircraft described (describe); the group's one aircraft, its destination that
+-- airport or unknown, too. Any other case is asked about, naming the group; a name that is no airport is left
+-- alone.
+function m:destination_refs()
+  if not (self:said("the") and self:said("for to")) then return end
+  local w = self.world
+  if not (w.airports_named and w.locate) then return end
+  local i = 1
+  while i <= #self.t do
+    local b, e, ids = i, nil, nil
+    local opens = i == 1 or self.t[i - 1].kind == "punct" or self:word(i - 1, "please")
+    if opens and self:word(i, "the") and not self:other_traffic_before(i - 1) and not (self.positioned or {})[i] then
+      local count
+      ids, e, count = compared_group(self, i + 1)
+      if count then ids = nil end
+    end
+    local p = ids and (self:word(e, "for to") and e + 1
+      or self:word(e, "bound") and self:word(e + 1, "for") and e + 2
+      or self:word(e, "going flying") and self:word(e + 1, "to") and e + 2)
+    local q = p
+    while q and q < p + 2 and self.t[q] and self.t[q].kind == "word" and self.t[q].alpha
+        and self.t[q].raw:match("^%u") and not self.t[q].keyword do
+      q = q + 1
+    end
+    local codes = {}
+    if q and q > p and clause_mark(self, q) then
+      local phrase = self:raw(p, q)
+      local code = phrase:match("^%u%u%u%u$")
+      if code and w.locate(code) then codes[code] = true end
+      local city = L.city_airports[phrase:lower()]
+      for _, said in ipairs({ phrase, city }) do
+        for _, id in ipairs(w.airports_named(said)) do codes[id] = true end
+        for _, id in ipairs(w.airports_of_city and w.airports_of_city(said) or {}) do codes[id] = true end
+      end
+    end
+    if next(codes) then
+      local fits, unknown = {}, 0
+      for _, a in ipairs(self.fleet) do
+        for _, id in ipairs(ids) do
+          if id == a.id then
+            if not a.dest or a.dest == "" then unknown = unknown + 1
+            elseif codes[a.dest:upper()] then fits[#fits + 1] = id end
+          end
+        end
+      end
+      local picked = nil
+      if (#fits == 1 and unknown == 0) or (#ids == 1 and #fits + unknown == 1) then picked = { ids[1] } end
+      if #fits == 1 then picked = picked and fits end
+      i = describe(self, b, q, ids, picked)
     else
       i = i + 1
     end
@@ -2464,6 +2555,9 @@ local function place_at(self, p)
       if kind == "navaids" and a.lat then ids = w.navaids_named(phrase:lower(), a.lat, a.lon, L.navaid_range_nm) end
       if kind == "airports" and a.lat then
         for _, id in ipairs(w.airports_named(phrase)) do ids[#ids + 1] = id end
+        -- (a city by the name lexicon.city_airports gives its airport: "near Trento", MATTARELLO)
+        local city = L.city_airports[phrase:lower()]
+        for _, id in ipairs(city and w.airports_named(city) or {}) do ids[#ids + 1] = id end
         for _, id in ipairs(w.airports_with_words and w.airports_with_words(phrase, a.lat, a.lon, L.navaid_range_nm)
             or {}) do
           ids[#ids + 1] = id
@@ -2493,8 +2587,11 @@ local function side_said(self, k)
   -- ("furthest north", "farthest to the south", "the most westerly", "most to the east": the one furthest along
   -- that side, as "at the top" reads)
   local most = self:word(x, "furthest farthest most") and x + 1
+    -- ("more at north", "more to the south": Italian "più a nord", the comparative said for the superlative, only
+    -- with "at" or "to" before the compass point)
+    or self:word(x, "more") and self:word(x + 1, "at to") and x + 1
   if most then
-    local y = self:word(most, "to") and most + 1 or most
+    local y = self:word(most, "to at") and most + 1 or most
     if self:word(y, "the") then y = y + 1 end
     local deg, pe = self:point_said(y)
     local ly = not deg and self.words[y] and self.words[y]:match("^(%a+)erly$")

@@ -2666,6 +2666,11 @@ return function(H, f, compass)
       elseif self:word(r.b - 1, "then via and to over") or (self.t[r.b - 1] or {}).text == "," or r.b == last then
         self:emit("ADDWPT " .. id .. " " .. r.name)
         last = r.e
+        -- ("GATE1 and after to EXIT3": "after to" said for "then to", Italian "e dopo a")
+        if self:word(r.b - 1, "to") and self:word(r.b - 2, "after") and self:word(r.b - 3, "and") then
+          self:explain(r.b - 2, r.b - 1)
+          self:mark_used(r.b - 2, r.b - 1)
+        end
       end
     end
     -- ("a route via BIDAC then Bilbao": a place said by its one-word name, capitalised, after "then", "and" or

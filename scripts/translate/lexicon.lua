@@ -699,6 +699,9 @@ return {
     counterclockwise = { word = "left" }, anticlockwise = { word = "left" }, ccw = { word = "left", prev = "#number" },
     rotation = { word = "heading", next = "to #number of" },  -- ("rotation speed", Vr, stays as typed)
     velocity = { word = "speed", prev = "vertical" },
+    -- (Italian "quota", the altitude: "the quota put it at 9000 feet", "its quota 5000"; after no article or
+    -- possessive and before no number it stays as typed, and asked)
+    quota = { { word = "altitude", prev = "the its his her" }, { word = "altitude", next = "#number" } },
     -- (a collision volume, "the hitbox radius", "vertical hitbox 1000 ft": the protected zone)
     hitbox = { word = "protected zone" },
     -- ("make the separation bubble 3 nm", "the safety bubble", "make the bubble 3 miles": the protected zone around
@@ -1614,6 +1617,9 @@ return {
   -- words between a verb of going and its compass point that leave the point as said ("the Shamrock heading out
   -- west", "the one going due north", "the Ryanair flying back east", "the Embraer heading off south")
   compass_particles = { "due", "out", "off", "back", "away" },
+  -- verbs of going in the present that describe an aircraft only after "that" or "which" ("the easyJet that goes
+  -- to north", "the one which heads east"; "the easyJet goes north" stays an instruction's words)
+  compass_relative_verbs = { "goes", "moves", "heads", "proceeds" },
   -- verbs of coming before "from" and the compass point an aircraft flies away from ("the one coming from the
   -- east" flies west: G:way_said)
   compass_from_verbs = { "coming", "approaching", "arriving", "inbound" },
@@ -1960,6 +1966,10 @@ return {
                     naples = "capodichino", budapest = "ferihegy", gothenburg = "landvetter",
                     amsterdam = "schiphol", oslo = "gardermoen", bergen = "flesland", stavanger = "sola",
                     trondheim = "vaernes",
+                    -- (Italian cities whose airport the navdata names after the place beside it: Verona's
+                    -- VILLAFRANCA, its small VERONA BOSCOMANTICO aside; Trento's MATTARELLO; Trieste's RONCHI)
+                    verona = "villafranca", trento = "mattarello", trieste = "ronchi dei legionari",
+                    genoa = "genova sestri",
                     -- (an airport's own name the navdata does not give, said with its city or alone)
                     ["el prat"] = "barcelona", ["barcelona el prat"] = "barcelona",
                     delhi = "indira gandhi", ["new delhi"] = "indira gandhi", mumbai = "chhatrapati shivaji",

@@ -1677,6 +1677,26 @@ return function(intent, rule, words)
     local r = created and g:word(i + 2, "to") and g:refs_in(i + 3, i + 4, "waypoint")[1]
     return r and #r.name == 5  -- (a five-letter fix; "send it to JFK" names a destination)
   end }
+  -- "go to the Caselle VOR", "fly to GATE1 and then GATE2", "the Volotea, go to GATE1 and after to EXIT3": a place
+  -- gone to that is no airport (a fix, a navaid, a waypoint the simulation defined: no four-letter code) is flown
+  -- to directly; with a second such place said after "then" or "after" (and "to") the places join the route in
+  -- that order (ADDWPT each). An airport gone to stays a destination or is asked (below).
+  rule { "go fly", "direct", next = "to", when = function(g, i)
+    local e = not g:word(i - 1, "@purpose_modals") and g:place_gone_to(i + 2)
+    if not e then return false end
+    local x = g:word(e, "and") and e + 1 or e
+    if g:word(x, "after") and not g:word(x + 1, "to") then return false end  -- ("after EXIT3": AFTER's place)
+    local n = g:word(x, "then after") and (g:word(x + 1, "to") and x + 2 or x + 1)
+    return not (n and g:place_gone_to(n))
+  end }
+  rule { "go fly", "addwpt", next = "to", when = function(g, i)
+    local e = not g:word(i - 1, "@purpose_modals") and g:place_gone_to(i + 2)
+    if not e then return false end
+    local x = g:word(e, "and") and e + 1 or e
+    local n = g:word(x, "then") and (g:word(x + 1, "to") and x + 2 or x + 1)
+      or g:word(x, "after") and g:word(x + 1, "to") and x + 2
+    return n and g:place_gone_to(n) and true or false
+  end }
   -- "fly to TEST1", "fly to our waypoint STUDYA": a waypoint the simulation knows is flown to directly;
   -- other places are destinations
   rule { "fly", "direct", next = "to", when = function(g, i)

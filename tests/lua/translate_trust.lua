@@ -16329,3 +16329,49 @@ do
   check_eq(ex("move Nok Air 312 to one four decimal three north one zero zero decimal four east"),
     "MOVE NOK312 14.3 100.4")
 end
+-- fita (cycle 56, R173): places, routes and aircraft descriptions in an Italian speaker's English
+do
+  local _, ex = scene({ "CRE SAS1 A320 52.0 4.0 010 FL250 280", "CRE KLM2 B738 52.9 4.3 200 FL230 270",
+    "CRE DLH3 A321 51.5 4.9 090 FL210 260", "CRE EZY4 A320 52.2 5.6 270 FL190 250", "CRE EZY5 A319 52.4 3.4 180 FL170 240",
+    "DEFWPT WPA 52.5 4.5", "DEFWPT WPB 52.7 4.9", "DEFWPT WPC 52.1 5.0" })
+  -- "più a nord": the comparative with "at"/"to" read as "furthest"
+  check_eq(ex("the aircraft more at north, turn it left heading 150"), "HDG KLM2 150 LEFT")
+  check_eq(ex("please the one more to the south climb FL300"), "ALT DLH3 FL300")
+  check_eq(ex("the plane more at the east, speed 240"), "SPD EZY4 240")
+  asked(ex("the aircraft more west climb FL300"), "'more' with no 'at'/'to' is no superlative")
+  -- "that goes to north": a present verb of going after "that"/"which" describes the aircraft
+  check_eq(ex("the easyJet that goes to west, descend FL150"), "ALT EZY4 FL150")
+  check_eq(ex("the easyJet which heads south, 220 knots"), "SPD EZY5 220")
+  asked(ex("the easyJet goes north"), "an instruction's words, not a description")
+  -- "go to"/"fly to" a place that is no airport is flown to directly; "then"/"after to" a second: the route
+  check_eq(ex("the SAS go to WPA please"), "ADDWPT SAS1 WPA ; DIRECT SAS1 WPA")
+  check_eq(ex("the KLM, climb to FL260 and go to WPB"), "ALT KLM2 FL260 ; ADDWPT KLM2 WPB ; DIRECT KLM2 WPB")
+  check_eq(ex("the Lufthansa, go to WPA and then WPC"), "ADDWPT DLH3 WPA ; ADDWPT DLH3 WPC")
+  check_eq(ex("the SAS, fly to WPB and after to WPA please"), "ADDWPT SAS1 WPB ; ADDWPT SAS1 WPA")
+  asked(ex("does the SAS go to WPA?"), "a question is no instruction")
+  asked(ex("the easyJet that goes to WPC, climb FL200"), "a description is no instruction, and two easyJets")
+  -- Italian "quota", the altitude, after an article or a possessive or before a number
+  check_eq(ex("the KLM, the quota put it at 9000 feet"), "ALT KLM2 9000")
+  check_eq(ex("the Lufthansa, its quota 14000 feet please"), "ALT DLH3 14000")
+  asked(ex("the KLM has a fuel quota, climb FL240"), "'a quota' is no altitude")
+end
+do
+  local nav, nt = navscene({ "CRE AZA12 A320 44.3 9.0 300 FL100 250", "DEST AZA12 LIMJ", "CRE AZA34 A320 44.1 8.6 030 FL180 280",
+    "DEST AZA34 LIRF", "CRE BEL5 A320 45.2 7.9 110 FL080 230", "CRE DLA6 E195 46.0 11.3 180 FL150 280",
+    "CRE IBE7 A321 45.3 10.9 060 FL130 270", "CRE PHABC C172 45.42 11.0 090 3500 100" }, "fita's places")
+  if nav then
+    -- an airline with its destination, in the addressing position
+    check_eq(nt("the Alitalia for Genova, turn right heading 320"), "HDG AZA12 320 RIGHT")
+    check_eq(nt("please the Alitalia going to Fiumicino, climb FL200"), "ALT AZA34 FL200")
+    check_eq(nt("the Brussels for Torino, speed 220"), "SPD BEL5 220")
+    asked(nt("the Alitalia for Milan, climb FL200"), "neither Alitalia flies to Milan")
+    asked(nt("the Alitalia for Verona, climb FL200"), "neither Alitalia flies to Verona")
+    -- Italian cities named otherwise by the navdata: Verona's VILLAFRANCA, Trento's MATTARELLO
+    check_eq(nt("move the Cessna to Verona airport at 4000 feet"), "MOVE PHABC LIPX 4000")
+    check_eq(nt("the one near Trento, climb FL170"), "ALT DLA6 FL170")
+    check_eq(nt("the aircraft close to Trento turn left heading 100"), "HDG DLA6 100 LEFT")
+    -- a navaid said by its name and "VOR"
+    check_eq(nt("the Brussels, go to the Caselle VOR"), "ADDWPT BEL5 CSL ; DIRECT BEL5 CSL")
+    check_eq(nt("the Brussels fly to the Caselle VOR please"), "ADDWPT BEL5 CSL ; DIRECT BEL5 CSL")
+  end
+end
