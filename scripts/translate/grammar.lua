@@ -1921,6 +1921,7 @@ end
 function G:blank(k)
   self.t[k].text, self.t[k].filler = "", true
   self.words[k] = ""
+  self.commentary_ends = nil  -- (commentary_end's per-request ends read the marks' texts)
 end
 
 function G:word(i, words)
@@ -2078,13 +2079,27 @@ for _, w in ipairs(lexicon.speaker_roles) do CM_SUBJECTS[w] = true end
 -- (a closing bracket for one opened at b - 1). With `last`, the scan stops past it: an end beyond last
 -- reads as last + 1.
 local function commentary_end(self, b, last)
-  local e = b
-  local stop = #self.t
-  if last and last < stop then stop = last end
-  while e <= stop do
-    local x = self.t[e]
-    if x.kind == "punct" and x.text ~= "," and x.text ~= "-" and x.text ~= "'" then break end
-    e = e + 1
+  -- (self.commentary_ends[b]: the end with no `last`, per request; G:blank, which may blank a mark, clears it)
+  local ends = self.commentary_ends
+  if not ends then
+    ends = {}
+    self.commentary_ends = ends
+  end
+  local e = ends[b]
+  if not e then
+    e = b
+    local toks = self.t
+    local stop = #toks
+    while e <= stop do
+      local x = toks[e]
+      if x.kind == "punct" and x.text ~= "," and x.text ~= "-" and x.text ~= "'" then break end
+      e = e + 1
+    end
+    ends[b] = e
+  end
+  if last and last < #self.t then
+    if b > last then return b end
+    if e > last + 1 then return last + 1 end
   end
   return e
 end
