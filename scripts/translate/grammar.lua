@@ -2573,7 +2573,10 @@ function G:airline_word_dropped()
         if found ~= own then code = found end
         -- (the reference opening with a name that no table gives the aircraft's airline, "cityhopper 400" or
         -- "tui 400" matched to DLH400: the matcher read the flight number alone, the airline said dropped)
-        if code and b == r.b and not G.name_flies_for(found_name, own) then seen = true end
+        -- (only where the flight number follows the name: "Thai Asia 3102" is a telephony the matcher knows)
+        local nx = self.t[last + 1]
+        local number = nx and (nx.number_word or (self.words[last + 1] or ""):match("^%d")) and true or false
+        if code and b == r.b and number and not G.name_flies_for(found_name, own) then seen = true end
         if not found then break end  -- (a name squawk's tables do not hold, "Nor Shuttle": the matcher's)
         b = last + 1
       end
@@ -7144,8 +7147,16 @@ function G:closing_judgement(e)
   local b = e
   while b > 1 and self.t[b - 1].kind ~= "punct" do b = b - 1 end
   if b <= 1 or e - b > 5 or not self:word(b, "@self_correction_judges") then return nil end
-  -- ("..., I meant AFR34", "..., I meant to the left": what it points at is said in it, a correction)
-  if self:word_in(b, e + 1, "meant mean") or #self:refs_in(b, e + 1) > 0 then return nil end
+  -- ("..., I meant AFR34", "..., I meant to the left": what it points at is said in it, a correction; "I put it
+  -- in by mistake", "in error": why the request is made)
+  if self:word_in(b, e + 1, "meant mean by") or #self:refs_in(b, e + 1) > 0 then return nil end
+  for x = b + 1, e do
+    if self:word(x, "error") and self:word(x - 1, "in") then return nil end
+  end
+  -- ("140 - no, sorry, 180, my mistake": after a correction and its new value, the apology for the value taken back)
+  local m = b - 1
+  while m > 1 and not (self:word(m, "@correction") or SC_MARKERS[self.words[m]]) do m = m - 1 end
+  if m > 1 and #self:quantities(m + 1, b) > 0 then return nil end
   for x = b, e do
     if self:intent_at(x) then return nil end
   end

@@ -16286,3 +16286,9 @@ do
   check_eq(ex("start the simulation and skip ahead 5 minutes"), "OP ; FF 300")
   check_eq(ex("fast forward 2 minutes, pause, then go"), "FF 120 ; HOLD ; OP")
 end
+do
+  -- fhz: what the closing judgement leaves as it is: the apology after a corrected value, a reason ("by mistake")
+  local _, ex = scene({ "CRE SAS31 A320 55.6 12.6 090 FL250 280", "CRE BEL22 A319 55.7 12.7 180 FL200 260" })
+  check_eq(ex("SAS31 descend FL210 - no, sorry, FL220, my mistake"), "ALT SAS31 FL220")
+  check_eq(ex("remove BEL22 please, I created it by mistake"), "DEL BEL22")
+end
