@@ -2552,6 +2552,22 @@ end
 -- (G.airline_name_codes, up to three words) opening the reference names another airline than the aircraft's, so
 -- a word of it was dropped: asked, never sent to the aircraft of the shorter name. A brand said after the airline's
 -- whole name ("british airways cityflyer 31") is read the same way.
+-- True when airline name `name` (lower case) is a telephony, common name or brand of the airline of ICAO
+-- designator `code` in names.airlines, names.common or names.brands.
+function G.name_flies_for(name, code)
+  if not G.name_codes_all then
+    G.name_codes_all = {}
+    for _, list in ipairs({ names.airlines, names.common, names.brands }) do
+      for _, a in ipairs(list) do
+        local set = G.name_codes_all[a[1]] or {}
+        for j = 2, #a do set[a[j]] = true end
+        G.name_codes_all[a[1]] = set
+      end
+    end
+  end
+  return (G.name_codes_all[name] or {})[code] ~= nil
+end
+
 function G:airline_word_dropped()
   for _, r in ipairs(self.refs) do
     if r.kind == "aircraft" and r.exists and not r.heard then
@@ -2562,13 +2578,20 @@ function G:airline_word_dropped()
       -- (a letter or digit said is the flight number's: "Ryanair seven delta whiskey")
       while b < r.e and not code and not (lexicon.phonetic[self.words[b] or ""] or self.t[b].number_word) do
         local found, name, last = nil, nil, b
+        local found_name
         for k = b, math.min(b + 2, r.e - 1) do
           if not self.words[k] then break end
           name = name and name .. " " .. self.words[k] or self.words[k]
-          if G.airline_name_codes[name] then found, last = G.airline_name_codes[name], k end
+          if G.airline_name_codes[name] then found, last, found_name = G.airline_name_codes[name], k, name end
           seen = seen or G.airline_name_codes[name] == own
         end
         if found ~= own then code = found end
+        -- (the reference opening with a name that no table gives the aircraft's airline, "cityhopper 400" or
+        -- "tui 400" matched to DLH400: the matcher read the flight number alone, the airline said dropped)
+        -- (only where the flight number follows the name: "Thai Asia 3102" is a telephony the matcher knows)
+        local nx = self.t[last + 1]
+        local number = nx and (nx.number_word or (self.words[last + 1] or ""):match("^%d")) and true or false
+        if code and b == r.b and number and not G.name_flies_for(found_name, own) then seen = true end
         if not found then break end  -- (a name squawk's tables do not hold, "Nor Shuttle": the matcher's)
         b = last + 1
       end
@@ -5047,11 +5070,22 @@ function G:ruled_out_reason_end(a, c)
   for k = old.b, old.e - 1 do same = same or self.t[k].text == t.text end
   if not same then return c end
   local k = n + 1
-  while k < n + 13 and self.t[k] and self.t[k].kind ~= "punct" and not self:intent_at(k) do k = k + 1 end
-  if not (self.t[k] and self.t[k].kind == "punct" and self.t[k].text ~= "?") then return c end
+  -- (a word of an instruction after "too" judges the value: "250 is too fast")
+  while k < n + 13 and self.t[k] and self.t[k].kind ~= "punct"
+      and not (self:intent_at(k) and not self:word(k - 1, "too")) do
+    k = k + 1
+  end
+  if self.t[k] and not (self.t[k].kind == "punct" and self.t[k].text ~= "?") then return c end
   while self.t[k] and (self.t[k].kind == "punct" or self.t[k].filler) do k = k + 1 end
+  -- (the reason closing the request, "zone 2.5 NM, sorry, 2.5 is too small.": the value is taken back with
+  -- nothing in its place; asked)
+  if not self.t[k] then
+    self:need(string.format("You said '%s' with no value in its place. What should it be?",
+      (self:raw(n, k):gsub(" ([,.;:?!])", "%1"):gsub("[,.;:!]$", ""))))
+    return c
+  end
   -- (an aircraft said next is another instruction, no replacement: the value ruled out is asked about)
-  if not self.t[k] or self:has_ref(k, k + 1, "aircraft")
+  if self:has_ref(k, k + 1, "aircraft")
       or self:word(k, "the") and self:has_ref(k + 1, k + 2, "aircraft") then
     return c
   end
@@ -7144,6 +7178,30 @@ function G:closing_remark(e)
   return nil
 end
 
+-- The first token of a clause of at most six words ending at token e, after punctuation, that the speaker opens
+-- with a word of lexicon.self_correction_judges and no auxiliary ("I made a mistake", "my mistake", "my error"):
+-- a remark when G:commentary reads it as one (no value, place or aircraft in it); else nil. The caller checks it
+-- holds a word of lexicon.self_correction.judged.
+function G:closing_judgement(e)
+  local b = e
+  while b > 1 and self.t[b - 1].kind ~= "punct" do b = b - 1 end
+  if b <= 1 or e - b > 5 or not self:word(b, "@self_correction_judges") then return nil end
+  -- ("..., I meant AFR34", "..., I meant to the left": what it points at is said in it, a correction; "I put it
+  -- in by mistake", "in error": why the request is made)
+  if self:word_in(b, e + 1, "meant mean by") or #self:refs_in(b, e + 1) > 0 then return nil end
+  for x = b + 1, e do
+    if self:word(x, "error") and self:word(x - 1, "in") then return nil end
+  end
+  -- ("140 - no, sorry, 180, my mistake": after a correction and its new value, the apology for the value taken back)
+  local m = b - 1
+  while m > 1 and not (self:word(m, "@correction") or SC_MARKERS[self.words[m]]) do m = m - 1 end
+  if m > 1 and #self:quantities(m + 1, b) > 0 then return nil end
+  for x = b, e do
+    if self:intent_at(x) then return nil end
+  end
+  return self:commentary(b, e + 1) and b or nil
+end
+
 -- The first token of a run closing the request at token last: a phrase of lexicon.self_correction.withheld, and
 -- before it self-correction words, apologies, hesitations and punctuation holding a marker, an apology or a
 -- hesitation ("no wait, let's see", "sorry, let me think", "hmm, hold on"), with an instruction's words before the
@@ -7219,7 +7277,7 @@ function G:dangling_correction()
   while judged_e > 0 and (self.t[judged_e].kind == "punct" or G.apology[self.words[judged_e]]) do
     judged_e = judged_e - 1
   end
-  local remark = judged_e > 0 and self:closing_remark(judged_e)
+  local remark = judged_e > 0 and (self:closing_remark(judged_e) or self:closing_judgement(judged_e))
   if remark and remark > 1 and self:word(remark, "@self_correction_judges")
       and self:word_in(remark, judged_e + 1, G.judged) then
     self:need(string.format("You said '%s'. What is the corrected instruction?", self:raw(remark, last + 1)))
@@ -8784,7 +8842,16 @@ function G:state_question()
         r = self:refs_in(k, k + 1, "aircraft")[1]
       end
       local e = k
-      while self.t[e] and not (self.t[e].kind == "punct" and self.t[e].text ~= ",") do e = e + 1 end
+      while self.t[e] and not (self.t[e].kind == "punct" and self.t[e].text ~= ",") do
+        -- (a comma before an instruction's word, "and" or "then" at most between, ends the question: "what is
+        -- X's altitude now, climb FL300" asks nothing of FL300)
+        if self.t[e].text == "," then
+          local v = self:skip_fillers(e + 1)
+          while self:word(v, "and @then_words") do v = self:skip_fillers(v + 1) end
+          if self:intent_at(v) then break end
+        end
+        e = e + 1
+      end
       local rest = self:skip_fillers(e)
       local alone = (called_first or i == self:skip_fillers(1)) and rest > #self.t
       local instructed = false
@@ -8858,6 +8925,25 @@ end
 -- neither moved, created nor deleted: G.sim_handling) most likely tells that aircraft to resume something (its own
 -- navigation, its normal speed): asked, naming the aircraft. "..., then resume the sim" stays OP.
 G.sim_handling = { DEL = true, MOVE = true, CRE = true }
+-- "fast forward ten minutes. Go.", "FF 10 min and run": OP after FF, no HOLD between, would end the fast forward at
+-- once (OP clears fast time and sets DTMULT to 1). FF itself runs the simulation and returns it to real time when its
+-- duration has passed, so after an FF of a duration the OP is dropped; after one of no duration ("fast forward, then
+-- back to real time") when real time resumes is unclear: asked.
+function G:op_after_ff()
+  local ff
+  for c, line in ipairs(self.out) do
+    if line:match("^FF") then ff = c
+    elseif line == "HOLD" then ff = nil
+    elseif line == "OP" and ff then
+      if self.out[ff] == "FF" then
+        return self:need(string.format("I have %s. The fast forward has no duration, and OP after it ends it at once. "
+          .. "How long should it run before real time resumes?", table.concat(self.out, " ; ")))
+      end
+      table.remove(self.out, c)
+      return self:op_after_ff()
+    end
+  end
+end
 function G:resume_after_instruction()
   local op
   for c, line in ipairs(self.out) do
@@ -13112,6 +13198,7 @@ function M.translate(text, world)
   if not g.ask then g:state_question() end
   if not g.ask then g:speed_lifted_and_given() end
   if not g.ask then g:resume_after_instruction() end
+  if not g.ask then g:op_after_ff() end
   if not g.ask then g:shown_after_instruction() end
   -- "... actually no, just the descent" (G:self_corrected): only the commands of that kind stand
   if not g.ask and g.kept then

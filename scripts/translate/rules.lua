@@ -2097,6 +2097,13 @@ return function(intent, rule, words)
   -- "DLH458 ETA?", "eta QTR1015": the estimate asked with the aircraft alone, answered by its state (POS)
   rule { "eta", "pos", when = function(g, i) return g:alone_with_aircraft(i) end }
   rule { "position", "pos", when = shown_after }
+  -- "show the route of KLM12 and its position", "display the route and position of KLM12": the noun joined by
+  -- "and" (then "its" or "the" at most) to what a verb of showing said before it shows is shown too
+  rule { "position", "pos", when = function(g, i)
+    local k = g:word(i - 1, "its the his her") and i - 2 or i - 1
+    if not g:word(k, "and") then return false end
+    return g:word_in(math.max(1, k - 8), k, "show display see list")
+  end }
   rule { "position", "pos", next = "of", when = function(g, i) return g:skip_fillers(1) == i end }
   -- "place EZY45, A319, at 38.4 N 6.6 W heading 290", "place a Ryanair, RYR5GH, B738, over LOREL ...": a
   -- callsign no aircraft has, with its type, is created

@@ -6352,7 +6352,8 @@ do
   check_eq(fast("real time speed again"), "OP")
   local _, held = scene({ "CRE PTR61 A320 48 11 270 FL210 260" })
   check_eq(held("right, go back to real time now"), "DTMULT 1")
-  check_eq(held("skip ahead ten minutes, then back to real time"), "FF 600 ; OP")
+  -- (FF of a duration returns to real time at its end; an OP after it would end it at once: fhz's block)
+  check_eq(held("skip ahead ten minutes, then back to real time"), "FF 600")
   check_eq(held("let it run, back to real time"), "OP")
   local quick, at4 = scene({ "CRE PTR61 A320 48 11 270 FL210 260", "OP", "DTMULT 4" })
   check_eq(at4("ok, back to real time"), "DTMULT 1")
@@ -6939,7 +6940,7 @@ do
   local _, ex = scene({})
   check_eq(ex("real time again please"), "DTMULT 1")
   check_eq(ex("could you run the sim in real time again"), "DTMULT 1")
-  check_eq(ex("ff 60; run it in real time again"), "FF 60 ; OP")
+  check_eq(ex("ff 60; run it in real time again"), "FF 60")
   check_eq(ex("resume in real time again"), "OP")
 end
 
@@ -16374,4 +16375,46 @@ do
     check_eq(nt("the Brussels, go to the Caselle VOR"), "ADDWPT BEL5 CSL ; DIRECT BEL5 CSL")
     check_eq(nt("the Brussels fly to the Caselle VOR please"), "ADDWPT BEL5 CSL ; DIRECT BEL5 CSL")
   end
+-- fhz (cycle 56, session 24): wrong commands by class.
+do
+  local _, ex = scene({ "CRE SAS31 A320 55.6 12.6 090 FL250 280", "CRE BEL22 A319 55.7 12.7 180 FL200 260",
+    "CRE UAE7 B77W 55.8 12.8 270 FL330 300" })
+  -- a judgement closing the request with no auxiliary ("I made a mistake", "my mistake") takes back what came
+  -- before with nothing in its place: asked
+  asked(ex("SAS31 descend FL210, I made a mistake."), "I made a mistake")
+  asked(ex("BEL22 turn right heading 250, sorry, my mistake"), "my mistake")
+  asked(ex("UAE7 speed 280. My error."), "my error")
+  -- the same said before the instruction, or with the corrected value after it, stands
+  check_eq(ex("I made a mistake, SAS31 descend FL210"), "ALT SAS31 FL210")
+  check_eq(ex("SAS31 descend FL210, I made a mistake, FL220"), "ALT SAS31 FL220")
+  -- a value ruled out by its reason closing the request, no value in its place: asked
+  asked(ex("zone radius 3 nautical miles, sorry, 3 is too small."), "3 is too small")
+  asked(ex("set the separation to 4 miles, sorry, 4 is too little"), "4 is too little")
+  check_eq(ex("set the zone to 3 NM, sorry, 3 is too small, use 5 NM"), "ZONER 5")
+  -- the route and the position shown together: both
+  check_eq(ex("show the route of BEL22 and its position"), "LISTRTE BEL22 ; POS BEL22")
+  check_eq(ex("could you display the route and position of UAE7"), "LISTRTE UAE7 ; POS UAE7")
+  check_eq(ex("show the route of SAS31 and the position of BEL22"), "LISTRTE SAS31 ; POS BEL22")
+  check_eq(ex("BEL22 descend FL180 and hold position"), "ALT BEL22 FL180")
+  -- a question of state and an instruction after a comma: asked, never the question alone with the instruction
+  -- dropped
+  asked(ex("what is the Emirates altitude now, climb FL350"), "a question then an instruction")
+  asked(ex("what's BEL22 speed, and reduce to 240"), "a question then an instruction")
+  check_eq(ex("what is the Emirates altitude and speed now?"), "POS UAE7")
+  -- an airline's common name before a flight number no aircraft of it has: asked, never another airline's
+  asked(ex("cityhopper 22 climb FL240"), "KLC is no BEL")
+  asked(ex("Norwegian seven, climb FL350"), "NAX is no UAE")
+  asked(ex("tui 31 descend FL200"), "TOM is no SAS")
+  check_eq(ex("Scandinavian 31 descend FL200"), "ALT SAS31 FL200")
+  -- OP after FF ends the fast forward at once: an FF of a duration runs and returns to real time itself
+  check_eq(ex("okay everyone, we'll fast forward five minutes now. Go!"), "FF 300")
+  check_eq(ex("ff 2 min and run"), "FF 120")
+  check_eq(ex("start the simulation and skip ahead 5 minutes"), "OP ; FF 300")
+  check_eq(ex("fast forward 2 minutes, pause, then go"), "FF 120 ; HOLD ; OP")
+end
+do
+  -- fhz: what the closing judgement leaves as it is: the apology after a corrected value, a reason ("by mistake")
+  local _, ex = scene({ "CRE SAS31 A320 55.6 12.6 090 FL250 280", "CRE BEL22 A319 55.7 12.7 180 FL200 260" })
+  check_eq(ex("SAS31 descend FL210 - no, sorry, FL220, my mistake"), "ALT SAS31 FL220")
+  check_eq(ex("remove BEL22 please, I created it by mistake"), "DEL BEL22")
 end
