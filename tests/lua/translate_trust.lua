@@ -16375,6 +16375,7 @@ do
     check_eq(nt("the Brussels, go to the Caselle VOR"), "ADDWPT BEL5 CSL ; DIRECT BEL5 CSL")
     check_eq(nt("the Brussels fly to the Caselle VOR please"), "ADDWPT BEL5 CSL ; DIRECT BEL5 CSL")
   end
+end
 -- fhz (cycle 56, session 24): wrong commands by class.
 do
   local _, ex = scene({ "CRE SAS31 A320 55.6 12.6 090 FL250 280", "CRE BEL22 A319 55.7 12.7 180 FL200 260",
