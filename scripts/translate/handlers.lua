@@ -3323,7 +3323,11 @@ end
 -- described ("the triple seven": "the" before it, or a reference of its own kind, r.by_type, r.by_description,
 -- ...), and a number listed after a callsign of its airline ("KLM 1394 and 1349").
 function m:number_only(r)
-  if not r.name:match("^%a%a%a?%d") or r.name:match("^N%d") or self:word(r.b - 1, "the") then return nil end
+  -- ("the one" alone is a pronoun, never an aircraft described: "the one climb FL300" with SAS1 flying)
+  local pronoun = r.e - r.b == 1 and self:word(r.b, "one")
+  if not r.name:match("^%a%a%a?%d") or r.name:match("^N%d") or (self:word(r.b - 1, "the") and not pronoun) then
+    return nil
+  end
   for key in pairs(r) do
     if key:match("^by_") then return nil end
   end

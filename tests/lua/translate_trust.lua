@@ -16419,3 +16419,13 @@ do
   check_eq(ex("SAS31 descend FL210 - no, sorry, FL220, my mistake"), "ALT SAS31 FL220")
   check_eq(ex("remove BEL22 please, I created it by mistake"), "DEL BEL22")
 end
+-- Cycle 56 (lead): "the one" is a pronoun, not flight number 1 said alone; an aircraft whose number is 1 is
+-- confirmed, never taken (m:number_only)
+do
+  local _, ex = scene({ "CRE SAS1 A320 52.0 4.0 090 FL250 280", "CRE KLM2 A320 52.5 4.5 090 FL260 280",
+    "CRE DLH3 A320 51.0 3.0 090 FL270 280" })
+  asked(ex("the one climb FL300"), "'the one' names no aircraft")
+  asked(ex("the one more west climb FL300"), "'the one' before a description is no flight number")
+  check_eq(ex("SAS1 climb FL300"), "ALT SAS1 FL300")
+  check_eq(ex("the one at the top, climb FL300"), "ALT KLM2 FL300")
+end
