@@ -4909,6 +4909,37 @@ local SC_KEPT, SC_ONLY, SC_SETTING = {}, set_of(SC.only), set_of(SC.setting)
 G.sc_left_named = set_of(SC.left_named)
 G.sc_just_bare = set_of(SC.just_bare)
 for cmd, nouns in pairs(SC.just_the) do for _, w in ipairs(nouns) do SC_KEPT[w] = cmd end end
+G.tail_digits = { zero = "0", one = "1", two = "2", three = "3", four = "4", five = "5", six = "6", seven = "7",
+  eight = "8", nine = "9", niner = "9" }
+-- The aircraft said before token a named again at n by the characters after its airline alone (digits and letters
+-- spelled, digit words, the phonetic alphabet) closing the request: { ref } when exactly one aircraft named before
+-- a has them as the whole of its callsign after the airline (the words marked used and noted), else {}.
+function G.tail_named(self, n, a)
+  local chars, e = {}, n
+  while self.t[e] and self.t[e].kind == "word" do
+    local w = self.t[e].text
+    local c = G.tail_digits[w] or lexicon.phonetic[w] or (w:match("^%w+$") and w:upper())
+    if not c then return {} end
+    chars[#chars + 1] = c
+    e = e + 1
+  end
+  local k = e
+  while self.t[k] and (self.t[k].kind == "punct" or self.t[k].filler) do k = k + 1 end
+  local tail = table.concat(chars)
+  if k <= #self.t or #tail < 2 then return {} end
+  local found
+  for _, r in ipairs(self.refs) do
+    if r.kind == "aircraft" and r.exists and r.b < a and r.name:upper():match("^%u%u%u(.+)$") == tail:upper() then
+      if found and found.name ~= r.name then return {} end
+      found = r
+    end
+  end
+  if not found then return {} end
+  self:mark_used(n, e)
+  for i = n, e - 1 do self.noted[i] = true end
+  return { found }
+end
+
 -- "reduce speed 220... no, make it 210", "descend to 26 thousand ft, sorry, 27 thousand": a value alone after
 -- the self-correction run [a, c) (after "make it" too), ending its clause, of the kind of the value said since
 -- the instruction word at p, replaces it; true when it did. Said "exactly" ("at or below FL090, sorry make it
@@ -5257,6 +5288,9 @@ function G:self_corrected()
             only[#only + 1] = r
           end
         end
+        -- ("Ryanair three mike charlie and Ryanair eight seven lima alfa, both climb FL150... no, only the three
+        -- mike charlie": the aircraft named by the characters after its airline alone, G:tail_named)
+        if #only == 0 and not kept then only = G.tail_named(self, n, a) end
         if #only > 0 and not kept then
           local named = {}
           for _, r in ipairs(only) do named[r.name] = true end

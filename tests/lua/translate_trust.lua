@@ -16298,4 +16298,10 @@ do
   check_eq(ex("the Wizz, speed 290 knots, and then at FL310... no forget it, only speed"), "SPD WZZ16 290")
   check_eq(ex("the Lufthansa, heading 200 and speed 250... sorry, just heading"), "HDG DLH3 200")
   asked(ex("the Lufthansa, heading 200, no, only speed"), "a kind never given")
+  -- "only" and the characters after the airline of one of the aircraft named together
+  local _, ex2 = scene({ "CRE RYR3MC B738 45.50 9.20 080 FL110 260", "CRE RYR87LA B738 45.75 10.10 250 FL130 270",
+    "CRE EZY19BV A320 45.35 9.55 010 FL090 240" })
+  check_eq(ex2("Ryanair 3MC and Ryanair 87LA, climb FL140, sorry, only the eight seven lima alfa"), "ALT RYR87LA FL140")
+  check_eq(ex2("Ryanair 3MC and easyJet 19BV, descend FL80, no, only one nine bravo victor"), "ALT EZY19BV FL80")
+  asked(ex2("Ryanair 3MC and Ryanair 87LA, climb FL140, sorry, only the eight seven"), "no callsign's whole tail")
 end
