@@ -947,6 +947,48 @@ function G.cancel_corrections(text)
   return done()
 end
 
+-- "sorry KLM12, I said FL260 but is FL270", "I said heading 200, but it's 210", "I said 250 knots but I meant
+-- 240": the speaker names the value said before ("I said" and a run of values and their words, lexicon
+-- .said_but.value_words) and, after "but" and a phrase of lexicon.said_but.restating, the value meant; read as
+-- "FL260, correction, FL270" (the value said first is taken back, self_corrections' reading). Anything else stays.
+function G.said_but(text)
+  if not text:find("[Ss][Aa][Ii][Dd]") then return text end
+  local toks = bare_words(text)
+  local SB = lexicon.said_but
+  for k = 1, #toks - 4 do
+    if toks[k].bare == "i" and toks[k + 1].bare == "said" and not toks[k + 1].raw:match("%p$") then
+      local j = k + 2
+      local valued = false
+      while toks[j] and j < k + 8 and (G.said_but_value(toks[j]) or SB.value_words[toks[j].bare]) do
+        valued = valued or G.said_but_value(toks[j]) ~= nil
+        if toks[j].raw:match("[,;]$") then j = j + 1 break end
+        j = j + 1
+      end
+      if valued and toks[j] and toks[j].bare == "but" and j > k + 2 then
+        local v = j + 1
+        for _, p in ipairs(SB.restating) do
+          local n, ok = v, true
+          for w in p:gmatch("%S+") do
+            ok = ok and toks[n] ~= nil and toks[n].bare == w
+            n = n + 1
+          end
+          if ok then v = n break end
+        end
+        local y = toks[v]
+        if y and (G.said_but_value(y) or SB.value_words[y.bare]) then
+          return text:sub(1, toks[k].at - 1) .. text:sub(toks[k + 2].at, toks[j - 1].e - 1):gsub("%p+$", "")
+            .. ", correction, " .. text:sub(y.at)
+        end
+      end
+    end
+  end
+  return text
+end
+-- The value token t holds (digits, a number word, a unit), or nil.
+function G.said_but_value(t)
+  return t.raw:match("%d%p*$") or NUMBER_WORDS[t.bare] or UNIT_WORDS[t.bare]
+end
+
 -- "descend and maintain 6000, you said seven", "negative, it's one zero thousand, readback was one one
 -- thousand": a clause opening after a comma with a phrase of lexicon.readback_heard and holding only values
 -- up to the end of its sentence names the value the pilot read back wrongly; it is dropped when a value was
@@ -1613,7 +1655,7 @@ local function written_forms(text, world)
   -- "47,5 north", "8,5 degrees east", "factor to 1,1": a decimal comma (G.decimal_comma) is the point
   where("%d,%d", "()(%d+),(%d+)()", function(b, whole, part, e) return G.decimal_comma(text, b, whole, part, e) end)
   text = typed_abbreviations(lone_multipliers(tokens.numerals_apart(text, DIGIT_WORDS), world))
-  text = hyphened_types(spelled(G.spelled_letter_a(heard_forms(negated_values(G.readback_reported(readback_heard(self_corrections(G.cancel_corrections(unlabelled(foreign_digits(G.said_whole(text))))))))))))
+  text = hyphened_types(spelled(G.spelled_letter_a(heard_forms(negated_values(G.readback_reported(readback_heard(self_corrections(G.said_but(G.cancel_corrections(unlabelled(foreign_digits(G.said_whole(text)))))))))))))
   low = text:lower()
   -- a position typed as whole degrees after the hemisphere, then minutes ("N55 50.0 W003 20.0", "S33 57
   -- E151 10"): decimal degrees before their hemisphere ("55.833333 N 3.333333 W"); minutes of 60 or more
@@ -4349,9 +4391,18 @@ local VERB_FINAL_KINDS = { alt = { alt = true }, spd = { speed = true, mach = tr
 -- token a, G:speed_again_at gives that speed's quantity (knots, Mach or a bare number, "speed" allowed before it)
 -- when the last instruction word before it is a speed's and its value is the same; else nil. Kept in
 -- self.speed_again[a] by G:segments, for G:at_speed_again.
+-- The first token of the opening of the "at" at a: a condition word before it, with the subject and a form of "be"
+-- between or not ("when at", "when it is at", Italian-English "when is at"); else a.
+function G:speed_again_open(a)
+  local c = a - 1
+  while c > a - 4 and self:word(c, "it it's is he he's she she's 's") do c = c - 1 end
+  if self:word(c, "@condition") then return c end
+  return a
+end
+
 function G:speed_again_at(a)
   if not self:word(a, "at") then return nil end
-  local k = self:word(a - 1, "@condition") and a - 2 or a - 1
+  local k = self:speed_again_open(a) - 1
   local t = self.t[k]
   if not (t and ((t.kind == "punct" and t.text == ",") or self:word(k, "and @then_words"))) then return nil end
   local v = self:word(a + 1, "speed airspeed") and a + 2 or a + 1
@@ -4362,7 +4413,9 @@ function G:speed_again_at(a)
   local before = self:quantities(math.max(1, k - 6), k)
   local given = before[#before]
   local j = given and self:skip_fillers(given.e)
-  while j and j < a and self:word(j, "@then_words @condition") do j = self:skip_fillers(j + 1) end
+  while j and j < a and (self:word(j, "@then_words @condition") or (j >= self:speed_again_open(a) and j < a)) do
+    j = self:skip_fillers(j + 1)
+  end
   if not (j == a and given.value == q.value) then return nil end
   if given.kind == "speed" or given.kind == "mach" then return q end
   -- (a bare number is the speed given only straight after a speed's instruction word, "to" between at most)
@@ -4376,11 +4429,18 @@ end
 -- (SPD id value issued). The speed is marked used.
 function G:at_speed_again(s)
   local a = s.b
-  while a < s.trig and (self.t[a].kind == "punct" or self:word(a, "and @then_words @condition")) do a = a + 1 end
+  while a < s.trig and (self.t[a].kind == "punct" or self:word(a, "and @then_words @condition")
+      or (self:word(a, "it it's is he he's she she's 's") and self:speed_again_open(self:find_word(a, s.trig, "at")) < a)) do
+    a = a + 1
+  end
   local q = self.speed_again[a]
   if not q then return nil end
   local k = self:skip_fillers(q.e)
-  while k < s.trig and self:word(k, "@condition_lead") do k = self:skip_fillers(k + 1) end
+  -- ("turn it on the left heading 300": a turn's side and its preposition, before the heading's word)
+  while k < s.trig and (self:word(k, "@condition_lead") or (s.intent == "hdg" and (self:word(k, "left right it")
+      or (self:word(k, "on to the") and self:word_in(k + 1, math.min(s.trig, k + 3), "left right"))))) do
+    k = self:skip_fillers(k + 1)
+  end
   local ids = k == s.trig and self:acids(s) or {}
   local f = handlers.format
   local mach = q.kind == "mach" or (q.kind == "plain" and q.value > 0 and q.value < 1)
@@ -4417,7 +4477,7 @@ function G:speed_again_split(segs)
       local nx = q and self:skip_fillers(q.e)
       local v = nx and self:quantities(nx, sg.e)[1]
       if v and v.b == nx and G.unit_value(v) and v.kind ~= "speed" and v.kind ~= "mach" then
-        G.split_segment(segs, k, self:word(a - 1, "@condition") and a - 1 or a, v.b)
+        G.split_segment(segs, k, self:speed_again_open(a), v.b)
         break
       end
     end
@@ -4664,12 +4724,12 @@ function G:segments(b, e)
         -- at FL140 ..."; never a creation's "..., at 37,000 feet")
         -- (likewise the speed given said again after "at": G:speed_again_at)
         for a = last.trig + 1, start - 1 do
-          if self.speed_again[a] then start = self:word(a - 1, "@condition") and a - 1 or a break end
+          if self.speed_again[a] then start = self:speed_again_open(a) break end
         end
         for _, q in ipairs(self:quantities(last.trig + 1, start)) do
           local k = self:skip_fillers(q.e)
           if q.kind == "alt" and (tr.intent == "spd" or tr.intent == "hdg") and last.intent ~= "create"
-              and self:at_clause(q) and #self:quantities(last.trig, q.b) > 0 then
+              and (self:at_clause(q) or self:on_clause(q.b - 1)) and #self:quantities(last.trig, q.b) > 0 then
             start = math.min(start, q.b - 1)
             break
           end
@@ -4909,7 +4969,39 @@ end
 local SC = lexicon.self_correction
 local SC_KEPT, SC_ONLY, SC_SETTING = {}, set_of(SC.only), set_of(SC.setting)
 G.sc_left_named = set_of(SC.left_named)
+G.sc_just_bare = set_of(SC.just_bare)
 for cmd, nouns in pairs(SC.just_the) do for _, w in ipairs(nouns) do SC_KEPT[w] = cmd end end
+G.tail_digits = { zero = "0", one = "1", two = "2", three = "3", four = "4", five = "5", six = "6", seven = "7",
+  eight = "8", nine = "9", niner = "9" }
+-- The aircraft said before token a named again at n by the characters after its airline alone (digits and letters
+-- spelled, digit words, the phonetic alphabet) closing the request: { ref } when exactly one aircraft named before
+-- a has them as the whole of its callsign after the airline (the words marked used and noted), else {}.
+function G.tail_named(self, n, a)
+  local chars, e = {}, n
+  while self.t[e] and self.t[e].kind == "word" do
+    local w = self.t[e].text
+    local c = G.tail_digits[w] or lexicon.phonetic[w] or (w:match("^%w+$") and w:upper())
+    if not c then return {} end
+    chars[#chars + 1] = c
+    e = e + 1
+  end
+  local k = e
+  while self.t[k] and (self.t[k].kind == "punct" or self.t[k].filler) do k = k + 1 end
+  local tail = table.concat(chars)
+  if k <= #self.t or #tail < 2 then return {} end
+  local found
+  for _, r in ipairs(self.refs) do
+    if r.kind == "aircraft" and r.exists and r.b < a and r.name:upper():match("^%u%u%u(.+)$") == tail:upper() then
+      if found and found.name ~= r.name then return {} end
+      found = r
+    end
+  end
+  if not found then return {} end
+  self:mark_used(n, e)
+  for i = n, e - 1 do self.noted[i] = true end
+  return { found }
+end
+
 -- "reduce speed 220... no, make it 210", "descend to 26 thousand ft, sorry, 27 thousand": a value alone after
 -- the self-correction run [a, c) (after "make it" too), ending its clause, of the kind of the value said since
 -- the instruction word at p, replaces it; true when it did. Said "exactly" ("at or below FL090, sorry make it
@@ -5246,9 +5338,14 @@ function G:self_corrected()
         -- an instruction cut off: taken back, with the "and" that joined it
         b = self:word(p - 1, "and") and p - 1 or p
       end
-      if self:word(c, SC_ONLY) and not self:intent_at(c + 1) then
-        local kept = self:word(c + 1, "the") and SC_KEPT[self.t[c + 2] and self.t[c + 2].text or ""]
-        local e = self:sc_kept_end(c + 3)
+      -- ("..., no forget it, only speed": a noun of lexicon.self_correction.just_bare said without "the", closing
+      -- the request, names the kind that stands as "only the speed" does)
+      local bare_kept = self:word(c, SC_ONLY) and self:word(c + 1, G.sc_just_bare)
+        and (self:sc_kept_end(c + 2) > #self.t or self.t[self:sc_kept_end(c + 2)].kind == "punct")
+      if self:word(c, SC_ONLY) and (not self:intent_at(c + 1) or bare_kept) then
+        local kept = bare_kept and SC_KEPT[self.t[c + 1].text]
+          or self:word(c + 1, "the") and SC_KEPT[self.t[c + 2] and self.t[c + 2].text or ""]
+        local e = self:sc_kept_end(bare_kept and c + 2 or c + 3)
         -- the first name or value since the last instruction word, the start of what is said again
         local q = p + 1
         while q < b and not (self:has_ref(q, q + 1, "waypoint") or #self:quantities(q, q + 1) > 0) do q = q + 1 end
@@ -5264,6 +5361,9 @@ function G:self_corrected()
             only[#only + 1] = r
           end
         end
+        -- ("Ryanair three mike charlie and Ryanair eight seven lima alfa, both climb FL150... no, only the three
+        -- mike charlie": the aircraft named by the characters after its airline alone, G:tail_named)
+        if #only == 0 and not kept then only = G.tail_named(self, n, a) end
         if #only > 0 and not kept then
           local named = {}
           for _, r in ipairs(only) do named[r.name] = true end
@@ -8805,12 +8905,25 @@ end
 -- (the commands a question's values are misread as: G:state_question)
 G.asked_values = { ALT = true, SPD = true, HDG = true, VS = true }
 G.question_opens, G.question_with_is = set_of(lexicon.state_question.opens), set_of(lexicon.state_question.with_is)
+-- True when the "is" at i follows a self-correction marker (lexicon.self_correction.markers, one word; a mark or
+-- fillers between) in a clause with no "?": "..., no wait, I was wrong, is the Wizz not the easyJet" restates which
+-- aircraft is meant ("it is", Italian "è"), no question.
+function G.restated_after_marker(self, i)
+  if not self:word(i, "is") then return false end
+  local p = i - 1
+  while p >= 1 and (self.t[p].kind == "punct" or self.t[p].filler) do p = p - 1 end
+  if p < 1 or p == i - 1 or not (SC_MARKERS[self.t[p].text] or self:word(p, "@correction")) then return false end
+  local e = i
+  while self.t[e] and not (self.t[e].kind == "punct" and self.t[e].text ~= ",") do e = e + 1 end
+  return not (self.t[e] and self.t[e].text == "?")
+end
 function G:state_question()
   -- (a question opens with a word of lexicon.state_question: none said, none asked)
   if not (self:said(G.question_opens) or self:said(G.question_with_is)) then return end
   for i = 1, #self.t do
     local prev = self.t[i - 1]
     local opens = (not prev or prev.kind == "punct" or prev.filler or self:word(i - 1, "and @then_words"))
+      and not G.restated_after_marker(self, i)
     local k = opens and ((self:word(i, G.question_with_is) and self:word(i + 1, "is about") and i + 2)
       or (self:word(i, G.question_opens) and i + 1)) or nil
     if k and self:word(k, "that the") then k = k + 1 end

@@ -3161,6 +3161,11 @@ for _, w in ipairs(L.self_correction.words) do SELF_CORRECTION[w] = true end
 for _, w in ipairs(L.self_correction.described) do SELF_CORRECTION[w] = true end
 for _, w in ipairs(L.aircraft_nouns) do SELF_CORRECTION[w] = true end
 for _, w in ipairs(L.self_correction.markers) do SC_MARKER[w] = true end
+-- (the words restating after a marker, "no wait, it is the Wizz", "sorry, is the Wizz" in an Italian speaker's
+-- English: lexicon.self_correction.restated, said before the aircraft named in place of the one taken back)
+for _, p in ipairs(L.self_correction.restated) do
+  for w in p:gmatch("%S+") do SELF_CORRECTION[w] = true end
+end
 function m:callsign_taken_back(b, e)
   local marked = false
   for i = b, e - 1 do
@@ -3666,6 +3671,9 @@ function m:at_altitude(s)
   -- ("when it is on FL260 accelerate", German "auf": "on" after a form of "be" closing a condition is "at")
   local on = self:find_word(b, a, "on")
   if on < a and self:word(on - 1, "is it's") and self:bound_condition(on) then a = on end
+  -- ("climb FL150, then on FL150 turn left", Italian "poi a FL150": "on" and a level opening a clause after a
+  -- comma, "and" or "then", a value said before it, is "at": m:at_clause's reading)
+  if on < a and self:on_clause(on) then a = on end
   if a >= s.trig and s.intent ~= "alt" then
     for i = b, self:said("level") and s.trig - 1 or 0 do
       if self:word(i, "level") and not self:word(i - 1, "flight") and self:word_in(math.max(b, i - 3), i, "@condition") then
@@ -3702,7 +3710,9 @@ function m:at_altitude(s)
   local k = self:skip_fillers(q.e)
   while k < s.trig and (self:word(k, "@condition_lead") or (self.t[k].kind == "punct" and self.t[k].text == ",")
       or SUBJECT_LEAD[self.words[k]] or (s.intent == "spd" and SPEED_LEAD[self.words[k]])
-      or (s.intent == "vs" and RATE_LEAD[self.words[k]]) or (s.intent == "hdg" and HEADING_LEAD[self.words[k]])) do
+      or (s.intent == "vs" and RATE_LEAD[self.words[k]]) or (s.intent == "hdg" and HEADING_LEAD[self.words[k]])
+      -- ("turn it on the right heading 240", "turn to the left": the side's preposition and article)
+      or (s.intent == "hdg" and self:word(k, "on to the") and self:word_in(k + 1, math.min(s.trig, k + 3), "left right"))) do
     k = self:skip_fillers(k + 1)
   end
   -- ("crossing FL150 ACA102 reduce 250": the instruction's callsign after a verb's condition; "both at
@@ -4069,6 +4079,18 @@ function m:at_clause(q)
   local before = self:quantities(1, q.b - 1)
   before = before[#before]
   return before ~= nil and before.kind == "alt" and before.e == q.b - 1
+end
+
+-- True when "on" at k opens a clause with a level straight after it (FL or feet), after a comma, "and" or
+-- "then" and a value said before ("climb FL150, then on FL150 turn left heading 010"): the level the clause
+-- waits for, as "at" (m:at_clause).
+function m:on_clause(k)
+  if not self:word(k, "on") then return false end
+  local q = self:quantities(k + 1, math.min(#self.t + 1, k + 4))[1]
+  if not (q and q.b == k + 1 and q.kind == "alt" and (q.fl or self:word(q.e - 1, "@feet"))) then return false end
+  local p = self.t[k - 1]
+  if not p or not ((p.kind == "punct" and p.text == ",") or self:word(k - 1, "and @then_words")) then return false end
+  return #self:quantities(1, k - 1) > 0
 end
 
 -- "AC02: heading 180, FL200, 250 kts", "dct NORKU FL200": values with

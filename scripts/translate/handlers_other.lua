@@ -27,6 +27,10 @@ local function great_circle_offset(lat, lon, brg, nm)
   return math.deg(p2), (lon + math.deg(dl) + 540) % 360 - 180
 end
 
+-- lexicon.self_correction.markers of one word, as a set (m:corrected_between)
+local SC_MARKER_WORD = {}
+for _, w in ipairs(L.self_correction.markers) do if not w:find(" ") then SC_MARKER_WORD[w] = true end end
+
 return function(H, f, compass)
   local m = H.methods
 
@@ -3928,17 +3932,24 @@ return function(H, f, compass)
       for _, p in ipairs(self:quantities(q.e, s.e)) do
         if p.kind == "time" then e = math.min(e, p.b) end
       end
-      local other
+      local other, other_at
       for _, p in ipairs(self:quantities(q.e, e)) do
-        if (p.kind == "mult" or p.kind == "plain") and not self:in_reason(p.b) and p.value ~= q.value then
-          other = other or p.value
+        if (p.kind == "mult" or p.kind == "plain") and not self:in_reason(p.b) and p.value ~= q.value and not other then
+          other, other_at = p.value, p
         end
       end
       -- (a rate in words, "twice", or glued to its x, "then 2x" written "sim speed x2")
       for i = q.e, e - 1 do
         local v = self.t[i].kind == "word"
           and (L.multipliers[self.t[i].text] or tonumber(self.t[i].text:match("^x(%d+%.?%d*)$") or ""))
-        if v and v ~= q.value then other = other or v end
+        if v and v ~= q.value and not other then other, other_at = v, { b = i, e = i + 1 } end
+      end
+      -- ("two times faster, no, three": a rate after a correction, the self-correction run read as one, replaces
+      -- the one before it, which is taken back)
+      if other and self:corrected_between(q.e, other_at.b) then
+        self:take(q)
+        self:mark_used(q.b, other_at.e)
+        return self:emit("DTMULT " .. f.num(other))
       end
       if other then
         return self:need(string.format("Which rate should the simulation run at: %s or %s times real time?",
@@ -4266,6 +4277,17 @@ return function(H, f, compass)
     self:emit("RESNAV PASTCPA")  -- the one way squawk resumes navigation after a resolution
     self:mark_used(s.b, s.e)
   end
+  -- True when a correction is said in [b, e): a correction word (lexicon.correction), or a self-correction marker
+  -- (lexicon.self_correction.markers, one word) after a mark ("4 times faster, no, 5", "1000 feet, sorry, 1500").
+  function m:corrected_between(b, e)
+    for i = b, e - 1 do
+      if self:word(i, "@correction") then return true end
+      if i > 1 and self.t[i - 1].kind == "punct" and self.t[i].kind == "word" and SC_MARKER_WORD[self.t[i].text] then
+        return true
+      end
+    end
+    return false
+  end
   function m:zone(s)
     local vertical = self:word_in(s.b, s.e, "@vertical") or self:registry_word(s.trig) == "ZONEDH"
     -- ("give IBE32 1000 ft of separation from RYR7QD": one aircraft kept apart from another named, which
@@ -4352,7 +4374,7 @@ return function(H, f, compass)
         if total then self:mark_used(q.e, q.e + 1) end
         local v = self:take(q).value / (total and 2 or 1)
         self:emit("ZONEDH " .. f.num(v))
-        heights[#heights + 1] = { v, #self.out, total }
+        heights[#heights + 1] = { v, #self.out, total, q = q }
       end
       ::next_value::
     end
@@ -4370,6 +4392,12 @@ return function(H, f, compass)
     -- ZONEDH takes the half; any other pair contradicts itself and is asked, as is any pair of halves that differ
     -- (a whole height halved, "2000 ft total", or one either side, "±1000 ft", is a half already)
     local halves = #heights == 2 and heights[1][3] and heights[2][3]
+    -- ("half height 1000 feet, no, 1500 please": the height after a correction replaces the one before it)
+    if #heights == 2 and heights[1][1] ~= heights[2][1] and heights[1].q and heights[2].q
+        and self:corrected_between(heights[1].q.e, heights[2].q.b) then
+      table.remove(self.out, heights[1][2])
+      heights = {}
+    end
     if #heights == 2 and heights[1][1] ~= heights[2][1] then
       local lo, hi = heights[1], heights[2]
       if lo[1] > hi[1] then lo, hi = hi, lo end

@@ -969,6 +969,14 @@ return {
   decimal_comma_units = { "nm", "nmi", "miles", "mile", "nautical", "km", "dme" },
   coordinate_axes = { labels = { latitude = "lat", longitude = "lon" },
                       hemispheres = { north = "lat", south = "lat", east = "lon", west = "lon" } },
+  -- "I said FL260 but is FL270", "I said heading 200, but it's 210", "I said 250 knots but I meant 240": the words
+  -- of the values named with "I said" and after "but" (their units and nouns), and the phrases after "but" that
+  -- restate (grammar.lua G.said_but)
+  said_but = { value_words = { fl = true, flight = true, level = true, heading = true, speed = true, mach = true,
+                               altitude = true, knots = true, feet = true, ft = true, kts = true, degrees = true,
+                               left = true, right = true },
+               restating = { "i meant", "i mean", "it is", "it's", "it was", "it should be", "should be", "is",
+                             "was", "meant" } },
   self_correction = { words = { "oh", "no", "wait", "sorry", "actually", "make", "that", "i", "mean", "meant", "uh", "um",
                                 "er", "say", "again", "scratch", "corr", "hmm", "typo", "never", "mind", "nevermind",
                                 "forget", "belay", "better", "rather" },
@@ -1040,6 +1048,9 @@ return {
                       -- a verb of setting before the instruction said in place of the one taken back ("half
                       -- height one thousand... no, set zone half height to five hundred feet")
                       setting = { "set", "put", "change", "reset" },
+                      -- the nouns of just_the that say the kind alone after "just"/"only", no "the", closing the
+                      -- request ("..., no forget it, only speed")
+                      just_bare = { "speed", "heading", "altitude", "level", "descent", "mach" },
                       just_the = { ALT = { "descent", "descend", "climb", "altitude", "level", "levels", "alt" },
                                    HDG = { "turn", "heading", "vector", "hdg" },
                                    SPD = { "speed", "slowdown", "mach", "spd" },

@@ -16429,3 +16429,61 @@ do
   check_eq(ex("SAS1 climb FL300"), "ALT SAS1 FL300")
   check_eq(ex("the one at the top, climb FL300"), "ALT KLM2 FL300")
 end
+do
+  -- fcor (cycle 56): conditions and self-corrections in an Italian speaker's polite English
+  local _, ex = scene({ "CRE AZA21 A320 45.80 9.60 230 FL120 270", "CRE RYR4K B738 45.30 9.90 300 FL160 280",
+    "CRE EZY83 A320 45.95 8.90 170 FL110 250", "CRE DLH3 A321 46.20 9.20 190 FL240 300",
+    "CRE WZZ16 A321 45.55 10.30 270 FL200 290" })
+  -- "then on LEVEL" opening a clause after a level given: what follows waits for that level (ATALT)
+  check_eq(ex("the Alitalia, climb FL150, then on FL150 turn right heading 040"),
+    "ALT AZA21 FL150 ; ATALT AZA21 FL150 HDG AZA21 40 RIGHT")
+  check_eq(ex("Lufthansa 3 descend to FL180, on FL180 reduce speed 250"),
+    "ALT DLH3 FL180 ; ATALT DLH3 FL180 SPD DLH3 250")
+  check_eq(ex("the Lufthansa descend 9000 feet, and on 9000 feet turn left heading 200"),
+    "ALT DLH3 9000 ; ATALT DLH3 9000 HDG DLH3 200 LEFT")
+  asked(ex("the Lufthansa descend FL200, then on FL150 turn left heading 090"), "FL150 is never passed")
+  check_eq(ex("the Alitalia climb FL150, then on heading 090"), "ALT AZA21 FL150 ; HDG AZA21 90")
+  -- "when (it) is at LEVEL turn it on the right": the side's preposition belongs to the turn
+  check_eq(ex("descend the Lufthansa to FL160 and when is at FL200 turn on the right heading 240"),
+    "ALT DLH3 FL160 ; ATALT DLH3 FL200 HDG DLH3 240 RIGHT")
+  check_eq(ex("the Lufthansa descend FL160, when it is at FL200 turn it on the left heading 100"),
+    "ALT DLH3 FL160 ; ATALT DLH3 FL200 HDG DLH3 100 LEFT")
+  -- "then when it is at SPEED": the speed given, said again with its subject and "is"
+  check_eq(ex("make the Wizz go at 230 knots, then when it is at 230 descend to FL180"),
+    "SPD WZZ16 230 ; ATSPD WZZ16 230 ALT WZZ16 FL180")
+  check_eq(ex("the Ryanair go at 240 knots, then when is at 240 knots descend to FL110"),
+    "SPD RYR4K 240 ; ATSPD RYR4K 240 ALT RYR4K FL110")
+  check_eq(ex("the Ryanair speed 240 knots, and when it is at 240 knots turn on the left heading 300"),
+    "SPD RYR4K 240 ; ATSPD RYR4K 240 HDG RYR4K 300 LEFT")
+  asked(ex("the Ryanair go at 240 knots, then when is at 250 descend to FL110"), "250 was never given")
+  -- the aircraft corrected after a marker, "is"/"it is" restating: the one said first never instructed
+  check_eq(ex("please descend the Alitalia to FL100... no wait, I was wrong, is the easyJet not the Alitalia"),
+    "ALT EZY83 FL100")
+  check_eq(ex("please descend the easyJet to FL90... no wait, it is the Wizz"), "ALT WZZ16 FL90")
+  check_eq(ex("the Alitalia, speed 250 knots... no sorry, is the easyJet"), "SPD EZY83 250")
+  check_eq(ex("turn the Ryanair left heading 200, no, it should be the Lufthansa"), "HDG DLH3 200 LEFT")
+  asked(ex("the Alitalia, speed 250 knots... sorry, is the easyJet at FL110?"), "a question after the marker")
+  asked(ex("descend the easyJet to FL90, no, is the Wizz, the Lufthansa too"), "which aircraft")
+  -- "I said X but (it) is Y": the value named first is taken back
+  check_eq(ex("sorry Lufthansa 3, I said FL260 but is FL270"), "ALT DLH3 FL270")
+  check_eq(ex("Ryanair 4K, sorry, I said heading 200, but it's 210"), "HDG RYR4K 210")
+  check_eq(ex("Alitalia 21, I said 250 knots but I meant 240 knots"), "SPD AZA21 240")
+  asked(ex("sorry Lufthansa 3, I said FL260 but is heading 270"), "another kind said")
+  -- a value corrected for the protected zone's height and the simulation's rate
+  check_eq(ex("set the vertical dimension of the zone at 1000 feet, no, 1500 please"), "ZONEDH 1500")
+  check_eq(ex("zone half height 2000 feet, sorry, 1000"), "ZONEDH 1000")
+  asked(ex("set the zone half height to 1000 feet and 1500 feet"), "two heights, no correction")
+  check_eq(ex("put the simulation two times faster, no, three"), "DTMULT 3")
+  check_eq(ex("make the simulation 4 times faster, sorry, 5"), "DTMULT 5")
+  asked(ex("set multiplier 8 and run at 4x"), "two rates, no correction")
+  -- "only speed" (no "the") closing a correction keeps the commands of that kind
+  check_eq(ex("the Wizz, speed 290 knots, and then at FL310... no forget it, only speed"), "SPD WZZ16 290")
+  check_eq(ex("the Lufthansa, heading 200 and speed 250... sorry, just heading"), "HDG DLH3 200")
+  asked(ex("the Lufthansa, heading 200, no, only speed"), "a kind never given")
+  -- "only" and the characters after the airline of one of the aircraft named together
+  local _, ex2 = scene({ "CRE RYR3MC B738 45.50 9.20 080 FL110 260", "CRE RYR87LA B738 45.75 10.10 250 FL130 270",
+    "CRE EZY19BV A320 45.35 9.55 010 FL090 240" })
+  check_eq(ex2("Ryanair 3MC and Ryanair 87LA, climb FL140, sorry, only the eight seven lima alfa"), "ALT RYR87LA FL140")
+  check_eq(ex2("Ryanair 3MC and easyJet 19BV, descend FL80, no, only one nine bravo victor"), "ALT EZY19BV FL80")
+  asked(ex2("Ryanair 3MC and Ryanair 87LA, climb FL140, sorry, only the eight seven"), "no callsign's whole tail")
+end
