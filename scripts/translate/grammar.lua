@@ -1286,11 +1286,19 @@ end
 -- digit), as do words followed by another digit or a distance or time unit ("heading for one zero miles")
 local VALUE_ANCHORS = set_of({ "level", "fl", "heading", "hdg" })
 local RUN_ENDS = set_of({ "miles", "mile", "nm", "minutes", "minute", "min", "seconds", "km" })
-local function value_homophones(text)
+-- The text with the words mark(k, toks, bare, H, convert) sets in convert (convert[k] = true) read as the digit
+-- lexicon.digit_homophones (H) gives them, a mark after the word kept
+function G.rewrite_homophones(text, mark)
   local toks, bare = plain_words(text)
-  local H = lexicon.digit_homophones
-  local convert = {}
-  for k = 1, #bare do
+  local H, convert = lexicon.digit_homophones, {}
+  for k = 1, #bare do mark(k, toks, bare, H, convert) end
+  if not next(convert) then return text end
+  return tokens.rewrite(text, toks, function(i)
+    if convert[i] then return H[bare[i]] .. (toks[i]:match("%p+$") or ""), i + 1 end
+  end)
+end
+local function value_homophones(text)
+  return G.rewrite_homophones(text, function(k, toks, bare, H, convert)
     local w = bare[k]
     if VALUE_ANCHORS[w] and not toks[k]:match("%p$") then
       local j, said, heard = k + 1, 0, {}
@@ -1305,10 +1313,6 @@ local function value_homophones(text)
         for _, h in ipairs(heard) do convert[h] = true end
       end
     end
-  end
-  if not next(convert) then return text end
-  return tokens.rewrite(text, toks, function(i)
-    if convert[i] then return H[bare[i]] .. (toks[i]:match("%p+$") or ""), i + 1 end
   end)
 end
 -- "direct Bombay VOR", "after the Madras VOR": a city's other name (lexicon.navaid_city_names) straight before a
@@ -1359,10 +1363,7 @@ G.speed_homophone_ends = set_of({ "knots", "knot", "kts", "kt", "and", "then" })
 function G.thousand_speed_homophones(text)
   local low = text:lower()
   if not (low:find("thousand", 1, true) or low:find("to ", 1, true)) then return text end
-  local toks, bare = plain_words(text)
-  local H = lexicon.digit_homophones
-  local convert = {}
-  for k = 1, #bare do
+  return G.rewrite_homophones(text, function(k, toks, bare, H, convert)
     local w = bare[k]
     if w == "thousand" and k > 1 and H[bare[k - 1]] and not toks[k - 1]:match("%p$") then
       local h, before = bare[k - 1], bare[k - 2]
@@ -1387,10 +1388,6 @@ function G.thousand_speed_homophones(text)
         for _, h in ipairs(heard) do convert[h] = true end
       end
     end
-  end
-  if not next(convert) then return text end
-  return tokens.rewrite(text, toks, function(i)
-    if convert[i] then return H[bare[i]] .. (toks[i]:match("%p+$") or ""), i + 1 end
   end)
 end
 -- The axis ("lat" or "lon", lexicon.coordinate_axes.hemispheres) a word of bare_words names as a hemisphere (its
@@ -2122,11 +2119,8 @@ for _, w in ipairs(lexicon.speaker_roles) do CM_SUBJECTS[w] = true end
 -- reads as last + 1.
 local function commentary_end(self, b, last)
   -- (self.commentary_ends[b]: the end with no `last`, per request; G:blank, which may blank a mark, clears it)
-  local ends = self.commentary_ends
-  if not ends then
-    ends = {}
-    self.commentary_ends = ends
-  end
+  local ends = self.commentary_ends or {}
+  self.commentary_ends = ends
   local e = ends[b]
   if not e then
     e = b
@@ -5274,13 +5268,7 @@ function G:self_corrected()
     -- (taken back for a state told, "... ah no, it is already there.", with no instruction in its place: the last
     -- instruction before the run, from its instruction word, is dropped)
     if marked and withdrawn and p >= 1 then
-      self:mark_used(p, c)
-      for k = p, c - 1 do self.noted[k] = true end
-      local refs = {}
-      for _, r in ipairs(self.refs) do
-        if r.b < p or r.b >= c then refs[#refs + 1] = r end
-      end
-      self.refs = refs
+      self:set_aside(p, c - 1)
       a, marked = c - 1, false
     end
     -- ("speed 250 and climb FL350... no wait, just climb FL350 first": "just"/"only" and the last instruction's
@@ -5390,13 +5378,7 @@ function G:self_corrected()
           -- (what was said after the kept instruction's clause is taken back with the rest: "turn left heading
           -- 180, and at 15 miles from ARGAS, hmm, no, just the heading" drops the distance)
           local from = math.min(b, self:kept_clause_end(kept:lower(), a) or b)
-          self:mark_used(from, e)
-          for k = from, e - 1 do self.noted[k] = true end
-          local refs = {}
-          for _, r in ipairs(self.refs) do
-            if r.b < from or r.b >= e then refs[#refs + 1] = r end
-          end
-          self.refs = refs
+          self:set_aside(from, e - 1)
           a = e
         elseif q < b and (self:has_ref(c + 1, c + 2, "waypoint")
             or (self:quantities(c + 1, #self.t + 1)[1] or {}).b == c + 1) then
@@ -5446,13 +5428,7 @@ function G:self_corrected()
           return self:need(string.format("Should I do '%s' instead of '%s', or as well?", said(c, e), said(p, a)))
         end
         c = w
-        self:mark_used(p, c)
-        for k = p, c - 1 do self.noted[k] = true end
-        local refs = {}
-        for _, r in ipairs(self.refs) do
-          if r.b < p or r.b >= c then refs[#refs + 1] = r end
-        end
-        self.refs = refs
+        self:set_aside(p, c - 1)
         a = c
       else
         a = a + 1
@@ -5573,13 +5549,7 @@ function G:places_corrected()
       c = c + 1
     end
     if w and w.kind == "word" and marked and self:word(c, w.text) and starts[c + 1] then
-      self:mark_used(before.b - 1, c)
-      for k = before.b - 1, c - 1 do self.noted[k] = true end
-      local refs = {}
-      for _, r in ipairs(self.refs) do
-        if r.b < before.b - 1 or r.b >= c then refs[#refs + 1] = r end
-      end
-      self.refs = refs
+      self:set_aside(before.b - 1, c - 1)
       return
     end
   end
@@ -5600,13 +5570,7 @@ function G:places_corrected()
       local named = marked and not starts[k] and (self:sc_kept_end(c + 1) > #self.t and self:place_named(c, c + 1)
         or self:sc_kept_end(c + 2) > #self.t and self:place_named(c, c + 2))
       if marked and (starts[k] or named) and self:place_named(d + 1, d + 1 + n) then
-        self:mark_used(d + 1, c)
-        for x = d + 1, c - 1 do self.noted[x] = true end
-        local refs = {}
-        for _, r in ipairs(self.refs) do
-          if r.b < d + 1 or r.b >= c then refs[#refs + 1] = r end
-        end
-        self.refs = refs
+        self:set_aside(d + 1, c - 1)
         return
       end
     end

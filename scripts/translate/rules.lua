@@ -1350,6 +1350,16 @@ return function(intent, rule, words)
     end
     return false
   end
+  -- whether waypoint reference w is on the route of an aircraft the request names
+  local function on_a_route(g, w)
+    for _, r in ipairs(g:refs_in(1, #g.t + 1, "aircraft")) do
+      local st = r.exists and g:state(r.name)
+      for _, name in ipairs(st and st.route or {}) do
+        if name:upper() == w.name:upper() then return true end
+      end
+    end
+    return false
+  end
   local function no_direct(g, i)
     return not g:word(i, "skip") or not (g:followed_by(i, 8, "direct directly dct straight") or passed_by_direct(g, i))
   end
@@ -1376,13 +1386,7 @@ return function(intent, rule, words)
     local k = g:skip_fillers(i + 1)
     local w = g:refs_in(k, k + 1, "waypoint")[1]
     if not w then return false end
-    for _, r in ipairs(g:refs_in(1, #g.t + 1, "aircraft")) do
-      local st = r.exists and g:state(r.name)
-      for _, name in ipairs(st and st.route or {}) do
-        if name:upper() == w.name:upper() then return true end
-      end
-    end
-    return false
+    return on_a_route(g, w)
   end }
   rule { "remove delete del skip drop", "delwpt", near = { 8, "@route_nouns" },
          when = function(g, i) return g:has_ref(i + 1, i + 2, "waypoint") and no_direct(g, i) end }
@@ -1397,13 +1401,7 @@ return function(intent, rule, words)
       if r.e == k + 1 then w = r end
     end
     if not w then return false end
-    for _, r in ipairs(g:refs_in(1, #g.t + 1, "aircraft")) do
-      local st = r.exists and g:state(r.name)
-      for _, name in ipairs(st and st.route or {}) do
-        if name:upper() == w.name:upper() then return true end
-      end
-    end
-    return false
+    return on_a_route(g, w)
   end }
   -- "erase BARSA of the route", "I want to quit LALPI of its route" ("quitar" / "tirar", a Spanish or Portuguese
   -- speaker's false friend): the same, the waypoint straight after the verb and a route noun after it
