@@ -1012,12 +1012,18 @@ return function(H, f, compass)
       end
       named_at = named_at or self:place_by_name(s.trig + 1, s.e, self:state(id))
       -- ("move Shamrock 3GK to Boyne": a word written as a proper name straight after "to", closing the clause or
-      -- before "at", that the navdata holds as a fix within lexicon.navaid_range_nm of the aircraft, is that fix)
+      -- before "at", that the navdata holds as a fix within lexicon.navaid_range_nm of the aircraft, is that fix;
+      -- so is a fix's ident typed in capitals or said in lower case, no English word, before "at" or the level
+      -- moved to: "move Pasco 205 to TAVPI at five thousand", "move arik 104 to erami flight level 150")
       local to, here = self:find_word(s.trig + 1, s.e, "to"), self:state(id)
       local t, known = self.t[to + 1], self.world.place_known
-      if not named_at and to + 1 < s.e and t.kind == "word" and t.raw:match("^%u%l+$") and not t.keyword
+      local level_next = to + 2 < s.e and self:quantities(to + 2, s.e)[1]
+      level_next = level_next and level_next.b == to + 2 and level_next.kind == "alt"
+      local ident = to + 1 < s.e and t.kind == "word" and (t.raw:match("^%u%u%u%u%u$")
+        or (t.raw:match("^%l%l%l%l%l$") and not self:known_word(to + 1)))
+      if not named_at and to + 1 < s.e and t.kind == "word" and (t.raw:match("^%u%l+$") or ident) and not t.keyword
           and not self.u:used(to + 1) and known and here and here.lat
-          and (to + 2 >= s.e or self.t[to + 2].kind == "punct" or self:word(to + 2, "at")) then
+          and (to + 2 >= s.e or self.t[to + 2].kind == "punct" or self:word(to + 2, "at") or (ident and level_next)) then
         local lat, lon = known(t.raw:upper())
         local dlat, dlon = lat and lat - here.lat, lat and (lon - here.lon) * math.cos(math.rad(lat))
         if lat and 60 * math.sqrt(dlat * dlat + dlon * dlon) <= L.navaid_range_nm then
@@ -1191,6 +1197,15 @@ return function(H, f, compass)
       local letters, k = "", i
       while k < e and not self.u:used(k) and self.t[k].kind == "word" and L.phonetic[self.t[k].text] do
         letters, k = letters .. L.phonetic[self.t[k].text], k + 1
+      end
+      -- (or the ident of a fix, navaid or airport the navdata holds within lexicon.navaid_range_nm of the aircraft:
+      -- "add mike november alpha" near Minna is the MNA VOR; a spelling is exact, no sound-alike)
+      local near = #letters >= 2 and not seen[letters] and a and a.lat and self.world.locate
+      local plat, plon = nil, nil
+      if near then plat, plon = near(letters, nil, a.lat, a.lon) end
+      if plat then
+        local dlat, dlon = plat - a.lat, ((plon - a.lon + 180) % 360 - 180) * math.cos(math.rad(a.lat))
+        if 60 * math.sqrt(dlat * dlat + dlon * dlon) <= L.navaid_range_nm then seen[letters] = true end
       end
       if #letters >= 2 and seen[letters] then
         self:explain(i, k)
@@ -1610,6 +1625,13 @@ return function(H, f, compass)
       local id = r.lat and self:airport_by_words(b, e, r, 2)
       if id then return id end
     end
+    -- (one word of an airport's name near an aircraft, said with an airport noun, "toward Oakland airport" over the
+    -- Bay: KOAK "METROPOLITAN OAKLAND INTL", before an airport far away whose name starts with it, KPTK "OAKLAND CO
+    -- INTL" in Michigan; "over Logan airport": KBOS)
+    for _, r in ipairs(near) do
+      local id = r.lat and self:airport_by_words(b, e, r, 1, true)
+      if id then return id end
+    end
     local airport = self:airport_by_name(b, e)
     if airport then
       if a then self:far_from_aircraft(airport, a) end
@@ -1962,8 +1984,8 @@ return function(H, f, compass)
   -- three words in [b, e), the first no English squawk knows, that the name of exactly one airport
   -- within lexicon.navaid_range_nm of `near` {lat, lon} [deg] holds (sim:airports_with_words); the
   -- question names them when several do (at most 4), nil when none; `min_words` (default 1): the fewest words
-  -- the name found is said in.
-  function m:airport_by_words(b, e, near, min_words)
+  -- the name found is said in; `noun` (true): only words an airport noun follows ("Oakland airport").
+  function m:airport_by_words(b, e, near, min_words, noun)
     local with = self.world.airports_with_words
     if not with or not near.lat then return nil end
     local function free(k) return k < e and self.t[k] and self.t[k].kind == "word" and self.t[k].alpha
@@ -1973,7 +1995,8 @@ return function(H, f, compass)
         for n = 3, 1, -1 do
           local words = {}
           for k = i, i + n - 1 do words[#words + 1] = free(k) and self.t[k].text or nil end
-          if #words == n and (n > 1 or #words[1] >= 4) and n >= (min_words or 1) then
+          if #words == n and (n > 1 or #words[1] >= 4) and n >= (min_words or 1)
+              and (not noun or self:word(i + n, "@airport_nouns")) then
             local phrase = table.concat(words, " ")
             local ids, class = {}, self.world.airport_class
             for _, x in ipairs(with(phrase, near.lat, near.lon, L.navaid_range_nm)) do
@@ -2073,6 +2096,11 @@ return function(H, f, compass)
               if cls(id) == "LARGE" or cls(id) == "MEDIUM" then ids[#ids + 1] = id end
             end
             if #ids > 1 then ids = {} end  -- ("Gotham City": no airport of that city, one of several "City")
+          end
+          -- (a city's airline airport among several large fields found for it: lexicon.main_airports)
+          local main = #ids > 1 and L.main_airports[phrase:lower()]
+          for _, x in ipairs(main and ids or {}) do
+            if x == main then ids = { main } break end
           end
           local id = self:one_named(ids, "airport", phrase, 4)
           if id then
@@ -3070,7 +3098,16 @@ return function(H, f, compass)
     end
     if not name then
       local k = self:find_word(s.b, s.e, "@named")
-      if k + 1 < s.e and self.t[k + 1].kind == "word" then name = self.t[k + 1].raw:upper() end
+      -- (a name spelled in the phonetic alphabet, two letters or more, is its letters: "named kilo alpha romeo
+      -- uniform" is KARU, never KILO with the rest dropped)
+      local letters, j = "", k + 1
+      while j < s.e and self.t[j].kind == "word" and L.phonetic[self.t[j].text] do
+        letters, j = letters .. L.phonetic[self.t[j].text], j + 1
+      end
+      if #letters >= 2 then
+        name = letters
+        self:explain(k + 1, j)
+      elseif k + 1 < s.e and self.t[k + 1].kind == "word" then name = self.t[k + 1].raw:upper() end
     end
     if not name then
       -- "define waypoint DELTA at ...", "define a fix GOLF at ...": a name typed in capitals after the

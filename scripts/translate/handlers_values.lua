@@ -934,6 +934,11 @@ return function(H, f, wrap, compass)
       toward = r and r.name:upper() or self:place_by_name(at, s.e, now)
       -- ("toward O'Hare": an airport said by a distinctive part of its name, as a destination is read)
       if not toward and now and not self.ask then toward = self:airport_by_words(at, math.min(s.e, at + 3), now) end
+      -- ("toward Providence airport": a city said with an airport noun is its airport, as a destination is read:
+      -- KPVD beside the PROVIDENCE VOR)
+      if not toward and now and not self.ask and self:word_in(at, math.min(s.e, at + 4), "@airport_nouns") then
+        toward = self:airport_by_name(at, s.e, now, true)
+      end
     end
     local hdg, offset  -- offset: degrees from each aircraft's present heading
     -- ("turn left by 90 degrees and, in two minutes, onto heading 070": a heading said after a turn's degrees in the

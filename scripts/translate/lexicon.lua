@@ -2018,7 +2018,11 @@ return {
                     -- Brussels's national airport, its BRUSSELS SOUTH being Charleroi's)
                     charleroi = "brussels south", ostend = "oostende", antwerp = "deurne", basel = "bale mulhouse",
                     brussels = "brussels natl", zaventem = "brussels natl",
-                    boston = "general edward lawrence logan",
+                    boston = "general edward lawrence logan", ["boston logan"] = "general edward lawrence logan",
+                    -- (the US: the city's airport named after a person, and Washington's National by its
+                    -- namesake; Cyprus's Paphos as the navdata spells it)
+                    milwaukee = "general mitchell", ["reagan national"] = "ronald reagan washington natl",
+                    ["ronald reagan"] = "ronald reagan washington natl", paphos = "pafos",
                     -- (California: the city's airport named after a person)
                     burbank = "bob hope",
                     -- (South-East Asia: cities whose one large airport the navdata names after a person, a
@@ -2034,6 +2038,11 @@ return {
                     -- (Japan: the airport known by its district, which the navdata names after its city)
                     haneda = "tokyo intl", ["tokyo haneda"] = "tokyo intl", itami = "osaka intl",
                     ["osaka itami"] = "osaka intl" },
+  -- a city's airline airport by the city's name, where navdata gives the city other large fields nearby (beside
+  -- its navaid, or holding its name): "Atlanta airport" is KATL, not DeKalb-Peachtree KPDK; "Baltimore airport" is
+  -- KBWI, not Fort Meade's 3000 ft TIPTON. Read only when that airport is among the candidates found; a city of
+  -- several airline airports (Chicago, London, Montreal) is not listed and stays asked.
+  main_airports = { atlanta = "KATL", baltimore = "KBWI", milwaukee = "KMKE", providence = "KPVD" },
   -- prepositions before a place named by its name ("at Barajas", "over Schiphol")
   place_words = { "at", "over", "above", "near", "from", "overhead" },
   -- A city or airport named to describe an aircraft or airspace, no place instructed: said before one of

@@ -1101,6 +1101,13 @@ return function(intent, rule, words)
     return (g:word(i + 2, to) and g:place_by_name(i + 1, i + 2) ~= nil)
       or (g:word(i + 3, to) and g:place_by_name(i + 1, i + 3) ~= nil)
   end }
+  -- "add mike november alpha to the route": a place spelled in the phonetic alphabet, two letters or more, straight
+  -- after the verb and before "to"/"at"/"onto" (the handler reads the letters as a known ident, else asks)
+  rule { "add append insert", "addwpt", near = { 10, "@route_nouns" }, when = function(g, i)
+    local k = i + 1
+    while g.t[k] and g.t[k].kind == "word" and PHONETIC[g.t[k].text] do k = k + 1 end
+    return k >= i + 3 and g:word(k, "to at onto")
+  end }
   -- "add the point EXIT2": a point that is a known waypoint
   rule { "add append insert", "addwpt", near = { 3, "point" },
          when = function(g, i) return g:has_ref(g:find_word(i + 1, i + 4, "point") + 1, i + 5, "waypoint") end }

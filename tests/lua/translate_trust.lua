@@ -16487,3 +16487,53 @@ do
   check_eq(ex2("Ryanair 3MC and easyJet 19BV, descend FL80, no, only one nine bravo victor"), "ALT EZY19BV FL80")
   asked(ex2("Ryanair 3MC and Ryanair 87LA, climb FL140, sorry, only the eight seven"), "no callsign's whole tail")
 end
+do
+  -- fapt (cycle 57): places by name: airports by city or by a word of their name, spelled idents, MOVE to a fix
+  local nav, ex = navscene({ "CRE UAL837 B789 37.80 -122.80 090 FL180 300", "CRE SWA3302 B737 37.30 -122.00 330 9000 250",
+    "CRE ASA1120 A320 38.10 -122.30 180 12000 260" }, "fapt's Bay Area airports")
+  if nav then
+    -- one word of a near airport's name with an airport noun: KOAK by the Bay, never KPTK "OAKLAND CO" in Michigan
+    check_eq(ex("Alaska 1120, turn toward the Oakland airport please"), "HDG ASA1120 KOAK")
+    check_eq(ex("united eight three seven fly heading towards oakland airport"), "HDG UAL837 KOAK")
+    check_eq(ex("reposition Southwest 3302 over Oakland airport at 6000 feet"), "MOVE SWA3302 KOAK 6000")
+    check(not ex("Southwest 3302 head toward Oakland airport"):find("KPTK"), "no far Oakland")
+    -- a city whose name three Bay airports hold or lie by stays asked as a destination
+    asked(ex("United 837 new destination Oakland please"), "KOAK, KSFO or KSJC")
+  end
+  local nav2, ex2 = navscene({ "CRE FFT1919 A320 33.9 -84.9 090 9000 250", "CRE UAL1010 A320 39.5 -76.9 180 9000 250",
+    "CRE ENY3411 E175 42.3 -88.1 010 6000 220", "CRE JBU88 A320 41.9 -71.2 200 8000 250",
+    "CRE AAL1523 B738 42.00 -70.90 330 FL220 290", "CRE SWA77 B737 38.5 -77.5 090 9000 250",
+    "CRE WZZ7GM A321 34.0 33.0 270 FL300 280" }, "fapt's city airports")
+  if nav2 then
+    -- a city's airline airport among its large fields (lexicon.main_airports); Chicago's two stay asked
+    check_eq(ex2("Frontier 1919, set the Atlanta airport as destination"), "DEST FFT1919 KATL")
+    check_eq(ex2("United 1010 your destination is now Baltimore"), "DEST UAL1010 KBWI")
+    check_eq(ex2("JetBlue 88 climb to 9000 feet and then turn towards Providence airport"),
+      "ALT JBU88 9000 ; HDG JBU88 KPVD")
+    check_eq(ex2("Envoy 3411 head toward the Milwaukee airport"), "HDG ENY3411 KMKE")
+    asked(ex2("Envoy 3411 destination Chicago"), "KORD or KMDW")
+    -- the city's airport named after a person, said by the person's name or by the city and the name
+    check_eq(ex2("Southwest 77, destination Ronald Reagan airport"), "DEST SWA77 KDCA")
+    check_eq(ex2("give Southwest 77 the new destination Reagan National"), "DEST SWA77 KDCA")
+    check_eq(ex2("American 1523 turn towards Boston Logan please"), "HDG AAL1523 KBOS")
+    check_eq(ex2("Wizz 7GM destination Paphos"), "DEST WZZ7GM LCPH")
+  end
+  local nav3, ex3 = navscene({ "CRE ETH911 B738 9.30 8.20 255 FL200 300", "ADDWPT ETH911 ABC",
+    "CRE MSR877 B738 10.00 6.60 160 FL280 280", "CRE ARA104 B737 6.10 4.90 280 FL120 250", "ADDWPT ARA104 LOS" },
+    "fapt's spelled idents")
+  if nav3 then
+    -- a waypoint being defined, named in the phonetic alphabet: its letters, never the first word alone
+    check_eq(ex3("please define waypoint named papa alpha romeo kilo at 9.1 north 7.2 east"), "DEFWPT PARK 9.1 7.2")
+    check_eq(ex3("create a waypoint called sierra tango echo at 9.2 N 7.1 E"), "DEFWPT STE 9.2 7.1")
+    check_eq(ex3("define a waypoint named delta at 9 north 7 east"), "DEFWPT DELTA 9 7")
+    -- an ident spelled in the phonetic alphabet that the navdata holds near the aircraft (MNA, the Minna VOR)
+    check_eq(ex3("Egyptair 877, please add mike november alpha at the end of your route"), "ADDWPT MSR877 MNA")
+    check_eq(ex3("ethiopian nine one one proceed direct mike november alpha"),
+      "ADDWPT ETH911 MNA ; DIRECT ETH911 MNA")
+    asked(ex3("egyptair 877 add zulu quebec xray to the route"), "no ZQX near")
+    -- MOVE to a fix's ident said after "to", before the level moved to
+    check_eq(ex3("move arik one zero four to ERAMI at flight level one two zero"), "MOVE ARA104 ERAMI FL120")
+    check_eq(ex3("move arik 104 to erami 6000 feet"), "MOVE ARA104 ERAMI 6000")
+    asked(ex3("move arik 104 to water flight level 150"), "no place")
+  end
+end
