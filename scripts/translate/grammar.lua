@@ -1636,7 +1636,7 @@ local function written_forms(text, world)
   -- pattern requires, its first argument; a rewrite outside where() sets `low` again)
   local low = text:lower()
   local function where(needle, pattern, repl)
-    text, low = tokens.gsub_where(text, low, needle, pattern, repl)
+    if low:find(needle) then text, low = tokens.gsub_where(text, low, needle, pattern, repl) end
   end
   -- ".hold", ".run": a command typed with a text client's leading dot is the word
   where("%.", "^(%s*)%.(%a)", "%1%2")
@@ -2046,6 +2046,13 @@ do  -- (G:said's tables, its own)
         end
       end
       self.present, self.held, self.lists_seen = present, held, SAID_LISTS.seen
+    end
+    -- (a list seen before the request was first asked about is answered by self.held at once, as below, but
+    -- where it is longer than the request: that answer the memo keeps)
+    local serial = SAID_LISTS.serial[words]
+    if serial and serial <= self.lists_seen then
+      if not self.held[words] then return false end
+      if #LIST_WORDS[words] <= #self.words then return true end
     end
     local v = memo[words]
     if v ~= nil then return v end
@@ -3847,9 +3854,19 @@ end
 -- OAKVL, turn ...": lexicon.polite_openings; "I'd like the Rouge, once ...", "we would like":
 -- lexicon.wish_before_like words, then "like"), skipping fillers after it; else i.
 function G:request_opening(i)
-  for _, p in ipairs(lexicon.request_openings) do
+  -- (G.request_opening_words: lexicon.request_openings, each as the array of its words; built at the first call)
+  local openings = G.request_opening_words
+  if not openings then
+    openings = {}
+    for n, p in ipairs(lexicon.request_openings) do
+      openings[n] = {}
+      for w in p:gmatch("%S+") do table.insert(openings[n], w) end
+    end
+    G.request_opening_words = openings
+  end
+  for _, p in ipairs(openings) do
     local k = i
-    for w in p:gmatch("%S+") do
+    for _, w in ipairs(p) do
       if not self:word(k, w) then k = nil break end
       k = k + 1
     end
@@ -11867,11 +11884,29 @@ do
     end
   end
   table.sort(G.common_read, function(x, y) return #x[1] > #y[1] end)
+  -- G.common_by_first[w]: the places in G.common_read, ascending, of the names whose first word (run of %w) is w
+  G.common_by_first = {}
+  for k, c in ipairs(G.common_read) do
+    local w = c[1]:match("^%w+")
+    G.common_by_first[w] = G.common_by_first[w] or {}
+    table.insert(G.common_by_first[w], k)
+  end
 end
 function G.common_named(text, world, parsed)
   if #world.aircraft == 0 or not text:find("%d") and not text:find("%a%s+%a") then return text end
   local said, lower = nil, text:lower()
-  for _, c in ipairs(G.common_read) do
+  -- (a name is found whole only where its first word is a word of the text: those names, in G.common_read's order)
+  local places, seen = {}, {}
+  for w in lower:gmatch("%w+") do
+    if not seen[w] then
+      seen[w] = true
+      local first = G.common_by_first[w]
+      for j = 1, first and #first or 0 do places[#places + 1] = first[j] end
+    end
+  end
+  table.sort(places)
+  for _, k in ipairs(places) do
+    local c = G.common_read[k]
     local at = lower:find(c[1], 1, true) and lower:find("%f[%w]" .. c[1]:gsub("%p", "%%%0") .. "%f[%W]")
     local nx = at and lower:match("^%s+(%w+)", at + #c[1])
     local before = at and lower:sub(1, at - 1):match("(%a+)%s+$")
