@@ -1067,6 +1067,17 @@ return function(H, f, compass)
       if q.kind == "mach" and not opt[3] then opt[3] = f.mach(q.value) end
       if q.kind == "vs" and not opt[4] then opt[4] = f.int(q.value) end
     end
+    -- ("facing north", "pointing south-west", "heading due east", "flying west"): a compass point after a word of
+    -- facing or going is MOVE's heading [deg]
+    for i = s.trig + 1, opt[2] and 0 or s.e - 1 do
+      local deg, e = self:point_said(i)
+      local v = self:word(i - 1, "due") and i - 2 or i - 1
+      if deg and not self.u:used(i) and not self:word(e, "of") and self:word(v, "heading hdg facing pointing @compass_verbs") then
+        opt[2] = f.num(deg == 0 and 360 or deg)
+        self:explain(v, e)
+        break
+      end
+    end
     if by and not opt[1] then
       return self:need(string.format("Which level should %s be moved to? '%s' is a difference, not a level.", id,
         self:raw(by.b, by.e + 1)))

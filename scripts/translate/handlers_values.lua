@@ -802,11 +802,12 @@ return function(H, f, wrap, compass)
     -- "turn right 20", "left thirty": a number of one or two digits, typed or said as a number
     -- (not digit by digit, as headings are), after a turn direction, with no "heading", is the
     -- degrees of the turn (headings have three); after "turn" with no side ("turn 30") it is
-    -- asked about below: a turn of that many degrees, or a heading?
+    -- asked about below: a turn of that many degrees, or a heading? Straight after "to"/"onto" ("turn left to 90")
+    -- the number is the heading turned to
     if #rel_c == 0 and #abs_c == 1 and abs_c[1].kind == "plain"
         and ((abs_c[1].number.typed and #abs_c[1].number.digits <= 2)
              or (not abs_c[1].number.typed and not abs_c[1].number.lead_digit and abs_c[1].value < 100)) and not self:word_in(s.b, s.e, "heading hdg")
-        and self:word_in(s.b, abs_c[1].b, "@left @right turn") then
+        and self:word_in(s.b, abs_c[1].b, "@left @right turn") and not self:word(abs_c[1].b - 1, "to onto") then
       rel_c[1] = { kind = "angle", value = abs_c[1].value, b = abs_c[1].b, e = abs_c[1].e, turn = 0,
                    number = abs_c[1].number }
       abs_c = {}

@@ -1898,6 +1898,15 @@ return function(intent, rule, words)
 
   -- information and repositioning
   rule { "where", false, near = { 5, "route" } }  -- "show me where its route goes": the route is listed
+  -- "show us where JetBlue 615 is going, like its list of stops", "where is it heading, the route": where it goes,
+  -- said with its route or its stops after the verb of going (no value said), is the route listed
+  rule { "where where's wheres", "listrte", when = function(g, i)
+    local e = math.min(#g.t + 1, i + 7)
+    local k = g:find_word(i + 1, e, "going headed heading flying")
+    if k == e or #g:quantities(1, #g.t + 1) > 0 then return false end
+    local last = math.min(#g.t + 1, k + 9)
+    return g:find_word(k + 1, last, "route routing stops waypoints") < last
+  end }
   -- "where is the Shamrock routing?", "show me where KLM12 is routed", "where's the Speedbird going next?": the
   -- route asked (the question's verb, or "next" after a verb of going, within the seven words after "where")
   rule { "where where's wheres", "listrte", when = function(g, i)

@@ -16487,3 +16487,26 @@ do
   check_eq(ex2("Ryanair 3MC and easyJet 19BV, descend FL80, no, only one nine bravo victor"), "ALT EZY19BV FL80")
   asked(ex2("Ryanair 3MC and Ryanair 87LA, climb FL140, sorry, only the eight seven"), "no callsign's whole tail")
 end
+
+-- f177: a newcomer's everyday words (a teacher running a demo)
+do
+  local _, ex = scene({ "CRE FDX90 B763 41.10 -73.80 135 FL160 280", "CRE SKW70 E175 40.70 -74.40 300 8000 230",
+    "DEFWPT PARKY 40.80 -73.90", "DEFWPT GYMMO 40.95 -74.20", "ADDWPT FDX90 PARKY", "ADDWPT FDX90 GYMMO" })
+  -- "turn left to 90": the number after "to" is the heading turned to, never a turn of that many degrees
+  check_eq(ex("FedEx 90, turn left to 90"), "HDG FDX90 90 LEFT")
+  check_eq(ex("SkyWest 70 please turn right onto 20"), "ASK What heading should SKW70 fly: 020 or 200? I heard '20'.")
+  check_eq(ex("SkyWest 70, turn right to ninety"), "HDG SKW70 90 RIGHT")
+  check_eq(ex("FedEx 90 turn left 30"), "HDG FDX90 105 LEFT")  -- (no "to": a turn of 30 degrees)
+  asked(ex("FedEx 90, turn right to 45"), "045 to the right is the long way round")
+  -- MOVE's heading said as a compass point after a word of facing
+  check_eq(ex("Move SkyWest 70 over to PARKY at 4000 feet, facing north"), "MOVE SKW70 PARKY 4000 360")
+  check_eq(ex("move SkyWest 70 to 40.9 -74.0, 5000 ft, pointing south-west, 200 knots"),
+    "MOVE SKW70 40.9 -74 5000 225 200")
+  check_eq(ex("please move FedEx 90 to GYMMO heading due east"), "MOVE FDX90 GYMMO 16000 90")
+  check_eq(ex("move FedEx 90 to 41 north 74 west"), "MOVE FDX90 41 -74")
+  -- where it is going, said with its route or its stops: the route listed
+  check_eq(ex("Can you show us where FedEx 90 is going, like its list of stops?"), "LISTRTE FDX90")
+  check_eq(ex("show me where the FedEx is heading, the whole route"), "LISTRTE FDX90")
+  check_eq(ex("where is SkyWest 70 going?"), "DEST SKW70")
+  check_eq(ex("where is SkyWest 70?"), "POS SKW70")
+end
