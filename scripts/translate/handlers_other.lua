@@ -4116,7 +4116,8 @@ return function(H, f, compass)
     for i = s.trig, s.e - 1 do
       if self.t[i].kind == "punct" and self.t[i].text == ":" and i + 1 < s.e then
         self:mark_used(i + 1, s.e)
-        return self:emit("ECHO " .. self:raw(i + 1, s.e))
+        -- (a mark closing the message stays on its last word: "welcome Lincoln High!")
+        return self:emit("ECHO " .. (self:raw(i + 1, s.e):gsub(" ([!?.])$", "%1")))
       end
     end
     -- "a note on screen saying baseline run", "a message that says trial 2": the words after, as typed
@@ -4184,6 +4185,10 @@ return function(H, f, compass)
     if self:word_in(1, #self.t + 1, "mvp") or self:word_in(b, s.e, "@mvp") then return self:emit("RESO MVP") end
     if self:on_off(s) == 0 then return self:emit("RESO OFF") end
     if self:on_off(s) == 1 then return self:emit("RESO MVP") end  -- MVP is the one method RESO has
+    -- ("let the computer steer them apart", "have the sim solve the conflicts": the simulation asked to resolve)
+    if self:word(s.trig, "solve resolve steer separate") and self:word_in(math.max(1, s.trig - 3), s.trig, "computer @sim") then
+      return self:emit("RESO MVP")
+    end
     -- "enable conflict detection and resolution": switched on (or off) with the detection before it
     if self:on_off(s) < 0 and self.last_on ~= nil and self:word(s.trig - 1, "and") then
       return self:emit(self.last_on == 1 and "RESO MVP" or "RESO OFF")

@@ -396,6 +396,9 @@ return {
         "conflicting",
         -- the part of the simulation a setting belongs to ("turn on the conflict detection module")
         "module", "modules", "function", "functionality", "feature", "system", "logic",
+        -- (a newcomer's words for the simulation and its conflict detection: "let the computer steer them apart",
+        -- "turn on the crash warnings", "ten times faster than real life")
+        "computer", "crash", "crashes", "life",
         -- verbs that go with an instruction's direction or place: informal ones ("bump the speed up", "crank
         -- the look-ahead up") and those of staying and going ("stay on 250 knots", "returning to Orly")
         "bump", "crank", "push", "knock", "dial", "stay", "remain", "return", "sit", "head", "hand",

@@ -2771,9 +2771,13 @@ return function(intent, rule, words)
 
   -- "write on the screen: exercise starts now", "show in the log: run 2 done": the text after the colon, for the
   -- screen or the log named between the verb and the colon
+  -- ("put a message up on the screen: welcome!": a message's noun and "up" between)
   rule { "write put show display", "echo", when = function(g, i)
-    for k = i + 1, math.min(#g.t - 1, i + 5) do
-      if g.t[k].kind == "punct" then return g.t[k].text == ":" and g:word_in(i + 1, k, "log screen scope console") end
+    for k = i + 1, math.min(#g.t - 1, i + 7) do
+      if g.t[k].kind == "punct" then
+        return g.t[k].text == ":" and g:word_in(i + 1, k, "log screen scope console")
+          and (k <= i + 5 or not g:has_ref(i + 1, k, "aircraft"))
+      end
     end
     return false
   end }
@@ -2829,6 +2833,12 @@ return function(intent, rule, words)
   -- zone"), and with an aircraft named it is the reason for its instruction ("KLM12 conflict alert, turn left")
   rule { "alert alerts alerting", "asas", prev = { 1, "conflict conflicts" }, when = function(g, i)
     return switched(g, i) and not g:has_ref(1, #g.t + 1, "aircraft")
+  end }
+  -- "turn on the crash warnings", "switch the conflict warnings on", "turn on the warning system": a newcomer's
+  -- words for conflict detection, switched, no aircraft named
+  rule { "warning warnings", "asas", when = function(g, i)
+    return (g:word(i - 1, "conflict conflicts crash collision") or g:word(i + 1, "system"))
+      and switched(g, g:word(i + 1, "system") and i + 1 or i) and not g:has_ref(1, #g.t + 1, "aircraft")
   end }
   rule { "cr", "reso", next = "on off mvp" }  -- "CD on, CR off", "cr mvp": conflict resolution by its letters
   -- ("CR: MVP": the letters as a label, a colon or a dash before the setting)
@@ -2924,6 +2934,13 @@ return function(intent, rule, words)
   rule { "resolution resolutions", false, prev = { 3, "watch watching see observe" }, when = function(g, i)
     return g:any_instruction_in(1, i - 1)
   end }
+  -- "let the computer steer them apart", "have the simulator solve the conflicts by itself": resolution by the
+  -- simulation (the computer or the simulation the agent, no aircraft named)
+  rule { "solve resolve steer separate", "reso", when = function(g, i)
+    return g:word_in(math.max(1, i - 3), i, "computer @sim") and not g:has_ref(1, #g.t + 1, "aircraft")
+      and (g:word_in(i + 1, math.min(#g.t + 1, i + 4), "apart conflicts conflict")
+        or g:word(i + 1, "them"))
+  end }
   rule { "resolution resolve reso resolver", "reso" }  -- ("switch the resolver on": the resolution's own word)
   -- "enable MVP", "switch to MVP": the method named alone is resolution by it
   rule { "mvp", "reso", prev = { 3, "@on switch" } }
@@ -2980,6 +2997,10 @@ return function(intent, rule, words)
   rule { "sep", "zone", prev = { 1, "horizontal lateral vertical" } }  -- "horizontal sep back to 5nm"
   rule { "half", "zone", next = "height" }
   rule { "look", "dtlook", next = "ahead" }
+  -- "have the computer look further ahead for conflicts": the look-ahead, said with how far
+  rule { "look", "dtlook", next = "further farther", when = function(g, i) return g:word(i + 2, "ahead") end }
+  -- "make the safety circle 4 miles", "a bigger safety bubble": the protected zone in a newcomer's words
+  rule { "circle bubble", "zone", prev = { 1, "safety" } }
   rule { "look", "dtlook", prev = { 1, "dt" } }
   rule { "lookahead dtlook", "dtlook" }
   -- "UAE45 step down to FL340, turbulence", "... for turbulence": with an aircraft named, turbulence is its reason

@@ -16509,4 +16509,15 @@ do
   check_eq(ex("show me where the FedEx is heading, the whole route"), "LISTRTE FDX90")
   check_eq(ex("where is SkyWest 70 going?"), "DEST SKW70")
   check_eq(ex("where is SkyWest 70?"), "POS SKW70")
+  -- a newcomer's words for the simulation's settings
+  check_eq(ex("please switch the crash warnings on so we see when planes get close"), "ASAS ON")
+  check_eq(ex("turn on the warning system, then make the safety bubble 6 miles"), "ASAS ON ; ZONER 6")
+  check_eq(ex("set the safety circle to 3 miles"), "ZONER 3")
+  check_eq(ex("let the computer steer them apart"), "RESO MVP")
+  check_eq(ex("have the simulator solve the conflicts by itself"), "RESO MVP")
+  asked(ex("don't let the computer steer them apart"), "resolution off for everyone is confirmed")
+  check_eq(ex("can the computer look further ahead, like 8 minutes"), "DTLOOK 480")
+  check_eq(ex("speed the simulation up, five times faster than real life"), "DTMULT 5")
+  check_eq(ex("Put a message up on the screen: Hello Room 12!"), "ECHO Hello Room 12!")
+  check_eq(ex("please put a note up on the screen: lunch at noon"), "ECHO lunch at noon")
 end
