@@ -927,7 +927,10 @@ return function(H, f, wrap, compass)
     local refs = self:refs_in(s.b, s.e, "aircraft")
     -- the place said after "towards" / "in the direction of" (a waypoint, or a place by its name)
     local toward
+    -- ("turn to face our school": the place faced, after "to face")
     local tw = self:find_word(s.b, s.e, "towards toward direction")
+    local face = self:find_word(s.b, s.e, "face")
+    if tw == s.e and face < s.e and self:word(face - 1, "to") then tw = face end
     if not abs and not rel and tw < s.e and (not self:word(tw, "direction") or self:word(tw + 1, "of")) then
       local at = self:word(tw, "direction") and tw + 2 or tw + 1
       local r = self:refs_in(at, math.min(s.e, at + 3), "waypoint")[1]

@@ -471,8 +471,8 @@ return function(intent, rule, words)
   rule { "maintain maintained", "maintain" }
   -- "swap the levels of KLM12 and TRA6021", "exchange their headings": each flies the other's
   rule { "swap exchange", "swap", near = { 4, "@swapped" } }
-  -- "put BAW123 at the same level as DLH4AX"; "keep it at FL290 and 270 kts"
-  rule { "level altitude", "alt", prev = { 1, "same" }, next = "as" }
+  -- "put BAW123 at the same level as DLH4AX", "fly at the same height as Delta 1776"; "keep it at FL290 and 270 kts"
+  rule { "level altitude height", "alt", prev = { 1, "same" }, next = "as" }
   rule { "level", "alt", prev = { 2, "same" }, next = "as", when = function(g, i) return g:word(i - 1, "flight") end }
   rule { "keep", "maintain", next = "it him her them", when = function(g, i)
     return g:word(i + 2, "at") and g.t[i + 3] ~= nil and (g.t[i + 3].kind == "number" or g:word(i + 3, "fl flight"))
@@ -1479,6 +1479,13 @@ return function(intent, rule, words)
     return r ~= nil and (k == i + 2 or g:word(r.e, "out")) and not g:has_ref(1, #g.t + 1, "type")
   end }
   rule { "take", "delete", near = { 5, "out" } }
+  -- "take BEDRK off your route", "take CGT off of Southwest 903's route": a waypoint straight after the verb, "off"
+  -- (and "of") after it, a route noun within the six words after
+  rule { "take", "delwpt", when = function(g, i)
+    local r = g:refs_in(i + 1, i + 2, "waypoint")[1]
+    if not (r and r.b == i + 1 and g:word(r.e, "off")) then return false end
+    return g:word_in(r.e + 1, math.min(#g.t + 1, r.e + 7), "@route_nouns")
+  end }
   -- "take Scandinavian one five zero one out of the exercise": a flying aircraft, however long its spoken callsign,
   -- straight after the verb ("the" between), "out" straight after it, and then nothing in its clause or "of" the
   -- exercise (lexicon.presence_places, @sim: "out of the hold" is no deletion); "take the Jet2 off, it's finished":
@@ -2290,6 +2297,29 @@ return function(intent, rule, words)
     if not r then return false end
     local k = g:word(r.e, "now flying going climbing descending") and r.e + 1 or r.e
     return g.t[#g.t].text == "?" or k > #g.t
+  end }
+  -- "SkyWest 5412, how fast are you going?", "United 837, how high are you right now?": the aircraft addressed
+  -- before the question about its own state, "are you" after the adjective, nothing but a verb of going or "now"
+  -- up to the question's end ("how fast can you go" asks what it could do: no state)
+  rule { "how", "pos", next = "fast high", when = function(g, i)
+    if not (g:word(i + 2, "are") and g:word(i + 3, "you") and g:has_ref(1, i, "aircraft")) then return false end
+    local k = i + 4
+    while g:word(k, "going flying travelling traveling now right currently") do k = k + 1 end
+    return g.t[k] == nil or (g.t[k].kind == "punct" and g.t[k].text ~= ",")
+  end }
+  -- "what's happening with United 837?", "what is going on with the SkyWest": the aircraft's state asked
+  rule { "happening going", "pos", when = function(g, i)
+    local w = g:word(i, "going") and i + 1 or i
+    if g:word(i, "going") and not g:word(w, "on") then return false end
+    local q = g:word(i - 1, "is 's") and i - 2 or i - 1
+    local k = g:skip_fillers(w + 2)
+    return g:word(q, "what what's whats") and g:word(w + 1, "with")
+      and aircraft_alone(g, g:word(k, "the") and k + 1 or k, true)
+  end }
+  -- "can you show us everything about Endeavor 5120", "tell us all about the SkyWest": all of its state
+  rule { "about", "pos", when = function(g, i)
+    return g:word(i - 1, "everything all") and g:word_in(math.max(1, i - 4), i - 1, "show tell")
+      and aircraft_alone(g, g:skip_fillers(i + 1), true)
   end }
   rule { "tell", "pos", next = "me us", near = { 5, "altitude speed heading position level" } }
   -- "AAR731 current altitude tell me", "KAL8 speed let me know", "heading please tell": the state word said

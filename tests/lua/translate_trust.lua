@@ -16520,4 +16520,17 @@ do
   check_eq(ex("speed the simulation up, five times faster than real life"), "DTMULT 5")
   check_eq(ex("Put a message up on the screen: Hello Room 12!"), "ECHO Hello Room 12!")
   check_eq(ex("please put a note up on the screen: lunch at noon"), "ECHO lunch at noon")
+  -- the state asked in everyday words
+  check_eq(ex("FedEx 90, how fast are you going?"), "POS FDX90")
+  check_eq(ex("SkyWest 70, how high are you now?"), "POS SKW70")
+  asked(ex("FedEx 90, how fast can you go?"), "what it could do, no state")
+  check_eq(ex("what's happening with FedEx 90?"), "POS FDX90")
+  check_eq(ex("what is going on with SkyWest 70"), "POS SKW70")
+  check_eq(ex("could you show us everything about SkyWest 70?"), "POS SKW70")
+  check_eq(ex("tell us all about FedEx 90"), "POS FDX90")
+  -- a place faced, a waypoint taken off the route, a level matched
+  check_eq(ex("SkyWest 70, turn to face PARKY"), "HDG SKW70 PARKY")
+  check_eq(ex("FedEx 90, please take GYMMO off your route"), "DELWPT FDX90 GYMMO")
+  check_eq(ex("take PARKY off of FedEx 90's route"), "DELWPT FDX90 PARKY")
+  check_eq(ex("SkyWest 70, fly at the same height as FedEx 90"), "ALT SKW70 FL160")
 end
