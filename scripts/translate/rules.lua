@@ -942,6 +942,12 @@ return function(intent, rule, words)
   rule { "make", false, next = "it him her them", when = function(g, i)
     return g:word(i + 2, "@articles_new") and after_instruction_no_new(g, i)
   end }
+  -- ("put a new plane over JFK: call it DAL100, make it an Airbus A330-300, ..."): the type of the aircraft being
+  -- created, a field of that creation, no creation of its own
+  rule { "make", false, next = "it", when = function(g, i)
+    return g:word(i + 2, "a an") and g:has_ref(i + 3, math.min(#g.t + 1, i + 6), "type")
+      and g:word_in(1, i, "new") and g:word_in(1, i, "call called callsign named")
+  end }
   -- "create ten random aircraft", "five random A320s at FL300": random traffic
   rule { "generate generator", false, prev = { 1, "random number" } }  -- "seed the random generator with 42"
   rule { "create cre spawn generate add chuck", "mcre", near = { 3, "random" } }

@@ -16533,4 +16533,10 @@ do
   check_eq(ex("FedEx 90, please take GYMMO off your route"), "DELWPT FDX90 GYMMO")
   check_eq(ex("take PARKY off of FedEx 90's route"), "DELWPT FDX90 PARKY")
   check_eq(ex("SkyWest 70, fly at the same height as FedEx 90"), "ALT SKW70 FL160")
+  -- a creation told field by field, "make it a TYPE" one of its fields
+  check_eq(ex("Put a new plane over PARKY: call it JBU77, make it an Airbus A321, pointing west, at 6000 feet, going 220 knots"),
+    "CRE JBU77 A321 PARKY 270 6000 220")
+  check_eq(ex("a new plane called N12AB over GYMMO, make it a Cessna 172, heading north, 3000 feet, 100 knots"),
+    "CRE N12AB C172 GYMMO 360 3000 100")
+  check_eq(ex("FedEx 90 climb to FL200, that should make it a bit safer"), "ALT FDX90 FL200")
 end
