@@ -1290,6 +1290,9 @@ return {
                                "like", "shall", "may", "might", "to", "if", "when", "once", "after", "until",
                                "correction", "disregard", "negative", "one" } },
           while_words = { "while", "whilst" },
+          -- the audience of a demonstration addressed in a sentence of its own ("Class, is that toward the bottom of
+          -- the screen?", "Guess first, kids!"): such a sentence, a question too, is a remark to them (G:remark_sentence)
+          audience = { "kids", "class", "guys", "students", "folks", "children", "everybody", "everyone" },
           -- the same action described after a complete instruction, in an instructor's words (", give him a proper
           -- vector off", ", give her a decent climb"): one of `restate_verbs`, a pronoun and a noun of the kind of an
           -- instruction said before it (`restated`, by the intent); set aside when the clause is commentary, else asked

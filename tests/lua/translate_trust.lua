@@ -16539,4 +16539,11 @@ do
   check_eq(ex("a new plane called N12AB over GYMMO, make it a Cessna 172, heading north, 3000 feet, 100 knots"),
     "CRE N12AB C172 GYMMO 360 3000 100")
   check_eq(ex("FedEx 90 climb to FL200, that should make it a bit safer"), "ALT FDX90 FL200")
+  -- a question to the audience in its own sentence is a remark; one with a value or an aircraft stays asked
+  check_eq(ex("SkyWest 70, turn left heading 250. Class, is that more toward the bottom of the screen or the top?"),
+    "HDG SKW70 250 LEFT")
+  check_eq(ex("FedEx 90, climb to FL200. Guys, is that higher than a mountain?"), "ALT FDX90 FL200")
+  asked(ex("FedEx 90, climb to FL200. Kids, should we go to 21000?"), "a value in the question")
+  asked(ex("FedEx 90, climb to FL200. Kids, can you climb to FL210?"), "a value in the question")
+  asked(ex("Kids, which way is SkyWest 70 going? SkyWest 70, turn left heading 250"), "an aircraft in the question")
 end
