@@ -2113,6 +2113,7 @@ local CM_WHILE, CM_LATER, CM_LEAD_CONTEXT = set_of(COMMENTARY.while_words), set_
   set_of(COMMENTARY.lead_context)
 COMMENTARY.reason_set, COMMENTARY.study_set = set_of(COMMENTARY.reasons), set_of(COMMENTARY.study_labels)
 COMMENTARY.put_off_later_set = set_of(COMMENTARY.put_off_later)
+COMMENTARY.audience_set = set_of(COMMENTARY.audience)
 COMMENTARY.restate_set, COMMENTARY.intention_set = set_of(COMMENTARY.restate_verbs), set_of(COMMENTARY.intention)
 COMMENTARY.restated_sets = {}
 for intent, nouns in pairs(COMMENTARY.restated) do COMMENTARY.restated_sets[intent] = set_of(nouns) end
@@ -2397,7 +2398,9 @@ end
 function G:remark_sentence(k, instructed)
   local e = commentary_end(self, k)
   local stop = self.t[e]
-  if (stop and not (stop.text == "." or stop.text == "!")) or self:has_ref(k, e, "aircraft") then return false end
+  -- (a question to the audience, one of commentary.audience in it, asks nothing of squawk)
+  local asked = stop and stop.text == "?" and self:word_in(k, e, COMMENTARY.audience_set)
+  if (stop and not (stop.text == "." or stop.text == "!" or asked)) or self:has_ref(k, e, "aircraft") then return false end
   return (instructed(k) or self:instructed_after(e)) and self:commentary(k, e)
 end
 

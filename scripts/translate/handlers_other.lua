@@ -1073,6 +1073,17 @@ return function(H, f, compass)
       if q.kind == "mach" and not opt[3] then opt[3] = f.mach(q.value) end
       if q.kind == "vs" and not opt[4] then opt[4] = f.int(q.value) end
     end
+    -- ("facing north", "pointing south-west", "heading due east", "flying west"): a compass point after a word of
+    -- facing or going is MOVE's heading [deg]
+    for i = s.trig + 1, opt[2] and 0 or s.e - 1 do
+      local deg, e = self:point_said(i)
+      local v = self:word(i - 1, "due") and i - 2 or i - 1
+      if deg and not self.u:used(i) and not self:word(e, "of") and self:word(v, "heading hdg facing pointing @compass_verbs") then
+        opt[2] = f.num(deg == 0 and 360 or deg)
+        self:explain(v, e)
+        break
+      end
+    end
     if by and not opt[1] then
       return self:need(string.format("Which level should %s be moved to? '%s' is a difference, not a level.", id,
         self:raw(by.b, by.e + 1)))
@@ -4142,7 +4153,8 @@ return function(H, f, compass)
     for i = s.trig, s.e - 1 do
       if self.t[i].kind == "punct" and self.t[i].text == ":" and i + 1 < s.e then
         self:mark_used(i + 1, s.e)
-        return self:emit("ECHO " .. self:raw(i + 1, s.e))
+        -- (a mark closing the message stays on its last word: "welcome Lincoln High!")
+        return self:emit("ECHO " .. (self:raw(i + 1, s.e):gsub(" ([!?.])$", "%1")))
       end
     end
     -- "a note on screen saying baseline run", "a message that says trial 2": the words after, as typed
@@ -4210,6 +4222,10 @@ return function(H, f, compass)
     if self:word_in(1, #self.t + 1, "mvp") or self:word_in(b, s.e, "@mvp") then return self:emit("RESO MVP") end
     if self:on_off(s) == 0 then return self:emit("RESO OFF") end
     if self:on_off(s) == 1 then return self:emit("RESO MVP") end  -- MVP is the one method RESO has
+    -- ("let the computer steer them apart", "have the sim solve the conflicts": the simulation asked to resolve)
+    if self:word(s.trig, "solve resolve steer separate") and self:word_in(math.max(1, s.trig - 3), s.trig, "computer @sim") then
+      return self:emit("RESO MVP")
+    end
     -- "enable conflict detection and resolution": switched on (or off) with the detection before it
     if self:on_off(s) < 0 and self.last_on ~= nil and self:word(s.trig - 1, "and") then
       return self:emit(self.last_on == 1 and "RESO MVP" or "RESO OFF")

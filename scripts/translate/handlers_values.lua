@@ -802,11 +802,12 @@ return function(H, f, wrap, compass)
     -- "turn right 20", "left thirty": a number of one or two digits, typed or said as a number
     -- (not digit by digit, as headings are), after a turn direction, with no "heading", is the
     -- degrees of the turn (headings have three); after "turn" with no side ("turn 30") it is
-    -- asked about below: a turn of that many degrees, or a heading?
+    -- asked about below: a turn of that many degrees, or a heading? Straight after "to"/"onto" ("turn left to 90")
+    -- the number is the heading turned to
     if #rel_c == 0 and #abs_c == 1 and abs_c[1].kind == "plain"
         and ((abs_c[1].number.typed and #abs_c[1].number.digits <= 2)
              or (not abs_c[1].number.typed and not abs_c[1].number.lead_digit and abs_c[1].value < 100)) and not self:word_in(s.b, s.e, "heading hdg")
-        and self:word_in(s.b, abs_c[1].b, "@left @right turn") then
+        and self:word_in(s.b, abs_c[1].b, "@left @right turn") and not self:word(abs_c[1].b - 1, "to onto") then
       rel_c[1] = { kind = "angle", value = abs_c[1].value, b = abs_c[1].b, e = abs_c[1].e, turn = 0,
                    number = abs_c[1].number }
       abs_c = {}
@@ -926,7 +927,10 @@ return function(H, f, wrap, compass)
     local refs = self:refs_in(s.b, s.e, "aircraft")
     -- the place said after "towards" / "in the direction of" (a waypoint, or a place by its name)
     local toward
+    -- ("turn to face our school": the place faced, after "to face")
     local tw = self:find_word(s.b, s.e, "towards toward direction")
+    local face = self:find_word(s.b, s.e, "face")
+    if tw == s.e and face < s.e and self:word(face - 1, "to") then tw = face end
     if not abs and not rel and tw < s.e and (not self:word(tw, "direction") or self:word(tw + 1, "of")) then
       local at = self:word(tw, "direction") and tw + 2 or tw + 1
       local r = self:refs_in(at, math.min(s.e, at + 3), "waypoint")[1]

@@ -396,6 +396,9 @@ return {
         "conflicting",
         -- the part of the simulation a setting belongs to ("turn on the conflict detection module")
         "module", "modules", "function", "functionality", "feature", "system", "logic",
+        -- (a newcomer's words for the simulation and its conflict detection: "let the computer steer them apart",
+        -- "turn on the crash warnings", "ten times faster than real life")
+        "computer", "crash", "crashes", "life",
         -- verbs that go with an instruction's direction or place: informal ones ("bump the speed up", "crank
         -- the look-ahead up") and those of staying and going ("stay on 250 knots", "returning to Orly")
         "bump", "crank", "push", "knock", "dial", "stay", "remain", "return", "sit", "head", "hand",
@@ -1287,6 +1290,9 @@ return {
                                "like", "shall", "may", "might", "to", "if", "when", "once", "after", "until",
                                "correction", "disregard", "negative", "one" } },
           while_words = { "while", "whilst" },
+          -- the audience of a demonstration addressed in a sentence of its own ("Class, is that toward the bottom of
+          -- the screen?", "Guess first, kids!"): such a sentence, a question too, is a remark to them (G:remark_sentence)
+          audience = { "kids", "class", "guys", "students", "folks", "children", "everybody", "everyone" },
           -- the same action described after a complete instruction, in an instructor's words (", give him a proper
           -- vector off", ", give her a decent climb"): one of `restate_verbs`, a pronoun and a noun of the kind of an
           -- instruction said before it (`restated`, by the intent); set aside when the clause is commentary, else asked

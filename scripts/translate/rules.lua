@@ -471,8 +471,8 @@ return function(intent, rule, words)
   rule { "maintain maintained", "maintain" }
   -- "swap the levels of KLM12 and TRA6021", "exchange their headings": each flies the other's
   rule { "swap exchange", "swap", near = { 4, "@swapped" } }
-  -- "put BAW123 at the same level as DLH4AX"; "keep it at FL290 and 270 kts"
-  rule { "level altitude", "alt", prev = { 1, "same" }, next = "as" }
+  -- "put BAW123 at the same level as DLH4AX", "fly at the same height as Delta 1776"; "keep it at FL290 and 270 kts"
+  rule { "level altitude height", "alt", prev = { 1, "same" }, next = "as" }
   rule { "level", "alt", prev = { 2, "same" }, next = "as", when = function(g, i) return g:word(i - 1, "flight") end }
   rule { "keep", "maintain", next = "it him her them", when = function(g, i)
     return g:word(i + 2, "at") and g.t[i + 3] ~= nil and (g.t[i + 3].kind == "number" or g:word(i + 3, "fl flight"))
@@ -941,6 +941,12 @@ return function(intent, rule, words)
   -- instruction to it, no creation
   rule { "make", false, next = "it him her them", when = function(g, i)
     return g:word(i + 2, "@articles_new") and after_instruction_no_new(g, i)
+  end }
+  -- ("put a new plane over JFK: call it DAL100, make it an Airbus A330-300, ..."): the type of the aircraft being
+  -- created, a field of that creation, no creation of its own
+  rule { "make", false, next = "it", when = function(g, i)
+    return g:word(i + 2, "a an") and g:has_ref(i + 3, math.min(#g.t + 1, i + 6), "type")
+      and g:word_in(1, i, "new") and g:word_in(1, i, "call called callsign named")
   end }
   -- "create ten random aircraft", "five random A320s at FL300": random traffic
   rule { "generate generator", false, prev = { 1, "random number" } }  -- "seed the random generator with 42"
@@ -1486,6 +1492,13 @@ return function(intent, rule, words)
     return r ~= nil and (k == i + 2 or g:word(r.e, "out")) and not g:has_ref(1, #g.t + 1, "type")
   end }
   rule { "take", "delete", near = { 5, "out" } }
+  -- "take BEDRK off your route", "take CGT off of Southwest 903's route": a waypoint straight after the verb, "off"
+  -- (and "of") after it, a route noun within the six words after
+  rule { "take", "delwpt", when = function(g, i)
+    local r = g:refs_in(i + 1, i + 2, "waypoint")[1]
+    if not (r and r.b == i + 1 and g:word(r.e, "off")) then return false end
+    return g:word_in(r.e + 1, math.min(#g.t + 1, r.e + 7), "@route_nouns")
+  end }
   -- "take Scandinavian one five zero one out of the exercise": a flying aircraft, however long its spoken callsign,
   -- straight after the verb ("the" between), "out" straight after it, and then nothing in its clause or "of" the
   -- exercise (lexicon.presence_places, @sim: "out of the hold" is no deletion); "take the Jet2 off, it's finished":
@@ -1905,6 +1918,15 @@ return function(intent, rule, words)
 
   -- information and repositioning
   rule { "where", false, near = { 5, "route" } }  -- "show me where its route goes": the route is listed
+  -- "show us where JetBlue 615 is going, like its list of stops", "where is it heading, the route": where it goes,
+  -- said with its route or its stops after the verb of going (no value said), is the route listed
+  rule { "where where's wheres", "listrte", when = function(g, i)
+    local e = math.min(#g.t + 1, i + 7)
+    local k = g:find_word(i + 1, e, "going headed heading flying")
+    if k == e or #g:quantities(1, #g.t + 1) > 0 then return false end
+    local last = math.min(#g.t + 1, k + 9)
+    return g:find_word(k + 1, last, "route routing stops waypoints") < last
+  end }
   -- "where is the Shamrock routing?", "show me where KLM12 is routed", "where's the Speedbird going next?": the
   -- route asked (the question's verb, or "next" after a verb of going, within the seven words after "where")
   rule { "where where's wheres", "listrte", when = function(g, i)
@@ -2288,6 +2310,29 @@ return function(intent, rule, words)
     if not r then return false end
     local k = g:word(r.e, "now flying going climbing descending") and r.e + 1 or r.e
     return g.t[#g.t].text == "?" or k > #g.t
+  end }
+  -- "SkyWest 5412, how fast are you going?", "United 837, how high are you right now?": the aircraft addressed
+  -- before the question about its own state, "are you" after the adjective, nothing but a verb of going or "now"
+  -- up to the question's end ("how fast can you go" asks what it could do: no state)
+  rule { "how", "pos", next = "fast high", when = function(g, i)
+    if not (g:word(i + 2, "are") and g:word(i + 3, "you") and g:has_ref(1, i, "aircraft")) then return false end
+    local k = i + 4
+    while g:word(k, "going flying travelling traveling now right currently") do k = k + 1 end
+    return g.t[k] == nil or (g.t[k].kind == "punct" and g.t[k].text ~= ",")
+  end }
+  -- "what's happening with United 837?", "what is going on with the SkyWest": the aircraft's state asked
+  rule { "happening going", "pos", when = function(g, i)
+    local w = g:word(i, "going") and i + 1 or i
+    if g:word(i, "going") and not g:word(w, "on") then return false end
+    local q = g:word(i - 1, "is 's") and i - 2 or i - 1
+    local k = g:skip_fillers(w + 2)
+    return g:word(q, "what what's whats") and g:word(w + 1, "with")
+      and aircraft_alone(g, g:word(k, "the") and k + 1 or k, true)
+  end }
+  -- "can you show us everything about Endeavor 5120", "tell us all about the SkyWest": all of its state
+  rule { "about", "pos", when = function(g, i)
+    return g:word(i - 1, "everything all") and g:word_in(math.max(1, i - 4), i - 1, "show tell")
+      and aircraft_alone(g, g:skip_fillers(i + 1), true)
   end }
   rule { "tell", "pos", next = "me us", near = { 5, "altitude speed heading position level" } }
   -- "AAR731 current altitude tell me", "KAL8 speed let me know", "heading please tell": the state word said
@@ -2769,9 +2814,13 @@ return function(intent, rule, words)
 
   -- "write on the screen: exercise starts now", "show in the log: run 2 done": the text after the colon, for the
   -- screen or the log named between the verb and the colon
+  -- ("put a message up on the screen: welcome!": a message's noun and "up" between)
   rule { "write put show display", "echo", when = function(g, i)
-    for k = i + 1, math.min(#g.t - 1, i + 5) do
-      if g.t[k].kind == "punct" then return g.t[k].text == ":" and g:word_in(i + 1, k, "log screen scope console") end
+    for k = i + 1, math.min(#g.t - 1, i + 7) do
+      if g.t[k].kind == "punct" then
+        return g.t[k].text == ":" and g:word_in(i + 1, k, "log screen scope console")
+          and (k <= i + 5 or not g:has_ref(i + 1, k, "aircraft"))
+      end
     end
     return false
   end }
@@ -2827,6 +2876,12 @@ return function(intent, rule, words)
   -- zone"), and with an aircraft named it is the reason for its instruction ("KLM12 conflict alert, turn left")
   rule { "alert alerts alerting", "asas", prev = { 1, "conflict conflicts" }, when = function(g, i)
     return switched(g, i) and not g:has_ref(1, #g.t + 1, "aircraft")
+  end }
+  -- "turn on the crash warnings", "switch the conflict warnings on", "turn on the warning system": a newcomer's
+  -- words for conflict detection, switched, no aircraft named
+  rule { "warning warnings", "asas", when = function(g, i)
+    return (g:word(i - 1, "conflict conflicts crash collision") or g:word(i + 1, "system"))
+      and switched(g, g:word(i + 1, "system") and i + 1 or i) and not g:has_ref(1, #g.t + 1, "aircraft")
   end }
   rule { "cr", "reso", next = "on off mvp" }  -- "CD on, CR off", "cr mvp": conflict resolution by its letters
   -- ("CR: MVP": the letters as a label, a colon or a dash before the setting)
@@ -2922,6 +2977,13 @@ return function(intent, rule, words)
   rule { "resolution resolutions", false, prev = { 3, "watch watching see observe" }, when = function(g, i)
     return g:any_instruction_in(1, i - 1)
   end }
+  -- "let the computer steer them apart", "have the simulator solve the conflicts by itself": resolution by the
+  -- simulation (the computer or the simulation the agent, no aircraft named)
+  rule { "solve resolve steer separate", "reso", when = function(g, i)
+    return g:word_in(math.max(1, i - 3), i, "computer @sim") and not g:has_ref(1, #g.t + 1, "aircraft")
+      and (g:word_in(i + 1, math.min(#g.t + 1, i + 4), "apart conflicts conflict")
+        or g:word(i + 1, "them"))
+  end }
   rule { "resolution resolve reso resolver", "reso" }  -- ("switch the resolver on": the resolution's own word)
   -- "enable MVP", "switch to MVP": the method named alone is resolution by it
   rule { "mvp", "reso", prev = { 3, "@on switch" } }
@@ -2978,6 +3040,10 @@ return function(intent, rule, words)
   rule { "sep", "zone", prev = { 1, "horizontal lateral vertical" } }  -- "horizontal sep back to 5nm"
   rule { "half", "zone", next = "height" }
   rule { "look", "dtlook", next = "ahead" }
+  -- "have the computer look further ahead for conflicts": the look-ahead, said with how far
+  rule { "look", "dtlook", next = "further farther", when = function(g, i) return g:word(i + 2, "ahead") end }
+  -- "make the safety circle 4 miles", "a bigger safety bubble": the protected zone in a newcomer's words
+  rule { "circle bubble", "zone", prev = { 1, "safety" } }
   rule { "look", "dtlook", prev = { 1, "dt" } }
   rule { "lookahead dtlook", "dtlook" }
   -- "UAE45 step down to FL340, turbulence", "... for turbulence": with an aircraft named, turbulence is its reason

@@ -16536,4 +16536,63 @@ do
     check_eq(ex3("move arik 104 to erami 6000 feet"), "MOVE ARA104 ERAMI 6000")
     asked(ex3("move arik 104 to water flight level 150"), "no place")
   end
+
+-- f177: a newcomer's everyday words (a teacher running a demo)
+do
+  local _, ex = scene({ "CRE FDX90 B763 41.10 -73.80 135 FL160 280", "CRE SKW70 E175 40.70 -74.40 300 8000 230",
+    "DEFWPT PARKY 40.80 -73.90", "DEFWPT GYMMO 40.95 -74.20", "ADDWPT FDX90 PARKY", "ADDWPT FDX90 GYMMO" })
+  -- "turn left to 90": the number after "to" is the heading turned to, never a turn of that many degrees
+  check_eq(ex("FedEx 90, turn left to 90"), "HDG FDX90 90 LEFT")
+  check_eq(ex("SkyWest 70 please turn right onto 20"), "ASK What heading should SKW70 fly: 020 or 200? I heard '20'.")
+  check_eq(ex("SkyWest 70, turn right to ninety"), "HDG SKW70 90 RIGHT")
+  check_eq(ex("FedEx 90 turn left 30"), "HDG FDX90 105 LEFT")  -- (no "to": a turn of 30 degrees)
+  asked(ex("FedEx 90, turn right to 45"), "045 to the right is the long way round")
+  -- MOVE's heading said as a compass point after a word of facing
+  check_eq(ex("Move SkyWest 70 over to PARKY at 4000 feet, facing north"), "MOVE SKW70 PARKY 4000 360")
+  check_eq(ex("move SkyWest 70 to 40.9 -74.0, 5000 ft, pointing south-west, 200 knots"),
+    "MOVE SKW70 40.9 -74 5000 225 200")
+  check_eq(ex("please move FedEx 90 to GYMMO heading due east"), "MOVE FDX90 GYMMO 16000 90")
+  check_eq(ex("move FedEx 90 to 41 north 74 west"), "MOVE FDX90 41 -74")
+  -- where it is going, said with its route or its stops: the route listed
+  check_eq(ex("Can you show us where FedEx 90 is going, like its list of stops?"), "LISTRTE FDX90")
+  check_eq(ex("show me where the FedEx is heading, the whole route"), "LISTRTE FDX90")
+  check_eq(ex("where is SkyWest 70 going?"), "DEST SKW70")
+  check_eq(ex("where is SkyWest 70?"), "POS SKW70")
+  -- a newcomer's words for the simulation's settings
+  check_eq(ex("please switch the crash warnings on so we see when planes get close"), "ASAS ON")
+  check_eq(ex("turn on the warning system, then make the safety bubble 6 miles"), "ASAS ON ; ZONER 6")
+  check_eq(ex("set the safety circle to 3 miles"), "ZONER 3")
+  check_eq(ex("let the computer steer them apart"), "RESO MVP")
+  check_eq(ex("have the simulator solve the conflicts by itself"), "RESO MVP")
+  asked(ex("don't let the computer steer them apart"), "resolution off for everyone is confirmed")
+  check_eq(ex("can the computer look further ahead, like 8 minutes"), "DTLOOK 480")
+  check_eq(ex("speed the simulation up, five times faster than real life"), "DTMULT 5")
+  check_eq(ex("Put a message up on the screen: Hello Room 12!"), "ECHO Hello Room 12!")
+  check_eq(ex("please put a note up on the screen: lunch at noon"), "ECHO lunch at noon")
+  -- the state asked in everyday words
+  check_eq(ex("FedEx 90, how fast are you going?"), "POS FDX90")
+  check_eq(ex("SkyWest 70, how high are you now?"), "POS SKW70")
+  asked(ex("FedEx 90, how fast can you go?"), "what it could do, no state")
+  check_eq(ex("what's happening with FedEx 90?"), "POS FDX90")
+  check_eq(ex("what is going on with SkyWest 70"), "POS SKW70")
+  check_eq(ex("could you show us everything about SkyWest 70?"), "POS SKW70")
+  check_eq(ex("tell us all about FedEx 90"), "POS FDX90")
+  -- a place faced, a waypoint taken off the route, a level matched
+  check_eq(ex("SkyWest 70, turn to face PARKY"), "HDG SKW70 PARKY")
+  check_eq(ex("FedEx 90, please take GYMMO off your route"), "DELWPT FDX90 GYMMO")
+  check_eq(ex("take PARKY off of FedEx 90's route"), "DELWPT FDX90 PARKY")
+  check_eq(ex("SkyWest 70, fly at the same height as FedEx 90"), "ALT SKW70 FL160")
+  -- a creation told field by field, "make it a TYPE" one of its fields
+  check_eq(ex("Put a new plane over PARKY: call it JBU77, make it an Airbus A321, pointing west, at 6000 feet, going 220 knots"),
+    "CRE JBU77 A321 PARKY 270 6000 220")
+  check_eq(ex("a new plane called N12AB over GYMMO, make it a Cessna 172, heading north, 3000 feet, 100 knots"),
+    "CRE N12AB C172 GYMMO 360 3000 100")
+  check_eq(ex("FedEx 90 climb to FL200, that should make it a bit safer"), "ALT FDX90 FL200")
+  -- a question to the audience in its own sentence is a remark; one with a value or an aircraft stays asked
+  check_eq(ex("SkyWest 70, turn left heading 250. Class, is that more toward the bottom of the screen or the top?"),
+    "HDG SKW70 250 LEFT")
+  check_eq(ex("FedEx 90, climb to FL200. Guys, is that higher than a mountain?"), "ALT FDX90 FL200")
+  asked(ex("FedEx 90, climb to FL200. Kids, should we go to 21000?"), "a value in the question")
+  asked(ex("FedEx 90, climb to FL200. Kids, can you climb to FL210?"), "a value in the question")
+  asked(ex("Kids, which way is SkyWest 70 going? SkyWest 70, turn left heading 250"), "an aircraft in the question")
 end
