@@ -16536,6 +16536,7 @@ do
     check_eq(ex3("move arik 104 to erami 6000 feet"), "MOVE ARA104 ERAMI 6000")
     asked(ex3("move arik 104 to water flight level 150"), "no place")
   end
+end
 
 -- f177: a newcomer's everyday words (a teacher running a demo)
 do
