@@ -221,7 +221,8 @@ end
 -- "VTI305 and AIC865, you are in conflict, VTI305 turn right heading 240": aircraft said together, words of a clause
 -- of their own, then one of them said again straight before the instruction's word, in [b, trig): the instruction is
 -- that one's alone (the pair was addressed for the traffic; the words from b to it are explained), returned as a
--- reference. Said again by its airline's word alone ("..., Vistara turn right"), which one is asked. Else nil.
+-- reference. Said again by its airline's word alone ("..., Vistara turn right"), the one of the pair of that
+-- airline when one is; which one is asked when both are. Else nil.
 function m:readdressed(b, trig)
   local refs = {}
   for _, r in ipairs(self:refs_in(b, trig, "aircraft")) do
@@ -250,10 +251,11 @@ function m:readdressed(b, trig)
     end
     return nil
   end
-  local of, heard = {}, nil
+  local of, heard, heard_at = {}, nil, nil
   for x = math.max(from, k - 2), k do
     local icao, e, codes = self:airline_at(x)
     if icao and e == k + 1 and not heard then
+      heard_at = x
       local said = {}
       for y = x, k do said[#said + 1] = self.t[y].raw end
       heard = table.concat(said, " ")
@@ -261,9 +263,16 @@ function m:readdressed(b, trig)
       for _, c in ipairs(type(codes) == "table" and codes or {}) do of[c] = true end
     end
   end
-  local named = {}
+  local named, fits = {}, nil
   for i = 1, pair do
-    if of[refs[i].name:upper():match("^(%u+)%d") or ""] then named[#named + 1] = refs[i].name:upper() end
+    if of[refs[i].name:upper():match("^(%u+)%d") or ""] then named[#named + 1], fits = refs[i].name:upper(), refs[i] end
+  end
+  -- ("Aegean 992 and KLM1234 are in conflict. Aegean turn right", "Turkish 6KC and Sunturk 5MR: Turkish left 30":
+  -- the airline's word alone names the one aircraft of the pair it fits, just named in full)
+  if #named == 1 then
+    self:explain(b, heard_at)
+    self:explain(heard_at, k + 1)
+    return fits
   end
   if #named >= 1 then
     local all = {}
@@ -492,6 +501,25 @@ function m:acids(s)
           u = nil
         end
         break
+      end
+    end
+    -- ("Aegean 992 and KLM1234 are in conflict. Aegean turn right 30, KLM descend FL210": in a request that named two
+    -- or more aircraft in full before it, the airline's word alone names the one of them of that airline, when only
+    -- one is; the instruction is that aircraft's alone)
+    if u and #ids == 0 then
+      local before, fits, n = {}, nil, 0
+      for _, r in ipairs(self:refs_in(1, u.b, "aircraft")) do
+        if r.exists and not r.false_start and not before[r.name] then
+          before[r.name], n = true, n + 1
+          if r.name:upper():sub(1, #u.icao) == u.icao and r.name:upper():sub(#u.icao + 1):match("^%d") then
+            fits = fits == nil and r or false
+          end
+        end
+      end
+      if n >= 2 and fits then
+        self:explain(u.b, u.e)
+        ids[1] = fits.name
+        return ids
       end
     end
     local later = false  -- an aircraft named after the instruction ("turn left 090, EZY45")

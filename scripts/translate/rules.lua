@@ -1101,6 +1101,10 @@ return function(intent, rule, words)
     return (g:word(i + 2, to) and g:place_by_name(i + 1, i + 2) ~= nil)
       or (g:word(i + 3, to) and g:place_by_name(i + 1, i + 3) ~= nil)
   end }
+  -- "ORKAN add to the end of its route", "waypoint LAVTA add at end of route", "SARIZ add between CPX1 and CPX2":
+  -- the verb after the waypoint (verb-final order), a route noun or "between"/"after"/"before" and a waypoint
+  -- after it
+  rule { "add append insert", "addwpt", when = function(g, i) return g:verb_final_waypoint(i) ~= nil end }
   -- "add the point EXIT2": a point that is a known waypoint
   rule { "add append insert", "addwpt", near = { 3, "point" },
          when = function(g, i) return g:has_ref(g:find_word(i + 1, i + 4, "point") + 1, i + 5, "waypoint") end }
