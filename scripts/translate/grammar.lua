@@ -9010,12 +9010,18 @@ end
 -- asked.
 -- (a request that already shows something, "route please, show it", "show me the constraints X has at Y", is read as
 -- it is; so is a noun, "off the display")
+-- (a conflict setting's command alone, "RESO", "ASAS", shows that setting: "which resolution method is selected
+-- now, can you show?")
 G.showing = { POS = true, LISTRTE = true, TRAIL = true }
+G.setting_shown = { RESO = true, ASAS = true, ZONER = true, ZONEDH = true, DTLOOK = true, RFACH = true, RFACV = true,
+  CDMETHOD = true }
 function G:shown_after_instruction()
   if #self.out == 0 then return end
   for _, line in ipairs(self.out) do
     local name = line:match("^(%u+)")
-    if G.showing[name] or (name == "AT" and line:match("^AT %S+ %S+$")) then return end
+    if G.showing[name] or (name == "AT" and line:match("^AT %S+ %S+$")) or (G.setting_shown[name] and line == name) then
+      return
+    end
   end
   if not self:said("show display see") then return end  -- (the verbs of showing it reads)
   local explained = self.explained or {}

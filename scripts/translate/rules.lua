@@ -976,6 +976,12 @@ return function(intent, rule, words)
     return g:followed_by(i, 4, "@intruder")
       and g:word_in(i + 1, #g.t + 1, "@loss_of_separation @closest_approach @head_on") and not along_track(g)
   end }
+  -- "for PGT8YK one intruder create: INT02, B738, 45 degrees, CPA 1 NM, 300 seconds": the verb straight after the
+  -- noun (verb-final order), its values after it
+  rule { "create spawn generate creat make add put", "creconfs", when = function(g, i)
+    return g:word(i - 1, "@intruder") and g:word_in(i + 1, #g.t + 1, "@loss_of_separation @closest_approach @head_on")
+      and not along_track(g)
+  end }
   rule { "intruder", "create", when = along_track }
   -- ("INT3: A320, 40 nm ahead of the ownship KL001, ...": a new callsign and a type, no other creation word)
   rule { "ahead behind", "create", when = function(g, i)
@@ -993,6 +999,8 @@ return function(intent, rule, words)
   -- ("the experiment requires a crossing conflict: please create a conflicting aircraft, ...": the noun naming what
   -- a creation of an intruder said after it sets up, no conflict of its own)
   local function intruder_created_after(g, i)
+    -- ("one intruder create: ...": the verb straight after the noun)
+    if g:word(i + 1, "create spawn generate creat make add put") and g:word(i, "@intruder") then return true end
     for k = i + 1, #g.t do
       if g:word(k, "create spawn generate creat cre make new add put") and g:followed_by(k, 4, "@intruder") then
         return true
@@ -2643,6 +2651,16 @@ return function(intent, rule, words)
   rule { "scenario", false, prev = { 2, "forward ff pause freeze unfreeze unpause resume continue hold" } }
   -- "20 random aircraft for background load", "more traffic load": the noun, no file loaded
   rule { "load", false, prev = { 1, "background traffic high low heavy light more extra" } }
+  -- "conflict detection open please", "open the conflict resolution": a conflict setting switched on (handlers'
+  -- m:opened_setting), no file opened
+  rule { "open", false, when = function(g, i)
+    local k = i - 1
+    while k > 1 and g.t[k].filler do k = k - 1 end
+    if g:word(k, "detection resolution") then return true end
+    k = i + 1
+    while g:word(k, "the conflict conflicts") do k = k + 1 end
+    return k > i + 1 and g:word(k, "detection resolution")
+  end }
   rule { "scenario load open ic", "ic" }
   -- "print UAL9's flight plan", "print the waypoint list for BAW123": an aircraft's route listed
   rule { "print", "listrte", near = { 4, "route plan waypoint waypoints" },
