@@ -3074,7 +3074,8 @@ function G:verb_final_waypoint(i)
   for _, r in ipairs(self:refs_in(math.max(1, i - 4), i, "waypoint")) do
     if r.e == i then named = r end
   end
-  if not named then return nil end
+  -- (a place after "after", "before", "between" or "and" is where the one added goes: "after MAKAG add LAT")
+  if not named or self:word(named.b - 1, "after before between and to from of via") then return nil end
   local e = math.min(#self.t + 1, i + 8)
   if self:word(i + 1, "between after before") then
     return self:has_ref(i + 2, i + 3, "waypoint") and named or nil
