@@ -195,7 +195,7 @@ local function know_all(v, seen)
   -- only before a value replaced, lexicon.ff_ended only before a fast-forward ended, lexicon.countries only
   -- inside a callsign read, lexicon.described_places.regions only as a place that describes an aircraft,
   -- lexicon.screen_position only where an aircraft's place on the screen is read, lexicon.unheard_markers only
-  -- to ask a request again)
+  -- to ask a request again; lexicon.listener_address only where it is dropped, opening or closing a request)
   if type(v) ~= "table" or seen[v] or v == lexicon.accounted.courtesy_phrases or v == lexicon.accounted.value_phrases
       or v == lexicon.typed_abbreviations
       or v == lexicon.aside or v == lexicon.self_correction.just_the or v == lexicon.foreign_digits or v == lexicon.foreign_hesitation_digits
@@ -209,7 +209,8 @@ local function know_all(v, seen)
       or v == lexicon.self_correction.apology or v == lexicon.replaced_lead or v == lexicon.ff_ended
       or v == lexicon.self_correction.formal_apology or v == lexicon.self_correction.described
       or v == lexicon.self_correction.judged or v == lexicon.self_correction.admitted or v == lexicon.limit_release
-      or v == lexicon.countries or v == lexicon.screen_position or v == lexicon.unheard_markers then
+      or v == lexicon.countries or v == lexicon.screen_position or v == lexicon.unheard_markers
+      or v == lexicon.listener_address then
     return
   end
   seen[v] = true
@@ -1223,8 +1224,43 @@ function G.topic_shift_dropped(text)
   end
   return text
 end
+G.listener_openers, G.listener_alone = {}, set_of(lexicon.listener_address.alone)
+for w, list in pairs(lexicon.listener_address.openers) do G.listener_openers[w] = set_of(list) end
+-- the listener's term of address (lexicon.listener_address) a word or two, or its name alone
+function G.listener_term(first, second)
+  first = first:lower()
+  if second then
+    local names = G.listener_openers[first]
+    return names ~= nil and names[second:lower()] == true
+  end
+  return G.listener_alone[first] == true
+end
+-- "Dear system, Turkish 7AB ...", "what is Azal 068 doing now hocam?": a term of address to the listener opening
+-- the request (before a comma, colon, dash or the next word) or closing it (after a comma or word, before the
+-- final marks) is dropped when words remain; the request's own words stand as said
+function G.listener_address_dropped(text)
+  local lower = text:lower()
+  if not (lower:find("hoca", 1, true) or lower:find("dear", 1, true) or lower:find("friend", 1, true)
+      or lower:find("hey", 1, true) or lower:find("hello", 1, true)) then
+    return text
+  end
+  local a, b, rest = text:match("^%s*(%a+)%s+(%a+)%s*[,:;!%-]?%s+(%S.*)$")
+  if a and G.listener_term(a, b) then
+    text = rest
+  else
+    local one, after = text:match("^%s*(%a+)%s*[,:;!%-]?%s+(%S.*)$")
+    if one and G.listener_term(one) then text = after end
+  end
+  local said, c, d, marks = text:match("^(.-%S)[%s,;%-]+(%a+)%s+(%a+)%s*([%.%?!]*)%s*$")
+  if said and G.listener_term(c, d) then
+    return said:gsub("[,;%-]$", "") .. marks
+  end
+  local said1, e, marks1 = text:match("^(.-%S)[%s,;%-]+(%a+)%s*([%.%?!]*)%s*$")
+  if said1 and G.listener_term(e) then return said1:gsub("[,;%-]$", "") .. marks1 end
+  return text
+end
 local function unlabelled(text)
-  text = G.topic_shift_dropped(G.question_label_dropped(assent_dropped(text)))
+  text = G.topic_shift_dropped(G.question_label_dropped(assent_dropped(G.listener_address_dropped(text))))
   local greeting, after = text:match("^%s*(%a+)%s*,?%s+(.+)$")
   if greeting and GREETINGS[greeting:lower()] then
     local name, next_word = after:match("^(%a+)%s*,?%s+(%a.*)$")
@@ -3038,6 +3074,24 @@ function G:refs_in(b, e, kind)
     if r.kind == kind and r.b >= b and r.b < e then out[#out + 1] = r end
   end
   return out
+end
+-- The waypoint said straight before the verb at i in verb-final order ("SARIZ add between CPX1 and CPX2",
+-- "waypoint ORKAN add to end of its route"): its ref when no waypoint is said after the verb but for the one
+-- after "between", "after" or "before" straight after it, and a route noun or such a word follows within
+-- seven words; nil otherwise
+function G:verb_final_waypoint(i)
+  local named
+  for _, r in ipairs(self:refs_in(math.max(1, i - 4), i, "waypoint")) do
+    if r.e == i then named = r end
+  end
+  -- (a place after "after", "before", "between" or "and" is where the one added goes: "after MAKAG add LAT")
+  if not named or self:word(named.b - 1, "after before between and to from of via") then return nil end
+  local e = math.min(#self.t + 1, i + 8)
+  if self:word(i + 1, "between after before") then
+    return self:has_ref(i + 2, i + 3, "waypoint") and named or nil
+  end
+  if #self:refs_in(i + 1, e, "waypoint") > 0 then return nil end
+  return self:word_in(i + 1, e, "@route_nouns") and named or nil
 end
 function G:has_ref(b, e, kind)
   local last = #self.t + 1
@@ -8977,12 +9031,18 @@ end
 -- asked.
 -- (a request that already shows something, "route please, show it", "show me the constraints X has at Y", is read as
 -- it is; so is a noun, "off the display")
+-- (a conflict setting's command alone, "RESO", "ASAS", shows that setting: "which resolution method is selected
+-- now, can you show?")
 G.showing = { POS = true, LISTRTE = true, TRAIL = true }
+G.setting_shown = { RESO = true, ASAS = true, ZONER = true, ZONEDH = true, DTLOOK = true, RFACH = true, RFACV = true,
+  CDMETHOD = true }
 function G:shown_after_instruction()
   if #self.out == 0 then return end
   for _, line in ipairs(self.out) do
     local name = line:match("^(%u+)")
-    if G.showing[name] or (name == "AT" and line:match("^AT %S+ %S+$")) then return end
+    if G.showing[name] or (name == "AT" and line:match("^AT %S+ %S+$")) or (G.setting_shown[name] and line == name) then
+      return
+    end
   end
   if not self:said("show display see") then return end  -- (the verbs of showing it reads)
   local explained = self.explained or {}
@@ -10839,7 +10899,10 @@ end
 -- the route, or off the route, is asked (the remark does not match the direct-to); a clause with any other word
 -- stays and is asked about.
 function G:skipped_on_direct()
-  local skip = "may can should could will be is are not no longer required needed skipped omitted bypassed"
+  -- ("KUBER we skip", "VESAR you can skip", "PDZ skip": the place before its subject and active verb, in verb-final
+  -- order; "KUBER we don't skip" is no skip)
+  local skip = "may can should could will be is are not no longer required needed skipped omitted bypassed we you i "
+    .. "skip bypass omit"
   for _, line in ipairs(self.out) do
     local id, to = line:match("^DIRECT (%S+) (%S+)$")
     local route = id and (self:state(id) or {}).route or {}
@@ -10864,7 +10927,8 @@ function G:skipped_on_direct()
         local e, said = r.e, {}
         while self:word(e, skip) do said[self.words[e]] = true; e = e + 1 end
         local negated = said["not"] or said["no"]
-        if (said.skipped or said.omitted or said.bypassed or (negated and (said.required or said.needed)))
+        local active = not negated and (said.skip or said.bypass or said.omit)
+        if (said.skipped or said.omitted or said.bypassed or active or (negated and (said.required or said.needed)))
             and (not self.t[e] or self.t[e].kind == "punct") then
           if not before[r.name:upper()] then
             -- (the remark does not match what the direct-to does: asked)

@@ -187,9 +187,21 @@ function m:on_off(s)
     while x < s.e and self:word(x, "the any a") do x = x + 1 end
     return x == s.e and s.e <= #self.t and self:intent_at(s.e) ~= nil and self:intent_at(s.e) ~= false
   end
+  -- ("can you show which resolution method is selected?", "which method is active, can you show?": "show" asking to
+  -- be shown a setting, before a question word or "the current" ("me" between or not), or asked with "can you"
+  -- before the request's end or a mark, switches nothing)
+  local function shown(k)
+    if not self:word(k, "show display") then return false end
+    local x = k + 1
+    if self:word(x, "me us") then x = x + 1 end
+    if self:word(x, "the") then x = x + 1 end
+    local asked = self:word(k - 1, "you") and self:word(k - 2, "can could would will")
+    return (asked and (x > #self.t or self.t[x].kind == "punct")) or self:word(x, "which what whether current currently")
+  end
   local function said(from, words, told)
     for k = from, s.e - 1 do
-      if self:word(k, words) and not self.noted[k] and (told or not self:in_reason(k)) and not next_ones(k) then
+      if self:word(k, words) and not self.noted[k] and (told or not self:in_reason(k)) and not next_ones(k)
+          and not (words == "@on" and shown(k)) then
         return true
       end
     end
@@ -208,7 +220,26 @@ function m:on_off(s)
   local on = read(false)
   if on >= 0 then return on end
   on = read(true)
+  if on < 0 then on = self:opened_setting(s) end
   return on, on >= 0
+end
+
+-- "conflict detection open please", "close the conflict resolution": a conflict setting opened (1) or closed (0),
+-- as Turkish speakers say for on and off ("aç", "kapat"), the verb straight after the setting's noun (fillers
+-- between) or before it with only articles and "conflict" between; -1 when neither is said so
+function m:opened_setting(s)
+  local trig = s.trig
+  if not (trig and self:word(trig, "detection resolution asas cd cr")) then return -1 end
+  local function reading(k)
+    if self:word(k, "open opened") then return 1 end
+    if self:word(k, "close closed shut") then return 0 end
+    return -1
+  end
+  local after = reading(self:skip_fillers(trig + 1))
+  if after >= 0 then return after end
+  local k = trig - 1
+  while k >= s.b and self:word(k, "the conflict conflicts") do k = k - 1 end
+  return k >= 1 and reading(k) or -1
 end
 
 -- True when segment s switches only by a word in a remark set aside ("LNAV, I think it is off"): the state the
@@ -221,7 +252,8 @@ end
 -- "VTI305 and AIC865, you are in conflict, VTI305 turn right heading 240": aircraft said together, words of a clause
 -- of their own, then one of them said again straight before the instruction's word, in [b, trig): the instruction is
 -- that one's alone (the pair was addressed for the traffic; the words from b to it are explained), returned as a
--- reference. Said again by its airline's word alone ("..., Vistara turn right"), which one is asked. Else nil.
+-- reference. Said again by its airline's word alone ("..., Vistara turn right"), the one of the pair of that
+-- airline when one is; which one is asked when both are. Else nil.
 function m:readdressed(b, trig)
   local refs = {}
   for _, r in ipairs(self:refs_in(b, trig, "aircraft")) do
@@ -250,10 +282,11 @@ function m:readdressed(b, trig)
     end
     return nil
   end
-  local of, heard = {}, nil
+  local of, heard, heard_at = {}, nil, nil
   for x = math.max(from, k - 2), k do
     local icao, e, codes = self:airline_at(x)
     if icao and e == k + 1 and not heard then
+      heard_at = x
       local said = {}
       for y = x, k do said[#said + 1] = self.t[y].raw end
       heard = table.concat(said, " ")
@@ -261,9 +294,16 @@ function m:readdressed(b, trig)
       for _, c in ipairs(type(codes) == "table" and codes or {}) do of[c] = true end
     end
   end
-  local named = {}
+  local named, fits = {}, nil
   for i = 1, pair do
-    if of[refs[i].name:upper():match("^(%u+)%d") or ""] then named[#named + 1] = refs[i].name:upper() end
+    if of[refs[i].name:upper():match("^(%u+)%d") or ""] then named[#named + 1], fits = refs[i].name:upper(), refs[i] end
+  end
+  -- ("Aegean 992 and KLM1234 are in conflict. Aegean turn right", "Turkish 6KC and Sunturk 5MR: Turkish left 30":
+  -- the airline's word alone names the one aircraft of the pair it fits, just named in full)
+  if #named == 1 then
+    self:explain(b, heard_at)
+    self:explain(heard_at, k + 1)
+    return fits
   end
   if #named >= 1 then
     local all = {}
@@ -492,6 +532,37 @@ function m:acids(s)
           u = nil
         end
         break
+      end
+    end
+    -- ("Aegean 992 and KLM1234 are in conflict. Aegean turn right 30, KLM descend FL210": in a request that named two
+    -- or more aircraft in full before it, the airline's word alone names the one of them of that airline, when only
+    -- one is and it was named together with another; the instruction is that aircraft's alone)
+    if u and #ids == 0 then
+      local before, fits, n = {}, nil, 0
+      local refs = self:refs_in(1, u.b, "aircraft")
+      for _, r in ipairs(refs) do
+        if r.exists and not r.false_start and not before[r.name] then
+          before[r.name], n = true, n + 1
+          if r.name:upper():sub(1, #u.icao) == u.icao and r.name:upper():sub(#u.icao + 1):match("^%d") then
+            fits = fits == nil and r or false
+          end
+        end
+      end
+      -- (named together: another aircraft straight before or after it, "and", "ve", "&" or a comma between; one
+      -- named as its own instruction's addressee, "RYR77 speed 240, Ryanair descend", is not)
+      local together = false
+      for _, q in ipairs(fits and refs or {}) do
+        if q ~= fits and q.exists then
+          local gap_b, gap_e = q.e, fits.b
+          if q.b > fits.b then gap_b, gap_e = fits.e, q.b end
+          together = together or gap_e == gap_b + 1 and (self:word(gap_b, "and ve") or self.t[gap_b].text == ","
+            or self.t[gap_b].text == "&")
+        end
+      end
+      if n >= 2 and fits and together then
+        self:explain(u.b, u.e)
+        ids[1] = fits.name
+        return ids
       end
     end
     local later = false  -- an aircraft named after the instruction ("turn left 090, EZY45")

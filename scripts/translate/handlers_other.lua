@@ -2631,7 +2631,7 @@ return function(H, f, compass)
       where = f.num(lat) .. " " .. f.num(lon)
     else
       -- "define WP9 at ... and add it to X's route": "it" is the waypoint just defined
-      named = self:route_places(s.trig, name_e)[1]
+      named = self:route_places(s.trig, name_e)[1] or self:verb_final_waypoint(s.trig)
       local it = self.last_waypoint and self:word_in(s.trig, name_e, "it")
       where = named and named.name or (it and self.last_waypoint) or self:waypoint(s.trig, name_e, id)
       if not where then
@@ -3159,10 +3159,15 @@ return function(H, f, compass)
   function m:delete_waypoint(s)
     local id = self:acid(s, "lose the waypoint")
     if not id then return end
-    local point = self:point_at(s.trig + 1, s.e, id)
+    -- ("SEREN delete from its route": a waypoint of the scene said before the verb and none after it is the one
+    -- meant; the words after the verb are not searched for a sound-alike)
+    local said_before = s.b < s.trig and #self:refs_in(s.trig + 1, s.e, "waypoint") == 0
+      and self:waypoint(s.b, s.trig, id)
+    local point
+    if not said_before then point = self:point_at(s.trig + 1, s.e, id) end
     if point == false then return end
     -- ("waypoint LOTUS delete": the waypoint said before the verb, in verb-final order)
-    local wp = point or self:waypoint(s.trig, s.e, id) or (s.b < s.trig and self:waypoint(s.b, s.trig, id))
+    local wp = said_before or point or self:waypoint(s.trig, s.e, id) or (s.b < s.trig and self:waypoint(s.b, s.trig, id))
     if not wp then return self:need("Which waypoint should I remove from the route of " .. id .. "?") end
     self:emit("DELWPT " .. id .. " " .. wp)
     -- "delete DEPAX and ROLIS", "remove DEPAX, ROLIS": each further waypoint of its route listed after "and" or

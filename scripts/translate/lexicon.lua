@@ -943,6 +943,18 @@ return {
   dictated_punctuation = { { said = "comma", mark = "," }, { said = "period", mark = ".", not_before = "of" },
     { said = "full stop", mark = "." }, { said = "question mark", mark = "?" }, { said = "new line", mark = "." },
     { said = "new paragraph", mark = "." } },
+  -- a term of address to the listener (the simulation, its operator) opening or closing a request, as Turkish
+  -- speakers say in English ("Dear system, ...", "..., hocam?", "my friend, ...", "hey simulator, ..."): a word of
+  -- `openers` and a word of its list, or a word of `alone`, at the start before a comma, colon or word, or at the
+  -- end after a comma or word and before the final mark. No word here is an instruction, callsign or fix word.
+  listener_address = { openers = { dear = { "system", "simulator", "sim", "computer", "squawk", "assistant",
+                                            "friend", "friends", "colleague", "colleagues", "operator", "machine",
+                                            "program", "software", "translator", "ai" },
+                                   my = { "friend", "friends", "dear" },
+                                   hey = { "system", "simulator", "friend", "friends", "assistant", "machine" },
+                                   hello = { "system", "simulator", "computer", "friend", "friends", "assistant" } },
+                       -- Turkish "my teacher", the respectful address to anyone ("hocam", "hocacım")
+                       alone = { "hocam", "hocacim", "hocacigim" } },
   addressed_roles = { names = { "ai", "teammate", "assistant" }, greeted = { "squawk", "computer" },
                       greetings = { "ok", "okay", "hey", "hi", "right", "alright", "so" } },
   -- a speaker correcting the value just said ("270, no wait, 260", "180 ... actually make that 170",

@@ -305,6 +305,9 @@ local names = {
     { "tamazi", "TGZ" },
     { "georgian", "TGZ" },
     { "azal", "AHY" },
+    -- (Iran Air: its ICAO telephony "Iranair", and its name)
+    { "iranair", "IRA" },
+    { "iran air", "IRA" },
     { "tajikair", "TZK" },
     { "turkmenistan", "TUA" },
     { "estonian", "ELL" },

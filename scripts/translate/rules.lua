@@ -982,6 +982,12 @@ return function(intent, rule, words)
     return g:followed_by(i, 4, "@intruder")
       and g:word_in(i + 1, #g.t + 1, "@loss_of_separation @closest_approach @head_on") and not along_track(g)
   end }
+  -- "for PGT8YK one intruder create: INT02, B738, 45 degrees, CPA 1 NM, 300 seconds": the verb straight after the
+  -- noun (verb-final order), its values after it
+  rule { "create spawn generate creat make add put", "creconfs", when = function(g, i)
+    return g:word(i - 1, "@intruder") and g:word_in(i + 1, #g.t + 1, "@loss_of_separation @closest_approach @head_on")
+      and not along_track(g)
+  end }
   rule { "intruder", "create", when = along_track }
   -- ("INT3: A320, 40 nm ahead of the ownship KL001, ...": a new callsign and a type, no other creation word)
   rule { "ahead behind", "create", when = function(g, i)
@@ -999,6 +1005,8 @@ return function(intent, rule, words)
   -- ("the experiment requires a crossing conflict: please create a conflicting aircraft, ...": the noun naming what
   -- a creation of an intruder said after it sets up, no conflict of its own)
   local function intruder_created_after(g, i)
+    -- ("one intruder create: ...": the verb straight after the noun)
+    if g:word(i + 1, "create spawn generate creat make add put") and g:word(i, "@intruder") then return true end
     for k = i + 1, #g.t do
       if g:word(k, "create spawn generate creat cre make new add put") and g:followed_by(k, 4, "@intruder") then
         return true
@@ -1114,6 +1122,10 @@ return function(intent, rule, words)
     while g.t[k] and g.t[k].kind == "word" and PHONETIC[g.t[k].text] do k = k + 1 end
     return k >= i + 3 and g:word(k, "to at onto")
   end }
+  -- "ORKAN add to the end of its route", "waypoint LAVTA add at end of route", "SARIZ add between CPX1 and CPX2":
+  -- the verb after the waypoint (verb-final order), a route noun or "between"/"after"/"before" and a waypoint
+  -- after it
+  rule { "add append insert", "addwpt", when = function(g, i) return g:verb_final_waypoint(i) ~= nil end }
   -- "add the point EXIT2": a point that is a known waypoint
   rule { "add append insert", "addwpt", near = { 3, "point" },
          when = function(g, i) return g:has_ref(g:find_word(i + 1, i + 4, "point") + 1, i + 5, "waypoint") end }
@@ -2691,6 +2703,16 @@ return function(intent, rule, words)
   rule { "scenario", false, prev = { 2, "forward ff pause freeze unfreeze unpause resume continue hold" } }
   -- "20 random aircraft for background load", "more traffic load": the noun, no file loaded
   rule { "load", false, prev = { 1, "background traffic high low heavy light more extra" } }
+  -- "conflict detection open please", "open the conflict resolution": a conflict setting switched on (handlers'
+  -- m:opened_setting), no file opened
+  rule { "open", false, when = function(g, i)
+    local k = i - 1
+    while k > 1 and g.t[k].filler do k = k - 1 end
+    if g:word(k, "detection resolution") then return true end
+    k = i + 1
+    while g:word(k, "the conflict conflicts") do k = k + 1 end
+    return k > i + 1 and g:word(k, "detection resolution")
+  end }
   rule { "scenario load open ic", "ic" }
   -- "print UAL9's flight plan", "print the waypoint list for BAW123": an aircraft's route listed
   rule { "print", "listrte", near = { 4, "route plan waypoint waypoints" },

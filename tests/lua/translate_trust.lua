@@ -15972,8 +15972,9 @@ do
   -- two aircraft addressed for traffic, then one said again: only that one is instructed
   check_eq(ex("vistara seven seven and akasa three one, traffic is each other, akasa three one turn left heading "
     .. "one two zero"), "HDG AKJ31 120 LEFT")
-  asked(ex("vistara seven seven and akasa three one you are in conflict, akasa turn left heading one two zero"),
-    "the airline alone after two aircraft named together")
+  -- (the airline's word alone fits one of the two named together: that one, f175 cycle 57)
+  check_eq(ex("vistara seven seven and akasa three one you are in conflict, akasa turn left heading one two zero"),
+    "HDG AKJ31 120 LEFT")
   check_eq(ex("vistara seven seven and akasa three one turn left heading one two zero"),
     "HDG VTI77 120 LEFT ; HDG AKJ31 120 LEFT")
 end
@@ -16596,4 +16597,47 @@ do
   asked(ex("FedEx 90, climb to FL200. Kids, should we go to 21000?"), "a value in the question")
   asked(ex("FedEx 90, climb to FL200. Kids, can you climb to FL210?"), "a value in the question")
   asked(ex("Kids, which way is SkyWest 70 going? SkyWest 70, turn left heading 250"), "an aircraft in the question")
+end
+
+do
+  -- f175 (cycle 57): a Turkish speaker's habits in polite English
+  local _, ex = scene({ "DEFWPT ELMAS 41.0 29.5", "DEFWPT DOLAP 41.0 30.0", "DEFWPT KARTA 41.0 30.5",
+    "DEFWPT BURSA 40.2 29.0", "CRE ONE12 A320 41.00 29.00 090 FL250 280", "CRE SWR8 A321 41.30 29.50 180 FL300 290",
+    "CRE AFR77 A320 40.80 28.60 270 FL220 260", "ADDWPT ONE12 ELMAS", "ADDWPT ONE12 DOLAP", "ADDWPT ONE12 KARTA",
+    "CRE IRA55 A320 40.50 30.00 045 FL330 280" })
+  -- a term of address to the listener opening or closing the request; none addressing an aircraft or unknown
+  check_eq(ex("Dear simulator, Swiss 8 to FL320 please climb"), "ALT SWR8 FL320")
+  check_eq(ex("hocam, Air France 77 speed 240"), "SPD AFR77 240")
+  check_eq(ex("Swiss 8 turn left 20 degrees, my friend"), "HDG SWR8 160 LEFT")
+  check_eq(ex("what is Air France 77 doing now hocam?"), "POS AFR77")
+  asked(ex("dear Swiss 8, climb FL320"), "an aircraft addressed as dear")
+  asked(ex("Swiss 8, hocam, climb FL320"), "said between, not opening or closing")
+  -- verb-final waypoint changes
+  check_eq(ex("ONE12, DOLAP delete from its route please"), "DELWPT ONE12 DOLAP")
+  check_eq(ex("ONE12, waypoint BURSA add to the end of its route"), "ADDWPT ONE12 BURSA")
+  check_eq(ex("ONE12 BURSA add between ELMAS and DOLAP please"), "ADDWPT ONE12 BURSA,,,ELMAS")
+  asked(ex("ONE12 BURSA add between ELMAS and KARTA"), "not next to each other")
+  asked(ex("ONE12 BURSA add"), "no route said")
+  -- "X we skip" beside a direct-to: only a place the direct-to skips
+  check_eq(ex("ONE12 direct DOLAP please, ELMAS we skip"), "DIRECT ONE12 DOLAP")
+  check_eq(ex("ONE12 direct KARTA, DOLAP you can skip"), "DIRECT ONE12 KARTA")
+  asked(ex("ONE12 direct DOLAP, KARTA we skip"), "KARTA lies after DOLAP")
+  asked(ex("ONE12 direct DOLAP, ELMAS we don't skip"), "negated")
+  -- an airline's word alone naming the one aircraft of it just named in full
+  check_eq(ex("Swiss 8 and Air France 77 are in conflict. Swiss right 30 degrees turn, Air France descend FL210"),
+    "HDG SWR8 210 RIGHT ; ALT AFR77 FL210")
+  check_eq(ex("Air France 77 and Swiss 8 conflict. Swiss climb FL320 please"), "ALT SWR8 FL320")
+  asked(ex("Air France 77 and Swiss 8 conflict. Lufthansa climb FL320"), "no such aircraft named")
+  asked(ex("ONE12 climb FL260, Swiss 8 speed 250, Swiss descend FL280"), "named as its own addressee, not together")
+  -- conflict settings opened and closed, and asked about
+  check_eq(ex("conflict detection open please"), "ASAS ON")
+  check_eq(ex("please open the conflict resolution"), "RESO MVP")
+  asked(ex("conflict detection close please"), "off for everyone is confirmed")
+  check_eq(ex("which resolution method is active now, can you show?"), "RESO")
+  asked(ex("can you show which resolution method is selected?"), "never switched on by 'show'")
+  asked(ex("open scenario test.scn"), "a scenario loaded is confirmed")
+  -- an intruder created in verb-final order, and Iran Air's telephony
+  check_eq(ex("for Swiss 8 one intruder create please: INT07, A320, 90 degrees, CPA 2 NM, 240 seconds"),
+    "CRECONFS INT07 A320 SWR8 90 2 240")
+  check_eq(ex("Swiss 8, Iranair 55: all of them reduce 250 knots"), "SPD SWR8 250 ; SPD IRA55 250")
 end
