@@ -3974,6 +3974,9 @@ function G:condition()
       return nil, 1
     end
     comma, rest = q.e, q.e
+    -- ("once you pass FL270 on the way up speed 300": the direction said with the level is the condition's)
+    local way = self:crossing_way(self:skip_fillers(q.e))
+    if way then comma, rest = way + 1, way + 1 end
   end
   -- ("when reaching FL230... disregard, descend FL190", "..., scratch that, descend FL190": a condition taken back
   -- by a correction (lexicon.correction, or self_correction.dropping's words) said before the next instruction
@@ -4010,6 +4013,17 @@ function G:condition()
     return "", rest
   end
   for _, q in ipairs(self:quantities(i, comma)) do
+    -- ("once you pass FL240 on the way down, ..."): the direction said must be the one the aircraft crosses the
+    -- level in from where it is; else asked
+    local way = (q.kind == "alt" or q.kind == "plain" and q.value >= 1000) and self:crossing_way(self:skip_fillers(q.e))
+    if way and way < comma then
+      if not self:way_fits(way, self.subject, q.value) then
+        self.ask = string.format("'%s': %s is not %s that level. Which level should it wait for?",
+          self:raw(q.b, way + 1), self.subject, self:word(way, "down") and "above" or "below")
+        return nil, rest
+      end
+      self:explain(way - 3, way + 1)
+    end
     if q.kind == "alt" then return "ATALT " .. self.subject .. " " .. f.alt(q.value, q.fl), rest end
     if q.kind == "speed" then return "ATSPD " .. self.subject .. " " .. f.int(q.value), rest end
     if q.kind == "mach" then return "ATSPD " .. self.subject .. " " .. f.mach(q.value), rest end
@@ -4145,14 +4159,18 @@ end
 
 -- "keep flying at FL160 until HORTA and then descend FL110", "keep FL230 until PIVON, then descend": segment p,
 -- a verb of keeping (lexicon.kept_as_is.verbs) and one level or speed, whose commands are self.out[n0 + 1 .. n1],
--- held until the waypoint where aircraft `id`'s next instruction starts. A value the aircraft flies (G.flies)
--- changes nothing: its command is dropped, the words read as the limit. Returns the number of commands dropped.
+-- held until the waypoint where aircraft `id`'s next instruction starts. A level the aircraft is level at, with
+-- that level selected (within 50 ft), changes nothing: its command is dropped, the words read as the limit. A speed
+-- kept is always issued: it is the restriction said, and the aircraft's present speed may not be the one it will
+-- hold ("keep 280 knots until DIPOS, then 250": `SPD X 280 ; AT X DIPOS DO SPD X 250`); so is a level the aircraft
+-- passes or was given another of. Returns the number of commands dropped.
 function G:kept_until(p, n0, n1, id)
   local qs = p and n1 == n0 + 1 and self:quantities(p.b, p.e) or {}
   if #qs ~= 1 or not self:word_in(p.b, qs[1].b, G.kept_sets.verbs) then return 0 end
-  local cmd, v = self.out[n1]:match("^(%u+) " .. id:gsub("%p", "%%%0") .. " (%S+)$")
-  local kind = ({ ALT = "alt", SPD = qs[1].kind == "mach" and "mach" or "speed" })[cmd]
-  if not kind or not G.flies(self:state(id), kind, qs[1].value) then return 0 end
+  local cmd = self.out[n1]:match("^(%u+) " .. id:gsub("%p", "%%%0") .. " %S+$")
+  local a = cmd == "ALT" and self:state(id)
+  if not (a and a.alt_ft and math.abs(a.alt_ft - qs[1].value) <= 50
+      and (a.sel_alt_ft == nil or math.abs(a.sel_alt_ft - a.alt_ft) <= 50)) then return 0 end
   table.remove(self.out, n1)
   return 1
 end
