@@ -4626,7 +4626,7 @@ function G:segments(b, e)
           local w = self:refs_in(between[1].e, tr.pos, "waypoint")
           local r = w[#w]
           dist_between = dist_between or (r ~= nil and self:skip_fillers(r.e) == tr.pos
-            and self:word(r.b - 1, "after passing over leaving reaching"))
+            and (self:word(r.b - 1, "after passing over leaving reaching") or self:passes_said(r.b - 1)))
           -- ("reduce 230, when level reduce 210": the level reached, "when/once (it's) level", likewise)
           local lv = tr.pos - 1
           while lv > between[1].e and self.t[lv].kind == "punct" do lv = lv - 1 end
@@ -5740,6 +5740,7 @@ function G:parse(b, e)
       local crossed = self.crossed
       self.crossed = nil
       -- (a value again after "after" and its place is the instruction's alone: G:until_then)
+      self.conditioned_ask = nil
       if (until_wp and until_wp.after) or not self:at_waypoint(s, spec) then
         self[spec and spec.handler or "infer"](self, s, spec)
       end
@@ -5804,7 +5805,10 @@ function G:parse(b, e)
       -- speed") is asked all the same (the words kept out of the lexicon's lists, so that one nothing read
       -- elsewhere is still asked about by name).
       local set_aside = false
+      -- (one that waits for a condition, "after NAXEL turn left", "in 2 minutes turn left", is asked all the same:
+      -- no condition is dropped)
       if self.ask and spec and spec.value and self:values_after_trigger(s) == 0 and not self:change_word(s.trig)
+          and not self.conditioned_ask and not (at and at ~= self.at_all)
           and not self:word_in(s.trig + 1, s.e, "minimum maximum min max best optimum optimal clean econ economy") then
         self.pending = self.pending or self.ask
         valueless[#valueless + 1] = { k = k, ask = self.ask }
@@ -6281,9 +6285,24 @@ end
 -- "reduce speed 250, after SUMAG 220", "maintain FL230, after BOYSE FL150": the kind (G:value_again_kind) of a
 -- value said bare straight after "after" (at i) and a waypoint, opening a clause (a comma or "and" before it) that
 -- (or "then") follows a value; the value is that instruction again, from the place (G:until_then). nil otherwise.
+-- verbs of passing a waypoint after "when", "once" or "after" and the aircraft's pronoun ("when it passes KONAK")
+G.passes_verbs = "passes pass passed crosses cross crossed overflies overfly overflew"
+-- True when the token at v is a verb of G.passes_verbs after the aircraft's pronoun and "when", "once" or "after"
+-- ("after it passes NIKAS", "once you cross DIPOS").
+function G:passes_said(v)
+  return self:word(v, G.passes_verbs) and self:word(v - 1, "it he she you they") and self:word(v - 2, "when once after")
+end
+-- ("..., after passing SUMAG 220", "maintain FL340, and after it passes NIKAS, FL300": the aircraft's passing it
+-- said between, G.passes_verbs)
 function G:after_place_value(i)
-  local r = self.refs and self:refs_in(i + 1, math.min(#self.t + 1, i + 4), "waypoint")[1]
-  if not r or r.b ~= self:skip_fillers(i + 1) then return nil end
+  local v = self:skip_fillers(i + 1)
+  if self:word(v, "passing") then
+    v = self:skip_fillers(v + 1)
+  elseif self:word(v, "it he she you they") and self:word(self:skip_fillers(v + 1), G.passes_verbs) then
+    v = self:skip_fillers(self:skip_fillers(v + 1) + 1)
+  end
+  local r = self.refs and self:refs_in(v, math.min(#self.t + 1, v + 4), "waypoint")[1]
+  if not r or r.b ~= v then return nil end
   local q = self:quantities(r.e, #self.t + 1)[1]
   if not q or q.b ~= self:skip_fillers(r.e) then return nil end
   -- ("speed 250 then after NUKSI 220", "..., and then after NUKSI 220": a "then" before "after" waits for the place
@@ -6747,13 +6766,23 @@ function G:at_waypoint(s, spec)
   -- (the clause's opening words: "at", "over", "overhead", "after", "after/when/on/upon/once passing",
   -- "leaving", "overflying", "reaching", "past" or "over", "passing", "reaching", "leave", "leaving")
   local opens
-  self.place_passed_e = nil
+  self.place_passed_e, self.place_passes = nil, nil
   local passed = "passing leaving overflying reaching past over"
   if self:word(first, "at over overhead after passing reaching leave leaving") then
     opens = self:skip_fillers(first + 1)
-    if self:word(first, "after") and self:word(opens, passed) then opens = self:skip_fillers(opens + 1) end
+    if self:word(first, "after") and self:word(opens, passed) then
+      opens = self:skip_fillers(opens + 1)
+    elseif self:word(first, "after") and self:passes_said(self:skip_fillers(opens + 1)) then
+      -- ("after it passes NIKAS descend FL300": as "after passing")
+      opens = self:skip_fillers(self:skip_fillers(opens + 1) + 1)
+    end
   elseif self:word(first, "when on upon once") and self:word(self:skip_fillers(first + 1), passed) then
     opens = self:skip_fillers(self:skip_fillers(first + 1) + 1)
+  elseif self:word(first, "when once") and self:passes_said(self:skip_fillers(self:skip_fillers(first + 1) + 1)) then
+    -- ("when it passes KONAK turn left heading 240", "after it passes NIKAS, FL300", "once you cross DIPOS,
+    -- ...": the aircraft's passing the waypoint, as "when passing" says it)
+    opens = self:skip_fillers(self:skip_fillers(self:skip_fillers(first + 1) + 1) + 1)
+    self.place_passes = true
   elseif self:word(first, "when once") then
     -- ("when ROTAX reached then climb FL150", "once KIRDI is passed, descend FL100": the waypoint, then the verb of
     -- passing it; `passed_e`, the token after that verb)
@@ -6817,7 +6846,11 @@ function G:at_waypoint(s, spec)
     if last and self:word(last, "or") and self:word(last + 1, "above below higher lower less greater more") then
       last = last + 2
     end
-    local crossed = self:word(r.b - 1, "cross crossing crosses") and (self:word(after, "at")
+    -- ("once it crosses PAM, 250 knots": the aircraft's passing it, a condition opening the clause, no crossing
+    -- restriction: read below as "once passing")
+    local crossed = self:word(r.b - 1, "cross crossing crosses")
+      and not (self:word(r.b - 2, "it he she you they") and self:word(r.b - 3, "when once after"))
+      and (self:word(after, "at")
       or (next_q and (next_q.b == after or (self:word(after, "speed spd") and next_q.b == self:skip_fillers(after + 1)))
         and (next_q.kind == "alt" or next_q.kind == "speed" or next_q.kind == "mach" or speed_said(next_q))
         and ends_request(self, last)))
@@ -6911,7 +6944,7 @@ function G:at_waypoint(s, spec)
     -- ("passing VURAL descending FL100", no "when" or "after": a pilot's report, no instruction)
     -- ("when passing KV speed 230", "once past GIVMI 250 knots": a clause that passes the waypoint before its
     -- value, as "after" does)
-    local passed_first = self:word(first, "after") or (self:word(first, "when on upon once")
+    local passed_first = self:word(first, "after") or self.place_passes or (self:word(first, "when on upon once")
       and self:word(self:skip_fillers(first + 1), "passing past overflying leaving"))
     -- ("at UPALA then FL120", "at ELDAR, then speed 250": "then" after the opening waypoint says what follows
     -- is done there, no constraint)
@@ -6947,6 +6980,7 @@ function G:at_waypoint(s, spec)
       local n0 = #self.out
       self:explain(cond_b, opened and self.place_passed_e or r.e)
       self[handler](self, s, spec)
+      self.conditioned_ask = self.ask ~= nil
       if not self.ask and self:do_at(self:acids(s)[1], r.name, n0) then
         self.waypoint_do = { id = self:acids(s)[1], wp = r.name, n = #self.out }
       end
