@@ -3824,11 +3824,12 @@ function G:at_speed(s)
   local bare = q.kind == "plain" and q.value >= 40 and q.value <= 700
   -- ("and when he's got two fifty, descend", "when you have two eight zero, descend": the speed had, given
   -- already, as "at" says it)
-  local again = bare and not (noun or slowed) and self:word(q.b - 1, "at got have has")
+  -- ("and after you reach 300 climb to 14,000": the speed reached, given already)
+  local again = bare and not (noun or slowed) and self:word(q.b - 1, "at got have has reach reaches reached hit hits")
   if not (q.kind == "speed" or q.kind == "mach" or (bare and (noun or slowed or again))) then return nil end
   local k = self:skip_fillers(q.e)
   while k < s.trig and ((self.t[k].kind == "punct" and self.t[k].text == ",") or self:word(k, "@condition_lead")
-      or LINKING[self.words[k]]) do
+      or LINKING[self.words[k]] or (self:word(k, "go") and self:word(s.trig, "@up @down"))) do
     k = self:skip_fillers(k + 1)
   end
   local ids = k == s.trig and self:acids(s) or {}
@@ -4619,6 +4620,11 @@ function G:segments(b, e)
           -- ("reduce 280, passing FL230 reduce 250", "speed 250, above FL100 speed 300", "reduce 210, when level at
           -- 8000 reduce 190": a level passed, crossed or levelled at opening the second's clause, G:level_opening)
             or (G.level_value(q) and tr.intent == "spd" and #self:quantities(last.trig, q.b) > 0 and self:level_opening(q.b))
+          -- ("descend FL300, and after 2 minutes descend FL260", "heading 230, then in 3 minutes back to heading
+          -- 190": a wait after "and" or "then" and "after" or "in", after the first's value, is the second's; after a
+          -- comma alone it stays asked)
+            or (q.kind == "time" and #self:quantities(last.trig, q.b) > 0 and self:word(q.b - 1, "after in")
+              and self:word(q.b - 2, "and then"))
         end
         -- ("reduce 270 after GAVOL speed 250": a waypoint passed after the first's value, straight before the
         -- second instruction word, is the second's condition)
@@ -6175,7 +6181,10 @@ function G:until_then(segs, k)
     local r = self:refs_in(s.trig + 1, s.e, "waypoint")[1]
     return { u = s.trig, e = r.e, name = r.name, after = true }
   end
-  if not p or not (s["then"] or self:word(s.trig, "@then_words") or self:word_in(p.trig + 1, s.trig + 1, "@until_then_words")) then
+  -- ("keep 280 knots until CPX1, after that reduce 250": "after that" as "then", straight before the instruction)
+  local after_that = self:word(s.trig - 2, "after") and self:word(s.trig - 1, "that") and s.trig - 2
+  if not p or not (s["then"] or self:word(s.trig, "@then_words") or self:word_in(p.trig + 1, s.trig + 1, "@until_then_words")
+      or after_that) then
     return nil
   end
   for u = p.trig + 1, s.trig - 1 do
@@ -6186,6 +6195,9 @@ function G:until_then(segs, k)
       if n and self:word(n, "and") then n = n + 1 end
       if r and r.b == self:skip_fillers(u + 1) and self:word(n, "then @until_then_words") then
         return { u = u, e = r.e, name = r.name }
+      end
+      if r and r.b == self:skip_fillers(u + 1) and n == after_that then
+        return { u = u, e = after_that + 2, name = r.name }
       end
     end
   end
