@@ -3888,11 +3888,12 @@ function G:at_speed(s)
   local bare = q.kind == "plain" and q.value >= 40 and q.value <= 700
   -- ("and when he's got two fifty, descend", "when you have two eight zero, descend": the speed had, given
   -- already, as "at" says it)
-  local again = bare and not (noun or slowed) and self:word(q.b - 1, "at got have has")
+  -- ("and after you reach 300 climb to 14,000": the speed reached, given already)
+  local again = bare and not (noun or slowed) and self:word(q.b - 1, "at got have has reach reaches reached hit hits")
   if not (q.kind == "speed" or q.kind == "mach" or (bare and (noun or slowed or again))) then return nil end
   local k = self:skip_fillers(q.e)
   while k < s.trig and ((self.t[k].kind == "punct" and self.t[k].text == ",") or self:word(k, "@condition_lead")
-      or LINKING[self.words[k]]) do
+      or LINKING[self.words[k]] or (self:word(k, "go") and self:word(s.trig, "@up @down"))) do
     k = self:skip_fillers(k + 1)
   end
   local ids = k == s.trig and self:acids(s) or {}
@@ -4048,6 +4049,9 @@ function G:condition()
       return nil, 1
     end
     comma, rest = q.e, q.e
+    -- ("once you pass FL270 on the way up speed 300": the direction said with the level is the condition's)
+    local way = self:crossing_way(self:skip_fillers(q.e))
+    if way then comma, rest = way + 1, way + 1 end
   end
   -- ("when reaching FL230... disregard, descend FL190", "..., scratch that, descend FL190": a condition taken back
   -- by a correction (lexicon.correction, or self_correction.dropping's words) said before the next instruction
@@ -4084,6 +4088,17 @@ function G:condition()
     return "", rest
   end
   for _, q in ipairs(self:quantities(i, comma)) do
+    -- ("once you pass FL240 on the way down, ..."): the direction said must be the one the aircraft crosses the
+    -- level in from where it is; else asked
+    local way = (q.kind == "alt" or q.kind == "plain" and q.value >= 1000) and self:crossing_way(self:skip_fillers(q.e))
+    if way and way < comma then
+      if not self:way_fits(way, self.subject, q.value) then
+        self.ask = string.format("'%s': %s is not %s that level. Which level should it wait for?",
+          self:raw(q.b, way + 1), self.subject, self:word(way, "down") and "above" or "below")
+        return nil, rest
+      end
+      self:explain(way - 3, way + 1)
+    end
     if q.kind == "alt" then return "ATALT " .. self.subject .. " " .. f.alt(q.value, q.fl), rest end
     if q.kind == "speed" then return "ATSPD " .. self.subject .. " " .. f.int(q.value), rest end
     if q.kind == "mach" then return "ATSPD " .. self.subject .. " " .. f.mach(q.value), rest end
@@ -4219,14 +4234,18 @@ end
 
 -- "keep flying at FL160 until HORTA and then descend FL110", "keep FL230 until PIVON, then descend": segment p,
 -- a verb of keeping (lexicon.kept_as_is.verbs) and one level or speed, whose commands are self.out[n0 + 1 .. n1],
--- held until the waypoint where aircraft `id`'s next instruction starts. A value the aircraft flies (G.flies)
--- changes nothing: its command is dropped, the words read as the limit. Returns the number of commands dropped.
+-- held until the waypoint where aircraft `id`'s next instruction starts. A level the aircraft is level at, with
+-- that level selected (within 50 ft), changes nothing: its command is dropped, the words read as the limit. A speed
+-- kept is always issued: it is the restriction said, and the aircraft's present speed may not be the one it will
+-- hold ("keep 280 knots until DIPOS, then 250": `SPD X 280 ; AT X DIPOS DO SPD X 250`); so is a level the aircraft
+-- passes or was given another of. Returns the number of commands dropped.
 function G:kept_until(p, n0, n1, id)
   local qs = p and n1 == n0 + 1 and self:quantities(p.b, p.e) or {}
   if #qs ~= 1 or not self:word_in(p.b, qs[1].b, G.kept_sets.verbs) then return 0 end
-  local cmd, v = self.out[n1]:match("^(%u+) " .. id:gsub("%p", "%%%0") .. " (%S+)$")
-  local kind = ({ ALT = "alt", SPD = qs[1].kind == "mach" and "mach" or "speed" })[cmd]
-  if not kind or not G.flies(self:state(id), kind, qs[1].value) then return 0 end
+  local cmd = self.out[n1]:match("^(%u+) " .. id:gsub("%p", "%%%0") .. " %S+$")
+  local a = cmd == "ALT" and self:state(id)
+  if not (a and a.alt_ft and math.abs(a.alt_ft - qs[1].value) <= 50
+      and (a.sel_alt_ft == nil or math.abs(a.sel_alt_ft - a.alt_ft) <= 50)) then return 0 end
   table.remove(self.out, n1)
   return 1
 end
@@ -4675,6 +4694,11 @@ function G:segments(b, e)
           -- ("reduce 280, passing FL230 reduce 250", "speed 250, above FL100 speed 300", "reduce 210, when level at
           -- 8000 reduce 190": a level passed, crossed or levelled at opening the second's clause, G:level_opening)
             or (G.level_value(q) and tr.intent == "spd" and #self:quantities(last.trig, q.b) > 0 and self:level_opening(q.b))
+          -- ("descend FL300, and after 2 minutes descend FL260", "heading 230, then in 3 minutes back to heading
+          -- 190": a wait after "and" or "then" and "after" or "in", after the first's value, is the second's; after a
+          -- comma alone it stays asked)
+            or (q.kind == "time" and #self:quantities(last.trig, q.b) > 0 and self:word(q.b - 1, "after in")
+              and self:word(q.b - 2, "and then"))
         end
         -- ("reduce 270 after GAVOL speed 250": a waypoint passed after the first's value, straight before the
         -- second instruction word, is the second's condition)
@@ -4682,7 +4706,7 @@ function G:segments(b, e)
           local w = self:refs_in(between[1].e, tr.pos, "waypoint")
           local r = w[#w]
           dist_between = dist_between or (r ~= nil and self:skip_fillers(r.e) == tr.pos
-            and self:word(r.b - 1, "after passing over leaving reaching"))
+            and (self:word(r.b - 1, "after passing over leaving reaching") or self:passes_said(r.b - 1)))
           -- ("reduce 230, when level reduce 210": the level reached, "when/once (it's) level", likewise)
           local lv = tr.pos - 1
           while lv > between[1].e and self.t[lv].kind == "punct" do lv = lv - 1 end
@@ -5796,6 +5820,7 @@ function G:parse(b, e)
       local crossed = self.crossed
       self.crossed = nil
       -- (a value again after "after" and its place is the instruction's alone: G:until_then)
+      self.conditioned_ask = nil
       if (until_wp and until_wp.after) or not self:at_waypoint(s, spec) then
         self[spec and spec.handler or "infer"](self, s, spec)
       end
@@ -5860,7 +5885,10 @@ function G:parse(b, e)
       -- speed") is asked all the same (the words kept out of the lexicon's lists, so that one nothing read
       -- elsewhere is still asked about by name).
       local set_aside = false
+      -- (one that waits for a condition, "after NAXEL turn left", "in 2 minutes turn left", is asked all the same:
+      -- no condition is dropped)
       if self.ask and spec and spec.value and self:values_after_trigger(s) == 0 and not self:change_word(s.trig)
+          and not self.conditioned_ask and not (at and at ~= self.at_all)
           and not self:word_in(s.trig + 1, s.e, "minimum maximum min max best optimum optimal clean econ economy") then
         self.pending = self.pending or self.ask
         valueless[#valueless + 1] = { k = k, ask = self.ask }
@@ -6227,7 +6255,10 @@ function G:until_then(segs, k)
     local r = self:refs_in(s.trig + 1, s.e, "waypoint")[1]
     return { u = s.trig, e = r.e, name = r.name, after = true }
   end
-  if not p or not (s["then"] or self:word(s.trig, "@then_words") or self:word_in(p.trig + 1, s.trig + 1, "@until_then_words")) then
+  -- ("keep 280 knots until CPX1, after that reduce 250": "after that" as "then", straight before the instruction)
+  local after_that = self:word(s.trig - 2, "after") and self:word(s.trig - 1, "that") and s.trig - 2
+  if not p or not (s["then"] or self:word(s.trig, "@then_words") or self:word_in(p.trig + 1, s.trig + 1, "@until_then_words")
+      or after_that) then
     return nil
   end
   for u = p.trig + 1, s.trig - 1 do
@@ -6238,6 +6269,9 @@ function G:until_then(segs, k)
       if n and self:word(n, "and") then n = n + 1 end
       if r and r.b == self:skip_fillers(u + 1) and self:word(n, "then @until_then_words") then
         return { u = u, e = r.e, name = r.name }
+      end
+      if r and r.b == self:skip_fillers(u + 1) and n == after_that then
+        return { u = u, e = after_that + 2, name = r.name }
       end
     end
   end
@@ -6337,9 +6371,24 @@ end
 -- "reduce speed 250, after SUMAG 220", "maintain FL230, after BOYSE FL150": the kind (G:value_again_kind) of a
 -- value said bare straight after "after" (at i) and a waypoint, opening a clause (a comma or "and" before it) that
 -- (or "then") follows a value; the value is that instruction again, from the place (G:until_then). nil otherwise.
+-- verbs of passing a waypoint after "when", "once" or "after" and the aircraft's pronoun ("when it passes KONAK")
+G.passes_verbs = "passes pass passed crosses cross crossed overflies overfly overflew"
+-- True when the token at v is a verb of G.passes_verbs after the aircraft's pronoun and "when", "once" or "after"
+-- ("after it passes NIKAS", "once you cross DIPOS").
+function G:passes_said(v)
+  return self:word(v, G.passes_verbs) and self:word(v - 1, "it he she you they") and self:word(v - 2, "when once after")
+end
+-- ("..., after passing SUMAG 220", "maintain FL340, and after it passes NIKAS, FL300": the aircraft's passing it
+-- said between, G.passes_verbs)
 function G:after_place_value(i)
-  local r = self.refs and self:refs_in(i + 1, math.min(#self.t + 1, i + 4), "waypoint")[1]
-  if not r or r.b ~= self:skip_fillers(i + 1) then return nil end
+  local v = self:skip_fillers(i + 1)
+  if self:word(v, "passing") then
+    v = self:skip_fillers(v + 1)
+  elseif self:word(v, "it he she you they") and self:word(self:skip_fillers(v + 1), G.passes_verbs) then
+    v = self:skip_fillers(self:skip_fillers(v + 1) + 1)
+  end
+  local r = self.refs and self:refs_in(v, math.min(#self.t + 1, v + 4), "waypoint")[1]
+  if not r or r.b ~= v then return nil end
   local q = self:quantities(r.e, #self.t + 1)[1]
   if not q or q.b ~= self:skip_fillers(r.e) then return nil end
   -- ("speed 250 then after NUKSI 220", "..., and then after NUKSI 220": a "then" before "after" waits for the place
@@ -6803,13 +6852,23 @@ function G:at_waypoint(s, spec)
   -- (the clause's opening words: "at", "over", "overhead", "after", "after/when/on/upon/once passing",
   -- "leaving", "overflying", "reaching", "past" or "over", "passing", "reaching", "leave", "leaving")
   local opens
-  self.place_passed_e = nil
+  self.place_passed_e, self.place_passes = nil, nil
   local passed = "passing leaving overflying reaching past over"
   if self:word(first, "at over overhead after passing reaching leave leaving") then
     opens = self:skip_fillers(first + 1)
-    if self:word(first, "after") and self:word(opens, passed) then opens = self:skip_fillers(opens + 1) end
+    if self:word(first, "after") and self:word(opens, passed) then
+      opens = self:skip_fillers(opens + 1)
+    elseif self:word(first, "after") and self:passes_said(self:skip_fillers(opens + 1)) then
+      -- ("after it passes NIKAS descend FL300": as "after passing")
+      opens = self:skip_fillers(self:skip_fillers(opens + 1) + 1)
+    end
   elseif self:word(first, "when on upon once") and self:word(self:skip_fillers(first + 1), passed) then
     opens = self:skip_fillers(self:skip_fillers(first + 1) + 1)
+  elseif self:word(first, "when once") and self:passes_said(self:skip_fillers(self:skip_fillers(first + 1) + 1)) then
+    -- ("when it passes KONAK turn left heading 240", "after it passes NIKAS, FL300", "once you cross DIPOS,
+    -- ...": the aircraft's passing the waypoint, as "when passing" says it)
+    opens = self:skip_fillers(self:skip_fillers(self:skip_fillers(first + 1) + 1) + 1)
+    self.place_passes = true
   elseif self:word(first, "when once") then
     -- ("when ROTAX reached then climb FL150", "once KIRDI is passed, descend FL100": the waypoint, then the verb of
     -- passing it; `passed_e`, the token after that verb)
@@ -6873,7 +6932,11 @@ function G:at_waypoint(s, spec)
     if last and self:word(last, "or") and self:word(last + 1, "above below higher lower less greater more") then
       last = last + 2
     end
-    local crossed = self:word(r.b - 1, "cross crossing crosses") and (self:word(after, "at")
+    -- ("once it crosses PAM, 250 knots": the aircraft's passing it, a condition opening the clause, no crossing
+    -- restriction: read below as "once passing")
+    local crossed = self:word(r.b - 1, "cross crossing crosses")
+      and not (self:word(r.b - 2, "it he she you they") and self:word(r.b - 3, "when once after"))
+      and (self:word(after, "at")
       or (next_q and (next_q.b == after or (self:word(after, "speed spd") and next_q.b == self:skip_fillers(after + 1)))
         and (next_q.kind == "alt" or next_q.kind == "speed" or next_q.kind == "mach" or speed_said(next_q))
         and ends_request(self, last)))
@@ -6967,7 +7030,7 @@ function G:at_waypoint(s, spec)
     -- ("passing VURAL descending FL100", no "when" or "after": a pilot's report, no instruction)
     -- ("when passing KV speed 230", "once past GIVMI 250 knots": a clause that passes the waypoint before its
     -- value, as "after" does)
-    local passed_first = self:word(first, "after") or (self:word(first, "when on upon once")
+    local passed_first = self:word(first, "after") or self.place_passes or (self:word(first, "when on upon once")
       and self:word(self:skip_fillers(first + 1), "passing past overflying leaving"))
     -- ("at UPALA then FL120", "at ELDAR, then speed 250": "then" after the opening waypoint says what follows
     -- is done there, no constraint)
@@ -7003,6 +7066,7 @@ function G:at_waypoint(s, spec)
       local n0 = #self.out
       self:explain(cond_b, opened and self.place_passed_e or r.e)
       self[handler](self, s, spec)
+      self.conditioned_ask = self.ask ~= nil
       if not self.ask and self:do_at(self:acids(s)[1], r.name, n0) then
         self.waypoint_do = { id = self:acids(s)[1], wp = r.name, n = #self.out }
       end

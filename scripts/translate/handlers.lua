@@ -3689,8 +3689,8 @@ function m:on_the_way(id, ft)
   return false
 end
 -- words between the level and a speed's own word, part of the instruction ("when it passes FL130 drop the
--- speed to 230", "... bring its speed back to 240")
-local SPEED_LEAD = { drop = true, bring = true, cut = true, take = true, pull = true, knock = true, put = true, the = true,
+-- speed to 230", "... bring its speed back to 240", "... make its speed 260", "... make decrease speed to 250")
+local SPEED_LEAD = { drop = true, bring = true, cut = true, take = true, pull = true, knock = true, put = true, make = true, the = true,
                      its = true, your = true, his = true, her = true, their = true }
 -- words between the level and a rate's own word, part of the instruction ("passing 150 reduce rate to 1000",
 -- "leaving FL100 increase your rate to 2000", "after passing FL150 descend rate 1500": the rate's direction)
@@ -3702,6 +3702,19 @@ local SUBJECT_LEAD = { it = true, he = true, she = true, they = true, you = true
 -- words between the level and a heading's own word, part of the instruction ("once passing FL110, left heading
 -- 160", "... turn right heading 130")
 local HEADING_LEAD = { left = true, right = true, turn = true }
+-- "on the way down", "on its way up" at k: the position of its "down" or "up", else nil.
+function m:crossing_way(k)
+  return self:word(k, "on") and self:word(k + 1, "the its your his her their") and self:word(k + 2, "way")
+    and self:word(k + 3, "down up") and k + 3 or nil
+end
+-- True when aircraft `id` crosses level `level_ft` [ft] in the direction said at `way` (G:crossing_way): it is above
+-- the level for "down", below it for "up".
+function m:way_fits(way, id, level_ft)
+  local a = id and self:state(id)
+  local down = self:word(way, "down")
+  return a ~= nil and a.alt_ft ~= nil and level_ft ~= nil
+    and (down and a.alt_ft > level_ft or not down and a.alt_ft < level_ft)
+end
 function m:at_altitude(s)
   if s.intent ~= "spd" and s.intent ~= "hdg" and s.intent ~= "maintain" and s.intent ~= "alt"
       and not NAV_INTENTS[s.intent] and s.intent ~= "vs" then
@@ -3779,6 +3792,10 @@ function m:at_altitude(s)
     and (q.kind == "alt" or (q.kind == "plain" and q.value >= 1000)) and a + 1
   if not q or (q.b ~= a + 1 and not noun) then return nil end
   local k = self:skip_fillers(q.e)
+  -- ("once you pass 15,000 on the way down, slow down to 250", "when passing FL270 on its way up, ..."): the
+  -- direction the level is crossed in, said after it (checked below against the aircraft's climb or descent)
+  local way = self:crossing_way(k)
+  if way then k = self:skip_fillers(way + 1) end
   while k < s.trig and (self:word(k, "@condition_lead") or (self.t[k].kind == "punct" and self.t[k].text == ",")
       or SUBJECT_LEAD[self.words[k]] or (s.intent == "spd" and SPEED_LEAD[self.words[k]])
       or (s.intent == "vs" and RATE_LEAD[self.words[k]]) or (s.intent == "hdg" and HEADING_LEAD[self.words[k]])
@@ -3836,6 +3853,12 @@ function m:at_altitude(s)
   local at_ft = bare and (self:state(ids[1]) or {}).alt_ft
   if bare and not (at_ft and (self:word(bound, "above") and at_ft < level_ft or self:word(bound, "below") and at_ft > level_ft)) then
     return nil
+  end
+  -- (the direction said is the one the aircraft crosses the level in from where it is; else left unread, asked;
+  -- whether it will cross it is G:level_never_crossed's)
+  if way then
+    if not self:way_fits(way, ids[1], level_ft) then return nil end
+    self:explain(way - 3, way + 1)
   end
   self:mark_used(q.b, q.e)  -- the condition's altitude is not the instruction's value
   if noun then self:explain(noun, noun + 1) end

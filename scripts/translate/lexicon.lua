@@ -2202,6 +2202,11 @@ return {
     -- with its subject, "arrive to" for "llegar a" / "chegar a", "be with" a speed for "estar con": "when it pass
     -- over TOBEK", "when you arrive to RINOR", "when arrives to FL250", "when you are at CASAR", "when you are
     -- with 250 knots"; read as the condition English says; a longer form before the shorter it opens with)
+    -- ("then as soon as it is level turn right heading 060", "Mach .78 as soon as level": "once"; "as soon as
+    -- possible" and "as soon as you can" stay the courtesy they are)
+    { heard = { "as soon as" }, means = "once",
+      before = { "it", "it's", "he", "he's", "she", "she's", "they", "they're", "you're", "level", "lvl", "reaching",
+                 "passing", "past", "established" } },
     { heard = { "you pass over", "it pass over", "it passes over", "pass over", "passes over", "you pass",
                 "it pass" }, means = "passing", after = { "when", "once" } },
     { heard = { "you arrive to", "you arrive at", "it arrive to", "it arrive at", "arrive to", "arrive at" },

@@ -130,6 +130,7 @@ local names = {
     { "air canada", "ACA" },
     { "jazz", "JZA" },
     { "transat", "TSC" },
+    { "air transat", "TSC" },  -- (the airline's own name, said whole as its telephony)
     { "rouge", "ROU" },
     { "porter", "POE" },
     -- Canada's regional airlines by ICAO telephony

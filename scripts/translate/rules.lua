@@ -410,8 +410,8 @@ return function(intent, rule, words)
     end
     return false
   end }
-  -- ("go down", "start down to 12000", "should start going down to 6000")
-  rule { "up down", "alt", prev = { 1, "go come going coming start starting" }, not_near = { 2, "speed knots" } }
+  -- ("go down", "start down to 12000", "should start going down to 6000", "head down to 12,000 feet")
+  rule { "up down", "alt", prev = { 1, "go come going coming start starting head heads" }, not_near = { 2, "speed knots" } }
   -- "go higher to 36000", "take it higher to FL360": a level after "higher ... to" ("lower" is read below)
   rule { "higher", "alt", next = "to", not_near = { 3, "speed knots kts" } }
   -- "N123AB go to 3500": a bare number of a thousand or more is no heading or speed, but a level

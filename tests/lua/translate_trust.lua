@@ -16641,3 +16641,58 @@ do
     "CRECONFS INT07 A320 SWR8 90 2 240")
   check_eq(ex("Swiss 8, Iranair 55: all of them reduce 250 knots"), "SPD SWR8 250 ; SPD IRA55 250")
 end
+
+-- Cycle 57 (fcd3): conditions and sequencing. A limit kept until a waypoint issues the speed said (a hazard: it had
+-- dropped it when the aircraft flew that speed); a level condition read with "make" and "on the way down"; a
+-- waypoint condition said "when it passes X"; a wait after "and after"/"then in" opens the next instruction; a
+-- speed reached said bare; an instruction with no value under a condition asked, never dropped
+do
+  local _, ex = scene({ "DEFWPT TOLKO 50.0 8.0", "DEFWPT MARSA 50.5 8.5", "DEFWPT ZEBRA 51.0 9.0",
+    "CRE EWG41 A320 49.8 7.8 045 FL310 280", "ADDWPT EWG41 TOLKO", "ADDWPT EWG41 MARSA",
+    "CRE BEL7 A319 49.5 7.5 045 FL230 260", "ADDWPT BEL7 MARSA",
+    "CRE DAL9 B752 49.0 7.0 045 16000 290", "CRE TSC51 A321 49.2 7.2 045 FL200 250", "ADDWPT TSC51 ZEBRA" })
+  -- a speed kept until a waypoint, then another: both, whatever the aircraft flies now
+  check_eq(ex("Eurowings 41 hold 280 knots until TOLKO, then 260"), "SPD EWG41 280 ; AT EWG41 TOLKO DO SPD EWG41 260")
+  check_eq(ex("EWG41 keep 280 kts till MARSA then slow to 250"), "SPD EWG41 280 ; AT EWG41 MARSA DO SPD EWG41 250")
+  check_eq(ex("EWG41 keep 280 knots until TOLKO, after that reduce 240"), "SPD EWG41 280 ; AT EWG41 TOLKO DO SPD EWG41 240")
+  -- a level kept that the aircraft is level at, with nothing else selected, is no command; one it is leaving is
+  check_eq(ex("EWG41 keep FL310 until TOLKO, then descend FL250"), "AT EWG41 TOLKO DO ALT EWG41 FL250")
+  -- "make" before a speed after a level condition; the direction the level is crossed in
+  check_eq(ex("EWG41 descend FL250 and when passing FL280 make its speed 250"),
+    "ALT EWG41 FL250 ; ATALT EWG41 FL280 SPD EWG41 250")
+  check_eq(ex("Eurowings 41, descend FL260, after it reaches FL260 make decrease speed to 240 please"),
+    "ALT EWG41 FL260 ; ATALT EWG41 FL260 SPD EWG41 240")
+  check_eq(ex("Delta 9, head down to 10,000 feet, once you pass 13,000 on the way down slow to 260"),
+    "ALT DAL9 10000 ; ATALT DAL9 13000 SPD DAL9 260")
+  asked(ex("Delta 9, descend to 10,000 feet, once you pass 13,000 on the way up slow to 260"), "a direction not flown")
+  asked(ex("DAL9 once you pass 18000 on the way down, speed 250"), "below the level said passed on the way down")
+  -- "when/after it passes X": the waypoint's condition
+  check_eq(ex("EWG41 descend FL250, and when it passes TOLKO turn right heading 120"),
+    "ALT EWG41 FL250 ; AT EWG41 TOLKO DO HDG EWG41 120 RIGHT")
+  check_eq(ex("BEL7 climb FL270, after he passes MARSA, FL290"), "ALT BEL7 FL270 ; AT BEL7 MARSA DO ALT BEL7 FL290")
+  check_eq(ex("BEL7, once it crosses MARSA, reduce to 230 knots"), "AT BEL7 MARSA DO SPD BEL7 230")
+  asked(ex("BEL7 climb FL270, and when it passes TOLKO, FL290"), "a waypoint off the route")
+  -- an instruction with no value after a condition is asked, never dropped beside the one before
+  asked(ex("BEL7 climb FL270, after MARSA turn left"), "a turn with no heading after a waypoint")
+  asked(ex("BEL7 climb FL270, when passing FL250 reduce speed"), "a speed with no value after a level")
+  asked(ex("BEL7 climb FL270, in 2 minutes turn right"), "a turn with no heading after a wait")
+  -- a wait after "and"/"then" opens the next instruction; after a comma alone it is asked
+  check_eq(ex("BEL7 climb FL270, and after 3 minutes climb FL290"), "ALT BEL7 FL270 ; DELAY 180 ALT BEL7 FL290")
+  check_eq(ex("BEL7 turn left heading 010, then after 90 seconds back to heading 045"),
+    "HDG BEL7 10 LEFT ; DELAY 90 HDG BEL7 45")
+  check_eq(ex("BEL7 reduce 240 knots and in 2 minutes reduce 220 knots"), "SPD BEL7 240 ; DELAY 120 SPD BEL7 220")
+  asked(ex("BEL7 turn left heading 010, after 2 minutes turn right heading 045"), "a wait between two turns")
+  -- a bare speed reached that the request gave: ATSPD; one never given is asked
+  check_eq(ex("Eurowings 41, slow to 250, and once you're at 250 go down to FL200"),
+    "SPD EWG41 250 ; ATSPD EWG41 250 ALT EWG41 FL200")
+  check_eq(ex("EWG41 increase to 300 knots and after you reach 300 climb FL330"),
+    "SPD EWG41 300 ; ATSPD EWG41 300 ALT EWG41 FL330")
+  asked(ex("EWG41 increase to 300 knots and after you reach 290 climb FL330"), "a speed never given")
+  -- "as soon as" a level is reached: "once" (a hazard: the heading ran at once); "as soon as possible" no condition
+  check_eq(ex("BEL7 climb FL250, then as soon as he is level turn left heading 020"),
+    "ALT BEL7 FL250 ; ATALT BEL7 FL250 HDG BEL7 20 LEFT")
+  asked(ex("BEL7 climb FL250, then 240 knots as soon as level"), "a trailing 'as soon as level'")
+  check_eq(ex("BEL7 climb FL250 as soon as possible"), "ALT BEL7 FL250")
+  -- the airline's own name as its telephony
+  check_eq(ex("Air Transat 51, at ZEBRA increase speed to 280 knots"), "AT TSC51 ZEBRA DO SPD TSC51 280")
+end
