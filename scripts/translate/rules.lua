@@ -1927,8 +1927,10 @@ return function(intent, rule, words)
   rule { "what doing", false, prev = { 5, "@counted_from" } }
   rule { "where", "pos", next = "is are 's" }
   -- "Air Peace 7124 where you dey now", "where you are now": the addressee asked where it is, in the statement's
-  -- order (Nigerian Pidgin "dey": be)
-  rule { "where", "pos", next = "you", when = function(g, i) return g:word(i + 2, "are dey") end }
+  -- order (Nigerian Pidgin "dey": be); after a verb of staying ("stay where you are") it is no question
+  rule { "where", "pos", next = "you", when = function(g, i)
+    return g:word(i + 2, "are dey") and not g:word(i - 1, "stay stays remain remains keep keeps hold holds right just from")
+  end }
   rule { "where's wheres", "pos" }  -- ("wheres the speedbird": typed without the apostrophe)
   rule { "doing", "pos", prev = { 4, "what what's whats" } }  -- "what's klm12 doing"
   -- "what's Qantas one four one doing", "what is Velocity 923 doing": a callsign said in words of any length;

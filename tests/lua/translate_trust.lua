@@ -16512,6 +16512,8 @@ do
     "HDG KQA301 290 LEFT")
   check_eq(ex("freeze the simulation i wan look at something"), "HOLD")
   asked(ex("where you dey now"), "no aircraft named")
+  check_eq(ex("kenya three zero one, flight level three four zero, no, three five zero, stay where you are"),
+    "ALT KQA301 FL350")
   -- false starts cut off inside a word and said again; a value said again after hesitations
   check_eq(ex("arik five one two climb fli eh climb flight level two one zero"), "ALT ARA512 FL210")
   check_eq(ex("kenya three zero one turn ri uh turn right heading three six zero"), "HDG KQA301 360 RIGHT")
