@@ -1539,12 +1539,16 @@ for abbr, readings in pairs(lexicon.typed_abbreviations) do
       after_next = a.after_next and word_set(a.after_next, 1), hundreds = a.hundreds, caps_kept = a.caps_kept })
   end
 end
--- A false start cut off inside a word and said again ("descend flight le- eh descend flight level 130", "turn le uh
--- turn left heading 120", "climb fli climb flight level 210"): one to three words, a fragment of one to four letters,
--- hesitations, then the same words again and a longer word the fragment opens; the first attempt is dropped.
+-- A false start cut off inside a word and said again after a hesitation ("descend flight le- eh descend flight level
+-- 130", "turn ri uh turn right heading 120"): one to three words, a fragment of one to four letters, hesitations
+-- (lexicon.hesitations), then the same words again and a longer word the fragment opens; the first attempt is
+-- dropped.
 function G.cut_off_restarts(text)
-  local low = text:lower()
-  if not low:find("%f[%a]%a%a?%a?%a?%-?%s") then return text end
+  local low, hesitant = text:lower(), false
+  for _, h in ipairs(G.hesitation_patterns) do
+    if low:find(h.pattern) then hesitant = true break end
+  end
+  if not hesitant then return text end
   local toks = {}
   for w in text:gmatch("%S+") do toks[#toks + 1] = w end
   local function bare(k) return toks[k] and toks[k]:lower():match("^(.-)%p*$") end
@@ -1553,6 +1557,7 @@ function G.cut_off_restarts(text)
     if #frag >= 1 and #frag <= 4 and frag:match("^%a+$") and not toks[f - 1]:match("[,;:.!?]$") then
       local j = f + 1
       while G.hesitation_words[bare(j) or ""] do j = j + 1 end
+      if j == f + 1 then j = #toks + 1 end  -- (no hesitation after the fragment: no restart)
       for n = 1, math.min(3, f - 1) do
         local same = true
         for x = 0, n - 1 do

@@ -16516,6 +16516,7 @@ do
     "ALT KQA301 FL350")
   -- false starts cut off inside a word and said again; a value said again after hesitations
   check_eq(ex("arik five one two climb fli eh climb flight level two one zero"), "ALT ARA512 FL210")
+  asked(ex("arik five one two climb fli climb flight level two one zero"), "no hesitation: 'fli' unread")
   check_eq(ex("kenya three zero one turn ri uh turn right heading three six zero"), "HDG KQA301 360 RIGHT")
   check_eq(ex("overland one two zero seven turn right heading two one zero eh eh two two zero"), "HDG OLA1207 220 RIGHT")
   check_eq(ex("arik five one two reduce speed two two zero eh knots"), "SPD ARA512 220")
