@@ -1575,6 +1575,42 @@ for abbr, readings in pairs(lexicon.typed_abbreviations) do
       after_next = a.after_next and word_set(a.after_next, 1), hundreds = a.hundreds, caps_kept = a.caps_kept })
   end
 end
+-- A false start cut off inside a word and said again after a hesitation ("descend flight le- eh descend flight level
+-- 130", "turn ri uh turn right heading 120"): one to three words, a fragment of one to four letters, hesitations
+-- (lexicon.hesitations), then the same words again and a longer word the fragment opens; the first attempt is
+-- dropped.
+function G.cut_off_restarts(text)
+  local low, hesitant = text:lower(), false
+  for _, h in ipairs(G.hesitation_patterns) do
+    if low:find(h.pattern) then hesitant = true break end
+  end
+  if not hesitant then return text end
+  local toks = {}
+  for w in text:gmatch("%S+") do toks[#toks + 1] = w end
+  local function bare(k) return toks[k] and toks[k]:lower():match("^(.-)%p*$") end
+  for f = 2, #toks - 2 do
+    local frag = bare(f)
+    if #frag >= 1 and #frag <= 4 and frag:match("^%a+$") and not toks[f - 1]:match("[,;:.!?]$") then
+      local j = f + 1
+      while G.hesitation_words[bare(j) or ""] do j = j + 1 end
+      if j == f + 1 then j = #toks + 1 end  -- (no hesitation after the fragment: no restart)
+      for n = 1, math.min(3, f - 1) do
+        local same = true
+        for x = 0, n - 1 do
+          if bare(f - n + x) ~= bare(j + x) or bare(j + x) == "" then same = false break end
+        end
+        local word = bare(j + n)
+        if same and word and #word > #frag and word:sub(1, #frag) == frag then
+          local out = {}
+          for k = 1, f - n - 1 do out[#out + 1] = toks[k] end
+          for k = j, #toks do out[#out + 1] = toks[k] end
+          return G.cut_off_restarts(table.concat(out, " "))
+        end
+      end
+    end
+  end
+  return text
+end
 local function typed_abbreviations(text)
   -- (a word typed of letters alone is one of its runs of letters: with none an abbreviation, none is read)
   local typed = false
@@ -1603,7 +1639,8 @@ local function typed_abbreviations(text)
   end
   local changed = false
   for k, w in ipairs(toks) do
-    local letters, punct = w:match("^(%a+)(%p*)$")
+    -- (an apostrophe typed for a dropped letter opens the word: "'eading")
+    local letters, punct = w:match("^'?(%a+)(%p*)$")
     local readings = letters and ABBREVIATIONS[letters:lower()]
     for j = 1, readings and #readings or 0 do
       local a = readings[j]
@@ -1687,7 +1724,7 @@ local function written_forms(text, world)
   where("@", "^@%s*(%w)", "at %1")
   -- "47,5 north", "8,5 degrees east", "factor to 1,1": a decimal comma (G.decimal_comma) is the point
   where("%d,%d", "()(%d+),(%d+)()", function(b, whole, part, e) return G.decimal_comma(text, b, whole, part, e) end)
-  text = typed_abbreviations(lone_multipliers(tokens.numerals_apart(text, DIGIT_WORDS), world))
+  text = typed_abbreviations(lone_multipliers(tokens.numerals_apart(G.cut_off_restarts(text), DIGIT_WORDS), world))
   text = hyphened_types(spelled(G.spelled_letter_a(heard_forms(negated_values(G.readback_reported(readback_heard(self_corrections(G.said_but(G.cancel_corrections(unlabelled(foreign_digits(G.said_whole(text)))))))))))))
   low = text:lower()
   -- a position typed as whole degrees after the hemisphere, then minutes ("N55 50.0 W003 20.0", "S33 57

@@ -74,7 +74,9 @@ return {
         "yuh", "he's", "she's", "it's", "it'll", "they're", "they'd", "they'll", "they've", "that's",
         "there's", "here's", "what's", "let's", "who's", "where's", "how's", "that'll" },
     auxiliaries = { "be", "am", "is", "are", "was", "were", "been", "being", "have", "has", "had", "having", "do",
-        "does", "did", "doing", "done", "get", "gets", "got", "getting", "go", "goes", "going", "gonna" },
+        "does", "did", "doing", "done", "get", "gets", "got", "getting", "go", "goes", "going", "gonna",
+        -- (Nigerian Pidgin's "be": "where Arik 300 dey", "the two dey for conflict")
+        "dey" },
     modals = { "can", "could", "may", "might", "must", "shall", "should", "will", "would", "ought", "need",
         "needs", "wanna",
         -- (an obligation a report states: "X is required to cross CNR at FL120")
@@ -668,6 +670,17 @@ return {
     uhm = { word = "uh" }, ehm = { word = "uh" }, ahh = { word = "uh" }, ahm = { word = "uh" },
     -- (a French speaker's hesitation, said in English as "uh": "Swiss 77, euh, heading 240")
     euh = { word = "uh" }, heu = { word = "uh" },
+    -- French-accented English typed as heard: the h dropped ("turn left 'eading 060", "say 'eading"), the vowel
+    -- of "turn" ("tourn left"), "ze" and "zen" for "the" and "then" ("pause ze simulation"), and "height" for "eight" inside a number
+    -- said digit by digit or before "thousand"/"hundred" ("tree tree height", "descend to height thousand";
+    -- elsewhere "height" is the altitude's name and stays)
+    -- Nigerian Pidgin in a Nigerian or Ghanaian controller's English: "wan" is "want" ("i wan check something";
+    -- "dey", the verb "be", is an auxiliary)
+    wan = { word = "want", prev = "i we you dem una" },
+    eading = { word = "heading" }, tourn = { word = "turn" },
+    ze = { word = "the", caps_kept = true }, zen = { word = "then", caps_kept = true },
+    height = { { word = "eight", next = "thousand hundred" },
+               { word = "eight", prev = "zero one two three tree four fower five fife six seven eight nine niner" } },
     -- Scots words, each read as the one English word it stands for ("gie it 250 knots", "slow it tae 230", "send
     -- it intae Newcastle", "drop ROBEM fae the route", "move it back oot", "whit level's the KLM at", "the A320 wi
     -- the Lufthansa colours", "descend FL70, naw, FL80", "haud on", "nae rush", "och", "aye, take the Loganair
@@ -993,7 +1006,7 @@ return {
                restating = { "i meant", "i mean", "it is", "it's", "it was", "it should be", "should be", "is",
                              "was", "meant" } },
   self_correction = { words = { "oh", "no", "wait", "sorry", "actually", "make", "that", "i", "mean", "meant", "uh", "um",
-                                "er", "say", "again", "scratch", "corr", "hmm", "typo", "never", "mind", "nevermind",
+                                "er", "eh", "ah", "say", "again", "scratch", "corr", "hmm", "typo", "never", "mind", "nevermind",
                                 "forget", "belay", "better", "rather" },
                       -- words of an apology ("I am sorry", "I'm sorry") also part of a run between two values
                       -- (grammar.lua self_corrections: "flight level 110, I am sorry, flight level 100")
@@ -2320,7 +2333,7 @@ return {
       gauche = "left", droite = "right", ["à gauche"] = "left", ["à droite"] = "right",
       ["sur la gauche"] = "left", ["sur la droite"] = "right",
       ["niveau de vol"] = "flight level", ["vitesse verticale"] = "vertical speed",
-      ["au niveau"] = "to flight level", ["au cap"] = "heading", pieds = "feet", noeuds = "knots",
+      ["au niveau"] = "to flight level", ["au niveau de vol"] = "to flight level", ["au cap"] = "heading", pieds = "feet", noeuds = "knots",
       ["nœuds"] = "knots", ["degrés"] = "degrees", degres = "degrees", ["par minute"] = "per minute",
       ["directement"] = "direct", ["direct sur"] = "direct to", ["directement sur"] = "direct to",
       -- the experimenter's commands and courtesy ("pause s'il vous plaît", "accélère fois deux")

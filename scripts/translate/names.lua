@@ -494,6 +494,7 @@ local names = {
     { "polar", "PAC" },
     { "flair", "FLE" },
     { "cargojet", "CJT" },
+    { "pasco", "PCO" },  -- (Pacific Coastal Airlines, Canada)
     { "eagle flight", "EGF" },  -- (American Eagle's ICAO telephony)
     -- airlines of Africa: ICAO telephony, and the airline's own name where controllers there say it ("Arik
     -- 512", "Air Peace 301", "Cote d'Ivoire 701")
@@ -501,6 +502,9 @@ local names = {
     { "arik air", "ARA" },
     { "peace bird", "APK" },
     { "air peace", "APK" },
+    { "overland", "OLA" },  -- (Overland Airways, Nigeria)
+    { "max air", "NGL" },  -- (Max Air, Nigeria)
+    { "aeroline", "NIG" },  -- (Aero Contractors, Nigeria)
     { "cote divoire", "VRE" },
     { "cote d'ivoire", "VRE" },
     { "air cote divoire", "VRE" },

@@ -721,6 +721,11 @@ return function(intent, rule, words)
   -- (lexicon.informal_value_verbs) with a speed's unit or "Mach" within five words after it is a speed; with no
   -- unit ("bump to 280") it names no value's kind and stays unread
   rule { "@informal_value_verbs", "spd", near = { 5, "@speed_units mach" } }
+  -- "bump it up to times eight", "crank things up to times 4": the run ("it", "things") sped up by a factor said
+  -- after "times", no aircraft named (as "speed it up to times 5")
+  rule { "@informal_value_verbs", "dtmult", next = "it things", near = { 5, "times" }, when = function(g, i)
+    return g:word(i + 2, "up") and not g:has_ref(1, #g.t + 1, "aircraft")
+  end }
   -- "and give it 280 knots": a speed given to the aircraft
   rule { "give", "spd", next = "it him her them", near = { 4, "@speed_units" } }
   -- "increase the level to FL130", "reduce your level to FL070": the level named straight after the verb
@@ -1962,6 +1967,11 @@ return function(intent, rule, words)
   -- value an amount is counted from (the present one), no question of the aircraft's state
   rule { "what doing", false, prev = { 5, "@counted_from" } }
   rule { "where", "pos", next = "is are 's" }
+  -- "Air Peace 7124 where you dey now", "where you are now": the addressee asked where it is, in the statement's
+  -- order (Nigerian Pidgin "dey": be); after a verb of staying ("stay where you are") it is no question
+  rule { "where", "pos", next = "you", when = function(g, i)
+    return g:word(i + 2, "are dey") and not g:word(i - 1, "stay stays remain remains keep keeps hold holds right just from")
+  end }
   rule { "where's wheres", "pos" }  -- ("wheres the speedbird": typed without the apostrophe)
   rule { "doing", "pos", prev = { 4, "what what's whats" } }  -- "what's klm12 doing"
   -- "what's Qantas one four one doing", "what is Velocity 923 doing": a callsign said in words of any length;
@@ -2289,7 +2299,14 @@ return function(intent, rule, words)
     return measured and (g.t[k] == nil or (g.t[k].kind == "punct" and k == #g.t))
   end }
   -- (the measure asked by its other names: "what height is it at?", "the Dreamliner, what's its Mach number?")
-  rule { "what how know", "pos", near = { 4, "altitude speed heading position level alt lvl hdg spd height mach" } }
+  -- ("you know" with no auxiliary before it is the spoken filler, "Air Peace 7124 you know, turn left heading
+  -- 190", "you know what, climb FL150": no question; "do you know your heading" asks)
+  rule { "what how know", "pos", near = { 4, "altitude speed heading position level alt lvl hdg spd height mach" },
+    when = function(g, i)
+      local k = g:word(i, "what") and i - 1 or i
+      return not (g:word(k, "know") and g:word(k - 1, "you ya")
+        and not g:word(k - 2, "do does did don't doesn't didn't can could would will"))
+    end }
   -- "what's AC004's current FL": the level flown now, "current" or "present" straight before the abbreviation
   rule { "what", "pos", when = function(g, i)
     local k = g:find_word(i + 1, i + 5, "current present")

@@ -13698,7 +13698,8 @@ do
   check_eq(ex("KLM12, eh, AEA21 I mean, climb FL300"), "ALT AEA21 FL300")
   check_eq(ex("Lufthansa, ehm, Transavia 5QK I mean, reduce 250"), "SPD TRA5QK 250")
   check_eq(ex("KLM12 reduce 230, eh, 220 I mean, and climb FL300"), "SPD KLM12 220 ; ALT KLM12 FL300")
-  check_eq(ex("KLM12 reduce 230, eh, 220 I mean"), "ASK I have SPD KLM12 230. What does '220' mean?")
+  -- ("eh" is a hesitation as "uh" is: the value said after it in the same form takes back the first)
+  check_eq(ex("KLM12 reduce 230, eh, 220 I mean"), "SPD KLM12 220")
   check_eq(ex("KLM12 heading 250, nee"), "ASK You said 'no' with nothing after it. What is the corrected instruction?")
   asked(ex("KLM12 climb FL300, eh, heading 250 I mean, thanks"), "instead or as well")
 end
@@ -16695,4 +16696,58 @@ do
   check_eq(ex("BEL7 climb FL250 as soon as possible"), "ALT BEL7 FL250")
   -- the airline's own name as its telephony
   check_eq(ex("Air Transat 51, at ZEBRA increase speed to 280 knots"), "AT TSC51 ZEBRA DO SPD TSC51 280")
+end
+  -- f176 (cycle 57): speech transcripts of West African and Montreal French-accented controllers
+  local _, ex = scene({ "CRE APK7015 B738 6.90 3.60 210 FL140 270", "CRE ARA512 B738 6.30 2.90 060 FL190 250",
+    "CRE OLA1207 AT72 6.75 3.70 230 6000 200", "CRE NGL1409 B734 10.20 7.60 200 FL220 290",
+    "CRE NIG342 DH8D 9.15 7.40 100 7000 210", "CRE KQA301 B788 5.40 0.90 340 FL350 280" })
+  -- "you know" (no auxiliary before it), "eh", "I mean": fillers, never a question of the aircraft's state
+  check_eq(ex("arik five one two you know eh turn right heading zero four zero"), "HDG ARA512 40 RIGHT")
+  check_eq(ex("overland one two zero seven, you know, reduce speed one eight zero"), "SPD OLA1207 180")
+  check_eq(ex("max air one four zero niner you know what descend flight level one eight zero"), "ALT NGL1409 FL180")
+  check_eq(ex("arik five one two do you know your heading"), "POS ARA512")
+  -- Nigerian telephony: Overland (OLA), Max Air (NGL), Aeroline (NIG, Aero Contractors)
+  check_eq(ex("remove overland one two zero seven"), "DEL OLA1207")
+  check_eq(ex("delete max air one four zero niner"), "DEL NGL1409")
+  check_eq(ex("aeroline three four two climb flight level one one zero"), "ALT NIG342 FL110")
+  asked(ex("delete overland one two zero eight"), "no such flight number")
+  -- Nigerian Pidgin and courtesy: "dey" (be), "wan" (want), "abeg" (please), "oya", "no wahala"
+  check_eq(ex("show me where max air one four zero niner dey"), "POS NGL1409")
+  check_eq(ex("kenya three zero one where you dey now"), "POS KQA301")
+  check_eq(ex("abeg overland one two zero seven turn left heading three three zero"), "HDG OLA1207 330 LEFT")
+  check_eq(ex("oya arik five one two descend flight level one five zero no wahala"), "ALT ARA512 FL150")
+  check_eq(ex("arik five one two and kenya three zero one dey for conflict abeg turn the kenya left heading two nine zero"),
+    "HDG KQA301 290 LEFT")
+  check_eq(ex("freeze the simulation i wan look at something"), "HOLD")
+  asked(ex("where you dey now"), "no aircraft named")
+  check_eq(ex("kenya three zero one, flight level three four zero, no, three five zero, stay where you are"),
+    "ALT KQA301 FL350")
+  -- false starts cut off inside a word and said again; a value said again after hesitations
+  check_eq(ex("arik five one two climb fli eh climb flight level two one zero"), "ALT ARA512 FL210")
+  asked(ex("arik five one two climb fli climb flight level two one zero"), "no hesitation: 'fli' unread")
+  check_eq(ex("kenya three zero one turn ri uh turn right heading three six zero"), "HDG KQA301 360 RIGHT")
+  check_eq(ex("overland one two zero seven turn right heading two one zero eh eh two two zero"), "HDG OLA1207 220 RIGHT")
+  check_eq(ex("arik five one two reduce speed two two zero eh knots"), "SPD ARA512 220")
+  -- "bump it up to times N": the run's rate, no aircraft named
+  check_eq(ex("crank it up to times four"), "DTMULT 4")
+  check_eq(ex("bump things up to times two"), "DTMULT 2")
+  check_eq(ex("arik five one two bump it up to two eight zero knots"), "SPD ARA512 280")
+  local _, fr = scene({ "CRE JZA8315 DH8D 46.20 -73.00 060 12000 240", "CRE ACA447 A320 45.45 -75.20 080 FL230 290",
+    "ADDWPT ACA447 ABNEE", "CRE TSC921 A321 44.70 -73.50 355 FL200 280" })
+  -- French-accented English typed as heard: 'eading, tourn, tree, height (eight in a number), ze, zen
+  check_eq(fr("Transat niner two one, tourn right 'eading zero tree zero"), "HDG TSC921 30 RIGHT")
+  check_eq(fr("Air Canada four four seven say 'eading"), "POS ACA447")
+  check_eq(fr("Air Canada four four seven, direct ABNEE, zen climb flight level two height zero"),
+    "DIRECT ACA447 ABNEE ; ALT ACA447 FL280")
+  check_eq(fr("Jazz eight tree one five, descend to height thousand"), "ALT JZA8315 8000")
+  check_eq(fr("Transat niner two one, descend flight level one height zero"), "ALT TSC921 FL180")
+  asked(fr("Air Canada four four height, climb flight level two four zero"), "ACA448 is not flying")
+  check_eq(fr("Jazz 8315 maintain present height"), "ALT JZA8315 12000")
+  check_eq(fr("hold ze simulation please"), "HOLD")
+  -- French words of a bilingual controller
+  check_eq(fr("Transat neuf deux un, descendez au niveau de vol un huit zéro"), "ALT TSC921 FL180")
+  -- Pacific Coastal by its telephony, Pasco (PCO)
+  local _, pc = scene({ "CRE PCO418 B190 49.05 -123.30 300 5000 200" })
+  check_eq(pc("delete pasco four one eight"), "DEL PCO418")
+  asked(pc("delete pasco four one niner"), "PCO419 is not flying")
 end
