@@ -16697,6 +16697,8 @@ do
   -- the airline's own name as its telephony
   check_eq(ex("Air Transat 51, at ZEBRA increase speed to 280 knots"), "AT TSC51 ZEBRA DO SPD TSC51 280")
 end
+
+do
   -- f176 (cycle 57): speech transcripts of West African and Montreal French-accented controllers
   local _, ex = scene({ "CRE APK7015 B738 6.90 3.60 210 FL140 270", "CRE ARA512 B738 6.30 2.90 060 FL190 250",
     "CRE OLA1207 AT72 6.75 3.70 230 6000 200", "CRE NGL1409 B734 10.20 7.60 200 FL220 290",
@@ -16733,7 +16735,7 @@ end
   check_eq(ex("bump things up to times two"), "DTMULT 2")
   check_eq(ex("arik five one two bump it up to two eight zero knots"), "SPD ARA512 280")
   local _, fr = scene({ "CRE JZA8315 DH8D 46.20 -73.00 060 12000 240", "CRE ACA447 A320 45.45 -75.20 080 FL230 290",
-    "ADDWPT ACA447 ABNEE", "CRE TSC921 A321 44.70 -73.50 355 FL200 280" })
+    "DEFWPT ABNEE 45.60 -74.90", "ADDWPT ACA447 ABNEE", "CRE TSC921 A321 44.70 -73.50 355 FL200 280" })
   -- French-accented English typed as heard: 'eading, tourn, tree, height (eight in a number), ze, zen
   check_eq(fr("Transat niner two one, tourn right 'eading zero tree zero"), "HDG TSC921 30 RIGHT")
   check_eq(fr("Air Canada four four seven say 'eading"), "POS ACA447")
