@@ -2323,7 +2323,7 @@ return {
       weiter = "continue", ["neues flugzeug"] = "create", loschen = "delete", loeschen = "delete",
       ["loschen sie"] = "delete", ["loeschen sie"] = "delete",
       -- the order of a script's steps ("Zuerst: ... Dann: ... Schliesslich FF 8 Minuten")
-      zuerst = "first", dann = "then", schliesslich = "finally", schliefslich = "finally", minuten = "minutes",
+      zuerst = "first", dann = "then", schliesslich = "finally",
       -- digits ("zwo" for two on the radio)
       eins = "one", zwo = "two", zwei = "two", drei = "three", vier = "four", funf = "five", fuenf = "five",
       sechs = "six", sieben = "seven", acht = "eight", neun = "nine", hundert = "hundred", tausend = "thousand",
