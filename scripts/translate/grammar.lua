@@ -12897,7 +12897,7 @@ local ANSWER_LABELS = { "^%s*[Qq]%d%d?%a?%)?%s*[Aa]nswer%s*[:.%-]%s*", "^%s*[Qq]
   "^%s*[Aa]nswer%s*[:.%-]%s+", "^%s*[Qq]%d%d?%a?[:)]%s+" }
 -- A step's marker ("Step 1:", "step two", "1.", "2)", "3:", "4 -", "(5)"), its number captured; a letter
 -- follows it
-local STEP_MARKERS = { "^[Ss]tep%s*(%w+)%s*[:.)%-]?%s+", "^(%d%d?)[.):]%s+", "^(%d%d?)%s+%-%s+", "^%((%d%d?)%)%s+" }
+local STEP_MARKERS = { "^[Ss]tep%s*(%w+)%s*[:.),%-]?%s+", "^(%d%d?)[.):]%s+", "^(%d%d?)%s+%-%s+", "^%((%d%d?)%)%s+" }
 local STEP_WORDS = { one = 1, two = 2, three = 3, four = 4, five = 5, six = 6, seven = 7, eight = 8, nine = 9 }
 local function step_marker(text, at)
   for _, p in ipairs(STEP_MARKERS) do
@@ -12920,7 +12920,18 @@ local function numbered_steps(text)
   end
   local first = text:find("%S")
   local n, e = step_marker(text, first or 1)
-  if not n then return text end
+  -- ("Good morning. For the first run please: 1) switch on ..., 2) ...", "Experiment B, Basel: 1. ... 2. ...",
+  -- "Run 2 of the Alpine series. (1) ...; (2) ...": a list counted from 1 after a label or a remark ending in a
+  -- colon or full stop; the words before it stay a sentence of their own, read as they are)
+  local lead = ""
+  if not n then
+    n = G.list_after_lead(text)
+    if not n then return text end
+    lead, text = text:sub(1, n - 1):gsub("[%s:;]+$", ""), text:sub(n)
+    lead = lead:find("[.!?]$") and lead .. " " or lead .. ". "
+    first = 1
+    n, e = step_marker(text, 1)
+  end
   -- (a protocol's step named by the word, "Step 7: ...", "step 4 - ...", "Step 6a: ...", or a punctuated number
   -- before an instruction, "7: set ...", may open the text at any number: the label is set apart whole and the
   -- count goes on from it; otherwise a number other than 1 is a value)
@@ -12948,7 +12959,28 @@ local function numbered_steps(text)
   -- (one step alone marked with no punctuation, "step 1 second", is no list: the words stay)
   if #parts == 0 and not punctuated and not labelled then return text end
   parts[#parts + 1] = text:sub(from)
-  return table.concat(parts, ". ")
+  return lead .. table.concat(parts, ". ")
+end
+-- The position of a list's first marker ("1)", "(1)", "1.", "Step 1:", "step one,") after words that end in a
+-- colon, full stop or semicolon, when the marker of step 2 follows it; nil when there is none.
+function G.list_after_lead(text)
+  local at = 1
+  while true do
+    local b = text:find("[:.;]%s+%S", at)
+    if not b then return nil end
+    local m0 = text:find("%S", b + 1)
+    local n, e = step_marker(text, m0)
+    if n == 1 then
+      local x = e + 1
+      while true do
+        local c = text:find("[%s,;]%S", x)
+        if not c then break end
+        if step_marker(text, c + 1) == 2 then return m0 end
+        x = c + 1
+      end
+    end
+    at = b + 1
+  end
 end
 -- The translation of a clearance quoted whole in double quotes that the words outside name to be given again
 -- (lexicon.quoted_clearance), else nil. Outside, the words hold no value or word in capitals but a callsign (an
@@ -13117,6 +13149,29 @@ function G.spoken_zeros(text)
   return out and table.concat(out, " ") or text
 end
 
+-- "then FF 10 min and HOLD", "fast-forward 8 minutes, then hold", "run 15 minutes and hold": a hold joined by
+-- "and"/"then" to a fast-forward's time (FF, fast-forward, fast forward, fast-time; the time with its unit) is
+-- the simulation's pause after it, said as "pause"; any other "hold" stays as said.
+function G.hold_after_ff(text)
+  if not text:find("[Hh][Oo][Ll][Dd]") then return text end
+  return (text:gsub("()(%d+%.?%d*%s*%a+)(%s*,?%s+)(%a+)(%s+)([Hh][Oo][Ll][Dd])(%f[%A])",
+    function(at, time, sep, join, sp, hold, tail)
+      local j = join:lower()
+      local unit = time:lower():match("%a+$")
+      if not (j == "and" or j == "then") or not G.time_units[unit] then return nil end
+      local before = text:sub(math.max(1, at - 40), at - 1):lower()
+      local clause = (before:match("[^.;,]*$") or before):gsub("%f[%a]for%s*$", "")
+      if not (clause:find("%f[%a]ff%s*$") or clause:find("forward%s*$") or clause:find("fast%-time%s*$")
+          or clause:find("fast time%s*$") or clause:find("%f[%a]run%s*$")) then
+        return nil
+      end
+      return time .. sep .. join .. sp .. (hold == "HOLD" and "PAUSE" or "pause") .. tail
+    end))
+end
+G.clock_commands = { HOLD = true, OP = true, FF = true, DTMULT = true }
+G.time_units = { s = true, sec = true, secs = true, second = true, seconds = true, min = true, mins = true,
+  minute = true, minutes = true, h = true, hr = true, hrs = true, hour = true, hours = true }
+
 function M.translate(text, world)
   local said = text
   world = world or {}
@@ -13125,7 +13180,7 @@ function M.translate(text, world)
   local quoted = M.quoted_clearance(text, world)
   if quoted then return quoted end
   if text:find("\xC3", 1, true) then text = text:gsub("[\xC3][\x80-\xBF]", lexicon.accents) end  -- (UTF-8 Latin-1 letters)
-  text = G.id_label(numbered_steps(G.spoken_zeros(G.number_words_apart(text))), world)
+  text = G.id_label(G.hold_after_ff(numbered_steps(G.spoken_zeros(G.number_words_apart(text)))), world)
   -- ("climb to 10 km", "descend to 7.5 km": a level in kilometres straight after the vertical verb, as metres)
   if text:find("km", 1, true) then
     for _, verb in ipairs({ "[Cc]limbs?%s+to", "[Cc]limbs?", "[Dd]escends?%s+to", "[Dd]escends?" }) do
@@ -13530,10 +13585,15 @@ function M.translate(text, world)
   if #g.out == 0 and note then return { commands = {}, note = note } end
   if #g.out == 0 then return { commands = {}, ask = UNDERSTOOD } end
   -- a command said twice in one request ("send the KLM direct to SPY ... add SPY and then go direct to it")
-  -- is one clearance
-  local out, seen = {}, {}
+  -- is one clearance; a clock's command (HOLD, OP, FF, DTMULT) said again after another clock command changed the
+  -- run ("pause; ...; fast-forward 8 minutes; pause again") is a second one, in its order
+  local out, seen, clock = {}, {}, 0
   for _, line in ipairs(g.out) do
-    if not seen[line] then out[#out + 1], seen[line] = line, true end
+    local clocked = G.clock_commands[line:match("^%u+")]
+    if not seen[line] or (clocked and seen[line] ~= clock) then
+      if clocked and seen[line] ~= clock then clock = clock + 1 end
+      out[#out + 1], seen[line] = line, clocked and clock or true
+    end
   end
   return { commands = out, note = note, confirm_first = g.confirm_first }
 end
@@ -13572,9 +13632,63 @@ function M.translate(text, world)
     return { commands = {}, ask = string.format("Part of the request was not heard ('%s'). Please say it again.",
       unheard) }
   end
+  local first = G.said_first(text, world or {})
+  if first then return first end
   local r = M.read_heard(text, world)
   if not r.ask then return r end
   return M.typos.reread(text, world or {}, r, M.read_typed)
+end
+
+-- "Create 10 random A320s at FL300; set seed 42 first so that the run is repeatable", "fast-forward 5 minutes,
+-- but first pause the simulation": the last clause (after a semicolon, comma, "and" or "but") marked "first" (its
+-- last word, before a purpose "so"/"to"/"because" or the end, or "first" opening it) runs before the words before
+-- it. Read apart, when the clause alone gives only commands to the simulation (no aircraft of the fleet, no
+-- creation) and the words before it give commands: those first, then the rest; nil otherwise (the request is
+-- read whole, its commands for aircraft sent at once).
+function G.said_first(text, world)
+  local low = text:lower()
+  if not low:find("first", 1, true) then return nil end
+  local cut, clause
+  for b, sep, body in low:gmatch("()([;,]%s*)([^;,]+)$") do
+    cut, clause = b, body
+  end
+  if not cut then
+    local b, body = low:match("()%s+but%s+(first%s.+)$")
+    cut, clause = b, body
+  end
+  if not cut then return nil end
+  local raw = text:sub(cut):gsub("^[;,]?%s*", "")
+  local body = raw:gsub("^[Aa]nd%s+", ""):gsub("^[Bb]ut%s+", "")
+  local inner
+  if body:lower():find("^first[%s,]") then
+    inner = body:gsub("^%a+,?%s+", "")
+  else
+    local head, tail = body:match("^(.-)%s+[Ff]irst%s*([%.!]?%s*)$")
+    if not head then head, tail = body:match("^(.-)%s+[Ff]irst(%s+[Ss]o%s.*)$") end
+    if not head then head, tail = body:match("^(.-)%s+[Ff]irst(%s+[Bb]ecause%s.*)$") end
+    if not head then head, tail = body:match("^(.-)%s+[Ff]irst(%s+to%s.*)$") end
+    if not head then return nil end
+    inner = head .. tail
+  end
+  local rest = text:sub(1, cut - 1):gsub("%s+[Bb]ut%s*$", ""):gsub("[%s,;]+$", "")
+  if not rest:find("%a") or not inner:find("%a") then return nil end
+  local fleet = {}
+  for _, a in ipairs(world.aircraft or {}) do fleet[(a.id or ""):upper()] = true end
+  local r1 = M.read_heard(inner, world)
+  if r1.ask or #(r1.commands or {}) == 0 then return nil end
+  for _, c in ipairs(r1.commands) do
+    local name = c:match("^%u+")
+    if name == "CRE" or name == "MCRE" then return nil end
+    for w in c:gmatch("[^%s,;]+") do
+      if fleet[w:upper()] then return nil end
+    end
+  end
+  local r2 = M.read_heard(rest, world)
+  if r2.ask or #(r2.commands or {}) == 0 then return nil end
+  local out = {}
+  for _, c in ipairs(r1.commands) do out[#out + 1] = c end
+  for _, c in ipairs(r2.commands) do out[#out + 1] = c end
+  return { commands = out, note = r2.note or r1.note, confirm_first = r1.confirm_first or r2.confirm_first }
 end
 
 return M

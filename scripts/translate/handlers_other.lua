@@ -2541,7 +2541,19 @@ return function(H, f, compass)
     local ended = last
     for _, r in ipairs(self:route_places(b, e)) do
       local sep = r.b - 1
+      -- ("then continue PAS as before", "then continue to LFSB", ", before RIPUS": the next place of the route said
+      -- after joining words, or after "before")
+      local k = sep
+      while k >= b and (self:word(k, "then and continue continuing proceed resume to via") or (self.t[k] or {}).text == ",") do
+        k = k - 1
+      end
+      if k < sep and (self:word(k + 1, "then and") or (self.t[k + 1] or {}).text == ",") then
+        sep = k + 1
+      elseif self:word(sep, "before") and (self:word(sep - 1, "then and") or (self.t[sep - 1] or {}).text == ",") then
+        sep = sep - 1
+      end
       if not (self:word(sep, "then and") or (self.t[sep] or {}).text == ",") then return end
+      if self:word(r.e, "as") and self:word(r.e + 1, "before") then self:explain(r.e, r.e + 2) end
       if ended and not self:listed(route, r.name) then
         self:emit("ADDWPT " .. id .. " " .. r.name:upper())
       elseif not at or not route[at + 1] or route[at + 1]:upper() ~= r.name:upper() then
@@ -3432,7 +3444,23 @@ return function(H, f, compass)
       return self:need(string.format("Should %s fly directly to '%s' now (DIRECT), or is it its destination "
         .. "(DEST)?", id, self:raw(s.trig + 2, s.e)))
     end
+    -- "destination stays LSGG", "the destination remains EHAM", "destination EHAM unchanged": the destination the
+    -- aircraft has kept, no command; another airport said so is asked about
+    local kept = self:find_word(s.b, math.min(#self.t + 1, s.e + 2), "stays stay remains remain unchanged")
+    local n = #self.out
     dest_orig(self, s, "DEST", "destination")
+    if self:word(kept, "stays stay remains remain unchanged") and #self.out > n then
+      for k = #self.out, n + 1, -1 do
+        local id, apt = self.out[k]:match("^DEST (%S+) (%S+)$")
+        local now = id and self:state(id)
+        if not (now and now.dest and now.dest:upper() == apt:upper()) then
+          return self:need(string.format("%s's destination is %s. Should it change to %s, or stay as it is?", id or "?",
+            now and now.dest or "not set", apt or "?"))
+        end
+        table.remove(self.out, k)
+      end
+      self:explain(math.min(s.trig, kept), math.max(s.e, kept + 1))
+    end
   end
   function m:orig(s) dest_orig(self, s, "ORIG", "origin") end
 

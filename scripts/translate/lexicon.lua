@@ -2341,6 +2341,8 @@ return {
       ["s'il te plait"] = "please", ["accélère"] = "speed up", accelere = "speed up",
       fois = "times", supprimez = "delete", supprime = "delete", ["créez"] = "create", creez = "create",
       ["crée"] = "create",
+      -- the order of a script's steps ("D'abord ...; ensuite ...; enfin ...")
+      ["d'abord"] = "first", ensuite = "then", enfin = "finally",
     },
     -- words of `words` said the same in English or Spanish: no sign of French alone
     shared = { vire = true },
@@ -2365,6 +2367,8 @@ return {
       reduzieren = "reduce", ["reduzieren sie"] = "reduce", bitte = "please", danke = "thanks",
       weiter = "continue", ["neues flugzeug"] = "create", loschen = "delete", loeschen = "delete",
       ["loschen sie"] = "delete", ["loeschen sie"] = "delete",
+      -- the order of a script's steps ("Zuerst: ... Dann: ... Schliesslich FF 8 Minuten")
+      zuerst = "first", dann = "then", schliesslich = "finally",
       -- digits ("zwo" for two on the radio)
       eins = "one", zwo = "two", zwei = "two", drei = "three", vier = "four", funf = "five", fuenf = "five",
       sechs = "six", sieben = "seven", acht = "eight", neun = "nine", hundert = "hundred", tausend = "thousand",

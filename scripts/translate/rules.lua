@@ -1828,6 +1828,14 @@ return function(intent, rule, words)
   rule { "vertical vertically", "vnav", prev = { 4, "plan route" } }  -- "follow its flight plan vertically"
   rule { "vertical", "vnav", next = "profile navigation nav" }
   rule { "route rte waypoints", "listrte", prev = { 4, "show list display what print see look where check" } }
+  -- "show me the position and the route of OAW61", "what are the position and route of DLH44": the route said
+  -- after another shown state ("position", "state", "data"), joined by "and", a verb of showing or asking
+  -- before it
+  rule { "route rte routing waypoints", "listrte", prev = { 3, "and" }, when = function(g, i)
+    local k = g:word(i - 1, "the its") and i - 2 or i - 1
+    if not g:word(k, "and") or not g:word(k - 1, "position pos state data details") then return false end
+    return g:find_word(math.max(1, k - 7), k, "show list display what print see give tell") < k
+  end }
   -- "pull up the route for the United", "bring up the flight plan of KLM12", "call up its routing": a phrasal verb
   -- of showing, "up" straight after it, before the noun
   rule { "route rte routing waypoints plan", "listrte", when = function(g, i)
@@ -2223,6 +2231,14 @@ return function(intent, rule, words)
   rule { "hold pause", "hold", when = function(g, i) return i == 1 and g.t[2] ~= nil and g.t[2].kind == "punct" end }
   rule { "hold", "hold", near = { 3, "@sim" } }
   rule { "hold", "hold", when = the_run }
+  -- "... DITON. Hold. Swiss 8 climb ...", "(1) hold; (2) ...": "hold" alone as a sentence or step of its own (a
+  -- full stop, semicolon or colon before it, a full stop or semicolon or the end after it) names no aircraft's
+  -- holding pattern
+  rule { "hold", "hold", when = function(g, i)
+    local b, e = g.t[i - 1], g.t[i + 1]
+    return (b == nil or b.kind == "punct" and (b.text == "." or b.text == ";" or b.text == ":"))
+        and (e == nil or e.kind == "punct" and (e.text == "." or e.text == ";"))
+  end }
   rule { "hold", false, when = function(g) return g:has_ref(1, #g.t + 1, "aircraft") end }
   -- "run again from pause", "out of pause": the pause is the state left, no new one
   rule { "pause hold freeze", false, prev = { 2, "from of" } }

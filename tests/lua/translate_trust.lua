@@ -16753,3 +16753,52 @@ do
   check_eq(pc("delete pasco four one eight"), "DEL PCO418")
   asked(pc("delete pasco four one niner"), "PCO419 is not flying")
 end
+-- f179 (R179: a researcher's long multi-step experiment scripts)
+do
+  local _, ex = navscene({ "CRE KLM12 A320 52 4 90 FL250 280", "ADDWPT KLM12 SPY", "ADDWPT KLM12 ARTIP",
+    "DEST KLM12 EHAM", "CRE BAW33 B744 51.5 3 270 FL330 300", "CRE DLH44 A321 51 5 180 FL200 260",
+    "ADDWPT DLH44 NIK", "ADDWPT DLH44 EKROS" }, "R179's experiment scripts")
+  if ex then
+    -- a numbered list after a label or remark: its markers are structure, never a value ("10 minutes, 4)")
+    check_eq(ex("Morning. Please do: 1) KLM12 climb FL300, 2) fast-forward 5 minutes, 3) pause."),
+      "ALT KLM12 FL300 ; FF 300 ; HOLD")
+    check_eq(ex("Schedule for the second trial: 1) BAW33 climb FL350 2) ff 12 min. 3) pause"),
+      "ALT BAW33 FL350 ; FF 720 ; HOLD")
+    check_eq(ex("Run 3: step 1, ASAS on; step 2, BAW33 descend FL310; step 3, ff 2 min; step 4, pause"),
+      "ASAS ON ; ALT BAW33 FL310 ; FF 120 ; HOLD")
+    check_eq(ex("Test series D, in this order: (1) hold; (2) DLH44 turn right 20 degrees; (3) fast-forward 6 minutes."),
+      "HOLD ; HDG DLH44 200 RIGHT ; FF 360")
+    -- a hold joined to a fast-forward is the simulation's pause; one said to an aircraft is a holding pattern
+    check_eq(ex("KLM12 climb FL300, then FF 10 min and HOLD."), "ALT KLM12 FL300 ; FF 600 ; HOLD")
+    check_eq(ex("BAW33 descend FL300, fast-forward 8 minutes, then hold"), "ALT BAW33 FL300 ; FF 480 ; HOLD")
+    check_eq(ex("KLM12 climb FL300 and run 5 minutes then hold"), "ALT KLM12 FL300 ; FF 300 ; HOLD")
+    check(not ex("KLM12 maintain FL250 for 2 minutes then hold at SPY"):find("HOLD", 1, true), "a holding pattern")
+    check(not ex("KLM12 climb FL300 and hold"):find("HOLD", 1, true), "a hold said to the aircraft")
+    -- a pause said again after the run changed is a second pause
+    check_eq(ex("pause. KLM12 climb FL300. fast-forward 2 minutes. pause again."),
+      "HOLD ; ALT KLM12 FL300 ; FF 120 ; HOLD")
+    check_eq(ex("pause, pause the simulation"), "HOLD")
+    -- a simulation's command said "first" after the others runs first
+    check_eq(ex("Create 3 random B738s at FL200, and first set seed 9 please"), "SEED 9 ; MCRE 3 B738 FL200")
+    check_eq(ex("Fast forward 5 minutes; set the seed to 7 first."), "SEED 7 ; FF 300")
+    check_eq(ex("KLM12 climb FL300, but first pause the simulation."), "HOLD ; ALT KLM12 FL300")
+    -- the position and the route shown together
+    check_eq(ex("Pause the simulation, then show me the position and the route of KLM12."),
+      "HOLD ; POS KLM12 ; LISTRTE KLM12")
+    check_eq(ex("What are the position and route of DLH44?"), "POS DLH44 ; LISTRTE DLH44")
+    -- a destination said to stay is no command; another airport said so is asked
+    check_eq(ex("KLM12: after SPY add ANDIK to the route, destination stays EHAM."), "ADDWPT KLM12 ANDIK,,,SPY")
+    check_eq(ex("KLM12 add ANDIK, the destination remains Amsterdam"), "ADDWPT KLM12 ANDIK")
+    asked(ex("KLM12 add ANDIK after SPY, destination stays LFPG"), "another destination said to stay")
+    -- the route going on after an inserted point, by its next place
+    check_eq(ex("KLM12, after SPY insert ANDIK, then continue ARTIP as before."), "ADDWPT KLM12 ANDIK,,,SPY")
+    check_eq(ex("KLM12, after SPY add ANDIK, before ARTIP"), "ADDWPT KLM12 ANDIK,,,SPY")
+    check_eq(ex("DLH44, after NIK add ANDIK, then continue to EKROS"), "ADDWPT DLH44 ANDIK,,,NIK")
+    asked(ex("KLM12, after SPY add ANDIK, then continue to EKROS"), "a place not next on the route")
+    -- the order of steps said in German or French
+    check_eq(ex("Zuerst: KLM12 climb FL300. Dann: BAW33 descend FL310. Schliesslich FF 8 Minuten."),
+      "ALT KLM12 FL300 ; ALT BAW33 FL310 ; FF 480")
+    check_eq(ex("D'abord switch on CD; ensuite KLM12 climb FL300; enfin fast-forward 10 minutes."),
+      "ASAS ON ; ALT KLM12 FL300 ; FF 600")
+  end
+end
