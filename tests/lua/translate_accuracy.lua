@@ -242,8 +242,8 @@ floors("../shared/corpora/nl2trafscript_dev.tsv", 0.98, 0.01)
 -- known name too (lexicon.waypoint_confirm: 25 rows); these rows score as asked (a navaid said by
 -- its navdata name won 5 back); a word the recogniser garbled ("December eighteen five thousand",
 -- "Fighting two seven zero") is asked about by name (lexicon.accounted: 66 rows)
--- (ten speech-recognition garbles of an airline's name before a flight number that matches, "Alton Seven Thirty
--- Five heavy", asked since cycle 57: docs/translator_trust.md)
+-- (ten speech-recognition garbles of an airline's name before a flight number that matches, "Peco Six Forty
+-- Seven", asked since cycle 57: docs/translator_trust.md)
 floors("../shared/corpora/vice_trafscript.tsv", 0.547, 0.0044)
 
 -- squawk.translate.evaluate is eval-translate's scorer: a translator that always asks is right
