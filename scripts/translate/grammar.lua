@@ -195,7 +195,9 @@ local function know_all(v, seen)
   -- only before a value replaced, lexicon.ff_ended only before a fast-forward ended, lexicon.countries only
   -- inside a callsign read, lexicon.described_places.regions only as a place that describes an aircraft,
   -- lexicon.screen_position only where an aircraft's place on the screen is read, lexicon.unheard_markers only
-  -- to ask a request again; lexicon.listener_address only where it is dropped, opening or closing a request)
+  -- to ask a request again; lexicon.listener_address only where it is dropped, opening or closing a request;
+  -- lexicon.judged_values, kept_from and speed_direction_verbs only where their pass reads them: they never make a
+  -- word said elsewhere known)
   if type(v) ~= "table" or seen[v] or v == lexicon.accounted.courtesy_phrases or v == lexicon.accounted.value_phrases
       or v == lexicon.typed_abbreviations
       or v == lexicon.aside or v == lexicon.self_correction.just_the or v == lexicon.foreign_digits or v == lexicon.foreign_hesitation_digits
@@ -210,7 +212,8 @@ local function know_all(v, seen)
       or v == lexicon.self_correction.formal_apology or v == lexicon.self_correction.described
       or v == lexicon.self_correction.judged or v == lexicon.self_correction.admitted or v == lexicon.limit_release
       or v == lexicon.countries or v == lexicon.screen_position or v == lexicon.unheard_markers
-      or v == lexicon.listener_address then
+      or v == lexicon.listener_address or v == lexicon.judged_values or v == lexicon.kept_from
+      or v == lexicon.speed_direction_verbs then
     return
   end
   seen[v] = true
@@ -5134,7 +5137,9 @@ end
 -- "reduce speed 220... no, make it 210", "descend to 26 thousand ft, sorry, 27 thousand": a value alone after
 -- the self-correction run [a, c) (after "make it" too), ending its clause, of the kind of the value said since
 -- the instruction word at p, replaces it; true when it did. Said "exactly" ("at or below FL090, sorry make it
--- exactly FL090"), it takes back the bound said before the value too (its words noted).
+-- exactly FL090"), it takes back the bound said before the value too (its words noted). self.said_again[b] is the
+-- value taken back for the one said again at b (the handlers read an amount of change corrected: "go down 1500
+-- feet... no, 2000").
 function G:value_said_again(p, a, c)
   -- ("2.5 NM, sorry, please use 4 NM": "use" and the value alone, as "make it")
   local v = (self:word(c, "it") and self:word(c - 1, "make") or self:word(c, "use")) and c + 1 or c
@@ -5150,6 +5155,8 @@ function G:value_said_again(p, a, c)
   while exact and b - 1 > p and self:word(b - 1, "or above below least most") do b = b - 1 end
   self:mark_used(b, v)
   for k = b, v - 1 do self.noted[k] = true end
+  self.said_again = self.said_again or {}
+  self.said_again[new.b] = old[1]
   return true
 end
 
@@ -10806,6 +10813,110 @@ end
 -- other than 0 (level off, on the ground), in an ALT, VS, CRE, MOVE or ZONEDH line ("descend to 9 ft", a number
 -- cut short or written with a point before three figures: "1.000"), is none an aircraft is told: asked, naming the
 -- value, its unit and the number heard for it, never issued.
+-- "DLH3 speed 250, sorry, 250 is too fast", "climb FL300... no, that's too high", "speed 250, sorry, too fast": a
+-- value judged after it is said (lexicon.judged_values: "too" and a word of its `too` list, the subject before them
+-- with only words of `between` in the way) is taken back: the value said again as the subject (the same digits) or,
+-- straight after a run of self-correction markers that follows the value, a pronoun of `pronouns` or no subject at
+-- all. When a command of self.out still carries those digits the request is asked, never issued. ("it is too high
+-- for my scenario" after a value with no marker judges the aircraft, the reason for the instruction.)
+G.value_judgement = { too = set_of(lexicon.judged_values.too), between = set_of(lexicon.judged_values.between),
+             pronouns = set_of(lexicon.judged_values.pronouns) }
+function G:value_rejected()
+  local J = self.value_judgement
+  for k = 2, #self.t - 1 do
+    if self:word(k, "too") and self.t[k + 1].kind == "word" and J.too[self.t[k + 1].text] then
+      local j = k - 1
+      while j >= 1 and self.t[j].kind == "word" and J.between[self.t[j].text] and not J.pronouns[self.t[j].text] do
+        j = j - 1
+      end
+      local judged  -- the quantity judged
+      local said = self:quantities(1, j + 1)
+      local last = said[#said]
+      local from = j + 1  -- (where the judgement opens)
+      if last and last.e == j + 1 and last.number then
+        from = last.b
+        for _, o in ipairs(said) do
+          if o.e <= last.b and o.number and o.number.digits == last.number.digits then judged = o end
+        end
+      else
+        if J.pronouns[self.words[j] or ""] then from = j end
+        local m = (self.t[j] and self.t[j].kind == "word" and J.pronouns[self.t[j].text]) and j - 1 or j
+        local marked = false
+        while m >= 1 and (self.t[m].kind == "punct" or self.t[m].filler or SC_MARKERS[self.t[m].text]
+            or self:word(m, "@correction")) do
+          marked = marked or SC_MARKERS[self.t[m].text] or self:word(m, "@correction")
+          m = m - 1
+        end
+        if marked and last and last.e == m + 1 and last.number then judged = last end
+      end
+      local digits = judged and judged.number.digits
+      for _, line in ipairs(digits and self.out or {}) do
+        if (" " .. line .. " "):find("[%s%a]" .. digits .. "%s") then
+          local e = k + 2
+          while self.t[e] and self.t[e].kind ~= "punct" do e = e + 1 end
+          return self:need(string.format("I have %s, but you said '%s' after '%s'. What should it be instead?",
+            table.concat(self.out, " ; "), (self:raw(from, e):gsub(" ([,.;:])", "%1")), self:raw(judged.b, judged.e)))
+        end
+      end
+    end
+  end
+end
+-- "DLH3 avoid FL300", "DLH3 forget about the climb to FL300", "stay clear of FL300", "hold off on the climb to FL300":
+-- a phrase of lexicon.kept_from said before an instruction word or a value (only its `between` words in the way),
+-- with no instruction word or value said before it since the aircraft named or the sentence began (after one it
+-- corrects: "climb FL300, disregard, FL310"), keeps the aircraft from what it names: when a command of self.out
+-- carries a value or a name said in its clause, the request is asked, never issued.
+-- (G.withholding.first[w]: the phrases opening with word w, their words each, longest first)
+G.withholding = { between = set_of(lexicon.kept_from.between), first = {} }
+for _, p in ipairs(lexicon.kept_from.phrases) do
+  local words = {}
+  for w in p:gmatch("%S+") do words[#words + 1] = w end
+  local list = G.withholding.first[words[1]] or {}
+  list[#list + 1] = words
+  table.sort(list, function(a, b) return #a > #b end)
+  G.withholding.first[words[1]] = list
+end
+function G:instruction_withheld()
+  local W = self.withholding
+  local out
+  for k = 1, #self.t - 1 do
+    local e
+    for _, words in ipairs(W.first[self.t[k].text] or {}) do
+      local x = k
+      for _, w in ipairs(words) do
+        if not (self.t[x] and self.t[x].kind == "word" and self.t[x].text == w) then x = nil break end
+        x = x + 1
+      end
+      if x then e = x break end
+    end
+    local n = e
+    while n and self.t[n] and self.t[n].kind == "word" and W.between[self.t[n].text] do n = n + 1 end
+    local named = n and self.t[n] and (self:intent_at(n) or (self:quantities(n, #self.t + 1)[1] or {}).b == n)
+    -- (nothing said before it that it could correct)
+    local b = k - 1
+    while named and b >= 1 and not (self.t[b].kind == "punct" and self.t[b].text ~= ",") and not self:has_ref(b, b + 1, "aircraft") do
+      if self:intent_at(b) or #self:quantities(b, b + 1) > 0 then named = false end
+      b = b - 1
+    end
+    if named then
+      out = out or " " .. table.concat(self.out, " ; "):upper() .. " "
+      local c = n
+      while self.t[c] and self.t[c].kind ~= "punct" do c = c + 1 end
+      local carried = false
+      for _, q in ipairs(self:quantities(n, c)) do
+        local d = q.number and q.number.digits
+        carried = carried or (d ~= nil and out:find("[%s%a]" .. d .. "[%s;]") ~= nil)
+      end
+      for _, r in ipairs(self:refs_in(n, c, "waypoint")) do
+        carried = carried or out:find(" " .. r.name:upper() .. " ", 1, true) ~= nil
+      end
+      if carried then
+        return self:need(string.format("I have %s, but you said '%s' before it. Should it be flown? Please say "
+          .. "the instruction again.", table.concat(self.out, " ; "), (self:raw(k, c):gsub(" ([,.;:])", "%1"))))
+      end
+    end
+  end
+end
 G.least_told = 100  -- [ft], [ft/min]
 G.told_values = { alt = { "an altitude", "ft" }, vs = { "a vertical speed", "ft/min" },
                   zone = { "a protected zone half height", "ft" } }
@@ -13554,6 +13665,8 @@ function M.translate(text, world)
   if not g.ask then g:setting_question() end
   if not g.ask then g:short_level() end
   if not g.ask then g:implausible_values() end
+  if not g.ask and #g.out > 0 then g:value_rejected() end
+  if not g.ask and #g.out > 0 then g:instruction_withheld() end
   if not g.ask and not g.leftover and #g.out > 0 then g:clock_verb_left() end
   if not g.ask and not g.leftover then g:unknown_names() end
   if not g.ask and not g.leftover then g:clock_remark() end

@@ -3441,8 +3441,18 @@ function m:airline_unsaid(r)
     if self.t[x].kind ~= "word" or self.t[x].number_word or L.phonetic[self.t[x].text] then break end
     said = said .. self.t[x].text
   end
-  local prefix = airline_digits(r.name)
+  local _, score = squawk.translate.best_match(said, m.airline_sounds(airline_digits(r.name)))
+  if said == "" or score > L.callsign_confirm.airline then return nil end
+  return self:raw(k, r.e)
+end
+
+-- The ways airline `prefix` (an ICAO prefix) is said, lower case with no spaces: the prefix itself, its telephony
+-- and common names and the names of the brands it flies under ("dlh", "lufthansa", ...).
+local sounds_of = {}  -- (m.airline_sounds' lists, by prefix)
+function m.airline_sounds(prefix)
+  if sounds_of[prefix] then return sounds_of[prefix] end
   local of = { prefix:lower() }
+  sounds_of[prefix] = of
   airline_names()
   for name, icao in pairs(AIRLINE_NAMES) do
     if icao == prefix then of[#of + 1] = name:gsub(" ", "") end
@@ -3452,9 +3462,33 @@ function m:airline_unsaid(r)
       if code == prefix then of[#of + 1] = name:gsub(" ", "") end
     end
   end
-  local _, score = squawk.translate.best_match(said, of)
-  if said == "" or score > L.callsign_confirm.airline then return nil end
-  return self:raw(k, r.e)
+  return of
+end
+
+-- The words of spoken aircraft reference r when the words said before its flight number hold one squawk does not
+-- know (no English of the lexicon, no name) and no run of them from their start up to that word sounds like r's
+-- airline (m.airline_sounds, squawk.translate.best_match at lexicon.callsign_confirm.airline or better, the bar a
+-- callsign heard inexactly is taken at): "Foobar 3" or
+-- "zorbax 400" with DLH3 or DLH400 flying, matched by the flight number alone. The word stands where the airline's
+-- name would, so it may name another airline, one not flying: confirmed, never taken. A slip of the airline's own
+-- name ("Lufthanza 3", "Hansa 3") and known words before the number ("the", "okay") are read as said. nil
+-- otherwise.
+function m:airline_unknown(r)
+  if not r.spoken or r.heard or not r.exists or not r.name:match("^%a%a%a?%d") then return nil end
+  local e, unknown = r.b, nil
+  while e < r.e and self.t[e].kind == "word" and not self.t[e].number_word and not L.phonetic[self.t[e].text] do
+    if not unknown and not self:known_word(e) then unknown = e end
+    e = e + 1
+  end
+  if not unknown then return nil end
+  local of = m.airline_sounds(airline_digits(r.name))
+  for b = r.b, unknown do
+    local said = ""
+    for x = b, e - 1 do said = said .. self.t[x].text end
+    local _, score = squawk.translate.best_match(said, of)
+    if score and score >= L.callsign_confirm.airline then return nil end
+  end
+  return self:raw(r.b, r.e)
 end
 
 -- A spoken callsign matched to an aircraft whose airline or digits differ
@@ -3466,7 +3500,8 @@ function m:confirm_callsigns(s)
   for _, r in ipairs(self:refs_in(s.b, s.e, "aircraft")) do
     local h = r.heard
     local confirmed = (self.world.confirmed or {})[r.name]
-    local part = not confirmed and (self:telephony_part_only(r) or self:homophone_closing(r) or self:number_only(r))
+    local part = not confirmed and (self:telephony_part_only(r) or self:homophone_closing(r) or self:number_only(r)
+      or self:airline_unknown(r))
     if part then
       self.confirm = self.confirm or { id = r.name, heard = part }
       self:need(string.format("Did you mean %s? I heard '%s'.", r.name, part))

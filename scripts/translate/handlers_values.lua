@@ -539,19 +539,34 @@ return function(H, f, wrap, compass)
     -- flight level is a level: "FL240 and hold its current heading", "FL130, lower by the time ...")
     -- ("3000 feet from where it is now": a change from the present level)
     local from_here = self:find_word(s.trig, s.e, "from")
-    local relative = not fl and (q.by or self:word_in(s.trig, s.e, "@relative")
+    -- True when value o is said as an amount of change by the words beside it
+    local function stepped(o)
+      return o.by
+        -- "down 2000 feet", "up 1000 ft", "drop 4000 feet": an amount in feet straight after the adverb, or
+        -- after the everyday verb "drop" (no "to"), is a change
+        or (self:word(o.b - 1, "up down drop") and self:word(o.e - 1, "@feet"))
+        -- "1000 feet lower", "2000 ft up": an amount in feet straight before the comparative is a change
+        or (self:word(o.e, "higher lower up down") and self:word(o.e - 1, "@feet"))
+        -- "another thousand feet", "a further 500 ft", "an extra 1000 ft", "climb more 1000 feet" (Portuguese
+        -- "mais"): one more step of that size
+        or self:word(o.b - 1, "another further extra more")
+        -- "go down of 2000 feet", "climb of 1000" (G:change_of)
+        or self:change_of(o)
+    end
+    -- the value a correction takes back when q, said after it with no "to" and no flight level, corrects it
+    -- ("go down 1500 feet... eh, no, 2000"; "..., no, to 9000 feet" and "..., no, FL200" name a level)
+    -- (or the value a run of self-correction markers took back: G:value_said_again)
+    local corr = not fl and not q.to and self:last_correction(s)
+    local taken_back = not fl and not q.to and (self.said_again or {})[q.b] or nil
+    for _, o in ipairs(corr and q.b > corr and qs or {}) do
+      if o.e <= corr and (o.kind == "alt" or o.kind == "plain") then taken_back = o end
+    end
+    if taken_back and taken_back.fl then taken_back = nil end
+    local relative = not fl and (stepped(q) or self:word_in(s.trig, s.e, "@relative")
       or (from_here < s.e and self:word(from_here + 1, "where"))
-      -- "down 2000 feet", "up 1000 ft", "drop 4000 feet": an amount in feet straight after the adverb, or
-      -- after the everyday verb "drop" (no "to"), is a change
-      or (self:word(q.b - 1, "up down drop") and self:word(q.e - 1, "@feet"))
-      -- "1000 feet lower", "2000 ft up": an amount in feet straight before the comparative is a change
-      or (self:word(q.e, "higher lower up down") and self:word(q.e - 1, "@feet"))
-      -- "another thousand feet", "a further 500 ft", "an extra 1000 ft", "climb more 1000 feet" (Portuguese "mais"):
-      -- one more step of that size
-      or self:word(q.b - 1, "another further extra more")
-      -- "go down of 2000 feet", "climb of 1000" (G:change_of); a value said after a correction of such an amount,
-      -- "go down of 1500 feet, no, 2000", corrects the amount (never after "to": "..., no, to 9000 feet")
-      or self:change_of(q) or self:change_of_corrected(q, s))
+      -- a value said after a correction of an amount of change corrects the amount: "go down 1500 feet... no,
+      -- 2000" and "go down of 1500 feet, no, 2000" are 2000 ft down, never to 2000 ft
+      or (taken_back ~= nil and stepped(taken_back)) or self:change_of_corrected(q, s))
     -- ("climb more 37000 feet": a step of 10000 ft or more after "more" or "extra" may be the level itself, "climb
     -- more, to 37000": asked)
     -- (nor is a step of 10000 ft or more said with "of", "go down of 12000 feet": G:change_of)
@@ -577,8 +592,10 @@ return function(H, f, wrap, compass)
     -- "descend 3000 ft" or "descend two thousand feet" right after the verb, from higher up: to or by?
     -- Both read as descents, typed or spoken.
     -- (an altitude said with the altimeter setting it is read on, "3000 feet QNH 1008", is a level)
-    if not relative and now and not q.to and not fl and dir ~= 0 and q.kind == "alt" and q.b == s.trig + 1
-        and self:word(q.e - 1, "@feet") and not self:word_in(q.e, #self.t + 1, "@altimeter") then
+    -- (a value said after a correction of one said so, "descend 1500 feet, no, 2000", is asked as it is)
+    local function bare_feet(o) return o.kind == "alt" and o.b == s.trig + 1 and self:word(o.e - 1, "@feet") end
+    if not relative and now and not q.to and not fl and dir ~= 0 and (bare_feet(q) or taken_back and bare_feet(taken_back))
+        and not self:word_in(q.e, #self.t + 1, "@altimeter") then
       local cur = now.alt_ft or 0
       local by_fits = (dir < 0 and cur - ft >= 0) or (dir > 0 and cur + ft <= 60000)
       local to_fits = (dir < 0 and ft < cur - 50) or (dir > 0 and ft > cur + 50)
@@ -776,10 +793,65 @@ return function(H, f, wrap, compass)
           return self:need("What speed should " .. id .. " fly? I heard " .. self:raw(q.b, q.e) .. ".")
         end
         spd = f.int(r)
+        -- A direction said with the value, no "to" before it ("reduce 40 knots" flying 280 kt is 240 kt; "reduce
+        -- 40", "increase speed 40" asked): m:speed_change_read.
+        -- An aircraft flying 200 kt or more is given no speed under 100 kt ("reduce to 40 knots"): asked.
+        local change, both = self:speed_change_read(s, id, q, r, dir, converted)
+        local heard = self:raw(math.max(s.trig or q.b, q.b - 2), q.e)
+        if both then
+          return self:need(string.format("%s flies %s kt: should it fly %s kt, or %s kt %s? I heard '%s'.", id,
+            f.int(a.cas_kt), f.int(r), f.int(q.value), dir < 0 and "slower" or "faster", heard))
+        elseif change == false or (change == nil and a and (a.cas_kt or 0) >= 200 and r < 100 and not converted) then
+          return self:need(string.format("What speed should %s fly? It flies %s kt, and I heard '%s'.", id,
+            f.int(a.cas_kt), heard))
+        elseif change then
+          spd = f.int(change)
+          self:as_change(q)
+        end
       end
       self:emit("SPD " .. id .. " " .. spd)
       self.last_cond = "ATSPD " .. id .. " " .. spd
     end
+  end
+
+  -- How speed value q said in segment s for aircraft id with direction dir (-1 slower, 1 faster, 0 none) is read, r its
+  -- reading as the new speed (kt): nil to fly r, a speed (kt) to fly r read as a change, false to ask (see
+  -- m:speed), with true second when both readings hold. `converted`: the value was said in another unit (always a
+  -- speed). The speed is flyable at 100 kt or more, or by an aircraft flying under 200 kt; the change is one under
+  -- 100 kt that leaves 40 to 700 kt (100 kt or more at 200 kt or more). A flyable speed the way said is flown (asked
+  -- under 100 kt when the change fits too); otherwise the change is flown with its unit said, asked without it;
+  -- with no change that fits, a flyable speed against the verb is flown as said, any other asked.
+  -- Read so only when the direction is the instruction's own verb, said from its word up to the value
+  -- (lexicon.speed_direction_verbs: "reduce 40 knots", "speed up 50 knots"; "set speed 280, it's catching up" says
+  -- none), and when no condition is said in the request (lexicon.condition, level_condition, "then", "until": "when
+  -- passing FL300 reduce 280" is flown from a speed not yet known).
+  function m:speed_change_read(s, id, q, r, dir, converted)
+    local a = self:state(id)
+    if dir == 0 or q.to or converted or not a or a.sel_mach or (a.cas_kt or 0) <= 0 or q.kind ~= "speed"
+        and q.kind ~= "plain" then
+      return nil
+    end
+    if not (s.trig and s.trig < q.b and self:word_in(s.trig, q.b, "@speed_direction_verbs"))
+        or self:word_in(1, #self.t + 1, "@condition @level_condition then until till") then
+      return nil
+    end
+    local fast = a.cas_kt >= 200
+    local flyable = r >= 100 or not fast
+    local goes = dir < 0 and r < a.cas_kt or dir > 0 and r > a.cas_kt
+    local to_kt = a.cas_kt + dir * q.value
+    local as_change = q.value < 100 and to_kt >= 40 and to_kt <= 700 and (to_kt >= 100 or not fast)
+    if flyable and goes then
+      if as_change and r < 100 then return false, true end
+      return nil
+    end
+    if as_change then
+      if q.kind == "speed" then return to_kt end
+      return false, true
+    end
+    -- (a speed flyable but against the verb with no change it could be, "increase speed 220" flying 260: the speed
+    -- said, the verb said loosely)
+    if flyable then return nil end
+    return false
   end
 
   function m:heading(s)

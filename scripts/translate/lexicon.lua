@@ -759,6 +759,10 @@ return {
   -- words saying an instruction runs at once, closing a condition said after the instruction before ("descend FL320
   -- once it has slowed to 260 knots, and reduce to 260 knots now": grammar.lua G:condition_closed)
   at_once_words = { "now", "immediately", "already" },
+  -- the words of a speed instruction that give its direction, said between its word and its value ("reduce 40
+  -- knots", "speed up 50 knots", "slow down 30"): handlers_values.lua m:speed_change_read
+  speed_direction_verbs = { "reduce", "reducing", "decrease", "decreasing", "increase", "increasing", "accelerate",
+                            "decelerate", "slow", "slowing", "add", "up", "down", "faster", "slower" },
   -- verbs that make a bare number in a condition a speed ("once AFR1023 slows to 250")
   speed_verbs = { "slows", "slowed", "slow", "accelerates", "accelerated", "decelerates", "decelerated" },
   -- words before a level that make the next instruction wait for it
@@ -903,6 +907,26 @@ return {
   -- said after a value taken back by a self-correction and said again, the judgement that opens the reason it is
   -- taken back ("2.5 NM, sorry, 2.5 is too small, please use 4 NM": grammar.lua G:ruled_out_reason_end)
   ruled_out_verbs = { "is", "was", "would", "will", "seems", "looks" },
+  -- phrases that keep an aircraft from what they are said before ("avoid FL300", "stay clear of FL300") or take it
+  -- back ("forget about the climb to FL300", "disregard the climb to FL300", "hold off on the climb"), and the words
+  -- that may stand between them and it (`between`): said before an instruction word or a value that a command
+  -- carries, with no instruction said before them that they could correct, they are asked (grammar.lua
+  -- G:instruction_withheld)
+  kept_from = { phrases = { "avoid", "forget", "forget about", "ignore", "disregard", "belay", "scrap", "never mind",
+                              "stay away from", "keep away from", "stay clear of", "keep clear of", "hold off",
+                              "hold off on", "refrain from" },
+                  between = { "about", "on", "the", "that", "this", "your", "its", "his", "her", "their", "any", "of",
+                              "from", "with", "a", "an" } },
+  -- a value judged after it is said ("speed 250, sorry, 250 is too fast", "..., no, that's way too high"): "too",
+  -- then one of `too`; the words that may stand between the subject and "too" (`between`); the subjects that judge
+  -- the value said before only straight after a marker of lexicon.self_correction (`pronouns`; the value itself
+  -- said again judges it anywhere): grammar.lua G:value_rejected
+  judged_values = { too = { "fast", "slow", "high", "low", "much", "little", "big", "small", "far", "close", "steep",
+                           "early", "late", "quick", "sharp", "tight", "wide", "large", "short", "long" },
+                   between = { "is", "was", "would", "will", "be", "seems", "looks", "sounds", "'s", "way", "far", "much",
+                               "a", "bit", "little", "slightly", "just", "rather", "quite", "definitely", "probably",
+                               "really", "still", "maybe", "kind", "of", "i", "think" },
+                   pronouns = { "that", "that's", "thats", "this", "it", "it's", "its" } },
   self_correction_reason_openers = { "it's", "that's", "its", "it", "that", "he's", "she's", "they're" },
   -- who speaks, said as a label before the request ("instructor: KLM101 turn right", "instructor here:
   -- create ...", "sim op: ..."): the label is no part of the request

@@ -112,6 +112,14 @@ local names = {
     { "envoy", "ENY" },
     { "endeavor", "EDV" },
     { "endeavour", "EDV" },
+    -- telephony a callsign is said with in the rounds (an unknown word before a flight number is asked about:
+    -- translate/handlers.lua m:airline_unknown)
+    { "pakblue", "ABQ" },  -- (Airblue)
+    { "eurotrans", "BCS" },  -- (European Air Transport Leipzig)
+    { "bristow", "BHL" },
+    { "aseman", "IRC" },  -- (Iran Aseman Airlines)
+    { "mahan air", "IRM" },
+    { "serene", "SEP" },  -- (Serene Air)
     { "brickyard", "RPA" },
     { "skywest", "SKW" },
     { "piedmont", "PDT" },
@@ -726,6 +734,15 @@ local names = {
     { "tway", "TWB" },
     { "t'way air", "TWB" },
     { "jeju airlines", "JJA" },
+    -- airlines said before a flight number by the name passengers know ("Middle East 311", "Mahan 1071",
+    -- "Anadolu 7TK"; "Flagship 5033": Endeavor Air's earlier name and telephony)
+    { "middle east", "MEA" },
+    { "mahan", "IRM" },
+    { "anadolu", "AJA" },
+    { "anadolujet", "AJA" },
+    { "alliance air", "LLR" },
+    { "flagship", "EDV" },
+    { "norstar", "NSZ" },
   },
   brands = {
     { "transavia", "TRA", "TVF" },

@@ -221,7 +221,9 @@ floors("tests/data/translate_round161.tsv", 0.905, 0.0068, true)
 floors("tests/data/translate_round162.tsv", 0.989, 0.0, true)
 floors("tests/data/translate_round163.tsv", 0.922, 0.0, true)
 floors("tests/data/translate_round164.tsv", 0.986, 0.0034, true)
-floors("tests/data/translate_round165.tsv", 0.793, 0.0035, true)
+-- (r165-060 "Eastflight four lima bravo": an airline word squawk does not know before the flight number, asked:
+-- docs/translator_trust.md, cycle 57)
+floors("tests/data/translate_round165.tsv", 0.790, 0.0035, true)
 floors("tests/data/translate_round166.tsv", 0.962, 0.0, true)
 floors("tests/data/translate_round167.tsv", 0.970, 0.0, true)
 floors("tests/data/translate_round168.tsv", 0.946, 0.0032, true)
@@ -245,7 +247,9 @@ floors("../shared/corpora/nl2trafscript_dev.tsv", 0.98, 0.01)
 -- known name too (lexicon.waypoint_confirm: 25 rows); these rows score as asked (a navaid said by
 -- its navdata name won 5 back); a word the recogniser garbled ("December eighteen five thousand",
 -- "Fighting two seven zero") is asked about by name (lexicon.accounted: 66 rows)
-floors("../shared/corpora/vice_trafscript.tsv", 0.567, 0.0044)
+-- (ten speech-recognition garbles of an airline's name before a flight number that matches, "Peco Six Forty
+-- Seven", asked since cycle 57: docs/translator_trust.md)
+floors("../shared/corpora/vice_trafscript.tsv", 0.547, 0.0044)
 
 -- squawk.translate.evaluate is eval-translate's scorer: a translator that always asks is right
 -- exactly on the rows that expect a question, never wrong; one that issues a command where a

@@ -16802,3 +16802,67 @@ do
       "ASAS ON ; ALT KLM12 FL300 ; FF 600")
   end
 end
+
+-- Cycle 57 (fhz2)
+do
+  -- an unknown word where the airline's name would stand, the flight number alone matching an aircraft flying:
+  -- confirmed, never taken; the airline's names, a slip of them and words squawk knows before the number read as said
+  local _, ex = scene({ "CRE SWR7 A320 47.40 8.50 090 FL260 280", "CRE BAW518 A321 47.60 8.90 270 FL300 290",
+    "CRE FAD127 A320 47.20 8.10 180 FL220 270" })
+  asked(ex("Quixel 7 descend FL200"), "an unknown word before 7")
+  asked(ex("okay, blorvax five one eight, turn left heading 240"), "an unknown word before 518, in words")
+  asked(ex("the Grompy 518 climb FL320"), "an unknown word after 'the'")
+  asked(ex("Quixel seven, reduce speed 250 please"), "digits in words")
+  check_eq(ex("Swiss 7 descend FL200"), "ALT SWR7 FL200")
+  check_eq(ex("Swis 7 descend FL200"), "ALT SWR7 FL200")
+  check_eq(ex("Speedbird 518 climb FL320"), "ALT BAW518 FL320")
+  check_eq(ex("okay, Speedbird five one eight, turn left heading 240"), "HDG BAW518 240 LEFT")
+  check_eq(ex("Flyadeal 127 descend FL180"), "ALT FAD127 FL180")
+  -- a value judged after it is said is taken back: asked, never issued
+  local _, ex2 = scene({ "CRE KLM44 B738 52.10 4.60 180 FL240 290", "CRE EZY21 A320 52.40 4.10 090 FL180 260" })
+  asked(ex2("KLM44 reduce speed 260, sorry, 260 is too fast"), "the value said again and judged")
+  asked(ex2("KLM44 speed two six zero... no, two six zero is a bit too fast."), "in words, with a full stop")
+  asked(ex2("KLM44 climb FL330, sorry, 330 is way too high"), "a level judged")
+  asked(ex2("EZY21 speed 240 knots, no, too slow"), "the judgement alone after the marker")
+  asked(ex2("EZY21 speed 240 knots, wait, it's too slow"), "a pronoun after the marker")
+  check_eq(ex2("EZY21 descend FL150, it is too high for the approach"), "ALT EZY21 FL150")
+  check_eq(ex2("KLM44 speed 270 knots please, it is going too slow"), "SPD KLM44 270")
+  check_eq(ex2("EZY21 climb FL200, sorry if that is too high for it"), "ALT EZY21 FL200")
+  -- a speed change said with its direction: the reading that holds (to a speed that goes the way said, 100 kt or more
+  -- at 200 kt or more; by an amount under 100 kt, its unit said); none or both asked
+  check_eq(ex2("KLM44 reduce 50 knots"), "SPD KLM44 240")
+  check_eq(ex2("KLM44 reduce by 50 knots"), "SPD KLM44 240")
+  check_eq(ex2("EZY21 increase 30 knots"), "SPD EZY21 290")
+  check_eq(ex2("EZY21 speed up sixty knots"), "SPD EZY21 320")
+  check_eq(ex2("KLM44 slow down 70 knots"), "SPD KLM44 220")
+  check_eq(ex2("KLM44 reduce 250 knots"), "SPD KLM44 250")
+  check_eq(ex2("EZY21 increase speed 280"), "SPD EZY21 280")
+  asked(ex2("KLM44 reduce 50"), "no unit: a speed cut short, or a change?")
+  -- (a flyable speed against the verb, with no change it could be, is the speed said: the verb said loosely)
+  check_eq(ex2("KLM44 increase speed 250"), "SPD KLM44 250")
+  check_eq(ex2("EZY21 reduce 300 knots"), "SPD EZY21 300")
+  asked(ex2("KLM44 reduce to 60 knots"), "no speed of a jet flying 290 kt")
+  asked(ex2("KLM44 speed 80 knots"), "no speed of a jet flying 290 kt")
+  check_eq(ex2("KLM44 when passing FL200 reduce 300"), "ATALT KLM44 FL200 SPD KLM44 300")
+  local _, ex3 = scene({ "CRE PA28X P28A 52.00 5.00 090 3000 110" })
+  check_eq(ex3("PA28X reduce 90 knots"), "SPD PA28X 90")
+  asked(ex3("PA28X reduce 45 knots"), "to 45 kt or by 45 kt: both fit a light aircraft")
+  -- a correction of an amount of change stays an amount of change; one asked as "to or by" stays asked
+  local _, ex4 = scene({ "CRE DLH71 A321 50.00 8.50 090 FL260 280", "CRE CFG9 A320 50.30 8.70 270 9000 250" })
+  check_eq(ex4("DLH71 go down 1500 feet... uh, no, 2000"), "ALT DLH71 24000")
+  check_eq(ex4("DLH71 drop 1000 feet, sorry, 3000 feet"), "ALT DLH71 23000")
+  check_eq(ex4("CFG9 go up 1000 feet... no, 2000"), "ALT CFG9 11000")
+  check_eq(ex4("CFG9 descend by 2000 feet... no, 3000"), "ALT CFG9 6000")
+  check_eq(ex4("DLH71 go down 1500 feet... no, to 9000 feet"), "ALT DLH71 9000")
+  check_eq(ex4("DLH71 go down 1500 feet... no, FL210"), "ALT DLH71 FL210")
+  asked(ex4("DLH71 descend 1500 feet... no, 2000"), "to or by, as 'descend 1500 feet' is asked")
+  -- a phrase that keeps the aircraft from what it names, said before it: asked, never issued
+  asked(ex4("DLH71 avoid FL240"), "avoid a level")
+  asked(ex4("DLH71 please stay clear of flight level two four zero"), "stay clear of a level")
+  asked(ex4("CFG9 forget about the descent to 5000 feet"), "forget about an instruction")
+  asked(ex4("CFG9 hold off on the turn to heading 180"), "hold off on an instruction")
+  asked(ex4("DLH71 disregard the speed 250 knots"), "disregard before the instruction")
+  check_eq(ex4("DLH71 climb FL300, disregard, FL310"), "ALT DLH71 FL310")
+  check_eq(ex4("DLH71 turn left heading 200 to avoid CFG9"), "HDG DLH71 200 LEFT")
+  check_eq(ex4("DLH71 disregard, climb FL300"), "ALT DLH71 FL300")
+end
