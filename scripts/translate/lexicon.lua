@@ -2216,9 +2216,10 @@ return {
     -- over TOBEK", "when you arrive to RINOR", "when arrives to FL250", "when you are at CASAR", "when you are
     -- with 250 knots"; read as the condition English says; a longer form before the shorter it opens with)
     -- ("then as soon as it is level turn right heading 060", "Mach .78 as soon as level": "once"; "as soon as
-    -- possible" and "as soon as you can" stay the courtesy they are)
+    -- possible" and "as soon as you can" stay the courtesy they are; "as soon as Swiss 200 is level", a name typed
+    -- with its capital after it, is the condition on that aircraft, never a courtesy that drops its callsign)
     { heard = { "as soon as" }, means = "once",
-      before = { "it", "it's", "he", "he's", "she", "she's", "they", "they're", "you're", "level", "lvl", "reaching",
+      before = { "#capital", "it", "it's", "he", "he's", "she", "she's", "they", "they're", "you're", "level", "lvl", "reaching",
                  "passing", "past", "established" } },
     { heard = { "you pass over", "it pass over", "it passes over", "pass over", "passes over", "you pass",
                 "it pass" }, means = "passing", after = { "when", "once" } },
