@@ -4531,7 +4531,17 @@ return function(H, f, compass)
     for _, b in ipairs(q and {} or self:quantities(math.max(1, s.trig - 3), s.trig)) do
       if b.kind == "time" and b.e == s.trig and not self.taken[b.b] then q = self:take(b) end
     end
-    if q then return self:emit("DTLOOK " .. f.num(q.value)) end
+    if q then
+      self:emit("DTLOOK " .. f.num(q.value))
+      -- ("look-ahead 180 s, evaluated every 1 s", "look ahead 300 s, checked each 5 seconds": a time after "every"
+      -- or "each" later in the look-ahead's segment is how often detection runs, DT ASAS in seconds)
+      for _, r in ipairs(self:quantities(q.e, s.e)) do
+        if r.kind == "time" and not self.taken[r.b] and self:word(r.b - 1, "every each") then
+          return self:emit("DT ASAS " .. f.num(self:take(r).value))
+        end
+      end
+      return
+    end
     if self:asks_setting(true) then return self:emit("DTLOOK") end
     self:need("How far ahead, in seconds, should conflict detection look?")
   end

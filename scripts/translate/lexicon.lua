@@ -2370,6 +2370,10 @@ return {
       ["loschen sie"] = "delete", ["loeschen sie"] = "delete",
       -- the order of a script's steps ("Zuerst: ... Dann: ... Schliesslich FF 8 Minuten")
       zuerst = "first", dann = "then", schliesslich = "finally",
+      -- the clock let run on after a pause ("dann weiter laufen lassen", "weiterlaufen lassen"), or run
+      -- ("die Simulation laufen lassen": read as English says "run")
+      ["weiter laufen lassen"] = "resume", ["weiterlaufen lassen"] = "resume", weiterlaufen = "resume",
+      ["laufen lassen"] = "run",
       -- digits ("zwo" for two on the radio)
       eins = "one", zwo = "two", zwei = "two", drei = "three", vier = "four", funf = "five", fuenf = "five",
       sechs = "six", sieben = "seven", acht = "eight", neun = "nine", hundert = "hundred", tausend = "thousand",

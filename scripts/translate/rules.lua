@@ -2541,8 +2541,9 @@ return function(intent, rule, words)
   rule { "stop", "hold", prev = { 1, "@sim" }, when = function(g, i)
     return g:alone_but(i - 1, i + 1) or g:clause_alone(i - 1, i + 1)
   end }
-  -- "resume nav past cpa", "resume navigation once past the CPA": how aircraft resume after a resolution
-  rule { "resume resumes", "resnav", near = { 6, "cpa" } }
+  -- "resume nav past cpa", "resume navigation once past the CPA", "with resumption of navigation past CPA": how
+  -- aircraft resume after a resolution
+  rule { "resume resumes resumption", "resnav", near = { 6, "cpa" } }
   -- "after they pass CPA send them back on their route", "once past the CPA let them resume their route": how
   -- aircraft resume their route after a resolution (RESNAV PASTCPA), CPA named before it after a word of
   -- lexicon.condition or "past"
