@@ -1582,6 +1582,14 @@ return function(intent, rule, words)
   rule { "cleared", "direct", when = function(g, i)
     return #g.world.waypoints > 0 and not g:followed_by(i, 8, "visual approach ils rnav localizer land landing")
   end }
+  -- "create 5 random A320s at FL250, all with destination Zurich": the destination of the random traffic
+  -- created before it, no aircraft named between (MCRE's destination, read by m:random_traffic)
+  rule { "destination", false, when = function(g, i)
+    for k = i - 1, 1, -1 do
+      if g:intent_at(k) == "mcre" then return #g:refs_in(k, i, "aircraft") == 0 end
+    end
+    return false
+  end }
   rule { "destination dest", "dest" }
   -- "KL204 is going to Frankfurt", "it's bound for Brussels": where the aircraft flies, said as a fact
   -- ("it is going to be the one the participant sequences": the future said, no place)
