@@ -447,6 +447,8 @@ local function foreign_digits(text)
 end
 local function heard_word_is(w, set)
   if not w then return false end
+  -- ("#capital": a word typed with a capital, a name: "as soon as Swiss 200 is level", "as soon as KLM12 ...")
+  if set["#capital"] and w:match("^%u") then return true end
   w = w:lower():gsub("%p+$", "")
   return set[w] == true or (set["#number"] == true and (NUMBER_WORDS[w] == true or w:match("^%d") ~= nil
     or w:match("^fl%d+$") ~= nil or NUMBER_WORDS[w:match("^(%a+)%-%a") or ""] == true))  -- ("one-two-zero")
@@ -13279,6 +13281,66 @@ function G.hold_after_ff(text)
       return time .. sep .. join .. sp .. (hold == "HOLD" and "PAUSE" or "pause") .. tail
     end))
 end
+-- A title opening a script, its own sentence ended by a colon or full stop: one or more parts joined by commas,
+-- each a few words ending in a label noun (TITLE_NOUNS) with its id after it ("Alpine crossing experiment:",
+-- "Ticino scenario, run 1.", "Hundred series, test 1:", "Test 3 setup, bitte:"), names the script, no
+-- instruction: it is set apart and the rest read. The words before a noun are letters only, none a clock or
+-- flight verb, nor a pronoun (TITLE_NOT); a part that is a noun alone has its id ("Run 2:"; "Run:" may be the
+-- clock's), and a full stop ends a title only after an id.
+G.TITLE_NOUNS = { experiment = true, experiments = true, scenario = true, series = true, test = true, trial = true,
+  exercise = true, run = true, setup = true, demo = true, session = true, study = true }
+G.TITLE_NOT = { now = true, ["then"] = true, first = true, so = true, ["and"] = true, just = true, please = true,
+  climb = true, descend = true, turn = true, maintain = true, reduce = true, increase = true, speed = true,
+  direct = true, delete = true, create = true, hold = true, pause = true, resume = true, stop = true, start = true,
+  go = true, fly = true, set = true, change = true, i = true, we = true, you = true, ["let's"] = true, lets = true,
+  let = true, keep = true, make = true, it = true, them = true, this = true, that = true, everything = true,
+  all = true, us = true, me = true, him = true, her = true, everyone = true, everybody = true }
+G.TITLE_COURTESY = { bitte = true, please = true, merci = true }
+function G.title_label(text)
+  local head, mark, rest = text:match("^%s*([%a][^:.;!?]-)([:.])%s+(%a.*)$")
+  if not head or #head > 60 then return text end
+  local parts = {}
+  for part in (head .. ","):gmatch("%s*([^,]-)%s*,") do parts[#parts + 1] = part end
+  if G.TITLE_COURTESY[parts[#parts]:lower()] and #parts > 1 then parts[#parts] = nil end
+  for _, part in ipairs(parts) do
+    local words = {}
+    for w in part:gmatch("%S+") do words[#words + 1] = w end
+    -- (the words before the first label noun; then label nouns, each with an id after it or not)
+    local k, pre = 1, 0
+    while words[k] and not G.TITLE_NOUNS[words[k]:lower()] do
+      if not words[k]:match("^%a[%a%-]*$") or G.TITLE_NOT[words[k]:lower()] then return text end
+      k, pre = k + 1, pre + 1
+    end
+    if not words[k] or pre > 3 then return text end
+    while words[k] do
+      if not G.TITLE_NOUNS[words[k]:lower()] then return text end
+      local id = words[k + 1] and (words[k + 1]:match("^%d%d?%a?$") or words[k + 1]:match("^%u$"))
+      if not id and pre == 0 and not words[k + 1] then return text end
+      k, pre = k + (id and 2 or 1), 1
+      -- (a full stop ends a title only after its id: "let it run." is the clock's)
+      if mark == "." and not words[k] and not id and part == parts[#parts] then return text end
+    end
+  end
+  return rest
+end
+-- "run 4 minutes fast-time", "then 3 min fast-time and pause", "6 min fast forward": a duration with its unit
+-- straight before "fast time"/"fast-time"/"fast forward", opening its clause (the text's start, a mark, "then",
+-- "and", "run"), is how long to fast-forward: said as "fast-forward 4 minutes" (a "run" before it is that
+-- verb). A duration after anything else ("climb within 4 minutes fast time") stays as said.
+G.FAST_TIME_OPENERS = { ["then"] = true, ["and"] = true, now = true, next = true }
+function G.time_before_fast(text)
+  if not text:find("[Ff][Aa][Ss][Tt]") then return text end
+  local function said(at, _, n, sp, unit, fast, tail)
+    local what = fast:lower():sub(6)
+    if not G.time_units[unit:lower()] or not (what == "time" or what == "forward") then return nil end
+    local prev = text:sub(1, at - 1):match("(%S+)%s*$")
+    if prev and not prev:find("[,;:.]$") and not G.FAST_TIME_OPENERS[prev:lower()] then return nil end
+    return "fast-forward " .. n .. sp .. unit .. tail
+  end
+  text = text:gsub("()([Rr][Uu][Nn]%s+)(%d+%.?%d*)(%s*)(%a+)%s+([Ff][Aa][Ss][Tt][%- ]%a+)(%f[%A])", said)
+  return (text:gsub("()(%d+%.?%d*)(%s*)(%a+)%s+([Ff][Aa][Ss][Tt][%- ]%a+)(%f[%A])",
+    function(at, ...) return said(at, "", ...) end))
+end
 G.clock_commands = { HOLD = true, OP = true, FF = true, DTMULT = true }
 G.time_units = { s = true, sec = true, secs = true, second = true, seconds = true, min = true, mins = true,
   minute = true, minutes = true, h = true, hr = true, hrs = true, hour = true, hours = true }
@@ -13291,7 +13353,7 @@ function M.translate(text, world)
   local quoted = M.quoted_clearance(text, world)
   if quoted then return quoted end
   if text:find("\xC3", 1, true) then text = text:gsub("[\xC3][\x80-\xBF]", lexicon.accents) end  -- (UTF-8 Latin-1 letters)
-  text = G.id_label(G.hold_after_ff(numbered_steps(G.spoken_zeros(G.number_words_apart(text)))), world)
+  text = G.id_label(G.hold_after_ff(G.time_before_fast(numbered_steps(G.title_label(G.spoken_zeros(G.number_words_apart(text)))))), world)
   -- ("climb to 10 km", "descend to 7.5 km": a level in kilometres straight after the vertical verb, as metres)
   if text:find("km", 1, true) then
     for _, verb in ipairs({ "[Cc]limbs?%s+to", "[Cc]limbs?", "[Dd]escends?%s+to", "[Dd]escends?" }) do

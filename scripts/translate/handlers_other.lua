@@ -3023,7 +3023,8 @@ return function(H, f, compass)
     end
     -- "all going to Schiphol", "all inbound Barcelona": MCRE's destination (an airport or waypoint said after
     -- "to" or "inbound")
-    local to = self:find_word(s.trig, s.e, "to inbound")
+    -- ("all with destination Zurich", "destination LSZH": the place after "destination")
+    local to = self:find_word(s.trig, s.e, "to inbound destination")
     if self:word(to, "inbound") and self:word(to + 1, "to for") then to = to + 1 end
     -- ("all heading for Fiumicino", "bound for LIRF": "for" after a verb of going)
     local going = self:find_word(s.trig, s.e, "heading headed bound going")
@@ -3031,8 +3032,12 @@ return function(H, f, compass)
     local dest = to < s.e and (self:refs_in(to + 1, to + 2, "waypoint")[1] or {}).name
     if to < s.e and not dest then dest = self:place_by_name(to + 1, math.min(s.e, to + 3), self.fleet[1]) end
     -- (a place after a verb of going that names no airport or waypoint is asked about, never dropped)
-    local k = to < s.e and not dest and self:word(to - 1, "going heading headed bound flying inbound all")
+    local k = to < s.e and not dest and (self:word(to - 1, "going heading headed bound flying inbound all")
+      or self:word(to, "destination"))
       and self:skip_fillers(to + 1)
+    if k and k < s.e and self:word(to, "destination") then
+      return self:need(string.format("Where should the random aircraft fly to? I heard '%s'.", self:raw(k, s.e)))
+    end
     if k and k < s.e and self.t[k].kind == "word" and not self:word(k, "be") then
       return self:need(string.format("Where should the random aircraft fly to? I heard '%s'.", self:raw(k, s.e)))
     end
@@ -4531,7 +4536,17 @@ return function(H, f, compass)
     for _, b in ipairs(q and {} or self:quantities(math.max(1, s.trig - 3), s.trig)) do
       if b.kind == "time" and b.e == s.trig and not self.taken[b.b] then q = self:take(b) end
     end
-    if q then return self:emit("DTLOOK " .. f.num(q.value)) end
+    if q then
+      self:emit("DTLOOK " .. f.num(q.value))
+      -- ("look-ahead 180 s, evaluated every 1 s", "look ahead 300 s, checked each 5 seconds": a time after "every"
+      -- or "each" later in the look-ahead's segment is how often detection runs, DT ASAS in seconds)
+      for _, r in ipairs(self:quantities(q.e, s.e)) do
+        if r.kind == "time" and not self.taken[r.b] and self:word(r.b - 1, "every each") then
+          return self:emit("DT ASAS " .. f.num(self:take(r).value))
+        end
+      end
+      return
+    end
     if self:asks_setting(true) then return self:emit("DTLOOK") end
     self:need("How far ahead, in seconds, should conflict detection look?")
   end

@@ -2240,9 +2240,10 @@ return {
     -- over TOBEK", "when you arrive to RINOR", "when arrives to FL250", "when you are at CASAR", "when you are
     -- with 250 knots"; read as the condition English says; a longer form before the shorter it opens with)
     -- ("then as soon as it is level turn right heading 060", "Mach .78 as soon as level": "once"; "as soon as
-    -- possible" and "as soon as you can" stay the courtesy they are)
+    -- possible" and "as soon as you can" stay the courtesy they are; "as soon as Swiss 200 is level", a name typed
+    -- with its capital after it, is the condition on that aircraft, never a courtesy that drops its callsign)
     { heard = { "as soon as" }, means = "once",
-      before = { "it", "it's", "he", "he's", "she", "she's", "they", "they're", "you're", "level", "lvl", "reaching",
+      before = { "#capital", "it", "it's", "he", "he's", "she", "she's", "they", "they're", "you're", "level", "lvl", "reaching",
                  "passing", "past", "established" } },
     { heard = { "you pass over", "it pass over", "it passes over", "pass over", "passes over", "you pass",
                 "it pass" }, means = "passing", after = { "when", "once" } },
@@ -2393,6 +2394,10 @@ return {
       ["loschen sie"] = "delete", ["loeschen sie"] = "delete",
       -- the order of a script's steps ("Zuerst: ... Dann: ... Schliesslich FF 8 Minuten")
       zuerst = "first", dann = "then", schliesslich = "finally",
+      -- the clock let run on after a pause ("dann weiter laufen lassen", "weiterlaufen lassen"), or run
+      -- ("die Simulation laufen lassen": read as English says "run")
+      ["weiter laufen lassen"] = "resume", ["weiterlaufen lassen"] = "resume", weiterlaufen = "resume",
+      ["laufen lassen"] = "run",
       -- digits ("zwo" for two on the radio)
       eins = "one", zwo = "two", zwei = "two", drei = "three", vier = "four", funf = "five", fuenf = "five",
       sechs = "six", sieben = "seven", acht = "eight", neun = "nine", hundert = "hundred", tausend = "thousand",

@@ -1582,6 +1582,14 @@ return function(intent, rule, words)
   rule { "cleared", "direct", when = function(g, i)
     return #g.world.waypoints > 0 and not g:followed_by(i, 8, "visual approach ils rnav localizer land landing")
   end }
+  -- "create 5 random A320s at FL250, all with destination Zurich": the destination of the random traffic
+  -- created before it, no aircraft named between (MCRE's destination, read by m:random_traffic)
+  rule { "destination", false, when = function(g, i)
+    for k = i - 1, 1, -1 do
+      if g:intent_at(k) == "mcre" then return #g:refs_in(k, i, "aircraft") == 0 end
+    end
+    return false
+  end }
   rule { "destination dest", "dest" }
   -- "KL204 is going to Frankfurt", "it's bound for Brussels": where the aircraft flies, said as a fact
   -- ("it is going to be the one the participant sequences": the future said, no place)
@@ -2541,8 +2549,9 @@ return function(intent, rule, words)
   rule { "stop", "hold", prev = { 1, "@sim" }, when = function(g, i)
     return g:alone_but(i - 1, i + 1) or g:clause_alone(i - 1, i + 1)
   end }
-  -- "resume nav past cpa", "resume navigation once past the CPA": how aircraft resume after a resolution
-  rule { "resume resumes", "resnav", near = { 6, "cpa" } }
+  -- "resume nav past cpa", "resume navigation once past the CPA", "with resumption of navigation past CPA": how
+  -- aircraft resume after a resolution
+  rule { "resume resumes resumption", "resnav", near = { 6, "cpa" } }
   -- "after they pass CPA send them back on their route", "once past the CPA let them resume their route": how
   -- aircraft resume their route after a resolution (RESNAV PASTCPA), CPA named before it after a word of
   -- lexicon.condition or "past"

@@ -16866,3 +16866,43 @@ do
   check_eq(ex4("DLH71 turn left heading 200 to avoid CFG9"), "HDG DLH71 200 LEFT")
   check_eq(ex4("DLH71 disregard, climb FL300"), "ALT DLH71 FL300")
 end
+-- f179b (R179/R177: what a researcher's scripts still asked: titles, fast time, German, CD settings, MCRE)
+do
+  local _, ex = navscene({ "CRE KLM12 A320 52 4 90 FL250 280", "ADDWPT KLM12 SPY", "ADDWPT KLM12 ARTIP",
+    "DEST KLM12 EHAM", "CRE BAW33 B744 51.5 3 270 FL330 300", "CRE DLH44 A321 51 5 180 FL200 260" },
+    "R179's script titles")
+  if ex then
+    -- a script's title, its own sentence before a colon or full stop, names no instruction
+    check_eq(ex("North Sea crossing experiment: step 1, ASAS on; step 2, KLM12 climb FL300; step 3, pause."),
+      "ASAS ON ; ALT KLM12 FL300 ; HOLD")
+    check_eq(ex("Rotterdam scenario, run 2. KLM12 climb FL300, then pause."), "ALT KLM12 FL300 ; HOLD")
+    check_eq(ex("Thirty series, test 4: BAW33 descend FL310"), "ALT BAW33 FL310")
+    check_eq(ex("Conflict detection experiment, series B. KLM12 climb FL300."), "ALT KLM12 FL300")
+    check_eq(ex("Trial 2 setup, bitte: set seed 5; DLH44 descend FL180"), "SEED 5 ; ALT DLH44 FL180")
+    check_eq(ex("Final Thames run: first pause; then KLM12 climb FL300"), "HOLD ; ALT KLM12 FL300")
+    -- a callsign or a verb before the colon is no title
+    asked(ex("Speedbird 77 test: KLM12 climb FL300"), "a callsign-like name before the colon")
+    check_eq(ex("Climb test: KLM12 climb FL300"), "ALT KLM12 FL300")
+    -- a duration straight before "fast time" or "fast forward", opening its clause, is how long
+    check_eq(ex("KLM12 climb FL300; run 5 minutes fast-time"), "ALT KLM12 FL300 ; FF 300")
+    check_eq(ex("BAW33 descend FL310, then 2 min fast time and pause"), "ALT BAW33 FL310 ; FF 120 ; HOLD")
+    check_eq(ex("DLH44 turn right heading 270. Run 45 seconds fast forward."), "HDG DLH44 270 RIGHT ; FF 45")
+    asked(ex("KLM12 climb FL300 within 3 minutes fast time"), "a duration that is not the fast-forward's")
+    -- "as soon as" before a name is a condition on that aircraft, never a courtesy dropping its callsign
+    asked(ex("DLH44 turn right 20 degrees, then as soon as KLM12 is level at FL300 reduce it to 250"),
+      "a condition on another aircraft")
+    check_eq(ex("As soon as possible KLM12 climb FL300"), "ALT KLM12 FL300")
+    -- the clock let run on, in German
+    check_eq(ex("Zuerst Pause, dann KLM12 climb FL300, dann weiter laufen lassen."), "HOLD ; ALT KLM12 FL300 ; OP")
+    check_eq(ex("weiterlaufen lassen"), "OP")
+    -- conflict detection's settings in a researcher's words
+    check_eq(ex("MVP resolution, with resumption of navigation past CPA"), "RESO MVP ; RESNAV PASTCPA")
+    check_eq(ex("detection on, look-ahead 240 s, checked every 2 s"), "ASAS ON ; DTLOOK 240 ; DT ASAS 2")
+    check_eq(ex("look ahead 300 seconds, updated each 5 seconds"), "DTLOOK 300 ; DT ASAS 5")
+    -- random traffic's destination said with "destination"
+    check_eq(ex("Create 4 random B738s at FL300, all with destination Schiphol."), "MCRE 4 B738 FL300 * EHAM")
+    check_eq(ex("generate 6 random aircraft, destination EHAM"), "MCRE 6 * * * EHAM")
+    asked(ex("create 3 random A320s with destination Blorpville"), "a destination squawk does not know")
+    check_eq(ex("KLM12 destination Schiphol"), "DEST KLM12 EHAM")
+  end
+end
