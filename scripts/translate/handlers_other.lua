@@ -325,6 +325,12 @@ return function(H, f, compass)
       if r.e == r.b + 1 and self.t[r.b].raw:upper() == r.name then written[#written + 1] = r.name end
     end
     if #written == 1 then actype = written[1] end
+    -- ("type 767-300ER", "a 777-200 ER": a model's name with a hyphen that names no designator the type data
+    -- knows is asked, never written as a type: a designator has no hyphen)
+    if actype and actype:find("-", 1, true) and not require("translate.types").known_designator(actype:upper()) then
+      return self:need(string.format("Which aircraft type is '%s'? Please give its ICAO designator (B763, B77W, ...).",
+        actype:upper()))
+    end
     -- ("a Boeing 767", "a United 787"): a family flown in several common variants, said by its
     -- name alone, names no one variant (lexicon.variant_families); a variant said or written is that one
     local said = #written == 0 and types[1] and self:raw(types[1].b, types[1].e):lower():gsub("[%s%-]", "")
