@@ -5858,6 +5858,7 @@ function G:parse(b, e)
       self.crossed = nil
       -- (a value again after "after" and its place is the instruction's alone: G:until_then)
       self.conditioned_ask = nil
+      self.place_ask = nil
       if (until_wp and until_wp.after) or not self:at_waypoint(s, spec) then
         self[spec and spec.handler or "infer"](self, s, spec)
       end
@@ -5925,7 +5926,7 @@ function G:parse(b, e)
       -- (one that waits for a condition, "after NAXEL turn left", "in 2 minutes turn left", is asked all the same:
       -- no condition is dropped)
       if self.ask and spec and spec.value and self:values_after_trigger(s) == 0 and not self:change_word(s.trig)
-          and not self.conditioned_ask and not (at and at ~= self.at_all)
+          and not self.conditioned_ask and not self.place_ask and not (at and at ~= self.at_all)
           and not self:word_in(s.trig + 1, s.e, "minimum maximum min max best optimum optimal clean econ economy") then
         self.pending = self.pending or self.ask
         valueless[#valueless + 1] = { k = k, ask = self.ask }

@@ -1530,7 +1530,21 @@ return function(H, f, compass)
     local airport = a and self:airport_by_name(b, e, a)
     local asked = self.ask
     self.several_named = nil
-    local navaid = airport and self:navaid_by_name(b, e, a)
+    local navaid, phrase = nil, nil
+    if airport then navaid, phrase = self:navaid_by_name(b, e, a) end
+    -- (a navaid's name said with a capitalised word after it that the airport's own name holds, "Boston Logan":
+    -- KBOS "GENERAL EDWARD LAWRENCE LOGAN", the BOS VOR "BOSTON" a word of it, is the airport)
+    local with = self.world.airports_with_words
+    if navaid and phrase and with and a.lat then
+      local n, k = select(2, phrase:gsub("%S+", "")), b
+      while k < e and self.t[k].text ~= phrase:match("^%S+") do k = k + 1 end
+      local w = self.t[k + n]
+      if k + n < e and w and w.kind == "word" and w.alpha and w.raw:match("^%u") and not w.keyword then
+        for _, id in ipairs(with(w.text, a.lat, a.lon, L.navaid_range_nm)) do
+          if id:upper() == airport:upper() then navaid = nil break end
+        end
+      end
+    end
     -- (a name several navaids there bear is no one navaid: "direct Frankfurt" is the airport; "30 miles from
     -- Frankfurt" is asked: EDDF, or the FFM or FW navaid?)
     if self.ask ~= asked then
