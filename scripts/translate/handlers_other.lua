@@ -3329,14 +3329,20 @@ return function(H, f, compass)
     -- negation, ending the instruction, is the one replaced, no candidate; "land at Ezeiza, not Aeroparque":
     -- the one said first an airport by its city's navaids near the aircraft)
     local here = self:state(id) or (self.created_at or {})[id:upper()]
+    -- (whether an airport is named in [b, e), near the aircraft first: a test, its questions left to the reading
+    -- below, which finds a city many airports share by distance: "Alexandria" over Egypt is HEAX, not KAEX)
+    local function names_airport(b, e)
+      local asked = self.ask
+      local found = (here and self:airport_by_name(b, e, here, true)) or self:airport_by_name(b, e)
+      self.ask = asked
+      return found ~= nil
+    end
     for k = s.trig + 1, s.e - 2 do
       local from = (self:word(k, "not") and k + 1) or (self:word(k, "instead") and self:word(k + 1, "of") and k + 2)
         or (self:word(k, "rather") and self:word(k + 1, "than") and k + 2)
       if from and from < s.e and #self:quantities(from, s.e) == 0 and #self:refs_in(from, s.e, "aircraft") == 0
-          and (#self:refs_in(from, s.e, "waypoint") > 0 or self:airport_by_name(from, s.e) ~= nil
-            or (here and self:airport_by_name(from, s.e, here, true)) ~= nil)
-          and #self:refs_in(s.b, k, "waypoint") + ((self:airport_by_name(s.b, k)
-            or (here and self:airport_by_name(s.b, k, here, true))) and 1 or 0) > 0 then
+          and (#self:refs_in(from, s.e, "waypoint") > 0 or names_airport(from, s.e))
+          and #self:refs_in(s.b, k, "waypoint") + (names_airport(s.b, k) and 1 or 0) > 0 then
         self:explain(k, s.e)
         s = { b = s.b, trig = s.trig, e = k, intent = s.intent }
         break

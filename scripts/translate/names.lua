@@ -726,6 +726,10 @@ local names = {
     { "tway", "TWB" },
     { "t'way air", "TWB" },
     { "jeju airlines", "JJA" },
+    -- Lebanon's airline by its name, beside its telephony Cedar Jet ("the Middle East Airlines 322"; "MEA" is
+    -- also an English word's letters, never read alone)
+    { "middle east airlines", "MEA" },
+    { "middle east airline", "MEA" },
   },
   brands = {
     { "transavia", "TRA", "TVF" },
