@@ -8094,7 +8094,8 @@ function G:for_airport(k)
     e = e + 1
   end
   local stop = self:word(e, "@airport_nouns") and e + 1 or e
-  if e == k + 1 or (stop <= #self.t and self.t[stop].kind ~= "punct") then return nil end
+  local after = self:skip_fillers(stop)
+  if e == k + 1 or (after <= #self.t and self.t[after].kind ~= "punct" and not self:word(after, "please")) then return nil end
   local id
   for _, r in ipairs(self.refs) do
     if r.kind == "aircraft" and r.exists and r.e <= k then id = r.name end

@@ -2616,8 +2616,12 @@ return function(H, f, compass)
     local at = self:find_word(s.b, s.e, "after before")
     local next_to = at < s.e and self:refs_in(at + 1, at + 2, "waypoint")[1]
     -- ("insert Midhurst after Compton": the place next to it said by its one-word name)
-    local next_name = at < s.e and not next_to and self:place_by_name(at + 1, at + 2, self:state(id))
-    if next_name then next_to = { name = next_name, b = at + 1, e = at + 2 } end
+    -- (or by two capitalised words, "after Queen Alia": the QAA VOR on its route)
+    local n_said = 1
+    local function capital(k) return self.t[k] and self.t[k].kind == "word" and self.t[k].raw:match("^%u%l") end
+    if at + 2 < s.e and capital(at + 1) and capital(at + 2) then n_said = 2 end
+    local next_name = at < s.e and not next_to and self:place_by_name(at + 1, at + 1 + n_said, self:state(id))
+    if next_name then next_to = { name = next_name, b = at + 1, e = at + 1 + n_said } end
     -- ("insert DALIK between TRA and KLO": the two places next to each other on the route, the new one after the
     -- first; places apart or off the route are asked)
     local between = not next_to and self:find_word(s.b, s.e, "between")
