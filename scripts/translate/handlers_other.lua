@@ -1518,8 +1518,9 @@ return function(H, f, compass)
   -- and the ML VOR) is the one of the two its route holds (its destination: the airport's), else
   -- asked about, the airport kept (a direct-to a city names its VOR as often as its airport). `reference`
   -- (true: a place a distance or a waypoint condition is measured from, "30 miles from Frankfurt") makes a
-  -- name several navaids there bear beside the airport asked about too, naming them all.
-  function m:place_by_name(b, e, a, reference)
+  -- name several navaids there bear beside the airport asked about too, naming them all; `large` (true) reads a
+  -- name a large airport and a navaid near both bear as the airport (a heading toward it).
+  function m:place_by_name(b, e, a, reference, large)
     local near = a and { a } or self.fleet
     -- (the longer name first: "direct Zurich East" is the ZUE VOR, not Zurich airport and a word more)
     for _, r in ipairs(near) do
@@ -1568,6 +1569,10 @@ return function(H, f, compass)
         self.ask = unasked
         return navaid
       end
+      -- (`large`: a large airport is what the name means, over the navaid its route does not hold: "toward
+      -- Tucson" is KTUS)
+      local class = self.world.airport_class
+      if large and not nav_held and class and class(airport) == "LARGE" then return airport end
       if nav_held or not airport_held then
         self:need(string.format("Which place is meant: the %s navaid or the %s airport?", navaid, airport))
       end

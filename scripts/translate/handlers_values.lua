@@ -940,7 +940,7 @@ return function(H, f, wrap, compass)
       toward_at, ask0 = at, self.ask
       local r = self:refs_in(at, math.min(s.e, at + 3), "waypoint")[1]
       if r then self:explain(tw, r.e) end
-      toward = r and r.name:upper() or self:place_by_name(at, s.e, now)
+      toward = r and r.name:upper() or self:place_by_name(at, s.e, now, nil, true)
       -- ("toward O'Hare": an airport said by a distinctive part of its name, as a destination is read)
       if not toward and now and not self.ask then toward = self:airport_by_words(at, math.min(s.e, at + 3), now) end
       -- ("toward Providence airport": a city said with an airport noun is its airport, as a destination is read:
