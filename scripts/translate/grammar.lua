@@ -3003,6 +3003,9 @@ function G:in_reason(i)
         inside = false
       elseif self:purpose(k) then
         inside = true
+      elseif w == "for" and self:for_airport(k) then
+        -- ("descend to 6000 feet for Borg El Arab": the airport the value is for, to its end)
+        inside, lead_end, reason[k] = true, self:for_airport(k), true
       elseif w == "before" and (instructed(k) or #self:quantities(1, k) > 0) and self:deadline_clause(k) then
         -- ("climb FL340 before it reaches the boundary", "I'd like AFR1234 at FL340 before the boundary":
         -- lexicon.deadline_places)
@@ -5867,6 +5870,7 @@ function G:parse(b, e)
       self.crossed = nil
       -- (a value again after "after" and its place is the instruction's alone: G:until_then)
       self.conditioned_ask = nil
+      self.place_ask = nil
       if (until_wp and until_wp.after) or not self:at_waypoint(s, spec) then
         self[spec and spec.handler or "infer"](self, s, spec)
       end
@@ -5934,7 +5938,7 @@ function G:parse(b, e)
       -- (one that waits for a condition, "after NAXEL turn left", "in 2 minutes turn left", is asked all the same:
       -- no condition is dropped)
       if self.ask and spec and spec.value and self:values_after_trigger(s) == 0 and not self:change_word(s.trig)
-          and not self.conditioned_ask and not (at and at ~= self.at_all)
+          and not self.conditioned_ask and not self.place_ask and not (at and at ~= self.at_all)
           and not self:word_in(s.trig + 1, s.e, "minimum maximum min max best optimum optimal clean econ economy") then
         self.pending = self.pending or self.ask
         valueless[#valueless + 1] = { k = k, ask = self.ask }
@@ -8083,6 +8087,43 @@ function G:purpose(k)
   end
   local before = self:quantities(1, k)
   return #before > 0 and before[#before].e <= k and #self:quantities(k, e) == 0
+end
+
+-- "descend to 6000 feet for Borg El Arab", "FL120 for Amman Marka", "6000 for HEBA": "for" straight after a value,
+-- then an airport's name (one to four capitalised words, "airport" after them allowed) or its code to the clause's
+-- end, the airport held by the route or the destination of the aircraft named before, or within
+-- lexicon.navaid_range_nm of it: the airport the value is for, no instruction. Returns the position after the
+-- name, else nil.
+function G:for_airport(k)
+  local q = self:quantities(1, k)
+  if #q == 0 or self:skip_fillers(q[#q].e) ~= k or not self:word(k, "for") then return nil end
+  local e = k + 1
+  while e <= #self.t and e < k + 5 and self.t[e].kind == "word" and self.t[e].raw:match("^%u")
+      and not self:word(e, "@airport_nouns") do
+    e = e + 1
+  end
+  local stop = self:word(e, "@airport_nouns") and e + 1 or e
+  local after = self:skip_fillers(stop)
+  if e == k + 1 or (after <= #self.t and self.t[after].kind ~= "punct" and not self:word(after, "please")) then return nil end
+  local id
+  for _, r in ipairs(self.refs) do
+    if r.kind == "aircraft" and r.exists and r.e <= k then id = r.name end
+  end
+  local a = id and self:state(id)
+  if not (a and a.lat) then return nil end
+  local held = {}
+  for _, x in ipairs(a.route or {}) do held[x:upper()] = true end
+  if a.dest and a.dest ~= "" then held[a.dest:upper()] = true end
+  local phrase, w = self:raw(k + 1, e), self.world
+  local nm = lexicon.navaid_range_nm
+  if held[phrase:upper()] and w.airport_class and w.airport_class(phrase:upper()) then return stop end
+  local city = lexicon.city_airports[phrase:lower()]
+  for _, list in ipairs({ w.airports_named and w.airports_named(phrase, a.lat, a.lon, nm) or {},
+      w.airports_with_words and w.airports_with_words(phrase, a.lat, a.lon, nm) or {},
+      w.airports_named and city and w.airports_named(city, a.lat, a.lon, nm) or {} }) do
+    if #list > 0 then return stop end
+  end
+  return nil
 end
 
 -- The forms a word may be inflected from or to ("keeping" keep, "switched" switch, "pass" passing).

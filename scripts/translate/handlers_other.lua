@@ -325,6 +325,12 @@ return function(H, f, compass)
       if r.e == r.b + 1 and self.t[r.b].raw:upper() == r.name then written[#written + 1] = r.name end
     end
     if #written == 1 then actype = written[1] end
+    -- ("type 767-300ER", "a 777-200 ER": a model's name with a hyphen that names no designator the type data
+    -- knows is asked, never written as a type: a designator has no hyphen)
+    if actype and actype:find("-", 1, true) and not require("translate.types").known_designator(actype:upper()) then
+      return self:need(string.format("Which aircraft type is '%s'? Please give its ICAO designator (B763, B77W, ...).",
+        actype:upper()))
+    end
     -- ("a Boeing 767", "a United 787"): a family flown in several common variants, said by its
     -- name alone, names no one variant (lexicon.variant_families); a variant said or written is that one
     local said = #written == 0 and types[1] and self:raw(types[1].b, types[1].e):lower():gsub("[%s%-]", "")
@@ -1512,8 +1518,9 @@ return function(H, f, compass)
   -- and the ML VOR) is the one of the two its route holds (its destination: the airport's), else
   -- asked about, the airport kept (a direct-to a city names its VOR as often as its airport). `reference`
   -- (true: a place a distance or a waypoint condition is measured from, "30 miles from Frankfurt") makes a
-  -- name several navaids there bear beside the airport asked about too, naming them all.
-  function m:place_by_name(b, e, a, reference)
+  -- name several navaids there bear beside the airport asked about too, naming them all; `large` (true) reads a
+  -- name a large airport and a navaid near both bear as the airport (a heading toward it).
+  function m:place_by_name(b, e, a, reference, large)
     local near = a and { a } or self.fleet
     -- (the longer name first: "direct Zurich East" is the ZUE VOR, not Zurich airport and a word more)
     for _, r in ipairs(near) do
@@ -1524,7 +1531,21 @@ return function(H, f, compass)
     local airport = a and self:airport_by_name(b, e, a)
     local asked = self.ask
     self.several_named = nil
-    local navaid = airport and self:navaid_by_name(b, e, a)
+    local navaid, phrase = nil, nil
+    if airport then navaid, phrase = self:navaid_by_name(b, e, a) end
+    -- (a navaid's name said with a capitalised word after it that the airport's own name holds, "Boston Logan":
+    -- KBOS "GENERAL EDWARD LAWRENCE LOGAN", the BOS VOR "BOSTON" a word of it, is the airport)
+    local with = self.world.airports_with_words
+    if navaid and phrase and with and a.lat then
+      local n, k = select(2, phrase:gsub("%S+", "")), b
+      while k < e and self.t[k].text ~= phrase:match("^%S+") do k = k + 1 end
+      local w = self.t[k + n]
+      if k + n < e and w and w.kind == "word" and w.alpha and w.raw:match("^%u") and not w.keyword then
+        for _, id in ipairs(with(w.text, a.lat, a.lon, L.navaid_range_nm)) do
+          if id:upper() == airport:upper() then navaid = nil break end
+        end
+      end
+    end
     -- (a name several navaids there bear is no one navaid: "direct Frankfurt" is the airport; "30 miles from
     -- Frankfurt" is asked: EDDF, or the FFM or FW navaid?)
     if self.ask ~= asked then
@@ -1548,6 +1569,10 @@ return function(H, f, compass)
         self.ask = unasked
         return navaid
       end
+      -- (`large`: a large airport is what the name means, over the navaid its route does not hold: "toward
+      -- Tucson" is KTUS)
+      local class = self.world.airport_class
+      if large and not nav_held and class and class(airport) == "LARGE" then return airport end
       if nav_held or not airport_held then
         self:need(string.format("Which place is meant: the %s navaid or the %s airport?", navaid, airport))
       end
@@ -2596,8 +2621,12 @@ return function(H, f, compass)
     local at = self:find_word(s.b, s.e, "after before")
     local next_to = at < s.e and self:refs_in(at + 1, at + 2, "waypoint")[1]
     -- ("insert Midhurst after Compton": the place next to it said by its one-word name)
-    local next_name = at < s.e and not next_to and self:place_by_name(at + 1, at + 2, self:state(id))
-    if next_name then next_to = { name = next_name, b = at + 1, e = at + 2 } end
+    -- (or by two capitalised words, "after Queen Alia": the QAA VOR on its route)
+    local n_said = 1
+    local function capital(k) return self.t[k] and self.t[k].kind == "word" and self.t[k].raw:match("^%u%l") end
+    if at + 2 < s.e and capital(at + 1) and capital(at + 2) then n_said = 2 end
+    local next_name = at < s.e and not next_to and self:place_by_name(at + 1, at + 1 + n_said, self:state(id))
+    if next_name then next_to = { name = next_name, b = at + 1, e = at + 1 + n_said } end
     -- ("insert DALIK between TRA and KLO": the two places next to each other on the route, the new one after the
     -- first; places apart or off the route are asked)
     local between = not next_to and self:find_word(s.b, s.e, "between")
@@ -3314,14 +3343,20 @@ return function(H, f, compass)
     -- negation, ending the instruction, is the one replaced, no candidate; "land at Ezeiza, not Aeroparque":
     -- the one said first an airport by its city's navaids near the aircraft)
     local here = self:state(id) or (self.created_at or {})[id:upper()]
+    -- (whether an airport is named in [b, e), near the aircraft first: a test, its questions left to the reading
+    -- below, which finds a city many airports share by distance: "Alexandria" over Egypt is HEAX, not KAEX)
+    local function names_airport(b, e)
+      local asked = self.ask
+      local found = (here and self:airport_by_name(b, e, here, true)) or self:airport_by_name(b, e)
+      self.ask = asked
+      return found ~= nil
+    end
     for k = s.trig + 1, s.e - 2 do
       local from = (self:word(k, "not") and k + 1) or (self:word(k, "instead") and self:word(k + 1, "of") and k + 2)
         or (self:word(k, "rather") and self:word(k + 1, "than") and k + 2)
       if from and from < s.e and #self:quantities(from, s.e) == 0 and #self:refs_in(from, s.e, "aircraft") == 0
-          and (#self:refs_in(from, s.e, "waypoint") > 0 or self:airport_by_name(from, s.e) ~= nil
-            or (here and self:airport_by_name(from, s.e, here, true)) ~= nil)
-          and #self:refs_in(s.b, k, "waypoint") + ((self:airport_by_name(s.b, k)
-            or (here and self:airport_by_name(s.b, k, here, true))) and 1 or 0) > 0 then
+          and (#self:refs_in(from, s.e, "waypoint") > 0 or names_airport(from, s.e))
+          and #self:refs_in(s.b, k, "waypoint") + (names_airport(s.b, k) and 1 or 0) > 0 then
         self:explain(k, s.e)
         s = { b = s.b, trig = s.trig, e = k, intent = s.intent }
         break

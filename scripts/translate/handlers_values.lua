@@ -1003,17 +1003,26 @@ return function(H, f, wrap, compass)
     local tw = self:find_word(s.b, s.e, "towards toward direction")
     local face = self:find_word(s.b, s.e, "face")
     if tw == s.e and face < s.e and self:word(face - 1, "to") then tw = face end
+    -- (toward_at: where the place said after "toward" starts. A question raised while looking it up, or none found
+    -- by its words, is kept as the clause's question (self.place_ask): never set aside as a valueless
+    -- instruction's and dropped beside the request's other commands, never the heading flown to a place asked about)
+    local toward_at, ask0
     if not abs and not rel and tw < s.e and (not self:word(tw, "direction") or self:word(tw + 1, "of")) then
       local at = self:word(tw, "direction") and tw + 2 or tw + 1
+      toward_at, ask0 = at, self.ask
       local r = self:refs_in(at, math.min(s.e, at + 3), "waypoint")[1]
       if r then self:explain(tw, r.e) end
-      toward = r and r.name:upper() or self:place_by_name(at, s.e, now)
+      toward = r and r.name:upper() or self:place_by_name(at, s.e, now, nil, true)
       -- ("toward O'Hare": an airport said by a distinctive part of its name, as a destination is read)
       if not toward and now and not self.ask then toward = self:airport_by_words(at, math.min(s.e, at + 3), now) end
       -- ("toward Providence airport": a city said with an airport noun is its airport, as a destination is read:
       -- KPVD beside the PROVIDENCE VOR)
       if not toward and now and not self.ask and self:word_in(at, math.min(s.e, at + 4), "@airport_nouns") then
         toward = self:airport_by_name(at, s.e, now, true)
+      end
+      if self.ask ~= ask0 then
+        self.place_ask = true
+        return
       end
     end
     local hdg, offset  -- offset: degrees from each aircraft's present heading
@@ -1121,6 +1130,15 @@ return function(H, f, wrap, compass)
       if not src then return self:need("What is the heading of " .. refs[#refs].name .. "?") end
       id, hdg, ids = refs[1].name, src.hdg_deg, { refs[1].name }
     else
+      -- ("fly toward Providence airport" far from it: a place said after "toward" that names none found is asked
+      -- by its words)
+      local last = toward_at and toward_at < s.e and s.e
+      while last and last > toward_at and self.t[last - 1].kind == "punct" do last = last - 1 end
+      if last and last > toward_at then
+        self.place_ask = true
+        return self:need(string.format("Which place is '%s'? I found no place by that name for %s. Please give its "
+          .. "ICAO code or ident.", self:raw(toward_at, last), id))
+      end
       return self:need("What heading should " .. id .. " fly?")
     end
     -- the way to turn, when it was said: HDG's LEFT/RIGHT (a squawk extension)

@@ -2092,7 +2092,11 @@ return {
                     ["st maarten"] = "princess juliana", ["sint maarten"] = "princess juliana",
                     -- (Japan: the airport known by its district, which the navdata names after its city)
                     haneda = "tokyo intl", ["tokyo haneda"] = "tokyo intl", itami = "osaka intl",
-                    ["osaka itami"] = "osaka intl" },
+                    ["osaka itami"] = "osaka intl",
+                    -- (the Middle East: the city's one large airport named after a person, its name said after
+                    -- the city's too, "Jeddah King Abdulaziz"; Amman's MARKA is a medium field)
+                    amman = "queen alia", ["amman queen alia"] = "queen alia", jeddah = "king abdulaziz",
+                    ["jeddah king abdulaziz"] = "king abdulaziz", ["amman marka"] = "marka" },
   -- a city's airline airport by the city's name, where navdata gives the city other large fields nearby (beside
   -- its navaid, or holding its name): "Atlanta airport" is KATL, not DeKalb-Peachtree KPDK; "Baltimore airport" is
   -- KBWI, not Fort Meade's 3000 ft TIPTON. Read only when that airport is among the candidates found; a city of

@@ -110,6 +110,8 @@ local function pattern_names(d)
     out[#out + 1] = { "boeing", "777 freighter" }
   end
   if d == "A35K" then out[#out + 1] = { "airbus", "a350-1000" } end
+  -- (the A330's re-engined series is only a neo: A338 and A339 are the A330-800neo and A330-900neo)
+  if d == "A338" or d == "A339" then out[#out + 1] = { "airbus", "a330-" .. d:sub(4) .. "00neo" } end
   local c = d:match("^CRJ(%d)$")
   if c then
     out[#out + 1] = { "bombardier", "crj" .. c .. "00" }
@@ -364,6 +366,20 @@ local function spelled_designator(toks, i, built, phonetic)
   if #name < 4 or not name:find("%d") or not built.known[name] then return nil end
   return name .. (toks[k - 1]:match("%p+$") or ""), k
 end
+-- The range suffix of a Boeing variant said after its number, from token k (`toks`): "ER"/"LR" as one word,
+-- spelled "E R"/"L R", or said in words "extended range"/"long range" -> "er" or "lr", and the token after it;
+-- else nil. (The suffix changes the type, 777-300 B773 and 777-300ER B77W: never dropped.)
+local RANGE_WORDS = { extended = "er", long = "lr" }
+local function range_suffix(toks, k)
+  local function bare(j) return toks[j] and (toks[j]:lower():gsub("%p+$", "")) or "" end
+  local function open(j) return toks[j] ~= nil and not toks[j]:match("%p$") end
+  local x = bare(k)
+  if x == "er" or x == "lr" then return x, k + 1 end
+  if (x == "e" or x == "l") and open(k) and bare(k + 1) == "r" then return x .. "r", k + 2 end
+  if RANGE_WORDS[x] and open(k) and bare(k + 1) == "range" then return RANGE_WORDS[x], k + 2 end
+  return nil
+end
+M.range_suffix = range_suffix
 function M.spoken(text, built, phonetic)
   if not built.known then
     built.known, built.makers, built.prefixes = {}, {}, {}
@@ -388,7 +404,15 @@ function M.spoken(text, built, phonetic)
     -- letter or name, a designator's letters, "seven" or a Boeing family's number)
     local ph = phonetic or {}
     if not (LETTERS[w] or w == "airbus" or w == "boeing" or w == "embraer" or built.makers[w] or built.prefixes[w]
-        or w == "seven" or w:match("^7%d7$") or w == "dash" or ph[w] or (w:find("%p$") and ph[(w:gsub("%p+$", ""))])) then
+        or w == "seven" or w:match("^7%d7$") or w == "dash" or ph[w] or (w:find("%p$") and ph[(w:gsub("%p+$", ""))])
+        or w:match("^b?7%d7%-%d00$")) then
+      return nil
+    end
+    -- ("777-300 ER", "777-300 extended range": a Boeing variant typed, its range suffix said apart; a name the
+    -- data does not know so, "767-300 ER", is written whole and asked as that name typed is)
+    if w:match("^b?7%d7%-%d00$") then
+      local sfx, after = range_suffix(toks, i + 1)
+      if sfx then return w .. sfx .. (toks[after - 1]:match("%p+$") or ""), after end
       return nil
     end
     -- ("dash 8 four hundred", "dash eight four hundred": the Dash 8's variant in hundreds said after it, "dash 8-400")
@@ -450,7 +474,6 @@ function M.spoken(text, built, phonetic)
         local v, k = bare(j):match("^%-?(%d00%a*)$"), j + 1
         if not v and DIGITS[bare(j)] and open(j) and bare(j + 1) == "hundred" then v, k = DIGITS[bare(j)] .. "00", j + 2 end
         if not v and short_name(built, fam, short_variant(bare(j))) then v = short_variant(bare(j)) end
-        if v and v:match("%d$") and open(k - 1) and (bare(k) == "er" or bare(k) == "lr") then v, k = v .. bare(k), k + 1 end
         local name = v and fam .. "-" .. v
         -- ("triple seven freighter": the family's freighter where one designator is named so, B77L)
         if not v and bare(j) == "freighter" and built.known[fam .. " freighter"] then name, k = fam .. " freighter", j + 1 end
@@ -516,6 +539,13 @@ function M.spoken(text, built, phonetic)
         end
         if punct ~= "" then break end
       end
+    end
+    -- ("seven seven seven three hundred ER", "777 300 E R", "767 three hundred extended range": a Boeing variant's
+    -- range suffix said after it is part of the name; a name with the suffix the data does not know is written
+    -- whole, never as the variant without it, and asked as that name typed is)
+    if best and best.name:match("7%d7%-%d00$") and toks[best.e - 1] and not toks[best.e - 1]:match("%p$") then
+      local sfx, after = range_suffix(toks, best.e)
+      if sfx then best = { name = best.name:gsub("^boeing ", "") .. sfx .. (toks[after - 1]:match("%p+$") or ""), e = after } end
     end
     -- ("seven thirty-seven max eight": the MAX's number said as a word, "737 max 8")
     local bare_max = best and not best.name:match("%p$") and toks[best.e] and toks[best.e]:lower()

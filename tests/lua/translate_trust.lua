@@ -16906,3 +16906,60 @@ do
     check_eq(ex("KLM12 destination Schiphol"), "DEST KLM12 EHAM")
   end
 end
+
+-- fapt2 (cycle 57, R180): types with a range suffix, places asked in a heading, Middle East airports and airlines
+do
+  local _, ty = scene({ "CRE KLM12 A320 52 4 90 FL250 280" })
+  -- a Boeing variant's range suffix said after its number is part of the type (777-300 is B773, 777-300ER B77W)
+  check_eq(ty("create MSR111, a Boeing seven seven seven three hundred ER, at 30.5 31.8 heading 270 FL180 300 knots"),
+    "CRE MSR111 B77W 30.5 31.8 270 FL180 300")
+  check_eq(ty("create SVA9 type boeing seven seven seven dash three hundred E R at 24 46 heading 90 FL300 290 knots"),
+    "CRE SVA9 B77W 24 46 90 FL300 290")
+  check_eq(ty("create UAE7 type 777 three hundred extended range at 25 55 heading 180 FL320 300 knots"),
+    "CRE UAE7 B77W 25 55 180 FL320 300")
+  check_eq(ty("create QTR8 type 777-300 ER at 25 51 heading 180 FL320 300 knots"), "CRE QTR8 B77W 25 51 180 FL320 300")
+  check_eq(ty("create AIC1 type boeing seven seven seven two hundred long range at 19 72 heading 300 FL330 290 knots"),
+    "CRE AIC1 B77L 19 72 300 FL330 290")
+  check_eq(ty("create ETD5 type Boeing seven seven seven three hundred at 24 54 heading 90 FL300 290 knots"),
+    "CRE ETD5 B773 24 54 90 FL300 290")
+  check_eq(ty("create AFR22 type A330-900neo at 48 2 heading 90 FL300 290 knots"), "CRE AFR22 A339 48 2 90 FL300 290")
+  -- a suffix the type data does not know with that variant is asked, never dropped
+  asked(ty("create DAL4 type Boeing seven six seven three hundred ER at 40 -74 heading 90 FL300 290 knots"),
+    "767-300ER")
+  asked(ty("create BAW9 type 777-200ER at 51 0 heading 270 FL300 290 knots"), "777-200ER")
+  local nav, ex = navscene({ "CRE UAL12 A320 37.6 -122.4 090 8000 250", "CRE AAL1523 B738 42.00 -70.90 330 FL220 290" },
+    "fapt2's places after 'toward'")
+  if nav then
+    -- a place after "toward" asked about, or found nowhere near, is the request's question, never dropped
+    asked(ex("UAL12 descend to 5000 and fly toward Providence airport"), "Providence far away")
+    asked(ex("United 12, turn toward Heathrow please"), "Heathrow far away")
+    asked(ex("UAL12 climb to 9000 feet, then turn towards Schiphol"), "Schiphol far away")
+    check_eq(ex("UAL12 climb 9000 and turn toward the Oakland airport"), "ALT UAL12 9000 ; HDG UAL12 KOAK")
+    -- a navaid's name with the airport's own word after it is the airport
+    check_eq(ex("American 1523 direct Boston Logan"), "ADDWPT AAL1523 KBOS ; DIRECT AAL1523 KBOS")
+    asked(ex("American 1523 direct Boston"), "the BOS VOR or KBOS")
+  end
+  local nav2, me = navscene({ "CRE MSR804 A320 31.80 29.70 200 FL140 270", "ADDWPT MSR804 OTIKO", "ADDWPT MSR804 HEBA",
+    "CRE SVA317 B789 29.60 32.30 300 FL330 280", "CRE RJA435 A320 32.70 35.90 170 FL170 270", "ADDWPT RJA435 AMN",
+    "CRE MEA322 A320 33.20 35.60 145 FL230 280", "CRE RJA185 B789 31.30 37.60 280 FL160 280", "ADDWPT RJA185 PARAM",
+    "ADDWPT RJA185 QAA" }, "fapt2's Middle East places")
+  if nav2 then
+    -- a city many airports share, by distance: Alexandria over Egypt is HEAX, never Louisiana's KAEX
+    check_eq(me("EgyptAir 804, make the destination Alexandria, not Borg El Arab"), "DEST MSR804 HEAX")
+    check_eq(me("EgyptAir 804 destination Alexandria rather than Borg El Arab please"), "DEST MSR804 HEAX")
+    -- a city's one large airport named after a person; the medium field by its own name
+    check_eq(me("Saudia 317, new destination Jeddah"), "DEST SVA317 OEJN")
+    check_eq(me("Saudia 317 his destination is now Jeddah King Abdulaziz please"), "DEST SVA317 OEJN")
+    check_eq(me("Royal Jordanian 435, destination Amman"), "DEST RJA435 OJAI")
+    check_eq(me("Royal Jordanian 435 set destination Amman Marka"), "DEST RJA435 OJAM")
+    -- the airport a level is for, no instruction
+    check_eq(me("EgyptAir 804, descend 5000 feet for Borg El Arab please"), "ALT MSR804 5000")
+    check_eq(me("Royal Jordanian 435 down to flight level one one zero for Queen Alia airport"), "ALT RJA435 FL110")
+    asked(me("Royal Jordanian 435 descend FL110 for Heathrow"), "an airport far away")
+    -- a VOR by its name after the route's VOR said by its name
+    check_eq(me("Royal Jordanian 185, please insert the Amman VOR after Queen Alia in his route"), "ADDWPT RJA185 AMN,,,QAA")
+    -- an airline by its name beside its telephony
+    check_eq(me("the Middle East Airlines 322, say your position"), "POS MEA322")
+    check_eq(me("Middle East Airlines three two two climb flight level two five zero"), "ALT MEA322 FL250")
+  end
+end
