@@ -2635,6 +2635,8 @@ return function(intent, rule, words)
       or (g:word(i + 1, "at") and (g:word(i + 2, "@multipliers") or (g.t[i + 3] and g:word(i + 3, "x times"))))
   end }
   rule { "real", false, prev = { 1, "than" } }
+  -- ("three times faster than the real time": the rate's comparison, with its article)
+  rule { "real", false, prev = { 1, "the" }, when = function(g, i) return g:word(i - 2, "than") end }
   -- ("resume at 5 times real time": the rate of the resume, read by it)
   rule { "real", false, prev = { 1, "x times @multipliers" }, when = function(g, i) return g:preceded_by(i, 7, "continue resume") end }
   rule { "real", "dtmult", next = "time", prev = { 1, "x times @multipliers" } }  -- ("twice real time")
@@ -2744,7 +2746,11 @@ return function(intent, rule, words)
     if g:word(k, "detection resolution") then return true end
     k = i + 1
     while g:word(k, "the conflict conflicts") do k = k + 1 end
-    return k > i + 1 and g:word(k, "detection resolution")
+    if k > i + 1 and g:word(k, "detection resolution") then return true end
+    -- ("open the trails": the trails switched on, m:opened_setting)
+    k = i + 1
+    while g:word(k, "the all") do k = k + 1 end
+    return g:word(k, "trail trails")
   end }
   rule { "scenario load open ic", "ic" }
   -- "print UAL9's flight plan", "print the waypoint list for BAW123": an aircraft's route listed
