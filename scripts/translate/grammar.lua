@@ -10933,6 +10933,13 @@ function G:respectively()
   local values = {}
   for _, q in ipairs(RESPECTIVE[cmd] and self:quantities(last, w) or {}) do
     local v = RESPECTIVE[cmd](q)
+    -- ("flight level one six zero and one eight zero respectively": a bare number of 10 to 600 joined by "and"
+    -- to the flight level before it is that flight level's sequel, a flight level too)
+    local pv = values[#values]
+    if not v and cmd == "ALT" and pv and pv.q.fl and q.kind == "plain" and not q.number.thousand
+        and q.value >= 10 and q.value <= 600 and q.value % 1 == 0 and q.b == pv.q.e + 1 and self:word(pv.q.e, "and") then
+      v = handlers.format.alt(q.value * 100, true)
+    end
     if v then values[#values + 1] = { q = q, text = v } end
   end
   local lines = {}

@@ -269,6 +269,11 @@ function m:readdressed(b, trig)
   if #refs < 2 then return nil end
   local k = trig - 1
   while k > b and (self.t[k].kind == "punct" or self.t[k].filler) do k = k - 1 end
+  -- (a modal between the one said again and the verb: "..., the EgyptAir should climb ...")
+  if self:word(k, "should shall must") and k > b then
+    k = k - 1
+    while k > b and (self.t[k].kind == "punct" or self.t[k].filler) do k = k - 1 end
+  end
   local last = refs[#refs]
   local pair = last.e == k + 1 and #refs - 1 or #refs
   if pair < 2 then return nil end
