@@ -2576,6 +2576,16 @@ return function(intent, rule, words)
   -- beside it, "follow its route again with VNAV engaged", is one more instruction)
   rule { "follow", "lnav", next = "your its the", near = { 3, "route" },  -- "follow your route again"
          not_near = { 6, "vertically vertical profile altitude altitudes level levels" } }
+  -- "follow again his flight plan route", "follow your filed flight plan": "again" or not, a possessive, then the
+  -- route's noun after its modifiers
+  rule { "follow", "lnav", not_near = { 7, "vertically vertical profile altitude altitudes level levels" },
+         when = function(g, i)
+    local k = g:word(i + 1, "again") and i + 2 or i + 1
+    if not g:word(k, "your its the his her their") then return false end
+    k = k + 1
+    while g:word(k, "own filed planned flight original") do k = k + 1 end
+    return g:word(k, "route plan")
+  end }
   rule { "run", "op", next = "again" }  -- "let it run again"
   rule { "run", "ff", next = "forward ahead" }  -- "run forward 45 seconds"
   -- "run it forward by 2 minutes", "run things ahead 5 minutes": the simulation as the object between
