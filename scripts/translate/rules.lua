@@ -1106,6 +1106,17 @@ return function(intent, rule, words)
   rule { "add append insert give put", "addwpt", near = { 10, "@route_nouns" },
          when = function(g, i) return g:has_ref(i + 1, i + 9, "waypoint") end }
   rule { "add append insert give", "addwpt", next = "it", near = { 8, "@route_nouns" } }
+  -- "add to the route of the Nile Air one zero seven the waypoint LUBOS": the route's owner named before the
+  -- waypoint (a callsign said in words may be long); the waypoint, its noun or not, straight after the aircraft
+  rule { "add append insert", "addwpt", next = "to", when = function(g, i)
+    local k = g:word(i + 2, "the his its") and i + 3 or i + 2
+    if not (g:word(k, "@route_nouns") and g:word(k + 1, "of")) then return false end
+    local a = g:refs_in(k + 2, #g.t + 1, "aircraft")[1]
+    if not a or a.b > g:skip_fillers(k + 2) + 1 then return false end
+    local x = g:word(a.e, "the a") and a.e + 1 or a.e
+    if g:word(x, "@waypoint_nouns point") then x = x + 1 end
+    return g:has_ref(x, x + 1, "waypoint")
+  end }
   -- "stick KMCO on the end of Frontier 2231's route", "tack FLYNN onto the end of its route": a waypoint
   -- straight after the verb, put at the route's end (not "stick to the route", which adds nothing)
   -- ("stick our ARTHR point on the end of the easyJet's route": the waypoint after a possessive, "point" after it)
