@@ -276,6 +276,10 @@ return function(intent, rule, words)
     local q = g:quantities(i + 1, math.min(#g.t + 1, i + 5))[1]
     return q ~= nil and (q.kind == "speed" or q.kind == "mach")
   end }
+  -- "what is the altitude of X and of Y?", "what are the speeds of X and Y?": the state asked by "what" (its rule
+  -- reads the aircraft, each one), the noun no instruction of its own
+  rule { "altitude speed heading level altitudes speeds headings levels", false, prev = { 1, "the" },
+         when = function(g, i) return g:word(i - 2, "is are") and g:word(i - 3, "what") end }
   -- "AAR731 current altitude tell me", "KAL8 speed let me know": the state asked for before the request
   -- for it (verb-final order) is no instruction
   rule { "altitude speed heading level position", false, when = function(g, i)
