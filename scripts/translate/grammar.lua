@@ -4337,7 +4337,9 @@ end
 -- "CSA6AT descend 5000 feet, he goes to Mosnov": where the aircraft named before goes, told in a clause of its own
 -- after an instruction (lexicon.destination_told), is a remark when the place (one to three words to the clause's
 -- end: an ident, or an airport's name) is on that aircraft's route or its destination: set aside, nothing set.
--- Another place is left to the instructions (a new destination may be meant).
+-- Told in the progressive ("..., he is going to Hurghada") with no word of lexicon.destination_preface.change in the
+-- request, it is a state wherever the place is: set aside. Another place told in the simple present ("he goes
+-- to Luxor") is left to the instructions (a new destination may be meant).
 G.destination_told_sets = {}
 for k, list in pairs(lexicon.destination_told) do G.destination_told_sets[k] = set_of(list) end
 function G:destination_told()
@@ -4346,11 +4348,16 @@ function G:destination_told()
   for b = 2, #self.t - 2 do
     local opens = self.t[b - 1].kind == "punct" or (self:word(b - 1, "and") and b > 2 and self.t[b - 2].kind == "punct")
     if opens and self:word(b, D.subjects) then
-      local k, moved = b + 1, false
+      local k, moved, be = b + 1, false, self:word(b, "he's she's it's they're")
       while self:word(k, D.verbs) do
         moved = moved or self:word(k, D.motion)
+        be = be or self:word(k, "is are 's")
         k = k + 1
       end
+      -- (the progressive, "he is going to Hurghada", "it's heading for Luxor", is a state told: set aside
+      -- wherever the place is, unless a word of change is said: "..., he is going to Luxor now")
+      local state = be and moved and self.words[k - 1] and self.words[k - 1]:match("ing$") ~= nil
+          and not self:said(G.destination_preface_sets.change)
       local e = k + 1
       while e <= #self.t and e < k + 4 and self.t[e].kind == "word" and self.t[e].raw:match("^%u") do e = e + 1 end
       local id
@@ -4364,7 +4371,7 @@ function G:destination_told()
         for _, x in ipairs(a.route or {}) do held[x:upper()] = true end
         if a.dest and a.dest ~= "" then held[a.dest:upper()] = true end
         local phrase = self:raw(k + 1, e)
-        local w, found = self.world, held[phrase:upper()] == true
+        local w, found = self.world, held[phrase:upper()] == true or state
         for _, list in ipairs({ w.airports_named and w.airports_named(phrase) or {},
             w.airports_with_words and a.lat and w.airports_with_words(phrase, a.lat, a.lon, lexicon.navaid_range_nm) or {},
             w.airports_of_city and w.airports_of_city(phrase) or {},
@@ -11080,6 +11087,13 @@ function G:respectively()
   local values = {}
   for _, q in ipairs(RESPECTIVE[cmd] and self:quantities(last, w) or {}) do
     local v = RESPECTIVE[cmd](q)
+    -- ("flight level one six zero and one eight zero respectively": a bare number of 10 to 600 joined by "and"
+    -- to the flight level before it is that flight level's sequel, a flight level too)
+    local pv = values[#values]
+    if not v and cmd == "ALT" and pv and pv.q.fl and q.kind == "plain" and not q.number.thousand
+        and q.value >= 10 and q.value <= 600 and q.value % 1 == 0 and q.b == pv.q.e + 1 and self:word(pv.q.e, "and") then
+      v = handlers.format.alt(q.value * 100, true)
+    end
     if v then values[#values + 1] = { q = q, text = v } end
   end
   local lines = {}

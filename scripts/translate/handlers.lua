@@ -225,10 +225,17 @@ function m:on_off(s)
 end
 
 -- "conflict detection open please", "close the conflict resolution": a conflict setting opened (1) or closed (0),
--- as Turkish speakers say for on and off ("aç", "kapat"), the verb straight after the setting's noun (fillers
--- between) or before it with only articles and "conflict" between; -1 when neither is said so
+-- as Turkish and Arabic speakers say for on and off ("aç", "kapat"; "iftah", "sakkir"), the verb straight after the
+-- setting's noun (fillers between) or before it with only articles and "conflict" between; the trails likewise,
+-- by the verb before them only ("close the trails", "open all the trails"); -1 when neither is said so
 function m:opened_setting(s)
   local trig = s.trig
+  if trig and self:word(trig, "trail trails") then
+    local k = trig - 1
+    while k >= 1 and self:word(k, "the all") do k = k - 1 end
+    if self:word(k, "open") then return 1 end
+    return self:word(k, "close shut") and 0 or -1
+  end
   if not (trig and self:word(trig, "detection resolution asas cd cr")) then return -1 end
   local function reading(k)
     if self:word(k, "open opened") then return 1 end
@@ -262,6 +269,11 @@ function m:readdressed(b, trig)
   if #refs < 2 then return nil end
   local k = trig - 1
   while k > b and (self.t[k].kind == "punct" or self.t[k].filler) do k = k - 1 end
+  -- (a modal between the one said again and the verb: "..., the EgyptAir should climb ...")
+  if self:word(k, "should shall must") and k > b then
+    k = k - 1
+    while k > b and (self.t[k].kind == "punct" or self.t[k].filler) do k = k - 1 end
+  end
   local last = refs[#refs]
   local pair = last.e == k + 1 and #refs - 1 or #refs
   if pair < 2 then return nil end

@@ -3590,6 +3590,12 @@ return function(H, f, compass)
     while self:word(first, "@setting_question_interjections") and first < #self.t do
       first = self:skip_fillers(first + 1)
     end
+    -- ("kindly tell me, is the conflict detection working?": a polite lead to a comma before the question)
+    local k = first
+    while self:word(k, "please kindly tell me us") do k = k + 1 end
+    if k > first and self:word_in(first, k, "tell") and self.t[k] and self.t[k].text == "," then
+      first = self:skip_fillers(k + 1)
+    end
     if not (self:word(first, "is") and self:word(first + 1, "it")) then return first end
     local to = self:find_word(first + 2, first + 6, "to")
     if to < first + 6 and self:word_in(first + 2, to, "@leave_asked") then
@@ -3673,6 +3679,9 @@ return function(H, f, compass)
         end
         return self:emit("DT")
       end
+      -- ("is the conflict detection working now or not?": the question's alternative, closing it)
+      local q = self:first_sentence_end()
+      if self.t[q].text == "?" and self:word(q - 1, "not") and self:word(q - 2, "or") then self:explain(q - 2, q) end
       return self:emit(spec.cmd)
     end
     -- "run conflict detection every 2 seconds": the interval of detection (DT ASAS); switched on too
@@ -4120,7 +4129,9 @@ return function(H, f, compass)
       return self:emit("DTMULT 1")
     end
     local real = self:find_word(s.b, s.e, "real")  -- "slow the clock to real time"
-    if real < s.e and self:word(real + 1, "time") then
+    -- ("slower than (the) real time": a comparison, no rate; asked below)
+    local than = self:word(real - 1, "than") or (self:word(real - 1, "the") and self:word(real - 2, "than"))
+    if real < s.e and self:word(real + 1, "time") and not than then
       -- "N times real time": the factor said before the segment's "real"
       for _, q in ipairs(self:word(real - 1, "times x") and self:quantities(real - 2, real - 1) or {}) do
         if not self.taken[q.b] and (q.kind == "plain" or q.kind == "mult") then

@@ -237,7 +237,7 @@ return {
         "svidaniya", "dobroye", "dobryy", "dobrogo",
         -- Arabic, Hebrew and Hindi, transliterated
         "shukran", "marhaba", "salam", "salaam", "assalamu", "alaikum", "alaykum", "ahlan", "afwan", "yalla",
-        "inshallah", "shalom", "toda", "namaste", "namaskar", "dhanyavad", "dhanyawad", "shukriya", "kripya",
+        "inshallah", "inshaallah", "bismillah", "alhamdulillah", "jazakallah", "barakallah", "shalom", "toda", "namaste", "namaskar", "dhanyavad", "dhanyawad", "shukriya", "kripya",
         -- Japanese, Korean and Chinese, romanised
         "arigato", "arigatou", "konnichiwa", "ohayo", "ohayou", "gozaimasu", "onegaishimasu", "sayonara",
         "sumimasen", "kamsahamnida", "gamsahamnida", "annyeong", "annyeonghaseyo", "annyonghaseyo", "xiexie",
@@ -256,6 +256,15 @@ return {
     -- phrases of courtesy that hold a word which means something elsewhere ("when", "if"):
     -- explained whole
     courtesy_phrases = { "pull up", "when you get a chance", "when you can", "when you're ready", "when ready",
+        -- the blessings of Arabic-speaking (and other Muslim) controllers, said in English or transliterated,
+        -- before, between or after the instructions ("God willing, climb FL370", "..., if you please, God bless
+        -- you"): they ask for nothing. "God" said alone stays unknown.
+        "god willing", "if god wills", "if god wills it", "god bless you", "god bless", "may god bless you",
+        "god reward you", "may god reward you", "god keep you", "may god keep you", "god protect you",
+        "may god protect you", "thank god", "thanks be to god", "praise be to god", "praise god", "by god's will",
+        "with god's help", "insha allah", "in sha allah", "insh allah", "inshaa allah", "in shaa allah",
+        "masha allah", "ma sha allah", "bism allah", "alhamdu lillah", "al hamdu lillah", "jazak allah",
+        "jazak allahu khairan", "jazakallah khair", "barak allah", "barak allahu feek", "if you please",
         "when able", "if able", "if you can", "if you could", "if you would", "if possible",
         "if you don't mind", "if it's not too much trouble", "as soon as possible", "as soon as you can",
         -- the listener's convenience and leave said whole ("..., please, when convenient", "if that's alright with you")
@@ -395,7 +404,7 @@ return {
         "reference", "boundary", "border", "corner", "corners", "edge", "centre", "center",
         -- states and settings a request names ("which method is active", "the scenario file", "ADS-B noise")
         "active", "inactive", "enabled", "disabled", "file", "ads-b", "adsb", "colliding", "collision",
-        "conflicting",
+        "conflicting", "working", "functioning",
         -- the part of the simulation a setting belongs to ("turn on the conflict detection module")
         "module", "modules", "function", "functionality", "feature", "system", "logic",
         -- (a newcomer's words for the simulation and its conflict detection: "let the computer steer them apart",

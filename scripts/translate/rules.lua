@@ -276,6 +276,10 @@ return function(intent, rule, words)
     local q = g:quantities(i + 1, math.min(#g.t + 1, i + 5))[1]
     return q ~= nil and (q.kind == "speed" or q.kind == "mach")
   end }
+  -- "what is the altitude of X and of Y?", "what are the speeds of X and Y?": the state asked by "what" (its rule
+  -- reads the aircraft, each one), the noun no instruction of its own
+  rule { "altitude speed heading level altitudes speeds headings levels", false, prev = { 1, "the" },
+         when = function(g, i) return g:word(i - 2, "is are") and g:word(i - 3, "what") end }
   -- "AAR731 current altitude tell me", "KAL8 speed let me know": the state asked for before the request
   -- for it (verb-final order) is no instruction
   rule { "altitude speed heading level position", false, when = function(g, i)
@@ -1106,6 +1110,17 @@ return function(intent, rule, words)
   rule { "add append insert give put", "addwpt", near = { 10, "@route_nouns" },
          when = function(g, i) return g:has_ref(i + 1, i + 9, "waypoint") end }
   rule { "add append insert give", "addwpt", next = "it", near = { 8, "@route_nouns" } }
+  -- "add to the route of the Nile Air one zero seven the waypoint LUBOS": the route's owner named before the
+  -- waypoint (a callsign said in words may be long); the waypoint, its noun or not, straight after the aircraft
+  rule { "add append insert", "addwpt", next = "to", when = function(g, i)
+    local k = g:word(i + 2, "the his its") and i + 3 or i + 2
+    if not (g:word(k, "@route_nouns") and g:word(k + 1, "of")) then return false end
+    local a = g:refs_in(k + 2, #g.t + 1, "aircraft")[1]
+    if not a or a.b > g:skip_fillers(k + 2) + 1 then return false end
+    local x = g:word(a.e, "the a") and a.e + 1 or a.e
+    if g:word(x, "@waypoint_nouns point") then x = x + 1 end
+    return g:has_ref(x, x + 1, "waypoint")
+  end }
   -- "stick KMCO on the end of Frontier 2231's route", "tack FLYNN onto the end of its route": a waypoint
   -- straight after the verb, put at the route's end (not "stick to the route", which adds nothing)
   -- ("stick our ARTHR point on the end of the easyJet's route": the waypoint after a possessive, "point" after it)
@@ -2585,6 +2600,16 @@ return function(intent, rule, words)
   -- beside it, "follow its route again with VNAV engaged", is one more instruction)
   rule { "follow", "lnav", next = "your its the", near = { 3, "route" },  -- "follow your route again"
          not_near = { 6, "vertically vertical profile altitude altitudes level levels" } }
+  -- "follow again his flight plan route", "follow your filed flight plan": "again" or not, a possessive, then the
+  -- route's noun after its modifiers
+  rule { "follow", "lnav", not_near = { 7, "vertically vertical profile altitude altitudes level levels" },
+         when = function(g, i)
+    local k = g:word(i + 1, "again") and i + 2 or i + 1
+    if not g:word(k, "your its the his her their") then return false end
+    k = k + 1
+    while g:word(k, "own filed planned flight original") do k = k + 1 end
+    return g:word(k, "route plan")
+  end }
   rule { "run", "op", next = "again" }  -- "let it run again"
   rule { "run", "ff", next = "forward ahead" }  -- "run forward 45 seconds"
   -- "run it forward by 2 minutes", "run things ahead 5 minutes": the simulation as the object between
@@ -2644,6 +2669,8 @@ return function(intent, rule, words)
       or (g:word(i + 1, "at") and (g:word(i + 2, "@multipliers") or (g.t[i + 3] and g:word(i + 3, "x times"))))
   end }
   rule { "real", false, prev = { 1, "than" } }
+  -- ("three times faster than the real time": the rate's comparison, with its article)
+  rule { "real", false, prev = { 1, "the" }, when = function(g, i) return g:word(i - 2, "than") end }
   -- ("resume at 5 times real time": the rate of the resume, read by it)
   rule { "real", false, prev = { 1, "x times @multipliers" }, when = function(g, i) return g:preceded_by(i, 7, "continue resume") end }
   rule { "real", "dtmult", next = "time", prev = { 1, "x times @multipliers" } }  -- ("twice real time")
@@ -2753,7 +2780,11 @@ return function(intent, rule, words)
     if g:word(k, "detection resolution") then return true end
     k = i + 1
     while g:word(k, "the conflict conflicts") do k = k + 1 end
-    return k > i + 1 and g:word(k, "detection resolution")
+    if k > i + 1 and g:word(k, "detection resolution") then return true end
+    -- ("open the trails": the trails switched on, m:opened_setting)
+    k = i + 1
+    while g:word(k, "the all") do k = k + 1 end
+    return g:word(k, "trail trails")
   end }
   rule { "scenario load open ic", "ic" }
   -- "print UAL9's flight plan", "print the waypoint list for BAW123": an aircraft's route listed

@@ -16961,5 +16961,59 @@ do
     -- an airline by its name beside its telephony
     check_eq(me("the Middle East Airlines 322, say your position"), "POS MEA322")
     check_eq(me("Middle East Airlines three two two climb flight level two five zero"), "ALT MEA322 FL250")
+end
+-- fgod (session 25): R180's formal, polite Arabic-influenced English
+do
+  local _, ex = navscene({ "CRE MSR563 A21N 28.90 32.30 140 FL220 280", "ADDWPT MSR563 HGD",
+    "CRE RJA306 A320 29.40 35.10 210 FL140 260", "ADDWPT RJA306 DELMA", "ADDWPT RJA306 SHM",
+    "CRE SVA611 A320 30.60 36.40 335 FL210 280", "CRE MSR711 A320 31.60 35.10 065 FL190 270",
+    "CRE KNE215 A320 30.0 36.0 100 FL250 280", "CRE NIA107 A320 29.95 31.65 130 FL120 270",
+    "CRE RJA185 B789 31.30 37.60 280 FL160 280", "ADDWPT RJA185 PARAM", "ADDWPT RJA185 QAA" }, "R180's courtesy")
+  if ex then
+    -- blessings and thanks around a request are courtesy, wherever they stand
+    check_eq(ex("Saudia six one one, God willing, climb to flight level two three zero."), "ALT SVA611 FL230")
+    check_eq(ex("Nile Air one zero seven, turn right ten degrees, if you please, God bless you."), "HDG NIA107 140 RIGHT")
+    check_eq(ex("Kindly, Nas Express two one five, descend flight level two zero zero, insha allah, thank you."),
+      "ALT KNE215 FL200")
+    check_eq(ex("Please, God willing, let us freeze the simulation."), "HOLD")
+    check_eq(ex("Please switch on the conflict detection, God willing we begin the next part."), "ASAS ON")
+    -- "God" said alone, or a blessing with no instruction word, hides nothing
+    asked(ex("Saudia six one one, God, climb to flight level two three zero."), "God alone")
+    asked(ex("Saudia six one one, God willing, climb."), "a climb with no level")
+    -- a destination told in the progressive after an instruction is a state, never DEST
+    check_eq(ex("Please the EgyptAir five six three, descend to flight level one eight zero, he is going to Hurghada."),
+      "ALT MSR563 FL180")
+    check_eq(ex("Royal Jordanian three zero six, descend to flight level one two zero, he's flying to Luxor."),
+      "ALT RJA306 FL120")
+    check_eq(ex("EgyptAir five six three, descend to flight level one six zero, he is going to Luxor now."),
+      "ALT MSR563 FL160 ; DEST MSR563 HELX")
+    check_eq(ex("EgyptAir five six three, he is going to Luxor."), "DEST MSR563 HELX")
+    -- "respectively" with a flight level's bare sequel
+    check_eq(ex("Kindly, EgyptAir seven one one and Royal Jordanian one eight five, climb to flight level two four "
+      .. "zero and two six zero respectively, God willing."), "ALT MSR711 FL240 ; ALT RJA185 FL260")
+    asked(ex("Saudia six one one and EgyptAir seven one one, descend to flight level one six zero and one eight zero."),
+      "two aircraft, two values, no 'respectively'")
+    asked(ex("Saudia six one one, EgyptAir seven one one and Royal Jordanian one eight five, descend to flight level "
+      .. "one six zero and one eight zero respectively."), "three aircraft, two values")
+    -- the pair named, then each said again before a modal
+    check_eq(ex("The Saudia six one one and the Nile Air one zero seven are converging, the Saudia should descend to "
+      .. "flight level one nine zero and the Nile Air should climb to flight level one four zero."),
+      "ALT SVA611 FL190 ; ALT NIA107 FL140")
+    -- the state of two aircraft asked together
+    check_eq(ex("Please what is the speed of the Nas Express two one five and of the Nile Air one zero seven?"),
+      "POS KNE215 ; POS NIA107")
+    -- the flight plan followed again
+    check_eq(ex("Kindly let the Royal Jordanian one eight five to follow again his filed flight plan, God willing."),
+      "LNAV RJA185 ON")
+    check_eq(ex("Royal Jordanian one eight five, follow his flight plan vertically."), "VNAV RJA185 ON")
+    -- the waypoint after the route's owner said in words
+    check_eq(ex("Kindly add to the route of the Nas Express two one five the waypoint QAA."), "ADDWPT KNE215 QAA")
+    -- trails opened and closed; the rate compared with "the real time"; a setting asked after a polite lead
+    check_eq(ex("Kindly close all the trails, God willing."), "TRAIL OFF")
+    check_eq(ex("Please open the trails."), "TRAIL ON")
+    check_eq(ex("Please run the simulation four times faster than the real time."), "DTMULT 4")
+    asked(ex("Make the simulation slower than the real time."), "slower, no rate")
+    check_eq(ex("Please tell me, is the conflict resolution working now?"), "RESO")
+    check_eq(ex("Kindly tell me, is the conflict detection functioning now or not?"), "ASAS")
   end
 end
