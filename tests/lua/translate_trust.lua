@@ -16961,7 +16961,9 @@ do
     -- an airline by its name beside its telephony
     check_eq(me("the Middle East Airlines 322, say your position"), "POS MEA322")
     check_eq(me("Middle East Airlines three two two climb flight level two five zero"), "ALT MEA322 FL250")
+  end
 end
+
 -- fgod (session 25): R180's formal, polite Arabic-influenced English
 do
   local _, ex = navscene({ "CRE MSR563 A21N 28.90 32.30 140 FL220 280", "ADDWPT MSR563 HGD",
