@@ -3914,7 +3914,9 @@ function G:at_speed(s)
     -- (the noun as the subject of a verb of reaching: "when the speed is 230", "once speed reaches 250")
     if not noun and self:word(x, "speed airspeed") then
       noun = true
-    elseif not (self.t[x].filler or ARRIVING[self.words[x]]) then
+    -- ("once his speed is 250": the aircraft's own speed)
+    elseif not (self.t[x].filler or ARRIVING[self.words[x]]
+        or (self:word(x, "his her their your") and self:word(x + 1, "speed airspeed"))) then
       return nil
     end
     slowed = slowed or self:word(x, "@speed_verbs")
@@ -3930,7 +3932,10 @@ function G:at_speed(s)
   if not (q.kind == "speed" or q.kind == "mach" or (bare and (noun or slowed or again))) then return nil end
   local k = self:skip_fillers(q.e)
   while k < s.trig and ((self.t[k].kind == "punct" and self.t[k].text == ",") or self:word(k, "@condition_lead")
-      or LINKING[self.words[k]] or (self:word(k, "go") and self:word(s.trig, "@up @down"))) do
+      or LINKING[self.words[k]] or (self:word(k, "go") and self:word(s.trig, "@up @down"))
+      -- (", kindly let him descend": courtesy and "let" with the aircraft's pronoun before the instruction word)
+      or self:word(k, "kindly") or (self:word(k, "let") and self:word(k + 1, "him her them"))
+      or (self:word(k, "him her them") and self:word(k - 1, "let"))) do
     k = self:skip_fillers(k + 1)
   end
   local ids = k == s.trig and self:acids(s) or {}
@@ -6409,7 +6414,7 @@ end
 -- value said bare straight after "after" (at i) and a waypoint, opening a clause (a comma or "and" before it) that
 -- (or "then") follows a value; the value is that instruction again, from the place (G:until_then). nil otherwise.
 -- verbs of passing a waypoint after "when", "once" or "after" and the aircraft's pronoun ("when it passes KONAK")
-G.passes_verbs = "passes pass passed crosses cross crossed overflies overfly overflew"
+G.passes_verbs = "passes pass passed crosses cross crossed overflies overfly overflew reaches reach reached"
 -- True when the token at v is a verb of G.passes_verbs after the aircraft's pronoun and "when", "once" or "after"
 -- ("after it passes NIKAS", "once you cross DIPOS").
 function G:passes_said(v)
@@ -6882,8 +6887,17 @@ function G:at_waypoint(s, spec)
   -- phonetic alphabet is the waypoint of the condition (a spelling that names no waypoint of the aircraft's
   -- route is asked about, never dropped). After the place is no constraint at it (BlueSky's AT meets the
   -- value at the waypoint, before it is passed): asked, naming the place.
-  local first = self:skip_fillers(s.b)
-  for _, a in ipairs(self:refs_in(first, first + 1, "aircraft")) do first = self:skip_fillers(a.e) end
+  -- ("Kindly, Saudia 611, at QTR ...", "MSR985 kindly at SOLAM ...": "kindly", with its comma, before or after the
+  -- callsign, as "please")
+  local function courtesy(k)
+    while self:word(k, "kindly") do
+      k = self:skip_fillers(k + 1)
+      if self.t[k] and self.t[k].kind == "punct" and self.t[k].text == "," then k = self:skip_fillers(k + 1) end
+    end
+    return k
+  end
+  local first = courtesy(self:skip_fillers(s.b))
+  for _, a in ipairs(self:refs_in(first, first + 1, "aircraft")) do first = courtesy(self:skip_fillers(a.e)) end
   -- ("Aegean 603, efcharistó, at DILOP descend ...": a word of courtesy after the callsign)
   while self:word(first, RADIOTELEPHONY) do first = self:skip_fillers(first + 1) end
   -- (the clause's opening words: "at", "over", "overhead", "after", "after/when/on/upon/once passing",
@@ -12355,6 +12369,7 @@ end
 -- join into a waypoint on the route of an aircraft flying are that waypoint's ident ("until KV"); others stay as
 -- said.
 G.spelled_slots = { ["until"] = true, till = true, to = true, passing = true }
+G.spelled_dist_units = { miles = true, mile = true, nm = true, nmi = true, dme = true, km = true }
 function G.spelled_route_places(text, world)
   local routed = {}
   for _, a in ipairs(world.aircraft) do
@@ -12364,7 +12379,9 @@ function G.spelled_route_places(text, world)
   local toks, bare = plain_words(text)
   return tokens.rewrite(text, toks, function(i)
     local slot = bare[i - 1]
-    if not (slot and (PLACE_SLOTS[slot] or G.spelled_slots[slot]) and lexicon.phonetic[bare[i]])
+    -- ("within 20 miles of lima oscar sierra": "of" after a distance's unit, as "from")
+    local of_dist = slot == "of" and G.spelled_dist_units[bare[i - 2] or ""]
+    if not (slot and (PLACE_SLOTS[slot] or G.spelled_slots[slot] or of_dist) and lexicon.phonetic[bare[i]])
         or toks[i - 1]:match("%p$") then
       return nil
     end
