@@ -4086,6 +4086,12 @@ function m:at_distance(s)
       local state = #ids == 1 and self:state(ids[1])
       local name = r and r.name or (dme and state and self:navaid_by_name(p, math.min(s.trig, p + 2), state))
         or (p and state and self:place_by_name(p, math.min(s.e, p + 2), state, true))
+      -- ("20 miles of tango oscar lima": letters spelled in the phonetic alphabet that name no waypoint of the
+      -- route, never the navaid named by the first letter's word alone: asked)
+      if not r and p and self.words[p + 1] and L.phonetic[self.words[p] or ""] and L.phonetic[self.words[p + 1]] then
+        return self:need(string.format("'%s': which place is that? The letters name no waypoint on the route.",
+          self:raw(q.b, math.min(s.trig, p + 3))))
+      end
       if name then
         if #ids ~= 1 then return nil end
         self:mark_used(q.b, q.e)  -- the condition's distance is not the instruction's value
