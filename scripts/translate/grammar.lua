@@ -13553,7 +13553,7 @@ function M.translate(text, world)
     local wd = g.waypoint_do
     for c = wd and not g.ask and wd.n + 1 or 1, wd and not g.ask and #g.out or 0 do
       if g.out[c]:match("^%u+ (%S+)") == wd.id and not g.out[c]:match("^AT") then  -- (one tied elsewhere stands)
-        if c == #g.out and c == wd.n + 1 and g:joined_under_waypoint(wd.e) then
+        if c == #g.out and c == wd.n + 1 and wd.e and g:joined_under_waypoint(wd.e) then
           g.out[c] = "AT " .. wd.id .. " " .. wd.wp .. " DO " .. g.out[c]
           break
         end
