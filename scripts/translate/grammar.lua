@@ -6939,7 +6939,12 @@ function G:at_waypoint(s, spec)
     end
     return k
   end
-  local first = courtesy(self:skip_fillers(s.b))
+  -- ("Run 2 of the Alpine series. ITY577: after SOPER descend ...": the clause opens after the last sentence's end)
+  local b0 = s.b
+  for x = s.b, s.trig - 1 do
+    if self.t[x].kind == "punct" and self.t[x].text:match("^[%.!%?;]$") then b0 = x + 1 end
+  end
+  local first = courtesy(self:skip_fillers(b0))
   for _, a in ipairs(self:refs_in(first, first + 1, "aircraft")) do first = courtesy(self:skip_fillers(a.e)) end
   -- ("Aegean 603, efcharistó, at DILOP descend ...": a word of courtesy after the callsign)
   while self:word(first, RADIOTELEPHONY) do first = self:skip_fillers(first + 1) end

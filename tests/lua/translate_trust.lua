@@ -16850,4 +16850,7 @@ do
   asked(ex("EWG41 after TOLKO reduce 240 knots, descend FL250"), "a comma alone")
   asked(ex("EWG41 after TOLKO reduce 240 knots and descend FL250 now"), "said to run now")
   asked(ex("EWG41 after TOLKO reduce 240 knots and then descend FL250"), "'then' between")
+  -- a waypoint's condition opening a sentence after another sentence (a list's lead)
+  check_eq(ex("Second trial. 1) BEL7: at MARSA climb FL250. 2) EWG41 descend FL290."),
+    "AT BEL7 MARSA DO ALT BEL7 FL250 ; ALT EWG41 FL290")
 end
