@@ -3922,7 +3922,9 @@ function G:at_speed(s)
     -- (the noun as the subject of a verb of reaching: "when the speed is 230", "once speed reaches 250")
     if not noun and self:word(x, "speed airspeed") then
       noun = true
-    elseif not (self.t[x].filler or ARRIVING[self.words[x]]) then
+    -- ("once his speed is 250": the aircraft's own speed)
+    elseif not (self.t[x].filler or ARRIVING[self.words[x]]
+        or (self:word(x, "his her their your") and self:word(x + 1, "speed airspeed"))) then
       return nil
     end
     slowed = slowed or self:word(x, "@speed_verbs")
@@ -3938,7 +3940,10 @@ function G:at_speed(s)
   if not (q.kind == "speed" or q.kind == "mach" or (bare and (noun or slowed or again))) then return nil end
   local k = self:skip_fillers(q.e)
   while k < s.trig and ((self.t[k].kind == "punct" and self.t[k].text == ",") or self:word(k, "@condition_lead")
-      or LINKING[self.words[k]] or (self:word(k, "go") and self:word(s.trig, "@up @down"))) do
+      or LINKING[self.words[k]] or (self:word(k, "go") and self:word(s.trig, "@up @down"))
+      -- (", kindly let him descend": courtesy and "let" with the aircraft's pronoun before the instruction word)
+      or self:word(k, "kindly") or (self:word(k, "let") and self:word(k + 1, "him her them"))
+      or (self:word(k, "him her them") and self:word(k - 1, "let"))) do
     k = self:skip_fillers(k + 1)
   end
   local ids = k == s.trig and self:acids(s) or {}
@@ -4315,6 +4320,12 @@ function G:limit_released()
   for _, r in ipairs(self.refs) do
     if r.kind == "waypoint" and self:word(r.b - 1, "until till") then
       local k = r.e
+      -- ("until MOUAB keep 280 knots, then it is up to him": the limit said before its speed, the release after
+      -- the speed; `lead`, the speed's quantity)
+      local lead = self:quantities(r.e, #self.t + 1)[1]
+      lead = lead and (lead.kind == "speed" or lead.kind == "mach") and #self:quantities(r.b - 1, r.e) == 0
+        and not self:has_ref(r.e, lead.b, "waypoint") and lead
+      if lead then k = lead.e end
       while self.t[k] and self.t[k].kind == "punct" do k = k + 1 end
       if self:word(k, "and") then k = k + 1 end
       local open = k
@@ -4327,8 +4338,15 @@ function G:limit_released()
       local rest = e
       while self.t[rest] and self.t[rest].kind == "punct" and self.t[rest].text ~= "," do rest = rest + 1 end
       if released and rest > #self.t then
-        self:mark_used(r.e, e)
-        for x = r.e, e - 1 do self.noted[x] = true end
+        if lead then
+          self:mark_used(r.b - 1, r.e)
+          for x = r.b - 1, r.e - 1 do self.noted[x] = true end
+          self:mark_used(lead.e, e)
+          for x = lead.e, e - 1 do self.noted[x] = true end
+        else
+          self:mark_used(r.e, e)
+          for x = r.e, e - 1 do self.noted[x] = true end
+        end
       end
     end
   end
@@ -6419,7 +6437,11 @@ function G:value_again_kind(p, q)
     self:explain(q.e, a)
   end
   local function speed(x) return x.kind == "speed" or x.kind == "mach" end
-  local p_speed = speed(p) or (p.kind == "plain" and self:word(p.b - 1, "speed airspeed @speed_verbs"))
+  -- ("after UTICA reduce 250, after GAVOL 220", "reduce to 250, ...": a bare number of 100 to 400 after a verb
+  -- of changing speed, "to" between or not, is a speed)
+  local lead = self:word(p.b - 1, "to") and p.b - 2 or p.b - 1
+  local p_speed = speed(p) or (p.kind == "plain" and (self:word(p.b - 1, "speed airspeed @speed_verbs")
+    or (self:word(lead, "reduce reducing increase increasing") and p.value >= 100 and p.value <= 400)))
   if p_speed and (speed(q) or (q.kind == "plain" and q.value >= 100 and q.value <= 400)) then return "spd" end
   if p.kind == "alt" and q.kind == "alt" and (q.fl or self:word(q.e - 1, "@feet")) then return "alt" end
   return nil
@@ -6429,9 +6451,31 @@ end
 -- value said bare straight after "after" (at i) and a waypoint, opening a clause (a comma or "and" before it) that
 -- (or "then") follows a value; the value is that instruction again, from the place (G:until_then). nil otherwise.
 -- verbs of passing a waypoint after "when", "once" or "after" and the aircraft's pronoun ("when it passes KONAK")
-G.passes_verbs = "passes pass passed crosses cross crossed overflies overfly overflew"
+G.passes_verbs = "passes pass passed crosses cross crossed overflies overfly overflew reaches reach reached"
 -- True when the token at v is a verb of G.passes_verbs after the aircraft's pronoun and "when", "once" or "after"
 -- ("after it passes NIKAS", "once you cross DIPOS").
+-- "after OLMUE reduce 220 knots and descend FL110", "at BOGNA reduce 250 and descend FL110": true when the one
+-- instruction after the segment tied to a waypoint (ending at token e) is joined to it by "and" (a comma before it or
+-- not) and closes the request with no place, condition, "then" or word of lexicon.at_once_words of its own: it waits
+-- for the waypoint too. A comma alone, a full stop or "then" between leaves it asked.
+function G:joined_under_waypoint(e)
+  -- (the segment holds the joining words before the next instruction's word at e)
+  local x, joined = e - 1, false
+  while x > 0 and (self.t[x].filler or (self.t[x].kind == "punct" and self.t[x].text == ",")) do
+    joined = joined or self.t[x].text == "and"
+    x = x - 1
+  end
+  x = e
+  if not joined or not self.t[x] then return false end
+  for y = x, #self.t do
+    local t = self.t[y]
+    if (t.kind == "punct" and not (y == #self.t and t.text:match("^[%.!]$"))) or t.text == "and"
+        or self:word(y, "@then_words @at_once_words @condition at after before until till over when once") then
+      return false
+    end
+  end
+  return not self:has_ref(x, #self.t + 1, "waypoint")
+end
 function G:passes_said(v)
   return self:word(v, G.passes_verbs) and self:word(v - 1, "it he she you they") and self:word(v - 2, "when once after")
 end
@@ -6458,6 +6502,10 @@ function G:after_place_value(i)
     if not thn then return nil end
     c = c + 1
   end
+  -- ("reduce 220 knots until TEXAS, after TEXAS 180 knots": the value kept until the same place, said before)
+  local u = self.t[c - 1] and self:refs_in(math.max(1, c - 4), c, "waypoint")
+  u = u and u[#u]
+  if u and u.e == c and u.name:upper() == r.name:upper() and self:word(u.b - 1, "until till") then c = u.b - 1 end
   local before = self:quantities(math.max(1, c - 8), c)
   local p = before[#before]
   if not p or p.e ~= c then return nil end
@@ -6902,8 +6950,22 @@ function G:at_waypoint(s, spec)
   -- phonetic alphabet is the waypoint of the condition (a spelling that names no waypoint of the aircraft's
   -- route is asked about, never dropped). After the place is no constraint at it (BlueSky's AT meets the
   -- value at the waypoint, before it is passed): asked, naming the place.
-  local first = self:skip_fillers(s.b)
-  for _, a in ipairs(self:refs_in(first, first + 1, "aircraft")) do first = self:skip_fillers(a.e) end
+  -- ("Kindly, Saudia 611, at QTR ...", "MSR985 kindly at SOLAM ...": "kindly", with its comma, before or after the
+  -- callsign, as "please")
+  local function courtesy(k)
+    while self:word(k, "kindly") do
+      k = self:skip_fillers(k + 1)
+      if self.t[k] and self.t[k].kind == "punct" and self.t[k].text == "," then k = self:skip_fillers(k + 1) end
+    end
+    return k
+  end
+  -- ("Run 2 of the Alpine series. ITY577: after SOPER descend ...": the clause opens after the last sentence's end)
+  local b0 = s.b
+  for x = s.b, s.trig - 1 do
+    if self.t[x].kind == "punct" and self.t[x].text:match("^[%.!%?;]$") then b0 = x + 1 end
+  end
+  local first = courtesy(self:skip_fillers(b0))
+  for _, a in ipairs(self:refs_in(first, first + 1, "aircraft")) do first = courtesy(self:skip_fillers(a.e)) end
   -- ("Aegean 603, efcharistó, at DILOP descend ...": a word of courtesy after the callsign)
   while self:word(first, RADIOTELEPHONY) do first = self:skip_fillers(first + 1) end
   -- (the clause's opening words: "at", "over", "overhead", "after", "after/when/on/upon/once passing",
@@ -7125,7 +7187,7 @@ function G:at_waypoint(s, spec)
       self[handler](self, s, spec)
       self.conditioned_ask = self.ask ~= nil
       if not self.ask and self:do_at(self:acids(s)[1], r.name, n0) then
-        self.waypoint_do = { id = self:acids(s)[1], wp = r.name, n = #self.out }
+        self.waypoint_do = { id = self:acids(s)[1], wp = r.name, n = #self.out, e = s.e }
       end
       return true
     end
@@ -12523,6 +12585,7 @@ end
 -- join into a waypoint on the route of an aircraft flying are that waypoint's ident ("until KV"); others stay as
 -- said.
 G.spelled_slots = { ["until"] = true, till = true, to = true, passing = true }
+G.spelled_dist_units = { miles = true, mile = true, nm = true, nmi = true, dme = true, km = true }
 function G.spelled_route_places(text, world)
   local routed = {}
   for _, a in ipairs(world.aircraft) do
@@ -12532,7 +12595,9 @@ function G.spelled_route_places(text, world)
   local toks, bare = plain_words(text)
   return tokens.rewrite(text, toks, function(i)
     local slot = bare[i - 1]
-    if not (slot and (PLACE_SLOTS[slot] or G.spelled_slots[slot]) and lexicon.phonetic[bare[i]])
+    -- ("within 20 miles of lima oscar sierra": "of" after a distance's unit, as "from")
+    local of_dist = slot == "of" and G.spelled_dist_units[bare[i - 2] or ""]
+    if not (slot and (PLACE_SLOTS[slot] or G.spelled_slots[slot] or of_dist) and lexicon.phonetic[bare[i]])
         or toks[i - 1]:match("%p$") then
       return nil
     end
@@ -13721,6 +13786,10 @@ function M.translate(text, world)
     local wd = g.waypoint_do
     for c = wd and not g.ask and wd.n + 1 or 1, wd and not g.ask and #g.out or 0 do
       if g.out[c]:match("^%u+ (%S+)") == wd.id and not g.out[c]:match("^AT") then  -- (one tied elsewhere stands)
+        if c == #g.out and c == wd.n + 1 and wd.e and g:joined_under_waypoint(wd.e) then
+          g.out[c] = "AT " .. wd.id .. " " .. wd.wp .. " DO " .. g.out[c]
+          break
+        end
         g.ask = string.format("I have %s. Should %s also wait until %s passes %s, or run now?",
           table.concat(g.out, " ; "), g.out[c], wd.id, wd.wp)
         break

@@ -3846,6 +3846,9 @@ function m:at_altitude(s)
   while k < s.trig and (self:word(k, "@condition_lead") or (self.t[k].kind == "punct" and self.t[k].text == ",")
       or SUBJECT_LEAD[self.words[k]] or (s.intent == "spd" and SPEED_LEAD[self.words[k]])
       or (s.intent == "vs" and RATE_LEAD[self.words[k]]) or (s.intent == "hdg" and HEADING_LEAD[self.words[k]])
+      -- ("when passing FL150 kindly let him turn left": courtesy and "let" with the aircraft's pronoun)
+      or self:word(k, "kindly") or (self:word(k, "let") and self:word(k + 1, "him her them"))
+      or (self:word(k, "him her them") and self:word(k - 1, "let"))
       -- ("turn it on the right heading 240", "turn to the left": the side's preposition and article)
       or (s.intent == "hdg" and self:word(k, "on to the") and self:word_in(k + 1, math.min(s.trig, k + 3), "left right"))) do
     k = self:skip_fillers(k + 1)
@@ -4130,6 +4133,12 @@ function m:at_distance(s)
       local state = #ids == 1 and self:state(ids[1])
       local name = r and r.name or (dme and state and self:navaid_by_name(p, math.min(s.trig, p + 2), state))
         or (p and state and self:place_by_name(p, math.min(s.e, p + 2), state, true))
+      -- ("20 miles of tango oscar lima": letters spelled in the phonetic alphabet that name no waypoint of the
+      -- route, never the navaid named by the first letter's word alone: asked)
+      if not r and p and self.words[p + 1] and L.phonetic[self.words[p] or ""] and L.phonetic[self.words[p + 1]] then
+        return self:need(string.format("'%s': which place is that? The letters name no waypoint on the route.",
+          self:raw(q.b, math.min(s.trig, p + 3))))
+      end
       if name then
         if #ids ~= 1 then return nil end
         self:mark_used(q.b, q.e)  -- the condition's distance is not the instruction's value
@@ -4141,13 +4150,16 @@ function m:at_distance(s)
       -- condition it cannot place either: asked, never dropped; "you're 15 miles from the marker" informs)
       local opens = self:word(q.b - 1, "at when once")
       for _, r in ipairs(opens and {} or self:refs_in(s.b, q.b, "aircraft")) do opens = opens or r.e == q.b end
-      if q.kind == "dist" and p and self:word(k, "from") and opens then
+      -- ("within 20 miles of lima oscar tango descend 3000": "within" a distance of a place, before the
+      -- instruction word, opens its condition too)
+      local within = self:word(q.b - 1, "within") and q.b < s.trig
+      if q.kind == "dist" and p and (self:word(k, "from") or (within and self:word(k, "of"))) and (opens or within) then
         return self:need(string.format("'%s': from which place? squawk waits for a distance from a named fix, "
           .. "navaid or airport (ATDIST).", self:raw(q.b, math.min(s.e, p + 1))))
       end
       -- ("at 30 DME reduce 180", "at 12 miles descend 4000": a distance opening the instruction with no place it
       -- is counted from is a condition squawk cannot place, asked, never dropped)
-      if q.kind == "dist" and self:word(q.b - 1, "at") and not p then
+      if q.kind == "dist" and (self:word(q.b - 1, "at") or within) and not p then
         return self:need(string.format("'%s' from where? Please name the place the distance is counted from.",
           self:raw(q.b - 1, q.e)))
       end

@@ -808,8 +808,9 @@ return {
                     words = { "it", "may", "can", "is", "free", "to", "fly", "at", "its", "own", "their", "his", "her",
                               "your", "pilot's", "pilots", "pilot", "discretion", "resume", "resumes", "normal",
                               "usual", "speed", "speeds", "no", "restriction", "restrictions", "the", "be", "then",
-                              "again", "back" },
-                    release = { "discretion", "normal", "usual", "restriction", "restrictions" } },
+                              "again", "back", "up", "him", "them" },
+                    -- ("then it is up to him": the speed left to the pilot)
+                    release = { "discretion", "normal", "usual", "restriction", "restrictions", "up" } },
   -- before an instruction word: the instruction is only announced, not given
   not_a_clearance = { "expect" },
   -- a clause opening with one of `opens` (or of `with_is` and "is" or "about"), the aircraft it asks about straight

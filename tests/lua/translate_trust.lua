@@ -7065,7 +7065,10 @@ do
   local nav, nex = navscene({ "CRE KLM55 B738 52.3 4.7 090 FL150 280", "ADDWPT KLM55 SPY" },
     "an instruction after one tied to a waypoint of the route")
   if nav then
-    asked(nex("KLM55 after SPY descend FL120 and slow to 2 9 0"), "the speed after the waypoint's instruction")
+    -- (joined by "and", the speed waits for SPY too, as writers read it (fcd4, cycle 57); after a comma alone, asked)
+    check_eq(nex("KLM55 after SPY descend FL120 and slow to 2 9 0"),
+      "AT KLM55 SPY DO ALT KLM55 FL120 ; AT KLM55 SPY DO SPD KLM55 290")
+    asked(nex("KLM55 after SPY descend FL120, slow to 2 9 0"), "the speed after the waypoint's instruction")
     check_eq(nex("KLM55 descend FL120 and after SPY slow to 2 9 0"), "ALT KLM55 FL120 ; AT KLM55 SPY DO SPD KLM55 290")
   end
 end
@@ -17018,4 +17021,51 @@ do
     check_eq(ex("Please tell me, is the conflict resolution working now?"), "RESO")
     check_eq(ex("Kindly tell me, is the conflict detection functioning now or not?"), "ASAS")
   end
+-- Cycle 57 (fcd4): conditions said with courtesy and Latin American brevity (R180, R181). "kindly" before or after
+-- the callsign and "let him" before the instruction word leave a waypoint, level or speed condition read; "when he
+-- reaches X" passes X; two speeds after two waypoints; a speed kept until a place, then another after it; "until X
+-- keep S, then it is up to him"; an instruction joined by "and" to one tied to a waypoint waits for it too; a
+-- distance "within N miles of" a place spelled, or of none, is asked or read, never dropped
+do
+  local _, ex = scene({ "DEFWPT TOLKO 50.0 8.0", "DEFWPT MARSA 50.5 8.5",
+    "CRE EWG41 A320 49.8 7.8 045 FL310 280", "ADDWPT EWG41 TOLKO", "ADDWPT EWG41 MARSA",
+    "CRE BEL7 A319 49.5 7.5 045 FL230 260", "ADDWPT BEL7 MARSA" })
+  -- courtesy before or after the callsign, "let him/her" before the instruction word
+  check_eq(ex("Kindly, Brussels seven, at MARSA let him turn right heading one two zero"),
+    "AT BEL7 MARSA DO HDG BEL7 120 RIGHT")
+  check_eq(ex("Kindly the Eurowings four one, when he reaches TOLKO, descend flight level two nine zero"),
+    "AT EWG41 TOLKO DO ALT EWG41 FL290")
+  check_eq(ex("EWG41 kindly at TOLKO descend FL250"), "AT EWG41 TOLKO DO ALT EWG41 FL250")
+  check_eq(ex("Kindly, Brussels seven, when she reaches MARSA let her climb to flight level two five zero"),
+    "AT BEL7 MARSA DO ALT BEL7 FL250")
+  asked(ex("Kindly BEL7 at TOLKO descend FL210"), "a waypoint off the route")
+  -- a speed or level reached, said with the aircraft's own speed and "let him"
+  check_eq(ex("Brussels seven, reduce speed to two hundred forty knots, and once her speed is two hundred forty, "
+    .. "let her descend to flight level two zero zero"), "SPD BEL7 240 ; ATSPD BEL7 240 ALT BEL7 FL200")
+  check_eq(ex("BEL7 climb FL270 and when passing flight level two five zero kindly let him turn left heading 010"),
+    "ALT BEL7 FL270 ; ATALT BEL7 FL250 HDG BEL7 10 LEFT")
+  -- a distance within N miles of a place spelled: the route's waypoint, else asked; of no place, asked
+  check_eq(ex("EWG41 within 20 miles of tango oscar lima kilo oscar descend FL200"),
+    "ATDIST EWG41 TOLKO 20 ALT EWG41 FL200")
+  asked(ex("EWG41 within 20 miles of tango oscar lima descend FL200"), "letters that name no route waypoint")
+  asked(ex("EWG41 when 20 miles from tango oscar lima descend FL200"), "letters that name no route waypoint")
+  asked(ex("EWG41 within 20 miles descend FL200"), "a distance from no place")
+  -- two speeds after two waypoints; a speed kept until a place, then another after it
+  check_eq(ex("Eurowings four one, after TOLKO reduce two five zero, after MARSA two two zero"),
+    "AT EWG41 TOLKO DO SPD EWG41 250 ; AT EWG41 MARSA DO SPD EWG41 220")
+  asked(ex("EWG41 at TOLKO reduce 250, at MARSA 220"), "a bare value at a waypoint: met there or started there?")
+  check_eq(ex("EWG41 reduce 240 knots till MARSA, after MARSA 210"), "SPD EWG41 240 ; AT EWG41 MARSA DO SPD EWG41 210")
+  asked(ex("EWG41 reduce 240 knots until MARSA, after TOLKO 210 knots"), "another place after the limit's")
+  -- the limit said first and released after the speed
+  check_eq(ex("EWG41 until MARSA keep two eight zero knots, then it is up to him"), "SPD EWG41 280")
+  asked(ex("EWG41 until MARSA keep 280 knots, then descend FL200"), "an instruction after the limit")
+  -- an instruction joined by "and" to one tied to a waypoint waits for it too; a comma, "then" or "now" asks
+  check_eq(ex("EWG41 after TOLKO reduce 240 knots and descend FL250"),
+    "AT EWG41 TOLKO DO SPD EWG41 240 ; AT EWG41 TOLKO DO ALT EWG41 FL250")
+  asked(ex("EWG41 after TOLKO reduce 240 knots, descend FL250"), "a comma alone")
+  asked(ex("EWG41 after TOLKO reduce 240 knots and descend FL250 now"), "said to run now")
+  asked(ex("EWG41 after TOLKO reduce 240 knots and then descend FL250"), "'then' between")
+  -- a waypoint's condition opening a sentence after another sentence (a list's lead)
+  check_eq(ex("Second trial. 1) BEL7: at MARSA climb FL250. 2) EWG41 descend FL290."),
+    "AT BEL7 MARSA DO ALT BEL7 FL250 ; ALT EWG41 FL290")
 end
