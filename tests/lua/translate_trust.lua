@@ -17021,6 +17021,8 @@ do
     check_eq(ex("Please tell me, is the conflict resolution working now?"), "RESO")
     check_eq(ex("Kindly tell me, is the conflict detection functioning now or not?"), "ASAS")
   end
+end
+
 -- Cycle 57 (fcd4): conditions said with courtesy and Latin American brevity (R180, R181). "kindly" before or after
 -- the callsign and "let him" before the instruction word leave a waypoint, level or speed condition read; "when he
 -- reaches X" passes X; two speeds after two waypoints; a speed kept until a place, then another after it; "until X
