@@ -1140,8 +1140,9 @@ return function(H, f, wrap, compass)
     local names = self:refs_in(1, #self.t + 1, "aircraft")
     local ib, ie = 1, #self.t + 1
     for _, r in ipairs(names) do
+      local other = (r.name or ""):upper() ~= id:upper()
       if r.e <= s.trig and r.e > ib then ib = r.e end
-      if r.b > s.trig and r.b < ie then ie = r.b end
+      if r.b > s.trig and r.b < ie and other then ie = r.b end
     end
     local cb, ce = s.b, s.e
     while cb > ib and self.t[cb - 1].kind ~= "punct" do cb = cb - 1 end
@@ -1202,6 +1203,16 @@ return function(H, f, wrap, compass)
     -- (a flight level said before the rate's word in its segment, "FL380 rate of descent 2000", is flown too)
     for _, q in ipairs(now and self:quantities(s.b, v.b) or {}) do
       if q.kind == "alt" and q.fl and q.b < s.trig and not self.taken[q.b] then levels[#levels + 1] = q.value end
+    end
+    -- (and, when no way is said, a flight level said after the rate in the instruction to this aircraft with
+    -- "altitude" or "level" before it and no condition's word, "vertical rate 1800 ft/min, altitude FL280": the
+    -- level it flies to)
+    for _, q in ipairs(now and dir == 0 and self:quantities(v.e, ie) or {}) do
+      local lead = math.max(v.e, q.b - 3)
+      if q.kind == "alt" and q.fl and self:word_in(lead, q.b + 1, "altitude level")
+          and not self:word_in(lead, q.b + 1, "at passing through reaching until when after before then") then
+        levels[#levels + 1] = q.value
+      end
     end
     for _, ft in ipairs(levels) do
       local cur = now.alt_ft or 0

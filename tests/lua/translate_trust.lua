@@ -16832,6 +16832,10 @@ do
   asked(ex("AZU12 rate two thousand feet per minute"), "a level aircraft, no way said")
   asked(ex("TAM77 reduce rate to 1000"), "a level aircraft, a rate resized with no way")
   check_eq(ex("TAM77 vs 1500"), "VS TAM77 1500")
+  -- the aircraft named after the rate's word bounds nothing; a level said after the rate gives the way
+  check_eq(ex("please set the vertical speed of Azul 12 to 1500 feet per minute descending"), "VS AZU12 -1500")
+  check_eq(ex("TAM77: vertical rate 1200 ft/min, altitude FL190"), "VS TAM77 1200 ; ALT TAM77 FL190")
+  asked(ex("TAM77 vertical speed 1500, then at FL100 turn left heading 200"), "a level of a condition")
   check_eq(ex("TAM77 vertical speed zero"), "VS TAM77 0")
   -- a question about the motion under way is a report asked for
   check_eq(ex("TAM seven seven, confirm you are descending"), "POS TAM77")
