@@ -8511,9 +8511,6 @@ end
 -- (HOLD: squawk's pause has no length). "pause the simulation for five minutes" (the length said of the pause
 -- itself) stays asked.
 function G:break_remarks()
-  local hold = false
-  for k = 1, #self.t do hold = hold or self:intent_at(k) == "hold" end
-  if not hold then return end
   for i = 1, #self.t do
     local w = self.words[i]
     local b = (w == "we" or w == "let's" or w == "lets") and i + 1 or (w == "let" and (self:word(i + 1, "us") and i + 2 or self:word(i + 1, "stop take have") and i + 1))
