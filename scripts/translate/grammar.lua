@@ -7558,7 +7558,9 @@ function G:withheld_start(last)
   while first > 1 do
     local t, w = self.t[first - 1], self.words[first - 1]
     if not (t.kind == "punct" or t.filler or SC_WORDS[w] or G.apology[w] or G.sc_withheld_hesitations[w]) then break end
-    marked = marked or t.filler or SC_MARKERS[w] or G.apology[w] or G.sc_withheld_hesitations[w] or false
+    -- (a courtesy, "can you pause it please, un momento", marks nothing: the moment asked for is the pause's)
+    marked = marked or (t.filler and w ~= "please" and w ~= "kindly") or SC_MARKERS[w] or G.apology[w]
+      or G.sc_withheld_hesitations[w] or false
     first = first - 1
   end
   while first < b and self.t[first].kind == "punct" do first = first + 1 end
@@ -8622,6 +8624,27 @@ end
 -- alone in its clause (the request's edge or punctuation before and after it, fillers between), or opening the
 -- request ("oké continue", transcribed with no break after it: no value before it to call fine), is marked in
 -- `inside`
+-- "ok guys we stop here five minutes, freeze the simulation please", "let's take a break of ten minutes, pause
+-- the sim": a clause opening with the speakers' "we"/"let's" (read "let", its "'s" dropped)/"let us" that says they stop or take a break, with one length
+-- of time and no aircraft in it, is a remark set aside when another clause of the request asks for the pause
+-- (HOLD: squawk's pause has no length). "pause the simulation for five minutes" (the length said of the pause
+-- itself) stays asked.
+function G:break_remarks()
+  for i = 1, #self.t do
+    local w = self.words[i]
+    local b = (w == "we" or w == "let's" or w == "lets") and i + 1 or (w == "let" and (self:word(i + 1, "us") and i + 2 or self:word(i + 1, "stop take have") and i + 1))
+    local e = i
+    while b and e <= #self.t and self.t[e].kind ~= "punct" do e = e + 1 end
+    local qs = b and self:quantities(i, e) or {}
+    if b and self:word_in(b, math.min(e, b + 3), "stop break") and #qs == 1 and qs[1].kind == "time"
+        and #self:refs_in(i, e, "aircraft") == 0 then
+      local other = false
+      for k = 1, #self.t do other = other or ((k < i or k >= e) and self:intent_at(k) == "hold") end
+      if other then self:set_aside(i, e - 1) end
+    end
+  end
+end
+
 function G:aside_alone(i, inside)
   local phrases = G.asides_alone[self.t[i].text]
   if not phrases then return end  -- (called at every token: most start no such phrase)
@@ -13590,9 +13613,10 @@ function M.translate(text, world)
   -- (and after "vertical speed": "vertical speed +1200")
   if text:find("%+%d") then
     text = text:gsub("()%f[%w]([%a/]+)(%s*)%+(%d)", function(at, w, space, d)
-      if lexicon.signed_rate_words[w:lower()]
-          or (w:lower() == "speed" and text:sub(1, at - 1):lower():find("vertical%s+$")) then
-        return w .. space .. d
+      if lexicon.signed_rate_words[w:lower()] then return w .. space .. d end
+      -- (after "vertical speed" the plus is said as the word, the rate's sign: handlers' m:vspeed)
+      if w:lower() == "speed" and text:sub(1, at - 1):lower():find("vertical%s+$") then
+        return w .. " plus " .. d
       end
     end)
   end
@@ -13726,6 +13750,7 @@ function M.translate(text, world)
   end
   g:route_remarks()
   g:state_remarks()
+  g:break_remarks()
   g:destination_told()
   g:destination_preface()
   g:onward_remark()

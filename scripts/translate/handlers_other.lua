@@ -3920,6 +3920,15 @@ return function(H, f, compass)
     -- "speed the simulation up by a factor of ten": a rate, no duration
     local factor = self:find_word(s.trig, s.e, "factor")
     if not q and factor < s.e then return self:time_mult({ b = factor, trig = factor, e = s.e }) end
+    -- "put fast time please, times four": "times" straight before a number names the rate, a multiple of real
+    -- time (DTMULT), as "four times" does
+    local times = self:find_word(s.trig + 1, s.e, "times")
+    local n = not q and times < s.e and self:quantities(times + 1, s.e)[1]
+    if n and n.kind == "plain" and n.b == times + 1 and n.value > 1 then
+      self:take(n)
+      self:mark_used(times, times + 1)
+      return self:emit("DTMULT " .. f.num(n.value))
+    end
     if not q then
       -- "half an hour", "a quarter of an hour": a fraction of a unit said in words
       local frac = self:find_word(s.trig + 1, s.e, "@fractions")

@@ -1226,9 +1226,18 @@ return function(H, f, wrap, compass)
     -- descent to 2500" descends, "reduce your rate of climb to 500" climbs); otherwise the verb's direction
     -- (in the instruction's whole clause, up to the punctuation around it: "descend with vertical speed 2000",
     -- "vertical speed 2000 feet per minute for descend" descend)
+    -- (the instruction to this aircraft: from the aircraft reference before the rate to the next one)
+    local names = self:refs_in(1, #self.t + 1, "aircraft")
+    local ib, ie = 1, #self.t + 1
+    for _, r in ipairs(names) do
+      local other = (r.name or ""):upper() ~= id:upper()
+      if r.e <= s.trig and r.e > ib then ib = r.e end
+      if r.b > s.trig and r.b < ie and other then ie = r.b end
+    end
     local cb, ce = s.b, s.e
-    while cb > 1 and self.t[cb - 1].kind ~= "punct" do cb = cb - 1 end
-    while ce <= #self.t and self.t[ce].kind ~= "punct" do ce = ce + 1 end
+    while cb > ib and self.t[cb - 1].kind ~= "punct" do cb = cb - 1 end
+    while ce < ie and self.t[ce].kind ~= "punct" do ce = ce + 1 end
+    ce = math.min(ce, ie)
     -- (both ways said in that clause are asked; one said after "then", before or after the rate, is another
     -- instruction's: "climb FL300 then descend at 2000 fpm")
     local mb, me = cb, s.trig
@@ -1240,9 +1249,36 @@ return function(H, f, wrap, compass)
     local down = self:word_in(cb, ce, "descent descend descending")
     local up = self:word_in(cb, ce, "climb climbing")
     local dir = (down and not up) and -1 or (up and not down) and 1 or self:direction(s)
+    -- (none in its clause: a climb's or descent's word said elsewhere in the instruction to this aircraft gives
+    -- the way: "expedite descent, vertical speed
+    -- 3000" descends; both ways said there are asked)
+    if dir == 0 and not down and not up then
+      local wu, wd
+      for k = ib, ie - 1 do
+        if (k < cb or k >= ce) and not (self.noted[k] or self:in_reason(k)) then
+          if self:motion_said(k, "@up", names) or self:word(k, "climb climbing") then wu = wu or k end
+          if self:motion_said(k, "@down", names) or self:word(k, "descent descend descending") then wd = wd or k end
+        end
+      end
+      if wu and wd then
+        return self:need(string.format("Climb or descend? I heard '%s' and '%s' for %s, with no correction between.",
+          self.t[math.min(wu, wd)].raw, self.t[math.max(wu, wd)].raw, id))
+      end
+      dir = wd and -1 or wu and 1 or 0
+    end
     -- ("climb FL230, passing 150 reduce rate to 1000": "reduce" or "increase" said of the rate, no motion named,
     -- changes its size, not its way: a level flown to in the request gives the way)
     local resized = not down and not up and self:word_in(cb, ce, "rate") and self:word_in(cb, ce, "reduce increase decrease")
+    -- (so "reduce" or "increase" there is no way: "reduce rate to 1000" to a climbing aircraft climbs)
+    if resized and self:word_in(cb, ce, "reduce increase decrease") then
+      local said_way = false
+      for k = ib, ie - 1 do
+        if (self:word(k, "@up") or self:word(k, "@down")) and not self:word(k, "reduce increase decrease") then
+          said_way = true
+        end
+      end
+      if not said_way then dir = 0 end
+    end
     -- ("be at FL300 by LAPOS, rate 2500": no direction said, the way to the level given it before in the
     -- request, a constraint's too; "FL300, rate of climb 2500" said to an aircraft above FL300 names the
     -- other way: asked)
@@ -1257,6 +1293,16 @@ return function(H, f, wrap, compass)
     -- (a flight level said before the rate's word in its segment, "FL380 rate of descent 2000", is flown too)
     for _, q in ipairs(now and self:quantities(s.b, v.b) or {}) do
       if q.kind == "alt" and q.fl and q.b < s.trig and not self.taken[q.b] then levels[#levels + 1] = q.value end
+    end
+    -- (and, when no way is said, a flight level said after the rate in the instruction to this aircraft with
+    -- "altitude" or "level" before it and no condition's word, "vertical rate 1800 ft/min, altitude FL280": the
+    -- level it flies to)
+    for _, q in ipairs(now and dir == 0 and self:quantities(v.e, ie) or {}) do
+      local lead = math.max(v.e, q.b - 3)
+      if q.kind == "alt" and q.fl and self:word_in(lead, q.b + 1, "altitude level")
+          and not self:word_in(lead, q.b + 1, "at passing through reaching until when after before then") then
+        levels[#levels + 1] = q.value
+      end
     end
     for _, ft in ipairs(levels) do
       local cur = now.alt_ft or 0
@@ -1283,6 +1329,20 @@ return function(H, f, wrap, compass)
           f.int(cur), dir < 0 and "descend" or "climb", f.int(math.abs(fpm)), f.alt(ft, level.fl)))
       end
       dir = way
+    end
+    -- no way said nor flown to in the request: the aircraft's own climb or descent under way towards its selected
+    -- level gives it ("vertical speed 1000" to an aircraft descending to FL100 descends); an aircraft level has
+    -- none to keep, so a spoken rate is asked. The typed abbreviation ("vs 1500", "roc 1500") is TrafScript's
+    -- own VS, its plain number a climb; a plus said or typed before the value ("vertical speed +900") is its sign.
+    if dir == 0 and fpm > 0 and not self:word(v.b - 1, "plus") then
+      local a = self:state(id)
+      local togo = a and a.sel_alt_ft and a.alt_ft and a.sel_alt_ft - a.alt_ft or 0
+      if math.abs(togo) > 50 then
+        dir = togo > 0 and 1 or -1
+      elseif a and not self:word(s.trig, "vs roc") then
+        return self:need(string.format("Climb or descend at %s ft/min? %s is level at %s and no way was said.",
+          f.int(fpm), id, (a.alt_ft or 0) >= 10000 and f.alt(a.alt_ft, true) or f.int(a.alt_ft or 0) .. " ft"))
+      end
     end
     -- ("climb vs minus 2000", "descend at plus 2000 fpm": a sign said against the motion said is asked)
     if (fpm < 0 and up and not down) or (self:word(v.b - 1, "plus") and down and not up) then

@@ -244,6 +244,22 @@ return function(intent, rule, words)
     local q = g:skip_fillers(1)
     return g:word(q, "is") and g:has_ref(q + 1, i, "aircraft") and #g:quantities(1, #g.t + 1) == 0
   end }
+  -- "confirm you are descending", "confirm you're still climbing?": a question to the pilot about the motion
+  -- under way, no value in its clause, asks for its report (POS); "confirm you are descending FL100" (a level
+  -- in it) is a clearance asked about (G:question_back)
+  rule { "climbing descending", "pos", when = function(g, i)
+    local k = i - 1
+    if g:word(k, "still now") then k = k - 1 end
+    if g:word(k, "are") and g:word(k - 1, "you") then k = k - 2
+    elseif g:word(k, "you're youre") then k = k - 1
+    elseif g:word(k, "re") and g:word(k - 1, "you") then k = k - 2
+    else return false end
+    if g:word(k, "that") then k = k - 1 end
+    if not g:word(k, "confirm") then return false end
+    local e = i + 1
+    while e <= #g.t and g.t[e].kind ~= "punct" do e = e + 1 end
+    return #g:quantities(i, e) == 0 and #g:refs_in(i, e, "waypoint") == 0
+  end }
   -- (the aircraft said first, before a comma, and the question of it by a pronoun: "the Delta, what's it up to?")
   rule { "up", "pos", next = "to", when = function(g, i)
     local q = g:skip_fillers(1)

@@ -17071,3 +17071,50 @@ do
   check_eq(ex("Second trial. 1) BEL7: at MARSA climb FL250. 2) EWG41 descend FL290."),
     "AT BEL7 MARSA DO ALT BEL7 FL250 ; ALT EWG41 FL290")
 end
+-- fvs (cycle 57, R181): a vertical speed's way and the supervisor's asides about the simulation. A rate takes its
+-- sign from a climb's or descent's word anywhere in the instruction to its aircraft (a hazard: "expedite descent,
+-- vertical speed 3000" climbed), never from another aircraft's; with no way said, from the aircraft's own climb or
+-- descent under way, and a level aircraft is asked (the typed "vs 1500" stays TrafScript's climb).
+do
+  local _, ex = scene({ "CRE TAM77 A320 -23.9 -45.7 270 FL150 270", "CRE AZU12 E195 -23.5 -47.6 055 FL130 250",
+    "CRE LAN90 B789 -32.7 -71.4 120 FL240 290", "ALT LAN90 FL110", "CRE ARG5 B738 -34.2 -57.7 220 9000 250",
+    "ALT ARG5 FL190" })
+  -- the way said in another clause of the same instruction
+  check_eq(ex("TAM seven seven, expedite descent, vertical speed two thousand five hundred"), "VS TAM77 -2500")
+  check_eq(ex("TAM77, expedite your descent, v/s 3000 please"), "VS TAM77 -3000")
+  check_eq(ex("Azul one two, turn left heading 200, vertical speed one thousand two hundred, start descent now"),
+    "HDG AZU12 200 LEFT ; VS AZU12 -1200")
+  check_eq(ex("AZU12 expedite climb, vertical speed 2000"), "VS AZU12 2000")
+  check_eq(ex("TAM77 vertical speed one thousand five hundred feet per minute, descending"), "VS TAM77 -1500")
+  -- another aircraft's way is not this one's
+  asked(ex("TAM77 descend FL100, AZU12 vertical speed 1000"), "a level aircraft, the descent another's")
+  asked(ex("AZU12 vertical speed 1000, TAM77 descend FL100"), "a level aircraft, the descent another's")
+  -- both ways said in the instruction are asked
+  asked(ex("TAM77 expedite descent, vertical speed 2000, climbing"), "both ways")
+  -- no way said: the climb or descent under way gives it; a level aircraft is asked
+  check_eq(ex("LAN niner zero, vertical speed one thousand"), "VS LAN90 -1000")
+  check_eq(ex("ARG5 rate one thousand five hundred"), "VS ARG5 1500")
+  check_eq(ex("LAN90, increase your rate to two thousand"), "VS LAN90 -2000")
+  check_eq(ex("ARG5 reduce rate to 800"), "VS ARG5 800")
+  asked(ex("Tam seven seven, vertical speed one thousand"), "a level aircraft, no way said")
+  asked(ex("AZU12 rate two thousand feet per minute"), "a level aircraft, no way said")
+  asked(ex("TAM77 reduce rate to 1000"), "a level aircraft, a rate resized with no way")
+  check_eq(ex("TAM77 vs 1500"), "VS TAM77 1500")
+  -- the aircraft named after the rate's word bounds nothing; a level said after the rate gives the way
+  check_eq(ex("please set the vertical speed of Azul 12 to 1500 feet per minute descending"), "VS AZU12 -1500")
+  check_eq(ex("TAM77: vertical rate 1200 ft/min, altitude FL190"), "VS TAM77 1200 ; ALT TAM77 FL190")
+  asked(ex("TAM77 vertical speed 1500, then at FL100 turn left heading 200"), "a level of a condition")
+  check_eq(ex("TAM77 vertical speed zero"), "VS TAM77 0")
+  -- a question about the motion under way is a report asked for
+  check_eq(ex("TAM seven seven, confirm you are descending"), "POS TAM77")
+  check_eq(ex("AZU12 confirm you're still climbing?"), "POS AZU12")
+  asked(ex("TAM77 confirm you are descending flight level one two zero"), "a clearance asked about")
+  -- the speakers' break beside a pause; fast time "times N"; a moment asked for after a courtesy
+  check_eq(ex("ok team we stop here ten minutes, pause the simulation please"), "HOLD")
+  check_eq(ex("let's take a break of five minutes, freeze it"), "HOLD")
+  asked(ex("pause the simulation for five minutes"), "a length said of the pause")
+  check_eq(ex("now fast time please, times three"), "DTMULT 3")
+  check_eq(ex("put fast time times two"), "DTMULT 2")
+  check_eq(ex("could you freeze it please, un momento"), "HOLD")
+  asked(ex("TAM77 climb FL200, uh, one moment"), "a hesitation taking the climb back")
+end
