@@ -1334,11 +1334,22 @@ return function(H, f, wrap, compass)
     -- level gives it ("vertical speed 1000" to an aircraft descending to FL100 descends). An aircraft level keeps
     -- BlueSky's reading of the plain number, a climb rate: the rate selected moves nothing until a level is given,
     -- and ALT zeroes a selected rate of the wrong sign (../shared/facts/bluesky.md, ALT); a plus said or typed
-    -- before the value ("vertical speed +900") is its sign.
+    -- before the value ("vertical speed +900") is its sign. A level said elsewhere in the request (a condition's,
+    -- "then at FL100 turn") may be the one the rate was meant to reach: asked.
     if dir == 0 and fpm > 0 and not self:word(v.b - 1, "plus") then
       local a = self:state(id)
       local togo = a and a.sel_alt_ft and a.alt_ft and a.sel_alt_ft - a.alt_ft or 0
-      if math.abs(togo) > 50 then dir = togo > 0 and 1 or -1 end
+      if math.abs(togo) > 50 then
+        dir = togo > 0 and 1 or -1
+      elseif a and not self:word(s.trig, "vs roc") then
+        for _, q in ipairs(self:quantities(1, #self.t + 1)) do
+          if q.kind == "alt" and (q.b < v.b or q.b >= v.e) and math.abs(q.value - (a.alt_ft or 0)) > 50 then
+            return self:need(string.format("Climb or descend at %s ft/min? %s is level at %s; is %s the level to reach?",
+              f.int(fpm), id, (a.alt_ft or 0) >= 10000 and f.alt(a.alt_ft, true) or f.int(a.alt_ft or 0) .. " ft",
+              f.alt(q.value, q.fl)))
+          end
+        end
+      end
     end
     -- ("climb vs minus 2000", "descend at plus 2000 fpm": a sign said against the motion said is asked)
     if (fpm < 0 and up and not down) or (self:word(v.b - 1, "plus") and down and not up) then
