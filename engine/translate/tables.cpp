@@ -19,13 +19,15 @@ Tables::Tables(std::vector<Airline> airlines, std::vector<TypeName> types, std::
   std::sort(designators_.begin(), designators_.end());
   designators_.erase(std::unique(designators_.begin(), designators_.end()), designators_.end());
   for (const auto& a : airlines_) max_words_ = std::max(max_words_, text::split_ws(a.telephony).size());
+  for (size_t i = 0; i < airlines_.size(); ++i) telephony_index_.emplace(airlines_[i].telephony, i);
+  for (const auto& t : types_)
+    if (!t.maker.empty()) makers_.insert(t.maker);
 }
 
 std::optional<std::string> Tables::airline_by_telephony(std::string_view phrase) const {
-  const std::string p = text::lower(phrase);
-  for (const auto& a : airlines_)
-    if (p == a.telephony) return a.icao;
-  return std::nullopt;
+  const auto it = telephony_index_.find(text::lower(phrase));
+  if (it == telephony_index_.end()) return std::nullopt;
+  return airlines_[it->second].icao;
 }
 
 std::vector<std::string> Tables::telephony_of(std::string_view icao) const {
@@ -36,8 +38,7 @@ std::vector<std::string> Tables::telephony_of(std::string_view icao) const {
 }
 
 bool Tables::is_manufacturer(std::string_view word) const {
-  const std::string w = text::lower(word);
-  return std::any_of(types_.begin(), types_.end(), [&](const TypeName& t) { return !t.maker.empty() && w == t.maker; });
+  return makers_.count(text::lower(word)) > 0;
 }
 
 std::optional<std::string> Tables::aircraft_type(std::string_view manufacturer, std::string_view model) const {

@@ -17,6 +17,8 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 #include "translate/vocabulary.h"
@@ -56,6 +58,12 @@ class Tables {
   std::vector<std::pair<std::string, char>> phonetic_;
   size_t max_words_ = 1;
   Vocabulary vocabulary_;
+  // Indexes built once by the constructor, read by the lookups above:
+  // telephony_index_ maps each lower-case telephony to the index in airlines_
+  // of its first airline (the one a scan in order would find); makers_ holds
+  // every non-empty lower-case maker of types_.
+  std::unordered_map<std::string, size_t> telephony_index_;
+  std::unordered_set<std::string> makers_;
 };
 
 }  // namespace squawk::translate
