@@ -743,6 +743,8 @@ local names = {
     { "alliance air", "LLR" },
     { "flagship", "EDV" },
     { "norstar", "NSZ" },
+    { "swoop", "WSW" },
+    { "jordan aviation", "JAV" },
     -- Lebanon's airline by its name, beside its telephony Cedar Jet ("the Middle East Airlines 322"; "MEA" is
     -- also an English word's letters, never read alone)
     { "middle east airlines", "MEA" },

@@ -17118,3 +17118,11 @@ do
   check_eq(ex("could you freeze it please, un momento"), "HOLD")
   asked(ex("TAM77 climb FL200, uh, one moment"), "a hesitation taking the climb back")
 end
+
+-- Cycle 57 (lead): airlines by the name their own rounds use, read before the unknown-airline check asks
+do
+  local _, ex = scene({ "CRE WSW201 B38M 49.10 -123.30 145 7000 250", "CRE JAV611 A320 31.9 35.9 090 FL200 280" })
+  check_eq(ex("Swoop two zero one, climb to one six thousand"), "ALT WSW201 16000")
+  check_eq(ex("Please, the Jordan Aviation six one one, what is his position?"), "POS JAV611")
+  asked(ex("Swoop 202 climb FL200"), "no SWOOP202 flying")
+end
