@@ -17123,6 +17123,6 @@ end
 do
   local _, ex = scene({ "CRE WSW201 B38M 49.10 -123.30 145 7000 250", "CRE JAV611 A320 31.9 35.9 090 FL200 280" })
   check_eq(ex("Swoop two zero one, climb to one six thousand"), "ALT WSW201 16000")
-  check_eq(ex("Please, the Jordan Aviation six one one, what is his position?"), "POS JAV611")
+  check_eq(ex("Jordan Aviation six one one, descend flight level one five zero"), "ALT JAV611 FL150")
   asked(ex("Swoop 202 climb FL200"), "no SWOOP202 flying")
 end
