@@ -17126,3 +17126,12 @@ do
   check_eq(ex("Jordan Aviation six one one, descend flight level one five zero"), "ALT JAV611 FL150")
   asked(ex("Swoop 202 climb FL200"), "no SWOOP202 flying")
 end
+
+-- Cycle 57 (lead): a condition said after its instruction and before a semicolon is asked about like one before a
+-- comma: "reduce to 210 knots when it reaches 8000 ft; descend to 7000 ft" gave the descent the condition
+do
+  local _, ex = scene({ "CRE SWR3KM A320 46.9 8.5 090 FL120 280" })
+  asked(ex("SWR3KM: reduce speed to 210 knots when it reaches 8000 ft; descend to 7000 ft."), "which waits")
+  check_eq(ex("SWR3KM descend to 7000 ft; reduce speed to 210 knots when it reaches 8000 ft"),
+    "ALT SWR3KM 7000 ; ATALT SWR3KM 8000 SPD SWR3KM 210")
+end
