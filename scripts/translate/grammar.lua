@@ -3586,10 +3586,10 @@ function G:bare_bound(k)
 end
 
 -- Where a condition opened at k and said after its instruction ends, its value's quantity ending at e: at the clause
--- after a comma, a semicolon or "and" that holds an instruction and a word saying it runs at once (lexicon.at_once_words:
--- "descend FL320 once it has slowed to 260 knots, and reduce to 260 knots now"), else the request's end. With no
--- such word ("descend FL320 once it has slowed to 260 knots, and turn left heading 200"), which instruction waits
--- is asked (self.ask).
+-- after a comma, a semicolon or "and" that holds an instruction and a word saying it runs at once
+-- (lexicon.at_once_words: "descend FL320 once it has slowed to 260 knots, and reduce to 260 knots now"), else the
+-- request's end. With no such word ("descend FL320 once it has slowed to 260 knots, and turn left heading 200"),
+-- which instruction waits is asked (self.ask).
 function G:condition_closed(k, e)
   local x = self.t[e] and (self.t[e].text == "," or self.t[e].text == ";") and e + 1 or e
   if self:word(x, "and") then x = x + 1 end
