@@ -4776,7 +4776,8 @@ function G:segments(b, e)
           local w = self:refs_in(between[1].e, tr.pos, "waypoint")
           local r = w[#w]
           dist_between = dist_between or (r ~= nil and self:skip_fillers(r.e) == tr.pos
-            and (self:word(r.b - 1, "after passing over leaving reaching") or self:passes_said(r.b - 1)))
+            and (self:word(r.b - 1, "after passing over leaving reaching") or self:passes_said(r.b - 1)
+              or (self:word(r.b - 1, "pass") and self:word(r.b - 2, "after when once"))))
           -- ("reduce 230, when level reduce 210": the level reached, "when/once (it's) level", likewise)
           local lv = tr.pos - 1
           while lv > between[1].e and self.t[lv].kind == "punct" do lv = lv - 1 end
@@ -5911,6 +5912,9 @@ function G:parse(b, e)
         local id = self.out[n_before + 1]:match("^%u+ (%S+)")
         if self:do_at(id, until_wp.name, n_before) then
           n_before = n_before - self:kept_until(segs[k - 1], seg_out[k - 1], n_before, id)
+          -- ("..., after ONOGI Mach .78 and heading 100": what follows of the same aircraft waits for the place
+          -- too, joined by "and", or is asked; never sent now unasked)
+          if until_wp.after then self.waypoint_do = { id = id, wp = until_wp.name, n = #self.out, e = s.e } end
         end
       elseif until_lvl and not at and not self.ask and #self.out > n_before then
         at = "ATALT " .. self.out[n_before + 1]:match("^%u+ (%S+)") .. " "
@@ -6282,7 +6286,8 @@ function G:trailing_fix(s)
   -- ("descend FL250 after Weser", "reduce 250 after WSR": "after" straight after the value of a level, speed,
   -- heading or rate, and the waypoint, its code or a name of the aircraft's route, closing the request;
   -- "expect lower after KURDI" is no such condition, nor ADDWPT's "after")
-  if self:word(c, "after") and not self:word(k, "it you passing passes reaching reaches overflying") then
+  -- ("climb 9500 meter after pass XPC": the verb's bare form straight after "after" is read at the verb below)
+  if self:word(c, "after") and not self:word(k, "it you passing passes reaching reaches overflying pass reach") then
     if self.u:used(c) or not self:value_before(s, lead) then return nil end
     local e = s.e
     while e > k and self.t[e - 1].kind == "punct" and self.t[e - 1].text ~= "," do e = e - 1 end
@@ -6509,7 +6514,15 @@ function G:after_place_value(i)
   local before = self:quantities(math.max(1, c - 8), c)
   local p = before[#before]
   if not p or p.e ~= c then return nil end
-  return self:value_again_kind(p, q)
+  local kind = self:value_again_kind(p, q)
+  if kind then return kind end
+  -- ("climb FL310, after ONOGI Mach .78", "speed 250, after LOMKI FL200": a value closing the clause by its own
+  -- unit, a Mach number, knots, FL or feet, names its instruction whatever the value before)
+  local nx = self.t[q.e]
+  if nx and nx.kind ~= "punct" and not self:word(q.e, "and") then return nil end
+  if q.kind == "mach" or q.kind == "speed" then return "spd" end
+  if q.kind == "alt" and (q.fl or self:word(q.e - 1, "@feet")) then return "alt" end
+  return nil
 end
 
 -- True when segment k follows the one before it by a bare "then" in the formal phraseology of a
@@ -6597,7 +6610,9 @@ function G:when_reached(s)
   local slowed = verb
   if self:word(slowed, "you've they've it's he's she's") then slowed = self:skip_fillers(slowed + 1) end
   if self:word(slowed, "has have 've") then slowed = self:skip_fillers(slowed + 1) end
-  if self:word(slowed, "@speed_verbs") then
+  -- ("reduce speed 250, after reducing descend FL100", "after slowing, ...": "after" and the gerund, the slowing done)
+  if self:word(slowed, "@speed_verbs")
+      or (self:word(c, "after") and slowed == verb and self:word(slowed, "reducing slowing decelerating")) then
     verb = slowed
     local k = self:skip_fillers(verb + 1)
     if self:word(k, "down up") then k = self:skip_fillers(k + 1) end
@@ -6610,7 +6625,7 @@ function G:when_reached(s)
     return self:instruction_lead(self:skip_fillers(slowed + 2), s.trig) == s.trig
   end
   local have = subject and self:word(verb, "have got") and self:word(self:skip_fillers(verb + 1), "it that")
-  if not (have or self:word(verb, "reaching reach reaches hit hits")) then return false end
+  if not (have or self:word(verb, "reaching reach reaches reached hit hits")) then return false end
   local k = self:skip_fillers(verb + 1)
   -- ("once it reaches that height", "when it reaches that speed": the value named by its kind)
   local kind
@@ -6618,7 +6633,8 @@ function G:when_reached(s)
     kind = self:word(self:skip_fillers(k + 1), "speed") and "speed" or nil
     k = self:skip_fillers(k + 1)
   end
-  if self:word(k, "it that height altitude level speed") then k = self:skip_fillers(k + 1) end
+  -- (the instruction's own word is no noun of the value reached: "after reach, speed 280")
+  if k ~= s.trig and self:word(k, "it that height altitude level speed") then k = self:skip_fillers(k + 1) end
   return self:instruction_lead(k, s.trig) == s.trig, kind
 end
 
@@ -6965,6 +6981,8 @@ function G:at_waypoint(s, spec)
     if self.t[x].kind == "punct" and self.t[x].text:match("^[%.!%?;]$") then b0 = x + 1 end
   end
   local first = courtesy(self:skip_fillers(b0))
+  -- ("For JJP501, when it reaches HANWA, please descend ...": "for" before the callsign names the addressee)
+  if self:word(first, "for") and #self:refs_in(first + 1, first + 2, "aircraft") > 0 then first = first + 1 end
   for _, a in ipairs(self:refs_in(first, first + 1, "aircraft")) do first = courtesy(self:skip_fillers(a.e)) end
   -- ("Aegean 603, efcharistó, at DILOP descend ...": a word of courtesy after the callsign)
   while self:word(first, RADIOTELEPHONY) do first = self:skip_fillers(first + 1) end
@@ -6975,13 +6993,17 @@ function G:at_waypoint(s, spec)
   local passed = "passing leaving overflying reaching past over"
   if self:word(first, "at over overhead after passing reaching leave leaving") then
     opens = self:skip_fillers(first + 1)
-    if self:word(first, "after") and self:word(opens, passed) then
+    -- ("CES5511 after AND, descend ...": a waypoint the matcher read from a word kept as a filler, "and")
+    for _, r in ipairs(refs) do if r.b == first + 1 and r.b < opens then opens = r.b end end
+    -- ("after pass ANDIN climb to 8100 meter": the verb's bare form, as "after passing")
+    if self:word(first, "after") and self:word(opens, passed .. " pass") then
       opens = self:skip_fillers(opens + 1)
     elseif self:word(first, "after") and self:passes_said(self:skip_fillers(opens + 1)) then
       -- ("after it passes NIKAS descend FL300": as "after passing")
       opens = self:skip_fillers(self:skip_fillers(opens + 1) + 1)
     end
-  elseif self:word(first, "when on upon once") and self:word(self:skip_fillers(first + 1), passed) then
+  elseif self:word(first, "when on upon once") and self:word(self:skip_fillers(first + 1), passed)
+      or self:word(first, "when once") and self:word(self:skip_fillers(first + 1), "pass") then
     opens = self:skip_fillers(self:skip_fillers(first + 1) + 1)
   elseif self:word(first, "when once") and self:passes_said(self:skip_fillers(self:skip_fillers(first + 1) + 1)) then
     -- ("when it passes KONAK turn left heading 240", "after it passes NIKAS, FL300", "once you cross DIPOS,
@@ -10470,6 +10492,12 @@ function G:said_last(i, near, own_clause)
     rest = rest + 1
   end
   if remark and rest > #self.t then return true end
+  -- (only thanks or "please" after the place and its comma: "until HARIS, thank you.")
+  local thanks = k
+  while r and self.t[thanks] and (self.t[thanks].kind == "punct" or self:word(thanks, "thank thanks you please")) do
+    thanks = thanks + 1
+  end
+  if r and thanks > k and thanks > #self.t then return true end
   local stop = k
   while self.t[k] and self.t[k].kind == "punct" and self.t[k].text ~= "," do k = k + 1 end
   -- (a sentence after it set aside as a remark, G:in_reason: "until 4 miles on final? I understand that's what
@@ -12869,6 +12897,17 @@ end
 -- the text as it is (the number is asked about).
 G.terse_list = { labels = set_of(lexicon.terse_list.labels), units = set_of(lexicon.terse_list.units),
   level = set_of(lexicon.terse_list.level), joins = set_of(lexicon.terse_list.joins), rate = set_of(lexicon.terse_list.rate) }
+-- "after reach 3000 meter, speed up", "after reach 260 then descend": "reach" straight after "after" is the verb
+-- of reaching (the matcher reads it so after "when", "once" or a subject only), unless an aircraft of the
+-- telephony Reach (RCH) flies: the text with "after reaching" in its place; else the text as said.
+function G.after_reach(text, world)
+  if not text:lower():find("after%s+reach%f[%A]") then return text end
+  for _, a in ipairs(world.aircraft or {}) do
+    if (a.id or ""):upper():match("^RCH") then return text end
+  end
+  return (text:gsub("(%f[%a][Aa][Ff][Tt][Ee][Rr]%s+)([Rr][Ee][Aa][Cc][Hh])(%f[%A])", "%1%2ing%3"))
+end
+
 function G.terse_altitude(text, world)
   if not text:find("%d%d%d%d") then return text end
   -- (the first word names an aircraft flying)
@@ -13675,7 +13714,7 @@ function M.translate(text, world)
   text = G.confirmed_route_places(G.spelled_route_places(G.syllable_route_places(typed_places(G.named_idents(
     G.spoken_user_waypoints(G.navaids_by_kind(written_forms(text, world), world), world), world),
     world), world), world), world)
-  text = G.terse_altitude(spelled_airports(text, world), world)
+  text = G.terse_altitude(G.after_reach(spelled_airports(text, world), world), world)
   local run_on
   text, run_on = G.run_on_values(text)
   if run_on then return { commands = {}, ask = run_on } end

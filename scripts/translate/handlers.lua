@@ -3736,8 +3736,10 @@ function m:on_the_way(id, ft)
   return false
 end
 -- words between the level and a speed's own word, part of the instruction ("when it passes FL130 drop the
--- speed to 230", "... bring its speed back to 240", "... make its speed 260", "... make decrease speed to 250")
+-- speed to 230", "... bring its speed back to 240", "... make its speed 260", "... make decrease speed to 250", "when
+-- pass 7200 meter change speed to mach 0.76")
 local SPEED_LEAD = { drop = true, bring = true, cut = true, take = true, pull = true, knock = true, put = true, make = true, the = true,
+                     change = true,
                      its = true, your = true, his = true, her = true, their = true }
 -- words between the level and a rate's own word, part of the instruction ("passing 150 reduce rate to 1000",
 -- "leaving FL100 increase your rate to 2000", "after passing FL150 descend rate 1500": the rate's direction)
@@ -3867,7 +3869,8 @@ function m:at_altitude(s)
   local groupwise = passed and self:groupwise_level(q)
   -- ("climb FL230, and when he is at 230 Mach .78": three digits alone after "at", the level this request cleared
   -- the aircraft to, are that level; checked for the instruction's aircraft below)
-  local given = q.kind == "plain" and self:word(a, "at") and self:level_given(q)
+  -- (so are they after a verb of reaching: "climb to FL170, and when it reaches 170, direct PERCH")
+  local given = q.kind == "plain" and (self:word(a, "at") or reached) and self:level_given(q)
   fl_digits = fl_digits or given
   if q.kind ~= "alt" and not fl_digits and not groupwise
       and not (q.kind == "plain" and (q.number.thousand or q.value >= 1000)) then
