@@ -2491,11 +2491,6 @@ return function(H, f, compass)
       local from = at < s.trig and self:refs_in(at + 1, at + 2, "waypoint")[1]
       if from and has[from.name:upper()] and not in_route then
         self:explain(at, at + 1)
-        -- (after the route's last waypoint the new one is appended, as ADDWPT with no waypoint to follow does)
-        if a.route[#a.route]:upper() == from.name:upper() then
-          self:explain(from.b, from.e)
-          return self:emit("ADDWPT " .. a.id .. " " .. wp)
-        end
         return self:emit("ADDWPT " .. a.id .. " " .. wp .. ",,," .. from.name)
       end
       if not in_route then self:emit("ADDWPT " .. a.id .. " " .. wp) end

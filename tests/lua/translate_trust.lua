@@ -17135,3 +17135,56 @@ do
   check_eq(ex("SWR3KM descend to 7000 ft; reduce speed to 210 knots when it reaches 8000 ft"),
     "ALT SWR3KM 7000 ; ATALT SWR3KM 8000 SPD SWR3KM 210")
 end
+
+-- Cycle 58 (fcd5): conditions and sequencing said the Chinese and Japanese way: "after reach(,) ...", "after
+-- reducing ...", "after pass X", "after X Mach .78", "when it reaches 170" (the level cleared said again), "For X,
+-- when it reaches Y, please ...", "keep ... until Y, thank you", a fix named like "and" after "after"
+do
+  local _, ex = scene({ "DEFWPT GOSAN 31.0 121.0", "DEFWPT HEMIN 31.4 121.5",
+    "CRE CSZ4410 A320 30.9 120.5 060 FL140 260", "ADDWPT CSZ4410 GOSAN", "ADDWPT CSZ4410 HEMIN",
+    "CRE SKY812 B738 31.2 120.2 090 FL200 280", "ADDWPT SKY812 GOSAN", "ADDWPT SKY812 HEMIN" })
+  -- the level or speed the instruction before cleared, reached ("reach" is no Reach callsign after "after")
+  check_eq(ex("CSZ4410 descend to 9000 feet, and after reach 9000 feet, reduce to 230"),
+    "ALT CSZ4410 9000 ; ATALT CSZ4410 9000 SPD CSZ4410 230")
+  check_eq(ex("SKY812 climb FL240, after reach, speed 300"), "ALT SKY812 FL240 ; ATALT SKY812 FL240 SPD SKY812 300")
+  check_eq(ex("SKY812 slow down to 250, after reach 250 then descend flight level one six zero"),
+    "SPD SKY812 250 ; ATSPD SKY812 250 ALT SKY812 FL160")
+  check_eq(ex("Skymark eight one two reduce speed two four zero, after reducing descend to FL one five zero"),
+    "SPD SKY812 240 ; ATSPD SKY812 240 ALT SKY812 FL150")
+  asked(ex("SKY812 climb FL240, after reducing turn left heading 100"), "no speed was cleared to have slowed to")
+  -- the waypoint passed, said with the verb's bare form
+  check_eq(ex("CSZ4410 climb FL180 after pass GOSAN"), "AT CSZ4410 GOSAN DO ALT CSZ4410 FL180")
+  check_eq(ex("SKY812 maintain FL200, and after pass GOSAN descend to FL160"),
+    "ALT SKY812 FL200 ; AT SKY812 GOSAN DO ALT SKY812 FL160")
+  check_eq(ex("SKY812 when pass HEMIN, reduce speed 250"), "AT SKY812 HEMIN DO SPD SKY812 250")
+  -- a value with its own unit after "after" and the place, whatever the value before; joined by "and", the next
+  -- waits for the place too, after a comma it is asked
+  check_eq(ex("SKY812 climb FL260, after HEMIN Mach decimal seven six"),
+    "ALT SKY812 FL260 ; AT SKY812 HEMIN DO SPD SKY812 M0.76")
+  check_eq(ex("CSZ4410 reduce 240, after GOSAN FL120"), "SPD CSZ4410 240 ; AT CSZ4410 GOSAN DO ALT CSZ4410 FL120")
+  check_eq(ex("SKY812 climb FL260, after HEMIN Mach .76 and heading 120"),
+    "ALT SKY812 FL260 ; AT SKY812 HEMIN DO SPD SKY812 M0.76 ; AT SKY812 HEMIN DO HDG SKY812 120")
+  asked(ex("SKY812 climb FL260, after HEMIN Mach .76, heading 120"), "does the heading wait for HEMIN?")
+  asked(ex("SKY812 climb FL260, after HEMIN 250"), "a bare number after the place, a level before")
+  -- the level cleared said again by its three digits after a verb of reaching
+  check_eq(ex("SKY812 descend to flight level 160, and when it reaches 160, direct HEMIN, please."),
+    "ALT SKY812 FL160 ; ATALT SKY812 FL160 DIRECT SKY812 HEMIN")
+  check_eq(ex("CSZ4410 climb FL170, once you reach one seven zero turn right heading 120"),
+    "ALT CSZ4410 FL170 ; ATALT CSZ4410 FL170 HDG CSZ4410 120 RIGHT")
+  asked(ex("CSZ4410 climb FL170, when it reaches 180, speed 250"), "180 was never cleared")
+  -- "For X," opening a waypoint's condition; a limit at a place closed by thanks
+  check_eq(ex("For Skymark 812, when it passes GOSAN, please descend to FL180."), "AT SKY812 GOSAN DO ALT SKY812 FL180")
+  check_eq(ex("for CSZ4410, after GOSAN, climb FL160"), "AT CSZ4410 GOSAN DO ALT CSZ4410 FL160")
+  check_eq(ex("For SKY812, please keep two six zero knots until HEMIN, thank you."), "SPD SKY812 260")
+  asked(ex("For SKY812, please keep 260 knots until HEMIN, thank you, then 240"), "what 240 is")
+  -- "change speed to" after a level passed
+  check_eq(ex("SKY812 climb to FL260 and when pass FL230 change speed to mach 0.76"),
+    "ALT SKY812 FL260 ; ATALT SKY812 FL230 SPD SKY812 M0.76")
+end
+do
+  -- a fix named like "and", after "after" or "at", on the aircraft's route
+  local _, ex = scene({ "DEFWPT AND 30.8 120.7", "DEFWPT GOSAN 31.0 121.0", "CRE CSZ4410 A320 30.9 120.5 060 FL140 260",
+    "ADDWPT CSZ4410 AND", "ADDWPT CSZ4410 GOSAN" })
+  check_eq(ex("CSZ4410 after AND, descend to 9000 feet"), "AT CSZ4410 AND DO ALT CSZ4410 9000")
+  check_eq(ex("CSZ4410 at AND, reduce speed 230"), "AT CSZ4410 AND DO SPD CSZ4410 230")
+end
