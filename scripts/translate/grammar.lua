@@ -5173,10 +5173,25 @@ end
 function G:value_said_again(p, a, c)
   -- ("2.5 NM, sorry, please use 4 NM": "use" and the value alone, as "make it")
   local v = (self:word(c, "it") and self:word(c - 1, "make") or self:word(c, "use")) and c + 1 or c
+  local old = self:quantities(p + 1, a)
+  -- ("7800 metres, sorry, not 7800, is 8100", "..., not 7800 but 8100": the value said before, denied with "not"
+  -- and said again as it was, then the new one)
+  local denied = false
+  for _, d in ipairs(#old == 1 and old[1].number and self:quantities(a, #self.t + 1) or {}) do
+    if d.b >= v then break end
+    if self:word(d.b - 1, "not") and d.number and d.number.value == old[1].number.value then denied = d end
+  end
+  if self:word(v, "not") then
+    local d = self:quantities(v + 1, #self.t + 1)[1]
+    if d and d.b == v + 1 and d.number and old[1] and old[1].number and d.number.value == old[1].number.value then
+      denied, v = d, d.e
+      while self.t[v] and (self.t[v].kind == "punct" or self.t[v].filler) do v = v + 1 end
+    end
+  end
+  if denied and self:word(v, "is but it's its") then v = v + 1 end
   local exact = self:word(v, "exactly precisely")
   if exact then v = v + 1 end
   local new = self:quantities(v, #self.t + 1)[1]
-  local old = self:quantities(p + 1, a)
   if not (new and new.b == v and #old == 1 and (new.kind == old[1].kind or new.kind == "plain")) then return false end
   local nx = new.e  -- (a filler after it, "make it 240 please", still ends its clause)
   while self.t[nx] and self.t[nx].filler do nx = nx + 1 end
@@ -7366,10 +7381,13 @@ local function value_carried(q, nums, again)
     if v >= 100 and v < 1000 then again_as[2] = v * 100 end
     if v < 100 and not said.typed then again_as[2] = v * 1000 end
   end
+  -- (a level in metres is cleared to the nearest 100 ft: "6500 metres" is carried by 21300)
+  local cleared = q.kind == "alt" and not q.fl and v % 100 ~= 0 and math.floor(v / 100 + 0.5) * 100 or nil
+  if cleared then again_as[#again_as + 1] = cleared end
   for _, n in ipairs(nums) do
     -- (a heading said with its word, or a time, is read as said: "heading 100" is never the 300 of FL300)
     local said_as = (q.kind == "heading" or q.kind == "time") and { v } or again and again_as
-      or { v, v * 100, v * 1000, v * 10, v + 200 }
+      or { v, v * 100, v * 1000, v * 10, v + 200, cleared }
     for _, c in ipairs(said_as) do
       if math.abs(c - n) <= math.max(0.5, 1e-6 * math.abs(n)) then return true end
     end
