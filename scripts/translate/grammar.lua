@@ -1092,6 +1092,26 @@ function G.readback_reported(text)
   return text
 end
 
+-- "climb to 4500 metres, wait, sorry, not climb, descend to 3900 metres": after a self-correction's apology or
+-- marker (lexicon.self_correction: "sorry", "wait", "no", "correction") and its comma, "not" and one word said
+-- before in the request, closed by a comma, rules that word out: dropped, the correction after it stands as said
+-- ("..., sorry, descend to 3900 metres"). Words never said before stay, and are read as they are.
+function G.denied_word(text)
+  if not text:find("not ", 1, true) then return text end
+  local low = text:lower()
+  local cuts = {}
+  for b, word, e in low:gmatch("()not (%a+),%s*()") do
+    local before = low:sub(1, b - 1)
+    if before:match("[%a]+[,.!]?%s*$") and (before:match("sorry[,.!]?%s*$") or before:match("wait[,.!]?%s*$")
+        or before:match("%f[%a]no[,.!]%s*$") or before:match("correction[,.!]?%s*$"))
+        and before:find("%f[%a]" .. word .. "%f[%A]") then
+      cuts[#cuts + 1] = { b, e }
+    end
+  end
+  for k = #cuts, 1, -1 do text = text:sub(1, cuts[k][1] - 1) .. text:sub(cuts[k][2]) end
+  return text
+end
+
 -- "flight level two six zero, not two eight zero", "heading 300, not 310": a value said after "not"
 -- straight after another value, ending its clause, is the one the speaker rules out (a readback
 -- corrected); it is dropped, with its "not", and the value before it stands; so is an apology closing the
@@ -1730,7 +1750,7 @@ local function written_forms(text, world)
   -- "47,5 north", "8,5 degrees east", "factor to 1,1": a decimal comma (G.decimal_comma) is the point
   where("%d,%d", "()(%d+),(%d+)()", function(b, whole, part, e) return G.decimal_comma(text, b, whole, part, e) end)
   text = typed_abbreviations(lone_multipliers(tokens.numerals_apart(G.cut_off_restarts(text), DIGIT_WORDS), world))
-  text = hyphened_types(spelled(G.spelled_letter_a(heard_forms(negated_values(G.readback_reported(readback_heard(self_corrections(G.said_but(G.cancel_corrections(unlabelled(foreign_digits(G.said_whole(text)))))))))))))
+  text = hyphened_types(spelled(G.spelled_letter_a(heard_forms(negated_values(G.readback_reported(readback_heard(self_corrections(G.said_but(G.cancel_corrections(unlabelled(foreign_digits(G.said_whole(G.denied_word(text))))))))))))))
   low = text:lower()
   -- a position typed as whole degrees after the hemisphere, then minutes ("N55 50.0 W003 20.0", "S33 57
   -- E151 10"): decimal degrees before their hemisphere ("55.833333 N 3.333333 W"); minutes of 60 or more
@@ -3344,6 +3364,13 @@ end
 -- A distance said in kilometres is its conversion to nautical miles to 0.01 NM (9 km = 4.86 NM: the tenth the
 -- extractor rounds to moves a value said to the kilometre), from the number said.
 G.km_words = { km = true, kilometres = true, kilometers = true, kilometre = true, kilometer = true }
+-- The level [ft] of altitude quantity q as cleared: a level said in metres is the nearest 100 ft (7200 m =
+-- 23600 ft, as handlers_values.lua's metres_level), any other its value as said.
+function G:cleared_level(q)
+  if q.kind == "alt" and not q.fl and self:word(q.e - 1, "@metres") then return math.floor(q.value / 100 + 0.5) * 100 end
+  return q.value
+end
+
 function G:quantities(b, e)
   local key = b * 65536 + e
   local q = self.qcache[key]
@@ -4149,7 +4176,7 @@ function G:condition()
       end
       self:explain(way - 3, way + 1)
     end
-    if q.kind == "alt" then return "ATALT " .. self.subject .. " " .. f.alt(q.value, q.fl), rest end
+    if q.kind == "alt" then return "ATALT " .. self.subject .. " " .. f.alt(self:cleared_level(q), q.fl), rest end
     if q.kind == "speed" then return "ATSPD " .. self.subject .. " " .. f.int(q.value), rest end
     if q.kind == "mach" then return "ATSPD " .. self.subject .. " " .. f.mach(q.value), rest end
     if q.kind == "plain" and q.value >= 1000 then return "ATALT " .. self.subject .. " " .. f.int(q.value), rest end
@@ -9226,6 +9253,21 @@ function G:state_question()
     local k = opens and ((self:word(i, G.question_with_is) and self:word(i + 1, "is about") and i + 2)
       or (self:word(i, G.question_opens) and i + 1)) or nil
     if k and self:word(k, "that the") then k = k + 1 end
+    -- ("how about CXA8301 turn right 30 degrees", "how about let CCA1831 speed 300 knots": "how about" before an
+    -- aircraft, "let" or "we let" between or not, and an instruction word straight after it suggests that
+    -- instruction: given, no question)
+    if k and self:word(i, "how") and self:word(i + 1, "about") then
+      local a = k
+      if self:word(a, "we") then a = a + 1 end
+      if self:word(a, "let have make") then a = a + 1 end
+      local x = self:refs_in(a, a + 1, "aircraft")[1]
+      local j = x and self:skip_fillers(x.e)
+      local valued = j and self:word(j, "speed heading altitude level mach") and (self:quantities(j + 1, j + 3)[1] or {}).b
+      if x and x.b == a and x.exists and (self.triggers[j] or self:intent_at(j) or valued == j + 1) then
+        self.noted[i], self.noted[i + 1] = true, true
+        k = nil
+      end
+    end
     local r = k and self:refs_in(k, k + 1, "aircraft")[1]
     -- (the aircraft called before the question, asked about as "you")
     local called = k and self:word(k, "you") and self:refs_in(1, i, "aircraft")

@@ -17135,3 +17135,54 @@ do
   check_eq(ex("SWR3KM descend to 7000 ft; reduce speed to 210 knots when it reaches 8000 ft"),
     "ALT SWR3KM 7000 ; ATALT SWR3KM 8000 SPD SWR3KM 210")
 end
+
+-- Cycle 58 (fmet): levels in metres are cleared to the nearest 100 ft (within 15 m of the metres said; China's
+-- metric table reads the same below 8900 m); a step in metres ("600 metres more"), a correction in metres ("not
+-- 7800, is 8100" keeps the unit), a level kept in metres that the aircraft holds ("its altitude, keep 8900" at
+-- FL291: asked, never 8900 ft), the present level described before the clearance; Chinese-English habits:
+-- "how about (let) X <instruction>" suggests it, "open/close" a switch, a setting's size asked after its name
+do
+  local _, ex = scene({ "CRE CSN602 B738 35.2 116.2 090 FL301 290", "CRE CES77 A333 34.0 117.9 349 FL291 280",
+    "CRE CCA40 B789 36.5 117.1 162 FL291 280", "CRE CHH1 B738 40.1 116.6 184 FL120 250" })
+  check_eq(ex("CHH1 climb to 5700 metres"), "ALT CHH1 18700")
+  check_eq(ex("CHH1 climb flight level 6600 meters"), "ALT CHH1 21700")
+  check_eq(ex("CES77 climb 600 meter more"), "ALT CES77 31100")
+  check_eq(ex("CSN602 descend by 900 m"), "ALT CSN602 27100")
+  check(not ex("CSN602 descend 300 metres more"):find("ALT CSN602 984", 1, true), "a step in metres, never a level")
+  asked(ex("CES77 descend 2000 feet more or less"), "an estimate")
+  check_eq(ex("CHH1 climb to 6300 meter, sorry sorry, not 6300, is 6900"), "ALT CHH1 22600")
+  check_eq(ex("CHH1 climb to 6300 metres, no, not 6300, 6900"), "ALT CHH1 22600")
+  check_eq(ex("CSN602 descend to 8400 metres, correction, 7800"), "ALT CSN602 25600")
+  asked(ex("CSN602 descend to 8400 metres, correction, 7850"), "not whole hundreds of metres after metres")
+  check_eq(ex("CHH1 climb to 6300 meter, sorry, 21000 feet"), "ALT CHH1 21000")
+  check_eq(ex("CHH1 climb to 5100 meter, wait, sorry, not climb, descend to 3300 meter"), "ALT CHH1 10800")
+  asked(ex("CES77, its altitude, keep 8900, its heading, change to 200"), "a level kept in metres, no unit")
+  asked(ex("CSN602 maintain 9200 and turn left heading 180"), "9200 m is its level; 9200 ft a 21000 ft descent")
+  check_eq(ex("CSN602 maintain 9200 metres"), "ALT CSN602 30100")
+  check_eq(ex("CHH1 maintain 9000"), "ALT CHH1 9000")
+  check_eq(ex("CSN602 it is at 9200 meter yes? please descend to 8400 meter"), "ALT CSN602 27600")
+  check_eq(ex("CCA40 and CES77 same level 8900 meter, head to head, please let CES77 descend to 8400 meter"),
+    "ALT CES77 27600")
+  check_eq(ex("CHH1 climb to 6900 metres, passing 6000 metres reduce speed to 250"),
+    "ALT CHH1 22600 ; ATALT CHH1 19700 SPD CHH1 250")
+  check_eq(ex("how about let CCA40 speed 300 knot and CES77 speed 260 knot"), "SPD CCA40 300 ; SPD CES77 260")
+  check_eq(ex("CCA40 and CES77 maybe conflict, how about CES77 turn right 30 degree"), "HDG CES77 19 RIGHT")
+  check_eq(ex("how about we let CSN602 descend to 8400 meter?"), "ALT CSN602 27600")
+  check_eq(ex("how about CCA40 speed?"), "POS CCA40")
+  check_eq(ex("CHH1 open the VNAV please"), "VNAV CHH1 ON")
+  check_eq(ex("CSN602 close its LNAV"), "LNAV CSN602 OFF")
+  check_eq(ex("open the ASAS and resolution MVP"), "ASAS ON ; RESO MVP")
+  check_eq(ex("the conflict detection is open now or not?"), "ASAS")
+  check_eq(ex("the lookahead how long?"), "DTLOOK")
+  check_eq(ex("protected zone radius now how big?"), "ZONER")
+  check_eq(ex("resolution method tell me please"), "RESO")
+  check_eq(ex("look ahead time is 300 seconds"), "DTLOOK 300")
+end
+
+-- Cycle 58 (fmet): Shanghai Airlines by its telephony
+do
+  local _, ex = scene({ "CRE CSH9211 B738 31.75 119.30 100 FL250 280" })
+  check_eq(ex("Shanghai Air 9211 turn left heading 090"), "HDG CSH9211 90 LEFT")
+  check_eq(ex("Shanghai Airlines 9211 descend to 6000 meter"), "ALT CSH9211 19700")
+  asked(ex("Shanghai Air 9212 climb FL270"), "no CSH9212 flying")
+end
