@@ -615,7 +615,7 @@ return function(H, f, wrap, compass)
         -- "1000 feet lower", "2000 ft up", "600 metres more": an amount with its unit straight before the
         -- comparative is a change
         or (self:word(o.e, "higher lower up down more") and self:word(o.e - 1, "@feet @metres")
-          and not self:word(o.e + 1, "or than"))
+          and not (self:word(o.e, "more") and self:word(o.e + 1, "or than")))
         -- "another thousand feet", "a further 500 ft", "an extra 1000 ft", "climb more 1000 feet" (Portuguese
         -- "mais"): one more step of that size
         or self:word(o.b - 1, "another further extra more")
