@@ -1092,6 +1092,26 @@ function G.readback_reported(text)
   return text
 end
 
+-- "climb to 4500 metres, wait, sorry, not climb, descend to 3900 metres": after a self-correction's apology or
+-- marker (lexicon.self_correction: "sorry", "wait", "no", "correction") and its comma, "not" and one word said
+-- before in the request, closed by a comma, rules that word out: dropped, the correction after it stands as said
+-- ("..., sorry, descend to 3900 metres"). Words never said before stay, and are read as they are.
+function G.denied_word(text)
+  if not text:find("not ", 1, true) then return text end
+  local low = text:lower()
+  local cuts = {}
+  for b, word, e in low:gmatch("()not (%a+),%s*()") do
+    local before = low:sub(1, b - 1)
+    if before:match("[%a]+[,.!]?%s*$") and (before:match("sorry[,.!]?%s*$") or before:match("wait[,.!]?%s*$")
+        or before:match("%f[%a]no[,.!]%s*$") or before:match("correction[,.!]?%s*$"))
+        and before:find("%f[%a]" .. word .. "%f[%A]") then
+      cuts[#cuts + 1] = { b, e }
+    end
+  end
+  for k = #cuts, 1, -1 do text = text:sub(1, cuts[k][1] - 1) .. text:sub(cuts[k][2]) end
+  return text
+end
+
 -- "flight level two six zero, not two eight zero", "heading 300, not 310": a value said after "not"
 -- straight after another value, ending its clause, is the one the speaker rules out (a readback
 -- corrected); it is dropped, with its "not", and the value before it stands; so is an apology closing the
@@ -1730,7 +1750,7 @@ local function written_forms(text, world)
   -- "47,5 north", "8,5 degrees east", "factor to 1,1": a decimal comma (G.decimal_comma) is the point
   where("%d,%d", "()(%d+),(%d+)()", function(b, whole, part, e) return G.decimal_comma(text, b, whole, part, e) end)
   text = typed_abbreviations(lone_multipliers(tokens.numerals_apart(G.cut_off_restarts(text), DIGIT_WORDS), world))
-  text = hyphened_types(spelled(G.spelled_letter_a(heard_forms(negated_values(G.readback_reported(readback_heard(self_corrections(G.said_but(G.cancel_corrections(unlabelled(foreign_digits(G.said_whole(text)))))))))))))
+  text = hyphened_types(spelled(G.spelled_letter_a(heard_forms(negated_values(G.readback_reported(readback_heard(self_corrections(G.said_but(G.cancel_corrections(unlabelled(foreign_digits(G.said_whole(G.denied_word(text))))))))))))))
   low = text:lower()
   -- a position typed as whole degrees after the hemisphere, then minutes ("N55 50.0 W003 20.0", "S33 57
   -- E151 10"): decimal degrees before their hemisphere ("55.833333 N 3.333333 W"); minutes of 60 or more
@@ -3344,6 +3364,13 @@ end
 -- A distance said in kilometres is its conversion to nautical miles to 0.01 NM (9 km = 4.86 NM: the tenth the
 -- extractor rounds to moves a value said to the kilometre), from the number said.
 G.km_words = { km = true, kilometres = true, kilometers = true, kilometre = true, kilometer = true }
+-- The level [ft] of altitude quantity q as cleared: a level said in metres is the nearest 100 ft (7200 m =
+-- 23600 ft, as handlers_values.lua's metres_level), any other its value as said.
+function G:cleared_level(q)
+  if q.kind == "alt" and not q.fl and self:word(q.e - 1, "@metres") then return math.floor(q.value / 100 + 0.5) * 100 end
+  return q.value
+end
+
 function G:quantities(b, e)
   local key = b * 65536 + e
   local q = self.qcache[key]
@@ -4149,7 +4176,7 @@ function G:condition()
       end
       self:explain(way - 3, way + 1)
     end
-    if q.kind == "alt" then return "ATALT " .. self.subject .. " " .. f.alt(q.value, q.fl), rest end
+    if q.kind == "alt" then return "ATALT " .. self.subject .. " " .. f.alt(self:cleared_level(q), q.fl), rest end
     if q.kind == "speed" then return "ATSPD " .. self.subject .. " " .. f.int(q.value), rest end
     if q.kind == "mach" then return "ATSPD " .. self.subject .. " " .. f.mach(q.value), rest end
     if q.kind == "plain" and q.value >= 1000 then return "ATALT " .. self.subject .. " " .. f.int(q.value), rest end
@@ -5174,10 +5201,25 @@ end
 function G:value_said_again(p, a, c)
   -- ("2.5 NM, sorry, please use 4 NM": "use" and the value alone, as "make it")
   local v = (self:word(c, "it") and self:word(c - 1, "make") or self:word(c, "use")) and c + 1 or c
+  local old = self:quantities(p + 1, a)
+  -- ("7800 metres, sorry, not 7800, is 8100", "..., not 7800 but 8100": the value said before, denied with "not"
+  -- and said again as it was, then the new one)
+  local denied = false
+  for _, d in ipairs(#old == 1 and old[1].number and self:quantities(a, #self.t + 1) or {}) do
+    if d.b >= v then break end
+    if self:word(d.b - 1, "not") and d.number and d.number.value == old[1].number.value then denied = d end
+  end
+  if self:word(v, "not") then
+    local d = self:quantities(v + 1, #self.t + 1)[1]
+    if d and d.b == v + 1 and d.number and old[1] and old[1].number and d.number.value == old[1].number.value then
+      denied, v = d, d.e
+      while self.t[v] and (self.t[v].kind == "punct" or self.t[v].filler) do v = v + 1 end
+    end
+  end
+  if denied and self:word(v, "is but it's its") then v = v + 1 end
   local exact = self:word(v, "exactly precisely")
   if exact then v = v + 1 end
   local new = self:quantities(v, #self.t + 1)[1]
-  local old = self:quantities(p + 1, a)
   if not (new and new.b == v and #old == 1 and (new.kind == old[1].kind or new.kind == "plain")) then return false end
   local nx = new.e  -- (a filler after it, "make it 240 please", still ends its clause)
   while self.t[nx] and self.t[nx].filler do nx = nx + 1 end
@@ -7388,10 +7430,13 @@ local function value_carried(q, nums, again)
     if v >= 100 and v < 1000 then again_as[2] = v * 100 end
     if v < 100 and not said.typed then again_as[2] = v * 1000 end
   end
+  -- (a level in metres is cleared to the nearest 100 ft: "6500 metres" is carried by 21300)
+  local cleared = q.kind == "alt" and not q.fl and v % 100 ~= 0 and math.floor(v / 100 + 0.5) * 100 or nil
+  if cleared then again_as[#again_as + 1] = cleared end
   for _, n in ipairs(nums) do
     -- (a heading said with its word, or a time, is read as said: "heading 100" is never the 300 of FL300)
     local said_as = (q.kind == "heading" or q.kind == "time") and { v } or again and again_as
-      or { v, v * 100, v * 1000, v * 10, v + 200 }
+      or { v, v * 100, v * 1000, v * 10, v + 200, cleared }
     for _, c in ipairs(said_as) do
       if math.abs(c - n) <= math.max(0.5, 1e-6 * math.abs(n)) then return true end
     end
@@ -9230,6 +9275,21 @@ function G:state_question()
     local k = opens and ((self:word(i, G.question_with_is) and self:word(i + 1, "is about") and i + 2)
       or (self:word(i, G.question_opens) and i + 1)) or nil
     if k and self:word(k, "that the") then k = k + 1 end
+    -- ("how about CXA8301 turn right 30 degrees", "how about let CCA1831 speed 300 knots": "how about" before an
+    -- aircraft, "let" or "we let" between or not, and an instruction word straight after it suggests that
+    -- instruction: given, no question)
+    if k and self:word(i, "how") and self:word(i + 1, "about") then
+      local a = k
+      if self:word(a, "we") then a = a + 1 end
+      if self:word(a, "let have make") then a = a + 1 end
+      local x = self:refs_in(a, a + 1, "aircraft")[1]
+      local j = x and self:skip_fillers(x.e)
+      local valued = j and self:word(j, "speed heading altitude level mach") and (self:quantities(j + 1, j + 3)[1] or {}).b
+      if x and x.b == a and x.exists and (self.triggers[j] or self:intent_at(j) or valued == j + 1) then
+        self.noted[i], self.noted[i + 1] = true, true
+        k = nil
+      end
+    end
     local r = k and self:refs_in(k, k + 1, "aircraft")[1]
     -- (the aircraft called before the question, asked about as "you")
     local called = k and self:word(k, "you") and self:refs_in(1, i, "aircraft")

@@ -220,13 +220,14 @@ function m:on_off(s)
   local on = read(false)
   if on >= 0 then return on end
   on = read(true)
-  if on < 0 then on = self:opened_setting(s) end
-  return on, on >= 0
+  if on >= 0 then return on, true end
+  return self:opened_setting(s), false
 end
 
 -- "conflict detection open please", "close the conflict resolution": a conflict setting opened (1) or closed (0),
 -- as Turkish and Arabic speakers say for on and off ("aç", "kapat"; "iftah", "sakkir"), the verb straight after the
--- setting's noun (fillers between) or before it with only articles and "conflict" between; the trails likewise,
+-- setting's noun (fillers between) or before it with only articles and "conflict" between, an aircraft's VNAV and
+-- LNAV too ("CCA1539 open the VNAV", Chinese "da kai"); the trails likewise,
 -- by the verb before them only ("close the trails", "open all the trails"); -1 when neither is said so
 function m:opened_setting(s)
   local trig = s.trig
@@ -236,16 +237,18 @@ function m:opened_setting(s)
     if self:word(k, "open") then return 1 end
     return self:word(k, "close shut") and 0 or -1
   end
-  if not (trig and self:word(trig, "detection resolution asas cd cr")) then return -1 end
+  if not (trig and self:word(trig, "detection resolution asas cd cr vnav lnav")) then return -1 end
   local function reading(k)
     if self:word(k, "open opened") then return 1 end
     if self:word(k, "close closed shut") then return 0 end
     return -1
   end
-  local after = reading(self:skip_fillers(trig + 1))
+  local a = self:skip_fillers(trig + 1)
+  if self:word(a, "is are") then a = self:skip_fillers(a + 1) end
+  local after = reading(a)
   if after >= 0 then return after end
   local k = trig - 1
-  while k >= s.b and self:word(k, "the conflict conflicts") do k = k - 1 end
+  while k >= s.b and self:word(k, "the conflict conflicts its his") do k = k - 1 end
   return k >= 1 and reading(k) or -1
 end
 
@@ -3917,7 +3920,7 @@ function m:at_altitude(s)
   if noun then self:explain(noun, noun + 1) end
   if groupwise then return "ATALT " .. ids[1] .. " " .. f.alt(groupwise, true) end
   if fl_digits then return "ATALT " .. ids[1] .. " " .. f.alt(q.value * 100, true) end
-  return "ATALT " .. ids[1] .. " " .. f.alt(q.value, q.fl)
+  return "ATALT " .. ids[1] .. " " .. f.alt(self:cleared_level(q), q.fl)
 end
 
 -- The first word of a verb of waiting ending at w ("wait", "wait for", "give it", "allow him"), or nil.

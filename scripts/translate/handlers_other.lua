@@ -3629,6 +3629,21 @@ return function(H, f, compass)
         and #self:quantities(1, #self.t + 1) == 0 then
       return true
     end
+    -- ("the conflict resolution method, please tell me", "look-ahead time tell me": the setting named first, "tell
+    -- me" closing the request, no value said anywhere)
+    if told <= #self.t and self:word(told + 1, "me us") and #self:quantities(1, #self.t + 1) == 0 then
+      local k = self:skip_fillers(told + 2)
+      while self:word(k, "please now") do k = self:skip_fillers(k + 1) end
+      if k > #self.t or (self.t[k].kind == "punct" and k == #self.t) then return true end
+    end
+    -- ("look ahead time is how long now?", "protected zone radius now how big?": the size asked after the setting's
+    -- name, in Chinese word order, no value said)
+    local how = self:find_word(first, #self.t + 1, "how")
+    if value and how >= first and self:word(how + 1, "long big large wide tall high much") and not self:intent_at(how + 2)
+        and #self:quantities(1, #self.t + 1) == 0 then
+      self:explain(how, how + 2)
+      return true
+    end
     -- (a question: "is ... on?", "what is ...?", "can you check which/whether ...?"; its first sentence, a
     -- remark may follow: "Is the conflict detection on now? I can't see any alerts.")
     local ends = self:first_sentence_end()
@@ -3736,6 +3751,20 @@ return function(H, f, compass)
   function m:delrte(s) self:one_acid(s, "DELRTE", "have its route cleared") end
   -- POS of an aircraft, else of a place named with no aircraft ("where is TP2?")
   function m:pos(s)
+    -- ("how about let CCA1831 speed 300 knots", "how about CXA8301 turn right 30 degrees": a suggestion of the
+    -- instruction after the aircraft, G:state_question; the words before it show nothing)
+    if self:word(s.trig, "how") and self:word(s.trig + 1, "about") then
+      local a = s.trig + 2
+      if self:word(a, "we") then a = a + 1 end
+      if self:word(a, "let have make") then a = a + 1 end
+      local x = self:refs_in(a, a + 1, "aircraft")[1]
+      local j = x and self:skip_fillers(x.e)
+      local valued = j and self:word(j, "speed heading altitude level mach") and (self:quantities(j + 1, j + 3)[1] or {}).b
+      local given = j and (#self:quantities(j, #self.t + 1) > 0 or self:has_ref(j, #self.t + 1, "waypoint"))
+      if x and x.b == a and x.exists and given and (self:intent_at(j) or valued == j + 1) then
+        return self:explain(s.trig, a)
+      end
+    end
     -- a navaid's kind said beside its name ("the Pampus VOR, PAM") is no place of its own
     local places, kind_said = {}, false
     for _, r in ipairs(self:refs_in(s.b, s.e, "waypoint")) do

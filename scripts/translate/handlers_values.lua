@@ -5,6 +5,9 @@
 return function(H, f, wrap, compass)
   local m = H.methods
   local L = require("translate.lexicon")
+  -- A level said in metres, converted to feet [ft], as cleared: the nearest 100 ft (within 15 m of the metres
+  -- said, as an altitude selector sets it and as China's metric level table reads below 8900 m: 8100 m = 26600)
+  local function metres_level(ft) return math.floor(ft / 100 + 0.5) * 100 end
   -- the one-word markers of lexicon.self_correction.markers, a word list (G:word's form), and the markers of
   -- several words as lists of their words ("make that": "that" alone, "That's the Air France, right?", marks
   -- no correction)
@@ -340,6 +343,16 @@ return function(H, f, wrap, compass)
         end
       end
     end
+    -- "CSN6901 it is at 9200 metres yes? please descend to 8100 metres", "KLM12 at FL250 now, climb FL300": a
+    -- level said before the instruction word, with the level to fly to after it, that is the aircraft's present
+    -- one (within 50 ft; 100 ft in metres, as China's table flies 8900 m at FL291) describes it, no clearance
+    local first, second = with_unit[1], with_unit[2]
+    if now and now.alt_ft and first and second and first.e <= s.trig and second.b > s.trig
+        and math.abs(first.value - now.alt_ft) <= (metric(first) and 100 or 50) then
+      self:take(first)
+      self:explain(first.b, first.e)
+      table.remove(with_unit, 1)
+    end
     local target = self:pick(self:corrected(#with_unit > 0 and with_unit or plain, with_unit, plain, s), s, "maintain")
     local dir = self:direction(s)
     local verb = dir > 0 and "climb" or dir < 0 and "descend" or "fly"
@@ -376,6 +389,24 @@ return function(H, f, wrap, compass)
     if not target then return self:need("What altitude should " .. ids[1] .. " " .. verb .. " to?") end
     local q = target
     local ft, fl = q.value, q.fl
+    -- "CCA1831 and CES5102 same level 8900 metres, head to head": the level every aircraft named already holds
+    -- (within 50 ft; 100 ft in metres, China's table), said with "same" and no verb of climbing, descending or
+    -- keeping, describes the traffic: no clearance
+    local dir0 = self:direction(s)
+    if dir0 == 0 and self:word_in(s.b, q.b, "same") and not self:word_in(s.b, s.e, "as @keep_verbs")
+        and (q.kind == "alt" or q.kind == "metric") then
+      local held, in_m = true, metric(q) or self:word(q.e, "@metres")
+      local said_ft = in_m and q.number and q.number.value / 0.3048 or fl and ft < 1000 and ft * 100 or ft
+      for _, id in ipairs(ids) do
+        local a = self:state(id)
+        held = held and a ~= nil and a.alt_ft ~= nil and math.abs(a.alt_ft - said_ft) <= (in_m and 100 or 50)
+      end
+      if held then
+        self:take(q)
+        self:explain(s.b, s.e)
+        return
+      end
+    end
     -- "flight level eight zero correction nine zero": a bare number of two or three digits after a correction
     -- that takes back a flight level is the flight level it corrects to (FL090), never feet
     local relevelled = q.kind == "plain" and not fl and q.value >= 10 and q.value < 1000 and q.value % 1 == 0
@@ -386,6 +417,24 @@ return function(H, f, wrap, compass)
         if o.fl and o.e <= q.b and self:word_in(o.e, q.b, "@correction") then relevelled = true end
       end
       if relevelled then ft, fl = q.value * 100, true end
+    end
+    -- "climb to 7800 metres, sorry, not 7800, is 8100", "descend 8100 metres, correction, 7800": a bare number
+    -- after a correction that takes back a level in metres is metres too, never feet (8100 ft is no correction
+    -- of 7800 m); whole hundreds of metres only, else read as said
+    local remetred = false
+    if q.kind == "plain" and not fl and q.number and q.number.value >= 300 and q.number.value <= 13700 then
+      local again = (self.said_again or {})[q.b]
+      remetred = again ~= nil and again.kind == "alt" and not again.fl and metric(again)
+      for _, o in ipairs(qs) do
+        if o.kind == "alt" and not o.fl and o.e <= q.b and metric(o) and self:word_in(o.e, q.b, "@correction") then
+          remetred = true
+        end
+      end
+      if remetred and q.number.value % 100 ~= 0 then
+        return self:need(string.format("Which altitude for %s? I heard '%s' after a level in metres.", ids[1],
+          self:raw(q.b, q.e)))
+      end
+      if remetred then ft = q.number.value / 0.3048 end
     end
     -- "descend to height 600 metres on QFE": a height above the airfield, no altitude above the sea
     if not fl and self:word_in(s.b, #self.t + 1, "qfe") then
@@ -416,7 +465,7 @@ return function(H, f, wrap, compass)
     if q.kind == "plain" and ft == 0 and not q.number.typed then
       return self:need(string.format("What altitude should %s %s to? I heard '%s'.", ids[1], verb, self:raw(q.b, q.e)))
     end
-    if q.kind == "plain" and not relevelled then
+    if q.kind == "plain" and not relevelled and not remetred then
       if q.number.typed and #q.number.digits == 3 and q.number.digits:find("^0[1-9]") then
         ft, fl = ft * 100, true  -- "descend 070": three typed digits led by zero are a flight level
       elseif q.number.typed and q.number.digits:match("^[1-9]%d?$") and not q.number.thousand and not q.number.hundred then
@@ -446,12 +495,12 @@ return function(H, f, wrap, compass)
         ft, fl = ft * 100, true
       end
     end
-    -- "flight level 9500 metres": a metric flight level (Russia's, China's) is that many metres, converted
-    -- exactly (9500 m = 31168 ft)
+    -- "flight level 9500 metres": a metric flight level (Russia's, China's) is that many metres, converted to
+    -- the nearest 100 ft (9500 m = 31168 ft, cleared as 31200: metres_level)
     local metres_after = self:word(q.e, "@metres")
     if fl and q.number.value >= 1000 and q.number.value <= 18000 and (metres_after or self:word(q.e - 1, "@metres")) then
       if metres_after then self:explain(q.e, q.e + 1) end
-      ft, fl = math.floor(q.number.value / 0.3048 + 0.5), false
+      ft, fl = metres_level(q.number.value / 0.3048), false
       local m = {}
       for k, v in pairs(q) do m[k] = v end
       m.kind, m.value, m.fl = "metric", ft, false
@@ -483,7 +532,7 @@ return function(H, f, wrap, compass)
         self:explain(k, last + 1)
       end
     end
-    if not fl and q.kind == "alt" and self:word(q.e - 1, "@metres") then
+    if not fl and ((q.kind == "alt" and self:word(q.e - 1, "@metres")) or remetred) then
       -- a level in metres is the whole number said, converted exactly (8100 m = 26575 ft); a spoken one
       -- is whole hundreds of metres ("eight thousand one hundred metres"), else a word was misheard; above
       -- FL450 (13716 m) no airliner flies: "15000 m" is feet or a slip, asked. Metres are said digit by
@@ -500,6 +549,14 @@ return function(H, f, wrap, compass)
       if ft < 100 or ft > 45000 or (not n.typed and n.value % 100 ~= 0) or unsure then
         return self:need("Which altitude for " .. ids[1] .. "? I heard " .. f.int(q.number.value) .. " metres.")
       end
+      -- ("CSN6901 maintain 9200 metres" at FL301: a level kept in metres within 100 ft of the one held is that
+      -- one, as China's table flies it, never a 100 ft climb)
+      local cur = now and now.alt_ft
+      if cur and dir == 0 and self:word_in(s.trig, q.b, "@keep_verbs") and math.abs(cur - ft) <= 100 then
+        ft = cur
+      else
+        ft = metres_level(ft)
+      end
     elseif not fl then
       local r = self:repaired(q, ft, 0, 60000, 100, true)
       if not r then
@@ -514,6 +571,16 @@ return function(H, f, wrap, compass)
       if not q.number.typed and ft % 100 ~= 0 then
         ft = self:whole_hundreds(q)
         if not ft then return self:need("Which altitude for " .. ids[1] .. "? I heard " .. f.int(r) .. " ft.") end
+      end
+      -- "its altitude, keep 8900" to an aircraft at FL291 (8870 m): a level kept, said with no unit, that is
+      -- the aircraft's own level in metres (within 50 m) and far from it in feet, is asked, never a 20000 ft
+      -- descent (a bare number stays feet otherwise)
+      local cur = now and now.alt_ft
+      if cur and q.kind == "plain" and dir == 0 and self:word_in(s.trig, q.b, "@keep_verbs")
+          and q.number.value % 100 == 0 and math.abs(cur * 0.3048 - q.number.value) <= 50
+          and math.abs(cur - ft) > 1000 then
+        return self:need(string.format("%s is at %s ft (%s m): keep %s metres, its level, or fly to %s ft?", ids[1],
+          f.int(cur), f.int(cur * 0.3048), f.int(q.number.value), f.int(ft)))
       end
     end
     -- Relative: "by 2000 ft", "1000 ft from its present altitude", "1000 feet below AC01"
@@ -544,9 +611,11 @@ return function(H, f, wrap, compass)
       return o.by
         -- "down 2000 feet", "up 1000 ft", "drop 4000 feet": an amount in feet straight after the adverb, or
         -- after the everyday verb "drop" (no "to"), is a change
-        or (self:word(o.b - 1, "up down drop") and self:word(o.e - 1, "@feet"))
-        -- "1000 feet lower", "2000 ft up": an amount in feet straight before the comparative is a change
-        or (self:word(o.e, "higher lower up down") and self:word(o.e - 1, "@feet"))
+        or (self:word(o.b - 1, "up down drop") and self:word(o.e - 1, "@feet @metres"))
+        -- "1000 feet lower", "2000 ft up", "600 metres more": an amount with its unit straight before the
+        -- comparative is a change
+        or (self:word(o.e, "higher lower up down more") and self:word(o.e - 1, "@feet @metres")
+          and not (self:word(o.e, "more") and self:word(o.e + 1, "or than")))
         -- "another thousand feet", "a further 500 ft", "an extra 1000 ft", "climb more 1000 feet" (Portuguese
         -- "mais"): one more step of that size
         or self:word(o.b - 1, "another further extra more")
@@ -615,6 +684,8 @@ return function(H, f, wrap, compass)
         if not a then return self:need("What is the current altitude of " .. id .. "?") end
         if dir == 0 then return self:need("Should " .. id .. " climb or descend by " .. f.int(ft) .. " ft?") end
         target_ft = (a.alt_ft or 0) + (dir < 0 and -ft or ft)
+        -- (a step said in metres ends on the nearest 100 ft: "climb 600 metres more" from FL291 is 31100)
+        if self:word(q.e - 1, "@metres") then target_ft = metres_level(target_ft) end
         alt = f.int(target_ft)
         self:as_change(q)
       else

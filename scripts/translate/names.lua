@@ -452,6 +452,8 @@ local names = {
     { "sichuan", "CSC" },
     { "xiamen", "CXA" },
     { "xiamen air", "CXA" },
+    { "shanghai air", "CSH" },  -- (Shanghai Airlines' ICAO telephony)
+    { "shanghai airlines", "CSH" },
     { "air juneyao", "DKH" },
     { "juneyao", "DKH" },
     -- mainland China's other airlines by ICAO telephony, and the airline's own name where controllers there

@@ -2792,11 +2792,13 @@ return function(intent, rule, words)
   -- m:opened_setting), no file opened
   rule { "open", false, when = function(g, i)
     local k = i - 1
-    while k > 1 and g.t[k].filler do k = k - 1 end
-    if g:word(k, "detection resolution") then return true end
+    -- ("the conflict detection is open now or not?": asked about, "is" between)
+    while k > 1 and (g.t[k].filler or g:word(k, "is are")) do k = k - 1 end
+    if g:word(k, "detection resolution asas vnav lnav") then return true end
     k = i + 1
-    while g:word(k, "the conflict conflicts") do k = k + 1 end
-    if k > i + 1 and g:word(k, "detection resolution") then return true end
+    while g:word(k, "the conflict conflicts its his") do k = k + 1 end
+    -- ("open the ASAS", "CCA1539 open the VNAV please": the switch named straight after it, as Chinese "da kai")
+    if (k > i + 1 and g:word(k, "detection resolution")) or g:word(k, "asas vnav lnav") then return true end
     -- ("open the trails": the trails switched on, m:opened_setting)
     k = i + 1
     while g:word(k, "the all") do k = k + 1 end

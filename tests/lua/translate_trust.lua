@@ -403,14 +403,14 @@ check(ctr("speed bird four five six reduce speed eight zero knots"):find("^ASK W
 -- point's level kept as ADDWPT's altitude
 check_eq(said(tr("KLM77 descend to 9 000 feet")), "ALT KLM77 9000")
 check_eq(said(tr("KLM1234 vertical speed minus 5 metres per second")), "VS KLM1234 -984")
--- metres and kilometres convert without rounding beyond the unit said: whole feet, tenths of a mile
-check_eq(said(tr("KLM1234 descend to 3000 metres")), "ALT KLM1234 9843")
--- a level in metres said in words is the whole number said, converted exactly; one that is not whole
+-- a level in metres is cleared to the nearest 100 ft (within 15 m of the metres said)
+check_eq(said(tr("KLM1234 descend to 3000 metres")), "ALT KLM1234 9800")
+-- a level in metres said in words is the whole number said, converted to the nearest 100 ft; one that is not whole
 -- hundreds of metres is asked about; feet, knots and headings said the same way keep their whole number
-check_eq(said(tr("KLM1234 descend to seven thousand two hundred metres")), "ALT KLM1234 23622")
-check_eq(said(tr("DLH4AX climb and maintain one zero thousand one hundred meters")), "ALT DLH4AX 33136")
-check_eq(said(tr("KLM77 descend to nine hundred metres QNH one zero one six")), "ALT KLM77 2953")
-check_eq(said(tr("KLM77 descend to two thousand one hundred metres on QNH 1018")), "ALT KLM77 6890")
+check_eq(said(tr("KLM1234 descend to seven thousand two hundred metres")), "ALT KLM1234 23600")
+check_eq(said(tr("DLH4AX climb and maintain one zero thousand one hundred meters")), "ALT DLH4AX 33100")
+check_eq(said(tr("KLM77 descend to nine hundred metres QNH one zero one six")), "ALT KLM77 3000")
+check_eq(said(tr("KLM77 descend to two thousand one hundred metres on QNH 1018")), "ALT KLM77 6900")
 check_eq(said(tr("KLM1234 descend to seven thousand two hundred and fifty metres")),
   "ASK Which altitude for KLM1234? I heard 7250 metres.")
 check_eq(said(tr("KLM77 descend to eight thousand one hundred feet")), "ALT KLM77 8100")
@@ -2305,12 +2305,12 @@ do
   check_eq(ex("SBI1042 descend 4000 feet QNH 1003"), "ALT SBI1042 4000")
   check_eq(ex("instructor: Siberian 1042 relocate to TKTX VOR at flight level 200"), "MOVE SBI1042 TKTX FL200")
   check_eq(ex("move Georgian 751 to TKTX NDB at 9000 feet"), "MOVE TGZ751 TKTX 9000")
-  check_eq(ex("China Southern 6023 descend flight level 8100 metres"), "ALT CSN6023 26575")
-  check_eq(ex("CSN6023 occupy flight level 9500 m"), "ALT CSN6023 31168")
+  check_eq(ex("China Southern 6023 descend flight level 8100 metres"), "ALT CSN6023 26600")
+  check_eq(ex("CSN6023 occupy flight level 9500 m"), "ALT CSN6023 31200")
   check_eq(ex("China Southern 6023, climb 10700 metres, flight level three five one"), "ALT CSN6023 FL351")
   asked(ex("China Southern 6023, climb 10700 metres, flight level 330"), "they differ")
   check_eq(ex("Siberian 1042 occupy FL110"), "ALT SBI1042 FL110")
-  check_eq(ex("Georgian 751, occupy 3600 metres"), "ALT TGZ751 11811")
+  check_eq(ex("Georgian 751, occupy 3600 metres"), "ALT TGZ751 11800")
   check_eq(ex("Siberian 1042 climb FL160 rate not less 1500 feet per minute"), "ALT SBI1042 FL160 1500")
   check_eq(ex("Georgian 751 maintain flight level 170 until further"), "ALT TGZ751 FL170")
   check_eq(ex("Georgian 751 descend FL150, not above speed 250"), "ALT TGZ751 FL150 ; SPD TGZ751 250")
@@ -3861,7 +3861,7 @@ do
     "CRECONFS EZY3 A320 KLM12 90 0.5 200")
   check_eq(ex("creconfs against KLM12: EZY3, A320, 45 degrees, cpa a quarter of a mile, 150 s"),
     "CRECONFS EZY3 A320 KLM12 45 0.25 150")
-  check_eq(ex("KLM12 descend 7 500 m"), "ALT KLM12 24606")
+  check_eq(ex("KLM12 descend 7 500 m"), "ALT KLM12 24600")
   check_eq(ex("KLM12 descend 12 000 ft"), "ALT KLM12 12000")
   asked(ex("KLM12 heading 270 200 ft"), "a heading and a number apart")
 end
@@ -4839,7 +4839,7 @@ do
   check(ex("have KLM88 climb 1200 m/min"):match("^ASK .*metres per min") ~= nil, "m/min")
   asked(ex("KLM88 climb 900 metres per minute"), "metres per minute")
   check(ex("KLM88 climb 16000 m"):match("^ASK Which altitude for KLM88") ~= nil, "16000 m")
-  check_eq(ex("KLM88 climb 11600 m"), "ALT KLM88 38058")
+  check_eq(ex("KLM88 climb 11600 m"), "ALT KLM88 38100")
 end
 
 -- Cycle 30 (R64): fast-forward "until" a time typed after it ("until t=30 min") is asked for a duration, never
@@ -6870,9 +6870,9 @@ do
   asked(ex("CCA88 speed 2000 km/h"), "1080 kt: no speed an airliner flies")
   check_eq(ex("CCA88 reduce speed two five zero knots"), "SPD CCA88 250")
   asked(ex("CSN512 climb to eight six hundred metres"), "digits one by one before hundred: 8600 m or a slip?")
-  check_eq(ex("CSN512 climb to eight thousand six hundred metres"), "ALT CSN512 28215")
-  check_eq(ex("CSN512 climb to eight six zero zero metres"), "ALT CSN512 28215")
-  check_eq(ex("CSN512 climb to eighty six hundred metres"), "ALT CSN512 28215")
+  check_eq(ex("CSN512 climb to eight thousand six hundred metres"), "ALT CSN512 28200")
+  check_eq(ex("CSN512 climb to eight six zero zero metres"), "ALT CSN512 28200")
+  check_eq(ex("CSN512 climb to eighty six hundred metres"), "ALT CSN512 28200")
 end
 
 -- Cycle 40 (d81): a metric level or a flight level said with "standard" ("9800 metres, standard", "on standard
@@ -6880,12 +6880,12 @@ end
 -- is still asked
 do
   local _, ex = scene({ "CRE CXA71 B738 25.0 118.0 045 FL250 280" })
-  check_eq(ex("CXA71 climb to eight four zero zero metres, standard"), "ALT CXA71 27559")
-  check_eq(ex("CXA71 descend and maintain 6600 metres on standard pressure"), "ALT CXA71 21654")
+  check_eq(ex("CXA71 climb to eight four zero zero metres, standard"), "ALT CXA71 27600")
+  check_eq(ex("CXA71 descend and maintain 6600 metres on standard pressure"), "ALT CXA71 21700")
   check_eq(ex("CXA71 climb flight level 310 standard"), "ALT CXA71 FL310")
   asked(ex("CXA71 descend to 4000 feet standard"), "standard after an altitude in feet")
   asked(ex("CXA71 climb to 8400 metres standard rate"), "a standard rate, no altimeter setting")
-  check_eq(ex("CXA71 descend to six five hundred metres, correct, six thousand five hundred metres"), "ALT CXA71 21325")
+  check_eq(ex("CXA71 descend to six five hundred metres, correct, six thousand five hundred metres"), "ALT CXA71 21300")
 end
 
 -- Cycle 40 (d81): mainland China's airlines by telephony, after a verb too ("delete Lucky Air ...", "where is Shun
@@ -6896,7 +6896,7 @@ do
   check_eq(ex("sim op: delete Lucky Air five two zero three"), "DEL LKE5203")
   check_eq(ex("where is Shun Feng three three zero one"), "POS CSS3301")
   check_eq(ex("remove air china cargo eight zero eight"), "DEL CAO808")
-  check_eq(ex("Air China 977 climb to 10100 metres"), "ALT CCA977 33136")
+  check_eq(ex("Air China 977 climb to 10100 metres"), "ALT CCA977 33100")
   asked(ex("delete Lucky Air five two zero four"), "no Lucky Air 5204 flies")
 end
 
@@ -9341,8 +9341,8 @@ end
 -- distance in kilometres elsewhere is no level
 do
   local _, ex = scene({ "CRE AC001 B744 52.0 4.0 090 FL300 300" })
-  check_eq(ex("AC001 climb to 11 km"), "ALT AC001 36089")
-  check_eq(ex("AC001 descend to 8.5 km"), "ALT AC001 27887")
+  check_eq(ex("AC001 climb to 11 km"), "ALT AC001 36100")
+  check_eq(ex("AC001 descend to 8.5 km"), "ALT AC001 27900")
   -- (a distance no command carries is asked, never read as a level nor dropped)
   check_eq(ex("AC001 descend to FL250 within 10 km"), "ASK I have ALT AC001 FL250. What does '10 km' mean?")
   asked(ex("AC001 descend to 60 km"), "no level is 60 km")
@@ -11416,7 +11416,7 @@ do
   check_eq(ex("sva31 climb at a high rate to 25000 feet"), "ALT SVA31 25000")
   check_eq(ex("sva31 good rate of descent, descend FL150"), "ALT SVA31 FL150")
   check_eq(ex("sva31 descend FL150 at your best rate of descent"), "ALT SVA31 FL150")
-  check_eq(ex("sva31 descend with a healthy rate to 3000 metres"), "ALT SVA31 9843")
+  check_eq(ex("sva31 descend with a healthy rate to 3000 metres"), "ALT SVA31 9800")
   check_eq(ex("sva31 climb FL250 at a good rate of 1800 fpm"), "ALT SVA31 FL250 1800")
   check_eq(ex("sva31 increase your rate of descent to two thousand five hundred"), "VS SVA31 -2500")
   asked(ex("sva31 descend FL150 at a slow rate"), "a gentler rate, none said")
@@ -17187,4 +17187,54 @@ do
     "ADDWPT CSZ4410 AND", "ADDWPT CSZ4410 GOSAN" })
   check_eq(ex("CSZ4410 after AND, descend to 9000 feet"), "AT CSZ4410 AND DO ALT CSZ4410 9000")
   check_eq(ex("CSZ4410 at AND, reduce speed 230"), "AT CSZ4410 AND DO SPD CSZ4410 230")
+end
+-- Cycle 58 (fmet): levels in metres are cleared to the nearest 100 ft (within 15 m of the metres said; China's
+-- metric table reads the same below 8900 m); a step in metres ("600 metres more"), a correction in metres ("not
+-- 7800, is 8100" keeps the unit), a level kept in metres that the aircraft holds ("its altitude, keep 8900" at
+-- FL291: asked, never 8900 ft), the present level described before the clearance; Chinese-English habits:
+-- "how about (let) X <instruction>" suggests it, "open/close" a switch, a setting's size asked after its name
+do
+  local _, ex = scene({ "CRE CSN602 B738 35.2 116.2 090 FL301 290", "CRE CES77 A333 34.0 117.9 349 FL291 280",
+    "CRE CCA40 B789 36.5 117.1 162 FL291 280", "CRE CHH1 B738 40.1 116.6 184 FL120 250" })
+  check_eq(ex("CHH1 climb to 5700 metres"), "ALT CHH1 18700")
+  check_eq(ex("CHH1 climb flight level 6600 meters"), "ALT CHH1 21700")
+  check_eq(ex("CES77 climb 600 meter more"), "ALT CES77 31100")
+  check_eq(ex("CSN602 descend by 900 m"), "ALT CSN602 27100")
+  check(not ex("CSN602 descend 300 metres more"):find("ALT CSN602 984", 1, true), "a step in metres, never a level")
+  asked(ex("CES77 descend 2000 feet more or less"), "an estimate")
+  check_eq(ex("CHH1 climb to 6300 meter, sorry sorry, not 6300, is 6900"), "ALT CHH1 22600")
+  check_eq(ex("CHH1 climb to 6300 metres, no, not 6300, 6900"), "ALT CHH1 22600")
+  check_eq(ex("CSN602 descend to 8400 metres, correction, 7800"), "ALT CSN602 25600")
+  asked(ex("CSN602 descend to 8400 metres, correction, 7850"), "not whole hundreds of metres after metres")
+  check_eq(ex("CHH1 climb to 6300 meter, sorry, 21000 feet"), "ALT CHH1 21000")
+  check_eq(ex("CHH1 climb to 5100 meter, wait, sorry, not climb, descend to 3300 meter"), "ALT CHH1 10800")
+  asked(ex("CES77, its altitude, keep 8900, its heading, change to 200"), "a level kept in metres, no unit")
+  asked(ex("CSN602 maintain 9200 and turn left heading 180"), "9200 m is its level; 9200 ft a 21000 ft descent")
+  check_eq(ex("CSN602 maintain 9200 metres"), "ALT CSN602 30100")
+  check_eq(ex("CHH1 maintain 9000"), "ALT CHH1 9000")
+  check_eq(ex("CSN602 it is at 9200 meter yes? please descend to 8400 meter"), "ALT CSN602 27600")
+  check_eq(ex("CCA40 and CES77 same level 8900 meter, head to head, please let CES77 descend to 8400 meter"),
+    "ALT CES77 27600")
+  check_eq(ex("CHH1 climb to 6900 metres, passing 6000 metres reduce speed to 250"),
+    "ALT CHH1 22600 ; ATALT CHH1 19700 SPD CHH1 250")
+  check_eq(ex("how about let CCA40 speed 300 knot and CES77 speed 260 knot"), "SPD CCA40 300 ; SPD CES77 260")
+  check_eq(ex("CCA40 and CES77 maybe conflict, how about CES77 turn right 30 degree"), "HDG CES77 19 RIGHT")
+  check_eq(ex("how about we let CSN602 descend to 8400 meter?"), "ALT CSN602 27600")
+  check_eq(ex("how about CCA40 speed?"), "POS CCA40")
+  check_eq(ex("CHH1 open the VNAV please"), "VNAV CHH1 ON")
+  check_eq(ex("CSN602 close its LNAV"), "LNAV CSN602 OFF")
+  check_eq(ex("open the ASAS and resolution MVP"), "ASAS ON ; RESO MVP")
+  check_eq(ex("the conflict detection is open now or not?"), "ASAS")
+  check_eq(ex("the lookahead how long?"), "DTLOOK")
+  check_eq(ex("protected zone radius now how big?"), "ZONER")
+  check_eq(ex("resolution method tell me please"), "RESO")
+  check_eq(ex("look ahead time is 300 seconds"), "DTLOOK 300")
+end
+
+-- Cycle 58 (fmet): Shanghai Airlines by its telephony
+do
+  local _, ex = scene({ "CRE CSH9211 B738 31.75 119.30 100 FL250 280" })
+  check_eq(ex("Shanghai Air 9211 turn left heading 090"), "HDG CSH9211 90 LEFT")
+  check_eq(ex("Shanghai Airlines 9211 descend to 6000 meter"), "ALT CSH9211 19700")
+  asked(ex("Shanghai Air 9212 climb FL270"), "no CSH9212 flying")
 end
