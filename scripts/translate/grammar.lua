@@ -869,6 +869,22 @@ function G.hesitant_value(toks, k, j)
   return lead and not (toks[e] and not toks[e - 1].raw:match("%p$") and (UNIT_WORDS[toks[e].bare]
     or NUMBER_WORDS[toks[e].bare] or toks[e].bare:match("^%d")))
 end
+-- True when the words toks[1 .. k-1], from the last sentence mark (".", ";", "!", "?") on, name a value or an
+-- instruction (a word of G.valued_before, a unit, a flight level typed "fl300"): a run that takes back in words
+-- ("never mind", "forget", "scratch", "belay": lexicon.self_correction.dropping) after them corrects it ("climb
+-- FL310 never mind FL300"). After a callsign alone, no mark after the run ("DLH3 never mind FL300"), the run takes
+-- back what follows, no correction (G:instruction_withheld asks); with a mark ("DLH3 never mind, FL300") what
+-- follows is said in place of an earlier request.
+function G.valued_words_before(toks, k)
+  for x = k - 1, 1, -1 do
+    local t = toks[x]
+    if x < k - 1 and t.raw:match("[%.;!%?]$") then return false end
+    if G.valued_before[t.bare] or UNIT_WORDS[t.bare] or t.bare:match("^fl%d") or t.bare:match("^%d+%a+$") then
+      return true
+    end
+  end
+  return false
+end
 local function self_corrections(text)
   text = G.meant_after_hesitation(hesitated_sides(G.formal_apologies(G.admitted_slips(text))))
   if not holds_word(text:lower(), SC_MARKER_PATTERNS) and not holds_word(text:lower(), G.hesitation_patterns) then
@@ -914,6 +930,7 @@ local function self_corrections(text)
     -- second said in place of the first, G.hesitant_value)
     marked = marked or (j > k and G.hesitant_value(toks, k, j))
     if j > k and marked and not refused and not (dropping and after[nxt and nxt.bare or ""] and not SIDES[nxt.bare])
+        and not (dropping and not toks[j - 1].raw:match("%p$") and not G.valued_words_before(toks, k))
         and not (toks[k - 2] and toks[k - 2].bare == "not" and G.apology[toks[k].bare])
         and (value(toks[k - 1]) or (toks[k - 1] and SIDES[toks[k - 1].bare]) or position) and nxt
         and (said.bare:match("^%a?%a?%.?%d") or NUMBER_WORDS[said.bare] or after[said.bare] or position) then
@@ -3634,6 +3651,59 @@ function G:condition_closed(k, e)
   return #self.t + 1
 end
 
+-- True, asking (self.ask) which instruction waits, when the level, speed or distance condition `at` ("ATALT id
+-- FL100") that opens segment k stands between two instructions of one sentence: said straight after the
+-- instruction of segment k-1 (no comma or "and" between: "reduce speed 210 when passing 8000 ft and descend to
+-- 7000 ft") or set off by commas alone ("reduce speed 250, when passing FL100, turn left heading 200"). Read as
+-- segment k's (false) when it opens its clause after "and" ("reduce 240 knots, and when he's got 240, descend
+-- FL120"), "then" or a full stop, semicolon, "!" or "?"; when its clause runs on to its verb ("descend to 7000 ft,
+-- when passing 8000 ft reduce speed 210"); when it ends a limit ("until 12 miles from TAU, then ..."); or when segment
+-- k-1 only cleared the aircraft to the level or speed it waits for, or to levels it crosses the condition's level
+-- on the way to ("descend FL80, when passing FL100, reduce speed 220": an instruction never waits for its own
+-- value). `before`: #self.out before segment k-1's commands.
+function G:condition_between(segs, k, at, before)
+  local s, p = segs[k], segs[k - 1]
+  local kind, id, value = at:match("^(AT%u*) (%S+) (%S+)")
+  if not p or not before or #self.out <= before or not (kind == "ATALT" or kind == "ATSPD" or kind == "ATDIST") then
+    return false
+  end
+  -- (the condition's first word: the first after segment k-1's words that is no mark or "and", or the words
+  -- opening it that segment k-1 holds, "on reaching", "upon reaching")
+  local c = s.b
+  while c < s.trig and (self.t[c].kind == "punct" or self.t[c].filler or self:word(c, "and")) do c = c + 1 end
+  while c > p.trig + 1 and self:word(c - 1, "on upon @condition") do c = c - 1 end
+  -- (the words between segment k-1's last value and the condition: "descend and maintain 8000, upon reaching ..."
+  -- keeps its "and")
+  local qs = self:quantities(p.trig, c)
+  for x = #qs > 0 and qs[#qs].e or p.trig, c - 1 do
+    if self.t[x].kind == "punct" and self.t[x].text ~= "," or self:word(x, "@then_words and until till") then
+      return false
+    end
+  end
+  local opened = c > p.trig and self.t[c - 1].kind == "punct"
+  local closed = false
+  for x = c, s.trig - 1 do
+    if self.t[x].kind == "punct" and self.t[x].text == "," or self:word(x, "and") then closed = closed or x end
+  end
+  if opened and not closed then return false end
+  local fl = value:match("^FL(%d+)$")
+  local ft = kind == "ATALT" and (fl and tonumber(fl) * 100 or tonumber(value))
+  local own, same = kind == "ATALT" and "ALT" or kind == "ATSPD" and "SPD", true
+  for x = before + 1, #self.out do
+    local cmd, who, v = self.out[x]:match("^(%u+) (%S+) (%S+)")
+    same = same and cmd == own and who == id
+    if same and v ~= value and not (ft and self:on_the_way(id, ft)) then same = false end
+  end
+  if same then return false end
+  local function said(b, e)
+    while e > b and (self.t[e - 1].kind == "punct" or self:word(e - 1, "and")) do e = e - 1 end
+    return (self:raw(b, e):gsub(" ([,.;:])", "%1"))
+  end
+  self:need(string.format("Which should wait for '%s': '%s' or '%s'?", said(c, closed or s.trig), said(p.trig, c),
+    said(s.trig, s.e)))
+  return true
+end
+
 -- A condition said after its instruction, ending the request or a clause said to run at once (G:condition_closed) ("reduce the SAS to 250 knots once it passes
 -- flight level 100 on the way down", "slow EZY45 to 220 when it reaches FL120", "250 knots by the time it's
 -- passing FL200", "by the time it gets to FL200"): "once", "when" or "by the time", "it" or the aircraft, a
@@ -5903,6 +5973,8 @@ function G:parse(b, e)
       self.at_next = nil
       local at = self:at_altitude(s) or self:at_speed(s) or self:at_speed_again(s) or self:at_distance(s)
         or self:at_time(s) or self.at_all
+      -- ("reduce speed 210 when passing 8000 ft and descend to 7000 ft": which instruction waits is asked)
+      if at and at ~= self.at_all and self:condition_between(segs, k, at, seg_out[k - 1]) then break end
       -- "slow to 240 knots when it reaches flight level 200", "turn heading 180, but only when it is at
       -- FL250": a level said as a condition after the speed or heading instruction it holds
       local held, cut
@@ -10918,7 +10990,7 @@ function G:not_simulated()
         -- ("squawk 4721 at GRR descend FL290", "contact Chicago when 40 miles from GRR descend FL290"): a
         -- condition after the phrase of a class that takes no time anchors the instruction said after it with
         -- no punctuation between, so the phrase ends before it
-        if not class.takes_time and (self:word(e, "@condition") or (self:word(e, "at")
+        if not class.takes_time and not class.able and (self:word(e, "@condition") or (self:word(e, "at")
             and #self:refs_in(e + 1, e + 2, "waypoint") > 0)) then
           local k = e + 1
           while self.t[k] and self.t[k].kind ~= "punct" and not self:intent_at(k) do k = k + 1 end

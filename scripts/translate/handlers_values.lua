@@ -568,6 +568,11 @@ return function(H, f, wrap, compass)
       ft = r
       -- cleared altitudes are whole hundreds of feet: a spoken 2710 has a
       -- misheard word; the longest run of its words that is one counts
+      -- ("eight thousand five", "one zero thousand fifty": a number after "thousand" with no "hundred" may be the
+      -- hundreds with their word lost, 8500, as well as a word misheard: asked, never cut to the thousands)
+      if not q.number.typed and ft % 100 ~= 0 and q.number.thousand and not q.number.hundred then
+        return self:need(string.format("Which altitude for %s? I heard '%s'.", ids[1], self:raw(q.b, q.e)))
+      end
       if not q.number.typed and ft % 100 ~= 0 then
         ft = self:whole_hundreds(q)
         if not ft then return self:need("Which altitude for " .. ids[1] .. "? I heard " .. f.int(r) .. " ft.") end
@@ -880,9 +885,55 @@ return function(H, f, wrap, compass)
           self:as_change(q)
         end
       end
+      local against = self:speed_against_verb(s, id, q, spd, dir, q.kind == "speed" and q.value ~= q.number.value)
+      if against then return self:need(against) end
       self:emit("SPD " .. id .. " " .. spd)
       self.last_cond = "ATSPD " .. id .. " " .. spd
     end
+  end
+
+  -- The question when speed `spd` (as SPD writes it: knots, or a Mach number ".78") that segment s gives aircraft
+  -- id lies the other way from the direction its own verb says (the verb of lexicon.speed_direction_verbs nearest
+  -- before the value, from the instruction's word on; dir, m:direction's, nonzero): "increase speed 220" flying 260 kt,
+  -- "reduce speed to 300" flying 250 kt, "reduce to Mach .80" holding .78. Else nil: no direction, the speed the
+  -- aircraft flies or one the way said, a knots speed to an aircraft holding a Mach number (or the reverse), or a
+  -- condition in the request (lexicon.condition, level_condition, "then", "until": the speed then is not known).
+  -- `converted`: said in another unit ("reduce to 450 km/h", 243 kt): within 5 kt of the speed flown it is the
+  -- conversion's rounding, no contradiction.
+  function m:speed_against_verb(s, id, q, spd, dir, converted)
+    local a = self:state(id)
+    if dir == 0 or not a or not s.trig or s.trig > q.b
+        or self:word_in(1, #self.t + 1, "@condition @level_condition then until till") then
+      return nil
+    end
+    -- (the direction of the verb nearest before the value in its clause: "increase to 300. No, I mistook, reduce to
+    -- 260" reduces; a mark or a correction between leaves the value said in place of another, "speed up to 260
+    -- knots? Sorry, I meant 240", and "the Cessna's too slow, bump it to 120 knots" names no direction; "faster"
+    -- and "slower" may describe the aircraft, "slow the faster one to 220")
+    dir = 0
+    for x = q.b - 1, s.trig, -1 do
+      if self.t[x].kind == "punct" or self:word(x, "@correction") then break end
+      if self:word(x, "@speed_direction_verbs") and not self:word(x, "faster slower") then
+        dir = self:word(x, "reduce reducing decrease decreasing decelerate slow slowing down") and -1
+          or self:word(x, "increase increasing accelerate add up") and 1 or 0
+        break
+      end
+    end
+    if dir == 0 then return nil end
+    local mach = spd:match("^%.") and tonumber("0" .. spd)
+    local now, value, unit
+    if mach and a.sel_mach then
+      now, value, unit = a.sel_mach, mach, ""
+    elseif not mach and not a.sel_mach and (a.cas_kt or 0) > 0 then
+      now, value, unit = a.cas_kt, tonumber(spd), " kt"
+    end
+    local slack = converted and unit ~= "" and 5 or 1e-6
+    if not now or not value or (dir < 0 and value <= now + slack) or (dir > 0 and value >= now - slack) then
+      return nil
+    end
+    local said = mach and f.mach(now) or f.int(now) .. unit
+    return string.format("%s flies %s: %s to %s%s? Please confirm the speed.", id, said,
+      dir < 0 and "slow" or "speed up", spd, unit)
   end
 
   -- How speed value q said in segment s for aircraft id with direction dir (-1 slower, 1 faster, 0 none) is read, r its
@@ -1004,14 +1055,15 @@ return function(H, f, wrap, compass)
     -- both sides said for the turn with no correction word between ("left DLH404 turn right heading 090", "turn
     -- left heading 180, sorry, I meant to the right"): the later side when a self-correction marker
     -- (lexicon.self_correction.markers' words) is said between them; else asked when both come before the end of
-    -- the turn's value (a side after it, "..., traffic left ten o'clock", "vectors ILS 25 right", is another's)
+    -- the turn's value or straight after it ("turn left heading 200 right"; a side later, "..., traffic left ten
+    -- o'clock", "vectors ILS 25 right", is another's)
     local first = math.min(self:find_word(tb, s.e, "@left"), self:find_word(tb, s.e, "@right"))
     local value_end = (abs and abs.e) or (rel and rel.e) or s.e
     for x = first + 1, first < s.e and s.e - 1 or 0 do
       if self:word(x, "@left @right") and self.words[x] ~= self.words[first] and not self.noted[x] then
         if marker_in(self, first + 1, x) then
           turn, tb = self:word(x, "@right") and 1 or -1, x
-        elseif x < value_end then
+        elseif x < value_end or x == self:skip_fillers(value_end) then
           return self:need(string.format("Should %s turn left or right? I heard '%s' and '%s'.", ids[1],
             self.t[first].raw, self.t[x].raw))
         end

@@ -923,8 +923,8 @@ return {
   -- carries, with no instruction said before them that they could correct, they are asked (grammar.lua
   -- G:instruction_withheld)
   kept_from = { phrases = { "avoid", "forget", "forget about", "ignore", "disregard", "belay", "scrap", "never mind",
-                              "stay away from", "keep away from", "stay clear of", "keep clear of", "hold off",
-                              "hold off on", "refrain from" },
+                              "nevermind", "stay away from", "keep away from", "stay clear of", "keep clear of",
+                              "hold off", "hold off on", "refrain from" },
                   between = { "about", "on", "the", "that", "this", "your", "its", "his", "her", "their", "any", "of",
                               "from", "with", "a", "an" } },
   -- a value judged after it is said ("speed 250, sorry, 250 is too fast", "..., no, that's way too high"): "too",
@@ -1921,6 +1921,12 @@ return {
     { what = "reports of fuel and persons on board", words = "fuel souls persons", window = 2,
       near = { "remaining", "endurance", "board", "state", "status" }, through = "state status" },
     { what = "reports of fuel and persons on board", words = "endurance" },
+    -- "advise when able to climb FL300", "say when able FL300", "report if able higher", "let me know when able
+    -- direct KORRY": the pilot's report asked for, of what it can fly, up to the end of its clause; the
+    -- instruction named is no clearance (a clause opening with an imperative verb after a comma is one; `able`: its
+    -- "when" or "if" opens no condition)
+    { what = "reports of what the aircraft is able to fly", words = "advise report say tell know", near = { "able" },
+      window = 3, clause = true, able = true },
     -- "report level FL150", "report level at 5000", "report heading 090": the pilot's report on reaching that
     -- value, no clearance to it (`through`: the state word stays in the phrase, its value with it)
     { what = "position reports", words = "report reporting", near = { "level", "altitude", "heading", "speed", "mach" },

@@ -15956,7 +15956,9 @@ do
   -- a lone "to" before "thousand" has lost its digit: asked
   asked(ex("vistara seven seven descend to thousand feet"), "'to thousand': a digit lost")
   -- a speed started by "to" with one or two digit words: "to" is the first digit
-  check_eq(ex("akasa three one, increase speed to to zero knots"), "SPD AKJ31 220")
+  -- (220 kt against "increase" flying 260 kt is asked, the speed heard named: Cycle 58)
+  check(ex("akasa three one, increase speed to to zero knots"):find("^ASK AKJ31 flies 260 kt: speed up to 220 kt")
+    ~= nil, "'to to zero' is 220")
   check_eq(ex("indigo five reduce to for zero knots"), "SPD IGO5 240")
   check_eq(ex("indigo five reduce speed to one niner zero knots"), "SPD IGO5 190")
   asked(ex("akasa three one reduce speed to zero knots"), "'to zero': no speed")
@@ -16841,9 +16843,9 @@ do
   check_eq(ex2("KLM44 reduce 250 knots"), "SPD KLM44 250")
   check_eq(ex2("EZY21 increase speed 280"), "SPD EZY21 280")
   asked(ex2("KLM44 reduce 50"), "no unit: a speed cut short, or a change?")
-  -- (a flyable speed against the verb, with no change it could be, is the speed said: the verb said loosely)
-  check_eq(ex2("KLM44 increase speed 250"), "SPD KLM44 250")
-  check_eq(ex2("EZY21 reduce 300 knots"), "SPD EZY21 300")
+  -- (a flyable speed against the verb, with no change it could be, is asked, naming the speed flown: Cycle 58)
+  asked(ex2("KLM44 increase speed 250"), "faster to a lower speed")
+  asked(ex2("EZY21 reduce 300 knots"), "slower to a higher speed")
   asked(ex2("KLM44 reduce to 60 knots"), "no speed of a jet flying 290 kt")
   asked(ex2("KLM44 speed 80 knots"), "no speed of a jet flying 290 kt")
   check_eq(ex2("KLM44 when passing FL200 reduce 300"), "ATALT KLM44 FL200 SPD KLM44 300")
@@ -17237,4 +17239,70 @@ do
   check_eq(ex("Shanghai Air 9211 turn left heading 090"), "HDG CSH9211 90 LEFT")
   check_eq(ex("Shanghai Airlines 9211 descend to 6000 meter"), "ALT CSH9211 19700")
   asked(ex("Shanghai Air 9212 climb FL270"), "no CSH9212 flying")
+end
+-- Cycle 58 (fhz3): wrong commands hunted. A condition between two instructions, an instruction taken back before
+-- it is said, a speed against its verb, a report of what the pilot is able to fly, and hundreds lost after "thousand"
+do
+  local _, ex = scene({ "CRE EWG7TR A320 50.9 6.9 120 FL210 270", "CRE AUA55 A321 48.1 16.5 300 FL330 290" })
+  -- a condition said straight after one instruction and before another, or closed by a comma: which waits is asked
+  asked(ex("EWG7TR slow to 230 knots once passing FL150 and descend FL120"), "the speed or the descent waits")
+  asked(ex("EWG7TR turn right heading 180 when passing flight level 190 and reduce 250"), "the turn or the speed")
+  asked(ex("EWG7TR reduce to 250 knots, passing FL180, turn left heading 090"), "a condition between commas")
+  asked(ex("EWG7TR speed 240 kts when passing 16000 feet, descend FL140"), "a condition closed by a comma")
+  asked(ex("EWG7TR, reduce speed two three zero knots when you pass flight level one six zero and then turn left "
+    .. "heading zero niner zero"), "a condition before 'and then'")
+  -- the clear forms stay read: the condition first, alone with its instruction, opening its clause, after "then" or a
+  -- full stop, or on the way to the level cleared before it
+  check_eq(ex("EWG7TR passing FL180 reduce to 250 knots"), "ATALT EWG7TR FL180 SPD EWG7TR 250")
+  check_eq(ex("EWG7TR reduce to 250 knots when passing FL180"), "ATALT EWG7TR FL180 SPD EWG7TR 250")
+  check_eq(ex("EWG7TR descend FL120 and when passing FL180 reduce 250 knots"),
+    "ALT EWG7TR FL120 ; ATALT EWG7TR FL180 SPD EWG7TR 250")
+  check_eq(ex("EWG7TR descend FL120, passing FL180, reduce 250 knots"),
+    "ALT EWG7TR FL120 ; ATALT EWG7TR FL180 SPD EWG7TR 250")
+  check_eq(ex("EWG7TR reduce 250 knots, then when passing FL180 turn left heading 090"),
+    "SPD EWG7TR 250 ; ATALT EWG7TR FL180 HDG EWG7TR 90 LEFT")
+  check_eq(ex("EWG7TR reduce 250 knots. When passing FL180 turn left heading 090."),
+    "SPD EWG7TR 250 ; ATALT EWG7TR FL180 HDG EWG7TR 90 LEFT")
+  check_eq(ex("EWG7TR reduce 250 knots, when passing FL180 turn left heading 090"),
+    "SPD EWG7TR 250 ; ATALT EWG7TR FL180 HDG EWG7TR 90 LEFT")
+  -- "never mind" straight after the callsign takes back what follows; after a value it corrects it, and with a mark
+  -- after it what follows replaces an earlier request
+  asked(ex("AUA55 never mind FL350"), "the level taken back")
+  asked(ex("AUA55 nevermind heading 250"), "the heading taken back")
+  asked(ex("Austrian 55 never mind the speed 300"), "the speed taken back")
+  asked(ex("AUA55 never mind descending to FL300"), "the descent taken back")
+  check_eq(ex("AUA55 climb FL350 never mind FL340"), "ALT AUA55 FL340")
+  check_eq(ex("AUA55 never mind, FL340"), "ALT AUA55 FL340")
+  asked(ex("AUA55 don't climb"), "a climb refused")
+  asked(ex("AUA55 do not turn"), "a turn refused")
+  asked(ex("AUA55 no need to descend"), "a descent not needed")
+  asked(ex("AUA55 hold off on the climb"), "a climb put off")
+  -- a speed the other way from its verb is asked, as a level is; a turn's stated side is flown as said
+  asked(ex("EWG7TR increase speed to 250 knots"), "faster to a lower speed")
+  asked(ex("AUA55 slow down to 300"), "slower to a higher speed")
+  asked(ex("EWG7TR accelerate 260"), "faster to a lower speed")
+  asked(ex("AUA55 reduce speed to three two zero knots please"), "slower to a higher speed")
+  check_eq(ex("EWG7TR reduce speed 250 knots"), "SPD EWG7TR 250")
+  check_eq(ex("EWG7TR increase speed 290"), "SPD EWG7TR 290")
+  check_eq(ex("AUA55 slow to 280"), "SPD AUA55 280")
+  asked(ex("EWG7TR climb FL200"), "a climb to a lower level")
+  asked(ex("AUA55 descend FL350"), "a descent to a higher level")
+  check_eq(ex("EWG7TR turn left heading 130"), "HDG EWG7TR 130 LEFT")
+  -- "advise when able ...": the pilot's report asked for, nothing cleared
+  check_eq(ex("EWG7TR advise when able to climb FL250"), "")
+  check_eq(ex("Eurowings 7TR, report when able higher"), "")
+  check_eq(ex("AUA55 let me know if able to descend FL310"), "")
+  check_eq(ex("EWG7TR turn left heading 090, advise when able direct NVO"), "HDG EWG7TR 90 LEFT")
+  check_eq(ex("EWG7TR when able climb FL250"), "ALT EWG7TR FL250")
+  -- a number after "thousand" with no "hundred" may be the hundreds with their word lost
+  asked(ex("AUA55 descend to niner thousand five"), "9000 or 9500")
+  asked(ex("EWG7TR climb to two four thousand fifty"), "24000 or 24500")
+  check_eq(ex("AUA55 descend to nine thousand five hundred"), "ALT AUA55 9500")
+  check_eq(ex("AUA55 descend to one two thousand"), "ALT AUA55 12000")
+  -- the other side said straight after the turn's value is asked; a side said later is another's
+  asked(ex("EWG7TR turn left heading 200 right"), "both sides")
+  asked(ex("AUA55 right heading three three zero left turn"), "both sides")
+  asked(ex("EWG7TR turn left 30 degrees right"), "both sides")
+  check_eq(ex("EWG7TR turn left heading 200 right away"), "HDG EWG7TR 200 LEFT")
+  check_eq(ex("EWG7TR turn left heading 200, traffic right two o'clock"), "HDG EWG7TR 200 LEFT")
 end
