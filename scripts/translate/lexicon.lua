@@ -252,7 +252,15 @@ return {
         "ishi", "amesegenalehu", "tenastelign", "selam", "abeg", "oya", "chale", "chaley", "biko", "daalu", "nagode",
         "sannu", "medaase", "akwaaba", "sawubona", "ngiyabonga", "enkosi", "dankie", "asseblief", "yebo", "eish",
         -- and of the Gulf ("tamam": OK)
-        "tamam", "habibi", "mashallah" },
+        "tamam", "habibi", "mashallah",
+        -- the thanks, "please" and apologies of a research lab's other voices, romanised: Persian ("mersi",
+        -- "mamnoon", "lotfan", "bebakhshid"), Thai ("khob khun krub"), Indonesian ("maaf", "permisi", "tolong"),
+        -- Korean ("mianhamnida", "joesonghamnida"), Italian, Spanish and Portuguese ("scusi", "disculpe", "desculpa",
+        -- "com licenca"), German ("danke schön"), Polish ("przepraszam"), Greek ("signomi")
+        "mersi", "mamnoon", "mamnun", "motashakkeram", "lotfan", "bebakhshid", "bebakhshin", "krub", "khrub",
+        "khop", "maaf", "permisi", "tolong", "mianhamnida", "mianhae", "joesonghamnida",
+        "scusi", "scusa", "scusate", "disculpe", "disculpa", "perdone", "perdona", "desculpa", "desculpe", "licenca",
+        "schon", "schoen", "przepraszam", "signomi", "syngnomi" },
     -- phrases of courtesy that hold a word which means something elsewhere ("when", "if"):
     -- explained whole
     courtesy_phrases = { "pull up", "when you get a chance", "when you can", "when you're ready", "when ready",

@@ -17162,3 +17162,12 @@ do
   asked(ex("SAS41 descend FL200, THY7 the same as SAS41"), "a shape of 'same' not read")
   check_eq(ex("SAS41 climb to the same level as THY7"), "ALT SAS41 FL260")
 end
+
+-- Cycle 58 (fpol): thanks and apologies of a lab's other voices around a request are courtesy
+do
+  local _, ex = scene({ "CRE IRA712 A306 35.7 51.4 270 FL200 280", "CRE GIA88 B738 -6.1 106.6 090 FL180 270" })
+  check_eq(ex("lotfan IRA712 climb to FL240, mersi"), "ALT IRA712 FL240")
+  check_eq(ex("maaf, GIA88 descend FL150 please, terima kasih"), "ALT GIA88 FL150")
+  check_eq(ex("scusi, IRA712 please turn left heading 200, grazie"), "HDG IRA712 200 LEFT")
+  check_eq(ex("GIA88 reduce speed to 250 please, khob khun krub"), "SPD GIA88 250")
+end
