@@ -196,8 +196,9 @@ local function know_all(v, seen)
   -- inside a callsign read, lexicon.described_places.regions only as a place that describes an aircraft,
   -- lexicon.screen_position only where an aircraft's place on the screen is read, lexicon.unheard_markers only
   -- to ask a request again; lexicon.listener_address only where it is dropped, opening or closing a request;
-  -- lexicon.judged_values, kept_from and speed_direction_verbs only where their pass reads them: they never make a
-  -- word said elsewhere known)
+  -- lexicon.judged_values, kept_from and speed_direction_verbs only where their pass reads them, lexicon.wish_evaluative
+  -- and wish_negation only in a wish framed before "if", same_given and same_compared only beside "same": they never
+  -- make a word said elsewhere known)
   if type(v) ~= "table" or seen[v] or v == lexicon.accounted.courtesy_phrases or v == lexicon.accounted.value_phrases
       or v == lexicon.typed_abbreviations
       or v == lexicon.aside or v == lexicon.self_correction.just_the or v == lexicon.foreign_digits or v == lexicon.foreign_hesitation_digits
@@ -213,7 +214,8 @@ local function know_all(v, seen)
       or v == lexicon.self_correction.judged or v == lexicon.self_correction.admitted or v == lexicon.limit_release
       or v == lexicon.countries or v == lexicon.screen_position or v == lexicon.unheard_markers
       or v == lexicon.listener_address or v == lexicon.judged_values or v == lexicon.kept_from
-      or v == lexicon.speed_direction_verbs then
+      or v == lexicon.speed_direction_verbs or v == lexicon.wish_evaluative or v == lexicon.wish_negation
+      or v == lexicon.same_given or v == lexicon.same_compared then
     return
   end
   seen[v] = true
@@ -7996,6 +7998,21 @@ function G:uncarried()
   end
 end
 
+-- True when aircraft ref r is said with "same" in its clause (to the punctuation around it) as the one to do the
+-- same ("DLH6CK should do the same", "and DLH6CK in the same way", "the same for DLH6CK and BAW5"), never the one
+-- compared with ("the same level as DLH6CK": G:compared_with) nor beside a value's noun ("the same level", "same
+-- speed": lexicon.same_compared): such an aircraft no command carries is asked about, never dropped as context.
+function G:same_doer(r)
+  if self:compared_with(r.b) then return false end
+  local b, e = r.b - 1, r.e
+  while b >= 1 and self.t[b].kind ~= "punct" do b = b - 1 end
+  while e <= #self.t and self.t[e].kind ~= "punct" do e = e + 1 end
+  for k = b + 1, e - 1 do
+    if self:word(k, "same") and not self:word(k + 1, "@same_compared") then return true end
+  end
+  return false
+end
+
 -- True when aircraft ref r is added to an instruction by the words around it ("climb FL190 - TOM6RT as well",
 -- "same for TOM6RT", "do the same for the Tomjet", "and also TOM6RT") or given a direction of its own (", we want TOM6RT lower").
 function G:aircraft_added(r)
@@ -8060,7 +8077,7 @@ function G:unknown_names()
     -- A350 also goes through HAGIS"; a direction does: "- we want ICE44 lower")
     if r.kind == "aircraft" and (not r.exists or (self:aircraft_added(r) and not (self:in_reason(r.b) and self:word(r.e, "also")
           and self.t[r.e + 1] and self.t[r.e + 1].kind == "word" and not self:intent_at(r.e + 1)))
-          or not ((compared and not setting_for(r)) or self:in_reason(r.b) or lead_context(r) or self:as_context(r.b)
+          or not ((compared and not setting_for(r) and not self:same_doer(r)) or self:in_reason(r.b) or lead_context(r) or self:as_context(r.b)
             or self:compared_with(r.b)))
         and not r.false_start
         and not (self.explained or {})[r.b]  -- (read as a value: "sim speed x2")
@@ -8400,6 +8417,7 @@ function G:meaning_carried(i, kinds)
   end
   -- "if" opening a polite request ("I'd appreciate it if the Ryanair could turn ...") or a clause of
   -- framing words only ("if that's alright")
+  if text == "if" and self:wish_frame(i) then return true end
   if text == "if" then
     local framing, modal = true, false
     local k = i + 1
@@ -8882,11 +8900,39 @@ function G:name_beside_code(r, inside, code)
   end
 end
 
+-- The first token of a wish framed before the "if" at i, from its clause's start ("it would be good if KLM12
+-- climbs to FL300", "I think it is better if ...", "would be nice if ...", "I would be grateful if ..."): framing
+-- words and a word of lexicon.wish_evaluative only, no word of lexicon.wish_negation, not a question's inverted
+-- order ("would it be good if ...?", "is it better if ...": asked); nil when none.
+function G:wish_frame(i)
+  local k, eval = i - 1, false
+  while k >= 1 and not (self.t[k].kind == "punct" and self.t[k].text ~= "'") do
+    local t = self.t[k]
+    if self:word(k, "@wish_negation") or t.kind ~= "word" then return nil end
+    if self:word(k, "@wish_evaluative") then
+      eval = true
+    elseif not (FRAMING[t.text] or t.filler or self:word(k, "it'd i'd we'd that'd")) then
+      return nil
+    end
+    k = k - 1
+  end
+  local b = k + 1
+  if not eval or (self:word(b, "would will could should is was does") and self:word(b + 1, "it this that you")) then
+    return nil
+  end
+  return b
+end
+
 -- The positions of tokens the parse explains beyond the words themselves: callsigns, places, types and
 -- values; a place's name beside its issued code; the name "instead of" replaces or a direct-to passes
 -- (`kinds`: G:issued); an ATC unit's place; comments and purposes; courtesy and value phrases.
 function G:explained_spans(issued, kinds)
   local inside = {}
+  -- (a wish framed before "if": G:wish_frame)
+  for k = 2, #self.t do
+    local b = self.words[k] == "if" and self:wish_frame(k)
+    for x = b or 1, b and k or 0 do inside[x] = true end
+  end
   for _, r in ipairs(self.refs) do
     for k = r.b, r.e - 1 do inside[k] = true end
   end
@@ -9137,6 +9183,8 @@ function G:described()
       local held = self:quantities(v, #self.t + 1)[1]
       if held and held.b == v and self:word(held.e, "@described") then k = held.e end
       local verb_at = self:word(k + 1, "@described_quantifiers") and k + 2 or k + 1
+      -- ("KLM12 is kindly requested to descend", "is politely asked to": courtesy before the verb of the request)
+      if self:word(verb_at, "kindly politely please hereby herewith") then verb_at = verb_at + 1 end
       local before = self:word(r.b - 1, "the a an") and r.b - 2 or r.b - 1
       -- ("I've got the Tomjet above at 170": the object of lexicon.described_object, its clause from after the name)
       if self:word(before, "@described_object") then k = r.e - 1 end
@@ -11572,10 +11620,12 @@ function G:same_opening(b)
   local SAME_PASSIVE = "may can should must shall could would will to be done given applied also"
   local k = b - 1
   if self:word(k, "the") then k = k - 1 end
-  if not self:word(k, "for to") then return nil end
+  if not self:word(k, "for to with") then return nil end
   k = k - 1
   local stop = k - 4
   while k > stop and k > 1 and self:word(k, SAME_PASSIVE) do k = k - 1 end
+  -- ("the same instruction for DLH6CK", "same clearance to the Akasa": the noun of what is given again)
+  if self:word(k, "@same_given") and self:word(k - 1, "same") then k = k - 1 end
   if not self:word(k, "same likewise") then return nil end
   if self:word(k - 1, "the") then k = k - 1 end
   if self:word(k - 1, "do give") then k = k - 1 end
@@ -11589,11 +11639,20 @@ function G:same_span(b, e)
   local k = self:skip_fillers(e, false)
   local to = (self.t[k] and SAME_AFTER[self.t[k].text] and k + 1)
     or (self:word(k, "as") and self:word(k + 1, "well") and k + 2) or nil
+  -- ("DLH6CK also the same", "for the Akasa too the same": "the same" said again after "also" or "too")
+  if to and self:word(to, "the") and self:word(to + 1, "same") then to = to + 2 end
   local from = self:same_opening(b)
+  -- (", also DLH6CK", ", and also for the Akasa", ", also the same for DLH6CK": "also" opening the aircraft's clause
+  -- of its own)
+  local also = from or b
+  if self:word(also - 1, "the") and not from then also = also - 1 end
+  if self:word(also - 1, "for") and not from then also = also - 1 end
+  if self:word(also - 1, "also") then from = also - 1 end
   if from then
     b = from
     local c = b - 1
     if self:word(c, "please kindly") then c = c - 1 end
+    if self:word(c, "also") and c == b - 1 then c = c - 1 end
     opens = c >= 1 and (self.t[c].kind == "punct" or self:word(c, "and"))
     to = to or e
   end

@@ -252,7 +252,15 @@ return {
         "ishi", "amesegenalehu", "tenastelign", "selam", "abeg", "oya", "chale", "chaley", "biko", "daalu", "nagode",
         "sannu", "medaase", "akwaaba", "sawubona", "ngiyabonga", "enkosi", "dankie", "asseblief", "yebo", "eish",
         -- and of the Gulf ("tamam": OK)
-        "tamam", "habibi", "mashallah" },
+        "tamam", "habibi", "mashallah",
+        -- the thanks, "please" and apologies of a research lab's other voices, romanised: Persian ("mersi",
+        -- "mamnoon", "lotfan", "bebakhshid"), Thai ("khob khun krub"), Indonesian ("maaf", "permisi", "tolong"),
+        -- Korean ("mianhamnida", "joesonghamnida"), Italian, Spanish and Portuguese ("scusi", "disculpe", "desculpa",
+        -- "com licenca"), German ("danke schön"), Polish ("przepraszam"), Greek ("signomi")
+        "mersi", "mamnoon", "mamnun", "motashakkeram", "lotfan", "bebakhshid", "bebakhshin", "krub", "khrub",
+        "khop", "maaf", "permisi", "tolong", "mianhamnida", "mianhae", "joesonghamnida",
+        "scusi", "scusa", "scusate", "disculpe", "disculpa", "perdone", "perdona", "desculpa", "desculpe", "licenca",
+        "schon", "schoen", "przepraszam", "signomi", "syngnomi" },
     -- phrases of courtesy that hold a word which means something elsewhere ("when", "if"):
     -- explained whole
     courtesy_phrases = { "pull up", "when you get a chance", "when you can", "when you're ready", "when ready",
@@ -837,6 +845,22 @@ return {
   -- the words of a polite opener that asks leave to act ("is it possible to", "is it ok to"): the instruction after
   -- it is requested, not asked about (m:request_start, m:nav_asked)
   leave_asked = { "possible", "ok", "okay", "alright", "feasible", "trouble" },
+  -- a wish framed before "if" that asks for the instruction after it ("it would be good if KLM12 climbs to FL300",
+  -- "it is better if ...", "I would be grateful if ...": G:wish_frame): the evaluative words, one of which the
+  -- frame holds, and the negations that make it no wish ("it would not be good if ...": asked)
+  wish_evaluative = { "good", "nice", "great", "better", "best", "fine", "helpful", "useful", "ideal", "preferable",
+                      "perfect", "wonderful", "excellent", "grateful", "thankful", "glad", "happy", "appreciate",
+                      "appreciated", "prefer", "prefered", "preferred" },
+  -- the nouns of what is given again to another aircraft ("the same instruction for DLH6CK": G:same_opening)
+  same_given = { "instruction", "instructions", "thing", "clearance", "clearances", "command", "commands", "order",
+                 "orders" },
+  -- the nouns that make "same" a comparison of values ("the same level as", "same speed"): no aircraft said with
+  -- it is told to do the same (G:same_doer)
+  same_compared = { "level", "levels", "altitude", "altitudes", "height", "speed", "speeds", "heading", "headings",
+                    "track", "course", "route", "routes", "flight", "fl", "mach", "rate", "position", "direction",
+                    "time", "destination", "type", "spot", "place", "point", "waypoint", "fix", "airway", "runway" },
+  wish_negation = { "not", "no", "never", "wouldn't", "wouldnt", "isn't", "isnt", "won't", "wont", "don't", "dont",
+                    "couldn't", "shouldn't", "neither", "nor" },
   -- the states a word's "'s" stands before as "is" ("detection's on?", "resolution's switched off": no possessive;
   -- "active" is none, "the United's active waypoint")
   state_after_s = { "on", "off", "enabled", "disabled", "switched", "turned" },
@@ -873,7 +897,7 @@ return {
   -- copula); unless one of `described_not`
   -- follows ("X is cleared FL200", "X is to climb", "X is required to cross CNR at FL120")
   described = { "is", "are", "keeps", "stays", "remains", "sits", "currently" },
-  described_not = { "cleared", "to", "instructed", "told", "requested", "now", "going", "gonna", "climbing",
+  described_not = { "cleared", "to", "instructed", "told", "requested", "asked", "now", "going", "gonna", "climbing",
                     "descending", "turning", "both", "also", "required", "obliged" },
   -- an aircraft named as the object of one of these is described too, its clause to the next punctuation: "climb
   -- FL130, I've got the Tomjet above at one seven zero", "we've got the KLM at FL170" (G:described)

@@ -17306,3 +17306,38 @@ do
   check_eq(ex("EWG7TR turn left heading 200 right away"), "HDG EWG7TR 200 LEFT")
   check_eq(ex("EWG7TR turn left heading 200, traffic right two o'clock"), "HDG EWG7TR 200 LEFT")
 end
+-- Cycle 58 (fpol): the polite request class of non-native voices. A wish framed before "if" asks for the
+-- instruction after it (a negation, another judgement or a question's inverted order stays asked); the formal
+-- passive with courtesy before its verb; another aircraft added with "also" opening its clause, "also the same"
+-- after it or "the same instruction for" it; an aircraft told to "do the same" in a shape not read is asked,
+-- never dropped as context.
+do
+  local _, ex = scene({ "CRE SAS41 A20N 59.6 17.9 040 FL230 270", "CRE THY7 A321 59.9 18.4 210 FL260 280",
+    "CRE AZA88 B77W 59.2 17.2 300 FL340 300" })
+  check_eq(ex("it would be nice if the Scandinavian descends to FL190"), "ALT SAS41 FL190")
+  check_eq(ex("I think it's better if THY7 turns right heading 300"), "HDG THY7 300 RIGHT")
+  check_eq(ex("it'd be helpful if AZA88 reduces speed to 270 knots, thank you"), "SPD AZA88 270")
+  check_eq(ex("I would be grateful if SAS41 climbs to flight level 250"), "ALT SAS41 FL250")
+  asked(ex("it would not be good if SAS41 climbs to FL250"), "a negated wish")
+  asked(ex("would it be better if THY7 descends to FL200?"), "a question on the idea")
+  asked(ex("it would be bad if AZA88 descends to FL300"), "no wish")
+  check_eq(ex("SAS41 is kindly requested to descend to FL210"), "ALT SAS41 FL210")
+  check_eq(ex("THY7 is politely asked to turn left heading 120"), "HDG THY7 120 LEFT")
+  check_eq(ex("SAS41 descend FL200, also THY7 please"), "ALT SAS41 FL200 ; ALT THY7 FL200")
+  check_eq(ex("SAS41 reduce speed 240, and also for the Turkish"), "SPD SAS41 240 ; SPD THY7 240")
+  check_eq(ex("SAS41 descend FL200, and for AZA88 also the same"), "ALT SAS41 FL200 ; ALT AZA88 FL200")
+  check_eq(ex("SAS41 descend FL200, the same instruction for THY7 please"), "ALT SAS41 FL200 ; ALT THY7 FL200")
+  asked(ex("SAS41 descend FL200, THY7 should do the same"), "a shape of 'same' not read")
+  asked(ex("SAS41 descend FL200 and THY7 in the same way"), "a shape of 'same' not read")
+  asked(ex("SAS41 descend FL200, THY7 the same as SAS41"), "a shape of 'same' not read")
+  check_eq(ex("SAS41 climb to the same level as THY7"), "ALT SAS41 FL260")
+end
+
+-- Cycle 58 (fpol): thanks and apologies of a lab's other voices around a request are courtesy
+do
+  local _, ex = scene({ "CRE IRA712 A306 35.7 51.4 270 FL200 280", "CRE GIA88 B738 -6.1 106.6 090 FL180 270" })
+  check_eq(ex("lotfan IRA712 climb to FL240, mersi"), "ALT IRA712 FL240")
+  check_eq(ex("maaf, GIA88 descend FL150 please, terima kasih"), "ALT GIA88 FL150")
+  check_eq(ex("scusi, IRA712 please turn left heading 200, grazie"), "HDG IRA712 200 LEFT")
+  check_eq(ex("GIA88 reduce speed to 250 please, khob khun krub"), "SPD GIA88 250")
+end
