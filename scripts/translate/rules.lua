@@ -1065,6 +1065,17 @@ return function(intent, rule, words)
     end
     return true
   end }
+  -- "seed 42, 20 acft, cd on", "seed 42 and 10 aircraft please": a count of aircraft in a clause of its own (first
+  -- in the request, or after a comma or "and") in a request that sets the random seed is random traffic of that
+  -- count; nothing else said in its clause
+  rule { "aircraft planes flights", "mcre", when = function(g, i)
+    local t, before = g.t[i - 1], g.t[i - 2]
+    if not (t and t.kind == "number" and t.num and t.num >= 1 and t.num <= 500 and t.num % 1 == 0) then return false end
+    if before and not (before.kind == "punct" and before.text ~= "." or g:word(i - 2, "and")) then return false end
+    local nx = g.t[i + 1]
+    if nx and not (nx.kind == "punct" or g:word(i + 1, "please pls and then")) then return false end
+    return g:word_in(1, #g.t + 1, "seed")
+  end }
   -- ("creating N48TX, PC12, ..."; "set the seed before creating anything" names no creation)
   rule { "creating spawning", false, prev = { 1, "before after without" } }
   -- "delete WZZ61B, it's spawned in the wrong place", "it was created too close": how an aircraft came to be,
@@ -2095,6 +2106,12 @@ return function(intent, rule, words)
     local nx = g.t[i + 1]
     return nx ~= nil and (g:has_ref(i + 1, i + 2, "waypoint") or nx.kind == "number")
       and g:has_ref(1, #g.t + 1, "type")
+  end }
+  -- "lnav status klm1607?", "the vnav state of KLM12", "status of lnav for X": the switch's state, asked by the
+  -- switch's own query (handlers_other m:nav_asked), no position report
+  rule { "status state", false, when = function(g, i)
+    return g:word(i - 1, "lnav vnav") or g:word(i - 2, "lnav vnav") and g:word(i - 1, "the its")
+      or g:word(i + 1, "of") and g:word(i + 2, "lnav vnav")
   end }
   rule { "details status info information state pos", "pos" }
   -- "show me both of them, KLM12 and EIN45", "KLM12 and EIN45 are in conflict, show me the both of them": the
