@@ -3066,10 +3066,11 @@ return function(H, f, compass)
       self:mark_used(to + 1, to + 2)
       self:explain(to, to + 2)
     end
-    -- (a word squawk does not know said after "to", naming no airport or waypoint, is a place asked about,
-    -- never dropped: MCRE takes the segment's words; "to fill the sky" is a purpose)
+    -- (a word squawk does not know said after "to", naming no airport or waypoint, one or two words ending the
+    -- instruction, is a place asked about, never dropped: MCRE takes the segment's words; "to fill the sky",
+    -- "to serve as background traffic" are a purpose)
     if to < s.e and not dest and self:word(to, "to") and self.t[to + 1] and self.t[to + 1].kind == "word"
-        and not self:known_word(to + 1) then
+        and not self:known_word(to + 1) and self:words_said(to + 1, s.e) <= 2 then
       return self:need(string.format("Where should the random aircraft fly to? I heard '%s'.", self:raw(to + 1, s.e)))
     end
     -- (a place after a verb of going that names no airport or waypoint is asked about, never dropped)
@@ -3284,6 +3285,14 @@ return function(H, f, compass)
   -- "orig of tra631 is ehrd"): a word of four
   -- letters, no English squawk knows, that names an open airport of the navdata (upper-case codes are
   -- names already). Marked used; nil when none.
+  -- the count of words in [b, e) but "please" and "pls"
+  function m:words_said(b, e)
+    local n = 0
+    for k = b, e - 1 do
+      if self.t[k] and self.t[k].kind == "word" and not self:word(k, "please pls") then n = n + 1 end
+    end
+    return n
+  end
   -- the airport whose ICAO code token k is, typed in lower case ("to eham"), no English word; nil when none
   function m:typed_airport_code(k)
     local t, class = self.t[k], self.world.airport_class
