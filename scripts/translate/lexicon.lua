@@ -660,6 +660,8 @@ return {
     -- "ff 1 hr"; "5 fnl" final; "trls off" the trails; "mv" move, opening the line)
     trfc = { word = "traffic" }, rchg = { word = "reaching" }, lvg = { word = "leaving" },
     fph = { word = "fly present heading", not_prev = "#number" }, acft = { word = "aircraft" },
+    -- ("enable vertical resos": the resolutions, a plural of "reso" typed)
+    resos = { word = "resolutions" },
     rt = { word = "right", prev = "#number deg degrees" }, lt = { word = "left", prev = "#number deg degrees" },
     -- (the side typed without its vowels after the degrees of a turn, "25 lft", "10 deg rgt")
     lft = { word = "left", prev = "#number deg degrees" }, rgt = { word = "right", prev = "#number deg degrees" },

@@ -1055,6 +1055,14 @@ return function(intent, rule, words)
     local k = g:skip_fillers(i + 1)
     local t = g.t[k]
     if t ~= nil and t.kind == "number" and g:word(k + 1, "@counted_aircraft") then return true end
+    -- ("spawn 12 b738 at fl250 280kt": a count of 2 or more typed straight before a type, no new callsign said)
+    if t ~= nil and t.kind == "number" and t.num and t.num >= 2 and t.num <= 500 and t.num % 1 == 0
+        and g:has_ref(k + 1, k + 2, "type") then
+      for _, r in ipairs(g:refs_in(1, #g.t + 1, "aircraft")) do
+        if not r.exists then return false end
+      end
+      return true
+    end
     local q = t ~= nil and t.number_word and g:quantities(k, k + 4)[1]
     if not (q and q.b == k and q.kind == "plain" and not q.number.decimal and q.value >= 2
         and g:word(q.e, "@counted_aircraft")) then
@@ -2341,6 +2349,14 @@ return function(intent, rule, words)
     if not (g:word(k, "a") and g:word(k + 1, "moment second minute bit while")) then return false end
     k = g:word(k + 2, "the") and k + 3 or k + 2
     return g:word(k, "@sim")
+  end }
+  -- "stop", "stop pls": the verb alone, the whole request, stops the run (HOLD); in fast time, where it may end
+  -- the fast-forward instead, it is left unread (asked)
+  rule { "stop", "hold", when = function(g, i)
+    for k = 1, #g.t do
+      if k ~= i and not (g.t[k].kind == "punct" or g:word(k, "please pls now")) then return false end
+    end
+    return g.world.run_state ~= "ff"
   end }
   -- "stop it for a moment", "stop everything for a second": the run stopped a while, said with no
   -- aircraft named anywhere in the request ("KLM12, stop it for a moment" is no pause)

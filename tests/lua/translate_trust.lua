@@ -17175,3 +17175,15 @@ do
     check_eq(nex("klm1234 dest ebbr ipv eham"), "DEST KLM1234 EBBR")
   end
 end
+do
+  local _, ex = scene({ "CRE BAW8CK A320 52.0 4.0 025 FL200 250", "CRE KLM77 B738 52.1 4.5 180 FL150 250" })
+  -- f185: a count typed before a type in a creation, no callsign: random traffic of that type
+  check_eq(ex("spawn 6 a321 at fl280 290kt"), "MCRE 6 A321 FL280 290")
+  check_eq(ex("generate 3 e190"), "MCRE 3 E190")
+  asked(ex("spawn 1 b738"), "one aircraft needs its callsign")
+  -- the resolutions typed "resos"; "stop" alone stops the run
+  check_eq(ex("enable vertical resos"), "RMETHV V/S")
+  asked(ex("resos off"), "resolution off for everyone is confirmed")
+  check_eq(ex("stop pls"), "HOLD")
+  asked(ex("stop klm"), "a stop of something unread")
+end
