@@ -197,8 +197,8 @@ local function know_all(v, seen)
   -- lexicon.screen_position only where an aircraft's place on the screen is read, lexicon.unheard_markers only
   -- to ask a request again; lexicon.listener_address only where it is dropped, opening or closing a request;
   -- lexicon.judged_values, kept_from and speed_direction_verbs only where their pass reads them, lexicon.wish_evaluative
-  -- and wish_negation only in a wish framed before "if", same_given and same_compared only beside "same": they never
-  -- make a word said elsewhere known)
+  -- and wish_negation only in a wish framed before "if", same_given and same_compared only beside "same", lexicon.ml_labels
+  -- only where dropped: they never make a word said elsewhere known)
   if type(v) ~= "table" or seen[v] or v == lexicon.accounted.courtesy_phrases or v == lexicon.accounted.value_phrases
       or v == lexicon.typed_abbreviations
       or v == lexicon.aside or v == lexicon.self_correction.just_the or v == lexicon.foreign_digits or v == lexicon.foreign_hesitation_digits
@@ -213,7 +213,7 @@ local function know_all(v, seen)
       or v == lexicon.self_correction.formal_apology or v == lexicon.self_correction.described
       or v == lexicon.self_correction.judged or v == lexicon.self_correction.admitted or v == lexicon.limit_release
       or v == lexicon.countries or v == lexicon.screen_position or v == lexicon.unheard_markers
-      or v == lexicon.listener_address or v == lexicon.judged_values or v == lexicon.kept_from
+      or v == lexicon.listener_address or v == lexicon.judged_values or v == lexicon.kept_from or v == lexicon.ml_labels
       or v == lexicon.speed_direction_verbs or v == lexicon.wish_evaluative or v == lexicon.wish_negation
       or v == lexicon.same_given or v == lexicon.same_compared then
     return
@@ -1248,6 +1248,17 @@ function G.question_label_dropped(text)
   end
   return text
 end
+G.ml_labels = set_of(lexicon.ml_labels)
+-- "obs check: whats X doing", "warmup, ff 2 min": a training run's label (lexicon.ml_labels) and its mark are
+-- dropped before the request said after them
+function G.ml_label_dropped(text)
+  for at in text:sub(1, 40):gmatch("()[:,%-]") do
+    local label = text:sub(1, at - 1):lower():gsub("^%s+", ""):gsub("%s+$", ""):gsub("%s+", " ")
+    local rest = text:sub(at + 1):match("^%s*(%S.*)$")
+    if rest and G.ml_labels[label] then return rest end
+  end
+  return text
+end
 G.topic_shift = { leads = set_of(lexicon.topic_shift.leads), verbs = set_of(lexicon.topic_shift.verbs),
   particles = set_of(lexicon.topic_shift.particles) }
 -- "Can we circle back to the Delta? I'd like it at 250 knots": the words that turn to an aircraft
@@ -1304,7 +1315,7 @@ function G.listener_address_dropped(text)
   return text
 end
 local function unlabelled(text)
-  text = G.topic_shift_dropped(G.question_label_dropped(assent_dropped(G.listener_address_dropped(text))))
+  text = G.topic_shift_dropped(G.question_label_dropped(G.ml_label_dropped(assent_dropped(G.listener_address_dropped(text)))))
   local greeting, after = text:match("^%s*(%a+)%s*,?%s+(.+)$")
   if greeting and GREETINGS[greeting:lower()] then
     local name, next_word = after:match("^(%a+)%s*,?%s+(%a.*)$")
@@ -1748,6 +1759,75 @@ function G.decimal_comma(text, b, whole, part, e)
   return nil
 end
 
+-- Dutch chat's "ff" (spoken "even": just, for a moment, a softener) inside a request: "klm1234 ff naar fl150",
+-- "kun je ff X naar fl260 zetten", "hold the sim ff". Typed lower case after a word of its own clause (no
+-- punctuation closing that word, and it none of G.ff_lead: the words that open a fast-forward of its own,
+-- "then ff", "and ff", "now ff", "can you ff"), and with no duration, "until" or "forward" after it, it is the
+-- softener and is dropped; TrafScript's FF (fast time) is never read from it. "ff" alone, first in its clause
+-- or with a duration stays the fast-forward.
+G.ff_lead = { ["then"] = true, ["and"] = true, en = true, dan = true, now = true, nu = true, ok = true, okay = true,
+  oke = true, so = true, just = true, please = true, pls = true, plz = true, also = true, lets = true,
+  ["let's"] = true, can = true, could = true, would = true, will = true, you = true, we = true, i = true,
+  to = true, ["+"] = true, ["&"] = true, ["->"] = true, ["do"] = true, ["go"] = true, run = true }
+G.ff_duration_after = { ["until"] = true, till = true, tot = true, forward = true, ["for"] = true, a = true,
+  an = true, minuten = true, minuut = true, seconden = true, uur = true }
+G.dutch_value_ends = { nm = true, ft = true, kt = true, kts = true, knots = true, feet = true, on = true, off = true,
+  aan = true, uit = true, min = true, s = true, sec = true, fpm = true }
+G.dutch_can = { ["kun je"] = true, ["kun jij"] = true, ["kunt u"] = true, ["kan je"] = true, ["kan jij"] = true }
+-- ("kun je", "kunt u", "kan je" opening the request: can you; read here, after "ff" was, and not in
+-- lexicon.said_whole, so that "kun" is no word a typing slip could be read as)
+function G.dutch_chat(text)
+  return (G.dutch_chat_words(text):gsub("^(%s*)(%a+)%s+(%a+)(%s)", function(lead, can, you, sp)
+    if G.dutch_can[can:lower() .. " " .. you:lower()] then return lead .. "can you" .. sp end
+  end))
+end
+function G.dutch_chat_words(text)
+  if not (text:find("%f[%a]ff%f[%A]") or text:find("%f[%a]en%f[%A]") or text:find("%f[%a]met%f[%A]")) then
+    return text
+  end
+  local toks = {}
+  for w in text:gmatch("%S+") do toks[#toks + 1] = w end
+  local changed = false
+  for i = 2, #toks do
+    local prev = toks[i - 1]
+    -- (a duration anywhere in the rest of its clause: a number first after it, a unit of time, "until")
+    local timed = toks[i + 1] ~= nil and toks[i + 1]:match("^%d") ~= nil
+    for k = i + 1, #toks do
+      local w = toks[k]:lower():gsub("%p+$", "")
+      if G.time_units[w] or G.ff_duration_after[w] or w:match("^%d+[smh]$") or w:match("^%d+mins?$")
+          or w:match("^%d+:%d") then
+        timed = true
+      end
+      if toks[k]:match("[,;:]$") then break end
+    end
+    if toks[i]:match("^ff[%.!?]?$") and not prev:match("%p$") and not G.ff_lead[prev:lower()] and not timed then
+      toks[i] = toks[i]:match("[%.!?]$") and toks[i]:sub(-1) or ""
+      changed = true
+    end
+  end
+  -- Dutch "en" (and) and "met" (with) straight after a value or a switch's state, with no other Dutch word to
+  -- mark the sentence ("pz 5 nm en 1000 ft", "cd on met lookahead 240"); "en route" stays
+  -- (not in a sentence of Spanish or French words, whose "en" is "at", "in": "crear ... 320 en gavol")
+  local romance = false
+  for _, language in ipairs({ "spanish", "french" }) do
+    local index = G.said_whole_index()[language]
+    for _, w in ipairs(toks) do
+      for _, h in ipairs(index[w:lower():gsub("%p+$", "")] or {}) do romance = romance or h.marks end
+    end
+  end
+  for i = 2, romance and 1 or #toks - 1 do
+    local w, prev, nxt = toks[i], toks[i - 1]:lower(), toks[i + 1]:lower()
+    if (w == "en" or w == "met") and (prev:match("%d$") or G.dutch_value_ends[prev]) and nxt ~= "route" then
+      toks[i] = w == "en" and "and" or "with"
+      changed = true
+    end
+  end
+  if not changed then return text end
+  local out = {}
+  for _, w in ipairs(toks) do if w ~= "" then out[#out + 1] = w end end
+  return table.concat(out, " ")
+end
+
 local function written_forms(text, world)
   -- (each pattern pass runs through where(): only where `low`, the text in lower case, holds what the
   -- pattern requires, its first argument; a rewrite outside where() sets `low` again)
@@ -1769,7 +1849,7 @@ local function written_forms(text, world)
   -- "47,5 north", "8,5 degrees east", "factor to 1,1": a decimal comma (G.decimal_comma) is the point
   where("%d,%d", "()(%d+),(%d+)()", function(b, whole, part, e) return G.decimal_comma(text, b, whole, part, e) end)
   text = typed_abbreviations(lone_multipliers(tokens.numerals_apart(G.cut_off_restarts(text), DIGIT_WORDS), world))
-  text = hyphened_types(spelled(G.spelled_letter_a(heard_forms(negated_values(G.readback_reported(readback_heard(self_corrections(G.said_but(G.cancel_corrections(unlabelled(foreign_digits(G.said_whole(G.denied_word(text))))))))))))))
+  text = hyphened_types(spelled(G.spelled_letter_a(heard_forms(negated_values(G.readback_reported(readback_heard(self_corrections(G.said_but(G.cancel_corrections(unlabelled(foreign_digits(G.said_whole(G.denied_word(G.dutch_chat(text)))))))))))))))
   low = text:lower()
   -- a position typed as whole degrees after the hemisphere, then minutes ("N55 50.0 W003 20.0", "S33 57
   -- E151 10"): decimal degrees before their hemisphere ("55.833333 N 3.333333 W"); minutes of 60 or more

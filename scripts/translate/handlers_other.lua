@@ -3060,6 +3060,19 @@ return function(H, f, compass)
     if to == s.e and self:word(going + 1, "for") then to = going + 1 end
     local dest = to < s.e and (self:refs_in(to + 1, to + 2, "waypoint")[1] or {}).name
     if to < s.e and not dest then dest = self:place_by_name(to + 1, math.min(s.e, to + 3), self.fleet[1]) end
+    -- ("spawn 5 random acft to eham": an airport's code typed in lower case)
+    if to < s.e and not dest and self:typed_airport_code(to + 1) then
+      dest = self:typed_airport_code(to + 1)
+      self:mark_used(to + 1, to + 2)
+      self:explain(to, to + 2)
+    end
+    -- (a word squawk does not know said after "to", naming no airport or waypoint, one or two words ending the
+    -- instruction, is a place asked about, never dropped: MCRE takes the segment's words; "to fill the sky",
+    -- "to serve as background traffic" are a purpose)
+    if to < s.e and not dest and self:word(to, "to") and self.t[to + 1] and self.t[to + 1].kind == "word"
+        and not self:known_word(to + 1) and self:words_said(to + 1, s.e) <= 2 then
+      return self:need(string.format("Where should the random aircraft fly to? I heard '%s'.", self:raw(to + 1, s.e)))
+    end
     -- (a place after a verb of going that names no airport or waypoint is asked about, never dropped)
     local k = to < s.e and not dest and (self:word(to - 1, "going heading headed bound flying inbound all")
       or self:word(to, "destination"))
@@ -3272,6 +3285,22 @@ return function(H, f, compass)
   -- "orig of tra631 is ehrd"): a word of four
   -- letters, no English squawk knows, that names an open airport of the navdata (upper-case codes are
   -- names already). Marked used; nil when none.
+  -- the count of words in [b, e) but "please" and "pls"
+  function m:words_said(b, e)
+    local n = 0
+    for k = b, e - 1 do
+      if self.t[k] and self.t[k].kind == "word" and not self:word(k, "please pls") then n = n + 1 end
+    end
+    return n
+  end
+  -- the airport whose ICAO code token k is, typed in lower case ("to eham"), no English word; nil when none
+  function m:typed_airport_code(k)
+    local t, class = self.t[k], self.world.airport_class
+    if not (class and t and t.kind == "word" and t.raw:match("^%l%l%l%l$")) or self:known_word(k) then return nil end
+    local c = class(t.raw:upper()) or ""
+    if c == "" or c == "CLOSED" then return nil end
+    return t.raw:upper()
+  end
   local function typed_airport(self, s)
     local class = self.world.airport_class
     -- (the field's aircraft between, "orig of tra631 is ehrd", "origin tra631 ehrd")
@@ -3346,6 +3375,10 @@ return function(H, f, compass)
     -- (whether an airport is named in [b, e), near the aircraft first: a test, its questions left to the reading
     -- below, which finds a city many airports share by distance: "Alexandria" over Egypt is HEAX, not KAEX)
     local function names_airport(b, e)
+      -- (a code typed in lower case that the navdata's airports hold: "dest ehbk instead of eheh")
+      for k = b, e - 1 do
+        if self:typed_airport_code(k) then return true end
+      end
       local asked = self.ask
       local found = (here and self:airport_by_name(b, e, here, true)) or self:airport_by_name(b, e)
       self.ask = asked
@@ -3577,6 +3610,12 @@ return function(H, f, compass)
     while e < #self.t and not (self.t[e].kind == "punct" and self.t[e].text:match("^[.?!]$")) do e = e + 1 end
     if self:word_in(b, e + 1, "@setting_verbs") or self:word_in(b, e + 1, "@leave_asked") then return false end
     if self:word(b == 1 and self:request_start() or self:skip_fillers(b), "is are") then return true end
+    -- ("lnav status klm1607?", "vnav state of KLM12", "status of lnav for X": the switch's state named, no
+    -- "on" or "off" said, is asked after, never set)
+    if self:word_in(math.max(b, s.trig - 2), math.min(e + 1, s.trig + 3), "status state")
+        and not self:word_in(b, e + 1, "on off engage engaged disengage disconnect activate deactivate enable disable") then
+      return true
+    end
     return self.t[e].text == "?" and self:word_in(b, e, "@setting_question_copulas")
   end
   function m:lnav(s) nav(self, s, "LNAV") end

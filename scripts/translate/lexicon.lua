@@ -668,6 +668,8 @@ return {
     -- "ff 1 hr"; "5 fnl" final; "trls off" the trails; "mv" move, opening the line)
     trfc = { word = "traffic" }, rchg = { word = "reaching" }, lvg = { word = "leaving" },
     fph = { word = "fly present heading", not_prev = "#number" }, acft = { word = "aircraft" },
+    -- ("enable vertical resos": the resolutions, a plural of "reso" typed)
+    resos = { word = "resolutions" },
     rt = { word = "right", prev = "#number deg degrees" }, lt = { word = "left", prev = "#number deg degrees" },
     -- (the side typed without its vowels after the degrees of a turn, "25 lft", "10 deg rgt")
     lft = { word = "left", prev = "#number deg degrees" }, rgt = { word = "right", prev = "#number deg degrees" },
@@ -978,6 +980,12 @@ return {
   -- a label a speaker puts before a question of their own ("Quick ask: what's the look-ahead set to?", "quick sanity
   -- check, what resolution method are we running?", "quick one: is United 12 climbing?"): one of these phrases,
   -- then a colon, comma or dash, then a word of echo_question_openers; the label is no part of the request
+  -- a machine-learning engineer's label before a request of a training run ("obs check: what's X doing",
+  -- "warmup, ff 2 min", "new rollout: seed 11, 8 acft"): one of these phrases, then a colon, comma or dash, then
+  -- the request; the label is no part of it
+  ml_labels = { "obs check", "obs", "observation check", "obs sanity check", "warmup", "warm-up", "warm up",
+                "rollout", "new rollout", "next rollout", "new episode", "next episode", "eval rollout",
+                "eval run", "new eval", "debug", "debug run", "ablation", "training run", "new training run" },
   question_labels = { "quick ask", "quick question", "quick one", "quick check", "quick sanity check", "sanity check",
                       "one question", "question" },
   -- a meeting's words that turn to another aircraft before what is said about it ("Can we circle back to the
@@ -2491,6 +2499,12 @@ return {
       maar = "just", verwijder = "delete", verwijderen = "delete", gooi = "delete", weg = "away",
       ["maak een"] = "create a", maak = "create", nieuw = "new", nieuwe = "new", vliegtuig = "aircraft",
       toestel = "aircraft", bestemming = "destination", ["wat doet"] = "status of",
+      -- a machine-learning engineer's chat ("X naar fl260 zetten": set X to FL260, "kun je" before it is
+      -- grammar.lua G.dutch_chat's; "nou,"
+      -- well; "klm12 en tra34 allebei fl320": both; "en bij fl150 spd 250": at that level; "ga maar door":
+      -- carry on, the clock let run)
+      zetten = "set", nou = "well", allebei = "both", bij = "at", ["ga maar door"] = "continue",
+      ["ga door"] = "continue", ipv = "instead of", ["i.p.v."] = "instead of",
       -- (said the same in another language, read here: "ja"; "oké", its accent taken off, is also the OKE VOR:
       -- lexicon.asides_alone's)
       ja = "yes",

@@ -1055,6 +1055,14 @@ return function(intent, rule, words)
     local k = g:skip_fillers(i + 1)
     local t = g.t[k]
     if t ~= nil and t.kind == "number" and g:word(k + 1, "@counted_aircraft") then return true end
+    -- ("spawn 12 b738 at fl250 280kt": a count of 2 or more typed straight before a type, no new callsign said)
+    if t ~= nil and t.kind == "number" and t.num and t.num >= 2 and t.num <= 500 and t.num % 1 == 0
+        and g:has_ref(k + 1, k + 2, "type") then
+      for _, r in ipairs(g:refs_in(1, #g.t + 1, "aircraft")) do
+        if not r.exists then return false end
+      end
+      return true
+    end
     local q = t ~= nil and t.number_word and g:quantities(k, k + 4)[1]
     if not (q and q.b == k and q.kind == "plain" and not q.number.decimal and q.value >= 2
         and g:word(q.e, "@counted_aircraft")) then
@@ -1064,6 +1072,17 @@ return function(intent, rule, words)
       if not r.exists then return false end
     end
     return true
+  end }
+  -- "seed 42, 20 acft, cd on", "seed 42 and 10 aircraft please": a count of aircraft in a clause of its own (first
+  -- in the request, or after a comma or "and") in a request that sets the random seed is random traffic of that
+  -- count; nothing else said in its clause
+  rule { "aircraft planes flights", "mcre", when = function(g, i)
+    local t, before = g.t[i - 1], g.t[i - 2]
+    if not (t and t.kind == "number" and t.num and t.num >= 1 and t.num <= 500 and t.num % 1 == 0) then return false end
+    if before and not (before.kind == "punct" and before.text ~= "." or g:word(i - 2, "and")) then return false end
+    local nx = g.t[i + 1]
+    if nx and not (nx.kind == "punct" or g:word(i + 1, "please pls and then")) then return false end
+    return g:word_in(1, #g.t + 1, "seed")
   end }
   -- ("creating N48TX, PC12, ..."; "set the seed before creating anything" names no creation)
   rule { "creating spawning", false, prev = { 1, "before after without" } }
@@ -2096,6 +2115,12 @@ return function(intent, rule, words)
     return nx ~= nil and (g:has_ref(i + 1, i + 2, "waypoint") or nx.kind == "number")
       and g:has_ref(1, #g.t + 1, "type")
   end }
+  -- "lnav status klm1607?", "the vnav state of KLM12", "status of lnav for X": the switch's state, asked by the
+  -- switch's own query (handlers_other m:nav_asked), no position report
+  rule { "status state", false, when = function(g, i)
+    return g:word(i - 1, "lnav vnav") or g:word(i - 2, "lnav vnav") and g:word(i - 1, "the its")
+      or g:word(i + 1, "of") and g:word(i + 2, "lnav vnav")
+  end }
   rule { "details status info information state pos", "pos" }
   -- "show me both of them, KLM12 and EIN45", "KLM12 and EIN45 are in conflict, show me the both of them": the
   -- aircraft named shown together, the words after the verb only those aircraft and lexicon.shown_together
@@ -2324,6 +2349,14 @@ return function(intent, rule, words)
     if not (g:word(k, "a") and g:word(k + 1, "moment second minute bit while")) then return false end
     k = g:word(k + 2, "the") and k + 3 or k + 2
     return g:word(k, "@sim")
+  end }
+  -- "stop", "stop pls": the verb alone, the whole request, stops the run (HOLD); in fast time, where it may end
+  -- the fast-forward instead, it is left unread (asked)
+  rule { "stop", "hold", when = function(g, i)
+    for k = 1, #g.t do
+      if k ~= i and not (g.t[k].kind == "punct" or g:word(k, "please pls now")) then return false end
+    end
+    return g.world.run_state ~= "ff"
   end }
   -- "stop it for a moment", "stop everything for a second": the run stopped a while, said with no
   -- aircraft named anywhere in the request ("KLM12, stop it for a moment" is no pause)

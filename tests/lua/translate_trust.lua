@@ -17341,3 +17341,54 @@ do
   check_eq(ex("scusi, IRA712 please turn left heading 200, grazie"), "HDG IRA712 200 LEFT")
   check_eq(ex("GIA88 reduce speed to 250 please, khob khun krub"), "SPD GIA88 250")
 end
+-- Cycle 58 (f185): a Dutch machine-learning engineer's chat. "ff" (Dutch "even": just, quickly) inside a request
+-- is a softener, never fast time with no end; a switch's status asked is never set; a count of aircraft with a
+-- seed, Dutch words in an English line, a training run's label before the request
+do
+  local _, ex = scene({ "CRE BAW8CK A320 52.0 4.0 025 FL200 250", "CRE KLM1234 B738 52.2 4.2 300 FL250 280",
+    "CRE DLH4AX A321 52.4 4.4 090 FL300 280", "CRE KLM77 B738 52.1 4.5 180 FL150 250" })
+  check_eq(ex("pause the sim ff"), "HOLD")
+  check_eq(ex("freeze it ff pls"), "HOLD")
+  check_eq(ex("dlh4ax ff naar fl 210"), "ALT DLH4AX FL210")
+  check_eq(ex("kunt u baw8ck naar fl 220 zetten"), "ALT BAW8CK FL220")
+  -- the fast-forward itself: alone, first in its clause, after "then", or with a duration
+  check_eq(ex("ff"), "FF")
+  check_eq(ex("ff 3 min"), "FF 180")
+  check_eq(ex("klm1234 fl300 then ff"), "ALT KLM1234 FL300 ; FF")
+  asked(ex("klm77 ff 5 min"), "a callsign with a fast-forward")
+  -- a switch's status asked after
+  check_eq(ex("vnav status klm77?"), "VNAV KLM77")
+  check_eq(ex("klm1234 lnav state"), "LNAV KLM1234")
+  check_eq(ex("lnav on klm77"), "LNAV KLM77 ON")
+  -- Dutch words
+  check_eq(ex("nou, dlh4ax hdg 210 en spd 260"), "HDG DLH4AX 210 ; SPD DLH4AX 260")
+  check_eq(ex("baw8ck en klm77 allebei fl 240"), "ALT BAW8CK FL240 ; ALT KLM77 FL240")
+  check_eq(ex("klm1234 desc fl200 en bij fl230 spd 260"), "ALT KLM1234 FL200 ; ATALT KLM1234 FL230 SPD KLM1234 260")
+  check_eq(ex("ga maar door"), "OP")
+  check_eq(ex("zoner 4 en zonedh 1200"), "ZONER 4 ; ZONEDH 1200")
+  check_eq(ex("asas on met dtlook 300"), "ASAS ON ; DTLOOK 300")
+  -- a training run's label; a count of aircraft in its own clause beside a seed
+  check_eq(ex("obs check: where is baw8ck"), "POS BAW8CK")
+  check_eq(ex("warm-up: ff 90 s"), "FF 90")
+  check_eq(ex("next episode: seed 7, 6 aircraft"), "SEED 7 ; MCRE 6")
+  check_eq(ex("seed 9 and 14 aircraft please"), "SEED 9 ; MCRE 14")
+  asked(ex("warmup"), "a label alone")
+  local nav, nex = navscene({ "CRE KLM1234 B738 52.2 4.2 300 FL250 280 ; DEST KLM1234 EHAM" }, "f185 airports")
+  if nav then
+    check_eq(nex("spawn 6 random aircraft to ebbr"), "MCRE 6 * * * EBBR")
+    asked(nex("spawn 4 random acft to xyzzy"), "a destination not known")
+    check_eq(nex("klm1234 dest ebbr ipv eham"), "DEST KLM1234 EBBR")
+  end
+end
+do
+  local _, ex = scene({ "CRE BAW8CK A320 52.0 4.0 025 FL200 250", "CRE KLM77 B738 52.1 4.5 180 FL150 250" })
+  -- f185: a count typed before a type in a creation, no callsign: random traffic of that type
+  check_eq(ex("spawn 6 a321 at fl280 290kt"), "MCRE 6 A321 FL280 290")
+  check_eq(ex("generate 3 e190"), "MCRE 3 E190")
+  asked(ex("spawn 1 b738"), "one aircraft needs its callsign")
+  -- the resolutions typed "resos"; "stop" alone stops the run
+  check_eq(ex("enable vertical resos"), "RMETHV V/S")
+  asked(ex("resos off"), "resolution off for everyone is confirmed")
+  check_eq(ex("stop pls"), "HOLD")
+  asked(ex("stop klm"), "a stop of something unread")
+end
