@@ -1627,7 +1627,8 @@ for abbr, readings in pairs(lexicon.typed_abbreviations) do
     table.insert(ABBREVIATIONS[abbr], { word = a.word, next = a.next and word_set(a.next, 1),
       prev = a.prev and word_set(a.prev, 1), not_prev = a.not_prev and word_set(a.not_prev, 1),
       not_next = a.not_next and word_set(a.not_next, 1),
-      after_next = a.after_next and word_set(a.after_next, 1), hundreds = a.hundreds, caps_kept = a.caps_kept })
+      after_next = a.after_next and word_set(a.after_next, 1), hundreds = a.hundreds, caps_kept = a.caps_kept,
+      asked_before = a.asked_before and word_set(a.asked_before, 1) })
   end
 end
 -- A false start cut off inside a word and said again after a hesitation ("descend flight le- eh descend flight level
@@ -1666,6 +1667,15 @@ function G.cut_off_restarts(text)
   end
   return text
 end
+-- True when `set` (a word set, or nil: always) holds a word of toks before the k-th (bare(j): its letters in lower
+-- case): the question an abbreviation's reading follows ("what's your speed, revert")
+function G.asked_before(set, toks, k, bare)
+  if not set then return true end
+  for j = 1, k - 1 do
+    if set[bare(j)] then return true end
+  end
+  return false
+end
 local function typed_abbreviations(text)
   -- (a word typed of letters alone is one of its runs of letters: with none an abbreviation, none is read)
   local typed = false
@@ -1702,7 +1712,7 @@ local function typed_abbreviations(text)
       if not (a.caps_kept and letters:match("^%u%u+$")) and (not a.next or fits(a.next, k + 1))
           and (not a.prev or fits(a.prev, k - 1))
           and (not a.after_next or fits(a.after_next, k + 2)) and not (a.not_prev and fits(a.not_prev, k - 1))
-          and not (a.not_next and fits(a.not_next, k + 1)) then
+          and not (a.not_next and fits(a.not_next, k + 1)) and G.asked_before(a.asked_before, toks, k, bare) then
         toks[k], changed = a.word .. punct, true
         if a.hundreds and punct == "" then in_hundreds(k + 1) end
         break
@@ -13999,10 +14009,10 @@ function M.translate(text, world)
   local function cue(word, whole)
     return lower:find(word, 1, true) and lower:find("%f[%a]" .. word .. (whole and "%f[%A]" or ""))
   end
-  -- ("new traffic: ...", "set up Austrian 719, Embraer one ninety five, ...", "put a CSA ..., A three nineteen";
-  -- "crea", "crear", "creer": the verb in the speaker's language)
+  -- ("new traffic: ...", "set up Austrian 719, Embraer one ninety five, ...", "put a CSA ..., A three nineteen",
+  -- "chuck a jetstar in at blaka a three twenty ..."; "crea", "crear", "creer": the verb in the speaker's language)
   if cue("crea") or cue("cree") or cue("spawn") or cue("generate") or cue("add") or cue("mcre") or cue("random")
-      or cue("new", true) or cue("set up", true) or cue("put", true) then
+      or cue("new", true) or cue("set up", true) or cue("put", true) or cue("chuck", true) or cue("stick", true) then
     text = types.plurals(types.spoken(text, TYPES, lexicon.phonetic), TYPES, world.aircraft, lexicon.variant_families)
   end
   local apart

@@ -1138,6 +1138,22 @@ return function(H, f, compass)
     if self:word_in(s.b, s.e, "@waypoint_nouns") or self:word_in(s.b, s.e, "@route_nouns") then
       return self:delete_waypoint(s)
     end
+    -- ("delete the wind", "remove all winds", "clear the wind": the wind field, DEL WIND; the wind named beside an
+    -- aircraft, "delete KLM12 and the wind", is asked, never an aircraft deleted for it)
+    local wind = self:find_word(s.b, s.e, "wind winds")
+    if wind < s.e then
+      if #self:refs_in(s.b, s.e, "aircraft") > 0 then
+        return self:need("Should I delete the aircraft or clear the wind field? Please say them apart.")
+      end
+      local k = wind - 1
+      while k > s.trig and self:word(k, "the all") do k = k - 1 end
+      if k == s.trig and (not self.t[wind + 1] or self.t[wind + 1].kind == "punct" or self:word(wind + 1, "field please")) then
+        self:explain(s.trig, wind + 1)
+        if self:word(wind + 1, "field") then self:explain(wind + 1, wind + 2) end
+        return self:emit("DEL WIND")
+      end
+      return self:need("Should I clear the wind field? Please say \"delete the wind\".")
+    end
     local ids = {}
     -- ("we don't need it after all", "X shouldn't be in this exercise at all": "after all" or "at all" ending its
     -- clause is the idiom, no aircraft counted)
@@ -4108,10 +4124,10 @@ return function(H, f, compass)
     self:need("What time step, in seconds, should the simulation use?")
   end
   function m:time_mult(s)
-    -- "let the sim run, times eight", "let it run. x4": the clock started, said as a clause of its own (OP, which
+    -- "let the sim run, times eight", "let it run. x4", "let her run, x4": the clock started, said as a clause of its own (OP, which
     -- sets DTMULT 1, as BlueSky's does), and its rate after it ("let it run at 5 times speed" is the rate alone)
     local run = self:word(s.trig, "@sim") and s.trig + 1 or s.trig
-    local let = self:word(run - 1, "it") and run - 1 or (self:word(run - 1, "@sim") and self:word(run - 2, "the") and run - 2)
+    local let = self:word(run - 1, "it her") and run - 1 or (self:word(run - 1, "@sim") and self:word(run - 2, "the") and run - 2)
     if let and self:word(let - 1, "let") and self:word(run, "run") and self.t[run + 1] and self.t[run + 1].kind == "punct"
         and self.out[#self.out] ~= "OP" then
       self:emit("OP")

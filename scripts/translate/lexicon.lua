@@ -719,8 +719,11 @@ return {
     yin = { word = "one", prev = "big wee small the that this", caps_kept = true },
     noo = { word = "now", prev = "the", caps_kept = true },
     -- (Indian English "revert" for "reply", the aircraft's own value asked for: "revert your level", "revert with
-    -- your present speed"; "revert to heading 270" stays as said, and asked)
-    revert = { { word = "report", next = "your" }, { word = "report", next = "with" } },
+    -- your present speed", or closing its clause after a question the request asked ("what's your speed, revert",
+    -- "confirm level and revert", `asked_before`); "revert to heading 270" and "climb FL200, revert" stay as said,
+    -- and asked)
+    revert = { { word = "report", next = "your" }, { word = "report", next = "with" },
+               { word = "report", next = "#end please", asked_before = "what what's whats confirm say verify how" } },
     -- (a vertical rate's bound typed before its value: "RoD max 1500", "RoC min 500")
     rod = { word = "rate of descent", next = "max maximum min minimum" },
     roc = { word = "rate of climb", next = "max maximum min minimum" },
@@ -2539,7 +2542,7 @@ return {
   -- words speech recognition writes for a digit said inside a callsign ("wizzair to lima papa" is WZZ2LP,
   -- "lufthansa for hundred" DLH400, "europa oh five one" AEA051): that digit only where the callsign so
   -- read is exactly one aircraft's (grammar.lua homophone_ids)
-  digit_homophones = { to = "two", too = "two", ["for"] = "four", fore = "four", won = "one", ate = "eight",
+  digit_homophones = { to = "two", too = "two", ["for"] = "four", fore = "four", won = "one", ate = "eight", sex = "six",
     oh = "zero" },
   -- everyday words the callsign matcher also reads as a flight number's last digit after its other digits
   -- (references.cpp heard_digit: "easy eight on descend" for EZY81): the word -> the digit. Read so the callsign

@@ -1144,6 +1144,10 @@ return function(intent, rule, words)
   -- ("append the Siedlce VOR SIE at the end of the route of LOT3CM": the route noun ten words on)
   rule { "add append insert give put", "addwpt", near = { 10, "@route_nouns" },
          when = function(g, i) return g:has_ref(i + 1, i + 9, "waypoint") end }
+  -- ("add bolty to the end of rex two seven four one's route": the waypoint straight after the verb, an aircraft
+  -- named after it, a callsign said digit by digit putting the route noun up to fourteen words on)
+  rule { "add append insert put", "addwpt", near = { 14, "@route_nouns" },
+         when = function(g, i) return g:has_ref(i + 1, i + 2, "waypoint") and g:has_ref(i + 2, i + 14, "aircraft") end }
   rule { "add append insert give", "addwpt", next = "it", near = { 8, "@route_nouns" } }
   -- "add to the route of the Nile Air one zero seven the waypoint LUBOS": the route's owner named before the
   -- waypoint (a callsign said in words may be long); the waypoint, its noun or not, straight after the aircraft
@@ -1366,9 +1370,18 @@ return function(intent, rule, words)
   rule { "add put new spawn insert adding inject injecting", "create", when = function(g, i) return g:new_aircraft_follows(i) end }
   -- "stick a Loganair Twin Otter in over Glasgow", "chuck a Bristow S92 in at ...", "chuck in a Cathay 777":
   -- British "stick" and "chuck" for "put", an article and a type or a new callsign straight after
+  -- ("chuck a jetstar in at blaka a three twenty jetstar five five one ...": an airline's name after the article,
+  -- "in" after it, and the new aircraft's type or new callsign said later in the request)
   rule { "stick chuck", "create", when = function(g, i)
     local k = g:word(i + 1, "in on") and i + 2 or i + 1
-    return g:word(k, "@articles_new") and g:new_aircraft_follows(k) and not g:word_in(1, #g.t + 1, "random")
+    if not g:word(k, "@articles_new") or g:word_in(1, #g.t + 1, "random") then return false end
+    if g:new_aircraft_follows(k) then return true end
+    local icao, e = g:airline_at(k + 1)
+    if not icao or not g:word(e, "in") then return false end
+    for _, r in ipairs(g.refs) do
+      if r.b > e and (r.kind == "type" or (r.kind == "aircraft" and g:new_callsign(r))) then return true end
+    end
+    return false
   end }
   -- "spin up American 601, an A321, ...", "let's spin up a 747 ...": "spin up" (a session's word for starting
   -- something new) before a new callsign or a type
@@ -1409,6 +1422,12 @@ return function(intent, rule, words)
     return g:word(k, "trail trails")
   end }
   rule { "delete remove", false, near = { 3, "area" }, when = function(g) return not g:has_ref(1, #g.t + 1, "aircraft") end }
+  -- "clear the wind", "clear all winds": the wind field cleared (DEL WIND, m:remove), no aircraft deleted
+  rule { "clear", "delete", when = function(g, i)
+    local k = g:skip_fillers(i + 1)
+    while g:word(k, "the all") do k = k + 1 end
+    return g:word(k, "wind winds")
+  end }
   -- "the area, so anything leaving it gets deleted": what a setting does, in the passive, no aircraft named
   rule { "delete deleted remove removed", false, prev = { 1, "gets get got" },
          when = function(g, i) return not g:has_ref(math.max(1, i - 5), i, "aircraft") end }
@@ -2542,9 +2561,16 @@ return function(intent, rule, words)
   rule { "go", "op", next = "again" }  -- "and go again"
   -- "kick off the episode", "kick off the sim": the run started, said of the simulation
   rule { "kick", "op", next = "off", near = { 3, "@sim" } }
-  -- "let it rip": the run started (said with no aircraft named; with one it is asked)
+  -- "let it rip", "let her rip": the run started (said with no aircraft named; with one it is asked)
   rule { "rip", "op", when = function(g, i)
-    return g:word(i - 1, "it") and g:word(i - 2, "let") and not g:has_ref(1, #g.t + 1, "aircraft")
+    return g:word(i - 1, "it her") and g:word(i - 2, "let") and not g:has_ref(1, #g.t + 1, "aircraft")
+  end }
+  -- "ok let her run", "let her run": the simulation as "her", as Australian speech names a machine, the clock
+  -- started, said alone or as a clause of its own, no aircraft named in the request ("let her go" stays asked:
+  -- said of an aircraft as often)
+  rule { "run", "op", when = function(g, i)
+    return g:word(i - 1, "her") and g:word(i - 2, "let") and not g:has_ref(1, #g.t + 1, "aircraft")
+      and (g:alone_but(i - 2, i + 1) or g:clause_alone(i - 2, i + 1))
   end }
   -- "let it go", "let it run", "let the sim run": the clock started, said alone or as a clause of its own
   rule { "go run", "op", when = function(g, i)

@@ -100,19 +100,23 @@ local function near_target(w)
   return false
 end
 
+-- The reading of the unknown word w (lower case) as two known words typed with no space between, one an instruction
+-- word, six letters in all ("turnright"): { { word = "turn right", instruction = true } }, else empty.
+function M.apart(w)
+  for k = 2, #w >= 6 and #w - 2 or 0 do
+    local a, b = w:sub(1, k), w:sub(k + 1)
+    if KNOWN[a] and KNOWN[b] and (TARGETS[a] or TARGETS[b]) then
+      return { { word = a .. " " .. b, instruction = true } }
+    end
+  end
+  return {}
+end
+
 -- The readings of the unknown word w (lower case): a list of { word =, instruction = true when it is the
 -- instruction word the slip was searched for, or two words apart }, empty when w is no slip.
 local function readings(w)
   if #w < 3 or #w > 20 then return {} end
-  if not near_target(w) then
-    for k = 2, #w >= 6 and #w - 2 or 0 do
-      local a, b = w:sub(1, k), w:sub(k + 1)
-      if KNOWN[a] and KNOWN[b] and (TARGETS[a] or TARGETS[b]) then
-        return { { word = a .. " " .. b, instruction = true } }
-      end
-    end
-    return {}
-  end
+  if not near_target(w) then return M.apart(w) end
   local near, target = {}, false
   for _, e in ipairs(edits(w)) do
     if KNOWN[e] and not CODES[e] then
@@ -148,17 +152,20 @@ local function named(w, world)
 end
 
 function M.reread(text, world, asked, read)
-  -- (only the word asked about, "What does 'tun' mean?", or any word where nothing was understood)
+  -- (the word asked about, "What does 'tun' mean?", or any word where nothing was understood; besides the word asked about, and with any other question, only two known words typed or heard with no space
+  -- between, "descendto one zero thousand reduce speed 250", whose question named what the unread verb left: read
+  -- apart, the same agreement asked of the readings)
   local named_word = asked.ask:match("What does '(%a+)' mean%?$")
-  if not named_word and asked.ask ~= M.not_understood then return asked end
+  local glued_only = not named_word and asked.ask ~= M.not_understood
   -- slips: { b =, e = (the word's bytes in text), options = { readings } }
   local slips = {}
   for b, w, e in text:gmatch("()(%a+)()") do
     local lw = w:lower()
     local before, after = text:sub(b - 1, b - 1), text:sub(e, e)
-    if (not named_word or named_word:lower() == lw) and not KNOWN[lw] and not w:sub(2):find("%u")
+    if not KNOWN[lw] and not w:sub(2):find("%u")
         and not before:find("[%w%.%-_/]") and not after:find("[%w%.%-_/']") and not named(w, world) then
-      local options = readings(lw)
+      local only_glued = glued_only or (named_word ~= nil and named_word:lower() ~= lw)
+      local options = only_glued and (#lw <= 20 and M.apart(lw) or {}) or readings(lw)
       if #options > 0 then slips[#slips + 1] = { b = b, e = e, options = options } end
     end
   end

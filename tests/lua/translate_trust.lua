@@ -603,10 +603,11 @@ do
   check(note ~= nil and note:find("report level", 1, true) ~= nil, tostring(note))
   check_eq(eut("iberia three kilo tango turn left heading zero six zero and report heading"), "HDG IBE3KT 60 LEFT")
   check_eq(eut("air france two eight report speed"), "POS AFR28")
-  -- "to" before two spoken digits: a heading asks when "two" and a lost final zero both give one; a
-  -- level takes the reading the verb allows from the present level, and asks when both or neither fit
+  -- "to" before two spoken digits: a heading asks, "two" and the digits alone both giving one (cycle 58: "to eight
+  -- zero" is 280 or 080); a level takes the reading the verb allows from the present level, and asks when both or
+  -- neither fit
   eu_asks("klm six one mike turn right heading to three zero", "230 or 300")
-  check_eq(eut("klm six one mike turn right heading to eight zero"), "HDG KLM61M 280 RIGHT")
+  eu_asks("klm six one mike turn right heading to eight zero", "280 or 080")
   check_eq(eut("air france two eight climb flight level too six zero"), "ALT AFR28 FL260")
   check_eq(eut("air france two eight descend flight level to five zero"), "ALT AFR28 FL50")
   check_eq(eut("air france two eight descend flight level to one zero"), "ALT AFR28 FL210")  -- (no FL010)
@@ -17391,4 +17392,54 @@ do
   asked(ex("resos off"), "resolution off for everyone is confirmed")
   check_eq(ex("stop pls"), "HOLD")
   asked(ex("stop klm"), "a stop of something unread")
+end
+-- Cycle 58 (f186): speech from Australian, New Zealand and Indian controllers. "to" before a heading's two spoken
+-- digits may be the word or "two" (asked, naming both); recogniser homophones and merged words; the wind field
+-- cleared; "let her run"; "er no" straight after a value a correction; "revert" (reply) closing a question.
+do
+  local _, ex = scene({ "CRE VOZ633 B738 -33.9 151.2 185 FL110 250", "CRE QLK12 DH8D -34.2 150.8 020 9000 210",
+    "CRE AIC88 A20N 19.1 72.9 090 FL150 280" })
+  asked(ex("virgin six three three turn left heading to four zero"), "040 or 240")
+  asked(ex("VOZ633 fly heading too seven five"), "075 or 275")
+  asked(ex("virgin six three three, turn right heading to niner zero"), "090 or 290")
+  asked(ex("VOZ633 heading to one five"), "150 or 215")
+  check_eq(ex("virgin six three three turn left heading to two four zero"), "HDG VOZ633 240 LEFT")
+  check_eq(ex("VOZ633 turn right heading zero four zero"), "HDG VOZ633 40 RIGHT")
+  check_eq(ex("VOZ633 heading to 40"), "HDG VOZ633 40")
+  asked(ex("virgin six three three reduce speed to five zero"), "50 or 250")
+  check_eq(ex("virgin six three three climb flight level one sex zero"), "ALT VOZ633 FL160")
+  check_eq(ex("virgin six three three climb flight level won ate zero"), "ALT VOZ633 FL180")
+  asked(ex("virgin six three three descend sex thousand"), "no digit said beside the homophone")
+  check_eq(ex("virgin six three three descendto eight thousand and reduce speed two three zero knots"),
+    "ALT VOZ633 8000 ; SPD VOZ633 230")
+  check_eq(ex("VOZ633 reduce speed two four zero then climbto flight level one three zero"),
+    "SPD VOZ633 240 ; ALT VOZ633 FL130")
+  -- (a bare "no" after a hesitation stays asked, a decision of cycle 53: a refusal or a correction?)
+  asked(ex("VOZ633 climb flight level one five zero er no descend flight level nine zero"), "refusal or correction")
+  check_eq(ex("clear the wind"), "DEL WIND")
+  check_eq(ex("please delete all the winds"), "DEL WIND")
+  check_eq(ex("remove the wind field"), "DEL WIND")
+  check_eq(ex("clear the wind, and VOZ633 descend flight level nine zero"), "DEL WIND ; ALT VOZ633 FL90")
+  asked(ex("delete VOZ633 and the wind"), "an aircraft and the wind in one deletion")
+  check_eq(ex("righto, let her run"), "OP")
+  check_eq(ex("let her rip"), "OP")
+  check_eq(ex("ok let her run, times four"), "OP ; DTMULT 4")
+  asked(ex("let her go"), "said of an aircraft as often")
+  check_eq(ex("Air India eight eight, what is your present heading, revert"), "POS AIC88")
+  check_eq(ex("AIC88 confirm your level and revert"), "POS AIC88")
+  check_eq(ex("AIC88 say speed, revert please"), "POS AIC88")
+  asked(ex("AIC88 climb FL200, revert"), "no question before it")
+  asked(ex("AIC88 revert"), "no question before it")
+end
+do
+  local _, ex = navscene({ "CRE QFA401 B738 -36.50 145.05 205 FL190 290", "ADDWPT QFA401 ARBEY",
+    "CRE RXA2741 SF34 -38.25 145.90 300 8000 200", "CRE JST507 A320 -37.70 143.20 080 FL170 290",
+    "ADDWPT JST507 WENDY" }, "a route's end after a callsign said digit by digit; chuck a creation in")
+  if ex then
+    check_eq(ex("put arbey at the end of rex two seven four one's route"), "ADDWPT RXA2741 ARBEY")
+    check_eq(ex("add wendy to the end of the rex two seven four one route please"), "ADDWPT RXA2741 WENDY")
+    check_eq(ex("chuck a qantas in at wendy, a three twenty one, qantas eight zero two, heading one eight zero, "
+      .. "flight level two one zero, two nine zero knots"), "CRE QFA802 A321 WENDY 180 FL210 290")
+    asked(ex("chuck a qantas in at wendy heading one eight zero flight level two one zero"), "no callsign or type")
+  end
 end
