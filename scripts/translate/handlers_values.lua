@@ -1167,12 +1167,14 @@ return function(H, f, wrap, compass)
       local n = abs.number
       -- headings are said as three digits; two ("two five") lost their final zero, unless
       -- they end in zero themselves ("three zero": 030 or 300?) or one was said
-      -- "heading to four zero": "to" (lexicon.two_heard) before two spoken digits may be "two" (240) or the word,
-      -- the digits then the heading alone (040; "to one zero": 100, the final zero lost): both readings are
-      -- headings, so squawk asks, naming both. Three digits after "to" ("to two four zero") are read.
+      -- "heading to niner zero": two digits after "to" are a heading only with "to" as "two";
+      -- "heading to one zero" may also be 100 (the final zero lost): asked
       if not n.typed and n.groups == 2 and #n.digits == 2 and self:word(abs.b - 1, "@two_heard") then
-        return self:need(string.format("What heading should %s fly: %d or %03d? I heard '%s %s'.", id, 200 + hdg,
-          hdg * 10 <= 360 and hdg * 10 or hdg, self.t[abs.b - 1].raw, self:raw(abs.b, abs.e)))
+        if hdg * 10 <= 360 then
+          return self:need(string.format("What heading should %s fly: %d or %03d? I heard '%s %s'.", id, 200 + hdg,
+            hdg * 10, self.t[abs.b - 1].raw, self:raw(abs.b, abs.e)))
+        end
+        hdg = 200 + hdg
       elseif not n.typed and n.lead_digit and H.cut_off(n) then
         return self:need("What heading should " .. id .. " fly? I heard " .. n.digits .. ": headings have three digits.")
       end
