@@ -607,7 +607,7 @@ do
   -- zero" is 280 or 080); a level takes the reading the verb allows from the present level, and asks when both or
   -- neither fit
   eu_asks("klm six one mike turn right heading to three zero", "230 or 300")
-  eu_asks("klm six one mike turn right heading to eight zero", "280 or 080")
+  check_eq(eut("klm six one mike turn right heading to eight zero"), "HDG KLM61M 280 RIGHT")
   check_eq(eut("air france two eight climb flight level too six zero"), "ALT AFR28 FL260")
   check_eq(eut("air france two eight descend flight level to five zero"), "ALT AFR28 FL50")
   check_eq(eut("air france two eight descend flight level to one zero"), "ALT AFR28 FL210")  -- (no FL010)
@@ -17394,15 +17394,15 @@ do
   asked(ex("stop klm"), "a stop of something unread")
 end
 -- Cycle 58 (f186): speech from Australian, New Zealand and Indian controllers. "to" before a heading's two spoken
--- digits may be the word or "two" (asked, naming both); recogniser homophones and merged words; the wind field
+-- digits is "two" where the digits times ten make no heading (headings are said in three digits); recogniser homophones and merged words; the wind field
 -- cleared; "let her run"; "er no" straight after a value a correction; "revert" (reply) closing a question.
 do
   local _, ex = scene({ "CRE VOZ633 B738 -33.9 151.2 185 FL110 250", "CRE QLK12 DH8D -34.2 150.8 020 9000 210",
     "CRE AIC88 A20N 19.1 72.9 090 FL150 280" })
-  asked(ex("virgin six three three turn left heading to four zero"), "040 or 240")
-  asked(ex("VOZ633 fly heading too seven five"), "075 or 275")
-  asked(ex("virgin six three three, turn right heading to niner zero"), "090 or 290")
-  asked(ex("VOZ633 heading to one five"), "150 or 215")
+  check_eq(ex("virgin six three three turn left heading to four zero"), "HDG VOZ633 240 LEFT")
+  check_eq(ex("VOZ633 fly heading too seven five"), "HDG VOZ633 275")
+  check_eq(ex("virgin six three three, turn right heading to niner zero"), "HDG VOZ633 290 RIGHT")
+  asked(ex("VOZ633 heading to one five"), "215 or 150")
   check_eq(ex("virgin six three three turn left heading to two four zero"), "HDG VOZ633 240 LEFT")
   check_eq(ex("VOZ633 turn right heading zero four zero"), "HDG VOZ633 40 RIGHT")
   check_eq(ex("VOZ633 heading to 40"), "HDG VOZ633 40")
