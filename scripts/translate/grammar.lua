@@ -3349,12 +3349,15 @@ function G:quantities(b, e)
   local q = self.qcache[key]
   if not q then
     q = self.u:quantities(b, e)
-    for k = 1, #q do
+    local courtesy = #q > 0 and self:phrase_numbers()
+    for k = #q, 1, -1 do
       local x = q[k]
       local unit = self.t[x.e - 1]
       if x.kind == "dist" and unit and G.km_words[unit.text] and x.number then
         x.value = math.floor(x.number.value / 1.852 * 100 + 0.5) / 100
       end
+      -- (a number inside a courtesy phrase, "one more thing", is no value)
+      if courtesy[x.b] and courtesy[x.e - 1] then table.remove(q, k) end
     end
     self.qcache[key] = q
   end
@@ -8094,6 +8097,35 @@ for _, list in ipairs({ ACCOUNTED.courtesy_phrases, ACCOUNTED.value_phrases }) d
     PHRASES[words[1]] = PHRASES[words[1]] or {}
     table.insert(PHRASES[words[1]], words)
   end
+end
+-- The tokens of the courtesy phrases that hold a number word ("one more thing", "that is two instructions"), as
+-- {[k] = true}, found once per request: such a number is no value (G:quantities). A number word is matched by
+-- what was said (its raw word), the other words by the lexer's text.
+G.numbered_phrases = {}
+for _, p in ipairs(ACCOUNTED.courtesy_phrases) do
+  local words, numbered = {}, false
+  for w in p:gmatch("%S+") do
+    words[#words + 1] = (w:gsub("'s$", ""))
+    numbered = numbered or NUMBER_WORDS[w] ~= nil
+  end
+  if numbered then table.insert(G.numbered_phrases, words) end
+end
+function G:phrase_numbers()
+  if self.phrase_nums then return self.phrase_nums end
+  local set = {}
+  for i = 1, #G.numbered_phrases > 0 and #self.t or 0 do
+    for _, p in ipairs(G.numbered_phrases) do
+      local ok = true
+      for x = 1, #p do
+        local t = self.t[i + x - 1]
+        ok = ok and t ~= nil and (t.text == p[x] or (t.raw or ""):lower() == p[x])
+        if not ok then break end
+      end
+      if ok then for x = i, i + #p - 1 do set[x] = true end end
+    end
+  end
+  self.phrase_nums = set
+  return set
 end
 -- the closed classes and courtesy words (a clause of only these frames a request: "if that's alright")
 local FRAMING = {}

@@ -225,13 +225,24 @@ return function(intent, rule, words)
   end }
   -- ("comply with published speed and altitude restrictions": the kinds of restriction complied with, VNAV)
   rule { "speed altitude level", false, prev = { 6, "comply" }, next = "and restriction restrictions" }
+  -- True when a verb of an instruction is said before i in the request, not as a state ("is descending"): a
+  -- measure asked after it ("KLM12 please descend... hmm, to what level is good?", "climb to what level?") is
+  -- the value the speaker could not give, never a question of the aircraft's state (no POS: the value is asked)
+  local function value_unsaid(g, i)
+    for x = 1, i - 1 do
+      if g:word(x, "climb descend turn reduce increase slow") and not g:word(x - 1, "is are was were") then
+        return true
+      end
+    end
+    return false
+  end
   -- "swr84c altitude?", "afr1442 speed?", "bel21a lvl?": a state word asked with "?" straight after it, an aircraft named
   -- before it and no value said anywhere: a question of the aircraft's state (POS), no instruction (an
   -- instruction's shorthand, "ezy45 fl?", "hdg?", is a value left out: asked; "stay at its current altitude?" names
   -- the value kept, no question of state)
   rule { "altitude level speed heading mach airspeed", "pos", when = function(g, i)
     local nx = g.t[i + 1]
-    return nx ~= nil and nx.kind == "punct" and nx.text == "?" and g:has_ref(1, i, "aircraft")
+    return nx ~= nil and not value_unsaid(g, i) and nx.kind == "punct" and nx.text == "?" and g:has_ref(1, i, "aircraft")
       and #g:quantities(1, #g.t + 1) == 0 and not g:word(i - 1, "current present same its his her their your")
   end }
 
@@ -702,6 +713,11 @@ return function(intent, rule, words)
   rule { "speed", "dtmult", when = function(g, i)
     return g:followed_by(i, 6, "real normal") and (g:preceded_by(i, 2, "@sim") or g:followed_by(i, 3, "@sim"))
       and not g:has_ref(1, #g.t + 1, "aircraft")
+  end }
+  -- "set the simulation back to the normal, real time speed": the clock's rate named by "real time" straight
+  -- before "speed", the simulation named in the request and no aircraft: real time (DTMULT 1)
+  rule { "speed", "dtmult", prev = { 1, "time" }, when = function(g, i)
+    return g:word(i - 2, "real") and g:word_in(1, #g.t + 1, "@sim") and not g:has_ref(1, #g.t + 1, "aircraft")
   end }
   rule { "speed spd airspeed", "ff", near = { 3, "@sim" } }
   rule { "speed spd airspeed", "ff", next = "up", prev = { 3, "simulation sim" } }
@@ -2359,6 +2375,7 @@ return function(intent, rule, words)
   rule { "what how know", "pos", near = { 4, "altitude speed heading position level alt lvl hdg spd height mach" },
     when = function(g, i)
       local k = g:word(i, "what") and i - 1 or i
+      if g:word(i, "what") and value_unsaid(g, i) then return false end
       return not (g:word(k, "know") and g:word(k - 1, "you ya")
         and not g:word(k - 2, "do does did don't doesn't didn't can could would will"))
     end }
@@ -2649,9 +2666,13 @@ return function(intent, rule, words)
     local f = g:find_word(k, k + 3, "fast")
     return f < k + 3 and g:word(f + 1, "time")
   end }
+  -- ("make the simulation run as fast as possible for 20 minutes": the simulation, the verb's subject after a
+  -- causative verb, said straight before it)
   rule { "run advance", "ff", near = { 7, "for minutes minute seconds second hours hour min sec" },
          not_near = { 7, "real times faster x twice thrice" },
-         when = function(g, i) return g:followed_by(i, 3, "@sim") end }
+         when = function(g, i)
+    return g:followed_by(i, 3, "@sim") or (g:word(i - 1, "@sim") and g:preceded_by(i - 1, 3, "make let have get"))
+  end }
   -- "step the sim 30 seconds", "run 2 minutes", "advance 60 s", "run fast for an hour": a duration straight
   -- after the verb (the sim named between, or nothing; "fast" and "for" before it) is how far to fast-forward
   -- ("sim step 0.5 s", "the simulation step 0.1 s": the step as a noun, the time step, is no verb)
@@ -2699,6 +2720,10 @@ return function(intent, rule, words)
   -- "back to normal speed, real time", "back to normal speed, please, real time": real time said again beside
   -- a normal rate (anywhere in the request) names that rate
   rule { "real", false, next = "time", when = function(g, i) return g:word_in(1, #g.t + 1, "normal") end }
+  -- ("back to real time speed": the rate named by "speed" after it, read there)
+  rule { "real", false, next = "time", when = function(g, i)
+    return g:word(i + 2, "speed") and g:word_in(1, #g.t + 1, "@sim") and not g:has_ref(1, #g.t + 1, "aircraft")
+  end }
   rule { "real", "op", next = "time" }
   rule { "fast", "ff", next = "forward" }
   rule { "ff fastforward fwd", "ff" }
@@ -2923,6 +2948,17 @@ return function(intent, rule, words)
     return g.t[i + 1] ~= nil and g.t[i + 1].kind == "quoted" and g:word_in(i + 2, math.min(#g.t + 1, i + 6), "log screen scope")
   end }
 
+  -- "write a message on the screen, 'session two starts'", "show a note in the log, 'run 2 done'": quoted text
+  -- after a message's noun and where it goes, no aircraft named between
+  rule { "write put show display", "echo", when = function(g, i)
+    for k = i + 1, math.min(#g.t, i + 9) do
+      if g.t[k].kind == "quoted" then
+        return g:word_in(i + 1, k, "message note text") and g:word_in(i + 1, k, "log screen scope console")
+          and not g:has_ref(i + 1, k, "aircraft")
+      end
+    end
+    return false
+  end }
   -- "write on the screen: exercise starts now", "show in the log: run 2 done": the text after the colon, for the
   -- screen or the log named between the verb and the colon
   -- ("put a message up on the screen: welcome!": a message's noun and "up" between)
