@@ -902,6 +902,17 @@ local function self_corrections(text)
       and j > k and toks[j - 1].bare == "no" and not toks[j - 1].raw:match("%p$")
     -- ("heading 330 -- no, the right, I mean a right turn onto heading 030", "Mach 0.80, sorry, to Mach 0.78": an
     -- article or "to" before the side or value said in its place; the word stays with it)
+    -- ("Mach .72? Ah, no, sorry, please use knots, 290 knots": the unit chosen, said before the value in place, the
+    -- value said with that unit; the words of the choice belong to the run)
+    local u = nxt and nxt.bare == "please" and j + 1 or j
+    local unit = marked and toks[u] and toks[u].bare == "use" and toks[u + 1] and toks[u + 1].raw:match("%p$")
+      and toks[u + 1].bare
+    if (unit == "knots" and toks[u + 3] and (toks[u + 3].bare == "knots" or toks[u + 3].bare == "kt"
+          or toks[u + 3].bare == "kts"))
+        or (unit == "mach" and toks[u + 2] and toks[u + 2].bare == "mach") then
+      j = u + 2
+      nxt = toks[j]
+    end
     local said = nxt
     if nxt and (nxt.bare == "the" or nxt.bare == "a" or nxt.bare == "to") and toks[j + 1] and not nxt.raw:match("%p$") then
       said = toks[j + 1]
@@ -12566,11 +12577,32 @@ end
 -- them). A comma between digits ("6,000") is no comma token and is not counted.
 local DASHES = { "^%s+%-%-?%s+", "^%s*\xE2\x80[\x93\x94]%s*" }
 -- lexicon.spelled_out as case-blind Lua patterns over whole words, built once: { words, pattern, short }
+-- "ANA51 - not 515 - please increase ...", "ANA51, not ANA515, climb ...": an aircraft flying, then "not" and
+-- another aircraft flying of the same airline (its number alone, or its callsign), set apart by dashes or commas:
+-- the speaker rules the other out, so "not" and the other are dropped and the first stays addressed. The other
+-- not flying, or of another airline, nothing changes (asked).
+function G.other_callsign_denied(text, aircraft)
+  if not text:lower():find("not", 1, true) then return text end
+  local ids = {}
+  for _, a in ipairs(aircraft) do ids[a.id:upper()] = true end
+  return (text:gsub("(%f[%w](%a%a%a?)(%d+%a?))(%s*[,%-]%s*)[Nn][Oo][Tt]%s+(%a*)(%d+%a?)%s*([,%-])",
+    function(first, prefix, _, sep, other_prefix, number, close)
+      local other = (other_prefix ~= "" and other_prefix or prefix):upper() .. number:upper()
+      if not (ids[first:upper()] and ids[other] and other ~= first:upper()
+          and (other_prefix == "" or other_prefix:upper() == prefix:upper())
+          and (sep:find(",", 1, true) ~= nil) == (close == ",")) then
+        return nil
+      end
+      return first .. close
+    end))
+end
 local SPELLED_OUT = {}
 for words, short in pairs(lexicon.spelled_out) do
   local pattern = words:gsub("%a", function(c) return "[" .. c:lower() .. c:upper() .. "]" end):gsub(" ", "%%s+")
   SPELLED_OUT[#SPELLED_OUT + 1] = { words = words, pattern = "%f[%a]" .. pattern .. "%f[%A]", short = short }
 end
+-- (the longest words first: "closest point of approach" before "past the closest point")
+table.sort(SPELLED_OUT, function(a, b) return #a.words > #b.words or (#a.words == #b.words and a.words < b.words) end)
 
 local function set_apart(text)
   if not text:find("%s%-") and not text:find("\xE2\x80[\x93\x94]") then return text, nil end
@@ -13688,6 +13720,7 @@ function M.translate(text, world)
     world.aircraft)), world.aircraft)
   text = homophone_ids(G.hundreds_callsign(G.recognised_callsigns(glued_telephony(G.common_named(G.joined_telephony(G.aircraft_of_airline(text)), world),
     world.aircraft), world), world), world)
+  text = G.other_callsign_denied(text, world.aircraft)
   local abbreviated
   text, abbreviated = abbreviated_registrations(text, world.aircraft)
   if abbreviated then return { commands = {}, ask = abbreviated } end

@@ -1211,7 +1211,10 @@ return {
       "narrowbody", "turboprop", "prop", "aeroplane" },
   -- an abbreviation's words said out, read as the abbreviation ("resume navigation after passing the closest
   -- point of approach" is "... the CPA")
-  spelled_out = { ["closest point of approach"] = "CPA", ["own ship"] = "ownship" },
+  -- ("... when they are past the closest point": the CPA passed, said without "of approach")
+  spelled_out = { ["closest point of approach"] = "CPA", ["own ship"] = "ownship",
+                  ["past the closest point"] = "past the CPA", ["past their closest point"] = "past their CPA",
+                  ["passed the closest point"] = "passed the CPA", ["passing the closest point"] = "passing the CPA" },
   -- the roles of a conflict study (handlers: role_refs): "subject aircraft is X", "intruder X", "X is the
   -- intruder" declare which aircraft "the intruder" / "the subject aircraft" means later in the request
   role_nouns = { "intruder", "subject", "ownship", "ego", "agent" },
@@ -1647,6 +1650,8 @@ return {
   same_as = { "match", "same", "as" },
   -- After "as" and an aircraft, what it did or is: the aircraft is compared with ("as EZY45 did")
   compared_doings = { "did", "does", "do", "has", "had", "was", "were", "is" },
+  -- the words of likeness before "to" and an aircraft compared with ("a new aircraft similar to ANA51")
+  compared_likeness = { "similar", "identical", "comparable" },
   -- Before "like", words that make it a wish ("I'd like", "we would like"), not a comparison
   wish_before_like = { "would", "i'd", "we'd", "you'd", "they'd", "i", "we", "you", "they", "should", "'d",
       "really", "also", "now" },

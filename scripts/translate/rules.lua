@@ -1144,12 +1144,18 @@ return function(intent, rule, words)
   rule { "add append insert give", "addwpt", next = "it", near = { 8, "@route_nouns" } }
   -- "add to the route of the Nile Air one zero seven the waypoint LUBOS": the route's owner named before the
   -- waypoint (a callsign said in words may be long); the waypoint, its noun or not, straight after the aircraft
-  rule { "add append insert", "addwpt", next = "to", when = function(g, i)
-    local k = g:word(i + 2, "the his its") and i + 3 or i + 2
+  -- ("add, to the route of ANA65, the fix OCEAN and then HATSU": the owner's phrase set apart by commas)
+  rule { "add append insert", "addwpt", when = function(g, i)
+    local comma = g.t[i + 1] ~= nil and g.t[i + 1].kind == "punct" and g.t[i + 1].text == ","
+    local to = comma and i + 2 or i + 1
+    if not g:word(to, "to") then return false end
+    local k = g:word(to + 1, "the his its") and to + 2 or to + 1
     if not (g:word(k, "@route_nouns") and g:word(k + 1, "of")) then return false end
     local a = g:refs_in(k + 2, #g.t + 1, "aircraft")[1]
     if not a or a.b > g:skip_fillers(k + 2) + 1 then return false end
-    local x = g:word(a.e, "the a") and a.e + 1 or a.e
+    local x = a.e
+    if comma and g.t[x] and g.t[x].kind == "punct" and g.t[x].text == "," then x = x + 1 end
+    if g:word(x, "the a") then x = x + 1 end
     if g:word(x, "@waypoint_nouns point") then x = x + 1 end
     return g:has_ref(x, x + 1, "waypoint")
   end }
@@ -2606,6 +2612,12 @@ return function(intent, rule, words)
   rule { "back rejoin resume resumes", "resnav", near = { 4, "route routes course navigation nav" },
          when = function(g, i)
     local c = g:find_word(1, i, "cpa")
+    -- ("after a resolution, the aircraft should go back to their route when they are past the closest point":
+    -- CPA after it, within ten words, a resolution named before it and no aircraft)
+    if c >= i and g:word_in(1, i, "resolution resolutions resolving") and not g:has_ref(1, #g.t + 1, "aircraft") then
+      c = g:find_word(i + 1, math.min(#g.t + 1, i + 11), "cpa")
+      return c <= #g.t and g:word(c, "cpa") and g:word_in(math.max(i + 1, c - 3), c, "past passing passed")
+    end
     return c < i and g:word_in(math.max(1, c - 4), c, "@condition past passing passed pass passes")
   end }
   rule { "resume", "lnav", near = { 3, "navigation nav route" } }
@@ -3100,6 +3112,11 @@ return function(intent, rule, words)
       if AIRCRAFT_INTENTS[g:intent_at(k) or ""] then return true end
     end
     return false
+  end }
+  -- ("after a resolution, the aircraft should go back to their route when they are past the CPA": the
+  -- resolution after which navigation resumes, CPA named after it, no setting of its own)
+  rule { "resolution resolutions", false, prev = { 2, "after following" }, when = function(g, i)
+    return g:word_in(i + 1, #g.t + 1, "cpa") and g:word_in(i + 1, #g.t + 1, "route routes navigation nav")
   end }
   -- "resolution only past CPA", "keep resolving until past CPA": when a resolution ends and navigation resumes
   -- (RESNAV PASTCPA); "past" before "CPA" names it
