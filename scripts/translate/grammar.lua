@@ -11484,12 +11484,18 @@ function G:same_span(b, e)
   if to and opens and (not self.t[to] or self.t[to].kind == "punct") then return b, to end
   return nil
 end
+-- (the request's only aircraft with "too" or "as well" after it, "could you switch on VNAV for IBEX 51 as well?",
+-- is its addressee: the words point back to an earlier request, and nothing here is copied)
 function G:same_for()
   local named = {}
   for _, r in ipairs(self.refs) do
     if r.kind == "aircraft" and r.exists and not r.false_start and r.b > 1 then
       local b, e = self:same_span(r.b, r.e)
-      if b then
+      local alone = b ~= nil and b == r.b
+      for _, o in ipairs(alone and self.refs or {}) do
+        alone = alone and (o == r or o.kind ~= "aircraft" or not o.exists or o.false_start)
+      end
+      if b and not alone then
         self:mark_used(b, e)
         r.false_start = true
         named[#named + 1] = r.name

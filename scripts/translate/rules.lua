@@ -2868,7 +2868,7 @@ return function(intent, rule, words)
     return k < #g.t and g:word(k, "saying says reading") and (not g:word(k, "says") or g:word(k - 1, "that which"))
   end }
   -- "add wind at 52N 4E, FL300, from 270 at 60 knots": a wind where the verb places it
-  rule { "wind winds", "wind", prev = { 2, "add set define put create" } }
+  rule { "wind winds", "wind", prev = { 2, "add set define put create make" } }
   -- "wind set at 35.5 139.8 from 270 degrees 40 knots": the verb said after the noun
   rule { "wind winds", "wind", next = "set" }
   rule { "set", false, prev = { 1, "wind winds" } }
