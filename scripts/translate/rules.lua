@@ -714,10 +714,14 @@ return function(intent, rule, words)
     return g:followed_by(i, 6, "real normal") and (g:preceded_by(i, 2, "@sim") or g:followed_by(i, 3, "@sim"))
       and not g:has_ref(1, #g.t + 1, "aircraft")
   end }
-  -- "set the simulation back to the normal, real time speed": the clock's rate named by "real time" straight
-  -- before "speed", the simulation named in the request and no aircraft: real time (DTMULT 1)
+  -- "set the simulation back to the normal, real time speed": the clock's rate named by "normal" and by "real
+  -- time" straight before "speed", no aircraft: real time (DTMULT 1); "back to real time speed" alone is real
+  -- time read by "real" (OP in fast time), "speed" its noun
   rule { "speed", "dtmult", prev = { 1, "time" }, when = function(g, i)
-    return g:word(i - 2, "real") and g:word_in(1, #g.t + 1, "@sim") and not g:has_ref(1, #g.t + 1, "aircraft")
+    return g:word(i - 2, "real") and g:word_in(1, #g.t + 1, "normal") and not g:has_ref(1, #g.t + 1, "aircraft")
+  end }
+  rule { "speed", false, prev = { 1, "time" }, when = function(g, i)
+    return g:word(i - 2, "real") and not g:has_ref(1, #g.t + 1, "aircraft")
   end }
   rule { "speed spd airspeed", "ff", near = { 3, "@sim" } }
   rule { "speed spd airspeed", "ff", next = "up", prev = { 3, "simulation sim" } }
@@ -2732,10 +2736,6 @@ return function(intent, rule, words)
   -- "back to normal speed, real time", "back to normal speed, please, real time": real time said again beside
   -- a normal rate (anywhere in the request) names that rate
   rule { "real", false, next = "time", when = function(g, i) return g:word_in(1, #g.t + 1, "normal") end }
-  -- ("back to real time speed": the rate named by "speed" after it, read there)
-  rule { "real", false, next = "time", when = function(g, i)
-    return g:word(i + 2, "speed") and g:word_in(1, #g.t + 1, "@sim") and not g:has_ref(1, #g.t + 1, "aircraft")
-  end }
   rule { "real", "op", next = "time" }
   rule { "fast", "ff", next = "forward" }
   rule { "ff fastforward fwd", "ff" }
