@@ -2000,6 +2000,17 @@ local function written_forms(text, world)
       if kind == "speed" then return n .. space .. unit .. (dir > 0 and " faster" or " slower") end
       return (dir > 0 and "up " or "down ") .. n .. space .. unit
     end)
+    -- ("thirty knots less would be better": the amount said as one number word, no number word before it)
+    text = text:gsub("()%f[%a](%a+)(%s+)(%a+)%s+(%a+)%f[%A]()", function(b, n, space, unit, word, at)
+      local v, kind, dir = G.amount_words[n:lower()], UNIT_CHANGE[unit:lower()], MORE_LESS[word:lower()]
+      local nx = (text:match("^%s+(%a+)", at) or ""):lower()
+      local before = (text:sub(1, b - 1):match("(%S+)%s+$") or ""):lower()
+      if not (v and kind == "speed" and dir) or nx == "or" or nx == "than" or before:match("^%d+$")
+          or NUMBER_WORDS[before] then
+        return nil
+      end
+      return v .. space .. unit .. (dir > 0 and " faster" or " slower")
+    end)
     low = text:lower()
   end
   if low:find("gain", 1, true) or low:find("lose", 1, true) then
@@ -7991,8 +8002,18 @@ end
 -- True when waypoint ref r is cancelled ("direct LEMON now, cancel GRANT") by the word before it and lies on the
 -- route of an aircraft sent direct (self.out) before that direct-to's waypoint: the direct-to leaves it out
 -- (the word and the name explained).
+-- ("JAL107 does not need to fly over SPENS, so ... go directly to HARIS": a place said not to be needed, before
+-- the direct-to's on the route, is the one skipped, with "not", "need"/"have", "to" and a verb of flying over)
 function G:cancelled_by_direct(r)
-  if not self:word(r.b - 1, "cancel cancelled canceled omit") then return false end
+  local from = r.b - 1
+  if not self:word(from, "cancel cancelled canceled omit") then
+    local v = self:word(r.b - 1, "over via through") and r.b - 2 or r.b - 1
+    from = v - 3
+    if not (self:word(v, "fly pass overfly go") and self:word(v - 1, "to") and self:word(v - 2, "need needs have has")
+        and self:word(from, "not don't doesn't dont doesnt")) then
+      return false
+    end
+  end
   for _, line in ipairs(self.out) do
     local id, to = line:match("^DIRECT (%S+) (%S+)$")
     local at, target
@@ -8001,7 +8022,7 @@ function G:cancelled_by_direct(r)
       if w:upper() == to:upper() then target = i end
     end
     if at and target and at < target then
-      self:explain(r.b - 1, r.e)
+      self:explain(from, r.e)
       return true
     end
   end
@@ -8109,6 +8130,9 @@ for _, list in ipairs({ ACCOUNTED.courtesy_phrases, ACCOUNTED.value_phrases }) d
     table.insert(PHRASES[words[1]], words)
   end
 end
+-- the amounts of a change said as one number word before its unit and "more"/"less" ("thirty knots less")
+G.amount_words = { five = "5", ten = "10", fifteen = "15", twenty = "20", thirty = "30", forty = "40", fifty = "50",
+  sixty = "60", seventy = "70", eighty = "80", ninety = "90" }
 -- The tokens of the courtesy phrases that hold a number word ("one more thing", "that is two instructions"), as
 -- {[k] = true}, found once per request: such a number is no value (G:quantities). A number word is matched by
 -- what was said (its raw word), the other words by the lexer's text.

@@ -17162,6 +17162,13 @@ do
   -- a reason or a hedge that carries meaning stays asked
   asked(ex("Is it ok to ask JTA61 for a hold at ALPHA? If it is not possible, then please climb it to FL170."),
     "the alternative of a negated hedge")
+  -- a reason naming the place a direct-to skips on the route; a place off that stretch, or another instruction
+  -- after it, stays asked; a change said as a number word and "less"
+  check_eq(ex("Jai Ocean 610 does not need to fly over ALPHA, so I would like it to go directly to BRAVO."),
+    "DIRECT JTA610 BRAVO")
+  asked(ex("Jai Ocean 610 does not need to fly over BRAVO, so direct ALPHA please"), "BRAVO lies after ALPHA")
+  asked(ex("Jai Ocean 610 does not need to fly over ALPHA, so climb FL230"), "no direct-to skips ALPHA")
+  check_eq(ex("For JTA610, I think the speed is too fast; twenty knots less would be better."), "SPD JTA610 260")
   -- the only aircraft said 'as well' is addressed; the route's owner set apart by commas
   check_eq(ex("Could you switch on the vertical navigation for Nippon Cargo 88 as well?"), "VNAV NCA88 ON")
   check_eq(ex("Could you kindly add, to the route of JTA61, the fix ALPHA and then BRAVO?"),
