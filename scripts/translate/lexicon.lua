@@ -1116,7 +1116,13 @@ return {
                       restated = { "it is", "it's", "it should be" },
                       formal_apology = { "i beg your pardon", "beg your pardon", "pardon me", "forgive me",
                                          "excuse me", "my apologies", "oops", "ops", "opps", "oups", "whoops",
-                                         "woops", "oopsie", "whoopsie" },
+                                         "woops", "oopsie", "whoopsie",
+                                         -- (an apology for the requests said together, "Sorry for many requests
+                                         -- at once.": "at once" in it is no timing)
+                                         "sorry for many requests at once", "sorry for so many requests at once",
+                                         "sorry for the many requests at once", "sorry for all the requests at once",
+                                         "sorry for many instructions at once",
+                                         "sorry for so many instructions at once" },
                       -- words that describe the aircraft said in place of one taken back ("American 100 -- no,
                       -- the second aircraft, United 200"; aircraft nouns too): part of the correction's run
                       described = { "the", "a", "an", "first", "second", "third", "fourth", "other" },

@@ -17148,6 +17148,8 @@ do
   check_eq(ex("Could you kindly change the speed of JTA61 to 240 knots, and the altitude to FL130? Sorry, that is "
     .. "two instructions."), "SPD JTA61 240 ; ALT JTA61 FL130")
   check_eq(ex("I am sorry, the pilot participant for Nippon Cargo 88 has left, so please remove it."), "DEL NCA88")
+  check_eq(ex("Sorry for so many requests at once. JTA61 climb to FL160, and JTA610 descend to FL200."),
+    "ALT JTA61 FL160 ; ALT JTA610 FL200")
   check_eq(ex("Nippon Cargo eight eight, please climb to one one thousand feet, thank you."), "ALT NCA88 11000")
   -- the value the speaker could not give, asked after the verb, is asked back, never the aircraft's state
   asked(ex("Jai Ocean 61 please climb... hmm, what level would be good? I am not sure."), "the level")
