@@ -8136,20 +8136,26 @@ G.amount_words = { five = "5", ten = "10", fifteen = "15", twenty = "20", thirty
 -- The tokens of the courtesy phrases that hold a number word ("one more thing", "that is two instructions"), as
 -- {[k] = true}, found once per request: such a number is no value (G:quantities). A number word is matched by
 -- what was said (its raw word), the other words by the lexer's text.
-G.numbered_phrases = {}
+-- (G.numbered_phrases[w]: the phrases whose first word is w, a number word also by its figure, "one" as "1")
+G.numbered_phrases, G.no_phrases = {}, {}
 for _, p in ipairs(ACCOUNTED.courtesy_phrases) do
   local words, numbered = {}, false
   for w in p:gmatch("%S+") do
     words[#words + 1] = (w:gsub("'s$", ""))
     numbered = numbered or NUMBER_WORDS[w] ~= nil
   end
-  if numbered then table.insert(G.numbered_phrases, words) end
+  if numbered then
+    for _, key in ipairs({ words[1], words[1] == "one" and "1" or nil }) do
+      G.numbered_phrases[key] = G.numbered_phrases[key] or {}
+      table.insert(G.numbered_phrases[key], words)
+    end
+  end
 end
 function G:phrase_numbers()
   if self.phrase_nums then return self.phrase_nums end
   local set = {}
-  for i = 1, #G.numbered_phrases > 0 and #self.t or 0 do
-    for _, p in ipairs(G.numbered_phrases) do
+  for i = 1, #self.t do
+    for _, p in ipairs(G.numbered_phrases[self.t[i].text] or G.no_phrases) do
       local ok = true
       for x = 1, #p do
         local t = self.t[i + x - 1]

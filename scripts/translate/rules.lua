@@ -242,8 +242,9 @@ return function(intent, rule, words)
   -- the value kept, no question of state)
   rule { "altitude level speed heading mach airspeed", "pos", when = function(g, i)
     local nx = g.t[i + 1]
-    return nx ~= nil and not value_unsaid(g, i) and nx.kind == "punct" and nx.text == "?" and g:has_ref(1, i, "aircraft")
+    return nx ~= nil and nx.kind == "punct" and nx.text == "?" and g:has_ref(1, i, "aircraft")
       and #g:quantities(1, #g.t + 1) == 0 and not g:word(i - 1, "current present same its his her their your")
+      and not value_unsaid(g, i)
   end }
 
   -- "put the sim 3 times faster, the climb takes too long", "the turn was too late": the instruction word after
