@@ -920,6 +920,17 @@ local function self_corrections(text)
       and j > k and toks[j - 1].bare == "no" and not toks[j - 1].raw:match("%p$")
     -- ("heading 330 -- no, the right, I mean a right turn onto heading 030", "Mach 0.80, sorry, to Mach 0.78": an
     -- article or "to" before the side or value said in its place; the word stays with it)
+    -- ("Mach .72? Ah, no, sorry, please use knots, 290 knots": the unit chosen, said before the value in place, the
+    -- value said with that unit; the words of the choice belong to the run)
+    local u = nxt and nxt.bare == "please" and j + 1 or j
+    local unit = marked and toks[u] and toks[u].bare == "use" and toks[u + 1] and toks[u + 1].raw:match("%p$")
+      and toks[u + 1].bare
+    if (unit == "knots" and toks[u + 3] and (toks[u + 3].bare == "knots" or toks[u + 3].bare == "kt"
+          or toks[u + 3].bare == "kts"))
+        or (unit == "mach" and toks[u + 2] and toks[u + 2].bare == "mach") then
+      j = u + 2
+      nxt = toks[j]
+    end
     local said = nxt
     if nxt and (nxt.bare == "the" or nxt.bare == "a" or nxt.bare == "to") and toks[j + 1] and not nxt.raw:match("%p$") then
       said = toks[j + 1]
@@ -2117,6 +2128,17 @@ local function written_forms(text, world)
       end
       if kind == "speed" then return n .. space .. unit .. (dir > 0 and " faster" or " slower") end
       return (dir > 0 and "up " or "down ") .. n .. space .. unit
+    end)
+    -- ("thirty knots less would be better": the amount said as one number word, no number word before it)
+    text = text:gsub("()%f[%a](%a+)(%s+)(%a+)%s+(%a+)%f[%A]()", function(b, n, space, unit, word, at)
+      local v, kind, dir = G.amount_words[n:lower()], UNIT_CHANGE[unit:lower()], MORE_LESS[word:lower()]
+      local nx = (text:match("^%s+(%a+)", at) or ""):lower()
+      local before = (text:sub(1, b - 1):match("(%S+)%s+$") or ""):lower()
+      if not (v and kind == "speed" and dir) or nx == "or" or nx == "than" or before:match("^%d+$")
+          or NUMBER_WORDS[before] then
+        return nil
+      end
+      return v .. space .. unit .. (dir > 0 and " faster" or " slower")
     end)
     low = text:lower()
   end
@@ -3485,12 +3507,15 @@ function G:quantities(b, e)
   local q = self.qcache[key]
   if not q then
     q = self.u:quantities(b, e)
-    for k = 1, #q do
+    local courtesy = #q > 0 and self:phrase_numbers()
+    for k = #q, 1, -1 do
       local x = q[k]
       local unit = self.t[x.e - 1]
       if x.kind == "dist" and unit and G.km_words[unit.text] and x.number then
         x.value = math.floor(x.number.value / 1.852 * 100 + 0.5) / 100
       end
+      -- (a number inside a courtesy phrase, "one more thing", is no value)
+      if courtesy[x.b] and courtesy[x.e - 1] then table.remove(q, k) end
     end
     self.qcache[key] = q
   end
@@ -8223,8 +8248,18 @@ end
 -- True when waypoint ref r is cancelled ("direct LEMON now, cancel GRANT") by the word before it and lies on the
 -- route of an aircraft sent direct (self.out) before that direct-to's waypoint: the direct-to leaves it out
 -- (the word and the name explained).
+-- ("JAL107 does not need to fly over SPENS, so ... go directly to HARIS": a place said not to be needed, before
+-- the direct-to's on the route, is the one skipped, with "not", "need"/"have", "to" and a verb of flying over)
 function G:cancelled_by_direct(r)
-  if not self:word(r.b - 1, "cancel cancelled canceled omit") then return false end
+  local from = r.b - 1
+  if not self:word(from, "cancel cancelled canceled omit") then
+    local v = self:word(r.b - 1, "over via through") and r.b - 2 or r.b - 1
+    from = v - 3
+    if not (self:word(v, "fly pass overfly go") and self:word(v - 1, "to") and self:word(v - 2, "need needs have has")
+        and self:word(from, "not don't doesn't dont doesnt")) then
+      return false
+    end
+  end
   for _, line in ipairs(self.out) do
     local id, to = line:match("^DIRECT (%S+) (%S+)$")
     local at, target
@@ -8233,7 +8268,7 @@ function G:cancelled_by_direct(r)
       if w:upper() == to:upper() then target = i end
     end
     if at and target and at < target then
-      self:explain(r.b - 1, r.e)
+      self:explain(from, r.e)
       return true
     end
   end
@@ -8340,6 +8375,44 @@ for _, list in ipairs({ ACCOUNTED.courtesy_phrases, ACCOUNTED.value_phrases }) d
     PHRASES[words[1]] = PHRASES[words[1]] or {}
     table.insert(PHRASES[words[1]], words)
   end
+end
+-- the amounts of a change said as one number word before its unit and "more"/"less" ("thirty knots less")
+G.amount_words = { five = "5", ten = "10", fifteen = "15", twenty = "20", thirty = "30", forty = "40", fifty = "50",
+  sixty = "60", seventy = "70", eighty = "80", ninety = "90" }
+-- The tokens of the courtesy phrases that hold a number word ("one more thing", "that is two instructions"), as
+-- {[k] = true}, found once per request: such a number is no value (G:quantities). A number word is matched by
+-- what was said (its raw word), the other words by the lexer's text.
+-- (G.numbered_phrases[w]: the phrases whose first word is w, a number word also by its figure, "one" as "1")
+G.numbered_phrases, G.no_phrases = {}, {}
+for _, p in ipairs(ACCOUNTED.courtesy_phrases) do
+  local words, numbered = {}, false
+  for w in p:gmatch("%S+") do
+    words[#words + 1] = (w:gsub("'s$", ""))
+    numbered = numbered or NUMBER_WORDS[w] ~= nil
+  end
+  if numbered then
+    for _, key in ipairs({ words[1], words[1] == "one" and "1" or nil }) do
+      G.numbered_phrases[key] = G.numbered_phrases[key] or {}
+      table.insert(G.numbered_phrases[key], words)
+    end
+  end
+end
+function G:phrase_numbers()
+  if self.phrase_nums then return self.phrase_nums end
+  local set = {}
+  for i = 1, #self.t do
+    for _, p in ipairs(G.numbered_phrases[self.t[i].text] or G.no_phrases) do
+      local ok = true
+      for x = 1, #p do
+        local t = self.t[i + x - 1]
+        ok = ok and t ~= nil and (t.text == p[x] or (t.raw or ""):lower() == p[x])
+        if not ok then break end
+      end
+      if ok then for x = i, i + #p - 1 do set[x] = true end end
+    end
+  end
+  self.phrase_nums = set
+  return set
 end
 -- the closed classes and courtesy words (a clause of only these frames a request: "if that's alright")
 local FRAMING = {}
@@ -11750,12 +11823,18 @@ function G:same_span(b, e)
   if to and opens and (not self.t[to] or self.t[to].kind == "punct") then return b, to end
   return nil
 end
+-- (the request's only aircraft with "too" or "as well" after it, "could you switch on VNAV for IBEX 51 as well?",
+-- is its addressee: the words point back to an earlier request, and nothing here is copied)
 function G:same_for()
   local named = {}
   for _, r in ipairs(self.refs) do
     if r.kind == "aircraft" and r.exists and not r.false_start and r.b > 1 then
       local b, e = self:same_span(r.b, r.e)
-      if b then
+      local alone = b ~= nil and b == r.b
+      for _, o in ipairs(alone and self.refs or {}) do
+        alone = alone and (o == r or o.kind ~= "aircraft" or not o.exists or o.false_start)
+      end
+      if b and not alone then
         self:mark_used(b, e)
         r.false_start = true
         named[#named + 1] = r.name
@@ -12843,11 +12922,32 @@ end
 -- them). A comma between digits ("6,000") is no comma token and is not counted.
 local DASHES = { "^%s+%-%-?%s+", "^%s*\xE2\x80[\x93\x94]%s*" }
 -- lexicon.spelled_out as case-blind Lua patterns over whole words, built once: { words, pattern, short }
+-- "ANA51 - not 515 - please increase ...", "ANA51, not ANA515, climb ...": an aircraft flying, then "not" and
+-- another aircraft flying of the same airline (its number alone, or its callsign), set apart by dashes or commas:
+-- the speaker rules the other out, so "not" and the other are dropped and the first stays addressed. The other
+-- not flying, or of another airline, nothing changes (asked).
+function G.other_callsign_denied(text, aircraft)
+  if not text:lower():find("not", 1, true) then return text end
+  local ids = {}
+  for _, a in ipairs(aircraft) do ids[a.id:upper()] = true end
+  return (text:gsub("(%f[%w](%a%a%a?)(%d+%a?))(%s*[,%-]%s*)[Nn][Oo][Tt]%s+(%a*)(%d+%a?)%s*([,%-])",
+    function(first, prefix, _, sep, other_prefix, number, close)
+      local other = (other_prefix ~= "" and other_prefix or prefix):upper() .. number:upper()
+      if not (ids[first:upper()] and ids[other] and other ~= first:upper()
+          and (other_prefix == "" or other_prefix:upper() == prefix:upper())
+          and (sep:find(",", 1, true) ~= nil) == (close == ",")) then
+        return nil
+      end
+      return first .. close
+    end))
+end
 local SPELLED_OUT = {}
 for words, short in pairs(lexicon.spelled_out) do
   local pattern = words:gsub("%a", function(c) return "[" .. c:lower() .. c:upper() .. "]" end):gsub(" ", "%%s+")
   SPELLED_OUT[#SPELLED_OUT + 1] = { words = words, pattern = "%f[%a]" .. pattern .. "%f[%A]", short = short }
 end
+-- (the longest words first: "closest point of approach" before "past the closest point")
+table.sort(SPELLED_OUT, function(a, b) return #a.words > #b.words or (#a.words == #b.words and a.words < b.words) end)
 
 local function set_apart(text)
   if not text:find("%s%-") and not text:find("\xE2\x80[\x93\x94]") then return text, nil end
@@ -13976,6 +14076,7 @@ function M.translate(text, world)
     world.aircraft)), world.aircraft)
   text = homophone_ids(G.hundreds_callsign(G.recognised_callsigns(glued_telephony(G.common_named(G.joined_telephony(G.aircraft_of_airline(text)), world),
     world.aircraft), world), world), world)
+  text = G.other_callsign_denied(text, world.aircraft)
   local abbreviated
   text, abbreviated = abbreviated_registrations(text, world.aircraft)
   if abbreviated then return { commands = {}, ask = abbreviated } end

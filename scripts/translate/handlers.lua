@@ -821,13 +821,15 @@ end
 -- "as" (and "the") before it, "same" within the 5 words before that; "as" before it and a verb of
 -- what it did or is after it ("as EZY45 did", "as EZY45 has"); "as did" or "as with" before it;
 -- "like" before it, not after a wish ("like EZY45", "just like EZY45 did"; "I'd like EZY45 at FL260"
--- instructs). An aircraft compared with is never instructed.
+-- instructs); "similar to" or "identical to" before it. An aircraft compared with is never instructed.
 function m:compared_with(i)
   local k = self:word(i - 1, "the") and i - 2 or i - 1
   if self:word(k, "as") and self:word_in(math.max(1, k - 5), k, "same") then return true end
   local r = self:refs_in(i, i + 1, "aircraft")[1]
   if self:word(k, "as") and r and self:word(r.e, "@compared_doings") then return true end
   if self:word(k, "did does has had with") and self:word(k - 1, "as") then return true end
+  -- ("a new aircraft similar to ANA51: ...", "identical to the Qantas"): "to" after a word of likeness
+  if self:word(k, "to") and self:word(k - 1, "@compared_likeness") then return true end
   return self:word(k, "like") and not self:word(k - 1, "@wish_before_like")
 end
 

@@ -312,7 +312,9 @@ return {
         -- an aircraft handed to a teammate ("can you look after Logan 52B for me - ...")
         "look after",
         -- a demonstration's pointers to the audience ("watch the data block", "here's the fun part")
-        "data block", "data blocks", "data tag", "the fun part", "dobry den", "dobar dan", "dober dan", "jo napot", "na shledanou",
+        "data block", "data blocks", "data tag", "the fun part",
+        -- (a stretch of the run skipped by fast time: "we would like to skip the quiet part; fast-forward ...")
+        "the quiet part", "the boring part", "the slow part", "the quiet period", "the boring bit", "the quiet bit", "dobry den", "dobar dan", "dober dan", "jo napot", "na shledanou",
         "do widzenia", "do videnia", "kalo taxidi", "kali mera", "kali spera", "buona giornata", "buona serata",
         "buon viaggio", "grazie mille", "per favore", "bon voyage", "bonne journee", "bonne soiree", "boa tarde",
         "boa noite", "boa viagem", "bom dia", "buen viaje", "hasta luego", "guten tag", "god dag", "god morgen",
@@ -365,7 +367,22 @@ return {
         -- you?"): the instruction given; said of someone else ("the pilot proposes ...") it stays asked
         "i propose you", "we propose you", "i suggest you", "we suggest you", "i recommend you", "we recommend you",
         "is it ok for you", "it's ok for you", "is that ok for you", "is it okay for you", "it's okay for you",
-        "is that okay for you" },
+        "is that okay for you",
+        -- a Japanese speaker's hedges on the whole request, and apologies and asides around it ("If there is no
+        -- problem, please.", "..., if this is possible", "I am sorry, one more thing.", "Sorry for many requests
+        -- at once.", "Sorry, that is two instructions."): they ask for nothing; an aside with a value, a name or
+        -- a negation of its own ("if it is not possible, then ...") is no phrase of these and stays asked
+        "if there is no problem", "if there's no problem", "if there is no issue", "if there's no issue",
+        "if no problem", "if it is no problem", "if it's no problem", "if this is possible", "if this is ok",
+        "if this is okay", "if this is alright", "if this is all right", "if it is ok", "if it is okay",
+        "if it's ok", "if it's okay", "one more thing", "just one more thing", "one last thing",
+        "sorry for many requests at once", "sorry for many requests", "sorry for so many requests",
+        "sorry for the many requests", "sorry for all the requests", "sorry for many instructions",
+        "sorry for so many instructions", "sorry to ask again", "sorry for asking again", "sorry for the trouble",
+        "that is two instructions", "that's two instructions", "that is three instructions",
+        "that's three instructions", "those are two instructions", "these are two instructions",
+        -- the person who plays the pilot in a study ("the pilot participant for Skymark 711 has left")
+        "pilot participant", "pilot participants" },
     -- the experimenter's account of a run in a remark beside a complete request, words that name no instruction,
     -- value, place or timing ("faster than I had intended", "we're comparing Mach cruise against fixed-CAS",
     -- "I'd like that to be reflected", "the transit phase", "I'll take a
@@ -1134,7 +1151,13 @@ return {
                       restated = { "it is", "it's", "it should be" },
                       formal_apology = { "i beg your pardon", "beg your pardon", "pardon me", "forgive me",
                                          "excuse me", "my apologies", "oops", "ops", "opps", "oups", "whoops",
-                                         "woops", "oopsie", "whoopsie" },
+                                         "woops", "oopsie", "whoopsie",
+                                         -- (an apology for the requests said together, "Sorry for many requests
+                                         -- at once.": "at once" in it is no timing)
+                                         "sorry for many requests at once", "sorry for so many requests at once",
+                                         "sorry for the many requests at once", "sorry for all the requests at once",
+                                         "sorry for many instructions at once",
+                                         "sorry for so many instructions at once" },
                       -- words that describe the aircraft said in place of one taken back ("American 100 -- no,
                       -- the second aircraft, United 200"; aircraft nouns too): part of the correction's run
                       described = { "the", "a", "an", "first", "second", "third", "fourth", "other" },
@@ -1229,7 +1252,10 @@ return {
       "narrowbody", "turboprop", "prop", "aeroplane" },
   -- an abbreviation's words said out, read as the abbreviation ("resume navigation after passing the closest
   -- point of approach" is "... the CPA")
-  spelled_out = { ["closest point of approach"] = "CPA", ["own ship"] = "ownship" },
+  -- ("... when they are past the closest point": the CPA passed, said without "of approach")
+  spelled_out = { ["closest point of approach"] = "CPA", ["own ship"] = "ownship",
+                  ["past the closest point"] = "past the CPA", ["past their closest point"] = "past their CPA",
+                  ["passed the closest point"] = "passed the CPA", ["passing the closest point"] = "passing the CPA" },
   -- the roles of a conflict study (handlers: role_refs): "subject aircraft is X", "intruder X", "X is the
   -- intruder" declare which aircraft "the intruder" / "the subject aircraft" means later in the request
   role_nouns = { "intruder", "subject", "ownship", "ego", "agent" },
@@ -1665,6 +1691,8 @@ return {
   same_as = { "match", "same", "as" },
   -- After "as" and an aircraft, what it did or is: the aircraft is compared with ("as EZY45 did")
   compared_doings = { "did", "does", "do", "has", "had", "was", "were", "is" },
+  -- the words of likeness before "to" and an aircraft compared with ("a new aircraft similar to ANA51")
+  compared_likeness = { "similar", "identical", "comparable" },
   -- Before "like", words that make it a wish ("I'd like", "we would like"), not a comparison
   wish_before_like = { "would", "i'd", "we'd", "you'd", "they'd", "i", "we", "you", "they", "should", "'d",
       "really", "also", "now" },

@@ -425,6 +425,7 @@ local names = {
     { "jeju air", "JJA" },
     { "air peach", "APJ" },
     { "skymark", "SKY" },
+    { "nippon cargo", "NCA" },  -- (Nippon Cargo Airlines, its ICAO telephony)
     { "starflyer", "SFJ" },
     { "zipair", "TZP" },
     { "zippy", "TZP" },  -- (ZIPAIR Tokyo's ICAO telephony)

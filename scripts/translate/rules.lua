@@ -225,6 +225,17 @@ return function(intent, rule, words)
   end }
   -- ("comply with published speed and altitude restrictions": the kinds of restriction complied with, VNAV)
   rule { "speed altitude level", false, prev = { 6, "comply" }, next = "and restriction restrictions" }
+  -- True when a verb of an instruction is said before i in the request, not as a state ("is descending"): a
+  -- measure asked after it ("KLM12 please descend... hmm, to what level is good?", "climb to what level?") is
+  -- the value the speaker could not give, never a question of the aircraft's state (no POS: the value is asked)
+  local function value_unsaid(g, i)
+    for x = 1, i - 1 do
+      if g:word(x, "climb descend turn reduce increase slow") and not g:word(x - 1, "is are was were") then
+        return true
+      end
+    end
+    return false
+  end
   -- "swr84c altitude?", "afr1442 speed?", "bel21a lvl?": a state word asked with "?" straight after it, an aircraft named
   -- before it and no value said anywhere: a question of the aircraft's state (POS), no instruction (an
   -- instruction's shorthand, "ezy45 fl?", "hdg?", is a value left out: asked; "stay at its current altitude?" names
@@ -233,6 +244,7 @@ return function(intent, rule, words)
     local nx = g.t[i + 1]
     return nx ~= nil and nx.kind == "punct" and nx.text == "?" and g:has_ref(1, i, "aircraft")
       and #g:quantities(1, #g.t + 1) == 0 and not g:word(i - 1, "current present same its his her their your")
+      and not value_unsaid(g, i)
   end }
 
   -- "put the sim 3 times faster, the climb takes too long", "the turn was too late": the instruction word after
@@ -703,6 +715,15 @@ return function(intent, rule, words)
     return g:followed_by(i, 6, "real normal") and (g:preceded_by(i, 2, "@sim") or g:followed_by(i, 3, "@sim"))
       and not g:has_ref(1, #g.t + 1, "aircraft")
   end }
+  -- "set the simulation back to the normal, real time speed": the clock's rate named by "normal" and by "real
+  -- time" straight before "speed", no aircraft: real time (DTMULT 1); "back to real time speed" alone is real
+  -- time read by "real" (OP in fast time), "speed" its noun
+  rule { "speed", "dtmult", prev = { 1, "time" }, when = function(g, i)
+    return g:word(i - 2, "real") and g:word_in(1, #g.t + 1, "normal") and not g:has_ref(1, #g.t + 1, "aircraft")
+  end }
+  rule { "speed", false, prev = { 1, "time" }, when = function(g, i)
+    return g:word(i - 2, "real") and not g:has_ref(1, #g.t + 1, "aircraft")
+  end }
   rule { "speed spd airspeed", "ff", near = { 3, "@sim" } }
   rule { "speed spd airspeed", "ff", next = "up", prev = { 3, "simulation sim" } }
   rule { "speed spd airspeed", "ff", prev = { 1, "simulation sim" } }
@@ -1151,12 +1172,18 @@ return function(intent, rule, words)
   rule { "add append insert give", "addwpt", next = "it", near = { 8, "@route_nouns" } }
   -- "add to the route of the Nile Air one zero seven the waypoint LUBOS": the route's owner named before the
   -- waypoint (a callsign said in words may be long); the waypoint, its noun or not, straight after the aircraft
-  rule { "add append insert", "addwpt", next = "to", when = function(g, i)
-    local k = g:word(i + 2, "the his its") and i + 3 or i + 2
+  -- ("add, to the route of ANA65, the fix OCEAN and then HATSU": the owner's phrase set apart by commas)
+  rule { "add append insert", "addwpt", when = function(g, i)
+    local comma = g.t[i + 1] ~= nil and g.t[i + 1].kind == "punct" and g.t[i + 1].text == ","
+    local to = comma and i + 2 or i + 1
+    if not g:word(to, "to") then return false end
+    local k = g:word(to + 1, "the his its") and to + 2 or to + 1
     if not (g:word(k, "@route_nouns") and g:word(k + 1, "of")) then return false end
     local a = g:refs_in(k + 2, #g.t + 1, "aircraft")[1]
     if not a or a.b > g:skip_fillers(k + 2) + 1 then return false end
-    local x = g:word(a.e, "the a") and a.e + 1 or a.e
+    local x = a.e
+    if comma and g.t[x] and g.t[x].kind == "punct" and g.t[x].text == "," then x = x + 1 end
+    if g:word(x, "the a") then x = x + 1 end
     if g:word(x, "@waypoint_nouns point") then x = x + 1 end
     return g:has_ref(x, x + 1, "waypoint")
   end }
@@ -2411,6 +2438,7 @@ return function(intent, rule, words)
   rule { "what how know", "pos", near = { 4, "altitude speed heading position level alt lvl hdg spd height mach" },
     when = function(g, i)
       local k = g:word(i, "what") and i - 1 or i
+      if g:word(i, "what") and value_unsaid(g, i) then return false end
       return not (g:word(k, "know") and g:word(k - 1, "you ya")
         and not g:word(k - 2, "do does did don't doesn't didn't can could would will"))
     end }
@@ -2648,6 +2676,12 @@ return function(intent, rule, words)
   rule { "back rejoin resume resumes", "resnav", near = { 4, "route routes course navigation nav" },
          when = function(g, i)
     local c = g:find_word(1, i, "cpa")
+    -- ("after a resolution, the aircraft should go back to their route when they are past the closest point":
+    -- CPA after it, within ten words, a resolution named before it and no aircraft)
+    if c >= i and g:word_in(1, i, "resolution resolutions resolving") and not g:has_ref(1, #g.t + 1, "aircraft") then
+      c = g:find_word(i + 1, math.min(#g.t + 1, i + 11), "cpa")
+      return c <= #g.t and g:word(c, "cpa") and g:word_in(math.max(i + 1, c - 3), c, "past passing passed")
+    end
     return c < i and g:word_in(math.max(1, c - 4), c, "@condition past passing passed pass passes")
   end }
   rule { "resume", "lnav", near = { 3, "navigation nav route" } }
@@ -2708,9 +2742,13 @@ return function(intent, rule, words)
     local f = g:find_word(k, k + 3, "fast")
     return f < k + 3 and g:word(f + 1, "time")
   end }
+  -- ("make the simulation run as fast as possible for 20 minutes": the simulation, the verb's subject after a
+  -- causative verb, said straight before it)
   rule { "run advance", "ff", near = { 7, "for minutes minute seconds second hours hour min sec" },
          not_near = { 7, "real times faster x twice thrice" },
-         when = function(g, i) return g:followed_by(i, 3, "@sim") end }
+         when = function(g, i)
+    return g:followed_by(i, 3, "@sim") or (g:word(i - 1, "@sim") and g:preceded_by(i - 1, 3, "make let have get"))
+  end }
   -- "step the sim 30 seconds", "run 2 minutes", "advance 60 s", "run fast for an hour": a duration straight
   -- after the verb (the sim named between, or nothing; "fast" and "for" before it) is how far to fast-forward
   -- ("sim step 0.5 s", "the simulation step 0.1 s": the step as a noun, the time step, is no verb)
@@ -2892,7 +2930,7 @@ return function(intent, rule, words)
     return k < #g.t and g:word(k, "saying says reading") and (not g:word(k, "says") or g:word(k - 1, "that which"))
   end }
   -- "add wind at 52N 4E, FL300, from 270 at 60 knots": a wind where the verb places it
-  rule { "wind winds", "wind", prev = { 2, "add set define put create" } }
+  rule { "wind winds", "wind", prev = { 2, "add set define put create make" } }
   -- "wind set at 35.5 139.8 from 270 degrees 40 knots": the verb said after the noun
   rule { "wind winds", "wind", next = "set" }
   rule { "set", false, prev = { 1, "wind winds" } }
@@ -2984,6 +3022,17 @@ return function(intent, rule, words)
     return g.t[i + 1] ~= nil and g.t[i + 1].kind == "quoted" and g:word_in(i + 2, math.min(#g.t + 1, i + 6), "log screen scope")
   end }
 
+  -- "write a message on the screen, 'session two starts'", "show a note in the log, 'run 2 done'": quoted text
+  -- after a message's noun and where it goes, no aircraft named between
+  rule { "write put show display", "echo", when = function(g, i)
+    for k = i + 1, math.min(#g.t, i + 9) do
+      if g.t[k].kind == "quoted" then
+        return g:word_in(i + 1, k, "message note text") and g:word_in(i + 1, k, "log screen scope console")
+          and not g:has_ref(i + 1, k, "aircraft")
+      end
+    end
+    return false
+  end }
   -- "write on the screen: exercise starts now", "show in the log: run 2 done": the text after the colon, for the
   -- screen or the log named between the verb and the colon
   -- ("put a message up on the screen: welcome!": a message's noun and "up" between)
@@ -3125,6 +3174,11 @@ return function(intent, rule, words)
       if AIRCRAFT_INTENTS[g:intent_at(k) or ""] then return true end
     end
     return false
+  end }
+  -- ("after a resolution, the aircraft should go back to their route when they are past the CPA": the
+  -- resolution after which navigation resumes, CPA named after it, no setting of its own)
+  rule { "resolution resolutions", false, prev = { 2, "after following" }, when = function(g, i)
+    return g:word_in(i + 1, #g.t + 1, "cpa") and g:word_in(i + 1, #g.t + 1, "route routes navigation nav")
   end }
   -- "resolution only past CPA", "keep resolving until past CPA": when a resolution ends and navigation resumes
   -- (RESNAV PASTCPA); "past" before "CPA" names it

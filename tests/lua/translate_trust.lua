@@ -17442,4 +17442,54 @@ do
       .. "flight level two one zero, two nine zero knots"), "CRE QFA802 A321 WENDY 180 FL210 290")
     asked(ex("chuck a qantas in at wendy heading one eight zero flight level two one zero"), "no callsign or type")
   end
+-- Cycle 58 (f183): a very polite, hedged Japanese-English framing. Hedges, apologies and asides around a request
+-- ask for nothing, numbers in them too; a value the speaker says they cannot give is asked; another aircraft ruled
+-- out by "not" is never instructed; a negation or reason with meaning stays asked
+do
+  local _, ex = scene({ "CRE JTA610 B738 26.3 127.8 045 FL210 280", "ADDWPT JTA610 ALPHA", "ADDWPT JTA610 BRAVO",
+    "CRE NCA88 B748 26.0 127.5 090 9000 250", "CRE JTA61 A320 26.5 127.2 180 FL150 260" })
+  check_eq(ex("Is it ok to climb Jai Ocean 610 to flight level 230? If there is no problem, please."), "ALT JTA610 FL230")
+  check_eq(ex("Jai Ocean 61, descend to FL120, if this is possible."), "ALT JTA61 FL120")
+  check_eq(ex("Excuse me, Jai Ocean 61, one more thing: please turn left heading 200."), "HDG JTA61 200 LEFT")
+  check_eq(ex("Could you kindly change the speed of JTA61 to 240 knots, and the altitude to FL130? Sorry, that is "
+    .. "two instructions."), "SPD JTA61 240 ; ALT JTA61 FL130")
+  check_eq(ex("I am sorry, the pilot participant for Nippon Cargo 88 has left, so please remove it."), "DEL NCA88")
+  check_eq(ex("Sorry for so many requests at once. JTA61 climb to FL160, and JTA610 descend to FL200."),
+    "ALT JTA61 FL160 ; ALT JTA610 FL200")
+  check_eq(ex("Nippon Cargo eight eight, please climb to one one thousand feet, thank you."), "ALT NCA88 11000")
+  -- the value the speaker could not give, asked after the verb, is asked back, never the aircraft's state
+  asked(ex("Jai Ocean 61 please climb... hmm, what level would be good? I am not sure."), "the level")
+  asked(ex("JTA61 turn, to what heading? Please decide."), "the heading")
+  check_eq(ex("what level is JTA61 at?"), "POS JTA61")
+  -- a self-correction that names its unit first; another aircraft of the airline ruled out
+  check_eq(ex("Could you set the speed of JTA610 to Mach point seven eight? Ah, no, sorry, please use knots, "
+    .. "280 knots."), "SPD JTA610 280")
+  check_eq(ex("Excuse me, JTA 61 - not 610 - please reduce the speed to 230 knots."), "SPD JTA61 230")
+  check_eq(ex("JTA610, not JTA61, descend FL190."), "ALT JTA610 FL190")
+  asked(ex("JTA 61, not 62, descend FL120."), "no JTA62 flying: the 'not' is asked")
+  -- a reason or a hedge that carries meaning stays asked
+  asked(ex("Is it ok to ask JTA61 for a hold at ALPHA? If it is not possible, then please climb it to FL170."),
+    "the alternative of a negated hedge")
+  -- a reason naming the place a direct-to skips on the route; a place off that stretch, or another instruction
+  -- after it, stays asked; a change said as a number word and "less"
+  check_eq(ex("Jai Ocean 610 does not need to fly over ALPHA, so I would like it to go directly to BRAVO."),
+    "DIRECT JTA610 BRAVO")
+  asked(ex("Jai Ocean 610 does not need to fly over BRAVO, so direct ALPHA please"), "BRAVO lies after ALPHA")
+  asked(ex("Jai Ocean 610 does not need to fly over ALPHA, so climb FL230"), "no direct-to skips ALPHA")
+  check_eq(ex("For JTA610, I think the speed is too fast; twenty knots less would be better."), "SPD JTA610 260")
+  -- the only aircraft said 'as well' is addressed; the route's owner set apart by commas
+  check_eq(ex("Could you switch on the vertical navigation for Nippon Cargo 88 as well?"), "VNAV NCA88 ON")
+  check_eq(ex("Could you kindly add, to the route of JTA61, the fix ALPHA and then BRAVO?"),
+    "ADDWPT JTA61 ALPHA ; ADDWPT JTA61 BRAVO")
+  check_eq(ex("Could you create a new aircraft similar to JTA61: callsign JTA63, Airbus A320, 26.1 north 127.4 east, "
+    .. "heading 180, flight level 150, 260 knots."), "CRE JTA63 A320 26.1 127.4 180 FL150 260")
+  -- sim and conflict words in full sentences
+  check_eq(ex("Please set the simulation back to the normal, real time speed."), "DTMULT 1")
+  check_eq(ex("Could you put the sim back to real time speed, please?"), "DTMULT 1")
+  check_eq(ex("Excuse me, would you make the simulation run as fast as possible for 15 minutes, so we can see it?"),
+    "FF 900")
+  check_eq(ex("We would like to skip the boring part; could you fast-forward the simulation by five minutes?"), "FF 300")
+  check_eq(ex("Please write a message on the screen, 'break until ten', for the participants."), "ECHO break until ten")
+  check_eq(ex("After a resolution, aircraft should go back to their routes once they are past the closest point, "
+    .. "please."), "RESNAV PASTCPA")
 end
