@@ -17442,6 +17442,7 @@ do
       .. "flight level two one zero, two nine zero knots"), "CRE QFA802 A321 WENDY 180 FL210 290")
     asked(ex("chuck a qantas in at wendy heading one eight zero flight level two one zero"), "no callsign or type")
   end
+end
 -- Cycle 58 (f183): a very polite, hedged Japanese-English framing. Hedges, apologies and asides around a request
 -- ask for nothing, numbers in them too; a value the speaker says they cannot give is asked; another aircraft ruled
 -- out by "not" is never instructed; a negation or reason with meaning stays asked
