@@ -4,9 +4,11 @@
 // Blocks of at most kMaxSmall bytes come from size classes kAlign bytes
 // apart: each class has a free list (last freed, first reused), refilled
 // from chunks of kChunkBytes taken from std::malloc. Chunks are owned by the
-// allocator and freed only with it, so the small-block memory it holds is
-// the peak of the small blocks live at once, rounded up to a chunk. Larger
-// blocks go to std::malloc / std::realloc / std::free as they are.
+// allocator and freed only with it, and a freed block stays in its class, so
+// the small-block memory it holds is at most the sum over the classes of
+// each class's peak of live blocks, rounded up to a chunk. The Vm's byte
+// budget counts the bytes Lua asks for, not this. Larger blocks go to
+// std::malloc / std::realloc / std::free as they are.
 // Every block is aligned to kAlign (as std::malloc's are).
 //
 // Contract (Lua's, lua_Alloc): a block is always resized and freed with the
