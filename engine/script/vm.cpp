@@ -336,7 +336,7 @@ void* vm_alloc(void* ud, void* ptr, size_t osize, size_t nsize) {
   Vm& vm = *static_cast<Vm*>(ud);
   const size_t old = ptr ? osize : 0;  // without ptr, osize names the object's type
   if (nsize == 0) {
-    std::free(ptr);
+    vm.blocks_.release(ptr, old);
     vm.heap_ -= old;
     return nullptr;
   }
@@ -348,7 +348,7 @@ void* vm_alloc(void* ud, void* ptr, size_t osize, size_t nsize) {
       return nullptr;
     }
   }
-  void* p = std::realloc(ptr, nsize);
+  void* p = vm.blocks_.resize(ptr, old, nsize);
   if (p) vm.heap_ = vm.heap_ - old + nsize;
   return p;
 }

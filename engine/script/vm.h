@@ -38,6 +38,7 @@
 #include "core/path_rules.h"
 #include "core/rng.h"
 #include "core/status.h"
+#include "script/block_allocator.h"
 
 struct lua_State;
 struct lua_Debug;
@@ -149,6 +150,7 @@ class Vm {
   size_t heap_ = 0;       // [bytes] Lua heap in use
   int in_binding_ = 0;    // binding bodies running
   bool memory_refused_ = false;  // an allocation failed at the limit
+  BlockAllocator blocks_;        // the Lua heap's blocks; outlives L_ (declared before it)
   friend void* vm_alloc(void* ud, void* ptr, size_t osize, size_t nsize);
   lua_State* L_ = nullptr;
   friend void count_hook(lua_State* L, ::lua_Debug* ar);

@@ -182,3 +182,18 @@ TEST_CASE("a link swapped in between the check and the open never leads out (io.
   swapper.join();
   CHECK_MESSAGE(st.is_ok(), st.message());
 }
+
+TEST_CASE("the Vm's memory limit holds over the pooled heap, and the Vm runs on after it") {
+  script::VmOptions o;
+  o.max_memory = 8LL << 20;
+  script::Vm vm(o);
+  // Many small tables and strings (the small classes) in one growing array (the system's blocks).
+  const Status st = vm.run_string(
+      "local keep = {} for i = 1, 1e7 do keep[#keep + 1] = {i, tostring(i)} end", "t.lua");
+  REQUIRE(!st.is_ok());
+  CHECK(st.message().find("Lua memory reached 8 MiB") != std::string::npos);
+  CHECK(vm.run_string("collectgarbage(); local t = {} for i = 1, 1000 do t[i] = {i} end "
+                      "assert(#t == 1000 and t[1000][1] == 1000)",
+                      "t.lua")
+            .is_ok());
+}
