@@ -1919,6 +1919,9 @@ local function written_forms(text, world)
   local sh = lexicon.shorthand
   -- "zone r 4 nm": ZONER's name typed apart, no right turn
   where("zone", "%f[%a]([Zz][Oo][Nn][Ee])%s+([Rr])%f[%A]", "%1 radius")
+  -- "circle ctr around 52.3 4.76 r 25nm": "r" between the centre's last number and another after a circle's word
+  -- is its radius, no right turn
+  where("ircle", "(%f[%a][Cc][Ii][Rr][Cc][Ll][Ee]%f[%A][^;]-%d)%s+[Rr]%s*(%d)", "%1 radius %2")
   text = turn_letters(text, sh)
   low = text:lower()
   -- "seed=7", "dt = 0.5", "reso=mvp": a setting typed key=value, read as "seed: 7" (only a key that names
@@ -8549,6 +8552,53 @@ local function known_word(w)
 end
 -- True when the word at i is one squawk knows (known_word): English of the lexicon's lists, no name.
 function G:known_word(i) return self.t[i] ~= nil and self.t[i].kind == "word" and known_word(self.t[i].text) end
+-- True when every aircraft the request refers to is said as a kind only ("acft", "all aircraft", "traffic"), no
+-- callsign or airline: "delete acft leaving box ..." names none to delete now.
+function G:kind_only_aircraft()
+  for _, r in ipairs(self:refs_in(1, #self.t + 1, "aircraft")) do
+    for k = r.b, r.e - 1 do
+      if not self:word(k, "acft aircraft traffic all any the planes flights") then return false end
+    end
+  end
+  return true
+end
+-- The point a request names before word i with its position ("the point EXP1, which is at 35 north 139.6 east",
+-- "point GATE2 at 52.1 4.3"): "point"/"waypoint"/"fix" and a new name (no aircraft that flies), then "at" (", which
+-- is" before it or not) and the position's first number; {name=, b=, e=, at=} (at: the first number's token) or nil.
+function G:point_said_before(i)
+  for k = i - 1, 1, -1 do
+    if self:word(k, "point waypoint fix") then
+      local r = self:refs_in(k + 1, k + 2, "waypoint")[1] or self:refs_in(k + 1, k + 2, "aircraft")[1]
+      if r and r.b == k + 1 and not r.exists then
+        local j = r.e
+        if self.t[j] and self.t[j].text == "," then j = j + 1 end
+        if self:word(j, "which that") and self:word(j + 1, "is") then j = j + 2 end
+        if self:word(j, "at") then
+          local q = self:quantities(j + 1, j + 2)[1]
+          if q and q.b == j + 1 and (q.kind == "lat" or q.kind == "plain") then
+            return { name = r.name:upper(), b = r.b, e = r.e, at = j + 1 }
+          end
+        end
+      end
+    end
+  end
+  return nil
+end
+-- True when the word at i names a new shape typed straight after its noun ("box tma 51.5 3.5 53 6", "circle ctr
+-- around 52.3 4.76"): letters (digits after), ten at most, no keyword or word squawk knows, a position's number or
+-- "at"/"around"/"from"/"centred" straight after it.
+function G:shape_name_at(i)
+  local t, n = self.t[i], self.t[i + 1]
+  if not (t and n and t.kind == "word" and t.raw:match("^%a[%a%d]*$") and #t.raw <= 10 and #t.raw >= 2) then
+    return false
+  end
+  if t.keyword or (self:known_word(i) and not self:word(i, "tma ctr cta atz fir uir")) -- (airspace abbreviations)
+      or #self:refs_in(i, i + 1, "aircraft") > 0 then
+    return false
+  end
+  local q = self:quantities(i + 1, i + 2)[1]
+  return (q ~= nil and q.b == i + 1) or self:word(i + 1, "at around from centred centered centre center")
+end
 
 -- True when the negation or condition at i is carried by the parse (`kinds`: G:issued): a condition
 -- when a conditional command was issued, a switch word when something was switched off, a place passed
@@ -13804,6 +13854,51 @@ function G.number_words_apart(text)
     return (w:gsub("%-[Oo][Hh]?%f[^%a]", " zero"):gsub("%-", " "))
   end))
 end
+-- "five three three zero north zero zero three four five west": a position said digit by digit as degrees and
+-- minutes, the latitude four digits (DDMM) before "north"/"south" and the longitude five (DDDMM) before "east"/
+-- "west", the two together (a comma or "and" between at most), minutes below 60, degrees in range: written as typed,
+-- "5330N 00345W" (read as degrees and minutes). Any other count of digits stays as said (asked).
+G.spoken_ddmm_digits = { zero = "0", one = "1", two = "2", three = "3", four = "4", five = "5", six = "6", seven = "7",
+  eight = "8", nine = "9", niner = "9", tree = "3", fife = "5", fower = "4" }
+function G.spoken_ddmm(text)
+  local low = text:lower()
+  if not ((low:find("north", 1, true) or low:find("south", 1, true))
+      and (low:find("east", 1, true) or low:find("west", 1, true))) then
+    return text
+  end
+  local D = G.spoken_ddmm_digits
+  local words = {}
+  for b, w, e in text:gmatch("()(%S+)()") do words[#words + 1] = { b = b, e = e, w = w:lower():gsub("[,;]$", "") } end
+  -- (the digits said from word k before a hemisphere word of `hs`: the digits and the word after the hemisphere)
+  local function run(k, n, hs)
+    local ds = ""
+    for j = k, k + n - 1 do
+      local d = words[j] and D[words[j].w]
+      if not d then return nil end
+      ds = ds .. d
+    end
+    local h = words[k + n]
+    if not (h and hs[h.w]) or (words[k - 1] and D[words[k - 1].w]) then return nil end
+    return ds, h.w, k + n + 1
+  end
+  local LAT, LON = { north = "N", south = "S" }, { east = "E", west = "W" }
+  for k = 1, #words do
+    local la, lh, nx = run(k, 4, LAT)
+    if la then
+      if words[nx] and words[nx].w == "and" then nx = nx + 1 end
+      local lo, oh, after = run(nx, 5, LON)
+      local lad, lam = tonumber(la:sub(1, 2)), tonumber(la:sub(3, 4))
+      local lod, lom = lo and tonumber(lo:sub(1, 3)), lo and tonumber(lo:sub(4, 5))
+      if lo and lam < 60 and lom < 60 and lad <= 90 and lod <= 180 then
+        local e = words[after - 1].e
+        -- (a comma closing the longitude's hemisphere stays)
+        local tail = text:sub(words[after - 1].b, e - 1):match("[,;]$") or ""
+        return text:sub(1, words[k].b - 1) .. la .. LAT[lh] .. " " .. lo .. LON[oh] .. tail .. G.spoken_ddmm(text:sub(e))
+      end
+    end
+  end
+  return text
+end
 -- A zero said "oh" or "o" inside a number ("heading three oh five", "JetBlue six o seven", "double oh seven"):
 -- after a digit word or a number word below a hundred (or "double"/"triple") and before a digit word, with no mark between,
 -- it is "zero" (the lexer would read "oh" as a hesitation and drop a lone "o" as a stray letter: "three oh
@@ -13916,7 +14011,7 @@ function M.translate(text, world)
   local quoted = M.quoted_clearance(text, world)
   if quoted then return quoted end
   if text:find("\xC3", 1, true) then text = text:gsub("[\xC3][\x80-\xBF]", lexicon.accents) end  -- (UTF-8 Latin-1 letters)
-  text = G.id_label(G.hold_after_ff(G.time_before_fast(numbered_steps(G.title_label(G.spoken_zeros(G.number_words_apart(text)))))), world)
+  text = G.id_label(G.hold_after_ff(G.time_before_fast(numbered_steps(G.title_label(G.spoken_ddmm(G.spoken_zeros(G.number_words_apart(text))))))), world)
   -- ("climb to 10 km", "descend to 7.5 km": a level in kilometres straight after the vertical verb, as metres)
   if text:find("km", 1, true) then
     for _, verb in ipairs({ "[Cc]limbs?%s+to", "[Cc]limbs?", "[Dd]escends?%s+to", "[Dd]escends?" }) do
@@ -13927,7 +14022,15 @@ function M.translate(text, world)
     end
   end
   -- ("at t=120 s", "at t = 2 min": the simulation's time with its unit, as "at time 120 s")
-  if text:find("=", 1, true) then text = text:gsub("(%f[%a][Aa]t%s+)[tT]%s*=%s*(%d+%s*[smhSMH])", "%1time %2") end
+  -- ("at t=600 pause the sim": a whole number with no unit is BlueSky's simulation time in seconds; one with a
+  -- decimal or a colon stays as typed)
+  if text:find("=", 1, true) then
+    text = text:gsub("(%f[%a][Aa]t%s+)[tT]%s*=%s*(%d+%s*[smhSMH])", "%1time %2")
+    local label = text:match("^%s*(%a+)%s*:")  -- (a note for the log stays as typed: "log: spike at t=300")
+    if not (label and lexicon.note_labels[label:lower()]) then
+      text = text:gsub("(%f[%a][Aa]t%s+)[tT]%s*=%s*(%d+)%f[^%w:%.]", "%1time %2 s")
+    end
+  end
   -- a researcher's symbol, a letter or two and a subscript before its value ("t_lookahead = 480 s", "R_pz = 9.26
   -- km"): the setting its letters name together, else its subscript (SETTING_KEYS); any other stays as typed
   if text:find("_", 1, true) then

@@ -1023,10 +1023,14 @@ return function(H, f, compass)
       -- moved to: "move Pasco 205 to TAVPI at five thousand", "move arik 104 to erami flight level 150")
       local to, here = self:find_word(s.trig + 1, s.e, "to"), self:state(id)
       local t, known = self.t[to + 1], self.world.place_known
-      local level_next = to + 2 < s.e and self:quantities(to + 2, s.e)[1]
-      level_next = level_next and level_next.b == to + 2 and level_next.kind == "alt"
+      local lv = self:word(to + 2, "at") and to + 3 or to + 2  -- (the level after "at" too: "to SPY at FL150")
+      local level_next = lv < s.e and self:quantities(lv, s.e)[1]
+      level_next = level_next and level_next.b == lv and level_next.kind == "alt"
+      -- ("move klm18t to spy fl150": a navaid's ident of three letters too, when no airport's IATA code)
       local ident = to + 1 < s.e and t.kind == "word" and (t.raw:match("^%u%u%u%u%u$")
-        or (t.raw:match("^%l%l%l%l%l$") and not self:known_word(to + 1)))
+        or (t.raw:match("^%l%l%l%l%l$") and not self:known_word(to + 1))
+        or (t.raw:lower():match("^%a%a%a$") and (t.raw:match("^%u%u%u$") or t.raw:match("^%l%l%l$"))
+          and not self:known_word(to + 1) and not self:iata_airport_at(to + 1) and level_next))
       if not named_at and to + 1 < s.e and t.kind == "word" and (t.raw:match("^%u%l+$") or ident) and not t.keyword
           and not self.u:used(to + 1) and known and here and here.lat
           and (to + 2 >= s.e or self.t[to + 2].kind == "punct" or self:word(to + 2, "at") or (ident and level_next)) then
@@ -2829,6 +2833,13 @@ return function(H, f, compass)
     if #w > 0 then return w[1].name end
     local a = self:refs_in(b, e, "aircraft")
     if #a > 0 and not a[1].exists then return a[1].name:upper() end
+    -- ("box tma 51.5 3.5 53 6", "circle ctr around 52.3 4.76 r 25nm": a new name straight after the shape's word)
+    for k = b, e - 2 do
+      if self:word(k, "box circle polygon poly line") and self:shape_name_at(k + 1) then
+        self:mark_used(k + 1, k + 2)
+        return self.t[k + 1].raw:upper()
+      end
+    end
     local k = self:find_word(b, e, "@named")
     if k + 1 < e and self.t[k + 1].kind == "word" then return self.t[k + 1].raw:upper() end
     return nil
@@ -3109,8 +3120,15 @@ return function(H, f, compass)
 
   -- "AREA OFF", "AREA lat lon lat lon", "AREA shape" (one just defined: "make it the deletion area")
   function m:area(s)
-    if self:on_off(s) == 0 or self:word_in(1, s.trig, "delete remove") then return self:emit("AREA OFF") end
+    -- (the aircraft leaving it deleted, "delete acft leaving box 51 3 53 6.5": the area set, its words read)
+    local leaving = self:word(s.trig, "leaving leave leaves exiting exit exits")
+    if self:on_off(s) == 0 or (self:word_in(1, s.trig, "delete remove") and not leaving) then return self:emit("AREA OFF") end
     local p = points(self, s.b, s.e)
+    if leaving and #p == 2 then
+      for k = 1, s.e - 1 do
+        if self:word(k, "delete del remove acft aircraft traffic all any that which the box area") then self:explain(k, k + 1) end
+      end
+    end
     if #p == 2 then
       return self:emit(string.format("AREA %s %s %s %s", f.num(p[1][1]), f.num(p[1][2]), f.num(p[2][1]), f.num(p[2][2])))
     end
@@ -3208,11 +3226,15 @@ return function(H, f, compass)
     if not name then
       -- ("make a fix delft at 52.01, 4.36": in lower case, a word no English squawk knows straight after the noun and
       -- straight before "at" and the position)
+      -- ("def wpt goalc 52.0 4.6", "define goalc at 51.8 4.0": straight after the noun or the verb "define",
+      -- before "at" or straight before the position's first number)
       for k = s.trig, s.e - 2 do
         local n = self.t[k + 1]
-        if self:word(k, "@waypoint_nouns") and n.kind == "word" and n.raw:match("^%a[%a%d]+$") and #n.raw <= 10
-            and not n.keyword and not self:known_word(k + 1) and self:word(k + 2, "at")
-            and #self:quantities(k + 3, k + 4) > 0 then
+        local pos = self:word(k + 2, "at") and k + 3 or k + 2
+        if (self:word(k, "@waypoint_nouns") or (k == s.trig and self:word(k, "define defwpt")))
+            and n.kind == "word" and n.raw:match("^%a[%a%d]+$") and #n.raw <= 10
+            and not n.keyword and not self:known_word(k + 1)
+            and #self:quantities(pos, pos + 1) > 0 and #self:quantities(pos, s.e) >= 2 then
           name = n.raw:upper()
           self:explain(k + 1, k + 2)
           break
@@ -3225,10 +3247,34 @@ return function(H, f, compass)
       if self:word(k, "@correction") and #self:quantities(k + 1, s.e) >= 2 then from = k + 1 end
     end
     local lat, lon = position(self:quantities(from, s.e), math.max(s.trig, from), self)
+    -- ("the point EXP1, which is at 35 north 139.6 east. Please make this point first": the point said before,
+    -- its name and position, when the slot names neither)
+    if not name and self:word(s.trig + 1, "this that") and self:word(s.trig + 2, "point waypoint fix") then
+      local p = self:point_said_before(s.trig)
+      local qs = p and self:quantities(p.at, p.at + 8) or {}
+      local la, lo = position(qs, p and p.at - 1 or s.trig, self)
+      if p and la and lo then
+        name, lat, lon = p.name, la, lo
+        self:mark_used(p.b, p.e)
+        for _, q in ipairs(qs) do
+          if q.kind == "lat" or q.kind == "lon" or q.kind == "plain" then self:mark_used(q.b, q.e) end
+        end
+        self:explain(s.trig + 1, s.trig + 3)
+      end
+    end
     if not name then return self:need("What should the waypoint be called, and where is it?") end
     if not lat or not lon then return self:need("Where is waypoint " .. name .. "? Please give a latitude and longitude.") end
     self:emit("DEFWPT " .. name .. " " .. f.num(lat) .. " " .. f.num(lon) .. kind)
     self.last_waypoint = name
+    -- ("JAL316, define waypoint XP9 at 35.1 139.7 and add it to the route": the one aircraft that flies named as the
+    -- request's addressee before the verb is the subject the instructions after it carry)
+    local named = {}
+    for _, r in ipairs(self.subject and {} or self:refs_in(1, s.trig, "aircraft")) do
+      if r.exists and not self:as_context(r.b) then named[r.name:upper()] = r.name end
+    end
+    local one, n = nil, 0
+    for _, id in pairs(named) do one, n = id, n + 1 end
+    if n == 1 then self.subject, self.subjects = one, { one } end
   end
 
   function m:delete_waypoint(s)
@@ -4462,6 +4508,8 @@ return function(H, f, compass)
     for k = 1, #self.t do
       local additive = self:additive_not(k) or self:additive_not(k - 1)
       off = off or (self:word(k, "@off no not never") and not additive)
+        -- ("close vertical resolution", "please close it": "open"'s opposite, as a switch is closed, is off)
+        or (self:word(k, "close shut") and self:word(k + 1, "it the vertical resolution resolutions reso rmethv"))
       only = only or (self:word(k, "only") and not additive)
     end
     -- ("turn off lateral resolution", "horizontal resolutions off", "only resolve vertically"): the

@@ -1126,10 +1126,31 @@ return function(H, f, wrap, compass)
     local tw = self:find_word(s.b, s.e, "towards toward direction")
     local face = self:find_word(s.b, s.e, "face")
     if tw == s.e and face < s.e and self:word(face - 1, "to") then tw = face end
+    -- ("tra203 hdg to goala", "heading to GOALA": a waypoint straight after "heading to", no number, is faced: a
+    -- waypoint of the scene or of the aircraft's route typed as it is named, in any case, or one in capitals)
+    local hw, faced = self:find_word(s.b, s.e, "hdg heading"), nil
+    if tw == s.e and hw + 2 < s.e + 1 and self:word(hw + 1, "to") then
+      local r, t = self:refs_in(hw + 2, hw + 3, "waypoint")[1], self.t[hw + 2]
+      if r and r.b == hw + 2 then
+        faced = r.name:upper()
+      elseif t.kind == "word" and t.alpha and not self.u:used(hw + 2) then
+        local a = self:state(ids[1])
+        for _, n in ipairs(self.world.waypoints or {}) do
+          if n:upper() == t.text:upper() then faced = n:upper() end
+        end
+        for _, n in ipairs(a and a.route or {}) do
+          if n:upper() == t.text:upper() then faced = n:upper() end
+        end
+        local at = self.world.user_waypoint_at
+        if not faced and at and at(t.text:upper()) then faced = t.text:upper() end
+      end
+      if faced then self:explain(hw + 1, hw + 3) end
+    end
     -- (toward_at: where the place said after "toward" starts. A question raised while looking it up, or none found
     -- by its words, is kept as the clause's question (self.place_ask): never set aside as a valueless
     -- instruction's and dropped beside the request's other commands, never the heading flown to a place asked about)
     local toward_at, ask0
+    if faced and not abs and not rel then toward = faced end
     if not abs and not rel and tw < s.e and (not self:word(tw, "direction") or self:word(tw + 1, "of")) then
       local at = self:word(tw, "direction") and tw + 2 or tw + 1
       toward_at, ask0 = at, self.ask

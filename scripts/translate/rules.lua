@@ -917,6 +917,23 @@ return function(intent, rule, words)
     return false
   end
   rule { "put place create make add", "defwpt", near = { 2, "@waypoint_nouns" }, when = new_fix_at }
+  -- ("create the point EXP1 at 35 north 139.6 east and add it to JAL316's route", "make a point GATE2 at 52.1 4.3,
+  -- then ..."): "point" and a new name straight after the verb, a position after "at", no aircraft type said (an
+  -- aircraft that flies may be named for the route the point then joins)
+  -- ("go to the point EXP1, which is at 35 north 139.6 east. Please make this point first": the point named before
+  -- with its position, G:point_said_before)
+  rule { "create make", "defwpt", next = "this that", when = function(g, i)
+    return g:word(i + 2, "point waypoint fix") and g:point_said_before(i) ~= nil
+  end }
+  rule { "create make", "defwpt", when = function(g, i)
+    local k = g:word(i + 1, "the a an") and i + 2 or i + 1
+    if not g:word(k, "point") or g:has_ref(1, #g.t + 1, "type") then return false end
+    local r = g:refs_in(k + 1, k + 2, "waypoint")[1] or g:refs_in(k + 1, k + 2, "aircraft")[1]
+    if not r or r.b ~= k + 1 or r.exists or not g:word(r.e, "at") then return false end
+    local q = g:quantities(r.e + 1, r.e + 2)[1]
+    return q ~= nil and (q.kind == "lat" or (q.kind == "plain" and (g:quantities(q.e, q.e + 1)[1] or {}).kind == "lon")
+      or (q.kind == "plain" and q.number.decimal))
+  end }
   rule { "waypoint wpt waypoints", "defwpt", not_prev = { 3, "put place create make add define" }, when = new_fix_at }
   -- "new fix IAFN1 at 48.50 N 16.20 E", "a reference point called CENTRE at 52.0N, 3.75E", "the target point
   -- for trial three, call it TGT3, 42.1 N 88.2 W", "place the new southern entry ENTRX at ...": a fix or point
@@ -1279,6 +1296,13 @@ return function(intent, rule, words)
     local it = g:find_word(i + 1, math.min(#g.t + 1, i + 6), "it")
     return defined and it <= #g.t and g:word(it - 1, "to through via over")
   end }
+  -- "define GOALC at 51.8 4.0 and add it to TRA203", "..., then append it to KLM12": the waypoint just defined
+  -- joins the route of the aircraft named straight after "to"
+  rule { "add append", "addwpt", next = "it", when = function(g, i)
+    local defined = false
+    for k = 1, i - 1 do defined = defined or g:intent_at(k) == "defwpt" end
+    return defined and g:word(i + 2, "to") and g:has_ref(i + 3, i + 4, "aircraft")
+  end }
   -- "create EZY33AB ... routing BAPAG then MAYLA", "..., route ELTOK, dest ENGM", "..., same route, RUVAS then
   -- OKAKI", "..., then give it TWEED at FL120", "..., add NAVAK": the waypoints of the aircraft created in the request
   rule { "routing route via give add append", "addwpt", when = function(g, i)
@@ -1449,6 +1473,15 @@ return function(intent, rule, words)
     return g:word(k, "trail trails")
   end }
   rule { "delete remove", false, near = { 3, "area" }, when = function(g) return not g:has_ref(1, #g.t + 1, "aircraft") end }
+  -- ("delete acft leaving box 51 3 53 6.5": the deletion area, rules below; no aircraft deleted now)
+  rule { "delete del remove", false, when = function(g, i)
+    local k = g:find_word(i + 1, math.min(#g.t + 1, i + 5), "leaving leave leaves exiting exit exits")
+    local n = 0
+    for _, q in ipairs(k <= #g.t and g:quantities(k + 1, #g.t + 1) or {}) do
+      if q.kind == "plain" or q.kind == "lat" or q.kind == "lon" then n = n + 1 end
+    end
+    return n >= 4 and g:kind_only_aircraft()
+  end }
   -- "clear the wind", "clear all winds": the wind field cleared (DEL WIND, m:remove), no aircraft deleted
   rule { "clear", "delete", when = function(g, i)
     local k = g:skip_fillers(i + 1)
@@ -1771,6 +1804,11 @@ return function(intent, rule, words)
     if t == nil or t.kind ~= "word" then return false end
     if placed and (t.raw:match("^%u%u%u$") or g:iata_airport_at(k)) then return true end
     if placed and named_airport_phrase(g, k) then return true end
+    -- ("route klm87r to eheh": an airport's ICAO code typed in lower case where a place is, no English word)
+    local class = g.world.airport_class
+    if placed and class and t.text:match("^%a%a%a%a$") and not g:known_word(k) and (class(t.text:upper()) or "") ~= "" then
+      return true
+    end
     local beside = g.world.airports_beside_navaids
     return named ~= nil and t.alpha and #t.text >= 4 and (#named(t.text) > 0 or CITY_AIRPORTS[t.text] ~= nil
       or (placed and (t.raw:match("^%u") ~= nil or not g:known_word(k)) and ((t.raw:match("^%u") ~= nil and #city(t.text) > 0)
@@ -1809,6 +1847,12 @@ return function(intent, rule, words)
     end
     return false
   end }
+  -- ("KLM87R route to EHEH", "klm12 reroute to ebbr": the aircraft straight before the verb)
+  rule { "route reroute", "dest", next = "to", when = function(g, i)
+    local r = g:refs_in(1, i, "aircraft")
+    r = r[#r]
+    return r ~= nil and r.e == i and sent_to_airport(g, i)
+  end }
   -- "create KL207 ... and send it to ARTIP": a waypoint (no airport) for the aircraft just created
   rule { "send", "addwpt", next = "it", when = function(g, i)
     local created = false
@@ -1820,6 +1864,18 @@ return function(intent, rule, words)
   -- gone to that is no airport (a fix, a navaid, a waypoint the simulation defined: no four-letter code) is flown
   -- to directly; with a second such place said after "then" or "after" (and "to") the places join the route in
   -- that order (ADDWPT each). An airport gone to stays a destination or is asked (below).
+  -- "add PIX into route and fly to there", "..., then go to it", "... and fly there": the waypoint the request
+  -- adds before, flown to directly ("there"/"it" closing the clause)
+  rule { "go fly head", "direct", when = function(g, i)
+    local k = g:word(i + 1, "to") and i + 2 or i + 1
+    if not g:word(k, "there it") then return false end
+    local nx = g.t[k + 1]
+    if nx and not (nx.kind == "punct" or g:word(k + 1, "and then please now directly direct")) then return false end
+    for j = 1, i - 1 do
+      if g:intent_at(j) == "addwpt" and g:has_ref(j + 1, i, "waypoint") then return true end
+    end
+    return false
+  end }
   rule { "go fly", "direct", next = "to", when = function(g, i)
     local e = not g:word(i - 1, "@purpose_modals") and g:place_gone_to(i + 2)
     if not e then return false end
@@ -2899,7 +2955,13 @@ return function(intent, rule, words)
     -- ("open the trails": the trails switched on, m:opened_setting)
     k = i + 1
     while g:word(k, "the all") do k = k + 1 end
-    return g:word(k, "trail trails")
+    if g:word(k, "trail trails") then return true end
+    -- ("the resolution also can use vertical direction? please open it", "open vertical resolution": the vertical
+    -- resolutions switched on, RMETHV, G:vertical_resolutions)
+    for j = 1, #g.t do
+      if g:word(j, "vertical") and g:vertical_resolutions(j) then return true end
+    end
+    return false
   end }
   rule { "scenario load open ic", "ic" }
   -- "print UAL9's flight plan", "print the waypoint list for BAW123": an aircraft's route listed
@@ -2959,7 +3021,10 @@ return function(intent, rule, words)
     if q and q.b == i + 1 and not q.number.typed then q = nil end
     local nx = q and q.kind == "plain" and g:quantities(q.e, q.e + 1)[1] or nil
     local pair = nx ~= nil and nx.kind == "plain" and q.number.typed and nx.number.typed
-      and (q.number.digits or ""):find("%.") ~= nil and math.abs(q.value) <= 90 and math.abs(nx.value) <= 180
+      and math.abs(q.value) <= 90 and math.abs(nx.value) <= 180
+      -- ("wind 52 4.5 from 270 at 40kt": a decimal in either number, or "from" straight after the two)
+      and ((q.number.digits or ""):find("%.") ~= nil or (nx.number.digits or ""):find("%.") ~= nil
+        or g:word(nx.e, "from"))
     local told = g:find_word(i + 3, #g.t + 1, "from") <= #g.t
     local after = q and not told and g:quantities(q.e, #g.t + 1) or {}
     for k, v in ipairs(after) do
@@ -3300,6 +3365,11 @@ return function(intent, rule, words)
     return n
   end
   rule { "area", "area", prev = { 2, "deletion delete experiment" } }
+  -- "delete acft leaving box 51 3 53 6.5", "remove aircraft that leave the area 51 3 53 6": the deletion area, its
+  -- two corners after the aircraft's leaving (no aircraft deleted now)
+  rule { "leaving leave leaves exiting exit exits", "area", prev = { 4, "delete del remove" }, when = function(g, i)
+    return corners_after(g, i) == 2 and g:kind_only_aircraft()
+  end }
   -- "restrict sim area to box 45 6 48 13", "limit the simulation area to 45 6 48 13": the area traffic is
   -- kept in (aircraft leaving it are deleted), two corners after it ("box" is its form, no shape named)
   rule { "area", "area", prev = { 2, "@sim" }, when = function(g, i) return corners_after(g, i) == 2 end }
@@ -3326,6 +3396,9 @@ return function(intent, rule, words)
     local k = g.t[i + 1] and g.t[i + 1].text == ":" and i + 2 or i + 1
     return corners_after(g, i) == 2 and (g:has_ref(k, k + 1, "waypoint") or g:has_ref(k, k + 1, "aircraft"))
   end }
+  -- ("define box tma 51.5 3.5 53 6": a new name in lower case straight after the word, the corners after it)
+  rule { "box", "box", when = function(g, i) return corners_after(g, i) == 2 and g:shape_name_at(i + 1) end }
+  rule { "circle", "circle", when = function(g, i) return corners_after(g, i) == 1 and g:shape_name_at(i + 1) end }
   rule { "line", "line", when = function(g, i)
     return corners_after(g, i) == 2 and (g:followed_by(i, 3, "@named") or g:has_ref(i + 1, i + 3, "waypoint")
       or g:has_ref(i + 1, i + 3, "aircraft"))

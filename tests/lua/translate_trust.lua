@@ -9329,13 +9329,16 @@ do
 end
 
 -- Cycle 46 (s100): "at t=N s" / "at time N s" opening or closing an instruction is the simulation's time
--- (SCHEDULE); a bare number after "t=" with no unit stays asked
+-- (SCHEDULE); a bare whole number after "t=" is seconds (below)
 do
   local _, ex = scene({ "CRE AC001 B744 52.0 4.0 090 FL300 300" })
   check_eq(ex("at t=90 s, AC001 turn left heading 200"), "SCHEDULE 00:01:30 HDG AC001 200 LEFT")
   check_eq(ex("at t = 3 min AC001 descend FL250"), "SCHEDULE 00:03:00 ALT AC001 FL250")
   check_eq(ex("AC001 turn left heading 200 at time 240 s"), "SCHEDULE 00:04:00 HDG AC001 200 LEFT")
-  asked(ex("at t=90 AC001 descend FL250"), "a time with no unit")
+  -- (cycle 58, f18x: a whole number with no unit after "t=" is the simulation's time in seconds, as SCHEDULE reads
+  -- a bare number; one with a decimal or a colon stays asked)
+  check_eq(ex("at t=90 AC001 descend FL250"), "SCHEDULE 00:01:30 ALT AC001 FL250")
+  asked(ex("at t=1:30 AC001 descend FL250"), "a clock time after t=")
 end
 
 -- Cycle 46 (s100): a level in kilometres straight after "climb (to)" or "descend (to)" is that many metres; a
@@ -17493,4 +17496,81 @@ do
   check_eq(ex("Please write a message on the screen, 'break until ten', for the participants."), "ECHO break until ten")
   check_eq(ex("After a resolution, aircraft should go back to their routes once they are past the closest point, "
     .. "please."), "RESNAV PASTCPA")
+end
+-- Cycle 58 (f18x): set-up and route shorthand. A waypoint, box or circle named in lower case straight after its
+-- word; a point named before with its position, then made and added; the addressee's route; sim time "t=600";
+-- a wind at a typed position; the deletion area of aircraft leaving a box; a heading to a waypoint; a position said
+-- digit by digit as degrees and minutes; "open"/"close" of the vertical resolution
+do
+  local _, ex = scene({ "CRE AFR33 A320 48.1 2.3 045 FL260 270", "CRE BAW9 A320 48.4 2.0 200 FL240 280",
+    "DEFWPT ORLY1 48.6 2.6", "ADDWPT BAW9 ORLY1" })
+  check_eq(ex("def wpt gate7 48.2 2.9"), "DEFWPT GATE7 48.2 2.9")
+  check_eq(ex("please define zulu9 at 48.9 2.1"), "DEFWPT ZULU9 48.9 2.1")
+  check_eq(ex("def wp exit4 at 47.9 2.2, then append it to AFR33"), "DEFWPT EXIT4 47.9 2.2 ; ADDWPT AFR33 EXIT4")
+  check_eq(ex("define abc2 at 48.8 2.4 and add it to baw9"), "DEFWPT ABC2 48.8 2.4 ; ADDWPT BAW9 ABC2")
+  asked(ex("define climb 48 2"), "an English word is no name")
+  asked(ex("define gate8 at 48.2"), "one number is no position")
+  asked(ex("define abc2 at 48.8 2.4 then add it to afr33 and baw9"), "'it' with two aircraft")
+  check_eq(ex("create the point TGT4 at 48.3 north 2.7 east and add it to the route of AFR33"),
+    "DEFWPT TGT4 48.3 2.7 ; ADDWPT AFR33 TGT4")
+  check_eq(ex("Air France 33, we want it over the point TGT5, which is at 48.5 north 2.8 east. Could you create this "
+    .. "point first, then add it to the route?"), "DEFWPT TGT5 48.5 2.8 ; ADDWPT AFR33 TGT5")
+  check_eq(ex("AFR33 go to point XP2 at 48.1 2.9, make that point and add it to its route"),
+    "DEFWPT XP2 48.1 2.9 ; ADDWPT AFR33 XP2")
+  check_eq(ex("AFR33, define waypoint XP3 at 48.2 2.8 and add it to the route"), "DEFWPT XP3 48.2 2.8 ; ADDWPT AFR33 XP3")
+  asked(ex("AFR33 and BAW9, define waypoint XP4 at 48.2 2.8 and add it to the route"), "two addressees")
+  asked(ex("create point BAW9 at 48.2 2.8"), "a flying aircraft's callsign is no new point")
+  -- shapes named in lower case after their word; "r" before a circle's radius
+  check_eq(ex("define box cta 47.5 1.5 49 3"), "BOX CTA 47.5 1.5 49 3")
+  check_eq(ex("draw box par2 from 48 2 to 49 3"), "BOX PAR2 48 2 49 3")
+  check_eq(ex("circle tma around 48.7 2.4 r 30nm"), "CIRCLE TMA 48.7 2.4 30")
+  check_eq(ex("circle zone5 at 48 2.5 r 12"), "CIRCLE ZONE5 48 2.5 12")
+  -- ("zone" is the protected zone's word: asked, never ZONER 48 and a right turn of AFR33)
+  asked(ex("circle zone at 48 2.5 r 12"), "'zone' as a circle's name")
+  asked(ex("define box 47.5 1.5 49 3"), "a box with no name")
+  -- the simulation's time "t=", seconds when no unit is typed
+  check_eq(ex("at t=900 pause the sim"), "SCHEDULE 00:15:00 HOLD")
+  check_eq(ex("freeze the simulation at t = 1200"), "SCHEDULE 00:20:00 HOLD")
+  check_eq(ex("at t=300 afr33 climb fl300"), "SCHEDULE 00:05:00 ALT AFR33 FL300")
+  asked(ex("at t=10:00 pause"), "a clock time typed after t= stays asked")
+  -- a wind at a position typed as two numbers, "from" after them
+  check_eq(ex("wind 48 2.5 from 250 at 30kt"), "WIND 48 2.5 250 30")
+  check_eq(ex("wind 49 3 from 090 at 15 knots"), "WIND 49 3 90 15")
+  -- the deletion area: aircraft leaving a box; a callsign named or one corner stays asked
+  check_eq(ex("delete acft leaving box 47 1 50 4"), "AREA 47 1 50 4")
+  check_eq(ex("delete all aircraft leaving the area 47 1 50 4.5"), "AREA 47 1 50 4.5")
+  asked(ex("delete afr33 leaving box 47 1 50 4"), "an aircraft named")
+  asked(ex("delete acft leaving box 47 1"), "one corner")
+  -- a heading to a waypoint of the scene or of the route, said in any case: HDG's name
+  check_eq(ex("afr33 hdg to orly1"), "HDG AFR33 ORLY1")
+  check_eq(ex("AFR33 turn right heading to orly1"), "HDG AFR33 ORLY1 RIGHT")
+  check_eq(ex("afr33 heading to two seven zero"), "HDG AFR33 270")
+  asked(ex("afr33 hdg to orly2"), "no waypoint of that name")
+  -- a position said digit by digit: four digits north, five west
+  check_eq(ex("put a new point in, call it GATE9, four eight three zero north zero zero two one five east"),
+    "DEFWPT GATE9 48.5 2.25")
+  check_eq(ex("define waypoint GATE8 at four eight four five north, and zero zero two three zero east"),
+    "DEFWPT GATE8 48.75 2.5")
+  asked(ex("define waypoint GATE7 at four eight seven zero north zero zero two one five east"), "70 minutes")
+  asked(ex("define waypoint GATE6 at four eight three north zero zero two one five east"), "three digits")
+  -- a waypoint the request adds, flown to "there" / "to it"
+  check_eq(ex("AFR33 please add ORLY1 into route and fly to there"), "ADDWPT AFR33 ORLY1 ; DIRECT AFR33 ORLY1")
+  check_eq(ex("AFR33 add ORLY1 to the route and head to it"), "ADDWPT AFR33 ORLY1 ; DIRECT AFR33 ORLY1")
+  asked(ex("AFR33 fly to there"), "'there' with nothing added")
+  -- the vertical resolution opened or closed
+  check_eq(ex("the resolution can also go vertical? please open it"), "RMETHV V/S")
+  check_eq(ex("open vertical resolution"), "RMETHV V/S")
+  check_eq(ex("close the vertical resolution"), "RMETHV OFF")
+  check_eq(ex("use vertical resolution, the aircraft are close"), "RMETHV V/S")
+  local nav, nex = navscene({ "CRE KLM44 E175 51.2 5.8 300 FL140 270", "CRE TRA5 E190 52.8 5.0 010 FL150 270" },
+    "f18x places")
+  if nav then
+    check_eq(nex("klm44 route to ebbr"), "DEST KLM44 EBBR")
+    check_eq(nex("KLM44 reroute to eheh"), "DEST KLM44 EHEH")
+    check_eq(nex("route klm44 to eham"), "DEST KLM44 EHAM")
+    check_eq(nex("move tra5 to spy fl120"), "MOVE TRA5 SPY FL120")
+    check_eq(nex("move tra5 to spy at 9000 ft"), "MOVE TRA5 SPY 9000")
+    asked(nex("move tra5 to spy"), "a three-letter ident with no level")
+    asked(nex("move tra5 to ams fl150"), "an airport's IATA code")
+  end
 end
