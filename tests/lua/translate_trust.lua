@@ -17450,7 +17450,8 @@ end
 -- ask for nothing, numbers in them too; a value the speaker says they cannot give is asked; another aircraft ruled
 -- out by "not" is never instructed; a negation or reason with meaning stays asked
 do
-  local _, ex = scene({ "CRE JTA610 B738 26.3 127.8 045 FL210 280", "ADDWPT JTA610 ALPHA", "ADDWPT JTA610 BRAVO",
+  local _, ex = scene({ "DEFWPT ALPHA 26.6 128.1", "DEFWPT BRAVO 26.9 128.4",
+    "CRE JTA610 B738 26.3 127.8 045 FL210 280", "ADDWPT JTA610 ALPHA", "ADDWPT JTA610 BRAVO",
     "CRE NCA88 B748 26.0 127.5 090 9000 250", "CRE JTA61 A320 26.5 127.2 180 FL150 260" })
   check_eq(ex("Is it ok to climb Jai Ocean 610 to flight level 230? If there is no problem, please."), "ALT JTA610 FL230")
   check_eq(ex("Jai Ocean 61, descend to FL120, if this is possible."), "ALT JTA61 FL120")
