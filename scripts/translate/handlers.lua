@@ -347,7 +347,12 @@ function m:acids(s)
         -- when the instruction before named its own aircraft: asked)
         local k = self:word(r.b - 1, "the") and r.b - 2 or r.b - 1
         if (#ids > 0 and (self:word(k, "as while whilst with") or self:word(k, "for") and self:word(k - 1, "as")))
-            or (self.subject and r.b > s.trig and self:word(k, "as while whilst")) then
+            or (self.subject and r.b > s.trig and self:word(k, "as while whilst"))
+            -- ("KLM12 FL300 before BAW5 arrives", "... until BAW5 passes": after a word opening a clause of time,
+            -- reason or condition, with the instruction's aircraft named before it)
+            or ((#ids > 0 or self.subject or self:has_ref(s.b, s.trig, "aircraft")) and r.b > s.trig
+              and (self:word(k, "before after until till once when whenever unless because since")
+                or self:word(k, "case") and self:word(k - 1, "in"))) then
           self:need(string.format("Is %s to get this instruction too, or is it named for another reason? "
             .. "Please give each aircraft its own instruction.", r.name:upper()))
         end
@@ -3202,6 +3207,10 @@ function m:false_starts()
         and self:verb_said_again(r.e, nxt) then
       r.false_start = true
     end
+    if r.kind == "aircraft" and nxt and nxt.kind == "aircraft" and not r.false_start
+        and self:instruction_said_again(r, nxt) then
+      r.false_start = true
+    end
     if r.kind == "aircraft" and not r.false_start and self:aircraft_named_after(r) then
       r.false_start = true
     end
@@ -3268,6 +3277,24 @@ function m:callsign_taken_back(b, e)
     end
   end
   return marked
+end
+
+-- True when aircraft reference r is followed by an instruction, then a run that takes a callsign back
+-- (m:callsign_taken_back: "sorry", "I mean", "correction", "no") and aircraft reference nxt, then the same
+-- instruction's first word ("KLM12 heading 200, sorry, TRA34 heading 200", "klm12 hdg, i mean tra34 hdg 200"):
+-- the callsign was corrected, the instruction is said for nxt alone.
+function m:instruction_said_again(r, nxt)
+  local w = self:skip_fillers(r.e, false)
+  if w >= nxt.b or not self.t[w] or self.t[w].kind ~= "word" then return false end
+  local again = self:skip_fillers(nxt.e, false)
+  -- (a typed abbreviation is its word: "hdg" with no value after it stays as typed)
+  local full = { hdg = "heading", spd = "speed", alt = "altitude", lvl = "level" }
+  local function word(i) return full[self.t[i].text] or self.t[i].text end
+  if not self.t[again] or word(again) ~= word(w) then return false end
+  for p = w + 1, nxt.b - 1 do
+    if self:callsign_taken_back(p, nxt.b) then return true end
+  end
+  return false
 end
 
 -- True when the words from b (after an aircraft) are an instruction's verb, a run taken back (m:callsign_taken_back)
