@@ -329,6 +329,16 @@ function m:readdressed(b, trig)
   return nil
 end
 
+-- True when an aircraft other than reference r's is named from b up to r, or is the subject of the instruction
+-- before ("KLM12 FL300 before BAW5 arrives"; never "when DAL877 is 20 miles from CANUK start him down").
+function m:other_aircraft_before(b, r)
+  if self.subject and self.subject:upper() ~= r.name:upper() then return true end
+  for _, o in ipairs(self:refs_in(b, r.b, "aircraft")) do
+    if o.exists and not o.false_start and o.name:upper() ~= r.name:upper() then return true end
+  end
+  return false
+end
+
 -- Aircraft a segment talks about: those after its trigger, else before it,
 -- else the utterance's subject (all the aircraft named together for the
 -- instruction before), else one named later, else the only aircraft.
@@ -350,7 +360,7 @@ function m:acids(s)
             or (self.subject and r.b > s.trig and self:word(k, "as while whilst"))
             -- ("KLM12 FL300 before BAW5 arrives", "... until BAW5 passes": after a word opening a clause of time,
             -- reason or condition, with the instruction's aircraft named before it)
-            or ((#ids > 0 or self.subject or self:has_ref(s.b, s.trig, "aircraft")) and r.b > s.trig
+            or ((#ids > 0 or self:other_aircraft_before(s.b, r)) and r.b > s.trig
               and (self:word(k, "before after until till once when whenever unless because since")
                 or self:word(k, "case") and self:word(k - 1, "in"))) then
           self:need(string.format("Is %s to get this instruction too, or is it named for another reason? "
