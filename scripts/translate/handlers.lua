@@ -3278,7 +3278,10 @@ function m:callsign_taken_back(b, e)
   for i = b, e - 1 do
     local t = self.t[i]
     if t.kind ~= "punct" and not t.filler then
-      if self:word(i, "@correction") or SC_MARKER[t.text]
+      -- ("KLM12 or rather BAW5 climb FL300": "or rather" takes the callsign back as "I mean" does)
+      local rather = (t.text == "or" and self:word(i + 1, "rather") and i + 1 < e)
+        or (t.text == "rather" and self:word(i - 1, "or") and i > b)
+      if self:word(i, "@correction") or SC_MARKER[t.text] or rather
           or (self.t[i + 1] and i + 1 < e and SC_MARKER[t.text .. " " .. self.t[i + 1].text]) then
         marked = true
       elseif not SELF_CORRECTION[t.text] then

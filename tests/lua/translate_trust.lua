@@ -17547,3 +17547,10 @@ do
   check_eq(ex("afr77 hdg 270"), "HDG AFR77 270")
   check_eq(ex("echo break in five"), "ECHO break in five")
 end
+-- (fhz4) "or rather" between two callsigns takes the first back
+do
+  local _, ex = scene({ "CRE AFR77 A320 52.0 4.0 090 FL250 280", "CRE SWR81 A321 52.1 4.1 000 FL280 270" })
+  check_eq(ex("AFR77 or rather SWR81 descend FL200"), "ALT SWR81 FL200")
+  check_eq(ex("AFR77 speed 240, or rather SWR81 speed 240"), "SPD SWR81 240")
+  asked(ex("AFR77 or SWR81 descend FL200"), "two aircraft as alternatives")
+end
