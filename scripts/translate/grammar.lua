@@ -11575,7 +11575,9 @@ function G:opinion_question(lower)
       for _, q in ipairs(G.polite_after_opinion) do
         if rest:sub(1, #q + 1):match("^" .. q:gsub(" ", "%%s+") .. "%f[%A]") then polite = true end
       end
-      if not polite then said = lower:sub(b, e) end
+      -- ("Let's switch the detection on, shall we?": a tag closing a suggestion asks nothing)
+      local tag = p:match("^sh") and not rest:find("%a")
+      if not polite and not tag then said = lower:sub(b, e) end
     end
   end
   if not said then

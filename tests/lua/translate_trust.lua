@@ -17522,6 +17522,7 @@ do
   check_eq(ex("could EZY4Q turn left heading 130 please"), "HDG EZY4Q 130 LEFT")
   check_eq(ex("do you think you could climb AFR77 to FL300?"), "ALT AFR77 FL300")
   check_eq(ex("Can AFR77 make a left turn to heading 360?"), "HDG AFR77 360 LEFT")
+  check_eq(ex("Let's descend SWR81 to FL200, shall we?"), "ALT SWR81 FL200")
   -- a condition on the traffic: asked, named; a remark of the speaker's own is none
   local c = ex("SWR81 descend FL240, if there is no traffic")
   asked(c, "a condition after a comma")
