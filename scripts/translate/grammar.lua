@@ -2674,6 +2674,16 @@ function G:declared(b, e)
   local x = b
   while x < e and self:word(x, COMMENTARY.decl.openers) do x = x + 1 end
   if x >= e or self:has_ref(b, e, "aircraft") then return false end
+  -- ("..., if there is no conflict", "if the traffic is clear, ...": "if", "unless" or "provided" before a subject
+  -- other than the speaker or listener, with a word of the traffic (G.traffic_condition_words) in its clause, opens a
+  -- condition on the traffic, no remark; "if I remember correctly", "if the weather allows", "sorry if that is too
+  -- low for it" are none)
+  local cond = self:word(x, "provided providing unless") and x + 1 < e and x + 1
+    or self:word_in(b, x, "if") and not self:word(b - 1, "sorry") and x
+  if cond and not self:word(cond, "i we you i'm we're you're i've we've")
+      and self:word_in(cond, e, G.traffic_condition_words) then
+    return false
+  end
   if self:word(x, COMMENTARY.decl.frames) and self:word(x + 1, COMMENTARY.decl.possessives) then
     -- ("In my thesis we use a smaller one": the frame, then its own subject)
     x = self:find_word(x + 2, e, COMMENTARY.decl.subjects)
@@ -11570,6 +11580,96 @@ function G:setting_question()
   end
 end
 
+-- "trails on, 8 acft", "hold, 5 aircraft": a count of aircraft (G:aircraft_count) set off alone in its clause, with
+-- nothing but punctuation, fillers and courtesy around it, that no command took: what it is for is asked
+function G:count_alone()
+  for _, q in ipairs(self:quantities(1, #self.t + 1)) do
+    if self:aircraft_count(q) and self:word(q.e, "@counted_aircraft") and not self.taken[q.b] then
+      local function plain(x) return self.t[x].kind == "punct" or self.t[x].filler or self:word(x, "please thanks") end
+      local b, e = q.b - 1, q.e + 1
+      while b > 0 and self.t[b].kind ~= "punct" and plain(b) do b = b - 1 end
+      while e <= #self.t and self.t[e].kind ~= "punct" and plain(e) do e = e + 1 end
+      if (b == 0 or self.t[b].kind == "punct") and (e > #self.t or self.t[e].kind == "punct") and b > 0 then
+        return self:need(string.format("I have %s. What does '%s' mean?", table.concat(self.out, " ; "),
+          self:raw(q.b, q.e + 1)))
+      end
+    end
+  end
+end
+
+-- the words of a condition on the traffic (G:declared)
+G.traffic_condition_words = "traffic conflict conflicts conflicting separation separated spacing clear free close "
+  .. "closer intruder alert alerts collision proximity crossing converging"
+-- the words opening a condition on the traffic that no command waits for, asked with the clause they open
+G.condition_openers = { ["if"] = true, unless = true, provided = true, providing = true }
+-- A request put as a question of the listener's opinion ("do you think KLM12 can climb to FL300?", "maybe KLM12
+-- should climb FL300, what do you think?", "should KLM12 climb to FL300?", "shall I clear KLM12 to FL300?", "is it a
+-- good idea to ...") or of an aircraft's ability ("can KLM12 reach FL400?", "is KLM12 able to climb FL400?",
+-- "would the KLM be able to make FL400?") clears nothing: the draft is asked about. A polite request ("can you
+-- climb KLM12 ...", "could KLM12 climb to FL300 please", "do you think you could ...") is not of this class.
+-- lower: the request in lower case.
+G.opinion_phrases = { "do you think", "what do you think", "what would you think", "what do you reckon",
+  "do you reckon", "your opinion", "your view", "would you say", "do you agree", "would you agree", "is it a good idea",
+  "would it be a good idea", "is that a good idea", "good idea or not", "is it wise", "would it be wise",
+  "would it make sense", "does it make sense", "would that make sense", "does that make sense", "what if",
+  "should i", "should we", "shall i", "shall we", "would you recommend", "do you recommend", "would you advise",
+  "do you advise", "would you suggest", "do you suggest", "any objection", "any objections" }
+G.polite_after_opinion = { "you could", "you can", "you might", "you would", "you'd", "you will", "you could please" }
+function G:opinion_question(lower)
+  local said
+  for _, p in ipairs(G.opinion_phrases) do
+    local b, e = lower:find("%f[%a]" .. p:gsub(" ", "%%s+") .. "%f[%A]")
+    if b and not said then
+      local rest = lower:sub(e + 1):gsub("^[%s,]+", "")
+      local polite = false
+      for _, q in ipairs(G.polite_after_opinion) do
+        if rest:sub(1, #q + 1):match("^" .. q:gsub(" ", "%%s+") .. "%f[%A]") then polite = true end
+      end
+      -- ("Let's switch the detection on, shall we?": a tag closing a suggestion asks nothing)
+      local tag = p:match("^sh") and not rest:find("%a")
+      if not polite and not tag then said = lower:sub(b, e) end
+    end
+  end
+  if not said then
+    -- ("should KLM12 climb to FL300?": "should" or "shall" opening a question; "should it be needed, ..." opens a
+    -- condition, set off by a comma)
+    local first = self.t[self:request_start()]
+    if first and (first.text == "should" or first.text == "shall") and lower:find("?", 1, true)
+        and not lower:find(",", 1, true) then
+      said = first.text
+    end
+  end
+  if not said then
+    -- (the aircraft's ability: an aircraft named, then "able to", "reach" or "make" after a modal or "is" opening
+    -- the request; "would you be able to" asks the listener, a polite request)
+    local first = self:request_start()
+    if self:word(first, "can could will would is are") then
+      for _, r in ipairs(self.refs) do
+        if r.kind == "aircraft" and r.b == first + 1 then
+          local k = r.e
+          if self:word(k, "be") then k = k + 1 end
+          if self:word(k, "able") and self:word(k + 1, "to") then said = "able to"
+          elseif self:word(first, "can could will would") and (self:word(k, "reach manage")
+              or self:word(k, "make") and not self:word(k + 1, "a an the")
+                and ((self:quantities(k + 1, k + 5)[1] or {}).b or k + 9) <= k + 2) then
+            said = self.t[k].text
+          end
+        end
+      end
+    end
+  end
+  if said then
+    -- (a draft that only shows an aircraft, "is KLM12 able to ...": POS, is no instruction to offer)
+    local draft = table.concat(self.out, " ; ")
+    if draft:find("^POS ") then
+      return self:need(string.format("'%s' asks my opinion or the aircraft's ability, no instruction. What should "
+        .. "I give? Please say it as an instruction.", said))
+    end
+    return self:need(string.format("'%s' asks my opinion or the aircraft's ability, no instruction. Should I give %s? "
+      .. "Please say it as an instruction.", said, draft))
+  end
+end
+
 -- "Alaska 1294 and United 1562, descend and maintain 10000 and 9000 respectively": with "respectively",
 -- the values said after the aircraft go to them in the order both were said, one value each, when the
 -- request issued one ALT, SPD or HDG per aircraft; any other shape is asked about (never one value for all).
@@ -14398,6 +14498,8 @@ function M.translate(text, world)
   if not g.ask then g:list_value() end
   if not g.ask then g:setting_twice() end
   if not g.ask then g:setting_question() end
+  if not g.ask and #g.out > 0 then g:opinion_question(lower) end
+  if not g.ask and #g.out > 0 then g:count_alone() end
   if not g.ask then g:short_level() end
   if not g.ask then g:implausible_values() end
   if not g.ask and #g.out > 0 then g:value_rejected() end
@@ -14421,6 +14523,19 @@ function M.translate(text, world)
   if not g.ask and not g.leftover and lower:find("or", 1, true) then g:alternatives() end
   if not g.ask then g:values_misread() end
   if not g.ask and g.leftover then g:heard_route_place() end
+  if not g.ask and g.leftover and #g.out > 0 and G.condition_openers[g.leftover:lower()] then
+    -- ("..., if there is no conflict", "unless there is traffic": a condition on the traffic no command waits for)
+    local b = lower:find("%f[%a]" .. g.leftover:lower() .. "%f[%A]")
+    local clause = b and lower:sub(b):match("^[^,;.!?]+"):gsub("%s+$", "")
+    local traffic = false
+    for w in (clause or ""):gmatch("%a+") do
+      traffic = traffic or (" " .. G.traffic_condition_words .. " "):find(" " .. w .. " ", 1, true) ~= nil
+    end
+    if clause and traffic then
+      g.ask = string.format("I have %s, but squawk cannot wait for '%s'. Should I give it now, or not at all?",
+        table.concat(g.out, " ; "), clause)
+    end
+  end
   if not g.ask and g.leftover then
     g.ask = #g.out == 0 and string.format("I have no instruction. What does '%s' mean?", g.leftover)
       or string.format("I have %s. What does '%s' mean?", table.concat(g.out, " ; "), g.leftover)

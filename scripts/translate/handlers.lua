@@ -329,6 +329,16 @@ function m:readdressed(b, trig)
   return nil
 end
 
+-- True when an aircraft other than reference r's is named from b up to r, or is the subject of the instruction
+-- before ("KLM12 FL300 before BAW5 arrives"; never "when DAL877 is 20 miles from CANUK start him down").
+function m:other_aircraft_before(b, r)
+  if self.subject and self.subject:upper() ~= r.name:upper() then return true end
+  for _, o in ipairs(self:refs_in(b, r.b, "aircraft")) do
+    if o.exists and not o.false_start and o.name:upper() ~= r.name:upper() then return true end
+  end
+  return false
+end
+
 -- Aircraft a segment talks about: those after its trigger, else before it,
 -- else the utterance's subject (all the aircraft named together for the
 -- instruction before), else one named later, else the only aircraft.
@@ -347,7 +357,12 @@ function m:acids(s)
         -- when the instruction before named its own aircraft: asked)
         local k = self:word(r.b - 1, "the") and r.b - 2 or r.b - 1
         if (#ids > 0 and (self:word(k, "as while whilst with") or self:word(k, "for") and self:word(k - 1, "as")))
-            or (self.subject and r.b > s.trig and self:word(k, "as while whilst")) then
+            or (self.subject and r.b > s.trig and self:word(k, "as while whilst"))
+            -- ("KLM12 FL300 before BAW5 arrives", "... until BAW5 passes": after a word opening a clause of time,
+            -- reason or condition, with the instruction's aircraft named before it)
+            or ((#ids > 0 or self:other_aircraft_before(s.b, r)) and r.b > s.trig
+              and (self:word(k, "before after until till once when whenever unless because since")
+                or self:word(k, "case") and self:word(k - 1, "in"))) then
           self:need(string.format("Is %s to get this instruction too, or is it named for another reason? "
             .. "Please give each aircraft its own instruction.", r.name:upper()))
         end
@@ -3202,6 +3217,10 @@ function m:false_starts()
         and self:verb_said_again(r.e, nxt) then
       r.false_start = true
     end
+    if r.kind == "aircraft" and nxt and nxt.kind == "aircraft" and not r.false_start
+        and self:instruction_said_again(r, nxt) then
+      r.false_start = true
+    end
     if r.kind == "aircraft" and not r.false_start and self:aircraft_named_after(r) then
       r.false_start = true
     end
@@ -3259,7 +3278,10 @@ function m:callsign_taken_back(b, e)
   for i = b, e - 1 do
     local t = self.t[i]
     if t.kind ~= "punct" and not t.filler then
-      if self:word(i, "@correction") or SC_MARKER[t.text]
+      -- ("KLM12 or rather BAW5 climb FL300": "or rather" takes the callsign back as "I mean" does)
+      local rather = (t.text == "or" and self:word(i + 1, "rather") and i + 1 < e)
+        or (t.text == "rather" and self:word(i - 1, "or") and i > b)
+      if self:word(i, "@correction") or SC_MARKER[t.text] or rather
           or (self.t[i + 1] and i + 1 < e and SC_MARKER[t.text .. " " .. self.t[i + 1].text]) then
         marked = true
       elseif not SELF_CORRECTION[t.text] then
@@ -3268,6 +3290,24 @@ function m:callsign_taken_back(b, e)
     end
   end
   return marked
+end
+
+-- True when aircraft reference r is followed by an instruction, then a run that takes a callsign back
+-- (m:callsign_taken_back: "sorry", "I mean", "correction", "no") and aircraft reference nxt, then the same
+-- instruction's first word ("KLM12 heading 200, sorry, TRA34 heading 200", "klm12 hdg, i mean tra34 hdg 200"):
+-- the callsign was corrected, the instruction is said for nxt alone.
+function m:instruction_said_again(r, nxt)
+  local w = self:skip_fillers(r.e, false)
+  if w >= nxt.b or not self.t[w] or self.t[w].kind ~= "word" then return false end
+  local again = self:skip_fillers(nxt.e, false)
+  -- (a typed abbreviation is its word: "hdg" with no value after it stays as typed)
+  local full = { hdg = "heading", spd = "speed", alt = "altitude", lvl = "level" }
+  local function word(i) return full[self.t[i].text] or self.t[i].text end
+  if not self.t[again] or word(again) ~= word(w) then return false end
+  for p = w + 1, nxt.b - 1 do
+    if self:callsign_taken_back(p, nxt.b) then return true end
+  end
+  return false
 end
 
 -- True when the words from b (after an aircraft) are an instruction's verb, a run taken back (m:callsign_taken_back)

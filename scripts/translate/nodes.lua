@@ -412,6 +412,17 @@ local function has_english_word(line, name)
   return false
 end
 
+-- True when registry command `name` takes an argument of free text ("string": ECHO's text, a carried command, a
+-- file name), which keeps its case.
+local free_text
+function M.free_text(name)
+  if not free_text then
+    free_text = {}
+    for _, c in ipairs(squawk.sim.commands()) do free_text[c.name] = (c.args or ""):find("string", 1, true) ~= nil end
+  end
+  return free_text[name] ~= false
+end
+
 function M.typed(state, ctx)
   local cmds = M.split_commands(state.request)
   if #cmds == 0 then return "english" end
@@ -525,7 +536,12 @@ function M.typed(state, ctx)
     if h and h > 360 then return "english" end
     -- and it runs: "turn KL204 north" parses (a name is a bearing) but names nothing
     if not copy():exec(c) then return "english" end
-    cmds[k] = name .. c:match("^[%w_]+(.*)$")  -- shown with its registry name: "delete KL204" -> "DEL KL204"
+    -- shown with its registry name: "delete KL204" -> "DEL KL204"; the arguments in capitals, as the registry
+    -- reads ids, places and keywords ("tfl7gh dest ehbk" -> "DEST TFL7GH EHBK"), unless one is free text (a
+    -- string: ECHO's text, a carried command, a file name)
+    local args = c:match("^[%w_]+(.*)$")
+    if not M.free_text(name) then args = args:upper() end
+    cmds[k] = name .. args
   end
   state.candidate, state.source = table.concat(cmds, " ; "), "typed"
   M.say(state, "typed", "TrafScript typed in English mode: runs as that command: " .. state.candidate)

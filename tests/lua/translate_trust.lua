@@ -2619,8 +2619,8 @@ do
   check(ex("tst7k hdg 27"):match("^ASK What heading should TST7K fly: 027 or 270%?") ~= nil, ex("tst7k hdg 27"))
   check(ex("tst7k heading 12 please"):match("^ASK .*012 or 120") ~= nil, ex("tst7k heading 12 please"))
   check_eq(ex("TST7K HDG 27"), "HDG TST7K 27")  -- TrafScript in capitals: heading 027
-  check_eq(ex("tst7k hdg 95"), "HDG tst7k 95")  -- typed TrafScript: no other reading
-  check_eq(ex("tst7k hdg 027"), "HDG tst7k 027")
+  check_eq(ex("tst7k hdg 95"), "HDG TST7K 95")  -- typed TrafScript: no other reading, in capitals
+  check_eq(ex("tst7k hdg 027"), "HDG TST7K 027")
   check(ex("tst7k keep it at 230"):match("^ASK Should TST7K fly FL230 or 230 knots%?") ~= nil, ex("tst7k keep it at 230"))
   check(ex("tst8m maintain 310"):match("^ASK .*FL310 or 310 knots") ~= nil, ex("tst8m maintain 310"))
   check_eq(ex("tst8m maintain 240"), "ALT TST8M FL240")  -- its own level
@@ -4567,7 +4567,7 @@ do
   asked(ex("klm77 hdg 1 80"), ex("klm77 hdg 1 80"))
   -- (a level's figures apart after "fl", one then two, join into the level: cycle 47)
   check_eq(ex("klm77 fl 1 20"), "ALT KLM77 FL120")
-  check_eq(ex("klm77 dct tolip"), "DIRECT klm77 tolip")
+  check_eq(ex("klm77 dct tolip"), "DIRECT KLM77 TOLIP")
   check_eq(ex("klm77 dct tolpi"), "ASK Did you mean TOLIP? I heard 'tolpi'.")
   check_eq(ex("klm77 baw8ck descend fl90"), "ASK Which aircraft do you mean: KLM77, BAW8CK or both?")
   check_eq(ex("klm77 and baw8ck descend fl90"), "ALT KLM77 FL90 ; ALT BAW8CK FL90")
@@ -4579,16 +4579,16 @@ do
   check(ex("klm77 hdg 200 and spd"):match("^ASK I have HDG KLM77 200%. 'spd' ends") ~= nil, ex("klm77 hdg 200 and spd"))
   check(ex("klm77 descend fl120 hdg"):match("^ASK I have ALT KLM77 FL120%. 'hdg' ends") ~= nil, ex("klm77 descend fl120 hdg"))
   asked(ex("klm77 spd 30"), ex("klm77 spd 30"))
-  check_eq(ex("spd klm77 0.78"), "SPD klm77 0.78")
+  check_eq(ex("spd klm77 0.78"), "SPD KLM77 0.78")
   -- a heading of one digit and a vertical speed under lexicon.min_typed_fpm, typed, are asked
   check(ex("klm77 hdg 3"):match("^ASK What heading") ~= nil, ex("klm77 hdg 3"))
   check(ex("klm77 vs -12"):match("^ASK What vertical speed") ~= nil, ex("klm77 vs -12"))
-  check_eq(ex("klm77 vs -1200"), "VS klm77 -1200")
-  check_eq(ex("klm77 hdg 007"), "HDG klm77 007")
+  check_eq(ex("klm77 vs -1200"), "VS KLM77 -1200")
+  check_eq(ex("klm77 hdg 007"), "HDG KLM77 007")
   asked(ex("cre tst5 b738 52 4 180 fl100 30"), ex("cre tst5 b738 52 4 180 fl100 30"))
   check(ex("create tst5 b738 at 52 4 heading 180 fl100 speed 30 knots"):match("^ASK TST5 would fly at 30 kt") ~= nil,
     ex("create tst5 b738 at 52 4 heading 180 fl100 speed 30 knots"))
-  check_eq(ex("cre tst6 b738 52 4 180 fl100 300"), "CRE tst6 b738 52 4 180 fl100 300")
+  check_eq(ex("cre tst6 b738 52 4 180 fl100 300"), "CRE TST6 B738 52 4 180 FL100 300")
 end
 
 -- A typed correction (R61): "err" and "sry" are "sorry", "hmm no" is a correction run: the
@@ -15159,9 +15159,9 @@ do
   asked(ex("klm44 turn 110 right"), "typed turn of 110 right: degrees or heading")
   asked(ex("klm44 turn 300 l"), "typed turn 300 l")
   -- a leading zero is the heading, capitals TrafScript, no side the heading
-  check_eq(ex("klm44 turn 080 right"), "HDG klm44 080 right")
+  check_eq(ex("klm44 turn 080 right"), "HDG KLM44 080 RIGHT")
   check_eq(ex("WZZ7AB TURN 240 LEFT"), "HDG WZZ7AB 240 LEFT")
-  check_eq(ex("wzz7ab turn 240"), "HDG wzz7ab 240")
+  check_eq(ex("wzz7ab turn 240"), "HDG WZZ7AB 240")
 end
 -- Cycle 54 (hzf): a side and a number of degrees said loosely ("come left about 30 degrees") is the turn; with a
 -- level after it, neither is dropped
@@ -17574,4 +17574,64 @@ do
     asked(nex("move tra5 to spy"), "a three-letter ident with no level")
     asked(nex("move tra5 to ams fl150"), "an airport's IATA code")
   end
+-- Cycle 58 (fhz4): wrong commands a careful controller would not have issued. A callsign corrected before the
+-- same instruction said again is replaced, never added to; a question of opinion or of an aircraft's ability is
+-- asked (a polite request stays read); a condition on the traffic is asked, named; a count of aircraft set off
+-- alone is asked; a second aircraft after a word of time or reason is never given the first one's value; typed
+-- TrafScript is shown in capitals
+do
+  local _, ex = scene({ "CRE AFR77 A320 52.0 4.0 090 FL250 280", "CRE EZY4Q B738 52.2 4.2 180 FL200 250",
+    "CRE SWR81 A321 52.1 4.1 000 FL280 270" })
+  -- the callsign corrected: the instruction is the later aircraft's alone
+  check_eq(ex("afr77 spd, i mean ezy4q spd 230"), "SPD EZY4Q 230")
+  check_eq(ex("Air France 77 turn right heading 150, sorry, EZY4Q turn right heading 150"), "HDG EZY4Q 150 RIGHT")
+  check_eq(ex("AFR77 descend FL180, no, SWR81 descend FL180"), "ALT SWR81 FL180")
+  check_eq(ex("swr81 hdg, correction, afr77 hdg 120"), "HDG AFR77 120")
+  -- two aircraft each given the instruction, no correction between: both
+  check_eq(ex("AFR77 descend FL180, SWR81 descend FL180"), "ALT AFR77 FL180 ; ALT SWR81 FL180")
+  check_eq(ex("AFR77 climb FL300 and EZY4Q climb FL300"), "ALT AFR77 FL300 ; ALT EZY4Q FL300")
+  -- opinion and ability asked; a polite request read
+  asked(ex("do you think SWR81 could descend to FL200?"), "the listener's opinion")
+  asked(ex("maybe EZY4Q should slow to 220, what do you think?"), "the listener's opinion, closing")
+  asked(ex("should AFR77 turn left heading 330?"), "a question opened by should")
+  asked(ex("shall I clear SWR81 to FL300?"), "the speaker asks whether to")
+  asked(ex("is it a good idea to climb EZY4Q to FL240?"), "a judgement asked")
+  asked(ex("can AFR77 reach FL410?"), "the aircraft's ability")
+  asked(ex("would SWR81 be able to make FL390?"), "the aircraft's ability, able to")
+  check_eq(ex("can you descend SWR81 to FL200?"), "ALT SWR81 FL200")
+  check_eq(ex("could EZY4Q turn left heading 130 please"), "HDG EZY4Q 130 LEFT")
+  check_eq(ex("do you think you could climb AFR77 to FL300?"), "ALT AFR77 FL300")
+  check_eq(ex("Can AFR77 make a left turn to heading 360?"), "HDG AFR77 360 LEFT")
+  check_eq(ex("Let's descend SWR81 to FL200, shall we?"), "ALT SWR81 FL200")
+  -- a condition on the traffic: asked, named; a remark of the speaker's own is none
+  local c = ex("SWR81 descend FL240, if there is no traffic")
+  asked(c, "a condition after a comma")
+  check(c:find("if there is no traffic", 1, true) ~= nil, "the condition named")
+  asked(ex("if the conflict is solved, AFR77 climb FL300"), "a condition opening the request")
+  asked(ex("EZY4Q descend FL180 unless there is a conflict"), "unless")
+  check_eq(ex("SWR81 descend FL240, if I remember correctly"), "ALT SWR81 FL240")
+  check_eq(ex("SWR81 descend FL240, if there is no problem"), "ALT SWR81 FL240")
+  -- a count of aircraft set off alone
+  asked(ex("conflict detection on, 6 aircraft"), "a count alone after a setting")
+  asked(ex("pause, 4 planes"), "a count alone after the pause")
+  check_eq(ex("generate 6 aircraft"), "MCRE 6")
+  -- another aircraft after a word of time or reason: never given the value
+  local w = ex("I'd like SWR81 at FL300 before EZY4Q gets there")
+  asked(w, "a second aircraft named as a time")
+  check(not w:find("EZY4Q FL300", 1, true), "no draft for the other aircraft")
+  local u = ex("it would be nice if AFR77 was at FL200 once SWR81 has passed")
+  asked(u, "a second aircraft after once")
+  check(not u:find("SWR81 FL200", 1, true), "no draft for the other aircraft")
+  check_eq(ex("AFR77 FL200, SWR81 FL220"), "ALT AFR77 FL200 ; ALT SWR81 FL220")
+  -- typed TrafScript in capitals, free text as typed
+  check_eq(ex("ezy4q spd 250"), "SPD EZY4Q 250")
+  check_eq(ex("afr77 hdg 270"), "HDG AFR77 270")
+  check_eq(ex("echo break in five"), "ECHO break in five")
+end
+-- (fhz4) "or rather" between two callsigns takes the first back
+do
+  local _, ex = scene({ "CRE AFR77 A320 52.0 4.0 090 FL250 280", "CRE SWR81 A321 52.1 4.1 000 FL280 270" })
+  check_eq(ex("AFR77 or rather SWR81 descend FL200"), "ALT SWR81 FL200")
+  check_eq(ex("AFR77 speed 240, or rather SWR81 speed 240"), "SPD SWR81 240")
+  asked(ex("AFR77 or SWR81 descend FL200"), "two aircraft as alternatives")
 end
