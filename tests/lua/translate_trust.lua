@@ -17574,6 +17574,7 @@ do
     asked(nex("move tra5 to spy"), "a three-letter ident with no level")
     asked(nex("move tra5 to ams fl150"), "an airport's IATA code")
   end
+end
 -- Cycle 58 (fhz4): wrong commands a careful controller would not have issued. A callsign corrected before the
 -- same instruction said again is replaced, never added to; a question of opinion or of an aircraft's ability is
 -- asked (a polite request stays read); a condition on the traffic is asked, named; a count of aircraft set off
