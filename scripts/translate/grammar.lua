@@ -8743,6 +8743,41 @@ function G:places_by_position()
       end
     end
   end
+  self:place_at_its_position()
+end
+
+-- A place's capitalised name of one or two words (an airport noun may follow it) said straight before a latitude
+-- and longitude, after a word that places something there (lexicon.named_position_leads: "over Schiphol (52.31 N,
+-- 4.76 E)", "to Arlanda, 59.65 north 17.92 east", "around Bremen airport, 53.047 N 8.787 E", "wind at Chengdu 30.6
+-- 104.0"; a comma or an opening bracket between, or nothing), names the position said: it is explained when the
+-- navdata has a place of that name (G:any_place_named) within lexicon.named_position_nm of it. A name of no place
+-- there ("over Schiphol, 48.1 N 11.6 E") stays unexplained and is asked about.
+function G:place_at_its_position()
+  local near_nm = lexicon.named_position_nm
+  for k = 2, #self.t - 2 do
+    if self:word(k - 1, "@named_position_leads") then
+      local e = k
+      while e < k + 2 and self.t[e] and self.t[e].kind == "word" and self.t[e].alpha and self.t[e].raw:match("^%u%l+$")
+          and not self.t[e].keyword and not self.u:used(e) do
+        e = e + 1
+      end
+      local name = e > k and self:plain_name(k, e, true)
+      local after = e + (self:word(e, "@airport_nouns") and 1 or 0)
+      while self.t[after] and (self.t[after].text == "," or self.t[after].text == "(") and after <= e + 2 do after = after + 1 end
+      local qs = name and self:quantities(after, #self.t + 1) or {}
+      local lat, lon = qs[1], qs[2]
+      if lat and lat.b == after and lat.value and lon and lon.value
+          and ((lat.kind == "lat" and lon.kind == "lon") or (lat.kind ~= "lat" and lon.kind ~= "lon"
+            and (lat.kind == "plain" or lat.kind == "number") and (lon.kind == "plain" or lon.kind == "number")
+            and lon.b == lat.e and math.abs(lat.value) <= 90 and math.abs(lon.value) <= 180
+            and lat.value % 1 ~= 0))
+          and #self:refs_in(k, e, "aircraft") == 0
+          and self:any_place_named(name, function() return true end, lat.value, lon.value, near_nm) then
+        self:mark_used(k, after)
+        for x = k, after - 1 do self.noted[x] = true end
+      end
+    end
+  end
 end
 
 -- True when tokens [b, e), a clause opening the request before a comma, colon or dash, are a station's

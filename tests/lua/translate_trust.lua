@@ -17494,3 +17494,18 @@ do
   check_eq(ex("After a resolution, aircraft should go back to their routes once they are past the closest point, "
     .. "please."), "RESNAV PASTCPA")
 end
+-- Cycle 58 (flow): a place's name said straight before the latitude and longitude it stands at ("over Schiphol
+-- (52.31 N, 4.76 E)") names that position; a name of no place near the position stays asked
+do
+  local _, ex = scene({ "CRE KLM1401 B789 52.40 4.60 270 FL080 250", "CRE TRA3MV B738 52.25 4.90 180 FL070 240" })
+  check_eq(ex("Set a wind of 250 degrees at 30 knots over Schiphol (52.31 N, 4.76 E), at FL100"),
+    "WIND 52.31 4.76 FL100 250 30")
+  check_eq(ex("Please move TRA3MV to just above Schiphol, 52.31 north 4.76 east, at flight level 80."),
+    "MOVE TRA3MV 52.31 4.76 FL80")
+  check_eq(ex("Draw a circle called ZONE1 with a radius of 15 NM around Schiphol airport, 52.309 N 4.764 E"),
+    "CIRCLE ZONE1 52.309 4.764 15")
+  check_eq(ex("wind over Frankfurt 50.03 8.57, 300 degrees, 35 knots"), "WIND 50.03 8.57 300 35")
+  check_eq(ex("Could you move KLM1401 to Munich, 48.35 north 11.78 east, at 5000 feet?"), "MOVE KLM1401 48.35 11.78 5000")
+  asked(ex("Move TRA3MV to just above Schiphol, 48.35 north 11.78 east"), "Schiphol is not there")
+  asked(ex("wind at Rotterdam 52.3 4.8, 180 degrees 20 knots"), "Rotterdam is not there")
+end
