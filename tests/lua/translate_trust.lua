@@ -17509,3 +17509,13 @@ do
   asked(ex("Move TRA3MV to just above Schiphol, 48.35 north 11.78 east"), "Schiphol is not there")
   asked(ex("wind at Rotterdam 52.3 4.8, 180 degrees 20 knots"), "Rotterdam is not there")
 end
+-- Cycle 58 (flow): a city said before its airport's name of two or three words ("Paris Charles de Gaulle") is read
+-- with it when the navdata names a place by the two together near the airport; another city is asked
+do
+  local _, ex = scene({ "CRE AFR12 A320 48.5 2.0 090 FL200 250" })
+  check_eq(ex("AFR12 destination Paris Charles de Gaulle"), "DEST AFR12 LFPG")
+  check_eq(ex("Please set the origin of AFR12 to Paris Charles de Gaulle and its destination to Amsterdam Schiphol."),
+    "ORIG AFR12 LFPG ; DEST AFR12 EHAM")
+  check_eq(ex("AFR12, your destination is Charles de Gaulle airport"), "DEST AFR12 LFPG")
+  asked(ex("AFR12 destination Madrid Charles de Gaulle"), "Madrid is not the city of Charles de Gaulle")
+end
