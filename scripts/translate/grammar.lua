@@ -10879,8 +10879,27 @@ function G:said_last(i, near, own_clause)
   local stop = k
   while self.t[k] and self.t[k].kind == "punct" and self.t[k].text ~= "," do k = k + 1 end
   -- (a sentence after it set aside as a remark, G:in_reason: "until 4 miles on final? I understand that's what
-  -- normally happens.")
-  return k > #self.t or (k > stop and self:in_reason(k))
+  -- normally happens."; or one that says nothing to fly, G:remark_sentences: "until OSTER? That's what the
+  -- procedure says.")
+  local ended = self.t[k - 1] and self.t[k - 1].kind == "punct" and (self.t[k - 1].text == "." or self.t[k - 1].text == "?"
+    or self.t[k - 1].text == "!")
+  return k > #self.t or (k > stop and self:in_reason(k)) or ((k > stop or ended) and self:remark_sentences(k))
+end
+
+-- True when the words from token k to the request's end, whole sentences after a sentence's end, say nothing to
+-- fly: no instruction word (G:intent_at), no value, no aircraft or place, and no word of lexicon.remark_not (a
+-- negation, a bound, a comparison: "Not below.", "No less.") - a remark on what was said ("That's what the procedure
+-- says.", "That is the standard for this arrival.", "Then we'll see.").
+function G:remark_sentences(k)
+  if k > #self.t or #self:quantities(k, #self.t + 1) > 0 or self:has_ref(k, #self.t + 1, "aircraft")
+      or self:has_ref(k, #self.t + 1, "waypoint") or self:any_instruction_in(k, #self.t + 1) then
+    return false
+  end
+  for x = k, #self.t do
+    local t = self.t[x]
+    if not (t.kind == "punct" or t.kind == "word") or self:word(x, "@remark_not") or self.triggers[x] then return false end
+  end
+  return true
 end
 
 -- What stands before the word at i ("start", "aircraft", "value", "place" or "closing") when it stands alone in its

@@ -1844,6 +1844,11 @@ return {
   -- grammar.lua G:place_at_its_position) [NM]
   named_position_leads = { "at", "over", "near", "above", "around", "to" },
   named_position_nm = 10,
+  -- words that make a sentence after a limit's place more than a remark on it ("until OSTER. Not below.", "... Or
+  -- faster."): grammar.lua G:remark_sentences
+  remark_not = { "not", "no", "never", "don't", "dont", "do", "below", "above", "less", "more", "faster", "slower",
+    "minimum", "maximum", "min", "max", "or", "greater", "higher", "lower", "after", "afterwards", "later",
+    "resume", "cancel", "unless", "if", "when", "once", "until", "till", "instead", "only", "except" },
   -- answers that confirm a question ("did you mean BAW123?")
   yes = { "yes", "affirm", "affirmative", "correct", "yep", "yeah", "confirmed", "confirm" },
   -- answers to "What does 'W' mean?" that say W carries nothing ("ignore it", "nothing",

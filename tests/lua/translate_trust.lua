@@ -17519,3 +17519,21 @@ do
   check_eq(ex("AFR12, your destination is Charles de Gaulle airport"), "DEST AFR12 LFPG")
   asked(ex("AFR12 destination Madrid Charles de Gaulle"), "Madrid is not the city of Charles de Gaulle")
 end
+-- Cycle 58 (flow): a value held until a place or the final approach's miles, said last, then a sentence that says
+-- nothing to fly ("That's what the procedure says.") is flown as before; a sentence with a bound, a negation, a value,
+-- another aircraft or an instruction after it stays asked
+do
+  local _, ex = scene({ "CRE SAS925 A320 59.5 10.5 090 FL100 250", "ADDWPT SAS925 OSTER", "ADDWPT SAS925 VEMAS",
+    "CRE NAX12 B738 59.8 10.0 180 FL120 260" })
+  check_eq(ex("Could SAS925 keep 230 knots until OSTER? That's what the procedure says."), "SPD SAS925 230")
+  check_eq(ex("Scandinavian 925 maintain 220 knots till VEMAS. That is the standard for this arrival."),
+    "SPD SAS925 220")
+  check_eq(ex("SAS925, keep two three zero knots until OSTER please? Then we'll see."), "SPD SAS925 230")
+  check_eq(ex("SAS925, 160 knots until 4 DME. That's the standard here."), "SPD SAS925 160")
+  check_eq(ex("SAS925 keep 230 knots until OSTER. That's the next point on its route, I believe."), "SPD SAS925 230")
+  asked(ex("SAS925 keep 230 knots until OSTER. Not below."), "a bound after the limit")
+  asked(ex("SAS925 keep 230 knots until OSTER. Or faster if able."), "an alternative after the limit")
+  asked(ex("SAS925 keep 230 knots until OSTER. NAX12 too."), "another aircraft after the limit")
+  asked(ex("SAS925 keep 230 knots until OSTER. Speed is fine after that."), "what comes after the limit")
+  asked(ex("SAS925 keep 230 knots until OSTER. I'll slow it down later."), "an instruction put off")
+end
