@@ -198,7 +198,8 @@ local function know_all(v, seen)
   -- to ask a request again; lexicon.listener_address only where it is dropped, opening or closing a request;
   -- lexicon.judged_values, kept_from and speed_direction_verbs only where their pass reads them, lexicon.wish_evaluative
   -- and wish_negation only in a wish framed before "if", same_given and same_compared only beside "same", lexicon.ml_labels
-  -- only where dropped: they never make a word said elsewhere known)
+  -- only where dropped; lexicon.remark_not and named_position_leads only where their pass reads them: they never
+  -- make a word said elsewhere known)
   if type(v) ~= "table" or seen[v] or v == lexicon.accounted.courtesy_phrases or v == lexicon.accounted.value_phrases
       or v == lexicon.typed_abbreviations
       or v == lexicon.aside or v == lexicon.self_correction.just_the or v == lexicon.foreign_digits or v == lexicon.foreign_hesitation_digits
@@ -213,6 +214,7 @@ local function know_all(v, seen)
       or v == lexicon.self_correction.formal_apology or v == lexicon.self_correction.described
       or v == lexicon.self_correction.judged or v == lexicon.self_correction.admitted or v == lexicon.limit_release
       or v == lexicon.countries or v == lexicon.screen_position or v == lexicon.unheard_markers
+      or v == lexicon.remark_not or v == lexicon.named_position_leads
       or v == lexicon.listener_address or v == lexicon.judged_values or v == lexicon.kept_from or v == lexicon.ml_labels
       or v == lexicon.speed_direction_verbs or v == lexicon.wish_evaluative or v == lexicon.wish_negation
       or v == lexicon.same_given or v == lexicon.same_compared then
