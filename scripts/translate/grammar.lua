@@ -198,7 +198,8 @@ local function know_all(v, seen)
   -- to ask a request again; lexicon.listener_address only where it is dropped, opening or closing a request;
   -- lexicon.judged_values, kept_from and speed_direction_verbs only where their pass reads them, lexicon.wish_evaluative
   -- and wish_negation only in a wish framed before "if", same_given and same_compared only beside "same", lexicon.ml_labels
-  -- only where dropped: they never make a word said elsewhere known)
+  -- only where dropped; lexicon.remark_not and named_position_leads only where their pass reads them: they never
+  -- make a word said elsewhere known)
   if type(v) ~= "table" or seen[v] or v == lexicon.accounted.courtesy_phrases or v == lexicon.accounted.value_phrases
       or v == lexicon.typed_abbreviations
       or v == lexicon.aside or v == lexicon.self_correction.just_the or v == lexicon.foreign_digits or v == lexicon.foreign_hesitation_digits
@@ -213,6 +214,7 @@ local function know_all(v, seen)
       or v == lexicon.self_correction.formal_apology or v == lexicon.self_correction.described
       or v == lexicon.self_correction.judged or v == lexicon.self_correction.admitted or v == lexicon.limit_release
       or v == lexicon.countries or v == lexicon.screen_position or v == lexicon.unheard_markers
+      or v == lexicon.remark_not or v == lexicon.named_position_leads
       or v == lexicon.listener_address or v == lexicon.judged_values or v == lexicon.kept_from or v == lexicon.ml_labels
       or v == lexicon.speed_direction_verbs or v == lexicon.wish_evaluative or v == lexicon.wish_negation
       or v == lexicon.same_given or v == lexicon.same_compared then
@@ -8803,6 +8805,41 @@ function G:places_by_position()
       end
     end
   end
+  self:place_at_its_position()
+end
+
+-- A place's capitalised name of one or two words (an airport noun may follow it) said straight before a latitude
+-- and longitude, after a word that places something there (lexicon.named_position_leads: "over Schiphol (52.31 N,
+-- 4.76 E)", "to Arlanda, 59.65 north 17.92 east", "around Bremen airport, 53.047 N 8.787 E", "wind at Chengdu 30.6
+-- 104.0"; a comma or an opening bracket between, or nothing), names the position said: it is explained when the
+-- navdata has a place of that name (G:any_place_named) within lexicon.named_position_nm of it. A name of no place
+-- there ("over Schiphol, 48.1 N 11.6 E") stays unexplained and is asked about.
+function G:place_at_its_position()
+  local near_nm = lexicon.named_position_nm
+  for k = 2, #self.t - 2 do
+    if self:word(k - 1, "@named_position_leads") then
+      local e = k
+      while e < k + 2 and self.t[e] and self.t[e].kind == "word" and self.t[e].alpha and self.t[e].raw:match("^%u%l+$")
+          and not self.t[e].keyword and not self.u:used(e) do
+        e = e + 1
+      end
+      local name = e > k and self:plain_name(k, e, true)
+      local after = e + (self:word(e, "@airport_nouns") and 1 or 0)
+      while self.t[after] and (self.t[after].text == "," or self.t[after].text == "(") and after <= e + 2 do after = after + 1 end
+      local qs = name and self:quantities(after, #self.t + 1) or {}
+      local lat, lon = qs[1], qs[2]
+      if lat and lat.b == after and lat.value and lon and lon.value
+          and ((lat.kind == "lat" and lon.kind == "lon") or (lat.kind ~= "lat" and lon.kind ~= "lon"
+            and (lat.kind == "plain" or lat.kind == "number") and (lon.kind == "plain" or lon.kind == "number")
+            and lon.b == lat.e and math.abs(lat.value) <= 90 and math.abs(lon.value) <= 180
+            and lat.value % 1 ~= 0))
+          and #self:refs_in(k, e, "aircraft") == 0
+          and self:any_place_named(name, function() return true end, lat.value, lon.value, near_nm) then
+        self:mark_used(k, after)
+        for x = k, after - 1 do self.noted[x] = true end
+      end
+    end
+  end
 end
 
 -- True when tokens [b, e), a clause opening the request before a comma, colon or dash, are a station's
@@ -10904,8 +10941,27 @@ function G:said_last(i, near, own_clause)
   local stop = k
   while self.t[k] and self.t[k].kind == "punct" and self.t[k].text ~= "," do k = k + 1 end
   -- (a sentence after it set aside as a remark, G:in_reason: "until 4 miles on final? I understand that's what
-  -- normally happens.")
-  return k > #self.t or (k > stop and self:in_reason(k))
+  -- normally happens."; or one that says nothing to fly, G:remark_sentences: "until OSTER? That's what the
+  -- procedure says.")
+  local ended = self.t[k - 1] and self.t[k - 1].kind == "punct" and (self.t[k - 1].text == "." or self.t[k - 1].text == "?"
+    or self.t[k - 1].text == "!")
+  return k > #self.t or (k > stop and self:in_reason(k)) or ((k > stop or ended) and self:remark_sentences(k))
+end
+
+-- True when the words from token k to the request's end, whole sentences after a sentence's end, say nothing to
+-- fly: no instruction word (G:intent_at), no value, no aircraft or place, and no word of lexicon.remark_not (a
+-- negation, a bound, a comparison: "Not below.", "No less.") - a remark on what was said ("That's what the procedure
+-- says.", "That is the standard for this arrival.", "Then we'll see.").
+function G:remark_sentences(k)
+  if k > #self.t or #self:quantities(k, #self.t + 1) > 0 or self:has_ref(k, #self.t + 1, "aircraft")
+      or self:has_ref(k, #self.t + 1, "waypoint") or self:any_instruction_in(k, #self.t + 1) then
+    return false
+  end
+  for x = k, #self.t do
+    local t = self.t[x]
+    if not (t.kind == "punct" or t.kind == "word") or self:word(x, "@remark_not") or self.triggers[x] then return false end
+  end
+  return true
 end
 
 -- What stands before the word at i ("start", "aircraft", "value", "place" or "closing") when it stands alone in its

@@ -2060,7 +2060,9 @@ return function(H, f, compass)
             end
             local id = self:one_named(ids, "airport", phrase, 4)
             if id then
-              self:explain_place(i, self:word(i + n, "@airport_nouns") and i + n + 1 or i + n)
+              -- (its city before a name of two or three words: "Paris Charles de Gaulle")
+              local from = n > 1 and self:city_before_airport(i, i + n, id) and i - 1 or i
+              self:explain_place(from, self:word(i + n, "@airport_nouns") and i + n + 1 or i + n)
               return id
             end
           end
@@ -2068,6 +2070,25 @@ return function(H, f, compass)
       end
     end
     return nil
+  end
+
+  -- True when the capitalised word before i, where the words [i, e) name airport `id`, is that airport's city ("Paris
+  -- Charles de Gaulle"): the navdata has a place named by the word and the words together (G:any_place_named: the
+  -- PARIS CHARLES DE GAULLE VOR-DME) within lexicon.city_nm of the airport. Any other word ("Madrid Charles de
+  -- Gaulle") is none (asked).
+  function m:city_before_airport(i, e, id)
+    local t, locate = self.t[i - 1], self.world.user_waypoint_at
+    if not (t and t.kind == "word" and t.alpha and t.raw:match("^%u%l") and not self.u:used(i - 1) and locate) then
+      return false
+    end
+    local words = { t.text }
+    for k = i, e - 1 do
+      if not (self.t[k] and self.t[k].kind == "word") then return false end
+      words[#words + 1] = self.t[k].text
+    end
+    local lat, lon = locate(id)
+    return lat ~= nil and self:any_place_named(table.concat(words, " "), function() return true end, lat, lon, L.city_nm,
+      true)
   end
 
   -- A phrase with a capitalised word beside it ("Point Reyes", "Amsterdam Schiphol") is part of a
@@ -2167,7 +2188,12 @@ return function(H, f, compass)
             for _, a in ipairs(with and with(phrase) or {}) do large = large + (cls(a) == "LARGE" and 1 or 0) end
             self.airport_said_city = large > 1
             -- (with "airport" after it, a capitalised word before the name is its city: "Beijing Capital")
-            self:explain_place(((city or with_city) and proper(i - 1)) and i - 1 or i, city and after + 1 or after)
+            -- (a capitalised word before a name of two or three words, its city: "Paris Charles de Gaulle", when
+            -- the navdata has a place of that name within lexicon.city_nm of the airport; a name of a place elsewhere
+            -- stays unexplained, asked)
+            local of_city = not (city or with_city) and after > i + 1 and proper(i - 1)
+              and self:city_before_airport(i, after, id)
+            self:explain_place(((city or with_city or of_city) and proper(i - 1)) and i - 1 or i, city and after + 1 or after)
             -- (the name said again, "go to Stuttgart, so Stuttgart is its destination", is the same place)
             for k = after, math.min(e, #self.t + 1) - 1 do
               if self:word(k, t.text) and not self.u:used(k) then self:explain(k, k + 1) end

@@ -1839,6 +1839,16 @@ return {
   -- a navaid said by its name within this of a large airport stands on it: "create ... at Marseille" is the
   -- airport (LFML), not its NDB (MJ) [NM]
   on_airport_nm = 1,
+  -- a place's name said straight before a latitude and longitude after one of these names that position when the
+  -- navdata has a place of the name within named_position_nm of it ("over Schiphol (52.31 N, 4.76 E)":
+  -- grammar.lua G:place_at_its_position) [NM]
+  named_position_leads = { "at", "over", "near", "above", "around", "to" },
+  named_position_nm = 10,
+  -- words that make a sentence after a limit's place more than a remark on it ("until OSTER. Not below.", "... Or
+  -- faster."): grammar.lua G:remark_sentences
+  remark_not = { "not", "no", "never", "don't", "dont", "do", "below", "above", "less", "more", "faster", "slower",
+    "minimum", "maximum", "min", "max", "or", "greater", "higher", "lower", "after", "afterwards", "later",
+    "resume", "cancel", "unless", "if", "when", "once", "until", "till", "instead", "only", "except" },
   -- answers that confirm a question ("did you mean BAW123?")
   yes = { "yes", "affirm", "affirmative", "correct", "yep", "yeah", "confirmed", "confirm" },
   -- answers to "What does 'W' mean?" that say W carries nothing ("ignore it", "nothing",

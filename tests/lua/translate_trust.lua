@@ -17636,3 +17636,54 @@ do
   check_eq(ex("AFR77 speed 240, or rather SWR81 speed 240"), "SPD SWR81 240")
   asked(ex("AFR77 or SWR81 descend FL200"), "two aircraft as alternatives")
 end
+-- Cycle 58 (flow): a place's name said straight before the latitude and longitude it stands at ("over Schiphol
+-- (52.31 N, 4.76 E)") names that position; a name of no place near the position stays asked
+do
+  local nav, ex = navscene({ "CRE KLM1401 B789 52.40 4.60 270 FL080 250", "CRE TRA3MV B738 52.25 4.90 180 FL070 240" }, "flow's cycle 58 place checks")
+  if nav then
+    check_eq(ex("Set a wind of 250 degrees at 30 knots over Schiphol (52.31 N, 4.76 E), at FL100"),
+      "WIND 52.31 4.76 FL100 250 30")
+    check_eq(ex("Please move TRA3MV to just above Schiphol, 52.31 north 4.76 east, at flight level 80."),
+      "MOVE TRA3MV 52.31 4.76 FL80")
+    check_eq(ex("Draw a circle called ZONE1 with a radius of 15 NM around Schiphol airport, 52.309 N 4.764 E"),
+      "CIRCLE ZONE1 52.309 4.764 15")
+    check_eq(ex("wind over Frankfurt 50.03 8.57, 300 degrees, 35 knots"), "WIND 50.03 8.57 300 35")
+    check_eq(ex("Could you move KLM1401 to Munich, 48.35 north 11.78 east, at 5000 feet?"), "MOVE KLM1401 48.35 11.78 5000")
+    asked(ex("Move TRA3MV to just above Schiphol, 48.35 north 11.78 east"), "Schiphol is not there")
+    asked(ex("wind at Rotterdam 52.3 4.8, 180 degrees 20 knots"), "Rotterdam is not there")
+  end
+end
+-- Cycle 58 (flow): a city said before its airport's name of two or three words ("Paris Charles de Gaulle") is read
+-- with it when the navdata names a place by the two together near the airport; another city is asked
+do
+  local nav, ex = navscene({ "CRE AFR12 A320 48.5 2.0 090 FL200 250" }, "flow's cycle 58 place checks")
+  if nav then
+    check_eq(ex("AFR12 destination Paris Charles de Gaulle"), "DEST AFR12 LFPG")
+    check_eq(ex("Please set the origin of AFR12 to Paris Charles de Gaulle and its destination to Amsterdam Schiphol."),
+      "ORIG AFR12 LFPG ; DEST AFR12 EHAM")
+    check_eq(ex("AFR12, your destination is Charles de Gaulle airport"), "DEST AFR12 LFPG")
+    asked(ex("AFR12 destination Madrid Charles de Gaulle"), "Madrid is not the city of Charles de Gaulle")
+  end
+end
+-- Cycle 58 (flow): a value held until a place or the final approach's miles, said last, then a sentence that says
+-- nothing to fly ("That's what the procedure says.") is flown as before; a sentence with a bound, a negation, a value,
+-- another aircraft or an instruction after it stays asked
+do
+  local nav, ex = navscene({ "CRE SAS925 A320 59.5 10.5 090 FL100 250", "ADDWPT SAS925 OSTER", "ADDWPT SAS925 VEMAS",
+    "CRE NAX12 B738 59.8 10.0 180 FL120 260" }, "flow's cycle 58 place checks")
+  if nav then
+    check_eq(ex("Could SAS925 keep 230 knots until OSTER? That's what the procedure says."), "SPD SAS925 230")
+    check_eq(ex("Scandinavian 925 maintain 220 knots till VEMAS. That is the standard for this arrival."),
+      "SPD SAS925 220")
+    check_eq(ex("SAS925, keep two three zero knots until OSTER please? Then we'll see."), "SPD SAS925 230")
+    check_eq(ex("SAS925, 160 knots until 4 DME. That's the standard here."), "SPD SAS925 160")
+    check_eq(ex("SAS925 keep 230 knots until OSTER. That's the next point on its route, I believe."), "SPD SAS925 230")
+    asked(ex("SAS925 keep 230 knots until OSTER. Not below."), "a bound after the limit")
+    asked(ex("SAS925 keep 230 knots until OSTER. Or faster if able."), "an alternative after the limit")
+    asked(ex("SAS925 keep 230 knots until OSTER. NAX12 too."), "another aircraft after the limit")
+    asked(ex("SAS925 keep 230 knots until OSTER. Speed is fine after that."), "what comes after the limit")
+    asked(ex("SAS925 keep 230 knots until OSTER. I'll slow it down later."), "an instruction put off")
+    -- (the words lexicon.remark_not lists are known to that pass alone: "later" elsewhere is still asked)
+    asked(ex("SAS925 climb FL120 later"), "'later' stays unknown")
+  end
+end
