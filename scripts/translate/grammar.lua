@@ -4911,7 +4911,9 @@ function G:segments(b, e)
       -- straight after the value parts them as a comma does)
       local at = (self:word(k, "and") and k + 1) or (k == qs[#qs].e and k)
       local other = at and self:refs_in(at, at + 1, "aircraft")[1]
-      local first = other and self:refs_in(b, qs[1].b, "aircraft")[1]
+      -- (the aircraft the value is said to: the last named before it, "X and Y: Aeroflot keeps level 230 and X ...")
+      local named = other and self:refs_in(b, qs[1].b, "aircraft") or {}
+      local first = named[#named]
       if self.t[k].kind == "punct" or self:word(k, "@then_words") or (timed and self:word(k, "and")) or (other and other.exists
           and other.name:upper() ~= first.name:upper()) then
         -- ("BTI6AL 200 knots until ROKLA then 180": a limit until a place, the value again after it, G:until_then_value)
@@ -5044,6 +5046,11 @@ function G:segments(b, e)
         for _, r in ipairs(self:refs_in(last.trig + 1, start, "aircraft")) do
           local after = self:skip_fillers(r.e)
           if self.cut_back[after] then after = self:skip_fillers(self.cut_back[after]) end
+          -- (the infinitive's "to" between: "..., and Aeroflot 1878 to stop descent at FL240", "UTair 235 to keep
+          -- level 360": the aircraft is still this instruction's subject)
+          -- (and a verb ending a movement before the instruction word: "..., and Aeroflot stop descent at level 240")
+          if self:word(after, "to") then after = self:skip_fillers(after + 1) end
+          if self:word(after, "@halted") and self:skip_fillers(after + 1) == start then after = start end
           if after == start then start = r.b end
         end
         -- "heading 070, FL240 climb, speed 300": a value with this instruction's unit said just before its word,
