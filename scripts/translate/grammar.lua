@@ -2069,6 +2069,24 @@ local function written_forms(text, world)
   where("further thousand", "%f[%a]([Ff]urther) ([Tt]housand)%f[%A]", "%1 one %2")
   where("further hundred", "%f[%a]([Ff]urther) ([Hh]undred)%f[%A]", "%1 one %2")
   where("flightlevel", "%f[%a][Ff][Ll][Ii][Gg][Hh][Tt]([Ll][Ee][Vv][Ee][Ll])%f[%A]", "flight %1")
+  -- ("climb to level 380, no, stop, keep 360": "нет, стоп", a self-correction's "no, wait")
+  where("stop", "%f[%a]([Nn][Oo]%s*,%s*)[Ss][Tt][Oo][Pp](%s*,)", "%1wait%2")
+  -- ("Make so that Aeroflot 1234 flies directly to DEDUM", "Please make it so that ...": "сделайте так, чтобы", the
+  -- wish's frame opening the request or a sentence, "please" or "kindly" before it or not; the clause after it is
+  -- what is wanted, read as said)
+  where("so that", "()%f[%a]([Mm][Aa][Kk][Ee])%s+(%a*)%s*[Ss][Oo]%s+[Tt][Hh][Aa][Tt]%s+", function(at, _, it)
+    if it ~= "" and it:lower() ~= "it" then return nil end
+    local before = text:sub(1, at - 1):gsub("%s+$", "")
+    local w = before:match("(%a+)$")
+    if w and (w:lower() == "please" or w:lower() == "kindly") then before = before:sub(1, -#w - 1):gsub("%s+$", "") end
+    if before ~= "" and not before:match("[%.!?:;,]$") then return nil end
+    return ""
+  end)
+  -- ("600 kilometers in hour", "500 kilometres in an hour", "kilometers an hour": "км в час", a speed in km/h)
+  for _, p in ipairs({ "[Ii][Nn]%s+[Aa][Nn]", "[Ii][Nn]", "[Aa][Nn]" }) do
+    where("hour", "%f[%a]([Kk][Ii][Ll][Oo][Mm][Ee][Tt][RrEe][EeRr][Ss]?)%s+" .. p .. "%s+([Hh][Oo][Uu][Rr])%f[%A]",
+      "%1 per %2")
+  end
   where("call", "%f[%a]([Cc][Aa][Ll][Ll])[%- ]([Ss][Ii][Gg][Nn])%f[%A]", "%1%2")  -- "call sign"
   -- "Egyptair triple seven", "double two": a digit said twice or three times
   where("double", "%f[%a]([Dd][Oo][Uu][Bb][Ll][Ee])%s+(%a+)%f[%A]", function(_, d)
@@ -4951,7 +4969,10 @@ function G:segments(b, e)
       end
       if (li.absorbs and this.value and not own_verb)
           or (last.intent == "alt" and tr.intent == "vs" and self:word(tr.pos, "rate")
-            and not self:word_in(last.trig + 1, tr.pos, "@level_condition")) then
+            and not self:word_in(last.trig + 1, tr.pos, "@level_condition"))
+          -- ("descend with vertical speed 1000 feet per minute": the climb's or descent's manner, "with" straight
+          -- after its verb)
+          or (last.intent == "alt" and tr.intent == "vs" and tr.pos == last.trig + 2 and self:word(tr.pos - 1, "with")) then
         merged = true
       elseif last.intent == "create" and tr.intent == "create" and #self:refs_in(last.trig, tr.pos, "aircraft") == 0 then
         merged = true  -- "make a new ...": one request
@@ -5394,7 +5415,8 @@ end
 -- feet... no, 2000").
 function G:value_said_again(p, a, c)
   -- ("2.5 NM, sorry, please use 4 NM": "use" and the value alone, as "make it")
-  local v = (self:word(c, "it") and self:word(c - 1, "make") or self:word(c, "use")) and c + 1 or c
+  -- ("climb to level 380, no, wait, keep 360": "keep" and the value alone, the value kept in place of the one said)
+  local v = (self:word(c, "it") and self:word(c - 1, "make") or self:word(c, "use keep")) and c + 1 or c
   local old = self:quantities(p + 1, a)
   -- ("7800 metres, sorry, not 7800, is 8100", "..., not 7800 but 8100": the value said before, denied with "not"
   -- and said again as it was, then the new one)

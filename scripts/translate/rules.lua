@@ -793,8 +793,14 @@ return function(intent, rule, words)
   -- "NATO01 track 090", "fly track 240", "descend FL250 and track 220": a track of three digits (up to 360) flown
   -- as a heading; a track named with a noun before it ("inbound track 270", "the tanker track") is none; so is a
   -- course ("take course 090", "fly course 240": the Russian-speaking controller's word for the heading)
+  -- (said in number words, "take course three hundred": a whole number of degrees up to 360)
   rule { "track course", "hdg", not_prev = { 1, "inbound outbound the a your its tanker" }, when = function(g, i)
     local t = g.t[i + 1]
+    if t ~= nil and t.kind ~= "number" and t.number_word then
+      local q = g:quantities(i + 1, math.min(#g.t + 1, i + 5))[1]
+      return q ~= nil and q.b == i + 1 and (q.kind == "plain" or q.kind == "heading") and q.number ~= nil
+        and not q.number.decimal and q.value >= 1 and q.value <= 360
+    end
     return t ~= nil and t.kind == "number" and t.text:match("^%d%d%d$") ~= nil and tonumber(t.text) <= 360
   end }
   -- "bank max 30 degrees in turns", "limit the bank to 25 when turning": when a bank limit applies, no turn
