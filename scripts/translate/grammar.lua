@@ -2074,8 +2074,11 @@ local function written_forms(text, world)
   -- ("Make so that Aeroflot 1234 flies directly to DEDUM", "Please make it so that ...": "сделайте так, чтобы", the
   -- wish's frame opening the request or a sentence, "please" or "kindly" before it or not; the clause after it is
   -- what is wanted, read as said)
-  where("so that", "()%f[%a]([Mm][Aa][Kk][Ee])%s+(%a*)%s*[Ss][Oo]%s+[Tt][Hh][Aa][Tt]%s+", function(at, _, it)
+  -- (a colon after it in its sentence, "Please make so that X and Y will not have conflict: X keeps ...", makes it the
+  -- purpose of the instructions after the colon, kept)
+  where("so that", "()%f[%a]([Mm][Aa][Kk][Ee])%s+(%a*)%s*[Ss][Oo]%s+[Tt][Hh][Aa][Tt]%s+()", function(at, _, it, past)
     if it ~= "" and it:lower() ~= "it" then return nil end
+    if (text:sub(past):match("^[^%.!?]*:")) then return nil end
     local before = text:sub(1, at - 1):gsub("%s+$", "")
     local w = before:match("(%a+)$")
     if w and (w:lower() == "please" or w:lower() == "kindly") then before = before:sub(1, -#w - 1):gsub("%s+$", "") end

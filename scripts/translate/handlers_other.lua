@@ -2635,6 +2635,13 @@ return function(H, f, compass)
     -- "... after WPC" / "before WPC": ADDWPT's afterwp / beforewp
     -- (also before the verb: "after REMBI add the waypoint ESAMA")
     local at = self:find_word(s.b, s.e, "after before")
+    -- ("add the point PIGOR before destination", "... before its destination": where ADDWPT puts it anyway, the
+    -- route's end before the destination; the words explained, no waypoint next to it)
+    local dest_at = self:word(at + 1, "the its his her their") and at + 2 or at + 1
+    if at < s.e and self:word(at, "before") and self:word(dest_at, "destination dest") then
+      self:explain(at, dest_at + 1)
+      at = s.e
+    end
     local next_to = at < s.e and self:refs_in(at + 1, at + 2, "waypoint")[1]
     -- ("insert Midhurst after Compton": the place next to it said by its one-word name)
     -- (or by two capitalised words, "after Queen Alia": the QAA VOR on its route)
@@ -2954,6 +2961,9 @@ return function(H, f, compass)
       local nx = self.t[k + 1]
       -- ("wind from 320 with 25 knots in Lisbon": "in" before a place's name, as Spanish and Portuguese say "en")
       if self:word(k, "at over overhead near around above in") and nx and nx.kind == "word" then
+        -- ("at point MK1", "at the waypoint MK1": the place's noun between, the place after it)
+        local a = k + (self:word(k + 1, "the") and 1 or 0)
+        if self:word(a + 1, "point waypoint fix") and self:refs_in(a + 2, a + 3, "waypoint")[1] then k = a + 1 end
         local r = self:refs_in(k + 1, k + 2, "waypoint")[1]
         if r and not self:word(r.b, "@navaid_kinds") then return r.name:upper() end
         local id = self:place_by_name(k + 1, math.min(s.e, k + 4))
@@ -4073,8 +4083,10 @@ return function(H, f, compass)
     end
     if q.kind == "time" then
       -- "fast forward to 1 hour": "to" before the time names a time on the clock as likely as a duration, asked;
-      -- "to 15 minutes from now", "to 30 minutes later" say the duration
-      if self:word(q.b - 1, "to") and q.b - 1 > s.trig and not self:word(q.e, "from later ahead hence") then
+      -- "to 15 minutes from now", "to 30 minutes later" say the duration; with the clock at its start (world.clock_s
+      -- 0 s) both readings are one ("Fast forward to 5 minutes" before the run has started: FF 300)
+      if self:word(q.b - 1, "to") and q.b - 1 > s.trig and not self:word(q.e, "from later ahead hence")
+          and self.world.clock_s ~= 0 then
         return self:need(string.format("Should the simulation fast-forward for %s, or until the simulation clock reaches %s?",
           self:raw(q.b, q.e), self:raw(q.b, q.e)))
       end

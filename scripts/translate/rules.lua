@@ -1218,6 +1218,16 @@ return function(intent, rule, words)
   -- the verb after the waypoint (verb-final order), a route noun or "between"/"after"/"before" and a waypoint
   -- after it
   rule { "add append insert", "addwpt", when = function(g, i) return g:verb_final_waypoint(i) ~= nil end }
+  -- "Add for Astanaline 929 the point PIGOR before destination", "add TIRBA before its destination": a waypoint
+  -- straight before "before" and the destination, the verb's within a clause
+  rule { "add append insert", "addwpt", when = function(g, i)
+    local d = g:find_word(i + 1, math.min(#g.t + 1, i + 12), "destination")
+    if d >= math.min(#g.t + 1, i + 12) then return false end
+    local k = g:word(d - 1, "the its his her their") and d - 2 or d - 1
+    if not g:word(k, "before") then return false end
+    local w = g:refs_in(i + 1, k, "waypoint")
+    return w[#w] ~= nil and w[#w].e == k
+  end }
   -- "add the point EXIT2": a point that is a known waypoint
   rule { "add append insert", "addwpt", near = { 3, "point" },
          when = function(g, i) return g:has_ref(g:find_word(i + 1, i + 4, "point") + 1, i + 5, "waypoint") end }
@@ -1689,6 +1699,19 @@ return function(intent, rule, words)
   rule { "destination", false, when = function(g, i)
     for k = i - 1, 1, -1 do
       if g:intent_at(k) == "mcre" then return #g:refs_in(k, i, "aircraft") == 0 end
+    end
+    return false
+  end }
+  -- "Add for Astanaline 929 the point PIGOR before destination", "add waypoint EKBUR to the route of UTair 125
+  -- before its destination": where ADDWPT puts the waypoint anyway (the route's end, before the destination), no
+  -- destination of its own; "before" and the noun closing the request or a clause after an instruction to add
+  rule { "destination dest", false, when = function(g, i)
+    local k = g:word(i - 1, "the its his her their") and i - 2 or i - 1
+    local e = g:skip_fillers(i + 1)
+    if not g:word(k, "before") or (g.t[e] and g.t[e].kind ~= "punct") then return false end
+    for x = k - 1, 1, -1 do
+      if g.t[x].kind == "punct" and g.t[x].text ~= "," then return false end
+      if g:intent_at(x) == "addwpt" then return true end
     end
     return false
   end }
@@ -2441,7 +2464,9 @@ return function(intent, rule, words)
   -- (the measure asked by its other names: "what height is it at?", "the Dreamliner, what's its Mach number?")
   -- ("you know" with no auxiliary before it is the spoken filler, "Air Peace 7124 you know, turn left heading
   -- 190", "you know what, climb FL150": no question; "do you know your heading" asks)
-  rule { "what how know", "pos", near = { 4, "altitude speed heading position level alt lvl hdg spd height mach" },
+  -- ("X and Y both, what are their levels?": the measures in the plural, for the aircraft named together)
+  rule { "what how know", "pos", near = { 4, "altitude speed heading position level alt lvl hdg spd height mach "
+      .. "altitudes speeds headings positions levels heights" },
     when = function(g, i)
       local k = g:word(i, "what") and i - 1 or i
       if g:word(i, "what") and value_unsaid(g, i) then return false end
