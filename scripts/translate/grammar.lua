@@ -4975,7 +4975,8 @@ function G:segments(b, e)
             and not self:word_in(last.trig + 1, tr.pos, "@level_condition"))
           -- ("descend with vertical speed 1000 feet per minute": the climb's or descent's manner, "with" straight
           -- after its verb)
-          or (last.intent == "alt" and tr.intent == "vs" and tr.pos == last.trig + 2 and self:word(tr.pos - 1, "with")) then
+          or (last.intent == "alt" and tr.intent == "vs" and tr.pos == last.trig + 2 and self:word(tr.pos - 1, "with")
+            and (self:quantities(tr.pos, e)[1] or {}).kind == "vs") then
         merged = true
       elseif last.intent == "create" and tr.intent == "create" and #self:refs_in(last.trig, tr.pos, "aircraft") == 0 then
         merged = true  -- "make a new ...": one request
@@ -5073,8 +5074,11 @@ function G:segments(b, e)
           -- (the infinitive's "to" between: "..., and Aeroflot 1878 to stop descent at FL240", "UTair 235 to keep
           -- level 360": the aircraft is still this instruction's subject)
           -- (and a verb ending a movement before the instruction word: "..., and Aeroflot stop descent at level 240")
+          -- (a possessive after the verb: "Aeroflot 1878 to stop your descent at level 250")
           if self:word(after, "to") then after = self:skip_fillers(after + 1) end
-          if self:word(after, "@halted") and self:skip_fillers(after + 1) == start then after = start end
+          local obj = self:word(after, "@halted") and self:skip_fillers(after + 1)
+          if obj and self:word(obj, "your its his her their the") then obj = self:skip_fillers(obj + 1) end
+          if obj == start then after = start end
           if after == start then start = r.b end
         end
         -- "heading 070, FL240 climb, speed 300": a value with this instruction's unit said just before its word,
@@ -6059,6 +6063,21 @@ end
 function G:parse(b, e)
   self:typed_wait()
   local segs = self:split_ellipsis(self:segments(b, e))
+  -- ("turn UTair 235 left 20 degrees and Aeroflot 1878 to stop": an aircraft named after an instruction's word, told
+  -- "to" stop with no instruction of its own after it, is no object of the instruction before: asked)
+  for _, sg in ipairs(segs) do
+    for _, r in ipairs(self:refs_in(sg.trig + 1, sg.e, "aircraft")) do
+      local v = self:word(r.e, "to") and self:skip_fillers(r.e + 1)
+      if v and self:word(v, "@halted") and not self:word_in(v + 1, sg.e, "@halted") then
+        local rest = true
+        for k = v + 1, sg.e - 1 do rest = rest and (self.t[k].kind == "punct" or self.t[k].filler) end
+        if rest then
+          return self:need(string.format("What should %s stop? I heard '%s' after the instruction to another "
+            .. "aircraft. Please say its instruction.", r.name:upper(), self:raw(r.b, sg.e):gsub("[%s%p]+$", "")))
+        end
+      end
+    end
+  end
   local prev_out = #self.out
   local valueless, issued_by = {}, {}  -- (G:valueless_left)
   local seg_out = {}  -- seg_out[k]: #self.out before segment k's commands

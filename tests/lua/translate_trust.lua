@@ -13174,7 +13174,8 @@ do
   check_eq(ex("FF 8"), "FF 8")
   check_eq(ex("ff 2 hrs"), "FF 7200")
   asked(ex("ff 8"), "eight seconds or eight minutes")
-  asked(ex("fast forward to 2 hrs"), "a time on the clock or a duration")
+  -- (the clock at its start: a time on the clock and a duration are one; asked once it has run, f187's block)
+  check_eq(ex("fast forward to 2 hrs"), "FF 7200")
 end
 do
   local _, ex = navscene({ "CRE SWA12 B737 41.30 -73.60 090 FL230 280", "ADDWPT SWA12 SAX",
@@ -17510,6 +17511,8 @@ do
   check_eq(ex("turn SVR310 left by 20 degrees and UTA220 to descend to level 200"), "HDG SVR310 180 LEFT ; ALT UTA220 FL200")
   check_eq(ex("turn SVR310 left by 20 degrees, UTA220 to stop climb at level 260"), "HDG SVR310 180 LEFT ; ALT UTA220 FL260")
   check_eq(ex("SVR310 climb level 300, UTA220 to reduce speed 250"), "ALT SVR310 FL300 ; SPD UTA220 250")
+  check_eq(ex("turn SVR310 left 20 degrees and UTA220 stop its climb at level 250"), "HDG SVR310 180 LEFT ; ALT UTA220 FL250")
+  asked(ex("turn SVR310 left 20 degrees and UTA220 to stop"), "what UTA220 stops is unsaid; never turned")
   -- lists of three: the middle one kept, the last told "to keep" its level
   check_eq(ex("SVR310 descend to level two hundred, UTA220 descend to level one eighty, and SDM414 to keep level one "
     .. "hundred twenty."), "ALT SVR310 FL200 ; ALT UTA220 FL180 ; ALT SDM414 FL120")
