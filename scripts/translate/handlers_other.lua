@@ -4083,10 +4083,8 @@ return function(H, f, compass)
     end
     if q.kind == "time" then
       -- "fast forward to 1 hour": "to" before the time names a time on the clock as likely as a duration, asked;
-      -- "to 15 minutes from now", "to 30 minutes later" say the duration; with the clock at its start (world.clock_s
-      -- 0 s) both readings are one ("Fast forward to 5 minutes" before the run has started: FF 300)
-      if self:word(q.b - 1, "to") and q.b - 1 > s.trig and not self:word(q.e, "from later ahead hence")
-          and self.world.clock_s ~= 0 then
+      -- "to 15 minutes from now", "to 30 minutes later" say the duration
+      if self:word(q.b - 1, "to") and q.b - 1 > s.trig and not self:word(q.e, "from later ahead hence") then
         return self:need(string.format("Should the simulation fast-forward for %s, or until the simulation clock reaches %s?",
           self:raw(q.b, q.e), self:raw(q.b, q.e)))
       end

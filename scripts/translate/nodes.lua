@@ -260,8 +260,8 @@ end
 
 -- What the offline grammar may know of the simulation: the aircraft
 -- (sim:aircraft() tables, the route as waypoint names), the user waypoints,
--- the clock's run state ("hold", "op" or "ff": sim:run_state()), the clock itself (clock_s, the simulated
--- time [s]: sim:time()), and the navdata's airports by name and by three-letter code.
+-- the clock's run state ("hold", "op" or "ff": sim:run_state()), and the
+-- navdata's airports by name and by three-letter code.
 function M.world(sim, waypoints)
   local aircraft = sim:aircraft()
   for _, a in ipairs(aircraft) do
@@ -269,7 +269,7 @@ function M.world(sim, waypoints)
     for _, w in ipairs(a.route or {}) do names[#names + 1] = w.name end
     a.route = names
   end
-  return { aircraft = aircraft, waypoints = waypoints or {}, run_state = (sim:run_state()), clock_s = sim:time(),
+  return { aircraft = aircraft, waypoints = waypoints or {}, run_state = (sim:run_state()),
            airports_named = remembered(function(name, lat, lon, nm) return sim:airports_named(name, lat, lon, nm) end),
            airports_of_city = function(name, lat, lon, nm) return sim:airports_of_city(name, lat, lon, nm) end,
            airports_with_words = function(words, lat, lon, nm) return sim:airports_with_words(words, lat, lon, nm) end,
