@@ -2074,6 +2074,27 @@ local function written_forms(text, world)
   where("further thousand", "%f[%a]([Ff]urther) ([Tt]housand)%f[%A]", "%1 one %2")
   where("further hundred", "%f[%a]([Ff]urther) ([Hh]undred)%f[%A]", "%1 one %2")
   where("flightlevel", "%f[%a][Ff][Ll][Ii][Gg][Hh][Tt]([Ll][Ee][Vv][Ee][Ll])%f[%A]", "flight %1")
+  -- ("climb to level 380, no, stop, keep 360": "нет, стоп", a self-correction's "no, wait")
+  where("stop", "%f[%a]([Nn][Oo]%s*,%s*)[Ss][Tt][Oo][Pp](%s*,)", "%1wait%2")
+  -- ("Make so that Aeroflot 1234 flies directly to DEDUM", "Please make it so that ...": "сделайте так, чтобы", the
+  -- wish's frame opening the request or a sentence, "please" or "kindly" before it or not; the clause after it is
+  -- what is wanted, read as said)
+  -- (a colon after it in its sentence, "Please make so that X and Y will not have conflict: X keeps ...", makes it the
+  -- purpose of the instructions after the colon, kept)
+  where("so that", "()%f[%a]([Mm][Aa][Kk][Ee])%s+(%a*)%s*[Ss][Oo]%s+[Tt][Hh][Aa][Tt]%s+()", function(at, _, it, past)
+    if it ~= "" and it:lower() ~= "it" then return nil end
+    if (text:sub(past):match("^[^%.!?]*:")) then return nil end
+    local before = text:sub(1, at - 1):gsub("%s+$", "")
+    local w = before:match("(%a+)$")
+    if w and (w:lower() == "please" or w:lower() == "kindly") then before = before:sub(1, -#w - 1):gsub("%s+$", "") end
+    if before ~= "" and not before:match("[%.!?:;,]$") then return nil end
+    return ""
+  end)
+  -- ("600 kilometers in hour", "500 kilometres in an hour", "kilometers an hour": "км в час", a speed in km/h)
+  for _, p in ipairs({ "[Ii][Nn]%s+[Aa][Nn]", "[Ii][Nn]", "[Aa][Nn]" }) do
+    where("hour", "%f[%a]([Kk][Ii][Ll][Oo][Mm][Ee][Tt][RrEe][EeRr][Ss]?)%s+" .. p .. "%s+([Hh][Oo][Uu][Rr])%f[%A]",
+      "%1 per %2")
+  end
   where("call", "%f[%a]([Cc][Aa][Ll][Ll])[%- ]([Ss][Ii][Gg][Nn])%f[%A]", "%1%2")  -- "call sign"
   -- "Egyptair triple seven", "double two": a digit said twice or three times
   where("double", "%f[%a]([Dd][Oo][Uu][Bb][Ll][Ee])%s+(%a+)%f[%A]", function(_, d)
@@ -4926,7 +4947,9 @@ function G:segments(b, e)
       -- straight after the value parts them as a comma does)
       local at = (self:word(k, "and") and k + 1) or (k == qs[#qs].e and k)
       local other = at and self:refs_in(at, at + 1, "aircraft")[1]
-      local first = other and self:refs_in(b, qs[1].b, "aircraft")[1]
+      -- (the aircraft the value is said to: the last named before it, "X and Y: Aeroflot keeps level 230 and X ...")
+      local named = other and self:refs_in(b, qs[1].b, "aircraft") or {}
+      local first = named[#named]
       if self.t[k].kind == "punct" or self:word(k, "@then_words") or (timed and self:word(k, "and")) or (other and other.exists
           and other.name:upper() ~= first.name:upper()) then
         -- ("BTI6AL 200 knots until ROKLA then 180": a limit until a place, the value again after it, G:until_then_value)
@@ -4964,7 +4987,11 @@ function G:segments(b, e)
       end
       if (li.absorbs and this.value and not own_verb)
           or (last.intent == "alt" and tr.intent == "vs" and self:word(tr.pos, "rate")
-            and not self:word_in(last.trig + 1, tr.pos, "@level_condition")) then
+            and not self:word_in(last.trig + 1, tr.pos, "@level_condition"))
+          -- ("descend with vertical speed 1000 feet per minute": the climb's or descent's manner, "with" straight
+          -- after its verb)
+          or (last.intent == "alt" and tr.intent == "vs" and tr.pos == last.trig + 2 and self:word(tr.pos - 1, "with")
+            and (self:quantities(tr.pos, e)[1] or {}).kind == "vs") then
         merged = true
       elseif last.intent == "create" and tr.intent == "create" and #self:refs_in(last.trig, tr.pos, "aircraft") == 0 then
         merged = true  -- "make a new ...": one request
@@ -5059,6 +5086,14 @@ function G:segments(b, e)
         for _, r in ipairs(self:refs_in(last.trig + 1, start, "aircraft")) do
           local after = self:skip_fillers(r.e)
           if self.cut_back[after] then after = self:skip_fillers(self.cut_back[after]) end
+          -- (the infinitive's "to" between: "..., and Aeroflot 1878 to stop descent at FL240", "UTair 235 to keep
+          -- level 360": the aircraft is still this instruction's subject)
+          -- (and a verb ending a movement before the instruction word: "..., and Aeroflot stop descent at level 240")
+          -- (a possessive after the verb: "Aeroflot 1878 to stop your descent at level 250")
+          if self:word(after, "to") then after = self:skip_fillers(after + 1) end
+          local obj = self:word(after, "@halted") and self:skip_fillers(after + 1)
+          if obj and self:word(obj, "your its his her their the") then obj = self:skip_fillers(obj + 1) end
+          if obj == start then after = start end
           if after == start then start = r.b end
         end
         -- "heading 070, FL240 climb, speed 300": a value with this instruction's unit said just before its word,
@@ -5402,7 +5437,8 @@ end
 -- feet... no, 2000").
 function G:value_said_again(p, a, c)
   -- ("2.5 NM, sorry, please use 4 NM": "use" and the value alone, as "make it")
-  local v = (self:word(c, "it") and self:word(c - 1, "make") or self:word(c, "use")) and c + 1 or c
+  -- ("climb to level 380, no, wait, keep 360": "keep" and the value alone, the value kept in place of the one said)
+  local v = (self:word(c, "it") and self:word(c - 1, "make") or self:word(c, "use keep")) and c + 1 or c
   local old = self:quantities(p + 1, a)
   -- ("7800 metres, sorry, not 7800, is 8100", "..., not 7800 but 8100": the value said before, denied with "not"
   -- and said again as it was, then the new one)
@@ -6042,6 +6078,21 @@ end
 function G:parse(b, e)
   self:typed_wait()
   local segs = self:split_ellipsis(self:segments(b, e))
+  -- ("turn UTair 235 left 20 degrees and Aeroflot 1878 to stop": an aircraft named after an instruction's word, told
+  -- "to" stop with no instruction of its own after it, is no object of the instruction before: asked)
+  for _, sg in ipairs(segs) do
+    for _, r in ipairs(self:refs_in(sg.trig + 1, sg.e, "aircraft")) do
+      local v = self:word(r.e, "to") and self:skip_fillers(r.e + 1)
+      if v and self:word(v, "@halted") and not self:word_in(v + 1, sg.e, "@halted") then
+        local rest = true
+        for k = v + 1, sg.e - 1 do rest = rest and (self.t[k].kind == "punct" or self.t[k].filler) end
+        if rest then
+          return self:need(string.format("What should %s stop? I heard '%s' after the instruction to another "
+            .. "aircraft. Please say its instruction.", r.name:upper(), self:raw(r.b, sg.e):gsub("[%s%p]+$", "")))
+        end
+      end
+    end
+  end
   local prev_out = #self.out
   local valueless, issued_by = {}, {}  -- (G:valueless_left)
   local seg_out = {}  -- seg_out[k]: #self.out before segment k's commands

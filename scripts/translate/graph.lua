@@ -209,7 +209,8 @@ local CONDITION_OPENERS = { at = true }
 for _, w in ipairs(require("translate.lexicon").accounted.condition) do CONDITION_OPENERS[w] = true end
 -- ("cre UAL1542 A320 at 42.05 -89.2, hdg 095 alt FL200": a heading, altitude or speed clause after a
 -- creation gives the new aircraft's fields, English for one creation; "..., alt UAL1542 FL300", naming
--- its callsign, is a command of its own)
+-- its callsign, is a command of its own; so after a move: "Move Nordland 501 to Samara airport at 3000 feet,
+-- heading 150, speed 200" gives the moved aircraft's fields)
 local CREATION_FIELDS = { HDG = true, ALT = true, SPD = true }
 function M.command_clauses(text)
   local parts = {}
@@ -221,7 +222,7 @@ function M.command_clauses(text)
     local cmd = first and nodes.canonical_name(first:gsub("[%p]+$", ""))
     if not cmd or CONDITION_OPENERS[first:lower()] then return nil end
     local arg = (rest:match("^(%S+)") or ""):lower():gsub("[%p]+$", "")
-    if prev == "CRE" and CREATION_FIELDS[cmd] and arg ~= created then return nil end
+    if (prev == "CRE" or prev == "MOVE") and CREATION_FIELDS[cmd] and arg ~= created then return nil end
     prev, created = cmd, arg
     if PRONOUNS[(rest:match("^(%S+)") or ""):lower():gsub("[%p]+$", "")] then return nil end
     parts[#parts + 1] = first .. (rest ~= "" and (" " .. rest) or "")

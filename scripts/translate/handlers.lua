@@ -277,6 +277,12 @@ function m:readdressed(b, trig)
     k = k - 1
     while k > b and (self.t[k].kind == "punct" or self.t[k].filler) do k = k - 1 end
   end
+  -- (a verb ending a movement before the instruction word, the infinitive's "to" before it or not: "..., Aeroflot
+  -- stop descent at level 110", "..., Aeroflot to stop climb at FL200")
+  if self:word(k, "@halted") and k > b + 1 then
+    k = self:word(k - 1, "to") and k - 2 or k - 1
+    while k > b and (self.t[k].kind == "punct" or self.t[k].filler) do k = k - 1 end
+  end
   local last = refs[#refs]
   local pair = last.e == k + 1 and #refs - 1 or #refs
   if pair < 2 then return nil end
@@ -1103,6 +1109,36 @@ function m:addressed_alone(b, e)
   return self.several
 end
 
+-- True when the airline said alone over tokens b..e-1 names back the one aircraft of it flying (`fits`, exactly
+-- one) that the request named by its callsign before b, in a clause naming two or more aircraft of different
+-- airlines ("UTair 125 and Aeroflot 1736 are converging, Aeroflot stop descent at level 110, UTair descend ...",
+-- "... are in conflict, turn Astanaline right on 30 degrees"): the pair named, then each told apart by its airline.
+-- The airline written with a capital, no number, letter or "the" after or before it (airline_refs checks those).
+function m:airline_named_back(b, fits)
+  if #fits ~= 1 or not self.t[b].raw:match("^%u") then return false end
+  -- (named together: another aircraft straight before or after it, "and", "&" or a comma between, as m:acids reads
+  -- an airline left unresolved; one named as its own instruction's addressee, "RYR77 speed 240, Ryanair descend",
+  -- is not)
+  local refs = {}
+  for _, r in ipairs(self.refs) do
+    if r.kind == "aircraft" and r.exists and not r.by_airline and r.e <= b then refs[#refs + 1] = r end
+  end
+  for x, r in ipairs(refs) do
+    if r.name:upper() == fits[1]:upper() then
+      for _, q in ipairs({ refs[x - 1] or false, refs[x + 1] or false }) do
+        if q and q.name:upper() ~= r.name:upper() then
+          local gap = q.b > r.b and r.e or q.e
+          if (q.b > r.b and q.b or r.b) == gap + 1
+              and (self:word(gap, "and") or self.t[gap].text == "," or self.t[gap].text == "&") then
+            return true
+          end
+        end
+      end
+    end
+  end
+  return false
+end
+
 -- True when the airline said alone over tokens b..e-1 is what a question about an aircraft's
 -- whereabouts names ("where is ryanair", "what's Ryanair doing"): a question, never a cut-short callsign
 -- given an instruction, so it is the one aircraft of that airline flying (asked about with several).
@@ -1433,7 +1469,8 @@ function m:airline_refs()
         type_e = typed and te
       end
       local ok = not inside[i] and not inside[e - 1]
-          and (the or for_it or self:addressed_alone(i, e) or self:asked_where(i, e) or self:object_article_dropped(i))
+          and (the or for_it or self:addressed_alone(i, e) or self:asked_where(i, e) or self:object_article_dropped(i)
+            or self:airline_named_back(i, self:airline_fleet(icao, codes)))
           and not (nxt and (nxt.kind == "number" or nxt.number_word or L.phonetic[nxt.text]
             or self:word(e, "heavy super")) and not (the and pronoun_one(e)))
           and (typed or not self:new_aircraft_follows(e - 1))
@@ -1442,7 +1479,8 @@ function m:airline_refs()
       if ok and not typed and #fits > 0 then fits = self:airline_name_shared(self:said_name(i, e), fits) end
       -- ("Ryanair descend FL200 and RYR4411 speed 250": an airline alone addressed, without "the", whose one
       -- aircraft flying the request names by its callsign elsewhere is a callsign cut short, never that aircraft)
-      for _, r in ipairs(ok and not the and #fits == 1 and self.refs or {}) do
+      local back = ok and not the and self:airline_named_back(i, fits)
+      for _, r in ipairs(ok and not the and not back and #fits == 1 and self.refs or {}) do
         if r.kind == "aircraft" and r.name == fits[1] and (r.b >= e or r.e <= i) then fits = {} end
       end
       if typed then

@@ -2665,6 +2665,13 @@ return function(H, f, compass)
     -- "... after WPC" / "before WPC": ADDWPT's afterwp / beforewp
     -- (also before the verb: "after REMBI add the waypoint ESAMA")
     local at = self:find_word(s.b, s.e, "after before")
+    -- ("add the point PIGOR before destination", "... before its destination": where ADDWPT puts it anyway, the
+    -- route's end before the destination; the words explained, no waypoint next to it)
+    local dest_at = self:word(at + 1, "the its his her their") and at + 2 or at + 1
+    if at < s.e and self:word(at, "before") and self:word(dest_at, "destination dest") then
+      self:explain(at, dest_at + 1)
+      at = s.e
+    end
     local next_to = at < s.e and self:refs_in(at + 1, at + 2, "waypoint")[1]
     -- ("insert Midhurst after Compton": the place next to it said by its one-word name)
     -- (or by two capitalised words, "after Queen Alia": the QAA VOR on its route)
@@ -2991,6 +2998,9 @@ return function(H, f, compass)
       local nx = self.t[k + 1]
       -- ("wind from 320 with 25 knots in Lisbon": "in" before a place's name, as Spanish and Portuguese say "en")
       if self:word(k, "at over overhead near around above in") and nx and nx.kind == "word" then
+        -- ("at point MK1", "at the waypoint MK1": the place's noun between, the place after it)
+        local a = k + (self:word(k + 1, "the") and 1 or 0)
+        if self:word(a + 1, "point waypoint fix") and self:refs_in(a + 2, a + 3, "waypoint")[1] then k = a + 1 end
         local r = self:refs_in(k + 1, k + 2, "waypoint")[1]
         if r and not self:word(r.b, "@navaid_kinds") then return r.name:upper() end
         local id = self:place_by_name(k + 1, math.min(s.e, k + 4))

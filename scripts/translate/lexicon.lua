@@ -1136,7 +1136,9 @@ return {
                                    "wait a second", "wait a moment", "wait a minute", "wait a sec",
                                    "give me a second", "give me a moment", "give me a sec", "forget it",
                                    "scrap that", "ignore that", "cancel that", "not that", "not yet",
-                                   "i'm not sure", "not sure" },
+                                   "i'm not sure", "not sure",
+                                   -- ("descend to level 280, no, stop, keep": what is kept is unsaid)
+                                   "keep", "keep it" },
                       -- formal apologies, and a slip's exclamation as typed ("oops", "ops", "opps", "oups"),
                       -- read as "sorry" (a marker) wherever they are said ("Mach 0.80 -- pardon me, Mach 0.78",
                       -- "the United -- no, forgive me, the Southwest", "Gol 12, ops, Gol 21, descend ...")
@@ -2315,6 +2317,8 @@ return {
     -- place name's word elsewhere; French said whole is lexicon.said_whole.french)
     { heard = { "cap" }, means = "heading", before = { "#number" }, not_after = { "red" } },
     { heard = { "niveau" }, means = "flight level", before = { "#number" } },
+    -- the Russian-speaking controller's word for a flight level ("эшелон": "climb and maintain echelon 180")
+    { heard = { "echelon", "eshelon" }, means = "flight level", before = { "#number" } },
     { heard = { "vitesse" }, means = "speed", before = { "#number" } },
     { heard = { "monte" }, means = "climb", before = { "#number", "niveau", "a", "fl" } },
     -- Spanish words said in an English clearance that are also Portuguese or Italian, read only where

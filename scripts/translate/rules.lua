@@ -793,8 +793,14 @@ return function(intent, rule, words)
   -- "NATO01 track 090", "fly track 240", "descend FL250 and track 220": a track of three digits (up to 360) flown
   -- as a heading; a track named with a noun before it ("inbound track 270", "the tanker track") is none; so is a
   -- course ("take course 090", "fly course 240": the Russian-speaking controller's word for the heading)
+  -- (said in number words, "take course three hundred": a whole number of degrees up to 360)
   rule { "track course", "hdg", not_prev = { 1, "inbound outbound the a your its tanker" }, when = function(g, i)
     local t = g.t[i + 1]
+    if t ~= nil and t.kind ~= "number" and t.number_word then
+      local q = g:quantities(i + 1, math.min(#g.t + 1, i + 5))[1]
+      return q ~= nil and q.b == i + 1 and (q.kind == "plain" or q.kind == "heading") and q.number ~= nil
+        and not q.number.decimal and q.value >= 1 and q.value <= 360
+    end
     return t ~= nil and t.kind == "number" and t.text:match("^%d%d%d$") ~= nil and tonumber(t.text) <= 360
   end }
   -- "bank max 30 degrees in turns", "limit the bank to 25 when turning": when a bank limit applies, no turn
@@ -1229,6 +1235,16 @@ return function(intent, rule, words)
   -- the verb after the waypoint (verb-final order), a route noun or "between"/"after"/"before" and a waypoint
   -- after it
   rule { "add append insert", "addwpt", when = function(g, i) return g:verb_final_waypoint(i) ~= nil end }
+  -- "Add for Astanaline 929 the point PIGOR before destination", "add TIRBA before its destination": a waypoint
+  -- straight before "before" and the destination, the verb's within a clause
+  rule { "add append insert", "addwpt", when = function(g, i)
+    local d = g:find_word(i + 1, math.min(#g.t + 1, i + 12), "destination")
+    if d >= math.min(#g.t + 1, i + 12) then return false end
+    local k = g:word(d - 1, "the its his her their") and d - 2 or d - 1
+    if not g:word(k, "before") then return false end
+    local w = g:refs_in(i + 1, k, "waypoint")
+    return w[#w] ~= nil and w[#w].e == k
+  end }
   -- "add the point EXIT2": a point that is a known waypoint
   rule { "add append insert", "addwpt", near = { 3, "point" },
          when = function(g, i) return g:has_ref(g:find_word(i + 1, i + 4, "point") + 1, i + 5, "waypoint") end }
@@ -1716,6 +1732,19 @@ return function(intent, rule, words)
   rule { "destination", false, when = function(g, i)
     for k = i - 1, 1, -1 do
       if g:intent_at(k) == "mcre" then return #g:refs_in(k, i, "aircraft") == 0 end
+    end
+    return false
+  end }
+  -- "Add for Astanaline 929 the point PIGOR before destination", "add waypoint EKBUR to the route of UTair 125
+  -- before its destination": where ADDWPT puts the waypoint anyway (the route's end, before the destination), no
+  -- destination of its own; "before" and the noun closing the request or a clause after an instruction to add
+  rule { "destination dest", false, when = function(g, i)
+    local k = g:word(i - 1, "the its his her their") and i - 2 or i - 1
+    local e = g:skip_fillers(i + 1)
+    if not g:word(k, "before") or (g.t[e] and g.t[e].kind ~= "punct") then return false end
+    for x = k - 1, 1, -1 do
+      if g.t[x].kind == "punct" and g.t[x].text ~= "," then return false end
+      if g:intent_at(x) == "addwpt" then return true end
     end
     return false
   end }
@@ -2491,7 +2520,9 @@ return function(intent, rule, words)
   -- (the measure asked by its other names: "what height is it at?", "the Dreamliner, what's its Mach number?")
   -- ("you know" with no auxiliary before it is the spoken filler, "Air Peace 7124 you know, turn left heading
   -- 190", "you know what, climb FL150": no question; "do you know your heading" asks)
-  rule { "what how know", "pos", near = { 4, "altitude speed heading position level alt lvl hdg spd height mach" },
+  -- ("X and Y both, what are their levels?": the measures in the plural, for the aircraft named together)
+  rule { "what how know", "pos", near = { 4, "altitude speed heading position level alt lvl hdg spd height mach "
+      .. "altitudes speeds headings positions levels heights" },
     when = function(g, i)
       local k = g:word(i, "what") and i - 1 or i
       if g:word(i, "what") and value_unsaid(g, i) then return false end

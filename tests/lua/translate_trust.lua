@@ -17686,4 +17686,71 @@ do
     -- (the words lexicon.remark_not lists are known to that pass alone: "later" elsewhere is still asked)
     asked(ex("SAS925 climb FL120 later"), "'later' stays unknown")
   end
+-- Cycle 58 (f187): R187's Russian- and Kazakh-English habits other than conditions. An instruction given to one
+-- aircraft never spreads to the next aircraft named with its own instruction (the infinitive's "to", a halting verb
+-- between); an airline said alone names back the one of a pair just named; "echelon", "take course", "make so that",
+-- "with vertical speed", "kilometers in hour", a move's fields after commas, "no, stop, keep N", measures asked in
+-- the plural, "at point X", "before destination"
+do
+  local s, ex = scene({ "CRE SVR310 A320 56.7 60.6 200 FL250 280", "CRE UTA220 B738 56.9 60.3 090 FL230 270",
+    "CRE SDM414 A319 56.5 60.9 010 FL120 250", "DEFWPT OSKAR1 56.8 61.0", "DEFWPT OSKAR2 57.0 61.1",
+    "ADDWPT SDM414 OSKAR1", "ADDWPT SDM414 OSKAR2",
+    "CRE TUA77 B738 56.2 60.1 300 FL300 260", "DEFWPT KILO1 56.6 60.5" })
+  -- the hazard: a turn given to the first never reaches the second, told "to stop descent" (or any verb after "to")
+  check_eq(ex("SVR310 and UTA220 are in conflict, turn Ural right on 20 degrees and UTair to stop climb at "
+    .. "level 240."), "HDG SVR310 220 RIGHT ; ALT UTA220 FL240")
+  check_eq(ex("turn SVR310 left by 20 degrees and UTA220 to descend to level 200"), "HDG SVR310 180 LEFT ; ALT UTA220 FL200")
+  check_eq(ex("turn SVR310 left by 20 degrees, UTA220 to stop climb at level 260"), "HDG SVR310 180 LEFT ; ALT UTA220 FL260")
+  check_eq(ex("SVR310 climb level 300, UTA220 to reduce speed 250"), "ALT SVR310 FL300 ; SPD UTA220 250")
+  check_eq(ex("turn SVR310 left 20 degrees and UTA220 stop its climb at level 250"), "HDG SVR310 180 LEFT ; ALT UTA220 FL250")
+  asked(ex("turn SVR310 left 20 degrees and UTA220 to stop"), "what UTA220 stops is unsaid; never turned")
+  -- lists of three: the middle one kept, the last told "to keep" its level
+  check_eq(ex("SVR310 descend to level two hundred, UTA220 descend to level one eighty, and SDM414 to keep level one "
+    .. "hundred twenty."), "ALT SVR310 FL200 ; ALT UTA220 FL180 ; ALT SDM414 FL120")
+  check_eq(ex("SDM414 descend to level 100, SVR310 to maintain level 210, no, excuse me, level 220."),
+    "ALT SDM414 FL100 ; ALT SVR310 FL220")
+  -- an airline alone after the pair named in full: each told apart by its airline
+  check_eq(ex("UTA220 and SDM414 are converging, UTair stop climb at level 240, Rossiya descend to level 80."),
+    "ALT UTA220 FL240 ; ALT SDM414 FL80")
+  check_eq(ex("Please make so that SVR310 and TUA77 will not have conflict: Turkmenistan keeps level 300 and SVR310 "
+    .. "descends to level 230."), "ALT SVR310 FL230")
+  -- echelon, course, make so that, with vertical speed
+  check_eq(ex("UTA220 climb and maintain echelon 250, please."), "ALT UTA220 FL250")
+  check_eq(ex("SDM414, descend to echelon one hundred."), "ALT SDM414 FL100")
+  asked(ex("SDM414, climb to echelon."), "no level said")
+  check_eq(ex("TUA77, take course three hundred twenty."), "HDG TUA77 320")
+  check_eq(ex("TUA77 take course 090"), "HDG TUA77 90")
+  check_eq(ex("Make so that SDM414 flies directly to point OSKAR2."), "DIRECT SDM414 OSKAR2")
+  check_eq(ex("Please make it so that UTA220 climbs to level 270"), "ALT UTA220 FL270")
+  check_eq(ex("SDM414, descend with vertical speed 1500 feet per minute."), "VS SDM414 -1500")
+  check_eq(ex("TUA77, climb with vertical speed 2000 feet per minute"), "VS TUA77 2000")
+  asked(ex("TUA77, descend with vertical speed."), "no rate or level")
+  -- kilometres in an hour: the nearest knot, against its verb still asked
+  check_eq(ex("SVR310 reduce speed to 500 kilometers in hour"), "SPD SVR310 270")
+  check_eq(ex("UTA220 reduce speed to 450 kilometres in an hour."), "SPD UTA220 243")
+  asked(ex("SDM414 reduce speed to 600 kilometers in hour"), "324 kt is faster than its 250 kt")
+  -- a correction with "no, stop" and the value kept; "keep" alone after it is asked
+  check_eq(ex("TUA77, climb to level 340, no, stop, keep 300."), "ALT TUA77 FL300")
+  check_eq(ex("UTA220 reduce speed to 240 knots, no, stop, keep 270"), "SPD UTA220 270")
+  asked(ex("SVR310 descend to level 200, no, stop, keep"), "what is kept is unsaid")
+  -- measures asked in the plural; a waypoint added before the destination
+  check_eq(ex("SVR310 and TUA77 both, what are their levels?"), "POS SVR310 ; POS TUA77")
+  check_eq(ex("what are the headings of UTA220 and SDM414?"), "POS UTA220 ; POS SDM414")
+  check_eq(ex("Add for SDM414 the point KILO1 before destination."), "ADDWPT SDM414 KILO1")
+  check_eq(ex("SDM414, add KILO1 before its destination, please"), "ADDWPT SDM414 KILO1")
+  -- fast forward "to" a time: a duration or a time on the clock, asked (r40-257's decision kept)
+  asked(ex("Fast forward to 5 minutes."), "a duration or a time on the clock")
+  check_eq(ex("fast forward 5 minutes"), "FF 300")
+end
+do
+  -- the wind at a user waypoint said after "point" (the waypoints the setup defined known, as eval-translate knows them)
+  local s = scene({ "CRE SVR310 A320 56.7 60.6 200 FL250 280", "DEFWPT KILO1 56.6 60.5" })
+  local function wx(text) return said(graph.translate(text, { sim = s, mode = "offline", waypoints = { "KILO1" } })) end
+  check_eq(wx("Set the wind 270 degrees 40 knots at point KILO1."), "WIND KILO1 270 40")
+  check_eq(wx("set wind 090 degrees 20 knots at the waypoint KILO1"), "WIND KILO1 90 20")
+end
+do
+  local _, ex = scene({ "CRE SVR310 A320 56.7 60.6 200 FL250 280", "CRE UTA220 B738 56.9 60.3 090 FL230 270",
+    "DEFWPT KILO1 56.6 60.5" })
+  check_eq(ex("Move SVR310 to KILO1 at 3000 feet, heading 150, speed 200."), "MOVE SVR310 KILO1 3000 150 200")
 end
