@@ -17686,6 +17686,7 @@ do
     -- (the words lexicon.remark_not lists are known to that pass alone: "later" elsewhere is still asked)
     asked(ex("SAS925 climb FL120 later"), "'later' stays unknown")
   end
+end
 -- Cycle 58 (f187): R187's Russian- and Kazakh-English habits other than conditions. An instruction given to one
 -- aircraft never spreads to the next aircraft named with its own instruction (the infinitive's "to", a halting verb
 -- between); an airline said alone names back the one of a pair just named; "echelon", "take course", "make so that",
