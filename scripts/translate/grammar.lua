@@ -10745,6 +10745,7 @@ end
 --   the addressee named, as "for Aeroflot 1661 at IBLAN level 150").
 -- Nothing else changes: "will" elsewhere, "point" before no waypoint, "let" with no condition before it stay.
 function G:condition_grammar_words()
+  if not self:said("point let with set") then return end
   local n = #self.t
   local function wp_at(k)
     local r = self:refs_in(k, k + 1, "waypoint")[1]
