@@ -3892,6 +3892,30 @@ function G:trailing_level_condition()
         reached = joined and reached
         if reached then v = first.b - 1 end
       end
+      -- ("reduce speed 250 knots then descend FL180 when at 250", "..., descend FL180 once it is at 250 knots": a
+      -- speed this request gave with a speed instruction, said again after "when at" or "once at" closing the request,
+      -- is the speed the instruction of its clause waits for, ATSPD, as G:speed_again_at reads it said before; a value
+      -- the request also gave as a level, or one it never gave, is left to be asked)
+      if opened and not by_time and first and first.b > v and self:word(first.b - 1, "at")
+          and (first.kind == "speed" or first.kind == "mach" or (first.kind == "plain" and first.value >= 100
+            and first.value < 1000)) then
+        local only = true
+        for x = v, first.b - 2 do only = only and (self.t[x].filler or LINKING[self.words[x]] or false) end
+        local given, level = false, false
+        for _, p in ipairs(only and self:quantities(1, k) or {}) do
+          local w = self:word(p.b - 1, "to") and p.b - 2 or p.b - 1
+          if p.value == first.value and (p.kind == "speed" or p.kind == "mach"
+              or (p.kind == "plain" and self:intent_at(w) == "spd")) then
+            given = true
+          end
+          level = level or (p.kind == "alt" and (p.value == first.value or p.value == first.value * 100))
+            or (p.kind == "plain" and p.value == first.value and self:intent_at(w) == "alt")
+        end
+        local ce = given and not level and self:condition_closed(k, first.e)
+        if ce and #self:quantities(first.e, ce) == 0 and not self:any_instruction_in(first.e, ce) then
+          return k, first, "ATSPD", ce
+        end
+      end
       -- ("descend to 8000 once it has slowed to 230", "... once it's slowed to 230": a speed, ATSPD)
       if reached and slowed and not by_time then
         local q = first
@@ -6154,8 +6178,18 @@ function G:parse(b, e)
       if until_wp or until_lvl then before = nil end
       local at_next = self.at_next
       self.at_next = nil
+      -- (a time the instruction before is held for, "heading 060 for 2 minutes, then ...": this one waits it,
+      -- m:held_for; with a condition of its own too, which one is asked)
+      local waited = self.wait_next
+      self.wait_next = nil
       local at = self:at_altitude(s) or self:at_speed(s) or self:at_speed_again(s) or self:at_distance(s)
         or self:at_time(s) or self.at_all
+      if waited and at then
+        self:need(string.format("Should the instruction after '%s' wait for it, or for its own condition?",
+          waited:gsub("^DELAY ", "") .. " s"))
+        break
+      end
+      at = at or waited
       -- ("reduce speed 210 when passing 8000 ft and descend to 7000 ft": which instruction waits is asked)
       if at and at ~= self.at_all and self:condition_between(segs, k, at, seg_out[k - 1]) then break end
       -- "slow to 240 knots when it reaches flight level 200", "turn heading 180, but only when it is at
@@ -6340,6 +6374,11 @@ function G:parse(b, e)
     issued_by[k] = #self.out > prev_out
   end
   self:valueless_left(segs, valueless, issued_by)
+  -- (a time held for with no instruction after it to wait: asked, never dropped)
+  if self.wait_next and not self.ask then
+    self:need("Which instruction should wait " .. self.wait_next:gsub("^DELAY ", "") .. " s?")
+  end
+  self.wait_next = nil
   -- (a waypoint said for the next instruction, with none after it)
   if self.at_next and not self.ask then tied_to_waypoint(self, self.at_next) end
   self.at_next = nil
@@ -6793,7 +6832,10 @@ function G:after_place_value(i)
   local r = self.refs and self:refs_in(v, math.min(#self.t + 1, v + 4), "waypoint")[1]
   if not r or r.b ~= v then return nil end
   local q = self:quantities(r.e, #self.t + 1)[1]
-  if not q or q.b ~= self:skip_fillers(r.e) then return nil end
+  -- ("reduce speed to 230 knots, after OTRON to 210": "to" before the value, as the verb said before it)
+  local qb = self:skip_fillers(r.e)
+  if self:word(qb, "to") then qb = self:skip_fillers(qb + 1) end
+  if not q or q.b ~= qb then return nil end
   -- ("speed 250 then after NUKSI 220", "..., and then after NUKSI 220": a "then" before "after" waits for the place
   -- named, never for the value before it)
   local c = i - 1
@@ -10839,6 +10881,55 @@ function G:infinitive_after_condition()
   end
 end
 
+-- The grammar of a condition said in Russian (and Kazakh) formal English, words with no meaning of their own in it:
+-- fillers, so the condition reads as its English form does.
+-- ("will" of the future in such a condition is dropped from the text before, G.future_will.)
+-- - "point" before a waypoint named after a word that ties an instruction to it ("after point SELNA", "at the
+--   point IBLAN", "till point PINOS", "passing point X": the waypoint itself, as "after SELNA").
+-- - "let" and the pronoun after it before an instruction word, in a clause that a condition opened ("and when it
+--   will reach level 150 let it increase speed": the instruction of the condition, as "increase speed").
+-- - "with" between a waypoint crossed and a speed or level ("cross RANAD with 250 knots": "cross RANAD 250 knots").
+-- - "set" opening the request before "for" and the callsign ("Set for Aeroflot 1661 at the point IBLAN level 150":
+--   the addressee named, as "for Aeroflot 1661 at IBLAN level 150").
+-- Nothing else changes: "will" elsewhere, "point" before no waypoint, "let" with no condition before it stay.
+function G:condition_grammar_words()
+  if not self:said("point let with set") then return end
+  local n = #self.t
+  local function wp_at(k)
+    local r = self:refs_in(k, k + 1, "waypoint")[1]
+    return r and r.b == k and r
+  end
+  for k = 2, n - 1 do
+    if self:word(k, "point") and wp_at(self:skip_fillers(k + 1)) then
+      local p = k - 1
+      while p > 1 and self.t[p].filler do p = p - 1 end
+      if self:word(p, "at after till until over overhead passing pass passes past cross crosses crossing reach "
+          .. "reaches reaching before") then
+        self:blank(k)
+      end
+    elseif self:word(k, "let") and self:word(k + 1, "it him her them") and self:intent_at(k + 2) then
+      local c = k - 1
+      while c > 1 and self.t[c - 1].kind ~= "punct" and not self:word(c - 1, "and @then_words") do c = c - 1 end
+      if self:word(c, "when once after") and self:word_in(c, k, "it he she they") then
+        self:blank(k)
+        self:blank(k + 1)
+      end
+    elseif self:word(k, "with") then
+      local r = self:refs_in(math.max(1, k - 4), k, "waypoint")
+      r = r[#r]
+      local q = self:quantities(k + 1, n + 1)[1]
+      if r and r.e == k and self:word(r.b - 1, "cross crosses crossing") and q and q.b == self:skip_fillers(k + 1)
+          and (q.kind == "speed" or q.kind == "alt" or q.kind == "mach") then
+        self:blank(k)
+      end
+    end
+  end
+  local f = self:skip_fillers(1)
+  if self:word(f, "set") and self:word(f + 1, "for") and #self:refs_in(f + 2, f + 3, "aircraft") > 0 then
+    self:blank(f)
+  end
+end
+
 -- "accelerate the KLM to 300 knots, and when it has reached 300 knots, it shall climb to FL 350": after a condition
 -- set off by commas (its clause opening with a word of lexicon.condition, after "and", "then" or "only"), the main
 -- clause's subject and modal in the German word order ("it shall", "he should", "they will", "both shall", "let it";
@@ -13546,6 +13637,24 @@ function G.after_reach(text, world)
   return (text:gsub("(%f[%a][Aa][Ff][Tt][Ee][Rr]%s+)([Rr][Ee][Aa][Cc][Hh])(%f[%A])", "%1%2ing%3"))
 end
 
+-- "after it will pass IBLAN", "when it will reach level 150", "when he will be above level 100" (the future tense
+-- of Russian formal English in a condition): "will" between the aircraft's pronoun and a verb of passing, reaching
+-- or being, after "when", "once", "after", "until" or "till", is dropped: the text as "after it pass IBLAN" reads.
+-- "will" anywhere else is kept.
+G.future_will_sets = { opens = set_of({ "when", "once", "after", "until", "till" }),
+  subjects = set_of({ "it", "he", "she", "they" }),
+  verbs = set_of({ "pass", "reach", "cross", "overfly", "be", "get", "descend", "climb", "slow", "leave" }) }
+function G.future_will(text)
+  if not text:lower():find("%f[%a]will%f[%A]") then return text end
+  local F = G.future_will_sets
+  return (text:gsub("(%f[%a]%a+)(%s+)(%a+)(%s+)([Ww][Ii][Ll][Ll])%s+(%a+%f[%A])", function(c, s1, subj, s2, _, verb)
+    if F.opens[c:lower()] and F.subjects[subj:lower()] and F.verbs[verb:lower()] then
+      return c .. s1 .. subj .. s2 .. verb
+    end
+    return nil
+  end))
+end
+
 function G.terse_altitude(text, world)
   if not text:find("%d%d%d%d") then return text end
   -- (the first word names an aircraft flying)
@@ -14406,7 +14515,7 @@ function M.translate(text, world)
   text = G.confirmed_route_places(G.spelled_route_places(G.syllable_route_places(typed_places(G.named_idents(
     G.spoken_user_waypoints(G.navaids_by_kind(written_forms(text, world), world), world), world),
     world), world), world), world)
-  text = G.terse_altitude(G.after_reach(spelled_airports(text, world), world), world)
+  text = G.terse_altitude(G.after_reach(G.future_will(spelled_airports(text, world)), world), world)
   local run_on
   text, run_on = G.run_on_values(text)
   if run_on then return { commands = {}, ask = run_on } end
@@ -14496,6 +14605,7 @@ function M.translate(text, world)
   g:aircraft_kept()
   g:aircraft_left_alone()
   g:kept_present()
+  g:condition_grammar_words()
   g:infinitive_after_condition()
   g:subject_after_condition()
   g:acknowledged()
@@ -14516,6 +14626,22 @@ function M.translate(text, world)
     local clause = rest
     for x = rest, (k or 0) - 1 do
       if g.t[x].kind == "punct" or g:word(x, "and @then_words") then clause = x + 1 end
+    end
+    -- (a callsign alone before the clause, "Aeroflot 1102, reduce speed 250 when it is below FL100", is the
+    -- clause's addressee: parsed with it)
+    if clause > rest and k then
+      local alone, named = true, 0
+      local x = rest
+      while alone and x < clause do
+        local r = g:refs_in(x, x + 1, "aircraft")[1]
+        if r and r.b == x then
+          x, named = r.e, named + 1
+        else
+          alone = g.t[x].filler or (g.t[x].kind == "punct" and g.t[x].text == ",")
+          x = x + 1
+        end
+      end
+      if alone and named == 1 then clause = rest end
     end
     if clause > rest then g:parse(rest, clause) end
     local before = #g.out

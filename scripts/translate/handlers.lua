@@ -4087,6 +4087,27 @@ function m:typed_wait()
   self.at_all = self:word(w, "delay") and "DELAY " .. f.num(q.value) or schedule_at(q.value)
   return self.at_all
 end
+-- "turn right heading 060 for 2 minutes, then return to its own route", "fly heading 200 for 90 seconds and then
+-- resume own navigation": a time said after "for" straight after the value of segment s (a heading, level, speed or
+-- rate), then "then" (a comma or "and" before it or not) and the next instruction, is how long the value is held:
+-- the next instruction waits that long from now ("DELAY s", kept in self.wait_next for the next segment's
+-- m:at_time). True when so read (the time and "for" marked used); the instruction of s runs now.
+function m:held_for(s, q, w)
+  if not (self:word(w, "for") and q.b > s.trig and TIMED_VALUES[s.intent]) or q.spoken or q.loose then return false end
+  local p = w - 1
+  while p > s.trig and self.t[p].filler do p = p - 1 end
+  local v = self:quantities(s.trig, w)
+  v = v[#v]
+  if not (v and v.e == p + 1 and v.kind ~= "time") then return false end
+  local k = q.e
+  while self.t[k] and (self.t[k].filler or (self.t[k].kind == "punct" and self.t[k].text == ",") or self:word(k, "and")) do
+    k = k + 1
+  end
+  if not self:word(k, "@then_words") or not self:any_instruction_in(k + 1, #self.t + 1) then return false end
+  self:mark_used(w, q.e)
+  self.wait_next = "DELAY " .. f.num(q.value)
+  return true
+end
 function m:at_time(s)
   if OWN_TIME[s.intent] and not (s.intent == "ff" and self:word(s.trig, "speed spd airspeed")) then return nil end
   if s.intent == "echo" and s.trig == self:skip_fillers(1) and self:word(s.trig, "echo") then return nil end
@@ -4111,6 +4132,7 @@ function m:at_time(s)
     -- (a time in a reason set aside after the instruction, or in a clause of the speaker's own, "delete KLM12,
     -- we'll re-create it in 2 minutes", is no wait of the instruction: left to the accounting)
     if q.b > s.trig and (self:in_reason(q.b) or self:word_in(s.trig, q.b, OWN)) then return nil end
+    if self:held_for(s, q, w) then return nil end
     local lead = not self.taken[q.b] and (self:word(w, "in after") and w or self:wait_lead(w, q, s.trig))
     if q.spoken and lead and q.loose then
       return self:need(string.format("How long should the wait before the instruction be? I heard '%s': please "
@@ -4154,6 +4176,10 @@ function m:at_time(s)
       local k = q.e
       while k < s.e and self.t[k].filler and not self:word(k, "and @then_words") do k = k + 1 end
       local next_one = not after and q.b > s.trig and s.e <= #self.t and k == s.e
+      -- ("turn right heading 060, in 2 minutes return on your route": words of another instruction after the wait,
+      -- no value of their own: which one waits is asked, never the heading delayed and the rest dropped)
+      next_one = next_one or (not after and q.b > s.trig and k < s.e and self.t[k].kind == "word"
+        and not self:word(k, "and @then_words @aside_comments"))
       if before and (after or next_one) then
         return self:need(string.format("Which instruction should wait '%s': the one before it, the one after it, or "
           .. "both?", self:raw(w, q.e)))

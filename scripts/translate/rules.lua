@@ -2788,9 +2788,11 @@ return function(intent, rule, words)
     local k = g:word(i + 1, "on along with") and i + 2 or i + 1
     return g:word(k, "your its the his her own") and g:word(k + 1, "route")
   end }
-  -- "return to the route", "return to its route": the route flown again (a place named is a direct-to)
-  rule { "return returns", "lnav", next = "to", when = function(g, i)
-    return g:word(i + 2, "the its your his her") and g:word(i + 3, "route") and not g:has_ref(i + 4, #g.t + 1, "waypoint")
+  -- "return to the route", "return to its route", "return on its own route" (Russian "on"): the route flown again
+  -- (a place named is a direct-to)
+  rule { "return returns", "lnav", next = "to on onto", when = function(g, i)
+    local k = g:word(i + 3, "own") and i + 4 or i + 3
+    return g:word(i + 2, "the its your his her their") and g:word(k, "route") and not g:has_ref(k + 1, #g.t + 1, "waypoint")
   end }
   -- ("follow its route vertically", "... the altitudes of its route" is VNAV alone; VNAV named as a switch
   -- beside it, "follow its route again with VNAV engaged", is one more instruction)

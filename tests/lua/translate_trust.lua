@@ -17755,3 +17755,63 @@ do
     "DEFWPT KILO1 56.6 60.5" })
   check_eq(ex("Move SVR310 to KILO1 at 3000 feet, heading 150, speed 200."), "MOVE SVR310 KILO1 3000 150 200")
 end
+-- Cycle 58 (fcd6): conditions and sequencing said in Russian and Kazakh formal English: the future "after it will
+-- pass X" / "when it will reach level N", "point" before the fix ("after point X", "at the point X"), "let it" after
+-- a condition, "to make speed", "Set for CALLSIGN at ...", "after X to 210", "cross X with 250 knots", "when at
+-- 250" closing the request (the speed given said again), "heading 060 for 2 minutes, then return on its own route"
+-- (DELAY); a callsign alone before a clause with a trailing condition
+do
+  local _, ex = scene({ "DEFWPT KUPOL 55.0 37.0", "DEFWPT TUMAN 55.3 37.6", "DEFWPT BEREG 56.0 38.0",
+    "CRE SVR2790 A321 54.8 36.6 045 FL240 290", "ADDWPT SVR2790 KUPOL", "ADDWPT SVR2790 TUMAN",
+    "CRE BRU841 E195 55.5 36.8 090 FL130 260", "ADDWPT BRU841 TUMAN", "ADDWPT BRU841 BEREG" })
+  -- the future tense in the condition, after or before the instruction, "it" or "he"
+  check_eq(ex("Ural 2790 reduce speed 260 knots after it will pass KUPOL"), "AT SVR2790 KUPOL DO SPD SVR2790 260")
+  check_eq(ex("Belarus Avia 841, after he will pass TUMAN, turn left heading 020, please"),
+    "AT BRU841 TUMAN DO HDG BRU841 20 LEFT")
+  check_eq(ex("Ural 2790 descend to level 200, after it will pass KUPOL reduce speed to 250"),
+    "ALT SVR2790 FL200 ; AT SVR2790 KUPOL DO SPD SVR2790 250")
+  check_eq(ex("Belarus Avia 841 climb to level 170, and when it will reach level 150 let it increase speed to 280 "
+    .. "knots"), "ALT BRU841 FL170 ; ATALT BRU841 FL150 SPD BRU841 280")
+  check_eq(ex("Ural 2790 increase speed to 310 knots and when it will reach 310 knots, descend to level 200"),
+    "SPD SVR2790 310 ; ATSPD SVR2790 310 ALT SVR2790 FL200")
+  check_eq(ex("Belarus Avia 841, it is necessary to accelerate to 290 knots when it will be above level 140"),
+    "ATALT BRU841 FL140 SPD BRU841 290")
+  -- "point" before the fix, "to make speed", "to be on level"
+  check_eq(ex("Ural 2790 after point KUPOL to make speed 240 knots"), "AT SVR2790 KUPOL DO SPD SVR2790 240")
+  check_eq(ex("Ural 2790 keep speed 290 knots till point TUMAN, then reduce to 260"),
+    "SPD SVR2790 290 ; AT SVR2790 TUMAN DO SPD SVR2790 260")
+  check_eq(ex("Belarus Avia 841, at the point BEREG to be on level 110"), "AT BRU841 BEREG ALT FL110")
+  check_eq(ex("Set for Ural 2790 at the point TUMAN level 180 and speed 240"),
+    "AT SVR2790 TUMAN ALT FL180 ; AT SVR2790 TUMAN SPD 240")
+  check_eq(ex("Ural 2790 reduce speed to 250 knots, after KUPOL to 230"),
+    "SPD SVR2790 250 ; AT SVR2790 KUPOL DO SPD SVR2790 230")
+  check_eq(ex("Belarus Avia 841 descend to level 100 and to cross BEREG with 230 knots"),
+    "ALT BRU841 FL100 ; AT BRU841 BEREG SPD 230")
+  -- a fix off the aircraft's route stays asked, "point" said or not; "will" and "let it" with no condition stay as
+  -- they were
+  asked(ex("Belarus Avia 841 after it will pass KUPOL reduce speed 230"), "KUPOL is not on BRU841's route")
+  asked(ex("Ural 2790 at point BEREG to be on level 150"), "BEREG is not on SVR2790's route")
+  asked(ex("Ural 2790 it will pass KUPOL soon, descend level 200"), "no condition: what KUPOL is for is asked")
+  check_eq(ex("Ural 2790 descend level 200, let it reduce speed 260"), "ALT SVR2790 FL200 ; SPD SVR2790 260")
+  asked(ex("Ural 2790 cross TUMAN with 250 knots and level 180"), "two values with 'with': asked")
+  -- the speed given said again after "when at" closing the request: the instruction of its clause waits for it;
+  -- a speed never given, or given as a level too, stays asked
+  check_eq(ex("Ural 2790 reduce speed two six zero knots then descend flight level two two zero when at two six zero"),
+    "SPD SVR2790 260 ; ATSPD SVR2790 260 ALT SVR2790 FL220")
+  check_eq(ex("Belarus Avia 841 reduce speed to 230, turn left heading 300 once it is at 230 knots"),
+    "SPD BRU841 230 ; ATSPD BRU841 230 HDG BRU841 300 LEFT")
+  asked(ex("Ural 2790 descend FL220 when at 260"), "no speed given: 260 may be a level")
+  asked(ex("Ural 2790 reduce speed 250 then descend FL220 when at 260"), "260 is not the speed given")
+  -- a time a heading is held for, then the next instruction: it waits that long (DELAY); a wait after a comma
+  -- before words of another instruction is asked, never the heading delayed
+  check_eq(ex("Ural 2790 turn right heading 080 for 3 minutes, then to return on its own route"),
+    "HDG SVR2790 80 RIGHT ; DELAY 180 LNAV SVR2790 ON")
+  check_eq(ex("Belarus Avia 841 fly heading 200 for 90 seconds and then descend to level 100"),
+    "HDG BRU841 200 ; DELAY 90 ALT BRU841 FL100")
+  check_eq(ex("Ural 2790 return on its own route"), "LNAV SVR2790 ON")
+  asked(ex("Ural 2790 turn right heading 080, in 2 minutes return to own navigation"), "which instruction waits")
+  asked(ex("Ural 2790 fly heading 080 for 2 minutes, then after 1 minute resume own navigation"), "two waits")
+  -- a callsign alone before the clause with a trailing condition addresses it; two callsigns stay asked
+  check_eq(ex("Ural 2790, reduce speed to 260 knots when it is below FL200"), "ATALT SVR2790 FL200 SPD SVR2790 260")
+  asked(ex("Ural 2790, Belarus Avia 841, reduce speed to 230 knots when it is below FL120"), "which 'it'")
+end
