@@ -2998,9 +2998,11 @@ return function(H, f, compass)
       local nx = self.t[k + 1]
       -- ("wind from 320 with 25 knots in Lisbon": "in" before a place's name, as Spanish and Portuguese say "en")
       if self:word(k, "at over overhead near around above in") and nx and nx.kind == "word" then
-        -- ("at point MK1", "at the waypoint MK1": the place's noun between, the place after it)
+        -- ("at point MK1", "at the waypoint MK1": the place's noun between, the place after it; the noun may be
+        -- blanked already, G:condition_grammar_words)
         local a = k + (self:word(k + 1, "the") and 1 or 0)
-        if self:word(a + 1, "point waypoint fix") and self:refs_in(a + 2, a + 3, "waypoint")[1] then k = a + 1 end
+        local noun = self:word(a + 1, "point waypoint fix") or (self.t[a + 1] and self.t[a + 1].filler)
+        if noun and self:refs_in(a + 2, a + 3, "waypoint")[1] then k = a + 1 end
         local r = self:refs_in(k + 1, k + 2, "waypoint")[1]
         if r and not self:word(r.b, "@navaid_kinds") then return r.name:upper() end
         local id = self:place_by_name(k + 1, math.min(s.e, k + 4))
