@@ -17857,4 +17857,7 @@ do
   check_eq(ex("Wings Abadi 1820 climb FL150"), "ALT WON1820 FL150")
   check_eq(ex("Kam Air 911 descend FL230"), "ALT KMF911 FL230")
   check_eq(ex("Royal Nepal 205 climb flight level 190"), "ALT RNA205 FL190")
+  -- the longest name said after "the aircraft of" is the airline's: a flight number after it is a callsign
+  check_eq(ex("the aircraft of China Eastern Airlines 5229 please climb FL310"), "ALT CES5229 FL310")
+  check_eq(ex("the aircraft of Wings Air, climb FL150"), "ALT WON1820 FL150")
 end
