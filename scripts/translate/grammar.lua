@@ -12750,11 +12750,13 @@ function G.aircraft_of_airline(text)
       words[#words + 1], ends[#ends + 1] = w, e
       k = text:match("^ +()", e) or e
     end
+    -- (the longest name said: "the plane of China Eastern Airlines 5229" is a callsign, never "China Eastern")
     for n = #words, 1, -1 do
       local after = text:sub(ends[n]):match("^[%s,]*(%w+)")
-      if G.airline_name_codes[table.concat(words, " ", 1, n):lower()]
-          and not (after and (after:match("^%d") or SAID_DIGIT[after:lower()])) then
-        text = text:sub(1, b + 3) .. text:sub(p, ends[n] - 1) .. " " .. noun .. text:sub(ends[n])
+      if G.airline_name_codes[table.concat(words, " ", 1, n):lower()] then
+        if not (after and (after:match("^%d") or SAID_DIGIT[after:lower()])) then
+          text = text:sub(1, b + 3) .. text:sub(p, ends[n] - 1) .. " " .. noun .. text:sub(ends[n])
+        end
         break
       end
     end

@@ -3461,16 +3461,51 @@ end
 -- country, AIR PORTUGAL, is shortened to the country: "Portugal 9148" is the TAP; "Aerobus 1204", no country,
 -- is Viva Aerobus)
 function m:telephony_part_only(r)
-  if not r.spoken or r.heard or #self.fleet < 2 or not self:word(r.b, "@countries") then return nil end
+  if not r.spoken or r.heard or #self.fleet < 2 then return nil end
+  -- (the country: the first word of r's words, or a later one before its flight number, as the callsign matcher
+  -- may take the verb before it: "climb China 124")
+  local c = r.b
+  while c < r.e and self.t[c].kind == "word" and not self.t[c].number_word and not self:word(c, "@countries") do
+    c = c + 1
+  end
+  if c >= r.e or not self:word(c, "@countries") then return nil end
   if not AIRLINE_NAMES then airline_names() end
   local tels = NAMES_OF[(airline_digits(r.name))]
   if not tels then return nil end
-  local said, part = self.t[r.b].text, nil
+  local said, part = self.t[c].text, nil
+  -- (a telephony said whole, from the country or a word before it, is no part: "Air China 124", "China Eastern 5")
+  for b = r.b, c do
+    for _, n in ipairs(tels) do
+      local k, whole = b, true
+      for w in n:gmatch("%S+") do
+        whole, k = whole and k < r.e and self.t[k].text == w, k + 1
+      end
+      if whole then return nil end
+    end
+  end
+  local several = m.country_airlines(said) > 1
   for _, n in ipairs(tels) do
-    if n == said or n:sub(1, #said + 1) == said .. " " or n == "air " .. said then return nil end
-    if (" " .. n .. " "):find(" " .. said .. " ", 1, true) then part = self:raw(r.b, r.e) end
+    if not several and (n:sub(1, #said + 1) == said .. " " or n == "air " .. said) then return nil end
+    if (" " .. n .. " "):find(" " .. said .. " ", 1, true) then part = self:raw(c, r.e) end
   end
   return part
+end
+
+-- How many airlines (ICAO prefixes) a country's name `said` (lower case) may be short for: those with a telephony or
+-- common name (names.lua) that is `said`, begins with it ("china eastern", "iran airtour") or is "air" before it
+-- ("air china"). More than one: "China 124" names no one airline, and is asked.
+local country_count = {}
+function m.country_airlines(said)
+  if country_count[said] then return country_count[said] end
+  local codes, n = {}, 0
+  for name, icao in pairs(AIRLINE_NAMES) do
+    if (name == said or name:sub(1, #said + 1) == said .. " " or name == "air " .. said
+        or name:sub(1, #said + 5) == "air " .. said .. " ") and not codes[icao] then
+      codes[icao], n = true, n + 1
+    end
+  end
+  country_count[said] = n
+  return n
 end
 
 -- The words of spoken aircraft reference r when its id's last digit was heard as an everyday word after the

@@ -612,6 +612,74 @@ local names = {
     { "eastern australia", "EAQ" },  -- (QantasLink)
     { "unity", "UTY" },  -- (Alliance Airlines)
     { "mount cook", "NZM" },  -- (Air New Zealand Link)
+    -- airlines of Iran by ICAO telephony ("Atalar 5226": ATA Airlines; "Iran Airtour 9312"; "Kish Air 7042")
+    { "kish air", "IRK" },
+    { "kishair", "IRK" },
+    { "zagros", "IZG" },
+    { "atalar", "TBZ" },  -- (ATA Airlines, Tabriz)
+    { "iran airtour", "IRB" },
+    { "iran air tour", "IRB" },  -- (its telephony split as speech recognition writes it)
+    { "iran air tours", "IRB" },
+    { "varesh", "VRH" },
+    { "caspian", "CPN" },
+    { "taban", "TBN" },
+    { "qeshm air", "QSM" },
+    { "pouya", "PYA" },
+    { "sepehran", "SHI" },
+    { "karun", "IRG" },  -- (Karun Airlines, formerly Iranian Naft Airlines)
+    { "chabahar", "IRU" },
+    { "meraj", "MRJ" },
+    { "saha", "IRZ" },
+    -- airlines of the Gulf, Central and South Asia by ICAO telephony
+    { "jazeera", "JZR" },  -- (Jazeera Airways, Kuwait)
+    { "somon air", "SMR" },
+    { "ariana", "AFG" },
+    { "kamgar", "KMF" },  -- (Kam Air)
+    { "royal nepal", "RNA" },  -- (Nepal Airlines)
+    { "buddha air", "BHA" },
+    { "yeti", "NYT" },  -- (Yeti Airlines)
+    { "royal bhutan", "DRK" },  -- (Druk Air)
+    { "bangla star", "UBG" },  -- (US-Bangla Airlines)
+    { "novoair", "NVQ" },
+    -- South-East Asia's other airlines by ICAO telephony, also split as speech recognition writes it ("mass wings
+    -- three zero zero two": MWG3002)
+    { "maswings", "MWG" },
+    { "mas wings", "MWG" },
+    { "mass wings", "MWG" },
+    { "wings abadi", "WON" },  -- (Wings Air, Indonesia)
+    { "sriwijaya", "SJY" },
+    { "pelita", "PAS" },
+    { "angkor air", "KHV" },  -- (Cambodia Angkor Air)
+    { "lao", "LAO" },  -- (Lao Airlines)
+    { "unionair", "UBA" },  -- (Myanmar National Airlines)
+    -- mainland China's, Macau's and Hong Kong's, Taiwan's and Japan's other airlines by ICAO telephony
+    { "bo hai", "GCR" },  -- (Tianjin Airlines)
+    { "bohai", "GCR" },
+    { "united eagle", "UEA" },  -- (Chengdu Airlines)
+    { "sky legend", "QDA" },  -- (Qingdao Airlines)
+    { "loulan", "CUH" },  -- (Urumqi Air)
+    { "joy air", "JOY" },
+    { "hebei air", "HBH" },
+    { "donghai air", "EPA" },
+    { "okayjet", "OKA" },  -- (Okay Airways)
+    { "lianhang", "CUA" },  -- (China United Airlines)
+    { "chong qing", "CQN" },  -- (Chongqing Airlines)
+    { "chongqing", "CQN" },
+    { "china post", "CYZ" },  -- (China Postal Airlines)
+    { "air macao", "AMU" },  -- (Air Macau)
+    { "greater bay", "HGB" },  -- (Greater Bay Airlines)
+    { "starwalker", "SJX" },  -- (STARLUX)
+    { "ryukyu", "RAC" },  -- (Ryukyu Air Commuter)
+    -- Africa's other airlines by ICAO telephony
+    { "seychelles", "SEY" },  -- (Air Seychelles)
+    { "air madagascar", "MDG" },
+    -- one-word telephony split in two as speech recognition writes it ("egypt air two one five", "fire fly")
+    { "egypt air", "MSR" },
+    { "fly dubai", "FDB" },
+    { "sri lankan", "ALK" },
+    { "fire fly", "FFM" },
+    { "sky west", "SKW" },
+    { "west jet", "WJA" },
   },
   -- iata: an airline's IATA designator (two capital letters) -> its ICAO prefix, for airlines above whose
   -- pair is certain; read before a flight number typed against it ("LH400": DLH400) only where that aircraft
@@ -752,6 +820,73 @@ local names = {
     -- also an English word's letters, never read alone)
     { "middle east airlines", "MEA" },
     { "middle east airline", "MEA" },
+    -- airlines said before a flight number by the name passengers and experimenters know, beside their telephony
+    -- ("the Iran Aseman", "Kam Air 911", "Druk Air 131", "US-Bangla 201", "Wings Air 1820", "Thai AirAsia 302")
+    { "iran aseman", "IRC" },
+    { "ata airlines", "TBZ" },
+    { "salamair", "OMS" },  -- (SalamAir, Oman)
+    { "salam air", "OMS" },
+    { "kam air", "KMF" },
+    { "nepal airlines", "RNA" },
+    { "druk air", "DRK" },
+    { "drukair", "DRK" },
+    { "us bangla", "UBG" },
+    { "wings air", "WON" },
+    { "cambodia angkor", "KHV" },
+    { "lao airlines", "LAO" },
+    { "thai airasia", "AIQ" },
+    { "thai air asia", "AIQ" },
+    { "indonesia airasia", "AWQ" },
+    { "indonesia air asia", "AWQ" },
+    { "airasia indonesia", "AWQ" },
+    { "air asia indonesia", "AWQ" },
+    { "philippines airasia", "APG" },
+    { "philippines air asia", "APG" },
+    { "airasia philippines", "APG" },
+    { "air asia philippines", "APG" },
+    { "thai lion", "TLM" },
+    { "tianjin airlines", "GCR" },
+    { "chengdu airlines", "UEA" },
+    { "qingdao airlines", "QDA" },
+    { "urumqi air", "CUH" },
+    { "china united", "CUA" },
+    { "china cargo", "CKK" },  -- (China Cargo Airlines, telephony Cargo King)
+    { "air macau", "AMU" },
+    { "air premia", "APZ" },
+    { "air seychelles", "SEY" },
+    -- flag and large carriers by their full name, said whole before a flight number ("Thai Airways 661", "Cebu
+    -- Pacific 5J" as passengers read it; "China Eastern Airlines 5229")
+    { "kuwait airways", "KAC" },
+    { "etihad airways", "ETD" },
+    { "iraqi airways", "IAW" },
+    { "yemenia", "IYE" },
+    { "air arabia", "ABY" },
+    { "kenya airways", "KQA" },
+    { "ethiopian airlines", "ETH" },
+    { "uzbekistan airways", "UZB" },
+    { "azerbaijan airlines", "AHY" },
+    { "georgian airways", "TGZ" },
+    { "turkmenistan airlines", "TUA" },
+    { "flyarystan", "AYN" },
+    { "cebu pacific", "CEB" },
+    { "philippine airlines", "PAL" },
+    { "thai airways", "THA" },
+    { "garuda indonesia", "GIA" },
+    { "singapore airlines", "SIA" },
+    { "vietjet air", "VJC" },
+    { "bamboo airways", "BAV" },
+    { "hainan airlines", "CHH" },
+    { "sichuan airlines", "CSC" },
+    { "shandong airlines", "CDG" },
+    { "xiamen airlines", "CXA" },
+    { "spring airlines", "CQH" },
+    { "juneyao airlines", "DKH" },
+    { "china eastern airlines", "CES" },
+    { "china southern airlines", "CSN" },
+    { "asiana airlines", "AAR" },
+    { "eva air", "EVA" },
+    { "copa airlines", "CMP" },
+    { "aeromexico connect", "SLI" },
   },
   brands = {
     { "transavia", "TRA", "TVF" },

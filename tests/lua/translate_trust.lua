@@ -17815,3 +17815,49 @@ do
   check_eq(ex("Ural 2790, reduce speed to 260 knots when it is below FL200"), "ATALT SVR2790 FL200 SPD SVR2790 260")
   asked(ex("Ural 2790, Belarus Avia 841, reduce speed to 230 knots when it is below FL120"), "which 'it'")
 end
+
+-- Cycle 59 (ftel): airline radio telephony by region (names.lua), said whole, run together or split as speech
+-- recognition writes it ("mass wings", "iran air tour"), in several places of the request; a country said alone
+-- where several airlines' telephony or names begin with it ("China 1837": Air China, China Eastern, China Southern,
+-- China Express, ...; "Iran 9215": Iran Air, Iran Airtour, Iran Aseman) names no one airline and is asked
+do
+  local _, ex = scene({ "CRE IZG3307 MD83 29.4 52.7 150 FL100 250", "CRE TBZ5904 MD83 36.3 59.4 265 FL100 250",
+    "CRE IRK1288 MD83 26.5 54.0 045 FL120 250", "CRE IRB9215 MD83 30.4 48.8 360 FL90 240",
+    "CRE VRH7702 CRJ2 36.2 60.2 270 FL110 240", "CRE CPN6214 MD83 29.7 51.2 095 FL140 260",
+    "CRE QSM1290 A320 35.5 51.4 170 FL100 250", "CRE IRA516 A306 36.1 51.25 180 FL150 280" })
+  check_eq(ex("Zagros 3307 climb to flight level 190"), "ALT IZG3307 FL190")
+  check_eq(ex("climb Zagros 3307 to flight level 190 please"), "ALT IZG3307 FL190")
+  check_eq(ex("Atalar five niner zero four, reduce speed two three zero knots"), "SPD TBZ5904 230")
+  check_eq(ex("kishair one two eight eight descend flight level one one zero"), "ALT IRK1288 FL110")
+  check_eq(ex("Kish Air 1288 turn left heading 300 and Varesh 7702 climb FL150"),
+    "HDG IRK1288 300 LEFT ; ALT VRH7702 FL150")
+  check_eq(ex("Iran Airtour 9215 reduce speed to 220 knots"), "SPD IRB9215 220")
+  check_eq(ex("iran air tour nine two one five turn right heading zero four zero"), "HDG IRB9215 40 RIGHT")
+  check_eq(ex("Caspian 6214, descend flight level 120"), "ALT CPN6214 FL120")
+  check_eq(ex("Qeshm Air 1290 climb FL140"), "ALT QSM1290 FL140")
+  check_eq(ex("delete Varesh 7702"), "DEL VRH7702")
+  check_eq(ex("Iran Air 516 descend FL130"), "ALT IRA516 FL130")
+  asked(ex("Iran 9215 climb FL150"), "Iran Air, Iran Airtour and Iran Aseman all begin with Iran")
+  asked(ex("Iran 516 descend FL130"), "Iran Air, Iran Airtour and Iran Aseman all begin with Iran")
+end
+do
+  local _, ex = scene({ "CRE CCA1837 A321 37.0 125.2 060 FL290 290", "CRE CES5229 A320 37.2 124.6 090 FL270 290",
+    "CRE CSN3101 A320 36.8 124.9 045 FL250 280", "CRE GCR4905 A320 36.5 125.0 300 FL230 280",
+    "CRE MWG3114 AT72 5.6 116.3 300 7000 200", "CRE WON1820 AT72 -6.2 106.8 090 FL130 240",
+    "CRE KMF911 A320 34.5 69.2 270 FL250 280", "CRE RNA205 A320 27.7 85.4 180 FL170 260" })
+  asked(ex("China 1837 climb FL330"), "Air China, China Eastern, China Southern ... begin with China")
+  asked(ex("descend china one eight three seven flight level two five zero"), "China alone, after the verb")
+  check_eq(ex("Air China 1837 climb FL330"), "ALT CCA1837 FL330")
+  check_eq(ex("China Eastern 5229 turn right heading 120"), "HDG CES5229 120 RIGHT")
+  check_eq(ex("climb China Southern 3101 to flight level 310"), "ALT CSN3101 FL310")
+  check_eq(ex("Bo Hai 4905 descend FL200"), "ALT GCR4905 FL200")
+  check_eq(ex("mass wings three one one four descend four thousand"), "ALT MWG3114 4000")
+  check_eq(ex("maswings three one one four turn left heading two seven zero"), "HDG MWG3114 270 LEFT")
+  check_eq(ex("MASwings 3114 reduce speed 160 knots"), "SPD MWG3114 160")
+  check_eq(ex("Wings Abadi 1820 climb FL150"), "ALT WON1820 FL150")
+  check_eq(ex("Kam Air 911 descend FL230"), "ALT KMF911 FL230")
+  check_eq(ex("Royal Nepal 205 climb flight level 190"), "ALT RNA205 FL190")
+  -- the longest name said after "the aircraft of" is the airline's: a flight number after it is a callsign
+  check_eq(ex("the aircraft of China Eastern Airlines 5229 please climb FL310"), "ALT CES5229 FL310")
+  check_eq(ex("the aircraft of Wings Air, climb FL150"), "ALT WON1820 FL150")
+end
