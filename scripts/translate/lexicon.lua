@@ -307,6 +307,9 @@ return {
         -- a message said again, in Indian English as "I say again" is elsewhere ("Express India 1356, once again,
         -- descend 9000 feet"): never a condition
         "once again",
+        -- (the same in Singapore and Malaysian English, "Batik 7151, one more time, descend FL110"; and the check a
+        -- clearance closes with there, "..., reduce speed 230, confirm or not": read it back)
+        "one more time", "confirm or not",
         -- a part of the airspace a study is run in, in two words ("the high altitude en route block", as "en-route")
         "en route",
         -- an aircraft handed to a teammate ("can you look after Logan 52B for me - ...")
