@@ -11514,8 +11514,14 @@ function G:not_simulated()
         if class.clause and self:word(e, "@clause_verbs") and self:intent_at(e) then
           local r = e - 1
           local side = self.t[r] and self.t[r].kind == "word" and self.t[r].raw:lower()
-          if side == "left" or side == "right" or side == "center" or side == "centre" then r = r - 1 end
-          if self.t[r] and self.t[r].kind == "number" and self:word(r - 1, "runway rwy") then break end
+          if side == "left" or side == "right" or side == "center" or side == "centre" or side == "l" or side == "r"
+              or side == "c" then
+            r = r - 1
+          end
+          -- (its number typed, or said as one or two digit words: "runway zero two left", "runway tree two right")
+          local d = r
+          while d > r - 2 and self.t[d] and (self.t[d].kind == "number" or self.t[d].number_word) do d = d - 1 end
+          if d < r and self:word(d, "runway rwy") then break end
         end
         -- ("expect further descent in five minutes, for now FL180": a class with `clause` ends at a comma before
         -- a clause said for the meantime, "now" in its first three words, with a level, speed or heading)
@@ -13414,6 +13420,8 @@ function G.spelled_route_places(text, world)
     local slot = bare[i - 1]
     -- ("within 20 miles of lima oscar sierra": "of" after a distance's unit, as "from")
     local of_dist = slot == "of" and G.spelled_dist_units[bare[i - 2] or ""]
+    -- ("where is victor tango kilo": the place asked about)
+    of_dist = of_dist or ((slot == "is" and bare[i - 2] == "where") or slot == "where's" or slot == "wheres")
     if not (slot and (PLACE_SLOTS[slot] or G.spelled_slots[slot] or of_dist) and lexicon.phonetic[bare[i]])
         or toks[i - 1]:match("%p$") then
       return nil

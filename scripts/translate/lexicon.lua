@@ -2466,6 +2466,9 @@ return {
       ["s'il te plait"] = "please", ["accélère"] = "speed up", accelere = "speed up",
       fois = "times", supprimez = "delete", supprime = "delete", ["créez"] = "create", creez = "create",
       ["crée"] = "create",
+      -- the simulation run by the instructor ("pause la simu", "avance rapide dix minutes", "c'est bon, continue")
+      simu = "simulation", ["avance rapide"] = "fast forward", ["c'est bon"] = "okay", continuez = "continue",
+      reprenez = "resume", reprends = "resume",
       -- the order of a script's steps ("D'abord ...; ensuite ...; enfin ...")
       ["d'abord"] = "first", ensuite = "then", enfin = "finally",
     },

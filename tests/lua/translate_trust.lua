@@ -17865,3 +17865,23 @@ do
   check_eq(ex("Volotea 38DL contact marseille information"), "")
   check_eq(ex("Volotea 38DL contact Marseille radar and descend FL100"), "ALT VOE38DL FL100")
 end
+do
+  local _, ex = scene({ "DEFWPT VTK 1.6 104.1", "CRE SIA623 A359 1.75 104.20 200 5000 210", "ADDWPT SIA623 VTK",
+    "CRE TGW481 A320 2.05 103.62 125 FL130 270", "CRE SIA106 B38M 2.10 101.95 320 FL120 260",
+    "CRE VOE38DL A319 44.2 5.5 185 FL110 280" })
+  -- an instruction after an expected runway said in digit words, its side said or typed: sent, the expectation noted
+  check_eq(ex("Scooter 481 expect ILS runway zero two left descend eight thousand"), "ALT TGW481 8000")
+  check_eq(ex("Singapore 106 expect runway tree two right descend tree thousand"), "ALT SIA106 3000")
+  check_eq(ex("Scooter 481 expect ILS runway 20C descend 6000"), "ALT TGW481 6000")
+  asked(ex("Singapore 106 expect runway two zero descend"), "no level: asked")
+  check_eq(ex("Scooter 481 expect descend eight thousand"), "")
+  -- a place asked about spelled in the phonetic alphabet
+  check_eq(ex("where is victor tango kilo"), "POS VTK")
+  check_eq(ex("where's victor tango kilo?"), "POS VTK")
+  asked(ex("where is kilo kilo kilo"), "no such place: asked")
+  -- the instructor's French for the simulation
+  check_eq(ex("instructeur: ok, pause la simu s'il vous plait"), "HOLD")
+  check_eq(ex("avance rapide dix minutes"), "FF 600")
+  check_eq(ex("ok c'est bon, continuez"), "OP")
+  asked(ex("c'est bon"), "nothing asked for")
+end
