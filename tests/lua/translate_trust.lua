@@ -17885,3 +17885,12 @@ do
   check_eq(ex("ok c'est bon, continuez"), "OP")
   asked(ex("c'est bon"), "nothing asked for")
 end
+do
+  local _, ex = scene({ "DEFWPT TOPAX 3.1 101.5", "DEFWPT SAMKO 1.0 103.9", "CRE MAS52 A333 2.90 101.60 320 6000 250" })
+  -- a type said in words as a recogniser writes it in a creation: a maker's name and two digits, radiotelephony digits
+  check_eq(ex("create Firefly 2130 ATR seventy two at TOPAX heading 090 5000 180 knots"),
+    "CRE FFM2130 AT72 TOPAX 90 5000 180")
+  check_eq(ex("create Batik 7200 boeing seven tree eight at SAMKO heading 360 10000 250 knots"),
+    "CRE BTK7200 B738 SAMKO 360 10000 250")
+  asked(ex("create Firefly 2130 ATR seventy at TOPAX heading 090 5000 180 knots"), "no such ATR: asked")
+end
