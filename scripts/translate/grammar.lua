@@ -1452,6 +1452,25 @@ function G.sim_old(text)
     return (toks[i]:match("^O") and "Hold" or "hold"), i + 1
   end)
 end
+-- "170 knots till for miles final", "until fife DME": the count of a distance limit as a recogniser writes it, one
+-- word straight after "until", "till" or "to" and straight before its unit (G.limit_units), is that digit: "for" and
+-- "fore" 4, the radiotelephony "tree" 3, "fower" 4, "fife" 5 (no "to": "to four DME" is said as it is)
+G.limit_digits = { ["for"] = "four", fore = "four", tree = "three", fower = "four", fife = "five" }
+G.limit_leads = set_of({ "until", "till", "til", "to" })
+G.limit_units = set_of({ "miles", "mile", "nm", "dme", "final" })
+function G.limit_homophones(text)
+  local low = text:lower()
+  if not (low:find("til", 1, true) or low:find("to ", 1, true)) then return text end
+  local toks, bare = plain_words(text)
+  return tokens.rewrite(text, toks, function(i)
+    local d = G.limit_digits[bare[i]]
+    if not d or not G.limit_leads[bare[i - 1] or ""] or toks[i - 1]:match("%p$") or toks[i]:match("%p$")
+        or not G.limit_units[bare[i + 1] or ""] or (bare[i] == "for" or bare[i] == "fore") and bare[i - 1] == "to" then
+      return nil
+    end
+    return d, i + 1
+  end)
+end
 -- Words speech recognition writes for a digit (lexicon.digit_homophones) where the other reading leaves the
 -- value incomplete or impossible, read as that digit:
 --  * before "thousand" with no digit before it: "for" or "fore" ("descend to for thousand feet": 4000 ft;
@@ -2009,7 +2028,7 @@ local function written_forms(text, world)
       return before .. " direct " .. after
     end)
   end
-  text = G.navaid_city_names(G.sim_old(G.thousand_speed_homophones(value_homophones(split_digits(text)))))
+  text = G.navaid_city_names(G.sim_old(G.thousand_speed_homophones(value_homophones(G.limit_homophones(split_digits(text))))))
   -- "dlh4ax up 2000", "down 1500 pls": a bare whole or half thousand typed after "up" or "down" is a change of
   -- level by that many feet, as "up 2000 ft" (after a rate's or a speed's name, "vs up 2000", or before a unit,
   -- it stays as typed; "up 20" stays too, and is asked)
@@ -8826,13 +8845,21 @@ function G:stations()
       -- the station straight after the callsign, no comma between ("Ethiopian 306 Nairobi, climb ...")
       from = b
       for _, r in ipairs(self.refs) do
-        if r.kind == "aircraft" and r.b >= b and r.e > r.b and r.e < e then from = r.e end
+        if r.kind == "aircraft" and r.b >= b and r.e > r.b and r.e < e and not r.by_airline then from = r.e end
       end
       if not self:station_clause(from, e, from > b) then from = nil end
     end
     if from then
       self:mark_used(from, e)
       for k = from, e - 1 do self.noted[k] = true end
+      for k = #self.refs, 1, -1 do
+        local r = self.refs[k]
+        if r.by_airline and r.b >= from and r.e <= e then table.remove(self.refs, k) end
+      end
+      for k = #(self.airline_unresolved or {}), 1, -1 do
+        local r = self.airline_unresolved[k]
+        if r.b >= from and r.e <= e then table.remove(self.airline_unresolved, k) end
+      end
     end
     b = e + 1
   end
@@ -8966,7 +8993,13 @@ function G:station_clause(b, e, after_callsign)
   if not (after_callsign or before_callsign) then return false end
   local last = e - 1
   if last > b and FACILITIES[self.t[last].text] then last = last - 1 end
-  if last - b > 2 or #self:quantities(b, e) > 0 or #self:refs_in(b, e, "aircraft") > 0 then return false end
+  -- (an airline said alone whose name is a city's, "Shamrock 6MA, Brussels, bonjour, ...": in the addressing
+  -- position after a callsign it is the station, never a second aircraft; G:stations drops its reference)
+  local aircraft = self:refs_in(b, e, "aircraft")
+  if after_callsign and #aircraft == 1 and aircraft[1].by_airline and aircraft[1].b == b and aircraft[1].e == last + 1 then
+    aircraft = {}
+  end
+  if last - b > 2 or #self:quantities(b, e) > 0 or #aircraft > 0 then return false end
   local words, proper = {}, true
   for k = b, last do
     local t = self.t[k]
@@ -11481,8 +11514,14 @@ function G:not_simulated()
         if class.clause and self:word(e, "@clause_verbs") and self:intent_at(e) then
           local r = e - 1
           local side = self.t[r] and self.t[r].kind == "word" and self.t[r].raw:lower()
-          if side == "left" or side == "right" or side == "center" or side == "centre" then r = r - 1 end
-          if self.t[r] and self.t[r].kind == "number" and self:word(r - 1, "runway rwy") then break end
+          if side == "left" or side == "right" or side == "center" or side == "centre" or side == "l" or side == "r"
+              or side == "c" then
+            r = r - 1
+          end
+          -- (its number typed, or said as one or two digit words: "runway zero two left", "runway tree two right")
+          local d = r
+          while d > r - 2 and self.t[d] and (self.t[d].kind == "number" or self.t[d].number_word) do d = d - 1 end
+          if d < r and self:word(d, "runway rwy") then break end
         end
         -- ("expect further descent in five minutes, for now FL180": a class with `clause` ends at a comma before
         -- a clause said for the meantime, "now" in its first three words, with a level, speed or heading)
@@ -11493,8 +11532,12 @@ function G:not_simulated()
         -- (a turn direction goes on: "make a left three sixty" is one orbit)
         -- (a class with `clause` goes on through instruction words up to its first comma: "expect to resume own
         -- navigation to MNR" announces all of it)
+        -- (nor a unit's word straight after its name, said after the phrase's word: "contact Marseille information"
+        -- names a station)
+        local unit = FACILITIES[self.words[e] or ""] and e - 1 > i and self.t[e - 1].kind == "word"
+          and not self.t[e - 1].keyword and not self:intent_at(e - 1) and not self.t[e - 1].number_word
         if not class.to_end and self:intent_at(e) and not self:word(e, "approach cleared hold holding contact left right")
-            and not (class.through and self:word(e, class.through)) and not (class.clause and not comma) then
+            and not unit and not (class.through and self:word(e, class.through)) and not (class.clause and not comma) then
           break
         end
         e = e + 1
@@ -13379,6 +13422,8 @@ function G.spelled_route_places(text, world)
     local slot = bare[i - 1]
     -- ("within 20 miles of lima oscar sierra": "of" after a distance's unit, as "from")
     local of_dist = slot == "of" and G.spelled_dist_units[bare[i - 2] or ""]
+    -- ("where is victor tango kilo": the place asked about)
+    of_dist = of_dist or ((slot == "is" and bare[i - 2] == "where") or slot == "where's" or slot == "wheres")
     if not (slot and (PLACE_SLOTS[slot] or G.spelled_slots[slot] or of_dist) and lexicon.phonetic[bare[i]])
         or toks[i - 1]:match("%p$") then
       return nil

@@ -1004,6 +1004,8 @@ function m:airline_said_alone(s, any_case)
       local nxt = self.t[e]
       local inside = in_ref(self, i)
       local starts = i == 1 or self.t[i - 1].kind == "punct" or self:word(i - 1, "and @then_words")
+      -- (a name G:stations read as the caller's own station is no airline: "Shamrock 6MA, Brussels, bonjour")
+      if self.u:used(i) and (self.noted or {})[i] then starts = false end
       if starts and (e > i + 1 or airline_names()[self.t[i].text]) and (any_case or self.t[i].raw:match("%u")) and not inside
           and not (nxt and (nxt.kind == "number" or nxt.number_word or L.phonetic[nxt.text]
             or self:word(e, "heavy super @correction"))) then

@@ -1204,6 +1204,17 @@ return function(H, f, compass)
       if not (r.e == r.b + 1 and self:word(r.b, "@navaid_kinds")) then
         local whole = self:whole_place_name(r, b, e, id)
         if whole ~= nil then return whole or nil end
+        -- ("direct victor mike romeo then NYLON": a place spelled in the phonetic alphabet before the one named is
+        -- never passed over for it; which is meant is asked)
+        for k = b, r.b - 2 do
+          if not self.u:used(k) and self.t[k].kind == "word" and L.phonetic[self.t[k].text]
+              and self.t[k + 1].kind == "word" and L.phonetic[self.t[k + 1].text] then
+            local j = k
+            while j < r.b and self.t[j].kind == "word" and L.phonetic[self.t[j].text] do j = j + 1 end
+            return self:need(string.format("Which waypoint do you mean: the one spelled '%s', or %s? Please say the "
+              .. "places in the order to fly them.", self:raw(k, j), r.name))
+          end
+        end
         -- (a navaid's name in capitals, "direct TEBBY", is its ident already: m:navaid_name_refs)
         return r.name
       end
@@ -2597,6 +2608,31 @@ return function(H, f, compass)
     return out
   end
 
+  -- The places of m:route_places in [b, e), with a place spelled in the phonetic alphabet between them, two
+  -- letters or more ("via NYLON then victor mike romeo"), read as m:waypoint reads a spelling for aircraft id (a
+  -- known ident, else asked): { {name, b, e} } in order, or nil when a spelling is asked about.
+  function m:route_places_spelled(b, e, id)
+    local named, out, k = self:route_places(b, e), {}, b
+    local function word(i) return self.t[i] and self.t[i].kind == "word" and L.phonetic[self.t[i].text] end
+    local n = 1
+    e = math.min(e, #self.t + 1)
+    while k < e do
+      local r = named[n]
+      if r and k >= r.b then
+        out[#out + 1], k, n = r, r.e, n + 1
+      elseif not self.u:used(k) and word(k) and word(k + 1) and k + 1 < e and not word(k - 1) then
+        local j = k
+        while j < e and (not r or j < r.b) and word(j) do j = j + 1 end
+        local spelled = self:waypoint(k, j, id)
+        if not spelled then return nil end
+        out[#out + 1], k = { name = spelled, b = k, e = j }, j
+      else
+        k = k + 1
+      end
+    end
+    return out
+  end
+
   -- "route direct TWEED then GIRVA", "after ABENI add ELTOK, then ROKNI": places said after `from` with
   -- "then" (or a comma or "and") before each, that are the waypoints following `from` in id's route in
   -- that order, say how the route goes on; they are explained, no instruction of their own. With `last`
@@ -2610,7 +2646,7 @@ return function(H, f, compass)
     end
     if not at and not last then return end
     local ended = last
-    for _, r in ipairs(self:route_places(b, e)) do
+    for _, r in ipairs(self:route_places_spelled(b, e, id) or {}) do
       local sep = r.b - 1
       -- ("then continue PAS as before", "then continue to LFSB", ", before RIPUS": the next place of the route said
       -- after joining words, or after "before")
@@ -2726,6 +2762,24 @@ return function(H, f, compass)
     else
       -- "define WP9 at ... and add it to X's route": "it" is the waypoint just defined
       named = self:route_places(s.trig, name_e)[1] or self:verb_final_waypoint(s.trig)
+      -- ("route via victor mike romeo then NYLON": a place spelled in the phonetic alphabet, two letters or more,
+      -- before the first place named is the route's first place, read as m:waypoint reads a spelling (a known
+      -- ident, else asked), never passed over)
+      local upto = named and named.b or math.min(name_e, #self.t + 1)
+      if named or self:word_in(s.trig, upto, "via then") then
+        for k = s.trig, upto - 2 do
+          if not self.u:used(k) and L.phonetic[self.t[k].text] and self.t[k].kind == "word"
+              and L.phonetic[self.t[k + 1].text] and self.t[k + 1].kind == "word"
+              and not (L.phonetic[(self.t[k - 1] or {}).text or ""]) then
+            local e = k
+            while e < upto and self.t[e].kind == "word" and L.phonetic[self.t[e].text] do e = e + 1 end
+            local spelled = self:waypoint(k, e, id)
+            if not spelled then return end
+            named = { name = spelled, b = k, e = e }
+            break
+          end
+        end
+      end
       local it = self.last_waypoint and self:word_in(s.trig, name_e, "it")
       where = named and named.name or (it and self.last_waypoint) or self:waypoint(s.trig, name_e, id)
       if not where then
@@ -2794,7 +2848,8 @@ return function(H, f, compass)
     if not named then return end
     -- "route EZY45 via TEST1 then NIK to EHAM": the next places of the route in
     -- order; the last one after "to", when an airport (four letters), is the destination
-    local rest = self:route_places(named.e, s.e)
+    local rest = self:route_places_spelled(named.e, s.e, id)
+    if not rest then return end
     local last = named.e
     for k, r in ipairs(rest) do
       local airport = k == #rest and self:word(r.b - 1, "to into") and self:airport_meant(r.name:upper(), self:state(id))

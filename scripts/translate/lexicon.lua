@@ -307,6 +307,9 @@ return {
         -- a message said again, in Indian English as "I say again" is elsewhere ("Express India 1356, once again,
         -- descend 9000 feet"): never a condition
         "once again",
+        -- (the same in Singapore and Malaysian English, "Batik 7151, one more time, descend FL110"; and the check a
+        -- clearance closes with there, "..., reduce speed 230, confirm or not": read it back)
+        "one more time", "confirm or not",
         -- a part of the airspace a study is run in, in two words ("the high altitude en route block", as "en-route")
         "en route",
         -- an aircraft handed to a teammate ("can you look after Logan 52B for me - ...")
@@ -2463,6 +2466,9 @@ return {
       ["s'il te plait"] = "please", ["accélère"] = "speed up", accelere = "speed up",
       fois = "times", supprimez = "delete", supprime = "delete", ["créez"] = "create", creez = "create",
       ["crée"] = "create",
+      -- the simulation run by the instructor ("pause la simu", "avance rapide dix minutes", "c'est bon, continue")
+      simu = "simulation", ["avance rapide"] = "fast forward", ["c'est bon"] = "okay", continuez = "continue",
+      reprenez = "resume", reprends = "resume",
       -- the order of a script's steps ("D'abord ...; ensuite ...; enfin ...")
       ["d'abord"] = "first", ensuite = "then", enfin = "finally",
     },

@@ -323,8 +323,9 @@ end
 -- and only in a request that creates traffic (`create` true): "a three twenty"
 -- anywhere else stays as said. So does a designator spelled in the phonetic
 -- alphabet (`phonetic`, lexicon.phonetic: "bravo seven seven whiskey" -> b77w).
+-- (and the radiotelephony digits a recogniser writes: "boeing seven tree eight")
 local DIGITS = { zero = "0", oh = "0", one = "1", two = "2", three = "3", four = "4", five = "5", six = "6",
-                 seven = "7", eight = "8", nine = "9", niner = "9" }
+                 seven = "7", eight = "8", nine = "9", niner = "9", tree = "3", fower = "4", fife = "5" }
 local TEENS = { ten = "10", eleven = "11", twelve = "12", thirteen = "13", fourteen = "14", fifteen = "15",
                 sixteen = "16", seventeen = "17", eighteen = "18", nineteen = "19" }
 local TENS = { twenty = "2", thirty = "3", forty = "4", fifty = "5", sixty = "6", seventy = "7", eighty = "8",
@@ -532,7 +533,8 @@ function M.spoken(text, built, phonetic)
         if w == "airbus" and lead ~= "a" and #digits == 3 and not built.known[name] then
           name = "airbus a" .. digits .. (variant and ("-" .. variant) or "")
         end
-        if (#digits >= 3 or prefix) and built.known[name] then
+        -- ("ATR seventy two": a maker's name and a model's two digits, "atr 72")
+        if (#digits >= 3 or prefix or (built.makers[w] and #digits == 2)) and built.known[name] then
           best = { name = name .. punct, e = k }
         elseif w == "boeing" and #digits == 3 and not variant and not digits:match("^7%d7$") and built.known["b" .. digits] then
           best = { name = "b" .. digits .. punct, e = k }  -- ("boeing seven three eight": the designator, B738)

@@ -17861,3 +17861,81 @@ do
   check_eq(ex("the aircraft of China Eastern Airlines 5229 please climb FL310"), "ALT CES5229 FL310")
   check_eq(ex("the aircraft of Wings Air, climb FL150"), "ALT WON1820 FL150")
 end
+-- f193 (cycle 59): Singapore and Malaysian controllers through a speech recogniser, French controllers
+do
+  local _, ex = scene({ "DEFWPT VMR 2.0 103.6", "DEFWPT NYLON 2.2 103.8", "DEFWPT PU 1.9 103.7",
+    "CRE MAS609 B738 2.40 103.50 150 FL160 280", "CRE SIA301 A359 1.80 103.40 120 FL140 280",
+    "CRE BTK7151 A320 1.10 103.70 040 FL150 230" })
+  -- a place spelled in the phonetic alphabet in a route's list of places, first or later, is added in its turn;
+  -- a spelling that names no place is asked, never passed over
+  check_eq(ex("Malaysian six zero niner route via victor mike romeo then november yankee lima oscar november"),
+    "ADDWPT MAS609 VMR ; ADDWPT MAS609 NYLON")
+  check_eq(ex("malaysian six zero niner, route via victor mike romeo, then NYLON please"),
+    "ADDWPT MAS609 VMR ; ADDWPT MAS609 NYLON")
+  check_eq(ex("Singapore 301 proceed via NYLON then victor mike romeo then papa uniform"),
+    "ADDWPT SIA301 NYLON ; DIRECT SIA301 NYLON ; ADDWPT SIA301 VMR ; ADDWPT SIA301 PU")
+  check_eq(ex("Singapore 301 route via NYLON then victor mike romeo"), "ADDWPT SIA301 NYLON ; ADDWPT SIA301 VMR")
+  asked(ex("Singapore 301 direct victor mike romeo then NYLON"), "the spelled place before the named one: asked")
+  check_eq(ex("Singapore 301 add victor mike romeo then NYLON to the route"), "ADDWPT SIA301 VMR ; ADDWPT SIA301 NYLON")
+  asked(ex("Singapore 301 route via NYLON then kilo kilo kilo"), "KKK names no place: asked")
+  asked(ex("Malaysian 609 route via kilo kilo kilo then NYLON"), "KKK names no place: asked")
+  -- a distance limit's count as a recogniser writes it ("for", "fife", "tree"): the limit is not simulated, the
+  -- speed is sent
+  check_eq(ex("Batik 7151 one eight zero knots till for miles final"), "SPD BTK7151 180")
+  check_eq(ex("Batik 7151 speed one seven zero until fife DME"), "SPD BTK7151 170")
+  check_eq(ex("Batik 7151 reduce one six zero knots till tree miles final"), "SPD BTK7151 160")
+  asked(ex("Batik 7151 one eight zero knots till fife"), "no distance unit: asked")
+  -- "one more time" said before the instruction, "confirm or not" closing it
+  check_eq(ex("Batik seven one five one one more time descend flight level one one zero"), "ALT BTK7151 FL110")
+  check_eq(ex("Batik 7151, one more time, climb FL160"), "ALT BTK7151 FL160")
+  check_eq(ex("Singapore 301 descend to niner thousand reduce speed two tree zero confirm or not"),
+    "ALT SIA301 9000 ; SPD SIA301 230")
+  check_eq(ex("Singapore 301, climb flight level one six zero, confirm or not"), "ALT SIA301 FL160")
+  asked(ex("Singapore 301 confirm or not descend flight level one two zero"), "a question opening: asked")
+end
+do
+  local _, ex = scene({ "CRE BEL2XW A333 50.6 3.9 195 FL250 290", "CRE EIN6MA A320 51.05 2.5 085 FL360 260",
+    "CRE AFR1637 A320 51.3 5.2 225 FL330 270", "CRE LGL4AZ DH8D 49.7 6.0 345 FL240 250",
+    "CRE VOE38DL A319 44.2 5.5 185 FL110 280" })
+  -- the controller's own station after the callsign, named like an airline flying: the station, never a second
+  -- aircraft
+  check_eq(ex("Shamrock six mike alpha, Brussels, bonjour, maintain level three six zero"), "ALT EIN6MA FL360")
+  check_eq(ex("Shamrock 6MA, Brussels, climb FL370"), "ALT EIN6MA FL370")
+  check_eq(ex("Air France 1637, Brussels radar, descend level three one zero"), "ALT AFR1637 FL310")
+  check_eq(ex("Air France 1637, Brussels control, good morning, descend FL310"), "ALT AFR1637 FL310")
+  -- the airline with its flight number is the aircraft
+  check_eq(ex("Air France 1637, Brussels two X-ray whiskey, descend FL240"), "ALT AFR1637 FL240 ; ALT BEL2XW FL240")
+  -- a hand-off to a unit named with its word ("information", "radar") sends nothing, no position shown
+  check_eq(ex("Volotea 38DL squawk seven zero zero zero, contact Marseille information, au revoir"), "")
+  check_eq(ex("Volotea 38DL contact marseille information"), "")
+  check_eq(ex("Volotea 38DL contact Marseille radar and descend FL100"), "ALT VOE38DL FL100")
+end
+do
+  local _, ex = scene({ "DEFWPT VTK 1.6 104.1", "CRE SIA623 A359 1.75 104.20 200 5000 210", "ADDWPT SIA623 VTK",
+    "CRE TGW481 A320 2.05 103.62 125 FL130 270", "CRE SIA106 B38M 2.10 101.95 320 FL120 260",
+    "CRE VOE38DL A319 44.2 5.5 185 FL110 280" })
+  -- an instruction after an expected runway said in digit words, its side said or typed: sent, the expectation noted
+  check_eq(ex("Scooter 481 expect ILS runway zero two left descend eight thousand"), "ALT TGW481 8000")
+  check_eq(ex("Singapore 106 expect runway tree two right descend tree thousand"), "ALT SIA106 3000")
+  check_eq(ex("Scooter 481 expect ILS runway 20C descend 6000"), "ALT TGW481 6000")
+  asked(ex("Singapore 106 expect runway two zero descend"), "no level: asked")
+  check_eq(ex("Scooter 481 expect descend eight thousand"), "")
+  -- a place asked about spelled in the phonetic alphabet
+  check_eq(ex("where is victor tango kilo"), "POS VTK")
+  check_eq(ex("where's victor tango kilo?"), "POS VTK")
+  asked(ex("where is kilo kilo kilo"), "no such place: asked")
+  -- the instructor's French for the simulation
+  check_eq(ex("instructeur: ok, pause la simu s'il vous plait"), "HOLD")
+  check_eq(ex("avance rapide dix minutes"), "FF 600")
+  check_eq(ex("ok c'est bon, continuez"), "OP")
+  asked(ex("c'est bon"), "nothing asked for")
+end
+do
+  local _, ex = scene({ "DEFWPT TOPAX 3.1 101.5", "DEFWPT SAMKO 1.0 103.9", "CRE MAS52 A333 2.90 101.60 320 6000 250" })
+  -- a type said in words as a recogniser writes it in a creation: a maker's name and two digits, radiotelephony digits
+  check_eq(ex("create Firefly 2130 ATR seventy two at TOPAX heading 090 5000 180 knots"),
+    "CRE FFM2130 AT72 TOPAX 90 5000 180")
+  check_eq(ex("create Batik 7200 boeing seven tree eight at SAMKO heading 360 10000 250 knots"),
+    "CRE BTK7200 B738 SAMKO 360 10000 250")
+  asked(ex("create Firefly 2130 ATR seventy at TOPAX heading 090 5000 180 knots"), "no such ATR: asked")
+end
