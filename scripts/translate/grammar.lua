@@ -9751,7 +9751,8 @@ function G:state_question()
     local prev = self.t[i - 1]
     local opens = (not prev or prev.kind == "punct" or prev.filler or self:word(i - 1, "and @then_words"))
       and not G.restated_after_marker(self, i)
-    local k = opens and ((self:word(i, G.question_with_is) and self:word(i + 1, "is about") and i + 2)
+    local k = opens and ((self:word(i, G.question_with_is) and self:word(i + 1, self:word(i, "why where")
+        and "is are" or "is about") and i + 2)
       or (self:word(i, G.question_opens) and i + 1)) or nil
     if k and self:word(k, "that the") then k = k + 1 end
     -- ("how about CXA8301 turn right 30 degrees", "how about let CCA1831 speed 300 knots": "how about" before an
@@ -9808,7 +9809,8 @@ function G:state_question()
         e = e + 1
       end
       local rest = self:skip_fillers(e)
-      local alone = (called_first or i == self:skip_fillers(1)) and rest > #self.t
+      -- (a reason asked, "why is X climbing to FL300?", is no state POS shows: asked)
+      local alone = (called_first or i == self:skip_fillers(1)) and rest > #self.t and not self:word(i, "why")
       local instructed, shown = false, {}
       for _, line in ipairs(self.out) do
         local name, cid, arg = line:match("^(%u+) (%S+)%s*(%S*)")
@@ -11694,6 +11696,38 @@ G.least_told = 100  -- [ft], [ft/min]
 G.told_values = { alt = { "an altitude", "ft" }, vs = { "a vertical speed", "ft/min" },
                   zone = { "a protected zone half height", "ft" } }
 G.told_units = set_of({ "ft", "feet", "foot", "fpm", "m", "metres", "meters" })
+-- A heading's number said with a unit of another measure after it ("heading 200 knots", "turn left heading 200
+-- ft", "heading 090 miles") is no heading for sure (a speed or a level may be meant): asked, never flown.
+G.heading_foreign_units = { knots = true, knot = true, kts = true, kt = true, feet = true, ft = true, foot = true,
+  metres = true, meters = true, m = true, miles = true, nm = true, mach = true, fpm = true, kmh = true, mph = true }
+function G:heading_unit()
+  for _, line in ipairs(self.out) do
+    local v = line:match("^HDG %S+ (%d+)")
+    v = v and tonumber(v)
+    for i, t in ipairs(v and self.t or {}) do
+      local after = self.t[i + 1]
+      if t.kind == "number" and tonumber(t.num) and math.floor(tonumber(t.num) + 0.5) % 360 == v % 360
+          and after and after.kind == "word" and G.heading_foreign_units[after.text]
+          and self:word_in(math.max(1, i - 3), i, "heading hdg turn") then
+        return self:need(string.format("I have %s, but I heard '%s %s' for the heading. Is it a heading, or a "
+          .. "speed or level?", table.concat(self.out, " ; "), t.raw, after.raw))
+      end
+    end
+  end
+end
+-- A Mach number of 1 or more, or under 0.1, in a command ("speed 250 mach": M0250, "speed mach 250": M02.5, "78
+-- mach": M078) is no speed meant for traffic squawk flies: asked, naming what was heard, never sent.
+function G:implausible_mach()
+  for _, line in ipairs(self.out) do
+    for m in line:gmatch("%f[%w]M(0[%d%.]*)%f[%W]") do  -- (as f.mach writes a Mach number)
+      local v = tonumber(m)
+      if v and (v >= 1 or v < 0.1) then
+        return self:need(string.format("I have %s, but Mach %s is no speed an airliner flies. Which Mach number "
+          .. "(e.g. 0.78) or speed in knots do you mean?", table.concat(self.out, " ; "), m:gsub("^0+(%d)", "%1")))
+      end
+    end
+  end
+end
 function G:implausible_values()
   local function small(v)
     v = tonumber(v)
@@ -11877,6 +11911,13 @@ function G:aircraft_aside()
         return self:need(string.format("I have %s. Is %s, named after '%s', to get an instruction, or is it "
           .. "traffic or a reference? Please give each aircraft its own instruction.", table.concat(self.out, " ; "),
           id, self:raw(p, k + 1)))
+      end
+      -- ("KLM12 climb FL300 and follow BAW5", "..., keep following the BAW5": a sequence squawk cannot fly, told as
+      -- an instruction, never dropped while the rest runs)
+      if (self:word(k, "follow") and not self:word(k - 1, "to will would should can could") or self:word(k, "following")
+          and self:word(k - 1, "keep")) and not self:in_reason(k) then
+        return self:need(string.format("I have %s, but squawk cannot make an aircraft '%s %s'. Should I give the rest, "
+          .. "or nothing?", table.concat(self.out, " ; "), self.t[k].raw, id))
       end
       local v = r.e
       if self:word(v, "will is shall should") then v = v + 1 end
@@ -14880,6 +14921,8 @@ function M.translate(text, world)
   if not g.ask and #g.out > 0 then g:count_alone() end
   if not g.ask then g:short_level() end
   if not g.ask then g:implausible_values() end
+  if not g.ask and #g.out > 0 and lower:find("m", 1, true) then g:implausible_mach() end
+  if not g.ask and #g.out > 0 and (lower:find("head", 1, true) or lower:find("hdg", 1, true)) then g:heading_unit() end
   if not g.ask and #g.out > 0 then g:value_rejected() end
   if not g.ask and #g.out > 0 then g:instruction_withheld() end
   if not g.ask and not g.leftover and #g.out > 0 then g:clock_verb_left() end

@@ -17878,6 +17878,25 @@ do
   asked(ex("EZY31 turn left heading 200, then to wibble on the thing"), "then to wibble")
   asked(ex("EZY31 climb FL280 then to foo bar"), "then to foo")
   check_eq(ex("EZY31 climb FL280 to avoid the traffic"), "ALT EZY31 FL280")
+  -- a Mach number of 1 or more, or under 0.1: asked, never sent
+  asked(ex("DLH7 speed 280 mach"), "Mach 280")
+  asked(ex("DLH7 increase speed to mach 180"), "Mach 1.8")
+  asked(ex("SAS44 reduce 74 mach"), "Mach 74")
+  check_eq(ex("DLH7 mach 76"), "SPD DLH7 M0.76")
+  check_eq(ex("DLH7 reduce to mach point seven four"), "SPD DLH7 M0.74")
+  -- a heading's number with a unit of another measure after it: asked
+  asked(ex("SAS44 heading 150 knots"), "heading with knots")
+  asked(ex("SAS44 turn right heading 150 feet please"), "heading with feet")
+  asked(ex("fly heading 270 kts EZY31"), "heading with kts")
+  check_eq(ex("SAS44 heading 150, speed 230 knots"), "HDG SAS44 150 ; SPD SAS44 230")
+  -- "follow" another aircraft told as an instruction: asked, never dropped
+  asked(ex("EZY31 climb FL280 and follow DLH7"), "follow DLH7")
+  asked(ex("EZY31 descend FL200, keep following the SAS44"), "keep following")
+  check_eq(ex("EZY31 climb FL280 to follow DLH7"), "ALT EZY31 FL280")
+  -- a reason asked is no state: asked; where an aircraft goes is shown
+  asked(ex("why is EZY31 climbing to FL280?"), "why")
+  asked(ex("Why are EZY31 and DLH7 turning left heading 100?"), "why, two aircraft")
+  check_eq(ex("where is EZY31?"), "POS EZY31")
 end
 -- Cycle 59 (fhz5) over the navdata: a city's name held inside one airport's long name is no airport; a question
 -- about a destination or origin shows it
