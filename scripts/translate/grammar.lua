@@ -11696,10 +11696,10 @@ G.least_told = 100  -- [ft], [ft/min]
 G.told_values = { alt = { "an altitude", "ft" }, vs = { "a vertical speed", "ft/min" },
                   zone = { "a protected zone half height", "ft" } }
 G.told_units = set_of({ "ft", "feet", "foot", "fpm", "m", "metres", "meters" })
--- A heading's number said with a unit of another measure after it ("heading 200 knots", "turn left heading 200
--- ft", "heading 090 miles") is no heading for sure (a speed or a level may be meant): asked, never flown.
+-- A heading's number said with a unit of another measure after it, no number after that ("heading 200 knots",
+-- "turn left heading 200 ft", "heading 090 miles"; "hdg 320 m.80" is the Mach's) is no heading for sure (a speed or a level may be meant): asked, never flown.
 G.heading_foreign_units = { knots = true, knot = true, kts = true, kt = true, feet = true, ft = true, foot = true,
-  metres = true, meters = true, m = true, miles = true, nm = true, mach = true, fpm = true, kmh = true, mph = true }
+  metres = true, meters = true, miles = true, nm = true, fpm = true, kmh = true, mph = true }
 function G:heading_unit()
   for _, line in ipairs(self.out) do
     local v = line:match("^HDG %S+ (%d+)")
@@ -11708,6 +11708,7 @@ function G:heading_unit()
       local after = self.t[i + 1]
       if t.kind == "number" and tonumber(t.num) and math.floor(tonumber(t.num) + 0.5) % 360 == v % 360
           and after and after.kind == "word" and G.heading_foreign_units[after.text]
+          and not (self.t[i + 2] and self.t[i + 2].kind == "number")  -- ("hdg 320 kt 250": the next value's unit)
           and self:word_in(math.max(1, i - 3), i, "heading hdg turn") then
         return self:need(string.format("I have %s, but I heard '%s %s' for the heading. Is it a heading, or a "
           .. "speed or level?", table.concat(self.out, " ; "), t.raw, after.raw))
@@ -11967,7 +11968,8 @@ G.condition_openers = { ["if"] = true, unless = true, provided = true, providing
 -- traffic (G.traffic_condition_words) follows in its clause: "provided there is no conflict", "as long as BAW5 is
 -- clear", "assuming no traffic", "given that the conflict is solved", "so long as", "on condition that".
 G.condition_phrases = { "provided", "providing", "as long as", "so long as", "only if", "assuming", "given that",
-  "given there", "given no", "on condition that", "on the condition that", "if and only if", "in case of no" }
+  "given there", "given no", "on condition that", "on the condition that", "if and only if", "in case of no",
+  "subject to", "depending on" }
 -- The first clause (from a phrase of G.condition_phrases to the next mark) with a traffic word in it, in the request
 -- in lower case; nil when none. Its command is asked, never given with the condition dropped.
 function G.traffic_condition_clause(lower)
@@ -14945,7 +14947,8 @@ function M.translate(text, world)
   if not g.ask then g:values_misread() end
   if not g.ask and g.leftover then g:heard_route_place() end
   if not g.ask and #g.out > 0 and (lower:find("provid") or lower:find("long as") or lower:find("assuming")
-      or lower:find("given") or lower:find("only if") or lower:find("condition") or lower:find("in case")) then
+      or lower:find("given") or lower:find("only if") or lower:find("condition") or lower:find("in case")
+      or lower:find("subject to") or lower:find("depending on")) then
     -- ("..., provided there is no conflict", "as long as BAW5 is clear": G.traffic_condition_clause)
     local clause = G.traffic_condition_clause(lower)
     if clause then

@@ -17831,6 +17831,8 @@ do
   asked(ex("EZY31 descend flight level two zero zero so long as separation is assured"), "so long as")
   asked(ex("EZY31 turn left heading 010 assuming no conflict"), "assuming")
   asked(ex("SAS44 reduce speed 250 knots, given that the spacing stays"), "given that")
+  asked(ex("SAS44 reduce speed 250 knots subject to traffic"), "subject to traffic")
+  asked(ex("EZY31 climb FL280 depending on the conflict with DLH7"), "depending on")
   check(ex("EZY31 climb to FL280 provided there is no conflict"):find("cannot wait for 'provided there is no "
     .. "conflict'", 1, true) ~= nil, "the condition is named")
   -- no traffic word in its clause: read as before ("if the weather allows" is a hedge)
@@ -17889,6 +17891,7 @@ do
   asked(ex("SAS44 turn right heading 150 feet please"), "heading with feet")
   asked(ex("fly heading 270 kts EZY31"), "heading with kts")
   check_eq(ex("SAS44 heading 150, speed 230 knots"), "HDG SAS44 150 ; SPD SAS44 230")
+  check_eq(ex("sas44 hdg 150 m.78"), "HDG SAS44 150 ; SPD SAS44 M0.78")
   -- "follow" another aircraft told as an instruction: asked, never dropped
   asked(ex("EZY31 climb FL280 and follow DLH7"), "follow DLH7")
   asked(ex("EZY31 descend FL200, keep following the SAS44"), "keep following")
