@@ -8586,8 +8586,9 @@ function G:purpose(k)
     return false
   end
   local nx = self.t[k + 1]
+  -- ("..., then to blah on something": "to" after "then" opens the next instruction's place or value, no purpose)
   if not nx or nx.kind ~= "word" or not nx.alpha or nx.number_word or not nx.raw:match("^%l+$")
-      or #self:refs_in(k + 1, k + 2) > 0 then
+      or #self:refs_in(k + 1, k + 2) > 0 or self:word(k - 1, "@then_words") then
     return false
   end
   -- a value said before it, none in its clause; a verb squawk knows only straight after the value, with
@@ -9757,7 +9758,12 @@ end
 -- instructs them. Said alone (to its "?" and the end) it is read as POS of each; with anything else after it, or an
 -- instruction of the request naming one of them outside it, it is asked.
 -- (the commands a question's values are misread as: G:state_question)
-G.asked_values = { ALT = true, SPD = true, HDG = true, VS = true }
+-- (DEST, ORIG, DIRECT, ADDWPT with a place: "is KLM12 going to EHAM?" sets nothing; alone, a destination or
+-- origin asked is shown by DEST or ORIG with the aircraft alone, the rest by POS, whose reply holds the selected
+-- altitude, heading, speeds and active waypoint)
+G.asked_values = { ALT = true, SPD = true, HDG = true, VS = true, DEST = true, ORIG = true, DIRECT = true,
+  ADDWPT = true }
+G.asked_shown = { DEST = "DEST", ORIG = "ORIG" }
 G.question_opens, G.question_with_is = set_of(lexicon.state_question.opens), set_of(lexicon.state_question.with_is)
 -- True when the "is" at i follows a self-correction marker (lexicon.self_correction.markers, one word; a mark or
 -- fillers between) in a clause with no "?": "..., no wait, I was wrong, is the Wizz not the easyJet" restates which
@@ -9778,7 +9784,8 @@ function G:state_question()
     local prev = self.t[i - 1]
     local opens = (not prev or prev.kind == "punct" or prev.filler or self:word(i - 1, "and @then_words"))
       and not G.restated_after_marker(self, i)
-    local k = opens and ((self:word(i, G.question_with_is) and self:word(i + 1, "is about") and i + 2)
+    local k = opens and ((self:word(i, G.question_with_is) and self:word(i + 1, self:word(i, "why where")
+        and "is are" or "is about") and i + 2)
       or (self:word(i, G.question_opens) and i + 1)) or nil
     if k and self:word(k, "that the") then k = k + 1 end
     -- ("how about CXA8301 turn right 30 degrees", "how about let CCA1831 speed 300 knots": "how about" before an
@@ -9835,16 +9842,20 @@ function G:state_question()
         e = e + 1
       end
       local rest = self:skip_fillers(e)
-      local alone = (called_first or i == self:skip_fillers(1)) and rest > #self.t
-      local instructed = false
+      -- (a reason asked, "why is X climbing to FL300?", is no state POS shows: asked)
+      local alone = (called_first or i == self:skip_fillers(1)) and rest > #self.t and not self:word(i, "why")
+      local instructed, shown = false, {}
       for _, line in ipairs(self.out) do
-        local name, cid = line:match("^(%u+) (%S+)")
-        instructed = instructed or (G.asked_values[name] and seen[cid:upper()] == true)
+        local name, cid, arg = line:match("^(%u+) (%S+)%s*(%S*)")
+        local asked = G.asked_values[name] and seen[cid:upper()] == true
+          and (arg ~= "" or not G.asked_shown[name])
+        instructed = instructed or asked
+        if asked and G.asked_shown[name] then shown[cid:upper()] = G.asked_shown[name] end
       end
       -- (what a question reads that is no value's instruction stands: "what's X's destination?" DEST X)
       if instructed and alone then
         self.out = {}
-        for _, id in ipairs(ids) do self.out[#self.out + 1] = "POS " .. id end
+        for _, id in ipairs(ids) do self.out[#self.out + 1] = (shown[id] or "POS") .. " " .. id end
         for x = 1, #self.t do self.noted[x] = true end
         for _, q in ipairs(self:quantities(1, #self.t + 1)) do self:take(q) end
         return
@@ -11728,6 +11739,39 @@ G.least_told = 100  -- [ft], [ft/min]
 G.told_values = { alt = { "an altitude", "ft" }, vs = { "a vertical speed", "ft/min" },
                   zone = { "a protected zone half height", "ft" } }
 G.told_units = set_of({ "ft", "feet", "foot", "fpm", "m", "metres", "meters" })
+-- A heading's number said with a unit of another measure after it, no number after that ("heading 200 knots",
+-- "turn left heading 200 ft", "heading 090 miles"; "hdg 320 m.80" is the Mach's) is no heading for sure (a speed or a level may be meant): asked, never flown.
+G.heading_foreign_units = { knots = true, knot = true, kts = true, kt = true, feet = true, ft = true, foot = true,
+  metres = true, meters = true, miles = true, nm = true, fpm = true, kmh = true, mph = true }
+function G:heading_unit()
+  for _, line in ipairs(self.out) do
+    local v = line:match("^HDG %S+ (%d+)")
+    v = v and tonumber(v)
+    for i, t in ipairs(v and self.t or {}) do
+      local after = self.t[i + 1]
+      if t.kind == "number" and tonumber(t.num) and math.floor(tonumber(t.num) + 0.5) % 360 == v % 360
+          and after and after.kind == "word" and G.heading_foreign_units[after.text]
+          and not (self.t[i + 2] and self.t[i + 2].kind == "number")  -- ("hdg 320 kt 250": the next value's unit)
+          and self:word_in(math.max(1, i - 3), i, "heading hdg turn") then
+        return self:need(string.format("I have %s, but I heard '%s %s' for the heading. Is it a heading, or a "
+          .. "speed or level?", table.concat(self.out, " ; "), t.raw, after.raw))
+      end
+    end
+  end
+end
+-- A Mach number of 1 or more, or under 0.1, in a command ("speed 250 mach": M0250, "speed mach 250": M02.5, "78
+-- mach": M078) is no speed meant for traffic squawk flies: asked, naming what was heard, never sent.
+function G:implausible_mach()
+  for _, line in ipairs(self.out) do
+    for m in line:gmatch("%f[%w]M(0[%d%.]*)%f[%W]") do  -- (as f.mach writes a Mach number)
+      local v = tonumber(m)
+      if v and (v >= 1 or v < 0.1) then
+        return self:need(string.format("I have %s, but Mach %s is no speed an airliner flies. Which Mach number "
+          .. "(e.g. 0.78) or speed in knots do you mean?", table.concat(self.out, " ; "), m:gsub("^0+(%d)", "%1")))
+      end
+    end
+  end
+end
 function G:implausible_values()
   local function small(v)
     v = tonumber(v)
@@ -11806,9 +11850,15 @@ end
 -- setting (lexicon.setting_verbs), or asking in a statement's word order ("the seed is 3?", "the trails are on?":
 -- m:statement_order_question), asks about a value; a setting given a value (a command with a value and no
 -- aircraft) is asked, never set.
+-- (a modal or "does" opening a question about a thing, no person: "can the resolution use vertical direction?",
+-- "does the resolution use vertical?", "will the detection use 5 NM?": its first sentence ends with "?"; "could"
+-- and "would", "be" ("can the detection be switched on?") or "please" in it make a polite request, read)
 function G:setting_question()
   local first = self:request_start()
-  if not (self:word(first, "is are") or self:statement_order_question(first, self:first_sentence_end()))
+  local ends = self:first_sentence_end()
+  local modal = self:word(first, "does do can will") and not self:word(first + 1, "you u we i it someone somebody")
+    and self.t[ends].text == "?" and not self:word_in(first, ends, "be please")
+  if not (self:word(first, "is are") or modal or self:statement_order_question(first, self:first_sentence_end()))
       or self:word_in(1, #self.t + 1, "@setting_verbs") then
     return
   end
@@ -11838,11 +11888,148 @@ function G:count_alone()
   end
 end
 
+-- True when a level this request clears an aircraft other than `id` to is not on the side `side` (1 above, -1
+-- below, 0 none) of aircraft id's level: "descend to FL220 below DLH7" with DLH7 at FL200.
+function G:level_contradicts(id, side)
+  local a = side ~= 0 and self:state(id)
+  if not a then return false end
+  for _, line in ipairs(self.out) do
+    local cid, v = line:match("^ALT (%S+) (%S+)")
+    local ft = v and (v:match("^FL(%d+)$") and tonumber(v:match("^FL(%d+)$")) * 100 or tonumber(v))
+    if ft and cid ~= id and (ft - a.alt_ft) * side <= 0 then return true end
+  end
+  return false
+end
+-- An aircraft the request names beside the one it instructs, never silently made an addressee nor dropped:
+-- - after a preposition of place or order with another aircraft instructed and a value said before it, when it
+--   is instructed too, after "over" or "behind" (a sequence or a crossing squawk cannot wait for: "KLM12 climb
+--   FL300 over BAW5", "reduce to 250 behind BAW5"), or after "above"/"below" with the level cleared on the other
+--   side of its level: traffic or a reference, asked ("FL190 below SAS310" at FL200, "ahead of", is read);
+-- - said before a verb of staying ("BAW5 stays at FL240", "remains", "keeps", "will stay", "is to maintain")
+--   with no command of its own: its own statement, asked, never dropped while the rest runs;
+-- - instructed after a word taking back what came before ("KLM12 heading 200, sorry, TRA34 climb FL300", "I
+--   mean", "correction") when the aircraft before it is instructed too: which stands is asked, never both.
+G.reference_prepositions = "over above below beneath under underneath behind"
+G.staying_verbs = "stays stay remains remain keeps keep maintains maintain continues holds staying remaining keeping"
+G.addressee_taken_back = "sorry correction disregard negative actually rather scratch belay"
+function G:aircraft_aside()
+  local function commanded(id)
+    for _, line in ipairs(self.out) do
+      if line:find("%f[%w]" .. id .. "%f[%W]") then return line end
+    end
+    return nil
+  end
+  local function other_commanded(id)
+    for _, line in ipairs(self.out) do
+      local cid = line:match("^%u+ (%S+)")
+      if cid and cid ~= id and self:state(cid) then return line end
+    end
+    return nil
+  end
+  -- (a distance or a height said straight before k, no flight level: "1000 feet below AC01", "5 miles behind")
+  local function measured(k)
+    for _, q in ipairs(self:quantities(math.max(1, k - 4), k)) do
+      if q.e >= k - 1 and not q.fl and (q.kind == "alt" or q.kind == "dist") then return true end
+    end
+    return false
+  end
+  -- (a value said before k: the preposition follows an instruction's value, not a description before it)
+  local function valued(k)
+    for x = 1, k - 1 do
+      if self.t[x].kind ~= "word" and self.t[x].kind ~= "punct" then return true end
+    end
+    return false
+  end
+  local prev
+  for _, r in ipairs(self.refs) do
+    if r.kind == "aircraft" and r.exists and not r.false_start then
+      local id = r.name:upper()
+      local k = self:word(r.b - 1, "the") and r.b - 2 or r.b - 1
+      -- (none in a reason or purpose, "so it passes over TEST02", nor after a value it measures from, "1000 feet
+      -- below AC01", which the value's instruction reads)
+      local p = self:word(k, "of") and self:word(k - 1, "ahead") and k - 1 or k
+      if (self:word(k, G.reference_prepositions) or p < k) and other_commanded(id) and not self:in_reason(k)
+          and not measured(p) and valued(p)
+          and (commanded(id) or self:word(k, "behind over") or self:level_contradicts(id, self:word(k, "above") and 1
+            or self:word(k, "below beneath under underneath") and -1 or 0)) then
+        return self:need(string.format("I have %s. Is %s, named after '%s', to get an instruction, or is it "
+          .. "traffic or a reference? Please give each aircraft its own instruction.", table.concat(self.out, " ; "),
+          id, self:raw(p, k + 1)))
+      end
+      -- ("KLM12 climb FL300 and follow BAW5", "..., keep following the BAW5": a sequence squawk cannot fly, told as
+      -- an instruction, never dropped while the rest runs)
+      if (self:word(k, "follow") and not self:word(k - 1, "to will would should can could") or self:word(k, "following")
+          and self:word(k - 1, "keep")) and not self:in_reason(k) then
+        return self:need(string.format("I have %s, but squawk cannot make an aircraft '%s %s'. Should I give the rest, "
+          .. "or nothing?", table.concat(self.out, " ; "), self.t[k].raw, id))
+      end
+      local v = r.e
+      if self:word(v, "will is shall should") then v = v + 1 end
+      if self:word(v, "to") then v = v + 1 end
+      if self:word(v, G.staying_verbs) and not commanded(id) then
+        -- (no value in its clause, or the level it is at or cleared to, "stays at 200" at FL200: nothing to send,
+        -- said in the note; a place or another value is asked)
+        local e = v + 1
+        while self.t[e] and self.t[e].kind ~= "punct" and not self:has_ref(e, e + 1, "aircraft")
+            and not self:word(e, "and @then_words") do
+          e = e + 1
+        end
+        local qs, a = self:quantities(v + 1, e), self:state(id)
+        local level = #qs == 1 and (qs[1].kind == "alt" and self:cleared_level(qs[1]) or qs[1].value)
+        local held = a and not self:has_ref(v + 1, e, "waypoint") and (#qs == 0 or level and
+          (level == a.sel_alt_ft or level == a.alt_ft or level * 100 == a.sel_alt_ft))
+        if held then
+          self.kept_note = string.format("%s%s keeps what it has ('%s'): nothing was sent for it.",
+            self.kept_note and self.kept_note .. " " or "", id, self:raw(r.b, e))
+          goto next_ref
+        end
+        return self:need(string.format("I have %s. What should %s do: keep what it has (nothing to send), or is "
+          .. "'%s' an instruction for it? Please say it as one.", table.concat(self.out, " ; "), id,
+          self:raw(r.b, v + 1)))
+      end
+      if prev and prev.id ~= id and commanded(id) and commanded(prev.id) then
+        for x = prev.e, r.b - 1 do
+          if self:word(x, G.addressee_taken_back) or (self:word(x, "mean meant") and self:word(x - 1, "i")) then
+            return self:need(string.format("I have %s. Does '%s' take back what %s was given, or do both stand? "
+              .. "Please say again what each aircraft should do.", table.concat(self.out, " ; "),
+              self:word(x, "mean meant") and self:raw(x - 1, x + 1) or self.t[x].raw, prev.id))
+          end
+        end
+      end
+      ::next_ref::
+      prev = { id = id, e = r.e }
+    end
+  end
+end
+
 -- the words of a condition on the traffic (G:declared)
 G.traffic_condition_words = "traffic conflict conflicts conflicting separation separated spacing clear free close "
   .. "closer intruder alert alerts collision proximity crossing converging"
 -- the words opening a condition on the traffic that no command waits for, asked with the clause they open
 G.condition_openers = { ["if"] = true, unless = true, provided = true, providing = true }
+-- The phrases opening a condition (one word or several, lower case) that no command waits for when a word of the
+-- traffic (G.traffic_condition_words) follows in its clause: "provided there is no conflict", "as long as BAW5 is
+-- clear", "assuming no traffic", "given that the conflict is solved", "so long as", "on condition that".
+G.condition_phrases = { "provided", "providing", "as long as", "so long as", "only if", "assuming", "given that",
+  "given there", "given no", "on condition that", "on the condition that", "if and only if", "in case of no",
+  "subject to", "depending on" }
+-- The first clause (from a phrase of G.condition_phrases to the next mark) with a traffic word in it, in the request
+-- in lower case; nil when none. Its command is asked, never given with the condition dropped.
+function G.traffic_condition_clause(lower)
+  for _, p in ipairs(G.condition_phrases) do
+    local at = 1
+    while true do
+      local b = lower:find("%f[%a]" .. p:gsub(" ", "%%s+") .. "%f[%A]", at)
+      if not b then break end
+      local clause = lower:sub(b):match("^[^,;.!?]+"):gsub("%s+$", "")
+      for w in clause:gmatch("%a+") do
+        if (" " .. G.traffic_condition_words .. " "):find(" " .. w .. " ", 1, true) then return clause end
+      end
+      at = b + 1
+    end
+  end
+  return nil
+end
 -- A request put as a question of the listener's opinion ("do you think KLM12 can climb to FL300?", "maybe KLM12
 -- should climb FL300, what do you think?", "should KLM12 climb to FL300?", "shall I clear KLM12 to FL300?", "is it a
 -- good idea to ...") or of an aircraft's ability ("can KLM12 reach FL400?", "is KLM12 able to climb FL400?",
@@ -14775,6 +14962,7 @@ function M.translate(text, world)
   if not g.ask then g:dangling_correction() end
   if not g.ask and #g.out > 0 then g:dangling_value_name() end
   if not g.ask and #g.out > 1 then g:side_by_side_callsigns() end
+  if not g.ask and #g.out > 0 and #g.refs > 1 then g:aircraft_aside() end
   if not g.ask then g:list_value() end
   if not g.ask then g:setting_twice() end
   if not g.ask then g:setting_question() end
@@ -14782,6 +14970,8 @@ function M.translate(text, world)
   if not g.ask and #g.out > 0 then g:count_alone() end
   if not g.ask then g:short_level() end
   if not g.ask then g:implausible_values() end
+  if not g.ask and #g.out > 0 and lower:find("m", 1, true) then g:implausible_mach() end
+  if not g.ask and #g.out > 0 and (lower:find("head", 1, true) or lower:find("hdg", 1, true)) then g:heading_unit() end
   if not g.ask and #g.out > 0 then g:value_rejected() end
   if not g.ask and #g.out > 0 then g:instruction_withheld() end
   if not g.ask and not g.leftover and #g.out > 0 then g:clock_verb_left() end
@@ -14803,6 +14993,16 @@ function M.translate(text, world)
   if not g.ask and not g.leftover and lower:find("or", 1, true) then g:alternatives() end
   if not g.ask then g:values_misread() end
   if not g.ask and g.leftover then g:heard_route_place() end
+  if not g.ask and #g.out > 0 and (lower:find("provid") or lower:find("long as") or lower:find("assuming")
+      or lower:find("given") or lower:find("only if") or lower:find("condition") or lower:find("in case")
+      or lower:find("subject to") or lower:find("depending on")) then
+    -- ("..., provided there is no conflict", "as long as BAW5 is clear": G.traffic_condition_clause)
+    local clause = G.traffic_condition_clause(lower)
+    if clause then
+      g.ask = string.format("I have %s, but squawk cannot wait for '%s'. Should I give it now, or not at all?",
+        table.concat(g.out, " ; "), clause)
+    end
+  end
   if not g.ask and g.leftover and #g.out > 0 and G.condition_openers[g.leftover:lower()] then
     -- ("..., if there is no conflict", "unless there is traffic": a condition on the traffic no command waits for)
     local b = lower:find("%f[%a]" .. g.leftover:lower() .. "%f[%A]")
@@ -14838,6 +15038,7 @@ function M.translate(text, world)
       out[#out + 1], seen[line] = line, clocked and clock or true
     end
   end
+  if g.kept_note then note = note and note .. " " .. g.kept_note or g.kept_note end
   return { commands = out, note = note, confirm_first = g.confirm_first }
 end
 -- A request asked about is read again with its typing slips (translate/typos.lua) read as the words they may be.

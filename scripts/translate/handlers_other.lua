@@ -2070,6 +2070,17 @@ return function(H, f, compass)
               if not class or class(x) ~= "CLOSED" then ids[#ids + 1] = x end  -- (a closed airport is none)
             end
             local id = self:one_named(ids, "airport", phrase, 4)
+            -- ("destination Paris": one word held inside one airport's long name, LE TOUQUET PARIS PLAGE, that
+            -- is also the name of a navaid beside other airports, the PARIS VOR by KPRX, or begins the names of
+            -- large airports, a city's: no one airport, asked naming them; "Midway", "Kennedy" name no other)
+            local others = id and n == 1 and not self.ask and self:airport_word_elsewhere(words[1], id)
+            if others then
+              self:need(string.format("Which airport is '%s'? %s holds the word in its name, and %s %s named "
+                .. "by it too. Please give its ICAO code.", self.t[i].raw, id, table.concat(others, " or "),
+                #others > 1 and "are" or "is"))
+              self:explain_place(i, i + 1)
+              return id
+            end
             if id then
               -- (its city before a name of two or three words: "Paris Charles de Gaulle")
               local from = n > 1 and self:city_before_airport(i, i + n, id) and i - 1 or i
@@ -2081,6 +2092,25 @@ return function(H, f, compass)
       end
     end
     return nil
+  end
+
+  -- The airports other than `id` that the one lower-case word `w` also names (at most 4): those beside a navaid
+  -- called `w` (sim:airports_beside_navaids) and the large airports whose names begin with it (a city's,
+  -- sim:airports_of_city); nil when none, or when the airport `id` is itself among them or w names it first.
+  function m:airport_word_elsewhere(w, id)
+    local world = self.world
+    if not (world.airports_beside_navaids and world.airports_of_city and world.airports_named) then return nil end
+    local out, seen = {}, { [id] = true }
+    for _, x in ipairs(world.airports_named(w)) do
+      if x == id then return nil end
+    end
+    for _, by in ipairs({ world.airports_beside_navaids(w), world.airports_of_city(w) }) do
+      for _, x in ipairs(by) do
+        if x == id then return nil end
+        if not seen[x] and #out < 4 then out[#out + 1], seen[x] = x, true end
+      end
+    end
+    return #out > 0 and out or nil
   end
 
   -- True when the capitalised word before i, where the words [i, e) name airport `id`, is that airport's city ("Paris

@@ -852,7 +852,8 @@ return {
   -- between ("is that KLM12 at FL300?"); an aircraft called before it or at its end is asked about as "you" ("KLM12,
   -- are you at FL300?", "are you at FL300, KLM12?")
   state_question = { opens = { "is", "are", "was", "were", "does", "do", "did", "has", "what", "how" },
-                     with_is = { "what", "how" } },
+                     -- ("why is KLM12 climbing to FL300?", "where is KLM12 going, EHAM?": asked, or shown)
+                     with_is = { "what", "how", "why", "where" } },
   -- interjections said before a question about a setting ("hmm wait is conflict detection even on rn?"): passed
   -- over to find the question's first word, which decides whether the setting is asked about or switched
   -- verbs that change a setting; a request opening "is"/"are" with none of them asks about a value (G:setting_question)

@@ -17939,3 +17939,105 @@ do
     "CRE BTK7200 B738 SAMKO 360 10000 250")
   asked(ex("create Firefly 2130 ATR seventy at TOPAX heading 090 5000 180 knots"), "no such ATR: asked")
 end
+-- Cycle 59 (fhz5): wrong commands a careful controller would not have issued: a condition on the traffic after
+-- "provided", "as long as", "assuming", "given"; a second aircraft after a preposition of place or order, or said
+-- before a verb of staying; a correction that changes the addressee; a yes/no question about a destination, an
+-- origin or a direct-to; a question about a setting opened by "can"/"does"/"will"; "then to" before unknown words
+do
+  local _, ex = scene({ "CRE EZY31 A320 51.0 3.0 090 FL240 280", "CRE DLH7 A321 51.2 3.3 270 FL260 290",
+    "CRE SAS44 B738 51.4 3.1 180 FL200 270", "DEFWPT MOLEN 51.5 4.0" })
+  local function tr(text) return graph.translate(text, { sim = _, mode = "offline" }) end
+  -- a condition on the traffic, whatever phrase opens it, before or after the instruction: asked, named
+  asked(ex("EZY31 climb to FL280 provided the traffic is clear"), "provided: a condition no command waits for")
+  asked(ex("Providing there's no conflict with DLH7, EZY31 climb FL280"), "providing before the instruction")
+  asked(ex("EZY31 descend FL200 as long as there is no traffic below"), "as long as")
+  asked(ex("EZY31 descend flight level two zero zero so long as separation is assured"), "so long as")
+  asked(ex("EZY31 turn left heading 010 assuming no conflict"), "assuming")
+  asked(ex("SAS44 reduce speed 250 knots, given that the spacing stays"), "given that")
+  asked(ex("SAS44 reduce speed 250 knots subject to traffic"), "subject to traffic")
+  asked(ex("EZY31 climb FL280 depending on the conflict with DLH7"), "depending on")
+  check(ex("EZY31 climb to FL280 provided there is no conflict"):find("cannot wait for 'provided there is no "
+    .. "conflict'", 1, true) ~= nil, "the condition is named")
+  -- no traffic word in its clause: read as before ("if the weather allows" is a hedge)
+  check_eq(ex("EZY31 climb to FL280 provided the weather allows"), "ALT EZY31 FL280")
+  check_eq(ex("EZY31 climb to FL280"), "ALT EZY31 FL280")
+  -- a second aircraft after a preposition of place or order, an instruction's value said before: asked
+  asked(ex("EZY31 climb to FL280 over DLH7"), "over: traffic or a reference")
+  asked(ex("EZY31 reduce to 250 knots behind SAS44"), "behind: a sequence squawk cannot fly")
+  asked(ex("EZY31 climb to flight level 270 below the DLH7"), "below DLH7 at FL260, but above its level")
+  asked(ex("SAS44 climb to FL230 above EZY31"), "above EZY31 at FL240, but below its level")
+  check_eq(ex("SAS44 climb to FL250 above EZY31"), "ALT SAS44 FL250")
+  -- below or above it on the side of its level said (cycle 42's traffic placed), or "ahead of": read
+  check_eq(ex("EZY31 descend to flight level 220 below the DLH7"), "ALT EZY31 FL220")
+  check_eq(ex("climb EZY31 to FL280 ahead of DLH7 please"), "ALT EZY31 FL280")
+  -- a height or distance measured from it is read as before, and a description before the instruction too
+  check_eq(ex("Put EZY31 two thousand feet below DLH7"), "ALT EZY31 24000")
+  check_eq(ex("EZY31 is behind SAS44, descend EZY31 to FL200"), "ALT EZY31 FL200")
+  -- a second aircraft said before a verb of staying with no command of its own: at the level it has, nothing to
+  -- send (said in the note); another level or a place is asked, never dropped
+  local r = tr("EZY31 climb FL280, DLH7 stays at FL260")
+  check_eq(said(r), "ALT EZY31 FL280")
+  check(r.note ~= nil and r.note:find("DLH7 keeps what it has", 1, true) ~= nil, tostring(r.note))
+  check_eq(ex("SAS44 remains at FL200 and EZY31 climbs to FL280"), "ALT EZY31 FL280")
+  asked(ex("EZY31 climb FL280, DLH7 stays at FL300"), "another level than its own: asked")
+  asked(ex("EZY31 climb FL280, DLH7 remains at 240"), "240 is not DLH7's level")
+  asked(ex("EZY31 descend FL200, SAS44 keeps at FL240"), "keeps, another level")
+  -- a correction that changes the addressee between two instructions: which stands is asked, never both
+  asked(ex("EZY31 heading 200, sorry, SAS44 climb FL240"), "sorry between two aircraft's instructions")
+  asked(ex("EZY31 turn right heading 120, I mean DLH7 descend flight level 240"), "I mean")
+  check_eq(ex("EZY31 climb FL280, correction, SAS44 climb FL220"), "ALT SAS44 FL220")
+  check_eq(ex("EZY31 heading 200 and SAS44 climb FL240"), "HDG EZY31 200 ; ALT SAS44 FL240")
+  check_eq(ex("ezy31 hdg, i mean sas44 hdg 200"), "HDG SAS44 200")
+  -- a yes/no question about a level stays POS: its reply holds the selected altitude, heading and speeds
+  check_eq(ex("is EZY31 climbing to FL280?"), "POS EZY31")
+  check_eq(ex("Is DLH7 turning left heading 180?"), "POS DLH7")
+  -- about a destination, an origin or a direct-to it sets nothing: the destination or origin shown, else POS
+  check_eq(ex("is EZY31 going direct to MOLEN?"), "POS EZY31")
+  check_eq(ex("is EZY31 flying direct MOLEN?"), "POS EZY31")
+  asked(ex("is EZY31 going direct to MOLEN? if not, send it"), "a question and more: asked")
+  -- a question about a setting with a modal opening it, no person: asked; polite forms and passives read
+  asked(ex("can the resolution use vertical direction?"), "can: a question about the setting")
+  asked(ex("does the resolution use the vertical?"), "does")
+  check_eq(ex("can you set the resolution to vertical?"), "RMETHV V/S")
+  -- "then to" before words squawk does not know: asked, never dropped
+  asked(ex("EZY31 turn left heading 200, then to wibble on the thing"), "then to wibble")
+  asked(ex("EZY31 climb FL280 then to foo bar"), "then to foo")
+  check_eq(ex("EZY31 climb FL280 to avoid the traffic"), "ALT EZY31 FL280")
+  -- a Mach number of 1 or more, or under 0.1: asked, never sent
+  asked(ex("DLH7 speed 280 mach"), "Mach 280")
+  asked(ex("DLH7 increase speed to mach 180"), "Mach 1.8")
+  asked(ex("SAS44 reduce 74 mach"), "Mach 74")
+  check_eq(ex("DLH7 mach 76"), "SPD DLH7 M0.76")
+  check_eq(ex("DLH7 reduce to mach point seven four"), "SPD DLH7 M0.74")
+  -- a heading's number with a unit of another measure after it: asked
+  asked(ex("SAS44 heading 150 knots"), "heading with knots")
+  asked(ex("SAS44 turn right heading 150 feet please"), "heading with feet")
+  asked(ex("fly heading 270 kts EZY31"), "heading with kts")
+  check_eq(ex("SAS44 heading 150, speed 230 knots"), "HDG SAS44 150 ; SPD SAS44 230")
+  check_eq(ex("sas44 hdg 150 m.78"), "HDG SAS44 150 ; SPD SAS44 M0.78")
+  -- "follow" another aircraft told as an instruction: asked, never dropped
+  asked(ex("EZY31 climb FL280 and follow DLH7"), "follow DLH7")
+  asked(ex("EZY31 descend FL200, keep following the SAS44"), "keep following")
+  check_eq(ex("EZY31 climb FL280 to follow DLH7"), "ALT EZY31 FL280")
+  -- a reason asked is no state: asked; where an aircraft goes is shown
+  asked(ex("why is EZY31 climbing to FL280?"), "why")
+  asked(ex("Why are EZY31 and DLH7 turning left heading 100?"), "why, two aircraft")
+  check_eq(ex("where is EZY31?"), "POS EZY31")
+end
+-- Cycle 59 (fhz5) over the navdata: a city's name held inside one airport's long name is no airport; a question
+-- about a destination or origin shows it
+do
+  local s, ex = navscene({ "CRE AFR44 A320 48.5 2.3 090 FL240 280", "CRE UAL81 B738 41.5 -87.5 090 FL240 280" },
+    "fhz5's city-name checks")
+  if s then
+    asked(ex("AFR44 destination Paris"), "Paris: LE TOUQUET PARIS PLAGE holds the word only")
+    asked(ex("divert AFR44 to Paris please"), "divert to Paris")
+    check_eq(ex("AFR44 destination LFPO"), "DEST AFR44 LFPO")
+    check_eq(ex("AFR44 destination Orly"), "DEST AFR44 LFPO")
+    check_eq(ex("AFR44 destination Paris Charles de Gaulle"), "DEST AFR44 LFPG")
+    check_eq(ex("AFR44 destination Le Touquet"), "DEST AFR44 LFAT")
+    check_eq(ex("UAL81 destination Midway"), "DEST UAL81 KMDW")
+    check_eq(ex("is AFR44 going to LFPG?"), "DEST AFR44")
+    check_eq(ex("is UAL81 coming from KORD?"), "ORIG UAL81")
+  end
+end
