@@ -1651,7 +1651,7 @@ end
 function G.cut_off_restarts(text)
   local low, hesitant = text:lower(), false
   for _, h in ipairs(G.hesitation_patterns) do
-    if low:find(h.pattern) then hesitant = true break end
+    if low:find(h.word, 1, true) and low:find(h.pattern) then hesitant = true break end
   end
   if not hesitant then return text end
   local toks = {}
@@ -4245,8 +4245,12 @@ function G:request_opening(i)
       for w in p:gmatch("%S+") do table.insert(openings[n], w) end
     end
     G.request_opening_words = openings
+    -- (G.request_opening_firsts: the openings' first words, one list for G:word: none of them at i, no opening)
+    local firsts = {}
+    for n, p in ipairs(openings) do firsts[n] = p[1] end
+    G.request_opening_firsts = table.concat(firsts, " ")
   end
-  for _, p in ipairs(openings) do
+  for _, p in ipairs(self:word(i, G.request_opening_firsts) and openings or {}) do
     local k = i
     for _, w in ipairs(p) do
       if not self:word(k, w) then k = nil break end
@@ -8909,6 +8913,7 @@ end
 -- there ("over Schiphol, 48.1 N 11.6 E") stays unexplained and is asked about.
 function G:place_at_its_position()
   local near_nm = lexicon.named_position_nm
+  if not self:said("@named_position_leads") then return end  -- (G:said's guard before the scan)
   for k = 2, #self.t - 2 do
     if self:word(k - 1, "@named_position_leads") then
       local e = k
@@ -10032,8 +10037,8 @@ function G:unaccounted()
   end
   -- ("KLM12 no higher than FL300", "not lower than 8000 feet", "no higher FL300"): "no" or "not" before a level's
   -- comparative bounds the level, it clears none, and squawk keeps no level limit: asked, never flown as the level
-  -- ("climb FL300, no higher" bounds nothing of its own: no level after it)
-  for i = 1, #self.t do
+  -- ("climb FL300, no higher" bounds nothing of its own: no level after it; G:said's guard before the scan)
+  for i = 1, self:said("higher lower above below") and #self.t or 0 do
     local t = self.t[i]
     local v = (t.text == "no" or t.text == "not") and self:word(i + 1, "higher lower above below") and i + 2
     if v and self:word(v, "than") then v = v + 1 end
@@ -11301,7 +11306,8 @@ function G:values_named_unread()
   for _, line in ipairs(self.out) do
     if line:match("^VNAV %S+ ON$") then return end
   end
-  for i = 1, #self.t do
+  -- (G:values_named_alone reads a noun at i only: G:said's guard before the scan)
+  for i = 1, self:said("@route_value_nouns") and #self.t or 0 do
     local b, k, n = self:values_named_alone(i)
     if n == i and not self:in_reason(i) and not self.noted[i] then
       return self:need(string.format("I have %s. What does '%s' mean: its route's levels and speeds (VNAV ON), or "
@@ -11587,6 +11593,7 @@ G.value_judgement = { too = set_of(lexicon.judged_values.too), between = set_of(
              pronouns = set_of(lexicon.judged_values.pronouns) }
 function G:value_rejected()
   local J = self.value_judgement
+  if not self:said("too") then return end  -- (the judgement's word; G:said's guard before the scan)
   for k = 2, #self.t - 1 do
     if self:word(k, "too") and self.t[k + 1].kind == "word" and J.too[self.t[k + 1].text] then
       local j = k - 1
@@ -11815,8 +11822,21 @@ G.opinion_phrases = { "do you think", "what do you think", "what would you think
 G.polite_after_opinion = { "you could", "you can", "you might", "you would", "you'd", "you will", "you could please" }
 function G:opinion_question(lower)
   local said
+  -- (G.opinion_patterns[p]: the phrase p's first word, which lower holds wherever p is said, and its pattern;
+  -- built once per phrase)
+  local patterns = G.opinion_patterns
+  if not patterns then
+    patterns = {}
+    G.opinion_patterns = patterns
+  end
   for _, p in ipairs(G.opinion_phrases) do
-    local b, e = lower:find("%f[%a]" .. p:gsub(" ", "%%s+") .. "%f[%A]")
+    local pat = patterns[p]
+    if not pat then
+      pat = { p:match("^%S+"), "%f[%a]" .. p:gsub(" ", "%%s+") .. "%f[%A]" }
+      patterns[p] = pat
+    end
+    local b, e
+    if lower:find(pat[1], 1, true) then b, e = lower:find(pat[2]) end
     if b and not said then
       local rest = lower:sub(e + 1):gsub("^[%s,]+", "")
       local polite = false
