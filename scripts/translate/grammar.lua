@@ -4922,7 +4922,10 @@ end
 function G:segments(b, e)
   local trig = {}
   self.speed_again = {}
-  for i = self:said("at") and b or e, e - 1 do self.speed_again[i] = self:speed_again_at(i) end
+  -- (G:speed_again_at reads an "at" only)
+  for i = self:said("at") and b or e, e - 1 do
+    if self.words[i] == "at" then self.speed_again[i] = self:speed_again_at(i) end
+  end
   for i = b, e - 1 do
     -- (a word in a reason, "so we get the same run each time", starts no instruction)
     local intent = self:intent_at(i)
@@ -8001,9 +8004,12 @@ function G:dangling_correction()
     or self:word_in(1, first, "@correction") or self:word_in(1, first, SC_MARKERS))
   -- (an apology straight after a correction's new value, "descend FL80 negative FL90 sorry", "heading 200,
   -- correction, 220, sorry": it apologises for the value taken back, the new one stands)
+  -- (read only for a closing run that is marked: nothing else asks it)
   local marker = before
-  while marker > 1 and not (self:word(marker, "@correction") or SC_MARKERS[self.words[marker]]) do marker = marker - 1 end
-  aside = aside or (marker > 1 and #self:quantities(marker + 1, first) > 0)
+  while marked and marker > 1 and not (self:word(marker, "@correction") or SC_MARKERS[self.words[marker]]) do
+    marker = marker - 1
+  end
+  aside = aside or (marked and marker > 1 and #self:quantities(marker + 1, first) > 0)
   if marked and first > 1 and not self:apology_after_remark(first, last) and not aside then
     self:need(string.format("You said '%s' with nothing after it. What is the corrected instruction?",
       self:raw(first, last + 1)))
@@ -10361,17 +10367,22 @@ end
 -- mark after it: "descend fl300 maybe", "hdg 240, i think"), makes the request uncertain: asked, naming it.
 G.hedge_words = table.concat(lexicon.trailing_hedges.words, " ")
 G.questioned_hedges = table.concat(lexicon.trailing_hedges.questioned, " ")
+-- (every word a hedge opens on: a hedge word, a pair's first word, a questioned one)
+G.hedge_openers = G.hedge_words .. " " .. G.questioned_hedges
+for _, p in ipairs(lexicon.trailing_hedges.pairs) do G.hedge_openers = G.hedge_openers .. " " .. p[1] end
 function G:hedged()
   local h = lexicon.trailing_hedges
   local function closes(k) return self.t[k] == nil or self.t[k].kind == "punct" end
   for _, q in ipairs(self:quantities(1, #self.t + 1)) do
     local k, said = q.e, nil
-    if self:word(k, G.hedge_words) and closes(k + 1) then said = self:raw(k, k + 1) end
-    for _, p in ipairs(said and {} or h.pairs) do
-      if self:word(k, p[1]) and self:word(k + 1, p[2]) and closes(k + 2) then said = self:raw(k, k + 2) end
-    end
-    if not said and self:word(k, G.questioned_hedges) and self.t[k + 1] and self.t[k + 1].text == "?" then
-      said = self:raw(k, k + 1) .. "?"
+    if self:word(k, G.hedge_openers) then  -- (each reading opens on one of them)
+      if self:word(k, G.hedge_words) and closes(k + 1) then said = self:raw(k, k + 1) end
+      for _, p in ipairs(said and {} or h.pairs) do
+        if self:word(k, p[1]) and self:word(k + 1, p[2]) and closes(k + 2) then said = self:raw(k, k + 2) end
+      end
+      if not said and self:word(k, G.questioned_hedges) and self.t[k + 1] and self.t[k + 1].text == "?" then
+        said = self:raw(k, k + 1) .. "?"
+      end
     end
     if said then
       self.ask = string.format("%s. You said '%s' after '%s': should I send it as said, or which value do you mean?",
