@@ -1670,7 +1670,7 @@ end
 function G.cut_off_restarts(text)
   local low, hesitant = text:lower(), false
   for _, h in ipairs(G.hesitation_patterns) do
-    if low:find(h.pattern) then hesitant = true break end
+    if low:find(h.word, 1, true) and low:find(h.pattern) then hesitant = true break end
   end
   if not hesitant then return text end
   local toks = {}
@@ -4264,8 +4264,12 @@ function G:request_opening(i)
       for w in p:gmatch("%S+") do table.insert(openings[n], w) end
     end
     G.request_opening_words = openings
+    -- (G.request_opening_firsts: the openings' first words, one list for G:word: none of them at i, no opening)
+    local firsts = {}
+    for n, p in ipairs(openings) do firsts[n] = p[1] end
+    G.request_opening_firsts = table.concat(firsts, " ")
   end
-  for _, p in ipairs(openings) do
+  for _, p in ipairs(self:word(i, G.request_opening_firsts) and openings or {}) do
     local k = i
     for _, w in ipairs(p) do
       if not self:word(k, w) then k = nil break end
@@ -4937,7 +4941,10 @@ end
 function G:segments(b, e)
   local trig = {}
   self.speed_again = {}
-  for i = self:said("at") and b or e, e - 1 do self.speed_again[i] = self:speed_again_at(i) end
+  -- (G:speed_again_at reads an "at" only)
+  for i = self:said("at") and b or e, e - 1 do
+    if self.words[i] == "at" then self.speed_again[i] = self:speed_again_at(i) end
+  end
   for i = b, e - 1 do
     -- (a word in a reason, "so we get the same run each time", starts no instruction)
     local intent = self:intent_at(i)
@@ -8016,9 +8023,12 @@ function G:dangling_correction()
     or self:word_in(1, first, "@correction") or self:word_in(1, first, SC_MARKERS))
   -- (an apology straight after a correction's new value, "descend FL80 negative FL90 sorry", "heading 200,
   -- correction, 220, sorry": it apologises for the value taken back, the new one stands)
+  -- (read only for a closing run that is marked: nothing else asks it)
   local marker = before
-  while marker > 1 and not (self:word(marker, "@correction") or SC_MARKERS[self.words[marker]]) do marker = marker - 1 end
-  aside = aside or (marker > 1 and #self:quantities(marker + 1, first) > 0)
+  while marked and marker > 1 and not (self:word(marker, "@correction") or SC_MARKERS[self.words[marker]]) do
+    marker = marker - 1
+  end
+  aside = aside or (marked and marker > 1 and #self:quantities(marker + 1, first) > 0)
   if marked and first > 1 and not self:apology_after_remark(first, last) and not aside then
     self:need(string.format("You said '%s' with nothing after it. What is the corrected instruction?",
       self:raw(first, last + 1)))
@@ -8937,6 +8947,7 @@ end
 -- there ("over Schiphol, 48.1 N 11.6 E") stays unexplained and is asked about.
 function G:place_at_its_position()
   local near_nm = lexicon.named_position_nm
+  if not self:said("@named_position_leads") then return end  -- (G:said's guard before the scan)
   for k = 2, #self.t - 2 do
     if self:word(k - 1, "@named_position_leads") then
       local e = k
@@ -10076,8 +10087,8 @@ function G:unaccounted()
   end
   -- ("KLM12 no higher than FL300", "not lower than 8000 feet", "no higher FL300"): "no" or "not" before a level's
   -- comparative bounds the level, it clears none, and squawk keeps no level limit: asked, never flown as the level
-  -- ("climb FL300, no higher" bounds nothing of its own: no level after it)
-  for i = 1, #self.t do
+  -- ("climb FL300, no higher" bounds nothing of its own: no level after it; G:said's guard before the scan)
+  for i = 1, self:said("higher lower above below") and #self.t or 0 do
     local t = self.t[i]
     local v = (t.text == "no" or t.text == "not") and self:word(i + 1, "higher lower above below") and i + 2
     if v and self:word(v, "than") then v = v + 1 end
@@ -10400,17 +10411,22 @@ end
 -- mark after it: "descend fl300 maybe", "hdg 240, i think"), makes the request uncertain: asked, naming it.
 G.hedge_words = table.concat(lexicon.trailing_hedges.words, " ")
 G.questioned_hedges = table.concat(lexicon.trailing_hedges.questioned, " ")
+-- (every word a hedge opens on: a hedge word, a pair's first word, a questioned one)
+G.hedge_openers = G.hedge_words .. " " .. G.questioned_hedges
+for _, p in ipairs(lexicon.trailing_hedges.pairs) do G.hedge_openers = G.hedge_openers .. " " .. p[1] end
 function G:hedged()
   local h = lexicon.trailing_hedges
   local function closes(k) return self.t[k] == nil or self.t[k].kind == "punct" end
   for _, q in ipairs(self:quantities(1, #self.t + 1)) do
     local k, said = q.e, nil
-    if self:word(k, G.hedge_words) and closes(k + 1) then said = self:raw(k, k + 1) end
-    for _, p in ipairs(said and {} or h.pairs) do
-      if self:word(k, p[1]) and self:word(k + 1, p[2]) and closes(k + 2) then said = self:raw(k, k + 2) end
-    end
-    if not said and self:word(k, G.questioned_hedges) and self.t[k + 1] and self.t[k + 1].text == "?" then
-      said = self:raw(k, k + 1) .. "?"
+    if self:word(k, G.hedge_openers) then  -- (each reading opens on one of them)
+      if self:word(k, G.hedge_words) and closes(k + 1) then said = self:raw(k, k + 1) end
+      for _, p in ipairs(said and {} or h.pairs) do
+        if self:word(k, p[1]) and self:word(k + 1, p[2]) and closes(k + 2) then said = self:raw(k, k + 2) end
+      end
+      if not said and self:word(k, G.questioned_hedges) and self.t[k + 1] and self.t[k + 1].text == "?" then
+        said = self:raw(k, k + 1) .. "?"
+      end
     end
     if said then
       self.ask = string.format("%s. You said '%s' after '%s': should I send it as said, or which value do you mean?",
@@ -11345,7 +11361,8 @@ function G:values_named_unread()
   for _, line in ipairs(self.out) do
     if line:match("^VNAV %S+ ON$") then return end
   end
-  for i = 1, #self.t do
+  -- (G:values_named_alone reads a noun at i only: G:said's guard before the scan)
+  for i = 1, self:said("@route_value_nouns") and #self.t or 0 do
     local b, k, n = self:values_named_alone(i)
     if n == i and not self:in_reason(i) and not self.noted[i] then
       return self:need(string.format("I have %s. What does '%s' mean: its route's levels and speeds (VNAV ON), or "
@@ -11641,6 +11658,7 @@ G.value_judgement = { too = set_of(lexicon.judged_values.too), between = set_of(
              pronouns = set_of(lexicon.judged_values.pronouns) }
 function G:value_rejected()
   local J = self.value_judgement
+  if not self:said("too") then return end  -- (the judgement's word; G:said's guard before the scan)
   for k = 2, #self.t - 1 do
     if self:word(k, "too") and self.t[k + 1].kind == "word" and J.too[self.t[k + 1].text] then
       local j = k - 1
@@ -12045,8 +12063,21 @@ G.opinion_phrases = { "do you think", "what do you think", "what would you think
 G.polite_after_opinion = { "you could", "you can", "you might", "you would", "you'd", "you will", "you could please" }
 function G:opinion_question(lower)
   local said
+  -- (G.opinion_patterns[p]: the phrase p's first word, which lower holds wherever p is said, and its pattern;
+  -- built once per phrase)
+  local patterns = G.opinion_patterns
+  if not patterns then
+    patterns = {}
+    G.opinion_patterns = patterns
+  end
   for _, p in ipairs(G.opinion_phrases) do
-    local b, e = lower:find("%f[%a]" .. p:gsub(" ", "%%s+") .. "%f[%A]")
+    local pat = patterns[p]
+    if not pat then
+      pat = { p:match("^%S+"), "%f[%a]" .. p:gsub(" ", "%%s+") .. "%f[%A]" }
+      patterns[p] = pat
+    end
+    local b, e
+    if lower:find(pat[1], 1, true) then b, e = lower:find(pat[2]) end
     if b and not said then
       local rest = lower:sub(e + 1):gsub("^[%s,]+", "")
       local polite = false

@@ -116,8 +116,11 @@ function m:direction(s)
   while clause > s.b and self.t[clause - 1].kind ~= "punct" do clause = clause - 1 end
   for _, b in ipairs({ clause, s.b }) do
     for i = b, s.e - 1 do
-      if said(i, "@up") then return 1 end
-      if said(i, "@down") then return -1 end
+      -- (m:motion_said reads a word of its list only: one look at both lists first)
+      if self:word(i, "@up @down") then
+        if said(i, "@up") then return 1 end
+        if said(i, "@down") then return -1 end
+      end
     end
   end
   return 0
@@ -809,17 +812,20 @@ function m:as_context(i)
   -- ("reduce to 220 ahead of EZY45", "in front of the Iberia", "FL130 below KLM12", "clear of", "away from",
   -- "instead of": the traffic placed against or replaced)
   local k = self:word(i - 1, "the") and i - 2 or i - 1
-  if (self:word(k, "of") and (self:word(k - 1, "ahead clear instead") or self:word(k - 1, "front") and self:word(k - 2, "in")))
-      or (self:word(k, "from") and self:word(k - 1, "away")) or self:word(k, "below under beneath above") then
+  -- (the three readings below open on one of these words at k)
+  local placed = self:word(k, "of from below under beneath above on upon with")
+  if placed and ((self:word(k, "of")
+        and (self:word(k - 1, "ahead clear instead") or self:word(k - 1, "front") and self:word(k - 2, "in")))
+      or (self:word(k, "from") and self:word(k - 1, "away")) or self:word(k, "below under beneath above")) then
     return true
   end
   -- ("creeping up on the Easy", "closing on EZY45": the traffic neared, lexicon.neared_verbs)
-  if self:word(k, "on upon") then
+  if placed and self:word(k, "on upon") then
     local v = self:word(k - 1, "up in down") and k - 2 or k - 1
     if self:word(v, "@neared_verbs") then return true end
   end
   -- ("..., head on with KLM605", "converging with the Ryanair": the traffic met)
-  if self:word(k, "with") and (self:word(k - 1, "converging converge converges head-on")
+  if placed and self:word(k, "with") and (self:word(k - 1, "converging converge converges head-on")
       or (self:word(k - 1, "on") and self:word(k - 2, "head"))) then
     return true
   end
@@ -845,6 +851,8 @@ end
 -- instructs); "similar to" or "identical to" before it. An aircraft compared with is never instructed.
 function m:compared_with(i)
   local k = self:word(i - 1, "the") and i - 2 or i - 1
+  -- (each reading below opens on one of these words at k)
+  if not self:word(k, "as did does has had with to like") then return false end
   if self:word(k, "as") and self:word_in(math.max(1, k - 5), k, "same") then return true end
   local r = self:refs_in(i, i + 1, "aircraft")[1]
   if self:word(k, "as") and r and self:word(r.e, "@compared_doings") then return true end
