@@ -1745,6 +1745,11 @@ local SIGNED_CHANGE = { speed = "speed", spd = "speed", alt = "alt", altitude = 
 -- 4000 ft"): unit (lower case) -> "speed" | "alt"; the words -> +1 (faster, up) | -1 (slower, down)
 local UNIT_CHANGE = { kt = "speed", kts = "speed", knots = "speed", ft = "alt", feet = "alt" }
 local MORE_LESS = { more = 1, less = -1 }
+-- a word of direction said after "more" and an amount ("3000 feet more high", "20 knots more slow"):
+-- word -> { quantity of UNIT_CHANGE, +1 up/faster | -1 down/slower }
+G.MORE_DIRECTION = { high = { "alt", 1 }, higher = { "alt", 1 }, up = { "alt", 1 }, low = { "alt", -1 },
+                     lower = { "alt", -1 }, down = { "alt", -1 }, fast = { "speed", 1 }, faster = { "speed", 1 },
+                     quick = { "speed", 1 }, slow = { "speed", -1 }, slower = { "speed", -1 } }
 G.descent_words = set_of(lexicon.vertical_motion.down)
 local GAIN_LOSE = { gain = 1, lose = -1 }
 
@@ -1849,6 +1854,48 @@ function G.dutch_chat_words(text)
   local out = {}
   for _, w in ipairs(toks) do if w ~= "" then out[#out + 1] = w end end
   return table.concat(out, " ")
+end
+
+-- A level said before its verb, as Korean orders it (text in, text out):
+-- - "flight level 220 to 200, descent please", "FL150 to 100 descend": the second number of "level A to B"
+--   (two or three digits, then the request's end, a mark, or a verb or "please") is a flight level too, so
+--   that "FL A to FL B" is read (A the level left, checked against the aircraft's level);
+-- - "flight level 330 to, climb please", "9000 feet to, descend": the comma between "to" and its verb is
+--   dropped ("FL330 to climb");
+-- - "flight level 280 go", "FL280 go please": "go" closing a level is no word of its own (the verb that goes
+--   with it says nothing of the direction: the level is read as if said alone).
+G.level_verb_after = { climb = true, descend = true, descent = true, climbing = true, descending = true,
+                       please = true, go = true, ["and"] = true, ["then"] = true }
+function G.level_before_verb(text)
+  local function closes(rest)
+    local nx = rest:match("^%s*(%a+)")
+    return rest:match("^%s*$") or rest:match("^%s*[,.;!]") or (nx and G.level_verb_after[nx:lower()])
+  end
+  local function level_to(pre, a, mid, b, at)
+    if not closes(text:sub(at)) then return nil end
+    return pre .. a .. mid .. "FL" .. b
+  end
+  text = text:gsub("(%f[%a][Ff][Ll]%s*)(%d%d%d?)(%s+[Tt][Oo]%s+)(%d%d%d?)%f[%D]()", level_to)
+  text = text:gsub("(%f[%a][Ff]light%s+[Ll]evel%s+)(%d%d%d?)(%s+[Tt][Oo]%s+)(%d%d%d?)%f[%D]()", level_to)
+  text = text:gsub("(%d%s*%a*%s+[Tt][Oo])%s*,%s*(%a+)%f[%A]", function(pre, verb)
+    local unit = pre:match("%d%s*(%a*)%s+[Tt][Oo]$"):lower()
+    if (unit == "" or unit == "feet" or unit == "ft") and G.level_verb_after[verb:lower()]
+        and verb:lower() ~= "please" and verb:lower() ~= "and" and verb:lower() ~= "then" then
+      return pre .. " " .. verb
+    end
+    return nil
+  end)
+  text = text:gsub("(%f[%a][Ll]evel%s+%d%d%d?)%s+[Gg][Oo]%f[%A]()", function(lv, at)
+    local rest = text:sub(at)
+    if rest:match("^%s*$") or rest:match("^%s*[,.;!]") or rest:match("^%s+[Pp]lease%f[%A]") then return lv end
+    return nil
+  end)
+  text = text:gsub("(%f[%a][Ff][Ll]%s*%d%d%d?)%s+[Gg][Oo]%f[%A]()", function(lv, at)
+    local rest = text:sub(at)
+    if rest:match("^%s*$") or rest:match("^%s*[,.;!]") or rest:match("^%s+[Pp]lease%f[%A]") then return lv end
+    return nil
+  end)
+  return text
 end
 
 local function written_forms(text, world)
@@ -2145,6 +2192,15 @@ local function written_forms(text, world)
   -- number, a point, comma or apostrophe in it included: "2.000 ft more", "1,5 kt less"; "descend 3000 feet
   -- more": "more" after a word of a descent said straight before the amount is that much further down)
   if low:find("more", 1, true) or low:find("less", 1, true) then
+    -- "2000 feet more low", "20 knots more slow", "3000 feet more high": "more" and a word of the direction
+    -- after an amount's unit is that much in that direction ("more" <- up/faster, "less" <- down/slower);
+    -- a direction word of the other quantity ("20 knots more high") or after "less" is left as typed
+    text = text:gsub("(%f[%a]%a+%s+)([Mm][Oo][Rr][Ee])%s+(%a+)%f[%A]", function(unit_sp, more, word)
+      local kind = UNIT_CHANGE[unit_sp:match("%a+"):lower()]
+      local d = G.MORE_DIRECTION[word:lower()]
+      if not (kind and d) or d[1] ~= kind then return nil end
+      return unit_sp .. (d[2] > 0 and more or "less")
+    end)
     text = text:gsub("()%f[%w%.,'](%d+[%.,']?%d*)(%s*)(%a+)%s+(%a+)%f[%A]()", function(b, n, space, unit, word, at)
       local kind, dir = UNIT_CHANGE[unit:lower()], MORE_LESS[word:lower()]
       local nx = (text:match("^%s+(%a+)", at) or ""):lower()
@@ -2166,6 +2222,10 @@ local function written_forms(text, world)
       end
       return v .. space .. unit .. (dir > 0 and " faster" or " slower")
     end)
+    low = text:lower()
+  end
+  if low:find("level", 1, true) or low:find("fl", 1, true) then
+    text = G.level_before_verb(text)
     low = text:lower()
   end
   if low:find("gain", 1, true) or low:find("lose", 1, true) then

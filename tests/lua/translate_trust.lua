@@ -17815,3 +17815,23 @@ do
   check_eq(ex("Ural 2790, reduce speed to 260 knots when it is below FL200"), "ATALT SVR2790 FL200 SPD SVR2790 260")
   asked(ex("Ural 2790, Belarus Avia 841, reduce speed to 230 knots when it is below FL120"), "which 'it'")
 end
+
+-- Cycle 59 (f189a): Korean word order, the value before its verb: "flight level A to B, descent please" (A the
+-- level left, B the level), "flight level N to, climb", "flight level N go", "3000 feet more high" / "20 knots
+-- more slow" (a direction word after "more": a hazard when "more" alone was read as up or faster)
+do
+  local _, ex = scene({ "CRE CPA512 B77W 22.5 118.0 045 FL270 290", "CRE EVA62 A321 23.0 119.0 200 FL310 280" })
+  check_eq(ex("Cathay 512, flight level 350 to, climb please"), "ALT CPA512 FL350")
+  check_eq(ex("EVA 62 flight level 310 to 240, descent please"), "ALT EVA62 FL240")
+  check_eq(ex("Cathay 512 FL270 to 330 climb, speed 270"), "ALT CPA512 FL330 ; SPD CPA512 270")
+  check_eq(ex("EVA 62, 2000 feet per minute descent rate, flight level 200 go please"), "VS EVA62 -2000 ; ALT EVA62 FL200")
+  check_eq(ex("Cathay 512 from now 2000 feet more high, climb please"), "ALT CPA512 29000")
+  check_eq(ex("EVA 62, 3000 ft more low, descend"), "ALT EVA62 28000")
+  check_eq(ex("EVA 62 20 knots more slow please"), "SPD EVA62 260")
+  check_eq(ex("Cathay 512, 10 knots more fast"), "SPD CPA512 300")
+  -- the level left not the aircraft's, or the verb against the levels, stays asked; a distance after "to" is no level
+  asked(ex("Cathay 512 flight level 250 to 330, climb please"), "FL250 is not CPA512's level")
+  asked(ex("EVA 62 flight level 310 to 330, descend"), "descend to a level above")
+  asked(ex("EVA 62 1000 feet more low, climb"), "down said with climb")
+  asked(ex("Cathay 512 FL270 to 10 miles"), "a distance is no level")
+end
