@@ -1866,6 +1866,9 @@ end
 --   with it says nothing of the direction: the level is read as if said alone).
 G.level_verb_after = { climb = true, descend = true, descent = true, climbing = true, descending = true,
                        please = true, go = true, ["and"] = true, ["then"] = true }
+G.counted_nouns = set_of(lexicon.counted_aircraft)
+G.create_verbs = set_of({ "create", "make", "spawn", "generate" })
+G.new_articles = { "one more", "another", "a new", "one new", "an extra", "one extra" }
 function G.level_before_verb(text)
   local function closes(rest)
     local nx = rest:match("^%s*(%a+)")
@@ -1885,6 +1888,29 @@ function G.level_before_verb(text)
     end
     return nil
   end)
+  -- "ten random aircraft create please", "20 random planes make": the count, "random" and the aircraft's noun
+  -- before the verb of creation are said as "create ten random aircraft"
+  text = text:gsub("()(%w+)(%s+[Rr]andom%s+)(%a+)%s+(%a+)%f[%A]", function(b, n, rnd, noun, verb)
+    local before = text:sub(1, b - 1)
+    if not (n:match("^%d+$") or NUMBER_WORDS[n:lower()]) or not G.counted_nouns[noun:lower()]
+        or not G.create_verbs[verb:lower()] or not (before:match("^%s*$") or before:match("[,.;:]%s*$")
+          or before:match("%f[%a][Pp]lease%s*$")) then
+      return nil
+    end
+    return "create " .. n .. rnd .. noun
+  end)
+  -- "one more aircraft make please, JJA1207, B738, ...", "another plane create": a new aircraft's noun before the
+  -- verb of creation is said as "create one more aircraft"
+  for _, art in ipairs(G.new_articles) do
+    local pat = "(%f[%a]" .. art:gsub("%a", function(c) return "[" .. c:upper() .. c .. "]" end):gsub(" ", "%%s+")
+      .. "%s+)(%a+)%s+(%a+)%f[%A]"
+    text = text:gsub(pat, function(said, noun, verb)
+      if not (G.counted_nouns[noun:lower()] or noun:lower() == "plane") or not G.create_verbs[verb:lower()] then
+        return nil
+      end
+      return "create " .. said .. noun
+    end)
+  end
   text = text:gsub("(%f[%a][Ll]evel%s+%d%d%d?)%s+[Gg][Oo]%f[%A]()", function(lv, at)
     local rest = text:sub(at)
     if rest:match("^%s*$") or rest:match("^%s*[,.;!]") or rest:match("^%s+[Pp]lease%f[%A]") then return lv end
@@ -2224,7 +2250,8 @@ local function written_forms(text, world)
     end)
     low = text:lower()
   end
-  if low:find("level", 1, true) or low:find("fl", 1, true) then
+  if low:find("level", 1, true) or low:find("fl", 1, true) or low:find("random", 1, true)
+      or low:find("more", 1, true) or low:find("new", 1, true) or low:find("other", 1, true) or low:find("extra", 1, true) then
     text = G.level_before_verb(text)
     low = text:lower()
   end
@@ -3384,6 +3411,29 @@ function G:verb_final_waypoint(i)
   end
   if #self:refs_in(i + 1, e, "waypoint") > 0 then return nil end
   return self:word_in(i + 1, e, "@route_nouns") and named or nil
+end
+-- True when route noun i opens a route said topic-first ("Asiana 371, its route, NOPIK add please", "KAL12 route
+-- end, CJU add", "KAL12 route, KWA, MKP, CJU add"): a flying aircraft straight before it ("its"/"the"/"his" and a
+-- comma between or none), "end" after it or none, a comma, then waypoints with commas or "and" between and a verb
+-- of adding straight after the last
+function G:route_topic_first(i)
+  local b = self:word(i - 1, "its the his her") and i - 1 or i
+  if self.t[b - 1] and self.t[b - 1].text == "," then b = b - 1 end
+  local flying = false
+  for _, r in ipairs(self:refs_in(1, b, "aircraft")) do flying = flying or (r.e == b and r.exists) end
+  if not flying then return false end
+  local k = self:word(i + 1, "end") and i + 2 or i + 1
+  if not (self.t[k] and self.t[k].text == ",") then return false end
+  k = k + 1
+  local any = false
+  while true do
+    local r = self:refs_in(k, k + 1, "waypoint")[1]
+    if not r or r.b ~= k then return false end
+    any, k = true, r.e
+    if self:word(k, "add append insert") then return any end
+    if self.t[k] and self.t[k].text == "," then k = k + 1 end
+    if self:word(k, "and") then k = k + 1 end
+  end
 end
 function G:has_ref(b, e, kind)
   local last = #self.t + 1
@@ -8449,7 +8499,8 @@ function G:uncarried_names()
   for _, r in ipairs(self.refs) do
     if r.kind == "waypoint" and not self:word(r.b, "@not_names @navaid_kinds") and not self.noted[r.b]
         and not (self.explained and self.explained[r.b]) and not self:in_reason(r.b)
-        and not (direct and (self:preceded_by(r.b, 3, "@passed_over") or self:cancelled_by_direct(r)))
+        and not (direct and (self:preceded_by(r.b, 3, "@passed_over") or self:word(r.e, "skip bypass omit")
+          or self:cancelled_by_direct(r)))
         and not self:preceded_by(r.b, 4, "@not_a_clearance advise") then
       local name = r.name:upper()
       -- (an airport said by its three-letter code is carried by its ICAO name: SFO -> KSFO)
@@ -8831,6 +8882,12 @@ function G:meaning_carried(i, kinds)
     return true
   end
   -- (an instruction word between them negates the instruction: "do not go direct HZA" is no place passed)
+  -- ("TGU skip, direct PSN": the verb after the waypoint it passes, as Korean orders it)
+  if kinds.direct and self:word(i, "skip bypass omit") then
+    for _, r in ipairs(self:refs_in(math.max(1, i - 3), i, "waypoint")) do
+      if r.e == i then return true end
+    end
+  end
   if self:word(i, "@passed_over") and kinds.direct then
     for k = i + 1, math.min(#self.t, i + 3) do
       if self:intent_at(k) then break end
