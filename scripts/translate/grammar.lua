@@ -1866,6 +1866,12 @@ end
 --   with it says nothing of the direction: the level is read as if said alone).
 G.level_verb_after = { climb = true, descend = true, descent = true, climbing = true, descending = true,
                        please = true, go = true, ["and"] = true, ["then"] = true }
+G.vertical_verbs = set_of({ "climb", "descend" })
+G.speed_verbs = set_of({ "reduce", "increase" })
+G.value_not_reordered = set_of({ "at", "when", "after", "passing", "reaching", "until", "till", "above", "below",
+  "from", "to", "leaving", "by", "of", "than", "over", "through", "cross", "crossing", "reach", "reaches", "pass",
+  "passes", "maintain", "level", "is", "was", "be", "before", "vacating", "past", "once", "while", "if", "climb",
+  "descend", "reduce", "increase", "slow", "speed", "accelerate", "expedite", "stop", "for" })
 G.counted_nouns = set_of(lexicon.counted_aircraft)
 G.create_verbs = set_of({ "create", "make", "spawn", "generate" })
 G.new_articles = { "one more", "another", "a new", "one new", "an extra", "one extra" }
@@ -1888,6 +1894,25 @@ function G.level_before_verb(text)
     end
     return nil
   end)
+  -- "after reaching 250, flight level 230 descend", "flight level 240 climb when passing ANSIM", "when at 210, 5000
+  -- feet descend", "speed 250 reduce": a level or speed said before its verb of climb, descent or speed is said
+  -- with the verb first ("descend flight level 230"), so that a condition before or after it is read as with the
+  -- English order; not after a word that makes the value a condition's or a limit's ("at FL240 climb ...",
+  -- "passing 5000 feet descend"), nor before "rate" ("FL280 climb rate ...")
+  local function reorder(pat, verbs)
+    text = text:gsub("()" .. pat .. "%s+(%a+)%f[%A]()", function(b, value, verb, e)
+      if not verbs[verb:lower()] then return nil end
+      local prev = (text:sub(1, b - 1):match("(%a+)%s*$") or ""):lower()
+      local nx = (text:match("^%s*(%a+)", e) or ""):lower()
+      if G.value_not_reordered[prev] or nx == "rate" or nx == "to" then return nil end
+      return verb .. " " .. value
+    end)
+  end
+  reorder("(%f[%a][Ff]light%s+[Ll]evel%s+%d%d%d?)", G.vertical_verbs)
+  reorder("(%f[%a][Ff][Ll]%s*%d%d%d?)", G.vertical_verbs)
+  reorder("(%f[%d]%d[%d,]*%s*[Ff][Ee][Ee][Tt])", G.vertical_verbs)
+  reorder("(%f[%d]%d[%d,]*%s*[Ff][Tt])", G.vertical_verbs)
+  reorder("(%f[%a][Ss]peed%s+%d%d%d?)", G.speed_verbs)
   -- "ten random aircraft create please", "20 random planes make": the count, "random" and the aircraft's noun
   -- before the verb of creation are said as "create ten random aircraft"
   text = text:gsub("()(%w+)(%s+[Rr]andom%s+)(%a+)%s+(%a+)%f[%A]", function(b, n, rnd, noun, verb)
@@ -2250,8 +2275,8 @@ local function written_forms(text, world)
     end)
     low = text:lower()
   end
-  if low:find("level", 1, true) or low:find("fl", 1, true) or low:find("random", 1, true)
-      or low:find("more", 1, true) or low:find("new", 1, true) or low:find("other", 1, true) or low:find("extra", 1, true) then
+  if low:find("level", 1, true) or low:find("fl", 1, true) or low:find("random", 1, true) or low:find("speed", 1, true)
+      or low:find("f", 1, true) or low:find("more", 1, true) or low:find("new", 1, true) or low:find("other", 1, true) or low:find("extra", 1, true) then
     text = G.level_before_verb(text)
     low = text:lower()
   end
