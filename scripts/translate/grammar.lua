@@ -1862,8 +1862,8 @@ end
 --   that "FL A to FL B" is read (A the level left, checked against the aircraft's level);
 -- - "flight level 330 to, climb please", "9000 feet to, descend": the comma between "to" and its verb is
 --   dropped ("FL330 to climb");
--- - "flight level 280 go", "FL280 go please": "go" closing a level is no word of its own (the verb that goes
---   with it says nothing of the direction: the level is read as if said alone).
+-- - "flight level 280 go", "FL280 go please", "heading 090 fly": "go" or "fly" closing a level or a heading of
+--   three digits is no word of its own (it says nothing of the direction: the value is read as if said alone).
 G.level_verb_after = { climb = true, descend = true, descent = true, climbing = true, descending = true,
                        please = true, go = true, ["and"] = true, ["then"] = true }
 G.vertical_verbs = set_of({ "climb", "descend" })
@@ -1882,10 +1882,19 @@ function G.level_before_verb(text)
   end
   local function level_to(pre, a, mid, b, at)
     if not closes(text:sub(at)) then return nil end
-    return pre .. a .. mid .. "FL" .. b
+    return "FL" .. a .. mid .. "FL" .. b
   end
   text = text:gsub("(%f[%a][Ff][Ll]%s*)(%d%d%d?)(%s+[Tt][Oo]%s+)(%d%d%d?)%f[%D]()", level_to)
   text = text:gsub("(%f[%a][Ff]light%s+[Ll]evel%s+)(%d%d%d?)(%s+[Tt][Oo]%s+)(%d%d%d?)%f[%D]()", level_to)
+  -- ("FL320 to FL300, descent please": the verb of the two levels said first, "descend FL320 to FL300", so that
+  -- the level left is checked against the aircraft's in any clause of the request)
+  text = text:gsub("(%f[%a][Ff][Ll]%s*%d%d%d?%s+[Tt][Oo]%s+[Ff][Ll]%s*%d%d%d?)(%s*,?%s*)(%a+)%f[%A]",
+    function(levels, _, verb)
+      local v = verb:lower()
+      if v == "descent" then v = "descend" end
+      if v ~= "climb" and v ~= "descend" then return nil end
+      return v .. " " .. levels
+    end)
   text = text:gsub("(%d%s*%a*%s+[Tt][Oo])%s*,%s*(%a+)%f[%A]", function(pre, verb)
     local unit = pre:match("%d%s*(%a*)%s+[Tt][Oo]$"):lower()
     if (unit == "" or unit == "feet" or unit == "ft") and G.level_verb_after[verb:lower()]
@@ -1913,6 +1922,10 @@ function G.level_before_verb(text)
   reorder("(%f[%d]%d[%d,]*%s*[Ff][Ee][Ee][Tt])", G.vertical_verbs)
   reorder("(%f[%d]%d[%d,]*%s*[Ff][Tt])", G.vertical_verbs)
   reorder("(%f[%a][Ss]peed%s+%d%d%d?)", G.speed_verbs)
+  -- "speed 210, and when 210, 5000 feet descend": a bare number straight after "when" or "once" and before a
+  -- comma is said "when at 210" (read as the speed given said again only when it is that speed: G:speed_again_at)
+  text = text:gsub("(%f[%a][Ww]hen%s+)(%d%d%d?%s*,)", "%1at %2")
+  text = text:gsub("(%f[%a][Oo]nce%s+)(%d%d%d?%s*,)", "%1at %2")
   -- "ten random aircraft create please", "20 random planes make": the count, "random" and the aircraft's noun
   -- before the verb of creation are said as "create ten random aircraft"
   text = text:gsub("()(%w+)(%s+[Rr]andom%s+)(%a+)%s+(%a+)%f[%A]", function(b, n, rnd, noun, verb)
@@ -1936,16 +1949,17 @@ function G.level_before_verb(text)
       return "create " .. said .. noun
     end)
   end
-  text = text:gsub("(%f[%a][Ll]evel%s+%d%d%d?)%s+[Gg][Oo]%f[%A]()", function(lv, at)
-    local rest = text:sub(at)
-    if rest:match("^%s*$") or rest:match("^%s*[,.;!]") or rest:match("^%s+[Pp]lease%f[%A]") then return lv end
-    return nil
-  end)
-  text = text:gsub("(%f[%a][Ff][Ll]%s*%d%d%d?)%s+[Gg][Oo]%f[%A]()", function(lv, at)
-    local rest = text:sub(at)
-    if rest:match("^%s*$") or rest:match("^%s*[,.;!]") or rest:match("^%s+[Pp]lease%f[%A]") then return lv end
-    return nil
-  end)
+  for _, pat in ipairs({ "(%f[%a][Ll]evel%s+%d%d%d?)%s+(%a+)%f[%A]()", "(%f[%a][Ff][Ll]%s*%d%d%d?)%s+(%a+)%f[%A]()",
+                          "(%f[%a][Hh]eading%s+%d%d%d)%s+(%a+)%f[%A]()" }) do
+    text = text:gsub(pat, function(lv, verb, at)
+      local rest = text:sub(at)
+      if (verb:lower() == "go" or verb:lower() == "fly") and (rest:match("^%s*$") or rest:match("^%s*[,.;!]")
+          or rest:match("^%s+[Pp]lease%f[%A]")) then
+        return lv
+      end
+      return nil
+    end)
+  end
   return text
 end
 
@@ -2275,7 +2289,8 @@ local function written_forms(text, world)
     end)
     low = text:lower()
   end
-  if low:find("level", 1, true) or low:find("fl", 1, true) or low:find("random", 1, true) or low:find("speed", 1, true)
+  if low:find("level", 1, true) or low:find("heading", 1, true) or low:find("fl", 1, true) or low:find("random", 1, true) or low:find("speed", 1, true) or low:find("when", 1, true)
+      or low:find("once", 1, true)
       or low:find("f", 1, true) or low:find("more", 1, true) or low:find("new", 1, true) or low:find("other", 1, true) or low:find("extra", 1, true) then
     text = G.level_before_verb(text)
     low = text:lower()

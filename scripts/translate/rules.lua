@@ -1557,8 +1557,10 @@ return function(intent, rule, words)
   rule { "clear delete remove erase del", "delrte", when = function(g, i)
     if not g:word(g:word(i - 1, "all") and i - 2 or i - 1, "@route_nouns") then return false end
     local k = i + 1
-    while g.t[k] and (g.t[k].kind == "punct" or g.t[k].filler or g:word(k, "all")) do k = k + 1 end
-    return k > #g.t and not g:has_ref(1, #g.t + 1, "waypoint")
+    while g.t[k] and (g.t[k].kind == "punct" or g.t[k].filler or g:word(k, "all please")) do k = k + 1 end
+    -- ("KAL12 route delete please, and heading 090 fly": "and" or "then" after a pause opens the next instruction)
+    local next_clause = k > i + 1 and (g.t[k - 1].kind == "punct" or g:word(k - 1, "and then"))
+    return (k > #g.t or next_clause) and not g:has_ref(1, #g.t + 1, "waypoint")
   end }
   rule { "remove delete del drop erase", "delwpt", prev = { 3, "waypoint wpt wp" },
          when = function(g, i) return g:has_ref(math.max(1, i - 3), i, "waypoint") end }
