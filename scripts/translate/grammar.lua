@@ -1764,6 +1764,11 @@ local SIGNED_CHANGE = { speed = "speed", spd = "speed", alt = "alt", altitude = 
 -- 4000 ft"): unit (lower case) -> "speed" | "alt"; the words -> +1 (faster, up) | -1 (slower, down)
 local UNIT_CHANGE = { kt = "speed", kts = "speed", knots = "speed", ft = "alt", feet = "alt" }
 local MORE_LESS = { more = 1, less = -1 }
+-- a word of direction said after "more" and an amount ("3000 feet more high", "20 knots more slow"):
+-- word -> { quantity of UNIT_CHANGE, +1 up/faster | -1 down/slower }
+G.MORE_DIRECTION = { high = { "alt", 1 }, higher = { "alt", 1 }, up = { "alt", 1 }, low = { "alt", -1 },
+                     lower = { "alt", -1 }, down = { "alt", -1 }, fast = { "speed", 1 }, faster = { "speed", 1 },
+                     quick = { "speed", 1 }, slow = { "speed", -1 }, slower = { "speed", -1 } }
 G.descent_words = set_of(lexicon.vertical_motion.down)
 local GAIN_LOSE = { gain = 1, lose = -1 }
 
@@ -1868,6 +1873,113 @@ function G.dutch_chat_words(text)
   local out = {}
   for _, w in ipairs(toks) do if w ~= "" then out[#out + 1] = w end end
   return table.concat(out, " ")
+end
+
+-- A level said before its verb, as Korean orders it (text in, text out):
+-- - "flight level 220 to 200, descent please", "FL150 to 100 descend": the second number of "level A to B"
+--   (two or three digits, then the request's end, a mark, or a verb or "please") is a flight level too, so
+--   that "FL A to FL B" is read (A the level left, checked against the aircraft's level);
+-- - "flight level 330 to, climb please", "9000 feet to, descend": the comma between "to" and its verb is
+--   dropped ("FL330 to climb");
+-- - "flight level 280 go", "FL280 go please", "heading 090 fly": "go" or "fly" closing a level or a heading of
+--   three digits is no word of its own (it says nothing of the direction: the value is read as if said alone).
+G.level_verb_after = { climb = true, descend = true, descent = true, climbing = true, descending = true,
+                       please = true, go = true, ["and"] = true, ["then"] = true }
+G.vertical_verbs = set_of({ "climb", "descend" })
+G.speed_verbs = set_of({ "reduce", "increase" })
+G.value_not_reordered = set_of({ "at", "when", "after", "passing", "reaching", "until", "till", "above", "below",
+  "from", "to", "leaving", "by", "of", "than", "over", "through", "cross", "crossing", "reach", "reaches", "pass",
+  "passes", "maintain", "level", "is", "was", "be", "before", "vacating", "past", "once", "while", "if", "climb",
+  "descend", "reduce", "increase", "slow", "speed", "accelerate", "expedite", "stop", "for" })
+G.counted_nouns = set_of(lexicon.counted_aircraft)
+G.create_verbs = set_of({ "create", "make", "spawn", "generate" })
+G.new_articles = { "one more", "another", "a new", "one new", "an extra", "one extra" }
+function G.level_before_verb(text)
+  local function closes(rest)
+    local nx = rest:match("^%s*(%a+)")
+    return rest:match("^%s*$") or rest:match("^%s*[,.;!]") or (nx and G.level_verb_after[nx:lower()])
+  end
+  local function level_to(pre, a, mid, b, at)
+    if not closes(text:sub(at)) then return nil end
+    return "FL" .. a .. mid .. "FL" .. b
+  end
+  text = text:gsub("(%f[%a][Ff][Ll]%s*)(%d%d%d?)(%s+[Tt][Oo]%s+)(%d%d%d?)%f[%D]()", level_to)
+  text = text:gsub("(%f[%a][Ff]light%s+[Ll]evel%s+)(%d%d%d?)(%s+[Tt][Oo]%s+)(%d%d%d?)%f[%D]()", level_to)
+  -- ("FL320 to FL300, descent please": the verb of the two levels said first, "descend FL320 to FL300", so that
+  -- the level left is checked against the aircraft's in any clause of the request)
+  text = text:gsub("(%f[%a][Ff][Ll]%s*%d%d%d?%s+[Tt][Oo]%s+[Ff][Ll]%s*%d%d%d?)(%s*,?%s*)(%a+)%f[%A]",
+    function(levels, _, verb)
+      local v = verb:lower()
+      if v == "descent" then v = "descend" end
+      if v ~= "climb" and v ~= "descend" then return nil end
+      return v .. " " .. levels
+    end)
+  text = text:gsub("(%d%s*%a*%s+[Tt][Oo])%s*,%s*(%a+)%f[%A]", function(pre, verb)
+    local unit = pre:match("%d%s*(%a*)%s+[Tt][Oo]$"):lower()
+    if (unit == "" or unit == "feet" or unit == "ft") and G.level_verb_after[verb:lower()]
+        and verb:lower() ~= "please" and verb:lower() ~= "and" and verb:lower() ~= "then" then
+      return pre .. " " .. verb
+    end
+    return nil
+  end)
+  -- "after reaching 250, flight level 230 descend", "flight level 240 climb when passing ANSIM", "when at 210, 5000
+  -- feet descend", "speed 250 reduce": a level or speed said before its verb of climb, descent or speed is said
+  -- with the verb first ("descend flight level 230"), so that a condition before or after it is read as with the
+  -- English order; not after a word that makes the value a condition's or a limit's ("at FL240 climb ...",
+  -- "passing 5000 feet descend"), nor before "rate" ("FL280 climb rate ...")
+  local function reorder(pat, verbs)
+    text = text:gsub("()" .. pat .. "%s+(%a+)%f[%A]()", function(b, value, verb, e)
+      if not verbs[verb:lower()] then return nil end
+      local prev = (text:sub(1, b - 1):match("(%a+)%s*$") or ""):lower()
+      local nx = (text:match("^%s*(%a+)", e) or ""):lower()
+      if G.value_not_reordered[prev] or nx == "rate" or nx == "to" then return nil end
+      return verb .. " " .. value
+    end)
+  end
+  reorder("(%f[%a][Ff]light%s+[Ll]evel%s+%d%d%d?)", G.vertical_verbs)
+  reorder("(%f[%a][Ff][Ll]%s*%d%d%d?)", G.vertical_verbs)
+  reorder("(%f[%d]%d[%d,]*%s*[Ff][Ee][Ee][Tt])", G.vertical_verbs)
+  reorder("(%f[%d]%d[%d,]*%s*[Ff][Tt])", G.vertical_verbs)
+  reorder("(%f[%a][Ss]peed%s+%d%d%d?)", G.speed_verbs)
+  -- "speed 210, and when 210, 5000 feet descend": a bare number straight after "when" or "once" and before a
+  -- comma is said "when at 210" (read as the speed given said again only when it is that speed: G:speed_again_at)
+  text = text:gsub("(%f[%a][Ww]hen%s+)(%d%d%d?%s*,)", "%1at %2")
+  text = text:gsub("(%f[%a][Oo]nce%s+)(%d%d%d?%s*,)", "%1at %2")
+  -- "ten random aircraft create please", "20 random planes make": the count, "random" and the aircraft's noun
+  -- before the verb of creation are said as "create ten random aircraft"
+  text = text:gsub("()(%w+)(%s+[Rr]andom%s+)(%a+)%s+(%a+)%f[%A]", function(b, n, rnd, noun, verb)
+    local before = text:sub(1, b - 1)
+    if not (n:match("^%d+$") or NUMBER_WORDS[n:lower()]) or not G.counted_nouns[noun:lower()]
+        or not G.create_verbs[verb:lower()] or not (before:match("^%s*$") or before:match("[,.;:]%s*$")
+          or before:match("%f[%a][Pp]lease%s*$")) then
+      return nil
+    end
+    return "create " .. n .. rnd .. noun
+  end)
+  -- "one more aircraft make please, JJA1207, B738, ...", "another plane create": a new aircraft's noun before the
+  -- verb of creation is said as "create one more aircraft"
+  for _, art in ipairs(G.new_articles) do
+    local pat = "(%f[%a]" .. art:gsub("%a", function(c) return "[" .. c:upper() .. c .. "]" end):gsub(" ", "%%s+")
+      .. "%s+)(%a+)%s+(%a+)%f[%A]"
+    text = text:gsub(pat, function(said, noun, verb)
+      if not (G.counted_nouns[noun:lower()] or noun:lower() == "plane") or not G.create_verbs[verb:lower()] then
+        return nil
+      end
+      return "create " .. said .. noun
+    end)
+  end
+  for _, pat in ipairs({ "(%f[%a][Ll]evel%s+%d%d%d?)%s+(%a+)%f[%A]()", "(%f[%a][Ff][Ll]%s*%d%d%d?)%s+(%a+)%f[%A]()",
+                          "(%f[%a][Hh]eading%s+%d%d%d)%s+(%a+)%f[%A]()" }) do
+    text = text:gsub(pat, function(lv, verb, at)
+      local rest = text:sub(at)
+      if (verb:lower() == "go" or verb:lower() == "fly") and (rest:match("^%s*$") or rest:match("^%s*[,.;!]")
+          or rest:match("^%s+[Pp]lease%f[%A]")) then
+        return lv
+      end
+      return nil
+    end)
+  end
+  return text
 end
 
 local function written_forms(text, world)
@@ -2164,6 +2276,15 @@ local function written_forms(text, world)
   -- number, a point, comma or apostrophe in it included: "2.000 ft more", "1,5 kt less"; "descend 3000 feet
   -- more": "more" after a word of a descent said straight before the amount is that much further down)
   if low:find("more", 1, true) or low:find("less", 1, true) then
+    -- "2000 feet more low", "20 knots more slow", "3000 feet more high": "more" and a word of the direction
+    -- after an amount's unit is that much in that direction ("more" <- up/faster, "less" <- down/slower);
+    -- a direction word of the other quantity ("20 knots more high") or after "less" is left as typed
+    text = text:gsub("(%f[%a]%a+%s+)([Mm][Oo][Rr][Ee])%s+(%a+)%f[%A]", function(unit_sp, more, word)
+      local kind = UNIT_CHANGE[unit_sp:match("%a+"):lower()]
+      local d = G.MORE_DIRECTION[word:lower()]
+      if not (kind and d) or d[1] ~= kind then return nil end
+      return unit_sp .. (d[2] > 0 and more or "less")
+    end)
     text = text:gsub("()%f[%w%.,'](%d+[%.,']?%d*)(%s*)(%a+)%s+(%a+)%f[%A]()", function(b, n, space, unit, word, at)
       local kind, dir = UNIT_CHANGE[unit:lower()], MORE_LESS[word:lower()]
       local nx = (text:match("^%s+(%a+)", at) or ""):lower()
@@ -2185,6 +2306,12 @@ local function written_forms(text, world)
       end
       return v .. space .. unit .. (dir > 0 and " faster" or " slower")
     end)
+    low = text:lower()
+  end
+  if low:find("level", 1, true) or low:find("heading", 1, true) or low:find("fl", 1, true) or low:find("random", 1, true) or low:find("speed", 1, true) or low:find("when", 1, true)
+      or low:find("once", 1, true)
+      or low:find("f", 1, true) or low:find("more", 1, true) or low:find("new", 1, true) or low:find("other", 1, true) or low:find("extra", 1, true) then
+    text = G.level_before_verb(text)
     low = text:lower()
   end
   if low:find("gain", 1, true) or low:find("lose", 1, true) then
@@ -3343,6 +3470,29 @@ function G:verb_final_waypoint(i)
   end
   if #self:refs_in(i + 1, e, "waypoint") > 0 then return nil end
   return self:word_in(i + 1, e, "@route_nouns") and named or nil
+end
+-- True when route noun i opens a route said topic-first ("Asiana 371, its route, NOPIK add please", "KAL12 route
+-- end, CJU add", "KAL12 route, KWA, MKP, CJU add"): a flying aircraft straight before it ("its"/"the"/"his" and a
+-- comma between or none), "end" after it or none, a comma, then waypoints with commas or "and" between and a verb
+-- of adding straight after the last
+function G:route_topic_first(i)
+  local b = self:word(i - 1, "its the his her") and i - 1 or i
+  if self.t[b - 1] and self.t[b - 1].text == "," then b = b - 1 end
+  local flying = false
+  for _, r in ipairs(self:refs_in(1, b, "aircraft")) do flying = flying or (r.e == b and r.exists) end
+  if not flying then return false end
+  local k = self:word(i + 1, "end") and i + 2 or i + 1
+  if not (self.t[k] and self.t[k].text == ",") then return false end
+  k = k + 1
+  local any = false
+  while true do
+    local r = self:refs_in(k, k + 1, "waypoint")[1]
+    if not r or r.b ~= k then return false end
+    any, k = true, r.e
+    if self:word(k, "add append insert") then return any end
+    if self.t[k] and self.t[k].text == "," then k = k + 1 end
+    if self:word(k, "and") then k = k + 1 end
+  end
 end
 function G:has_ref(b, e, kind)
   local last = #self.t + 1
@@ -8418,7 +8568,8 @@ function G:uncarried_names()
   for _, r in ipairs(self.refs) do
     if r.kind == "waypoint" and not self:word(r.b, "@not_names @navaid_kinds") and not self.noted[r.b]
         and not (self.explained and self.explained[r.b]) and not self:in_reason(r.b)
-        and not (direct and (self:preceded_by(r.b, 3, "@passed_over") or self:cancelled_by_direct(r)))
+        and not (direct and (self:preceded_by(r.b, 3, "@passed_over") or self:word(r.e, "skip bypass omit")
+          or self:cancelled_by_direct(r)))
         and not self:preceded_by(r.b, 4, "@not_a_clearance advise") then
       local name = r.name:upper()
       -- (an airport said by its three-letter code is carried by its ICAO name: SFO -> KSFO)
@@ -8801,6 +8952,12 @@ function G:meaning_carried(i, kinds)
     return true
   end
   -- (an instruction word between them negates the instruction: "do not go direct HZA" is no place passed)
+  -- ("TGU skip, direct PSN": the verb after the waypoint it passes, as Korean orders it)
+  if kinds.direct and self:word(i, "skip bypass omit") then
+    for _, r in ipairs(self:refs_in(math.max(1, i - 3), i, "waypoint")) do
+      if r.e == i then return true end
+    end
+  end
   if self:word(i, "@passed_over") and kinds.direct then
     for k = i + 1, math.min(#self.t, i + 3) do
       if self:intent_at(k) then break end

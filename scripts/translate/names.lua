@@ -439,6 +439,8 @@ local names = {
     { "jin air", "JNA" },
     { "air busan", "ABL" },
     { "teeway", "TWB" },  -- (T'way Air)
+    { "t'way", "TWB" },
+    { "tway", "TWB" },
     { "air seoul", "ASV" },
     { "eastar", "ESR" },  -- (Eastar Jet)
     { "china airlines", "CAL" },

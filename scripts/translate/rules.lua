@@ -1143,6 +1143,14 @@ return function(intent, rule, words)
     return true
   end }
   rule { "create spawn generate creat cre creating spawning", "create" }
+  -- "Air Seoul 8501 make, A321, at ...": "make" straight after a callsign no aircraft has (verb-final order, as
+  -- Korean says it), a pause or "please" after it and an aircraft type said after
+  rule { "make", "create", when = function(g, i)
+    if not (g.t[i + 1] and (g.t[i + 1].kind == "punct" or g:word(i + 1, "please"))) then return false end
+    local new = false
+    for _, r in ipairs(g:refs_in(1, i, "aircraft")) do new = new or (r.e == i and g:new_callsign(r)) end
+    return new and g:has_ref(i + 1, #g.t + 1, "type")
+  end }
   rule { "pop", "mcre", next = "up", near = { 4, "random" } }  -- "pop up ten random aircraft"
   rule { "pop", "create", next = "up" }  -- "pop up DAL88 B752 ..."
   -- "define a new waypoint called WP9", "define a new point ENT2 at ...": the new fix's noun after it
@@ -1297,6 +1305,10 @@ return function(intent, rule, words)
     for _, r in ipairs(g:refs_in(1, b, "aircraft")) do flying = flying or (r.e == b and r.exists) end
     return flying and g:has_ref(i + 1, i + 2, "waypoint")
   end }
+  -- "its route, NOPIK add please", "route end, CJU add", "route, KWA, MKP, CJU add please": the route named first
+  -- (Korean topic-first order), set apart by a comma, after a flying aircraft ("its"/"the" and a comma between
+  -- or none), then the waypoints (commas or "and" between) and the verb closing them
+  rule { "route rte", "addwpt", when = function(g, i) return g:route_topic_first(i) end }
   -- "set the Air France to fly via MAKIL at FL280 and 260 knots": a waypoint flown via is added to the route
   rule { "via", "addwpt", prev = { 2, "fly go" }, when = function(g, i) return g:has_ref(i + 1, i + 2, "waypoint") end }
   -- "the Swiss should fly over ALGOI then KPT, please add these to its route", "fly over the Walda VOR, WLD,
@@ -1545,8 +1557,10 @@ return function(intent, rule, words)
   rule { "clear delete remove erase del", "delrte", when = function(g, i)
     if not g:word(g:word(i - 1, "all") and i - 2 or i - 1, "@route_nouns") then return false end
     local k = i + 1
-    while g.t[k] and (g.t[k].kind == "punct" or g.t[k].filler or g:word(k, "all")) do k = k + 1 end
-    return k > #g.t and not g:has_ref(1, #g.t + 1, "waypoint")
+    while g.t[k] and (g.t[k].kind == "punct" or g.t[k].filler or g:word(k, "all please")) do k = k + 1 end
+    -- ("KAL12 route delete please, and heading 090 fly": "and" or "then" after a pause opens the next instruction)
+    local next_clause = k > i + 1 and (g.t[k - 1].kind == "punct" or g:word(k - 1, "and then"))
+    return (k > #g.t or next_clause) and not g:has_ref(1, #g.t + 1, "waypoint")
   end }
   rule { "remove delete del drop erase", "delwpt", prev = { 3, "waypoint wpt wp" },
          when = function(g, i) return g:has_ref(math.max(1, i - 3), i, "waypoint") end }

@@ -18040,4 +18040,59 @@ do
     check_eq(ex("is AFR44 going to LFPG?"), "DEST AFR44")
     check_eq(ex("is UAL81 coming from KORD?"), "ORIG UAL81")
   end
+-- Cycle 59 (f189a): Korean word order, the value before its verb: "flight level A to B, descent please" (A the
+-- level left, B the level), "flight level N to, climb", "flight level N go", "3000 feet more high" / "20 knots
+-- more slow" (a direction word after "more": a hazard when "more" alone was read as up or faster)
+do
+  local _, ex = scene({ "CRE CPA512 B77W 22.5 118.0 045 FL270 290", "CRE EVA62 A321 23.0 119.0 200 FL310 280" })
+  check_eq(ex("Cathay 512, flight level 350 to, climb please"), "ALT CPA512 FL350")
+  check_eq(ex("EVA 62 flight level 310 to 240, descent please"), "ALT EVA62 FL240")
+  check_eq(ex("Cathay 512 FL270 to 330 climb, speed 270"), "ALT CPA512 FL330 ; SPD CPA512 270")
+  check_eq(ex("EVA 62, 2000 feet per minute descent rate, flight level 200 go please"), "VS EVA62 -2000 ; ALT EVA62 FL200")
+  check_eq(ex("Cathay 512 from now 2000 feet more high, climb please"), "ALT CPA512 29000")
+  check_eq(ex("EVA 62, 3000 ft more low, descend"), "ALT EVA62 28000")
+  check_eq(ex("EVA 62 20 knots more slow please"), "SPD EVA62 260")
+  check_eq(ex("Cathay 512, 10 knots more fast"), "SPD CPA512 300")
+  -- the level left not the aircraft's, or the verb against the levels, stays asked; a distance after "to" is no level
+  asked(ex("Cathay 512 flight level 250 to 330, climb please"), "FL250 is not CPA512's level")
+  asked(ex("EVA 62 flight level 310 to 330, descend"), "descend to a level above")
+  asked(ex("EVA 62 1000 feet more low, climb"), "down said with climb")
+  asked(ex("Cathay 512 FL270 to 10 miles"), "a distance is no level")
+end
+
+-- Cycle 59 (f189a): Korean topic-first route and setting commands, verb-final creations and conditions after a
+-- verb-final instruction: "its route, X add", "route end, X add", "route, X, Y add", "X skip, direct Y", "route
+-- delete please, and heading 090 fly", "one more aircraft make, CALLSIGN, TYPE, ...", "CALLSIGN make, TYPE, ...",
+-- "ten random aircraft create", "after reaching 250, FL230 descend", "FL240 climb when passing X", "when 210, ..."
+do
+  local _, ex = scene({ "DEFWPT OKSAN 36.0 127.0", "DEFWPT MURAE 36.3 127.4", "DEFWPT SOBEK 36.6 127.8",
+    "CRE CPA415 A333 35.8 126.8 045 FL240 290", "ADDWPT CPA415 OKSAN", "ADDWPT CPA415 MURAE",
+    "CRE EVA77 B738 36.9 128.1 225 FL330 300" })
+  check_eq(ex("Cathay 415, its route, SOBEK add please"), "ADDWPT CPA415 SOBEK")
+  check_eq(ex("EVA 77 route end, OKSAN add"), "ADDWPT EVA77 OKSAN")
+  check_eq(ex("EVA 77 the route, SOBEK, MURAE and OKSAN add please"),
+    "ADDWPT EVA77 SOBEK ; ADDWPT EVA77 MURAE ; ADDWPT EVA77 OKSAN")
+  check_eq(ex("Cathay 415 OKSAN skip, direct MURAE please"), "DIRECT CPA415 MURAE")
+  check_eq(ex("Cathay 415 route delete please, and heading 120 fly"), "DELRTE CPA415 ; HDG CPA415 120")
+  check_eq(ex("EVA 77 heading 300 fly"), "HDG EVA77 300")
+  -- a list with no verb after it, a skip with no direct-to, or a route deletion before a waypoint stay asked
+  asked(ex("EVA 77 route, SOBEK, MURAE, please"), "no verb")
+  asked(ex("Cathay 415 OKSAN skip, heading 090"), "a skip with no direct-to")
+  asked(ex("Cathay 415 route delete please, and add SOBEK"), "which waypoint")
+  -- creations with the verb after the aircraft
+  check_eq(ex("one more aircraft make please, Cathay 881, A321, over SOBEK, flight level 220, heading 090, 250 knots"),
+    "CRE CPA881 A321 SOBEK 90 FL220 250")
+  check_eq(ex("EVA 215 make, B738, at MURAE, heading 180, FL200, speed 260"), "CRE EVA215 B738 MURAE 180 FL200 260")
+  check_eq(ex("twelve random aircraft create please"), "MCRE 12")
+  check_eq(ex("5 random planes make"), "MCRE 5")
+  asked(ex("random aircraft create please"), "no count")
+  -- a condition before or after a verb-final instruction
+  check_eq(ex("Cathay 415 speed 260 reduce and after reaching 260, flight level 200 descend"),
+    "SPD CPA415 260 ; ATSPD CPA415 260 ALT CPA415 FL200")
+  check_eq(ex("Cathay 415 speed 250, and when 250, 9000 feet descend"),
+    "SPD CPA415 250 ; ATSPD CPA415 250 ALT CPA415 9000")
+  check_eq(ex("Cathay 415 flight level 280 climb when passing MURAE"), "AT CPA415 MURAE DO ALT CPA415 FL280")
+  check_eq(ex("EVA 77, heading 200 left, and flight level 330 to 290 descend"), "HDG EVA77 200 LEFT ; ALT EVA77 FL290")
+  asked(ex("Cathay 415 speed 250, and when 270, 9000 feet descend"), "270 is not the speed given")
+  asked(ex("EVA 77, heading 200 left, and flight level 310 to 290 descend"), "FL310 is not EVA77's level")
 end
