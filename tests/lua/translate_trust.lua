@@ -18040,6 +18040,7 @@ do
     check_eq(ex("is AFR44 going to LFPG?"), "DEST AFR44")
     check_eq(ex("is UAL81 coming from KORD?"), "ORIG UAL81")
   end
+end
 -- Cycle 59 (f189a): Korean word order, the value before its verb: "flight level A to B, descent please" (A the
 -- level left, B the level), "flight level N to, climb", "flight level N go", "3000 feet more high" / "20 knots
 -- more slow" (a direction word after "more": a hazard when "more" alone was read as up or faster)
