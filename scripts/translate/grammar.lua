@@ -12320,6 +12320,16 @@ local function split_ids(text, fleet)
   end
   if headed then text = text:gsub("%f[%w](%a+)%s+(%d%w*)%f[%W]", joined) end
   if hyphen then text = text:gsub("%f[%w](%a%a?)%-(%w+)%f[%W]", joined) end
+  -- ("ph abc descend 1500 ft": a registration of letters alone typed apart after its one or two nationality
+  -- letters, joined exactly an aircraft's id)
+  for _, a in ipairs(fleet) do
+    if a.id:match("^%a%a%a%a%a?%a?$") then
+      text = text:gsub("%f[%w](%a%a?)%s+(%a%a%a%a?)%f[%W]", function(x, y)
+        if (x .. y):upper() == a.id:upper() then return x .. y end
+        return nil
+      end)
+    end
+  end
   if not next(tails) then return text end
   text = text:gsub("%f[%w](%d+)%s+(%a%a?)%f[%W]", function(d, l)
     if tails[(d .. l):lower()] == 1 then return d .. l end

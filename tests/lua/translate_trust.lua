@@ -17873,6 +17873,13 @@ do
   asked(ex("undo the last command"), "no question about the commands")
 end
 do
+  local _, ex = scene({ "CRE OOXYZ C172 51.0 4.5 090 3000 100", "CRE KLM77 B738 52.1 4.5 180 FL150 250" })
+  -- a registration of letters typed apart after its nationality letters is that aircraft; a letter off stays asked
+  check_eq(ex("oo xyz climb 4500 ft"), "ALT OOXYZ 4500")
+  check_eq(ex("OO XYZ turn left heading 300"), "HDG OOXYZ 300 LEFT")
+  asked(ex("oo xyx climb 4500 ft"), "one letter off")
+end
+do
   local _, ex = navscene({ "CRE BAW8CK A320 52.0 4.0 025 FL200 250", "ADDWPT BAW8CK SPY", "ADDWPT BAW8CK SUGOL",
     "CRE KLM77 B738 52.6 4.7 180 FL150 250", "CRE DLH4AX A321 52.4 4.4 090 FL300 280" },
     "f192's airports, fixes typed after ADDWPT and skipped waypoints")
