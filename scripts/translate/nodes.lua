@@ -390,6 +390,8 @@ function M.command_slip(c, scratch)
   for _, n in ipairs(command_names) do
     local lead = n:sub(1, 1) == lw:sub(1, 1) or n:sub(1, 2) == lw:sub(2, 2) .. lw:sub(1, 1)
     local name = lead and one_edit(lw, n) and canonical_name(n)
+    -- (a command of free text parses whatever follows: "eco mode on" is no ECHO)
+    if name and M.free_text(name) then return nil end
     if name and name ~= found then
       if found or not scratch:check(name .. args) then
         if found and scratch:check(name .. args) then return nil end
