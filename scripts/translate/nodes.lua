@@ -356,10 +356,24 @@ end
 -- A registry command's name typed with one slip of the fingers, first in a line whose other words are that
 -- command's arguments ("atl ezy45hm fl120": ALT; "crete ein7ts a320 53.5 6.0 180 fl300 270": CREATE, CRE): the
 -- line with that name, when exactly one registry name or alias of three letters or more lies one edit from the
--- word (a letter left out, added, changed, or two neighbours swapped; the first letter kept, or the first two
--- swapped) and the line with its command parses on `scratch`; else nil. A word of English glue, of the grammar's
--- keywords or of the lexicon ("trial" is no TRAIL), or an aircraft's id, is no slip.
+-- word (a letter left out, added, changed for its neighbour on the keyboard, or two neighbours swapped; the first
+-- letter kept, or the first two swapped) and the line with its command parses on `scratch`; else nil. A word of
+-- English glue, of the grammar's keywords or of the lexicon ("trial" is no TRAIL), or an aircraft's id, is no slip.
 local command_names
+-- True when lower-case letters x and y are neighbours on a QWERTY keyboard (same row or the rows above and below).
+local KEY_ROWS = { "qwertyuiop", "asdfghjkl", "zxcvbnm" }
+function M.keys_beside(x, y)
+  local function at(ch)
+    for r, row in ipairs(KEY_ROWS) do
+      local c = row:find(ch, 1, true)
+      if c then return r, c end
+    end
+  end
+  local rx, cx = at(x)
+  local ry, cy = at(y)
+  if not rx or not ry then return false end
+  return math.abs(rx - ry) <= 1 and math.abs((cx + rx * 0.5) - (cy + ry * 0.5)) <= 1
+end
 function M.command_slip(c, scratch)
   local word, args = c:match("^%s*([%a]+)([%s,].*)$")
   local lw = word and word:lower()
@@ -381,7 +395,8 @@ function M.command_slip(c, scratch)
     local i = 1
     while i <= #a and i <= #b and a:sub(i, i) == b:sub(i, i) do i = i + 1 end
     if #a == #b then
-      return a:sub(i + 1) == b:sub(i + 1)
+      -- (a letter changed only for its neighbour on the keyboard: "ZONEDZ" is no slip of ZONEDH)
+      return (a:sub(i + 1) == b:sub(i + 1) and M.keys_beside(a:sub(i, i), b:sub(i, i)))
         or (a:sub(i, i) == b:sub(i + 1, i + 1) and a:sub(i + 1, i + 1) == b:sub(i, i) and a:sub(i + 2) == b:sub(i + 2))
     end
     return #a > #b and a:sub(i + 1) == b:sub(i) or #a < #b and a:sub(i) == b:sub(i + 1)
