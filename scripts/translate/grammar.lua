@@ -1828,6 +1828,27 @@ function G.dutch_chat(text)
     if G.dutch_can[can:lower() .. " " .. you:lower()] then return lead .. "can you" .. sp end
   end))
 end
+-- True when "ff" at toks[i] follows a setting typed as TrafScript, a registry command's name and one value of a
+-- switch's state, a method or a number ("asas on reso mvp ff", "zoner 5 ff", "CDMETHOD ON FF"): the next command,
+-- FF (fast time), never Dutch chat's softener.
+function G.after_typed_setting(toks, i)
+  local value, name = (toks[i - 1] or ""):upper(), (toks[i - 2] or ""):upper()
+  if not G.setting_usages then
+    G.setting_usages = {}
+    for _, c in ipairs(squawk.sim.commands()) do
+      -- (only a command whose first argument is no aircraft: a setting of the simulation)
+      if not (c.args or ""):match("^%[?acid") then
+        local usage = " " .. (c.usage or ""):gsub("[%[%],/]", " "):upper() .. " "
+        G.setting_usages[c.name:upper()] = usage
+        for _, a in ipairs(c.aliases or {}) do G.setting_usages[a:upper()] = usage end
+      end
+    end
+  end
+  local usage = G.setting_usages[name]
+  if not usage then return false end
+  return value == "ON" or value == "OFF" or value:match("^%d+%.?%d*$") ~= nil
+    or (value:match("^%u+$") ~= nil and usage:find(" " .. value .. " ", 1, true) ~= nil)
+end
 function G.dutch_chat_words(text)
   if not (text:find("%f[%a]ff%f[%A]") or text:find("%f[%a]en%f[%A]") or text:find("%f[%a]met%f[%A]")) then
     return text
@@ -1847,7 +1868,8 @@ function G.dutch_chat_words(text)
       end
       if toks[k]:match("[,;:]$") then break end
     end
-    if toks[i]:match("^ff[%.!?]?$") and not prev:match("%p$") and not G.ff_lead[prev:lower()] and not timed then
+    if toks[i]:match("^ff[%.!?]?$") and not prev:match("%p$") and not G.ff_lead[prev:lower()] and not timed
+        and not G.after_typed_setting(toks, i) then
       toks[i] = toks[i]:match("[%.!?]$") and toks[i]:sub(-1) or ""
       changed = true
     end
@@ -1996,6 +2018,12 @@ local function written_forms(text, world)
   where("o'", "%f[%a]([Oo])'(%a%a%a+)", function(o, name)
     if name:lower() == "clock" then return nil end
     return o .. name
+  end)
+  -- "do a 180 to the left", "a 90 to the right": a turn of that many degrees named by its number after "a", its side
+  -- said with "to the", is the turn with its side ("do a 180 left", read as a turn by degrees)
+  where("to the", "%f[%a]([Aa]%s+)(%d%d%d?)%s+[Tt][Oo]%s+[Tt][Hh][Ee]%s+(%a+)%f[%A]", function(a, n, side)
+    if side:lower() ~= "left" and side:lower() ~= "right" then return nil end
+    return a .. n .. " " .. side
   end)
   -- "@ FL200", "x NAXEL @ 250", "@ 120 s ...": an at sign typed apart before a value or a name is "at"
   where("@", "(%s)@%s*(%w)", "%1at %2")
@@ -5355,7 +5383,9 @@ function G:segments(b, e)
         end
         for _, q in ipairs(self:quantities(last.trig + 1, start)) do
           local k = self:skip_fillers(q.e)
-          if q.kind == "alt" and (tr.intent == "spd" or tr.intent == "hdg") and last.intent ~= "create"
+          -- (a bare number of 1000 or more after "at" is a level in feet too: "climb 7000, at 7000 turn right")
+          local level = q.kind == "alt" or (q.kind == "plain" and q.value >= 1000 and self:word(q.b - 1, "at"))
+          if level and (tr.intent == "spd" or tr.intent == "hdg") and last.intent ~= "create"
               and (self:at_clause(q) or self:on_clause(q.b - 1)) and #self:quantities(last.trig, q.b) > 0 then
             start = math.min(start, q.b - 1)
             break
@@ -12708,6 +12738,16 @@ local function split_ids(text, fleet)
   end
   if headed then text = text:gsub("%f[%w](%a+)%s+(%d%w*)%f[%W]", joined) end
   if hyphen then text = text:gsub("%f[%w](%a%a?)%-(%w+)%f[%W]", joined) end
+  -- ("ph abc descend 1500 ft": a registration of letters alone typed apart after its one or two nationality
+  -- letters, joined exactly an aircraft's id)
+  for _, a in ipairs(fleet) do
+    if a.id:match("^%a%a%a%a%a?%a?$") then
+      text = text:gsub("%f[%w](%a%a?)%s+(%a%a%a%a?)%f[%W]", function(x, y)
+        if (x .. y):upper() == a.id:upper() then return x .. y end
+        return nil
+      end)
+    end
+  end
   if not next(tails) then return text end
   text = text:gsub("%f[%w](%d+)%s+(%a%a?)%f[%W]", function(d, l)
     if tails[(d .. l):lower()] == 1 then return d .. l end

@@ -1041,6 +1041,16 @@ return function(H, f, compass)
           self:explain(to + 1, to + 2)
         end
       end
+      -- ("move klm12 to eham", "move BEL3KN to EBBR at FL100": an airport's ICAO code, four letters in one case and no
+      -- English word, straight after "to" and closing the clause (or before "at" or the level) is MOVE's position)
+      local code = not named_at and to + 1 < s.e and t.kind == "word" and not t.keyword and not self.u:used(to + 1)
+        and (t.raw:match("^%u%u%u%u$") or (t.raw:match("^%l%l%l%l$") and not self:known_word(to + 1)))
+        and t.raw:upper()
+      if code and self.world.airport_class and (self.world.airport_class(code) or "") ~= "" and not self:state(code)
+          and (to + 2 >= s.e or self.t[to + 2].kind == "punct" or self:word(to + 2, "at") or level_next) then
+        named_at = code
+        self:explain(to + 1, to + 2)
+      end
       -- ("move the Easy until over the VOR BCN": "until" for "to", a Spanish or Portuguese speaker's "hasta" /
       -- "até", before the place moved to with no value after it)
       local u = named_at and self:find_word(s.trig + 1, s.e, "until till")
@@ -2812,6 +2822,20 @@ return function(H, f, compass)
       end
       local it = self.last_waypoint and self:word_in(s.trig, name_e, "it")
       where = named and named.name or (it and self.last_waypoint) or self:waypoint(s.trig, name_e, id)
+      -- ("ezy45hm addwpt nirsi and then lnav on": a fix's ident of five letters typed straight after TrafScript's own
+      -- word ADDWPT, in one case and no English word, that the navdata holds within lexicon.navaid_range_nm of
+      -- the aircraft)
+      local t, here = self.t[s.trig + 1], self:state(id)
+      if not where and self.t[s.trig].raw:lower() == "addwpt" and s.trig + 1 < name_e and t.kind == "word"
+          and (t.raw:match("^%u%u%u%u%u$") or (t.raw:match("^%l%l%l%l%l$") and not self:known_word(s.trig + 1)))
+          and not self.u:used(s.trig + 1) and self.world.place_known and here and here.lat then
+        local lat, lon = self.world.place_known(t.raw:upper())
+        local dlat, dlon = lat and lat - here.lat, lat and (lon - here.lon) * math.cos(math.rad(lat))
+        if lat and 60 * math.sqrt(dlat * dlat + dlon * dlon) <= L.navaid_range_nm then
+          where = t.raw:upper()
+          self:explain(s.trig + 1, s.trig + 2)
+        end
+      end
       if not where then
         return self:need("Where should the waypoint for " .. id .. " be? Please give a name or a latitude and longitude.")
       end
@@ -4054,6 +4078,23 @@ return function(H, f, compass)
   end
 
   function m:bare(_, spec) self:emit(spec.cmd) end
+  -- HELP: a question about squawk's commands (rules.lua's help_asked); HELP NAME when a registry command's name
+  -- (or alias) is said straight before or after the noun ("the addwpt command", "command ALT"); the question's
+  -- words are all read
+  function m:help(s)
+    local names = {}
+    for _, c in ipairs(squawk.sim.commands()) do
+      names[c.name:lower()] = c.name
+      for _, a in ipairs(c.aliases or {}) do names[a:lower()] = c.name end
+    end
+    local named
+    for _, k in ipairs({ s.trig - 1, s.trig + 1 }) do
+      local t = self.t[k]
+      if not named and t and t.kind == "word" and names[t.raw:lower()] then named = names[t.raw:lower()] end
+    end
+    self:explain(1, #self.t + 1)
+    self:emit(named and "HELP " .. named or "HELP")
+  end
   -- OP; "resume at 2x", "resume the simulation at x3": a rate said after "at" is a DTMULT too
   function m:resume(s)
     -- An unpause to come, said by its speaker ("when I unpause", "until we resume", "before we continue"), starts

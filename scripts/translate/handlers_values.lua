@@ -308,6 +308,33 @@ return function(H, f, wrap, compass)
         table.remove(with_unit, 1)
       end
     end
+    -- "alt 4000 -> 2500", "alt 12000 ft -> 15000": a level with no unit on either side of an arrow (nothing else
+    -- between), the first the aircraft's present altitude (within 50 ft): the level it leaves, then the one it flies
+    -- to (one not its present altitude is left, and asked about)
+    local first_q, next_q = plain[1], nil
+    if with_unit[1] and (not first_q or with_unit[1].b < first_q.b) then first_q = with_unit[1] end
+    for _, q in ipairs(plain) do
+      if first_q and q.b > first_q.b and (not next_q or q.b < next_q.b) then next_q = q end
+    end
+    if first_q and next_q and (first_q.kind == "plain" or next_q.kind == "plain") and now and now.alt_ft
+        and math.abs(first_q.value - now.alt_ft) <= 50 and not first_q.fl then
+      local arrow, words = false, 0
+      for k = first_q.e, next_q.b - 1 do
+        local t = self.t[k]
+        local arrow_k = t.raw:match("^%-*>$") ~= nil
+        arrow = arrow or arrow_k
+        if t.kind ~= "punct" and not arrow_k and not self:word(k, "@feet") then words = words + 1 end
+      end
+      if arrow and words == 0 then
+        self:take(first_q)
+        self:explain(first_q.b, next_q.b)
+        for _, list in ipairs({ with_unit, plain }) do
+          for k, q in ipairs(list) do
+            if q == first_q then table.remove(list, k) break end
+          end
+        end
+      end
+    end
     -- "8900 metres, that is flight level 291": one level said in metres and restated in feet or as a flight
     -- level (China's metric table rounds to within 100 ft); the restatement counts, a disagreement is asked
     a, b = with_unit[1], with_unit[2]

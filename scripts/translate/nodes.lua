@@ -9,6 +9,7 @@
 local grammar = require("translate.grammar")
 local schema = require("translate.schema")
 local lexicon = require("translate.lexicon")
+local typos = require("translate.typos")
 
 local M = {}
 
@@ -352,6 +353,71 @@ local function keyword_set()
   return keywords
 end
 
+-- A registry command's name typed with one slip of the fingers, first in a line whose other words are that
+-- command's arguments ("atl ezy45hm fl120": ALT; "crete ein7ts a320 53.5 6.0 180 fl300 270": CREATE, CRE): the
+-- line with that name, when exactly one registry name or alias of three letters or more lies one edit from the
+-- word (a letter left out, added, changed for its neighbour on the keyboard, or two neighbours swapped; the first
+-- letter kept, or the first two swapped) and the line with its command parses on `scratch`; else nil. A word of
+-- English glue, of the grammar's keywords or of the lexicon ("trial" is no TRAIL), or an aircraft's id, is no slip.
+local command_names
+-- True when lower-case letters x and y are neighbours on a QWERTY keyboard (same row or the rows above and below).
+local KEY_ROWS = { "qwertyuiop", "asdfghjkl", "zxcvbnm" }
+function M.keys_beside(x, y)
+  local function at(ch)
+    for r, row in ipairs(KEY_ROWS) do
+      local c = row:find(ch, 1, true)
+      if c then return r, c end
+    end
+  end
+  local rx, cx = at(x)
+  local ry, cy = at(y)
+  if not rx or not ry then return false end
+  return math.abs(rx - ry) <= 1 and math.abs((cx + rx * 0.5) - (cy + ry * 0.5)) <= 1
+end
+function M.command_slip(c, scratch)
+  local word, args = c:match("^%s*([%a]+)([%s,].*)$")
+  local lw = word and word:lower()
+  if not lw or #lw < 3 or canonical_name(lw) or GLUE[lw] or keyword_set()[lw] or typos.lexicon_word(lw)
+      or scratch:get(word) then
+    return nil
+  end
+  if not command_names then
+    command_names = {}
+    for _, cmd in ipairs(squawk.sim.commands()) do
+      if #cmd.name >= 3 then command_names[#command_names + 1] = cmd.name:lower() end
+      for _, a in ipairs(cmd.aliases or {}) do
+        if #a >= 3 and a:match("^%a+$") then command_names[#command_names + 1] = a:lower() end
+      end
+    end
+  end
+  local function one_edit(a, b)  -- a typed, b a name: one edit apart (Damerau), a ~= b
+    if math.abs(#a - #b) > 1 then return false end
+    local i = 1
+    while i <= #a and i <= #b and a:sub(i, i) == b:sub(i, i) do i = i + 1 end
+    if #a == #b then
+      -- (a letter changed only for its neighbour on the keyboard: "ZONEDZ" is no slip of ZONEDH)
+      return (a:sub(i + 1) == b:sub(i + 1) and M.keys_beside(a:sub(i, i), b:sub(i, i)))
+        or (a:sub(i, i) == b:sub(i + 1, i + 1) and a:sub(i + 1, i + 1) == b:sub(i, i) and a:sub(i + 2) == b:sub(i + 2))
+    end
+    return #a > #b and a:sub(i + 1) == b:sub(i) or #a < #b and a:sub(i) == b:sub(i + 1)
+  end
+  local found
+  for _, n in ipairs(command_names) do
+    local lead = n:sub(1, 1) == lw:sub(1, 1) or n:sub(1, 2) == lw:sub(2, 2) .. lw:sub(1, 1)
+    local name = lead and one_edit(lw, n) and canonical_name(n)
+    -- (a command of free text parses whatever follows: "eco mode on" is no ECHO)
+    if name and M.free_text(name) then return nil end
+    if name and name ~= found then
+      if found or not scratch:check(name .. args) then
+        if found and scratch:check(name .. args) then return nil end
+      else
+        found = name
+      end
+    end
+  end
+  return found and found .. args or nil
+end
+
 -- A conditional's command typed without the aircraft ("atalt ana257 fl080
 -- spd 210") gets the condition's aircraft ("... SPD ANA257 210") when only
 -- that makes it parse; otherwise the line c unchanged (a carried command
@@ -401,6 +467,9 @@ local function has_english_word(line, name)
     local turn_word = name == "HDG" and n == 4 and (lw == "left" or lw == "right")
     -- ("WZZ1234 speed +20": a change said with its sign, which SPD / ALT / HDG would read as a value)
     if n > 1 and lw:match("^%+%d") and (name == "SPD" or name == "ALT" or name == "HDG") then return true end
+    -- ("klm12 move up", "move klm12 down": "up" or "down" typed in lower case where MOVE's position stands is a
+    -- climb or descent, not the NDB of that ident; "MOVE KLM12 UP" in capitals stays TrafScript)
+    if name == "MOVE" and n == 3 and (w == "up" or w == "down") then return true end
     local own_name = lw:upper() == name
     -- a field word typed short ("cre KL204 b738 lfpo hdg 060": "hdg" for heading) is English too
     local short = #lw > 1 and lexicon.shorthand[lw]
@@ -443,15 +512,57 @@ function M.typed(state, ctx)
       return "trafscript"
     end
   end
+  -- "dlh2ta lnav?", "vnav klm12?": an aircraft's switch asked about with its command name, the aircraft before or
+  -- after it, is that command with the aircraft alone, which shows it (only a command whose arguments after the
+  -- aircraft are all optional: "LNAV acid,[ON/OFF]"; "klm12 alt?" is English)
+  local w1, w2
+  if #cmds == 1 then w1, w2 = cmds[1]:match("^%s*([%w_]+)[%s,]+([%w_]+)%s*%?%s*$") end
+  local asked_name = w1 and (canonical_name(w1) or canonical_name(w2))
+  local asked_acid = asked_name and (canonical_name(w1) and w2 or w1)
+  if asked_name and not (canonical_name(w1) and canonical_name(w2))
+      and (usage_of(asked_name) or ""):match("^%S+%s+acid,%[") and copy():get(asked_acid) then
+    local line = asked_name .. " " .. asked_acid:upper()
+    if copy():check(line) then
+      state.candidate, state.source = line, "typed"
+      M.say(state, "typed", "an aircraft's setting asked about: shown by " .. line)
+      return "trafscript"
+    end
+  end
   for k, c in ipairs(cmds) do
-    -- a question, or a thousands separator ("alt KL204 12,000"), is English
-    if c:find("[?!]") or c:find("%d,%d%d%d") then return "english" end
+    -- a question, or a thousands separator ("alt KL204 12,000": a number of its own, in a line that separates its
+    -- other words by spaces), is English
+    if c:find("[?!]") or (c:find("%f[%w]%d%d?%d?,%d%d%d%f[^%w]") and trim(c):find("%s")) then return "english" end
+    -- "cre(klm15,a320,52.3,4.5,90,fl100,250)", "ALT(KLM12, FL200)": a registry command written as a function call,
+    -- its arguments in brackets, is that command with those arguments (then checked as any typed line)
+    local called, inner = c:match("^%s*([%a_]+)%s*%(([^()]*)%)%s*$")
+    if called and canonical_name(called) and inner:find("%S") then
+      c = called .. " " .. inner
+      cmds[k] = c
+    end
+    -- "ALT,DLH4AX,FL220", "alt, klm12, fl220": BlueSky's separators, whitespace with at most one comma, are one
+    -- space here, so that the line reads as the same command; an argument left out (",,") keeps its commas, and
+    -- a command of free text (ECHO's text, a carried command) keeps them after its first argument
+    if c:find(",", 1, true) and not c:find(",%s*,") then
+      local words = {}
+      for w in c:gmatch("[^%s,]+") do words[#words + 1] = w end
+      local named = canonical_name(words[1]) or canonical_name(words[2])
+      if named and not M.free_text(named) then
+        c = table.concat(words, " ")
+        cmds[k] = c
+      end
+    end
     local first, second, rest = c:match("^([%w_]+)[%s,]*([%w_]*)(.*)$")
     if not first then return "english" end
     -- a letter of the spelling alphabet that is also a command's name, followed by another letter
     -- ("Echo Charlie Kilo Juliett Bravo, climb ..."), spells a callsign: English, not ECHO
     if lexicon.phonetic[first:lower()] and lexicon.phonetic[second:lower()] then return "english" end
-    if not canonical_name(first) and not canonical_name(second) then return "english" end
+    if not canonical_name(first) and not canonical_name(second) then
+      local fixed = M.command_slip(c, copy())
+      if not fixed then return "english" end
+      c = fixed
+      cmds[k] = c
+      first, second, rest = c:match("^([%w_]+)[%s,]*([%w_]*)(.*)$")
+    end
     if not canonical_name(first) then
       -- "KL204 HDG 045": BlueSky's callsign-first form, run command first
       if not copy():get(first) then return "english" end
@@ -625,7 +736,7 @@ function M.validate(state, ctx)
   local scratch = ctx.sim:copy()
   local outputs = {}
   for _, c in ipairs(cmds) do
-    if not canonical_name(c:match("^(%S+)")) and not canonical_name(c:match("^%S+%s+(%S+)")) then
+    if not canonical_name(c:match("^([^%s,]+)")) and not canonical_name(c:match("^[^%s,]+[%s,]+([^%s,]+)")) then
       return rejected(state, ctx, "validate", string.format("'%s': unknown command", c))
     end
     local ok, msg = scratch:check(c)

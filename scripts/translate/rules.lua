@@ -81,9 +81,21 @@ return function(intent, rule, words)
   intent "poly" { cmds = { "POLY", "POLYALT" }, args = { "name" }, handler = "polygon" }
   intent "line" { cmd = "LINE", args = { "name" }, handler = "line" }
   intent "trail" { cmd = "TRAIL", args = { "acid", "ON", "OFF" }, handler = "trail" }
+  intent "help" { cmd = "HELP", args = { "command" }, handler = "help" }
 
   -- an instruction announced with "expect" is no clearance
   rule { "*", false, prev = { 2, "@not_a_clearance" } }
+  -- "what commands are there", "how do I see all the commands", "how does the addwpt command work?": a question
+  -- about squawk's commands (a word of asking or showing, no aircraft, no value) is HELP, of the command named
+  -- beside the noun when one is (its name is no instruction of its own)
+  local function help_asked(g, i)
+    if not g:word(i, "commands command cmds") then return false end
+    if #g:quantities(1, #g.t + 1) > 0 or g:has_ref(1, #g.t + 1, "aircraft") then return false end
+    return g:word_in(1, #g.t + 1, "what which how list show see available exist there explain use work")
+  end
+  rule { "*", false, next = "command cmd", when = function(g, i) return help_asked(g, i + 1) end }
+  rule { "*", false, prev = { 1, "command cmd" }, when = function(g, i) return help_asked(g, i - 1) end }
+  rule { "commands command cmds", "help", when = help_asked }
   rule { "*", false, prev = { 3, "advise" }, when = function(g, i) return g:preceded_by(i, 2, "able") end }  -- "advise when able direct X"
   -- "I think it's paused", "is it stopped?": the run's state told or asked, no instruction ("keep it paused"
   -- instructs)
@@ -444,6 +456,29 @@ return function(intent, rule, words)
   end }
   -- ("go down", "start down to 12000", "should start going down to 6000", "head down to 12,000 feet")
   rule { "up down", "alt", prev = { 1, "go come going coming start starting head heads" }, not_near = { 2, "speed knots" } }
+  -- "klm12 move up to FL200", "move KLM12 down to 6000 ft", "klm12 move up": "move" before "up" or "down" (the
+  -- aircraft between or not) with no coordinate or place after is a climb or descent (its level asked when none is
+  -- said), never a move to a position
+  -- the position of "up" or "down" when "move" at i opens a climb or descent: "up" or "down" straight after it (or
+  -- after the aircraft said after it) with no coordinate or place after; else nil
+  local function move_vertical(g, i)
+    if not g:word(i, "move moves moving") then return nil end
+    local r = g:refs_in(i + 1, math.min(#g.t + 1, i + 2), "aircraft")[1]
+    local k = r and r.b == i + 1 and r.e or i + 1
+    if not g:word(k, "up down") then return nil end
+    local e = math.min(#g.t + 1, k + 6)
+    for _, q in ipairs(g:quantities(k + 1, e)) do
+      if q.kind == "lat" or q.kind == "lon" or (q.kind == "plain" and q.number.decimal) then return nil end
+    end
+    if g:has_ref(k + 1, e, "waypoint") or g:has_ref(k + 1, e, "airport") then return nil end
+    return k
+  end
+  rule { "move moves moving", false, when = function(g, i) return move_vertical(g, i) ~= nil end }
+  rule { "up down", "alt", when = function(g, i)
+    local r = g:refs_in(math.max(1, i - 2), i, "aircraft")[1]
+    local v = r and r.e == i and r.b - 1 or i - 1
+    return move_vertical(g, v) == i
+  end }
   -- "go higher to 36000", "take it higher to FL360": a level after "higher ... to" ("lower" is read below)
   rule { "higher", "alt", next = "to", not_near = { 3, "speed knots kts" } }
   -- "N123AB go to 3500": a bare number of a thousand or more is no heading or speed, but a level
@@ -1551,6 +1586,12 @@ return function(intent, rule, words)
     return not g:word(i, "skip") or not (g:followed_by(i, 8, "direct directly dct straight") or passed_by_direct(g, i))
   end
   rule { "remove delete del skip", "delwpt", near = { 2, "waypoint wpt wp" }, when = no_direct }
+  -- "baw433 skip redfa", "skip SUGOL for BAW433": "skip" straight before a waypoint on the route of an aircraft the
+  -- request names takes it off that route (DELWPT), when no direct-to is said (what one skips is G's to read)
+  rule { "skip skipping", "delwpt", when = function(g, i)
+    local w = g:refs_in(i + 1, i + 2, "waypoint")[1]
+    return w ~= nil and on_a_route(g, w) and not g:word_in(1, #g.t + 1, "direct directly dct straight")
+  end }
   -- verb-final order: "APJ301 route delete all", "EVA15 route all clear" delete the whole route,
   -- "ANA25 waypoint HYOGO remove" the waypoint named before the verb
   -- (the verb closes the request, "all" at most after it: "route clear of weather" is no deletion)

@@ -30,6 +30,8 @@ local LETTERS = "abcdefghijklmnopqrstuvwxyz"
 -- translate/names.lua (an airline's ICAO letters, a designator), never read alone as a slip's reading (an airline
 -- without its flight number is asked)
 local KNOWN, CODES = {}, {}
+-- LEXICON_WORDS: the words of translate/lexicon.lua alone (no name of names.lua), lower case
+local LEXICON_WORDS = {}
 do
   local seen = {}
   local function walk(t, codes)
@@ -48,6 +50,7 @@ do
     end
   end
   walk(lexicon, false)
+  for w in pairs(KNOWN) do LEXICON_WORDS[w] = true end
   walk(names, true)
   -- (number words, which the lexer reads, not the lexicon)
   local numbers = "zero one two three four five six seven eight nine niner ten eleven twelve thirteen fourteen "
@@ -61,6 +64,8 @@ do
     for _, a in ipairs(c.aliases or {}) do KNOWN[a:lower()] = true end
   end
 end
+-- True when the lower-case word w is a word of translate/lexicon.lua ("trial", "turn"), as against a name only
+function M.lexicon_word(w) return LEXICON_WORDS[w] == true end
 -- TARGETS: the instruction words a slip is read as, three letters or more
 local TARGETS = {}
 for _, w in ipairs(lexicon.spelling.targets) do TARGETS[w] = true end

@@ -18097,3 +18097,83 @@ do
   asked(ex("Cathay 415 speed 250, and when 270, 9000 feet descend"), "270 is not the speed given")
   asked(ex("EVA 77, heading 200 left, and flight level 310 to 290 descend"), "FL310 is not EVA77's level")
 end
+-- Cycle 59 (f192): a newcomer at the command box types TrafScript loosely. A line that is valid TrafScript by
+-- BlueSky's own parsing (commas and spaces are separators) runs as that command; a function call of a registry
+-- command, or its name with one typing slip, is that command when the rest parses; "move up/down" is a climb or
+-- descent; "X lnav?" shows the switch; a setting typed before "ff" keeps the fast-forward; "at 7000" after a climb
+-- waits for the level; a question about the commands is HELP
+do
+  local _, ex = scene({ "CRE BAW8CK A320 52.0 4.0 025 FL200 250", "CRE KLM1234 B738 52.2 4.2 300 FL250 280",
+    "CRE DLH4AX A321 52.4 4.4 090 FL300 280", "CRE KLM77 B738 52.1 4.5 180 FL150 250" })
+  -- commas as BlueSky's separators, the callsign first or not; a thousands separator and an argument left out
+  check_eq(ex("SPD,BAW8CK,240"), "SPD BAW8CK 240")
+  check_eq(ex("hdg, klm77, 200"), "HDG KLM77 200")
+  check_eq(ex("KLM1234,ALT,FL310"), "ALT KLM1234 FL310")
+  check_eq(ex("spd dlh4ax,260"), "SPD DLH4AX 260")
+  check_eq(ex("alt klm77 12,000"), "ALT KLM77 12000")
+  asked(ex("ALT,KLM77,,100"), "a level left out")
+  -- a registry command written as a function call
+  check_eq(ex("spd(klm77,230)"), "SPD KLM77 230")
+  check_eq(ex("CRE(TST1, B738, 52.1, 4.1, 90, FL100, 250)"), "CRE TST1 B738 52.1 4.1 90 FL100 250")
+  asked(ex("climb(klm77, fl200)"), "no registry command: its level is asked")
+  -- one slip in a command's name, the rest that command's arguments; none that fits stays asked
+  check_eq(ex("lnva dlh4ax off"), "LNAV DLH4AX OFF")
+  check_eq(ex("atl baw8ck fl240"), "ALT BAW8CK FL240")
+  check_eq(ex("craete tst2 a320 52.2 4.3 180 fl150 260"), "CRE TST2 A320 52.2 4.3 180 FL150 260")
+  asked(ex("atl klm77"), "no level: nothing to run")
+  -- "move up/down" with a level is a climb or descent; a position stays a move; "up" is no NDB's ident
+  check_eq(ex("baw8ck move up to fl260"), "ALT BAW8CK FL260")
+  check_eq(ex("move klm77 down to 9000 ft"), "ALT KLM77 9000")
+  check_eq(ex("dlh4ax please move down to flight level 280"), "ALT DLH4AX FL280")
+  check_eq(ex("move klm77 to 52.5 4.2"), "MOVE KLM77 52.5 4.2")
+  asked(ex("klm77 move up"), "no level said")
+  -- an aircraft's switch asked about with its command's name shows it, never sets it
+  check_eq(ex("klm77 vnav?"), "VNAV KLM77")
+  check_eq(ex("lnav baw8ck ?"), "LNAV BAW8CK")
+  asked(ex("klm77 alt?"), "ALT needs a level: asked")
+  -- a setting typed as TrafScript, then "ff": the fast-forward too; Dutch chat's "ff" after a word stays dropped
+  check_eq(ex("asas on ff"), "ASAS ON ; FF")
+  check_eq(ex("zoner 6 ff"), "ZONER 6 ; FF")
+  check_eq(ex("pause the sim ff"), "HOLD")
+  -- a bare level after "at" opening the clause after a climb: the instruction after it waits for it
+  check_eq(ex("klm77 climb 17000, at 17000 turn left heading 090"),
+    "ALT KLM77 17000 ; ATALT KLM77 17000 HDG KLM77 90 LEFT")
+  check_eq(ex("baw8ck descend 9000 and at 9000 reduce speed 210"), "ALT BAW8CK 9000 ; ATALT BAW8CK 9000 SPD BAW8CK 210")
+  asked(ex("klm77 climb 17000, at 12000 turn left heading 090"), "a level it never crosses")
+  -- a level changed from the present one with an arrow
+  check_eq(ex("klm77 alt 15000 -> 11000"), "ALT KLM77 11000")
+  check_eq(ex("baw8ck altitude 20000 ft -> 23000 and speed 270"), "ALT BAW8CK 23000 ; SPD BAW8CK 270")
+  asked(ex("klm77 alt 16000 -> 11000"), "16000 is not its altitude")
+  -- a turn named by its degrees, its side with "to the"
+  check_eq(ex("dlh4ax make a 90 to the right"), "HDG DLH4AX 180 RIGHT")
+  check_eq(ex("klm1234 do a 180 to the left please"), "HDG KLM1234 120 LEFT")
+  -- questions about the commands
+  check_eq(ex("which commands can I type here?"), "HELP")
+  check_eq(ex("show me a list of all commands"), "HELP")
+  check_eq(ex("how do I use the dest command?"), "HELP DEST")
+  asked(ex("undo the last command"), "no question about the commands")
+end
+do
+  local _, ex = scene({ "CRE OOXYZ C172 51.0 4.5 090 3000 100", "CRE KLM77 B738 52.1 4.5 180 FL150 250" })
+  -- a registration of letters typed apart after its nationality letters is that aircraft; a letter off stays asked
+  check_eq(ex("oo xyz climb 4500 ft"), "ALT OOXYZ 4500")
+  check_eq(ex("OO XYZ turn left heading 300"), "HDG OOXYZ 300 LEFT")
+  asked(ex("oo xyx climb 4500 ft"), "one letter off")
+end
+do
+  local _, ex = navscene({ "CRE BAW8CK A320 52.0 4.0 025 FL200 250", "ADDWPT BAW8CK SPY", "ADDWPT BAW8CK SUGOL",
+    "CRE KLM77 B738 52.6 4.7 180 FL150 250", "CRE DLH4AX A321 52.4 4.4 090 FL300 280" },
+    "f192's airports, fixes typed after ADDWPT and skipped waypoints")
+  if ex then
+    -- an airport's ICAO code after "to" is MOVE's position
+    check_eq(ex("move klm77 to ebbr"), "MOVE KLM77 EBBR")
+    check_eq(ex("please move DLH4AX to EDDF at FL250"), "MOVE DLH4AX EDDF FL250")
+    -- a fix's ident typed after ADDWPT in lower case, then another instruction
+    check_eq(ex("klm77 addwpt nirsi, then lnav on"), "ADDWPT KLM77 NIRSI ; LNAV KLM77 ON")
+    asked(ex("klm77 addwpt zzzzz and lnav on"), "no such fix")
+    -- "skip" a waypoint on the aircraft's route: taken off it; one on no route stays asked
+    check_eq(ex("baw8ck skip spy"), "DELWPT BAW8CK SPY")
+    check_eq(ex("skip SUGOL for BAW8CK please"), "DELWPT BAW8CK SUGOL")
+    asked(ex("klm77 skip spy"), "SPY is not on KLM77's route")
+  end
+end
