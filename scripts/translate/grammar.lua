@@ -3453,7 +3453,10 @@ function G:vertical_resolutions(i)
   end
   return (self:word(i, "vertical") or horizontal_only) and self:word_in(1, #self.t + 1, reso)
     and (not self:word_in(1, #self.t + 1, sized) or self:word(i, "vertical") and sized_apart())
-    and not self:has_ref(1, #self.t + 1, "aircraft")
+    -- (aircraft named, "KAL1001, AAR8103, conflict resolution vertical off": only with the resolution's word
+    -- straight beside it, the setting being everyone's)
+    and (not self:has_ref(1, #self.t + 1, "aircraft")
+      or self:word(i - 1, "resolution resolutions reso") or self:word(i + 1, "resolution resolutions reso"))
 end
 
 -- True when every token but the one at i is punctuation, a filler or part of
@@ -5734,7 +5737,7 @@ function G:self_corrected()
     -- ("heading 360, sorry, leave its speed, ...": the kind named is not the instruction said before the run: asked)
     if left_kind and not self:kept_clause_end(left_kind:lower(), a) then
       return self:need(string.format("You said '%s', but no %s was given before it. What stands?",
-        self:raw(c, left_as_is), self.t[c + 2].text))
+        self:raw(c, left_as_is), self:word(left_as_is - 1, "route") and "heading" or self.t[c + 2].text))
     end
     if left_as_is then
       c = left_as_is
@@ -5898,7 +5901,10 @@ function G:self_corrected()
         -- ("never mind", "forget that", "scratch that" take it back in words; the same verb is no other kind)
         if w == c and not replaced and not self:word(c, "it") and not SC_SETTING[self.words[c]]
             and not left_as_is and not self:word_in(a, c, "never nevermind forget scratch") and self.words[c] ~= self.words[p]
-            and not same_family(self:intent_at(p) or valued, self:intent_at(c)) then
+            and not same_family(self:intent_at(p) or valued, self:intent_at(c))
+            -- ("turn right heading 350, ah no, LNAV on": the route flown again takes a heading's place)
+            and not ((self:intent_at(p) or valued) == "hdg" and self:intent_at(c) == "lnav"
+              and not self:word_in(c, math.min(#self.t + 1, c + 4), "@off")) then
           local e = c
           while self.t[e] and self.t[e].kind ~= "punct" do e = e + 1 end
           local function said(b, e) return (self:raw(b, e):gsub(" ([,.;:])", "%1"):gsub("[%s%p]+$", "")) end
@@ -5921,6 +5927,14 @@ end
 -- and a noun of .just_the, ending the clause) is such a phrase too; the command it names (HDG, SPD, ...) is
 -- returned second.
 function G:left_as_is_end(c)
+  -- ("turn right heading 350, ah no, keep route", "..., sorry, stay on your route": the route kept leaves the heading
+  -- said before the marker as it was, HDG)
+  if self:word(c, "keep stay continue remain") then
+    local k = self:word(c + 1, "on with along") and c + 2 or c + 1
+    if self:word(k, "the its your his her their") then k = k + 1 end
+    if self:word(k, "own") then k = k + 1 end
+    if self:word(k, "route") and (not self.t[k + 1] or self.t[k + 1].kind == "punct") then return k + 1, "HDG" end
+  end
   if not self:word(c, "leave keep") then return nil end
   local noun = self.t[c + 2]
   local kind = self:word(c + 1, G.sc_left_named) and noun and noun.kind == "word" and SC_KEPT[noun.text]
@@ -6065,6 +6079,9 @@ function G:corrects_in_kind(s, t)
     local ka, kb = a and G.value_kinds[a.kind], b and G.value_kinds[b.kind]
     if ka and kb then return ka == kb end
   end
+  -- ("turn right heading 350, ah no, keep route, LNAV on": the route flown again, said in place of a heading, takes
+  -- the heading's place)
+  if s.intent == "hdg" and t.intent == "lnav" and not self:word_in(t.b, t.e, "@off") then return true end
   return same_family(s.intent, t.intent)
 end
 

@@ -3903,6 +3903,14 @@ return function(H, f, compass)
       if x and x.b == a and x.exists and given and (self:intent_at(j) or valued == j + 1) then
         return self:explain(s.trig, a)
       end
+      -- ("KAL1102, how about speed 300? increase please", "how about flight level 240 for him": a value's noun and
+      -- its value straight after "how about", an aircraft named in the request, suggests that value: the words
+      -- show nothing, the value is read as said)
+      local v = self:word(a, "flight") and a + 1 or a
+      local q = self:word(v, "speed heading altitude level mach fl") and self:quantities(v, v + 3)[1]
+      if not x and q and (q.b == v or q.b == v + 1) and #self:acids(s) >= 1 then
+        return self:explain(s.trig, a)
+      end
     end
     -- a navaid's kind said beside its name ("the Pampus VOR, PAM") is no place of its own
     local places, kind_said = {}, false

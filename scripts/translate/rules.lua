@@ -1294,8 +1294,22 @@ return function(intent, rule, words)
   rule { "route rte wpt wp wpts waypoint waypoints", "addwpt", when = function(g, i)
     local b = (g.t[i - 1] or {}).text == ":" and i - 1 or i
     local flying = false
-    for _, r in ipairs(g:refs_in(1, b, "aircraft")) do flying = flying or (r.e == b and r.exists) end
-    return flying and g:has_ref(i + 1, i + 2, "waypoint")
+    for _, r in ipairs(g:refs_in(1, b, "aircraft")) do flying = flying or (r.e == b and r.exists and r) end
+    if not (flying and g:has_ref(i + 1, i + 2, "waypoint")) then return false end
+    -- ("KAL1114 route SEL, after that Gimpo destination": the one waypoint said that its route already holds, no
+    -- adding word in its clause, tells the route flown; nothing is added)
+    local a = g:state(flying.name)
+    local wp = g:refs_in(i + 1, i + 2, "waypoint")[1]
+    local e = wp.e
+    while g.t[e] and g.t[e].kind ~= "punct" do e = e + 1 end
+    if a and #g:refs_in(i + 1, e, "waypoint") == 1 and not g:word_in(i + 1, e, "add append insert addwpt via then") then
+      for _, w in ipairs(a.route or {}) do
+        if type(w) == "table" and (w.name or w.id or ""):upper() == wp.name:upper() or type(w) == "string" and w:upper() == wp.name:upper() then
+          return false
+        end
+      end
+    end
+    return true
   end }
   -- "set the Air France to fly via MAKIL at FL280 and 260 knots": a waypoint flown via is added to the route
   rule { "via", "addwpt", prev = { 2, "fly go" }, when = function(g, i) return g:has_ref(i + 1, i + 2, "waypoint") end }
