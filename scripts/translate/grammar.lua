@@ -8035,6 +8035,9 @@ function G:dangling_value_name()
   -- after a value, "climb fl320 spd", was cut off too, where a word may be the value's unit: "0.79 Mach")
   local after_value = self:word(first, "spd hdg fl vs alt")
     and (self.t[first - 1].kind == "number" or self.t[first - 1].raw:match("%d$") ~= nil)
+  -- ("KAL1203 where now, and altitude?": asked with "?" after a question of state, POS alone read, the value's name
+  -- is what to show)
+  if G.state_shown_asked(self) then return end
   if (self:linked(first) and not self:word(first - 2, "@value_names")) or after_value then
     self:need(string.format("I have %s. '%s' ends the request with no value after it: which value do you mean?",
       table.concat(self.out, " ; "), self:raw(first, last + 1)))
@@ -11314,10 +11317,18 @@ end
 -- "direct ALFA, speeds included", "climb FL200 and the levels too": values named with no value (G:values_named_alone)
 -- that no route followed reads (G:route_values_followed) and no VNAV sent carries: asked, naming the words, never
 -- dropped.
+-- True when the request ends with "?" and shows only an aircraft's state (POS alone read): value names in it are what
+-- to show ("KAL1203 where now, and altitude?").
+function G.state_shown_asked(self)
+  local shown = #self.t > 0 and self.t[#self.t].text == "?" and #self.out > 0
+  for _, line in ipairs(self.out) do shown = shown and line:match("^POS ") ~= nil end
+  return shown
+end
 function G:values_named_unread()
   for _, line in ipairs(self.out) do
     if line:match("^VNAV %S+ ON$") then return end
   end
+  if G.state_shown_asked(self) then return end
   for i = 1, #self.t do
     local b, k, n = self:values_named_alone(i)
     if n == i and not self:in_reason(i) and not self.noted[i] then

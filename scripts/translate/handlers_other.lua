@@ -3783,6 +3783,17 @@ return function(H, f, compass)
       self:explain(how, how + 2)
       return true
     end
+    -- ("horizontal resolution factor, what value now?", "look-ahead time, what is it?": "what" after the setting's
+    -- name, Korean order, only "value", "is", "it", "now" after it to the "?" or the end, no value said)
+    local what = self:find_word(first + 1, #self.t + 1, "what")
+    if value and what <= #self.t and #self:quantities(1, #self.t + 1) == 0 then
+      local k = what + 1
+      while self:word(k, "value number setting is it now currently") or (self.t[k] and self.t[k].filler) do k = k + 1 end
+      if k > #self.t or (self.t[k].kind == "punct" and k == #self.t) then
+        self:explain(what, k)
+        return true
+      end
+    end
     -- (a question: "is ... on?", "what is ...?", "can you check which/whether ...?"; its first sentence, a
     -- remark may follow: "Is the conflict detection on now? I can't see any alerts.")
     local ends = self:first_sentence_end()
