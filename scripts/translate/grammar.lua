@@ -10662,13 +10662,17 @@ end
 G.aircraft_kept_sets = { verbs = set_of(lexicon.aircraft_kept.verbs), words = set_of(lexicon.aircraft_kept.words) }
 function G:aircraft_kept()
   local K = G.aircraft_kept_sets
-  if not self:said(K.verbs) then return end
+  local unchanged = self:said("change changes unchanged")
+  if not (unchanged or self:said(K.verbs)) then return end
   for _, r in ipairs(self.refs) do
     local k = self:skip_fillers(r.e, false)
     local opens = r.b == self:skip_fillers(1, false) or self.t[r.b - 1].kind == "punct" or self:word(r.b - 1, "and")
       or self:word(r.b - 1, "the") and (r.b == 2 or self.t[r.b - 2].kind == "punct" or self:word(r.b - 2, "and"))
-    if r.kind == "aircraft" and r.exists and opens and self:word(k, K.verbs) then
-      local e = k + 1
+    -- ("..., Jin Air 117 no change", "..., KLM12 unchanged": said of the aircraft in place of the verb)
+    local said_so = unchanged and (self:word(k, "unchanged") and k + 1
+      or self:word(k, "no") and self:word(k + 1, "change changes") and k + 2)
+    if r.kind == "aircraft" and r.exists and opens and (said_so or self:word(k, K.verbs)) then
+      local e = said_so or k + 1
       while self.t[e] and (self.t[e].filler or self:word(e, K.words)) do e = e + 1 end
       local b = self:word(r.b - 1, "the") and r.b - 1 or r.b
       -- (the instructions are another aircraft's: one named before them, "ANA12 keep present heading, turn 10
@@ -14858,9 +14862,55 @@ function M.translate(text, world)
   end
   local first = G.said_first(text, world or {})
   if first then return first end
+  local summed = G.summary_closed(text, world or {})
+  if summed then return summed end
   local r = M.read_heard(text, world)
   if not r.ask then return r end
   return M.typos.reread(text, world or {}, r, M.read_typed)
+end
+
+-- "JJA1205 heading 180, JNA432 heading 340, two aircraft please", "AAR8917 speed 300 and FL310 climb, both please",
+-- "AAR371 heading 270, FL180, speed 250, all three please": a last clause (after a comma, full stop or semicolon)
+-- that only counts what was said ("both", "all" and a count, or a count; an aircraft noun or "instructions" after it;
+-- "ok"/"so" before and "please"/"thanks" after at most). The words before it are read alone; their reading stands
+-- when it has no question and the count is its aircraft's (two aircraft instructed: "both", "two aircraft") or, said
+-- to one aircraft with no aircraft noun, its instructions' ("both" for a speed and a level). Else nil (read whole).
+G.summary_counts = { both = 2, two = 2, three = 3, four = 4, five = 5, ["2"] = 2, ["3"] = 3, ["4"] = 4, ["5"] = 5 }
+G.summary_nouns = { aircraft = "aircraft", planes = "aircraft", airplanes = "aircraft", aeroplanes = "aircraft",
+  flights = "aircraft", instructions = "commands", commands = "commands", clearances = "commands", changes = "commands" }
+function G.summary_closed(text, world)
+  local cut, body = text:match("()[,.;]%s*([%w%s']+)[%.!]?%s*$")
+  if not cut then return nil end
+  local w = {}
+  for x in body:lower():gmatch("%S+") do w[#w + 1] = x end
+  local a, z = 1, #w
+  while w[a] == "ok" or w[a] == "okay" or w[a] == "so" or w[a] == "and" do a = a + 1 end
+  if w[z] == "you" and w[z - 1] == "thank" then z = z - 2 end
+  while w[z] == "please" or w[z] == "thanks" do z = z - 1 end
+  if w[a] == "all" or (w[a] == "both" and G.summary_counts[w[a + 1] or ""]) then a = a + 1 end
+  local n = G.summary_counts[w[a] or ""]
+  if not n then return nil end
+  a = a + 1
+  local kind
+  if a <= z and G.summary_nouns[w[a]] then kind, a = G.summary_nouns[w[a]], a + 1
+  elseif w[a] == "of" and w[a + 1] == "them" then a = a + 2 end
+  if a <= z then return nil end
+  local rest = text:sub(1, cut - 1)
+  if not rest:find("%a") then return nil end
+  local r = M.read_heard(rest, world)
+  if r.ask or r.confirm_first or #(r.commands or {}) == 0 then return nil end
+  local fleet, ids, n_ids = {}, {}, 0
+  for _, ac in ipairs(world.aircraft or {}) do fleet[(ac.id or ""):upper()] = true end
+  for _, c in ipairs(r.commands) do
+    local id
+    for t in c:gmatch("%S+") do
+      if not id and fleet[t:upper()] then id = t:upper() end
+    end
+    if not id then return nil end
+    if not ids[id] then ids[id], n_ids = true, n_ids + 1 end
+  end
+  if (kind ~= "commands" and n_ids == n) or (kind ~= "aircraft" and n_ids == 1 and #r.commands == n) then return r end
+  return nil
 end
 
 -- "Create 10 random A320s at FL300; set seed 42 first so that the run is repeatable", "fast-forward 5 minutes,
