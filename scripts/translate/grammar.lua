@@ -5467,6 +5467,14 @@ function G:value_said_again(p, a, c)
   -- ("climb to level 380, no, wait, keep 360": "keep" and the value alone, the value kept in place of the one said)
   local v = (self:word(c, "it") and self:word(c - 1, "make") or self:word(c, "use keep")) and c + 1 or c
   local old = self:quantities(p + 1, a)
+  -- ("speed 260 reduce, ah no, 250 please": the verb said after its value, Korean order, nothing but fillers after
+  -- it before the mark; the value straight before the verb is the one said again)
+  local final = false
+  if #old == 0 and p >= 2 and self:skip_fillers(p + 1) >= a then
+    local before = self:quantities(math.max(1, p - 4), p)
+    local q = before[#before]
+    if q and self:skip_fillers(q.e) == p then old, final = { q }, true end
+  end
   -- ("7800 metres, sorry, not 7800, is 8100", "..., not 7800 but 8100": the value said before, denied with "not"
   -- and said again as it was, then the new one)
   local denied = false
@@ -5491,6 +5499,12 @@ function G:value_said_again(p, a, c)
   if self.t[nx] and self.t[nx].kind ~= "punct" then return false end
   local b = old[1].b
   while exact and b - 1 > p and self:word(b - 1, "or above below least most") do b = b - 1 end
+  if final then
+    -- (the verb after the old value stays the instruction's word)
+    self:mark_used(b, old[1].e)
+    for k = b, old[1].e - 1 do self.noted[k] = true end
+    b = p + 1
+  end
   self:mark_used(b, v)
   for k = b, v - 1 do self.noted[k] = true end
   self.said_again = self.said_again or {}
@@ -5717,6 +5731,19 @@ function G:self_corrected()
         withdrawn = told and not self:intent_at(v)
       end
     end
+    -- ("heading 180, ah, not heading, I mean speed 180": "not" and the kind of the last instruction before the mark,
+    -- then an instruction of another kind, says that one replaces it)
+    local kind = self.t[a].kind == "punct" and self:word(c, "not") and self.t[c + 1] and SC_KEPT[self.t[c + 1].text]
+    if kind then
+      local p = a - 1
+      while p >= 1 and not self:intent_at(p) do p = p - 1 end
+      local v = c + 2
+      while self.t[v] and (self.t[v].kind == "punct" or self.t[v].filler or SC_WORDS[self.t[v].text]) do v = v + 1 end
+      local now = self:intent_at(v)
+      if p >= 1 and self:intent_at(p) == kind:lower() and now and now ~= kind:lower() then
+        c, marked, replaced = v, true, true
+      end
+    end
     if marked then
       c = self:ruled_out_reason_end(a, c)
     elseif c > a and self:word(c, "am i'm") and self:word(c + 1, "sorry") then
@@ -5802,7 +5829,10 @@ function G:self_corrected()
     -- Spirit", only the aircraft narrowed)
     if marked and c <= #self.t and (p >= 1 or (self:word(c, SC_ONLY) and self:has_ref(c + 1, c + 3, "aircraft"))) then
       local b = a
-      if p == a - 1 then
+      -- (a verb said after its value, "speed 260 reduce, ah no, 250", is no instruction cut off: G:value_said_again)
+      local before = p == a - 1 and self:quantities(math.max(1, p - 4), p)
+      local final = before and before[#before] and self:skip_fillers(before[#before].e) == p
+      if p == a - 1 and not final then
         -- an instruction cut off: taken back, with the "and" that joined it
         b = self:word(p - 1, "and") and p - 1 or p
       end
@@ -10669,8 +10699,12 @@ function G:aircraft_kept()
     local opens = r.b == self:skip_fillers(1, false) or self.t[r.b - 1].kind == "punct" or self:word(r.b - 1, "and")
       or self:word(r.b - 1, "the") and (r.b == 2 or self.t[r.b - 2].kind == "punct" or self:word(r.b - 2, "and"))
     -- ("..., Jin Air 117 no change", "..., KLM12 unchanged": said of the aircraft in place of the verb)
+    -- (named elsewhere too, it is left to the acids' reading of a clause of its own)
     local said_so = unchanged and (self:word(k, "unchanged") and k + 1
       or self:word(k, "no") and self:word(k + 1, "change changes") and k + 2)
+    for _, o in ipairs(said_so and self.refs or {}) do
+      if o ~= r and o.kind == "aircraft" and o.name == r.name then said_so = false end
+    end
     if r.kind == "aircraft" and r.exists and opens and (said_so or self:word(k, K.verbs)) then
       local e = said_so or k + 1
       while self.t[e] and (self.t[e].filler or self:word(e, K.words)) do e = e + 1 end

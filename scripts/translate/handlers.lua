@@ -507,7 +507,13 @@ function m:acids(s)
     end
     -- (said with "is" or "are" the clause describes them: explained)
     if from > s.b and self:word_in(s.b, from, "is are was were") then self:explain(s.b, from) end
-    local again = self:readdressed(from, s.trig)
+    -- ("..., All Nippon 865 flight level 370 climb please": the value said before its verb, Korean order, is where
+    -- the one said again stands before)
+    local at = s.trig
+    local vq = self:quantities(from, s.trig)
+    vq = vq[#vq]
+    if vq and self:skip_fillers(vq.e) == s.trig then at = vq.b end
+    local again = self:readdressed(from, at)
     if again then
       ids[1], seen[again.name] = again.name, true
     else
