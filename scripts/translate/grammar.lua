@@ -3456,7 +3456,8 @@ function G:vertical_resolutions(i)
     -- (aircraft named, "KAL1001, AAR8103, conflict resolution vertical off": only with the resolution's word
     -- straight beside it, the setting being everyone's)
     and (not self:has_ref(1, #self.t + 1, "aircraft")
-      or self:word(i - 1, "resolution resolutions reso") or self:word(i + 1, "resolution resolutions reso"))
+      or (self:word(i - 1, "resolution resolutions reso") or self:word(i + 1, "resolution resolutions reso"))
+        and self:word_in(i + 1, math.min(#self.t + 1, i + 4), "on off @on @off"))
 end
 
 -- True when every token but the one at i is punctuation, a filler or part of
@@ -14896,7 +14897,7 @@ function M.translate(text, world)
   end
   local first = G.said_first(text, world or {})
   if first then return first end
-  local summed = G.summary_closed(text, world or {})
+  local summed = G.summary_closed(text, world or {}) or G.present_told(text, world or {})
   if summed then return summed end
   local r = M.read_heard(text, world)
   if not r.ask then return r end
@@ -14945,6 +14946,25 @@ function G.summary_closed(text, world)
   end
   if (kind ~= "commands" and n_ids == n) or (kind ~= "aircraft" and n_ids == 1 and #r.commands == n) then return r end
   return nil
+end
+
+-- "KAL1001 speed, ah, it is 280 now? then 260 make": the value the aircraft has now, told or asked ("it is N now?",
+-- "it's N now?", "is it N now?"), then "then" or "so" and the value to fly: the words from the told value to "then"
+-- are read as no value; the rest's reading stands when it is one command with a value other than N. Else nil.
+function G.present_told(text, world)
+  local low = text:lower()
+  local b, n, e
+  for _, pat in ipairs({ "()it is (%d+) now%s*%?%s*[,]?%s*then%s+()", "()it's (%d+) now%s*%?%s*[,]?%s*then%s+()",
+                         "()is it (%d+) now%s*%?%s*[,]?%s*then%s+()", "()it is (%d+) now%s*%?%s*[,]?%s*so%s+()" }) do
+    if not b then b, n, e = low:match(pat) end
+  end
+  if not b then return nil end
+  local rest = text:sub(1, b - 1) .. text:sub(e)
+  local r = M.read_heard(rest, world)
+  if r.ask or r.confirm_first or #(r.commands or {}) ~= 1 then return nil end
+  local v = r.commands[1]:match("^%u+ %S+ (%d+)$")
+  if not v or v == n or not r.commands[1]:match("^[SH][PD][DG] ") then return nil end
+  return r
 end
 
 -- "Create 10 random A320s at FL300; set seed 42 first so that the run is repeatable", "fast-forward 5 minutes,
