@@ -10706,6 +10706,15 @@ function G:aircraft_kept()
     for _, o in ipairs(said_so and self.refs or {}) do
       if o ~= r and o.kind == "aircraft" and o.name == r.name then said_so = false end
     end
+    -- (after a comma, only where the clause before it names its own aircraft: in "..., and direct HZQ1, BEE71 no
+    -- change" BEE71 may be the direct's addressee, asked)
+    if said_so and r.b > 1 and self.t[r.b - 1].kind == "punct" then
+      local x = r.b - 2
+      while x >= 1 and self.t[x].kind ~= "punct" and not self:word(x, "and") do x = x - 1 end
+      local own = false
+      for _, o in ipairs(self:refs_in(x + 1, r.b - 1, "aircraft")) do own = own or (o.exists and o.name ~= r.name) end
+      said_so = own and said_so
+    end
     if r.kind == "aircraft" and r.exists and opens and (said_so or self:word(k, K.verbs)) then
       local e = said_so or k + 1
       while self.t[e] and (self.t[e].filler or self:word(e, K.words)) do e = e + 1 end
