@@ -3650,7 +3650,11 @@ function G:vertical_resolutions(i)
   end
   return (self:word(i, "vertical") or horizontal_only) and self:word_in(1, #self.t + 1, reso)
     and (not self:word_in(1, #self.t + 1, sized) or self:word(i, "vertical") and sized_apart())
-    and not self:has_ref(1, #self.t + 1, "aircraft")
+    -- (aircraft named, "KAL1001, AAR8103, conflict resolution vertical off": only with the resolution's word
+    -- straight beside it, the setting being everyone's)
+    and (not self:has_ref(1, #self.t + 1, "aircraft")
+      or (self:word(i - 1, "resolution resolutions reso") or self:word(i + 1, "resolution resolutions reso"))
+        and self:word_in(i + 1, math.min(#self.t + 1, i + 4), "on off @on @off"))
 end
 
 -- True when every token but the one at i is punctuation, a filler or part of
@@ -5670,6 +5674,14 @@ function G:value_said_again(p, a, c)
   -- ("climb to level 380, no, wait, keep 360": "keep" and the value alone, the value kept in place of the one said)
   local v = (self:word(c, "it") and self:word(c - 1, "make") or self:word(c, "use keep")) and c + 1 or c
   local old = self:quantities(p + 1, a)
+  -- ("speed 260 reduce, ah no, 250 please": the verb said after its value, Korean order, nothing but fillers after
+  -- it before the mark; the value straight before the verb is the one said again)
+  local final = false
+  if #old == 0 and p >= 2 and self:skip_fillers(p + 1) >= a then
+    local before = self:quantities(math.max(1, p - 4), p)
+    local q = before[#before]
+    if q and self:skip_fillers(q.e) == p then old, final = { q }, true end
+  end
   -- ("7800 metres, sorry, not 7800, is 8100", "..., not 7800 but 8100": the value said before, denied with "not"
   -- and said again as it was, then the new one)
   local denied = false
@@ -5694,6 +5706,12 @@ function G:value_said_again(p, a, c)
   if self.t[nx] and self.t[nx].kind ~= "punct" then return false end
   local b = old[1].b
   while exact and b - 1 > p and self:word(b - 1, "or above below least most") do b = b - 1 end
+  if final then
+    -- (the verb after the old value stays the instruction's word)
+    self:mark_used(b, old[1].e)
+    for k = b, old[1].e - 1 do self.noted[k] = true end
+    b = p + 1
+  end
   self:mark_used(b, v)
   for k = b, v - 1 do self.noted[k] = true end
   self.said_again = self.said_again or {}
@@ -5920,6 +5938,19 @@ function G:self_corrected()
         withdrawn = told and not self:intent_at(v)
       end
     end
+    -- ("heading 180, ah, not heading, I mean speed 180": "not" and the kind of the last instruction before the mark,
+    -- then an instruction of another kind, says that one replaces it)
+    local kind = self.t[a].kind == "punct" and self:word(c, "not") and self.t[c + 1] and SC_KEPT[self.t[c + 1].text]
+    if kind then
+      local p = a - 1
+      while p >= 1 and not self:intent_at(p) do p = p - 1 end
+      local v = c + 2
+      while self.t[v] and (self.t[v].kind == "punct" or self.t[v].filler or SC_WORDS[self.t[v].text]) do v = v + 1 end
+      local now = self:intent_at(v)
+      if p >= 1 and self:intent_at(p) == kind:lower() and now and now ~= kind:lower() then
+        c, marked, replaced = v, true, true
+      end
+    end
     if marked then
       c = self:ruled_out_reason_end(a, c)
     elseif c > a and self:word(c, "am i'm") and self:word(c + 1, "sorry") then
@@ -5940,7 +5971,7 @@ function G:self_corrected()
     -- ("heading 360, sorry, leave its speed, ...": the kind named is not the instruction said before the run: asked)
     if left_kind and not self:kept_clause_end(left_kind:lower(), a) then
       return self:need(string.format("You said '%s', but no %s was given before it. What stands?",
-        self:raw(c, left_as_is), self.t[c + 2].text))
+        self:raw(c, left_as_is), self:word(left_as_is - 1, "route") and "heading" or self.t[c + 2].text))
     end
     if left_as_is then
       c = left_as_is
@@ -6005,7 +6036,10 @@ function G:self_corrected()
     -- Spirit", only the aircraft narrowed)
     if marked and c <= #self.t and (p >= 1 or (self:word(c, SC_ONLY) and self:has_ref(c + 1, c + 3, "aircraft"))) then
       local b = a
-      if p == a - 1 then
+      -- (a verb said after its value, "speed 260 reduce, ah no, 250", is no instruction cut off: G:value_said_again)
+      local before = p == a - 1 and self:quantities(math.max(1, p - 4), p)
+      local final = before and before[#before] and self:skip_fillers(before[#before].e) == p
+      if p == a - 1 and not final then
         -- an instruction cut off: taken back, with the "and" that joined it
         b = self:word(p - 1, "and") and p - 1 or p
       end
@@ -6104,7 +6138,10 @@ function G:self_corrected()
         -- ("never mind", "forget that", "scratch that" take it back in words; the same verb is no other kind)
         if w == c and not replaced and not self:word(c, "it") and not SC_SETTING[self.words[c]]
             and not left_as_is and not self:word_in(a, c, "never nevermind forget scratch") and self.words[c] ~= self.words[p]
-            and not same_family(self:intent_at(p) or valued, self:intent_at(c)) then
+            and not same_family(self:intent_at(p) or valued, self:intent_at(c))
+            -- ("turn right heading 350, ah no, LNAV on": the route flown again takes a heading's place)
+            and not ((self:intent_at(p) or valued) == "hdg" and self:intent_at(c) == "lnav"
+              and not self:word_in(c, math.min(#self.t + 1, c + 4), "@off")) then
           local e = c
           while self.t[e] and self.t[e].kind ~= "punct" do e = e + 1 end
           local function said(b, e) return (self:raw(b, e):gsub(" ([,.;:])", "%1"):gsub("[%s%p]+$", "")) end
@@ -6127,6 +6164,14 @@ end
 -- and a noun of .just_the, ending the clause) is such a phrase too; the command it names (HDG, SPD, ...) is
 -- returned second.
 function G:left_as_is_end(c)
+  -- ("turn right heading 350, ah no, keep route", "..., sorry, stay on your route": the route kept leaves the heading
+  -- said before the marker as it was, HDG)
+  if self:word(c, "keep stay continue remain") then
+    local k = self:word(c + 1, "on with along") and c + 2 or c + 1
+    if self:word(k, "the its your his her their") then k = k + 1 end
+    if self:word(k, "own") then k = k + 1 end
+    if self:word(k, "route") and (not self.t[k + 1] or self.t[k + 1].kind == "punct") then return k + 1, "HDG" end
+  end
   if not self:word(c, "leave keep") then return nil end
   local noun = self.t[c + 2]
   local kind = self:word(c + 1, G.sc_left_named) and noun and noun.kind == "word" and SC_KEPT[noun.text]
@@ -6271,6 +6316,9 @@ function G:corrects_in_kind(s, t)
     local ka, kb = a and G.value_kinds[a.kind], b and G.value_kinds[b.kind]
     if ka and kb then return ka == kb end
   end
+  -- ("turn right heading 350, ah no, keep route, LNAV on": the route flown again, said in place of a heading, takes
+  -- the heading's place)
+  if s.intent == "hdg" and t.intent == "lnav" and not self:word_in(t.b, t.e, "@off") then return true end
   return same_family(s.intent, t.intent)
 end
 
@@ -8227,6 +8275,9 @@ function G:dangling_value_name()
   -- after a value, "climb fl320 spd", was cut off too, where a word may be the value's unit: "0.79 Mach")
   local after_value = self:word(first, "spd hdg fl vs alt")
     and (self.t[first - 1].kind == "number" or self.t[first - 1].raw:match("%d$") ~= nil)
+  -- ("KAL1203 where now, and altitude?": asked with "?" after a question of state, POS alone read, the value's name
+  -- is what to show)
+  if G.state_shown_asked(self) then return end
   if (self:linked(first) and not self:word(first - 2, "@value_names")) or after_value then
     self:need(string.format("I have %s. '%s' ends the request with no value after it: which value do you mean?",
       table.concat(self.out, " ; "), self:raw(first, last + 1)))
@@ -10889,13 +10940,30 @@ end
 G.aircraft_kept_sets = { verbs = set_of(lexicon.aircraft_kept.verbs), words = set_of(lexicon.aircraft_kept.words) }
 function G:aircraft_kept()
   local K = G.aircraft_kept_sets
-  if not self:said(K.verbs) then return end
+  local unchanged = self:said("change changes unchanged")
+  if not (unchanged or self:said(K.verbs)) then return end
   for _, r in ipairs(self.refs) do
     local k = self:skip_fillers(r.e, false)
     local opens = r.b == self:skip_fillers(1, false) or self.t[r.b - 1].kind == "punct" or self:word(r.b - 1, "and")
       or self:word(r.b - 1, "the") and (r.b == 2 or self.t[r.b - 2].kind == "punct" or self:word(r.b - 2, "and"))
-    if r.kind == "aircraft" and r.exists and opens and self:word(k, K.verbs) then
-      local e = k + 1
+    -- ("..., Jin Air 117 no change", "..., KLM12 unchanged": said of the aircraft in place of the verb)
+    -- (named elsewhere too, it is left to the acids' reading of a clause of its own)
+    local said_so = unchanged and (self:word(k, "unchanged") and k + 1
+      or self:word(k, "no") and self:word(k + 1, "change changes") and k + 2)
+    for _, o in ipairs(said_so and self.refs or {}) do
+      if o ~= r and o.kind == "aircraft" and o.name == r.name then said_so = false end
+    end
+    -- (after a comma, only where the clause before it names its own aircraft: in "..., and direct HZQ1, BEE71 no
+    -- change" BEE71 may be the direct's addressee, asked)
+    if said_so and r.b > 1 and self.t[r.b - 1].kind == "punct" then
+      local x = r.b - 2
+      while x >= 1 and self.t[x].kind ~= "punct" and not self:word(x, "and") do x = x - 1 end
+      local own = false
+      for _, o in ipairs(self:refs_in(x + 1, r.b - 1, "aircraft")) do own = own or (o.exists and o.name ~= r.name) end
+      said_so = own and said_so
+    end
+    if r.kind == "aircraft" and r.exists and opens and (said_so or self:word(k, K.verbs)) then
+      local e = said_so or k + 1
       while self.t[e] and (self.t[e].filler or self:word(e, K.words)) do e = e + 1 end
       local b = self:word(r.b - 1, "the") and r.b - 1 or r.b
       -- (the instructions are another aircraft's: one named before them, "ANA12 keep present heading, turn 10
@@ -11544,10 +11612,18 @@ end
 -- "direct ALFA, speeds included", "climb FL200 and the levels too": values named with no value (G:values_named_alone)
 -- that no route followed reads (G:route_values_followed) and no VNAV sent carries: asked, naming the words, never
 -- dropped.
+-- True when the request ends with "?" and shows only an aircraft's state (POS alone read): value names in it are what
+-- to show ("KAL1203 where now, and altitude?").
+function G.state_shown_asked(self)
+  local shown = #self.t > 0 and self.t[#self.t].text == "?" and #self.out > 0
+  for _, line in ipairs(self.out) do shown = shown and line:match("^POS ") ~= nil end
+  return shown
+end
 function G:values_named_unread()
   for _, line in ipairs(self.out) do
     if line:match("^VNAV %S+ ON$") then return end
   end
+  if G.state_shown_asked(self) then return end
   -- (G:values_named_alone reads a noun at i only: G:said's guard before the scan)
   for i = 1, self:said("@route_value_nouns") and #self.t or 0 do
     local b, k, n = self:values_named_alone(i)
@@ -15306,9 +15382,74 @@ function M.translate(text, world)
   end
   local first = G.said_first(text, world or {})
   if first then return first end
+  local summed = G.summary_closed(text, world or {}) or G.present_told(text, world or {})
+  if summed then return summed end
   local r = M.read_heard(text, world)
   if not r.ask then return r end
   return M.typos.reread(text, world or {}, r, M.read_typed)
+end
+
+-- "JJA1205 heading 180, JNA432 heading 340, two aircraft please", "AAR8917 speed 300 and FL310 climb, both please",
+-- "AAR371 heading 270, FL180, speed 250, all three please": a last clause (after a comma, full stop or semicolon)
+-- that only counts what was said ("both", "all" and a count, or a count; an aircraft noun or "instructions" after it;
+-- "ok"/"so" before and "please"/"thanks" after at most). The words before it are read alone; their reading stands
+-- when it has no question and the count is its aircraft's (two aircraft instructed: "both", "two aircraft") or, said
+-- to one aircraft with no aircraft noun, its instructions' ("both" for a speed and a level). Else nil (read whole).
+G.summary_counts = { both = 2, two = 2, three = 3, four = 4, five = 5, ["2"] = 2, ["3"] = 3, ["4"] = 4, ["5"] = 5 }
+G.summary_nouns = { aircraft = "aircraft", planes = "aircraft", airplanes = "aircraft", aeroplanes = "aircraft",
+  flights = "aircraft", instructions = "commands", commands = "commands", clearances = "commands", changes = "commands" }
+function G.summary_closed(text, world)
+  local cut, body = text:match("()[,.;]%s*([%w%s']+)[%.!]?%s*$")
+  if not cut then return nil end
+  local w = {}
+  for x in body:lower():gmatch("%S+") do w[#w + 1] = x end
+  local a, z = 1, #w
+  while w[a] == "ok" or w[a] == "okay" or w[a] == "so" or w[a] == "and" do a = a + 1 end
+  if w[z] == "you" and w[z - 1] == "thank" then z = z - 2 end
+  while w[z] == "please" or w[z] == "thanks" do z = z - 1 end
+  if w[a] == "all" or (w[a] == "both" and G.summary_counts[w[a + 1] or ""]) then a = a + 1 end
+  local n = G.summary_counts[w[a] or ""]
+  if not n then return nil end
+  a = a + 1
+  local kind
+  if a <= z and G.summary_nouns[w[a]] then kind, a = G.summary_nouns[w[a]], a + 1
+  elseif w[a] == "of" and w[a + 1] == "them" then a = a + 2 end
+  if a <= z then return nil end
+  local rest = text:sub(1, cut - 1)
+  if not rest:find("%a") then return nil end
+  local r = M.read_heard(rest, world)
+  if r.ask or r.confirm_first or #(r.commands or {}) == 0 then return nil end
+  local fleet, ids, n_ids = {}, {}, 0
+  for _, ac in ipairs(world.aircraft or {}) do fleet[(ac.id or ""):upper()] = true end
+  for _, c in ipairs(r.commands) do
+    local id
+    for t in c:gmatch("%S+") do
+      if not id and fleet[t:upper()] then id = t:upper() end
+    end
+    if not id then return nil end
+    if not ids[id] then ids[id], n_ids = true, n_ids + 1 end
+  end
+  if (kind ~= "commands" and n_ids == n) or (kind ~= "aircraft" and n_ids == 1 and #r.commands == n) then return r end
+  return nil
+end
+
+-- "KAL1001 speed, ah, it is 280 now? then 260 make": the value the aircraft has now, told or asked ("it is N now?",
+-- "it's N now?", "is it N now?"), then "then" or "so" and the value to fly: the words from the told value to "then"
+-- are read as no value; the rest's reading stands when it is one command with a value other than N. Else nil.
+function G.present_told(text, world)
+  local low = text:lower()
+  local b, n, e
+  for _, pat in ipairs({ "()it is (%d+) now%s*%?%s*[,]?%s*then%s+()", "()it's (%d+) now%s*%?%s*[,]?%s*then%s+()",
+                         "()is it (%d+) now%s*%?%s*[,]?%s*then%s+()", "()it is (%d+) now%s*%?%s*[,]?%s*so%s+()" }) do
+    if not b then b, n, e = low:match(pat) end
+  end
+  if not b then return nil end
+  local rest = text:sub(1, b - 1) .. text:sub(e)
+  local r = M.read_heard(rest, world)
+  if r.ask or r.confirm_first or #(r.commands or {}) ~= 1 then return nil end
+  local v = r.commands[1]:match("^%u+ %S+ (%d+)$")
+  if not v or v == n or not r.commands[1]:match("^[SH][PD][DG] ") then return nil end
+  return r
 end
 
 -- "Create 10 random A320s at FL300; set seed 42 first so that the run is repeatable", "fast-forward 5 minutes,

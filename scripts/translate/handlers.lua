@@ -275,6 +275,12 @@ function m:readdressed(b, trig)
   if #refs < 2 then return nil end
   local k = trig - 1
   while k > b and (self.t[k].kind == "punct" or self.t[k].filler) do k = k - 1 end
+  -- (the order said after the one said again: "..., Asiana first heading 180, then ..."; "go" before the value
+  -- itself: "..., better Air China 124 go flight level 330")
+  if self:word(k, "first go") and k > b then
+    k = k - 1
+    while k > b and (self.t[k].kind == "punct" or self.t[k].filler) do k = k - 1 end
+  end
   -- (a modal between the one said again and the verb: "..., the EgyptAir should climb ...")
   if self:word(k, "should shall must") and k > b then
     k = k - 1
@@ -297,7 +303,18 @@ function m:readdressed(b, trig)
     if t.kind == "word" and not t.filler and not self:word(x, "and") then clause = true end
   end
   if last.e == k + 1 then
-    if not clause then return nil end
+    -- ("Asiana 213 and Jeju Air 1801, Asiana first heading 180, then Jeju Air speed 240": with no clause, the one
+    -- said again is addressed alone only when every other one of the pair is said again after the instruction word,
+    -- each for its own instruction)
+    if not clause then
+      local later = {}
+      for _, r in ipairs(self:refs_in(trig + 1, #self.t + 1, "aircraft")) do
+        if r.exists and not r.false_start then later[r.name] = true end
+      end
+      for i = 1, pair do
+        if refs[i].name ~= last.name and not later[refs[i].name] then return nil end
+      end
+    end
     for i = 1, pair do
       if refs[i].name == last.name then
         self:explain(b, last.b)
@@ -423,7 +440,15 @@ function m:acids(s)
       if clause then upto = last_q.e break end
     end
   end
-  take(s.trig, upto)
+  -- ("Air China 124 and China Eastern 5042 converging, I think better Air China 124 go flight level 330": a value
+  -- with no instruction word, one of the pair said again before it, m:readdressed)
+  local q1 = s.intent == "infer" and qs[1]
+  local again = q1 and #self:refs_in(s.trig, q1.b, "aircraft") > 2 and self:readdressed(s.b, q1.b)
+  if again then
+    ids[1], seen[again.name] = again.name, true
+  else
+    take(s.trig, upto)
+  end
   -- "AFR1234 and KLM605 are head on, climb the Air France to FL340": with the instruction's aircraft named after
   -- its word, a clause opening the segment that describes aircraft with "is" or "are", holds no value and ends
   -- at a comma is talked about, not instructed (explained)
@@ -485,7 +510,13 @@ function m:acids(s)
     end
     -- (said with "is" or "are" the clause describes them: explained)
     if from > s.b and self:word_in(s.b, from, "is are was were") then self:explain(s.b, from) end
-    local again = self:readdressed(from, s.trig)
+    -- ("..., All Nippon 865 flight level 370 climb please": the value said before its verb, Korean order, is where
+    -- the one said again stands before)
+    local at = s.trig
+    local vq = self:quantities(from, s.trig)
+    vq = vq[#vq]
+    if vq and self:skip_fillers(vq.e) == s.trig then at = vq.b end
+    local again = self:readdressed(from, at)
     if again then
       ids[1], seen[again.name] = again.name, true
     else

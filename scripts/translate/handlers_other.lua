@@ -3892,6 +3892,17 @@ return function(H, f, compass)
       self:explain(how, how + 2)
       return true
     end
+    -- ("horizontal resolution factor, what value now?", "look-ahead time, what is it?": "what" after the setting's
+    -- name, Korean order, only "value", "is", "it", "now" after it to the "?" or the end, no value said)
+    local what = self:find_word(first + 1, #self.t + 1, "what")
+    if value and what <= #self.t and #self:quantities(1, #self.t + 1) == 0 then
+      local k = what + 1
+      while self:word(k, "value number setting is it now currently") or (self.t[k] and self.t[k].filler) do k = k + 1 end
+      if k > #self.t or (self.t[k].kind == "punct" and k == #self.t) then
+        self:explain(what, k)
+        return true
+      end
+    end
     -- (a question: "is ... on?", "what is ...?", "can you check which/whether ...?"; its first sentence, a
     -- remark may follow: "Is the conflict detection on now? I can't see any alerts.")
     local ends = self:first_sentence_end()
@@ -4010,6 +4021,14 @@ return function(H, f, compass)
       local valued = j and self:word(j, "speed heading altitude level mach") and (self:quantities(j + 1, j + 3)[1] or {}).b
       local given = j and (#self:quantities(j, #self.t + 1) > 0 or self:has_ref(j, #self.t + 1, "waypoint"))
       if x and x.b == a and x.exists and given and (self:intent_at(j) or valued == j + 1) then
+        return self:explain(s.trig, a)
+      end
+      -- ("KAL1102, how about speed 300? increase please", "how about flight level 240 for him": a value's noun and
+      -- its value straight after "how about", an aircraft named in the request, suggests that value: the words
+      -- show nothing, the value is read as said)
+      local v = self:word(a, "flight") and a + 1 or a
+      local q = self:word(v, "speed heading altitude level mach fl") and self:quantities(v, v + 3)[1]
+      if not x and q and (q.b == v or q.b == v + 1) and #self:acids(s) >= 1 then
         return self:explain(s.trig, a)
       end
     end

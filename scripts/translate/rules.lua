@@ -259,6 +259,45 @@ return function(intent, rule, words)
       and not value_unsaid(g, i)
   end }
 
+  -- "KAL1203 now altitude is how much?", "AAR8917, heading what is now?", "its speed, how much now?", "its heading,
+  -- what?": a state word with the question word after it (Korean order: "what"/"how much", "is", "now" and a comma
+  -- around it, nothing else to the "?" or the end), an aircraft named before it and no value in its clause (an
+  -- instruction given before the comma, "speed 250, heading what?", stands): the aircraft's state asked (POS)
+  local function asked_after(g, i)
+    local k = i + 1
+    local asked = false
+    while g.t[k] and not (g.t[k].kind == "punct" and g.t[k].text ~= ",") do
+      if g:word(k, "what") then asked = true
+      elseif g:word(k, "how") and g:word(k + 1, "much") then asked, k = true, k + 1
+      elseif not (g:word(k, "is now currently value") or g.t[k].filler or g.t[k].kind == "punct") then return false end
+      k = k + 1
+    end
+    return asked and (g.t[k] == nil or g.t[k].text == "?")
+  end
+  rule { "altitude level speed heading mach airspeed height", "pos", when = function(g, i)
+    local b = i - 1
+    while b > 1 and not (g.t[b].kind == "punct" and not g:word(b - 1, "its his her their the")) do b = b - 1 end
+    return asked_after(g, i) and g:has_ref(1, i, "aircraft") and #g:quantities(b, #g.t + 1) == 0
+      and not value_unsaid(g, i)
+  end }
+  -- "KAL851 how fast going now?", "how high now?": "how fast"/"how high" after the aircraft named, then only a verb
+  -- of going or "now" to the "?" or the end
+  rule { "how", "pos", next = "fast high", when = function(g, i)
+    if not g:has_ref(1, i, "aircraft") or #g:quantities(1, #g.t + 1) > 0 then return false end
+    local k = i + 2
+    while g:word(k, "going flying travelling traveling now currently is it he she") do k = k + 1 end
+    return g.t[k] == nil or g.t[k].text == "?"
+  end }
+  -- "KAL1114 and AAR8811, which one is higher now?", "which is faster?", "who is lower": aircraft named before a
+  -- question comparing their state, no value said: each one's state shown (POS)
+  rule { "which who", "pos", when = function(g, i)
+    local k = g:word(i + 1, "one aircraft plane") and i + 2 or i + 1
+    if not g:word(k, "is 's") then return false end
+    k = k + 1
+    if g:word(k, "now currently") then k = k + 1 end
+    return g:word(k, "higher lower faster slower closer nearer further farther") and #g:refs_in(1, i, "aircraft") >= 2
+      and #g:quantities(1, i + 1) == 0 and #g:quantities(i + 2, #g.t + 1) == 0
+  end }
   -- "put the sim 3 times faster, the climb takes too long", "the turn was too late": the instruction word after
   -- "the", the subject of a verb of description, is a noun
   rule { "climb descent turn", false, prev = { 1, "the" }, next = "takes took is was seems looks" }
@@ -1337,8 +1376,22 @@ return function(intent, rule, words)
   rule { "route rte wpt wp wpts waypoint waypoints", "addwpt", when = function(g, i)
     local b = (g.t[i - 1] or {}).text == ":" and i - 1 or i
     local flying = false
-    for _, r in ipairs(g:refs_in(1, b, "aircraft")) do flying = flying or (r.e == b and r.exists) end
-    return flying and g:has_ref(i + 1, i + 2, "waypoint")
+    for _, r in ipairs(g:refs_in(1, b, "aircraft")) do flying = flying or (r.e == b and r.exists and r) end
+    if not (flying and g:has_ref(i + 1, i + 2, "waypoint")) then return false end
+    -- ("KAL1114 route SEL, after that Gimpo destination": the one waypoint said that its route already holds, no
+    -- adding word in its clause, tells the route flown; nothing is added)
+    local a = g:state(flying.name)
+    local wp = g:refs_in(i + 1, i + 2, "waypoint")[1]
+    local e = wp.e
+    while g.t[e] and g.t[e].kind ~= "punct" do e = e + 1 end
+    if a and #g:refs_in(i + 1, e, "waypoint") == 1 and not g:word_in(i + 1, e, "add append insert addwpt via then") then
+      for _, w in ipairs(a.route or {}) do
+        if type(w) == "table" and (w.name or w.id or ""):upper() == wp.name:upper() or type(w) == "string" and w:upper() == wp.name:upper() then
+          return false
+        end
+      end
+    end
+    return true
   end }
   -- "its route, NOPIK add please", "route end, CJU add", "route, KWA, MKP, CJU add please": the route named first
   -- (Korean topic-first order), set apart by a comma, after a flying aircraft ("its"/"the" and a comma between
@@ -2071,6 +2124,20 @@ return function(intent, rule, words)
   end }
   rule { "vertical vertically", "vnav", prev = { 4, "plan route" } }  -- "follow its flight plan vertically"
   rule { "vertical", "vnav", next = "profile navigation nav" }
+  -- "AAR8917 its route show me please", "KAL12 route display": the verb of showing after the route (verb-final
+  -- order), an aircraft named straight before it ("its" between or not), nothing else in its clause but "me"/"us"
+  -- and "please": its route listed
+  rule { "route rte routing waypoints", "listrte", when = function(g, i)
+    local b = g:word(i - 1, "its his her the") and i - 1 or i
+    local r = g:refs_in(1, b, "aircraft")
+    r = r[#r]
+    if not (r and r.exists and g:skip_fillers(r.e) == b) then return false end
+    local k = i + 1
+    if not g:word(k, "show display list") then return false end
+    k = k + 1
+    while g:word(k, "me us please") or (g.t[k] and g.t[k].filler) do k = k + 1 end
+    return g.t[k] == nil or (g.t[k].kind == "punct" and g.t[k].text ~= ",")
+  end }
   rule { "route rte waypoints", "listrte", prev = { 4, "show list display what print see look where check" } }
   -- "show me the position and the route of OAW61", "what are the position and route of DLH44": the route said
   -- after another shown state ("position", "state", "data"), joined by "and", a verb of showing or asking
@@ -3150,9 +3217,16 @@ return function(intent, rule, words)
     local a, b = qs[1], qs[2]
     if not (a and b and a.b == p and b.b == a.e and a.number.typed and b.number.typed) then return false end
     local e = b.e
-    if qs[3] and qs[3].b == e and qs[3].kind == "alt" then e = qs[3].e end
+    -- (the level after a comma too, and the question said after it: "wind at 36.7 north 127.5 east, flight level
+    -- 310, how much?")
+    local l = e
+    while g.t[l] and g.t[l].text == "," do l = l + 1 end
+    if qs[3] and qs[3].b == l and qs[3].kind == "alt" then e = qs[3].e end
     for x = e, #g.t do
-      if g.t[x].kind ~= "punct" and not g.t[x].filler then return false end
+      if g.t[x].kind ~= "punct" and not g.t[x].filler
+          and not (g:word(x, "how much what is it now") and g.t[#g.t].text == "?") then
+        return false
+      end
     end
     return true
   end

@@ -18177,3 +18177,65 @@ do
     asked(ex("klm77 skip spy"), "SPY is not on KLM77's route")
   end
 end
+-- Cycle 59 (f189b): R189's questions, summaries and corrections in Korean order: a state word before "what"/"how
+-- much", "how fast going now", "which one is higher", "its route show me", the wind and a setting asked after their
+-- words; summary words closing the request ("two aircraft please", "both please", "all three please", "no change"
+-- for an aircraft); corrections within one aircraft ("not heading, I mean speed", a verb-final value said again, a
+-- heading taken back to keep the route, "it is 280 now? then 260"); and the hazards: a pair named, then one said
+-- again with "first", "go" or before a verb-final value; "how about speed 300?" showing the aircraft; "resolution
+-- vertical off" beside aircraft; a route's own waypoint added again
+do
+  local _, ex = scene({ "DEFWPT ALFA 22.4 114.6", "DEFWPT BRAVO 22.6 114.9",
+    "CRE CPA451 A333 22.3 114.2 090 FL310 290", "ADDWPT CPA451 ALFA",
+    "CRE EVA12 B77W 22.5 114.8 270 FL310 290" })
+  -- a pair named, one said again before its own instruction: that one's alone
+  check_eq(ex("CPA451 and EVA12, CPA451 first heading 180, then EVA12 speed 240"), "HDG CPA451 180 ; SPD EVA12 240")
+  check_eq(ex("CPA451 and EVA12, CPA451 first reduce speed 240, after that EVA12 turn left heading 180"),
+    "SPD CPA451 240 ; HDG EVA12 180 LEFT")
+  check_eq(ex("CPA451 and EVA12 converging, I think better EVA12 go FL330"), "ALT EVA12 FL330")
+  check_eq(ex("CPA451 and EVA12 same level, CPA451 FL370 climb please"), "ALT CPA451 FL370")
+  check_eq(ex("CPA451 and EVA12 FL330"), "ALT CPA451 FL330 ; ALT EVA12 FL330")
+  -- "how about" and a value suggests it; with no aircraft named it stays asked
+  check_eq(ex("CPA451, how about speed 300? increase please"), "SPD CPA451 300")
+  check_eq(ex("EVA12 how about heading 200? turn right please"), "HDG EVA12 200 RIGHT")
+  asked(ex("how about speed 300?"), "no aircraft named")
+  -- vertical resolutions switched beside aircraft named; "vertical resolution" as a reason is no setting
+  check_eq(ex("CPA451, conflict resolution vertical off"), "RMETHV OFF")
+  check_eq(ex("CPA451 climb FL330, vertical resolution"), "ALT CPA451 FL330")
+  -- the route's own waypoint said alone after "route" adds nothing (asked); another one is added
+  asked(ex("CPA451 route ALFA"), "ALFA is on its route already")
+  check_eq(ex("CPA451 route BRAVO"), "ADDWPT CPA451 BRAVO")
+  -- a heading taken back for the route
+  check_eq(ex("EVA12 turn left heading 200, ah no, keep route, LNAV on please"), "LNAV EVA12 ON")
+  check_eq(ex("EVA12 heading 200, sorry, LNAV on"), "LNAV EVA12 ON")
+  asked(ex("EVA12 climb FL330, ah no, keep route"), "no heading to take back")
+  asked(ex("EVA12 heading 200, no, LNAV off"), "LNAV off is no route kept")
+  -- state questions in Korean order
+  check_eq(ex("CPA451 now level is how much?"), "POS CPA451")
+  check_eq(ex("EVA12, speed what is now?"), "POS EVA12")
+  check_eq(ex("CPA451 heading, what?"), "POS CPA451")
+  check_eq(ex("EVA12 its altitude, how much now?"), "POS EVA12")
+  check_eq(ex("CPA451 how fast going now?"), "POS CPA451")
+  check_eq(ex("EVA12 speed 250, heading what?"), "SPD EVA12 250 ; POS EVA12")
+  asked(ex("CPA451 heading what should I give?"), "a heading to give, asked")
+  check_eq(ex("CPA451 and EVA12, which one is faster now?"), "POS CPA451 ; POS EVA12")
+  check_eq(ex("EVA12 where now, and speed?"), "POS EVA12")
+  check_eq(ex("CPA451 its route show me please"), "LISTRTE CPA451")
+  check_eq(ex("wind at 22.5 north 114.5 east, FL200, how much?"), "GETWIND 22.5 114.5 FL200")
+  check_eq(ex("vertical resolution factor, what value now?"), "RFACV")
+  -- summary words closing the request, checked against what was read
+  check_eq(ex("CPA451 heading 090, EVA12 heading 270, two aircraft please"), "HDG CPA451 90 ; HDG EVA12 270")
+  check_eq(ex("EVA12 speed 250 and FL300 descend, both please"), "SPD EVA12 250 ; ALT EVA12 FL300")
+  check_eq(ex("CPA451 heading 100, speed 240, FL290, all three please"),
+    "HDG CPA451 100 ; SPD CPA451 240 ; ALT CPA451 FL290")
+  asked(ex("CPA451 heading 090, EVA12 heading 270, three aircraft please"), "two aircraft instructed, three said")
+  asked(ex("CPA451 heading 090 and speed 250, two aircraft please"), "one aircraft instructed, two said")
+  check_eq(ex("CPA451 climb FL330, EVA12 no change"), "ALT CPA451 FL330")
+  -- corrections within one aircraft
+  check_eq(ex("EVA12 heading 200, ah, not heading, I mean speed 200"), "SPD EVA12 200")
+  check_eq(ex("CPA451 descend FL290, sorry not level, I mean heading 290"), "HDG CPA451 290")
+  check_eq(ex("EVA12 speed 250 reduce, ah no, 240 please"), "SPD EVA12 240")
+  check_eq(ex("CPA451 FL290 descend, ah no, FL280 please"), "ALT CPA451 FL280")
+  asked(ex("EVA12 speed 250 reduce, ah no, heading 240"), "another kind: instead or as well")
+  check_eq(ex("CPA451 speed, ah, it is 290 now? then 270 make"), "SPD CPA451 270")
+end
