@@ -1312,7 +1312,27 @@ function G.listener_address_dropped(text)
       or lower:find("hey", 1, true) or lower:find("hello", 1, true)) then
     return text
   end
+  -- ("Excuse me dear system, ...", "Please, dear system, ...": a courtesy of lexicon.listener_address.led before
+  -- the term of address stays, the term goes)
+  local lead = ""
+  for _, l in ipairs(lexicon.listener_address.led) do
+    local n = #l
+    if text:sub(1, n):lower() == l and text:sub(n + 1, n + 1):match("[%s,]") then
+      local after_lead = text:sub(n + 1):gsub("^[%s,]+", "")
+      local a1, b1 = after_lead:match("^(%a+)%s+(%a+)%s*[,:;!%-]?%s+%S")
+      local one1 = after_lead:match("^(%a+)%s*[,:;!%-]?%s+%S")
+      if (a1 and G.listener_term(a1, b1)) or (one1 and G.listener_term(one1)) then
+        lead, text = text:sub(1, n) .. ", ", after_lead
+      end
+      break
+    end
+  end
   local a, b, rest = text:match("^%s*(%a+)%s+(%a+)%s*[,:;!%-]?%s+(%S.*)$")
+  if lead ~= "" then
+    local dropped = G.listener_address_dropped(text)
+    if dropped ~= text then return lead .. dropped end
+    return lead .. text
+  end
   if a and G.listener_term(a, b) then
     text = rest
   else
@@ -4333,6 +4353,10 @@ function G:condition()
         and not self:has_ref(i, q.b, "waypoint") then
       local nx = comma + 1
       while self.t[nx] and self.t[nx].filler and not self:word(nx, "and") do nx = nx + 1 end
+      -- ("..., and now climb to FL200": a word of lexicon.at_once_words in the clause after "and" runs it now)
+      local ce = nx + 1
+      while ce <= #self.t and self.t[ce].kind ~= "punct" and not self:word(ce, "and") do ce = ce + 1 end
+      if self:word(nx, "and") and self:word_in(nx + 1, ce, "@at_once_words") then return nil, 1 end
       if self:word(nx, "and @then_words") then
         self.ask = string.format("Should '%s' also wait for '%s', or run now?",
           (self:raw(nx, #self.t + 1):gsub(" ([,.;:])", "%1")), self:raw(i, q.e))

@@ -2450,6 +2450,14 @@ return function(intent, rule, words)
     return g.t[i].raw:lower():match("ed$") ~= nil and g:word(i - 1, "be been is are")
       and not g:has_ref(1, #g.t + 1, "aircraft")
   end }
+  -- "continue the simulation in fast time for 2 minutes", "continue it in fast-forward": the fast time is the way
+  -- it goes on, read by FF (which runs the clock for its duration), no OP of its own
+  rule { "continue", false, when = function(g, i)
+    local k = g:word(i + 1, "the") and i + 2 or i + 1
+    if g:word(k, "@sim it") then k = k + 1 end
+    return g:word(k, "in") and g:word(k + 1, "fast fast-time fast-forward")
+      and (g:word(k + 1, "fast-time fast-forward") or g:word(k + 2, "time forward"))
+  end }
   -- "continue from pause", "start again out of the pause": the run resumed from the pause
   rule { "run start continue resume go", "op", when = function(g, i)
     local k = g:word(i + 1, "again") and i + 2 or i + 1
