@@ -1157,6 +1157,9 @@ return {
                       -- said after a marker, before the value said in place of the one taken back ("I am sorry,
                       -- it is 260"): part of the correction's run
                       restated = { "it is", "it's", "it should be" },
+                      -- modals said after the addressee restated in a correction ("sorry, Turkish 876 should climb
+                      -- to FL320": G.restated_addressee)
+                      restated_modals = { "should", "must", "shall", "will", "has to", "needs to", "is to" },
                       formal_apology = { "i beg your pardon", "beg your pardon", "pardon me", "forgive me",
                                          "excuse me", "my apologies", "oops", "ops", "opps", "oups", "whoops",
                                          "woops", "oopsie", "whoopsie",

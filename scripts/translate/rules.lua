@@ -1684,7 +1684,8 @@ return function(intent, rule, words)
   end }
   -- "put the Swiss directly over LAPAT", "move it directly above BIG": "directly" before the place a move sets the
   -- aircraft over is the move's manner, no direct-to
-  rule { "directly", false, next = "over above", prev = { 4, "move put place reposition teleport" } }
+  -- ("please put the Qatari 491 directly at 26.0 north 53.0 east": "at" or "on" the place too)
+  rule { "directly", false, next = "over above at on", prev = { 4, "move put place reposition teleport" } }
   rule { "direct directly dct dtc drct dir proceed direct-to", "direct" }  -- ("dtc": dct's letters swapped)
   rule { "straight", "direct", next = "to" }  -- "send IBE3141 straight to MITUM"
   -- "KAL123 to ENKAS go straight": the adverb closing the clause after "go", the place said after "to"
