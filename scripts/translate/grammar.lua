@@ -889,8 +889,60 @@ function G.valued_words_before(toks, k)
   end
   return false
 end
+-- "Turkish 876, descend FL240, sorry, Turkish 876 should climb to FL320", "Aseman 6542 climb FL150, sorry, the
+-- Aseman should descend to 11000 feet, not climb": the request's addressee (a word and a number, or a word with
+-- digits, opening it) said again straight after "sorry" or "correction" (formal apologies and admitted slips read
+-- as "sorry" before), as said or as "the" and its first word, then a modal of lexicon.self_correction.restated_modals
+-- or not, is dropped: the instruction after it corrects the one before. A ", not climb" (or descend) closing a
+-- request whose "sorry" is followed by the other verb names the instruction taken back, and is dropped too.
+G.restated_not_addressee = set_of({ "please", "kindly", "climb", "descend", "turn", "speed", "heading", "reduce",
+  "increase", "maintain", "fly", "set", "the", "and", "to", "flight", "level", "fl", "at", "by", "of", "for", "with" })
+function G.restated_addressee(text)
+  local lower = text:lower()
+  if not (lower:find("sorry", 1, true) or lower:find("correction", 1, true)) then return text end
+  local a = lower:match("^%s*(%a[%a ]-%s%d+%w*)") or lower:match("^%s*(%a+%d+%w*)")
+  if a and #a > 30 then a = nil end
+  local airline = a and a:match("^(%a[%a ]-)%s*%d")
+  -- (no words of an instruction: "please climb 5000, sorry, ..." opens with no addressee)
+  for w in (airline or ""):gmatch("%a+") do
+    if G.restated_not_addressee[w] then a = nil end
+  end
+  local forms = a and { a, "the " .. a, "the " .. airline, "the " .. a:match("^(%a+)") } or {}
+  for _, marker in ipairs({ "sorry", "correction" }) do
+    local from = 1
+    while true do
+      local _, me = lower:find(marker .. "[%s,]+", from)
+      if not me then break end
+      from = me + 1
+      for _, f in ipairs(forms) do
+        if lower:sub(me + 1, me + #f) == f and lower:sub(me + #f + 1, me + #f + 1):match("[%s,]") then
+          local e = me + #f + 1
+          local rest = lower:sub(e)
+          local sp = rest:match("^[%s,]+") or ""
+          local after = rest:sub(#sp + 1)
+          local modal = ""
+          for _, m in ipairs(lexicon.self_correction.restated_modals) do
+            if after:sub(1, #m + 1) == m .. " " then modal = m .. " " break end
+          end
+          -- (a letter word next, no number: "the KLM 45" names another aircraft)
+          if after:sub(#modal + 1):match("^%a") then
+            local cut = e + #sp + #modal
+            text = text:sub(1, me) .. text:sub(cut)
+            lower = text:lower()
+            break
+          end
+        end
+      end
+    end
+  end
+  for _, pair in ipairs({ { "climb", "descend" }, { "descend", "climb" } }) do
+    local b = lower:find("[%s,]+not%s+" .. pair[1] .. "%a*[%.!]?%s*$")
+    if b and lower:find("sorry[%s,]+" .. pair[2]) then text = text:sub(1, b - 1) .. "." end
+  end
+  return text
+end
 local function self_corrections(text)
-  text = G.meant_after_hesitation(hesitated_sides(G.formal_apologies(G.admitted_slips(text))))
+  text = G.restated_addressee(G.meant_after_hesitation(hesitated_sides(G.formal_apologies(G.admitted_slips(text)))))
   if not holds_word(text:lower(), SC_MARKER_PATTERNS) and not holds_word(text:lower(), G.hesitation_patterns) then
     return text
   end
@@ -1312,7 +1364,27 @@ function G.listener_address_dropped(text)
       or lower:find("hey", 1, true) or lower:find("hello", 1, true)) then
     return text
   end
+  -- ("Excuse me dear system, ...", "Please, dear system, ...": a courtesy of lexicon.listener_address.led before
+  -- the term of address stays, the term goes)
+  local lead = ""
+  for _, l in ipairs(lexicon.listener_address.led) do
+    local n = #l
+    if text:sub(1, n):lower() == l and text:sub(n + 1, n + 1):match("[%s,]") then
+      local after_lead = text:sub(n + 1):gsub("^[%s,]+", "")
+      local a1, b1 = after_lead:match("^(%a+)%s+(%a+)%s*[,:;!%-]?%s+%S")
+      local one1 = after_lead:match("^(%a+)%s*[,:;!%-]?%s+%S")
+      if (a1 and G.listener_term(a1, b1)) or (one1 and G.listener_term(one1)) then
+        lead, text = text:sub(1, n) .. ", ", after_lead
+      end
+      break
+    end
+  end
   local a, b, rest = text:match("^%s*(%a+)%s+(%a+)%s*[,:;!%-]?%s+(%S.*)$")
+  if lead ~= "" then
+    local dropped = G.listener_address_dropped(text)
+    if dropped ~= text then return lead .. dropped end
+    return lead .. text
+  end
   if a and G.listener_term(a, b) then
     text = rest
   else
@@ -4538,6 +4610,21 @@ function G:condition()
         and not self:has_ref(i, q.b, "waypoint") then
       local nx = comma + 1
       while self.t[nx] and self.t[nx].filler and not self:word(nx, "and") do nx = nx + 1 end
+      -- ("..., and now climb to FL200": a word of lexicon.at_once_words in the clause after "and" runs it now)
+      local ce = nx + 1
+      while ce <= #self.t and self.t[ce].kind ~= "punct" and not self:word(ce, "and") do ce = ce + 1 end
+      if self:word(nx, "and") and self:word_in(nx + 1, ce, "@at_once_words") then return nil, 1 end
+      -- ("KAC541, after reaching FL230 turn right heading 030, and of course climb it to FL250", KAC541 level at
+      -- FL200: the level after "and" lies beyond the condition's from the level the aircraft flies, with no other
+      -- clearance, so the condition is met only by that climb or descent: it runs now)
+      -- ("and then climb ..." says an order: still asked)
+      local a = lead and lead.exists and q.kind == "alt" and self:word(nx, "and")
+        and not self:word_in(nx + 1, ce, "@then_words") and self:state(lead.name)
+      local q2 = a and a.alt_ft and self:quantities(nx + 1, ce)[1]
+      if q2 and q2.kind == "alt" and (not a.sel_alt_ft or math.abs(a.sel_alt_ft - a.alt_ft) <= 50) then
+        local level, to = self:cleared_level(q), self:cleared_level(q2)
+        if math.abs(level - a.alt_ft) > 50 and (level - a.alt_ft) * (to - level) > 0 then return nil, 1 end
+      end
       if self:word(nx, "and @then_words") then
         self.ask = string.format("Should '%s' also wait for '%s', or run now?",
           (self:raw(nx, #self.t + 1):gsub(" ([,.;:])", "%1")), self:raw(i, q.e))
@@ -7095,9 +7182,14 @@ function G:after_place_value(i)
   local c = i - 1
   local thn = self:word(c, "then")
   if thn then c = c - 1 end
-  if self:word(c, "and") then c = c - 1 end
+  local anded = self:word(c, "and")
+  if anded then c = c - 1 end
   if not (self.t[c] and self.t[c].text == ",") then
-    if not thn then return nil end
+    -- ("200 knots until MAH and after MAH 180 knots": "and" alone straight after the value's "until" the same place)
+    local u0 = anded and not thn and self:refs_in(math.max(1, c - 3), c + 1, "waypoint")
+    u0 = u0 and u0[#u0]
+    local same = u0 and u0.e == c + 1 and u0.name:upper() == r.name:upper() and self:word(u0.b - 1, "until till")
+    if not (thn or same) then return nil end
     c = c + 1
   end
   -- ("reduce 220 knots until TEXAS, after TEXAS 180 knots": the value kept until the same place, said before)

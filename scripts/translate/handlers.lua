@@ -565,6 +565,10 @@ function m:acids(s)
     self:explain(both, ae)
     if two == both then self:mark_used(two, two + 1) end  -- (the count is no value)
     ids = pair
+  elseif both < s.e and self:word(both - 1, "lnav vnav") and self:word(both - 2, "and")
+      and self:word(both - 3, "lnav vnav") then
+    -- ("KLM12, LNAV and VNAV both switch on": "both" the two modes just named, no aircraft)
+    self:explain(both, both + 1)
   elseif #ids == 0 and self:word_in(s.b, s.e, "both") then
     local named = {}
     for _, r in ipairs(self:refs_in(1, s.b, "aircraft")) do

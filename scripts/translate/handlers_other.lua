@@ -3748,6 +3748,15 @@ return function(H, f, compass)
 
   local function on_off(self, s)
     local on = self:on_off(s)
+    -- ("LNAV and VNAV off", "VNAV and LNAV both switch on": a switch said with none of its own before "and" and the
+    -- other switch takes the state said after that one, up to a mark, "and" or "then")
+    if on < 0 and s.trig and self:word(s.trig, "lnav vnav") and self:word(s.trig + 1, "and")
+        and self:word(s.trig + 2, "lnav vnav") then
+      local e = s.trig + 3
+      while e <= #self.t and self.t[e].kind ~= "punct" and not self:word(e, "and then") do e = e + 1 end
+      local said = self:on_off({ b = s.trig + 2, e = e, trig = s.trig + 2 })
+      if said >= 0 then on = said end
+    end
     if on < 0 then on = self.last_on or 1 end
     self.last_on = on
     return on == 1 and "ON" or "OFF"

@@ -285,7 +285,11 @@ return {
         "if it is possible", "if it's possible", "if it's no trouble", "if it is no trouble", "if that's no trouble",
         "if that is no trouble", "would it be too much trouble", "is it too much trouble", "if that's a thing",
         "if that is a thing", "thanks a million", "thanks a mil", "if that works", "if that works for you", "if it works", "if it works for you",
-        "of course", "after all", "i apologise", "i apologize", "my apologies", "as a separate thing", "block of trials",
+        "of course", "after all", "i apologise",
+        -- a formal speaker's leave asked of the listener (Persian "ba ejazeh", said in English: "With your
+        -- permission, Aseman 3858 turn left ...", "..., with your kind permission"): it asks for nothing
+        "with your permission", "with your kind permission", "with your good permission", "by your leave",
+        "if you permit", "if you permit me", "if you would permit me", "i apologize", "my apologies", "as a separate thing", "block of trials",
         "blocks of trials",
         -- a researcher's aside on their own frankness ("I'm honestly not sure", "Honestly, ...")
         "honestly",
@@ -1057,7 +1061,9 @@ return {
                                    hey = { "system", "simulator", "friend", "friends", "assistant", "machine" },
                                    hello = { "system", "simulator", "computer", "friend", "friends", "assistant" } },
                        -- Turkish "my teacher", the respectful address to anyone ("hocam", "hocacım")
-                       alone = { "hocam", "hocacim", "hocacigim" } },
+                       alone = { "hocam", "hocacim", "hocacigim" },
+                       -- a courtesy said before the term of address, lower case ("Excuse me dear system, ...")
+                       led = { "excuse me", "pardon me", "please", "with your permission" } },
   addressed_roles = { names = { "ai", "teammate", "assistant" }, greeted = { "squawk", "computer" },
                       greetings = { "ok", "okay", "hey", "hi", "right", "alright", "so" } },
   -- a speaker correcting the value just said ("270, no wait, 260", "180 ... actually make that 170",
@@ -1155,6 +1161,9 @@ return {
                       -- said after a marker, before the value said in place of the one taken back ("I am sorry,
                       -- it is 260"): part of the correction's run
                       restated = { "it is", "it's", "it should be" },
+                      -- modals said after the addressee restated in a correction ("sorry, Turkish 876 should climb
+                      -- to FL320": G.restated_addressee)
+                      restated_modals = { "should", "must", "shall", "will", "has to", "needs to", "is to" },
                       formal_apology = { "i beg your pardon", "beg your pardon", "pardon me", "forgive me",
                                          "excuse me", "my apologies", "oops", "ops", "opps", "oups", "whoops",
                                          "woops", "oopsie", "whoopsie",
@@ -2343,6 +2352,19 @@ return {
     -- ("then as soon as it is level turn right heading 060", "Mach .78 as soon as level": "once"; "as soon as
     -- possible" and "as soon as you can" stay the courtesy they are; "as soon as Swiss 200 is level", a name typed
     -- with its capital after it, is the condition on that aircraft, never a courtesy that drops its callsign)
+    -- ("Whenever the Qeshm Air 1224 passes RABAM, it should climb ...", "... whenever its speed became 190, descend":
+    -- a Persian speaker's "har vaght", the one-time condition "when" is; "whenever convenient" stays the courtesy)
+    { heard = { "whenever" }, means = "when",
+      before = { "#capital", "the", "it", "it's", "its", "he", "he's", "his", "she", "she's", "her", "they", "they're",
+                 "passing", "reaching", "level", "established", "past" } },
+    -- ("when it passed FL130 its speed should become 280", "after it passed flight level 150": the past a Persian
+    -- speaker gives the condition's verb, read as passing the level said after it)
+    -- ("it should go to heading 240": "go to" a heading, as a Persian speaker's "beravad" is said, is flying it)
+    { heard = { "go to heading", "go on heading", "goes to heading" }, means = "fly heading", before = { "#number" } },
+    { heard = { "it passed", "he passed", "she passed", "you passed" }, means = "passing",
+      between = { { "when", "whenever", "once", "after" }, { "#number", "fl", "flight", "level", "altitude" } } },
+    { heard = { "it reached", "he reached", "she reached", "you reached" }, means = "reaching",
+      between = { { "when", "whenever", "once", "after" }, { "#number", "fl", "flight", "level", "altitude" } } },
     { heard = { "as soon as" }, means = "once",
       before = { "#capital", "it", "it's", "he", "he's", "she", "she's", "they", "they're", "you're", "level", "lvl", "reaching",
                  "passing", "past", "established" } },

@@ -1792,7 +1792,8 @@ return function(intent, rule, words)
   end }
   -- "put the Swiss directly over LAPAT", "move it directly above BIG": "directly" before the place a move sets the
   -- aircraft over is the move's manner, no direct-to
-  rule { "directly", false, next = "over above", prev = { 4, "move put place reposition teleport" } }
+  -- ("please put the Qatari 491 directly at 26.0 north 53.0 east": "at" or "on" the place too)
+  rule { "directly", false, next = "over above at on", prev = { 4, "move put place reposition teleport" } }
   rule { "direct directly dct dtc drct dir proceed direct-to", "direct" }  -- ("dtc": dct's letters swapped)
   rule { "straight", "direct", next = "to" }  -- "send IBE3141 straight to MITUM"
   -- "KAL123 to ENKAS go straight": the adverb closing the clause after "go", the place said after "to"
@@ -2571,6 +2572,14 @@ return function(intent, rule, words)
   rule { "resume resumed restarted unpaused continued", "op", prev = { 6, "@sim" }, when = function(g, i)
     return g.t[i].raw:lower():match("ed$") ~= nil and g:word(i - 1, "be been is are")
       and not g:has_ref(1, #g.t + 1, "aircraft")
+  end }
+  -- "continue the simulation in fast time for 2 minutes", "continue it in fast-forward": the fast time is the way
+  -- it goes on, read by FF (which runs the clock for its duration), no OP of its own
+  rule { "continue", false, when = function(g, i)
+    local k = g:word(i + 1, "the") and i + 2 or i + 1
+    if g:word(k, "@sim it") then k = k + 1 end
+    return g:word(k, "in") and g:word(k + 1, "fast fast-time fast-forward")
+      and (g:word(k + 1, "fast-time fast-forward") or g:word(k + 2, "time forward"))
   end }
   -- "continue from pause", "start again out of the pause": the run resumed from the pause
   rule { "run start continue resume go", "op", when = function(g, i)

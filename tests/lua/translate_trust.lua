@@ -18239,3 +18239,61 @@ do
   asked(ex("EVA12 speed 250 reduce, ah no, heading 240"), "another kind: instead or as well")
   check_eq(ex("CPA451 speed, ah, it is 290 now? then 270 make"), "SPD CPA451 270")
 end
+-- Cycle 59 (f190): formal Persian-English courtesy and conditions: "with your permission", "Excuse me dear
+-- system, ...", "whenever" as the one-time "when", the condition's verb in the past ("whenever it passed FL180",
+-- "after it reached FL190"), "it should go to heading 100", "and now climb ..." after a condition (and a climb the
+-- condition's level needs), a correction restating the addressee ("sorry, Turkish 92 should climb ...", "the
+-- Mahan should descend ..., not climb"), "continue the simulation in fast time", "LNAV and VNAV both switch off",
+-- "put X directly at <position>", "260 knots until PARSI and after PARSI 230 knots"
+do
+  local _, ex = scene({ "DEFWPT PARSI 35.2 51.9", "DEFWPT NAMAK 35.4 52.0", "DEFWPT KAVIR 35.3 52.6", "CRE IRA611 A320 35.0 51.5 060 FL170 280", "ADDWPT IRA611 PARSI",
+    "ADDWPT IRA611 NAMAK", "CRE IRM233 A310 35.6 52.2 250 FL260 290", "ADDWPT IRM233 KAVIR",
+    "CRE THY92 A321 36.0 51.0 140 FL310 300", "CRE UAE44 B77W 34.8 52.5 300 FL350 290", "ADDWPT UAE44 KAVIR" })
+  -- the leave asked and the term of address after a courtesy ask for nothing
+  check_eq(ex("With your permission, Iran Air 611 please turn right heading 090."), "HDG IRA611 90 RIGHT")
+  check_eq(ex("Emirates 44, with your kind permission, descend to flight level 330."), "ALT UAE44 FL330")
+  check_eq(ex("Pardon me, dear simulator, what is Turkish 92 doing now?"), "POS THY92")
+  check_eq(ex("With your permission, please activate the conflict detection."), "ASAS ON")
+  check_eq(ex("Excuse me dear system, Mahan Air 233 should descend to flight level 220, no, sorry, I made a "
+    .. "mistake, flight level 240 is correct."), "ALT IRM233 FL240")
+  -- "whenever" opening a condition, and the condition's verb in the past; "whenever convenient" stays a courtesy
+  check_eq(ex("Whenever the Iran Air 611 passes PARSI, it should climb to flight level 210."),
+    "AT IRA611 PARSI DO ALT IRA611 FL210")
+  check_eq(ex("Emirates 44 please be so kind to descend to flight level 310 whenever it passes KAVIR."),
+    "AT UAE44 KAVIR DO ALT UAE44 FL310")
+  check_eq(ex("Iran Air 611 kindly climb to flight level 200, and whenever it passed flight level 180 its speed "
+    .. "should become 290 knots."), "ALT IRA611 FL200 ; ATALT IRA611 FL180 SPD IRA611 290")
+  check_eq(ex("Mahan Air 233 please reduce speed to 250 knots and whenever its speed became 250, descend to flight "
+    .. "level 200."), "SPD IRM233 250 ; ATSPD IRM233 250 ALT IRM233 FL200")
+  check_eq(ex("Emirates 44 descend to flight level 310 whenever convenient"), "ALT UAE44 FL310")
+  -- after a condition opening the request: "and now" runs now, so does a climb its level needs; "and then", or a
+  -- level short of the condition's, stays asked
+  check_eq(ex("Iran Air 611, please after it reached flight level 190 it should go to heading 100, and now climb to "
+    .. "flight level 210."), "ATALT IRA611 FL190 HDG IRA611 100 ; ALT IRA611 FL210")
+  check_eq(ex("Iran Air 611, after reaching flight level 190 turn left heading 030, and of course climb it to flight "
+    .. "level 210."), "ATALT IRA611 FL190 HDG IRA611 30 LEFT ; ALT IRA611 FL210")
+  asked(ex("Iran Air 611, after reaching flight level 190 turn left heading 030, and then climb to flight level 210."),
+    "'and then': the order said")
+  asked(ex("Iran Air 611, after reaching flight level 190 turn left heading 030, and climb to flight level 180."),
+    "FL180 is short of FL190")
+  -- the addressee said again after the apology: the correction stands; another aircraft stays another's
+  check_eq(ex("Turkish 92, descend to flight level 290, excuse me, I made a mistake, Turkish 92 should climb to "
+    .. "flight level 330."), "ALT THY92 FL330")
+  check_eq(ex("Mahan Air 233 please climb flight level 280, excuse me, the Mahan should descend to 24000 feet, not "
+    .. "climb."), "ALT IRM233 24000")
+  asked(ex("Iran Air 611 climb flight level 200, not climb."), "'not climb' with no correction")
+  -- simulation control: fast time as the way the run goes on is FF alone; "resume and fast forward" keeps its OP
+  check_eq(ex("Please continue the simulation in fast time for 3 minutes."), "FF 180")
+  check_eq(ex("resume and fast forward 3 minutes"), "OP ; FF 180")
+  -- two switches, one state said after both (a hazard: the first was switched on)
+  check_eq(ex("Emirates 44, please VNAV and LNAV both switch off."), "VNAV UAE44 OFF ; LNAV UAE44 OFF")
+  check_eq(ex("Iran Air 611, LNAV and VNAV off"), "LNAV IRA611 OFF ; VNAV IRA611 OFF")
+  check_eq(ex("Turkish 92, LNAV and VNAV both on"), "LNAV THY92 ON ; VNAV THY92 ON")
+  asked(ex("LNAV and VNAV both on"), "no aircraft")
+  -- "directly at" a position a move puts it at; a value from the place "until" kept
+  check_eq(ex("Dear system, please put the Turkish 92 directly at 36.5 north 51.5 east, flight level 290."),
+    "MOVE THY92 36.5 51.5 FL290")
+  check_eq(ex("Iran Air 611 speed 260 knots until PARSI and after PARSI 230 knots."),
+    "SPD IRA611 260 ; AT IRA611 PARSI DO SPD IRA611 230")
+  asked(ex("Iran Air 611 speed 260 knots until PARSI and after NAMAK 230 knots."), "another place")
+end
