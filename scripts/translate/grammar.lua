@@ -4808,6 +4808,23 @@ function G:off_route_question(id, wp)
     .. "now, or at a waypoint of the route? (ADDWPT %s %s adds it first.)", wp, id, id, wp)
 end
 
+-- "after passing CPA1 continue to EXIT1", CPA1 ending the route: a place off the route added and flown to once the
+-- route's last waypoint is passed ("AT id CPA1 DO ADDWPT id EXIT1 ; AT id CPA1 DO DIRECT id EXIT1") is that place
+-- added after it, "ADDWPT id EXIT1,,,CPA1", flown the same; self.out rewritten in place.
+function G:added_after_route_end()
+  for c = 1, #self.out - 1 do
+    local id, wp, x = self.out[c]:match("^AT (%S+) (%S+) DO ADDWPT %S+ ([%w_]+)$")
+    local route = id and (self:state(id) or {}).route or {}
+    if id and self.out[c] == string.format("AT %s %s DO ADDWPT %s %s", id, wp, id, x)
+        and self.out[c + 1] == string.format("AT %s %s DO DIRECT %s %s", id, wp, id, x)
+        and #route > 0 and route[#route]:upper() == wp:upper() then
+      self.out[c] = string.format("ADDWPT %s %s,,,%s", id, x, wp)
+      table.remove(self.out, c + 1)
+      return
+    end
+  end
+end
+
 -- The commands that wait for a condition before they run (BlueSky's conditional commands).
 local CONDITIONAL = { AT = true, ATALT = true, ATSPD = true, ATDIST = true, DELAY = true, SCHEDULE = true }
 
@@ -15423,6 +15440,7 @@ function M.translate(text, world)
   if g.ask then return { commands = {}, ask = g.ask, confirm = g.confirm, ignorable = g.ignorable, heard_sure = g.heard_sure } end
   if #g.out == 0 and note then return { commands = {}, note = note } end
   if #g.out == 0 then return { commands = {}, ask = UNDERSTOOD } end
+  g:added_after_route_end()
   -- a command said twice in one request ("send the KLM direct to SPY ... add SPY and then go direct to it")
   -- is one clearance; a clock's command (HOLD, OP, FF, DTMULT) said again after another clock command changed the
   -- run ("pause; ...; fast-forward 8 minutes; pause again") is a second one, in its order

@@ -2495,6 +2495,36 @@ return function(H, f, compass)
     for _, id in ipairs(ids) do self:direct_one(s, id) end
   end
 
+  -- The clause adding the place gone to (waypoint ref r, named wp) to the route, said after it: a comma or "and"
+  -- (with "then", "please", "also"), a verb of adding, then only "it", "this", "to", "in", "into", "on", "the",
+  -- "its", "his", "her", fillers and a route noun, ending the request (thanks aside): {b, e} (its tokens), or nil
+  function m:route_added_after(r, wp)
+    if not r or r.name:upper() ~= wp:upper() then return nil end
+    local k = r.e
+    while k <= #self.t and (self.t[k].filler or self:word(k, "and then please also") or self.t[k].kind == "punct") do
+      k = k + 1
+    end
+    local b = k
+    if not self:word(k, "add append insert put include") then return nil end
+    k = k + 1
+    local noun = false
+    while k <= #self.t and not noun do
+      if self:word(k, "@route_nouns") then
+        noun = true
+      elseif not (self.t[k].filler or self:word(k, "it this to in into on onto the its his her their")) then
+        return nil
+      end
+      k = k + 1
+    end
+    local e = k
+    while k <= #self.t and (self.t[k].filler or self:word(k, "please thank thanks you very much sir")
+        or self.t[k].kind == "punct") do
+      k = k + 1
+    end
+    if not noun or k <= #self.t then return nil end
+    return { b = b, e = e }
+  end
+
   -- The open airport aircraft state `a`'s route ends at (ICAO code), or nil
   local function route_airport(self, a)
     local last = a and a.route and a.route[#a.route]
@@ -2589,6 +2619,30 @@ return function(H, f, compass)
       if from and has[from.name:upper()] and not in_route then
         self:explain(at, at + 1)
         return self:emit("ADDWPT " .. a.id .. " " .. wp .. ",,," .. from.name)
+      end
+      -- "fly to KRT, add to the route", "go to KRT please, put in the route": the place gone to, with a clause
+      -- that adds it to the route (a verb of adding, then only "it"/"to"/"in"/"the"/... and a route noun, no
+      -- place of its own) after it, is added to the route, no direct-to: BlueSky flies a route's only waypoint
+      -- as it is added, and a route flown goes on as planned
+      local ad = self:word(s.trig, "go fly") and self:route_added_after(self:refs_in(s.trig, s.e, "waypoint")[1], wp)
+      if ad then
+        self:explain(ad.b, ad.e)
+        self.last_waypoint = wp:upper()  -- ("add it to the route": the add's "it", m:add_waypoint)
+        if not in_route then self:emit("ADDWPT " .. a.id .. " " .. wp) end
+        return
+      end
+      -- "go to CPA2 before CPA1": a place off the route gone to "before" a waypoint of the route (said straight
+      -- after it, ending the clause) is inserted before that waypoint (ADDWPT's beforewp), flown to in turn
+      local gone = self:word(s.trig, "go fly") and self:refs_in(s.trig, s.e, "waypoint")[1]
+      local nxt = gone and gone.name:upper() == wp:upper() and self:word(gone.e, "before")
+        and self:refs_in(gone.e + 1, gone.e + 2, "waypoint")[1]
+      local k = nxt and nxt.e or s.e
+      while k < s.e and (self.t[k].filler or self.t[k].kind == "punct" or self:word(k, "please thank thanks you")) do
+        k = k + 1
+      end
+      if nxt and not in_route and has[nxt.name:upper()] and k >= s.e then
+        self:explain(gone.e, nxt.e)
+        return self:emit("ADDWPT " .. a.id .. " " .. wp .. ",,,," .. nxt.name:upper())
       end
       if not in_route then self:emit("ADDWPT " .. a.id .. " " .. wp) end
     elseif (self.created or {})[id:upper()] and not (added and added:lower() == wp:lower()) then
@@ -2898,7 +2952,13 @@ return function(H, f, compass)
     local cmd = "ADDWPT " .. id .. " " .. where
     if alt then cmd = cmd .. " " .. alt end
     if spd then cmd = cmd .. (alt and " " or ",,") .. spd end  -- (an empty altitude keeps its place)
-    self:emit(cmd)
+    -- ("BKP705 go to CPA2 then EXIT1, add to route" with CPA2 ending its route: the first place of a list that
+    -- is already the route's last waypoint, with no value of its own, is where the list goes on from, not
+    -- added a second time)
+    local route = (self:state(id) or {}).route or {}
+    local again = named and not alt and not spd and #route > 0 and route[#route]:upper() == where:upper()
+      and #self:route_places(named.e, s.e) > 0
+    if again then self:explain(named.b, named.e) else self:emit(cmd) end
     if not named then return end
     -- "route EZY45 via TEST1 then NIK to EHAM": the next places of the route in
     -- order; the last one after "to", when an airport (four letters), is the destination

@@ -675,6 +675,21 @@ return function(H, f, wrap, compass)
         or self:change_of_corrected(q, s)) then
       return self:need(string.format("Should %s %s to %s ft or by %s ft?", ids[1], verb, f.int(ft), f.int(ft)))
     end
+    -- "go down 5000 feet" from 8000 ft: the adverb says a step, but below FL120 (the terminal area) a change of
+    -- 4000 ft or more is the altitude cleared (as "descend 5000 feet" there is): to 5000 ft or by 5000 ft is
+    -- asked when both are flyable and differ. Higher up, or a smaller amount, "down 2000 feet" stays the step;
+    -- "by", "another", "from where it is" and "1000 feet lower" are steps everywhere.
+    if relative and now and dir ~= 0 and not q.by and ft >= 4000 and (now.alt_ft or 0) < 12000
+        and self:word(q.b - 1, "up down drop") and not taken_back
+        and not self:word_in(s.trig, s.e, "@relative") and not (from_here < s.e and self:word(from_here + 1, "where")) then
+      local cur = now.alt_ft or 0
+      local by_target = cur + (dir < 0 and -ft or ft)
+      local to_fits = (dir < 0 and ft < cur - 50) or (dir > 0 and ft > cur + 50)
+      if to_fits and by_target >= 0 and by_target <= 60000 and math.abs(by_target - ft) > 50 then
+        return self:need(string.format("%s is at %s ft: %s to %s ft, or by %s ft to %s ft?", ids[1], f.int(cur), verb,
+          f.int(ft), f.int(ft), f.int(by_target)))
+      end
+    end
     -- (a value said after a correction replaces a level said before it: "climb 9000... correction, 5000"
     -- is a level, never a step)
     -- ("climb 3000" below the aircraft, no "by" said: a climb to a level below it, or a climb by that much?

@@ -1795,6 +1795,23 @@ return function(intent, rule, words)
   -- ("please put the Qatari 491 directly at 26.0 north 53.0 east": "at" or "on" the place too)
   rule { "directly", false, next = "over above at on", prev = { 4, "move put place reposition teleport" } }
   rule { "direct directly dct dtc drct dir proceed direct-to", "direct" }  -- ("dtc": dct's letters swapped)
+  -- "after CPA1 continue to EXIT1", "after passing SYZ it should continue to ISN": "continue to" a place, with
+  -- "after" a place said before it in the request, is the way on from that place (m:direct_one adds it after it)
+  rule { "continue continues", "direct", next = "to", when = function(g, i)
+    local at = g:find_word(1, i, "after")
+    if at >= i then return false end
+    local k = g:word(at + 1, "pass passing passed") and at + 2 or at + 1
+    local r = g:refs_in(k, k + 1, "waypoint")[1]
+    if not (r and r.b == k and g:has_ref(i + 2, i + 3, "waypoint")) then return false end
+    -- (only a subject, a modal or "please" between the place and the verb: "after NIK add ANDIK, then continue
+    -- to EKROS" is the added place's way on, read by the add)
+    for x = r.e, i - 1 do
+      if not (g.t[x].filler or g.t[x].kind == "punct" or g:word(x, "please it he she they should must will can")) then
+        return false
+      end
+    end
+    return true
+  end }
   rule { "straight", "direct", next = "to" }  -- "send IBE3141 straight to MITUM"
   -- "KAL123 to ENKAS go straight": the adverb closing the clause after "go", the place said after "to"
   rule { "straight", "direct", prev = { 1, "go" }, when = function(g, i)

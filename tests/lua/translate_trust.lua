@@ -18297,3 +18297,43 @@ do
     "SPD IRA611 260 ; AT IRA611 PARSI DO SPD IRA611 230")
   asked(ex("Iran Air 611 speed 260 knots until PARSI and after NAMAK 230 knots."), "another place")
 end
+
+-- Cycle 59 (frte): route wording and "down N feet" in the terminal area
+do
+  local _, ex = scene({ "DEFWPT GATE1 40.0 10.0", "DEFWPT GATE2 40.3 10.5", "DEFWPT OUT9 40.1 11.2",
+    "CRE SWR40 A320 39.8 9.2 090 FL310 280", "ADDWPT SWR40 GATE1",
+    "CRE AZA77 A321 40.6 9.8 180 FL290 280",
+    "CRE EZY31 A320 40.5 10.1 150 FL300 270", "ADDWPT EZY31 GATE2",
+    "CRE TAP5 A320 40.2 9.9 120 8000 220", "CRE IBE6 A320 40.4 9.6 100 9000 230",
+    "CRE DLH8 A320 40.9 9.1 090 FL160 260", "CRE AFR2 A320 40.3 9.3 090 3000 200" })
+  -- a place gone to, with a clause adding it to the route after it: added, no direct-to
+  check_eq(ex("AZA77 fly to GATE2, add it to the route"), "ADDWPT AZA77 GATE2")
+  check_eq(ex("Alitalia 77 please go to OUT9, put in the route, thanks"), "ADDWPT AZA77 OUT9")
+  check_eq(ex("SWR40 go to GATE2 and add to its route please"), "ADDWPT SWR40 GATE2")
+  check_eq(ex("AZA77 fly to GATE2"), "ADDWPT AZA77 GATE2 ; DIRECT AZA77 GATE2")
+  check_eq(ex("AZA77 direct GATE2, add to the route"), "ADDWPT AZA77 GATE2 ; DIRECT AZA77 GATE2")
+  -- a list whose first place already ends the route: the rest added, that one not again
+  check_eq(ex("EZY31 go to GATE2 then OUT9, add to route"), "ADDWPT EZY31 OUT9")
+  check_eq(ex("easy 31 fly to GATE2 and then OUT9 please"), "ADDWPT EZY31 OUT9")
+  check_eq(ex("SWR40 go to GATE2 then OUT9"), "ADDWPT SWR40 GATE2 ; ADDWPT SWR40 OUT9")
+  -- "before" a waypoint of the route: inserted before it; one off the route is asked
+  check_eq(ex("SWR40 please go to GATE2 before GATE1"), "ADDWPT SWR40 GATE2,,,,GATE1")
+  check_eq(ex("Swiss 40 fly to OUT9 before GATE1, thank you"), "ADDWPT SWR40 OUT9,,,,GATE1")
+  asked(ex("SWR40 go to GATE2 before OUT9"), "OUT9 is not on the route")
+  -- "after X continue to Y": the way on from X
+  check_eq(ex("SWR40 after GATE1 continue to OUT9"), "ADDWPT SWR40 OUT9,,,GATE1")
+  check_eq(ex("Swiss 40, after passing GATE1, please continue to OUT9"), "ADDWPT SWR40 OUT9,,,GATE1")
+  check_eq(ex("SWR40 after GATE1 it should continue to GATE2"), "ADDWPT SWR40 GATE2,,,GATE1")
+  check_eq(ex("easy 31, after passing GATE2, go to OUT9"), "ADDWPT EZY31 OUT9,,,GATE2")
+  -- "go down N feet" below FL120 by 4000 ft or more: to or by, asked; otherwise the step
+  asked(ex("TAP5 please go down 5000 feet"), "to 5000 or by 5000 from 8000")
+  asked(ex("Iberia 6, bring it down 5000 ft"), "to 5000 or by 5000 from 9000")
+  check_eq(ex("IBE6 go down 4500 feet"), "ALT IBE6 4500")
+  asked(ex("AFR2 go up 5000 feet"), "to 5000 or by 5000 from 3000")
+  check_eq(ex("IBE6 go down 2000 feet"), "ALT IBE6 7000")
+  check_eq(ex("DLH8 go down 5000 feet"), "ALT DLH8 11000")
+  check_eq(ex("TAP5 go down 5000 feet from where it is"), "ALT TAP5 3000")
+  check_eq(ex("TAP5 go down 4000 feet"), "ALT TAP5 4000")
+  check_eq(ex("TAP5 descend by 5000 feet"), "ALT TAP5 3000")
+  check_eq(ex("TAP5 go down to 5000 feet"), "ALT TAP5 5000")
+end
