@@ -10118,6 +10118,39 @@ function G.restated_after_marker(self, i)
   while self.t[e] and not (self.t[e].kind == "punct" and self.t[e].text ~= ",") do e = e + 1 end
   return not (self.t[e] and self.t[e].text == "?")
 end
+-- "VJC162 already reach FL180 or not yet?", "Singapore 172 already pass LATHA or not yet sir?", "HVN213 is LNAV on or
+-- not?": Vietnamese and Thai English asks about an aircraft's state with the statement's word order and "or not" (or
+-- "or not yet") closing it. One aircraft that exists opens the request (fillers before it), then "already", "still"
+-- or a copula ("is", "are"), at most six words with no mark between them, "or not" and "yet" or not, then only
+-- courtesy ("sir", "krub") to a "?" or the end: the whole request asks its state, shown by POS (true, self.out set);
+-- anything else said with it is no such question (false).
+G.not_yet_openers = { already = true, still = true, is = true, are = true, ["'s"] = true }
+function G:not_yet_question()
+  if not self:said("not") then return false end
+  local e = #self.t
+  if self.t[e] and self.t[e].kind == "punct" then
+    if self.t[e].text ~= "?" then return false end
+    e = e - 1
+  end
+  while e > 0 and (self.t[e].filler or self:word(e, "sir madam krub krab khrab khrap ka kha please")) do e = e - 1 end
+  if self:word(e, "yet") then e = e - 1 end
+  if not (self:word(e, "not") and self:word(e - 1, "or")) then return false end
+  local b = self:skip_fillers(1)
+  local r = self:refs_in(b, b + 1, "aircraft")[1]
+  if not (r and r.b == b and r.exists) then return false end
+  local k = self:skip_fillers(r.e)
+  if not G.not_yet_openers[self.words[k] or ""] then return false end
+  if e - 1 - (k + 1) > 6 or e - 1 <= k + 1 then return false end
+  for x = k + 1, e - 2 do
+    if self.t[x].kind == "punct" or #self:refs_in(x, x + 1, "aircraft") > 0 and self:refs_in(x, x + 1, "aircraft")[1].b == x then
+      return false
+    end
+  end
+  self.out = { "POS " .. r.name:upper() }
+  for x = 1, #self.t do self.noted[x] = true end
+  for _, q in ipairs(self:quantities(1, #self.t + 1)) do self:take(q) end
+  return true
+end
 function G:state_question()
   -- (a question opens with a word of lexicon.state_question: none said, none asked)
   if not (self:said(G.question_opens) or self:said(G.question_with_is)) then return end
@@ -15218,6 +15251,7 @@ function M.translate(text, world)
         .. "you mean?", g:raw(q.b, q.e + 1), q.kind == "lat" and "latitude" or "longitude", t.raw) }
     end
   end
+  if g:not_yet_question() then return { commands = g.out } end
   g:route_remarks()
   g:state_remarks()
   g:break_remarks()
