@@ -10161,14 +10161,16 @@ function G.condition_then(text)
   return done()
 end
 -- True when the tokens from k to the end are thanks and courtesy only ("thank you", "thank you very much sir",
--- "thanks krub"), marks and fillers between, and at least one word.
-G.thanks_words = { thank = true, thanks = true, you = true, very = true, much = true, sir = true, madam = true,
-  krub = true, krab = true, khrab = true, khrap = true, ka = true, kha = true, so = true, lot = true, a = true }
+-- "thanks krub", "sir"), marks and fillers between, at least one word that thanks or addresses.
+-- (G.thanks_words[w]: true for a word that thanks or addresses, "between" for one said only with them)
+G.thanks_words = { thank = true, thanks = true, you = "between", very = "between", much = "between", sir = true,
+  madam = true, krub = true, krab = true, khrab = true, khrap = true, ka = true, kha = true, so = "between",
+  lot = "between", a = "between" }
 function G.thanks_to_end(self, k)
   local thanked = false
   for x = k, #self.t do
     local t = self.t[x]
-    if t.kind == "word" and (self.words[x] == "thank" or self.words[x] == "thanks") then thanked = true end
+    if t.kind == "word" and G.thanks_words[self.words[x] or ""] == true then thanked = true end
     if not (t.kind == "punct" or t.filler or (t.kind == "word" and G.thanks_words[self.words[x] or ""])) then
       return false
     end
@@ -11571,6 +11573,8 @@ function G:said_last(i, near, own_clause)
     thanks = thanks + 1
   end
   if r and thanks > k and thanks > #self.t then return true end
+  -- (and after a distance: "until 5 mile final, thank you")
+  if not r and self.t[k] and G.thanks_to_end(self, k) then return true end
   local stop = k
   while self.t[k] and self.t[k].kind == "punct" and self.t[k].text ~= "," do k = k + 1 end
   -- (a sentence after it set aside as a remark, G:in_reason: "until 4 miles on final? I understand that's what

@@ -931,7 +931,8 @@ return {
   -- co-altitude at 350", "the Transavia keeps FL170", "the Transavia's there", "KLM12 currently at FL350" (no
   -- copula); unless one of `described_not`
   -- follows ("X is cleared FL200", "X is to climb", "X is required to cross CNR at FL120")
-  described = { "is", "are", "keeps", "stays", "remains", "sits", "currently" },
+  -- ("Cathay 743 already at FL360 now, please ...": Vietnamese and Thai English's "already" for the copula)
+  described = { "is", "are", "keeps", "stays", "remains", "sits", "currently", "already" },
   described_not = { "cleared", "to", "instructed", "told", "requested", "asked", "now", "going", "gonna", "climbing",
                     "descending", "turning", "both", "also", "required", "obliged" },
   -- an aircraft named as the object of one of these is described too, its clause to the next punctuation: "climb
