@@ -2103,7 +2103,7 @@ local function written_forms(text, world)
   -- "47,5 north", "8,5 degrees east", "factor to 1,1": a decimal comma (G.decimal_comma) is the point
   where("%d,%d", "()(%d+),(%d+)()", function(b, whole, part, e) return G.decimal_comma(text, b, whole, part, e) end)
   text = typed_abbreviations(lone_multipliers(tokens.numerals_apart(G.cut_off_restarts(text), DIGIT_WORDS), world))
-  text = hyphened_types(spelled(G.spelled_letter_a(heard_forms(negated_values(G.readback_reported(readback_heard(self_corrections(G.said_but(G.cancel_corrections(unlabelled(foreign_digits(G.said_whole(G.denied_word(G.dutch_chat(text)))))))))))))))
+  text = hyphened_types(spelled(G.spelled_letter_a(heard_forms(negated_values(G.readback_reported(readback_heard(self_corrections(G.said_but(G.cancel_corrections(unlabelled(foreign_digits(G.said_whole(G.denied_word(G.dutch_chat(G.condition_then(text))))))))))))))))
   low = text:lower()
   -- a position typed as whole degrees after the hemisphere, then minutes ("N55 50.0 W003 20.0", "S33 57
   -- E151 10"): decimal degrees before their hemisphere ("55.833333 N 3.333333 W"); minutes of 60 or more
@@ -4595,6 +4595,8 @@ function G:condition()
   if not (self:condition_word(i) or at_speed) then return nil, 1 end
   local comma = i + 1
   while comma <= #self.t and not (self.t[comma].kind == "punct" and self.t[comma].text == ",") do comma = comma + 1 end
+  -- ("HVN611 when pass BOKAK descend to FL240, thank you": a comma with only thanks after it ends no condition)
+  if comma <= #self.t and G.thanks_to_end(self, comma + 1) then comma = #self.t + 1 end
   local rest = comma + 1
   -- (a speed after "at" ends the condition at its value, a comma after it or not)
   if at_speed then
@@ -10135,6 +10137,90 @@ function G.restated_after_marker(self, i)
   while self.t[e] and not (self.t[e].kind == "punct" and self.t[e].text ~= ",") do e = e + 1 end
   return not (self.t[e] and self.t[e].text == "?")
 end
+-- "VJC162 already reach FL180 or not yet?", "Singapore 172 already pass LATHA or not yet sir?", "HVN213 is LNAV on or
+-- not?": Vietnamese and Thai English asks about an aircraft's state with the statement's word order and "or not" (or
+-- "or not yet") closing it. One aircraft that exists opens the request (fillers before it), then "already", "still"
+-- or a copula ("is", "are"), at most six words with no mark between them, "or not" and "yet" or not, then only
+-- courtesy ("sir", "krub") to a "?" or the end: the whole request asks its state, shown by POS (true, self.out set);
+-- anything else said with it is no such question (false).
+-- Vietnamese and Thai English joins a condition to the instruction that waits for it with "then" ("after reach then
+-- speed 300", "after speed reach 260 then descend FL200", "when pass BOKAK then descend"): a condition word ("after",
+-- "when", "once") opening a clause, then one to five words with no mark that hold a verb of reaching or passing, then
+-- "then": the "then" is the comma that ends the condition ("after reach, speed 300"). A bare "reach" there after
+-- "speed", "level", "it" or straight after the condition word is "reaches" / "reaching" (never the callsign Reach:
+-- "after speed reach 260" names no aircraft RCH260).
+G.condition_then_verbs = { reach = true, reaches = true, reached = true, reaching = true, pass = true, passes = true,
+  passed = true, passing = true, cross = true, crossed = true, crossing = true }
+function G.condition_then(text)
+  local lower = text:lower()
+  if not lower:find("then", 1, true) then return text end
+  if not (lower:find("after", 1, true) or lower:find("when", 1, true) or lower:find("once", 1, true)) then return text end
+  local toks = bare_words(text)
+  local put, done = tokens.splicer(text)
+  for k, t in ipairs(toks) do
+    if (t.bare == "after" or t.bare == "when" or t.bare == "once") and not t.raw:match("%p$")
+        and (k == 1 or toks[k - 1].raw:match("[,;.!]$")) then
+      local j, verb = k + 1, nil
+      while toks[j] and j <= k + 6 and toks[j].bare ~= "then" and not toks[j].raw:match("%p$") do
+        if G.condition_then_verbs[toks[j].bare] then verb = verb or j end
+        j = j + 1
+      end
+      if verb and toks[j] and toks[j].bare == "then" and j > k + 1 and toks[j + 1] then
+        local v = toks[verb]
+        if v.bare == "reach" and (verb == k + 1 or toks[verb - 1].bare == "speed" or toks[verb - 1].bare == "level"
+            or toks[verb - 1].bare == "it") then
+          put(v.at, verb == k + 1 and "reaching" or "reaches", v.e)
+        end
+        put(toks[j - 1].e, ",", toks[j].e)
+      end
+    end
+  end
+  return done()
+end
+-- True when the tokens from k to the end are thanks and courtesy only ("thank you", "thank you very much sir",
+-- "thanks krub", "sir"), marks and fillers between, at least one word that thanks or addresses.
+-- (G.thanks_words[w]: true for a word that thanks or addresses, "between" for one said only with them)
+G.thanks_words = { thank = true, thanks = true, you = "between", very = "between", much = "between", sir = true,
+  madam = true, krub = true, krab = true, khrab = true, khrap = true, ka = true, kha = true, so = "between",
+  lot = "between", a = "between" }
+function G.thanks_to_end(self, k)
+  local thanked = false
+  for x = k, #self.t do
+    local t = self.t[x]
+    if t.kind == "word" and G.thanks_words[self.words[x] or ""] == true then thanked = true end
+    if not (t.kind == "punct" or t.filler or (t.kind == "word" and G.thanks_words[self.words[x] or ""])) then
+      return false
+    end
+  end
+  return thanked
+end
+G.not_yet_openers = { already = true, still = true, is = true, are = true, ["'s"] = true }
+function G:not_yet_question()
+  if not self:said("not") then return false end
+  local e = #self.t
+  if self.t[e] and self.t[e].kind == "punct" then
+    if self.t[e].text ~= "?" then return false end
+    e = e - 1
+  end
+  while e > 0 and (self.t[e].filler or self:word(e, "sir madam krub krab khrab khrap ka kha please")) do e = e - 1 end
+  if self:word(e, "yet") then e = e - 1 end
+  if not (self:word(e, "not") and self:word(e - 1, "or")) then return false end
+  local b = self:skip_fillers(1)
+  local r = self:refs_in(b, b + 1, "aircraft")[1]
+  if not (r and r.b == b and r.exists) then return false end
+  local k = self:skip_fillers(r.e)
+  if not G.not_yet_openers[self.words[k] or ""] then return false end
+  if e - 1 - (k + 1) > 6 or e - 1 <= k + 1 then return false end
+  for x = k + 1, e - 2 do
+    if self.t[x].kind == "punct" or #self:refs_in(x, x + 1, "aircraft") > 0 and self:refs_in(x, x + 1, "aircraft")[1].b == x then
+      return false
+    end
+  end
+  self.out = { "POS " .. r.name:upper() }
+  for x = 1, #self.t do self.noted[x] = true end
+  for _, q in ipairs(self:quantities(1, #self.t + 1)) do self:take(q) end
+  return true
+end
 function G:state_question()
   -- (a question opens with a word of lexicon.state_question: none said, none asked)
   if not (self:said(G.question_opens) or self:said(G.question_with_is)) then return end
@@ -11504,6 +11590,8 @@ function G:said_last(i, near, own_clause)
     thanks = thanks + 1
   end
   if r and thanks > k and thanks > #self.t then return true end
+  -- (and after a distance: "until 5 mile final, thank you")
+  if not r and self.t[k] and G.thanks_to_end(self, k) then return true end
   local stop = k
   while self.t[k] and self.t[k].kind == "punct" and self.t[k].text ~= "," do k = k + 1 end
   -- (a sentence after it set aside as a remark, G:in_reason: "until 4 miles on final? I understand that's what
@@ -15235,6 +15323,7 @@ function M.translate(text, world)
         .. "you mean?", g:raw(q.b, q.e + 1), q.kind == "lat" and "latitude" or "longitude", t.raw) }
     end
   end
+  if g:not_yet_question() then return { commands = g.out } end
   g:route_remarks()
   g:state_remarks()
   g:break_remarks()

@@ -244,6 +244,8 @@ return {
         "nihao", "zaijian",
         -- Thai, Malay, Indonesian and Filipino, romanised ("sawasdee khrap", "terima kasih", "salamat")
         "sawasdee", "sawatdee", "sawadee", "khrap", "krap", "khob", "khun", "terima", "kasih", "selamat", "pagi",
+        -- (the Thai speaker's polite particle closing a sentence: "krab" said by a man, "ka" or "kha" by a woman)
+        "krab", "khrab", "ka", "kha",
         "salamat", "maraming",
         -- the languages of Africa, romanised: Swahili ("asante sana", "sawa", "pole pole": slowly, easy),
         -- Amharic ("ishi": OK), Nigerian and Ghanaian Pidgin ("abeg": please, "oya": come on, "chale": mate),
@@ -314,6 +316,9 @@ return {
         -- (the same in Singapore and Malaysian English, "Batik 7151, one more time, descend FL110"; and the check a
         -- clearance closes with there, "..., reduce speed 230, confirm or not": read it back)
         "one more time", "confirm or not",
+        -- (and in Vietnamese and Thai English the polite question a request is put as, before or after it: "turn
+        -- left heading 180, can or not?", "can or not, Nok Air 116 speed 280?": do it)
+        "can or not", "can or cannot", "can or can not",
         -- a part of the airspace a study is run in, in two words ("the high altitude en route block", as "en-route")
         "en route",
         -- an aircraft handed to a teammate ("can you look after Logan 52B for me - ...")
@@ -926,7 +931,8 @@ return {
   -- co-altitude at 350", "the Transavia keeps FL170", "the Transavia's there", "KLM12 currently at FL350" (no
   -- copula); unless one of `described_not`
   -- follows ("X is cleared FL200", "X is to climb", "X is required to cross CNR at FL120")
-  described = { "is", "are", "keeps", "stays", "remains", "sits", "currently" },
+  -- ("Cathay 743 already at FL360 now, please ...": Vietnamese and Thai English's "already" for the copula)
+  described = { "is", "are", "keeps", "stays", "remains", "sits", "currently", "already" },
   described_not = { "cleared", "to", "instructed", "told", "requested", "asked", "now", "going", "gonna", "climbing",
                     "descending", "turning", "both", "also", "required", "obliged" },
   -- an aircraft named as the object of one of these is described too, its clause to the next punctuation: "climb
@@ -1157,7 +1163,10 @@ return {
                       -- "sorry" (a marker); closing the request or running on ("I made a mistake when creating
                       -- it") they are no marker (judged)
                       admitted = { "i mistook", "i made a mistake", "i made an error", "my mistake", "my error",
-                                   "i was mistaken", "i was wrong" },
+                                   "i was mistaken", "i was wrong",
+                                   -- (the same admitted in Vietnamese and Thai English, no tense or article:
+                                   -- "sorry I mistake, 300 not 310")
+                                   "i mistake", "i make mistake", "i make a mistake", "i made mistake" },
                       -- said after a marker, before the value said in place of the one taken back ("I am sorry,
                       -- it is 260"): part of the correction's run
                       restated = { "it is", "it's", "it should be" },

@@ -2469,7 +2469,8 @@ return function(intent, rule, words)
     if nouns == 0 or not g:word(k, "of for") then return nil end
     return g:refs_in(k + 1, k + 2, "aircraft")[1]
   end
-  rule { "provide give tell report", "pos", when = function(g, i) return state_asked(g, i) ~= nil end }
+  -- ("please help me check speed of Nok Air 315": a verb of looking at the state, the same)
+  rule { "provide give tell report check", "pos", when = function(g, i) return state_asked(g, i) ~= nil end }
   -- "I need the position of TAP1017": the same wanted, when the clause ends with the aircraft (not "I want
   -- the position of TAP1017 changed")
   rule { "need want require", "pos", when = function(g, i)
@@ -3370,8 +3371,10 @@ return function(intent, rule, words)
   rule { "resolution resolve reso resolutions resolver", false, near = { 5, "margin" } }
   rule { "margin", "rfac", prev = { 5, "resolution resolutions reso resolve" }, not_near = { 1, "factor" } }
   -- "Resolution method MVP, horizontal factor 1.2": a factor of a direction, resolution said before
+  -- ("please make vertical factor 1.05 also": said alone, no aircraft named, the only factor squawk sets of a
+  -- direction is the resolutions')
   rule { "factor", "rfac", prev = { 1, "horizontal lateral vertical" }, when = function(g, i)
-    return g:word_in(1, i, "resolution resolutions reso resolve mvp")
+    return g:word_in(1, i, "resolution resolutions reso resolve mvp") or not g:has_ref(1, #g.t + 1, "aircraft")
   end }
   -- (the resolution said of the vertical ones, "let MVP use vertical speed in the resolutions", sets no method;
   -- one switched on in a clause of its own, "turn on MVP resolution and let it use vertical too", does: RESO

@@ -18337,3 +18337,50 @@ do
   check_eq(ex("TAP5 descend by 5000 feet"), "ALT TAP5 3000")
   check_eq(ex("TAP5 go down to 5000 feet"), "ALT TAP5 5000")
 end
+-- Cycle 59 (f194): Vietnamese and Thai polite English: "can or not?" before or after a request, the particles
+-- "ka"/"krab", "sorry I mistake, 260 not 270", "already ... or not yet?" and "... is X on or not?" asked as the
+-- aircraft's state, "after reach then ..." (a condition joined by "then"), thanks after a condition's comma or a
+-- distance limit, "help me check speed of X", "vertical factor 1.05" alone, "already at FL360" as the state told
+do
+  local _, ex = scene({ "DEFWPT PHUOC 11.0 107.0", "DEFWPT TANAN 11.5 107.5", "CRE VJC551 A321 10.5 106.5 045 FL210 280",
+    "ADDWPT VJC551 PHUOC", "ADDWPT VJC551 TANAN", "CRE THA420 B788 12.0 106.0 090 FL370 290", "CRE BAV88 A320 11.8 107.9 200 FL300 280",
+    "ADDWPT BAV88 TANAN", "CRE NOK77 B738 12.5 107.0 180 9000 250" })
+  -- "can or not" asks the request politely: given
+  check_eq(ex("Thai 420 turn right heading 120, can or not?"), "HDG THA420 120 RIGHT")
+  check_eq(ex("can or not, Bamboo 88 reduce speed two five zero?"), "SPD BAV88 250")
+  check_eq(ex("VJC551 climb flight level 250 can or not? thank you"), "ALT VJC551 FL250")
+  asked(ex("VJC551 climb flight level 250 or not?"), "'or not' with no 'can': a question or a refusal")
+  asked(ex("Bamboo 88 can or not?"), "nothing requested")
+  -- the Thai particles close a request
+  check_eq(ex("Nok Air 77 descend 7000 feet please, thank you ka"), "ALT NOK77 7000")
+  check_eq(ex("Thai 420 descend FL350 krab"), "ALT THA420 FL350")
+  -- the slip admitted without a tense: the value after it stands
+  check_eq(ex("Bamboo 88 descend FL280, sorry I mistake, FL270 not FL280"), "ALT BAV88 FL270")
+  check_eq(ex("Thai 420 speed 270, sorry I make mistake, 260 not 270, thank you"), "SPD THA420 260")
+  -- "already ... or not yet?": the aircraft's state asked, no instruction
+  check_eq(ex("Vietjet 551 already pass PHUOC or not yet sir?"), "POS VJC551")
+  check_eq(ex("Thai 420 already reach FL370 or not yet?"), "POS THA420")
+  check_eq(ex("BAV88 is VNAV on or not?"), "POS BAV88")
+  asked(ex("Thai 420 reach FL350 or not yet?"), "no 'already' or copula: a question or an instruction")
+  -- a condition joined to its instruction by "then"; "speed reach 250" is no callsign Reach
+  check_eq(ex("VJC551 climb FL250, after reach then speed 300 knot please"),
+    "ALT VJC551 FL250 ; ATALT VJC551 FL250 SPD VJC551 300")
+  check_eq(ex("Thai 420 reduce speed to 250, after speed reach 250 then descend FL330"),
+    "SPD THA420 250 ; ATSPD THA420 250 ALT THA420 FL330")
+  check_eq(ex("Bamboo 88 climb flight level 320, when reach then turn right heading 250"),
+    "ALT BAV88 FL320 ; ATALT BAV88 FL320 HDG BAV88 250 RIGHT")
+  -- thanks after the condition's comma end no condition
+  check_eq(ex("VJC551 when pass PHUOC descend to FL190, thank you"), "AT VJC551 PHUOC DO ALT VJC551 FL190")
+  check_eq(ex("Vietjet 551 after pass TANAN please turn left heading 010, thank you very much"),
+    "AT VJC551 TANAN DO HDG VJC551 10 LEFT")
+  -- and after a limit that ends at a distance (not simulated: the value is flown)
+  check_eq(ex("Nok Air 77 reduce speed 170 knot until 4 mile final, thank you"), "SPD NOK77 170")
+  -- the state looked at for the speaker
+  check_eq(ex("please help me check altitude of Bamboo 88"), "POS BAV88")
+  check_eq(ex("can you check the speed of Thai 420 please"), "POS THA420")
+  -- a direction's resolution factor said alone
+  check_eq(ex("please make horizontal factor 1.1 also"), "RFACH 1.1")
+  -- "already at" tells the state; the instruction after it stands
+  check_eq(ex("Thai 420 already at FL370 now, please make it go down to FL350, thank you"), "ALT THA420 FL350")
+  asked(ex("Thai 420 already climb FL390"), "a state told or an instruction")
+end
