@@ -5295,6 +5295,10 @@ function G:segments(b, e)
       -- a verb after "and", is a speed of its own)
       local own_verb = last.intent == "addwpt" and self:word(tr.pos - 1, "and")
         and not self:word(tr.pos, "speed spd altitude alt heading hdg level fl")
+      -- ("add KWA, and speed 250", "add SPY to the route and altitude FL200": a value's noun after "and", with no
+      -- value, "at" or "with" said for the waypoint before it, is an instruction of its own, never its constraint)
+      own_verb = own_verb or (last.intent == "addwpt" and self:word(tr.pos - 1, "and")
+        and #self:quantities(last.trig, tr.pos) == 0 and not self:word_in(last.trig + 1, tr.pos, "at with"))
       -- ("create JST802 ... 3000 feet, 180 knots, and instruct it to climb to FL280": a verb of its own after a
       -- creation that already holds the value that verb sets is an instruction to the new aircraft)
       -- (its own value said after it: "..., going to climb" with none stays the creation's question)
@@ -11851,6 +11855,15 @@ function G:not_simulated()
         if class.one_value and x.kind == "number" then
           e = e + 1
           break
+        end
+        -- (its value in spoken digits, "QNH one zero one one, one seven zero knots": the phrase ends with the
+        -- digits' quantity, and the speed after the comma is an instruction)
+        if class.one_value and x.kind == "word" and G.digit_words[x.text] then
+          local q = self:quantities(e, math.min(#self.t + 1, e + 8))[1]
+          if q and q.b == e then
+            e = q.e
+            break
+          end
         end
         -- ("hold at KOK 2000ft", "holding over COA, FL120", "hold at KOK at FL120": a level with its unit straight
         -- after the fix, or after the fix and a comma or "at", is the level flown there, no part of the hold; a bare
