@@ -10234,7 +10234,7 @@ end
 -- aircraft named first, a verb's "-ing" form after it ("is", "are", "now", "still", "you are" between at most) and "?"
 -- closing it asks what the aircraft does (a typed statement said as a question), no instruction: asked, never sent.
 G.participles = set_of({ "climbing", "descending", "turning", "reducing", "increasing", "maintaining", "flying",
-  "proceeding", "going", "heading", "holding", "slowing", "accelerating", "decelerating" })
+  "proceeding", "going", "holding", "slowing", "accelerating", "decelerating" })
 function G:participle_question()
   if #self.out == 0 then return end
   local last = #self.t

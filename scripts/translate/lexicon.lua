@@ -1993,11 +1993,10 @@ return {
     -- ahead"): the service named and the other aircraft told by the way it flies or where it is, to whoever is
     -- addressed; it shows nobody's position (a clause opening with an imperative verb after a comma is still an
     -- instruction). Said with no such description, "DLH2AE traffic info please" asks for that aircraft's data.
-    { what = "traffic information", words = "traffic", near = { "information", "info", "advisory", "advisories" },
-      window = 1, to_end = true,
+    { what = "traffic information", words = "traffic", near = { "information", "info" }, window = 1, to_end = true,
       and_near = { { "opposite", "crossing", "converging", "overtaking", "same", "reciprocal", "climbing", "descending",
                      "ahead", "behind", "passing", "below", "above", "beneath", "underneath", "o'clock", "oclock",
-                     "clock", "eastbound", "westbound", "northbound", "southbound", "miles", "opposing" }, 10 } },
+                     "clock" }, 10 } },
     -- ("descend FL320, traffic opposite direction FL340", "maintain FL370, traffic crossing left to right, a
     -- Volotea at FL350": after an instruction, traffic told by the way it flies; its level is the other aircraft's)
     { what = "traffic information", words = "traffic", window = 2, after_instruction = true, to_end = true,
