@@ -5314,6 +5314,10 @@ function G:segments(b, e)
       -- a verb after "and", is a speed of its own)
       local own_verb = last.intent == "addwpt" and self:word(tr.pos - 1, "and")
         and not self:word(tr.pos, "speed spd altitude alt heading hdg level fl")
+      -- ("add KWA, and speed 250", "add SPY to the route and altitude FL200": a value's noun after "and", with no
+      -- value, "at" or "with" said for the waypoint before it, is an instruction of its own, never its constraint)
+      own_verb = own_verb or (last.intent == "addwpt" and self:word(tr.pos - 1, "and")
+        and #self:quantities(last.trig, tr.pos) == 0 and not self:word_in(last.trig + 1, tr.pos, "at with"))
       -- ("create JST802 ... 3000 feet, 180 knots, and instruct it to climb to FL280": a verb of its own after a
       -- creation that already holds the value that verb sets is an instruction to the new aircraft)
       -- (its own value said after it: "..., going to climb" with none stays the creation's question)
@@ -10311,6 +10315,50 @@ function G:state_question()
   end
 end
 
+-- "KLM12 direct SPY heading 200", "direct SPY, then heading 200": a heading sent now after a direct-to for the same
+-- aircraft takes it off the direct at once (HDG ends LNAV), so the direct is lost: which one is meant, or where the
+-- heading starts ("after SPY heading 200", AT ... DO), is asked. A heading before the direct, "heading 230 then direct
+-- LORNI", is flown until the direct is given, as said.
+function G:heading_after_direct()
+  local direct = {}
+  for _, line in ipairs(self.out) do
+    local id, wp = line:match("^DIRECT (%S+) (%S+)$")
+    if id then direct[id] = wp end
+    local hid, hdg = line:match("^HDG (%S+) (%d+)")
+    if hid and direct[hid] then
+      return self:need(string.format("A heading after the direct-to takes %s off it at once: should %s fly direct %s, "
+        .. "or heading %s? To fly the heading from %s on, please say \"after %s heading %s\".", hid, hid, direct[hid],
+        hdg, direct[hid], direct[hid], hdg))
+    end
+  end
+end
+
+-- "KLM12 climbing FL300?", "DLH34 is reducing speed 250?", "KLM12 now descending to FL200?": one clause, its
+-- aircraft named first, a verb's "-ing" form after it ("is", "are", "now", "still", "you are" between at most) and "?"
+-- closing it asks what the aircraft does (a typed statement said as a question), no instruction: asked, never sent.
+G.participles = set_of({ "climbing", "descending", "turning", "reducing", "increasing", "maintaining", "flying",
+  "proceeding", "going", "holding", "slowing", "accelerating", "decelerating" })
+function G:participle_question()
+  if #self.out == 0 then return end
+  local last = #self.t
+  while last > 0 and self.t[last].filler do last = last - 1 end
+  if not (self.t[last] and self.t[last].text == "?") then return end
+  for x = 1, last - 1 do
+    if self.t[x].kind == "punct" and self.t[x].text ~= "," then return end
+  end
+  if self:said("please") then return end
+  local first = self:skip_fillers(1)
+  local r = self:refs_in(first, first + 1, "aircraft")[1]
+  if not (r and r.b == first and r.exists) then return end
+  local k = self:skip_fillers(r.e)
+  if self.t[k] and self.t[k].text == "," then k = self:skip_fillers(k + 1) end
+  if self:word(k, "you") and self:word(k + 1, "are") then k = k + 2 end
+  while self:word(k, "is are now still currently") do k = k + 1 end
+  if not (self.t[k] and G.participles[self.t[k].text]) then return end
+  return self:need(string.format("'%s' asks what %s is doing: a question, no instruction. If %s should do it, "
+    .. "please say it without the question mark.", self:raw(first, last), r.name:upper(), r.name:upper()))
+end
+
 -- "KLM12 climb FL340, show me both", "..., then display KLM12", "..., let me see both": a verb of showing that no
 -- command was read from, said after an instruction, is never dropped: the aircraft named alone after it (and only
 -- those, joined by "and", to the end of the request) are shown where they are (POS); anything else ("both", "them") is
@@ -11956,6 +12004,15 @@ function G:not_simulated()
         if class.one_value and x.kind == "number" then
           e = e + 1
           break
+        end
+        -- (its value in spoken digits, "QNH one zero one one, one seven zero knots": the phrase ends with the
+        -- digits' quantity, and the speed after the comma is an instruction)
+        if class.one_value and x.kind == "word" and G.digit_words[x.text] then
+          local q = self:quantities(e, math.min(#self.t + 1, e + 8))[1]
+          if q and q.b == e then
+            e = q.e
+            break
+          end
         end
         -- ("hold at KOK 2000ft", "holding over COA, FL120", "hold at KOK at FL120": a level with its unit straight
         -- after the fix, or after the fix and a comma or "at", is the level flown there, no part of the hold; a bare
@@ -15446,6 +15503,8 @@ function M.translate(text, world)
   if not g.ask then g:forgotten() end
   if not g.ask then g:described() end
   if not g.ask then g:state_question() end
+  if not g.ask then g:participle_question() end
+  if not g.ask then g:heading_after_direct() end
   if not g.ask then g:speed_lifted_and_given() end
   if not g.ask then g:resume_after_instruction() end
   if not g.ask then g:op_after_ff() end

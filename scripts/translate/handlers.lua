@@ -293,12 +293,19 @@ function m:readdressed(b, trig)
     while k > b and (self.t[k].kind == "punct" or self.t[k].filler) do k = k - 1 end
   end
   local last = refs[#refs]
-  local pair = last.e == k + 1 and #refs - 1 or #refs
+  -- ("CPA451 and EVA12, EVA12 heading 180, CPA451 speed 240": the last of the pair said again straight after it,
+  -- one reference said twice across the comma, is one of the pair said again)
+  local twice = false
+  for x = last.b + 1, last.e - 1 do
+    if self.t[x].kind == "punct" then twice = true end
+  end
+  twice = twice and last.e == k + 1
+  local pair = (last.e == k + 1 and not twice) and #refs - 1 or #refs
   if pair < 2 then return nil end
   local from = refs[pair].e
   local upto = last.e == k + 1 and last.b or k
   local clause = false
-  for x = from, upto - 1 do
+  for x = from, twice and 0 or upto - 1 do
     local t = self.t[x]
     if t.kind == "word" and not t.filler and not self:word(x, "and") then clause = true end
   end
@@ -525,6 +532,20 @@ function m:acids(s)
   end
   -- ("KLM12 is near EZY45, turn him left heading 130": one aircraft said by "him" or "her" beside the instruction
   -- word, or "it" straight after it, with more than one named for it: which one is not known, asked)
+  -- ("KAL1114 and AAR8811 converging, the higher one climb FL300", "..., the slower of the two reduce 220", "faster
+  -- aircraft speed 250"): one of those named picked by a comparison before the instruction word: which one is
+  -- asked, never each of them instructed
+  if #ids > 1 then
+    for k = s.b, s.trig - 1 do
+      local cmp = "higher lower faster slower closer nearer further farther highest lowest fastest slowest"
+      if self:word(k, cmp) and (self:word(k - 1, "the") or self:word(k + 1, "one aircraft plane traffic")
+          or (self:word(k + 1, "of") and self:word(k + 2, "the them"))) then
+        self:need(string.format("Which aircraft is 'the %s one': %s? Please give its callsign.", self.t[k].raw,
+          table.concat(ids, " or ")))
+        break
+      end
+    end
+  end
   if #ids > 1 then
     local e = math.min(s.e, s.trig + 3)
     local p = self:find_word(math.max(s.b, s.trig - 2), e, "him her")

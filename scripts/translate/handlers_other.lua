@@ -2898,7 +2898,18 @@ return function(H, f, compass)
     -- "via SUGOL and ANDIK and give it 280 knots": values after "and" and a verb of their own
     -- are the next instruction's, no constraint of the waypoint
     local upto = s.e
-    for k = (named and named.e or s.trig + 1), s.e - 1 do
+    -- ("add KWA, and speed 250", "add SPY to the route and altitude FL200"): a value's noun opening a clause of
+    -- its own after "and", with no value, "at" or "with" said for the waypoint before it, is an instruction of its
+    -- own, never the waypoint's constraint ("add MANEL with FL80 and 220 knots", "at FL200 and speed 250" stay its)
+    local own_b = named and named.e or s.trig + 1
+    for k = own_b, s.e - 1 do
+      if self:word(k, "at with") or self.t[k].kind == "number" or self.t[k].number_word then break end
+      if self:word(k, "and") and self:word(k + 1, "speed spd altitude alt level fl") then
+        upto = k
+        break
+      end
+    end
+    for k = (named and named.e or s.trig + 1), upto - 1 do
       local nx = self.t[k + 1]
       if self:word(k, "and") and nx and nx.kind == "word" and not nx.filler and not nx.number_word
           and not self:word(k + 1, "at with to speed spd altitude alt level fl")
@@ -4754,11 +4765,32 @@ return function(H, f, compass)
       return self:mark_used(s.trig, s.trig + 2)
     end
     local all = #self.t + 1
+    -- ("MVP can use vertical also or not?", "vertical resolution, allow or not allow?"): "or not"/"or no" is a
+    -- yes-no question's other answer, up to punctuation, no switching off; with nothing said after its clause
+    -- the request is the question alone, asked; a clause after it ("..., please allow it") is read
+    local tag_b, tag_e
+    for k = 1, #self.t - 1 do
+      if self:word(k, "or") and self:word(k + 1, "not no") then
+        tag_b, tag_e = k, k + 2
+        while tag_e < all and self.t[tag_e].kind ~= "punct" do tag_e = tag_e + 1 end
+        break
+      end
+    end
+    if tag_b then
+      local rest = false
+      for j = tag_e, #self.t do
+        if self.t[j].kind ~= "punct" then rest = true end
+      end
+      if not rest then
+        return self:need("Should conflict resolution use vertical speed too (RMETHV V/S) or stay horizontal only "
+          .. "(RMETHV OFF)? 'or not' asks, it chooses neither.")
+      end
+    end
     -- ("use vertical speed as well, not just heading and speed": "not just" adds, G:additive_not; its "only" or
     -- "just" limits nothing)
     local off, only = false, false
     for k = 1, #self.t do
-      local additive = self:additive_not(k) or self:additive_not(k - 1)
+      local additive = self:additive_not(k) or self:additive_not(k - 1) or (tag_b and k >= tag_b and k < tag_e)
       off = off or (self:word(k, "@off no not never") and not additive)
         -- ("close vertical resolution", "please close it": "open"'s opposite, as a switch is closed, is off)
         or (self:word(k, "close shut") and self:word(k + 1, "it the vertical resolution resolutions reso rmethv"))

@@ -1998,6 +1998,14 @@ return {
     -- "traffic at" is the other aircraft's, never one to fly (a clause opening with an imperative verb after a
     -- comma is still an instruction)
     { what = "traffic information", words = "traffic", near = { "at" }, window = 1, to_end = true },
+    -- ("KLM12, DLH34, traffic information, both of you, opposite direction same level", "traffic info: A320 crossing
+    -- ahead"): the service named and the other aircraft told by the way it flies or where it is, to whoever is
+    -- addressed; it shows nobody's position (a clause opening with an imperative verb after a comma is still an
+    -- instruction). Said with no such description, "DLH2AE traffic info please" asks for that aircraft's data.
+    { what = "traffic information", words = "traffic", near = { "information", "info" }, window = 1, to_end = true,
+      and_near = { { "opposite", "crossing", "converging", "overtaking", "same", "reciprocal", "climbing", "descending",
+                     "ahead", "behind", "passing", "below", "above", "beneath", "underneath", "o'clock", "oclock",
+                     "clock" }, 10 } },
     -- ("descend FL320, traffic opposite direction FL340", "maintain FL370, traffic crossing left to right, a
     -- Volotea at FL350": after an instruction, traffic told by the way it flies; its level is the other aircraft's)
     { what = "traffic information", words = "traffic", window = 2, after_instruction = true, to_end = true,

@@ -18384,3 +18384,56 @@ do
   check_eq(ex("Thai 420 already at FL370 now, please make it go down to FL350, thank you"), "ALT THA420 FL350")
   asked(ex("Thai 420 already climb FL390"), "a state told or an instruction")
 end
+-- fhz6 (cycle 59, session 27): hazards of R194/R195
+do
+  local s, ex = scene({ "DEFWPT TOLKO 51.2 5.1", "DEFWPT MERSA 51.6 5.4", "CRE EZY481 A320 51.0 5.0 090 FL230 280",
+    "ADDWPT EZY481 TOLKO", "CRE BAW77 B738 51.4 5.6 270 FL250 290", "ADDWPT BAW77 MERSA",
+    "CRE AFR209 A321 50.8 4.6 020 FL120 260" })
+  -- nothing sent, the phrase named as not simulated
+  local function told(text, why)
+    local r = graph.translate(text, { sim = s, mode = "offline" })
+    check(#(r.commands or {}) == 0 and (r.note or ""):find("traffic information", 1, true) ~= nil, why)
+  end
+  -- "or not" asks a yes-no question, no switch-off; the clause after it is read, alone it is asked
+  check_eq(ex("resolution may use vertical too or not? please allow it"), "RMETHV V/S")
+  check_eq(ex("vertical manoeuvres for MVP, can or no? switch it on please"), "RMETHV V/S")
+  check_eq(ex("the MVP can go vertical also or not? please do not allow it"), "RMETHV OFF")
+  asked(ex("can MVP resolve vertically as well or not?"), "the question alone")
+  asked(ex("vertical resolutions, allow or not allow?"), "the question alone")
+  check_eq(ex("MVP should never use vertical"), "RMETHV OFF")
+  -- an altimeter setting in spoken digits ends with its value: the speed after the comma is an instruction
+  check_eq(ex("Easy 481 descend altitude six thousand feet QNH one zero two two, one six zero knots until three DME"),
+    "ALT EZY481 6000 ; SPD EZY481 160")
+  check_eq(ex("AFR209 descend to 3000 feet, QNH niner niner eight, one eight zero knots until six miles final"),
+    "ALT AFR209 3000 ; SPD AFR209 180")
+  check_eq(ex("BAW77 descend 7000 feet QNH one zero one three, speed two one zero"), "ALT BAW77 7000 ; SPD BAW77 210")
+  -- traffic information told (the service and the other traffic described) shows nobody; asked alone
+  told("Easy 481, Speedbird 77, traffic information, both of you, converging, same level", "told, no command")
+  told("BAW77 traffic info, an Airbus crossing left to right, same level", "told, no command")
+  check_eq(ex("EZY481 traffic information, opposite direction same level, turn right heading 130"),
+    "HDG EZY481 130 RIGHT")
+  check_eq(ex("AFR209 traffic info please"), "POS AFR209")
+  -- a value's noun after "and" past a waypoint added, with no constraint said for it, is its own instruction
+  check_eq(ex("EZY481 add MERSA, and speed 240"), "ADDWPT EZY481 MERSA ; SPD EZY481 240")
+  check_eq(ex("please add MERSA to the route of AFR209 and altitude FL140"), "ADDWPT AFR209 MERSA ; ALT AFR209 FL140")
+  check_eq(ex("EZY481 add MERSA at FL200 and speed 240"), "ADDWPT EZY481 MERSA FL200 240")
+  -- a pair named together, then each said again with its own instruction
+  check_eq(ex("EZY481 and BAW77, BAW77 turn left heading 200, EZY481 reduce speed 250"),
+    "HDG BAW77 200 LEFT ; SPD EZY481 250")
+  check_eq(ex("Speedbird 77, Easy 481, Easy 481 climb FL260, Speedbird 77 speed 260"),
+    "ALT EZY481 FL260 ; SPD BAW77 260")
+  -- one of a pair picked by a comparison: which one is asked
+  asked(ex("EZY481 and BAW77 converging, the higher one climb FL300"), "which is higher")
+  asked(ex("BAW77 and EZY481, the faster of the two reduce speed 240"), "which is faster")
+  check_eq(ex("EZY481 and BAW77 both climb FL300"), "ALT EZY481 FL300 ; ALT BAW77 FL300")
+  -- a statement of what an aircraft does, closed by "?", is a question
+  asked(ex("EZY481 climbing FL300?"), "a question")
+  asked(ex("Speedbird 77 is descending to FL200?"), "a question")
+  asked(ex("AFR209 now turning heading 090?"), "a question")
+  check_eq(ex("EZY481 climbing FL300"), "ALT EZY481 FL300")
+  -- a heading sent with a direct-to, after it: the direct would be lost, asked
+  asked(ex("EZY481 direct TOLKO heading 200"), "heading cancels the direct")
+  asked(ex("BAW77 proceed direct MERSA, then fly heading 170"), "heading cancels the direct")
+  check_eq(ex("EZY481 direct TOLKO after TOLKO heading 200"), "DIRECT EZY481 TOLKO ; AT EZY481 TOLKO DO HDG EZY481 200")
+  check_eq(ex("AFR209 heading 230 then direct MERSA"), "HDG AFR209 230 ; ADDWPT AFR209 MERSA ; DIRECT AFR209 MERSA")
+end
