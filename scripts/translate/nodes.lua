@@ -359,7 +359,7 @@ end
 -- word (a letter left out, added, changed for its neighbour on the keyboard, or two neighbours swapped; the first
 -- letter kept, or the first two swapped) and the line with its command parses on `scratch`; else nil. A word of
 -- English glue, of the grammar's keywords or of the lexicon ("trial" is no TRAIL), or an aircraft's id, is no slip.
-local command_names
+local command_names, command_lead
 -- True when lower-case letters x and y are neighbours on a QWERTY keyboard (same row or the rows above and below).
 local KEY_ROWS = { "qwertyuiop", "asdfghjkl", "zxcvbnm" }
 function M.keys_beside(x, y)
@@ -389,6 +389,15 @@ function M.command_slip(c, scratch)
         if #a >= 3 and a:match("^%a+$") then command_names[#command_names + 1] = a:lower() end
       end
     end
+    -- (the names' positions in command_names by their first letter, and by their first two letters: the only
+    -- names a word can be one slip from, its first letter kept or its first two swapped)
+    command_lead = { first = {}, two = {} }
+    for k, n in ipairs(command_names) do
+      for key, by in pairs({ [n:sub(1, 1)] = command_lead.first, [n:sub(1, 2)] = command_lead.two }) do
+        by[key] = by[key] or {}
+        by[key][#by[key] + 1] = k
+      end
+    end
   end
   local function one_edit(a, b)  -- a typed, b a name: one edit apart (Damerau), a ~= b
     if math.abs(#a - #b) > 1 then return false end
@@ -402,9 +411,21 @@ function M.command_slip(c, scratch)
     return #a > #b and a:sub(i + 1) == b:sub(i) or #a < #b and a:sub(i) == b:sub(i + 1)
   end
   local found
-  for _, n in ipairs(command_names) do
-    local lead = n:sub(1, 1) == lw:sub(1, 1) or n:sub(1, 2) == lw:sub(2, 2) .. lw:sub(1, 1)
-    local name = lead and one_edit(lw, n) and canonical_name(n)
+  -- (the names that keep the word's first letter or swap its first two, in command_names' order)
+  local kept, swapped = command_lead.first[lw:sub(1, 1)] or {}, command_lead.two[lw:sub(2, 2) .. lw:sub(1, 1)] or {}
+  local i, j = 1, 1
+  while kept[i] or swapped[j] do
+    local k
+    if swapped[j] == nil or (kept[i] and kept[i] <= swapped[j]) then
+      k = kept[i]
+      if swapped[j] == k then j = j + 1 end
+      i = i + 1
+    else
+      k = swapped[j]
+      j = j + 1
+    end
+    local n = command_names[k]
+    local name = #n - #lw <= 1 and #lw - #n <= 1 and one_edit(lw, n) and canonical_name(n)
     -- (a command of free text parses whatever follows: "eco mode on" is no ECHO)
     if name and M.free_text(name) then return nil end
     if name and name ~= found then
