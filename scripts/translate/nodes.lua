@@ -357,8 +357,9 @@ end
 -- command's arguments ("atl ezy45hm fl120": ALT; "crete ein7ts a320 53.5 6.0 180 fl300 270": CREATE, CRE): the
 -- line with that name, when exactly one registry name or alias of three letters or more lies one edit from the
 -- word (a letter left out, added, changed for its neighbour on the keyboard, or two neighbours swapped; the first
--- letter kept, or the first two swapped) and the line with its command parses on `scratch`; else nil. A word of
--- English glue, of the grammar's keywords or of the lexicon ("trial" is no TRAIL), or an aircraft's id, is no slip.
+-- letter kept, or the first two swapped) and the line with its command parses on `scratch` (a simulation, or a
+-- function giving one, called only when a word is looked up there); else nil. A word of English glue, of the
+-- grammar's keywords or of the lexicon ("trial" is no TRAIL), or an aircraft's id, is no slip.
 local command_names, command_lead
 -- True when lower-case letters x and y are neighbours on a QWERTY keyboard (same row or the rows above and below).
 local KEY_ROWS = { "qwertyuiop", "asdfghjkl", "zxcvbnm" }
@@ -377,8 +378,11 @@ end
 function M.command_slip(c, scratch)
   local word, args = c:match("^%s*([%a]+)([%s,].*)$")
   local lw = word and word:lower()
-  if not lw or #lw < 3 or canonical_name(lw) or GLUE[lw] or keyword_set()[lw] or typos.lexicon_word(lw)
-      or scratch:get(word) then
+  if not lw or #lw < 3 or canonical_name(lw) or GLUE[lw] or keyword_set()[lw] or typos.lexicon_word(lw) then
+    return nil
+  end
+  if type(scratch) == "function" then scratch = scratch() end
+  if scratch:get(word) then
     return nil
   end
   if not command_names then
@@ -578,7 +582,7 @@ function M.typed(state, ctx)
     -- ("Echo Charlie Kilo Juliett Bravo, climb ..."), spells a callsign: English, not ECHO
     if lexicon.phonetic[first:lower()] and lexicon.phonetic[second:lower()] then return "english" end
     if not canonical_name(first) and not canonical_name(second) then
-      local fixed = M.command_slip(c, copy())
+      local fixed = M.command_slip(c, copy)
       if not fixed then return "english" end
       c = fixed
       cmds[k] = c
