@@ -10392,10 +10392,9 @@ function G:unaccounted()
       and not self.u:used(k)
   end
   for i = 1, #self.t do
-    local b = i - 1
-    while self.t[b] and self.t[b].filler do b = b - 1 end
-    if letter(i) and letter(i + 1) and not letter(i - 1)
-        and self:word(b, "at after over via cross crossing abeam direct from") then
+    local b = letter(i) and letter(i + 1) and not letter(i - 1) and i - 1
+    while b and self.t[b] and self.t[b].filler do b = b - 1 end
+    if b and self:word(b, "at after over via cross crossing abeam direct from") then
       local e = i
       while letter(e) do e = e + 1 end
       self.leftover = self:raw(i, e)
@@ -10403,8 +10402,9 @@ function G:unaccounted()
     end
   end
   -- ("KLM12 no need to climb to FL240", "no need for the descent"): what is not needed is no instruction; "no
-  -- need" is asked wherever it stands outside a reason
-  for i = 1, #self.t do
+  -- need" is asked wherever it stands outside a reason (G:said's guard before the scans for "no")
+  local no_said = self:said("no")
+  for i = 1, no_said and #self.t or 0 do
     local t = self.t[i]
     if t.text == "no" and self:word(i + 1, "need needs") and self:word(i + 2, "to for") and not explained[i]
         and not self.noted[i] and not self:in_reason(i) then
@@ -10416,7 +10416,7 @@ function G:unaccounted()
   -- an instruction's verb or noun (lexicon.refusable_verbs; fillers or a turn's side between, no comma) may refuse
   -- it or take back what came before: asked, naming both readings, never read as either ("no, descend" and
   -- "negative descend" are corrections, and so is "wait no descend" straight after a value, m:marker_after_value)
-  for i = 1, #self.t do
+  for i = 1, no_said and #self.t or 0 do
     local t = self.t[i]
     local v = t.text == "no" and not (self:word(i - 1, "wait") and self:marker_after_value(i)) and i + 1
     while v and self.t[v] and (self.t[v].filler or self:word(v, "@left @right")) do v = v + 1 end
