@@ -1989,6 +1989,14 @@ G.counted_nouns = set_of(lexicon.counted_aircraft)
 G.create_verbs = set_of({ "create", "make", "spawn", "generate" })
 G.new_articles = { "one more", "another", "a new", "one new", "an extra", "one extra" }
 function G.level_before_verb(text)
+  -- (each rewrite runs only where `low`, the text in lower case, holds the words it needs; set again after one)
+  local low = text:lower()
+  local function has(w) return low:find(w, 1, true) ~= nil end
+  local function rewrite(pattern, repl)
+    local was = text
+    text = text:gsub(pattern, repl)
+    if text ~= was then low = text:lower() end
+  end
   local function closes(rest)
     local nx = rest:match("^%s*(%a+)")
     return rest:match("^%s*$") or rest:match("^%s*[,.;!]") or (nx and G.level_verb_after[nx:lower()])
@@ -1997,32 +2005,34 @@ function G.level_before_verb(text)
     if not closes(text:sub(at)) then return nil end
     return "FL" .. a .. mid .. "FL" .. b
   end
-  text = text:gsub("(%f[%a][Ff][Ll]%s*)(%d%d%d?)(%s+[Tt][Oo]%s+)(%d%d%d?)%f[%D]()", level_to)
-  text = text:gsub("(%f[%a][Ff]light%s+[Ll]evel%s+)(%d%d%d?)(%s+[Tt][Oo]%s+)(%d%d%d?)%f[%D]()", level_to)
+  if has("fl") and has("to") then
+    rewrite("(%f[%a][Ff][Ll]%s*)(%d%d%d?)(%s+[Tt][Oo]%s+)(%d%d%d?)%f[%D]()", level_to)
+    rewrite("(%f[%a][Ff]light%s+[Ll]evel%s+)(%d%d%d?)(%s+[Tt][Oo]%s+)(%d%d%d?)%f[%D]()", level_to)
+  end
   -- ("FL320 to FL300, descent please": the verb of the two levels said first, "descend FL320 to FL300", so that
   -- the level left is checked against the aircraft's in any clause of the request)
-  text = text:gsub("(%f[%a][Ff][Ll]%s*%d%d%d?%s+[Tt][Oo]%s+[Ff][Ll]%s*%d%d%d?)(%s*,?%s*)(%a+)%f[%A]",
+  if has("climb") or has("descen") then rewrite("(%f[%a][Ff][Ll]%s*%d%d%d?%s+[Tt][Oo]%s+[Ff][Ll]%s*%d%d%d?)(%s*,?%s*)(%a+)%f[%A]",
     function(levels, _, verb)
       local v = verb:lower()
       if v == "descent" then v = "descend" end
       if v ~= "climb" and v ~= "descend" then return nil end
       return v .. " " .. levels
-    end)
-  text = text:gsub("(%d%s*%a*%s+[Tt][Oo])%s*,%s*(%a+)%f[%A]", function(pre, verb)
+    end) end
+  if has(",") and has("to") then rewrite("(%d%s*%a*%s+[Tt][Oo])%s*,%s*(%a+)%f[%A]", function(pre, verb)
     local unit = pre:match("%d%s*(%a*)%s+[Tt][Oo]$"):lower()
     if (unit == "" or unit == "feet" or unit == "ft") and G.level_verb_after[verb:lower()]
         and verb:lower() ~= "please" and verb:lower() ~= "and" and verb:lower() ~= "then" then
       return pre .. " " .. verb
     end
     return nil
-  end)
+  end) end
   -- "after reaching 250, flight level 230 descend", "flight level 240 climb when passing ANSIM", "when at 210, 5000
   -- feet descend", "speed 250 reduce": a level or speed said before its verb of climb, descent or speed is said
   -- with the verb first ("descend flight level 230"), so that a condition before or after it is read as with the
   -- English order; not after a word that makes the value a condition's or a limit's ("at FL240 climb ...",
   -- "passing 5000 feet descend"), nor before "rate" ("FL280 climb rate ...")
   local function reorder(pat, verbs)
-    text = text:gsub("()" .. pat .. "%s+(%a+)%f[%A]()", function(b, value, verb, e)
+    rewrite("()" .. pat .. "%s+(%a+)%f[%A]()", function(b, value, verb, e)
       if not verbs[verb:lower()] then return nil end
       local prev = (text:sub(1, b - 1):match("(%a+)%s*$") or ""):lower()
       local nx = (text:match("^%s*(%a+)", e) or ""):lower()
@@ -2030,18 +2040,20 @@ function G.level_before_verb(text)
       return verb .. " " .. value
     end)
   end
-  reorder("(%f[%a][Ff]light%s+[Ll]evel%s+%d%d%d?)", G.vertical_verbs)
-  reorder("(%f[%a][Ff][Ll]%s*%d%d%d?)", G.vertical_verbs)
-  reorder("(%f[%d]%d[%d,]*%s*[Ff][Ee][Ee][Tt])", G.vertical_verbs)
-  reorder("(%f[%d]%d[%d,]*%s*[Ff][Tt])", G.vertical_verbs)
-  reorder("(%f[%a][Ss]peed%s+%d%d%d?)", G.speed_verbs)
+  if has("climb") or has("descend") then
+    if has("flight") then reorder("(%f[%a][Ff]light%s+[Ll]evel%s+%d%d%d?)", G.vertical_verbs) end
+    if has("fl") then reorder("(%f[%a][Ff][Ll]%s*%d%d%d?)", G.vertical_verbs) end
+    if has("feet") then reorder("(%f[%d]%d[%d,]*%s*[Ff][Ee][Ee][Tt])", G.vertical_verbs) end
+    if has("ft") then reorder("(%f[%d]%d[%d,]*%s*[Ff][Tt])", G.vertical_verbs) end
+  end
+  if has("speed") and (has("reduce") or has("increase")) then reorder("(%f[%a][Ss]peed%s+%d%d%d?)", G.speed_verbs) end
   -- "speed 210, and when 210, 5000 feet descend": a bare number straight after "when" or "once" and before a
   -- comma is said "when at 210" (read as the speed given said again only when it is that speed: G:speed_again_at)
-  text = text:gsub("(%f[%a][Ww]hen%s+)(%d%d%d?%s*,)", "%1at %2")
-  text = text:gsub("(%f[%a][Oo]nce%s+)(%d%d%d?%s*,)", "%1at %2")
+  if has("when") then rewrite("(%f[%a][Ww]hen%s+)(%d%d%d?%s*,)", "%1at %2") end
+  if has("once") then rewrite("(%f[%a][Oo]nce%s+)(%d%d%d?%s*,)", "%1at %2") end
   -- "ten random aircraft create please", "20 random planes make": the count, "random" and the aircraft's noun
   -- before the verb of creation are said as "create ten random aircraft"
-  text = text:gsub("()(%w+)(%s+[Rr]andom%s+)(%a+)%s+(%a+)%f[%A]", function(b, n, rnd, noun, verb)
+  if has("random") then rewrite("()(%w+)(%s+[Rr]andom%s+)(%a+)%s+(%a+)%f[%A]", function(b, n, rnd, noun, verb)
     local before = text:sub(1, b - 1)
     if not (n:match("^%d+$") or NUMBER_WORDS[n:lower()]) or not G.counted_nouns[noun:lower()]
         or not G.create_verbs[verb:lower()] or not (before:match("^%s*$") or before:match("[,.;:]%s*$")
@@ -2049,22 +2061,22 @@ function G.level_before_verb(text)
       return nil
     end
     return "create " .. n .. rnd .. noun
-  end)
+  end) end
   -- "one more aircraft make please, JJA1207, B738, ...", "another plane create": a new aircraft's noun before the
   -- verb of creation is said as "create one more aircraft"
-  for _, art in ipairs(G.new_articles) do
+  for _, art in ipairs((has("create") or has("make") or has("spawn") or has("generate")) and G.new_articles or {}) do
     local pat = "(%f[%a]" .. art:gsub("%a", function(c) return "[" .. c:upper() .. c .. "]" end):gsub(" ", "%%s+")
       .. "%s+)(%a+)%s+(%a+)%f[%A]"
-    text = text:gsub(pat, function(said, noun, verb)
+    rewrite(pat, function(said, noun, verb)
       if not (G.counted_nouns[noun:lower()] or noun:lower() == "plane") or not G.create_verbs[verb:lower()] then
         return nil
       end
       return "create " .. said .. noun
     end)
   end
-  for _, pat in ipairs({ "(%f[%a][Ll]evel%s+%d%d%d?)%s+(%a+)%f[%A]()", "(%f[%a][Ff][Ll]%s*%d%d%d?)%s+(%a+)%f[%A]()",
-                          "(%f[%a][Hh]eading%s+%d%d%d)%s+(%a+)%f[%A]()" }) do
-    text = text:gsub(pat, function(lv, verb, at)
+  for _, pat in ipairs((has("go") or has("fly")) and { "(%f[%a][Ll]evel%s+%d%d%d?)%s+(%a+)%f[%A]()",
+                          "(%f[%a][Ff][Ll]%s*%d%d%d?)%s+(%a+)%f[%A]()", "(%f[%a][Hh]eading%s+%d%d%d)%s+(%a+)%f[%A]()" } or {}) do
+    rewrite(pat, function(lv, verb, at)
       local rest = text:sub(at)
       if (verb:lower() == "go" or verb:lower() == "fly") and (rest:match("^%s*$") or rest:match("^%s*[,.;!]")
           or rest:match("^%s+[Pp]lease%f[%A]")) then
@@ -10531,10 +10543,9 @@ function G:unaccounted()
       and not self.u:used(k)
   end
   for i = 1, #self.t do
-    local b = i - 1
-    while self.t[b] and self.t[b].filler do b = b - 1 end
-    if letter(i) and letter(i + 1) and not letter(i - 1)
-        and self:word(b, "at after over via cross crossing abeam direct from") then
+    local b = letter(i) and letter(i + 1) and not letter(i - 1) and i - 1
+    while b and self.t[b] and self.t[b].filler do b = b - 1 end
+    if b and self:word(b, "at after over via cross crossing abeam direct from") then
       local e = i
       while letter(e) do e = e + 1 end
       self.leftover = self:raw(i, e)
@@ -10542,8 +10553,9 @@ function G:unaccounted()
     end
   end
   -- ("KLM12 no need to climb to FL240", "no need for the descent"): what is not needed is no instruction; "no
-  -- need" is asked wherever it stands outside a reason
-  for i = 1, #self.t do
+  -- need" is asked wherever it stands outside a reason (G:said's guard before the scans for "no")
+  local no_said = self:said("no")
+  for i = 1, no_said and #self.t or 0 do
     local t = self.t[i]
     if t.text == "no" and self:word(i + 1, "need needs") and self:word(i + 2, "to for") and not explained[i]
         and not self.noted[i] and not self:in_reason(i) then
@@ -10555,7 +10567,7 @@ function G:unaccounted()
   -- an instruction's verb or noun (lexicon.refusable_verbs; fillers or a turn's side between, no comma) may refuse
   -- it or take back what came before: asked, naming both readings, never read as either ("no, descend" and
   -- "negative descend" are corrections, and so is "wait no descend" straight after a value, m:marker_after_value)
-  for i = 1, #self.t do
+  for i = 1, no_said and #self.t or 0 do
     local t = self.t[i]
     local v = t.text == "no" and not (self:word(i - 1, "wait") and self:marker_after_value(i)) and i + 1
     while v and self.t[v] and (self.t[v].filler or self:word(v, "@left @right")) do v = v + 1 end

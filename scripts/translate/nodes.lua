@@ -357,9 +357,10 @@ end
 -- command's arguments ("atl ezy45hm fl120": ALT; "crete ein7ts a320 53.5 6.0 180 fl300 270": CREATE, CRE): the
 -- line with that name, when exactly one registry name or alias of three letters or more lies one edit from the
 -- word (a letter left out, added, changed for its neighbour on the keyboard, or two neighbours swapped; the first
--- letter kept, or the first two swapped) and the line with its command parses on `scratch`; else nil. A word of
--- English glue, of the grammar's keywords or of the lexicon ("trial" is no TRAIL), or an aircraft's id, is no slip.
-local command_names
+-- letter kept, or the first two swapped) and the line with its command parses on `scratch` (a simulation, or a
+-- function giving one, called only when a word is looked up there); else nil. A word of English glue, of the
+-- grammar's keywords or of the lexicon ("trial" is no TRAIL), or an aircraft's id, is no slip.
+local command_names, command_lead
 -- True when lower-case letters x and y are neighbours on a QWERTY keyboard (same row or the rows above and below).
 local KEY_ROWS = { "qwertyuiop", "asdfghjkl", "zxcvbnm" }
 function M.keys_beside(x, y)
@@ -377,8 +378,11 @@ end
 function M.command_slip(c, scratch)
   local word, args = c:match("^%s*([%a]+)([%s,].*)$")
   local lw = word and word:lower()
-  if not lw or #lw < 3 or canonical_name(lw) or GLUE[lw] or keyword_set()[lw] or typos.lexicon_word(lw)
-      or scratch:get(word) then
+  if not lw or #lw < 3 or canonical_name(lw) or GLUE[lw] or keyword_set()[lw] or typos.lexicon_word(lw) then
+    return nil
+  end
+  if type(scratch) == "function" then scratch = scratch() end
+  if scratch:get(word) then
     return nil
   end
   if not command_names then
@@ -387,6 +391,15 @@ function M.command_slip(c, scratch)
       if #cmd.name >= 3 then command_names[#command_names + 1] = cmd.name:lower() end
       for _, a in ipairs(cmd.aliases or {}) do
         if #a >= 3 and a:match("^%a+$") then command_names[#command_names + 1] = a:lower() end
+      end
+    end
+    -- (the names' positions in command_names by their first letter, and by their first two letters: the only
+    -- names a word can be one slip from, its first letter kept or its first two swapped)
+    command_lead = { first = {}, two = {} }
+    for k, n in ipairs(command_names) do
+      for key, by in pairs({ [n:sub(1, 1)] = command_lead.first, [n:sub(1, 2)] = command_lead.two }) do
+        by[key] = by[key] or {}
+        by[key][#by[key] + 1] = k
       end
     end
   end
@@ -402,9 +415,21 @@ function M.command_slip(c, scratch)
     return #a > #b and a:sub(i + 1) == b:sub(i) or #a < #b and a:sub(i) == b:sub(i + 1)
   end
   local found
-  for _, n in ipairs(command_names) do
-    local lead = n:sub(1, 1) == lw:sub(1, 1) or n:sub(1, 2) == lw:sub(2, 2) .. lw:sub(1, 1)
-    local name = lead and one_edit(lw, n) and canonical_name(n)
+  -- (the names that keep the word's first letter or swap its first two, in command_names' order)
+  local kept, swapped = command_lead.first[lw:sub(1, 1)] or {}, command_lead.two[lw:sub(2, 2) .. lw:sub(1, 1)] or {}
+  local i, j = 1, 1
+  while kept[i] or swapped[j] do
+    local k
+    if swapped[j] == nil or (kept[i] and kept[i] <= swapped[j]) then
+      k = kept[i]
+      if swapped[j] == k then j = j + 1 end
+      i = i + 1
+    else
+      k = swapped[j]
+      j = j + 1
+    end
+    local n = command_names[k]
+    local name = #n - #lw <= 1 and #lw - #n <= 1 and one_edit(lw, n) and canonical_name(n)
     -- (a command of free text parses whatever follows: "eco mode on" is no ECHO)
     if name and M.free_text(name) then return nil end
     if name and name ~= found then
@@ -557,7 +582,7 @@ function M.typed(state, ctx)
     -- ("Echo Charlie Kilo Juliett Bravo, climb ..."), spells a callsign: English, not ECHO
     if lexicon.phonetic[first:lower()] and lexicon.phonetic[second:lower()] then return "english" end
     if not canonical_name(first) and not canonical_name(second) then
-      local fixed = M.command_slip(c, copy())
+      local fixed = M.command_slip(c, copy)
       if not fixed then return "english" end
       c = fixed
       cmds[k] = c
