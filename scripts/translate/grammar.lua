@@ -5300,7 +5300,10 @@ function G:segments(b, e)
       -- (the aircraft the value is said to: the last named before it, "X and Y: Aeroflot keeps level 230 and X ...")
       local named = other and self:refs_in(b, qs[1].b, "aircraft") or {}
       local first = named[#named]
-      if self.t[k].kind == "punct" or self:word(k, "@then_words") or (timed and self:word(k, "and")) or (other and other.exists
+      -- ("200 knots until MAH and after MAH 180 knots": "and" opening the value again from the same place,
+      -- G:after_place_value, parts them as a comma does)
+      if self.t[k].kind == "punct" or self:word(k, "@then_words") or (timed and self:word(k, "and"))
+          or (self:word(k, "and") and self:word(k + 1, "after") and self:after_place_value(k + 1)) or (other and other.exists
           and other.name:upper() ~= first.name:upper()) then
         -- ("BTI6AL 200 knots until ROKLA then 180": a limit until a place, the value again after it, G:until_then_value)
         if not self:word_in(qs[#qs].e, k, "@level_condition @condition") or self:until_then_value(k) then
