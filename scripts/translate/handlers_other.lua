@@ -3348,6 +3348,31 @@ return function(H, f, compass)
       if #a > 0 and not a[1].exists then name = a[1].name:upper() end
     end
     if not name then
+      -- ("define waypoint tango one at ...", "a fix named whiskey two five at ..."): phonetic letters then one to
+      -- three spoken digits straight after the noun or "named", then "at" or the position, are the name's letters
+      -- and digits (T1, W25)
+      local DIGITS = { zero = "0", one = "1", two = "2", three = "3", tree = "3", four = "4", fower = "4", five = "5",
+        fife = "5", six = "6", seven = "7", eight = "8", nine = "9", niner = "9" }
+      for k = s.trig, s.e - 2 do
+        if not name and (self:word(k, "@waypoint_nouns") or self:word(k, "@named")) then
+          local letters, digits, j = "", "", k + 1
+          while j < s.e and self.t[j].kind == "word" and L.phonetic[self.t[j].text] do
+            letters, j = letters .. L.phonetic[self.t[j].text], j + 1
+          end
+          while j < s.e and #digits < 4 and (DIGITS[self.t[j].text]
+              or (self.t[j].kind == "number" and self.t[j].text:match("^%d$"))) do
+            digits, j = digits .. (DIGITS[self.t[j].text] or self.t[j].text), j + 1
+          end
+          if #letters >= 1 and #digits >= 1 and #digits <= 3 and j < s.e
+              and (self:word(j, "at") or #self:quantities(j, j + 1) > 0) and #self:quantities(j, s.e) >= 2 then
+            name = letters .. digits
+            self:mark_used(k + 1, j)
+            self:explain(k + 1, j)
+          end
+        end
+      end
+    end
+    if not name then
       local k = self:find_word(s.b, s.e, "@named")
       -- (a name spelled in the phonetic alphabet, two letters or more, is its letters: "named kilo alpha romeo
       -- uniform" is KARU, never KILO with the rest dropped)
