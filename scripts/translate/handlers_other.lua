@@ -2555,6 +2555,18 @@ return function(H, f, compass)
     local to = closing and self:find_word(s.b, s.trig, "to go") or s.trig
     if self:word(to, "go") and self:word(s.trig - 1, "go") then to = self:find_word(s.b, s.trig - 1, "to") end
     local back = to < s.trig and self:has_ref(to + 1, s.trig, "waypoint") and self:waypoint(to + 1, s.trig, id)
+    -- ("JNA312, KWA direct go please", "KLM12 SPY direct": the place straight before the closing word, opening the
+    -- clause after its aircraft, a mark or courtesy only before it)
+    if not back and closing and to == s.trig then
+      local r = self:refs_in(s.b, s.trig, "waypoint")
+      r = r[#r]
+      local only = r ~= nil and r.e == s.trig
+      for x = s.b, only and r.b - 1 or s.b - 1 do
+        only = only and (self.t[x].kind == "punct" or self.t[x].filler or self:has_ref(x, x + 1, "aircraft")
+          or self:word(x, "please kindly"))
+      end
+      back = only and self:waypoint(r.b, s.trig, id)
+    end
     if back and go_after then self:explain(go_after, go_after + 1) end
     if back and self:word(s.trig - 1, "go") then self:explain(s.trig - 1, s.trig) end
     local wp = to_dest or point or told or added and #self:refs_in(s.trig, s.e, "waypoint") == 0
