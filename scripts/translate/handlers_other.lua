@@ -2978,7 +2978,8 @@ return function(H, f, compass)
         and k + 1
       if at and self:word(at, "it") then at = at + 1 elseif self:word(k, "call") then at = nil end
       if at and at < e and self.t[at].kind == "word" and self.t[at].raw:match("^%w+$") then
-        self:explain(k, at)
+        -- (the name read as it was said, a place's name too: "circle name JEJU make" names no place)
+        self:explain(k, at + 1)
         self:mark_used(at, at + 1)
         return self.t[at].raw:upper()
       end
