@@ -4075,7 +4075,7 @@ function G:level_opening(b)
   if levelled then k = k - 2 end
   if not (levelled or self:word(k, "passing reaching leaving") or self:bare_bound(k)) then return false end
   if self:word(k - 1, "@condition") then k = k - 1 end
-  return k == 1 or self.t[k - 1].kind == "punct" or self:word(k - 1, "and")
+  return k == 1 or self.t[k - 1].kind == "punct" or self:word(k - 1, "and") or self:bound_past_level(k)
 end
 
 -- True when "above" or "below" at k is said bare, opening a clause after a comma or "and" with no condition word
@@ -4083,7 +4083,21 @@ end
 -- (M:at_altitude reads it only when the aircraft crosses it that way, climbing into "above", descending into
 -- "below").
 function G:bare_bound(k)
-  return self:word(k, "above below") and (k == 1 or self.t[k - 1].kind == "punct" or self:word(k - 1, "and"))
+  return self:word(k, "above below") and (k == 1 or self.t[k - 1].kind == "punct" or self:word(k - 1, "and")
+    or self:bound_past_level(k))
+end
+-- True when "above" or "below" at k, said with no mark before it, follows straight after a level value that lies
+-- beyond the level said after it ("climb FL200 above one zero thousand increase speed 280": FL200 above 10000 ft, so
+-- the climb passes the bound; "below" likewise with a lower level): the level cleared is reached only through the
+-- band, so the bound opens the next clause, never the first instruction's condition.
+function G:bound_past_level(k)
+  local before = self:quantities(math.max(1, k - 6), k)
+  local p = before[#before]
+  local q = p and p.e == k and self:quantities(k + 1, math.min(#self.t + 1, k + 8))[1]
+  if not (q and q.b == self:skip_fillers(k + 1) and G.level_value(p) and G.level_value(q)) then return false end
+  local function feet(x) return (x.fl and x.value < 1000) and x.value * 100 or x.value end
+  if self:word(k, "above") then return feet(p) > feet(q) end
+  return feet(p) < feet(q)
 end
 
 -- Where a condition opened at k and said after its instruction ends, its value's quantity ending at e: at the clause
