@@ -4529,10 +4529,6 @@ function G:at_speed(s)
   -- already, as "at" says it)
   -- ("and after you reach 300 climb to 14,000": the speed reached, given already)
   local again = bare and not (noun or slowed) and self:word(q.b - 1, "at got have has reach reaches reached hit hits")
-  -- ("reduce speed two five zero, when two five zero descend FL90": the number straight after the condition word,
-  -- the speed given already, when the aircraft neither flies nor is cleared across that flight level: G:level_apart)
-  local opening = bare and not again and not (noun or slowed) and q.b == v
-  again = again or opening
   if not (q.kind == "speed" or q.kind == "mach" or (bare and (noun or slowed or again))) then return nil end
   local k = self:skip_fillers(q.e)
   while k < s.trig and ((self.t[k].kind == "punct" and self.t[k].text == ",") or self:word(k, "@condition_lead")
@@ -4547,32 +4543,10 @@ function G:at_speed(s)
   if again then
     local given = false
     for _, c in ipairs(self.out) do given = given or c == "SPD " .. ids[1] .. " " .. f.int(q.value) end
-    if not given or (opening and not self:level_apart(ids[1], q.value * 100, s)) then return nil end
+    if not given then return nil end
   end
   self:mark_used(q.b, q.e)  -- the condition's speed is not the instruction's value
   return "ATSPD " .. ids[1] .. " " .. (q.kind == "mach" and f.mach(q.value) or f.int(q.value))
-end
-
--- True when aircraft id (its state) flies more than 2000 ft from level (feet) and no level this request cleared
--- it to (self.out's ALT lines, and the levels said in segment s) lies across or within 2000 ft of it: a number said
--- as that flight level cannot be a level it passes or reaches.
-function G:level_apart(id, level, s)
-  local a = self:state(id)
-  if not (a and a.alt_ft) or math.abs(a.alt_ft - level) <= 2000 then return false end
-  local function apart(ft)
-    return ft ~= nil and math.abs(ft - level) > 2000 and (ft - level) * (a.alt_ft - level) > 0
-  end
-  for _, line in ipairs(self.out) do
-    local acid, v = line:match("^ALT (%S+) (%S+)")
-    local ft = v and (v:match("^FL(%d+)$") and tonumber(v:match("^FL(%d+)$")) * 100 or tonumber(v))
-    if acid == id and not apart(ft) then return false end
-  end
-  for _, q in ipairs(s and self:quantities(s.trig, s.e) or {}) do
-    if q.kind == "alt" or q.fl then
-      if not apart((q.fl and q.value < 1000) and q.value * 100 or q.value) then return false end
-    end
-  end
-  return true
 end
 
 -- The position after a polite or wishing opening at i that asks for what the aircraft named after it should do
