@@ -1771,6 +1771,37 @@ function G.cut_off_restarts(text)
   end
   return text
 end
+-- An instruction broken off inside its spoken value and said again whole with no hesitation between ("climb
+-- flight level two climb flight level two six zero", "speed two, speed two five zero"): two to six words, the
+-- first no digit word (DIGIT_WORDS) and the last one, then the same words again and at least one more digit
+-- word; the broken-off copy is dropped. Returns text unchanged when none is said.
+function G.unfinished_restarts(text)
+  local toks, bare = {}, {}
+  for w in text:gmatch("%S+") do
+    toks[#toks + 1] = w
+    bare[#toks] = w:lower():match("^(.-)%p*$")
+  end
+  for j = 3, #toks - 2 do
+    -- (j opens the second copy: the word before it ends a run of digit words, and it is no digit word)
+    if DIGIT_WORDS[bare[j - 1]] and not DIGIT_WORDS[bare[j]] and not toks[j - 1]:match("[.!?;]$") then
+      for n = 2, math.min(6, j - 1) do
+        local same = not DIGIT_WORDS[bare[j - n]] and DIGIT_WORDS[bare[j + n]] ~= nil
+        for x = 0, n - 1 do
+          if not same then break end
+          same = bare[j - n + x] == bare[j + x] and bare[j + x] ~= ""
+            and (x == n - 1 or not toks[j - n + x]:match("%p$"))
+        end
+        if same then
+          local out = {}
+          for k = 1, j - n - 1 do out[#out + 1] = toks[k] end
+          for k = j, #toks do out[#out + 1] = toks[k] end
+          return G.unfinished_restarts(table.concat(out, " "))
+        end
+      end
+    end
+  end
+  return text
+end
 -- True when `set` (a word set, or nil: always) holds a word of toks before the k-th (bare(j): its letters in lower
 -- case): the question an abbreviation's reading follows ("what's your speed, revert")
 function G.asked_before(set, toks, k, bare)
@@ -2114,7 +2145,7 @@ local function written_forms(text, world)
   where("@", "^@%s*(%w)", "at %1")
   -- "47,5 north", "8,5 degrees east", "factor to 1,1": a decimal comma (G.decimal_comma) is the point
   where("%d,%d", "()(%d+),(%d+)()", function(b, whole, part, e) return G.decimal_comma(text, b, whole, part, e) end)
-  text = typed_abbreviations(lone_multipliers(tokens.numerals_apart(G.cut_off_restarts(text), DIGIT_WORDS), world))
+  text = typed_abbreviations(lone_multipliers(tokens.numerals_apart(G.unfinished_restarts(G.cut_off_restarts(text)), DIGIT_WORDS), world))
   text = hyphened_types(spelled(G.spelled_letter_a(heard_forms(negated_values(G.readback_reported(readback_heard(self_corrections(G.said_but(G.cancel_corrections(unlabelled(foreign_digits(G.said_whole(G.denied_word(G.dutch_chat(G.condition_then(text))))))))))))))))
   low = text:lower()
   -- a position typed as whole degrees after the hemisphere, then minutes ("N55 50.0 W003 20.0", "S33 57
@@ -4056,7 +4087,7 @@ function G:level_opening(b)
   if levelled then k = k - 2 end
   if not (levelled or self:word(k, "passing reaching leaving") or self:bare_bound(k)) then return false end
   if self:word(k - 1, "@condition") then k = k - 1 end
-  return k == 1 or self.t[k - 1].kind == "punct" or self:word(k - 1, "and")
+  return k == 1 or self.t[k - 1].kind == "punct" or self:word(k - 1, "and") or self:bound_past_level(k)
 end
 
 -- True when "above" or "below" at k is said bare, opening a clause after a comma or "and" with no condition word
@@ -4064,7 +4095,21 @@ end
 -- (M:at_altitude reads it only when the aircraft crosses it that way, climbing into "above", descending into
 -- "below").
 function G:bare_bound(k)
-  return self:word(k, "above below") and (k == 1 or self.t[k - 1].kind == "punct" or self:word(k - 1, "and"))
+  return self:word(k, "above below") and (k == 1 or self.t[k - 1].kind == "punct" or self:word(k - 1, "and")
+    or self:bound_past_level(k))
+end
+-- True when "above" or "below" at k, said with no mark before it, follows straight after a level value that lies
+-- beyond the level said after it ("climb FL200 above one zero thousand increase speed 280": FL200 above 10000 ft, so
+-- the climb passes the bound; "below" likewise with a lower level): the level cleared is reached only through the
+-- band, so the bound opens the next clause, never the first instruction's condition.
+function G:bound_past_level(k)
+  local before = self:quantities(math.max(1, k - 6), k)
+  local p = before[#before]
+  local q = p and p.e == k and self:quantities(k + 1, math.min(#self.t + 1, k + 8))[1]
+  if not (q and q.b == self:skip_fillers(k + 1) and G.level_value(p) and G.level_value(q)) then return false end
+  local function feet(x) return (x.fl and x.value < 1000) and x.value * 100 or x.value end
+  if self:word(k, "above") then return feet(p) > feet(q) end
+  return feet(p) < feet(q)
 end
 
 -- Where a condition opened at k and said after its instruction ends, its value's quantity ending at e: at the clause
@@ -5300,7 +5345,10 @@ function G:segments(b, e)
       -- (the aircraft the value is said to: the last named before it, "X and Y: Aeroflot keeps level 230 and X ...")
       local named = other and self:refs_in(b, qs[1].b, "aircraft") or {}
       local first = named[#named]
-      if self.t[k].kind == "punct" or self:word(k, "@then_words") or (timed and self:word(k, "and")) or (other and other.exists
+      -- ("200 knots until MAH and after MAH 180 knots": "and" opening the value again from the same place,
+      -- G:after_place_value, parts them as a comma does)
+      if self.t[k].kind == "punct" or self:word(k, "@then_words") or (timed and self:word(k, "and"))
+          or (self:word(k, "and") and self:word(k + 1, "after") and self:after_place_value(k + 1)) or (other and other.exists
           and other.name:upper() ~= first.name:upper()) then
         -- ("BTI6AL 200 knots until ROKLA then 180": a limit until a place, the value again after it, G:until_then_value)
         if not self:word_in(qs[#qs].e, k, "@level_condition @condition") or self:until_then_value(k) then
@@ -12961,6 +13009,50 @@ function G:same_span(b, e)
   if to and opens and (not self.t[to] or self.t[to].kind == "punct") then return b, to end
   return nil
 end
+-- True when the words after an aircraft's "same" span [b, e) ("BAW34 same, left 20 degrees": e at the comma) up to
+-- the next aircraft or the end say the instruction again, each word and value among those of the earlier
+-- aircraft's clause (from the aircraft before r up to b): "same" then only confirms, and the aircraft takes the
+-- words said for it. False when nothing follows or a word or value differs ("same, climb FL320" after FL310).
+function G:same_restated(r, b, e)
+  if not (self.t[e] and self.t[e].kind == "punct") then return false end
+  local stop, from = #self.t + 1, 1
+  for _, o in ipairs(self.refs) do
+    if o.kind == "aircraft" and o ~= r then
+      if o.b > e and o.b < stop then stop = o.b end
+      if o.e <= b and o.e > from then from = o.e end
+    end
+  end
+  local SKIP = "please kindly and also too then degrees degree feet ft knots kts the"
+  -- (the clause's words and values, spoken digits joined into one figure: "two zero" is 20)
+  local function items(i, j)
+    local list, run = {}, nil
+    for k = i, j - 1 do
+      local t = self.t[k]
+      local w = self.words[k] or t.text
+      local digit = t.kind == "number" and w or nil
+      if not digit and DIGIT_WORDS[w] then
+        digit = ({ zero = "0", oh = "0", one = "1", two = "2", three = "3", tree = "3", four = "4", fower = "4",
+          five = "5", fife = "5", six = "6", seven = "7", eight = "8", nine = "9", niner = "9" })[w]
+      end
+      if digit then
+        run = (run or "") .. digit
+      else
+        if run then list[#list + 1] = run:gsub("^0+(%d)", "%1") run = nil end
+        if t.kind ~= "punct" and not t.filler and not self:word(k, SKIP) then list[#list + 1] = w end
+      end
+    end
+    if run then list[#list + 1] = run:gsub("^0+(%d)", "%1") end
+    return list
+  end
+  local said = {}
+  for _, w in ipairs(items(from, b)) do said[w] = true end
+  local again = items(e + 1, stop)
+  if #again == 0 then return false end
+  for _, w in ipairs(again) do
+    if not said[w] then return false end
+  end
+  return true
+end
 -- (the request's only aircraft with "too" or "as well" after it, "could you switch on VNAV for IBEX 51 as well?",
 -- is its addressee: the words point back to an earlier request, and nothing here is copied)
 function G:same_for()
@@ -12972,7 +13064,12 @@ function G:same_for()
       for _, o in ipairs(alone and self.refs or {}) do
         alone = alone and (o == r or o.kind ~= "aircraft" or not o.exists or o.false_start)
       end
-      if b and not alone then
+      if b and not alone and self:same_restated(r, b, e) then
+        -- (the instruction said again for the aircraft: its "same" words only confirm it)
+        for k = b, e - 1 do
+          if k < r.b or k >= r.e then self.t[k].filler = true end
+        end
+      elseif b and not alone then
         self:mark_used(b, e)
         r.false_start = true
         named[#named + 1] = r.name

@@ -3266,6 +3266,13 @@ function m:settle_callsigns()
       for i = r.e, nxt.b - 1 do
         between = between and (self.t[i].kind == "punct" or self.t[i].filler or self:word(i, "that that's is callsign"))
       end
+      -- ("scooter four eight one tree scooter four eight one turn right": one spoken digit slipped after the id
+      -- and before the id said again whole, the id with it no aircraft's, is the same reference)
+      if not between and nxt.b == r.e + 1 and self:word(r.e, "zero one two three tree four fower five fife six seven eight nine niner") then
+        between = not self:state(r.name .. ({ zero = 0, one = 1, two = 2, three = 3, tree = 3, four = 4, fower = 4,
+          five = 5, fife = 5, six = 6, seven = 7, eight = 8, nine = 9, niner = 9 })[self.words[r.e]])
+        if between then self:mark_used(r.e, r.e + 1) end
+      end
       if between then
         r.e = nxt.e
         table.remove(self.refs, k + 1)

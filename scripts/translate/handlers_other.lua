@@ -2585,6 +2585,18 @@ return function(H, f, compass)
     local to = closing and self:find_word(s.b, s.trig, "to go") or s.trig
     if self:word(to, "go") and self:word(s.trig - 1, "go") then to = self:find_word(s.b, s.trig - 1, "to") end
     local back = to < s.trig and self:has_ref(to + 1, s.trig, "waypoint") and self:waypoint(to + 1, s.trig, id)
+    -- ("JNA312, KWA direct go please", "KLM12 SPY direct": the place straight before the closing word, opening the
+    -- clause after its aircraft, a mark or courtesy only before it)
+    if not back and closing and to == s.trig then
+      local r = self:refs_in(s.b, s.trig, "waypoint")
+      r = r[#r]
+      local only = r ~= nil and r.e == s.trig
+      for x = s.b, only and r.b - 1 or s.b - 1 do
+        only = only and (self.t[x].kind == "punct" or self.t[x].filler or self:has_ref(x, x + 1, "aircraft")
+          or self:word(x, "please kindly"))
+      end
+      back = only and self:waypoint(r.b, s.trig, id)
+    end
     if back and go_after then self:explain(go_after, go_after + 1) end
     if back and self:word(s.trig - 1, "go") then self:explain(s.trig - 1, s.trig) end
     local wp = to_dest or point or told or added and #self:refs_in(s.trig, s.e, "waypoint") == 0
@@ -3037,7 +3049,8 @@ return function(H, f, compass)
         and k + 1
       if at and self:word(at, "it") then at = at + 1 elseif self:word(k, "call") then at = nil end
       if at and at < e and self.t[at].kind == "word" and self.t[at].raw:match("^%w+$") then
-        self:explain(k, at)
+        -- (the name read as it was said, a place's name too: "circle name JEJU make" names no place)
+        self:explain(k, at + 1)
         self:mark_used(at, at + 1)
         return self.t[at].raw:upper()
       end
@@ -3417,6 +3430,31 @@ return function(H, f, compass)
     if not name then
       local a = self:refs_in(s.b, s.e, "aircraft")  -- "EXIT1" reads like an id
       if #a > 0 and not a[1].exists then name = a[1].name:upper() end
+    end
+    if not name then
+      -- ("define waypoint tango one at ...", "a fix named whiskey two five at ..."): phonetic letters then one to
+      -- three spoken digits straight after the noun or "named", then "at" or the position, are the name's letters
+      -- and digits (T1, W25)
+      local DIGITS = { zero = "0", one = "1", two = "2", three = "3", tree = "3", four = "4", fower = "4", five = "5",
+        fife = "5", six = "6", seven = "7", eight = "8", nine = "9", niner = "9" }
+      for k = s.trig, s.e - 2 do
+        if not name and (self:word(k, "@waypoint_nouns") or self:word(k, "@named")) then
+          local letters, digits, j = "", "", k + 1
+          while j < s.e and self.t[j].kind == "word" and L.phonetic[self.t[j].text] do
+            letters, j = letters .. L.phonetic[self.t[j].text], j + 1
+          end
+          while j < s.e and #digits < 4 and (DIGITS[self.t[j].text]
+              or (self.t[j].kind == "number" and self.t[j].text:match("^%d$"))) do
+            digits, j = digits .. (DIGITS[self.t[j].text] or self.t[j].text), j + 1
+          end
+          if #letters >= 1 and #digits >= 1 and #digits <= 3 and j < s.e
+              and (self:word(j, "at") or #self:quantities(j, j + 1) > 0) and #self:quantities(j, s.e) >= 2 then
+            name = letters .. digits
+            self:mark_used(k + 1, j)
+            self:explain(k + 1, j)
+          end
+        end
+      end
     end
     if not name then
       local k = self:find_word(s.b, s.e, "@named")

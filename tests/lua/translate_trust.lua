@@ -18437,3 +18437,48 @@ do
   check_eq(ex("EZY481 direct TOLKO after TOLKO heading 200"), "DIRECT EZY481 TOLKO ; AT EZY481 TOLKO DO HDG EZY481 200")
   check_eq(ex("AFR209 heading 230 then direct MERSA"), "HDG AFR209 230 ; ADDWPT AFR209 MERSA ; DIRECT AFR209 MERSA")
 end
+-- Cycle 59 (f18y): the practice rounds' leftovers: an instruction broken off in its spoken value and said again
+-- whole; "B same, <the instruction said again>"; a bare value kept until a place "and after" the same place another;
+-- a waypoint's name as phonetic letters and spoken digits; the place
+-- straight before a closing "direct"; a shape's name that is also a place's; "above/below" a level the climb or
+-- descent before it passes, said with no mark
+do
+  local _, ex = scene({ "DEFWPT ROKAN 48.1 11.2", "DEFWPT SELDA 48.4 11.6", "CRE AFR12 A320 48.0 11.0 090 FL120 280",
+    "ADDWPT AFR12 ROKAN", "ADDWPT AFR12 SELDA", "CRE DLH4 A321 48.5 11.5 270 FL300 300",
+    "CRE SAS77 B738 48.3 11.9 180 FL060 250" })
+  -- the broken-off copy dropped; said alone it stays asked
+  check_eq(ex("Air France 12 climb flight level one climb flight level one five zero"), "ALT AFR12 FL150")
+  check_eq(ex("Lufthansa 4, reduce speed two, reduce speed two six zero please"), "SPD DLH4 260")
+  asked(ex("Air France 12 climb flight level one"), "FL1")
+  -- "same" then the words again: each aircraft's own change; other words or values than the first's stay asked
+  check_eq(ex("Air France 12 turn right 15 degrees, Lufthansa 4 same, right 15 degrees"),
+    "HDG AFR12 105 RIGHT ; HDG DLH4 285 RIGHT")
+  asked(ex("Air France 12 turn right 15 degrees, Lufthansa 4 same, right 25 degrees"), "25 is not the same")
+  asked(ex("Air France 12 climb FL150, Lufthansa 4 same, climb FL310"), "FL310 is not the same")
+  -- a bare speed until a place, "and after" the same place another
+  check_eq(ex("Air France 12 210 knots till SELDA and after SELDA 190 knots"),
+    "SPD AFR12 210 ; AT AFR12 SELDA DO SPD AFR12 190")
+  asked(ex("Air France 12 210 knots till SELDA and after ROKAN 190 knots"), "another place")
+  -- "when" and the speed given, bare, with no "at" stays asked (the decision kept: "when 180" is asked)
+  asked(ex("Air France 12 reduce speed two four zero, when two four zero descend FL080"), "no 'at'")
+  -- a waypoint's name in phonetic letters and digits; a letter alone stays asked
+  check_eq(ex("define waypoint tango one at 48.2 north 11.4 east"), "DEFWPT T1 48.2 11.4")
+  check_eq(ex("please make a fix named kilo seven two at 48.25 11.45"), "DEFWPT K72 48.25 11.45")
+  asked(ex("define waypoint tango at 48.2 north 11.4 east"), "no name")
+  -- the place straight before a closing "direct"; a word of position before it stays asked
+  check_eq(ex("SAS77 ROKAN direct go please"), "ADDWPT SAS77 ROKAN ; DIRECT SAS77 ROKAN")
+  asked(ex("SAS77 over ROKAN direct"), "over ROKAN")
+  -- a shape's name that is a place's too is the name
+  check_eq(ex("circle name MUNICH make, center 48.3 north 11.7 east, radius 20 mile"), "CIRCLE MUNICH 48.3 11.7 20")
+  -- "above" a level the climb passes, "below" one the descent passes, opens the next clause; otherwise asked
+  check_eq(ex("SAS77 climb flight level one five zero above one zero thousand increase speed two eight zero"),
+    "ALT SAS77 FL150 ; ATALT SAS77 10000 SPD SAS77 280")
+  check_eq(ex("Lufthansa 4 descend FL120 below FL200 reduce speed 260"),
+    "ALT DLH4 FL120 ; ATALT DLH4 FL200 SPD DLH4 260")
+  asked(ex("Lufthansa 4 descend FL120 above FL200 reduce speed 260"), "above a level it leaves")
+  asked(ex("SAS77 climb 8000 feet above 10000 feet increase speed 280"), "10000 ft is past 8000 ft")
+  -- a spoken digit slipped between the id and the id said again whole; the slip alone stays asked
+  check_eq(ex("Scandinavian seven seven two Scandinavian seven seven, turn left heading two four zero"),
+    "HDG SAS77 240 LEFT")
+  asked(ex("Scandinavian seven seven two, turn left heading two four zero"), "SAS772 is no aircraft")
+end
