@@ -1761,15 +1761,19 @@ function G.cut_off_restarts(text)
         end
         local word = bare(j + n)
         if same and word and #word > #frag and word:sub(1, #frag) == frag then
-          local out = {}
-          for k = 1, f - n - 1 do out[#out + 1] = toks[k] end
-          for k = j, #toks do out[#out + 1] = toks[k] end
-          return G.cut_off_restarts(table.concat(out, " "))
+          return G.cut_off_restarts(G.words_without(toks, f - n, j - 1))
         end
       end
     end
   end
   return text
+end
+-- The words of toks joined by single spaces, less those at positions a to b
+function G.words_without(toks, a, b)
+  local out = {}
+  for k = 1, a - 1 do out[#out + 1] = toks[k] end
+  for k = b + 1, #toks do out[#out + 1] = toks[k] end
+  return table.concat(out, " ")
 end
 -- An instruction broken off inside its spoken value and said again whole with no hesitation between ("climb
 -- flight level two climb flight level two six zero", "speed two, speed two five zero"): two to six words, the
@@ -1791,12 +1795,7 @@ function G.unfinished_restarts(text)
           same = bare[j - n + x] == bare[j + x] and bare[j + x] ~= ""
             and (x == n - 1 or not toks[j - n + x]:match("%p$"))
         end
-        if same then
-          local out = {}
-          for k = 1, j - n - 1 do out[#out + 1] = toks[k] end
-          for k = j, #toks do out[#out + 1] = toks[k] end
-          return G.unfinished_restarts(table.concat(out, " "))
-        end
+        if same then return G.unfinished_restarts(G.words_without(toks, j - n, j - 1)) end
       end
     end
   end

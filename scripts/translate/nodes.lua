@@ -526,16 +526,19 @@ function M.typed(state, ctx)
     scratch = scratch or ctx.sim:copy()
     return scratch
   end
+  -- true when `line` (a command that shows a state) checks against the copy: it becomes the candidate, traced `why`
+  local function shown_by(line, why)
+    if not copy():check(line) then return false end
+    state.candidate, state.source = line, "typed"
+    M.say(state, "typed", why .. ": shown by " .. line)
+    return true
+  end
   -- "zoner?", "reso?": a setting's command name asked about alone is that command with no argument, which
   -- shows the setting (only a command whose arguments are all optional; "hold?" runs nothing)
   local asked = #cmds == 1 and cmds[1]:match("^%s*([%a_]+)%s*%?%s*$")
   local shown = asked and canonical_name(asked)
-  if shown and (usage_of(shown) or ""):match("^%S+%s+%[") then
-    if copy():check(shown) then
-      state.candidate, state.source = shown, "typed"
-      M.say(state, "typed", "a setting asked about: shown by " .. shown)
-      return "trafscript"
-    end
+  if shown and (usage_of(shown) or ""):match("^%S+%s+%[") and shown_by(shown, "a setting asked about") then
+    return "trafscript"
   end
   -- "dlh2ta lnav?", "vnav klm12?": an aircraft's switch asked about with its command name, the aircraft before or
   -- after it, is that command with the aircraft alone, which shows it (only a command whose arguments after the
@@ -546,10 +549,7 @@ function M.typed(state, ctx)
   local asked_acid = asked_name and (canonical_name(w1) and w2 or w1)
   if asked_name and not (canonical_name(w1) and canonical_name(w2))
       and (usage_of(asked_name) or ""):match("^%S+%s+acid,%[") and copy():get(asked_acid) then
-    local line = asked_name .. " " .. asked_acid:upper()
-    if copy():check(line) then
-      state.candidate, state.source = line, "typed"
-      M.say(state, "typed", "an aircraft's setting asked about: shown by " .. line)
+    if shown_by(asked_name .. " " .. asked_acid:upper(), "an aircraft's setting asked about") then
       return "trafscript"
     end
   end
