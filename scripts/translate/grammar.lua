@@ -8049,6 +8049,11 @@ function G:at_waypoint(s, spec)
           spd = q
         else other = true end
       end
+      -- ("cross T12 at 3600 metres": a level in metres is the constraint at the nearest 100 ft, as a clearance in
+      -- metres is)
+      if alt and alt.kind == "alt" and not alt.fl and self:word(alt.e - 1, "@metres") then
+        alt = setmetatable({ value = math.floor(alt.value / 100 + 0.5) * 100 }, { __index = alt })
+      end
       -- "cross DIK at FL110, speed 250 knots", "cross DIK at FL110 speed 250": a speed said with no verb after the
       -- crossing's level, in a clause of its own, is the crossing's or one for now: asked, never flown at once
       local j = s.e
@@ -14442,18 +14447,28 @@ end
 -- "direct test one", "add test 2 to the route": a waypoint the user defined (world.waypoints) whose name is letters
 -- then digits (TEST1, WP12), said as its letters' word then each digit (as a word, SAID_DIGIT, or a numeral), is that
 -- name; a digit more after them ("test one two" with TEST1 only) leaves the words as said. The letters may be spelled
--- in the phonetic alphabet, one word a letter ("direct tango one two", "papa three seven" for T12, P37).
+-- in the phonetic alphabet, one word a letter ("direct tango one two", "papa three seven", "tango 12" for T12, P37),
+-- for such a name the user defined or one on the route of an aircraft flying.
 function G.spoken_user_waypoints(text, world)
-  local spoken = {}
-  for _, n in ipairs(world.waypoints or {}) do
+  local spoken, spelled = {}, {}
+  local function know(set, n)
     local letters, digits = n:match("^(%a+)(%d%d?%d?)$")
     if letters then
       local l = letters:lower()
-      spoken[l] = spoken[l] or {}
-      spoken[l][digits] = n:upper()
+      set[l] = set[l] or {}
+      set[l][digits] = n:upper()
     end
   end
-  if not next(spoken) then return text end
+  for _, n in ipairs(world.waypoints or {}) do
+    know(spoken, n)
+    know(spelled, n)
+  end
+  for _, a in ipairs(world.aircraft or {}) do
+    for _, n in ipairs(a.route or {}) do
+      if #n <= 6 then know(spelled, n) end
+    end
+  end
+  if not (next(spoken) or next(spelled)) then return text end
   local toks, bare = plain_words(text)
   local function digit(k) return bare[k] and (SAID_DIGIT[bare[k]] or bare[k]:match("^%d$")) end
   return tokens.rewrite(text, toks, function(i)
@@ -14465,13 +14480,17 @@ function G.spoken_user_waypoints(text, world)
       while lexicon.phonetic[bare[k] or ""] and #letters < 3 and (k == i or not toks[k - 1]:match("%p$")) do
         letters, k = letters .. lexicon.phonetic[bare[k]]:lower(), k + 1
       end
-      names = not lexicon.phonetic[bare[k] or ""] and spoken[letters]
+      names = not lexicon.phonetic[bare[k] or ""] and spelled[letters]
       if names and toks[k - 1]:match("%p$") then return nil end
     elseif names and toks[i]:match("%p$") then
       return nil
     end
     if not names then return nil end
     local digits = ""
+    -- (the digits typed as one numeral: "tango 12")
+    if bare[k] and bare[k]:match("^%d%d%d?$") and names[bare[k]] and not digit(k + 1) then
+      return names[bare[k]] .. (toks[k]:match("%p+$") or ""), k + 1
+    end
     while digit(k) and #digits < 3 do
       digits, k = digits .. digit(k), k + 1
       if toks[k - 1]:match("%p$") then break end
