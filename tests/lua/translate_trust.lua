@@ -18487,12 +18487,13 @@ end
 -- crossings; "height" before a typed level; a bare "passing FIX" and a speed with its noun; "make new point"
 do
   local _, ex = scene({ "DEFWPT P21 40.45 116.30", "DEFWPT T12 40.20 117.15", "DEFWPT K7 40.0 116.8",
-    "CRE CCA1337 A321 40.80 116.10 140 12800 260", "ADDWPT CCA1337 P21", "ADDWPT CCA1337 PEK",
-    "CRE CDG4727 B738 40.50 117.60 250 14800 260", "ADDWPT CDG4727 T12", "ADDWPT CDG4727 PEK",
-    "CRE CSN3352 A333 40.45 116.70 190 26600 280", "ADDWPT CSN3352 K7", "ADDWPT CSN3352 PEK" })
+    "DEFWPT BEIJI 40.07 116.59",
+    "CRE CCA1337 A321 40.80 116.10 140 12800 260", "ADDWPT CCA1337 P21", "ADDWPT CCA1337 BEIJI",
+    "CRE CDG4727 B738 40.50 117.60 250 14800 260", "ADDWPT CDG4727 T12", "ADDWPT CDG4727 BEIJI",
+    "CRE CSN3352 A333 40.45 116.70 190 26600 280", "ADDWPT CSN3352 K7", "ADDWPT CSN3352 BEIJI" })
   -- a user point said as phonetic letters and digits; a digit more or fewer, or a letter alone, stays asked
   check_eq(ex("Shandong 4727 proceed direct to tango one two"), "DIRECT CDG4727 T12")
-  check_eq(ex("CCA1337 after papa two one, direct PEK"), "AT CCA1337 P21 DO DIRECT CCA1337 PEK")
+  check_eq(ex("CCA1337 after papa two one, direct BEIJI"), "AT CCA1337 P21 DO DIRECT CCA1337 BEIJI")
   check_eq(ex("China Southern 3352 delete waypoint kilo seven"), "DELWPT CSN3352 K7")
   check_eq(ex("CDG4727 cross tango one two at 3900 metres"), "AT CDG4727 T12 ALT 12800")
   asked(ex("CDG4727 direct tango one two three"), "T123 is no point")
@@ -18515,12 +18516,12 @@ do
   asked(ex("CSN3352 run faster"), "the aircraft's speed")
   -- metres in a creation: the nearest 100 ft ("height" before the typed level is its noun; a heading said
   -- digit by digit with "height" as its third digit stays 338)
-  check_eq(ex("create Air China 981, B738 at PEK heading two seven zero height 5100 metres speed 260"),
-    "CRE CCA981 B738 PEK 270 16700 260")
-  check_eq(ex("make one China Eastern 5102, A320, at PEK heading 090, level 8900 metres, 280 knots"),
-    "CRE CES5102 A320 PEK 90 29200 280")
-  check_eq(ex("create CCA982 B738 at PEK heading tree tree height 10000 feet 250 knots"),
-    "CRE CCA982 B738 PEK 338 10000 250")
+  check_eq(ex("create Air China 981, B738 at BEIJI heading two seven zero height 5100 metres speed 260"),
+    "CRE CCA981 B738 BEIJI 270 16700 260")
+  check_eq(ex("make one China Eastern 5102, A320, at BEIJI heading 090, level 8900 metres, 280 knots"),
+    "CRE CES5102 A320 BEIJI 90 29200 280")
+  check_eq(ex("create CCA982 B738 at BEIJI heading tree tree height 10000 feet 250 knots"),
+    "CRE CCA982 B738 BEIJI 338 10000 250")
   -- "passing FIX" opening the request, a speed with its noun after: started there; a bare level stays asked
   check_eq(ex("CDG4727 passing tango one two speed two two zero"), "AT CDG4727 T12 DO SPD CDG4727 220")
   asked(ex("CDG4727 passing tango one two FL120"), "met there or started there")
