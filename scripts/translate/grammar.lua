@@ -1730,7 +1730,7 @@ for abbr, readings in pairs(lexicon.typed_abbreviations) do
   for _, a in ipairs(readings.word and { readings } or readings) do
     table.insert(ABBREVIATIONS[abbr], { word = a.word, next = a.next and word_set(a.next, 1),
       prev = a.prev and word_set(a.prev, 1), not_prev = a.not_prev and word_set(a.not_prev, 1),
-      not_next = a.not_next and word_set(a.not_next, 1),
+      not_next = a.not_next and word_set(a.not_next, 1), full_run = a.full_run,
       after_next = a.after_next and word_set(a.after_next, 1), hundreds = a.hundreds, caps_kept = a.caps_kept,
       asked_before = a.asked_before and word_set(a.asked_before, 1) })
   end
@@ -1810,6 +1810,14 @@ function G.asked_before(set, toks, k, bare)
   end
   return false
 end
+-- True when reading a's not_next holds before the k-th word: always, or with `full_run` (a count of words) only when
+-- that many words before it all fit its prev ("three three zero height 5100": a heading's three digits said whole)
+function G.full_run(a, fits, k)
+  for j = 1, a.full_run or 0 do
+    if not fits(a.prev, k - j) then return false end
+  end
+  return true
+end
 local function typed_abbreviations(text)
   -- (a word typed of letters alone is one of its runs of letters: with none an abbreviation, none is read)
   local typed = false
@@ -1846,7 +1854,8 @@ local function typed_abbreviations(text)
       if not (a.caps_kept and letters:match("^%u%u+$")) and (not a.next or fits(a.next, k + 1))
           and (not a.prev or fits(a.prev, k - 1))
           and (not a.after_next or fits(a.after_next, k + 2)) and not (a.not_prev and fits(a.not_prev, k - 1))
-          and not (a.not_next and fits(a.not_next, k + 1)) and G.asked_before(a.asked_before, toks, k, bare) then
+          and not (a.not_next and fits(a.not_next, k + 1) and G.full_run(a, fits, k))
+          and G.asked_before(a.asked_before, toks, k, bare) then
         toks[k], changed = a.word .. punct, true
         if a.hundreds and punct == "" then in_hundreds(k + 1) end
         break
@@ -4052,7 +4061,8 @@ local ARRIVING = {}
 for w in ([[it it's its he he's she she's they they're you you're you've is are 's 're has have 've had been be
   pass passes passed passing past reach reaches reached reaching hit hits hitting get gets got getting to at level
   through cross crosses crossed crossing down up below above under over drop drops dropped climbs climbed
-  descends descended slows slowed slow accelerates accelerated decelerates decelerated out of leaves left
+  descends descended slows slowed slow slowing accelerates accelerated accelerating decelerates decelerated decelerating
+  reducing reduced out of leaves left
   leaving become becomes became established]]):gmatch("%S+") do ARRIVING[w] = true end
 
 local LINKING = {}
@@ -7938,8 +7948,10 @@ function G:at_waypoint(s, spec)
     -- ("passing VURAL descending FL100", no "when" or "after": a pilot's report, no instruction)
     -- ("when passing KV speed 230", "once past GIVMI 250 knots": a clause that passes the waypoint before its
     -- value, as "after" does)
+    -- ("passing IDUMA speed 220": a bare "passing" opening the request's clause, its "when" left out, the same)
     local passed_first = self:word(first, "after") or self.place_passes or (self:word(first, "when on upon once")
       and self:word(self:skip_fillers(first + 1), "passing past overflying leaving"))
+      or (self:word(first, "passing") and r.b == self:skip_fillers(first + 1))
     -- ("at UPALA then FL120", "at ELDAR, then speed 250": "then" after the opening waypoint says what follows
     -- is done there, no constraint)
     local re = opened and self.place_passed_e or r.e
@@ -8036,6 +8048,11 @@ function G:at_waypoint(s, spec)
             or (q.kind == "plain" and alt and self:skip_fillers(alt.e) == q.b and q.value >= 100 and q.value <= 400)) then
           spd = q
         else other = true end
+      end
+      -- ("cross T12 at 3600 metres": a level in metres is the constraint at the nearest 100 ft, as a clearance in
+      -- metres is)
+      if alt and alt.kind == "alt" and not alt.fl and self:word(alt.e - 1, "@metres") then
+        alt = setmetatable({ value = math.floor(alt.value / 100 + 0.5) * 100 }, { __index = alt })
       end
       -- "cross DIK at FL110, speed 250 knots", "cross DIK at FL110 speed 250": a speed said with no verb after the
       -- crossing's level, in a clause of its own, is the crossing's or one for now: asked, never flown at once
@@ -14429,24 +14446,51 @@ function G.heard_nowhere_else(w, name, world)
 end
 -- "direct test one", "add test 2 to the route": a waypoint the user defined (world.waypoints) whose name is letters
 -- then digits (TEST1, WP12), said as its letters' word then each digit (as a word, SAID_DIGIT, or a numeral), is that
--- name; a digit more after them ("test one two" with TEST1 only) leaves the words as said.
+-- name; a digit more after them ("test one two" with TEST1 only) leaves the words as said. The letters may be spelled
+-- in the phonetic alphabet, one word a letter ("direct tango one two", "papa three seven", "tango 12" for T12, P37),
+-- for such a name the user defined or one on the route of an aircraft flying.
 function G.spoken_user_waypoints(text, world)
-  local spoken = {}
-  for _, n in ipairs(world.waypoints or {}) do
+  local spoken, spelled = {}, {}
+  local function know(set, n)
     local letters, digits = n:match("^(%a+)(%d%d?%d?)$")
     if letters then
       local l = letters:lower()
-      spoken[l] = spoken[l] or {}
-      spoken[l][digits] = n:upper()
+      set[l] = set[l] or {}
+      set[l][digits] = n:upper()
     end
   end
-  if not next(spoken) then return text end
+  for _, n in ipairs(world.waypoints or {}) do
+    know(spoken, n)
+    know(spelled, n)
+  end
+  for _, a in ipairs(world.aircraft or {}) do
+    for _, n in ipairs(a.route or {}) do
+      if #n <= 6 then know(spelled, n) end
+    end
+  end
+  if not (next(spoken) or next(spelled)) then return text end
   local toks, bare = plain_words(text)
   local function digit(k) return bare[k] and (SAID_DIGIT[bare[k]] or bare[k]:match("^%d$")) end
   return tokens.rewrite(text, toks, function(i)
-    local names = spoken[bare[i]]
-    if not names or toks[i]:match("%p$") then return nil end
-    local digits, k = "", i + 1
+    local names, k = spoken[bare[i]], i + 1
+    if not names and lexicon.phonetic[bare[i]] then
+      -- (letters spelled: each word of the phonetic alphabet, no mark between)
+      local letters = ""
+      k = i
+      while lexicon.phonetic[bare[k] or ""] and #letters < 3 and (k == i or not toks[k - 1]:match("%p$")) do
+        letters, k = letters .. lexicon.phonetic[bare[k]]:lower(), k + 1
+      end
+      names = not lexicon.phonetic[bare[k] or ""] and spelled[letters]
+      if names and toks[k - 1]:match("%p$") then return nil end
+    elseif names and toks[i]:match("%p$") then
+      return nil
+    end
+    if not names then return nil end
+    local digits = ""
+    -- (the digits typed as one numeral: "tango 12")
+    if bare[k] and bare[k]:match("^%d%d%d?$") and names[bare[k]] and not digit(k + 1) then
+      return names[bare[k]] .. (toks[k]:match("%p+$") or ""), k + 1
+    end
     while digit(k) and #digits < 3 do
       digits, k = digits .. digit(k), k + 1
       if toks[k - 1]:match("%p$") then break end

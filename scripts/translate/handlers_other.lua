@@ -449,7 +449,17 @@ return function(H, f, compass)
       if q.kind == "heading" and not hdg then hdg = q.value end
       -- "flying 300 deg": an angle with no turn is the heading
       if q.kind == "angle" and q.turn == 0 and not hdg and q.value >= 0 and q.value <= 360 then hdg = q.value end
-      if q.kind == "alt" and not alt then alt, fl, level_q = q.value, q.fl, q.fl and q or nil end
+      if q.kind == "alt" and not alt then
+        alt, fl, level_q = q.value, q.fl, q.fl and q or nil
+        -- a level in metres, "height 5100 metres", "level 8900 metres" (China's metric level named "level"):
+        -- converted to feet, the nearest 100 ft, as a clearance in metres is
+        local metres_after = q.fl and q.value >= 1000 and q.value <= 18000 and self:word(q.e, "@metres")
+        if metres_after or (not q.fl and self:word(q.e - 1, "@metres")) then
+          if metres_after then self:mark_used(q.b, q.e + 1) end
+          alt = math.floor((metres_after and q.value / 0.3048 or q.value) / 100 + 0.5) * 100
+          fl, level_q = false, nil
+        end
+      end
       if q.kind == "speed" and not spd and not mach then spd = q.value end
       if q.kind == "mach" and not spd and not mach then mach = q.value end
     end
@@ -3432,13 +3442,13 @@ return function(H, f, compass)
       if #a > 0 and not a[1].exists then name = a[1].name:upper() end
     end
     if not name then
-      -- ("define waypoint tango one at ...", "a fix named whiskey two five at ..."): phonetic letters then one to
-      -- three spoken digits straight after the noun or "named", then "at" or the position, are the name's letters
-      -- and digits (T1, W25)
+      -- ("define waypoint tango one at ...", "a fix named whiskey two five at ...", "make new point tango five at
+      -- ..."): phonetic letters then one to three spoken digits straight after the noun ("point" too) or "named",
+      -- then "at" or the position, are the name's letters and digits (T1, W25, T5)
       local DIGITS = { zero = "0", one = "1", two = "2", three = "3", tree = "3", four = "4", fower = "4", five = "5",
         fife = "5", six = "6", seven = "7", eight = "8", nine = "9", niner = "9" }
       for k = s.trig, s.e - 2 do
-        if not name and (self:word(k, "@waypoint_nouns") or self:word(k, "@named")) then
+        if not name and (self:word(k, "@waypoint_nouns point") or self:word(k, "@named")) then
           local letters, digits, j = "", "", k + 1
           while j < s.e and self.t[j].kind == "word" and L.phonetic[self.t[j].text] do
             letters, j = letters .. L.phonetic[self.t[j].text], j + 1
@@ -4534,6 +4544,25 @@ return function(H, f, compass)
     for _, p in ipairs(self:quantities(k + 1, s.b)) do
       if p.kind == "mult" and not self.taken[p.b] then
         self:take(p)
+        return self:emit("DTMULT " .. f.num(p.value))
+      end
+    end
+    -- "run faster please, 5 times": the factor said after a comma straight after the segment, closing the
+    -- request (courtesy and marks only after it)
+    local after = s.e
+    while self.t[after] and ((self.t[after].kind == "punct" and self.t[after].text == ",") or self.t[after].filler
+        or self:word(after, "please")) do
+      after = after + 1
+    end
+    local p = after > s.e and self:quantities(after, #self.t + 1)[1]
+    if p and p.b == after and p.kind == "mult" and not self.taken[p.b] then
+      local rest = p.e
+      while self.t[rest] and (self.t[rest].kind == "punct" or self.t[rest].filler or self:word(rest, "please")) do
+        rest = rest + 1
+      end
+      if rest > #self.t then
+        self:take(p)
+        self:mark_used(s.e, p.e)
         return self:emit("DTMULT " .. f.num(p.value))
       end
     end

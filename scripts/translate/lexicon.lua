@@ -626,7 +626,8 @@ return {
   -- "fl180" too; "#place": see pd; "#start": the line's first word or one after punctuation, for `prev`; "#end":
   -- none, the abbreviation closing its clause, for `next`);
   -- `after_next`, the same of the word after next (a callsign between: "trn hop7 rgt 20"); a list of such
-  -- readings is tried in order; `not_prev` / `not_next`, words before / after it that keep it as typed; `hundreds`, a verb of a level change
+  -- readings is tried in order; `not_prev` / `not_next`, words before / after it that keep it as typed (with
+  -- `full_run`, a count, not_next keeps it only after that many words of `prev` in a row); `hundreds`, a verb of a level change
   -- typed short, after which two typed digits of 30 to 99 are hundreds of feet as on a flight strip ("dn 60":
   -- 6000 ft; "dn 12", 1200 ft or 12000 with a digit lost, stays as typed, and asked); "#name", for `next`, a
   -- word of two to five letters in any case (a fix's ident typed in lower case). Elsewhere it stays as typed ("direct
@@ -721,6 +722,8 @@ return {
     -- French-accented English typed as heard: the h dropped ("turn left 'eading 060", "say 'eading"), the vowel
     -- of "turn" ("tourn left"), "ze" and "zen" for "the" and "then" ("pause ze simulation"), and "height" for "eight" inside a number
     -- said digit by digit or before "thousand"/"hundred" ("tree tree height", "descend to height thousand";
+    -- after three digits said and before a typed number "height" is the level's noun: "heading three three zero
+    -- height 5100 metres", "tree tree height 10000 feet" heading 338;
     -- elsewhere "height" is the altitude's name and stays)
     -- Nigerian Pidgin in a Nigerian or Ghanaian controller's English: "wan" is "want" ("i wan check something";
     -- "dey", the verb "be", is an auxiliary)
@@ -728,7 +731,8 @@ return {
     eading = { word = "heading" }, tourn = { word = "turn" },
     ze = { word = "the", caps_kept = true }, zen = { word = "then", caps_kept = true },
     height = { { word = "eight", next = "thousand hundred" },
-               { word = "eight", prev = "zero one two three tree four fower five fife six seven eight nine niner" } },
+               { word = "eight", prev = "zero one two three tree four fower five fife six seven eight nine niner",
+                 not_next = "#number", full_run = 3 } },
     -- Scots words, each read as the one English word it stands for ("gie it 250 knots", "slow it tae 230", "send
     -- it intae Newcastle", "drop ROBEM fae the route", "move it back oot", "whit level's the KLM at", "the A320 wi
     -- the Lufthansa colours", "descend FL70, naw, FL80", "haud on", "nae rush", "och", "aye, take the Loganair
@@ -815,7 +819,8 @@ return {
   speed_direction_verbs = { "reduce", "reducing", "decrease", "decreasing", "increase", "increasing", "accelerate",
                             "decelerate", "slow", "slowing", "add", "up", "down", "faster", "slower" },
   -- verbs that make a bare number in a condition a speed ("once AFR1023 slows to 250")
-  speed_verbs = { "slows", "slowed", "slow", "accelerates", "accelerated", "decelerates", "decelerated" },
+  speed_verbs = { "slows", "slowed", "slow", "slowing", "accelerates", "accelerated", "accelerating", "decelerates",
+    "decelerated", "decelerating", "reducing", "reduced" },
   -- words before a level that make the next instruction wait for it
   -- ("when passing flight level 130 reduce speed 250": ATALT)
   level_condition = { "when", "once", "passing", "leaving", "reaching", "after" },
@@ -2413,6 +2418,12 @@ return {
     -- looking 8 minutes in front", "mirando 8 minutos adelante")
     { heard = { "looking" }, means = "look-ahead", between = { { "detection", "probe", "asas" }, { "#number" } } },
     { heard = { "in front" }, means = "ahead", after = { "minutes", "minute", "mins", "min", "seconds", "secs" } },
+    -- (a Chinese controller's words for the detection, "冲突探测" said word for word: "turn on the conflict detect",
+    -- and "打开"/"关闭" as "open"/"close" straight after the module switched: "conflict detect close", "conflict
+    -- detection open")
+    { heard = { "detect" }, means = "detection", after = { "conflict", "conflicts" } },
+    { heard = { "close", "closed" }, means = "off", after = { "detection", "detect", "asas", "cdr", "reso" } },
+    { heard = { "open", "opened" }, means = "on", after = { "detection", "detect", "asas", "cdr", "reso" } },
   },
   -- A language said whole by a controller or instructor ("vire a la izquierda rumbo 170", "borra el iberia
   -- 6253", "montez au niveau 140", "tournez à gauche cap 030"), read as its English word for word (grammar.lua

@@ -815,6 +815,10 @@ return function(intent, rule, words)
          when = function(g, i) return not (g:word(i - 1, "and") and g:word(i + 1, "forward")) end }
   rule { "fast faster slower", "dtmult", prev = { 4, "@sim" }, not_near = { 1, "forward" } }  -- ("fast-forward": FF)
   rule { "faster slower", false, prev = { 2, "times x" } }
+  -- "run faster please, 5 times", "run slower": the clock's rate, "run" straight before the comparative, with no
+  -- aircraft named in the request
+  rule { "faster slower", "dtmult", prev = { 1, "run" },
+         when = function(g) return not g:has_ref(1, #g.t + 1, "aircraft") end }
   -- "the Shuttle is a bit slow": a description ("X is to slow down to 220 knots": the verb after "to", an instruction)
   rule { "slow fast", false, prev = { 3, "is it's are was isn't" },
          when = function(g, i) return not g:word(i - 1, "to") end }
@@ -1021,10 +1025,12 @@ return function(intent, rule, words)
   rule { "fix point gate entry exit", "defwpt", not_prev = { 3, "put place create make add define" }, when = function(g, i)
     return (g:preceded_by(i, 3, "new reference target") or g:followed_by(i, 2, "@named")) and new_fix_at(g, i)
   end }
-  -- ("put a new waypoint in called GEELO at 38 10 south 144 21 east": a waypoint said new, likewise)
+  -- ("put a new waypoint in called GEELO at 38 10 south 144 21 east": a waypoint said new, likewise; "make new
+  -- point tango five at ...", the article left out)
   rule { "put place create make add", "defwpt", when = function(g, i)
-    return g:word(i + 1, "the a an") and g:word(i + 2, "new")
-      and g:followed_by(i + 2, 4, "fix point gate entry exit @waypoint_nouns")
+    local n = g:word(i + 1, "the a an") and i + 2 or i + 1
+    return g:word(n, "new")
+      and g:followed_by(n, 4, "fix point gate entry exit @waypoint_nouns")
       and new_fix_at(g, i, 11)
   end }
   -- "add a waypoint called ENTRY at 52 N 3.5 E": a new waypoint, when no flying aircraft is named

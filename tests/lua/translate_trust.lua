@@ -18482,3 +18482,49 @@ do
     "HDG SAS77 240 LEFT")
   asked(ex("Scandinavian seven seven two, turn left heading two four zero"), "SAS772 is no aircraft")
 end
+-- Cycle 60 (f197): a Chinese controller's English: user points spelled in the phonetic alphabet with their digits;
+-- "after slowing to" a speed; "conflict detect", "open"/"close"; "run faster, N times"; metres in creations and
+-- crossings; "height" before a typed level; a bare "passing FIX" and a speed with its noun; "make new point"
+do
+  local _, ex = scene({ "DEFWPT P21 40.45 116.30", "DEFWPT T12 40.20 117.15", "DEFWPT K7 40.0 116.8",
+    "DEFWPT BEIJI 40.07 116.59",
+    "CRE CCA1337 A321 40.80 116.10 140 12800 260", "ADDWPT CCA1337 P21", "ADDWPT CCA1337 BEIJI",
+    "CRE CDG4727 B738 40.50 117.60 250 14800 260", "ADDWPT CDG4727 T12", "ADDWPT CDG4727 BEIJI",
+    "CRE CSN3352 A333 40.45 116.70 190 26600 280", "ADDWPT CSN3352 K7", "ADDWPT CSN3352 BEIJI" })
+  -- a user point said as phonetic letters and digits; a digit more or fewer, or a letter alone, stays asked
+  check_eq(ex("Shandong 4727 proceed direct to tango one two"), "DIRECT CDG4727 T12")
+  check_eq(ex("CCA1337 after papa two one, direct BEIJI"), "AT CCA1337 P21 DO DIRECT CCA1337 BEIJI")
+  check_eq(ex("China Southern 3352 delete waypoint kilo seven"), "DELWPT CSN3352 K7")
+  check_eq(ex("CDG4727 cross tango one two at 3900 metres"), "AT CDG4727 T12 ALT 12800")
+  asked(ex("CDG4727 direct tango one two three"), "T123 is no point")
+  asked(ex("CDG4727 direct tango one"), "T1 is no point")
+  asked(ex("CCA1337 direct papa"), "a letter alone")
+  -- a speed reached "after slowing" / "after reducing" is the condition the next instruction waits for
+  check_eq(ex("China Southern 3352, after slowing to 250 knots descend to 5100 metres"),
+    "ATSPD CSN3352 250 ALT CSN3352 16700")
+  check_eq(ex("CSN3352 after reducing to two four zero knots, turn left heading 150"),
+    "ATSPD CSN3352 240 HDG CSN3352 150 LEFT")
+  asked(ex("CSN3352 after slowing descend FL200"), "slowing to what")
+  -- "conflict detect", and "open"/"close" after the module
+  check_eq(ex("please turn on the conflict detect"), "ASAS ON")
+  check_eq(ex("conflict detect open"), "ASAS ON")
+  asked(ex("conflict detect close"), "switch off for everyone: confirmed first")
+  -- "run faster", the rate after a comma closing the request; an aircraft named keeps it asked
+  check_eq(ex("run faster please, 4 times"), "DTMULT 4")
+  check_eq(ex("run slower, two times please"), "DTMULT 2")
+  asked(ex("run faster"), "how many times")
+  asked(ex("CSN3352 run faster"), "the aircraft's speed")
+  -- metres in a creation: the nearest 100 ft ("height" before the typed level is its noun; a heading said
+  -- digit by digit with "height" as its third digit stays 338)
+  check_eq(ex("create Air China 981, B738 at BEIJI heading two seven zero height 5100 metres speed 260"),
+    "CRE CCA981 B738 BEIJI 270 16700 260")
+  check_eq(ex("make one China Eastern 5102, A320, at BEIJI heading 090, level 8900 metres, 280 knots"),
+    "CRE CES5102 A320 BEIJI 90 29200 280")
+  check_eq(ex("create CCA982 B738 at BEIJI heading tree tree height 10000 feet 250 knots"),
+    "CRE CCA982 B738 BEIJI 338 10000 250")
+  -- "passing FIX" opening the request, a speed with its noun after: started there; a bare level stays asked
+  check_eq(ex("CDG4727 passing tango one two speed two two zero"), "AT CDG4727 T12 DO SPD CDG4727 220")
+  asked(ex("CDG4727 passing tango one two FL120"), "met there or started there")
+  -- "make new point" with a name in phonetic letters and digits
+  check_eq(ex("make new point tango five at 39 decimal 95 north 117 decimal 05 east"), "DEFWPT T5 39.95 117.05")
+end
