@@ -4367,6 +4367,8 @@ function G:distance_limit(i, v, q)
   local from = self:word(at, "from of to before") and self:skip_fillers(at + 1) or at
   local place = self:refs_in(from, from + 1, "waypoint")[1] or self:refs_in(from, from + 1, "airport")[1]
   local e = place and place.e or from
+  -- (a callsign straight after the distance is the aircraft addressed, no place: "170 knots till 4 DME KLM 1395")
+  if not place and #self:refs_in(from, from + 1, "aircraft") > 0 then return end
   if not place and not (self.t[from] and self.t[from].kind == "word" and self.t[from].raw:match("^%u")) then return end
   if not place then e = from + 1 end
   local k = self.t[e] and self.t[e].kind == "punct" and self.t[e].text == "," and e + 1 or e
@@ -11694,6 +11696,11 @@ function G:said_last(i, near, own_clause)
   else
     return false
   end
+  -- (the one aircraft named, its callsign said after the limit, a comma before it at most: "170 knots until 4 DME,
+  -- KLM12", "speed 280 until ARTIP transavia 5KX", a pseudo-pilot's readback; the limit ends where it begins)
+  local cs_at = self.t[k] and self.t[k].text == "," and k + 1 or k
+  local cs = self:refs_in(cs_at, #self.t + 1, "aircraft")
+  if cs[1] and cs[1].b == cs_at and #cs == 1 and #self:refs_in(1, i, "aircraft") == 0 then k = cs[1].e end
   -- (`own_clause`: "reduce 160 until 5 miles final, descend to 3000 feet": a clause after a comma, opened by
   -- an imperative verb of lexicon.clause_verbs, is an instruction of its own and waits for no limit)
   local j = self.t[k] and self.t[k].text == "," and self:skip_fillers(k + 1) or k
@@ -12159,6 +12166,12 @@ function G:not_simulated()
           and not self.t[e - 1].keyword and not self:intent_at(e - 1) and not self.t[e - 1].number_word
         if not class.to_end and self:intent_at(e) and not self:word(e, "approach cleared hold holding contact left right")
             and not unit and not (class.through and self:word(e, class.through)) and not (class.clause and not comma) then
+          break
+        end
+        -- (a limit said last ends before the callsign said after it, a comma between at most: "until 4 DME, KLM12",
+        -- G:said_last)
+        if class.last and (#self:refs_in(e, e + 1, "aircraft") > 0
+            or (x.text == "," and #self:refs_in(e + 1, e + 2, "aircraft") > 0)) then
           break
         end
         e = e + 1
@@ -14139,6 +14152,28 @@ function G.same_one_aircraft(read, said, world, parsed)
   return one ~= nil and said[one] == true
 end
 
+-- A flight level said in whole hundreds after "flight level", "level" or "FL" ("one hundred", "two hundred"), a
+-- digit word and a word of tens or "hundred" straight after it, is the level, the words after another value said
+-- in the same breath: "flight level one hundred two fifty knots" -> "flight level 100 two fifty knots" (FL100 and
+-- 250 kt; no level is said "one hundred two").
+G.level_hundreds_digit = { one = "1", two = "2", three = "3", four = "4" }
+G.level_hundreds_next = { twenty = true, thirty = true, forty = true, fifty = true, sixty = true, seventy = true,
+  eighty = true, ninety = true, hundred = true }
+function G.level_hundreds_apart(text)
+  if not text:lower():find("hundred", 1, true) then return text end
+  local toks, bare = plain_words(text)
+  return tokens.rewrite(text, toks, function(i)
+    local d = G.level_hundreds_digit[bare[i] or ""]
+    if not (d and bare[i + 1] == "hundred" and (bare[i - 1] == "fl" or bare[i - 1] == "level")
+        and G.below_hundred[bare[i + 2] or ""] and (G.below_hundred[bare[i + 2]] or 10) < 10
+        and G.level_hundreds_next[bare[i + 3] or ""]) then
+      return nil
+    end
+    if toks[i]:match("%p$") or toks[i + 1]:match("%p$") or toks[i + 2]:match("%p$") then return nil end
+    return d .. "00", i + 2
+  end)
+end
+
 -- "Air Canada four hundred twelve", "Air Canada four-hundred-twelve": a flight number said in hundreds straight
 -- after an airline's word (a digit one to nine, "hundred", then one to ninety-nine in words) is its three
 -- digits ("Air Canada 412") when the text so read names exactly one aircraft flying, matched exactly, that the
@@ -15440,6 +15475,7 @@ function M.translate(text, world)
   text = homophone_ids(G.hundreds_callsign(G.recognised_callsigns(glued_telephony(G.common_named(G.joined_telephony(G.aircraft_of_airline(text)), world),
     world.aircraft), world), world), world)
   text = G.other_callsign_denied(text, world.aircraft)
+  text = G.level_hundreds_apart(text)
   local abbreviated
   text, abbreviated = abbreviated_registrations(text, world.aircraft)
   if abbreviated then return { commands = {}, ask = abbreviated } end

@@ -3116,6 +3116,13 @@ function m:creation_refs()
       v = e and (self:word(e, "that which who") and e + 1 or e)
       if v and self:word(v, "@created_by") then v = v + 1 end
       if v and self:word(v, "have has had") then v = v + 1 end
+      -- ("the one I just made", "the aircraft we've just created", "the one I recently added": the latest; "the
+      -- ones I just made" may be several, read as before)
+      if v and self:word(v, "just recently") and self:word(v + 1, "@created_verbs")
+          and not self:word_in(i, v, "ones planes airplanes flights jets") then
+        v = v + 1
+        if latest == nil then latest = true end
+      end
     end
     if v and self:word(v, "@created_verbs") then
       e = self:word(v + 1, "in") and v + 2 or v + 1  -- ("the one I put in last")

@@ -599,6 +599,25 @@ return function(H, f, compass)
           end
         end
       end
+      -- ("create ... over mike juliet victor heading 240": two to five letters spelled in the phonetic alphabet
+      -- after a place word, "at" or "over", are the ident of the fix, navaid or airport of those letters that the
+      -- navdata holds within lexicon.navaid_range_nm of an aircraft flying; a spelling is exact, no sound-alike)
+      for i = math.max(from, s.trig) + 1, named_at and 0 or s.e - 1 do
+        if self:word(i - 1, "@place_words") then
+          local letters, k = "", i
+          while k < s.e and not self.u:used(k) and self.t[k].kind == "word" and L.phonetic[self.t[k].text] do
+            letters, k = letters .. L.phonetic[self.t[k].text], k + 1
+          end
+          local fits = #letters >= 2 and #letters <= 5 and not L.phonetic[self.words[k] or ""]
+            and self:spelled_place_near(letters)
+          if fits then
+            named_at = self:creation_place(letters)
+            if not named_at then return end
+            self:explain(i, k)
+            break
+          end
+        end
+      end
     end
     -- ("cre KLM1234 b738 sugol hdg 90 ...": a name typed in CRE's place of the position, straight after the
     -- type, is that waypoint; the command's check asks when navdata has none of that name)
@@ -2137,6 +2156,37 @@ return function(H, f, compass)
   -- Charles de Gaulle"): the navdata has a place named by the word and the words together (G:any_place_named: the
   -- PARIS CHARLES DE GAULLE VOR-DME) within lexicon.city_nm of the airport. Any other word ("Madrid Charles de
   -- Gaulle") is none (asked).
+  -- True when the letters `letters` (upper case) are the ident of a fix, navaid or airport the navdata holds within
+  -- lexicon.navaid_range_nm of an aircraft flying (world.locate, the one of that ident nearest it).
+  function m:spelled_place_near(letters)
+    local locate = self.world.locate
+    for _, a in ipairs(locate and self.fleet or {}) do
+      local plat, plon = nil, nil
+      if a.lat then plat, plon = locate(letters, nil, a.lat, a.lon) end
+      if plat then
+        local dlat, dlon = plat - a.lat, ((plon - a.lon + 180) % 360 - 180) * math.cos(math.rad(a.lat))
+        if 60 * math.sqrt(dlat * dlat + dlon * dlon) <= L.navaid_range_nm then return true end
+      end
+    end
+    return false
+  end
+
+  -- True when the lower-case city name `word` names airport `id`: among its airports (sim:airports_of_city), the
+  -- airports beside the navaids of its name (sim:airports_beside_navaids: "madrid", LEMD "BARAJAS"), or the
+  -- airport lexicon.city_airports gives it ("amsterdam": EHAM "SCHIPHOL").
+  function m:city_of_airport(word, id)
+    local w = self.world
+    local lists = { w.airports_of_city and w.airports_of_city(word) or {},
+      w.airports_beside_navaids and w.airports_beside_navaids(word) or {},
+      L.city_airports[word] and w.airports_named and w.airports_named(L.city_airports[word]) or {} }
+    for _, list in ipairs(lists) do
+      for _, x in ipairs(list) do
+        if x == id then return true end
+      end
+    end
+    return false
+  end
+
   function m:city_before_airport(i, e, id)
     local t, locate = self.t[i - 1], self.world.user_waypoint_at
     if not (t and t.kind == "word" and t.alpha and t.raw:match("^%u%l") and not self.u:used(i - 1) and locate) then
@@ -2254,7 +2304,14 @@ return function(H, f, compass)
             -- stays unexplained, asked)
             local of_city = not (city or with_city) and after > i + 1 and proper(i - 1)
               and self:city_before_airport(i, after, id)
-            self:explain_place(((city or with_city or of_city) and proper(i - 1)) and i - 1 or i, city and after + 1 or after)
+            -- (a city said in lower case straight before the name, a recogniser's "madrid barajas": a word whose
+            -- airports, sim:airports_of_city or lexicon.city_airports's, hold this one is its city)
+            local low = i > b and self.t[i - 1]
+            local low_city = low and low.kind == "word" and low.alpha
+              and low.raw:match("^%l") ~= nil and not low.keyword and not self.u:used(i - 1)
+              and self:city_of_airport(low.text, id)
+            self:explain_place((((city or with_city or of_city) and proper(i - 1)) or low_city) and i - 1 or i,
+              city and after + 1 or after)
             -- (the name said again, "go to Stuttgart, so Stuttgart is its destination", is the same place)
             for k = after, math.min(e, #self.t + 1) - 1 do
               if self:word(k, t.text) and not self.u:used(k) then self:explain(k, k + 1) end

@@ -719,7 +719,9 @@ return function(H, f, wrap, compass)
       -- descent from below FL120, in a terminal area, is to the approach altitude said in feet)
       -- (from the flight levels too: "descend 3000 feet" is the step to some, the approach altitude after an
       -- approach clearance to others)
-      local approach = dir < 0 and cur < 12000
+      -- (a climb from below FL120 to an altitude above the aircraft, "climb 3000 feet" at 2000 ft, is the
+      -- departure's cleared altitude in feet the same way)
+      local approach = cur < 12000
       if by_fits and to_fits and ft < 4000 and not approach then
         return self:need(string.format("Should %s %s to %s ft or by %s ft?", ids[1], verb, f.int(ft), f.int(ft)))
       end

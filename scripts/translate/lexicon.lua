@@ -589,7 +589,9 @@ return {
   -- instruction words of three letters or more that a typing slip one edit from them is read as, beside
   -- spelling.targets (translate/typos.lua: only in a request asked about, every reading of the slip tried), and
   -- how far from the traffic a fix, navaid or airport of the slip's letters keeps it as typed (nautical miles)
-  typo_targets = { "and", "then", "fpm", "route", "hdg", "mach", "level", "proceed", "please" },
+  typo_targets = { "and", "then", "fpm", "route", "hdg", "mach", "level", "proceed", "please",
+      -- (a pseudo-pilot's readback: "descnding FL90", "decsending FL140")
+      "descending", "climbing", "reducing", "increasing", "turning", "maintaining" },
   typo_place_nm = 250,
   -- units after a value that keep "FL 2 10" two values ("fl 2 10 knots"): a level's figures are never split before them
   level_split_units = { knots = true, kts = true, kt = true, knot = true, degrees = true, deg = true, nm = true,
@@ -1403,6 +1405,8 @@ return {
                          "we'll", "we'd", "i'm", "i'll", "i'd", "he's", "she's", "they're", "there's", "too",
                          -- (the instructor's forecast: "he'll clip the danger area otherwise", "it'll be tight")
                          "he'll", "she'll", "it'll", "they'll",
+                         -- (the speaker's need, its "I" dropped: "pause pls, need a break")
+                         "need",
                          "participant", "participants", "experimenter", "researcher" },
           own = { "we", "i", "we're", "we'll", "we'd", "i'm", "i'll", "i'd" },
           -- the operational reason for a complete instruction, said after a comma ("he's inbound to FRA",
@@ -2329,6 +2333,13 @@ return {
     -- ("run the simulation at for times real time": a multiplier's digit heard as a word)
     { heard = { "for", "fore" }, means = "four", before = { "times" } },
     { heard = { "nots", "notts", "nuts", "knot's" }, means = "knots", after = { "#number" } },
+    -- the radiotelephony digits as speech recognition writes them: "niner" split in two ("flight level nigh ner
+    -- zero"), "tree" heard as "free" before the count it multiplies or between digits ("descend to free thousand",
+    -- "heading one free zero"); "free" elsewhere is English ("feel free to climb")
+    { heard = { "nigh ner", "nye ner", "ni ner" }, means = "niner", before = { "#number", "thousand", "hundred" },
+      after = { "#number", "level", "fl", "heading", "hdg" } },
+    { heard = { "free" }, means = "three", before = { "thousand", "hundred" } },
+    { heard = { "free" }, means = "three", between = { { "#number" }, { "#number" } } },
     -- German "rechts"/"links" (right/left; lexicon.said_whole.dutch reads them in a Dutch sentence): straight before
     -- a number, no "kurs" (heading) between, the side of a turn that number may be the degrees of ("rechts 20",
     -- "links 090", "rechts 200": read as "turn right ..." is, asked where the heading and the turn differ); after

@@ -370,6 +370,7 @@ local names = {
     { "volotea", "VOE" },
     { "swiftair", "SWT" },  -- (Swiftair, Spain; its ICAO telephony is "Swift", an English word)
     { "shuttle", "SHT" },  -- (British Airways Shuttle)
+    { "flyer", "CFE" },  -- (BA CityFlyer)
     { "hansaline", "CLH" },  -- (Lufthansa CityLine)
     { "air serbia", "ASL" },
     { "jat", "JAT" },  -- (Jat Airways, Air Serbia's predecessor: another airline)

@@ -18528,3 +18528,62 @@ do
   -- "make new point" with a name in phonetic letters and digits
   check_eq(ex("make new point tango five at 39 decimal 95 north 117 decimal 05 east"), "DEFWPT T5 39.95 117.05")
 end
+-- Cycle 60 (f199): a pseudo-pilot's readback, the callsign last (BA CityFlyer's telephony "Flyer"; -ing forms
+-- typed with a slip; a limit ending at a place or the final's distance before the callsign); a climb in feet from
+-- below FL120; the radiotelephony digits as speech recognition writes them; a level in whole hundreds before another
+-- value; "the one I just made"; a reason with its "I" dropped; a lower-case city before its airport's name; a
+-- creation's place spelled in the phonetic alphabet
+do
+  local _, ex = scene({ "DEFWPT RINAX 51.6 0.9", "DEFWPT TOLGA 51.3 0.2", "CRE CFE47P E190 51.5 0.5 090 4000 220",
+    "ADDWPT CFE47P TOLGA", "CRE SHT3Q A320 51.7 1.0 250 FL140 280", "ADDWPT SHT3Q RINAX",
+    "CRE EIN72 A320 51.4 0.1 300 2500 180", "CRE AZA98 A321 51.9 0.8 180 FL210 290" })
+  -- "Flyer" is BA CityFlyer, the callsign first or last; a flight number of no aircraft stays asked
+  check_eq(ex("right heading 045 flyer 47 papa"), "HDG CFE47P 45 RIGHT")
+  check_eq(ex("Flyer 47P, climb 7000 feet"), "ALT CFE47P 7000")
+  check_eq(ex("remove flyer four seven papa please"), "DEL CFE47P")
+  asked(ex("flyer 74P heading 045"), "CFE74P is no aircraft")
+  -- a readback's verb typed with a slip, the callsign last; against the aircraft's level it stays asked
+  check_eq(ex("desending FL120, shuttle 3Q"), "ALT SHT3Q FL120")
+  check_eq(ex("climbng 9000 ft flyer 47P"), "ALT CFE47P 9000")
+  check_eq(ex("redcuing 250 shuttle 3Q"), "SPD SHT3Q 250")
+  asked(ex("desending FL160, shuttle 3Q"), "FL160 is above it")
+  -- a speed held until a place on the route or the final's 3 to 6 miles, the callsign after it: flown, the limit
+  -- named; a place off the route, a distance further out and a value after it stay asked
+  check_eq(ex("keep 260 knots until RINAX, shuttle 3Q"), "SPD SHT3Q 260")
+  check_eq(ex("180 kts till 5 miles final alitalia 98"), "SPD AZA98 180")
+  check_eq(ex("reduce one six zero knots until four DME Shamrock 72"), "SPD EIN72 160")
+  asked(ex("keep 260 knots until TOLGA, shuttle 3Q"), "TOLGA is off its route")
+  asked(ex("200 kts till 12 DME alitalia 98"), "a distance further out")
+  asked(ex("keep 260 knots until RINAX shuttle 3Q then 220"), "the value after the limit")
+  -- below FL120 "climb N feet" above the aircraft is the altitude; one below it, or from the flight levels, is asked
+  check_eq(ex("climb 4000 ft, shamrock 72"), "ALT EIN72 4000")
+  check_eq(ex("Shamrock 72 climb 3500 feet and turn right heading 330"), "ALT EIN72 3500 ; HDG EIN72 330 RIGHT")
+  asked(ex("shamrock 72 climb 2000 feet"), "2000 ft is below it")
+  asked(ex("alitalia 98 climb 3000 feet"), "a step from FL210")
+  -- "niner" split in two and "free" for three where a digit is meant; "free" elsewhere is English
+  check_eq(ex("shuttle three quebec climb flight level one nigh ner zero"), "ALT SHT3Q FL190")
+  check_eq(ex("shamrock seven two climb to free thousand five hundred feet"), "ALT EIN72 3500")
+  check_eq(ex("alitalia 98 turn left heading one free five"), "HDG AZA98 135 LEFT")
+  -- a flight level said in whole hundreds with a speed after it in the same breath
+  check_eq(ex("alitalia 98 descend flight level two hundred two eighty knots"), "ALT AZA98 FL200 ; SPD AZA98 280")
+  check_eq(ex("alitalia 98 descend flight level one hundred ninety"), "ALT AZA98 FL190")
+  -- "the one I just made": the latest created; "the ones I just made" may be several, asked
+  check_eq(ex("delete the one we just created"), "DEL AZA98")
+  check_eq(ex("the aircraft I just added, descend FL150"), "ALT AZA98 FL150")
+  asked(ex("delete the ones I just made"), "several")
+  -- a pause's reason with its "I" dropped
+  check_eq(ex("freeze pls, need a coffee"), "HOLD")
+  check_eq(ex("SHT3Q climb FL160, need you higher"), "ALT SHT3Q FL160")
+  local nav, nt = navscene({ "CRE IBE31 A320 40.9 -2.9 250 FL150 280", "CRE VLG7 A320 39.6 2.5 100 5000 200" },
+    "a city before its airport's name and a spelled creation place")
+  if nav then
+    -- a city in lower case before its airport's name; another city's stays asked
+    check_eq(nt("iberia three one, destination madrid barajas please"), "DEST IBE31 LEMD")
+    check_eq(nt("set origin madrid barajas airport for iberia 31"), "ORIG IBE31 LEMD")
+    asked(nt("iberia 31 destination valencia barajas"), "Valencia is not Barajas's city")
+    -- a creation's place spelled in the phonetic alphabet near the traffic; letters naming none stay asked
+    check_eq(nt("create vueling 88 A320 at mike juliet victor heading 090 6000 feet 220 knots"),
+      "CRE VLG88 A320 MJV 90 6000 220")
+    asked(nt("create vueling 88 A320 at zulu xray quebec heading 090 6000 feet 220 knots"), "no such place")
+  end
+end
