@@ -1768,6 +1768,29 @@ function G.cut_off_restarts(text)
   end
   return text
 end
+-- "Speed... Speedbird 8CK, turn left", "Lufth-- uh, Lufthansa 4AX": a word cut off where the request or a sentence
+-- opens, closed by "..." or "-" or followed by hesitations (lexicon.hesitations), and then a longer word it opens:
+-- the cut-off word is dropped with the hesitations after it.
+function G.cut_off_openings(text)
+  if not (text:find("...", 1, true) or text:find("-", 1, true) or text:find("…", 1, true)) then return text end
+  local toks = {}
+  for w in text:gmatch("%S+") do toks[#toks + 1] = w end
+  local function bare(k) return toks[k] and toks[k]:lower():match("^(.-)%p*$") end
+  for f = 1, #toks - 1 do
+    local frag = bare(f)
+    local cut = toks[f]:match("%.%.%.$") or toks[f]:match("%-$") or toks[f]:match("…$")
+    if #frag >= 2 and frag:match("^%a+$") and (f == 1 or toks[f - 1]:match("[,;:.!?]$")) then
+      local j = f + 1
+      while G.hesitation_words[bare(j) or ""] or toks[j] and toks[j]:match("^%p+$") do j = j + 1 end
+      local word = bare(j)
+      if (cut or j > f + 1) and word and #word > #frag and word:sub(1, #frag) == frag then
+        return G.words_without(toks, f, j - 1)
+      end
+    end
+  end
+  return text
+end
+M.cut_off_openings = G.cut_off_openings  -- (graph.lua reads it before a request is split into clauses)
 -- The words of toks joined by single spaces, less those at positions a to b
 function G.words_without(toks, a, b)
   local out = {}
@@ -6101,14 +6124,31 @@ function G:self_corrected()
     -- please let it go direct to MKG": a state told with "already" may end in a full stop too, and the
     -- instruction said after it, "then", "please", "let it", "go" before its word, replaces the one taken back)
     local replaced, withdrawn = false, false
-    if marked and self:word(c, "@self_correction_reason_openers") then
-      local k, told = c + 1, false
-      while k < c + 7 and self.t[k] and self.t[k].kind == "word" and not self:intent_at(k)
-          and not self:has_ref(k, k + 1) and #self:quantities(k, k + 1) == 0 do
-        told = told or self:word(k, "already")
-        k = k + 1
+    -- ("descend FL340, no wait, that's the Air France level, 320": another aircraft named by "the" before a noun of
+    -- the value's kind is whose value it was, described, no addressee: the clause is set aside)
+    -- (the run may hold the opener, "no wait that's the ...": "that" is a word of the run, "the" a filler)
+    local opened = marked and not self:word(c, "@self_correction_reason_openers") and c > a
+      and (self:word(c - 1, "@self_correction_reason_openers") or self:word(c - 2, "@self_correction_reason_openers")
+        and self.t[c - 1].filler)
+    if marked and (opened or self:word(c, "@self_correction_reason_openers")) then
+      local k, told, owner = opened and c or c + 1, false, false
+      if opened and self:word(k, "is") then k = k + 1 end
+      while k < c + 9 and self.t[k] and self.t[k].kind == "word" and not self:intent_at(k)
+          and #self:quantities(k, k + 1) == 0 do
+        local r = self:refs_in(k, k + 1, "aircraft")[1]
+        if r and r.b == k and self:word(k - 1, "the") and self:word(r.e, "level altitude heading speed height") then
+          owner, k = true, r.e + 1
+        elseif self:has_ref(k, k + 1) then
+          break
+        else
+          told = told or self:word(k, "already")
+          k = k + 1
+        end
       end
-      if self.t[k] and (self.t[k].text == "," or told and self.t[k].text == ".") then
+      if opened and not owner then
+        k = c  -- (no other aircraft's value named: the run ends where it did)
+      elseif self.t[k] and (self.t[k].text == "," or told and self.t[k].text == ".") then
+        if owner then self:set_aside(c, k - 1) end
         c = k
         while self.t[c] and (self.t[c].kind == "punct" or self.t[c].filler) do c = c + 1 end
         local v = c
@@ -9958,6 +9998,9 @@ end
 -- "AFR6204 and IBE3421 -- no, forget the Iberia. Just AFR6204 heading 220": an aircraft named straight after a
 -- word of lexicon.forget ("the" and "about" between at most) is taken out of the request: no command names it.
 -- Nothing left asks for the instruction again.
+-- "..., and direct RILAX after that, no, forget RILAX": a waypoint named there that the request named before it
+-- takes back the instructions naming it (the direct, its ADDWPT); one held by a condition ("at RILAX ...") is
+-- asked about, as is a request left with nothing.
 function G:forgotten()
   if not self:said("@forget") then return end
   for i = 1, #self.t do
@@ -9965,6 +10008,33 @@ function G:forgotten()
       local k = self:skip_fillers(i + 1)
       while self:word(k, "the about") do k = k + 1 end
       local r = self:refs_in(k, k + 1, "aircraft")[1]
+      local w = not r and self:refs_in(k, k + 1, "waypoint")[1]
+      local before = false
+      for _, o in ipairs(w and self.refs or {}) do
+        before = before or (o.kind == "waypoint" and o.e <= i and o.name:upper() == w.name:upper())
+      end
+      if before then
+        local name, kept, held = w.name:upper(), {}, false
+        for _, line in ipairs(self.out) do
+          if line:upper():find("%f[%w]" .. name .. "%f[^%w]") then
+            held = held or CONDITIONAL[line:match("^(%u+)")] or line:find(" DO ") ~= nil
+          else
+            kept[#kept + 1] = line
+          end
+        end
+        for x = i, w.e - 1 do self.noted[x] = true end
+        for _, o in ipairs(self.refs) do  -- (every mention of it)
+          if o.kind == "waypoint" and o.name:upper() == name then
+            for x = o.b, o.e - 1 do self.noted[x] = true end
+          end
+        end
+        if held or #kept == 0 then
+          self.ask = string.format("You said to forget %s. What stands? Please say the instruction again in full.",
+            name)
+          return
+        end
+        self.out = kept
+      end
       if r and r.exists then
         local id, kept = r.name:upper(), {}
         for _, line in ipairs(self.out) do
@@ -9981,6 +10051,56 @@ function G:forgotten()
           self.ask = string.format("I left %s out, as said. Which instruction stands? Please say it again in full.", id)
         end
       end
+    end
+  end
+end
+
+-- "descend FL340, that's the Air France level, FL320", "..., that is the Air France heading, 070": an aircraft named
+-- only as whose value "that" or "it" is ("that's the X level") is described, never told: a command for it is asked
+-- about, naming the words. ("no wait, it is the Wizz", the aircraft alone, corrects the addressee: G:self_corrected.)
+function G:predicated()
+  for _, r in ipairs(self.refs) do
+    if r.kind == "aircraft" and r.exists and self:word(r.b - 1, "the")
+        and self:word(r.e, "level altitude heading speed height")
+        and (self:word(r.b - 2, "that it this") or self:word(r.b - 2, "is was") and self:word(r.b - 3, "that it this")) then
+      local id, elsewhere, told = r.name:upper(), false, false
+      for _, o in ipairs(self.refs) do
+        elsewhere = elsewhere or (o ~= r and o.kind == "aircraft" and o.name:upper() == id)
+      end
+      for _, line in ipairs(self.out) do
+        told = told or line:find("%f[%w]" .. id .. "%f[^%w]") ~= nil
+      end
+      if told and not elsewhere then
+        local b = self:word(r.b - 2, "is was") and r.b - 3 or r.b - 2
+        self.ask = string.format("I have %s. Is '%s' an instruction for %s, or only whose it is? Please say again "
+          .. "who should do what.", table.concat(self.out, " ; "),
+          (self:raw(b, r.e + 1):gsub(" ([,.;:])", "%1")), id)
+        return
+      end
+    end
+  end
+end
+
+-- "add GATE to the route of Swiss 100": a place added to a route (ADDWPT) by a name that resolves nowhere (no
+-- DEFWPT, route, fix, navaid or airport of the navdata holds it, world.locate) is asked about, never added: the
+-- word may be no place at all. Only where navdata is loaded (a large airport known); without it nothing changes.
+function G:unknown_places()
+  local w = self.world
+  if not (w.locate and w.airport_class) then return end
+  local loaded = false
+  for _, code in ipairs({ "EHAM", "EGLL", "KJFK" }) do loaded = loaded or (w.airport_class(code) or "") ~= "" end
+  if not loaded then return end
+  local defined = {}
+  for _, line in ipairs(self.out) do
+    local d = line:match("^DEFWPT ([^%s,]+)")
+    if d then defined[d:upper()] = true end
+  end
+  for _, line in ipairs(self.out) do
+    local name = line:match("ADDWPT %S+ (%a[%w]*)[%s,]") or line:match("ADDWPT %S+ (%a[%w]*)$")
+    if name and not defined[name:upper()] and not w.locate(name:upper()) then
+      self.ask = string.format("Which waypoint is %s? It names no waypoint, navaid or airport I know. Please give "
+        .. "its name again, or a latitude and longitude.", name:upper())
+      return
     end
   end
 end
@@ -15420,7 +15540,11 @@ function M.translate(text, world)
   end
   -- "Ryanair 92 X-ray", "x ray": the letter X's phonetic word, written apart, is one word before any callsign is
   -- read
-  if text:find("[Rr][Aa][Yy]") then text = text:gsub("%f[%a]([Xx])[%- ]([Rr][Aa][Yy])%f[%A]", "%1%2") end
+  -- ("four alpha ex-ray", "exray": the letter spelled as it sounds)
+  if text:find("[Rr][Aa][Yy]") then
+    text = text:gsub("%f[%a]([Xx])[%- ]([Rr][Aa][Yy])%f[%A]", "%1%2")
+      :gsub("%f[%a]([Ee])[Xx][%- ]?([Rr][Aa][Yy])%f[%A]", function(e, ray) return (e == "E" and "X" or "x") .. ray end)
+  end
   -- "HDG SEL 360", "speed selected 250": a flight-deck selector named after the value's name is that value
   if text:find("[Ss][Ee][Ll]") then
     text = text:gsub("%f[%w]([%a/]+)%s+([Ss][Ee][Ll]%a*)%f[%A]", function(w, sel)
@@ -15689,6 +15813,8 @@ function M.translate(text, world)
   if not g.ask then g:skipped_on_direct() end
   g:same_again(same)
   if not g.ask then g:forgotten() end
+  if not g.ask then g:predicated() end
+  if not g.ask then g:unknown_places() end
   if not g.ask then g:described() end
   if not g.ask then g:state_question() end
   if not g.ask then g:participle_question() end

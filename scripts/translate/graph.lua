@@ -277,6 +277,8 @@ function M.translate(text, opts)
   opts = opts or {}
   -- a list of command clauses: each translated on the state the ones before it leave (the setup's traffic
   -- too: "pause, then move IBE32 to ...")
+  -- ("Speed... Speedbird 8CK, turn left ...": a word cut off where the request opens is dropped first)
+  if not opts.in_list then text = grammar.cut_off_openings(text) end
   local parts = not opts.in_list and M.command_clauses(text)
   local whole, bare = false, nil
   if parts then whole, bare = M.one_aircraft_list(parts, simulator(opts)) end

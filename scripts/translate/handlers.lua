@@ -104,8 +104,9 @@ function m:direction(s)
   local names = self:refs_in(s.b, s.e, "aircraft")
   local function said(i, list) return self:motion_said(i, list, names) end
   -- a direction said after a correction replaces the one before it ("climb FL260, correction, descend FL220")
-  for i = (self:said("@correction") or self:said(MARKER_WORDS)) and s.e - 1 or 0, s.b, -1 do
-    if self:word(i, "@correction") or self:marker_after_value(i) then
+  for i = (self:said("@correction") or self:said(MARKER_WORDS) or self:said("@up") and self:said("@down")) and s.e - 1
+      or 0, s.b, -1 do
+    if self:word(i, "@correction") or self:marker_after_value(i) or self:motion_broken_off(i, s.b) then
       for k = i + 1, s.e - 1 do
         if said(k, "@up") then return 1 end
         if said(k, "@down") then return -1 end
@@ -124,6 +125,22 @@ function m:direction(s)
     end
   end
   return 0
+end
+
+-- True when token i (in a segment opening at b) breaks off the vertical verb said before it, as a correction would:
+-- "..." straight after a verb of climb or descent (fillers between: "descend... erm... climb! climb FL100"), or the
+-- "?" closing a sentence with no value in it ("no, descend? it's at one hundred... climb, yes, climb 110", "climb...
+-- erm, is he climbing or descending, instructor? uh, descend FL110"): the verb said after it counts.
+function m:motion_broken_off(i, b)
+  local t = self.t[i]
+  if not (t and t.kind == "punct") then return false end
+  local k = i - 1
+  if t.text == "?" then
+    while k >= b and not (self.t[k].kind == "punct" and self.t[k].text:match("^[.?!;]$")) do k = k - 1 end
+    return #self:quantities(k + 1, i) == 0
+  end
+  while k >= b and self.t[k].filler do k = k - 1 end
+  return t.text == "." and self.t[i + 1] ~= nil and self.t[i + 1].text == "." and k >= b and self:word(k, "@up @down")
 end
 
 -- A climb's and a descent's words (lexicon.vertical_motion) both said in [b, e) with no correction between ("climb
@@ -156,7 +173,9 @@ function m:opposite_motions(b, e)
     if q.kind ~= "alt" then signs[q.b - 1], signs[q.e] = true, true end
   end
   for i = b, e - 1 do
-    if self:word(i, "@correction") or self:marker_after_value(i) then up, down = nil, nil end
+    if self:word(i, "@correction") or self:marker_after_value(i) or self:motion_broken_off(i, b) then
+      up, down = nil, nil
+    end
     local sign = signs[i] or self.triggers[i]
     if not (last and i >= last.e and last.kind == "alt") then
       local u = self:motion_said(i, self.motion.up, names) or (sign and self:word(i, "up"))
@@ -3315,7 +3334,63 @@ function m:settle_callsigns()
       end
     end
   end
+  self:restarted_callsigns()
   self:false_starts()
+end
+
+-- "Lufthansa four alpha... Lufthansa four alpha x-ray", "Easy five two tango... tango mike", "KLM one two three
+-- four... KLM, uh, one two three four": a callsign cut off (at "..." or a hesitation) and said again, its airline
+-- again or not, from its first character or from one said before the cut, to its end. The characters said before
+-- the cut up to where the restart picks up, then those said after it, must spell the aircraft's callsign after its
+-- airline exactly (the decision: every spoken character matches); the reference then holds both, as heard.
+local SPELLED_DIGITS = { zero = "0", one = "1", two = "2", three = "3", tree = "3", four = "4", fower = "4",
+  five = "5", fife = "5", six = "6", seven = "7", eight = "8", nine = "9", niner = "9" }
+function m:restarted_callsigns()
+  local function char(k)
+    local t = self.t[k]
+    if not t or t.filler then return nil end
+    if t.kind == "number" and t.text:match("^%d+$") then return t.text end
+    return t.kind == "word" and (SPELLED_DIGITS[t.text] or L.phonetic[t.text]) or nil
+  end
+  local function cut_at(k)
+    local t = self.t[k]
+    return t and (t.filler or t.kind == "punct" and (t.text == "." or t.text == "-" or t.text == ","))
+  end
+  for _, r in ipairs(self.refs) do
+    local icao, ae = nil, nil
+    if r.kind == "aircraft" and r.exists then icao, ae = self:airline_at(r.b) end
+    local name = r.name:upper()
+    local heard = r.heard and r.heard.id and r.heard.id:upper()
+    if icao and name:sub(1, #icao) == icao:upper() and (not heard or #heard < #name and name:sub(1, #heard) == heard) then
+      local suffix = name:sub(#icao + 1)
+      local before, c = "", ae
+      while char(c) and c < r.e + 1 do before, c = before .. char(c), c + 1 end
+      if cut_at(c) and #before > 0 and suffix:sub(1, #before) == before and self.t[c].text ~= ","
+          or cut_at(c) and self.t[c].filler then
+        local k = c
+        while cut_at(k) do k = k + 1 end
+        local again, e2 = self:airline_at(k)
+        if again and again:upper() == icao:upper() then
+          k = e2
+          while cut_at(k) do k = k + 1 end
+        end
+        local after, e = "", k
+        while char(e) do after, e = after .. char(e), e + 1 end
+        local closed = not self.t[e] or self.t[e].kind == "punct" or self:intent_at(e)
+        local fits = false
+        for j = 0, #before do
+          fits = fits or (#after > 0 and before:sub(1, j) .. after == suffix)
+        end
+        -- (said whole again only, when the first was heard exactly: "KLM1234... KLM1234")
+        if not heard then fits = after == suffix end
+        if fits and closed then
+          for x = c, e - 1 do self.noted[x] = true end
+          self:mark_used(r.b, e)
+          r.e, r.heard = e, nil
+        end
+      end
+    end
+  end
 end
 
 -- The aircraft references taken back (r.false_start, see m:settle_callsigns); run again once the aircraft

@@ -3945,7 +3945,16 @@ return function(H, f, compass)
     if self:switch_told(s) then
       return self:need(string.format("Should %s's %s be switched on or off?", id, cmd))
     end
-    if self:nav_asked(s) then return self:emit(cmd .. " " .. id) end
+    if self:nav_asked(s) then
+      -- ("is he on LNAV? switch on LNAV", "is it on VNAV? VNAV on please": the switch named again after the
+      -- question's "?" with its state said there is set as said there; the question was the speaker's own)
+      local q = s.trig
+      while q < s.e and not (self.t[q].kind == "punct" and self.t[q].text == "?") do q = q + 1 end
+      local t = q < s.e and self:find_word(q + 1, s.e, cmd:lower()) or s.e
+      local told = t < s.e and self:on_off({ b = q + 1, e = s.e, trig = t })
+      if not (told and told >= 0) then return self:emit(cmd .. " " .. id) end
+      s = { b = q + 1, e = s.e, trig = t, intent = s.intent }
+    end
     local on, now = on_off(self, s), self:state(id)
     -- "resume own navigation" for an aircraft with no route and no waypoint named: nothing to fly
     -- (the switch named, "lnav on", is set as asked; a direct-to in the request names its place); "comply with

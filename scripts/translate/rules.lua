@@ -2605,6 +2605,16 @@ return function(intent, rule, words)
     return g:word(k, "in") and g:word(k + 1, "fast fast-time fast-forward")
       and (g:word(k + 1, "fast-time fast-forward") or g:word(k + 2, "time forward"))
   end }
+  -- "go back to the start of this exercise", "can we return to the beginning of the scenario", "back to the
+  -- start please": the start as a place in the run gone back to is the run begun again, a reset (confirmed
+  -- first), never the clock started (OP); said with an aircraft named ("back to the start of its route") it is
+  -- no run's start
+  rule { "start beginning", "reset", prev = { 1, "the this" }, when = function(g, i)
+    if not (g:word(i - 2, "to") and g:find_word(math.max(1, i - 5), i - 2, "back return returning") < i - 2) then return false end
+    local k = g:word(i + 1, "of") and i + 2 or nil
+    if k and g:word(k, "the this that our") then k = k + 1 end
+    return (k == nil or g:word(k, "@sim scenario scen run")) and not g:has_ref(1, #g.t + 1, "aircraft")
+  end }
   -- "continue from pause", "start again out of the pause": the run resumed from the pause
   rule { "run start continue resume go", "op", when = function(g, i)
     local k = g:word(i + 1, "again") and i + 2 or i + 1

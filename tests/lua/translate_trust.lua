@@ -18585,5 +18585,63 @@ do
     check_eq(nt("create vueling 88 A320 at mike juliet victor heading 090 6000 feet 220 knots"),
       "CRE VLG88 A320 MJV 90 6000 220")
     asked(nt("create vueling 88 A320 at zulu xray quebec heading 090 6000 feet 220 knots"), "no such place")
+end
+-- Cycle 60 (f200): the nervous trainee: a callsign cut off and said again; a word cut off where the request opens;
+-- a climb or descent broken off by "..." or a question for the verb said after it; "forget" and a place the request
+-- named; another aircraft named as whose value it was ("that's the X level"); a question about LNAV answered by
+-- setting it; "back to the start" of the exercise (a reset, confirmed); a place added by a name nothing holds
+do
+  local _, ex = scene({ "DEFWPT TOSNI 48.1 11.2", "DEFWPT BELUP 48.4 11.6", "CRE BEL3RK A320 48.0 11.0 090 FL120 280",
+    "CRE IBE21FT A321 48.5 11.5 270 FL300 300", "CRE IBE21 B738 48.3 11.9 180 FL060 250",
+    "CRE VLG7Q A320 48.2 11.3 010 FL200 260", "CRE KLM4321 E190 48.6 11.8 200 FL090 250", "ADDWPT KLM4321 BELUP" })
+  -- the callsign said again whole or from a character said before the cut; another one after the cut stays asked
+  check_eq(ex("Beeline three romeo... Beeline three romeo kilo, descend flight level one zero zero"), "ALT BEL3RK FL100")
+  check_eq(ex("Vueling seven... uh... seven quebec, turn right heading zero six zero"), "HDG VLG7Q 60 RIGHT")
+  asked(ex("Iberia two one foxtrot... foxtrot tango speed two five zero"), "IBE21 flies too")
+  check_eq(ex("KLM four three two one... KLM, erm, four three two one, direct BELUP"), "DIRECT KLM4321 BELUP")
+  asked(ex("Beeline three romeo... Vueling seven quebec climb FL250"), "another callsign after the cut")
+  asked(ex("Beeline three romeo, descend FL100"), "BEL3R is no aircraft")
+  -- a word cut off where the request opens, and the longer word it opens
+  check_eq(ex("Vue... Vueling seven quebec, climb flight level two four zero"), "ALT VLG7Q FL240")
+  check_eq(ex("Bee- Beeline three romeo kilo, reduce speed two five zero"), "SPD BEL3RK 250")
+  -- a climb or descent broken off by "..." or by a question with no value; with a value before, asked
+  check_eq(ex("Iberia two one, descend... uh... climb, climb flight level eight zero"), "ALT IBE21 FL80")
+  check_eq(ex("Vueling seven quebec climb... hmm, should he climb or descend? descend flight level one six zero"),
+    "ALT VLG7Q FL160")
+  asked(ex("Iberia two one, descend flight level five zero... climb flight level eight zero"), "two values")
+  asked(ex("Iberia two one climb... descend flight level eight zero"), "a descent to a higher level")
+  -- "forget" and a place the request named before: the instructions naming it taken back
+  check_eq(ex("Beeline three romeo kilo, climb FL150, and direct TOSNI after that, no, forget TOSNI"), "ALT BEL3RK FL150")
+  check_eq(ex("KLM four three two one reduce speed two two zero, direct BELUP, uh no, forget BELUP"), "SPD KLM4321 220")
+  asked(ex("Beeline three romeo kilo direct TOSNI, no, forget TOSNI"), "nothing left")
+  -- another aircraft named as whose value it was is no addressee
+  check_eq(ex("Vueling seven quebec climb FL300, no wait that's the Beeline level, two eight zero"), "ALT VLG7Q FL280")
+  check_eq(ex("Beeline three romeo kilo climb flight level two zero zero, sorry, that's the Vueling level, one niner zero"),
+    "ALT BEL3RK FL190")
+  asked(ex("Vueling seven quebec climb FL300, that's the Beeline level, FL280"), "no mark: whose level?")
+  -- a question about the switch, then the switch set
+  check_eq(ex("KLM four three two one, is he on LNAV? switch on LNAV"), "LNAV KLM4321 ON")
+  check_eq(ex("Beeline three romeo kilo, add TOSNI, is it on VNAV? VNAV off please"),
+    "ADDWPT BEL3RK TOSNI ; VNAV BEL3RK OFF")
+  check_eq(ex("KLM four three two one, is it on LNAV?"), "LNAV KLM4321")
+  -- back to the start of the exercise: a reset, confirmed; the start of a route is no reset
+  asked(ex("could we go back to the beginning of the scenario please"), "reset confirmed")
+  asked(ex("let's return to the start of this exercise"), "reset confirmed")
+  check(not ex("let's go back to the start"):match("OP"), "no OP")
+end
+do
+  -- the letter X spelled as it sounds ("ex-ray", "exray")
+  local _, ex = scene({ "CRE AEE6X A320 48.0 11.0 090 FL120 280" })
+  check_eq(ex("Aegean six ex-ray climb flight level two zero zero"), "ALT AEE6X FL200")
+  check_eq(ex("Aegean six exray, heading one two zero"), "HDG AEE6X 120")
+end
+do
+  local nav, pt = navscene({ "CRE SWR21 A320 47.46 8.56 270 FL070 250" }, "f200 unknown places")
+  if nav then
+    asked(pt("add DOORS to the route of Swiss two one"), "DOORS names no place")
+    asked(pt("Swiss two one add waypoint XYZZQ at FL100"), "XYZZQ names no place")
+    check_eq(pt("add RILAX to the route of Swiss two one"), "ADDWPT SWR21 RILAX")
+    check_eq(pt("define waypoint DOORS at 47.6 8.5 and add DOORS to the route of Swiss two one"),
+      "DEFWPT DOORS 47.6 8.5 ; ADDWPT SWR21 DOORS")
   end
 end
