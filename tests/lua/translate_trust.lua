@@ -18585,6 +18585,7 @@ do
     check_eq(nt("create vueling 88 A320 at mike juliet victor heading 090 6000 feet 220 knots"),
       "CRE VLG88 A320 MJV 90 6000 220")
     asked(nt("create vueling 88 A320 at zulu xray quebec heading 090 6000 feet 220 knots"), "no such place")
+  end
 end
 -- Cycle 60 (f200): the nervous trainee: a callsign cut off and said again; a word cut off where the request opens;
 -- a climb or descent broken off by "..." or a question for the verb said after it; "forget" and a place the request
