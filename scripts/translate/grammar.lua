@@ -1299,7 +1299,8 @@ local function assent_dropped(text)
   for w in reply:lower():gmatch("[^%s,]+") do
     if not ASSENT[w] then return text end
   end
-  return said
+  -- (a "?" closing the request asked for leave to give it: the assent gives it)
+  return (said:gsub("%?$", ""))
 end
 G.question_labels, G.question_openers = set_of(lexicon.question_labels), set_of(lexicon.echo_question_openers)
 -- "Quick ask: what's the look-ahead set to?": a label of lexicon.question_labels opening the line before a colon,
@@ -5526,7 +5527,11 @@ function G:segments(b, e)
           -- level 360": the aircraft is still this instruction's subject)
           -- (and a verb ending a movement before the instruction word: "..., and Aeroflot stop descent at level 240")
           -- (a possessive after the verb: "Aeroflot 1878 to stop your descent at level 250")
-          if self:word(after, "to") then after = self:skip_fillers(after + 1) end
+          -- (a verb that names no value of its own between, or courtesy: "..., EZY2 fly heading 310", "..., EZY2
+          -- please go to heading 310": the aircraft is this instruction's subject)
+          while after < start and self:word(after, "please kindly now fly go") do after = self:skip_fillers(after + 1) end
+          if after < start and self:word(after, "to") then after = self:skip_fillers(after + 1) end
+          while after < start and self:word(after, "fly go") do after = self:skip_fillers(after + 1) end
           local obj = self:word(after, "@halted") and self:skip_fillers(after + 1)
           if obj and self:word(obj, "your its his her their the") then obj = self:skip_fillers(obj + 1) end
           if obj == start then after = start end
@@ -10536,6 +10541,32 @@ end
 -- closing it asks what the aircraft does (a typed statement said as a question), no instruction: asked, never sent.
 G.participles = set_of({ "climbing", "descending", "turning", "reducing", "increasing", "maintaining", "flying",
   "proceeding", "going", "holding", "slowing", "accelerating", "decelerating" })
+-- "KLM12 add SPY, and FL200", "add SPY and then 9000 feet": a level left unread (self.leftover) after a waypoint added
+-- to a route (the one command, an ADDWPT with no constraint) is the waypoint's altitude constraint or a level to fly
+-- now: asked, naming both (self.ask set).
+function G:addwpt_level_left()
+  if #self.out ~= 1 then return end
+  local id, wp = self.out[1]:match("^ADDWPT (%S+) (%S+)$")
+  if not id then return end
+  local left = self.leftover:lower()
+  for _, q in ipairs(self:quantities(1, #self.t + 1)) do
+    if (q.kind == "alt" or (q.kind == "plain" and q.value >= 1000 and q.value % 100 == 0))
+        and left:find(self:raw(q.b, q.e):lower(), 1, true) then
+      local lv = handlers.format.alt(q.value, q.kind == "alt" and q.fl)
+      self.ask = string.format("I have ADDWPT %s %s. Is '%s' the altitude to cross %s at (ADDWPT %s %s %s), or a "
+        .. "level to fly now (ALT %s %s)?", id, wp, self.leftover, wp, id, wp, lv, id, lv)
+      return
+    end
+  end
+end
+
+-- So does an instruction's base form there, or its value's name with the value ("KLM12 climb FL300?", "DLH34, turn
+-- left heading 180?", "KLM12 heading 180?", and the verb before the aircraft: "climb KLM12 FL300?"): is it allowed,
+-- should it? A question, asked, never sent ("please" in it, or a modal before it, "could KLM12 climb ...?", is a
+-- request, read).
+G.instruction_bases = set_of({ "climb", "descend", "turn", "reduce", "increase", "maintain", "fly", "proceed", "go",
+  "hold", "slow", "accelerate", "decelerate", "expedite", "direct", "heading", "speed", "level", "altitude", "fl",
+  "flight", "mach", "set", "change" })
 function G:participle_question()
   if #self.out == 0 then return end
   local last = #self.t
@@ -10545,13 +10576,32 @@ function G:participle_question()
     if self.t[x].kind == "punct" and self.t[x].text ~= "," then return end
   end
   if self:said("please") then return end
+  -- (a question word or a modal in it asks something else, or asks politely: "EVA12 speed 250, heading what?",
+  -- "Thai 420 turn right heading 120, can or not?")
+  local modal = self:said("what how which where why when who can could would will may might ok okay possible able")
   local first = self:skip_fillers(1)
+  if not modal and self.t[first] and G.instruction_bases[self.t[first].text] and not self:has_ref(first, first + 1) then
+    local r = self:refs_in(first + 1, first + 2, "aircraft")[1]
+    if r and r.b == first + 1 and r.exists
+        and (#self:quantities(r.e, last) > 0 or #self:refs_in(r.e, last, "waypoint") > 0) then
+      return self:need(string.format("'%s?' is an instruction said as a question (is it allowed? should %s do "
+        .. "it?): no instruction sent. If %s should do it, please say it without the question mark.",
+        (self:raw(first, last):gsub(" ([,.;:])", "%1")), r.name:upper(), r.name:upper()))
+    end
+  end
   local r = self:refs_in(first, first + 1, "aircraft")[1]
   if not (r and r.b == first and r.exists) then return end
   local k = self:skip_fillers(r.e)
   if self.t[k] and self.t[k].text == "," then k = self:skip_fillers(k + 1) end
   if self:word(k, "you") and self:word(k + 1, "are") then k = k + 2 end
+  local base = self.t[k] and G.instruction_bases[self.t[k].text]
   while self:word(k, "is are now still currently") do k = k + 1 end
+  -- (a value or a place after it: "KLM12 heading?" asks its state, shown)
+  if base and not modal and (#self:quantities(k, last) > 0 or #self:refs_in(k, last, "waypoint") > 0) then
+    return self:need(string.format("'%s?' is an instruction said as a question (is it allowed? should %s do it?): "
+      .. "no instruction sent. If %s should do it, please say it without the question mark.",
+      (self:raw(first, last):gsub(" ([,.;:])", "%1")), r.name:upper(), r.name:upper()))
+  end
   if not (self.t[k] and G.participles[self.t[k].text]) then return end
   return self:need(string.format("'%s' asks what %s is doing: a question, no instruction. If %s should do it, "
     .. "please say it without the question mark.", self:raw(first, last), r.name:upper(), r.name:upper()))
@@ -15891,6 +15941,7 @@ function M.translate(text, world)
         table.concat(g.out, " ; "), clause)
     end
   end
+  if not g.ask and g.leftover then g:addwpt_level_left() end
   if not g.ask and g.leftover then
     g.ask = #g.out == 0 and string.format("I have no instruction. What does '%s' mean?", g.leftover)
       or string.format("I have %s. What does '%s' mean?", table.concat(g.out, " ; "), g.leftover)

@@ -329,18 +329,9 @@ function m:readdressed(b, trig)
     if t.kind == "word" and not t.filler and not self:word(x, "and") then clause = true end
   end
   if last.e == k + 1 then
-    -- ("Asiana 213 and Jeju Air 1801, Asiana first heading 180, then Jeju Air speed 240": with no clause, the one
-    -- said again is addressed alone only when every other one of the pair is said again after the instruction word,
-    -- each for its own instruction)
-    if not clause then
-      local later = {}
-      for _, r in ipairs(self:refs_in(trig + 1, #self.t + 1, "aircraft")) do
-        if r.exists and not r.false_start then later[r.name] = true end
-      end
-      for i = 1, pair do
-        if refs[i].name ~= last.name and not later[refs[i].name] then return nil end
-      end
-    end
+    -- ("Asiana 213 and Jeju Air 1801, Asiana first heading 180, then Jeju Air speed 240", "KLM12 and DLH34, DLH34
+    -- heading 180": with no clause too, the one said again is addressed alone, never the pair: the others of the
+    -- pair get their own instruction after it or none)
     for i = 1, pair do
       if refs[i].name == last.name then
         self:explain(b, last.b)
@@ -1765,11 +1756,14 @@ end
 -- instruction that reads places; several navaids of the name are asked about, and so is a place of that
 -- ident within range too, unless it lies where the navaid is (the fix LAMAR 40 NM from the LAMAR VOR, LAA:
 -- which one?; with none flying, the place of that ident anywhere stays). Letters of a spelled callsign
--- ("two zero LIMA") are no name, nor is the name of a waypoint being defined ("define waypoint TANGO at ...").
+-- ("two zero LIMA") are no name, nor is the name of a waypoint being defined ("define waypoint TANGO at ..."), nor
+-- a name given to a new point or shape after its noun, "named", "called", "name" or "call it" ("create circle JEJU
+-- at ...", "define waypoint named JEJU at ...": JEJU, verbatim).
 function m:navaid_name_refs()
   local named, locate = self.world.navaids_named, self.world.locate
   if not named or not locate then return end
-  local defining = self:word_in(1, #self.t + 1, "create define defwpt make add new")
+  local defining = self:word_in(1, #self.t + 1, "create define defwpt make add new draw")
+  local new_object = self:word_in(1, #self.t + 1, "create define defwpt make new draw circle box polygon poly")
   -- (a waypoint defined or on a route named by a word of the phonetic alphabet: "SIERRA")
   local lettered = false
   for _, w in ipairs(self.world.waypoints or {}) do lettered = lettered or L.phonetic[w:lower()] ~= nil end
@@ -1790,7 +1784,9 @@ function m:navaid_name_refs()
   for _, r in ipairs(self.refs) do
     local before = self.t[r.b - 1]
     local no_name = before and (before.kind == "number" or before.number_word or L.phonetic[before.text]
-      or (defining and self:word(r.b - 1, "@waypoint_nouns")))
+      or (defining and self:word(r.b - 1, "@waypoint_nouns"))
+      or (new_object and (self:word(r.b - 1, "@named") or self:word(r.b - 1, "circle box polygon poly name")
+        or (self:word(r.b - 1, "it") and self:word(r.b - 2, "call name")))))
     if r.kind == "waypoint" and not r.exists and r.e == r.b + 1 and self.t[r.b].raw == r.name and not no_name
         and not self:word(r.b, "@navaid_kinds") then
       local ids, at, seen = {}, {}, {}

@@ -3003,6 +3003,21 @@ return function(H, f, compass)
         break
       end
     end
+    -- ("add SPY, and FL200", "add SPY and then 250 knots": a level or speed with its unit straight after "and" (or
+    -- "and then"), no "at" or "with" said for the waypoint before it, is its constraint or a value to fly now: asked,
+    -- naming both)
+    for _, q in ipairs(qs) do
+      if q.b >= upto or q.b < own_b then break end
+      local a = self:word(q.b - 1, "then") and q.b - 2 or q.b - 1
+      if self:word(a, "and") and not self:word_in(own_b, q.b, "at with") and (q.kind == "alt" or q.kind == "speed") then
+        local v = q.kind == "alt" and f.alt(q.value, q.fl) or f.int(q.value)
+        local c = q.kind == "alt" and where .. " " .. v or where .. ",," .. v
+        return self:need(string.format("Is '%s' the %s to cross %s at (ADDWPT %s %s), or a %s to fly now (%s %s %s)?",
+          self:raw(q.b, q.e), q.kind == "alt" and "altitude" or "speed", where, id, c,
+          q.kind == "alt" and "level" or "speed", q.kind == "alt" and "ALT" or "SPD", id, v))
+      end
+      break
+    end
     local level_e  -- (the token after the level said)
     local unread   -- a value after the verb that is neither the level nor the speed ("add RESMI FL60 500")
     for _, q in ipairs(qs) do

@@ -520,10 +520,12 @@ return function(intent, rule, words)
   end }
   -- "go higher to 36000", "take it higher to FL360": a level after "higher ... to" ("lower" is read below)
   rule { "higher", "alt", next = "to", not_near = { 3, "speed knots kts" } }
-  -- "N123AB go to 3500": a bare number of a thousand or more is no heading or speed, but a level
+  -- "N123AB go to 3500": a bare number of a thousand or more is no heading or speed, but a level; so is a level
+  -- with its unit ("BAW1 go to FL270, EZY2 go to FL310": each aircraft's own)
   rule { "go", "alt", next = "to", when = function(g, i)
-    local q = g:quantities(i + 2, i + 3)[1]
-    return q ~= nil and q.b == i + 2 and q.kind == "plain" and q.value >= 1000 and q.value % 100 == 0
+    local q = g:quantities(i + 2, i + 5)[1]
+    return q ~= nil and q.b == i + 2
+      and ((q.kind == "plain" and q.value >= 1000 and q.value % 100 == 0) or q.kind == "alt")
   end }
   -- "kl204 up to 300", "EWG7LM up to FL320 so it ...": straight after the callsign
   rule { "up down", "alt", next = "to", not_near = { 3, "speed knots kts" }, not_prev = { 3, "speed spd" },

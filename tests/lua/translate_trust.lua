@@ -18644,5 +18644,63 @@ do
     check_eq(pt("add RILAX to the route of Swiss two one"), "ADDWPT SWR21 RILAX")
     check_eq(pt("define waypoint DOORS at 47.6 8.5 and add DOORS to the route of Swiss two one"),
       "DEFWPT DOORS 47.6 8.5 ; ADDWPT SWR21 DOORS")
+end
+-- Cycle 60 (fhz7): hazards: a new point's or shape's name resolved to a place; an instruction said as a question;
+-- a pair named, then one said again with the instruction; a bare level after "and" following an added waypoint; a
+-- second aircraft's value taken from the first's ("go to", "fly" between the aircraft and its value)
+do
+  local _, ex = scene({ "CRE EZY481 A320 52.0 4.0 090 FL250 280", "CRE BAW77 A321 52.2 4.3 270 FL300 290",
+    "CRE AFR209 B738 52.4 4.6 180 FL200 260" })
+  -- an instruction's base form (or its value's name with the value) closed by "?": asked, never sent
+  asked(ex("EZY481 climb FL320?"), "a question")
+  asked(ex("Speedbird 77, turn left heading 200?"), "a question")
+  asked(ex("AFR209 reduce speed 230 ?"), "a question")
+  asked(ex("descend AFR209 FL180?"), "a question")
+  asked(ex("EZY481 heading 120?"), "a question")
+  asked(ex("confirm BAW77 descend FL240?"), "a question")
+  -- near forms stay read: no "?", "please" in it, a modal request, a state asked
+  check_eq(ex("EZY481 climb FL320"), "ALT EZY481 FL320")
+  check_eq(ex("EZY481 climb FL320."), "ALT EZY481 FL320")
+  check_eq(ex("EZY481 climb FL320 please?"), "ALT EZY481 FL320")
+  check_eq(ex("could EZY481 climb FL320?"), "ALT EZY481 FL320")
+  check_eq(ex("EZY481 heading?"), "POS EZY481")
+  -- a pair named, then one said again straight before the instruction: that one's alone
+  check_eq(ex("EZY481 and BAW77, BAW77 heading 180"), "HDG BAW77 180")
+  check_eq(ex("Speedbird 77 and AFR209, AFR209 turn right heading 250"), "HDG AFR209 250 RIGHT")
+  check_eq(ex("EZY481, AFR209, EZY481 descend FL210"), "ALT EZY481 FL210")
+  check_eq(ex("EZY481 and BAW77, heading 180"), "HDG EZY481 180 ; HDG BAW77 180")
+  check_eq(ex("EZY481 and BAW77, EZY481 heading 180, BAW77 speed 240"), "HDG EZY481 180 ; SPD BAW77 240")
+  -- each aircraft its own value, "go to" or "fly" between the aircraft and it
+  check_eq(ex("BAW77 go to FL270 and AFR209 go to FL230"), "ALT BAW77 FL270 ; ALT AFR209 FL230")
+  check_eq(ex("BAW77 go to flight level 270, AFR209 go to flight level 230"), "ALT BAW77 FL270 ; ALT AFR209 FL230")
+  check_eq(ex("BAW77 FL270, AFR209 go to FL230"), "ALT BAW77 FL270 ; ALT AFR209 FL230")
+  check_eq(ex("BAW77 FL270, AFR209 fly heading 310"), "ALT BAW77 FL270 ; HDG AFR209 310")
+  check_eq(ex("EZY481 speed 250, AFR209 please fly heading 140"), "SPD EZY481 250 ; HDG AFR209 140")
+  check_eq(ex("BAW77 and AFR209 go to FL240"), "ALT BAW77 FL240 ; ALT AFR209 FL240")
+  check_eq(ex("AFR209 go to FL230"), "ALT AFR209 FL230")
+end
+do
+  local _, ex = scene({ "DEFWPT ROKAN 52.5 4.5", "CRE EZY481 A320 52.0 4.0 090 FL250 280" })
+  -- a level or speed with its unit after "and", following an added waypoint: constraint or value now, asked
+  asked(ex("EZY481 add ROKAN, and FL200"), "constraint or level")
+  asked(ex("EZY481 add ROKAN to the route and flight level 200"), "constraint or level")
+  asked(ex("EZY481 add ROKAN, and 9000 feet"), "constraint or level")
+  asked(ex("EZY481 add ROKAN, and 250 knots"), "constraint or speed")
+  -- said with "at", or straight after the waypoint, the constraint
+  check_eq(ex("EZY481 add ROKAN at FL200"), "ADDWPT EZY481 ROKAN FL200")
+  check_eq(ex("EZY481 add ROKAN FL200"), "ADDWPT EZY481 ROKAN FL200")
+  check_eq(ex("EZY481 add ROKAN at FL200 and 250 knots"), "ADDWPT EZY481 ROKAN FL200 250")
+end
+do
+  -- a name given to a new point or shape is that name, verbatim, never the navaid it names (JEJU is the CJU VOR)
+  local _, ex = navscene({ "CRE KAL12 A320 33.2 126.3 090 FL250 280" }, "a new object's name")
+  if ex then
+    check_eq(ex("create circle JEJU, center 33.5 126.5, radius 30"), "CIRCLE JEJU 33.5 126.5 30")
+    check_eq(ex("draw a circle JEJU centred at 33.5 north 126.5 east with radius 30 nm"), "CIRCLE JEJU 33.5 126.5 30")
+    check_eq(ex("define waypoint named JEJU at 33.5 north 126.5 east"), "DEFWPT JEJU 33.5 126.5")
+    check_eq(ex("new waypoint make please, name JEJU, 33.6 north 126.4 east"), "DEFWPT JEJU 33.6 126.4")
+    check_eq(ex("make a fix, call it JEJU, at 33.5 126.5"), "DEFWPT JEJU 33.5 126.5")
+    -- the navaid's name where the aircraft is sent stays the navaid
+    check_eq(ex("KAL12 direct JEJU"), "ADDWPT KAL12 CJU ; DIRECT KAL12 CJU")
   end
 end
