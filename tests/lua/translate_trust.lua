@@ -18644,6 +18644,7 @@ do
     check_eq(pt("add RILAX to the route of Swiss two one"), "ADDWPT SWR21 RILAX")
     check_eq(pt("define waypoint DOORS at 47.6 8.5 and add DOORS to the route of Swiss two one"),
       "DEFWPT DOORS 47.6 8.5 ; ADDWPT SWR21 DOORS")
+  end
 end
 -- Cycle 60 (fhz7): hazards: a new point's or shape's name resolved to a place; an instruction said as a question;
 -- a pair named, then one said again with the instruction; a bare level after "and" following an added waypoint; a
