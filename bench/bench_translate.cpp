@@ -6,7 +6,11 @@
 // and the worst per-utterance time, as wall time, as this thread's CPU time
 // (preemption not counted), and as each utterance's best wall time over
 // the reps (its own cost, which holds on a shared, loaded machine).
-// Asserts nothing.
+// The collector is stopped during each request and its garbage taken by one
+// minor step after the reply (script::collect_after_reply, as a person's
+// think time would pay it): the latencies are the request's alone; the
+// step's time, the throughput with the steps and the memory a request
+// allocates are printed beside them. Asserts nothing.
 // --slowest K lists the K utterances with the highest best-of-reps time.
 //   bench_translate [CORPUS.tsv ...] [--reps N] [--slowest K]
 #include <time.h>
@@ -75,13 +79,15 @@ int main(int argc, char** argv) {
       cases.push_back({"b", setup, u, "", "bench"});
   }
   script::Vm vm{script::VmOptions{}};
-  std::vector<double> ms, cpu, best;
+  std::vector<double> ms, cpu, best, steps, kb;
+  double total_ms = 0.0;
   std::vector<std::pair<double, const std::string*>> by_utterance;
   int failures = 0;
   for (const auto& c : cases) {
     command::Stack stack;
     if (!translate::setup_stack(stack, c.setup).is_ok()) continue;
     (void)script::run_translation_graph(vm, c.utterance, {"offline", "", &stack});  // warm
+    (void)script::collect_after_reply(vm);
     double fastest = 1e300;
     for (int r = 0; r < reps; ++r) {
       const auto t0 = Clock::now();
@@ -89,6 +95,10 @@ int main(int argc, char** argv) {
       auto tr = script::run_translation_graph(vm, c.utterance, {"offline", "", &stack});
       cpu.push_back(thread_cpu_ms() - c0);
       ms.push_back(std::chrono::duration<double, std::milli>(Clock::now() - t0).count());
+      const auto step = script::collect_after_reply(vm);
+      steps.push_back(step.ms);
+      kb.push_back(step.freed_kb);
+      total_ms += ms.back() + steps.back();
       fastest = std::min(fastest, ms.back());
       failures += !tr.is_ok();
     }
@@ -98,6 +108,8 @@ int main(int argc, char** argv) {
   std::sort(ms.begin(), ms.end());
   std::sort(cpu.begin(), cpu.end());
   std::sort(best.begin(), best.end());
+  std::sort(steps.begin(), steps.end());
+  std::sort(kb.begin(), kb.end());
   std::printf("offline translation graph: %zu utterances x %d reps (%s), graph errors %d\n", ms.size() / reps, reps,
               paths.empty() ? "built-in set" : "corpora", failures);
   std::printf("  wall per utterance  p50 %.3f ms   p99 %.3f ms   max %.3f ms\n", quantile(ms, 0.5),
@@ -106,6 +118,15 @@ int main(int argc, char** argv) {
               quantile(cpu, 0.99), cpu.empty() ? 0.0 : cpu.back());
   std::printf("  best of %d reps    p50 %.3f ms   p99 %.3f ms   max %.3f ms\n", reps, quantile(best, 0.5),
               quantile(best, 0.99), best.empty() ? 0.0 : best.back());
+  std::printf("  collection after the reply  p50 %.3f ms   p99 %.3f ms   max %.3f ms\n",
+              quantile(steps, 0.5), quantile(steps, 0.99), steps.empty() ? 0.0 : steps.back());
+  std::printf("  throughput with the collection  %.3f ms per request (%.0f requests/s)\n",
+              ms.empty() ? 0.0 : total_ms / ms.size(),
+              total_ms > 0 ? 1e3 * ms.size() / total_ms : 0.0);
+  std::printf(
+      "  garbage per request  p50 %.0f KB   p99 %.0f KB   max %.0f KB (held until the step after "
+      "the reply)\n",
+      quantile(kb, 0.5), quantile(kb, 0.99), kb.empty() ? 0.0 : kb.back());
   std::sort(by_utterance.rbegin(), by_utterance.rend());
   for (int k = 0; k < slowest && k < static_cast<int>(by_utterance.size()); ++k)
     std::printf("  %8.3f ms  %s\n", by_utterance[k].first, by_utterance[k].second->c_str());

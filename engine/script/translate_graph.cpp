@@ -1,5 +1,7 @@
 #include "script/translate_graph.h"
 
+#include <chrono>
+
 #include "script/lua_util.h"
 
 namespace squawk::script {
@@ -69,7 +71,24 @@ Result<translate::Translation> read_graph_result(lua_State* L) {
 
 namespace {
 
-// Runs fn(L) (which leaves one value) under pcall; the error becomes a Status.
+// The registry's key of the flag "a request's minor step is owed" (collect_after_reply).
+const char kCollectionOwed = 0;
+
+bool collection_owed(lua_State* L) {
+  lua_rawgetp(L, LUA_REGISTRYINDEX, &kCollectionOwed);
+  const bool owed = lua_toboolean(L, -1) != 0;
+  lua_pop(L, 1);
+  return owed;
+}
+
+// Sets the flag; the first set adds the key to the registry (an allocation: under pcall only).
+void set_collection_owed(lua_State* L, bool owed) {
+  lua_pushboolean(L, owed);
+  lua_rawsetp(L, LUA_REGISTRYINDEX, &kCollectionOwed);
+}
+
+// Runs fn(L) (which leaves one value) under pcall with the collector stopped (collect_after_reply);
+// the error becomes a Status.
 template <class F>
 Result<translate::Translation> protected_call(Vm& vm, F&& fn) {
   lua_State* L = vm.state();
@@ -78,16 +97,25 @@ Result<translate::Translation> protected_call(Vm& vm, F&& fn) {
   lua_pushcfunction(L, [](lua_State* S) -> int {
     auto* c = static_cast<Ctx*>(lua_touserdata(S, 1));
     lua_settop(S, 0);
+    if (collection_owed(S))
+      lua_gc(S, LUA_GCSTEP, 0);  // (the last request's garbage, not taken after its reply)
+    set_collection_owed(S, true);
+    lua_gc(S, LUA_GCSTOP);
     (*c->fn)(S);
     return 1;
   });
   lua_pushlightuserdata(L, &ctx);
-  if (Status st = vm.pcall(1, 1); !st.is_ok()) {
+  const bool running =
+      lua_gc(L, LUA_GCISRUNNING) != 0;  // (a script that stopped it keeps it stopped)
+  const Status st = vm.pcall(1, 1);
+  if (!st.is_ok()) {
     lua_settop(L, top);
+    if (running) lua_gc(L, LUA_GCRESTART);
     return Status::internal("translation graph (scripts/translate/graph.lua): " + st.message());
   }
   auto tr = read_graph_result(L);
   lua_settop(L, top);
+  if (running) lua_gc(L, LUA_GCRESTART);  // (after the result is read: no step before the reply)
   return tr;
 }
 
@@ -104,6 +132,20 @@ void push_graph_module(lua_State* L) {
   lua_call(L, 1, 1);
   lua_pushvalue(L, -1);
   lua_setfield(L, LUA_REGISTRYINDEX, "squawk.translate.graph");
+}
+
+ReplyCollection collect_after_reply(Vm& vm) {
+  lua_State* L = vm.state();
+  if (!collection_owed(L)) return {};
+  auto kb = [L] { return lua_gc(L, LUA_GCCOUNT) + lua_gc(L, LUA_GCCOUNTB) / 1024.0; };
+  const double before = kb();
+  const auto t0 = std::chrono::steady_clock::now();
+  lua_gc(L, LUA_GCSTEP, 0);
+  ReplyCollection r;
+  r.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  r.freed_kb = before - kb();
+  set_collection_owed(L, false);  // (the key is in the registry: no allocation)
+  return r;
 }
 
 Result<translate::Translation> run_translation_graph(Vm& vm, const std::string& text, const GraphRequest& req) {

@@ -24,6 +24,29 @@ TEST_CASE("run_translation_graph: commands against a Stack's traffic, which stay
   CHECK(setup->ask.find("altitude") != std::string::npos);
 }
 
+TEST_CASE(
+    "collect_after_reply: one step owed per request, taken once; a request finding one owed takes "
+    "it itself") {
+  script::Vm vm({});
+  command::Stack stack;
+  REQUIRE(translate::setup_stack(stack, "CRE KL204 A320 52 4 90 FL250 280").is_ok());
+  CHECK(script::collect_after_reply(vm).freed_kb == 0.0);  // (nothing asked yet: nothing owed)
+  REQUIRE(script::run_translation_graph(vm, "KL204 turn left 20 degrees", {"offline", "", &stack})
+              .is_ok());
+  CHECK(script::collect_after_reply(vm).freed_kb > 0.0);  // (the request's garbage)
+  const auto again = script::collect_after_reply(vm);
+  CHECK(again.ms == 0.0);
+  CHECK(again.freed_kb == 0.0);
+  // (two requests with no step between: the second takes the first's, the translation the same)
+  REQUIRE(script::run_translation_graph(vm, "KL204 turn left 20 degrees", {"offline", "", &stack})
+              .is_ok());
+  auto tr =
+      script::run_translation_graph(vm, "KL204 turn left 20 degrees", {"offline", "", &stack});
+  REQUIRE(tr.is_ok());
+  CHECK(tr->text() == "HDG KL204 70 LEFT");
+  CHECK(script::collect_after_reply(vm).freed_kb > 0.0);
+}
+
 TEST_CASE("GraphDialogue: a question keeps its request, the answer completes it, cancel drops it") {
   script::Vm vm({});
   command::Stack stack;
