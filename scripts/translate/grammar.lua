@@ -2043,6 +2043,58 @@ end
 G.level_verb_after = { climb = true, descend = true, descent = true, climbing = true, descending = true,
                        please = true, go = true, ["and"] = true, ["then"] = true }
 G.vertical_verbs = set_of({ "climb", "descend" })
+-- verbs that say nothing of speed by themselves, before a speed with its unit ("fly with 280 knots", "put 270 knots")
+G.general_speed_verbs = set_of({ "fly", "flies", "go", "goes", "put" })
+-- "fly with 280 knots", "it should go with 250 knots", "put 270 knots", "fly with Mach 0,80" (text in, text out):
+-- a speed of three digits said with knots, or a Mach number, after a general verb of flying or setting (and "with"
+-- or "at", or nothing between) is said "speed 280 knots", so that a condition before it ("when it is at FL130, fly
+-- with 280 knots") reads it as it reads any speed instruction; a value of another unit ("fly with 1500 ft/min") or
+-- of none ("fly 270", "fly with 270") is left as said
+-- "speed 260 until SPY and afterwards 240 knots", "keep FL250 until SPY, and only then descend FL200", "until SPY,
+-- thereafter with 240 knots" (text in, text out): the word that opens what follows a limit "until" or "till" a place
+-- of one word (or a level "FL200") is said "then" (G:until_then reads the rest from that place), and "with" straight
+-- after it before a speed is said "speed"; a longer place, or a sequel word not straight after the place (a comma
+-- and "and" between at most), is left as said
+G.until_sequels = { "and only then", "only then", "and afterwards", "afterwards", "and afterward", "afterward",
+                    "and thereafter", "thereafter", "and after that", "after that" }
+function G.until_sequel_said(text)
+  for _, w in ipairs(G.until_sequels) do
+    local pat = "(%f[%a][Uu]?[Nn]?[Tt][Ii][Ll]l?%s+[%w]+)(%s*,?%s+)" .. w:gsub("%a", function(c)
+      return "[" .. c:upper() .. c .. "]" end):gsub(" ", "%%s+") .. "%f[%A]"
+    text = text:gsub(pat, function(limit, sep)
+      local word = limit:match("^(%a+)"):lower()
+      if word ~= "until" and word ~= "till" then return nil end
+      return limit .. (sep:find(",", 1, true) and ", " or " ") .. "then"
+    end)
+  end
+  return (text:gsub("(%f[%a][Tt]hen%s+)[Ww]ith(%s+%d%d%d%s*[Kk][NnTt]%a*%f[%A])", "%1speed%2")
+    :gsub("(%f[%a][Tt]hen%s+)[Ww]ith(%s+[Mm][Aa][Cc][Hh]%f[%A])", "%1speed%2"))
+end
+function G.speed_after_general_verb(text)
+  local out, from = {}, 1
+  for b, verb, e in text:gmatch("()%f[%a](%a+)%f[%A]()") do
+    local v = verb:lower()
+    if b >= from and G.general_speed_verbs[v] then
+      local rest = text:sub(e)
+      local sp, prep, sp2, n, sp3, unit, at = rest:match("^(%s+)(%a*)(%s*)(%d%d%d)(%s*)(%a+)%f[%A]()")
+      local pr, u = (prep or ""):lower(), (unit or ""):lower()
+      local speed = sp and (pr == "" and sp2 == "" or pr == "with" or pr == "at" and v ~= "put")
+        and (u == "knots" or u == "knot" or u == "kts" or u == "kt")
+      local mach_sp, mprep, mach, mat = rest:match("^(%s+)(%a+)%s+([Mm][Aa][Cc][Hh]%s*0?[%.,]%d%d?)%f[%D]()")
+      local mpr = (mprep or ""):lower()
+      if speed then
+        out[#out + 1] = text:sub(from, b - 1) .. "speed" .. sp .. n .. sp3 .. unit
+        from = e + at - 1
+      elseif mach_sp and (mpr == "with" or mpr == "at" and v ~= "put") then
+        out[#out + 1] = text:sub(from, b - 1) .. "speed" .. mach_sp .. mach
+        from = e + mat - 1
+      end
+    end
+  end
+  if from == 1 then return text end
+  out[#out + 1] = text:sub(from)
+  return table.concat(out)
+end
 G.speed_verbs = set_of({ "reduce", "increase" })
 G.value_not_reordered = set_of({ "at", "when", "after", "passing", "reaching", "until", "till", "above", "below",
   "from", "to", "leaving", "by", "of", "than", "over", "through", "cross", "crossing", "reach", "reaches", "pass",
@@ -2487,6 +2539,18 @@ local function written_forms(text, world)
       or low:find("once", 1, true)
       or low:find("f", 1, true) or low:find("more", 1, true) or low:find("new", 1, true) or low:find("other", 1, true) or low:find("extra", 1, true) then
     text = G.level_before_verb(text)
+    low = text:lower()
+  end
+  -- "fly with 280 knots", "it should go with 250 knots", "put 270 knots", "fly with Mach 0,80": a speed said with
+  -- its unit (knots or Mach) after a general verb of flying or setting is the speed instruction, said "speed 280
+  -- knots", so that a condition before it ("when it is at FL130, fly with 280 knots") reads it as after any speed
+  -- verb; a value of another unit ("fly with 1500 ft/min") or none ("fly 270") is left as said
+  if low:find("until", 1, true) or low:find("till", 1, true) then
+    text = G.until_sequel_said(text)
+    low = text:lower()
+  end
+  if low:find("knot", 1, true) or low:find("kt", 1, true) or low:find("mach", 1, true) then
+    text = G.speed_after_general_verb(text)
     low = text:lower()
   end
   if low:find("gain", 1, true) or low:find("lose", 1, true) then

@@ -4812,11 +4812,12 @@ return function(H, f, compass)
     end
     -- "print baseline no reso to the console", "print hello_3 in the console": the words between the verb
     -- and where they go, as typed ("echo the text RUN 4 START to the console": after "the text")
-    local to = self:find_word(s.trig + 1, s.e, "to on in")
+    -- ("echo RUN 7 START in the log": the log too)
+    local to = self:find_word(s.trig + 1, s.e, "to on in into")
     local at = self:word(to + 1, "the") and to + 2 or to + 1
     local from = self:word(s.trig + 1, "the") and self:word(s.trig + 2, "text message words line") and s.trig + 3
       or s.trig + 1
-    if to > from and to < s.e and self:word(at, "console screen display window") then
+    if to > from and to < s.e and self:word(at, "console screen display window log") then
       self:explain(s.trig + 1, from)
       self:mark_used(from, to)
       self:explain(to, at + 1)

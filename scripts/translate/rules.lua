@@ -3032,6 +3032,25 @@ return function(intent, rule, words)
     return g:word(k, "fast") and not g:word(k + 1, "forward time")
   end }
   rule { "run advance", "op", near = { 3, "@sim" }, not_near = { 7, "real times faster x twice thrice" } }
+  -- "we can continue now", "the simulation can continue now, thank you", "simulation continue please": the run
+  -- going on, said with a subject, a modal or a courtesy, and nothing after it but "now", "again" or a courtesy to
+  -- the request's end or a mark, no aircraft named in the request
+  rule { "continue resume", "op", when = function(g, i)
+    if g:has_ref(1, #g.t + 1, "aircraft") then return false end
+    local k = i + 1
+    while g.t[k] and (g:word(k, "now again please pls") or g.t[k].filler) do k = k + 1 end
+    -- (the clause before it says who goes on: "we", "you" or the simulation, after a modal at most, anything before
+    -- that subject, "I think we can resume now"; "the route can continue" is no run resumed)
+    local b = i - 1
+    while b >= 1 and not (g.t[b].kind == "punct" and g.t[b].text ~= "'") and not g:word(b, "we you @sim") do
+      if not (g.t[b].filler or g:word(b, "i us let let's lets the can may could shall should will")) then
+        return false
+      end
+      b = b - 1
+    end
+    return (g.t[k] == nil or g.t[k].kind == "punct" and g.t[k].text ~= "?")
+      and (g:word(i - 1, "can may could shall should will") or g:preceded_by(i, 3, "@sim") or k > i + 1)
+  end }
   -- ("resume at 2x", "continue at double speed": the clock starts, at that rate)
   rule { "continue resume", "op", when = function(g, i)
     return i + 1 > #g.t or g.t[i + 1].kind == "punct" or g:followed_by(i, 3, "@sim") or g:word(i + 1, "running and")
@@ -3283,10 +3302,11 @@ return function(intent, rule, words)
     local nx = g.t[i + 1]
     return i == g:skip_fillers(1) and nx ~= nil and nx.kind == "word" and PHONETIC[nx.text] == nil
   end }
-  -- "kindly echo the text RUN 4 START to the console": words sent to the console, screen or window
+  -- "kindly echo the text RUN 4 START to the console", "echo RUN 7 START in the log": words sent to the console,
+  -- screen, window or log
   rule { "echo", "echo", when = function(g, i)
-    local k = g:find_word(i + 2, #g.t + 1, "to on in")
-    return k <= #g.t and g:word(g:word(k + 1, "the") and k + 2 or k + 1, "console screen display window")
+    local k = g:find_word(i + 2, #g.t + 1, "to on in into")
+    return k <= #g.t and g:word(g:word(k + 1, "the") and k + 2 or k + 1, "console screen display window log")
   end }
   -- "write 'trial 4 start' into the log", "put 'baseline done' in the log", "put 'Run 3 start' on the
   -- screen": quoted text for the log or the screen
@@ -3296,10 +3316,15 @@ return function(intent, rule, words)
 
   -- "write a message on the screen, 'session two starts'", "show a note in the log, 'run 2 done'": quoted text
   -- after a message's noun and where it goes, no aircraft named between
+  -- ("write a message 'start of run 3' into the log", "show the text 'trial 3 starts' to the participant": where it
+  -- goes said in the four words after the quoted text)
   rule { "write put show display", "echo", when = function(g, i)
     for k = i + 1, math.min(#g.t, i + 9) do
       if g.t[k].kind == "quoted" then
-        return g:word_in(i + 1, k, "message note text") and g:word_in(i + 1, k, "log screen scope console")
+        local where = "log screen scope console participant participants"
+        return g:word_in(i + 1, k, "message note text")
+          and (g:word_in(i + 1, k, where) or g:word(k + 1, "to on in into for")
+            and g:word_in(k + 2, math.min(#g.t + 1, k + 5), where))
           and not g:has_ref(i + 1, k, "aircraft")
       end
     end

@@ -18705,3 +18705,43 @@ do
     check_eq(ex("KAL12 direct JEJU"), "ADDWPT KAL12 CJU ; DIRECT KAL12 CJU")
   end
 end
+-- Cycle 60 (fpol): the polite experimenter's speed said with a general verb of flying ("fly with 280 knots", "it
+-- should go with 250 knots", "put 270 knots") after a level condition; what follows a limit "until" a place said
+-- "afterwards", "after that", "only then" or "thereafter"; a message for the log with its place after the quoted
+-- text; "we can continue now" and "the simulation can continue" as the run resumed
+do
+  local _, ex = scene({ "DEFWPT ROKAN 48.1 11.2", "DEFWPT SELDA 48.4 11.6", "CRE AFR12 A320 48.0 11.0 090 FL120 280",
+    "ADDWPT AFR12 ROKAN", "ADDWPT AFR12 SELDA", "CRE IBE305 A321 48.5 11.5 270 FL300 300", "HOLD" })
+  -- the speed with its unit after "fly (with)", "go with", "put": read as any speed verb, in or out of a condition
+  check_eq(ex("Iberia 305, descend to FL260 and when it is at FL280 it should go with 250 knots"),
+    "ALT IBE305 FL260 ; ATALT IBE305 FL280 SPD IBE305 250")
+  check_eq(ex("please let AFR12 climb to FL160 and afterwards, when it is at FL160, fly with 300 kts"),
+    "ALT AFR12 FL160 ; ATALT AFR12 FL160 SPD AFR12 300")
+  check_eq(ex("AFR12 climb FL150 and when you pass FL140 put 290 knots"),
+    "ALT AFR12 FL150 ; ATALT AFR12 FL140 SPD AFR12 290")
+  check_eq(ex("Iberia 305 descend to FL280, after reaching it fly with Mach 0,76"),
+    "ALT IBE305 FL280 ; ATALT IBE305 FL280 SPD IBE305 M0.76")
+  -- a value of another unit, or of none, is left as said
+  check_eq(ex("AFR12 fly with 1500 ft/min up to FL150"), "VS AFR12 1500 ; ALT AFR12 FL150")
+  asked(ex("AFR12 climb FL150 and fly with 270"), "270 of no unit")
+  -- what follows a limit until a place, said "afterwards", "after that", "and only then", "thereafter"
+  check_eq(ex("Please let the Air France fly with 260 knots until SELDA and afterwards with 230 knots."),
+    "SPD AFR12 260 ; AT AFR12 SELDA DO SPD AFR12 230")
+  check_eq(ex("AFR12 maintain FL120 till SELDA, and only then descend to FL090"),
+    "ALT AFR12 FL120 ; AT AFR12 SELDA DO ALT AFR12 FL90")
+  check_eq(ex("AFR12 speed 250 until ROKAN, thereafter reduce to 220"), "SPD AFR12 250 ; AT AFR12 ROKAN DO SPD AFR12 220")
+  asked(ex("AFR12 keep 260 knots until SELDA, after that it is free"), "what 'free' means")
+  -- a message for the log or the screen, its place said after the quoted text; no place stays asked
+  check_eq(ex("could you write the message 'block C starts' into the log please"), "ECHO block C starts")
+  check_eq(ex("please show the text 'break of 5 minutes' to the participants"), "ECHO break of 5 minutes")
+  check_eq(ex("kindly echo BLOCK D END in the log, thanks"), "ECHO BLOCK D END")
+  asked(ex("write the message 'climb' please"), "where the message goes")
+  -- the run going on, said with a subject, a modal or the simulation's noun; an aircraft or a question stays asked
+  check_eq(ex("Alright, we can continue now, thank you."), "OP")
+  check_eq(ex("The exercise may continue now."), "OP")
+  check_eq(ex("simulation continue please"), "OP")
+  asked(ex("can we continue now?"), "a question")
+  asked(ex("AFR12 can continue now"), "an aircraft named")
+  check_eq(ex("the conflict detection can continue now"), "ASAS ON")
+  asked(ex("the route can continue now"), "no run named")
+end
