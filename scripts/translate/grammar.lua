@@ -6049,6 +6049,16 @@ function G:ruled_out_reason_end(a, c)
   return k
 end
 
+-- True when a value opens at token i: typed ("260") or said in digits ("two six zero", its words one quantity from i).
+G.digit_words = { zero = true, one = true, two = true, three = true, four = true, five = true, six = true, seven = true,
+  eight = true, nine = true, niner = true }
+function G.value_opens(self, i)
+  if self:quantities(i, i + 1)[1] ~= nil then return true end
+  if not (self.t[i] and G.digit_words[self.t[i].text]) then return false end
+  local q = self:quantities(i, math.min(i + 4, #self.t + 1))[1]
+  return q ~= nil and q.b == i
+end
+
 function G:self_corrected()
   local a = 2
   while a <= #self.t do
@@ -6062,7 +6072,7 @@ function G:self_corrected()
         marked = marked or (SC_MARKERS[self.t[c].text]
           and (self.t[c].text ~= "no" or (nx and (nx.kind == "punct" or SC_WORDS[nx.text]))))
           or (nx ~= nil and SC_MARKERS[self.t[c].text .. " " .. nx.text])
-          or (self.t[c].text == "make" and self:word(c + 1, "it") and self:quantities(c + 2, c + 3)[1] ~= nil
+          or (self.t[c].text == "make" and self:word(c + 1, "it") and G.value_opens(self, c + 2)
             and not self:complete_before(a))
         c = c + 1
       end
