@@ -409,7 +409,6 @@ local names = {
     { "bamboo", "BAV" },
     { "lion inter", "LNI" },
     { "lion air", "LNI" },
-    { "lion", "LNI" },  -- (its name alone, as Indonesian controllers say it: "delete Lion 214"; "Thai Lion" is TLM)
     { "citilink", "CTV" },
     { "malindo", "MXD" },
     { "brunei", "RBA" },
