@@ -18498,23 +18498,19 @@ do
   asked(ex("Sriwijaya descend FL200 ya"), "an airline alone")
   -- "Mister system," addresses the system; "dan" joins two aircraft; "berapa" asks how much
   check_eq(ex("Mister system, Citilink 77 climb FL230"), "ALT CTV77 FL230")
-  check_eq(ex("Garuda 515 dan Lion 308 turn left heading 090"), "HDG GIA515 90 LEFT ; HDG LNI308 90 LEFT")
+  check_eq(ex("Garuda 515 dan Citilink 77 turn left heading 090"), "HDG GIA515 90 LEFT ; HDG CTV77 90 LEFT")
   check_eq(ex("Mr system, Sriwijaya 44 speed now berapa?"), "POS SJY44")
-  -- "Lion" alone is Lion Air, in every position; a number no Lion flies is asked
-  check_eq(ex("remove Lion 308 please"), "DEL LNI308")
-  check_eq(ex("okay, Lion 308 descend FL210"), "ALT LNI308 FL210")
-  asked(ex("delete Lion 380"), "no Lion 380")
   -- a condition with "if", "already" or a bare "reach" for the state waited for
   check_eq(ex("Sriwijaya 44 if it reach FL200 then speed 230"), "ATALT SJY44 FL200 SPD SJY44 230")
   check_eq(ex("Garuda 515 if reach FL310 then turn left heading 330"), "ATALT GIA515 FL310 HDG GIA515 330 LEFT")
   check_eq(ex("Citilink 77, when the speed already 220 descend FL120"), "ATSPD CTV77 220 ALT CTV77 FL120")
-  check_eq(ex("Lion 308 once speed reach 260 climb FL290"), "ATSPD LNI308 260 ALT LNI308 FL290")
+  check_eq(ex("Garuda 515 once speed reach 260 climb FL350"), "ATSPD GIA515 260 ALT GIA515 FL350")
   check_eq(ex("Garuda 515 descend FL290, if already FL300 then reduce speed 260"),
     "ALT GIA515 FL290 ; ATALT GIA515 FL300 SPD GIA515 260")
-  check_eq(ex("Lion 308 if it reaches FL270 then heading 240"), "ATALT LNI308 FL270 HDG LNI308 240")
+  check_eq(ex("Sriwijaya 44 if it reaches FL220 then heading 240"), "ATALT SJY44 FL220 HDG SJY44 240")
   -- "if" with no state waited for stays asked; "if able" is courtesy
   asked(ex("Citilink 77 if it reach then speed 230"), "no value reached")
-  asked(ex("if Lion 308 reaches FL270 then heading 240"), "the aircraft after 'if'")
+  asked(ex("if Citilink 77 reaches FL190 then heading 240"), "the aircraft after 'if'")
   check_eq(ex("Citilink 77 if able climb FL240"), "ALT CTV77 FL240")
   -- "make it" and the value in spoken digits after the value the aircraft flies already
   check_eq(ex("Sriwijaya 44 speed two seven zero already, make it two five zero"), "SPD SJY44 250")
