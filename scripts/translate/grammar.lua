@@ -543,7 +543,7 @@ end
 -- "turn left heading 170", "montez au niveau 140" -> "climb to flight level 140". A sentence holding a
 -- marking word of a language (the first of G.said_whole_order holding one) is read in that language alone;
 -- one holding none, in every language's words that mark none.
-G.said_whole_order = { "spanish", "french", "german", "dutch" }
+G.said_whole_order = { "spanish", "french", "german", "dutch", "malay" }
 function G.said_whole(text)
   local indexes = G.said_whole_index()
   -- (the form of `index` starting at token i, or nil; punctuation may close its last word only; `joining`
@@ -2230,7 +2230,7 @@ local function written_forms(text, world)
   -- "47,5 north", "8,5 degrees east", "factor to 1,1": a decimal comma (G.decimal_comma) is the point
   where("%d,%d", "()(%d+),(%d+)()", function(b, whole, part, e) return G.decimal_comma(text, b, whole, part, e) end)
   text = typed_abbreviations(lone_multipliers(tokens.numerals_apart(G.unfinished_restarts(G.cut_off_restarts(text)), DIGIT_WORDS), world))
-  text = hyphened_types(spelled(G.spelled_letter_a(heard_forms(negated_values(G.readback_reported(readback_heard(self_corrections(G.said_but(G.cancel_corrections(unlabelled(foreign_digits(G.said_whole(G.denied_word(G.dutch_chat(G.condition_then(text))))))))))))))))
+  text = hyphened_types(spelled(G.spelled_letter_a(heard_forms(negated_values(G.readback_reported(readback_heard(self_corrections(G.said_but(G.cancel_corrections(unlabelled(foreign_digits(G.said_whole(G.denied_word(G.dutch_chat(G.condition_then(G.condition_copula(text)))))))))))))))))
   low = text:lower()
   -- a position typed as whole degrees after the hemisphere, then minutes ("N55 50.0 W003 20.0", "S33 57
   -- E151 10"): decimal degrees before their hemisphere ("55.833333 N 3.333333 W"); minutes of 60 or more
@@ -6153,6 +6153,16 @@ function G:ruled_out_reason_end(a, c)
   return k
 end
 
+-- True when a value opens at token i: typed ("260") or said in digits ("two six zero", its words one quantity from i).
+G.digit_words = { zero = true, one = true, two = true, three = true, four = true, five = true, six = true, seven = true,
+  eight = true, nine = true, niner = true }
+function G.value_opens(self, i)
+  if self:quantities(i, i + 1)[1] ~= nil then return true end
+  if not (self.t[i] and G.digit_words[self.t[i].text]) then return false end
+  local q = self:quantities(i, math.min(i + 4, #self.t + 1))[1]
+  return q ~= nil and q.b == i
+end
+
 function G:self_corrected()
   local a = 2
   while a <= #self.t do
@@ -6166,7 +6176,7 @@ function G:self_corrected()
         marked = marked or (SC_MARKERS[self.t[c].text]
           and (self.t[c].text ~= "no" or (nx and (nx.kind == "punct" or SC_WORDS[nx.text]))))
           or (nx ~= nil and SC_MARKERS[self.t[c].text .. " " .. nx.text])
-          or (self.t[c].text == "make" and self:word(c + 1, "it") and self:quantities(c + 2, c + 3)[1] ~= nil
+          or (self.t[c].text == "make" and self:word(c + 1, "it") and G.value_opens(self, c + 2)
             and not self:complete_before(a))
         c = c + 1
       end
@@ -10444,6 +10454,43 @@ function G.condition_then(text)
         end
         put(toks[j - 1].e, ",", toks[j].e)
       end
+    end
+  end
+  return done()
+end
+-- Indonesian and Malay English says a condition with "if", and the state waited for with "already" or a bare
+-- "reach" ("if it reach FL250 then reduce speed 250", "when the speed already 230 descend FL150", "if already FL330
+-- then Mach .78", "when speed reach 250 climb FL350"): a condition word ("if", "when", "once", "after") opening a
+-- clause (first, after a mark, or after a word ending in a digit: the callsign's), at most three words of its subject
+-- (G.condition_subject), then "already" or "reach" and a value (digits, "FL...", "flight", "mach"). There "already" is
+-- "is" after "speed", "level" or "altitude" ("speed already 230": is 230) and "at" otherwise ("already FL330"), "reach"
+-- is "reaches" ("reaching" straight after the condition word, and only before a level there: "when Reach 250" is a
+-- callsign), and "if" is "when" (also before "reaches", "reached", "reaching", kept as said). Anything else ("if able", "if it is possible", "already at FL300?") stays as said.
+G.condition_subject = { it = true, the = true, its = true, speed = true, level = true, altitude = true }
+G.condition_copula_nouns = { speed = true, level = true, altitude = true }
+-- (the verb said in its English form, kept: only "if" before it is read, "if it reaches FL250 then ...")
+G.condition_reached = { reaches = true, reached = true, reaching = true }
+function G.condition_copula(text)
+  local lower = text:lower()
+  if not (lower:find("already", 1, true) or lower:find("reach", 1, true)) then return text end
+  local toks = bare_words(text)
+  local put, done = tokens.splicer(text)
+  for k, t in ipairs(toks) do
+    if (t.bare == "if" or t.bare == "when" or t.bare == "once" or t.bare == "after") and not t.raw:match("%p$")
+        and (k == 1 or toks[k - 1].raw:match("[,;.!]$") or toks[k - 1].raw:match("%d$")) then
+      local j = k + 1
+      while toks[j] and j <= k + 3 and G.condition_subject[toks[j].bare] and not toks[j].raw:match("%p$") do j = j + 1 end
+      local v, nx = toks[j], toks[j + 1]
+      local level = nx and (nx.bare:match("^fl%d*$") or nx.bare == "flight")
+      if v and nx and not v.raw:match("%p$") and (nx.raw:match("^%d") or level or nx.bare == "mach")
+          and (v.bare == "already" or G.condition_reached[v.bare] or (v.bare == "reach" and (j > k + 1 or level))) then
+        if t.bare == "if" then put(t.at, "when", t.e) end
+        if G.condition_reached[v.bare] then goto said end
+        local reach = j == k + 1 and "reaching" or "reaches"
+        local copula = j > k + 1 and G.condition_copula_nouns[toks[j - 1].bare] and "is" or "at"
+        put(v.at, v.bare == "reach" and reach or copula, v.e)
+      end
+      ::said::
     end
   end
   return done()

@@ -246,6 +246,9 @@ return {
         "sawasdee", "sawatdee", "sawadee", "khrap", "krap", "khob", "khun", "terima", "kasih", "selamat", "pagi",
         -- (the Thai speaker's polite particle closing a sentence: "krab" said by a man, "ka" or "kha" by a woman)
         "krab", "khrab", "ka", "kha",
+        -- (the particles of Indonesian and Malay said in English, softening or closing a request: "climb FL300 ya",
+        -- "pause dulu", "stop the sim sekejap" (for a moment), "turn left 20 dong"; "lah" is a filler)
+        "ya", "dulu", "sekejap", "kejap", "dong", "deh", "sih", "nih",
         "salamat", "maraming",
         -- the languages of Africa, romanised: Swahili ("asante sana", "sawa", "pole pole": slowly, easy),
         -- Amharic ("ishi": OK), Nigerian and Ghanaian Pidgin ("abeg": please, "oya": come on, "chale": mate),
@@ -291,6 +294,9 @@ return {
         -- a formal speaker's leave asked of the listener (Persian "ba ejazeh", said in English: "With your
         -- permission, Aseman 3858 turn left ...", "..., with your kind permission"): it asks for nothing
         "with your permission", "with your kind permission", "with your good permission", "by your leave",
+        -- (the system addressed as a person, as Indonesian and Malay speakers address the one they ask: "Mister system,
+        -- Lion 721 ...")
+        "mister system", "mr system", "mr. system",
         "if you permit", "if you permit me", "if you would permit me", "i apologize", "my apologies", "as a separate thing", "block of trials",
         "blocks of trials",
         -- a researcher's aside on their own frankness ("I'm honestly not sure", "Honestly, ...")
@@ -2633,6 +2639,14 @@ return {
     -- small words also English or another language's, read only in a Dutch sentence ("pauze even": for a moment)
     joining = { de = "the", het = "the", en = "and", op = "to", van = "of", met = "with", even = "for a moment",
       links = "left", rechts = "right" },
+  },
+  -- Indonesian and Malay words in a controller's English ("Batik 7151 dan Lion 214 climb FL350", "flight level now
+  -- berapa?"): "dan" is "and", "berapa" "how much"; neither marks the sentence (the particles are
+  -- accounted's)
+  malay = {
+    words = { dan = "and", berapa = "how much" },
+    shared = { dan = true, berapa = true },
+    joining = {},
   },
   },
   -- digits said in Spanish, Portuguese or French by a controller speaking English ("Avianca cero one nine",

@@ -18745,3 +18745,37 @@ do
   check_eq(ex("the conflict detection can continue now"), "ASAS ON")
   asked(ex("the route can continue now"), "no run named")
 end
+
+-- Cycle 60 (f196): Indonesian and Malay controllers' English
+do
+  local _, ex = scene({ "CRE GIA515 A333 -5.0 106.0 010 FL330 280", "CRE LNI308 B739 -6.0 107.0 200 FL250 290",
+    "CRE CTV77 A320 -7.0 108.0 120 FL200 250", "CRE SJY44 B735 -6.5 106.5 300 FL240 270" })
+  -- the particles that soften or close a request ("ya", "dulu", "sekejap", "dong") carry no instruction
+  check_eq(ex("Citilink 77 turn right heading 150 ya"), "HDG CTV77 150 RIGHT")
+  check_eq(ex("ya, Garuda 515 go down to FL310"), "ALT GIA515 FL310")
+  check_eq(ex("freeze the sim sekejap"), "HOLD")
+  check_eq(ex("hold the simulation dulu"), "HOLD")
+  check_eq(ex("Sriwijaya 44 reduce speed 240 dong"), "SPD SJY44 240")
+  -- a particle alone, or with an airline alone, is still asked
+  asked(ex("ya"), "nothing said")
+  asked(ex("Sriwijaya descend FL200 ya"), "an airline alone")
+  -- "Mister system," addresses the system; "dan" joins two aircraft; "berapa" asks how much
+  check_eq(ex("Mister system, Citilink 77 climb FL230"), "ALT CTV77 FL230")
+  check_eq(ex("Garuda 515 dan Citilink 77 turn left heading 090"), "HDG GIA515 90 LEFT ; HDG CTV77 90 LEFT")
+  check_eq(ex("Mr system, Sriwijaya 44 speed now berapa?"), "POS SJY44")
+  -- a condition with "if", "already" or a bare "reach" for the state waited for
+  check_eq(ex("Sriwijaya 44 if it reach FL200 then speed 230"), "ATALT SJY44 FL200 SPD SJY44 230")
+  check_eq(ex("Garuda 515 if reach FL310 then turn left heading 330"), "ATALT GIA515 FL310 HDG GIA515 330 LEFT")
+  check_eq(ex("Citilink 77, when the speed already 220 descend FL120"), "ATSPD CTV77 220 ALT CTV77 FL120")
+  check_eq(ex("Garuda 515 once speed reach 260 climb FL350"), "ATSPD GIA515 260 ALT GIA515 FL350")
+  check_eq(ex("Garuda 515 descend FL290, if already FL300 then reduce speed 260"),
+    "ALT GIA515 FL290 ; ATALT GIA515 FL300 SPD GIA515 260")
+  check_eq(ex("Sriwijaya 44 if it reaches FL220 then heading 240"), "ATALT SJY44 FL220 HDG SJY44 240")
+  -- "if" with no state waited for stays asked; "if able" is courtesy
+  asked(ex("Citilink 77 if it reach then speed 230"), "no value reached")
+  asked(ex("if Citilink 77 reaches FL190 then heading 240"), "the aircraft after 'if'")
+  check_eq(ex("Citilink 77 if able climb FL240"), "ALT CTV77 FL240")
+  -- "make it" and the value in spoken digits after the value the aircraft flies already
+  check_eq(ex("Sriwijaya 44 speed two seven zero already, make it two five zero"), "SPD SJY44 250")
+  check_eq(ex("Citilink 77 heading one two zero, make it one four zero"), "HDG CTV77 140")
+end
