@@ -15813,7 +15813,6 @@ function M.translate(text, world)
   local g = setmetatable({ u = u, t = toks, words = word_texts(toks), refs = u:refs(), world = world,
     fleet = world.aircraft, out = {}, qcache = {}, taken = {}, noted = {}, cut_back = {}, triggers = {}, apart = apart,
     text_said = said }, G)
-  if FPOL_DEBUG_TOKS then local o={} for k,t in ipairs(toks) do o[#o+1]=k..':'..t.raw..'|'..t.text..'/'..t.kind..(t.filler and '*' or '') end print(table.concat(o,' ')) end
   g:settle_callsigns()
   local same = g:same_for()
   g:airline_types()
