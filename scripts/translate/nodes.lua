@@ -537,7 +537,8 @@ end
 
 -- The question when a speed typed as SPD's (line c, its registry name `name`) or as CRE's last value lies far
 -- outside what the aircraft can fly; else nil. `copy`: a function giving the scratch simulation.
--- A value of the form "M..." or under 1 is a Mach number: one of 1 or more ("M78") is asked. Any other is knots
+-- A value of the form "M..." or under 1 is a Mach number: one of 1 or more is asked ("M1.5"), but "M78", two digits
+-- from 40 with no point, is Mach .78 typed short: nil, "english" (the grammar reads it). Any other is knots
 -- (CAS): over lexicon.typed_speed.max_kt is asked for every aircraft; under lexicon.typed_speed.min_kt, for a jet
 -- (a type the performance models class as no piston, turboprop or helicopter) in the air, or any aircraft flying
 -- lexicon.typed_speed.fast_kt or more; a value with a decimal point from 1 to that minimum is asked for every
@@ -566,6 +567,8 @@ function M.typed_speed_question(c, name, copy)
   if mach then
     local m = tonumber(mach)
     if m and m >= 1 then
+      -- ("m84": Mach typed short with its point left out, which the grammar reads as Mach .84)
+      if mach:match("^[4-9]%d$") then return nil, "english" end
       local guess = mach:match("^([5-9]%d)$")
       return string.format("%s, and I read Mach %s, which no %s flies. %s", said, mach, actype,
         guess and ("Did you mean Mach ." .. guess .. ", or another speed?") or "What speed should it fly?")
@@ -737,7 +740,9 @@ function M.typed(state, ctx)
     local typed_kt = name == "SPD" and tonumber(c:match("^%S+[%s,]+%S+[%s,]+(%d+)%s*$"))
     if typed_kt and typed_kt >= 1 and typed_kt < lexicon.min_airborne_kt then return "english" end
     -- a speed far outside what the aircraft flies ("spd klm12 78" to an A320, "KLM12 SPD 780"): asked, naming why
-    local far = (name == "SPD" or name == "CRE") and M.typed_speed_question(c, name, copy)
+    local far, english
+    if name == "SPD" or name == "CRE" then far, english = M.typed_speed_question(c, name, copy) end
+    if english then return "english" end
     if far then
       state.ask = far
       M.say(state, "typed", "asks: " .. state.ask)

@@ -18796,11 +18796,11 @@ do
   asked_why("THY77 speed 80", "holding Mach", "Mach .80")
   asked_why("sxs41 spd 780", "three digits past any airliner", "Mach .78")
   asked_why("SPD SXS41 450", "faster than any airliner", "faster than any airliner")
-  asked_why("SXS41 SPD M78", "Mach 78", "Mach .78")
+  asked_why("SXS41 SPD M780", "Mach 780", "Mach 780")
   asked_why("sxs41 speed 7.8", "neither knots nor Mach", "neither a Mach number")
   asked_why("AHY12 spd 95", "a turboprop flying 210 kt", "slower than an AT72")
   asked_why("cre thy610 a333 38 27 180 FL300 78", "a creation in the air", "Mach .78")
-  asked_why("CRE THY611 B738 38 27 180 FL300 M82", "a creation at Mach 82", "Mach .82")
+  asked_why("CRE THY611 B738 38 27 180 FL300 820", "a creation at 820 kt", "Mach .82")
   -- the speeds aircraft fly stay read: a light aircraft slow, a jet in knots or Mach
   check_eq(ex("TCABC speed 80"), "SPD TCABC 80")
   check_eq(ex("spd tcabc 90"), "SPD TCABC 90")
@@ -18808,6 +18808,9 @@ do
   check_eq(ex("SPD SXS41 0.78"), "SPD SXS41 0.78")
   check_eq(ex("sxs41 speed .78"), "SPD SXS41 .78")
   check_eq(ex("AHY12 spd 180"), "SPD AHY12 180")
+  -- ("M78": Mach typed short, its point left out)
+  check_eq(ex("SXS41 SPD M78"), "SPD SXS41 M0.78")
+  check_eq(ex("thy77 spd m82"), "SPD THY77 M0.82")
   check_eq(ex("CRE TCABD C172 38 27 180 3000 90"), "CRE TCABD C172 38 27 180 3000 90")
   check_eq(ex("CRE THY612 B738 38 27 180 FL300 M.78"), "CRE THY612 B738 38 27 180 FL300 M.78")
   -- a command's name followed by a callsign spelled in words is English, never the command with words as values
