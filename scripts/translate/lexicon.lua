@@ -1830,6 +1830,10 @@ return {
   -- a speed [kt] below this, typed for an aircraft created in the air ("cre tst9 a320 48 11 90 fl200 25") or
   -- typed as SPD's ("spd 25"), is no speed it can fly: asked, never run
   min_airborne_kt = 40,
+  -- a speed typed as SPD's or CRE's, with no unit (nodes.lua M.typed_speed_question): over max_kt [kt CAS] it is
+  -- faster than any airliner flies; under min_kt slower than any jet flies in the air, or any aircraft flying
+  -- fast_kt or more: asked, naming why
+  typed_speed = { min_kt = 100, max_kt = 400, fast_kt = 200 },
   -- a vertical speed [ft/min] typed below this as VS's ("vs 15") may have lost its zeros: asked
   min_typed_fpm = 100,
   -- a level or heading said digit by digit and run on into a speed before its unit with no break ("flight level

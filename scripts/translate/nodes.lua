@@ -480,15 +480,33 @@ local function carried_command(name, line)
   return table.concat(words, " ", #args + 1), #args + 1
 end
 
+-- Numbers said in words: no TrafScript argument is one ("create Pegasus nine delta lima" is a callsign spelled,
+-- not CRE of type NINE at a place DELTA).
+local SPOKEN_NUMBERS = {}
+for w in ("zero one two three four five six seven eight nine niner tree fower fife ten eleven twelve thirteen "
+    .. "fourteen fifteen sixteen seventeen eighteen nineteen twenty thirty forty fifty sixty seventy eighty ninety "
+    .. "hundred thousand"):gmatch("%a+") do
+  SPOKEN_NUMBERS[w] = true
+end
+
 -- True when an argument of the command `name` typed in `line` is an English word of the grammar.
 local function has_english_word(line, name)
   -- ("echo test start please": a courtesy word closing ECHO's text is said to us, not printed: English)
   local last = name == "ECHO" and line:lower():match("%s(%a+)[%s%.!]*$")
   if last == "please" or last == "pls" or last == "thanks" then return true end
   local n = 0
+  local all = {}
+  for w in line:gmatch("[^%s,]+") do all[#all + 1] = w:lower() end
   for w in line:gmatch("[^%s,]+") do
     n = n + 1
     local lw = w:lower()
+    -- a number said in words, or a letter of the spelling alphabet beside another or beside a number in words,
+    -- as an argument: a callsign or a value spelled out ("create Pegasus nine delta lima"), English
+    local spelled = function(x) return x and (SPOKEN_NUMBERS[x] or lexicon.phonetic[x]) end
+    if n > 1 and name ~= "ECHO" and (SPOKEN_NUMBERS[lw]
+        or (lexicon.phonetic[lw] and (spelled(all[n - 1]) and n > 2 or spelled(all[n + 1])))) then
+      return true
+    end
     local turn_word = name == "HDG" and n == 4 and (lw == "left" or lw == "right")
     -- ("WZZ1234 speed +20": a change said with its sign, which SPD / ALT / HDG would read as a value)
     if n > 1 and lw:match("^%+%d") and (name == "SPD" or name == "ALT" or name == "HDG") then return true end
@@ -515,6 +533,66 @@ function M.free_text(name)
     for _, c in ipairs(squawk.sim.commands()) do free_text[c.name] = (c.args or ""):find("string", 1, true) ~= nil end
   end
   return free_text[name] ~= false
+end
+
+-- The question when a speed typed as SPD's (line c, its registry name `name`) or as CRE's last value lies far
+-- outside what the aircraft can fly; else nil. `copy`: a function giving the scratch simulation.
+-- A value of the form "M..." or under 1 is a Mach number: one of 1 or more is asked ("M1.5"), but "M78", two digits
+-- from 40 with no point, is Mach .78 typed short: nil, "english" (the grammar reads it). Any other is knots
+-- (CAS): over lexicon.typed_speed.max_kt is asked for every aircraft; under lexicon.typed_speed.min_kt, for a jet
+-- (a type the performance models class as no piston, turboprop or helicopter) in the air, or any aircraft flying
+-- lexicon.typed_speed.fast_kt or more; a value with a decimal point from 1 to that minimum is asked for every
+-- aircraft. A value of two digits from 50, or three from 500, is asked as the Mach number it may be ("78": .78?).
+local slow_classes
+function M.typed_speed_question(c, name, copy)
+  local w = {}
+  for x in c:gmatch("[^%s,]+") do w[#w + 1] = x end
+  local id, actype, v, alt_ft, cas_kt
+  if name == "SPD" and #w == 3 then
+    local a = copy():get(w[2])
+    if not a then return nil end
+    id, actype, v, alt_ft, cas_kt = w[2]:upper(), a.type, w[3], a.alt_ft or 0, a.cas_kt or 0
+  elseif name == "CRE" and #w == 8 then
+    local alt = w[7]:upper()
+    alt_ft = alt:match("^FL(%d+)$") and tonumber(alt:sub(3)) * 100 or tonumber(alt)
+    if not alt_ft or alt_ft <= 0 then return nil end
+    id, actype, v, cas_kt = w[2]:upper(), w[3]:upper(), w[8], 0
+  else
+    return nil
+  end
+  local T = lexicon.typed_speed
+  local said = name == "SPD" and string.format("%s flies %s kt", id, math.floor(cas_kt + 0.5))
+    or string.format("%s would be created at %s ft", id, math.floor(alt_ft + 0.5))
+  local mach = v:match("^[Mm](.*)$")
+  if mach then
+    local m = tonumber(mach)
+    if m and m >= 1 then
+      -- ("m84": Mach typed short with its point left out, which the grammar reads as Mach .84)
+      if mach:match("^[4-9]%d$") then return nil, "english" end
+      local guess = mach:match("^([5-9]%d)$")
+      return string.format("%s, and I read Mach %s, which no %s flies. %s", said, mach, actype,
+        guess and ("Did you mean Mach ." .. guess .. ", or another speed?") or "What speed should it fly?")
+    end
+    return nil
+  end
+  local kt = tonumber(v)
+  if not kt or kt < 1 then return nil end
+  if not slow_classes then
+    slow_classes = {}
+    for _, t in ipairs(squawk.sim.types()) do slow_classes[t.designator:upper()] = t.class end
+  end
+  local jet = slow_classes[(actype or ""):upper()] == nil
+  local why
+  if kt > T.max_kt then
+    why = string.format("%s kt, faster than any airliner flies", v)
+  elseif kt < T.min_kt and (v:find(".", 1, true) or (jet and alt_ft > 0) or cas_kt >= T.fast_kt) then
+    why = v:find(".", 1, true) and string.format("%s, which is neither a Mach number nor a speed in knots", v)
+      or string.format("%s kt, slower than %s %s can fly", v, actype:match("^[AEIOU]") and "an" or "a", actype)
+  end
+  if not why then return nil end
+  local guess = jet and (v:match("^([5-9]%d)$") or v:match("^([5-9]%d)0$"))
+  return string.format("%s, and I read %s. %s", said, why,
+    guess and ("Did you mean Mach ." .. guess .. ", or another speed?") or "What speed should it fly?")
 end
 
 function M.typed(state, ctx)
@@ -661,6 +739,15 @@ function M.typed(state, ctx)
     -- below lexicon.min_typed_fpm, "vs 15": hundreds of ft/min with the zeros left out?)
     local typed_kt = name == "SPD" and tonumber(c:match("^%S+[%s,]+%S+[%s,]+(%d+)%s*$"))
     if typed_kt and typed_kt >= 1 and typed_kt < lexicon.min_airborne_kt then return "english" end
+    -- a speed far outside what the aircraft flies ("spd klm12 78" to an A320, "KLM12 SPD 780"): asked, naming why
+    local far, english
+    if name == "SPD" or name == "CRE" then far, english = M.typed_speed_question(c, name, copy) end
+    if english then return "english" end
+    if far then
+      state.ask = far
+      M.say(state, "typed", "asks: " .. state.ask)
+      return "ask"
+    end
     local typed_fpm = name == "VS" and tonumber(c:match("^%S+[%s,]+%S+[%s,]+([%-%+]?%d+)%s*$"))
     if typed_fpm and typed_fpm ~= 0 and math.abs(typed_fpm) < lexicon.min_typed_fpm then return "english" end
     -- ("ff 5": a fast-forward in lower case shorter than lexicon.ff_bare_min_s is English, seconds or minutes

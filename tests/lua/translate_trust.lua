@@ -18779,3 +18779,51 @@ do
   check_eq(ex("Sriwijaya 44 speed two seven zero already, make it two five zero"), "SPD SJY44 250")
   check_eq(ex("Citilink 77 heading one two zero, make it one four zero"), "HDG CTV77 140")
 end
+
+-- Cycle 60 (fhz8): typed TrafScript that English words or values out of the envelope only look like
+do
+  local _, ex = scene({ "CRE SXS41 A320 38.0 27.0 180 FL250 280", "CRE PGT9DL A320 37.6 27.5 330 7000 220",
+    "CRE THY77 B738 38.5 27.2 090 FL330 M.78", "CRE TCABC C172 38.2 26.8 270 3500 100",
+    "CRE AHY12 AT72 38.3 27.4 010 FL150 210" })
+  -- a speed typed with no unit far outside what the aircraft flies is asked, naming why (Mach .78 for a jet?)
+  local function asked_why(text, why, word)
+    local r = ex(text)
+    check(r:match("^ASK") ~= nil and r:find(word, 1, true) ~= nil, why .. ": " .. r)
+  end
+  asked_why("SXS41 speed 78", "knots under any jet's", "Mach .78")
+  asked_why("spd sxs41 50", "a Mach number without its point?", "Mach .50")
+  asked_why("SPD PGT9DL 82", "capitals too", "slower than an A320")
+  asked_why("THY77 speed 80", "holding Mach", "Mach .80")
+  asked_why("sxs41 spd 780", "three digits past any airliner", "Mach .78")
+  asked_why("SPD SXS41 450", "faster than any airliner", "faster than any airliner")
+  asked_why("SXS41 SPD M780", "Mach 780", "Mach 780")
+  asked_why("sxs41 speed 7.8", "neither knots nor Mach", "neither a Mach number")
+  asked_why("AHY12 spd 95", "a turboprop flying 210 kt", "slower than an AT72")
+  asked_why("cre thy610 a333 38 27 180 FL300 78", "a creation in the air", "Mach .78")
+  asked_why("CRE THY611 B738 38 27 180 FL300 820", "a creation at 820 kt", "Mach .82")
+  -- the speeds aircraft fly stay read: a light aircraft slow, a jet in knots or Mach
+  check_eq(ex("TCABC speed 80"), "SPD TCABC 80")
+  check_eq(ex("spd tcabc 90"), "SPD TCABC 90")
+  check_eq(ex("SXS41 SPD 250"), "SPD SXS41 250")
+  check_eq(ex("SPD SXS41 0.78"), "SPD SXS41 0.78")
+  check_eq(ex("sxs41 speed .78"), "SPD SXS41 .78")
+  check_eq(ex("AHY12 spd 180"), "SPD AHY12 180")
+  -- ("M78": Mach typed short, its point left out)
+  check_eq(ex("SXS41 SPD M78"), "SPD SXS41 M0.78")
+  check_eq(ex("thy77 spd m82"), "SPD THY77 M0.82")
+  check_eq(ex("CRE TCABD C172 38 27 180 3000 90"), "CRE TCABD C172 38 27 180 3000 90")
+  check_eq(ex("CRE THY612 B738 38 27 180 FL300 M.78"), "CRE THY612 B738 38 27 180 FL300 M.78")
+  -- a command's name followed by a callsign spelled in words is English, never the command with words as values
+  asked(ex("create Pegasus nine delta lima"), "a callsign spelled after 'create'")
+  asked(ex("create Pegasus 9 delta lima"), "letters spelled after a digit")
+  asked(ex("CRE SUNEXPRESS FOUR ONE ALPHA"), "numbers in words as values, capitals too")
+  -- (read as English, the callsign said in words is the one SunExpress flying)
+  check_eq(ex("delete Sunexpress four one"), "DEL SXS41")
+  -- real TrafScript stays read as typed
+  check_eq(ex("FF 60"), "FF 60")
+  check_eq(ex("HOLD"), "HOLD")
+  check_eq(ex("HDG SXS41 270"), "HDG SXS41 270")
+  check_eq(ex("SXS41 SPD 250"), "SPD SXS41 250")
+  check_eq(ex("cre tst1 a320 38 27 90 fl200 250"), "CRE TST1 A320 38 27 90 FL200 250")
+  check_eq(ex("seed twelve"), "SEED 12")
+end
