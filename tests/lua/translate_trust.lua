@@ -18779,3 +18779,38 @@ do
   check_eq(ex("Sriwijaya 44 speed two seven zero already, make it two five zero"), "SPD SJY44 250")
   check_eq(ex("Citilink 77 heading one two zero, make it one four zero"), "HDG CTV77 140")
 end
+
+-- Cycle 60 (f19x): the practice rounds' leftovers
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 90 FL250 280", "CRE DLH4 A320 51 5 180 FL200 260" })
+  -- a list of values to show with marks between its names asks for them all
+  check_eq(ex("KLM12 say speed... and altitude"), "POS KLM12")
+  check_eq(ex("Lufthansa four, report altitude, and heading"), "POS DLH4")
+  check_eq(ex("KLM12 what is your heading... and speed?"), "POS KLM12")
+  -- a value's name after an instruction with a value is still cut off
+  asked(ex("KLM12 climb FL300... and speed"), "a value's name with no value")
+  asked(ex("KLM12 direct SPY... and the levels"), "the route's values or a value")
+  -- a sentence taking back all said before it, with no value in it: the request after it stands
+  check_eq(ex("instructor, can I... never mind. KLM12 climb FL300"), "ALT KLM12 FL300")
+  check_eq(ex("hmm, how do I... no, never mind. Lufthansa four turn left heading 250"), "HDG DLH4 250 LEFT")
+  check_eq(ex("KLM12, delete waypoint... it has no route. Never mind. KLM12 turn left heading 200"),
+    "HDG KLM12 200 LEFT")
+  check_eq(ex("Delete all aircraft... forget it. Lufthansa four reduce speed 230"), "SPD DLH4 230")
+  -- a value said before it, or another aircraft named before it, is not taken back in silence
+  asked(ex("KLM12 climb FL310. never mind. KLM12 climb FL300"), "a value taken back")
+  asked(ex("KLM12 turn left... forget it. Lufthansa four turn right heading 100"), "another aircraft before")
+  asked(ex("instructor, how do I... never mind."), "nothing after it")
+end
+do
+  local _, ex = navscene({ "CRE EZY81QA A320 48.60 16.90 230 FL100 260", "CRE DLH2PE A20N 47.60 17.30 300 FL110 270",
+    "ADDWPT DLH2PE PESAT", "ADDWPT DLH2PE SNU" }, "a navaid's name after its ident and a hesitation")
+  if ex then
+    -- a navaid's ident, a hesitation, then the navdata's name of that same navaid
+    check_eq(ex("Easy eight one quebec alpha, proceed direct WGM, uh, Wagram"), "ADDWPT EZY81QA WGM ; DIRECT EZY81QA WGM")
+    check_eq(ex("Lufthansa two papa echo direct SNU er Sollenau please"), "DIRECT DLH2PE SNU")
+    check_eq(ex("Lufthansa two papa echo, direct to Sollenau, eh, SNU"), "DIRECT DLH2PE SNU")
+    -- the name of another place after a hesitation is asked (a correction or another fix)
+    asked(ex("Easy eight one quebec alpha, direct WGM, um, Sollenau"), "another navaid's name")
+    asked(ex("Easy eight one quebec alpha, direct WGM, uh, Vienna"), "a city's name")
+  end
+end
