@@ -18782,6 +18782,33 @@ end
 
 -- Cycle 60 (f19x): the practice rounds' leftovers
 do
+  local _, ex = scene({ "DEFWPT TESTA -1.0 105.5", "CRE KLM12 A320 -1 105 90 FL250 280",
+    "CRE SJY182 B735 -8.5 113.5 070 FL240 270", "ADDWPT SJY182 RABOL", "ADDWPT SJY182 AGUNG",
+    "CRE CHH7171 B738 24.40 114.60 240 29200 280" })
+  -- a waypoint shown with its noun before or after it, "where" closing the request
+  check_eq(ex("show me fix TESTA"), "POS TESTA")
+  check_eq(ex("display the TESTA waypoint please"), "POS TESTA")
+  check_eq(ex("show me waypoint TESTA, where?"), "POS TESTA")
+  asked(ex("show me waypoint TESTQ"), "no such waypoint")
+  asked(ex("show me waypoint TESTA where KLM12"), "an aircraft named too")
+  -- "direct there"/"direct to it" after the one waypoint the request defined
+  check_eq(ex("create waypoint TESTD at 0.0 105.0, KLM12 proceed direct to it"),
+    "DEFWPT TESTD 0 105 ; ADDWPT KLM12 TESTD ; DIRECT KLM12 TESTD")
+  check_eq(ex("define a waypoint TESTE at 1 106 and then KLM12 go direct there please"),
+    "DEFWPT TESTE 1 106 ; ADDWPT KLM12 TESTE ; DIRECT KLM12 TESTE")
+  asked(ex("define waypoint TESTD at 0.0 105.0 and TESTE at 1 105, KLM12 direct there"), "two defined")
+  asked(ex("KLM12 direct there"), "none defined")
+  -- "direct X after Y", Y on its route and closing the request: X inserted after Y
+  check_eq(ex("Sriwijaya 182 proceed direct to TESTA after RABOL, thank you"), "ADDWPT SJY182 TESTA,,,RABOL")
+  asked(ex("KLM12 direct TESTA after RABOL"), "not on its route")
+  -- two digits before "hundred" in metres: the level of China's metric table, when the last digit's
+  -- hundreds alone are none
+  check_eq(ex("Hainan seven one seven one descend to seven eight hundred meters"), "ALT CHH7171 25600")
+  check_eq(ex("Hainan 7171 descend and maintain eight one hundred metres"), "ALT CHH7171 26600")
+  asked(ex("Hainan seven one seven one descend six six hundred metres"), "600 m is a level too")
+  asked(ex("Hainan seven one seven one descend eight five hundred metres"), "no level of the table")
+end
+do
   local _, ex = scene({ "CRE KLM12 A320 52 4 90 FL250 280", "CRE DLH4 A320 51 5 180 FL200 260" })
   -- a list of values to show with marks between its names asks for them all
   check_eq(ex("KLM12 say speed... and altitude"), "POS KLM12")
