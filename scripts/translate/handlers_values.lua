@@ -568,14 +568,8 @@ return function(H, f, wrap, compass)
       -- slip?) are asked, unless the request says the same level again in a clear form ("eight nine hundred
       -- metres, correct, eight thousand nine hundred metres")
       local function unclear(n) return not n.typed and n.hundred and not n.thousand and n.lead_digit and n.groups >= 2 end
-      -- (a level of China's metric table, 600 to 8400 m and 8900 to 12500 m by 300 m: two digits before "hundred",
-      -- "eight four hundred", are that level when it is one and the last digit's hundreds alone, 400 m, are not)
-      local function table_level(m)
-        return (m >= 600 and m <= 8400 and m % 300 == 0) or (m >= 8900 and m <= 12500 and (m - 8900) % 300 == 0)
-      end
       local n = q.number
-      local unsure = unclear(n) and not (n.groups == 2 and n.value % 100 == 0 and table_level(n.value)
-        and not table_level(n.value % 1000))
+      local unsure = unclear(n)
       for _, o in ipairs(unsure and self:quantities(s.b, s.e) or {}) do
         if o.b ~= q.b and o.value == q.value and o.number and not unclear(o.number) then unsure = false end
       end
