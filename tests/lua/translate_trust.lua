@@ -18783,7 +18783,8 @@ end
 -- Cycle 60 (f19x): the practice rounds' leftovers
 do
   local _, ex = scene({ "DEFWPT TESTA -1.0 105.5", "CRE KLM12 A320 -1 105 90 FL250 280",
-    "CRE SJY182 B735 -8.5 113.5 070 FL240 270", "ADDWPT SJY182 RABOL", "ADDWPT SJY182 AGUNG",
+    "DEFWPT RABOLX -8.3 114.0", "DEFWPT AGUNGX -8.2 114.8",
+    "CRE SJY182 B735 -8.5 113.5 070 FL240 270", "ADDWPT SJY182 RABOLX", "ADDWPT SJY182 AGUNGX",
     "CRE CHH7171 B738 24.40 114.60 240 29200 280" })
   -- a waypoint shown with its noun before or after it, "where" closing the request
   check_eq(ex("show me fix TESTA"), "POS TESTA")
@@ -18799,8 +18800,8 @@ do
   asked(ex("define waypoint TESTD at 0.0 105.0 and TESTE at 1 105, KLM12 direct there"), "two defined")
   asked(ex("KLM12 direct there"), "none defined")
   -- "direct X after Y", Y on its route and closing the request: X inserted after Y
-  check_eq(ex("Sriwijaya 182 proceed direct to TESTA after RABOL, thank you"), "ADDWPT SJY182 TESTA,,,RABOL")
-  asked(ex("KLM12 direct TESTA after RABOL"), "not on its route")
+  check_eq(ex("Sriwijaya 182 proceed direct to TESTA after RABOLX, thank you"), "ADDWPT SJY182 TESTA,,,RABOLX")
+  asked(ex("KLM12 direct TESTA after RABOLX"), "not on its route")
   -- two digits before "hundred" in metres stay asked (R81's decision: "nine five hundred" may be 500 after a slip)
   asked(ex("Hainan seven one seven one descend to seven eight hundred meters"), "digits before hundred")
   asked(ex("Hainan seven one seven one descend eight five hundred metres"), "digits before hundred")
