@@ -798,6 +798,46 @@ function G.meant_after_hesitation(text)
   end
   return done()
 end
+-- "instructor, how do I... no, never mind. KLM12 climb FL300", "KLM12, delete waypoint... it has no route. Never
+-- mind. KLM12 turn left heading 200": a sentence of its own that takes back in words all said before it
+-- (G.withdrawing_sentence: "never mind", "nevermind", "forget it", "forget that", after a mark or at the start, "no",
+-- "oh", "ok" before it, "." or "!" after it) with a request after it: what came before is dropped when it holds no
+-- value (no digit, no number word) past the words the request after it opens with again (its callsign said again).
+-- Anything else stays as said.
+G.withdrawing_sentence = { "never mind", "nevermind", "forget it", "forget that" }
+function G.withdrawn_sentences(text)
+  local lower = text:lower()
+  if not (lower:find("mind", 1, true) or lower:find("forget", 1, true)) then return text end
+  local cut
+  for _, p in ipairs(G.withdrawing_sentence) do
+    local from = 1
+    while true do
+      local b, e = lower:find("%f[%w]" .. p:gsub(" ", "%%s+") .. "%f[%W]", from)
+      if not b then break end
+      from = e + 1
+      local rest = lower:match("^%s*[%.!]+%s*()%w", e + 1)
+      local before = lower:sub(1, b - 1):gsub("[%s,]+$", "")
+      local prev = before:match("(%a+)$")
+      while prev == "no" or prev == "oh" or prev == "ok" or prev == "okay" do
+        before = before:sub(1, #before - #prev):gsub("[%s,]+$", "")
+        prev = before:match("(%a+)$")
+      end
+      if rest and before ~= "" and before:match("[%.!?,;:]$") and (not cut or rest > cut.rest) then
+        cut = { rest = rest, before = before }
+      end
+    end
+  end
+  if not cut then return text end
+  local said, again = {}, {}
+  for w in cut.before:gmatch("[%w']+") do said[#said + 1] = w end
+  for w in lower:sub(cut.rest):gmatch("[%w']+") do again[#again + 1] = w end
+  local k = 1
+  while said[k] and said[k] == again[k] do k = k + 1 end
+  for x = k, #said do
+    if said[x]:find("%d") or NUMBER_WORDS[said[x]] then return text end
+  end
+  return text:sub(cut.rest)
+end
 -- "speed 250 knots... sorry, I mistook, 230 knots": a slip admitted (lexicon.self_correction.admitted) and set
 -- off by a mark with more words after it is the marker "sorry"; anywhere else it is left as said.
 G.admitted_patterns = {}
@@ -942,7 +982,8 @@ function G.restated_addressee(text)
   return text
 end
 local function self_corrections(text)
-  text = G.restated_addressee(G.meant_after_hesitation(hesitated_sides(G.formal_apologies(G.admitted_slips(text)))))
+  text = G.restated_addressee(G.meant_after_hesitation(hesitated_sides(G.formal_apologies(G.admitted_slips(
+    G.withdrawn_sentences(text))))))
   if not holds_word(text:lower(), SC_MARKER_PATTERNS) and not holds_word(text:lower(), G.hesitation_patterns) then
     return text
   end
@@ -8590,7 +8631,10 @@ function G:dangling_value_name()
   -- ("KAL1203 where now, and altitude?": asked with "?" after a question of state, POS alone read, the value's name
   -- is what to show)
   if G.state_shown_asked(self) then return end
-  if (self:linked(first) and not self:word(first - 2, "@value_names")) or after_value then
+  -- (marks between the list's names: "say altitude... and speed", "altitude, and speed")
+  local prev = first - 2
+  while prev > 1 and self.t[prev].kind == "punct" do prev = prev - 1 end
+  if (self:linked(first) and not self:word(prev, "@value_names")) or after_value then
     self:need(string.format("I have %s. '%s' ends the request with no value after it: which value do you mean?",
       table.concat(self.out, " ; "), self:raw(first, last + 1)))
   end
@@ -9819,8 +9863,10 @@ function G:name_beside_code(r, inside, code)
   code = code or r.name:upper()
   local lat, lon
   if self.world.user_waypoint_at then lat, lon = self.world.user_waypoint_at(code) end
+  local hesitated = false  -- (a hesitation between: only the navdata's own name of code is read)
   local function names(b, e)
     if self:place_named(b, e, code) then return true end
+    if hesitated then return false end
     for k = b, e - 1 do
       if not (self.t[k] and self.t[k].raw:match("^%u")) then return false end
     end
@@ -9829,9 +9875,13 @@ function G:name_beside_code(r, inside, code)
     return name ~= nil and (not self:any_place_named(name, any, nil, nil, nil, true)
       or lat ~= nil and self:any_place_named(name, any, lat, lon, CITY_NM))
   end
-  local function between(k) return self.t[k] and (self.t[k].kind == "punct" or self:word(k, "@airport_nouns @navaid_kinds")) end
+  -- (a mark, a kind of place, or a hesitation, G.hesitation_words: "direct RID, uh, Ried")
+  local function between(k)
+    if self.t[k] and G.hesitation_words[self.t[k].text] then hesitated = true return true end
+    return self.t[k] and (self.t[k].kind == "punct" or self:word(k, "@airport_nouns @navaid_kinds"))
+  end
   local e = r.b
-  while e > 1 and r.b - e < 2 and between(e - 1) do e = e - 1 end
+  while e > 1 and r.b - e < 3 and between(e - 1) do e = e - 1 end
   for n = 3, 1, -1 do
     if e - n >= 1 and not inside[e - n] and names(e - n, e) then
       for k = e - n, r.b - 1 do inside[k] = true end
@@ -9839,7 +9889,8 @@ function G:name_beside_code(r, inside, code)
     end
   end
   local b = r.e
-  while b < r.e + 2 and between(b) and self.t[b].text ~= "." do b = b + 1 end
+  hesitated = false
+  while b < r.e + 3 and between(b) and self.t[b].text ~= "." do b = b + 1 end
   for n = 2, 1, -1 do
     if not inside[b] and names(b, b + n) then
       for k = r.e, b + n - 1 do inside[k] = true end
@@ -12193,7 +12244,10 @@ function G:values_named_alone(i)
   local opener = self.t[b - 1]
   if b < 3 or not opener or not (opener.kind == "punct" or self:word(b - 1, "and with")) then return nil end
   -- (a list of values named, "say heading and speed", or "along with" them, asks for them: no clause of its own)
-  if self:word(b - 2, "@value_names @route_value_nouns along") then return nil end
+  -- (marks between the names: "say altitude... and speed")
+  local named = b - 2
+  while named > 1 and self.t[named].kind == "punct" do named = named - 1 end
+  if self:word(named, "@value_names @route_value_nouns along") then return nil end
   local k = last + 1
   if self:word(k, "@route_value_closers") then
     k = k + 1

@@ -2666,8 +2666,16 @@ return function(H, f, compass)
     end
     if back and go_after then self:explain(go_after, go_after + 1) end
     if back and self:word(s.trig - 1, "go") then self:explain(s.trig - 1, s.trig) end
-    local wp = to_dest or point or told or added and #self:refs_in(s.trig, s.e, "waypoint") == 0
-        and self:word_in(s.trig, s.e, "there it") and added or back or self:waypoint(s.trig, s.e, id)
+    -- ("make waypoint TESTD at 0.0 105.0 then KLM12 direct there": the one waypoint this request defined before,
+    -- none added; two defined stay asked)
+    local defined
+    for c = 1, added and 0 or #self.out do
+      local name = self.out[c]:match("^DEFWPT ([^%s,]+) ")
+      if name then defined = not defined and name or false end
+    end
+    local named_before = added or defined or nil
+    local wp = to_dest or point or told or named_before and #self:refs_in(s.trig, s.e, "waypoint") == 0
+        and self:word_in(s.trig, s.e, "there it") and named_before or back or self:waypoint(s.trig, s.e, id)
     -- "send it to TEBBY directly", "go to the Helsinki VOR directly": the place said after "to", before the
     -- adverb that ends the clause
     if not wp and self:word(s.trig, "directly direct") then
@@ -2698,6 +2706,19 @@ return function(H, f, compass)
       if from and has[from.name:upper()] and not in_route then
         self:explain(at, at + 1)
         return self:emit("ADDWPT " .. a.id .. " " .. wp .. ",,," .. from.name)
+      end
+      -- "go direct ENTAS after RABOL": the same said after the place, "after" and the route's waypoint ending the
+      -- request (courtesy and marks aside; an instruction after it may be what waits for that waypoint: asked)
+      local first = self:refs_in(s.trig, s.e, "waypoint")[1]
+      local prior = not from and first and first.name:upper() == wp:upper() and self:word(first.e, "after")
+        and self:refs_in(first.e + 1, first.e + 2, "waypoint")[1]
+      local j, ends = prior and prior.e or #self.t + 1, #self.t + 1
+      while j < ends and (self.t[j].filler or self.t[j].kind == "punct" or self:word(j, "please thank thanks you")) do
+        j = j + 1
+      end
+      if prior and not in_route and has[prior.name:upper()] and j >= ends then
+        self:explain(first.e, prior.e)
+        return self:emit("ADDWPT " .. a.id .. " " .. wp .. ",,," .. prior.name:upper())
       end
       -- "fly to KRT, add to the route", "go to KRT please, put in the route": the place gone to, with a clause
       -- that adds it to the route (a verb of adding, then only "it"/"to"/"in"/"the"/... and a route noun, no

@@ -2444,10 +2444,17 @@ return function(intent, rule, words)
     local k = g:skip_fillers(g:word(i + 1, "me us") and i + 2 or i + 1)
     local last = #g.t
     while last > k and (g.t[last].kind == "punct" or g.t[last].filler) do last = last - 1 end
-    -- (a waypoint of the scene, or an ident the navdata holds: "show me YQB" with no traffic)
-    local r = g:refs_in(k, k + 1, "waypoint")[1]
+    -- (a waypoint of the scene, or an ident the navdata holds: "show me YQB" with no traffic; a waypoint noun
+    -- before or after it, "show me waypoint TESTA", "show the TESTA fix", and "where" closing the request, "show me
+    -- waypoint TESTA where", ask the same)
+    local p, e = k, last
+    if g:word(p, "@waypoint_nouns") then p = g:skip_fillers(p + 1) end
+    if e > p and g:word(e, "where") then e = e - 1 end
+    while e > p and (g.t[e].kind == "punct" or g.t[e].filler) do e = e - 1 end
+    if e > p and g:word(e, "@waypoint_nouns") then e = e - 1 end
+    local r = g:refs_in(p, p + 1, "waypoint")[1]
     local at = g.world.user_waypoint_at
-    if r and r.e == last + 1 and (r.exists or (at and at(r.name) ~= nil)) then return true end
+    if r and r.e == e + 1 and (r.exists or (at and at(r.name) ~= nil)) then return true end
     if not g:word(last, "@airport_nouns") or last - k < 1 or last - k > 3 then return false end
     for x = k, last - 1 do
       if g.t[x].kind ~= "word" or not g.t[x].raw:match("^%u") then return false end

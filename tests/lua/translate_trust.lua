@@ -18827,3 +18827,63 @@ do
   check_eq(ex("cre tst1 a320 38 27 90 fl200 250"), "CRE TST1 A320 38 27 90 FL200 250")
   check_eq(ex("seed twelve"), "SEED 12")
 end
+
+-- Cycle 60 (f19x): the practice rounds' leftovers
+do
+  local _, ex = scene({ "DEFWPT TESTA -1.0 105.5", "CRE KLM12 A320 -1 105 90 FL250 280",
+    "DEFWPT RABOLX -8.3 114.0", "DEFWPT AGUNGX -8.2 114.8",
+    "CRE SJY182 B735 -8.5 113.5 070 FL240 270", "ADDWPT SJY182 RABOLX", "ADDWPT SJY182 AGUNGX",
+    "CRE CHH7171 B738 24.40 114.60 240 29200 280" })
+  -- a waypoint shown with its noun before or after it, "where" closing the request
+  check_eq(ex("show me fix TESTA"), "POS TESTA")
+  check_eq(ex("display the TESTA waypoint please"), "POS TESTA")
+  check_eq(ex("show me waypoint TESTA, where?"), "POS TESTA")
+  asked(ex("show me waypoint TESTQ"), "no such waypoint")
+  asked(ex("show me waypoint TESTA where KLM12"), "an aircraft named too")
+  -- "direct there"/"direct to it" after the one waypoint the request defined
+  check_eq(ex("create waypoint TESTD at 0.0 105.0, KLM12 proceed direct to it"),
+    "DEFWPT TESTD 0 105 ; ADDWPT KLM12 TESTD ; DIRECT KLM12 TESTD")
+  check_eq(ex("define a waypoint TESTE at 1 106 and then KLM12 go direct there please"),
+    "DEFWPT TESTE 1 106 ; ADDWPT KLM12 TESTE ; DIRECT KLM12 TESTE")
+  asked(ex("define waypoint TESTD at 0.0 105.0 and TESTE at 1 105, KLM12 direct there"), "two defined")
+  asked(ex("KLM12 direct there"), "none defined")
+  -- "direct X after Y", Y on its route and closing the request: X inserted after Y
+  check_eq(ex("Sriwijaya 182 proceed direct to TESTA after RABOLX, thank you"), "ADDWPT SJY182 TESTA,,,RABOLX")
+  asked(ex("KLM12 direct TESTA after RABOLX"), "not on its route")
+  -- two digits before "hundred" in metres stay asked (R81's decision: "nine five hundred" may be 500 after a slip)
+  asked(ex("Hainan seven one seven one descend to seven eight hundred meters"), "digits before hundred")
+  asked(ex("Hainan seven one seven one descend eight five hundred metres"), "digits before hundred")
+end
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 90 FL250 280", "CRE DLH4 A320 51 5 180 FL200 260" })
+  -- a list of values to show with marks between its names asks for them all
+  check_eq(ex("KLM12 say speed... and altitude"), "POS KLM12")
+  check_eq(ex("Lufthansa four, report altitude, and heading"), "POS DLH4")
+  check_eq(ex("KLM12 what is your heading... and speed?"), "POS KLM12")
+  -- a value's name after an instruction with a value is still cut off
+  asked(ex("KLM12 climb FL300... and speed"), "a value's name with no value")
+  asked(ex("KLM12 direct SPY... and the levels"), "the route's values or a value")
+  -- a sentence taking back all said before it, with no value in it: the request after it stands
+  check_eq(ex("instructor, can I... never mind. KLM12 climb FL300"), "ALT KLM12 FL300")
+  check_eq(ex("hmm, how do I... no, never mind. Lufthansa four turn left heading 250"), "HDG DLH4 250 LEFT")
+  check_eq(ex("KLM12, delete waypoint... it has no route. Never mind. KLM12 turn left heading 200"),
+    "HDG KLM12 200 LEFT")
+  check_eq(ex("Delete all aircraft... forget it. Lufthansa four reduce speed 230"), "SPD DLH4 230")
+  -- a value said before it, or another aircraft named before it, is not taken back in silence
+  asked(ex("KLM12 climb FL310. never mind. KLM12 climb FL300"), "a value taken back")
+  asked(ex("KLM12 turn left... forget it. Lufthansa four turn right heading 100"), "another aircraft before")
+  asked(ex("instructor, how do I... never mind."), "nothing after it")
+end
+do
+  local _, ex = navscene({ "CRE EZY81QA A320 48.60 16.90 230 FL100 260", "CRE DLH2PE A20N 47.60 17.30 300 FL110 270",
+    "ADDWPT DLH2PE PESAT", "ADDWPT DLH2PE SNU" }, "a navaid's name after its ident and a hesitation")
+  if ex then
+    -- a navaid's ident, a hesitation, then the navdata's name of that same navaid
+    check_eq(ex("Easy eight one quebec alpha, proceed direct WGM, uh, Wagram"), "ADDWPT EZY81QA WGM ; DIRECT EZY81QA WGM")
+    check_eq(ex("Lufthansa two papa echo direct SNU er Sollenau please"), "DIRECT DLH2PE SNU")
+    check_eq(ex("Lufthansa two papa echo, direct to Sollenau, eh, SNU"), "DIRECT DLH2PE SNU")
+    -- the name of another place after a hesitation is asked (a correction or another fix)
+    asked(ex("Easy eight one quebec alpha, direct WGM, um, Sollenau"), "another navaid's name")
+    asked(ex("Easy eight one quebec alpha, direct WGM, uh, Vienna"), "a city's name")
+  end
+end
