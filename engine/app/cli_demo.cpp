@@ -214,6 +214,7 @@ int cmd_demo(const ArgV& argv) {
       for (const auto& cmd : tr.commands)
         if (!demo.exec("sim", cmd).is_ok()) ++untranslated;
     }
+    (void)script::collect_after_reply(translator_vm);  // (the translation is logged)
     e.step(env_action(e, stack.sim()));
   }
   if (demo.failed_) return failure(Status::internal("the simulator failed during the episode"));

@@ -151,7 +151,8 @@ int run_terminal(script::ReplSession& session) {
       continue;
     }
     if (n > 0) {
-      rl_callback_read_char();
+      rl_callback_read_char();  // (a whole line: on_line replied, readline shows the prompt again)
+      session.collect_after_reply();
       continue;
     }
     if (n == 0) {  // no key: let the running clock move, print above the prompt
@@ -216,6 +217,7 @@ int run_pipe(script::ReplSession& session, bool echo) {
     if (echo && !text::trim(line).empty())
       std::printf("%s\n", std::string(text::trim(line)).c_str());
     if (!reply_to(session, line, status)) break;
+    session.collect_after_reply();  // (the reply is flushed)
   }
   return status;
 }

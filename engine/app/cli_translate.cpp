@@ -60,6 +60,7 @@ Status print_jsonl(script::Vm& vm, const std::vector<translate::CorpusCase>& cas
     j["id"] = c.id;
     // Corpus ids and text may hold bytes that are not UTF-8: written as U+FFFD.
     std::printf("%s\n", j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace).c_str());
+    (void)script::collect_after_reply(vm);  // (the line is written)
   }
   return Status::ok();
 }

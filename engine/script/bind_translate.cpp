@@ -3,6 +3,11 @@
 //
 //   squawk.translate.run(text, opts) -> graph.translate(text, opts) of
 //       scripts/translate/graph.lua (the one translation path)
+//   squawk.translate.request(fn, ...) -> fn(...)'s results: fn runs as one translation
+//       request (script/translate_graph.h: RequestCollection, the collector stopped and a
+//       step owed for after the reply); an error of fn is raised again, the collector
+//       restarted first. For the translation of a person's line only, never around
+//       commands, a simulation run or a script.
 //   squawk.translate.tables(names, phonetic) -> tables   the names the matchers
 //       know: names = {airlines = {{telephony, icao}, ...}, types = {{maker,
 //       model, icao}, ...}, designators = {...}} (scripts/translate/names.lua),
@@ -476,11 +481,25 @@ int l_run(lua_State* L) {
   return 1;
 }
 
+// squawk.translate.request(fn, ...): no guarded<> (fn's Lua runs outside any binding's
+// memory slack); the scope ends before an error is raised again.
+int l_request(lua_State* L) {
+  luaL_checktype(L, 1, LUA_TFUNCTION);
+  int rc;
+  {
+    const RequestCollection request(Vm::of(L));
+    rc = lua_pcall(L, lua_gettop(L) - 1, LUA_MULTRET, 0);
+  }
+  if (rc != LUA_OK) return lua_error(L);
+  return lua_gettop(L);
+}
+
 }  // namespace
 
 void bind_translate(lua_State* L) {
   push_squawk_subtable(L, "translate");
   const luaL_Reg fns[] = {{"run", guarded<l_run>},
+                          {"request", l_request},
                           {"score", guarded<l_score>},
                           {"corpus", guarded<l_corpus>},
                           {"evaluate", guarded<l_evaluate>},

@@ -3,6 +3,7 @@
 #include <lua.hpp>
 
 #include "script/lua_util.h"
+#include "script/translate_graph.h"
 
 namespace squawk::script {
 
@@ -87,6 +88,10 @@ Result<ReplReply> ReplSession::handle(const std::string& line) {
   r.quit = lua_toboolean(L, -1) != 0;
   lua_settop(L, top);
   return r;
+}
+
+void ReplSession::collect_after_reply() {
+  (void)script::collect_after_reply(*vm_);
 }
 
 Result<std::string> ReplSession::text_of(const char* method) {

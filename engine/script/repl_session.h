@@ -8,7 +8,10 @@
 // advances the running clock by `wall_s` seconds of real time and returns
 // what happened ("" when nothing); complete() lists the completions of a
 // word. Lua errors come back as Status with the traceback; the session
-// stays usable after an error in one line.
+// stays usable after an error in one line. An English line is translated as
+// one request (script/translate_graph.h: the collector stopped for the
+// translation only); collect_after_reply() takes the step it owes, and is
+// called once the reply and the next prompt are shown.
 #pragma once
 
 #include <string>
@@ -39,6 +42,8 @@ class ReplSession {
   Result<std::string> opening();  // what loading the scenario did
   Result<std::string> tick(double wall_s);
   Result<std::vector<std::string>> complete(const std::string& prefix);
+  // script::collect_after_reply on the session's VM (nothing when no step is owed).
+  void collect_after_reply();
 
  private:
   explicit ReplSession(Vm& vm) : vm_(&vm) {}

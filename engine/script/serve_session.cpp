@@ -4,6 +4,7 @@
 
 #include "script/lua_util.h"
 #include "script/repl_session.h"
+#include "script/translate_graph.h"
 
 namespace squawk::script {
 
@@ -195,6 +196,10 @@ Result<CommandReply> ServeSession::command(const std::string& text, const Comman
   if (!trace) return trace.status();
   out.trace = *trace;
   return out;
+}
+
+void ServeSession::collect_after_reply() {
+  (void)script::collect_after_reply(*vm_);
 }
 
 Result<std::vector<SessionEvent>> ServeSession::tick(double wall_s) {

@@ -10,7 +10,10 @@
 // "!TrafScript") from one client and returns what happened; tick() advances the clock as the
 // run state asks (session:tick); both report what happened meanwhile as
 // events. A Lua error comes back as a Status with its traceback and the
-// session stays usable.
+// session stays usable. command() translates an English line as one request
+// (script/translate_graph.h: the collector stopped for the translation only);
+// collect_after_reply() takes the step it owes, once the reply has left the
+// VM's thread.
 #pragma once
 
 #include <memory>
@@ -60,6 +63,8 @@ class ServeSession {
   Result<CommandReply> command(const std::string& text, const CommandOptions& opts = {});
   // session:tick(wall_s): OP advances wall_s x DTMULT, FF to its end, HOLD not at all [s].
   Result<std::vector<SessionEvent>> tick(double wall_s);
+  // script::collect_after_reply on the session's VM (nothing when no step is owed).
+  void collect_after_reply();
 
  private:
   ServeSession(Vm& vm, command::Stack* stack) : vm_(&vm), stack_(stack) {}

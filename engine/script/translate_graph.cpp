@@ -71,24 +71,8 @@ Result<translate::Translation> read_graph_result(lua_State* L) {
 
 namespace {
 
-// The registry's key of the flag "a request's minor step is owed" (collect_after_reply).
-const char kCollectionOwed = 0;
-
-bool collection_owed(lua_State* L) {
-  lua_rawgetp(L, LUA_REGISTRYINDEX, &kCollectionOwed);
-  const bool owed = lua_toboolean(L, -1) != 0;
-  lua_pop(L, 1);
-  return owed;
-}
-
-// Sets the flag; the first set adds the key to the registry (an allocation: under pcall only).
-void set_collection_owed(lua_State* L, bool owed) {
-  lua_pushboolean(L, owed);
-  lua_rawsetp(L, LUA_REGISTRYINDEX, &kCollectionOwed);
-}
-
-// Runs fn(L) (which leaves one value) under pcall with the collector stopped (collect_after_reply);
-// the error becomes a Status.
+// Runs fn(L) (which leaves one value) under pcall as one request (RequestCollection); the error
+// becomes a Status.
 template <class F>
 Result<translate::Translation> protected_call(Vm& vm, F&& fn) {
   lua_State* L = vm.state();
@@ -97,25 +81,19 @@ Result<translate::Translation> protected_call(Vm& vm, F&& fn) {
   lua_pushcfunction(L, [](lua_State* S) -> int {
     auto* c = static_cast<Ctx*>(lua_touserdata(S, 1));
     lua_settop(S, 0);
-    if (collection_owed(S))
-      lua_gc(S, LUA_GCSTEP, 0);  // (the last request's garbage, not taken after its reply)
-    set_collection_owed(S, true);
-    lua_gc(S, LUA_GCSTOP);
     (*c->fn)(S);
     return 1;
   });
   lua_pushlightuserdata(L, &ctx);
-  const bool running =
-      lua_gc(L, LUA_GCISRUNNING) != 0;  // (a script that stopped it keeps it stopped)
+  // (restarts the collector at return: after the result is read, no step before the reply)
+  const RequestCollection request(vm);
   const Status st = vm.pcall(1, 1);
   if (!st.is_ok()) {
     lua_settop(L, top);
-    if (running) lua_gc(L, LUA_GCRESTART);
     return Status::internal("translation graph (scripts/translate/graph.lua): " + st.message());
   }
   auto tr = read_graph_result(L);
   lua_settop(L, top);
-  if (running) lua_gc(L, LUA_GCRESTART);  // (after the result is read: no step before the reply)
   return tr;
 }
 
@@ -134,9 +112,22 @@ void push_graph_module(lua_State* L) {
   lua_setfield(L, LUA_REGISTRYINDEX, "squawk.translate.graph");
 }
 
+RequestCollection::RequestCollection(Vm& vm)
+    : L_(vm.state()), restart_(lua_gc(L_, LUA_GCISRUNNING) == 1) {
+  if (!restart_) return;  // (an enclosing request, or a script that stopped the collector)
+  if (vm.collection_owed())
+    lua_gc(L_, LUA_GCSTEP, 0);  // (the last request's, not taken after its reply)
+  vm.set_collection_owed(true);
+  lua_gc(L_, LUA_GCSTOP);
+}
+
+RequestCollection::~RequestCollection() {
+  if (restart_) lua_gc(L_, LUA_GCRESTART);
+}
+
 ReplyCollection collect_after_reply(Vm& vm) {
   lua_State* L = vm.state();
-  if (!collection_owed(L)) return {};
+  if (!vm.collection_owed()) return {};
   auto kb = [L] { return lua_gc(L, LUA_GCCOUNT) + lua_gc(L, LUA_GCCOUNTB) / 1024.0; };
   const double before = kb();
   const auto t0 = std::chrono::steady_clock::now();
@@ -144,7 +135,7 @@ ReplyCollection collect_after_reply(Vm& vm) {
   ReplyCollection r;
   r.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   r.freed_kb = before - kb();
-  set_collection_owed(L, false);  // (the key is in the registry: no allocation)
+  vm.set_collection_owed(false);
   return r;
 }
 

@@ -34,20 +34,44 @@ struct GraphRequest {
 
 Result<translate::Translation> run_translation_graph(Vm& vm, const std::string& text, const GraphRequest& req);
 
-// The collector around a request (run_translation_graph, GraphDialogue::open and say): the VM's
-// collector is stopped for the call, so no collection runs inside a request's latency, and
-// restarted after it; the request's garbage (over the bench's corpora ~70 KB a request, p99 ~140
-// KB, at most ~1 MB) is then owed. collect_after_reply(vm) takes it, one minor step of the
-// generational collector (p50 ~0.05 ms on a quiet machine), and is for a caller that shows the
-// reply to a person, after showing it: the think time before the next request pays it. A request
-// that finds a step still owed takes it first, as the collector inside the request did before, so
-// the heap never holds more than one request's garbage beyond the collector's own policy. Returns
-// the step's time and the heap it freed (zeros when none was owed).
+// The collector around a request (RequestCollection, the one owner of this pattern; used by
+// run_translation_graph, GraphDialogue::open and say, and squawk.translate.request, through which
+// the REPL's and serve's session (scripts/translate/session.lua) translate a person's English
+// line): the VM's collector is stopped for the translation, so no collection runs inside a
+// request's latency, and restarted after it; the request's garbage (over the bench's corpora ~70
+// KB a request, p99 ~140 KB, at most ~1 MB) is then owed. collect_after_reply(vm) takes it, one
+// minor step of the generational collector (p50 ~0.05 ms on a quiet machine), and is for a
+// caller that shows the reply to a person, after showing it: the think time before the next
+// request pays it (squawk repl: after the reply and the next prompt are printed; squawk serve:
+// on the simulation's thread once the reply is handed to the HTTP thread). A request that finds
+// a step still owed takes it first, as the collector inside the request did before, so the heap
+// never holds more than one request's garbage beyond the collector's own policy. Only the
+// translation is a request: the commands it gives, a simulation line (`:run 10`), a tick or a
+// script run with the collector in its normal mode. Returns the step's time and the heap it freed
+// (zeros when none was owed).
 struct ReplyCollection {
   double ms = 0.0;        // [ms] wall time of the step
   double freed_kb = 0.0;  // [KB] the Lua heap before the step less the heap after it
 };
 ReplyCollection collect_after_reply(Vm& vm);
+
+// The scope of one translation request. Construction, when the collector is running: takes a
+// step still owed, marks a step owed (Vm::collection_owed) and stops the collector; destruction
+// restarts it, whether the request returned, asked or failed. When the collector is already
+// stopped (an enclosing request, or a script that stopped it) the scope does nothing, so requests
+// nest and a script's choice stands. Neither allocates nor raises a Lua error: it may live outside
+// a pcall, around one (never across a longjmp: destroy it before raising).
+class RequestCollection {
+ public:
+  explicit RequestCollection(Vm& vm);
+  ~RequestCollection();
+  RequestCollection(const RequestCollection&) = delete;
+  RequestCollection& operator=(const RequestCollection&) = delete;
+
+ private:
+  lua_State* L_;
+  bool restart_;  // the collector was running at construction
+};
 
 // Reads a graph result table (translate()'s shape) at the stack top, leaving
 // it there; a result of another shape comes back as a Status.

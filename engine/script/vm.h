@@ -117,6 +117,12 @@ class Vm {
   void enter_binding() { ++in_binding_; }
   bool leave_binding();
 
+  // Whether a translation request's collector step is owed (script/translate_graph.h:
+  // RequestCollection sets it, collect_after_reply clears it); a plain flag, so that setting it
+  // never allocates in the Lua heap.
+  bool collection_owed() const { return collection_owed_; }
+  void set_collection_owed(bool owed) { collection_owed_ = owed; }
+
   // Charges `instructions` of work done in C to the current call's budget;
   // an error naming the limit when it is spent (the caller raises it).
   Status charge(long long instructions);
@@ -150,6 +156,7 @@ class Vm {
   size_t heap_ = 0;       // [bytes] Lua heap in use
   int in_binding_ = 0;    // binding bodies running
   bool memory_refused_ = false;  // an allocation failed at the limit
+  bool collection_owed_ = false;  // a translation request's collector step is owed
   BlockAllocator blocks_;        // the Lua heap's blocks; outlives L_ (declared before it)
   friend void* vm_alloc(void* ud, void* ptr, size_t osize, size_t nsize);
   lua_State* L_ = nullptr;

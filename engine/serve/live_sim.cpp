@@ -94,6 +94,7 @@ void LiveSim::run() {
       }
       publish();
       p.done->set_value(std::move(result));
+      session_.collect_after_reply();  // (the HTTP thread sends the reply meanwhile)
     }
     const auto now = Clock::now();
     if (now < next) continue;
@@ -101,6 +102,7 @@ void LiveSim::run() {
     last = now;
     tick_teammate();
     publish();
+    session_.collect_after_reply();  // (an advisory executed automatically translates)
     next += period;
     if (next < now) next = now + period;
   }

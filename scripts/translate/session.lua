@@ -379,6 +379,23 @@ function Session:names_aircraft(text)
   return false
 end
 
+-- The translation of an English line through dialogue d: d:say(text), and, when that asks or
+-- fails and the line names no aircraft, d:say("SELECTED text"). Returns ok, r as pcall gives
+-- them, and the callsign put in front (nil when none). Runs inside squawk.translate.request.
+local function translate_line(self, d, text, opts)
+  local pending = d.pending
+  local ok, r = pcall(d.say, d, text)
+  local sel = opts and opts.selected
+  if ok and (r.ask or r.error) and not pending and sel and self.sim:get(sel) and not self:names_aircraft(text) then
+    local asked = d.pending
+    d.pending = nil
+    local ok2, r2 = pcall(d.say, d, sel .. " " .. text)
+    if ok2 and not r2.error then return ok2, r2, sel end
+    d.pending = asked
+  end
+  return ok, r, nil
+end
+
 function Session:command(text, opts)
   text = text:gsub("^%s+", ""):gsub("%s+$", "")
   local reply = { text = text, commands = {}, results = {}, events = {}, touched = {}, deleted = {} }
@@ -395,19 +412,9 @@ function Session:command(text, opts)
   reply.kind = "english"
   if text == "" then return reply end
   local d = self:dialogue_for(opts and opts.client)
-  local pending = d.pending
-  local ok, r = pcall(d.say, d, text)
-  local sel = opts and opts.selected
-  if ok and (r.ask or r.error) and not pending and sel and self.sim:get(sel) and not self:names_aircraft(text) then
-    local asked = d.pending
-    d.pending = nil
-    local ok2, r2 = pcall(d.say, d, sel .. " " .. text)
-    if ok2 and not r2.error then
-      r, reply.addressed = r2, sel
-    else
-      d.pending = asked
-    end
-  end
+  -- One request for the collector (stopped while it translates); the commands run after it.
+  local ok, r
+  ok, r, reply.addressed = squawk.translate.request(translate_line, self, d, text, opts)
   if not ok then
     d.pending = nil
     reply.error = "the translator failed: " .. tostring(r) .. " (nothing ran; the simulation is unchanged)"
