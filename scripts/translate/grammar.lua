@@ -695,7 +695,7 @@ end
 -- value handlers read: "reduce 270, no wait, 260" is "reduce 270 , correction , 260".
 local DIGIT_WORDS = set_of({ "zero", "oh", "one", "two", "three", "four", "five", "six", "seven", "eight", "nine",
   "niner", "tree", "fife", "fower" })
-local UNIT_WORDS = set_of({ "feet", "ft", "knots", "knot", "kts", "kt", "degrees", "degree" })
+local UNIT_WORDS = set_of({ "feet", "ft", "knots", "knot", "kts", "kt", "degrees" })
 local SIDES = set_of({ "left", "right" })
 G.refusable = set_of(lexicon.refusable_verbs)
 -- The words of `text` as {at, e, raw, bare} (at, e: byte positions of the word and after it; bare: lower
