@@ -695,7 +695,7 @@ end
 -- value handlers read: "reduce 270, no wait, 260" is "reduce 270 , correction , 260".
 local DIGIT_WORDS = set_of({ "zero", "oh", "one", "two", "three", "four", "five", "six", "seven", "eight", "nine",
   "niner", "tree", "fife", "fower" })
-local UNIT_WORDS = set_of({ "feet", "ft", "knots", "kts", "kt", "degrees" })
+local UNIT_WORDS = set_of({ "feet", "ft", "knots", "knot", "kts", "kt", "degrees" })
 local SIDES = set_of({ "left", "right" })
 G.refusable = set_of(lexicon.refusable_verbs)
 -- The words of `text` as {at, e, raw, bare} (at, e: byte positions of the word and after it; bare: lower
@@ -4731,7 +4731,8 @@ function G:request_opening(i)
   if self:word(i, "@polite_openings") then return self:skip_fillers(i + 1) end
   local k = i
   while k < i + 3 and self:word(k, "@wish_before_like") do k = k + 1 end
-  if k > i and self:word(k, "like") then return self:skip_fillers(k + 1) end
+  -- ("I would like that the Qatari, after ...": "that" after "like" before the aircraft)
+  if k > i and self:word(k, "like") then return self:skip_fillers(self:word(k + 1, "that") and k + 2 or k + 1) end
   return i
 end
 
@@ -10267,7 +10268,16 @@ function G:described()
       local before = self:word(r.b - 1, "the a an") and r.b - 2 or r.b - 1
       -- ("I've got the Tomjet above at 170": the object of lexicon.described_object, its clause from after the name)
       if self:word(before, "@described_object") then k = r.e - 1 end
-      if (k == r.e - 1 or self:word(k, "@described") and not self:word(verb_at, "@described_not"))
+      -- ("Kenya 420 is it possible to slow to 230 knots?", "KQA420 is it ok for you to climb", "is possible to":
+      -- a polite opener asking leave, lexicon.leave_asked then "to", is the request, no description)
+      local leave = self:word(k, "is") and (self:word(verb_at, "it") and verb_at + 1 or verb_at)
+      if leave and self:word(leave, "@leave_asked") then
+        leave = self:word(leave + 1, "for") and self:word(leave + 2, "you it him her") and leave + 3 or leave + 1
+        leave = self:word(leave, "to")
+      else
+        leave = false
+      end
+      if (k == r.e - 1 or self:word(k, "@described") and not self:word(verb_at, "@described_not") and not leave)
           and not self:word(before, "@described_after") then
         -- (the clause ends at punctuation, or at an instruction word after its first value: "KLM12 is at FL300
         -- climb FL320")

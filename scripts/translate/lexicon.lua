@@ -1182,7 +1182,10 @@ return {
                                    "i mistake", "i make mistake", "i make a mistake", "i made mistake" },
                       -- said after a marker, before the value said in place of the one taken back ("I am sorry,
                       -- it is 260"): part of the correction's run
-                      restated = { "it is", "it's", "it should be" },
+                      -- ("sorry I want to say 300", "no, I wanted to say FL320", "sorry, I meant to say 300": the
+                      -- value the speaker means said after "to say", as an East African speaker says it)
+                      restated = { "it is", "it's", "it should be", "want to say", "wanted to say", "wish to say",
+                                   "to say" },
                       -- modals said after the addressee restated in a correction ("sorry, Turkish 876 should climb
                       -- to FL320": G.restated_addressee)
                       restated_modals = { "should", "must", "shall", "will", "has to", "needs to", "is to" },
@@ -2030,6 +2033,11 @@ return {
     { what = "traffic information", words = "traffic", window = 2, after_instruction = true, to_end = true,
       near = { "opposite", "crossing", "converging", "overtaking", "same", "reciprocal", "climbing", "descending",
                "ahead", "behind", "passing", "below", "above", "beneath", "underneath" } },
+    -- ("turn left 20 degrees, traffic is KLM", "descend FL280, traffic is an Emirates at FL300": after an
+    -- instruction, the other aircraft named after "traffic is"; its airline, callsign or level is no addressee or
+    -- value of the instruction)
+    { what = "traffic information", words = "traffic", near = { "is" }, window = 1, after_instruction = true,
+      to_end = true },
     -- ("climb FL100, there's an inbound sitting at one one zero": after an instruction, an arrival told by where
     -- it is; its level is the other aircraft's)
     { what = "traffic information", words = "inbound", window = 2, after_instruction = true, to_end = true,
@@ -2343,6 +2351,8 @@ return {
     -- ("run the simulation at for times real time": a multiplier's digit heard as a word)
     { heard = { "for", "fore" }, means = "four", before = { "times" } },
     { heard = { "nots", "notts", "nuts", "knot's" }, means = "knots", after = { "#number" } },
+    -- (a rate's unit with its noun in the plural, "1500 feet per minutes", "2000 ft per mins")
+    { heard = { "minutes", "mins" }, means = "minute", after = { "per" } },
     -- the radiotelephony digits as speech recognition writes them: "niner" split in two ("flight level nigh ner
     -- zero"), "tree" heard as "free" before the count it multiplies or between digits ("descend to free thousand",
     -- "heading one free zero"); "free" elsewhere is English ("feel free to climb")
@@ -2771,7 +2781,10 @@ return {
   -- "would it be possible to have the Porter, once it reaches OAKVL, turn ...", "I wonder if the Jazz, once ...")
   request_openings = { "would it be possible to have", "would it be possible for", "is it possible to have",
       "is it possible for", "could you have", "could you get", "can you have", "can you get", "would you have",
-      "i wonder if", "i was wondering if", "we wonder if", "we were wondering if" },
+      "i wonder if", "i was wondering if", "we wonder if", "we were wondering if",
+      -- (a wish said as an East African speaker says it, "I want that the Qatari, after it pass KOBAB, descend
+      -- FL250": "want" and "that" or not; a longer form before the shorter it opens with)
+      "i want that", "we want that", "i want", "we want" },
   -- the first words of a note's text that make it a question of its own ("... saying are you ready?"): its closing
   -- "?" may be the note's or the request's (handlers_other.lua m:echo)
   echo_question_openers = { "who", "what", "where", "when", "why", "how", "which", "is", "are", "am", "was", "were",

@@ -2725,6 +2725,23 @@ return function(intent, rule, words)
   -- heading has it to fly?" asks for an instruction)
   rule { "which", "pos", next = "altitude speed heading level", when = function(g, i)
     return g:word(i + 2, "has have") and g.t[#g.t].text == "?" and not g:word_in(i + 3, #g.t + 1, "to") end }
+  -- "which altitude Kenya 412 have now?", "which speed does the Rwandair have?", "which level the Ethiopian is at
+  -- now?": the state word after "which", then the aircraft ("does"/"do" and "the" before it at most), then "has",
+  -- "have", "is", "is at" or "is flying", only "now"/"currently" after, and "?" closing the request: its state
+  -- asked (POS) as a non-native speaker asks it ("which altitude Kenya 412 have to climb?" is none)
+  rule { "which", "pos", next = "altitude speed heading level", when = function(g, i)
+    if g.t[#g.t].text ~= "?" then return false end
+    local k = g:word(i + 2, "does do") and i + 3 or i + 2
+    if g:word(k, "the") then k = k + 1 end
+    local r = g:refs_in(k, k + 1, "aircraft")[1]
+    if not (r and r.b == k and r.exists) then return false end
+    k = r.e
+    if not g:word(k, "has have is") then return false end
+    k = k + 1
+    if g:word(k - 1, "is") and g:word(k, "at flying") then k = k + 1 end
+    while g:word(k, "now currently") do k = k + 1 end
+    return k == #g.t
+  end }
   -- "which is the route of the Vueling?": the route asked with "which" ("cuál es"), as the state is above
   rule { "which", "listrte", next = "is", near = { 4, "route routing" }, when = function(g)
     return g.t[#g.t].text == "?" end }

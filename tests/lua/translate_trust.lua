@@ -18887,3 +18887,44 @@ do
     asked(ex("Easy eight one quebec alpha, direct WGM, uh, Vienna"), "a city's name")
   end
 end
+
+-- Cycle 60 (f201): East African controllers' polite English
+do
+  local _, ex = scene({ "DEFWPT OKNES -2.6 36.8", "DEFWPT UTATA -2.3 36.8", "DEFWPT LUDOL -2.8 37.0",
+    "DEFWPT EKBAD -1.6 36.0", "CRE KQA220 E190 -2.0 37.0 210 FL210 260", "ADDWPT KQA220 OKNES",
+    "CRE ETH719 B738 -1.5 36.5 160 FL330 290", "ADDWPT ETH719 UTATA", "ADDWPT ETH719 LUDOL",
+    "CRE RWD455 CRJ9 -1.8 35.5 070 FL250 270", "ADDWPT RWD455 EKBAD",
+    "CRE DLH40 A320 -2.5 38.0 190 FL370 290" })
+  -- a wish opening the request, "I want (that)" or "I would like that", before the aircraft and its condition
+  check_eq(ex("I want that Rwandair 455 after it pass EKBAD descend FL230"), "AT RWD455 EKBAD DO ALT RWD455 FL230")
+  check_eq(ex("we want that the Ethiopian 719, when it passes UTATA, turn left heading 120"),
+    "AT ETH719 UTATA DO HDG ETH719 120 LEFT")
+  check_eq(ex("I would like that Kenya 220 after it pass OKNES reduce speed 240 knots"),
+    "AT KQA220 OKNES DO SPD KQA220 240")
+  check_eq(ex("I want Kenya 220 to climb FL230 please"), "ALT KQA220 FL230")
+  asked(ex("I want that Kenya 220 when it pass OKNES descend"), "no level said")
+  -- the state asked with "which" and the aircraft before its verb ("have", "is at"), "?" closing it
+  check_eq(ex("which level Rwandair 455 have now?"), "POS RWD455")
+  check_eq(ex("which speed does the Kenya 220 have?"), "POS KQA220")
+  check_eq(ex("which altitude Ethiopian 719 is at currently?"), "POS ETH719")
+  asked(ex("which altitude Kenya 220 have to climb?"), "an instruction asked for")
+  asked(ex("which altitude Kenya 220 have now"), "no question mark")
+  -- a rate's unit with its noun in the plural
+  check_eq(ex("Ethiopian 719 descent FL290 at 1800 feet per minutes"), "ALT ETH719 FL290 1800")
+  check_eq(ex("Kenya 220 climb to FL250 with 1000 ft per mins please"), "ALT KQA220 FL250 1000")
+  -- a polite opener asking leave straight after the callsign, no comma
+  check_eq(ex("Kenya 220 is it possible to slow to 240 knots?"), "SPD KQA220 240")
+  check_eq(ex("Ethiopian 719 is it ok for you to climb FL350"), "ALT ETH719 FL350")
+  check_eq(ex("Rwandair 455 is possible to turn right heading 100"), "HDG RWD455 100 RIGHT")
+  asked(ex("Kenya 220 is ok at FL210"), "a description, no leave asked")
+  asked(ex("Kenya 220 is it at FL210?"), "a question about its level")
+  -- a value restated after "I want to say", "I meant to say" (the unit in the singular or not)
+  check_eq(ex("Ethiopian 719 speed 300 knot, sorry I want to say 280"), "SPD ETH719 280")
+  check_eq(ex("Kenya 220 climb FL250, no, I wanted to say FL240"), "ALT KQA220 FL240")
+  check_eq(ex("Rwandair 455 heading 090, sorry, I meant to say 100"), "HDG RWD455 100")
+  asked(ex("Kenya 220 speed 250 knot, sorry"), "taken back, nothing in its place")
+  -- traffic named after "traffic is", beside an instruction, is no addressee
+  check_eq(ex("Ethiopian 719 turn right 20 degree, traffic is Lufthansa"), "HDG ETH719 180 RIGHT")
+  check_eq(ex("Kenya 220 climb FL230, traffic is a Lufthansa at FL370"), "ALT KQA220 FL230")
+  asked(ex("Kenya 220 traffic is Lufthansa, turn left heading 180"), "no instruction before it")
+end
