@@ -11395,6 +11395,8 @@ end
 -- True when every word of text is in lexicon[list] ("yes", "affirm").
 function M.lexicon_says(text, list)
   local set, any = word_set("@" .. list, 1), false
+  -- (letters with accents, as M.translate reads them: "hayır" is "hayir")
+  if text:find("[\xC3\xC4\xC5]") then text = text:gsub("[\xC3\xC4\xC5][\x80-\xBF]", lexicon.accents) end
   for w in text:lower():gmatch("[%a']+") do
     if not set[w] then return false end
     any = true
@@ -15651,6 +15653,8 @@ function M.translate(text, world)
   local quoted = M.quoted_clearance(text, world)
   if quoted then return quoted end
   if text:find("\xC3", 1, true) then text = text:gsub("[\xC3][\x80-\xBF]", lexicon.accents) end  -- (UTF-8 Latin-1 letters)
+  -- (the Turkish letters of UTF-8 Latin Extended-A: "hayır", "sağol", "Şile")
+  if text:find("[\xC4\xC5]") then text = text:gsub("[\xC4\xC5][\x80-\xBF]", lexicon.accents) end
   text = G.id_label(G.hold_after_ff(G.time_before_fast(numbered_steps(G.title_label(G.spoken_ddmm(G.spoken_zeros(G.number_words_apart(text))))))), world)
   -- ("climb to 10 km", "descend to 7.5 km": a level in kilometres straight after the vertical verb, as metres)
   if text:find("km", 1, true) then

@@ -258,6 +258,9 @@ return {
         "sannu", "medaase", "akwaaba", "sawubona", "ngiyabonga", "enkosi", "dankie", "asseblief", "yebo", "eish",
         -- and of the Gulf ("tamam": OK)
         "tamam", "habibi", "mashallah",
+        -- (and the Turkish of Turkey and Cyprus beyond "tamam": "peki", all right; "tamamdır", done; "sağol", thanks;
+        -- "efendim", sir)
+        "peki", "tamamdir", "sagol", "sagolun", "efendim",
         -- the thanks, "please" and apologies of a research lab's other voices, romanised: Persian ("mersi",
         -- "mamnoon", "lotfan", "bebakhshid"), Thai ("khob khun krub"), Indonesian ("maaf", "permisi", "tolong"),
         -- Korean ("mianhamnida", "joesonghamnida"), Italian, Spanish and Portuguese ("scusi", "disculpe", "desculpa",
@@ -336,7 +339,8 @@ return {
         "do widzenia", "do videnia", "kalo taxidi", "kali mera", "kali spera", "buona giornata", "buona serata",
         "buon viaggio", "grazie mille", "per favore", "bon voyage", "bonne journee", "bonne soiree", "boa tarde",
         "boa noite", "boa viagem", "bom dia", "buen viaje", "hasta luego", "guten tag", "god dag", "god morgen",
-        "ha det", "dank je", "dank u", "iyi gunler", "iyi ucuslar", "do svidaniya", "ni hao", "ma'a salama",
+        "ha det", "dank je", "dank u", "iyi gunler", "iyi ucuslar", "iyi aksamlar", "iyi geceler", "iyi calismalar",
+        "iyi yolculuklar", "iyi nobetler", "kolay gelsin", "gule gule", "sag ol", "sag olun", "hosca kalin", "do svidaniya", "ni hao", "ma'a salama",
         "ma salama", "no wahala", "at pilot's discretion", "at your discretion", "pilot's discretion",
         "pilot discretion", "your discretion", "at pilot discretion", "pilots discretion", "at pilots discretion",
         -- a place asked about beside another ("where is DILUM in relation to the aircraft")
@@ -561,7 +565,9 @@ return {
       ["ú"] = "u", ["û"] = "u", ["ü"] = "u", ["ý"] = "y", ["ÿ"] = "y", ["ß"] = "ss", ["À"] = "A", ["Á"] = "A",
       ["Â"] = "A", ["Ä"] = "A", ["Å"] = "A", ["Ç"] = "C", ["È"] = "E", ["É"] = "E", ["Ê"] = "E", ["Ë"] = "E",
       ["Í"] = "I", ["Î"] = "I", ["Ñ"] = "N", ["Ó"] = "O", ["Ô"] = "O", ["Ö"] = "O", ["Ø"] = "O", ["Ú"] = "U",
-      ["Ü"] = "U" },
+      ["Ü"] = "U",
+      -- (Turkish: the dotless and dotted i, g with breve, s with cedilla)
+      ["ı"] = "i", ["İ"] = "I", ["ğ"] = "g", ["Ğ"] = "G", ["ş"] = "s", ["Ş"] = "S" },
   -- hesitations: skipped inside a spoken number, but a number said with one is not
   -- completed by guessing ("heading uh two two" asks which heading)
   hesitations = { "ah", "uh", "um", "er", "eh" },
@@ -756,6 +762,10 @@ return {
     naw = { word = "no", caps_kept = true }, nae = { word = "no", caps_kept = true },
     haud = { word = "hold", caps_kept = true }, och = { word = "oh", caps_kept = true },
     aye = { word = "yes", not_prev = "direct dct dir via to at over after cross from", caps_kept = true },
+    -- (Turkish "evet", yes, and "hayır", no, said in an English clearance or as the answer to squawk's question:
+    -- "evet, Turkish 6RT descend ...", "climb FL110, hayır, FL100"; in capitals or after a place's verb they stay)
+    evet = { word = "yes", not_prev = "direct dct dir via to at over after cross from", caps_kept = true },
+    hayir = { word = "no", not_prev = "direct dct dir via to at over after cross from", caps_kept = true },
     wee = { word = "small", caps_kept = true },
     yin = { word = "one", prev = "big wee small the that this", caps_kept = true },
     noo = { word = "now", prev = "the", caps_kept = true },
@@ -1896,7 +1906,9 @@ return {
     "minimum", "maximum", "min", "max", "or", "greater", "higher", "lower", "after", "afterwards", "later",
     "resume", "cancel", "unless", "if", "when", "once", "until", "till", "instead", "only", "except" },
   -- answers that confirm a question ("did you mean BAW123?")
-  yes = { "yes", "affirm", "affirmative", "correct", "yep", "yeah", "confirmed", "confirm" },
+  yes = { "yes", "affirm", "affirmative", "correct", "yep", "yeah", "confirmed", "confirm",
+          -- (Turkish)
+          "evet" },
   -- answers to "What does 'W' mean?" that say W carries nothing ("ignore it", "nothing",
   -- "just a comment"): the request is read again with W explained; never offered for a
   -- negation or a condition (lexicon.accounted.negation, condition words), which must be restated
@@ -2151,7 +2163,9 @@ return {
       .. "land landing takeoff", bare = true, after_instruction = true },
   },
   -- answers that decline a yes/no question ("delete 5 aircraft?")
-  no = { "no", "negative", "nope", "don't", "dont", "stop" },
+  no = { "no", "negative", "nope", "don't", "dont", "stop",
+         -- (Turkish "hayır", its dotless i taken off as G.lexicon_says reads it)
+         "hayir" },
   turn_around = { "around", "opposite", "reverse" },
   -- names said before a value they introduce
   named = { "named", "called" },
@@ -2195,6 +2209,11 @@ return {
                     baku = "heydar aliyev", ["st petersburg"] = "pulkovo", ["saint petersburg"] = "pulkovo",
                     yekaterinburg = "koltsovo", novosibirsk = "tolmachevo", samara = "kurumoch", bishkek = "manas",
                     kyiv = "boryspil intl", kiev = "boryspil intl",
+                    -- (Turkey and Cyprus: the cities of one large airport the navdata names otherwise, "Izmir" its
+                    -- ADNAN MENDERES beside the IZMIR VOR; Istanbul, of two, is none of these)
+                    izmir = "adnan menderes", ankara = "esenboga", bodrum = "milas bodrum", gaziantep = "oguzeli",
+                    isparta = "suleyman demirel", paphos = "pafos intl", cappadocia = "kapadokya",
+                    nevsehir = "kapadokya",
                     -- (the Caribbean, Central America and Mexico: the stations named by their city, "Havana",
                     -- "Kingston", whose airport the navdata names otherwise)
                     havana = "jose marti", habana = "jose marti", ["la habana"] = "jose marti",

@@ -18928,3 +18928,45 @@ do
   check_eq(ex("Kenya 220 climb FL230, traffic is a Lufthansa at FL370"), "ALT KQA220 FL230")
   asked(ex("Kenya 220 traffic is Lufthansa, turn left heading 180"), "no instruction before it")
 end
+
+-- Cycle 60 (f202): Turkish said in an English clearance by the controllers of Turkey and Cyprus: "evet" (yes) and
+-- "hayır" (no) read as the English words, also as the answer to squawk's question; "peki", "tamamdır", "sağol",
+-- "efendim", "iyi çalışmalar", "kolay gelsin" carry nothing; the Turkish letters (ı, ğ, ş) read as plain ones. A city
+-- of one large airport the navdata names otherwise ("Izmir": ADNAN MENDERES beside the IZMIR VOR) is that airport
+-- where an airport is meant, and asked about (navaid or airport) in a direct-to
+do
+  local s, ex = scene({ "CRE THY5KE A321 39.9 32.9 135 FL140 280", "CRE PGT8LM B738 37.65 27.50 300 FL110 250" })
+  check_eq(ex("evet, THY5KE climb flight level one eight zero"), "ALT THY5KE FL180")
+  check_eq(ex("Turkish five kilo echo turn left heading 250, evet"), "HDG THY5KE 250 LEFT")
+  check_eq(ex("PGT8LM, evet evet, reduce speed 230"), "SPD PGT8LM 230")
+  check_eq(ex("peki THY5KE descend FL100"), "ALT THY5KE FL100")
+  check_eq(ex("THY5KE climb FL180, iyi çalışmalar"), "ALT THY5KE FL180")
+  check_eq(ex("PGT8LM reduce speed 220, sağ olun"), "SPD PGT8LM 220")
+  check_eq(ex("PGT8LM increase speed 260 tamamdır"), "SPD PGT8LM 260")
+  check_eq(ex("THY5KE descend FL120, hayır, FL130"), "ALT THY5KE FL130")
+  -- a word of them alone, or beside an instruction with no value, is still asked; in capitals it is an ident
+  asked(ex("evet"), "'evet' alone")
+  asked(ex("THY5KE climb, evet"), "no level")
+  asked(ex("PGT8LM climb FL150 EVET"), "'EVET' in capitals")
+  -- the answer to squawk's question
+  local d = graph.dialogue({ sim = s, mode = "offline" })
+  asked(said(d:say("delete all aircraft")), "two aircraft")
+  check_eq(said(d:say("evet")), "DEL THY5KE ; DEL PGT8LM")
+  d = graph.dialogue({ sim = s, mode = "offline" })
+  asked(said(d:say("delete all aircraft")), "two aircraft")
+  check(d:say("hayır").cancelled == true, "'hayır' drops it")
+end
+do
+  local _, ex = navscene({ "CRE THY5KE A321 39.9 32.9 135 FL140 280", "CRE PGT8LM B738 37.65 27.50 300 FL110 250" },
+    "Cycle 60 (f202)'s cities of Turkey")
+  if ex then
+    check_eq(ex("PGT8LM proceed direct to Izmir airport"), "ADDWPT PGT8LM LTBJ ; DIRECT PGT8LM LTBJ")
+    check_eq(ex("PGT8LM destination İzmir"), "DEST PGT8LM LTBJ")
+    check_eq(ex("THY5KE set destination Ankara"), "DEST THY5KE LTAC")
+    check_eq(ex("PGT8LM fly direct Bodrum"), "ADDWPT PGT8LM LTFE ; DIRECT PGT8LM LTFE")
+    check_eq(ex("PGT8LM direct the Izmir VOR"), "ADDWPT PGT8LM IMR ; DIRECT PGT8LM IMR")
+    asked(ex("PGT8LM proceed direct Izmir"), "the IMR VOR or LTBJ")
+    asked(ex("THY5KE direct to Ankara"), "the ANK VOR or LTAC")
+    asked(ex("THY5KE destination Istanbul"), "two large airports")
+  end
+end
