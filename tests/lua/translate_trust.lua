@@ -18779,3 +18779,30 @@ do
   check_eq(ex("Sriwijaya 44 speed two seven zero already, make it two five zero"), "SPD SJY44 250")
   check_eq(ex("Citilink 77 heading one two zero, make it one four zero"), "HDG CTV77 140")
 end
+
+-- Cycle 60 (fpol2): the polite experimenter's self-corrections and reasons
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 90 FL250 280", "CRE BAW34 B738 52.5 4.5 180 FL300 290" })
+  -- a slip named as what was said ("I said wrong", "it was wrong"), then the value said again, is the new value
+  check_eq(ex("KLM12 climb FL310, sorry, I said wrong, FL330 please"), "ALT KLM12 FL330")
+  check_eq(ex("please make the Speedbird 34 speed 300... ah sorry, it was wrong, 260 is correct."), "SPD BAW34 260")
+  check_eq(ex("KLM12 heading 120, sorry, I said it wrong, heading 150"), "HDG KLM12 150")
+  -- closing the request with nothing in its place, the value is taken back: asked
+  asked(ex("KLM12 climb FL310, it was wrong"), "taken back, nothing said")
+  asked(ex("KLM12 speed 290, sorry, I said wrong"), "taken back, nothing said")
+  asked(ex("delete BAW34, it was a mistake"), "the delete judged a mistake")
+  -- the unit asked for after the marker, then the value in it
+  check_eq(ex("Let KLM12 fly with Mach 0.78, no, better in knots please, 270 knots."), "SPD KLM12 270")
+  check_eq(ex("KLM12 speed 270 knots, sorry, rather in Mach, Mach 0.78"), "SPD KLM12 M0.78")
+  check_eq(ex("KLM12 climb to 31000 feet, sorry, in flight levels, FL310"), "ALT KLM12 FL310")
+  asked(ex("KLM12 Mach 0.78, no, better in knots please"), "the unit with no value")
+  asked(ex("KLM12 Mach 0.78, no, better in knots please, 270"), "no unit on the value")
+  -- a delete's reason naming the creation as the slip is why it goes
+  check_eq(ex("delete the Speedbird please, it was my mistake to create it"), "DEL BAW34")
+  check_eq(ex("Please delete KLM12, it was a mistake to create it."), "DEL KLM12")
+  check_eq(ex("delete KLM12 please, the student made an error creating it"), "DEL KLM12")
+  check_eq(ex("delete BAW34, it was put in by mistake"), "DEL BAW34")
+  -- a creation said after the delete is still one (asked for what it lacks)
+  asked(ex("delete KLM12, I will create it again"), "a creation with nothing")
+  asked(ex("delete KLM12 please, it was my mistake to create it at FL250"), "a creation with a value")
+end
