@@ -2272,7 +2272,7 @@ local function written_forms(text, world)
   -- "47,5 north", "8,5 degrees east", "factor to 1,1": a decimal comma (G.decimal_comma) is the point
   where("%d,%d", "()(%d+),(%d+)()", function(b, whole, part, e) return G.decimal_comma(text, b, whole, part, e) end)
   text = typed_abbreviations(lone_multipliers(tokens.numerals_apart(G.unfinished_restarts(G.cut_off_restarts(text)), DIGIT_WORDS), world))
-  text = hyphened_types(spelled(G.spelled_letter_a(heard_forms(negated_values(G.readback_reported(readback_heard(self_corrections(G.said_but(G.cancel_corrections(unlabelled(foreign_digits(G.said_whole(G.denied_word(G.dutch_chat(G.condition_then(G.condition_copula(text)))))))))))))))))
+  text = hyphened_types(spelled(G.spelled_letter_a(heard_forms(negated_values(G.readback_reported(readback_heard(self_corrections(G.said_but(G.cancel_corrections(unlabelled(foreign_digits(G.said_whole(G.denied_word(G.dutch_chat(G.condition_then(G.condition_copula(G.recreate_said(text))))))))))))))))))
   low = text:lower()
   -- a position typed as whole degrees after the hemisphere, then minutes ("N55 50.0 W003 20.0", "S33 57
   -- E151 10"): decimal degrees before their hemisphere ("55.833333 N 3.333333 W"); minutes of 60 or more
@@ -3185,6 +3185,15 @@ function G:declared(b, e)
     end
   end
   return not (wished and instructs) and not (named and (instructs or not believed))
+end
+
+-- "delete SpiceJet 403 and recreate it at ...", "..., re-create it at ...": "recreate" or "re-create" said after
+-- "and" or a comma straight before "it" is "create it again" (read by the creation as the aircraft deleted,
+-- handlers_other m:recreated); anywhere else ("we'll re-create it later") left as said.
+function G.recreate_said(text)
+  if not text:lower():find("creat", 1, true) then return text end
+  return (text:gsub("([,;]%s*)[Rr][Ee]%-?[Cc][Rr][Ee][Aa][Tt][Ee](%s+[Ii][Tt]%f[%A])", "%1create%2 again")
+    :gsub("(%f[%a][Aa][Nn][Dd]%s+)[Rr][Ee]%-?[Cc][Rr][Ee][Aa][Tt][Ee](%s+[Ii][Tt]%f[%A])", "%1create%2 again"))
 end
 
 -- True when tokens x, x + 1 are "the", "my" or "our" and a person of the study (lexicon declared.study_people:

@@ -18805,4 +18805,19 @@ do
   -- a creation said after the delete is still one (asked for what it lacks)
   asked(ex("delete KLM12, I will create it again"), "a creation with nothing")
   asked(ex("delete KLM12 please, it was my mistake to create it at FL250"), "a creation with a value")
+  -- a delete, then "create it again" / "recreate it": the aircraft deleted, its type and values by "same"
+  check_eq(ex("Please delete KLM12 and create it again at 52.2 4.2, heading 180, FL200, 250 knots, same type."),
+    "DEL KLM12 ; CRE KLM12 A320 52.2 4.2 180 FL200 250")
+  check_eq(ex("Delete the Speedbird and create it again at SPY, FL150, heading 090, 250 knots, same type."),
+    "DEL BAW34 ; CRE BAW34 B738 SPY 90 FL150 250")
+  check_eq(ex("delete BAW34 and re-create it at 52.1 5.1, same type, heading, level and speed."),
+    "DEL BAW34 ; CRE BAW34 B738 52.1 5.1 180 FL300 290")
+  -- two aircraft named, no type, no level or speed, or no delete before it: asked
+  asked(ex("Delete KLM12 and BAW34 and create it again at 52.2 4.2, heading 180, FL200, 250 knots, same type."),
+    "which one is 'it'")
+  asked(ex("Delete KLM12 and create it again at 52.2 4.2, heading 180, FL200, 250 knots."), "no type")
+  asked(ex("delete BAW34 and create it again at 52.1 5.1, same type"), "no level or speed")
+  asked(ex("KLM12 climb FL310 and create it again at 52.2 4.2, heading 180, FL200, 250 knots, same type."),
+    "nothing deleted")
+  check_eq(ex("delete BAW34, we'll re-create it later"), "DEL BAW34")
 end
