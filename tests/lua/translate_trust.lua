@@ -18820,4 +18820,9 @@ do
   asked(ex("KLM12 climb FL310 and create it again at 52.2 4.2, heading 180, FL200, 250 knots, same type."),
     "nothing deleted")
   check_eq(ex("delete BAW34, we'll re-create it later"), "DEL BAW34")
+  -- "let the simulation run further", "let it run on": the clock started
+  check_eq(ex("Please let the simulation run further."), "OP")
+  check_eq(ex("ok, let it run on please"), "OP")
+  check_eq(ex("let the simulation run further for 5 minutes"), "FF 300")
+  asked(ex("let KLM12 run further"), "an aircraft let run")
 end
