@@ -981,9 +981,50 @@ function G.restated_addressee(text)
   end
   return text
 end
+-- "Mach 0.7, no, better in knots please, 240 knots": after a marker of lexicon.self_correction.markers (one word,
+-- its mark) and "better" or "rather", "in" and a unit of lexicon.self_correction.restated_units, "please", then a
+-- mark and straight after it a value in that unit: "in UNIT please" and its mark are dropped
+-- ("no, better 240 knots"), read by the self-corrections as the value said again; closing the request with no
+-- value after it, the phrase is dropped ("Mach 0.7, no,": asked). Anywhere else left as said.
+G.unit_restated_markers = { no = true, sorry = true, wait = true, actually = true }
+function G.unit_restated(text)
+  local lower = text:lower()
+  if not lower:find("%f[%a]in%s+%a") then return text end
+  for _, unit in ipairs(lexicon.self_correction.restated_units) do
+    for _, said in ipairs(unit.said) do
+      local b, e = lower:find("%f[%a]in%s+" .. said:gsub(" ", "%%s+") .. "%f[%A]")
+      while b do
+        local pre = lower:sub(1, b - 1):gsub("[%s,]*$", "")
+        pre = pre:gsub("%f[%a]better$", ""):gsub("%f[%a]rather$", ""):gsub("[%s,]*$", "")
+        local marker = pre:match("%f[%a](%a+)[%s,%.!]*$")
+        local rest = lower:sub(e + 1)
+        local cut = rest:match("^%s*please()") or 1
+        local mark = rest:match("^%s*[,;:%.%-]+%s*()", cut)
+        local valued = false
+        if mark and pre:match("[,%.!;%-]%s*%a+$") and marker and G.unit_restated_markers[marker] then
+          local ahead = rest:sub(mark, mark + 24)
+          for _, v in ipairs(unit.value) do valued = valued or ahead:find(v) ~= nil end
+        end
+        if marker and G.unit_restated_markers[marker] and pre:match("[,%.!;%-]%s*%a+$")
+            and rest:match("^[%s%p]*$", cut) then
+          -- (closing the request, the unit asked for with no value: "Mach 0.7, no, better in knots" leaves the
+          -- marker closing it, a value taken back with none in its place: asked)
+          return text:sub(1, #pre)
+        elseif valued then
+          text = text:sub(1, b - 1) .. text:sub(e + mark)
+          lower = text:lower()
+          b, e = lower:find("%f[%a]in%s+" .. said:gsub(" ", "%%s+") .. "%f[%A]")
+        else
+          b, e = lower:find("%f[%a]in%s+" .. said:gsub(" ", "%%s+") .. "%f[%A]", e + 1)
+        end
+      end
+    end
+  end
+  return text
+end
 local function self_corrections(text)
   text = G.restated_addressee(G.meant_after_hesitation(hesitated_sides(G.formal_apologies(G.admitted_slips(
-    G.withdrawn_sentences(text))))))
+    G.withdrawn_sentences(G.unit_restated(text)))))))
   if not holds_word(text:lower(), SC_MARKER_PATTERNS) and not holds_word(text:lower(), G.hesitation_patterns) then
     return text
   end
@@ -2271,7 +2312,7 @@ local function written_forms(text, world)
   -- "47,5 north", "8,5 degrees east", "factor to 1,1": a decimal comma (G.decimal_comma) is the point
   where("%d,%d", "()(%d+),(%d+)()", function(b, whole, part, e) return G.decimal_comma(text, b, whole, part, e) end)
   text = typed_abbreviations(lone_multipliers(tokens.numerals_apart(G.unfinished_restarts(G.cut_off_restarts(text)), DIGIT_WORDS), world))
-  text = hyphened_types(spelled(G.spelled_letter_a(heard_forms(negated_values(G.readback_reported(readback_heard(self_corrections(G.said_but(G.cancel_corrections(unlabelled(foreign_digits(G.said_whole(G.denied_word(G.dutch_chat(G.condition_then(G.condition_copula(text)))))))))))))))))
+  text = hyphened_types(spelled(G.spelled_letter_a(heard_forms(negated_values(G.readback_reported(readback_heard(self_corrections(G.said_but(G.cancel_corrections(unlabelled(foreign_digits(G.said_whole(G.denied_word(G.dutch_chat(G.condition_then(G.condition_copula(G.recreate_said(text))))))))))))))))))
   low = text:lower()
   -- a position typed as whole degrees after the hemisphere, then minutes ("N55 50.0 W003 20.0", "S33 57
   -- E151 10"): decimal degrees before their hemisphere ("55.833333 N 3.333333 W"); minutes of 60 or more
@@ -3141,7 +3182,10 @@ function G:declared(b, e)
   -- (an instruction word in the subject before a copula is a noun only in a remark on the study: "Real time is a bit
   -- slow for my supervisor's patience")
   local subject = x
-  if not self:word(x, COMMENTARY.decl.subjects) then
+  if G.study_subject(self, x) then
+    -- ("the participant made a mistake when creating it": a person of the study as the subject, its verb next)
+    subject = x + 2
+  elseif not self:word(x, COMMENTARY.decl.subjects) then
     subject = self:find_word(x + 1, e, COMMENTARY.decl.copulas)
     if subject >= e then return false end
     if not self:word_in(b, e, COMMENTARY.decl.study) then subject = x end
@@ -3175,12 +3219,44 @@ function G:declared(b, e)
         -- (what a question word opens is what is studied or told, "a test of how the geometry affects detection";
         -- a habit told is no instruction, "long-haul aircraft usually fly faster")
         local told = self:word_in(b, y, COMMENTARY.decl.told)
-        if not (noun or past or told or y < subject) then return false end
+        if not (noun or past or told or y < subject or self:creation_judged(b, y)) then return false end
         instructs = true
       end
     end
   end
   return not (wished and instructs) and not (named and (instructs or not believed))
+end
+
+-- "delete SpiceJet 403 and recreate it at ...", "..., re-create it at ...": "recreate" or "re-create" said after
+-- "and" or a comma straight before "it" is "create it again" (read by the creation as the aircraft deleted,
+-- handlers_other m:recreated); anywhere else ("we'll re-create it later") left as said.
+function G.recreate_said(text)
+  if not text:lower():find("creat", 1, true) then return text end
+  return (text:gsub("([,;]%s*)[Rr][Ee]%-?[Cc][Rr][Ee][Aa][Tt][Ee](%s+[Ii][Tt]%f[%A])", "%1create%2 again")
+    :gsub("(%f[%a][Aa][Nn][Dd]%s+)[Rr][Ee]%-?[Cc][Rr][Ee][Aa][Tt][Ee](%s+[Ii][Tt]%f[%A])", "%1create%2 again"))
+end
+
+-- True when tokens x, x + 1 are "the", "my" or "our" and a person of the study (lexicon declared.study_people:
+-- "the participant", "my supervisor"), a verb in the past after them ("made", "-ed"): a remark's subject.
+function G.study_subject(self, x)
+  if not (self:word(x, "the my our") and self:word(x + 1, COMMENTARY.decl.study_people)) then return false end
+  local v = self.t[x + 2]
+  return v ~= nil and v.kind == "word" and (v.raw:lower():match("ed$") ~= nil or self:word(x + 2, COMMENTARY.decl.past_verbs))
+end
+
+-- True when the instruction word at y of a remark opened at b is the creating of the aircraft the request is
+-- about, judged a slip: a form of "create" ("to create it", "when creating it", "to make it") straight before
+-- "it" that closes the clause, after a word of lexicon.self_correction.judged in the remark ("it was my mistake to
+-- create it", "I made an error when creating it"): why the aircraft goes, no creation.
+function G:creation_judged(b, y)
+  local raw = self.t[y].raw:lower()
+  if not (raw:match("^creat") or raw:match("^re%-?creat")) or not self:word(y + 1, "it") then return false end
+  local after = self.t[y + 2]
+  if after and after.kind ~= "punct" then return false end
+  for x = b, y - 1 do
+    if G.judged[self.words[x]] then return true end
+  end
+  return false
 end
 
 -- True when the clause opening at b (to its next comma or its sentence's end) tells a state beside the request: a
@@ -3602,6 +3678,7 @@ function G:in_reason(i)
         inside, lead_end, reason[k] = true, self:declared_clause(k), true
       elseif punct and (t.text == "," or t.text == ";") and not self:word(k - 1, "no @correction")
           and (self:word(k + 1, COMMENTARY.decl.subjects) or self:word(k + 1, COMMENTARY.decl.openers)
+            or G.study_subject(self, k + 1)
             or self:apology_end(k + 1, #self.t + 1) > k + 1)
           and self:declared_clause(k + 1) and (instructed(k) or self:has_ref(1, k, "aircraft")
             or self:instructed_after(self:declared_clause(k + 1))) then
@@ -8495,6 +8572,19 @@ function G:closing_judgement(e)
   return self:commentary(b, e + 1) and b or nil
 end
 
+-- Whether a closing remark b .. e judging what was said, opened by "it", judges the saying: "it" then only a
+-- linking verb, an article or a degree word before the judging word that closes it ("it was wrong", "it's all
+-- wrong", "it was a mistake"); "it was put in by mistake", "it was created wrong" say why an aircraft goes.
+-- A remark opened by another word of lexicon.self_correction_judges is true.
+function G:it_judged(b, e)
+  if not self:word(b, "it") then return true end
+  if not G.judged[self.words[e]] then return false end
+  for x = b + 1, e - 1 do
+    if not self:word(x, "was is 's a an all completely totally just simply") then return false end
+  end
+  return true
+end
+
 -- The first token of a run closing the request at token last: a phrase of lexicon.self_correction.withheld, and
 -- before it self-correction words, apologies, hesitations and punctuation holding a marker, an apology or a
 -- hesitation ("no wait, let's see", "sorry, let me think", "hmm, hold on"), with an instruction's words before the
@@ -8574,7 +8664,7 @@ function G:dangling_correction()
   end
   local remark = judged_e > 0 and (self:closing_remark(judged_e) or self:closing_judgement(judged_e))
   if remark and remark > 1 and self:word(remark, "@self_correction_judges")
-      and self:word_in(remark, judged_e + 1, G.judged) then
+      and self:word_in(remark, judged_e + 1, G.judged) and self:it_judged(remark, judged_e) then
     self:need(string.format("You said '%s'. What is the corrected instruction?", self:raw(remark, last + 1)))
     return
   end
@@ -8587,7 +8677,9 @@ function G:dangling_correction()
   if first <= last then  -- (the words as said are read only where such a run closes the request)
     -- (a formal apology as "sorry": "turn left heading 300, pardon me"; a word of another language as its English
     -- word, lexicon.said_whole: "turn left 20, nee")
-    for w in G.formal_apologies(G.said_whole(self.text_said or "")):lower():gmatch("[%a']+") do said[#said + 1] = w end
+    for w in G.formal_apologies(G.said_whole(G.unit_restated(self.text_said or ""))):lower():gmatch("[%a']+") do
+      said[#said + 1] = w
+    end
   end
   local marked = false
   for k = math.max(1, #said - (last - first)), #said do

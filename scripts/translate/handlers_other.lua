@@ -205,6 +205,29 @@ return function(H, f, compass)
     end
     return nil
   end
+  -- The callsign of the one aircraft this request deletes before the creation s (one delete verb, then that
+  -- aircraft, the only one named in the request), when the creation names it by "it" straight after its verb
+  -- ("create it again", "recreate it", "re-create it"); else nil. Its values ("same type", "same heading, level and speed") are then that aircraft's (m:create_one).
+  function m:recreated(s)
+    local v = s.trig or s.b
+    if not (self:intent_at(v) and self:word(v + 1, "it")) then return nil end
+    -- (the delete said before it: its verb, then the aircraft, the only one named in the request)
+    local del
+    for k = 1, v - 1 do
+      if self:intent_at(k) == "delete" then
+        if del then return nil end
+        del = k
+      end
+    end
+    local deleted
+    for _, r in ipairs(self.refs) do
+      if r.kind == "aircraft" then
+        if deleted or not del or r.b < del or r.b > v then return nil end
+        deleted = r.name
+      end
+    end
+    return deleted and self:state(deleted) and deleted or nil
+  end
   function m:create_one(s, id_from)
     local id
     -- ("create Alaska six eleven" with ASA331 flying: the airline heard whole and a flight number
@@ -270,6 +293,13 @@ return function(H, f, compass)
     end
     if not id then
       id, code_at = self:code_apart_callsign(s)
+    end
+    -- ("delete Air Macau 872 and create it again at LATOP, ..., same type"): the aircraft deleted before it in
+    -- this request, named by "it" (m:recreated)
+    local recreated
+    if not id then
+      recreated = self:recreated(s)
+      id = recreated
     end
     -- ("create BCS1 type B744 ..."): with the type named after "type", another designator written as one word
     -- (letters, then digits) is the new callsign; ("create a Cessna 172 D-EABC at ..."): a registration written
@@ -377,6 +407,7 @@ return function(H, f, compass)
       if r.exists then near = near or r.name end
       if r.exists and self:word_in(s.b, s.e, "same") then model = self:state(r.name) end
     end
+    if recreated and self:word_in(s.b, s.e, "same") then model = self:state(recreated) end
     if not actype and model and self:word_in(s.b, s.e, "type") then actype = model.type end
     local qs = self:quantities(s.b, s.e)
     for _, q in ipairs(s.shared and self:quantities(s.shared.b, s.shared.e) or {}) do qs[#qs + 1] = q end
@@ -729,10 +760,16 @@ return function(H, f, compass)
     if #missing > 0 then
       return self:need("To create the aircraft I need its " .. table.concat(missing, ", ") .. ". What should they be?")
     end
-    -- a callsign already flying: CRE would replace that aircraft, so ask
-    if self:state(id) then
+    -- a callsign already flying: CRE would replace that aircraft, so ask (one deleted first in this request
+    -- is gone by then)
+    if self:state(id) and not recreated then
       return self:need(string.format("%s already exists. Should I move it, or create a new aircraft under "
         .. "another callsign?", id:upper()))
+    end
+    -- (an aircraft created again with no level or speed said, "same type" alone, would stand at 0 ft and 0 kt:
+    -- asked)
+    if recreated and not alt and not spd and not mach then
+      return self:need(string.format("At what level and speed should %s be created again?", id:upper()))
     end
     local doubt = level_q and alt == level_q.value and self:level_doubt(level_q, alt, id:upper())
     if doubt then return self:need(doubt) end

@@ -996,7 +996,7 @@ return {
                     "crosses", "overflies" },
   -- the first words of a remark that judges what the speaker said ("that was wrong", "I got it mixed up", "my
   -- mistake": G:dangling_correction)
-  self_correction_judges = { "that", "that's", "this", "i", "i've", "i'd", "my" },
+  self_correction_judges = { "that", "that's", "this", "i", "i've", "i'd", "my", "it" },
   -- said after a value taken back by a self-correction and said again, the judgement that opens the reason it is
   -- taken back ("2.5 NM, sorry, 2.5 is too small, please use 4 NM": grammar.lua G:ruled_out_reason_end)
   ruled_out_verbs = { "is", "was", "would", "will", "seems", "looks" },
@@ -1189,7 +1189,20 @@ return {
                                    "i was mistaken", "i was wrong",
                                    -- (the same admitted in Vietnamese and Thai English, no tense or article:
                                    -- "sorry I mistake, 300 not 310")
-                                   "i mistake", "i make mistake", "i make a mistake", "i made mistake" },
+                                   "i mistake", "i make mistake", "i make a mistake", "i made mistake",
+                                   -- (the slip named as what was said: "FL340, sorry, I said wrong, FL320",
+                                   -- "300... ah sorry, it was wrong, 260 is correct")
+                                   "i said wrong", "i said it wrong", "i said that wrong", "it was wrong",
+                                   "that was wrong", "this was wrong" },
+                      -- a unit named after a marker, "better" or "rather" and "in", then a mark and a value in
+                      -- that unit ("Mach 0.7, no, better in knots please, 240 knots"): the unit phrase is dropped
+                      -- (grammar.lua G.unit_restated); each unit as said, then the Lua patterns of its value
+                      restated_units = {
+                        { said = { "knots", "knot", "kts", "kt" }, value = { "^%d+%s*knots?%f[%A]", "^%d+%s*kts?%f[%A]" } },
+                        { said = { "mach" }, value = { "^mach%s*[%d%.]" } },
+                        { said = { "feet", "ft" }, value = { "^%d[%d,]*%s*feet%f[%A]", "^%d[%d,]*%s*ft%f[%A]" } },
+                        { said = { "flight levels", "flight level", "fl" },
+                          value = { "^fl%s*%d", "^flight%s+level%s+%d" } } },
                       -- said after a marker, before the value said in place of the one taken back ("I am sorry,
                       -- it is 260"): part of the correction's run
                       -- ("sorry I want to say 300", "no, I wanted to say FL320", "sorry, I meant to say 300": the
@@ -1521,6 +1534,11 @@ return {
             -- slow for my supervisor's patience")
             study = { "my", "our", "participant", "participants", "experiment", "thesis", "study", "supervisor",
                       "scenario", "trial" },
+            -- (the people of the study as a remark's subject, before a verb in the past: "-ed" or one of
+            -- past_verbs, "the participant made a mistake when creating it": G.study_subject)
+            study_people = { "participant", "participants", "supervisor", "student", "students", "subject",
+                             "operator", "colleague", "tester" },
+            past_verbs = { "made", "did", "put", "set", "gave", "took", "forgot", "got", "had", "was", "were" },
             -- (a remark told as the speaker's belief may name a place, "Then it heads towards Utrecht, I believe")
             believed = { "believe", "think", "guess", "suppose" },
             -- (an instruction word after a question word or a word of habit is told, never instructed)

@@ -2878,10 +2878,12 @@ return function(intent, rule, words)
     return g:word(i - 1, "her") and g:word(i - 2, "let") and not g:has_ref(1, #g.t + 1, "aircraft")
       and (g:alone_but(i - 2, i + 1) or g:clause_alone(i - 2, i + 1))
   end }
-  -- "let it go", "let it run", "let the sim run": the clock started, said alone or as a clause of its own
+  -- "let it go", "let it run", "let the sim run": the clock started, said alone or as a clause of its own ("let
+  -- the simulation run further", "let it run on": "further", "farther", "on" after "run" say it goes on)
   rule { "go run", "op", when = function(g, i)
     local b = g:word(i - 1, "it") and i - 1 or (g:word(i - 1, "@sim") and g:word(i - 2, "the") and i - 2 or nil)
-    return b ~= nil and g:word(b - 1, "let") and (g:alone_but(b - 1, i + 1) or g:clause_alone(b - 1, i + 1))
+    local e = g:word(i, "run") and g:word(i + 1, "further farther on") and i + 2 or i + 1
+    return b ~= nil and g:word(b - 1, "let") and (g:alone_but(b - 1, e) or g:clause_alone(b - 1, e))
   end }
   -- "ok, let's go", "righto let's go" (the lexer reads "let's" as "let", "righto" as "right"): the run started, said
   -- alone or as a clause of its own, an acknowledgement before it ("let's go with heading 270" is no clause of its

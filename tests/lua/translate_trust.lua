@@ -18970,3 +18970,50 @@ do
     asked(ex("THY5KE destination Istanbul"), "two large airports")
   end
 end
+
+-- Cycle 60 (fpol2): the polite experimenter's self-corrections and reasons
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 90 FL250 280", "CRE BAW34 B738 52.5 4.5 180 FL300 290" })
+  -- a slip named as what was said ("I said wrong", "it was wrong"), then the value said again, is the new value
+  check_eq(ex("KLM12 climb FL310, sorry, I said wrong, FL330 please"), "ALT KLM12 FL330")
+  check_eq(ex("please make the Speedbird 34 speed 300... ah sorry, it was wrong, 260 is correct."), "SPD BAW34 260")
+  check_eq(ex("KLM12 heading 120, sorry, I said it wrong, heading 150"), "HDG KLM12 150")
+  -- closing the request with nothing in its place, the value is taken back: asked
+  asked(ex("KLM12 climb FL310, it was wrong"), "taken back, nothing said")
+  asked(ex("KLM12 speed 290, sorry, I said wrong"), "taken back, nothing said")
+  asked(ex("delete BAW34, it was a mistake"), "the delete judged a mistake")
+  -- the unit asked for after the marker, then the value in it
+  check_eq(ex("Let KLM12 fly with Mach 0.78, no, better in knots please, 270 knots."), "SPD KLM12 270")
+  check_eq(ex("KLM12 speed 270 knots, sorry, rather in Mach, Mach 0.78"), "SPD KLM12 M0.78")
+  check_eq(ex("KLM12 climb to 31000 feet, sorry, in flight levels, FL310"), "ALT KLM12 FL310")
+  asked(ex("KLM12 Mach 0.78, no, better in knots please"), "the unit with no value")
+  asked(ex("KLM12 Mach 0.78, no, better in knots please, 270"), "no unit on the value")
+  -- a delete's reason naming the creation as the slip is why it goes
+  check_eq(ex("delete the Speedbird please, it was my mistake to create it"), "DEL BAW34")
+  check_eq(ex("Please delete KLM12, it was a mistake to create it."), "DEL KLM12")
+  check_eq(ex("delete KLM12 please, the student made an error creating it"), "DEL KLM12")
+  check_eq(ex("delete BAW34, it was put in by mistake"), "DEL BAW34")
+  -- a creation said after the delete is still one (asked for what it lacks)
+  asked(ex("delete KLM12, I will create it again"), "a creation with nothing")
+  asked(ex("delete KLM12 please, it was my mistake to create it at FL250"), "a creation with a value")
+  -- a delete, then "create it again" / "recreate it": the aircraft deleted, its type and values by "same"
+  check_eq(ex("Please delete KLM12 and create it again at 52.2 4.2, heading 180, FL200, 250 knots, same type."),
+    "DEL KLM12 ; CRE KLM12 A320 52.2 4.2 180 FL200 250")
+  check_eq(ex("Delete the Speedbird and create it again at SPY, FL150, heading 090, 250 knots, same type."),
+    "DEL BAW34 ; CRE BAW34 B738 SPY 90 FL150 250")
+  check_eq(ex("delete BAW34 and re-create it at 52.1 5.1, same type, heading, level and speed."),
+    "DEL BAW34 ; CRE BAW34 B738 52.1 5.1 180 FL300 290")
+  -- two aircraft named, no type, no level or speed, or no delete before it: asked
+  asked(ex("Delete KLM12 and BAW34 and create it again at 52.2 4.2, heading 180, FL200, 250 knots, same type."),
+    "which one is 'it'")
+  asked(ex("Delete KLM12 and create it again at 52.2 4.2, heading 180, FL200, 250 knots."), "no type")
+  asked(ex("delete BAW34 and create it again at 52.1 5.1, same type"), "no level or speed")
+  asked(ex("KLM12 climb FL310 and create it again at 52.2 4.2, heading 180, FL200, 250 knots, same type."),
+    "nothing deleted")
+  check_eq(ex("delete BAW34, we'll re-create it later"), "DEL BAW34")
+  -- "let the simulation run further", "let it run on": the clock started
+  check_eq(ex("Please let the simulation run further."), "OP")
+  check_eq(ex("ok, let it run on please"), "OP")
+  check_eq(ex("let the simulation run further for 5 minutes"), "FF 300")
+  asked(ex("let KLM12 run further"), "an aircraft let run")
+end
