@@ -977,18 +977,19 @@ local function airline_names()
   end
   for _, b in ipairs(names.brands or {}) do
     BRANDS[b[1]] = { table.unpack(b, 2) }
-    BRANDS[b[1]].shared, BRANDS[b[1]].name = b.shared, b[1]
+    BRANDS[b[1]].shared, BRANDS[b[1]].every, BRANDS[b[1]].name = b.shared, b.every, b[1]
     if AIRLINE_NAMES[b[1]] then BRAND_OF[AIRLINE_NAMES[b[1]]] = BRANDS[b[1]] end
   end
   return AIRLINE_NAMES, BRANDS, BRAND_OF
 end
 
 -- True when a callsign said with brand `brand`'s name (names.lua's brands) may be of its airline `icao`: the
--- brand is shared (each licensee is called by it: "Virgin 817" is VOZ817), squawk knows no telephony of that
+-- brand is shared (each licensee is called by it: "Virgin 817" is VOZ817) or `every` (each of its airlines is
+-- called by it: "AirAsia 8302" is AWQ8302), squawk knows no telephony of that
 -- airline (names.airlines), or one of its telephony names is the brand's name or begins with it ("jetstar
 -- asia" bears "jetstar"). Jetstar Japan, called "orange liner", is never "Jetstar 503" (issue 44 point 3).
 local function bears(icao, brand)
-  if brand.shared or not NAMES_OF[icao] then return true end
+  if brand.shared or brand.every or not NAMES_OF[icao] then return true end
   for _, n in ipairs(NAMES_OF[icao]) do
     if n == brand.name or n:sub(1, #brand.name + 1) == brand.name .. " " then return true end
   end
@@ -3241,6 +3242,18 @@ end
 local QUESTION_WORDS = { where = true, wheres = true, ["where's"] = true, is = true, what = true, whats = true,
                          ["what's"] = true, show = true, me = true, tell = true }
 function m:settle_callsigns()
+  -- ("AirAsia 5517" with AXM88 and AWQ5517 flying, "Batik 112" with BTK100 and MXD112): a callsign heard with a
+  -- brand's name that the matcher took for another aircraft of the name's own airline is the one aircraft of the
+  -- brand flying with every character heard (m:airline_and_digits_match), when there is exactly one
+  for _, r in ipairs(self.refs) do
+    local h = r.kind == "aircraft" and r.exists and r.heard
+    local a = h and airline_digits(h.id)
+    if a and select(3, airline_names())[a] and not self:airline_and_digits_match(h.id, r.name) then
+      for _, ac in ipairs(self.fleet) do
+        if airline_digits(ac.id) ~= a and self:airline_and_digits_match(h.id, ac.id) then r.name = ac.id break end
+      end
+    end
+  end
   -- "KLM 1394 and 1349, both descend FL80": typed digits after a flying aircraft's callsign and "and" that are,
   -- with its airline, another flying aircraft's callsign exactly name that aircraft too
   for k = #self.refs, 1, -1 do

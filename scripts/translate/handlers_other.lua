@@ -3611,11 +3611,22 @@ return function(H, f, compass)
     end
     if not name then
       -- "define waypoint DELTA at ...", "define a fix GOLF at ...": a name typed in capitals after the
-      -- noun or the verb, also one that is a phonetic word
+      -- noun or the verb, also one that is a phonetic word; after "point", or set off by commas ("another
+      -- point, LION, at ..."), only straight before "at" or the position (a name typed in capitals that is also
+      -- an airline's, LION, REX, which the reference reader never takes for a place)
       for k = s.trig, s.e - 1 do
-        if k == s.trig or self:word(k, "@waypoint_nouns") then
-          local n = self.t[self:skip_fillers(k + 1)]
-          if n and n.kind == "word" and n.raw:match("^%u[%u%d]+$") and not n.keyword then name = n.raw break end
+        if k == s.trig or self:word(k, "@waypoint_nouns point") then
+          local j = self:skip_fillers(k + 1)
+          local set_off = self.t[j] and self.t[j].text == ","
+          if set_off then j = self:skip_fillers(j + 1) end
+          local n, a = self.t[j], j + 1
+          if self.t[a] and self.t[a].text == "," then a = a + 1 end
+          local placed = self:word(a, "at") or (self:quantities(a, a + 1)[1] or {}).b == a
+          if n and n.kind == "word" and n.raw:match("^%u[%u%d]+$") and not n.keyword
+              and (placed or not (set_off or self:word(k, "point"))) then
+            name = n.raw
+            break
+          end
         end
       end
     end

@@ -19017,3 +19017,50 @@ do
   check_eq(ex("let the simulation run further for 5 minutes"), "FF 300")
   asked(ex("let KLM12 run further"), "an aircraft let run")
 end
+
+-- Cycle 60 (fbrand): brands and telephony of Indonesia, Malaysia, Turkey, Spain and East Africa
+do
+  local _, ex = scene({ "CRE AWQ5517 A320 -5.0 106.0 010 FL280 270", "CRE APG5204 A320 -6.0 107.0 200 FL300 280",
+    "CRE AXM88 A320 -6.5 106.5 300 FL240 270", "CRE APG4411 A320 -6.2 106.2 300 FL260 270",
+    "CRE AWQ4411 A320 -6.4 106.1 120 FL220 260", "CRE LNI365 B739 -7.0 108.0 120 FL250 290",
+    "CRE AJA3318 A320 -6.8 107.2 090 FL190 270", "CRE FHY4KT A320 -5.5 107.5 180 FL170 250",
+    "CRE EVE812 A332 -5.8 106.8 270 FL350 290" })
+  -- "AirAsia" (or "Air Asia") with a flight number is the one aircraft of an AirAsia airline flying with it,
+  -- whatever that airline's own telephony (Indonesia AirAsia: WAGON AIR; Philippines AirAsia: COOL RED)
+  check_eq(ex("AirAsia 5517 reduce speed 240 please"), "SPD AWQ5517 240")
+  check_eq(ex("Air Asia five five one seven, turn left heading 320"), "HDG AWQ5517 320 LEFT")
+  check_eq(ex("descend AirAsia 5204 to FL260"), "ALT APG5204 FL260")
+  check_eq(ex("AirAsia 88 climb FL300"), "ALT AXM88 FL300")
+  -- (the brand's name before a number one of its airlines flies, with another aircraft of the name's own airline
+  -- flying, is still that one: "Batik 112" with BTK100 and MXD112)
+  check_eq(ex("Air Asia 5517 climb FL300"), "ALT AWQ5517 FL300")
+  -- two AirAsia airlines flying the same number, or a number none flies, stay asked
+  asked(ex("AirAsia 4411 climb FL300"), "APG4411 and AWQ4411")
+  asked(ex("AirAsia 5518 climb FL300"), "no AirAsia 5518")
+  -- "Lion" is Lion Air as Indonesian controllers say it; a wrong digit or "Lion" alone stays asked
+  check_eq(ex("Lion 365 descend FL210"), "ALT LNI365 FL210")
+  check_eq(ex("Mister system, Lion three six five climb FL290 please"), "ALT LNI365 FL290")
+  check_eq(ex("delete Lion 365"), "DEL LNI365")
+  check_eq(ex("Lion 365 dan AirAsia 5204 turn right heading 090"), "HDG LNI365 90 RIGHT ; HDG APG5204 90 RIGHT")
+  asked(ex("Lion 356 descend FL210"), "digits of no Lion aircraft")
+  asked(ex("Lion, descend FL210"), "an airline alone")
+  -- a condition with "if" before the callsign is never sent at once with "if" read into the callsign
+  asked(ex("if Lion 365 reaches FL270 then heading 060"), "which instruction waits")
+  check_eq(ex("create Lion 902 B739 at -6.0 106.0 heading 090, FL120, 250 knots"), "CRE LNI902 B739 -6 106 90 FL120 250")
+  -- AJet's ANATOLIAN and its old designator AJA (AnadoluJet): each of its names with a flight number
+  check_eq(ex("Anatolian three three one eight, climb flight level two three zero"), "ALT AJA3318 FL230")
+  check_eq(ex("AJet 3318 turn right heading 150"), "HDG AJA3318 150 RIGHT")
+  check_eq(ex("create Anatolian 77, A320 at -6.0 106.5 heading 180 FL120 250 knots"),
+    "CRE AJA77 A320 -6 106.5 180 FL120 250")
+  asked(ex("Anatolian 3381 climb FL230"), "digits of no Anatolian aircraft")
+  -- Freebird Airlines, Evelop/Iberojet by telephony and name
+  check_eq(ex("Freebird four kilo tango, descend flight level one five zero"), "ALT FHY4KT FL150")
+  check_eq(ex("Freebird Air 4KT reduce two three zero knots"), "SPD FHY4KT 230")
+  check_eq(ex("Iberojet 812 descend FL330"), "ALT EVE812 FL330")
+  check_eq(ex("Evelop eight one two, turn left heading 250"), "HDG EVE812 250 LEFT")
+  asked(ex("Freebird four kilo, descend flight level one five zero"), "a letter unheard")
+  -- a user waypoint named like an airline, typed in capitals after "point" before its position
+  check_eq(ex("Define one more point, LION, at 6 decimal 5 south 106 decimal 4 east"), "DEFWPT LION -6.5 106.4")
+  check_eq(ex("define point FREEBIRD at -6.1 107.3"), "DEFWPT FREEBIRD -6.1 107.3")
+  asked(ex("define another point LION"), "no position")
+end
