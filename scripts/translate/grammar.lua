@@ -5177,7 +5177,12 @@ G.limit_release = { words = set_of(lexicon.limit_release.words), release = set_o
 function G:limit_released()
   if not self:said("until till") then return end
   local R = G.limit_release
-  for _, r in ipairs(self.refs) do
+  -- (a limit at the final approach's distance, "until 6 miles final", "till 4 DME": read as a place's, its last
+  -- word the place's end; G:final_limits)
+  local limits = {}
+  for _, r in ipairs(self.refs) do limits[#limits + 1] = r end
+  for _, r in ipairs(self:final_limits()) do limits[#limits + 1] = r end
+  for _, r in ipairs(limits) do
     if r.kind == "waypoint" and self:word(r.b - 1, "until till") then
       local k = r.e
       -- ("until MOUAB keep 280 knots, then it is up to him": the limit said before its speed, the release after
@@ -5210,6 +5215,28 @@ function G:limit_released()
       end
     end
   end
+end
+
+-- The limits at the final approach's distance said after "until" or "till": a count 3 to 6, then its unit or
+-- "final" ("until 6 miles final", "till 4 DME", "until 5 miles on final"), "final" or "dme" among its words. Each is
+-- returned as a place, { kind = "waypoint", b = the count's token, e = the token after its last word }.
+G.final_limit_words = set_of({ "dme", "miles", "mile", "nm", "final", "on", "out", "from", "touchdown", "threshold",
+  "the" })
+function G:final_limits()
+  local found = {}
+  for i = 1, #self.t - 2 do
+    local n = self.t[i + 1]
+    if self:word(i, "until till") and n and (n.kind == "number" and n.text:match("^[3-6]$")
+        or self:word(i + 1, "three four five six")) then
+      local k, final = i + 2, false
+      while self.t[k] and self.t[k].kind == "word" and G.final_limit_words[self.t[k].text] do
+        final = final or self:word(k, "final dme")
+        k = k + 1
+      end
+      if final then found[#found + 1] = { kind = "waypoint", b = i + 1, e = k } end
+    end
+  end
+  return found
 end
 
 -- "CSA6AT descend 5000 feet, he goes to Mosnov": where the aircraft named before goes, told in a clause of its own
@@ -12137,6 +12164,8 @@ function G:said_last(i, near, own_clause)
   local cs_at = self.t[k] and self.t[k].text == "," and k + 1 or k
   local cs = self:refs_in(cs_at, #self.t + 1, "aircraft")
   if cs[1] and cs[1].b == cs_at and #cs == 1 and #self:refs_in(1, i, "aircraft") == 0 then k = cs[1].e end
+  -- (a hand-off closing the request: "until 5 miles final, then contact tower 118.7", G.handoff_to_end)
+  if G.handoff_to_end(self, k) then return true end
   -- (`own_clause`: "reduce 160 until 5 miles final, descend to 3000 feet": a clause after a comma, opened by
   -- an imperative verb of lexicon.clause_verbs, is an instruction of its own and waits for no limit)
   local j = self.t[k] and self.t[k].text == "," and self:skip_fillers(k + 1) or k
@@ -12144,9 +12173,9 @@ function G:said_last(i, near, own_clause)
     return true
   end
   -- (what follows set aside already, punctuation and courtesy between: "until RINOR, which is on its route? Thank
-  -- you.", G:route_remarks)
+  -- you.", G:route_remarks; "until 6 miles final, thereafter as per the procedure", G:limit_released)
   local rest, remark = k, false
-  while r and self.t[rest] and (self.t[rest].kind == "punct" or self.noted[rest] or FRAMING[self.t[rest].text]) do
+  while self.t[rest] and (self.t[rest].kind == "punct" or self.noted[rest] or FRAMING[self.t[rest].text]) do
     remark = remark or self.noted[rest] == true
     rest = rest + 1
   end
@@ -12167,6 +12196,38 @@ function G:said_last(i, near, own_clause)
   local ended = self.t[k - 1] and self.t[k - 1].kind == "punct" and (self.t[k - 1].text == "." or self.t[k - 1].text == "?"
     or self.t[k - 1].text == "!")
   return k > #self.t or (k > stop and self:in_reason(k)) or ((k > stop or ended) and self:remark_sentences(k))
+end
+
+-- True when tokens k .. the request's end are a hand-off and nothing else: a comma, "and", "then" ("after that",
+-- "thereafter") at most, then "contact" or "monitor", the station (lexicon.handoff_words, or at most two names of
+-- its own), a radio frequency (G:frequency_said) and courtesy ("... till 4 miles final, thereafter contact the
+-- tower on 119,9", "until LGL then monitor Langen radar 125.2, thank you"). A hand-off is not simulated; it starts
+-- nothing, so a limit before it is still said last. Anything else after it (an instruction, a value) is not.
+function G.handoff_to_end(g, k)
+  local j = k
+  while g.t[j] and (g.t[j].text == "," or g:word(j, "and then thereafter afterwards")) do j = j + 1 end
+  if g:word(j, "after") and g:word(j + 1, "that") then j = j + 2 end
+  if j == k and not (g.t[k - 1] and g.t[k - 1].kind == "punct") then return false end
+  if not g:word(j, "contact monitor") then return false end
+  local freq, names = false, 0
+  j = j + 1
+  while g.t[j] do
+    local t = g.t[j]
+    -- (a decimal comma, "119,9", as typed where it is the decimal sign: one token, the MHz, a comma, up to three
+    -- digits)
+    local mhz = t.text:match("^1[123]%d,%d%d?%d?$") and tonumber((t.text:gsub(",", ".")))
+    if g:frequency_said(j) or (mhz and mhz >= 118 and mhz < 137) then
+      freq = true
+    elseif not (t.kind == "punct" or t.number_word or g:word(j, "@handoff_words")) then
+      if not (t.kind == "word" and t.alpha and not t.keyword and not g.triggers[j] and names < 2
+          and #g:refs_in(j, j + 1, "aircraft") == 0) then
+        return false
+      end
+      names = names + 1
+    end
+    j = j + 1
+  end
+  return freq
 end
 
 -- True when the words from token k to the request's end, whole sentences after a sentence's end, say nothing to

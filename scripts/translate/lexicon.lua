@@ -873,9 +873,12 @@ return {
                     words = { "it", "may", "can", "is", "free", "to", "fly", "at", "its", "own", "their", "his", "her",
                               "your", "pilot's", "pilots", "pilot", "discretion", "resume", "resumes", "normal",
                               "usual", "speed", "speeds", "no", "restriction", "restrictions", "the", "be", "then",
-                              "again", "back", "up", "him", "them" },
-                    -- ("then it is up to him": the speed left to the pilot)
-                    release = { "discretion", "normal", "usual", "restriction", "restrictions", "up" } },
+                              "again", "back", "up", "him", "them", "you", "do", "as", "per", "procedure",
+                              "published" },
+                    -- ("then it is up to him": the speed left to the pilot; "after that it is free", "then you can
+                    -- do normal speed", "thereafter as per the procedure")
+                    release = { "discretion", "normal", "usual", "restriction", "restrictions", "up", "free",
+                                "procedure" } },
   -- before an instruction word: the instruction is only announced, not given
   not_a_clearance = { "expect" },
   -- a clause opening with one of `opens` (or of `with_is` and "is" or "about"), the aircraft it asks about straight
@@ -1333,6 +1336,10 @@ return {
   -- aircraft makers' names in the plural ("the two Airbuses")
   maker_plurals = { "airbuses", "boeings", "embraers", "bombardiers", "cessnas", "atrs", "dreamliners", "jumbos" },
   -- imperative verbs that open an instruction of their own after a comma, even after traffic information
+  -- words of a hand-off's station and courtesy after "contact" or "monitor" (grammar.lua G.handoff_to_end)
+  handoff_words = { "the", "on", "frequency", "freq", "tower", "approach", "director", "radar", "ground", "departure",
+                    "control", "centre", "center", "information", "arrival", "decimal", "point", "please", "thank",
+                    "thanks", "you" },
   clause_verbs = { "turn", "climb", "descend", "reduce", "increase", "fly", "proceed", "expedite" },
   -- nouns of a vertical speed that, opening the clause after traffic information and its comma with a value after
   -- them, give the rate of the climb or descent said before it (grammar.lua G:not_simulated)

@@ -18730,7 +18730,8 @@ do
   check_eq(ex("AFR12 maintain FL120 till SELDA, and only then descend to FL090"),
     "ALT AFR12 FL120 ; AT AFR12 SELDA DO ALT AFR12 FL90")
   check_eq(ex("AFR12 speed 250 until ROKAN, thereafter reduce to 220"), "SPD AFR12 250 ; AT AFR12 ROKAN DO SPD AFR12 220")
-  asked(ex("AFR12 keep 260 knots until SELDA, after that it is free"), "what 'free' means")
+  -- ("after that it is free": the limit released, as "then it is up to him", G:limit_released)
+  check_eq(ex("AFR12 keep 260 knots until SELDA, after that it is free"), "SPD AFR12 260")
   -- a message for the log or the screen, its place said after the quoted text; no place stays asked
   check_eq(ex("could you write the message 'block C starts' into the log please"), "ECHO block C starts")
   check_eq(ex("please show the text 'break of 5 minutes' to the participants"), "ECHO break of 5 minutes")
@@ -19063,4 +19064,36 @@ do
   check_eq(ex("Define one more point, LION, at 6 decimal 5 south 106 decimal 4 east"), "DEFWPT LION -6.5 106.4")
   check_eq(ex("define point FREEBIRD at -6.1 107.3"), "DEFWPT FREEBIRD -6.1 107.3")
   asked(ex("define another point LION"), "no position")
+end
+-- Cycle 61 (fpol3)
+do
+  -- a speed held until the final approach's distance, then a hand-off ("contact" or "monitor", the station, its
+  -- frequency) or a release of the limit closing the request: the speed is flown now; neither starts anything
+  local _, ex = scene({ "CRE SAS44 B738 49 3 180 8000 230", "CRE CSA61 A320 49.5 3.5 90 9000 240" })
+  check_eq(ex("SAS 44 speed 180 knots till 5 miles final, then contact tower 118.7"), "SPD SAS44 180")
+  check_eq(ex("CSA 61 please fly 170 knots until 4 miles final and then contact the tower on 118,7"), "SPD CSA61 170")
+  check_eq(ex("SAS 44, 160 knots till 4 miles final, thereafter contact Langen radar 125.2 thank you"),
+    "SPD SAS44 160")
+  check_eq(ex("CSA61 speed 160 knots until 6 miles final, thereafter as per the procedure"), "SPD CSA61 160")
+  check_eq(ex("SAS 44, 180 knots till five miles final, after that it is free"), "SPD SAS44 180")
+  -- a value, an instruction or a hand-off with no frequency after the limit still waits for it: asked
+  asked(ex("SAS 44 speed 160 knots until 6 miles final, thereafter 140"), "a value after the limit")
+  asked(ex("SAS 44 speed 160 knots until 6 miles final, then descend 2000 feet"), "an instruction after the limit")
+  asked(ex("SAS 44 speed 180 knots till 5 miles final then contact tower"), "a hand-off with no frequency")
+  asked(ex("SAS 44 speed 180 till 5 miles final, contact tower 118.7 when established"), "a condition after it")
+  asked(ex("SAS 44 speed 180 knots until 10 miles final, then normal speed"), "a limit further out")
+end
+do
+  local _, ex = navscene({ "CRE AFR12 A320 48 2 90 FL200 280", "ADDWPT AFR12 ABB", "ADDWPT AFR12 LGL" },
+    "fpol3 limits released")
+  if ex then
+    -- the same after a limit at a place on the route
+    check_eq(ex("Air France 12 keep 250 knots until LGL, after that it is free"), "SPD AFR12 250")
+    check_eq(ex("Air France 12 maintain 250 knots until LGL, then you can do normal speed"), "SPD AFR12 250")
+    check_eq(ex("AFR12 speed 260 until LGL, thereafter as per the procedure"), "SPD AFR12 260")
+    check_eq(ex("Air France 12 keep 250 knots until LGL, then monitor tower one one eight decimal seven"),
+      "SPD AFR12 250")
+    check_eq(ex("Air France 12 keep 250 knots until LGL, then contact tower 118.7 and climb FL300"),
+      "SPD AFR12 250 ; AT AFR12 LGL DO ALT AFR12 FL300")
+  end
 end
