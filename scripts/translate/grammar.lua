@@ -2324,7 +2324,7 @@ local function written_forms(text, world)
       return string.format("%.6f %s %.6f %s", tonumber(lat) + lat_min / 60, ns, tonumber(lon) + lon_min / 60, ew)
     end)
   -- (a clock time told as the present moment of a report is dropped first: G.clock_now)
-  text = G.clock_now(text)
+  text = G.clock_start(G.clock_now(text))
   low = text:lower()
   -- a simulation time typed h:mm:ss ("at 00:20:00") is that many seconds, also before a colon that opens
   -- what follows ("schedule at 00:15:00: ..."); mm:ss or hh:mm stays as typed
@@ -15176,6 +15176,65 @@ do
   "%f[%a]at this point,? ()" .. CLOCK .. "%s*[,:;%-]%s*",
   }
 end
+-- "Sim time zero is 14:30:00 in the report. Step forward to 14:32:30.", "Start time 07:41:00; fast forward until
+-- 07:43:30", "The reconstruction starts at 14:30:00 UTC as set up. Now let time run 90 seconds.": a clock time said
+-- in a sentence (to ".", ";" or ":") with a word of G.clock_start_sets.starts and no word of
+-- G.clock_start_sets.blocks tells the report's time at the simulation's start, no time to run anything at: that
+-- sentence is dropped when another follows. A run to a later clock time after it ("to", "until" or "till" and
+-- the time, after a word of G.clock_start_sets.runs) is a run for the difference [s] ("for N seconds"); only a
+-- request that runs the simulation after it (a word of G.clock_start_sets.runs) is read so; an
+-- earlier or equal time, or one of a different form (h:mm against h:mm:ss), leaves the text as said.
+G.clock_start_sets = {
+  starts = { "start", "starts", "started", "begins", "began", "zero", "reconstruct", "reconstruction", "from" },
+  runs = { "run", "advance", "forward", "step", "skip", "go", "jump", "ff", "fast-forward" },
+  blocks = { "climb", "descend", "turn", "heading", "speed", "direct", "create", "delete", "level", "fl", "knots",
+    "kt", "ft", "feet", "mach", "hold", "pause", "schedule", "at0", "when", "if" },
+}
+function G.clock_start(text)
+  if not text:find("%d:%d%d") then return text end
+  local S, low = G.clock_start_sets, text:lower()
+  local function has(list, b, e)
+    local part = " " .. low:sub(b, e):gsub("[^%w:%-]", " ") .. " "
+    for _, w in ipairs(list) do
+      if part:find(" " .. w .. " ", 1, true) then return true end
+    end
+    return false
+  end
+  local function secs(t)
+    local h, m, sec = t:match("^(%d%d?):(%d%d):(%d%d)$")
+    if h then return tonumber(h) * 3600 + tonumber(m) * 60 + tonumber(sec), 3 end
+    h, m = t:match("^(%d%d?):(%d%d)$")
+    if h then return tonumber(h) * 3600 + tonumber(m) * 60, 2 end
+    return nil
+  end
+  local tb, te = low:find("%f[%d]%d%d?:%d%d:?%d?%d?%f[%D]")
+  local start, parts = secs(low:sub(tb, te))
+  if not start then return text end
+  -- (the sentence of the start time: from the mark before it to the mark after it)
+  local sb = 1
+  for k = tb - 1, 1, -1 do
+    if low:sub(k, k):match("[%.;]") then sb = k + 1 break end
+  end
+  local se = low:find("[%.;:]%s", te + 1) or low:find("[%.;:]$", te + 1)
+  if not se or se >= #low or not has(S.starts, sb, se) or has(S.blocks, sb, tb - 1) or has(S.blocks, te + 1, se) then
+    return text
+  end
+  local rest, restlow = text:sub(se + 1), low:sub(se + 1)
+  -- (only before a run of the simulation: "start at 10:00:00; climb KLM12 FL300" may time the climb, asked)
+  if not has(S.runs, se + 1, #low) then return text end
+  local rb, re, t2 = restlow:find("%f[%a][%a]+ (%d%d?:%d%d:?%d?%d?)%f[%D]")
+  if rb then
+    local word = restlow:sub(rb, re):match("^(%a+)")
+    local to, n2 = secs(t2)
+    if not (word == "to" or word == "until" or word == "till") or not has(S.runs, 1, rb - 1 + #low - #restlow) then
+      return text
+    end
+    if not to or n2 ~= parts or to <= start then return text end
+    rest = rest:sub(1, rb - 1) .. "for " .. (to - start) .. " seconds" .. rest:sub(re + 1)
+  end
+  return text:sub(1, sb - 1) .. rest:gsub("^%s+", "")
+end
+
 function G.clock_now(text)
   if not text:find("%d:%d%d") then return text end
   for _, pat in ipairs(G.clock_now_patterns) do

@@ -19097,4 +19097,13 @@ do
   check_eq(ex("what is the vertical separation?"), "ZONEDH")
   asked(ex("what's the separation between AFR22 and XYZ99?"), "an aircraft not flying")
   asked(ex("what was the separation between AFR22 and KLM77 at FL380?"), "a value in the question")
+  -- the report's clock at the start, then a run to a later clock time: a run for the difference
+  check_eq(ex("Sim time zero is 10:00:00 in the report. Step forward to 10:01:40."), "FF 100")
+  check_eq(ex("Start time 08:11:00; fast forward until 08:13:00"), "FF 120")
+  check_eq(ex("Reconstruct from 13:58:00; now advance to 14:00:30."), "FF 150")
+  check_eq(ex("The replay starts at 16:00:00 UTC as set up. Now let time run 60 seconds."), "FF 60")
+  -- an earlier time, times of two forms, or no start said stay asked
+  asked(ex("Start time 08:11:00; fast forward until 08:10:00"), "a run back in time")
+  asked(ex("Start time 08:11; fast forward until 08:13:00"), "times of two forms")
+  asked(ex("Run to 16:22:00."), "no start said")
 end
