@@ -2323,6 +2323,9 @@ local function written_forms(text, world)
       if not lat_min or not lon_min or lat_min >= 60 or lon_min >= 60 then return nil end
       return string.format("%.6f %s %.6f %s", tonumber(lat) + lat_min / 60, ns, tonumber(lon) + lon_min / 60, ew)
     end)
+  -- (a clock time told as the present moment of a report is dropped first: G.clock_now)
+  text = G.clock_start(G.clock_now(text))
+  low = text:lower()
   -- a simulation time typed h:mm:ss ("at 00:20:00") is that many seconds, also before a colon that opens
   -- what follows ("schedule at 00:15:00: ..."); mm:ss or hh:mm stays as typed
   where("%d:%d", "%f[%d:](%d%d?):([0-5]%d):([0-5]%d)(:?)%f[^%d:]", function(h, m, sec, colon)
@@ -2552,6 +2555,9 @@ local function written_forms(text, world)
   where("nine her", "%f[%a]([Nn][Ii][Nn])[Ee] [Hh][Ee][Rr]%f[%A]", "%1er")
   where("\xC2\xB0", "(%d)\xC2\xB0(%s)", "%1 degrees%2")
   where("\xC2\xB0", "(%d)\xC2\xB0$", "%1 degrees")
+  -- (and before a mark that ends the sentence or clause: "turned left 30°.", "right 20°, then ...")
+  where("\xC2\xB0", "(%d)\xC2\xB0([%.,;!?])$", "%1 degrees%2")
+  where("\xC2\xB0", "(%d)\xC2\xB0([%.,;!?]%s)", "%1 degrees%2")
   -- a change typed with its sign and unit ("+20 kts", "-1000 ft"): that many faster/slower, up/down; in degrees
   -- ("+30 deg", "-15 degrees") a turn right/left by that much (a number after it, "-33 deg 151 deg", makes it a
   -- coordinate, left as typed)
@@ -3101,6 +3107,95 @@ function G:state_remarks()
   if not opens then return end
   self:in_reason(1)
   for _, span in ipairs(self.state_spans or {}) do self:set_aside(span[1], span[2]) end
+end
+
+-- "KLM12 was at FL380 heading 140", "KLM12 was flying Mach 0.79 at FL390", "KLM12 was in level flight at FL380",
+-- "KLM12 was on the downwind at 6000 feet, 200 knots": an existing aircraft, "was" or "were", a word of
+-- G.past_state_sets.opens, then only words of G.past_state_sets.words and values (levels [ft or FL], speeds [kt
+-- CAS], Mach, headings [deg]) to a mark or the end, tells the aircraft's state in a report, no instruction ("was
+-- climbing to FL110" has "to": left to the instructions). When the aircraft flies or was given every value
+-- (G.flies) the state is set aside and the instructions beside it are read alone; another value, or a value of
+-- another kind, is asked, never sent.
+G.past_state_sets = {
+  opens = "at in flying cruising level levelled leveled steady established on",
+  words = "at in on level flight flying cruising steady levelled leveled established the a downwind base final leg "
+    .. "heading fl flight altitude feet ft foot knots knot kt kts cas ias mach speed and with of indicated" }
+function G:past_state()
+  if not self:said("was were") then return end
+  local S = G.past_state_sets
+  for _, r in ipairs(self.refs) do
+    local c = r.e
+    if r.kind == "aircraft" and r.exists and self:word(c, "was were") and self:word(c + 1, S.opens) then
+      local e = c + 1
+      while self.t[e] do
+        local t = self.t[e]
+        if t.kind == "number" or (t.kind == "word" and self:word(e, S.words)) then e = e + 1
+        elseif t.text == "," and self.t[e + 1] and (self.t[e + 1].kind == "number"
+            or self:word(e + 1, "fl flight heading mach speed at")) then
+          e = e + 1
+        else break end
+      end
+      local stop = self.t[e]
+      local qs = self:quantities(c + 1, e)
+      if (not stop or stop.kind == "punct") and #qs > 0 and not self:word_in(c + 1, e, "and") then
+        local a, odd = self:state(r.name), nil
+        for _, q in ipairs(qs) do
+          local v = q.kind == "alt" and self:cleared_level(q) or q.value
+          if not G.flies(a, q.kind, v) then odd = odd or q end
+        end
+        if odd then
+          return self:need(string.format("'%s' tells the state of %s in the report, but it flies otherwise here "
+            .. "('%s'). Should I change it? Please say it as an instruction.", self:raw(r.b, e), r.name:upper(),
+            self:raw(odd.b, odd.e)))
+        end
+        -- (told alone, the request has nothing to send: said so)
+        if r.b == self:skip_fillers(1, false) and (not stop or e == #self.t) then
+          return self:need(string.format("'%s' tells the state of %s in the report, which it flies here: nothing "
+            .. "to change. What should it do?", self:raw(r.b, e), r.name:upper()))
+        end
+        self:set_aside(c, e - 1)
+      end
+    end
+  end
+end
+
+-- "what was the separation between KLM12 and AFR34 at that point?", "what's the lateral distance between KLM12 and
+-- AFR34", "how far apart were KLM12 and AFR34?", "closest point of approach between KLM12 and AFR34": a question
+-- about how far apart two existing aircraft are (a word of G.pair_question_sets.about), the two joined by "and"
+-- (after "between", or after "were"/"are"), every other word one of G.pair_question_sets.words, no value: their
+-- positions (POS of each, in the order said); nil when the request is anything else.
+G.pair_question_sets = {
+  about = "separation separated distance spacing apart cpa approach",
+  words = "what what's whats how was were is are the vertical lateral horizontal separation separated distance "
+    .. "spacing closest point of approach cpa minimum between and at that this point moment time then now right far "
+    .. "apart please 's did they get close by show tell me give"
+}
+function G:pair_question()
+  local P = G.pair_question_sets
+  if not self:said(P.about) or #self:quantities(1, #self.t + 1) > 0 then return nil end
+  local pair = {}
+  for _, r in ipairs(self.refs) do
+    if r.kind == "aircraft" then
+      if not r.exists then return nil end
+      pair[#pair + 1] = r
+    elseif r.kind ~= "airline" then
+      return nil
+    end
+  end
+  if #pair ~= 2 or pair[1].name == pair[2].name or not self:word(pair[1].e, "and") or pair[2].b ~= pair[1].e + 1
+      or not self:word(pair[1].b - 1, "between were are") then
+    return nil
+  end
+  local question = self:word(self:skip_fillers(1, false), "what what's whats how show tell give")
+  for k = 1, #self.t do
+    local t = self.t[k]
+    local inside = (k >= pair[1].b and k < pair[1].e) or (k >= pair[2].b and k < pair[2].e)
+    if t.text == "?" then question = true end
+    if not inside and t.kind ~= "punct" and not t.filler and not self:word(k, P.words) then return nil end
+  end
+  if not question then return nil end
+  self:mark_used(1, #self.t + 1)
+  return { "POS " .. pair[1].name:upper(), "POS " .. pair[2].name:upper() }
 end
 
 -- True when the only word of lexicon.aside.state.blocks in tokens b .. e - 1 is the "to" of "about to".
@@ -15123,6 +15218,97 @@ end
 G.future_will_sets = { opens = set_of({ "when", "once", "after", "until", "till" }),
   subjects = set_of({ "it", "he", "she", "they" }),
   verbs = set_of({ "pass", "reach", "cross", "overfly", "be", "get", "descend", "climb", "slow", "leave" }) }
+-- "It is now 14:31:40: ...", "Now, at 14:02:10, ...", "We are at 10:04:20 now; ...", "At this point, 14:31:50, ...",
+-- "This is 14:03, ...": a clock time told as the present moment of a report is no time to run anything at (no
+-- SCHEDULE, no fast-forward): the phrase and the mark after it are dropped (after "at this point" only the time).
+-- Each pattern of G.clock_now_patterns is tried on the lower-cased text (same lengths) and cut from the text.
+G.clock_now_patterns = {}
+do
+  local CLOCK = "%d%d?:%d%d[:%d]*%s*[uU]?[tT]?[cC]?"
+  G.clock_now_patterns = {
+  "%f[%a]the time is now " .. CLOCK .. "%s*[,:;.%-]?%s*",
+  "%f[%a]time is now " .. CLOCK .. "%s*[,:;.%-]?%s*",
+  "%f[%a]it is now " .. CLOCK .. "%s*[,:;.%-]?%s*",
+  "%f[%a]it's now " .. CLOCK .. "%s*[,:;.%-]?%s*",
+  "%f[%a]now,? at " .. CLOCK .. "%s*[,:;%-]%s*",
+  "%f[%a]we are at " .. CLOCK .. " now%s*[,:;.%-]?%s*",
+  "%f[%a]we're at " .. CLOCK .. " now%s*[,:;.%-]?%s*",
+  "%f[%a]this is " .. CLOCK .. "%s*[,:;%-]%s*",
+  "%f[%a]at this point,? ()" .. CLOCK .. "%s*[,:;%-]%s*",
+  }
+end
+-- "Sim time zero is 14:30:00 in the report. Step forward to 14:32:30.", "Start time 07:41:00; fast forward until
+-- 07:43:30", "The reconstruction starts at 14:30:00 UTC as set up. Now let time run 90 seconds.": a clock time said
+-- in a sentence (to ".", ";" or ":") with a word of G.clock_start_sets.starts and no word of
+-- G.clock_start_sets.blocks tells the report's time at the simulation's start, no time to run anything at: that
+-- sentence is dropped when another follows. A run to a later clock time after it ("to", "until" or "till" and
+-- the time, after a word of G.clock_start_sets.runs) is a run for the difference [s] ("for N seconds"); only a
+-- request that runs the simulation after it (a word of G.clock_start_sets.runs) is read so; an
+-- earlier or equal time, or one of a different form (h:mm against h:mm:ss), leaves the text as said.
+G.clock_start_sets = {
+  starts = { "start", "starts", "started", "begins", "began", "zero", "reconstruct", "reconstruction", "from" },
+  runs = { "run", "advance", "forward", "step", "skip", "go", "jump", "ff", "fast-forward" },
+  blocks = { "climb", "descend", "turn", "heading", "speed", "direct", "create", "delete", "level", "fl", "knots",
+    "kt", "ft", "feet", "mach", "hold", "pause", "schedule", "at0", "when", "if" },
+}
+function G.clock_start(text)
+  if not text:find("%d:%d%d") then return text end
+  local S, low = G.clock_start_sets, text:lower()
+  local function has(list, b, e)
+    local part = " " .. low:sub(b, e):gsub("[^%w:%-]", " ") .. " "
+    for _, w in ipairs(list) do
+      if part:find(" " .. w .. " ", 1, true) then return true end
+    end
+    return false
+  end
+  local function secs(t)
+    local h, m, sec = t:match("^(%d%d?):(%d%d):(%d%d)$")
+    if h then return tonumber(h) * 3600 + tonumber(m) * 60 + tonumber(sec), 3 end
+    h, m = t:match("^(%d%d?):(%d%d)$")
+    if h then return tonumber(h) * 3600 + tonumber(m) * 60, 2 end
+    return nil
+  end
+  local tb, te = low:find("%f[%d]%d%d?:%d%d:?%d?%d?%f[%D]")
+  local start, parts = secs(low:sub(tb, te))
+  if not start then return text end
+  -- (the sentence of the start time: from the mark before it to the mark after it)
+  local sb = 1
+  for k = tb - 1, 1, -1 do
+    if low:sub(k, k):match("[%.;]") then sb = k + 1 break end
+  end
+  local se = low:find("[%.;:]%s", te + 1) or low:find("[%.;:]$", te + 1)
+  if not se or se >= #low or not has(S.starts, sb, se) or has(S.blocks, sb, tb - 1) or has(S.blocks, te + 1, se) then
+    return text
+  end
+  local rest, restlow = text:sub(se + 1), low:sub(se + 1)
+  -- (only before a run of the simulation: "start at 10:00:00; climb KLM12 FL300" may time the climb, asked)
+  if not has(S.runs, se + 1, #low) then return text end
+  local rb, re, t2 = restlow:find("%f[%a][%a]+ (%d%d?:%d%d:?%d?%d?)%f[%D]")
+  if rb then
+    local word = restlow:sub(rb, re):match("^(%a+)")
+    local to, n2 = secs(t2)
+    if not (word == "to" or word == "until" or word == "till") or not has(S.runs, 1, rb - 1 + #low - #restlow) then
+      return text
+    end
+    if not to or n2 ~= parts or to <= start then return text end
+    rest = rest:sub(1, rb - 1) .. "for " .. (to - start) .. " seconds" .. rest:sub(re + 1)
+  end
+  return text:sub(1, sb - 1) .. rest:gsub("^%s+", "")
+end
+
+function G.clock_now(text)
+  if not text:find("%d:%d%d") then return text end
+  for _, pat in ipairs(G.clock_now_patterns) do
+    local b, e, keep = text:lower():find(pat)
+    if b then
+      -- (the time is the last of the pattern: "at this point, " stays)
+      if type(keep) == "number" then b = keep end
+      text = text:sub(1, b - 1) .. text:sub(e + 1)
+    end
+  end
+  return text
+end
+
 function G.future_will(text)
   if not text:lower():find("%f[%a]will%f[%A]") then return text end
   local F = G.future_will_sets
@@ -16074,8 +16260,11 @@ function M.translate(text, world)
     end
   end
   if g:not_yet_question() then return { commands = g.out } end
+  local pair = g:pair_question()
+  if pair then return { commands = pair } end
   g:route_remarks()
   g:state_remarks()
+  g:past_state()
   g:break_remarks()
   g:destination_told()
   g:destination_preface()

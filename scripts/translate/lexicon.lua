@@ -2131,7 +2131,7 @@ return {
     -- past tense after a person, is a report, no instruction (`subject`: the word before the verb, "already",
     -- "has", "had", "was", "were" and "just" between them)
     { what = "reports of what was done", words = "cleared gave vectored turned instructed switched disconnected",
-      subject = "student trainee controller instructor he she they i we someone somebody colleague",
+      subject = "student trainee instructor he she they i we someone somebody colleague",
       clause = true },
     -- "expect runway 30 left", "expect ILS approach", "expect lower in 10 miles": information for the
     -- pilot's planning, no clearance (lexicon.not_a_clearance), up to the end of its clause ("expect to resume

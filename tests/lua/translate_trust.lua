@@ -19097,3 +19097,46 @@ do
       "SPD AFR12 250 ; AT AFR12 LGL DO ALT AFR12 FL300")
   end
 end
+
+-- Cycle 61 (f207): a safety investigator's report language
+do
+  local _, ex = scene({ "CRE AFR22 A320 46.56 8.10 140 FL380 270", "CRE KLM77 B738 46.00 8.91 355 FL370 280",
+    "CRE BAW51 A321 45.80 7.35 070 FL390 260" })
+  -- a past-tense state of an aircraft is no instruction: what it flies is set aside, the instruction beside it read
+  check_eq(ex("AFR22 was in level flight at FL380 heading 140; climb it to FL400."), "ALT AFR22 FL400")
+  check_eq(ex("KLM77 was at FL370 heading 355, turn it left heading 300."), "HDG KLM77 300 LEFT")
+  check_eq(ex("AFR22 was at FL380, 270 knots; turn it right heading 180."), "HDG AFR22 180 RIGHT")
+  -- a state it does not fly, or one told alone, is asked (never a silent ALT or SPD)
+  asked(ex("BAW51 was flying Mach 0.79 at FL390."), "a Mach it does not fly")
+  asked(ex("AFR22 was at FL370; climb to FL400"), "a level it does not fly")
+  asked(ex("AFR22 was at FL380."), "a state alone")
+  -- a past-tense clearance is that instruction now, the controller's too
+  check_eq(ex("The controller cleared AFR22 to FL400."), "ALT AFR22 FL400")
+  check_eq(ex("the controller turned BAW51 right heading 120"), "HDG BAW51 120 RIGHT")
+  check(ex("the student cleared AFR22 to FL400"):find("ALT") == nil, "a report of what someone did")
+  -- a clock time told as the present moment is no SCHEDULE
+  check_eq(ex("It is now 10:15:30; AFR22 was cleared to FL400."), "ALT AFR22 FL400")
+  check_eq(ex("Now, at 09:12:05, KLM77 was instructed to climb to FL390."), "ALT KLM77 FL390")
+  check_eq(ex("We are at 11:20:00 now, the controller cleared BAW51 to FL350."), "ALT BAW51 FL350")
+  check_eq(ex("At this point, 14:31:50, AFR22 was turned right heading 200."), "HDG AFR22 200 RIGHT")
+  check_eq(ex("AFR22 climb FL400 at 10:30:00"), "SCHEDULE 10:30:00 ALT AFR22 FL400")
+  -- a turn by degrees typed with the degree sign before a full stop stays a turn by degrees
+  check_eq(ex("AFR22 turned left 30°."), "HDG AFR22 110 LEFT")
+  check_eq(ex("KLM77 turned left by 40°."), "HDG KLM77 315 LEFT")
+  -- how far apart two aircraft are (or were): their positions
+  check_eq(ex("What was the vertical separation between AFR22 and KLM77 at that point?"), "POS AFR22 ; POS KLM77")
+  check_eq(ex("what's the lateral distance between BAW51 and AFR22"), "POS BAW51 ; POS AFR22")
+  check_eq(ex("how far apart were AFR22 and KLM77?"), "POS AFR22 ; POS KLM77")
+  check_eq(ex("what is the vertical separation?"), "ZONEDH")
+  asked(ex("what's the separation between AFR22 and XYZ99?"), "an aircraft not flying")
+  asked(ex("what was the separation between AFR22 and KLM77 at FL380?"), "a value in the question")
+  -- the report's clock at the start, then a run to a later clock time: a run for the difference
+  check_eq(ex("Sim time zero is 10:00:00 in the report. Step forward to 10:01:40."), "FF 100")
+  check_eq(ex("Start time 08:11:00; fast forward until 08:13:00"), "FF 120")
+  check_eq(ex("Reconstruct from 13:58:00; now advance to 14:00:30."), "FF 150")
+  check_eq(ex("The replay starts at 16:00:00 UTC as set up. Now let time run 60 seconds."), "FF 60")
+  -- an earlier time, times of two forms, or no start said stay asked
+  asked(ex("Start time 08:11:00; fast forward until 08:10:00"), "a run back in time")
+  asked(ex("Start time 08:11; fast forward until 08:13:00"), "times of two forms")
+  asked(ex("Run to 16:22:00."), "no start said")
+end
