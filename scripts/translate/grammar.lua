@@ -1927,8 +1927,8 @@ end
 local function typed_abbreviations(text)
   -- (a word typed of letters alone is one of its runs of letters: with none an abbreviation, none is read)
   local typed = false
-  for letters in text:lower():gmatch("%a+") do
-    if ABBREVIATIONS[letters] then
+  for letters in text:lower():gmatch("%a[%a%d]*") do
+    if ABBREVIATIONS[letters] or ABBREVIATIONS[letters:match("^%a+")] then
       typed = true
       break
     end
@@ -1953,7 +1953,8 @@ local function typed_abbreviations(text)
   local changed = false
   for k, w in ipairs(toks) do
     -- (an apostrophe typed for a dropped letter opens the word: "'eading")
-    local letters, punct = w:match("^'?(%a+)(%p*)$")
+    -- (and a slash a network's chat command opens with: "/ctc 124.88")
+    local letters, punct = w:match("^['/]?(%a[%a%d]*)(%p*)$")
     local readings = letters and ABBREVIATIONS[letters:lower()]
     for j = 1, readings and #readings or 0 do
       local a = readings[j]

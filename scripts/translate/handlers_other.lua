@@ -4236,6 +4236,15 @@ return function(H, f, compass)
       if self.t[q].text == "?" and self:word(q - 1, "not") and self:word(q - 2, "or") then self:explain(q - 2, q) end
       return self:emit(spec.cmd)
     end
+    -- ("cd settings?", "asas settings", "cd?": the switch named with no "on" or "off" said, with a noun of its
+    -- settings or as a question, no value and no switching word or request's verb anywhere in it ("could you
+    -- switch detection and resolution on?" switches both; "could you add the turbulence?" is asked for), asks what it is: its state shown, never switched)
+    if self:on_off(s) < 0 and #self:quantities(1, #self.t + 1) == 0
+        and not self:word_in(1, #self.t + 1, "@on @off switch turn could can would will add enable activate start use")
+        and (self:word_in(1, #self.t + 1, "settings setting config configuration options")
+        or self.t[self:first_sentence_end()].text == "?") then
+      return self:emit(spec.cmd)
+    end
     -- "run conflict detection every 2 seconds": the interval of detection (DT ASAS); switched on too
     -- only when said ("turn on detection every 2 seconds")
     if spec.cmd == "ASAS" then

@@ -42,7 +42,7 @@ return {
       -- a game programmer's words for commands ("despawn", "rotate 90 clockwise", "timescale 4"; not "tp",
       -- the letters of callsigns: "Easy 81TP")
       "despawn", "warp", "destroy", "rotate", "yaw", "clockwise", "counterclockwise",
-      "anticlockwise", "hitbox", "timescale", "tick", "banking", },
+      "anticlockwise", "hitbox", "timescale", "tick", "banking", "respawn", },
   -- registry command names that are everyday English words ("a delay", "the line"): said in a
   -- sentence they name no command; any other registry name said ("rmethv") names its command
   english_command_names = { "after", "area", "at", "bank", "before", "box", "call", "circle", "delay", "help",
@@ -164,7 +164,9 @@ return {
         "chicos", "chicas", "muchachos", "alumnos", "estudiantes", "amigos", "pessoal", "galera", "alunos",
         "turma",
         -- a person addressed with respect, as Indian controllers do ("sir where is IFLY 2171 showing")
-        "sir", "madam", "ma'am" },
+        "sir", "madam", "ma'am",
+        -- a friend addressed in chat ("how fast are you going mate", typed "m8")
+        "mate" },
     -- chat shorthand and interjections of typed notes ("what's ryanair doing rn", "lol", "ugh", "thx")
     chat = { "rn", "atm", "asap", "lol", "lmao", "ugh", "argh", "meh", "oops", "tbh", "imo", "btw", "fyi", "plz",
         "thx", "pls", "haha", "idk", "tho", "tbf",
@@ -180,7 +182,10 @@ return {
         "dc'd", "dcd", "dced", "disconnected", "disconnect", "disconnects", "afk", "offline", "logged", "timed",
         "went", "gone", "network", "vatsim", "ivao",
         -- an airspace infringed, given as the reason ("delete N512RK he busted the bravo")
-        "busted", "infringed" },
+        "busted", "infringed",
+        -- the online networks' text-speak: thanks and goodbyes typed short ("ty", "kthx", "kthxbye"), a laugh typed
+        -- as a face ("xD"), and a fault of the client given as the reason ("despawn X its lagging", "its stuck")
+        "ty", "tyvm", "thnx", "thanx", "kthx", "kthxbye", "cya", "xd", "lag", "lagging", "laggy", "stuck" },
     -- radiotelephony courtesy
     radiotelephony = { "good", "day", "morning", "afternoon", "evening", "hello", "hi", "roger", "wilco", "copy",
         "copied", "affirm", "affirmative", "understood", "g'day", "bye",
@@ -721,7 +726,15 @@ return {
     corr = { word = "correction" }, hr = { word = "hour", prev = "#number" }, hrs = { word = "hours", prev = "#number" },
     fnl = { word = "final" }, trls = { word = "trails" }, mv = { word = "move", prev = "#start" },
     vctr = { word = "vectors" }, vect = { word = "vectors" }, vects = { word = "vectors" },
-    ur = { word = "your", prev = "whats what's what is say report" },
+    ur = { { word = "your", prev = "whats what's what is say report" },
+           { word = "your", next = "number speed spd level altitude alt heading hdg", caps_kept = true } },
+    -- the online networks' text-speak (VATSIM, IVAO): "ur" before "number" or a value's noun is "your" ("ur number
+    -- 1", "ur speed"); "r u" is "are you" ("how fast r u going"); "wats" is "what's"; "m8" is "mate"; "cfl", the cleared flight
+    -- level of a network's controller client, before its level ("cfl 11000", "cfl fl150") is the altitude
+    -- cleared; typed in capitals each is an ident and stays as typed
+    r = { word = "are", next = "u", caps_kept = true }, u = { word = "you", prev = "are", caps_kept = true },
+    wats = { word = "what's", caps_kept = true }, m8 = { word = "mate" },
+    cfl = { word = "altitude", next = "#number fl flight", caps_kept = true },
     -- ("bel3qt tgt fl200 vs 1500": the level a climb or descent targets; "tgt ezy503" in a conflict set up)
     tgt = { word = "target" },
     -- ("crecon dlh602 a320 tgt ezy503 dpsi 180 ...": CRECONFS typed short)

@@ -697,6 +697,13 @@ return function(intent, rule, words)
     local nx = g.t[i + 1]
     return nx ~= nil and nx.kind == "word" and nx.text:match("^x%d+$") ~= nil and i + 2 > #g.t
   end }
+  -- "time x8": the same straight after the clock's "time" opening the request, nothing after it, no aircraft
+  -- bearing the multiplier's name ("x8" reads like a callsign)
+  rule { "time", "dtmult", when = function(g, i)
+    local nx = g.t[i + 1]
+    return nx ~= nil and nx.kind == "word" and nx.text:match("^x%d+$") ~= nil and i + 2 > #g.t
+      and g:skip_fillers(1) == i and not (g:refs_in(i + 1, i + 2, "aircraft")[1] or {}).exists
+  end }
   -- "put the simulation at times four", "set the sim to four times": a multiplier ("times" before or after its
   -- number) said of the simulation itself,
   -- no aircraft named and no instruction word before it ("run the simulation at times four" is run's)
@@ -2531,7 +2538,8 @@ return function(intent, rule, words)
     end
     return false
   end }
-  rule { "move mv reposition teleport shift place relocate tp teleported", "move" }
+  -- ("respawn X at FIX": a game's word for putting an object back into the world somewhere)
+  rule { "move mv reposition teleport shift place relocate tp teleported respawn", "move" }
   -- "could the Pascan be moved over Quebec airport", "can it get repositioned to ...": the passive asked for
   rule { "moved repositioned relocated", "move", prev = { 1, "be get" } }
   -- "warp KLM58 to GAME2": an aircraft warped to a place ("time warp" is none)
@@ -2755,11 +2763,12 @@ return function(intent, rule, words)
   end }
   -- "SkyWest 5412, how fast are you going?", "United 837, how high are you right now?": the aircraft addressed
   -- before the question about its own state, "are you" after the adjective, nothing but a verb of going or "now"
-  -- up to the question's end ("how fast can you go" asks what it could do: no state)
+  -- up to the question's end ("how fast can you go" asks what it could do: no state; a friend addressed in chat
+  -- closing it, "how fast r u going m8", is a word of lexicon.accounted.audience)
   rule { "how", "pos", next = "fast high", when = function(g, i)
     if not (g:word(i + 2, "are") and g:word(i + 3, "you") and g:has_ref(1, i, "aircraft")) then return false end
     local k = i + 4
-    while g:word(k, "going flying travelling traveling now right currently") do k = k + 1 end
+    while g:word(k, "going flying travelling traveling now right currently mate") do k = k + 1 end
     return g.t[k] == nil or (g.t[k].kind == "punct" and g.t[k].text ~= ",")
   end }
   -- "what's happening with United 837?", "what is going on with the SkyWest": the aircraft's state asked

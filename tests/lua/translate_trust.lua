@@ -19140,3 +19140,45 @@ do
   asked(ex("Start time 08:11; fast forward until 08:13:00"), "times of two forms")
   asked(ex("Run to 16:22:00."), "no start said")
 end
+
+-- Cycle 61 (f206)
+do
+  local _, ex = scene({ "CRE SAS931 A320 55.6 12.6 090 FL180 280", "CRE DLH402 A321 53.5 10.0 200 FL240 290",
+    "CRE ACA88 B77W 50.0 8.0 300 FL330 300" })
+  -- the online networks' text-speak: thanks and goodbyes typed short close an instruction and carry none
+  check_eq(ex("sas931 clb fl200 ty"), "ALT SAS931 FL200")
+  check_eq(ex("dlh402 hdg 180 pls kthx"), "HDG DLH402 180")
+  check_eq(ex("aca88 spd 280 tyvm"), "SPD ACA88 280")
+  check_eq(ex("dlh402 desc fl200 spd 250 kthxbye"), "ALT DLH402 FL200 ; SPD DLH402 250")
+  check_eq(ex("m8 sas931 desc fl150 thx"), "ALT SAS931 FL150")
+  check_eq(ex("sas931 desc fl150 xD"), "ALT SAS931 FL150")
+  -- a client's fault given as the reason for removing an aircraft
+  check_eq(ex("despawn aca88 its laggy"), "DEL ACA88")
+  check_eq(ex("pls despawn dlh402, stuck again lol"), "DEL DLH402")
+  -- "cfl", the cleared flight level of a network's controller client, before its level
+  check_eq(ex("aca88 cfl fl310"), "ALT ACA88 FL310")
+  check_eq(ex("dlh402 cfl 9000 / spd 240"), "ALT DLH402 9000 ; SPD DLH402 240")
+  asked(ex("dlh402 cfl"), "no level after cfl")
+  -- "r u", "ur", "wats", "m8" in a question of an aircraft's state, or beside an instruction
+  check_eq(ex("sas931 how high r u m8"), "POS SAS931")
+  check_eq(ex("wats aca88 doing"), "POS ACA88")
+  check_eq(ex("dlh402 ur number 2, spd 220"), "SPD DLH402 220")
+  -- "/ctc FREQ", a network's chat command for a frequency change, is not simulated; the instruction before stands
+  check_eq(ex("sas931 desc fl120 /ctc 128.35"), "ALT SAS931 FL120")
+  -- "jk" (just kidding) is asked, never read past: it may take back what came before
+  asked(ex("sas931 desc fl120 jk"), "a joke taking back the descent")
+  -- a negation in a joking aside is still a negation: asked
+  asked(ex("sas931 desc fl120 and dont forget the coffee"), "don't")
+  -- a game's words: "time x8" the clock's rate, "respawn" a move, "tp to" a move
+  check_eq(ex("time x8"), "DTMULT 8")
+  asked(ex("time x8 sas931 clb fl200"), "x8 beside an aircraft")
+  check_eq(ex("respawn aca88 at 50.5 8.5"), "MOVE ACA88 50.5 8.5")
+  check_eq(ex("dlh402 tp to 53.0 9.5"), "MOVE DLH402 53 9.5")
+  -- "cd settings?", "asas settings", "cd?": conflict detection's state shown, never switched on
+  check_eq(ex("cd settings?"), "ASAS")
+  check_eq(ex("conflict detection settings pls"), "ASAS")
+  check_eq(ex("cd?"), "ASAS")
+  check_eq(ex("noise settings"), "NOISE")
+  check_eq(ex("turn on cd"), "ASAS ON")
+  check_eq(ex("enable conflict detection please"), "ASAS ON")
+end
