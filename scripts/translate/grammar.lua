@@ -9990,6 +9990,7 @@ end
 -- to hannover NIE"), and so does another navaid's own name beside a navaid or fix, however near ("direct WGM,
 -- Sollenau": SNU).
 local CITY_NM = 40  -- a place said "near" a city lies this near one of its airports [NM]
+G.same_site_nm = 12  -- navaids this near one another stand at one town and may share its name [NM]
 function G:name_beside_code(r, inside, code)
   code = code or r.name:upper()
   local lat, lon
@@ -10004,9 +10005,12 @@ function G:name_beside_code(r, inside, code)
     local name = self:plain_name(b, e, true)
     local function any() return true end
     -- (the name of another navaid said beside a navaid's or fix's ident, "direct WGM, Sollenau" with SNU called
-    -- SOLLENAU, names that place: unexplained; beside an airport's code, of four letters, a city may share it)
-    local navaids = name and #code ~= 4 and self.world.navaids_named and self.world.navaids_named(name, 0, 0, 1e5) or {}
-    if #navaids > 0 then return false end
+    -- SOLLENAU 28 NM away, names that place: unexplained; one within G.same_site_nm of it stands at the same town,
+    -- "QPR, Quimper" beside the Quimper NDB, and beside an airport's code, of four letters, a city may share it)
+    local named = name and #code ~= 4 and self.world.navaids_named
+    if named and #named(name, 0, 0, 1e5) > 0 and not (lat and #named(name, lat, lon, G.same_site_nm) > 0) then
+      return false
+    end
     return name ~= nil and (not self:any_place_named(name, any, nil, nil, nil, true)
       or lat ~= nil and self:any_place_named(name, any, lat, lon, CITY_NM))
   end

@@ -19127,7 +19127,8 @@ do
   check_eq(ex("KLM12 speed 460 km/h"), "SPD KLM12 248")
 end
 do
-  local _, ex = navscene({ "CRE AUA12 A320 48.1 16.4 90 FL150 280" }, "a navaid's name after another's ident")
+  local _, ex = navscene({ "CRE AUA12 A320 48.1 16.4 90 FL150 280", "CRE AFR9 A320 48.2 -4.5 90 FL150 280" },
+    "a navaid's name after another's ident")
   if ex then
     -- another navaid's name after the ident is asked; the ident's own name is read
     asked(ex("AUA12 direct WGM, Sollenau"), "SOLLENAU is SNU")
@@ -19135,5 +19136,7 @@ do
     asked(ex("AUA12 direct SNU, Wagram"), "the other way round")
     check_eq(ex("AUA12 direct WGM, Wagram"), "ADDWPT AUA12 WGM ; DIRECT AUA12 WGM")
     check_eq(ex("AUA12 direct SNU, Sollenau"), "ADDWPT AUA12 SNU ; DIRECT AUA12 SNU")
+    -- (a navaid of the town's name beside the ident, the Quimper NDB 7 NM from QPR, is the town's: read)
+    check_eq(ex("AFR9 proceed direct to QPR, Quimper"), "ADDWPT AFR9 QPR ; DIRECT AFR9 QPR")
   end
 end
