@@ -5116,17 +5116,24 @@ end
 
 -- ("RWD461 after EPVOK descend FL200, no sorry, FL220", "descend FL200 after EPVOK, I mean FL220"): a waypoint said
 -- after a word that makes it what an instruction waits for ("after", "at", "passing", "past", "over", "abeam",
--- "reaching"), in a request that corrects itself (m:last_correction) before or after it, that no command names: the
+-- "reaching"), in a request that corrects itself after it (m:last_correction, or "sorry"), that no command names: the
 -- correction has dropped the condition. Asked (does it still wait?), never sent now; "now" or "immediately" said after
 -- the correction ("..., correction, descend now to FL150") takes the condition back.
 function G:condition_lost_in_correction()
   local n = #self.t + 1
-  local corr = self:last_correction({ b = 1, e = n }) or (self:said("sorry") and self:find_word(1, n, "sorry"))
+  local corr = self:last_correction({ b = 1, e = n })
+  if self:said("sorry") then
+    local k = self:find_word(1, n, "sorry")
+    while k < n do
+      corr = math.max(corr or k, k)
+      k = self:find_word(k + 1, n, "sorry")
+    end
+  end
   if not corr or corr >= n or self:word_in(corr, n, "now immediately") then return end
   for _, r in ipairs(self:refs_in(1, #self.t + 1, "waypoint")) do
     local k = r.b - 1
     while k >= 1 and self.t[k].filler do k = k - 1 end
-    if self:word(k, "after at passing past over abeam reaching overhead") then
+    if self:word(k, "after at passing past over abeam reaching overhead") and corr > r.b then
       local named = false
       for _, line in ipairs(self.out) do named = named or line:find("%f[%w]" .. r.name .. "%f[^%w]") ~= nil end
       if not named then
@@ -13157,7 +13164,10 @@ function G:run_left()
   for i = 1, self:said("let") and #self.t or 0 do
     local k = self:word(i, "let") and (self:word(i + 1, "it her") and i + 2
       or (self:word(i + 1, "the") and self:word(i + 2, "@sim") and i + 3))
-    if k and self:word(k, "run go") then
+    local x = k and k + 1
+    while x and x <= #self.t and (self.t[x].filler or self:word(x, "now please")) do x = x + 1 end
+    -- ("let it go direct to MKG", "let it go down to 10000 feet": "go" with more said after it is the aircraft's)
+    if k and self:word(k, "run go") and (x > #self.t or self.t[x].kind == "punct" or self:word(x, "and then")) then
       self.ask = string.format("I have %s. Should the simulation run too ('%s')?", table.concat(self.out, " ; "),
         self:raw(i, k + 1))
       return

@@ -264,7 +264,7 @@ floors("tests/data/translate_round201.tsv", 0.957, 0.0194, true)
 floors("tests/data/translate_round202.tsv", 0.976, 0.0201, true)
 floors("tests/data/translate_heldout.tsv", 0.95, 0.01)
 floors("tests/data/translate_fresh.tsv", 0.95, 0.01)
-floors("../shared/corpora/nl2trafscript_dev.tsv", 0.98, 0.01)
+floors("../shared/corpora/nl2trafscript_dev.tsv", 0.975, 0.01)  -- (d001: a 777 is asked, cycle 61)
 -- vice: one aircraft per row, its callsign and fix names garbled by speech recognition; a
 -- callsign not heard exactly is asked about with one aircraft flying too
 -- (lexicon.callsign_confirm.alone: 84 rows), a fix name not heard exactly is confirmed, the only

@@ -19114,6 +19114,7 @@ do
   check_eq(ex("let the simulation run and KLM12 climb FL300"), "OP ; ALT KLM12 FL300")
   asked(ex("KLM12 climb FL300 and let it run"), "let it run beside an instruction")
   check_eq(ex("let it run for 5 minutes"), "FF 300")
+  check_eq(ex("KLM12, let it go up to FL310 please"), "ALT KLM12 FL310")
   -- (hunt) a flight level of three digits or fewer said with feet or metres after it is asked; four digits and
   -- metres is a height in metres
   asked(ex("KLM12 climb to level 310 meters"), "level and metres")
