@@ -5198,6 +5198,49 @@ function G:added_after_route_end()
   end
 end
 
+-- True when the last correction of segment s (m:last_correction) has a value straight after it, fillers and marks
+-- between ("after EPVOK descend FL200, no sorry, FL220"): the value alone is said again, and what the instruction waits
+-- for stands; a verb said again after it ("..., correction, descend now to FL150") may take the condition back too.
+function G.value_corrected(self, s)
+  local corr = self:last_correction(s)
+  if not corr then return false end
+  local k = corr + 1
+  while self.t[k] and (self.t[k].kind == "punct" or self.t[k].filler) do k = k + 1 end
+  local q = self:quantities(k, s.e)[1]
+  return q ~= nil and q.b == k
+end
+
+-- ("RWD461 after EPVOK descend FL200, no sorry, FL220", "descend FL200 after EPVOK, I mean FL220"): a waypoint said
+-- after a word that makes it what an instruction waits for ("after", "at", "passing", "past", "over", "abeam",
+-- "reaching"), in a request that corrects itself after it (m:last_correction, or "sorry"), that no command names: the
+-- correction has dropped the condition. Asked (does it still wait?), never sent now; "now" or "immediately" said after
+-- the correction ("..., correction, descend now to FL150") takes the condition back.
+function G:condition_lost_in_correction()
+  local n = #self.t + 1
+  local corr = self:last_correction({ b = 1, e = n })
+  if self:said("sorry") then
+    local k = self:find_word(1, n, "sorry")
+    while k < n do
+      corr = math.max(corr or k, k)
+      k = self:find_word(k + 1, n, "sorry")
+    end
+  end
+  if not corr or corr >= n or self:word_in(corr, n, "now immediately") then return end
+  for _, r in ipairs(self:refs_in(1, #self.t + 1, "waypoint")) do
+    local k = r.b - 1
+    while k >= 1 and self.t[k].filler do k = k - 1 end
+    if self:word(k, "after at passing past over abeam reaching overhead") and corr > r.b then
+      local named = false
+      for _, line in ipairs(self.out) do named = named or line:find("%f[%w]" .. r.name .. "%f[^%w]") ~= nil end
+      if not named then
+        self.ask = string.format("I have %s, but the correction leaves out '%s'. Should it still wait until %s, or "
+          .. "run now?", table.concat(self.out, " ; "), self:raw(k, r.e), r.name)
+        return
+      end
+    end
+  end
+end
+
 -- The commands that wait for a condition before they run (BlueSky's conditional commands).
 local CONDITIONAL = { AT = true, ATALT = true, ATSPD = true, ATDIST = true, DELAY = true, SCHEDULE = true }
 
@@ -8325,7 +8368,8 @@ function G:at_waypoint(s, spec)
         or (opened and (self:word(first, "leave leaving") or passed_first or then_at)))
       and not (self:word(first, "passing leaving") and self.t[s.trig].text:match("ing$")
         and not self:word(s.trig, "@instruction_nouns"))
-      and not self:word_in(s.b, s.e, "cross crossing crosses now immediately @correction")
+      and not self:word_in(s.b, s.e, "cross crossing crosses now immediately")
+      and not (self:word_in(s.b, s.e, "@correction") and not G.value_corrected(self, s))
     -- ("over WHISK hdg 010", "after FERDI 250kt": a heading is no constraint a waypoint carries, and once past
     -- the waypoint no speed can be met there: said with no verb after the opening waypoint, the instruction there;
     -- a level with no verb stays the constraint, "after FERDI FL290" asked)
@@ -10073,8 +10117,10 @@ end
 -- farther than CITY_NM from r ("Heraklion, LGIR": a name it does not know; "Berlin, EDDB": the city's other airport
 -- lies near; a word of a far field's name is no other place). A name it gives only to places elsewhere (a navaid's
 -- name, an airport's name or city) stays unexplained (asked: "direct to Tucson, GBN", "direct
--- to hannover NIE").
+-- to hannover NIE"), and so does another navaid's own name beside a navaid or fix, however near ("direct WGM,
+-- Sollenau": SNU).
 local CITY_NM = 40  -- a place said "near" a city lies this near one of its airports [NM]
+G.same_site_nm = 12  -- navaids this near one another stand at one town and may share its name [NM]
 function G:name_beside_code(r, inside, code)
   code = code or r.name:upper()
   local lat, lon
@@ -10088,6 +10134,13 @@ function G:name_beside_code(r, inside, code)
     end
     local name = self:plain_name(b, e, true)
     local function any() return true end
+    -- (the name of another navaid said beside a navaid's or fix's ident, "direct WGM, Sollenau" with SNU called
+    -- SOLLENAU 28 NM away, names that place: unexplained; one within G.same_site_nm of it stands at the same town,
+    -- "QPR, Quimper" beside the Quimper NDB, and beside an airport's code, of four letters, a city may share it)
+    local named = name and #code ~= 4 and self.world.navaids_named
+    if named and #named(name, 0, 0, 1e5) > 0 and not (lat and #named(name, lat, lon, G.same_site_nm) > 0) then
+      return false
+    end
     return name ~= nil and (not self:any_place_named(name, any, nil, nil, nil, true)
       or lat ~= nil and self:any_place_named(name, any, lat, lon, CITY_NM))
   end
@@ -13227,6 +13280,76 @@ G.traffic_condition_words = "traffic conflict conflicts conflicting separation s
   .. "closer intruder alert alerts collision proximity crossing converging"
 -- the words opening a condition on the traffic that no command waits for, asked with the clause they open
 G.condition_openers = { ["if"] = true, unless = true, provided = true, providing = true }
+-- ("if 721 reaches FL270 then heading 060", "unless KLM12 is at FL270, heading 060", "provided KLM12 is at FL270
+-- then ..."): a word of G.condition_openers straight before an aircraft's callsign, its clause (to the next mark or
+-- "then") holding a value or a place, no modal after the callsign ("if KLM12 could climb" is a wish), no wish framed
+-- before "if" (G:wish_frame: "it's better if THY7 turns ...") and no
+-- "able", "possible" or "ready" in it ("if KLM12 is able, climb ..."), is a
+-- condition on that aircraft's state. Asked when no command waits for it (one that begins AT..., ATALT, ATSPD,
+-- ATDIST), and always after "unless", "provided", "providing" (never read as waiting): never sent at once.
+function G:condition_dropped()
+  for _, r in ipairs(self.refs) do
+    local i = r.kind == "aircraft" and r.b - 1
+    local opener = i and i >= 1 and self.t[i].kind == "word" and G.condition_openers[self.t[i].text] and self.t[i].text
+    if opener and not (self.t[r.e] and MODALS[self.t[r.e].text]) and not (opener == "if" and self:wish_frame(i)) then
+      local e = r.e
+      while self.t[e] and not (self.t[e].kind == "punct" and self.t[e].text ~= "'") and not self:word(e, "then") do
+        e = e + 1
+      end
+      local q = self:quantities(r.e, e)[1]
+      local w = self:refs_in(r.e, e, "waypoint")[1]
+      if (q or w) and not self:word_in(r.e, e, "able unable possible ready") then
+        e = math.min(q and q.e or e, w and w.e or e)
+        local waits = opener == "if"
+        for _, line in ipairs(self.out) do waits = waits and line:match("^AT") ~= nil end
+        if not waits then
+          self.ask = string.format("I have %s, but not the condition '%s'. Should it wait for it, or run now?",
+            table.concat(self.out, " ; "), self:raw(i, e))
+          return
+        end
+      end
+    end
+  end
+end
+-- ("KLM12 climb FL300 and let it run", "..., let her go"): "let" and "it", "her" or "the sim(ulation)", then "run" or
+-- "go", said beside commands none of which runs the clock (OP, FF, DTMULT: "let it run for 5 minutes"): whether the clock starts (or the aircraft goes on) is asked, the
+-- words never dropped.
+function G:run_left()
+  for _, line in ipairs(self.out) do
+    if line:match("^OP") or line:match("^FF") or line:match("^DTMULT") then return end
+  end
+  for i = 1, self:said("let") and #self.t or 0 do
+    local k = self:word(i, "let") and (self:word(i + 1, "it her") and i + 2
+      or (self:word(i + 1, "the") and self:word(i + 2, "@sim") and i + 3))
+    local x = k and k + 1
+    while x and x <= #self.t and (self.t[x].filler or self:word(x, "now please")) do x = x + 1 end
+    -- ("let it go direct to MKG", "let it go down to 10000 feet": "go" with more said after it is the aircraft's)
+    if k and self:word(k, "run go") and (x > #self.t or self.t[x].kind == "punct" or self:word(x, "and then")) then
+      self.ask = string.format("I have %s. Should the simulation run too ('%s')?", table.concat(self.out, " ; "),
+        self:raw(i, k + 1))
+      return
+    end
+  end
+end
+-- ("climb to level 300 meters", "descend flight level 200 feet", "FL200 ft"): a flight level of one to three digits
+-- said with a unit of height straight after it (feet or metres) is a level in hundreds of feet and a height in that
+-- unit at once: which is meant is asked, never the unit dropped. `lower`: the request in lower case. A level of four
+-- digits or more with metres ("level 9800 meters") is a height in metres, read.
+G.level_unit_words = { feet = "feet", foot = "feet", ft = "feet", meters = "metres", metres = "metres",
+  meter = "metres", metre = "metres", m = "metres" }
+function G:level_with_unit(lower)
+  if not (lower:find("level", 1, true) or lower:find("fl", 1, true)) then return end
+  for _, lead in ipairs({ "%f[%a]fl%s*", "%f[%a]level%s+" }) do
+    for said, n, unit, nx in lower:gmatch("(" .. lead .. "(%d+))%s*(%a+)()") do
+      local kind = G.level_unit_words[unit]
+      if kind and #n <= 3 and not (unit == "m" and lower:sub(nx, nx):match("[%.%d]")) then
+        self.ask = string.format("I have %s, but '%s %s' is a flight level and a height in %s at once. Which do "
+          .. "you mean: FL%03d, or %s %s?", table.concat(self.out, " ; "), said, unit, kind, tonumber(n), n, kind)
+        return
+      end
+    end
+  end
+end
 -- The phrases opening a condition (one word or several, lower case) that no command waits for when a word of the
 -- traffic (G.traffic_condition_words) follows in its clause: "provided there is no conflict", "as long as BAW5 is
 -- clear", "assuming no traffic", "given that the conflict is solved", "so long as", "on condition that".
@@ -16222,6 +16345,7 @@ function M.translate(text, world)
     fleet = world.aircraft, out = {}, qcache = {}, taken = {}, noted = {}, cut_back = {}, triggers = {}, apart = apart,
     text_said = said }, G)
   g:settle_callsigns()
+  if os.getenv("FHZ") then print("TEXT", text) for _, r in ipairs(g.refs) do print("REF", r.kind, r.name, r.b, r.e, r.heard and r.heard.id, r.exists, r.spoken) end end
   local same = g:same_for()
   g:airline_types()
   g:airline_refs()
@@ -16394,6 +16518,10 @@ function M.translate(text, world)
   if not g.ask then g:resume_after_instruction() end
   if not g.ask then g:op_after_ff() end
   if not g.ask then g:shown_after_instruction() end
+  if not g.ask and #g.out > 0 then g:condition_dropped() end
+  if not g.ask and #g.out > 0 then g:condition_lost_in_correction() end
+  if not g.ask and #g.out > 0 then g:run_left() end
+  if not g.ask and #g.out > 0 then g:level_with_unit(lower) end
   -- "... actually no, just the descent" (G:self_corrected): only the commands of that kind stand
   if not g.ask and g.kept then
     local kept = {}

@@ -3242,6 +3242,15 @@ end
 local QUESTION_WORDS = { where = true, wheres = true, ["where's"] = true, is = true, what = true, whats = true,
                          ["what's"] = true, show = true, me = true, tell = true }
 function m:settle_callsigns()
+  -- ("if 721 reaches FL270 then heading 060", "unless 721 is at FL270 ..."): a word that opens a condition
+  -- (G.condition_openers) that the matcher took into an aircraft's callsign before its digits is no part of it: left
+  -- out of the reference, it stays a word of the request (asked, never dropped)
+  for _, r in ipairs(self.refs) do
+    local t = r.kind == "aircraft" and r.e - r.b > 1 and self.t[r.b]
+    if t and t.kind == "word" and self.condition_openers[t.text] and self.t[r.b + 1].raw:match("^%d") then
+      r.b = r.b + 1
+    end
+  end
   -- ("AirAsia 5517" with AXM88 and AWQ5517 flying, "Batik 112" with BTK100 and MXD112): a callsign heard with a
   -- brand's name that the matcher took for another aircraft of the name's own airline is the one aircraft of the
   -- brand flying with every character heard (m:airline_and_digits_match), when there is exactly one

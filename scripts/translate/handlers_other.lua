@@ -65,12 +65,17 @@ return function(H, f, compass)
 
   -- Asks which variant of a family flown in several common variants (lexicon.variant_families: "737") is
   -- meant, naming the designators of the family.
+  -- (an Airbus family's digits begin with 3, "A330": A332, A333, A339; a Boeing's with 7. A family the type data
+  -- holds one designator of is that one, no question: nil, then the designator)
   local function ask_variant(self, fam)
     local variants = {}
+    local maker = fam:sub(1, 1) == "3" and "A" or "B"
     for _, d in ipairs(require("translate.names").designators) do
-      if d:match("^B" .. fam:sub(1, 2) .. "%w$") then variants[#variants + 1] = d end
+      if d:match("^" .. maker .. fam:sub(1, 2) .. "%w$") then variants[#variants + 1] = d end
     end
-    return self:need(string.format("Which variant of the %s is meant: %s?", fam, table.concat(variants, ", ")))
+    if #variants == 1 then return nil, variants[1] end
+    return self:need(string.format("Which variant of the %s is meant: %s?", maker == "A" and "A" .. fam or fam,
+      table.concat(variants, ", ")))
   end
 
   function m:create(s)
@@ -362,10 +367,17 @@ return function(H, f, compass)
         actype:upper()))
     end
     -- ("a Boeing 767", "a United 787"): a family flown in several common variants, said by its
-    -- name alone, names no one variant (lexicon.variant_families); a variant said or written is that one
+    -- name alone, names no one variant (lexicon.variant_families); a variant said or written is that one (an Airbus
+    -- family's digits only after "A" or "Airbus": "Saab 340" is no A340)
     local said = #written == 0 and types[1] and self:raw(types[1].b, types[1].e):lower():gsub("[%s%-]", "")
     for _, fam in ipairs(said and L.variant_families or {}) do
-      if said:sub(-#fam) == fam and not said:sub(1, -#fam - 1):match("%d$") then return ask_variant(self, fam) end
+      local pre = said:sub(1, -#fam - 1)
+      if said:sub(-#fam) == fam and not pre:match("%d$")
+          and (fam:sub(1, 1) ~= "3" or pre == "" or pre:match("a$") or pre:match("airbus$")) then
+        local _, one = ask_variant(self, fam)
+        if not one then return end
+        actype = one
+      end
     end
     -- ("B738... sorry, A320": a type said again after a correction replaces the one before it)
     for k = 2, #types do
@@ -3434,7 +3446,7 @@ return function(H, f, compass)
       local t = self.t[k]
       if #types == 0 and t.kind == "number" and not self.u:used(k) then
         for _, fam in ipairs(L.variant_families) do
-          if t.text == fam then return ask_variant(self, fam) end
+          if t.text == fam and not select(2, ask_variant(self, fam)) then return end
         end
       end
       if t.kind == "word" and t.raw:find("%d") and not self.u:used(k) and not self:has_ref(k, k + 1, "type")

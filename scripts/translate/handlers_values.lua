@@ -915,13 +915,14 @@ return function(H, f, wrap, compass)
         spd = f.int(r)
         -- A direction said with the value, no "to" before it ("reduce 40 knots" flying 280 kt is 240 kt; "reduce
         -- 40", "increase speed 40" asked): m:speed_change_read.
-        -- An aircraft flying 200 kt or more is given no speed under 100 kt ("reduce to 40 knots"): asked.
+        -- An aircraft flying 200 kt or more is given no speed under 100 kt ("reduce to 40 knots", "speed 180 km/h",
+        -- 97 kt, the unit said in place of knots?): asked.
         local change, both = self:speed_change_read(s, id, q, r, dir, converted)
         local heard = self:raw(math.max(s.trig or q.b, q.b - 2), q.e)
         if both then
           return self:need(string.format("%s flies %s kt: should it fly %s kt, or %s kt %s? I heard '%s'.", id,
             f.int(a.cas_kt), f.int(r), f.int(q.value), dir < 0 and "slower" or "faster", heard))
-        elseif change == false or (change == nil and a and (a.cas_kt or 0) >= 200 and r < 100 and not converted) then
+        elseif change == false or (change == nil and a and (a.cas_kt or 0) >= 200 and r < 100) then
           return self:need(string.format("What speed should %s fly? It flies %s kt, and I heard '%s'.", id,
             f.int(a.cas_kt), heard))
         elseif change then

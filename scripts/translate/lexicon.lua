@@ -1400,7 +1400,8 @@ return {
   -- B737 to some writers, B738 to others, with or without an airline): asked about when an aircraft is
   -- created; any other family is its first variant (757 -> B752, 777 -> B772, A330 -> A332, A350 -> A359,
   -- types.lua), as the writers of every round so far read them
-  variant_families = { "737", "767", "787" },
+  -- (a family's digits: a Boeing's 7x7, an Airbus's 3x0; each names several designators that fly differently)
+  variant_families = { "737", "767", "777", "787", "330" },
   all = { "all", "both", "every", "everything" },
   -- direction of a change: +1 words and -1 words
   up = { "climb", "clb", "up", "raise", "increase", "faster", "above", "higher", "accelerate", "climbing",
@@ -1887,6 +1888,9 @@ return {
   typed_speed = { min_kt = 100, max_kt = 400, fast_kt = 200 },
   -- a vertical speed [ft/min] typed below this as VS's ("vs 15") may have lost its zeros: asked
   min_typed_fpm = 100,
+  -- a level typed as ALT's, a bare number under min_ft [ft] (nodes.lua M.typed_level_question), is asked, offering
+  -- the flight level it may be typed short for when that lies within max_fl [FL]
+  typed_level = { min_ft = 1000, max_fl = 600 },
   -- a level or heading said digit by digit and run on into a speed before its unit with no break ("flight level
   -- eight zero two four zero knots"; grammar.lua G.run_on_values): the words naming the value, and what each part
   -- can be: a flight level of two or three digits within `level` [FL], a heading of three digits within `heading`

@@ -595,6 +595,26 @@ function M.typed_speed_question(c, name, copy)
     guess and ("Did you mean Mach ." .. guess .. ", or another speed?") or "What speed should it fly?")
 end
 
+-- The question when a level typed as ALT's (line c, its registry name `name`) is a bare number of feet below
+-- lexicon.typed_level.min_ft ("klm12 alt 350": 350 ft, or FL350 typed short?); else nil. A value with "FL", a
+-- decimal point or a unit, or of lexicon.typed_level.min_ft or more ("ALT KLM12 3500"), stays as typed; 0 too.
+-- The flight level is offered when it lies within lexicon.typed_level.max_fl. `copy`: the scratch simulation.
+function M.typed_level_question(c, name, copy)
+  if name ~= "ALT" then return nil end
+  local w = {}
+  for x in c:gmatch("[^%s,]+") do w[#w + 1] = x end
+  local v = w[3] and w[3]:match("^%d+$") and tonumber(w[3])
+  local T = lexicon.typed_level
+  if not v or v < 1 or v >= T.min_ft or (w[4] and not w[4]:match("^[%+%-]?%d+$")) then return nil end
+  local a = copy():get(w[2])
+  if not a then return nil end
+  local id = w[2]:upper()
+  local offer = v <= T.max_fl and string.format("Did you mean FL%03d, or %d ft?", v, v)
+    or "What level should it fly?"
+  return string.format("%s is at %d ft, and I read %d ft, below any level an aircraft is cleared to. %s", id,
+    math.floor((a.alt_ft or 0) + 0.5), v, offer)
+end
+
 function M.typed(state, ctx)
   local cmds = M.split_commands(state.request)
   if #cmds == 0 then return "english" end
@@ -745,6 +765,13 @@ function M.typed(state, ctx)
     if english then return "english" end
     if far then
       state.ask = far
+      M.say(state, "typed", "asks: " .. state.ask)
+      return "ask"
+    end
+    -- a level typed as a bare number of feet too low to be meant ("klm12 alt 350"): asked, offering the flight level
+    local low = M.typed_level_question(c, name, copy)
+    if low then
+      state.ask = low
       M.say(state, "typed", "asks: " .. state.ask)
       return "ask"
     end

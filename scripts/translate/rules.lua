@@ -2888,11 +2888,23 @@ return function(intent, rule, words)
       and (g:alone_but(i - 2, i + 1) or g:clause_alone(i - 2, i + 1))
   end }
   -- "let it go", "let it run", "let the sim run": the clock started, said alone or as a clause of its own ("let
-  -- the simulation run further", "let it run on": "further", "farther", "on" after "run" say it goes on)
+  -- the simulation run further", "let it run on": "further", "farther", "on" after "run" say it goes on); "run" (of
+  -- the simulation, "the sim", never "it") also joined by "and"/"then" after another instruction, ending the request
+  -- ("KLM12 climb FL300 and then let the simulation run"), or opening it before "and"/"then" and more ("let the
+  -- simulation run and KLM12 climb FL300"), or before a comma and an aircraft ("let the sim run, KLM12 climb ...")
   rule { "go run", "op", when = function(g, i)
     local b = g:word(i - 1, "it") and i - 1 or (g:word(i - 1, "@sim") and g:word(i - 2, "the") and i - 2 or nil)
     local e = g:word(i, "run") and g:word(i + 1, "further farther on") and i + 2 or i + 1
-    return b ~= nil and g:word(b - 1, "let") and (g:alone_but(b - 1, e) or g:clause_alone(b - 1, e))
+    if not (b ~= nil and g:word(b - 1, "let")) then return false end
+    if g:alone_but(b - 1, e) or g:clause_alone(b - 1, e) then return true end
+    if not (g:word(i, "run") and b < i - 1) then return false end
+    local k = e
+    while k <= #g.t and (g.t[k].kind == "punct" or g.t[k].filler or g:word(k, "now please")) do k = k + 1 end
+    local j = b - 2
+    while j >= 1 and g.t[j].filler and not g:word(j, "and then") do j = j - 1 end
+    return (k > #g.t and g:word(j, "and then"))
+      or (g:skip_fillers(1) == b - 1 and e + 1 <= #g.t and (g:word(e, "and then")
+        or (g.t[e] and g.t[e].text == "," and g:has_ref(g:skip_fillers(e + 1), g:skip_fillers(e + 1) + 1, "aircraft"))))
   end }
   -- "ok, let's go", "righto let's go" (the lexer reads "let's" as "let", "righto" as "right"): the run started, said
   -- alone or as a clause of its own, an acknowledgement before it ("let's go with heading 270" is no clause of its
