@@ -1399,9 +1399,10 @@ return {
   -- ("a Boeing 767": B762 in the data, B763 meant; "a United 787": B788 or B789; "a 737", "a Southwest 737":
   -- B737 to some writers, B738 to others, with or without an airline): asked about when an aircraft is
   -- created; any other family is its first variant (757 -> B752, 777 -> B772, A330 -> A332, A350 -> A359,
-  -- types.lua), as the writers of every round so far read them
-  -- (a family's digits: a Boeing's 7x7, an Airbus's 3x0; each names several designators that fly differently)
-  variant_families = { "737", "767", "777", "787", "330" },
+  -- types.lua), as the writers of every round so far and BlueSky's own corpus read them (nl2trafscript_dev
+  -- d001: "a Boeing 777" is B772); a Boeing family is its 7x7 digits, an Airbus one its 3x0 ("330", read only
+  -- after "A" or "Airbus")
+  variant_families = { "737", "767", "787" },
   all = { "all", "both", "every", "everything" },
   -- direction of a change: +1 words and -1 words
   up = { "climb", "clb", "up", "raise", "increase", "faster", "above", "higher", "accelerate", "climbing",
