@@ -1764,7 +1764,8 @@ end
 -- A clock multiplier typed alone as a clause ("seed 99 then 30 random a320 then x4", "hold, 4x", "x4 and op"), or
 -- before the word "speed" or "rate" ending its clause ("x4 speed"): the simulation's rate, written out as "sim speed
 -- x4" (a callsign-like "x4" or a bare "4x" names no aircraft, unless an aircraft of that id flies: `world`, when
--- given, holds the traffic). After "fast time" ("set fast time x3", "fast-time at x8") it is that rate, written "5x".
+-- given, holds the traffic). After "fast time" ("set fast time x3", "fast-time at x8"), or "time" opening its clause
+-- ("time x5", "sim time at x2"), it is that rate, written "5x".
 local function lone_multipliers(text, world)
   if not text:find("%d[xX]") and not text:find("[xX]%d") then return text end
   local words = {}
@@ -1777,11 +1778,14 @@ local function lone_multipliers(text, world)
     end
     return false
   end
-  -- (the words before word k name fast time: "fast time", "fast-time", "at" after them or not)
+  -- (the words before word k name fast time: "fast time", "fast-time", "at" after them or not; or the clock,
+  -- "time" opening its clause, "sim time" or "simulation time": "time x5", "sim time at x2")
   local function fast_time(k)
     local p = words[k - 1] and words[k - 1].w:lower() == "at" and k - 2 or k - 1
     local w = words[p] and words[p].w:lower()
-    return w == "fast-time" or (w == "time" and words[p - 1] ~= nil and words[p - 1].w:lower() == "fast")
+    local q = words[p - 1]
+    local opens = not q or q.w:match("[,;%.!:]$") or joins(q) or q.w:lower() == "sim" or q.w:lower() == "simulation"
+    return w == "fast-time" or (w == "time" and q ~= nil and q.w:lower() == "fast") or (w == "time" and opens)
   end
   for k, t in ipairs(words) do
     local core, tail = t.w:match("^(.-)([,;%.!]?)$")
@@ -16254,15 +16258,22 @@ function M.translate(text, world)
       end
     end)
   end
-  -- "fl,260": a comma typed after "FL" is no break in the level; "climb FL2 70", "descend fl 2 10", "klm77 fl 1 10":
-  -- nor is a space inside its three figures (one figure, then two), unless a unit follows ("fl 2 10 knots")
+  -- "fl,260": a comma typed after "FL" is no break in the level. "climb FL3 60", "descend fl 2 10", "EZY19AB CLIMB
+  -- TO FL3 60": a space inside a typed level's three figures (one figure, then two) may hide a figure lost, doubled
+  -- or moved (FL360, FL300, FL3600?): asked, never joined, unless a unit follows ("fl 2 10 knots": no level)
   if text:find("[Ff][Ll]") then
     text = text:gsub("%f[%a]([Ff][Ll]),%s*(%d%d%d?)%f[%D]", "%1%2")
-    text = text:gsub("%f[%a]([Ff][Ll]%s?%d)%s+(%d%d)%f[%D]()", function(fl, two, at)
+    local split
+    for fl, two, at in text:gmatch("%f[%a]([Ff][Ll]%s?%d)%s+(%d%d)%f[%D]()") do
       local unit = text:match("^%s*(%a+)", at)
-      if unit and lexicon.level_split_units[unit:lower()] then return nil end
-      return fl .. two
-    end)
+      if not split and not (unit and lexicon.level_split_units[unit:lower()]) then
+        split = { fl .. " " .. two, fl:match("%d") .. two }
+      end
+    end
+    if split then
+      return { commands = {}, ask = string.format("Which level is '%s': FL%s? A space splits its figures, so one may "
+        .. "be lost or out of place: please type the level again in one group.", split[1], split[2]) }
+    end
   end
   -- "mach.82": a Mach number typed against its word
   if text:find("[Mm][Aa][Cc][Hh]%.%d") then text = text:gsub("%f[%a]([Mm][Aa][Cc][Hh])%.(%d)", "%1 .%2") end
@@ -16646,7 +16657,65 @@ function G.unheard_mark(text)
   end
   return nil
 end
+-- "BAW8CK WHEN READY DESCEND TO FL340", "DLH4AX RESUME OWN NAVIGATION", "EIN154 CLIMB AT 1000 FT/MIN": in a line
+-- typed with no lower-case letter (a CPDLC uplink in its message set's capitals) the case tells no name from a word,
+-- so a word of two letters or more, letters only, that squawk knows as English (known_word) is read in lower case,
+-- as if typed so. A word stays as typed when it may be a name or a code: a simulator command's name or alias that
+-- is no English word (REGISTRY_WORDS: TrafScript typed in capitals, "HDG", "ADDWPT"), an abbreviation that names nothing
+-- (lexicon.not_names) or a navaid's kind, an airline's one-word name squawk knows no other way ("SPEEDBIRD"), an
+-- aircraft's id, a waypoint of an aircraft's route, its destination or origin, a DEFWPT's name, or, straight after a
+-- word of a place's slot (PLACE_SLOTS, "to", "by", "passing", ...), a fix, navaid or airport the navdata holds within
+-- TYPED_PLACE_NM of an aircraft ("DIRECT BIG"). A line with a lower-case letter is returned as it is.
+G.capitals_slots = { to = true, by = true, passing = true, abeam = true, crossing = true, past = true, towards = true,
+  toward = true, of = true, reaching = true }
+function G.capitals_read(text, world)
+  if text:find("%l") or not text:find("%u%u") then return text end
+  if not G.capitals_kept then
+    local kept = {}
+    for w in pairs(REGISTRY_WORDS) do kept[w] = true end
+    for _, w in ipairs(lexicon.not_names) do kept[w] = true end
+    for _, w in ipairs(lexicon.navaid_kinds) do kept[w] = true end
+    G.capitals_kept = kept
+  end
+  local kept, named = G.capitals_kept, {}
+  for _, a in ipairs(world.aircraft or {}) do
+    named[(a.id or ""):lower()] = true
+    for _, r in ipairs(a.route or {}) do named[r:lower()] = true end
+    if a.dest and a.dest ~= "" then named[a.dest:lower()] = true end
+    if a.orig and a.orig ~= "" then named[a.orig:lower()] = true end
+  end
+  for _, w in ipairs(world.waypoints or {}) do named[tostring(w):lower()] = true end
+  local function near(w)
+    if not world.place_known then return false end
+    local lat, lon = world.place_known(w:upper())
+    if not lat then return false end
+    for _, a in ipairs(world.aircraft or {}) do
+      local dlat, dlon = lat - (a.lat or 0), (lon - (a.lon or 0)) * math.cos(math.rad(lat))
+      if a.lat and 60 * math.sqrt(dlat * dlat + dlon * dlon) <= TYPED_PLACE_NM then return true end
+    end
+    return false
+  end
+  local prev  -- (the word before, lower case, when only white space lies between)
+  local out, from = {}, 1
+  for b, w, e in text:gmatch("()(%a+)()") do
+    local low = w:lower()
+    local apart = (b == 1 or not text:sub(b - 1, b - 1):match("[%w]")) and not text:sub(e, e):match("[%w]")
+    local slot = prev and (PLACE_SLOTS[prev] or G.capitals_slots[prev])
+    local name = G.name_words[low]
+    if apart and #w >= 2 and known_word(low) and not kept[low] and not named[low]
+        and not (name and next(name) == nil) and not (slot and near(w)) then
+      out[#out + 1] = text:sub(from, b - 1) .. low
+      from = e
+    end
+    local gap = text:sub(e):match("^%s+")
+    prev = (apart and gap) and low or nil
+    if prev and text:sub(e + #gap, e + #gap):match("%a") == nil then prev = nil end
+  end
+  if from == 1 then return text end
+  return table.concat(out) .. text:sub(from)
+end
 function M.translate(text, world)
+  text = G.capitals_read(text, world or {})
   local unheard = G.unheard_mark(text)
   if unheard then
     return { commands = {}, ask = string.format("Part of the request was not heard ('%s'). Please say it again.",
