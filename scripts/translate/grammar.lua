@@ -1571,6 +1571,12 @@ local function value_homophones(text)
           or after:match("^%d"))) then
         for _, h in ipairs(heard) do convert[h] = true end
       end
+      -- ("flight level won hundred": one such word, not "to", then "hundred" and no digit after: FL100)
+      local last = bare[k + 3]
+      if H[bare[k + 1] or ""] and bare[k + 1] ~= "to" and bare[k + 2] == "hundred" and not toks[k + 1]:match("%p$")
+          and not (last and (DIGIT_WORDS[last] or H[last] or RUN_ENDS[last] or last:match("^%d"))) then
+        convert[k + 1] = true
+      end
     end
   end)
 end
