@@ -1571,6 +1571,12 @@ local function value_homophones(text)
           or after:match("^%d"))) then
         for _, h in ipairs(heard) do convert[h] = true end
       end
+      -- ("flight level won hundred": one such word, not "to", then "hundred" and no digit after: FL100)
+      local last = bare[k + 3]
+      if H[bare[k + 1] or ""] and bare[k + 1] ~= "to" and bare[k + 2] == "hundred" and not toks[k + 1]:match("%p$")
+          and not (last and (DIGIT_WORDS[last] or H[last] or RUN_ENDS[last] or last:match("^%d"))) then
+        convert[k + 1] = true
+      end
     end
   end)
 end
@@ -11367,12 +11373,33 @@ function G:heard_route_place()
         self.confirm = self.confirm or { id = name, heard = t.raw }
         -- (in a request that adds to a route, "after"/"before" place the new waypoint: a name there stays confirmed)
         local placing = G.route_position[self.words[k - 1]] and self:said("add insert addwpt append")
-        self.heard_sure = not placing and t.raw:match("^%l+$") and G.sure_route_name(t.text, route) == name
-          and G.heard_nowhere_else(t.text, name, self.world) and name or nil
+        self.heard_sure = not placing and t.raw:match("^%l+$") and (G.sure_route_name(t.text, route) == name
+          and G.heard_nowhere_else(t.text, name, self.world) or self:route_navaid_named(t.text, name)) and name or nil
         return self:need(string.format("Did you mean %s? I heard '%s'.", name, t.raw))
       end
     end
   end
+end
+
+-- True when the word w is the navdata's own name of the navaid `name` on the route of an aircraft named in the
+-- request, within lexicon.navaid_range_nm of it, and of no other waypoint of that route ("250 knots till comilla"
+-- for CML, the Comilla VOR): the place said by its name, as a direct-to reads it, no sound-alike.
+function G:route_navaid_named(w, name)
+  local named = self.world.navaids_named
+  if not named then return false end
+  for _, r in ipairs(self.refs) do
+    local a = r.kind == "aircraft" and r.exists and self:state(r.name)
+    if a and a.lat then
+      local ids, on = named(w, a.lat, a.lon, lexicon.navaid_range_nm), {}
+      for _, p in ipairs(a.route or {}) do on[p:upper()] = true end
+      local mine = 0
+      for _, id in ipairs(ids) do
+        if on[id:upper()] then mine = mine + (id:upper() == name:upper() and 1 or 2) end
+      end
+      if mine == 1 then return true end
+    end
+  end
+  return false
 end
 
 -- "climb FL300 in a minute", "turn left heading 200 in a moment": a delay said after an instruction with no number

@@ -653,7 +653,10 @@ local names = {
     { "ariana", "AFG" },
     { "kamgar", "KMF" },  -- (Kam Air)
     { "royal nepal", "RNA" },  -- (Nepal Airlines)
+    { "nepal", "RNA" },  -- (its telephony's last word, the name controllers in Nepal call it by: "Nepal 205")
     { "buddha air", "BHA" },
+    { "buddha", "BHA" },  -- (its telephony's first word, as controllers in Nepal say it: "Buddha 241")
+    { "buddhaair", "BHA" },  -- (its telephony run together, as speech recognition writes it)
     { "yeti", "NYT" },  -- (Yeti Airlines)
     { "royal bhutan", "DRK" },  -- (Druk Air)
     { "bangla star", "UBG" },  -- (US-Bangla Airlines)

@@ -19299,3 +19299,34 @@ do
   check_eq(ex2("ok, sim time at x2"), "DTMULT 2")
   asked(ex2("AFR1234 time x5"), "a rate said to an aircraft")
 end
+
+-- Cycle 61 (f204)
+do
+  -- Nepal's airlines as controllers there say them: "Nepal" (Nepal Airlines, telephony Royal Nepal), "Buddha" (Buddha
+  -- Air) and "buddhaair" run together; the callsign still read only when every digit matches
+  local _, ex = scene({ "CRE RNA318 A320 27.5 85.0 90 FL130 260", "CRE BHA552 AT72 27.2 84.5 270 11000 200",
+    "CRE NYT604 AT72 28.0 84.0 180 12000 210" })
+  check_eq(ex("nepal three one eight climb flight level one six zero"), "ALT RNA318 FL160")
+  check_eq(ex("please descend nepal three one eight to flight level one one zero"), "ALT RNA318 FL110")
+  check_eq(ex("nepal airlines three one eight climb flight level one six zero"), "ALT RNA318 FL160")
+  check_eq(ex("remove buddha five five two"), "DEL BHA552")
+  check_eq(ex("buddhaair five five two descend to niner thousand feet"), "ALT BHA552 9000")
+  check_eq(ex("what is the route of nepal three one eight"), "LISTRTE RNA318")
+  asked(ex("nepal three one nine climb flight level one six zero"), "digits of no Nepal aircraft")
+  asked(ex("buddha five two five descend to niner thousand feet"), "digits of no Buddha aircraft")
+  asked(ex("nepal, climb flight level one six zero"), "an airline alone")
+  -- "won", "too", "for" for a digit before "hundred" in a flight level; "to" there stays asked
+  check_eq(ex("nepal three one eight descend flight level won hundred"), "ALT RNA318 FL100")
+  check_eq(ex("nepal three one eight climb flight level too hundred"), "ALT RNA318 FL200")
+  asked(ex("nepal three one eight climb flight level to hundred"), "'to' before hundred")
+  asked(ex("nepal three one eight climb flight level won hundred won zero"), "digits after the hundred")
+  -- a speed limit ending at a navaid said by its navdata name, the one of the aircraft's route: the speed, the
+  -- limit named as not simulated; the name off the aircraft's route stays asked
+  local _, ex = navscene({ "CRE UBG440 B738 23.30 91.20 170 FL150 270", "ADDWPT UBG440 CML", "ADDWPT UBG440 CTG",
+    "CRE BBC90 DH8D 22.60 91.50 200 9000 220", "ADDWPT BBC90 CTG" }, "Cycle 61 (f204)'s Comilla VOR")
+  if ex then
+    check_eq(ex("bangla star four four zero, maintain two six zero knots until comilla"), "SPD UBG440 260")
+    check_eq(ex("us bangla four four zero keep speed two five zero till comilla please"), "SPD UBG440 250")
+    asked(ex("bangladesh nine zero maintain two two zero knots till comilla"), "a navaid off the route")
+  end
+end
