@@ -246,7 +246,8 @@ local function compile_rule(spec, level)
   for _, k in ipairs({ "near", "not_near", "prev", "not_prev" }) do
     if spec[k] then r[k] = { spec[k][1], word_set(spec[k][2], level + 1) } end
   end
-  -- (r.plain: none of next, near, not_near, prev and not_prev is asked, only r.when: G:intent_at's short way)
+  -- (r.plain: none of next, near, not_near, prev and not_prev is asked, only r.when: G:intent_at's short way; a
+  -- new kind of condition G:intent_at reads must join this list, or a rule with it alone would skip it)
   r.plain = not (r.next or r.near or r.not_near or r.prev or r.not_prev)
   return r
 end
@@ -4237,7 +4238,7 @@ function G:intent_at(i)
   for k = 1, #rules do
     local r = rules[k]
     local when = r.when
-    if r.plain then
+    if r.plain then  -- (compile_rule: no condition but when)
       if not when or when(self, i) then
         found = r.intent or nil
         break
