@@ -246,6 +246,9 @@ local function compile_rule(spec, level)
   for _, k in ipairs({ "near", "not_near", "prev", "not_prev" }) do
     if spec[k] then r[k] = { spec[k][1], word_set(spec[k][2], level + 1) } end
   end
+  -- (r.plain: none of next, near, not_near, prev and not_prev is asked, only r.when: G:intent_at's short way; a
+  -- new kind of condition G:intent_at reads must join this list, or a rule with it alone would skip it)
+  r.plain = not (r.next or r.near or r.not_near or r.prev or r.not_prev)
   return r
 end
 
@@ -4340,18 +4343,26 @@ function G:intent_at(i)
   busy[i] = depth + 1
   for k = 1, #rules do
     local r = rules[k]
-    -- (r.near: followed within r.near[1] tokens by a word of r.near[2]; r.prev: preceded so; a set none
-    -- of whose words is said is not looked for)
-    local near, not_near, prev, not_prev = r.near, r.not_near, r.prev, r.not_prev
-    if (not r.next or (next_word and r.next[next_word] == true))
-        and (not near or word_among(texts, i + 1, i + 1 + near[1], near[2]))
-        and (not not_near or not (said[not_near[2]] and word_among(texts, i + 1, i + 1 + not_near[1], not_near[2])))
-        and (not prev or word_among(texts, i > prev[1] and i - prev[1] or 1, i, prev[2]))
-        and (not not_prev
-          or not (said[not_prev[2]] and word_among(texts, i > not_prev[1] and i - not_prev[1] or 1, i, not_prev[2])))
-        and (not r.when or r.when(self, i)) then
-      found = r.intent or nil
-      break
+    local when = r.when
+    if r.plain then  -- (compile_rule: no condition but when)
+      if not when or when(self, i) then
+        found = r.intent or nil
+        break
+      end
+    else
+      -- (r.near: followed within r.near[1] tokens by a word of r.near[2]; r.prev: preceded so; a set none
+      -- of whose words is said is not looked for)
+      local near, not_near, prev, not_prev = r.near, r.not_near, r.prev, r.not_prev
+      if (not r.next or (next_word and r.next[next_word] == true))
+          and (not near or word_among(texts, i + 1, i + 1 + near[1], near[2]))
+          and (not not_near or not (said[not_near[2]] and word_among(texts, i + 1, i + 1 + not_near[1], not_near[2])))
+          and (not prev or word_among(texts, i > prev[1] and i - prev[1] or 1, i, prev[2]))
+          and (not not_prev
+            or not (said[not_prev[2]] and word_among(texts, i > not_prev[1] and i - not_prev[1] or 1, i, not_prev[2])))
+          and (not when or when(self, i)) then
+        found = r.intent or nil
+        break
+      end
     end
   end
   busy[i] = depth > 0 and depth or nil
