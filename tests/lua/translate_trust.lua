@@ -19068,7 +19068,8 @@ end
 -- Cycle 61 (f203): Hungarian, Romanian and Ukrainian polite English
 do
   local _, ex = scene({ "CRE ROT512 A320 45.5 25.5 090 FL230 270", "CRE LOT88K E190 47.1 21.3 200 FL320 280",
-    "CRE AUA33 A321 48.1 16.9 300 FL260 290", "CRE THY7MN A321 49.5 31.4 330 FL350 270", "ADDWPT THY7MN KOKUM" })
+    "CRE AUA33 A321 48.1 16.9 300 FL260 290", "CRE THY7MN A321 49.5 31.4 330 FL350 270", "DEFWPT KOKUM 50.3 30.9",
+    "ADDWPT THY7MN KOKUM" })
   -- the value wanted said after "no" or "sorry" and "I wanted" / "I want" replaces the one said ("please" between)
   check_eq(ex("Tarom 512 reduce speed two hundred thirty, no, I wanted 240"), "SPD ROT512 240")
   check_eq(ex("Austrian 33 descend FL240 please, sorry, I want FL220"), "ALT AUA33 FL220")
