@@ -456,6 +456,8 @@ local function heard_word_is(w, set)
   if not w then return false end
   -- ("#capital": a word typed with a capital, a name: "as soon as Swiss 200 is level", "as soon as KLM12 ...")
   if set["#capital"] and w:match("^%u") then return true end
+  -- ("#code": a word of three to five capitals, a fix or navaid as typed: "when it passed ABATU")
+  if set["#code"] and w:match("^%u%u%u%u?%u?%p*$") then return true end
   w = w:lower():gsub("%p+$", "")
   return set[w] == true or (set["#number"] == true and (NUMBER_WORDS[w] == true or w:match("^%d") ~= nil
     or w:match("^fl%d+$") ~= nil or NUMBER_WORDS[w:match("^(%a+)%-%a") or ""] == true))  -- ("one-two-zero")
@@ -1084,7 +1086,10 @@ local function self_corrections(text)
     if j > k and marked and not refused and not (dropping and after[nxt and nxt.bare or ""] and not SIDES[nxt.bare])
         and not (dropping and not toks[j - 1].raw:match("%p$") and not G.valued_words_before(toks, k))
         and not (toks[k - 2] and toks[k - 2].bare == "not" and G.apology[toks[k].bare])
-        and (value(toks[k - 1]) or (toks[k - 1] and SIDES[toks[k - 1].bare]) or position) and nxt
+        and (value(toks[k - 1]) or (toks[k - 1] and SIDES[toks[k - 1].bare]) or position
+          -- ("climb FL290 please, no, I wanted FL300": "please" or "kindly" after the value taken back)
+          or (toks[k - 1] and (toks[k - 1].bare == "please" or toks[k - 1].bare == "kindly") and value(toks[k - 2])))
+        and nxt
         and (said.bare:match("^%a?%a?%.?%d") or NUMBER_WORDS[said.bare] or after[said.bare] or position) then
       put(toks[k].at, ", correction, ", nxt.at)
       k = j
@@ -15380,10 +15385,14 @@ end
 -- "after it will pass IBLAN", "when it will reach level 150", "when he will be above level 100" (the future tense
 -- of Russian formal English in a condition): "will" between the aircraft's pronoun and a verb of passing, reaching
 -- or being, after "when", "once", "after", "until" or "till", is dropped: the text as "after it pass IBLAN" reads.
+-- The same future in Hungarian, Romanian and Ukrainian English: "when it will have 300 knots" reads as "when it has
+-- 300 knots"; "when speed will be 250" as "when speed is 250" (the aircraft's speed reaching the value); "when it
+-- will descend to FL250" / "will climb to" as "when it reaches FL250" (the level reached, no clearance to it).
 -- "will" anywhere else is kept.
 G.future_will_sets = { opens = set_of({ "when", "once", "after", "until", "till" }),
   subjects = set_of({ "it", "he", "she", "they" }),
-  verbs = set_of({ "pass", "reach", "cross", "overfly", "be", "get", "descend", "climb", "slow", "leave" }) }
+  verbs = set_of({ "pass", "reach", "cross", "overfly", "be", "get", "descend", "climb", "slow", "leave", "have" }),
+  moving = set_of({ "descend", "climb" }) }
 -- "It is now 14:31:40: ...", "Now, at 14:02:10, ...", "We are at 10:04:20 now; ...", "At this point, 14:31:50, ...",
 -- "This is 14:03, ...": a clock time told as the present moment of a report is no time to run anything at (no
 -- SCHEDULE, no fast-forward): the phrase and the mark after it are dropped (after "at this point" only the time).
@@ -15478,9 +15487,17 @@ end
 function G.future_will(text)
   if not text:lower():find("%f[%a]will%f[%A]") then return text end
   local F = G.future_will_sets
+  text = text:gsub("(%f[%a]%a+)(%s+)(%a+)(%s+)[Ww][Ii][Ll][Ll]%s+(%a+)%s+[Tt][Oo]%f[%A]", function(c, s1, subj, s2, verb)
+    if F.opens[c:lower()] and F.subjects[subj:lower()] and F.moving[verb:lower()] then
+      return c .. s1 .. subj .. s2 .. "reaches"
+    end
+    return nil
+  end)
   return (text:gsub("(%f[%a]%a+)(%s+)(%a+)(%s+)([Ww][Ii][Ll][Ll])%s+(%a+%f[%A])", function(c, s1, subj, s2, _, verb)
-    if F.opens[c:lower()] and F.subjects[subj:lower()] and F.verbs[verb:lower()] then
-      return c .. s1 .. subj .. s2 .. verb
+    local o, sb, v = c:lower(), subj:lower(), verb:lower()
+    if F.opens[o] and sb == "speed" and v == "be" then return c .. s1 .. subj .. s2 .. "is" end
+    if F.opens[o] and F.subjects[sb] and F.verbs[v] then
+      return c .. s1 .. subj .. s2 .. (v == "have" and "has" or verb)
     end
     return nil
   end))

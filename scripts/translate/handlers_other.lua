@@ -4926,6 +4926,10 @@ return function(H, f, compass)
     self:need("What text should I print?")
   end
   function m:resolution(s)
+    if self.factor_named_upto and s.trig < self.factor_named_upto and self.u:used(s.trig) and self:on_off(s) < 0
+        and not self:word_in(s.trig, s.e, "mvp") then
+      return
+    end
     local b = s.b > 1 and s.b - 1 or s.b
     -- ("what's the resolution method", "?" typed or not: the method asked, when none is named and no switch said)
     local named = self:word_in(1, #self.t + 1, "mvp") or self:word_in(b, s.e, "@mvp") or self:on_off(s) >= 0
@@ -4991,6 +4995,21 @@ return function(H, f, compass)
         self:take(q)
         self:emit(cmd .. " " .. f.num(value))
       end
+    end
+    -- ("safety factor for horizontal resolution put 1.2": the kind, "resolution" and a verb of setting said after the
+    -- noun, past its own clause, then the factor of 1 to 3)
+    local k = s.e
+    while #self.out == before and k <= #self.t and k < s.e + 6
+        and self:word(k, "for in of the horizontal lateral vertical resolution resolutions reso put set to please") do
+      k = k + 1
+    end
+    local q = #self.out == before and k > s.e and self:quantities(k, k + 1)[1]
+    if q and q.b == k and q.kind == "plain" and q.value >= 1 and q.value <= 3 and not self.u:used(k) and kind(k)
+        and (q.e > #self.t or self.t[q.e].kind == "punct" or self:word(q.e, "please and")) then
+      self:mark_used(s.e, k)
+      self.factor_named_upto = k  -- (the resolution named in it is the factor's: m:resolution reads nothing there)
+      self:take(q)
+      self:emit(kind(k) .. " " .. f.num(q.value))
     end
     if #self.out == before then self:need("What safety factor should conflict resolution apply?") end
   end

@@ -1223,8 +1223,11 @@ return {
                       -- it is 260"): part of the correction's run
                       -- ("sorry I want to say 300", "no, I wanted to say FL320", "sorry, I meant to say 300": the
                       -- value the speaker means said after "to say", as an East African speaker says it)
+                      -- ("no, I wanted FL300", "sorry, I want 260": the value wanted said straight after "I want"
+                      -- or "I wanted", as a Hungarian, Romanian or Ukrainian speaker says it; last, so that the
+                      -- longer phrases match first)
                       restated = { "it is", "it's", "it should be", "want to say", "wanted to say", "wish to say",
-                                   "to say" },
+                                   "to say", "wanted", "want" },
                       -- modals said after the addressee restated in a correction ("sorry, Turkish 876 should climb
                       -- to FL320": G.restated_addressee)
                       restated_modals = { "should", "must", "shall", "will", "has to", "needs to", "is to" },
@@ -2476,8 +2479,10 @@ return {
     -- speaker gives the condition's verb, read as passing the level said after it)
     -- ("it should go to heading 240": "go to" a heading, as a Persian speaker's "beravad" is said, is flying it)
     { heard = { "go to heading", "go on heading", "goes to heading" }, means = "fly heading", before = { "#number" } },
+    -- (and before a fix typed in capitals, as a Hungarian, Romanian or Ukrainian speaker says it: "heading 070
+    -- when it passed ABATU" is passing ABATU)
     { heard = { "it passed", "he passed", "she passed", "you passed" }, means = "passing",
-      between = { { "when", "whenever", "once", "after" }, { "#number", "fl", "flight", "level", "altitude" } } },
+      between = { { "when", "whenever", "once", "after" }, { "#number", "fl", "flight", "level", "altitude", "#code" } } },
     { heard = { "it reached", "he reached", "she reached", "you reached" }, means = "reaching",
       between = { { "when", "whenever", "once", "after" }, { "#number", "fl", "flight", "level", "altitude" } } },
     { heard = { "as soon as" }, means = "once",

@@ -2172,6 +2172,20 @@ return function(intent, rule, words)
     return g.t[k] == nil or (g.t[k].kind == "punct" and g.t[k].text ~= ",")
   end }
   rule { "route rte waypoints", "listrte", prev = { 4, "show list display what print see look where check" } }
+  -- "the route of Turkish 4KZ please to show", "route for KLM12 to show please": the request opening with the
+  -- route of an aircraft flying, the verb of showing last ("please", "to" before it), nothing else in its clause
+  rule { "route rte routing", "listrte", when = function(g, i)
+    local first = g:skip_fillers(1)
+    if not (first == i or (first == i - 1 and g:word(i - 1, "the"))) or not g:word(i + 1, "of for") then return false end
+    local r = g:refs_in(i + 2, #g.t + 1, "aircraft")[1]
+    if not (r and r.exists and r.b == i + 2) then return false end
+    local k = r.e
+    while g:word(k, "please to") do k = k + 1 end
+    if not g:word(k, "show display list") then return false end
+    k = k + 1
+    while g:word(k, "me us please") or (g.t[k] and g.t[k].filler) do k = k + 1 end
+    return g.t[k] == nil or (g.t[k].kind == "punct" and g.t[k].text ~= ",")
+  end }
   -- "show me the position and the route of OAW61", "what are the position and route of DLH44": the route said
   -- after another shown state ("position", "state", "data"), joined by "and", a verb of showing or asking
   -- before it
@@ -3268,6 +3282,17 @@ return function(intent, rule, words)
          prev = { 3, "add set define put create" }, when = function(g) return not g:has_ref(1, #g.t + 1, "aircraft") end }
   -- "wind from 270 at 40 kt over 55.5 12.5", "a wind of 270 at 40 knots": where it blows from, said after it
   rule { "wind winds", "wind", next = "from of", when = function(g) return not g:has_ref(1, #g.t + 1, "aircraft") end }
+  -- "the wind please put from 270 with 40 knots at 47.4 19.2", "the wind for experiment from 300 degrees 50 knots
+  -- at ...": "please", a verb of setting or "for (the) experiment" between the noun and "from" (Hungarian, Romanian
+  -- and Ukrainian English word order), a number after "from", no aircraft named
+  rule { "wind winds", "wind", when = function(g, i)
+    local k = i + 1
+    while k <= i + 5 and g:word(k, "please kindly put set give make for the experiment simulation scenario exercise") do
+      k = k + 1
+    end
+    return k > i + 1 and g:word(k, "from") and (g:quantities(k + 1, k + 2)[1] or {}).b == k + 1
+      and not g:has_ref(1, #g.t + 1, "aircraft") and not g:word_in(math.max(1, i - 3), i, "what what's whats show tell get check")
+  end }
   -- "wind 270 at 30 kt at 52 4": its direction straight after it, its speed in knots after that ("wind 270 at
   -- 15 over Phoenix": three digits, "at" and a bare number, as a wind is reported, are the two)
   rule { "wind winds", "wind", when = function(g, i)

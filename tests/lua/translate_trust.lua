@@ -19330,3 +19330,36 @@ do
     asked(ex("bangladesh nine zero maintain two two zero knots till comilla"), "a navaid off the route")
   end
 end
+
+-- Cycle 61 (f203): Hungarian, Romanian and Ukrainian polite English
+do
+  local _, ex = scene({ "CRE ROT512 A320 45.5 25.5 090 FL230 270", "CRE LOT88K E190 47.1 21.3 200 FL320 280",
+    "CRE AUA33 A321 48.1 16.9 300 FL260 290", "CRE THY7MN A321 49.5 31.4 330 FL350 270", "DEFWPT KOKUM 50.3 30.9",
+    "ADDWPT THY7MN KOKUM" })
+  -- the value wanted said after "no" or "sorry" and "I wanted" / "I want" replaces the one said ("please" between)
+  check_eq(ex("Tarom 512 reduce speed two hundred thirty, no, I wanted 240"), "SPD ROT512 240")
+  check_eq(ex("Austrian 33 descend FL240 please, sorry, I want FL220"), "ALT AUA33 FL220")
+  check_eq(ex("LOT 88K turn left heading 170... no I wanted heading 160"), "HDG LOT88K 160 LEFT")
+  asked(ex("Tarom 512 climb FL250 I wanted FL260"), "no marker before 'I wanted'")
+  -- the future of a condition: "will have" knots, the speed that "will be", "will descend to" a level reached
+  check_eq(ex("Austrian 33 when it will have 250 knots, descend FL200"), "ATSPD AUA33 250 ALT AUA33 FL200")
+  check_eq(ex("Tarom 512 once speed will be 250 climb flight level 270"), "ATSPD ROT512 250 ALT ROT512 FL270")
+  check_eq(ex("LOT 88K when it will descend to FL300 please reduce 250 knots"), "ATALT LOT88K FL300 SPD LOT88K 250")
+  asked(ex("Tarom 512 when it will have time, climb FL300"), "no condition squawk can wait for")
+  -- the wind: "please", a verb of setting or "for (the) experiment" between the noun and "from"
+  check_eq(ex("the wind please set from 250 with 30 knots at 46.2 24.9"), "WIND 46.2 24.9 250 30")
+  check_eq(ex("the wind for the experiment from 310 degrees 45 knots at 47.5 19.1"), "WIND 47.5 19.1 310 45")
+  asked(ex("the wind please put from 270 with 40 knots"), "no position")
+  -- the safety factor, its kind said after it with "for ... resolution", the value put last
+  check_eq(ex("safety factor for vertical resolution please put 1.15"), "RFACV 1.15")
+  check_eq(ex("the safety factor for horizontal resolution set to 1.3, and resolution on"), "RFACH 1.3 ; RESO MVP")
+  asked(ex("safety factor for resolution put 1.2"), "horizontal or vertical unsaid")
+  asked(ex("safety factor for horizontal resolution put 7"), "no factor of 1 to 3")
+  -- the route of an aircraft, the verb of showing last
+  check_eq(ex("the route of Turkish 7MN please to show"), "LISTRTE THY7MN")
+  check_eq(ex("route for Tarom 512 to show please"), "LISTRTE ROT512")
+  asked(ex("the route of Turkish 7NM please to show"), "digits of no Turkish aircraft")
+  -- "when it passed FIX" after an instruction, the fix typed in capitals: the instruction waits for the fix
+  check_eq(ex("Turkish 7MN turn heading 300 once it passed KOKUM"), "AT THY7MN KOKUM DO HDG THY7MN 300")
+  asked(ex("Turkish 7MN turn heading 300 when it passed Tarom 512"), "traffic passed, no fix")
+end
