@@ -4941,7 +4941,12 @@ function G:condition()
   -- "ACA102 when you're down to FL150 slow to 250": a condition said after the aircraft's callsign, its value
   -- joined to its word by ARRIVING words only ("could the Porter, once it reaches OAKVL, ...": after a polite
   -- opening, G:request_opening)
-  local opened = not self:condition_word(i) and self:request_opening(i)
+  -- ("excuse me, for the Air Do, when ...": a comma closing the courtesy fillers that open the request, before an
+  -- opening and its aircraft)
+  local o = i
+  if i > 1 and self.t[i] and self.t[i].kind == "punct" and self.t[i].text == "," then o = self:skip_fillers(i + 1) end
+  local opened = not self:condition_word(i) and self:request_opening(o)
+  if opened == o and o ~= i then opened = i end
   local lead = opened and self:refs_in(opened, opened + 1, "aircraft")[1]
   if lead then
     local c = self:skip_fillers(lead.e)

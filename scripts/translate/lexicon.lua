@@ -2851,7 +2851,10 @@ return {
       "i wonder if", "i was wondering if", "we wonder if", "we were wondering if",
       -- (a wish said as an East African speaker says it, "I want that the Qatari, after it pass KOBAB, descend
       -- FL250": "want" and "that" or not; a longer form before the shorter it opens with)
-      "i want that", "we want that", "i want", "we want" },
+      "i want that", "we want that", "i want", "we want",
+      -- ("please let the Austrian, when it passes NAPSA, descend ...", "for the Air Do, when ...": "let" or "for"
+      -- before the aircraft that is to act, courtesy before it or not)
+      "kindly let", "please let", "let", "for" },
   -- the first words of a note's text that make it a question of its own ("... saying are you ready?"): its closing
   -- "?" may be the note's or the request's (handlers_other.lua m:echo)
   echo_question_openers = { "who", "what", "where", "when", "why", "how", "which", "is", "are", "am", "was", "were",

@@ -19363,3 +19363,22 @@ do
   check_eq(ex("Turkish 7MN turn heading 300 once it passed KOKUM"), "AT THY7MN KOKUM DO HDG THY7MN 300")
   asked(ex("Turkish 7MN turn heading 300 when it passed Tarom 512"), "traffic passed, no fix")
 end
+
+-- Cycle 61 (fpol4)
+do
+  local _, ex = scene({ "DEFWPT TOMBA 47.9 12.1", "DEFWPT RUMEL 47.6 11.4", "DEFWPT KADIX 48.6 10.2",
+    "CRE AUA66K A320 48.3 13.0 270 FL230 280", "ADDWPT AUA66K TOMBA", "ADDWPT AUA66K RUMEL",
+    "CRE BEL2TR A319 49.1 12.2 220 FL170 270" })
+  -- a condition at a waypoint said between "let" (or "for") with its aircraft and the instruction word
+  check_eq(ex("Please let the Austrian, when it passes TOMBA, descend to flight level 120."),
+    "AT AUA66K TOMBA DO ALT AUA66K FL120")
+  check_eq(ex("kindly let Austrian 66K, once it has passed RUMEL, reduce to 240 knots"),
+    "AT AUA66K RUMEL DO SPD AUA66K 240")
+  check_eq(ex("Let AUA66K when it passes TOMBA turn right heading 310 please"), "AT AUA66K TOMBA DO HDG AUA66K 310 RIGHT")
+  check_eq(ex("For the Austrian, when it reaches RUMEL, climb FL250 please."), "AT AUA66K RUMEL DO ALT AUA66K FL250")
+  check_eq(ex("Please, let the Austrian, when it reaches TOMBA, turn left heading 200."),
+    "AT AUA66K TOMBA DO HDG AUA66K 200 LEFT")
+  asked(ex("Please let the Austrian, when it passes KADIX, descend to FL120."), "KADIX is off its route")
+  asked(ex("Let the Belgian, when it passes TOMBA, descend to FL120."), "TOMBA is off the Belgian's route")
+  asked(ex("Let the Austrian, when it passes TOMBA... no, descend to FL120 now."), "condition taken back")
+end
