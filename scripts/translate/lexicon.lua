@@ -49,9 +49,11 @@ return {
       "hold", "line", "lines", "noise", "run", "start", "wind", "trail", "trails", "load", "open", "continue",
       "polygon", "reset", "seed", "echo", "perf" },
   -- words that carry none ("please", "uh"): skipped before a callsign or condition
-  -- (the particles of Singapore and Malaysian English: "ok lah", "can lah", "like that lor")
+  -- (the particles of Singapore and Malaysian English: "ok lah", "can lah", "like that lor"; and of Filipino
+  -- said in English, each a filler above in another tongue: "po" (respect, as "please"), "sige" (all right),
+  -- "ano" (um), "yung" (the), "na" (now): "resume na po")
   fillers = { "ah", "uh", "um", "er", "eh", "oh", "the", "a", "an", "please", "pls", "okay", "ok", "yeah", "so",
-      "and", "now", "lah", "leh", "lor", },
+      "and", "now", "lah", "leh", "lor", "po", "sige", "ano", "yung", "na", },
   -- Every word accounted for (docs/translator_trust.md): a request becomes commands only when each of its
   -- words is part of a callsign, place, type or value the parse read, an instruction word (the rules' words
   -- and this file's lists), or a word of one of these classes; any other word is a leftover, asked about by
@@ -255,6 +257,10 @@ return {
         -- "pause dulu", "stop the sim sekejap" (for a moment), "turn left 20 dong"; "lah" is a filler)
         "ya", "dulu", "sekejap", "kejap", "dong", "deh", "sih", "nih",
         "salamat", "maraming",
+        -- (the other particles of Filipino said in English (Taglish), beside the fillers "po", "sige", "ano",
+        -- "yung" and "na": "opo" of respect, "iyong" (the), "muna" (first, for a while: "pause muna"), "lang"
+        -- (just), "naman" (then, though), "ay" before an apology ("ay sorry"))
+        "opo", "iyong", "muna", "lang", "naman", "ay",
         -- the languages of Africa, romanised: Swahili ("asante sana", "sawa", "pole pole": slowly, easy),
         -- Amharic ("ishi": OK), Nigerian and Ghanaian Pidgin ("abeg": please, "oya": come on, "chale": mate),
         -- Hausa, Igbo, Yoruba, Twi, Zulu, Xhosa and Afrikaans
@@ -689,7 +695,8 @@ return {
     cm = { word = "climb and maintain", next = "#number fl flight", hundreds = true },
     recl = { word = "recleared", next = "#number fl flight" }, rv = { word = "radar vectors", next = "hdg heading" },
     blw = { word = "below", next = "#number fl flight" }, abv = { word = "above", next = "#number fl flight" },
-    red = { word = "reduce", next = "#number spd speed to", not_prev = "trail colour color a in" },
+    -- ("Cool Red 2505" is Philippines AirAsia's telephony)
+    red = { word = "reduce", next = "#number spd speed to", not_prev = "trail colour color a in cool" },
     -- (several readings: the first whose neighbours fit; "#place", three to five capital letters, a fix,
     -- navaid or airport typed as its ident: "pd FIGGY" is "proceed direct FIGGY", "pd figgy" stays as typed)
     pd = { { word = "pilot's discretion", prev = "desc descend dsc dscnd dsnd climb clb clmb",
@@ -1146,14 +1153,15 @@ return {
                                left = true, right = true },
                restating = { "i meant", "i mean", "it is", "it's", "it was", "it should be", "should be", "is",
                              "was", "meant" } },
-  self_correction = { words = { "oh", "no", "wait", "sorry", "actually", "make", "that", "i", "mean", "meant", "uh", "um",
+  self_correction = { words = { "oh", "ay", "no", "wait", "sorry", "actually", "make", "that", "i", "mean", "meant", "uh", "um",
                                 "er", "eh", "ah", "say", "again", "scratch", "corr", "hmm", "typo", "never", "mind", "nevermind",
                                 "forget", "belay", "better", "rather" },
                       -- words of an apology ("I am sorry", "I'm sorry") also part of a run between two values
                       -- (grammar.lua self_corrections: "flight level 110, I am sorry, flight level 100")
                       -- ("heading 270, actually no, let's make that 280": "let's" before "make that" belongs to the
-                      -- run; "fl250 nein fl270", "kurs 300.. ne 310": German "nein", "ne" (no) are its markers)
-                      value_words = { "am", "i'm", "let's", "lets", "let", "nein", "ne" },
+                      -- run; "fl250 nein fl270", "kurs 300.. ne 310": German "nein", "ne" (no) are its markers; the
+                      -- Filipino "po" of respect after the apology, "sorry po")
+                      value_words = { "am", "i'm", "let's", "lets", "let", "nein", "ne", "po" },
                       markers = { "no", "wait", "sorry", "actually", "make that", "mean", "meant", "say again", "scratch",
                                   "corr", "never mind", "nevermind", "forget that", "belay", "nein", "ne" },
                       -- the markers that, closing the request, take back what came before with nothing said

@@ -624,6 +624,7 @@ local names = {
     { "wagon air", "AWQ" },  -- (Indonesia AirAsia)
     { "cool red", "APG" },  -- (Philippines AirAsia)
     { "airphil", "GAP" },  -- (PAL Express)
+    { "blue jay", "SRQ" },  -- (Cebgo)
     { "firefly", "FFM" },
     { "sunstate", "SSQ" },  -- (QantasLink)
     { "eastern australia", "EAQ" },  -- (QantasLink)
@@ -868,6 +869,9 @@ local names = {
     { "philippines air asia", "APG" },
     { "airasia philippines", "APG" },
     { "air asia philippines", "APG" },
+    -- the Philippines' regional airlines by their own names, beside their telephony Blue Jay and Airphil
+    { "cebgo", "SRQ" },
+    { "pal express", "GAP" },
     { "thai lion", "TLM" },
     { "tianjin airlines", "GCR" },
     { "chengdu airlines", "UEA" },

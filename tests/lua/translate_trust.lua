@@ -19382,3 +19382,29 @@ do
   asked(ex("Let the Belgian, when it passes TOMBA, descend to FL120."), "TOMBA is off the Belgian's route")
   asked(ex("Let the Austrian, when it passes TOMBA... no, descend to FL120 now."), "condition taken back")
 end
+
+-- Cycle 61 (f209): Filipino controllers: Taglish particles, Philippine telephony
+do
+  local _, ex = scene({ "CRE CEB949 A320 6.8 125.9 330 FL110 250", "CRE GAP2517 DH8D 7.4 125.3 120 7000 210",
+    "CRE APG2505 A320 6.6 125.4 020 FL150 270", "CRE SRQ461 AT76 10.1 123.5 060 8000 200",
+    "CRE PAL2813 A321 7.7 125.5 170 FL130 260" })
+  -- the particles of Filipino said in English ("po", "sige", "ano", "yung", "na", "muna") carry no instruction
+  check_eq(ex("sige po, Cebu 949 descend flight level one zero zero"), "ALT CEB949 FL100")
+  check_eq(ex("Philippine 2813 ano, turn right heading two four zero po"), "HDG PAL2813 240 RIGHT")
+  check_eq(ex("delete yung Airphil 2517 po"), "DEL GAP2517")
+  check_eq(ex("okay, unpause na po"), "OP")
+  check_eq(ex("sige, freeze muna"), "HOLD")
+  asked(ex("sige po"), "no instruction")
+  -- "ay" before an apology, "po" after it: a correction between two values
+  check_eq(ex("Cebu 949 reduce two one zero knots, ay sorry po, two two zero knots"), "SPD CEB949 220")
+  asked(ex("Cebu 949 reduce two one zero knots ay two two zero knots"), "no marker between the speeds")
+  -- Cebgo by its telephony Blue Jay and its name; PAL Express by its name beside Airphil
+  check_eq(ex("Blue Jay four six one, climb niner thousand"), "ALT SRQ461 9000")
+  check_eq(ex("cebgo 461 say heading"), "POS SRQ461")
+  check_eq(ex("PAL Express 2517 turn left heading 300"), "HDG GAP2517 300 LEFT")
+  asked(ex("Blue Jay 416 descend 6000"), "digits of no Cebgo aircraft")
+  -- "Cool Red" (Philippines AirAsia) after another's clause: "red" before its number is the telephony, no "reduce"
+  check_eq(ex("Airphil 2517 climb 9000, Cool Red 2505 descend FL130"), "ALT GAP2517 9000 ; ALT APG2505 FL130")
+  check_eq(ex("remove cool red two five zero five"), "DEL APG2505")
+  check_eq(ex("Cool Red 2505 red speed 240"), "SPD APG2505 240")
+end
