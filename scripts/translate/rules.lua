@@ -171,6 +171,11 @@ return function(intent, rule, words)
         local t1 = g:refs_in(a, a + 1, "type")[1]
         local after = t1 and t1.b == a and t1.e
         while after and g.t[after] and g.t[after].kind == "punct" do after = after + 1 end
+        -- ("an A319 operated as EZY12AB ...", "a B738 flying as RYR7PL, ...": the new callsign introduced after the type
+        -- by a verb of operating and "as")
+        if after and g:word(after, "operated operating flying") and g:word(after + 1, "as") then after = after + 2 end
+        -- ("an ATR 72, callsign ADH2231, at LASIX ...": named as such after the type)
+        if after and g:word(after, "callsign") then after = after + 1 end
         local r2 = after and g:refs_in(after, after + 1, "aircraft")[1]
         if r2 and not r2.exists and r2.b == after then ty = r2 end  -- (the creation fires after the callsign)
       end
