@@ -19387,4 +19387,14 @@ do
     "CRE EZY18MN A320 HAPSA 50 FL90 230")
   asked(ex("An A320 operated as KLM31 was at FL350 on heading 095 at 280 kt over TOLVO."), "KLM31 is flying")
   asked(ex("An A320 operated as EZY3 climb FL300"), "no position")
+  -- an Airbus or Boeing designator's digits alone as a new aircraft's type: after a verb of creating and "a"/"an"
+  -- ("a new"), or, above 360, after the verb and the new callsign; a family's number, a number that may be a
+  -- heading after the callsign, and digits before a value noun stay as they were
+  check_eq(ex("spawn a 321 callsign dlh402 at 51.9 6.1 fl120 hdg 180 260kts"), "CRE DLH402 A321 51.9 6.1 180 FL120 260")
+  check_eq(ex("create a new 319, EZY6, at TOLVO, FL200, heading 090, 280 kt"), "CRE EZY6 A319 TOLVO 90 FL200 280")
+  check_eq(ex("spawn ryr9k 739 at HAPSA, hdg 240, FL150, 270 kt"), "CRE RYR9K B739 HAPSA 240 FL150 270")
+  check_eq(ex("add a 789 KLM800 at TOLVO FL350 heading 270 M.84"), "CRE KLM800 B789 TOLVO 270 FL350 M0.84")
+  asked(ex("spawn ryr9k 320 at HAPSA hdg 240 FL150 270 kt"), "320 after the callsign may be a heading")
+  asked(ex("spawn a 737 ryr9k at HAPSA hdg 240 FL150 270 kt"), "a 737 with no variant")
+  asked(ex("create ryr9k at HAPSA FL150 hdg 320 270 kt"), "no type")
 end
