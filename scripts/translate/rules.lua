@@ -3085,6 +3085,8 @@ return function(intent, rule, words)
     if g:word(k, "@sim it") then k = g:skip_fillers(k + 1) end  -- ("run it for 90 seconds")
     if g:word(k, "fast quickly ahead") then k = g:skip_fillers(k + 1) end
     if g:word(k, "for") then k = g:skip_fillers(k + 1) end
+    -- ("let it run another 45 s", "run for a further 2 minutes": the duration added to the time run so far)
+    if g:word(k, "another further extra additional") then k = g:skip_fillers(k + 1) end
     if g:word(k, "hour minute") and g:word(k - 1, "a an") then return true end  -- ("for an hour")
     local q = g:quantities(k, math.min(#g.t + 1, k + 3))[1]
     return q ~= nil and q.b == k and q.kind == "time"

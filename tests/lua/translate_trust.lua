@@ -19397,4 +19397,10 @@ do
   asked(ex("spawn ryr9k 320 at HAPSA hdg 240 FL150 270 kt"), "320 after the callsign may be a heading")
   asked(ex("spawn a 737 ryr9k at HAPSA hdg 240 FL150 270 kt"), "a 737 with no variant")
   asked(ex("create ryr9k at HAPSA FL150 hdg 320 270 kt"), "no type")
+  -- the time run said as more of it ("another", "a further", "an additional"): the duration fast-forwarded
+  check_eq(ex("from here, let it run another 20 s"), "FF 20")
+  check_eq(ex("let the simulation run for another 3 minutes"), "FF 180")
+  check_eq(ex("run the sim for a further 40 seconds please"), "FF 40")
+  asked(ex("let it run another"), "no duration")
+  asked(ex("KLM31 run another 45 seconds"), "an aircraft named")
 end
