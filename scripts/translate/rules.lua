@@ -174,8 +174,6 @@ return function(intent, rule, words)
         -- ("an A319 operated as EZY12AB ...", "a B738 flying as RYR7PL, ...": the new callsign introduced after the type
         -- by a verb of operating and "as")
         if after and g:word(after, "operated operating flying") and g:word(after + 1, "as") then after = after + 2 end
-        -- ("an ATR 72, callsign ADH2231, at LASIX ...": named as such after the type)
-        if after and g:word(after, "callsign") then after = after + 1 end
         local r2 = after and g:refs_in(after, after + 1, "aircraft")[1]
         if r2 and not r2.exists and r2.b == after then ty = r2 end  -- (the creation fires after the callsign)
       end
