@@ -16401,6 +16401,7 @@ function M.translate(text, world)
   if cue("crea") or cue("cree") or cue("spawn") or cue("generate") or cue("add") or cue("mcre") or cue("random")
       or cue("new", true) or cue("set up", true) or cue("put", true) or cue("chuck", true) or cue("stick", true) then
     text = types.plurals(types.spoken(text, TYPES, lexicon.phonetic), TYPES, world.aircraft, lexicon.variant_families)
+    text = types.short_singular(text, TYPES, lexicon.variant_families)
   end
   local apart
   text, apart = set_apart(types.join(text, TYPES.phrases))

@@ -4115,7 +4115,12 @@ function m:at_altitude(s)
   if self:word(a, "at on") and self:word(a - 1, "fly flies stay remain cruise") then return nil end
   -- a value said before the condition is another instruction's, which must not wait for it
   if #self:quantities(b, a) > 0 then return nil end
-  if (s.intent == "maintain" or s.intent == "alt" or NAV_INTENTS[s.intent] or s.intent == "vs")
+  -- ("when level FL370 maintain Mach .80", "once level at FL370 maintain 250 knots", "when at FL370 maintain M.78":
+  -- "maintain" whose own value is a speed keeps no level, so a level reached after "when"/"once" is its condition)
+  local kept = s.intent == "maintain" and (self:quantities(s.trig, s.e)[1] or {}).kind
+  local held_speed = (kept == "speed" or kept == "mach") and (self:word(a, "level")
+    or (self:word(a, "at") and (self:word(a - 1, "when once") or (self:word(a - 1, "level") and self:word(a - 2, "when once")))))
+  if (s.intent == "maintain" or s.intent == "alt" or NAV_INTENTS[s.intent] or s.intent == "vs") and not held_speed
       and not self:word(a, "passing leaving reaching") and not reached and not got_to and not left then
     return nil
   end

@@ -268,6 +268,11 @@ return function(H, f, compass)
         -- ("a second Norstar, NSZ88"): a capitalised word squawk does not know, straight before the new
         -- callsign and opening with its first letter, is the airline's name for it (it changes nothing)
         local k = self.t[r.b - 1] and self.t[r.b - 1].kind == "punct" and self.t[r.b - 1].text == "," and r.b - 2 or r.b - 1
+        -- ("an A319 operated as EZY12AB", "flying as RYR7PL": the verb that introduces the new callsign after its type)
+        if self:word(k, "as") and self:word(k - 1, "operated operating flying") and not self.u:used(k - 1)
+            and self:refs_in(math.max(1, k - 5), k - 1, "type")[1] then
+          self:explain(k - 1, k + 1)
+        end
         local w = self.t[k]
         if w and w.kind == "word" and w.alpha and #w.text >= 4 and w.raw:match("^%u%l") and not self:known_word(k)
             and not self.u:used(k) and w.raw:sub(1, 1) == id:sub(1, 1):upper() then

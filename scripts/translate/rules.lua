@@ -171,6 +171,9 @@ return function(intent, rule, words)
         local t1 = g:refs_in(a, a + 1, "type")[1]
         local after = t1 and t1.b == a and t1.e
         while after and g.t[after] and g.t[after].kind == "punct" do after = after + 1 end
+        -- ("an A319 operated as EZY12AB ...", "a B738 flying as RYR7PL, ...": the new callsign introduced after the type
+        -- by a verb of operating and "as")
+        if after and g:word(after, "operated operating flying") and g:word(after + 1, "as") then after = after + 2 end
         local r2 = after and g:refs_in(after, after + 1, "aircraft")[1]
         if r2 and not r2.exists and r2.b == after then ty = r2 end  -- (the creation fires after the callsign)
       end
@@ -3080,6 +3083,8 @@ return function(intent, rule, words)
     if g:word(k, "@sim it") then k = g:skip_fillers(k + 1) end  -- ("run it for 90 seconds")
     if g:word(k, "fast quickly ahead") then k = g:skip_fillers(k + 1) end
     if g:word(k, "for") then k = g:skip_fillers(k + 1) end
+    -- ("let it run another 45 s", "run for a further 2 minutes": the duration added to the time run so far)
+    if g:word(k, "another further extra additional") then k = g:skip_fillers(k + 1) end
     if g:word(k, "hour minute") and g:word(k - 1, "a an") then return true end  -- ("for an hour")
     local q = g:quantities(k, math.min(#g.t + 1, k + 3))[1]
     return q ~= nil and q.b == k and q.kind == "time"

@@ -600,6 +600,34 @@ function M.plurals(text, built, fleet, families)
   end))
 end
 
+-- The digits of exactly one Airbus or Boeing designator said alone as a new aircraft's type, where traffic is
+-- created: straight after a verb of creating and "a"/"an" (or "a new") ("spawn a 320 callsign BAW456 ...", "create
+-- a new 321, EZY5, ..."), or, above 360 (never a heading), straight after a verb of creating and the new callsign
+-- ("spawn klm1711 738 at EHAM"): that designator. A family's number that names no one variant (`families`:
+-- "737") stays; so do the digits before a unit or value noun ("add a 320 heading"), a decimal or any other word.
+local CREATING = { create = true, spawn = true, add = true, generate = true, put = true, insert = true, new = true }
+local VALUE_NOUNS = { heading = true, hdg = true, degrees = true, degree = true, deg = true, kt = true, kts = true,
+  knots = true, knot = true, ft = true, feet = true, fl = true, track = true, course = true, nm = true, miles = true,
+  mach = true, seconds = true, sec = true, s = true, minutes = true, min = true, radial = true, turn = true }
+function M.short_singular(text, built, families)
+  M.plurals("", built, nil, families)  -- (builds the designators' digits, short_designators[built])
+  local short = short_designators[built]
+  return (text:gsub("()(%d%d%d)()", function(b, d, e)
+    local des = short[d]
+    if not des then return nil end
+    local before, after = text:sub(1, b - 1), text:sub(e)
+    if before:match("[%w%.%-]$") or after:match("^[%w%.%-]") then return nil end
+    local nxt = after:match("^[%s,]*(%a+)")
+    if nxt and VALUE_NOUNS[nxt:lower()] then return nil end
+    local low = before:lower()
+    local verb = low:match("(%a+)%s+an?%s+$") or low:match("(%a+)%s+an?%s+new%s+$")
+    if verb and CREATING[verb] then return des end
+    local verb2 = low:match("(%a+)%s+%a+%d+%w*,?%s+$")
+    if verb2 and CREATING[verb2] and tonumber(d) > 360 then return des end
+    return nil
+  end))
+end
+
 -- The phrases of M.join grouped by their first word: {firsts = {word, ...} in order of first
 -- appearance, at = {[word] = {position in phrases, ...}}}; built once per phrase list, which must not
 -- change after its first join.

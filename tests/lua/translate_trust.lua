@@ -19408,3 +19408,43 @@ do
   check_eq(ex("remove cool red two five zero five"), "DEL APG2505")
   check_eq(ex("Cool Red 2505 red speed 240"), "SPD APG2505 240")
 end
+
+-- Cycle 61 (f20x): the practice rounds' leftovers
+do
+  local _, ex = scene({ "CRE KLM31 A320 52.0 4.0 090 FL250 280", "CRE BEL9Q A320 52.3 4.4 270 FL350 280",
+    "DEFWPT TOLVO 51.5 5.2", "DEFWPT HAPSA 51.9 6.1" })
+  -- "maintain" whose own value is a speed, after "when/once level (at)" a level: the speed waits for the level
+  check_eq(ex("KLM31 CLIMB TO FL360 WHEN LEVEL FL360 MAINTAIN M.79"), "ALT KLM31 FL360 ; ATALT KLM31 FL360 SPD KLM31 M0.79")
+  check_eq(ex("BEL9Q descend FL310, once level FL310 maintain mach .76"), "ALT BEL9Q FL310 ; ATALT BEL9Q FL310 SPD BEL9Q M0.76")
+  check_eq(ex("KLM31 climb to FL330 when level at FL330 please maintain 270 knots"),
+    "ALT KLM31 FL330 ; ATALT KLM31 FL330 SPD KLM31 270")
+  check_eq(ex("BEL9Q descend to FL290 when at FL290 maintain M.74"), "ALT BEL9Q FL290 ; ATALT BEL9Q FL290 SPD BEL9Q M0.74")
+  asked(ex("KLM31 climb FL300 when level FL340 maintain M.78"), "a level above the one cleared")
+  asked(ex("KLM31 climb FL300 at FL280 maintain M.78"), "'at' a level with no condition word")
+  -- a new aircraft described, type first, its callsign after "operated as" or "flying as", then its
+  -- fields (in a report's past tense too): the creation; a callsign an aircraft flying has stays asked
+  check_eq(ex("An A319 operated as EZY77C was at FL360, heading 255, 270 kt, over TOLVO."),
+    "CRE EZY77C A319 TOLVO 255 FL360 270")
+  check_eq(ex("a Boeing 737-800 flying as RYR4QT, over HAPSA, heading 110, FL330, 280 kt"),
+    "CRE RYR4QT B738 HAPSA 110 FL330 280")
+  check_eq(ex("A second A320, operated as EZY18MN, was over HAPSA at FL090 on heading 050 at 230 kt CAS."),
+    "CRE EZY18MN A320 HAPSA 50 FL90 230")
+  asked(ex("An A320 operated as KLM31 was at FL350 on heading 095 at 280 kt over TOLVO."), "KLM31 is flying")
+  asked(ex("An A320 operated as EZY3 climb FL300"), "no position")
+  -- an Airbus or Boeing designator's digits alone as a new aircraft's type: after a verb of creating and "a"/"an"
+  -- ("a new"), or, above 360, after the verb and the new callsign; a family's number, a number that may be a
+  -- heading after the callsign, and digits before a value noun stay as they were
+  check_eq(ex("spawn a 321 callsign dlh402 at 51.9 6.1 fl120 hdg 180 260kts"), "CRE DLH402 A321 51.9 6.1 180 FL120 260")
+  check_eq(ex("create a new 319, EZY6, at TOLVO, FL200, heading 090, 280 kt"), "CRE EZY6 A319 TOLVO 90 FL200 280")
+  check_eq(ex("spawn ryr9k 739 at HAPSA, hdg 240, FL150, 270 kt"), "CRE RYR9K B739 HAPSA 240 FL150 270")
+  check_eq(ex("add a 789 KLM800 at TOLVO FL350 heading 270 M.84"), "CRE KLM800 B789 TOLVO 270 FL350 M0.84")
+  asked(ex("spawn ryr9k 320 at HAPSA hdg 240 FL150 270 kt"), "320 after the callsign may be a heading")
+  asked(ex("spawn a 737 ryr9k at HAPSA hdg 240 FL150 270 kt"), "a 737 with no variant")
+  asked(ex("create ryr9k at HAPSA FL150 hdg 320 270 kt"), "no type")
+  -- the time run said as more of it ("another", "a further", "an additional"): the duration fast-forwarded
+  check_eq(ex("from here, let it run another 20 s"), "FF 20")
+  check_eq(ex("let the simulation run for another 3 minutes"), "FF 180")
+  check_eq(ex("run the sim for a further 40 seconds please"), "FF 40")
+  asked(ex("let it run another"), "no duration")
+  asked(ex("KLM31 run another 45 seconds"), "an aircraft named")
+end
