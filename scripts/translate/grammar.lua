@@ -599,14 +599,23 @@ end
 -- value follows it ("speed 250 et FL100" may be "at": asked).
 function G.french_in_english(text)
   local L = lexicon.french_in_english
+  -- (G.french_opens: the words that open a run or a join; G.french_words: those and every part of a run. Built
+  -- once, on first use)
+  if not G.french_opens then
+    local opens, words = {}, {}
+    for _, set in ipairs({ L.units, L.teens, L.tens }) do
+      for w in pairs(set) do opens[w], words[w] = true, true end
+    end
+    for _, w in ipairs({ "cent", "mille", "et", "after", "après", "apres" }) do opens[w], words[w] = true, true end
+    words.cents, words.vingts = true, true
+    G.french_opens, G.french_words = opens, words
+  end
+  local opens, words = G.french_opens, G.french_words
   local toks, bare = plain_words(text)
   local found = false
   for k = 1, #bare do
-    local w = bare[k]:match("^[^%-]+")
-    if w and (L.units[w] or L.teens[w] or L.tens[w] or w == "cent" or w == "mille" or w == "et" or w == "after" or w == "après"
-        or w == "apres") then
-      found = true
-    end
+    local w = bare[k]
+    if opens[w] or (w:find("-", 1, true) and opens[w:match("^[^%-]+") or ""]) then found = true; break end
   end
   if not found then return text end
   -- (the parts of token k split at its hyphens, or nil when one is no French number word)
@@ -670,6 +679,7 @@ function G.french_in_english(text)
     return total
   end
   return tokens.rewrite(text, toks, function(i)
+    if not words[bare[i]] and not bare[i]:find("-", 1, true) then return nil end
     if toks[i]:match("^%u%u+%p*$") then return nil end  -- (a code in capitals: "ET", "SEPT")
     local p = parts_of(i, {})
     if p and not (#p == 1 and p[1] == "et") then
