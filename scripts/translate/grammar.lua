@@ -198,7 +198,8 @@ local function know_all(v, seen)
   -- to ask a request again; lexicon.listener_address only where it is dropped, opening or closing a request;
   -- lexicon.judged_values, kept_from and speed_direction_verbs only where their pass reads them, lexicon.wish_evaluative
   -- and wish_negation only in a wish framed before "if", same_given and same_compared only beside "same", lexicon.ml_labels
-  -- only where dropped; lexicon.remark_not and named_position_leads only where their pass reads them: they never
+  -- only where dropped; lexicon.remark_not and named_position_leads only where their pass reads them, and
+  -- lexicon.french_in_english only where G.french_in_english reads a number or "and": they never
   -- make a word said elsewhere known)
   if type(v) ~= "table" or seen[v] or v == lexicon.accounted.courtesy_phrases or v == lexicon.accounted.value_phrases
       or v == lexicon.typed_abbreviations
@@ -217,7 +218,7 @@ local function know_all(v, seen)
       or v == lexicon.remark_not or v == lexicon.named_position_leads
       or v == lexicon.listener_address or v == lexicon.judged_values or v == lexicon.kept_from or v == lexicon.ml_labels
       or v == lexicon.speed_direction_verbs or v == lexicon.wish_evaluative or v == lexicon.wish_negation
-      or v == lexicon.same_given or v == lexicon.same_compared then
+      or v == lexicon.same_given or v == lexicon.same_compared or v == lexicon.french_in_english then
     return
   end
   seen[v] = true
@@ -590,6 +591,123 @@ function G.said_whole(text)
   end
   for _, language in ipairs(G.said_whole_order) do text = read(indexes[language], false) end
   return text
+end
+
+-- French inside an English request (lexicon.french_in_english): a run of French number words making one number
+-- with a word of tens, hundreds or thousands is its digits ("cap deux cent quatre-vingt-dix" -> "cap 290"); a run
+-- that makes none stays as said (asked). "et" (not typed "ET", a code) is "and", "et puis" "and then", unless a
+-- value follows it ("speed 250 et FL100" may be "at": asked).
+function G.french_in_english(text)
+  local L = lexicon.french_in_english
+  -- (G.french_opens: the words that open a run or a join; G.french_words: those and every part of a run. Built
+  -- once, on first use)
+  if not G.french_opens then
+    local opens, words = {}, {}
+    for _, set in ipairs({ L.units, L.teens, L.tens }) do
+      for w in pairs(set) do opens[w], words[w] = true, true end
+    end
+    for _, w in ipairs({ "cent", "mille", "et", "after", "après", "apres" }) do opens[w], words[w] = true, true end
+    words.cents, words.vingts = true, true
+    G.french_opens, G.french_words = opens, words
+  end
+  local opens, words = G.french_opens, G.french_words
+  local toks, bare = plain_words(text)
+  local found = false
+  for k = 1, #bare do
+    local w = bare[k]
+    if opens[w] or (w:find("-", 1, true) and opens[w:match("^[^%-]+") or ""]) then found = true; break end
+  end
+  if not found then return text end
+  -- (the parts of token k split at its hyphens, or nil when one is no French number word)
+  local function parts_of(k, out)
+    for part in bare[k]:gmatch("[^%-]+") do
+      if not (L.units[part] or L.teens[part] or L.tens[part] or part == "cent" or part == "cents" or part == "mille"
+              or part == "vingts" or part == "et") then return nil end
+      out[#out + 1] = part
+    end
+    return out
+  end
+  -- (the value of parts p from index i under 100: returns value, next index; or nil)
+  local function below100(p, i)
+    local w, v = p[i], nil
+    if w == "quatre" and (p[i + 1] == "vingt" or p[i + 1] == "vingts") then v, i = 80, i + 2
+    elseif L.tens[w] then v, i = L.tens[w], i + 1
+    elseif L.teens[w] then
+      v, i = L.teens[w], i + 1
+      if w == "dix" and L.units[p[i]] and L.units[p[i]] >= 7 then v, i = v + L.units[p[i]], i + 1 end
+      return v, i
+    elseif L.units[w] then return L.units[w], i + 1
+    else return nil end
+    -- ("vingt et un", "soixante et onze"; "soixante-dix-sept", "quatre-vingt-douze"; "trente-deux")
+    if p[i] == "et" then
+      if p[i + 1] == "un" and v < 80 then return v + 1, i + 2 end
+      if p[i + 1] == "onze" and v == 60 then return 71, i + 2 end
+      return nil
+    end
+    if (v == 60 or v == 80) and L.teens[p[i]] then
+      local t, j = below100(p, i)
+      return v + t, j
+    end
+    if L.units[p[i]] then return v + L.units[p[i]], i + 1 end
+    return v, i
+  end
+  local function number(p)
+    local i, total, composite = 1, 0, false
+    for _, w in ipairs(p) do
+      if L.teens[w] or L.tens[w] or w == "cent" or w == "cents" or w == "mille" or w == "vingts" then composite = true end
+    end
+    -- ("grazie mille": "cent" or "mille" alone is no value said)
+    if not composite or (#p == 1 and (p[1] == "cent" or p[1] == "cents" or p[1] == "mille")) then return nil end
+    if p[i] == "mille" then total, i = 1000, i + 1
+    elseif p[i + 1] == "mille" or (p[i + 2] == "mille") then
+      local v, j = below100(p, i)
+      if not v or p[j] ~= "mille" or v < 2 then return nil end
+      total, i = v * 1000, j + 1
+    end
+    if p[i] == "cent" then total, i = total + 100, i + 1
+    elseif p[i + 1] == "cent" or p[i + 1] == "cents" then
+      local u = L.units[p[i]]
+      if not u or u < 2 or p[i] == "une" then return nil end
+      total, i = total + u * 100, i + 2
+    end
+    if p[i] then
+      local v, j = below100(p, i)
+      if not v then return nil end
+      total, i = total + v, j
+    end
+    if p[i] then return nil end
+    return total
+  end
+  return tokens.rewrite(text, toks, function(i)
+    if not words[bare[i]] and not bare[i]:find("-", 1, true) then return nil end
+    if toks[i]:match("^%u%u+%p*$") then return nil end  -- (a code in capitals: "ET", "SEPT")
+    local p = parts_of(i, {})
+    if p and not (#p == 1 and p[1] == "et") then
+      local j = i
+      -- ("et" joins the run only before "un" or "onze": "trente et descend" is "and")
+      while not toks[j]:match("%p$") and toks[j + 1] and not toks[j + 1]:match("^%u%u+%p*$")
+          and (bare[j + 1] ~= "et" or bare[j + 2] == "un" or bare[j + 2] == "onze") and parts_of(j + 1, p) do
+        j = j + 1
+      end
+      local v = number(p)
+      local punct = toks[j]:match("%p+$") or ""
+      if v then return tostring(v) .. punct, j + 1 end
+      return table.concat(toks, " ", i, j), j + 1
+    end
+    if (bare[i] == "after" or bare[i] == "après" or bare[i] == "apres") and (bare[i - 1] == "and" or bare[i - 1] == "et") and not toks[i - 1]:match("%p$")
+        and not toks[i]:match("%p$") and toks[i + 2] and ((bare[i + 1]:match("^%d+$") and not toks[i + 1]:match("%p$")
+        and L.afterwards[bare[i + 2]]) or bare[i + 1] == "mach") then
+      return "then", i + 1
+    end
+    if bare[i] ~= "et" or toks[i]:match("%p$") or not toks[i + 1] then return nil end
+    if bare[i + 1] == "puis" then return L.joins["et puis"] .. (toks[i + 1]:match("%p+$") or ""), i + 2 end
+    local nxt = bare[i + 1]
+    if nxt:match("^%d") or nxt:match("^fl%d*$") or NUMBER_WORDS[nxt] or nxt == "flight" or nxt == "level"
+        or nxt == "niveau" or L.units[nxt] or L.teens[nxt] or L.tens[nxt] or nxt == "cent" or nxt == "mille" then
+      return nil
+    end
+    return L.joins.et, i + 1
+  end)
 end
 
 -- A level or heading whose digits were written apart ("fl 3 4 0", "flight level 1 30", "heading 0 90"):
@@ -2331,7 +2449,7 @@ local function written_forms(text, world)
   -- "47,5 north", "8,5 degrees east", "factor to 1,1": a decimal comma (G.decimal_comma) is the point
   where("%d,%d", "()(%d+),(%d+)()", function(b, whole, part, e) return G.decimal_comma(text, b, whole, part, e) end)
   text = typed_abbreviations(lone_multipliers(tokens.numerals_apart(G.unfinished_restarts(G.cut_off_restarts(text)), DIGIT_WORDS), world))
-  text = hyphened_types(spelled(G.spelled_letter_a(heard_forms(negated_values(G.readback_reported(readback_heard(self_corrections(G.said_but(G.cancel_corrections(unlabelled(foreign_digits(G.said_whole(G.denied_word(G.dutch_chat(G.condition_then(G.condition_copula(G.recreate_said(text))))))))))))))))))
+  text = hyphened_types(spelled(G.spelled_letter_a(heard_forms(negated_values(G.readback_reported(readback_heard(self_corrections(G.said_but(G.cancel_corrections(unlabelled(foreign_digits(G.said_whole(G.french_in_english(G.denied_word(G.dutch_chat(G.condition_then(G.condition_copula(G.recreate_said(text)))))))))))))))))))
   low = text:lower()
   -- a position typed as whole degrees after the hemisphere, then minutes ("N55 50.0 W003 20.0", "S33 57
   -- E151 10"): decimal degrees before their hemisphere ("55.833333 N 3.333333 W"); minutes of 60 or more

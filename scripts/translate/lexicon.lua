@@ -228,6 +228,8 @@ return {
         -- Spanish and Portuguese (beyond those above)
         "hola", "saludos", "chao", "tchau", "porfa", "valeu", "obrigadao", "ola",
         -- French, German and Dutch (beyond those above)
+        -- ("ok voilà, continue the simulation": there, that is it)
+        "voila", "voilà",
         "svp", "tschuss", "tschues", "wiedersehen", "wiederhoren", "moin", "bedankt", "dankjewel", "dankuwel",
         "alstublieft", "alsjeblieft", "goedemorgen", "goedemiddag", "goedenavond", "goedendag", "doei", "hoi",
         -- the Nordic languages (beyond those above)
@@ -244,7 +246,7 @@ return {
         "svidaniya", "dobroye", "dobryy", "dobrogo",
         -- Arabic, Hebrew and Hindi, transliterated
         "shukran", "marhaba", "salam", "salaam", "assalamu", "alaikum", "alaykum", "ahlan", "afwan", "yalla",
-        "inshallah", "inshaallah", "bismillah", "alhamdulillah", "jazakallah", "barakallah", "shalom", "toda", "namaste", "namaskar", "dhanyavad", "dhanyawad", "shukriya", "kripya",
+        "inshallah", "inshaallah", "inchallah", "inchaallah", "inshalla", "inchalla", "bismillah", "alhamdulillah", "jazakallah", "barakallah", "shalom", "toda", "namaste", "namaskar", "dhanyavad", "dhanyawad", "shukriya", "kripya",
         -- Japanese, Korean and Chinese, romanised
         "arigato", "arigatou", "konnichiwa", "ohayo", "ohayou", "gozaimasu", "onegaishimasu", "sayonara",
         "sumimasen", "kamsahamnida", "gamsahamnida", "annyeong", "annyeonghaseyo", "annyonghaseyo", "xiexie",
@@ -289,7 +291,7 @@ return {
         "god willing", "if god wills", "if god wills it", "god bless you", "god bless", "may god bless you",
         "god reward you", "may god reward you", "god keep you", "may god keep you", "god protect you",
         "may god protect you", "thank god", "thanks be to god", "praise be to god", "praise god", "by god's will",
-        "with god's help", "insha allah", "in sha allah", "insh allah", "inshaa allah", "in shaa allah",
+        "with god's help", "incha allah", "insha allah", "in sha allah", "insh allah", "inshaa allah", "in shaa allah",
         "masha allah", "ma sha allah", "bism allah", "alhamdu lillah", "al hamdu lillah", "jazak allah",
         "jazak allahu khairan", "jazakallah khair", "barak allah", "barak allahu feek", "if you please",
         "when able", "if able", "if you can", "if you could", "if you would", "if possible",
@@ -1242,6 +1244,9 @@ return {
                       formal_apology = { "i beg your pardon", "beg your pardon", "pardon me", "forgive me",
                                          "excuse me", "my apologies", "oops", "ops", "opps", "oups", "whoops",
                                          "woops", "oopsie", "whoopsie",
+                                         -- (French "pardon" said alone in English: "climb FL360, pardon,
+                                         -- FL370", "reduce, pardon, increase 300 knots")
+                                         "pardon",
                                          -- (an apology for the requests said together, "Sorry for many requests
                                          -- at once.": "at once" in it is no timing)
                                          "sorry for many requests at once", "sorry for so many requests at once",
@@ -2458,7 +2463,7 @@ return {
     { heard = { "niveau" }, means = "flight level", before = { "#number" } },
     -- the Russian-speaking controller's word for a flight level ("эшелон": "climb and maintain echelon 180")
     { heard = { "echelon", "eshelon" }, means = "flight level", before = { "#number" } },
-    { heard = { "vitesse" }, means = "speed", before = { "#number" } },
+    { heard = { "vitesse" }, means = "speed", before = { "#number", "mach" } },
     { heard = { "monte" }, means = "climb", before = { "#number", "niveau", "a", "fl" } },
     -- Spanish words said in an English clearance that are also Portuguese or Italian, read only where
     -- the instruction word is expected (lexicon.said_whole.spanish.joining: "suba flight level 260", "descend y
@@ -2503,6 +2508,12 @@ return {
     { heard = { "it arrives to", "it arrives at", "arrives to", "arrives at" }, means = "it reaches",
       after = { "when", "once" } },
     { heard = { "you are at" }, means = "it is at", after = { "when", "once" } },
+    -- (the aircraft as "he" or "she", the verb not agreeing, as a French or Arabic speaker says it: "when he arrive
+    -- at LAKAM, he must descend ...", "descend FL320 when she arrive at GALIT")
+    { heard = { "he arrive to", "he arrive at", "she arrive to", "she arrive at", "he arrives to", "he arrives at",
+                "she arrives to", "she arrives at" }, means = "it reaches", after = { "when", "once" } },
+    -- (a rate said "feet minute", as French "pieds minute": "descend FL100 at 1800 feet minute")
+    { heard = { "feet minute", "ft minute" }, means = "feet per minute", after = { "#number" } },
     -- (and "arrive" said alone, for "llegar" / "chegar" with no place: "descend FL180 and when you arrive reduce
     -- to 250", "when it arrives there": the level or place this request cleared it to, G:reached_opening)
     { heard = { "you arrive there", "it arrives there", "it arrive there", "you arrive", "it arrives", "it arrive" },
@@ -2749,6 +2760,20 @@ return {
     -- and French ("France Soleil quatre un deux zero"; "six" and "zero" as in English)
     un = "one", deux = "two", trois = "three", quatre = "four", cinq = "five", sept = "seven", huit = "eight", neuf = "nine",
     uma = "one" },
+  -- French said inside an English clearance by a Moroccan, Algerian or Tunisian speaker (grammar.lua
+  -- G.french_in_english): a number said in French words ("cap deux cent quatre-vingt-dix", "vitesse trois cent
+  -- trente") is its digits when the words make one number by French's rules and hold a word of tens, hundreds
+  -- or thousands (digits said one by one, "quatre un deux", are foreign_digits'); "et" (and) between two parts of
+  -- a request, never before a value it could be "at" of ("speed 250 et FL100" stays asked)
+  french_in_english = {
+    units = { un = 1, une = 1, deux = 2, trois = 3, quatre = 4, cinq = 5, six = 6, sept = 7, huit = 8, neuf = 9 },
+    teens = { dix = 10, onze = 11, douze = 12, treize = 13, quatorze = 14, quinze = 15, seize = 16 },
+    tens = { vingt = 20, trente = 30, quarante = 40, cinquante = 50, soixante = 60 },
+    -- ("et puis": and then; "et" alone: and)
+    joins = { ["et puis"] = "and then", et = "and" },
+    -- ("speed 250 until FL200 and after 300 knots": "et après", and afterwards, before a speed said with its unit)
+    afterwards = { knots = true, knot = true, kts = true, kt = true },
+  },
   -- Portuguese "um" (one), a hesitation in English: one only inside a run of digit words holding one of
   -- foreign_digits ("nível três um zero"); "three um zero" keeps its hesitation
   foreign_hesitation_digits = { um = "one" },

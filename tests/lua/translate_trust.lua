@@ -19448,3 +19448,44 @@ do
   asked(ex("let it run another"), "no duration")
   asked(ex("KLM31 run another 45 seconds"), "an aircraft named")
 end
+
+-- Cycle 61 (f208): Moroccan, Algerian and Tunisian polite English with French and Arabic habits
+do
+  local _, ex = scene({ "CRE TAR812 A320 36.5 10.2 090 FL280 280", "CRE DAH3301 B738 36.2 3.1 270 FL320 290",
+    "CRE RAM555 B738 34.0 -6.5 045 FL240 270", "DEFWPT ZARTA 36.6 10.9", "DEFWPT MILOU 34.4 -6.1",
+    "ADDWPT TAR812 ZARTA", "ADDWPT RAM555 MILOU" })
+  -- "et" (and) between two instructions, two aircraft or two of their values; "et puis" (and then)
+  check_eq(ex("Tunisair 812 climb FL300 et reduce speed 250"), "ALT TAR812 FL300 ; SPD TAR812 250")
+  check_eq(ex("Air Algerie 3301 descend FL300 et Tunisair 812 climb FL310"), "ALT DAH3301 FL300 ; ALT TAR812 FL310")
+  check_eq(ex("Royal Air Maroc 555 reduce 250 knots et puis turn left heading 010"),
+    "SPD RAM555 250 ; HDG RAM555 10 LEFT")
+  check_eq(ex("Air Algerie 3301 et Royal Air Maroc 555, say altitude"), "POS DAH3301 ; POS RAM555")
+  asked(ex("Tunisair 812 speed 250 et FL200"), "'et' before a level may be 'at'")
+  -- "inchallah" and "voila" ask for nothing
+  check_eq(ex("Tunisair 812 direct ZARTA inchallah"), "DIRECT TAR812 ZARTA")
+  check_eq(ex("ok voila, pause the simulation please"), "HOLD")
+  -- "pardon" between a value and the one said in its place
+  check_eq(ex("Royal Air Maroc 555 heading 120, pardon, 140"), "HDG RAM555 140")
+  check_eq(ex("Air Algerie 3301 descend FL300, pardon, 290 not 300"), "ALT DAH3301 FL290")
+  check_eq(ex("Tunisair 812 increase, pardon, reduce 250 knots"), "SPD TAR812 250")
+  asked(ex("Tunisair 812 climb FL300, pardon"), "taken back, nothing in its place")
+  -- a number said in French words after "cap", "vitesse", "niveau"; French digits one by one stay as they were
+  check_eq(ex("Tunisair 812 vitesse deux cent soixante"), "SPD TAR812 260")
+  check_eq(ex("the Air Algerie 3301, cap trois cent dix"), "HDG DAH3301 310")
+  check_eq(ex("Royal Air Maroc 555 cap soixante-dix, turn right"), "HDG RAM555 70 RIGHT")
+  check_eq(ex("Tunisair 812 cap deux cent quatre-vingt-dix-sept"), "HDG TAR812 297")
+  check_eq(ex("Tunisair 812 climb niveau trois cent"), "ALT TAR812 FL300")
+  check_eq(ex("Air Algerie 3301 vitesse Mach 0.78"), "SPD DAH3301 M0.78")
+  asked(ex("Tunisair 812 cap deux trois cent"), "no French number")
+  asked(ex("Tunisair 812 cap quatre un zero"), "digits of no heading")
+  -- "when he arrive at FIX", "he must": the instruction waits for the fix
+  check_eq(ex("Royal Air Maroc 555, when he arrive at MILOU, he must climb FL260"),
+    "AT RAM555 MILOU DO ALT RAM555 FL260")
+  check_eq(ex("Tunisair 812 descend FL200 when she arrive at ZARTA"), "AT TAR812 ZARTA DO ALT TAR812 FL200")
+  asked(ex("Tunisair 812 descend FL200 when he arrive"), "no place to arrive at")
+  -- a rate said "feet minute"; "and after" a speed with its unit, after a limit "until" a level: the speed then
+  check_eq(ex("Air Algerie 3301 descend FL250 at 1500 feet minute"), ex("Air Algerie 3301 descend FL250 at 1500 feet per minute"))
+  check_eq(ex("Air Algerie 3301 descend FL250, speed 250 until FL280 and after 280 knots"),
+    "ALT DAH3301 FL250 ; SPD DAH3301 250 ; ATALT DAH3301 FL280 SPD DAH3301 280")
+  asked(ex("Air Algerie 3301 descend FL250 and after 300 reduce 260"), "'after 300' may be a level")
+end
