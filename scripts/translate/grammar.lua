@@ -4663,6 +4663,20 @@ function G:trailing_level_condition()
       if self:word(v, "it it's he he's she she's you you're you've") or self:has_ref(v, v + 1, "aircraft") then
         v = v + 1
       end
+      -- ("KLM12 descend FL210 once DLH4 reaches FL200": another aircraft than the one instructed before it is the
+      -- condition's subject; the instruction's own aircraft never waits for that level: nil, left to be asked)
+      local other = self:refs_in(subject, subject + 1, "aircraft")[1]
+      local foreign = other and other.b == subject and opened and other
+      for _, r in ipairs(foreign and self:refs_in(1, k, "aircraft") or {}) do
+        if r.name:upper() == other.name:upper() then foreign = nil end
+      end
+      local function found(at, q, cmd, ce)
+        if not foreign then return at, q, cmd, ce end
+        self.ask = self.ask or string.format("'%s' waits for %s, another aircraft. Should the instruction run now, or "
+          .. "when the aircraft it is for reaches a level or speed of its own? Please say it again.",
+          self:raw(k, ce), foreign.name:upper())
+        return nil
+      end
       -- (the words up to the value: ARRIVING only, one of them a verb, no LINKING word nor "at": "but only
       -- when it is at FL210" is G:trailing_level's)
       local first, reached, slowed = self:quantities(v, #self.t + 1)[1], false, false
@@ -4698,7 +4712,7 @@ function G:trailing_level_condition()
         end
         local ce = given and not level and self:condition_closed(k, first.e)
         if ce and #self:quantities(first.e, ce) == 0 and not self:any_instruction_in(first.e, ce) then
-          return k, first, "ATSPD", ce
+          return found(k, first, "ATSPD", ce)
         end
       end
       -- ("descend to 8000 once it has slowed to 230", "... once it's slowed to 230": a speed, ATSPD)
@@ -4707,7 +4721,7 @@ function G:trailing_level_condition()
         local ce = self:condition_closed(k, q.e)
         if (q.kind == "speed" or q.kind == "mach" or (q.kind == "plain" and q.value < 1000))
             and #self:quantities(q.e, ce) == 0 and not self:any_instruction_in(q.e, ce) then
-          return k, q, "ATSPD", ce
+          return found(k, q, "ATSPD", ce)
         end
         return nil
       end
@@ -4736,7 +4750,7 @@ function G:trailing_level_condition()
             if self:intent_at(x) and not self:word(x, "@up @down") or self:has_ref(x, x + 1, "aircraft") then return nil end
           end
           if #self:quantities(q.e, ce) > 0 then return nil end
-          return k, q, "ATALT", ce
+          return found(k, q, "ATALT", ce)
         end
       end
       -- ("250 knots by the time it's level": a moment squawk cannot wait for, asked about)
@@ -6597,11 +6611,34 @@ function G.value_opens(self, i)
   return q ~= nil and q.b == i
 end
 
+-- "descend FL210, sorry, after EPVOK descend FL200", "..., no, when passing EPVOK descend FL200": the token at c
+-- after a self-correction's run opens a condition (lexicon.self_correction_condition_openers, "as soon as") and its
+-- clause goes on to an instruction word: that word's position (the instruction said in the place of the one before
+-- the run, waiting as said), else nil. A clause that ends (".", ";", "?", "!") or joins another with "and" before any
+-- instruction word says none.
+function G:corrected_condition(c)
+  local k = self:word(c, "@self_correction_condition_openers") and c + 1
+    or self:word(c, "as") and self:word(c + 1, "soon") and self:word(c + 2, "as") and c + 3
+  if not k then return nil end
+  while self.t[k] do
+    if self:intent_at(k) then return k end
+    if (self.t[k].kind == "punct" and self.t[k].text:match("^[%.;!%?]$")) or self:word(k, "and") then return nil end
+    k = k + 1
+  end
+  return nil
+end
+
 function G:self_corrected()
   local a = 2
   while a <= #self.t do
     local c, marked = a, false
-    if self.t[a].kind == "punct" then
+    -- ("desc fl210 sry after TOLPA desc fl200", "descend FL210 sorry I mean after TOLPA ...": "sorry" with no mark
+    -- before it opens the run too where a condition and an instruction follow it, G:corrected_condition)
+    local bare = self.t[a].kind ~= "punct" and self:word(a, "sorry") and a
+    while bare and self.t[bare] and (self.t[bare].kind == "punct" or self.t[bare].filler or SC_WORDS[self.t[bare].text]) do
+      bare = bare + 1
+    end
+    if self.t[a].kind == "punct" or (bare and self:corrected_condition(bare)) then
       while self.t[c] and (self.t[c].kind == "punct" or self.t[c].filler or SC_WORDS[self.t[c].text]) do
         -- ("no" straight before what it negates is no correction: "conflict detection only, no resolution")
         local nx = self.t[c + 1]
@@ -6859,7 +6896,7 @@ function G:self_corrected()
       elseif self:value_said_again(p, a, c) then
         a = c
       elseif self:intent_at(self:word(c, "it") and self:word(c - 1, "make") and c + 1 or self:word(c, SC_ONLY) and c + 1
-            or self:word(c, SC_SETTING) and (self:word(c + 1, "the") and c + 2 or c + 1) or c)
+            or self:word(c, SC_SETTING) and (self:word(c + 1, "the") and c + 2 or c + 1) or self:corrected_condition(c) or c)
           and (replaced or not self:word_in(a, c, "and also then")) then
         -- another instruction said in its place ("direct TWEED... no, make it heading 200", "half height 1000...
         -- no, set zone half height to 500" after a verb of lexicon.self_correction.setting, "climb FL200,
@@ -6869,19 +6906,33 @@ function G:self_corrected()
         -- (of another kind, with no word saying it replaces, "climb FL200, sorry, turn left heading 250", it is
         -- asked as G:parse asks after "correction")
         local w = self:word(c, SC_ONLY) and c + 1 or c
+        -- (the instruction word after a condition said first, "..., sorry, after EPVOK descend FL200")
+        local verb = not self:intent_at(c) and self:corrected_condition(c) or c
         -- ("never mind", "forget that", "scratch that" take it back in words; the same verb is no other kind)
         if w == c and not replaced and not self:word(c, "it") and not SC_SETTING[self.words[c]]
-            and not left_as_is and not self:word_in(a, c, "never nevermind forget scratch") and self.words[c] ~= self.words[p]
-            and not same_family(self:intent_at(p) or valued, self:intent_at(c))
+            and not left_as_is and not self:word_in(a, c, "never nevermind forget scratch") and self.words[verb] ~= self.words[p]
+            and not same_family(self:intent_at(p) or valued, self:intent_at(verb))
             -- ("turn right heading 350, ah no, LNAV on": the route flown again takes a heading's place)
-            and not ((self:intent_at(p) or valued) == "hdg" and self:intent_at(c) == "lnav"
-              and not self:word_in(c, math.min(#self.t + 1, c + 4), "@off")) then
+            and not ((self:intent_at(p) or valued) == "hdg" and self:intent_at(verb) == "lnav"
+              and not self:word_in(verb, math.min(#self.t + 1, verb + 4), "@off")) then
           local e = c
           while self.t[e] and self.t[e].kind ~= "punct" do e = e + 1 end
           local function said(b, e) return (self:raw(b, e):gsub(" ([,.;:])", "%1"):gsub("[%s%p]+$", "")) end
           return self:need(string.format("Should I do '%s' instead of '%s', or as well?", said(c, e), said(p, a)))
         end
         c = w
+        if verb ~= c then
+          -- (the condition opens the clause in the place of what was taken back, with the words before the last
+          -- instruction word that were its own, "turn left" of "turn left heading 100": G:condition_resumes)
+          local from = p
+          while from > 1 and self.t[from - 1].kind == "word" and not self:has_ref(from - 1, from, "aircraft")
+              and (self:intent_at(from - 1) or self:word(from - 1, "@left @right to")) do
+            from = from - 1
+          end
+          self.condition_resumes = self.condition_resumes or {}
+          self.condition_resumes[from] = c
+          p = from
+        end
         self:set_aside(p, c - 1)
         a = c
       else
@@ -8316,6 +8367,11 @@ function G:at_waypoint(s, spec)
   -- ("For JJP501, when it reaches HANWA, please descend ...": "for" before the callsign names the addressee)
   if self:word(first, "for") and #self:refs_in(first + 1, first + 2, "aircraft") > 0 then first = first + 1 end
   for _, a in ipairs(self:refs_in(first, first + 1, "aircraft")) do first = courtesy(self:skip_fillers(a.e)) end
+  -- ("RWD461 descend FL210, sorry, after EPVOK descend FL200": an instruction taken back by a self-correction
+  -- whose replacement opens with a condition, G:self_corrected; the clause opens after it)
+  if self.condition_resumes and self.condition_resumes[first] and self.condition_resumes[first] < s.trig then
+    first = courtesy(self:skip_fillers(self.condition_resumes[first]))
+  end
   -- ("Aegean 603, efcharistó, at DILOP descend ...": a word of courtesy after the callsign)
   while self:word(first, RADIOTELEPHONY) do first = self:skip_fillers(first + 1) end
   -- (the clause's opening words: "at", "over", "overhead", "after", "after/when/on/upon/once passing",
@@ -16439,13 +16495,22 @@ function M.translate(text, world)
   -- "fl,260": a comma typed after "FL" is no break in the level. "climb FL3 60", "descend fl 2 10", "EZY19AB CLIMB
   -- TO FL3 60": a space inside a typed level's three figures (one figure, then two) may hide a figure lost, doubled
   -- or moved (FL360, FL300, FL3600?): asked, never joined, unless a unit follows ("fl 2 10 knots": no level)
+  -- (two figures, then one, "fl 36 0", likewise; figures typed one by one, "FL 3 6 0", and any split after "flight
+  -- level" stay read)
   if text:find("[Ff][Ll]") then
     text = text:gsub("%f[%a]([Ff][Ll]),%s*(%d%d%d?)%f[%D]", "%1%2")
     local split
-    for fl, two, at in text:gmatch("%f[%a]([Ff][Ll]%s?%d)%s+(%d%d)%f[%D]()") do
-      local unit = text:match("^%s*(%a+)", at)
-      if not split and not (unit and lexicon.level_split_units[unit:lower()]) then
-        split = { fl .. " " .. two, fl:match("%d") .. two }
+    for _, form in ipairs({ "%f[%a]([Ff][Ll]%s?%d)%s+(%d%d)%f[%D]()", "%f[%a]([Ff][Ll]%s?%d%d)%s+(%d)%f[%D]()" }) do
+      for fl, two, at in text:gmatch(form) do
+        local unit = text:match("^%s*(%a+)", at)
+        -- (a figure after the one split off, "FL 36 0 5", is no level's; one taken back by a correction said straight
+        -- after it, "FL 16 0 - sorry, I mean one six zero", is the correction's to read)
+        local taken = (text:sub(at):lower():match("^[%s%p\226\128\148\226\128\147]*(%a+ ?%a*)") or ""):match("^(%a+)")
+        taken = taken and (lexicon.level_split_taken_back[taken] or text:sub(at):lower():match("^[%s%p\226\128\148\226\128\147]*i mean"))
+        if not split and not (unit and lexicon.level_split_units[unit:lower()]) and not text:match("^%s*%d", at)
+            and not taken then
+          split = { fl .. " " .. two, fl:match("%d+$") .. two }
+        end
       end
     end
     if split then

@@ -4174,6 +4174,20 @@ function m:at_altitude(s)
   end
   local ids = self:acids(s)
   if #ids == 0 then return nil end
+  -- ("KLM12 descend FL210, when DLH4 reaches FL200 reduce 250": an aircraft named after the condition word, another
+  -- than one the request named before the clause, and no callsign after the condition: whether the one addressed or
+  -- the one named waits and slows is unclear, asked)
+  local cw = self:find_word(b, a, "@condition")
+  local subj = cw < a and self:refs_in(cw + 1, a, "aircraft")[1]
+  if subj and #self:refs_in(a, s.trig, "aircraft") == 0 then
+    for _, r in ipairs(self:refs_in(1, b, "aircraft")) do
+      if r.name:upper() ~= subj.name:upper() then
+        self.ask = string.format("'%s': should %s or %s do what follows? Please say the instruction again with "
+          .. "its callsign.", self:raw(cw, s.trig), r.name:upper(), subj.name:upper())
+        return nil
+      end
+    end
+  end
   if groupwise and ((self:state(ids[1]) or {}).alt_ft or 0) < L.groupwise_from_ft
       and not self:on_the_way(ids[1], groupwise) then
     return nil

@@ -619,6 +619,9 @@ return {
       "descending", "climbing", "reducing", "increasing", "turning", "maintaining" },
   typo_place_nm = 250,
   -- units after a value that keep "FL 2 10" two values ("fl 2 10 knots"): a level's figures are never split before them
+  -- words that, straight after a split typed level, take it back (grammar.lua's split level check: "FL 16 0 - sorry,
+  -- I mean one six zero" is the correction's to read)
+  level_split_taken_back = { sorry = true, sry = true, correction = true, corr = true },
   level_split_units = { knots = true, kts = true, kt = true, knot = true, degrees = true, deg = true, nm = true,
                         miles = true, mile = true, minutes = true, min = true, seconds = true, sec = true, fpm = true,
                         feet = true, ft = true, percent = true },
@@ -1045,6 +1048,11 @@ return {
                                "a", "bit", "little", "slightly", "just", "rather", "quite", "definitely", "probably",
                                "really", "still", "maybe", "kind", "of", "i", "think" },
                    pronouns = { "that", "that's", "thats", "this", "it", "it's", "its" } },
+  -- words that open a condition said first after a self-correction's run ("descend FL210, sorry, after EPVOK
+  -- descend FL200": the instruction after the condition takes the place of the one before the run; grammar.lua
+  -- G:corrected_condition)
+  self_correction_condition_openers = { "after", "at", "over", "overhead", "passing", "reaching", "when", "once",
+                                        "upon" },
   self_correction_reason_openers = { "it's", "that's", "its", "it", "that", "he's", "she's", "they're" },
   -- who speaks, said as a label before the request ("instructor: KLM101 turn right", "instructor here:
   -- create ...", "sim op: ..."): the label is no part of the request

@@ -19489,3 +19489,50 @@ do
     "ALT DAH3301 FL250 ; SPD DAH3301 250 ; ATALT DAH3301 FL280 SPD DAH3301 280")
   asked(ex("Air Algerie 3301 descend FL250 and after 300 reduce 260"), "'after 300' may be a level")
 end
+
+-- Cycle 61 (fhz10): hazards of conditions and typed levels
+do
+  local _, ex = scene({ "CRE SAS471 A320 56.0 12.0 180 FL280 280", "CRE EWG83 A320 56.3 12.4 200 FL260 270",
+    "CRE TAP29 A321 55.6 12.9 090 FL300 290", "DEFWPT TOLPA 55.0 12.1", "DEFWPT KEMUR 54.6 12.3",
+    "ADDWPT SAS471 TOLPA", "ADDWPT SAS471 KEMUR", "ADDWPT EWG83 TOLPA" })
+  -- a self-correction whose instruction said in its place opens with a condition ("after", "at", "when passing",
+  -- "once past"): the one taken back is never sent now; the callsign said again after "sorry" changes nothing
+  check_eq(ex("SAS471 descend FL240, sorry, after TOLPA descend FL240"), "AT SAS471 TOLPA DO ALT SAS471 FL240")
+  check_eq(ex("Scandinavian 471 descend flight level 250, no, when passing TOLPA descend flight level 230"),
+    "AT SAS471 TOLPA DO ALT SAS471 FL230")
+  check_eq(ex("SAS471 reduce speed 250, sorry, SAS471 at KEMUR reduce speed 240"), "AT SAS471 KEMUR DO SPD SAS471 240")
+  check_eq(ex("EWG83 turn left heading 150, wait, once past TOLPA, turn left heading 150"),
+    "AT EWG83 TOLPA DO HDG EWG83 150 LEFT")
+  -- ("sorry" typed with no mark before it, where a condition and an instruction follow it)
+  check_eq(ex("sas471 desc fl240 sry after tolpa desc fl230"), "AT SAS471 TOLPA DO ALT SAS471 FL230")
+  check_eq(ex("SAS471 reduce 250 sorry I mean at KEMUR reduce 240"), "AT SAS471 KEMUR DO SPD SAS471 240")
+  -- of another kind it is asked which stands; "and" after the run adds; a condition alone after it is asked
+  asked(ex("SAS471 descend FL240, sorry, after TOLPA reduce speed 250"), "a condition of another kind")
+  check_eq(ex("SAS471 descend FL240, sorry, and after TOLPA reduce speed 250"),
+    "ALT SAS471 FL240 ; AT SAS471 TOLPA DO SPD SAS471 250")
+  asked(ex("SAS471 descend FL240, sorry, after TOLPA"), "a condition with no instruction after it")
+  -- a level condition on another aircraft after the instruction is asked, never given to the one instructed
+  asked(ex("SAS471 descend FL240 once EWG83 reaches FL250"), "another aircraft's level")
+  asked(ex("TAP29 reduce speed 260 when Eurowings 83 has reached FL240"), "another aircraft's level, said in words")
+  asked(ex("SAS471 turn right heading 250 as soon as TAP29 reaches FL290"), "another aircraft's level, a turn")
+  check_eq(ex("SAS471 descend FL240 once it reaches FL260"), "ATALT SAS471 FL260 ALT SAS471 FL240")
+  check_eq(ex("SAS471 descend FL240 when SAS471 reaches FL270"), "ATALT SAS471 FL270 ALT SAS471 FL240")
+  -- (in a clause of its own after the first instruction, with no callsign after the condition, who does what follows
+  -- is asked; the aircraft named alone, or "it", stays read)
+  asked(ex("SAS471 descend FL240, when TAP29 reaches FL310 reduce 250"), "whose speed after another's level")
+  asked(ex("EWG83 climb FL280 and once SAS471 passes FL270 turn left heading 150"), "whose turn after another's level")
+  check_eq(ex("SAS471 descend FL240, when it passes FL260 reduce 250"),
+    "ALT SAS471 FL240 ; ATALT SAS471 FL260 SPD SAS471 250")
+  check_eq(ex("when TAP29 passes FL310 reduce 260"), "ATALT TAP29 FL310 SPD TAP29 260")
+  -- a typed level split two figures then one ("fl 24 0"), or after "flight level", is asked like "FL3 60"
+  asked(ex("SAS471 descend fl 24 0"), "a level split two and one")
+  asked(ex("TAP29 climb FL31 0 and speed 280"), "a level split two and one, more after it")
+  -- (after "flight level" the figures join, cycle 47's reading)
+  check_eq(ex("EWG83 descend flight level 22 0"), "ALT EWG83 FL220")
+  check_eq(ex("EWG83 descend FL 2 2 0"), "ALT EWG83 FL220")
+  -- (a split level taken back by a correction straight after it is the correction's to read)
+  check_eq(ex("TAP29 climb FL 31 0 - sorry, I mean FL320"), "ALT TAP29 FL320")
+  asked(ex("TAP29 climb FL 31 0, no, FL320"), "a split level before 'no'")
+  check_eq(ex("EWG83 descend flight level 2 2 0"), "ALT EWG83 FL220")
+  check_eq(ex("EWG83 descend FL 220"), "ALT EWG83 FL220")
+end
