@@ -15561,22 +15561,10 @@ function G.after_reach(text, world)
   return (text:gsub("(%f[%a][Aa][Ff][Tt][Ee][Rr]%s+)([Rr][Ee][Aa][Cc][Hh])(%f[%A])", "%1%2ing%3"))
 end
 
--- "after it will pass IBLAN", "when it will reach level 150", "when he will be above level 100" (the future tense
--- of Russian formal English in a condition): "will" between the aircraft's pronoun and a verb of passing, reaching
--- or being, after "when", "once", "after", "until" or "till", is dropped: the text as "after it pass IBLAN" reads.
--- The same future in Hungarian, Romanian and Ukrainian English: "when it will have 300 knots" reads as "when it has
--- 300 knots"; "when speed will be 250" as "when speed is 250" (the aircraft's speed reaching the value); "when it
--- will descend to FL250" / "will climb to" as "when it reaches FL250" (the level reached, no clearance to it).
--- "will" anywhere else is kept.
-G.future_will_sets = { opens = set_of({ "when", "once", "after", "until", "till" }),
-  subjects = set_of({ "it", "he", "she", "they" }),
-  verbs = set_of({ "pass", "reach", "cross", "overfly", "be", "get", "descend", "climb", "slow", "leave", "have" }),
-  moving = set_of({ "descend", "climb" }) }
 -- "It is now 14:31:40: ...", "Now, at 14:02:10, ...", "We are at 10:04:20 now; ...", "At this point, 14:31:50, ...",
 -- "This is 14:03, ...": a clock time told as the present moment of a report is no time to run anything at (no
 -- SCHEDULE, no fast-forward): the phrase and the mark after it are dropped (after "at this point" only the time).
 -- Each pattern of G.clock_now_patterns is tried on the lower-cased text (same lengths) and cut from the text.
-G.clock_now_patterns = {}
 do
   local CLOCK = "%d%d?:%d%d[:%d]*%s*[uU]?[tT]?[cC]?"
   G.clock_now_patterns = {
@@ -15663,6 +15651,17 @@ function G.clock_now(text)
   return text
 end
 
+-- "after it will pass IBLAN", "when it will reach level 150", "when he will be above level 100" (the future tense
+-- of Russian formal English in a condition): "will" between the aircraft's pronoun and a verb of passing, reaching
+-- or being, after "when", "once", "after", "until" or "till", is dropped: the text as "after it pass IBLAN" reads.
+-- The same future in Hungarian, Romanian and Ukrainian English: "when it will have 300 knots" reads as "when it has
+-- 300 knots"; "when speed will be 250" as "when speed is 250" (the aircraft's speed reaching the value); "when it
+-- will descend to FL250" / "will climb to" as "when it reaches FL250" (the level reached, no clearance to it).
+-- "will" anywhere else is kept.
+G.future_will_sets = { opens = set_of({ "when", "once", "after", "until", "till" }),
+  subjects = set_of({ "it", "he", "she", "they" }),
+  verbs = set_of({ "pass", "reach", "cross", "overfly", "be", "get", "descend", "climb", "slow", "leave", "have" }),
+  moving = set_of({ "descend", "climb" }) }
 function G.future_will(text)
   if not text:lower():find("%f[%a]will%f[%A]") then return text end
   local F = G.future_will_sets
