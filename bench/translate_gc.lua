@@ -13,20 +13,14 @@
 -- usage: squawk run --unsafe bench/translate_gc.lua [PASSES]   (--unsafe: the corpora in ../shared/corpora; PASSES
 --   of each design, default 3)
 local graph = require("translate.graph")
-local nodes = require("translate.nodes")
 local passes = tonumber(arg and arg[1]) or 3
 local clock = os.clock
 
 local cases = {}
-for _, path in ipairs({ "../shared/corpora/nl2trafscript_dev.tsv", "../shared/corpora/vice_trafscript.tsv" }) do
-  squawk.translate.evaluate(path, function(c)
-    local sim = squawk.sim.new()
-    for _, line in ipairs(nodes.split_commands(c.setup)) do sim:exec(line) end
-    local opts = { mode = "offline", sim = sim, waypoints = nodes.defined_waypoints(c.setup) }
-    cases[#cases + 1] = { utterance = c.utterance, opts = opts }
-    return graph.translate(c.utterance, opts)
-  end)
-end
+require("translate_cases").each(function(utterance, opts)
+  cases[#cases + 1] = { utterance = utterance, opts = opts }
+  return graph.translate(utterance, opts)
+end)
 
 local designs = { "A", "B", "C" }
 local latency, steps, total, kb = {}, {}, {}, {}

@@ -10,7 +10,6 @@
 -- usage: squawk run --unsafe bench/translate_instructions.lua [TOP] [TAIL]   (--unsafe: the debug
 --   library; the corpora must be in ../shared/corpora; TAIL defaults to 10)
 local graph = require("translate.graph")
-local nodes = require("translate.nodes")
 local top = tonumber(arg and arg[1]) or 25
 local tail = tonumber(arg and arg[2]) or 10
 assert(debug and debug.sethook, "run with --unsafe: the count hook needs the debug library")
@@ -25,21 +24,15 @@ local function count()
   per_function[key] = (per_function[key] or 0) + 1
 end
 
-for _, path in ipairs({ "../shared/corpora/nl2trafscript_dev.tsv", "../shared/corpora/vice_trafscript.tsv" }) do
-  squawk.translate.evaluate(path, function(c)
-    local sim = squawk.sim.new()
-    for _, line in ipairs(nodes.split_commands(c.setup)) do sim:exec(line) end
-    local opts = { mode = "offline", sim = sim, waypoints = nodes.defined_waypoints(c.setup) }
-    graph.translate(c.utterance, opts)
-    local before = total
-    debug.sethook(count, "", 1)
-    local r = graph.translate(c.utterance, opts)
-    debug.sethook()
-    requests = requests + 1
-    per_request[requests] = { total - before, select(2, c.utterance:gsub("%S+", "")), c.utterance }
-    return r
-  end)
-end
+require("translate_cases").each(function(utterance, opts)
+  local before = total
+  debug.sethook(count, "", 1)
+  local r = graph.translate(utterance, opts)
+  debug.sethook()
+  requests = requests + 1
+  per_request[requests] = { total - before, select(2, utterance:gsub("%S+", "")), utterance }
+  return r
+end)
 
 print(string.format("%d requests, %.0f Lua instructions per request", requests, total / requests))
 local rows = {}

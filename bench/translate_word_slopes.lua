@@ -9,7 +9,6 @@
 -- over the mean printed here.
 -- usage: squawk run --unsafe bench/translate_word_slopes.lua [TOP] [STEP]   (with SQUAWK_NAVDATA set)
 local graph = require("translate.graph")
-local nodes = require("translate.nodes")
 local top = tonumber(arg and arg[1]) or 20
 local step = tonumber(arg and arg[2]) or 7
 assert(debug and debug.sethook, "run with --unsafe: the count hook needs the debug library")
@@ -47,20 +46,14 @@ local function sample()
 end
 
 local words = {}
-for _, path in ipairs({ "../shared/corpora/nl2trafscript_dev.tsv", "../shared/corpora/vice_trafscript.tsv" }) do
-  squawk.translate.evaluate(path, function(c)
-    local sim = squawk.sim.new()
-    for _, line in ipairs(nodes.split_commands(c.setup)) do sim:exec(line) end
-    local opts = { mode = "offline", sim = sim, waypoints = nodes.defined_waypoints(c.setup) }
-    graph.translate(c.utterance, opts)
-    request = request + 1
-    words[request] = select(2, c.utterance:gsub("%S+", ""))
-    debug.sethook(sample, "", step)
-    local r = graph.translate(c.utterance, opts)
-    debug.sethook()
-    return r
-  end)
-end
+require("translate_cases").each(function(utterance, opts)
+  request = request + 1
+  words[request] = select(2, utterance:gsub("%S+", ""))
+  debug.sethook(sample, "", step)
+  local r = graph.translate(utterance, opts)
+  debug.sethook()
+  return r
+end)
 
 -- the fit over the requests of at most 60 words (the one request of 219 words, a stutter, would lead the fit)
 local n, sx, sxx = 0, 0, 0
