@@ -6628,6 +6628,25 @@ function G:corrected_condition(c)
   return nil
 end
 
+-- ("descend FL210 sorry turn left heading 100", "descend FL210 sorry i mean turn left heading 100"): "sorry" with no
+-- mark before it, at `a`, opens a self-correction run too where an instruction word follows the run's words (at
+-- `bare`) and one was said before it; the run then replaces or asks as after a comma, never adds silently.
+-- (only "i mean", fillers and marks between: "sorry I climbed it by mistake" is an apology with its reason)
+function G.bare_sorry_replaces(self, a, bare)
+  if bare > #self.t or not self:intent_at(bare) or self:in_reason(bare) or self:word(a - 1, "am i'm") then
+    return false
+  end
+  for k = a + 1, bare - 1 do
+    local t = self.t[k]
+    if not (t.kind == "punct" or t.filler or self:word(k, "mean") or self:word(k, "i") and self:word(k + 1, "mean")) then
+      return false
+    end
+  end
+  for k = a - 1, 1, -1 do
+    if self:intent_at(k) and not self:in_reason(k) then return true end
+  end
+  return false
+end
 function G:self_corrected()
   local a = 2
   while a <= #self.t do
@@ -6638,7 +6657,7 @@ function G:self_corrected()
     while bare and self.t[bare] and (self.t[bare].kind == "punct" or self.t[bare].filler or SC_WORDS[self.t[bare].text]) do
       bare = bare + 1
     end
-    if self.t[a].kind == "punct" or (bare and self:corrected_condition(bare)) then
+    if self.t[a].kind == "punct" or (bare and (self:corrected_condition(bare) or G.bare_sorry_replaces(self, a, bare))) then
       while self.t[c] and (self.t[c].kind == "punct" or self.t[c].filler or SC_WORDS[self.t[c].text]) do
         -- ("no" straight before what it negates is no correction: "conflict detection only, no resolution")
         local nx = self.t[c + 1]

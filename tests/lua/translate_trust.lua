@@ -19536,3 +19536,17 @@ do
   check_eq(ex("EWG83 descend flight level 2 2 0"), "ALT EWG83 FL220")
   check_eq(ex("EWG83 descend FL 220"), "ALT EWG83 FL220")
 end
+
+-- Cycle 61 (lead): "sorry" with no mark before it, then another instruction ("descend FL210 sorry turn left heading
+-- 100", "... sorry i mean ..."), replaces or asks as after a comma; an apology with its reason stays set aside
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 90 FL250 280", "CRE DLH4 A320 52 5 90 FL240 280" })
+  asked(ex("KLM12 descend FL210 sorry turn left heading 100"), "another kind after a bare sorry")
+  asked(ex("KLM12 descend FL210 sorry i mean turn left heading 100"), "sorry i mean, another kind")
+  asked(ex("dlh4 reduce 250 sorry climb FL260"), "a speed, then a climb")
+  check_eq(ex("KLM12 descend FL210 sorry descend FL220"), "ALT KLM12 FL220")
+  check_eq(ex("KLM12 descend FL210 sorry i mean FL220"), "ALT KLM12 FL220")
+  check_eq(ex("KLM12 descend FL210 sorry and turn left heading 100"), "ALT KLM12 FL210 ; HDG KLM12 100 LEFT")
+  check_eq(ex("KLM12 sorry climb FL300"), "ALT KLM12 FL300")
+  check_eq(ex("KLM12 descend FL210 sorry for the delay"), "ALT KLM12 FL210")
+end
