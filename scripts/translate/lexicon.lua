@@ -2609,17 +2609,25 @@ return {
       ["corrección"] = "correction",
       -- a moment asked for ("pause, un momento por favor": as English "one moment")
       ["un momento"] = "one moment",
+      -- a Mexican controller's radio words in an English clearance: a value taken back ("left heading 090...
+      -- negativo, right heading 090"), one said again to confirm it ("six thousand, correcto, seis mil"), a
+      -- speed kept until the final's miles ("velocidad 160 hasta 5 millas final"), a new aircraft's place
+      -- ("sobre TPX"), the simulation's clock ("acelera la simulación por 4", "avanza la simulación 3 minutos")
+      negativo = "negative", correcto = "correct", hasta = "until", sobre = "over", acelera = "accelerate",
+      acelere = "accelerate", acelerar = "accelerate", avanza = "advance", avanzar = "advance",
+      ["por favor"] = "please", ["hasta nuevo aviso"] = "until further notice",
       -- how fast a change is flown ("sube rápido a FL270")
       ["rápido"] = "quickly", rapido = "quickly",
     },
     -- words of `words` said the same in Portuguese or Italian: no sign of Spanish alone
     shared = { destino = true, crea = true, continua = true, minuto = true, nivel = true, pause = true, vira = true,
-      gira = true, carga = true, metros = true, altitud = true, ["rápido"] = true, rapido = true },
+      gira = true, carga = true, metros = true, altitud = true, ["rápido"] = true, rapido = true, negativo = true,
+      sobre = true, acelera = true, acelere = true, acelerar = true, ["por favor"] = true },
     -- words also English, Portuguese or Italian ("a", "con", "en", "suba"; "quite", English "I'm quite new to
     -- this"): read only in a sentence another word marks Spanish
     joining = { a = "at", al = "to the", la = "the", el = "the", los = "the", las = "the", un = "a", una = "a",
       en = "at", con = "at", y = "and", mil = "thousand", suba = "climb", de = "of", del = "of the",
-      quite = "remove" },
+      quite = "remove", por = "by" },
   },
   french = {
     words = {

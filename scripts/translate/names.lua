@@ -198,6 +198,9 @@ local names = {
     { "aeroenlaces", "VIV" },  -- (Viva Aerobus's ICAO telephony)
     { "viva aerobus", "VIV" },
     { "costera", "SLI" },  -- (Aeromexico Connect)
+    { "trans aeromar", "TAO" },  -- (Aeromar's ICAO telephony TRANS-AEROMAR)
+    { "transaeromar", "TAO" },
+    { "aeromar", "TAO" },  -- (Aeromar, Mexico: the airline's own name, as Mexican controllers say it)
     { "spirit", "NKS" },  -- (Spirit Wings said short, as US controllers do)
     { "fedex", "FDX" },
     { "ups", "UPS" },

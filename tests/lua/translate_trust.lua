@@ -19550,3 +19550,39 @@ do
   check_eq(ex("KLM12 sorry climb FL300"), "ALT KLM12 FL300")
   check_eq(ex("KLM12 descend FL210 sorry for the delay"), "ALT KLM12 FL210")
 end
+
+-- Cycle 62 (f213): a Mexican approach controller's English: Aeromar by its name and telephony, and the Spanish
+-- radio words said in it ("negativo", "correcto", "hasta", "sobre", "acelera", "avanza", "por favor")
+do
+  local _, ex = scene({ "CRE TAO347 AT76 19.5 -98.9 90 9000 200", "CRE VOI88 A320 19.8 -98.3 250 16000 270",
+    "CRE AMX65 B738 20.0 -98.7 200 FL190 290", "DEFWPT NUBEX 19.9 -98.6", "ADDWPT AMX65 NUBEX" })
+  -- Aeromar (TAO) said by its name or its telephony TRANS-AEROMAR; every character must still match
+  check_eq(ex("Aeromar three four seven, descend and maintain seven thousand"), "ALT TAO347 7000")
+  check_eq(ex("Trans Aeromar 347 turn right heading 140"), "HDG TAO347 140 RIGHT")
+  check_eq(ex("aeromar 347 velocidad uno ocho cero"), "SPD TAO347 180")
+  asked(ex("Aeromar 374 descend 7000"), "digits of another Aeromar flight")
+  asked(ex("Aeromar, climb 11000"), "the airline alone as the addressee")
+  -- "negativo" takes a value back as "negative" does; said alone it stays asked
+  check_eq(ex("Volaris 88 climb flight level 200... negativo, flight level 180"), "ALT VOI88 FL180")
+  check_eq(ex("VOI88 turn left heading 300, negativo, derecha heading 300"), "HDG VOI88 300 RIGHT")
+  asked(ex("Volaris 88 negativo"), "negativo with no instruction")
+  -- "correcto": the value said again to confirm it; another value after it is asked
+  check_eq(ex("Aeromar 347 descend and maintain five thousand, correcto, cinco mil"), "ALT TAO347 5000")
+  check_eq(ex("AMX65 descienda FL150, correcto, y reduzca 250"), "ALT AMX65 FL150 ; SPD AMX65 250")
+  asked(ex("Aeromar 347 descend four thousand, correcto, seis mil"), "two values with correcto between")
+  asked(ex("Aeromexico 65 correcto"), "correcto with no instruction")
+  -- "hasta": a limit the value is flown until, as "until" is (a place beyond the final's 3 to 6 miles is asked)
+  check_eq(ex("Aeromexico 65 reduce 170 hasta cuatro millas final"), "SPD AMX65 170")
+  check_eq(ex("Aeromexico 65 mantenga 250 nudos hasta nuevo aviso"), "SPD AMX65 250")
+  asked(ex("Aeromexico 65 reduce 200 hasta 12 millas final"), "a limit further out than the final")
+  -- "sobre": over a place, for a new aircraft's position or a condition
+  check_eq(ex("crea un Aeromar ATR 72 TAO902 sobre NUBEX rumbo 120 nivel 150 210 nudos"),
+    "CRE TAO902 AT72 NUBEX 120 FL150 210")
+  check_eq(ex("Aeromexico 65 sobre NUBEX descienda nivel 150"), "AT AMX65 NUBEX DO ALT AMX65 FL150")
+  -- the simulation's clock
+  check_eq(ex("acelera la simulación por 6"), "DTMULT 6")
+  check_eq(ex("acelera la simulacion 3 veces, por favor"), "DTMULT 3")
+  check_eq(ex("avanza la simulacion 4 minutos"), "FF 240")
+  -- (French "avance rapide" keeps its reading)
+  check_eq(ex("avance rapide cinq minutes"), "FF 300")
+end
