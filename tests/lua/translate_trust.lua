@@ -19582,4 +19582,7 @@ do
   check_eq(ex("create KLM12 B738 at 52 n 4 e heading 090 FL100 250"), "CRE KLM12 B738 52 4 90 FL100 250")
   -- ("proa" of two digits stays asked as "heading 60" is)
   asked(ex("Gol 2288 proa meia zero, please"), "a heading of two digits")
+  check_eq(ex("TAP 101, when her speed is 270 knots descend FL300"), "ATSPD TAP101 270 ALT TAP101 FL300")
+  asked(ex("TAP 101, when his speed is 270 descend FL300"), "a speed condition with no unit")
+  check_eq(ex("what the Azul 4410 is doing?"), "POS AZU4410")
 end
