@@ -549,7 +549,7 @@ end
 -- "turn left heading 170", "montez au niveau 140" -> "climb to flight level 140". A sentence holding a
 -- marking word of a language (the first of G.said_whole_order holding one) is read in that language alone;
 -- one holding none, in every language's words that mark none.
-G.said_whole_order = { "spanish", "french", "german", "dutch", "malay" }
+G.said_whole_order = { "spanish", "french", "german", "dutch", "portuguese", "malay" }
 function G.said_whole(text)
   local indexes = G.said_whole_index()
   -- (the form of `index` starting at token i, or nil; punctuation may close its last word only; `joining`
@@ -707,6 +707,47 @@ function G.french_in_english(text)
       return nil
     end
     return L.joins.et, i + 1
+  end)
+end
+
+-- Portuguese "e" (and), typed lower case, between two parts of a request ("turn right 40 degrees e descend FL210",
+-- "descend FL230 e speed 270", "LATAM 3302 descend FL160 e Gol 1218 descend FL120") is "and" where no east of a
+-- longitude can be meant: the word before it is no number, or closes a value of one number said after its word
+-- ("fl", "level", "heading", "speed", ... : "FL230 e", "flight level two three zero e", "speed 230 e"), or a number
+-- with its sign ("longitude minus 44.0 e PT02"); and the word after it is no number ("speed 250 e 260" stays
+-- asked) and no letter alone ("cross e c k" spells a fix). A number after a position's other number ("52 4 e",
+-- "at 52 n 4 e") stays as said: the east.
+-- "desculpa", "desculpe" (sorry) with words after it is "sorry", opening a correction ("heading 075... desculpa,
+-- heading 085"); closing the request it is left as said (an apology).
+G.portuguese_value_words = { fl = true, level = true, heading = true, hdg = true, speed = true, spd = true,
+  mach = true, altitude = true, proa = true, nivel = true, ["nível"] = true, velocidade = true }
+function G.portuguese_and(text)
+  if not (text:find("%f[%w]e%f[%W]") or text:find("[Dd]esculp")) then return text end
+  local toks, bare = plain_words(text)
+  local function number(k)
+    local b = bare[k]
+    return b ~= nil and (b:match("^%-?%.?%d[%d%.]*$") ~= nil or NUMBER_WORDS[b] ~= nil
+      or lexicon.foreign_digits[b] ~= nil)
+  end
+  return tokens.rewrite(text, toks, function(i)
+    if (bare[i] == "desculpa" or bare[i] == "desculpe") and toks[i + 1] then
+      return "sorry" .. (toks[i]:match("%p+$") or ""), i + 1
+    end
+    if toks[i] ~= "e" or i < 2 or not toks[i + 1] or toks[i - 1]:match("[%.;:]$") then return nil end
+    if number(i + 1) or #bare[i + 1] < 2 then return nil end  -- (a letter after it: a name spelled, "cross e c k")
+    if number(i - 1) then
+      local k, digits = i - 1, 0
+      while k >= 1 and number(k) and (k == i - 1 or not toks[k]:match("%p$")) do
+        if bare[k]:match("%d") then digits = digits + 1 end
+        k = k - 1
+      end
+      local signed = bare[i - 1]:match("^%-") or (k == i - 2 and (bare[k] == "minus" or bare[k] == "negative"))
+      local valued = k >= 1 and (G.portuguese_value_words[bare[k]] or bare[k] == "fl") and digits <= 1
+      if not (signed or valued) then return nil end
+    elseif bare[i - 1]:match("^fl%d+$") == nil and #bare[i - 1] == 1 then
+      return nil  -- (a letter before it: "N 52 E", a spelled callsign)
+    end
+    return "and", i + 1
   end)
 end
 
@@ -2300,11 +2341,16 @@ function G.speed_after_general_verb(text)
       local speed = sp and (pr == "" and sp2 == "" or pr == "with" or pr == "at" and v ~= "put")
         and (u == "knots" or u == "knot" or u == "kts" or u == "kt")
       local mach_sp, mprep, mach, mat = rest:match("^(%s+)(%a+)%s+([Mm][Aa][Cc][Hh]%s*0?[%.,]%d%d?)%f[%D]()")
+      -- ("put Mach .78", nothing between, as "put 270 knots")
+      if not mach_sp then
+        mach_sp, mach, mat = rest:match("^(%s+)([Mm][Aa][Cc][Hh]%s*0?[%.,]%d%d?)%f[%D]()")
+        mprep = mach_sp and ""
+      end
       local mpr = (mprep or ""):lower()
       if speed then
         out[#out + 1] = text:sub(from, b - 1) .. "speed" .. sp .. n .. sp3 .. unit
         from = e + at - 1
-      elseif mach_sp and (mpr == "with" or mpr == "at" and v ~= "put") then
+      elseif mach_sp and (mpr == "with" or mpr == "" or mpr == "at" and v ~= "put") then
         out[#out + 1] = text:sub(from, b - 1) .. "speed" .. mach_sp .. mach
         from = e + mat - 1
       end
@@ -2449,7 +2495,7 @@ local function written_forms(text, world)
   -- "47,5 north", "8,5 degrees east", "factor to 1,1": a decimal comma (G.decimal_comma) is the point
   where("%d,%d", "()(%d+),(%d+)()", function(b, whole, part, e) return G.decimal_comma(text, b, whole, part, e) end)
   text = typed_abbreviations(lone_multipliers(tokens.numerals_apart(G.unfinished_restarts(G.cut_off_restarts(text)), DIGIT_WORDS), world))
-  text = hyphened_types(spelled(G.spelled_letter_a(heard_forms(negated_values(G.readback_reported(readback_heard(self_corrections(G.said_but(G.cancel_corrections(unlabelled(foreign_digits(G.said_whole(G.french_in_english(G.denied_word(G.dutch_chat(G.condition_then(G.condition_copula(G.recreate_said(text)))))))))))))))))))
+  text = hyphened_types(spelled(G.spelled_letter_a(heard_forms(negated_values(G.readback_reported(readback_heard(self_corrections(G.said_but(G.cancel_corrections(unlabelled(foreign_digits(G.portuguese_and(G.said_whole(G.french_in_english(G.denied_word(G.dutch_chat(G.condition_then(G.condition_copula(G.recreate_said(text))))))))))))))))))))
   low = text:lower()
   -- a position typed as whole degrees after the hemisphere, then minutes ("N55 50.0 W003 20.0", "S33 57
   -- E151 10"): decimal degrees before their hemisphere ("55.833333 N 3.333333 W"); minutes of 60 or more

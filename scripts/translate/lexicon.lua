@@ -2520,6 +2520,11 @@ return {
     -- at LAKAM, he must descend ...", "descend FL320 when she arrive at GALIT")
     { heard = { "he arrive to", "he arrive at", "she arrive to", "she arrive at", "he arrives to", "he arrives at",
                 "she arrives to", "she arrives at" }, means = "it reaches", after = { "when", "once" } },
+    -- (a Portuguese speaker's "chegar em", arriving "in" a place: "when he arrives in BOTOM he must descend ...",
+    -- "when it arrives in FL250")
+    { heard = { "you arrive in", "it arrive in", "arrive in" }, means = "you reach", after = { "when", "once" } },
+    { heard = { "it arrives in", "arrives in", "he arrive in", "she arrive in", "he arrives in", "she arrives in" },
+      means = "it reaches", after = { "when", "once" } },
     -- (a rate said "feet minute", as French "pieds minute": "descend FL100 at 1800 feet minute")
     { heard = { "feet minute", "ft minute" }, means = "feet per minute", after = { "#number" } },
     -- (and "arrive" said alone, for "llegar" / "chegar" with no place: "descend FL180 and when you arrive reduce
@@ -2529,6 +2534,10 @@ return {
     -- ("when you are over VIPSA descend FL120": "estar sobre", the waypoint passed)
     { heard = { "you are over", "it is over", "you're over", "it's over" }, means = "passing",
       after = { "when", "once" } },
+    -- (the aircraft's speed as its own, "his" or "her" as Portuguese "a velocidade dele" says it: "when his speed is
+    -- 250 knots", "once its speed is 260 kt": the speed reached, as "when it is at 250 knots")
+    { heard = { "his speed is", "her speed is", "its speed is" }, means = "it is at",
+      between = { { "when", "once" }, { "#number" } } },
     { heard = { "you are with", "it is with", "you're with", "it's with" }, means = "it is at",
       between = { { "when", "once" }, { "#number", "fl", "flight", "speed", "mach" } } },
     -- (the aircraft called "he" or "she", as a speaker of a language whose noun for it has that gender says it,
@@ -2755,6 +2764,27 @@ return {
     -- small words also English or another language's, read only in a Dutch sentence ("pauze even": for a moment)
     joining = { de = "the", het = "the", en = "and", op = "to", van = "of", met = "with", even = "for a moment",
       links = "left", rechts = "right" },
+  },
+  -- Brazilian Portuguese words in a controller's or student's English ("Gol 1442 turn right proa 300", "descend
+  -- nível 100, depois reduce to 220 knots", "heading 075... desculpa, heading 085", "speed 240, tá bom", "cria o
+  -- GLO1234 ..."): "proa" is the heading, "nível" the level, "depois" (then) and "e depois" (and then) join two
+  -- instructions in order, "tá bom" (all right) asks for nothing. "e" alone (and) and "desculpa" (sorry) are
+  -- G.portuguese_and's: "e" read only where no longitude's east can be meant, "desculpa" only before what it
+  -- corrects (closing the request it stays the apology it is, accounted's).
+  portuguese = {
+    words = {
+      proa = "heading", ["nível"] = "level", nivel = "level", ["nível de voo"] = "flight level",
+      ["nivel de voo"] = "flight level", velocidade = "speed", graus = "degrees", depois = "then",
+      ["e depois"] = "and then", ["depois de"] = "after", ["tá bom"] = "ok", ["ta bom"] = "ok", ["está bom"] = "ok",
+      ["esta bom"] = "ok",
+      -- the experimenter's commands ("cria TAM4444 A320 ...", "avança 10 minutes")
+      cria = "create", crie = "create", criar = "create", ["avança"] = "advance", avanca = "advance",
+      ["avance"] = "advance",
+    },
+    -- words of `words` said the same in Spanish or English: no sign of Portuguese alone
+    shared = { nivel = true, ["nível"] = true, avance = true },
+    -- ("cria o GLO1234": the article, read only in a sentence another word marks Portuguese)
+    joining = { o = "the" },
   },
   -- Indonesian and Malay words in a controller's English ("Batik 7151 dan Lion 214 climb FL350", "flight level now
   -- berapa?"): "dan" is "and", "berapa" "how much"; neither marks the sentence (the particles are

@@ -2360,14 +2360,16 @@ return function(intent, rule, words)
     return false
   end }
   -- an indirect question ("could you tell me what Speedbird 8CK is currently doing", "I'd like to know what
-  -- the easyJet is doing"): "what", the aircraft, "is" or "are", at most two of lexicon.indirect_question_adverbs,
-  -- then "doing"
+  -- the easyJet is doing"), or a Portuguese speaker's direct one in that order ("what the LATAM 3320 is doing?"):
+  -- "what", "the" or not, the aircraft, "is" or "are", at most two of lexicon.indirect_question_adverbs, then "doing"
   rule { "doing", "pos", when = function(g, i)
     local k = i - 1
     while k > i - 3 and g:word(k, "@indirect_question_adverbs") do k = k - 1 end
     if not g:word(k, "is are") then return false end
     for _, r in ipairs(g.refs) do
-      if r.kind == "aircraft" and r.e == k then return g:word(r.b - 1, "what") or g:word(r.b, "what") end
+      if r.kind == "aircraft" and r.e == k then
+        return g:word(r.b - 1, "what") or g:word(r.b, "what") or (g:word(r.b - 1, "the") and g:word(r.b - 2, "what"))
+      end
     end
     return false
   end }

@@ -19586,3 +19586,39 @@ do
   -- (French "avance rapide" keeps its reading)
   check_eq(ex("avance rapide cinq minutes"), "FF 300")
 end
+
+-- Cycle 62 (f210): a Brazilian speaker's English with Portuguese words: "e" (and) between two instructions or two
+-- aircraft where no longitude's east can be meant, "proa" (heading), "nível" (level), "depois" / "e depois" (then),
+-- "desculpa" before a correction, "tá bom" (all right), "cria" (create), "avança" (fast-forward), "arrives in" a fix
+-- after "when", "put Mach" after a condition
+do
+  local _, ex = scene({ "DEFWPT RIOSA -22.5 -44.0", "CRE AZU4410 E195 -23.3 -45.2 075 FL240 280",
+    "ADDWPT AZU4410 RIOSA", "CRE GLO2288 B738 -22.9 -43.9 255 FL250 290", "CRE TAP101 A332 -22.0 -44.0 180 FL330 280" })
+  check_eq(ex("Gol 2288 descend flight level two one zero e reduce speed two five zero"),
+    "ALT GLO2288 FL210 ; SPD GLO2288 250")
+  check_eq(ex("Azul 4410 turn left 15 degrees e climb FL260"), "HDG AZU4410 60 LEFT ; ALT AZU4410 FL260")
+  check_eq(ex("Gol 2288 descend FL210 e TAP 101 climb FL350"), "ALT GLO2288 FL210 ; ALT TAP101 FL350")
+  check_eq(ex("the TAP 101 proa two seven zero e nível 310"), "HDG TAP101 270 ; ALT TAP101 FL310")
+  check_eq(ex("Gol 2288 reduce to 230 knots e depois descend FL200"), "SPD GLO2288 230 ; ALT GLO2288 FL200")
+  check_eq(ex("Azul 4410 descend FL200 depois proa 120"), "ALT AZU4410 FL200 ; HDG AZU4410 120")
+  check_eq(ex("Gol 2288 heading 200... desculpe, heading 210"), "HDG GLO2288 210")
+  check_eq(ex("Gol 2288 climb FL270, desculpa"), "ALT GLO2288 FL270")
+  check_eq(ex("Azul 4410 speed 250, tá bom?"), "SPD AZU4410 250")
+  check_eq(ex("Azul 4410 when she arrives in RIOSA descend to FL180"), "AT AZU4410 RIOSA DO ALT AZU4410 FL180")
+  check_eq(ex("Azul 4410 climb FL300 and when at FL280 put mach .76"),
+    "ALT AZU4410 FL300 ; ATALT AZU4410 FL280 SPD AZU4410 M0.76")
+  check_eq(ex("cria GLO5555 B738 in -22.0 -45.0 proa 200 nível 280 velocidade 290"),
+    "CRE GLO5555 B738 -22 -45 200 FL280 290")
+  check_eq(ex("avança 5 minutes"), "FF 300")
+  -- ("e" before a value may be a second value or an east: asked; after a position's two numbers it is the east)
+  asked(ex("TAP 101 speed 260 e 250"), "'e' before a number")
+  check(not ex("Azul 4410 cross e c k at FL200"):match("^ALT"), "'e' spelling a name")
+  asked(ex("Gol 2288 descend FL210 E TAP 101 climb FL350"), "'E' in capitals, a hemisphere")
+  asked(ex("create KLM12 B738 at 52 4 e heading 090 FL100 250"), "'e' after a position's two numbers")
+  check_eq(ex("create KLM12 B738 at 52 n 4 e heading 090 FL100 250"), "CRE KLM12 B738 52 4 90 FL100 250")
+  -- ("proa" of two digits stays asked as "heading 60" is)
+  asked(ex("Gol 2288 proa meia zero, please"), "a heading of two digits")
+  check_eq(ex("TAP 101, when her speed is 270 knots descend FL300"), "ATSPD TAP101 270 ALT TAP101 FL300")
+  asked(ex("TAP 101, when his speed is 270 descend FL300"), "a speed condition with no unit")
+  check_eq(ex("what the Azul 4410 is doing?"), "POS AZU4410")
+end
