@@ -549,7 +549,7 @@ end
 -- "turn left heading 170", "montez au niveau 140" -> "climb to flight level 140". A sentence holding a
 -- marking word of a language (the first of G.said_whole_order holding one) is read in that language alone;
 -- one holding none, in every language's words that mark none.
-G.said_whole_order = { "spanish", "french", "german", "dutch", "portuguese", "malay" }
+G.said_whole_order = { "spanish", "french", "german", "dutch", "portuguese", "nordic", "malay" }
 function G.said_whole(text)
   local indexes = G.said_whole_index()
   -- (the form of `index` starting at token i, or nil; punctuation may close its last word only; `joining`
@@ -5029,15 +5029,17 @@ end
 G.speed_held = { alt = true, hdg = true, vs = true, spd = true, maintain = true, direct = true, lnav = true,
   vnav = true }
 function G:at_speed(s)
-  -- (G:condition_word opens on one of these words)
-  if not G.speed_held[s.intent] or not self:said("@condition as") then return nil end
-  local v
+  -- (G:condition_word opens on one of these words; "reaching" opens alone, before a speed said with its unit:
+  -- "speed 310, reaching 300 knots climb FL260", "on reaching Mach .78 descend FL350")
+  if not G.speed_held[s.intent] or not self:said("@condition as reaching") then return nil end
+  local v, reaching
   for i = s.b, s.trig - 1 do
     v = self:condition_word(i)
+    if not v and self:word(i, "reaching") then v, reaching = i + 1, true end
     if v then break end
   end
   local q = v and self:quantities(v, s.trig)[1]
-  if not q then return nil end
+  if not q or (reaching and not (q.b == v and (q.kind == "speed" or q.kind == "mach"))) then return nil end
   local noun, slowed = false, false
   for x = v, q.b - 1 do
     -- (the noun as the subject of a verb of reaching: "when the speed is 230", "once speed reaches 250")

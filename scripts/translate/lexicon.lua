@@ -352,7 +352,10 @@ return {
         "do widzenia", "do videnia", "kalo taxidi", "kali mera", "kali spera", "buona giornata", "buona serata",
         "buon viaggio", "grazie mille", "per favore", "bon voyage", "bonne journee", "bonne soiree", "boa tarde",
         "boa noite", "boa viagem", "bom dia", "buen viaje", "hasta luego", "guten tag", "god dag", "god morgen",
-        "ha det", "dank je", "dank u", "iyi gunler", "iyi ucuslar", "iyi aksamlar", "iyi geceler", "iyi calismalar",
+        "ha det",
+        -- (the Nordic languages' thanks and farewells in two or more words: "tack så mycket", "mange tak", "hej då")
+        "tack sa mycket", "tack tack", "tusen tack", "mange tak", "tusind tak", "takk skal du ha", "tak skal du have",
+        "hej da", "hej hej", "ha det bra", "vi ses", "god morgon", "god kvall", "god kveld", "god aften", "dank je", "dank u", "iyi gunler", "iyi ucuslar", "iyi aksamlar", "iyi geceler", "iyi calismalar",
         "iyi yolculuklar", "iyi nobetler", "kolay gelsin", "gule gule", "sag ol", "sag olun", "hosca kalin", "do svidaniya", "ni hao", "ma'a salama",
         "ma salama", "no wahala", "at pilot's discretion", "at your discretion", "pilot's discretion",
         "pilot discretion", "your discretion", "at pilot discretion", "pilots discretion", "at pilots discretion",
@@ -663,7 +666,7 @@ return {
   -- word of two to five letters in any case (a fix's ident typed in lower case). Elsewhere it stays as typed ("direct
   -- TRN" is Turnberry, "trail red" a colour, "Red Cap" an airline).
   typed_abbreviations = {
-    expd = { word = "expedite" }, expdt = { word = "expedite" }, til = { word = "until" },
+    expd = { word = "expedite" }, expdt = { word = "expedite" }, til = { word = "until", not_prev = "legg" },
     maint = { word = "maintain", next = "#number fl flight speed spd heading hdg altitude alt level present own" },
     mnt = { word = "maintain", next = "#number fl flight speed spd heading hdg altitude alt level present own" },
     -- (the vowels left out of a level change: "dsnd 5000", "clmb fl240")
@@ -785,7 +788,9 @@ return {
     whit = { word = "what", caps_kept = true },
     wi = { word = "with", not_prev = "direct dct dir via to at over after cross from", caps_kept = true },
     naw = { word = "no", caps_kept = true }, nae = { word = "no", caps_kept = true },
-    haud = { word = "hold", caps_kept = true }, och = { word = "oh", caps_kept = true },
+    haud = { word = "hold", caps_kept = true },
+    -- ("och" opening a sentence is the Scots "oh"; between words it is Swedish "and", lexicon.said_whole.nordic's)
+    och = { word = "oh", prev = "#start", caps_kept = true },
     aye = { word = "yes", not_prev = "direct dct dir via to at over after cross from", caps_kept = true },
     -- (Turkish "evet", yes, and "hayır", no, said in an English clearance or as the answer to squawk's question:
     -- "evet, Turkish 6RT descend ...", "climb FL110, hayır, FL100"; in capitals or after a place's verb they stay)
@@ -2629,9 +2634,10 @@ return {
       ["rápido"] = "quickly", rapido = "quickly",
     },
     -- words of `words` said the same in Portuguese or Italian: no sign of Spanish alone
+    -- ("pausa" is Portuguese, Italian and Swedish too)
     shared = { destino = true, crea = true, continua = true, minuto = true, nivel = true, pause = true, vira = true,
       gira = true, carga = true, metros = true, altitud = true, ["rápido"] = true, rapido = true, negativo = true,
-      sobre = true, acelera = true, acelere = true, acelerar = true, ["por favor"] = true },
+      pausa = true, sobre = true, acelera = true, acelere = true, acelerar = true, ["por favor"] = true },
     -- words also English, Portuguese or Italian ("a", "con", "en", "suba"; "quite", English "I'm quite new to
     -- this"): read only in a sentence another word marks Spanish
     joining = { a = "at", al = "to the", la = "the", el = "the", los = "the", las = "the", un = "a", una = "a",
@@ -2785,6 +2791,43 @@ return {
     shared = { nivel = true, ["nível"] = true, avance = true },
     -- ("cria o GLO1234": the article, read only in a sentence another word marks Portuguese)
     joining = { o = "the" },
+  },
+  -- Swedish, Norwegian and Danish words in a Scandinavian controller's or sim operator's terse English ("direct
+  -- GATMA og descend FL100", "climb FL280 nej FL260", "ta bort DLH2TC", "pausa simuleringen"): "og" and "och"
+  -- (and; "och" opening a sentence is the Scots "oh", lexicon.typed_abbreviations') join instructions, "og så"
+  -- "and then" (written as squawk reads it, its accents taken off); "nej"/"nei" (no) opens
+  -- a self-correction as English "no" does; the courtesy ("tack", "takk", "hej") is lexicon.accounted's
+  nordic = {
+    words = {
+      og = "and", och = "and", ["og sa"] = "and then", ["och sa"] = "and then",
+      nej = "no", nei = "no", rattelse = "correction", korrigering = "correction", vanta = "wait",
+      -- (the apology that opens a self-correction, as English "sorry": Swedish "förlåt", "ursäkta", Norwegian
+      -- "unnskyld", Danish "undskyld")
+      forlat = "sorry", ursakta = "sorry", unnskyld = "sorry", undskyld = "sorry",
+      -- the sim operator's verbs (Swedish, Norwegian, Danish) and the simulation ("simuleringen": the simulation)
+      ["ta bort"] = "remove", radera = "delete", slett = "delete", slet = "delete",
+      ["lagg till"] = "add", ["legg til"] = "add", tilfoj = "add", ["tilføj"] = "add",
+      pausa = "pause", fortsatt = "continue", fortsett = "continue", ["fortsæt"] = "continue", fortsaet = "continue",
+      fortsat = "continue",
+      starta = "start",
+      simuleringen = "the simulation", simulering = "simulation", simuleringa = "the simulation",
+      -- ("og" typed for "of" after a word English follows with "of": "5 miles east og ELTOK", "direct ELTOK instead
+      -- og LINSA"; kept as said, asked, never "and")
+      ["instead og"] = false, ["east og"] = false, ["west og"] = false, ["north og"] = false, ["south og"] = false,
+      ["northeast og"] = false, ["northwest og"] = false, ["southeast og"] = false, ["southwest og"] = false,
+      ["route og"] = false, ["out og"] = false, ["ahead og"] = false, ["front og"] = false, ["top og"] = false,
+      ["end og"] = false, ["rest og"] = false, ["because og"] = false, ["side og"] = false, ["miles og"] = false,
+      ["nm og"] = false, ["km og"] = false,
+    },
+    -- ("pausa" alone is no sign of a Nordic sentence: Spanish's, Portuguese's and Italian's too; nor are the
+    -- English words before "og" typed for "of")
+    shared = { pausa = true, ["instead og"] = true, ["east og"] = true, ["west og"] = true, ["north og"] = true,
+      ["south og"] = true, ["northeast og"] = true, ["northwest og"] = true, ["southeast og"] = true,
+      ["southwest og"] = true, ["route og"] = true, ["out og"] = true, ["ahead og"] = true, ["front og"] = true,
+      ["top og"] = true, ["end og"] = true, ["rest og"] = true, ["because og"] = true, ["side og"] = true,
+      ["miles og"] = true, ["nm og"] = true, ["km og"] = true },
+    -- (words also English or Italian, read only in a Nordic sentence: "från"/"fra" from, "vent" wait)
+    joining = { fran = "from", fra = "from", vent = "wait" },
   },
   -- Indonesian and Malay words in a controller's English ("Batik 7151 dan Lion 214 climb FL350", "flight level now
   -- berapa?"): "dan" is "and", "berapa" "how much"; neither marks the sentence (the particles are

@@ -964,6 +964,10 @@ local names = {
     { "korean", "KAL", "AAR", "JJA", "JNA", "TWB", "ABL" },
     -- "Tigerair": Tigerair Taiwan (TTW) and Tiger Airways' designator, now Scoot's (TGW); one of them flying fits
     { "tigerair", "TTW", "TGW" },
+    -- "Braathens": Braathens Regional Airways (BRX, telephony BRAATHENS) and Braathens SAFE's designator BRA (the
+    -- same telephony), the name the Braathens group's flights are known by; one of them flying fits, a new aircraft
+    -- takes the one flying (neither or both: asked which)
+    { "braathens", "BRX", "BRA", shared = true },
   },
   designators = { "B712", "B722", "B733", "B734", "B735", "B736", "B737", "B738", "B739", "B744", "B748", "B752",
     "B753", "B762", "B763", "B764", "B772", "B773", "B77W", "B77L", "B788", "B789", "B78X", "B38M", "B39M", "B3XM",

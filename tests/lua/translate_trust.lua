@@ -19622,3 +19622,54 @@ do
   asked(ex("TAP 101, when his speed is 270 descend FL300"), "a speed condition with no unit")
   check_eq(ex("what the Azul 4410 is doing?"), "POS AZU4410")
 end
+
+-- Cycle 62 (f212): a Scandinavian controller's terse English with Nordic words ("og"/"och" and, "nej"/"nei" no,
+-- "ta bort" remove, "lägg till" add, "pausa simuleringen"), "Braathens" said of BRA or BRX, and "reaching" a speed
+-- said with its unit as the condition of the instruction after it
+do
+  local _, ex = scene({ "CRE SAS734 A20N 60.1 17.2 090 FL190 290", "CRE NAX5KM B38M 59.6 18.4 200 FL230 280",
+    "CRE WIF227 DH8D 60.4 18.0 300 9000 220", "CRE BRA402 B737 59.9 17.8 180 FL150 260",
+    "CRE FIN3PU A321 59.4 17.5 045 FL270 300" })
+  -- "og" and "och" join two instructions, of one aircraft or of two
+  check_eq(ex("NAX5KM turn right heading 250 og descend FL200"), "HDG NAX5KM 250 RIGHT ; ALT NAX5KM FL200")
+  check_eq(ex("Widerøe 227 climb 11000 feet och reduce 200 knots"), "ALT WIF227 11000 ; SPD WIF227 200")
+  check_eq(ex("Scandinavian 734 descend FL170 og Finnair 3PU climb FL290"), "ALT SAS734 FL170 ; ALT FIN3PU FL290")
+  check_eq(ex("fin3pu speed 280 och så descend FL250"), "SPD FIN3PU 280 ; ALT FIN3PU FL250")
+  -- "och" opening a sentence stays the Scots "oh"
+  check_eq(ex("och, SAS734 climb FL210"), "ALT SAS734 FL210")
+  -- "og" typed for "of" after a word English follows with "of" is never "and": asked
+  asked(ex("move NAX5KM 10 miles west og ELTOK"), "og after west")
+  asked(ex("SAS734 direct ELTOK instead og LINSA"), "og after instead")
+  -- "nej"/"nei" (and "förlåt", "unnskyld") take back the value before, as "no" and "sorry" do
+  check_eq(ex("SAS734 heading 120 nej 130"), "HDG SAS734 130")
+  check_eq(ex("Norwegian 5KM descend FL210, nei, FL220"), "ALT NAX5KM FL220")
+  check_eq(ex("FIN3PU speed 290 nej, correction speed 280"), "SPD FIN3PU 280")
+  check_eq(ex("SAS734 climb FL230 förlåt FL240"), "ALT SAS734 FL240")
+  asked(ex("WIF227 descend 7000 feet nej"), "nej with nothing after it")
+  asked(ex("SAS734 descend FL170 nej turn left heading 060"), "nej, then another kind")
+  -- the sim operator's Swedish, Norwegian and Danish verbs
+  check_eq(ex("ta bort WIF227"), "DEL WIF227")
+  check_eq(ex("slett Finnair 3PU"), "DEL FIN3PU")
+  check_eq(ex("lägg till ELTOK to SAS734's route"), "ADDWPT SAS734 ELTOK")
+  check_eq(ex("pausa simuleringen"), "HOLD")
+  check_eq(ex("fortsätt simuleringen"), "OP")
+  -- thanks and farewells of two words are courtesy
+  check_eq(ex("SAS734 turn left heading 070, tack så mycket"), "HDG SAS734 70 LEFT")
+  check_eq(ex("NAX5KM climb FL250, hej då"), "ALT NAX5KM FL250")
+  -- "Braathens" is BRA or BRX: the one flying of the digits said
+  check_eq(ex("Braathens 402 descend FL110"), "ALT BRA402 FL110")
+  check_eq(ex("braathens four zero two turn left heading 150"), "HDG BRA402 150 LEFT")
+  asked(ex("Braathens 42 descend FL110"), "digits of no Braathens flying")
+  -- "reaching" a speed said with its unit opens the condition of the instruction after it
+  check_eq(ex("Finnair 3PU reduce 260 knots, reaching 270 knots descend FL250"),
+    "SPD FIN3PU 260 ; ATSPD FIN3PU 270 ALT FIN3PU FL250")
+  check_eq(ex("SAS734 speed 310, on reaching 300 kt climb FL230"), "SPD SAS734 310 ; ATSPD SAS734 300 ALT SAS734 FL230")
+  asked(ex("SAS734 climb FL230 reaching 300 knots"), "reaching a speed after the instruction")
+end
+do
+  -- a new Braathens aircraft: the airline flying, else asked which
+  local _, ex = scene({ "CRE BRX12 AT76 59.4 17.7 200 5000 200" })
+  check_eq(ex("create Braathens 88 AT76 at ESSB heading 120 FL60 200"), "CRE BRX88 AT76 ESSB 120 FL60 200")
+  local _, ex2 = scene({ "CRE KLM12 A320 52 4 90 FL250 280" })
+  asked(ex2("create Braathens 88 B737 at ESSB heading 120 FL60 200"), "which Braathens airline")
+end
