@@ -1448,13 +1448,6 @@ function m:airline_refs()
     return self:word(k, "one") and not (after and (after.kind == "number" or after.number_word
       or L.phonetic[after.text] or self:word(k + 1, "heavy super")))
   end
-  -- ("the FedEx heavy, take it down ...", "could the Singapore heavy slow"): "heavy" or "super" after "the" and an
-  -- airline, with no digit, number word or spelled letter after it, is the aircraft's wake described, no callsign
-  local function wake_described(k)
-    local after = self.t[k + 1]
-    return self:word(k, "heavy super") and not (after and (after.kind == "number" or after.number_word
-      or L.phonetic[after.text]))
-  end
   for k = #self.refs, 1, -1 do
     local r = self.refs[k]
     local icao, e = self:airline_at(r.b)
@@ -1556,7 +1549,7 @@ function m:airline_refs()
           and (the or for_it or self:addressed_alone(i, e) or self:asked_where(i, e) or self:object_article_dropped(i)
             or self:airline_named_back(i, self:airline_fleet(icao, codes)))
           and not (nxt and (nxt.kind == "number" or nxt.number_word or L.phonetic[nxt.text]
-            or self:word(e, "heavy super")) and not (the and (pronoun_one(e) or wake_described(e))))
+            or self:word(e, "heavy super")) and not (the and pronoun_one(e)))
           and (typed or not self:new_aircraft_follows(e - 1))
       local fits = typed or (ok and self:airline_fleet(icao, codes)) or {}
       -- ("the Swiss" with SWR2811 and EZS44KP, TOPSWISS, flying: both fit)
@@ -1608,7 +1601,7 @@ function m:airline_refs()
         end
       end
       if from_the and #fits == 1 and ok then self:explain(from_the, i) end
-      if ok and the and (pronoun_one(e) or wake_described(e)) then  -- (the pronoun is part of the name, no value)
+      if ok and the and pronoun_one(e) then  -- (the pronoun is part of the name, no value)
         self:mark_used(e, e + 1)
         e = e + 1
       end

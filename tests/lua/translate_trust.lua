@@ -19553,7 +19553,7 @@ end
 
 -- Cycle 62 (fpol5): an aircraft described by its airline's country after "the" ("the German one", "the Finnish
 -- ATR", "could the Irish one ..."), read when exactly one aircraft flying is of that country (and type) and every
--- aircraft flying has a known country; "heavy" after "the" and an airline is its wake, no callsign cut short
+-- aircraft flying has a known country
 do
   local _, ex = scene({ "CRE EIN52 A320 53 -6 90 FL250 280", "CRE DLH7K A321 53.5 -6 90 FL300 300",
     "CRE SAS904 A20N 53 -5 270 FL200 260", "CRE FIN77 AT76 52.5 -6 180 FL150 220", "CRE TAP41 A319 53.2 -7 0 FL320 290" })
@@ -19586,14 +19586,6 @@ do
     "CRE DLH7K A321 53.5 -6 90 FL300 300" })
   asked(ex5("the Dutch one climb FL300"), "KLM61 and PHXYZ are Dutch")
   check_eq(ex5("the Dutch Boeing climb FL300"), "ALT KLM61 FL300")
-  local _, ex6 = scene({ "CRE UPS77 B763 40 -75 90 FL250 280", "CRE UAL9 B738 40.5 -75 90 FL300 300",
-    "CRE DAL3 B772 40 -76 90 FL340 300", "CRE DAL48 A321 40 -77 90 FL320 300" })
-  check_eq(ex6("the UPS heavy, turn left heading 010"), "HDG UPS77 10 LEFT")
-  check_eq(ex6("could the United heavy climb to FL370"), "ALT UAL9 FL370")
-  check_eq(ex6("for the UPS heavy, take it down to FL230 and slow it to 250 knots"), "ALT UPS77 FL230 ; SPD UPS77 250")
-  asked(ex6("the Delta heavy descend FL300"), "two Delta aircraft")
-  asked(ex6("UPS heavy descend FL230"), "an airline alone with heavy")
-  asked(ex6("the FedEx heavy descend FL230"), "no FedEx flying")
 end
 
 -- Cycle 62 (fpol5): the passive of "route" before "via" adds the places flown via ("could the SAS be routed via TEB
