@@ -1422,9 +1422,11 @@ return function(intent, rule, words)
   -- or none), then the waypoints (commas or "and" between) and the verb closing them
   rule { "route rte", "addwpt", when = function(g, i) return g:route_topic_first(i) end }
   -- "set the Air France to fly via MAKIL at FL280 and 260 knots": a waypoint flown via is added to the route
-  -- ("could the SAS be routed via TEB and then ARS", "KLM12 to be rerouted via SPY": the passive of route said so)
-  rule { "via", "addwpt", prev = { 2, "fly go routed rerouted" }, when = function(g, i)
-    return g:has_ref(i + 1, i + 2, "waypoint")
+  rule { "via", "addwpt", prev = { 2, "fly go" }, when = function(g, i) return g:has_ref(i + 1, i + 2, "waypoint") end }
+  -- ("could the SAS be routed via TEB and then ARS", "KLM12 to be rerouted via SPY": the passive of route after "be",
+  -- a request; "SWR72 was routed via CPA1", "both are routed via ODINA" tell the route flown, nothing added)
+  rule { "via", "addwpt", prev = { 1, "routed rerouted" }, when = function(g, i)
+    return g:word(i - 2, "be") and g:has_ref(i + 1, i + 2, "waypoint")
   end }
   -- "the Swiss should fly over ALGOI then KPT, please add these to its route", "fly over the Walda VOR, WLD,
   -- could you add this": the places flown over, added where the request asks for them to be added
