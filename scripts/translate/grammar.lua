@@ -16673,6 +16673,7 @@ function M.translate(text, world)
   g:type_refs()
   g:position_refs()
   g:described_refs()
+  g:nationality_refs()
   for _, id in ipairs(g:same_for()) do same[#same + 1] = id end
   g:bearing_refs()
   g:destination_refs()

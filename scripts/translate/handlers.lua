@@ -2492,6 +2492,88 @@ function m:described_refs()
   end
 end
 
+-- The aircraft flying described after "the" by its airline's country (lexicon.airline_countries): the adjective,
+-- then a type ("the Danish ATR", "the Chilean Dreamliner"), "one" or an aircraft noun ("the German one", "the
+-- Irish aircraft"), or nothing before a clause's end, a modal or an instruction ("could the Danish turn right").
+-- The words are a description (describe) when the adjective is no airline's name ("the Norwegian" is read by
+-- airline_refs): exactly one aircraft of that country (and type) is the aircraft meant when every aircraft flying
+-- has a country (an airline of lexicon.airline_countries, a registration of registration_countries); several, none,
+-- or an aircraft flying whose country is not known (it could be the one meant) are asked about, "one" included
+-- (never the digit of a callsign: "the German one" with XYZ1 flying). Said after a word of other traffic ("behind the Dutch one") they name no
+-- aircraft instructed.
+function m:nationality_refs()
+  if not self:said("the") then return end
+  local countries = L.airline_countries
+  local function country_fits(id, adj)
+    local prefix = id:upper():match("^(%u%u%u)%d")
+    if prefix then
+      local known = false
+      for c, codes in pairs(countries) do
+        for _, code in ipairs(codes) do
+          if code == prefix then
+            known = true
+            if c == adj then return true end
+          end
+        end
+      end
+      if known then return false end
+      return nil
+    end
+    local mark = id:upper():match("^N%d") and "N"
+    for n = 2, 1, -1 do mark = mark or (L.registration_countries[id:upper():sub(1, n)] and id:upper():sub(1, n)) end
+    if not mark then return nil end
+    return L.registration_countries[mark] == adj
+  end
+  local i = 2
+  while i <= #self.t do
+    local adj = self.t[i].kind == "word" and countries[self.t[i].text] and self.t[i].text
+    local e
+    if adj and self:word(i - 1, "the") and not self:other_traffic_before(i - 2) and not self:has_ref(i, i + 1)
+        and not self:airline_at(i) and not (self.positioned or {})[i - 1] then
+      local ids, known = {}, true
+      for _, a in ipairs(self.fleet) do
+        local fits = country_fits(a.id, adj)
+        if fits == nil then known = false end
+        if fits then ids[#ids + 1] = a.id end
+      end
+      local x = i + 1
+      local test, te = self:type_said(x)
+      if test and not self:has_ref(x, te, "aircraft") then
+        local typed = {}
+        for _, a in ipairs(self.fleet) do
+          for _, id in ipairs(ids) do
+            if id == a.id and a.type and test(a.type:upper()) then typed[#typed + 1] = id end
+          end
+        end
+        ids, x = typed, te
+      end
+      local noun = x > i + 1
+      if self:word(x, "one @aircraft_nouns") and not (self.t[x + 1] and (self.t[x + 1].kind == "number"
+          or self.t[x + 1].number_word)) then
+        x, noun = x + 1, true
+      end
+      local nx = self.t[x]
+      if noun or not nx or nx.kind == "punct" or self:word(x, "could should ought can will would must may shall to "
+          .. "please") or self:intent_at(x) then
+        -- (with an aircraft flying of no known country, the one of `ids` named elsewhere in the request is the one
+        -- described: "the German one, the Lufthansa, heading 120")
+        local named = {}
+        for _, r in ipairs(known and {} or self.refs) do
+          for _, id in ipairs(ids) do
+            if r.kind == "aircraft" and r.exists and r.name == id and (r.b >= x or r.e < i) then named[id] = true end
+          end
+        end
+        local picked = known and ids or {}
+        for _, id in ipairs(known and {} or ids) do
+          if named[id] then picked[#picked + 1] = id end
+        end
+        e = describe(self, i - 1, x, ids, #picked == 1 and picked or nil)
+      end
+    end
+    i = e or i + 1
+  end
+end
+
 -- The token after "head-on" said at k (the lexer splits it: "head on"), or nil.
 function m:head_on_at(k)
   if self:word(k, "head-on") then return k + 1 end

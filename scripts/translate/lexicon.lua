@@ -455,7 +455,9 @@ return {
         -- an aircraft described by its size ("the small Cessna", "a big Boeing") or its airline's country ("the
         -- German one, the Lufthansa"; names that are airlines' own, "Norwegian", "Swiss", are not here)
         "small", "little", "wee", "tiny", "big", "german", "swedish", "danish", "finnish", "dutch", "french", "spanish",
-        "italian", "polish", "latvian", "lithuanian", "icelandic", "portuguese", "hungarian", "greek",
+        "italian", "polish", "latvian", "lithuanian", "icelandic", "portuguese", "hungarian", "greek", "irish", "british",
+        "chilean", "brazilian", "canadian", "mexican", "japanese", "australian", "vietnamese", "russian", "belgian",
+        "czech",
         -- the margin a resolution keeps ("resolution margin factor 1.05")
         "margin",
         -- kinds of traffic, parts of the airspace, and what a vector avoids
@@ -1346,6 +1348,48 @@ return {
   -- "das vorher erstellte"; "the newly created one"; handlers' created_just_said)
   created_just = { "before", "just", "newly", "previously", "recently", "earlier" },
   created_order = { last = true, latest = true, recently = true, first = false, earliest = false },
+  -- an aircraft described by its airline's country after "the" ("the German one", "the Danish ATR", "could the
+  -- Irish one descend", "the Chilean Dreamliner"; handlers' m:nationality_refs): the adjective and the ICAO
+  -- designators of that country's airlines. An airline of several countries is under each ("SAS": Danish, Swedish
+  -- and Norwegian), so that a description both could meet is asked. Only read when every aircraft flying has a
+  -- country here (or in registration_countries): an airline missing from the table could be the one meant.
+  airline_countries = {
+    british = { "BAW", "SHT", "CFE", "EFW", "EZY", "EXS", "TOM", "VIR", "LOG", "RUK", "WUK", "AUR", "DHK", "BEE" },
+    irish = { "EIN", "RYR", "EAI", "BCY", "IRL", "ABR" },
+    german = { "DLH", "EWG", "CFG", "TUI", "GEC", "CLH", "BCS", "GWI", "OCN", "GAF" },
+    dutch = { "KLM", "TRA", "KLC", "MPH", "CND", "TFL", "NAF" },
+    danish = { "DTR", "SAS", "DAF" },
+    swedish = { "SAS", "SWN", "NSZ", "BRX", "SVF" },
+    norwegian = { "SAS", "NAX", "NSZ", "NOZ", "WIF" },
+    finnish = { "FIN" },
+    icelandic = { "ICE", "FPY", "ABD" },
+    french = { "AFR", "HOP", "TVF", "FBU", "CRL", "FAF" },
+    spanish = { "IBE", "VLG", "AEA", "IBS", "ANE", "VOE", "EVE", "IBB" },
+    italian = { "ITY", "AZA", "DLA", "NOS", "IAM" },
+    portuguese = { "TAP", "RZO", "AFP" },
+    belgian = { "BEL", "JAF", "BAF" },
+    polish = { "LOT", "ENT", "RYS", "PLF" },
+    hungarian = { "WZZ" },
+    czech = { "CSA", "TVS", "CEF" },
+    latvian = { "BTI" },
+    greek = { "AEE", "OAL", "HAF" },
+    chilean = { "LAN", "SKU", "JAT" },
+    brazilian = { "TAM", "GLO", "AZU", "PTB" },
+    canadian = { "ACA", "WJA", "JZA", "ROU", "TSC", "POE", "SWG", "WEN", "FLE" },
+    mexican = { "AMX", "VOI", "VIV" },
+    japanese = { "JAL", "ANA", "APJ", "SNJ", "ADO", "JTA", "SKY", "IBX", "FDA" },
+    australian = { "QFA", "VOZ", "JST", "QLK" },
+    vietnamese = { "HVN", "VJC", "BAV" },
+    russian = { "AFL", "SBI", "SDM", "PBD", "UTA" },
+  },
+  -- the nationality marks that open registrations flown as callsigns (PH-ABC: Dutch; N248DM: American, a digit
+  -- after the N), for m:nationality_refs
+  registration_countries = { PH = "dutch", D = "german", G = "british", EI = "irish", OY = "danish", SE = "swedish",
+                             LN = "norwegian", OH = "finnish", TF = "icelandic", F = "french", EC = "spanish",
+                             I = "italian", CS = "portuguese", OO = "belgian", SP = "polish", HA = "hungarian",
+                             OK = "czech", YL = "latvian", SX = "greek", CC = "chilean", PP = "brazilian",
+                             PR = "brazilian", PT = "brazilian", C = "canadian", XA = "mexican", JA = "japanese",
+                             VH = "australian", VN = "vietnamese", RA = "russian", N = "american" },
   -- what an aircraft carries, said after "the" to name it ("the cargo aircraft", "the freighter"): the traffic
   -- tells no such thing, so the words are asked about (an airline or type said with them names the aircraft:
   -- "the DHL cargo plane")

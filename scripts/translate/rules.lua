@@ -332,8 +332,14 @@ return function(intent, rule, words)
     local fronted = g.t[q] ~= nil and g.t[q].kind ~= "punct" and g:word(i - 1, "it he she")
       and g:word(i - 2, "what's whats what") and g.t[i - 3] ~= nil and g.t[i - 3].text == ","
       and #g:refs_in(q, i - 3, "aircraft") == 1
+    -- (a time said after it, "what is the Lufthansa up to at the moment?", "... right now", is part of the question)
+    local k = g:skip_fillers(i + 2)
+    if g:word(k, "right") and g:word(k + 1, "now") then k = k + 1 end
+    if g:word(k, "now currently presently") then k = k + 1 end
+    if g:word(k, "at") and g:word(k + 1, "the") and g:word(k + 2, "moment minute") then k = k + 3 end
+    if g:word(k, "at") and g:word(k + 1, "present") then k = k + 2 end
     return (fronted or (g:word(q, "what's whats what") and g:has_ref(q + 1, i, "aircraft")))
-      and g:skip_fillers(i + 2) > #g.t
+      and g:skip_fillers(k) > #g.t
   end }
   -- altitude
   -- ("rate of climb 1500", "rate descend 2000": the motion the rate's word names, straight after it or "of")
@@ -1417,6 +1423,11 @@ return function(intent, rule, words)
   rule { "route rte", "addwpt", when = function(g, i) return g:route_topic_first(i) end }
   -- "set the Air France to fly via MAKIL at FL280 and 260 knots": a waypoint flown via is added to the route
   rule { "via", "addwpt", prev = { 2, "fly go" }, when = function(g, i) return g:has_ref(i + 1, i + 2, "waypoint") end }
+  -- ("could the SAS be routed via TEB and then ARS", "KLM12 to be rerouted via SPY": the passive of route after "be",
+  -- a request; "SWR72 was routed via CPA1", "both are routed via ODINA" tell the route flown, nothing added)
+  rule { "via", "addwpt", prev = { 1, "routed rerouted" }, when = function(g, i)
+    return g:word(i - 2, "be") and g:has_ref(i + 1, i + 2, "waypoint")
+  end }
   -- "the Swiss should fly over ALGOI then KPT, please add these to its route", "fly over the Walda VOR, WLD,
   -- could you add this": the places flown over, added where the request asks for them to be added
   rule { "over", "addwpt", prev = { 2, "fly go" }, when = function(g, i)

@@ -19673,3 +19673,60 @@ do
   local _, ex2 = scene({ "CRE KLM12 A320 52 4 90 FL250 280" })
   asked(ex2("create Braathens 88 B737 at ESSB heading 120 FL60 200"), "which Braathens airline")
 end
+
+-- Cycle 62 (fpol5): an aircraft described by its airline's country after "the" ("the German one", "the Finnish
+-- ATR", "could the Irish one ..."), read when exactly one aircraft flying is of that country (and type) and every
+-- aircraft flying has a known country
+do
+  local _, ex = scene({ "CRE EIN52 A320 53 -6 90 FL250 280", "CRE DLH7K A321 53.5 -6 90 FL300 300",
+    "CRE SAS904 A20N 53 -5 270 FL200 260", "CRE FIN77 AT76 52.5 -6 180 FL150 220", "CRE TAP41 A319 53.2 -7 0 FL320 290" })
+  check_eq(ex("the German one, climb FL340"), "ALT DLH7K FL340")
+  check_eq(ex("could the Finnish ATR reduce to 200 knots please"), "SPD FIN77 200")
+  check_eq(ex("Would the Portuguese aircraft descend to flight level two eight zero?"), "ALT TAP41 FL280")
+  check_eq(ex("turn the Irish one left heading 050"), "HDG EIN52 50 LEFT")
+  check_eq(ex("the Irish, descend FL230"), "ALT EIN52 FL230")
+  asked(ex("the Dutch one climb FL300"), "no Dutch aircraft flying")
+  asked(ex("the Irish A321 climb FL300"), "the Irish aircraft is no A321")
+  local _, ex2 = scene({ "CRE VLG12 A320 41 2 90 FL250 280", "CRE IBE33 A321 41.5 2 90 FL300 300",
+    "CRE AFR8 A20N 41 3 270 FL200 260", "CRE AZA5 E190 40.5 2 180 FL150 220" })
+  asked(ex2("the Spanish one descend FL200"), "two Spanish aircraft")
+  check_eq(ex2("the Spanish A321 descend FL200"), "ALT IBE33 FL200")
+  check_eq(ex2("the French one, speed 240"), "SPD AFR8 240")
+  check_eq(ex2("could the Italian Embraer go down to FL120"), "ALT AZA5 FL120")
+  -- (SAS is Danish, Swedish and Norwegian: "the Danish" with SAS and DTR flying is asked)
+  local _, ex3 = scene({ "CRE SAS1465 A20N 55 12 90 FL250 280", "CRE DTR21 AT76 55.2 11 90 FL100 220",
+    "CRE RYR8QL B738 56 12 90 FL360 300" })
+  asked(ex3("could the Danish turn right heading 020"), "SAS and DTR are both Danish")
+  check_eq(ex3("the Danish ATR, climb to FL120"), "ALT DTR21 FL120")
+  check_eq(ex3("please climb the Irish to FL380"), "ALT RYR8QL FL380")
+  -- (an aircraft flying whose country is not known could be the one meant; "one" is then no flight number)
+  local _, ex4 = scene({ "CRE EIN52 A320 53 -6 90 FL250 280", "CRE DLH7K A321 53.5 -6 90 FL300 300",
+    "CRE XYZ1 A20N 53 -5 270 FL200 260" })
+  asked(ex4("the German one, climb FL340"), "XYZ's country is not known, and 'one' is no XYZ1")
+  asked(ex4("the Irish, climb FL340"), "XYZ's country is not known")
+  -- (a registration's nationality mark: PH is Dutch)
+  local _, ex5 = scene({ "CRE KLM61 B738 52 4 90 FL250 280", "CRE PHXYZ C172 52.2 4.5 90 3000 100",
+    "CRE DLH7K A321 53.5 -6 90 FL300 300" })
+  asked(ex5("the Dutch one climb FL300"), "KLM61 and PHXYZ are Dutch")
+  check_eq(ex5("the Dutch Boeing climb FL300"), "ALT KLM61 FL300")
+end
+
+-- Cycle 62 (fpol5): the passive of "route" before "via" adds the places flown via ("could the SAS be routed via TEB
+-- and then ARS"), as "fly via" does; "what is X up to" with a time after it ("at the moment", "right now") asks
+-- for its report, never a climb
+do
+  local _, ex = scene({ "CRE SAS1525 A20N 55 12 90 FL250 280", "CRE KLM12 A320 52 4 90 FL250 280",
+    "DEFWPT TEBXX 55.5 13", "DEFWPT ARSXX 56 14" })
+  check_eq(ex("Could the SAS be routed via TEBXX?"), "ADDWPT SAS1525 TEBXX")
+  check_eq(ex("could KLM12 be rerouted via ARSXX and TEBXX please"), "ADDWPT KLM12 ARSXX ; ADDWPT KLM12 TEBXX")
+  check_eq(ex("SAS1525 should be routed via TEBXX and then ARSXX"), "ADDWPT SAS1525 TEBXX ; ADDWPT SAS1525 ARSXX")
+  asked(ex("could it be routed via TEBXX"), "no aircraft named")
+  -- (the route flown told, "was routed via", "are routed via", adds nothing)
+  asked(ex("KLM12 was routed via TEBXX then ARSXX; climb FL300"), "the route flown told, never added")
+  asked(ex("SAS1525 and KLM12 are both routed via TEBXX"), "the route flown, no request")
+  check_eq(ex("what is the SAS up to at the moment?"), "POS SAS1525")
+  check_eq(ex("What's KLM12 up to right now"), "POS KLM12")
+  check_eq(ex("the SAS, what's it up to at present?"), "POS SAS1525")
+  check_eq(ex("KLM12 up to FL300 at the moment"), "ALT KLM12 FL300")
+  asked(ex("what is KLM12 up to at the moment, climb FL300"), "a question and an instruction")
+end
