@@ -3314,7 +3314,10 @@ function G:present_state()
   local S = G.present_state_sets
   -- ("KLM12's climbing FL300": the "'s" is gone from the words; read from the request as said)
   local clitic = (self.text_said or ""):lower():match("%w['\226\128\153]+s%s+(%a+)")
-  if not clitic or not (" " .. S.verbs .. " "):find(" " .. clitic .. " ", 1, true) then clitic = nil end
+  -- ("set KLM12's heading to 110": "'s heading" is the possessive's noun, no state)
+  if not clitic or clitic == "heading" or not (" " .. S.verbs .. " "):find(" " .. clitic .. " ", 1, true) then
+    clitic = nil
+  end
   if not clitic and not self:said("is are") then return end
   for _, r in ipairs(self.refs) do
     local c = r.e

@@ -19569,6 +19569,7 @@ do
   asked(ex("AZA610, it is turning right heading 320"), "a state after a pronoun")
   asked(ex("AZA610 you are climbing FL290"), "a state told to the pilot")
   asked(ex("AZA610's climbing FL300"), "a state with 's")
+  check_eq(ex("set AZA610's heading to 250"), "HDG AZA610 250")
   asked(ex("AZA610 is climbing FL300 and turn left heading 200"), "a state, then an instruction")
   asked(ex("BEL3KQ is climbing FL330"), "a state it flies, alone: nothing to change")
   check_eq(ex("BEL3KQ is climbing FL330, AZA610 climb FL280"), "ALT AZA610 FL280")
