@@ -3336,7 +3336,78 @@ function G:past_state()
           return self:need(string.format("'%s' tells the state of %s in the report, which it flies here: nothing "
             .. "to change. What should it do?", self:raw(r.b, e), r.name:upper()))
         end
-        self:set_aside(c, e - 1)
+        -- (the aircraft's name too where another aircraft is named after the state, the one instructed)
+        local other = false
+        for _, o in ipairs(self.refs) do other = other or (o.kind == "aircraft" and o.b >= e and o.name ~= r.name) end
+        self:set_aside(other and r.b or c, e - 1)
+      end
+    end
+  end
+end
+
+-- "KLM12 is climbing FL300", "the KLM is now descending to flight level 200", "KLM12, it is turning left heading
+-- 100", "KLM12 you are climbing FL300": an existing aircraft, a pronoun (it, he, she, you) or none, "is" or "are",
+-- "now", "currently", "already" or "still" or none, a participle of G.present_state_sets.verbs, then only words of
+-- G.present_state_sets.words and values (levels [ft or FL], speeds [kt CAS], Mach, headings [deg]) to a mark, the
+-- end or "and" before an instruction, tells what the aircraft is doing, no instruction (the readback form "KLM12
+-- climbing FL300", no copula, stays the clearance). When the aircraft flies or was given every value (G.flies) the
+-- state is set aside and the instructions beside it are read alone; another value is asked, never sent.
+G.present_state_sets = {
+  verbs = "climbing descending turning flying maintaining cruising levelling leveling holding heading",
+  words = "to through at left right heading fl flight level altitude feet ft foot knots knot kt kts mach speed "
+    .. "degrees of and climbing descending turning flying maintaining cruising" }
+function G:present_state()
+  local S = G.present_state_sets
+  -- ("KLM12's climbing FL300": the "'s" is gone from the words; read from the request as said)
+  local clitic = (self.text_said or ""):lower():match("%w['\226\128\153]+s%s+(%a+)")
+  -- ("set KLM12's heading to 110": "'s heading" is the possessive's noun, no state)
+  if not clitic or clitic == "heading" or not (" " .. S.verbs .. " "):find(" " .. clitic .. " ", 1, true) then
+    clitic = nil
+  end
+  if not clitic and not self:said("is are") then return end
+  for _, r in ipairs(self.refs) do
+    local c = r.e
+    if self.t[c] and self.t[c].text == "," then c = c + 1 end
+    if self:word(c, "it he she you") then c = c + 1 end
+    local copula = self:word(c, "is are")
+    if not copula and clitic and r.kind == "aircraft" and self.words[c] == clitic
+        and not (self.text_said or ""):lower():find("that['\226\128\153]+s%s+" .. clitic) then
+      c = c - 1
+      copula = true
+    end
+    if r.kind == "aircraft" and r.exists and copula then
+      local v = self:word(c + 1, "now currently already still") and c + 2 or c + 1
+      if self:word(v, S.verbs) then
+        local e = v + 1
+        while self.t[e] do
+          local t = self.t[e]
+          -- ("... and turn left heading 100": "and" before a word of no state ends the state)
+          if self:word(e, "and") and not self:word(e + 1, S.verbs) then break end
+          if t.kind == "number" or (t.kind == "word" and (self:word(e, S.words) or t.number_word)) then e = e + 1
+          else break end
+        end
+        local stop = self.t[e]
+        local qs = self:quantities(v + 1, e)
+        if (not stop or stop.kind == "punct" or self:word(e, "and")) and #qs > 0 then
+          local a, odd = self:state(r.name), nil
+          for _, q in ipairs(qs) do
+            local x = q.kind == "alt" and self:cleared_level(q) or q.value
+            if not G.flies(a, q.kind, x) then odd = odd or q end
+          end
+          if odd then
+            return self:need(string.format("'%s' tells what %s is doing, no instruction, but it flies otherwise "
+              .. "here ('%s'). Should I change it? Please say it as an instruction.", self:raw(r.b, e), r.name:upper(),
+              self:raw(odd.b, odd.e)))
+          end
+          if r.b == self:skip_fillers(1, false) and (not stop or e == #self.t) then
+            return self:need(string.format("'%s' tells what %s is doing, which it does here: nothing to change. "
+              .. "What should it do?", self:raw(r.b, e), r.name:upper()))
+          end
+          -- (the aircraft's name too where another aircraft is named after the state, the one instructed)
+          local other = false
+          for _, o in ipairs(self.refs) do other = other or (o.kind == "aircraft" and o.b >= e and o.name ~= r.name) end
+          self:set_aside(other and r.b or c, e - 1)
+        end
       end
     end
   end
@@ -9068,6 +9139,103 @@ function G:withheld_start(last)
   return marked and first > 1 and first or nil
 end
 
+-- "KLM12 climb FL300, forget it", "..., ignore that", "... disregard that.", "..., just kidding", "..., ignore that,
+-- turn left heading 100": a phrase of G.retracting_phrases after an instruction takes back what was said before it.
+-- Closing the request (only marks, fillers, thanks or an apology after it), nothing said in its place, it is asked
+-- with what it takes back; with an instruction after it, where a value said before it was sent too, which stands is
+-- asked. Never are both sent.
+G.retracting_phrases = { "forget it", "forget about it", "forget about that", "forget this", "ignore it", "ignore that",
+  "ignore this", "ignore my last", "ignore the last one", "ignore the last instruction", "disregard that",
+  "disregard it", "disregard this", "strike that", "just kidding", "only kidding", "that was a joke", "don't do it",
+  "don't do that", "do not do it", "do not do that", "dont do it", "dont do that" }
+G.retracting_after = set_of({ "please", "thanks", "thank", "you", "sorry", "ok", "okay" })
+function G:retracted()
+  -- ("... no forget it, only speed": what stands is named, G:self_corrected)
+  if self.kept then return end
+  if not self:said("forget ignore disregard strike kidding joke do") then return end
+  local phrases = G.retracting_words
+  if not phrases then
+    phrases = {}
+    for _, p in ipairs(G.retracting_phrases) do
+      local w = {}
+      for x in p:gmatch("%S+") do w[#w + 1] = x end
+      phrases[#phrases + 1] = w
+    end
+    G.retracting_words = phrases
+  end
+  for k = 2, #self.t do
+    for _, w in ipairs(phrases) do
+      local ok = true
+      for j = 1, #w do ok = ok and self.words[k + j - 1] == w[j] end
+      if ok then
+        local e = k + #w
+        local x = e
+        while self.t[x] and (self.t[x].kind == "punct" or self.t[x].filler or G.retracting_after[self.words[x]]) do
+          x = x + 1
+        end
+        local said = (self:raw(k, e):gsub(" ([,.;:])", "%1"))
+        if not self.t[x] then
+          return self:need(string.format("You said '%s' with nothing after it, taking back %s. What should stand? "
+            .. "Please say the instruction again.", said, table.concat(self.out, " ; ")))
+        end
+        local out = " " .. table.concat(self.out, " ; ") .. " "
+        for _, q in ipairs(self.t[e] and self.t[e].kind == "punct" and self:quantities(1, k) or {}) do
+          local d = q.number and q.number.digits
+          if d and out:find("[%s%a]" .. d .. "[%s;]") then
+            return self:need(string.format("I have %s, but you said '%s' after '%s'. Which stands? Please say the "
+              .. "instruction again.", table.concat(self.out, " ; "), said, self:raw(q.b, q.e)))
+          end
+        end
+      end
+    end
+  end
+end
+
+-- "KLM12 unable climb FL300", "KLM12 requests climb FL300", "KLM12 would like FL300", "KLM12 standby for FL300": a
+-- value said in the clause (to the next mark) after "unable", after a pilot's request ("request", "requests",
+-- "requesting" or "would like" straight after the aircraft, a pronoun or "pilot"; "request you ..." is the
+-- controller's instruction) or after "standby for" / "stand by for" is refused, wished or still to come, no
+-- clearance: where it was sent, it is asked. A clearance said after a mark ("unable FL350, climb FL310") stands.
+-- True when a reference to an aircraft ends just before token k.
+function G:aircraft_ends_at(k)
+  for _, r in ipairs(self.refs) do
+    if r.kind == "aircraft" and r.e == k then return true end
+  end
+  return false
+end
+function G:refused_or_requested()
+  if not self:said("unable request requests requesting like standby stand") then return end
+  local out = " " .. table.concat(self.out, " ; ") .. " "
+  for k = 1, #self.t do
+    local from
+    if self:word(k, "unable") then from = k + 1
+    elseif self:word(k, "standby") and self:word(k + 1, "for") then from = k + 2
+    elseif self:word(k, "stand") and self:word(k + 1, "by") and self:word(k + 2, "for") then from = k + 3
+    elseif (self:word(k, "request requests requesting") and not self:word(k + 1, "you")
+        or self:word(k, "would") and self:word(k + 1, "like") and not self:word(k + 2, "me"))
+        and k > 1 and (self:word(k - 1, "he she it pilot crew") or self:aircraft_ends_at(k)) then
+      from = self:word(k, "would") and k + 2 or k + 1
+    end
+    if from then
+      local e = from
+      while self.t[e] and self.t[e].kind ~= "punct" do e = e + 1 end
+      -- (a value said again after the mark is that clearance's: "KLM12 requests FL300, climb FL300 approved")
+      local again = {}
+      for _, q in ipairs(self:quantities(e, #self.t + 1)) do
+        if q.number and q.number.digits then again[q.number.digits] = true end
+      end
+      for _, q in ipairs(self:quantities(from, e)) do
+        local d = q.number and q.number.digits
+        if d and not again[d] and out:find("[%s%a]" .. d .. "[%s;]") then
+          return self:need(string.format("I have %s, but '%s' is no clearance (refused, requested or to come). "
+            .. "Should I give it? Please say it as an instruction.", table.concat(self.out, " ; "),
+            (self:raw(k, e):gsub(" ([,.;:])", "%1"))))
+        end
+      end
+    end
+  end
+end
+
 -- "descend flight level one two zero, uh, correction": a correction with
 -- nothing after it says the request is wrong without saying how; asked.
 function G:dangling_correction()
@@ -11540,6 +11708,23 @@ function G:unaccounted()
       return
     end
   end
+  -- ("KLM12 maintain at least FL200", "at most FL300"): "at least" or "at most" straight before a level that was
+  -- drafted as the level to fly bounds it, the same (a rate or a zone's height "at least" is read by its kind)
+  for i = 1, self:said("least most") and #self.t or 0 do
+    local q = self:word(i, "at") and self:word(i + 1, "least most") and self:quantities(i + 2, i + 8)[1]
+    if q and q.kind == "alt" and q.b == i + 2 and not self:in_reason(i) then
+      local level = q.fl and string.format("FL%03d", math.floor(q.value / 100 + 0.5))
+        or string.format("%d", math.floor(q.value + 0.5))
+      for _, line in ipairs(self.out) do
+        local drafted = line:match("^ALT %S+ (%S+)")
+        if drafted and (drafted == level or drafted:gsub("^FL0*", "FL") == level:gsub("^FL0*", "FL")) then
+          self:need(string.format("Is '%s' a level to fly, or a limit? squawk keeps no level limit: please say the "
+            .. "level to fly.", self:raw(i, q.e)))
+          return
+        end
+      end
+    end
+  end
   -- ("climb to four thousand and a half": a fraction said after "and" that no value read is asked, never dropped;
   -- "and a half-height of 1000 feet" names the protected zone's half height, no fraction)
   local function fraction_left(i)
@@ -13324,6 +13509,15 @@ function G:heading_unit()
       end
     end
   end
+  -- (the heading said in words, "heading two seven zero knots": the heading's number, then the unit's word)
+  for _, q in ipairs(self:quantities(1, #self.t + 1)) do
+    local n, u = q.number, q.number and self.t[q.number.e]
+    if q.kind == "heading" and u and u.kind == "word" and G.heading_foreign_units[u.text]
+        and not (self.t[n.e + 1] and self.t[n.e + 1].kind == "number") then
+      return self:need(string.format("I have %s, but I heard '%s %s' for the heading. Is it a heading, or a "
+        .. "speed or level?", table.concat(self.out, " ; "), self:raw(n.b, n.e), u.raw))
+    end
+  end
 end
 -- A Mach number of 1 or more, or under 0.1, in a command ("speed 250 mach": M0250, "speed mach 250": M02.5, "78
 -- mach": M078) is no speed meant for traffic squawk flies: asked, naming what was heard, never sent.
@@ -13381,8 +13575,16 @@ function G:implausible_values()
       return self:need(string.format("I have %s, but %s of %s %s is too small to be meant.%s Which value do you "
         .. "mean?", line, what[1], f[k], what[2], doubt))
     end
+    -- (a vertical speed above G.most_rate [ft/min], "climb to 30000 feet per minute": a level said with a rate's
+    -- unit, no rate an airliner flies)
+    local rate = (f[1] == "VS" and tonumber(f[3])) or (f[1] == "ALT" and tonumber(f[4]))
+    if rate and math.abs(rate) > G.most_rate then
+      return self:need(string.format("I have %s, but a vertical speed of %s ft/min is too large to be meant. Is it a "
+        .. "level, or which rate do you mean?", line, math.floor(math.abs(rate) + 0.5)))
+    end
   end
 end
+G.most_rate = 8000  -- [ft/min]
 
 -- One setting of the simulation given two values in one request ("dtmult 8, and then 4x", "zoner 5 then 3"): the
 -- second would replace the first at once, with no time between (a fast-forward between them is one: "dtmult 8, ff
@@ -13568,6 +13770,23 @@ function G:aircraft_aside()
   end
 end
 
+-- An offer or a question of wish to the pilot ("KLM12, would you like to climb FL300?", "do you want FL300",
+-- "would you prefer heading 250") clears nothing: the pilot is asked, no clearance given. The draft is asked about,
+-- never sent. lower: the request in lower case.
+G.offer_phrases = { "would you like", "would you prefer", "would you want", "do you want", "do you wish",
+  "do you prefer", "do you like", "d'you want", "are you happy with", "is that acceptable", "can you accept",
+  "could you accept" }
+function G:offer_question(lower)
+  if not lower:find("you", 1, true) and not lower:find("accept", 1, true) then return end
+  for _, p in ipairs(G.offer_phrases) do
+    local b, e = lower:find("%f[%a]" .. p:gsub(" ", "%%s+") .. "%f[%A]")
+    if b then
+      return self:need(string.format("'%s' offers the pilot a choice, no instruction. Should I give %s? Please say "
+        .. "it as an instruction.", lower:sub(b, e), table.concat(self.out, " ; ")))
+    end
+  end
+end
+
 -- the words of a condition on the traffic (G:declared)
 G.traffic_condition_words = "traffic conflict conflicts conflicting separation separated spacing clear free close "
   .. "closer intruder alert alerts collision proximity crossing converging"
@@ -13640,6 +13859,19 @@ function G:level_with_unit(lower)
           .. "you mean: FL%03d, or %s %s?", table.concat(self.out, " ; "), said, unit, kind, tonumber(n), n, kind)
         return
       end
+    end
+  end
+  -- (the level said in words, "flight level two hundred feet", "FL two zero zero ft": the flight level's number,
+  -- then the unit's word)
+  for _, q in ipairs(self:quantities(1, #self.t + 1)) do
+    local n, u = q.number, q.number and self.t[q.number.e]
+    local kind = u and u.kind == "word" and G.level_unit_words[u.text]
+    if q.kind == "alt" and q.fl and kind and n.value < 1000 and not (u.text == "m" and self.t[n.e + 1]
+        and self.t[n.e + 1].kind == "number") then
+      self.ask = string.format("I have %s, but '%s' is a flight level and a height in %s at once. Which do you "
+        .. "mean: FL%03d, or %d %s?", table.concat(self.out, " ; "), self:raw(q.b, n.e + 1), kind, n.value, n.value,
+        kind)
+      return
     end
   end
 end
@@ -16712,6 +16944,7 @@ function M.translate(text, world)
   g:route_remarks()
   g:state_remarks()
   g:past_state()
+  g:present_state()
   g:break_remarks()
   g:destination_told()
   g:destination_preface()
@@ -16856,6 +17089,8 @@ function M.translate(text, world)
   if not g.ask and #g.out == 0 then g.ask = g.pending end
   if not g.ask then g:info_remarks() end
   if not g.ask then g:dangling_correction() end
+  if not g.ask and #g.out > 0 then g:retracted() end
+  if not g.ask and #g.out > 0 then g:refused_or_requested() end
   if not g.ask and #g.out > 0 then g:dangling_value_name() end
   if not g.ask and #g.out > 1 then g:side_by_side_callsigns() end
   if not g.ask and #g.out > 0 and #g.refs > 1 then g:aircraft_aside() end
@@ -16863,6 +17098,7 @@ function M.translate(text, world)
   if not g.ask then g:setting_twice() end
   if not g.ask then g:setting_question() end
   if not g.ask and #g.out > 0 then g:opinion_question(lower) end
+  if not g.ask and #g.out > 0 then g:offer_question(lower) end
   if not g.ask and #g.out > 0 then g:count_alone() end
   if not g.ask then g:short_level() end
   if not g.ask then g:implausible_values() end

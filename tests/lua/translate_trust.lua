@@ -19730,3 +19730,77 @@ do
   check_eq(ex("KLM12 up to FL300 at the moment"), "ALT KLM12 FL300")
   asked(ex("what is KLM12 up to at the moment, climb FL300"), "a question and an instruction")
 end
+
+-- Cycle 62 (fhz11): hazards of state, offer, unit, retraction, refusal and request
+do
+  local _, ex = scene({ "CRE AZA610 A320 45.5 9.0 270 FL260 280", "CRE BEL3KQ A319 45.8 9.4 090 FL240 270",
+    "ALT BEL3KQ FL330", "DEFWPT RIXOT 45.2 8.6", "ADDWPT AZA610 RIXOT" })
+  -- a self-correction across full stops, "sorry." alone between them, replaces the same kind or is asked
+  check_eq(ex("aza610 desc fl220. sorry. after rixot desc fl210"), "AT AZA610 RIXOT DO ALT AZA610 FL210")
+  check_eq(ex("AZA610 descend FL220. Sorry! At RIXOT descend FL210."), "AT AZA610 RIXOT DO ALT AZA610 FL210")
+  check_eq(ex("AZA610 descend FL220. Oops. Descend FL230."), "ALT AZA610 FL230")
+  asked(ex("AZA610 descend FL220. Sorry. After RIXOT reduce speed 250."), "another kind after 'sorry.'")
+  asked(ex("AZA610 descend FL220. Sorry. Turn right heading 300."), "a turn after 'sorry.'")
+  check_eq(ex("AZA610 descend FL220. Sorry. Descend FL230."), "ALT AZA610 FL230")
+  -- a state told in the present continuous ("is climbing", "it is turning", "you are descending") is no
+  -- instruction: asked where the aircraft flies otherwise, set aside where it flies so
+  asked(ex("AZA610 is climbing FL300"), "a state, present continuous")
+  asked(ex("Alitalia 610 is now descending to flight level two two zero"), "a state with 'now', in words")
+  asked(ex("AZA610, it is turning right heading 320"), "a state after a pronoun")
+  asked(ex("AZA610 you are climbing FL290"), "a state told to the pilot")
+  asked(ex("AZA610's climbing FL300"), "a state with 's")
+  check_eq(ex("set AZA610's heading to 250"), "HDG AZA610 250")
+  asked(ex("AZA610 is climbing FL300 and turn left heading 200"), "a state, then an instruction")
+  asked(ex("BEL3KQ is climbing FL330"), "a state it flies, alone: nothing to change")
+  check_eq(ex("BEL3KQ is climbing FL330, AZA610 climb FL280"), "ALT AZA610 FL280")
+  check_eq(ex("BEL3KQ is climbing to FL330 and AZA610 climb FL280"), "ALT AZA610 FL280")
+  check_eq(ex("BEL3KQ is climbing FL330; AZA610 descend FL220"), "ALT AZA610 FL220")
+  -- (a past state of another aircraft before the one instructed is no instruction to it either)
+  check_eq(ex("BEL3KQ was at FL330, AZA610 descend FL220"), "ALT AZA610 FL220")
+  -- (the readback form with no copula, typed by the controller, stays the clearance)
+  check_eq(ex("AZA610 climbing FL300"), "ALT AZA610 FL300")
+  check_eq(ex("descending FL220, AZA610"), "ALT AZA610 FL220")
+  check_eq(ex("AZA610 is cleared to climb FL300"), "ALT AZA610 FL300")
+  check_eq(ex("AZA610 is climbing too slowly, vertical speed 2000"), "VS AZA610 2000")
+  -- an offer or question of wish to the pilot is no clearance; a polite request stays read
+  asked(ex("AZA610, would you like to climb FL300?"), "an offer")
+  asked(ex("AZA610 do you want FL300"), "a question of wish")
+  asked(ex("AZA610 would you prefer heading 250"), "an offer of a heading")
+  check_eq(ex("AZA610 could you please climb FL300"), "ALT AZA610 FL300")
+  check_eq(ex("I would like AZA610 to climb FL300"), "ALT AZA610 FL300")
+  -- a flight level, or a heading, said in words with a unit of another measure is asked
+  asked(ex("AZA610 descend flight level two two zero feet"), "a flight level in words with feet")
+  asked(ex("AZA610 climb flight level three hundred metres"), "a flight level in words with metres")
+  asked(ex("AZA610 climb flight level two niner zero ft"), "a flight level in words with ft")
+  asked(ex("AZA610 turn left heading two four zero knots"), "a heading in words with knots")
+  check_eq(ex("AZA610 climb flight level two niner zero"), "ALT AZA610 FL290")
+  check_eq(ex("AZA610 heading two four zero, speed two five zero knots"), "HDG AZA610 240 ; SPD AZA610 250")
+  check_eq(ex("AZA610 descend to flight level two two zero"), "ALT AZA610 FL220")
+  -- a vertical speed no airliner flies (a level said with a rate's unit) is asked
+  asked(ex("AZA610 climb to 29000 feet per minute"), "a level with a rate's unit")
+  asked(ex("AZA610 climb to flight level two niner zero feet per minute"), "a level in words with a rate's unit")
+  check_eq(ex("AZA610 climb FL290 at 2500 feet per minute"), "ALT AZA610 FL290 2500")
+  -- a retraction after an instruction ("forget it", "ignore that", "just kidding") sends nothing
+  asked(ex("AZA610 climb FL300, forget it"), "forget it, closing")
+  asked(ex("AZA610 turn left heading 200. Ignore that."), "ignore that, closing")
+  asked(ex("AZA610 reduce speed 250 disregard that please"), "disregard that, closing")
+  asked(ex("AZA610 climb FL300, just kidding"), "just kidding")
+  asked(ex("AZA610 climb FL300, ignore that, turn left heading 200"), "ignore that, then another kind")
+  check_eq(ex("AZA610 climb FL300, ignore the traffic"), "ALT AZA610 FL300")
+  -- a value refused ("unable"), requested by the pilot or still to come ("standby for") is no clearance
+  asked(ex("AZA610 unable climb FL300"), "unable before the value")
+  asked(ex("AZA610 unable heading 200"), "unable before a heading")
+  asked(ex("AZA610 requests FL300"), "a pilot's request")
+  asked(ex("AZA610 requesting climb to flight level three zero zero"), "a pilot's request in words")
+  asked(ex("AZA610 would like FL300"), "a pilot's wish")
+  asked(ex("AZA610 standby for FL300"), "standby for a level")
+  check_eq(ex("AZA610 unable FL300 due traffic, maintain FL260"), "ALT AZA610 FL260")
+  check_eq(ex("AZA610 request you climb FL300"), "ALT AZA610 FL300")
+  check_eq(ex("AZA610 requests FL300, climb FL300 approved"), "ALT AZA610 FL300")
+  check_eq(ex("AZA610 turn right heading 300, standby for descent"), "HDG AZA610 300 RIGHT")
+  -- "at least" or "at most" before the level drafted to fly bounds it: asked; a rate "at least" stays read
+  asked(ex("AZA610 maintain at least FL220"), "at least before a flight level")
+  asked(ex("AZA610 maintain at least 22000 feet"), "at least before an altitude")
+  asked(ex("AZA610 descend at most flight level two two zero"), "at most, in words")
+  check_eq(ex("AZA610 climb FL300 rate at least 1500"), "ALT AZA610 FL300 1500")
+end
