@@ -2422,6 +2422,11 @@ function G.level_before_verb(text)
   return text
 end
 
+-- Words in a notebook's "#" comment that may hold, take back or time what is before it (G.written_forms)
+G.comment_holds = set_of({ "not", "no", "don't", "dont", "never", "cancel", "wait", "hold", "yet", "later", "until",
+  "till", "after", "before", "when", "once", "then", "instead", "meant", "mean", "actually", "oops", "sorry",
+  "correction", "disregard", "negative", "undo", "revert", "only", "unless", "if", "but" })
+
 -- A setting's name as a notebook writes it (a field of an aircraft, "klm12.hdg", "alt(DLH4AX)"), and the
 -- words its spoken change takes: up (+=), down (-=), the unit of the step, the largest step read.
 G.NOTEBOOK_FIELDS = {
@@ -2626,6 +2631,15 @@ local function written_forms(text, world)
   where("%d[ns]%d", "%f[%w](%d%d)([NnSs])(%d%d%d)([EeWw])%f[%W]", "%1 %2 %3 %4")
   -- a rate glued to its unit ("1000ft/min", "1500ft/m")
   where("ft/m", "(%d)([Ff][Tt]/[Mm][Ii]?[Nn]?)%f[%A]", "%1 %2")
+  -- "dtmult 50  # batch it": a notebook's comment after an instruction, "#" to the end, is set apart as a
+  -- remark after a dash; one with a word that may hold or take back what is before it ("# not cleared yet",
+  -- "# no wait 210", "# cancel", "# after DIMSA") stays as typed, for the clause rules to read or ask
+  where("#", "(%S)%s+#+%s*(%a.*)$", function(before, remark)
+    for w in remark:lower():gmatch("[%a']+") do
+      if G.comment_holds[w] then return nil end
+    end
+    return before .. " - " .. remark
+  end)
   -- "hdg 45 (it should drift away from the others)": a bracketed remark is a clause of its own, set apart
   -- as after a dash (set_apart)
   where("%(", "%s*%((%a[^()]*)%)", " - %1,")
@@ -2675,7 +2689,9 @@ local function written_forms(text, world)
     -- instruction from what is before it, as a comma
     where("%->", "(%w+)%s*%-+>%s*(%a[%w%.]*)", function(before, after)
       local b, a = before:lower(), after:lower()
-      if lexicon.shorthand[b] or lexicon.direct_arrow_not[b] or a:match("^fl%d") or a:match("^m%.?%d") then return nil end
+      if lexicon.shorthand[b] or lexicon.direct_arrow_not[b] or a:match("^m%.?%d") then return nil end
+      -- ("klm12 -> FL320, dlh4 -> FL280": before a level the arrow is "to", each aircraft's own)
+      if a:match("^fl%d") then return before .. " to " .. after end
       if word_set("turn left right lt rt @instruction_nouns @up @down", 1)[a] then return before .. ", " .. after end
       return before .. " direct " .. after
     end)

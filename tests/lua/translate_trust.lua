@@ -19585,4 +19585,17 @@ do
   asked(ex("sas903 spd -= 0.02"), "a Mach step")
   asked(ex("ein77 vs -= 500"), "a vertical speed's step")
   asked(ex("ein77 vs += 800 fpm"), "a vertical speed's step with its unit")
+  -- an arrow before a level is each aircraft's own "to"
+  check_eq(ex("sas903 -> FL270, ein77 -> FL300"), "ALT SAS903 FL270 ; ALT EIN77 FL300")
+  check_eq(ex("ein77 -> FL340; sas903 -> FL230"), "ALT EIN77 FL340 ; ALT SAS903 FL230")
+  -- a "#" comment after an instruction is a remark set apart; a correction in it is still read, a negation asked
+  check_eq(ex("dtmult 20  # speed things up"), "DTMULT 20")
+  check_eq(ex("sas903 hdg 120  # clear of the irish one"), "HDG SAS903 120")
+  check_eq(ex("ein77 -> FL300  # no wait FL310"), "ALT EIN77 FL310")
+  asked(ex("ein77 -> FL300  # not cleared yet"), "a negation in the comment")
+  -- random aircraft with an encounter's geometry MCRE cannot set are asked; plain random traffic stays read
+  asked(ex("spawn 4 acft converging @FL200"), "random aircraft converging")
+  asked(ex("create two aircraft head on at FL340, 8nm apart"), "random aircraft head on")
+  asked(ex("# spawn 2 ac @FL300, 20 nm apart"), "random aircraft a distance apart")
+  check_eq(ex("spawn 6 acft @FL200"), "MCRE 6 * FL200")
 end
