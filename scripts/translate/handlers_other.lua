@@ -4649,6 +4649,14 @@ return function(H, f, compass)
       or self:word(s.trig, "check checks checking") and self:find_word(s.trig, s.e, "conflict conflicts")
     if asas then self:explain(asas, asas + 1) end
     local q = first(self, s, { time = true, plain = true })
+    -- ("trails on, dt 5s": a bare "dt" just after the trails, in their clause or the next, may be their own
+    -- interval, TRAIL ON dt, or the simulation's step: asked)
+    local last = self.out[#self.out] or ""
+    if not asas and q and self:word(s.trig, "dt")
+        and (self:find_word(math.max(1, s.trig - 4), s.trig, "trail trails") < s.trig or last:match("^TRAIL O[NF]F?$")) then
+      return self:need(string.format("Is %s s the trails' interval (TRAIL ON %s) or the simulation's time step (DT %s)?",
+        f.num(q.value), f.num(q.value), f.num(q.value)))
+    end
     -- ("tick rate 20 hz": a rate in hertz is a step of its inverse in seconds)
     if q and q.kind == "plain" and self:word(q.e, "hz hertz") then
       if q.value <= 0 then return self:need("What time step, in seconds, should the simulation use?") end

@@ -19598,4 +19598,8 @@ do
   asked(ex("create two aircraft head on at FL340, 8nm apart"), "random aircraft head on")
   asked(ex("# spawn 2 ac @FL300, 20 nm apart"), "random aircraft a distance apart")
   check_eq(ex("spawn 6 acft @FL200"), "MCRE 6 * FL200")
+  -- a bare "dt" typed with the trails may be their interval or the simulation's step: asked
+  asked(ex("trail on dt 2"), "dt with the trails")
+  asked(ex("trails on ; dt=3s"), "dt after the trails")
+  check_eq(ex("dt 0.5s"), "DT 0.5")
 end
