@@ -2468,10 +2468,95 @@ function G.level_before_verb(text)
   return text
 end
 
+-- Words in a notebook's "#" comment that may hold, take back or time what is before it (G.written_forms)
+G.comment_holds = set_of({ "not", "no", "don't", "dont", "never", "cancel", "wait", "hold", "yet", "later", "until",
+  "till", "after", "before", "when", "once", "then", "instead", "meant", "mean", "actually", "oops", "sorry",
+  "correction", "disregard", "negative", "undo", "revert", "only", "unless", "if", "but" })
+
+-- A setting's name as a notebook writes it (a field of an aircraft, "klm12.hdg", "alt(DLH4AX)"), and the
+-- words its spoken change takes: up (+=), down (-=), the unit of the step, the largest step read.
+G.NOTEBOOK_FIELDS = {
+  hdg = "hdg", heading = "hdg", alt = "alt", altitude = "alt", fl = "fl", spd = "spd", speed = "spd", cas = "spd",
+  vs = "vs", lnav = "lnav", vnav = "vnav", dest = "dest", orig = "orig",
+}
+
+-- Programmers' shorthand for a setting of one aircraft, rewritten into words the grammar reads:
+-- "klm12.hdg = 240" and "hdg(KLM12)=240" are "klm12 hdg 240"; "hdg -= 30" (degrees) is "turn left by 30
+-- degrees", "alt += 2000ft" "climb by 2000 ft", "FL -= 20" (flight levels) "descend by 2000 ft", "spd -= 20kt"
+-- "reduce speed by 20 kt"; "hdg = hdg - 30" is "hdg -= 30"; "lnav=False" is "lnav off". A step that is no
+-- plain whole number in range (a heading step of 0 or 360 and more, an altitude step under 100 ft or over
+-- 20000 ft, a speed step over 100 kt, a decimal, a vertical speed's, a step in another unit) is left as the
+-- operator and its number alone, and "hdg = -1" as a turn with no side, so they are asked.
+function G.notebook_assignments(text)
+  if not (text:find("[%.%(]%s*%a") or text:find("=", 1, true)) then return text end
+  local fields = G.NOTEBOOK_FIELDS
+  -- "alt(DLH4AX)=FL310", "dest(EZY45LM) = EHAM": the aircraft in brackets after the setting's name
+  text = text:gsub("%f[%w](%a+)%(%s*([%w_]+)%s*%)%s*=%s*", function(field, id)
+    if not fields[field:lower()] or not id:find("%d") then return nil end
+    return id .. " " .. field .. " "
+  end)
+  -- "klm12.hdg", "ezy45lm.spd": the aircraft's id, a dot, the setting's name
+  text = text:gsub("%f[%w](%a[%w_]*%d[%w_]*)%.(%a+)%f[^%w_]", function(id, field)
+    if not fields[field:lower()] then return nil end
+    return id .. " " .. field
+  end)
+  -- "hdg = hdg - 30", "ryr2ga hdg = ryr2ga hdg - 30": a setting set to itself plus or minus a step
+  local function self_step(field, again, sign)
+    if field:lower() ~= again:lower() or not fields[field:lower()] then return nil end
+    return field .. " " .. sign .. "= "
+  end
+  text = text:gsub("%f[%a](%a+)%s*=%s*[%w_]+%s+(%a+)%s*([%-+])%s*%f[%d]", self_step)
+  text = text:gsub("%f[%a](%a+)%s*=%s*(%a+)%s*([%-+])%s*%f[%d]", self_step)
+  -- "hdg -= 30", "alt += 2000ft", "spd -= 20 kt", "FL += 20"
+  text = text:gsub("%f[%a](%a+)%s*([%-+])=%s*([%d%.]+)%s*(%a*)", function(field, sign, num, unit)
+    local f = fields[field:lower()]
+    if not f then return nil end
+    local u, n = unit:lower(), num:match("^%d+$") and tonumber(num)
+    local up = sign == "+"
+    if f == "hdg" and (u == "" or u == "deg" or u == "degs" or u == "degrees" or u == "degree") then
+      if n and n > 0 and n < 360 then
+        return "turn " .. (up and "right" or "left") .. " by " .. n .. " degrees"
+      end
+      return sign .. "= " .. num
+    elseif (f == "alt" and (u == "" or u == "ft" or u == "feet")) or (f == "fl" and u == "") then
+      local feet = n and (f == "fl" and n * 100 or n)
+      if feet and feet >= 100 and feet <= 20000 then
+        return (up and "climb" or "descend") .. " by " .. feet .. " ft"
+      end
+      return sign .. "= " .. num
+    elseif f == "spd" and (u == "" or u == "kt" or u == "kts" or u == "knots") then
+      if n and n > 0 and n <= 100 then
+        return (up and "increase" or "reduce") .. " speed by " .. n .. " kt"
+      end
+      return sign .. "= " .. num
+    end
+    -- (a step in another unit, a vertical speed's step, a switch's: the setting's name is left out, with
+    -- the unit, so the request is asked)
+    if f == "hdg" or f == "alt" or f == "fl" or f == "spd" or f == "vs" then return sign .. "= " .. num end
+    return nil
+  end)
+  -- "hdg=-1": a negative value set is no heading; asked as a turn with no side
+  text = text:gsub("%f[%a](%a+)%s*=%s*%-%s*(%d+)", function(field, num)
+    if fields[field:lower()] ~= "hdg" then return nil end
+    return "turn by " .. num .. " degrees"
+  end)
+  -- "lnav=False", "vnav = 1": a switch set to a truth value
+  text = text:gsub("%f[%a](%a+)%s*=%s*(%w+)%f[^%w]", function(field, value)
+    local f, v = fields[field:lower()], value:lower()
+    if f ~= "lnav" and f ~= "vnav" then return nil end
+    if v == "false" or v == "0" or v == "off" or v == "no" then return field .. " off" end
+    if v == "true" or v == "1" or v == "on" or v == "yes" then return field .. " on" end
+    return nil
+  end)
+  return text
+end
+
 local function written_forms(text, world)
   -- (each pattern pass runs through where(): only where `low`, the text in lower case, holds what the
   -- pattern requires, its first argument; a rewrite outside where() sets `low` again)
   local low = text:lower()
+  text = G.notebook_assignments(text)
+  low = text:lower()
   local function where(needle, pattern, repl)
     if low:find(needle) then text, low = tokens.gsub_where(text, low, needle, pattern, repl) end
   end
@@ -2592,6 +2677,15 @@ local function written_forms(text, world)
   where("%d[ns]%d", "%f[%w](%d%d)([NnSs])(%d%d%d)([EeWw])%f[%W]", "%1 %2 %3 %4")
   -- a rate glued to its unit ("1000ft/min", "1500ft/m")
   where("ft/m", "(%d)([Ff][Tt]/[Mm][Ii]?[Nn]?)%f[%A]", "%1 %2")
+  -- "dtmult 50  # batch it": a notebook's comment after an instruction, "#" to the end, is set apart as a
+  -- remark after a dash; one with a word that may hold or take back what is before it ("# not cleared yet",
+  -- "# no wait 210", "# cancel", "# after DIMSA") stays as typed, for the clause rules to read or ask
+  where("#", "(%S)%s+#+%s*(%a.*)$", function(before, remark)
+    for w in remark:lower():gmatch("[%a']+") do
+      if G.comment_holds[w] then return nil end
+    end
+    return before .. " - " .. remark
+  end)
   -- "hdg 45 (it should drift away from the others)": a bracketed remark is a clause of its own, set apart
   -- as after a dash (set_apart)
   where("%(", "%s*%((%a[^()]*)%)", " - %1,")
@@ -2624,13 +2718,26 @@ local function written_forms(text, world)
       if not lexicon.arrow_settings[setting:lower()] then return nil end
       return setting .. space .. to
     end)
+    -- "bel3pv at NIK -> FL180", "after ROLIS -> spd 250": an arrow after a place the aircraft reaches leads
+    -- to what it does there, as "then" ("at NIK then FL180": the instruction starts at NIK); after a level
+    -- ("passing FL120 -> spd 280") it stays a comma, below
+    where("%->", "%f[%a](%a+)(%s+)([%a_][%w_]*)%s*%-+>%s*", function(word, space, place)
+      local w, p = word:lower(), place:lower()
+      if not (w == "at" or w == "after" or w == "over" or w == "passing" or w == "reaching")
+          or p:match("^fl%d") or lexicon.shorthand[p] then
+        return nil
+      end
+      return word .. space .. place .. " then "
+    end)
     -- "KLM1234 -> SUGOL": an arrow typed before a place's name is a direct-to ("alt -> FL330", a value
     -- after a setting's name, is no place); before a word that opens an instruction (a value's name, a verb
     -- of climb or descent, a turn: "KLM56 -> hdg 210 L", "passing FL120 -> spd 280") it separates that
     -- instruction from what is before it, as a comma
     where("%->", "(%w+)%s*%-+>%s*(%a[%w%.]*)", function(before, after)
       local b, a = before:lower(), after:lower()
-      if lexicon.shorthand[b] or lexicon.direct_arrow_not[b] or a:match("^fl%d") or a:match("^m%.?%d") then return nil end
+      if lexicon.shorthand[b] or lexicon.direct_arrow_not[b] or a:match("^m%.?%d") then return nil end
+      -- ("klm12 -> FL320, dlh4 -> FL280": before a level the arrow is "to", each aircraft's own)
+      if a:match("^fl%d") then return before .. " to " .. after end
       if word_set("turn left right lt rt @instruction_nouns @up @down", 1)[a] then return before .. ", " .. after end
       return before .. " direct " .. after
     end)

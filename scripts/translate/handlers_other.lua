@@ -3444,6 +3444,18 @@ return function(H, f, compass)
       self:mark_used(k, k + 1)
     end
     if not n then return self:need("How many random aircraft should I create?") end
+    -- ("spawn 2 acft head-on @FL300, 10nm apart", "create 4 aircraft converging at FL300"): an encounter's
+    -- geometry said for them is none MCRE sets (it places random aircraft anywhere): asked, never dropped
+    -- (the segment and the few words after it: "..., 10nm apart"; "head on" is two words)
+    for k = s.b, math.min(s.e + 3, #self.t) do
+      local w = (self.t[k].raw or self.t[k].text or ""):lower()
+      local nx = self.t[k + 1] and (self.t[k + 1].raw or ""):lower()
+      if L.random_geometry_words[w] or (w == "head" and nx == "on") then
+        return self:need(string.format("Random aircraft (MCRE) are placed anywhere, not '%s': should I create each "
+          .. "one with its position and heading (CRE), or random traffic with no geometry?",
+          w == "head" and "head on" or self.t[k].raw or w))
+      end
+    end
     local types = self:refs_in(s.b, s.e, "type")
     -- ("5 random 737s", "ten 787 aircraft"): a family flown in several common variants names no one type, as
     -- in a creation; a word with digits that is no type read ("foo-800s") is asked about, never dropped
@@ -4637,6 +4649,14 @@ return function(H, f, compass)
       or self:word(s.trig, "check checks checking") and self:find_word(s.trig, s.e, "conflict conflicts")
     if asas then self:explain(asas, asas + 1) end
     local q = first(self, s, { time = true, plain = true })
+    -- ("trails on, dt 5s": a bare "dt" just after the trails, in their clause or the next, may be their own
+    -- interval, TRAIL ON dt, or the simulation's step: asked)
+    local last = self.out[#self.out] or ""
+    if not asas and q and self:word(s.trig, "dt")
+        and (self:find_word(math.max(1, s.trig - 4), s.trig, "trail trails") < s.trig or last:match("^TRAIL O[NF]F?$")) then
+      return self:need(string.format("Is %s s the trails' interval (TRAIL ON %s) or the simulation's time step (DT %s)?",
+        f.num(q.value), f.num(q.value), f.num(q.value)))
+    end
     -- ("tick rate 20 hz": a rate in hertz is a step of its inverse in seconds)
     if q and q.kind == "plain" and self:word(q.e, "hz hertz") then
       if q.value <= 0 then return self:need("What time step, in seconds, should the simulation use?") end

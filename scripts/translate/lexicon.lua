@@ -633,6 +633,10 @@ return {
   -- airport settings named before "A -> B" ("dest eidw -> einn"): changed from A to B
   arrow_settings = { dest = true, destination = true, orig = true, origin = true },
   -- settings named before an arrow and their value ("alt -> FL330"): the arrow is no direct-to
+  -- words of an encounter's geometry said for aircraft created at random ("2 acft head-on", "converging",
+  -- "10nm apart"), which MCRE cannot set
+  random_geometry_words = { ["head-on"] = true, headon = true, converging = true, crossing = true, collision = true,
+    apart = true, opposing = true, opposite = true, ["in-trail"] = true, encounter = true },
   direct_arrow_not = { alt = true, altitude = true, level = true, speed = true, heading = true, mach = true,
                        vs = true, fl = true },
   -- typed shorthand: a prefix written before its value, glued or apart

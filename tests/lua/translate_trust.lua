@@ -19804,3 +19804,56 @@ do
   asked(ex("AZA610 descend at most flight level two two zero"), "at most, in words")
   check_eq(ex("AZA610 climb FL300 rate at least 1500"), "ALT AZA610 FL300 1500")
 end
+
+-- Cycle 62 (f214): a notebook's programming shorthand for one aircraft's setting. "x.hdg = 240", "alt(X)=FL310" set
+-- it; "hdg -= 30" (degrees), "alt += 2000ft", "FL -= 20" (flight levels), "spd -= 20kt" change it by a step, the
+-- side said by the sign; "lnav=False" switches off. A step out of range, a negative value set, a vertical speed's
+-- step are asked, never read as the value itself. An arrow after a place reached leads to what is done there.
+do
+  local _, ex = scene({ "CRE SAS903 A320 55 12 90 FL250 280", "CRE EIN77 A321 55.5 12 200 FL320 300",
+    "DEFWPT KOVAL 55.2 12.6", "ADDWPT SAS903 KOVAL", "DEFWPT DIMSA 55.3 13.4", "ADDWPT SAS903 DIMSA" })
+  check_eq(ex("sas903 hdg -= 25"), "HDG SAS903 65 LEFT")
+  check_eq(ex("ein77.hdg += 40deg"), "HDG EIN77 240 RIGHT")
+  check_eq(ex("sas903 heading = heading + 15"), "HDG SAS903 105 RIGHT")
+  check_eq(ex("ein77.hdg = ein77.hdg - 50"), "HDG EIN77 150 LEFT")
+  check_eq(ex("sas903 alt += 1500ft"), "ALT SAS903 26500")
+  check_eq(ex("ein77 altitude -= 4000 feet"), "ALT EIN77 28000")
+  check_eq(ex("ein77 FL -= 40"), "ALT EIN77 28000")
+  check_eq(ex("sas903 spd += 15 kts"), "SPD SAS903 295")
+  check_eq(ex("ein77.speed -= 30"), "SPD EIN77 270")
+  check_eq(ex("alt(EIN77) = FL360"), "ALT EIN77 FL360")
+  check_eq(ex("hdg(sas903)=135"), "HDG SAS903 135")
+  check_eq(ex("ein77.spd = 310kt; sas903.alt=FL270"), "SPD EIN77 310 ; ALT SAS903 FL270")
+  check_eq(ex("sas903 lnav = false"), "LNAV SAS903 OFF")
+  check_eq(ex("ein77 vnav=True"), "VNAV EIN77 ON")
+  check_eq(ex("sas903 at KOVAL -> FL200"), "AT SAS903 KOVAL DO ALT SAS903 FL200")
+  check_eq(ex("sas903: after DIMSA -> spd 250"), "AT SAS903 DIMSA DO SPD SAS903 250")
+  -- (never the step read as the value: a heading step of 180 and more is confirmed, none or 360 and more asked)
+  asked(ex("sas903 hdg -= 200"), "a step the long way round")
+  asked(ex("sas903 hdg += 0"), "a step of nothing")
+  asked(ex("ein77 hdg += 400"), "a step of more than a circle")
+  asked(ex("sas903 hdg=-5"), "a negative heading set")
+  asked(ex("sas903 alt -= 50"), "a level step of 50 ft")
+  asked(ex("ein77 FL += 300"), "a level step of 300 levels")
+  asked(ex("sas903 spd -= 150kt"), "a speed step of 150 kt")
+  asked(ex("sas903 spd -= 0.02"), "a Mach step")
+  asked(ex("ein77 vs -= 500"), "a vertical speed's step")
+  asked(ex("ein77 vs += 800 fpm"), "a vertical speed's step with its unit")
+  -- an arrow before a level is each aircraft's own "to"
+  check_eq(ex("sas903 -> FL270, ein77 -> FL300"), "ALT SAS903 FL270 ; ALT EIN77 FL300")
+  check_eq(ex("ein77 -> FL340; sas903 -> FL230"), "ALT EIN77 FL340 ; ALT SAS903 FL230")
+  -- a "#" comment after an instruction is a remark set apart; a correction in it is still read, a negation asked
+  check_eq(ex("dtmult 20  # speed things up"), "DTMULT 20")
+  check_eq(ex("sas903 hdg 120  # clear of the irish one"), "HDG SAS903 120")
+  check_eq(ex("ein77 -> FL300  # no wait FL310"), "ALT EIN77 FL310")
+  asked(ex("ein77 -> FL300  # not cleared yet"), "a negation in the comment")
+  -- random aircraft with an encounter's geometry MCRE cannot set are asked; plain random traffic stays read
+  asked(ex("spawn 4 acft converging @FL200"), "random aircraft converging")
+  asked(ex("create two aircraft head on at FL340, 8nm apart"), "random aircraft head on")
+  asked(ex("# spawn 2 ac @FL300, 20 nm apart"), "random aircraft a distance apart")
+  check_eq(ex("spawn 6 acft @FL200"), "MCRE 6 * FL200")
+  -- a bare "dt" typed with the trails may be their interval or the simulation's step: asked
+  asked(ex("trail on dt 2"), "dt with the trails")
+  asked(ex("trails on ; dt=3s"), "dt after the trails")
+  check_eq(ex("dt 0.5s"), "DT 0.5")
+end
