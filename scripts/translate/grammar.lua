@@ -17005,7 +17005,6 @@ function M.translate(text, world)
     fleet = world.aircraft, out = {}, qcache = {}, taken = {}, noted = {}, cut_back = {}, triggers = {}, apart = apart,
     text_said = said }, G)
   g:settle_callsigns()
-  if os.getenv("FHZ") then print("TEXT", text) for _, r in ipairs(g.refs) do print("REF", r.kind, r.name, r.b, r.e, r.heard and r.heard.id, r.exists, r.spoken) end end
   local same = g:same_for()
   g:airline_types()
   g:airline_refs()

@@ -2499,8 +2499,9 @@ end
 -- airline_refs): exactly one aircraft of that country (and type) is the aircraft meant when every aircraft flying
 -- has a country (an airline of lexicon.airline_countries, a registration of registration_countries); several, none,
 -- or an aircraft flying whose country is not known (it could be the one meant) are asked about, "one" included
--- (never the digit of a callsign: "the German one" with XYZ1 flying). Said after a word of other traffic ("behind the Dutch one") they name no
--- aircraft instructed.
+-- (never the digit of a callsign: "the German one" with XYZ1 flying). Said after a word of other traffic ("behind the Dutch one") or
+-- a place relative to it ("clear of", "ahead of", "in front of", "abeam of", "in the wake of the Irish one") they name
+-- no aircraft instructed.
 function m:nationality_refs()
   if not self:said("the") then return end
   local countries = L.airline_countries
@@ -2529,6 +2530,7 @@ function m:nationality_refs()
     local adj = self.t[i].kind == "word" and countries[self.t[i].text] and self.t[i].text
     local e
     if adj and self:word(i - 1, "the") and not self:other_traffic_before(i - 2) and not self:has_ref(i, i + 1)
+        and not (self:word(i - 2, "of") and self:word(i - 3, "clear ahead front abeam wake"))
         and not self:airline_at(i) and not (self.positioned or {})[i - 1] then
       local ids, known = {}, true
       for _, a in ipairs(self.fleet) do

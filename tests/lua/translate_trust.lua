@@ -19845,6 +19845,7 @@ do
   -- a "#" comment after an instruction is a remark set apart; a correction in it is still read, a negation asked
   check_eq(ex("dtmult 20  # speed things up"), "DTMULT 20")
   check_eq(ex("sas903 hdg 120  # clear of the irish one"), "HDG SAS903 120")
+  check_eq(ex("ein77 hdg 300  # ahead of the scandinavian one"), "HDG EIN77 300")
   check_eq(ex("ein77 -> FL300  # no wait FL310"), "ALT EIN77 FL310")
   asked(ex("ein77 -> FL300  # not cleared yet"), "a negation in the comment")
   -- random aircraft with an encounter's geometry MCRE cannot set are asked; plain random traffic stays read
