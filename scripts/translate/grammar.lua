@@ -2488,13 +2488,25 @@ G.NOTEBOOK_FIELDS = {
 -- 20000 ft, a speed step over 100 kt, a decimal, a vertical speed's, a step in another unit) is left as the
 -- operator and its number alone, and "hdg = -1" as a turn with no side, so they are asked.
 function G.notebook_assignments(text)
-  if not (text:find("[%.%(]%s*%a") or text:find("=", 1, true)) then return text end
+  if not (text:find("[%.%(]%s*%a") or text:find("=", 1, true) or text:find("%a%(")) then return text end
   local fields = G.NOTEBOOK_FIELDS
   -- "alt(DLH4AX)=FL310", "dest(EZY45LM) = EHAM": the aircraft in brackets after the setting's name
   text = text:gsub("%f[%w](%a+)%(%s*([%w_]+)%s*%)%s*=%s*", function(field, id)
     if not fields[field:lower()] or not id:find("%d") then return nil end
     return id .. " " .. field .. " "
   end)
+  -- "spd(250kt)", "vs(-2000)", "spd(.8)", "hdg(270)": a setting's name called with one number (a sign, a decimal,
+  -- a unit typed after it) is the setting and its value; anything else in the brackets (an id, two values) is
+  -- left as typed
+  text = text:gsub("%f[%w](%a+)%(%s*([%-+]?)%s*(%d*%.?%d+)%s*(%a*)%s*%)", function(field, sign, num, unit)
+    local f = fields[field:lower()]
+    if not f or (unit ~= "" and not lexicon.notebook_units[unit:lower()]) then return nil end
+    -- (a sign is a vertical speed's direction; on another setting it could be a step or no value: left as typed)
+    if sign ~= "" and f ~= "vs" then return nil end
+    return field .. " " .. (sign == "-" and "-" or "") .. num .. (unit ~= "" and " " .. unit or "")
+  end)
+  -- "vs=+1200fpm", "vs = +800": a vertical speed set with a plus sign is that rate up
+  text = text:gsub("%f[%a]([Vv][Ss])%s*=%s*%+%s*(%d)", "%1 %2")
   -- "klm12.hdg", "ezy45lm.spd": the aircraft's id, a dot, the setting's name
   text = text:gsub("%f[%w](%a[%w_]*%d[%w_]*)%.(%a+)%f[^%w_]", function(id, field)
     if not fields[field:lower()] then return nil end
@@ -11547,6 +11559,16 @@ function G:addwpt_level_left()
   end
 end
 
+-- "klm12 -> FL250 (already?)", "dlh4 hdg 270 (clear of the klm?)": a remark in brackets that holds a question
+-- mark, said with instructions (`said`: the request as typed), doubts them: asked, nothing sent.
+function G:bracket_question(said)
+  if #self.out == 0 then return end
+  local remark = said:match("%(([^()]*%?[^()]*)%)")
+  if not remark then return end
+  return self:need(string.format("I have %s, but the remark '(%s)' asks something about it: no instruction sent. "
+    .. "If it should run, please say it without the question.", table.concat(self.out, " ; "), remark))
+end
+
 -- So does an instruction's base form there, or its value's name with the value ("KLM12 climb FL300?", "DLH34, turn
 -- left heading 180?", "KLM12 heading 180?", and the verb before the aircraft: "climb KLM12 FL300?"): is it allowed,
 -- should it? A question, asked, never sent ("please" in it, or a modal before it, "could KLM12 climb ...?", is a
@@ -11579,15 +11601,28 @@ function G:participle_question()
   local r = self:refs_in(first, first + 1, "aircraft")[1]
   if not (r and r.b == first and r.exists) then return end
   local k = self:skip_fillers(r.e)
+  -- (several aircraft joined, "klm12 and dlh4 climb FL260?", "klm12 + dlh4 -> FL250?": the same question to each)
+  local names = { r.name:upper() }
+  while self.t[k] do
+    local j = (self:word(k, "and") or self.t[k].text == "&" or self.t[k].text == "+") and self:skip_fillers(k + 1)
+      or (k > r.e and k) -- ("and" may be a filler, skipped)
+    local r2 = j and self:refs_in(j, j + 1, "aircraft")[1]
+    if not (r2 and r2.exists and r2.b == j) then break end
+    names[#names + 1] = r2.name:upper()
+    k = self:skip_fillers(r2.e)
+  end
   if self.t[k] and self.t[k].text == "," then k = self:skip_fillers(k + 1) end
   if self:word(k, "you") and self:word(k + 1, "are") then k = k + 2 end
-  local base = self.t[k] and G.instruction_bases[self.t[k].text]
+  -- ("klm12 -> FL250?": the arrow before a level is "to", the level's instruction)
+  local base = self.t[k] and (G.instruction_bases[self.t[k].text]
+    or (self:word(k, "to") and #self:quantities(k + 1, last) > 0))
   while self:word(k, "is are now still currently") do k = k + 1 end
   -- (a value or a place after it: "KLM12 heading?" asks its state, shown)
   if base and not modal and (#self:quantities(k, last) > 0 or #self:refs_in(k, last, "waypoint") > 0) then
+    local who = table.concat(names, " and ")
     return self:need(string.format("'%s?' is an instruction said as a question (is it allowed? should %s do it?): "
       .. "no instruction sent. If %s should do it, please say it without the question mark.",
-      (self:raw(first, last):gsub(" ([,.;:])", "%1")), r.name:upper(), r.name:upper()))
+      (self:raw(first, last):gsub(" ([,.;:])", "%1")), who, who))
   end
   if not (self.t[k] and G.participles[self.t[k].text]) then return end
   return self:need(string.format("'%s' asks what %s is doing: a question, no instruction. If %s should do it, "
@@ -17173,6 +17208,7 @@ function M.translate(text, world)
   if not g.ask then g:unknown_places() end
   if not g.ask then g:described() end
   if not g.ask then g:state_question() end
+  if not g.ask then g:bracket_question(said) end
   if not g.ask then g:participle_question() end
   if not g.ask then g:heading_after_direct() end
   if not g.ask then g:speed_lifted_and_given() end

@@ -1457,6 +1457,9 @@ return {
                       "resuming", "joining", "intercepting", "descent", "turns", "climbs" },
   -- units a fraction said in words is of ("half a mile": 0.5 nm)
   fraction_units = { mile = true, miles = true, nm = true, nmi = true, mi = true },
+  -- units typed after a setting's value in a notebook's call form ("spd(250kt)", "vs(-2000fpm)")
+  notebook_units = { kt = true, kts = true, knots = true, ft = true, feet = true, fpm = true, deg = true,
+                     degs = true, degrees = true },
   -- units that close a number typed with a space before its last three digits ("8 500 m", "12 000 ft")
   thousands_units = { m = true, ft = true, feet = true, foot = true, metres = true, meters = true, metre = true,
                       meter = true },

@@ -791,6 +791,12 @@ function M.typed(state, ctx)
     -- string: ECHO's text, a carried command, a file name)
     local args = c:match("^[%w_]+(.*)$")
     if not M.free_text(name) then args = args:upper() end
+    -- (ECHO's text typed whole in one pair of quotes, "echo 'run 3 start'", is the words inside: the quotes
+    -- delimit the text, as in a script)
+    if name == "ECHO" then
+      local q, inner = args:match("^%s+([\"'])(.-)%1%s*$")
+      if q and inner:find("%S") and not inner:find(q, 1, true) then args = " " .. inner end
+    end
     cmds[k] = name .. args
   end
   state.candidate, state.source = table.concat(cmds, " ; "), "typed"

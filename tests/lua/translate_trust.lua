@@ -19858,3 +19858,36 @@ do
   asked(ex("trails on ; dt=3s"), "dt after the trails")
   check_eq(ex("dt 0.5s"), "DT 0.5")
 end
+
+-- Cycle 62 (f21x)
+do
+  local _, ex = scene({ "CRE AFL221 A321 56 14 90 FL280 290", "CRE IBE35 A320 56.3 14.2 200 FL300 280" })
+  -- a setting's name called with one number is the setting and its value (a unit may follow the number)
+  check_eq(ex("afl221 spd(260kt)"), "SPD AFL221 260")
+  check_eq(ex("IBE35 hdg( 310 )"), "HDG IBE35 310")
+  check_eq(ex("ibe35 vs(-1800)"), "VS IBE35 -1800")
+  check_eq(ex("afl221 vs(+900 fpm)"), "VS AFL221 900")
+  check_eq(ex("ibe35 speed(.79)"), "SPD IBE35 M0.79")
+  -- a sign on another setting's value, or two values in the brackets, is no value: asked
+  asked(ex("afl221 spd(-30)"), "a signed speed in the call")
+  asked(ex("ibe35 hdg(+20)"), "a signed heading in the call")
+  asked(ex("afl221 spd(250, 270)"), "two values in the call")
+  -- a vertical speed set with a plus sign is that rate up
+  check_eq(ex("ibe35 vs=+1500fpm"), "VS IBE35 1500")
+  check_eq(ex("afl221 vs = +700"), "VS AFL221 700")
+  -- ECHO typed with its text in one pair of quotes prints the words inside
+  check_eq(ex("echo 'leg 4 begins'"), "ECHO leg 4 begins")
+  check_eq(ex('ECHO "Block B start"'), "ECHO Block B start")
+  check_eq(ex("echo 'a' and 'b'"), "ECHO 'a' and 'b'")
+  -- a bracketed remark holding a question mark doubts the instructions: asked; one without stays a remark
+  asked(ex("afl221 -> FL320 (is it free?)"), "a question in brackets")
+  asked(ex("afl221 & ibe35 -> FL310 (both?) then show them"), "a question in brackets, two aircraft")
+  asked(ex("ibe35 turn left heading 150 (clear of the russian?)"), "a question in brackets after a turn")
+  check_eq(ex("ibe35 hdg 150 (for spacing)"), "HDG IBE35 150")
+  -- an instruction to several aircraft, or with an arrow before its level, said as a question: asked
+  asked(ex("afl221 -> FL320?"), "an arrow's level as a question")
+  asked(ex("afl221 and ibe35 descend FL240?"), "two aircraft, a question")
+  asked(ex("AFL221 + IBE35 hdg 090?"), "two aircraft joined by plus, a question")
+  check_eq(ex("afl221 and ibe35 descend FL240"), "ALT AFL221 FL240 ; ALT IBE35 FL240")
+  check_eq(ex("afl221 -> FL320"), "ALT AFL221 FL320")
+end
