@@ -19857,3 +19857,23 @@ do
   asked(ex("trails on ; dt=3s"), "dt after the trails")
   check_eq(ex("dt 0.5s"), "DT 0.5")
 end
+
+-- Cycle 62 (fpol6)
+do
+  local _, ex = scene({ "CRE AFR218 A320 48 2 90 FL250 280", "CRE DLH77 B744 48.3 2.4 270 FL320 290",
+    "CRE RYR4411 B738 47.8 2.2 180 FL200 270" })
+  -- the speaker's hedge with its "I'm" dropped, after a complete instruction, is a remark: the "not" negates
+  -- nothing that was instructed
+  check_eq(ex("Could Air France 218 turn left heading 200, not sure which way is quicker but that's fine."),
+    "HDG AFR218 200 LEFT")
+  check_eq(ex("Please turn DLH77 right heading 030, not sure which side is shorter."), "HDG DLH77 30 RIGHT")
+  check_eq(ex("Could Lufthansa 77 fly Mach .80? Not quite sure that's realistic."), "SPD DLH77 M0.8")
+  check_eq(ex("Ryanair 4411 reduce to 250 knots please, not totally sure if it matters."), "SPD RYR4411 250")
+  check_eq(ex("RYR4411 descend FL150, not certain it can do that in time."), "ALT RYR4411 FL150")
+  -- a bare "not sure", one about a noun, another value in the hedge, a turn side withdrawn: asked
+  asked(ex("AFR218 climb FL300, not sure."), "a bare hedge")
+  asked(ex("AFR218 climb FL300, not sure about the level."), "a hedge about the level")
+  asked(ex("DLH77 descend FL200, not sure if FL180 is better."), "another level in the hedge")
+  asked(ex("AFR218 climb FL300, not sure, maybe FL310."), "a hedge then another level")
+  asked(ex("RYR4411 turn left heading 200, not right."), "a side withdrawn")
+end
