@@ -10873,6 +10873,12 @@ function G:explained_spans(issued, kinds)
       local q = self:quantities(i + 2, i + 3)[1]
       if q and q.kind == "vs" and q.b == i + 2 then inside[i], inside[i + 1] = true, true end
     end
+    -- "could you list the route of Alaska 1129 once more?": a request made again, "once more" closing its clause
+    -- (before punctuation, "please" or the end); "once more than 10 miles from ..." opens a condition, never this
+    if w == "once" and nw == "more" then
+      local nx = self.t[i + 2]
+      if not nx or nx.kind == "punct" or self:word(i + 2, "please") then inside[i], inside[i + 1] = true, true end
+    end
     local phrases = PHRASES[self.t[i].text]
     for k = 1, phrases and #phrases or 0 do
       local p, ok = phrases[k], true

@@ -19876,4 +19876,10 @@ do
   asked(ex("DLH77 descend FL200, not sure if FL180 is better."), "another level in the hedge")
   asked(ex("AFR218 climb FL300, not sure, maybe FL310."), "a hedge then another level")
   asked(ex("RYR4411 turn left heading 200, not right."), "a side withdrawn")
+  -- "once more" closing a request is "again"; "once more than ..." opens a condition: asked
+  check_eq(ex("Could you list the route of Air France 218 once more?"), "LISTRTE AFR218")
+  check_eq(ex("Show me the position of DLH77 once more, please."), "POS DLH77")
+  check_eq(ex("Could you please show RYR4411's route once more please"), "LISTRTE RYR4411")
+  asked(ex("AFR218 turn left heading 200 once more than 10 miles from DLH77."), "a distance condition")
+  asked(ex("RYR4411 climb FL300 once more traffic is clear"), "a condition on traffic")
 end
