@@ -19882,4 +19882,12 @@ do
   check_eq(ex("Could you please show RYR4411's route once more please"), "LISTRTE RYR4411")
   asked(ex("AFR218 turn left heading 200 once more than 10 miles from DLH77."), "a distance condition")
   asked(ex("RYR4411 climb FL300 once more traffic is clear"), "a condition on traffic")
+  -- "standard" or "default" beside the protected zone's values is accounted for when each is BlueSky's own
+  check_eq(ex("Could you kindly restore the protected zone to the standard 5 NM radius and a half height of 1000 ft?"),
+    "ZONER 5 ; ZONEDH 1000")
+  check_eq(ex("Please put the protection zone back to 5 nautical miles and 1000 feet, like the standard."),
+    "ZONER 5 ; ZONEDH 1000")
+  check_eq(ex("set zone half height 1000 ft and radius 5 nm, default values please"), "ZONEDH 1000 ; ZONER 5")
+  asked(ex("Reset the protected zone to the standard 3 nm radius."), "a standard that is not BlueSky's")
+  asked(ex("Please set the protected zone back to standard."), "no value said")
 end
