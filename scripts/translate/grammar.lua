@@ -3211,6 +3211,20 @@ function G:aircraft_count(q)
       and not self:word(q.b - 1, "other another"))
 end
 
+-- True when the tokens b .. e-1 open with the speaker's hedge, its "I'm" dropped (lexicon.aside.hedge: "not sure
+-- which way is shorter", "not quite sure that's realistic"): "not", at most two hedge adverbs, "sure" or "certain",
+-- then a complement word before e. A bare "not sure" or one about a noun ("not sure about the level") is none.
+function G:hedge_opens(b, e)
+  local h = COMMENTARY.hedge
+  if not self:word(b, "not") then return false end
+  h.adverb_set = h.adverb_set or set_of(h.adverbs)
+  h.word_set = h.word_set or set_of(h.words)
+  h.complement_set = h.complement_set or set_of(h.complements)
+  local x = b + 1
+  while x < b + 3 and self:word(x, h.adverb_set) do x = x + 1 end
+  return x + 1 < e and self:word(x, h.word_set) and self:word(x + 1, h.complement_set)
+end
+
 function G:commentary(b, e, lead, record, places)
   if b >= e or self:has_ref(b, b + 1, "aircraft") then return false end
   for _, q in ipairs(self:quantities(b, e)) do
@@ -3223,7 +3237,7 @@ function G:commentary(b, e, lead, record, places)
   for _, r in ipairs(places and {} or self:refs_in(b, e, "waypoint")) do
     if not self:word(r.b, "@not_names") then return false end
   end
-  local own, studied = self:word(b, CM_OWN), false
+  local own, studied = self:word(b, CM_OWN) or self:hedge_opens(b, e), false
   for x = b, e - 1 do
     local t = self.t[x]
     if self.noted[x] then return false end  -- (what squawk does not simulate: "- hold TOM6RT")
@@ -4053,9 +4067,11 @@ function G:in_reason(i)
         -- ("left 70 degrees - hard test of the turn model", "800 ft (testing reduced vertical)"; "to Heathrow -
         -- no, hang on, sorry, to Stansted" opens a correction, never set apart)
         inside = true
-      elseif punct and (t.text == "," or t.text == ";") and self:word(k + 1, CM_SUBJECTS) and instructed(k)
+      elseif punct and (t.text == "," or t.text == ";")
+          and (self:word(k + 1, CM_SUBJECTS) or self:hedge_opens(k + 1, commentary_end(self, k + 1))) and instructed(k)
           and self:commentary(k + 1, commentary_end(self, k + 1)) then
-        -- ("Fast-forward 20 minutes, we only care about the descent phase"; "...; we are studying how ...")
+        -- ("Fast-forward 20 minutes, we only care about the descent phase"; "...; we are studying how ...";
+        -- ", not sure which way is shorter": the speaker's hedge, G:hedge_opens)
         inside = true
       elseif punct and (t.text == "," or t.text == ";")
           and self:word_in(k + 1, commentary_end(self, k + 1), COMMENTARY.reason_set)
@@ -10868,6 +10884,12 @@ function G:explained_spans(issued, kinds)
     if w == "not" and self:word(i + 1, "above exceeding over") then
       local q = self:quantities(i + 2, i + 3)[1]
       if q and q.kind == "vs" and q.b == i + 2 then inside[i], inside[i + 1] = true, true end
+    end
+    -- "could you list the route of Alaska 1129 once more?": a request made again, "once more" closing its clause
+    -- (before punctuation, "please" or the end); "once more than 10 miles from ..." opens a condition, never this
+    if w == "once" and nw == "more" then
+      local nx = self.t[i + 2]
+      if not nx or nx.kind == "punct" or self:word(i + 2, "please") then inside[i], inside[i + 1] = true, true end
     end
     local phrases = PHRASES[self.t[i].text]
     for k = 1, phrases and #phrases or 0 do

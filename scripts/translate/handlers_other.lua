@@ -5252,6 +5252,21 @@ return function(H, f, compass)
       end
       table.remove(self.out, hi[2])
     end
+    -- ("restore the protected zone to the standard 5 NM radius", "5 miles and 1000 feet, like the standard",
+    -- "... 1000 feet and radius 5 miles, standard values please"): "standard" or "default" names the values said when
+    -- each is BlueSky's own (5 NM radius, 1000 ft half height): the word is accounted for; beside any other value
+    -- it is left to ask what it means
+    local defaults = #self.out > before
+    for x = before + 1, #self.out do
+      defaults = defaults and (self.out[x] == "ZONER 5" or self.out[x] == "ZONEDH 1000")
+    end
+    if defaults then
+      for x = 1, #self.t do
+        if self:word(x, "standard default") and not self:word(x + 1, "speed rate turn route routing arrival departure star sid") then
+          self:mark_used(x, self:word(x + 1, "value values setting settings") and x + 2 or x + 1)
+        end
+      end
+    end
     if #self.out == before and not named then
       self:need(vertical and "What half-height, in feet, should the protected zone have?"
         or "What radius, in nautical miles, should the protected zone have?")

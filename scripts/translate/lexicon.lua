@@ -1576,6 +1576,14 @@ return {
                                "should", "could", "can", "would", "will", "must", "need", "needs", "want", "wants",
                                "like", "shall", "may", "might", "to", "if", "when", "once", "after", "until",
                                "correction", "disregard", "negative", "one" } },
+          -- the speaker's hedge with its "I'm" dropped (", not sure which way is shorter", ", not quite sure that's
+          -- realistic"): a clause opening with "not", at most two of `adverbs`, one of `words`, then one of
+          -- `complements` is the speaker's own (commentary.own), its "not" no negation of the instruction
+          hedge = { adverbs = { "quite", "totally", "entirely", "really", "completely", "too", "so", "very", "fully",
+                                "honestly" },
+                    words = { "sure", "certain" },
+                    complements = { "which", "whether", "if", "that", "that's", "it", "it's", "this", "how", "why",
+                                    "what", "whichever" } },
           while_words = { "while", "whilst" },
           -- the audience of a demonstration addressed in a sentence of its own ("Class, is that toward the bottom of
           -- the screen?", "Guess first, kids!"): such a sentence, a question too, is a remark to them (G:remark_sentence)

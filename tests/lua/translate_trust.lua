@@ -19891,3 +19891,37 @@ do
   check_eq(ex("afl221 and ibe35 descend FL240"), "ALT AFL221 FL240 ; ALT IBE35 FL240")
   check_eq(ex("afl221 -> FL320"), "ALT AFL221 FL320")
 end
+
+-- Cycle 62 (fpol6)
+do
+  local _, ex = scene({ "CRE AFR218 A320 48 2 90 FL250 280", "CRE DLH77 B744 48.3 2.4 270 FL320 290",
+    "CRE RYR4411 B738 47.8 2.2 180 FL200 270" })
+  -- the speaker's hedge with its "I'm" dropped, after a complete instruction, is a remark: the "not" negates
+  -- nothing that was instructed
+  check_eq(ex("Could Air France 218 turn left heading 200, not sure which way is quicker but that's fine."),
+    "HDG AFR218 200 LEFT")
+  check_eq(ex("Please turn DLH77 right heading 030, not sure which side is shorter."), "HDG DLH77 30 RIGHT")
+  check_eq(ex("Could Lufthansa 77 fly Mach .80? Not quite sure that's realistic."), "SPD DLH77 M0.8")
+  check_eq(ex("Ryanair 4411 reduce to 250 knots please, not totally sure if it matters."), "SPD RYR4411 250")
+  check_eq(ex("RYR4411 descend FL150, not certain it can do that in time."), "ALT RYR4411 FL150")
+  -- a bare "not sure", one about a noun, another value in the hedge, a turn side withdrawn: asked
+  asked(ex("AFR218 climb FL300, not sure."), "a bare hedge")
+  asked(ex("AFR218 climb FL300, not sure about the level."), "a hedge about the level")
+  asked(ex("DLH77 descend FL200, not sure if FL180 is better."), "another level in the hedge")
+  asked(ex("AFR218 climb FL300, not sure, maybe FL310."), "a hedge then another level")
+  asked(ex("RYR4411 turn left heading 200, not right."), "a side withdrawn")
+  -- "once more" closing a request is "again"; "once more than ..." opens a condition: asked
+  check_eq(ex("Could you list the route of Air France 218 once more?"), "LISTRTE AFR218")
+  check_eq(ex("Show me the position of DLH77 once more, please."), "POS DLH77")
+  check_eq(ex("Could you please show RYR4411's route once more please"), "LISTRTE RYR4411")
+  asked(ex("AFR218 turn left heading 200 once more than 10 miles from DLH77."), "a distance condition")
+  asked(ex("RYR4411 climb FL300 once more traffic is clear"), "a condition on traffic")
+  -- "standard" or "default" beside the protected zone's values is accounted for when each is BlueSky's own
+  check_eq(ex("Could you kindly restore the protected zone to the standard 5 NM radius and a half height of 1000 ft?"),
+    "ZONER 5 ; ZONEDH 1000")
+  check_eq(ex("Please put the protection zone back to 5 nautical miles and 1000 feet, like the standard."),
+    "ZONER 5 ; ZONEDH 1000")
+  check_eq(ex("set zone half height 1000 ft and radius 5 nm, default values please"), "ZONEDH 1000 ; ZONER 5")
+  asked(ex("Reset the protected zone to the standard 3 nm radius."), "a standard that is not BlueSky's")
+  asked(ex("Please set the protected zone back to standard."), "no value said")
+end
