@@ -1292,6 +1292,7 @@ end
 -- "FL260, correction, FL270" (the value said first is taken back, self_corrections' reading). Anything else stays.
 function G.said_but(text)
   if not text:find("[Ss][Aa][Ii][Dd]") then return text end
+  text = G.said_restated(text)
   local toks = bare_words(text)
   local SB = lexicon.said_but
   for k = 1, #toks - 4 do
@@ -1317,6 +1318,43 @@ function G.said_but(text)
         if y and (G.said_but_value(y) or SB.value_words[y.bare]) then
           return text:sub(1, toks[k].at - 1) .. text:sub(toks[k + 2].at, toks[j - 1].e - 1):gsub("%p+$", "")
             .. ", correction, " .. text:sub(y.at)
+        end
+      end
+    end
+  end
+  return text
+end
+-- "negative, I said one two zero, descend flight level one two zero", "no, I said 250, speed two five zero": "I
+-- said" and a run of values closed by a comma name the value the instruction after it gives again; the words "I
+-- said" and that run are dropped when a later run of values in the request holds the same digits (spoken or
+-- typed). A run no later value repeats stays as said.
+G.said_digit = { zero = "0", one = "1", two = "2", three = "3", tree = "3", four = "4", fower = "4", five = "5",
+  fife = "5", six = "6", seven = "7", eight = "8", nine = "9", niner = "9" }
+function G.said_restated(text)
+  local toks = bare_words(text)
+  local function digits(t)
+    if t.raw:match("%d") then return (t.raw:gsub("%D", "")) end
+    return G.said_digit[t.bare] or ""
+  end
+  for k = 1, #toks - 3 do
+    if toks[k].bare == "i" and toks[k + 1].bare == "said" and not toks[k + 1].raw:match("%p$") then
+      local j, key = k + 2, ""
+      while toks[j] and j < k + 8 and G.said_but_value(toks[j]) do
+        key = key .. digits(toks[j])
+        j = j + 1
+        if toks[j - 1].raw:match("[,;]$") then break end
+      end
+      if key ~= "" and j > k + 2 and toks[j] and toks[j - 1].raw:match(",$") then
+        local m = j
+        while toks[m] do
+          local run = ""
+          while toks[m] and G.said_but_value(toks[m]) do
+            run = run .. digits(toks[m])
+            m = m + 1
+            if toks[m - 1].raw:match("%p$") then break end
+          end
+          if run == key then return text:sub(1, toks[k].at - 1) .. text:sub(toks[j].at) end
+          if run == "" then m = m + 1 end
         end
       end
     end

@@ -802,6 +802,13 @@ return {
     -- "evet, Turkish 6RT descend ...", "climb FL110, hayır, FL100"; in capitals or after a place's verb they stay)
     evet = { word = "yes", not_prev = "direct dct dir via to at over after cross from", caps_kept = true },
     hayir = { word = "no", not_prev = "direct dct dir via to at over after cross from", caps_kept = true },
+    -- (an Israeli controller's Hebrew in an English clearance: "ken", yes; "lo", no; "beseder", all right; "rega",
+    -- wait a moment: "El Al 315, ken, descend 4000", "descend FL80, rega, lo, FL90", "heading 170, lo, left heading
+    -- 100", "rega, pause"; in capitals or after a place's verb they stay, as an ident)
+    ken = { word = "yes", not_prev = "direct dct dir via to at over after cross from", caps_kept = true },
+    lo = { word = "no", not_prev = "direct dct dir via to at over after cross from", caps_kept = true },
+    beseder = { word = "okay", not_prev = "direct dct dir via to at over after cross from", caps_kept = true },
+    rega = { word = "wait", not_prev = "direct dct dir via to at over after cross from", caps_kept = true },
     wee = { word = "small", caps_kept = true },
     yin = { word = "one", prev = "big wee small the that this", caps_kept = true },
     noo = { word = "now", prev = "the", caps_kept = true },

@@ -403,6 +403,8 @@ local names = {
     { "jordanian", "RJA" },
     { "israir", "ISR" },
     { "arkia", "AIZ" },  -- (Arkia Israeli Airlines)
+    { "sun dor", "ERO" },  -- (Sun d'Or, El Al's charter airline; said as one word too)
+    { "sundor", "ERO" },
     { "anatolian", "TKJ" },  -- (AJet)
     { "flydubai", "FDB" },
     { "indigo", "IGO" },

@@ -19925,3 +19925,30 @@ do
   asked(ex("Reset the protected zone to the standard 3 nm radius."), "a standard that is not BlueSky's")
   asked(ex("Please set the protected zone back to standard."), "no value said")
 end
+
+-- Cycle 62 (f216)
+do
+  local _, ex = scene({ "CRE ERO4417 A320 31.9 34.6 270 FL230 280", "CRE ERO208 A320 31.5 34.9 90 FL90 250",
+    "CRE ELY402 B738 31.7 34.3 180 FL150 270", "CRE AIZ77 E195 31.2 34.8 20 8000 230",
+    "CRE ISR9 A320 30.8 34.9 0 FL170 280", "CRE BAW301 A321 32.2 34.1 120 FL250 290" })
+  -- Sun d'Or's telephony, "Sun Dor" or "Sundor": its callsign taken when every character matches
+  check_eq(ex("Sun Dor 4417 descend flight level one niner zero"), "ALT ERO4417 FL190")
+  check_eq(ex("sundor two zero eight, turn left heading two one zero"), "HDG ERO208 210 LEFT")
+  check_eq(ex("Sundor 208 reduce speed to 220 knots"), "SPD ERO208 220")
+  asked(ex("Sun Dor 4471 descend FL190"), "a Sun Dor number no aircraft has")
+  asked(ex("Sun Dor, climb FL250"), "Sun Dor alone with two of its flights")
+  -- an Israeli controller's Hebrew: "ken" (yes), "beseder" (all right) said and set aside; "lo" (no) and
+  -- "rega" (wait) take the value before back
+  check_eq(ex("Arkia 77, ken, climb nine thousand"), "ALT AIZ77 9000")
+  check_eq(ex("beseder Israir 9 speed two six zero"), "SPD ISR9 260")
+  check_eq(ex("El Al 402 turn right heading 200, beseder"), "HDG ELY402 200 RIGHT")
+  check_eq(ex("Speedbird 301 descend FL210, lo, flight level two two zero"), "ALT BAW301 FL220")
+  check_eq(ex("El Al 402 climb flight level one seven zero, rega, one niner zero"), "ALT ELY402 FL190")
+  check_eq(ex("Israir 9 heading 030, rega, lo, heading 040"), "HDG ISR9 40")
+  check_eq(ex("rega, freeze the simulation"), "HOLD")
+  asked(ex("Arkia 77 lo climb"), "no with no value")
+  -- "I said" and a value the instruction after it says again: the instruction, once
+  check_eq(ex("Israir 9 lo, I said two two zero, climb flight level two two zero"), "ALT ISR9 FL220")
+  check_eq(ex("El Al 402 negative I said one niner zero, climb FL190"), "ALT ELY402 FL190")
+  check_eq(ex("Sundor 208, no, I said 230, reduce speed two three zero"), "SPD ERO208 230")
+end
