@@ -5127,7 +5127,8 @@ function G:level_never_crossed()
       -- altitude: "speed 310, reaching 300 climb FL260" at FL250, "reaching FL270 descend FL200" at FL250; to run,
       -- the aircraft would fly past the new level and come back, with no clearance of its own past the level; "300"
       -- may have been meant as a speed)
-      local to = level_feet(line:match("^ATALT %S+ %S+ ALT %S+ (%S+)") or "")
+      local who, to = line:match("^ATALT %S+ %S+ ALT (%S+) (%S+)")  -- (the waiting command's own aircraft only)
+      to = who and who:upper() == id:upper() and level_feet(to)
       local crossed = cleared and (level - a.alt_ft) * (level - cleared) <= 0  -- (its clearance passes the level)
       if to and not crossed and math.abs(level - a.alt_ft) > 50 and (level - a.alt_ft) * (level - to) > 0 then
         return self:need(string.format("I have %s. %s is at %s and the instruction that waits clears it to %s: it "

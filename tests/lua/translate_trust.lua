@@ -19884,6 +19884,11 @@ do
   check_eq(ex("AFR318 climb FL300 and when reaching FL290 climb FL280"), "ALT AFR318 FL300 ; ATALT AFR318 FL290 ALT AFR318 FL280")
 end
 do
+  -- the level another aircraft waits for is no bar to a second aircraft's command
+  local _, ex = scene({ "CRE AFR318 A320 48 2 90 FL270 280", "CRE EZY44 A320 48.2 2.2 90 FL120 280" })
+  check_eq(ex("when AFR318 passes FL250, EZY44 climb FL200"), "ATALT AFR318 FL250 ALT EZY44 FL200")
+end
+do
   -- two aircraft of airlines one brand's name calls, with the same flight number: the name alone is asked which
   local _, ex = scene({ "CRE BRX611 B737 60 17 180 FL120 250", "CRE BRA611 B737 60.2 17.6 180 FL130 250",
     "CRE VIR27 A333 51 -1 270 FL350 290", "CRE VOZ27 B738 51.5 -1.5 270 FL330 290", "CRE TRA33 B738 52 4 90 FL300 280",
