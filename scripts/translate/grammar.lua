@@ -925,6 +925,27 @@ for _, p in ipairs(lexicon.self_correction.formal_apology) do
 end
 function G.formal_apologies(text)
   local lower = text:lower()
+  -- (an apology set off as a sentence or clause of its own, with more of the request after it:
+  -- lexicon.self_correction.apology_sentence)
+  if lower:find("apolog", 1, true) or lower:find("sorry", 1, true) then
+    for _, p in ipairs(lexicon.self_correction.apology_sentence) do
+      local pattern = "%f[%w]" .. p:gsub(" ", "%%s+") .. "%f[%W]"
+      local from = 1
+      while true do
+        local b, e = lower:find(pattern, from)
+        if not b then break end
+        local before = lower:sub(1, b - 1):match("(%S?)%s*$")
+        local mark, rest = lower:sub(e + 1):match("^%s*([%.,;!%-]+)%s*(.*)$")
+        if before ~= "" and before:match("^[%.,;!%-]$") and mark and rest:match("%w") then
+          text = text:sub(1, b - 1) .. "sorry" .. text:sub(e + 1)
+          lower = text:lower()
+          from = b + 5
+        else
+          from = e + 1
+        end
+      end
+    end
+  end
   for _, a in ipairs(G.formal_apology_patterns) do
     if lower:find(a.last, 1, true) then
       local b, e = lower:find(a.pattern)
@@ -5165,11 +5186,23 @@ function G:level_never_crossed()
         local who, to = other:match("^ALT (%S+) (%S+)")
         if who and who:upper() == id:upper() then cleared = level_feet(to) end
       end
+      local function fl(ft)
+        return ft >= 10000 and string.format("FL%03d", math.floor(ft / 100 + 0.5)) or string.format("%d ft", math.floor(ft + 0.5))
+      end
+      -- (the level the condition waits for lies beyond the one its own command clears to, seen from the aircraft's
+      -- altitude: "speed 310, reaching 300 climb FL260" at FL250, "reaching FL270 descend FL200" at FL250; to run,
+      -- the aircraft would fly past the new level and come back, with no clearance of its own past the level; "300"
+      -- may have been meant as a speed)
+      local who, to = line:match("^ATALT %S+ %S+ ALT (%S+) (%S+)")  -- (the waiting command's own aircraft only)
+      to = who and who:upper() == id:upper() and level_feet(to)
+      local crossed = cleared and (level - a.alt_ft) * (level - cleared) <= 0  -- (its clearance passes the level)
+      if to and not crossed and math.abs(level - a.alt_ft) > 50 and (level - a.alt_ft) * (level - to) > 0 then
+        return self:need(string.format("I have %s. %s is at %s and the instruction that waits clears it to %s: it "
+          .. "would not pass %s on the way, so the instruction would never run. What should it wait for?",
+          table.concat(self.out, " ; "), id, fl(a.alt_ft), fl(to), at))
+      end
       if cleared and math.abs(cleared - a.alt_ft) > 50 and math.abs(level - a.alt_ft) > 50
           and (level - a.alt_ft) * (level - cleared) > 0 then
-        local function fl(ft)
-          return ft >= 10000 and string.format("FL%03d", math.floor(ft / 100 + 0.5)) or string.format("%d ft", math.floor(ft + 0.5))
-        end
         return self:need(string.format("I have %s. %s is at %s and cleared to %s: it will not pass %s, so what waits "
           .. "for that level would never run. Which level should it wait for?", table.concat(self.out, " ; "), id,
           fl(a.alt_ft), fl(cleared), at))

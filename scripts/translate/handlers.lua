@@ -978,6 +978,7 @@ local function airline_names()
   for _, b in ipairs(names.brands or {}) do
     BRANDS[b[1]] = { table.unpack(b, 2) }
     BRANDS[b[1]].shared, BRANDS[b[1]].every, BRANDS[b[1]].name = b.shared, b.every, b[1]
+    BRANDS[b[1]].twins = b.twins
     if AIRLINE_NAMES[b[1]] then BRAND_OF[AIRLINE_NAMES[b[1]]] = BRANDS[b[1]] end
   end
   return AIRLINE_NAMES, BRANDS, BRAND_OF
@@ -3878,6 +3879,30 @@ function m:airline_unknown(r)
   return self:raw(r.b, r.e)
 end
 
+-- The callsigns aircraft reference r may be when it is said with the name of a brand several airlines fly under
+-- (names.lua's brands: "Braathens 611" is BRX611 or BRA611, "Virgin 27" VIR27 or VOZ27, "Transavia 33" TRA33 or
+-- TVF33) and another aircraft of one of the brand's airlines that bears the name (bears, or the brand's `twins`;
+-- not Scoot's TGW31 beside Tigerair Taiwan's TTW31) has the same flight number and letters as r's: r's name first, then the others
+-- (ascending). nil otherwise (one such aircraft flying, or the designator typed).
+function m:brand_twins(r)
+  if r.kind ~= "aircraft" or not r.b then return nil end
+  local icao, _, codes = self:airline_at(r.b)
+  if not codes or #codes < 2 then return nil end
+  local a, d, rest = airline_digits(r.name)
+  local ofs = {}
+  for _, c in ipairs(codes) do ofs[c] = true end
+  if not ofs[a] or d == "" then return nil end
+  local out = {}
+  for _, ac in ipairs(self.fleet) do
+    local a2, d2, rest2 = airline_digits(ac.id)
+    if ac.id ~= r.name and ofs[a2] and d2 == d and rest2 == rest and (codes.twins or bears(a2, codes)) then out[#out + 1] = ac.id end
+  end
+  if #out == 0 then return nil end
+  table.sort(out)
+  table.insert(out, 1, r.name)
+  return out
+end
+
 -- A spoken callsign matched to an aircraft whose airline or digits differ
 -- from what was heard is asked about, unless the speaker confirmed it; so is one said with a later part of
 -- its airline's telephony only (m:telephony_part_only), or with its last digit heard as a word
@@ -3892,6 +3917,10 @@ function m:confirm_callsigns(s)
     if part then
       self.confirm = self.confirm or { id = r.name, heard = part }
       self:need(string.format("Did you mean %s? I heard '%s'.", r.name, part))
+    end
+    local twins = not confirmed and r.exists and self:brand_twins(r)
+    if twins then
+      self:need(string.format("Which %s: %s?", self:raw(r.b, r.e), table.concat(twins, " or ")))
     end
     if h and not r.false_start and not (self.world.confirmed or {})[r.name]
         and not self:airline_and_digits_match(h.id, r.name)

@@ -1279,6 +1279,14 @@ return {
                                          "sorry for the many requests at once", "sorry for all the requests at once",
                                          "sorry for many instructions at once",
                                          "sorry for so many instructions at once" },
+                      -- an apology said as a sentence or clause of its own, set off by marks on both sides and
+                      -- followed by more of the request ("descend FL240. Sorry about that. After TOLPA descend
+                      -- FL230", "..., I apologise, ..."): read as "sorry" (a marker) there only; said elsewhere ("I
+                      -- apologize for the delay", "apologies for the many requests") it is no marker
+                      apology_sentence = { "sorry about that", "sorry about this", "sorry for that", "sorry for this",
+                                           "so sorry", "very sorry", "really sorry", "terribly sorry",
+                                           "i apologize", "i apologise", "i do apologize", "i do apologise",
+                                           "apologies", "many apologies" },
                       -- words that describe the aircraft said in place of one taken back ("American 100 -- no,
                       -- the second aircraft, United 200"; aircraft nouns too): part of the correction's run
                       described = { "the", "a", "an", "first", "second", "third", "fourth", "other" },

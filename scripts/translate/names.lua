@@ -922,7 +922,9 @@ local names = {
     { "aeromexico connect", "SLI" },
   },
   brands = {
-    { "transavia", "TRA", "TVF" },
+    -- (`twins`: the public calls each of its airlines by the brand's name, whatever its telephony; a flight number
+    -- two of them fly is asked which, handlers.lua m:brand_twins)
+    { "transavia", "TRA", "TVF", twins = true },
     { "lauda", "LDA", "LDM" },
     { "easyjet", "EZY", "EJU", "EZS" },
     { "easy jet", "EZY", "EJU", "EZS" },

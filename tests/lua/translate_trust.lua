@@ -16139,7 +16139,7 @@ do
 end
 do
   -- Tiger Airways' old designator (now Scoot's) flying beside Tigerair Taiwan: "Tigerair 31" is Tigerair Taiwan's
-  -- (as "Transavia 31" is TRA31 beside TVF31), "the Tigerair" alone is asked, "Scoot 31" is TGW31
+  -- (Scoot's flights are not called Tigerair), "the Tigerair" alone is asked, "Scoot 31" is TGW31
   local _, ex = scene({ "CRE TTW31 A320 24.9 121.3 210 FL250 270", "CRE TGW31 A320 1.3 103.9 180 FL250 290" })
   check_eq(ex("Tigerair 31 climb FL270"), "ALT TTW31 FL270")
   check_eq(ex("Scoot 31 climb FL270"), "ALT TGW31 FL270")
@@ -19951,4 +19951,48 @@ do
   check_eq(ex("Israir 9 lo, I said two two zero, climb flight level two two zero"), "ALT ISR9 FL220")
   check_eq(ex("El Al 402 negative I said one niner zero, climb FL190"), "ALT ELY402 FL190")
   check_eq(ex("Sundor 208, no, I said 230, reduce speed two three zero"), "SPD ERO208 230")
+end
+-- Cycle 62 (fhz12)
+do
+  local _, ex = scene({ "CRE AFR318 A320 48 2 90 FL270 280", "DEFWPT ROXEL 48.1 2.6", "ADDWPT AFR318 ROXEL",
+    "DEFWPT PIKOR 48.2 3.2", "ADDWPT AFR318 PIKOR" })
+  -- an apology said as a sentence or clause of its own between two instructions of one kind is a self-correction:
+  -- the later replaces the earlier (as "sorry." does); of another kind, asked which stands
+  check_eq(ex("AFR318 descend FL260. Sorry about that. After ROXEL descend FL250"), "AT AFR318 ROXEL DO ALT AFR318 FL250")
+  check_eq(ex("AFR318 descend FL260. Apologies. After PIKOR descend FL240"), "AT AFR318 PIKOR DO ALT AFR318 FL240")
+  check_eq(ex("AFR318 descend FL260, I apologise, descend FL250"), "ALT AFR318 FL250")
+  check_eq(ex("air france 318 turn left heading 050. terribly sorry. turn left heading 040"), "HDG AFR318 40 LEFT")
+  check_eq(ex("AFR318 speed 250. Very sorry. speed 240"), "SPD AFR318 240")
+  asked(ex("AFR318 descend FL260. Sorry about that. Speed 250"), "an apology sentence between two kinds")
+  -- said elsewhere an apology is no marker: closing the request, or about something else
+  check_eq(ex("AFR318 descend FL260, sorry about that"), "ALT AFR318 FL260")
+  check_eq(ex("I apologize for the delay, AFR318 descend FL260"), "ALT AFR318 FL260")
+  check_eq(ex("AFR318 descend FL260. Apologies for the delay. Speed 250"), "ALT AFR318 FL260 ; SPD AFR318 250")
+  -- a level condition beyond the level its own command clears to, with no clearance past it, would never run: asked
+  asked(ex("AFR318 speed 300, reaching 290 climb FL280"), "a bare number read as a level never passed")
+  asked(ex("AFR318 reaching FL300 climb FL280"), "a level condition beyond the new level")
+  asked(ex("air france three one eight when passing FL260 climb FL290"), "a condition below a level aircraft, then a climb")
+  asked(ex("AFR318 passing FL280 descend FL200"), "a condition above a level aircraft, then a descent")
+  check_eq(ex("AFR318 descend FL250, when passing FL260 speed 250"), "ALT AFR318 FL250 ; ATALT AFR318 FL260 SPD AFR318 250")
+  check_eq(ex("AFR318 when passing FL260 descend FL200"), "ATALT AFR318 FL260 ALT AFR318 FL200")
+  check_eq(ex("AFR318 climb FL300 and when reaching FL290 climb FL280"), "ALT AFR318 FL300 ; ATALT AFR318 FL290 ALT AFR318 FL280")
+end
+do
+  -- the level another aircraft waits for is no bar to a second aircraft's command
+  local _, ex = scene({ "CRE AFR318 A320 48 2 90 FL270 280", "CRE EZY44 A320 48.2 2.2 90 FL120 280" })
+  check_eq(ex("when AFR318 passes FL250, EZY44 climb FL200"), "ATALT AFR318 FL250 ALT EZY44 FL200")
+end
+do
+  -- two aircraft of airlines one brand's name calls, with the same flight number: the name alone is asked which
+  local _, ex = scene({ "CRE BRX611 B737 60 17 180 FL120 250", "CRE BRA611 B737 60.2 17.6 180 FL130 250",
+    "CRE VIR27 A333 51 -1 270 FL350 290", "CRE VOZ27 B738 51.5 -1.5 270 FL330 290", "CRE TRA33 B738 52 4 90 FL300 280",
+    "CRE TVF33 B738 52.3 4.2 90 FL310 280", "CRE VIR28 A333 51 -2 270 FL350 290" })
+  asked(ex("Braathens 611 descend FL100"), "Braathens with BRX611 and BRA611")
+  asked(ex("braathens six one one, turn right heading 200"), "Braathens in words")
+  asked(ex("Virgin 27 climb FL370"), "Virgin with VIR27 and VOZ27")
+  asked(ex("Transavia three three speed 250"), "Transavia with TRA33 and TVF33")
+  -- the designator typed, or a number only one of them has, stays read
+  check_eq(ex("BRA611 descend FL100"), "ALT BRA611 FL100")
+  check_eq(ex("VOZ27 climb FL370"), "ALT VOZ27 FL370")
+  check_eq(ex("Virgin 28 climb FL370"), "ALT VIR28 FL370")
 end
