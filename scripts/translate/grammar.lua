@@ -549,7 +549,7 @@ end
 -- "turn left heading 170", "montez au niveau 140" -> "climb to flight level 140". A sentence holding a
 -- marking word of a language (the first of G.said_whole_order holding one) is read in that language alone;
 -- one holding none, in every language's words that mark none.
-G.said_whole_order = { "spanish", "french", "german", "dutch", "portuguese", "nordic", "malay" }
+G.said_whole_order = { "spanish", "french", "german", "dutch", "portuguese", "nordic", "malay", "greek" }
 function G.said_whole(text)
   local indexes = G.said_whole_index()
   -- (the form of `index` starting at token i, or nil; punctuation may close its last word only; `joining`
@@ -1253,7 +1253,9 @@ local function self_corrections(text)
       nxt = toks[j]
     end
     local said = nxt
-    if nxt and (nxt.bare == "the" or nxt.bare == "a" or nxt.bare == "to") and toks[j + 1] and not nxt.raw:match("%p$") then
+    -- ("climb at 250, no, at 260": "at" before the value, as the value was said the first time)
+    if nxt and (nxt.bare == "the" or nxt.bare == "a" or nxt.bare == "to" or nxt.bare == "at") and toks[j + 1]
+        and not nxt.raw:match("%p$") then
       said = toks[j + 1]
     end
     -- ("I am sorry, it is 260": the phrase restating is part of the run, the value after it said in place)
@@ -9565,6 +9567,27 @@ function G:interjected_between(b, e)
   end
   return said
 end
+-- "the other" after a self-correction's marker ("Olympic 344 turn right heading 330, no sorry, the other Olympic",
+-- "Cyprus 4ZP... ochi, the other Cyprus, turn left", "no, the other one") takes back the aircraft named and means
+-- another one not named: asked for its callsign, unless a callsign with its number is said after it ("no, the other
+-- one, the LATAM 3511"), which the correction reads as said.
+function G:other_taken_back()
+  local w = self.words
+  for k = 2, #self.t do
+    if w[k] == "other" and w[k - 1] == "the" then
+      local marked = false
+      for j = 1, k - 2 do marked = marked or SC_MARKERS[w[j]] or self:word(j, "@correction") end
+      if not marked then return end
+      for _, r in ipairs(self.refs) do
+        if r.kind == "aircraft" and r.b > k and self:raw(r.b, r.e):find("%d") then return end
+      end
+      self:need(string.format("You said '%s': which aircraft do you mean? Please give its callsign.",
+        self:raw(k - 1, math.min(k + 2, #self.t + 1)):gsub("[%s%p]+$", "")))
+      return
+    end
+  end
+end
+
 function G:side_by_side_callsigns()
   local prev
   for _, r in ipairs(self.refs) do
@@ -16215,6 +16238,21 @@ function G.future_will(text)
   end))
 end
 
+-- "when he passes 230", "once it reaches 150", "when he will pass 230" (the future dropped by G.future_will first):
+-- the aircraft's pronoun and a verb of passing or reaching straight before a number, after "when", "once" or
+-- "after", read as "when passing 230" / "when reaching 150" (the level condition said without its subject; the
+-- condition's own checks then ask a level the aircraft will never pass).
+G.pronoun_reached_sets = { opens = set_of({ "when", "once", "after" }), subjects = set_of({ "he", "it", "she" }),
+  verbs = { pass = "passing", passes = "passing", reach = "reaching", reaches = "reaching" } }
+function G.pronoun_reached(text)
+  local P = G.pronoun_reached_sets
+  return (text:gsub("(%f[%a]%a+)(%s+)(%a+)%s+(%a+)(%s+%d)", function(c, s1, subj, verb, rest)
+    local v = P.verbs[verb:lower()]
+    if P.opens[c:lower()] and P.subjects[subj:lower()] and v then return c .. s1 .. v .. rest end
+    return nil
+  end))
+end
+
 function G.terse_altitude(text, world)
   if not text:find("%d%d%d%d") then return text end
   -- (the first word names an aircraft flying)
@@ -17098,7 +17136,7 @@ function M.translate(text, world)
   text = G.confirmed_route_places(G.spelled_route_places(G.syllable_route_places(typed_places(G.named_idents(
     G.spoken_user_waypoints(G.navaids_by_kind(written_forms(text, world), world), world), world),
     world), world), world), world)
-  text = G.terse_altitude(G.after_reach(G.future_will(spelled_airports(text, world)), world), world)
+  text = G.terse_altitude(G.after_reach(G.pronoun_reached(G.future_will(spelled_airports(text, world))), world), world)
   local run_on
   text, run_on = G.run_on_values(text)
   if run_on then return { commands = {}, ask = run_on } end
@@ -17325,6 +17363,7 @@ function M.translate(text, world)
   if not g.ask then g:info_remarks() end
   if not g.ask then g:dangling_correction() end
   if not g.ask and #g.out > 0 then g:retracted() end
+  if not g.ask and #g.out > 0 then g:other_taken_back() end
   if not g.ask and #g.out > 0 then g:refused_or_requested() end
   if not g.ask and #g.out > 0 then g:dangling_value_name() end
   if not g.ask and #g.out > 1 then g:side_by_side_callsigns() end

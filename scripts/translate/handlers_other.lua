@@ -4252,6 +4252,22 @@ return function(H, f, compass)
   -- (a switch asked about: a question, or a request opening with "what" and no "on" or "off" in it, "what's the
   -- conflict detection setting", or with "is" or "are", "is conflict detection on": its state shown, never set)
   function m:switch(s, spec)
+    -- ("is the detection of conflicts on? please put it on", "is ASAS on? switch it off please": the question's
+    -- answer not awaited, the switch set in the one sentence after it: a verb of setting, "it" and one "on" or
+    -- "off", with only fillers and "please" beside them)
+    local q = self:first_sentence_end()
+    if self.t[q].text == "?" and q < #self.t and s.trig < q then
+      local verb = self:skip_fillers(q + 1)
+      while self:word(verb, "please kindly now") do verb = self:skip_fillers(verb + 1) end
+      if self:word(verb, "@setting_verbs") and self:word(verb + 1, "it") and self:word(verb + 2, "@on @off") then
+        local k = self:skip_fillers(verb + 3)
+        while self:word(k, "please now") do k = self:skip_fillers(k + 1) end
+        if k > #self.t then
+          self:explain(q + 1, #self.t + 1)
+          return self:emit(spec.cmd .. (self:word(verb + 2, "@on") and " ON" or " OFF"))
+        end
+      end
+    end
     if self:asks_setting(self:on_off(s) < 0) or self:word(self:request_start(), "is are") then
       -- ("what is the conflict detection interval?": DT shows it, with the time step, once in the request)
       if spec.cmd == "ASAS" and self:word(s.trig + 1, "interval") then

@@ -1368,7 +1368,9 @@ return function(H, f, wrap, compass)
       elseif long == 180 and abs.value ~= 180 then
         return self:need(string.format("Should %s turn %s by %s degrees, or turn %s onto heading %s, straight behind?",
           id, side, f.num(abs.value), side, f.num(wrap(hdg))))
-      elseif self:word_in(s.b, s.e, "turn") and not abs.number.digits:find("^0") and not self:word(abs.b - 1, "to onto")
+      -- ("turn right to 120", "turn left at 160": "to", "onto" or "at" before the number names the heading reached,
+      -- as "climb at 200" names the level)
+      elseif self:word_in(s.b, s.e, "turn") and not abs.number.digits:find("^0") and not self:word(abs.b - 1, "to onto at")
           and wrap(now.hdg_deg + way * abs.value) ~= wrap(hdg) then
         return self:need(string.format("Should %s turn %s by %s degrees, or fly heading %s?", id, side,
           f.num(abs.value), f.num(wrap(hdg))))

@@ -2591,14 +2591,15 @@ return {
     { heard = { "you pass over", "it pass over", "it passes over", "pass over", "passes over", "you pass",
                 "it pass" }, means = "passing", after = { "when", "once" } },
     { heard = { "you arrive to", "you arrive at", "it arrive to", "it arrive at", "arrive to", "arrive at" },
-      means = "you reach", after = { "when", "once" } },
+      means = "you reach", after = { "when", "once", "after" } },
     { heard = { "it arrives to", "it arrives at", "arrives to", "arrives at" }, means = "it reaches",
-      after = { "when", "once" } },
+      after = { "when", "once", "after" } },
     { heard = { "you are at" }, means = "it is at", after = { "when", "once" } },
     -- (the aircraft as "he" or "she", the verb not agreeing, as a French or Arabic speaker says it: "when he arrive
     -- at LAKAM, he must descend ...", "descend FL320 when she arrive at GALIT")
     { heard = { "he arrive to", "he arrive at", "she arrive to", "she arrive at", "he arrives to", "he arrives at",
-                "she arrives to", "she arrives at" }, means = "it reaches", after = { "when", "once" } },
+                "she arrives to", "she arrives at" }, means = "it reaches", after = { "when", "once", "after" } },
+    -- (and after "after", a Greek speaker's "after he arrives to XORKI, descend ...": the place reached)
     -- (a Portuguese speaker's "chegar em", arriving "in" a place: "when he arrives in BOTOM he must descend ...",
     -- "when it arrives in FL250")
     { heard = { "you arrive in", "it arrive in", "arrive in" }, means = "you reach", after = { "when", "once" } },
@@ -2909,6 +2910,18 @@ return {
   malay = {
     words = { dan = "and", berapa = "how much" },
     shared = { dan = true, berapa = true },
+    joining = {},
+  },
+  -- Greek words in a Greek or Cypriot speaker's English, romanised as typed ("climb at 200 kai reduce at 220
+  -- knots", "descend at 280, meta turn right", "endaxi, continue", "climb at 130, ochi, at 120"): "kai" (and) and
+  -- "meta" (then, after) join instructions in order, "endaxi" (all right) asks for nothing, "ochi"/"oxi" (no)
+  -- opens a self-correction as English "no" does. None marks the sentence ("meta" and "ne" are English words or
+  -- codes too; "ne", yes, is left to lexicon.accounted's readings). The thanks ("efcharistó") is accounted's.
+  greek = {
+    words = { kai = "and", meta = "then", ["kai meta"] = "and then", endaxi = "okay", entaxi = "okay",
+      endaksi = "okay", entaksi = "okay", entaxei = "okay", ochi = "no", oxi = "no", ["όχι"] = "no" },
+    shared = { kai = true, meta = true, ["kai meta"] = true, endaxi = true, entaxi = true, endaksi = true,
+      entaksi = true, entaxei = true, ochi = true, oxi = true, ["όχι"] = true },
     joining = {},
   },
   },

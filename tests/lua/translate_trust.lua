@@ -19996,3 +19996,47 @@ do
   check_eq(ex("VOZ27 climb FL370"), "ALT VOZ27 FL370")
   check_eq(ex("Virgin 28 climb FL370"), "ALT VIR28 FL370")
 end
+
+-- Cycle 62 (f215)
+-- A Greek or Cypriot speaker's English: "kai" (and), "meta" (then), "endaxi" (all right) and "ochi" (no) read as
+-- their English; "the other X" after a correction asked; "turn left at 160" the heading; "when he passes 230" the
+-- level condition; "after he arrives to FIX" the place reached; "no, at 260" the value in place; a question about
+-- a switch followed by "please put it on" switches it.
+do
+  local _, ex = scene({ "CRE OAL12 A320 38.0 23.6 090 FL200 250", "CRE OAL34 DH8D 37.5 24.3 300 FL190 240",
+    "CRE SEH5KT A320 37.2 23.3 180 FL300 280", "DEFWPT PIKOS 38.2 24.0", "ADDWPT OAL12 PIKOS",
+    "DEFWPT TRIMA 38.4 24.4", "ADDWPT OAL12 TRIMA" })
+  -- the Greek words
+  check_eq(ex("OAL12 descend FL150 kai speed 230 knots"), "ALT OAL12 FL150 ; SPD OAL12 230")
+  check_eq(ex("SEH5KT turn left heading 120, meta climb FL340"), "HDG SEH5KT 120 LEFT ; ALT SEH5KT FL340")
+  check_eq(ex("OAL12 speed 240 kai meta direct PIKOS"), "SPD OAL12 240 ; DIRECT OAL12 PIKOS")
+  check_eq(ex("OAL12 climb FL240, ochi, FL260"), "ALT OAL12 FL260")
+  check_eq(ex("SEH5KT heading 200 oxi 210"), "HDG SEH5KT 210")
+  check_eq(ex("endaxi, pause the simulation"), "HOLD")
+  asked(ex("OAL12 climb FL240 ochi"), "'no' in Greek with nothing after it")
+  asked(ex("kai"), "'and' alone")
+  -- "the other" after a correction names no aircraft: asked
+  asked(ex("Olympic 12 turn left heading 200, no sorry, the other Olympic"), "the other Olympic")
+  asked(ex("Olympic 12... ochi, the other one, climb FL250"), "the other one")
+  -- "at" before a turn's number names the heading; the long way round still asked
+  check_eq(ex("SEH5KT, turn right at 250 please"), "HDG SEH5KT 250 RIGHT")
+  check_eq(ex("OAL12 turn right at 120"), "HDG OAL12 120 RIGHT")
+  asked(ex("OAL12 turn left at 160"), "left to 160 from 090 is the long way")
+  -- the level condition with the aircraft's pronoun, and the future
+  check_eq(ex("OAL12 climb at 250 and when he passes 230, turn right heading 080"),
+    "ALT OAL12 FL250 ; ATALT OAL12 FL230 HDG OAL12 80 RIGHT")
+  check_eq(ex("SEH5KT descend at 200, once it will reach 250 reduce at 240"),
+    "ALT SEH5KT FL200 ; ATALT SEH5KT FL250 SPD SEH5KT 240")
+  asked(ex("OAL12 climb at 250, when he passes 180 turn right heading 080"), "a level it never passes")
+  -- the place reached after "after"
+  check_eq(ex("OAL12, after he arrives to PIKOS, descend at 150"), "AT OAL12 PIKOS DO ALT OAL12 FL150")
+  check_eq(ex("after she arrives at TRIMA OAL12 reduce at 220"), "AT OAL12 TRIMA DO SPD OAL12 220")
+  -- the value in place said with "at"
+  check_eq(ex("OAL12 climb at 250, ochi sorry, at 260"), "ALT OAL12 FL260")
+  check_eq(ex("OAL12 speed 220, no, at 230"), "SPD OAL12 230")
+  -- a switch asked about, then set
+  check_eq(ex("is the conflict detection on? please switch it on"), "ASAS ON")
+  check_eq(ex("is asas on? turn it on please"), "ASAS ON")
+  check_eq(ex("is the detection on?"), "ASAS")
+  asked(ex("is the detection on? please put it off"), "detection off for everyone is confirmed")
+end
