@@ -3486,6 +3486,32 @@ function G:state_remarks()
   for _, span in ipairs(self.state_spans or {}) do self:set_aside(span[1], span[2]) end
 end
 
+-- A state told of aircraft ref `r` (G:past_state, G:present_state): its words from `c` to before `e`, the values
+-- `qs` in them. A value the aircraft neither flies nor was given (G.flies) is asked, never sent; told alone, with
+-- nothing after it, the request has nothing to send (said so); otherwise the state is set aside (the aircraft's
+-- name too where another aircraft is named after it, the one instructed). `tells` ("tells what %s is doing", %s the
+-- callsign) and `same` ("which it does here") word the questions. True when it asked.
+function G:told_state(r, c, e, qs, tells, same)
+  local a, odd = self:state(r.name), nil
+  for _, q in ipairs(qs) do
+    local v = q.kind == "alt" and self:cleared_level(q) or q.value
+    if not G.flies(a, q.kind, v) then odd = odd or q end
+  end
+  local said, name = self:raw(r.b, e), r.name:upper()
+  if odd then
+    self:need(string.format("'%s' " .. tells .. ": no instruction, but it flies otherwise here ('%s'). Should I change "
+      .. "it? Please say it as an instruction.", said, name, self:raw(odd.b, odd.e)))
+    return true
+  end
+  if r.b == self:skip_fillers(1, false) and (not self.t[e] or e == #self.t) then
+    self:need(string.format("'%s' " .. tells .. ", " .. same .. ": nothing to change. What should it do?", said, name))
+    return true
+  end
+  local other = false
+  for _, o in ipairs(self.refs) do other = other or (o.kind == "aircraft" and o.b >= e and o.name ~= r.name) end
+  self:set_aside(other and r.b or c, e - 1)
+end
+
 -- "KLM12 was at FL380 heading 140", "KLM12 was flying Mach 0.79 at FL390", "KLM12 was in level flight at FL380",
 -- "KLM12 was on the downwind at 6000 feet, 200 knots": an existing aircraft, "was" or "were", a word of
 -- G.past_state_sets.opens, then only words of G.past_state_sets.words and values (levels [ft or FL], speeds [kt
@@ -3515,25 +3541,7 @@ function G:past_state()
       local stop = self.t[e]
       local qs = self:quantities(c + 1, e)
       if (not stop or stop.kind == "punct") and #qs > 0 and not self:word_in(c + 1, e, "and") then
-        local a, odd = self:state(r.name), nil
-        for _, q in ipairs(qs) do
-          local v = q.kind == "alt" and self:cleared_level(q) or q.value
-          if not G.flies(a, q.kind, v) then odd = odd or q end
-        end
-        if odd then
-          return self:need(string.format("'%s' tells the state of %s in the report, but it flies otherwise here "
-            .. "('%s'). Should I change it? Please say it as an instruction.", self:raw(r.b, e), r.name:upper(),
-            self:raw(odd.b, odd.e)))
-        end
-        -- (told alone, the request has nothing to send: said so)
-        if r.b == self:skip_fillers(1, false) and (not stop or e == #self.t) then
-          return self:need(string.format("'%s' tells the state of %s in the report, which it flies here: nothing "
-            .. "to change. What should it do?", self:raw(r.b, e), r.name:upper()))
-        end
-        -- (the aircraft's name too where another aircraft is named after the state, the one instructed)
-        local other = false
-        for _, o in ipairs(self.refs) do other = other or (o.kind == "aircraft" and o.b >= e and o.name ~= r.name) end
-        self:set_aside(other and r.b or c, e - 1)
+        if self:told_state(r, c, e, qs, "tells the state of %s in the report", "which it flies here") then return end
       end
     end
   end
@@ -3583,24 +3591,7 @@ function G:present_state()
         local stop = self.t[e]
         local qs = self:quantities(v + 1, e)
         if (not stop or stop.kind == "punct" or self:word(e, "and")) and #qs > 0 then
-          local a, odd = self:state(r.name), nil
-          for _, q in ipairs(qs) do
-            local x = q.kind == "alt" and self:cleared_level(q) or q.value
-            if not G.flies(a, q.kind, x) then odd = odd or q end
-          end
-          if odd then
-            return self:need(string.format("'%s' tells what %s is doing, no instruction, but it flies otherwise "
-              .. "here ('%s'). Should I change it? Please say it as an instruction.", self:raw(r.b, e), r.name:upper(),
-              self:raw(odd.b, odd.e)))
-          end
-          if r.b == self:skip_fillers(1, false) and (not stop or e == #self.t) then
-            return self:need(string.format("'%s' tells what %s is doing, which it does here: nothing to change. "
-              .. "What should it do?", self:raw(r.b, e), r.name:upper()))
-          end
-          -- (the aircraft's name too where another aircraft is named after the state, the one instructed)
-          local other = false
-          for _, o in ipairs(self.refs) do other = other or (o.kind == "aircraft" and o.b >= e and o.name ~= r.name) end
-          self:set_aside(other and r.b or c, e - 1)
+          if self:told_state(r, c, e, qs, "tells what %s is doing", "which it does here") then return end
         end
       end
     end
