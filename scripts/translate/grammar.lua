@@ -11677,9 +11677,9 @@ function G:bracket_question(said)
 end
 
 -- So does an instruction's base form there, or its value's name with the value ("KLM12 climb FL300?", "DLH34, turn
--- left heading 180?", "KLM12 heading 180?", and the verb before the aircraft: "climb KLM12 FL300?"): is it allowed,
--- should it? A question, asked, never sent ("please" in it, or a modal before it, "could KLM12 climb ...?", is a
--- request, read).
+-- left heading 180?", "KLM12 heading 180?", "KLM12 is cleared FL300?", and the verb before the aircraft: "climb KLM12
+-- FL300?"): is it allowed, should it? A question, asked, never sent ("please" in it, or a modal before it, "could
+-- KLM12 climb ...?", is a request, read).
 G.instruction_bases = set_of({ "climb", "descend", "turn", "reduce", "increase", "maintain", "fly", "proceed", "go",
   "hold", "slow", "accelerate", "decelerate", "expedite", "direct", "heading", "speed", "level", "altitude", "fl",
   "flight", "mach", "set", "change" })
@@ -11724,6 +11724,8 @@ function G:participle_question()
   local base = self.t[k] and (G.instruction_bases[self.t[k].text]
     or (self:word(k, "to") and #self:quantities(k + 1, last) > 0))
   while self:word(k, "is are now still currently") do k = k + 1 end
+  -- ("KLM12 cleared FL300?", "KLM12 is cleared FL300?": the clearance asked about, never given)
+  base = base or self:word(k, "cleared")
   -- (a value or a place after it: "KLM12 heading?" asks its state, shown)
   if base and not modal and (#self:quantities(k, last) > 0 or #self:refs_in(k, last, "waypoint") > 0) then
     local who = table.concat(names, " and ")

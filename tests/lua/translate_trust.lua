@@ -20040,3 +20040,16 @@ do
   check_eq(ex("is the detection on?"), "ASAS")
   asked(ex("is the detection on? please put it off"), "detection off for everyone is confirmed")
 end
+
+-- Cycle 62 (lead): a clearance asked about ("KLM12 is cleared FL300?", "DLH4 cleared direct SPY?") is a question,
+-- never sent; said without the question mark, or asked politely with a modal, it is the clearance.
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 90 FL250 280", "CRE DLH4 A321 52 5 270 FL250 280",
+    "DEFWPT SPY 52.5 4.8", "ADDWPT DLH4 SPY" })
+  asked(ex("KLM12 is cleared FL300?"), "a clearance asked about with 'is'")
+  asked(ex("klm12 cleared flight level three three zero?"), "a clearance asked about, spoken")
+  asked(ex("KLM12 and DLH4 cleared FL290?"), "two aircraft's clearance asked about")
+  asked(ex("DLH4 cleared direct SPY?"), "a direct-to asked about")
+  check_eq(ex("KLM12 cleared FL300"), "ALT KLM12 FL300")
+  check_eq(ex("could KLM12 be cleared FL300?"), "ALT KLM12 FL300")
+end
