@@ -549,8 +549,9 @@ end
 -- "turn left heading 170", "montez au niveau 140" -> "climb to flight level 140". A sentence holding a
 -- marking word of a language (the first of G.said_whole_order holding one) is read in that language alone;
 -- one holding none, in every language's words that mark none.
-G.said_whole_order = { "spanish", "french", "german", "dutch", "portuguese", "nordic", "malay", "greek" }
+G.said_whole_order = { "spanish", "french", "german", "dutch", "portuguese", "nordic", "malay", "greek", "russian" }
 function G.said_whole(text)
+  text = G.russian_yes_no(text)
   local indexes = G.said_whole_index()
   -- (the form of `index` starting at token i, or nil; punctuation may close its last word only; `joining`
   -- forms only when `marked`)
@@ -591,6 +592,33 @@ function G.said_whole(text)
   end
   for _, language in ipairs(G.said_whole_order) do text = read(indexes[language], false) end
   return text
+end
+
+-- Russian "da" (yes) and "net"/"nyet" (no) in a Russian-speaking controller's English are English "yes" and "no"
+-- where they are set off as those are: closed by a mark before more words ("Uzbek 2711 da, turn right heading 060",
+-- "climb flight level 150 net, flight level 130"), or a mark (or nothing) before and a mark (or the request's end)
+-- after ("direct MEDUD, da"); "net"/"nyet" also straight after a value, before more words ("flight level 150 net
+-- flight level 130"): the value taken back. Typed in capitals or anywhere else they stay as said ("Da Nang",
+-- "direct dug da": a fix's name spelled apart).
+function G.russian_yes_no(text)
+  local low = text:lower()
+  if not (low:find("%f[%a]da%f[%A]") or low:find("%f[%a]n[y]?et%f[%A]")) then return text end
+  local toks, bare = plain_words(text)
+  return tokens.rewrite(text, toks, function(i)
+    local w = bare[i]
+    local en = (w == "da" and "yes") or ((w == "net" or w == "nyet") and "no")
+    if not en or toks[i]:match("^%u%u") then return nil end
+    -- (the word said again, "da da,", "net net": one word, set off as its last is)
+    local j = i
+    while bare[j + 1] == w and not toks[j]:match("%p$") and not toks[j + 1]:match("^%u%u") do j = j + 1 end
+    local closed = toks[j]:match("%p$") ~= nil
+    local opened = i == 1 or toks[i - 1]:match("%p$") ~= nil
+    local value = en == "no" and i > 1 and not toks[i - 1]:match("%p$")
+      and (bare[i - 1]:match("^%d") or bare[i - 1]:match("^fl%d") or NUMBER_WORDS[bare[i - 1]])
+    if (closed and toks[j + 1]) or (opened and (closed or not toks[j + 1])) or (value and toks[j + 1]) then
+      return en .. (toks[j]:match("%p+$") or ""), j + 1
+    end
+  end)
 end
 
 -- French inside an English request (lexicon.french_in_english): a run of French number words making one number
@@ -11692,6 +11720,12 @@ function G:participle_question()
     if self.t[x].kind == "punct" and self.t[x].text ~= "," then return end
   end
   if self:said("please") then return end
+  -- (the check a clearance closes with, asking the pilot to have heard it: "..., copy?", "... understood?", "..., yes?",
+  -- Russian "ponyal?" and "da?" read as "understood?" and "yes?": the clearance given, no question about it)
+  if self:word(last - 1, "understood copy copied") or (self:word(last - 1, "yes") and self.t[last - 2]
+      and self.t[last - 2].text == ",") then
+    return
+  end
   -- (a question word or a modal in it asks something else, or asks politely: "EVA12 speed 250, heading what?",
   -- "Thai 420 turn right heading 120, can or not?")
   local modal = self:said("what how which where why when who can could would will may might ok okay possible able")

@@ -687,11 +687,33 @@ function m:acids(s)
     for k = s.trig - 1, 1, -1 do
       local t = self.t[k]
       if t.kind == "punct" or self:intent_at(k) then break end
+      -- ("KLM12 heading 270, all climb FL300": "all" or "each" alone straight before the instruction's word is the
+      -- group too)
       local both, all = self:word(k, "both"), self:word(k, "everyone everybody")
         or (self:word(k, "all each every") and self:word(k + 1, "aircraft traffic planes flights of the"))
+        or (self:word(k, "all each") and k == s.trig - 1)
+      -- ("Siberia 2060 descend FL120, Siberia 2061 descend FL130, both reduce 250": "both" the two aircraft this
+      -- request named before it, each told apart; another count of them named is asked)
+      local named = {}
+      if both and before ~= 2 then
+        local seen = {}
+        for _, r in ipairs(self:refs_in(1, k, "aircraft")) do
+          if not r.exists or r.false_start or self:as_context(r.b) or self:in_reason(r.b) then
+            named = {}
+            break
+          end
+          if not seen[r.name] then seen[r.name], named[#named + 1] = true, r.name end
+        end
+      end
+      if #named == 2 then
+        self:explain(k, k + 1)
+        for n, id in ipairs(named) do ids[n] = id end
+        return ids
+      end
       if (both and before ~= 2) or (all and not (before >= 2 and before == #self.fleet)) then
         self:need(string.format("Which aircraft does '%s' mean? Please give their callsigns.",
-          self:raw(k, self:word(k, "all each every") and k + 2 or k + 1)))
+          self:raw(k, self:word(k, "all each every") and self:word(k + 1, "aircraft traffic planes flights of the")
+            and k + 2 or k + 1)))
         return ids
       end
     end

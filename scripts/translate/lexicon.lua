@@ -244,6 +244,8 @@ return {
         -- Russian, transliterated
         "spasibo", "pozhaluista", "pozhaluysta", "pozhalujsta", "zdravstvuyte", "zdravstvuite", "privet",
         "svidaniya", "dobroye", "dobryy", "dobrogo",
+        -- (and the thanks of Uzbek and Kazakh controllers, "rahmat", "rakhmet")
+        "rahmat", "raxmat", "rakhmat", "rakhmet",
         -- Arabic, Hebrew and Hindi, transliterated
         "shukran", "marhaba", "salam", "salaam", "assalamu", "alaikum", "alaykum", "ahlan", "afwan", "yalla",
         "inshallah", "inshaallah", "inchallah", "inchaallah", "inshalla", "inchalla", "bismillah", "alhamdulillah", "jazakallah", "barakallah", "shalom", "toda", "namaste", "namaskar", "dhanyavad", "dhanyawad", "shukriya", "kripya",
@@ -2550,6 +2552,9 @@ return {
     { heard = { "niveau" }, means = "flight level", before = { "#number" } },
     -- the Russian-speaking controller's word for a flight level ("эшелон": "climb and maintain echelon 180")
     { heard = { "echelon", "eshelon" }, means = "flight level", before = { "#number" } },
+    -- (and the metres a level is given in, as Russian says them after the number: "descend 3000 metrov", "2400
+    -- metrov", "1200 metra")
+    { heard = { "metrov", "metra", "metr" }, means = "metres", after = { "#number" } },
     { heard = { "vitesse" }, means = "speed", before = { "#number", "mach" } },
     { heard = { "monte" }, means = "climb", before = { "#number", "niveau", "a", "fl" } },
     -- Spanish words said in an English clearance that are also Portuguese or Italian, read only where
@@ -2922,6 +2927,20 @@ return {
       endaksi = "okay", entaksi = "okay", entaxei = "okay", ochi = "no", oxi = "no", ["όχι"] = "no" },
     shared = { kai = true, meta = true, ["kai meta"] = true, endaxi = true, entaxi = true, endaksi = true,
       entaksi = true, entaxei = true, ochi = true, oxi = true, ["όχι"] = true },
+    joining = {},
+  },
+  -- Russian words in a Russian-speaking (or Kazakh, Uzbek) controller's English, transliterated as typed ("UTair 457
+  -- izvinite, turn left ...", "descend flight level 70 izvinite 60", "khorosho, climb ...", "direct OKBIT ponyal?"):
+  -- "izvinite"/"prostite" (sorry, excuse me) open a correction or an apology as English "sorry" does, "khorosho"/"ladno"
+  -- (all right) ask for nothing, "ponyal"/"ponyatno" (understood) is the check a clearance closes with. None marks the
+  -- sentence. "da" (yes) and "net" (no) are English words or codes elsewhere too: G.russian_yes_no reads them where
+  -- they are set off.
+  russian = {
+    words = { izvinite = "sorry", izvini = "sorry", prostite = "sorry", prosti = "sorry", khorosho = "okay",
+      horosho = "okay", harasho = "okay", khorasho = "okay", ladno = "okay", ponyal = "understood",
+      ponyala = "understood", ponyali = "understood", ponyatno = "understood" },
+    shared = { izvinite = true, izvini = true, prostite = true, prosti = true, khorosho = true, horosho = true,
+      harasho = true, khorasho = true, ladno = true, ponyal = true, ponyala = true, ponyali = true, ponyatno = true },
     joining = {},
   },
   },

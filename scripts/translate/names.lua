@@ -312,6 +312,7 @@ local names = {
     { "siberian", "SBI" },
     { "siberian airlines", "SBI" },
     { "sverdlovsk air", "SVR" },
+    { "sverdlovsk", "SVR" },  -- (its telephony, "air" left off as Russian controllers say it: "Sverdlovsk 2701")
     { "ural", "SVR" },
     { "ural airlines", "SVR" },
     { "rossiya", "SDM" },
@@ -324,6 +325,14 @@ local names = {
     { "air yakutia", "SYL" },
     { "astanaline", "KZR" },
     { "air astana", "KZR" },
+    -- (the names Russian-speaking controllers call them by, as their own telephony in Russian says them:
+    -- "Сибирь" Siberia or Sibir for S7, "Astana 145" for Air Astana, "Nordwind", "Yamal", "Yakutia")
+    { "siberia", "SBI" },
+    { "sibir", "SBI" },
+    { "astana", "KZR" },
+    { "nordwind", "NWS" },
+    { "yamal", "LLM" },
+    { "yakutia", "SYL" },
     { "arystan", "AYN" },
     { "uzbek", "UZB" },
     { "uzbekistan", "UZB" },

@@ -20053,3 +20053,52 @@ do
   check_eq(ex("KLM12 cleared FL300"), "ALT KLM12 FL300")
   check_eq(ex("could KLM12 be cleared FL300?"), "ALT KLM12 FL300")
 end
+
+-- Cycle 63 (f221)
+-- Russian and CIS controllers' English: the names they call airlines by ("Siberia", "Sibir", "Astana",
+-- "Sverdlovsk", "Nordwind", "Yamal", "Yakutia") read as callsigns wherever said; Russian words transliterated read as
+-- their English ("izvinite"/"prostite" sorry, "khorosho"/"ladno" all right, "ponyal?" understood?, "da" yes and
+-- "net" no where set off, "metrov" metres); "both" after two aircraft each instructed; "all" alone before an
+-- instruction's word is the group.
+do
+  local _, ex = scene({ "CRE SBI77 A320 55.5 37.5 090 FL150 280", "CRE KZR45 A321 55.2 37.1 270 FL210 280",
+    "CRE AFL900 A321 55.8 37.9 180 FL280 290", "CRE SVR123 A320 56.0 37.0 045 FL190 270",
+    "CRE LLM31 CRJ2 55.1 38.0 300 FL120 250", "DEFWPT SPY 55.6 38.5", "ADDWPT SBI77 SPY" })
+  -- the airlines' names, before and after the instruction's words
+  check_eq(ex("say speed Siberia 77"), "POS SBI77")
+  check_eq(ex("remove Astana 45 please"), "DEL KZR45")
+  check_eq(ex("Aeroflot 900 turn left heading 150, Sibir 77 climb flight level 170"),
+    "HDG AFL900 150 LEFT ; ALT SBI77 FL170")
+  check_eq(ex("reduce speed 250 Sverdlovsk 123"), "SPD SVR123 250")
+  check_eq(ex("Yamal 31 descend flight level 90"), "ALT LLM31 FL90")
+  asked(ex("Siberia 78 climb flight level 170"), "a flight number no aircraft has")
+  asked(ex("Astana descend flight level 190"), "the airline alone as the addressee")
+  -- the Russian words
+  check_eq(ex("Astana 45 prostite, turn right heading 300"), "HDG KZR45 300 RIGHT")
+  check_eq(ex("Siberia 77 climb flight level 180 izvinite 190"), "ALT SBI77 FL190")
+  check_eq(ex("Aeroflot 900 turn right heading 200 izvinite left heading 200"), "HDG AFL900 200 LEFT")
+  check_eq(ex("Aeroflot 900 ladno, descend flight level 240"), "ALT AFL900 FL240")
+  check_eq(ex("Sverdlovsk 123 horosho, reduce 250"), "SPD SVR123 250")
+  check_eq(ex("Siberia 77 direct to SPY ponyatno?"), "DIRECT SBI77 SPY")
+  check_eq(ex("Astana 45 descend flight level 170, ponyal?"), "ALT KZR45 FL170")
+  check_eq(ex("Astana 45 descend flight level 170, da?"), "ALT KZR45 FL170")
+  check_eq(ex("Astana 45 descend flight level 170, copy?"), "ALT KZR45 FL170")
+  asked(ex("Astana 45 descend flight level 170?"), "an instruction asked about stays asked")
+  check_eq(ex("Yamal 31 da da, climb flight level 140"), "ALT LLM31 FL140")
+  check_eq(ex("Aeroflot 900 descend flight level 260, da"), "ALT AFL900 FL260")
+  check_eq(ex("Siberia 77 climb flight level 200 nyet, flight level 190"), "ALT SBI77 FL190")
+  check_eq(ex("Siberia 77 climb FL200 net FL170"), "ALT SBI77 FL170")
+  check_eq(ex("Aeroflot 900 descend flight level 250 net, izvinite, climb flight level 300"), "ALT AFL900 FL300")
+  asked(ex("Aeroflot 900 descend flight level 250 da"), "'da' closing with no mark before it is asked")
+  asked(ex("Siberia 77 climb flight level 200, net"), "'no' with nothing after it")
+  check_eq(ex("Yamal 31 descend 2400 metrov"), "ALT LLM31 7900")
+  check_eq(ex("Aeroflot 900 descend flight level 240 rahmat"), "ALT AFL900 FL240")
+  -- "both" after two aircraft each instructed in the request, "all" alone before the instruction's word
+  check_eq(ex("Siberia 77 climb FL170, Astana 45 descend FL190, both reduce 240"),
+    "ALT SBI77 FL170 ; ALT KZR45 FL190 ; SPD SBI77 240 ; SPD KZR45 240")
+  asked(ex("Siberia 77 climb FL170, Astana 45 descend FL190, Yamal 31 heading 200, both reduce 240"),
+    "three aircraft named before 'both'")
+  asked(ex("Siberia 77 climb FL170. both reduce 240"), "one aircraft named before 'both'")
+  asked(ex("Siberia 77 climb FL170, Astana 45 descend FL190, all reduce 240"), "'all' with five aircraft flying")
+  asked(ex("Aeroflot 900 heading 150 all climb FL300"), "'all' alone is the group")
+end
