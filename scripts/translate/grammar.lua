@@ -2376,9 +2376,88 @@ G.general_speed_verbs = set_of({ "fly", "flies", "go", "goes", "put" })
 -- of one word (or a level "FL200") is said "then" (G:until_then reads the rest from that place), and "with" straight
 -- after it before a speed is said "speed"; a longer place, or a sequel word not straight after the place (a comma
 -- and "and" between at most), is left as said
+G.after_sequel_verbs = set_of({ "to", "reduce", "increase", "slow", "accelerate", "speed", "descend", "climb",
+                                 "turn", "fly", "go" })
+-- "until ODIKO keep the 220 knots", "till ABLON, maintain FL240 please" (text in, text out): a limit "until"/"till" a
+-- place of one word said first, at the start of a clause (the text's start, punctuation, or a callsign before it
+-- with no instruction word), then "keep"/"maintain"/"hold"/"stay at" and one value with at most its unit, ending
+-- there (punctuation, "please", "then", "after", "and" or the end), is said in the usual order, "keep the 220 knots
+-- until ODIKO"; anything else (a value of two words, an instruction before the limit) is left as said
+G.fronted_until_verbs = set_of({ "keep", "maintain", "hold", "stay", "remain" })
+G.fronted_until_units = set_of({ "knots", "knot", "kts", "kt", "feet", "ft" })
+G.fronted_until_ends = set_of({ "please", "then", "after", "and", "thank", "thanks" })
+G.fronted_until_before = set_of({ "please", "kindly", "and", "now", "then" })
+G.fronted_until_sequel = { spd = set_of({ "reduce", "increase", "slow", "accelerate", "speed" }),
+                           alt = set_of({ "descend", "climb" }) }
+function G.until_fronted_said(text)
+  local from = 1
+  while true do
+    local _, _, b, u, place, verb, sp2, at = text:find("()%f[%a]([UuTt][NnIi][TtLl][IiLl]?[Ll]?)%s+([%w]+)%s*,?%s+(%a+)(%s+)()",
+      from)
+    if not b then return text end
+    from = at
+    local said = G.until_fronted_one(text, b, u, place, verb, sp2, at)
+    if said then text = said end
+  end
+end
+function G.until_fronted_one(text, b, u, place, verb, sp2, at)
+  do
+    local ul = u:lower()
+    if (ul ~= "until" and ul ~= "till") or not G.fronted_until_verbs[verb:lower()] or not place:match("^%u[%u%d]+$")
+        then return nil end
+    -- the clause before the limit: empty, or words with no instruction word (a callsign)
+    local before = text:sub(1, b - 1)
+    local clause = before:match("[,.;:!?]([^,.;:!?]*)$") or before
+    for w in clause:gmatch("%a+") do
+      local lw = w:lower()
+      if not (G.fronted_until_before[lw] or w:match("^%u")) then return nil end
+      if lw == "fl" or lw == "heading" or lw == "speed" or lw == "level" then return nil end
+    end
+    -- the value kept: [at|on] [the] [speed|level] VALUE [unit], then an end
+    local rest = text:sub(at)
+    local pos = 1
+    local function take(pat)
+      local w, nxt = rest:match("^(" .. pat .. ")%f[^%w%.]%s*()", pos)
+      if w then pos = nxt end
+      return w
+    end
+    local prep = take("[AaOo][tn]")
+    if prep and not (prep:lower() == "at" or prep:lower() == "on") then return nil end
+    take("[Tt]he")
+    local named_spd, named_alt = take("[Ss]peed"), take("[Ll]evel")
+    local value = take("[Ff][Ll]%s?%d%d%d?") or take("[Mm]ach%s+0?[%.,]%d%d?") or take("[Mm]0?[%.,]%d%d?")
+      or take("%d%d%d%d?%d?")
+    if not value then return nil end
+    local unit = rest:match("^(%a+)", pos)
+    if unit and G.fronted_until_units[unit:lower()] then pos = pos + #unit end
+    local tail = rest:sub(pos)
+    local nx = tail:match("^%s*(%a+)")
+    if not (tail:match("^%s*$") or tail:match("^%s*[,.;!?]") or (nx and G.fronted_until_ends[nx:lower()])) then
+      return nil
+    end
+    -- a sequel ("then", "after", "and") names an instruction of the kept value's own kind, or none is read
+    local kind = (named_alt or value:match("^[Ff][Ll]") or (unit and unit:lower():match("^f"))) and "alt"
+      or ((named_spd or value:match("^[Mm]") or (unit and unit:lower():match("^k"))) and "spd") or nil
+    local seq, w1, w2 = tail:match("^%s*,?%s*(%a+)%s+(%a+)%s*(%a*)")
+    if seq and (seq:lower() == "then" or seq:lower() == "after" or seq:lower() == "and") then
+      local verb2 = ((w1:lower() == "to" or w1:lower() == "that") and w2 or w1):lower()
+      if not kind or G.fronted_until_sequel[kind][verb2] ~= true then return nil end
+    end
+    local kept = verb .. sp2 .. rest:sub(1, pos - 1):gsub("%s+$", "")
+    return before .. kept .. " " .. u .. " " .. place .. tail
+  end
+end
 G.until_sequels = { "and only then", "only then", "and afterwards", "afterwards", "and afterward", "afterward",
                     "and thereafter", "thereafter", "and after that", "after that" }
 function G.until_sequel_said(text)
+  text = G.until_fronted_said(text)
+  -- "until ODIKO, after to reduce at 190", "till ODIKO, after reduce 190": "after" alone straight after the limit's
+  -- place, before "to" or a verb of speed or level (not a place), is the sequel's "then"
+  text = text:gsub("(%f[%a][Uu]?[Nn]?[Tt][Ii][Ll]l?%s+[%w]+)(%s*,?%s+)[Aa]fter(%s+)(%a+)%f[%A]", function(limit, sep, sp, nx)
+    local word = limit:match("^(%a+)"):lower()
+    if (word ~= "until" and word ~= "till") or not G.after_sequel_verbs[nx:lower()] then return nil end
+    return limit .. (sep:find(",", 1, true) and ", " or " ") .. "then" .. sp .. nx
+  end)
   for _, w in ipairs(G.until_sequels) do
     local pat = "(%f[%a][Uu]?[Nn]?[Tt][Ii][Ll]l?%s+[%w]+)(%s*,?%s+)" .. w:gsub("%a", function(c)
       return "[" .. c:upper() .. c .. "]" end):gsub(" ", "%%s+") .. "%f[%A]"

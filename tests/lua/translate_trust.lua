@@ -20053,3 +20053,25 @@ do
   check_eq(ex("KLM12 cleared FL300"), "ALT KLM12 FL300")
   check_eq(ex("could KLM12 be cleared FL300?"), "ALT KLM12 FL300")
 end
+
+-- Cycle 63 (fpol7): the polite non-native experimenter's English across the polite rounds.
+-- A limit "until FIX" said before the value it ends ("until ODIKO keep the 220 knots"), and "after" alone for
+-- "afterwards" after it ("..., after to reduce at 190"), read as in the usual order.
+do
+  local _, ex = scene({ "CRE AEE412 A320 38 23 90 FL200 260", "DEFWPT MILOS 38 24.5", "ADDWPT AEE412 MILOS",
+    "CRE CYP77 A320 35 33 270 FL150 240", "DEFWPT TALOS 35 31.5", "ADDWPT CYP77 TALOS" })
+  check_eq(ex("Aegean 412, until MILOS keep 250 knots please"), "SPD AEE412 250")
+  check_eq(ex("AEE412 till MILOS maintain the 240 knots"), "SPD AEE412 240")
+  check_eq(ex("Cyprus 77 until TALOS stay at FL150, after to descend at 110"),
+    "ALT CYP77 FL150 ; AT CYP77 TALOS DO ALT CYP77 FL110")
+  check_eq(ex("CYP77, until TALOS maintain speed 230, after reduce 200 please"),
+    "SPD CYP77 230 ; AT CYP77 TALOS DO SPD CYP77 200")
+  check_eq(ex("AEE412 keep 250 knots until MILOS, after to reduce at 210"),
+    "SPD AEE412 250 ; AT AEE412 MILOS DO SPD AEE412 210")
+  -- an instruction before the limit, a second instruction after the value, a heading: still asked
+  asked(ex("AEE412 climb FL240 until MILOS keep 250 knots"), "which instruction the limit ends")
+  asked(ex("AEE412 until MILOS keep 250 knots and descend FL150"), "the descent now or at MILOS")
+  asked(ex("AEE412 until MILOS keep heading 120"), "a heading kept until a place")
+  asked(ex("Aegean 412, until MILOS keep 250 knots, then descend FL150"), "a sequel of another kind: now or at MILOS")
+  asked(ex("CYP77 till TALOS stay at FL150, after reduce 200"), "a sequel of another kind")
+end
