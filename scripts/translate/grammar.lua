@@ -2703,11 +2703,48 @@ function G.notebook_assignments(text)
   return text
 end
 
+-- "no, the other Aegean, the seven tango sierra", "ochi, the other Cyprus, 38H" (text in, text out): the rest of a
+-- callsign said after "the other NAME" and a comma (and "the") is said straight after the name ("the other Aegean
+-- seven tango sierra"), so that the correction names that aircraft when its airline and every character match
+-- (G:other_taken_back); the rest is one token of digits and capitals with both ("7TS", "38H"), or two to six words of
+-- the phonetic alphabet and number words with a letter among them. Digits alone ("the other Olympic, 356": a level?)
+-- or anything else are left as said.
+function G.other_name_suffix_said(text)
+  return (text:gsub("(%f[%a][Tt]he%s+other%s+%a+)%s*,%s*(%w+)(%s*)([^,.;:!?]*)", function(head, first, sp, rest)
+    local words = { first }
+    for w in rest:gmatch("%S+") do words[#words + 1] = w end
+    local i = 1
+    if first:lower() == "the" then i = 2 end
+    local tok = words[i]
+    if not tok then return nil end
+    local tail_from
+    if tok:match("^%w+$") and tok:match("%d") and tok:match("%u") and not tok:match("%l") and #tok <= 4 then
+      tail_from = i + 1
+    else
+      local n, letters = 0, 0
+      local j = i
+      while words[j] do
+        local lw = words[j]:lower()
+        if lexicon.phonetic[lw] then letters = letters + 1
+        elseif not NUMBER_WORDS[lw] and lw ~= "niner" then break end
+        n, j = n + 1, j + 1
+      end
+      if n < 2 or n > 6 or letters == 0 then return nil end
+      tail_from = j
+    end
+    local out = {}
+    for k = i, #words do out[#out + 1] = words[k] end
+    local said = table.concat(out, " ", 1, tail_from - i)
+    local after = table.concat(out, " ", tail_from - i + 1)
+    return head .. " " .. said .. (after ~= "" and ", " .. after or "")
+  end))
+end
 local function written_forms(text, world)
   -- (each pattern pass runs through where(): only where `low`, the text in lower case, holds what the
   -- pattern requires, its first argument; a rewrite outside where() sets `low` again)
   local low = text:lower()
   text = G.notebook_assignments(text)
+  if low:find("other", 1, true) then text = G.other_name_suffix_said(text) end
   low = text:lower()
   local function where(needle, pattern, repl)
     if low:find(needle) then text, low = tokens.gsub_where(text, low, needle, pattern, repl) end
@@ -9649,7 +9686,13 @@ function G:other_taken_back()
       for j = 1, k - 2 do marked = marked or SC_MARKERS[w[j]] or self:word(j, "@correction") end
       if not marked then return end
       for _, r in ipairs(self.refs) do
-        if r.kind == "aircraft" and r.b > k and self:raw(r.b, r.e):find("%d") then return end
+        if r.kind == "aircraft" and r.b > k then
+          if self:raw(r.b, r.e):find("%d") then return end
+          -- a number said in words after the name ("the other Aegean seven tango sierra")
+          for j = r.b + 1, r.e - 1 do
+            if NUMBER_WORDS[w[j]] or w[j] == "niner" then return end
+          end
+        end
       end
       self:need(string.format("You said '%s': which aircraft do you mean? Please give its callsign.",
         self:raw(k - 1, math.min(k + 2, #self.t + 1)):gsub("[%s%p]+$", "")))

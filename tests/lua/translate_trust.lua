@@ -20075,3 +20075,16 @@ do
   asked(ex("Aegean 412, until MILOS keep 250 knots, then descend FL150"), "a sequel of another kind: now or at MILOS")
   asked(ex("CYP77 till TALOS stay at FL150, after reduce 200"), "a sequel of another kind")
 end
+
+-- Cycle 63 (fpol7): the rest of a callsign said after "the other NAME" in a correction ("no, the other Olympic,
+-- the two x-ray bravo"): read when the airline and every character match; digits alone, or no rest, asked.
+do
+  local _, ex = scene({ "CRE OAL21 AT72 38 23 90 FL120 220", "CRE OAL2XB AT72 38.5 23.5 180 FL140 220",
+    "CRE CYP40 A320 35 33 270 FL200 260", "CRE CYP8KM A320 35.2 32.5 90 FL220 260" })
+  check_eq(ex("Olympic 21 descend FL100, no sorry, the other Olympic, the two x-ray bravo"), "ALT OAL2XB FL100")
+  check_eq(ex("Cyprus 40 turn left heading 200... ochi, the other Cyprus, 8KM"), "HDG CYP8KM 200 LEFT")
+  check_eq(ex("Cyprus 40 reduce 230, no, the other Cyprus eight kilo mike"), "SPD CYP8KM 230")
+  asked(ex("Olympic 21 descend FL100, no sorry, the other Olympic, two x-ray"), "a character missing")
+  asked(ex("Cyprus 40 climb FL240, no, the other Cyprus, 220"), "digits alone: a level or a callsign?")
+  asked(ex("Olympic 21 descend FL100, no sorry, the other Olympic"), "no callsign")
+end
