@@ -2739,12 +2739,36 @@ function G.other_name_suffix_said(text)
     return head .. " " .. said .. (after ~= "" and ", " .. after or "")
   end))
 end
+-- "Could EZY45 eventually turn right to heading 010?", "could you eventually let the Austrian fly to Graz?" (text in,
+-- text out): "eventually" between a modal opening a polite request and its verb is the speaker's hedge ("possibly",
+-- German "eventuell", Romance "eventualmente"), said as "possibly", a filler; only the subject (a pronoun, "the", a
+-- callsign or name of at most four words) may stand between the modal and it, and a word follows it. Anywhere else
+-- ("descend FL100 eventually", "it will eventually reach") it is left as said.
+G.eventually_modals = set_of({ "could", "can", "would", "might", "may" })
+G.eventually_subjects = set_of({ "you", "we", "it", "he", "she", "they", "the", "aircraft", "plane", "flight" })
+function G.eventually_hedge_said(text)
+  return (text:gsub("()%f[%a]([Ee]ventually)(%s+%a)", function(b, word, nx)
+    -- the words before it back to the modal, within its clause
+    local before = text:sub(1, b - 1):match("([^,.;:!?]*)$")
+    local words = {}
+    for w in before:gmatch("%S+") do words[#words + 1] = w end
+    for k = #words, math.max(1, #words - 4), -1 do
+      local lw = words[k]:lower()
+      if G.eventually_modals[lw] then
+        return k < #words and "possibly" .. nx or nil
+      end
+      if not (G.eventually_subjects[lw] or words[k]:match("^%u") or words[k]:match("%d")) then return nil end
+    end
+    return nil
+  end))
+end
 local function written_forms(text, world)
   -- (each pattern pass runs through where(): only where `low`, the text in lower case, holds what the
   -- pattern requires, its first argument; a rewrite outside where() sets `low` again)
   local low = text:lower()
   text = G.notebook_assignments(text)
   if low:find("other", 1, true) then text = G.other_name_suffix_said(text) end
+  if low:find("eventually", 1, true) then text = G.eventually_hedge_said(text) end
   low = text:lower()
   local function where(needle, pattern, repl)
     if low:find(needle) then text, low = tokens.gsub_where(text, low, needle, pattern, repl) end

@@ -20088,3 +20088,15 @@ do
   asked(ex("Cyprus 40 climb FL240, no, the other Cyprus, 220"), "digits alone: a level or a callsign?")
   asked(ex("Olympic 21 descend FL100, no sorry, the other Olympic"), "no callsign")
 end
+
+-- Cycle 63 (fpol7): "eventually" between a polite request's modal and its verb is the hedge "possibly" (German
+-- "eventuell"); said after the verb or without a modal it stays asked.
+do
+  local _, ex = scene({ "CRE SWR15 A320 47 8 90 FL250 280", "CRE DLH7PK A321 48 11 270 FL300 280" })
+  check_eq(ex("Could SWR15 eventually turn left to heading 040?"), "HDG SWR15 40 LEFT")
+  check_eq(ex("Please, could you eventually let the Lufthansa 7PK descend to FL280?"), "ALT DLH7PK FL280")
+  check_eq(ex("would the Swiss eventually climb to FL310, if possible?"), "ALT SWR15 FL310")
+  asked(ex("SWR15 descend FL200 eventually"), "eventually after the instruction: later?")
+  asked(ex("DLH7PK eventually descend FL200"), "no modal")
+  asked(ex("Could you tell me if SWR15 will eventually reach FL300?"), "a question about the future")
+end
