@@ -15618,6 +15618,7 @@ do
     table.insert(G.common_by_first[w], k)
   end
 end
+G.common_create_before = set_of({ "create", "spawn", "aircraft", "callsign" })
 function G.common_named(text, world, parsed)
   if #world.aircraft == 0 or not text:find("%d") and not text:find("%a%s+%a") then return text end
   local said, lower = nil, text:lower()
@@ -15639,6 +15640,13 @@ function G.common_named(text, world, parsed)
     if nx and (nx:match("^%d") or SAID_DIGIT[nx]) and not (before and (AIRLINE_WORDS[before] or G.name_words[before])) then
       local read = text:sub(1, at - 1) .. (text:sub(at, at):match("%u") and c[2]:gsub("%f[%a]%a", string.upper) or c[2])
         .. text:sub(at + #c[1])
+      -- ("create Wizz 9AB, A320, ...", "create aircraft Qatar 846 ...": the name straight after a verb of creating,
+      -- or "aircraft"/"callsign" after one, is the new aircraft's airline: read, whatever flies)
+      local head = lower:sub(1, at - 1)
+      if before and G.common_create_before[before] and (head:find("%f[%a]create%f[%A]") or head:find("%f[%a]spawn%f[%A]"))
+          and not head:find("[.;:!?]") then
+        return G.common_named(read, world, parsed)
+      end
       parsed = parsed or {}
       said = said or exact_aircraft(text, world, parsed)
       local keeps = G.one_new_aircraft(read, said, world, parsed) ~= nil

@@ -20100,3 +20100,17 @@ do
   asked(ex("DLH7PK eventually descend FL200"), "no modal")
   asked(ex("Could you tell me if SWR15 will eventually reach FL300?"), "a question about the future")
 end
+
+-- Cycle 63 (fpol7): an airline's everyday name that is no telephony ("Wizz", "Qatar", "Malaysia") straight after
+-- "create" (or "aircraft"/"callsign" after it) names the new aircraft's airline.
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 90 FL250 280", "CRE WZZ31 A320 47 19 90 FL300 280" })
+  check_eq(ex("create Wizz 7KD, A321, at 46.5 20.1, heading 120, FL180, 260 knots"),
+    "CRE WZZ7KD A321 46.5 20.1 120 FL180 260")
+  check_eq(ex("please create aircraft Qatar 912, B77W, at 47 19, heading 270, FL360, 290 knots"),
+    "CRE QTR912 B77W 47 19 270 FL360 290")
+  check_eq(ex("create one aircraft, callsign Malaysia 2611, type A333, at 47 18, heading 090, FL340, 280 knots"),
+    "CRE MAS2611 A333 47 18 90 FL340 280")
+  asked(ex("create Wizz 31 A320 at 47 19 heading 360 FL340 280"), "a callsign already flying")
+  check_eq(ex("Wizz 31 climb FL320"), "ALT WZZ31 FL320")
+end
