@@ -2404,9 +2404,88 @@ G.general_speed_verbs = set_of({ "fly", "flies", "go", "goes", "put" })
 -- of one word (or a level "FL200") is said "then" (G:until_then reads the rest from that place), and "with" straight
 -- after it before a speed is said "speed"; a longer place, or a sequel word not straight after the place (a comma
 -- and "and" between at most), is left as said
+G.after_sequel_verbs = set_of({ "to", "reduce", "increase", "slow", "accelerate", "speed", "descend", "climb",
+                                 "turn", "fly", "go" })
+-- "until ODIKO keep the 220 knots", "till ABLON, maintain FL240 please" (text in, text out): a limit "until"/"till" a
+-- place of one word said first, at the start of a clause (the text's start, punctuation, or a callsign before it
+-- with no instruction word), then "keep"/"maintain"/"hold"/"stay at" and one value with at most its unit, ending
+-- there (punctuation, "please", "then", "after", "and" or the end), is said in the usual order, "keep the 220 knots
+-- until ODIKO"; anything else (a value of two words, an instruction before the limit) is left as said
+G.fronted_until_verbs = set_of({ "keep", "maintain", "hold", "stay", "remain" })
+G.fronted_until_units = set_of({ "knots", "knot", "kts", "kt", "feet", "ft" })
+G.fronted_until_ends = set_of({ "please", "then", "after", "and", "thank", "thanks" })
+G.fronted_until_before = set_of({ "please", "kindly", "and", "now", "then" })
+G.fronted_until_sequel = { spd = set_of({ "reduce", "increase", "slow", "accelerate", "speed" }),
+                           alt = set_of({ "descend", "climb" }) }
+function G.until_fronted_said(text)
+  local from = 1
+  while true do
+    local _, _, b, u, place, verb, sp2, at = text:find("()%f[%a]([UuTt][NnIi][TtLl][IiLl]?[Ll]?)%s+([%w]+)%s*,?%s+(%a+)(%s+)()",
+      from)
+    if not b then return text end
+    from = at
+    local said = G.until_fronted_one(text, b, u, place, verb, sp2, at)
+    if said then text = said end
+  end
+end
+function G.until_fronted_one(text, b, u, place, verb, sp2, at)
+  do
+    local ul = u:lower()
+    if (ul ~= "until" and ul ~= "till") or not G.fronted_until_verbs[verb:lower()] or not place:match("^%u[%u%d]+$")
+        then return nil end
+    -- the clause before the limit: empty, or words with no instruction word (a callsign)
+    local before = text:sub(1, b - 1)
+    local clause = before:match("[,.;:!?]([^,.;:!?]*)$") or before
+    for w in clause:gmatch("%a+") do
+      local lw = w:lower()
+      if not (G.fronted_until_before[lw] or w:match("^%u")) then return nil end
+      if lw == "fl" or lw == "heading" or lw == "speed" or lw == "level" then return nil end
+    end
+    -- the value kept: [at|on] [the] [speed|level] VALUE [unit], then an end
+    local rest = text:sub(at)
+    local pos = 1
+    local function take(pat)
+      local w, nxt = rest:match("^(" .. pat .. ")%f[^%w%.]%s*()", pos)
+      if w then pos = nxt end
+      return w
+    end
+    local prep = take("[AaOo][tn]")
+    if prep and not (prep:lower() == "at" or prep:lower() == "on") then return nil end
+    take("[Tt]he")
+    local named_spd, named_alt = take("[Ss]peed"), take("[Ll]evel")
+    local value = take("[Ff][Ll]%s?%d%d%d?") or take("[Mm]ach%s+0?[%.,]%d%d?") or take("[Mm]0?[%.,]%d%d?")
+      or take("%d%d%d%d?%d?")
+    if not value then return nil end
+    local unit = rest:match("^(%a+)", pos)
+    if unit and G.fronted_until_units[unit:lower()] then pos = pos + #unit end
+    local tail = rest:sub(pos)
+    local nx = tail:match("^%s*(%a+)")
+    if not (tail:match("^%s*$") or tail:match("^%s*[,.;!?]") or (nx and G.fronted_until_ends[nx:lower()])) then
+      return nil
+    end
+    -- a sequel ("then", "after", "and") names an instruction of the kept value's own kind, or none is read
+    local kind = (named_alt or value:match("^[Ff][Ll]") or (unit and unit:lower():match("^f"))) and "alt"
+      or ((named_spd or value:match("^[Mm]") or (unit and unit:lower():match("^k"))) and "spd") or nil
+    local seq, w1, w2 = tail:match("^%s*,?%s*(%a+)%s+(%a+)%s*(%a*)")
+    if seq and (seq:lower() == "then" or seq:lower() == "after" or seq:lower() == "and") then
+      local verb2 = ((w1:lower() == "to" or w1:lower() == "that") and w2 or w1):lower()
+      if not kind or G.fronted_until_sequel[kind][verb2] ~= true then return nil end
+    end
+    local kept = verb .. sp2 .. rest:sub(1, pos - 1):gsub("%s+$", "")
+    return before .. kept .. " " .. u .. " " .. place .. tail
+  end
+end
 G.until_sequels = { "and only then", "only then", "and afterwards", "afterwards", "and afterward", "afterward",
                     "and thereafter", "thereafter", "and after that", "after that" }
 function G.until_sequel_said(text)
+  text = G.until_fronted_said(text)
+  -- "until ODIKO, after to reduce at 190", "till ODIKO, after reduce 190": "after" alone straight after the limit's
+  -- place, before "to" or a verb of speed or level (not a place), is the sequel's "then"
+  text = text:gsub("(%f[%a][Uu]?[Nn]?[Tt][Ii][Ll]l?%s+[%w]+)(%s*,?%s+)[Aa]fter(%s+)(%a+)%f[%A]", function(limit, sep, sp, nx)
+    local word = limit:match("^(%a+)"):lower()
+    if (word ~= "until" and word ~= "till") or not G.after_sequel_verbs[nx:lower()] then return nil end
+    return limit .. (sep:find(",", 1, true) and ", " or " ") .. "then" .. sp .. nx
+  end)
   for _, w in ipairs(G.until_sequels) do
     local pat = "(%f[%a][Uu]?[Nn]?[Tt][Ii][Ll]l?%s+[%w]+)(%s*,?%s+)" .. w:gsub("%a", function(c)
       return "[" .. c:upper() .. c .. "]" end):gsub(" ", "%%s+") .. "%f[%A]"
@@ -2652,11 +2731,72 @@ function G.notebook_assignments(text)
   return text
 end
 
+-- "no, the other Aegean, the seven tango sierra", "ochi, the other Cyprus, 38H" (text in, text out): the rest of a
+-- callsign said after "the other NAME" and a comma (and "the") is said straight after the name ("the other Aegean
+-- seven tango sierra"), so that the correction names that aircraft when its airline and every character match
+-- (G:other_taken_back); the rest is one token of digits and capitals with both ("7TS", "38H"), or two to six words of
+-- the phonetic alphabet and number words with a letter among them. Digits alone ("the other Olympic, 356": a level?)
+-- or anything else are left as said.
+function G.other_name_suffix_said(text)
+  return (text:gsub("(%f[%a][Tt]he%s+other%s+%a+)%s*,%s*(%w+)(%s*)([^,.;:!?]*)", function(head, first, sp, rest)
+    local words = { first }
+    for w in rest:gmatch("%S+") do words[#words + 1] = w end
+    local i = 1
+    if first:lower() == "the" then i = 2 end
+    local tok = words[i]
+    if not tok then return nil end
+    local tail_from
+    if tok:match("^%w+$") and tok:match("%d") and tok:match("%u") and not tok:match("%l") and #tok <= 4 then
+      tail_from = i + 1
+    else
+      local n, letters = 0, 0
+      local j = i
+      while words[j] do
+        local lw = words[j]:lower()
+        if lexicon.phonetic[lw] then letters = letters + 1
+        elseif not NUMBER_WORDS[lw] and lw ~= "niner" then break end
+        n, j = n + 1, j + 1
+      end
+      if n < 2 or n > 6 or letters == 0 then return nil end
+      tail_from = j
+    end
+    local out = {}
+    for k = i, #words do out[#out + 1] = words[k] end
+    local said = table.concat(out, " ", 1, tail_from - i)
+    local after = table.concat(out, " ", tail_from - i + 1)
+    return head .. " " .. said .. (after ~= "" and ", " .. after or "")
+  end))
+end
+-- "Could EZY45 eventually turn right to heading 010?", "could you eventually let the Austrian fly to Graz?" (text in,
+-- text out): "eventually" between a modal opening a polite request and its verb is the speaker's hedge ("possibly",
+-- German "eventuell", Romance "eventualmente"), said as "possibly", a filler; only the subject (a pronoun, "the", a
+-- callsign or name of at most four words) may stand between the modal and it, and a word follows it. Anywhere else
+-- ("descend FL100 eventually", "it will eventually reach") it is left as said.
+G.eventually_modals = set_of({ "could", "can", "would", "might", "may" })
+G.eventually_subjects = set_of({ "you", "we", "it", "he", "she", "they", "the", "aircraft", "plane", "flight" })
+function G.eventually_hedge_said(text)
+  return (text:gsub("()%f[%a]([Ee]ventually)(%s+%a)", function(b, word, nx)
+    -- the words before it back to the modal, within its clause
+    local before = text:sub(1, b - 1):match("([^,.;:!?]*)$")
+    local words = {}
+    for w in before:gmatch("%S+") do words[#words + 1] = w end
+    for k = #words, math.max(1, #words - 4), -1 do
+      local lw = words[k]:lower()
+      if G.eventually_modals[lw] then
+        return k < #words and "possibly" .. nx or nil
+      end
+      if not (G.eventually_subjects[lw] or words[k]:match("^%u") or words[k]:match("%d")) then return nil end
+    end
+    return nil
+  end))
+end
 local function written_forms(text, world)
   -- (each pattern pass runs through where(): only where `low`, the text in lower case, holds what the
   -- pattern requires, its first argument; a rewrite outside where() sets `low` again)
   local low = text:lower()
   text = G.notebook_assignments(text)
+  if low:find("other", 1, true) then text = G.other_name_suffix_said(text) end
+  if low:find("eventually", 1, true) then text = G.eventually_hedge_said(text) end
   low = text:lower()
   local function where(needle, pattern, repl)
     if low:find(needle) then text, low = tokens.gsub_where(text, low, needle, pattern, repl) end
@@ -9598,7 +9738,13 @@ function G:other_taken_back()
       for j = 1, k - 2 do marked = marked or SC_MARKERS[w[j]] or self:word(j, "@correction") end
       if not marked then return end
       for _, r in ipairs(self.refs) do
-        if r.kind == "aircraft" and r.b > k and self:raw(r.b, r.e):find("%d") then return end
+        if r.kind == "aircraft" and r.b > k then
+          if self:raw(r.b, r.e):find("%d") then return end
+          -- a number said in words after the name ("the other Aegean seven tango sierra")
+          for j = r.b + 1, r.e - 1 do
+            if NUMBER_WORDS[w[j]] or w[j] == "niner" then return end
+          end
+        end
       end
       self:need(string.format("You said '%s': which aircraft do you mean? Please give its callsign.",
         self:raw(k - 1, math.min(k + 2, #self.t + 1)):gsub("[%s%p]+$", "")))
@@ -15506,6 +15652,7 @@ do
     table.insert(G.common_by_first[w], k)
   end
 end
+G.common_create_before = set_of({ "create", "spawn", "aircraft", "callsign" })
 function G.common_named(text, world, parsed)
   if #world.aircraft == 0 or not text:find("%d") and not text:find("%a%s+%a") then return text end
   local said, lower = nil, text:lower()
@@ -15527,6 +15674,13 @@ function G.common_named(text, world, parsed)
     if nx and (nx:match("^%d") or SAID_DIGIT[nx]) and not (before and (AIRLINE_WORDS[before] or G.name_words[before])) then
       local read = text:sub(1, at - 1) .. (text:sub(at, at):match("%u") and c[2]:gsub("%f[%a]%a", string.upper) or c[2])
         .. text:sub(at + #c[1])
+      -- ("create Wizz 9AB, A320, ...", "create aircraft Qatar 846 ...": the name straight after a verb of creating,
+      -- or "aircraft"/"callsign" after one, is the new aircraft's airline: read, whatever flies)
+      local head = lower:sub(1, at - 1)
+      if before and G.common_create_before[before] and (head:find("%f[%a]create%f[%A]") or head:find("%f[%a]spawn%f[%A]"))
+          and not head:find("[.;:!?]") then
+        return G.common_named(read, world, parsed)
+      end
       parsed = parsed or {}
       said = said or exact_aircraft(text, world, parsed)
       local keeps = G.one_new_aircraft(read, said, world, parsed) ~= nil

@@ -20102,3 +20102,64 @@ do
   asked(ex("Siberia 77 climb FL170, Astana 45 descend FL190, all reduce 240"), "'all' with five aircraft flying")
   asked(ex("Aeroflot 900 heading 150 all climb FL300"), "'all' alone is the group")
 end
+
+-- Cycle 63 (fpol7): the polite non-native experimenter's English across the polite rounds.
+-- A limit "until FIX" said before the value it ends ("until ODIKO keep the 220 knots"), and "after" alone for
+-- "afterwards" after it ("..., after to reduce at 190"), read as in the usual order.
+do
+  local _, ex = scene({ "CRE AEE412 A320 38 23 90 FL200 260", "DEFWPT MILOS 38 24.5", "ADDWPT AEE412 MILOS",
+    "CRE CYP77 A320 35 33 270 FL150 240", "DEFWPT TALOS 35 31.5", "ADDWPT CYP77 TALOS" })
+  check_eq(ex("Aegean 412, until MILOS keep 250 knots please"), "SPD AEE412 250")
+  check_eq(ex("AEE412 till MILOS maintain the 240 knots"), "SPD AEE412 240")
+  check_eq(ex("Cyprus 77 until TALOS stay at FL150, after to descend at 110"),
+    "ALT CYP77 FL150 ; AT CYP77 TALOS DO ALT CYP77 FL110")
+  check_eq(ex("CYP77, until TALOS maintain speed 230, after reduce 200 please"),
+    "SPD CYP77 230 ; AT CYP77 TALOS DO SPD CYP77 200")
+  check_eq(ex("AEE412 keep 250 knots until MILOS, after to reduce at 210"),
+    "SPD AEE412 250 ; AT AEE412 MILOS DO SPD AEE412 210")
+  -- an instruction before the limit, a second instruction after the value, a heading: still asked
+  asked(ex("AEE412 climb FL240 until MILOS keep 250 knots"), "which instruction the limit ends")
+  asked(ex("AEE412 until MILOS keep 250 knots and descend FL150"), "the descent now or at MILOS")
+  asked(ex("AEE412 until MILOS keep heading 120"), "a heading kept until a place")
+  asked(ex("Aegean 412, until MILOS keep 250 knots, then descend FL150"), "a sequel of another kind: now or at MILOS")
+  asked(ex("CYP77 till TALOS stay at FL150, after reduce 200"), "a sequel of another kind")
+end
+
+-- Cycle 63 (fpol7): the rest of a callsign said after "the other NAME" in a correction ("no, the other Olympic,
+-- the two x-ray bravo"): read when the airline and every character match; digits alone, or no rest, asked.
+do
+  local _, ex = scene({ "CRE OAL21 AT72 38 23 90 FL120 220", "CRE OAL2XB AT72 38.5 23.5 180 FL140 220",
+    "CRE CYP40 A320 35 33 270 FL200 260", "CRE CYP8KM A320 35.2 32.5 90 FL220 260" })
+  check_eq(ex("Olympic 21 descend FL100, no sorry, the other Olympic, the two x-ray bravo"), "ALT OAL2XB FL100")
+  check_eq(ex("Cyprus 40 turn left heading 200... ochi, the other Cyprus, 8KM"), "HDG CYP8KM 200 LEFT")
+  check_eq(ex("Cyprus 40 reduce 230, no, the other Cyprus eight kilo mike"), "SPD CYP8KM 230")
+  asked(ex("Olympic 21 descend FL100, no sorry, the other Olympic, two x-ray"), "a character missing")
+  asked(ex("Cyprus 40 climb FL240, no, the other Cyprus, 220"), "digits alone: a level or a callsign?")
+  asked(ex("Olympic 21 descend FL100, no sorry, the other Olympic"), "no callsign")
+end
+
+-- Cycle 63 (fpol7): "eventually" between a polite request's modal and its verb is the hedge "possibly" (German
+-- "eventuell"); said after the verb or without a modal it stays asked.
+do
+  local _, ex = scene({ "CRE SWR15 A320 47 8 90 FL250 280", "CRE DLH7PK A321 48 11 270 FL300 280" })
+  check_eq(ex("Could SWR15 eventually turn left to heading 040?"), "HDG SWR15 40 LEFT")
+  check_eq(ex("Please, could you eventually let the Lufthansa 7PK descend to FL280?"), "ALT DLH7PK FL280")
+  check_eq(ex("would the Swiss eventually climb to FL310, if possible?"), "ALT SWR15 FL310")
+  asked(ex("SWR15 descend FL200 eventually"), "eventually after the instruction: later?")
+  asked(ex("DLH7PK eventually descend FL200"), "no modal")
+  asked(ex("Could you tell me if SWR15 will eventually reach FL300?"), "a question about the future")
+end
+
+-- Cycle 63 (fpol7): an airline's everyday name that is no telephony ("Wizz", "Qatar", "Malaysia") straight after
+-- "create" (or "aircraft"/"callsign" after it) names the new aircraft's airline.
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 90 FL250 280", "CRE WZZ31 A320 47 19 90 FL300 280" })
+  check_eq(ex("create Wizz 7KD, A321, at 46.5 20.1, heading 120, FL180, 260 knots"),
+    "CRE WZZ7KD A321 46.5 20.1 120 FL180 260")
+  check_eq(ex("please create aircraft Qatar 912, B77W, at 47 19, heading 270, FL360, 290 knots"),
+    "CRE QTR912 B77W 47 19 270 FL360 290")
+  check_eq(ex("create one aircraft, callsign Malaysia 2611, type A333, at 47 18, heading 090, FL340, 280 knots"),
+    "CRE MAS2611 A333 47 18 90 FL340 280")
+  asked(ex("create Wizz 31 A320 at 47 19 heading 360 FL340 280"), "a callsign already flying")
+  check_eq(ex("Wizz 31 climb FL320"), "ALT WZZ31 FL320")
+end
