@@ -6846,6 +6846,11 @@ function G:question_back()
           self:set_aside(i, e)
         elseif kept then
           self:set_aside(i, qs[1].b - 1)
+        elseif self:state_confirmed(ce, e) then
+          -- (the state asked about, its value with it, is no instruction: "confirm" asks for the report, rules.lua)
+          self:set_aside(ce, e - 1)
+          self.state_asked = self.state_asked or {}
+          self.state_asked[i] = true
         elseif #self:quantities(ce, e) > 0 or #self:refs_in(ce, e, "waypoint") > 0 then
           return self:need(string.format("'%s' asks whether a clearance stands: it is a question, no "
             .. "instruction. Please give the instruction itself.", said(i, e)))
@@ -6853,6 +6858,42 @@ function G:question_back()
       end
     end
   end
+end
+
+-- True when the clause [b, e) after "confirm" asks the aircraft to confirm a state it holds, with its one value:
+-- "(that) you are / you're (still, now) maintaining FL120", "you are level (at) FL140", "you are on heading 160",
+-- "you are at FL120", "you are flying heading 090", "you are FL120", "maintaining 270 knots" (the participle
+-- alone). A motion with its level ("you are descending FL120") is a clearance asked about, and so is "confirm
+-- heading 270", "confirm cleared FL200", "confirm level 290" with no state said: none of these is.
+function G:state_confirmed(b, e)
+  local qs = self:quantities(b, e)
+  local q = qs[1]
+  if #qs ~= 1 or not (q.kind == "alt" or q.kind == "speed" or q.kind == "mach" or q.kind == "heading"
+      or q.kind == "plain") then
+    return false
+  end
+  local k = b
+  if self:word(k, "that") then k = k + 1 end
+  local you = false
+  if self:word(k, "you") and self:word(k + 1, "are re") then
+    k, you = k + 2, true
+  elseif self:word(k, "you're youre") then
+    k, you = k + 1, true
+  end
+  if self:word(k, "still now currently presently") then k = k + 1 end
+  local state = false
+  if self:word(k, "maintaining") then
+    k, state = k + 1, true
+  elseif you and self:word(k, "level at on flying steady") and k < q.b then
+    k, state = k + 1, true
+  end
+  if not (state or (you and k == q.b)) then return false end
+  -- (the state's nouns before the value: "on heading", "level at", "maintaining a speed of")
+  while k < q.b and self:word(k, "at on a of the heading speed altitude level flight") do k = k + 1 end
+  if k ~= q.b then return false end
+  k = q.e
+  while k < e and (self.t[k].filler or self:word(k, "now please kindly sir")) do k = k + 1 end
+  return k == e
 end
 
 -- The end of the clause of the last instruction of intent `kind` ("hdg", "alt", ...) said before token a: the

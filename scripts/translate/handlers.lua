@@ -1926,7 +1926,8 @@ end
 -- "Dreamliner", "King Air", "A320"): (test, e) with test(designator) true for the types it names and e the token
 -- after it, or nil. A family's number names each of its variants; a designator or variant names itself;
 -- a maker names its types; a nickname (types.nicknames) its patterns. A nickname said straight after a type
--- narrows it to the types of both ("the 737 MAX", "the Boeing 737 MAX"). `after_airline`: i follows an airline's
+-- narrows it to the types of both ("the 737 MAX", "the Boeing 737 MAX"); when none is both ("the B737 MAX": B737
+-- is the 737-700, no MAX) it names no aircraft, never the type alone. `after_airline`: i follows an airline's
 -- name, where a family's number said group-wise reads as after "the" ("the Delta seven fifty-seven").
 function m:type_said(i, after_airline)
   local test, e = self:type_named(i, after_airline)
@@ -1938,7 +1939,6 @@ function m:type_said(i, after_airline)
       for _, p in ipairs(nick) do if test(d) and d:match(p) then both[d] = true end end
     end
   end
-  if not next(both) then return test, e end
   return function(d) return both[d] == true end, e + 1
 end
 function m:type_named(i, after_airline)

@@ -374,7 +374,21 @@ return function(H, f, compass)
     -- ("a Boeing 767", "a United 787"): a family flown in several common variants, said by its
     -- name alone, names no one variant (lexicon.variant_families); a variant said or written is that one (an Airbus
     -- family's digits only after "A" or "Airbus": "Saab 340" is no A340)
-    local said = #written == 0 and types[1] and self:raw(types[1].b, types[1].e):lower():gsub("[%s%-]", "")
+    -- ("B737 max", "Boeing 737 MAX"): a family's nickname (types.nicknames) said straight after the type, which the
+    -- type read does not match, narrows it: B737 is the 737-700, "B737 max" one of the MAXes; the type is the
+    -- nickname's, asked about below when several fit)
+    local narrowed = false
+    do
+      local t = types[1]
+      local w = t and self.t[t.e] and self.t[t.e].kind == "word" and self.t[t.e].text
+      local pats = w and require("translate.types").nicknames[w]
+      if pats and actype then
+        local fits = false
+        for _, p in ipairs(pats) do fits = fits or actype:upper():match(p) ~= nil end
+        if not fits then actype, narrowed = nil, true end
+      end
+    end
+    local said = not narrowed and #written == 0 and types[1] and self:raw(types[1].b, types[1].e):lower():gsub("[%s%-]", "")
     for _, fam in ipairs(said and L.variant_families or {}) do
       local pre = said:sub(1, -#fam - 1)
       if said:sub(-#fam) == fam and not pre:match("%d$")

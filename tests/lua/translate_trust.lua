@@ -20053,3 +20053,39 @@ do
   check_eq(ex("KLM12 cleared FL300"), "ALT KLM12 FL300")
   check_eq(ex("could KLM12 be cleared FL300?"), "ALT KLM12 FL300")
 end
+
+-- Cycle 63 (f218): Indian area and approach controllers (R218). The aircraft asked to confirm a state it holds,
+-- with its value, asks for its report; the simulation's speed set "to" a rate; "B737 MAX" is no B737.
+do
+  local _, ex = scene({ "CRE AIC88 A320 20 73 180 FL190 290", "CRE IGO512 A20N 19 74 090 FL140 270",
+    "CRE AXB7 B38M 19.5 73.5 200 FL110 260", "CRE SEJ41 B737 18.5 73.0 020 9000 250" })
+  -- a state confirmed, its value with it: POS, whatever its form
+  check_eq(ex("Air India 88 confirm you are maintaining flight level one niner zero"), "POS AIC88")
+  check_eq(ex("IFLY 512, kindly confirm you're still maintaining FL140?"), "POS IGO512")
+  check_eq(ex("AIC88 confirm maintaining two niner zero knots"), "POS AIC88")
+  check_eq(ex("IGO512 confirm that you are level at flight level one four zero please"), "POS IGO512")
+  check_eq(ex("Air India 88 confirm you are on heading one eight zero"), "POS AIC88")
+  check_eq(ex("IGO512 confirm you are FL140"), "POS IGO512")
+  -- a clearance asked about, a base form, two values, a motion with its level: still asked
+  asked(ex("AIC88 confirm heading 180"), "a heading asked about with no state said")
+  asked(ex("AIC88 confirm cleared FL200?"), "a clearance asked about")
+  asked(ex("AIC88 confirm maintain FL190"), "the base form, an instruction asked about")
+  asked(ex("AIC88 confirm you are descending FL150"), "a motion with its level, a clearance asked about")
+  asked(ex("AIC88 confirm you are maintaining FL190 and heading 180"), "two values")
+  asked(ex("AIC88 confirm maintaining FL190, descend FL150"), "a question and an instruction in one clause")
+  check_eq(ex("AIC88 confirm maintaining FL190? Descend and maintain FL150"), "ALT AIC88 FL150")
+  -- the simulation's speed set to a rate
+  check_eq(ex("kindly reduce the simulation speed to half"), "DTMULT 0.5")
+  check_eq(ex("set the sim speed to 0.5 please"), "DTMULT 0.5")
+  check_eq(ex("bring the speed of the simulation down to a quarter"), "DTMULT 0.25")
+  check_eq(ex("increase simulation speed to double"), "DTMULT 2")
+  asked(ex("reduce the simulation speed by half"), "a change from a rate squawk does not know")
+  asked(ex("reduce the simulation speed"), "no rate said")
+  asked(ex("IGO512 reduce speed to half"), "an aircraft's speed halved")
+  -- "B737 max": one of the MAXes, never the B737 (737-700)
+  asked(ex("create Akasa 1350 B737 max at 19 N 73 E, heading 180, 9000 feet, 230 knots"), "which MAX")
+  asked(ex("create AKJ1351 Boeing 737 Max at 19 N 73 E heading 180 FL100 250"), "which MAX")
+  check_eq(ex("create AKJ1352 B737 MAX 8 at 19 N 73 E heading 180 FL100 250"), "CRE AKJ1352 B38M 19 73 180 FL100 250")
+  asked(ex("the B737 max descend FL100"), "no aircraft is a B737 and a MAX")
+  check_eq(ex("the 737 max descend FL100"), "ALT AXB7 FL100")
+end
