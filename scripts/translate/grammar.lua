@@ -15486,6 +15486,20 @@ function G.one_new_aircraft(read, said, world, parsed)
   end
   return new or nil
 end
+-- True when an aircraft `read` names exactly (the common name read as its telephony) is named in `text`, as said,
+-- by a match that opens on an earlier token: the matcher took words before the name into the callsign ("info on
+-- Wizz 7101", "put Wizz 7101 at ...": "info on Wizz" heard as "Wizz Air"), which the reading gives back
+function G.common_swallowed(text, read, world)
+  local starts = {}
+  for _, r in ipairs(squawk.translate.utterance(text, world, NAMES):refs()) do
+    if r.kind == "aircraft" and r.exists then starts[r.name:upper()] = r.b end
+  end
+  for _, r in ipairs(squawk.translate.utterance(read, world, NAMES):refs()) do
+    local b = r.kind == "aircraft" and r.exists and not r.heard and starts[r.name:upper()]
+    if b and b < r.b then return true end
+  end
+  return false
+end
 -- "climb Qatar 846", "delete Malaysia 2608", "direct Hong Kong Airlines 612 to LIMES": a name an airline is known
 -- by that is no telephony (names.common; the callsign matcher knows telephony only) said before a flight number
 -- (digits, or a digit said), wherever it stands, is read as the airline's telephony (its ICAO designator where
@@ -15536,7 +15550,7 @@ function G.common_named(text, world, parsed)
         .. text:sub(at + #c[1])
       parsed = parsed or {}
       said = said or exact_aircraft(text, world, parsed)
-      local keeps = G.one_new_aircraft(read, said, world, parsed) ~= nil
+      local keeps = G.one_new_aircraft(read, said, world, parsed) ~= nil or G.common_swallowed(text, read, world)
       for id in pairs(keeps and said or {}) do keeps = keeps and exact_aircraft(read, world, parsed)[id] end
       if keeps then return G.common_named(read, world, parsed) end
     end

@@ -20089,3 +20089,15 @@ do
   asked(ex("the B737 max descend FL100"), "no aircraft is a B737 and a MAX")
   check_eq(ex("the 737 max descend FL100"), "ALT AXB7 FL100")
 end
+
+-- Cycle 63 (f218): a common name (names.common, "Wizz") after a word the callsign matcher took into it ("info on
+-- Wizz 7101": "info on Wizz" heard as "Wizz Air") is read as the airline's telephony, the word given back.
+do
+  local _, ex = scene({ "CRE WZZ7101 A21N 32.3 34.6 300 FL170 290", "CRE ELY81 B789 32.1 34.7 290 FL150 290" })
+  check_eq(ex("info on Wizz 7101"), "POS WZZ7101")
+  check_eq(ex("pos Wizz 7101 please"), "POS WZZ7101")
+  check_eq(ex("status of Wizz 7101"), "POS WZZ7101")
+  check_eq(ex("put Wizz 7101 at 32.5 34.3, flight level one eight zero"), "MOVE WZZ7101 32.5 34.3 FL180")
+  check_eq(ex("info on Wizz 7101 and El Al 81"), "POS WZZ7101 ; POS ELY81")
+  asked(ex("info on Wizz 7102"), "no such aircraft")
+end
