@@ -3349,12 +3349,18 @@ function m:settle_callsigns()
     end
   end
   -- "KLM 1394 and 1349, both descend FL80": typed digits after a flying aircraft's callsign and "and" that are,
-  -- with its airline, another flying aircraft's callsign exactly name that aircraft too
+  -- with its airline, another flying aircraft's callsign exactly name that aircraft too; so do digits after a comma
+  -- that "both" follows ("Israir 318, 381, both climb FL170": two aircraft listed)
+  local function both_after(x)
+    local k = self.t[x + 1] and self.t[x + 1].text == "," and x + 2 or x + 1
+    return self:word(k, "both")
+  end
   for k = #self.refs, 1, -1 do
     local r = self.refs[k]
     local x = r.e + 1
     local t, nx = self.t[x], self.refs[k + 1]
-    local a = r.kind == "aircraft" and r.exists and self:word(r.e, "and") and t and t.kind == "number"
+    local listed = self:word(r.e, "and") or (self.t[r.e] and self.t[r.e].text == "," and both_after(x))
+    local a = r.kind == "aircraft" and r.exists and listed and t and t.kind == "number"
       and t.text:match("^%d+$") and not self.u:used(x) and not (nx and nx.b == x) and airline_digits(r.name)
     local id = a and a ~= "" and (a .. t.text):upper()
     if id and id ~= r.name:upper() and self:state(id) and not L.value_units[self.words[x + 1] or ""] then

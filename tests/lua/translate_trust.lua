@@ -20101,3 +20101,13 @@ do
   check_eq(ex("info on Wizz 7101 and El Al 81"), "POS WZZ7101 ; POS ELY81")
   asked(ex("info on Wizz 7102"), "no such aircraft")
 end
+
+-- Cycle 63 (f218): a flight number after a comma that "both" follows names, with the airline of the callsign
+-- before it, the other aircraft listed ("Israir 318, 381, both climb"); without "both" it stays asked.
+do
+  local _, ex = scene({ "CRE ISR318 A320 32.7 35.0 270 FL110 260", "CRE ISR381 A320 32.4 35.2 090 FL150 270" })
+  check_eq(ex("Israir 318, 381, both descend flight level one zero zero"), "ALT ISR318 FL100 ; ALT ISR381 FL100")
+  check_eq(ex("ISR381, 318 both turn left heading 200"), "HDG ISR381 200 LEFT ; HDG ISR318 200 LEFT")
+  asked(ex("Israir 318, 381, descend FL100"), "digits after a comma with no 'both': an aircraft or a value")
+  asked(ex("Israir 318, 383, both descend FL100"), "no aircraft ISR383")
+end
