@@ -6327,7 +6327,8 @@ function G:segments(b, e)
         if (last.intent == tr.intent or alt_pair or kept_noun) and not this.single
             and not self:addressee_between(last, tr.pos) and not dist_between and not self:word(tr.pos, "after")
             and not (self:word(tr.pos, "then @until_then_words") and self:until_then_value(tr.pos)
-              and not (trig[k + 1] and trig[k + 1].pos == self:skip_fillers(tr.pos + 1))) then
+              and not (trig[k + 1] and trig[k + 1].pos == self:skip_fillers(tr.pos + 1)))
+            and not (tr.intent == "spd" and self:word(tr.pos, "then") and self:speed_then_conditioned(tr.pos)) then
           if tr.intent == "alt" or kept_noun then last.intent = tr.intent end
           merged = true
         end
@@ -8175,6 +8176,26 @@ function G:until_then_value(i)
   local p = before[#before]
   if not p or p.e ~= r.b - 1 then return nil end
   return self:value_again_kind(p, q)
+end
+
+-- True when the "then" at i opens a speed said with its unit (knots, Mach) and no verb, followed straight by a
+-- condition ("when", "once", "passing", "reaching", "on reaching"), and a speed instruction with its value stands
+-- before it in the request: "reduce Mach .74, then 280 knots when passing FL200". (Without the condition the
+-- second speed has no time of its own and stays asked.)
+function G:speed_then_conditioned(i)
+  local k = self:skip_fillers(i + 1)
+  local q = self:quantities(k, #self.t + 1)[1]
+  if not q or q.b ~= k or not (q.kind == "speed" or q.kind == "mach") then return false end
+  local c = self:skip_fillers(q.e)
+  if self:word(c, "on") and self:word(c + 1, "reaching") then c = c + 1 end
+  if not self:word(c, "when once passing reaching") then return false end
+  local p = i - 1
+  while p >= 1 and self:intent_at(p) ~= "spd" do p = p - 1 end
+  if p < 1 then return false end
+  for _, v in ipairs(self:quantities(p, i)) do
+    if v.kind == "speed" or v.kind == "mach" or v.kind == "plain" then return true end
+  end
+  return false
 end
 
 -- The kind ("spd" or "alt") of value q said bare after a place, when it closes its clause and value p before the

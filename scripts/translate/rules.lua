@@ -992,6 +992,10 @@ return function(intent, rule, words)
   -- (G:until_then_value)
   rule { "then @until_then_words", "spd", when = function(g, i) return g:until_then_value(i) == "spd" end }
   rule { "then @until_then_words", "alt", when = function(g, i) return g:until_then_value(i) == "alt" end }
+  -- "reduce Mach .74, then 280 knots when passing FL200": a speed with its unit said bare after "then" and before a
+  -- condition, a speed instruction with its value before it, is that instruction again, waiting for the condition
+  -- (G:speed_then_conditioned)
+  rule { "then", "spd", when = function(g, i) return g:speed_then_conditioned(i) end }
   -- "reduce speed 250, after SUMAG 220": the same, after a place (G:after_place_value)
   rule { "after", "spd", when = function(g, i) return g:after_place_value(i) == "spd" end }
   rule { "after", "alt", when = function(g, i) return g:after_place_value(i) == "alt" end }

@@ -20111,3 +20111,14 @@ do
   asked(ex("Israir 318, 381, descend FL100"), "digits after a comma with no 'both': an aircraft or a value")
   asked(ex("Israir 318, 383, both descend FL100"), "no aircraft ISR383")
 end
+
+-- Cycle 63 (f218): a speed with its unit after "then" and before a condition, a speed instruction before it, is a
+-- second speed instruction waiting for the condition ("reduce Mach .74, then 280 knots when passing FL200").
+do
+  local _, ex = scene({ "CRE AAL29 A321 27 -99 200 FL230 300" })
+  check_eq(ex("American 29 reduce Mach point seven four, then two eight zero knots when passing FL200"),
+    "SPD AAL29 M0.74 ; ATALT AAL29 FL200 SPD AAL29 280")
+  check_eq(ex("AAL29 reduce speed 290, then 260 kt once passing FL210"), "SPD AAL29 290 ; ATALT AAL29 FL210 SPD AAL29 260")
+  asked(ex("AAL29 reduce Mach .74, then 280 knots"), "a second speed with no time of its own")
+  asked(ex("AAL29 reduce speed 290, then 260 when passing FL210"), "a bare number with no unit")
+end
