@@ -20122,3 +20122,13 @@ do
   asked(ex("AAL29 reduce Mach .74, then 280 knots"), "a second speed with no time of its own")
   asked(ex("AAL29 reduce speed 290, then 260 when passing FL210"), "a bare number with no unit")
 end
+
+-- Cycle 63 (f218): "ADN" typed in capitals is a fix's ident (ADN near Monterrey), no typed "and"; "adn" in lower
+-- case stays "and".
+do
+  local _, ex = navscene({ "CRE TAO2410 AT72 25.6 -100.8 060 10000 210", "ADDWPT TAO2410 MTY" }, "ADN's ident")
+  if ex then
+    check_eq(ex("TAO2410 add ADN after MTY"), "ADDWPT TAO2410 ADN,,,MTY")
+    check_eq(ex("TAO2410 climb 12000 adn speed 230"), "ALT TAO2410 12000 ; SPD TAO2410 230")
+  end
+end
