@@ -1523,7 +1523,19 @@ local function negated_values(text)
     -- (`v`: the value ruled out against: straight before "not", or before "and" or "only," there)
     local v = k - 1
     if toks[v] and (toks[v].raw:lower() == "and" or toks[v].raw:lower() == "only,") then v = v - 1 end
-    if t.bare == "not" and t.raw:lower() == "not" and value(toks[v]) and v > from() then
+    -- ("El Al 81 no, not two six zero, speed two eight zero": after a correction's mark closed by a comma, the
+    -- value ruled out closed by its own comma, an instruction after it)
+    local marked = toks[k - 1] and (toks[k - 1].raw:lower():match("^no,$") or toks[k - 1].raw:lower():match("^lo,$")
+      or toks[k - 1].raw:lower():match("^negative,$") or toks[k - 1].raw:lower():match("^correction,$"))
+    if t.bare == "not" and t.raw:lower() == "not" and marked and t.at >= from() then
+      local j, numbers = k + 1, 0
+      while toks[j] and (value(toks[j]) or (numbers == 0 and NEGATED_NOUNS[toks[j].bare])) do
+        if value(toks[j]) then numbers = numbers + 1 end
+        j = j + 1
+        if toks[j - 1].raw:match(",$") then break end
+      end
+      if numbers > 0 and toks[j - 1].raw:match(",$") and toks[j] then put(t.at, "", toks[j].at) end
+    elseif t.bare == "not" and t.raw:lower() == "not" and value(toks[v]) and v > from() then
       local j, numbers, stop = k + 1, 0, false
       while toks[j] and (value(toks[j]) or (numbers == 0 and NEGATED_NOUNS[toks[j].bare])) do
         if value(toks[j]) then numbers = numbers + 1 end

@@ -20132,3 +20132,15 @@ do
     check_eq(ex("TAO2410 climb 12000 adn speed 230"), "ALT TAO2410 12000 ; SPD TAO2410 230")
   end
 end
+
+-- Cycle 63 (f218): after a correction's mark and its comma ("no,", "negative,", Hebrew "lo,"), "not" and a value
+-- closed by a comma rule that value out (a readback corrected): dropped, the instruction after it stands.
+do
+  local _, ex = scene({ "CRE ELY81 B789 32.1 34.7 290 FL150 290" })
+  check_eq(ex("El Al 81 lo, not two six zero, speed two eight zero"), "SPD ELY81 280")
+  check_eq(ex("ELY81 negative, not 260, speed 270"), "SPD ELY81 270")
+  check_eq(ex("ELY81 no, not FL160, FL170"), "ALT ELY81 FL170")
+  check_eq(ex("ELY81 negative, not speed 260, heading 260"), "HDG ELY81 260")
+  asked(ex("ELY81 negative, not 260"), "nothing after the value ruled out")
+  asked(ex("ELY81 climb FL170, no, not FL170, speed 270"), "a correction of another kind")
+end
