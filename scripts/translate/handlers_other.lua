@@ -2760,6 +2760,20 @@ return function(H, f, compass)
       return self:need(string.format("Which waypoint is '%s'? Please say its name for %s to fly direct to.", said, id))
     end
     if not wp then return self:need("Direct to which waypoint should " .. id .. " fly?") end
+    -- ("direct SPY then direct EHAM", "direct SPY, descend FL200, then proceed direct PAM"): a second direct-to
+    -- for the aircraft after "then" in the request would leave the first place out at once (the second DIRECT
+    -- runs straight after the first); the sequence meant, the route through both or the second now, is asked. A
+    -- direct-to waiting for a place or level ("then at SPY direct PAM") is the condition's.
+    local thn = self:find_word(1, s.trig, "@then_words")
+    if thn < s.trig and not self:word_in(thn, s.trig, "at after passing over reaching abeam once when overhead") then
+      for _, line in ipairs(self.out) do
+        local before = line:match("^DIRECT " .. id:gsub("%p", "%%%0") .. " (%S+)$")
+        if before and before:upper() ~= wp:upper() then
+          return self:need(string.format("Should %s fly direct %s and then on to %s (both in its route), or direct "
+            .. "%s now, leaving %s out?", id, before, wp, wp, before))
+        end
+      end
+    end
     -- DIRECT needs the waypoint in the route: a known aircraft whose route lacks it gets it added first
     if a then
       local in_route, has = false, {}

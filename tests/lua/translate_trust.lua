@@ -20144,3 +20144,15 @@ do
   asked(ex("ELY81 negative, not 260"), "nothing after the value ruled out")
   asked(ex("ELY81 climb FL170, no, not FL170, speed 270"), "a correction of another kind")
 end
+
+-- Cycle 63 (f218, a hazard): a second direct-to for one aircraft after "then" ran straight after the first,
+-- leaving the first place out; the sequence meant is asked. A direct-to waiting at the first place stays read.
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 90 FL250 280", "DEFWPT AAA01 52.2 4.5", "DEFWPT BBB02 52.4 5.0",
+    "ADDWPT KLM12 AAA01", "CRE DLH4 A321 52 5 270 FL250 280" })
+  asked(ex("KLM12 direct AAA01 then direct BBB02"), "a second direct-to after 'then'")
+  asked(ex("KLM12 proceed direct AAA01, descend FL200, and then proceed direct BBB02"), "the second after another")
+  check_eq(ex("KLM12 direct AAA01 then at AAA01 direct BBB02"), "DIRECT KLM12 AAA01 ; ADDWPT KLM12 BBB02,,,AAA01")
+  check_eq(ex("KLM12 direct AAA01, then DLH4 direct BBB02"),
+    "DIRECT KLM12 AAA01 ; ADDWPT DLH4 BBB02 ; DIRECT DLH4 BBB02")
+end
