@@ -1551,7 +1551,19 @@ local function negated_values(text)
     -- (`v`: the value ruled out against: straight before "not", or before "and" or "only," there)
     local v = k - 1
     if toks[v] and (toks[v].raw:lower() == "and" or toks[v].raw:lower() == "only,") then v = v - 1 end
-    if t.bare == "not" and t.raw:lower() == "not" and value(toks[v]) and v > from() then
+    -- ("El Al 81 no, not two six zero, speed two eight zero": after a correction's mark closed by a comma, the
+    -- value ruled out closed by its own comma, an instruction after it)
+    local marked = toks[k - 1] and (toks[k - 1].raw:lower():match("^no,$") or toks[k - 1].raw:lower():match("^lo,$")
+      or toks[k - 1].raw:lower():match("^negative,$") or toks[k - 1].raw:lower():match("^correction,$"))
+    if t.bare == "not" and t.raw:lower() == "not" and marked and t.at >= from() then
+      local j, numbers = k + 1, 0
+      while toks[j] and (value(toks[j]) or (numbers == 0 and NEGATED_NOUNS[toks[j].bare])) do
+        if value(toks[j]) then numbers = numbers + 1 end
+        j = j + 1
+        if toks[j - 1].raw:match(",$") then break end
+      end
+      if numbers > 0 and toks[j - 1].raw:match(",$") and toks[j] then put(t.at, "", toks[j].at) end
+    elseif t.bare == "not" and t.raw:lower() == "not" and value(toks[v]) and v > from() then
       local j, numbers, stop = k + 1, 0, false
       while toks[j] and (value(toks[j]) or (numbers == 0 and NEGATED_NOUNS[toks[j].bare])) do
         if value(toks[j]) then numbers = numbers + 1 end
@@ -6495,7 +6507,8 @@ function G:segments(b, e)
         if (last.intent == tr.intent or alt_pair or kept_noun) and not this.single
             and not self:addressee_between(last, tr.pos) and not dist_between and not self:word(tr.pos, "after")
             and not (self:word(tr.pos, "then @until_then_words") and self:until_then_value(tr.pos)
-              and not (trig[k + 1] and trig[k + 1].pos == self:skip_fillers(tr.pos + 1))) then
+              and not (trig[k + 1] and trig[k + 1].pos == self:skip_fillers(tr.pos + 1)))
+            and not (tr.intent == "spd" and self:word(tr.pos, "then") and self:speed_then_conditioned(tr.pos)) then
           if tr.intent == "alt" or kept_noun then last.intent = tr.intent end
           merged = true
         end
@@ -7014,6 +7027,11 @@ function G:question_back()
           self:set_aside(i, e)
         elseif kept then
           self:set_aside(i, qs[1].b - 1)
+        elseif self:state_confirmed(ce, e) then
+          -- (the state asked about, its value with it, is no instruction: "confirm" asks for the report, rules.lua)
+          self:set_aside(ce, e - 1)
+          self.state_asked = self.state_asked or {}
+          self.state_asked[i] = true
         elseif #self:quantities(ce, e) > 0 or #self:refs_in(ce, e, "waypoint") > 0 then
           return self:need(string.format("'%s' asks whether a clearance stands: it is a question, no "
             .. "instruction. Please give the instruction itself.", said(i, e)))
@@ -7021,6 +7039,42 @@ function G:question_back()
       end
     end
   end
+end
+
+-- True when the clause [b, e) after "confirm" asks the aircraft to confirm a state it holds, with its one value:
+-- "(that) you are / you're (still, now) maintaining FL120", "you are level (at) FL140", "you are on heading 160",
+-- "you are at FL120", "you are flying heading 090", "you are FL120", "maintaining 270 knots" (the participle
+-- alone). A motion with its level ("you are descending FL120") is a clearance asked about, and so is "confirm
+-- heading 270", "confirm cleared FL200", "confirm level 290" with no state said: none of these is.
+function G:state_confirmed(b, e)
+  local qs = self:quantities(b, e)
+  local q = qs[1]
+  if #qs ~= 1 or not (q.kind == "alt" or q.kind == "speed" or q.kind == "mach" or q.kind == "heading"
+      or q.kind == "plain") then
+    return false
+  end
+  local k = b
+  if self:word(k, "that") then k = k + 1 end
+  local you = false
+  if self:word(k, "you") and self:word(k + 1, "are re") then
+    k, you = k + 2, true
+  elseif self:word(k, "you're youre") then
+    k, you = k + 1, true
+  end
+  if self:word(k, "still now currently presently") then k = k + 1 end
+  local state = false
+  if self:word(k, "maintaining") then
+    k, state = k + 1, true
+  elseif you and self:word(k, "level at on flying steady") and k < q.b then
+    k, state = k + 1, true
+  end
+  if not (state or (you and k == q.b)) then return false end
+  -- (the state's nouns before the value: "on heading", "level at", "maintaining a speed of")
+  while k < q.b and self:word(k, "at on a of the heading speed altitude level flight") do k = k + 1 end
+  if k ~= q.b then return false end
+  k = q.e
+  while k < e and (self.t[k].filler or self:word(k, "now please kindly sir")) do k = k + 1 end
+  return k == e
 end
 
 -- The end of the clause of the last instruction of intent `kind` ("hdg", "alt", ...) said before token a: the
@@ -8302,6 +8356,26 @@ function G:until_then_value(i)
   local p = before[#before]
   if not p or p.e ~= r.b - 1 then return nil end
   return self:value_again_kind(p, q)
+end
+
+-- True when the "then" at i opens a speed said with its unit (knots, Mach) and no verb, followed straight by a
+-- condition ("when", "once", "passing", "reaching", "on reaching"), and a speed instruction with its value stands
+-- before it in the request: "reduce Mach .74, then 280 knots when passing FL200". (Without the condition the
+-- second speed has no time of its own and stays asked.)
+function G:speed_then_conditioned(i)
+  local k = self:skip_fillers(i + 1)
+  local q = self:quantities(k, #self.t + 1)[1]
+  if not q or q.b ~= k or not (q.kind == "speed" or q.kind == "mach") then return false end
+  local c = self:skip_fillers(q.e)
+  if self:word(c, "on") and self:word(c + 1, "reaching") then c = c + 1 end
+  if not self:word(c, "when once passing reaching") then return false end
+  local p = i - 1
+  while p >= 1 and self:intent_at(p) ~= "spd" do p = p - 1 end
+  if p < 1 then return false end
+  for _, v in ipairs(self:quantities(p, i)) do
+    if v.kind == "speed" or v.kind == "mach" or v.kind == "plain" then return true end
+  end
+  return false
 end
 
 -- The kind ("spd" or "alt") of value q said bare after a place, when it closes its clause and value p before the
@@ -15625,6 +15699,20 @@ function G.one_new_aircraft(read, said, world, parsed)
   end
   return new or nil
 end
+-- True when an aircraft `read` names exactly (the common name read as its telephony) is named in `text`, as said,
+-- by a match that opens on an earlier token: the matcher took words before the name into the callsign ("info on
+-- Wizz 7101", "put Wizz 7101 at ...": "info on Wizz" heard as "Wizz Air"), which the reading gives back
+function G.common_swallowed(text, read, world)
+  local starts = {}
+  for _, r in ipairs(squawk.translate.utterance(text, world, NAMES):refs()) do
+    if r.kind == "aircraft" and r.exists then starts[r.name:upper()] = r.b end
+  end
+  for _, r in ipairs(squawk.translate.utterance(read, world, NAMES):refs()) do
+    local b = r.kind == "aircraft" and r.exists and not r.heard and starts[r.name:upper()]
+    if b and b < r.b then return true end
+  end
+  return false
+end
 -- "climb Qatar 846", "delete Malaysia 2608", "direct Hong Kong Airlines 612 to LIMES": a name an airline is known
 -- by that is no telephony (names.common; the callsign matcher knows telephony only) said before a flight number
 -- (digits, or a digit said), wherever it stands, is read as the airline's telephony (its ICAO designator where
@@ -15683,7 +15771,7 @@ function G.common_named(text, world, parsed)
       end
       parsed = parsed or {}
       said = said or exact_aircraft(text, world, parsed)
-      local keeps = G.one_new_aircraft(read, said, world, parsed) ~= nil
+      local keeps = G.one_new_aircraft(read, said, world, parsed) ~= nil or G.common_swallowed(text, read, world)
       for id in pairs(keeps and said or {}) do keeps = keeps and exact_aircraft(read, world, parsed)[id] end
       if keeps then return G.common_named(read, world, parsed) end
     end

@@ -1948,7 +1948,8 @@ end
 -- "Dreamliner", "King Air", "A320"): (test, e) with test(designator) true for the types it names and e the token
 -- after it, or nil. A family's number names each of its variants; a designator or variant names itself;
 -- a maker names its types; a nickname (types.nicknames) its patterns. A nickname said straight after a type
--- narrows it to the types of both ("the 737 MAX", "the Boeing 737 MAX"). `after_airline`: i follows an airline's
+-- narrows it to the types of both ("the 737 MAX", "the Boeing 737 MAX"); when none is both ("the B737 MAX": B737
+-- is the 737-700, no MAX) it names no aircraft, never the type alone. `after_airline`: i follows an airline's
 -- name, where a family's number said group-wise reads as after "the" ("the Delta seven fifty-seven").
 function m:type_said(i, after_airline)
   local test, e = self:type_named(i, after_airline)
@@ -1960,7 +1961,6 @@ function m:type_said(i, after_airline)
       for _, p in ipairs(nick) do if test(d) and d:match(p) then both[d] = true end end
     end
   end
-  if not next(both) then return test, e end
   return function(d) return both[d] == true end, e + 1
 end
 function m:type_named(i, after_airline)
@@ -3371,12 +3371,18 @@ function m:settle_callsigns()
     end
   end
   -- "KLM 1394 and 1349, both descend FL80": typed digits after a flying aircraft's callsign and "and" that are,
-  -- with its airline, another flying aircraft's callsign exactly name that aircraft too
+  -- with its airline, another flying aircraft's callsign exactly name that aircraft too; so do digits after a comma
+  -- that "both" follows ("Israir 318, 381, both climb FL170": two aircraft listed)
+  local function both_after(x)
+    local k = self.t[x + 1] and self.t[x + 1].text == "," and x + 2 or x + 1
+    return self:word(k, "both")
+  end
   for k = #self.refs, 1, -1 do
     local r = self.refs[k]
     local x = r.e + 1
     local t, nx = self.t[x], self.refs[k + 1]
-    local a = r.kind == "aircraft" and r.exists and self:word(r.e, "and") and t and t.kind == "number"
+    local listed = self:word(r.e, "and") or (self.t[r.e] and self.t[r.e].text == "," and both_after(x))
+    local a = r.kind == "aircraft" and r.exists and listed and t and t.kind == "number"
       and t.text:match("^%d+$") and not self.u:used(x) and not (nx and nx.b == x) and airline_digits(r.name)
     local id = a and a ~= "" and (a .. t.text):upper()
     if id and id ~= r.name:upper() and self:state(id) and not L.value_units[self.words[x + 1] or ""] then

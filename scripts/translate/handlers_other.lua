@@ -374,7 +374,21 @@ return function(H, f, compass)
     -- ("a Boeing 767", "a United 787"): a family flown in several common variants, said by its
     -- name alone, names no one variant (lexicon.variant_families); a variant said or written is that one (an Airbus
     -- family's digits only after "A" or "Airbus": "Saab 340" is no A340)
-    local said = #written == 0 and types[1] and self:raw(types[1].b, types[1].e):lower():gsub("[%s%-]", "")
+    -- ("B737 max", "Boeing 737 MAX"): a family's nickname (types.nicknames) said straight after the type, which the
+    -- type read does not match, narrows it: B737 is the 737-700, "B737 max" one of the MAXes; the type is the
+    -- nickname's, asked about below when several fit)
+    local narrowed = false
+    do
+      local t = types[1]
+      local w = t and self.t[t.e] and self.t[t.e].kind == "word" and self.t[t.e].text
+      local pats = w and require("translate.types").nicknames[w]
+      if pats and actype then
+        local fits = false
+        for _, p in ipairs(pats) do fits = fits or actype:upper():match(p) ~= nil end
+        if not fits then actype, narrowed = nil, true end
+      end
+    end
+    local said = not narrowed and #written == 0 and types[1] and self:raw(types[1].b, types[1].e):lower():gsub("[%s%-]", "")
     for _, fam in ipairs(said and L.variant_families or {}) do
       local pre = said:sub(1, -#fam - 1)
       if said:sub(-#fam) == fam and not pre:match("%d$")
@@ -2746,6 +2760,20 @@ return function(H, f, compass)
       return self:need(string.format("Which waypoint is '%s'? Please say its name for %s to fly direct to.", said, id))
     end
     if not wp then return self:need("Direct to which waypoint should " .. id .. " fly?") end
+    -- ("direct SPY then direct EHAM", "direct SPY, descend FL200, then proceed direct PAM"): a second direct-to
+    -- for the aircraft after "then" in the request would leave the first place out at once (the second DIRECT
+    -- runs straight after the first); the sequence meant, the route through both or the second now, is asked. A
+    -- direct-to waiting for a place or level ("then at SPY direct PAM") is the condition's.
+    local thn = self:find_word(1, s.trig, "@then_words")
+    if thn < s.trig and not self:word_in(thn, s.trig, "at after passing over reaching abeam once when overhead") then
+      for _, line in ipairs(self.out) do
+        local before = line:match("^DIRECT " .. id:gsub("%p", "%%%0") .. " (%S+)$")
+        if before and before:upper() ~= wp:upper() then
+          return self:need(string.format("Should %s fly direct %s and then on to %s (both in its route), or direct "
+            .. "%s now, leaving %s out?", id, before, wp, wp, before))
+        end
+      end
+    end
     -- DIRECT needs the waypoint in the route: a known aircraft whose route lacks it gets it added first
     if a then
       local in_route, has = false, {}

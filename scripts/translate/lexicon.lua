@@ -721,7 +721,7 @@ return {
            -- (after the level or the rate it qualifies, "dn fl300 pd", "dm 140 at 2000 fpm pd")
            { word = "pilot's discretion", prev = "#number fpm ft feet" } },
     -- (FAA typed shorthand: "rs 210" reduce speed; "exp ILS" expect; "hvy" heavy; "8 thsnd" eight thousand;
-    -- "adn" and)
+    -- "adn" and; "ADN" in capitals is the ident of a fix, ADN near Monterrey)
     rs = { word = "reduce speed", next = "#number to" },
     -- ("SAS902 x NAXEL @ FL200": "x" before a fix's ident is "cross")
     x = { { word = "cross", next = "#place" },
@@ -730,7 +730,7 @@ return {
     -- (and after a level or value closing its clause, "desc fl200 exp", expedite)
     exp = { { word = "expect", next = "ils rnav vis visual loc rwy runway approach app #number" },
             { word = "expedite", prev = "#number", next = "#end" } },
-    hvy = { word = "heavy" }, adn = { word = "and" },
+    hvy = { word = "heavy" }, adn = { word = "and", caps_kept = true },
     -- (chat's "n" for "and" between a value and the next instruction, "desc fl160 n spd 250", "spd 210 n hdg
     -- 090"; before a number it is a hemisphere, "52.3 n 4.7 e", and after a word no value, "ba 123 n", it stays)
     n = { word = "and", prev = "#number",

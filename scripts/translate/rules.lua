@@ -816,6 +816,32 @@ return function(intent, rule, words)
   rule { "speed", false, prev = { 1, "time" }, when = function(g, i)
     return g:word(i - 2, "real") and not g:has_ref(1, #g.t + 1, "aircraft")
   end }
+  -- "reduce the simulation speed to half", "set the sim speed to 0.5", "bring the speed of the simulation down to
+  -- a quarter": the sim's speed (its noun, "speed of the simulation" too) set "to" a rate said as a multiplier
+  -- word, a fraction or a bare number that closes its clause is the clock's rate, whatever the verb ("by half",
+  -- a change from a rate squawk does not know, stays asked)
+  rule { "speed", "dtmult", when = function(g, i)
+    local k
+    if g:word(i - 1, "@sim") then
+      k = i + 1
+    elseif g:word(i + 1, "of") then
+      k = g:word(i + 2, "the") and i + 3 or i + 2
+      if not g:word(k, "@sim") then return false end
+      k = k + 1
+    else
+      return false
+    end
+    if g:word(k, "down back up") then k = k + 1 end
+    if not g:word(k, "to") then return false end
+    k = k + 1
+    local q = g:quantities(k, #g.t + 1)[1]
+    local e = g:word(k, "@multipliers") and k + 1 or g:fraction_said(k)
+      or (q and q.b == k and (q.kind == "plain" or q.kind == "mult") and q.e)
+    if not e then return false end
+    if g:word(e, "speed times x") then e = e + 1 end
+    while g:word(e, "please kindly only") or (g.t[e] and g.t[e].filler) do e = e + 1 end
+    return g.t[e] == nil or g.t[e].kind == "punct"
+  end }
   rule { "speed spd airspeed", "ff", near = { 3, "@sim" } }
   rule { "speed spd airspeed", "ff", next = "up", prev = { 3, "simulation sim" } }
   rule { "speed spd airspeed", "ff", prev = { 1, "simulation sim" } }
@@ -966,6 +992,10 @@ return function(intent, rule, words)
   -- (G:until_then_value)
   rule { "then @until_then_words", "spd", when = function(g, i) return g:until_then_value(i) == "spd" end }
   rule { "then @until_then_words", "alt", when = function(g, i) return g:until_then_value(i) == "alt" end }
+  -- "reduce Mach .74, then 280 knots when passing FL200": a speed with its unit said bare after "then" and before a
+  -- condition, a speed instruction with its value before it, is that instruction again, waiting for the condition
+  -- (G:speed_then_conditioned)
+  rule { "then", "spd", when = function(g, i) return g:speed_then_conditioned(i) end }
   -- "reduce speed 250, after SUMAG 220": the same, after a place (G:after_place_value)
   rule { "after", "spd", when = function(g, i) return g:after_place_value(i) == "spd" end }
   rule { "after", "alt", when = function(g, i) return g:after_place_value(i) == "alt" end }
@@ -2845,6 +2875,9 @@ return function(intent, rule, words)
   -- do what the verb after "to" says (no question to the pilot: "be" after "you" frames a request)
   rule { "able", false, prev = { 1, "be" }, next = "to", when = function(g, i) return g:word(i - 2, "you") end }
   rule { "able", "pos", prev = { 2, "you" } }
+  -- "confirm you are maintaining FL120", "confirm maintaining 270 knots": the aircraft asked to confirm a state it
+  -- holds (G:state_confirmed, its clause set aside by G:question_back) asks for its report
+  rule { "confirm", "pos", when = function(g, i) return g.state_asked ~= nil and g.state_asked[i] == true end }
   rule { "confirm", "pos", near = { 3, "heading altitude level speed mach" } }
   -- "verify AC002 state (alt, spd, hdg)", "verify its altitude": the aircraft's values asked for
   rule { "verify", "pos", near = { 3, "state heading altitude level speed mach alt spd hdg fl position" } }

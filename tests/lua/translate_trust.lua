@@ -20163,3 +20163,106 @@ do
   asked(ex("create Wizz 31 A320 at 47 19 heading 360 FL340 280"), "a callsign already flying")
   check_eq(ex("Wizz 31 climb FL320"), "ALT WZZ31 FL320")
 end
+
+-- Cycle 63 (f218): Indian area and approach controllers (R218). The aircraft asked to confirm a state it holds,
+-- with its value, asks for its report; the simulation's speed set "to" a rate; "B737 MAX" is no B737.
+do
+  local _, ex = scene({ "CRE AIC88 A320 20 73 180 FL190 290", "CRE IGO512 A20N 19 74 090 FL140 270",
+    "CRE AXB7 B38M 19.5 73.5 200 FL110 260", "CRE SEJ41 B737 18.5 73.0 020 9000 250" })
+  -- a state confirmed, its value with it: POS, whatever its form
+  check_eq(ex("Air India 88 confirm you are maintaining flight level one niner zero"), "POS AIC88")
+  check_eq(ex("IFLY 512, kindly confirm you're still maintaining FL140?"), "POS IGO512")
+  check_eq(ex("AIC88 confirm maintaining two niner zero knots"), "POS AIC88")
+  check_eq(ex("IGO512 confirm that you are level at flight level one four zero please"), "POS IGO512")
+  check_eq(ex("Air India 88 confirm you are on heading one eight zero"), "POS AIC88")
+  check_eq(ex("IGO512 confirm you are FL140"), "POS IGO512")
+  -- a clearance asked about, a base form, two values, a motion with its level: still asked
+  asked(ex("AIC88 confirm heading 180"), "a heading asked about with no state said")
+  asked(ex("AIC88 confirm cleared FL200?"), "a clearance asked about")
+  asked(ex("AIC88 confirm maintain FL190"), "the base form, an instruction asked about")
+  asked(ex("AIC88 confirm you are descending FL150"), "a motion with its level, a clearance asked about")
+  asked(ex("AIC88 confirm you are maintaining FL190 and heading 180"), "two values")
+  asked(ex("AIC88 confirm maintaining FL190, descend FL150"), "a question and an instruction in one clause")
+  check_eq(ex("AIC88 confirm maintaining FL190? Descend and maintain FL150"), "ALT AIC88 FL150")
+  -- the simulation's speed set to a rate
+  check_eq(ex("kindly reduce the simulation speed to half"), "DTMULT 0.5")
+  check_eq(ex("set the sim speed to 0.5 please"), "DTMULT 0.5")
+  check_eq(ex("bring the speed of the simulation down to a quarter"), "DTMULT 0.25")
+  check_eq(ex("increase simulation speed to double"), "DTMULT 2")
+  asked(ex("reduce the simulation speed by half"), "a change from a rate squawk does not know")
+  asked(ex("reduce the simulation speed"), "no rate said")
+  asked(ex("IGO512 reduce speed to half"), "an aircraft's speed halved")
+  -- "B737 max": one of the MAXes, never the B737 (737-700)
+  asked(ex("create Akasa 1350 B737 max at 19 N 73 E, heading 180, 9000 feet, 230 knots"), "which MAX")
+  asked(ex("create AKJ1351 Boeing 737 Max at 19 N 73 E heading 180 FL100 250"), "which MAX")
+  check_eq(ex("create AKJ1352 B737 MAX 8 at 19 N 73 E heading 180 FL100 250"), "CRE AKJ1352 B38M 19 73 180 FL100 250")
+  asked(ex("the B737 max descend FL100"), "no aircraft is a B737 and a MAX")
+  check_eq(ex("the 737 max descend FL100"), "ALT AXB7 FL100")
+end
+
+-- Cycle 63 (f218): a common name (names.common, "Wizz") after a word the callsign matcher took into it ("info on
+-- Wizz 7101": "info on Wizz" heard as "Wizz Air") is read as the airline's telephony, the word given back.
+do
+  local _, ex = scene({ "CRE WZZ7101 A21N 32.3 34.6 300 FL170 290", "CRE ELY81 B789 32.1 34.7 290 FL150 290" })
+  check_eq(ex("info on Wizz 7101"), "POS WZZ7101")
+  check_eq(ex("pos Wizz 7101 please"), "POS WZZ7101")
+  check_eq(ex("status of Wizz 7101"), "POS WZZ7101")
+  check_eq(ex("put Wizz 7101 at 32.5 34.3, flight level one eight zero"), "MOVE WZZ7101 32.5 34.3 FL180")
+  check_eq(ex("info on Wizz 7101 and El Al 81"), "POS WZZ7101 ; POS ELY81")
+  asked(ex("info on Wizz 7102"), "no such aircraft")
+end
+
+-- Cycle 63 (f218): a flight number after a comma that "both" follows names, with the airline of the callsign
+-- before it, the other aircraft listed ("Israir 318, 381, both climb"); without "both" it stays asked.
+do
+  local _, ex = scene({ "CRE ISR318 A320 32.7 35.0 270 FL110 260", "CRE ISR381 A320 32.4 35.2 090 FL150 270" })
+  check_eq(ex("Israir 318, 381, both descend flight level one zero zero"), "ALT ISR318 FL100 ; ALT ISR381 FL100")
+  check_eq(ex("ISR381, 318 both turn left heading 200"), "HDG ISR381 200 LEFT ; HDG ISR318 200 LEFT")
+  asked(ex("Israir 318, 381, descend FL100"), "digits after a comma with no 'both': an aircraft or a value")
+  asked(ex("Israir 318, 383, both descend FL100"), "no aircraft ISR383")
+end
+
+-- Cycle 63 (f218): a speed with its unit after "then" and before a condition, a speed instruction before it, is a
+-- second speed instruction waiting for the condition ("reduce Mach .74, then 280 knots when passing FL200").
+do
+  local _, ex = scene({ "CRE AAL29 A321 27 -99 200 FL230 300" })
+  check_eq(ex("American 29 reduce Mach point seven four, then two eight zero knots when passing FL200"),
+    "SPD AAL29 M0.74 ; ATALT AAL29 FL200 SPD AAL29 280")
+  check_eq(ex("AAL29 reduce speed 290, then 260 kt once passing FL210"), "SPD AAL29 290 ; ATALT AAL29 FL210 SPD AAL29 260")
+  asked(ex("AAL29 reduce Mach .74, then 280 knots"), "a second speed with no time of its own")
+  asked(ex("AAL29 reduce speed 290, then 260 when passing FL210"), "a bare number with no unit")
+end
+
+-- Cycle 63 (f218): "ADN" typed in capitals is a fix's ident (ADN near Monterrey), no typed "and"; "adn" in lower
+-- case stays "and".
+do
+  local _, ex = navscene({ "CRE TAO2410 AT72 25.6 -100.8 060 10000 210", "ADDWPT TAO2410 MTY" }, "ADN's ident")
+  if ex then
+    check_eq(ex("TAO2410 add ADN after MTY"), "ADDWPT TAO2410 ADN,,,MTY")
+    check_eq(ex("TAO2410 climb 12000 adn speed 230"), "ALT TAO2410 12000 ; SPD TAO2410 230")
+  end
+end
+
+-- Cycle 63 (f218): after a correction's mark and its comma ("no,", "negative,", Hebrew "lo,"), "not" and a value
+-- closed by a comma rule that value out (a readback corrected): dropped, the instruction after it stands.
+do
+  local _, ex = scene({ "CRE ELY81 B789 32.1 34.7 290 FL150 290" })
+  check_eq(ex("El Al 81 lo, not two six zero, speed two eight zero"), "SPD ELY81 280")
+  check_eq(ex("ELY81 negative, not 260, speed 270"), "SPD ELY81 270")
+  check_eq(ex("ELY81 no, not FL160, FL170"), "ALT ELY81 FL170")
+  check_eq(ex("ELY81 negative, not speed 260, heading 260"), "HDG ELY81 260")
+  asked(ex("ELY81 negative, not 260"), "nothing after the value ruled out")
+  asked(ex("ELY81 climb FL170, no, not FL170, speed 270"), "a correction of another kind")
+end
+
+-- Cycle 63 (f218, a hazard): a second direct-to for one aircraft after "then" ran straight after the first,
+-- leaving the first place out; the sequence meant is asked. A direct-to waiting at the first place stays read.
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 90 FL250 280", "DEFWPT AAA01 52.2 4.5", "DEFWPT BBB02 52.4 5.0",
+    "ADDWPT KLM12 AAA01", "CRE DLH4 A321 52 5 270 FL250 280" })
+  asked(ex("KLM12 direct AAA01 then direct BBB02"), "a second direct-to after 'then'")
+  asked(ex("KLM12 proceed direct AAA01, descend FL200, and then proceed direct BBB02"), "the second after another")
+  check_eq(ex("KLM12 direct AAA01 then at AAA01 direct BBB02"), "DIRECT KLM12 AAA01 ; ADDWPT KLM12 BBB02,,,AAA01")
+  check_eq(ex("KLM12 direct AAA01, then DLH4 direct BBB02"),
+    "DIRECT KLM12 AAA01 ; ADDWPT DLH4 BBB02 ; DIRECT DLH4 BBB02")
+end
