@@ -956,6 +956,9 @@ return function(intent, rule, words)
     return k < e and (not g:word(k, "direction") or g:word(k + 1, "of")) and not g:intent_at(k)
   end
   rule { "fly flies turn head steer", "hdg", when = toward_place }
+  -- ("fly a heading directly towards the ZUE VOR": "directly" the manner of a heading said toward a place, no
+  -- direct-to of its own)
+  rule { "directly", false, next = "towards toward", prev = { 2, "heading" } }
   -- "point JST501 to 200 degrees", "point it onto 090 degrees": an aircraft pointed at a number of degrees
   rule { "point", "hdg", when = function(g, i)
     local r = g:refs_in(i + 1, math.min(#g.t + 1, i + 2), "aircraft")[1]

@@ -20147,3 +20147,13 @@ do
   check_eq(ex("SWR9 direct EXPC as its destination, and descend to 3000 ft"), "DEST SWR9 EXPC ; ALT SWR9 3000")
   check_eq(ex("SWR9 direct EXPC"), "ADDWPT SWR9 EXPC ; DIRECT SWR9 EXPC")
 end
+
+-- Cycle 63 (f219): "fly a heading directly towards X" is the heading toward it, no direct-to.
+do
+  local _, ex = navscene({ "CRE DLH11 A20N 47.75 8.70 200 FL100 250" }, "a heading toward a navaid")
+  if ex then
+    check_eq(ex("DLH11, fly a heading directly towards the ZUE VOR, please"), "HDG DLH11 ZUE")
+    check_eq(ex("DLH11 take up a heading directly toward ZUE"), "HDG DLH11 ZUE")
+    check_eq(ex("DLH11 proceed directly to ZUE"), "ADDWPT DLH11 ZUE ; DIRECT DLH11 ZUE")
+  end
+end
