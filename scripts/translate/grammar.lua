@@ -12172,6 +12172,22 @@ function G:unaccounted()
       self.leftover = self:raw(i, e)
       return
     end
+    -- ("cross ML at FL100", "put X over ML at 6000" with no ML near the traffic): a word of two capitals, a navaid's
+    -- ident as typed, that no ref or value holds, straight after a place's slot (fillers between), is asked, never
+    -- dropped with the place its instruction anchors (m:two_letter_place_refs reads the ones near the traffic)
+    local x = self.t[i]
+    local p, held = i - 1, false
+    while p > 0 and self.t[p].filler do p = p - 1 end
+    local nx = self.t[i + 1]
+    local two = x.kind == "word" and x.raw:match("^%u%u$") and not handlers.two_letter_reserved[x.raw]
+      and not (nx and (nx.kind == "number" or nx.number_word))
+    for _, r in ipairs(two and self.refs or {}) do held = held or (r.b <= i and i < r.e) end
+    for _, q in ipairs(two and self:quantities(math.max(1, i - 3), i + 1) or {}) do held = held or q.e > i end
+    if two and not explained[i] and not self.noted[i] and not self.u:used(i) and not held
+        and self:word(p, "at after over via cross crossing abeam overhead direct dct from before passing reaching") then
+      self.leftover = x.raw
+      return
+    end
   end
   -- ("KLM12 no need to climb to FL240", "no need for the descent"): what is not needed is no instruction; "no
   -- need" is asked wherever it stands outside a reason (G:said's guard before the scans for "no")
@@ -17457,6 +17473,7 @@ function M.translate(text, world)
   g:role_refs()
   g:false_starts()
   g:fix_refs()
+  g:two_letter_place_refs()
   g:navaid_name_refs()
   g:named_place_refs()
   g:passed_place_refs()
@@ -17704,6 +17721,9 @@ function M.translate(text, world)
   if #g.out == 0 and note then return { commands = {}, note = note } end
   if #g.out == 0 then return { commands = {}, ask = UNDERSTOOD } end
   g:added_after_route_end()
+  g:skipped_place_waited()
+  if g.ask then return { commands = {}, ask = g.ask } end
+  g:clearance_before_wait()
   -- a command said twice in one request ("send the KLM direct to SPY ... add SPY and then go direct to it")
   -- is one clearance; a clock's command (HOLD, OP, FF, DTMULT) said again after another clock command changed the
   -- run ("pause; ...; fast-forward 8 minutes; pause again") is a second one, in its order
@@ -17717,6 +17737,41 @@ function M.translate(text, world)
   end
   if g.kept_note then note = note and note .. " " .. g.kept_note or g.kept_note end
   return { commands = out, note = note, confirm_first = g.confirm_first }
+end
+-- "SWR18 direct KLO, and once past RILAX reduce to 220 knots" (RILAX before KLO on its route): an instruction that
+-- waits for a waypoint (AT id WP ...) which a direct-to of the same request leaves out (a waypoint of the route
+-- before the one flown to; every one of the route for a place off it) would never run: asked, never sent.
+function G:skipped_place_waited()
+  for _, line in ipairs(self.out) do
+    local id, to = line:match("^DIRECT (%S+) (%S+)$")
+    local a = id and self:state(id)
+    local skipped, on = {}, false
+    for _, w in ipairs(a and a.route or {}) do
+      if w:upper() == to:upper() then on = true break end
+      skipped[w:upper()] = true
+    end
+    for _, other in ipairs(a and self.out or {}) do
+      local who, wp = other:match("^AT (%S+) (%S+) ")
+      if who == id and wp and skipped[wp:upper()] and wp:upper() ~= to:upper() then
+        return self:need(string.format("I have %s. The direct-to %s leaves %s out of %s's route, so '%s' would "
+          .. "never run. Should it wait for another place, or run now?", table.concat(self.out, " ; "), to, wp, id,
+          other))
+      end
+    end
+  end
+end
+-- "turn right heading 180 when he is at FL150. Descend him first to 150": the level clearance an ATALT of the same
+-- aircraft waits for, said after it, is sent before it (the order the corpora give; the two run at once either way)
+function G:clearance_before_wait()
+  for c = 1, #self.out do
+    local id, level = self.out[c]:match("^ATALT (%S+) (%S+) ")
+    for d = c + 1, id and #self.out or 0 do
+      if self.out[d] == "ALT " .. id .. " " .. level then
+        table.insert(self.out, c, table.remove(self.out, d))
+        return
+      end
+    end
+  end
 end
 -- A request asked about is read again with its typing slips (translate/typos.lua) read as the words they may be.
 M.read_typed, M.typos = M.translate, require("translate.typos")

@@ -1773,6 +1773,65 @@ function m:fix_refs()
   end
 end
 
+-- "put QFA12 over ML at 6000", "create ... at BN heading 010", "direct SY", "over the CB VOR": a word of two
+-- capitals (a navaid's ident: the Australian VORs ML, SY, BN, CB) in a line with lower-case letters, in a place's
+-- slot (TWO_LETTER_SLOTS, "the" between at most) or before a kind of navaid, no number after it, that no ref holds
+-- and no airline or reserved word is, is the navaid of that ident when, with aircraft flying, the one of that ident
+-- nearest each of them that lies within lexicon.navaid_range_nm of it is one station (lexicon.navaid_station_nm) for
+-- all: a waypoint ref (the callsign matcher reads three capitals or more only). Any other such word is left as it
+-- was (G:unaccounted asks about it).
+local TWO_LETTER_SLOTS = {
+  over = true, at = true, to = true, direct = true, dct = true, via = true, after = true, before = true, from = true,
+  cross = true, crossing = true, passing = true, abeam = true, overhead = true, past = true, ["until"] = true,
+  till = true, reaching = true, towards = true, toward = true, add = true, ["then"] = true, of = true, by = true }
+local TWO_LETTER_RESERVED = { FL = true, NM = true, VS = true, PZ = true, ON = true, OK = true, NO = true, UP = true,
+  IN = true, AT = true, TO = true, OF = true, BY = true, OR = true, IF = true, IT = true, IS = true, GO = true,
+  DO = true, SO = true, ME = true, MY = true, WE = true, US = true, HI = true, KT = true, FT = true, KM = true,
+  AM = true, PM = true, CD = true, CR = true, LT = true, RT = true }
+H.two_letter_reserved = TWO_LETTER_RESERVED
+function m:two_letter_place_refs()
+  local locate, lower = self.world.locate, false
+  for _, t in ipairs(self.t) do lower = lower or (t.kind == "word" and t.raw:find("%l") ~= nil) end
+  if not locate or not lower then return end
+  local near = {}
+  for _, a in ipairs(self.fleet) do
+    if a.lat then near[#near + 1] = a end
+  end
+  if #near == 0 then return end
+  local function nm(lat1, lon1, lat2, lon2)
+    local dlat, dlon = lat1 - lat2, (lon1 - lon2) * math.cos(math.rad(lat2))
+    return 60 * math.sqrt(dlat * dlat + dlon * dlon)
+  end
+  for i = 1, #self.t do
+    local t, nx = self.t[i], self.t[i + 1]
+    local k = self:word(i - 1, "the") and i - 2 or i - 1
+    local slot = (self.t[k] and self.t[k].kind == "word" and TWO_LETTER_SLOTS[self.t[k].text])
+      or self:word(i + 1, "@navaid_kinds")
+    if t.kind == "word" and t.raw:match("^%u%u$") and not TWO_LETTER_RESERVED[t.raw] and slot
+        and not (nx and (nx.kind == "number" or nx.number_word)) and not self:airline_at(i) then
+      local held = false
+      for _, r in ipairs(self.refs) do held = held or (r.b <= i and i < r.e) end
+      slot = not held
+      local at
+      for _, a in ipairs(slot and near or {}) do
+        local lat, lon = locate(t.raw, nil, a.lat, a.lon)
+        if lat and nm(lat, lon, a.lat, a.lon) <= L.navaid_range_nm then
+          if at and nm(lat, lon, at[1], at[2]) > L.navaid_station_nm then
+            at = false
+            break
+          end
+          at = at or { lat, lon }
+        end
+      end
+      if at then
+        local n = 1
+        while self.refs[n] and self.refs[n].b < i do n = n + 1 end
+        table.insert(self.refs, n, { kind = "waypoint", name = t.raw, b = i, e = i + 1, exists = false })
+      end
+    end
+  end
+end
+
 -- "at 10 miles from LIMA", "position of the LIMA VOR", "direct TEBBY": a navaid said by its navdata name in
 -- capitals. A one-word waypoint ref that no route or DEFWPT holds, whose ident the navdata holds nowhere
 -- within lexicon.navaid_range_nm of an aircraft flying (LIMA is an airfield in Italy), and that names
@@ -2460,6 +2519,10 @@ function m:described_refs()
         if self:word(i + 2, "both") then count = 2 end
       elseif not self.t[i].text:match("er$") then
         ids, e, count = compared_group(self, i + 1)
+      else
+        -- ("the higher Loganair", "the slower 737": a comparative straight before a group of exactly two flying)
+        local two, te, tc = compared_group(self, i + 1)
+        if two and #two == 2 and not tc then ids, e = two, te end
       end
       -- ("of the two A320s, ... the lower one": the group said before; "the lowest, climb ...": every aircraft)
       local o_ids, o_count
@@ -2958,8 +3021,11 @@ local function side_said(self, k)
   -- ("out west", "up north", "down in the south" is below): a compass point straight after words of `leaning`,
   -- the side of the map that way
   if deg and x > k then return { dir = { math.sin(math.rad(deg)), math.cos(math.rad(deg)) } }, pe end
-  if not (near or screen(self, x, "at")) then return nil end
-  x = near or x + 1
+  -- ("the one up the top", "the one down the bottom", "over the left": a word of `leaning` straight before "the" is
+  -- the side's preposition, as "at")
+  local up = x > k and self:word(x - 1, "up down over") and self:word(x, "the") and x
+  if not (near or up or screen(self, x, "at")) then return nil end
+  x = near or up or x + 1
   if not self:word(x, "the") then return nil end
   x = x + 1
   while self:word(x, "very far") do x = x + 1 end
@@ -3008,6 +3074,11 @@ local function description_part(self, b)
     if self:word(x, "furthest farthest most") then
       local spec, se = side_said(self, x)
       if spec then part.sides[1], x = { spec = spec, b = x, e = se }, se end
+    end
+    -- ("the low one at the top", "the fast one on the right": a plain word of lexicon.compared_plain before "one" or an
+    -- aircraft noun, read with the side: position_refs)
+    if self.t[x] and self.t[x].kind == "word" and L.compared_plain[self.t[x].text] and self:word(x + 1, "one @aircraft_nouns") then
+      part.plain, x = L.compared_plain[self.t[x].text], x + 1
     end
     local ids, e, count = compared_group(self, x)
     if not ids or count then return nil end  -- ("the two Boeings" are no one aircraft)
@@ -3153,7 +3224,10 @@ end
 function m:position_refs()
   if not self:said("the") then return end
   local said = self:said("@compass @compass_verbs @compass_from_verbs @compared_measures furthest farthest most")
-  for k = 1, #self.t do said = said or screen(self, k, "at") or screen(self, k, "near") or screen(self, k, "near_to") end
+  for k = 1, #self.t do
+    said = said or screen(self, k, "at") or screen(self, k, "near") or screen(self, k, "near_to")
+      or (self:word(k, "up down over") and self:word(k + 1, "the"))
+  end
   if not said then return end
   self.positioned = self.positioned or {}
   local i = 1
@@ -3187,7 +3261,9 @@ function m:position_refs()
       end
       local picked, named = nil, ids
       if sides == 0 then picked = #ids == 1 and ids[1] or false end
+      local plain
       for _, p in ipairs(parts) do
+        plain = plain or p.plain
         for _, side in ipairs(p.sides) do
           if side.spec.point and not side.spec.of then
             self:need(string.format("Which airport do you mean by '%s'? The traffic's destinations name no one "
@@ -3196,6 +3272,30 @@ function m:position_refs()
           local id, ties = side_pick(self, ids, side.spec)
           if not id or (picked and picked ~= id) then picked, named = false, #ties > 0 and ties or ids end
           if picked == nil then picked = id end
+        end
+      end
+      -- (a plain word with the side: among the aircraft the side could not tell apart, the one leading the others on
+      -- its measure by lexicon.compared_plain_margin; one the side picks must lead every aircraft of the group on it,
+      -- within lexicon.compared_margin, else it is asked)
+      if plain and sides > 0 then
+        local field, sign, value = plain[1], plain[2], {}
+        for _, a in ipairs(self.fleet) do value[a.id] = a[field] and sign * a[field] end
+        if picked then
+          for _, id in ipairs(ids) do
+            if not value[id] or not value[picked] or value[id] - value[picked] > L.compared_margin[field] then
+              picked, named = false, ids
+              break
+            end
+          end
+        elseif picked == false and #named > 1 then
+          local best, second
+          for _, id in ipairs(named) do
+            local v = value[id]
+            if not v then best, second = nil, nil break end
+            if not best or v > value[best] then best, second = id, best
+            elseif not second or v > value[second] then second = id end
+          end
+          if best and second and value[best] - value[second] >= L.compared_plain_margin[field] then picked = best end
         end
       end
       local b, unresolved = parts[1].b, self.type_unresolved or {}
@@ -4300,7 +4400,8 @@ function m:at_altitude(s)
   -- alone after a level passed, left, reached or levelled at are a flight level; so is a level said group-wise,
   -- "passing one hundred", for an aircraft flying where a climb to it would be read so, at or above
   -- lexicon.groupwise_from_ft)
-  local passed = q.kind == "plain" and (self:word(a, "passing leaving reaching level") or left)
+  -- ("once it's through 100": a level passed through, as "passing")
+  local passed = q.kind == "plain" and (self:word(a, "passing leaving reaching level through") or left)
   local fl_digits = passed and #q.number.digits == 3 and q.value >= 100 and q.value <= 600 and not q.number.thousand
     and not q.number.hundred
   local groupwise = passed and self:groupwise_level(q)

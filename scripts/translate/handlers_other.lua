@@ -2435,8 +2435,14 @@ return function(H, f, compass)
         * math.cos(math.rad(lat)) <= L.on_airport_nm
     end
     if not phrase then
+      -- (the VOR and NDB of one station, within lexicon.navaid_station_nm, are one place: BN)
       local a = self.fleet[1]
-      if not a or close(w.locate(ident, nil, a.lat, a.lon)) then return ident end
+      local alat, alon
+      if a then alat, alon = w.locate(ident, nil, a.lat, a.lon) end
+      if not a or (alat and math.abs(alat - lat) * 60 + math.abs((alon - lon + 180) % 360 - 180) * 60
+          * math.cos(math.rad(lat)) <= L.navaid_station_nm) then
+        return ident
+      end
       return self:need(string.format("Which %s is meant? The simulator would take the one at %s %s, not the one "
         .. "nearest %s. Please give its position.", ident:upper(), f.num(lat), f.num(lon), a.id))
     end
@@ -3679,7 +3685,8 @@ return function(H, f, compass)
           local n, a = self.t[j], j + 1
           if self.t[a] and self.t[a].text == "," then a = a + 1 end
           local placed = self:word(a, "at") or (self:quantities(a, a + 1)[1] or {}).b == a
-          if n and n.kind == "word" and n.raw:match("^%u[%u%d]+$") and not n.keyword
+          -- (an English word in capitals straight before "at" or the position is the name too: "define FINAL at ...")
+          if n and n.kind == "word" and n.raw:match("^%u[%u%d]+$") and (not n.keyword or placed)
               and (placed or not (set_off or self:word(k, "point"))) then
             name = n.raw
             break

@@ -674,7 +674,9 @@ return {
   -- word of two to five letters in any case (a fix's ident typed in lower case). Elsewhere it stays as typed ("direct
   -- TRN" is Turnberry, "trail red" a colour, "Red Cap" an airline).
   typed_abbreviations = {
-    expd = { word = "expedite" }, expdt = { word = "expedite" }, til = { word = "until", not_prev = "legg" },
+    -- (in capitals an ident, "define a point EXPD at ...")
+    expd = { word = "expedite", caps_kept = true }, expdt = { word = "expedite", caps_kept = true },
+    til = { word = "until", not_prev = "legg" },
     maint = { word = "maintain", next = "#number fl flight speed spd heading hdg altitude alt level present own" },
     mnt = { word = "maintain", next = "#number fl flight speed spd heading hdg altitude alt level present own" },
     -- (the vowels left out of a level change: "dsnd 5000", "clmb fl240")
@@ -891,8 +893,9 @@ return {
   -- ("when passing FL90 fly heading 090", "after passing FL100 resume own navigation direct HEMEL", "when at
   -- 12000 set speed 240", "once you're at 250 start down to FL100": a verb of starting before a level change's
   -- "down" or "descending")
+  -- ("track direct", Australian; "go direct", "head direct": a direct-to's verbs)
   condition_lead = { "fly", "turn", "proceed", "route", "resume", "own", "navigation", "then", "set", "start",
-                     "begin" },
+                     "begin", "track", "go", "head" },
   -- before the level an aircraft leaves, said with the one it is cleared to ("leaving FL260 for FL200")
   level_left = { "leaving", "passing", "vacating" },
   -- the listener's convenience after "when you", "once you" ("when you get a sec", "once you have a moment",
@@ -1323,8 +1326,9 @@ return {
   compared_measures = { highest = { "alt_ft", 1 }, higher = { "alt_ft", 1 }, lowest = { "alt_ft", -1 },
     lower = { "alt_ft", -1 }, fastest = { "cas_kt", 1 }, faster = { "cas_kt", 1 }, quickest = { "cas_kt", 1 },
     quicker = { "cas_kt", 1 }, slowest = { "cas_kt", -1 }, slower = { "cas_kt", -1 },
-    -- (where it is: "the easternmost aircraft", "the northernmost one")
-    northernmost = { "lat", 1 }, southernmost = { "lat", -1 }, easternmost = { "lon", 1 }, westernmost = { "lon", -1 } },
+    -- (where it is: "the easternmost aircraft", "the northernmost one"; the shorter forms, "the eastmost one")
+    northernmost = { "lat", 1 }, southernmost = { "lat", -1 }, easternmost = { "lon", 1 }, westernmost = { "lon", -1 },
+    northmost = { "lat", 1 }, southmost = { "lat", -1 }, eastmost = { "lon", 1 }, westmost = { "lon", -1 } },
   -- (lat, lon: degrees, about a mile)
   compared_margin = { alt_ft = 100, cas_kt = 5, lat = 0.02, lon = 0.02 },
   -- the plain words that describe one aircraft by its state before "one" or an aircraft noun ("the slow one", "the

@@ -854,9 +854,13 @@ return function(intent, rule, words)
   rule { "multiplier", "dtmult" }
   rule { "compression acceleration", "dtmult", prev = { 1, "time" } }  -- "4x time compression", "time acceleration 8"
   rule { "fast", "ff", next = "time" }  -- "run in fast time": fast time with no end is FF
-  -- "run the simulation fast for 30 seconds" (not "run it and fast forward 3 minutes": an instruction of its own)
+  -- "run the simulation fast for 30 seconds" (not "run it and fast forward 3 minutes", "let it run. Fast forward 5
+  -- minutes": an instruction of its own)
   rule { "fast", false, prev = { 4, "run advance" },
-         when = function(g, i) return not (g:word(i - 1, "and") and g:word(i + 1, "forward")) end }
+         when = function(g, i)
+           local apart = g:word(i - 1, "and") or (g.t[i - 1] ~= nil and g.t[i - 1].kind == "punct")
+           return not (apart and g:word(i + 1, "forward"))
+         end }
   rule { "fast faster slower", "dtmult", prev = { 4, "@sim" }, not_near = { 1, "forward" } }  -- ("fast-forward": FF)
   rule { "faster slower", false, prev = { 2, "times x" } }
   -- "run faster please, 5 times", "run slower": the clock's rate, "run" straight before the comparative, with no
@@ -978,6 +982,9 @@ return function(intent, rule, words)
     return k < e and (not g:word(k, "direction") or g:word(k + 1, "of")) and not g:intent_at(k)
   end
   rule { "fly flies turn head steer", "hdg", when = toward_place }
+  -- ("fly a heading directly towards the ZUE VOR": "directly" the manner of a heading said toward a place, no
+  -- direct-to of its own)
+  rule { "directly", false, next = "towards toward", prev = { 2, "heading" } }
   -- "point JST501 to 200 degrees", "point it onto 090 degrees": an aircraft pointed at a number of degrees
   rule { "point", "hdg", when = function(g, i)
     local r = g:refs_in(i + 1, math.min(#g.t + 1, i + 2), "aircraft")[1]
@@ -1407,6 +1414,22 @@ return function(intent, rule, words)
     return #(a.route or {}) == 0
   end
   rule { "direct dct", false, when = route_list_direct }
+  -- ("direct St. Gallen airport as destination", "direct LSZH as its destination", one aircraft named before it, of no
+  -- route: the place set as the destination (DEST, which flies there itself when the route is empty), no direct-to
+  -- of its own; five words at most between)
+  rule { "direct dct", false, when = function(g, i)
+    for k = i + 2, math.min(#g.t, i + 6) do
+      if g.t[k].kind == "punct" and g.t[k].text ~= "." then return false end
+      if g:word(k, "as") then
+        local d = g:word(k + 1, "its the") and k + 2 or k + 1
+        if not g:word(d, "destination") then return false end
+        local refs = g:refs_in(1, i, "aircraft")
+        local a = #refs == 1 and refs[1].exists and g:state(refs[1].name)
+        return a and #(a.route or {}) == 0 or false
+      end
+    end
+    return false
+  end }
   -- "EZY45 route: SPY, BERGI", "route for UAL9: BEDUM, EEL, then ARTIP": a route written as a list
   rule { "route rte", "addwpt", when = function(g, i)
     local k = i + 1

@@ -132,6 +132,10 @@ local function pattern_names(d)
   if c then out[#out + 1] = { "pilatus", "pc-" .. c } end
   c = d:match("^SF(%d%d)$")
   if c then out[#out + 1] = { "saab", c .. "0" } end
+  if d == "SB20" then out[#out + 1] = { "saab", "2000" } end
+  -- (Sikorsky's helicopters by their model, "S-92", "S-76")
+  c = d:match("^S(%d%d)$")
+  if c then out[#out + 1] = { "sikorsky", "s-" .. c }; out[#out + 1] = { "sikorsky", "s" .. c } end
   c = d:match("^F(%d+)$")  -- (Fokker's airliners: F28, F50, F70, F100; never a fighter's F16)
   if c == "28" or c == "50" or c == "70" or c == "100" then out[#out + 1] = { "fokker", c } end
   if d == "B350" then out[#out + 1] = { "beechcraft", "king air 350" } end
@@ -167,6 +171,8 @@ M.nicknames = {
   mooney = { "^M20%w$" },
   -- (two words, read together where a nickname opens an abbreviated callsign or follows "the")
   ["king air"] = { "^BE[29]0$", "^B350$" },
+  -- (the Super Puma: the AS332 and the EC225 / H225 that followed it)
+  ["super puma"] = { "^AS32$", "^EC25$" },
   hercules = { "^C130$" },
   herc = { "^C130$" },
   -- (regional families named without their variant: "the CRJ" is a CRJ200 to CRJ1000, "the ATR" an ATR 42 or 72)

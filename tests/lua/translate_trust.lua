@@ -13213,7 +13213,7 @@ do
   check_eq(ex("KLM12 descend to FL320 as soon as it has slowed down to 260 knots, and reduce to 260 knots now"),
     "ATSPD KLM12 260 ALT KLM12 FL320 ; SPD KLM12 260")
   check_eq(ex("KLM12 fly Mach 0.78 when it has reached FL380, and climb to FL380 immediately"),
-    "ATALT KLM12 FL380 SPD KLM12 M0.78 ; ALT KLM12 FL380")
+    "ALT KLM12 FL380 ; ATALT KLM12 FL380 SPD KLM12 M0.78")
   check_eq(ex("KLM12 descend to FL320 as soon as it has slowed to 260 knots"), "ATSPD KLM12 260 ALT KLM12 FL320")
   asked(ex("KLM12 descend to FL320 once it has slowed to 260 knots, and turn left heading 200"), "which one waits")
 end
@@ -14794,11 +14794,11 @@ end
 do
   local _, ex = scene({ "CRE EIN45 A320 53.4 -6.3 090 FL230 290", "CRE RYR7TK B738 53.0 -6.0 270 FL190 280" })
   check_eq(ex("Shamrock 45, once you reach FL160, reduce to 240 knots; descend to FL160 now"),
-    "ATALT EIN45 FL160 SPD EIN45 240 ; ALT EIN45 FL160")
+    "ALT EIN45 FL160 ; ATALT EIN45 FL160 SPD EIN45 240")
   check_eq(ex("Shamrock 45, once at FL160, turn left heading 040. Descend FL160 immediately."),
-    "ATALT EIN45 FL160 HDG EIN45 40 LEFT ; ALT EIN45 FL160")
+    "ALT EIN45 FL160 ; ATALT EIN45 FL160 HDG EIN45 40 LEFT")
   check_eq(ex("Shamrock 45, when you get to FL160, reduce to 240 knots, and descend to FL160 now"),
-    "ATALT EIN45 FL160 SPD EIN45 240 ; ALT EIN45 FL160")
+    "ALT EIN45 FL160 ; ATALT EIN45 FL160 SPD EIN45 240")
   -- (a comma and no word of now: the condition still holds everything after it)
   check_eq(ex("Shamrock 45, when passing FL160, reduce to 240 knots, turn left heading 040"),
     "ATALT EIN45 FL160 SPD EIN45 240 ; ATALT EIN45 FL160 HDG EIN45 40 LEFT")
@@ -20052,6 +20052,110 @@ do
   asked(ex("DLH4 cleared direct SPY?"), "a direct-to asked about")
   check_eq(ex("KLM12 cleared FL300"), "ALT KLM12 FL300")
   check_eq(ex("could KLM12 be cleared FL300?"), "ALT KLM12 FL300")
+end
+
+-- Cycle 63 (f219)
+-- An Australian controller's typed two-letter VOR idents (ML, BN, SY, CB): read where a place stands when the navaid
+-- of that ident nearest the traffic is one station within range; one far from every aircraft, or left unread after a
+-- place's slot, is asked, never dropped with the place its instruction anchors.
+do
+  local _, ex = navscene({ "CRE QFA77 B738 -36.9 145.3 200 FL230 280", "CRE VOZ812 B738 -37.5 144.1 030 FL140 300",
+    "CRE JST301 A320 -27.9 153.0 350 FL180 280" }, "two-letter VOR idents")
+  if ex then
+    check_eq(ex("put Virgin 812 over ML at seven thousand"), "MOVE VOZ812 ML 7000")
+    check_eq(ex("Qantas 77 track direct ML"), "ADDWPT QFA77 ML ; DIRECT QFA77 ML")
+    check_eq(ex("Jetstar 301 direct to the BN VOR"), "ADDWPT JST301 BN ; DIRECT JST301 BN")
+    check_eq(ex("create QLK41D DH8D over BN heading 200, 5000 feet, 200 knots"), "CRE QLK41D DH8D BN 200 5000 200")
+    check_eq(ex("make a Dash 8 QLK7D at CG heading 180, FL120, 220 knots"), "CRE QLK7D DH8D CG 180 FL120 220")
+    -- (ML lies beyond lexicon.navaid_range_nm of the Brisbane traffic only: still one station for the fleet)
+    asked(ex("Qantas 77 cross QQ at FL150"), "no navaid QQ: the crossing's place unread")
+    asked(ex("put Virgin 812 over XY at 6000"), "no navaid XY near")
+    asked(ex("Qantas 77 descend 9000 over ZQ"), "an unread place after 'over'")
+  end
+  local _, far = navscene({ "CRE KLM12 A320 52 4 90 FL250 280" }, "two-letter VOR idents far from traffic")
+  if far then
+    asked(far("put KLM12 over ML at 6000"), "ML is far from the traffic: never dropped")
+    asked(far("KLM12 cross ML at FL100"), "a crossing at a place not read")
+    asked(far("KLM12 descend FL100 at ML"), "the place the level waits for not read")
+  end
+  -- a level condition before a direct-to said with its verb ("track direct", "go direct", "head direct")
+  local _, ex2 = scene({ "CRE QFA9 B738 -33.0 151.0 200 FL250 290", "DEFWPT RIVET -33.5 150.8", "ADDWPT QFA9 RIVET" })
+  check_eq(ex2("Qantas 9 descend to flight level one two zero, after passing flight level one niner zero track direct RIVET"),
+    "ALT QFA9 FL120 ; ATALT QFA9 FL190 DIRECT QFA9 RIVET")
+  check_eq(ex2("QFA9 descend FL110, passing FL200 go direct RIVET"), "ALT QFA9 FL110 ; ATALT QFA9 FL200 DIRECT QFA9 RIVET")
+  check_eq(ex2("Qantas 9 descend FL100, on passing one eight zero head direct to RIVET"),
+    "ALT QFA9 FL100 ; ATALT QFA9 FL180 DIRECT QFA9 RIVET")
+  check_eq(ex2("Qantas 9 track direct RIVET"), "DIRECT QFA9 RIVET")
+end
+
+-- Cycle 63 (f219): a Scottish lab manager's descriptions of aircraft: a plain word with a side ("the low one at the
+-- top", "the fast one on the right"), "up the top"/"down the bottom", the short compass superlatives ("the eastmost
+-- one"), a comparative before a group of two ("the higher Loganair"), types by name (Saab 2000, Super Puma, Sikorsky
+-- S-92), and a level passed "through" as a condition.
+do
+  local _, ex = scene({ "CRE LOG31 AT76 55.80 -3.00 300 FL080 210", "CRE EZY7 A320 55.55 -3.35 360 FL110 260",
+    "CRE BAW9 A320 56.05 -3.25 150 FL070 250", "CRE KLM88 E190 56.00 -2.40 260 FL120 270",
+    "CRE RYR4 B738 55.78 -3.95 060 FL090 240" })
+  check_eq(ex("the low one up at the top, descend 6000 feet"), "ALT BAW9 6000")
+  check_eq(ex("the high one at the top, descend FL100"), "ALT KLM88 FL100")
+  check_eq(ex("the fast one over on the right, reduce 240"), "SPD KLM88 240")
+  asked(ex("the slow one on the right, reduce 240"), "the one on the right is the fastest")
+  asked(ex("the low one on the left, climb FL100"), "the one on the left is not the lowest")
+  asked(ex("the one at the top, descend FL100"), "two aircraft at the top")
+  check_eq(ex("the one down the bottom, climb FL120"), "ALT EZY7 FL120")
+  asked(ex("the one up the top, slow it to 220"), "two aircraft at the top: up the top as at the top")
+  check_eq(ex("the eastmost one, slow it tae 230"), "SPD KLM88 230")
+  check_eq(ex("the westmost aircraft, climb FL110"), "ALT RYR4 FL110")
+  check_eq(ex("the northmost one, descend FL60"), "ALT BAW9 FL60")
+  local _, ex2 = scene({ "CRE LOG52 AT76 55.70 -4.10 060 FL070 200", "CRE LOG9 AT76 56.30 -2.90 200 FL080 210",
+    "CRE EZY12 A320 55.90 -2.80 270 FL100 250", "CRE EZY38 A319 56.20 -3.70 150 FL140 270",
+    "CRE BHL21 S92 57.40 -1.50 250 3000 140", "CRE HKS85 EC25 57.15 -1.20 270 2000 130",
+    "CRE EZE4 SB20 57.60 -2.60 130 FL090 220" })
+  check_eq(ex2("the higher Loganair, climb FL100"), "ALT LOG9 FL100")
+  check_eq(ex2("could the lower Loganair climb FL90"), "ALT LOG52 FL90")
+  check_eq(ex2("the slower easyJet, speed 230"), "SPD EZY12 230")
+  check_eq(ex2("the Super Puma, speed 120"), "SPD HKS85 120")
+  check_eq(ex2("the Sikorsky, turn left heading 200"), "HDG BHL21 200 LEFT")
+  check_eq(ex2("the Saab, descend FL70, naw, FL80"), "ALT EZE4 FL80")
+  check_eq(ex2("the Saab 2000, speed 200"), "SPD EZE4 200")
+  asked(ex2("the Puma, speed 120"), "no Puma flies by that name alone")
+  local _, ex3 = scene({ "CRE UAE27 A388 55.60 -5.20 060 FL150 280" })
+  check_eq(ex3("UAE27 descend flight level 80, then once it's through 100 slow it to 220"),
+    "ALT UAE27 FL80 ; ATALT UAE27 FL100 SPD UAE27 220")
+  check_eq(ex3("UAE27 descend FL80, when through one two zero reduce 250"), "ALT UAE27 FL80 ; ATALT UAE27 FL120 SPD UAE27 250")
+end
+
+-- Cycle 63 (f219): a Dutch experimenter's and a Swiss researcher's scripts: "let it run. Fast forward N" is the fast
+-- forward; a waypoint named in capitals like an abbreviation (EXPD) or an English word (FINAL) straight before its
+-- position is defined under that name; the level an ATALT waits for, cleared in the same request, goes first; an
+-- instruction waiting for a waypoint a direct-to leaves out is asked; "direct X as destination" for an aircraft of no
+-- route is its destination.
+do
+  local _, ex = scene({ "DEFWPT EXPA 52.8 4.0", "DEFWPT EXPC 53.2 4.5", "CRE KLM55X B738 52.50 3.70 045 FL280 290",
+    "ADDWPT KLM55X EXPA", "ADDWPT KLM55X EXPC", "CRE TFL12 B738 53.30 5.00 120 FL200 280", "CRE SWR9 BCS3 47.48 9.56 060 5000 210" })
+  check_eq(ex("ok let it run. Fast forward 3 minutes"), "FF 180")
+  check_eq(ex("let the sim run, fast forward 2 minutes please"), "FF 120")
+  check_eq(ex("define a point EXPD at 52.6 N 4.6 E"), "DEFWPT EXPD 52.6 4.6")
+  check_eq(ex("make a new waypoint called EXPD at 52.6 4.6"), "DEFWPT EXPD 52.6 4.6")
+  check_eq(ex("Define FINAL at 52.45 4.70"), "DEFWPT FINAL 52.45 4.7")
+  check_eq(ex("TFL12 turn left heading 090 when he is at FL160. Descend him first to 160."),
+    "ALT TFL12 FL160 ; ATALT TFL12 FL160 HDG TFL12 90 LEFT")
+  check_eq(ex("TFL12 when passing FL160 reduce 250, descend FL160"), "ALT TFL12 FL160 ; ATALT TFL12 FL160 SPD TFL12 250")
+  asked(ex("KLM55X direct EXPC, and once past EXPA reduce to 250 knots"), "EXPA left out by the direct-to")
+  asked(ex("KLM55X direct EXPC, at EXPA descend FL200"), "EXPA left out by the direct-to")
+  check_eq(ex("KLM55X direct EXPA, at EXPC descend FL200"), "DIRECT KLM55X EXPA ; AT KLM55X EXPC DO ALT KLM55X FL200")
+  check_eq(ex("SWR9 direct EXPC as its destination, and descend to 3000 ft"), "DEST SWR9 EXPC ; ALT SWR9 3000")
+  check_eq(ex("SWR9 direct EXPC"), "ADDWPT SWR9 EXPC ; DIRECT SWR9 EXPC")
+end
+
+-- Cycle 63 (f219): "fly a heading directly towards X" is the heading toward it, no direct-to.
+do
+  local _, ex = navscene({ "CRE DLH11 A20N 47.75 8.70 200 FL100 250" }, "a heading toward a navaid")
+  if ex then
+    check_eq(ex("DLH11, fly a heading directly towards the ZUE VOR, please"), "HDG DLH11 ZUE")
+    check_eq(ex("DLH11 take up a heading directly toward ZUE"), "HDG DLH11 ZUE")
+    check_eq(ex("DLH11 proceed directly to ZUE"), "ADDWPT DLH11 ZUE ; DIRECT DLH11 ZUE")
+  end
 end
 
 -- Cycle 63 (f221)
