@@ -1384,6 +1384,60 @@ function G.said_restated(text)
   end
   return text
 end
+-- "negative, I said one four zero, descend flight level one two zero", "I said 140 and turn left heading 120": "I
+-- said" and a run of bare numbers (digits or number words: no unit, no value's name, no letters) ended by a mark or
+-- "and"/"then" name a value of no kind; a later run of values with other digits (none with the same: then
+-- G.said_restated drops the run) leaves open which value is meant and what the first one was. Returns the question
+-- naming both, or nil. A later value taken back with "not" ("I said 140, not 120") and a first value with its kind
+-- or unit ("I said heading 140, ...", "I said 250 knots, ...") are no conflict.
+function G.said_conflict(text)
+  if not text:find("[Ss][Aa][Ii][Dd]") then return nil end
+  local toks = bare_words(text)
+  local function number(t) return t and (t.raw:match("^%d+[,;.:]?$") or NUMBER_WORDS[t.bare]) end
+  local function value(t) return t and (t.raw:match("%d[,;.:]?$") or NUMBER_WORDS[t.bare]) end
+  local function digits(t)
+    if t.raw:match("%d") then return (t.raw:gsub("%D", "")) end
+    return G.said_digit[t.bare] or ""
+  end
+  for k = 1, #toks - 3 do
+    if toks[k].bare == "i" and toks[k + 1].bare == "said" and not toks[k + 1].raw:match("%p$") then
+      local j, key = k + 2, ""
+      while j < k + 8 and number(toks[j]) do
+        key = key .. digits(toks[j])
+        j = j + 1
+        if toks[j - 1].raw:match("[,;.:]$") then break end
+      end
+      local closed = toks[j] and (toks[j - 1].raw:match("[,;.:]$") or toks[j].bare == "and" or toks[j].bare == "then")
+      if key ~= "" and j > k + 2 and closed then
+        local m, other, same = j, nil, false
+        while toks[m] do
+          if value(toks[m]) then
+            local b, run = m, ""
+            while value(toks[m]) do
+              run = run .. digits(toks[m])
+              m = m + 1
+              if toks[m - 1].raw:match("[,;.:]$") then break end
+            end
+            local denied = b > 1 and (toks[b - 1].bare == "not" or toks[b - 1].bare == "no")
+            if run == key then same = true
+            elseif run ~= "" and not denied and not other then
+              local from = (toks[j].bare == "and" or toks[j].bare == "then") and toks[j + 1] or toks[j]
+              other = { from.at, toks[m - 1].e }
+            end
+          else
+            m = m + 1
+          end
+        end
+        if other and not same then
+          return string.format("You said '%s', then '%s': which value do you mean? Please say the instruction "
+            .. "again with its value.", (text:sub(toks[k + 2].at, toks[j - 1].e - 1):gsub("[,;.:]$", "")),
+            (text:sub(other[1], other[2] - 1):gsub("[,;.:]$", "")))
+        end
+      end
+    end
+  end
+  return nil
+end
 -- The value token t holds (digits, a number word, a unit), or nil.
 function G.said_but_value(t)
   return t.raw:match("%d%p*$") or NUMBER_WORDS[t.bare] or UNIT_WORDS[t.bare]
@@ -13865,6 +13919,92 @@ function G:setting_twice()
   if q then return self:need(q) end
 end
 
+-- "set the protected zone to 5 miles and 2000 feet, the standard values", "dtmult 2, the default": a value called
+-- BlueSky's standard or default that is not (G.standard_settings: ZONER 5 NM, ZONEDH 1000 ft, DTMULT 1, DT 0.05 s,
+-- DTLOOK 300 s) contradicts itself: asked, naming the standard. "standard"/"default" names the values of its own
+-- clause (between marks), or, when that clause holds no value and only words naming them ("the standard values
+-- please", "those are the defaults"), those of the nearest clause before it that has one. The word before a value
+-- ("instead of the default 1.05", "the standard 5 miles"), before the thing it qualifies ("standard rate"), or after
+-- "not"/"non" is not this; neither is a value in a clause of its own beside it ("dtmult 4, lookahead back to default").
+G.standard_settings = { ZONER = 5, ZONEDH = 1000, DTMULT = 1, DT = 0.05, DTLOOK = 300 }
+G.standard_units = { ZONER = " NM", ZONEDH = " ft", DTMULT = "", DT = " s", DTLOOK = " s" }
+function G:standard_values_said()
+  local n = #self.t
+  local function clause(k)
+    local b, e = k, k
+    while b > 1 and self.t[b - 1].kind ~= "punct" do b = b - 1 end
+    while e <= n and self.t[e].kind ~= "punct" do e = e + 1 end
+    return b, e
+  end
+  for x = 1, n do
+    if self:word(x, "standard default defaults") and not self:word(x - 1, "not non no")
+        and not self:word(x + 1, "speed rate turn route routing arrival departure star sid instrument procedure")
+        and not (self.t[x + 1] and self.t[x + 1].kind == "number")
+        and not (self:word(x + 1, "value setting") and self.t[x + 2] and self.t[x + 2].kind == "number") then
+      local b, e = clause(x)
+      local qs = self:quantities(b, e)
+      -- (a standard of the speaker's own, said with its value: "because the standard in our experiment is 6", "our
+      -- default is 2")
+      if self:word(x - 1, "our my your their this its") then return end
+      for _, q in ipairs(qs) do
+        if q.b > x and self:word_in(x + 1, q.b, "is are was be of equals") then return end
+      end
+      if #qs == 0 then
+        local naming = true
+        for k = b, e - 1 do
+          naming = naming and (self.t[k].filler or self:word(k, "the standard default defaults value values setting "
+            .. "settings those these they are is were which as per like usual normal ones please bluesky's bluesky"))
+        end
+        if naming then
+          -- (the clauses before it in its sentence, or in the sentence before when its own holds no value)
+          while b > 2 and not (#qs > 0 and self.t[b - 1].text:match("^[.?!]$")) do
+            b, e = clause(b - 2)
+            for _, q in ipairs(self:quantities(b, e)) do qs[#qs + 1] = q end
+          end
+        else
+          -- ("back to default, 5 nm and 2000 ft", "to the defaults: 5 nm, 1500 ft": the clauses straight after it
+          -- that hold only values name them)
+          while e < n do
+            local cb, ce = clause(e + 1)
+            local vs, covered = self:quantities(cb, ce), {}
+            for _, q in ipairs(vs) do
+              for k = q.b, q.e - 1 do covered[k] = true end
+            end
+            for k = cb, ce - 1 do
+              if not (covered[k] or self.t[k].filler or self:word(k, "and please")) then vs = {} end
+            end
+            if #vs == 0 then break end
+            for _, q in ipairs(vs) do qs[#qs + 1] = q end
+            e = ce
+          end
+        end
+      end
+      local wrong, standard, said = {}, {}, {}
+      for _, line in ipairs(self.out) do
+        local cmd, v = line:match("^(%u+) (%-?[%d%.]+)$")
+        local std = cmd and G.standard_settings[cmd]
+        if std then
+          for _, q in ipairs(qs) do
+            if q.value == tonumber(v) and tonumber(v) ~= std and not said[line] then
+              said[line] = true
+              wrong[#wrong + 1] = line
+              standard[#standard + 1] = cmd .. " " .. std .. G.standard_units[cmd]
+              break
+            end
+          end
+        end
+      end
+      if #wrong > 0 then
+        return self:need(string.format("I have %s, but '%s' is not BlueSky's %s value (%s). Which do you mean: "
+          .. "the value said, or the %s?", table.concat(self.out, " ; "), table.concat(wrong, " ; "),
+          self.words[x]:match("^default") and "default" or "standard", table.concat(standard, ", "),
+          self.words[x]:match("^default") and "default" or "standard"))
+      end
+      return
+    end
+  end
+end
+
 -- "Is DTMULT still 5?", "is the look-ahead still 300 seconds?": a request opening with "is" or "are" and no verb of
 -- setting (lexicon.setting_verbs), or asking in a statement's word order ("the seed is 3?", "the trails are on?":
 -- m:statement_order_question), asks about a value; a setting given a value (a command with a value and no
@@ -16921,6 +17061,8 @@ function M.translate(text, world)
   -- (the Turkish letters of UTF-8 Latin Extended-A: "hayır", "sağol", "Şile")
   if text:find("[\xC4\xC5]") then text = text:gsub("[\xC4\xC5][\x80-\xBF]", lexicon.accents) end
   text = G.id_label(G.hold_after_ff(G.time_before_fast(numbered_steps(G.title_label(G.spoken_ddmm(G.spoken_zeros(G.number_words_apart(text))))))), world)
+  local said_conflict = G.said_conflict(text)
+  if said_conflict then return { commands = {}, ask = said_conflict } end
   -- ("climb to 10 km", "descend to 7.5 km": a level in kilometres straight after the vertical verb, as metres)
   if text:find("km", 1, true) then
     for _, verb in ipairs({ "[Cc]limbs?%s+to", "[Cc]limbs?", "[Dd]escends?%s+to", "[Dd]escends?" }) do
@@ -17363,6 +17505,9 @@ function M.translate(text, world)
   if not g.ask and #g.out > 0 and #g.refs > 1 then g:aircraft_aside() end
   if not g.ask then g:list_value() end
   if not g.ask then g:setting_twice() end
+  if not g.ask and #g.out > 0 and (lower:find("standard", 1, true) or lower:find("default", 1, true)) then
+    g:standard_values_said()
+  end
   if not g.ask then g:setting_question() end
   if not g.ask and #g.out > 0 then g:opinion_question(lower) end
   if not g.ask and #g.out > 0 then g:offer_question(lower) end

@@ -20053,3 +20053,73 @@ do
   check_eq(ex("KLM12 cleared FL300"), "ALT KLM12 FL300")
   check_eq(ex("could KLM12 be cleared FL300?"), "ALT KLM12 FL300")
 end
+
+-- Cycle 63 (fhz13)
+-- A readback correction ("negative, I said ...") naming a bare number (no unit, no value's name) and then an instruction
+-- with another value is asked, naming both; the same digits again are one instruction; a value with its kind, or
+-- one taken back with "not", stays read.
+do
+  local _, ex = scene({ "CRE ELY77 A320 31.0 34.8 180 FL160 280", "CRE ISR42 AT76 31.5 34.9 190 FL140 220" })
+  asked(ex("ELY77 negative, I said one six zero, descend flight level one one zero"), "a bare value, then another level")
+  asked(ex("ELY77 negative I said 160, descend FL110"), "typed digits, then another level")
+  asked(ex("ELY77 no, I said one six zero; turn left heading 130"), "a bare value, then a heading")
+  asked(ex("ELY77 I said one six zero and descend flight level one one zero"), "joined by 'and'")
+  asked(ex("ELY77 I said 230, then speed two one zero"), "a bare value, then another speed")
+  check_eq(ex("ELY77 negative, I said one one zero, descend flight level one one zero"), "ALT ELY77 FL110")
+  check_eq(ex("ELY77 negative, I said 110, descend FL110"), "ALT ELY77 FL110")
+  check_eq(ex("ELY77 negative, I said heading one three zero, descend flight level one one zero"),
+    "HDG ELY77 130 ; ALT ELY77 FL110")
+  check_eq(ex("ELY77 no, I said 250 knots, descend FL110"), "SPD ELY77 250 ; ALT ELY77 FL110")
+  check_eq(ex("ELY77 negative, I said flight level one one zero, not one zero zero"), "ALT ELY77 FL110")
+  asked(ex("ELY77 negative, I said flight level one three zero, descend flight level one one zero"), "two levels")
+end
+
+-- A setting's value called BlueSky's standard or default when it is not (ZONER 5 NM, ZONEDH 1000 ft, DTMULT 1, DT 0.05 s,
+-- DTLOOK 300 s) is asked, naming the standard; the standard values said as standard, and a standard of the speaker's
+-- own with its value, are read.
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 90 FL250 280" })
+  asked(ex("put the protected zone at 5 nm and 1500 ft, which are the standard values"), "1500 ft called standard")
+  asked(ex("protected zone 4 miles radius, 1000 ft vertical, the defaults please"), "4 NM called default")
+  asked(ex("Zone radius 5 NM and half height 2000 ft. Those are the standard values."), "the sentence before")
+  asked(ex("reset the pz to the defaults: 5 nm, 2000 ft"), "the values after the word")
+  asked(ex("set pz 5 nm / 2000 ft (standard)"), "in brackets")
+  asked(ex("set dtmult to 3, the default"), "DTMULT 3 called default")
+  asked(ex("time step 0.2 s, default value"), "DT 0.2 called default")
+  check_eq(ex("put the protected zone at 5 nm and 1000 ft, which are the standard values"), "ZONER 5 ; ZONEDH 1000")
+  check_eq(ex("lookahead 300 s, the default"), "DTLOOK 300")
+  check_eq(ex("zone radius 6 nm instead of the default 5"), "ZONER 6")
+  check_eq(ex("change the zone radius to 7 nm, since the standard in this study is 7"), "ZONER 7")
+end
+
+-- Settings listed with commas: a bare "dt" and its time in the clause straight after the trails were switched on may be
+-- the trails' interval or the simulation's step: asked, as in one clause; typed as TrafScript in capitals it is DT;
+-- nothing in a list is dropped.
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 90 FL250 280" })
+  asked(ex("trails on, dt 2s"), "dt after trails, comma")
+  asked(ex("show trails; dt 10 sec"), "dt after trails, semicolon")
+  asked(ex("trails on, then dt 0.5 seconds"), "dt after trails, 'then'")
+  check_eq(ex("TRAIL ON, DT 2"), "TRAIL ON ; DT 2")
+  check_eq(ex("dt 0.2s, trails on"), "DT 0.2 ; TRAIL ON")
+  check_eq(ex("trails on, dtmult 8"), "TRAIL ON ; DTMULT 8")
+  check_eq(ex("trails on, interval 4s"), "TRAIL ON 4")
+  check_eq(ex("seed 3, trails on, dtmult 12, ff 20 min"), "SEED 3 ; TRAIL ON ; DTMULT 12 ; FF 1200")
+  check_eq(ex("noise on and trails off and dtmult 2"), "NOISE ON ; TRAIL OFF ; DTMULT 2")
+end
+
+-- An airline of several countries (SAS: Danish, Swedish, Norwegian) is of each: "the Danish" with an SAS and a
+-- Danish Air Transport flight flying is asked; with only the SAS of those countries it is the SAS; "the Norwegian" is
+-- the airline Norwegian where one flies.
+do
+  local _, both = scene({ "CRE SAS20 A20N 55.4 12.1 045 FL90 250", "CRE DTR33 AT76 55.3 13.0 320 7000 200",
+    "CRE EZY47JD A320 55.05 12.4 010 FL150 280" })
+  asked(both("could the Danish turn right heading 020"), "SAS and DTR both Danish")
+  asked(both("the Danish one, climb FL110"), "SAS and DTR both Danish")
+  check_eq(both("the Danish ATR climb 8000 ft"), "ALT DTR33 8000")
+  check_eq(both("the Swedish climb FL120"), "ALT SAS20 FL120")
+  local _, sas = scene({ "CRE SAS20 A20N 55.4 12.1 045 FL90 250", "CRE EZY47JD A320 55.05 12.4 010 FL150 280" })
+  check_eq(sas("the Danish, climb FL110"), "ALT SAS20 FL110")
+  local _, nax = scene({ "CRE SAS1465 A20N 55.4 12.1 045 FL90 250", "CRE NAX12 B738 55.05 12.4 010 FL150 280" })
+  check_eq(nax("the Norwegian climb FL200"), "ALT NAX12 FL200")
+end
