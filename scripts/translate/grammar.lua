@@ -1399,7 +1399,7 @@ function G.said_conflict(text)
     if t.raw:match("%d") then return (t.raw:gsub("%D", "")) end
     return G.said_digit[t.bare] or ""
   end
-  for k = 1, #toks - 3 do
+  for k = 1, #toks - 2 do
     if toks[k].bare == "i" and toks[k + 1].bare == "said" and not toks[k + 1].raw:match("%p$") then
       local j, key = k + 2, ""
       while j < k + 8 and number(toks[j]) do
@@ -1433,11 +1433,39 @@ function G.said_conflict(text)
             .. "again with its value.", (text:sub(toks[k + 2].at, toks[j - 1].e - 1):gsub("[,;.:]$", "")),
             (text:sub(other[1], other[2] - 1):gsub("[,;.:]$", "")))
         end
+      elseif key ~= "" and j > k + 2 and not toks[j] then
+        -- ("descend FL120 and maintain, I said one three zero": the run closing the request, after values of
+        -- instructions with other digits: a level typed "FL120", or a run after a value's name or verb)
+        local m, last, same = 1, nil, false
+        while m < k do
+          local lead = m > 1 and G.said_value_leads[toks[m - 1].bare]
+          if value(toks[m]) and (lead or toks[m].raw:match("^[Ff][Ll]%d")) then
+            local b, run = m, ""
+            while m < k and value(toks[m]) do
+              run = run .. digits(toks[m])
+              m = m + 1
+              if toks[m - 1].raw:match("[,;.:]$") then break end
+            end
+            if run == key then same = true end
+            last = { toks[lead and b - 1 or b].at, toks[m - 1].e }
+          else
+            m = m + 1
+          end
+        end
+        if last and not same then
+          return string.format("You said '%s' after '%s': which value do you mean? Please say the instruction again "
+            .. "with its value.", (text:sub(toks[k + 2].at, toks[j - 1].e - 1):gsub("[,;.:!?]$", "")),
+            (text:sub(last[1], last[2] - 1):gsub("[,;.:]$", "")))
+        end
       end
     end
   end
   return nil
 end
+-- (the words before a run of numbers that make it an instruction's value, for G.said_conflict)
+G.said_value_leads = { level = true, fl = true, heading = true, hdg = true, speed = true, spd = true, altitude = true,
+  alt = true, mach = true, climb = true, descend = true, maintain = true, to = true, turn = true, reduce = true,
+  increase = true }
 -- The value token t holds (digits, a number word, a unit), or nil.
 function G.said_but_value(t)
   return t.raw:match("%d%p*$") or NUMBER_WORDS[t.bare] or UNIT_WORDS[t.bare]
@@ -9457,7 +9485,9 @@ function G:aircraft_ends_at(k)
   return false
 end
 function G:refused_or_requested()
-  if not self:said("unable request requests requesting like standby stand") then return end
+  if not self:said("unable request requests requesting requested like standby stand wants wanted asking asks asked") then
+    return
+  end
   local out = " " .. table.concat(self.out, " ; ") .. " "
   for k = 1, #self.t do
     local from
@@ -9468,6 +9498,15 @@ function G:refused_or_requested()
         or self:word(k, "would") and self:word(k + 1, "like") and not self:word(k + 2, "me"))
         and k > 1 and (self:word(k - 1, "he she it pilot crew") or self:aircraft_ends_at(k)) then
       from = self:word(k, "would") and k + 2 or k + 1
+    elseif k > 1 and (self:word(k, "requesting requested wants wanted") and not self:word(k + 1, "you me us")
+        or self:word(k, "asking asks asked") and self:word(k + 1, "for"))
+        and (k > 2 and self:word(k - 1, self:word(k, "requested") and "has had just" or "is was just now")
+          and (self:word(k - 2, "he she pilot crew") or self:aircraft_ends_at(k - 1))
+          or self:word(k - 1, "he she pilot crew") or self:aircraft_ends_at(k)) then
+      -- ("KLM12 is requesting to climb FL300", "KLM12 has requested FL300", "KLM12 wants to climb to FL300", "the
+      -- pilot is asking for FL300": the request told, with its auxiliary; "KLM12 is requested to ..." and "it is
+      -- requested that ..." are the speaker's own request, an instruction)
+      from = self:word(k + 1, "for") and k + 2 or k + 1
     end
     if from then
       local e = from
@@ -9479,7 +9518,9 @@ function G:refused_or_requested()
       end
       for _, q in ipairs(self:quantities(from, e)) do
         local d = q.number and q.number.digits
-        if d and not again[d] and out:find("[%s%a]" .. d .. "[%s;]") then
+        -- (or taken by a command in another unit or as a change from the aircraft's present value: "is requesting to
+        -- turn left 15 degrees", "to climb to 9000 metres")
+        if d and not again[d] and (out:find("[%s%a]" .. d .. "[%s;]") or (self.changes or {})[q.b] or self.taken[q.b]) then
           return self:need(string.format("I have %s, but '%s' is no clearance (refused, requested or to come). "
             .. "Should I give it? Please say it as an instruction.", table.concat(self.out, " ; "),
             (self:raw(k, e):gsub(" ([,.;:])", "%1"))))
@@ -13506,6 +13547,24 @@ function G:not_simulated()
       if class.clock then e = self:clock_limit(i) end
       while e <= #self.t and not class.manner and not class.rate_manner and not class.clock do
         local x = self.t[e]
+        -- ("expect to descend and maintain FL120", "expect descent, maintain one two thousand": "maintain" joined
+        -- straight after an expected climb or descent may give the level expected or one cleared now: asked, unless
+        -- it is the aircraft's present level, kept now)
+        if class.maintain_joined and (x.text == "," or x.text == "and") and self:word(e + 1, "maintain")
+            and self:word_in(i, e, "climb climbing descend descending descent") then
+          local q = self:quantities(e + 2, math.min(#self.t + 1, e + 10))[1]
+          local a = self:refs_in(1, i, "aircraft")[1]
+          local now = a and self:state(a.name)
+          local ft = q and q.kind == "alt" and level_feet(handlers.format.alt(q.value, q.fl))
+          if q and q.b <= e + 4 and (q.kind == "alt" or q.kind == "plain") and not (now and now.alt_ft and ft and math.abs(now.alt_ft - ft) <= 50) then
+            self:need(string.format("Is 'maintain %s' a clearance to send now, or the level to expect with '%s'? "
+              .. "Please say the instruction itself.", self:raw(q.b, q.e), self:raw(i, e)))
+            break
+          end
+        end
+        -- (a comma before a word taking back what was said ends it: "climb FL380, contact Gander on 127.15, cancel
+        -- that" may take back the climb too, which is left to read)
+        if x.text == "," and self:word(e + 1, "cancel disregard scratch belay forget ignore") then break end
         comma = comma or (x.kind == "punct" and x.text == ",")
         -- (a comma goes on: "hold at BAKUR, left hand pattern, inbound track 270" is one clearance)
         -- (nor does it take a negation: "hold present level, do not climb to FL350" leaves "do not" to be read,

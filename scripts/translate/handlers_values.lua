@@ -145,6 +145,18 @@ return function(H, f, wrap, compass)
           local knots = self:word(k, "@speed_units") or self:word(self:skip_fillers(k + 1), "@speed_units")
             -- ("maintain 280 or greater": a speed's bound; a level's is "or above")
             or (self:word(k, "or") and self:word(k + 1, "greater faster"))
+          -- ("climb FL310 and maintain three one zero", "descend to flight level one two zero and maintain, one two
+          -- zero": a bare number whose hundreds of feet are a level said before it in the request, no aircraft named
+          -- between, is that level restated, no speed)
+          if not knots and not q.number.thousand and not q.number.hundred then
+            for _, r in ipairs(self:quantities(1, s.trig)) do
+              if r.kind == "alt" and math.abs(r.value - q.value * 100) < 1 and #self:refs_in(r.e, s.trig, "aircraft") == 0 then
+                self:acids(s)
+                self:take(q)
+                return
+              end
+            end
+          end
           -- "keep it at 230", typed with no unit: a flight level or a speed? The aircraft's own present
           -- level or speed says which is kept; otherwise asked
           if q.number.typed and not knots and q.value >= 100 and q.value <= 400 and q.value == math.floor(q.value)

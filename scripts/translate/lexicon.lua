@@ -2258,7 +2258,10 @@ return {
     -- pilot's planning, no clearance (lexicon.not_a_clearance), up to the end of its clause ("expect to resume
     -- own navigation to MNR shortly"); an aircraft then "to" after it ("expect IBE3142 to climb to FL200") is the
     -- speaker's expectation of that aircraft, no pilot's planning (`not_aircraft_to`): asked whether it is sent
-    { what = "expected clearances", words = "expect expecting", clause = true, not_aircraft_to = true },
+    -- ("expect to descend and maintain FL120": a level joined by "maintain" straight after the motion expected is
+    -- asked, `maintain_joined`, grammar.lua G:not_simulated)
+    { what = "expected clearances", words = "expect expecting", clause = true, not_aircraft_to = true,
+      maintain_joined = true },
     -- "expedite through FL170": a rate while crossing a level, which squawk does not model
     { what = "expedite instructions", words = "expedite", near = { "through", "passing" } },
     -- "climb FL300 quickly", "descend FL200, expedite", "turn hard left heading 350", "climb rapidly to FL300": how

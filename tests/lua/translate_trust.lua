@@ -20123,3 +20123,34 @@ do
   local _, nax = scene({ "CRE SAS1465 A20N 55.4 12.1 045 FL90 250", "CRE NAX12 B738 55.05 12.4 010 FL150 280" })
   check_eq(nax("the Norwegian climb FL200"), "ALT NAX12 FL200")
 end
+
+-- Cycle 63 (fhz13), hunted: "maintain" with a bare number equal to the level just cleared restates it (no speed);
+-- "I said" and a bare number closing the request after another value asks; "maintain" joined to an expected climb
+-- or descent asks; a pilot's request told ("is requesting", "has requested", "wants", "asks for") asks; a word taking
+-- back said after something squawk does not simulate is left to ask.
+do
+  local _, ex = scene({ "CRE AFR31 A320 48.5 2.5 090 FL250 280", "CRE EZY9 A319 48.7 2.9 270 FL230 270" })
+  check_eq(ex("AFR31 climb flight level three two zero and maintain three two zero"), "ALT AFR31 FL320")
+  check_eq(ex("AFR31 descend to FL180, maintain one eight zero"), "ALT AFR31 FL180")
+  check_eq(ex("AFR31 descend to flight level one eight zero and maintain, one eight zero"), "ALT AFR31 FL180")
+  check_eq(ex("AFR31 descend FL200 and maintain two five zero knots"), "ALT AFR31 FL200 ; SPD AFR31 250")
+  check_eq(ex("AFR31 descend to flight level two zero zero, maintain two eight zero"), "ALT AFR31 FL200 ; SPD AFR31 280")
+  check_eq(ex("AFR31 climb FL320 and maintain three two zero, EZY9 maintain two seven zero"),
+    "ALT AFR31 FL320 ; SPD EZY9 270")
+  asked(ex("AFR31 descend flight level one eight zero and maintain, I said one nine zero"), "'I said' another value last")
+  asked(ex("AFR31 turn right heading one two zero, I said one three zero"), "'I said' another heading last")
+  check_eq(ex("AFR31 descend FL180, I said one eight zero"), "ALT AFR31 FL180")
+  asked(ex("AFR31 expect to descend and maintain FL150"), "maintain joined to an expected descent")
+  asked(ex("AFR31, expect descent at pilot's discretion, maintain one one thousand"), "maintain after a comma")
+  check_eq(ex("AFR31 expect further descent in five minutes, for now maintain FL200"), "ALT AFR31 FL200")
+  check_eq(ex("AFR31 expect descent in ten minutes, maintain FL250"), "ALT AFR31 FL250")
+  asked(ex("AFR31 wants to climb to FL300"), "a wish told")
+  asked(ex("AFR31 is requesting to turn right 20 degrees"), "a request told, a change")
+  asked(ex("AFR31 has requested flight level three four zero"), "a request told, perfect")
+  asked(ex("the pilot of EZY9 is asking for FL250"), "a request told, asking for")
+  check_eq(ex("AFR31 is requested to climb FL300"), "ALT AFR31 FL300")
+  check_eq(ex("AFR31 requests FL300, climb FL300"), "ALT AFR31 FL300")
+  asked(ex("AFR31 climb FL300, contact Reims on 128.3, cancel that"), "cancel after a frequency")
+  asked(ex("AFR31 turn left heading 200, squawk 4521, disregard"), "disregard after a squawk")
+  check_eq(ex("AFR31 climb FL300, contact Reims on 128.3, cancel that, climb FL280"), "ALT AFR31 FL280")
+end
