@@ -1466,6 +1466,26 @@ end
 G.said_value_leads = { level = true, fl = true, heading = true, hdg = true, speed = true, spd = true, altitude = true,
   alt = true, mach = true, climb = true, descend = true, maintain = true, to = true, turn = true, reduce = true,
   increase = true }
+-- "heading zero four five to zero one zero", "speed two eight zero to two five zero": two runs of exactly three
+-- spoken digits with "to" between are two values, the one left and the one flown to (handlers' m:value_left), never
+-- one run of seven digits with "to" heard as "two": both are written as their digits ("045 to 010"). Returns the text.
+function G.spoken_triples_to(text)
+  if not text:find("%f[%a][Tt][Oo]%f[%A]") then return text end
+  local toks = bare_words(text)
+  local function digit(k) return toks[k] and not toks[k].raw:match("%d") and G.said_digit[toks[k].bare] end
+  for k = 4, #toks - 3 do
+    if toks[k].bare == "to" and toks[k].raw:lower() == "to" and digit(k - 1) and digit(k - 2) and digit(k - 3)
+        and not digit(k - 4) and digit(k + 1) and digit(k + 2) and digit(k + 3) and not digit(k + 4)
+        and not toks[k - 1].raw:match("%p$") then
+      local left = G.said_digit[toks[k - 3].bare] .. G.said_digit[toks[k - 2].bare] .. G.said_digit[toks[k - 1].bare]
+      local right = G.said_digit[toks[k + 1].bare] .. G.said_digit[toks[k + 2].bare] .. G.said_digit[toks[k + 3].bare]
+      local tail = toks[k + 3].raw:match("%p+$") or ""
+      return G.spoken_triples_to(text:sub(1, toks[k - 3].at - 1) .. left .. " to " .. right .. tail
+        .. text:sub(toks[k + 3].e))
+    end
+  end
+  return text
+end
 -- The value token t holds (digits, a number word, a unit), or nil.
 function G.said_but_value(t)
   return t.raw:match("%d%p*$") or NUMBER_WORDS[t.bare] or UNIT_WORDS[t.bare]
@@ -17122,6 +17142,16 @@ function M.translate(text, world)
   text = G.id_label(G.hold_after_ff(G.time_before_fast(numbered_steps(G.title_label(G.spoken_ddmm(G.spoken_zeros(G.number_words_apart(text))))))), world)
   local said_conflict = G.said_conflict(text)
   if said_conflict then return { commands = {}, ask = said_conflict } end
+  text = G.spoken_triples_to(text)
+  -- ("three hundred & ten knots": an ampersand after "hundred" or "thousand" and before a number word is the "and"
+  -- inside the number)
+  if text:find("&", 1, true) then
+    text = text:gsub("(%f[%a][Hh][Uu][Nn][Dd][Rr][Ee][Dd])%s*&%s*(%a+)", function(h, w)
+      if NUMBER_WORDS[w:lower()] then return h .. " and " .. w end
+    end):gsub("(%f[%a][Tt][Hh][Oo][Uu][Ss][Aa][Nn][Dd])%s*&%s*(%a+)", function(h, w)
+      if NUMBER_WORDS[w:lower()] then return h .. " and " .. w end
+    end)
+  end
   -- ("climb to 10 km", "descend to 7.5 km": a level in kilometres straight after the vertical verb, as metres)
   if text:find("km", 1, true) then
     for _, verb in ipairs({ "[Cc]limbs?%s+to", "[Cc]limbs?", "[Dd]escends?%s+to", "[Dd]escends?" }) do

@@ -20154,3 +20154,17 @@ do
   asked(ex("AFR31 turn left heading 200, squawk 4521, disregard"), "disregard after a squawk")
   check_eq(ex("AFR31 climb FL300, contact Reims on 128.3, cancel that, climb FL280"), "ALT AFR31 FL280")
 end
+
+-- Cycle 63 (fhz13), hunted: two runs of three spoken digits with "to" between are the value left and the value flown
+-- to, never seven digits with "to" heard as "two" (the second was dropped); "&" inside a spoken number is its "and".
+do
+  local _, ex = scene({ "CRE SWR8 A320 47.4 8.5 045 FL250 280", "CRE EDW2 A320 47.2 8.9 090 FL230 250" })
+  check_eq(ex("SWR8 heading zero four five to zero one zero"), "HDG SWR8 10")
+  check_eq(ex("SWR8 heading zero four five to zero one zero, left side turn"), "HDG SWR8 10 LEFT")
+  check_eq(ex("SWR8 speed two eight zero to two five zero"), "SPD SWR8 250")
+  check_eq(ex("EDW2 flight level two three zero to two six zero climb"), "ALT EDW2 FL260")
+  asked(ex("EDW2 heading zero four five to zero one zero"), "the first heading is not the one it flies")
+  asked(ex("SWR8 climb flight level to four zero"), "'to' inside one level stays asked")
+  check_eq(ex("SWR8 speed three hundred & ten knots"), "SPD SWR8 310")
+  check_eq(ex("SWR8 climb FL300 & speed 250"), "ALT SWR8 FL300 ; SPD SWR8 250")
+end
