@@ -12432,6 +12432,8 @@ function G:hedged()
   local function closes(k) return self.t[k] == nil or self.t[k].kind == "punct" end
   for _, q in ipairs(self:quantities(1, #self.t + 1)) do
     local k, said = q.e, nil
+    -- (a comma between: "turn right 25 degrees, I think", "mach 0.80, maybe")
+    if self.t[k] and self.t[k].text == "," and self:word(k + 1, G.hedge_openers) then k = k + 1 end
     if self:word(k, G.hedge_openers) then  -- (each reading opens on one of them)
       if self:word(k, G.hedge_words) and closes(k + 1) then said = self:raw(k, k + 1) end
       for _, p in ipairs(said and {} or h.pairs) do

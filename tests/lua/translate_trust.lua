@@ -20168,3 +20168,21 @@ do
   check_eq(ex("SWR8 speed three hundred & ten knots"), "SPD SWR8 310")
   check_eq(ex("SWR8 climb FL300 & speed 250"), "ALT SWR8 FL300 ; SPD SWR8 250")
 end
+
+-- Cycle 63 (fhz13), hunted: a hedge closing the request after a comma ("..., I think") asks as one straight after the
+-- value; a type said after "the" straight after a callsign (commas and a correction's words between at most) that the
+-- callsign's aircraft is not of, while another flying is, asks which aircraft; one it fits is in apposition.
+do
+  local _, ex = scene({ "CRE AFR31 A320 48.5 2.5 090 FL250 280", "CRE UAE7 A388 48.7 2.9 270 FL330 270",
+    "CRE EZY9 A319 48.2 2.2 180 FL230 250" })
+  asked(ex("AFR31 turn right 30 degrees, I think"), "a hedge after a comma")
+  asked(ex("AFR31 speed mach 0.78, probably"), "'probably' after a comma")
+  check_eq(ex("AFR31 climb FL300, maybe turn left 20 degrees"), "ALT AFR31 FL300 ; HDG AFR31 70 LEFT")
+  asked(ex("AFR31, the A380 needs to climb to FL350"), "callsign then another type, 'needs to'")
+  asked(ex("AFR31 the superjumbo descend FL310"), "callsign then another type, no comma")
+  asked(ex("AFR31, the A380, climb FL350"), "callsign then another type, commas")
+  asked(ex("AFR31, sorry, the A380 has to descend to FL310"), "a correction to a type")
+  check_eq(ex("AFR31, the A320, climb FL300"), "ALT AFR31 FL300")
+  check_eq(ex("AFR31, the A380 is above you, climb FL300"), "ALT AFR31 FL300")
+  check_eq(ex("AFR31 climb FL300 and the A380 descend FL310"), "ALT AFR31 FL300 ; ALT UAE7 FL310")
+end
