@@ -1112,15 +1112,15 @@ return function(H, f, wrap, compass)
     -- both sides said for the turn with no correction word between ("left DLH404 turn right heading 090", "turn
     -- left heading 180, sorry, I meant to the right"): the later side when a self-correction marker
     -- (lexicon.self_correction.markers' words) is said between them; else asked when both come before the end of
-    -- the turn's value or straight after it ("turn left heading 200 right"; a side later, "..., traffic left ten
-    -- o'clock", "vectors ILS 25 right", is another's)
+    -- the turn's value or straight after it ("turn left heading 200 right"), or after "turn" ("heading 120 left, turn
+    -- right"; a side later, "..., traffic left ten o'clock", "vectors ILS 25 right", is another's)
     local first = math.min(self:find_word(tb, s.e, "@left"), self:find_word(tb, s.e, "@right"))
     local value_end = (abs and abs.e) or (rel and rel.e) or s.e
     for x = first + 1, first < s.e and s.e - 1 or 0 do
       if self:word(x, "@left @right") and self.words[x] ~= self.words[first] and not self.noted[x] then
         if marker_in(self, first + 1, x) then
           turn, tb = self:word(x, "@right") and 1 or -1, x
-        elseif x < value_end or x == self:skip_fillers(value_end) then
+        elseif x < value_end or x == self:skip_fillers(value_end) or self:word(x - 1, "turn turning") then
           return self:need(string.format("Should %s turn left or right? I heard '%s' and '%s'.", ids[1],
             self.t[first].raw, self.t[x].raw))
         end

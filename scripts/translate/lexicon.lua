@@ -969,12 +969,13 @@ return {
   -- "active" is none, "the United's active waypoint")
   state_after_s = { "on", "off", "enabled", "disabled", "switched", "turned" },
   -- a pilot's question back to the controller, no instruction (G:question_back): "say again (the level)"
-  -- with no value in its clause asks for a repeat; "confirm cleared FL200?", "confirm heading 270?" with a value
+  -- with no value in its clause asks for a repeat; "confirm cleared FL200?", "confirm heading 270?", "verify assigned
+  -- altitude FL300" with a value
   -- asks whether a clearance stands. Not after `not_after` ("I say again 260" is the controller's own repeat).
   -- A clause ending in "?" that holds one of `past` asks what was done before ("which one did Pablo use last
   -- week?"): a question, no instruction. A repeat asked with one of `addressed` after it ("say again your
   -- speed") is the controller asking the aircraft for its own value: a report, read as "say your speed".
-  question_back = { repeat_words = { "say again", "say that again" }, confirm = { "confirm" },
+  question_back = { repeat_words = { "say again", "say that again" }, confirm = { "confirm", "verify" },
                     not_after = { "i", "we" }, past = { "did", "didn't" }, addressed = { "your" } },
   -- the wrong value a pilot read back, named by the controller after the corrected instruction ("descend and
   -- maintain 6000, you said seven", ", readback was one one thousand"): each phrase, after a comma, opens a
@@ -2216,6 +2217,9 @@ return {
     -- instruction named is no clearance (a clause opening with an imperative verb after a comma is one; `able`: its
     -- "when" or "if" opens no condition)
     { what = "reports of what the aircraft is able to fly", words = "advise report say tell know", near = { "able" },
+      window = 3, clause = true, able = true },
+    -- ("say when ready to climb FL300", "advise when ready for descent": the same, of when it is ready)
+    { what = "reports of what the aircraft is able to fly", words = "advise report say tell know", near = { "ready" },
       window = 3, clause = true, able = true },
     -- "report level FL150", "report level at 5000", "report heading 090": the pilot's report on reaching that
     -- value, no clearance to it (`through`: the state word stays in the phrase, its value with it)

@@ -20186,3 +20186,18 @@ do
   check_eq(ex("AFR31, the A380 is above you, climb FL300"), "ALT AFR31 FL300")
   check_eq(ex("AFR31 climb FL300 and the A380 descend FL310"), "ALT AFR31 FL300 ; ALT UAE7 FL310")
 end
+
+-- Cycle 63 (fhz13), hunted: "verify" with a value asks as "confirm"; "say when ready to climb FL300" asks for a report
+-- (not simulated: nothing sent);
+-- a side said again after "turn" behind the heading ("heading 120 left, turn right") asks which side.
+do
+  local _, ex = scene({ "CRE AFR31 A320 48.5 2.5 090 FL250 280" })
+  asked(ex("AFR31 verify assigned altitude FL300"), "'verify' with a value")
+  asked(ex("AFR31 verify heading 120?"), "'verify' a heading")
+  check_eq(ex("AFR31 say when ready to climb FL300"), "")
+  check_eq(ex("AFR31 advise when ready for descent to FL200"), "")
+  check_eq(ex("AFR31 when ready climb FL300"), "ALT AFR31 FL300")
+  asked(ex("AFR31 heading 120 left, turn right"), "two sides, 'turn' before the second")
+  asked(ex("AFR31 heading 200 right turn left"), "two sides after the heading")
+  check_eq(ex("AFR31 heading 120 left turn"), "HDG AFR31 120 LEFT")
+end
