@@ -13591,7 +13591,14 @@ function G:not_simulated()
         -- (a comma goes on: "hold at BAKUR, left hand pattern, inbound track 270" is one clearance)
         -- (nor does it take a negation: "hold present level, do not climb to FL350" leaves "do not" to be read,
         -- "cancel speed restriction but no need to ..." leaves "no need")
-        if (x.kind == "punct" and x.text ~= ",") or (x.kind == "word" and (x.text == "and" or x.text == "then"))
+        -- (with `corrected_through`, a mark before a correction's word goes on: "expect to descend FL100... no, FL90"
+        -- corrects the value expected, no clearance)
+        local nx = e + 1
+        while self.t[nx] and self.t[nx].kind == "punct" do nx = nx + 1 end
+        local corrected = class.corrected_through and x.kind == "punct" and self:word(nx, "no sorry correction rather "
+          .. "pardon oops")
+        if (x.kind == "punct" and x.text ~= "," and not corrected)
+            or (x.kind == "word" and (x.text == "and" or x.text == "then"))
             or self:word(e, "not never don't dont") or (self:word(e, "do") and self:word(e + 1, "not"))
             or (self:word(e, "no") and self:word(e + 1, "need needs")) then
           break

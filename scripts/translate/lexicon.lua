@@ -2263,9 +2263,10 @@ return {
     -- own navigation to MNR shortly"); an aircraft then "to" after it ("expect IBE3142 to climb to FL200") is the
     -- speaker's expectation of that aircraft, no pilot's planning (`not_aircraft_to`): asked whether it is sent
     -- ("expect to descend and maintain FL120": a level joined by "maintain" straight after the motion expected is
-    -- asked, `maintain_joined`, grammar.lua G:not_simulated)
+    -- asked, `maintain_joined`; "expect to descend FL100... no, FL90": a correction after a mark corrects what is
+    -- expected, `corrected_through`; grammar.lua G:not_simulated)
     { what = "expected clearances", words = "expect expecting", clause = true, not_aircraft_to = true,
-      maintain_joined = true },
+      maintain_joined = true, corrected_through = true },
     -- "expedite through FL170": a rate while crossing a level, which squawk does not model
     { what = "expedite instructions", words = "expedite", near = { "through", "passing" } },
     -- "climb FL300 quickly", "descend FL200, expedite", "turn hard left heading 350", "climb rapidly to FL300": how
