@@ -1412,6 +1412,108 @@ function G.said_restated(text)
   end
   return text
 end
+-- "negative, I said one four zero, descend flight level one two zero", "I said 140 and turn left heading 120": "I
+-- said" and a run of bare numbers (digits or number words: no unit, no value's name, no letters) ended by a mark or
+-- "and"/"then" name a value of no kind; a later run of values with other digits (none with the same: then
+-- G.said_restated drops the run) leaves open which value is meant and what the first one was. Returns the question
+-- naming both, or nil. A later value taken back with "not" ("I said 140, not 120") and a first value with its kind
+-- or unit ("I said heading 140, ...", "I said 250 knots, ...") are no conflict.
+function G.said_conflict(text)
+  if not text:find("[Ss][Aa][Ii][Dd]") then return nil end
+  local toks = bare_words(text)
+  local function number(t) return t and (t.raw:match("^%d+[,;.:]?$") or NUMBER_WORDS[t.bare]) end
+  local function value(t) return t and (t.raw:match("%d[,;.:]?$") or NUMBER_WORDS[t.bare]) end
+  local function digits(t)
+    if t.raw:match("%d") then return (t.raw:gsub("%D", "")) end
+    return G.said_digit[t.bare] or ""
+  end
+  for k = 1, #toks - 2 do
+    if toks[k].bare == "i" and toks[k + 1].bare == "said" and not toks[k + 1].raw:match("%p$") then
+      local j, key = k + 2, ""
+      while j < k + 8 and number(toks[j]) do
+        key = key .. digits(toks[j])
+        j = j + 1
+        if toks[j - 1].raw:match("[,;.:]$") then break end
+      end
+      local closed = toks[j] and (toks[j - 1].raw:match("[,;.:]$") or toks[j].bare == "and" or toks[j].bare == "then")
+      if key ~= "" and j > k + 2 and closed then
+        local m, other, same = j, nil, false
+        while toks[m] do
+          if value(toks[m]) then
+            local b, run = m, ""
+            while value(toks[m]) do
+              run = run .. digits(toks[m])
+              m = m + 1
+              if toks[m - 1].raw:match("[,;.:]$") then break end
+            end
+            local denied = b > 1 and (toks[b - 1].bare == "not" or toks[b - 1].bare == "no")
+            if run == key then same = true
+            elseif run ~= "" and not denied and not other then
+              local from = (toks[j].bare == "and" or toks[j].bare == "then") and toks[j + 1] or toks[j]
+              other = { from.at, toks[m - 1].e }
+            end
+          else
+            m = m + 1
+          end
+        end
+        if other and not same then
+          return string.format("You said '%s', then '%s': which value do you mean? Please say the instruction "
+            .. "again with its value.", (text:sub(toks[k + 2].at, toks[j - 1].e - 1):gsub("[,;.:]$", "")),
+            (text:sub(other[1], other[2] - 1):gsub("[,;.:]$", "")))
+        end
+      elseif key ~= "" and j > k + 2 and not toks[j] then
+        -- ("descend FL120 and maintain, I said one three zero": the run closing the request, after values of
+        -- instructions with other digits: a level typed "FL120", or a run after a value's name or verb)
+        local m, last, same = 1, nil, false
+        while m < k do
+          local lead = m > 1 and G.said_value_leads[toks[m - 1].bare]
+          if value(toks[m]) and (lead or toks[m].raw:match("^[Ff][Ll]%d")) then
+            local b, run = m, ""
+            while m < k and value(toks[m]) do
+              run = run .. digits(toks[m])
+              m = m + 1
+              if toks[m - 1].raw:match("[,;.:]$") then break end
+            end
+            if run == key then same = true end
+            last = { toks[lead and b - 1 or b].at, toks[m - 1].e }
+          else
+            m = m + 1
+          end
+        end
+        if last and not same then
+          return string.format("You said '%s' after '%s': which value do you mean? Please say the instruction again "
+            .. "with its value.", (text:sub(toks[k + 2].at, toks[j - 1].e - 1):gsub("[,;.:!?]$", "")),
+            (text:sub(last[1], last[2] - 1):gsub("[,;.:]$", "")))
+        end
+      end
+    end
+  end
+  return nil
+end
+-- (the words before a run of numbers that make it an instruction's value, for G.said_conflict)
+G.said_value_leads = { level = true, fl = true, heading = true, hdg = true, speed = true, spd = true, altitude = true,
+  alt = true, mach = true, climb = true, descend = true, maintain = true, to = true, turn = true, reduce = true,
+  increase = true }
+-- "heading zero four five to zero one zero", "speed two eight zero to two five zero": two runs of exactly three
+-- spoken digits with "to" between are two values, the one left and the one flown to (handlers' m:value_left), never
+-- one run of seven digits with "to" heard as "two": both are written as their digits ("045 to 010"). Returns the text.
+function G.spoken_triples_to(text)
+  if not text:find("%f[%a][Tt][Oo]%f[%A]") then return text end
+  local toks = bare_words(text)
+  local function digit(k) return toks[k] and not toks[k].raw:match("%d") and G.said_digit[toks[k].bare] end
+  for k = 4, #toks - 3 do
+    if toks[k].bare == "to" and toks[k].raw:lower() == "to" and digit(k - 1) and digit(k - 2) and digit(k - 3)
+        and not digit(k - 4) and digit(k + 1) and digit(k + 2) and digit(k + 3) and not digit(k + 4)
+        and not toks[k - 1].raw:match("%p$") then
+      local left = G.said_digit[toks[k - 3].bare] .. G.said_digit[toks[k - 2].bare] .. G.said_digit[toks[k - 1].bare]
+      local right = G.said_digit[toks[k + 1].bare] .. G.said_digit[toks[k + 2].bare] .. G.said_digit[toks[k + 3].bare]
+      local tail = toks[k + 3].raw:match("%p+$") or ""
+      return G.spoken_triples_to(text:sub(1, toks[k - 3].at - 1) .. left .. " to " .. right .. tail
+        .. text:sub(toks[k + 3].e))
+    end
+  end
+  return text
+end
 -- The value token t holds (digits, a number word, a unit), or nil.
 function G.said_but_value(t)
   return t.raw:match("%d%p*$") or NUMBER_WORDS[t.bare] or UNIT_WORDS[t.bare]
@@ -9645,7 +9747,9 @@ function G:aircraft_ends_at(k)
   return false
 end
 function G:refused_or_requested()
-  if not self:said("unable request requests requesting like standby stand") then return end
+  if not self:said("unable request requests requesting requested like standby stand wants wanted asking asks asked") then
+    return
+  end
   local out = " " .. table.concat(self.out, " ; ") .. " "
   for k = 1, #self.t do
     local from
@@ -9656,6 +9760,15 @@ function G:refused_or_requested()
         or self:word(k, "would") and self:word(k + 1, "like") and not self:word(k + 2, "me"))
         and k > 1 and (self:word(k - 1, "he she it pilot crew") or self:aircraft_ends_at(k)) then
       from = self:word(k, "would") and k + 2 or k + 1
+    elseif k > 1 and (self:word(k, "requesting requested wants wanted") and not self:word(k + 1, "you me us")
+        or self:word(k, "asking asks asked") and self:word(k + 1, "for"))
+        and (k > 2 and self:word(k - 1, self:word(k, "requested") and "has had just" or "is was just now")
+          and (self:word(k - 2, "he she pilot crew") or self:aircraft_ends_at(k - 1))
+          or self:word(k - 1, "he she pilot crew") or self:aircraft_ends_at(k)) then
+      -- ("KLM12 is requesting to climb FL300", "KLM12 has requested FL300", "KLM12 wants to climb to FL300", "the
+      -- pilot is asking for FL300": the request told, with its auxiliary; "KLM12 is requested to ..." and "it is
+      -- requested that ..." are the speaker's own request, an instruction)
+      from = self:word(k + 1, "for") and k + 2 or k + 1
     end
     if from then
       local e = from
@@ -9667,7 +9780,9 @@ function G:refused_or_requested()
       end
       for _, q in ipairs(self:quantities(from, e)) do
         local d = q.number and q.number.digits
-        if d and not again[d] and out:find("[%s%a]" .. d .. "[%s;]") then
+        -- (or taken by a command in another unit or as a change from the aircraft's present value: "is requesting to
+        -- turn left 15 degrees", "to climb to 9000 metres")
+        if d and not again[d] and (out:find("[%s%a]" .. d .. "[%s;]") or (self.changes or {})[q.b] or self.taken[q.b]) then
           return self:need(string.format("I have %s, but '%s' is no clearance (refused, requested or to come). "
             .. "Should I give it? Please say it as an instruction.", table.concat(self.out, " ; "),
             (self:raw(k, e):gsub(" ([,.;:])", "%1"))))
@@ -12587,6 +12702,8 @@ function G:hedged()
   local function closes(k) return self.t[k] == nil or self.t[k].kind == "punct" end
   for _, q in ipairs(self:quantities(1, #self.t + 1)) do
     local k, said = q.e, nil
+    -- (a comma between: "turn right 25 degrees, I think", "mach 0.80, maybe")
+    if self.t[k] and self.t[k].text == "," and self:word(k + 1, G.hedge_openers) then k = k + 1 end
     if self:word(k, G.hedge_openers) then  -- (each reading opens on one of them)
       if self:word(k, G.hedge_words) and closes(k + 1) then said = self:raw(k, k + 1) end
       for _, p in ipairs(said and {} or h.pairs) do
@@ -13722,11 +13839,36 @@ function G:not_simulated()
       if class.clock then e = self:clock_limit(i) end
       while e <= #self.t and not class.manner and not class.rate_manner and not class.clock do
         local x = self.t[e]
+        -- ("expect to descend and maintain FL120", "expect descent, maintain one two thousand": "maintain" joined
+        -- straight after an expected climb or descent may give the level expected or one cleared now: asked, unless
+        -- it is the aircraft's present level, kept now)
+        if class.maintain_joined and (x.text == "," or x.text == "and") and self:word(e + 1, "maintain")
+            and self:word_in(i, e, "climb climbing descend descending descent") then
+          local q = self:quantities(e + 2, math.min(#self.t + 1, e + 10))[1]
+          local a = self:refs_in(1, i, "aircraft")[1]
+          local now = a and self:state(a.name)
+          local ft = q and q.kind == "alt" and level_feet(handlers.format.alt(q.value, q.fl))
+          if q and q.b <= e + 4 and (q.kind == "alt" or q.kind == "plain") and not (now and now.alt_ft and ft and math.abs(now.alt_ft - ft) <= 50) then
+            self:need(string.format("Is 'maintain %s' a clearance to send now, or the level to expect with '%s'? "
+              .. "Please say the instruction itself.", self:raw(q.b, q.e), self:raw(i, e)))
+            break
+          end
+        end
+        -- (a comma before a word taking back what was said ends it: "climb FL380, contact Gander on 127.15, cancel
+        -- that" may take back the climb too, which is left to read)
+        if x.text == "," and self:word(e + 1, "cancel disregard scratch belay forget ignore") then break end
         comma = comma or (x.kind == "punct" and x.text == ",")
         -- (a comma goes on: "hold at BAKUR, left hand pattern, inbound track 270" is one clearance)
         -- (nor does it take a negation: "hold present level, do not climb to FL350" leaves "do not" to be read,
         -- "cancel speed restriction but no need to ..." leaves "no need")
-        if (x.kind == "punct" and x.text ~= ",") or (x.kind == "word" and (x.text == "and" or x.text == "then"))
+        -- (with `corrected_through`, a mark before a correction's word goes on: "expect to descend FL100... no, FL90"
+        -- corrects the value expected, no clearance)
+        local nx = e + 1
+        while self.t[nx] and self.t[nx].kind == "punct" do nx = nx + 1 end
+        local corrected = class.corrected_through and x.kind == "punct" and self:word(nx, "no sorry correction rather "
+          .. "pardon oops")
+        if (x.kind == "punct" and x.text ~= "," and not corrected)
+            or (x.kind == "word" and (x.text == "and" or x.text == "then"))
             or self:word(e, "not never don't dont") or (self:word(e, "do") and self:word(e + 1, "not"))
             or (self:word(e, "no") and self:word(e + 1, "need needs")) then
           break
@@ -14133,6 +14275,92 @@ end
 function G:setting_twice()
   local q = M.setting_twice(self.out)
   if q then return self:need(q) end
+end
+
+-- "set the protected zone to 5 miles and 2000 feet, the standard values", "dtmult 2, the default": a value called
+-- BlueSky's standard or default that is not (G.standard_settings: ZONER 5 NM, ZONEDH 1000 ft, DTMULT 1, DT 0.05 s,
+-- DTLOOK 300 s) contradicts itself: asked, naming the standard. "standard"/"default" names the values of its own
+-- clause (between marks), or, when that clause holds no value and only words naming them ("the standard values
+-- please", "those are the defaults"), those of the nearest clause before it that has one. The word before a value
+-- ("instead of the default 1.05", "the standard 5 miles"), before the thing it qualifies ("standard rate"), or after
+-- "not"/"non" is not this; neither is a value in a clause of its own beside it ("dtmult 4, lookahead back to default").
+G.standard_settings = { ZONER = 5, ZONEDH = 1000, DTMULT = 1, DT = 0.05, DTLOOK = 300 }
+G.standard_units = { ZONER = " NM", ZONEDH = " ft", DTMULT = "", DT = " s", DTLOOK = " s" }
+function G:standard_values_said()
+  local n = #self.t
+  local function clause(k)
+    local b, e = k, k
+    while b > 1 and self.t[b - 1].kind ~= "punct" do b = b - 1 end
+    while e <= n and self.t[e].kind ~= "punct" do e = e + 1 end
+    return b, e
+  end
+  for x = 1, n do
+    if self:word(x, "standard default defaults") and not self:word(x - 1, "not non no")
+        and not self:word(x + 1, "speed rate turn route routing arrival departure star sid instrument procedure")
+        and not (self.t[x + 1] and self.t[x + 1].kind == "number")
+        and not (self:word(x + 1, "value setting") and self.t[x + 2] and self.t[x + 2].kind == "number") then
+      local b, e = clause(x)
+      local qs = self:quantities(b, e)
+      -- (a standard of the speaker's own, said with its value: "because the standard in our experiment is 6", "our
+      -- default is 2")
+      if self:word(x - 1, "our my your their this its") then return end
+      for _, q in ipairs(qs) do
+        if q.b > x and self:word_in(x + 1, q.b, "is are was be of equals") then return end
+      end
+      if #qs == 0 then
+        local naming = true
+        for k = b, e - 1 do
+          naming = naming and (self.t[k].filler or self:word(k, "the standard default defaults value values setting "
+            .. "settings those these they are is were which as per like usual normal ones please bluesky's bluesky"))
+        end
+        if naming then
+          -- (the clauses before it in its sentence, or in the sentence before when its own holds no value)
+          while b > 2 and not (#qs > 0 and self.t[b - 1].text:match("^[.?!]$")) do
+            b, e = clause(b - 2)
+            for _, q in ipairs(self:quantities(b, e)) do qs[#qs + 1] = q end
+          end
+        else
+          -- ("back to default, 5 nm and 2000 ft", "to the defaults: 5 nm, 1500 ft": the clauses straight after it
+          -- that hold only values name them)
+          while e < n do
+            local cb, ce = clause(e + 1)
+            local vs, covered = self:quantities(cb, ce), {}
+            for _, q in ipairs(vs) do
+              for k = q.b, q.e - 1 do covered[k] = true end
+            end
+            for k = cb, ce - 1 do
+              if not (covered[k] or self.t[k].filler or self:word(k, "and please")) then vs = {} end
+            end
+            if #vs == 0 then break end
+            for _, q in ipairs(vs) do qs[#qs + 1] = q end
+            e = ce
+          end
+        end
+      end
+      local wrong, standard, said = {}, {}, {}
+      for _, line in ipairs(self.out) do
+        local cmd, v = line:match("^(%u+) (%-?[%d%.]+)$")
+        local std = cmd and G.standard_settings[cmd]
+        if std then
+          for _, q in ipairs(qs) do
+            if q.value == tonumber(v) and tonumber(v) ~= std and not said[line] then
+              said[line] = true
+              wrong[#wrong + 1] = line
+              standard[#standard + 1] = cmd .. " " .. std .. G.standard_units[cmd]
+              break
+            end
+          end
+        end
+      end
+      if #wrong > 0 then
+        return self:need(string.format("I have %s, but '%s' is not BlueSky's %s value (%s). Which do you mean: "
+          .. "the value said, or the %s?", table.concat(self.out, " ; "), table.concat(wrong, " ; "),
+          self.words[x]:match("^default") and "default" or "standard", table.concat(standard, ", "),
+          self.words[x]:match("^default") and "default" or "standard"))
+      end
+      return
+    end
+  end
 end
 
 -- "Is DTMULT still 5?", "is the look-ahead still 300 seconds?": a request opening with "is" or "are" and no verb of
@@ -17213,6 +17441,18 @@ function M.translate(text, world)
   -- (the Turkish letters of UTF-8 Latin Extended-A: "hayır", "sağol", "Şile")
   if text:find("[\xC4\xC5]") then text = text:gsub("[\xC4\xC5][\x80-\xBF]", lexicon.accents) end
   text = G.id_label(G.hold_after_ff(G.time_before_fast(numbered_steps(G.title_label(G.spoken_ddmm(G.spoken_zeros(G.number_words_apart(text))))))), world)
+  local said_conflict = G.said_conflict(text)
+  if said_conflict then return { commands = {}, ask = said_conflict } end
+  text = G.spoken_triples_to(text)
+  -- ("three hundred & ten knots": an ampersand after "hundred" or "thousand" and before a number word is the "and"
+  -- inside the number)
+  if text:find("&", 1, true) then
+    text = text:gsub("(%f[%a][Hh][Uu][Nn][Dd][Rr][Ee][Dd])%s*&%s*(%a+)", function(h, w)
+      if NUMBER_WORDS[w:lower()] then return h .. " and " .. w end
+    end):gsub("(%f[%a][Tt][Hh][Oo][Uu][Ss][Aa][Nn][Dd])%s*&%s*(%a+)", function(h, w)
+      if NUMBER_WORDS[w:lower()] then return h .. " and " .. w end
+    end)
+  end
   -- ("climb to 10 km", "descend to 7.5 km": a level in kilometres straight after the vertical verb, as metres)
   if text:find("km", 1, true) then
     for _, verb in ipairs({ "[Cc]limbs?%s+to", "[Cc]limbs?", "[Dd]escends?%s+to", "[Dd]escends?" }) do
@@ -17656,6 +17896,9 @@ function M.translate(text, world)
   if not g.ask and #g.out > 0 and #g.refs > 1 then g:aircraft_aside() end
   if not g.ask then g:list_value() end
   if not g.ask then g:setting_twice() end
+  if not g.ask and #g.out > 0 and (lower:find("standard", 1, true) or lower:find("default", 1, true)) then
+    g:standard_values_said()
+  end
   if not g.ask then g:setting_question() end
   if not g.ask and #g.out > 0 then g:opinion_question(lower) end
   if not g.ask and #g.out > 0 then g:offer_question(lower) end

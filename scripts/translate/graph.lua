@@ -290,12 +290,23 @@ function M.translate(text, opts)
   if parts then
     local scratch = simulator(opts):copy()
     local all, trace, seen = {}, {}, {}
-    for _, part in ipairs(parts) do
+    for k, part in ipairs(parts) do
       local r = M.translate(part, setmetatable({ sim = scratch, in_list = true }, { __index = opts }))
       for _, t in ipairs(r.trace or {}) do trace[#trace + 1] = { node = t.node, said = "[" .. part .. "] " .. t.said } end
       if r.ask or r.error then
         r.trace = trace
         return r
+      end
+      -- ("trails on, dt 5s", "trails on; DT 5": a clause of a bare "dt" and its time straight after the trails were
+      -- switched may be their own interval, TRAIL ON dt, or the simulation's step: asked, as in one clause; both typed
+      -- as TrafScript, in capitals, "TRAIL ON, DT 5", are the two commands)
+      local step = #r.commands == 1 and r.commands[1]:match("^DT ([%d%.]+)$")
+      local typed = part:match("^DT%s") and (parts[k - 1] or ""):match("^TRAIL ON$")
+      if step and not typed and (all[#all] or ""):match("^TRAIL ON$") and part:lower():match("^dt%f[%A]") then
+        local q = string.format("Is %s s the trails' interval (TRAIL ON %s) or the simulation's time step (DT %s)?",
+          step, step, step)
+        trace[#trace + 1] = { node = "list", said = "asks: " .. q }
+        return { ask = q, trace = trace, mode = opts.mode or "offline" }
       end
       -- (the same command in two clauses, "hold on, pause", runs once)
       for _, c in ipairs(r.commands) do

@@ -2214,6 +2214,33 @@ function m:type_refs()
     if r.kind == "aircraft" and not r.by_airline then named[r.name] = true end
   end
   local callsigns = next(named) ~= nil
+  -- ("KLM12, the dreamliner needs to climb FL300", "KLM12 the 777 climb FL300", "KLM12, sorry, the Boeing, descend": a
+  -- type said after "the" straight after a callsign, commas and a correction's words between at most, that the callsign's aircraft is not of while
+  -- another aircraft flying is, leaves open which of them is meant: asked. One it fits is in apposition ("KLM12, the
+  -- A320, climb"); traffic told after it ("KLM12, the 777 is above you") is left to read.)
+  for _, r in ipairs(callsigns and self.refs or {}) do
+    -- (a correction's word between: "KLM12, sorry, the dreamliner needs to ...")
+    local k = r.e
+    while k < r.e + 5 and self.t[k] and (self.t[k].text == "," or self:word(k, "sorry no correction i mean rather")) do
+      k = k + 1
+    end
+    if r.kind == "aircraft" and r.exists and not r.by_airline and not r.by_description and self:word(k, "the") then
+      local test, e = self:type_said(k + 1)
+      local own
+      for _, a in ipairs(self.fleet) do if a.id == r.name then own = a.type and a.type:upper() end end
+      if test and own and not test(own) and not self:word(e, "is are was were 's at above below ahead behind in on "
+          .. "passing near close and or") then
+        local fits = {}
+        for _, a in ipairs(self.fleet) do
+          if a.type and a.id ~= r.name and test(a.type:upper()) then fits[#fits + 1] = a.id end
+        end
+        if #fits > 0 then
+          return self:need(string.format("Which aircraft do you mean: %s (%s) or '%s' (%s)? Please give its callsign.",
+            r.name, own, self:raw(k, e), table.concat(fits, ", ")))
+        end
+      end
+    end
+  end
   local i = 1
   local last = self:said("the") and #self.t or math.min(#self.t, 1)  -- (a type is read after "the" or opening)
   while i <= last do

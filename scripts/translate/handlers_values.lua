@@ -145,6 +145,18 @@ return function(H, f, wrap, compass)
           local knots = self:word(k, "@speed_units") or self:word(self:skip_fillers(k + 1), "@speed_units")
             -- ("maintain 280 or greater": a speed's bound; a level's is "or above")
             or (self:word(k, "or") and self:word(k + 1, "greater faster"))
+          -- ("climb FL310 and maintain three one zero", "descend to flight level one two zero and maintain, one two
+          -- zero": a bare number whose hundreds of feet are a level said before it in the request, no aircraft named
+          -- between, is that level restated, no speed)
+          if not knots and not q.number.thousand and not q.number.hundred then
+            for _, r in ipairs(self:quantities(1, s.trig)) do
+              if r.kind == "alt" and math.abs(r.value - q.value * 100) < 1 and #self:refs_in(r.e, s.trig, "aircraft") == 0 then
+                self:acids(s)
+                self:take(q)
+                return
+              end
+            end
+          end
           -- "keep it at 230", typed with no unit: a flight level or a speed? The aircraft's own present
           -- level or speed says which is kept; otherwise asked
           if q.number.typed and not knots and q.value >= 100 and q.value <= 400 and q.value == math.floor(q.value)
@@ -1100,15 +1112,15 @@ return function(H, f, wrap, compass)
     -- both sides said for the turn with no correction word between ("left DLH404 turn right heading 090", "turn
     -- left heading 180, sorry, I meant to the right"): the later side when a self-correction marker
     -- (lexicon.self_correction.markers' words) is said between them; else asked when both come before the end of
-    -- the turn's value or straight after it ("turn left heading 200 right"; a side later, "..., traffic left ten
-    -- o'clock", "vectors ILS 25 right", is another's)
+    -- the turn's value or straight after it ("turn left heading 200 right"), or after "turn" ("heading 120 left, turn
+    -- right"; a side later, "..., traffic left ten o'clock", "vectors ILS 25 right", is another's)
     local first = math.min(self:find_word(tb, s.e, "@left"), self:find_word(tb, s.e, "@right"))
     local value_end = (abs and abs.e) or (rel and rel.e) or s.e
     for x = first + 1, first < s.e and s.e - 1 or 0 do
       if self:word(x, "@left @right") and self.words[x] ~= self.words[first] and not self.noted[x] then
         if marker_in(self, first + 1, x) then
           turn, tb = self:word(x, "@right") and 1 or -1, x
-        elseif x < value_end or x == self:skip_fillers(value_end) then
+        elseif x < value_end or x == self:skip_fillers(value_end) or self:word(x - 1, "turn turning") then
           return self:need(string.format("Should %s turn left or right? I heard '%s' and '%s'.", ids[1],
             self.t[first].raw, self.t[x].raw))
         end

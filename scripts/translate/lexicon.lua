@@ -974,12 +974,13 @@ return {
   -- "active" is none, "the United's active waypoint")
   state_after_s = { "on", "off", "enabled", "disabled", "switched", "turned" },
   -- a pilot's question back to the controller, no instruction (G:question_back): "say again (the level)"
-  -- with no value in its clause asks for a repeat; "confirm cleared FL200?", "confirm heading 270?" with a value
+  -- with no value in its clause asks for a repeat; "confirm cleared FL200?", "confirm heading 270?", "verify assigned
+  -- altitude FL300" with a value
   -- asks whether a clearance stands. Not after `not_after` ("I say again 260" is the controller's own repeat).
   -- A clause ending in "?" that holds one of `past` asks what was done before ("which one did Pablo use last
   -- week?"): a question, no instruction. A repeat asked with one of `addressed` after it ("say again your
   -- speed") is the controller asking the aircraft for its own value: a report, read as "say your speed".
-  question_back = { repeat_words = { "say again", "say that again" }, confirm = { "confirm" },
+  question_back = { repeat_words = { "say again", "say that again" }, confirm = { "confirm", "verify" },
                     not_after = { "i", "we" }, past = { "did", "didn't" }, addressed = { "your" } },
   -- the wrong value a pilot read back, named by the controller after the corrected instruction ("descend and
   -- maintain 6000, you said seven", ", readback was one one thousand"): each phrase, after a comma, opens a
@@ -2223,6 +2224,9 @@ return {
     -- "when" or "if" opens no condition)
     { what = "reports of what the aircraft is able to fly", words = "advise report say tell know", near = { "able" },
       window = 3, clause = true, able = true },
+    -- ("say when ready to climb FL300", "advise when ready for descent": the same, of when it is ready)
+    { what = "reports of what the aircraft is able to fly", words = "advise report say tell know", near = { "ready" },
+      window = 3, clause = true, able = true },
     -- "report level FL150", "report level at 5000", "report heading 090": the pilot's report on reaching that
     -- value, no clearance to it (`through`: the state word stays in the phrase, its value with it)
     { what = "position reports", words = "report reporting", near = { "level", "altitude", "heading", "speed", "mach" },
@@ -2264,7 +2268,11 @@ return {
     -- pilot's planning, no clearance (lexicon.not_a_clearance), up to the end of its clause ("expect to resume
     -- own navigation to MNR shortly"); an aircraft then "to" after it ("expect IBE3142 to climb to FL200") is the
     -- speaker's expectation of that aircraft, no pilot's planning (`not_aircraft_to`): asked whether it is sent
-    { what = "expected clearances", words = "expect expecting", clause = true, not_aircraft_to = true },
+    -- ("expect to descend and maintain FL120": a level joined by "maintain" straight after the motion expected is
+    -- asked, `maintain_joined`; "expect to descend FL100... no, FL90": a correction after a mark corrects what is
+    -- expected, `corrected_through`; grammar.lua G:not_simulated)
+    { what = "expected clearances", words = "expect expecting", clause = true, not_aircraft_to = true,
+      maintain_joined = true, corrected_through = true },
     -- "expedite through FL170": a rate while crossing a level, which squawk does not model
     { what = "expedite instructions", words = "expedite", near = { "through", "passing" } },
     -- "climb FL300 quickly", "descend FL200, expedite", "turn hard left heading 350", "climb rapidly to FL300": how

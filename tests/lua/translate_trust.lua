@@ -20370,3 +20370,154 @@ do
   check_eq(ex("KLM12 direct AAA01, then DLH4 direct BBB02"),
     "DIRECT KLM12 AAA01 ; ADDWPT DLH4 BBB02 ; DIRECT DLH4 BBB02")
 end
+
+-- Cycle 63 (fhz13)
+-- A readback correction ("negative, I said ...") naming a bare number (no unit, no value's name) and then an instruction
+-- with another value is asked, naming both; the same digits again are one instruction; a value with its kind, or
+-- one taken back with "not", stays read.
+do
+  local _, ex = scene({ "CRE ELY77 A320 31.0 34.8 180 FL160 280", "CRE ISR42 AT76 31.5 34.9 190 FL140 220" })
+  asked(ex("ELY77 negative, I said one six zero, descend flight level one one zero"), "a bare value, then another level")
+  asked(ex("ELY77 negative I said 160, descend FL110"), "typed digits, then another level")
+  asked(ex("ELY77 no, I said one six zero; turn left heading 130"), "a bare value, then a heading")
+  asked(ex("ELY77 I said one six zero and descend flight level one one zero"), "joined by 'and'")
+  asked(ex("ELY77 I said 230, then speed two one zero"), "a bare value, then another speed")
+  check_eq(ex("ELY77 negative, I said one one zero, descend flight level one one zero"), "ALT ELY77 FL110")
+  check_eq(ex("ELY77 negative, I said 110, descend FL110"), "ALT ELY77 FL110")
+  check_eq(ex("ELY77 negative, I said heading one three zero, descend flight level one one zero"),
+    "HDG ELY77 130 ; ALT ELY77 FL110")
+  check_eq(ex("ELY77 no, I said 250 knots, descend FL110"), "SPD ELY77 250 ; ALT ELY77 FL110")
+  check_eq(ex("ELY77 negative, I said flight level one one zero, not one zero zero"), "ALT ELY77 FL110")
+  asked(ex("ELY77 negative, I said flight level one three zero, descend flight level one one zero"), "two levels")
+end
+
+-- A setting's value called BlueSky's standard or default when it is not (ZONER 5 NM, ZONEDH 1000 ft, DTMULT 1, DT 0.05 s,
+-- DTLOOK 300 s) is asked, naming the standard; the standard values said as standard, and a standard of the speaker's
+-- own with its value, are read.
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 90 FL250 280" })
+  asked(ex("put the protected zone at 5 nm and 1500 ft, which are the standard values"), "1500 ft called standard")
+  asked(ex("protected zone 4 miles radius, 1000 ft vertical, the defaults please"), "4 NM called default")
+  asked(ex("Zone radius 5 NM and half height 2000 ft. Those are the standard values."), "the sentence before")
+  asked(ex("reset the pz to the defaults: 5 nm, 2000 ft"), "the values after the word")
+  asked(ex("set pz 5 nm / 2000 ft (standard)"), "in brackets")
+  asked(ex("set dtmult to 3, the default"), "DTMULT 3 called default")
+  asked(ex("time step 0.2 s, default value"), "DT 0.2 called default")
+  check_eq(ex("put the protected zone at 5 nm and 1000 ft, which are the standard values"), "ZONER 5 ; ZONEDH 1000")
+  check_eq(ex("lookahead 300 s, the default"), "DTLOOK 300")
+  check_eq(ex("zone radius 6 nm instead of the default 5"), "ZONER 6")
+  check_eq(ex("change the zone radius to 7 nm, since the standard in this study is 7"), "ZONER 7")
+end
+
+-- Settings listed with commas: a bare "dt" and its time in the clause straight after the trails were switched on may be
+-- the trails' interval or the simulation's step: asked, as in one clause; typed as TrafScript in capitals it is DT;
+-- nothing in a list is dropped.
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 90 FL250 280" })
+  asked(ex("trails on, dt 2s"), "dt after trails, comma")
+  asked(ex("show trails; dt 10 sec"), "dt after trails, semicolon")
+  asked(ex("trails on, then dt 0.5 seconds"), "dt after trails, 'then'")
+  check_eq(ex("TRAIL ON, DT 2"), "TRAIL ON ; DT 2")
+  check_eq(ex("dt 0.2s, trails on"), "DT 0.2 ; TRAIL ON")
+  check_eq(ex("trails on, dtmult 8"), "TRAIL ON ; DTMULT 8")
+  check_eq(ex("trails on, interval 4s"), "TRAIL ON 4")
+  check_eq(ex("seed 3, trails on, dtmult 12, ff 20 min"), "SEED 3 ; TRAIL ON ; DTMULT 12 ; FF 1200")
+  check_eq(ex("noise on and trails off and dtmult 2"), "NOISE ON ; TRAIL OFF ; DTMULT 2")
+end
+
+-- An airline of several countries (SAS: Danish, Swedish, Norwegian) is of each: "the Danish" with an SAS and a
+-- Danish Air Transport flight flying is asked; with only the SAS of those countries it is the SAS; "the Norwegian" is
+-- the airline Norwegian where one flies.
+do
+  local _, both = scene({ "CRE SAS20 A20N 55.4 12.1 045 FL90 250", "CRE DTR33 AT76 55.3 13.0 320 7000 200",
+    "CRE EZY47JD A320 55.05 12.4 010 FL150 280" })
+  asked(both("could the Danish turn right heading 020"), "SAS and DTR both Danish")
+  asked(both("the Danish one, climb FL110"), "SAS and DTR both Danish")
+  check_eq(both("the Danish ATR climb 8000 ft"), "ALT DTR33 8000")
+  check_eq(both("the Swedish climb FL120"), "ALT SAS20 FL120")
+  local _, sas = scene({ "CRE SAS20 A20N 55.4 12.1 045 FL90 250", "CRE EZY47JD A320 55.05 12.4 010 FL150 280" })
+  check_eq(sas("the Danish, climb FL110"), "ALT SAS20 FL110")
+  local _, nax = scene({ "CRE SAS1465 A20N 55.4 12.1 045 FL90 250", "CRE NAX12 B738 55.05 12.4 010 FL150 280" })
+  check_eq(nax("the Norwegian climb FL200"), "ALT NAX12 FL200")
+end
+
+-- Cycle 63 (fhz13), hunted: "maintain" with a bare number equal to the level just cleared restates it (no speed);
+-- "I said" and a bare number closing the request after another value asks; "maintain" joined to an expected climb
+-- or descent asks; a pilot's request told ("is requesting", "has requested", "wants", "asks for") asks; a word taking
+-- back said after something squawk does not simulate is left to ask.
+do
+  local _, ex = scene({ "CRE AFR31 A320 48.5 2.5 090 FL250 280", "CRE EZY9 A319 48.7 2.9 270 FL230 270" })
+  check_eq(ex("AFR31 climb flight level three two zero and maintain three two zero"), "ALT AFR31 FL320")
+  check_eq(ex("AFR31 descend to FL180, maintain one eight zero"), "ALT AFR31 FL180")
+  check_eq(ex("AFR31 descend to flight level one eight zero and maintain, one eight zero"), "ALT AFR31 FL180")
+  check_eq(ex("AFR31 descend FL200 and maintain two five zero knots"), "ALT AFR31 FL200 ; SPD AFR31 250")
+  check_eq(ex("AFR31 descend to flight level two zero zero, maintain two eight zero"), "ALT AFR31 FL200 ; SPD AFR31 280")
+  check_eq(ex("AFR31 climb FL320 and maintain three two zero, EZY9 maintain two seven zero"),
+    "ALT AFR31 FL320 ; SPD EZY9 270")
+  asked(ex("AFR31 descend flight level one eight zero and maintain, I said one nine zero"), "'I said' another value last")
+  asked(ex("AFR31 turn right heading one two zero, I said one three zero"), "'I said' another heading last")
+  check_eq(ex("AFR31 descend FL180, I said one eight zero"), "ALT AFR31 FL180")
+  asked(ex("AFR31 expect to descend and maintain FL150"), "maintain joined to an expected descent")
+  asked(ex("AFR31, expect descent at pilot's discretion, maintain one one thousand"), "maintain after a comma")
+  check_eq(ex("AFR31 expect further descent in five minutes, for now maintain FL200"), "ALT AFR31 FL200")
+  check_eq(ex("AFR31 expect descent in ten minutes, maintain FL250"), "ALT AFR31 FL250")
+  check_eq(ex("AFR31, expect to descend FL100... no, FL90 in ten minutes"), "")
+  check_eq(ex("AFR31, expect to descend FL100. Sorry, FL90"), "")
+  check_eq(ex("AFR31 expect to descend FL100. Descend FL200 now"), "ALT AFR31 FL200")
+  asked(ex("AFR31 wants to climb to FL300"), "a wish told")
+  asked(ex("AFR31 is requesting to turn right 20 degrees"), "a request told, a change")
+  asked(ex("AFR31 has requested flight level three four zero"), "a request told, perfect")
+  asked(ex("the pilot of EZY9 is asking for FL250"), "a request told, asking for")
+  check_eq(ex("AFR31 is requested to climb FL300"), "ALT AFR31 FL300")
+  check_eq(ex("AFR31 requests FL300, climb FL300"), "ALT AFR31 FL300")
+  asked(ex("AFR31 climb FL300, contact Reims on 128.3, cancel that"), "cancel after a frequency")
+  asked(ex("AFR31 turn left heading 200, squawk 4521, disregard"), "disregard after a squawk")
+  check_eq(ex("AFR31 climb FL300, contact Reims on 128.3, cancel that, climb FL280"), "ALT AFR31 FL280")
+end
+
+-- Cycle 63 (fhz13), hunted: two runs of three spoken digits with "to" between are the value left and the value flown
+-- to, never seven digits with "to" heard as "two" (the second was dropped); "&" inside a spoken number is its "and".
+do
+  local _, ex = scene({ "CRE SWR8 A320 47.4 8.5 045 FL250 280", "CRE EDW2 A320 47.2 8.9 090 FL230 250" })
+  check_eq(ex("SWR8 heading zero four five to zero one zero"), "HDG SWR8 10")
+  check_eq(ex("SWR8 heading zero four five to zero one zero, left side turn"), "HDG SWR8 10 LEFT")
+  check_eq(ex("SWR8 speed two eight zero to two five zero"), "SPD SWR8 250")
+  check_eq(ex("EDW2 flight level two three zero to two six zero climb"), "ALT EDW2 FL260")
+  asked(ex("EDW2 heading zero four five to zero one zero"), "the first heading is not the one it flies")
+  asked(ex("SWR8 climb flight level to four zero"), "'to' inside one level stays asked")
+  check_eq(ex("SWR8 speed three hundred & ten knots"), "SPD SWR8 310")
+  check_eq(ex("SWR8 climb FL300 & speed 250"), "ALT SWR8 FL300 ; SPD SWR8 250")
+end
+
+-- Cycle 63 (fhz13), hunted: a hedge closing the request after a comma ("..., I think") asks as one straight after the
+-- value; a type said after "the" straight after a callsign (commas and a correction's words between at most) that the
+-- callsign's aircraft is not of, while another flying is, asks which aircraft; one it fits is in apposition.
+do
+  local _, ex = scene({ "CRE AFR31 A320 48.5 2.5 090 FL250 280", "CRE UAE7 A388 48.7 2.9 270 FL330 270",
+    "CRE EZY9 A319 48.2 2.2 180 FL230 250" })
+  asked(ex("AFR31 turn right 30 degrees, I think"), "a hedge after a comma")
+  asked(ex("AFR31 speed mach 0.78, probably"), "'probably' after a comma")
+  check_eq(ex("AFR31 climb FL300, maybe turn left 20 degrees"), "ALT AFR31 FL300 ; HDG AFR31 70 LEFT")
+  asked(ex("AFR31, the A380 needs to climb to FL350"), "callsign then another type, 'needs to'")
+  asked(ex("AFR31 the superjumbo descend FL310"), "callsign then another type, no comma")
+  asked(ex("AFR31, the A380, climb FL350"), "callsign then another type, commas")
+  asked(ex("AFR31, sorry, the A380 has to descend to FL310"), "a correction to a type")
+  check_eq(ex("AFR31, the A320, climb FL300"), "ALT AFR31 FL300")
+  check_eq(ex("AFR31, the A380 is above you, climb FL300"), "ALT AFR31 FL300")
+  check_eq(ex("AFR31 climb FL300 and the A380 descend FL310"), "ALT AFR31 FL300 ; ALT UAE7 FL310")
+end
+
+-- Cycle 63 (fhz13), hunted: "verify" with a value asks as "confirm"; "say when ready to climb FL300" asks for a report
+-- (not simulated: nothing sent);
+-- a side said again after "turn" behind the heading ("heading 120 left, turn right") asks which side.
+do
+  local _, ex = scene({ "CRE AFR31 A320 48.5 2.5 090 FL250 280" })
+  asked(ex("AFR31 verify assigned altitude FL300"), "'verify' with a value")
+  asked(ex("AFR31 verify heading 120?"), "'verify' a heading")
+  check_eq(ex("AFR31 say when ready to climb FL300"), "")
+  check_eq(ex("AFR31 advise when ready for descent to FL200"), "")
+  check_eq(ex("AFR31 when ready climb FL300"), "ALT AFR31 FL300")
+  asked(ex("AFR31 heading 120 left, turn right"), "two sides, 'turn' before the second")
+  asked(ex("AFR31 heading 200 right turn left"), "two sides after the heading")
+  check_eq(ex("AFR31 heading 120 left turn"), "HDG AFR31 120 LEFT")
+end
