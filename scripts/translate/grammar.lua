@@ -2551,6 +2551,22 @@ G.NOTEBOOK_FIELDS = {
 function G.notebook_assignments(text)
   if not (text:find("[%.%(]%s*%a") or text:find("=", 1, true) or text:find("%a%(")) then return text end
   local fields = G.NOTEBOOK_FIELDS
+  -- "hdg = 270 + 30", "hdg(KLM12) = 90 - 60 left": a heading set to a whole number plus or minus another is their
+  -- sum (wrapped into 1 .. 360), with the side typed after it; a step of 0 or 180 and more is left as typed, and
+  -- a side against the sign ("270 + 30 left") is asked
+  local function heading_sum(field, id, a, sign, b, side)
+    local sd, v, n = side:lower(), tonumber(a), tonumber(b)
+    if fields[field:lower()] ~= "hdg" or v > 360 or n == 0 or n >= 180 then return nil end
+    if (sd == "left" and sign == "+") or (sd == "right" and sign == "-") then
+      return string.format("%s%s = %s right or left", field, id, a)
+    end
+    v = (v + (sign == "+" and n or -n)) % 360
+    return string.format("%s%s = %03d%s", field, id, v == 0 and 360 or v, side ~= "" and " " .. side or "")
+  end
+  text = text:gsub("%f[%a](%a+)()%s*=%s*(%d+)%s*([%-+])%s*(%d+)%f[^%w%.]%s*(%a*)", function(f, _, ...)
+    return heading_sum(f, "", ...)
+  end)
+  text = text:gsub("%f[%a](%a+)(%s*%(%s*[%w_]+%s*%))%s*=%s*(%d+)%s*([%-+])%s*(%d+)%f[^%w%.]%s*(%a*)", heading_sum)
   -- "alt(DLH4AX)=FL310", "dest(EZY45LM) = EHAM": the aircraft in brackets after the setting's name
   text = text:gsub("%f[%w](%a+)%(%s*([%w_]+)%s*%)%s*=%s*", function(field, id)
     if not fields[field:lower()] or not id:find("%d") then return nil end
@@ -2624,10 +2640,97 @@ function G.notebook_assignments(text)
   return text
 end
 
+-- A script's comment, "%" typed apart to the end of the line ("KLM12.alt = 26000 % ft", "hdg(KLM12) = 100; % R"),
+-- read into the value it follows when it holds only lexicon.script_comment_words and numbers already typed
+-- before it ("hdg = 90 - 60 % left 60"): the unit after the value ("26000 ft"), "FL" or "mach" before it ("alt 210
+-- % FL": FL210), a side after both ("100 right"); a rate's "down" is its minus sign ("vs = 1500 % fpm down":
+-- -1500), and "up" or "down" said against the rate's sign, or of anything but a rate, leaves the line as typed,
+-- as does a comment read into no value (the last number before it, typed apart, with nothing after it but
+-- brackets or a semicolon); one with two units, sides or prefixes stays too, its sides typed as letters
+-- written as words ("% R, no, L": "% right, no, left"). A comment of words with none of those, no
+-- number and no word of G.comment_holds ("% request", "% rerouted") is a remark, set apart after a dash as a
+-- notebook's "#" is; any other stays as typed, for the clause rules to read or ask ("% until ARTIP", "% no, 250").
+function G.script_comment(text)
+  local before, comment = text:match("^(.-%S)%s+%%%s*(.-)%s*$")
+  if not before or before:find("%%") then return text end
+  before = before:gsub("%s*;%s*$", "")
+  local kinds, said, words = lexicon.script_comment_words, {}, {}
+  for n in before:gmatch("%d+%.?%d*") do said[tonumber(n)] = true end
+  for w in comment:gmatch("[^%s,]+") do words[#words + 1] = w:lower() end
+  if #words == 0 then return before end
+  local got, known, plain = {}, true, true
+  for _, w in ipairs(words) do
+    local k = kinds[w]
+    if k then
+      plain = false
+      for _, slot in ipairs({ "unit", "prefix", "side" }) do
+        if k[slot] then
+          if got[slot] and got[slot] ~= k[slot] then known, got.two = false, got.two or slot end
+          got[slot] = k[slot]
+        end
+      end
+    elseif w:match("^%d+%.?%d*$") and said[tonumber(w)] then
+      plain = false
+    else
+      known = false
+      if w:find("%d") or G.comment_holds[w] then plain = false end
+    end
+  end
+  if not known then
+    if plain and comment:match("^%a[%a%s,'%-]*$") then return before .. " - " .. comment end
+    -- ("% R L", "% ft kt": two of a kind with no word that takes one back: asked which)
+    local holds = false
+    for _, w in ipairs(words) do holds = holds or G.comment_holds[w] end
+    if got.two and not holds then
+      return before .. " % " .. (got.two == "side" and "right or left" or "feet or knots")
+    end
+    -- (a side typed as its letter, "% no, L", is the word, for the clause rules to read)
+    return before .. " % " .. comment:gsub("%f[%a]([RrLl])%f[%A]", function(x)
+      return x:lower() == "r" and "right" or "left"
+    end)
+  end
+  -- (the value: the last number typed apart, "-1500", "0.78", ".78", with nothing but brackets or ";" after it)
+  local at, sign, num, rest
+  for b, sg, n, e in before:gmatch("()%f[%w%.%-%+]([%-%+]?)(%d*%.?%d+)%f[^%w%.]()") do
+    at, sign, num, rest = b, sg, n, before:sub(e)
+  end
+  if not at or not rest:match("^[%s%)%];]*$") then return text end
+  local side = got.side
+  if side == "up" or side == "down" then
+    if not before:lower():find("%f[%a]vs%f[%A]") or (side == "up" and sign == "-") or (side == "down" and sign == "+") then
+      return text
+    end
+    if side == "down" then sign = "-" end
+    side = nil
+  end
+  return before:sub(1, at - 1) .. sign .. (got.prefix or "") .. num .. (got.unit and " " .. got.unit or "")
+    .. (side and " " .. side or "") .. rest
+end
+
 local function written_forms(text, world)
   -- (each pattern pass runs through where(): only where `low`, the text in lower case, holds what the
   -- pattern requires, its first argument; a rewrite outside where() sets `low` again)
   local low = text:lower()
+  if low:find("%s%%") then text = G.script_comment(text) end
+  if low:find("->", 1, true) then
+    -- "alt 300 -> 340", "fl 330->370": an arrow between two levels typed bare after a level's name (headings and
+    -- speeds were made "from .. to .." before) changes it from the one to the other: the level takes the second
+    text = text:gsub("%f[%a](%a+)(%s+)(%d+)%s*%-+>%s*(%d+)%f[^%w%.]", function(setting, space, from, to)
+      local f = G.NOTEBOOK_FIELDS[setting:lower()]
+      if not (f == "alt" or f == "fl") then return nil end
+      return setting .. space .. to
+    end)
+  end
+  -- "hdg from 135 to 180 R": a heading changed from one value to another with the side typed after it is a turn
+  -- to that side ("turn right hdg from 135 to 180"), the value it leaves checked as said
+  if low:find("from", 1, true) then
+    text = text:gsub("%f[%a](%a+)(%s+[Ff]rom%s+%d+%s+[Tt]o%s+%d+)%s+(%a+)%f[%A]", function(name, span, side)
+      local f, sd = G.NOTEBOOK_FIELDS[name:lower()], side:lower()
+      if f ~= "hdg" then return nil end
+      if sd == "r" or sd == "right" then return "turn right " .. name .. span end
+      if sd == "l" or sd == "left" then return "turn left " .. name .. span end
+    end)
+  end
   text = G.notebook_assignments(text)
   low = text:lower()
   local function where(needle, pattern, repl)
@@ -17528,6 +17631,22 @@ function G.capitals_read(text, world)
   if from == 1 then return text end
   return table.concat(out) .. text:sub(from)
 end
+-- True when the request is "hold on" or "hang on" alone (a script's "hold on" too), with at most "ok", "uh" before it
+-- and "please" or a while ("a second", "one moment") after it: a wait as likely as a pause, asked. With a word of
+-- its own ("hold on, pause"), it is read.
+G.hold_on_around = set_of({ "ok", "okay", "uh", "um", "er", "please", "a", "one", "just", "second", "sec", "moment",
+  "minute" })
+function G.bare_hold_on(text)
+  local low = text:lower()
+  if not (low:find("hold%s+on") or low:find("hang%s+on")) then return false end
+  local rest = low:gsub("%f[%a]h[oa][ln][dg]%s+on%f[%A]", " ", 1)
+  for w in rest:gmatch("[^%s%p]+") do
+    if not G.hold_on_around[w] then return false end
+  end
+  return true
+end
+M.bare_hold_on = G.bare_hold_on  -- (graph.lua asks it of the whole request, before clauses are split)
+
 function M.translate(text, world)
   text = G.capitals_read(text, world or {})
   local unheard = G.unheard_mark(text)
