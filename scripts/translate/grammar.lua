@@ -2640,6 +2640,91 @@ function G.notebook_assignments(text)
   return text
 end
 
+-- A script's ways of writing a request, rewritten into words the grammar reads, clause by clause (";" apart):
+-- "tic", "toc", "clc" (a script's timer and screen clearing) alone are dropped; "disp(X)" is X; "KLM12.route" alone
+-- is "listrte KLM12", "KLM12.pos", "KLM12.alt?" and "[KLM12 DLH4].spd" (a setting named, nothing set) "pos" of each
+-- aircraft, and "disp([KLM12.alt KLM12.spd])" of the one named; "KLM12.pos = [52.4 4.6]" and "KLM12.pos = 'SPY'"
+-- are "move KLM12 ..."; "KLM12 = []" and "rm(KLM12)" "delete KLM12"; "[KLM12 DLH4] alt 300" and "[KLM12; DLH4].spd
+-- = 230" name both aircraft ("KLM12 and DLH4 ..."); "set(KLM12, 'hdg', 270)" and a spreadsheet's "=HDG(KLM12, 270)",
+-- "=ALT(TRA6XN; 9000)" (a setting's name called with the aircraft and one value) are "KLM12 hdg 270"; "ff(300)",
+-- "dtmult(2)" a name called with one number are the name and the number; "= 'EHAM'" a value in quotes is the
+-- word. An id here has a digit; anything else stays as typed, and so does a loop ("for k=1:10, ff(60), end").
+function G.script_forms(text)
+  local fields = G.NOTEBOOK_FIELDS
+  -- (a loop, "for k=1:10, ff(60), end", "while ...": repeats what is in it, left as typed, and asked)
+  if text:find("^%s*[Ff][Oo][Rr]%s+[%a_][%w_]*%s*=") or text:find("^%s*[Ww][Hh][Ii][Ll][Ee]%f[%A]") then return text end
+  local function id(x) return x:match("^%a[%w_]*%d[%w_]*$") ~= nil end
+  -- ("[KLM12 DLH4 AUA1]": the ids in brackets, apart by spaces, commas or semicolons; nil if any is no id)
+  local function ids(list)
+    local out = {}
+    for x in list:gmatch("[^%s,;]+") do
+      if not id(x) then return nil end
+      out[#out + 1] = x
+    end
+    return #out >= 2 and out or nil
+  end
+  local function both(out)
+    return table.concat(out, ", ", 1, #out - 1) .. " and " .. out[#out]
+  end
+  text = text:gsub("=%s*(['\"])([%w_]+)%1", "= %2")
+  -- ("=SPEED(KLM12, 250)", "=ALT(TRA6XN; 9000)": a spreadsheet's formula, its arguments apart by ";" too)
+  text = text:gsub("^%s*=%s*(%a+)%s*%(([^()]*)%)", function(name, args) return name .. "(" .. args:gsub(";", ",") .. ")" end)
+  text = text:gsub("%f[%a][Ss][Ee][Tt]%s*%(%s*([%w_]+)%s*,%s*(['\"])(%a+)%2%s*,%s*([^,()]+)%)", function(who, _, f, v)
+    if not id(who) or not fields[f:lower()] then return nil end
+    return who .. " " .. f .. " " .. v
+  end)
+  text = text:gsub("%f[%a](%a+)%s*%(%s*([%w_]+)%s*,%s*([^,()]+)%)", function(f, who, v)
+    if not fields[f:lower()] or not id(who) then return nil end
+    return who .. " " .. f .. " " .. v
+  end)
+  text = text:gsub("%f[%a](%a+)%s*%(%s*(%d+%.?%d*)%s*(%a*)%s*%)", function(name, n, unit)
+    if fields[name:lower()] or id(name) then return nil end
+    return name .. " " .. n .. (unit ~= "" and " " .. unit or "")
+  end)
+  text = text:gsub("%b[]", function(list) return (list:gsub(";", ",")) end)
+  local out = {}
+  for clause in (text .. ";"):gmatch("([^;]*);") do
+    local c = clause:match("^%s*(.-)%s*$")
+    local lc = c:lower()
+    if lc == "tic" or lc == "toc" or lc == "clc" then
+      c = nil
+    else
+      c = c:match("^[Dd][Ii][Ss][Pp]%s*%((.*)%)$") or c
+      local who, f = c:match("^([%w_]+)%.(%a+)%s*%??$")
+      local list, lf = c:match("^%[([^%]]+)%]%.(%a+)%s*%??$")
+      local each = list and ids(list)
+      if who and id(who) and f:lower() == "route" then
+        c = "listrte " .. who
+      elseif who and id(who) and (fields[f:lower()] or f:lower() == "pos") then
+        c = "pos " .. who
+      elseif each and (fields[lf:lower()] or lf:lower() == "pos") then
+        c = "pos " .. table.concat(each, "; pos ")
+      else
+        local inner = c:match("^%[([^%]]+)%]$")
+        local one
+        for w, wf in (inner or ""):gmatch("([%w_]+)%.(%a+)") do
+          if not id(w) or (one and one ~= w) or not fields[wf:lower()] then one = false break end
+          one = one or w
+        end
+        if one and inner:gsub("[%w_]+%.%a+", ""):find("^[%s,]*$") then c = "pos " .. one end
+      end
+      local mover, at = c:match("^([%w_]+)%.[Pp][Oo][Ss]%s*=%s*(.-)%s*$")
+      if mover and id(mover) then
+        local place = at:match("^%[([%d%.%s,%-]+)%]$") or at:match("^(%a[%w_]*)$")
+        if place then c = "move " .. mover .. " " .. place:gsub(",", " "):gsub("%s+", " ") end
+      end
+      local gone = c:match("^([%w_]+)%s*=%s*%[%s*%]$") or c:match("^[Rr][Mm]%s*%(%s*([%w_]+)%s*%)$")
+      if gone and id(gone) then c = "delete " .. gone end
+      c = c:gsub("^%[([^%]]+)%]%s*%.?%s*", function(list)
+        local each = ids(list)
+        return each and both(each) .. " " or nil
+      end)
+    end
+    if c and c ~= "" then out[#out + 1] = c end
+  end
+  return table.concat(out, "; ")
+end
+
 -- A script's comment, "%" typed apart to the end of the line ("KLM12.alt = 26000 % ft", "hdg(KLM12) = 100; % R"),
 -- read into the value it follows when it holds only lexicon.script_comment_words and numbers already typed
 -- before it ("hdg = 90 - 60 % left 60"): the unit after the value ("26000 ft"), "FL" or "mach" before it ("alt 210
@@ -2684,8 +2769,9 @@ function G.script_comment(text)
     if got.two and not holds then
       return before .. " % " .. (got.two == "side" and "right or left" or "feet or knots")
     end
-    -- (a side typed as its letter, "% no, L", is the word, for the clause rules to read)
-    return before .. " % " .. comment:gsub("%f[%a]([RrLl])%f[%A]", function(x)
+    -- (the comment is a clause after a comma, a side typed as its letter, "% no, L", the word, for the clause
+    -- rules to read)
+    return before .. ", " .. comment:gsub("%f[%a]([RrLl])%f[%A]", function(x)
       return x:lower() == "r" and "right" or "left"
     end)
   end
@@ -2711,6 +2797,8 @@ local function written_forms(text, world)
   -- (each pattern pass runs through where(): only where `low`, the text in lower case, holds what the
   -- pattern requires, its first argument; a rewrite outside where() sets `low` again)
   local low = text:lower()
+  if text:find("[%.%[%(=;]") then text = G.script_forms(text) end
+  low = text:lower()
   if low:find("%s%%") then text = G.script_comment(text) end
   if low:find("->", 1, true) then
     -- "alt 300 -> 340", "fl 330->370": an arrow between two levels typed bare after a level's name (headings and
@@ -2753,6 +2841,15 @@ local function written_forms(text, world)
   -- "@ FL200", "x NAXEL @ 250", "@ 120 s ...": an at sign typed apart before a value or a name is "at"
   where("@", "(%s)@%s*(%w)", "%1at %2")
   where("@", "^@%s*(%w)", "at %1")
+  -- "AUA123 @ PSA: alt = FL110", "at SPY: spd 220": a colon after the place (a name in capitals) the aircraft reaches leads to what it
+  -- does there, as an arrow does ("at PSA -> FL110": the instruction starts at PSA)
+  -- (after a flight level, "@ FL200: spd 250", the colon goes: the level is the condition, as "at FL200 spd 250")
+  where("at", "%f[%a]([Aa][Tt]%s+)([%a_][%w_]*)%s*:%s+", function(at, place)
+    local p = place:lower()
+    if p:match("^fl%d+$") then return at .. place .. " " end
+    if lexicon.shorthand[p] or not place:find("^%u") then return nil end
+    return at .. place .. " then "
+  end)
   -- "47,5 north", "8,5 degrees east", "factor to 1,1": a decimal comma (G.decimal_comma) is the point
   where("%d,%d", "()(%d+),(%d+)()", function(b, whole, part, e) return G.decimal_comma(text, b, whole, part, e) end)
   text = typed_abbreviations(lone_multipliers(tokens.numerals_apart(G.unfinished_restarts(G.cut_off_restarts(text)), DIGIT_WORDS), world))
