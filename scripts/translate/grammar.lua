@@ -2736,9 +2736,10 @@ end
 -- number and no word of G.comment_holds ("% request", "% rerouted") is a remark, set apart after a dash as a
 -- notebook's "#" is; any other stays as typed, for the clause rules to read or ask ("% until ARTIP", "% no, 250").
 function G.script_comment(text)
-  local before, comment = text:match("^(.-%S)%s+%%%s*(.-)%s*$")
-  if not before or before:find("%%") then return text end
-  before = before:gsub("%s*;%s*$", "")
+  local typed, comment = text:match("^(.-%S)%s+%%%s*(.-)%s*$")
+  if not typed or typed:find("%%") then return text end
+  -- (`typed`: the words before the comment as typed, a semicolon closing them kept where the comment is kept)
+  local before = typed:gsub("%s*;%s*$", "")
   local kinds, said, words = lexicon.script_comment_words, {}, {}
   for n in before:gmatch("%d+%.?%d*") do said[tonumber(n)] = true end
   for w in comment:gmatch("[^%s,]+") do words[#words + 1] = w:lower() end
@@ -2767,11 +2768,12 @@ function G.script_comment(text)
     local holds = false
     for _, w in ipairs(words) do holds = holds or G.comment_holds[w] end
     if got.two and not holds then
-      return before .. " % " .. (got.two == "side" and "right or left" or "feet or knots")
+      return typed .. " % " .. (got.two == "side" and "right or left" or "feet or knots")
     end
-    -- (the comment is a clause after a comma, a side typed as its letter, "% no, L", the word, for the clause
-    -- rules to read)
-    return before .. ", " .. comment:gsub("%f[%a]([RrLl])%f[%A]", function(x)
+    -- (a side typed as its letter, "% no, L", is the word, for the clause rules to read; a limit's end, "% until
+    -- SPY", is said after a comma)
+    local till = words[1] == "until" or words[1] == "till"
+    return (till and before .. ", " or typed .. " % ") .. comment:gsub("%f[%a]([RrLl])%f[%A]", function(x)
       return x:lower() == "r" and "right" or "left"
     end)
   end
@@ -2789,7 +2791,15 @@ function G.script_comment(text)
     if side == "down" then sign = "-" end
     side = nil
   end
-  return before:sub(1, at - 1) .. sign .. (got.prefix or "") .. num .. (got.unit and " " .. got.unit or "")
+  -- (a step, "hdg -= 25 % left", "hdg = hdg + 90 % right", says its side by its sign: a side that agrees is
+  -- dropped, one against it asked; after a number, "270 + 30 % right", the side stays the turn's)
+  local head = before:sub(1, at - 1)
+  local op = head:match("([%-%+])=?%s*$")
+  if side and op and not head:match("%d%s*[%-%+]%s*$") then
+    if (side == "left") ~= (op == "-") then return typed .. " % right or left" end
+    side = nil
+  end
+  return head .. sign .. (got.prefix or "") .. num .. (got.unit and " " .. got.unit or "")
     .. (side and " " .. side or "") .. rest
 end
 
