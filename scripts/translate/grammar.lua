@@ -2529,6 +2529,10 @@ function G.level_before_verb(text)
   return text
 end
 
+-- Words of a script's comment that take back what is before them ("% R, no, L"; G.script_comment)
+G.comment_takes_back = set_of({ "no", "not", "negative", "correction", "sorry", "instead", "meant", "mean",
+  "actually", "oops", "disregard", "undo", "cancel", "typo", "wrong", "rather" })
+
 -- Words in a notebook's "#" comment that may hold, take back or time what is before it (G.written_forms)
 G.comment_holds = set_of({ "not", "no", "don't", "dont", "never", "cancel", "wait", "hold", "yet", "later", "until",
   "till", "after", "before", "when", "once", "then", "instead", "meant", "mean", "actually", "oops", "sorry",
@@ -2741,6 +2745,22 @@ function G.script_comment(text)
   -- (`typed`: the words before the comment as typed, a semicolon closing them kept where the comment is kept)
   local before = typed:gsub("%s*;%s*$", "")
   local kinds, said, words = lexicon.script_comment_words, {}, {}
+  -- ("% ft, QNH", "% fpm, alt FL120", "% ft; then spd 220 @ 11000": a unit or side before a comma or semicolon is
+  -- the value's, read as above when the comment were that alone; what follows is a clause of its own after it,
+  -- unless it holds a word of G.comment_takes_back or another unit or side)
+  local lead, sep, tail = comment:match("^([^,;]-)%s*([,;])%s*(%S.*)$")
+  if lead and lead:find("%S") then
+    for w in lead:gmatch("%S+") do
+      if not kinds[w:lower()] then lead = nil break end
+    end
+    -- (unless the clause after it may take the lead back or say another: "% R, no, L")
+    for w in tail:gmatch("[^%s,;]+") do
+      if lead and (kinds[w:lower()] or G.comment_takes_back[w:lower()]) then lead = nil end
+    end
+    local alone = lead and typed .. " % " .. lead
+    local read = alone and G.script_comment(alone)
+    if read and read ~= alone then return read .. sep .. " " .. tail end
+  end
   for n in before:gmatch("%d+%.?%d*") do said[tonumber(n)] = true end
   for w in comment:gmatch("[^%s,]+") do words[#words + 1] = w:lower() end
   if #words == 0 then return before end
