@@ -2830,15 +2830,6 @@ local function written_forms(text, world)
   if text:find("[%.%[%(=;]") then text = G.script_forms(text) end
   low = text:lower()
   if low:find("%s%%") then text = G.script_comment(text) end
-  if low:find("->", 1, true) then
-    -- "alt 300 -> 340", "fl 330->370": an arrow between two levels typed bare after a level's name (headings and
-    -- speeds were made "from .. to .." before) changes it from the one to the other: the level takes the second
-    text = text:gsub("%f[%a](%a+)(%s+)(%d+)%s*%-+>%s*(%d+)%f[^%w%.]", function(setting, space, from, to)
-      local f = G.NOTEBOOK_FIELDS[setting:lower()]
-      if not (f == "alt" or f == "fl") then return nil end
-      return setting .. space .. to
-    end)
-  end
   -- "hdg from 135 to 180 R": a heading changed from one value to another with the side typed after it is a turn
   -- to that side ("turn right hdg from 135 to 180"), the value it leaves checked as said
   if low:find("from", 1, true) then
