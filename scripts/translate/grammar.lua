@@ -2862,13 +2862,14 @@ local function written_forms(text, world)
   -- "@ FL200", "x NAXEL @ 250", "@ 120 s ...": an at sign typed apart before a value or a name is "at"
   where("@", "(%s)@%s*(%w)", "%1at %2")
   where("@", "^@%s*(%w)", "at %1")
-  -- "AUA123 @ PSA: alt = FL110", "at SPY: spd 220": a colon after the place (a name in capitals) the aircraft reaches leads to what it
+  -- "AUA123 @ PSA: alt = FL110", "at SPY: spd = 220": a colon after the place (a name in capitals) the aircraft reaches leads to what it
   -- does there, as an arrow does ("at PSA -> FL110": the instruction starts at PSA)
   -- (after a flight level, "@ FL200: spd 250", the colon goes: the level is the condition, as "at FL200 spd 250")
-  where("at", "%f[%a]([Aa][Tt]%s+)([%a_][%w_]*)%s*:%s+", function(at, place)
+  where("at", "%f[%a]([Aa][Tt]%s+)([%a_][%w_]*)%s*:%s+()", function(at, place, e)
     local p = place:lower()
     if p:match("^fl%d+$") then return at .. place .. " " end
-    if lexicon.shorthand[p] or not place:find("^%u") then return nil end
+    -- (only before a setting assigned, "alt = FL110": "at BRAVO: altitude FL300" is the crossing constraint)
+    if lexicon.shorthand[p] or not place:find("^%u") or not text:find("^%a+%s*=", e) then return nil end
     return at .. place .. " then "
   end)
   -- "47,5 north", "8,5 degrees east", "factor to 1,1": a decimal comma (G.decimal_comma) is the point
