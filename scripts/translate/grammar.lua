@@ -2588,8 +2588,9 @@ function G.notebook_assignments(text)
   end)
   -- "vs=+1200fpm", "vs = +800": a vertical speed set with a plus sign is that rate up
   text = text:gsub("%f[%a]([Vv][Ss])%s*=%s*%+%s*(%d)", "%1 %2")
-  -- "klm12.hdg", "ezy45lm.spd": the aircraft's id, a dot, the setting's name
-  text = text:gsub("%f[%w](%a[%w_]*%d[%w_]*)%.(%a+)%f[^%w_]", function(id, field)
+  -- "klm12.hdg", "ezy45lm.spd", "Transavia 6XN.hdg": the aircraft's id (or its flight number after the
+  -- telephony), a dot, the setting's name
+  text = text:gsub("%f[%w]([%w_]*%d[%w_]*)%.(%a+)%f[^%w_]", function(id, field)
     if not fields[field:lower()] then return nil end
     return id .. " " .. field
   end)
@@ -2650,7 +2651,8 @@ end
 -- aircraft, and "disp([KLM12.alt KLM12.spd])" of the one named; "KLM12.pos = [52.4 4.6]" and "KLM12.pos = 'SPY'"
 -- are "move KLM12 ..."; "KLM12 = []" and "rm(KLM12)" "delete KLM12"; "[KLM12 DLH4] alt 300" and "[KLM12; DLH4].spd
 -- = 230" name both aircraft ("KLM12 and DLH4 ..."); "set(KLM12, 'hdg', 270)" and a spreadsheet's "=HDG(KLM12, 270)",
--- "=ALT(TRA6XN; 9000)" (a setting's name called with the aircraft and one value) are "KLM12 hdg 270"; "ff(300)",
+-- "=ALT(TRA6XN; 9000)" (a setting's name called with the aircraft and one value) and "hdg 270 -> KLM12" (a setting
+-- and its value sent to the aircraft by an arrow) are "KLM12 hdg 270"; "ff(300)",
 -- "dtmult(2)" a name called with one number are the name and the number; "= 'EHAM'" a value in quotes is the
 -- word. An id here has a digit; anything else stays as typed, and so does a loop ("for k=1:10, ff(60), end").
 function G.script_forms(text)
@@ -2719,6 +2721,9 @@ function G.script_forms(text)
       end
       local gone = c:match("^([%w_]+)%s*=%s*%[%s*%]$") or c:match("^[Rr][Mm]%s*%(%s*([%w_]+)%s*%)$")
       if gone and id(gone) then c = "delete " .. gone end
+      -- ("alt FL300 -> KLM12", "hdg 120 -> EZY45AB": a setting and its value sent to the aircraft)
+      local sf, sv, to = c:match("^(%a+)%s+([%w%.]+)%s*%-+>%s*([%w_]+)$")
+      if sf and fields[sf:lower()] and id(to) and sv:find("%d") then c = to .. " " .. sf .. " " .. sv end
       c = c:gsub("^%[([^%]]+)%]%s*%.?%s*", function(list)
         local each = ids(list)
         return each and both(each) .. " " or nil
@@ -2827,7 +2832,7 @@ local function written_forms(text, world)
   -- (each pattern pass runs through where(): only where `low`, the text in lower case, holds what the
   -- pattern requires, its first argument; a rewrite outside where() sets `low` again)
   local low = text:lower()
-  if text:find("[%.%[%(=;]") then text = G.script_forms(text) end
+  if text:find("[%.%[%(=;]") or text:find("->", 1, true) then text = G.script_forms(text) end
   low = text:lower()
   if low:find("%s%%") then text = G.script_comment(text) end
   -- "hdg from 135 to 180 R": a heading changed from one value to another with the side typed after it is a turn

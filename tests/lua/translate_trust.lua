@@ -20097,6 +20097,8 @@ do
   check_eq(ex("=HDG(SAS31; 045)"), "HDG SAS31 45")
   check_eq(ex("IBE7.dest = 'EKCH'"), "DEST IBE7 EKCH")
   check_eq(ex("tic; ff 120; toc"), "FF 120")
+  check_eq(ex("Iberia 7.hdg = 210"), "HDG IBE7 210")
+  check_eq(ex("spd 230 -> SAS31; alt FL180 -> IBE7"), "SPD SAS31 230 ; ALT IBE7 FL180")
   asked(ex("for n=1:5, ff(60), end"), "a loop is not run once")
   -- a place reached, then a colon: what is done there
   check_eq(ex("SAS31 @ NOBIX: alt = FL150"), "AT SAS31 NOBIX DO ALT SAS31 FL150")
