@@ -2750,6 +2750,10 @@ function G.level_before_verb(text)
   return text
 end
 
+-- Words of a script's comment that take back what is before them ("% R, no, L"; G.script_comment)
+G.comment_takes_back = set_of({ "no", "not", "negative", "correction", "sorry", "instead", "meant", "mean",
+  "actually", "oops", "disregard", "undo", "cancel", "typo", "wrong", "rather" })
+
 -- Words in a notebook's "#" comment that may hold, take back or time what is before it (G.written_forms)
 G.comment_holds = set_of({ "not", "no", "don't", "dont", "never", "cancel", "wait", "hold", "yet", "later", "until",
   "till", "after", "before", "when", "once", "then", "instead", "meant", "mean", "actually", "oops", "sorry",
@@ -2772,6 +2776,22 @@ G.NOTEBOOK_FIELDS = {
 function G.notebook_assignments(text)
   if not (text:find("[%.%(]%s*%a") or text:find("=", 1, true) or text:find("%a%(")) then return text end
   local fields = G.NOTEBOOK_FIELDS
+  -- "hdg = 270 + 30", "hdg(KLM12) = 90 - 60 left": a heading set to a whole number plus or minus another is their
+  -- sum (wrapped into 1 .. 360), with the side typed after it; a step of 0 or 180 and more is left as typed, and
+  -- a side against the sign ("270 + 30 left") is asked
+  local function heading_sum(field, id, a, sign, b, side)
+    local sd, v, n = side:lower(), tonumber(a), tonumber(b)
+    if fields[field:lower()] ~= "hdg" or v > 360 or n == 0 or n >= 180 then return nil end
+    if (sd == "left" and sign == "+") or (sd == "right" and sign == "-") then
+      return string.format("%s%s = %s right or left", field, id, a)
+    end
+    v = (v + (sign == "+" and n or -n)) % 360
+    return string.format("%s%s = %03d%s", field, id, v == 0 and 360 or v, side ~= "" and " " .. side or "")
+  end
+  text = text:gsub("%f[%a](%a+)()%s*=%s*(%d+)%s*([%-+])%s*(%d+)%f[^%w%.]%s*(%a*)", function(f, _, ...)
+    return heading_sum(f, "", ...)
+  end)
+  text = text:gsub("%f[%a](%a+)(%s*%(%s*[%w_]+%s*%))%s*=%s*(%d+)%s*([%-+])%s*(%d+)%f[^%w%.]%s*(%a*)", heading_sum)
   -- "alt(DLH4AX)=FL310", "dest(EZY45LM) = EHAM": the aircraft in brackets after the setting's name
   text = text:gsub("%f[%w](%a+)%(%s*([%w_]+)%s*%)%s*=%s*", function(field, id)
     if not fields[field:lower()] or not id:find("%d") then return nil end
@@ -2789,8 +2809,9 @@ function G.notebook_assignments(text)
   end)
   -- "vs=+1200fpm", "vs = +800": a vertical speed set with a plus sign is that rate up
   text = text:gsub("%f[%a]([Vv][Ss])%s*=%s*%+%s*(%d)", "%1 %2")
-  -- "klm12.hdg", "ezy45lm.spd": the aircraft's id, a dot, the setting's name
-  text = text:gsub("%f[%w](%a[%w_]*%d[%w_]*)%.(%a+)%f[^%w_]", function(id, field)
+  -- "klm12.hdg", "ezy45lm.spd", "Transavia 6XN.hdg": the aircraft's id (or its flight number after the
+  -- telephony), a dot, the setting's name
+  text = text:gsub("%f[%w]([%w_]*%d[%w_]*)%.(%a+)%f[^%w_]", function(id, field)
     if not fields[field:lower()] then return nil end
     return id .. " " .. field
   end)
@@ -2904,10 +2925,206 @@ function G.eventually_hedge_said(text)
     return nil
   end))
 end
+-- A script's ways of writing a request, rewritten into words the grammar reads, clause by clause (";" apart):
+-- "tic", "toc", "clc" (a script's timer and screen clearing) alone are dropped; "disp(X)" is X; "KLM12.route" alone
+-- is "listrte KLM12", "KLM12.pos", "KLM12.alt?" and "[KLM12 DLH4].spd" (a setting named, nothing set) "pos" of each
+-- aircraft, and "disp([KLM12.alt KLM12.spd])" of the one named; "KLM12.pos = [52.4 4.6]" and "KLM12.pos = 'SPY'"
+-- are "move KLM12 ..."; "KLM12 = []" and "rm(KLM12)" "delete KLM12"; "[KLM12 DLH4] alt 300" and "[KLM12; DLH4].spd
+-- = 230" name both aircraft ("KLM12 and DLH4 ..."); "set(KLM12, 'hdg', 270)" and a spreadsheet's "=HDG(KLM12, 270)",
+-- "=ALT(TRA6XN; 9000)" (a setting's name called with the aircraft and one value) and "hdg 270 -> KLM12" (a setting
+-- and its value sent to the aircraft by an arrow) are "KLM12 hdg 270"; "ff(300)",
+-- "dtmult(2)" a name called with one number are the name and the number; "= 'EHAM'" a value in quotes is the
+-- word. An id here has a digit; anything else stays as typed, and so does a loop ("for k=1:10, ff(60), end").
+function G.script_forms(text)
+  local fields = G.NOTEBOOK_FIELDS
+  -- (a loop, "for k=1:10, ff(60), end", "while ...": repeats what is in it, left as typed, and asked)
+  if text:find("^%s*[Ff][Oo][Rr]%s+[%a_][%w_]*%s*=") or text:find("^%s*[Ww][Hh][Ii][Ll][Ee]%f[%A]") then return text end
+  local function id(x) return x:match("^%a[%w_]*%d[%w_]*$") ~= nil end
+  -- ("[KLM12 DLH4 AUA1]": the ids in brackets, apart by spaces, commas or semicolons; nil if any is no id)
+  local function ids(list)
+    local out = {}
+    for x in list:gmatch("[^%s,;]+") do
+      if not id(x) then return nil end
+      out[#out + 1] = x
+    end
+    return #out >= 2 and out or nil
+  end
+  local function both(out)
+    return table.concat(out, ", ", 1, #out - 1) .. " and " .. out[#out]
+  end
+  text = text:gsub("=%s*(['\"])([%w_]+)%1", "= %2")
+  -- ("=SPEED(KLM12, 250)", "=ALT(TRA6XN; 9000)": a spreadsheet's formula, its arguments apart by ";" too)
+  text = text:gsub("^%s*=%s*(%a+)%s*%(([^()]*)%)", function(name, args) return name .. "(" .. args:gsub(";", ",") .. ")" end)
+  text = text:gsub("%f[%a][Ss][Ee][Tt]%s*%(%s*([%w_]+)%s*,%s*(['\"])(%a+)%2%s*,%s*([^,()]+)%)", function(who, _, f, v)
+    if not id(who) or not fields[f:lower()] then return nil end
+    return who .. " " .. f .. " " .. v
+  end)
+  text = text:gsub("%f[%a](%a+)%s*%(%s*([%w_]+)%s*,%s*([^,()]+)%)", function(f, who, v)
+    if not fields[f:lower()] or not id(who) then return nil end
+    return who .. " " .. f .. " " .. v
+  end)
+  text = text:gsub("%f[%a](%a+)%s*%(%s*(%d+%.?%d*)%s*(%a*)%s*%)", function(name, n, unit)
+    if fields[name:lower()] or id(name) then return nil end
+    return name .. " " .. n .. (unit ~= "" and " " .. unit or "")
+  end)
+  text = text:gsub("%b[]", function(list) return (list:gsub(";", ",")) end)
+  local out = {}
+  for clause in (text .. ";"):gmatch("([^;]*);") do
+    local c = clause:match("^%s*(.-)%s*$")
+    local lc = c:lower()
+    if lc == "tic" or lc == "toc" or lc == "clc" then
+      c = nil
+    else
+      c = c:match("^[Dd][Ii][Ss][Pp]%s*%((.*)%)$") or c
+      local who, f = c:match("^([%w_]+)%.(%a+)%s*%??$")
+      local list, lf = c:match("^%[([^%]]+)%]%.(%a+)%s*%??$")
+      local each = list and ids(list)
+      if who and id(who) and f:lower() == "route" then
+        c = "listrte " .. who
+      elseif who and id(who) and (fields[f:lower()] or f:lower() == "pos") then
+        c = "pos " .. who
+      elseif each and (fields[lf:lower()] or lf:lower() == "pos") then
+        c = "pos " .. table.concat(each, "; pos ")
+      else
+        local inner = c:match("^%[([^%]]+)%]$")
+        local one
+        for w, wf in (inner or ""):gmatch("([%w_]+)%.(%a+)") do
+          if not id(w) or (one and one ~= w) or not fields[wf:lower()] then one = false break end
+          one = one or w
+        end
+        if one and inner:gsub("[%w_]+%.%a+", ""):find("^[%s,]*$") then c = "pos " .. one end
+      end
+      local mover, at = c:match("^([%w_]+)%.[Pp][Oo][Ss]%s*=%s*(.-)%s*$")
+      if mover and id(mover) then
+        local place = at:match("^%[([%d%.%s,%-]+)%]$") or at:match("^(%a[%w_]*)$")
+        if place then c = "move " .. mover .. " " .. place:gsub(",", " "):gsub("%s+", " ") end
+      end
+      local gone = c:match("^([%w_]+)%s*=%s*%[%s*%]$") or c:match("^[Rr][Mm]%s*%(%s*([%w_]+)%s*%)$")
+      if gone and id(gone) then c = "delete " .. gone end
+      -- ("alt FL300 -> KLM12", "hdg 120 -> EZY45AB": a setting and its value sent to the aircraft)
+      local sf, sv, to = c:match("^(%a+)%s+([%w%.]+)%s*%-+>%s*([%w_]+)$")
+      if sf and fields[sf:lower()] and id(to) and sv:find("%d") then c = to .. " " .. sf .. " " .. sv end
+      c = c:gsub("^%[([^%]]+)%]%s*%.?%s*", function(list)
+        local each = ids(list)
+        return each and both(each) .. " " or nil
+      end)
+    end
+    if c and c ~= "" then out[#out + 1] = c end
+  end
+  return table.concat(out, "; ")
+end
+
+-- A script's comment, "%" typed apart to the end of the line ("KLM12.alt = 26000 % ft", "hdg(KLM12) = 100; % R"),
+-- read into the value it follows when it holds only lexicon.script_comment_words and numbers already typed
+-- before it ("hdg = 90 - 60 % left 60"): the unit after the value ("26000 ft"), "FL" or "mach" before it ("alt 210
+-- % FL": FL210), a side after both ("100 right"); a rate's "down" is its minus sign ("vs = 1500 % fpm down":
+-- -1500), and "up" or "down" said against the rate's sign, or of anything but a rate, leaves the line as typed,
+-- as does a comment read into no value (the last number before it, typed apart, with nothing after it but
+-- brackets or a semicolon); one with two units, sides or prefixes stays too, its sides typed as letters
+-- written as words ("% R, no, L": "% right, no, left"). A comment of words with none of those, no
+-- number and no word of G.comment_holds ("% request", "% rerouted") is a remark, set apart after a dash as a
+-- notebook's "#" is; any other stays as typed, for the clause rules to read or ask ("% until ARTIP", "% no, 250").
+function G.script_comment(text)
+  local typed, comment = text:match("^(.-%S)%s+%%%s*(.-)%s*$")
+  if not typed or typed:find("%%") then return text end
+  -- (`typed`: the words before the comment as typed, a semicolon closing them kept where the comment is kept)
+  local before = typed:gsub("%s*;%s*$", "")
+  local kinds, said, words = lexicon.script_comment_words, {}, {}
+  -- ("% ft, QNH", "% fpm, alt FL120", "% ft; then spd 220 @ 11000": a unit or side before a comma or semicolon is
+  -- the value's, read as above when the comment were that alone; what follows is a clause of its own after it,
+  -- unless it holds a word of G.comment_takes_back or another unit or side)
+  local lead, sep, tail = comment:match("^([^,;]-)%s*([,;])%s*(%S.*)$")
+  if lead and lead:find("%S") then
+    for w in lead:gmatch("%S+") do
+      if not kinds[w:lower()] then lead = nil break end
+    end
+    -- (unless the clause after it may take the lead back or say another: "% R, no, L")
+    for w in tail:gmatch("[^%s,;]+") do
+      if lead and (kinds[w:lower()] or G.comment_takes_back[w:lower()]) then lead = nil end
+    end
+    local alone = lead and typed .. " % " .. lead
+    local read = alone and G.script_comment(alone)
+    if read and read ~= alone then return read .. sep .. " " .. tail end
+  end
+  for n in before:gmatch("%d+%.?%d*") do said[tonumber(n)] = true end
+  for w in comment:gmatch("[^%s,]+") do words[#words + 1] = w:lower() end
+  if #words == 0 then return before end
+  local got, known, plain = {}, true, true
+  for _, w in ipairs(words) do
+    local k = kinds[w]
+    if k then
+      plain = false
+      for _, slot in ipairs({ "unit", "prefix", "side" }) do
+        if k[slot] then
+          if got[slot] and got[slot] ~= k[slot] then known, got.two = false, got.two or slot end
+          got[slot] = k[slot]
+        end
+      end
+    elseif w:match("^%d+%.?%d*$") and said[tonumber(w)] then
+      plain = false
+    else
+      known = false
+      if w:find("%d") or G.comment_holds[w] then plain = false end
+    end
+  end
+  if not known then
+    if plain and comment:match("^%a[%a%s,'%-]*$") then return before .. " - " .. comment end
+    -- ("% R L", "% ft kt": two of a kind with no word that takes one back: asked which)
+    local holds = false
+    for _, w in ipairs(words) do holds = holds or G.comment_holds[w] end
+    if got.two and not holds then
+      return typed .. " % " .. (got.two == "side" and "right or left" or "feet or knots")
+    end
+    -- (a side typed as its letter, "% no, L", is the word, for the clause rules to read; a limit's end, "% until
+    -- SPY", is said after a comma)
+    local till = words[1] == "until" or words[1] == "till"
+    return (till and before .. ", " or typed .. " % ") .. comment:gsub("%f[%a]([RrLl])%f[%A]", function(x)
+      return x:lower() == "r" and "right" or "left"
+    end)
+  end
+  -- (the value: the last number typed apart, "-1500", "0.78", ".78", with nothing but brackets or ";" after it)
+  local at, sign, num, rest
+  for b, sg, n, e in before:gmatch("()%f[%w%.%-%+]([%-%+]?)(%d*%.?%d+)%f[^%w%.]()") do
+    at, sign, num, rest = b, sg, n, before:sub(e)
+  end
+  if not at or not rest:match("^[%s%)%];]*$") then return text end
+  local side = got.side
+  if side == "up" or side == "down" then
+    if not before:lower():find("%f[%a]vs%f[%A]") or (side == "up" and sign == "-") or (side == "down" and sign == "+") then
+      return text
+    end
+    if side == "down" then sign = "-" end
+    side = nil
+  end
+  -- (a step, "hdg -= 25 % left", "hdg = hdg + 90 % right", says its side by its sign: a side that agrees is
+  -- dropped, one against it asked; after a number, "270 + 30 % right", the side stays the turn's)
+  local head = before:sub(1, at - 1)
+  local op = head:match("([%-%+])=?%s*$")
+  if side and op and not head:match("%d%s*[%-%+]%s*$") then
+    if (side == "left") ~= (op == "-") then return typed .. " % right or left" end
+    side = nil
+  end
+  return head .. sign .. (got.prefix or "") .. num .. (got.unit and " " .. got.unit or "")
+    .. (side and " " .. side or "") .. rest
+end
+
 local function written_forms(text, world)
   -- (each pattern pass runs through where(): only where `low`, the text in lower case, holds what the
   -- pattern requires, its first argument; a rewrite outside where() sets `low` again)
   local low = text:lower()
+  if text:find("[%.%[%(=;]") or text:find("->", 1, true) then text = G.script_forms(text) end
+  low = text:lower()
+  if low:find("%s%%") then text = G.script_comment(text) end
+  -- "hdg from 135 to 180 R": a heading changed from one value to another with the side typed after it is a turn
+  -- to that side ("turn right hdg from 135 to 180"), the value it leaves checked as said
+  if low:find("from", 1, true) then
+    text = text:gsub("%f[%a](%a+)(%s+[Ff]rom%s+%d+%s+[Tt]o%s+%d+)%s+(%a+)%f[%A]", function(name, span, side)
+      local f, sd = G.NOTEBOOK_FIELDS[name:lower()], side:lower()
+      if f ~= "hdg" then return nil end
+      if sd == "r" or sd == "right" then return "turn right " .. name .. span end
+      if sd == "l" or sd == "left" then return "turn left " .. name .. span end
+    end)
+  end
   text = G.notebook_assignments(text)
   if low:find("other", 1, true) then text = G.other_name_suffix_said(text) end
   if low:find("eventually", 1, true) then text = G.eventually_hedge_said(text) end
@@ -2932,6 +3149,16 @@ local function written_forms(text, world)
   -- "@ FL200", "x NAXEL @ 250", "@ 120 s ...": an at sign typed apart before a value or a name is "at"
   where("@", "(%s)@%s*(%w)", "%1at %2")
   where("@", "^@%s*(%w)", "at %1")
+  -- "AUA123 @ PSA: alt = FL110", "at SPY: spd = 220": a colon after the place (a name in capitals) the aircraft reaches leads to what it
+  -- does there, as an arrow does ("at PSA -> FL110": the instruction starts at PSA)
+  -- (after a flight level, "@ FL200: spd 250", the colon goes: the level is the condition, as "at FL200 spd 250")
+  where("at", "%f[%a]([Aa][Tt]%s+)([%a_][%w_]*)%s*:%s+()", function(at, place, e)
+    local p = place:lower()
+    if p:match("^fl%d+$") then return at .. place .. " " end
+    -- (only before a setting assigned, "alt = FL110": "at BRAVO: altitude FL300" is the crossing constraint)
+    if lexicon.shorthand[p] or not place:find("^%u") or not text:find("^%a+%s*=", e) then return nil end
+    return at .. place .. " then "
+  end)
   -- "47,5 north", "8,5 degrees east", "factor to 1,1": a decimal comma (G.decimal_comma) is the point
   where("%d,%d", "()(%d+),(%d+)()", function(b, whole, part, e) return G.decimal_comma(text, b, whole, part, e) end)
   text = typed_abbreviations(lone_multipliers(tokens.numerals_apart(G.unfinished_restarts(G.cut_off_restarts(text)), DIGIT_WORDS), world))
@@ -18102,6 +18329,22 @@ function G.capitals_read(text, world)
   if from == 1 then return text end
   return table.concat(out) .. text:sub(from)
 end
+-- True when the request is "hold on" or "hang on" alone (a script's "hold on" too), with at most "ok", "uh" before it
+-- and "please" or a while ("a second", "one moment") after it: a wait as likely as a pause, asked. With a word of
+-- its own ("hold on, pause"), it is read.
+G.hold_on_around = set_of({ "ok", "okay", "uh", "um", "er", "please", "a", "one", "just", "second", "sec", "moment",
+  "minute" })
+function G.bare_hold_on(text)
+  local low = text:lower()
+  if not (low:find("hold%s+on") or low:find("hang%s+on")) then return false end
+  local rest = low:gsub("%f[%a]h[oa][ln][dg]%s+on%f[%A]", " ", 1)
+  for w in rest:gmatch("[^%s%p]+") do
+    if not G.hold_on_around[w] then return false end
+  end
+  return true
+end
+M.bare_hold_on = G.bare_hold_on  -- (graph.lua asks it of the whole request, before clauses are split)
+
 function M.translate(text, world)
   text = G.capitals_read(text, world or {})
   local unheard = G.unheard_mark(text)

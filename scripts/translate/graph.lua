@@ -279,6 +279,11 @@ function M.translate(text, opts)
   -- too: "pause, then move IBE32 to ...")
   -- ("Speed... Speedbird 8CK, turn left ...": a word cut off where the request opens is dropped first)
   if not opts.in_list then text = grammar.cut_off_openings(text) end
+  -- ("hold on" alone: a wait as likely as a pause, asked; grammar.bare_hold_on)
+  if not opts.in_list and grammar.bare_hold_on(text) then
+    local q = "'hold on' may ask me to wait, or to pause the simulation. Should I pause it (HOLD)?"
+    return { ask = q, trace = { { node = "offline", said = "asks: " .. q } }, mode = opts.mode or "offline" }
+  end
   local parts = not opts.in_list and M.command_clauses(text)
   local whole, bare = false, nil
   if parts then whole, bare = M.one_aircraft_list(parts, simulator(opts)) end

@@ -1482,6 +1482,20 @@ return {
   -- units typed after a setting's value in a notebook's call form ("spd(250kt)", "vs(-2000fpm)")
   notebook_units = { kt = true, kts = true, knots = true, ft = true, feet = true, fpm = true, deg = true,
                      degs = true, degrees = true },
+  -- A script's "%" comment after a value (G.script_comment): each word it may hold and how it is read. unit:
+  -- typed after the value; prefix: typed before it ("alt 210 % FL" is FL210, "spd = .78 % mach" Mach .78);
+  -- side: the turn's or the rate's direction, typed after the value and its unit. A word of no kind here makes
+  -- the comment no unit nor side.
+  script_comment_words = {
+    ft = { unit = "ft" }, feet = { unit = "ft" }, foot = { unit = "ft" },
+    kt = { unit = "kt" }, kts = { unit = "kt" }, knots = { unit = "kt" }, knot = { unit = "kt" },
+    fpm = { unit = "fpm" }, ["ft/min"] = { unit = "fpm" },
+    nm = { unit = "nm" }, s = { unit = "s" }, sec = { unit = "s" }, secs = { unit = "s" }, seconds = { unit = "s" },
+    deg = { unit = "degrees" }, degs = { unit = "degrees" }, degrees = { unit = "degrees" },
+    fl = { prefix = "FL" }, mach = { prefix = "mach " },
+    r = { side = "right" }, right = { side = "right" }, l = { side = "left" }, left = { side = "left" },
+    up = { side = "up" }, climb = { side = "up" }, down = { side = "down" }, descend = { side = "down" },
+  },
   -- units that close a number typed with a space before its last three digits ("8 500 m", "12 000 ft")
   thousands_units = { m = true, ft = true, feet = true, foot = true, metres = true, meters = true, metre = true,
                       meter = true },

@@ -615,6 +615,23 @@ function M.typed_level_question(c, name, copy)
     math.floor((a.alt_ft or 0) + 0.5), v, offer)
 end
 
+-- The arguments of a command written as a function call ("TRA6XN, 'EHAM'", "'KLM77','B738',52.3"), as one line
+-- with the arguments apart by spaces: each argument is one word, or one word in single or double quotes (the
+-- word inside); nil when an argument is empty, holds a space or a quote inside its quotes, or a quote is left
+-- open. Arguments with no quote at all keep their commas as typed (BlueSky reads them as separators).
+function M.call_arguments(inner)
+  if not inner:find("[\"']") then return inner end
+  local out = {}
+  for arg in (inner .. ","):gmatch("([^,]*),") do
+    arg = trim(arg)
+    local q, word = arg:match("^([\"'])(.*)%1$")
+    if q then arg = word end
+    if arg == "" or arg:find("[%s\"']") then return nil end
+    out[#out + 1] = arg
+  end
+  return table.concat(out, " ")
+end
+
 function M.typed(state, ctx)
   local cmds = M.split_commands(state.request)
   if #cmds == 0 then return "english" end
@@ -659,7 +676,11 @@ function M.typed(state, ctx)
     -- its arguments in brackets, is that command with those arguments (then checked as any typed line)
     local called, inner = c:match("^%s*([%a_]+)%s*%(([^()]*)%)%s*$")
     if called and canonical_name(called) and inner:find("%S") then
-      c = called .. " " .. inner
+      -- ("direct(TRA6XN, 'EHAM')", "at(KLM12, 'SPY', 'spd', 220)": an argument in quotes, as a script writes a
+      -- string, is the word inside; the call's arguments are one per comma, so they run apart by spaces)
+      local unquoted = M.call_arguments(inner)
+      if not unquoted and not M.free_text(canonical_name(called)) then return "english" end
+      c = called .. " " .. (unquoted or inner)
       cmds[k] = c
     end
     -- "ALT,DLH4AX,FL220", "alt, klm12, fl220": BlueSky's separators, whitespace with at most one comma, are one
@@ -790,7 +811,10 @@ function M.typed(state, ctx)
     -- reads ids, places and keywords ("tfl7gh dest ehbk" -> "DEST TFL7GH EHBK"), unless one is free text (a
     -- string: ECHO's text, a carried command, a file name)
     local args = c:match("^[%w_]+(.*)$")
-    if not M.free_text(name) then args = args:upper() end
+    if not M.free_text(name) then
+      -- ("addwpt KLM12 'SPY'": a word in quotes is the word, as the registry reads it)
+      args = (args:upper() .. " "):gsub("([%s,])([\"'])([^%s,\"']+)%2([%s,])", "%1%3%4"):sub(1, -2)
+    end
     -- (ECHO's text typed whole in one pair of quotes, "echo 'run 3 start'", is the words inside: the quotes
     -- delimit the text, as in a script)
     if name == "ECHO" then

@@ -20521,3 +20521,58 @@ do
   asked(ex("AFR31 heading 200 right turn left"), "two sides after the heading")
   check_eq(ex("AFR31 heading 120 left turn"), "HDG AFR31 120 LEFT")
 end
+
+-- Cycle 63 (f220): a script's or a spreadsheet's way of typing a request. A quoted argument is the word; a "%"
+-- comment's unit, side or correction is read into the value or asked, never dropped; a heading sum is computed;
+-- a field named alone is a query; "hold on" alone is asked.
+do
+  local _, ex = scene({ "CRE SAS31 A320 55 10 090 FL250 280", "CRE IBE7 A321 55.2 10.3 180 FL300 290",
+    "DEFWPT NOBIX 55.4 10.6", "DEFWPT TEXOR 55.6 10.9", "ADDWPT SAS31 NOBIX" })
+  -- quoted arguments of a call, and of a typed line
+  check_eq(ex("addwpt(IBE7, 'TEXOR')"), "ADDWPT IBE7 TEXOR")
+  check_eq(ex("direct(SAS31, \"NOBIX\")"), "DIRECT SAS31 NOBIX")
+  check_eq(ex("defwpt('MYFIX', 55.1, 10.2)"), "DEFWPT MYFIX 55.1 10.2")
+  check_eq(ex("delwpt SAS31 'NOBIX'"), "DELWPT SAS31 NOBIX")
+  -- a "%" comment: a unit, a prefix, a side, a rate's direction, a correction
+  check_eq(ex("IBE7.alt = 24000 % feet"), "ALT IBE7 24000")
+  check_eq(ex("IBE7 alt 270 % FL"), "ALT IBE7 FL270")
+  check_eq(ex("SAS31.spd = 0.76 % mach"), "SPD SAS31 M0.76")
+  check_eq(ex("SAS31.hdg = 200 % R"), "HDG SAS31 200 RIGHT")
+  check_eq(ex("hdg(IBE7) = 120; % L"), "HDG IBE7 120 LEFT")
+  check_eq(ex("SAS31.vs = 1800 % fpm down"), "VS SAS31 -1800")
+  check_eq(ex("SAS31 hdg 200 % R, no, L"), "HDG SAS31 200 LEFT")
+  check_eq(ex("IBE7 vs -900 % fpm, alt FL200"), "VS IBE7 -900 ; ALT IBE7 FL200")
+  check_eq(ex("IBE7.alt = FL320 % requested by crew"), "ALT IBE7 FL320")
+  asked(ex("SAS31.vs = -1800 % up"), "a rate's side against its sign")
+  asked(ex("SAS31 hdg 200 % R L"), "two sides in one comment")
+  asked(ex("SAS31.hdg -= 20 % right"), "a step down said to the right")
+  -- a heading sum, its side agreeing
+  check_eq(ex("SAS31.hdg = 250 + 40 % right"), "HDG SAS31 290 RIGHT")
+  check_eq(ex("IBE7.hdg = 100 - 70 % left"), "HDG IBE7 30 LEFT")
+  asked(ex("SAS31.hdg = 250 + 40 % left"), "a sum up said to the left")
+  -- an arrow from the heading flown to a new one, with its side
+  check_eq(ex("SAS31 hdg 090 -> 150 R"), "HDG SAS31 150 RIGHT")
+  asked(ex("SAS31 hdg 010 -> 150 R"), "the heading it leaves is not the one flown")
+  -- a field named alone is a query; a position set is a move; an empty value a deletion
+  check_eq(ex("SAS31.route"), "LISTRTE SAS31")
+  check_eq(ex("disp(IBE7.alt)"), "POS IBE7")
+  check_eq(ex("[SAS31 IBE7].hdg"), "POS SAS31 ; POS IBE7")
+  check_eq(ex("IBE7.pos = 'TEXOR'"), "MOVE IBE7 TEXOR")
+  check_eq(ex("IBE7 = []"), "DEL IBE7")
+  -- aircraft in brackets, setter calls and spreadsheet formulas
+  check_eq(ex("[SAS31, IBE7] spd 240"), "SPD SAS31 240 ; SPD IBE7 240")
+  check_eq(ex("set(IBE7, 'alt', 15000)"), "ALT IBE7 15000")
+  check_eq(ex("=HDG(SAS31; 045)"), "HDG SAS31 45")
+  check_eq(ex("IBE7.dest = 'EKCH'"), "DEST IBE7 EKCH")
+  check_eq(ex("tic; ff 120; toc"), "FF 120")
+  check_eq(ex("Iberia 7.hdg = 210"), "HDG IBE7 210")
+  check_eq(ex("spd 230 -> SAS31; alt FL180 -> IBE7"), "SPD SAS31 230 ; ALT IBE7 FL180")
+  asked(ex("for n=1:5, ff(60), end"), "a loop is not run once")
+  -- a place reached, then a colon: what is done there
+  check_eq(ex("SAS31 @ NOBIX: alt = FL150"), "AT SAS31 NOBIX DO ALT SAS31 FL150")
+  check_eq(ex("SAS31 @ FL200: spd 250"), "ATALT SAS31 FL200 SPD SAS31 250")
+  -- "hold on" alone may be a wait or a pause
+  asked(ex("hold on"), "'hold on' alone")
+  asked(ex("ok hang on a sec"), "'hang on' alone")
+  check_eq(ex("hold on, pause"), "HOLD")
+end
