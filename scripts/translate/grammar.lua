@@ -549,7 +549,8 @@ end
 -- "turn left heading 170", "montez au niveau 140" -> "climb to flight level 140". A sentence holding a
 -- marking word of a language (the first of G.said_whole_order holding one) is read in that language alone;
 -- one holding none, in every language's words that mark none.
-G.said_whole_order = { "spanish", "french", "german", "dutch", "portuguese", "nordic", "malay", "greek", "russian" }
+G.said_whole_order = { "spanish", "french", "german", "dutch", "portuguese", "nordic", "malay", "greek", "russian",
+  "italian" }
 function G.said_whole(text)
   text = G.russian_yes_no(text)
   local indexes = G.said_whole_index()
@@ -744,11 +745,12 @@ end
 -- ("fl", "level", "heading", "speed", ... : "FL230 e", "flight level two three zero e", "speed 230 e"), or a number
 -- with its sign ("longitude minus 44.0 e PT02"); and the word after it is no number ("speed 250 e 260" stays
 -- asked) and no letter alone ("cross e c k" spells a fix). A number after a position's other number ("52 4 e",
--- "at 52 n 4 e") stays as said: the east.
+-- "at 52 n 4 e") stays as said: the east; one number beyond 180 alone before it ("climb at 350 e heading 100", Italian
+-- "e") is no longitude, and "e" is "and".
 -- "desculpa", "desculpe" (sorry) with words after it is "sorry", opening a correction ("heading 075... desculpa,
 -- heading 085"); closing the request it is left as said (an apology).
 G.portuguese_value_words = { fl = true, level = true, heading = true, hdg = true, speed = true, spd = true,
-  mach = true, altitude = true, proa = true, nivel = true, ["nível"] = true, velocidade = true }
+  mach = true, altitude = true, proa = true, nivel = true, ["nível"] = true, velocidade = true, quota = true }
 function G.portuguese_and(text)
   if not (text:find("%f[%w]e%f[%W]") or text:find("[Dd]esculp")) then return text end
   local toks, bare = plain_words(text)
@@ -771,7 +773,9 @@ function G.portuguese_and(text)
       end
       local signed = bare[i - 1]:match("^%-") or (k == i - 2 and (bare[k] == "minus" or bare[k] == "negative"))
       local valued = k >= 1 and (G.portuguese_value_words[bare[k]] or bare[k] == "fl") and digits <= 1
-      if not (signed or valued) then return nil end
+      -- (one number beyond 180 said alone, "climb at 350 e heading 100": no longitude's degrees)
+      local beyond = k == i - 2 and tonumber(bare[i - 1]) ~= nil and tonumber(bare[i - 1]) > 180
+      if not (signed or valued or beyond) then return nil end
     elseif bare[i - 1]:match("^fl%d+$") == nil and #bare[i - 1] == 1 then
       return nil  -- (a letter before it: "N 52 E", a spelled callsign)
     end
@@ -8866,13 +8870,16 @@ function G:when_reached(s)
     if self:word(levelled + 1, "off out") then self.noted[levelled + 1] = true end
     return true
   end
-  -- ("when you're at that speed", "once it is at the speed": the speed of the instruction before, reached; only
-  -- a subject, "at" and "that" or "the" before "speed", straight before the instruction)
+  -- ("when you're at that speed", "once it is at the speed", "when he arrives at this speed": the speed of the
+  -- instruction before, reached; only a subject, "is" or "arrives", "at" and "that", "this" or "the" before
+  -- "speed", straight before the instruction)
   local at = self:find_word(c + 1, s.trig, "speed")
-  if at < s.trig and self:skip_fillers(at + 1) == s.trig and self:word(at - 1, "that the")
+  if at < s.trig and self:skip_fillers(at + 1) == s.trig and self:word(at - 1, "that the this")
       and self:word(at - 2, "at") then
     for i = c + 1, at - 3 do
-      if not (self.t[i].filler or self:word(i, "you you're are it it's is")) then return false end
+      if not (self.t[i].filler or self:word(i, "you you're are it it's is he he's she she's arrives arrive")) then
+        return false
+      end
     end
     return true, "speed"
   end
@@ -8920,7 +8927,7 @@ function G:when_reached(s)
   local k = self:skip_fillers(verb + 1)
   -- ("once it reaches that height", "when it reaches that speed": the value named by its kind)
   local kind
-  if self:word(k, "that") and self:word(self:skip_fillers(k + 1), "height altitude level speed") then
+  if self:word(k, "that this") and self:word(self:skip_fillers(k + 1), "height altitude level speed") then
     kind = self:word(self:skip_fillers(k + 1), "speed") and "speed" or nil
     k = self:skip_fillers(k + 1)
   end
@@ -16957,7 +16964,8 @@ end
 -- "will" anywhere else is kept.
 G.future_will_sets = { opens = set_of({ "when", "once", "after", "until", "till" }),
   subjects = set_of({ "it", "he", "she", "they" }),
-  verbs = set_of({ "pass", "reach", "cross", "overfly", "be", "get", "descend", "climb", "slow", "leave", "have" }),
+  verbs = set_of({ "pass", "reach", "cross", "overfly", "be", "get", "descend", "climb", "slow", "leave", "have",
+    "arrive" }),
   moving = set_of({ "descend", "climb" }) }
 function G.future_will(text)
   if not text:lower():find("%f[%a]will%f[%A]") then return text end
@@ -16986,6 +16994,13 @@ G.pronoun_reached_sets = { opens = set_of({ "when", "once", "after" }), subjects
   verbs = { pass = "passing", passes = "passing", reach = "reaching", reaches = "reaching" } }
 function G.pronoun_reached(text)
   local P = G.pronoun_reached_sets
+  -- ("when he reaches the 310": the level with an article, Italian "la 310", read as without it)
+  text = text:gsub("(%f[%a]%a+)(%s+)(%a+)(%s+)(%a+)%s+[Tt][Hh][Ee](%s+%d)", function(c, s1, subj, s2, verb, rest)
+    if P.opens[c:lower()] and P.subjects[subj:lower()] and P.verbs[verb:lower()] then
+      return c .. s1 .. subj .. s2 .. verb .. rest
+    end
+    return nil
+  end)
   return (text:gsub("(%f[%a]%a+)(%s+)(%a+)%s+(%a+)(%s+%d)", function(c, s1, subj, verb, rest)
     local v = P.verbs[verb:lower()]
     if P.opens[c:lower()] and P.subjects[subj:lower()] and v then return c .. s1 .. v .. rest end

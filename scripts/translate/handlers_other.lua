@@ -4802,13 +4802,17 @@ return function(H, f, compass)
       after = after + 1
     end
     local p = after > s.e and self:quantities(after, #self.t + 1)[1]
+    -- ("speed up the simulation, twice": the factor a word of lexicon.multipliers, "twice", "thrice")
+    if after > s.e and not (p and p.b == after) and self:word(after, "twice thrice") then
+      p = { b = after, e = after + 1, kind = "mult", value = L.multipliers[self.t[after].text], word = true }
+    end
     if p and p.b == after and p.kind == "mult" and not self.taken[p.b] then
       local rest = p.e
       while self.t[rest] and (self.t[rest].kind == "punct" or self.t[rest].filler or self:word(rest, "please")) do
         rest = rest + 1
       end
       if rest > #self.t then
-        self:take(p)
+        if not p.word then self:take(p) end
         self:mark_used(s.e, p.e)
         return self:emit("DTMULT " .. f.num(p.value))
       end
@@ -4825,7 +4829,10 @@ return function(H, f, compass)
     -- ("at twice real time": the multiplier said in words, before real time alone)
     for i = s.b, s.e - 1 do
       local v = self.t[i].kind == "word" and L.multipliers[self.t[i].text]
-      if v then return self:emit("DTMULT " .. f.num(v)) end
+      if v then
+        self:mark_used(i, i + 1)
+        return self:emit("DTMULT " .. f.num(v))
+      end
     end
     -- "at normal speed again" ("go again, normal speed": "normal" straight before the segment's word, left in the
     -- clause before, with no aircraft named: "DAL14 heading 250, resume normal speed" is the aircraft's speed)

@@ -837,7 +837,7 @@ return {
     velocity = { word = "speed", prev = "vertical" },
     -- (Italian "quota", the altitude: "the quota put it at 9000 feet", "its quota 5000"; after no article or
     -- possessive and before no number it stays as typed, and asked)
-    quota = { { word = "altitude", prev = "the its his her" }, { word = "altitude", next = "#number" } },
+    quota = { { word = "altitude", prev = "the its his her what which" }, { word = "altitude", next = "#number" } },
     -- (a collision volume, "the hitbox radius", "vertical hitbox 1000 ft": the protected zone)
     hitbox = { word = "protected zone" },
     -- ("make the separation bubble 3 nm", "the safety bubble", "make the bubble 3 miles": the protected zone around
@@ -2544,6 +2544,8 @@ return {
     -- ("run the simulation at for times real time": a multiplier's digit heard as a word)
     { heard = { "for", "fore" }, means = "four", before = { "times" } },
     { heard = { "nots", "notts", "nuts", "knot's" }, means = "knots", after = { "#number" } },
+    -- ("add also AKADO at the end": an Italian speaker's "aggiungi anche", the adverb after the verb)
+    { heard = { "add also" }, means = "also add", before = { "#code" } },
     -- (a rate's unit with its noun in the plural, "1500 feet per minutes", "2000 ft per mins")
     { heard = { "minutes", "mins" }, means = "minute", after = { "per" } },
     -- the radiotelephony digits as speech recognition writes them: "niner" split in two ("flight level nigh ner
@@ -2630,6 +2632,11 @@ return {
     -- at LAKAM, he must descend ...", "descend FL320 when she arrive at GALIT")
     { heard = { "he arrive to", "he arrive at", "she arrive to", "she arrive at", "he arrives to", "he arrives at",
                 "she arrives to", "she arrives at" }, means = "it reaches", after = { "when", "once", "after" } },
+    -- (and the future said for the present, as an Italian or Russian speaker says it: "when he will arrive at TIBER,
+    -- descend ...", "once it will arrive to LUGAN")
+    { heard = { "he will arrive at", "he will arrive to", "she will arrive at", "she will arrive to",
+                "it will arrive at", "it will arrive to", "you will arrive at", "you will arrive to" },
+      means = "it reaches", after = { "when", "once", "after" } },
     -- (and after "after", a Greek speaker's "after he arrives to XORKI, descend ...": the place reached)
     -- (a Portuguese speaker's "chegar em", arriving "in" a place: "when he arrives in BOTOM he must descend ...",
     -- "when it arrives in FL250")
@@ -2967,6 +2974,18 @@ return {
       ponyala = "understood", ponyali = "understood", ponyatno = "understood" },
     shared = { izvinite = true, izvini = true, prostite = true, prosti = true, khorosho = true, horosho = true,
       harasho = true, khorasho = true, ladno = true, ponyal = true, ponyala = true, ponyali = true, ponyatno = true },
+    joining = {},
+  },
+  -- Italian words in an Italian speaker's English ("Alitalia 1712 velocità 260 e poi quota 260", "turn at prua 200",
+  -- "climb at 350, no scusa, 370", "allora, restart", "sì, ...", "va bene"): "velocità" is the speed, "prua" the
+  -- heading, "poi" and "e poi" (then, and then) join instructions in order, "scusa" (sorry) opens a self-correction
+  -- as English "sorry" does, "allora" (so, well), "sì" (yes) and "va bene" (all right) ask for nothing. None marks
+  -- the sentence; "e" alone is G.portuguese_and's, "quota" lexicon.heard_as's, "grazie" accounted's.
+  italian = {
+    words = { ["velocità"] = "speed", velocita = "speed", prua = "heading", poi = "then", ["e poi"] = "and then",
+      scusa = "sorry", ["scusami"] = "sorry", allora = "so", ["sì"] = "yes", si = "yes", ["va bene"] = "okay" },
+    shared = { ["velocità"] = true, velocita = true, prua = true, poi = true, ["e poi"] = true, scusa = true,
+      scusami = true, allora = true, ["sì"] = true, si = true, ["va bene"] = true },
     joining = {},
   },
   },

@@ -883,6 +883,13 @@ return function(intent, rule, words)
   rule { "accelerate decelerate", "dtmult", when = function(g, i)
     return g:word(i + 1, "@sim") or (g:word(i + 1, "the") and g:word(i + 2, "@sim"))
   end }
+  -- "accelerate 20 times", "go faster? five times please": the clock's rate, a factor of "times" said straight
+  -- after "accelerate", or within four words after "faster", with no aircraft named in the request
+  rule { "accelerate", "dtmult", when = function(g, i)
+    return g.t[i + 1] ~= nil and g.t[i + 1].kind == "number" and g:word(i + 2, "times x")
+      and not g:has_ref(1, #g.t + 1, "aircraft")
+  end }
+  rule { "faster", "dtmult", near = { 4, "times x" }, when = function(g) return not g:has_ref(1, #g.t + 1, "aircraft") end }
   rule { "slow slower faster accelerate decelerate", "spd" }
   -- "once it's level, bump it to 280 knots", "crank it up to Mach .80": an informal verb of changing a value
   -- (lexicon.informal_value_verbs) with a speed's unit or "Mach" within five words after it is a speed; with no
@@ -1837,11 +1844,12 @@ return function(intent, rule, words)
   -- ("bin it": British for delete; "I'm deleting United 1542 now": a controller saying what he does)
   -- ("despawn": a game's word for taking an object out of the world)
   rule { "delete del remove rid kill rmv bin deleting removing despawn despawned destroy", "delete" }
-  -- "take out BAGSO", "take BAGSO out": a waypoint taken out of the route of the aircraft addressed
-  rule { "take", "delwpt", near = { 3, "out" }, when = function(g, i)
-    local k = g:word(i + 1, "out") and i + 2 or i + 1
+  -- "take out BAGSO", "take BAGSO out", "take away MAGLI from the route": a waypoint taken out of the route of the
+  -- aircraft addressed
+  rule { "take", "delwpt", near = { 3, "out away" }, when = function(g, i)
+    local k = g:word(i + 1, "out away") and i + 2 or i + 1
     local r = g:refs_in(k, k + 1, "waypoint")[1]
-    return r ~= nil and (k == i + 2 or g:word(r.e, "out")) and not g:has_ref(1, #g.t + 1, "type")
+    return r ~= nil and (k == i + 2 or g:word(r.e, "out away")) and not g:has_ref(1, #g.t + 1, "type")
   end }
   rule { "take", "delete", near = { 5, "out" } }
   -- "take BEDRK off your route", "take CGT off of Southwest 903's route": a waypoint straight after the verb, "off"
@@ -2239,6 +2247,13 @@ return function(intent, rule, words)
     return g.t[k] == nil or (g.t[k].kind == "punct" and g.t[k].text ~= ",")
   end }
   rule { "route rte waypoints", "listrte", prev = { 4, "show list display what print see look where check" } }
+  -- ("which route he has?", "which route has?": an Italian speaker's "che rotta ha?", "which" straight before it)
+  -- (its clause ending there)
+  rule { "route rte", "listrte", prev = { 1, "which" }, when = function(g, i)
+    local k = g:word(i + 1, "he she it") and i + 2 or i + 1
+    if not g:word(k, "has have") then return false end
+    return g.t[k + 1] == nil or g.t[k + 1].kind == "punct"
+  end }
   -- "the route of Turkish 4KZ please to show", "route for KLM12 to show please": the request opening with the
   -- route of an aircraft flying, the verb of showing last ("please", "to" before it), nothing else in its clause
   rule { "route rte routing", "listrte", when = function(g, i)

@@ -20576,3 +20576,64 @@ do
   asked(ex("ok hang on a sec"), "'hang on' alone")
   check_eq(ex("hold on, pause"), "HOLD")
 end
+
+-- Cycle 63 (f217)
+-- An Italian speaker's English: "velocità" (speed), "prua" (heading), "quota" (altitude), "poi"/"e poi" (then),
+-- "e" (and) after a value no longitude can be, "scusa" (sorry) opening a correction, "allora", "sì", "va bene"
+-- asking for nothing; "when he will arrive at FIX" the place reached; "when he reaches the 310" the level;
+-- "when he arrives at this speed" the speed given; "accelerate 20 times", "faster? four times", "twice" the
+-- clock's rate; "take away FIX from the route", "add also FIX", "what quota he has?", "which route he has?".
+do
+  local _, ex = scene({ "CRE AZA610 A320 41.70 12.10 045 FL280 280", "CRE ITY77 A20N 42.10 12.50 220 FL260 290",
+    "CRE BAW44 A321 42.30 11.90 135 FL330 300", "DEFWPT CAMPO 41.9 12.3", "ADDWPT AZA610 CAMPO",
+    "DEFWPT DUOMO 42.1 12.6", "ADDWPT AZA610 DUOMO" })
+  -- the words that ask for nothing
+  check_eq(ex("allora, AZA610 descend at FL200"), "ALT AZA610 FL200")
+  check_eq(ex("sì, BAW44 heading 100 please"), "HDG BAW44 100")
+  check_eq(ex("ok va bene, ITY77 heading 100"), "HDG ITY77 100")
+  check_eq(ex("va bene, pause the simulation"), "HOLD")
+  check_eq(ex("allora, resume please"), "OP")
+  asked(ex("sì"), "'yes' alone asks for nothing")
+  asked(ex("allora"), "'so' alone asks for nothing")
+  -- the nouns of a value
+  check_eq(ex("ITY77 velocità 250"), "SPD ITY77 250")
+  check_eq(ex("AZA610 prua 100"), "HDG AZA610 100")
+  check_eq(ex("BAW44 turn on the left at prua 070"), "HDG BAW44 70 LEFT")
+  check_eq(ex("ITY77 increase the velocità of 10 knots"), "SPD ITY77 300")
+  asked(ex("ITY77 velocità"), "a speed with no value")
+  -- a correction
+  check_eq(ex("BAW44 climb at 350, no scusa, 360"), "ALT BAW44 FL360")
+  check_eq(ex("ITY77 speed 250, scusa, 260"), "SPD ITY77 260")
+  asked(ex("ITY77 climb at 350, no scusa"), "a correction with nothing after it")
+  -- "e", "poi", "e poi" joining instructions
+  check_eq(ex("BAW44 climb at 350 e poi turn at prua 100"), "ALT BAW44 FL350 ; HDG BAW44 100")
+  check_eq(ex("ITY77 quota 240 e velocità 250"), "ALT ITY77 FL240 ; SPD ITY77 250")
+  check_eq(ex("AZA610 speed 250, e quota 300, e prua 180"), "SPD AZA610 250 ; ALT AZA610 FL300 ; HDG AZA610 180")
+  check_eq(ex("BAW44 climb at 350 e heading 100"), "ALT BAW44 FL350 ; HDG BAW44 100")
+  check_eq(ex("ITY77 climb at 270, poi direct CAMPO"), "ALT ITY77 FL270 ; ADDWPT ITY77 CAMPO ; DIRECT ITY77 CAMPO")
+  asked(ex("create BAW55 A320 45.8 9.3 e heading 220 FL330 280"), "'e' after a position's number is the east")
+  asked(ex("BAW44 climb at 150 e heading 100"), "a climb to a level below it")
+  -- the conditions
+  check_eq(ex("AZA610, when he will arrive at CAMPO, descend at FL200"), "AT AZA610 CAMPO DO ALT AZA610 FL200")
+  check_eq(ex("AZA610 once it will arrive to DUOMO turn at prua 100"), "AT AZA610 DUOMO DO HDG AZA610 100")
+  check_eq(ex("BAW44 descend at 310 and when he reaches the 310 turn at heading 180"),
+    "ALT BAW44 FL310 ; ATALT BAW44 FL310 HDG BAW44 180")
+  check_eq(ex("ITY77 reduce at 250 knots and when he arrives at this speed descend at FL200"),
+    "SPD ITY77 250 ; ATSPD ITY77 250 ALT ITY77 FL200")
+  asked(ex("ITY77 reduce at 250 knots and when he arrives at this speed"), "a condition with no instruction")
+  -- the clock's rate
+  check_eq(ex("accelerate 20 times"), "DTMULT 20")
+  check_eq(ex("can we go faster? four times please"), "DTMULT 4")
+  check_eq(ex("speed up the simulation, twice"), "DTMULT 2")
+  check_eq(ex("BAW44 accelerate 20 knots"), "SPD BAW44 320")
+  asked(ex("accelerate 20 knots"), "a speed for no aircraft")
+  -- the route
+  check_eq(ex("AZA610, take away CAMPO from the route"), "DELWPT AZA610 CAMPO")
+  check_eq(ex("AZA610 take DUOMO away from the route"), "DELWPT AZA610 DUOMO")
+  check_eq(ex("ITY77, add also CAMPO at the end"), "ADDWPT ITY77 CAMPO")
+  asked(ex("AZA610, add also BAW44 at the end"), "an aircraft is no waypoint")
+  -- questions
+  check_eq(ex("AZA610, what quota he has?"), "POS AZA610")
+  check_eq(ex("AZA610, which route he has?"), "LISTRTE AZA610")
+  check_eq(ex("AZA610 direct DUOMO, which route has the most waypoints"), "DIRECT AZA610 DUOMO")
+end
