@@ -16456,6 +16456,33 @@ G.below_hundred = { one = 1, two = 2, three = 3, four = 4, five = 5, six = 6, se
   ten = 10, eleven = 11, twelve = 12, thirteen = 13, fourteen = 14, fifteen = 15, sixteen = 16, seventeen = 17,
   eighteen = 18, nineteen = 19, twenty = 20, thirty = 30, forty = 40, fifty = 50, sixty = 60, seventy = 70,
   eighty = 80, ninety = 90 }
+-- "delete LOT three lima kilo", "show route of DLH four alpha xray": an airline's ICAO code typed in capitals, then
+-- the flight's digits and letters said as words (SAID_DIGIT, lexicon.phonetic; typed digits among them), is that
+-- callsign typed whole ("LOT3LK") when the whole run, to its first mark or the first other word, is exactly one
+-- aircraft's id and is not cut off ("..."); anything else stays as said (asked as before).
+function G.spelled_icao_ids(text, world)
+  if #world.aircraft == 0 or not text:find("%f[%w]%u%u%u%s") then return text end
+  local ids = {}
+  for _, a in ipairs(world.aircraft) do ids[(a.id or ""):upper()] = true end
+  local toks, bare = plain_words(text)
+  return tokens.rewrite(text, toks, function(i)
+    if not toks[i]:match("^%u%u%u$") or not toks[i + 1] then return nil end
+    local id, j, spelled = toks[i], i + 1, false
+    while toks[j] do
+      local b = bare[j]
+      local ch = SAID_DIGIT[b] or lexicon.phonetic[b] or (b:match("^%d+$") and #id == 3 and b)
+      if not ch then break end
+      spelled = spelled or not b:match("^%d")
+      id, j = id .. ch, j + 1
+      if toks[j - 1]:match("%p$") then break end
+    end
+    -- (a run cut off, "KLM four three two one... KLM, erm, ...", is the restart's: G.cut_off_restarts)
+    if toks[j - 1]:match("%.%.$") or toks[j - 1]:match("…$") or toks[j - 1]:match("%-$") then return nil end
+    if not spelled or not ids[id] or not id:match("^%u%u%u%d") then return nil end
+    return id .. (toks[j - 1]:match("%p+$") or ""), j
+  end)
+end
+
 function G.hundreds_callsign(text, world)
   if #world.aircraft == 0 or not text:find("[Hh][Uu][Nn][Dd][Rr][Ee][Dd]") then return text end
   local spaced = text:gsub("%S*[Hh][Uu][Nn][Dd][Rr][Ee][Dd]%S*", function(w) return (w:gsub("(%a)%-(%a)", "%1 %2")) end)
@@ -17905,6 +17932,7 @@ function M.translate(text, world)
   end
   text = airline_values(named_airline_ids(split_ids(unglued_ids(G.iata_ids(text, world.aircraft), world.aircraft),
     world.aircraft)), world.aircraft)
+  text = G.spelled_icao_ids(text, world)
   text = homophone_ids(G.hundreds_callsign(G.recognised_callsigns(glued_telephony(G.common_named(G.joined_telephony(G.aircraft_of_airline(text)), world),
     world.aircraft), world), world), world)
   text = G.other_callsign_denied(text, world.aircraft)

@@ -20667,3 +20667,14 @@ do
   asked(ex("SAS9 descend on 180 after he passes OKTAW"), "a waypoint off its route")
   asked(ex("LOT512 descend on 200 when he passes"), "a condition with no waypoint")
 end
+do
+  -- an airline's ICAO code typed, then the flight said in words: that callsign when exactly one aircraft's
+  local _, ex = scene({ "CRE LOT2WT E195 52.2 20.9 090 FL240 270", "CRE LOT2WB E175 52.0 21.4 270 FL300 280",
+    "CRE SAS47 A20N 52.5 20.6 180 FL200 260" })
+  check_eq(ex("remove LOT two whiskey tango please"), "DEL LOT2WT")
+  check_eq(ex("list the route of LOT two whiskey bravo"), "LISTRTE LOT2WB")
+  check_eq(ex("what is the altitude of SAS four seven?"), "POS SAS47")
+  check_eq(ex("delete LOT 2 whiskey tango"), "DEL LOT2WT")
+  asked(ex("delete LOT two whiskey"), "two aircraft begin so")
+  asked(ex("delete LOT two whiskey tango bravo"), "no aircraft is all of it")
+end
