@@ -550,7 +550,7 @@ end
 -- marking word of a language (the first of G.said_whole_order holding one) is read in that language alone;
 -- one holding none, in every language's words that mark none.
 G.said_whole_order = { "spanish", "french", "german", "dutch", "portuguese", "nordic", "malay", "greek", "russian",
-  "italian" }
+  "italian", "polish" }
 function G.said_whole(text)
   text = G.russian_yes_no(text)
   local indexes = G.said_whole_index()
@@ -779,6 +779,23 @@ function G.portuguese_and(text)
     elseif bare[i - 1]:match("^fl%d+$") == nil and #bare[i - 1] == 1 then
       return nil  -- (a letter before it: "N 52 E", a spelled callsign)
     end
+    return "and", i + 1
+  end)
+end
+
+-- Polish "i" (and), typed lower case straight after the value closing one aircraft's instruction and before the
+-- next aircraft's name ("Ryanair 5KJ descend on 310 i Emirates 180 climb on 370", "RYR5KJ speed 250 knots i DLH6TC
+-- speed 260"), is "and". The English "I" is typed so, or before its verb ("FL300 i said", "250 i mean 260"): a
+-- word in lower case, a letter alone or a mark on either side leaves "i" as said.
+G.polish_and_units = { knots = true, knot = true, kts = true, kt = true, feet = true, ft = true, degrees = true }
+function G.polish_and(text)
+  if not text:find("%f[%w]i%f[%W]") then return text end
+  local toks, bare = plain_words(text)
+  return tokens.rewrite(text, toks, function(i)
+    if toks[i] ~= "i" or i < 2 or not toks[i + 1] or toks[i - 1]:match("%p$") then return nil end
+    local before = bare[i - 1]
+    if not (before:match("^%d+$") or before:match("^fl%d+$") or G.polish_and_units[before]) then return nil end
+    if not (toks[i + 1]:match("^%u[%w]") and #bare[i + 1] >= 2) then return nil end
     return "and", i + 1
   end)
 end
@@ -3166,7 +3183,7 @@ local function written_forms(text, world)
   -- "47,5 north", "8,5 degrees east", "factor to 1,1": a decimal comma (G.decimal_comma) is the point
   where("%d,%d", "()(%d+),(%d+)()", function(b, whole, part, e) return G.decimal_comma(text, b, whole, part, e) end)
   text = typed_abbreviations(lone_multipliers(tokens.numerals_apart(G.unfinished_restarts(G.cut_off_restarts(text)), DIGIT_WORDS), world))
-  text = hyphened_types(spelled(G.spelled_letter_a(heard_forms(negated_values(G.readback_reported(readback_heard(self_corrections(G.said_but(G.cancel_corrections(unlabelled(foreign_digits(G.portuguese_and(G.said_whole(G.french_in_english(G.denied_word(G.dutch_chat(G.condition_then(G.condition_copula(G.recreate_said(text))))))))))))))))))))
+  text = hyphened_types(spelled(G.spelled_letter_a(heard_forms(negated_values(G.readback_reported(readback_heard(self_corrections(G.said_but(G.cancel_corrections(unlabelled(foreign_digits(G.portuguese_and(G.polish_and(G.said_whole(G.french_in_english(G.denied_word(G.dutch_chat(G.condition_then(G.condition_copula(G.recreate_said(text)))))))))))))))))))))
   low = text:lower()
   -- a position typed as whole degrees after the hemisphere, then minutes ("N55 50.0 W003 20.0", "S33 57
   -- E151 10"): decimal degrees before their hemisphere ("55.833333 N 3.333333 W"); minutes of 60 or more
@@ -8536,6 +8553,13 @@ function G:value_before(s, c)
 end
 function G:trailing_fix(s)
   local c = self:find_word(s.trig + 1, s.e, "when once after upon on")
+  -- ("descend on 120 after he passes PIVIS", "climb on level 240 when ...": "on" before the instruction's own value,
+  -- as a Polish speaker says "to", opens no condition; the next condition word does)
+  while c < s.e and self:word(c, "on upon") do
+    local q = self:quantities(c + 1, s.e)[1]
+    if not (q and q.b <= c + 3 and not self:has_ref(c + 1, q.b, "waypoint")) then break end
+    c = self:find_word(c + 1, s.e, "when once after upon on")
+  end
   -- ("reduce 250 knots passing LOMKI", "descend FL200 overflying LOMKI": a verb of passing straight after the
   -- value, with no "when" before it, is the same condition)
   local bare = self:find_word(s.trig + 1, c, "passing passes reaching reaches overflying")
@@ -8554,7 +8578,7 @@ function G:trailing_fix(s)
   -- heading or rate, and the waypoint, its code or a name of the aircraft's route, closing the request;
   -- "expect lower after KURDI" is no such condition, nor ADDWPT's "after")
   -- ("climb 9500 meter after pass XPC": the verb's bare form straight after "after" is read at the verb below)
-  if self:word(c, "after") and not self:word(k, "it you passing passes reaching reaches overflying pass reach") then
+  if self:word(c, "after") and not self:word(k, "it he she you passing passes reaching reaches overflying pass reach") then
     if self.u:used(c) or not self:value_before(s, lead) then return nil end
     local e = s.e
     while e > k and self.t[e - 1].kind == "punct" and self.t[e - 1].text ~= "," do e = e - 1 end
@@ -8565,7 +8589,8 @@ function G:trailing_fix(s)
     local name = now and e > k and e <= k + 2 and self:place_by_name(k, e, now, true)
     return name and { b = lead, e = e, name = name } or nil
   end
-  if self:word(k, "it you") then k = self:skip_fillers(k + 1) end
+  -- (the aircraft's pronoun: "it", "you", or "he"/"she" as many speakers say of an aircraft, "after he passes PIVIS")
+  if self:word(k, "it you he she") then k = self:skip_fillers(k + 1) end
   -- ("fl100 when past WYP": typed short, "past" is passing; "climb FL390 once you reach BURAM", "... when you
   -- pass LOHRE": the verb's bare form after "you")
   if self:word(k, "passing passes reaching reaches overflying past reach pass") then
@@ -8574,7 +8599,7 @@ function G:trailing_fix(s)
     k = self:skip_fillers(k + 2)
   elseif self:word(k, "gets get") and self:word(k + 1, "to") then
     k = self:skip_fillers(k + 2)
-  elseif not (self:word(k, "is it's") and self:word(k + 1, "at over")) then  -- ("once it is over BUMIL")
+  elseif not (self:word(k, "is it's he's she's") and self:word(k + 1, "at over")) then  -- ("once it is over BUMIL")
     return nil
   else
     k = self:skip_fillers(k + 2)
@@ -16431,6 +16456,33 @@ G.below_hundred = { one = 1, two = 2, three = 3, four = 4, five = 5, six = 6, se
   ten = 10, eleven = 11, twelve = 12, thirteen = 13, fourteen = 14, fifteen = 15, sixteen = 16, seventeen = 17,
   eighteen = 18, nineteen = 19, twenty = 20, thirty = 30, forty = 40, fifty = 50, sixty = 60, seventy = 70,
   eighty = 80, ninety = 90 }
+-- "delete LOT three lima kilo", "show route of DLH four alpha xray": an airline's ICAO code typed in capitals, then
+-- the flight's digits and letters said as words (SAID_DIGIT, lexicon.phonetic; typed digits among them), is that
+-- callsign typed whole ("LOT3LK") when the whole run, to its first mark or the first other word, is exactly one
+-- aircraft's id and is not cut off ("..."); anything else stays as said (asked as before).
+function G.spelled_icao_ids(text, world)
+  if #world.aircraft == 0 or not text:find("%f[%w]%u%u%u%s") then return text end
+  local ids = {}
+  for _, a in ipairs(world.aircraft) do ids[(a.id or ""):upper()] = true end
+  local toks, bare = plain_words(text)
+  return tokens.rewrite(text, toks, function(i)
+    if not toks[i]:match("^%u%u%u$") or not toks[i + 1] then return nil end
+    local id, j, spelled = toks[i], i + 1, false
+    while toks[j] do
+      local b = bare[j]
+      local ch = SAID_DIGIT[b] or lexicon.phonetic[b] or (b:match("^%d+$") and #id == 3 and b)
+      if not ch then break end
+      spelled = spelled or not b:match("^%d")
+      id, j = id .. ch, j + 1
+      if toks[j - 1]:match("%p$") then break end
+    end
+    -- (a run cut off, "KLM four three two one... KLM, erm, ...", is the restart's: G.cut_off_restarts)
+    if toks[j - 1]:match("%.%.$") or toks[j - 1]:match("…$") or toks[j - 1]:match("%-$") then return nil end
+    if not spelled or not ids[id] or not id:match("^%u%u%u%d") then return nil end
+    return id .. (toks[j - 1]:match("%p+$") or ""), j
+  end)
+end
+
 function G.hundreds_callsign(text, world)
   if #world.aircraft == 0 or not text:find("[Hh][Uu][Nn][Dd][Rr][Ee][Dd]") then return text end
   local spaced = text:gsub("%S*[Hh][Uu][Nn][Dd][Rr][Ee][Dd]%S*", function(w) return (w:gsub("(%a)%-(%a)", "%1 %2")) end)
@@ -17880,6 +17932,7 @@ function M.translate(text, world)
   end
   text = airline_values(named_airline_ids(split_ids(unglued_ids(G.iata_ids(text, world.aircraft), world.aircraft),
     world.aircraft)), world.aircraft)
+  text = G.spelled_icao_ids(text, world)
   text = homophone_ids(G.hundreds_callsign(G.recognised_callsigns(glued_telephony(G.common_named(G.joined_telephony(G.aircraft_of_airline(text)), world),
     world.aircraft), world), world), world)
   text = G.other_callsign_denied(text, world.aircraft)

@@ -2976,6 +2976,17 @@ return {
       harasho = true, khorasho = true, ladno = true, ponyal = true, ponyala = true, ponyali = true, ponyatno = true },
     joining = {},
   },
+  -- Polish words in a Polish speaker's English ("LOT1LC speed 230 i potem heading 200", "speed 300, nie, 290", "climb
+  -- on 240, przepraszam, 230", "ok, dobrze, continue"): "potem" and "i potem"/"a potem" (then, and then) join
+  -- instructions in order, "nie" (no) and "przepraszam" (sorry, excuse me) open a self-correction as English "no"
+  -- and "sorry" do (closing the request, an apology), "dobrze" (all right) asks for nothing. None marks the
+  -- sentence; "tak" (yes), "proszę" and "dzięki" are accounted's.
+  polish = {
+    words = { potem = "then", ["i potem"] = "and then", ["a potem"] = "and then", nie = "no",
+      przepraszam = "sorry", dobrze = "okay" },
+    shared = { potem = true, ["i potem"] = true, ["a potem"] = true, nie = true, przepraszam = true, dobrze = true },
+    joining = {},
+  },
   -- Italian words in an Italian speaker's English ("Alitalia 1712 velocità 260 e poi quota 260", "turn at prua 200",
   -- "climb at 350, no scusa, 370", "allora, restart", "sì, ...", "va bene"): "velocità" is the speed, "prua" the
   -- heading, "poi" and "e poi" (then, and then) join instructions in order, "scusa" (sorry) opens a self-correction

@@ -20637,3 +20637,44 @@ do
   check_eq(ex("AZA610, which route he has?"), "LISTRTE AZA610")
   check_eq(ex("AZA610 direct DUOMO, which route has the most waypoints"), "DIRECT AZA610 DUOMO")
 end
+
+-- Cycle 63 (f222): a Polish speaker's English ("i potem", "nie", "przepraszam", "dobrze", "i" between two
+-- aircraft, "descend on 120" before a condition, "he" for the aircraft in a condition)
+do
+  local _, ex = scene({ "CRE LOT512 E195 52.2 20.9 090 FL240 270", "CRE WZZ33 A321 52.0 21.4 270 FL300 280",
+    "CRE SAS9 A20N 52.5 20.6 180 FL200 260", "DEFWPT OKTAW 52.3 21.5", "ADDWPT LOT512 OKTAW",
+    "DEFWPT BRZOZ 51.8 20.9", "ADDWPT WZZ33 BRZOZ" })
+  -- "potem", "i potem", "a potem" (then, and then) join instructions in order
+  check_eq(ex("LOT512 descend on FL200 i potem reduce 240 knots"), "ALT LOT512 FL200 ; SPD LOT512 240")
+  check_eq(ex("Wizz 33 heading 250, potem speed 260"), "HDG WZZ33 250 ; SPD WZZ33 260")
+  check_eq(ex("SAS9 climb FL220 a potem turn right heading 200"), "ALT SAS9 FL220 ; HDG SAS9 200 RIGHT")
+  -- "nie" (no) and "przepraszam" (sorry) open a self-correction
+  check_eq(ex("LOT512 speed 280, nie, 260"), "SPD LOT512 260")
+  check_eq(ex("Wizz 33 descend on 280, przepraszam, 260"), "ALT WZZ33 FL260")
+  asked(ex("SAS9 heading 200, nie, speed 240"), "a correction of another kind")
+  asked(ex("LOT512 climb FL260, przepraszam"), "an apology with no correction after it")
+  -- "dobrze" (all right) asks for nothing
+  check_eq(ex("dobrze, pause the simulation"), "HOLD")
+  check_eq(ex("show the trails, dobrze?"), "TRAIL ON")
+  -- "i" (and) after a value and before the next aircraft's name
+  check_eq(ex("LOT512 descend on 220 i Wizz 33 climb on 320"), "ALT LOT512 FL220 ; ALT WZZ33 FL320")
+  check_eq(ex("WZZ33 reduce 250 knots i SAS9 reduce 230 knots"), "SPD WZZ33 250 ; SPD SAS9 230")
+  asked(ex("LOT512 speed 250 i said 260"), "the English 'I' before its verb")
+  -- "on" before the instruction's value opens no condition; "he"/"she" is the aircraft in one
+  check_eq(ex("LOT512, he must descend on 200 after he passes OKTAW"), "AT LOT512 OKTAW DO ALT LOT512 FL200")
+  check_eq(ex("Wizz 33 climb on 320 when he will pass BRZOZ"), "AT WZZ33 BRZOZ DO ALT WZZ33 FL320")
+  check_eq(ex("WZZ33 reduce on 250 knots once she is over BRZOZ"), "AT WZZ33 BRZOZ DO SPD WZZ33 250")
+  asked(ex("SAS9 descend on 180 after he passes OKTAW"), "a waypoint off its route")
+  asked(ex("LOT512 descend on 200 when he passes"), "a condition with no waypoint")
+end
+do
+  -- an airline's ICAO code typed, then the flight said in words: that callsign when exactly one aircraft's
+  local _, ex = scene({ "CRE LOT2WT E195 52.2 20.9 090 FL240 270", "CRE LOT2WB E175 52.0 21.4 270 FL300 280",
+    "CRE SAS47 A20N 52.5 20.6 180 FL200 260" })
+  check_eq(ex("remove LOT two whiskey tango please"), "DEL LOT2WT")
+  check_eq(ex("list the route of LOT two whiskey bravo"), "LISTRTE LOT2WB")
+  check_eq(ex("what is the altitude of SAS four seven?"), "POS SAS47")
+  check_eq(ex("delete LOT 2 whiskey tango"), "DEL LOT2WT")
+  asked(ex("delete LOT two whiskey"), "two aircraft begin so")
+  asked(ex("delete LOT two whiskey tango bravo"), "no aircraft is all of it")
+end
