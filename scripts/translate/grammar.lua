@@ -2758,6 +2758,11 @@ end
 G.comment_takes_back = set_of({ "no", "not", "negative", "correction", "sorry", "instead", "meant", "mean",
   "actually", "oops", "disregard", "undo", "cancel", "typo", "wrong", "rather" })
 
+-- Words of a script's comment that state a value other than the one typed ("% was 28000", "% now FL250",
+-- "% then 32000"; G.script_comment)
+G.comment_states = set_of({ "was", "were", "previously", "prev", "prior", "old", "formerly", "earlier", "before",
+  "now", "currently", "current", "is", "at", "then", "later", "next" })
+
 -- Words in a notebook's "#" comment that may hold, take back or time what is before it (G.written_forms)
 G.comment_holds = set_of({ "not", "no", "don't", "dont", "never", "cancel", "wait", "hold", "yet", "later", "until",
   "till", "after", "before", "when", "once", "then", "instead", "meant", "mean", "actually", "oops", "sorry",
@@ -3018,6 +3023,21 @@ function G.script_forms(text)
   return table.concat(out, "; ")
 end
 
+-- A line a script has commented out: "%", "#" or "//" first, then code, an assignment ("% KLM12.alt = 30000",
+-- "# klm12.hdg = 270") or a call ("// set(KLM12,'alt',300)"), which the script would not run: the question it
+-- asks, or nil. A note opened by "#" in words ("# sanity: where's tra6021 now") is read.
+function G.commented_out(text)
+  local mark, code = text:match("^%s*(%%+)%s*(%S.*)$")
+  if not mark then mark, code = text:match("^%s*(#+)%s*(%S.*)$") end
+  if not mark then mark, code = text:match("^%s*(//+)%s*(%S.*)$") end
+  if not code then return nil end
+  local assigns = code:find("[%w%)%]]%s*[%+%-]?=%s*[^=]") and not code:find("==", 1, true)
+  local call = code:find("%a[%w_]*%(.*%)")
+  if not (assigns or call) then return nil end
+  return string.format("'%s' is commented out ('%s' first), so a script would not run it: nothing was sent. "
+    .. "Should it run? Please send it without the '%s'.", code, mark, mark)
+end
+
 -- A script's comment, "%" typed apart to the end of the line ("KLM12.alt = 26000 % ft", "hdg(KLM12) = 100; % R"),
 -- read into the value it follows when it holds only lexicon.script_comment_words and numbers already typed
 -- before it ("hdg = 90 - 60 % left 60"): the unit after the value ("26000 ft"), "FL" or "mach" before it ("alt 210
@@ -3073,6 +3093,23 @@ function G.script_comment(text)
   end
   if not known then
     if plain and comment:match("^%a[%a%s,'%-]*$") then return before .. " - " .. comment end
+    -- ("% was 28000", "% now 25000", "% 28000", "% then 32000": a comment of numbers and words of
+    -- G.comment_states only, one number not typed before, said bare or after such a word, may be the value it
+    -- leaves, the aircraft's state or a later step as well as a correction: set apart as a remark, for the clause
+    -- rules to ask what it means; a word that takes the value back, "% no, 32000", is a correction)
+    local new, cue, only = false, false, true
+    for _, w in ipairs(words) do
+      local n = w:match("^%a*(%d*%.?%d+)$")
+      local fl = w:match("^fl(%d+)$")
+      if fl and said[tonumber(fl) * 100] then n = nil end
+      if n and not said[tonumber(n)] then
+        new = true
+        -- (a level typed after "FL" against the value typed, "alt = 30000 % FL280", is no unit: asked too)
+        if w:match("^%d") or fl then cue = true end
+      elseif G.comment_states[w] then cue = true
+      elseif not (n or kinds[w]) then only = false end
+    end
+    if new and cue and only then return before .. " - " .. comment end
     -- ("% R L", "% ft kt": two of a kind with no word that takes one back: asked which)
     local holds = false
     for _, w in ipairs(words) do holds = holds or G.comment_holds[w] end
@@ -3136,6 +3173,14 @@ local function written_forms(text, world)
   local function where(needle, pattern, repl)
     if low:find(needle) then text, low = tokens.gsub_where(text, low, needle, pattern, repl) end
   end
+  -- "descend to 3000 in meters", "9100, metres", "9000 (metres)", "9000 # metres": a number's metre unit set apart
+  -- after it, with "in", a comma, a dash, a bracket or a comment's mark, is its unit ("3000 meters"), not a word of its own that drops it
+  where("met", "(%d)([%s,%(%-#/]+)([%a%s]-)%f[%a]([Mm][Ee][Tt][Rr]?[Ee]?[Rr]?[Ee]?[Ss]?)%f[%A](%)?)", function(d, sep, mid, unit)
+    local m = mid:lower():gsub("%s+$", "")
+    if (m ~= "" and m ~= "in") or not lexicon.thousands_units[unit:lower()] or unit:lower() == "m" then return nil end
+    if m == "" and not sep:find("[,%(%-#/]") then return nil end
+    return d .. " " .. unit
+  end)
   -- ".hold", ".run": a command typed with a text client's leading dot is the word
   where("%.", "^(%s*)%.(%a)", "%1%2")
   -- "O'Hare", "Chicago O'Hare": a name written with "O'" is the navdata's, which has no apostrophe (OHARE;
@@ -3266,7 +3311,12 @@ local function written_forms(text, world)
   -- "dtmult 50  # batch it": a notebook's comment after an instruction, "#" to the end, is set apart as a
   -- remark after a dash; one with a word that may hold or take back what is before it ("# not cleared yet",
   -- "# no wait 210", "# cancel", "# after DIMSA") stays as typed, for the clause rules to read or ask
+  -- ("alt = 9000 // m": a metre's letter alone after a comment's slashes is the value's unit, as after "#" below)
+  where("//", "(%d)%s*//+%s*([Mm])%s*$", "%1 %2")
   where("#", "(%S)%s+#+%s*(%a.*)$", function(before, remark)
+    local unit = lexicon.script_comment_words[remark:lower():match("^(%a+)%s*$") or ""]
+    -- ("alt = 9000 # m": a level's unit alone after it is the value's, as after "%" (G.script_comment))
+    if unit and unit.unit == "m" then return before .. " m" end
     for w in remark:lower():gmatch("[%a']+") do
       if G.comment_holds[w] then return nil end
     end
@@ -17679,6 +17729,8 @@ function M.translate(text, world)
   world.waypoints = world.waypoints or {}
   local quoted = M.quoted_clearance(text, world)
   if quoted then return quoted end
+  local commented = G.commented_out(text)
+  if commented then return { commands = {}, ask = commented } end
   if text:find("\xC3", 1, true) then text = text:gsub("[\xC3][\x80-\xBF]", lexicon.accents) end  -- (UTF-8 Latin-1 letters)
   -- (the Turkish letters of UTF-8 Latin Extended-A: "hayır", "sağol", "Şile")
   if text:find("[\xC4\xC5]") then text = text:gsub("[\xC4\xC5][\x80-\xBF]", lexicon.accents) end
