@@ -16965,6 +16965,7 @@ function G.clock_start(text)
     return nil
   end
   local tb, te = low:find("%f[%d]%d%d?:%d%d:?%d?%d?%f[%D]")
+  if not tb then return text end  -- ("alt = 30000:32000": a colon between longer numbers is no clock time)
   local start, parts = secs(low:sub(tb, te))
   if not start then return text end
   -- (the sentence of the start time: from the mark before it to the mark after it)

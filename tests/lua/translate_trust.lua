@@ -20678,4 +20678,7 @@ do
   asked(ex("%% old: AUA41.alt += 2000"), "a commented-out step")
   check_eq(ex("# sanity: where's CSA7 now"), "POS CSA7")
   check_eq(ex("AUA41.alt = 31000"), "ALT AUA41 31000")
+  -- a colon between two long numbers (a MATLAB range) is no clock time: asked, never an error
+  asked(ex("AUA41.alt = 31000:33000"), "a range of levels")
+  asked(ex("AUA41 alt 29000:31000"), "a range of levels")
 end
