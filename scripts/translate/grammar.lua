@@ -12591,6 +12591,15 @@ function G:unaccounted()
   -- ("KLM12 no need to climb to FL240", "no need for the descent"): what is not needed is no instruction; "no
   -- need" is asked wherever it stands outside a reason (G:said's guard before the scans for "no")
   local no_said = self:said("no")
+  -- (Italian "non", Russian "ne" (не), as "no" straight before an instruction's verb below: "KLM12 non climb FL300";
+  -- typed in lower case or capitalised, no ref's letters: "Alpine 72NE reduce")
+  local not_said = no_said or self:said("non ne")
+  local function in_ref(k)
+    for _, r in ipairs(self.refs or {}) do
+      if r.b <= k and k < r.e then return true end
+    end
+    return false
+  end
   for i = 1, no_said and #self.t or 0 do
     local t = self.t[i]
     if t.text == "no" and self:word(i + 1, "need needs") and self:word(i + 2, "to for") and not explained[i]
@@ -12603,14 +12612,16 @@ function G:unaccounted()
   -- an instruction's verb or noun (lexicon.refusable_verbs; fillers or a turn's side between, no comma) may refuse
   -- it or take back what came before: asked, naming both readings, never read as either ("no, descend" and
   -- "negative descend" are corrections, and so is "wait no descend" straight after a value, m:marker_after_value)
-  for i = 1, no_said and #self.t or 0 do
+  for i = 1, not_said and #self.t or 0 do
     local t = self.t[i]
-    local v = t.text == "no" and not (self:word(i - 1, "wait") and self:marker_after_value(i)) and i + 1
+    local v = (t.text == "no" or t.text == "non" or t.text == "ne") and not (self:word(i - 1, "wait")
+      and self:marker_after_value(i)) and not (t.text ~= "no" and (self:marker_after_value(i) or not (t.raw:match("^%u?%l+$"))
+        or in_ref(i))) and i + 1
     while v and self.t[v] and (self.t[v].filler or self:word(v, "@left @right")) do v = v + 1 end
     if v and self:word(v, "@refusable_verbs") and not self.noted[i] and not self:in_reason(i) then
       local said = self:raw(i + 1, v + 1)
-      self:need(string.format("%sIs 'no %s' a refusal (do not), or a correction ('no, %s')? Please say it again.",
-        #self.out > 0 and "I have " .. table.concat(self.out, " ; ") .. ". " or "", said, said))
+      self:need(string.format("%sIs '%s %s' a refusal (do not), or a correction ('%s, %s')? Please say it again.",
+        #self.out > 0 and "I have " .. table.concat(self.out, " ; ") .. ". " or "", t.text, said, t.text, said))
       return
     end
   end

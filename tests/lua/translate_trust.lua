@@ -20682,3 +20682,17 @@ do
   asked(ex("AUA41.alt = 31000:33000"), "a range of levels")
   asked(ex("AUA41 alt 29000:31000"), "a range of levels")
 end
+
+-- Cycle 63 (fhz14), hunted: Italian "non" and Russian "ne" (не, not) straight before an instruction's verb may refuse
+-- it as "no" does ("KLM12 non climb FL300" was flown as the climb): asked, naming both readings. "ne" between two
+-- values stays the correction's marker.
+do
+  local _, ex = scene({ "CRE AZA61 A320 45 9 090 FL250 280", "CRE AFL3 A321 55.6 37.0 045 FL150 280" })
+  asked(ex("AZA61 non climb FL330"), "Italian 'non' before the verb")
+  asked(ex("AZA61, non turn right heading 120"), "Italian 'non' before the verb")
+  asked(ex("AFL3 ne descend FL90"), "Russian 'ne' before the verb")
+  asked(ex("AFL3 ne reduce speed 250"), "Russian 'ne' before the verb")
+  check_eq(ex("AFL3 heading 200 ne 210"), "HDG AFL3 210")
+  check_eq(ex("AZA61 climb FL330 non-stop"), "ALT AZA61 FL330")
+  check_eq(ex("AZA61 climb FL330"), "ALT AZA61 FL330")
+end
