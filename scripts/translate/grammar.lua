@@ -2775,6 +2775,11 @@ end
 G.comment_takes_back = set_of({ "no", "not", "negative", "correction", "sorry", "instead", "meant", "mean",
   "actually", "oops", "disregard", "undo", "cancel", "typo", "wrong", "rather" })
 
+-- Words of a script's comment that state a value other than the one typed ("% was 28000", "% now FL250",
+-- "% then 32000"; G.script_comment)
+G.comment_states = set_of({ "was", "were", "previously", "prev", "prior", "old", "formerly", "earlier", "before",
+  "now", "currently", "current", "is", "at", "then", "later", "next" })
+
 -- Words in a notebook's "#" comment that may hold, take back or time what is before it (G.written_forms)
 G.comment_holds = set_of({ "not", "no", "don't", "dont", "never", "cancel", "wait", "hold", "yet", "later", "until",
   "till", "after", "before", "when", "once", "then", "instead", "meant", "mean", "actually", "oops", "sorry",
@@ -3035,6 +3040,21 @@ function G.script_forms(text)
   return table.concat(out, "; ")
 end
 
+-- A line a script has commented out: "%", "#" or "//" first, then code, an assignment ("% KLM12.alt = 30000",
+-- "# klm12.hdg = 270") or a call ("// set(KLM12,'alt',300)"), which the script would not run: the question it
+-- asks, or nil. A note opened by "#" in words ("# sanity: where's tra6021 now") is read.
+function G.commented_out(text)
+  local mark, code = text:match("^%s*(%%+)%s*(%S.*)$")
+  if not mark then mark, code = text:match("^%s*(#+)%s*(%S.*)$") end
+  if not mark then mark, code = text:match("^%s*(//+)%s*(%S.*)$") end
+  if not code then return nil end
+  local assigns = code:find("[%w%)%]]%s*[%+%-]?=%s*[^=]") and not code:find("==", 1, true)
+  local call = code:find("%a[%w_]*%(.*%)")
+  if not (assigns or call) then return nil end
+  return string.format("'%s' is commented out ('%s' first), so a script would not run it: nothing was sent. "
+    .. "Should it run? Please send it without the '%s'.", code, mark, mark)
+end
+
 -- A script's comment, "%" typed apart to the end of the line ("KLM12.alt = 26000 % ft", "hdg(KLM12) = 100; % R"),
 -- read into the value it follows when it holds only lexicon.script_comment_words and numbers already typed
 -- before it ("hdg = 90 - 60 % left 60"): the unit after the value ("26000 ft"), "FL" or "mach" before it ("alt 210
@@ -3090,6 +3110,23 @@ function G.script_comment(text)
   end
   if not known then
     if plain and comment:match("^%a[%a%s,'%-]*$") then return before .. " - " .. comment end
+    -- ("% was 28000", "% now 25000", "% 28000", "% then 32000": a comment of numbers and words of
+    -- G.comment_states only, one number not typed before, said bare or after such a word, may be the value it
+    -- leaves, the aircraft's state or a later step as well as a correction: set apart as a remark, for the clause
+    -- rules to ask what it means; a word that takes the value back, "% no, 32000", is a correction)
+    local new, cue, only = false, false, true
+    for _, w in ipairs(words) do
+      local n = w:match("^%a*(%d*%.?%d+)$")
+      local fl = w:match("^fl(%d+)$")
+      if fl and said[tonumber(fl) * 100] then n = nil end
+      if n and not said[tonumber(n)] then
+        new = true
+        -- (a level typed after "FL" against the value typed, "alt = 30000 % FL280", is no unit: asked too)
+        if w:match("^%d") or fl then cue = true end
+      elseif G.comment_states[w] then cue = true
+      elseif not (n or kinds[w]) then only = false end
+    end
+    if new and cue and only then return before .. " - " .. comment end
     -- ("% R L", "% ft kt": two of a kind with no word that takes one back: asked which)
     local holds = false
     for _, w in ipairs(words) do holds = holds or G.comment_holds[w] end
@@ -3153,6 +3190,14 @@ local function written_forms(text, world)
   local function where(needle, pattern, repl)
     if low:find(needle) then text, low = tokens.gsub_where(text, low, needle, pattern, repl) end
   end
+  -- "descend to 3000 in meters", "9100, metres", "9000 (metres)", "9000 # metres": a number's metre unit set apart
+  -- after it, with "in", a comma, a dash, a bracket or a comment's mark, is its unit ("3000 meters"), not a word of its own that drops it
+  where("met", "(%d)([%s,%(%-#/]+)([%a%s]-)%f[%a]([Mm][Ee][Tt][Rr]?[Ee]?[Rr]?[Ee]?[Ss]?)%f[%A](%)?)", function(d, sep, mid, unit)
+    local m = mid:lower():gsub("%s+$", "")
+    if (m ~= "" and m ~= "in") or not lexicon.thousands_units[unit:lower()] or unit:lower() == "m" then return nil end
+    if m == "" and not sep:find("[,%(%-#/]") then return nil end
+    return d .. " " .. unit
+  end)
   -- ".hold", ".run": a command typed with a text client's leading dot is the word
   where("%.", "^(%s*)%.(%a)", "%1%2")
   -- "O'Hare", "Chicago O'Hare": a name written with "O'" is the navdata's, which has no apostrophe (OHARE;
@@ -3283,7 +3328,12 @@ local function written_forms(text, world)
   -- "dtmult 50  # batch it": a notebook's comment after an instruction, "#" to the end, is set apart as a
   -- remark after a dash; one with a word that may hold or take back what is before it ("# not cleared yet",
   -- "# no wait 210", "# cancel", "# after DIMSA") stays as typed, for the clause rules to read or ask
+  -- ("alt = 9000 // m": a metre's letter alone after a comment's slashes is the value's unit, as after "#" below)
+  where("//", "(%d)%s*//+%s*([Mm])%s*$", "%1 %2")
   where("#", "(%S)%s+#+%s*(%a.*)$", function(before, remark)
+    local unit = lexicon.script_comment_words[remark:lower():match("^(%a+)%s*$") or ""]
+    -- ("alt = 9000 # m": a level's unit alone after it is the value's, as after "%" (G.script_comment))
+    if unit and unit.unit == "m" then return before .. " m" end
     for w in remark:lower():gmatch("[%a']+") do
       if G.comment_holds[w] then return nil end
     end
@@ -12566,6 +12616,15 @@ function G:unaccounted()
   -- ("KLM12 no need to climb to FL240", "no need for the descent"): what is not needed is no instruction; "no
   -- need" is asked wherever it stands outside a reason (G:said's guard before the scans for "no")
   local no_said = self:said("no")
+  -- (Italian "non", Russian "ne" (не), as "no" straight before an instruction's verb below: "KLM12 non climb FL300";
+  -- typed in lower case or capitalised, no ref's letters: "Alpine 72NE reduce")
+  local not_said = no_said or self:said("non ne")
+  local function in_ref(k)
+    for _, r in ipairs(self.refs or {}) do
+      if r.b <= k and k < r.e then return true end
+    end
+    return false
+  end
   for i = 1, no_said and #self.t or 0 do
     local t = self.t[i]
     if t.text == "no" and self:word(i + 1, "need needs") and self:word(i + 2, "to for") and not explained[i]
@@ -12578,14 +12637,16 @@ function G:unaccounted()
   -- an instruction's verb or noun (lexicon.refusable_verbs; fillers or a turn's side between, no comma) may refuse
   -- it or take back what came before: asked, naming both readings, never read as either ("no, descend" and
   -- "negative descend" are corrections, and so is "wait no descend" straight after a value, m:marker_after_value)
-  for i = 1, no_said and #self.t or 0 do
+  for i = 1, not_said and #self.t or 0 do
     local t = self.t[i]
-    local v = t.text == "no" and not (self:word(i - 1, "wait") and self:marker_after_value(i)) and i + 1
+    local v = (t.text == "no" or t.text == "non" or t.text == "ne") and not (self:word(i - 1, "wait")
+      and self:marker_after_value(i)) and not (t.text ~= "no" and (self:marker_after_value(i) or not (t.raw:match("^%u?%l+$"))
+        or in_ref(i))) and i + 1
     while v and self.t[v] and (self.t[v].filler or self:word(v, "@left @right")) do v = v + 1 end
     if v and self:word(v, "@refusable_verbs") and not self.noted[i] and not self:in_reason(i) then
       local said = self:raw(i + 1, v + 1)
-      self:need(string.format("%sIs 'no %s' a refusal (do not), or a correction ('no, %s')? Please say it again.",
-        #self.out > 0 and "I have " .. table.concat(self.out, " ; ") .. ". " or "", said, said))
+      self:need(string.format("%sIs '%s %s' a refusal (do not), or a correction ('%s, %s')? Please say it again.",
+        #self.out > 0 and "I have " .. table.concat(self.out, " ; ") .. ". " or "", t.text, said, t.text, said))
       return
     end
   end
@@ -16967,6 +17028,7 @@ function G.clock_start(text)
     return nil
   end
   local tb, te = low:find("%f[%d]%d%d?:%d%d:?%d?%d?%f[%D]")
+  if not tb then return text end  -- ("alt = 30000:32000": a colon between longer numbers is no clock time)
   local start, parts = secs(low:sub(tb, te))
   if not start then return text end
   -- (the sentence of the start time: from the mark before it to the mark after it)
@@ -17731,6 +17793,8 @@ function M.translate(text, world)
   world.waypoints = world.waypoints or {}
   local quoted = M.quoted_clearance(text, world)
   if quoted then return quoted end
+  local commented = G.commented_out(text)
+  if commented then return { commands = {}, ask = commented } end
   if text:find("\xC3", 1, true) then text = text:gsub("[\xC3][\x80-\xBF]", lexicon.accents) end  -- (UTF-8 Latin-1 letters)
   -- (the Turkish letters of UTF-8 Latin Extended-A: "hayır", "sağol", "Şile")
   if text:find("[\xC4\xC5]") then text = text:gsub("[\xC4\xC5][\x80-\xBF]", lexicon.accents) end

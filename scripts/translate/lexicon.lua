@@ -1490,6 +1490,7 @@ return {
     ft = { unit = "ft" }, feet = { unit = "ft" }, foot = { unit = "ft" },
     kt = { unit = "kt" }, kts = { unit = "kt" }, knots = { unit = "kt" }, knot = { unit = "kt" },
     fpm = { unit = "fpm" }, ["ft/min"] = { unit = "fpm" },
+    m = { unit = "m" }, metres = { unit = "m" }, meters = { unit = "m" }, metre = { unit = "m" }, meter = { unit = "m" },
     nm = { unit = "nm" }, s = { unit = "s" }, sec = { unit = "s" }, secs = { unit = "s" }, seconds = { unit = "s" },
     deg = { unit = "degrees" }, degs = { unit = "degrees" }, degrees = { unit = "degrees" },
     fl = { prefix = "FL" }, mach = { prefix = "mach " },

@@ -20678,3 +20678,62 @@ do
   asked(ex("delete LOT two whiskey"), "two aircraft begin so")
   asked(ex("delete LOT two whiskey tango bravo"), "no aircraft is all of it")
 end
+
+-- Cycle 63 (fhz14), hunted: a script's "%" comment holding a number other than the value typed ("% was 28000",
+-- "% now 25000", "% 28000", "% then 32000", "% FL280" after 30000) is asked, never read as the value; a correction
+-- ("% no, 32000") stays read. A metre unit in a comment ("% m", "# metres", "// m") or set apart after the number
+-- ("3000 in meters", "9100, metres", "9000 (metres)") is the value's unit. A line commented out ("% KLM12.alt =
+-- 30000", "# set(...)", "// ...") is asked, not run.
+do
+  local _, ex = scene({ "CRE AUA41 A320 48 16 090 FL250 280", "CRE CSA7 A321 48.2 16.3 180 FL300 290",
+    "CRE AFL3 A321 55.6 37.0 045 FL150 280" })
+  -- a number in a comment that is no correction
+  asked(ex("AUA41.alt = 31000 % was 27000"), "the value it leaves, in a comment")
+  asked(ex("set(AUA41, 'alt', 31000) % previously 29000"), "the value it leaves, in a comment")
+  asked(ex("CSA7.hdg = 250 % was 180"), "the heading it leaves, in a comment")
+  asked(ex("AUA41.alt = 31000 % now 25000"), "the aircraft's state, in a comment")
+  asked(ex("AUA41.alt = 31000 % at 25000 currently"), "the aircraft's state, in a comment")
+  asked(ex("AUA41.alt = 31000 % 29000"), "a bare second number")
+  asked(ex("AUA41.alt = 31000 % then 33000"), "a later step with no verb")
+  asked(ex("AUA41.alt = 31000 % FL290"), "a level against the value typed")
+  check_eq(ex("AUA41.alt = 31000 % no, 33000"), "ALT AUA41 33000")
+  check_eq(ex("AUA41.alt = 31000 % correction 33000"), "ALT AUA41 33000")
+  check_eq(ex("AUA41.alt = 29000; % FL290"), "ALT AUA41 FL290")
+  check_eq(ex("AUA41.alt = 31000 % crew request"), "ALT AUA41 31000")
+  -- a metre unit in a comment, or set apart after its number
+  check_eq(ex("AUA41.alt = 9000 % m"), "ALT AUA41 29500")
+  check_eq(ex("set(AUA41,'alt',9000) % metres"), "ALT AUA41 29500")
+  check_eq(ex("AUA41 alt 9000 # meters"), "ALT AUA41 29500")
+  check_eq(ex("AUA41.alt = 9000 // m"), "ALT AUA41 29500")
+  check_eq(ex("AFL3 descend to 2700 in meters"), "ALT AFL3 8900")
+  check_eq(ex("AFL3 descend 2700, metres"), "ALT AFL3 8900")
+  check_eq(ex("AFL3 descend to 2700 (metres) please"), "ALT AFL3 8900")
+  check_eq(ex("AFL3 descend to 2700 metres"), "ALT AFL3 8900")
+  check_eq(ex("AUA41.alt = 9000 % ft"), "ALT AUA41 9000")
+  asked(ex("AUA41.alt = 31000 % metres"), "31000 metres is no level")
+  asked(ex("AFL3 descend to 2700 feet, not metres"), "a unit taken back")
+  -- a line commented out
+  asked(ex("% AUA41.alt = 31000"), "a commented-out assignment")
+  asked(ex("#CSA7.hdg = 250"), "a commented-out assignment")
+  asked(ex("// set(AUA41,'spd',250)"), "a commented-out call")
+  asked(ex("%% old: AUA41.alt += 2000"), "a commented-out step")
+  check_eq(ex("# sanity: where's CSA7 now"), "POS CSA7")
+  check_eq(ex("AUA41.alt = 31000"), "ALT AUA41 31000")
+  -- a colon between two long numbers (a MATLAB range) is no clock time: asked, never an error
+  asked(ex("AUA41.alt = 31000:33000"), "a range of levels")
+  asked(ex("AUA41 alt 29000:31000"), "a range of levels")
+end
+
+-- Cycle 63 (fhz14), hunted: Italian "non" and Russian "ne" (не, not) straight before an instruction's verb may refuse
+-- it as "no" does ("KLM12 non climb FL300" was flown as the climb): asked, naming both readings. "ne" between two
+-- values stays the correction's marker.
+do
+  local _, ex = scene({ "CRE AZA61 A320 45 9 090 FL250 280", "CRE AFL3 A321 55.6 37.0 045 FL150 280" })
+  asked(ex("AZA61 non climb FL330"), "Italian 'non' before the verb")
+  asked(ex("AZA61, non turn right heading 120"), "Italian 'non' before the verb")
+  asked(ex("AFL3 ne descend FL90"), "Russian 'ne' before the verb")
+  asked(ex("AFL3 ne reduce speed 250"), "Russian 'ne' before the verb")
+  check_eq(ex("AFL3 heading 200 ne 210"), "HDG AFL3 210")
+  check_eq(ex("AZA61 climb FL330 non-stop"), "ALT AZA61 FL330")
+  check_eq(ex("AZA61 climb FL330"), "ALT AZA61 FL330")
+end
