@@ -20686,3 +20686,22 @@ do
   -- an airline in lower case is a word, and an airline with no aircraft flying is no candidate
   check(not (tr63("Iberia, climb FL340").ask or ""):find("alone is not", 1, true), "no Iberia flying")
 end
+
+-- Cycle 63 (fpol8): the side of a turn stressed against the other ("right, not left") restates it
+do
+  local s = squawk.sim.new()
+  for _, c in ipairs({ "CRE KLM12 A320 48.5 11 90 FL250 280", "CRE AFR44 A320 48.4 11.5 90 FL250 280" }) do
+    check(s:exec(c))
+  end
+  local function ex(text) return said(graph.translate(text, { sim = s, mode = "offline" })) end
+  check_eq(ex("would you let AFR44 turn left to heading 010, left, not right, please"), "HDG AFR44 10 LEFT")
+  check_eq(ex("KLM12 turn right 40 degrees right not left"), "HDG KLM12 130 RIGHT")
+  check_eq(ex("AFR44 turn left heading 350, left, not right, and descend FL200"), "HDG AFR44 350 LEFT ; ALT AFR44 FL200")
+  asked(ex("AFR44 turn left heading 350, not right"), "'not right' alone may be 'that is not right'")
+  asked(ex("KLM12 turn right heading 090, not left"), "the side not said again")
+  -- the side denied is the one turned, turns both ways, or no turn: asked
+  asked(ex("KLM12 turn right heading 150, not right"), "the side turned denied")
+  asked(ex("KLM12 turn right heading 150 and AFR44 turn left heading 200, not left"), "turns both ways")
+  asked(ex("KLM12 descend FL200, not left"), "no turn")
+  asked(ex("AFR44 turn left heading 350, right, not left"), "the other side said")
+end
