@@ -11708,7 +11708,37 @@ function G:explained_spans(issued, kinds)
     end
     k = e + 1
   end
+  -- ("turn right to heading 090, right, not left", "left not right": the side turned restated against the other;
+  -- explained only when every turn issued is to that side)
+  self:side_not_other(inside)
   return inside
+end
+
+-- Marks in `inside` "SIDE[,] not OTHER" closing a clause, where SIDE is the side every issued turn (self.out, HDG ...
+-- LEFT/RIGHT) takes, said again, and OTHER the opposite: the speaker stressing the turn's side. Nothing when no turn
+-- is issued, turns go both ways, or the side is not said again before "not" ("turn left ..., not right." may mean
+-- "that is not right": asked).
+function G:side_not_other(inside)
+  local side
+  for _, line in ipairs(self.out) do
+    local s = line:match("^HDG %S+ %S+ (%u+)$")
+    if s then
+      if side and side ~= s then return end
+      side = s
+    end
+  end
+  if not side then return end
+  local other = side == "LEFT" and "right" or "left"
+  for k = 2, #self.t - 1 do
+    local nx = self.t[k + 2]
+    if self:word(k, "not") and self:word(k + 1, other) and (not nx or nx.kind == "punct") then
+      local p = self.t[k - 1].kind == "punct" and self.t[k - 1].text == "," and k - 1 or k
+      if self:word(p - 1, side:lower()) and (p - 1 == 1 or self.t[p - 2].kind == "punct" or self:intent_at(p - 2)
+          or self.t[p - 2].kind == "number" or self:word(p - 2, "degrees")) then
+        for x = p - 1, k + 1 do inside[x] = true end
+      end
+    end
+  end
 end
 
 -- "run at double speed until the Gander boundary", "fast forward five minutes so the westbounds reach 20

@@ -48,7 +48,9 @@
 --     opts.ignored  {[word] = true}: leftover words the speaker said carry
 --                   nothing (the dialogue sets it after "ignore it")
 --   A question about an inexactly heard callsign carries result.confirm =
---   {id =, heard =}. Commands that need a yes first (confirmation(): several
+--   {id =, heard =}; one about an airline said alone as the addressee also
+--   {choices = {callsign, ...}} (with id only when one fits): the next say()
+--   of one of those callsigns alone confirms it. Commands that need a yes first (confirmation(): several
 --   aircraft deleted, RESET, IC, conflict detection/resolution off; the
 --   grammar's confirm_first: a relative turn of more than 180 degrees, an
 --   airport found by name only far away) come back as a yes/no question with
@@ -449,7 +451,15 @@ function Dialogue:say(text)
     r.dropped = pending.request
     return r
   end
-  if pending and pending.confirm and grammar.lexicon_says(text, "yes") then
+  -- a question naming the callsigns an airline said alone may mean (confirm.choices): one of them answers it
+  for _, id in ipairs(pending and pending.confirm and pending.confirm.choices or {}) do
+    if key == id:lower() then
+      local confirmed = { [id] = true }
+      for k in pairs(pending.confirmed or {}) do confirmed[k] = true end
+      return self:again(pending, setmetatable({ confirmed = confirmed, ignored = pending.ignored }, { __index = self.opts }))
+    end
+  end
+  if pending and pending.confirm and pending.confirm.id and grammar.lexicon_says(text, "yes") then
     local confirmed = { [pending.confirm.id] = true }
     for k in pairs(pending.confirmed or {}) do confirmed[k] = true end
     local opts = setmetatable({ confirmed = confirmed, ignored = pending.ignored }, { __index = self.opts })

@@ -969,7 +969,18 @@ function m:airline_only(s)
     local icao, e, codes = self:airline_at(i)
     local fits = icao and self:airline_name_shared(self:said_name(i, e), self:airline_fleet(icao, codes)) or {}
     if #fits > 1 then
+      -- (said alone as the addressee, one of the callsigns named answers it: confirm.choices, m:alone_confirmed)
+      if not self:word(i - 1, "the") and self:alone_addressee(i, e) then
+        self.confirm = self.confirm or { choices = fits, heard = self:raw(i, e) }
+      end
       return self:need(string.format("Which %s: %s?", self:raw(i, e), table.concat(fits, " or ")))
+    end
+    -- ("Ryanair, turn left 40" with RYR4KP the one Ryanair flying: a callsign cut short, asked by naming the one
+    -- it fits; a yes reads the request again with that callsign confirmed, m:alone_confirmed)
+    if #fits == 1 and not self:word(i - 1, "the") and self:alone_addressee(i, e)
+        and not (self.world.confirmed or {})[fits[1]] then
+      self.confirm = self.confirm or { id = fits[1], heard = self:raw(i, e), choices = fits }
+      return self:need(string.format("%s alone is not a callsign: do you mean %s?", self:raw(i, e), fits[1]))
     end
     if icao and #fits == 0 and self:word(i - 1, "the") and #self.fleet > 0 then
       return self:need(string.format("No %s aircraft is flying. Which aircraft do you mean?", self:raw(i, e)))
@@ -1169,6 +1180,33 @@ function m:insert_ref(fits, b, e, by)
   return e
 end
 
+-- True when the airline over tokens b..e-1, said without "the", stands as a clause's addressee: written with a
+-- capital, opening the utterance or a clause (after punctuation, "and" or "then"), no correction after it, and no
+-- callsign said in its clause (up to the next punctuation, "and" or "then") or straight after it.
+function m:alone_addressee(b, e)
+  if not self.t[b].raw:match("%u") then return false end
+  local function clause_break(k)
+    return self.t[k].kind == "punct" or self:word(k, "and @then_words")
+  end
+  if b > 1 and not clause_break(b - 1) then return false end
+  if self:word(self:skip_fillers(e, false), "@correction") then return false end
+  local k = e
+  while self.t[k] and not clause_break(k) do k = k + 1 end
+  return not (self:has_ref(e, k, "aircraft")
+    or self:has_ref(self:skip_fillers(e, false), self:skip_fillers(e, false) + 1, "aircraft"))
+end
+
+-- True when the airline over tokens b..e-1 stands alone as a clause's addressee (m:alone_addressee) and the speaker
+-- confirmed exactly one of the aircraft of it flying (`fits`; world.confirmed: the "yes" or the callsign answering
+-- airline_only's "X alone is not a callsign: do you mean ID?" or "Which X: ID1 or ID2?").
+function m:alone_confirmed(b, e, fits)
+  local n = 0
+  for _, id in ipairs(fits) do
+    if (self.world.confirmed or {})[id] then n = n + 1 end
+  end
+  return n == 1 and self:alone_addressee(b, e)
+end
+
 -- True when the airline named over tokens b..e-1 without "the" is a clause's addressee
 -- (lexicon.callsign_confirm.airline_alone_addressee): the request gives more than one kind of
 -- instruction or names more than one aircraft ("Ryanair turn left heading 100 and climb FL320",
@@ -1178,17 +1216,7 @@ end
 -- correction after it, and no callsign is said in its clause (up to the next punctuation, "and" or
 -- "then") or straight after it ("Lufthansa, DLH4AX, ..." names DLH4AX).
 function m:addressed_alone(b, e)
-  if not L.callsign_confirm.airline_alone_addressee or not self.t[b].raw:match("%u") then return false end
-  local function clause_break(k)
-    return self.t[k].kind == "punct" or self:word(k, "and @then_words")
-  end
-  if b > 1 and not clause_break(b - 1) then return false end
-  if self:word(self:skip_fillers(e, false), "@correction") then return false end
-  local k = e
-  while self.t[k] and not clause_break(k) do k = k + 1 end
-  if self:has_ref(e, k, "aircraft") or self:has_ref(self:skip_fillers(e, false), self:skip_fillers(e, false) + 1, "aircraft") then
-    return false
-  end
+  if not L.callsign_confirm.airline_alone_addressee or not self:alone_addressee(b, e) then return false end
   if self.several == nil then
     -- kinds of instruction said ("maintain" is a climb's, a speed's or a heading's), aircraft named
     -- (callsigns, and airlines written with a capital at a clause's start)
@@ -1570,13 +1598,22 @@ function m:airline_refs()
       end
       local ok = not inside[i] and not inside[e - 1]
           and (the or for_it or self:addressed_alone(i, e) or self:asked_where(i, e) or self:object_article_dropped(i)
-            or self:airline_named_back(i, self:airline_fleet(icao, codes)))
+            or self:airline_named_back(i, self:airline_fleet(icao, codes))
+            or self:alone_confirmed(i, e, self:airline_name_shared(self:said_name(i, e), self:airline_fleet(icao, codes))))
           and not (nxt and (nxt.kind == "number" or nxt.number_word or L.phonetic[nxt.text]
             or self:word(e, "heavy super")) and not (the and pronoun_one(e)))
           and (typed or not self:new_aircraft_follows(e - 1))
       local fits = typed or (ok and self:airline_fleet(icao, codes)) or {}
       -- ("the Swiss" with SWR2811 and EZS44KP, TOPSWISS, flying: both fit)
       if ok and not typed and #fits > 0 then fits = self:airline_name_shared(self:said_name(i, e), fits) end
+      -- (the airline alone answered by the speaker naming one of its aircraft, m:alone_confirmed: that one)
+      if ok and not typed and #fits > 1 and not the and self:alone_confirmed(i, e, fits) then
+        local one = {}
+        for _, id in ipairs(fits) do
+          if self.world.confirmed[id] then one[1] = id end
+        end
+        fits = one
+      end
       -- ("Ryanair descend FL200 and RYR4411 speed 250": an airline alone addressed, without "the", whose one
       -- aircraft flying the request names by its callsign elsewhere is a callsign cut short, never that aircraft)
       local back = ok and not the and self:airline_named_back(i, fits)

@@ -660,7 +660,7 @@ do
   check_eq(ft("please have the British Airways climb to FL 220"), "ALT BAW123 FL220")
   check_eq(ft("could the KLM climb to FL 300?"), "ASK Which KLM: KLM1234 or KLM77?")
   check_eq(ft("can the Ryanair descend to FL 100?"), "ASK No Ryanair aircraft is flying. Which aircraft do you mean?")
-  check_eq(ft("Lufthansa, descend FL 200"), "ASK Which aircraft should change altitude? Please give its callsign.")
+  check_eq(ft("Lufthansa, descend FL 200"), "ASK Lufthansa alone is not a callsign: do you mean DLH4AX?")
   check_eq(ft("please turn the easyJet left 20 degrees, it's getting close to the Lufthansa"), "HDG EZY45 40 LEFT")
   -- an airline said alone as a clause's aircraft, beside another clause's, is the one aircraft of it
   -- flying (never the aircraft named before or after); with two of it flying it asks which
@@ -674,7 +674,7 @@ do
   check_eq(ft("Lufthansa, turn left heading 250 and climb FL 320"), "HDG DLH4AX 250 LEFT ; ALT DLH4AX FL320")
   check_eq(ft("easyJet: speed 280, then descend to FL 150"), "SPD EZY45 280 ; ALT EZY45 FL150")
   check_eq(ft("Speedbird heading 090, easyJet heading 270"), "HDG BAW123 90 ; HDG EZY45 270")
-  check_eq(ft("Lufthansa, mach .78"), "ASK Which aircraft should change speed? Please give its callsign.")
+  check_eq(ft("Lufthansa, mach .78"), "ASK Lufthansa alone is not a callsign: do you mean DLH4AX?")
   check_eq(ft("KLM, turn right heading 300 and descend FL 200"), "ASK Which KLM: KLM1234 or KLM77?")
   check_eq(ft("Ryanair, heading 300 and FL 200"):find("^ASK") ~= nil, true)
   check_eq(ft("Lufthansa EZY45 heading 090 and climb FL 300"),
@@ -11028,7 +11028,7 @@ do
   local _, ex = scene({ "CRE AFR33 A320 48.9 2.6 90 FL220 290", "DEFWPT KOVAL 49.0 3.4", "ADDWPT AFR33 KOVAL",
     "CRE EZY80 A320 49.0 2.9 270 FL220 280" })
   check_eq(ex("cross KOVAL at FL180"), "ASK Which aircraft should cross KOVAL? Please give its callsign.")
-  check_eq(ex("Air France, cross KOVAL at FL180"), "ASK Which aircraft should cross KOVAL? Please give its callsign.")
+  check_eq(ex("Air France, cross KOVAL at FL180"), "ASK Air France alone is not a callsign: do you mean AFR33?")
   check_eq(ex("AFR33, cross KOVAL at FL180"), "AT AFR33 KOVAL ALT FL180")
 end
 
@@ -20636,6 +20636,74 @@ do
   check_eq(ex("AZA610, what quota he has?"), "POS AZA610")
   check_eq(ex("AZA610, which route he has?"), "LISTRTE AZA610")
   check_eq(ex("AZA610 direct DUOMO, which route has the most waypoints"), "DIRECT AZA610 DUOMO")
+end
+
+-- Cycle 63 (fpol8): an airline said alone as the addressee is asked, naming the aircraft it fits; a yes runs it
+do
+  local s = squawk.sim.new()
+  for _, c in ipairs({ "CRE RYR4KP B738 52 4 90 FL250 280", "CRE EZY31 A320 52.2 4.1 90 FL240 280",
+      "CRE EZY8MF A320 52.3 4.2 90 FL260 280", "CRE DLH4AX A321 52.4 4.3 90 FL300 280",
+      "CRE KLM12 A320 52.5 4.4 90 FL250 280" }) do
+    check(s:exec(c))
+  end
+  local function tr63(text) return graph.translate(text, { sim = s, mode = "offline" }) end
+  local function ex(text) return said(tr63(text)) end
+  -- one of the airline flying: the question names it, and carries it to confirm
+  local r = tr63("Lufthansa, please turn right by 30 degrees")
+  check_eq(r.ask, "Lufthansa alone is not a callsign: do you mean DLH4AX?")
+  check_eq(r.commands and #r.commands or 0, 0)
+  check_eq(r.confirm and r.confirm.id, "DLH4AX")
+  check_eq(tr63("Ryanair descend and maintain flight level 210").ask,
+    "Ryanair alone is not a callsign: do you mean RYR4KP?")
+  check_eq(tr63("direct to SPY, Ryanair").ask, "Ryanair alone is not a callsign: do you mean RYR4KP?")
+  -- several: the question names them all
+  check_eq(tr63("Easy, reduce speed 250 knots").ask, "Which Easy: EZY31 or EZY8MF?")
+  -- the answer flow: yes runs the request with that aircraft, no drops it, a callsign answers too
+  local d = graph.dialogue({ sim = s, mode = "offline" })
+  check(d:say("Lufthansa, could you climb to FL340 please").ask ~= nil, "asked first")
+  check_eq(said(d:say("yes")), "ALT DLH4AX FL340")
+  d = graph.dialogue({ sim = s, mode = "offline" })
+  d:say("Ryanair, turn left heading 200")
+  local no = d:say("no")
+  check(#(no.commands or {}) == 0, "no runs nothing")
+  d = graph.dialogue({ sim = s, mode = "offline" })
+  d:say("Ryanair, turn left heading 200")
+  check_eq(said(d:say("RYR4KP")), "HDG RYR4KP 200 LEFT")
+  d = graph.dialogue({ sim = s, mode = "offline" })
+  d:say("Easy, could you reduce speed 250 knots")
+  check_eq(said(d:say("EZY8MF")), "SPD EZY8MF 250")
+  d = graph.dialogue({ sim = s, mode = "offline" })
+  d:say("Easy, could you reduce speed 250 knots")
+  local y = d:say("yes")
+  check(#(y.commands or {}) == 0, "a yes to a choice of two runs nothing")
+  d = graph.dialogue({ sim = s, mode = "offline" })
+  d:say("Easy, could you reduce speed 250 knots")
+  check(#(d:say("KLM12").commands or {}) == 0, "a callsign not offered answers nothing")
+  -- stays as it was: "the" names the one flying; a number after the airline is a callsign matched or asked
+  check_eq(ex("the Lufthansa turn right by 30 degrees"), "HDG DLH4AX 120 RIGHT")
+  asked(ex("Lufthansa 4, climb FL340"), "a flight number that fits no one")
+  check(not (tr63("Lufthansa 4, climb FL340").ask or ""):find("alone is not", 1, true), "not alone")
+  -- an airline in lower case is a word, and an airline with no aircraft flying is no candidate
+  check(not (tr63("Iberia, climb FL340").ask or ""):find("alone is not", 1, true), "no Iberia flying")
+end
+
+-- Cycle 63 (fpol8): the side of a turn stressed against the other ("right, not left") restates it
+do
+  local s = squawk.sim.new()
+  for _, c in ipairs({ "CRE KLM12 A320 48.5 11 90 FL250 280", "CRE AFR44 A320 48.4 11.5 90 FL250 280" }) do
+    check(s:exec(c))
+  end
+  local function ex(text) return said(graph.translate(text, { sim = s, mode = "offline" })) end
+  check_eq(ex("would you let AFR44 turn left to heading 010, left, not right, please"), "HDG AFR44 10 LEFT")
+  check_eq(ex("KLM12 turn right 40 degrees right not left"), "HDG KLM12 130 RIGHT")
+  check_eq(ex("AFR44 turn left heading 350, left, not right, and descend FL200"), "HDG AFR44 350 LEFT ; ALT AFR44 FL200")
+  asked(ex("AFR44 turn left heading 350, not right"), "'not right' alone may be 'that is not right'")
+  asked(ex("KLM12 turn right heading 090, not left"), "the side not said again")
+  -- the side denied is the one turned, turns both ways, or no turn: asked
+  asked(ex("KLM12 turn right heading 150, not right"), "the side turned denied")
+  asked(ex("KLM12 turn right heading 150 and AFR44 turn left heading 200, not left"), "turns both ways")
+  asked(ex("KLM12 descend FL200, not left"), "no turn")
+  asked(ex("AFR44 turn left heading 350, right, not left"), "the other side said")
 end
 
 -- Cycle 63 (f222): a Polish speaker's English ("i potem", "nie", "przepraszam", "dobrze", "i" between two
