@@ -978,7 +978,7 @@ function m:airline_only(s)
     -- ("Ryanair, turn left 40" with RYR4KP the one Ryanair flying: a callsign cut short, asked by naming the one
     -- it fits; a yes reads the request again with that callsign confirmed, m:alone_confirmed)
     if #fits == 1 and not self:word(i - 1, "the") and self:alone_addressee(i, e)
-        and not (self.world.confirmed or {})[fits[1]] then
+        and not (self.world.confirmed or {})[fits[1]] and not self:names_aircraft(fits[1]) then
       self.confirm = self.confirm or { id = fits[1], heard = self:raw(i, e), choices = fits }
       return self:need(string.format("%s alone is not a callsign: do you mean %s?", self:raw(i, e), fits[1]))
     end
@@ -1178,6 +1178,15 @@ function m:insert_ref(fits, b, e, by)
   while self.refs[k] and self.refs[k].b < b do k = k + 1 end
   table.insert(self.refs, k, { kind = "aircraft", name = fits[1], b = b, e = e, exists = true, [by] = true })
   return e
+end
+
+-- True when the request names aircraft `id` by its callsign somewhere ("Speedbird 177, ..., Speedbird diverting",
+-- "Norwegian - sorry, NAX3KT - climb ..."): an airline said alone beside it repeats or corrects that callsign.
+function m:names_aircraft(id)
+  for _, r in ipairs(self.refs or {}) do
+    if r.kind == "aircraft" and not r.by_airline and r.name and r.name:upper() == id:upper() then return true end
+  end
+  return false
 end
 
 -- True when the airline over tokens b..e-1, said without "the", stands as a clause's addressee: written with a

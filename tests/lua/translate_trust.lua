@@ -20805,3 +20805,13 @@ do
   check_eq(ex("AZA61 climb FL330 non-stop"), "ALT AZA61 FL330")
   check_eq(ex("AZA61 climb FL330"), "ALT AZA61 FL330")
 end
+
+-- Cycle 63 (lead)
+-- An airline said alone beside its one aircraft's callsign in the same request repeats or corrects that callsign
+-- (read as before); said alone with no callsign of it anywhere, it is asked, naming the aircraft it fits.
+do
+  local _, ex = scene({ "CRE NAX3KT B738 60.1 11.0 090 FL120 280", "CRE SAS902 A320 60.3 11.2 180 FL200 280" })
+  check_eq(ex("Norwegian - sorry, NAX3KT - please climb to flight level 150"), "ALT NAX3KT FL150")
+  check_eq(ex("Norwegian 3KT descend FL100, Norwegian"), "ALT NAX3KT FL100")
+  asked(ex("Norwegian, climb flight level 150"), "an airline alone, its one aircraft named nowhere")
+end
