@@ -1448,25 +1448,32 @@ function G.said_conflict(text)
     if t.raw:match("%d") then return (t.raw:gsub("%D", "")) end
     return G.said_digit[t.bare] or ""
   end
+  -- (the digits of the run of tokens `ok` from m, before `stop` if given, a mark closing it; and the token after it)
+  local function run_from(m, stop, ok)
+    local run = ""
+    while (not stop or m < stop) and ok(toks[m]) do
+      run = run .. digits(toks[m])
+      m = m + 1
+      if toks[m - 1].raw:match("[,;.:]$") then break end
+    end
+    return run, m
+  end
   for k = 1, #toks - 2 do
     if toks[k].bare == "i" and toks[k + 1].bare == "said" and not toks[k + 1].raw:match("%p$") then
-      local j, key = k + 2, ""
-      while j < k + 8 and number(toks[j]) do
-        key = key .. digits(toks[j])
-        j = j + 1
-        if toks[j - 1].raw:match("[,;.:]$") then break end
+      local key, j = run_from(k + 2, k + 8, number)
+      -- (the question naming the run after "I said" and the other value's words over span {from, to})
+      local function which(form, span)
+        return string.format(form .. ": which value do you mean? Please say the instruction again with its value.",
+          (text:sub(toks[k + 2].at, toks[j - 1].e - 1):gsub("[,;.:!?]$", "")),
+          (text:sub(span[1], span[2] - 1):gsub("[,;.:]$", "")))
       end
       local closed = toks[j] and (toks[j - 1].raw:match("[,;.:]$") or toks[j].bare == "and" or toks[j].bare == "then")
       if key ~= "" and j > k + 2 and closed then
         local m, other, same = j, nil, false
         while toks[m] do
           if value(toks[m]) then
-            local b, run = m, ""
-            while value(toks[m]) do
-              run = run .. digits(toks[m])
-              m = m + 1
-              if toks[m - 1].raw:match("[,;.:]$") then break end
-            end
+            local b, run = m, nil
+            run, m = run_from(m, nil, value)
             local denied = b > 1 and (toks[b - 1].bare == "not" or toks[b - 1].bare == "no")
             if run == key then same = true
             elseif run ~= "" and not denied and not other then
@@ -1477,11 +1484,7 @@ function G.said_conflict(text)
             m = m + 1
           end
         end
-        if other and not same then
-          return string.format("You said '%s', then '%s': which value do you mean? Please say the instruction "
-            .. "again with its value.", (text:sub(toks[k + 2].at, toks[j - 1].e - 1):gsub("[,;.:]$", "")),
-            (text:sub(other[1], other[2] - 1):gsub("[,;.:]$", "")))
-        end
+        if other and not same then return which("You said '%s', then '%s'", other) end
       elseif key ~= "" and j > k + 2 and not toks[j] then
         -- ("descend FL120 and maintain, I said one three zero": the run closing the request, after values of
         -- instructions with other digits: a level typed "FL120", or a run after a value's name or verb)
@@ -1489,23 +1492,15 @@ function G.said_conflict(text)
         while m < k do
           local lead = m > 1 and G.said_value_leads[toks[m - 1].bare]
           if value(toks[m]) and (lead or toks[m].raw:match("^[Ff][Ll]%d")) then
-            local b, run = m, ""
-            while m < k and value(toks[m]) do
-              run = run .. digits(toks[m])
-              m = m + 1
-              if toks[m - 1].raw:match("[,;.:]$") then break end
-            end
+            local b, run = m, nil
+            run, m = run_from(m, k, value)
             if run == key then same = true end
             last = { toks[lead and b - 1 or b].at, toks[m - 1].e }
           else
             m = m + 1
           end
         end
-        if last and not same then
-          return string.format("You said '%s' after '%s': which value do you mean? Please say the instruction again "
-            .. "with its value.", (text:sub(toks[k + 2].at, toks[j - 1].e - 1):gsub("[,;.:!?]$", "")),
-            (text:sub(last[1], last[2] - 1):gsub("[,;.:]$", "")))
-        end
+        if last and not same then return which("You said '%s' after '%s'", last) end
       end
     end
   end
