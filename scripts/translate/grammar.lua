@@ -224,8 +224,16 @@ local function know_all(v, seen)
     return
   end
   seen[v] = true
+  -- (a key written with underscores is a list's name in the code: its words are known, "polite_words", but a part
+  -- of one or two letters is an abbreviation of the code, "ml_labels", no word said: "descend 6000 ML" is asked)
   for k, x in pairs(v) do
-    if type(k) == "string" then know(k) end
+    if type(k) == "string" and k:find("_", 1, true) then
+      for w in k:lower():gmatch("[%a'%-]+") do
+        if #w > 2 then KNOWN[w] = true end
+      end
+    elseif type(k) == "string" then
+      know(k)
+    end
     know_all(x, seen)
   end
 end
@@ -12759,8 +12767,8 @@ function G:unaccounted()
       return
     end
   end
-  -- ("KLM12 no need to climb to FL240", "no need for the descent"): what is not needed is no instruction; "no
-  -- need" is asked wherever it stands outside a reason (G:said's guard before the scans for "no")
+  -- ("KLM12 no need to climb to FL240", "no need for the descent", "descend FL290, no need"): what is not needed is
+  -- no instruction; "no need" is asked wherever it stands outside a reason, closing a clause after an instruction too (G:said's guard before the scans for "no")
   local no_said = self:said("no")
   -- (Italian "non", Russian "ne" (не), as "no" straight before an instruction's verb below: "KLM12 non climb FL300";
   -- typed in lower case or capitalised, no ref's letters: "Alpine 72NE reduce")
@@ -12773,7 +12781,8 @@ function G:unaccounted()
   end
   for i = 1, no_said and #self.t or 0 do
     local t = self.t[i]
-    if t.text == "no" and self:word(i + 1, "need needs") and self:word(i + 2, "to for") and not explained[i]
+    if t.text == "no" and self:word(i + 1, "need needs") and (self:word(i + 2, "to for") or (self.t[i + 2] == nil
+          or self.t[i + 2].kind == "punct") and self:instruction_before(i)) and not explained[i]
         and not self.noted[i] and not self:in_reason(i) then
       self.leftover = self:raw(i, i + 2)
       return
@@ -12834,10 +12843,11 @@ function G:unaccounted()
       and not (self:word(i, "half") and self:word(i + 1, "height"))
   end
   -- ("heading 240 and mach,76", "foo.76"): a word with a digit and a mark inside it is no name and no value
-  -- the lexer read; unexplained, it is asked about
+  -- the lexer read; unexplained, it is asked about; so is a key and its value typed with "=" ("alt=6000
+  -- unit=m", "--mode=metric": a setting no command read)
   local function glued_value(i)
     local w = self.t[i].text
-    if not (w:find("%d") and w:find("[^%w]")) then return false end
+    if not (w:find("%d") and w:find("[^%w]")) and not w:find("%w=%w") then return false end
     for _, r in ipairs(self.refs) do
       if r.b <= i and r.e > i then return false end
     end
@@ -14622,7 +14632,60 @@ G.told_units = set_of({ "ft", "feet", "foot", "fpm", "m", "metres", "meters" })
 -- A heading's number said with a unit of another measure after it, no number after that ("heading 200 knots",
 -- "turn left heading 200 ft", "heading 090 miles"; "hdg 320 m.80" is the Mach's) is no heading for sure (a speed or a level may be meant): asked, never flown.
 G.heading_foreign_units = { knots = true, knot = true, kts = true, kt = true, feet = true, ft = true, foot = true,
-  metres = true, meters = true, miles = true, nm = true, fpm = true, kmh = true, mph = true }
+  metres = true, meters = true, miles = true, mile = true, mi = true, nm = true, nmi = true, km = true,
+  kilometres = true, kilometers = true, fpm = true, kmh = true, mph = true }
+-- A level said bare, no verb before it (the aircraft's callsign, fillers, "at" or "now", or nothing), with a clause
+-- after it that expects a vertical change ("DLH2YC FL150 expect to descend in ten minutes", "KLM12 flight level 240,
+-- expect lower shortly", "KLM12 at FL150 expect lower"): the level may be the one the aircraft is at, or the one expected; asked, naming both, never
+-- flown. ("KLM12 climb FL150, expect FL250 in ten minutes": a verb clears FL150.)
+G.expected_motion_words = set_of({ "descend", "descent", "climb", "lower", "higher", "descending", "climbing",
+  "further" })
+function G:bare_level_expected()
+  local expect
+  for k = 1, #self.t do
+    if not expect and self:word(k, "expect expecting") then
+      for j = k + 1, math.min(k + 4, #self.t) do
+        if self:word(j, G.expected_motion_words) then expect = k end
+      end
+    end
+  end
+  if not expect then return end
+  for _, q in ipairs(self:quantities(1, expect)) do
+    if q.kind == "alt" then
+      local k = q.b - 1
+      while k > 0 and (self.t[k].filler or self.t[k].kind == "punct" or self:word(k, "at now")) do k = k - 1 end
+      local in_aircraft = k == 0
+      for _, r in ipairs(k > 0 and self.refs or {}) do
+        in_aircraft = in_aircraft or (r.kind == "aircraft" and r.b <= k and k < r.e)
+      end
+      if in_aircraft then
+        return self:need(string.format("I have %s, but '%s' is said with no verb before '%s': is it the level to "
+          .. "fly now, or the level it is at or expects? Please say 'climb', 'descend' or 'maintain' with the level.",
+          table.concat(self.out, " ; "), self:raw(q.b, q.e), self:raw(expect, #self.t + 1)))
+      end
+    end
+  end
+end
+-- A level's or speed's number said with a unit of distance straight after it, no number after that ("descend 6000
+-- mi", "speed 250 nmi", "climb FL120 km") is no level or speed for sure (a distance may be meant): asked, naming
+-- what was heard, never flown. ("descend 6000 within 5 mi": the distance is another number's.)
+G.distance_unit_words = { mi = true, nmi = true, km = true, miles = true, mile = true, nm = true,
+  kilometres = true, kilometers = true, kilometre = true, kilometer = true }
+function G:value_distance_unit()
+  for _, line in ipairs(self.out) do
+    local kind, fl, v = line:match("^(%u+) %S+ (F?L?)(%d+)$")
+    v = (kind == "ALT" or kind == "SPD") and tonumber(v)
+    for i, t in ipairs(v and self.t or {}) do
+      local after = self.t[i + 1]
+      if t.kind == "number" and tonumber(t.num) == v and after and after.kind == "word"
+          and G.distance_unit_words[after.text] and not (self.t[i + 2] and self.t[i + 2].kind == "number") then
+        return self:need(string.format("I have %s, but I heard '%s %s' for the %s. Is it a %s, or a distance?",
+          table.concat(self.out, " ; "), t.raw, after.raw, kind == "ALT" and "level" or "speed",
+          kind == "ALT" and "level" or "speed"))
+      end
+    end
+  end
+end
 function G:heading_unit()
   for _, line in ipairs(self.out) do
     local v = line:match("^HDG %S+ (%d+)")
@@ -18412,6 +18475,11 @@ function M.translate(text, world)
   if not g.ask then g:implausible_values() end
   if not g.ask and #g.out > 0 and lower:find("m", 1, true) then g:implausible_mach() end
   if not g.ask and #g.out > 0 and (lower:find("head", 1, true) or lower:find("hdg", 1, true)) then g:heading_unit() end
+  if not g.ask and #g.out > 0 and lower:find("expect", 1, true) then g:bare_level_expected() end
+  if not g.ask and #g.out > 0 and (lower:find("mi", 1, true) or lower:find("km", 1, true) or lower:find("nm", 1, true)
+      or lower:find("kilomet", 1, true)) then
+    g:value_distance_unit()
+  end
   if not g.ask and #g.out > 0 then g:value_rejected() end
   if not g.ask and #g.out > 0 then g:instruction_withheld() end
   if not g.ask and not g.leftover and #g.out > 0 then g:clock_verb_left() end

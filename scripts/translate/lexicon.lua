@@ -1785,9 +1785,9 @@ return {
   -- would run exactly there, so it is asked (G:hedged_place); `before` straight before the name or before an "at"
   -- before it, `after` straight after it, `after_or` after an "or" after it
   place_hedges = { before = { "about", "around", "roughly", "approximately" }, after = { "ish" }, after_or = { "so" } },
-  trailing_hedges = { words = { "maybe", "perhaps", "probably", "possibly", "unsure" },
+  trailing_hedges = { words = { "maybe", "perhaps", "probably", "possibly", "unsure", "hopefully" },
                       pairs = { { "not", "sure" }, { "i", "think" }, { "i", "guess" }, { "i", "believe" },
-                                { "not", "certain" } },
+                                { "not", "certain" }, { "i", "hope" }, { "i", "suppose" }, { "i", "reckon" } },
                       -- a loose value's mark closed by a question mark ("turn to like 200-ish?"): a value the speaker
                       -- asks about, not one said loosely
                       questioned = { "ish" } },

@@ -20929,3 +20929,65 @@ do
   asked(ex("KLM1234 route += 5"), "a number appended to the route")
   asked(ex("sim.reset()"), "a reset is confirmed")
 end
+
+-- Cycle 64 (fhz15): a word known only as a list's name in the code, and a unit of distance beside a level, speed or
+-- heading ("descend 6000 ML", "heading 270 ml" flew the value and dropped the word; "descend 6000 mi" flew 6000)
+do
+  local _, ex = scene({ "CRE QFA12 B738 -37.5 145 090 FL100 280", "CRE VOZ81 B738 -37.7 145.3 180 FL120 280" })
+  asked(ex("QFA12 descend 6000 ML"), "a word no list holds: ML, the Melbourne VOR")
+  asked(ex("QFA12 heading 270 ml"), "a word no list holds")
+  asked(ex("QFA12 ml descend 6000"), "a word no list holds")
+  asked(ex("VOZ81 climb FL140 mls"), "a word no list holds")
+  asked(ex("QFA12 descend 6000 MI"), "a unit of distance beside a level")
+  asked(ex("VOZ81 climb FL140 nmi"), "a unit of distance beside a level")
+  asked(ex("QFA12 speed 250 mi"), "a unit of distance beside a speed")
+  asked(ex("VOZ81 reduce 230 km"), "a unit of distance beside a speed")
+  asked(ex("QFA12 heading 270 km"), "a unit of distance beside a heading")
+  asked(ex("VOZ81 turn left heading 200 mi"), "a unit of distance beside a heading")
+  check_eq(ex("QFA12 descend 6000 ft"), "ALT QFA12 6000")
+  check_eq(ex("VOZ81 heading 200"), "HDG VOZ81 200")
+  check_eq(ex("QFA12 speed 250 knots"), "SPD QFA12 250")
+end
+
+-- Cycle 64 (fhz15): a level said bare before a clause that expects a vertical change ("DLH2YC FL150 expect to
+-- descend in ten minutes" flew FL150): the level may be the present one or the expected one, asked; a level with its
+-- verb stays the clearance
+do
+  local _, ex = scene({ "CRE DLH2YC A320 50 8 090 FL170 280", "CRE KLM12 A320 52 5 090 FL200 280" })
+  asked(ex("DLH2YC FL150 expect to descend in ten minutes"), "a bare level before an expected descent")
+  asked(ex("KLM12 flight level 240, expect lower shortly"), "a bare level before an expected change")
+  asked(ex("KLM12 at FL180 expect further descent in 5 minutes"), "a bare level before an expected change")
+  asked(ex("DLH2YC, FL160 expecting higher after ABC"), "a bare level before an expected change")
+  check_eq(ex("KLM12 climb FL250, expect FL300 in ten minutes"), "ALT KLM12 FL250")
+  check_eq(ex("DLH2YC maintain FL170 expect lower in 10 minutes"), "ALT DLH2YC FL170")
+  check_eq(ex("DLH2YC descend FL150 expect lower later"), "ALT DLH2YC FL150")
+  check_eq(ex("KLM12 FL180"), "ALT KLM12 FL180")
+end
+
+-- Cycle 64 (fhz15), hunted: "no need" closing a clause after an instruction takes it back ("KAL85 descend FL290 no
+-- need" flew the descent), and a hedge of hope or reckoning closing a value ("descend FL290 I hope", "heading 270
+-- hopefully", "speed 280 I reckon") makes it unsure, as "I think" does: asked
+do
+  local _, ex = scene({ "CRE KAL85 B744 51.5 4.5 000 FL310 300", "CRE CCA981 B77W 50 5 270 FL330 300" })
+  asked(ex("KAL85 descend FL290 no need"), "'no need' after the instruction")
+  asked(ex("CCA981 turn left heading 240, no need."), "'no need' after the instruction")
+  asked(ex("KAL85 descend FL290 I hope"), "a hedge of hope after the value")
+  asked(ex("CCA981 heading 270 hopefully"), "a hedge of hope after the value")
+  asked(ex("KAL85 speed 280, I reckon"), "a hedge of reckoning after the value")
+  asked(ex("CCA981 climb FL350 I suppose"), "a hedge after the value")
+  check_eq(ex("KAL85 descend FL290"), "ALT KAL85 FL290")
+  check_eq(ex("CCA981 heading 270 please"), "HDG CCA981 270")
+end
+
+-- Cycle 64 (fhz15), hunted: a key and its word value typed with "=" that no command reads ("KLM12 --alt=6000
+-- --unit=m" flew 6000 ft, "alt=6000 mode=metric" the same): asked, naming it; the keys commands read stay read
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 5 090 FL200 280", "CRE EIN6HK A320 52.5 5 090 FL200 280" })
+  asked(ex("KLM12 --alt=6000 --unit=m"), "a unit's key no command reads")
+  asked(ex("KLM12 alt=6000 mode=metric"), "a key no command reads")
+  asked(ex("EIN6HK spd=250 units=kmh"), "a unit's key no command reads")
+  asked(ex("KLM12 alt=FL200 mode=climb"), "a key no command reads")
+  check_eq(ex("KLM12 --alt=6000 --hdg=270 --spd=250"), "ALT KLM12 6000 ; HDG KLM12 270 ; SPD KLM12 250")
+  check_eq(ex("EIN6HK lnav=False"), "LNAV EIN6HK OFF")
+  check_eq(ex("KLM12 alt=6000 hdg=270"), "ALT KLM12 6000 ; HDG KLM12 270")
+end
