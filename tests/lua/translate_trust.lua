@@ -20857,3 +20857,26 @@ do
   check_eq(ex("KLM12 move to 52 5"), "MOVE KLM12 52 5")
   check_eq(ex("KLM12 move up to FL300"), "ALT KLM12 FL300")
 end
+
+-- Cycle 64 (f225): a South African controller's words: "ag", "shame", "eish" before a correction's marker ("FL210,
+-- shame sorry, FL230"), "lekker" (good) standing alone in its clause, "ja", "nee", "howzit"; "just now" closing an
+-- instruction (South African for "in a while") is asked, in a question it is the present
+do
+  local _, ex = scene({ "CRE SAA335 A320 -26.3 28.6 180 FL150 250", "CRE LNK8213 E190 -26.7 28.0 045 9000 220",
+    "CRE UAE775 B77W -29.2 31.5 220 FL190 290" })
+  check_eq(ex("Emirates 775 climb flight level two one zero, shame sorry, two three zero"), "ALT UAE775 FL230")
+  check_eq(ex("Springbok 335 descend FL100, ag sorry, FL110"), "ALT SAA335 FL110")
+  check_eq(ex("Airlink 8213 heading 200, eish, no, 210"), "HDG LNK8213 210")
+  check_eq(ex("Airlink 8213 ja turn right heading zero eight zero, lekker"), "HDG LNK8213 80 RIGHT")
+  check_eq(ex("ok lekker, run"), "OP")
+  check_eq(ex("Springbok 335 descend flight level one three zero, nee, one two zero"), "ALT SAA335 FL120")
+  check_eq(ex("Springbok 335 howzit, say your level"), "POS SAA335")
+  check_eq(ex("Airlink 8213 climb now now to flight level one two zero"), "ALT LNK8213 FL120")
+  check_eq(ex("what is Springbok 335 doing just now?"), "POS SAA335")
+  asked(ex("Emirates 775 climb FL210, shame, FL230"), "no correction's marker after 'shame'")
+  asked(ex("Springbok 335 descend FL100 lekker"), "'lekker' straight after a value")
+  asked(ex("Airlink 8213 heading 200, eish sorry"), "a correction with nothing after it")
+  asked(ex("Springbok 335 descend FL100 just now"), "'just now': in a while")
+  asked(ex("Airlink 8213 turn left heading 200, just now"), "'just now': in a while")
+  asked(ex("Springbok 335 speed 220 just now and then descend FL100"), "'just now': in a while")
+end
