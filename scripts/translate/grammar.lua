@@ -12964,11 +12964,21 @@ end
 -- "climb FL300 in a minute", "turn left heading 200 in a moment": a delay said after an instruction with no number
 -- (lexicon.vague_delays: no time squawk can schedule) puts it off, where squawk would send it now: the leftover,
 -- named from "in" to the end of its clause; in a remark of its own ("we'll re-create it in a minute") it is none.
+-- "descend FL100 just now" likewise: South African English for "in a while", closing an instruction's clause; in a
+-- question ("what is the KLM doing just now?", answered with POS) it is the present.
 function G:delay_left()
-  if not self:said("in within") then return end
+  if not self:said("in within just") then return end
   local explained = self.explained or {}
   for i = 1, #self.t - 1 do
     local k = self:skip_fillers(i + 1)
+    if self:word(i, "just") and self:word(i + 1, "now") and not (self.u:used(i) or self.u:used(i + 1))
+        and (not self.t[i + 2] or (self.t[i + 2].kind == "punct" and self.t[i + 2].text ~= "?")
+          or self:word(i + 2, "and then"))
+        and not self:word_in(1, #self.t + 1, "what what's whats where where's how how's is are")
+        and not self.out[1]:match("^POS") then
+      self.leftover = self:raw(i, i + 2)
+      return
+    end
     if self:word(i, "in within") and self:word(k, "@vague_delays") and not (self.u:used(i) or self.u:used(k)
         or explained[i] or self.noted[i]) and not self:in_reason(i) then
       local e = k + 1

@@ -1168,6 +1168,12 @@ return function(H, f, compass)
     local level = qs[1] and qs[1].kind == "alt" and (qs[1].fl or self:word(qs[1].e - 1, "@feet")) and qs[1]
     if (not lat or not lon) and not named_at and level and self:word(level.b - 1, "to")
         and #self:refs_in(s.trig + 1, s.e, "waypoint") == 0 and here and here.lat then
+      -- ("Ethiopian 809 move to FL150": the aircraft addressed before the verb, as a controller speaks, may be told
+      -- to climb or descend; which is meant is asked)
+      if #self:refs_in(1, s.trig, "aircraft") > 0 then
+        return self:need(string.format("Should %s climb or descend to %s, or be moved there at once (MOVE)?", id,
+          self:raw(level.b, level.e)))
+      end
       lat, lon = here.lat, here.lon
     end
     if (not lat or not lon) and not named_at then
@@ -1248,6 +1254,21 @@ return function(H, f, compass)
     -- "delete waypoint X of AC1" removes a waypoint, never the aircraft
     if self:word_in(s.b, s.e, "@waypoint_nouns") or self:word_in(s.b, s.e, "@route_nouns") then
       return self:delete_waypoint(s)
+    end
+    -- "skip APDAK, take out that point", "remove the point", "skip APDAK, remove it": words pointing back at a place
+    -- never delete an aircraft. "point" is the one waypoint named before the verb (DELWPT) or asked; "it" straight
+    -- after the verb with a waypoint named before is asked, the waypoint and the aircraft both named
+    local before = self:refs_in(1, s.trig, "waypoint")
+    local it = self:find_word(s.trig + 1, math.min(s.e, s.trig + 3), "it") < math.min(s.e, s.trig + 3)
+    if self:word_in(s.trig + 1, s.e, "point points") or (it and #before > 0) then
+      local id = self:acid(s, "lose the waypoint")
+      if not id then return end
+      if #before ~= 1 or it then
+        local wp = #before == 1 and before[1].name or "the waypoint"
+        return self:need(string.format("Should I remove %s from the route of %s, or delete the aircraft %s?", wp, id, id))
+      end
+      self:explain(s.trig, s.e)
+      return self:emit("DELWPT " .. id .. " " .. before[1].name)
     end
     -- ("delete the wind", "remove all winds", "clear the wind": the wind field, DEL WIND; the wind named beside an
     -- aircraft, "delete KLM12 and the wind", is asked, never an aircraft deleted for it)
@@ -4104,6 +4125,15 @@ return function(H, f, compass)
       s = { b = q + 1, e = s.e, trig = t, intent = s.intent }
     end
     local on, now = on_off(self, s), self:state(id)
+    -- "leave own navigation", "exiting own nav": the route left, LNAV OFF; "turn left heading 150, leaving own
+    -- navigation": beside a heading given it says what the heading does (HDG leaves the route), nothing more
+    local left = self:find_word(math.max(1, s.trig - 1), s.e, "own lnav") - 1
+    if cmd == "LNAV" and self:word(left, "leave leaving leaves exit exiting quit quitting") then
+      for k = 1, #self.t do
+        if self:intent_at(k) == "hdg" then return self:explain(left, s.e) end
+      end
+      on = "OFF"
+    end
     -- "resume own navigation" for an aircraft with no route and no waypoint named: nothing to fly
     -- (the switch named, "lnav on", is set as asked; a direct-to in the request names its place); "comply with
     -- restrictions" likewise has no route's restrictions to fly

@@ -1191,7 +1191,10 @@ return {
                              "was", "meant" } },
   self_correction = { words = { "oh", "ay", "no", "wait", "sorry", "actually", "make", "that", "i", "mean", "meant", "uh", "um",
                                 "er", "eh", "ah", "say", "again", "scratch", "corr", "hmm", "typo", "never", "mind", "nevermind",
-                                "forget", "belay", "better", "rather" },
+                                "forget", "belay", "better", "rather",
+                                -- a South African's interjections before the marker ("FL210, ag sorry, FL230",
+                                -- "heading 200, shame sorry, 210", "eish, no, 080")
+                                "ag", "shame", "eish" },
                       -- words of an apology ("I am sorry", "I'm sorry") also part of a run between two values
                       -- (grammar.lua self_corrections: "flight level 110, I am sorry, flight level 100")
                       -- ("heading 270, actually no, let's make that 280": "let's" before "make that" belongs to the
@@ -3350,5 +3353,7 @@ return {
     "klopt", "okidoki",
     -- a South African instructor's sympathy ("Ag shame, ...", "..., ag shame, turn right ...") and a break named
     -- beside a pause ("Pause the exercise, tea break")
-    "ag shame", "shame", "eish", "tea break", "coffee break", "lunch break", "comfort break" },
+    "ag shame", "shame", "eish",
+    -- and approval ("..., lekker", "ok lekker, run": nice, good; "heading 080 lekker" after a value is asked)
+    "lekker", "tea break", "coffee break", "lunch break", "comfort break" },
 }

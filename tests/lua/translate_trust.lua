@@ -20991,3 +20991,68 @@ do
   check_eq(ex("EIN6HK lnav=False"), "LNAV EIN6HK OFF")
   check_eq(ex("KLM12 alt=6000 hdg=270"), "ALT KLM12 6000 ; HDG KLM12 270")
 end
+
+-- Cycle 64 (f225): words pointing back at a place ("take out that point", "remove it") after a waypoint named
+-- never delete the aircraft: "point" is the one waypoint named before, "it" is asked naming both readings
+do
+  local _, ex = scene({ "CRE SAA335 A320 -26.3 28.6 180 FL150 250", "CRE SFR402 B738 -26.0 28.9 270 FL120 240",
+    "DEFWPT RIVET -26.2 28.7", "DEFWPT KOPPE -26.0 28.8", "ADDWPT SAA335 RIVET", "ADDWPT SAA335 KOPPE",
+    "ADDWPT SFR402 KOPPE" })
+  check_eq(ex("Springbok 335 skip RIVET, take out that point"), "DELWPT SAA335 RIVET")
+  check_eq(ex("Safair 402 skip KOPPE and remove the point"), "DELWPT SFR402 KOPPE")
+  check_eq(ex("Springbok 335 take out RIVET"), "DELWPT SAA335 RIVET")
+  asked(ex("Springbok 335 skip RIVET, remove it"), "'it' after a waypoint: the waypoint or the aircraft")
+  asked(ex("Springbok 335 skip KOPPE, take it out"), "'it' after a waypoint: the waypoint or the aircraft")
+  asked(ex("Safair 402 direct KOPPE, and delete it"), "'it' after a waypoint: the waypoint or the aircraft")
+  asked(ex("Springbok 335 take out that point"), "a point named before nowhere")
+  check_eq(ex("take out Springbok 335"), "DEL SAA335")
+  check_eq(ex("Safair 402 is not needed anymore, remove it"), "DEL SFR402")
+end
+
+-- Cycle 64 (f225): "leave own navigation" switches LNAV off; "leaving own navigation" beside a heading says what the
+-- heading does (HDG leaves the route), nothing more
+do
+  local _, ex = scene({ "CRE SFR417 A320 -25.9 28.5 200 FL140 250", "DEFWPT RIVET -26.2 28.7", "ADDWPT SFR417 RIVET" })
+  check_eq(ex("Safair 417 turn left heading 150, leaving own navigation"), "HDG SFR417 150 LEFT")
+  check_eq(ex("Safair 417 heading 150, exiting own nav"), "HDG SFR417 150")
+  check_eq(ex("Safair 417 leave own navigation"), "LNAV SFR417 OFF")
+  check_eq(ex("Safair 417 exit lnav"), "LNAV SFR417 OFF")
+  check_eq(ex("Safair 417 climb FL200, leaving own navigation"), "ALT SFR417 FL200 ; LNAV SFR417 OFF")
+  check_eq(ex("Safair 417 turn left heading 150, resume own navigation"), "HDG SFR417 150 LEFT ; LNAV SFR417 ON")
+  check_eq(ex("Safair 417 resume own navigation"), "LNAV SFR417 ON")
+end
+
+-- Cycle 64 (f225): "<aircraft> move to FL150", the aircraft addressed before the verb as a controller speaks, is no
+-- teleport: asked (climb or descend, or MOVE?); "move KLM12 to FL300" typed verb-first stays the MOVE
+do
+  local _, ex = scene({ "CRE ETH809 B788 -25.7 28.9 230 FL160 260", "CRE KLM12 A320 52 4 090 FL250 280" })
+  asked(ex("Ethiopian 809 move to FL150"), "a controller's 'move to' a level")
+  asked(ex("KLM12, move to flight level three one zero please"), "a controller's 'move to' a level")
+  asked(ex("KLM12 move to 9000 feet"), "a controller's 'move to' a level")
+  check_eq(ex("move KLM12 to FL300"), "MOVE KLM12 52 4 FL300")
+  check_eq(ex("KLM12 move to 52 5"), "MOVE KLM12 52 5")
+  check_eq(ex("KLM12 move up to FL300"), "ALT KLM12 FL300")
+end
+
+-- Cycle 64 (f225): a South African controller's words: "ag", "shame", "eish" before a correction's marker ("FL210,
+-- shame sorry, FL230"), "lekker" (good) standing alone in its clause, "ja", "nee", "howzit"; "just now" closing an
+-- instruction (South African for "in a while") is asked, in a question it is the present
+do
+  local _, ex = scene({ "CRE SAA335 A320 -26.3 28.6 180 FL150 250", "CRE LNK8213 E190 -26.7 28.0 045 9000 220",
+    "CRE UAE775 B77W -29.2 31.5 220 FL190 290" })
+  check_eq(ex("Emirates 775 climb flight level two one zero, shame sorry, two three zero"), "ALT UAE775 FL230")
+  check_eq(ex("Springbok 335 descend FL100, ag sorry, FL110"), "ALT SAA335 FL110")
+  check_eq(ex("Airlink 8213 heading 200, eish, no, 210"), "HDG LNK8213 210")
+  check_eq(ex("Airlink 8213 ja turn right heading zero eight zero, lekker"), "HDG LNK8213 80 RIGHT")
+  check_eq(ex("ok lekker, run"), "OP")
+  check_eq(ex("Springbok 335 descend flight level one three zero, nee, one two zero"), "ALT SAA335 FL120")
+  check_eq(ex("Springbok 335 howzit, say your level"), "POS SAA335")
+  check_eq(ex("Airlink 8213 climb now now to flight level one two zero"), "ALT LNK8213 FL120")
+  check_eq(ex("what is Springbok 335 doing just now?"), "POS SAA335")
+  asked(ex("Emirates 775 climb FL210, shame, FL230"), "no correction's marker after 'shame'")
+  asked(ex("Springbok 335 descend FL100 lekker"), "'lekker' straight after a value")
+  asked(ex("Airlink 8213 heading 200, eish sorry"), "a correction with nothing after it")
+  asked(ex("Springbok 335 descend FL100 just now"), "'just now': in a while")
+  asked(ex("Airlink 8213 turn left heading 200, just now"), "'just now': in a while")
+  asked(ex("Springbok 335 speed 220 just now and then descend FL100"), "'just now': in a while")
+end
