@@ -2841,7 +2841,9 @@ return {
     },
     -- words of `words` said the same in Portuguese or Italian: no sign of Spanish alone
     -- ("pausa" is Portuguese, Italian and Swedish too)
+    -- ("vire" and "cree", "crée" without its accent, are French too)
     shared = { destino = true, crea = true, continua = true, minuto = true, nivel = true, pause = true, vira = true,
+      vire = true, cree = true,
       gira = true, carga = true, metros = true, altitud = true, ["rápido"] = true, rapido = true, negativo = true,
       pausa = true, sobre = true, acelera = true, acelere = true, acelerar = true, ["por favor"] = true },
     -- words also English, Portuguese or Italian ("a", "con", "en", "suba"; "quite", English "I'm quite new to
@@ -2870,19 +2872,34 @@ return {
       ["s'il vous plaît"] = "please", ["s'il vous plait"] = "please", ["s'il te plaît"] = "please",
       ["s'il te plait"] = "please", ["accélère"] = "speed up", accelere = "speed up",
       fois = "times", supprimez = "delete", supprime = "delete", ["créez"] = "create", creez = "create",
-      ["crée"] = "create",
+      ["crée"] = "create", cree = "create",
       -- the simulation run by the instructor ("pause la simu", "avance rapide dix minutes", "c'est bon, continue")
       simu = "simulation", ["avance rapide"] = "fast forward", ["c'est bon"] = "okay", continuez = "continue",
       reprenez = "resume", reprends = "resume",
       -- the order of a script's steps ("D'abord ...; ensuite ...; enfin ...")
       ["d'abord"] = "first", ensuite = "then", enfin = "finally",
+      -- a Canadian bilingual controller's familiar imperative and rate ("monte 10 000 pieds", "descends taux
+      -- 1500", "taux de descente 2000 pieds minute", "taux 2000 en descente"), a value taken back ("heading 180,
+      -- non, 170"), and the instructor's ("efface le jazz 7724", "déplace ACA401 à 45.5 -73.5", "ajoute HENRI
+      -- ensuite ROSAY", "pause la simulation svp", "on repart", "active la résolution MVP"; "svp" is lexicon.asides')
+      descends = "descend", taux = "rate", ["taux de descente"] = "rate of descent",
+      ["taux de montée"] = "rate of climb", ["taux de montee"] = "rate of climb", ["en descente"] = "descending",
+      ["en montée"] = "climbing", ["en montee"] = "climbing", non = "no", oui = "yes",
+      efface = "delete", effacez = "delete", ["déplace"] = "move", deplace = "move", ["déplacez"] = "move",
+      deplacez = "move", ajoute = "add", ajoutez = "add", montre = "show", montrez = "show",
+      repart = "resume", ["on repart"] = "resume", ["la simulation"] = "the simulation",
+      ["la résolution"] = "resolution", ["la resolution"] = "resolution",
+      ["détection de conflits"] = "conflict detection", ["detection de conflits"] = "conflict detection",
     },
-    -- words of `words` said the same in English or Spanish: no sign of French alone
-    shared = { vire = true },
-    -- small words, number words and words lexicon.heard_as reads before a value in English ("niveau"),
-    -- read only in a French sentence
+    -- words of `words` said the same in English or Spanish: no sign of French alone ("cree" is Spanish, "descends"
+    -- English, "non" an English prefix; phrases opening on "en" or "on" mark none, so that Dutch "en" and "met"
+    -- stay read after a value: grammar.lua G.dutch_chat_words)
+    shared = { vire = true, cree = true, descends = true, non = true, ["en descente"] = true, ["en montée"] = true,
+      ["en montee"] = true, ["on repart"] = true },
+    -- small words, number words, words lexicon.heard_as reads before a value in English ("niveau") and a fix's
+    -- name ("monte": "direct monte" is the fix MONTE), read only in a French sentence
     joining = { ["à"] = "to", a = "to", au = "to", le = "the", la = "the", les = "the", et = "and", de = "of",
-      du = "of the", ["à la"] = "to", cap = "heading", niveau = "flight level", vitesse = "speed", dix = "ten",
+      du = "of the", ["à la"] = "to", cap = "heading", monte = "climb", niveau = "flight level", vitesse = "speed", dix = "ten",
       vingt = "twenty", trente = "thirty", quarante = "forty", cinquante = "fifty", soixante = "sixty",
       cent = "hundred", cents = "hundred", mille = "thousand" },
   },

@@ -21056,3 +21056,35 @@ do
   asked(ex("Airlink 8213 turn left heading 200, just now"), "'just now': in a while")
   asked(ex("Springbok 335 speed 220 just now and then descend FL100"), "'just now': in a while")
 end
+
+-- Cycle 64 (f226): a Canadian bilingual controller's French verbs, rates and instructor's words in English
+do
+  local _, ex = scene({ "CRE WJA22 B789 45.6 -74.2 070 FL350 280", "CRE JZA77 DH8D 45.3 -73.9 060 9000 230",
+    "CRE POE43 DH8D 45.4 -73.4 300 8000 220", "CRE IBE34 A320 40 -3 180 FL200 280" })
+  -- "vire" with "a" unaccented, a relative turn "de 30"
+  check_eq(ex("WestJet 22 vire a gauche cap 040"), "HDG WJA22 40 LEFT")
+  check_eq(ex("Jazz 77 vire a droite 20 degres"), "HDG JZA77 80 RIGHT")
+  check_eq(ex("Porter 43 vire a gauche de 30 degres"), "HDG POE43 270 LEFT")
+  -- Spanish "vire" still Spanish
+  check_eq(ex("IBE34 vire a la derecha rumbo 270"), "HDG IBE34 270 RIGHT")
+  -- the rate of a descent or climb
+  check_eq(ex("JZA77 taux de descente 1500 pieds minute"), "VS JZA77 -1500")
+  check_eq(ex("Porter 43 descends taux 1000"), "VS POE43 -1000")
+  check_eq(ex("WestJet 22 taux 2000 en descente"), "VS WJA22 -2000")
+  -- a value taken back; "monte" in a French sentence
+  check_eq(ex("WestJet 22 heading 180, non, 170"), "HDG WJA22 170")
+  check_eq(ex("Porter 43 monte 10000 pieds"), "ALT POE43 10000")
+  -- the instructor's words
+  check_eq(ex("efface le jazz 77"), "DEL JZA77")
+  check_eq(ex("déplace POE43 a 45.5 -73.5"), "MOVE POE43 45.5 -73.5")
+  check_eq(ex("pause la simulation svp"), "HOLD")
+  check_eq(ex("ok resume, on repart"), "OP")
+  check_eq(ex("active la résolution MVP"), "RESO MVP")
+  check_eq(ex("active la détection de conflits"), "ASAS ON")
+  check_eq(ex("crée un Jazz 88 Dash 8-100 à 46.60 -71.90 cap 045 5000 pieds 200 noeuds"),
+    "CRE JZA88 DH8A 46.6 -71.9 45 5000 200")
+  -- stay as they were: "monte" outside a French sentence is the fix MONTE; "non" closing an instruction asks
+  check_eq(ex("WJA22 direct monte"), "ADDWPT WJA22 MONTE ; DIRECT WJA22 MONTE")
+  asked(ex("WJA22 descend FL300 non"), "a no closing an instruction")
+  asked(ex("Jazz 77 vire 20 degres"), "a turn with no side")
+end
