@@ -17131,6 +17131,14 @@ function G.navaid_slot(bare, i)
   if w == "to" then return G.navaid_reached[bare[i - 2] or ""] ~= nil end
   return w ~= nil and G.navaid_slots[w] ~= nil
 end
+-- True when toks[i], a name with one capital ("Tekong"), is the place an aircraft reaches or passes ("when it reaches
+-- Tekong", "when you get to Lambourne", "passing Ockham"), with no kind of place after it ("passing Bogota airport"
+-- may be the airport): such a name of the routes flown is read as in lower case (G.routed_navaid_name).
+G.reached_words = set_of({ "reach", "reaches", "reaching", "passes", "passing", "to" })
+function G.reached_capitalised(toks, bare, i)
+  return toks[i]:match("^%u%l+%p*$") ~= nil and G.reached_words[bare[i - 1]] ~= nil
+    and not (toks[i]:match("%a$") and AIRPORT_NOUNS[bare[i + 1] or ""])
+end
 function G.routed_navaid_name(w, routed, world)
   if not (world.navaids_named and world.airports_named and world.airports_of_city) or #w < 4 or not w:match("^%a+$")
       or known_word(w) or #world.airports_named(w) > 0 or #world.airports_of_city(w) > 0 then
@@ -17175,7 +17183,8 @@ function G.confirmed_route_places(text, world)
     if sure and #world.navaids_named(bare[i], 0, 0, 1e5) == 0 and #world.airports_named(bare[i]) == 0 then
       name = sure
     end
-    name = name or (G.navaid_slot(bare, i) and toks[i]:match("^%l+%p*$") and G.routed_navaid_name(bare[i], seen, world))
+    name = name or (G.navaid_slot(bare, i) and (toks[i]:match("^%l+%p*$") or G.reached_capitalised(toks, bare, i))
+      and G.routed_navaid_name(bare[i], seen, world))
     return name and name .. (toks[i]:match("%p+$") or ""), i + 1
   end)
 end

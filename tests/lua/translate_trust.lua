@@ -21088,3 +21088,20 @@ do
   asked(ex("WJA22 descend FL300 non"), "a no closing an instruction")
   asked(ex("Jazz 77 vire 20 degres"), "a turn with no side")
 end
+
+-- Cycle 64 (fpol9): a navaid of the route named with a capital where the aircraft reaches or passes it
+-- ("... when it reaches Tekong, thank you", "when you get to Lambourne descend ...") is that navaid, as the name in
+-- lower case was; a kind of airport after it, a navaid off the route, or a city's airport of that name stays asked.
+do
+  local _, ex = navscene({ "CRE EZY45TC A319 51.25 0.20 300 FL090 250", "ADDWPT EZY45TC BIG", "ADDWPT EZY45TC OCK",
+    "CRE RYR8KL B738 51.80 0.40 200 FL150 290", "ADDWPT RYR8KL LAM" }, "a navaid said by its name with a capital")
+  if ex then
+    check_eq(ex("Kindly ask RYR8KL to reduce to 220 knots when it reaches Lambourne, thank you."),
+      "AT RYR8KL LAM DO SPD RYR8KL 220")
+    check_eq(ex("RYR8KL, when you get to Lambourne descend to 9000 feet"), "AT RYR8KL LAM DO ALT RYR8KL 9000")
+    check_eq(ex("Could EZY45TC climb to FL110 when it reaches Ockham, please?"), "AT EZY45TC OCK DO ALT EZY45TC FL110")
+    check_eq(ex("EZY45TC, passing Ockham turn left heading 200"), "AT EZY45TC OCK DO HDG EZY45TC 200 LEFT")
+    asked(ex("Could EZY45TC climb to FL110 when it reaches Lambourne?"), "a navaid off its route")
+    asked(ex("RYR8KL reduce to 220 knots when it reaches Lambourne airport"), "an airport said by the name")
+  end
+end
