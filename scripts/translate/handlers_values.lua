@@ -789,20 +789,6 @@ return function(H, f, wrap, compass)
             verb, alt))
         end
       end
-      -- "stop climb at 6000 feet" from 8000 ft, "stop the descent at FL300" from FL250: a level to stop at on the
-      -- other side of the present altitude from the motion stopped contradicts it, asked
-      if a and dir == 0 and self:word_in(s.b, s.e, "@halted") then
-        local cur = a.alt_ft or 0
-        for i = s.b, s.e - 1 do
-          local m = self:word(i + 1, "its the his her their your") and i + 2 or i + 1
-          local way = self:word(i, "@halted") and (self:word(m, "climb climbing") and 1
-            or self:word(m, "descend descending descent") and -1) or 0
-          if (way > 0 and target_ft < cur - 50) or (way < 0 and target_ft > cur + 50) then
-            return self:need(string.format("%s is at %s ft: stop the %s at %s? Please confirm the altitude.", id,
-              f.int(cur), way > 0 and "climb" or "descent", alt))
-          end
-        end
-      end
       if target_ft < 0 then return self:need("Which altitude for " .. id .. "? " .. alt .. " ft is below the ground.") end
       -- ("descend FL300, rate of climb 2000": the motion a rate's words name, in the three words before it,
       -- against the way to the level, is asked)

@@ -20830,16 +20830,6 @@ do
   asked(ex("Blackstar 508 descend FL100"), "no such flight")
 end
 
--- Cycle 64 (f228): a stop of a climb or descent at a level on the other side of the present altitude
-do
-  local _, ex = scene({ "CRE DAV361 MD83 6.75 3.45 080 8000 250", "CRE KLM12 A320 52 4 90 FL250 280" })
-  asked(ex("Danaco 361 stop climb at 6000 feet"), "a climb stopped below the aircraft")
-  asked(ex("KLM12 stop the descent at FL300"), "a descent stopped above the aircraft")
-  asked(ex("KLM12 stop your climb at FL200"), "a climb stopped below the aircraft")
-  check_eq(ex("Danaco 361 stop climb at 9000 feet"), "ALT DAV361 9000")
-  check_eq(ex("KLM12 stop descent at FL200"), "ALT KLM12 FL200")
-end
-
 -- Cycle 64 (f228): a place's name that its route's ident abbreviates, said as an airport's or as several navaids'
 do
   local ng = squawk.sim.new()
