@@ -792,9 +792,9 @@ end
 -- longitude can be meant: the word before it is no number, or closes a value of one number said after its word
 -- ("fl", "level", "heading", "speed", ... : "FL230 e", "flight level two three zero e", "speed 230 e"), or a number
 -- with its sign ("longitude minus 44.0 e PT02"); and the word after it is no number ("speed 250 e 260" stays
--- asked) and no letter alone ("cross e c k" spells a fix). A number after a position's other number ("52 4 e",
--- "at 52 n 4 e") stays as said: the east; one number beyond 180 alone before it ("climb at 350 e heading 100", Italian
--- "e") is no longitude, and "e" is "and".
+-- asked), no letter alone ("cross e c k" spells a fix) and no "don" or "dey" (Pidgin's "e don land": it has
+-- landed). A number after a position's other number ("52 4 e", "at 52 n 4 e") stays as said: the east; one
+-- number beyond 180 alone before it ("climb at 350 e heading 100", Italian "e") is no longitude, and "e" is "and".
 -- "desculpa", "desculpe" (sorry) with words after it is "sorry", opening a correction ("heading 075... desculpa,
 -- heading 085"); closing the request it is left as said (an apology).
 G.portuguese_value_words = { fl = true, level = true, heading = true, hdg = true, speed = true, spd = true,
@@ -813,6 +813,8 @@ function G.portuguese_and(text)
     end
     if toks[i] ~= "e" or i < 2 or not toks[i + 1] or toks[i - 1]:match("[%.;:]$") then return nil end
     if number(i + 1) or #bare[i + 1] < 2 then return nil end  -- (a letter after it: a name spelled, "cross e c k")
+    -- (Nigerian Pidgin's "e" (it) before "don" or "dey": "delete DAV361, e don land")
+    if bare[i + 1] == "don" or bare[i + 1] == "dey" then return nil end
     if number(i - 1) then
       local k, digits = i - 1, 0
       while k >= 1 and number(k) and (k == i - 1 or not toks[k]:match("%p$")) do
@@ -2201,6 +2203,30 @@ function G.hemispheres_first(text)
   end
   return done()
 end
+-- "6.0 north minus 0.9", "4.5 south, -12.25": a latitude said with its hemisphere, then a longitude with its sign
+-- ("minus", "negative" or "-") and no hemisphere or unit after it, is written "6.0 north 0.9 west" (a sign west of
+-- Greenwich, as BlueSky writes it); anything else stays as typed.
+G.signed_longitude_after = set_of({ "north", "south", "east", "west", "feet", "ft", "knots", "kts", "kt", "fpm", "nm",
+  "miles", "meters", "metres", "m" })
+function G.signed_longitude(text)
+  local low = text:lower()
+  if not (low:find("minus", 1, true) or low:find("negative", 1, true) or text:find("%s%-%d")) then return text end
+  local put, done, from = tokens.splicer(text)
+  for at, lat, ns, e in text:gmatch("()%f[%w](%d+%.?%d*)%s+(%a+)()") do
+    if at >= from() and G.hemisphere_words.lat[ns:lower()] and tonumber(lat) <= 90 then
+      local sign, lon, after = text:match("^%s*,?%s*(%a+)%s+(%d+%.?%d*)()", e)
+      if not (sign and (sign:lower() == "minus" or sign:lower() == "negative")) then
+        lon, after = text:match("^%s*,?%s*%-(%d+%.?%d*)()", e)
+      end
+      local next_word = after and text:match("^%s*(%a+)", after)
+      if lon and tonumber(lon) <= 180 and not text:match("^[%d%.]", after)
+          and not (next_word and G.signed_longitude_after[next_word:lower()]) then
+        put(e, " " .. lon .. " west", after)
+      end
+    end
+  end
+  return done()
+end
 -- A clock multiplier typed alone as a clause ("seed 99 then 30 random a320 then x4", "hold, 4x", "x4 and op"), or
 -- before the word "speed" or "rate" ending its clause ("x4 speed"): the simulation's rate, written out as "sim speed
 -- x4" (a callsign-like "x4" or a bare "4x" names no aircraft, unless an aircraft of that id flies: `world`, when
@@ -3553,7 +3579,7 @@ local function written_forms(text, world)
   text = G.spoken_coordinates(text)
   low = text:lower()
   if low:find("north", 1, true) or low:find("south", 1, true) then
-    text = G.hemispheres_first(text)
+    text = G.signed_longitude(G.hemispheres_first(text))
     low = text:lower()
   end
   -- a coordinate typed in digits with its point said ("55 decimal 5 north"): 55.5, only before a hemisphere

@@ -1353,13 +1353,20 @@ return function(H, f, compass)
     for _, r in ipairs(a and a.route or {}) do
       if not seen[r] then names[#names + 1], seen[r] = r, true end
     end
-    -- a navaid said by its name, which its ident abbreviates ("Biggin" -> BIG, "Detling" -> DET)
+    -- a navaid said by its name, which its ident abbreviates ("Biggin" -> BIG, "Detling" -> DET); not a name said
+    -- before an airport's noun ("Lagos airport" is DNMM, never LAG), nor one the navdata gives navaids of other
+    -- idents too near the aircraft ("Lagos": LAG, LOS), read by m:place_by_name below
+    local named = self.world.navaids_named
     for i = b, math.min(e, #self.t + 1) - 1 do
       local t = self.t[i]
       if not self.u:used(i) and t.kind == "word" and t.alpha and not t.keyword and #t.text >= 4 then
         local fits = {}
         for _, n in ipairs(names) do
           if #n >= 3 and #n < #t.text and n:match("^%a+$") and t.text:sub(1, #n) == n:lower() then fits[#fits + 1] = n end
+        end
+        if #fits == 1 and (self:word(i + 1, "@airport_nouns") or named and a and a.lat
+            and #named(t.text, a.lat, a.lon, L.navaid_range_nm) > 1) then
+          fits = {}
         end
         if #fits == 1 then
           self:explain(i, i + 1)

@@ -51,9 +51,10 @@ return {
   -- words that carry none ("please", "uh"): skipped before a callsign or condition
   -- (the particles of Singapore and Malaysian English: "ok lah", "can lah", "like that lor"; and of Filipino
   -- said in English, each a filler above in another tongue: "po" (respect, as "please"), "sige" (all right),
-  -- "ano" (um), "yung" (the), "na" (now): "resume na po")
+  -- "ano" (um), "yung" (the), "na" (now): "resume na po"; and of Nigerian and Ghanaian Pidgin: "abeg" (please),
+  -- "oya" (come on, now): "abeg check Speedbird 75 for me", "oya show me Arik 104")
   fillers = { "ah", "uh", "um", "er", "eh", "oh", "the", "a", "an", "please", "pls", "okay", "ok", "yeah", "so",
-      "and", "now", "lah", "leh", "lor", "po", "sige", "ano", "yung", "na", },
+      "and", "now", "lah", "leh", "lor", "po", "sige", "ano", "yung", "na", "abeg", "oya" },
   -- Every word accounted for (docs/translator_trust.md): a request becomes commands only when each of its
   -- words is part of a callsign, place, type or value the parse read, an instruction word (the rules' words
   -- and this file's lists), or a word of one of these classes; any other word is a leftover, asked about by
@@ -268,10 +269,10 @@ return {
         -- (just), "naman" (then, though), "ay" before an apology ("ay sorry"))
         "opo", "iyong", "muna", "lang", "naman", "ay",
         -- the languages of Africa, romanised: Swahili ("asante sana", "sawa", "pole pole": slowly, easy),
-        -- Amharic ("ishi": OK), Nigerian and Ghanaian Pidgin ("abeg": please, "oya": come on, "chale": mate),
+        -- Amharic ("ishi": OK), Nigerian and Ghanaian Pidgin ("chale": mate; "abeg" and "oya" are fillers),
         -- Hausa, Igbo, Yoruba, Twi, Zulu, Xhosa and Afrikaans
         "asante", "sana", "sawa", "karibu", "jambo", "habari", "tafadhali", "kwaheri", "pole", "mambo", "poa",
-        "ishi", "amesegenalehu", "tenastelign", "selam", "abeg", "oya", "chale", "chaley", "biko", "daalu", "nagode",
+        "ishi", "amesegenalehu", "tenastelign", "selam", "chale", "chaley", "biko", "daalu", "nagode",
         "sannu", "medaase", "akwaaba", "sawubona", "ngiyabonga", "enkosi", "dankie", "asseblief", "yebo", "eish",
         -- and of the Gulf ("tamam": OK)
         "tamam", "habibi", "mashallah",
@@ -371,6 +372,8 @@ return {
         "pilot dc'd", "pilot dcd", "pilot dced", "pilot disconnected", "pilot went afk", "pilot is afk", "pilot afk",
         "pilot timed out", "pilot logged off", "pilot is gone", "pilot gone", "pilot left", "pilot has left",
         "pilot has disconnected", "connection lost", "lost connection", "lost his connection", "lost her connection",
+        -- (and in Nigerian Pidgin, "delete Danaco 361, e don land": it has landed, or left)
+        "e don land", "e don comot", "e don go",
         -- the rest of a route kept after a direct-to ("dct BIG, rest of route unchanged")
         "rest of route unchanged", "rest of the route unchanged", "rest of route as filed",
         -- a place said as over a point ("move it right on top of DUDSO")
@@ -780,8 +783,11 @@ return {
     -- height 5100 metres", "tree tree height 10000 feet" heading 338;
     -- elsewhere "height" is the altitude's name and stays)
     -- Nigerian Pidgin in a Nigerian or Ghanaian controller's English: "wan" is "want" ("i wan check something";
-    -- "dey", the verb "be", is an auxiliary)
+    -- "dey", the verb "be", is an auxiliary), "wetin" is "what", and "do" after "dey" is "doing" ("wetin Arik
+    -- 104 dey do": what is it doing)
     wan = { word = "want", prev = "i we you dem una" },
+    wetin = { word = "what" },
+    ["do"] = { word = "doing", prev = "dey" },
     eading = { word = "heading" }, tourn = { word = "turn" },
     ze = { word = "the", caps_kept = true }, zen = { word = "then", caps_kept = true },
     height = { { word = "eight", next = "thousand hundred" },

@@ -547,6 +547,10 @@ local names = {
     { "overland", "OLA" },  -- (Overland Airways, Nigeria)
     { "max air", "NGL" },  -- (Max Air, Nigeria)
     { "aeroline", "NIG" },  -- (Aero Contractors, Nigeria)
+    { "danaco", "DAV" },  -- (Dana Air, Nigeria)
+    { "dana air", "DAV" },
+    { "azman", "AZM" },  -- (Azman Air, Nigeria)
+    { "azman air", "AZM" },
     { "cote divoire", "VRE" },
     { "cote d'ivoire", "VRE" },
     { "air cote divoire", "VRE" },
@@ -554,6 +558,7 @@ local names = {
     { "air senegal", "SZN" },
     { "blue marlin", "AFW" },
     { "africa world", "AFW" },
+    { "blackstar", "AFW" },  -- (Africa World Airlines' ICAO telephony)
     { "taag", "DTA" },
     { "angola", "DTA" },
     { "mozambique", "LAM" },  -- (LAM Mozambique Airlines)

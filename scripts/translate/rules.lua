@@ -2246,7 +2246,7 @@ return function(intent, rule, words)
     while g:word(k, "me us please") or (g.t[k] and g.t[k].filler) do k = k + 1 end
     return g.t[k] == nil or (g.t[k].kind == "punct" and g.t[k].text ~= ",")
   end }
-  rule { "route rte waypoints", "listrte", prev = { 4, "show list display what print see look where check" } }
+  rule { "route rte routing waypoints", "listrte", prev = { 4, "show list display what print see look where check" } }
   -- ("which route he has?", "which route has?": an Italian speaker's "che rotta ha?", "which" straight before it)
   -- (its clause ending there)
   rule { "route rte", "listrte", prev = { 1, "which" }, when = function(g, i)
@@ -2441,10 +2441,11 @@ return function(intent, rule, words)
   -- an indirect question ("could you tell me what Speedbird 8CK is currently doing", "I'd like to know what
   -- the easyJet is doing"), or a Portuguese speaker's direct one in that order ("what the LATAM 3320 is doing?"):
   -- "what", "the" or not, the aircraft, "is" or "are", at most two of lexicon.indirect_question_adverbs, then "doing"
+  -- (Nigerian Pidgin's "wetin Arik 104 dey do": "dey" for "is", lexicon.typed_abbreviations)
   rule { "doing", "pos", when = function(g, i)
     local k = i - 1
     while k > i - 3 and g:word(k, "@indirect_question_adverbs") do k = k - 1 end
-    if not g:word(k, "is are") then return false end
+    if not g:word(k, "is are dey") then return false end
     for _, r in ipairs(g.refs) do
       if r.kind == "aircraft" and r.e == k then
         return g:word(r.b - 1, "what") or g:word(r.b, "what") or (g:word(r.b - 1, "the") and g:word(r.b - 2, "what"))
@@ -2536,11 +2537,13 @@ return function(intent, rule, words)
     return named >= 2 and not (both and named ~= 2) and (after == named or ((them or both) and after == 0))
   end }
   -- "show me Wideroe five one two", "check IBE3421": an aircraft alone after the verb is shown where it is
-  -- ("pause, and show me the Swiss three eight foxtrot": the clause of its own)
+  -- ("pause, and show me the Swiss three eight foxtrot": the clause of its own; "check Emirates 783 for me", "for
+  -- me" or "for us" after it)
   rule { "show display check", "pos", when = function(g, i)
     local k = g:skip_fillers(g:word(i + 1, "me us") and i + 2 or i + 1)
     local r = g:refs_in(k, k + 1, "aircraft")[1]
-    return r ~= nil and (g:alone_but(i, r.e) or g:clause_alone(i, r.e))
+    local e = r and g:word(r.e, "for") and g:word(r.e + 1, "me us") and r.e + 2 or r and r.e
+    return r ~= nil and (g:alone_but(i, e) or g:clause_alone(i, e))
   end }
   -- "show me Ezeiza airport", "show me the Santiago airport", "show me SAEZ": a place alone after the verb, no
   -- aircraft named, is shown where it is

@@ -21105,3 +21105,61 @@ do
     asked(ex("RYR8KL reduce to 220 knots when it reaches Lambourne airport"), "an airport said by the name")
   end
 end
+
+-- Cycle 64 (f228): the telephony of Nigeria and Ghana (Dana Air "Danaco", Africa World "Blackstar", Azman Air)
+do
+  local _, ex = scene({ "CRE DAV361 MD83 6.75 3.45 080 8000 250", "CRE AFW507 CRJ7 6.9 -0.3 170 FL150 270",
+    "CRE AZM2202 B735 12.0 7.6 085 FL110 260" })
+  check_eq(ex("Danaco three six one climb and maintain flight level one fife zero"), "ALT DAV361 FL150")
+  check_eq(ex("Dana Air 361 turn right heading 110"), "HDG DAV361 110 RIGHT")
+  check_eq(ex("Blackstar 507 descend FL100, chale"), "ALT AFW507 FL100")
+  check_eq(ex("Azman Air 2202 reduce speed 240 knots"), "SPD AZM2202 240")
+  check_eq(ex("create Azman Air 2205, 737-500, at 12.2 north 7.0 east heading 090, FL130, 270 knots"),
+    "CRE AZM2205 B735 12.2 7 90 FL130 270")
+  asked(ex("Danaco, climb FL120"), "an airline alone")
+  asked(ex("Blackstar 508 descend FL100"), "no such flight")
+end
+
+-- Cycle 64 (f228): a place's name that its route's ident abbreviates, said as an airport's or as several navaids'
+do
+  local ng = squawk.sim.new()
+  if #ng:airports_with_words("lagos") >= 1 then
+    check(ng:exec("CRE BAW75 B789 8.5 3.0 175 FL210 290"))
+    check(ng:exec("ADDWPT BAW75 LAG"))
+    local _, ex = set_up(ng, {})
+    check_eq(ex("Speedbird 75 direct Lagos airport"), "ADDWPT BAW75 DNMM ; DIRECT BAW75 DNMM")
+    check_eq(ex("Speedbird 75 direct LAG"), "DIRECT BAW75 LAG")
+    check_eq(ex("Speedbird 75 direct Lagos VOR"), "DIRECT BAW75 LAG")
+    asked(ex("Speedbird 75 direct to Lagos International"), "the airport's name or a navaid")
+  else
+    print("skipped: Lagos by name needs navdata (SQUAWK_NAVDATA)")
+  end
+end
+
+-- Cycle 64 (f228): a latitude with its hemisphere, then a longitude with its sign
+do
+  local _, ex = scene({ "CRE AFW214 E145 5.8 -0.4 310 FL080 230" })
+  check_eq(ex("create Blackstar 221, Embraer 145, 6.0 north minus 0.9, heading 120, FL090, 240 knots"),
+    "CRE AFW221 E145 6 -0.9 120 FL90 240")
+  check_eq(ex("create Blackstar 222 E145 at 5.5 south, negative 12.25, heading 120, FL090, 240 knots"),
+    "CRE AFW222 E145 -5.5 -12.25 120 FL90 240")
+  check_eq(ex("move Blackstar 214 to 6.0 north -0.9"), "MOVE AFW214 6 -0.9")
+  asked(ex("create Blackstar 223, Embraer 145, 6.0 north 0.9, heading 120, FL090, 240 knots"), "no hemisphere")
+end
+
+-- Cycle 64 (f228): Nigerian and Ghanaian Pidgin ("abeg", "oya", "wetin ... dey do", "e don land", "check X for me")
+do
+  local _, ex = scene({ "CRE APK7312 B735 8.2 4.1 220 FL140 280",
+    "CRE ARA104 B738 7.6 3.2 170 FL110 260", "CRE DAV361 MD83 6.75 3.45 080 8000 250" })
+  check_eq(ex("abeg check Arik Air 104 for me"), "POS ARA104")
+  check_eq(ex("oya show me Peace Bird 7312"), "POS APK7312")
+  check_eq(ex("wetin Arik Air 104 dey do now?"), "POS ARA104")
+  check_eq(ex("Peace Bird 7312 what is your routing"), "LISTRTE APK7312")
+  check_eq(ex("delete Danaco 361, e don land"), "DEL DAV361")
+  check_eq(ex("remove Arik Air 104 e don comot"), "DEL ARA104")
+  check_eq(ex("Arik Air 104 abeg descend FL100 sharp sharp"), "ALT ARA104 FL100")
+  asked(ex("wetin Danaco dey do now?"), "an airline alone")
+  asked(ex("abeg"), "nothing asked")
+  asked(ex("Danaco 361 e don climb FL100"), "'don' in an instruction")
+  asked(ex("check Arik Air 104 for me, descend FL100"), "'check' before an instruction")
+end
