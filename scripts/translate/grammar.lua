@@ -17530,8 +17530,12 @@ function G.named_idents(text, world)
 end
 local function typed_places(text, world)
   if not world.place_known then return text end
-  local ids = {}
-  for _, a in ipairs(world.aircraft) do ids[(a.id or ""):lower()] = true end
+  -- (ids[w]: an aircraft's callsign in lower case; built when first read)
+  local ids = setmetatable({}, { __index = function(ids, w)
+    setmetatable(ids, nil)
+    for _, a in ipairs(world.aircraft) do ids[(a.id or ""):lower()] = true end
+    return rawget(ids, w)
+  end })
   local function near(w)
     local lat, lon = world.place_known(w:upper())
     if not lat then return false end
@@ -18108,8 +18112,9 @@ function M.translate(text, world)
   end
   -- punctuation dictated as words: the marks (lexicon.dictated_punctuation)
   for _, d in ipairs(lexicon.dictated_punctuation) do
-    -- (only where the text holds the last of the said words, as the pattern requires)
-    if text:find(d.said:match("%S+$"), 1, true) then
+    -- (only where the text holds the last of the said words, as the pattern requires; d.last: that word, found once)
+    d.last = d.last or d.said:match("%S+$")
+    if text:find(d.last, 1, true) then
       text = text:gsub("%s+" .. d.said:gsub(" ", "%%s+") .. "%f[%A]()", function(at)
         if d.not_before and text:match("^%s*(%a+)", at) == d.not_before then return nil end
         return d.mark

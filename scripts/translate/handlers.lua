@@ -3302,9 +3302,11 @@ function m:position_refs()
   local said = self:said("@compass @compass_verbs @compass_from_verbs @compared_measures furthest farthest most")
   -- ("up the top": looked for only where "up", "down" or "over" is said)
   local leaning = self:said("up down over")
-  for k = 1, #self.t do
-    said = said or screen(self, k, "at") or screen(self, k, "near") or screen(self, k, "near_to")
+  local k = 1
+  while not said and k <= #self.t do
+    said = screen(self, k, "at") or screen(self, k, "near") or screen(self, k, "near_to")
       or (leaning and self:word(k, "up down over") and self:word(k + 1, "the"))
+    k = k + 1
   end
   if not said then return end
   self.positioned = self.positioned or {}
