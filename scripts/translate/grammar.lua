@@ -2830,6 +2830,10 @@ function G.notebook_assignments(text)
   end)
   -- "vs=+1200fpm", "vs = +800": a vertical speed set with a plus sign is that rate up
   text = text:gsub("%f[%a]([Vv][Ss])%s*=%s*%+%s*(%d)", "%1 %2")
+  -- "DLH4AX route += NORKU", "route -= SUGOL": a place appended to the route or taken out of it (a name, not a number)
+  text = text:gsub("%f[%a][Rr][Oo][Uu][Tt][Ee]%s*([%+%-])=%s*(%a)", function(op, first)
+    return (op == "+" and "add waypoint " or "delete waypoint ") .. first
+  end)
   -- "klm12.hdg", "ezy45lm.spd", "Transavia 6XN.hdg": the aircraft's id (or its flight number after the
   -- telephony), a dot, the setting's name
   text = text:gsub("%f[%w]([%w_]*%d[%w_]*)%.(%a+)%f[^%w_]", function(id, field)
@@ -3161,10 +3165,65 @@ function G.script_comment(text)
     .. (side and " " .. side or "") .. rest
 end
 
+-- Words after "at" that name no place before "do" (G.written_forms: "at PLACE do ...").
+G.AT_DO_NOT_PLACE = set_of({ "once", "all", "least", "last", "first", "the", "this", "that", "it", "what", "which",
+  "any", "some", "each", "every", "speed", "level" })
+
+-- The words after "at FL280 ->" that open an instruction waiting for the level (G.written_forms' arrows).
+G.arrow_waits_for_level = set_of({ "spd", "speed", "hdg", "heading", "turn" })
+
+-- A command line's flags typed apart (each after a space or at the start): a one-letter flag before its value,
+-- "-h 270", "-s=300", "-a FL200", is that value's name ("hdg 270", "spd 300", "alt FL200"); "--dir right",
+-- "--direction=L" is the side; "--seconds 90", "--mins 2" is the time with its unit ("90 seconds"). A flag of
+-- another letter ("-v 1500") or a long one of no value's name is left as typed (asked there).
+G.SHELL_LETTERS = { h = "hdg", s = "spd", a = "alt" }
+G.SHELL_SIDES = { left = "left", l = "left", right = "right", r = "right" }
+G.SHELL_TIMES = { seconds = "seconds", secs = "seconds", sec = "seconds", minutes = "minutes", mins = "minutes",
+  min = "minutes" }
+function G.shell_flags(text)
+  local function apart(at) return at == 1 or text:sub(at - 1, at - 1):find("%s") ~= nil end
+  text = text:gsub("()%-(%a)[%s=]+(%a?%a?%.?%d[%d%.]*)%f[^%w%.]", function(at, letter, value)
+    local name = apart(at) and G.SHELL_LETTERS[letter:lower()]
+    if not name or not (value:match("^%d") or value:lower():match("^fl%d+$") or value:lower():match("^m%.?%d+$")) then
+      return nil
+    end
+    return name .. " " .. value
+  end)
+  text = text:gsub("()%-%-[Dd][Ii][Rr]%a*[%s=]+(%a+)%f[%A]", function(at, side)
+    return apart(at) and G.SHELL_SIDES[side:lower()] or nil
+  end)
+  return (text:gsub("()%-%-(%a+)[%s=]+(%d+%.?%d*)%f[^%w%.]", function(at, unit, n)
+    local u = apart(at) and G.SHELL_TIMES[unit:lower()]
+    return u and n .. " " .. u or nil
+  end))
+end
+
+-- A JSON object or YAML flow map typed as the request ("BAW8CK: {\"alt\": \"FL310\"}", "{\"spd\": 250, \"hdg\": 180}",
+-- "new ac: {id: TRA44B, type: B737, lat: 52.2, ...}"): inside the braces a key or value in double quotes is the word
+-- inside, and a key's colon before a number goes ("{lat 52.2, lon 4.5}", the position's fields in CRE's order); a
+-- quoted text of several words stays as typed.
+function G.flow_map(text)
+  return (text:gsub("%b{}", function(object)
+    return (object:gsub('"([%w_%.%+%-]+)"', "%1"):gsub("%f[%w]([%a][%w_]*):%s*([%+%-%.]?%d)", "%1 %2"))
+  end))
+end
+
 local function written_forms(text, world)
   -- (each pattern pass runs through where(): only where `low`, the text in lower case, holds what the
   -- pattern requires, its first argument; a rewrite outside where() sets `low` again)
   local low = text:lower()
+  if low:find("%f[%S]%-%-?%a") then text = G.shell_flags(text) end
+  if text:find("{", 1, true) then text = G.flow_map(text) end
+  -- "sim.pause()", "sim.ff(90)", "sim.op()": a method of the simulation object called is its name said with the
+  -- arguments ("pause", "ff 90"), read as said
+  if low:find("sim%.%a") then
+    text = text:gsub("%f[%a][Ss][Ii][Mm]%.(%a+)%s*%(%s*([^()]-)%s*%)", function(name, args)
+      return name .. (args ~= "" and " " .. args or "")
+    end)
+  end
+  -- "BAW8CK vs: +1800", "vs: -700": a vertical speed's key and colon before a signed rate is the rate, a plus sign
+  -- a climb ("vs 1800", "vs -700"; other keys' signs are steps, left as typed)
+  if low:find("vs:%s*[%+%-]%d") then text = text:gsub("%f[%a]([Vv][Ss]):%s*%+?(%-?%d)", "%1 %2") end
   if text:find("[%.%[%(=;]") or text:find("->", 1, true) then text = G.script_forms(text) end
   low = text:lower()
   if low:find("%s%%") then text = G.script_comment(text) end
@@ -3218,6 +3277,18 @@ local function written_forms(text, world)
     if p:match("^fl%d+$") then return at .. place .. " " end
     -- (only before a setting assigned, "alt = FL110": "at BRAVO: altitude FL300" is the crossing constraint)
     if lexicon.shorthand[p] or not place:find("^%u") or not text:find("^%a+%s*=", e) then return nil end
+    return at .. place .. " then "
+  end)
+  -- "DLH9KM at ENTRY1 do spd 220", "@TOPPA do alt FL200": "do" after the place reached leads to what the aircraft
+  -- does there (`AT ... DO ...`, the registry's own word), as an arrow does; never the crossing constraint
+  -- ("at once do ...", "at all do ...": no place); after a flight level before a speed or heading ("at FL140 do
+  -- spd 220") the level is the condition, as "at FL140 spd 220"
+  where("do", "%f[%a]([Aa][Tt]%s+)([%a_][%w_]*)%s+[Dd][Oo]%f[%A]%s*()", function(at, place, e)
+    local p = place:lower()
+    if p:match("^fl%d+$") then
+      return G.arrow_waits_for_level[(text:match("^(%a+)", e) or ""):lower()] and at .. place .. " " or nil
+    end
+    if p:match("^fl%d") or lexicon.shorthand[p] or G.AT_DO_NOT_PLACE[p] then return nil end
     return at .. place .. " then "
   end)
   -- "47,5 north", "8,5 degrees east", "factor to 1,1": a decimal comma (G.decimal_comma) is the point
@@ -3368,9 +3439,15 @@ local function written_forms(text, world)
     end)
     -- "bel3pv at NIK -> FL180", "after ROLIS -> spd 250": an arrow after a place the aircraft reaches leads
     -- to what it does there, as "then" ("at NIK then FL180": the instruction starts at NIK); after a level
-    -- ("passing FL120 -> spd 280") it stays a comma, below
-    where("%->", "%f[%a](%a+)(%s+)([%a_][%w_]*)%s*%-+>%s*", function(word, space, place)
+    -- ("passing FL120 -> spd 280") it stays a comma, below; after "at" and a flight level ("AFR12 at FL280 -> spd
+    -- 250", "@FL300 -> hdg 120") the level is the condition a speed or heading waits for, as "at FL280 spd 250"
+    -- ("at FL200 -> vs -1500", "at FL280 -> KLM12 spd 250" stay asked)
+    where("%->", "%f[%a](%a+)(%s+)([%a_][%w_]*)%s*%-+>%s*()", function(word, space, place, e)
       local w, p = word:lower(), place:lower()
+      if w == "at" and p:match("^fl%d+$") then
+        local next_word = (text:match("^(%a+)", e) or ""):lower()
+        return G.arrow_waits_for_level[next_word] and word .. space .. place .. " " or nil
+      end
       if not (w == "at" or w == "after" or w == "over" or w == "passing" or w == "reaching")
           or p:match("^fl%d") or lexicon.shorthand[p] then
         return nil
@@ -3379,13 +3456,17 @@ local function written_forms(text, world)
     end)
     -- "KLM1234 -> SUGOL": an arrow typed before a place's name is a direct-to ("alt -> FL330", a value
     -- after a setting's name, is no place); before a word that opens an instruction (a value's name, a verb
-    -- of climb or descent, a turn: "KLM56 -> hdg 210 L", "passing FL120 -> spd 280") it separates that
+    -- of climb or descent, a turn, a rate: "KLM56 -> hdg 210 L", "passing FL120 -> spd 280", "-> vs -1000") it separates that
     -- instruction from what is before it, as a comma
     where("%->", "(%w+)%s*%-+>%s*(%a[%w%.]*)", function(before, after)
       local b, a = before:lower(), after:lower()
       if lexicon.shorthand[b] or lexicon.direct_arrow_not[b] or a:match("^m%.?%d") then return nil end
       -- ("klm12 -> FL320, dlh4 -> FL280": before a level the arrow is "to", each aircraft's own)
       if a:match("^fl%d") then return before .. " to " .. after end
+      -- ("speed 250 -> pls": a courtesy closing the line is no place)
+      if a == "pls" or a == "please" or a == "plz" then return before .. " " .. after end
+      -- ("FL200 -> vs -1500", a rate after a level, stays a direct-to, asked)
+      if a == "vs" and not b:match("^fl%d") then return before .. ", " .. after end
       if word_set("turn left right lt rt @instruction_nouns @up @down", 1)[a] then return before .. ", " .. after end
       return before .. " direct " .. after
     end)

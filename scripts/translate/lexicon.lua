@@ -187,7 +187,9 @@ return {
         "busted", "infringed",
         -- the online networks' text-speak: thanks and goodbyes typed short ("ty", "kthx", "kthxbye"), a laugh typed
         -- as a face ("xD"), and a fault of the client given as the reason ("despawn X its lagging", "its stuck")
-        "ty", "tyvm", "thnx", "thanx", "kthx", "kthxbye", "cya", "xd", "lag", "lagging", "laggy", "stuck" },
+        "ty", "tyvm", "thnx", "thanx", "kthx", "kthxbye", "cya", "xd", "lag", "lagging", "laggy", "stuck",
+        -- British thanks typed short ("RYR82LK fl330 pls ta")
+        "ta" },
     -- radiotelephony courtesy
     radiotelephony = { "good", "day", "morning", "afternoon", "evening", "hello", "hi", "roger", "wilco", "copy",
         "copied", "affirm", "affirmative", "understood", "g'day", "bye",
@@ -691,12 +693,12 @@ return {
     trn = { { word = "turn", next = "left right lft rt lt rgt l r hdg heading" },
             { word = "turn", prev = "#start", after_next = "left right lft rt lt rgt l r hdg heading" } },
     -- (an experimenter's shorthand of the command words: "head 030", "incr 280", "rm ooabc", "del rte",
-    -- "lvl?", "vert sep 2000ft"; "head" before no number, "rm" inside a line and "del" before no route
-    -- word stay as typed; "lvl" after a place's verb is the LVL navaid)
+    -- "lvl?", "vert sep 2000ft", "KLM12 rm wpt SPY"; "head" before no number, "rm" inside a line before no waypoint
+    -- word and "del" before no route word stay as typed; "lvl" after a place's verb is the LVL navaid)
     head = { word = "heading", next = "#number" },
     incr = { word = "increase", next = "#number speed spd to" }, inc = { word = "increase", next = "#number speed spd to" },
     decr = { word = "decrease", next = "#number speed spd to" },
-    rm = { word = "remove", prev = "#start" },
+    rm = { { word = "remove", prev = "#start" }, { word = "delete", next = "wpt waypoint" } },
     del = { word = "delete", next = "rte route wpt waypoint" },
     rte = { word = "route" },
     -- ("add wp sopok", "new wp ctr at 52.31n 4.76e": a waypoint typed short after a verb or an article; elsewhere,
@@ -857,7 +859,7 @@ return {
   -- words that, typed before "=", name a setting or a value ("pz=5nm", "lookahead=300", "altitude=fl300"), beside
   -- the registry's names and the shorthand
   setting_keys = { "pz", "rpz", "lookahead", "altitude", "speed", "heading", "level", "fl", "mach", "rate",
-                   "multiplier", "speedup", "timestep", "step", "radius" },
+                   "multiplier", "speedup", "timestep", "step", "radius", "cd", "cr" },
   -- labels of text for the log, before a colon opening the request ("log: seed=7 baseline"): kept as typed
   note_labels = { note = true, log = true, comment = true, message = true, memo = true, echo = true },
   -- the words an instruction is named by when it is said with no verb ("at ELDAR speed 250", "at BRAVO:

@@ -444,18 +444,26 @@ function M.command_slip(c, scratch)
 end
 
 -- A conditional's command typed without the aircraft ("atalt ana257 fl080
--- spd 210") gets the condition's aircraft ("... SPD ANA257 210") when only
--- that makes it parse; otherwise the line c unchanged (a carried command
--- that parses neither way is then asked about in M.typed), less a link word
--- ("then", "and") said before a carried command that parses. name: c's
+-- spd 210", "BAW8CK at SUGOL do ALT FL200") gets the condition's aircraft
+-- ("... SPD ANA257 210", "... DO ALT BAW8CK FL200", as the registry's AT
+-- would run it) when only that makes it parse; otherwise the line c
+-- unchanged (a carried command that parses neither way is then asked about
+-- in M.typed), less a link word ("then", "and") said before a carried
+-- command that parses. AT's DO (or STACK) is written in capitals. name: c's
 -- registry name.
-local NESTED_AT = { ATALT = 4, ATSPD = 4, ATDIST = 5 }
+local NESTED_AT = { ATALT = 4, ATSPD = 4, ATDIST = 5, AT = 5 }
 local LINKED = { ["then"] = true, ["and"] = true }
 function M.complete_nested(c, name, scratch)
   local k = NESTED_AT[name]
   if not k then return c end
   local w = {}
   for x in c:gmatch("[^%s,]+") do w[#w + 1] = x end
+  if name == "AT" then
+    local stored = w[4] and w[4]:upper()
+    if stored ~= "DO" and stored ~= "STACK" then return c end
+    w[4] = stored
+    c = table.concat(w, " ")
+  end
   if name == "ATDIST" and tonumber(w[3]) then k = 6 end  -- a lat/lon position: two words
   -- ("atdist dlh4 norku 15 then spd 240": a link word before the carried command is English glue, left out when
   -- the command after it parses)

@@ -20815,3 +20815,82 @@ do
   check_eq(ex("Norwegian 3KT descend FL100, Norwegian"), "ALT NAX3KT FL100")
   asked(ex("Norwegian, climb flight level 150"), "an airline alone, its one aircraft named nowhere")
 end
+
+-- Cycle 64 (f227): a command line's flags typed apart
+-- A one-letter flag before its value is that value's name ("-h 180" heading, "-s 300" speed, "-a FL200" level);
+-- "--dir right" is the side, "--seconds 90" the time. "-h 180 --right" was sent as a turn of 180 degrees.
+do
+  local _, ex = scene({ "CRE DLH9KM A321 50.4 8.9 250 FL150 280", "CRE EIN7AB A320 52.7 3.0 090 FL360 280" })
+  check_eq(ex("DLH9KM -h 180 --right"), "HDG DLH9KM 180 RIGHT")
+  check_eq(ex("EIN7AB -h 270"), "HDG EIN7AB 270")
+  check_eq(ex("DLH9KM -s 300"), "SPD DLH9KM 300")
+  check_eq(ex("EIN7AB -s=280"), "SPD EIN7AB 280")
+  check_eq(ex("EIN7AB -a FL320"), "ALT EIN7AB FL320")
+  check_eq(ex("EIN7AB --hdg 310 --dir right"), "HDG EIN7AB 310 RIGHT")
+  check_eq(ex("DLH9KM --heading=200 --direction L"), "HDG DLH9KM 200 LEFT")
+  check_eq(ex("ff --seconds 90"), "FF 90")
+  check_eq(ex("ff --mins 2"), "FF 120")
+  check_eq(ex("EIN7AB -h 270 -s 250"), "HDG EIN7AB 270 ; SPD EIN7AB 250")
+  asked(ex("EIN7AB -v 1500"), "a flag of no value's name")
+  asked(ex("EIN7AB -x 270"), "a flag of no value's name")
+  asked(ex("EIN7AB turn -h 20"), "a heading of two digits")
+  asked(ex("ff -s 90"), "'-s' after fast-forward names no aircraft's speed")
+end
+
+-- Cycle 64 (f227): "at PLACE do ..." and "at FL280 -> ..."
+-- "do" after the place reached leads to what is done there (AT ... DO ...), never the crossing constraint; typed as
+-- TrafScript with the carried command naming no aircraft, the aircraft is written in, as AT runs it. An arrow (or
+-- "do") after "at" and a flight level before a speed or heading makes it wait for the level (ATALT).
+do
+  local _, ex = scene({ "CRE DLH9KM A321 50.4 8.9 250 FL150 280", "CRE BAW8CK A320 52.5 4.2 270 FL250 280",
+    "CRE AFR1145 A319 53.1 4.0 200 FL300 270", "DEFWPT ENTRY1 50.3 8.7", "ADDWPT DLH9KM ENTRY1", "ADDWPT BAW8CK SUGOL" })
+  check_eq(ex("DLH9KM at ENTRY1 do spd 220"), "AT DLH9KM ENTRY1 DO SPD DLH9KM 220")
+  check_eq(ex("DLH9KM @ENTRY1 do hdg 300"), "AT DLH9KM ENTRY1 DO HDG DLH9KM 300")
+  check_eq(ex("BAW8CK at SUGOL do ALT FL200"), "AT BAW8CK SUGOL DO ALT BAW8CK FL200")
+  check_eq(ex("AT BAW8CK SUGOL DO ALT BAW8CK FL200"), "AT BAW8CK SUGOL DO ALT BAW8CK FL200")
+  check_eq(ex("DLH9KM at ENTRY1 spd 220"), "AT DLH9KM ENTRY1 SPD 220")
+  check_eq(ex("AFR1145 at FL280 -> spd 250"), "ATALT AFR1145 FL280 SPD AFR1145 250")
+  check_eq(ex("AFR1145 @FL280 -> hdg 120"), "ATALT AFR1145 FL280 HDG AFR1145 120")
+  check_eq(ex("DLH9KM at FL140 do spd 220"), "ATALT DLH9KM FL140 SPD DLH9KM 220")
+  check_eq(ex("BAW8CK once spd 200 -> vs -1000"), "ATSPD BAW8CK 200 VS BAW8CK -1000")
+  check_eq(ex("BAW8CK -> vs -1000"), "VS BAW8CK -1000")
+  asked(ex("DLH9KM at ENTRY1 do"), "nothing to do there")
+  asked(ex("AFR1145 at FL280 -> vs -1500"), "a rate after the level")
+  asked(ex("AFR1145 at FL280 -> BAW8CK spd 250"), "another aircraft after the arrow")
+end
+
+-- Cycle 64 (f227): JSON objects, YAML flow maps and "key: value" fragments
+do
+  local _, ex = scene({ "CRE BAW8CK A320 52.5 4.2 270 FL250 280", "CRE KLM1234 B738 52.3 4.76 090 FL120 250" })
+  check_eq(ex('BAW8CK: {"alt": "FL310"}'), "ALT BAW8CK FL310")
+  check_eq(ex('{"acid": "BAW8CK", "alt": "FL310"}'), "ALT BAW8CK FL310")
+  check_eq(ex('KLM1234: {"spd": 250, "hdg": 180}'), "SPD KLM1234 250 ; HDG KLM1234 180")
+  check_eq(ex("new ac: {id: TRA44B, type: B737, lat: 52.2, lon: 4.5, hdg: 90, alt: FL80, spd: 230}"),
+    "CRE TRA44B B737 52.2 4.5 90 FL80 230")
+  check_eq(ex("create {id: TRA44E, type: A320, lon: 4.1, lat: 52.0, hdg: 180, alt: 9000, spd: 250}"),
+    "CRE TRA44E A320 52 4.1 180 9000 250")
+  check_eq(ex("BAW8CK vs: +1800"), "VS BAW8CK 1800")
+  check_eq(ex("KLM1234 vs: -700"), "VS KLM1234 -700")
+  check_eq(ex("CD=ON"), "ASAS ON")
+  asked(ex("CR=OFF"), "resolution off for everyone is confirmed")
+  asked(ex("KLM1234 {hdg: 20}"), "a heading of two digits")
+  asked(ex('BAW8CK: {"alt": "FL 310 please"}'), "a quoted text of several words")
+end
+
+-- Cycle 64 (f227): a script's route edits, the simulation's methods and chat courtesy
+do
+  local _, ex = scene({ "CRE KLM1234 B738 52.3 4.76 090 FL120 250", "CRE DLH4AX A321 52.1 5.2 300 FL180 270",
+    "ADDWPT KLM1234 ARTIP", "ADDWPT KLM1234 NORKU" })
+  check_eq(ex("DLH4AX route += NORKU"), "ADDWPT DLH4AX NORKU")
+  check_eq(ex("KLM1234 route -= ARTIP"), "DELWPT KLM1234 ARTIP")
+  check_eq(ex("KLM1234 rm wpt NORKU"), "DELWPT KLM1234 NORKU")
+  check_eq(ex("rm KLM1234"), "DEL KLM1234")
+  check_eq(ex("sim.pause()"), "HOLD")
+  check_eq(ex("sim.ff(90)"), "FF 90")
+  check_eq(ex("sim.op()"), "OP")
+  check_eq(ex("KLM1234 speed 250 -> pls"), "SPD KLM1234 250")
+  check_eq(ex("DLH4AX fl330 pls ta"), "ALT DLH4AX FL330")
+  asked(ex("KLM1234 rm NORKU"), "'rm' inside a line before no waypoint word")
+  asked(ex("KLM1234 route += 5"), "a number appended to the route")
+  asked(ex("sim.reset()"), "a reset is confirmed")
+end
