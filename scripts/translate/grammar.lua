@@ -182,7 +182,8 @@ local function know_all(v, seen)
   -- accounted for only where one is read; lexicon.readback_heard is dropped with its values only, and
   -- lexicon.nationless_registrations are letters of a registration; lexicon.typed_abbreviations are read as
   -- their words only where those fit; lexicon.manner, rate_manner, deadline_places and held_value only where their reading
-  -- holds; lexicon.dictated_punctuation is the marks it names; lexicon.said_whole is read as its English: they
+  -- holds; lexicon.dictated_punctuation is the marks it names; lexicon.said_whole and discourse_words are read as
+  -- their English: they
   -- account for no word; lexicon.heard_as's words are read only where their neighbours fit, becoming the word
   -- they mean, so a heard form left as it was ("vire a la izquierda": no neighbour fits) is no word squawk knows;
   -- lexicon.name_particles are words of a place's name ("de los reyes"), accounted for only inside the name read,
@@ -209,6 +210,7 @@ local function know_all(v, seen)
       or v == lexicon.addressed_roles or v == lexicon.readback_heard or v == lexicon.nationless_registrations
       or v == lexicon.manner or v == lexicon.rate_manner or v == lexicon.deadline_places or v == lexicon.held_value
       or v == lexicon.dictated_punctuation or v == lexicon.acknowledged or v == lexicon.said_whole or v == lexicon.heard_as
+      or v == lexicon.discourse_words
       or v == lexicon.name_particles or v == lexicon.digit_homophones or v == lexicon.asides_alone
       or v == lexicon.kept_as_is or v == lexicon.id_labels or v == lexicon.terse_list
       or v == lexicon.self_correction.apology or v == lexicon.replaced_lead or v == lexicon.ff_ended
@@ -537,6 +539,7 @@ function G.said_whole_index()
       end
       G.said_whole_built[language] = index
     end
+    G.said_whole_built.discourse = G.discourse_index()
     -- (G.said_whole_firsts: every language's first words, one set)
     G.said_whole_firsts = {}
     for _, index in pairs(G.said_whole_built) do
@@ -545,12 +548,49 @@ function G.said_whole_index()
   end
   return G.said_whole_built
 end
+-- lexicon.discourse_words as one more index of G.said_whole_index's ("discourse"), every form shared (none marks a
+-- sentence): a word or phrase -> its role's English (lexicon.discourse_roles). One listed under two roles, or
+-- read otherwise by another language of lexicon.said_whole, by foreign_digits, lexicon.accounted or fillers ("Pause,
+-- sumimasen." stays accounted's), or of two letters or less, or of the `wait` role, is left out, as said: "iie" is
+-- read "no", "phir" "then", "evet" "yes"; "ne" and "chotto matte" stay as they were.
+function G.discourse_index()
+  local means, clash = {}, {}
+  for _, roles in pairs(lexicon.discourse_words) do
+    for role, words in pairs(roles) do
+      for _, w in ipairs(words) do
+        local en = lexicon.discourse_roles[role]
+        if means[w] ~= nil and means[w] ~= en then clash[w] = true end
+        means[w] = en
+      end
+    end
+  end
+  local known = {}
+  for _, w in ipairs(lexicon.fillers) do known[w] = true end
+  for _, list in pairs(lexicon.accounted) do for _, w in ipairs(list) do known[w] = true end end
+  local index = {}
+  for key, en in pairs(means) do
+    local words = {}
+    for w in key:gmatch("%S+") do words[#words + 1] = w end
+    local other = en == false or lexicon.foreign_digits[words[1]] ~= nil or #key <= 2 or known[key]
+    for _, S in pairs(lexicon.said_whole) do
+      local said = S.words[key]
+      if said == nil then said = S.joining[key] end
+      other = other or (said ~= nil and said ~= en)
+    end
+    if not clash[key] and not other then
+      index[words[1]] = index[words[1]] or {}
+      table.insert(index[words[1]], { words = words, means = en, joining = false, marks = false })
+    end
+  end
+  for _, forms in pairs(index) do table.sort(forms, function(x, y) return #x.words > #y.words end) end
+  return index
+end
 -- One language said whole (lexicon.said_whole), read as its English: "vire a la izquierda rumbo 170" ->
 -- "turn left heading 170", "montez au niveau 140" -> "climb to flight level 140". A sentence holding a
 -- marking word of a language (the first of G.said_whole_order holding one) is read in that language alone;
 -- one holding none, in every language's words that mark none.
 G.said_whole_order = { "spanish", "french", "german", "dutch", "portuguese", "nordic", "malay", "greek", "russian",
-  "italian", "polish" }
+  "italian", "polish", "discourse" }
 function G.said_whole(text)
   text = G.russian_yes_no(text)
   local indexes = G.said_whole_index()

@@ -1836,9 +1836,12 @@ local TWO_LETTER_RESERVED = { FL = true, NM = true, VS = true, PZ = true, ON = t
   AM = true, PM = true, CD = true, CR = true, LT = true, RT = true }
 H.two_letter_reserved = TWO_LETTER_RESERVED
 function m:two_letter_place_refs()
-  local locate, lower = self.world.locate, false
-  for _, t in ipairs(self.t) do lower = lower or (t.kind == "word" and t.raw:find("%l") ~= nil) end
-  if not locate or not lower then return end
+  local locate, lower, two = self.world.locate, false, false
+  for _, t in ipairs(self.t) do
+    lower = lower or (t.kind == "word" and t.raw:find("%l") ~= nil)
+    two = two or (t.kind == "word" and t.raw:match("^%u%u$") ~= nil and not TWO_LETTER_RESERVED[t.raw])
+  end
+  if not locate or not lower or not two then return end
   local near = {}
   for _, a in ipairs(self.fleet) do
     if a.lat then near[#near + 1] = a end
@@ -3297,9 +3300,11 @@ end
 function m:position_refs()
   if not self:said("the") then return end
   local said = self:said("@compass @compass_verbs @compass_from_verbs @compared_measures furthest farthest most")
+  -- ("up the top": looked for only where "up", "down" or "over" is said)
+  local leaning = self:said("up down over")
   for k = 1, #self.t do
     said = said or screen(self, k, "at") or screen(self, k, "near") or screen(self, k, "near_to")
-      or (self:word(k, "up down over") and self:word(k + 1, "the"))
+      or (leaning and self:word(k, "up down over") and self:word(k + 1, "the"))
   end
   if not said then return end
   self.positioned = self.positioned or {}

@@ -33,7 +33,8 @@ local KNOWN, CODES = {}, {}
 -- LEXICON_WORDS: the words of translate/lexicon.lua alone (no name of names.lua), lower case
 local LEXICON_WORDS = {}
 do
-  local seen = {}
+  -- (lexicon.discourse_words are no words of English a slip could be read as: read by role or left as said)
+  local seen = { [lexicon.discourse_words] = true }
   local function walk(t, codes)
     if seen[t] then return end
     seen[t] = true

@@ -20894,3 +20894,38 @@ do
   asked(ex("KLM1234 route += 5"), "a number appended to the route")
   asked(ex("sim.reset()"), "a reset is confirmed")
 end
+
+-- Cycle 64 (fint): discourse words of many languages (yes, no, sorry, then, and, okay, please, thanks) by role
+-- (lexicon.discourse_words): each is read as its role's English; a short word, one with two roles, a fix's word
+-- and a wait word stay as they were, asked where they were asked.
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL250 280", "CRE THY7 A321 41 29 180 FL200 280" })
+  -- no: a value taken back
+  check_eq(ex("KLM12 descend FL200, iie, FL210"), "ALT KLM12 FL210")
+  check_eq(ex("THY7 turn left heading 250, hayir, heading 260"), "HDG THY7 260 LEFT")
+  check_eq(ex("KLM12 descend FL200, hapana, FL210"), "ALT KLM12 FL210")
+  check_eq(ex("THY7 speed 250, nahin, speed 240"), "SPD THY7 240")
+  -- sorry: a value taken back
+  check_eq(ex("KLM12 descend FL200, xin loi, FL210"), "ALT KLM12 FL210")
+  check_eq(ex("THY7 climb FL300, anteeksi, FL310"), "ALT THY7 FL310")
+  check_eq(ex("KLM12 climb FL300, izvinite, FL320"), "ALT KLM12 FL320")
+  -- then and and: instructions in order
+  check_eq(ex("KLM12 climb FL300 phir turn left heading 270"), "ALT KLM12 FL300 ; HDG KLM12 270 LEFT")
+  check_eq(ex("THY7 descend FL150 ranhou turn right heading 200"), "ALT THY7 FL150 ; HDG THY7 200 RIGHT")
+  check_eq(ex("KLM12 climb FL300 kisha speed 250"), "ALT KLM12 FL300 ; SPD KLM12 250")
+  check_eq(ex("KLM12 climb FL300 geurigo speed 250"), "ALT KLM12 FL300 ; SPD KLM12 250")
+  -- yes, okay, please, thanks: nothing asked
+  check_eq(ex("evet, THY7 climb FL300"), "ALT THY7 FL300")
+  check_eq(ex("ndiyo KLM12 climb FL300"), "ALT KLM12 FL300")
+  check_eq(ex("KLM12 climb FL300 dhanyavaad"), "ALT KLM12 FL300")
+  check_eq(ex("KLM12 climb FL300 multumesc"), "ALT KLM12 FL300")
+  check_eq(ex("rendben, KLM12 climb FL300"), "ALT KLM12 FL300")
+  check_eq(ex("KLM12 climb FL300 bevakasha"), "ALT KLM12 FL300")
+  -- stay asked: a wait before an instruction, a word no role reads, a fix's word where a place is expected
+  asked(ex("KLM12 chotto matte, climb FL300"), "a wait before an instruction")
+  asked(ex("KLM12 jamkkanman, climb FL300"), "a wait before an instruction")
+  asked(ex("KLM12 descend FL200, hmmza, FL210"), "a word of no role")
+  asked(ex("KLM12 direct kisha"), "a then word where a place is expected")
+  asked(ex("KLM12 descend FL200, bukan, FL210"), "Indonesian 'bukan' is a fix: no role")
+  asked(ex("KLM12 climb FL300, hayir"), "a no closing an instruction")
+end
