@@ -648,15 +648,27 @@ end
 -- "climb flight level 150 net, flight level 130"), or a mark (or nothing) before and a mark (or the request's end)
 -- after ("direct MEDUD, da"); "net"/"nyet" also straight after a value, before more words ("flight level 150 net
 -- flight level 130"): the value taken back. Typed in capitals or anywhere else they stay as said ("Da Nang",
--- "direct dug da": a fix's name spelled apart).
+-- "direct dug da": a fix's name spelled apart). Japanese "hai" (yes; HAI is a navaid's ident) is read so only
+-- where a mark (or nothing) is before it and a mark (or the request's end) after, and the word before that mark
+-- takes no place ("Japan Air 917, hai, descend FL160", "turn left heading 340, hai.", "Hai, resume."); "direct
+-- hai", "over, hai," and "hai climb" stay as said (asked).
+-- (the words before "hai" that take a place: there it may be the navaid HAI)
+G.hai_place_before = set_of({ "direct", "to", "at", "via", "over", "waypoint", "wpt", "fix", "navaid", "vor", "ndb",
+  "from", "and", "then" })
 function G.russian_yes_no(text)
   local low = text:lower()
-  if not (low:find("%f[%a]da%f[%A]") or low:find("%f[%a]n[y]?et%f[%A]")) then return text end
+  if not (low:find("%f[%a]da%f[%A]") or low:find("%f[%a]n[y]?et%f[%A]") or low:find("%f[%a]hai%f[%A]")) then
+    return text
+  end
   local toks, bare = plain_words(text)
   return tokens.rewrite(text, toks, function(i)
     local w = bare[i]
-    local en = (w == "da" and "yes") or ((w == "net" or w == "nyet") and "no")
+    local en = ((w == "da" or w == "hai") and "yes") or ((w == "net" or w == "nyet") and "no")
     if not en or toks[i]:match("^%u%u") then return nil end
+    if w == "hai" and (not (i == 1 or toks[i - 1]:match("%p$")) or not (toks[i]:match("%p$") or not toks[i + 1])
+        or G.navaid_slot(bare, i) or G.hai_place_before[bare[i - 1] or ""]) then
+      return nil
+    end
     -- (the word said again, "da da,", "net net": one word, set off as its last is)
     local j = i
     while bare[j + 1] == w and not toks[j]:match("%p$") and not toks[j + 1]:match("^%u%u") do j = j + 1 end

@@ -54,7 +54,9 @@ return {
   -- "ano" (um), "yung" (the), "na" (now): "resume na po"; and of Nigerian and Ghanaian Pidgin: "abeg" (please),
   -- "oya" (come on, now): "abeg check Speedbird 75 for me", "oya show me Arik 104")
   fillers = { "ah", "uh", "um", "er", "eh", "oh", "the", "a", "an", "please", "pls", "okay", "ok", "yeah", "so",
-      "and", "now", "lah", "leh", "lor", "po", "sige", "ano", "yung", "na", "abeg", "oya" },
+      "and", "now", "lah", "leh", "lor", "po", "sige", "ano", "yung", "na", "abeg", "oya",
+      -- (Japanese hesitations: "eto", "etto", "eeto", as "uh")
+      "eto", "etto", "eeto", },
   -- Every word accounted for (docs/translator_trust.md): a request becomes commands only when each of its
   -- words is part of a callsign, place, type or value the parse read, an instruction word (the rules' words
   -- and this file's lists), or a word of one of these classes; any other word is a leftover, asked about by
@@ -2697,12 +2699,15 @@ return {
   -- "da", "nu", "ja", "to" are English, idents or units), nor one that is an English word, a fix or navaid ident
   -- ("hai", "sonra", "tapos", "bukan" are fixes) or a callsign's word; a word listed under two roles (in any two languages) or read otherwise by
   -- lexicon.said_whole, foreign_digits, accounted or fillers is left to them; so are the `wait` role's
-  -- words ("chotto matte, climb FL300": a hold before an instruction is no instruction).
+  -- words ("matte, climb FL300": a hold before an instruction is no instruction). The `moment` role's words are
+  -- English "one moment", read as it is: beside a pause ("Pause, chotto matte.") or before a value taken back
+  -- ("climb FL380, chotto matte... negative, FL370"), and asked before an instruction ("chotto matte, climb
+  -- FL300").
   discourse_roles = { yes = "yes", no = "no", sorry = "sorry", ["then"] = "then", ["and"] = "and", okay = "okay",
-    please = "please", thanks = "thanks", wait = false },
+    please = "please", thanks = "thanks", wait = false, moment = "one moment" },
   discourse_words = {
     japanese = { no = { "iie" }, sorry = { "gomen", "gomennasai", "shitsurei", "sumimasen" },
-      ["then"] = { "sorekara" }, ["and"] = { "soshite" }, wait = { "chotto matte", "matte", "eto", "etto", "ano ne" },
+      ["then"] = { "sorekara" }, ["and"] = { "soshite" }, wait = { "matte", "ano ne" }, moment = { "chotto matte" },
       please = { "onegaishimasu", "onegai" }, thanks = { "arigato", "arigatou" } },
     chinese = { yes = { "shide", "dui de" }, no = { "budui", "bu shi", "bu dui" },
       sorry = { "duibuqi", "dui bu qi", "buhaoyisi" }, ["then"] = { "ranhou" }, wait = { "dengyixia", "shaodeng" },

@@ -21163,3 +21163,60 @@ do
   asked(ex("Danaco 361 e don climb FL100"), "'don' in an instruction")
   asked(ex("check Arik Air 104 for me, descend FL100"), "'check' before an instruction")
 end
+
+-- Cycle 64 (f223): Japanese yes, hesitation and "wait a moment" (hai, eto, chotto matte); discourse words no ident
+-- "hai" (yes; HAI is a navaid) is yes only set off by marks (or the request's ends) and after no word taking a
+-- place; "eto" is a hesitation; "chotto matte" is "one moment", read beside a pause or before a value taken back,
+-- asked before an instruction.
+do
+  local _, ex = scene({ "CRE JAL917 B763 34.6 139.2 060 FL220 290", "CRE ANA241 B788 34.9 138.6 090 FL280 300" })
+  check_eq(ex("Japan Air 917, hai, climb and maintain flight level two four zero"), "ALT JAL917 FL240")
+  check_eq(ex("All Nippon 241, turn right heading one two zero, hai."), "HDG ANA241 120 RIGHT")
+  check_eq(ex("hai, ANA241 reduce speed 250"), "SPD ANA241 250")
+  check_eq(ex("Hai, pause."), "HOLD")
+  check_eq(ex("JAL917 eto, descend FL200"), "ALT JAL917 FL200")
+  check_eq(ex("etto, ANA241 turn left heading 045"), "HDG ANA241 45 LEFT")
+  check_eq(ex("chotto matte, pause the simulation"), "HOLD")
+  check_eq(ex("Freeze, chotto matte."), "HOLD")
+  check_eq(ex("ANA241 climb FL330, chotto matte... negative, FL320"), "ALT ANA241 FL320")
+  asked(ex("JAL917 hai climb FL300"), "'hai' not set off: may be a place")
+  asked(ex("JAL917 cross hai, descend FL200"), "'hai' in a place's slot")
+  asked(ex("JAL917 direct, hai, climb FL300"), "'hai' after a word taking a place")
+  asked(ex("ANA241 chotto matte, climb FL330"), "a wait before an instruction")
+  asked(ex("JAL917 climb FL300, chotto matte"), "a wait after an instruction")
+  asked(ex("chotto matte"), "a wait alone")
+end
+-- No word lexicon.discourse_words reads (one word, not a phrase, of a role read, and not lexicon.accounted's, which
+-- reads "tamam" with its own care) is a fix's or a navaid's ident in BlueSky's navdata ("hai" is the navaid HAI,
+-- "bukan" a fix): such a word may be a place, and is read apart (G.russian_yes_no) or not at all.
+do
+  local fix = io.open("../shared/bluesky/navdata/fix.dat")
+  local nav = io.open("../shared/bluesky/navdata/nav.dat")
+  if not (fix and nav) then
+    print("skipped: discourse words against idents need BlueSky's navdata at ../shared/bluesky/navdata")
+  else
+    local idents = {}
+    for line in fix:lines() do
+      local id = line:match("^%s*%S+%s+%S+%s+(%S+)")
+      if id then idents[id:lower()] = true end
+    end
+    for line in nav:lines() do
+      local id = line:match("^%s*%d+%s+%S+%s+%S+%s+%S+%s+%S+%s+%S+%s+%S+%s+(%S+)")
+      if id then idents[id:lower()] = true end
+    end
+    check(idents.hai and idents.bukan, "the navdata's idents were read (HAI, BUKAN)")
+    local lexicon = require("translate.lexicon")
+    local elsewhere = {}
+    for _, list in pairs(lexicon.accounted) do for _, w in ipairs(list) do elsewhere[w] = true end end
+    for language, roles in pairs(lexicon.discourse_words) do
+      for role, words in pairs(roles) do
+        for _, w in ipairs(words) do
+          check(not lexicon.discourse_roles[role] or w:find(" ", 1, true) or elsewhere[w] or not idents[w],
+            language .. " " .. role .. " '" .. w .. "' is a fix or navaid ident")
+        end
+      end
+    end
+  end
+  if fix then fix:close() end
+  if nav then nav:close() end
+end
