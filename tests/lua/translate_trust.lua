@@ -20878,7 +20878,8 @@ end
 -- "do") after "at" and a flight level before a speed or heading makes it wait for the level (ATALT).
 do
   local _, ex = scene({ "CRE DLH9KM A321 50.4 8.9 250 FL150 280", "CRE BAW8CK A320 52.5 4.2 270 FL250 280",
-    "CRE AFR1145 A319 53.1 4.0 200 FL300 270", "DEFWPT ENTRY1 50.3 8.7", "ADDWPT DLH9KM ENTRY1", "ADDWPT BAW8CK SUGOL" })
+    "CRE AFR1145 A319 53.1 4.0 200 FL300 270", "DEFWPT ENTRY1 50.3 8.7", "ADDWPT DLH9KM ENTRY1", "DEFWPT SUGOL 52.53 3.97",
+    "ADDWPT BAW8CK SUGOL" })
   check_eq(ex("DLH9KM at ENTRY1 do spd 220"), "AT DLH9KM ENTRY1 DO SPD DLH9KM 220")
   check_eq(ex("DLH9KM @ENTRY1 do hdg 300"), "AT DLH9KM ENTRY1 DO HDG DLH9KM 300")
   check_eq(ex("BAW8CK at SUGOL do ALT FL200"), "AT BAW8CK SUGOL DO ALT BAW8CK FL200")
@@ -20915,7 +20916,7 @@ end
 -- Cycle 64 (f227): a script's route edits, the simulation's methods and chat courtesy
 do
   local _, ex = scene({ "CRE KLM1234 B738 52.3 4.76 090 FL120 250", "CRE DLH4AX A321 52.1 5.2 300 FL180 270",
-    "ADDWPT KLM1234 ARTIP", "ADDWPT KLM1234 NORKU" })
+    "DEFWPT ARTIP 52.51 5.57", "DEFWPT NORKU 51.78 4.58", "ADDWPT KLM1234 ARTIP", "ADDWPT KLM1234 NORKU" })
   check_eq(ex("DLH4AX route += NORKU"), "ADDWPT DLH4AX NORKU")
   check_eq(ex("KLM1234 route -= ARTIP"), "DELWPT KLM1234 ARTIP")
   check_eq(ex("KLM1234 rm wpt NORKU"), "DELWPT KLM1234 NORKU")
