@@ -5902,6 +5902,53 @@ function G:passing_level_flown()
   end
 end
 
+-- "KLM12 at FL280 mach .78", "KLM12 at FL200, vs -1500", "KLM12 at FL280 then spd 250", "AFR1145 at FL280 -> spd
+-- 250": a level after "at" straight after the callsign of an aircraft flying, joined to the next instruction by
+-- nothing, a comma, "then", "do" or an arrow, is that instruction's condition when the aircraft will reach it: the
+-- level it is cleared to (its selected one) or one on the way there (`ATALT id FL280 SPD id M0.78`). Asked when it
+-- flies level, or away from it, or is at it already (the level may be meant as "to"), and when another level
+-- follows ("at FL280 -> FL200"). "KLM12 at FL280 and 250 knots" stays the level and the speed.
+function G:opening_at_level()
+  if not self:said("at") or #self.out == 0 then return end
+  local r = self:refs_in(1, #self.t + 1, "aircraft")[1]
+  if not (r and r.exists and r.b == self:skip_fillers(1)) then return end
+  local a = self:skip_fillers(r.e)
+  if self.t[a] and self.t[a].kind == "punct" and self.t[a].text == "," then a = self:skip_fillers(a + 1) end
+  -- (an arrow between two values is read as "from X to Y": "at from FL280 to FL200")
+  local from = self:word(a + 1, "from")
+  local q = self:word(a, "at") and self:quantities(a + 1, #self.t + 1)[1]
+  if not (q and q.b == (from and a + 2 or a + 1) and q.kind == "alt") then return end
+  local k, joined = self:skip_fillers(q.e), false
+  while self.t[k] and ((self.t[k].kind == "punct" and self.t[k].text:match("^[,>-]+$")) or self:word(k, "then do")
+      or (from and self:word(k, "to"))) do
+    k, joined = self:skip_fillers(k + 1), true
+  end
+  -- (a value straight after the level, "at FL280 250 knots", or after "and", is a second value said with the level)
+  if not self.t[k] or self.t[k].kind == "number" or self:word_in(q.e, k, "and") then return end
+  local nq = self:quantities(k, #self.t + 1)[1]
+  local f = handlers.format
+  local level = f.alt(self:cleared_level(q), q.fl)
+  local id = r.name
+  if nq and nq.b == k and nq.kind == "alt" and joined then
+    return self:need(string.format("What does 'at %s' mean before %s? Should %s wait until it reaches %s, or fly "
+      .. "to %s now?", level, f.alt(self:cleared_level(nq), nq.fl), id, level, f.alt(self:cleared_level(nq), nq.fl)))
+  end
+  if self.out[1] ~= "ALT " .. id .. " " .. level or #self.out < 2 then return end
+  for c = 2, #self.out do
+    local cmd, who = self.out[c]:match("^(%u+) (%S+)")
+    if not (who == id and (cmd == "SPD" or cmd == "VS" or cmd == "HDG")) then return end
+  end
+  local s, ft = self:state(id), self:cleared_level(q)
+  local at = s and s.alt_ft and s.sel_alt_ft and math.abs(ft - s.alt_ft) > 50
+    and (math.abs(ft - s.sel_alt_ft) <= 50 or (ft - s.alt_ft) * (ft - s.sel_alt_ft) < 0)
+  if not at then
+    return self:need(string.format("I have %s. Should %s fly to %s and then %s, or does '%s' mean to wait until it "
+      .. "reaches %s?", table.concat(self.out, " ; "), id, level, table.concat(self.out, " ; ", 2), "at " .. level, level))
+  end
+  for c = 2, #self.out do self.out[c - 1] = "ATALT " .. id .. " " .. level .. " " .. self.out[c] end
+  self.out[#self.out] = nil
+end
+
 -- A level condition the aircraft will not cross is asked about: ATALT runs its command when the aircraft's
 -- altitude crosses the level (Stack::test_conditions, as BlueSky's ATALT), never when it has passed it, so a
 -- level outside the way from the aircraft's altitude to the level it is cleared to (in this request, else its
@@ -18482,6 +18529,7 @@ function M.translate(text, world)
   end
   if not g.ask then g:restated_at_place() end
   if not g.ask then g:passing_level_flown() end
+  if not g.ask then g:opening_at_level() end
   if not g.ask then g:level_never_crossed() end
   if not g.ask then g:respectively() end
   if not g.ask then g:discretion_without_level() end

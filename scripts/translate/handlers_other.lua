@@ -4384,6 +4384,18 @@ return function(H, f, compass)
         return
       end
     end
+    -- ("CD: 2", "asas 0", "cd=5": a bare number straight after the switch's name, no "on" or "off" said, is no
+    -- switch position squawk can read: asked, naming it)
+    if spec.cmd == "ASAS" and self:on_off(s) < 0 then
+      local q = self:quantities(s.trig + 1, s.e)[1]
+      local k = s.trig + 1
+      while q and k < q.b and self.t[k].kind == "punct" do k = k + 1 end
+      if q and q.kind == "plain" and k == q.b then
+        self.ask = string.format("What does '%s' mean after '%s'? Conflict detection can be switched on or off "
+          .. "(ASAS ON/OFF), or given an interval, a look-ahead or a zone.", self:raw(q.b, q.e), self:raw(s.trig, s.trig + 1))
+        return
+      end
+    end
     -- "detection statebased", "state-based detection": CDMETHOD's method, which is on
     local method = spec.cmd == "ASAS" and self:find_word(s.b, s.e, "statebased state-based state")
     if method and method < s.e and (not self:word(method, "state") or self:word(method + 1, "based")) then

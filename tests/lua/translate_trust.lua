@@ -21221,3 +21221,41 @@ do
   if fix then fix:close() end
   if nav then nav:close() end
 end
+
+-- Cycle 64 (fhz16): a level after "at" opening the instruction, before a Mach, rate, speed or heading
+-- The level the aircraft is cleared to, or one on its way there, is the next instruction's condition (ATALT); for
+-- an aircraft flying level, or at the level already, whether it is the level to fly is asked. A second value after
+-- "and", or a bare value straight after the level, stays the level and the value.
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 90 FL350 280", "ALT KLM12 FL200", "CRE EZY45 A320 52.2 4.4 90 FL120 250",
+    "ALT EZY45 FL240", "CRE AFR1145 A319 53.1 4.0 200 FL300 270", "ALT AFR1145 FL200",
+    "CRE DLH4AX A321 52.1 5.2 300 FL180 270" })
+  check_eq(ex("KLM12 at FL280 mach .78"), "ATALT KLM12 FL280 SPD KLM12 M0.78")
+  check_eq(ex("KLM12 at FL200 vs -1500"), "ATALT KLM12 FL200 VS KLM12 -1500")
+  check_eq(ex("KLM12 at FL260 do vs -1000"), "ATALT KLM12 FL260 VS KLM12 -1000")
+  check_eq(ex("EZY45 at FL180, spd 280"), "ATALT EZY45 FL180 SPD EZY45 280")
+  check_eq(ex("EZY45 at FL240 then heading 120"), "ATALT EZY45 FL240 HDG EZY45 120")
+  check_eq(ex("AFR1145, at FL250, speed 250"), "ATALT AFR1145 FL250 SPD AFR1145 250")
+  check_eq(ex("AFR1145 at FL280 -> mach .76"), "ATALT AFR1145 FL280 SPD AFR1145 M0.76")
+  check_eq(ex("KLM12 at FL280 and 250 knots"), "ALT KLM12 FL280 ; SPD KLM12 250")
+  check_eq(ex("KLM12 at FL280 250 knots"), "ALT KLM12 FL280 ; SPD KLM12 250")
+  check_eq(ex("KLM12 climb at FL380"), "ALT KLM12 FL380")
+  check_eq(ex("DLH4AX at FL200"), "ALT DLH4AX FL200")
+  asked(ex("DLH4AX at FL200 mach .78"), "flying level: the level to fly or the condition")
+  asked(ex("DLH4AX at FL160, spd 250"), "flying level: the level to fly or the condition")
+  asked(ex("DLH4AX at FL180 then vs -1000"), "at the level already")
+  asked(ex("KLM12 at FL380 mach .80"), "a level it will not reach")
+  asked(ex("EZY45 at FL100 then spd 250"), "a level behind it")
+  asked(ex("AFR1145 at FL280 -> FL200"), "another level after the arrow")
+end
+
+-- Cycle 64 (fhz16): a bare number after conflict detection's name
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 90 FL350 280" })
+  asked(ex("CD: 2"), "a number no switch position")
+  asked(ex("cd=0"), "a number no switch position")
+  asked(ex("conflict detection 5"), "a number no switch position")
+  check_eq(ex("CD: on"), "ASAS ON")
+  check_eq(ex("cd every 2 s"), "DT ASAS 2")
+  check_eq(ex("CD: 5 nm"), "ASAS ON ; ZONER 5")
+end
