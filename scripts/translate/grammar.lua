@@ -2470,6 +2470,7 @@ G.MORE_DIRECTION = { high = { "alt", 1 }, higher = { "alt", 1 }, up = { "alt", 1
                      lower = { "alt", -1 }, down = { "alt", -1 }, fast = { "speed", 1 }, faster = { "speed", 1 },
                      quick = { "speed", 1 }, slow = { "speed", -1 }, slower = { "speed", -1 } }
 G.descent_words = set_of(lexicon.vertical_motion.down)
+G.ascent_words = set_of(lexicon.vertical_motion.up)
 local GAIN_LOSE = { gain = 1, lose = -1 }
 
 -- lexicon.value_names as a set (written_forms: a name glued to its value)
@@ -3695,6 +3696,22 @@ local function written_forms(text, world)
   -- ("2000 ft more or less", "20 kt less than ...": an estimate or a bound, left as typed; the amount is the whole
   -- number, a point, comma or apostrophe in it included: "2.000 ft more", "1,5 kt less"; "descend 3000 feet
   -- more": "more" after a word of a descent said straight before the amount is that much further down)
+  -- "descend 2000 more", "climb 1000 more", "descend 2000 lower", "climb 1000 higher": a bare amount in hundreds of
+  -- feet straight after a climb or descent verb, with "more" or the verb's own direction word after it, is that
+  -- many feet further ("descend 2000 feet more", read below); "climb 2000 lower" is left as typed
+  if low:find("more", 1, true) or low:find("lower", 1, true) or low:find("higher", 1, true) then
+    text = text:gsub("(%f[%a](%a+)%s+)(%d+)(%s+)(%a+)%f[%A]", function(verb_sp, verb, n, space, word)
+      verb, word = verb:lower(), word:lower()
+      local down, up = G.descent_words[verb], G.ascent_words[verb]
+      local amount = tonumber(n)
+      if not (down or up) or amount < 100 or amount % 100 ~= 0
+          or not (word == "more" or (down and word == "lower") or (up and word == "higher")) then
+        return nil
+      end
+      return verb_sp .. n .. " feet" .. space .. word
+    end)
+    low = text:lower()
+  end
   if low:find("more", 1, true) or low:find("less", 1, true) then
     -- "2000 feet more low", "20 knots more slow", "3000 feet more high": "more" and a word of the direction
     -- after an amount's unit is that much in that direction ("more" <- up/faster, "less" <- down/slower);

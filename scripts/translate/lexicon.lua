@@ -281,12 +281,12 @@ return {
         -- (and the Turkish of Turkey and Cyprus beyond "tamam": "peki", all right; "tamamdır", done; "sağol", thanks;
         -- "efendim", sir)
         "peki", "tamamdir", "sagol", "sagolun", "efendim",
-        -- the thanks, "please" and apologies of a research lab's other voices, romanised: Persian ("mersi",
-        -- "mamnoon", "lotfan", "bebakhshid"), Thai ("khob khun krub"), Indonesian ("maaf", "permisi", "tolong"),
-        -- Korean ("mianhamnida", "joesonghamnida"), Italian, Spanish and Portuguese ("scusi", "disculpe", "desculpa",
-        -- "com licenca"), German ("danke schön"), Polish ("przepraszam"), Greek ("signomi")
-        "mersi", "mamnoon", "mamnun", "motashakkeram", "lotfan", "bebakhshid", "bebakhshin", "krub", "khrub",
-        "khop", "maaf", "permisi", "tolong", "mianhamnida", "mianhae", "joesonghamnida",
+        -- the thanks, "please" and excuse-me of a research lab's other voices, romanised: Persian ("mersi",
+        -- "mamnoon", "lotfan"), Thai ("khob khun krub"), Indonesian ("permisi", "tolong"), Italian, Spanish and
+        -- Portuguese ("scusi", "disculpe", "desculpa", "com licenca"), German ("danke schön"), Polish ("przepraszam"),
+        -- Greek ("signomi"); the apologies of Persian, Indonesian and Korean ("bebakhshid", "maaf", "joesonghamnida")
+        -- are lexicon.discourse_words' sorry, a correction's mark as English "sorry" is
+        "mersi", "mamnoon", "mamnun", "motashakkeram", "lotfan", "krub", "khrub", "khop", "permisi", "tolong",
         "scusi", "scusa", "scusate", "disculpe", "disculpa", "perdone", "perdona", "desculpa", "desculpe", "licenca",
         "schon", "schoen", "przepraszam", "signomi", "syngnomi" },
     -- phrases of courtesy that hold a word which means something elsewhere ("when", "if"):

@@ -3204,8 +3204,12 @@ return function(intent, rule, words)
     return (g.t[k] == nil or g.t[k].kind == "punct" and g.t[k].text ~= "?")
       and (g:word(i - 1, "can may could shall should will") or g:preceded_by(i, 3, "@sim") or k > i + 1)
   end }
-  -- ("resume at 2x", "continue at double speed": the clock starts, at that rate)
+  -- ("resume at 2x", "continue at double speed": the clock starts, at that rate; "KLM12 heading 060 continue,
+  -- climb FL360": straight after an aircraft's value, with no mark or "then" between, it is that aircraft's and
+  -- no clock's)
   rule { "continue resume", "op", when = function(g, i)
+    local p = g.t[i - 1]
+    if p and (p.kind == "number" or p.number_word) and g:has_ref(1, #g.t + 1, "aircraft") then return false end
     return i + 1 > #g.t or g.t[i + 1].kind == "punct" or g:followed_by(i, 3, "@sim") or g:word(i + 1, "running and")
       or (g:word(i + 1, "at") and (g:word(i + 2, "@multipliers") or (g.t[i + 3] and g:word(i + 3, "x times"))))
   end }

@@ -21259,3 +21259,27 @@ do
   check_eq(ex("cd every 2 s"), "DT ASAS 2")
   check_eq(ex("CD: 5 nm"), "ASAS ON ; ZONER 5")
 end
+
+-- Cycle 64 (lead): a bare amount of feet with "more" (or the verb's own direction) after a climb or descent verb is
+-- that many feet further; "continue" straight after an aircraft's value is no clock's resume; an apology in
+-- Korean, Persian or Indonesian corrects as "sorry" does (it was ignored as courtesy, so both aircraft turned).
+do
+  local _, ex = scene({ "CRE CSN3377 A320 23 113 090 7000 250", "CRE CES2157 A320 31 120 090 FL300 280",
+    "CRE JJA1202 B738 33 126 090 FL300 280", "CRE JJA1206 B738 33.2 126.5 090 FL280 280" })
+  check_eq(ex("CSN3377 descend 2000 more"), "ALT CSN3377 5000")
+  check_eq(ex("CSN3377 descend 2000 lower"), "ALT CSN3377 5000")
+  check_eq(ex("CES2157 climb 1000 more"), "ALT CES2157 31000")
+  check_eq(ex("CES2157 climb 2000 higher"), "ALT CES2157 32000")
+  asked(ex("CES2157 climb 2000 lower"), "a climb said lower")
+  asked(ex("CSN3377 descend 20 more"), "20 is no amount of feet")
+  check_eq(ex("CSN3377 descend 2000"), "ALT CSN3377 2000")
+  asked(ex("CES2157 heading 060 continue, climb FL360"), "'continue' after a heading's value")
+  asked(ex("CES2157 heading 060 continue"), "'continue' after a heading's value")
+  check_eq(ex("continue"), "OP")
+  check_eq(ex("Jeju Air 1202 turn left heading 090... joesonghamnida, Jeju Air 1206 turn left heading 090"),
+    "HDG JJA1206 90 LEFT")
+  check_eq(ex("JJA1202 climb FL320, mianhamnida, FL330"), "ALT JJA1202 FL330")
+  check_eq(ex("JJA1202 descend FL200, maaf, FL210"), "ALT JJA1202 FL210")
+  check_eq(ex("mianhamnida, JJA1202 climb FL320"), "ALT JJA1202 FL320")
+  asked(ex("JJA1202 climb FL320 bebakhshid"), "an apology closing the request")
+end
