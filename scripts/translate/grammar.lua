@@ -9900,14 +9900,16 @@ function G:at_waypoint(s, spec)
         -- or below FL150"): its command first, from the words before the crossing. A level to be reached by
         -- the waypoint ("descend FL100 to be level by BIG") is the level cleared now and the AT constraint,
         -- as in BlueSky, where the constraint alone steers only an aircraft with VNAV on; with VNAV on, a
-        -- descent is the constraint alone (VNAV plans its top of descent to meet it)
+        -- descent is the constraint alone (VNAV plans its top of descent to meet it). With no climb or descent verb
+        -- ("be level FL240 by ALFA", "reach FL150 at BOMRA", "FL150 level by BOMRA") the level by the waypoint is
+        -- the constraint alone, as "cross ALFA at FL240" is: nothing is cleared now (cycle 65)
         local lead = be_at and be_at < r.b and be_at - 2 or r.b - 1
         local climb = level_by and now and now.alt_ft and level_by.value > now.alt_ft + 50
         local planned = level_by and not climb and now and now.vnav == true
         if spec and spec.handler and not planned and s.trig < lead and #self:quantities(s.b, lead) > 0 then
           self[spec.handler](self, { intent = s.intent, b = s.b, trig = s.trig, e = lead }, spec)
-        elseif level_by and not planned then
-          self:emit("ALT " .. ids[1] .. " " .. f.alt(level_by.value, level_by.fl))  -- ("be level FL240 by ALFA")
+        elseif level_by and not planned and s.intent ~= "infer" then
+          self:emit("ALT " .. ids[1] .. " " .. f.alt(level_by.value, level_by.fl))
         end
         -- "cross SUGOL at or above FL150", "at least 250 knots": BlueSky's AT sets the exact value, so a
         -- bound runs only after a yes to that exact constraint
@@ -18120,6 +18122,50 @@ G.clock_commands = { HOLD = true, OP = true, FF = true, DTMULT = true }
 G.time_units = { s = true, sec = true, secs = true, second = true, seconds = true, min = true, mins = true,
   minute = true, minutes = true, h = true, hr = true, hrs = true, hour = true, hours = true }
 
+-- "heading north minus 10 degrees", "fly west plus 20", "heading south-east less 15": a compass point and an offset
+-- said with "plus"/"minus"/"less"/"more" after it is that point's heading moved by the offset (350, 290, 120), never
+-- a turn from the present heading by the offset; read as "heading 350" (cycle 65). An offset over 90 degrees stays
+-- as said (asked).
+G.compass_offset_signs = { plus = 1, more = 1, minus = -1, less = -1 }
+G.compass_offset_numbers = { five = 5, ten = 10, fifteen = 15, twenty = 20, thirty = 30, forty = 40, fifty = 50 }
+function G.compass_offset(text)
+  local low = text:lower()
+  if not (low:find("plus", 1, true) or low:find("minus", 1, true) or low:find("less", 1, true)
+      or low:find("more", 1, true)) then
+    return text
+  end
+  if not (low:find("north", 1, true) or low:find("south", 1, true) or low:find("east", 1, true)
+      or low:find("west", 1, true)) then
+    return text
+  end
+  local found = {}
+  local function take(at, deg, sign, n, unit, e)
+    local sgn = G.compass_offset_signs[sign]
+    local v = tonumber(n) or G.compass_offset_numbers[n]
+    if not (deg and sgn and v and v >= 1 and v <= 90) then return end
+    local u = unit:gsub("^%s+", "")
+    local h = (deg + sgn * v) % 360
+    local prev = low:sub(1, at - 1):match("(%a+)%s*$")
+    found[#found + 1] = { at = at, e = (u == "" or u == "degrees" or u == "degree" or u == "deg") and e or e - #unit,
+      said = string.format("%s%03d", (prev == "heading" or prev == "hdg") and "" or "heading ", h == 0 and 360 or h) }
+  end
+  for at in low:gmatch("()%f[%a]%a") do
+    local p1, p2, sign, n, unit, e = low:match("^(%a+)[%- ](%a+)[%s,]+(%a+)%s+(%w+)(%s*%a*)()", at)
+    if p1 and lexicon.compass[p1 .. p2] then take(at, lexicon.compass[p1 .. p2], sign, n, unit, e) end
+    p1, sign, n, unit, e = low:match("^(%a+)[%s,]+(%a+)%s+(%w+)(%s*%a*)()", at)
+    if p1 and lexicon.compass[p1] then take(at, lexicon.compass[p1], sign, n, unit, e) end
+  end
+  if #found == 0 then return text end
+  table.sort(found, function(x, y) return x.at < y.at end)
+  local out, from = {}, 1
+  for _, f in ipairs(found) do
+    if f.at >= from then
+      out[#out + 1] = text:sub(from, f.at - 1) .. f.said
+      from = f.e
+    end
+  end
+  return table.concat(out) .. text:sub(from)
+end
 function M.translate(text, world)
   local said = text
   world = world or {}
@@ -18136,6 +18182,7 @@ function M.translate(text, world)
   local said_conflict = G.said_conflict(text)
   if said_conflict then return { commands = {}, ask = said_conflict } end
   text = G.spoken_triples_to(text)
+  text = G.compass_offset(text)
   -- ("three hundred & ten knots": an ampersand after "hundred" or "thousand" and before a number word is the "and"
   -- inside the number)
   if text:find("&", 1, true) then
@@ -18818,8 +18865,145 @@ function G.bare_hold_on(text)
 end
 M.bare_hold_on = G.bare_hold_on  -- (graph.lua asks it of the whole request, before clauses are split)
 
+-- "MVP on, only detection? no, both on", "LNAV on... VNAV too? yes, both": "both" said of switches, with one of a
+-- pair of lexicon-free switch words named before it (detection and resolution; LNAV and VNAV) and "on", "off", "of
+-- them", "please" or the end after it, is the pair named in full; it never stands for two aircraft here (with two
+-- callsigns of the traffic said in the request it is left as said)
+G.both_switch_pairs = {
+  { words = set_of({ "detection", "asas", "cd", "resolution", "mvp", "reso", "cr", "resolver" }),
+    said = "detection and resolution" },
+  { words = set_of({ "lnav", "vnav" }), said = "lnav and vnav" },
+}
+G.both_switch_after = set_of({ "on", "off", "please", "then", "now", "active", "enabled", "disabled" })
+function G.both_switch_said(before)
+  for _, pair in ipairs(G.both_switch_pairs) do
+    for w in before:gmatch("%a+") do
+      if pair.words[w] then return pair.said end
+    end
+  end
+  return nil
+end
+function G.both_switches(text, world)
+  local low = text:lower()
+  if not low:find("%f[%a]both%f[%A]") then return text end
+  local named = 0
+  for _, a in ipairs(world.aircraft or {}) do
+    if a.id and low:find("%f[%w]" .. a.id:lower():gsub("%p", "%%%0") .. "%f[%W]") then named = named + 1 end
+  end
+  if named >= 2 then return text end
+  local function fits(after)
+    local nx = after:match("^%s*(%a+)")
+    return not nx or G.both_switch_after[nx] ~= nil or after:match("^%s*[%.,;!%?]") ~= nil
+  end
+  text = text:gsub("()%f[%a][Bb][Oo][Tt][Hh]()(%s+[Oo][Ff]%s+[Tt][Hh][Ee][Mm]%f[%A])()", function(at, e, them, e2)
+    if not fits(low:sub(e2)) then return nil end
+    return G.both_switch_said(low:sub(1, at - 1)) or nil
+  end)
+  low = text:lower()
+  return (text:gsub("()%f[%a][Bb][Oo][Tt][Hh]%f[%A]()", function(at, e)
+    if not fits(low:sub(e)) then return nil end
+    return G.both_switch_said(low:sub(1, at - 1)) or nil
+  end))
+end
+
+-- "KLM12 reach FL200 then speed 260", "reach flight level 200, and then reduce 250", "reach FL200, after that heading
+-- 090": "reach" opening an instruction with a level straight after it and "then" / "after that" / "afterwards" after
+-- the level says the instruction after it waits for the level, as "reaching FL200 speed 260" does (ATALT). The
+-- level is the aircraft's to reach: when no command of the request clears it there and it is not on its way there
+-- (level, or cleared elsewhere), the request is asked (climb first, or wait?), never read as a command sent at once.
+-- ("when/if/once it reach FL200 then ..." is read as said: a condition, G:trailing_level's words)
+G.reach_not_after = set_of({ "when", "if", "once", "after", "until", "till", "it", "he", "she", "they", "you",
+  "will", "can", "could", "should", "must", "not", "and", "we", "i", "cannot", "would", "may", "might" })
+G.reach_then_words = { "and then", "then", "after that", "afterwards", "and after that" }
+function G.reach_then(text)
+  local low = text:lower()
+  if not low:find("reach", 1, true) then return nil end
+  for at in low:gmatch("()%f[%a]reach%s") do
+    local prev = low:sub(1, at - 1):match("(%a+)[%s,]*$")
+    if not (prev and G.reach_not_after[prev]) then
+      for _, w in ipairs(G.reach_then_words) do
+        local m, stop = low:match("^reach%s+([^,;%.!%?]-)[%s,]+" .. w:gsub(" ", "%%s+") .. "[%s,]+()", at)
+        local nwords = m and select(2, m:gsub("%S+", ""))
+        if m and m:find("%d") and nwords <= 4 then
+          local level = text:sub(at + 6, at + 5 + #m)
+          -- ("descend to reach FL200 then ...": the vertical verb's level, then the wait for it)
+          local verb = low:sub(1, at - 1):match("()%f[%a]to%s+$")
+          if verb and low:sub(1, verb - 1):match("%f[%a]%a+%s+$") then
+            return text:sub(1, verb - 1) .. level .. ", reaching " .. level .. ", " .. text:sub(stop)
+          end
+          return text:sub(1, at - 1) .. "reaching " .. level .. ", " .. text:sub(stop)
+        end
+      end
+    end
+  end
+  return nil
+end
+function G.reach_then_read(text, world)
+  local said = G.reach_then(text)
+  if not said then return nil end
+  local r = M.read_heard(said, world)
+  if r.ask or not r.commands then return r end
+  for _, c in ipairs(r.commands) do
+    local id, level = c:match("^ATALT (%S+) (%S+) ")
+    if id then
+      local ft = level:match("^FL(%d+)$") and tonumber(level:match("%d+")) * 100 or tonumber(level)
+      local cleared = false
+      for _, c2 in ipairs(r.commands) do
+        if c2 == "ALT " .. id .. " " .. level then cleared = true end
+      end
+      local a
+      for _, x in ipairs(world.aircraft or {}) do
+        if (x.id or ""):upper() == id:upper() then a = x end
+      end
+      if not cleared and ft and a and a.alt_ft and a.sel_alt_ft then
+        cleared = math.abs(ft - a.alt_ft) > 50
+          and (math.abs(ft - a.sel_alt_ft) <= 50 or (ft - a.alt_ft) * (ft - a.sel_alt_ft) < 0)
+      end
+      if not cleared then
+        local rest = c:match("^ATALT %S+ %S+ (.+)$")
+        return { commands = {}, ask = string.format("%s is not on its way to %s. Should it go to %s now and then "
+          .. "fly %s on reaching it, or only wait for %s before %s?", id, level, level, rest, level, rest) }
+      end
+    end
+  end
+  return r
+end
+
+-- "KLM12 descend FL200, ne, FL210", "heading 200 ne 210": "ne" between two values is "no" in Czech, Serbian and
+-- German speech and "yes" in Greek and Korean (Russian "не", "not", would keep the value before it): which value
+-- stands is unclear, asked naming both, unless a German word of lexicon.said_whole.german says the request is German
+-- ("hdg 100.. ne 110 bitte": the value after it; cycle 65). "NE" typed in capitals (northeast) is left as said.
+function G.ne_between(text)
+  if not text:find("%f[%a][Nn]e%f[%A]") then return nil end
+  local low = text:lower()
+  for at, e in text:gmatch("()%f[%a][Nn]e%f[%A]()") do
+    local before = low:sub(1, at - 1):match("([%w])[%s%.,;:!%-]*$")
+    local after = low:sub(e):match("^[%s%.,;:!%-]*(%w+)")
+    if before and before:match("%d") and (not after or after:match("^%d") or after:match("^fl%d*$")
+        or after == "flight" or after == "heading" or after == "speed" or after == "level" or after == "mach") then
+      if not G.german_said then
+        G.german_said = { nein = true, kurs = true, ja = true }
+        for k in pairs(lexicon.said_whole.german.words) do G.german_said[k:match("^%S+")] = true end
+      end
+      for w in low:gmatch("%a+") do
+        if w ~= "ne" and G.german_said[w] then return nil end
+      end
+      local v1 = text:sub(1, at - 1):match("([^%s%.,;:!%-]+)[%s%.,;:!%-]*$")
+      local v2 = text:sub(e):match("^[%s%.,;:!%-]*([^%s,%.;]+)")
+      if not v2 then
+        return string.format("What does 'ne' after %s mean: no (taken back) or yes? Please say the instruction again.", v1)
+      end
+      return string.format("What does 'ne' mean between %s and %s: no (the value after it stands) or yes? Please say "
+        .. "the instruction again with the value to fly.", v1, v2)
+    end
+  end
+  return nil
+end
 function M.translate(text, world)
   text = G.capitals_read(text, world or {})
+  local ne = G.ne_between(text)
+  if ne then return { commands = {}, ask = ne } end
+  text = G.both_switches(text, world or {})
   local unheard = G.unheard_mark(text)
   if unheard then
     return { commands = {}, ask = string.format("Part of the request was not heard ('%s'). Please say it again.",
@@ -18828,6 +19012,7 @@ function M.translate(text, world)
   local first = G.said_first(text, world or {})
   if first then return first end
   local summed = G.summary_closed(text, world or {}) or G.present_told(text, world or {})
+    or G.reach_then_read(text, world or {})
   if summed then return summed end
   local r = M.read_heard(text, world)
   if not r.ask then return r end

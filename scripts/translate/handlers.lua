@@ -4545,6 +4545,27 @@ function m:at_altitude(s)
     if not self:way_fits(way, ids[1], level_ft) then return nil end
     self:explain(way - 3, way + 1)
   end
+  -- ("KLM12 at FL280 speed 250" with KLM12 level at FL280: "at" and the level it flies, no condition word before
+  -- it, describe where it is: the instruction runs now; leaving that level for another, whether it should wait is
+  -- unclear, asked; cycle 65)
+  local st = self:state(ids[1])
+  local here = not groupwise and not fl_digits and q.kind == "alt" and self:cleared_level(q)
+  local opens = a == 1 or self.t[a - 1].kind == "punct" or #self:refs_in(a - 1, a, "aircraft") > 0
+  if here and opens and self:word(a, "at") and not self:word_in(math.max(b, a - 2), a, "@condition") and st and st.alt_ft
+      and math.abs(st.alt_ft - here) <= 50 then
+    local away = st.sel_alt_ft and math.abs(st.sel_alt_ft - st.alt_ft) > 50
+    for _, c in ipairs(self.out) do
+      if c:match("^ALT " .. ids[1]:gsub("%p", "%%%0") .. " ") then away = true end
+    end
+    if away then
+      self.ask = string.format("%s is at %s now and leaving it: should what follows '%s' run now, or wait (for "
+        .. "which level)?", ids[1], f.alt(here, q.fl), "at " .. f.alt(here, q.fl))
+      return nil
+    end
+    self:mark_used(q.b, q.e)
+    self:explain(a, q.e)
+    return nil
+  end
   self:mark_used(q.b, q.e)  -- the condition's altitude is not the instruction's value
   if noun then self:explain(noun, noun + 1) end
   if groupwise then return "ATALT " .. ids[1] .. " " .. f.alt(groupwise, true) end

@@ -1399,7 +1399,7 @@ return function(H, f, compass)
           letters, self:raw(i, k)))
       end
     end
-    local best, best_score, best_word, best_span
+    local best, best_score, best_word, best_span, best_known
     for i = b, math.min(e, #self.t + 1) - 1 do
       local t = self.t[i]
       if not self.u:used(i) and t.kind == "word" and not t.number_word and #t.text >= 2
@@ -1415,6 +1415,9 @@ return function(H, f, compass)
           if idx and (not best or score > best_score
               or (score == best_score and c[2] == 2 and best_span[2] == best_span[1] + 1)) then
             best, best_score, best_word, best_span = names[idx], score, c[1], { i, i + c[2] }
+            -- ("skip APDAK, take it out of the route" with AVAVA on the route: an English word squawk knows, "of",
+            -- "out", "take", is never taken for a name it only sounds like; confirmed, cycle 65)
+            best_known = c[2] == 1 and self:known_word(i)
           end
         end
       end
@@ -1426,7 +1429,8 @@ return function(H, f, compass)
     self.ask = asked
     if navaid then return self:place_by_name(b, e, a) or navaid end
     -- (a typed name with two letters swapped is confirmed below, never taken as sounding the same)
-    if best and best_score >= L.waypoint_confirm and not swapped_letters(best_word, best:lower()) then
+    if best and best_score >= L.waypoint_confirm and not swapped_letters(best_word, best:lower())
+        and not (best_known and best_word ~= best:lower()) then
       self:explain_place(best_span[1], best_span[2])
       return best
     end
@@ -1722,6 +1726,26 @@ return function(H, f, compass)
         while k < e and self.t[k].text ~= several.phrase:match("^%S+") do k = k + 1 end
         self:need(string.format("Which place is '%s': the %s airport or the %s navaid?", self:raw(k, k + n), airport,
           table.concat(several.ids, " or ")))
+      elseif several and not large and self.going_direct then
+        -- ("direct Lagos": DNMM, and the LAG and LOS VORs named LAGOS: the one of them the aircraft's route or
+        -- destination holds, else asked, naming them all; cycle 65)
+        local held = {}
+        for _, r in ipairs(a.route or {}) do held[r:upper()] = true end
+        if a.dest and a.dest ~= "" then held[a.dest:upper()] = true end
+        local one
+        for _, id in ipairs(several.ids) do
+          if held[id:upper()] then one = one == nil and id or false end
+        end
+        if one and not held[airport:upper()] then
+          self.ask = unasked
+          return one
+        end
+        if not held[airport:upper()] then
+          local n, k = select(2, several.phrase:gsub("%S+", "")), b
+          while k < e and self.t[k].text ~= several.phrase:match("^%S+") do k = k + 1 end
+          self:need(string.format("Which place is '%s': the %s airport or the %s navaid?", self:raw(k, k + n),
+            airport, table.concat(several.ids, " or ")))
+        end
       end
     end
     if navaid then
@@ -2661,7 +2685,10 @@ return function(H, f, compass)
   function m:direct(s)
     local ids = self:acids(s)
     if #ids == 0 then return self:need("Which aircraft should fly direct? Please give its callsign.") end
+    -- (self.going_direct: a city's name several navaids and its airport bear is asked, m:place_by_name)
+    self.going_direct = true
     for _, id in ipairs(ids) do self:direct_one(s, id) end
+    self.going_direct = nil
   end
 
   -- The clause adding the place gone to (waypoint ref r, named wp) to the route, said after it: a comma or "and"
@@ -3781,6 +3808,21 @@ return function(H, f, compass)
     if not id then return end
     -- ("SEREN delete from its route": a waypoint of the scene said before the verb and none after it is the one
     -- meant; the words after the verb are not searched for a sound-alike)
+    -- ("skip APDAK, take it out of the route", "delete ARTIP, remove it from the route": "it", "that" or "this"
+    -- straight after the verb (or its particle), when this request removed one waypoint of this aircraft's route
+    -- before, is that one said again: removed once, cycle 65)
+    local p = self:word(s.trig + 1, "out off") and s.trig + 2 or s.trig + 1
+    if self:word(p, "it that this") and #self:refs_in(s.trig + 1, s.e, "waypoint") == 0 then
+      local before
+      for _, c in ipairs(self.out) do
+        local who, name = c:match("^DELWPT (%S+) (%S+)$")
+        if who == id then before = before == nil and name or false end
+      end
+      if before then
+        self:explain(s.trig, s.e)
+        return
+      end
+    end
     local said_before = s.b < s.trig and #self:refs_in(s.trig + 1, s.e, "waypoint") == 0
       and self:waypoint(s.b, s.trig, id)
     local point

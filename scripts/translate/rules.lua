@@ -1825,6 +1825,11 @@ return function(intent, rule, words)
              if g:word(k, "@route_nouns") then
                local clause = true
                for x = math.min(i, k), math.max(i, k) do clause = clause and g.t[x].text ~= "," end
+               -- ("remove it from the route", "take that off the route": a thing taken out of the route, named by
+               -- a pronoun only, is no whole route; asked)
+               if clause and k > i and g:word_in(i + 1, k, "from off out") and g:word_in(i + 1, k, "it that this") then
+                 return false
+               end
                if clause then return true end
              end
            end

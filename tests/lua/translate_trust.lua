@@ -3982,7 +3982,8 @@ do
   local both = "ALT KLM12 FL240 ; AT KLM12 ALFA ALT FL240"
   check_eq(ex("KLM12 descend FL240 level by ALFA"), both)
   check_eq(ex("KLM12 descend to reach FL240 by ALFA"), both)
-  check_eq(ex("KLM12, be level FL240 by ALFA"), both)
+  -- (cycle 65: with no climb or descent verb, the level by the waypoint is the constraint alone)
+  check_eq(ex("KLM12, be level FL240 by ALFA"), "AT KLM12 ALFA ALT FL240")
   check_eq(ex("KLM12 descend FL240 to be level at ALFA"), both)
   check_eq(ex("klm12 desc FL240 to be lvl by ALFA"), both)
   check_eq(ex("KLM12 descend FL240, to be level by ALFA"), both)
@@ -6578,7 +6579,7 @@ end
 do
   local _, ex = scene({ "CRE CMP40 B738 9.4 -79.0 210 FL260 290", "DEFWPT KARIN 8.9 -79.3", "DEFWPT TOMAS 9.9 -79.9",
     "ADDWPT CMP40 KARIN" })
-  check_eq(ex("CMP40 be level flight level one seven zero over KARIN"), "ALT CMP40 FL170 ; AT CMP40 KARIN ALT FL170")
+  check_eq(ex("CMP40 be level flight level one seven zero over KARIN"), "AT CMP40 KARIN ALT FL170")  -- (cycle 65)
   check_eq(ex("CMP40 descend to reach FL150 overhead KARIN"), "ALT CMP40 FL150 ; AT CMP40 KARIN ALT FL150")
   asked(ex("CMP40 be level FL170 over TOMAS"), "over a waypoint off the route")
 end
@@ -20801,7 +20802,8 @@ do
   asked(ex("AZA61, non turn right heading 120"), "Italian 'non' before the verb")
   asked(ex("AFL3 ne descend FL90"), "Russian 'ne' before the verb")
   asked(ex("AFL3 ne reduce speed 250"), "Russian 'ne' before the verb")
-  check_eq(ex("AFL3 heading 200 ne 210"), "HDG AFL3 210")
+  -- (cycle 65: "ne" between two values is "no" or "yes" by language, asked outside a German request)
+  asked(ex("AFL3 heading 200 ne 210"), "'ne' between two values")
   check_eq(ex("AZA61 climb FL330 non-stop"), "ALT AZA61 FL330")
   check_eq(ex("AZA61 climb FL330"), "ALT AZA61 FL330")
 end
