@@ -18923,8 +18923,10 @@ function G.reach_then(text)
     if not (prev and G.reach_not_after[prev]) then
       for _, w in ipairs(G.reach_then_words) do
         local m, stop = low:match("^reach%s+([^,;%.!%?]-)[%s,]+" .. w:gsub(" ", "%%s+") .. "[%s,]+()", at)
-        local nwords = m and select(2, m:gsub("%S+", ""))
-        if m and m:find("%d") and nwords <= 4 then
+        -- (a level only: "FL200", "flight level 200", "8000 feet", "altitude 8000"; "Reach 871's route" is a callsign)
+        local level = m and (m:match("^fl%s?%d%d%d?$") or m:match("^flight%s+level%s+%d%d%d?$")
+          or m:match("^%d%d%d%d%d?%s*f?e?e?t?$") or m:match("^%d%d%d%d%d?%s*ft$") or m:match("^altitude%s+%d%d%d%d%d?$"))
+        if level then
           local level = text:sub(at + 6, at + 5 + #m)
           -- ("descend to reach FL200 then ...": the vertical verb's level, then the wait for it)
           local verb = low:sub(1, at - 1):match("()%f[%a]to%s+$")
@@ -18972,14 +18974,15 @@ end
 -- "KLM12 descend FL200, ne, FL210", "heading 200 ne 210": "ne" between two values is "no" in Czech, Serbian and
 -- German speech and "yes" in Greek and Korean (Russian "не", "not", would keep the value before it): which value
 -- stands is unclear, asked naming both, unless a German word of lexicon.said_whole.german says the request is German
--- ("hdg 100.. ne 110 bitte": the value after it; cycle 65). "NE" typed in capitals (northeast) is left as said.
+-- ("hdg 100.. ne 110 bitte": the value after it; cycle 65). "NE" typed in capitals (northeast) is left as said; so
+-- is "ne" closing the request, "..., speed 300, ne" (a Korean "yes", a German "right?").
 function G.ne_between(text)
   if not text:find("%f[%a][Nn]e%f[%A]") then return nil end
   local low = text:lower()
   for at, e in text:gmatch("()%f[%a][Nn]e%f[%A]()") do
     local before = low:sub(1, at - 1):match("([%w])[%s%.,;:!%-]*$")
     local after = low:sub(e):match("^[%s%.,;:!%-]*(%w+)")
-    if before and before:match("%d") and (not after or after:match("^%d") or after:match("^fl%d*$")
+    if before and before:match("%d") and after and (after:match("^%d") or after:match("^fl%d*$")
         or after == "flight" or after == "heading" or after == "speed" or after == "level" or after == "mach") then
       if not G.german_said then
         G.german_said = { nein = true, kurs = true, ja = true }
@@ -18990,9 +18993,6 @@ function G.ne_between(text)
       end
       local v1 = text:sub(1, at - 1):match("([^%s%.,;:!%-]+)[%s%.,;:!%-]*$")
       local v2 = text:sub(e):match("^[%s%.,;:!%-]*([^%s,%.;]+)")
-      if not v2 then
-        return string.format("What does 'ne' after %s mean: no (taken back) or yes? Please say the instruction again.", v1)
-      end
       return string.format("What does 'ne' mean between %s and %s: no (the value after it stands) or yes? Please say "
         .. "the instruction again with the value to fly.", v1, v2)
     end

@@ -1400,6 +1400,11 @@ return function(H, f, compass)
       end
     end
     local best, best_score, best_word, best_span, best_known
+    local slot_first = b
+    while slot_first < e and self.t[slot_first] and (self.t[slot_first].kind == "punct" or self.t[slot_first].filler
+        or self:word(slot_first, "to the direct via towards toward proceed fly go")) do
+      slot_first = slot_first + 1
+    end
     for i = b, math.min(e, #self.t + 1) - 1 do
       local t = self.t[i]
       if not self.u:used(i) and t.kind == "word" and not t.number_word and #t.text >= 2
@@ -1417,7 +1422,8 @@ return function(H, f, compass)
             best, best_score, best_word, best_span = names[idx], score, c[1], { i, i + c[2] }
             -- ("skip APDAK, take it out of the route" with AVAVA on the route: an English word squawk knows, "of",
             -- "out", "take", is never taken for a name it only sounds like; confirmed, cycle 65)
-            best_known = c[2] == 1 and self:known_word(i)
+            -- (a known word where the name is said, first in the slot, "direct alpine" for ALPNE, stays heard)
+            best_known = c[2] == 1 and self:known_word(i) and (i ~= slot_first or #t.text <= 2)
           end
         end
       end
@@ -1690,6 +1696,15 @@ return function(H, f, compass)
   -- (true: a place a distance or a waypoint condition is measured from, "30 miles from Frankfurt") makes a
   -- name several navaids there bear beside the airport asked about too, naming them all; `large` (true) reads a
   -- name a large airport and a navaid near both bear as the airport (a heading toward it).
+  -- True when the airport's own navdata name holds the words `phrase` (EDDF "FRANKFURT MAIN" for "frankfurt")
+  local function G_airport_bears(self, phrase, airport, a)
+    local with = self.world.airports_with_words
+    if not (with and a and a.lat) then return true end
+    for _, id in ipairs(with(phrase, a.lat, a.lon, L.navaid_range_nm)) do
+      if id:upper() == airport:upper() then return true end
+    end
+    return false
+  end
   function m:place_by_name(b, e, a, reference, large)
     local near = a and { a } or self.fleet
     -- (the longer name first: "direct Zurich East" is the ZUE VOR, not Zurich airport and a word more)
@@ -1726,9 +1741,10 @@ return function(H, f, compass)
         while k < e and self.t[k].text ~= several.phrase:match("^%S+") do k = k + 1 end
         self:need(string.format("Which place is '%s': the %s airport or the %s navaid?", self:raw(k, k + n), airport,
           table.concat(several.ids, " or ")))
-      elseif several and not large and self.going_direct then
-        -- ("direct Lagos": DNMM, and the LAG and LOS VORs named LAGOS: the one of them the aircraft's route or
-        -- destination holds, else asked, naming them all; cycle 65)
+      elseif several and not large and self.going_direct and not G_airport_bears(self, several.phrase, airport, a) then
+        -- ("direct Lagos": DNMM "MURTALA MUHAMMED", and the LAG and LOS VORs named LAGOS: the city's name, which
+        -- the airport's own name does not hold, is the one of them the aircraft's route or destination holds,
+        -- else asked, naming them all; "direct Frankfurt", EDDF "FRANKFURT MAIN", stays the airport; cycle 65)
         local held = {}
         for _, r in ipairs(a.route or {}) do held[r:upper()] = true end
         if a.dest and a.dest ~= "" then held[a.dest:upper()] = true end

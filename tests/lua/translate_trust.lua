@@ -21285,3 +21285,90 @@ do
   check_eq(ex("mianhamnida, JJA1202 climb FL320"), "ALT JJA1202 FL320")
   asked(ex("JJA1202 climb FL320 bebakhshid"), "an apology closing the request")
 end
+
+-- Cycle 65 (fhz17): "both" after a switch of a pair is the pair (detection and resolution; LNAV and VNAV), never
+-- dropped beside the one said first
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 90 FL250 280" })
+  check_eq(ex("MVP on, only detection? no, both on"), "RESO MVP ; ASAS ON")
+  check_eq(ex("detection only? no, both on"), "ASAS ON ; RESO MVP")
+  check_eq(ex("switch MVP on, just detection? no, both of them"), "RESO MVP ; ASAS ON")
+  check_eq(ex("KLM12 LNAV on, no, both"), "LNAV KLM12 ON ; VNAV KLM12 ON")
+end
+
+-- Cycle 65 (fhz17): "reach LEVEL then X" waits for the level (ATALT); not on the way there, asked
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 90 FL150 280", "CRE EZY45 A320 53 4 90 FL150 280", "ALT EZY45 FL200" })
+  asked(ex("KLM12 reach FL200 then speed 260"), "a level it is not cleared to")
+  asked(ex("KLM12 reach flight level 200, and then turn left heading 030"), "a level it is not cleared to")
+  check_eq(ex("EZY45 reach FL200 then speed 260"), "ATALT EZY45 FL200 SPD EZY45 260")
+  check_eq(ex("EZY45 reach FL200, after that heading 120"), "ATALT EZY45 FL200 HDG EZY45 120")
+  check_eq(ex("KLM12 climb to reach FL200 then reduce 250"), "ALT KLM12 FL200 ; ATALT KLM12 FL200 SPD KLM12 250")
+  check_eq(ex("KLM12 climb FL200, reach FL200 then speed 260"), "ALT KLM12 FL200 ; ATALT KLM12 FL200 SPD KLM12 260")
+end
+
+-- Cycle 65 (fhz17): a level to be reached by a waypoint said with no climb or descent verb is the constraint alone
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 90 FL250 280", "DEFWPT TESTA 52.1 4.6", "ADDWPT KLM12 TESTA" })
+  check_eq(ex("KLM12 be level FL150 at TESTA"), "AT KLM12 TESTA ALT FL150")
+  check_eq(ex("KLM12 reach FL160 by TESTA"), "AT KLM12 TESTA ALT FL160")
+  check_eq(ex("KLM12 level FL170 by TESTA"), "AT KLM12 TESTA ALT FL170")
+  check_eq(ex("KLM12 descend to be level FL150 at TESTA"), "ALT KLM12 FL150 ; AT KLM12 TESTA ALT FL150")
+end
+
+-- Cycle 65 (fhz17): "it" after a waypoint removed is that waypoint said again; an English word is never a waypoint
+-- it only sounds like ("of" for AVAVA); "remove it from the route" with nothing before it is no whole route
+do
+  local _, ex = scene({ "CRE SAA31 A320 -26.2 28.3 120 FL250 280", "DEFWPT TESTB -26.5 29.0", "DEFWPT AVAVA -26.6 29.3",
+    "ADDWPT SAA31 TESTB", "ADDWPT SAA31 AVAVA" })
+  check_eq(ex("SAA31 skip TESTB, take it out of the route"), "DELWPT SAA31 TESTB")
+  check_eq(ex("SAA31 skip TESTB, remove it from the route"), "DELWPT SAA31 TESTB")
+  check_eq(ex("SAA31 delete TESTB, take that one off the route"), "DELWPT SAA31 TESTB")
+  asked(ex("SAA31 remove it from the route"), "'it' with no waypoint before")
+  asked(ex("SAA31 direct of"), "an English word sounding like AVAVA")
+  check_eq(ex("SAA31 clear the route"), "DELRTE SAA31")
+end
+
+-- Cycle 65 (fhz17): a compass point with "plus"/"minus"/"less" and degrees is that point's heading moved
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 90 FL250 280" })
+  check_eq(ex("KLM12 heading north minus 10 degrees"), "HDG KLM12 350")
+  check_eq(ex("KLM12 heading west plus 20"), "HDG KLM12 290")
+  check_eq(ex("KLM12 fly north less ten"), "HDG KLM12 350")
+  check_eq(ex("KLM12 heading south-east minus 15 degrees"), "HDG KLM12 120")
+  check_eq(ex("KLM12 heading north, minus 10 degrees, and climb FL300"), "HDG KLM12 350 ; ALT KLM12 FL300")
+end
+
+-- Cycle 65 (fhz17): "at LEVEL" opening an instruction, for an aircraft level at it, is where it flies: now; leaving
+-- it, asked
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 90 FL280 280", "CRE EZY45 A320 53 4 90 FL280 280", "ALT EZY45 FL200" })
+  check_eq(ex("KLM12 at FL280 speed 250"), "SPD KLM12 250")
+  check_eq(ex("KLM12 at FL280 reduce speed 240"), "SPD KLM12 240")
+  check_eq(ex("KLM12 at flight level 280 turn left heading 020"), "HDG KLM12 20 LEFT")
+  asked(ex("EZY45 at FL280 speed 250"), "leaving the level")
+  check_eq(ex("KLM12 at FL300 speed 250"), "ATALT KLM12 FL300 SPD KLM12 250")
+end
+
+-- Cycle 65 (fhz17): "direct" to a city's name that its airport and several navaids bear: the one the route or
+-- destination holds, else asked (never the airport silently)
+do
+  local nav, nex = navscene({ "CRE NGA1 B738 6.0 3.0 090 FL250 280", "CRE NGA2 B738 6.2 3.1 090 FL250 280",
+    "ADDWPT NGA2 LAG" }, "a city's several navaids")
+  if nav then
+    asked(nex("NGA1 direct Lagos"), "DNMM, LAG or LOS")
+    asked(nex("NGA1 proceed direct to Lagos"), "DNMM, LAG or LOS")
+    check_eq(nex("NGA2 direct Lagos"), "DIRECT NGA2 LAG")
+    check_eq(nex("NGA1 direct Lagos airport"), "ADDWPT NGA1 DNMM ; DIRECT NGA1 DNMM")
+  end
+end
+
+-- Cycle 65 (fhz17): "ne" between two values (no in Czech and German, yes in Greek and Korean) asks, unless the
+-- request is German
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 90 FL250 280" })
+  asked(ex("KLM12 descend FL200, ne, FL210"), "'ne' between two levels")
+  asked(ex("KLM12 speed 250 ne 260"), "'ne' between two speeds")
+  check_eq(ex("KLM12 kurs 300.. ne 310 bitte"), "HDG KLM12 310")
+  check_eq(ex("KLM12 descend FL200, nein, FL210"), "ALT KLM12 FL210")
+end
