@@ -3565,9 +3565,21 @@ function m:settle_callsigns()
     local a = r.kind == "aircraft" and r.exists and listed and t and t.kind == "number"
       and t.text:match("^%d+$") and not self.u:used(x) and not (nx and nx.b == x) and airline_digits(r.name)
     local id = a and a ~= "" and (a .. t.text):upper()
-    if id and id ~= r.name:upper() and self:state(id) and not L.value_units[self.words[x + 1] or ""] then
-      table.insert(self.refs, k + 1, { kind = "aircraft", name = self:state(id).id, b = x, e = x + 1, exists = true })
-      self:mark_used(x, x + 1)
+    local e = x + 1
+    -- (said as words, "Shamrock one zero four and one four zero, descend ...": the digits of the plain number said
+    -- there, no unit after it, as typed ones are)
+    if not id and r.kind == "aircraft" and r.exists and t and t.kind == "word" and not self.u:used(x)
+        and not (nx and nx.b == x) and airline_digits(r.name) ~= ""
+        and (self:word(r.e, "and") or (self.t[r.e] and self.t[r.e].text == ",")) then
+      local q = self.u:quantities(x, math.min(#self.t + 1, x + 8))[1]
+      if q and q.b == x and q.kind == "plain" and q.number and q.number.digits:match("^%d+$")
+          and (self:word(r.e, "and") or both_after(q.e - 1)) then
+        id, e = (airline_digits(r.name) .. q.number.digits):upper(), q.e
+      end
+    end
+    if id and id ~= r.name:upper() and self:state(id) and not L.value_units[self.words[e] or ""] then
+      table.insert(self.refs, k + 1, { kind = "aircraft", name = self:state(id).id, b = x, e = e, exists = true })
+      self:mark_used(x, e)
     end
   end
   for _, r in ipairs(self.refs) do
