@@ -3528,6 +3528,9 @@ end
 --    with them are no part of it (its airline's name heard from them or not).
 local QUESTION_WORDS = { where = true, wheres = true, ["where's"] = true, is = true, what = true, whats = true,
                          ["what's"] = true, show = true, me = true, tell = true }
+-- (the words a flight number said as words opens with: m:settle_callsigns)
+local SPOKEN_DIGITS = { zero = true, one = true, two = true, three = true, four = true, five = true, six = true,
+  seven = true, eight = true, nine = true, niner = true, oh = true, tree = true, fife = true }
 function m:settle_callsigns()
   -- ("if 721 reaches FL270 then heading 060", "unless 721 is at FL270 ..."): a word that opens a condition
   -- (G.condition_openers) that the matcher took into an aircraft's callsign before its digits is no part of it: left
@@ -3568,7 +3571,8 @@ function m:settle_callsigns()
     local e = x + 1
     -- (said as words, "Shamrock one zero four and one four zero, descend ...": the digits of the plain number said
     -- there, no unit after it, as typed ones are)
-    if not id and r.kind == "aircraft" and r.exists and t and t.kind == "word" and not self.u:used(x)
+    if not id and r.kind == "aircraft" and r.exists and t and t.kind == "word" and SPOKEN_DIGITS[t.text]
+        and not self.u:used(x)
         and not (nx and nx.b == x) and airline_digits(r.name) ~= ""
         and (self:word(r.e, "and") or (self.t[r.e] and self.t[r.e].text == ",")) then
       local q = self.u:quantities(x, math.min(#self.t + 1, x + 8))[1]
