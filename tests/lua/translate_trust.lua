@@ -21401,3 +21401,11 @@ do
   check_eq(ex("KLM12 move down to FL90 same location"), "MOVE KLM12 52 4 FL90")
   check_eq(ex("move KLM12 up to FL310"), "ALT KLM12 FL310")
 end
+
+-- Cycle 65 (f232): a registration spelled from "Echo" (a command's name), a comma and an instruction: one request
+-- to that aircraft, never ECHO and a clause with no aircraft
+do
+  local _, ex = scene({ "CRE ECXYZ C172 52 4 90 3000 100", "CRE KLM12 A320 53 4 90 FL250 280" })
+  check_eq(ex("Echo Charlie X-ray Yankee Zulu, speed eighty knots"), "SPD ECXYZ 80")
+  check_eq(ex("Echo Charlie X-ray Yankee Zulu, turn right heading 120"), "HDG ECXYZ 120 RIGHT")
+end
