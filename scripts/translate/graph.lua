@@ -205,6 +205,7 @@ end
 -- up a bit, run it at twice real time" is English: no argument is a pronoun).
 local LINKS = { ["then"] = true, ["and"] = true }
 local PRONOUNS = require("translate.lexicon").pronouns
+local PHONETIC = require("translate.lexicon").phonetic
 -- a clause opening with "at" or a condition word ("at 30 minutes, pause") is English: a time or a
 -- condition for the clause after it, no AT/AFTER/BEFORE command of its own
 local CONDITION_OPENERS = { at = true }
@@ -224,6 +225,9 @@ function M.command_clauses(text)
     local cmd = first and nodes.canonical_name(first:gsub("[%p]+$", ""))
     if not cmd or CONDITION_OPENERS[first:lower()] then return nil end
     local arg = (rest:match("^(%S+)") or ""):lower():gsub("[%p]+$", "")
+    -- ("Echo India Alpha Bravo Charlie, speed ninety knots": a letter of the spelling alphabet that names a command,
+    -- another letter after it, spells a callsign: English, no ECHO)
+    if PHONETIC[first:lower()] and PHONETIC[arg] then return nil end
     if (prev == "CRE" or prev == "MOVE") and CREATION_FIELDS[cmd] and arg ~= created then return nil end
     prev, created = cmd, arg
     if PRONOUNS[(rest:match("^(%S+)") or ""):lower():gsub("[%p]+$", "")] then return nil end

@@ -3528,6 +3528,9 @@ end
 --    with them are no part of it (its airline's name heard from them or not).
 local QUESTION_WORDS = { where = true, wheres = true, ["where's"] = true, is = true, what = true, whats = true,
                          ["what's"] = true, show = true, me = true, tell = true }
+-- (the words a flight number said as words opens with: m:settle_callsigns)
+local SPOKEN_DIGITS = { zero = true, one = true, two = true, three = true, four = true, five = true, six = true,
+  seven = true, eight = true, nine = true, niner = true, oh = true, tree = true, fife = true }
 function m:settle_callsigns()
   -- ("if 721 reaches FL270 then heading 060", "unless 721 is at FL270 ..."): a word that opens a condition
   -- (G.condition_openers) that the matcher took into an aircraft's callsign before its digits is no part of it: left
@@ -3565,9 +3568,22 @@ function m:settle_callsigns()
     local a = r.kind == "aircraft" and r.exists and listed and t and t.kind == "number"
       and t.text:match("^%d+$") and not self.u:used(x) and not (nx and nx.b == x) and airline_digits(r.name)
     local id = a and a ~= "" and (a .. t.text):upper()
-    if id and id ~= r.name:upper() and self:state(id) and not L.value_units[self.words[x + 1] or ""] then
-      table.insert(self.refs, k + 1, { kind = "aircraft", name = self:state(id).id, b = x, e = x + 1, exists = true })
-      self:mark_used(x, x + 1)
+    local e = x + 1
+    -- (said as words, "Shamrock one zero four and one four zero, descend ...": the digits of the plain number said
+    -- there, no unit after it, as typed ones are)
+    if not id and r.kind == "aircraft" and r.exists and t and t.kind == "word" and SPOKEN_DIGITS[t.text]
+        and not self.u:used(x)
+        and not (nx and nx.b == x) and airline_digits(r.name) ~= ""
+        and (self:word(r.e, "and") or (self.t[r.e] and self.t[r.e].text == ",")) then
+      local q = self.u:quantities(x, math.min(#self.t + 1, x + 8))[1]
+      if q and q.b == x and q.kind == "plain" and q.number and q.number.digits:match("^%d+$")
+          and (self:word(r.e, "and") or both_after(q.e - 1)) then
+        id, e = (airline_digits(r.name) .. q.number.digits):upper(), q.e
+      end
+    end
+    if id and id ~= r.name:upper() and self:state(id) and not L.value_units[self.words[e] or ""] then
+      table.insert(self.refs, k + 1, { kind = "aircraft", name = self:state(id).id, b = x, e = e, exists = true })
+      self:mark_used(x, e)
     end
   end
   for _, r in ipairs(self.refs) do

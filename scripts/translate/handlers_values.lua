@@ -1388,6 +1388,14 @@ return function(H, f, wrap, compass)
           f.num(abs.value), f.num(wrap(hdg))))
       end
     end
+    -- "turn left one eighty", "turn right one hundred eighty": 180 said as a number (not digit by digit, no
+    -- "heading", nothing naming the heading reached before it) after "turn" and a side is a reversal, the turn's
+    -- degrees (as "do a 180 to the left"); "turn left one eight zero" stays the heading
+    if hdg and not offset and way ~= 0 and abs and abs.kind == "plain" and abs.value == 180 and n and not n.typed
+        and (n.hundred or n.groups < #n.digits) and self:word_in(s.b, s.e, "turn")
+        and not self:word_in(s.b, s.e, "heading hdg") and not self:word(abs.b - 1, "to onto at") then
+      offset, hdg = way * 180, nil
+    end
     local suffix = way < 0 and " LEFT" or way > 0 and " RIGHT" or ""
     -- a change from the present heading is each aircraft's own, in whole degrees
     local lines = {}

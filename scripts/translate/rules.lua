@@ -519,6 +519,12 @@ return function(intent, rule, words)
       if q.kind == "lat" or q.kind == "lon" or (q.kind == "plain" and q.number.decimal) then return nil end
     end
     if g:has_ref(k + 1, e, "waypoint") or g:has_ref(k + 1, e, "airport") then return nil end
+    -- ("move EIN42 up to FL300, same spot": the place it stands said, a move where it is)
+    for j = k + 1, #g.t - 1 do
+      if g:word(j, "same") and g:word(j + 1, "position place spot location") and not g:word(j + 2, "as") then
+        return nil
+      end
+    end
     return k
   end
   rule { "move moves moving", false, when = function(g, i) return move_vertical(g, i) ~= nil end }

@@ -21372,3 +21372,40 @@ do
   check_eq(ex("KLM12 kurs 300.. ne 310 bitte"), "HDG KLM12 310")
   check_eq(ex("KLM12 descend FL200, nein, FL210"), "ALT KLM12 FL210")
 end
+
+-- Cycle 65 (f232): a second aircraft's flight number said as words after a callsign and "and" (or a comma and
+-- "both"), with the same airline, names that aircraft as typed digits do
+do
+  local _, ex = scene({ "CRE AFR207 A320 52 4 90 FL350 280", "CRE AFR270 A320 53 4 90 FL330 280" })
+  check_eq(ex("Air France two zero seven and two seven zero, descend flight level two eight zero"),
+    "ALT AFR207 FL280 ; ALT AFR270 FL280")
+  check_eq(ex("Air France two zero seven and two seventy, the pair of ye climb FL360"),
+    "ALT AFR207 FL360 ; ALT AFR270 FL360")
+  check_eq(ex("Air France two zero seven, two seven zero, both descend FL290"), "ALT AFR207 FL290 ; ALT AFR270 FL290")
+  asked(ex("Air France two zero seven, two seven zero, descend FL290"), "after ','")
+end
+
+-- Cycle 65 (f232): "turn left one eighty", 180 said as a number after "turn" and a side, no "heading": a reversal
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 300 FL250 280" })
+  check_eq(ex("KLM12 turn right one eighty"), "HDG KLM12 120 RIGHT")
+  check_eq(ex("KLM12 turn left one hundred and eighty"), "HDG KLM12 120 LEFT")
+  check_eq(ex("KLM12 turn right one eight zero"), "HDG KLM12 180 RIGHT")
+  check_eq(ex("KLM12 turn left heading one eighty"), "HDG KLM12 180 LEFT")
+end
+
+-- Cycle 65 (f232): "move X up to FL300, same spot": the place it stands said makes it a move where it is
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 90 FL250 280" })
+  check_eq(ex("move KLM12 up to flight level three one zero, same place"), "MOVE KLM12 52 4 FL310")
+  check_eq(ex("KLM12 move down to FL90 same location"), "MOVE KLM12 52 4 FL90")
+  check_eq(ex("move KLM12 up to FL310"), "ALT KLM12 FL310")
+end
+
+-- Cycle 65 (f232): a registration spelled from "Echo" (a command's name), a comma and an instruction: one request
+-- to that aircraft, never ECHO and a clause with no aircraft
+do
+  local _, ex = scene({ "CRE ECXYZ C172 52 4 90 3000 100", "CRE KLM12 A320 53 4 90 FL250 280" })
+  check_eq(ex("Echo Charlie X-ray Yankee Zulu, speed eighty knots"), "SPD ECXYZ 80")
+  check_eq(ex("Echo Charlie X-ray Yankee Zulu, turn right heading 120"), "HDG ECXYZ 120 RIGHT")
+end
