@@ -21372,3 +21372,12 @@ do
   check_eq(ex("KLM12 kurs 300.. ne 310 bitte"), "HDG KLM12 310")
   check_eq(ex("KLM12 descend FL200, nein, FL210"), "ALT KLM12 FL210")
 end
+
+-- Cycle 65 (f235): "run again in real time" (the "again" said before "in"/"at real time") returns to real time as
+-- "run it in real time again" does: DTMULT 1 on a clock not in fast time, no start of the clock
+do
+  local _, ex = scene({})
+  check_eq(ex("could the sim run again at real time please"), "DTMULT 1")
+  check_eq(ex("let the exercise run again in real time"), "DTMULT 1")
+  check_eq(ex("run again"), "OP")
+end
