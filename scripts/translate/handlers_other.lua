@@ -5144,6 +5144,19 @@ return function(H, f, compass)
       return self:emit("RESO OFF")
     end
     if self:word_in(1, #self.t + 1, "mvp") or self:word_in(b, s.e, "@mvp") then return self:emit("RESO MVP") end
+    -- ("switch on the conflict detection, but without resolution", "detection on, no resolution": "without" or
+    -- "no" straight before the noun, detection switched on in the request, asks for detection alone; with no
+    -- method set now ASAS ON detects only, and the words explain it; a method set now is switched off)
+    local k = s.trig - 1
+    while k > 1 and self:word(k, "the any a conflict") do k = k - 1 end
+    if self:word(k, "without no") and not self:in_reason(k) and self.world.reso_method then
+      local detects = false
+      for _, c in ipairs(self.out) do detects = detects or c == "ASAS ON" or c:match("^CDMETHOD %u") ~= nil end
+      if detects then
+        if self.world.reso_method() == "OFF" then return self:explain(k, s.trig + 1) end
+        return self:emit("RESO OFF")
+      end
+    end
     if self:on_off(s) == 0 then return self:emit("RESO OFF") end
     if self:on_off(s) == 1 then return self:emit("RESO MVP") end  -- MVP is the one method RESO has
     -- ("let the computer steer them apart", "have the sim solve the conflicts": the simulation asked to resolve)

@@ -21381,3 +21381,13 @@ do
   check_eq(ex("let the exercise run again in real time"), "DTMULT 1")
   check_eq(ex("run again"), "OP")
 end
+
+-- Cycle 65 (f235): conflict detection switched on "without" or with "no" resolution asks for detection alone:
+-- with no resolution method set ASAS ON detects only (no RESO OFF to confirm); a method set is switched off
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL200 250" })
+  check_eq(ex("turn the conflict detection on without resolution please"), "ASAS ON")
+  check_eq(ex("enable conflict detection, no resolution"), "ASAS ON")
+  local _, exm = scene({ "CRE KLM12 A320 52 4 090 FL200 250", "RESO MVP" })
+  asked(exm("turn the conflict detection on without resolution please"), "a method set is switched off, confirmed")
+end
