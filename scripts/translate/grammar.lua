@@ -12750,6 +12750,20 @@ function G:op_after_ff()
     end
   end
 end
+-- "fly on with its actual heading, so switch off the LNAV", "keep your present heading and LNAV off": the heading
+-- flown kept (m:heading's HDG of the present heading, no value said) beside that aircraft's LNAV OFF is what LNAV OFF
+-- does (it flies on at its heading): the HDG is dropped, the words read as LNAV OFF's.
+function G:present_kept_by_lnav_off()
+  if not self.present_hdg then return end
+  local kept = {}
+  for _, line in ipairs(self.out) do
+    local id = line:match("^HDG (%S+) %d+$")
+    local off = false
+    for _, other in ipairs(self.out) do off = off or (id and other == "LNAV " .. id .. " OFF") end
+    if not (off and self.present_hdg[id]) then kept[#kept + 1] = line end
+  end
+  self.out = kept
+end
 function G:resume_after_instruction()
   local op
   for c, line in ipairs(self.out) do
@@ -18613,6 +18627,7 @@ function M.translate(text, world)
   if not g.ask then g:speed_lifted_and_given() end
   if not g.ask then g:resume_after_instruction() end
   if not g.ask then g:op_after_ff() end
+  if not g.ask then g:present_kept_by_lnav_off() end
   if not g.ask then g:shown_after_instruction() end
   if not g.ask and #g.out > 0 then g:condition_dropped() end
   if not g.ask and #g.out > 0 then g:condition_lost_in_correction() end

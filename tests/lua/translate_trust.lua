@@ -21391,3 +21391,13 @@ do
   local _, exm = scene({ "CRE KLM12 A320 52 4 090 FL200 250", "RESO MVP" })
   asked(exm("turn the conflict detection on without resolution please"), "a method set is switched off, confirmed")
 end
+
+-- Cycle 65 (f235): "switch off the LNAV" after "and"/"so" (the switching word before the article that opens the
+-- switch's segment) is LNAV OFF; the present heading kept beside that LNAV OFF is what LNAV OFF does: no HDG
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL200 250", "DEFWPT F235A 52.5 5", "ADDWPT KLM12 F235A" })
+  check_eq(ex("KLM12 climb FL240 and switch off the LNAV"), "ALT KLM12 FL240 ; LNAV KLM12 OFF")
+  check_eq(ex("KLM12 continue on your current heading and turn off the LNAV"), "LNAV KLM12 OFF")
+  check_eq(ex("KLM12 keep the present heading, lnav off"), "LNAV KLM12 OFF")
+  check_eq(ex("KLM12 fly heading 120 and switch off the LNAV"), "HDG KLM12 120 ; LNAV KLM12 OFF")
+end
