@@ -10216,6 +10216,9 @@ function G:withheld_start(last)
     first = first - 1
   end
   while first < b and self.t[first].kind == "punct" do first = first + 1 end
+  -- (the speaker searching his memory for the value, "descend FL100, what level was it again", "..., I forgot",
+  -- takes it back with no marker before: the phrase says it)
+  marked = marked or self:word(b, "what which") or self:word_in(b, last + 1, "forgot forget remember")
   return marked and first > 1 and first or nil
 end
 

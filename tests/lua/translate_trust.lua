@@ -21401,3 +21401,13 @@ do
   check_eq(ex("KLM12 keep the present heading, lnav off"), "LNAV KLM12 OFF")
   check_eq(ex("KLM12 fly heading 120 and switch off the LNAV"), "HDG KLM12 120 ; LNAV KLM12 OFF")
 end
+
+-- Cycle 65 (f235): the speaker searching his memory for the value after an instruction ("..., no wait, what
+-- level was it again", "..., I forgot") takes it back with nothing in its place: asked, never sent
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL200 250" })
+  asked(ex("KLM12 climb to FL240, uh, no wait, what was it again?"), "the value searched for")
+  asked(ex("KLM12 reduce speed 220, which speed was it again"), "the value searched for, no marker")
+  asked(ex("KLM12 turn right heading 150, sorry, I forgot"), "the value forgotten")
+  check_eq(ex("KLM12 climb to, what was it, FL240"), "ALT KLM12 FL240")
+end
