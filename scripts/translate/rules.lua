@@ -2593,12 +2593,14 @@ return function(intent, rule, words)
   local function state_asked(g, i)
     if #g:quantities(1, #g.t + 1) > 0 then return nil end
     local k, nouns = state_words(g, g:skip_fillers(g:word(i + 1, "me us") and i + 2 or i + 1), "the its",
-      "position level altitude speed heading mach")
+      "position level altitude speed heading mach airspeed vertical ground")
     if nouns == 0 or not g:word(k, "of for") then return nil end
     return g:refs_in(k + 1, k + 2, "aircraft")[1]
   end
   -- ("please help me check speed of Nok Air 315": a verb of looking at the state, the same)
-  rule { "provide give tell report check", "pos", when = function(g, i) return state_asked(g, i) ~= nil end }
+  -- ("say me please the speed of X", "give me the vertical speed of X": "say" too, a courtesy before the noun,
+  -- the vertical or ground speed)
+  rule { "provide give tell report check say", "pos", when = function(g, i) return state_asked(g, i) ~= nil end }
   -- "I need the position of TAP1017": the same wanted, when the clause ends with the aircraft (not "I want
   -- the position of TAP1017 changed")
   rule { "need want require", "pos", when = function(g, i)

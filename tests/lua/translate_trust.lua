@@ -21411,3 +21411,11 @@ do
   asked(ex("KLM12 turn right heading 150, sorry, I forgot"), "the value forgotten")
   check_eq(ex("KLM12 climb to, what was it, FL240"), "ALT KLM12 FL240")
 end
+
+-- Cycle 65 (f235): "say me please the speed of X", "give me the vertical speed of X": a state asked by "say" with a
+-- courtesy before its noun, the vertical or ground speed too, is shown (POS), never an instruction's value asked
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL200 250" })
+  check_eq(ex("say me please the heading of KLM12"), "POS KLM12")
+  check_eq(ex("could you give me the vertical speed of KLM12"), "POS KLM12")
+end
