@@ -9223,6 +9223,11 @@ function G:when_reached(s)
   if self:word(slowed, "done does do did") and self:word(slowed + 1, "so that") then
     return self:instruction_lead(self:skip_fillers(slowed + 2), s.trig) == s.trig
   end
+  -- ("once it has reached this speed", "when you have reached it": the perfect of the verb of reaching)
+  if (subject and self:word(verb, "has have 've") or self:word(verb, "you've they've it's he's she's"))
+      and self:word(self:skip_fillers(verb + 1), "reached hit") then
+    verb = self:skip_fillers(verb + 1)
+  end
   local have = subject and self:word(verb, "have got") and self:word(self:skip_fillers(verb + 1), "it that")
   if not (have or self:word(verb, "reaching reach reaches reached hit hits")) then return false end
   local k = self:skip_fillers(verb + 1)

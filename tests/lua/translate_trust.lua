@@ -21419,3 +21419,15 @@ do
   check_eq(ex("say me please the heading of KLM12"), "POS KLM12")
   check_eq(ex("could you give me the vertical speed of KLM12"), "POS KLM12")
 end
+
+-- Cycle 65 (f235): a condition of reaching said in the perfect ("once it has reached this speed", "when you have
+-- reached it", "once you've reached that level") is the value of the instruction before, reached
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL200 250" })
+  check_eq(ex("KLM12 slow down to 220 knots and, once it has reached this speed, let it climb to FL240"),
+    "SPD KLM12 220 ; ATSPD KLM12 220 ALT KLM12 FL240")
+  check_eq(ex("KLM12 climb FL260, when you have reached it turn right heading 150"),
+    "ALT KLM12 FL260 ; ATALT KLM12 FL260 HDG KLM12 150 RIGHT")
+  check_eq(ex("KLM12 reduce 230 knots, once you've reached this speed descend FL150"),
+    "SPD KLM12 230 ; ATSPD KLM12 230 ALT KLM12 FL150")
+end
