@@ -2642,7 +2642,7 @@ return {
     { heard = { "it reached", "he reached", "she reached", "you reached" }, means = "reaching",
       between = { { "when", "whenever", "once", "after" }, { "#number", "fl", "flight", "level", "altitude" } } },
     { heard = { "as soon as" }, means = "once",
-      before = { "#capital", "it", "it's", "he", "he's", "she", "she's", "they", "they're", "you're", "level", "lvl", "reaching",
+      before = { "#capital", "the", "it", "it's", "he", "he's", "she", "she's", "they", "they're", "you're", "level", "lvl", "reaching",
                  "passing", "past", "established" } },
     { heard = { "you pass over", "it pass over", "it passes over", "pass over", "passes over", "you pass",
                 "it pass" }, means = "passing", after = { "when", "once" } },

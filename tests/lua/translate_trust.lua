@@ -21431,3 +21431,13 @@ do
   check_eq(ex("KLM12 reduce 230 knots, once you've reached this speed descend FL150"),
     "SPD KLM12 230 ; ATSPD KLM12 230 ALT KLM12 FL150")
 end
+
+-- Cycle 65 (f235): "as soon as the <aircraft> ..." is the condition "once", as "as soon as KLM12 ..." is (it had
+-- been dropped, or nothing read); "as soon as the conflict is resolved" waits for what squawk cannot: asked
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL200 250" })
+  check_eq(ex("reduce speed 220 as soon as the KLM12 is at FL200"), "ATALT KLM12 FL200 SPD KLM12 220")
+  check_eq(ex("as soon as the KLM12 is reaching FL200, it shall turn left heading 010"),
+    "ATALT KLM12 FL200 HDG KLM12 10 LEFT")
+  asked(ex("KLM12 climb FL300 as soon as the conflict is resolved"), "a condition squawk cannot wait for")
+end
