@@ -10221,9 +10221,11 @@ function G:withheld_start(last)
     first = first - 1
   end
   while first < b and self.t[first].kind == "punct" do first = first + 1 end
-  -- (the speaker searching his memory for the value, "descend FL100, what level was it again", "..., I forgot",
-  -- takes it back with no marker before: the phrase says it)
-  marked = marked or self:word(b, "what which") or self:word_in(b, last + 1, "forgot forget remember")
+  -- (the speaker searching his memory for the value, "descend FL100, what level was it again", takes back an
+  -- instruction with no marker before: the question says it; "show me where X is, I don't remember" says why)
+  if not marked and self:word(b, "what which") then
+    for _, c in ipairs(self.out) do marked = marked or not (c:match("^POS ") or c:match("^LISTRTE ")) end
+  end
   return marked and first > 1 and first or nil
 end
 
