@@ -21441,3 +21441,11 @@ do
     "ATALT KLM12 FL200 HDG KLM12 10 LEFT")
   asked(ex("KLM12 climb FL300 as soon as the conflict is resolved"), "a condition squawk cannot wait for")
 end
+
+-- Cycle 65 (f235): "which route has the X?", "which route does X have?" (a German speaker's "welche Route hat"):
+-- the route of an aircraft flying, listed (LISTRTE)
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL200 250", "DEFWPT F235B 52.5 5", "ADDWPT KLM12 F235B" })
+  check_eq(ex("which route has the KLM12 currently?"), "LISTRTE KLM12")
+  check_eq(ex("which route does KLM12 have, please?"), "LISTRTE KLM12")
+end
