@@ -9223,6 +9223,11 @@ function G:when_reached(s)
   if self:word(slowed, "done does do did") and self:word(slowed + 1, "so that") then
     return self:instruction_lead(self:skip_fillers(slowed + 2), s.trig) == s.trig
   end
+  -- ("once it has reached this speed", "when you have reached it": the perfect of the verb of reaching)
+  if (subject and self:word(verb, "has have 've") or self:word(verb, "you've they've it's he's she's"))
+      and self:word(self:skip_fillers(verb + 1), "reached hit") then
+    verb = self:skip_fillers(verb + 1)
+  end
   local have = subject and self:word(verb, "have got") and self:word(self:skip_fillers(verb + 1), "it that")
   if not (have or self:word(verb, "reaching reach reaches reached hit hits")) then return false end
   local k = self:skip_fillers(verb + 1)
@@ -10216,6 +10221,11 @@ function G:withheld_start(last)
     first = first - 1
   end
   while first < b and self.t[first].kind == "punct" do first = first + 1 end
+  -- (the speaker searching his memory for the value, "descend FL100, what level was it again", takes back an
+  -- instruction with no marker before: the question says it; "show me where X is, I don't remember" says why)
+  if not marked and self:word(b, "what which") then
+    for _, c in ipairs(self.out) do marked = marked or not (c:match("^POS ") or c:match("^LISTRTE ")) end
+  end
   return marked and first > 1 and first or nil
 end
 
@@ -12749,6 +12759,20 @@ function G:op_after_ff()
       return self:op_after_ff()
     end
   end
+end
+-- "fly on with its actual heading, so switch off the LNAV", "keep your present heading and LNAV off": the heading
+-- flown kept (m:heading's HDG of the present heading, no value said) beside that aircraft's LNAV OFF is what LNAV OFF
+-- does (it flies on at its heading): the HDG is dropped, the words read as LNAV OFF's.
+function G:present_kept_by_lnav_off()
+  if not self.present_hdg then return end
+  local kept = {}
+  for _, line in ipairs(self.out) do
+    local id = line:match("^HDG (%S+) %d+$")
+    local off = false
+    for _, other in ipairs(self.out) do off = off or (id and other == "LNAV " .. id .. " OFF") end
+    if not (off and self.present_hdg[id]) then kept[#kept + 1] = line end
+  end
+  self.out = kept
 end
 function G:resume_after_instruction()
   local op
@@ -18613,6 +18637,7 @@ function M.translate(text, world)
   if not g.ask then g:speed_lifted_and_given() end
   if not g.ask then g:resume_after_instruction() end
   if not g.ask then g:op_after_ff() end
+  if not g.ask then g:present_kept_by_lnav_off() end
   if not g.ask then g:shown_after_instruction() end
   if not g.ask and #g.out > 0 then g:condition_dropped() end
   if not g.ask and #g.out > 0 then g:condition_lost_in_correction() end

@@ -196,6 +196,11 @@ end
 function m:on_off(s)
   -- (the switching word just before the segment counts: "disconnect LNAV of X")
   local b = (s.b > 1 and self:word(s.b - 1, "off on @off @on")) and s.b - 1 or s.b
+  -- ("..., and switch off the LNAV": the switching word before an article that opens the segment counts too)
+  if b == s.b and s.trig == s.b and s.b > 2 and self:word(s.b - 1, "the its your his her their")
+      and self:word(s.b - 2, "off on") then
+    b = s.b - 2
+  end
   -- "drifting off its route, put it back on LNAV": switched back on, whatever went off before
   local back = self:find_word(b, s.e, "back")
   if back < s.e and self:word(back + 1, "on") then return 1 end

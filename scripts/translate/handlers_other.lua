@@ -4613,15 +4613,20 @@ return function(H, f, compass)
     -- is the rate all the same).
     -- "real time again" ("run it in real time again") returns to real time as "back to real time" does; its
     -- "run" and "again" are the return's, no start of the clock
-    local again = self:word(s.trig, "real") and self:word(s.trig + 2, "again")
-    local back = again or self:word(s.trig, "real") and self:word(s.trig - 1, "to") and self:word(s.trig - 2, "back")
+    -- ("the simulation should run again in real time": "run again" straight before "in"/"at real time" is the
+    -- return to real time as "real time again" is, read from its "real")
+    local rt = s.trig
+    if self:word(rt, "run") and self:word(rt + 1, "again") and self:word(rt + 2, "in at") and self:word(rt + 3, "real")
+      and self:word(rt + 4, "time") then rt = rt + 3 end
+    local again = rt > s.trig or self:word(rt, "real") and self:word(rt + 2, "again")
+    local back = again or self:word(rt, "real") and self:word(rt - 1, "to") and self:word(rt - 2, "back")
     -- ("dtmult 1 back to realtime": said after the rate set back to 1, it explains that rate)
     if back and self.out[#self.out] == "DTMULT 1" then return self:explain(s.b, s.e) end
     -- ("stop the fast-forward and carry on in real time": the OP that ended fast time runs in real time)
-    if self:word(s.trig, "real") and self.ff_ended_op == #self.out then return self:explain(s.b, s.e) end
-    local speed = self:word(s.trig, "real") and self:word(s.trig + 2, "speed")
+    if self:word(rt, "real") and self.ff_ended_op == #self.out then return self:explain(s.b, s.e) end
+    local speed = self:word(rt, "real") and self:word(rt + 2, "speed")
     local starts = again and "running start resume unpause continue" or "run running start resume unpause continue again"
-    if speed or self:word(s.trig, "real") and not self:word_in(s.b, s.e, starts) then
+    if speed or self:word(rt, "real") and not self:word_in(s.b, s.e, starts) then
       local state = self.world.run_state
       for _, c in ipairs(self.out) do
         local cmd = c:match("^(%u+)")
@@ -5139,6 +5144,19 @@ return function(H, f, compass)
       return self:emit("RESO OFF")
     end
     if self:word_in(1, #self.t + 1, "mvp") or self:word_in(b, s.e, "@mvp") then return self:emit("RESO MVP") end
+    -- ("switch on the conflict detection, but without resolution", "detection on, no resolution": "without" or
+    -- "no" straight before the noun, detection switched on in the request, asks for detection alone; with no
+    -- method set now ASAS ON detects only, and the words explain it; a method set now is switched off)
+    local k = s.trig - 1
+    while k > 1 and self:word(k, "the any a conflict") do k = k - 1 end
+    if self:word(k, "without no") and not self:in_reason(k) and self.world.reso_method then
+      local detects = false
+      for _, c in ipairs(self.out) do detects = detects or c == "ASAS ON" or c:match("^CDMETHOD %u") ~= nil end
+      if detects then
+        if self.world.reso_method() == "OFF" then return self:explain(k, s.trig + 1) end
+        return self:emit("RESO OFF")
+      end
+    end
     if self:on_off(s) == 0 then return self:emit("RESO OFF") end
     if self:on_off(s) == 1 then return self:emit("RESO MVP") end  -- MVP is the one method RESO has
     -- ("let the computer steer them apart", "have the sim solve the conflicts": the simulation asked to resolve)

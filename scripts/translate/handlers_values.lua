@@ -1326,6 +1326,9 @@ return function(H, f, wrap, compass)
           turn < 0 and "left" or "right", (self:raw(s.trig, s.e):gsub(" ([,.;:])", "%1"))))
       end
       offset = 0
+      -- (the heading flown kept: G:present_kept_by_lnav_off drops it beside that aircraft's LNAV OFF)
+      self.present_hdg = self.present_hdg or {}
+      self.present_hdg[id] = true
     elseif #refs >= 2 and self:word_in(s.b, s.e, "@same_as") then
       local src = self:state(refs[#refs].name)
       if not src then return self:need("What is the heading of " .. refs[#refs].name .. "?") end

@@ -1248,7 +1248,16 @@ return {
                                    "scrap that", "ignore that", "cancel that", "not that", "not yet",
                                    "i'm not sure", "not sure",
                                    -- ("descend to level 280, no, stop, keep": what is kept is unsaid)
-                                   "keep", "keep it" },
+                                   "keep", "keep it",
+                                   -- (the speaker searching his memory for the value: "descend FL100, no wait,
+                                   -- what level was it again")
+                                   "what was it", "what was it again", "what was that again",
+                                   "what level was it", "what level was it again", "which level was it",
+                                   "which level was it again", "what heading was it", "what heading was it again",
+                                   "what speed was it", "what speed was it again", "which speed was it",
+                                   "which speed was it again", "which heading was it", "which heading was it again",
+                                   "i forgot", "i forget",
+                                   "i don't remember", "i do not remember" },
                       -- formal apologies, and a slip's exclamation as typed ("oops", "ops", "opps", "oups"),
                       -- read as "sorry" (a marker) wherever they are said ("Mach 0.80 -- pardon me, Mach 0.78",
                       -- "the United -- no, forgive me, the Southwest", "Gol 12, ops, Gol 21, descend ...")
@@ -2633,7 +2642,7 @@ return {
     { heard = { "it reached", "he reached", "she reached", "you reached" }, means = "reaching",
       between = { { "when", "whenever", "once", "after" }, { "#number", "fl", "flight", "level", "altitude" } } },
     { heard = { "as soon as" }, means = "once",
-      before = { "#capital", "it", "it's", "he", "he's", "she", "she's", "they", "they're", "you're", "level", "lvl", "reaching",
+      before = { "#capital", "the", "it", "it's", "he", "he's", "she", "she's", "they", "they're", "you're", "level", "lvl", "reaching",
                  "passing", "past", "established" } },
     { heard = { "you pass over", "it pass over", "it passes over", "pass over", "passes over", "you pass",
                 "it pass" }, means = "passing", after = { "when", "once" } },

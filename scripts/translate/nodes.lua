@@ -295,6 +295,12 @@ function M.world(sim, waypoints)
              end
              return lat, lon
            end,
+           -- the conflict resolution method set now ("OFF", "MVP"), read by RESO with no argument on a copy
+           -- (the simulation is left as it was), or nil when it cannot be read
+           reso_method = function()
+             local ok, said = sim:copy():exec("RESO")
+             return ok and type(said) == "string" and said:match("^RESO%s+(%u+)") or nil
+           end,
            -- a user waypoint's position (as a position argument resolves it now): lat, lon or nil
            user_waypoint_at = function(name) return sim:locate(name) end,
            -- where position argument `text` resolves (sim:locate) when the commands of `prior` (a

@@ -2265,6 +2265,17 @@ return function(intent, rule, words)
     if not g:word(k, "has have") then return false end
     return g.t[k + 1] == nil or g.t[k + 1].kind == "punct"
   end }
+  -- ("which route has the Eurowings 5LP, please?", "which route does KLM12 have?": a German speaker's "welche Route
+  -- hat ...", the aircraft flying after "has"/"does", then "have" at most, closing the clause)
+  rule { "route rte", "listrte", prev = { 1, "which what" }, when = function(g, i)
+    if not g:word(i + 1, "has does") then return false end
+    local r = g:refs_in(i + 2, g:word(i + 2, "the") and i + 4 or i + 3, "aircraft")[1]
+    if not (r and r.exists and r.b <= i + 3) then return false end
+    local k = g:skip_fillers(r.e)
+    if g:word(i + 1, "does") and g:word(k, "have") then k = g:skip_fillers(k + 1) end
+    while g:word(k, "please currently now") do k = k + 1 end
+    return g.t[k] == nil or g.t[k].kind == "punct"
+  end }
   -- "the route of Turkish 4KZ please to show", "route for KLM12 to show please": the request opening with the
   -- route of an aircraft flying, the verb of showing last ("please", "to" before it), nothing else in its clause
   rule { "route rte routing", "listrte", when = function(g, i)
@@ -2599,12 +2610,14 @@ return function(intent, rule, words)
   local function state_asked(g, i)
     if #g:quantities(1, #g.t + 1) > 0 then return nil end
     local k, nouns = state_words(g, g:skip_fillers(g:word(i + 1, "me us") and i + 2 or i + 1), "the its",
-      "position level altitude speed heading mach")
+      "position level altitude speed heading mach airspeed vertical ground")
     if nouns == 0 or not g:word(k, "of for") then return nil end
     return g:refs_in(k + 1, k + 2, "aircraft")[1]
   end
   -- ("please help me check speed of Nok Air 315": a verb of looking at the state, the same)
-  rule { "provide give tell report check", "pos", when = function(g, i) return state_asked(g, i) ~= nil end }
+  -- ("say me please the speed of X", "give me the vertical speed of X": "say" too, a courtesy before the noun,
+  -- the vertical or ground speed)
+  rule { "provide give tell report check say", "pos", when = function(g, i) return state_asked(g, i) ~= nil end }
   -- "I need the position of TAP1017": the same wanted, when the clause ends with the aircraft (not "I want
   -- the position of TAP1017 changed")
   rule { "need want require", "pos", when = function(g, i)

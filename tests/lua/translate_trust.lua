@@ -21409,3 +21409,80 @@ do
   check_eq(ex("Echo Charlie X-ray Yankee Zulu, speed eighty knots"), "SPD ECXYZ 80")
   check_eq(ex("Echo Charlie X-ray Yankee Zulu, turn right heading 120"), "HDG ECXYZ 120 RIGHT")
 end
+
+-- Cycle 65 (f235): "run again in real time" (the "again" said before "in"/"at real time") returns to real time as
+-- "run it in real time again" does: DTMULT 1 on a clock not in fast time, no start of the clock
+do
+  local _, ex = scene({})
+  check_eq(ex("could the sim run again at real time please"), "DTMULT 1")
+  check_eq(ex("let the exercise run again in real time"), "DTMULT 1")
+  check_eq(ex("run again"), "OP")
+end
+
+-- Cycle 65 (f235): conflict detection switched on "without" or with "no" resolution asks for detection alone:
+-- with no resolution method set ASAS ON detects only (no RESO OFF to confirm); a method set is switched off
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL200 250" })
+  check_eq(ex("turn the conflict detection on without resolution please"), "ASAS ON")
+  check_eq(ex("enable conflict detection, no resolution"), "ASAS ON")
+  local _, exm = scene({ "CRE KLM12 A320 52 4 090 FL200 250", "RESO MVP" })
+  asked(exm("turn the conflict detection on without resolution please"), "a method set is switched off, confirmed")
+end
+
+-- Cycle 65 (f235): "switch off the LNAV" after "and"/"so" (the switching word before the article that opens the
+-- switch's segment) is LNAV OFF; the present heading kept beside that LNAV OFF is what LNAV OFF does: no HDG
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL200 250", "DEFWPT F235A 52.5 5", "ADDWPT KLM12 F235A" })
+  check_eq(ex("KLM12 climb FL240 and switch off the LNAV"), "ALT KLM12 FL240 ; LNAV KLM12 OFF")
+  check_eq(ex("KLM12 continue on your current heading and turn off the LNAV"), "LNAV KLM12 OFF")
+  check_eq(ex("KLM12 keep the present heading, lnav off"), "LNAV KLM12 OFF")
+  check_eq(ex("KLM12 fly heading 120 and switch off the LNAV"), "HDG KLM12 120 ; LNAV KLM12 OFF")
+end
+
+-- Cycle 65 (f235): the speaker searching his memory for the value after an instruction ("..., no wait, what
+-- level was it again", "..., I forgot") takes it back with nothing in its place: asked, never sent
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL200 250" })
+  asked(ex("KLM12 climb to FL240, uh, no wait, what was it again?"), "the value searched for")
+  asked(ex("KLM12 reduce speed 220, which speed was it again"), "the value searched for, no marker")
+  asked(ex("KLM12 turn right heading 150, sorry, I forgot"), "the value forgotten")
+  check_eq(ex("KLM12 climb to, what was it, FL240"), "ALT KLM12 FL240")
+end
+
+-- Cycle 65 (f235): "say me please the speed of X", "give me the vertical speed of X": a state asked by "say" with a
+-- courtesy before its noun, the vertical or ground speed too, is shown (POS), never an instruction's value asked
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL200 250" })
+  check_eq(ex("say me please the heading of KLM12"), "POS KLM12")
+  check_eq(ex("could you give me the vertical speed of KLM12"), "POS KLM12")
+end
+
+-- Cycle 65 (f235): a condition of reaching said in the perfect ("once it has reached this speed", "when you have
+-- reached it", "once you've reached that level") is the value of the instruction before, reached
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL200 250" })
+  check_eq(ex("KLM12 slow down to 220 knots and, once it has reached this speed, let it climb to FL240"),
+    "SPD KLM12 220 ; ATSPD KLM12 220 ALT KLM12 FL240")
+  check_eq(ex("KLM12 climb FL260, when you have reached it turn right heading 150"),
+    "ALT KLM12 FL260 ; ATALT KLM12 FL260 HDG KLM12 150 RIGHT")
+  check_eq(ex("KLM12 reduce 230 knots, once you've reached this speed descend FL150"),
+    "SPD KLM12 230 ; ATSPD KLM12 230 ALT KLM12 FL150")
+end
+
+-- Cycle 65 (f235): "as soon as the <aircraft> ..." is the condition "once", as "as soon as KLM12 ..." is (it had
+-- been dropped, or nothing read); "as soon as the conflict is resolved" waits for what squawk cannot: asked
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL200 250" })
+  check_eq(ex("reduce speed 220 as soon as the KLM12 is at FL200"), "ATALT KLM12 FL200 SPD KLM12 220")
+  check_eq(ex("as soon as the KLM12 is reaching FL200, it shall turn left heading 010"),
+    "ATALT KLM12 FL200 HDG KLM12 10 LEFT")
+  asked(ex("KLM12 climb FL300 as soon as the conflict is resolved"), "a condition squawk cannot wait for")
+end
+
+-- Cycle 65 (f235): "which route has the X?", "which route does X have?" (a German speaker's "welche Route hat"):
+-- the route of an aircraft flying, listed (LISTRTE)
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL200 250", "DEFWPT F235B 52.5 5", "ADDWPT KLM12 F235B" })
+  check_eq(ex("which route has the KLM12 currently?"), "LISTRTE KLM12")
+  check_eq(ex("which route does KLM12 have, please?"), "LISTRTE KLM12")
+end
