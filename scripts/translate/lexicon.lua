@@ -209,8 +209,10 @@ return {
         "readback", "read-back", "incorrect", "said",
         -- radar identification stated to the pilot ("Budapest Radar, identified, descend FL130")
         "identified", "identification",
-        -- the same courtesy in Spanish or Portuguese ("descend FL120, gracias", "momentito, por favor")
+        -- the same courtesy in Spanish or Portuguese ("descend FL120, gracias", "momentito, por favor", "muchas
+        -- gracias", "muito obrigado")
         "gracias", "obrigado", "obrigada", "por", "favor", "momentito", "buenos", "buenas", "dias", "días",
+        "muchas", "muchisimas", "muchísimas", "muito",
         "tardes", "noches",
         -- and in French ("climb FL120, bonjour", "merci, au revoir")
         "bonjour", "bonsoir", "merci", "salut", "revoir",

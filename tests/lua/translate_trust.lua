@@ -21486,3 +21486,12 @@ do
   check_eq(ex("which route has the KLM12 currently?"), "LISTRTE KLM12")
   check_eq(ex("which route does KLM12 have, please?"), "LISTRTE KLM12")
 end
+
+-- Cycle 65 (lead): Spanish and Portuguese thanks with their intensifier ("muchas gracias", "muito obrigado") are
+-- courtesy, as "gracias" alone is
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 90 FL250 280" })
+  check_eq(ex("KLM12 climb FL300, muchas gracias"), "ALT KLM12 FL300")
+  check_eq(ex("KLM12 reduce speed 250, muchísimas gracias"), "SPD KLM12 250")
+  check_eq(ex("muito obrigado, KLM12 turn left heading 200"), "HDG KLM12 200 LEFT")
+end
