@@ -1154,7 +1154,10 @@ return {
   -- end after a comma or word and before the final mark. No word here is an instruction, callsign or fix word.
   listener_address = { openers = { dear = { "system", "simulator", "sim", "computer", "squawk", "assistant",
                                             "friend", "friends", "colleague", "colleagues", "operator", "machine",
-                                            "program", "software", "translator", "ai" },
+                                            "program", "software", "translator", "ai",
+                                            -- a letter's salutation to the people at the scope ("Dear sir, ...")
+                                            "sir", "madam", "controller", "controllers", "all", "team", "pilot",
+                                            "pilots" },
                                    my = { "friend", "friends", "dear" },
                                    hey = { "system", "simulator", "friend", "friends", "assistant", "machine" },
                                    hello = { "system", "simulator", "computer", "friend", "friends", "assistant" } },

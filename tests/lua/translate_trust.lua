@@ -21495,3 +21495,13 @@ do
   check_eq(ex("KLM12 reduce speed 250, muchísimas gracias"), "SPD KLM12 250")
   check_eq(ex("muito obrigado, KLM12 turn left heading 200"), "HDG KLM12 200 LEFT")
 end
+
+-- Cycle 65 (lead): a letter's salutation to the people at the scope ("Dear sir,", "Dear controller,") is a term
+-- of address, as "Dear system," is; "dear" before an aircraft stays asked
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 90 FL250 280" })
+  check_eq(ex("Dear sir, KLM12 please descend with rate 1200 fpm"), "VS KLM12 -1200")
+  check_eq(ex("Dear controller, KLM12 turn right heading 120"), "HDG KLM12 120 RIGHT")
+  check_eq(ex("Dear all, pause the simulation"), "HOLD")
+  check_eq(ex("KLM12 climb FL300, dear controller"), "ALT KLM12 FL300")
+end
