@@ -175,6 +175,8 @@ return {
     -- chat shorthand and interjections of typed notes ("what's ryanair doing rn", "lol", "ugh", "thx")
     chat = { "rn", "atm", "asap", "lol", "lmao", "ugh", "argh", "meh", "oops", "tbh", "imo", "btw", "fyi", "plz",
         "thx", "pls", "haha", "idk", "tho", "tbf",
+        -- the Irish call for attention, "come here" ("United two tree, c'mere, what level are you at")
+        "c'mere", "cmere",
         -- a fault of the simulation given as the reason ("kill aza204 its bugged"), a break taken ("need coffee")
         "bugged", "buggy", "glitched", "glitchy",
         -- a programmer's look inside the simulation ("debug info on WJA661": its state shown)
@@ -599,7 +601,8 @@ return {
       ["ı"] = "i", ["İ"] = "I", ["ğ"] = "g", ["Ğ"] = "G", ["ş"] = "s", ["Ş"] = "S" },
   -- hesitations: skipped inside a spoken number, but a number said with one is not
   -- completed by guessing ("heading uh two two" asks which heading)
-  hesitations = { "ah", "uh", "um", "er", "eh" },
+  -- (Irish and Scottish speakers write their hesitation "em")
+  hesitations = { "ah", "uh", "um", "er", "eh", "em" },
   -- words that count the "thousand" after them ("two and a half thousand feet", "a few thousand feet"): no
   -- "thousand feet" said bare, read as one thousand, after them
   thousand_counted = { hundred = true, half = true, quarter = true, few = true, several = true, many = true,

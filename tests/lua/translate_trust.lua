@@ -21505,3 +21505,12 @@ do
   check_eq(ex("Dear all, pause the simulation"), "HOLD")
   check_eq(ex("KLM12 climb FL300, dear controller"), "ALT KLM12 FL300")
 end
+
+-- Cycle 65 (lead): Irish speech: the hesitation "em" is one as "erm" is; "c'mere" (come here) calls for attention
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 90 FL250 280" })
+  check_eq(ex("KLM12, em, reduce speed two hundred and thirty knots"), "SPD KLM12 230")
+  check_eq(ex("KLM12 climb em flight level three one zero"), "ALT KLM12 FL310")
+  asked(ex("KLM12 heading em two four"), "a number said with a hesitation inside is not completed")
+  check_eq(ex("KLM12, c'mere, what's your speed"), "POS KLM12")
+end
