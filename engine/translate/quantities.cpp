@@ -44,9 +44,28 @@ double chart_degrees(const Token& tok, bool lat, double value) {
   return std::stoi(d.substr(0, deg)) + mins / 60.0 + secs / 3600.0;
 }
 
+// Degrees and minutes said as groups, as controllers read a chart position: "fifty three thirty
+// north" = 53 deg 30 min, "five forty five west" = 5 deg 45 min. Read only when the groups run
+// together beyond the axis's range and their last two digits are minutes (under 60) after degrees
+// within it; else the value as read.
+double spoken_degrees(const SpokenNumber& n, bool lat, double value) {
+  const double range = lat ? 90.0 : 180.0;
+  const std::string& d = n.digits;
+  if (n.typed || n.groups < 2 || n.has_decimal || n.has_hundred || n.has_thousand ||
+      std::fabs(value) <= range || d.size() < 3 || d.size() > (lat ? 4u : 5u))
+    return value;
+  for (char c : d)
+    if (c < '0' || c > '9') return value;
+  const int mins = std::stoi(d.substr(d.size() - 2));
+  const int degs = std::stoi(d.substr(0, d.size() - 2));
+  if (mins >= 60 || degs > range) return value;
+  return degs + mins / 60.0;
+}
+
 void set_position(Quantity& q, bool lat, int sign, const std::vector<Token>& t) {
   q.kind = lat ? QKind::kLat : QKind::kLon;
   if (q.number.typed && q.number.begin < t.size()) q.value = chart_degrees(t[q.number.begin], lat, q.value);
+  q.value = spoken_degrees(q.number, lat, q.value);
   q.value = sign * std::fabs(q.value);
 }
 

@@ -21514,3 +21514,12 @@ do
   asked(ex("KLM12 heading em two four"), "a number said with a hesitation inside is not completed")
   check_eq(ex("KLM12, c'mere, what's your speed"), "POS KLM12")
 end
+
+-- Cycle 65 (lead): a position said in degrees and minutes as groups, as read off a chart ("fifty three thirty
+-- north" is 53 deg 30 min); minutes of 60 or more stay asked
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 90 FL250 280" })
+  check_eq(ex("move KLM12 to fifty two thirty north, four fifteen east"), "MOVE KLM12 52.5 4.25")
+  check_eq(ex("define a waypoint TESTW at fifty one forty five north, three thirty west"), "DEFWPT TESTW 51.75 -3.5")
+  asked(ex("move KLM12 to fifty two seventy north, four east"), "70 minutes")
+end

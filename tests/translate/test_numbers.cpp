@@ -218,6 +218,22 @@ TEST_CASE("quantities: latitude and longitude forms") {
   CHECK(q[0].value == doctest::Approx(51.5));
   CHECK(q[1].value == doctest::Approx(-7.0 / 60.0));
 
+  // degrees and minutes said as groups, as read off a chart: "fifty three thirty" is 53 deg 30 min
+  q = qty("fifty three thirty north, five forty five west");
+  REQUIRE(q.size() == 2);
+  CHECK(q[0].value == doctest::Approx(53.5));
+  CHECK(q[1].value == doctest::Approx(-5.75));
+  q = qty("fifty one fifty-four north eight thirty west");
+  REQUIRE(q.size() == 2);
+  CHECK(q[0].value == doctest::Approx(51.9));
+  CHECK(q[1].value == doctest::Approx(-8.5));
+  // in range as said, or minutes of 60 or more: the value as read (asked later where out of range)
+  q = qty("fifty three north one twenty east");
+  REQUIRE(q.size() == 2);
+  CHECK(q[0].value == doctest::Approx(53));
+  CHECK(q[1].value == doctest::Approx(120));
+  CHECK(qty("fifty three seventy north")[0].value == doctest::Approx(5370));
+
   q = qty("N52\xC2\xB0" "18.6' E004\xC2\xB0" "45.8'");
   REQUIRE(q.size() == 2);
   CHECK(q[0].kind == QKind::kLat);
