@@ -732,6 +732,10 @@ return function(intent, rule, words)
   end }
   -- "double the sim speed", "twice the simulation speed": a multiplier said of the sim's speed
   rule { "speed", "dtmult", prev = { 1, "@sim" }, when = function(g, i) return g:preceded_by(i, 4, "@multipliers") end }
+  -- "double the speed of the sim", "triple the speed of the simulation": the same, the sim after "of"
+  rule { "speed", "dtmult", next = "of", when = function(g, i)
+    return (g:word(i + 2, "@sim") or (g:word(i + 2, "the") and g:word(i + 3, "@sim"))) and g:preceded_by(i, 4, "@multipliers")
+  end }
   rule { "speed", "dtmult", next = "up", near = { 3, "times x" } }  -- "speed up 10x"
   -- "speed it up to times 5": "it" the run, when no aircraft is named
   rule { "speed", "dtmult", next = "it", near = { 5, "times" }, when = function(g, i)

@@ -21523,3 +21523,11 @@ do
   check_eq(ex("define a waypoint TESTW at fifty one forty five north, three thirty west"), "DEFWPT TESTW 51.75 -3.5")
   asked(ex("move KLM12 to fifty two seventy north, four east"), "70 minutes")
 end
+
+-- Cycle 65 (lead): a multiplier of "the speed of the sim" is the clock's rate, as "double the sim speed" is
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 90 FL250 280" })
+  check_eq(ex("double the speed of the simulation"), "DTMULT 2")
+  check_eq(ex("please triple the speed of the sim"), "DTMULT 3")
+  asked(ex("double the speed of KLM12"), "an aircraft's speed doubled is asked")
+end
