@@ -114,10 +114,14 @@ void add_fraction(const std::vector<Token>& t, SpokenNumber& n, size_t& j) {
 
 double value_of(const std::string& digits) { return digits.empty() ? 0.0 : std::strtod(digits.c_str(), nullptr); }
 
-// Digits after "point"/"decimal" starting at i; advances i.
+// Digits after "point"/"decimal" starting at i; advances i. A single digit typed after digit words
+// is one of them ("point seven 8", words and keys mixed).
 std::string fraction_digits(const std::vector<Token>& t, size_t& i) {
   std::string f;
   while (digit_at(t, i) >= 0) f += static_cast<char>('0' + digit_at(t, i++));
+  if (!f.empty() && i < t.size() && t[i].kind == TokKind::kNumber && t[i].raw.size() == 1 &&
+      t[i].raw[0] >= '0' && t[i].raw[0] <= '9')
+    f += t[i++].raw;
   return f;
 }
 

@@ -21531,3 +21531,10 @@ do
   check_eq(ex("please triple the speed of the sim"), "DTMULT 3")
   asked(ex("double the speed of KLM12"), "an aircraft's speed doubled is asked")
 end
+
+-- Cycle 65 (lead): a Mach number's digits after "point" said in words and finished on the keys ("point seven 8")
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 90 FL250 280" })
+  check_eq(ex("KLM12 increase speed mach point seven 9"), "SPD KLM12 M0.79")
+  check_eq(ex("KLM12 mach decimal eight 1"), "SPD KLM12 M0.81")
+end

@@ -57,6 +57,7 @@ TEST_CASE("number words: ATC digit by digit and groups") {
 
 TEST_CASE("number words: decimals") {
   CHECK(num("point seven eight").value == doctest::Approx(0.78));
+  CHECK(num("point seven 8").value == doctest::Approx(0.78));  // words and keys mixed
   CHECK(num("decimal eight two").value == doctest::Approx(0.82));
   // "decimal" before thousand is a misheard verb, not a decimal point
   auto n = num("nine decimal four thousand");
