@@ -6122,7 +6122,8 @@ function G:at_speed(s)
     if not noun and self:word(x, "speed airspeed") then
       noun = true
     -- ("once his speed is 250": the aircraft's own speed)
-    elseif not (self.t[x].filler or ARRIVING[self.words[x]]
+    -- ("after speed reduce to 250": a verb of slowing in its base form too)
+    elseif not (self.t[x].filler or ARRIVING[self.words[x]] or self:word(x, "@speed_verbs")
         or (self:word(x, "his her their your") and self:word(x + 1, "speed airspeed"))) then
       return nil
     end

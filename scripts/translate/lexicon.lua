@@ -900,7 +900,7 @@ return {
                             "decelerate", "slow", "slowing", "add", "up", "down", "faster", "slower" },
   -- verbs that make a bare number in a condition a speed ("once AFR1023 slows to 250")
   speed_verbs = { "slows", "slowed", "slow", "slowing", "accelerates", "accelerated", "accelerating", "decelerates",
-    "decelerated", "decelerating", "reducing", "reduced" },
+    "decelerated", "decelerating", "reducing", "reduced", "reduce", "reduces", "decreased", "decreases" },
   -- words before a level that make the next instruction wait for it
   -- ("when passing flight level 130 reduce speed 250": ATALT)
   level_condition = { "when", "once", "passing", "leaving", "reaching", "after" },

@@ -435,6 +435,7 @@ local names = {
     { "vietnam airlines", "HVN" },
     { "vietjet", "VJC" },
     { "bamboo", "BAV" },
+    { "pacific airlines", "PIC" },  -- (Vietnam's Pacific Airlines; "pacific" alone is Fiji Airways, above)
     { "lion inter", "LNI" },
     { "lion air", "LNI" },
     { "lion", "LNI" },  -- (Lion Air as Indonesian controllers say it, "Lion 721"; Thai Lion is "thai lion", below)

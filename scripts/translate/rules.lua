@@ -536,10 +536,11 @@ return function(intent, rule, words)
   -- "go higher to 36000", "take it higher to FL360": a level after "higher ... to" ("lower" is read below)
   rule { "higher", "alt", next = "to", not_near = { 3, "speed knots kts" } }
   -- "N123AB go to 3500": a bare number of a thousand or more is no heading or speed, but a level; so is a level
-  -- with its unit ("BAW1 go to FL270, EZY2 go to FL310": each aircraft's own)
+  -- with its unit ("BAW1 go to FL270, EZY2 go to FL310", "go to level FL100": each aircraft's own)
   rule { "go", "alt", next = "to", when = function(g, i)
-    local q = g:quantities(i + 2, i + 5)[1]
-    return q ~= nil and q.b == i + 2
+    local at = g:word(i + 2, "level altitude") and i + 3 or i + 2
+    local q = g:quantities(at, at + 3)[1]
+    return q ~= nil and (q.b == i + 2 or (q.b == at and q.kind == "alt"))
       and ((q.kind == "plain" and q.value >= 1000 and q.value % 100 == 0) or q.kind == "alt")
   end }
   -- "kl204 up to 300", "EWG7LM up to FL320 so it ...": straight after the callsign
@@ -637,10 +638,11 @@ return function(intent, rule, words)
     return g:word(i - 2, "at") and g:find_word(math.max(1, i - 5), i - 2, "when once") < i - 2
   end }
   -- "when the speed is 230 descend FL090", "once speed reaches 250", "when speed reached descend", "only after the
-  -- speed becomes 250, descend": the noun as the
+  -- speed becomes 250, descend", "after speed reduced to 250, descend": the noun as the
   -- subject of a verb of reaching after a condition word (G:at_speed, G:when_reached), no speed instruction of its own
   rule { "speed airspeed", false, prev = { 2, "@condition" }, when = function(g, i)
-    return g:word(i + 1, "is 's reaches reached hits becomes become") and (g:word(i - 1, "@condition") or g:word(i - 1, "the that"))
+    return g:word(i + 1, "is 's reaches reached hits becomes become @speed_verbs")
+      and (g:word(i - 1, "@condition") or g:word(i - 1, "the that"))
   end }
   -- "climb FL380, passing FL360 Mach .79", "when passing FL300 M.77", "climb FL370, reaching Mach .79": a
   -- Mach number said with no verb straight after a level passed or reached (or "reaching" alone: the
@@ -877,9 +879,12 @@ return function(intent, rule, words)
   -- aircraft named in the request
   rule { "faster slower", "dtmult", prev = { 1, "run" },
          when = function(g) return not g:has_ref(1, #g.t + 1, "aircraft") end }
-  -- "the Shuttle is a bit slow": a description ("X is to slow down to 220 knots": the verb after "to", an instruction)
-  rule { "slow fast", false, prev = { 3, "is it's are was isn't" },
-         when = function(g, i) return not g:word(i - 1, "to") end }
+  -- "the Shuttle is a bit slow": a description ("X is to slow down to 220 knots": the verb after "to", an instruction;
+  -- "if it is possible, fast forward ...": a clause after the comma, "fast forward" the run's)
+  rule { "slow fast", false, prev = { 3, "is it's are was isn't" }, when = function(g, i)
+    if g:word(i - 1, "to") then return false end
+    return not (g:word(i + 1, "forward") and g.t[i - 1].kind == "punct")
+  end }
   rule { "slow fast", false, prev = { 1, "a an" }, next = "one ones aircraft plane mover" }  -- "a slow one": a description
   -- "descend at 800 feet per minute? I want a slow descent": the manner of a climb or descent whose rate is said, no
   -- speed ("a slow descent to FL80" with no rate is asked, as "at a slow rate" is)
@@ -912,6 +917,15 @@ return function(intent, rule, words)
   end }
   -- "and give it 280 knots": a speed given to the aircraft
   rule { "give", "spd", next = "it him her them", near = { 4, "@speed_units" } }
+  -- "after speed reduced to 250, descend FL100", "once the speed is reduced to 250 knots, ...": a verb of slowing
+  -- whose subject is the noun "speed" after a condition word says what the instruction waits for (G:at_speed), no
+  -- speed instruction of its own
+  rule { "reduce reduced reduces decrease decreased decreases", false, prev = { 5, "@condition" }, when = function(g, i)
+    local k = i - 1
+    while k > 1 and g:word(k, "is 's has been") do k = k - 1 end
+    if not g:word(k, "speed airspeed") then return false end
+    return g:word(k - 1, "@condition") or (g:word(k - 1, "the his her its their") and g:word(k - 2, "@condition"))
+  end }
   -- "increase the level to FL130", "reduce your level to FL070": the level named straight after the verb
   rule { "reduce increase decrease", "alt", next = "the your its his her", when = function(g, i)
     return g:word(i + 2, "level altitude")

@@ -21538,3 +21538,26 @@ do
   check_eq(ex("KLM12 increase speed mach point seven 9"), "SPD KLM12 M0.79")
   check_eq(ex("KLM12 mach decimal eight 1"), "SPD KLM12 M0.81")
 end
+
+-- Cycle 66 (lead): a condition on the speed said with a verb of slowing ("after speed reduced to 250") is what
+-- the instruction waits for (ATSPD), never a speed instruction beside it with the condition word dropped
+do
+  local _, ex = scene({ "CRE HVN123 A321 21 105.8 90 FL200 290" })
+  check_eq(ex("HVN123 after speed reduce to 250 knot, please go to level FL100"), "ATSPD HVN123 250 ALT HVN123 FL100")
+  check_eq(ex("HVN123 once speed reduced to 250 knots, descend FL100"), "ATSPD HVN123 250 ALT HVN123 FL100")
+  check_eq(ex("HVN123 after the speed is reduced to 250 knots, descend FL100"), "ATSPD HVN123 250 ALT HVN123 FL100")
+  check_eq(ex("HVN123 reduce speed 250 knots, once speed reduced to 250 descend FL100"),
+    "SPD HVN123 250 ; ATSPD HVN123 250 ALT HVN123 FL100")
+  check_eq(ex("HVN123 please go to level FL100"), "ALT HVN123 FL100")
+  -- (no value after the verb: the condition is unread and asked about, never dropped)
+  asked(ex("HVN123 when speed reduced descend FL100"), "a condition with no speed")
+end
+
+-- Cycle 66 (lead): "fast forward" after a comma opens its own clause ("if it is possible, fast forward ..."), no
+-- description of the "it" before; "Pacific Airlines" is Vietnam's PIC, "Pacific" alone Fiji Airways
+do
+  local _, ex = scene({ "CRE PIC321 A321 10.3 106.2 045 FL100 240", "CRE FJI77 A320 10.5 106.9 270 FL120 250" })
+  check_eq(ex("If it is possible, fast forward the simulation 300 seconds"), "FF 300")
+  check_eq(ex("Pacific Airlines three two one, turn right heading one six zero please"), "HDG PIC321 160 RIGHT")
+  check_eq(ex("Pacific seven seven, climb flight level one four zero"), "ALT FJI77 FL140")
+end
