@@ -232,8 +232,11 @@ std::vector<const NavPoint*> NavDb::airports_of_city(std::string_view city) cons
   for (size_t i = 0;
        i < airport_names_.size() && i < airport_classes_.size() && i < airports_.size(); ++i) {
     const std::string& n = airport_names_[i];
+    // ("Panama" is no city of "PANAMA CITY BAY CO INTL": a name followed by CITY is a country's or
+    // a state's, the city another)
     if (airport_classes_[i] == "LARGE" && n.size() > key.size() + 1 &&
-        n.compare(0, key.size(), key) == 0 && n[key.size()] == ' ')
+        n.compare(0, key.size(), key) == 0 && n[key.size()] == ' ' &&
+        n.compare(key.size() + 1, 4, "CITY") != 0)
       out.push_back(&airports_[i]);
   }
   return out;

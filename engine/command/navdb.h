@@ -52,7 +52,8 @@ class NavDb {
   // "International"), case and punctuation ignored ("schiphol" -> EHAM).
   std::vector<const NavPoint*> airports_named(std::string_view name) const;
   // Large airports (airports.dat's class) whose name starts with the words of `city` and goes on
-  // ("Frankfurt" -> EDDF "FRANKFURT MAIN", not the medium EDFH "FRANKFURT HAHN").
+  // ("Frankfurt" -> EDDF "FRANKFURT MAIN", not the medium EDFH "FRANKFURT HAHN"); the words before
+  // CITY name no city ("Panama" is not KPFN "PANAMA CITY BAY CO INTL").
   std::vector<const NavPoint*> airports_of_city(std::string_view city) const;
   // Airports whose name holds the words of `words` as a run of whole words, the name's other words
   // around them ("Midway" -> KMDW "CHICAGO MIDWAY INTL", "Kennedy" -> KJFK "JOHN F KENNEDY INTL",

@@ -418,7 +418,8 @@ TEST_CASE(
       "EDFH, FRANKFURT HAHN, 49.949, 7.264, Medium, 11483, GM,1649\n"
       "FAAM, Amsterdam Airport, -26.633, 30.6, Small, , SF,4310\n"
       "EHAM, SCHIPHOL, 52.309, 4.764, Large, 12467, NL,-11\n"
-      "XXXX, Frankfurter, 1.0, 1.0, Large\n",
+      "XXXX, Frankfurter, 1.0, 1.0, Large\n"
+      "KPFN, PANAMA CITY BAY CO INTL, 30.212, -85.683, Large, 6308, US/FL,20\n",
       "", "", "test");
   REQUIRE(db.is_ok());
   auto ids = [&](const char* name) {
@@ -430,6 +431,8 @@ TEST_CASE(
         std::vector<std::string>{"EDDF"});  // not the medium Hahn, nor "Frankfurter"
   CHECK(ids("frankfurt main").empty());     // the whole name is no city of it
   CHECK(ids("amsterdam").empty());          // a small field named so is no city's
+  CHECK(ids("panama").empty());             // the country, not Panama City
+  CHECK(ids("panama city") == std::vector<std::string>{"KPFN"});
   CHECK(ids("").empty());
   CHECK((*db)->airport_class("FAAM") == "SMALL");
   CHECK((*db)->airport_class("EDDF") == "LARGE");
