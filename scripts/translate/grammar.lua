@@ -13408,7 +13408,8 @@ end
 -- True when one of `near` (words or typed numbers as written; "#number"
 -- any number, "#waypoint" a waypoint name (a navaid's kind alone is none: "until 10 DME", "the VOR"),
 -- "#frequency" a radio frequency of the VHF air band, 118.000 to 136.975 MHz with its decimals, typed, "129.2",
--- or said digit by digit with its point, "one two eight decimal five") is within 4 tokens after i.
+-- or said digit by digit with its point, "one two eight decimal five", or without it, five or six digits said
+-- singly, not ending in "zero zero", "one three two one five") is within 4 tokens after i.
 local function frequency(t)
   local mhz = t.kind == "number" and t.text:match("^1[123]%d%.%d+$") and tonumber(t.text)
   return mhz and mhz >= 118 and mhz < 137
@@ -13417,7 +13418,13 @@ function G:frequency_said(k)
   if frequency(self.t[k]) then return true end
   if not self.t[k].number_word then return false end
   local q = self:quantities(k, math.min(#self.t + 1, k + 8))[1]
-  return q ~= nil and q.b == k and q.kind == "plain" and q.value >= 118 and q.value < 137 and q.value % 1 ~= 0
+  if not (q ~= nil and q.b == k and q.kind == "plain") then return false end
+  if q.value % 1 ~= 0 then return q.value >= 118 and q.value < 137 end
+  local digits = string.format("%d", q.value)
+  local mhz = tonumber(digits:sub(1, 3))
+  -- ("one two zero zero zero" is more likely a level in feet: a round hundred is no frequency so said)
+  return (#digits == 5 or #digits == 6) and q.e - q.b == #digits and mhz >= 118 and mhz < 137
+    and digits:sub(-2) ~= "00"
 end
 function G:near_any(i, near, window)
   for k = i + 1, math.min(#self.t, i + (window or 4)) do

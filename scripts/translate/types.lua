@@ -410,7 +410,7 @@ function M.spoken(text, built, phonetic)
     -- (only a word that may open a designator said in words is read further: a spelled letter, a maker's
     -- letter or name, a designator's letters, "seven" or a Boeing family's number)
     local ph = phonetic or {}
-    if not (LETTERS[w] or w == "airbus" or w == "boeing" or w == "embraer" or built.makers[w] or built.prefixes[w]
+    if not (LETTERS[w] or w == "q" or w == "airbus" or w == "boeing" or w == "embraer" or built.makers[w] or built.prefixes[w]
         or w == "seven" or w:match("^7%d7$") or w == "dash" or ph[w] or (w:find("%p$") and ph[(w:gsub("%p+$", ""))])
         or w:match("^b?7%d7%-%d00$")) then
       return nil
@@ -429,6 +429,23 @@ function M.spoken(text, built, phonetic)
         and word(i + 3) == "hundred" and "dash 8-" .. DIGITS[word(i + 2)] .. "00"
       if name and built.known[name] then return name .. (toks[i + 3]:match("%p+$") or ""), i + 4 end
       return nil
+    end
+    -- ("a Q four hundred": the Dash 8's name in hundreds, Q400)
+    if w == "q" and not toks[i]:match("%p$") and toks[i + 1] and not toks[i + 1]:match("%p$") and toks[i + 2] then
+      local d = DIGITS[toks[i + 1]:lower()]
+      local name = d and toks[i + 2]:lower():gsub("%p+$", "") == "hundred" and "q" .. d .. "00"
+      if name and built.known[name] then return name .. (toks[i + 2]:match("%p+$") or ""), i + 3 end
+      return nil
+    end
+    -- ("Ryanair two alpha bravo, seven three eight, at LIFFY", "a seven three eight": a Boeing designator's digits
+    -- said singly after a comma, an article or "type" is that designator, B738; "seven six seven", a family of
+    -- several, stays as said)
+    if w == "seven" and not toks[i]:match("%p$") and toks[i + 1] and not toks[i + 1]:match("%p$") and toks[i + 2] then
+      local prev = (toks[i - 1] or ""):lower()
+      local d2, d3 = DIGITS[toks[i + 1]:lower()], DIGITS[(toks[i + 2]:lower():gsub("%p+$", ""))]
+      if d2 and d3 and d3 ~= "7" and (prev:match(",$") or PREFIX_OPENERS[prev]) and built.known["b7" .. d2 .. d3] then
+        return "b7" .. d2 .. d3 .. (toks[i + 2]:match("%p+$") or ""), i + 3
+      end
     end
     local spelled, after = spelled_designator(toks, i, built, ph)
     if spelled then return spelled, after end

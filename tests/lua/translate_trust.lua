@@ -21561,3 +21561,23 @@ do
   check_eq(ex("Pacific Airlines three two one, turn right heading one six zero please"), "HDG PIC321 160 RIGHT")
   check_eq(ex("Pacific seven seven, climb flight level one four zero"), "ALT FJI77 FL140")
 end
+
+-- Cycle 66 (lead): a Boeing designator's digits said singly after a comma or an article ("seven three eight") and
+-- "Q four hundred" name the type of a creation; "seven six seven", a family of several, stays asked
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 90 FL250 280" })
+  check_eq(ex("create RYR2AB, seven three eight, at 52 N 5 E, heading two seven zero, flight level one one zero, two eighty knots"),
+    "CRE RYR2AB B738 52 5 270 FL110 280")
+  check_eq(ex("create STK12A, a Q four hundred, at 52 N 5 E, heading 340, FL60, 200 knots"), "CRE STK12A DH8D 52 5 340 FL60 200")
+  asked(ex("create DAL178, a seven six seven, at 52 N 5 E, heading 100, FL340, 285 knots"), "767 names several types")
+  asked(ex("KLM12 turn heading seven three eight"), "no heading of 738")
+end
+
+-- Cycle 66 (lead): a frequency said digit by digit without "decimal" after "call Shannon" is a hand-off, named as not
+-- simulated, never a number left over; five digits ending "zero zero" are no frequency
+do
+  local _, ex = scene({ "CRE DAL44 A320 53 -8 90 FL250 280" })
+  check_eq(ex("Delta four four climb flight level three six zero, and call Shannon one three two one five"), "ALT DAL44 FL360")
+  check_eq(ex("DAL44 descend FL200, contact Shannon one two niner five five zero"), "ALT DAL44 FL200")
+  asked(ex("DAL44 climb FL300, call Shannon one two zero zero zero"), "a round number is no frequency")
+end
