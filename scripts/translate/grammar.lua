@@ -6955,6 +6955,17 @@ function G:speed_again_split(segs)
   end
 end
 
+-- True when bare number q names a level said between b and it in this request (G.bare_level_ft: "220" or
+-- "twenty two" after FL220).
+function G:level_said_before(q, b)
+  local ft = self:bare_level_ft(q)
+  if not ft then return false end
+  for _, p in ipairs(self:quantities(b, q.b)) do
+    if p.kind == "alt" and self:cleared_level(p) == ft then return true end
+  end
+  return false
+end
+
 function G:segments(b, e)
   local trig = {}
   self.speed_again = {}
@@ -7234,8 +7245,10 @@ function G:segments(b, e)
         end
         for _, q in ipairs(self:quantities(last.trig + 1, start)) do
           local k = self:skip_fillers(q.e)
-          -- (a bare number of 1000 or more after "at" is a level in feet too: "climb 7000, at 7000 turn right")
+          -- (a bare number of 1000 or more after "at" is a level in feet too: "climb 7000, at 7000 turn right"; so is
+          -- one naming a level said before it, "climb FL220, at 220 reduce 260", "..., at twenty two reduce 260")
           local level = q.kind == "alt" or (q.kind == "plain" and q.value >= 1000 and self:word(q.b - 1, "at"))
+            or (self:word(q.b - 1, "at") and self:level_said_before(q, last.trig))
           if level and (tr.intent == "spd" or tr.intent == "hdg") and last.intent ~= "create"
               and (self:at_clause(q) or self:on_clause(q.b - 1)) and #self:quantities(last.trig, q.b) > 0 then
             start = math.min(start, q.b - 1)

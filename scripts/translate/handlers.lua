@@ -4346,14 +4346,21 @@ local NAV_INTENTS = { direct = true, lnav = true, vnav = true }
 -- The level [ft] a bare number of three digits, 100 to 600, names when this request already cleared aircraft `id`
 -- (any aircraft: id nil) to that flight level ("climb to FL340, then heading 270 when he is at 340"), else nil.
 function m:level_given(q, id)
-  if q.kind ~= "plain" or #q.number.digits ~= 3 or q.value < 100 or q.value > 600 or q.number.thousand
-      or q.number.hundred then
-    return nil
-  end
+  local ft = self:bare_level_ft(q)
+  if not ft then return nil end
   for _, c in ipairs(self.out) do
     local who, level = c:match("^ALT (%S+) (%S+)")
-    if level == "FL" .. f.int(q.value) and (not id or who == id) then return q.value * 100 end
+    if level == "FL" .. f.int(ft / 100) and (not id or who == id) then return ft end
   end
+  return nil
+end
+-- The level [ft] a bare number may name when a request has cleared the aircraft to it: three digits, its flight
+-- level ("220"), or two said as a number, the thousands of a flight level ("twenty two" for FL220); else nil.
+function m:bare_level_ft(q)
+  if q.kind ~= "plain" or q.number.thousand or q.number.hundred then return nil end
+  local n = #q.number.digits
+  if n == 3 and q.value >= 100 and q.value <= 600 then return q.value * 100 end
+  if n == 2 and q.value >= 10 and q.value <= 60 then return q.value * 1000 end
   return nil
 end
 -- True when `ft` [ft] lies strictly between aircraft `id`'s altitude and the level this request cleared it to
@@ -4509,8 +4516,10 @@ function m:at_altitude(s)
   -- ("climb FL230, and when he is at 230 Mach .78": three digits alone after "at", the level this request cleared
   -- the aircraft to, are that level; checked for the instruction's aircraft below)
   -- (so are they after a verb of reaching: "climb to FL170, and when it reaches 170, direct PERCH")
+  -- (and "climb FL220, at twenty two reduce 260": two said as a number, its thousands)
   local given = q.kind == "plain" and (self:word(a, "at") or reached) and self:level_given(q)
   fl_digits = fl_digits or given
+  local fl_ft = given or (fl_digits and q.value * 100)
   if q.kind ~= "alt" and not fl_digits and not groupwise
       and not (q.kind == "plain" and (q.number.thousand or q.value >= 1000)) then
     return nil
@@ -4542,11 +4551,11 @@ function m:at_altitude(s)
     local spd, alt = false, false
     for _, c in ipairs(self.out) do
       spd = spd or c == "SPD " .. ids[1] .. " " .. f.int(q.value)
-      alt = alt or c == "ALT " .. ids[1] .. " " .. f.alt(q.value * 100, true)
+      alt = alt or c == "ALT " .. ids[1] .. " " .. f.alt(fl_ft, true)
     end
     if spd and alt then
       self.ask = string.format("'%s': should %s wait for speed %s or for %s?", self:raw(a, q.e), ids[1],
-        f.int(q.value), f.alt(q.value * 100, true))
+        f.int(q.value), f.alt(fl_ft, true))
       return nil
     end
     if spd then
@@ -4555,7 +4564,7 @@ function m:at_altitude(s)
     end
   end
   -- (a bare bound is crossed into: "above" by an aircraft below the level, "below" by one above it; else asked)
-  local level_ft = groupwise or (fl_digits and q.value * 100) or q.value
+  local level_ft = groupwise or fl_ft or q.value
   local at_ft = bare and (self:state(ids[1]) or {}).alt_ft
   if bare and not (at_ft and (self:word(bound, "above") and at_ft < level_ft or self:word(bound, "below") and at_ft > level_ft)) then
     return nil
@@ -4590,7 +4599,7 @@ function m:at_altitude(s)
   self:mark_used(q.b, q.e)  -- the condition's altitude is not the instruction's value
   if noun then self:explain(noun, noun + 1) end
   if groupwise then return "ATALT " .. ids[1] .. " " .. f.alt(groupwise, true) end
-  if fl_digits then return "ATALT " .. ids[1] .. " " .. f.alt(q.value * 100, true) end
+  if fl_digits then return "ATALT " .. ids[1] .. " " .. f.alt(fl_ft, true) end
   return "ATALT " .. ids[1] .. " " .. f.alt(self:cleared_level(q), q.fl)
 end
 

@@ -21581,3 +21581,15 @@ do
   check_eq(ex("DAL44 descend FL200, contact Shannon one two niner five five zero"), "ALT DAL44 FL200")
   asked(ex("DAL44 climb FL300, call Shannon one two zero zero zero"), "a round number is no frequency")
 end
+
+-- Cycle 66 (lead): "at" and a bare number naming the level this request cleared, in hundreds ("at 220") or
+-- thousands ("at twenty two" after FL220), opens a condition on that level (ATALT), never a word swallowed; a
+-- number naming no level said is asked about
+do
+  local _, ex = scene({ "CRE THA9 A320 13.7 100.7 90 FL150 280" })
+  check_eq(ex("THA9 climb FL220, at 220 reduce 260"), "ALT THA9 FL220 ; ATALT THA9 FL220 SPD THA9 260")
+  check_eq(ex("THA9 climb flight level two two zero ka, at twenty two reduce two six zero"),
+    "ALT THA9 FL220 ; ATALT THA9 FL220 SPD THA9 260")
+  asked(ex("THA9 climb FL220, at twenty three reduce 260"), "23 names no level cleared")
+  asked(ex("THA9 climb FL220, at 230 reduce 260"), "230 names no level cleared")
+end
