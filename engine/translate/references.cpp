@@ -273,6 +273,26 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
       add(RefKind::kWaypoint, text::upper(raw), i, i + 1, true, false);
       continue;
     }
+    // a route or defined waypoint whose letters are said apart from its digits ("PKT zero four",
+    // "PKT 04"): that waypoint, when the letters and every digit said after them join to its name
+    if (is_alpha(raw) && !wpts.empty()) {
+      std::string digits;
+      size_t e = i + 1;
+      if (e < t.size() && !used[e] && t[e].kind == TokKind::kNumber && t[e].raw.size() <= 3 &&
+          std::all_of(t[e].raw.begin(), t[e].raw.end(),
+                      [](char c) { return std::isdigit(static_cast<unsigned char>(c)); })) {
+        digits = t[e++].raw;
+      } else {
+        for (; e < t.size() && !used[e] && digits.size() < 3 && digit_word(t[e].text) >= 0; ++e)
+          digits += static_cast<char>('0' + digit_word(t[e].text));
+      }
+      const bool more =
+          e < t.size() && (t[e].kind == TokKind::kNumber || digit_word(t[e].text) >= 0);
+      if (!digits.empty() && !more && in_list(wpts, raw + digits)) {
+        add(RefKind::kWaypoint, text::upper(raw + digits), i, e, true, false);
+        continue;
+      }
+    }
     if (names.is_manufacturer(t[i].text) && i + 1 < t.size()) {
       if (auto ty = names.aircraft_type(t[i].text, t[i + 1].raw)) {
         add(RefKind::kType, *ty, i, i + 2, false, false);

@@ -21593,3 +21593,12 @@ do
   asked(ex("THA9 climb FL220, at twenty three reduce 260"), "23 names no level cleared")
   asked(ex("THA9 climb FL220, at 230 reduce 260"), "230 names no level cleared")
 end
+
+-- Cycle 66 (lead): a route or defined waypoint's letters said apart from its digits ("PKT zero four") are that
+-- waypoint, never the letters' own name with the digits left over
+do
+  local _, ex = scene({ "CRE MAS1350 B738 8 98.3 0 FL100 250", "DEFWPT PKT04 8.2 98.3", "ADDWPT MAS1350 PKT04" })
+  check_eq(ex("Malaysian one three five zero, proceed direct PKT zero four"), "DIRECT MAS1350 PKT04")
+  check_eq(ex("MAS1350 direct PKT 04"), "DIRECT MAS1350 PKT04")
+  asked(ex("MAS1350 direct PKT zero four five"), "PKT045 is no waypoint")
+end

@@ -37,3 +37,22 @@ TEST_CASE("digits with an x typed onto them are a rate, no garbled opening calls
         std::vector<std::string>{"RYR8UK"});
   CHECK(aircraft_in("ryanair 2X climb", {"RYR2X", "KLM12"}) == std::vector<std::string>{"RYR2X"});
 }
+
+TEST_CASE(
+    "a defined waypoint's letters said apart from its digits are that waypoint, every digit "
+    "joined") {
+  auto waypoints_in = [](const std::string& text) {
+    StaticWorld world;
+    world.add_waypoint("PKT04");
+    const std::vector<Token> toks = lex(text);
+    std::vector<bool> used(toks.size(), false);
+    std::vector<std::string> found;
+    for (const auto& r : find_references(toks, &world, used, names()))
+      if (r.kind == RefKind::kWaypoint) found.push_back(r.name + (r.exists ? "" : "?"));
+    return found;
+  };
+  CHECK(waypoints_in("direct PKT zero four") == std::vector<std::string>{"PKT04"});
+  CHECK(waypoints_in("direct PKT 04") == std::vector<std::string>{"PKT04"});
+  // a digit more is another name: the letters stay a name of their own, unknown
+  CHECK(waypoints_in("direct PKT zero four five") == std::vector<std::string>{"PKT?"});
+}
