@@ -343,7 +343,7 @@ return function(intent, rule, words)
   end }
   -- altitude
   -- ("rate of climb 1500", "rate descend 2000": the motion the rate's word names, straight after it or "of")
-  rule { "climb climbing descend descending altitude alt cruise altitudes drop", false, prev = { 2, "rate" },
+  rule { "climb climbing descend descending desc dsc clb altitude alt cruise altitudes drop", false, prev = { 2, "rate" },
          when = function(g, i) return g:word(i - 1, "rate") or (g:word(i - 1, "of") and g:word(i - 2, "rate")) end }
   -- "1800 fpm descending", "a thousand foot a minute descent": the word gives the rate's sign
   rule { "descending climbing descent", false, prev = { 2, "fpm minute min" } }

@@ -21602,3 +21602,10 @@ do
   check_eq(ex("MAS1350 direct PKT 04"), "DIRECT MAS1350 PKT04")
   asked(ex("MAS1350 direct PKT zero four five"), "PKT045 is no waypoint")
 end
+
+-- Cycle 66 (lead): "rate of desc", "rate of clb": the rate's motion abbreviated names no level (R238)
+do
+  local _, ex = scene({ "CRE SAS4421 A320 55 10 90 FL250 280" })
+  check_eq(ex("sas4421 rate of desc 2500"), "VS SAS4421 -2500")
+  check_eq(ex("sas4421 rate of clb 1500"), "VS SAS4421 1500")
+end
