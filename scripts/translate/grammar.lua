@@ -2512,7 +2512,8 @@ end
 -- punctuation closing that word, and it none of G.ff_lead: the words that open a fast-forward of its own,
 -- "then ff", "and ff", "now ff", "can you ff"), and with no duration, "until" or "forward" after it, it is the
 -- softener and is dropped; TrafScript's FF (fast time) is never read from it. "ff" alone, first in its clause
--- or with a duration stays the fast-forward.
+-- or with a duration stays the fast-forward, and so does "ff" after a verb that ends fast time ("stop ff", "cancel the
+-- ff": lexicon.ff_ended, G.ff_ended_before).
 G.ff_lead = { ["then"] = true, ["and"] = true, en = true, dan = true, now = true, nu = true, ok = true, okay = true,
   oke = true, so = true, just = true, please = true, pls = true, plz = true, also = true, lets = true,
   ["let's"] = true, can = true, could = true, would = true, will = true, you = true, we = true, i = true,
@@ -2550,6 +2551,14 @@ function G.after_typed_setting(toks, i)
   return value == "ON" or value == "OFF" or value:match("^%d+%.?%d*$") ~= nil
     or (value:match("^%u+$") ~= nil and usage:find(" " .. value .. " ", 1, true) ~= nil)
 end
+G.ff_ended_set = {}
+for _, w in ipairs(lexicon.ff_ended) do G.ff_ended_set[w] = true end
+-- whether toks[i] follows a verb that ends fast time, "the", "this" or "that" between ("stop ff", "end this ff")
+function G.ff_ended_before(toks, i)
+  local k = i - 1
+  while k >= 1 and (toks[k]:lower() == "the" or toks[k]:lower() == "this" or toks[k]:lower() == "that") do k = k - 1 end
+  return k >= 1 and G.ff_ended_set[toks[k]:lower()] == true
+end
 function G.dutch_chat_words(text)
   if not (text:find("%f[%a]ff%f[%A]") or text:find("%f[%a]en%f[%A]") or text:find("%f[%a]met%f[%A]")) then
     return text
@@ -2570,7 +2579,7 @@ function G.dutch_chat_words(text)
       if toks[k]:match("[,;:]$") then break end
     end
     if toks[i]:match("^ff[%.!?]?$") and not prev:match("%p$") and not G.ff_lead[prev:lower()] and not timed
-        and not G.after_typed_setting(toks, i) then
+        and not G.after_typed_setting(toks, i) and not G.ff_ended_before(toks, i) then
       toks[i] = toks[i]:match("[%.!?]$") and toks[i]:sub(-1) or ""
       changed = true
     end

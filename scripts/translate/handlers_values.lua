@@ -1261,6 +1261,11 @@ return function(H, f, wrap, compass)
         return self:need(string.format("What heading should %s fly: %03d or %d? I heard '%s'.", id, hdg, hdg * 10,
           self:raw(abs.b, abs.e)))
       end
+      -- "hdg 07" typed: a leading zero and one digit may have lost a final digit as well (007 or 070?)
+      if n.typed and #n.digits == 2 and n.digits:sub(1, 1) == "0" and hdg >= 1 then
+        return self:need(string.format("What heading should %s fly: %03d or %03d? I heard '%s'.", id, hdg, hdg * 10,
+          self:raw(abs.b, abs.e)))
+      end
       -- "hdg 2" typed: one digit, no leading zero, is a heading cut short
       if n.typed and #n.digits == 1 and hdg >= 1 and hdg == math.floor(hdg) then
         return self:need("What heading should " .. id .. " fly? I heard " .. n.digits .. ": headings have three digits.")

@@ -774,10 +774,10 @@ function M.typed(state, ctx)
         and (c:match("^%S+[%s,]+%S+[%s,]+%d%d?[%s,]+[LlRr]%a*%s*$") or c:match("^%S+[%s,]+%S+[%s,]+%d%d?%s*$")) then
       return "english"
     end
-    -- "dlh3gm hdg 27", "hdg 2": a heading typed with one or two digits and no leading zero, in lower case,
-    -- is English (027 or 270? asked there); "DLH3GM HDG 27" in capitals stays TrafScript, heading 027
+    -- "dlh3gm hdg 27", "hdg 2", "hdg 07": a heading typed with one or two digits, in lower case, is English (027 or
+    -- 270? 007 or 070? asked there); "DLH3GM HDG 27" in capitals stays TrafScript, heading 027
     local verb = c:match("^(%S+)")
-    if name == "HDG" and verb ~= verb:upper() and c:match("^%S+[%s,]+%S+[%s,]+[1-3]?%d%f[^%w.]")
+    if name == "HDG" and verb ~= verb:upper() and (c:match("^%S+[%s,]+%S+[%s,]+[0-3]?%d%f[^%w.]"))
         and tonumber(c:match("^%S+[%s,]+%S+[%s,]+(%d+)")) <= 36 then
       return "english"
     end

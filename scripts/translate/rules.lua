@@ -2790,11 +2790,12 @@ return function(intent, rule, words)
   rule { "interrupt interrupted", "hold", prev = { 4, "@sim" } }
   -- "run in fast time until I say stop": the stop is when the run ends, not an instruction
   rule { "stop", false, prev = { 3, "until" } }
-  -- "stop the fast time", "stop this fast forward": fast time ended (m:fast_forward reads the verb, OP), never a pause
+  -- "stop the fast time", "stop this fast forward", "stop ff": fast time ended (m:fast_forward reads the verb, OP),
+  -- never a pause
   rule { "stop", false, when = function(g, i)
     local k = i + 1
     while g:word(k, "the this that our your current") do k = k + 1 end
-    return g:word(k, "fast") and g:word(k + 1, "time forward")
+    return g:word(k, "ff fastforward") or (g:word(k, "fast") and g:word(k + 1, "time forward"))
   end }
   rule { "stop", "hold", near = { 3, "@sim" } }
   -- "sim stop for a moment": the simulation named before its verb (verb-final order), no aircraft named

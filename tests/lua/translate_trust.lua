@@ -21609,3 +21609,23 @@ do
   check_eq(ex("sas4421 rate of desc 2500"), "VS SAS4421 -2500")
   check_eq(ex("sas4421 rate of clb 1500"), "VS SAS4421 1500")
 end
+
+-- Cycle 67 (lead): "ff" after a verb that ends fast time ("stop ff", "cancel the ff") is the fast-forward ended
+-- (OP), never Dutch chat's softener dropped to leave "stop" (a pause) (R238)
+do
+  local _, ex = scene({ "CRE SAS4421 A320 55 10 90 FL250 280" })
+  check_eq(ex("stop ff"), "OP")
+  check_eq(ex("cancel the ff pls"), "OP")
+  check_eq(ex("hold the sim ff"), "HOLD")
+  check_eq(ex("sas4421 ff naar fl150"), "ALT SAS4421 FL150")
+end
+
+-- Cycle 67 (lead): a heading typed in lower case as a leading zero and one digit ("hdg 07") may have lost a digit
+-- (007 or 070?): asked, as "hdg 27" is; "SAS4421 HDG 07" in capitals stays TrafScript (R238)
+do
+  local _, ex = scene({ "CRE SAS4421 A320 55 10 90 FL250 280" })
+  check_eq(ex("sas4421 hdg 07"), "ASK What heading should SAS4421 fly: 007 or 070? I heard '07'.")
+  check_eq(ex("sas4421 turn left heading 09"), "ASK What heading should SAS4421 fly: 009 or 090? I heard '09'.")
+  check_eq(ex("SAS4421 HDG 07"), "HDG SAS4421 07")
+  check_eq(ex("sas4421 hdg 070"), "HDG SAS4421 070")
+end
