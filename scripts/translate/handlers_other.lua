@@ -4379,6 +4379,21 @@ return function(H, f, compass)
     end
     return false
   end
+  -- True when segment s names a switch that the request asks about, its state shown, never switched: with no value
+  -- and either "status" with no "on" or "off" ("show detection status"), or no "on" or "off" said, no switching word
+  -- or request's verb anywhere, and a noun of its settings or a question ("cd settings?", "asas settings", "reso
+  -- status?", "cd?"; "could you switch detection and resolution on?" switches both; "could you add the
+  -- turbulence?" is asked for)
+  function m:switch_asked(s)
+    if #self:quantities(1, #self.t + 1) > 0 then return false end
+    if self:word_in(1, #self.t + 1, "status") and not self:word_in(1, #self.t + 1, "on off enable disable activate") then
+      return true
+    end
+    return self:on_off(s) < 0
+      and not self:word_in(1, #self.t + 1, "@on @off switch turn could can would will add enable activate start use")
+      and (self:word_in(1, #self.t + 1, "settings setting config configuration options status")
+        or self.t[self:first_sentence_end()].text == "?")
+  end
   -- (a switch asked about: a question, or a request opening with "what" and no "on" or "off" in it, "what's the
   -- conflict detection setting", or with "is" or "are", "is conflict detection on": its state shown, never set)
   function m:switch(s, spec)
@@ -4411,15 +4426,7 @@ return function(H, f, compass)
       if self.t[q].text == "?" and self:word(q - 1, "not") and self:word(q - 2, "or") then self:explain(q - 2, q) end
       return self:emit(spec.cmd)
     end
-    -- ("cd settings?", "asas settings", "cd?": the switch named with no "on" or "off" said, with a noun of its
-    -- settings or as a question, no value and no switching word or request's verb anywhere in it ("could you
-    -- switch detection and resolution on?" switches both; "could you add the turbulence?" is asked for), asks what it is: its state shown, never switched)
-    if self:on_off(s) < 0 and #self:quantities(1, #self.t + 1) == 0
-        and not self:word_in(1, #self.t + 1, "@on @off switch turn could can would will add enable activate start use")
-        and (self:word_in(1, #self.t + 1, "settings setting config configuration options")
-        or self.t[self:first_sentence_end()].text == "?") then
-      return self:emit(spec.cmd)
-    end
+    if self:switch_asked(s) then return self:emit(spec.cmd) end
     -- "run conflict detection every 2 seconds": the interval of detection (DT ASAS); switched on too
     -- only when said ("turn on detection every 2 seconds")
     if spec.cmd == "ASAS" then
@@ -5128,7 +5135,7 @@ return function(H, f, compass)
     local b = s.b > 1 and s.b - 1 or s.b
     -- ("what's the resolution method", "?" typed or not: the method asked, when none is named and no switch said)
     local named = self:word_in(1, #self.t + 1, "mvp") or self:word_in(b, s.e, "@mvp") or self:on_off(s) >= 0
-    if self:asks_setting(not named) then
+    if self:asks_setting(not named) or not named and self:switch_asked(s) then
       -- ("is MVP resolution currently on?": the method asked about names the setting shown)
       for k = 1, #self.t do
         if self:word(k, "mvp") then self:explain(k, k + 1) end

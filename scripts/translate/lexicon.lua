@@ -703,12 +703,16 @@ return {
     trn = { { word = "turn", next = "left right lft rt lt rgt l r hdg heading" },
             { word = "turn", prev = "#start", after_next = "left right lft rt lt rgt l r hdg heading" } },
     -- (an experimenter's shorthand of the command words: "head 030", "incr 280", "rm ooabc", "del rte",
-    -- "lvl?", "vert sep 2000ft", "KLM12 rm wpt SPY"; "head" before no number, "rm" inside a line before no waypoint
-    -- word and "del" before no route word stay as typed; "lvl" after a place's verb is the LVL navaid)
+    -- "lvl?", "vert sep 2000ft", "KLM12 rm wpt SPY", "KLM12 rm SPY from rte"; "head" before no number, "rm" inside a
+    -- line before no waypoint word nor "from" after the next and "del" before no route word stay as typed; "lvl"
+    -- after a place's verb is the LVL navaid)
     head = { word = "heading", next = "#number" },
     incr = { word = "increase", next = "#number speed spd to" }, inc = { word = "increase", next = "#number speed spd to" },
     decr = { word = "decrease", next = "#number speed spd to" },
-    rm = { { word = "remove", prev = "#start" }, { word = "delete", next = "wpt waypoint" } },
+    rm = { { word = "remove", prev = "#start" }, { word = "delete", next = "wpt waypoint" },
+           { word = "remove", after_next = "from" } },
+    -- ("ezy45rt whr is it now", "wht is klm12 doing": the question's word typed without its vowels)
+    whr = { word = "where", next = "is are's" }, wht = { word = "what", next = "is are's" },
     del = { word = "delete", next = "rte route wpt waypoint" },
     rte = { word = "route" },
     -- ("add wp sopok", "new wp ctr at 52.31n 4.76e": a waypoint typed short after a verb or an article; elsewhere,

@@ -97,6 +97,19 @@ return function(intent, rule, words)
   rule { "*", false, prev = { 1, "command cmd" }, when = function(g, i) return help_asked(g, i - 1) end }
   rule { "commands command cmds", "help", when = help_asked }
   rule { "*", false, prev = { 3, "advise" }, when = function(g, i) return g:preceded_by(i, 2, "able") end }  -- "advise when able direct X"
+  -- "klm1234 alt?", "DLH4AX hdg and spd?": the aircraft, then only measures of its state by name and a question
+  -- mark ending the request, no value: its state asked (POS), never a level or heading to fly ("ezy45 fl?", the
+  -- level's prefix with its number missing, is asked)
+  rule { "alt altitude hdg heading spd speed level pos position", "pos", when = function(g, i)
+    if not (#g.t > i and g.t[#g.t].text == "?" and g.t[#g.t].kind == "punct") then return false end
+    local r = g:refs_in(1, i, "aircraft")[1]
+    if not (r and r.b == g:skip_fillers(1)) then return false end
+    for k = r.e, #g.t - 1 do
+      if not (g:word(k, "alt altitude hdg heading spd speed level pos position and")
+          or (g.t[k].kind == "punct" and g.t[k].text == ",")) then return false end
+    end
+    return true
+  end }
   -- "I think it's paused", "is it stopped?": the run's state told or asked, no instruction ("keep it paused"
   -- instructs)
   rule { "pause paused stop stopped freeze frozen", false, prev = { 1, "it is" }, when = function(g, i)
@@ -2541,10 +2554,13 @@ return function(intent, rule, words)
       and g:has_ref(1, #g.t + 1, "type")
   end }
   -- "lnav status klm1607?", "the vnav state of KLM12", "status of lnav for X": the switch's state, asked by the
-  -- switch's own query (handlers_other m:nav_asked), no position report
+  -- switch's own query (handlers_other m:nav_asked), no position report; "cd status", "conflict detection status":
+  -- the simulation's switch shown by its own command (m:switch), no aircraft's position
   rule { "status state", false, when = function(g, i)
     return g:word(i - 1, "lnav vnav") or g:word(i - 2, "lnav vnav") and g:word(i - 1, "the its")
       or g:word(i + 1, "of") and g:word(i + 2, "lnav vnav")
+      or g:word(i, "status") and (g:word(i - 1, "cd asas detection resolution reso cr")
+        or g:word(i + 1, "of") and g:word(g:word(i + 2, "the") and i + 3 or i + 2, "cd asas conflict resolution reso"))
   end }
   rule { "details status info information state pos", "pos" }
   -- "show me both of them, KLM12 and EIN45", "KLM12 and EIN45 are in conflict, show me the both of them": the

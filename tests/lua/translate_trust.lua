@@ -18133,7 +18133,8 @@ do
   -- an aircraft's switch asked about with its command's name shows it, never sets it
   check_eq(ex("klm77 vnav?"), "VNAV KLM77")
   check_eq(ex("lnav baw8ck ?"), "LNAV BAW8CK")
-  asked(ex("klm77 alt?"), "ALT needs a level: asked")
+  -- (an instruction's command name asked about, "klm77 alt?", asks the aircraft's state: Cycle 67 below)
+  check_eq(ex("klm77 alt?"), "POS KLM77")
   -- a setting typed as TrafScript, then "ff": the fast-forward too; Dutch chat's "ff" after a word stays dropped
   check_eq(ex("asas on ff"), "ASAS ON ; FF")
   check_eq(ex("zoner 6 ff"), "ZONER 6 ; FF")
@@ -21628,4 +21629,36 @@ do
   check_eq(ex("sas4421 turn left heading 09"), "ASK What heading should SAS4421 fly: 009 or 090? I heard '09'.")
   check_eq(ex("SAS4421 HDG 07"), "HDG SAS4421 07")
   check_eq(ex("sas4421 hdg 070"), "HDG SAS4421 070")
+end
+
+-- Cycle 67 (lead): an aircraft and only the names of its measures, as a question ("klm1234 alt?"), asks its state
+-- (POS), no level to fly; a level's prefix alone ("fl?") stays asked
+do
+  local _, ex = scene({ "CRE SAS4421 A320 55 10 90 FL250 280", "CRE KLM12 B738 55.2 10 90 FL250 280" })
+  check_eq(ex("sas4421 alt?"), "POS SAS4421")
+  check_eq(ex("klm12, hdg and spd?"), "POS KLM12")
+  asked(ex("sas4421 fl?"), "a level's prefix with no number")
+  asked(ex("sas4421 alt"), "no question mark: a level to fly, not said")
+end
+
+-- Cycle 67 (lead): a simulation switch's status ("cd status?", "show detection status", "status of cd",
+-- "conflict resolution status") is shown by the switch's own command, never switched on nor an aircraft's POS
+-- (with one aircraft flying, "status" alone would name it)
+do
+  local _, ex = scene({ "CRE SAS4421 A320 55 10 90 FL250 280" })
+  check_eq(ex("cd status?"), "ASAS")
+  check_eq(ex("conflict detection status"), "ASAS")
+  check_eq(ex("um show detection status"), "ASAS")
+  check_eq(ex("what is the status of conflict detection"), "ASAS")
+  check_eq(ex("conflict resolution status"), "RESO")
+  check_eq(ex("sas4421 status"), "POS SAS4421")
+end
+
+-- Cycle 67 (lead): console shorthand "rm X from rte" removes the waypoint from the route; "whr"/"wht" before "is"
+-- are "where"/"what" (R238)
+do
+  local _, ex = scene({ "CRE SAS4421 A320 55 10 90 FL250 280", "DEFWPT ARKOK 55 11", "ADDWPT SAS4421 ARKOK" })
+  check_eq(ex("sas4421 rm arkok from rte"), "DELWPT SAS4421 ARKOK")
+  check_eq(ex("sas4421 whr is it now"), "POS SAS4421")
+  check_eq(ex("wht is sas4421 doing"), "POS SAS4421")
 end
