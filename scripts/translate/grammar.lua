@@ -617,14 +617,27 @@ function G.said_whole(text)
       if ok then return h end
     end
   end
+  -- (in a marked sentence a digit of foreign_digits is read, and so is a hesitation's word that is a digit there,
+  -- foreign_hesitation_digits, beside one with no punctuation between: "desça nível um oito zero" is 180, its "um"
+  -- no English "um")
+  local F, HD = lexicon.foreign_digits, lexicon.foreign_hesitation_digits
+  local function digit_at(toks, bare, i)
+    if F[bare[i]] then return F[bare[i]] end
+    if HD[bare[i]] and ((F[bare[i + 1]] and not toks[i]:match("%p$"))
+        or (i > 1 and F[bare[i - 1]] and not toks[i - 1]:match("%p$"))) then
+      return HD[bare[i]]
+    end
+  end
   local function read(index, marked)
     local toks, bare = plain_words(text)
     if not any_of(bare, index) then return text end
     return tokens.rewrite(text, toks, function(i)
-      local h = form_at(index, toks, bare, i, marked)
+      -- (a sentence marked in a language reads the discourse words of every language too: "mantenha nível 250,
+      -- ciente")
+      local h = form_at(index, toks, bare, i, marked) or (marked and form_at(indexes.discourse, toks, bare, i, false))
       local n = h and #h.words or 1
       if h and h.means == false then return table.concat(toks, " ", i, i + n - 1), i + n end
-      local en = h and h.means or (marked and lexicon.foreign_digits[bare[i]])
+      local en = h and h.means or (marked and digit_at(toks, bare, i))
       if en then return en .. (toks[i + n - 1]:match("%p+$") or ""), i + n end
     end)
   end

@@ -2740,6 +2740,8 @@ return {
       sorry = { "maafi", "maaf kijiye", "kshama" }, ["then"] = { "phir", "uske baad" },
       wait = { "ruko", "rukiye" }, okay = { "theek hai", "thik hai", "achha", "accha" },
       please = { "kripya", "meherbani" }, thanks = { "shukriya", "dhanyavad", "dhanyavaad", "dhanyawad" } },
+    portuguese = { yes = { "positivo", "afirmativo" }, sorry = { "desculpe", "perdão", "perdao" },
+      okay = { "ciente", "beleza" } },
     arabic = { yes = { "naam", "aywa", "aiwa" }, sorry = { "aasif", "mutaassif" },
       ["then"] = { "thumma", "baadain", "badain" }, wait = { "lahza", "lahtha", "istanna" },
       okay = { "tayyib", "tayeb", "mashi" }, please = { "min fadlak", "min fadlik", "law samaht" },
@@ -3038,12 +3040,22 @@ return {
       ["nivel de voo"] = "flight level", velocidade = "speed", graus = "degrees", depois = "then",
       ["e depois"] = "and then", ["depois de"] = "after", ["tá bom"] = "ok", ["ta bom"] = "ok", ["está bom"] = "ok",
       ["esta bom"] = "ok",
+      -- a Brazilian controller's radio verbs in an English clearance ("desça nível 180", "curva à direita proa 090",
+      -- "mantenha 9000", "direto SBGR"; the accents typed or not)
+      ["desça"] = "descend", desca = "descend", desce = "descend", descer = "descend", suba = "climb",
+      sobe = "climb", subir = "climb", curva = "turn", ["à direita"] = "right", ["a direita"] = "right",
+      direita = "right", ["pela direita"] = "right", ["à esquerda"] = "left", ["a esquerda"] = "left",
+      esquerda = "left", ["pela esquerda"] = "left", mantenha = "maintain", ["mantém"] = "maintain",
+      manter = "maintain", reduza = "reduce", reduzir = "reduce", aumente = "increase", aumentar = "increase",
+      direto = "direct", ["direto para"] = "direct to", prossiga = "proceed", rumo = "heading",
+      ["pés"] = "feet", ["velocidade vertical"] = "vertical speed", apague = "delete", remova = "remove",
+      mova = "move", aguarde = "stand by",
       -- the experimenter's commands ("cria TAM4444 A320 ...", "avança 10 minutes")
       cria = "create", crie = "create", criar = "create", ["avança"] = "advance", avanca = "advance",
       ["avance"] = "advance",
     },
     -- words of `words` said the same in Spanish or English: no sign of Portuguese alone
-    shared = { nivel = true, ["nível"] = true, avance = true },
+    shared = { nivel = true, ["nível"] = true, avance = true, suba = true, aumente = true },
     -- ("cria o GLO1234": the article, read only in a sentence another word marks Portuguese)
     joining = { o = "the" },
   },

@@ -21662,3 +21662,17 @@ do
   check_eq(ex("sas4421 whr is it now"), "POS SAS4421")
   check_eq(ex("wht is sas4421 doing"), "POS SAS4421")
 end
+
+-- Cycle 67 (lead): a Brazilian controller's Portuguese in an English clearance: the radio verbs ("desça", "curva à
+-- direita", "mantenha", "direto"), the digits of a marked sentence with its "um" (one, no English hesitation: FL180,
+-- never FL80), and the discourse words of every language read in it too ("ciente", "positivo")
+do
+  local _, ex = scene({ "CRE TAM3341 A320 -23.4 -46.5 090 FL250 280", "CRE GLO1204 B738 -23.0 -46.0 270 FL180 260" })
+  check_eq(ex("TAM3341 desça nível um oito zero, obrigado"), "ALT TAM3341 FL180")
+  check_eq(ex("Gol one two zero four, curva à direita proa zero nove zero"), "HDG GLO1204 90 RIGHT")
+  check_eq(ex("Gol 1204 curva a esquerda proa 240"), "HDG GLO1204 240 LEFT")
+  check_eq(ex("TAM3341 mantenha nível 250, ciente"), "ALT TAM3341 FL250")
+  check_eq(ex("Gol um dois zero quatro, suba nível dois um zero"), "ALT GLO1204 FL210")
+  check_eq(ex("GLO1204, aguarde, descend 7000 feet"), "ALT GLO1204 7000")
+  asked(ex("TAM3341 desça nível, um, oito zero"), "a digit parted by commas")
+end
