@@ -17034,6 +17034,10 @@ local PLACE_SLOTS = { add = true, append = true, insert = true, dct = true, dtc 
   -- "hdg 210 vctr alb")
   ["until"] = true, till = true, from = true, vectors = true, vector = true, vctr = true, vect = true, vects = true }
 local TYPED_PLACE_NM = 250
+-- the verbs of going whose "to" opens a place's slot, straight after or after an aircraft's id ("swa3 go to merit",
+-- "send swa3 to camrn"); "to" after anything else ("climb to", "turn to") opens none
+G.place_motion_verbs = set_of({ "go", "goes", "going", "head", "heading", "fly", "flying", "proceed", "proceeding",
+  "send", "route", "reroute", "navigate", "track", "steer" })
 -- the slots of PLACE_SLOTS that are a place's verb: a word straight after one that squawk knows only as
 -- another word's inflection ("ezy45 add echos", ECHOS; "echo" is a command) is read as a place too
 G.place_verbs = set_of({ "add", "append", "insert", "dct", "dtc", "drct", "direct" })
@@ -17673,6 +17677,15 @@ function G.named_idents(text, world)
   for c = #cuts, 1, -1 do text = text:sub(1, cuts[c][1] - 1) .. text:sub(cuts[c][2]) end
   return text
 end
+-- True when the last word of `out` (the words read so far, each with its leading space), "to", follows a verb of
+-- going (G.place_motion_verbs), straight or with one word between ("send swa3 to")
+function G.went_to(out)
+  for back = 1, 2 do
+    local w = out[#out - back] and out[#out - back]:match("(%a+)$")
+    if w and G.place_motion_verbs[w:lower()] then return true end
+  end
+  return false
+end
 local function typed_places(text, world)
   if not world.place_known then return text end
   -- (ids[w]: an aircraft's callsign in lower case; built when first read)
@@ -17708,7 +17721,7 @@ local function typed_places(text, world)
   end
   -- (a name is read only after a word of PLACE_SLOTS: with none said, the words stand as they are)
   local padded = " " .. text:lower() .. " "
-  local slots = padded:find(" where", 1, true) ~= nil
+  local slots = padded:find(" where", 1, true) ~= nil or padded:find(" to ", 1, true) ~= nil
   for k = 1, #PLACE_SLOT_PATTERNS do
     local p = PLACE_SLOT_PATTERNS[k]
     if padded:find(p.word, 1, true) and padded:find(p.pattern) then
@@ -17781,7 +17794,8 @@ local function typed_places(text, world)
       or (w == "where" and (rest == "'s" or (rest == "" and parts[k] and parts[k][2]:lower() == "is")))
       or (w == "is" and slot and (out[#out - 1] or ""):lower():match("where$") ~= nil)
       or (w ~= nil and rest == "" and (PLACE_SLOTS[w] ~= nil
-      or (w == "to" and slot and PLACE_SLOTS[(out[#out - 1] and out[#out - 1]:match("(%a+)$") or ""):lower()] ~= nil)))
+      or (w == "to" and slot and PLACE_SLOTS[(out[#out - 1] and out[#out - 1]:match("(%a+)$") or ""):lower()] ~= nil)
+      or (w == "to" and G.went_to(out))))
   end
   return table.concat(out)
 end

@@ -2163,7 +2163,13 @@ return function(intent, rule, words)
     end
     return false
   end }
-  rule { "go fly", "direct", next = "to", when = function(g, i)
+  -- ("swa3 head to MERIT": "head" as "go"; "send SWA3 to CAMRN": the aircraft sent between the verb and its "to")
+  rule { "send", "direct", when = function(g, i)
+    local r = g:refs_in(i + 1, i + 2, "aircraft")[1]
+    local e = r ~= nil and r.b == i + 1 and g:word(r.e, "to") and g:place_gone_to(r.e + 1)
+    return e and not g:word(e, "then after and") or false
+  end }
+  rule { "go fly head", "direct", next = "to", when = function(g, i)
     local e = not g:word(i - 1, "@purpose_modals") and g:place_gone_to(i + 2)
     if not e then return false end
     local x = g:word(e, "and") and e + 1 or e
@@ -2171,7 +2177,7 @@ return function(intent, rule, words)
     local n = g:word(x, "then after") and (g:word(x + 1, "to") and x + 2 or x + 1)
     return not (n and g:place_gone_to(n))
   end }
-  rule { "go fly", "addwpt", next = "to", when = function(g, i)
+  rule { "go fly head", "addwpt", next = "to", when = function(g, i)
     local e = not g:word(i - 1, "@purpose_modals") and g:place_gone_to(i + 2)
     if not e then return false end
     local x = g:word(e, "and") and e + 1 or e

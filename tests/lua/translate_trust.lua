@@ -21676,3 +21676,17 @@ do
   check_eq(ex("GLO1204, aguarde, descend 7000 feet"), "ALT GLO1204 7000")
   asked(ex("TAM3341 desça nível, um, oito zero"), "a digit parted by commas")
 end
+
+-- Cycle 67 (lead): in a line typed in lower case, a fix near the traffic after a verb of going and its "to" ("swa3
+-- go to merit", "send swa3 to camrn") is that fix, flown to directly; "head to" is "go to"; "to" after any other
+-- verb opens no place ("climb to merit" is asked)
+do
+  local _, ex = navscene({ "CRE SWA3 B737 39.9 -75.2 045 9000 250" }, "fixes typed in lower case")
+  if ex then
+    check_eq(ex("swa3 go to merit"), "ADDWPT SWA3 MERIT ; DIRECT SWA3 MERIT")
+    check_eq(ex("swa3 head to merit"), "ADDWPT SWA3 MERIT ; DIRECT SWA3 MERIT")
+    check_eq(ex("can u send swa3 to camrn"), "ADDWPT SWA3 CAMRN ; DIRECT SWA3 CAMRN")
+    asked(ex("swa3 climb to merit"), "a level's verb before a fix")
+    asked(ex("swa3 go to sleep"), "no place")
+  end
+end
