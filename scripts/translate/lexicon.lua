@@ -174,7 +174,7 @@ return {
         "mate" },
     -- chat shorthand and interjections of typed notes ("what's ryanair doing rn", "lol", "ugh", "thx")
     chat = { "rn", "atm", "asap", "lol", "lmao", "ugh", "argh", "meh", "oops", "tbh", "imo", "btw", "fyi", "plz",
-        "thx", "pls", "haha", "idk", "tho", "tbf",
+        "thx", "pls", "haha", "idk", "tho", "tbf", "yo", "omg", "bruh", "dude", "ngl", "smh", "thnx", "thanx", "tysm",
         -- the Irish call for attention, "come here" ("United two tree, c'mere, what level are you at")
         "c'mere", "cmere",
         -- a fault of the simulation given as the reason ("kill aza204 its bugged"), a break taken ("need coffee")

@@ -21690,3 +21690,11 @@ do
     asked(ex("swa3 go to sleep"), "no place")
   end
 end
+
+-- Cycle 67 (lead): a texting student's interjections ("yo", "omg", "tysm", "dude") are chat, no word left over
+do
+  local _, ex = scene({ "CRE AAL101 A321 41.0 -72.5 270 FL340 290" })
+  check_eq(ex("yo aal101 descend to fl280 and slow to 260"), "ALT AAL101 FL280 ; SPD AAL101 260")
+  check_eq(ex("omg aal101 turn left heading 200 tysm"), "HDG AAL101 200 LEFT")
+  check_eq(ex("dude pause it"), "HOLD")
+end
