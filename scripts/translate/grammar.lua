@@ -656,7 +656,7 @@ function G.said_whole(text)
   return text
 end
 
--- Russian "da" (yes) and "net"/"nyet" (no) in a Russian-speaking controller's English are English "yes" and "no"
+-- Russian "da" (yes) and "net"/"nyet" (no), and Arabic "la" (no), in a controller's English are English "yes" and "no"
 -- where they are set off as those are: closed by a mark before more words ("Uzbek 2711 da, turn right heading 060",
 -- "climb flight level 150 net, flight level 130"), or a mark (or nothing) before and a mark (or the request's end)
 -- after ("direct MEDUD, da"); "net"/"nyet" also straight after a value, before more words ("flight level 150 net
@@ -670,13 +670,14 @@ G.hai_place_before = set_of({ "direct", "to", "at", "via", "over", "waypoint", "
   "from", "and", "then" })
 function G.russian_yes_no(text)
   local low = text:lower()
-  if not (low:find("%f[%a]da%f[%A]") or low:find("%f[%a]n[y]?et%f[%A]") or low:find("%f[%a]hai%f[%A]")) then
+  if not (low:find("%f[%a]da%f[%A]") or low:find("%f[%a]n[y]?et%f[%A]") or low:find("%f[%a]hai%f[%A]")
+      or low:find("%f[%a]la%f[%A]")) then
     return text
   end
   local toks, bare = plain_words(text)
   return tokens.rewrite(text, toks, function(i)
     local w = bare[i]
-    local en = ((w == "da" or w == "hai") and "yes") or ((w == "net" or w == "nyet") and "no")
+    local en = ((w == "da" or w == "hai") and "yes") or ((w == "net" or w == "nyet" or w == "la") and "no")
     if not en or toks[i]:match("^%u%u") then return nil end
     if w == "hai" and (not (i == 1 or toks[i - 1]:match("%p$")) or not (toks[i]:match("%p$") or not toks[i + 1])
         or G.navaid_slot(bare, i) or G.hai_place_before[bare[i - 1] or ""]) then
@@ -685,6 +686,13 @@ function G.russian_yes_no(text)
     -- (the word said again, "da da,", "net net": one word, set off as its last is)
     local j = i
     while bare[j + 1] == w and not toks[j]:match("%p$") and not toks[j + 1]:match("^%u%u") do j = j + 1 end
+    -- (Arabic "la" (no), never a navaid's place nor an article: said again, "la la ...", or closed by a mark before
+    -- more words, "la, not heading 135")
+    if w == "la" then
+      if G.navaid_slot(bare, i) or G.hai_place_before[bare[i - 1] or ""] then return nil end
+      if j > i or (toks[j]:match("%p$") and toks[j + 1]) then return en .. (toks[j]:match("%p+$") or ""), j + 1 end
+      return nil
+    end
     local closed = toks[j]:match("%p$") ~= nil
     local opened = i == 1 or toks[i - 1]:match("%p$") ~= nil
     local value = en == "no" and i > 1 and not toks[i - 1]:match("%p$")
@@ -1755,7 +1763,15 @@ local function negated_values(text)
         j = j + 1
         if toks[j - 1].raw:match(",$") then break end
       end
-      if numbers > 0 and toks[j - 1].raw:match(",$") and toks[j] then put(t.at, "", toks[j].at) end
+      -- ("no, not heading 135, make it 140": the value put in its place by "make it", the ruled-out value's noun
+      -- naming it)
+      local noun = NEGATED_NOUNS[toks[k + 1] and toks[k + 1].bare or ""] and toks[k + 1].raw
+      if numbers > 0 and toks[j - 1].raw:match(",$") and noun and toks[j] and toks[j].bare == "make"
+          and toks[j + 1] and toks[j + 1].raw:lower() == "it" and toks[j + 2] then
+        put(t.at, noun .. " ", toks[j + 2].at)
+      elseif numbers > 0 and toks[j - 1].raw:match(",$") and toks[j] then
+        put(t.at, "", toks[j].at)
+      end
     elseif t.bare == "not" and t.raw:lower() == "not" and value(toks[v]) and v > from() then
       local j, numbers, stop = k + 1, 0, false
       while toks[j] and (value(toks[j]) or (numbers == 0 and NEGATED_NOUNS[toks[j].bare])) do
@@ -18300,14 +18316,20 @@ function M.translate(text, world)
       return key and key .. value
     end)
   end
-  -- a decimal said with "point" ("42 point 2", "minus 122 point 4", "0 point 5", "mach point 7 8"): the number
-  -- written, with one or two digits after the point, its whole part of one or two digits or after "minus" (a
-  -- heading's "270 point 5" stays apart, asked)
+  -- a decimal said with "point" ("42 point 2", "minus 122 point 4", "0 point 5"): the number written, with one or
+  -- two digits after the point, its whole part of one or two digits or after "minus" (a heading's "270 point 5"
+  -- stays apart, asked)
   if text:find("point", 1, true) then
     for _, whole in ipairs({ "%f[%w](%d%d?)", "(%f[%a][Mm]inus%s+%d%d%d)" }) do
       text = text:gsub(whole .. "%s+point%s+(%d)%s+(%d)%f[%D]", "%1.%2%3"):gsub(whole .. "%s+point%s+(%d%d?)%f[%D]", "%1.%2")
     end
-    text = text:gsub("%f[%a]([Mm]ach)%s+point%s+(%d)%s+(%d)%f[%D]", "%1 .%2%3"):gsub("%f[%a]([Mm]ach)%s+point%s+(%d%d)%f[%D]", "%1 .%2")
+  end
+  -- (and a Mach number's point said "point" or "decimal": "mach point 7 8", "mach decimal 7 9", "mach decimal 79")
+  if text:find("point", 1, true) or text:find("decimal", 1, true) then
+    for _, mark in ipairs({ "point", "decimal" }) do
+      text = text:gsub("%f[%a]([Mm]ach)%s+" .. mark .. "%s+(%d)%s+(%d)%f[%D]", "%1 .%2%3")
+        :gsub("%f[%a]([Mm]ach)%s+" .. mark .. "%s+(%d%d)%f[%D]", "%1 .%2")
+    end
   end
   -- "at twelve nautical miles from BRA": a distance said after "at" in nautical miles is that many miles (the
   -- letters of "at" and the number before "nautical" are no callsign)

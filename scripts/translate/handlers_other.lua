@@ -3466,6 +3466,11 @@ return function(H, f, compass)
         if id then return id end
       end
     end
+    -- ("put jeddah wind 310 at 15 kts", "the Jeddah wind": a place's one-word name straight before "wind")
+    local b = s.trig - (self:word(s.trig - 1, "'s") and 2 or 1)
+    if b >= s.b and self.t[b].kind == "word" and not self:word(b, "the a set put make add @on @off") then
+      return self:place_by_name(b, b + 1)
+    end
     return nil
   end
 

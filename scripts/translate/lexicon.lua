@@ -179,6 +179,8 @@ return {
         "c'mere", "cmere",
         -- a fault of the simulation given as the reason ("kill aza204 its bugged"), a break taken ("need coffee")
         "bugged", "buggy", "glitched", "glitchy",
+        -- (an aircraft created twice, given as the reason to delete it: "delete gulf air 215, its a duplicate")
+        "duplicate", "duplicated", "dupe",
         -- a programmer's look inside the simulation ("debug info on WJA661": its state shown)
         "debug", "debugging", "coffee", "lunch", "brb",
         -- a telephone call taken, the reason for a pause or a break in the request ("pause the sim, phone",
@@ -368,7 +370,8 @@ return {
         "tack sa mycket", "tack tack", "tusen tack", "mange tak", "tusind tak", "takk skal du ha", "tak skal du have",
         "hej da", "hej hej", "ha det bra", "vi ses", "god morgon", "god kvall", "god kveld", "god aften", "dank je", "dank u", "iyi gunler", "iyi ucuslar", "iyi aksamlar", "iyi geceler", "iyi calismalar",
         "iyi yolculuklar", "iyi nobetler", "kolay gelsin", "gule gule", "sag ol", "sag olun", "hosca kalin", "do svidaniya", "ni hao", "ma'a salama",
-        "ma salama", "no wahala", "at pilot's discretion", "at your discretion", "pilot's discretion",
+        "ma salama", "maa salama", "maa salaama", "no wahala", "at pilot's discretion", "at your discretion",
+        "pilot's discretion",
         "pilot discretion", "your discretion", "at pilot discretion", "pilots discretion", "at pilots discretion",
         -- a place asked about beside another ("where is DILUM in relation to the aircraft")
         "in relation to", "with respect to", "with regard to",
@@ -749,6 +752,8 @@ return {
     exp = { { word = "expect", next = "ils rnav vis visual loc rwy runway approach app #number" },
             { word = "expedite", prev = "#number", next = "#end" } },
     hvy = { word = "heavy" }, adn = { word = "and", caps_kept = true },
+    -- (an experimenter's "CD&R" typed short: "cdr on with MVP resolution", "turn cdr off")
+    cdr = { word = "conflict detection and resolution" },
     -- (chat's "n" for "and" between a value and the next instruction, "desc fl160 n spd 250", "spd 210 n hdg
     -- 090"; before a number it is a hemisphere, "52.3 n 4.7 e", and after a word no value, "ba 123 n", it stays)
     n = { word = "and", prev = "#number",
@@ -2331,6 +2336,8 @@ return {
       manner = true },
     -- (and "rapid", "rapidly": a Spanish or Portuguese speaker's "rápido" for quickly, "climb FL270 rapid")
     { what = "how fast or hard a change is flown", words = "rapid rapidly", manner = true },
+    -- (and "hurry": "climb FL150, habibi hurry", "descend FL100 hurry up")
+    { what = "how fast or hard a change is flown", words = "hurry", manner = true },
     -- "descend FL150 at a good rate", "at your best rate KLM12 climb FL300": the same said of the rate, with no value
     -- (`rate_manner`: G:rate_manner, lexicon.rate_manner), noted from "at" or "with" before it to the rate's word and
     -- the motion it names ("of descent"); a gentler one ("at a slow rate") is asked

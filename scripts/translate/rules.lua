@@ -97,6 +97,9 @@ return function(intent, rule, words)
   rule { "*", false, prev = { 1, "command cmd" }, when = function(g, i) return help_asked(g, i - 1) end }
   rule { "commands command cmds", "help", when = help_asked }
   rule { "*", false, prev = { 3, "advise" }, when = function(g, i) return g:preceded_by(i, 2, "able") end }  -- "advise when able direct X"
+  -- "run fast forward 10 min", "run fast forward until I say stop": "run" before the fast-forward it runs is no verb
+  -- of its own
+  rule { "run", false, next = "fast", when = function(g, i) return g:word(i + 2, "forward") end }
   -- "klm1234 alt?", "DLH4AX hdg and spd?": the aircraft, then only measures of its state by name and a question
   -- mark ending the request, no value: its state asked (POS), never a level or heading to fly ("ezy45 fl?", the
   -- level's prefix with its number missing, is asked)
@@ -880,10 +883,10 @@ return function(intent, rule, words)
   rule { "compression acceleration", "dtmult", prev = { 1, "time" } }  -- "4x time compression", "time acceleration 8"
   rule { "fast", "ff", next = "time" }  -- "run in fast time": fast time with no end is FF
   -- "run the simulation fast for 30 seconds" (not "run it and fast forward 3 minutes", "let it run. Fast forward 5
-  -- minutes": an instruction of its own)
+  -- minutes", "run fast forward 10 min": an instruction of its own)
   rule { "fast", false, prev = { 4, "run advance" },
          when = function(g, i)
-           local apart = g:word(i - 1, "and") or (g.t[i - 1] ~= nil and g.t[i - 1].kind == "punct")
+           local apart = g:word(i - 1, "and run") or (g.t[i - 1] ~= nil and g.t[i - 1].kind == "punct")
            return not (apart and g:word(i + 1, "forward"))
          end }
   rule { "fast faster slower", "dtmult", prev = { 4, "@sim" }, not_near = { 1, "forward" } }  -- ("fast-forward": FF)
@@ -3022,6 +3025,10 @@ return function(intent, rule, words)
     return g:alone_but(i, i + 2) or g:clause_alone(i, i + 2) or g:clause_opens(i, i + 2)
   end }
   rule { "run", "op", next = "it", when = function(g, i) return g:clause_alone(i, i + 2) end }
+  -- "ok resume it", "continue it please": the run taken up again, "it" the simulation (no aircraft named anywhere)
+  rule { "resume continue", "op", next = "it", when = function(g, i)
+    return (g:alone_but(i, i + 2) or g:clause_alone(i, i + 2)) and not g:has_ref(1, #g.t + 1, "aircraft")
+  end }
   -- "run it and fast forward 3 minutes", "run the sim and ff 60 s": the clock started, then moved on
   rule { "run", "op", when = function(g, i)
     local k = i + 1

@@ -21698,3 +21698,27 @@ do
   check_eq(ex("omg aal101 turn left heading 200 tysm"), "HDG AAL101 200 LEFT")
   check_eq(ex("dude pause it"), "HOLD")
 end
+
+-- Cycle 67 (lead, R244): a Gulf controller's Arabic "la" (no) said again or closed by a mark ("la la correction",
+-- "la, not heading 135, make it 140"), never the article of a Spanish sentence; "maa salama"; "hurry" a manner;
+-- "its a duplicate" a reason; "cdr" conflict detection and resolution; "mach decimal 7 9"; "ok resume it"; "run fast
+-- forward until I say stop"; a place's name straight before "wind"
+do
+  local _, ex = scene({ "CRE UAE521 B77W 25.55 54.9 120 FL180 300", "CRE QTR1130 A359 25.7 54.6 090 FL230 290" })
+  check_eq(ex("emirates 521 la la correction descend FL120 not 100"), "ALT UAE521 FL120")
+  check_eq(ex("emirates 521 la, not heading 135, make it 140"), "HDG UAE521 140")
+  check_eq(ex("vire a la derecha rumbo 270 UAE521"), "HDG UAE521 270 RIGHT")
+  check_eq(ex("qatari 1130 climb FL 300 maa salama"), "ALT QTR1130 FL300")
+  check_eq(ex("qatari 1130 climb FL 260 then maintain mach decimal 7 9"),
+    "ALT QTR1130 FL260 ; ATALT QTR1130 FL260 SPD QTR1130 M0.79")
+  check_eq(ex("delete qatari 1130 pls its a duplicate"), "DEL QTR1130")
+  check_eq(ex("cdr on with MVP resolution"), "ASAS ON ; RESO MVP")
+  check_eq(ex("ok resume it"), "OP")
+  check_eq(ex("run fast forward until I say stop"), "FF")
+  check_eq(ex("run fast forward 10 min"), "FF 600")
+  asked(ex("UAE521 resume it"), "an aircraft named: 'it' no run")
+end
+do
+  local _, ex = navscene({ "CRE SVA556 A333 21.5 39.2 080 FL150 270" }, "a place's name before 'wind'")
+  if ex then check_eq(ex("put jeddah wind 310 at 15 kts"), "WIND OEJN 310 15") end
+end
