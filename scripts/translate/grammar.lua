@@ -1121,7 +1121,7 @@ end
 -- "oh", "ok" before it, "." or "!" after it) with a request after it: what came before is dropped when it holds no
 -- value (no digit, no number word) past the words the request after it opens with again (its callsign said again).
 -- Anything else stays as said.
-G.withdrawing_sentence = { "never mind", "nevermind", "forget it", "forget that" }
+G.withdrawing_sentence = { "never mind", "nevermind", "nvm", "forget it", "forget that" }
 function G.withdrawn_sentences(text)
   local lower = text:lower()
   if not (lower:find("mind", 1, true) or lower:find("forget", 1, true)) then return text end
@@ -17045,7 +17045,7 @@ end
 -- two or three words run together (four or five letters, no punctuation between) are one: a word squawk
 -- does not know that is such a fix near the traffic, or one on an aircraft's route.
 local PLACE_SLOTS = { add = true, append = true, insert = true, dct = true, dtc = true, drct = true, direct = true,
-  after = true, before = true, via = true, over = true, cross = true, at = true, ["then"] = true,
+  after = true, before = true, via = true, through = true, over = true, cross = true, at = true, ["then"] = true,
   -- (where a limit ends, what a distance is from and what vectors lead to: "spd 250 til ccc", "20 nm from dca",
   -- "hdg 210 vctr alb")
   ["until"] = true, till = true, from = true, vectors = true, vector = true, vctr = true, vect = true, vects = true }
@@ -17693,6 +17693,24 @@ function G.named_idents(text, world)
   for c = #cuts, 1, -1 do text = text:sub(1, cuts[c][1] - 1) .. text:sub(cuts[c][2]) end
   return text
 end
+-- "create ual1999 a320 at phl ...", "wind 270 at 50 knots over PHL": a large airport's IATA code (names.iata_airports)
+-- after "at", "over", "near" or "from", typed in capitals or, when no English word (G.IATA_WORDS, known_word), in
+-- lower case, that the navdata holds no fix or navaid by (world.place_known), is that airport's ICAO code when the
+-- navdata holds the airport (world.airport_class); "at BOS", the Boston VOR's ident, stays the navaid's
+function G.iata_places(text, world)
+  if not (world.airport_class and world.place_known) then return text end
+  return (text:gsub("(%f[%a][AaOoNnFf][%a]+%s+)(%a%a%a)(%f[%A])", function(lead, code, tail)
+    if not lead:lower():match("^at%s") and not lead:lower():match("^over%s") and not lead:lower():match("^near%s")
+        and not lead:lower():match("^from%s") then
+      return nil
+    end
+    local typed = code:match("^%u%u%u$") or (code:match("^%l%l%l$") and not G.IATA_WORDS[code] and not known_word(code))
+    local icao = typed and G.IATA_AIRPORTS[code:upper()]
+    if icao and not world.place_known(code:upper()) and (world.airport_class(icao) or "") ~= "" then
+      return lead .. icao .. tail
+    end
+  end))
+end
 -- True when the last word of `out` (the words read so far, each with its leading space), "to", follows a verb of
 -- going (G.place_motion_verbs), straight or with one word between ("send swa3 to")
 function G.went_to(out)
@@ -17701,6 +17719,21 @@ function G.went_to(out)
     if w and G.place_motion_verbs[w:lower()] then return true end
   end
   return false
+end
+-- "show me ual22s route", "take camrn off jbu615s route", "make jbu422s trail blue": an aircraft's id typed with its
+-- possessive "s" and no apostrophe, before a thing the aircraft has (lexicon.possessed_by_aircraft), is that id's
+-- possessive ("ual22's"), when the id is a flying aircraft's and the word with its "s" is none
+function G.possessive_ids(text, world)
+  if not text:find("%d[Ss]%s") then return text end
+  local ids = {}
+  for _, a in ipairs(world.aircraft) do ids[(a.id or ""):lower()] = true end
+  local owned = G.possessed_set or set_of(lexicon.possessed_by_aircraft)
+  G.possessed_set = owned
+  return (text:gsub("%f[%w](%a+%d+%a*)([Ss])(%s+)(%a+)", function(id, _, space, noun)
+    if ids[id:lower()] and not ids[(id .. "s"):lower()] and owned[noun:lower()] then
+      return id .. "'s" .. space .. noun
+    end
+  end))
 end
 local function typed_places(text, world)
   if not world.place_known then return text end
@@ -18502,10 +18535,11 @@ function M.translate(text, world)
   if run_together then return { commands = {}, ask = run_together } end
   local create_digit = G.create_digit_homophone(text)
   if create_digit then return { commands = {}, ask = create_digit } end
-  text = G.confirmed_route_places(G.spelled_route_places(G.syllable_route_places(typed_places(G.named_idents(
-    G.spoken_user_waypoints(G.navaids_by_kind(written_forms(text, world), world), world), world),
+  text = G.confirmed_route_places(G.spelled_route_places(G.syllable_route_places(typed_places(G.iata_places(G.named_idents(
+    G.spoken_user_waypoints(G.navaids_by_kind(written_forms(text, world), world), world), world), world),
     world), world), world), world)
-  text = G.terse_altitude(G.after_reach(G.pronoun_reached(G.future_will(spelled_airports(text, world))), world), world)
+  text = G.terse_altitude(G.after_reach(G.pronoun_reached(G.future_will(spelled_airports(G.possessive_ids(text, world),
+    world))), world), world)
   local run_on
   text, run_on = G.run_on_values(text)
   if run_on then return { commands = {}, ask = run_on } end

@@ -2837,6 +2837,11 @@ return function(H, f, compass)
       return self:need(string.format("Which waypoint is '%s'? Please say its name for %s to fly direct to.", said, id))
     end
     if not wp then return self:need("Direct to which waypoint should " .. id .. " fly?") end
+    -- ("send it direct jfk", its destination KJFK: the IATA code of the airport it flies to is that airport, never the
+    -- navaid of the same ident beside it)
+    if dest and #wp == 3 and (require("translate.names").iata_airports[wp:upper()] or ""):upper() == dest:upper() then
+      wp, to_dest = dest, dest
+    end
     -- ("direct SPY then direct EHAM", "direct SPY, descend FL200, then proceed direct PAM"): a second direct-to
     -- for the aircraft after "then" in the request would leave the first place out at once (the second DIRECT
     -- runs straight after the first); the sequence meant, the route through both or the second now, is asked. A
@@ -3941,14 +3946,14 @@ return function(H, f, compass)
     self:explain(k, k + 1)
     return code
   end
-  -- "divert AUH", "send it to DXB", "destination MUC": three capitals typed where the place is said, straight after
-  -- the instruction word (an aircraft, "the", "to", "it", "him", "her" or "them" between). A large airport's IATA code
+  -- "divert AUH", "send it to DXB", "destination MUC", "origin is bos": three capitals typed where the place is said,
+  -- straight after the instruction word (an aircraft, "the", "to", "it", "him", "her", "them" or "is" between). A large airport's IATA code
   -- (names.iata_airports; in lower case too when no English word, G:iata_airport_at: "send it to sfo") whose
   -- airport the navdata holds is that airport, returned with the code's token (marked used); after "divert" or
   -- "send", three capitals of any other (and any without navdata) are false, asked, never guessed from the
   -- navdata's names; nil when no such word stands there.
   local function iata_airport(self, s)
-    local k = place_start(self, s, "to it him her them the")
+    local k = place_start(self, s, "to it him her them the is")
     local t = self.t[k]
     if k >= s.e or t.kind ~= "word" then return nil end
     local code, class = self:iata_airport_at(k), self.world.airport_class

@@ -773,13 +773,21 @@ return {
     fnl = { word = "final" }, trls = { word = "trails" }, mv = { word = "move", prev = "#start" },
     vctr = { word = "vectors" }, vect = { word = "vectors" }, vects = { word = "vectors" },
     ur = { { word = "your", prev = "whats what's what is say report" },
-           { word = "your", next = "number speed spd level altitude alt heading hdg", caps_kept = true } },
+           { word = "your", next = "number speed spd level altitude alt heading hdg destination dest origin route "
+             .. "position", caps_kept = true },
+           -- ("once ur below 10k", "when ur at 250": "you're" after a condition's word)
+           { word = "you're", prev = "once when after until till if as", caps_kept = true } },
     -- the online networks' text-speak (VATSIM, IVAO): "ur" before "number" or a value's noun is "your" ("ur number
     -- 1", "ur speed"); "r u" is "are you" ("how fast r u going"); "wats" is "what's"; "m8" is "mate"; "cfl", the cleared flight
     -- level of a network's controller client, before its level ("cfl 11000", "cfl fl150") is the altitude
     -- cleared; typed in capitals each is an ident and stays as typed
-    r = { word = "are", next = "u", caps_kept = true }, u = { word = "you", prev = "are", caps_kept = true },
+    -- ("once u get down to 5k", "can u spawn ...": "u" after a condition's word or a request's verb)
+    r = { word = "are", next = "u", caps_kept = true },
+    u = { { word = "you", prev = "are", caps_kept = true },
+          { word = "you", prev = "once when after until till if can could would will", caps_kept = true } },
     wats = { word = "what's", caps_kept = true }, m8 = { word = "mate" },
+    -- (a texting student's spellings: "yes im sure", "gimme 250 knots")
+    im = { word = "i'm", caps_kept = true }, gimme = { word = "give me" },
     cfl = { word = "altitude", next = "#number fl flight", caps_kept = true },
     -- ("bel3qt tgt fl200 vs 1500": the level a climb or descent targets; "tgt ezy503" in a conflict set up)
     tgt = { word = "target" },
@@ -851,8 +859,8 @@ return {
     roc = { word = "rate of climb", next = "max maximum min minimum" },
     -- (the flight management computer's page typed by its name: "show me the FPLN")
     fpln = { word = "flight plan" },
-    -- ("when thru fl260 reduce 260": a level passed, typed short)
-    thru = { word = "through", next = "#number fl flight" },
+    -- ("when thru fl260 reduce 260": a level passed, typed short; "a route thru rober then parch")
+    thru = { word = "through" },
     -- a game programmer's words for a turn, a heading and a vertical speed ("rotate 90 clockwise", "set its
     -- rotation to 090", "vertical velocity 0"): clockwise is a right turn
     clockwise = { word = "right" }, cw = { word = "right", prev = "#number" },
@@ -973,7 +981,7 @@ return {
   setting_question_copulas = { "is", "are", "isn't", "aren't" },
   -- the words that, within four words before the noun of a request said before ("it does not have a route", "it
   -- has no route", "never mind the route"), take that request back (G:withdrawn)
-  withdrawn = { "not", "no", "never", "nevermind", "doesn't", "doesnt", "hasn't", "hasnt", "don't", "dont",
+  withdrawn = { "not", "no", "never", "nevermind", "nvm", "doesn't", "doesnt", "hasn't", "hasnt", "don't", "dont",
                 "isn't", "isnt", "without" },
   -- the words of a polite opener that asks leave to act ("is it possible to", "is it ok to"): the instruction after
   -- it is requested, not asked about (m:request_start, m:nav_asked)
@@ -1082,7 +1090,7 @@ return {
   -- carries, with no instruction said before them that they could correct, they are asked (grammar.lua
   -- G:instruction_withheld)
   kept_from = { phrases = { "avoid", "forget", "forget about", "ignore", "disregard", "belay", "scrap", "never mind",
-                              "nevermind", "stay away from", "keep away from", "stay clear of", "keep clear of",
+                              "nevermind", "nvm", "stay away from", "keep away from", "stay clear of", "keep clear of",
                               "hold off", "hold off on", "refrain from" },
                   between = { "about", "on", "the", "that", "this", "your", "its", "his", "her", "their", "any", "of",
                               "from", "with", "a", "an" } },
@@ -1215,7 +1223,7 @@ return {
                restating = { "i meant", "i mean", "it is", "it's", "it was", "it should be", "should be", "is",
                              "was", "meant" } },
   self_correction = { words = { "oh", "ay", "no", "wait", "sorry", "actually", "make", "that", "i", "mean", "meant", "uh", "um",
-                                "er", "eh", "ah", "say", "again", "scratch", "corr", "hmm", "typo", "never", "mind", "nevermind",
+                                "er", "eh", "ah", "say", "again", "scratch", "corr", "hmm", "typo", "never", "mind", "nevermind", "nvm",
                                 "forget", "belay", "better", "rather",
                                 -- a South African's interjections before the marker ("FL210, ag sorry, FL230",
                                 -- "heading 200, shame sorry, 210", "eish, no, 080")
@@ -1227,17 +1235,17 @@ return {
                       -- Filipino "po" of respect after the apology, "sorry po")
                       value_words = { "am", "i'm", "let's", "lets", "let", "nein", "ne", "po" },
                       markers = { "no", "wait", "sorry", "actually", "make that", "mean", "meant", "say again", "scratch",
-                                  "corr", "never mind", "nevermind", "forget that", "belay", "nein", "ne" },
+                                  "corr", "never mind", "nevermind", "nvm", "forget that", "belay", "nein", "ne" },
                       -- the markers that, closing the request, take back what came before with nothing said
                       -- in its place ("turn left 20, sorry": asked); "I mean" closing it points back at what
                       -- it follows ("the Wideroe, I mean"), "actually" closing it is "in fact" ("going to
                       -- Valencia actually"), "from scratch" is no correction
-                      closing = { "no", "wait", "sorry", "make that", "say again", "corr", "never mind", "nevermind",
+                      closing = { "no", "wait", "sorry", "make that", "say again", "corr", "never mind", "nevermind", "nvm",
                                   "forget that", "scratch that", "belay that" },
                       after = { "fl", "flight", "level", "heading", "left", "right", "speed", "mach", "altitude" },
                       -- the first words of the markers that take back what they follow in words ("never mind",
                       -- "forget that", "scratch that"): before an instruction's word, no value is corrected
-                      dropping = { "never", "nevermind", "forget", "scratch", "belay" },
+                      dropping = { "never", "nevermind", "nvm", "forget", "scratch", "belay" },
                       -- said after a marker and ending its clause, what was said before is left as it was: taken
                       -- back as "forget that" takes it back ("detection off. Ah no, leave it. ..." keeps detection)
                       left_as_is = { "leave it as it is", "leave it as is", "leave it like that", "leave it alone",
@@ -1356,6 +1364,11 @@ return {
   sim = { "simulation", "sim", "simulator", "time", "exercise", "clock", "episode", "env", "environment", "replay",
           "playback", "serial" },
   -- (an agent: an aircraft, in a learning environment's words)
+  -- what an aircraft has, named after its owner's possessive typed without an apostrophe ("ual22s route":
+  -- grammar.lua G.possessive_ids)
+  possessed_by_aircraft = { "route", "rte", "trail", "trails", "altitude", "alt", "level", "heading", "hdg", "speed",
+    "spd", "position", "pos", "destination", "dest", "origin", "waypoints", "wpts", "flight", "callsign", "type",
+    "vertical", "mach", "state", "status", "track", "plan", "lnav", "vnav" },
   aircraft_nouns = { "aircraft", "plane", "airplane", "flight", "agent",
       -- (an aircraft as its pilot, in an Irish or British speaker's word: "the lowest fella there")
       "fella", "fellow" },

@@ -97,6 +97,14 @@ return function(intent, rule, words)
   rule { "*", false, prev = { 1, "command cmd" }, when = function(g, i) return help_asked(g, i - 1) end }
   rule { "commands command cmds", "help", when = help_asked }
   rule { "*", false, prev = { 3, "advise" }, when = function(g, i) return g:preceded_by(i, 2, "able") end }  -- "advise when able direct X"
+  -- "set speed to 1x", "speed 4x": a speed given as a multiple, with no aircraft named anywhere, is the clock's rate
+  rule { "speed spd", "dtmult", when = function(g, i)
+    if g:has_ref(1, #g.t + 1, "aircraft") then return false end
+    for _, q in ipairs(g:quantities(i + 1, math.min(#g.t + 1, i + 4))) do
+      if q.kind == "mult" then return true end
+    end
+    return false
+  end }
   -- "run fast forward 10 min", "run fast forward until I say stop": "run" before the fast-forward it runs is no verb
   -- of its own
   rule { "run", false, next = "fast", when = function(g, i) return g:word(i + 2, "forward") end }

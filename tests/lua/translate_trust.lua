@@ -21722,3 +21722,26 @@ do
   local _, ex = navscene({ "CRE SVA556 A333 21.5 39.2 080 FL150 270" }, "a place's name before 'wind'")
   if ex then check_eq(ex("put jeddah wind 310 at 15 kts"), "WIND OEJN 310 15") end
 end
+
+-- Cycle 67 (lead, R245): a texting student's English: an id's possessive typed without its apostrophe ("ual22s
+-- route"), "u" and "ur" in a condition ("once u get down to 5k", "once ur below 10k"), "ur destination", "thru",
+-- "gimme", "nvm" (taking back what it closes, as "never mind" does), "origin is bos", a large airport's IATA code in
+-- lower case where a place is put ("at phl"), "set speed to 1x" (the clock's rate), "direct jfk" to its destination
+do
+  local _, ex = navscene({ "CRE UAL22 B738 40.7 -74.2 240 FL300 280", "ADDWPT UAL22 LENDY", "DEST UAL22 KJFK",
+    "CRE JBU615 A320 40.7 -73.6 180 8000 230" }, "a texting student's places")
+  if ex then
+    check_eq(ex("show me ual22s route"), "LISTRTE UAL22")
+    check_eq(ex("take lendy off ual22s route and send it direct jfk"), "DELWPT UAL22 LENDY ; DIRECT UAL22 KJFK")
+    check_eq(ex("jbu615 once u get down to 5k slow to 210"), "ATALT JBU615 5000 SPD JBU615 210")
+    check_eq(ex("jbu615 slow to 210 once ur below 6k"), "ATALT JBU615 6000 SPD JBU615 210")
+    check_eq(ex("jbu615 ur destination is newark"), "DEST JBU615 KEWR")
+    check_eq(ex("jbu615 origin is bos"), "ORIG JBU615 KBOS")
+    check_eq(ex("ual22 after lendy gimme 250 knots"), "AT UAL22 LENDY DO SPD UAL22 250")
+    asked(ex("jbu615 climb fl300 nvm"), "'nvm' closing takes the level back")
+    check_eq(ex("nvm turn trails off"), "TRAIL OFF")
+    check_eq(ex("create ual1999 a320 at phl heading 090 at 3000 ft 180 knots"), "CRE UAL1999 A320 KPHL 90 3000 180")
+    check_eq(ex("set speed to 1x"), "DTMULT 1")
+    asked(ex("jbu615s climb fl300"), "no aircraft JBU615S: asked, no possessive before a verb")
+  end
+end
