@@ -618,13 +618,14 @@ function G.said_whole(text)
     end
   end
   -- (in a marked sentence a digit of foreign_digits is read, and so is a hesitation's word that is a digit there,
-  -- foreign_hesitation_digits, beside one with no punctuation between: "desça nível um oito zero" is 180, its "um"
-  -- no English "um")
+  -- foreign_hesitation_digits, beside a digit with no punctuation between: "desça nível um oito zero" is 180, "Gol um
+  -- zero um cinco" GLO1015, its "um" no English "um")
   local F, HD = lexicon.foreign_digits, lexicon.foreign_hesitation_digits
+  local function a_digit(w) return w ~= nil and (F[w] ~= nil or NUMBER_WORDS[w] ~= nil or w:match("^%d+$") ~= nil) end
   local function digit_at(toks, bare, i)
     if F[bare[i]] then return F[bare[i]] end
-    if HD[bare[i]] and ((F[bare[i + 1]] and not toks[i]:match("%p$"))
-        or (i > 1 and F[bare[i - 1]] and not toks[i - 1]:match("%p$"))) then
+    if HD[bare[i]] and ((a_digit(bare[i + 1]) and not toks[i]:match("%p$"))
+        or (i > 1 and a_digit(bare[i - 1]) and not toks[i - 1]:match("%p$"))) then
       return HD[bare[i]]
     end
   end

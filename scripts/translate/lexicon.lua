@@ -3068,14 +3068,17 @@ return {
       esquerda = "left", ["pela esquerda"] = "left", mantenha = "maintain", ["mantém"] = "maintain",
       manter = "maintain", reduza = "reduce", reduzir = "reduce", aumente = "increase", aumentar = "increase",
       direto = "direct", ["direto para"] = "direct to", prossiga = "proceed", rumo = "heading",
-      ["pés"] = "feet", ["velocidade vertical"] = "vertical speed", apague = "delete", remova = "remove",
+      ["pés"] = "feet", pes = "feet", ["velocidade vertical"] = "vertical speed", apague = "delete", remova = "remove",
+      -- (the controller's own station named after the callsign: "LATAM 3100, Brasília Centro, bom dia, ...")
+      centro = "center", controle = "control", ["aproximação"] = "approach", aproximacao = "approach",
+      torre = "tower",
       mova = "move", aguarde = "stand by",
       -- the experimenter's commands ("cria TAM4444 A320 ...", "avança 10 minutes")
       cria = "create", crie = "create", criar = "create", ["avança"] = "advance", avanca = "advance",
       ["avance"] = "advance",
     },
     -- words of `words` said the same in Spanish or English: no sign of Portuguese alone
-    shared = { nivel = true, ["nível"] = true, avance = true, suba = true, aumente = true },
+    shared = { nivel = true, ["nível"] = true, avance = true, suba = true, aumente = true, centro = true, torre = true },
     -- ("cria o GLO1234": the article, read only in a sentence another word marks Portuguese)
     joining = { o = "the" },
   },

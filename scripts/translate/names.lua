@@ -164,6 +164,8 @@ local names = {
     { "tam", "TAM" },
     { "gol transporte", "GLO" },
     { "gol", "GLO" },
+    { "oceanair", "ONE" },  -- (Avianca Brasil, formerly OceanAir)
+    { "avianca brasil", "ONE" },
     { "argentina", "ARG" },
     { "aerolineas argentinas", "ARG" },
     { "aerosky", "SKU" },  -- (Sky Airline's ICAO telephony)

@@ -21745,3 +21745,14 @@ do
     asked(ex("jbu615s climb fl300"), "no aircraft JBU615S: asked, no possessive before a verb")
   end
 end
+
+-- Cycle 67 (lead, R243): Avianca Brasil's telephony "Oceanair"; "pés" typed without its accent; the controller's own
+-- station in Portuguese ("Brasília Centro"); "um" beside a digit in a Portuguese sentence ("Gol um zero um cinco")
+do
+  local _, ex = scene({ "CRE ONE6100 A320 -15.8 -47.9 090 FL250 280", "CRE GLO1015 B738 -15.9 -47.8 270 FL180 260",
+    "CRE TAM3100 A321 -15.7 -47.7 180 FL330 290" })
+  check_eq(ex("delete Oceanair 6100"), "DEL ONE6100")
+  check_eq(ex("GLO1015 velocidade 210, desça 4000 pes"), "SPD GLO1015 210 ; ALT GLO1015 4000")
+  check_eq(ex("LATAM 3100, Brasília Centro, bom dia, climb flight level 370"), "ALT TAM3100 FL370")
+  check_eq(ex("Gol um zero um cinco, desça nível zero nove zero"), "ALT GLO1015 FL90")
+end
