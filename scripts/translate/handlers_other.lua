@@ -67,15 +67,18 @@ return function(H, f, compass)
   -- meant, naming the designators of the family.
   -- (an Airbus family's digits begin with 3, "A330": A332, A333, A339; a Boeing's with 7. A family the type data
   -- holds one designator of is that one, no question: nil, then the designator)
+  -- (lexicon.variant_designators: a family its digits do not spell, "A220": BCS1, BCS3)
   local function ask_variant(self, fam)
     local variants = {}
     local maker = fam:sub(1, 1) == "3" and "A" or "B"
+    local spelled = L.variant_designators[fam]
+    local pattern = spelled and spelled.pattern or "^" .. maker .. fam:sub(1, 2) .. "%w$"
     for _, d in ipairs(require("translate.names").designators) do
-      if d:match("^" .. maker .. fam:sub(1, 2) .. "%w$") then variants[#variants + 1] = d end
+      if d:match(pattern) then variants[#variants + 1] = d end
     end
     if #variants == 1 then return nil, variants[1] end
-    return self:need(string.format("Which variant of the %s is meant: %s?", maker == "A" and "A" .. fam or fam,
-      table.concat(variants, ", ")))
+    return self:need(string.format("Which variant of the %s is meant: %s?",
+      spelled and spelled.name or maker == "A" and "A" .. fam or fam, table.concat(variants, ", ")))
   end
 
   function m:create(s)

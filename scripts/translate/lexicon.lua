@@ -536,6 +536,8 @@ return {
     -- "Kennedy altimeter"): the one or two words before these are its place
     facilities = { "departure", "approach", "center", "centre", "tower", "ground", "radar", "control",
         "delivery", "director", "information", "altimeter", "qnh", "oceanic", "radio",
+        -- (Canada's terminal control unit: "Porter 225, Ottawa Terminal, descend ...")
+        "terminal",
         -- (a unit by its abbreviation: "Barcelona ACC", "Madrid TWR")
         "acc", "twr", "uac" },
     -- phrases that bound a value, lift its bounds or keep it in force ("or greater", "not less than",
@@ -1571,7 +1573,9 @@ return {
   -- types.lua), as the writers of every round so far and BlueSky's own corpus read them (nl2trafscript_dev
   -- d001: "a Boeing 777" is B772); a Boeing family is its 7x7 digits, an Airbus one its 3x0 ("330", read only
   -- after "A" or "Airbus")
-  variant_families = { "737", "767", "787" },
+  variant_families = { "737", "767", "787", "220" },
+  -- a family whose designators its digits do not spell (handlers_other ask_variant): its name and their pattern
+  variant_designators = { ["220"] = { name = "A220", pattern = "^BCS%d$" } },
   all = { "all", "both", "every", "everything" },
   -- direction of a change: +1 words and -1 words
   up = { "climb", "clb", "up", "raise", "increase", "faster", "above", "higher", "accelerate", "climbing",

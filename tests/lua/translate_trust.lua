@@ -21756,3 +21756,13 @@ do
   check_eq(ex("LATAM 3100, Brasília Centro, bom dia, climb flight level 370"), "ALT TAM3100 FL370")
   check_eq(ex("Gol um zero um cinco, desça nível zero nove zero"), "ALT GLO1015 FL90")
 end
+
+-- Cycle 67 (lead, R247): an A220 with no variant said asks BCS1 or BCS3 (it had created a BCS1, the first variant,
+-- where the writer meant the -300); "Ottawa Terminal", Canada's terminal unit, is the controller's station
+do
+  local _, ex = scene({ "CRE POE225 DH8D 45.3 -75.6 090 9000 220" })
+  check_eq(ex("create an Air Canada A220, ACA8920, at 45 -75 heading 090 at 12000 ft, 250 knots"),
+    "ASK Which variant of the A220 is meant: BCS1, BCS3?")
+  check_eq(ex("create ACA8920 A220-300 at 45 -75 heading 090 at 12000 ft 250 knots"), "CRE ACA8920 BCS3 45 -75 90 12000 250")
+  check_eq(ex("Porter two twenty-five, Ottawa Terminal, descend and maintain four thousand"), "ALT POE225 4000")
+end
