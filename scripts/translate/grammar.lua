@@ -994,6 +994,29 @@ local DIGIT_WORDS = set_of({ "zero", "oh", "one", "two", "three", "four", "five"
   "niner", "tree", "fife", "fower" })
 local UNIT_WORDS = set_of({ "feet", "ft", "knots", "knot", "kts", "kt", "degrees" })
 local SIDES = set_of({ "left", "right" })
+-- "descend three thousand five hundred on one zero zero four", "3500 ft on 1004": "on" and a pressure of 950 to 1050
+-- hPa, four digits said singly or typed, closing its clause after an altitude in feet, is the QNH it is flown on (UK
+-- radiotelephony), named as not simulated as "QNH 1004" is
+G.QNH_DIGITS = { zero = "0", oh = "0", one = "1", two = "2", three = "3", four = "4", five = "5", six = "6",
+  seven = "7", eight = "8", nine = "9", niner = "9", tree = "3", fife = "5", fower = "4" }
+function G.qnh_on(text)
+  local low = text:lower()
+  if not (low:find(" on ", 1, true) and (low:find("thousand", 1, true) or low:find("hundred", 1, true)
+      or low:find("feet", 1, true) or low:find("ft", 1, true) or low:find("altitude", 1, true))) then
+    return text
+  end
+  return (text:gsub("(%f[%a][Oo][Nn])(%s+)([%a%d][%a%d%s]-)(%f[^%a%d%s])", function(on, space, said, tail)
+    said = said:gsub("%s+$", "")
+    local digits = said:match("^%d%d%d%d?$")
+    if not digits then
+      local out = {}
+      for w in said:gmatch("%S+") do out[#out + 1] = G.QNH_DIGITS[w:lower()] or "x" end
+      digits = table.concat(out)
+    end
+    local hpa = digits:match("^%d+$") and (#digits == 4 or #digits == 3) and tonumber(digits)
+    if hpa and hpa >= 950 and hpa <= 1050 then return "QNH" .. space .. said .. tail end
+  end))
+end
 G.refusable = set_of(lexicon.refusable_verbs)
 -- The words of `text` as {at, e, raw, bare} (at, e: byte positions of the word and after it; bare: lower
 -- case, punctuation trimmed at both ends). Callers only read the list: the last text's is kept, as
@@ -18519,7 +18542,7 @@ function M.translate(text, world)
   text = homophone_ids(G.hundreds_callsign(G.recognised_callsigns(glued_telephony(G.common_named(G.joined_telephony(G.aircraft_of_airline(text)), world),
     world.aircraft), world), world), world)
   text = G.other_callsign_denied(text, world.aircraft)
-  text = G.level_hundreds_apart(text)
+  text = G.qnh_on(G.level_hundreds_apart(text))
   local abbreviated
   text, abbreviated = abbreviated_registrations(text, world.aircraft)
   if abbreviated then return { commands = {}, ask = abbreviated } end

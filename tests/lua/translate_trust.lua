@@ -21766,3 +21766,12 @@ do
   check_eq(ex("create ACA8920 A220-300 at 45 -75 heading 090 at 12000 ft 250 knots"), "CRE ACA8920 BCS3 45 -75 90 12000 250")
   check_eq(ex("Porter two twenty-five, Ottawa Terminal, descend and maintain four thousand"), "ALT POE225 4000")
 end
+
+-- Cycle 67 (lead, R246): "on" and a pressure closing an altitude's clause ("descend three thousand five hundred on one
+-- zero zero four") is the QNH, named as not simulated, never a word left over
+do
+  local _, ex = scene({ "CRE EIN162 A320 53.4 -6.2 090 6000 220" })
+  check_eq(ex("Shamrock one six two descend three thousand five hundred on one zero zero four"), "ALT EIN162 3500")
+  check_eq(ex("EIN162 descend 3500 ft on 1004"), "ALT EIN162 3500")
+  asked(ex("EIN162 descend 3500 ft on 1204"), "no pressure an altimeter is set to")
+end
