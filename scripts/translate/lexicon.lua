@@ -236,6 +236,8 @@ return {
         -- that name first (G:unknown_names asks), never set aside. Italian:
         "grazie", "prego", "buongiorno", "buonasera", "buonanotte", "arrivederci", "arrivederla", "ciao", "salve",
         "favore", "andiamo", "perfetto", "benissimo",
+        -- (a word calling for attention before the instruction: "Alpine 4521, attenzione, turn right immediately")
+        "attenzione", "achtung", "atencion", "atención",
         -- Spanish and Portuguese (beyond those above)
         "hola", "saludos", "chao", "tchau", "porfa", "valeu", "obrigadao", "ola",
         -- French, German and Dutch (beyond those above)
@@ -3189,6 +3191,9 @@ return {
     cuatro = "four", cinco = "five", seis = "six", siete = "seven", ocho = "eight", nueve = "nine",
     dois = "two", duas = "two", quatro = "four", meia = "six", sete = "seven", oito = "eight",
     nove = "nine",
+    -- and Italian ("Itarrow tre uno quattro"; "uno", "nove" as in Spanish and Portuguese; "due" (two) is English "due
+    -- traffic" beside a value, and stays asked)
+    tre = "three", quattro = "four", cinque = "five", sei = "six", sette = "seven", otto = "eight",
     -- and French ("France Soleil quatre un deux zero"; "six" and "zero" as in English)
     un = "one", deux = "two", trois = "three", quatre = "four", cinq = "five", sept = "seven", huit = "eight", neuf = "nine",
     uma = "one" },

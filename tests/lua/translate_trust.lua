@@ -21775,3 +21775,12 @@ do
   check_eq(ex("EIN162 descend 3500 ft on 1004"), "ALT EIN162 3500")
   asked(ex("EIN162 descend 3500 ft on 1204"), "no pressure an altimeter is set to")
 end
+
+-- Cycle 67 (lead): Italian digits beside others ("Itarrow tre uno quattro"; "due" stays English: "due traffic") and
+-- "attenzione" calling for attention
+do
+  local _, ex = scene({ "CRE ITY314 A320 41.8 12.3 090 FL250 280", "CRE EJU4521 A320 45.6 8.7 045 FL120 250" })
+  check_eq(ex("Itarrow tre uno quattro, climb flight level three one zero"), "ALT ITY314 FL310")
+  check_eq(ex("Alpine four five two one, attenzione, turn right immediately heading 090"), "HDG EJU4521 90 RIGHT")
+  check_eq(ex("ITY314 stop climb flight level two eight zero due traffic"), "ALT ITY314 FL280")
+end
