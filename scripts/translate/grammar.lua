@@ -407,8 +407,9 @@ local NUMBER_WORDS = set_of({ "zero", "one", "two", "three", "four", "five", "si
   "niner", "tree", "fife", "fower", "ten", "eleven", "twelve", "thirteen", "fourteen", "fifteen", "sixteen",
   "seventeen", "eighteen", "nineteen", "twenty", "thirty", "forty", "fifty", "sixty", "seventy", "eighty", "ninety",
   "hundred", "thousand" })
--- Digits said in Spanish or Portuguese (lexicon.foreign_digits) beside another digit of either
--- language, said or typed, or a spelled letter, are those digits in English: "Copa tres one one" ->
+-- Digits said in Spanish, Portuguese, Italian or French (lexicon.foreign_digits) beside another digit of either
+-- language, said or typed, or a spelled letter, are those digits in English (one of lexicon.foreign_digits_flanked only
+-- between two digits or beside a word of foreign_digits): "Copa tres one one" ->
 -- "Copa three one one", "Speedbird ocho charlie kilo" -> "Speedbird eight charlie kilo".
 -- The words of `text` and each in lower case without the punctuation closing it. Callers only read
 -- the lists: the last text's are kept (heard_forms mostly reads the text foreign_digits read).
@@ -433,11 +434,11 @@ local function any_of(bare, set)
 end
 local function foreign_digits(text)
   local toks, bare = plain_words(text)
-  local F = lexicon.foreign_digits
-  if not any_of(bare, F) then return text end
+  local F, FL = lexicon.foreign_digits, lexicon.foreign_digits_flanked
+  if not any_of(bare, F) and not any_of(bare, FL) then return text end
   local function digit(k)
     local w = bare[k]
-    return w ~= nil and (F[w] ~= nil or NUMBER_WORDS[w] == true or w:match("^%d+$") ~= nil
+    return w ~= nil and (F[w] ~= nil or FL[w] ~= nil or NUMBER_WORDS[w] == true or w:match("^%d+$") ~= nil
       or lexicon.phonetic[w] ~= nil or lexicon.foreign_hesitation_digits[w] ~= nil)
   end
   -- (true when the run of digit words about token i, no punctuation parting them, holds a word of F)
@@ -453,6 +454,16 @@ local function foreign_digits(text)
   end
   return tokens.rewrite(text, toks, function(i)
     local en = F[bare[i]]
+    -- ("uno due zero": a word of FL between two digits, no punctuation parting them, or beside a word of F)
+    if not en and FL[bare[i]] then
+      local open = i > 1 and not toks[i - 1]:match("%p$")
+      local shut = not toks[i]:match("%p$")
+      local b, a = open and digit(i - 1), shut and digit(i + 1)
+      if (b and a) or (open and F[bare[i - 1]]) or (shut and F[bare[i + 1]]) then
+        return FL[bare[i]] .. (toks[i]:match("%p+$") or ""), i + 1
+      end
+      return nil
+    end
     if not en then
       en = lexicon.foreign_hesitation_digits[bare[i]]
       if en and foreign_run(i) then return en .. (toks[i]:match("%p+$") or ""), i + 1 end

@@ -3177,9 +3177,14 @@ return {
   -- the sentence; "e" alone is G.portuguese_and's, "quota" lexicon.heard_as's, "grazie" accounted's.
   italian = {
     words = { ["velocità"] = "speed", velocita = "speed", prua = "heading", poi = "then", ["e poi"] = "and then",
-      scusa = "sorry", ["scusami"] = "sorry", allora = "so", ["sì"] = "yes", si = "yes", ["va bene"] = "okay" },
+      scusa = "sorry", ["scusami"] = "sorry", allora = "so", ["sì"] = "yes", si = "yes", ["va bene"] = "okay",
+      -- (an Italian controller's "scusi" between two values is the correction's "sorry": "turn right heading 360,
+      -- scusi, 340"; "un attimo" a moment; "riprendiamo" the run resumed)
+      scusi = "sorry", scusate = "sorry", ["mi scusi"] = "sorry", ["un attimo"] = "one moment",
+      ["un momento"] = "one moment", riprendiamo = "resume", riprendi = "resume" },
     shared = { ["velocità"] = true, velocita = true, prua = true, poi = true, ["e poi"] = true, scusa = true,
-      scusami = true, allora = true, ["sì"] = true, si = true, ["va bene"] = true },
+      scusami = true, allora = true, ["sì"] = true, si = true, ["va bene"] = true, scusi = true, scusate = true,
+      ["mi scusi"] = true, ["un attimo"] = true, ["un momento"] = true, riprendiamo = true, riprendi = true },
     joining = {},
   },
   },
@@ -3191,12 +3196,13 @@ return {
     cuatro = "four", cinco = "five", seis = "six", siete = "seven", ocho = "eight", nueve = "nine",
     dois = "two", duas = "two", quatro = "four", meia = "six", sete = "seven", oito = "eight",
     nove = "nine",
-    -- and Italian ("Itarrow tre uno quattro"; "uno", "nove" as in Spanish and Portuguese; "due" (two) is English "due
-    -- traffic" beside a value, and stays asked)
+    -- and Italian ("Itarrow tre uno quattro"; "uno", "nove" as in Spanish and Portuguese; "due" (two) only between
+    -- two digits or beside another of these words, foreign_digits_flanked: English "due traffic" follows a value)
     tre = "three", quattro = "four", cinque = "five", sei = "six", sette = "seven", otto = "eight",
     -- and French ("France Soleil quatre un deux zero"; "six" and "zero" as in English)
     un = "one", deux = "two", trois = "three", quatre = "four", cinq = "five", sept = "seven", huit = "eight", neuf = "nine",
     uma = "one" },
+  foreign_digits_flanked = { due = "two" },
   -- French said inside an English clearance by a Moroccan, Algerian or Tunisian speaker (grammar.lua
   -- G.french_in_english): a number said in French words ("cap deux cent quatre-vingt-dix", "vitesse trois cent
   -- trente") is its digits when the words make one number by French's rules and hold a word of tens, hundreds

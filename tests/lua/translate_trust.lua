@@ -21784,3 +21784,17 @@ do
   check_eq(ex("Alpine four five two one, attenzione, turn right immediately heading 090"), "HDG EJU4521 90 RIGHT")
   check_eq(ex("ITY314 stop climb flight level two eight zero due traffic"), "ALT ITY314 FL280")
 end
+
+-- Cycle 67 (lead, R248): an Italian controller's "scusi" is the correction's "sorry" ("heading 360, scusi, 340";
+-- closing a value cut off, "one niner... scusi", it takes it back: asked); "un attimo"; "riprendiamo"; "due" (two)
+-- between two digits ("uno due zero"), never in "due traffic"
+do
+  local _, ex = scene({ "CRE NOS2640 B738 45.5 9.2 270 FL180 260", "CRE RYR4TK B738 41.9 12.6 300 FL150 270" })
+  check_eq(ex("Moonflower two six four zero, turn right heading three six zero, scusi, three four zero"),
+    "HDG NOS2640 340 RIGHT")
+  asked(ex("NOS2640 reduce speed, ehm, one niner... scusi"), "a value cut off and taken back")
+  check_eq(ex("pause the simulation please, un attimo"), "HOLD")
+  check_eq(ex("ok riprendiamo, resume"), "OP")
+  check_eq(ex("Ryanair 4TK descend flight level uno due zero"), "ALT RYR4TK FL120")
+  check_eq(ex("RYR4TK turn left heading 070 due traffic"), "HDG RYR4TK 70 LEFT")
+end
