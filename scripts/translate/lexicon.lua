@@ -109,6 +109,8 @@ return {
         "precisely", "roughly", "approximately",
         -- (interjections of a chatty speaker: "Ooh, and add Rosun ...", "ah, and the Speedbird ...")
         "ooh", "ah", "ahh", "aah",
+        -- (and a Singaporean's or Hong Konger's dismay, "aiyah, disregard, maintain FL300")
+        "aiyah", "aiya", "aiyoh", "aiyo",
         -- (a value said loosely, "250-ish", "like 250ish": the value said is the one flown, as "roughly 250")
         "ish", "afterwards", "afterward", "meanwhile", "completely", "fully",
         -- (a report's order of events and degree: "was subsequently given", "disable it altogether")
@@ -372,7 +374,8 @@ return {
         "tack sa mycket", "tack tack", "tusen tack", "mange tak", "tusind tak", "takk skal du ha", "tak skal du have",
         "hej da", "hej hej", "ha det bra", "vi ses", "god morgon", "god kvall", "god kveld", "god aften", "dank je", "dank u", "iyi gunler", "iyi ucuslar", "iyi aksamlar", "iyi geceler", "iyi calismalar",
         "iyi yolculuklar", "iyi nobetler", "kolay gelsin", "gule gule", "sag ol", "sag olun", "hosca kalin", "do svidaniya", "ni hao", "ma'a salama",
-        "ma salama", "maa salama", "maa salaama", "no wahala", "at pilot's discretion", "at your discretion",
+        "ma salama", "maa salama", "maa salaama", "m goi", "mh goi", "doh je", "dor je", "no wahala",
+        "at pilot's discretion", "at your discretion",
         "pilot's discretion",
         "pilot discretion", "your discretion", "at pilot discretion", "pilots discretion", "at pilots discretion",
         -- a place asked about beside another ("where is DILUM in relation to the aircraft")
@@ -1230,8 +1233,8 @@ return {
                                 "er", "eh", "ah", "say", "again", "scratch", "corr", "hmm", "typo", "never", "mind", "nevermind", "nvm",
                                 "forget", "belay", "better", "rather",
                                 -- a South African's interjections before the marker ("FL210, ag sorry, FL230",
-                                -- "heading 200, shame sorry, 210", "eish, no, 080")
-                                "ag", "shame", "eish" },
+                                -- "heading 200, shame sorry, 210", "eish, no, 080"; a Singaporean's "aiyah sorry")
+                                "ag", "shame", "eish", "aiyah", "aiya", "aiyoh", "aiyo" },
                       -- words of an apology ("I am sorry", "I'm sorry") also part of a run between two values
                       -- (grammar.lua self_corrections: "flight level 110, I am sorry, flight level 100")
                       -- ("heading 270, actually no, let's make that 280": "let's" before "make that" belongs to the

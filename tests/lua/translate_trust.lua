@@ -21798,3 +21798,14 @@ do
   check_eq(ex("Ryanair 4TK descend flight level uno due zero"), "ALT RYR4TK FL120")
   check_eq(ex("RYR4TK turn left heading 070 due traffic"), "HDG RYR4TK 70 LEFT")
 end
+
+-- Cycle 67 (lead, R250): Cantonese courtesy ("m goi", "doh je") and a Singaporean's "aiyah", also before a
+-- correction's "sorry"
+do
+  local _, ex = scene({ "CRE SIA862 B77W 1.3 103.9 090 FL250 280", "CRE CRK722 A333 22.3 114.2 180 FL200 260" })
+  check_eq(ex("Bauhinia seven two two, turn left heading one eight zero, m goi"), "HDG CRK722 180 LEFT")
+  check_eq(ex("CRK722 climb to flight level two two zero, doh je"), "ALT CRK722 FL220")
+  check_eq(ex("Singapore 862 turn left heading two seven zero, aiyah sorry, right heading zero two zero"),
+    "HDG SIA862 20 RIGHT")
+  check_eq(ex("pause, m goi"), "HOLD")
+end
