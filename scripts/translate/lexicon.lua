@@ -136,7 +136,9 @@ return {
         "grand", "lovely", "sound",
         -- an Australian speaker's acknowledgement and degree ("no worries, the Saab can go", "heaps of traffic ahead",
         -- "speed it up heaps, like times ten": "heaps" is "a lot", the value said with it is the one meant)
-        "no worries", "no dramas", "heaps" },
+        "no worries", "no dramas", "heaps",
+        -- (and a New Zealander's: "delete Jetstar 235, sweet as", "turn left heading 180, good as gold")
+        "sweet as", "good as gold" },
     -- courtesy and framing of a request
     courtesy = { "please", "kindly", "thanks", "thank", "cheers", "like", "want", "wants", "wish", "let", "lets",
         "mind", "able", "possible", "chance", "ask", "tell", "make", "have", "try", "see", "help", "give",

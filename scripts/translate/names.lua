@@ -374,6 +374,11 @@ local names = {
     { "xanadu", "XAX" },  -- (AirAsia X)
     { "malaysian", "MAS" },
     { "jetstar", "JST" },
+    { "chatham", "CVA" },  -- (Air Chathams)
+    { "chathams", "CVA" },
+    { "air chathams", "CVA" },
+    { "sounds", "SDA" },  -- (Sounds Air)
+    { "sounds air", "SDA" },
     { "cebu", "CEB" },
     { "philippine", "PAL" },
     { "thai", "THA" },

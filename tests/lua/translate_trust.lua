@@ -21809,3 +21809,12 @@ do
     "HDG SIA862 20 RIGHT")
   check_eq(ex("pause, m goi"), "HOLD")
 end
+
+-- Cycle 67 (lead, R249): Air Chathams' telephony "Chatham" (CVA) and Sounds Air's "Sounds" (SDA); a New Zealander's
+-- "sweet as" and "good as gold"
+do
+  local _, ex = scene({ "CRE CVA580 AT76 -41.3 174.8 090 8000 220", "CRE JST235 A320 -43.5 172.5 180 FL200 260" })
+  check_eq(ex("Chatham five eight zero turn left heading two four zero"), "HDG CVA580 240 LEFT")
+  check_eq(ex("delete Jetstar 235, sweet as"), "DEL JST235")
+  check_eq(ex("Chatham 580 turn left heading 180 for sequencing, good as gold"), "HDG CVA580 180 LEFT")
+end
