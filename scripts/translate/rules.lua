@@ -1897,6 +1897,15 @@ return function(intent, rule, words)
   -- ("bin it": British for delete; "I'm deleting United 1542 now": a controller saying what he does)
   -- ("despawn": a game's word for taking an object out of the world)
   rule { "delete del remove rid kill rmv bin deleting removing despawn despawned destroy", "delete" }
+  -- "clear the Alaska 31 off the scope": an aircraft cleared off the display, the words after it saying so
+  rule { "clear", "delete", when = function(g, i)
+    local r = g:refs_in(i + 1, math.min(#g.t + 1, i + 6), "aircraft")[1]
+    if not r then return false end
+    local k = r.e
+    if not g:word(k, "off from") then return false end
+    k = g:word(k + 1, "the") and k + 2 or k + 1
+    return g:word(k, "scope screen display radar map sim simulation")
+  end }
   -- "take out BAGSO", "take BAGSO out", "take away MAGLI from the route": a waypoint taken out of the route of the
   -- aircraft addressed
   rule { "take", "delwpt", near = { 3, "out away" }, when = function(g, i)

@@ -21818,3 +21818,10 @@ do
   check_eq(ex("delete Jetstar 235, sweet as"), "DEL JST235")
   check_eq(ex("Chatham 580 turn left heading 180 for sequencing, good as gold"), "HDG CVA580 180 LEFT")
 end
+
+-- Cycle 67 (lead, R252): "clear X off the scope" deletes it; "clear of traffic" clears nothing
+do
+  local _, ex = scene({ "CRE ASA31 B739 33.9 -118.4 090 FL250 280" })
+  check_eq(ex("clear the Alaska thirty one off the scope"), "DEL ASA31")
+  check_eq(ex("ASA31 clear of traffic, climb FL300"), "ALT ASA31 FL300")
+end
