@@ -2980,6 +2980,8 @@ return {
       flugflaeche = "flight level", ["drehen sie"] = "turn", drehen = "turn",
       steuerkurs = "heading", geschwindigkeit = "speed", knoten = "knots", fuss = "feet",
       reduzieren = "reduce", ["reduzieren sie"] = "reduce", bitte = "please", danke = "thanks",
+      -- (a value said again to confirm it: "heading 350, genau 350", "richtig, two seven zero")
+      genau = "correct", richtig = "correct",
       weiter = "continue", ["neues flugzeug"] = "create", loschen = "delete", loeschen = "delete",
       ["loschen sie"] = "delete", ["loeschen sie"] = "delete",
       -- the order of a script's steps ("Zuerst: ... Dann: ... Schliesslich FF 8 Minuten")

@@ -374,6 +374,7 @@ local names = {
     { "xanadu", "XAX" },  -- (AirAsia X)
     { "malaysian", "MAS" },
     { "jetstar", "JST" },
+    { "discover", "OCN" },  -- (Discover Airlines)
     { "chatham", "CVA" },  -- (Air Chathams)
     { "chathams", "CVA" },
     { "air chathams", "CVA" },

@@ -21825,3 +21825,12 @@ do
   check_eq(ex("clear the Alaska thirty one off the scope"), "DEL ASA31")
   check_eq(ex("ASA31 clear of traffic, climb FL300"), "ALT ASA31 FL300")
 end
+
+-- Cycle 67 (lead, R251): Discover Airlines' telephony "Discover" (OCN); German "genau" and "richtig" before a value
+-- said again to confirm it
+do
+  local _, ex = scene({ "CRE OCN4KL A320 50.0 8.6 250 FL200 280", "CRE RYR9HW B738 48.3 11.8 300 FL150 260" })
+  check_eq(ex("Discover four kilo lima, turn right by twenty degrees"), "HDG OCN4KL 270 RIGHT")
+  check_eq(ex("Ryanair nine hotel whiskey turn left heading two seven zero, richtig, two seven zero"), "HDG RYR9HW 270 LEFT")
+  check_eq(ex("Discover four kilo lima, climb flight level two one zero, genau, two one zero"), "ALT OCN4KL FL210")
+end
