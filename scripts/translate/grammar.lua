@@ -17728,6 +17728,25 @@ function G.named_idents(text, world)
   for c = #cuts, 1, -1 do text = text:sub(1, cuts[c][1] - 1) .. text:sub(cuts[c][2]) end
   return text
 end
+-- "Emirates 382 desc-- wrong one. Cathay 906 reduce speed 210": the speaker saying the aircraft called was not the
+-- one meant ("wrong one", "wrong aircraft", "wrong callsign", "wrong plane") after something was said to it (a digit
+-- or a number's word before) leaves unclear what stands: the question, else nil. Said first ("oops wrong plane, I meant DLH4AX ...")
+-- nothing is taken back; after "is" ("delete it, it is wrong one") it describes the aircraft.
+function G.wrong_aircraft_said(text)
+  local low = text:lower()
+  if not low:find("wrong", 1, true) then return nil end
+  for _, noun in ipairs({ "one", "aircraft", "callsign", "plane" }) do
+    local b = low:find("%f[%a]wrong%s+" .. noun .. "%f[%A]")
+    local before = b and low:sub(1, b - 1)
+    local said = before and before:find("%d") ~= nil
+    for w in (said == false and before or ""):gmatch("%a+") do said = said or NUMBER_WORDS[w] == true end
+    if said and not before:match("%f[%a]is%s+$") and not before:match("it'?s%s+$")
+        and not before:match("%f[%a]the%s+$") then
+      return string.format("You said 'wrong %s': which aircraft should I instruct, and what should it do?", noun)
+    end
+  end
+  return nil
+end
 -- "create ual1999 a320 at phl ...", "wind 270 at 50 knots over PHL": a large airport's IATA code (names.iata_airports)
 -- after "at", "over", "near" or "from", typed in capitals or, when no English word (G.IATA_WORDS, known_word), in
 -- lower case, that the navdata holds no fix or navaid by (world.place_known), is that airport's ICAO code when the
@@ -18554,6 +18573,8 @@ function M.translate(text, world)
     world.aircraft), world), world), world)
   text = G.other_callsign_denied(text, world.aircraft)
   text = G.qnh_on(G.level_hundreds_apart(text))
+  local wrong = G.wrong_aircraft_said(text)
+  if wrong then return { commands = {}, ask = wrong } end
   local abbreviated
   text, abbreviated = abbreviated_registrations(text, world.aircraft)
   if abbreviated then return { commands = {}, ask = abbreviated } end

@@ -21834,3 +21834,15 @@ do
   check_eq(ex("Ryanair nine hotel whiskey turn left heading two seven zero, richtig, two seven zero"), "HDG RYR9HW 270 LEFT")
   check_eq(ex("Discover four kilo lima, climb flight level two one zero, genau, two one zero"), "ALT OCN4KL FL210")
 end
+
+-- Cycle 67 (lead, R250 after its fixes): "wrong one" after an instruction said to an aircraft ("Emirates 382 desc--
+-- aiyah wrong one. Cathay 906 reduce speed 210") is asked, never a level of "one"; said first or after "is" it takes
+-- nothing back
+do
+  local _, ex = scene({ "CRE UAE382 A388 1.2 103.8 090 FL200 280", "CRE CPA906 A333 1.4 104.0 180 FL240 280",
+    "CRE DLH4AX A321 1.1 103.6 270 FL300 290" })
+  check_eq(ex("Emirates three eight two desc-- aiyah wrong one. Cathay nine zero six reduce speed two one zero"),
+    "ASK You said 'wrong one': which aircraft should I instruct, and what should it do?")
+  check_eq(ex("oops wrong plane, i meant dlh4ax hdg 180"), "HDG DLH4AX 180")
+  check_eq(ex("UAE382 delete please, it is wrong one"), "DEL UAE382")
+end
