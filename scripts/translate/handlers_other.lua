@@ -4474,6 +4474,14 @@ return function(H, f, compass)
         return
       end
     end
+    -- ("set the conflict detection radius to five miles": the detection's zone given a size in the request, no "on" or
+    -- "off" said, sets the zone only (m:zone), the switch as it is)
+    local sized = false
+    if spec.cmd == "ASAS" and self:on_off(s) < 0 and not self:word_in(1, #self.t + 1, "@on @off")
+        and self:word_in(s.trig, math.min(#self.t + 1, s.trig + 3), "radius zone") then
+      for _, q in ipairs(self:quantities(1, #self.t + 1)) do sized = sized or q.kind == "dist" end
+    end
+    if sized then return self:explain(s.trig, s.trig + 1) end
     -- "detection statebased", "state-based detection": CDMETHOD's method, which is on
     local method = spec.cmd == "ASAS" and self:find_word(s.b, s.e, "statebased state-based state")
     if method and method < s.e and (not self:word(method, "state") or self:word(method + 1, "based")) then

@@ -21846,3 +21846,12 @@ do
   check_eq(ex("oops wrong plane, i meant dlh4ax hdg 180"), "HDG DLH4AX 180")
   check_eq(ex("UAE382 delete please, it is wrong one"), "DEL UAE382")
 end
+
+-- Cycle 67 (lead, R252): a size given to the detection's zone with no "on" or "off" ("set the conflict detection radius
+-- to five miles") sets the zone only; switching detection on is not what was said
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL200 250" })
+  check_eq(ex("set the conflict detection radius to five miles"), "ZONER 5")
+  check_eq(ex("turn on CD with 5 nm and 1000 ft"), "ASAS ON ; ZONER 5 ; ZONEDH 1000")
+  check_eq(ex("cd on, radius 5 nm"), "ASAS ON ; ZONER 5")
+end
