@@ -307,13 +307,13 @@ std::string NavDb::airport_class(std::string_view id) const {
 
 std::vector<const NavPoint*> NavDb::navaids_named(std::string_view name, double ref_lat,
                                                   double ref_lon, double within_nm,
-                                                  std::string_view types) const {
+                                                  std::string_view types, bool run) const {
   std::vector<std::pair<double, size_t>> found;
   const std::string key = name_key(name);
   if (key.empty()) return {};
   const std::string kinds = " " + text::upper(types) + " ";
   for (size_t i = 0; i < navaid_names_.size() && i < waypoints_.size(); ++i) {
-    if (navaid_names_[i] != key) continue;
+    if (run ? !holds_run(navaid_names_[i], key) : navaid_names_[i] != key) continue;
     const NavPoint& p = waypoints_[i];
     if (!types.empty() && kinds.find(" " + p.type + " ") == std::string::npos) continue;
     const double d = geo::kwikdist_nm(ref_lat, ref_lon, p.lat, p.lon);

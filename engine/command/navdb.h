@@ -76,8 +76,11 @@ class NavDb {
   // VOR-DME"), is `name` (case and punctuation ignored), within `within_nm` of (ref_lat,
   // ref_lon) [deg], nearest first, each ident once (its nearest); of the NavPoint types in
   // `types` ("VOR TACAN", space-separated) only, when it is not empty. Pointers into this NavDb.
+  // With `run` true, the navaids whose name holds the words of `name` as a run of whole words
+  // ("rockford": RFD "CHICAGO/ROCKFORD").
   std::vector<const NavPoint*> navaids_named(std::string_view name, double ref_lat, double ref_lon,
-                                             double within_nm, std::string_view types = {}) const;
+                                             double within_nm, std::string_view types = {},
+                                             bool run = false) const;
   // The waypoint (fix or navaid) named `id` nearest (ref_lat, ref_lon) [deg].
   const NavPoint* waypoint(std::string_view id, double ref_lat, double ref_lon) const;
 

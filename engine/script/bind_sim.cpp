@@ -19,6 +19,9 @@
 //                           idents of the navaids called `name` within within_nm of lat, lon [deg],
 //                           nearest first, and their positions [deg]; of the navdata types in
 //                           `types` ("VOR TACAN") only, when given
+//   sim:navaids_with_words(words, lat, lon, within_nm [, types]) -> the same for the navaids whose
+//                           name holds `words` as a run of whole words ("rockford": RFD
+//                           "CHICAGO/ROCKFORD")
 //   sim:airports_coded(code, lat, lon) -> { "KJFK", ... }  airports whose ICAO code is one letter
 //                           before the three-letter `code` within 10 nm of the navaid or fix `code`
 //                           nearest lat, lon [deg] (the airport people name by the code of its
@@ -254,7 +257,7 @@ int l_airports_beside(lua_State* L) {
   return 1;
 }
 
-int l_navaids_named(lua_State* L) {
+int navaids(lua_State* L, bool run) {
   command::Stack* s = self(L);
   const std::string name = arg_string(L, 2, "name");
   const double lat = arg_number(L, 3, "lat"), lon = arg_number(L, 4, "lon"),
@@ -264,7 +267,7 @@ int l_navaids_named(lua_State* L) {
   lua_newtable(L);
   if (!s->navdb()) return 2;
   int k = 0;
-  for (const command::NavPoint* p : s->navdb()->navaids_named(name, lat, lon, within, types)) {
+  for (const command::NavPoint* p : s->navdb()->navaids_named(name, lat, lon, within, types, run)) {
     ++k;
     lua_pushstring(L, p->id.c_str());
     lua_rawseti(L, -3, k);
@@ -276,6 +279,13 @@ int l_navaids_named(lua_State* L) {
     lua_rawseti(L, -2, k);
   }
   return 2;
+}
+
+int l_navaids_named(lua_State* L) {
+  return navaids(L, false);
+}
+int l_navaids_with_words(lua_State* L) {
+  return navaids(L, true);
 }
 
 int l_waypoints_at(lua_State* L) {
@@ -592,6 +602,7 @@ void bind_sim(lua_State* L) {
       {"airports_beside_navaids", guarded<l_airports_beside_navaids>},
       {"airport_class", guarded<l_airport_class>},
       {"navaids_named", guarded<l_navaids_named>},
+      {"navaids_with_words", guarded<l_navaids_with_words>},
       {"airports_coded", guarded<l_airports_coded>},
       {"airports_beside", guarded<l_airports_beside>},
       {"waypoints_at", guarded<l_waypoints_at>},

@@ -114,6 +114,19 @@ Suffix read_suffix(const std::vector<Token>& t, size_t j, const std::vector<bool
         s.ends[0] = ++j;
         break;
       }
+      // "LATAM three six hundred": two spoken digits before "hundred" are the flight number's
+      // first two digits (3600)
+      const auto digit = [](const std::string& g) {
+        return g.size() == 1 && std::isdigit(static_cast<unsigned char>(g[0]));
+      };
+      if (k.text == "hundred" && s.groups.size() == 2 && digit(s.groups[0]) && digit(s.groups[1]) &&
+          s.groups[0][0] != '0' && !value_after) {
+        s.groups[0] += s.groups[1] + "00";
+        s.groups.pop_back();
+        s.ends.pop_back();
+        s.ends[0] = ++j;
+        break;
+      }
       if (!s.groups.empty()) {
         s.groups.pop_back();
         s.ends.pop_back();

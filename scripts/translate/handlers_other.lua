@@ -2229,8 +2229,9 @@ return function(H, f, compass)
   -- three words in [b, e), the first no English squawk knows, that the name of exactly one airport
   -- within lexicon.navaid_range_nm of `near` {lat, lon} [deg] holds (sim:airports_with_words); the
   -- question names them when several do (at most 4), nil when none; `min_words` (default 1): the fewest words
-  -- the name found is said in; `noun` (true): only words an airport noun follows ("Oakland airport").
-  function m:airport_by_words(b, e, near, min_words, noun)
+  -- the name found is said in; `noun` (true): only words an airport noun follows ("Oakland airport"); `large`
+  -- (true): only large airports.
+  function m:airport_by_words(b, e, near, min_words, noun, large)
     local with = self.world.airports_with_words
     if not with or not near.lat then return nil end
     local function free(k) return k < e and self.t[k] and self.t[k].kind == "word" and self.t[k].alpha
@@ -2245,7 +2246,8 @@ return function(H, f, compass)
             local phrase = table.concat(words, " ")
             local ids, class = {}, self.world.airport_class
             for _, x in ipairs(with(phrase, near.lat, near.lon, L.navaid_range_nm)) do
-              if not class or class(x) ~= "CLOSED" then ids[#ids + 1] = x end  -- (a closed airport is none)
+              -- (a closed airport is none)
+              if not class or (class(x) ~= "CLOSED" and (not large or class(x) == "LARGE")) then ids[#ids + 1] = x end
             end
             local id = self:one_named(ids, "airport", phrase, 4)
             -- ("destination Paris": one word held inside one airport's long name, LE TOUQUET PARIS PLAGE, that
@@ -2833,6 +2835,22 @@ return function(H, f, compass)
     -- ("proceed direct": nothing said after the word, fillers, "to" and marks aside, is the route's only waypoint;
     -- a word said there that names no place, "direct DME", "direct the beacon", "direct there", is asked about by
     -- name, never read as that waypoint)
+    -- ("proceed direct O'Hare" over Illinois: one word of the name of the one large airport near the aircraft that
+    -- bears it, KORD "CHICAGO OHARE INTL", where no place of the route or the navdata took it; a small field's word
+    -- alone stays asked, and so does the word where the request names a destination too: "go direct O'Hare, like
+    -- set the destination to KORD" may say the destination twice)
+    -- ("proceed direct rockford" off the RFD VOR's route: the word names a navaid near the aircraft too, asked)
+    if not wp and a and a.lat and not self:word_in(1, #self.t + 1, "destination dest") then
+      local port = self:airport_by_words(s.trig + 1, s.e, a, 1, false, true)
+      local span = port and self.place_spans[#self.place_spans]
+      local with = span and self.world.navaids_with_words
+      local navaids = with and with(self:raw(span.b, span.e):lower(), a.lat, a.lon, L.navaid_range_nm) or {}
+      if #navaids > 0 then
+        return self:need(string.format("Which place is '%s' for %s: the navaid %s or the airport %s?",
+          self:raw(span.b, span.e), id, table.concat(navaids, " or "), port))
+      end
+      wp = port
+    end
     local said = not wp and self:unplaced_words(s)
     if not wp and not said and a and a.route and #a.route == 1 then wp = a.route[1] end
     wp = wp or self:spoken_name(s.trig + 1, s.e)

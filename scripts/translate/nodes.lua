@@ -274,6 +274,7 @@ function M.world(sim, waypoints)
            airports_named = remembered(function(name, lat, lon, nm) return sim:airports_named(name, lat, lon, nm) end),
            airports_of_city = function(name, lat, lon, nm) return sim:airports_of_city(name, lat, lon, nm) end,
            airports_with_words = function(words, lat, lon, nm) return sim:airports_with_words(words, lat, lon, nm) end,
+           navaids_with_words = function(words, lat, lon, nm) return (sim:navaids_with_words(words, lat, lon, nm)) end,
            airports_beside_navaids = function(name, lat, lon, nm)
              return sim:airports_beside_navaids(name, lat, lon, nm)
            end,

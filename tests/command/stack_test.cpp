@@ -521,6 +521,14 @@ TEST_CASE(
   CHECK((*db)->navaids_named("reyes", lat, lon, 250).empty());
   CHECK((*db)->navaids_named("vor dme", lat, lon, 250).empty());
   CHECK((*db)->navaids_named("", lat, lon, 250).empty());
+  // by a run of whole words of the name: "reyes" is both POINT REYES, near first; "rey" is no word
+  // of it
+  CHECK(idents((*db)->navaids_named("reyes", lat, lon, 1e5, "", true)) ==
+        std::vector<std::string>{"PYE", "PYX"});
+  CHECK(idents((*db)->navaids_named("Reyes", lat, lon, 250, "", true)) ==
+        std::vector<std::string>{"PYE"});
+  CHECK((*db)->navaids_named("rey", lat, lon, 1e5, "", true).empty());
+  CHECK((*db)->navaids_named("francisco point", lat, lon, 1e5, "", true).empty());
 }
 
 namespace {

@@ -15589,12 +15589,13 @@ do
       "AT ACA55 DEDKI DO ALT ACA55 FL300 ; SPD ACA55 260")
   end
 end
--- Cycle 55 (hzl): a direct-to a word of an airport's name that names no place itself is asked, never sent
+-- Cycle 55 (hzl): a direct-to a word of an airport's name that names no place itself is the one large airport near the
+-- aircraft bearing it (cycle 68), never sent as a waypoint of that name
 do
   local _, ex = navscene({ "CRE SWA77 B737 38.7 -77.3 360 9000 250" }, "a direct-to an airport's name")
   if ex then
-    asked(ex("SWA77 proceed direct to Dulles"), "Dulles")
-    asked(ex("SWA77 direct Reagan"), "Reagan")
+    check_eq(ex("SWA77 proceed direct to Dulles"), "ADDWPT SWA77 KIAD ; DIRECT SWA77 KIAD")
+    check_eq(ex("SWA77 direct Reagan"), "ADDWPT SWA77 KDCA ; DIRECT SWA77 KDCA")
     check_eq(ex("SWA77 direct KIAD"), "ADDWPT SWA77 KIAD ; DIRECT SWA77 KIAD")
   end
 end
@@ -21854,4 +21855,24 @@ do
   check_eq(ex("set the conflict detection radius to five miles"), "ZONER 5")
   check_eq(ex("turn on CD with 5 nm and 1000 ft"), "ASAS ON ; ZONER 5 ; ZONEDH 1000")
   check_eq(ex("cd on, radius 5 nm"), "ASAS ON ; ZONER 5")
+end
+
+-- Cycle 68 (lead): a flight number said as two digits and "hundred" ("LATAM three six hundred") is the two digits
+-- and two zeros; a value after "hundred" keeps it a value
+do
+  local _, ex = scene({ "CRE LAN3600 B789 -23.4 -46.5 270 FL300 290", "CRE BAW3600 A320 51.3 0.5 090 FL250 280" })
+  check_eq(ex("LATAM three six hundred, climb flight level three four zero"), "ALT LAN3600 FL340")
+  check_eq(ex("Speedbird three six hundred descend flight level two one zero"), "ALT BAW3600 FL210")
+  asked(ex("Speedbird three six hundred feet"), "'six hundred feet' is a value, no flight number")
+end
+
+-- Cycle 68 (lead): "proceed direct O'Hare": one word of the name of the one large airport near the aircraft that bears
+-- it, where nothing else took the word; a small field's word, or the request naming a destination too, is asked
+do
+  local _, ex = navscene({ "CRE UAL22 B738 41.5 -87.5 180 FL200 250", "ADDWPT UAL22 JOT" }, "airports said by one word")
+  if ex then
+    check_eq(ex("United twenty two proceed direct O'Hare"), "ADDWPT UAL22 KORD ; DIRECT UAL22 KORD")
+    asked(ex("United twenty two proceed direct Reagan"), "KDCA is far from Illinois")
+    asked(ex("United twenty two go direct O'Hare, like set the destination to KORD"), "the destination said twice?")
+  end
 end
