@@ -1287,8 +1287,13 @@ end
 -- as "sorry" before), as said or as "the" and its first word, then a modal of lexicon.self_correction.restated_modals
 -- or not, is dropped: the instruction after it corrects the one before. A ", not climb" (or descend) closing a
 -- request whose "sorry" is followed by the other verb names the instruction taken back, and is dropped too.
+-- (Only after an instruction: "Air Nostrum 8310, Air Europa, sorry, Air Nostrum 8310 climb FL090" takes back the
+-- aircraft named between, G.restated_instruction_words naming none there.)
 G.restated_not_addressee = set_of({ "please", "kindly", "climb", "descend", "turn", "speed", "heading", "reduce",
   "increase", "maintain", "fly", "set", "the", "and", "to", "flight", "level", "fl", "at", "by", "of", "for", "with" })
+G.restated_instruction_words = set_of({ "climb", "descend", "turn", "heading", "hdg", "speed", "spd", "reduce",
+  "increase", "maintain", "fly", "level", "fl", "alt", "altitude", "direct", "proceed", "left", "right", "knots", "kts",
+  "mach", "expedite", "stop", "continue", "resume", "route", "cleared", "should", "go" })
 function G.restated_addressee(text)
   local lower = text:lower()
   if not (lower:find("sorry", 1, true) or lower:find("correction", 1, true)) then return text end
@@ -1303,10 +1308,14 @@ function G.restated_addressee(text)
   for _, marker in ipairs({ "sorry", "correction" }) do
     local from = 1
     while true do
-      local _, me = lower:find(marker .. "[%s,]+", from)
+      local ms, me = lower:find(marker .. "[%s,]+", from)
       if not me then break end
       from = me + 1
-      for _, f in ipairs(forms) do
+      local instructed = false
+      for w in (a and lower:sub(#a + 1, ms - 1) or ""):gmatch("%a+") do
+        instructed = instructed or G.restated_instruction_words[w] ~= nil
+      end
+      for _, f in ipairs(instructed and forms or {}) do
         if lower:sub(me + 1, me + #f) == f and lower:sub(me + #f + 1, me + #f + 1):match("[%s,]") then
           local e = me + #f + 1
           local rest = lower:sub(e)

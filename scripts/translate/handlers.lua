@@ -1886,6 +1886,25 @@ function m:two_letter_place_refs()
   end
 end
 
+-- The one VOR among navaids `ids` called `name`, at `at` ({lat, lon} [deg] each, as sim:navaids_named gives), when
+-- there are several and they all stand within lexicon.navaid_station_nm of the first: one station ("Rodos": the NDB
+-- ROS, the VOR-DME RDS and the TACAN ROD; "Castejon": the VOR-DME CJN, the NDB CTE 1.2 NM away), its name said
+-- alone meaning its VOR; else nil.
+function m:station_vor(name, ids, at)
+  local named = self.world.navaids_named
+  local station = named ~= nil and #ids > 1 and at[1] ~= nil
+  for k = 2, station and #ids or 0 do
+    local dlat = at[1][1] - at[k][1]
+    local dlon = (at[1][2] - at[k][2]) * math.cos(math.rad(at[k][1]))
+    station = station and 60 * math.sqrt(dlat * dlat + dlon * dlon) <= L.navaid_station_nm
+  end
+  local vor = station and named(name, at[1][1], at[1][2], L.navaid_station_nm, "VOR") or {}
+  for _, id in ipairs(#vor == 1 and ids or {}) do
+    if id == vor[1] then return vor end
+  end
+  return nil
+end
+
 -- "at 10 miles from LIMA", "position of the LIMA VOR", "direct TEBBY": a navaid said by its navdata name in
 -- capitals. A one-word waypoint ref that no route or DEFWPT holds, whose ident the navdata holds nowhere
 -- within lexicon.navaid_range_nm of an aircraft flying (LIMA is an airfield in Italy), and that names
@@ -1952,12 +1971,7 @@ function m:navaid_name_refs()
           table.concat(ids, " or "), r.name))
       elseif #ids > 0 and not other then
         -- ("direct RODOS": several navaids of the name, all of one station, are its one VOR)
-        local station = #ids > 1 and at[1] ~= nil
-        for k = 2, station and #ids or 0 do
-          station = station and at[k] ~= nil and nm(at[1][1], at[1][2], at[k][1], at[k][2]) <= L.navaid_station_nm
-        end
-        local vor = station and named(r.name, at[1][1], at[1][2], L.navaid_station_nm, "VOR") or {}
-        if #vor == 1 and seen[vor[1]] then ids = vor end
+        ids = self:station_vor(r.name, ids, at) or ids
         -- ("add TANGO after SIERRA": where the scenario names its own waypoints by words of the phonetic alphabet,
         -- another such word is as likely one of them not yet defined as the navaid of that name: asked; the kind
         -- said after it, "the TANGO VOR", names the navaid)
@@ -3632,6 +3646,10 @@ function m:settle_callsigns()
         if between then self:mark_used(r.e, r.e + 1) end
       end
       if between then
+        -- ("Vueling 8826, eh, Vueling 8862, descend": said again as another id, heard inexactly, the later one is
+        -- what was meant: its hearing is kept, and m:confirm_callsigns asks)
+        local h = nxt.heard
+        if h and h.id and not self:airline_and_digits_match(h.id, nxt.name) then r.heard = h end
         r.e = nxt.e
         table.remove(self.refs, k + 1)
       end

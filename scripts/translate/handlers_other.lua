@@ -1956,6 +1956,13 @@ return function(H, f, compass)
             local only = named(phrase, a.lat, a.lon, range_nm or L.navaid_range_nm, first_kind)
             if #only == 1 then ids = only end
           end
+          -- ("move Air Nostrum 8123 to Castejon": several navaids of the name, all of one station, are its VOR, where
+          -- no airport bears the name: "Vilnius" is left to the airport's reading)
+          local by_airport = self.world.airports_named
+          if #ids > 1 and not kind and not (by_airport and #by_airport(phrase) > 0) then
+            ids = self:station_vor(phrase, ids, select(2, named(phrase, a.lat, a.lon, range_nm or L.navaid_range_nm)))
+              or ids
+          end
           -- (of several navaids of the name, the one the aircraft's route holds: "direct Stornoway" with
           -- STN, not SAY or ISV, in its route)
           local held = {}

@@ -118,7 +118,7 @@ return {
         "entirely", "moment", "away", "back", "aside", "apart", "nearer", "farther",
         -- the same markers in Spanish and Portuguese, said in English by their speakers ("vamos, LATAM 3402 ...",
         -- "bueno, ...", "entonces ...", "bom, ...", "olha: ...")
-        "vamos", "bueno", "entonces", "listo", "dale", "vale", "mira", "ojo", "bom", "entao", "então", "olha",
+        "vamos", "bueno", "entonces", "listo", "dale", "vale", "venga", "mira", "ojo", "bom", "entao", "então", "olha",
         "pronto", "beleza",
         -- comparatives of a remark on the set-up ("a bit nicer", "closer to 90", "a shorter look-ahead")
         "nicer", "better", "closer", "shorter", "longer", "smaller", "larger", "bigger",

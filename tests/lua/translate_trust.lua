@@ -21876,3 +21876,29 @@ do
     asked(ex("United twenty two go direct O'Hare, like set the destination to KORD"), "the destination said twice?")
   end
 end
+
+-- Cycle 68 (lead, R254): the request's addressee said again after "sorry" is dropped only after an instruction; after
+-- another aircraft named alone it takes that aircraft back ("Air Nostrum 8310, Air Europa, perdón, Air Nostrum 8310
+-- climb": ANE8310, never the Air Europa); a callsign said again as another id, heard inexactly, is asked; Spanish
+-- "venga"
+do
+  local _, ex = scene({ "CRE AEA4122 E195 40.9 0.8 220 FL200 270", "CRE ANE8310 AT72 41.6 1.5 120 7000 200",
+    "CRE THY876 A321 40 1 90 FL200 280", "CRE VLG8826 A321 40.4 0.3 040 FL220 290" })
+  check_eq(ex("Air Nostrum 8310, Air Europa, perdón, Air Nostrum 8310 climb FL090"), "ALT ANE8310 FL90")
+  check_eq(ex("ANE8310, AEA4122, sorry, ANE8310 climb FL090"), "ALT ANE8310 FL90")
+  check_eq(ex("Turkish 876, descend FL180, sorry, Turkish 876 should climb to FL320"), "ALT THY876 FL320")
+  check_eq(ex("Vueling eight eight two six, eh, Vueling eight eight six two, descend FL200"),
+    "ASK Did you mean VLG8826? I heard VLG8862.")
+  check_eq(ex("Vueling eight eight two six, Vueling eight eight two six, descend FL200"), "ALT VLG8826 FL200")
+  check_eq(ex("venga, resume the simulation"), "OP")
+end
+
+-- Cycle 68 (lead, R254): a navaid's name said alone where the navaids of that name are one station (the CJN VOR-DME,
+-- the CTE NDB 1.2 NM away) is its VOR; the kind said names the other
+do
+  local _, ex = navscene({ "CRE ANE8123 CRJ9 40.7 -3.0 300 FL240 290" }, "one station's navaids by name")
+  if ex then
+    check_eq(ex("move Air Nostrum 8123 to Castejon"), "MOVE ANE8123 CJN")
+    check_eq(ex("Air Nostrum 8123 direct Castejon NDB"), "ADDWPT ANE8123 CTE ; DIRECT ANE8123 CTE")
+  end
+end
