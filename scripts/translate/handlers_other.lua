@@ -1708,6 +1708,17 @@ return function(H, f, compass)
     end
     return false
   end
+  -- True when the navaid `navaid` nearest `near` {lat, lon} [deg] stands within lexicon.navaid_by_airport_nm of the
+  -- airport `airport`: one place ("track direct Sydney": the SY VOR-DME 0.3 NM from YSSY), the city said its airport;
+  -- never where the request names a destination too ("cleared direct Cork, destination Cork": the place and the
+  -- destination said twice, or two things?)
+  function m:navaid_by_airport(navaid, airport, near)
+    local beside = not self:word_in(1, #self.t + 1, "destination dest") and self.world.airports_beside
+    for _, id in ipairs(beside and near.lat and beside(navaid, near.lat, near.lon, L.navaid_by_airport_nm) or {}) do
+      if id == airport then return true end
+    end
+    return false
+  end
   function m:place_by_name(b, e, a, reference, large)
     local near = a and { a } or self.fleet
     -- (the longer name first: "direct Zurich East" is the ZUE VOR, not Zurich airport and a word more)
@@ -1782,6 +1793,9 @@ return function(H, f, compass)
       -- Tucson" is KTUS)
       local class = self.world.airport_class
       if large and not nav_held and class and class(airport) == "LARGE" then return airport end
+      if not nav_held and class and class(airport) == "LARGE" and self:navaid_by_airport(navaid, airport, a) then
+        return airport
+      end
       if nav_held or not airport_held then
         self:need(string.format("Which place is meant: the %s navaid or the %s airport?", navaid, airport))
       end
@@ -1855,6 +1869,7 @@ return function(H, f, compass)
         if held[id:upper()] then return id end
       end
       class = w.airport_class and named[1] and w.airport_class(named[1])
+      if class == "LARGE" and self:navaid_by_airport(navaid, named[1], p) then return named[1] end
       if class == "LARGE" or class == "MEDIUM" then
         self:need(string.format("Which place is meant: the %s navaid or the %s airport?", navaid, named[1]))
       end

@@ -2126,6 +2126,9 @@ return {
   -- a navaid said by its name within this of a large airport stands on it: "create ... at Marseille" is the
   -- airport (LFML), not its NDB (MJ) [NM]
   on_airport_nm = 1,
+  -- a navaid named after a city within this of the large airport bearing the city's name [NM] is one place with
+  -- it: "direct Sydney" (the SY VOR-DME 0.3 NM from YSSY, the BN VOR-DME 1.6 NM from YBBN) is the airport
+  navaid_by_airport_nm = 2,
   -- a place's name said straight before a latitude and longitude after one of these names that position when the
   -- navdata has a place of the name within named_position_nm of it ("over Schiphol (52.31 N, 4.76 E)":
   -- grammar.lua G:place_at_its_position) [NM]

@@ -1690,7 +1690,7 @@ do
   check_eq(ex("EJU74QP proceed to the metering fix MRG01"), "DIRECT EJU74QP MRG01")
 end
 -- a name an airport and a navaid near the aircraft both bear, in a direct-to: the one its route holds,
--- else asked about; "Virgin" names Virgin Atlantic (VIR) and Virgin Australia (VOZ): a callsign said with
+-- else asked about (the navaid on the airport, within lexicon.navaid_by_airport_nm, is one place: the airport); "Virgin" names Virgin Atlantic (VIR) and Virgin Australia (VOZ): a callsign said with
 -- it is the one flying, a new one takes the airline of the one flying, else is asked about
 do
   local nav, ex = navscene({ "CRE QFA520 B738 -27.9 152.4 050 FL160 280", "ADDWPT QFA520 BN",
@@ -1699,7 +1699,8 @@ do
     check_eq(ex("Qantas 520 track direct Brisbane"), "DIRECT QFA520 BN")
     check_eq(ex("Qantas 520, proceed direct to Brisbane, descend FL120"), "DIRECT QFA520 BN ; ALT QFA520 FL120")
     check_eq(ex("Virgin 817 cleared direct Sydney"), "DIRECT VOZ817 YSSY")
-    check(ex("Rex 64 direct Melbourne"):find("^ASK Which place is meant: the ML navaid or the YMML airport") ~= nil)
+    -- (the ML VOR-DME stands on YMML: one place, the airport; lexicon.navaid_by_airport_nm)
+    check_eq(ex("Rex 64 direct Melbourne"), "ADDWPT RXA64 YMML ; DIRECT RXA64 YMML")
     -- a navaid's kind typed in capitals after the name is no waypoint of its own
     check_eq(ex("Qantas 520, track direct to the Brisbane VOR"), "DIRECT QFA520 BN")
     check_eq(ex("Rex 64 direct Melbourne VOR"), "ADDWPT RXA64 ML ; DIRECT RXA64 ML")
@@ -5569,7 +5570,8 @@ do
 end
 
 -- Cycle 35 (R71): a navaid named after a city whose airport lies beside it under a longer name ("Sanford":
--- the SFB NDB, KSFB "ORLANDO SANFORD INTL") in a direct-to is the one of the two the route holds, else asked;
+-- the SFB NDB, KSFB "ORLANDO SANFORD INTL") in a direct-to is the one of the two the route holds, else the airport
+-- (the NDB stands within lexicon.navaid_by_airport_nm of it: one place);
 -- the navaid's kind said ("the Sanford NDB") is the navaid
 do
   local _, ex = navscene({ "CRE ASH88 E75L 29.20 -81.10 200 8000 240", "ADDWPT ASH88 KSFB",
@@ -5578,7 +5580,7 @@ do
   if ex then
     check_eq(ex("ASH88 go direct Sanford"), "DIRECT ASH88 KSFB")
     check_eq(ex("LOF22 direct Sanford"), "DIRECT LOF22 SFB")
-    asked(ex("EJA301 direct Sanford"), "neither in the route")
+    check_eq(ex("EJA301 direct Sanford"), "ADDWPT EJA301 KSFB ; DIRECT EJA301 KSFB")  -- (neither held: one place)
     check_eq(ex("EJA301 direct the Sanford NDB"), "ADDWPT EJA301 SFB ; DIRECT EJA301 SFB")
   end
 end
@@ -16950,7 +16952,7 @@ do
     check_eq(ex("UAL12 climb 9000 and turn toward the Oakland airport"), "ALT UAL12 9000 ; HDG UAL12 KOAK")
     -- a navaid's name with the airport's own word after it is the airport
     check_eq(ex("American 1523 direct Boston Logan"), "ADDWPT AAL1523 KBOS ; DIRECT AAL1523 KBOS")
-    asked(ex("American 1523 direct Boston"), "the BOS VOR or KBOS")
+    check_eq(ex("American 1523 direct Boston"), "ADDWPT AAL1523 KBOS ; DIRECT AAL1523 KBOS")  -- (the BOS VOR on KBOS)
   end
   local nav2, me = navscene({ "CRE MSR804 A320 31.80 29.70 200 FL140 270", "ADDWPT MSR804 OTIKO", "ADDWPT MSR804 HEBA",
     "CRE SVA317 B789 29.60 32.30 300 FL330 280", "CRE RJA435 A320 32.70 35.90 170 FL170 270", "ADDWPT RJA435 AMN",
@@ -21900,5 +21902,19 @@ do
   if ex then
     check_eq(ex("move Air Nostrum 8123 to Castejon"), "MOVE ANE8123 CJN")
     check_eq(ex("Air Nostrum 8123 direct Castejon NDB"), "ADDWPT ANE8123 CTE ; DIRECT ANE8123 CTE")
+  end
+end
+
+-- Cycle 68 (lead, R257): a city's navaid within lexicon.navaid_by_airport_nm of the large airport bearing its name is
+-- one place with it: "track direct Sydney" is YSSY (the SY VOR-DME 0.3 NM away); the navaid a route holds stays the
+-- navaid, and a destination said too leaves it asked
+do
+  local _, ex = navscene({ "CRE QFA95 B789 -34.80 149.40 190 FL390 280", "CRE VOZ845 B738 -27.5 153.0 180 FL320 280",
+    "ADDWPT VOZ845 BN", "CRE JST441 A320 -27.00 151.90 100 FL240 280" }, "a city's navaid on its airport")
+  if ex then
+    check_eq(ex("Qantas nine five track direct Sydney"), "ADDWPT QFA95 YSSY ; DIRECT QFA95 YSSY")
+    check_eq(ex("Jetstar 441 track direct to Brisbane"), "ADDWPT JST441 YBBN ; DIRECT JST441 YBBN")
+    check_eq(ex("Velocity eight four five, track direct Brisbane"), "DIRECT VOZ845 BN")
+    asked(ex("Jetstar 441 cleared direct Brisbane, destination Brisbane"), "the destination said too")
   end
 end
