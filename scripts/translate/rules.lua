@@ -2136,6 +2136,11 @@ return function(intent, rule, words)
     return airport_word(g, to + 1, g:word(to, "to into"))
   end
   rule { "send divert diverting", "dest", when = sent_to_airport }
+  -- "Delta 2650 cleared to Atlanta, KATL": a clearance to an airport (no level, no "land") is its destination; one
+  -- with its route after it ("via COATT", "then ...") is left to the parse
+  rule { "cleared", "dest", next = "to", when = function(g, i)
+    return airport_word(g, i + 2, true) and not g:word_in(i + 2, #g.t + 1, "via then")
+  end }
   -- "UAE201 divert AUH", "divert Cologne", "divert DLH458 EDDK": the place straight after "divert" (and the
   -- aircraft diverted), no "to"
   rule { "divert diverting", "dest", when = function(g, i)

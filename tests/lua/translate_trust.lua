@@ -21918,3 +21918,13 @@ do
     asked(ex("Jetstar 441 cleared direct Brisbane, destination Brisbane"), "the destination said too")
   end
 end
+
+-- Cycle 68 (lead, R260): "cleared to" an airport is its destination; with a route after it, or a level or "land", not
+do
+  local _, ex = navscene({ "CRE DAL2650 A321 37.70 -77.60 350 FL210 280", "ADDWPT DAL2650 COATT" }, "cleared to an airport")
+  if ex then
+    check_eq(ex("Delta 2650 cleared to Atlanta, KATL"), "DEST DAL2650 KATL")
+    check_eq(ex("Delta 2650 cleared to flight level two four zero"), "ALT DAL2650 FL240")
+    asked(ex("Delta 2650 cleared to KATL via COATT"), "a route after the airport")
+  end
+end
