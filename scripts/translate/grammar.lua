@@ -9335,6 +9335,12 @@ function G:when_reached(s)
   end
   -- (the instruction's own word is no noun of the value reached: "after reach, speed 280")
   if k ~= s.trig and self:word(k, "it that height altitude level speed") then k = self:skip_fillers(k + 1) end
+  -- ("climb 8000 feet when reaching speed 200 knots": "speed" straight after the verb, no mark before the condition
+  -- or after the verb, may be the speed reached as well as the instruction: not read as the level reached; "climb
+  -- FL350, on reaching speed M.78" opens a clause of its own, the level's)
+  if k == s.trig and k == verb + 1 and self:word(k, "speed") and not (self.t[c - 1] and self.t[c - 1].kind == "punct") then
+    return false
+  end
   return self:instruction_lead(k, s.trig) == s.trig, kind
 end
 

@@ -21928,3 +21928,14 @@ do
     asked(ex("Delta 2650 cleared to KATL via COATT"), "a route after the airport")
   end
 end
+
+-- Cycle 68 (lead, R258): "climb 8000 feet when reaching speed 200 knots", no mark before the condition, may wait for the
+-- speed as well as slow down at the level: asked; "climb FL350, on reaching speed M.78", a clause of its own, is the
+-- level reached
+do
+  local _, ex = scene({ "CRE VTI705 A320 19.1 72.9 090 6000 250", "CRE SAA331 A333 -26 28 090 FL300 280" })
+  asked(ex("Vistara 705 climb and maintain 8000 feet when reaching speed 200 knots"), "the speed reached or said?")
+  check_eq(ex("Springbok three three one, climb flight level three five zero, on reaching speed Mach decimal seven eight"),
+    "ALT SAA331 FL350 ; ATALT SAA331 FL350 SPD SAA331 M0.78")
+  check_eq(ex("Vistara 705 when reaching speed 200 knots climb and maintain 8000 feet"), "ATSPD VTI705 200 ALT VTI705 8000")
+end
