@@ -21939,3 +21939,11 @@ do
     "ALT SAA331 FL350 ; ATALT SAA331 FL350 SPD SAA331 M0.78")
   check_eq(ex("Vistara 705 when reaching speed 200 knots climb and maintain 8000 feet"), "ATSPD VTI705 200 ALT VTI705 8000")
 end
+
+-- Cycle 68 (lead, R255): a Dutch controller's "klopt" (right), "dank je wel" and "even kijken" (let me see)
+do
+  local _, ex = scene({ "CRE KLM1623 B738 52.3 4.8 090 FL120 280", "CRE TFL627 B738 52.0 4.5 180 FL200 280" })
+  check_eq(ex("KLM 1623 klopt, maintain flight level one hundred, speed two eight zero"), "ALT KLM1623 FL100 ; SPD KLM1623 280")
+  check_eq(ex("Orange six two seven, turn right heading two four zero, dank je wel"), "HDG TFL627 240 RIGHT")
+  check_eq(ex("KLM 1623, even kijken, turn right heading zero eight zero"), "HDG KLM1623 80 RIGHT")
+end
