@@ -4305,11 +4305,19 @@ end
 -- values after the last correction word.
 -- The last correction word of segment s ("correction", or a marker straight after a value: m:marker_after_value),
 -- else nil.
+-- (an apology closing the request straight after a value, "climb FL150, euh, one six zero pardon", is for the slip
+-- before it, no correction point: the value before it stands, G:dangling_correction asking where nothing marked it)
 function m:last_correction(s)
   local corr
   local any = self:said("@correction") or self:said(MARKER_WORDS)
   for i = s.b, any and s.e - 1 or 0 do
-    if self:word(i, "@correction") or self:marker_after_value(i) then corr = i end
+    if self:word(i, "@correction") then
+      corr = i
+    elseif self:marker_after_value(i) then
+      local k = i + 1
+      while self.t[k] and (self.t[k].kind == "punct" or self.t[k].filler) do k = k + 1 end
+      if self.t[k] or not self:word(i, "sorry pardon") then corr = i end
+    end
   end
   return corr
 end

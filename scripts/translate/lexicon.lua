@@ -811,6 +811,8 @@ return {
     uhm = { word = "uh" }, ehm = { word = "uh" }, ahh = { word = "uh" }, ahm = { word = "uh" },
     -- (a French speaker's hesitation, said in English as "uh": "Swiss 77, euh, heading 240")
     euh = { word = "uh" }, heu = { word = "uh" },
+    -- (and "alors", so: "climb FL150, alors, one six zero, pardon")
+    alors = { word = "uh" },
     -- French-accented English typed as heard: the h dropped ("turn left 'eading 060", "say 'eading"), the vowel
     -- of "turn" ("tourn left"), "ze" and "zen" for "the" and "then" ("pause ze simulation"), and "height" for "eight" inside a number
     -- said digit by digit or before "thousand"/"hundred" ("tree tree height", "descend to height thousand";
@@ -2840,6 +2842,7 @@ return {
     latvian = { sorry = { "atvainojiet", "piedodiet" }, wait = { "pagaidiet", "uzgaidiet" },
       please = { "ludzu", "lūdzu" }, thanks = { "paldies" } },
     dutch = { yes = { "klopt" }, thanks = { "dank je wel", "dank u wel" } },
+    french = { okay = { "d'accord", "daccord" }, thanks = { "merci beaucoup" } },
   },
   -- A language said whole by a controller or instructor ("vire a la izquierda rumbo 170", "borra el iberia
   -- 6253", "montez au niveau 140", "tournez à gauche cap 030"), read as its English word for word (grammar.lua

@@ -21947,3 +21947,16 @@ do
   check_eq(ex("Orange six two seven, turn right heading two four zero, dank je wel"), "HDG TFL627 240 RIGHT")
   check_eq(ex("KLM 1623, even kijken, turn right heading zero eight zero"), "HDG KLM1623 80 RIGHT")
 end
+
+-- Cycle 68 (lead, R253): an apology closing the request straight after a corrected value is for the slip, no
+-- correction point: "climb FL150, correction, one six zero sorry" is FL160 (it had sent FL150); with no mark before
+-- the new value it is asked. A French controller's "alors" (so, a hesitation), "d'accord", "merci beaucoup"
+do
+  local _, ex = scene({ "CRE CCM412 A320 43.5 7.0 090 FL120 280", "CRE EZY62HK A320 44 5 180 FL360 280" })
+  check_eq(ex("Corsica four one two, climb flight level one five zero, correction, one six zero sorry"), "ALT CCM412 FL160")
+  check_eq(ex("Corsica four one two, climb flight level one five zero, euh, one six zero pardon"), "ALT CCM412 FL160")
+  asked(ex("Corsica four one two, climb flight level one five zero, one six zero sorry"), "no mark before the new value")
+  check_eq(ex("easyJet 62HK, descend flight level three four zero, alors, three three zero pardon"), "ALT EZY62HK FL330")
+  check_eq(ex("Corsica four one two, climb flight level one six zero, d'accord"), "ALT CCM412 FL160")
+  check_eq(ex("easyJet 62HK, alors, vertical speed minus one thousand, merci beaucoup"), "VS EZY62HK -1000")
+end
