@@ -13162,8 +13162,10 @@ function G:heard_route_place()
         self.confirm = self.confirm or { id = name, heard = t.raw }
         -- (in a request that adds to a route, "after"/"before" place the new waypoint: a name there stays confirmed)
         local placing = G.route_position[self.words[k - 1]] and self:said("add insert addwpt append")
-        self.heard_sure = not placing and t.raw:match("^%l+$") and (G.sure_route_name(t.text, route) == name
-          and G.heard_nowhere_else(t.text, name, self.world) or self:route_navaid_named(t.text, name)) and name or nil
+        -- (a capitalised word sure only as the navaid's own name: "cross Clacton flight level 170", CLN "CLACTON")
+        self.heard_sure = not placing and (t.raw:match("^%l+$") and (G.sure_route_name(t.text, route) == name
+          and G.heard_nowhere_else(t.text, name, self.world) or self:route_navaid_named(t.text, name))
+          or t.raw:match("^%u%l+$") and self:route_navaid_named(t.text, name)) and name or nil
         return self:need(string.format("Did you mean %s? I heard '%s'.", name, t.raw))
       end
     end

@@ -1490,10 +1490,17 @@ function m:airline_refs()
     end
   end
   -- ("descend FL160, level by Talla": the navaid or airport said by its name of one or two words after
-  -- "level by", ending the clause, is the waypoint of that ident)
+  -- "level by", ending the clause, is the waypoint of that ident; so after "be level" and the level, "descend to be
+  -- level flight level one two zero by Talla")
   local texts = self.words
+  local function be_level_before(i)
+    for k = math.max(2, i - 10), i - 2 do
+      if texts[k] == "level" and texts[k - 1] == "be" then return true end
+    end
+    return false
+  end
   for i = 3, #self.t do
-    if texts[i - 1] == "by" and texts[i - 2] == "level" and not self:has_ref(i, i + 1) then
+    if texts[i - 1] == "by" and (texts[i - 2] == "level" or be_level_before(i)) and not self:has_ref(i, i + 1) then
       for e = math.min(i + 2, #self.t + 1), i + 1, -1 do
         local id = (not self.t[e] or self.t[e].kind == "punct") and self:place_by_name(i, e)
         if id then

@@ -21960,3 +21960,16 @@ do
   check_eq(ex("Corsica four one two, climb flight level one six zero, d'accord"), "ALT CCM412 FL160")
   check_eq(ex("easyJet 62HK, alors, vertical speed minus one thousand, merci beaucoup"), "VS EZY62HK -1000")
 end
+
+-- Cycle 68 (lead, R261): a navaid's spoken name after "be level" and the level, then "by" ("descend to be level flight
+-- level one two zero by Talla"); a capitalised word that is exactly the name of a navaid on the route ("cross Clacton
+-- flight level one seven zero") is read as confirmed
+do
+  local _, ex = navscene({ "CRE BAW1486 A320 55.9 -3.2 180 FL200 280", "ADDWPT BAW1486 TLA",
+    "CRE BAW9AE A320 51.6 1.6 270 FL230 290", "ADDWPT BAW9AE CLN" }, "UK navaids by their spoken names")
+  if ex then
+    check_eq(ex("Speedbird one four eight six, descend to be level flight level one two zero by Talla"),
+      "ALT BAW1486 FL120 ; AT BAW1486 TLA ALT FL120")
+    check_eq(ex("Speedbird nine alpha echo, cross Clacton flight level one seven zero"), "AT BAW9AE CLN ALT FL170")
+  end
+end
