@@ -252,6 +252,7 @@ local names = {
     { "sprintair", "SRN" },  -- (SprintAir, Poland's cargo and charter airline; also said "Sprint Air")
     { "sprint air", "SRN" },
     { "czech", "CSA" },
+    { "csa", "CSA" },  -- (Czech Airlines' own initials, said as its telephony by Czech controllers: "CSA eight five two")
     { "olympic", "OAL" },
     { "cyprus", "CYP" },
     { "tarom", "ROT" },

@@ -21973,3 +21973,10 @@ do
     check_eq(ex("Speedbird nine alpha echo, cross Clacton flight level one seven zero"), "AT BAW9AE CLN ALT FL170")
   end
 end
+
+-- Cycle 68 (lead, R262): Czech Airlines' initials "CSA" said as its telephony for a new aircraft's callsign
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 90 FL200 250" })
+  check_eq(ex("create CSA eight five two, an ATR seventy-two, at 50.2 north 14.0 east, heading 090, 6000 feet, 200 knots"),
+    "CRE CSA852 AT72 50.2 14 90 6000 200")
+end
