@@ -2816,7 +2816,7 @@ return {
       okay = { "beseder", "be seder" }, please = { "bevakasha" }, thanks = { "todah", "toda raba" } },
     hungarian = { yes = { "igen" }, sorry = { "bocsanat", "bocsánat", "elnezest", "elnézést" },
       ["then"] = { "aztan", "aztán" }, wait = { "varj", "várj", "varjon", "egy pillanat" }, okay = { "rendben" },
-      please = { "kerem", "kérem" }, thanks = { "koszonom", "köszönöm", "koszi" } },
+      please = { "kerem", "kérem" }, thanks = { "koszonom szepen", "köszönöm szépen", "koszonom", "köszönöm", "koszi" } },
     czech_slovak = { sorry = { "promin", "prominte", "promiňte", "prepacte", "prepáčte" },
       ["then"] = { "potom" }, wait = { "pockej", "pockejte", "počkejte", "pockajte", "počkajte" },
       okay = { "jasne", "jasně" }, please = { "prosim", "prosím" },

@@ -21980,3 +21980,9 @@ do
   check_eq(ex("create CSA eight five two, an ATR seventy-two, at 50.2 north 14.0 east, heading 090, 6000 feet, 200 knots"),
     "CRE CSA852 AT72 50.2 14 90 6000 200")
 end
+
+-- Cycle 68 (lead, R265): Hungarian "köszönöm szépen"
+do
+  local _, ex = scene({ "CRE WZZ2557 A320 47.4 19.2 090 FL140 280" })
+  check_eq(ex("Wizz Air two five five seven, climb flight level one six zero, köszönöm szépen"), "ALT WZZ2557 FL160")
+end
