@@ -13614,6 +13614,23 @@ end
 
 -- True when an instruction word stands before token i, or a value with a unit of its own, which is an instruction
 -- wherever it stands ("keep 250 knots until KV").
+-- True when the measure named within two words after "report" at i (heading, level, altitude, speed, mach) is one an
+-- instruction before i sets, or none is named: the readback of what was set ("turn right 15, report heading").
+-- (a value of that measure said before it counts as set: "maintain FL100, report level")
+G.report_measures = { heading = "hdg", level = "alt", altitude = "alt", speed = "spd", mach = "spd" }
+G.report_value_kinds = { alt = "alt", heading = "hdg", speed = "spd", mach = "spd" }
+function G.report_of_set(self, i)
+  local set = nil
+  for k = i + 1, i + 2 do set = set or G.report_measures[self.words[k] or ""] end
+  if not set then return true end
+  for k = 1, i - 1 do
+    if self:intent_at(k) == set then return true end
+  end
+  for _, q in ipairs(self:quantities(1, i)) do
+    if G.report_value_kinds[q.kind] == set then return true end
+  end
+  return false
+end
 function G:instruction_before(i)
   for k = 1, i - 1 do
     if self:intent_at(k) then return true end
@@ -14533,7 +14550,8 @@ function G:not_simulated()
             and not (c.not_after and self:word(i - 1, c.not_after)) and not self:word(i + 1, "not")
             and (not c.bare or self:said_bare(i)) and (not c.manner or self:said_as_manner(i))
             and (not c.rate_manner or self:rate_manner(i))
-            and (not c.after_instruction or self:instruction_before(i)) then
+            and (not c.after_instruction or self:instruction_before(i))
+            and (not c.of_set or G.report_of_set(self, i)) then
           local expected = c.not_aircraft_to and self:aircraft_then_to(i + 1)
           if c.routed and self:limit_off_route(i, c.window) then break end
           if expected then

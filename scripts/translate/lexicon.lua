@@ -2334,9 +2334,10 @@ return {
     { what = "position reports", words = "report", near = { "sight", "visual" }, window = 4,
       after_instruction = true, clause = true },
     -- "turn right 15 degrees, report heading": after an instruction, the readback of what it set is a
-    -- report the pilot makes (alone, "report heading" asks for the aircraft's state: POS)
+    -- report the pilot makes (alone, "report heading" asks for the aircraft's state: POS; so does one after an
+    -- instruction that set another measure, "descend FL190 and report your heading", G:report_of_set)
     { what = "position reports", words = "report", near = { "heading", "level", "altitude", "speed", "mach" },
-      after_instruction = true, to_end = true },
+      after_instruction = true, to_end = true, of_set = true },
     -- "KLM12 read back FL110", "readback was heading 200": the values a pilot read back are the pilot's words, no
     -- clearance (what was cleared, said after them, is read: grammar.lua readback_reported)
     { what = "readbacks of a clearance", words = "read", near = { "back" }, window = 1,

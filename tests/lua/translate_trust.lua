@@ -21986,3 +21986,13 @@ do
   local _, ex = scene({ "CRE WZZ2557 A320 47.4 19.2 090 FL140 280" })
   check_eq(ex("Wizz Air two five five seven, climb flight level one six zero, köszönöm szépen"), "ALT WZZ2557 FL160")
 end
+
+-- Cycle 68 (lead, R261): "report your heading" after an instruction that set another measure asks the aircraft's
+-- state (POS), as it does alone; after one that set that measure it is the pilot's readback, named
+do
+  local _, ex = scene({ "CRE RYR81AB B738 52 -1 090 FL250 280" })
+  check_eq(ex("Ryanair eight one alpha bravo descend flight level one niner zero and report your heading"),
+    "ALT RYR81AB FL190 ; POS RYR81AB")
+  check_eq(ex("Ryanair eight one alpha bravo turn right 15 degrees, report heading"), "HDG RYR81AB 105 RIGHT")
+  check_eq(ex("Ryanair eight one alpha bravo maintain FL250, report level"), "ALT RYR81AB FL250")
+end
