@@ -111,8 +111,8 @@ return {
         "ooh", "ah", "ahh", "aah",
         -- (and a Singaporean's or Hong Konger's dismay, "aiyah, disregard, maintain FL300")
         "aiyah", "aiya", "aiyoh", "aiyo",
-        -- (and a Dutch speaker's "let me see", "even kijken, turn right 20 degrees")
-        "kijken",
+        -- (and a Dutch speaker's "let me see", "even kijken, turn right 20 degrees"; a Swiss speaker's tag, "gell")
+        "kijken", "gell",
         -- (a value said loosely, "250-ish", "like 250ish": the value said is the one flown, as "roughly 250")
         "ish", "afterwards", "afterward", "meanwhile", "completely", "fully",
         -- (a report's order of events and degree: "was subsequently given", "disable it altogether")
@@ -2844,6 +2844,7 @@ return {
       please = { "ludzu", "lūdzu" }, thanks = { "paldies" } },
     dutch = { yes = { "klopt" }, thanks = { "dank je wel", "dank u wel" } },
     french = { okay = { "d'accord", "daccord" }, thanks = { "merci beaucoup" } },
+    swiss_german = { sorry = { "exgüsi", "exgusi", "exgüsee" }, thanks = { "merci vielmal", "merci vilmal" } },
   },
   -- A language said whole by a controller or instructor ("vire a la izquierda rumbo 170", "borra el iberia
   -- 6253", "montez au niveau 140", "tournez à gauche cap 030"), read as its English word for word (grammar.lua

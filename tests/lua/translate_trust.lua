@@ -21996,3 +21996,11 @@ do
   check_eq(ex("Ryanair eight one alpha bravo turn right 15 degrees, report heading"), "HDG RYR81AB 105 RIGHT")
   check_eq(ex("Ryanair eight one alpha bravo maintain FL250, report level"), "ALT RYR81AB FL250")
 end
+
+-- Cycle 68 (lead, R263): a Swiss controller's "exgüsi" (sorry, a correction's mark), "merci vielmal" and the tag "gell"
+do
+  local _, ex = scene({ "CRE SWR12A A320 47.4 8.5 090 FL100 250", "CRE OAW12 A320 47 8 180 FL200 260" })
+  check_eq(ex("Swiss 12A climb FL140, exgüsi, flight level one three zero"), "ALT SWR12A FL130")
+  check_eq(ex("Helvetic one two, climb flight level two five zero, merci vielmal"), "ALT OAW12 FL250")
+  check_eq(ex("Helvetic one two, turn left heading two zero zero, gell"), "HDG OAW12 200 LEFT")
+end
