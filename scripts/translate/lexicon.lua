@@ -297,12 +297,12 @@ return {
         "peki", "tamamdir", "sagol", "sagolun", "efendim",
         -- the thanks, "please" and excuse-me of a research lab's other voices, romanised: Persian ("mersi",
         -- "mamnoon", "lotfan"), Thai ("khob khun krub"), Indonesian ("permisi", "tolong"), Italian, Spanish and
-        -- Portuguese ("scusi", "disculpe", "desculpa", "com licenca"), German ("danke schön"), Polish ("przepraszam"),
-        -- Greek ("signomi"); the apologies of Persian, Indonesian and Korean ("bebakhshid", "maaf", "joesonghamnida")
+        -- Portuguese ("scusi", "disculpe", "desculpa", "com licenca"), German ("danke schön"), Polish ("przepraszam");
+        -- Greek "signomi" is lexicon.discourse_words' sorry; the apologies of Persian, Indonesian and Korean ("bebakhshid", "maaf", "joesonghamnida")
         -- are lexicon.discourse_words' sorry, a correction's mark as English "sorry" is
         "mersi", "mamnoon", "mamnun", "motashakkeram", "lotfan", "krub", "khrub", "khop", "permisi", "tolong",
         "scusi", "scusa", "scusate", "disculpe", "disculpa", "perdone", "perdona", "desculpa", "desculpe", "licenca",
-        "schon", "schoen", "przepraszam", "signomi", "syngnomi" },
+        "schon", "schoen", "przepraszam" },
     -- phrases of courtesy that hold a word which means something elsewhere ("when", "if"):
     -- explained whole
     courtesy_phrases = { "pull up", "when you get a chance", "when you can", "when you're ready", "when ready",
@@ -2845,6 +2845,7 @@ return {
     dutch = { yes = { "klopt" }, thanks = { "dank je wel", "dank u wel" } },
     french = { okay = { "d'accord", "daccord" }, thanks = { "merci beaucoup" } },
     swiss_german = { sorry = { "exgüsi", "exgusi", "exgüsee" }, thanks = { "merci vielmal", "merci vilmal" } },
+    greek = { sorry = { "signomi", "signómi", "syngnomi", "syggnomi" } },
   },
   -- A language said whole by a controller or instructor ("vire a la izquierda rumbo 170", "borra el iberia
   -- 6253", "montez au niveau 140", "tournez à gauche cap 030"), read as its English word for word (grammar.lua

@@ -22004,3 +22004,10 @@ do
   check_eq(ex("Helvetic one two, climb flight level two five zero, merci vielmal"), "ALT OAW12 FL250")
   check_eq(ex("Helvetic one two, turn left heading two zero zero, gell"), "HDG OAW12 200 LEFT")
 end
+
+-- Cycle 68 (lead, probed before R267 was written): Greek "signomi" (sorry) is a correction's mark
+do
+  local _, ex = scene({ "CRE AEE12 A320 38 24 90 FL220 280" })
+  check_eq(ex("Aegean one two, climb flight level two six zero, signómi, flight level two five zero"), "ALT AEE12 FL250")
+  check_eq(ex("Aegean one two, signomi, climb flight level two six zero"), "ALT AEE12 FL260")
+end
