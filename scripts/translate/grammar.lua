@@ -9267,14 +9267,15 @@ function G:when_reached(s)
     if self:word(levelled + 1, "off out") then self.noted[levelled + 1] = true end
     return true
   end
-  -- ("when you're at that speed", "once it is at the speed", "when he arrives at this speed": the speed of the
-  -- instruction before, reached; only a subject, "is" or "arrives", "at" and "that", "this" or "the" before
-  -- "speed", straight before the instruction)
+  -- ("when you're at that speed", "once it is at the speed", "when he arrives at this speed", "when established at
+  -- that speed": the speed of the instruction before, reached; only a subject, "is", "arrives" or "established",
+  -- "at" and "that", "this" or "the" before "speed", straight before the instruction)
   local at = self:find_word(c + 1, s.trig, "speed")
   if at < s.trig and self:skip_fillers(at + 1) == s.trig and self:word(at - 1, "that the this")
       and self:word(at - 2, "at") then
     for i = c + 1, at - 3 do
-      if not (self.t[i].filler or self:word(i, "you you're are it it's is he he's she she's arrives arrive")) then
+      local subject = "you you're are it it's is he he's she she's arrives arrive established stabilised stabilized"
+      if not (self.t[i].filler or self:word(i, subject)) then
         return false
       end
     end
@@ -13640,6 +13641,18 @@ function G:instruction_before(i)
   end
   return false
 end
+-- True when token i is said to an aircraft: straight after its callsign, or after an instruction to an aircraft
+-- named before it ("EZY45KL resume normal speed", "DAL14 climb FL250, resume normal speed"). Not after a limit
+-- "until" a place (what follows is the limit's end, G:limit_released), nor beside an instruction to an aircraft
+-- flying its route's profile (giving the profile's speed back, VNAV ON, would undo that instruction: asked).
+function G:said_to_aircraft(i)
+  if self:callsign_before(i) then return true end
+  local refs = self:refs_in(1, i, "aircraft")
+  local r = refs[#refs]
+  local a = r and self:state(r.name)
+  if not a or (a.vnav == true and a.lnav == true) or self:word_in(1, i, "until till") then return false end
+  return self:instruction_before(i)
+end
 
 -- "unable FL380, maintain FL360", "unable direct BOYNE, fly heading 070", "unable that heading, turn left
 -- heading 230", "unable higher due traffic, ...", "unable, maintain present heading": what the controller
@@ -14537,6 +14550,7 @@ function G:not_simulated()
         if (not c.near or self:near_any(i, c.near, c.window))
             and (not c.and_near or self:near_any(i + (c.window or 4), c.and_near[1], c.and_near[2]))
             and (not c.after_callsign or self:callsign_before(i))
+            and (not c.to_aircraft or self:said_to_aircraft(i))
             and (not c.named_after or (self.t[i + 1] and self.t[i + 1].kind == "word"
               and (self.t[i + 1].raw:match("^%u") or #self:refs_in(i + 1, i + 2, "waypoint") > 0)))
             and (not c.last or self:said_last(i, c.last ~= true and c.last or nil, c.own_clause))

@@ -2233,11 +2233,14 @@ return {
     -- (a value after a comma is no part of it, `stops_at_value`: "cancel speed restrictions, 250 knots" gives a speed)
     { what = "restrictions lifted", words = "cancel", near = { "restriction", "restrictions" },
       through = "speed level altitude", stops_at_value = true },
-    -- "EZY45KL resume normal speed": said to an aircraft, its speed restriction lifted (said alone, "resume
-    -- normal speed" is the simulation's rate, DTMULT 1; said to an aircraft flying its route's profile, the
-    -- profile's speed given back: VNAV ON)
-    { what = "restrictions lifted", words = "resume", near = { "speed" }, window = 2, after_callsign = true,
+    -- "EZY45KL resume normal speed", "DAL14 climb FL250, resume normal speed": said to an aircraft, its speed
+    -- restriction lifted (said alone, "resume normal speed" is the simulation's rate, DTMULT 1; said alone to an
+    -- aircraft flying its route's profile, the profile's speed given back: VNAV ON)
+    { what = "restrictions lifted", words = "resume", near = { "speed" }, window = 2, to_aircraft = true,
       not_before = "speed", through = "speed", stops_at_value = true, not_to_profile = true },
+    -- "climb FL150, when passing FL100 speed your discretion", "speed at pilot's discretion": the speed left to the
+    -- pilot, a restriction lifted
+    { what = "restrictions lifted", words = "speed", near = { "discretion" }, window = 3, to_aircraft = true },
     -- "turn right heading 330, vectors for runway 28", "vectoring for the ILS": what a vector is for, a
     -- runway squawk does not fly to
     { what = "approaches to a runway", words = "vectors vectoring vector",

@@ -2692,6 +2692,14 @@ return function(intent, rule, words)
     return k > #g.t or g.t[k].kind == "punct"
   end }
   rule { "position", "pos", prev = { 4, "show display see look log record dump" } }  -- "show me BAW87L's position"
+  -- "show Cyprus seven one six position": a callsign of spoken digits between the verb and the noun
+  rule { "position", "pos", prev = { 12, "show display" }, when = function(g, i)
+    for _, r in ipairs(g:refs_in(math.max(1, i - 10), i, "aircraft")) do
+      local b = g:word(r.b - 1, "me") and r.b - 2 or r.b - 1
+      if r.e == i and g:word(b, "show display") then return true end
+    end
+    return false
+  end }
   -- "show me the data of KLM12", "display KLM12's flight data": an aircraft's data shown is its state (POS)
   rule { "data", "pos", prev = { 5, "show display see give" }, when = function(g, i)
     return g:word(i + 1, "of for") and g:has_ref(i + 2, i + 3, "aircraft")

@@ -5913,7 +5913,8 @@ do
   asked(ex("EZS77 descend FL190 and once through FL150 reduce 250"), "a level below the descent")
   asked(ex("EZS77 when you're down a bit slow to 250"), "a condition with no level")
   asked(ex("EZS77 slow to 250 when you're down a bit"), "a condition with no level, after")
-  asked(ex("EZS77 when passing one eight thousand resume normal speed"), "no instruction of the aircraft")
+  -- (a restriction lifted on passing a level is named as not simulated: nothing is sent)
+  check_eq(ex("EZS77 when passing one eight thousand resume normal speed"), "")
   asked(ex("a few miles before TOBLA EZS77 descend FL150"), "no distance")
   -- the listener's convenience is no condition
   check_eq(ex("EZS77 when you get a chance reduce 270"), "SPD EZS77 270")
@@ -22010,4 +22011,30 @@ do
   local _, ex = scene({ "CRE AEE12 A320 38 24 90 FL220 280" })
   check_eq(ex("Aegean one two, climb flight level two six zero, signómi, flight level two five zero"), "ALT AEE12 FL250")
   check_eq(ex("Aegean one two, signomi, climb flight level two six zero"), "ALT AEE12 FL260")
+end
+
+-- Cycle 69 (lead, R267): "show <callsign> position" with the callsign's digits spoken one by one is its state (POS)
+do
+  local _, ex = scene({ "CRE CYP716 A20N 40.9 22.7 170 FL230 280" })
+  check_eq(ex("show Cyprus seven one six position"), "POS CYP716")
+  check_eq(ex("display me Cyprus seven one six's position"), "POS CYP716")
+  check_eq(ex("show Cyprus seven one six route"), "LISTRTE CYP716")
+end
+
+-- Cycle 69 (lead, R266): "when established at that speed" is the speed of the instruction before, reached (ATSPD)
+do
+  local _, ex = scene({ "CRE WZZ1DN A320 56.9 24.1 090 FL120 280" })
+  check_eq(ex("Wizz Air one delta november, reduce two two zero knots, when established at that speed descend five "
+    .. "thousand feet"), "SPD WZZ1DN 220 ; ATSPD WZZ1DN 220 ALT WZZ1DN 5000")
+end
+
+-- Cycle 69 (lead, R266): "resume normal speed" and "speed your discretion" said to an aircraft after an instruction
+-- lift a speed restriction squawk does not keep: the instruction stands, the rest is named (never the
+-- simulation's rate, which "resume normal speed" alone still is)
+do
+  local _, ex = scene({ "CRE DAL14 B738 40 -74 090 FL200 280" })
+  check_eq(ex("DAL14 climb FL250, resume normal speed"), "ALT DAL14 FL250")
+  check_eq(ex("Delta one four, climb flight level two five zero, when passing flight level two two zero speed your "
+    .. "discretion"), "ALT DAL14 FL250")
+  check_eq(ex("back to normal speed"), "DTMULT 1")
 end
