@@ -377,7 +377,10 @@ return {
         -- (the Nordic languages' thanks and farewells in two or more words: "tack så mycket", "mange tak", "hej då")
         "tack sa mycket", "tack tack", "tusen tack", "mange tak", "tusind tak", "takk skal du ha", "tak skal du have",
         "hej da", "hej hej", "ha det bra", "vi ses", "god morgon", "god kvall", "god kveld", "god aften", "dank je", "dank u", "iyi gunler", "iyi ucuslar", "iyi aksamlar", "iyi geceler", "iyi calismalar",
-        "iyi yolculuklar", "iyi nobetler", "kolay gelsin", "gule gule", "sag ol", "sag olun", "hosca kalin", "do svidaniya", "ni hao", "ma'a salama",
+        "iyi yolculuklar", "iyi nobetler", "kolay gelsin", "gule gule", "sag ol", "sag olun", "hosca kalin",
+        "tesekkur ederim", "tesekkur ederiz", "cok tesekkurler", "cok tesekkur ederim",
+        -- (Croatian and Slovenian thanks in two words: "hvala lijepa", "puno hvala", "najlepša hvala")
+        "hvala lijepa", "hvala lepa", "puno hvala", "hvala puno", "hvala vam", "najlepsa hvala", "lijepa hvala", "do svidaniya", "ni hao", "ma'a salama",
         "ma salama", "maa salama", "maa salaama", "m goi", "mh goi", "doh je", "dor je", "no wahala",
         "at pilot's discretion", "at your discretion",
         "pilot's discretion",

@@ -22038,3 +22038,11 @@ do
     .. "discretion"), "ALT DAL14 FL250")
   check_eq(ex("back to normal speed"), "DTMULT 1")
 end
+
+-- Cycle 69 (lead, probed before R268 and R270 were written): Croatian and Turkish thanks in two words
+do
+  local _, ex = scene({ "CRE CTN456 A320 45.8 16.0 090 FL200 280", "CRE THY1KL A321 40 32 180 FL300 280" })
+  check_eq(ex("Croatia four five six, climb flight level two four zero, hvala lijepa"), "ALT CTN456 FL240")
+  check_eq(ex("Croatia four five six, climb flight level two four zero, puno hvala"), "ALT CTN456 FL240")
+  check_eq(ex("Turkish one kilo lima, descend flight level two eight zero, teşekkür ederim"), "ALT THY1KL FL280")
+end
