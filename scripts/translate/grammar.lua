@@ -1396,8 +1396,9 @@ local function self_corrections(text)
   local k = 1
   while k <= #toks do
     local j, marked, dropping = k, false, false
-    -- (punctuation alone, "...", belongs to the run)
-    while toks[j] and (words[toks[j].bare] or toks[j].bare == "") do
+    -- (punctuation alone, "...", belongs to the run; so does "it" after "make": "..., sorry, make it 220 knots")
+    while toks[j] and (words[toks[j].bare] or toks[j].bare == ""
+        or (toks[j].bare == "it" and j > k and toks[j - 1].bare == "make")) do
       marked = marked or markers[toks[j].bare] or (toks[j + 1] and markers[toks[j].bare .. " " .. toks[j + 1].bare])
       dropping = dropping or G.sc_dropping[toks[j].bare]
       j = j + 1
@@ -1448,7 +1449,9 @@ local function self_corrections(text)
           -- ("climb FL290 please, no, I wanted FL300": "please" or "kindly" after the value taken back)
           or (toks[k - 1] and (toks[k - 1].bare == "please" or toks[k - 1].bare == "kindly") and value(toks[k - 2])))
         and nxt
-        and (said.bare:match("^%a?%a?%.?%d") or NUMBER_WORDS[said.bare] or after[said.bare] or position) then
+        and (said.bare:match("^%a?%a?%.?%d") or NUMBER_WORDS[said.bare] or after[said.bare] or position
+          -- (a Mach number said in words: "point seven eight, sorry, point seven nine")
+          or ((said.bare == "point" or said.bare == "decimal") and toks[j + 1] and DIGIT_WORDS[toks[j + 1].bare])) then
       put(toks[k].at, ", correction, ", nxt.at)
       k = j
     else
@@ -10117,12 +10120,14 @@ local function value_carried(q, nums, again)
     -- (a heading said with its word, or a time, is read as said: "heading 100" is never the 300 of FL300)
     local said_as = (q.kind == "heading" or q.kind == "time") and { v } or again and again_as
       or { v, v * 100, v * 1000, v * 10, v + 200, cleared }
+    -- (within half a unit; a number under 2, a Mach number's, to its thousandth: ".79" never carried by M0.78)
+    local within = math.abs(n) < 2 and 0.0005 or math.max(0.5, 1e-6 * math.abs(n))
     for _, c in ipairs(said_as) do
-      if math.abs(c - n) <= math.max(0.5, 1e-6 * math.abs(n)) then return true end
+      if math.abs(c - n) <= within then return true end
     end
     -- (a heading, 360 said for 0: against a heading's number only, never a level's 30000)
     if q.kind ~= "alt" and v >= 0 and v <= 360 and n >= 0 and n <= 360
-        and math.abs((v - n + 180) % 360 - 180) <= 0.5 then
+        and math.abs((v - n + 180) % 360 - 180) <= within then
       return true
     end
   end

@@ -1248,10 +1248,12 @@ return {
                       -- (grammar.lua self_corrections: "flight level 110, I am sorry, flight level 100")
                       -- ("heading 270, actually no, let's make that 280": "let's" before "make that" belongs to the
                       -- run; "fl250 nein fl270", "kurs 300.. ne 310": German "nein", "ne" (no) are its markers; the
-                      -- Filipino "po" of respect after the apology, "sorry po")
-                      value_words = { "am", "i'm", "let's", "lets", "let", "nein", "ne", "po" },
+                      -- Filipino "po" of respect after the apology, "sorry po"; a Spanish speaker's "bueno", its marker)
+                      value_words = { "am", "i'm", "let's", "lets", "let", "nein", "ne", "po", "bueno" },
                       markers = { "no", "wait", "sorry", "actually", "make that", "mean", "meant", "say again", "scratch",
-                                  "corr", "never mind", "nevermind", "nvm", "forget that", "belay", "nein", "ne" },
+                                  "corr", "never mind", "nevermind", "nvm", "forget that", "belay", "nein", "ne",
+                                  -- (a Spanish speaker's "well" between two values: "FL120, bueno, FL140")
+                                  "bueno" },
                       -- the markers that, closing the request, take back what came before with nothing said
                       -- in its place ("turn left 20, sorry": asked); "I mean" closing it points back at what
                       -- it follows ("the Wideroe, I mean"), "actually" closing it is "in fact" ("going to

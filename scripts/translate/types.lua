@@ -491,8 +491,10 @@ function M.spoken(text, built, phonetic)
       end
       if fam and built.known["boeing " .. fam] and open(j - 1) and toks[j] then
         -- ("787 dash 9", "seven eight seven dash nine": "dash" is the hyphen before a variant said as one
-        -- number that names one model, 787-9; "737 dash 8", the 737-8 or the 737-800, stays unread)
-        if bare(j) == "dash" and open(j) and toks[j + 1] and short_name(built, fam, short_variant(bare(j + 1))) then
+        -- number that names one model, 787-9; "737 dash 8", the 737-8 or the 737-800, stays unread; "seven three
+        -- seven dash eight hundred": before the variant's hundreds)
+        if bare(j) == "dash" and open(j) and toks[j + 1] and (short_name(built, fam, short_variant(bare(j + 1)))
+            or (DIGITS[bare(j + 1)] and open(j + 1) and bare(j + 2) == "hundred")) then
           j = j + 1
         end
         local v, k = bare(j):match("^%-?(%d00%a*)$"), j + 1

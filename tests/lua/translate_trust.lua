@@ -1892,7 +1892,8 @@ do
   check_eq(ex("Delta 889 slow to 240... no, make it 230"), "SPD DAL889 230")
   check_eq(ex("DAL889 descend to 11 thousand ft, sorry, 12 thousand"), "ALT DAL889 12000")
   check_eq(ex("DAL889 climb FL260 until further advised... scratch that, just climb FL260"), "ALT DAL889 FL260")
-  asked(ex("DAL889 turn left heading 200... no, make it 190 and 230 knots"), "DAL889 turn left heading 200... no, make it 190 and 230 knots")
+  -- ("make it" after the mark is "make that": the heading said in place, the speed added)
+  check_eq(ex("DAL889 turn left heading 200... no, make it 190 and 230 knots"), "HDG DAL889 190 LEFT ; SPD DAL889 230")
   -- a fix or point said new or named at a position is defined; the plural lists several
   check_eq(ex("new fix MRG2 at 42.5 N 87.9 W"), "DEFWPT MRG2 42.5 -87.9")
   check_eq(ex("we need a reference point named HOLDPT at 42.0N, 88.0W"), "DEFWPT HOLDPT 42 -88")
@@ -22045,4 +22046,21 @@ do
   check_eq(ex("Croatia four five six, climb flight level two four zero, hvala lijepa"), "ALT CTN456 FL240")
   check_eq(ex("Croatia four five six, climb flight level two four zero, puno hvala"), "ALT CTN456 FL240")
   check_eq(ex("Turkish one kilo lima, descend flight level two eight zero, teşekkür ederim"), "ALT THY1KL FL280")
+end
+
+-- Cycle 69 (lead, R269): a Spanish speaker's "bueno" between two values takes the first back, as "sorry" does; a
+-- Mach number said again after a mark ("point seven eight, sorry, point seven nine") is the one that stands, and one
+-- said again with no mark is asked, never dropped; "make it" after the mark belongs to it; "seven three seven dash
+-- eight hundred" is the 737-800
+do
+  local _, ex = scene({ "CRE VIV5112 A320 20 -99 90 FL350 270", "CRE AAL2244 B738 19 -99 0 FL200 280" })
+  check_eq(ex("Aeroenlaces 5112 mach point seven eight, bueno, point seven nine"), "SPD VIV5112 M0.79")
+  check_eq(ex("Aeroenlaces 5112 mach point seven eight, sorry, point seven nine"), "SPD VIV5112 M0.79")
+  asked(ex("Aeroenlaces 5112 mach point seven eight, point seven nine"), "a second Mach number with no mark")
+  check_eq(ex("American twenty two forty four, speed two five zero knots, bueno, two seven zero knots"), "SPD AAL2244 270")
+  check_eq(ex("American twenty two forty four, speed two one zero... sorry, make it two two zero knots"), "SPD AAL2244 220")
+  check_eq(ex("Aeroenlaces 5112, bueno, descend flight level three one zero"), "ALT VIV5112 FL310")
+  asked(ex("American twenty two forty four, speed two five zero, bueno, heading two zero zero"), "instead or as well")
+  check_eq(ex("create Copa three one one, a seven three seven dash eight hundred, at 20.4 -86.2 flight level one nine "
+    .. "zero heading three two zero two eight zero knots"), "CRE CMP311 B738 20.4 -86.2 320 FL190 280")
 end
