@@ -228,8 +228,9 @@ return {
         "bonjour", "bonsoir", "merci", "salut", "revoir",
         -- greetings of Australia, New Zealand and South Africa ("G'day mate", "kia ora", "howzit")
         "mate", "kia", "ora", "howzit",
-        -- the same courtesy in German ("Grüß Gott", "Entschuldigung", "danke", "bitte", "servus")
-        "entschuldigung", "gruss", "gott", "servus", "hallo", "danke", "bitte", "guten", "gruezi",
+        -- the same courtesy in German ("Grüß Gott", "danke", "bitte", "servus"; "Entschuldigung" is
+        -- lexicon.discourse_words' sorry)
+        "gruss", "gott", "servus", "hallo", "danke", "bitte", "guten", "gruezi",
         -- the same in the Nordic and Baltic languages ("Hej, ...", "Tack", "Kiitos", "Labdien", "Paldies")
         "hej", "hei", "moi", "tere", "tack", "takk", "tak", "kiitos", "labdien", "paldies", "labas", "aciu",
         "aitah", "sveiki",
@@ -2852,6 +2853,7 @@ return {
       please = { "ludzu", "lūdzu" }, thanks = { "paldies" } },
     dutch = { yes = { "klopt" }, thanks = { "dank je wel", "dank u wel" } },
     french = { okay = { "d'accord", "daccord" }, thanks = { "merci beaucoup" } },
+    german = { sorry = { "entschuldigung", "verzeihung", "entschuldigen sie" } },
     swiss_german = { sorry = { "exgüsi", "exgusi", "exgüsee" }, thanks = { "merci vielmal", "merci vilmal" } },
     greek = { sorry = { "signomi", "signómi", "syngnomi", "syggnomi" } },
   },

@@ -22064,3 +22064,13 @@ do
   check_eq(ex("create Copa three one one, a seven three seven dash eight hundred, at 20.4 -86.2 flight level one nine "
     .. "zero heading three two zero two eight zero knots"), "CRE CMP311 B738 20.4 -86.2 320 FL190 280")
 end
+
+-- Cycle 69 (lead, R268): German "Entschuldigung" between two values is a correction's mark
+do
+  local _, ex = scene({ "CRE WZZ1QS A320 47 16 090 FL100 280" })
+  check_eq(ex("Wizz Air one quebec sierra climb flight level one four zero, Entschuldigung, flight level one three zero"),
+    "ALT WZZ1QS FL130")
+  check_eq(ex("Wizz Air one quebec sierra turn left heading three zero zero, Entschuldigung, heading two niner zero"),
+    "HDG WZZ1QS 290 LEFT")
+  check_eq(ex("Entschuldigung, Wizz Air one quebec sierra climb flight level one four zero"), "ALT WZZ1QS FL140")
+end
