@@ -2914,6 +2914,10 @@ return {
       perdon = "sorry", ["perdón"] = "sorry", perdona = "sorry", ["perdóname"] = "sorry", perdoname = "sorry",
       disculpe = "sorry", disculpa = "sorry", corrijo = "correction", correccion = "correction",
       ["corrección"] = "correction",
+      -- (and a speaker's "I mean", "rather", "that is" before it: "FL190, mejor dicho, 200", "o sea", "digo")
+      ["mejor dicho"] = "I mean", ["o sea"] = "I mean", digo = "I mean",
+      -- (the Spanish spelling of "okay")
+      okey = "okay",
       -- a moment asked for ("pause, un momento por favor": as English "one moment")
       ["un momento"] = "one moment",
       -- a Mexican controller's radio words in an English clearance: a value taken back ("left heading 090...

@@ -22074,3 +22074,13 @@ do
     "HDG WZZ1QS 290 LEFT")
   check_eq(ex("Entschuldigung, Wizz Air one quebec sierra climb flight level one four zero"), "ALT WZZ1QS FL140")
 end
+
+-- Cycle 69 (lead, probed before R271 was written): a Spanish speaker's "mejor dicho", "o sea" and "digo" (I mean)
+-- before a value said again, and "okey"
+do
+  local _, ex = scene({ "CRE ARG1302 B738 -34.8 -58.5 360 FL150 270" })
+  check_eq(ex("Argentina one three zero two, climb flight level one niner zero, mejor dicho, two zero zero"),
+    "ALT ARG1302 FL200")
+  check_eq(ex("Argentina one three zero two, climb flight level one niner zero, o sea, two zero zero"), "ALT ARG1302 FL200")
+  check_eq(ex("Argentina one three zero two, climb flight level one niner zero, okey"), "ALT ARG1302 FL190")
+end
