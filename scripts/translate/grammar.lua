@@ -9706,6 +9706,11 @@ function G:at_waypoint(s, spec)
   local opens
   self.place_passed_e, self.place_passes = nil, nil
   local passed = "passing leaving overflying reaching past over"
+  -- ("when you're at BOYNE descend ...", "once it's at BUMIL, ...": the aircraft being at the place, as "at" says it)
+  if self:word(first, "when once") and self:word(first + 1, "you're it's he's she's")
+      and self:word(first + 2, "at over overhead") then
+    first = first + 2
+  end
   if self:word(first, "at over overhead after passing reaching leave leaving") then
     opens = self:skip_fillers(first + 1)
     -- ("CES5511 after AND, descend ...": a waypoint the matcher read from a word kept as a filler, "and")
@@ -13611,6 +13616,13 @@ function G:side_after_level()
 end
 
 -- True when an aircraft is named just before token i (fillers and commas between).
+-- True when token i lies inside a reference to an aircraft ("remove Easy 41WP", lexed "easy 41 wp": the "wp")
+function G:in_callsign(i)
+  for _, r in ipairs(self.refs) do
+    if r.kind == "aircraft" and r.b <= i and i < r.e then return true end
+  end
+  return false
+end
 function G:callsign_before(i)
   for _, r in ipairs(self.refs) do
     if r.kind == "aircraft" and r.e <= i and self:skip_fillers(r.e) == i then return true end

@@ -1254,9 +1254,10 @@ return function(H, f, compass)
   end
 
   function m:remove(s)
-    -- "delete waypoint X of AC1" removes a waypoint, never the aircraft
-    if self:word_in(s.b, s.e, "@waypoint_nouns") or self:word_in(s.b, s.e, "@route_nouns") then
-      return self:delete_waypoint(s)
+    -- "delete waypoint X of AC1" removes a waypoint, never the aircraft (a noun inside a callsign typed apart, "remove
+    -- Easy 41WP" lexed "easy 41 wp", is no noun)
+    for k = s.b, s.e - 1 do
+      if self:word(k, "@waypoint_nouns @route_nouns") and not self:in_callsign(k) then return self:delete_waypoint(s) end
     end
     -- "skip APDAK, take out that point", "remove the point", "skip APDAK, remove it": words pointing back at a place
     -- never delete an aircraft. "point" is the one waypoint named before the verb (DELWPT) or asked; "it" straight
@@ -1821,7 +1822,10 @@ return function(H, f, compass)
       local asked = self.ask
       local navaid = self:navaid_by_name(b, e, { lat = lat, lon = lon }, L.city_nm)
       self.ask = asked
-      if navaid and navaid:upper() ~= airport:upper() then
+      -- (a navaid of the name standing on the airport, within lexicon.navaid_by_airport_nm, is that one place: "over
+      -- Glasgow", the GLW NDB on EGPF)
+      if navaid and navaid:upper() ~= airport:upper()
+          and not self:navaid_by_airport(navaid, airport, { lat = lat, lon = lon }) then
         self:need(string.format("Which place is meant: the %s navaid or the %s airport?", navaid, airport))
       end
       return airport

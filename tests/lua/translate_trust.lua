@@ -22084,3 +22084,21 @@ do
   check_eq(ex("Argentina one three zero two, climb flight level one niner zero, o sea, two zero zero"), "ALT ARG1302 FL200")
   check_eq(ex("Argentina one three zero two, climb flight level one niner zero, okey"), "ALT ARG1302 FL190")
 end
+
+-- Cycle 69 (lead, R275): "remove Easy 41WP" (lexed "easy 41 wp") deletes the aircraft: a noun inside a callsign is no
+-- waypoint noun; "when you're at BOYNE descend ..." starts at the place (AT ... DO)
+do
+  local _, ex = scene({ "DEFWPT TLA 55.5 -3.4", "DEFWPT BOYNE 53.7 -6.2", "CRE EZY41WP A319 55.90 -3.20 270 FL120 250",
+    "ADDWPT EZY41WP TLA", "CRE EIN176 A320 54.00 -5.30 200 FL110 270", "ADDWPT EIN176 BOYNE" })
+  check_eq(ex("remove Easy 41WP"), "DEL EZY41WP")
+  check_eq(ex("remove waypoint TLA from Easy 41WP"), "DELWPT EZY41WP TLA")
+  check_eq(ex("Shamrock 176 when you're at BOYNE descend altitude four thousand feet"), "AT EIN176 BOYNE DO ALT EIN176 4000")
+end
+-- (and "over Glasgow" in a creation is EGPF, the GLW NDB standing on it one place)
+do
+  local s = navscene({ "CRE LOG6KC AT76 55.80 -4.00 300 FL090 210" }, "Glasgow by name")
+  if s then
+    check_eq(said(graph.translate("create easyJet 31, EZY31, A320 over Glasgow heading 060, 5000 feet, 200 knots",
+      { sim = s, mode = "offline" })), "CRE EZY31 A320 EGPF 60 5000 200")
+  end
+end
