@@ -10067,6 +10067,18 @@ function G:at_waypoint(s, spec)
       self.at_next = r
       return true
     end
+    -- ("reduce speed 220 knots at ARSOT", "slow to 210 at MIREI": a verb of speed, its one value, then "at" and a
+    -- waypoint of the aircraft's route closing the segment: the change starts there, AT acid wp DO SPD)
+    local ids = s.intent == "spd" and self:word(s.trig, "reduce slow increase") and self:word(r.b - 1, "at")
+      and r.b - 1 > s.trig and self:skip_fillers(r.e) >= s.e and #self:quantities(s.trig, r.b - 1) == 1
+      and spec and spec.handler and not self:in_reason(r.b) and self:acids(s) or {}
+    if #ids == 1 and self:on_route(ids[1], r.name) then
+      local n0 = #self.out
+      self[spec.handler](self, { intent = s.intent, b = s.b, trig = s.trig, e = r.b - 1 }, spec)
+      self:explain(r.b - 1, r.e)
+      if not self.ask then self:do_at(ids[1], r.name, n0) end
+      return true
+    end
     if (self:word(r.b - 1, "at cross crossing over abeam overhead") or opened) and not self:in_reason(r.b) then
       return tied_to_waypoint(self, r, opened and (self:word(first, "after") and "after"
         or not self:word(first, "at over overhead") and "after passing") or "at")
