@@ -13,7 +13,7 @@ return {
   keywords = { "climb", "descend", "descent", "maintain", "altitude", "level", "flight", "heading", "turn",
       "left", "right", "speed", "knots", "reduce", "increase", "decrease", "delete", "remove", "waypoint",
       "waypoints", "direct", "directly", "proceed", "create", "aircraft", "destination", "origin", "vertical",
-      "rate", "pause", "resume", "continue", "simulation", "scenario", "trail", "trails", "turbulence", "noise",
+      "rate", "pause", "resume", "continue", "simulation", "sim", "scenario", "trail", "trails", "turbulence", "noise",
       "conflict", "conflicts", "detection", "resolution", "resolve", "separation", "minimum", "minima", "radius",
       "bank", "angle", "callsign", "degrees", "north", "south", "east", "west", "feet", "thousand", "hundred",
       "expedite", "cleared", "define", "route", "position", "reposition", "teleport", "move", "spawn",

@@ -22115,3 +22115,13 @@ do
   asked(ex("Argentina one three zero two, reduce speed by twenty knots at ARSOT"), "a change from the speed flown now")
   asked(ex("Argentina one three zero two, speed two two zero at ARSOT"), "no verb: met there or started there")
 end
+
+-- Cycle 69 (lead, R274): "set sim rate to 10" is the simulation's rate ("sim" a word of meaning, never a misheard
+-- airline's); "when level one zero thousand" is 10000 ft ("level" alone, two digit words and "thousand")
+do
+  local _, ex = scene({ "CRE SWA1190 B737 39 -77 0 FL200 280", "CRE AAL2211 B738 39.30 -77.50 180 12000 280" })
+  check_eq(ex("set sim rate to 10"), "DTMULT 10")
+  check_eq(ex("American 2211 when level one zero thousand turn right heading two one zero"),
+    "ATALT AAL2211 10000 HDG AAL2211 210 RIGHT")
+  check_eq(ex("American 2211 descend level five thousand"), "ALT AAL2211 5000")
+end

@@ -145,6 +145,17 @@ TEST_CASE("quantities: units decide the kind") {
   CHECK(q[0].value == 35000);
   CHECK(q[0].flight_level);
 
+  // "level" alone before one or two digit words and "thousand": an altitude in feet; "flight level" stays a level
+  q = qty("when level one zero thousand");
+  REQUIRE(q.size() == 1);
+  CHECK(q[0].kind == QKind::kAlt);
+  CHECK(q[0].value == 10000);
+  CHECK_FALSE(q[0].flight_level);
+  q = qty("flight level three one zero one thousand five hundred feet per minute");
+  REQUIRE(q.size() == 2);
+  CHECK(q[0].value == 31000);
+  CHECK(q[0].flight_level);
+
   q = qty("30k ft");
   REQUIRE(q.size() == 1);
   CHECK(q[0].kind == QKind::kAlt);
