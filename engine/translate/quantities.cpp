@@ -137,10 +137,11 @@ std::vector<Quantity> extract_quantities(const std::vector<Token>& t, size_t beg
         j = k;
       }
     };
-    // "when level one zero thousand", "descend level five thousand": "level" alone (no "flight" or "FL")
-    // before one or two digit words and "thousand" is an altitude in feet, no flight level.
+    // "when level one zero thousand", "descend level five thousand": "level" alone (no "flight" or
+    // "FL") before one or two digit words and "thousand" is an altitude in feet, no flight level.
     auto thousands_after_level = [&] {
-      if (n->typed || !n->has_thousand || !prev({"level"}) || (p > floor + 1 && word_at(t, p - 2, {"flight"})))
+      if (n->typed || !n->has_thousand || !prev({"level"}) ||
+          (p > floor + 1 && word_at(t, p - 2, {"flight"})))
         return false;
       size_t k = i;
       while (k < end && t[k].kind == TokKind::kWord && digit_word(t[k].text) >= 0) ++k;

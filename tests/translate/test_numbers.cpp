@@ -145,7 +145,8 @@ TEST_CASE("quantities: units decide the kind") {
   CHECK(q[0].value == 35000);
   CHECK(q[0].flight_level);
 
-  // "level" alone before one or two digit words and "thousand": an altitude in feet; "flight level" stays a level
+  // "level" alone before one or two digit words and "thousand": an altitude in feet; "flight level"
+  // stays a level
   q = qty("when level one zero thousand");
   REQUIRE(q.size() == 1);
   CHECK(q[0].kind == QKind::kAlt);
