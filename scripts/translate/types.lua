@@ -504,6 +504,10 @@ function M.spoken(text, built, phonetic)
         -- ("triple seven freighter": the family's freighter where one designator is named so, B77L)
         if not v and bare(j) == "freighter" and built.known[fam .. " freighter"] then name, k = fam .. " freighter", j + 1 end
         if name and built.known[name] then best = { name = name .. (toks[k - 1]:match("%p+$") or ""), e = k } end
+        -- ("seven three seven max eight", "737 max eight": the MAX's number said as a word after the family)
+        if not name and bare(j) == "max" and open(j) and toks[j + 1] and DIGITS[bare(j + 1)] then
+          best = { name = fam .. " max " .. DIGITS[bare(j + 1)] .. (toks[j + 1]:match("%p+$") or ""), e = j + 2 }
+        end
       end
     end
     if maker then

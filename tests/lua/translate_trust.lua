@@ -22125,3 +22125,13 @@ do
     "ATALT AAL2211 10000 HDG AAL2211 210 RIGHT")
   check_eq(ex("American 2211 descend level five thousand"), "ALT AAL2211 5000")
 end
+
+-- Cycle 69 (lead, R277): "a seven three seven max eight", "a 737 max eight": the MAX's number said as a word after the
+-- family said digit by digit or typed is that MAX; "a 737 max" alone is asked
+do
+  local _, ex = scene({ "CRE SAS1 A320 60 11 0 FL200 280" })
+  check_eq(ex("create NAX192, a seven three seven max eight, at 60.5 11.0, heading three six zero, flight level one five "
+    .. "zero, two eight zero knots"), "CRE NAX192 B38M 60.5 11 360 FL150 280")
+  check_eq(ex("create NAX192, a 737 max nine at 60.5 11.0, heading 360, FL150, 280 knots"), "CRE NAX192 B39M 60.5 11 360 FL150 280")
+  asked(ex("create NAX192, a 737 max, at 60.5 11.0, heading 360, FL150, 280 knots"), "which MAX")
+end
