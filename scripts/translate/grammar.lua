@@ -1315,6 +1315,19 @@ function G.restated_addressee(text)
       for w in (a and lower:sub(#a + 1, ms - 1) or ""):gmatch("%a+") do
         instructed = instructed or G.restated_instruction_words[w] ~= nil
       end
+      -- ("Springbok 203 descend FL130, Springbok 203 correction, FL140": the addressee said again straight before
+      -- the marker, after an instruction, is dropped the same)
+      local head = lower:sub(1, ms - 1):gsub("[%s,]+$", "")
+      for _, f in ipairs(instructed and #head < ms - 1 and forms or {}) do
+        local fb = #head - #f + 1
+        if fb > #a + 1 and head:sub(fb) == f and head:sub(fb - 1, fb - 1):match("[%s,]") then
+          text = text:sub(1, fb - 1) .. text:sub(ms)
+          lower = text:lower()
+          ms, me = lower:find(marker .. "[%s,]+", fb)
+          from = me + 1
+          break
+        end
+      end
       for _, f in ipairs(instructed and forms or {}) do
         if lower:sub(me + 1, me + #f) == f and lower:sub(me + #f + 1, me + #f + 1):match("[%s,]") then
           local e = me + #f + 1
@@ -2409,6 +2422,28 @@ function G.cut_off_restarts(text)
   end
   return text
 end
+-- "turn right direct... uh, heading zero niner zero", "climb- eh, descend FL80": an instruction's word
+-- (lexicon.abandoned_instruction_words) broken off by "...", "-" or "…" and hesitations (lexicon.hesitations),
+-- then another such word: the speaker changed the instruction, the first word is dropped with the hesitations.
+-- ("direct... uh, KAVAR" keeps its word: a place follows, no other instruction.)
+G.abandoned_words = set_of(lexicon.abandoned_instruction_words)
+function G.abandoned_instruction_words(text)
+  if not (text:find("...", 1, true) or text:find("-", 1, true) or text:find("…", 1, true)) then return text end
+  local toks = {}
+  for w in text:gmatch("%S+") do toks[#toks + 1] = w end
+  local function bare(k) return toks[k] and toks[k]:lower():match("^(.-)%p*$") end
+  for f = 1, #toks - 2 do
+    local w = bare(f)
+    if G.abandoned_words[w] and (toks[f]:match("%.%.%.$") or toks[f]:match("%-$") or toks[f]:match("…$")) then
+      local j = f + 1
+      while G.hesitation_words[bare(j) or ""] do j = j + 1 end
+      if j > f + 1 and G.abandoned_words[bare(j) or ""] and bare(j) ~= w then
+        return G.abandoned_instruction_words(G.words_without(toks, f, j - 1))
+      end
+    end
+  end
+  return text
+end
 -- "Speed... Speedbird 8CK, turn left", "Lufth-- uh, Lufthansa 4AX": a word cut off where the request or a sentence
 -- opens, closed by "..." or "-" or followed by hesitations (lexicon.hesitations), and then a longer word it opens:
 -- the cut-off word is dropped with the hesitations after it.
@@ -3465,7 +3500,7 @@ local function written_forms(text, world)
   end)
   -- "47,5 north", "8,5 degrees east", "factor to 1,1": a decimal comma (G.decimal_comma) is the point
   where("%d,%d", "()(%d+),(%d+)()", function(b, whole, part, e) return G.decimal_comma(text, b, whole, part, e) end)
-  text = typed_abbreviations(lone_multipliers(tokens.numerals_apart(G.unfinished_restarts(G.cut_off_restarts(text)), DIGIT_WORDS), world))
+  text = typed_abbreviations(lone_multipliers(tokens.numerals_apart(G.unfinished_restarts(G.cut_off_restarts(G.abandoned_instruction_words(text))), DIGIT_WORDS), world))
   text = hyphened_types(spelled(G.spelled_letter_a(heard_forms(negated_values(G.readback_reported(readback_heard(self_corrections(G.said_but(G.cancel_corrections(unlabelled(foreign_digits(G.portuguese_and(G.polish_and(G.said_whole(G.french_in_english(G.denied_word(G.dutch_chat(G.condition_then(G.condition_copula(G.recreate_said(text)))))))))))))))))))))
   low = text:lower()
   -- a position typed as whole degrees after the hemisphere, then minutes ("N55 50.0 W003 20.0", "S33 57
@@ -9762,8 +9797,8 @@ function G:at_waypoint(s, spec)
           letters, self:raw(opens, k)))
       end
       self:explain(opens, k)
-    -- (after "leave" or "leaving" only a heading is flown from the place: below)
-    elseif now and s.trig <= opens + 3 and not (self:word(first, "leave leaving") and not self:word(s.trig, "heading hdg")) then
+    -- (after "leave" only a heading is flown from the place: below)
+    elseif now and s.trig <= opens + 3 and not (self:word(first, "leave") and not self:word(s.trig, "heading hdg")) then
       name = self:place_by_name(opens, s.trig, now, true)
     end
     if name then refs = { { b = opens, e = s.trig, name = name } } end
@@ -9875,9 +9910,10 @@ function G:at_waypoint(s, spec)
     -- value said with its noun ("after CUERS speed 250 knots") is the instruction there too: no constraint
     -- can be met once the waypoint is passed.
     local cond_b
-    -- ("leave NAGMA heading 200": after "leave" or "leaving" only a heading said straight after the waypoint is
-    -- flown from it; "leave FDO, fly heading 290" leaves the routing to it now)
-    local opened = r.b == opens and not (self:word(first, "leave leaving") and not self:word(r.e, "heading hdg"))
+    -- ("leave NAGMA heading 200": after the verb "leave" only a heading said straight after the waypoint is
+    -- flown from it; "leave FDO, fly heading 290" leaves the routing to it now; "leaving OKBOX turn right heading
+    -- 240", "leaving NAGMA climb FL180": the aircraft leaving the place, as "passing" says it)
+    local opened = r.b == opens and not (self:word(first, "leave") and not self:word(r.e, "heading hdg"))
     if opened then
       cond_b = first
     elseif self:word(r.b - 1, "at past") and self:word(r.b - 2, "when once") and r.b - 2 == first then

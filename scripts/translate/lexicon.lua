@@ -1214,6 +1214,9 @@ return {
   -- back ("climb FL330 cancel that maintain FL310"): an instruction's verb or a level's first word
   cancel_correction_next = { "maintain", "climb", "descend", "reduce", "increase", "turn", "fly", "expedite", "slow",
                              "fl", "flight", "mach" },
+  -- the words of an instruction that a speaker may break off ("direct...", "climb-") and replace, after a hesitation,
+  -- by another of them (G.abandoned_instruction_words)
+  abandoned_instruction_words = { "direct", "heading", "climb", "descend", "speed", "level", "altitude" },
   -- the verbs that take back what was just said, before "that" ("cancel that", "belay that": G.cancel_corrections),
   -- and the correction words (lexicon.correction) that take it back when an instruction of another kind with no
   -- value is said in its place ("turn left heading 360, disregard, continue on your route": the heading dropped,
