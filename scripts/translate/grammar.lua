@@ -9292,6 +9292,11 @@ function G:when_reached(s)
     if not self:word(v, "reaching") then return false end
     -- ("on reaching it", "upon reaching that": the level of the instruction before, by a pronoun)
     v = self:skip_fillers(v + 1)
+    -- ("on reaching that speed descend to 7000 feet": the speed of the instruction before, reached)
+    local noun = self:skip_fillers(v + 1)
+    if self:word(v, "that the this") and self:word(noun, "speed") then
+      return self:instruction_lead(self:skip_fillers(noun + 1), s.trig) == s.trig, "speed"
+    end
     if self:word(v, "it that") then v = self:skip_fillers(v + 1) end
     return self:instruction_lead(v, s.trig) == s.trig
   end
@@ -9310,7 +9315,7 @@ function G:when_reached(s)
   -- "at" and "that", "this" or "the" before "speed", straight before the instruction)
   local at = self:find_word(c + 1, s.trig, "speed")
   if at < s.trig and self:skip_fillers(at + 1) == s.trig and self:word(at - 1, "that the this")
-      and self:word(at - 2, "at") then
+      and (self:word(at - 2, "at") or self:word(at - 2, "reaching") and c == at - 3) then
     for i = c + 1, at - 3 do
       local subject = "you you're are it it's is he he's she she's arrives arrive established stabilised stabilized"
       if not (self.t[i].filler or self:word(i, subject)) then
@@ -9428,13 +9433,14 @@ end
 
 -- "resume own navigation direct TIMBA": BlueSky's DIRECT switches LNAV on, so
 -- an "LNAV id ON" followed by a DIRECT for the same aircraft is that DIRECT's (also one that waits
--- for a condition: "after passing FL100 resume own navigation direct HEMEL": the condition the LNAV
--- waited for is the DIRECT's). The switch typed by its name ("hop7 lnav on dct LIL") is an instruction
+-- for a condition: "after passing FL100 resume own navigation direct HEMEL", or for a time: "after five minutes
+-- resume own navigation direct NP": the condition or DELAY the LNAV waited for is the DIRECT's). The switch typed by
+-- its name ("hop7 lnav on dct LIL") is an instruction
 -- said, kept.
 function G:direct_resumes_nav()
   for c = #self.out, 1, -1 do
     local cond, id = self.out[c]:match("^(.-)LNAV (%S+) ON$")
-    if id and (cond == "" or cond:match("^AT%u* ")) and not (self.lnav_typed or {})[id] then
+    if id and (cond == "" or cond:match("^AT%u* ") or cond:match("^DELAY %S+ $")) and not (self.lnav_typed or {})[id] then
       for d = c + 1, #self.out do
         local o = self.out[d]
         local plain = o:match("^DIRECT " .. id:gsub("%p", "%%%0") .. " ")

@@ -1779,6 +1779,19 @@ return function(H, f, compass)
         end
       end
     end
+    -- ("direct Geneva" with GVA, the VOR "GENEVA COINTRIN" on LSGG, in the route: the one navaid of the route whose
+    -- name holds the words said and that stands on the airport they name, within lexicon.navaid_by_airport_nm)
+    local span = airport and not navaid and self.place_spans and self.place_spans[#self.place_spans]
+    local with = span and a.lat and self.world.navaids_with_words
+    if with then
+      local on_route = {}
+      for _, id in ipairs(with(self:raw(span.b, span.e):lower(), a.lat, a.lon, L.navaid_range_nm)) do
+        for _, r in ipairs(a.route or {}) do
+          if r:upper() == id:upper() and self:navaid_by_airport(id, airport, a) then on_route[#on_route + 1] = id end
+        end
+      end
+      if #on_route == 1 and not self.ask then return on_route[1] end
+    end
     if navaid then
       local held = {}
       for _, r in ipairs(a.route or {}) do held[r:upper()] = true end

@@ -656,10 +656,11 @@ return function(intent, rule, words)
     local r = g:refs_in(i - 2, i - 1, "waypoint")[1]
     return r ~= nil and r.e == i - 1 and g:word(r.b - 1, "cross crossing")
   end }
-  -- "when you're at that speed descend FL120", "once it is at the speed": the speed of the instruction before,
-  -- reached (G:when_reached), no speed instruction of its own
-  rule { "speed", false, prev = { 1, "that the" }, when = function(g, i)
+  -- "when you're at that speed descend FL120", "once it is at the speed", "on reaching that speed": the speed of
+  -- the instruction before, reached (G:when_reached), no speed instruction of its own
+  rule { "speed", false, prev = { 1, "that the this" }, when = function(g, i)
     return g:word(i - 2, "at") and g:find_word(math.max(1, i - 5), i - 2, "when once") < i - 2
+      or g:word(i - 2, "reaching") and g:word(i - 3, "on upon")
   end }
   -- "when the speed is 230 descend FL090", "once speed reaches 250", "when speed reached descend", "only after the
   -- speed becomes 250, descend", "after speed reduced to 250, descend": the noun as the
