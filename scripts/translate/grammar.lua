@@ -9560,7 +9560,14 @@ function G:at_waypoint(s, spec)
       if not (self.t[j].filler or self.t[j].kind == "punct") then ids = {} end
     end
     local to = self:refs_in(s.trig + 1, s.e, "waypoint")
-    if #ids == 1 and not (#to == 1 and self:on_route(ids[1], to[1].name)) then ids = {} end
+    local to_name = #to == 1 and to[1].name
+    -- ("after KOK proceed direct Brussels": the direct-to's place said by its navdata name, BUB)
+    if #ids == 1 and #to == 0 and self:state(ids[1]) then
+      local asked = self.ask
+      to_name = self:place_by_name(s.trig + 1, s.e, self:state(ids[1]))
+      if self.ask ~= asked then self.ask, to_name = asked, nil end
+    end
+    if #ids == 1 and not (to_name and self:on_route(ids[1], to_name)) then ids = {} end
     local k = self:skip_fillers(s.b)
     for _, a in ipairs(self:refs_in(k, k + 1, "aircraft")) do k = self:skip_fillers(a.e) end
     if self.t[k] and self.t[k].kind == "punct" then k = self:skip_fillers(k + 1) end
@@ -9578,7 +9585,7 @@ function G:at_waypoint(s, spec)
       local route, at, target = (self:state(ids[1]) or {}).route or {}, nil, nil
       for i, w in ipairs(route) do
         if name and w:upper() == name:upper() then at = i end
-        if w:upper() == to[1].name:upper() then target = i end
+        if w:upper() == to_name:upper() then target = i end
       end
       if name and not self.ask and at and target == at + 1 then
         local n0 = #self.out
@@ -9591,8 +9598,8 @@ function G:at_waypoint(s, spec)
         local skipped = {}
         for i = at + 1, target - 1 do skipped[#skipped + 1] = route[i] end
         return self:need(string.format("Should %s fly direct %s once past %s, leaving out %s of its route (AT %s %s DO "
-          .. "DIRECT %s %s), or delete %s from the route?", ids[1], to[1].name, name, table.concat(skipped, ", "),
-          ids[1], name, ids[1], to[1].name, table.concat(skipped, ", ")))
+          .. "DIRECT %s %s), or delete %s from the route?", ids[1], to_name, name, table.concat(skipped, ", "),
+          ids[1], name, ids[1], to_name, table.concat(skipped, ", ")))
       end
     end
     -- ("dct GILOM then FL190 at GILOM", "direct GILOM then at GILOM 250kt": a level or speed with no verb, after
