@@ -9810,8 +9810,8 @@ function G:at_waypoint(s, spec)
           letters, self:raw(opens, k)))
       end
       self:explain(opens, k)
-    -- (after "leave" only a heading is flown from the place: below)
-    elseif now and s.trig <= opens + 3 and not (self:word(first, "leave") and not self:word(s.trig, "heading hdg")) then
+    -- (after "leave" or "leaving" only a heading is flown from the place: below)
+    elseif now and s.trig <= opens + 3 and not (self:word(first, "leave leaving") and not self:word(s.trig, "heading hdg")) then
       name = self:place_by_name(opens, s.trig, now, true)
     end
     if name then refs = { { b = opens, e = s.trig, name = name } } end
@@ -9923,10 +9923,9 @@ function G:at_waypoint(s, spec)
     -- value said with its noun ("after CUERS speed 250 knots") is the instruction there too: no constraint
     -- can be met once the waypoint is passed.
     local cond_b
-    -- ("leave NAGMA heading 200": after the verb "leave" only a heading said straight after the waypoint is
-    -- flown from it; "leave FDO, fly heading 290" leaves the routing to it now; "leaving OKBOX turn right heading
-    -- 240", "leaving NAGMA climb FL180": the aircraft leaving the place, as "passing" says it)
-    local opened = r.b == opens and not (self:word(first, "leave") and not self:word(r.e, "heading hdg"))
+    -- ("leave NAGMA heading 200": after "leave" or "leaving" only a heading said straight after the waypoint is
+    -- flown from it; "leave FDO, fly heading 290" leaves the routing to it now)
+    local opened = r.b == opens and not (self:word(first, "leave leaving") and not self:word(r.e, "heading hdg"))
     if opened then
       cond_b = first
     elseif self:word(r.b - 1, "at past") and self:word(r.b - 2, "when once") and r.b - 2 == first then

@@ -22135,3 +22135,60 @@ do
   check_eq(ex("create NAX192, a 737 max nine at 60.5 11.0, heading 360, FL150, 280 knots"), "CRE NAX192 B39M 60.5 11 360 FL150 280")
   asked(ex("create NAX192, a 737 max, at 60.5 11.0, heading 360, FL150, 280 knots"), "which MAX")
 end
+
+-- Cycle 70 (lead, R280): the addressee said again straight before "correction" or "sorry", after an instruction, is
+-- part of the correction ("Springbok 203 descend FL130, Springbok 203 correction, FL140"); another aircraft's callsign
+-- there is asked about
+do
+  local _, ex = scene({ "CRE SAA203 A333 -25.30 29.60 240 FL160 280", "CRE SFR153 B738 -28.70 30.20 150 FL170 280" })
+  check_eq(ex("Springbok 203 descend flight level one three zero, Springbok 203 correction, flight level one four zero"),
+    "ALT SAA203 FL140")
+  check_eq(ex("SAA203 descend FL130, SAA203 sorry, FL140"), "ALT SAA203 FL140")
+  asked(ex("Springbok 203 descend FL130, Safair 153 correction, FL140"), "another aircraft named before the mark")
+end
+
+-- Cycle 70 (lead, R280): an instruction's word broken off ("direct...", "climb-") and replaced after a hesitation by
+-- another instruction's word is dropped; a place after the hesitation keeps it
+do
+  local _, ex = scene({ "DEFWPT KAVAR -29.0 31.5", "CRE UAE776 B77W -29.90 30.70 040 5000 220", "ADDWPT UAE776 KAVAR",
+    "CRE SFR153 B738 -28.70 30.20 150 FL170 280" })
+  check_eq(ex("Emirates 776 climb FL240 and turn right direct... uh, heading zero niner zero"),
+    "ALT UAE776 FL240 ; HDG UAE776 90 RIGHT")
+  check_eq(ex("Emirates 776 climb- eh, descend 4000"), "ALT UAE776 4000")
+  check_eq(ex("Emirates 776 direct... uh, KAVAR"), "DIRECT UAE776 KAVAR")
+end
+
+-- Cycle 70 (lead, R278): "after five minutes resume own navigation direct NP": the LNAV the DELAY waits for is the
+-- direct-to's, which waits too (never a DIRECT now that cuts the heading short)
+do
+  local _, ex = scene({ "DEFWPT NPX -38.0 174.5", "CRE UAE450 B77W -37.80 172.00 090 FL360 290", "ADDWPT UAE450 NPX",
+    "CRE QFA157 B738 -39.00 174.30 060 FL380 270" })
+  check_eq(ex("Emirates four five zero turn right heading one zero zero, after five minutes resume own navigation direct NPX"),
+    "HDG UAE450 100 RIGHT ; DELAY 300 DIRECT UAE450 NPX")
+  check_eq(ex("UAE450 turn right heading 100, after five minutes resume own navigation"),
+    "HDG UAE450 100 RIGHT ; DELAY 300 LNAV UAE450 ON")
+end
+
+-- Cycle 70 (lead, R278): "on reaching that speed descend ..." is the speed of the instruction before, reached (ATSPD)
+do
+  local _, ex = scene({ "CRE CVA580 AT72 -41.60 175.60 290 FL150 240", "CRE JST891 A320 -41.20 174.85 340 8000 250" })
+  check_eq(ex("Chatham five eight zero reduce speed two one zero knots, on reaching that speed descend to seven thousand feet"),
+    "SPD CVA580 210 ; ATSPD CVA580 210 ALT CVA580 7000")
+  check_eq(ex("CVA580 reduce speed 210 knots, when reaching that speed descend 7000 feet"),
+    "SPD CVA580 210 ; ATSPD CVA580 210 ALT CVA580 7000")
+end
+
+-- Cycle 70 (lead, R281): "direct Geneva" with GVA, the VOR "GENEVA COINTRIN" standing on LSGG, in the aircraft's route
+-- is that navaid; with no such navaid in its route, the airport; "after GIPOL proceed direct Kloten": the direct-to's
+-- place said by its navdata name (KLO), the next of the route, starts at the opening waypoint
+do
+  local s = navscene({ "CRE EZY45HP A320 46.30 4.45 080 FL190 280", "ADDWPT EZY45HP BUSIL", "ADDWPT EZY45HP GVA",
+    "CRE SWR8WG BCS3 46.45 6.90 240 FL150 270", "ADDWPT SWR8WG MOLUS", "CRE EDW24 A320 47.52 7.70 090 FL180 280",
+    "ADDWPT EDW24 GIPOL", "ADDWPT EDW24 KLO" }, "Geneva and Kloten by name")
+  if s then
+    local function ex(text) return said(graph.translate(text, { sim = s, mode = "offline" })) end
+    check_eq(ex("easy 45HP proceed direct Geneva"), "DIRECT EZY45HP GVA")
+    check_eq(ex("SWR8WG direct Geneva"), "ADDWPT SWR8WG LSGG ; DIRECT SWR8WG LSGG")
+    check_eq(ex("Edelweiss two four, after GIPOL proceed direct Kloten"), "AT EDW24 GIPOL DO DIRECT EDW24 KLO")
+  end
+end
