@@ -9560,18 +9560,18 @@ function G:at_waypoint(s, spec)
       if not (self.t[j].filler or self.t[j].kind == "punct") then ids = {} end
     end
     local to = self:refs_in(s.trig + 1, s.e, "waypoint")
+    local k = self:skip_fillers(s.b)
+    for _, a in ipairs(self:refs_in(k, k + 1, "aircraft")) do k = self:skip_fillers(a.e) end
+    if self.t[k] and self.t[k].kind == "punct" then k = self:skip_fillers(k + 1) end
+    local opener, verb = k, self:word(s.trig - 1, "proceed go fly") and s.trig - 1 or s.trig
     local to_name = #to == 1 and to[1].name
     -- ("after KOK proceed direct Brussels": the direct-to's place said by its navdata name, BUB)
-    if #ids == 1 and #to == 0 and self:state(ids[1]) then
+    if #ids == 1 and #to == 0 and self:word(opener, "at after over overhead") and self:state(ids[1]) then
       local asked = self.ask
       to_name = self:place_by_name(s.trig + 1, s.e, self:state(ids[1]))
       if self.ask ~= asked then self.ask, to_name = asked, nil end
     end
     if #ids == 1 and not (to_name and self:on_route(ids[1], to_name)) then ids = {} end
-    local k = self:skip_fillers(s.b)
-    for _, a in ipairs(self:refs_in(k, k + 1, "aircraft")) do k = self:skip_fillers(a.e) end
-    if self.t[k] and self.t[k].kind == "punct" then k = self:skip_fillers(k + 1) end
-    local opener, verb = k, self:word(s.trig - 1, "proceed go fly") and s.trig - 1 or s.trig
     if self.t[verb - 1] and self.t[verb - 1].kind == "punct" then verb = verb - 1 end
     if #ids == 1 and self:word(opener, "at after over overhead") and verb > opener + 1 then
       k = self:skip_fillers(opener + 1)
