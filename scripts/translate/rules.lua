@@ -3472,13 +3472,20 @@ return function(intent, rule, words)
   end }
   -- "add wind at 52N 4E, FL300, from 270 at 60 knots": a wind where the verb places it
   rule { "wind winds", "wind", prev = { 2, "add set define put create make" } }
+  -- "give me a wind over Queenstown, 270 degrees at 20 knots": the instructor's "give me", no aircraft named
+  rule { "wind winds", "wind", prev = { 3, "give" }, when = function(g) return not g:has_ref(1, #g.t + 1, "aircraft") end }
   -- "wind set at 35.5 139.8 from 270 degrees 40 knots": the verb said after the noun
   rule { "wind winds", "wind", next = "set" }
   rule { "set", false, prev = { 1, "wind winds" } }
   -- "set a westerly at 40 knots over -27.4 153.1": a wind named by where it blows from (lexicon.wind_points),
   -- put somewhere by the verb, no aircraft named
+  -- ("put a westerly wind of 40 knots over Willisau": the noun after it is the instruction's word, the point its direction)
   rule { "northerly easterly southerly westerly northeasterly southeasterly southwesterly northwesterly", "wind",
-         prev = { 3, "add set define put create" }, when = function(g) return not g:has_ref(1, #g.t + 1, "aircraft") end }
+         prev = { 3, "add set define put create" }, when = function(g, i)
+    return not g:word(i + 1, "wind winds") and not g:has_ref(1, #g.t + 1, "aircraft")
+  end }
+  rule { "wind winds", "wind", prev = { 1, "northerly easterly southerly westerly northeasterly southeasterly southwesterly "
+         .. "northwesterly" }, when = function(g) return not g:has_ref(1, #g.t + 1, "aircraft") end }
   -- "wind from 270 at 40 kt over 55.5 12.5", "a wind of 270 at 40 knots": where it blows from, said after it
   rule { "wind winds", "wind", next = "from of", when = function(g) return not g:has_ref(1, #g.t + 1, "aircraft") end }
   -- "the wind please put from 270 with 40 knots at 47.4 19.2", "the wind for experiment from 300 degrees 50 knots

@@ -22192,3 +22192,13 @@ do
     check_eq(ex("Edelweiss two four, after GIPOL proceed direct Kloten"), "AT EDW24 GIPOL DO DIRECT EDW24 KLO")
   end
 end
+
+-- Cycle 70 (lead, R278, R281): a wind named by where it blows from before the noun ("put a westerly wind of 40 knots
+-- over WILX") is one wind, the point its direction; "give me a wind over ..." with no aircraft named sets a wind
+do
+  local _, ex = scene({ "DEFWPT WILX 47.18 7.9", "CRE SWR54M A321 47.40 8.25 250 FL120 250", "ADDWPT SWR54M WILX" })
+  check_eq(ex("put a westerly wind of 40 knots over WILX"), "WIND WILX 270 40")
+  check_eq(ex("set a north-westerly wind at 30 knots at 47.18 7.9"), "WIND 47.18 7.9 315 30")
+  check_eq(ex("give me a wind over WILX, two seven zero degrees at two zero knots, at one zero thousand feet"),
+    "WIND WILX 10000 270 20")
+end
