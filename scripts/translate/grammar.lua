@@ -2467,6 +2467,39 @@ function G.cut_off_openings(text)
   return text
 end
 M.cut_off_openings = G.cut_off_openings  -- (graph.lua reads it before a request is split into clauses)
+-- "cancel the direct, fly heading 120", "disregard direct BOKSU and turn left heading 060": a direct-to taken
+-- back, then a heading to fly instead (lexicon.direct_cancelled_by: the words that open it, "heading" within three
+-- words): the heading alone is the instruction (HDG leaves the route, as BlueSky's HDG switches LNAV off), the
+-- taking back is dropped. With no heading after it, the text stays as said (asked).
+G.direct_cancel_verbs, G.direct_cancelled_by = set_of({ "cancel", "disregard", "abandon" }), set_of(lexicon.direct_cancelled_by)
+function G.cancelled_direct(text)
+  local low = text:lower()
+  if not (low:find("direct", 1, true) and (low:find("cancel", 1, true) or low:find("disregard", 1, true)
+      or low:find("abandon", 1, true))) then
+    return text
+  end
+  local toks, bare = plain_words(text)
+  for f = 1, #toks - 2 do
+    local k = f + 1
+    if G.direct_cancel_verbs[bare[f]] and bare[k] and (bare[k] == "the" or bare[k] == "your" or bare[k] == "that") then
+      k = k + 1
+    end
+    if G.direct_cancel_verbs[bare[f]] and bare[k] == "direct" then
+      local j = k + 1
+      -- (the place it was to fly to: "direct BOKSU", "direct to BOKSU", one word ending with the clause or before
+      -- the heading)
+      if bare[j] == "to" then j = j + 1 end
+      if not toks[k]:match("%p$") and bare[j] and not G.direct_cancelled_by[bare[j]] and not toks[j - 1]:match("%p$") then
+        j = j + 1
+      end
+      while bare[j] == "and" or bare[j] == "then" or bare[j] == "instead" or bare[j] == "now" do j = j + 1 end
+      local heading = false
+      for h = j, math.min(#bare, j + 3) do heading = heading or bare[h] == "heading" or bare[h] == "hdg" end
+      if G.direct_cancelled_by[bare[j] or ""] and heading then return G.words_without(toks, f, j - 1) end
+    end
+  end
+  return text
+end
 -- The words of toks joined by single spaces, less those at positions a to b
 function G.words_without(toks, a, b)
   local out = {}
@@ -3500,7 +3533,7 @@ local function written_forms(text, world)
   end)
   -- "47,5 north", "8,5 degrees east", "factor to 1,1": a decimal comma (G.decimal_comma) is the point
   where("%d,%d", "()(%d+),(%d+)()", function(b, whole, part, e) return G.decimal_comma(text, b, whole, part, e) end)
-  text = typed_abbreviations(lone_multipliers(tokens.numerals_apart(G.unfinished_restarts(G.cut_off_restarts(G.abandoned_instruction_words(text))), DIGIT_WORDS), world))
+  text = typed_abbreviations(lone_multipliers(tokens.numerals_apart(G.unfinished_restarts(G.cut_off_restarts(G.abandoned_instruction_words(G.cancelled_direct(text)))), DIGIT_WORDS), world))
   text = hyphened_types(spelled(G.spelled_letter_a(heard_forms(negated_values(G.readback_reported(readback_heard(self_corrections(G.said_but(G.cancel_corrections(unlabelled(foreign_digits(G.portuguese_and(G.polish_and(G.said_whole(G.french_in_english(G.denied_word(G.dutch_chat(G.condition_then(G.condition_copula(G.recreate_said(text)))))))))))))))))))))
   low = text:lower()
   -- a position typed as whole degrees after the hemisphere, then minutes ("N55 50.0 W003 20.0", "S33 57
@@ -13228,7 +13261,8 @@ function G:heard_route_place()
     for _, r in ipairs(self.refs) do held = held or (r.b <= k and k < r.e) end
     if t.kind == "word" and G.heard_slots[self.words[k - 1] or ""] and not explained[k] and not self.u:used(k)
         and not held then
-      local name = G.heard_route_name(t.text, route)
+      -- (or the navdata's own name of one navaid of that route: "level FL120 at Affligem", AFI)
+      local name = G.heard_route_name(t.text, route) or self:route_navaid_of(t.text)
       if name then
         self.confirm = self.confirm or { id = name, heard = t.raw }
         -- (in a request that adds to a route, "after"/"before" place the new waypoint: a name there stays confirmed)
@@ -13241,6 +13275,28 @@ function G:heard_route_place()
       end
     end
   end
+end
+
+-- The ident of the one navaid of the route of an aircraft named in the request whose navdata name is the word w,
+-- within lexicon.navaid_range_nm of it (G:route_navaid_named), else nil.
+function G:route_navaid_of(w)
+  local named = self.world.navaids_named
+  if not named then return nil end
+  local found
+  for _, r in ipairs(self.refs) do
+    local a = r.kind == "aircraft" and r.exists and self:state(r.name)
+    if a and a.lat then
+      local on = {}
+      for _, p in ipairs(a.route or {}) do on[p:upper()] = true end
+      for _, id in ipairs(named(w, a.lat, a.lon, lexicon.navaid_range_nm)) do
+        if on[id:upper()] then
+          if found and found ~= id:upper() then return nil end
+          found = id:upper()
+        end
+      end
+    end
+  end
+  return found and self:route_navaid_named(w, found) and found or nil
 end
 
 -- True when the word w is the navdata's own name of the navaid `name` on the route of an aircraft named in the
@@ -17528,6 +17584,11 @@ function G.confirmed_route_places(text, world)
     local slot = G.heard_slots[bare[i - 1]]
     if not (slot or G.navaid_slot(bare, i)) or toks[i - 1]:match("%p$") then return nil end
     local name = slot and #confirmed > 0 and G.heard_route_name(bare[i], confirmed)
+    -- (or, confirmed, the navdata's own name of that waypoint: "at Affligem", AFI, G:route_navaid_of)
+    if slot and not name and #confirmed > 0 then
+      local named = G.routed_navaid_name(bare[i], seen, world)
+      for _, c in ipairs(confirmed) do name = name or (c == named and named) end
+    end
     -- (a word written with a capital, or a navaid's or an airport's name anywhere, "at lille" for LIL, is a
     -- place's name, read as such)
     local sure = slot and not name and toks[i]:match("^%l") and world.navaids_named and world.airports_named

@@ -1217,6 +1217,9 @@ return {
   -- the words of an instruction that a speaker may break off ("direct...", "climb-") and replace, after a hesitation,
   -- by another of them (G.abandoned_instruction_words)
   abandoned_instruction_words = { "direct", "heading", "climb", "descend", "speed", "level", "altitude" },
+  -- the words that open a heading flown instead of a direct-to taken back ("cancel the direct, fly heading 120":
+  -- G.cancelled_direct)
+  direct_cancelled_by = { "fly", "turn", "heading", "hdg", "continue", "maintain", "resume" },
   -- the verbs that take back what was just said, before "that" ("cancel that", "belay that": G.cancel_corrections),
   -- and the correction words (lexicon.correction) that take it back when an instruction of another kind with no
   -- value is said in its place ("turn left heading 360, disregard, continue on your route": the heading dropped,

@@ -22202,3 +22202,25 @@ do
   check_eq(ex("give me a wind over WILX, two seven zero degrees at two zero knots, at one zero thousand feet"),
     "WIND WILX 10000 270 20")
 end
+
+-- Cycle 71 (lead, R281): a waypoint of the route said by its navaid's own navdata name after a level ("descend to be
+-- level FL120 at Affligem", AFI "AFFLIGEM") is that waypoint; a sound-alike of it ("Afligem") is still asked
+do
+  local s = navscene({ "CRE SWR7TL A320 50.30 3.50 030 FL200 280", "ADDWPT SWR7TL CIV", "ADDWPT SWR7TL AFI" },
+    "Affligem by name")
+  if s then
+    local function ex(text) return said(graph.translate(text, { sim = s, mode = "offline" })) end
+    check_eq(ex("Swiss 7TL, descend to be level flight level one two zero at Affligem"),
+      "ALT SWR7TL FL120 ; AT SWR7TL AFI ALT FL120")
+    asked(ex("Swiss 7TL, descend to be level flight level one two zero at Afligem"), "a sound-alike of the name")
+  end
+end
+
+-- Cycle 71 (lead): "cancel the direct, fly heading 120": a direct-to taken back for a heading is the heading alone;
+-- taken back with nothing after it, it is asked
+do
+  local _, ex = scene({ "DEFWPT WPA 52.2 4.8", "CRE KLM12 A320 52 4 090 FL200 250", "ADDWPT KLM12 WPA" })
+  check_eq(ex("KLM12 cancel the direct, fly heading 120"), "HDG KLM12 120")
+  check_eq(ex("KLM12 disregard direct WPA and turn left heading 060"), "HDG KLM12 60 LEFT")
+  asked(ex("KLM12 cancel the direct"), "no heading said instead")
+end
