@@ -3551,18 +3551,26 @@ return function(intent, rule, words)
   rule { "wind winds", "getwind", next = "check" }
   -- "wind at 30.1 31.4 FL200", "winds over 33N 7W?", "wind 50.8 4.4 fl200?": the request opening with the wind at
   -- a position (typed straight after the word, or after "at"/"over"; a level after it at most) and nothing else,
-  -- no direction nor speed told: the wind there, shown
+  -- no direction nor speed told: the wind there, shown; so is the wind at or over a waypoint ("wind over BOKSU at
+  -- FL100")
   local function wind_at_position(g, i)
     local p = g:word(i + 1, "at over") and i + 2 or i + 1
     if i ~= g:skip_fillers(1) then return false end
-    local qs = g:quantities(p, #g.t + 1)
+    local place = p == i + 2 and g:refs_in(p, p + 1, "waypoint")[1]
+    local qs = g:quantities(place and place.e or p, #g.t + 1)
     local a, b = qs[1], qs[2]
-    if not (a and b and a.b == p and b.b == a.e and a.number.typed and b.number.typed) then return false end
-    local e = b.e
+    local e = place and place.b == p and place.e
+    if not e then
+      if not (a and b and a.b == p and b.b == a.e and a.number.typed and b.number.typed) then return false end
+      e, qs = b.e, { nil, nil, qs[3] }
+    else
+      qs = { nil, nil, qs[1] }
+    end
     -- (the level after a comma too, and the question said after it: "wind at 36.7 north 127.5 east, flight level
     -- 310, how much?")
     local l = e
     while g.t[l] and g.t[l].text == "," do l = l + 1 end
+    if g:word(l, "at") then l = l + 1 end
     if qs[3] and qs[3].b == l and qs[3].kind == "alt" then e = qs[3].e end
     for x = e, #g.t do
       if g.t[x].kind ~= "punct" and not g.t[x].filler

@@ -22224,3 +22224,13 @@ do
   check_eq(ex("KLM12 disregard direct WPA and turn left heading 060"), "HDG KLM12 60 LEFT")
   asked(ex("KLM12 cancel the direct"), "no heading said instead")
 end
+
+-- Cycle 71 (lead): "wind at WPA", "wind over WPA at FL100": the wind at a waypoint, typed short, is shown (GETWIND);
+-- with a direction or another instruction after it, it is asked
+do
+  local _, ex = scene({ "DEFWPT WPA 52.2 4.8", "CRE KLM12 A320 52 4 090 FL200 250", "ADDWPT KLM12 WPA" })
+  check_eq(ex("wind at WPA"), "GETWIND WPA")
+  check_eq(ex("wind over WPA at FL100"), "GETWIND WPA FL100")
+  asked(ex("wind at WPA at 270 degrees"), "a direction told, no wind shown")
+  asked(ex("wind at WPA, descend FL100"), "an instruction after it")
+end
