@@ -1676,7 +1676,8 @@ return function(H, f, compass)
   -- whose name a navaid within lexicon.city_nm of it bears under another ident is the navaid ("create ... at
   -- Clacton, FL100": the CLN VOR, not the EGSQ strip), as a navaid named after a town with a small airfield is
   -- (m:place_by_name's "direct Perth"); said of an aircraft put on the ground ("on the ground", "ready for
-  -- departure" in [b, e)), the airfield. Nil when that does not hold: a large or medium airport stays itself.
+  -- departure" in [b, e)), the airfield. Of several navaids of one station, the VOR ("at Nakuru": the VOR-DME NAK,
+  -- not the NDB NU beside it). Nil when that does not hold: a large or medium airport stays itself.
   function m:small_airfield_navaid(b, e, airport)
     local w, c = self.world, self.world.airport_class(airport)
     if c == "LARGE" or c == "MEDIUM" or self.airport_said_noun or self:word_in(b, e, "ground departure takeoff take-off") then
@@ -1685,7 +1686,7 @@ return function(H, f, compass)
     local lat, lon = w.user_waypoint_at(airport)
     if not lat then return nil end
     local asked = self.ask
-    local navaid = self:navaid_by_name(b, e, { lat = lat, lon = lon }, L.city_nm)
+    local navaid = self:navaid_by_name(b, e, { lat = lat, lon = lon }, L.city_nm, nil, true)
     self.ask = asked
     return navaid and navaid:upper() ~= airport:upper() and navaid or nil
   end
@@ -1938,9 +1939,10 @@ return function(H, f, compass)
   -- A navaid said by its navdata name ("direct Canarsie" -> CRI, "Point Reyes" -> PYE), where no
   -- airport has that name: one or two words in [b, e) that name navaids within
   -- range_nm (default lexicon.navaid_range_nm) of the aircraft `a`; the question names them when
-  -- several idents fit; `two_words` (true) reads two-word names only. Second result: the name as said, unless
-  -- a navaid's kind follows it ("the Atlanta VOR").
-  function m:navaid_by_name(b, e, a, range_nm, two_words)
+  -- several idents fit; `two_words` (true) reads two-word names only; `station` (true) reads several navaids of one
+  -- station as its VOR even where an airport bears the name (m:station_vor). Second result: the name as said,
+  -- unless a navaid's kind follows it ("the Atlanta VOR").
+  function m:navaid_by_name(b, e, a, range_nm, two_words, station)
     local named = self.world.navaids_named
     if not named or not a or not a.lat then return nil end
     for i = b, math.min(e, #self.t + 1) - 1 do
@@ -1991,7 +1993,7 @@ return function(H, f, compass)
           -- ("move Air Nostrum 8123 to Castejon": several navaids of the name, all of one station, are its VOR, where
           -- no airport bears the name: "Vilnius" is left to the airport's reading)
           local by_airport = self.world.airports_named
-          if #ids > 1 and not kind and not (by_airport and #by_airport(phrase) > 0) then
+          if #ids > 1 and not kind and (station or not (by_airport and #by_airport(phrase) > 0)) then
             ids = self:station_vor(phrase, ids, select(2, named(phrase, a.lat, a.lon, range_nm or L.navaid_range_nm)))
               or ids
           end

@@ -22234,3 +22234,14 @@ do
   asked(ex("wind at WPA at 270 degrees"), "a direction told, no wind shown")
   asked(ex("wind at WPA, descend FL100"), "an instruction after it")
 end
+
+-- Cycle 71 (lead, R280): a small airfield's town whose navaids are one station (Nakuru: the VOR-DME NAK, the NDB NU
+-- 200 m away, the strip HKNK) is that station's VOR where an aircraft is put
+do
+  local s = navscene({ "CRE KQA101 B788 -0.60 37.40 210 FL170 280" }, "Nakuru's station")
+  if s then
+    local function ex(text) return said(graph.translate(text, { sim = s, mode = "offline" })) end
+    check_eq(ex("create an Ethiopian Dash 8, ETH8721, at Nakuru, heading one three five, flight level one four zero, "
+      .. "two three zero knots"), "CRE ETH8721 DH8D NAK 135 FL140 230")
+  end
+end
