@@ -9786,7 +9786,9 @@ function G:at_waypoint(s, spec)
   -- "leaving", "overflying", "reaching", "past" or "over", "passing", "reaching", "leave", "leaving")
   local opens
   self.place_passed_e, self.place_passes = nil, nil
-  local passed = "passing leaving overflying reaching past over"
+  -- ("when crossing GABIS descend FL090", "after crossing GABIS, ...": crossing it, as passing it; a bare "crossing
+  -- GABIS descend ..." stays a crossing's, asked)
+  local passed = "passing leaving overflying reaching past over crossing"
   -- ("when you're at BOYNE descend ...", "once it's at BUMIL, ...": the aircraft being at the place, as "at" says it)
   if self:word(first, "when once") and self:word(first + 1, "you're it's he's she's")
       and self:word(first + 2, "at over overhead") then
@@ -9856,7 +9858,9 @@ function G:at_waypoint(s, spec)
     -- that ends the request; "cross MAXMO FL220, speed 280 knots", the speed now or there, is asked about)
     -- ("cross BUK speed 250", "cross RABAN FL150 speed 250": the number after "speed" is the speed there)
     local after = self:skip_fillers(r.e)
-    local next_q = self:word(r.b - 1, "cross crossing crosses") and self:quantities(after, s.e)[1]
+    local next_q = self:word(r.b - 1, "cross crossing crosses")
+      and not (self:word(r.b - 1, "crossing") and self:word(r.b - 2, "after when on upon once"))
+      and self:quantities(after, s.e)[1]
     local function speed_said(q)
       return q.kind == "plain" and self:word(q.b - 1, "speed spd") and q.value >= 100 and q.value <= 400
         and not q.number.decimal
@@ -9973,8 +9977,9 @@ function G:at_waypoint(s, spec)
     -- ("when passing KV speed 230", "once past GIVMI 250 knots": a clause that passes the waypoint before its
     -- value, as "after" does)
     -- ("passing IDUMA speed 220": a bare "passing" opening the request's clause, its "when" left out, the same)
+    local crossing_opens = self:word(first, "after when on upon once") and self:word(self:skip_fillers(first + 1), "crossing")
     local passed_first = self:word(first, "after") or self.place_passes or (self:word(first, "when on upon once")
-      and self:word(self:skip_fillers(first + 1), "passing past overflying leaving"))
+      and self:word(self:skip_fillers(first + 1), "passing past overflying leaving crossing"))
       or (self:word(first, "passing") and r.b == self:skip_fillers(first + 1))
     -- ("at UPALA then FL120", "at ELDAR, then speed 250": "then" after the opening waypoint says what follows
     -- is done there, no constraint)
@@ -9986,7 +9991,7 @@ function G:at_waypoint(s, spec)
         or (opened and (self:word(first, "leave leaving") or passed_first or then_at)))
       and not (self:word(first, "passing leaving") and self.t[s.trig].text:match("ing$")
         and not self:word(s.trig, "@instruction_nouns"))
-      and not self:word_in(s.b, s.e, "cross crossing crosses now immediately")
+      and not self:word_in(s.b, s.e, crossing_opens and "cross crosses now immediately" or "cross crossing crosses now immediately")
       and not (self:word_in(s.b, s.e, "@correction") and not G.value_corrected(self, s))
     -- ("over WHISK hdg 010", "after FERDI 250kt": a heading is no constraint a waypoint carries, and once past
     -- the waypoint no speed can be met there: said with no verb after the opening waypoint, the instruction there;
@@ -18640,6 +18645,10 @@ function M.translate(text, world)
   -- "wind ... 270/25(kt)": a wind written as its direction and speed in knots with a slash between
   if text:lower():find("wind", 1, true) then
     text = text:gsub("%f[%w%.](%d%d%d)/(%d%d?%d?)%s*[Kk]?[Tt]?[Ss]?%f[^%w%.]", "from %1 at %2 knots")
+    -- ("what's the wind doing at 40S 175E?": the wind's "doing" before the place it is asked at says nothing more)
+    for _, place in ipairs({ "[Aa]t", "[Oo]ver" }) do
+      text = text:gsub("(%f[%a][Ww][Ii][Nn][Dd][Ss]?)%s+[Dd][Oo][Ii][Nn][Gg](%s+" .. place .. "%f[%A])", "%1%2")
+    end
     -- ("set the wind ... to 2 7 0 at 50 knots": a direction's three digits said apart after "to" or "from")
     text = text:gsub("(%f[%a][TtFf][or]o?m?%s+)([0-3])%s+(%d)%s+(%d)%f[%D]", function(w, a, b, c)
       if not (w:lower():match("^to%s") or w:lower():match("^from%s")) then return nil end

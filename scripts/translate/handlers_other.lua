@@ -1733,7 +1733,9 @@ return function(H, f, compass)
     local asked = self.ask
     self.several_named = nil
     local navaid, phrase = nil, nil
-    if airport then navaid, phrase = self:navaid_by_name(b, e, a) end
+    -- (several navaids of the name that are one station are its VOR: "direct Oshima", the XAC VORTAC and the XA NDB
+    -- 1.7 NM apart, beside RJTO "OSHIMA" 4.7 NM away, is the VOR or the airport, asked)
+    if airport then navaid, phrase = self:navaid_by_name(b, e, a, nil, nil, true) end
     -- (a navaid's name said with a capitalised word after it that the airport's own name holds, "Boston Logan":
     -- KBOS "GENERAL EDWARD LAWRENCE LOGAN", the BOS VOR "BOSTON" a word of it, is the airport)
     local with = self.world.airports_with_words

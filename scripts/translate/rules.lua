@@ -739,12 +739,20 @@ return function(intent, rule, words)
     local nx = g.t[i + 1]
     return nx ~= nil and nx.kind == "word" and nx.text:match("^x%d+$") ~= nil and i + 2 > #g.t
   end }
-  -- "time x8": the same straight after the clock's "time" opening the request, nothing after it, no aircraft
-  -- bearing the multiplier's name ("x8" reads like a callsign)
-  rule { "time", "dtmult", when = function(g, i)
-    local nx = g.t[i + 1]
-    return nx ~= nil and nx.kind == "word" and nx.text:match("^x%d+$") ~= nil and i + 2 > #g.t
-      and g:skip_fillers(1) == i and not (g:refs_in(i + 1, i + 2, "aircraft")[1] or {}).exists
+  -- True when a multiplier typed "x8" ends the request straight after the clock's word at i ("time", "clock"; "to",
+  -- "at" or "on" between), no aircraft bearing its name ("x8" reads like a callsign)
+  local function clock_x_multiplier(g, i)
+    local k = g:word(i + 1, "to at on") and i + 2 or i + 1
+    local nx = g.t[k]
+    return nx ~= nil and nx.kind == "word" and nx.text:match("^x%d+$") ~= nil and g:skip_fillers(k + 1) > #g.t
+      and not (g:refs_in(k, k + 1, "aircraft")[1] or {}).exists
+  end
+  -- "time x8": the multiplier straight after the clock's "time" opening the request; "put the time x4", "set the
+  -- clock to x4": after a verb of setting and "the"
+  rule { "time clock", "dtmult", when = function(g, i) return g:skip_fillers(1) == i and clock_x_multiplier(g, i) end }
+  rule { "set put make", "dtmult", when = function(g, i)
+    local k = g:word(i + 1, "the") and i + 2 or i + 1
+    return g:word(k, "time clock") and clock_x_multiplier(g, k)
   end }
   -- "put the simulation at times four", "set the sim to four times": a multiplier ("times" before or after its
   -- number) said of the simulation itself,

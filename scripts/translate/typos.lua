@@ -13,7 +13,8 @@
 -- A word holding a digit or a capital after its first letter, a flying aircraft's id or its airline's letters, and
 -- a fix, navaid or airport the navdata holds near the traffic (world.place_known) are never such a slip.
 -- Only a request whose question names the one word it did not read ("What does 'tun' mean?") is read again, for that
--- word, or one of which nothing was understood (M.not_understood, set by the grammar), for each word.
+-- word, or one of which nothing was understood (M.not_understood, set by the grammar), for each word, or one asked
+-- anything else that holds one unknown word alone ("descend levle 90", asked about its value), for that word.
 -- Each reading of the slips (at most MAX_READINGS) is translated; when those that issue commands with nothing
 -- asked all issue the same ones, one of them reading every slip as an instruction word, that is the answer;
 -- otherwise (none, two that differ, or only a word of no instruction read: "abd 250" read as "abv 250") `asked`
@@ -161,19 +162,26 @@ function M.reread(text, world, asked, read)
   -- (the word asked about, "What does 'tun' mean?", or any word where nothing was understood; besides the word asked about, and with any other question, only two known words typed or heard with no space
   -- between, "descendto one zero thousand reduce speed 250", whose question named what the unread verb left: read
   -- apart, the same agreement asked of the readings)
+  -- (with any other question, one unknown word alone in the request is read too: "descend levle 90", asked about
+  -- its value, read "level")
   local named_word = asked.ask:match("What does '(%a+)' mean%?$")
   local glued_only = not named_word and asked.ask ~= M.not_understood
-  -- slips: { b =, e = (the word's bytes in text), options = { readings } }
-  local slips = {}
+  -- unknown: { b =, e = (the word's bytes in text), w = } of each word no list knows
+  local unknown = {}
   for b, w, e in text:gmatch("()(%a+)()") do
-    local lw = w:lower()
     local before, after = text:sub(b - 1, b - 1), text:sub(e, e)
-    if not KNOWN[lw] and not w:sub(2):find("%u")
+    if not KNOWN[w:lower()] and not w:sub(2):find("%u")
         and not before:find("[%w%.%-_/]") and not after:find("[%w%.%-_/']") and not named(w, world) then
-      local only_glued = glued_only or (named_word ~= nil and named_word:lower() ~= lw)
-      local options = only_glued and (#lw <= 20 and M.apart(lw) or {}) or readings(lw)
-      if #options > 0 then slips[#slips + 1] = { b = b, e = e, options = options } end
+      unknown[#unknown + 1] = { b = b, e = e, w = w:lower() }
     end
+  end
+  -- slips: { b =, e =, options = { readings } }
+  local slips = {}
+  for _, u in ipairs(unknown) do
+    local lw = u.w
+    local only_glued = (glued_only and #unknown > 1) or (named_word ~= nil and named_word:lower() ~= lw)
+    local options = only_glued and (#lw <= 20 and M.apart(lw) or {}) or readings(lw)
+    if #options > 0 then slips[#slips + 1] = { b = u.b, e = u.e, options = options } end
   end
   if #slips == 0 then return asked end
   local n = 1

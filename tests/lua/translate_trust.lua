@@ -22245,3 +22245,65 @@ do
       .. "two three zero knots"), "CRE ETH8721 DH8D NAK 135 FL140 230")
   end
 end
+
+-- Cycle 71 (lead, R278): "what's the wind doing at 40S 175E": the wind's "doing" before the place asks for the wind
+-- there; with no place, asked
+do
+  local _, ex = scene({ "DEFWPT WPA -40 175", "CRE KLM12 A320 -40 174 090 FL200 250" })
+  check_eq(ex("what's the wind doing at forty south one seven five east, flight level three zero zero"),
+    "GETWIND -40 175 FL300")
+  check_eq(ex("what is the wind doing over WPA?"), "GETWIND WPA")
+  asked(ex("KLM12 what's the wind doing at your level"), "no place given")
+end
+
+-- Cycle 71 (lead, R16, R110, R280): "the wind over Kennedy": the JFK VOR, whose navdata name is "KENNEDY", as "over
+-- Dubai" is the DUB VOR, not the airports standing beside them
+do
+  local s = navscene({ "CRE AAL2307 B738 40.30 -73.40 300 FL140 270" }, "Kennedy")
+  if s then
+    local function ex(text) return said(graph.translate(text, { sim = s, mode = "offline" })) end
+    check_eq(ex("What's the wind doing at FL 200 over Kennedy?"), "GETWIND JFK FL200")
+  end
+end
+
+-- Cycle 71 (lead, R283): one unknown word alone, a slip of an instruction word, in a request asked about something
+-- else ("descend levle 90", asked about its value) is read as the word it may be; a value left doubtful with every
+-- word known stays asked
+do
+  local _, ex = scene({ "CRE LBT7430 A320 36 10 090 FL150 250" })
+  check_eq(ex("Nouvelair 7430 descend levle 90"), "ALT LBT7430 FL90")
+  asked(ex("LBT7430 descend 90"), "9000 ft or FL90")
+end
+
+-- Cycle 71 (lead, R283): "put the time x4", "set the clock to x4": a multiplier typed "x4" after the clock's word
+-- and a verb of setting is the time multiplier; "x4" with an aircraft's name stays that aircraft's
+do
+  local _, ex = scene({ "CRE LBT7430 A320 36 10 090 FL150 250" })
+  check_eq(ex("ok resume, and put the time x4"), "OP ; DTMULT 4")
+  check_eq(ex("set the clock to x4"), "DTMULT 4")
+  asked(ex("set the time x4 LBT7430"), "an aircraft named after the multiplier")
+end
+
+-- Cycle 71 (lead, R282): "direct Oshima": the XAC VORTAC and the XA NDB, one station, beside RJTO "OSHIMA" 4.7 NM
+-- away: the VOR where the route holds it, else asked (never the airport); "direct Frankfurt" stays EDDF
+do
+  local s = navscene({ "CRE JAL516 B738 34.60 139.30 045 FL160 290", "ADDWPT JAL516 XAC",
+    "CRE UAL837 B789 34.40 139.60 000 FL220 300", "CRE DLH1 A320 50.2 8.0 090 FL200 250" }, "Oshima")
+  if s then
+    local function ex(text) return said(graph.translate(text, { sim = s, mode = "offline" })) end
+    check_eq(ex("JAL516 direct Oshima"), "DIRECT JAL516 XAC")
+    asked(ex("United eight three seven, direct Oshima, then descend flight level two zero zero"), "the VOR or the airport")
+    check_eq(ex("DLH1 direct Frankfurt"), "ADDWPT DLH1 EDDF ; DIRECT DLH1 EDDF")
+  end
+end
+
+-- Cycle 71 (lead, R284): "when crossing GABX descend FL090", "after crossing GABX speed 220": crossing the waypoint
+-- after "when" or "after" opens the instruction there, as passing it does; a bare "crossing GABX descend ..." stays
+-- asked, and "cross GABX speed 220" is the crossing's constraint
+do
+  local _, ex = scene({ "DEFWPT GABX 18 -66", "CRE BWA65 A320 18 -67 090 FL150 250", "ADDWPT BWA65 GABX" })
+  check_eq(ex("Caribbean 65 when crossing GABX descend FL090"), "AT BWA65 GABX DO ALT BWA65 FL90")
+  check_eq(ex("BWA65 after crossing GABX speed 220"), "AT BWA65 GABX DO SPD BWA65 220")
+  asked(ex("BWA65 crossing GABX descend FL090"), "a crossing's constraint or an instruction there")
+  check_eq(ex("BWA65 cross GABX speed 220"), "AT BWA65 GABX SPD 220")
+end
