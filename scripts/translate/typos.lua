@@ -181,6 +181,14 @@ function M.reread(text, world, asked, read)
     local lw = u.w
     local only_glued = (glued_only and #unknown > 1) or (named_word ~= nil and named_word:lower() ~= lw)
     local options = only_glued and (#lw <= 20 and M.apart(lw) or {}) or readings(lw)
+    -- (that lone word, under another question, only where one reading is an instruction word: one reading more)
+    if glued_only and not only_glued then
+      local instruction = {}
+      for _, o in ipairs(options) do
+        if o.instruction then instruction[#instruction + 1] = o end
+      end
+      options = #instruction == 1 and instruction or M.apart(lw)
+    end
     if #options > 0 then slips[#slips + 1] = { b = u.b, e = u.e, options = options } end
   end
   if #slips == 0 then return asked end
