@@ -29,8 +29,9 @@
 //   sim:airports_beside(ident, lat, lon, within_nm) -> { "LFML", ... }  airports within
 //                           within_nm of the navaid or fix `ident` nearest lat, lon [deg], nearest
 //                           first ({} without it: the airport a navaid named after a city is on)
-//   sim:waypoints_at(lat, lon) -> { "54N20", ... }  idents of the fixes and navaids at exactly lat,
-//                           lon [deg] (the named points of a position said in degrees: NAT points)
+//   sim:waypoints_at(lat, lon) -> { "5420N", "54N20", ... }  names of the waypoints defined (DEFWPT),
+//                           then of the fixes and navaids, at exactly lat, lon [deg] (the named points
+//                           of a position said in degrees: NAT points, a scenario's own)
 //   sim:reference()      -> lat, lon [deg]  the reference position the next command starts from
 //                           (command/args.h: a navaid or fix name is the one nearest it)
 //   sim:locate(text [, lat, lon]) -> lat, lon [deg], or nil, message: where a position argument
@@ -292,9 +293,14 @@ int l_waypoints_at(lua_State* L) {
   command::Stack* s = self(L);
   const double lat = arg_number(L, 2, "lat"), lon = arg_number(L, 3, "lon");
   lua_newtable(L);
-  if (!s->navdb()) return 1;
   constexpr double kSameDeg = 1e-6;  // fix.dat writes six decimals
   int k = 0;
+  for (const auto& [name, p] : s->user_waypoints()) {
+    if (std::abs(p.lat - lat) > kSameDeg || std::abs(p.lon - lon) > kSameDeg) continue;
+    lua_pushstring(L, name.c_str());
+    lua_rawseti(L, -2, ++k);
+  }
+  if (!s->navdb()) return 1;
   for (const command::NavPoint& w : s->navdb()->waypoints()) {
     if (std::abs(w.lat - lat) > kSameDeg || std::abs(w.lon - lon) > kSameDeg) continue;
     lua_pushstring(L, w.id.c_str());

@@ -6682,6 +6682,26 @@ function G:condition_lost_in_correction()
   end
 end
 
+-- "descend FL330 at 2000 feet per minute, correction, 1500": a bare number said alone after the last correction
+-- (m:last_correction), where the two values said last before it are a level and a rate, may correct either: asked,
+-- never read as the level ("ALT 1500" for a rate of 1500 ft/min).
+function G:correction_of_two_kinds()
+  local n = #self.t + 1
+  local corr = self:last_correction({ b = 1, e = n })
+  if not corr then return end
+  local k = corr + 1
+  while self.t[k] and (self.t[k].kind == "punct" or self.t[k].filler) do k = k + 1 end
+  local q = self:quantities(k, n)[1]
+  if not (q and q.b == k and q.kind == "plain") then return end
+  local before = self:quantities(1, corr)
+  local last, prev = before[#before], before[#before - 1]
+  if not (last and prev and (last.kind == "vs" and prev.kind == "alt" or last.kind == "alt" and prev.kind == "vs")) then
+    return
+  end
+  self.ask = string.format("Which value does '%s' correct: %s or %s?", self:raw(q.b, q.e), self:raw(prev.b, prev.e),
+    self:raw(last.b, last.e))
+end
+
 -- The commands that wait for a condition before they run (BlueSky's conditional commands).
 local CONDITIONAL = { AT = true, ATALT = true, ATSPD = true, ATDIST = true, DELAY = true, SCHEDULE = true }
 
@@ -18312,8 +18332,10 @@ function G.route_points_said(text, u, world, toks)
     if q.kind == "lat" and lon and lon.kind == "lon" and q.value % 1 == 0 and lon.value % 1 == 0
         and (lon.b == q.e or (lon.b == q.e + 1 and toks[q.e].text == ",")) then
       local found = {}
+      -- (a name of digits and one letter after them, a scenario's "5450N", reads as a value when written in the
+      -- text: the position stays as said, for the instruction to find its point by it)
       for _, id in ipairs(world.waypoints_at(q.value, lon.value)) do
-        if held[id:upper()] then found[#found + 1] = held[id:upper()] end
+        if held[id:upper()] and not id:match("^%d+%a$") then found[#found + 1] = held[id:upper()] end
       end
       if #found == 1 then spans[#spans + 1] = { b = q.b, e = lon.e, name = found[1] } end
     end
@@ -19006,6 +19028,7 @@ function M.translate(text, world)
   if not g.ask then g:shown_after_instruction() end
   if not g.ask and #g.out > 0 then g:condition_dropped() end
   if not g.ask and #g.out > 0 then g:condition_lost_in_correction() end
+  if not g.ask and #g.out > 0 then g:correction_of_two_kinds() end
   if not g.ask and #g.out > 0 then g:run_left() end
   if not g.ask and #g.out > 0 then g:level_with_unit(lower) end
   -- "... actually no, just the descent" (G:self_corrected): only the commands of that kind stand

@@ -890,6 +890,10 @@ return function(intent, rule, words)
   rule { "speed spd airspeed", "ff", near = { 3, "@sim" } }
   rule { "speed spd airspeed", "ff", next = "up", prev = { 3, "simulation sim" } }
   rule { "speed spd airspeed", "ff", prev = { 1, "simulation sim" } }
+  -- "set the simulation to twice speed", "twice speed please": a multiplier word straight before "speed", no aircraft
+  -- named, is the clock's rate
+  rule { "speed", "dtmult", prev = { 1, "@multipliers" },
+         when = function(g) return not g:has_ref(1, #g.t + 1, "aircraft") end }
   rule { "speed spd airspeed", false, prev = { 2, "half double triple quadruple" } }
   rule { "speed spd airspeed", "spd" }
   rule { "slow slower", "dtmult", near = { 3, "@sim" } }
@@ -1997,6 +2001,13 @@ return function(intent, rule, words)
     local k = g:skip_fillers(i + 2)
     local r = g:refs_in(k, k + 1, "waypoint")[1]
     return r ~= nil and not r.name:match("^%a%a%a%a$")
+  end }
+  -- "set course to DANOK", "set course GRIVA", "take course for ALM" (a Russian speaker's "course to"): a waypoint
+  -- straight after the course ("to" or "for" between), flown to directly ("set course 270" stays a heading)
+  rule { "course", "direct", prev = { 1, "set take" }, when = function(g, i)
+    local k = g:skip_fillers(g:word(i + 1, "to for") and i + 2 or i + 1)
+    local r = g:refs_in(k, k + 1, "waypoint")[1]
+    return r ~= nil and r.b == k
   end }
   -- "jump ahead to LINNG", "cut the corner to MILLS": a waypoint of the route flown to directly
   rule { "jump", "direct", next = "ahead", when = function(g, i) return g:word(i + 2, "to") and to_waypoint(g, i) end }

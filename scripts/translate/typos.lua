@@ -14,7 +14,8 @@
 -- a fix, navaid or airport the navdata holds near the traffic (world.place_known) are never such a slip.
 -- Only a request whose question names the one word it did not read ("What does 'tun' mean?") is read again, for that
 -- word, or one of which nothing was understood (M.not_understood, set by the grammar), for each word, or one asked
--- anything else that holds one unknown word alone ("descend levle 90", asked about its value), for that word.
+-- anything else that holds one unknown word alone ("descend levle 90", asked about its value), for that word. Two
+-- unknown words with one space between that join into a known word ("say alti tude") are read joined.
 -- Each reading of the slips (at most MAX_READINGS) is translated; when those that issue commands with nothing
 -- asked all issue the same ones, one of them reading every slip as an instruction word, that is the answer;
 -- otherwise (none, two that differ, or only a word of no instruction read: "abd 250" read as "abv 250") `asked`
@@ -177,6 +178,19 @@ function M.reread(text, world, asked, read)
   end
   -- slips: { b =, e =, options = { readings } }
   local slips = {}
+  -- (two unknown words with one space between that join into a known word: a word a recogniser split, "say alti
+  -- tude", read joined, both words one slip)
+  local k = 1
+  while k < #unknown do
+    local a, b = unknown[k], unknown[k + 1]
+    if b.b == a.e + 1 and KNOWN[a.w .. b.w] and not CODES[a.w .. b.w] then
+      slips[#slips + 1] = { b = a.b, e = b.e, options = { { word = a.w .. b.w, instruction = true } } }
+      table.remove(unknown, k + 1)
+      table.remove(unknown, k)
+    else
+      k = k + 1
+    end
+  end
   for _, u in ipairs(unknown) do
     local lw = u.w
     local only_glued = (glued_only and #unknown > 1) or (named_word ~= nil and named_word:lower() ~= lw)
@@ -192,6 +206,7 @@ function M.reread(text, world, asked, read)
     if #options > 0 then slips[#slips + 1] = { b = u.b, e = u.e, options = options } end
   end
   if #slips == 0 then return asked end
+  table.sort(slips, function(x, y) return x.b < y.b end)
   local n = 1
   for _, s in ipairs(slips) do n = n * #s.options end
   if n > MAX_READINGS then return asked end

@@ -22307,3 +22307,35 @@ do
   asked(ex("BWA65 crossing GABX descend FL090"), "a crossing's constraint or an instruction there")
   check_eq(ex("BWA65 cross GABX speed 220"), "AT BWA65 GABX SPD 220")
 end
+
+-- Cycle 71 (lead, R287, R289): "set course to DANOK", "take course for WPA": a direct-to ("set course 270" stays a
+-- heading); "say alti tude": a word a recogniser split, read joined; "set the simulation to twice speed": the
+-- clock's rate
+do
+  local _, ex = scene({ "DEFWPT WPA 52.2 4.8", "CRE SBI1045 A320 52 4 090 FL200 250" })
+  check_eq(ex("Siberian one zero four five set course to WPA"), "ADDWPT SBI1045 WPA ; DIRECT SBI1045 WPA")
+  check_eq(ex("SBI1045 take course for WPA"), "ADDWPT SBI1045 WPA ; DIRECT SBI1045 WPA")
+  check_eq(ex("SBI1045 set course 270"), "HDG SBI1045 270")
+  check_eq(ex("SBI1045 say alti tude"), "POS SBI1045")
+  check_eq(ex("set the simulation to twice speed"), "DTMULT 2")
+end
+
+-- Cycle 71 (lead, R286): a hazard: "descend FL330 at 2000 feet per minute, correction, one five hundred" sent
+-- ALT 1500 (a descent to 1500 ft for a rate corrected to 1500 ft/min); a bare number after a correction that follows
+-- a level and a rate is asked which it corrects; a value with its unit is read as before
+do
+  local _, ex = scene({ "CRE DAL232 B764 39.0 -30.0 080 FL350 275" })
+  asked(ex("Delta two three two, descend flight level three three zero at two thousand feet per minute or greater, "
+    .. "correction, one five hundred"), "the level or the rate")
+  asked(ex("DAL232 descend at 2000 feet per minute to FL330, correction, 1500"), "the rate or the level")
+  check_eq(ex("DAL232 descend FL330 at 2000 feet per minute, correction, FL310"), "ALT DAL232 FL310 2000")
+  check_eq(ex("DAL232 descend FL330, correction, 310"), "ALT DAL232 FL310")
+end
+
+-- Cycle 71 (lead, R286): "direct fifty-four north fifty west" where the route holds a point defined at exactly that
+-- position (DEFWPT 5450N 54 -50) is that point, not the navdata's 54N50 added to the route
+do
+  local _, ex = scene({ "DEFWPT 5450N 54 -50", "DEFWPT CUDDX 53.5 -55", "CRE UAL901 B772 54.0 -42.0 270 FL340 265",
+    "ADDWPT UAL901 5450N", "ADDWPT UAL901 CUDDX" })
+  check_eq(ex("United 901 direct fifty-four north fifty west"), "DIRECT UAL901 5450N")
+end
