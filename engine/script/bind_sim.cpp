@@ -29,9 +29,10 @@
 //   sim:airports_beside(ident, lat, lon, within_nm) -> { "LFML", ... }  airports within
 //                           within_nm of the navaid or fix `ident` nearest lat, lon [deg], nearest
 //                           first ({} without it: the airport a navaid named after a city is on)
-//   sim:waypoints_at(lat, lon) -> { "5420N", "54N20", ... }  names of the waypoints defined (DEFWPT),
-//                           then of the fixes and navaids, at exactly lat, lon [deg] (the named points
-//                           of a position said in degrees: NAT points, a scenario's own)
+//   sim:waypoints_at(lat, lon) -> { "5420N", "54N20", ... }  names of the waypoints defined
+//   (DEFWPT),
+//                           then of the fixes and navaids, at exactly lat, lon [deg] (the named
+//                           points of a position said in degrees: NAT points, a scenario's own)
 //   sim:reference()      -> lat, lon [deg]  the reference position the next command starts from
 //                           (command/args.h: a navaid or fix name is the one nearest it)
 //   sim:locate(text [, lat, lon]) -> lat, lon [deg], or nil, message: where a position argument

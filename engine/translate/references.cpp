@@ -264,6 +264,13 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
         continue;
       }
     }
+    // a route or defined waypoint named by digits and letters after them ("5450N", a scenario's NAT
+    // point), which the lexer splits into a number and a word glued to it
+    if (!used[i] && t[i].kind == TokKind::kNumber && i + 1 < t.size() && !used[i + 1] &&
+        t[i + 1].glued && is_word(t[i + 1]) && in_list(wpts, t[i].raw + t[i + 1].raw)) {
+      add(RefKind::kWaypoint, text::upper(t[i].raw + t[i + 1].raw), i, i + 2, true, false);
+      continue;
+    }
     if (used[i] || !is_word(t[i])) continue;
     const std::string& raw = t[i].raw;
     if (const AircraftView* a = world_id(raw)) {

@@ -18332,10 +18332,8 @@ function G.route_points_said(text, u, world, toks)
     if q.kind == "lat" and lon and lon.kind == "lon" and q.value % 1 == 0 and lon.value % 1 == 0
         and (lon.b == q.e or (lon.b == q.e + 1 and toks[q.e].text == ",")) then
       local found = {}
-      -- (a name of digits and one letter after them, a scenario's "5450N", reads as a value when written in the
-      -- text: the position stays as said, for the instruction to find its point by it)
       for _, id in ipairs(world.waypoints_at(q.value, lon.value)) do
-        if held[id:upper()] and not id:match("^%d+%a$") then found[#found + 1] = held[id:upper()] end
+        if held[id:upper()] then found[#found + 1] = held[id:upper()] end
       end
       if #found == 1 then spans[#spans + 1] = { b = q.b, e = lon.e, name = found[1] } end
     end

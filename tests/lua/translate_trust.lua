@@ -22338,4 +22338,8 @@ do
   local _, ex = scene({ "DEFWPT 5450N 54 -50", "DEFWPT CUDDX 53.5 -55", "CRE UAL901 B772 54.0 -42.0 270 FL340 265",
     "ADDWPT UAL901 5450N", "ADDWPT UAL901 CUDDX" })
   check_eq(ex("United 901 direct fifty-four north fifty west"), "DIRECT UAL901 5450N")
+  -- (the name typed, and the position said where a waypoint is read: the point, its digits no value)
+  check_eq(ex("UAL901 after 5450N direct CUDDX"), "AT UAL901 5450N DO DIRECT UAL901 CUDDX")
+  check_eq(ex("United 901, at fifty-four north fifty west climb flight level three eight zero"),
+    "AT UAL901 5450N DO ALT UAL901 FL380")
 end

@@ -56,3 +56,23 @@ TEST_CASE(
   // a digit more is another name: the letters stay a name of their own, unknown
   CHECK(waypoints_in("direct PKT zero four five") == std::vector<std::string>{"PKT?"});
 }
+
+TEST_CASE(
+    "a defined waypoint named by digits and letters after them is that waypoint, the number not "
+    "read apart") {
+  auto waypoints_in = [](const std::string& text) {
+    StaticWorld world;
+    world.add_waypoint("5450N");
+    const std::vector<Token> toks = lex(text);
+    std::vector<bool> used(toks.size(), false);
+    std::vector<std::string> found;
+    for (const auto& r : find_references(toks, &world, used, names()))
+      if (r.kind == RefKind::kWaypoint) found.push_back(r.name);
+    return found;
+  };
+  CHECK(waypoints_in("after 5450N direct") == std::vector<std::string>{"5450N"});
+  CHECK(waypoints_in("after 5450n direct") == std::vector<std::string>{"5450N"});
+  // the digits apart from the letter are a number and a word, no waypoint
+  CHECK(waypoints_in("after 5450 N direct").empty());
+  CHECK(waypoints_in("after 5440N direct").empty());
+}
