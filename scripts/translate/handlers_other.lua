@@ -3779,12 +3779,13 @@ return function(H, f, compass)
       local a = self:refs_in(s.b, s.e, "aircraft")  -- "EXIT1" reads like an id
       if #a > 0 and not a[1].exists then name = a[1].name:upper() end
     end
+    -- (a name's digits said as words: "tango one", "roma two")
+    local DIGITS = { zero = "0", one = "1", two = "2", three = "3", tree = "3", four = "4", fower = "4", five = "5",
+      fife = "5", six = "6", seven = "7", eight = "8", nine = "9", niner = "9" }
     if not name then
       -- ("define waypoint tango one at ...", "a fix named whiskey two five at ...", "make new point tango five at
       -- ..."): phonetic letters then one to three spoken digits straight after the noun ("point" too) or "named",
       -- then "at" or the position, are the name's letters and digits (T1, W25, T5)
-      local DIGITS = { zero = "0", one = "1", two = "2", three = "3", tree = "3", four = "4", fower = "4", five = "5",
-        fife = "5", six = "6", seven = "7", eight = "8", nine = "9", niner = "9" }
       for k = s.trig, s.e - 2 do
         if not name and (self:word(k, "@waypoint_nouns point") or self:word(k, "@named")) then
           local letters, digits, j = "", "", k + 1
@@ -3844,15 +3845,23 @@ return function(H, f, compass)
       -- straight before "at" and the position)
       -- ("def wpt goalc 52.0 4.6", "define goalc at 51.8 4.0": straight after the noun or the verb "define",
       -- before "at" or straight before the position's first number)
+      -- (its digits said as words after it and before "at": "a waypoint roma two at ...", ROMA2)
       for k = s.trig, s.e - 2 do
         local n = self.t[k + 1]
-        local pos = self:word(k + 2, "at") and k + 3 or k + 2
+        local digits, j = "", k + 2
+        while j < s.e and #digits < 3 and (DIGITS[self.t[j].text]
+            or (self.t[j].kind == "number" and self.t[j].text:match("^%d$"))) do
+          digits, j = digits .. (DIGITS[self.t[j].text] or self.t[j].text), j + 1
+        end
+        if digits == "" or not self:word(j, "at") then digits, j = "", k + 2 end
+        local pos = self:word(j, "at") and j + 1 or j
         if (self:word(k, "@waypoint_nouns") or (k == s.trig and self:word(k, "define defwpt")))
             and n.kind == "word" and n.raw:match("^%a[%a%d]+$") and #n.raw <= 10
             and not n.keyword and not self:known_word(k + 1)
-            and #self:quantities(pos, pos + 1) > 0 and #self:quantities(pos, s.e) >= 2 then
-          name = n.raw:upper()
-          self:explain(k + 1, k + 2)
+            and (self:quantities(pos, s.e)[1] or {}).b == pos and #self:quantities(pos, s.e) >= 2 then
+          name = n.raw:upper() .. digits
+          self:explain(k + 1, j)
+          if digits ~= "" then self:mark_used(k + 2, j) end
           break
         end
       end

@@ -1098,6 +1098,11 @@ return function(H, f, wrap, compass)
     local now = self:state(ids[1])
     if now and self:value_left(abs_c[1], abs_c[2], now.hdg_deg, 5, true) then table.remove(abs_c, 1) end
     local abs, rel = self:pick(abs_c, s, "heading"), self:pick(rel_c, s, "heading")
+    -- ("heading zero zero five zero", "hdg 0050": a heading of four digits or more is no heading said; asked)
+    if abs and abs.number and #(abs.number.digits or "") > 3 then
+      return self:need(string.format("What heading should %s fly? I heard '%s', %d digits.", ids[1],
+        self:raw(abs.b, abs.e), #abs.number.digits))
+    end
     local correction = self:word_in(s.b, s.e, "@correction")
     local turn = 0
     -- a direction said after a correction replaces the one before it ("turn left, correction, turn right")

@@ -255,7 +255,9 @@ floors("tests/data/translate_round189.tsv", 0.946, 0.0032, true)
 floors("tests/data/translate_round190.tsv", 0.951, 0.0075, true)
 floors("tests/data/translate_round191.tsv", 0.992, 0.0076, true)
 floors("tests/data/translate_round192.tsv", 0.994, 0.0028, true)
-floors("tests/data/translate_round193.tsv", 0.992, 0.0, true)
+-- (R193, vice: a heading heard with four digits, "zero niner zero one", is asked since cycle 71, where R291's "zero
+-- zero five zero" was flown as 050; docs/translator_trust.md)
+floors("tests/data/translate_round193.tsv", 0.989, 0.0, true)
 floors("tests/data/translate_round194.tsv", 0.921, 0.0069, true)
 floors("tests/data/translate_round195.tsv", 0.993, 0.0034, true)
 floors("tests/data/translate_round196.tsv", 0.955, 0.0111, true)
@@ -348,6 +350,8 @@ floors("tests/data/translate_round289.tsv", 0.965, 0.0050, true)
 floors("tests/data/translate_round287.tsv", 0.985, 0.0050, true)
 floors("tests/data/translate_round288.tsv", 0.960, 0.0100, true)
 floors("tests/data/translate_round286.tsv", 0.955, 0.0100, true)
+floors("tests/data/translate_round290.tsv", 0.930, 0.0200, true)
+floors("tests/data/translate_round291.tsv", 0.935, 0.0150, true)
 floors("tests/data/translate_heldout.tsv", 0.95, 0.01)
 floors("tests/data/translate_fresh.tsv", 0.95, 0.01)
 floors("../shared/corpora/nl2trafscript_dev.tsv", 0.98, 0.01)
@@ -359,7 +363,7 @@ floors("../shared/corpora/nl2trafscript_dev.tsv", 0.98, 0.01)
 -- "Fighting two seven zero") is asked about by name (lexicon.accounted: 66 rows)
 -- (ten speech-recognition garbles of an airline's name before a flight number that matches, "Peco Six Forty
 -- Seven", asked since cycle 57: docs/translator_trust.md; a guess turned into a question in cycle 65, fhz17)
-floors("../shared/corpora/vice_trafscript.tsv", 0.545, 0.0044)
+floors("../shared/corpora/vice_trafscript.tsv", 0.541, 0.0044)
 
 -- squawk.translate.evaluate is eval-translate's scorer: a translator that always asks is right
 -- exactly on the rows that expect a question, never wrong; one that issues a command where a

@@ -22343,3 +22343,16 @@ do
   check_eq(ex("United 901, at fifty-four north fifty west climb flight level three eight zero"),
     "AT UAL901 5450N DO ALT UAL901 FL380")
 end
+
+-- Cycle 71 (lead, R291): "turn right heading zero zero five zero", four digits, was flown as heading 050: a heading
+-- of four digits or more is asked; "define a waypoint roma two at ..." defined ROMA, the "two" dropped: a name's
+-- digits said as words before "at" are the name's (ROMA2), and a position said digit by digit after "at" is read
+do
+  local _, ex = scene({ "CRE EZY49LM A319 48.70 2.90 320 FL130 290" })
+  asked(ex("easy four nine lima mike turn right heading zero zero five zero"), "a heading of four digits")
+  check_eq(ex("EZY49LM turn right heading zero five zero"), "HDG EZY49LM 50 RIGHT")
+  check_eq(ex("define a waypoint roma two at four one decimal nine five north zero one two decimal four five east"),
+    "DEFWPT ROMA2 41.95 12.45")
+  check_eq(ex("define a waypoint roma at four one decimal nine five north zero one two decimal four five east"),
+    "DEFWPT ROMA 41.95 12.45")
+end
