@@ -27,6 +27,19 @@ std::vector<std::string> aircraft_in(const std::string& text, const std::vector<
   return found;
 }
 
+// The waypoint references found in `text` with waypoint `defined` defined, each name followed by
+// "?" when it names no waypoint of the world.
+std::vector<std::string> waypoints_in(const std::string& text, const std::string& defined) {
+  StaticWorld world;
+  world.add_waypoint(defined);
+  const std::vector<Token> toks = lex(text);
+  std::vector<bool> used(toks.size(), false);
+  std::vector<std::string> found;
+  for (const auto& r : find_references(toks, &world, used, names()))
+    if (r.kind == RefKind::kWaypoint) found.push_back(r.name + (r.exists ? "" : "?"));
+  return found;
+}
+
 }  // namespace
 
 TEST_CASE("digits with an x typed onto them are a rate, no garbled opening callsign") {
@@ -41,38 +54,18 @@ TEST_CASE("digits with an x typed onto them are a rate, no garbled opening calls
 TEST_CASE(
     "a defined waypoint's letters said apart from its digits are that waypoint, every digit "
     "joined") {
-  auto waypoints_in = [](const std::string& text) {
-    StaticWorld world;
-    world.add_waypoint("PKT04");
-    const std::vector<Token> toks = lex(text);
-    std::vector<bool> used(toks.size(), false);
-    std::vector<std::string> found;
-    for (const auto& r : find_references(toks, &world, used, names()))
-      if (r.kind == RefKind::kWaypoint) found.push_back(r.name + (r.exists ? "" : "?"));
-    return found;
-  };
-  CHECK(waypoints_in("direct PKT zero four") == std::vector<std::string>{"PKT04"});
-  CHECK(waypoints_in("direct PKT 04") == std::vector<std::string>{"PKT04"});
+  CHECK(waypoints_in("direct PKT zero four", "PKT04") == std::vector<std::string>{"PKT04"});
+  CHECK(waypoints_in("direct PKT 04", "PKT04") == std::vector<std::string>{"PKT04"});
   // a digit more is another name: the letters stay a name of their own, unknown
-  CHECK(waypoints_in("direct PKT zero four five") == std::vector<std::string>{"PKT?"});
+  CHECK(waypoints_in("direct PKT zero four five", "PKT04") == std::vector<std::string>{"PKT?"});
 }
 
 TEST_CASE(
     "a defined waypoint named by digits and letters after them is that waypoint, the number not "
     "read apart") {
-  auto waypoints_in = [](const std::string& text) {
-    StaticWorld world;
-    world.add_waypoint("5450N");
-    const std::vector<Token> toks = lex(text);
-    std::vector<bool> used(toks.size(), false);
-    std::vector<std::string> found;
-    for (const auto& r : find_references(toks, &world, used, names()))
-      if (r.kind == RefKind::kWaypoint) found.push_back(r.name);
-    return found;
-  };
-  CHECK(waypoints_in("after 5450N direct") == std::vector<std::string>{"5450N"});
-  CHECK(waypoints_in("after 5450n direct") == std::vector<std::string>{"5450N"});
+  CHECK(waypoints_in("after 5450N direct", "5450N") == std::vector<std::string>{"5450N"});
+  CHECK(waypoints_in("after 5450n direct", "5450N") == std::vector<std::string>{"5450N"});
   // the digits apart from the letter are a number and a word, no waypoint
-  CHECK(waypoints_in("after 5450 N direct").empty());
-  CHECK(waypoints_in("after 5440N direct").empty());
+  CHECK(waypoints_in("after 5450 N direct", "5450N").empty());
+  CHECK(waypoints_in("after 5440N direct", "5450N").empty());
 }
