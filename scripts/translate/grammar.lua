@@ -13052,6 +13052,7 @@ G.bare_asks = { place = { start = true, aircraft = true, value = true }, meaning
   after = { value = true },
   put_off = { value = true, place = true, closing = true }, noted = { aircraft = true } }
 G.bare_beside_place = { report = true, noun = true, area = true, put_off = true }
+G.side_unsure = set_of(ACCOUNTED.side_unsure)
 -- True when the word at i, of G.bare_left, is said bare where its kind is asked (G.bare_asks); a word other than a
 -- place's straight before an instruction word is its manner ("continue climb", "cleared descend"), as
 -- is "hold" opening the request ("hold KLM12 climb FL300": the simulation's hold, asked)
@@ -13244,7 +13245,8 @@ function G:unaccounted()
         and not explained[i] and not self.noted[i] and not self.u:used(i) and not ignored[t.text]
         and (scale_left(i) or (t.text:match("^%a[%a'%-/]*$") and (MEANING[t.text] or COMMAND_ONLY[t.text] or MANNER[t.text] or not (known_word(t.text) or self:airline_word(i) or self:place_particle(i))
           or airline_left(i) or fraction_left(i) or (lexicon.clock_verbs[t.text] and not self.triggers[i] and not self:resumes_instruction(i))))
-          or glued_value(i) or (G.bare_left[t.text] and (values_only and not places
+          or glued_value(i) or (G.side_unsure[t.text] and (self:word(i - 1, "turn") or self:word(i + 1, "turn heading hdg")))
+          or (G.bare_left[t.text] and (values_only and not places
             or G.bare_beside_place[G.bare_left[t.text]]) and not self.triggers[i] and self:bare_asked(i))) then
       said[#said + 1] = i
     end

@@ -582,6 +582,10 @@ return {
     -- the instruction's value. `place`, `meaning` and `after` are asked beside value instructions only (ALT, SPD,
     -- HDG, VS); `report`, `noun`, `area` and `put_off`, words no command reads, beside a direct-to's place and any
     -- other command too (G:unaccounted, G.bare_beside_place)
+    -- words that a speaker who mixes L and R, or a recogniser hearing one, writes for a turn's side, straight after
+    -- "turn" or before "turn", "heading" or "hdg" ("turn light heading 060", "lift turn"): asked, never dropped
+    -- and never guessed a side
+    side_unsure = { "light", "lift", "lied", "lite" },
     bare_asked = {
       place = { "cross", "crossing", "proceed", "join", "joining", "rejoin", "rejoining", "intercept", "intercepting",
           "via", "route", "routing", "track", "follow", "avoid" },

@@ -22356,3 +22356,15 @@ do
   check_eq(ex("define a waypoint roma at four one decimal nine five north zero one two decimal four five east"),
     "DEFWPT ROMA 41.95 12.45")
 end
+
+-- Cycle 72 (lead): "turn light heading 060", the side as a speaker who mixes L and R (or a recogniser hearing one)
+-- writes it, was read as the word "light" of a light aircraft and the side dropped; a word of
+-- lexicon.accounted.side_unsure beside a turn's words is asked, never a side guessed; elsewhere it stays English
+do
+  local _, ex = scene({ "CRE KLM12 B738 52 4 90 FL200 250" })
+  asked(ex("klm12 turn light heading 060"), "'light' where the turn's side is said")
+  asked(ex("KLM12 light turn heading 060"), "'light' before the turn")
+  asked(ex("KLM12 turn lift heading 060"), "'lift' where the turn's side is said")
+  check_eq(ex("KLM12 turn write heading 060"), "HDG KLM12 60 RIGHT")
+  check_eq(ex("create a light aircraft KLM55 C172 at 52 4 heading 90 FL50 100"), "CRE KLM55 C172 52 4 90 FL50 100")
+end
