@@ -18321,8 +18321,13 @@ function G.route_points_said(text, u, world, toks)
     end
   end
   if not next(held) then return nil end
-  for _, t in ipairs(toks) do
-    for _, r in ipairs(t.kind == "word" and RULES_BY_WORD[t.text] or {}) do
+  -- (a word inside a value is none: "Mach point eight three")
+  local in_value = {}
+  for _, q in ipairs(qs) do
+    for k = q.b, q.e - 1 do in_value[k] = true end
+  end
+  for k, t in ipairs(toks) do
+    for _, r in ipairs(t.kind == "word" and not in_value[k] and RULES_BY_WORD[t.text] or {}) do
       for _, arg in ipairs(not r.any and r.intent and M.intents[r.intent].args or {}) do
         if G.position_args[arg] then return nil end
       end

@@ -2617,6 +2617,8 @@ return {
     kay = "K", aitch = "H", dee = "D", vee = "V", zed = "Z",
     -- the older alphabet's word for F, still said by some controllers ("Virgin two five fox")
     fox = "F",
+    -- (November as a non-rhotic speaker says it and a recogniser writes it: "ryanair eight novemba bravo")
+    novemba = "N",
   },
   -- what speech recognition writes for an instruction word that sounds alike
   -- ("the send flight level one niner zero", "turn write heading 040",
@@ -2634,6 +2636,8 @@ return {
     { heard = { "the send", "this end", "the scent", "decent", "dissent" }, means = "descend",
       before = { "#number", "flight", "level", "altitude", "to" } },
     { heard = { "head in", "heading's" }, means = "heading", before = { "#number" } },
+    -- ("show me the root": the route as a recogniser writes it, after its determiner)
+    { heard = { "root" }, means = "route", after = { "the", "your", "its", "his", "her", "their" } },
     -- ("run the simulation at for times real time": a multiplier's digit heard as a word)
     { heard = { "for", "fore" }, means = "four", before = { "times" } },
     { heard = { "nots", "notts", "nuts", "knot's" }, means = "knots", after = { "#number" } },

@@ -1656,6 +1656,20 @@ return function(intent, rule, words)
   end
   -- "add 56 North 40 West after 56 North 30 West", "add 61 North 50 West to the end of your route"
   rule { "add append insert", "addwpt", when = degrees_for_flying }
+  -- "after NOVPA route 36 north 45 west": "route" as the verb, a position in degrees straight after it, a waypoint
+  -- after "after" before it (the clause's own, fillers and a comma between)
+  rule { "route rte", "addwpt", when = function(g, i)
+    local k = i - 1
+    while k > 0 and (g.t[k].filler or g.t[k].text == ",") do k = k - 1 end
+    local wp = g:refs_in(1, k + 1, "waypoint")
+    wp = wp[#wp]
+    -- (or a position in degrees after "after": "after 35 north 140 west, route 32 north 145 west")
+    local qs = g:quantities(math.max(1, k - 8), k + 1)
+    local lon, lat = qs[#qs], qs[#qs - 1]
+    local said = lon and lat and lon.kind == "lon" and lon.e == k + 1 and lat.kind == "lat" and lat.e == lon.b
+      and g:word(lat.b - 1, "after")
+    return (said or wp ~= nil and wp.e == k + 1 and g:word(wp.b - 1, "after")) and degrees_for_flying(g, i)
+  end }
   rule { "add put make need want", "create", near = { 3, "@articles_new" },
          when = function(g, i) return g:type_or_aircraft_word(i + 1, i + 7) end }
   -- "make a Vueling at SOTUK, VLG77, A320, ...": an airline after the article, and a new callsign of it
@@ -3075,6 +3089,10 @@ return function(intent, rule, words)
     return g:alone_but(i, i + 2) or g:clause_alone(i, i + 2) or g:clause_opens(i, i + 2)
   end }
   rule { "run", "op", next = "it", when = function(g, i) return g:clause_alone(i, i + 2) end }
+  -- ("okay uh run it again": the same, "again" closing its clause; "run it again from the start" is no resume)
+  rule { "run", "op", next = "it", when = function(g, i)
+    return g:word(i + 2, "again") and (g:alone_but(i, i + 3) or g:clause_alone(i, i + 3))
+  end }
   -- "ok resume it", "continue it please": the run taken up again, "it" the simulation (no aircraft named anywhere)
   rule { "resume continue", "op", next = "it", when = function(g, i)
     return (g:alone_but(i, i + 2) or g:clause_alone(i, i + 2)) and not g:has_ref(1, #g.t + 1, "aircraft")

@@ -22368,3 +22368,40 @@ do
   check_eq(ex("KLM12 turn write heading 060"), "HDG KLM12 60 RIGHT")
   check_eq(ex("create a light aircraft KLM55 C172 at 52 4 heading 90 FL50 100"), "CRE KLM55 C172 52 4 90 FL50 100")
 end
+
+-- Cycle 72 (lead, R290): "after NOVPA route 36 north 45 west", "after 35 north 140 west route 32 north 145 west":
+-- "route" as the verb, a position in degrees straight after it and a place after "after" before it, adds the
+-- position after that place (ADDWPT's afterwp, also when it ends the route, which flies the same: LISTRTE)
+do
+  local sim, ex = scene({ "DEFWPT ETIRA 38 -20", "DEFWPT NOVPA 37 -40", "CRE RZO221 A321 38 -25 075 FL340 270",
+    "ADDWPT RZO221 NOVPA", "ADDWPT RZO221 ETIRA" })
+  check_eq(ex("RZO221 after ETIRA route three six north one five west"), "ADDWPT RZO221 36 -15,,,ETIRA")
+  check_eq(ex("RZO221 after 38N 20W route three six north one five west"), "ADDWPT RZO221 36 -15,,,ETIRA")
+  check_eq(ex("RZO221, after NOVPA route three six north four five west"), "ADDWPT RZO221 36 -45,,,NOVPA")
+  asked(ex("RZO221 route three six north four five west"), "a position with no verb of adding or flying")
+  -- (the two forms fly the same route)
+  local routes = {}
+  for _, form in ipairs({ "ADDWPT RZO221 39 -15", "ADDWPT RZO221 39 -15,,,ETIRA" }) do
+    local s = scene({ "DEFWPT ETIRA 38 -20", "DEFWPT NOVPA 37 -40", "CRE RZO221 A321 38 -25 075 FL340 270",
+      "ADDWPT RZO221 NOVPA", "ADDWPT RZO221 ETIRA", form })
+    routes[#routes + 1] = select(2, s:exec("LISTRTE RZO221"))
+  end
+  check_eq(routes[1], routes[2])
+end
+
+-- Cycle 72 (lead, R291): a recogniser's words: "run it again" starts the clock as "start it again" does; "show me the
+-- root" is the route after its determiner; "novemba", November as a non-rhotic speaker says it, is the letter N
+do
+  local _, ex = scene({ "CRE RYR8NB B738 52 4 90 FL200 250", "HOLD" })
+  check_eq(ex("okay uh run it again"), "OP")
+  check_eq(ex("RYR8NB show me the root"), "LISTRTE RYR8NB")
+  check_eq(ex("ryanair eight novemba bravo descend flight level one four zero"), "ALT RYR8NB FL140")
+end
+
+-- Cycle 72 (lead, R290): "at four zero north five zero west maintain Mach point eight three": the "point" of a Mach
+-- number said in words is no word of defining a point, so the position names the route's point there, as for a level
+do
+  local _, ex = scene({ "CRE AAL100 B772 40 -60 070 FL360 280", "DEFWPT MARLN 40 -50", "ADDWPT AAL100 MARLN" })
+  check_eq(ex("American one hundred, at four zero north five zero west maintain Mach point eight three"),
+    "AT AAL100 MARLN DO SPD AAL100 M0.83")
+end
