@@ -319,6 +319,16 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
         continue;
       }
     }
+    // an ICAO designator of letters only, typed in capitals ("EUFI", "GLEX", "CONC"), after "type" or straight
+    // after a typed callsign no aircraft has ("create GAF30 EUFI at ..."): that type (elsewhere a place's letters)
+    const bool new_id_before = i > 0 && is_word(t[i - 1]) && has_digit(t[i - 1].raw) &&
+                               std::isalpha(static_cast<unsigned char>(t[i - 1].raw[0])) && !world_id(t[i - 1].raw);
+    if ((new_id_before || (i > 0 && t[i - 1].text == "type")) && is_alpha(raw) && raw == text::upper(raw)) {
+      if (auto ty = names.aircraft_type("", raw); ty && *ty == raw) {
+        add(RefKind::kType, *ty, i, i + 1, false, false);
+        continue;
+      }
+    }
     if (i > 0 && t[i - 1].text == "type" && has_digit(raw)) {
       add(RefKind::kType, names.aircraft_type("", raw).value_or(text::upper(raw)), i, i + 1, false, false);
       continue;

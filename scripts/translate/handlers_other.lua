@@ -4795,6 +4795,14 @@ return function(H, f, compass)
       return self:emit("FF " .. f.num(half))
     end
     local q = first(self, s, { time = true, mult = true })
+    -- ("turn right heading 330, and give me five minutes fast forward": a duration straight before the verb, in
+    -- the clause the segment before took, read by none)
+    local before = not q and s.b == s.trig and self:quantities(math.max(1, s.trig - 3), s.trig)
+    before = before and before[#before]
+    if before and before.kind == "time" and before.e == s.trig and not self.taken[before.b]
+        and not self:word(before.b - 1, "within in for after by before until till") then
+      q = before
+    end
     -- "FF 120", "ff: 120", "ff=120": TrafScript's own word with a bare number, its seconds
     local plain = first(self, s, { plain = true })
     local set = self.t[s.trig + 1] and self.t[s.trig + 1].raw == ":" and 1 or 0

@@ -2213,6 +2213,9 @@ return {
     { what = "approach clearances", words = "intercept established join",
       near = { "localizer", "localiser", "glideslope", "ils", "final" } },
     { what = "altimeter settings", words = "altimeter qnh qfe", one_value = true },
+    -- ("..., radar service terminated", "radar services limited": the service the controller gives, told the pilot)
+    { what = "radar services", words = "service services", near = { "terminated", "terminating", "limited", "radar" },
+      window = 2 },
     -- "JetBlue 1123, wind 310 at 15, reduce 190": the surface wind told to the aircraft addressed, no
     -- setting of the simulation's wind (said with no callsign before it, "wind 310 at 15" is WIND's)
     { what = "wind reports", words = "wind", near = { "#number" }, window = 1, after_callsign = true },

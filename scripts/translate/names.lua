@@ -1004,7 +1004,9 @@ local names = {
     "CRJ7", "CRJ9", "CRJX", "F100", "F70", "F50", "MD11", "MD80", "DC10", "C25A", "C560", "GLF4", "GLF5", "GLEX",
     "CONC", "C172", "C152", "C182", "C208", "PC12", "BE20", "B350", "C56X", "C68A", "C25B", "E55P", "CL35",
     "CL60", "LJ45", "GLF6", "BE40", "E135", "P28A", "SR22", "A400", "C130", "C17", "K35R", "E3TF", "AT45", "AT76",
-    "DH8D" },
+    "DH8D",
+    -- (fighters and trainers of the European air forces: the Eurofighter Typhoon, the Tornado, the Hawk)
+    "EUFI", "TOR", "HAWK" },
 }
 names.air_forces = { { "german", "GAF" }, { "netherlands", "NAF" }, { "belgian", "BAF" }, { "french", "FAF" },
   { "italian", "IAM" }, { "hellenic", "HAF" }, { "polish", "PLF" }, { "danish", "DAF" }, { "swedish", "SVF" },

@@ -1656,8 +1656,8 @@ return function(intent, rule, words)
   end
   -- "add 56 North 40 West after 56 North 30 West", "add 61 North 50 West to the end of your route"
   rule { "add append insert", "addwpt", when = degrees_for_flying }
-  -- "after NOVPA route 36 north 45 west": "route" as the verb, a position in degrees straight after it, a waypoint
-  -- after "after" before it (the clause's own, fillers and a comma between)
+  -- "after NOVPA route 36 north 45 west", "after BRIZE route to DAVOS": "route" as the verb, a position in degrees or
+  -- a waypoint straight after it, a place after "after" before it (the clause's own, fillers and a comma between)
   rule { "route rte", "addwpt", when = function(g, i)
     local k = i - 1
     while k > 0 and (g.t[k].filler or g.t[k].text == ",") do k = k - 1 end
@@ -1668,7 +1668,10 @@ return function(intent, rule, words)
     local lon, lat = qs[#qs], qs[#qs - 1]
     local said = lon and lat and lon.kind == "lon" and lon.e == k + 1 and lat.kind == "lat" and lat.e == lon.b
       and g:word(lat.b - 1, "after")
-    return (said or wp ~= nil and wp.e == k + 1 and g:word(wp.b - 1, "after")) and degrees_for_flying(g, i)
+    -- (and a waypoint after it, "to" between or none: "after BRIZE route to DAVOS")
+    local to = g:word(i + 1, "to") and i + 2 or i + 1
+    return (said or wp ~= nil and wp.e == k + 1 and g:word(wp.b - 1, "after"))
+      and (degrees_for_flying(g, i) or g:has_ref(to, to + 1, "waypoint"))
   end }
   rule { "add put make need want", "create", near = { 3, "@articles_new" },
          when = function(g, i) return g:type_or_aircraft_word(i + 1, i + 7) end }

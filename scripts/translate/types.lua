@@ -173,6 +173,9 @@ M.nicknames = {
   ["king air"] = { "^BE[29]0$", "^B350$" },
   -- (the Super Puma: the AS332 and the EC225 / H225 that followed it)
   ["super puma"] = { "^AS32$", "^EC25$" },
+  eurofighter = { "^EUFI$" },
+  typhoon = { "^EUFI$" },
+  tornado = { "^TOR$" },
   hercules = { "^C130$" },
   herc = { "^C130$" },
   -- (regional families named without their variant: "the CRJ" is a CRJ200 to CRJ1000, "the ATR" an ATR 42 or 72)

@@ -22405,3 +22405,23 @@ do
   check_eq(ex("American one hundred, at four zero north five zero west maintain Mach point eight three"),
     "AT AAL100 MARLN DO SPD AAL100 M0.83")
 end
+
+-- Cycle 72 (lead, R292): a military controller's words. "radar service terminated" is a service told the pilot,
+-- not simulated (noted, never asked about); "..., and give me five minutes fast forward": a duration straight
+-- before the verb in a clause after another instruction is the fast-forward's; "after BRIZE route to DAVOS" adds
+-- DAVOS after BRIZE; the Eurofighter and Tornado by name, and a designator of letters only typed after a new
+-- callsign ("create GAF30 EUFI ...", "GLEX"), are their types
+do
+  local _, ex = scene({ "CRE SWA1882 B738 52 4 90 FL200 250", "DEFWPT BRIZE 51.8 -1.6", "DEFWPT DAVOS 51.5 -2.5",
+    "CRE RRR4401 A332 51.80 -1.20 270 FL150 280", "ADDWPT RRR4401 BRIZE" })
+  check_eq(ex("Southwest one eight eight two, descend and maintain one zero thousand, radar service terminated"),
+    "ALT SWA1882 10000")
+  check_eq(ex("SWA1882 turn right heading 330, and give me five minutes fast forward"),
+    "HDG SWA1882 330 RIGHT ; FF 300")
+  check_eq(ex("Ascot 4401, after BRIZE route to DAVOS"), "ADDWPT RRR4401 DAVOS,,,BRIZE")
+  check_eq(ex("Create a Eurofighter, callsign GAF30, at 48.6 north 11.4 east, heading 270, flight level 150, "
+    .. "350 knots"), "CRE GAF30 EUFI 48.6 11.4 270 FL150 350")
+  check_eq(ex("create GAF31 GLEX at 48.6 north 11.4 east heading 270 FL150 350 knots"),
+    "CRE GAF31 GLEX 48.6 11.4 270 FL150 350")
+  asked(ex("SWA1882 climb FL300, tornado warning"), "a tornado is no type where nothing is created")
+end

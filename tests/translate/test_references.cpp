@@ -11,7 +11,7 @@ using namespace squawk::translate;
 namespace {
 
 const Tables& names() {
-  static const Tables t({{"ryanair", "RYR"}}, {}, {}, {{"alpha", 'A'}, {"xray", 'X'}});
+  static const Tables t({{"ryanair", "RYR"}}, {}, {"EUFI"}, {{"alpha", 'A'}, {"xray", 'X'}});
   return t;
 }
 
@@ -24,6 +24,17 @@ std::vector<std::string> aircraft_in(const std::string& text, const std::vector<
   std::vector<std::string> found;
   for (const auto& r : find_references(toks, &world, used, names()))
     if (r.kind == RefKind::kAircraft) found.push_back(r.name);
+  return found;
+}
+
+// The type references found in `text`, nothing flying.
+std::vector<std::string> types_in(const std::string& text) {
+  StaticWorld world;
+  const std::vector<Token> toks = lex(text);
+  std::vector<bool> used(toks.size(), false);
+  std::vector<std::string> found;
+  for (const auto& r : find_references(toks, &world, used, names()))
+    if (r.kind == RefKind::kType) found.push_back(r.name);
   return found;
 }
 
@@ -68,4 +79,14 @@ TEST_CASE(
   // the digits apart from the letter are a number and a word, no waypoint
   CHECK(waypoints_in("after 5450 N direct", "5450N").empty());
   CHECK(waypoints_in("after 5440N direct", "5450N").empty());
+}
+
+TEST_CASE(
+    "a designator of letters only typed in capitals after a new callsign or 'type' is that type, elsewhere no "
+    "type") {
+  CHECK(types_in("create GAF30 EUFI at 48.6 11.4") == std::vector<std::string>{"EUFI"});
+  CHECK(types_in("create GAF30 type EUFI at 48.6 11.4") == std::vector<std::string>{"EUFI"});
+  // (a place's letters after another word, and the designator in lower case, stay no type)
+  CHECK(types_in("GAF30 direct EUFI").empty());
+  CHECK(types_in("create GAF30 eufi at 48.6 11.4").empty());
 }
