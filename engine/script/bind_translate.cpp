@@ -28,7 +28,7 @@
 //       sel_mach checked to be numbers in range)}, ...}, waypoints = {"NAME", ...}}.
 //   squawk.translate.best_match(spoken, names) -> index, score | nothing
 //   squawk.translate.json_decode(text) -> value (objects/arrays as tables, null as nil)
-//   squawk.translate.score(produced, asked, expected) -> boolean
+//   squawk.translate.score(produced, asked, expected [, setup]) -> boolean
 //       The corpus scoring rules (shared/corpora/README.md): `produced` is
 //       "CMD ; CMD", `asked` true when the translator asked instead.
 //   squawk.translate.corpus(path) -> {{id=, setup=, utterance=, expected=, category=}, ...}
@@ -125,7 +125,8 @@ int l_score(lua_State* L) {
   const std::string produced = arg_string(L, 1, "produced");
   const bool asked = lua_toboolean(L, 2) != 0;
   const std::string expected = arg_string(L, 3, "expected");
-  lua_pushboolean(L, translate::score_case(produced, asked, expected));
+  const std::string setup = lua_isnoneornil(L, 4) ? std::string() : arg_string(L, 4, "setup");
+  lua_pushboolean(L, translate::score_case(produced, asked, expected, setup));
   return 1;
 }
 

@@ -19,12 +19,12 @@ EvalReport evaluate(const std::vector<CorpusCase>& cases, const CaseTranslator& 
       // expected commands; proposing other commands counts as wrong.
       const std::string on_yes = text::join(tr->on_yes, " ; ");
       o.produced = tr->ask + " [yes runs: " + on_yes + "]";
-      o.correct = score_case("", true, c.expected) || score_case(on_yes, false, c.expected);
+      o.correct = score_case("", true, c.expected) || score_case(on_yes, false, c.expected, c.setup);
     } else if (tr.is_ok()) {
       o.asked = !tr->issued();
       // (nothing issued, no question: what was said is not simulated, and the note says so)
       o.produced = tr->issued() || tr->asked() || !tr->error.empty() ? tr->text() : tr->note;
-      o.correct = score_case(tr->issued() ? o.produced : "", o.asked, c.expected);
+      o.correct = score_case(tr->issued() ? o.produced : "", o.asked, c.expected, c.setup);
     } else {
       o.produced = "error: " + tr.status().message();
       o.asked = true;

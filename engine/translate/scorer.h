@@ -10,7 +10,9 @@
 // (M0.78 = .78); vertical speeds within 1 ft/min; latitude/longitude within
 // 1e-3 deg; headings modulo 360 within 0.5 deg; other numbers equal numerically; ATALT/ATSPD
 // compare their condition and then the nested command the same way. "AT acid wp alt/spd" is
-// "AT acid wp ALT alt ; AT acid wp SPD spd" (either order). Expected `ASK` is correct only
+// "AT acid wp ALT alt ; AT acid wp SPD spd" (either order). With the case's setup given,
+// "ADDWPT acid X,,,END" where END is the waypoint acid's route ends with after the setup is
+// "ADDWPT acid X" (ADDWPT appends there: the same route). Expected `ASK` is correct only
 // when the translator asked. Pure functions.
 #pragma once
 
@@ -27,7 +29,7 @@ std::string canonical_command(std::string_view name);
 // True when two single commands are equal under the rules above.
 bool same_command(std::string_view produced, std::string_view expected);
 // Scores one case. `asked` is true when the translator asked a question
-// (then `produced` is ignored).
-bool score_case(std::string_view produced, bool asked, std::string_view expected);
+// (then `produced` is ignored); `setup` is the case's TrafScript run before it.
+bool score_case(std::string_view produced, bool asked, std::string_view expected, std::string_view setup = {});
 
 }  // namespace squawk::translate
