@@ -73,6 +73,20 @@ Suffix read_suffix(const std::vector<Token>& t, size_t j, const std::vector<bool
       continue;
     }
     if (!is_word(k)) break;
+    // (a flight number typed as one word, digits, a letter or two and digits: "Cool Red 2Z221", "Cebu 5J561")
+    auto typed_number = [](const std::string& w) {
+      size_t a = 0, b;
+      while (a < w.size() && std::isdigit(static_cast<unsigned char>(w[a]))) ++a;
+      for (b = a; b < w.size() && std::isalpha(static_cast<unsigned char>(w[b]));) ++b;
+      return a >= 1 && a <= 4 && b > a && b <= a + 2 && w.size() > b && w.size() <= b + 4 &&
+             std::all_of(w.begin() + static_cast<long>(b), w.end(),
+                         [](char c) { return std::isdigit(static_cast<unsigned char>(c)); });
+    };
+    if (s.groups.empty() && typed_number(k.raw)) {
+      s.groups.push_back(text::upper(k.raw));
+      s.ends.push_back(++j);
+      break;
+    }
     // One unknown word of four letters or more between spoken digits is
     // recognition noise ("JetBlue eight tier thirteen").
     if (!s.groups.empty() && k.text.size() >= 4 && !is_number_word(k) && j + 1 < t.size() &&

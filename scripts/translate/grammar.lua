@@ -11498,6 +11498,7 @@ end
 -- ("Scottish Control", "Gander Oceanic": lexicon.accounted.facilities) or not, that name an air traffic
 -- unit (lexicon.atc_units, in any case) or, capitalised, the navdata's airport, city or navaid.
 local ATC_UNITS = set_of(lexicon.atc_units)
+G.station_units = set_of(ACCOUNTED.station_units)
 function G:stations()
   local b = 1
   while b <= #self.t do
@@ -11659,7 +11660,7 @@ function G:station_clause(b, e, after_callsign)
   local before_callsign = b == self:skip_fillers(1) and #self:refs_in(e + 1, e + 2, "aircraft") > 0
   if not (after_callsign or before_callsign) then return false end
   local last = e - 1
-  if last > b and FACILITIES[self.t[last].text] then last = last - 1 end
+  if last > b and (FACILITIES[self.t[last].text] or G.station_units[self.t[last].text]) then last = last - 1 end
   -- (an airline said alone whose name is a city's, "Shamrock 6MA, Brussels, bonjour, ...": in the addressing
   -- position after a callsign it is the station, never a second aircraft; G:stations drops its reference)
   local aircraft = self:refs_in(b, e, "aircraft")

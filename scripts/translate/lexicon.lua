@@ -553,6 +553,10 @@ return {
         "terminal",
         -- (a unit by its abbreviation: "Barcelona ACC", "Madrid TWR")
         "acc", "twr", "uac" },
+    -- words that end a station's name only in the addressing position (G:station_clause), set off by commas
+    -- after the callsign: an area control sector ("Lion Inter 852, Makassar Area, descend ...") and the military
+    -- radar units ("Tartan 61, London Military, identified, ..."); elsewhere English ("the military area")
+    station_units = { "area", "military" },
     -- phrases that bound a value, lift its bounds or keep it in force ("or greater", "not less than",
     -- "climb without restriction", "until further advised"): the value is the instruction's, explained whole
     value_phrases = { "or greater", "or better", "or more", "or less", "or above", "or below", "at least",
@@ -736,6 +740,9 @@ return {
     -- ("ezy45rt whr is it now", "wht is klm12 doing": the question's word typed without its vowels)
     whr = { word = "where", next = "is are's" }, wht = { word = "what", next = "is are's" },
     del = { word = "delete", next = "rte route wpt waypoint" },
+    -- ("rem EZY88": remove, opening the line; "rnd traffic 5 a/c": random before the traffic it makes)
+    rem = { word = "remove", prev = "#start" },
+    rnd = { word = "random", next = "traffic aircraft" },
     rte = { word = "route" },
     -- ("add wp sopok", "new wp ctr at 52.31n 4.76e": a waypoint typed short after a verb or an article; elsewhere,
     -- or before a number, "add wp one two" (a user waypoint WP12), it stays as typed)
@@ -1595,12 +1602,12 @@ return {
   articles_new = { "a", "an", "new", "second", "another", "more" },
   -- families whose first variant in the data is not the one every writer means by the family's name alone
   -- ("a Boeing 767": B762 in the data, B763 meant; "a United 787": B788 or B789; "a 737", "a Southwest 737":
-  -- B737 to some writers, B738 to others, with or without an airline): asked about when an aircraft is
-  -- created; any other family is its first variant (757 -> B752, 777 -> B772, A330 -> A332, A350 -> A359,
-  -- types.lua), as the writers of every round so far and BlueSky's own corpus read them (nl2trafscript_dev
-  -- d001: "a Boeing 777" is B772); a Boeing family is its 7x7 digits, an Airbus one its 3x0 ("330", read only
-  -- after "A" or "Airbus")
-  variant_families = { "737", "767", "787", "220" },
+  -- B737 to some writers, B738 to others, with or without an airline; "an Airbus three thirty": A333 to four
+  -- writers, A332 to two, "A330" to four): asked about when an aircraft is created; any other family is its first
+  -- variant (757 -> B752, 777 -> B772, A350 -> A359, types.lua), as the writers of every round so far and
+  -- BlueSky's own corpus read them (nl2trafscript_dev d001: "a Boeing 777" is B772); a Boeing family is its 7x7
+  -- digits, an Airbus one its 3x0 ("330", read only after "A" or "Airbus")
+  variant_families = { "737", "767", "787", "220", "330" },
   -- a family whose designators its digits do not spell (handlers_other ask_variant): its name and their pattern
   variant_designators = { ["220"] = { name = "A220", pattern = "^BCS%d$" } },
   all = { "all", "both", "every", "everything" },

@@ -3372,6 +3372,11 @@ return function(intent, rule, words)
   -- a normal rate (anywhere in the request) names that rate
   rule { "real", false, next = "time", when = function(g, i) return g:word_in(1, #g.t + 1, "normal") end }
   rule { "real", "op", next = "time" }
+  -- ("normal time", "back to normal time": real time, said of the clock alone, no aircraft named)
+  rule { "normal", "dtmult", next = "time", when = function(g, i)
+    local b = g:word(i - 1, "to") and g:word(i - 2, "back") and i - 2 or i
+    return g:alone_but(b, i + 2) and not g:has_ref(1, #g.t + 1, "aircraft")
+  end }
   rule { "fast", "ff", next = "forward" }
   rule { "ff fastforward fwd", "ff" }
   rule { "skip skipping", "ff", next = "ahead forward" }  -- "would you mind skipping ahead 30 seconds?"

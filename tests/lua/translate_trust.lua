@@ -646,7 +646,7 @@ check_eq(heard("create TST5 e one seventy five at 52.1 4.3 heading 090 FL200 250
 -- (a family reads as its typed name does)
 check_eq(heard("spawn TST6 an a three thirty at 52.1 4.3 heading 090 FL200 250 knots"),
   heard("spawn TST6 an a330 at 52.1 4.3 heading 090 FL200 250 knots"))
-check(heard("spawn TST6 an a330 at 52.1 4.3 heading 090 FL200 250 knots"):find("^CRE TST6 A33"))
+check(heard("spawn TST6 an a330 at 52.1 4.3 heading 090 FL200 250 knots"):find("^ASK Which variant of the A330"))
 -- an aircraft named by "the" and its airline alone (telephony, or a name it is known by) is the
 -- one aircraft of that airline flying; with two it asks which, with none it asks; a callsign cut
 -- short in radiotelephony ("Lufthansa, descend") and other traffic named that way are no reference
@@ -1798,7 +1798,7 @@ do
     "CRE EIN77 A333 52 -30 80 FL350")
   asked(ex("add a westbound, EIN77, A333, at 52 North 30 West, heading 080, FL350"), "add a westbound, EIN77, A333, at 52 North 30 West, heading 080, FL350")
   check_eq(ex("Shamrock 105, climb FL380, at 20 West contact Shanwick on 127.9"), "ALT EIN105 FL380")
-  check_eq(ex("add Shamrock 22 as an A330, same position as Air Portugal 237, FL320, Mach .80, heading 240"),
+  check_eq(ex("add Shamrock 22 as an A330-200, same position as Air Portugal 237, FL320, Mach .80, heading 240"),
     "CRE EIN22 A332 TAP237 240 FL320 M0.8")
   check_eq(ex("Shamrock 105 vectors to avoid the danger area, turn left heading 250"), "HDG EIN105 250 LEFT")
   -- what the run should reach, after a clock rate or a jump in time: a remark
@@ -19230,9 +19230,9 @@ do
   asked(ex("RWD461 descend FL200 after OKTAR, no sorry, FL210"), "the waypoint said after")
   asked(ex("RWD461 after OKTAR reduce speed 250 no 240"), "no, straight after the value")
   check_eq(ex("RWD461 after OKTAR descend FL200"), "AT RWD461 OKTAR DO ALT RWD461 FL200")
-  -- the A330 and the 777 said alone in a creation are their base models, as BlueSky's own corpus reads them
-  -- (nl2trafscript_dev d001: "a Boeing 777" is B772); a variant said is that one
-  check_eq(ex("create AFR12, an Airbus A330, at 52 4 heading 270 FL330 280 knots"), "CRE AFR12 A332 52 4 270 FL330 280")
+  -- the 777 said alone in a creation is its base model, as BlueSky's own corpus reads it (nl2trafscript_dev d001:
+  -- "a Boeing 777" is B772); the A330, whose writers differ (cycle 72), is asked; a variant said is that one
+  asked(ex("create AFR12, an Airbus A330, at 52 4 heading 270 FL330 280 knots"), "the A330's variant")
   check_eq(ex("create UAE5 Boeing 777 at 52.5 4.5 heading 090 FL350 290 knots"), "CRE UAE5 B772 52.5 4.5 90 FL350 290")
   check_eq(ex("create AFR12 A330-300 at 52 4 heading 270 FL330 280 knots"), "CRE AFR12 A333 52 4 270 FL330 280")
   check_eq(ex("create UAE5 777-300ER at 52.5 4.5 heading 090 FL350 290 knots"), "CRE UAE5 B77W 52.5 4.5 90 FL350 290")
@@ -22424,4 +22424,35 @@ do
   check_eq(ex("create GAF31 GLEX at 48.6 north 11.4 east heading 270 FL150 350 knots"),
     "CRE GAF31 GLEX 48.6 11.4 270 FL150 350")
   asked(ex("SWA1882 climb FL300, tornado warning"), "a tornado is no type where nothing is created")
+end
+
+-- Cycle 72 (lead, R294): an instructor's shorthand: "rem EZY88" opening the line removes it; "normal time" and
+-- "back to normal time", of the clock alone, are real time; "rnd traffic 5 aircraft" is random traffic
+do
+  local _, ex = scene({ "CRE EZY88 A320 52 4 90 FL200 250", "DTMULT 4" })
+  check_eq(ex("rem EZY88"), "DEL EZY88")
+  check_eq(ex("normal time"), "DTMULT 1")
+  check_eq(ex("back to normal time"), "DTMULT 1")
+  check_eq(ex("rnd traffic 5 aircraft"), "MCRE 5")
+  asked(ex("EZY88 normal time"), "an aircraft's 'normal time'")
+end
+
+-- Cycle 72 (lead, R293): "an Airbus three thirty" is A333 to four writers, A332 to two and "A330" to four: the
+-- variant is asked, as for the 737; a flight number typed as one word of digits, a letter and digits ("Cool Red
+-- 2Z221") is that aircraft
+do
+  local _, ex = scene({ "CRE APG2Z221 A320 15.30 121.20 200 FL280 290" })
+  asked(ex("create Philippine 101 Airbus three thirty at 14.5 north 121 east heading 270 FL310 290 knots"),
+    "the A330's variant")
+  check_eq(ex("create PAL101 A330-300 at 14.5 121 heading 270 FL310 290"), "CRE PAL101 A333 14.5 121 270 FL310 290")
+  check_eq(ex("Cool Red 2Z221 maintain FL280, speed mach point seven six"), "ALT APG2Z221 FL280 ; SPD APG2Z221 M0.76")
+end
+
+-- Cycle 72 (lead, R292, R293): the station in the addressing position, named by its place and "Area" or "Military"
+-- ("Lion Inter 852, Makassar Area, descend ...", "Tartan 61, London Military, identified, climb ..."), is the
+-- controller's own unit, noted as "Makassar Control" is
+do
+  local _, ex = scene({ "CRE LNI852 B739 -4.80 119.10 180 FL260 280" })
+  check_eq(ex("Lion Inter 852, Makassar Control, descend to FL200"), "ALT LNI852 FL200")
+  check_eq(ex("LNI852, London Military, identified, descend FL200"), "ALT LNI852 FL200")
 end

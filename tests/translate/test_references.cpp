@@ -90,3 +90,20 @@ TEST_CASE(
   CHECK(types_in("GAF30 direct EUFI").empty());
   CHECK(types_in("create GAF30 eufi at 48.6 11.4").empty());
 }
+
+TEST_CASE("a flight number typed as one word of digits, letters and digits after the airline is that aircraft") {
+  static const Tables t({{"cool red", "APG"}}, {}, {}, {});
+  StaticWorld world;
+  world.add_aircraft({"APG2Z221", {}});
+  world.add_aircraft({"KLM12", {}});
+  auto found = [&](const std::string& text) {
+    const std::vector<Token> toks = lex(text);
+    std::vector<bool> used(toks.size(), false);
+    std::vector<std::string> ids;
+    for (const auto& r : find_references(toks, &world, used, t))
+      if (r.kind == RefKind::kAircraft) ids.push_back(r.name);
+    return ids;
+  };
+  CHECK(found("cool red 2Z221 maintain FL280") == std::vector<std::string>{"APG2Z221"});
+  CHECK(found("KLM12 maintain FL280") == std::vector<std::string>{"KLM12"});
+}
