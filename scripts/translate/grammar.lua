@@ -2265,6 +2265,19 @@ function G.spoken_coordinates(text)
         put(toks[k + 1].at, digits .. (last.raw:match("%p+$") or ""), last.e)
       end
     end
+    -- ("south six decimal two, east one zero six decimal eight": the whole degrees said digit by digit too, after
+    -- the hemisphere's word, written as one number)
+    if points and k > 2 and point(k) and SAID_DIGIT[toks[k - 1].bare] and toks[k - 1].raw:match("^%a+$") then
+      local b = k - 1
+      while b > 1 and k - b < 3 and SAID_DIGIT[toks[b - 1].bare] and toks[b - 1].raw:match("^%a+$") do b = b - 1 end
+      local whole = {}
+      for x = b, k - 1 do whole[#whole + 1] = SAID_DIGIT[toks[x].bare] end
+      local digits, j = places(k + 1)
+      local last = toks[j - 1]
+      if digits ~= "" and b > 1 and G.hemisphere_axis(toks[b - 1]) and not toks[b - 1].raw:match("%p$") then
+        put(toks[b].at, table.concat(whole) .. "." .. digits .. (last.raw:match("%p+$") or ""), last.e)
+      end
+    end
   end
   return done()
 end
@@ -2331,8 +2344,9 @@ end
 -- A clock multiplier typed alone as a clause ("seed 99 then 30 random a320 then x4", "hold, 4x", "x4 and op"), or
 -- before the word "speed" or "rate" ending its clause ("x4 speed"): the simulation's rate, written out as "sim speed
 -- x4" (a callsign-like "x4" or a bare "4x" names no aircraft, unless an aircraft of that id flies: `world`, when
--- given, holds the traffic). After "fast time" ("set fast time x3", "fast-time at x8"), or "time" opening its clause
--- ("time x5", "sim time at x2"), it is that rate, written "5x".
+-- given, holds the traffic). After "fast time" ("set fast time x3", "fast-time at x8"), "time" opening its clause
+-- ("time x5", "sim time at x2"), or the simulation's noun opening it ("simulation x10 please"), it is that rate,
+-- written "5x".
 local function lone_multipliers(text, world)
   if not text:find("%d[xX]") and not text:find("[xX]%d") then return text end
   local words = {}
@@ -2353,6 +2367,7 @@ local function lone_multipliers(text, world)
     local q = words[p - 1]
     local opens = not q or q.w:match("[,;%.!:]$") or joins(q) or q.w:lower() == "sim" or q.w:lower() == "simulation"
     return w == "fast-time" or (w == "time" and q ~= nil and q.w:lower() == "fast") or (w == "time" and opens)
+      or ((w == "sim" or w == "simulation") and (not q or q.w:match("[,;%.!:]$") or joins(q) or q.w:lower() == "the"))
   end
   for k, t in ipairs(words) do
     local core, tail = t.w:match("^(.-)([,;%.!]?)$")

@@ -2867,8 +2867,13 @@ return function(H, f, compass)
       if name then defined = not defined and name or false end
     end
     local named_before = added or defined or nil
+    -- ("add BONTI to the route of UAE787 and send him direct": nothing said after the word, fillers and marks
+    -- aside, is the waypoint named before, as "direct there" is)
+    local k = s.trig + 1
+    while k < s.e and (self.t[k].filler or self.t[k].kind == "punct" or self:word(k, "please now")) do k = k + 1 end
+    local bare = k >= s.e and self:word(s.trig, "direct directly dct")
     local wp = to_dest or point or told or named_before and #self:refs_in(s.trig, s.e, "waypoint") == 0
-        and self:word_in(s.trig, s.e, "there it") and named_before or back or self:waypoint(s.trig, s.e, id)
+        and (bare or self:word_in(s.trig, s.e, "there it")) and named_before or back or self:waypoint(s.trig, s.e, id)
     -- "send it to TEBBY directly", "go to the Helsinki VOR directly": the place said after "to", before the
     -- adverb that ends the clause
     if not wp and self:word(s.trig, "directly direct") then

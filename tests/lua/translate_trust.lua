@@ -22456,3 +22456,24 @@ do
   check_eq(ex("Lion Inter 852, Makassar Control, descend to FL200"), "ALT LNI852 FL200")
   check_eq(ex("LNI852, London Military, identified, descend FL200"), "ALT LNI852 FL200")
 end
+
+-- Cycle 72 (lead, R295): "simulation x10 please": a multiplier after the simulation's noun opening its clause is the
+-- clock's rate, words after it or none; "add BONTI to the route of Emirates 787 and send him direct": a direct-to
+-- with nothing after it flies to the waypoint the request added, as "direct there" does
+do
+  local _, ex = scene({ "CRE UAE787 B77W 6 3 90 FL350 290", "DEFWPT BONTI 6 5", "DEFWPT KANO 7 5",
+    "ADDWPT UAE787 KANO" })
+  check_eq(ex("simulation x10 please"), "DTMULT 10")
+  check_eq(ex("add BONTI to the route of Emirates 787 and send him direct"),
+    "ADDWPT UAE787 BONTI ; DIRECT UAE787 BONTI")
+  check_eq(ex("UAE787 proceed direct"), "DIRECT UAE787 KANO")
+end
+
+-- Cycle 72 (lead, R293): "position south six decimal two, east one zero six decimal eight": whole degrees said digit
+-- by digit after the hemisphere's word, then "decimal" and its places, are one coordinate, as "south 6.2" is
+do
+  local _, ex = scene({ "CRE KLM12 B738 52 4 90 FL200 250" })
+  check_eq(ex("create SJY062 B735 position south six decimal two, east one zero six decimal eight, heading three six "
+    .. "zero, FL150, speed two six zero"), "CRE SJY062 B735 -6.2 106.8 360 FL150 260")
+  check_eq(ex("KLM12 move to north five two decimal five, east four decimal two"), "MOVE KLM12 52.5 4.2")
+end
