@@ -3463,6 +3463,8 @@ function G.flow_map(text)
   end))
 end
 
+-- the stems of the gerunds that "would you mind" keeps as said (written_forms: "having X climb", "taking X out of")
+G.mind_gerunds_kept = { hav = true, mak = true, lett = true, gett = true, ask = true, tak = true }
 local function written_forms(text, world)
   -- (each pattern pass runs through where(): only where `low`, the text in lower case, holds what the
   -- pattern requires, its first argument; a rewrite outside where() sets `low` again)
@@ -3756,6 +3758,17 @@ local function written_forms(text, world)
     -- (after a number only a turn letter: "fl 310 rt 320"; "33.95 S" is a hemisphere, "2 h" hours)
     if before and before:match("^[%d%.,%-]+$") and w ~= "left" and w ~= "right" then return nil end
     return w .. space .. digit
+  end)
+  -- ("would you mind moving EZY81AB to ...", "would you mind showing me the route of ..."): the gerund after "mind"
+  -- is its verb, where the verb opens a rule of squawk's ("having", "making", "letting", "taking" stay: what follows is
+  -- said)
+  where("mind", "(%f[%a][Mm][Ii][Nn][Dd]%s+)(%a+)ing%f[%A]", function(mind, stem)
+    if G.mind_gerunds_kept[stem:lower()] then return nil end
+    local low_stem = stem:lower()
+    for _, v in ipairs({ low_stem, low_stem .. "e", low_stem:match("(%a)%1$") and low_stem:sub(1, -2) or nil }) do
+      if RULES_BY_WORD[v] then return mind .. v end
+    end
+    return nil
   end)
   text = G.spoken_coordinates(text)
   low = text:lower()

@@ -1412,7 +1412,8 @@ return function(H, f, compass)
     for i = b, math.min(e, #self.t + 1) - 1 do
       local t = self.t[i]
       if not self.u:used(i) and t.kind == "word" and not t.number_word and #t.text >= 2
-          and (not t.keyword or t.text == "direct") and not t.filler and not L.pronouns[t.text] then
+          and (not t.keyword or (t.text == "direct" and not (self.t[i + 1] and self.t[i + 1].kind == "word")))
+          and not t.filler and not L.pronouns[t.text] then
         -- (a name speech recognition split into syllables, "direct as bin" -> ASBIN, "toe bix" -> TOBIX:
         -- the two words together, when they spell the name, or the name and one silent letter more, are
         -- kept before one word alone that sounds as well)
@@ -2900,7 +2901,10 @@ return function(H, f, compass)
       wp = port
     end
     local said = not wp and self:unplaced_words(s)
-    if not wp and not said and a and a.route and #a.route == 1 then wp = a.route[1] end
+    -- (not after "direct to" with nothing after it: a place cut off, asked)
+    if not wp and not said and a and a.route and #a.route == 1 and not self:word(s.trig + 1, "to") then
+      wp = a.route[1]
+    end
     wp = wp or self:spoken_name(s.trig + 1, s.e)
     if not wp and said then
       return self:need(string.format("Which waypoint is '%s'? Please say its name for %s to fly direct to.", said, id))

@@ -79,6 +79,7 @@ local names = {
     { "turkish", "THY" },
     { "virgin", "VIR" },
     { "norshuttle", "NAX" },
+    { "nor shuttle", "NAX" },
     { "wideroe", "WIF" },
     { "wizz air", "WZZ" },
     { "aeroflot", "AFL" },

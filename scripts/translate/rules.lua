@@ -3356,6 +3356,10 @@ return function(intent, rule, words)
     return i + 1 > #g.t or g.t[i + 1].kind == "punct" or g:followed_by(i, 3, "@sim") or g:word(i + 1, "running and")
       or (g:word(i + 1, "at") and (g:word(i + 2, "@multipliers") or (g.t[i + 3] and g:word(i + 3, "x times"))))
   end }
+  -- ("could you please continue the run now?": the run, the simulation's, taken up, no aircraft named)
+  rule { "continue resume", "op", next = "the", when = function(g, i)
+    return g:word(i + 2, "run") and not g:has_ref(1, #g.t + 1, "aircraft")
+  end }
   rule { "real", false, prev = { 1, "than" } }
   -- ("three times faster than the real time": the rate's comparison, with its article)
   rule { "real", false, prev = { 1, "the" }, when = function(g, i) return g:word(i - 2, "than") end }
@@ -3380,6 +3384,11 @@ return function(intent, rule, words)
   rule { "fast", "ff", next = "forward" }
   rule { "ff fastforward fwd", "ff" }
   rule { "skip skipping", "ff", next = "ahead forward" }  -- "would you mind skipping ahead 30 seconds?"
+  -- ("skip the next ten minutes (of the scenario)": a time straight after "the next")
+  rule { "skip skipping", "ff", next = "the", when = function(g, i)
+    local q = g:word(i + 2, "next") and g:quantities(i + 3, math.min(#g.t + 1, i + 7))[1]
+    return q and q.kind == "time" and q.b == i + 3 or false
+  end }
   rule { "jump", "ff", near = { 3, "ahead forward" } }  -- "jump forward five minutes", "jump us forward"
   -- "go forward 90 seconds", "go forward 2 minutes": a time straight after "forward", no aircraft named
   rule { "go", "ff", next = "forward", when = function(g, i)

@@ -22477,3 +22477,37 @@ do
     .. "zero, FL150, speed two six zero"), "CRE SJY062 B735 -6.2 106.8 360 FL150 260")
   check_eq(ex("KLM12 move to north five two decimal five, east four decimal two"), "MOVE KLM12 52.5 4.2")
 end
+
+-- Cycle 72 (lead, R296, R297): "would you mind moving Easy 81AB to ...", "would you mind showing me the route of
+-- ...": the gerund after "mind" is its verb ("having", "making" stay: what follows is said); "proceed direct O'Hare":
+-- the word "direct" before a name is no name heard ("Did you mean KORD? I heard 'direct'" was asked)
+do
+  local _, ex = scene({ "CRE EZY81AB A320 53 3 90 FL200 250" })
+  check_eq(ex("Would you mind moving Easy 81AB to 53.20 north, 3.60 east, please?"), "MOVE EZY81AB 53.2 3.6")
+  check_eq(ex("would you mind showing me the route of EZY81AB"), "LISTRTE EZY81AB")
+  check_eq(ex("would you mind having EZY81AB climb FL300"), "ALT EZY81AB FL300")
+  check_eq(ex("would you mind turning EZY81AB left heading 200"), "HDG EZY81AB 200 LEFT")
+  local nav = navscene({ "CRE AAL1029 B38M 41.20 -87.70 330 14000 250", "ADDWPT AAL1029 BACEN",
+    "ADDWPT AAL1029 KORD" }, "O'Hare by name")
+  if nav then
+    check_eq(said(graph.translate("AAL1029 proceed direct O'Hare", { sim = nav, mode = "offline" })),
+      "DIRECT AAL1029 KORD")
+  end
+end
+
+-- Cycle 72 (lead, R296): a researcher's requests: "continue the run now" takes the clock up; "skip the next ten
+-- minutes of the scenario" fast-forwards ten minutes; "the Nor Shuttle" is Norwegian's telephony in two words
+do
+  local _, ex = scene({ "CRE NAX22K B738 52 4 90 FL200 250", "HOLD" })
+  check_eq(ex("Could you please continue the run now? Thank you."), "OP")
+  check_eq(ex("Could you please skip the next ten minutes of the scenario?"), "FF 600")
+  check_eq(ex("Could you please tell me where the Nor Shuttle is at the moment?"), "POS NAX22K")
+  asked(ex("NAX22K continue the run"), "an aircraft's run")
+end
+
+-- Cycle 72 (lead, R100): "direct to" with nothing after it is a place cut off: asked, never the route's only waypoint
+do
+  local _, ex = scene({ "CRE DLH4LK A320 52.60 4.80 225 FL280 270", "DEFWPT KANO 52 4", "ADDWPT DLH4LK KANO" })
+  asked(ex("DLH4LK direct to"), "a direct-to with no place")
+  check_eq(ex("DLH4LK proceed direct"), "DIRECT DLH4LK KANO")
+end
