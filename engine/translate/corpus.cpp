@@ -19,7 +19,8 @@ EvalReport evaluate(const std::vector<CorpusCase>& cases, const CaseTranslator& 
       // expected commands; proposing other commands counts as wrong.
       const std::string on_yes = text::join(tr->on_yes, " ; ");
       o.produced = tr->ask + " [yes runs: " + on_yes + "]";
-      o.correct = score_case("", true, c.expected) || score_case(on_yes, false, c.expected, c.setup);
+      o.correct =
+          score_case("", true, c.expected) || score_case(on_yes, false, c.expected, c.setup);
     } else if (tr.is_ok()) {
       o.asked = !tr->issued();
       // (nothing issued, no question: what was said is not simulated, and the note says so)

@@ -73,7 +73,8 @@ Suffix read_suffix(const std::vector<Token>& t, size_t j, const std::vector<bool
       continue;
     }
     if (!is_word(k)) break;
-    // (a flight number typed as one word, digits, a letter or two and digits: "Cool Red 2Z221", "Cebu 5J561")
+    // (a flight number typed as one word, digits, a letter or two and digits: "Cool Red 2Z221",
+    // "Cebu 5J561")
     auto typed_number = [](const std::string& w) {
       size_t a = 0, b;
       while (a < w.size() && std::isdigit(static_cast<unsigned char>(w[a]))) ++a;
@@ -333,11 +334,14 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
         continue;
       }
     }
-    // an ICAO designator of letters only, typed in capitals ("EUFI", "GLEX", "CONC"), after "type" or straight
-    // after a typed callsign no aircraft has ("create GAF30 EUFI at ..."): that type (elsewhere a place's letters)
+    // an ICAO designator of letters only, typed in capitals ("EUFI", "GLEX", "CONC"), after "type"
+    // or straight after a typed callsign no aircraft has ("create GAF30 EUFI at ..."): that type
+    // (elsewhere a place's letters)
     const bool new_id_before = i > 0 && is_word(t[i - 1]) && has_digit(t[i - 1].raw) &&
-                               std::isalpha(static_cast<unsigned char>(t[i - 1].raw[0])) && !world_id(t[i - 1].raw);
-    if ((new_id_before || (i > 0 && t[i - 1].text == "type")) && is_alpha(raw) && raw == text::upper(raw)) {
+                               std::isalpha(static_cast<unsigned char>(t[i - 1].raw[0])) &&
+                               !world_id(t[i - 1].raw);
+    if ((new_id_before || (i > 0 && t[i - 1].text == "type")) && is_alpha(raw) &&
+        raw == text::upper(raw)) {
       if (auto ty = names.aircraft_type("", raw); ty && *ty == raw) {
         add(RefKind::kType, *ty, i, i + 1, false, false);
         continue;

@@ -342,9 +342,10 @@ std::vector<std::string> fold_clearances(std::vector<std::string> cmds) {
   return cmds;
 }
 
-// The waypoint each aircraft's route ends with after `setup` (upper-case id -> name), as its ADDWPT lines leave it:
-// one with no afterwp or beforewp, or with the end as its afterwp, is the new end; DEST adds no waypoint of the
-// route (ADDWPT puts new ones before it); DELRTE, and DELWPT of the end, leave the end unknown.
+// The waypoint each aircraft's route ends with after `setup` (upper-case id -> name), as its ADDWPT
+// lines leave it: one with no afterwp or beforewp, or with the end as its afterwp, is the new end;
+// DEST adds no waypoint of the route (ADDWPT puts new ones before it); DELRTE, and DELWPT of the
+// end, leave the end unknown.
 std::map<std::string, std::string> route_ends(std::string_view setup) {
   std::map<std::string, std::string> ends;
   for (const auto& c : split_commands(setup)) {
@@ -352,12 +353,15 @@ std::map<std::string, std::string> route_ends(std::string_view setup) {
     command_first(v);
     if (v.size() < 2) continue;
     const std::string cmd = canonical_command(v[0]), id = text::upper(v[1]);
-    if (cmd == "DELRTE" || (cmd == "DELWPT" && v.size() > 2 && text::iequals(v[2], ends[id]))) ends.erase(id);
+    if (cmd == "DELRTE" || (cmd == "DELWPT" && v.size() > 2 && text::iequals(v[2], ends[id])))
+      ends.erase(id);
     if (cmd != "ADDWPT" || v.size() < 3) continue;
-    // (a position in degrees, "ADDWPT id 39 -15": a name of its own the text does not give; the end unknown)
+    // (a position in degrees, "ADDWPT id 39 -15": a name of its own the text does not give; the end
+    // unknown)
     const bool position = v.size() > 3 && text::to_double(v[2]) && text::to_double(v[3]);
     const size_t rest = position ? 4 : 3;
-    const std::string after = v.size() > rest + 2 ? v[rest + 2] : "", before = v.size() > rest + 3 ? v[rest + 3] : "";
+    const std::string after = v.size() > rest + 2 ? v[rest + 2] : "",
+                      before = v.size() > rest + 3 ? v[rest + 3] : "";
     if (!before.empty() || (!after.empty() && !text::iequals(after, ends[id]))) continue;
     if (position)
       ends.erase(id);
@@ -367,16 +371,19 @@ std::map<std::string, std::string> route_ends(std::string_view setup) {
   return ends;
 }
 
-// "ADDWPT id X,alt,spd,END" with END the waypoint id's route ends with after the setup (route_ends) as "ADDWPT id
-// X,alt,spd": ADDWPT with no afterwp puts X at the route's end, after END, the same route (commands_route.cpp).
-std::vector<std::string> plain_after_end(std::vector<std::string> cmds, const std::map<std::string, std::string>& ends) {
+// "ADDWPT id X,alt,spd,END" with END the waypoint id's route ends with after the setup (route_ends)
+// as "ADDWPT id X,alt,spd": ADDWPT with no afterwp puts X at the route's end, after END, the same
+// route (commands_route.cpp).
+std::vector<std::string> plain_after_end(std::vector<std::string> cmds,
+                                         const std::map<std::string, std::string>& ends) {
   for (auto& c : cmds) {
     auto v = tokens(c);
     command_first(v);
     if (v.size() < 3 || canonical_command(v[0]) != "ADDWPT") continue;
     const size_t rest = v.size() > 3 && text::to_double(v[2]) && text::to_double(v[3]) ? 4 : 3;
     const auto end = ends.find(text::upper(v[1]));
-    if (end == ends.end() || v.size() != rest + 3 || !text::iequals(v[rest + 2], end->second)) continue;
+    if (end == ends.end() || v.size() != rest + 3 || !text::iequals(v[rest + 2], end->second))
+      continue;
     std::string plain = "ADDWPT " + v[1] + " " + v[2] + (rest == 4 ? " " + v[3] : "");
     c = plain + "," + v[rest] + "," + v[rest + 1];
   }
@@ -384,7 +391,8 @@ std::vector<std::string> plain_after_end(std::vector<std::string> cmds, const st
 }
 }  // namespace
 
-bool score_case(std::string_view produced, bool asked, std::string_view expected, std::string_view setup) {
+bool score_case(std::string_view produced, bool asked, std::string_view expected,
+                std::string_view setup) {
   const auto ends = route_ends(setup);
   for (const auto& alt_raw : text::split(expected, '|')) {
     auto alt = text::trim(alt_raw);

@@ -30,6 +30,7 @@ std::string canonical_command(std::string_view name);
 bool same_command(std::string_view produced, std::string_view expected);
 // Scores one case. `asked` is true when the translator asked a question
 // (then `produced` is ignored); `setup` is the case's TrafScript run before it.
-bool score_case(std::string_view produced, bool asked, std::string_view expected, std::string_view setup = {});
+bool score_case(std::string_view produced, bool asked, std::string_view expected,
+                std::string_view setup = {});
 
 }  // namespace squawk::translate

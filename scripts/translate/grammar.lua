@@ -8867,7 +8867,9 @@ function G:valueless_left(segs, valueless, issued_by)
       bare = bare and (t.kind ~= "word" or t.filler or self.triggers[i] or (t.text == "off" and self.triggers[i - 1])
         or self:word(i, "@left @right @up @down and then") or self:has_ref(i, i + 1, "aircraft")
         -- ("speed up a bit", "slow down slightly": a degree of no size is no value either)
-        or self:word(i, "@vague_direction") or (self:word(i, "a") and self:word(i + 1, "@vague_direction")))
+        or self:word(i, "@vague_direction") or (self:word(i, "a") and self:word(i + 1, "@vague_direction"))
+        -- ("climb fl, spd 290", "descend flight level, ...": a level's noun straight after its verb, no value)
+        or (s.intent == "alt" and i <= s.trig + 2 and self:word(i, "fl flight level")))
     end
     -- (one refused, "do not descend", is the negation's: the accounting asks about it; one named after "for",
     -- "standby for descent", is announced, no instruction)

@@ -22511,3 +22511,12 @@ do
   asked(ex("DLH4LK direct to"), "a direct-to with no place")
   check_eq(ex("DLH4LK proceed direct"), "DIRECT DLH4LK KANO")
 end
+
+-- Cycle 72 (lead, R299): "ezy45tw clb fl, spd 290" sent the speed alone, the climb with no level dropped: a level's
+-- noun straight after its verb is no value, so the climb is asked about, beside the speed
+do
+  local _, ex = scene({ "CRE EZY45TW A320 52 4 90 FL200 250" })
+  asked(ex("ezy45tw clb fl, spd 290"), "a climb with no level beside a speed")
+  asked(ex("ezy45tw climb flight level, turn left heading 200"), "a climb with no level beside a heading")
+  check_eq(ex("ezy45tw climb FL300, spd 290"), "ALT EZY45TW FL300 ; SPD EZY45TW 290")
+end

@@ -82,7 +82,8 @@ TEST_CASE(
 }
 
 TEST_CASE(
-    "a designator of letters only typed in capitals after a new callsign or 'type' is that type, elsewhere no "
+    "a designator of letters only typed in capitals after a new callsign or 'type' is that type, "
+    "elsewhere no "
     "type") {
   CHECK(types_in("create GAF30 EUFI at 48.6 11.4") == std::vector<std::string>{"EUFI"});
   CHECK(types_in("create GAF30 type EUFI at 48.6 11.4") == std::vector<std::string>{"EUFI"});
@@ -91,7 +92,9 @@ TEST_CASE(
   CHECK(types_in("create GAF30 eufi at 48.6 11.4").empty());
 }
 
-TEST_CASE("a flight number typed as one word of digits, letters and digits after the airline is that aircraft") {
+TEST_CASE(
+    "a flight number typed as one word of digits, letters and digits after the airline is that "
+    "aircraft") {
   static const Tables t({{"cool red", "APG"}}, {}, {}, {});
   StaticWorld world;
   world.add_aircraft({"APG2Z221", {}});

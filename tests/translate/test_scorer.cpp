@@ -264,18 +264,24 @@ TEST_CASE(
   CHECK(issued.text() == "ALT KLM12 FL300");
 }
 
-TEST_CASE("a waypoint added after the one its route ends with after the setup is the plain ADDWPT") {
-  const char* setup = "CRE RZO221 A321 38 -25 075 FL340 270 ; ADDWPT RZO221 NOVPA ; ADDWPT RZO221 ETIRA";
+TEST_CASE(
+    "a waypoint added after the one its route ends with after the setup is the plain ADDWPT") {
+  const char* setup =
+      "CRE RZO221 A321 38 -25 075 FL340 270 ; ADDWPT RZO221 NOVPA ; ADDWPT RZO221 ETIRA";
   CHECK(score_case("ADDWPT RZO221 39 -15,,,ETIRA", false, "ADDWPT RZO221 39 -15", setup));
   CHECK(score_case("ADDWPT RZO221 DAVOS", false, "AFTER RZO221 ETIRA ADDWPT DAVOS", setup));
   CHECK(score_case("ADDWPT RZO221 DAVOS,FL300,,ETIRA", false, "ADDWPT RZO221 DAVOS FL300", setup));
-  // (after a waypoint before the end, before the end, another aircraft's, or with no setup: another route)
+  // (after a waypoint before the end, before the end, another aircraft's, or with no setup: another
+  // route)
   CHECK_FALSE(score_case("ADDWPT RZO221 39 -15,,,NOVPA", false, "ADDWPT RZO221 39 -15", setup));
   CHECK_FALSE(score_case("ADDWPT RZO221 39 -15,,,,ETIRA", false, "ADDWPT RZO221 39 -15", setup));
   CHECK_FALSE(score_case("ADDWPT RZO221 39 -15,,,ETIRA", false, "ADDWPT RZO221 39 -15"));
   // (the end as ADDWPT lines after an afterwp or before a beforewp, a DELRTE and a DEST leave it)
-  CHECK(score_case("ADDWPT KL1 C,,,B", false, "ADDWPT KL1 C", "ADDWPT KL1 A ; ADDWPT KL1 B,,,A ; DEST KL1 EHAM"));
-  CHECK_FALSE(score_case("ADDWPT KL1 C,,,B", false, "ADDWPT KL1 C", "ADDWPT KL1 A ; ADDWPT KL1 B ; DELRTE KL1"));
+  CHECK(score_case("ADDWPT KL1 C,,,B", false, "ADDWPT KL1 C",
+                   "ADDWPT KL1 A ; ADDWPT KL1 B,,,A ; DEST KL1 EHAM"));
+  CHECK_FALSE(score_case("ADDWPT KL1 C,,,B", false, "ADDWPT KL1 C",
+                         "ADDWPT KL1 A ; ADDWPT KL1 B ; DELRTE KL1"));
   CHECK(score_case("ADDWPT KL1 C,,,A", false, "ADDWPT KL1 C", "ADDWPT KL1 A ; ADDWPT KL1 B,,,,A"));
-  CHECK_FALSE(score_case("ADDWPT KL1 C,,,B", false, "ADDWPT KL1 C", "ADDWPT KL1 A ; ADDWPT KL1 B,,,,A"));
+  CHECK_FALSE(
+      score_case("ADDWPT KL1 C,,,B", false, "ADDWPT KL1 C", "ADDWPT KL1 A ; ADDWPT KL1 B,,,,A"));
 }
