@@ -11,44 +11,40 @@ using namespace squawk::translate;
 namespace {
 
 const Tables& names() {
-  static const Tables t({{"ryanair", "RYR"}}, {}, {"EUFI"}, {{"alpha", 'A'}, {"xray", 'X'}});
+  static const Tables t({{"ryanair", "RYR"}, {"cool red", "APG"}}, {}, {"EUFI"},
+                        {{"alpha", 'A'}, {"xray", 'X'}});
   return t;
+}
+
+// The names of the references of `kind` found in `text` in `world`, a waypoint's followed by "?"
+// when it names none of the world's.
+std::vector<std::string> found_in(const std::string& text, const StaticWorld& world, RefKind kind) {
+  const std::vector<Token> toks = lex(text);
+  std::vector<bool> used(toks.size(), false);
+  std::vector<std::string> found;
+  for (const auto& r : find_references(toks, &world, used, names()))
+    if (r.kind == kind)
+      found.push_back(r.name + (kind == RefKind::kWaypoint && !r.exists ? "?" : ""));
+  return found;
 }
 
 // The aircraft references found in `text` with `ids` flying.
 std::vector<std::string> aircraft_in(const std::string& text, const std::vector<std::string>& ids) {
   StaticWorld world;
   for (const auto& id : ids) world.add_aircraft({id, {}});
-  const std::vector<Token> toks = lex(text);
-  std::vector<bool> used(toks.size(), false);
-  std::vector<std::string> found;
-  for (const auto& r : find_references(toks, &world, used, names()))
-    if (r.kind == RefKind::kAircraft) found.push_back(r.name);
-  return found;
+  return found_in(text, world, RefKind::kAircraft);
 }
 
 // The type references found in `text`, nothing flying.
 std::vector<std::string> types_in(const std::string& text) {
-  StaticWorld world;
-  const std::vector<Token> toks = lex(text);
-  std::vector<bool> used(toks.size(), false);
-  std::vector<std::string> found;
-  for (const auto& r : find_references(toks, &world, used, names()))
-    if (r.kind == RefKind::kType) found.push_back(r.name);
-  return found;
+  return found_in(text, StaticWorld(), RefKind::kType);
 }
 
-// The waypoint references found in `text` with waypoint `defined` defined, each name followed by
-// "?" when it names no waypoint of the world.
+// The waypoint references found in `text` with waypoint `defined` defined.
 std::vector<std::string> waypoints_in(const std::string& text, const std::string& defined) {
   StaticWorld world;
   world.add_waypoint(defined);
-  const std::vector<Token> toks = lex(text);
-  std::vector<bool> used(toks.size(), false);
-  std::vector<std::string> found;
-  for (const auto& r : find_references(toks, &world, used, names()))
-    if (r.kind == RefKind::kWaypoint) found.push_back(r.name + (r.exists ? "" : "?"));
-  return found;
+  return found_in(text, world, RefKind::kWaypoint);
 }
 
 }  // namespace
@@ -81,10 +77,7 @@ TEST_CASE(
   CHECK(waypoints_in("after 5440N direct", "5450N").empty());
 }
 
-TEST_CASE(
-    "a designator of letters only typed in capitals after a new callsign or 'type' is that type, "
-    "elsewhere no "
-    "type") {
+TEST_CASE("a designator of letters only, in capitals after a new callsign or 'type', is that type") {
   CHECK(types_in("create GAF30 EUFI at 48.6 11.4") == std::vector<std::string>{"EUFI"});
   CHECK(types_in("create GAF30 type EUFI at 48.6 11.4") == std::vector<std::string>{"EUFI"});
   // (a place's letters after another word, and the designator in lower case, stay no type)
@@ -95,18 +88,9 @@ TEST_CASE(
 TEST_CASE(
     "a flight number typed as one word of digits, letters and digits after the airline is that "
     "aircraft") {
-  static const Tables t({{"cool red", "APG"}}, {}, {}, {});
-  StaticWorld world;
-  world.add_aircraft({"APG2Z221", {}});
-  world.add_aircraft({"KLM12", {}});
-  auto found = [&](const std::string& text) {
-    const std::vector<Token> toks = lex(text);
-    std::vector<bool> used(toks.size(), false);
-    std::vector<std::string> ids;
-    for (const auto& r : find_references(toks, &world, used, t))
-      if (r.kind == RefKind::kAircraft) ids.push_back(r.name);
-    return ids;
-  };
-  CHECK(found("cool red 2Z221 maintain FL280") == std::vector<std::string>{"APG2Z221"});
-  CHECK(found("KLM12 maintain FL280") == std::vector<std::string>{"KLM12"});
+  CHECK(aircraft_in("cool red 2Z221 maintain FL280", {"APG2Z221", "KLM12"}) ==
+        std::vector<std::string>{"APG2Z221"});
+  // (a flight number of digits and letters only, "8UK", read as before)
+  CHECK(aircraft_in("ryanair 8UK climb", {"RYR8UK", "APG2Z221"}) ==
+        std::vector<std::string>{"RYR8UK"});
 }
