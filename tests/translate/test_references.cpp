@@ -77,7 +77,8 @@ TEST_CASE(
   CHECK(waypoints_in("after 5440N direct", "5450N").empty());
 }
 
-TEST_CASE("a designator of letters only, in capitals after a new callsign or 'type', is that type") {
+TEST_CASE(
+    "a designator of letters only, in capitals after a new callsign or 'type', is that type") {
   CHECK(types_in("create GAF30 EUFI at 48.6 11.4") == std::vector<std::string>{"EUFI"});
   CHECK(types_in("create GAF30 type EUFI at 48.6 11.4") == std::vector<std::string>{"EUFI"});
   // (a place's letters after another word, and the designator in lower case, stay no type)
