@@ -16915,7 +16915,9 @@ end
 -- recognition writes for a digit (lexicon.digit_homophones) after an airline's word or a digit or letter
 -- said, or before one, is that digit when the text so read names exactly one aircraft flying, matched
 -- exactly, that the text as heard does not (nor one whose id begins that aircraft's: with BAW4 and BAW42
--- flying, "speedbird four to ..." stays as said); anything else stays as said (and may be asked about).
+-- flying, "speedbird four to ..." stays as said); anything else stays as said (and may be asked about). A "to"
+-- before a word that no callsign reads, after G.infinitive_askers ("ask ... one one four to climb"), is the
+-- infinitive's, never a digit.
 local CALLSIGN_WORDS = { hundred = true, thousand = true }
 for w in pairs(SPOKEN_DIGITS) do CALLSIGN_WORDS[w] = true end
 local AIRLINE_LAST = {}  -- the last word of each airline's telephony or name
@@ -17023,6 +17025,9 @@ function G.common_named(text, world, parsed)
   end
   return text
 end
+-- verbs after which a callsign is followed by an infinitive ("ask ... to climb", "I would like ... to descend")
+G.infinitive_askers = set_of({ "ask", "asking", "tell", "telling", "instruct", "instructing", "clear", "like", "want",
+  "need", "get", "order", "request" })
 local function homophone_ids(text, world, parsed)
   if #world.aircraft == 0 then return text end
   parsed = parsed or {}
@@ -17033,7 +17038,12 @@ local function homophone_ids(text, world, parsed)
     local digit = lexicon.digit_homophones[w]
     local prev, nxt = bare[i - 1], bare[i + 1]
     local glued = digit and prev and not toks[i - 1]:match("%p$") and (not nxt or not toks[i]:match("%p$"))
-    if glued and (AIRLINE_LAST[prev] or CALLSIGN_WORDS[prev] or prev:match("^%d+$")
+    -- ("ask Air France one one four to climb": "to" before a word no callsign reads, after a verb that asks for
+    -- one said earlier, is the infinitive's; "jetblue two to turn left" keeps its digit)
+    local infinitive = w == "to" and nxt and not toks[i]:match("%p$")
+      and not (CALLSIGN_WORDS[nxt] or nxt:match("^%d+$") or lexicon.phonetic[nxt] or lexicon.digit_homophones[nxt])
+      and word_among(bare, 1, i, G.infinitive_askers)
+    if glued and not infinitive and (AIRLINE_LAST[prev] or CALLSIGN_WORDS[prev] or prev:match("^%d+$")
         or (nxt and (CALLSIGN_WORDS[nxt] or nxt:match("^%d+$")))) then
       -- (read with every homophone of the words said with it, "lufthansa for oh oh", else this one alone)
       local words, alone = {}, {}

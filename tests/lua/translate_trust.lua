@@ -22520,3 +22520,16 @@ do
   asked(ex("ezy45tw climb flight level, turn left heading 200"), "a climb with no level beside a heading")
   check_eq(ex("ezy45tw climb FL300, spd 290"), "ALT EZY45TW FL300 ; SPD EZY45TW 290")
 end
+
+-- Cycle 73 (lead, R296): "ask Air France one one four to climb" with AFR1142 flying named it, the infinitive's
+-- "to" read as its last digit: after a verb that asks for an infinitive, "to" before a word is no digit (asked);
+-- a recogniser's "jetblue two to turn left" keeps its digit
+do
+  local _, ex = scene({ "CRE AFR1142 A320 52 4 90 FL200 250", "CRE JBU22 A320 53 4 90 FL200 250" })
+  asked(ex("Could you please ask Air France one one four to climb to flight level two six zero?"),
+    "a callsign one digit short before an infinitive")
+  asked(ex("I would like Air France one one four to descend to flight level one four zero"),
+    "a callsign one digit short before an infinitive")
+  check_eq(ex("jetblue two to turn left heading two three zero"), "HDG JBU22 230 LEFT")
+  check_eq(ex("please ask Air France one one four two to climb to flight level two six zero"), "ALT AFR1142 FL260")
+end
