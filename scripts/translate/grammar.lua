@@ -9465,17 +9465,25 @@ function G:when_reached(s)
   -- ("climb 8000 feet when reaching speed 200 knots": "speed" straight after the verb, no mark before the condition
   -- or after the verb, may be the speed reached as well as the instruction: not read as the level reached; "climb
   -- FL350, on reaching speed M.78" opens a clause of its own, the level's)
-  if k == s.trig and k == verb + 1 and self:word(k, "speed") and not (self.t[c - 1] and self.t[c - 1].kind == "punct") then
+  -- ("climb FL240 and after reaching speed 320": "and" before the condition marks it as a comma does)
+  if k == s.trig and k == verb + 1 and self:word(k, "speed")
+      and not (self.t[c - 1] and self.t[c - 1].kind == "punct" or self:word(c - 1, "and")) then
     return false
   end
   return self:instruction_lead(k, s.trig) == s.trig, kind
 end
 
 -- The position after the words at k that lead into the instruction word at trig ("start its descent", "begin the
--- climb", "route direct", "fly direct"): "start" or "begin" and a determiner, or "route", "fly" or "track" before
--- "direct", before trig only; else k.
+-- climb", "route direct", "fly direct", "you turn", "you fly heading"): "start" or "begin" and a determiner, "route",
+-- "fly" or "track" before "direct", or "you" (and "fly"), before trig only; else k.
 function G:instruction_lead(k, trig)
   local v = k
+  -- ("when reaching you fly heading 180", "when reaching fly heading 180": the aircraft addressed as the verb's
+-- subject, and "fly" before a heading)
+  local after_you = self:word(v, "you") and v + 1 or v
+  if after_you == trig or (self:word(after_you, "fly") and after_you + 1 == trig and self:word(trig, "heading hdg")) then
+    return trig
+  end
   if self:word(v, "start begin") then v = self:skip_fillers(v + 1) end
   if self:word(v, "route fly track") and self:word(v + 1, "direct dct") then v = v + 1 end
   if v > k and self:word(v, "its the your his her their") then v = self:skip_fillers(v + 1) end
@@ -9978,7 +9986,11 @@ function G:at_waypoint(s, spec)
     for i = s.intent == "infer" and first or s.trig, r.b - 2 do
       said_level = said_level or self:word(i, "reach reaching lvl") or (self:word(i, "level") and not self:word(i - 1, "flight"))
     end
-    if (s.intent == "alt" or s.intent == "infer") and self:word(r.b - 1, "by at over overhead") and said_level then
+    -- (", at PIRAG turn right ...": "at" or "over" after a comma opens a clause of its own, no level by it)
+    local opens_clause = self.t[r.b - 2] and self.t[r.b - 2].kind == "punct" and self.t[r.b - 2].text == ","
+      and self:word(r.b - 1, "at over overhead")
+    if (s.intent == "alt" or s.intent == "infer") and self:word(r.b - 1, "by at over overhead") and said_level
+        and not opens_clause then
       local qs = self:quantities(s.b, r.b - 1)
       level_by = #qs == 1 and qs[1].kind == "alt" and qs[1] or nil
       for i = from, r.b - 2 do
@@ -17040,10 +17052,12 @@ local function homophone_ids(text, world, parsed)
     local glued = digit and prev and not toks[i - 1]:match("%p$") and (not nxt or not toks[i]:match("%p$"))
     -- ("ask Air France one one four to climb": "to" before a word no callsign reads, after a verb that asks for
     -- one said earlier, is the infinitive's; "jetblue two to turn left" keeps its digit)
-    local infinitive = w == "to" and nxt and not toks[i]:match("%p$")
+    local kept = w == "to" and nxt and not toks[i]:match("%p$")
       and not (CALLSIGN_WORDS[nxt] or nxt:match("^%d+$") or lexicon.phonetic[nxt] or lexicon.digit_homophones[nxt])
       and word_among(bare, 1, i, G.infinitive_askers)
-    if glued and not infinitive and (AIRLINE_LAST[prev] or CALLSIGN_WORDS[prev] or prev:match("^%d+$")
+      -- ("one not one": "not" is a zero only between digits; "... two not descend" keeps its negation)
+      or w == "not" and not (nxt and (SAID_DIGIT[nxt] or nxt:match("^%d+$")))
+    if glued and not kept and (AIRLINE_LAST[prev] or CALLSIGN_WORDS[prev] or prev:match("^%d+$")
         or (nxt and (CALLSIGN_WORDS[nxt] or nxt:match("^%d+$")))) then
       -- (read with every homophone of the words said with it, "lufthansa for oh oh", else this one alone)
       local words, alone = {}, {}

@@ -3278,10 +3278,11 @@ return {
   -- foreign_digits ("nível três um zero"); "three um zero" keeps its hesitation
   foreign_hesitation_digits = { um = "one" },
   -- words speech recognition writes for a digit said inside a callsign ("wizzair to lima papa" is WZZ2LP,
-  -- "lufthansa for hundred" DLH400, "europa oh five one" AEA051): that digit only where the callsign so
+  -- "lufthansa for hundred" DLH400, "europa oh five one" AEA051, "air india one not one" AIC101, "nought" said
+  -- for zero): that digit only where the callsign so
   -- read is exactly one aircraft's (grammar.lua homophone_ids)
   digit_homophones = { to = "two", too = "two", ["for"] = "four", fore = "four", won = "one", ate = "eight", sex = "six",
-    oh = "zero" },
+    oh = "zero", nought = "zero", naught = "zero", ["not"] = "zero" },
   -- everyday words the callsign matcher also reads as a flight number's last digit after its other digits
   -- (references.cpp heard_digit: "easy eight on descend" for EZY81): the word -> the digit. Read so the callsign
   -- is confirmed, never taken (handlers.lua m:homophone_closing); "for", "to", "won" closing one stay read, as

@@ -22533,3 +22533,30 @@ do
   check_eq(ex("jetblue two to turn left heading two three zero"), "HDG JBU22 230 LEFT")
   check_eq(ex("please ask Air France one one four two to climb to flight level two six zero"), "ALT AFR1142 FL260")
 end
+
+-- Cycle 73 (lead, R304): "climb level 150, at PIRAG turn right heading 090" tied the climb to PIRAG as well ("level
+-- 150 at PIRAG" read as a level to be reached there): "at" after a comma opens a clause of its own; "when reaching
+-- you fly heading 180" and "and after reaching speed 320" wait for the level cleared
+do
+  local _, ex = scene({ "CRE BTI81C A320 57 12 90 FL110 250", "DEFWPT PIRAG 57 13", "ADDWPT BTI81C PIRAG",
+    "CRE RYR4GW B738 57 12 90 FL200 280" })
+  check_eq(ex("Air Baltic 81C, climb now level one five zero, at PIRAG turn right heading zero niner zero"),
+    "ALT BTI81C FL150 ; AT BTI81C PIRAG DO HDG BTI81C 90 RIGHT")
+  check_eq(ex("BTI81C climb to be level 150 at PIRAG"), "ALT BTI81C FL150 ; AT BTI81C PIRAG ALT FL150")
+  check_eq(ex("Ryanair 4GW now you descend to level one six zero, when reaching you fly heading one eight zero"),
+    "ALT RYR4GW FL160 ; ATALT RYR4GW FL160 HDG RYR4GW 180")
+  check_eq(ex("RYR4GW descend to level one six zero, when reaching fly heading one eight zero"),
+    "ALT RYR4GW FL160 ; ATALT RYR4GW FL160 HDG RYR4GW 180")
+  check_eq(ex("ryanair four golf whiskey climb flight level two four zero and after reaching speed three two zero"),
+    "ALT RYR4GW FL240 ; ATALT RYR4GW FL240 SPD RYR4GW 320")
+  asked(ex("RYR4GW climb 25000 feet when reaching speed 200 knots"), "the speed reached or the speed flown")
+end
+
+-- Cycle 73 (lead, R301): a recogniser's "not" for "nought" inside a callsign ("air india one not one") is a zero
+-- where the callsign so read is exactly one aircraft's; a "not" before a word keeps its negation
+do
+  local _, ex = scene({ "CRE AIC101 A320 20 72 90 FL200 280", "CRE IGO5120 A320 20 73 90 FL200 280" })
+  check_eq(ex("air india one not one turn right heading two one zero"), "HDG AIC101 210 RIGHT")
+  check_eq(ex("air india one nought one descend flight level one two zero"), "ALT AIC101 FL120")
+  asked(ex("indigo five one two not descend flight level one two zero"), "a negation after a callsign a digit short")
+end
