@@ -80,6 +80,8 @@ local names = {
     { "virgin", "VIR" },
     { "norshuttle", "NAX" },
     { "nor shuttle", "NAX" },
+    { "rednose", "NSZ" },  -- (Norwegian Air Sweden)
+    { "whitestar", "SRR" },  -- (Star Air, Denmark)
     { "wideroe", "WIF" },
     { "wizz air", "WZZ" },
     { "aeroflot", "AFL" },

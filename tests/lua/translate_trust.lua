@@ -22560,3 +22560,10 @@ do
   check_eq(ex("air india one nought one descend flight level one two zero"), "ALT AIC101 FL120")
   asked(ex("indigo five one two not descend flight level one two zero"), "a negation after a callsign a digit short")
 end
+
+-- Cycle 73 (lead, R304): Star Air's telephony Whitestar, and Norwegian Air Sweden's Rednose, before a flight number
+do
+  local _, ex = scene({ "CRE SRR3104 B752 57 13 90 FL200 280", "CRE NSZ4CH B738 57 12 90 FL200 280" })
+  check_eq(ex("Whitestar three one zero four climb flight level two four zero"), "ALT SRR3104 FL240")
+  check_eq(ex("Rednose four charlie hotel descend level one two zero"), "ALT NSZ4CH FL120")
+end
