@@ -4201,13 +4201,17 @@ function G:label_number(q, remark)
 end
 
 -- True when quantity q is a count of aircraft ("when two aircraft get too close", "the two Airbuses": a whole
--- number from 2 to 9 said before a word of lexicon.counted_aircraft or maker_plurals) or "one" standing for an
+-- number from 2 to 9 said before a word of lexicon.counted_aircraft or maker_plurals, or after "the other" closing
+-- its clause, "co-altitude with the other two") or "one" standing for an
 -- aircraft after a word ("the one the participant sequences", "the long-haul one"; not "the other one", an aircraft
 -- meant): no value.
 function G:aircraft_count(q)
   if q.kind ~= "plain" or q.number.decimal or q.e ~= q.b + 1 then return false end
   local before = self.t[q.b - 1]
-  return (q.value >= 2 and q.value <= 9 and (self:word(q.e, "@counted_aircraft") or self:word(q.e, "@maker_plurals")))
+  local closes = not self.t[q.e] or self.t[q.e].kind == "punct"
+  return (q.value >= 2 and q.value <= 9 and (self:word(q.e, "@counted_aircraft") or self:word(q.e, "@maker_plurals")
+      -- ("..., we want it co-altitude with the other two": the aircraft counted, closing the clause)
+      or (closes and self:word(q.b - 1, "other") and self:word(q.b - 2, "the"))))
     or (self:word(q.b, "one") and before ~= nil and before.kind == "word" and not before.number_word
       and not self:word(q.b - 1, "other another"))
 end

@@ -910,8 +910,12 @@ return function(H, f, wrap, compass)
         if not q.number.typed and q.number.lead_digit and H.cut_off(q.number) and not slow then
           return self:need("What speed should " .. id .. " fly? I heard " .. q.number.digits .. ".")
         end
+        -- ("speed two five": 250, its zero not heard; never past 400 kt, "four five knots" is asked)
         if not converted and not q.number.typed and kt >= 10 and kt < 100 and q.number.groups == 2 and not slow then
-          kt = kt * 10  -- "speed one ninety"
+          if kt > 40 then
+            return self:need("What speed should " .. id .. " fly? I heard " .. self:raw(q.b, q.e) .. ".")
+          end
+          kt = kt * 10
         end
         local r
         if converted then

@@ -2806,11 +2806,13 @@ return function(intent, rule, words)
   -- "resume run", "continue the run", "resume the scenario": the run (the simulation's) taken up again, said alone,
   -- as a clause of its own, or opening the request before a mark, "and" or "then" ("resume the run and climb KLM12
   -- FL300"); "start the run and ..." starts it, "stop/hold the run and ..." stops it
-  -- The request's first word after fillers and a polite question's opening ("could you (please)", "would you
-  -- kindly", lexicon.polite_openings): the instruction's verb when it asks for one thing
+  -- The request's first word after fillers, a polite question's opening ("could you (please)", "would you
+  -- kindly", lexicon.polite_openings) and "go ahead and": the instruction's verb when it asks for one thing
   local function polite_first(g)
     local k = g:skip_fillers(1)
     if g:word(k, "@polite_openings") and g:word(k + 1, "you") then k = g:skip_fillers(k + 2) end
+    -- ("go ahead and start the run": the leave given before the verb)
+    if g:word(k, "go") and g:word(k + 1, "ahead") and g:word(k + 2, "and") then k = g:skip_fillers(k + 3) end
     return g:word(k, "kindly") and g:skip_fillers(k + 1) or k
   end
   local function the_run(g, i)

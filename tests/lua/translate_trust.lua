@@ -22567,3 +22567,22 @@ do
   check_eq(ex("Whitestar three one zero four climb flight level two four zero"), "ALT SRR3104 FL240")
   check_eq(ex("Rednose four charlie hotel descend level one two zero"), "ALT NSZ4CH FL120")
 end
+
+-- Cycle 73 (lead, R302): "the other two" closing an experimenter's purpose is aircraft counted, no value left over
+do
+  local _, ex = scene({ "CRE RYR82XT B738 52 5 90 FL300 280" })
+  check_eq(ex("Ryanair 82XT descend to flight level 250, we want it co-altitude with the other two."),
+    "ALT RYR82XT FL250")
+  asked(ex("RYR82XT descend to flight level 250 and the other two"), "a count with no purpose")
+end
+
+-- Cycle 73 (lead, R304, R302): "four five knots", two digits said singly, was read as 450 kt with its zero lost
+-- ("the wind is four five knots" became SPD 450): past 40 the tens are asked; "go ahead and start the run" starts it
+do
+  local _, ex = scene({ "CRE SAS12 A320 55.6 12.6 90 FL200 250", "HOLD" })
+  asked(ex("the wind is four five knots"), "a wind's speed said as two digits")
+  asked(ex("SAS12 four five knots"), "two digits said singly before knots")
+  check_eq(ex("SAS12 speed two five"), "SPD SAS12 250")
+  check_eq(ex("go ahead and start the run"), "OP")
+  check_eq(ex("please go ahead and start the run."), "OP")
+end
