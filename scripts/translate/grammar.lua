@@ -5180,8 +5180,9 @@ function G:in_reason(i)
         -- ("climb FL340 before it reaches the boundary", "I'd like AFR1234 at FL340 before the boundary":
         -- lexicon.deadline_places)
         inside, reason[k] = true, true
-      elseif punct and self:word(k + 1, "@then_words") then
-        -- (", then ..." ends the reason: "up to FL320 so it conflicts with TRA6021, then ff 1 min")
+      elseif punct and (self:word(k + 1, "@then_words") or (t.text == "," and self:word(k + 1, "@clause_verbs"))) then
+        -- (", then ..." ends the reason: "up to FL320 so it conflicts with TRA6021, then ff 1 min"; so does a verb of
+        -- lexicon.clause_verbs after a comma: "turn left heading 090 due traffic, descend 8100 metres")
         inside = false
       elseif (w and REASON_WORDS[w])
           -- ("ok so the clock is running slow, go 2x": "so" opening the request, with only fillers before it,

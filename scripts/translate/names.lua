@@ -507,6 +507,7 @@ local names = {
     { "shunfeng", "CSS" },
     { "airchina freight", "CAO" },
     { "air china cargo", "CAO" },
+    { "air china freight", "CAO" },
     -- an airline's cargo brand by its own name, its own ICAO designator ("Lufthansa Cargo 8175" is GEC8175)
     { "lufthansa cargo", "GEC" },
     { "cargo king", "CKK" },

@@ -22586,3 +22586,14 @@ do
   check_eq(ex("go ahead and start the run"), "OP")
   check_eq(ex("please go ahead and start the run."), "OP")
 end
+
+-- Cycle 73 (lead, R305): a reason after "due" ends at a comma before an instruction's verb ("... due traffic,
+-- descend 8100 metres" dropped into the reason); Air China's cargo airline by its telephony Air China Freight
+do
+  local _, ex = scene({ "CRE CES2157 A320 31 121 90 FL300 250", "CRE CAO1043 B77L 31 122 90 FL330 250" })
+  check_eq(ex("China Eastern 2157, turn left heading 090 due traffic, descend 8100 metres"),
+    "HDG CES2157 90 LEFT ; ALT CES2157 26600")
+  check_eq(ex("CES2157 descend FL200 because the KLM is climbing, turn left heading 200"),
+    "ALT CES2157 FL200 ; HDG CES2157 200 LEFT")
+  check_eq(ex("Air China Freight 1043 descend to 9200 meters"), "ALT CAO1043 30200")
+end
