@@ -9399,13 +9399,14 @@ function G:when_reached(s)
     return true
   end
   -- ("when you're at that speed", "once it is at the speed", "when he arrives at this speed", "when established at
-  -- that speed": the speed of the instruction before, reached; only a subject, "is", "arrives" or "established",
-  -- "at" and "that", "this" or "the" before "speed", straight before the instruction)
+  -- that speed", "when you have the speed": the speed of the instruction before, reached; only a subject, "is",
+  -- "arrives" or "established", "at" (or "have", "has", "got") and "that", "this" or "the" before "speed", straight
+  -- before the instruction)
   local at = self:find_word(c + 1, s.trig, "speed")
   if at < s.trig and self:skip_fillers(at + 1) == s.trig and self:word(at - 1, "that the this")
-      and (self:word(at - 2, "at") or self:word(at - 2, "reaching") and c == at - 3) then
+      and (self:word(at - 2, "at have has got") or self:word(at - 2, "reaching") and c == at - 3) then
     for i = c + 1, at - 3 do
-      local subject = "you you're are it it's is he he's she she's arrives arrive established stabilised stabilized"
+      local subject = "you you're you've are it it's is he he's she she's arrives arrive established stabilised stabilized"
       if not (self.t[i].filler or self:word(i, subject)) then
         return false
       end

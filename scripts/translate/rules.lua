@@ -1295,7 +1295,7 @@ return function(intent, rule, words)
       and not g:word_in(i + 1, #g.t + 1, "creconfs")
   end }
   -- "spawn 3 aircraft", "generate 5 aircraft at FL300, type B738", "sample 8 planes", "create ten aircraft",
-  -- "spawn twenty five jets": a count of aircraft (in digits or in words, a whole number from 2) with no
+  -- "spawn twenty five jets", "create ten A320": a count of aircraft (in digits or in words, a whole number from 2) with no
   -- callsign is random traffic ("create two aircraft: KLM11 ..., and KLM12 ...": the count of the new callsigns
   -- said after it, no random traffic)
   rule { "create spawn generate add sample", "mcre", when = function(g, i)
@@ -1310,9 +1310,10 @@ return function(intent, rule, words)
       end
       return true
     end
+    -- ("create ten A320 at level three hundred": a count in words before a type too)
     local q = t ~= nil and t.number_word and g:quantities(k, k + 4)[1]
     if not (q and q.b == k and q.kind == "plain" and not q.number.decimal and q.value >= 2
-        and g:word(q.e, "@counted_aircraft")) then
+        and (g:word(q.e, "@counted_aircraft") or (q.value <= 500 and g:has_ref(q.e, q.e + 1, "type")))) then
       return false
     end
     for _, r in ipairs(g:refs_in(q.e + 1, #g.t + 1, "aircraft")) do
@@ -3415,6 +3416,10 @@ return function(intent, rule, words)
   -- ("set dt multiplier 3": the time step's name before the multiplier's, DTMULT's)
   rule { "dt", false, next = "multiplier mult" }
   rule { "dt", false, next = "look lookahead" }  -- "dt look 180": DTLOOK typed apart, no time step
+  -- "set the simulation time step multiplier to three": the multiplier of the clock's rate, no time step
+  rule { "time", "dtmult", next = "step", when = function(g, i) return g:word(i + 2, "multiplier factor") end }
+  rule { "step", false, prev = { 1, "time" }, next = "multiplier factor" }
+  rule { "timestep", "dtmult", next = "multiplier factor" }
   rule { "timestep dt", "dt" }
   rule { "time", "dt", next = "step" }
   rule { "step", "dt", next = "size length" }  -- "step size 0.5 s": the simulation's time step, a noun

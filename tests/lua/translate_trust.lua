@@ -22597,3 +22597,15 @@ do
     "ALT CES2157 FL200 ; HDG CES2157 200 LEFT")
   check_eq(ex("Air China Freight 1043 descend to 9200 meters"), "ALT CAO1043 30200")
 end
+
+-- Cycle 73 (lead, R307): "when you have the speed" waits for the speed given before it; "create ten A320 at level
+-- three hundred" is random traffic of a type, its count in words; "time step multiplier" is the clock's rate
+do
+  local _, ex = scene({ "CRE VLG2217 A320 40 -3 90 FL100 250" })
+  check_eq(ex("Vueling two two one seven, reduce the speed to two one zero knots and when you have the speed descend "
+    .. "to six thousand"), "SPD VLG2217 210 ; ATSPD VLG2217 210 ALT VLG2217 6000")
+  asked(ex("VLG2217 when you have the speed descend 6000"), "a speed had that was never given")
+  check_eq(ex("create ten A320 at level three hundred"), "MCRE 10 A320 FL300")
+  check_eq(ex("set the simulation time step multiplier to three"), "DTMULT 3")
+  check_eq(ex("set the time step to 0.5"), "DT 0.5")
+end
