@@ -13868,7 +13868,8 @@ end
 -- refuses straight after "unable" (a value, a direct-to, a word of lexicon.acknowledged.refused, or nothing
 -- before punctuation), with a reason after it that ends its clause and names no value and no aircraft, is set
 -- aside: no instruction of its own. "unable" after a word of lexicon.acknowledged.pilots ("if unable FL380,
--- ...") is a condition on the pilot, left to the parse; "unable" before anything else is left to be asked.
+-- ...") is a condition on the pilot, left to the parse, but for the report asked of it ("if unable advise", "advise
+-- when unable"), set aside; "unable" before anything else is left to be asked.
 G.refused_sets = { refused = set_of(lexicon.acknowledged.refused),
   articles = set_of(lexicon.acknowledged.refused_articles), pilots = set_of(lexicon.acknowledged.pilots) }
 -- "three miles instead of five", "FL300 rather than FL320", "heading 200 in place of 180": the value said straight
@@ -13895,6 +13896,20 @@ end
 function G:refused()
   if not self:said("unable") then return end
   local R = G.refused_sets
+  -- ("climb FL350, if unable advise", "..., advise if unable", "advise when unable": the pilot asked to report a
+  -- refusal, closing its clause: nothing instructed)
+  local function closes(k) return not self.t[k] or self.t[k].kind == "punct" end
+  for i = 2, #self.t do
+    if self:word(i, "unable") and self:word(i - 1, "if when") then
+      local a = closes(i + 1) and self.t[i + 1] and self.t[i + 1].text == "," and i + 2 or i + 1
+      local tail = self:word(a, "advise report") and (self:word(a + 1, "me us") and a + 2 or a + 1)
+      if self:word(i - 1, "if") and tail and closes(tail) then
+        self:set_aside(i - 1, tail - 1)
+      elseif self:word(i - 2, "advise report") and closes(i + 1) then
+        self:set_aside(i - 2, i)
+      end
+    end
+  end
   for i = 1, #self.t - 1 do
     local e  -- the last token refused
     if self:word(i, "unable") and not self:word(i - 1, R.pilots) then

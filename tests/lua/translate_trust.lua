@@ -22609,3 +22609,13 @@ do
   check_eq(ex("set the simulation time step multiplier to three"), "DTMULT 3")
   check_eq(ex("set the time step to 0.5"), "DT 0.5")
 end
+
+-- Cycle 73 (lead, R303): "if unable advise", "advise if unable", closing a clause, ask the pilot to report a refusal:
+-- set aside, the clearance kept; "if unable" before another instruction is still a condition, asked
+do
+  local _, ex = scene({ "CRE DAL1542 B738 45 -79 90 FL300 450" })
+  check_eq(ex("Delta 1542 climb flight level three five zero, if unable advise"), "ALT DAL1542 FL350")
+  check_eq(ex("DAL1542 climb FL350, advise if unable"), "ALT DAL1542 FL350")
+  check_eq(ex("DAL1542 climb FL350 if unable advise, turn left heading 200"), "ALT DAL1542 FL350 ; HDG DAL1542 200 LEFT")
+  asked(ex("DAL1542 climb FL350, if unable descend FL250"), "an alternative clearance on the pilot's refusal")
+end
