@@ -22619,3 +22619,11 @@ do
   check_eq(ex("DAL1542 climb FL350 if unable advise, turn left heading 200"), "ALT DAL1542 FL350 ; HDG DAL1542 200 LEFT")
   asked(ex("DAL1542 climb FL350, if unable descend FL250"), "an alternative clearance on the pilot's refusal")
 end
+
+-- Cycle 73 (lead, R302): "after they pass the CPA they should resume their own navigation" also sent LNAV ON to the
+-- one aircraft flying, "own navigation" read twice: after CPA is named, the resumption is RESNAV alone
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 90 FL200 250", "DEFWPT SPY 52.5 4.5" })
+  check_eq(ex("After they pass the CPA they should resume their own navigation - set that."), "RESNAV PASTCPA")
+  check_eq(ex("KLM12 resume own navigation direct SPY"), "ADDWPT KLM12 SPY ; DIRECT KLM12 SPY")
+end
