@@ -1394,7 +1394,8 @@ return function(H, f, wrap, compass)
       if long > 180 then
         return self:need(string.format("Should %s turn %s by %s degrees, or fly heading %s the long way round?",
           id, side, f.num(abs.value), f.num(wrap(hdg))))
-      elseif long == 180 and abs.value ~= 180 then
+      -- (a leading zero names the heading straight behind: "right 090" from 270)
+      elseif long == 180 and abs.value ~= 180 and not abs.number.digits:find("^0") then
         return self:need(string.format("Should %s turn %s by %s degrees, or turn %s onto heading %s, straight behind?",
           id, side, f.num(abs.value), side, f.num(wrap(hdg))))
       -- ("turn right to 120", "turn left at 160": "to", "onto" or "at" before the number names the heading reached,

@@ -22627,3 +22627,12 @@ do
   check_eq(ex("After they pass the CPA they should resume their own navigation - set that."), "RESNAV PASTCPA")
   check_eq(ex("KLM12 resume own navigation direct SPY"), "ADDWPT KLM12 SPY ; DIRECT KLM12 SPY")
 end
+
+-- Cycle 73 (lead, R306): "AFR1172 right 090" from 270, a heading straight behind typed with its leading zero, is
+-- the heading (no turn's degrees are written so); "right 90" and a heading the long way round stay asked
+do
+  local _, ex = scene({ "CRE AFR1172 A320 52 4 270 FL200 250", "CRE DLH4AX A320 52 5 100 FL200 250" })
+  check_eq(ex("DLH4AX left 060, AFR1172 right 090"), "HDG DLH4AX 60 LEFT ; HDG AFR1172 90 RIGHT")
+  asked(ex("DLH4AX turn right 090"), "a heading the long way round")
+  asked(ex("DLH4AX right 280"), "a turn of 280 degrees or the heading straight behind")
+end
