@@ -686,7 +686,8 @@ function m:acids(s)
   -- "KLM12 heading 270. all aircraft climb FL300", "both climb FL300, EZY45 ...": a group said before the
   -- instruction word in its own clause, that no aircraft named in it resolves, is never one aircraft named
   -- before or after it: asked, unless the aircraft instructed together before are that group (two for
-  -- "both", every aircraft flying for "all")
+  -- "both", every aircraft flying for "all"); "all" with no aircraft instructed before is every aircraft flying,
+  -- confirmed by their callsigns
   local before = self.subjects and self.subject == (self.subjects or {})[1] and #self.subjects or 0
   if #ids == 0 and self:said("both everyone everybody all each every") then  -- (none of them said: no group)
     for k = s.trig - 1, 1, -1 do
@@ -715,10 +716,20 @@ function m:acids(s)
         for n, id in ipairs(named) do ids[n] = id end
         return ids
       end
+      local e = self:word(k, "all each every") and self:word(k + 1, "aircraft traffic planes flights of the")
+        and k + 2 or k + 1
+      -- ("all aircraft reduce 250", "everyone climb FL300": every aircraft flying, two or more, once the
+      -- speaker confirms them by their callsigns, a global request)
+      if all and not both and before == 0 and #self.fleet >= 2 and not self:word(k + 1, "of the") then
+        local list = {}
+        for n, a in ipairs(self.fleet) do ids[n], list[n] = a.id, a.id end
+        self:explain(k, e)
+        self:confirm_before(string.format("'%s' is every aircraft flying: %s. Send this to all %d? (yes or no)",
+          self:raw(k, e), table.concat(list, ", "), #list))
+        return ids
+      end
       if (both and before ~= 2) or (all and not (before >= 2 and before == #self.fleet)) then
-        self:need(string.format("Which aircraft does '%s' mean? Please give their callsigns.",
-          self:raw(k, self:word(k, "all each every") and self:word(k + 1, "aircraft traffic planes flights of the")
-            and k + 2 or k + 1)))
+        self:need(string.format("Which aircraft does '%s' mean? Please give their callsigns.", self:raw(k, e)))
         return ids
       end
     end

@@ -22636,3 +22636,15 @@ do
   asked(ex("DLH4AX turn right 090"), "a heading the long way round")
   asked(ex("DLH4AX right 280"), "a turn of 280 degrees or the heading straight behind")
 end
+
+-- Cycle 73 (lead, R306): "all aircraft reduce 250", "everyone climb FL300" asked for the callsigns: with no aircraft
+-- instructed before, "all" is every aircraft flying, confirmed by their callsigns (a global request), then sent to each
+do
+  local sim, ex = scene({ "CRE KLM1234 A320 52 4 90 FL200 250", "CRE BAW34 A320 52 5 90 FL200 250" })
+  local r = graph.translate("all aircraft reduce 250", { mode = "offline", sim = sim })
+  check(r.confirm ~= nil and r.ask ~= nil and r.ask:find("KLM1234, BAW34", 1, true) ~= nil,
+    "all aircraft: confirmed by callsign")
+  check_eq(r.confirm and table.concat(r.confirm.commands, " ; "), "SPD KLM1234 250 ; SPD BAW34 250")
+  asked(ex("everyone climb FL300"), "every aircraft flying, confirmed")
+  asked(ex("KLM1234 heading 270. all aircraft climb FL300"), "a group after an aircraft instructed alone")
+end
