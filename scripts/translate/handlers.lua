@@ -696,7 +696,7 @@ function m:acids(s)
       -- ("KLM12 heading 270, all climb FL300": "all" or "each" alone straight before the instruction's word is the
       -- group too)
       local both, all = self:word(k, "both"), self:word(k, "everyone everybody")
-        or (self:word(k, "all each every") and self:word(k + 1, "aircraft traffic planes flights of the"))
+        or (self:word(k, "all each every") and self:word(k + 1, "aircraft acft traffic planes flights of the"))
         or (self:word(k, "all each") and k == s.trig - 1)
       -- ("Siberia 2060 descend FL120, Siberia 2061 descend FL130, both reduce 250": "both" the two aircraft this
       -- request named before it, each told apart; another count of them named is asked)
@@ -716,7 +716,7 @@ function m:acids(s)
         for n, id in ipairs(named) do ids[n] = id end
         return ids
       end
-      local e = self:word(k, "all each every") and self:word(k + 1, "aircraft traffic planes flights of the")
+      local e = self:word(k, "all each every") and self:word(k + 1, "aircraft acft traffic planes flights of the")
         and k + 2 or k + 1
       -- ("all aircraft reduce 250", "everyone climb FL300": every aircraft flying, two or more, once the
       -- speaker confirms them by their callsigns, a global request)
