@@ -715,6 +715,8 @@ return {
     -- (in capitals an ident, "define a point EXPD at ...")
     expd = { word = "expedite", caps_kept = true }, expdt = { word = "expedite", caps_kept = true },
     til = { word = "until", not_prev = "legg" },
+    -- ("dt mult back to 1", "sim speed mult 2": the clock's multiplier)
+    mult = { word = "multiplier", prev = "dt time sim simulation speed" },
     maint = { word = "maintain", next = "#number fl flight speed spd heading hdg altitude alt level present own" },
     mnt = { word = "maintain", next = "#number fl flight speed spd heading hdg altitude alt level present own" },
     -- (the vowels left out of a level change: "dsnd 5000", "clmb fl240")

@@ -22648,3 +22648,10 @@ do
   asked(ex("everyone climb FL300"), "every aircraft flying, confirmed")
   asked(ex("KLM1234 heading 270. all aircraft climb FL300"), "a group after an aircraft instructed alone")
 end
+
+-- Cycle 73 (lead, R306): "dt mult back to 1", the clock's multiplier typed short after "dt"
+do
+  local _, ex = scene({ "CRE KLM1234 A320 52 4 90 FL200 250" })
+  check_eq(ex("dt mult back to 1"), "DTMULT 1")
+  check_eq(ex("set the dt mult to 2"), "DTMULT 2")
+end
