@@ -5458,6 +5458,8 @@ function G:vertical_resolutions(i)
     end
     return true
   end
+  -- ("head-on with vertical offset": the encounter's geometry told, no resolution's direction)
+  if self:word(i + 1, "offset offsets spacing geometry") then return false end
   return (self:word(i, "vertical") or horizontal_only) and self:word_in(1, #self.t + 1, reso)
     and (not self:word_in(1, #self.t + 1, sized) or self:word(i, "vertical") and sized_apart())
     -- (aircraft named, "KAL1001, AAR8103, conflict resolution vertical off": only with the resolution's word
@@ -9468,11 +9470,12 @@ function G:when_reached(s)
   end
   -- (the instruction's own word is no noun of the value reached: "after reach, speed 280")
   if k ~= s.trig and self:word(k, "it that height altitude level speed") then k = self:skip_fillers(k + 1) end
-  -- ("climb 8000 feet when reaching speed 200 knots": "speed" straight after the verb, no mark before the condition
-  -- or after the verb, may be the speed reached as well as the instruction: not read as the level reached; "climb
+  -- ("climb 8000 feet when reaching speed 200 knots", "climb FL380 when reaching Mach .84": "speed" or "Mach" straight
+  -- after the verb, no mark before the condition or after the verb, may be the speed reached as well as the
+  -- instruction: not read as the level reached; "climb
   -- FL350, on reaching speed M.78" opens a clause of its own, the level's)
   -- ("climb FL240 and after reaching speed 320": "and" before the condition marks it as a comma does)
-  if k == s.trig and k == verb + 1 and self:word(k, "speed")
+  if k == s.trig and k == verb + 1 and self:word(k, "speed mach")
       and not (self.t[c - 1] and self.t[c - 1].kind == "punct" or self:word(c - 1, "and")) then
     return false
   end

@@ -3242,8 +3242,11 @@ return function(intent, rule, words)
   rule { "resume", "vnav", when = function(g, i) return g:profile_speed_resumed(i) end }
   -- ("rejoin own navigation at NORKU": the rejoining's, a direct-to the waypoint)
   rule { "own", false, prev = { 2, "rejoin rejoining" }, near = { 3, "at to over by" } }
-  -- ("after they pass the CPA they should resume their own navigation": the resumption RESNAV reads, CPA named)
-  rule { "own", false, prev = { 8, "cpa" }, when = function(g, i) return g:word_in(math.max(1, i - 3), i, "resume resumes") end }
+  -- ("after they pass the CPA they should resume their own navigation", "resume own navigation after CPA": the
+  -- resumption RESNAV reads, CPA named beside it)
+  rule { "own", false, when = function(g, i)
+    return g:word_in(math.max(1, i - 3), i, "resume resumes") and g:word_in(math.max(1, i - 8), i + 6, "cpa")
+  end }
   rule { "own", "lnav", near = { 2, "navigation nav" } }  -- "its own (route) navigation"
   rule { "own", "lnav", next = "route", prev = { 3, "fly follow back resume" } }  -- "fly its own route again"
   rule { "back", false, prev = { 2, "read" } }  -- ("read me back your route": LISTRTE)

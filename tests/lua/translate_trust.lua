@@ -22655,3 +22655,17 @@ do
   check_eq(ex("dt mult back to 1"), "DTMULT 1")
   check_eq(ex("set the dt mult to 2"), "DTMULT 2")
 end
+
+-- Cycle 73 (lead, R309): "climb flight level 380 when reaching Mach .84" waited for the level and then flew the Mach:
+-- the Mach reached or flown, asked, as "when reaching speed 200 knots" is; "head-on with vertical offset" set RMETHV,
+-- the encounter's geometry read as the resolutions' direction; "resolution: resume own navigation after CPA" asked
+-- which aircraft should switch LNAV
+do
+  local _, ex = scene({ "CRE KLM645 B738 52 4 90 FL330 250", "CRE KLM646 B738 52 5 90 FL330 250" })
+  asked(ex("KLM645 climb flight level 380 when reaching Mach .84"), "a Mach reached or flown")
+  check_eq(ex("KLM645 climb FL380, on reaching Mach .84"), "ALT KLM645 FL380 ; ATALT KLM645 FL380 SPD KLM645 M0.84")
+  check_eq(ex("Run 3, head-on with vertical offset. Conflict detection on, resolution MVP, look-ahead 300 seconds."),
+    "ASAS ON ; RESO MVP ; DTLOOK 300")
+  check_eq(ex("conflict resolution vertical on"), "RMETHV V/S")
+  check_eq(ex("resolution: resume own navigation after CPA"), "RESNAV PASTCPA")
+end
