@@ -379,9 +379,11 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
       return true;
     }
     // a digit that speech recognition wrote as a word after the callsign's digits
-    // ("KLM one two three for descend") is that digit when the callsign with it is an aircraft's
+    // ("KLM one two three for descend") is that digit when the callsign with it is an aircraft's;
+    // "to" or "too" before a word is the infinitive's ("ask Air France one one four to climb")
     if (const size_t e = suf.ends.back();
-        e < t.size() && is_word(t[e]) && heard_digit(t[e].text) >= 0) {
+        e < t.size() && is_word(t[e]) && heard_digit(t[e].text) >= 0 &&
+        !((t[e].text == "to" || t[e].text == "too") && e + 1 < t.size() && is_word(t[e + 1]))) {
       if (const AircraftView* a = world_id(id + std::to_string(heard_digit(t[e].text)))) {
         id = a->id;
         end = e + 1;
