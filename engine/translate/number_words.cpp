@@ -50,9 +50,10 @@ bool speed_follows(const std::vector<Token>& t, size_t i) {
 }
 
 // True when "to" at i opens a latitude or longitude said in digits ("move UAL9 to four zero point
-// eight north", "move the Avianca two four to nine north"): as the digit two, with the digits said
-// straight before it, it would make a degree beyond the pole or the antimeridian (240.8 north, 2429
-// north).
+// eight north", "move the Avianca two four to nine north"), or the latitude of a pair said with
+// decimals and a comma between ("move Wizz Air three zero four one to four five decimal three,
+// eight decimal nine"): as the digit two, with the digits said straight before it, it would make a
+// degree beyond the pole or the antimeridian (240.8 north, 2429 north, 245.3 as a latitude).
 bool position_after_to(const std::vector<Token>& t, size_t i) {
   if (t[i].text != "to" && t[i].text != "too") return false;
   std::string before;
@@ -61,13 +62,20 @@ bool position_after_to(const std::vector<Token>& t, size_t i) {
   std::string digits;
   size_t j = i + 1;
   while (digit_at(t, j) >= 0) digits += static_cast<char>('0' + digit_at(t, j++));
+  bool decimals = false;
   if (is_word(t, j, "point") || is_word(t, j, "decimal")) {
     ++j;
-    while (digit_at(t, j) >= 0) ++j;
+    for (; digit_at(t, j) >= 0; ++j) decimals = true;
   }
-  const double limit = is_word(t, j, "north") || is_word(t, j, "south") ? 90.0
-                       : is_word(t, j, "east") || is_word(t, j, "west") ? 180.0
-                                                                        : 0.0;
+  // (a comma, then digits and a point or "decimal" with digits after it: a longitude follows)
+  bool pair = decimals && j < t.size() && t[j].kind == TokKind::kPunct && t[j].text == ",";
+  size_t k = j + 1;
+  while (pair && digit_at(t, k) >= 0) ++k;
+  pair = pair && k > j + 1 && (is_word(t, k, "point") || is_word(t, k, "decimal")) &&
+         digit_at(t, k + 1) >= 0;
+  const double limit = is_word(t, j, "north") || is_word(t, j, "south") || pair ? 90.0
+                       : is_word(t, j, "east") || is_word(t, j, "west")         ? 180.0
+                                                                                : 0.0;
   return limit > 0.0 && !digits.empty() &&
          std::strtod((before + "2" + digits).c_str(), nullptr) > limit &&
          std::strtod(digits.c_str(), nullptr) <= limit;

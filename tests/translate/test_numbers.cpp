@@ -289,6 +289,14 @@ TEST_CASE("digit homophones between digits are digits") {
   CHECK(read("climb for two thousand") == "climb for two thousand");
   CHECK(read("reduce speed to too fifty") == "reduce speed to two fifty");
   CHECK(read("it is too late") == "it is too late");
+  // "to" opening a position said after spoken digits stays "to" where "two" would put it past the
+  // pole: before a hemisphere, or before a latitude and longitude with decimals and a comma between
+  CHECK(read("ual nine to four zero point eight north") ==
+        "ual nine to four zero point eight north");
+  CHECK(read("three zero four one to four five decimal three, eight decimal nine") ==
+        "three zero four one to four five decimal three , eight decimal nine");
+  CHECK(read("three zero four one to four five decimal three") ==
+        "three zero four one two four five decimal three");
 }
 
 TEST_CASE("a word joined by hyphens of number words only is those words apart") {
