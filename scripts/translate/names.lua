@@ -82,6 +82,7 @@ local names = {
     { "nor shuttle", "NAX" },
     { "rednose", "NSZ" },  -- (Norwegian Air Sweden)
     { "whitestar", "SRR" },  -- (Star Air, Denmark)
+    { "flying doctor", "FD" },  -- (Royal Flying Doctor Service, Australia: FD and the flight number)
     { "wideroe", "WIF" },
     { "wizz air", "WZZ" },
     { "aeroflot", "AFL" },
