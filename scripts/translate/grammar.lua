@@ -10224,6 +10224,27 @@ function G:at_waypoint(s, spec)
       self.at_next = r
       return true
     end
+    -- ("reduce speed 280, at VOLET reduce 250", "descend FL200, after ODIKO descend FL90": an instruction, then a
+    -- clause opened by "at", "after" or "over" and a waypoint of the aircraft's route, behind a comma, "and" or
+    -- "then", holding a verb of the same instruction and its value: the first now, the second from the waypoint
+    -- (AT acid wp DO); one segment holds both, the second verb being of the same kind)
+    local verb2 = self:skip_fillers(r.e)
+    if lead > s.trig and self:word(lead, "at after over overhead") and #self:quantities(s.trig, lead) > 0
+        and self.t[lead - 1] and ((self.t[lead - 1].kind == "punct" and self.t[lead - 1].text == ",")
+          or self:word(lead - 1, "@then_words and"))
+        and verb2 < s.e and self:intent_at(verb2) == s.intent and #self:quantities(verb2, s.e) > 0
+        and spec and spec.handler and not self:in_reason(r.b) then
+      local ids2 = self:acids(s)
+      if #ids2 == 1 and self:on_route(ids2[1], r.name) then
+        self[spec.handler](self, { intent = s.intent, b = s.b, trig = s.trig, e = lead - 1 }, spec)
+        if self.ask then return true end
+        self:explain(lead - 1, r.e)
+        local n0 = #self.out
+        self[spec.handler](self, { intent = s.intent, b = verb2, trig = verb2, e = s.e }, spec)
+        if not self.ask then self:do_at(ids2[1], r.name, n0) end
+        return true
+      end
+    end
     -- ("reduce speed 220 knots at ARSOT", "slow to 210 at MIREI": a verb of speed, its one value, then "at" and a
     -- waypoint of the aircraft's route closing the segment: the change starts there, AT acid wp DO SPD)
     local ids = s.intent == "spd" and self:word(s.trig, "reduce slow increase") and self:word(r.b - 1, "at")
@@ -10904,6 +10925,15 @@ function G:uncarried()
     while self.t[k] and self.t[k].kind == "punct" and self.t[k].text ~= "," do k = k + 1 end
     return not self.t[k] and not self:in_reason(q.b)
   end
+  -- (a height in feet after "by" that joins it to a distance said straight before it, "5 nm by 1000 ft", is a
+  -- protected zone's two dimensions, no change "by" an amount: the distance where that is untaken, else nil)
+  local function zone_pair(q)
+    if not (q.by and q.kind == "alt" and not q.fl) then return nil end
+    for _, p in ipairs(self:quantities(math.max(1, q.b - 4), q.b - 1)) do
+      if p.kind == "dist" and p.e == q.b - 1 and not self.taken[p.b] then return p end
+    end
+    return nil
+  end
   for _, q in ipairs(self:quantities(1, #self.t + 1)) do
     -- (a plain number with a decimal point is a coordinate; one of two digits or more said after the first
     -- instruction word is a value said for an instruction, "descend FL130, reducing 250", never dropped in
@@ -10929,10 +10959,11 @@ function G:uncarried()
     if (MUST_CARRY[q.kind] or (q.kind == "dist" and closing(q)) or (q.kind == "plain" and (q.number.decimal or at
           or (q.value >= 10 and (q.b > first or said_for_aircraft(q))))))
         and not self.taken[q.b]
-        and not ((q.by or (relative and not bound)) and not position(q)) and q.b > corrected
+        and not ((q.by or (relative and not bound)) and not zone_pair(q) and not position(q)) and q.b > corrected
         and not (value_carried(q, q.kind == "time" and times or nums, true) and not said_again(q))
         and not self:label_number(q, true) then
-      self.leftover = self:raw(at or (self:at_clause(q) and q.b - 1) or q.b, q.e)
+      local pair = zone_pair(q)
+      self.leftover = self:raw(pair and pair.b or at or (self:at_clause(q) and q.b - 1) or q.b, q.e)
       return
     end
   end

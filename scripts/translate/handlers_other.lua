@@ -4570,10 +4570,14 @@ return function(H, f, compass)
       self:emit(spec.cmd .. " " .. on_off(self, s))
     end
     if spec.cmd ~= "ASAS" then return end
-    -- "turn on CD with 5 nm and 1000 ft": the protected zone's radius and half height
-    for _, q in ipairs(self:quantities(s.trig, s.e)) do
-      if q.kind == "dist" then self:emit("ZONER " .. f.num(self:take(q).value)) end
-      if q.kind == "alt" and not q.fl and self:word(q.e - 1, "@feet") then
+    self:zone_said_with(s.trig, s.e)
+  end
+  -- "turn on CD with 5 nm and 1000 ft", "MVP, 5 nm by 1000 ft": a distance and a height in feet said in the
+  -- segment of a conflict switch, tokens b .. e-1, are the protected zone's radius (ZONER) and half height (ZONEDH)
+  function m:zone_said_with(b, e)
+    for _, q in ipairs(self:quantities(b, e)) do
+      if q.kind == "dist" and not self.taken[q.b] then self:emit("ZONER " .. f.num(self:take(q).value)) end
+      if q.kind == "alt" and not q.fl and not self.taken[q.b] and self:word(q.e - 1, "@feet") then
         self:emit("ZONEDH " .. f.num(self:take(q).value))
       end
     end
@@ -5258,7 +5262,10 @@ return function(H, f, compass)
       self:explain(mvp, mvp + 1)
       return self:emit("RESO OFF")
     end
-    if self:word_in(1, #self.t + 1, "mvp") or self:word_in(b, s.e, "@mvp") then return self:emit("RESO MVP") end
+    if self:word_in(1, #self.t + 1, "mvp") or self:word_in(b, s.e, "@mvp") then
+      self:emit("RESO MVP")
+      return self:zone_said_with(s.trig, s.e)
+    end
     -- ("switch on the conflict detection, but without resolution", "detection on, no resolution": "without" or
     -- "no" straight before the noun, detection switched on in the request, asks for detection alone; with no
     -- method set now ASAS ON detects only, and the words explain it; a method set now is switched off)

@@ -22669,3 +22669,34 @@ do
   check_eq(ex("conflict resolution vertical on"), "RMETHV V/S")
   check_eq(ex("resolution: resume own navigation after CPA"), "RESNAV PASTCPA")
 end
+
+-- Cycle 74 (lead, R309's open hazard): "conflict detection on, MVP, 5 nm by 1000 ft" dropped the zone in silence,
+-- the method's segment holding the values and "by 1000 ft" passing for a change by an amount. A distance and a
+-- height in feet after the method are the protected zone, as after the detection; the pair said anywhere no
+-- command takes it is asked about whole; "climb by 1000 ft" stays a change
+do
+  local _, ex = scene({ "CRE KLM645 B738 52 4 90 FL250 280", "CRE KLM646 B738 52.3 4.3 270 FL250 280" })
+  check_eq(ex("conflict detection on, MVP, 5 nm by 1000 ft, look ahead 4 minutes"),
+    "ASAS ON ; RESO MVP ; ZONER 5 ; ZONEDH 1000 ; DTLOOK 240")
+  check_eq(ex("MVP on, 6 nm, 1500 ft"), "RESO MVP ; ZONER 6 ; ZONEDH 1500")
+  check_eq(ex("pause, 5 nm by 1000 ft"), "ASK I have HOLD. What does '5 nm by 1000 ft' mean?")
+  check_eq(ex("KLM645 climb FL300, 5 nm by 1000 ft"), "ASK I have ALT KLM645 FL300. What does '5 nm by 1000 ft' mean?")
+  check_eq(ex("KLM645 climb by 1000 ft"), "ALT KLM645 26000")
+end
+
+-- Cycle 74 (lead, R308 and R300): an instruction and, behind a comma, "at WPT" of the route with a verb of the same
+-- kind ("reduce speed 280, at VOLET reduce 250"): the first now, the second from the waypoint (one segment held
+-- both and asked); a position in digit words with "decimal" and a comma after a callsign said in digits, "to" no
+-- digit two; the Royal Flying Doctor Service's "Flying Doctor" before FD's flight number
+do
+  local _, ex = scene({ "DEFWPT VENDA 45.6 11.5", "DEFWPT VOLET 45.4 11.7", "DEFWPT EDEMO 45.2 11.9",
+    "CRE DLH9KP A321 45.70 11.30 150 FL250 300", "ADDWPT DLH9KP VENDA", "ADDWPT DLH9KP VOLET", "ADDWPT DLH9KP EDEMO",
+    "CRE WZZ3041 A320 45.1 11.3 150 FL250 300", "CRE FD408 PC12 45.3 11.0 045 FL180 230" })
+  check_eq(ex("Lufthansa nine kilo papa, reduce speed two eight zero, at VOLET reduce two five zero"),
+    "SPD DLH9KP 280 ; AT DLH9KP VOLET DO SPD DLH9KP 250")
+  check_eq(ex("DLH9KP descend FL200, after VOLET descend FL150"), "ALT DLH9KP FL200 ; AT DLH9KP VOLET DO ALT DLH9KP FL150")
+  asked(ex("DLH9KP reduce speed 280, at BASSO reduce 250"), "a waypoint off the route")
+  check_eq(ex("move Wizz Air three zero four one to four five decimal three, eight decimal nine"), "MOVE WZZ3041 45.3 8.9")
+  check_eq(ex("Flying Doctor four zero eight, climb flight level two two zero"), "ALT FD408 FL220")
+  check_eq(ex("Flying Doctor 48 climb FL220"), "ASK Did you mean FD408? I heard FD48.")
+end
