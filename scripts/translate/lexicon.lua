@@ -2219,8 +2219,9 @@ return {
     -- "land 27 left", "runway 09 right", "rwy two seven": a runway named by its number straight after the word
     -- (the side after it is the runway's, never a turn: G:runway_sides)
     { what = "approach clearances", words = "land landing runway rwy", near = { "#number" }, window = 1 },
+    -- ("join the river visual runway one niner": a named visual approach joined, its name before "visual")
     { what = "approach clearances", words = "intercept established join",
-      near = { "localizer", "localiser", "glideslope", "ils", "final" } },
+      near = { "localizer", "localiser", "glideslope", "ils", "final", "visual" } },
     { what = "altimeter settings", words = "altimeter qnh qfe", one_value = true },
     -- ("..., radar service terminated", "radar services limited": the service the controller gives, told the pilot)
     { what = "radar services", words = "service services", near = { "terminated", "terminating", "limited", "radar" },

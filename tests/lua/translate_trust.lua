@@ -22700,3 +22700,11 @@ do
   check_eq(ex("Flying Doctor four zero eight, climb flight level two two zero"), "ALT FD408 FL220")
   check_eq(ex("Flying Doctor 48 climb FL220"), "ASK Did you mean FD408? I heard FD48.")
 end
+
+-- Cycle 74 (lead, R310): a named visual approach joined ("join the river visual runway one niner") is an approach
+-- clearance squawk does not simulate, its name with it; the heading beside it runs
+do
+  local _, ex = scene({ "CRE JBU1125 A320 40.7 -74 090 5000 250" })
+  check_eq(ex("JetBlue eleven twenty five fly heading three one zero, join the river visual runway one niner"),
+    "HDG JBU1125 310")
+end
