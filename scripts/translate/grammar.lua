@@ -5447,7 +5447,8 @@ function G:vertical_resolutions(i)
   -- ("horizontal only", "purely horizontal", "MVP resolutions remain horizontal": horizontal alone)
   local horizontal_only = self:word(i, "horizontal lateral") and (self:word_in(math.max(1, i - 2), i + 4, "only")
     or self:word(i - 1, "purely strictly solely exclusively remain remains stay stays"))
-  local sized, reso = "factor margin zone pz rpz zonedh separation sep", "resolution resolutions reso mvp resolver"
+  local sized = "factor factors margin margins zone zones pz rpz zonedh separation sep"
+  local reso = "resolution resolutions reso mvp resolver"
   local function sized_apart()
     if not self:word(i + 1, "resolution resolutions manoeuvres maneuvers manoeuvre maneuver") then return false end
     local lo, hi = self:clause_around(i)

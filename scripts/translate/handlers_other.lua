@@ -5307,7 +5307,7 @@ return function(H, f, compass)
     if self:asks_setting(true) then return self:emit(kind(s.e) or "RFACH") end
     local before = #self.out
     -- ("a 20 percent margin": a margin in percent, said before the noun, is the factor 1.2)
-    local by_margin = self:word(s.trig, "margin")
+    local by_margin = self:word(s.trig, "margin margins")
     for _, q in ipairs(self:quantities(by_margin and s.b or s.trig, s.e)) do
       -- ("the vertical one": a pronoun, no value)
       local pronoun = self.t[q.b].text == "one" and self:word(q.b - 1, "vertical horizontal lateral")
@@ -5316,8 +5316,9 @@ return function(H, f, compass)
       local factor = by_margin and q.kind == "plain" and not pronoun and q.b > s.trig and q.value >= 1 and q.value <= 3
       if (q.kind == "plain" and not pronoun and not by_margin) or margin or factor then
         -- ("the resolution factor to 1.2 for the horizontal dimension": the kind said after the value, "for" or
-        -- "in" before it)
+        -- "in" before it; a margin's after the noun, "add 10% margin on the horizontal resolution")
         local cmd = kind(q.b) or (self:word(q.e, "for in") and kind(math.min(s.e, q.e + 4)))
+          or (margin and self:word(s.trig + 1, "on for of to in") and kind(math.min(s.e, s.trig + 5)))
         local value = margin and 1 + q.value / 100 or q.value
         if not cmd then
           return self:need(string.format("Should the horizontal or the vertical safety factor be %s?", f.num(value)))
@@ -5582,6 +5583,14 @@ return function(H, f, compass)
   function m:trail(s)
     local at = self:find_word(s.b, s.e, "@trail_colours")
     if at < s.e then
+      -- ("trails on and make Delta 1422's trail red": the trails switched before "and" or a comma, the colour after
+      -- it; both run, the switch first)
+      local cut = at - 1
+      while cut > s.b and not (self:word(cut, "and") or self.t[cut].text == ",") do cut = cut - 1 end
+      if cut > s.trig and self:on_off({ b = s.b, e = cut, trig = s.trig }) >= 0 then
+        self:emit("TRAIL " .. (self:on_off({ b = s.b, e = cut, trig = s.trig }) == 1 and "ON" or "OFF"))
+        s = { b = cut + 1, e = s.e, trig = at, intent = s.intent }
+      end
       local id = self:acid(s, "get a trail colour")
       if id then self:emit("TRAIL " .. id .. " " .. self.t[at].text:upper()) end
       return

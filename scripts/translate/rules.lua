@@ -513,6 +513,8 @@ return function(intent, rule, words)
   -- "lose the Air Europa", "lose KLM12": an aircraft that flies lost from the simulation, nothing after it
   -- ("lose 2000 feet", "lose the speed" name no aircraft)
   rule { "lose", "delete", when = function(g, i) return aircraft_alone(g, g:skip_fillers(i + 1), true) end }
+  -- ("KLM1234 should drop to 250 knots": a speed's unit straight after the value names the speed dropped)
+  rule { "drop", "spd", near = { 3, "knots kts kt knot" } }
   rule { "drop", "alt", not_near = { 2, "speed" } }
   -- "slow the Ryanair down to 250", "speed it up to 300": the particle of a speed verb, its
   -- aircraft between them, is no change of level
@@ -3760,11 +3762,15 @@ return function(intent, rule, words)
     return p ~= nil and p.kind == "punct" and (p.text == ":" or p.text == "-") and g:word(i + 2, "on off mvp")
   end }
   -- "vertical resolution factor 1.1", "horizontal reso safety factor to 1.15": the safety factor
-  rule { "resolution resolve reso resolutions resolver", false, near = { 3, "factor" } }
-  rule { "factor", "rfac", prev = { 4, "resolution resolutions reso resolve safety" } }
+  -- ("resolution factors: horizontal 1.2, vertical 1.1": both named by the plural)
+  rule { "resolution resolve reso resolutions resolver", false, near = { 3, "factor factors" } }
+  rule { "factor factors", "rfac", prev = { 4, "resolution resolutions reso resolve safety" } }
   -- "give the horizontal resolutions a 20 percent margin": the safety factor said as a margin in percent
-  rule { "resolution resolve reso resolutions resolver", false, near = { 5, "margin" } }
-  rule { "margin", "rfac", prev = { 5, "resolution resolutions reso resolve" }, not_near = { 1, "factor" } }
+  rule { "resolution resolve reso resolutions resolver", false, near = { 5, "margin margins" } }
+  rule { "margin margins", "rfac", prev = { 5, "resolution resolutions reso resolve" }, not_near = { 1, "factor" } }
+  -- ("add 10% margin on the horizontal resolution": the margin said before the resolutions it widens)
+  rule { "resolution resolve reso resolutions resolver", false, prev = { 4, "margin margins" } }
+  rule { "margin margins", "rfac", near = { 4, "resolution resolutions reso" }, not_near = { 1, "factor" } }
   -- "Resolution method MVP, horizontal factor 1.2": a factor of a direction, resolution said before
   -- ("please make vertical factor 1.05 also": said alone, no aircraft named, the only factor squawk sets of a
   -- direction is the resolutions')

@@ -22708,3 +22708,18 @@ do
   check_eq(ex("JetBlue eleven twenty five fly heading three one zero, join the river visual runway one niner"),
     "HDG JBU1125 310")
 end
+
+-- Cycle 74 (lead, R316): "trails on and make Delta 1422's trail red" dropped the switch (one segment held both: the
+-- colour alone ran); "resolution factors: horizontal 1.2, vertical 1.1" set RMETHV V/S ("vertical" read as the
+-- resolutions' direction, the plural "factors" not known as a factor); "add 10% margin on the horizontal resolution"
+-- set RESO MVP; "should drop to 250 knots" asked for a level
+do
+  local _, ex = scene({ "CRE DAL1422 B739 40.00 -73.60 340 12000 280", "CRE JBU615 A320 41.60 -72.60 240 FL190 290" })
+  check_eq(ex("trails on and make Delta 1422's trail red"), "TRAIL ON ; TRAIL DAL1422 RED")
+  check_eq(ex("DAL1422 trail red and JBU615 trail blue"), "TRAIL DAL1422 RED ; TRAIL JBU615 BLUE")
+  check_eq(ex("resolution factors: horizontal 1.2, vertical 1.1"), "RFACH 1.2 ; RFACV 1.1")
+  check_eq(ex("add 10% margin on the horizontal resolution"), "RFACH 1.1")
+  asked(ex("add 10% margin on the resolution"), "a margin of no direction")
+  check_eq(ex("DAL1422 drop to 250 knots"), "SPD DAL1422 250")
+  check_eq(ex("DAL1422 drop to 8000 ft"), "ALT DAL1422 8000")
+end
