@@ -10926,6 +10926,17 @@ function G:uncarried()
     while self.t[k] and self.t[k].kind == "punct" and self.t[k].text ~= "," do k = k + 1 end
     return not self.t[k] and not self:in_reason(q.b)
   end
+  -- (a distance said before a compass point, "fly 30 nm due east", that no command takes beside a heading is how far
+  -- to fly that way, which the heading does not carry: asked; "30 nm east of ARTIP" places a point, read elsewhere,
+  -- and "a waypoint 100 km north: add 51.4 5.0" describes the position given)
+  local heading = false
+  for _, line in ipairs(self.out) do heading = heading or line:find("HDG ", 1, true) ~= nil end
+  local function toward(q)
+    local k = self:word(q.e, "due") and q.e + 1 or q.e
+    return heading and q.kind == "dist" and self.t[k] and lexicon.compass[self.t[k].text] ~= nil
+      and not self:word(k + 1, "of")
+      and not (self.explained or {})[q.b] and not self.u:used(q.b)
+  end
   -- (a height in feet after "by" that joins it to a distance said straight before it, "5 nm by 1000 ft", is a
   -- protected zone's two dimensions, no change "by" an amount: the distance where that is untaken, else nil)
   local function zone_pair(q)
@@ -10957,7 +10968,7 @@ function G:uncarried()
         bound = bound and (k == q.b - 1 or (k >= q.b and k < q.e) or self.t[k].filler)
       end
     end
-    if (MUST_CARRY[q.kind] or (q.kind == "dist" and closing(q)) or (q.kind == "plain" and (q.number.decimal or at
+    if (MUST_CARRY[q.kind] or (q.kind == "dist" and (closing(q) or toward(q))) or (q.kind == "plain" and (q.number.decimal or at
           or (q.value >= 10 and (q.b > first or said_for_aircraft(q))))))
         and not self.taken[q.b]
         and not ((q.by or (relative and not bound)) and not zone_pair(q) and not position(q)) and q.b > corrected

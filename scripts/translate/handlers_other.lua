@@ -1066,6 +1066,11 @@ return function(H, f, compass)
         local la, lo = great_circle_offset(a.lat, a.lon, a.hdg_deg + side, q.value)
         return la, lo, r.name
       end
+      -- ("30 nm due north": "due" before the compass point)
+      if q.kind == "dist" and self:word(k, "due") and self.t[k + 1] and L.compass[self.t[k + 1].text] then
+        self:explain(k, k + 1)
+        k, t = k + 1, self.t[k + 1]
+      end
       -- ("10 nm further north": on from where the aircraft is)
       local further = self:word(k, "further farther") and not self:word(k + 2, "of") and self.t[k + 1]
       further = further and further.kind == "word" and L.compass[further.text] and further

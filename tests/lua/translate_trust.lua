@@ -22723,3 +22723,12 @@ do
   check_eq(ex("DAL1422 drop to 250 knots"), "SPD DAL1422 250")
   check_eq(ex("DAL1422 drop to 8000 ft"), "ALT DAL1422 8000")
 end
+
+-- Cycle 74 (lead, R316): "shift SWR1066 30 nm due north" is a move by that offset, "due" before the compass point;
+-- "fly 30 nm due east" flew the heading with the distance dropped: asked, naming it
+do
+  local _, ex = scene({ "CRE SWR1066 A20N 49.70 8.60 0 FL120 260" })
+  check_eq(ex("shift SWR1066 30 nm due north, keep everything else"), "MOVE SWR1066 50.199663 8.6")
+  check_eq(ex("SWR1066 fly 30 nm due east"), "ASK I have HDG SWR1066 90. What does '30 nm' mean?")
+  check_eq(ex("SWR1066 fly due east"), "HDG SWR1066 90")
+end
