@@ -5601,6 +5601,12 @@ return function(H, f, compass)
       return
     end
     local q = first(self, s, { time = true })
+    -- ("trails on, one dot every 5 seconds": the trail's points named by what they look like, one per interval)
+    for k = s.b, q and q.b or 0 do
+      if self:word(k, "dot dots blip blips") and self:word_in(k + 1, q.b, "every each per") then
+        self:explain(self:word(k - 1, "one a") and k - 1 or k, k + 1)
+      end
+    end
     -- ("clear trails": neither shown nor hidden said, no interval and no switch before it: asked)
     -- ("draw trails behind the aircraft", "display the trails", "give every plane a trail", "add trail lines",
     -- "set up trails for all tracks", "to see the trails displayed": shown)

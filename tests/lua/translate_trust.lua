@@ -22722,6 +22722,8 @@ do
   asked(ex("add 10% margin on the resolution"), "a margin of no direction")
   check_eq(ex("DAL1422 drop to 250 knots"), "SPD DAL1422 250")
   check_eq(ex("DAL1422 drop to 8000 ft"), "ALT DAL1422 8000")
+  check_eq(ex("trails on, one dot every 5 seconds"), "TRAIL ON 5")
+  check_eq(ex("trails on, dots"), "ASK I have TRAIL ON. What does 'dots' mean?")
 end
 
 -- Cycle 74 (lead, R316): "shift SWR1066 30 nm due north" is a move by that offset, "due" before the compass point;
