@@ -8869,11 +8869,18 @@ function G:valueless_left(segs, valueless, issued_by)
     -- value's name there, "back to real time speed", "state (alt, spd, hdg)", is the other command's)
     if not next(issued) and not self:word(s.trig, "@clause_verbs") then goto next_valueless end
     local bare = s.intent ~= "vs"
+    -- (the words of a callsign said, "Air India eight six five turn left heading, descend ...", each of them)
+    local called = {}
+    for _, r in ipairs(self.refs) do
+      for i = r.kind == "aircraft" and r.b or 1, r.kind == "aircraft" and r.e - 1 or 0 do called[i] = true end
+    end
     for i = s.b, s.e - 1 do
       local t = self.t[i]
-      -- ("off" after its instruction word is that word's: "and level off")
+      -- ("off" after its instruction word is that word's: "and level off"; "fly" straight before it is its verb:
+      -- "fly heading, descend FL180")
       bare = bare and (t.kind ~= "word" or t.filler or self.triggers[i] or (t.text == "off" and self.triggers[i - 1])
-        or self:word(i, "@left @right @up @down and then") or self:has_ref(i, i + 1, "aircraft")
+        or (t.text == "fly" and self.triggers[i + 1])
+        or self:word(i, "@left @right @up @down and then") or self:has_ref(i, i + 1, "aircraft") or called[i]
         -- ("speed up a bit", "slow down slightly": a degree of no size is no value either)
         or self:word(i, "@vague_direction") or (self:word(i, "a") and self:word(i + 1, "@vague_direction"))
         -- ("climb fl, spd 290", "descend flight level, ...": a level's noun straight after its verb, no value)
@@ -8885,6 +8892,9 @@ function G:valueless_left(segs, valueless, issued_by)
     for i = math.max(1, s.trig - 2), s.trig - 1 do refused = refused or G.negations[self.t[i].text] end
     local next_word = self:skip_fillers(s.trig + 1)
     if self:word(next_word, "the") then next_word = self:skip_fillers(next_word + 1) end
+    -- (a mark between ends it: "fly heading, descend FL180" gives the heading no value)
+    local marked = false
+    for i = s.trig + 1, next_word - 1 do marked = marked or self.t[i].kind == "punct" end
     -- ("no restriction on speed", "no ATC restrictions on your speed": the restriction lifted, its noun said last)
     local k = self:word(s.trig - 1, "the your its") and s.trig - 2 or s.trig - 1
     local r = self:word(k - 1, "restriction restrictions limit limits") and k - 1
@@ -8899,7 +8909,7 @@ function G:valueless_left(segs, valueless, issued_by)
     end
     local read = not bare or refused or lifted
       or (before and issued_by[v.k - 1] and self:skip_fillers(before.trig + 1) == s.trig)
-      or (after and issued_by[v.k + 1] and next_word == after.trig)
+      or (after and issued_by[v.k + 1] and next_word == after.trig and not marked)
     for verb in (G.value_intents[s.intent] or ""):gmatch("%u+") do read = read or issued[verb] end
     for j, o in ipairs(segs) do
       if issued_by[j] and G.value_intents[o.intent] == G.value_intents[s.intent] and against(s.trig, o.trig) then

@@ -692,6 +692,15 @@ return function(intent, rule, words)
     if g:word(verb - 1, "on when once") then verb = verb - 1 end
     return not g:word(verb - 1, "report") and g:any_instruction_in(1, verb)
   end }
+  -- "climb flight level two four zero, mach point eight four when level": a Mach number said with no verb after a
+  -- comma, a condition straight after it, is a speed instruction of its own, which waits as the condition says
+  rule { "mach", "spd", when = function(g, i)
+    local q = g:quantities(i, math.min(#g.t + 1, i + 4))[1]
+    if not (q and q.kind == "mach" and q.b == i) then return false end
+    local k = i - 1
+    while k >= 1 and g.t[k].filler do k = k - 1 end
+    return g.t[k] ~= nil and g.t[k].text == "," and g:word(q.e, "when once on") and g:any_instruction_in(1, k)
+  end }
   -- "speed 290 knots until AKELI, then Mach .84", "reduce 250 knots, then Mach point seven eight": a Mach number said
   -- with no verb straight after "then", in a request that gave a speed before it, is the next speed instruction
   rule { "mach", "spd", prev = { 2, "then" }, when = function(g, i)

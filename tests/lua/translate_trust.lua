@@ -22734,3 +22734,19 @@ do
   check_eq(ex("SWR1066 fly 30 nm due east"), "ASK I have HDG SWR1066 90. What does '30 nm' mean?")
   check_eq(ex("SWR1066 fly due east"), "HDG SWR1066 90")
 end
+
+-- Cycle 74 (lead, R317): "Air India eight six five turn left heading, descend FL 1 8 0" dropped the turn with no
+-- heading (the callsign's spoken digits read as words that explained it), and so did "fly heading, descend FL180" (the
+-- next instruction's word after a comma read as the heading's): asked; "climb flight level two four zero, mach point
+-- eight four when level" asked which level the Mach waits for: a Mach with no verb after a comma, a condition after
+-- it, is a speed instruction of its own
+do
+  local _, ex = scene({ "CRE AIC865 B788 19.90 72.50 160 FL210 300", "CRE SIA22 A359 1.3 103.8 140 FL200 270" })
+  check_eq(ex("Air India eight six five turn left heading, descend FL 1 8 0"),
+    "ASK I have ALT AIC865 FL180. What heading should AIC865 fly?")
+  check_eq(ex("AIC865 fly heading, descend FL180"), "ASK I have ALT AIC865 FL180. What heading should AIC865 fly?")
+  check_eq(ex("AIC865 increase the heading by 30"), "HDG AIC865 190 RIGHT")
+  check_eq(ex("Singapore two two climb flight level two four zero, mach point eight four when level"),
+    "ALT SIA22 FL240 ; ATALT SIA22 FL240 SPD SIA22 M0.84")
+  check_eq(ex("SIA22 climb FL240, mach .84"), "ALT SIA22 FL240 ; SPD SIA22 M0.84")
+end
