@@ -82,7 +82,8 @@ local names = {
     { "nor shuttle", "NAX" },
     { "rednose", "NSZ" },  -- (Norwegian Air Sweden)
     { "whitestar", "SRR" },  -- (Star Air, Denmark)
-    { "flying doctor", "FD" },  -- (Royal Flying Doctor Service, Australia: FD and the flight number)
+    { "flying doctor", "FD" },
+    { "aer arann", "REA" },  -- (Aer Arann, Ireland's regional airline, Aer Lingus Regional)  -- (Royal Flying Doctor Service, Australia: FD and the flight number)
     { "wideroe", "WIF" },
     { "wizz air", "WZZ" },
     { "aeroflot", "AFL" },

@@ -3495,6 +3495,16 @@ return function(intent, rule, words)
   -- "fast forward the scenario by 10 minutes", "pause the scenario": the scenario running, the object of a
   -- verb of the clock, no file to load
   rule { "scenario", false, prev = { 2, "forward ff pause freeze unfreeze unpause resume continue hold" } }
+  -- "I've now set up an Irish scenario", "we have loaded the scenario": the speaker's own doing told, in the
+  -- perfect, no file to load
+  rule { "scenario", false, when = function(g, i)
+    for k = math.max(1, i - 6), i - 1 do
+      if g:word(k, "i've ive we've weve") or (g:word(k, "have") and g:word(k - 1, "i we")) then return true end
+    end
+    return false
+  end }
+  -- ("I need finer resolution for my analysis": the detail of the results, no conflict resolution)
+  rule { "resolution", false, prev = { 1, "finer fine higher better coarser lower temporal time" } }
   -- "20 random aircraft for background load", "more traffic load": the noun, no file loaded
   rule { "load", false, prev = { 1, "background traffic high low heavy light more extra" } }
   -- "conflict detection open please", "open the conflict resolution": a conflict setting switched on (handlers'

@@ -22750,3 +22750,16 @@ do
     "ALT SIA22 FL240 ; ATALT SIA22 FL240 SPD SIA22 M0.84")
   check_eq(ex("SIA22 climb FL240, mach .84"), "ALT SIA22 FL240 ; SPD SIA22 M0.84")
 end
+
+-- Cycle 74 (lead, R314): Aer Arann's telephony; "I've now set up an Irish scenario" told what the speaker did, no file
+-- to load; "I need finer resolution for my analysis" after a time step is no conflict resolution
+do
+  local _, ex = scene({ "CRE EIN3AC A320 53.40 -5.00 270 FL170 280", "CRE REA3201 AT76 53.55 -6.60 200 FL080 220" })
+  check_eq(ex("Could you slow Aer Arann 3201 to 200 knots, please? It's a turboprop, so that seems more realistic."),
+    "SPD REA3201 200")
+  check_eq(ex("Hello, I've now set up an Irish scenario. Could you please turn Shamrock three alpha charlie left heading 250?"),
+    "HDG EIN3AC 250 LEFT")
+  check_eq(ex("Could you please set the simulation time step to 0.1 seconds? I need finer resolution for my analysis."),
+    "DT 0.1")
+  asked(ex("load the scenario demo.scn"), "a scenario loaded is confirmed")
+end
