@@ -71,8 +71,9 @@
 //   sim:snapshot()       -> string            (the full state as bytes)
 //   squawk.sim.commands() -> { {name=, aliases={...}, args=, usage=, help=}, ... }
 //   squawk.sim.types() -> { {designator=, title= (OpenAP's name, "Boeing 777-300ER"; nil
-//       for synonyms and the class model), model = "openap"|"class", class=}, ... }: the
-//       OpenAP data of $SQUAWK_OPENAP / --openap, then the class model's named designators
+//       for synonyms and the class model), model = "openap"|"class", class=, vmax_kt= (the
+//       class model's CAS limit [kt]; nil for OpenAP)}, ... }: the OpenAP data of
+//       $SQUAWK_OPENAP / --openap, then the class model's named designators
 #include <algorithm>
 #include <cmath>
 #include <optional>
@@ -88,6 +89,7 @@
 #include "core/geo.h"
 #include "core/paths.h"
 #include "core/text.h"
+#include "core/units.h"
 #include "script/bindings.h"
 #include "script/lua_fields.h"
 #include "script/lua_util.h"
@@ -562,17 +564,24 @@ int l_snapshot(lua_State* L) {
 int l_types(lua_State* L) {
   lua_newtable(L);
   int k = 0;
-  auto push = [&](std::string_view designator, const std::string& title, const char* model, const char* cls) {
-    lua_createtable(L, 0, 4);
+  auto push = [&](std::string_view designator, const std::string& title, const char* model,
+                  const char* cls, double vmax_mps) {
+    lua_createtable(L, 0, 5);
     set_string(L, "designator", std::string(designator));
     if (!title.empty()) set_string(L, "title", title);
     set_string(L, "model", model);
     set_string(L, "class", cls);
+    if (vmax_mps > 0) {
+      lua_pushnumber(L, vmax_mps / units::kKt);
+      lua_setfield(L, -2, "vmax_kt");
+    }
     lua_rawseti(L, -2, ++k);
   };
   if (const auto oap = sim::default_openap())
-    for (const auto& [designator, title] : oap->titles()) push(designator, title, "openap", "jet");
-  for (const auto& [designator, cls] : sim::class_model_types()) push(designator, "", "class", sim::perf_class_name(cls));
+    for (const auto& [designator, title] : oap->titles())
+      push(designator, title, "openap", "jet", 0);
+  for (const auto& [designator, cls] : sim::class_model_types())
+    push(designator, "", "class", sim::perf_class_name(cls), sim::perf_limits(cls).vmax);
   return 1;
 }
 

@@ -334,6 +334,15 @@ std::optional<SpokenNumber> read_number(const std::vector<Token>& t, size_t i) {
       ++n.groups;
       any = true;
       ++j;
+    } else if (w == "hundred" && !any && i > 0 && is_word(t, i - 1, "level")) {
+      // "flight level hundred", "level hundred and ten": the hundred of a flight level said without
+      // its one
+      acc = 100.0;
+      n.digits += "1";
+      ++n.groups;
+      n.has_hundred = true;
+      any = true;
+      ++j;
     } else if (w == "hundred" && any && !cur.empty()) {
       acc += value_of(cur) * 100.0;
       cur.clear();

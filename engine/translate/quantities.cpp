@@ -180,9 +180,13 @@ std::vector<Quantity> extract_quantities(const std::vector<Token>& t, size_t beg
     if (q.kind == QKind::kPlain || q.kind == QKind::kAlt || q.kind == QKind::kMach) {
       if (word_at(t, j, {"ft", "feet", "foot"})) {
         ++j;
-        if (word_at(t, j, {"per", "a", "for"}) && word_at(t, j + 1, {"minute", "min", "mn"})) {  // "feet a minute"
+        // "feet a minute", "feet each minute", "feet the minute", "feet in the minute" (French "par
+        // minute", Spanish "en el minuto")
+        const size_t in = word_at(t, j, {"in"}) && word_at(t, j + 1, {"the"}) ? 1 : 0;
+        if (word_at(t, j + in, {"per", "a", "for", "each", "every", "the"}) &&
+            word_at(t, j + in + 1, {"minute", "min", "mn"})) {
           q.kind = QKind::kVs;
-          j += 2;
+          j += 2 + in;
         } else if (q.kind != QKind::kAlt) {
           q.kind = QKind::kAlt;
         }

@@ -2437,6 +2437,27 @@ function G.cut_off_restarts(text)
   end
   return text
 end
+-- A word said again after a hesitation ("until, uh, until five miles final", "descend, er, descend FL80"): a word
+-- of letters, hesitations (lexicon.hesitations) and commas, then the same word: the first is dropped with them (a
+-- digit word so said may be a digit more: "two, uh, two five zero" stays as said).
+function G.repeated_restarts(text)
+  local low, hesitant = text:lower(), false
+  for _, h in ipairs(G.hesitation_patterns) do
+    if low:find(h.word, 1, true) and low:find(h.pattern) then hesitant = true break end
+  end
+  if not hesitant then return text end
+  local toks = {}
+  for w in text:gmatch("%S+") do toks[#toks + 1] = w end
+  local function bare(k) return toks[k] and toks[k]:lower():match("^(.-)[,]*$") end
+  for f = 1, #toks - 2 do
+    local w, j = bare(f), f + 1
+    while G.hesitation_words[bare(j) or ""] do j = j + 1 end
+    if j > f + 1 and w:match("^%a%a+$") and not DIGIT_WORDS[w] and bare(j) and bare(j):match("^(.-)%p*$") == w then
+      return G.repeated_restarts(G.words_without(toks, f, j - 1))
+    end
+  end
+  return text
+end
 -- "turn right direct... uh, heading zero niner zero", "climb- eh, descend FL80": an instruction's word
 -- (lexicon.abandoned_instruction_words) broken off by "...", "-" or "…" and hesitations (lexicon.hesitations),
 -- then another such word: the speaker changed the instruction, the first word is dropped with the hesitations.
@@ -3550,7 +3571,7 @@ local function written_forms(text, world)
   end)
   -- "47,5 north", "8,5 degrees east", "factor to 1,1": a decimal comma (G.decimal_comma) is the point
   where("%d,%d", "()(%d+),(%d+)()", function(b, whole, part, e) return G.decimal_comma(text, b, whole, part, e) end)
-  text = typed_abbreviations(lone_multipliers(tokens.numerals_apart(G.unfinished_restarts(G.cut_off_restarts(G.abandoned_instruction_words(G.cancelled_direct(text)))), DIGIT_WORDS), world))
+  text = typed_abbreviations(lone_multipliers(tokens.numerals_apart(G.unfinished_restarts(G.cut_off_restarts(G.repeated_restarts(G.abandoned_instruction_words(G.cancelled_direct(text))))), DIGIT_WORDS), world))
   text = hyphened_types(spelled(G.spelled_letter_a(heard_forms(negated_values(G.readback_reported(readback_heard(self_corrections(G.said_but(G.cancel_corrections(unlabelled(foreign_digits(G.portuguese_and(G.polish_and(G.said_whole(G.french_in_english(G.denied_word(G.dutch_chat(G.condition_then(G.condition_copula(G.recreate_said(text)))))))))))))))))))))
   low = text:lower()
   -- a position typed as whole degrees after the hemisphere, then minutes ("N55 50.0 W003 20.0", "S33 57
@@ -5930,14 +5951,16 @@ function G:trailing_level_condition()
         return nil
       end
       -- (the words up to the value: ARRIVING only, one of them a verb, no LINKING word nor "at": "but only
-      -- when it is at FL210" is G:trailing_level's)
+      -- when it is at FL210" is G:trailing_level's; "the" straight before the value, "when you reach the flight
+      -- level 140"; "have" or "has" straight before it is the level held, "when you have FL70")
       local first, reached, slowed = self:quantities(v, #self.t + 1)[1], false, false
       if v > subject and first and first.b > v then
         local joined = true
         for x = v, first.b - 1 do
           local w = self.words[x]
-          joined = joined and (ARRIVING[w] or self.t[x].filler)
+          joined = joined and (ARRIVING[w] or self.t[x].filler or (x == first.b - 1 and w == "the"))
           reached = reached or (ARRIVING[w] and not LINKING[w] and w ~= "at")
+            or (x == first.b - 1 and (w == "have" or w == "has") and first.kind == "alt")
           slowed = slowed or self:word(x, "@speed_verbs")
         end
         reached = joined and reached
@@ -9416,7 +9439,8 @@ function G:when_reached(s)
   -- "arrives" or "established", "at" (or "have", "has", "got") and "that", "this" or "the" before "speed", straight
   -- before the instruction)
   local at = self:find_word(c + 1, s.trig, "speed")
-  if at < s.trig and self:skip_fillers(at + 1) == s.trig and self:word(at - 1, "that the this")
+  if at < s.trig and self:instruction_lead(self:skip_fillers(at + 1), s.trig) == s.trig
+      and self:word(at - 1, "that the this")
       and (self:word(at - 2, "at have has got") or self:word(at - 2, "reaching") and c == at - 3) then
     for i = c + 1, at - 3 do
       local subject = "you you're you've are it it's is he he's she she's arrives arrive established stabilised stabilized"
@@ -9506,7 +9530,8 @@ function G:instruction_lead(k, trig)
   end
   if self:word(v, "start begin") then v = self:skip_fillers(v + 1) end
   if self:word(v, "route fly track") and self:word(v + 1, "direct dct") then v = v + 1 end
-  if v > k and self:word(v, "its the your his her their") then v = self:skip_fillers(v + 1) end
+  -- ("start it down to FL230": the aircraft's pronoun after "start", the instruction's particle next)
+  if v > k and self:word(v, "its the your his her their it") then v = self:skip_fillers(v + 1) end
   return v == trig and v or k
 end
 
@@ -9619,7 +9644,9 @@ function G:crossed_navaid(i)
     local words, ok = {}, true
     for k = b, b + n - 1 do
       local t = self.t[k]
-      ok = ok and t ~= nil and t.kind == "word" and t.alpha and not t.keyword and not t.number_word
+      -- ("cross Zurich East at FL120": a compass point after the first word is part of the name)
+      ok = ok and t ~= nil and t.kind == "word" and t.alpha and not t.number_word
+        and (not t.keyword or (k > b and self:word(k, "east west north south")))
       words[#words + 1] = t and t.text
     end
     local e = self:word(b + n, "@navaid_kinds") and b + n + 1 or b + n
@@ -9971,7 +9998,8 @@ function G:at_waypoint(s, spec)
     -- "SULUR speed constraint 230 kt": the constraint named after the waypoint
     constrained = constrained or self:word_in(r.e, r.e + 3, "constraint constraints restriction")
     -- "at ELDAR speed 250", "Delta 889, at PAPPI maintain 250": "at" opening the clause, after its callsign
-    local opening = r.b == opens and self:word(first, "at over")
+    -- ("in VASOS speed 210": a non-native speaker's "in" for "at")
+    local opening = r.b == opens and self:word(first, "at over in")
     -- ("descend to FL60 and, when it is at RIGNO, reduce to 210 knots", "once it's at RIGNO, speed 210": a
     -- condition of reaching the waypoint, opening its clause, is a constraint there)
     local k = r.b - 2
@@ -9995,6 +10023,10 @@ function G:at_waypoint(s, spec)
       local c = self:find_word(math.max(s.b, r.b - 8), r.b - 1, "constraint restriction")
       local of = c < r.b - 1 and self:word(c + 1, "of") and self:quantities(c + 2, r.b - 1)
       if not be_at and of and #of == 1 and of[1].b == c + 2 and of[1].e == r.b - 1 then be_at = c + 2 end
+      -- ("a 250 knot speed constraint at BERGI": the one value said straight before the noun, its kind between)
+      local n = self:word(c - 1, "speed altitude level") and c - 1 or c
+      local said = c == r.b - 2 and self:quantities(math.max(s.b, n - 4), n)
+      if not be_at and said and #said == 1 and said[1].e == n then be_at = said[1].b end
     end
     -- "descend FL310 level by HELEN", "descend to reach FL300 by FERDI", "be level FL350 at PITES", "be level
     -- one niner zero over PUNPU": the level of a climb or descent, to be reached by a waypoint, is its AT
@@ -10069,8 +10101,12 @@ function G:at_waypoint(s, spec)
     local then_at = opened and self:word(self:skip_fillers(re), "@then_words")
       or (opened and self.t[re] and self.t[re].text == "," and self:word(self:skip_fillers(re + 1), "@then_words"))
     if opened and self.place_passed_e then passed_first = true end
+    -- ("at VASOS you put speed 210", "at ELDAR set the speed 250": the noun after a verb of setting is the instruction
+    -- said with its verb)
+    local set = self:word(s.trig - 1, "the") and s.trig - 2 or s.trig - 1
     local verb = s.intent ~= "infer" and (not self:word(s.trig, "@instruction_nouns")
-        or (opened and (self:word(first, "leave leaving") or passed_first or then_at)))
+        or (opened and (self:word(first, "leave leaving") or passed_first or then_at))
+        or (set > r.e - 1 and self:word(set, "put set make")))
       and not (self:word(first, "passing leaving") and self.t[s.trig].text:match("ing$")
         and not self:word(s.trig, "@instruction_nouns"))
       and not self:word_in(s.b, s.e, crossing_opens and "cross crosses now immediately" or "cross crossing crosses now immediately")
@@ -13470,8 +13506,9 @@ function G:delay_left()
       self.leftover = self:raw(i, i + 2)
       return
     end
+    -- ("1000 feet in the minute": a rate's unit, no delay)
     if self:word(i, "in within") and self:word(k, "@vague_delays") and not (self.u:used(i) or self.u:used(k)
-        or explained[i] or self.noted[i]) and not self:in_reason(i) then
+        or explained[i] or self.noted[i]) and not self:in_reason(i) and not self:word(i - 1, "feet ft foot") then
       local e = k + 1
       if not self.t[e] or self.t[e].kind == "punct" or self:word(e, "and then") then
         self.leftover = self:raw(i, e)
@@ -15335,6 +15372,16 @@ function G:implausible_values()
       return self:need(string.format("I have %s, but a vertical speed of %s ft/min is too large to be meant. Is it a "
         .. "level, or which rate do you mean?", line, math.floor(math.abs(rate) + 0.5)))
     end
+    -- (a speed in knots beyond what a piston, turboprop or helicopter flies: "two thousand five hundred ninety knots"
+    -- for a C172, 2000 ft and 590 kt or 2500 ft and 90 kt)
+    local a = f[1] == "SPD" and #f == 3 and self:state(f[2])
+    local ty, kt = (f[1] == "CRE" and f[3]) or (a and a.type), (f[1] == "CRE" or a) and tonumber(f[#f])
+    local types = require("translate.types")
+    local slow = ty and kt and types.too_fast(ty, kt)
+    if slow then
+      return self:need(string.format("I have %s, but I read %s. Which speed do you mean?", line,
+        types.too_fast_words(f[#f], ty, slow)))
+    end
   end
 end
 G.most_rate = 8000  -- [ft/min]
@@ -16892,8 +16939,8 @@ local function airline_values(text, fleet)
   -- before a number and its unit or after another value's number or unit, unless the airline and the number said
   -- digit by digit are an aircraft flying ("Velocity 250, 280 knots"); and, when no aircraft of the airline flies,
   -- after an article or a possessive, or before a number after a word of the request that is no "and" or "then"
-  -- and no punctuation ("put velocity 260", "the Volaris velocity 230": a Spanish or Portuguese speaker's
-  -- "velocidad"; the request's first word, "Velocity 250, climb ...", stays a callsign, matched or asked)
+  -- and no punctuation but a comma ("put velocity 260", "the Volaris velocity 230", "descend level 160, velocity
+  -- 260": a Spanish or Portuguese speaker's "velocidad"; the request's first word, "Velocity 250, climb ...", stays a callsign, matched or asked)
   if text:lower():find("velocity", 1, true) then
     local toks = {}
     for w in text:gmatch("%S+") do toks[#toks + 1] = w end
@@ -16902,7 +16949,7 @@ local function airline_values(text, fleet)
       if not noun then return nil end
       local icao, plain = noun[1], noun[2]
       local before = i > 1 and toks[i - 1]:lower()
-      if before and idle_noun(toks[i]) and (lexicon.value_noun_before[before] or not before:match("%p$")
+      if before and idle_noun(toks[i]) and (lexicon.value_noun_before[before] or not before:match("[^%w,]$")
           and before ~= "and" and before ~= "then" and toks[i + 1] and (toks[i + 1]:match("^%d")
           or NUMBER_WORDS[toks[i + 1]:lower():gsub("%p+$", "")])) then
         return plain, i + 1

@@ -395,13 +395,21 @@ local CANCEL = { cancel = true, ["never mind"] = true, nevermind = true, ["forge
 
 -- The question a line of commands needs before it runs, or nil: deleting
 -- several aircraft, RESET, IC (a new scenario replaces the traffic), and
--- conflict detection or resolution off for every aircraft.
+-- conflict detection or resolution off for every aircraft; so too when one of
+-- them is carried by a command that runs it later ("SCHEDULE 01:00:00 RESET",
+-- "DELAY 600 DEL *", "AT KL204 SPY DO RESO OFF").
+-- (CARRIERS: how many words a carrying command takes before the command it carries)
+local CARRIERS = { SCHEDULE = 2, DELAY = 2, ATALT = 3, ATSPD = 3, ATDIST = 4 }
 function M.confirmation(cmds, sim)
   local deleted = {}
   for _, c in ipairs(cmds) do
     local words = {}
     for w in c:gmatch("[^%s,]+") do words[#words + 1] = w end
     local name = nodes.canonical_name(words[1]) or ""
+    while CARRIERS[name] or (name == "AT" and words[4] and words[4]:upper() == "DO") do
+      words = { table.unpack(words, (CARRIERS[name] or 4) + 1) }
+      name = nodes.canonical_name(words[1] or "") or ""
+    end
     if name == "RESET" then return "Reset the simulation? Every aircraft and queued command goes. (yes or no)" end
     if name == "IC" then
       return string.format("Load scenario %s? It replaces the present traffic. (yes or no)", words[2] or "")

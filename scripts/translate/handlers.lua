@@ -4499,11 +4499,15 @@ function m:at_altitude(s)
       end
     end
   end
+  -- ("descend FL70 and when you have FL70 reduce 210": "have" or "has" after a condition word and its subject, the
+  -- level held, a verb of reaching when no other is said)
+  if a >= s.trig then a = self:find_word(b, s.trig, "have has") end
   if a >= s.trig then return nil end
   -- ("when you hit FL180 slow to 250", "once it has reached FL290, descend": "hit" and "reached" are verbs of
   -- reaching only after a condition word; so are "reach" and "reaches" before a level or altitude instruction)
-  local reached = self:word(a, "hit hits reached reach reaches") and self:word_in(math.max(b, a - 3), a, "@condition")
-  if self:word(a, "hit hits reached") and not reached then return nil end
+  local reached = self:word(a, "hit hits reached reach reaches have has")
+    and self:word_in(math.max(b, a - 3), a, "@condition")
+  if self:word(a, "hit hits reached have has") and not reached then return nil end
   -- ("fly at 30000 ft and heading 100": the level flown at, an instruction of its own, no condition)
   if self:word(a, "at on") and self:word(a - 1, "fly flies stay remain cruise") then return nil end
   -- a value said before the condition is another instruction's, which must not wait for it
@@ -4528,7 +4532,9 @@ function m:at_altitude(s)
   -- ("when passing altitude 7000 feet turn right": the noun of the value passed, said before it)
   local noun = self:word(a + 1, "altitude height") and q and q.b == a + 2
     and (q.kind == "alt" or (q.kind == "plain" and q.value >= 1000)) and a + 1
-  if not q or (q.b ~= a + 1 and not noun) then return nil end
+  -- ("when you reach the flight level 140 you make speed 280": the article before a level with its unit)
+  local article = self:word(a + 1, "the") and q and q.b == a + 2 and q.kind == "alt"
+  if not q or (q.b ~= a + 1 and not noun and not article) then return nil end
   local k = self:skip_fillers(q.e)
   -- ("once you pass 15,000 on the way down, slow down to 250", "when passing FL270 on its way up, ..."): the
   -- direction the level is crossed in, said after it (checked below against the aircraft's climb or descent)
@@ -4782,8 +4788,17 @@ function m:at_time(s)
       return self:need(string.format("How long should the wait before the instruction be? I heard '%s': please "
         .. "give a time (\"in 2 minutes\").", self:raw(lead, q.e)))
     end
-    if not self.taken[q.b] and (lead or not q.spoken) then
-      local clock = self:word(w, "@clock_reaches") and self:word_in(math.max(1, w - 3), w, "@sim")
+    -- ("twenty minutes into the run, switch on MVP": the clock's time, counted from the run's start)
+    local into = self:word(q.e, "into") and (self:word(q.e + 1, "the") and q.e + 2 or q.e + 1)
+    into = into and self:word(into, "run @sim exercise experiment scenario") and not lead and into
+    -- ("pause at exactly 45 minutes": "exactly" between "at" and the time)
+    if not lead and self:word(w, "exactly precisely") and self:word(w - 1, "at") then
+      self:mark_used(w, w + 1)
+      w = w - 1
+    end
+    if not self.taken[q.b] and (lead or not q.spoken or into) then
+      local clock = into or self:word(w, "@clock_reaches") and self:word_in(math.max(1, w - 3), w, "@sim")
+      if into then self:mark_used(q.e, into + 1) end
       -- ("at sim time 00:10:00 freeze": the clock's time named before it)
       if self:word(w, "time") and self:word(w - 1, "@sim") and self:word(w - 2, "at") then
         self:mark_used(w - 1, w + 1)

@@ -3676,10 +3676,27 @@ return function(H, f, compass)
     local to = self:find_word(s.trig, s.e, "to inbound destination")
     if self:word(to, "inbound") and self:word(to + 1, "to for") then to = to + 1 end
     -- ("all heading for Fiumicino", "bound for LIRF": "for" after a verb of going)
-    local going = self:find_word(s.trig, s.e, "heading headed bound going")
-    if to == s.e and self:word(going + 1, "for") then to = going + 1 end
+    local going = self:find_word(s.trig, s.e, "heading headed bound going destined")
+    if to == s.e and self:word(going + 1, "for") then
+      to = going + 1
+      self:explain(going, going + 1)
+    end
     local dest = to < s.e and (self:refs_in(to + 1, to + 2, "waypoint")[1] or {}).name
     if to < s.e and not dest then dest = self:place_by_name(to + 1, math.min(s.e, to + 3), self.fleet[1]) end
+    -- ("all with Schiphol as destination", "EHAM as their destination": the place said before "as" and the noun)
+    local as = self:find_word(s.trig, s.e, "as")
+    local noun = self:word(as + 1, "the their its") and as + 2 or as + 1
+    if not dest and as < s.e and as > s.trig + 1 and self:word(noun, "destination") then
+      dest = (self:refs_in(as - 1, as, "waypoint")[1] or {}).name or self:typed_airport_code(as - 1)
+      for b = as - 1, math.max(s.trig + 1, as - 3), -1 do
+        dest = dest or self:place_by_name(b, as, self.fleet[1])
+      end
+      if not dest then
+        return self:need(string.format("Where should the random aircraft fly to? I heard '%s'.", self.t[as - 1].raw))
+      end
+      self:explain(as, noun + 1)
+      to = s.e
+    end
     -- ("spawn 5 random acft to eham": an airport's code typed in lower case)
     if to < s.e and not dest and self:typed_airport_code(to + 1) then
       dest = self:typed_airport_code(to + 1)
@@ -5297,19 +5314,27 @@ return function(H, f, compass)
     self:need("Which conflict resolution method should I use (for example MVP), or should it be off?")
   end
   -- RFACH / RFACV: the safety factor resolutions apply; each value is the kind said last before it
-  -- ("the horizontal resolution margin factor to 1.2 and the vertical one to 1.05")
+  -- ("the horizontal resolution margin factor to 1.2 and the vertical one to 1.05"); both kinds joined by "and"
+  -- ("the horizontal and vertical resolution margins both to 1.1") set both
   function m:reso_factor(s)
     local b = math.max(1, s.b - 4)  -- ("with horizontal factor 1.1": the kind said before the noun)
     local function kind(e)
       for k = e - 1, b, -1 do
         local named = self:registry_word(k)  -- ("rfacv 1.1", "hrfac 1.2": the command's own name)
-        if named == "RFACH" or named == "RFACV" then return named end
-        if self:word(k, "vertical") then return "RFACV" end
-        if self:word(k, "horizontal lateral") then return "RFACH" end
+        if named == "RFACH" or named == "RFACV" then return { named } end
+        local v, h = self:word(k, "vertical"), self:word(k, "horizontal lateral")
+        if (v or h) and self:word(k - 1, "and") and self:word(k - 2, v and "horizontal lateral" or "vertical") then
+          return { "RFACH", "RFACV" }
+        end
+        if v then return { "RFACV" } end
+        if h then return { "RFACH" } end
       end
       return nil
     end
-    if self:asks_setting(true) then return self:emit(kind(s.e) or "RFACH") end
+    local function emit_all(cmds, value)
+      for _, cmd in ipairs(cmds) do self:emit(cmd .. (value and " " .. f.num(value) or "")) end
+    end
+    if self:asks_setting(true) then return emit_all(kind(s.e) or { "RFACH" }) end
     local before = #self.out
     -- ("a 20 percent margin": a margin in percent, said before the noun, is the factor 1.2)
     local by_margin = self:word(s.trig, "margin margins")
@@ -5329,7 +5354,7 @@ return function(H, f, compass)
           return self:need(string.format("Should the horizontal or the vertical safety factor be %s?", f.num(value)))
         end
         self:take(q)
-        self:emit(cmd .. " " .. f.num(value))
+        emit_all(cmd, value)
       end
     end
     -- ("safety factor for horizontal resolution put 1.2": the kind, "resolution" and a verb of setting said after the
@@ -5345,7 +5370,7 @@ return function(H, f, compass)
       self:mark_used(s.e, k)
       self.factor_named_upto = k  -- (the resolution named in it is the factor's: m:resolution reads nothing there)
       self:take(q)
-      self:emit(kind(k) .. " " .. f.num(q.value))
+      emit_all(kind(k), q.value)
     end
     if #self.out == before then self:need("What safety factor should conflict resolution apply?") end
   end

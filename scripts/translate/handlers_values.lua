@@ -1221,6 +1221,8 @@ return function(H, f, wrap, compass)
       local at = self:word(tw, "direction") and tw + 2 or tw + 1
       toward_at, ask0 = at, self.ask
       local r = self:refs_in(at, math.min(s.e, at + 3), "waypoint")[1]
+      -- ("towards the Pampus VOR": the navaid's kind after its name names no waypoint of its own)
+      if r and r.b > at and self:word(r.b, "@navaid_kinds") and not self:word(r.b - 1, "the a") then r = nil end
       if r then self:explain(tw, r.e) end
       toward = r and r.name:upper() or self:place_by_name(at, s.e, now, nil, true)
       -- ("toward O'Hare": an airport said by a distinctive part of its name, as a destination is read)
@@ -1369,7 +1371,8 @@ return function(H, f, wrap, compass)
     -- shorthand) it is the heading. A number typed with a leading zero ("turn left 090") is a heading: no
     -- turn's degrees are written so
     -- "turn left three sixty", "turn right three hundred and sixty": a whole circle said as a number (not digit by
-    -- digit, no "heading") is an orbit, which squawk does not fly, or the heading 360: asked
+    -- digit), with no "heading", is an orbit, which squawk does not fly, or the heading 360: asked; typed, "rt 360
+    -- for spacing", so when a purpose of an orbit follows it ("l 360" alone is the heading)
     -- "do a left two-seventy", "make a right 270": "a", a side and straight after it a number, no "heading", names
     -- a turn of that many degrees (a manoeuvre, the noun "a left 270") as well as the heading: asked ("a left turn
     -- to 270" names the heading)
@@ -1381,8 +1384,11 @@ return function(H, f, wrap, compass)
         way < 0 and "left" or "right", f.num(abs.value), f.num(wrap(hdg)), self:raw(article, abs.e)))
     end
     local n = abs and abs.number
-    if hdg and not offset and way ~= 0 and abs and abs.kind == "plain" and abs.value == 360 and not n.typed
-        and (n.hundred or n.groups < #n.digits) and not self:word_in(s.b, s.e, "heading hdg") then
+    local for_orbit = n and n.typed and self:word(abs.e, "for")
+      and self:word(abs.e + 1, "spacing sequencing delay separation traffic")
+    if hdg and not offset and way ~= 0 and abs and abs.kind == "plain" and abs.value == 360
+        and (for_orbit or not n.typed and (n.hundred or n.groups < #n.digits))
+        and not self:word_in(s.b, s.e, "heading hdg") then
       return self:need(string.format("Should %s make a full turn %s (an orbit, which squawk does not simulate), or "
         .. "fly heading 360? I heard '%s'.", id, way < 0 and "left" or "right", self:raw(abs.b, abs.e)))
     end

@@ -643,7 +643,7 @@ return {
         "separation", "radius", "angle", "callsign", "degrees", "feet", "thousand", "hundred", "expedite",
         "define", "teleport", "reposition", "lateral", "navigation", "enable", "disable", "seconds", "minutes",
         "timestep", "protected", "turn", "pause", "resume", "spawn", "generate", "latitude", "longitude",
-        "minimum", "horizontal", "forward", "right", "left", "creconfs", "trail", "trails", "dtmult", },
+        "minimum", "horizontal", "forward", "right", "left", "creconfs", "trail", "trails", "dtmult", "lookahead", },
     common = { "stop", "them", "last", "want", "have", "from", "with", "what", "also", "back", "give", "make",
         "take", "need", "into", "onto", "down", "more", "less", "keep", "this", "that", "were", "will", "sure",
         "would", "should", "could", "their", "there", "these", "those", "about", "after", "again", "both",

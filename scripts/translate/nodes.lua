@@ -10,6 +10,7 @@ local grammar = require("translate.grammar")
 local schema = require("translate.schema")
 local lexicon = require("translate.lexicon")
 local typos = require("translate.typos")
+local types = require("translate.types")
 
 local M = {}
 
@@ -554,11 +555,11 @@ end
 -- outside what the aircraft can fly; else nil. `copy`: a function giving the scratch simulation.
 -- A value of the form "M..." or under 1 is a Mach number: one of 1 or more is asked ("M1.5"), but "M78", two digits
 -- from 40 with no point, is Mach .78 typed short: nil, "english" (the grammar reads it). Any other is knots
--- (CAS): over lexicon.typed_speed.max_kt is asked for every aircraft; under lexicon.typed_speed.min_kt, for a jet
+-- (CAS): over lexicon.typed_speed.max_kt is asked for every aircraft, and over types.too_fast's limit for a piston,
+-- turboprop or helicopter; under lexicon.typed_speed.min_kt, for a jet
 -- (a type the performance models class as no piston, turboprop or helicopter) in the air, or any aircraft flying
 -- lexicon.typed_speed.fast_kt or more; a value with a decimal point from 1 to that minimum is asked for every
 -- aircraft. A value of two digits from 50, or three from 500, is asked as the Mach number it may be ("78": .78?).
-local slow_classes
 function M.typed_speed_question(c, name, copy)
   local w = {}
   for x in c:gmatch("[^%s,]+") do w[#w + 1] = x end
@@ -592,14 +593,13 @@ function M.typed_speed_question(c, name, copy)
   end
   local kt = tonumber(v)
   if not kt or kt < 1 then return nil end
-  if not slow_classes then
-    slow_classes = {}
-    for _, t in ipairs(squawk.sim.types()) do slow_classes[t.designator:upper()] = t.class end
-  end
-  local jet = slow_classes[(actype or ""):upper()] == nil
+  local jet = types.slow_class(actype) == nil
+  local slow = types.too_fast(actype, kt)
   local why
   if kt > T.max_kt then
     why = string.format("%s kt, faster than any airliner flies", v)
+  elseif slow then
+    why = types.too_fast_words(v, actype, slow)
   elseif kt < T.min_kt and (v:find(".", 1, true) or (jet and alt_ft > 0) or cas_kt >= T.fast_kt) then
     why = v:find(".", 1, true) and string.format("%s, which is neither a Mach number nor a speed in knots", v)
       or string.format("%s kt, slower than %s %s can fly", v, actype:match("^[AEIOU]") and "an" or "a", actype)

@@ -593,6 +593,10 @@ return function(intent, rule, words)
   end }
   -- "could we get United 9 down to 12,000 feet", "bring the KLM up to FL300", "take him up to 340"
   rule { "up down", "alt", prev = { 4, "get bring take" }, not_prev = { 3, "speed spd" }, not_near = { 2, "speed knots" } }
+  -- ("when it has reached that speed start it down to FL230": the verb and the aircraft's pronoun straight before)
+  rule { "up down", "alt", next = "to", when = function(g, i)
+    return g:word(i - 1, "it him her them") and g:word(i - 2, "start get bring take")
+  end }
   rule { "expedite", "alt", near = { 1, "climb descent descend" } }
   -- ("expedite your descent to FL120", "expedite the climb to ...": the level after it)
   rule { "expedite", "alt", next = "your the", near = { 2, "climb descent" } }
@@ -1233,6 +1237,8 @@ return function(intent, rule, words)
   end }
   -- "create ten random aircraft", "five random A320s at FL300": random traffic
   rule { "generate generator", false, prev = { 1, "random number" } }  -- "seed the random generator with 42"
+  -- ("seed the generator with 7": the noun, the seed's, no creation)
+  rule { "generate generator", false, prev = { 1, "the" }, when = function(g) return g:said("seed") end }
   rule { "create cre spawn generate add chuck", "mcre", near = { 3, "random" } }
   rule { "mcre", "mcre" }
   -- "random traffic, 20 aircraft", "random traffic, 12 b738": the count said after, of aircraft or of a type
@@ -1979,6 +1985,11 @@ return function(intent, rule, words)
 
   -- route
   rule { "proceed", false, near = { 3, "heading" } }
+  -- "climb to FL370 and proceed at Mach .79", "proceed at 250 knots": the speed flown on
+  rule { "proceed", "spd", next = "at", when = function(g, i)
+    local q = g:quantities(i + 2, #g.t + 1)[1]
+    return q ~= nil and (q.kind == "mach" or q.kind == "speed") and q.b == g:skip_fillers(i + 2)
+  end }
   -- "proceed to flight level 120", "proceed to FL80": a level proceeded to is a climb or descent to it
   rule { "proceed", "alt", next = "to", when = function(g, i)
     local q = g:quantities(i + 2, #g.t + 1)[1]
@@ -3100,8 +3111,11 @@ return function(intent, rule, words)
   rule { "request", "pos", next = "your", near = { 3, "altitude speed heading position level airspeed mach alt lvl hdg spd pos fl" } }
   rule { "carry", "op", next = "on", near = { 4, "@sim" } }  -- "carry on with the simulation"
   rule { "carry go", "op", next = "on", when = function(g, i) return g:alone_but(i, i + 2) end }  -- "carry on", "go on"
-  -- "..., then carry on", "..., then go", "ok carry on, run it", "OK, go on, and run at 2x": a clause of its own
-  rule { "carry go", "op", next = "on", when = function(g, i) return g:clause_alone(i, i + 2) end }
+  -- "..., then carry on", "..., then go", "OK, go on, and run at 2x": a clause of its own; "ok carry on, run it at
+  -- three times speed": "carry on" opening the request ("go on, let it fast-forward" urges the next one on)
+  rule { "carry go", "op", next = "on", when = function(g, i)
+    return g:clause_alone(i, i + 2) or (g:word(i, "carry") and g:clause_opens(i, i + 2))
+  end }
   rule { "keep", "op", next = "going", when = function(g, i)
     return g:alone_but(i, i + 2) or g:clause_alone(i, i + 2) or g:clause_opens(i, i + 2)
   end }
@@ -3682,9 +3696,10 @@ return function(intent, rule, words)
     return k <= #g.t and g:word(g:word(k + 1, "the") and k + 2 or k + 1, "console screen display window log")
   end }
   -- "write 'trial 4 start' into the log", "put 'baseline done' in the log", "put 'Run 3 start' on the
-  -- screen": quoted text for the log or the screen
+  -- screen", "write 'run 3 starts now' to the console": quoted text for the log, the screen or the console
   rule { "write put add enter show display", "echo", when = function(g, i)
-    return g.t[i + 1] ~= nil and g.t[i + 1].kind == "quoted" and g:word_in(i + 2, math.min(#g.t + 1, i + 6), "log screen scope")
+    return g.t[i + 1] ~= nil and g.t[i + 1].kind == "quoted"
+      and g:word_in(i + 2, math.min(#g.t + 1, i + 6), "log screen scope console")
   end }
 
   -- "write a message on the screen, 'session two starts'", "show a note in the log, 'run 2 done'": quoted text

@@ -205,18 +205,39 @@ M.nicknames = {
 -- ("the helicopter", "the chopper", "the turboprop"): a role named by the performance models' class of a type
 -- (squawk.sim.types()' class) is every designator of that class
 -- M.role_words: the nicknames that name a role or class rather than a family (an aircraft of an unknown type may be
--- one); M.known_designator(d): true for a designator the type data or names.designators know
+-- one); M.known_designator(d): true for a designator the type data or names.designators know; M.slow_class(d): the
+-- class model's entry of designator d ({class = "piston"|"turboprop"|"helicopter", vmax_kt = its CAS limit [kt]}),
+-- nil for a jet (any type the class model does not name)
 M.role_words = { helicopter = true, chopper = true, helo = true, turboprop = true, trijet = true, ["tri-jet"] = true }
-local known_designators
-function M.known_designator(d)
-  if not known_designators then
-    known_designators = {}
-    for _, t in ipairs(squawk and squawk.sim and squawk.sim.types and squawk.sim.types() or {}) do
-      known_designators[t.designator:upper()] = true
-    end
-    for _, x in ipairs(require("translate.names").designators) do known_designators[x] = true end
+local known_designators, slow_classes
+local function read_types()
+  known_designators, slow_classes = {}, {}
+  for _, t in ipairs(squawk and squawk.sim and squawk.sim.types and squawk.sim.types() or {}) do
+    known_designators[t.designator:upper()] = true
+    if t.vmax_kt and t.class ~= "jet" then slow_classes[t.designator:upper()] = t end
   end
+  for _, x in ipairs(require("translate.names").designators) do known_designators[x] = true end
+end
+function M.known_designator(d)
+  if not known_designators then read_types() end
   return known_designators[d] == true
+end
+function M.slow_class(d)
+  if not slow_classes then read_types() end
+  return slow_classes[(d or ""):upper()]
+end
+-- M.too_fast(d, kt) -> the class model's entry of designator d when a speed of kt [kt CAS] lies above its CAS limit
+-- by more than M.speed_margin (a C172 at 300 kt: piston, 175 kt), else nil; jets are never too fast here (their
+-- limit is lexicon.typed_speed.max_kt's, for typed values)
+M.speed_margin = 1.3
+function M.too_fast(d, kt)
+  local slow = M.slow_class(d)
+  return slow and kt > slow.vmax_kt * M.speed_margin and slow or nil
+end
+-- M.too_fast_words(v, d, slow) -> "300 kt, faster than a C172 flies (a piston: about 175 kt at most)"
+function M.too_fast_words(v, d, slow)
+  return string.format("%s kt, faster than %s %s flies (a %s: about %d kt at most)", v,
+    d:match("^[AEIOU]") and "an" or "a", d:upper(), slow.class, math.floor(slow.vmax_kt + 0.5))
 end
 do
   local CLASS_WORDS = { helicopter = "helicopter", chopper = "helicopter", helo = "helicopter", turboprop = "turboprop" }

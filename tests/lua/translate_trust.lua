@@ -22763,3 +22763,122 @@ do
     "DT 0.1")
   asked(ex("load the scenario demo.scn"), "a scenario loaded is confirmed")
 end
+
+-- Cycle 75 (lead, R312): "two thousand five hundred ninety knots" for a C172 was read as 2000 ft and 590 kt; a speed
+-- above what the class model lets a piston, turboprop or helicopter fly (types.too_fast) is asked, in English and
+-- typed alike; a jet keeps its speed as said
+do
+  local _, ex = scene({ "CRE N417CP C172 40.90 -73.60 090 3500 110", "CRE KLM12 A320 52 4 90 FL100 250" })
+  asked(ex("create a cessna one seventy two november two two eight x ray at 40.8 -73.9 heading three six zero two "
+    .. "thousand five hundred ninety knots"), "590 kt for a C172")
+  asked(ex("november four seventeen charlie papa speed five ninety knots"), "590 kt for a C172")
+  asked(ex("SPD N417CP 300"), "300 kt typed for a C172")
+  check_eq(ex("november four seventeen charlie papa reduce speed ninety knots"), "SPD N417CP 90")
+  check_eq(ex("klm12 speed 330 knots"), "SPD KLM12 330")
+end
+
+-- Cycle 75 (lead, R311): "baw27m rt 360 for spacing" (an orbit, not simulated) flew heading 360: a whole circle typed
+-- after a side with no "heading", a purpose of an orbit after it, is asked, as it is said in words; "r 360" alone
+-- (the short way round), "right heading 360" and "turn right to 360" stay the heading
+do
+  local _, ex = scene({ "CRE BAW27M A320 51.70 0.60 250 FL150 280" })
+  asked(ex("baw27m rt 360 for spacing"), "an orbit or heading 360")
+  check_eq(ex("baw27m r 360"), "HDG BAW27M 360 RIGHT")
+  check_eq(ex("baw27m turn right to 360"), "HDG BAW27M 360 RIGHT")
+  check_eq(ex("baw27m turn right heading 360"), "HDG BAW27M 360 RIGHT")
+  check_eq(ex("baw27m rt hdg 360"), "HDG BAW27M 360 RIGHT")
+end
+
+-- Cycle 75 (lead, R315): "ok carry on, run it at three times speed" dropped the resume: "carry on" opening the request
+-- as a clause of its own
+do
+  local sim, ex = scene({ "HOLD" })
+  check_eq(ex("ok carry on, run it at three times speed"), "OP ; DTMULT 3")
+  check_eq(ex("go on, let it fast-forward for 90 seconds"), "FF 90")
+  check_eq(ex("carry on"), "OP")
+  check(sim ~= nil, "scene")
+end
+
+-- Cycle 75 (lead, R313): non-native conditions and values: the level of a condition said again with "the" or after
+-- "have" ("when you reach the flight level 140", "when you have FL70"); "velocity" after a comma is the speed's noun
+-- when no Velocity aircraft flies; "in VASOS you put speed 210" starts the speed at the waypoint; "1000 feet the minute"
+-- and "in the minute" are rates; "flight level hundred" is FL100
+do
+  local _, ex = scene({ "CRE IBE6251 A320 40 -3 90 FL100 250", "CRE LAN2470 A320 -33 -70 90 FL200 280",
+    "CRE DLH400 A320 50 8 90 FL080 250" })
+  check_eq(ex("Iberia six two five one, climb flight level 140, when you reach the flight level 140 you make speed 280"),
+    "ALT IBE6251 FL140 ; ATALT IBE6251 FL140 SPD IBE6251 280")
+  check_eq(ex("ibe6251 climb FL140 and when you have FL140 reduce 230"),
+    "ALT IBE6251 FL140 ; ATALT IBE6251 FL140 SPD IBE6251 230")
+  check_eq(ex("ibe6251 reduce speed 230 when you have FL120"), "ATALT IBE6251 FL120 SPD IBE6251 230")
+  asked(ex("ibe6251 climb FL140 and when you have time reduce 230"), "no level in the condition")
+  check_eq(ex("LAN two four seven zero, descend level one six zero, velocity two six zero"),
+    "ALT LAN2470 FL160 ; SPD LAN2470 260")
+  check_eq(ex("ibe6251 descend FL080 with 1000 feet in the minute"), "ALT IBE6251 FL80 1000")
+  check_eq(ex("ibe6251 descend FL080 at 1000 feet the minute, and reduce speed two two zero"),
+    "ALT IBE6251 FL80 1000 ; SPD IBE6251 220")
+  check_eq(ex("dlh400 climb flight level hundred"), "ALT DLH400 FL100")
+end
+do
+  local _, ex = scene({ "CRE AMX402 B738 19.80 -99.40 150 FL140 270", "DEFWPT VASOS 19.5 -99.3",
+    "ADDWPT AMX402 VASOS" })
+  check_eq(ex("Aeromexico 402 in VASOS you put speed 210"), "AT AMX402 VASOS DO SPD AMX402 210")
+  check_eq(ex("Aeromexico 402 at VASOS speed 210"), "AT AMX402 VASOS SPD 210")
+end
+
+-- Cycle 75 (lead, R322): "the horizontal and vertical resolution margins both to 1.1" set RFACV alone; "schedule a
+-- reset of the simulation at one hour" scheduled the reset unasked (a destructive command carried by SCHEDULE, DELAY
+-- or a condition is confirmed as it is alone); "all with Schiphol as destination" was dropped from MCRE; "towards the
+-- Pampus VOR" flew to a fix named VOR
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 90 FL250 280", "CRE KLM13 A320 52 4.5 90 FL250 280",
+    "DEFWPT SCHPL 52.3 4.76" })
+  check_eq(ex("Set the horizontal and vertical resolution margins both to 1.1."), "RFACH 1.1 ; RFACV 1.1")
+  check_eq(ex("the horizontal resolution margin factor to 1.2 and the vertical one to 1.05"), "RFACH 1.2 ; RFACV 1.05")
+  check_eq(ex("Schedule a reset of the simulation at one hour."),
+    "ASK Reset the simulation? Every aircraft and queued command goes. (yes or no)")
+  check_eq(ex("in 10 minutes delete all aircraft"), "ASK Delete 2 aircraft (KLM12, KLM13)? (yes or no)")
+  check_eq(ex("in 10 minutes delete klm12"), "DELAY 600 DEL KLM12")
+  check_eq(ex("add ten A320s at FL300, all with SCHPL as destination"), "MCRE 10 A320 FL300 * SCHPL")
+  check_eq(ex("add ten A320s at FL300 destined for SCHPL"), "MCRE 10 A320 FL300 * SCHPL")
+  asked(ex("add ten A320s at FL300 with Foobar as their destination"), "an unknown destination")
+end
+do
+  local _, ex = navscene({ "CRE EZY71QW A320 52.9 4.7 190 FL210 300" }, "the heading toward a navaid named")
+  if ex then check_eq(ex("Turn EZY71QW towards the Pampus VOR."), "HDG EZY71QW PAM") end
+end
+
+-- Cycle 75 (lead, R322): an experimenter's sentences: "only when it has reached that speed start it down to FL230"
+-- (the verb and its pronoun before the particle); "proceed at Mach .79" (a speed, no direct-to); "a 250 knot speed
+-- constraint at BERGI" (the value before the noun); "seed the generator with 7"; "twenty minutes into the run" and
+-- "at exactly 45 minutes" (the clock's time); "lookahed" (a slip); "write '...' to the console" (ECHO)
+do
+  local _, ex = scene({ "CRE AFR66 B77W 49.6 2.8 240 FL270 290", "CRE KLM1395 B738 52.75 3.2 110 FL200 290",
+    "DEFWPT BERGI 52.8 3.5", "ADDWPT KLM1395 BERGI" })
+  check_eq(ex("Please slow Air France six six to 260 knots, and only when it has reached that speed start it down "
+    .. "to FL230."), "SPD AFR66 260 ; ATSPD AFR66 260 ALT AFR66 FL230")
+  check_eq(ex("Air France six six, climb to FL310 and proceed at Mach .79."), "ALT AFR66 FL310 ; SPD AFR66 M0.79")
+  asked(ex("afr66 proceed at FL200"), "a level after 'proceed at'")
+  check_eq(ex("Give KLM1395 a 250 knot speed constraint at BERGI."), "AT KLM1395 BERGI SPD 250")
+  check_eq(ex("Seed the generator with 7 and then create 30 random aircraft."), "SEED 7 ; MCRE 30")
+  check_eq(ex("generate 5 random aircraft"), "MCRE 5")
+  check_eq(ex("Twenty minutes into the run, MVP resolution should be switched on."), "SCHEDULE 00:20:00 RESO MVP")
+  check_eq(ex("I need the simulation to pause at exactly 45 minutes."), "SCHEDULE 00:45:00 HOLD")
+  check_eq(ex("afr66 descend FL250 in 2 minutes"), "DELAY 120 ALT AFR66 FL250")
+  check_eq(ex("set lookahed to 300 s"), "DTLOOK 300")
+  check_eq(ex("Write 'run 3 starts now' to the console so it shows up in the output."), "ECHO run 3 starts now")
+end
+do
+  local _, ex = navscene({ "CRE SWR1093 BCS3 47.2 8.3 30 FL250 270", "ADDWPT SWR1093 KLO", "ADDWPT SWR1093 ZUE" },
+    "a navaid named with a compass point")
+  if ex then check_eq(ex("Swiss 1093 should cross Zurich East at FL120."), "AT SWR1093 ZUE ALT FL120") end
+end
+
+-- Cycle 75 (lead, R318): a word said again after a hesitation ("until, uh, until five miles final") is said once; a
+-- digit word so said stays as said (a digit more, or the same?)
+do
+  local _, ex = scene({ "CRE EIN123 A320 53 -6 90 FL100 250" })
+  check_eq(ex("Shamrock one two three speed two three zero knots until, uh, until five miles final"), "SPD EIN123 230")
+  check_eq(ex("ein123 descend, er, descend FL80"), "ALT EIN123 FL80")
+  asked(ex("ein123 climb FL one, uh, one two zero"), "a digit said again")
+end

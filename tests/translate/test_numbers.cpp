@@ -179,6 +179,18 @@ TEST_CASE("quantities: units decide the kind") {
   CHECK(q[2].kind == QKind::kVs);
   CHECK(q[2].value == 2000);
 
+  // a rate's minute after "the", "each" or "in the"; "in a minute" is a delay, the feet an altitude
+  for (const char* said :
+       {"1000 feet the minute", "1000 feet in the minute", "1000 feet each minute"}) {
+    q = qty(said);
+    REQUIRE(q.size() == 1);
+    CHECK(q[0].kind == QKind::kVs);
+    CHECK(q[0].value == 1000);
+  }
+  q = qty("3000 feet in a minute");
+  REQUIRE(q.size() == 1);
+  CHECK(q[0].kind == QKind::kAlt);
+
   q = qty("3000 m");
   REQUIRE(q.size() == 1);
   CHECK(q[0].kind == QKind::kAlt);
