@@ -5782,7 +5782,7 @@ for w in ([[it it's its he he's she she's they they're you you're you've is are 
   through cross crosses crossed crossing down up below above under over drop drops dropped climbs climbed
   descends descended slows slowed slow slowing accelerates accelerated accelerating decelerates decelerated decelerating
   reducing reduced out of leaves left
-  leaving become becomes became established]]):gmatch("%S+") do ARRIVING[w] = true end
+  leaving become becomes became established doing]]):gmatch("%S+") do ARRIVING[w] = true end
 
 local LINKING = {}
 for w in ([[it it's its he he's she she's they they're you you're you've is are 's 're has have 've had been be
@@ -6348,7 +6348,9 @@ function G:at_speed(s)
   -- ("and when he's got two fifty, descend", "when you have two eight zero, descend": the speed had, given
   -- already, as "at" says it)
   -- ("and after you reach 300 climb to 14,000": the speed reached, given already)
-  local again = bare and not (noun or slowed) and self:word(q.b - 1, "at got have has reach reaches reached hit hits")
+  -- ("when you're doing 230 descend": the speed flown, given already)
+  local again = bare and not (noun or slowed)
+    and self:word(q.b - 1, "at got have has reach reaches reached hit hits doing")
   if not (q.kind == "speed" or q.kind == "mach" or (bare and (noun or slowed or again))) then return nil end
   local k = self:skip_fillers(q.e)
   while k < s.trig and ((self.t[k].kind == "punct" and self.t[k].text == ",") or self:word(k, "@condition_lead")
@@ -8666,6 +8668,20 @@ function G:parse(b, e)
       -- FL250": a level said as a condition after the speed or heading instruction it holds
       local held, cut
       if (s.intent == "spd" or s.intent == "hdg" or s.intent == "infer") and not at then held, cut = self:trailing_level(s) end
+      -- ("climb 6000, 250 kts passing 5000": a speed said with its unit after the level cleared, in the level's
+      -- segment, and the level it waits for closing the segment: only the speed waits, `speed_held`)
+      local speed_held
+      if s.intent == "alt" and not at then
+        local h, hc = self:trailing_level(s)
+        local v = h and self:quantities(s.trig, hc)
+        v = v and v[#v]
+        if v and (v.kind == "speed" or v.kind == "mach") and #self:quantities(s.trig, v.b) > 0 then
+          speed_held = h
+          self:mark_used(hc, s.e)
+          for i = hc, s.e - 1 do self.noted[i] = true end
+          s = { b = s.b, e = hc, trig = s.trig, intent = s.intent }
+        end
+      end
       -- "descend FL70 and reduce 180 kts when level": the instruction before's value, reached ("reduce 220
       -- when you reach it" with no level before it: asked, never run at once)
       local reached_cut = not held and not at and self:trailing_reached(s)
@@ -8723,7 +8739,12 @@ function G:parse(b, e)
       elseif tail and not self.ask and #self.out > n_before then
         self:do_at(self.out[n_before + 1]:match("^%u+ (%S+)"), tail.name, n_before)
       elseif at_next and not self.ask and #self.out > n_before then
-        self:do_at(self.out[n_before + 1]:match("^%u+ (%S+)"), at_next.name, n_before)
+        -- ("reduce 250, at ROLIS descend FL100 and turn left heading 020": what follows of the same aircraft waits
+        -- for the place too, joined by "and", or is asked)
+        local id = self.out[n_before + 1]:match("^%u+ (%S+)")
+        if self:do_at(id, at_next.name, n_before) then
+          self.waypoint_do = { id = id, wp = at_next.name, n = #self.out, e = s.e }
+        end
       elseif at_next and not self.ask then
         tied_to_waypoint(self, at_next)
       end
@@ -8787,8 +8808,26 @@ function G:parse(b, e)
           end
         end
       end
-      if set_aside then
-        -- (set aside above, a valueless instruction)
+      -- ("descend fl100 then 220 kts once level": the level this segment cleared itself, a speed or heading said
+      -- after it with no verb of its own)
+      local own_level = false
+      if speed_held and not self.ask and #self.out == n_before + 2 and self.out[n_before + 1]:match("^ALT ")
+          and self.out[n_before + 2]:match("^SPD ") then
+        self.out[n_before + 2] = "ATALT " .. self.out[n_before + 2]:match("^SPD (%S+)") .. " "
+          .. handlers.format.alt(speed_held.value, speed_held.fl) .. " " .. self.out[n_before + 2]
+      elseif speed_held and not self.ask then
+        self:need("I have " .. table.concat(self.out, " ; ") .. ". Which instruction should wait for the level?")
+      end
+      if unheld and not self.ask and #self.out == n_before + 2 then
+        local id, level = self.out[n_before + 1]:match("^ALT (%S+) (%S+)$")
+        local cmd = id and self.out[n_before + 2]:match("^(%u+) " .. id:gsub("%p", "%%%0") .. " %S+$")
+        if cmd == "SPD" or cmd == "HDG" then
+          self.out[n_before + 2] = "ATALT " .. id .. " " .. level .. " " .. self.out[n_before + 2]
+          own_level = true
+        end
+      end
+      if set_aside or own_level then
+        -- (set aside above, a valueless instruction; or waiting for its own segment's level)
       elseif unheld and not self.ask then
         self:need("I have " .. table.concat(self.out, " ; ") .. ". No level was cleared before '"
           .. self:raw(reached_cut, s0.e) .. "': which level should the last instruction wait for?")

@@ -588,7 +588,7 @@ return {
     -- other command too (G:unaccounted, G.bare_beside_place)
     -- words that a speaker who mixes L and R, or a recogniser hearing one, writes for a turn's side, straight after
     -- "turn" or before "turn", "heading" or "hdg" ("turn light heading 060", "lift turn"): asked, never dropped
-    -- and never guessed a side
+    -- and never guessed a side ("turn lift", a recogniser's "left" after "turn", is heard_as's)
     side_unsure = { "light", "lift", "lied", "lite" },
     bare_asked = {
       place = { "cross", "crossing", "proceed", "join", "joining", "rejoin", "rejoining", "intercept", "intercepting",
@@ -715,6 +715,8 @@ return {
     -- (in capitals an ident, "define a point EXPD at ...")
     expd = { word = "expedite", caps_kept = true }, expdt = { word = "expedite", caps_kept = true },
     til = { word = "until", not_prev = "legg" },
+    -- ("turn on conflict res", "cd and res on": resolution after the conflict's words)
+    res = { word = "resolution", prev = "conflict conflicts cd detection and" },
     -- ("dt mult back to 1", "sim speed mult 2": the clock's multiplier)
     mult = { word = "multiplier", prev = "dt time sim simulation speed" },
     maint = { word = "maintain", next = "#number fl flight speed spd heading hdg altitude alt level present own" },
@@ -2646,6 +2648,10 @@ return {
   heard_as = {
     { heard = { "write", "rite", "wright" }, means = "right",
       before = { "heading", "hdg", "turn" }, after = { "turn" } },
+    -- ("throw in 3 more A320s", "throw in another B738": adding traffic)
+    { heard = { "throw in", "chuck in" }, means = "add", before = { "#number", "a", "an", "another", "some", "more" } },
+    -- ("turn lift heading three four zero": a recogniser's "left")
+    { heard = { "lift", "loft", "laughed" }, means = "left", after = { "turn" } },
     { heard = { "the send", "this end", "the scent", "decent", "dissent" }, means = "descend",
       before = { "#number", "flight", "level", "altitude", "to" } },
     { heard = { "head in", "heading's" }, means = "heading", before = { "#number" } },

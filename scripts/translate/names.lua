@@ -82,8 +82,8 @@ local names = {
     { "nor shuttle", "NAX" },
     { "rednose", "NSZ" },  -- (Norwegian Air Sweden)
     { "whitestar", "SRR" },  -- (Star Air, Denmark)
-    { "flying doctor", "FD" },
-    { "aer arann", "REA" },  -- (Aer Arann, Ireland's regional airline, Aer Lingus Regional)  -- (Royal Flying Doctor Service, Australia: FD and the flight number)
+    { "flying doctor", "FD" },  -- (Royal Flying Doctor Service, Australia: FD and the flight number)
+    { "aer arann", "REA" },  -- (Aer Arann, Ireland's regional airline, Aer Lingus Regional)
     { "wideroe", "WIF" },
     { "wizz air", "WZZ" },
     { "aeroflot", "AFL" },
@@ -529,6 +529,7 @@ local names = {
     { "nilebird", "NIA" },
     { "nile air", "NIA" },
     { "nas express", "KNE" },
+    { "flyadeal", "FAD" },  -- (flyadeal, Saudi Arabia)
     { "flynas", "KNE" },
     { "nas", "KNE" },
     { "nouvelair", "LBT" },
@@ -952,6 +953,10 @@ local names = {
     { "aeromexico connect", "SLI" },
   },
   brands = {
+    -- ("Link 2441": the telephony of Airlink, South Africa, LNK, and of Air Nelson, Air New Zealand Link, RLK; "Flying
+    -- Doctor 21": the Royal Flying Doctor Service, written FD or RFD)
+    { "link", "LNK", "RLK" },
+    { "flying doctor", "FD", "RFD" },
     -- (`twins`: the public calls each of its airlines by the brand's name, whatever its telephony; a flight number
     -- two of them fly is asked which, handlers.lua m:brand_twins)
     { "transavia", "TRA", "TVF", twins = true },

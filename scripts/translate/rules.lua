@@ -577,6 +577,11 @@ return function(intent, rule, words)
     end
     return false
   end }
+  -- ("after KERAX speed 250 and down to FL080": after "and" or "then", a flight level after "to", a speed before)
+  rule { "up down", "alt", next = "to", when = function(g, i)
+    local q = g:quantities(i + 2, math.min(#g.t + 1, i + 6))[1]
+    return g:word(i - 1, "then and") and q ~= nil and q.b == i + 2 and q.kind == "alt" and q.fl == true
+  end }
   -- "N73WX left 270, down to 3000", "..., then up to FL240": opening a clause, a level after "to"
   rule { "up down", "alt", next = "to", not_near = { 3, "speed knots kts" }, not_prev = { 3, "speed spd" },
          when = function(g, i)
@@ -1147,7 +1152,8 @@ return function(intent, rule, words)
   rule { "create make", "defwpt", next = "this that", when = function(g, i)
     return g:word(i + 2, "point waypoint fix") and g:point_said_before(i) ~= nil
   end }
-  rule { "create make", "defwpt", when = function(g, i)
+  -- ("add a point EX3 at 51.05 -0.45", "put a point ...": the same with a verb of adding)
+  rule { "create make add put place", "defwpt", when = function(g, i)
     local k = g:word(i + 1, "the a an") and i + 2 or i + 1
     if not g:word(k, "point") or g:has_ref(1, #g.t + 1, "type") then return false end
     local r = g:refs_in(k + 1, k + 2, "waypoint")[1] or g:refs_in(k + 1, k + 2, "aircraft")[1]
@@ -1315,13 +1321,15 @@ return function(intent, rule, words)
   -- "spawn twenty five jets", "create ten A320": a count of aircraft (in digits or in words, a whole number from 2) with no
   -- callsign is random traffic ("create two aircraft: KLM11 ..., and KLM12 ...": the count of the new callsigns
   -- said after it, no random traffic)
+  -- ("add 3 more A320s", "add 3 more aircraft": "more" between the count and what is counted)
   rule { "create spawn generate add sample", "mcre", when = function(g, i)
     local k = g:skip_fillers(i + 1)
     local t = g.t[k]
-    if t ~= nil and t.kind == "number" and g:word(k + 1, "@counted_aircraft") then return true end
+    local ty = g:word(k + 1, "more") and k + 2 or k + 1
+    if t ~= nil and t.kind == "number" and g:word(ty, "@counted_aircraft") then return true end
     -- ("spawn 12 b738 at fl250 280kt": a count of 2 or more typed straight before a type, no new callsign said)
     if t ~= nil and t.kind == "number" and t.num and t.num >= 2 and t.num <= 500 and t.num % 1 == 0
-        and g:has_ref(k + 1, k + 2, "type") then
+        and g:has_ref(ty, ty + 1, "type") then
       for _, r in ipairs(g:refs_in(1, #g.t + 1, "aircraft")) do
         if not r.exists then return false end
       end

@@ -116,6 +116,8 @@ local function pattern_names(d)
   if c then
     out[#out + 1] = { "bombardier", "crj" .. c .. "00" }
     out[#out + 1] = { "bombardier", "crj-" .. c .. "00" }
+    -- (the Canadair Regional Jet: Canadair designed it before Bombardier bought the company)
+    out[#out + 1] = { "canadair", "crj" .. c .. "00" }
   end
   if d == "CRJX" then out[#out + 1] = { "bombardier", "crj1000" } end
   c = d:match("^C(%d%d%d)$")

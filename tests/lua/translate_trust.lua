@@ -16712,7 +16712,7 @@ do
   -- "as soon as" a level is reached: "once" (a hazard: the heading ran at once); "as soon as possible" no condition
   check_eq(ex("BEL7 climb FL250, then as soon as he is level turn left heading 020"),
     "ALT BEL7 FL250 ; ATALT BEL7 FL250 HDG BEL7 20 LEFT")
-  asked(ex("BEL7 climb FL250, then 240 knots as soon as level"), "a trailing 'as soon as level'")
+  check_eq(ex("BEL7 climb FL250, then 240 knots as soon as level"), "ALT BEL7 FL250 ; ATALT BEL7 FL250 SPD BEL7 240")
   check_eq(ex("BEL7 climb FL250 as soon as possible"), "ALT BEL7 FL250")
   -- the airline's own name as its telephony
   check_eq(ex("Air Transat 51, at ZEBRA increase speed to 280 knots"), "AT TSC51 ZEBRA DO SPD TSC51 280")
@@ -22364,7 +22364,7 @@ do
   local _, ex = scene({ "CRE KLM12 B738 52 4 90 FL200 250" })
   asked(ex("klm12 turn light heading 060"), "'light' where the turn's side is said")
   asked(ex("KLM12 light turn heading 060"), "'light' before the turn")
-  asked(ex("KLM12 turn lift heading 060"), "'lift' where the turn's side is said")
+  asked(ex("KLM12 lift turn heading 060"), "'lift' before the turn")
   check_eq(ex("KLM12 turn write heading 060"), "HDG KLM12 60 RIGHT")
   check_eq(ex("create a light aircraft KLM55 C172 at 52 4 heading 90 FL50 100"), "CRE KLM55 C172 52 4 90 FL50 100")
 end
@@ -22881,4 +22881,45 @@ do
   check_eq(ex("Shamrock one two three speed two three zero knots until, uh, until five miles final"), "SPD EIN123 230")
   check_eq(ex("ein123 descend, er, descend FL80"), "ALT EIN123 FL80")
   asked(ex("ein123 climb FL one, uh, one two zero"), "a digit said again")
+end
+
+-- Cycle 75 (lead, R319-R324 first sight): "reduce 250, at ROLIS descend FL100 and turn left heading 020" turned now
+-- (what follows of the same aircraft after "and" waits for the place too, or is asked); a 777 variant said is that
+-- one; "Link" is Airlink's and Air Nelson's
+-- telephony, "Flying Doctor" written FD or RFD; "turn lift" (a recogniser's "left"); "conflict res"; "add a point
+-- EX3 at ..."; "delete Flyadeal 123"; "throw in 3 more A320s"
+do
+  local _, ex = scene({ "CRE CFG2AB A320 50 8 90 FL200 280", "DEFWPT ROLIS 50.1 8.5", "ADDWPT CFG2AB ROLIS",
+    "CRE RLK2441 AT72 -37.50 175.30 315 13000 210", "CRE RFD21 PC12 -30 140 90 FL200 250",
+    "CRE THY1915 A321 40 29 90 FL200 280", "CRE FAD123 A320 24 46 90 FL200 280" })
+  check_eq(ex("Condor 2AB reduce two five zero, at ROLIS descend FL100 and turn left heading 020"),
+    "SPD CFG2AB 250 ; AT CFG2AB ROLIS DO ALT CFG2AB FL100 ; AT CFG2AB ROLIS DO HDG CFG2AB 20 LEFT")
+  asked(ex("Condor 2AB reduce two five zero, at ROLIS descend FL100, turn left heading 020"), "the turn: there or now?")
+  check_eq(ex("add a triple seven three hundred ER UAE414, at 35 S 147 E heading 080 FL360 M.84"),
+    "CRE UAE414 B77W -35 147 80 FL360 M0.84")
+  check_eq(ex("link two four four one climb FL150"), "ALT RLK2441 FL150")
+  check_eq(ex("flying doctor two one descend FL150"), "ALT RFD21 FL150")
+  check_eq(ex("turkish one nine one five turn lift heading three four zero"), "HDG THY1915 340 LEFT")
+  check_eq(ex("turn on conflict res"), "RESO MVP")
+  check_eq(ex("add a point EX3 at 51.05 -0.45"), "DEFWPT EX3 51.05 -0.45")
+  check_eq(ex("delete Flyadeal 123"), "DEL FAD123")
+  check_eq(ex("throw in 3 more A320s at FL300, random positions"), "MCRE 3 A320 FL300")
+  check_eq(ex("add 3 more aircraft"), "MCRE 3")
+end
+
+-- Cycle 75 (lead, R320-R324 first sight): a speed with no verb after the level cleared, in the level's segment, and
+-- the condition after it ("descend fl100 then 220 kts once level", "climb 6000, 250 kts passing 5000"): the speed
+-- waits, the level runs now; "when you're doing 230" (the speed given, flown); "after KERAX speed 250 and down to
+-- FL080" (the level after "and ... down to"); "canadair crj nine hundred"
+do
+  local _, ex = scene({ "CRE BAW8CK A320 51 0 90 FL150 280", "CRE SHT3N A320 51 0 90 4000 250",
+    "CRE DLH9LP A320 50 8 90 FL150 280", "DEFWPT KERAX 50.2 8.4", "ADDWPT DLH9LP KERAX" })
+  check_eq(ex("speedbird 8ck descend fl100 then 220 kts once level"), "ALT BAW8CK FL100 ; ATALT BAW8CK FL100 SPD BAW8CK 220")
+  check_eq(ex("shuttle 3n climb 6000, 250 kts passing 5000"), "ALT SHT3N 6000 ; ATALT SHT3N 5000 SPD SHT3N 250")
+  asked(ex("sht3n climb 6000 when passing 5000"), "the level it climbs to waits for a level below it")
+  check_eq(ex("baw8ck reduce speed 230, and when you're doing 230 descend FL070"),
+    "SPD BAW8CK 230 ; ATSPD BAW8CK 230 ALT BAW8CK FL70")
+  check_eq(ex("Lufthansa niner lima papa, descend FL100, after KERAX speed 250 and down to FL080"),
+    "ALT DLH9LP FL100 ; AT DLH9LP KERAX DO SPD DLH9LP 250 ; AT DLH9LP KERAX DO ALT DLH9LP FL80")
+  check_eq(ex("create CLH12A canadair crj900 at 48 11 heading 270 FL120 250"), "CRE CLH12A CRJ9 48 11 270 FL120 250")
 end
