@@ -1290,8 +1290,10 @@ return function(H, f, wrap, compass)
         hdg = hdg * 10
       end
       if hdg > 360 then
-        -- three digits said one by one ("four zero zero") are the heading heard, never re-read from fewer
-        local r = not (not n.typed and n.groups == 3 and #n.digits == 3) and self:repaired(abs, hdg, 0, 360, 5)
+        -- three digits said one by one ("four zero zero") are the heading heard, never re-read from fewer; so is
+        -- a number said with "hundred" ("four hundred")
+        local r = not (not n.typed and (n.groups == 3 and #n.digits == 3 or n.hundred))
+          and self:repaired(abs, hdg, 0, 360, 5)
         if not r then return self:need("What heading should " .. id .. " fly? I heard " .. f.int(hdg) .. ".") end
         hdg = r
       end

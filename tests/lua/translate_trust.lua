@@ -22923,3 +22923,11 @@ do
     "ALT DLH9LP FL100 ; AT DLH9LP KERAX DO SPD DLH9LP 250 ; AT DLH9LP KERAX DO ALT DLH9LP FL80")
   check_eq(ex("create CLH12A canadair crj900 at 48 11 heading 270 FL120 250"), "CRE CLH12A CRJ9 48 11 270 FL120 250")
 end
+
+-- Cycle 75 (lead, R325): "turn heading four hundred" flew heading 004 (re-read from fewer digits): a number said with
+-- "hundred" is the heading heard, asked when beyond 360
+do
+  local _, ex = scene({ "CRE ASA655 B739 48.90 -123.30 030 FL110 280" })
+  asked(ex("Alaska 655 turn heading four hundred"), "heading 400")
+  check_eq(ex("asa655 turn heading three hundred"), "HDG ASA655 300")
+end
