@@ -2437,6 +2437,23 @@ function G.cut_off_restarts(text)
   end
   return text
 end
+-- An experiment's label opening the request, closed by a full stop or a colon ("run 2 (LTMA). speedbird 8ck fl100",
+-- "run 6 BRU sector. asas on, ...", "exp 4 headon: cd on, ..."): "run", "exp", "trial" and the like, its number, then
+-- at most three words of no unit of time or rate ("run 2 minutes. ..." is a run of the clock): dropped.
+G.label_nouns = { run = true, exp = true, experiment = true, trial = true, batch = true, case = true, test = true }
+G.label_not = { min = true, mins = true, minute = true, minutes = true, s = true, sec = true, secs = true,
+  seconds = true, second = true, h = true, hr = true, hours = true, hour = true, x = true, times = true }
+function G.run_label(text)
+  local noun, num, rest, mark, after = text:match("^%s*(%a+)%s*#?(%d+)(.-)([.:])%s+(.+)$")
+  if not (noun and G.label_nouns[noun:lower()]) or rest:find("[.:]") then return text end
+  local words = 0
+  for w in rest:gsub("[()]", " "):gmatch("%S+") do
+    words = words + 1
+    if G.label_not[w:lower()] or w:match("^%d") then return text end
+  end
+  if words > 3 or (mark == "." and num:match("%d%.")) then return text end
+  return after
+end
 -- A word said again after a hesitation ("until, uh, until five miles final", "descend, er, descend FL80"): a word
 -- of letters, hesitations (lexicon.hesitations) and commas, then the same word: the first is dropped with them (a
 -- digit word so said may be a digit more: "two, uh, two five zero" stays as said).
@@ -3571,7 +3588,7 @@ local function written_forms(text, world)
   end)
   -- "47,5 north", "8,5 degrees east", "factor to 1,1": a decimal comma (G.decimal_comma) is the point
   where("%d,%d", "()(%d+),(%d+)()", function(b, whole, part, e) return G.decimal_comma(text, b, whole, part, e) end)
-  text = typed_abbreviations(lone_multipliers(tokens.numerals_apart(G.unfinished_restarts(G.cut_off_restarts(G.repeated_restarts(G.abandoned_instruction_words(G.cancelled_direct(text))))), DIGIT_WORDS), world))
+  text = typed_abbreviations(lone_multipliers(tokens.numerals_apart(G.unfinished_restarts(G.cut_off_restarts(G.repeated_restarts(G.abandoned_instruction_words(G.cancelled_direct(G.run_label(text)))))), DIGIT_WORDS), world))
   text = hyphened_types(spelled(G.spelled_letter_a(heard_forms(negated_values(G.readback_reported(readback_heard(self_corrections(G.said_but(G.cancel_corrections(unlabelled(foreign_digits(G.portuguese_and(G.polish_and(G.said_whole(G.french_in_english(G.denied_word(G.dutch_chat(G.condition_then(G.condition_copula(G.recreate_said(text)))))))))))))))))))))
   low = text:lower()
   -- a position typed as whole degrees after the hemisphere, then minutes ("N55 50.0 W003 20.0", "S33 57
@@ -14894,6 +14911,12 @@ function G:clause_opens_rate(b)
   return false
 end
 
+-- True when "at" or "in" at k has a time straight after it ("hold at 00:15:00", "pause in 5 minutes").
+function G:time_said_at(k)
+  local q = self:word(k, "at in") and self:quantities(k + 1, math.min(#self.t + 1, k + 6))[1]
+  return q and q.b == k + 1 and q.kind == "time" or false
+end
+
 function G:not_simulated()
   local found, seen, after = {}, {}, {}
   local i = 1
@@ -14913,6 +14936,7 @@ function G:not_simulated()
             and (not c.subject or self:said_after_subject(i, c.subject))
             and (not c.after_heading or self:after_heading(i))
             and not (c.not_before and self:word(self:skip_fillers(i + 1), c.not_before))
+            and not (c.not_at_time and self:time_said_at(i + 1))
             and not (c.not_to_profile and self:profile_speed_resumed(i))
             and not (c.no_value and self:value_next(i))
             and not (c.no_number_after and self.t[i + 2] and self.t[i + 2].kind == "number")

@@ -3628,9 +3628,17 @@ return function(H, f, compass)
         spd = self:take(q)
       end
     end
-    -- ("12 random aircraft" with one aircraft flying: the count the callsign matcher read as its flight number)
+    -- ("12 random aircraft" with one aircraft flying: the count the callsign matcher read as its flight number;
+    -- "add ten random aircraft" over navdata that holds a fix TEN: the count read as a waypoint, before "random")
+    local function count_at(x)
+      local t = self.t[x]
+      local v = t and (t.kind == "number" or t.number_word) and t.num
+      return (v and v > 0) and v or (t and self.below_hundred[(t.raw or ""):lower()])
+    end
     local k = self:word(s.trig - 1, "@more") and s.trig - 2 or s.trig - 1
-    local counted = not n and self.t[k] and (self.t[k].kind == "number" or self.t[k].number_word) and self.t[k].num
+    local r = self:find_word(s.trig + 1, s.e, "random")
+    if not n and not count_at(k) and r < s.e and r > s.trig + 1 then k = self:word(r - 1, "@more") and r - 2 or r - 1 end
+    local counted = not n and count_at(k)
     if counted and counted >= 1 and counted <= 500 and counted % 1 == 0 then
       n = { value = counted }
       self:explain(k, k + 1)
@@ -3672,8 +3680,8 @@ return function(H, f, compass)
     end
     -- "all going to Schiphol", "all inbound Barcelona": MCRE's destination (an airport or waypoint said after
     -- "to" or "inbound")
-    -- ("all with destination Zurich", "destination LSZH": the place after "destination")
-    local to = self:find_word(s.trig, s.e, "to inbound destination")
+    -- ("all with destination Zurich", "destination LSZH", "dest EHAM": the place after "destination")
+    local to = self:find_word(s.trig, s.e, "to inbound destination dest")
     if self:word(to, "inbound") and self:word(to + 1, "to for") then to = to + 1 end
     -- ("all heading for Fiumicino", "bound for LIRF": "for" after a verb of going)
     local going = self:find_word(s.trig, s.e, "heading headed bound going destined")

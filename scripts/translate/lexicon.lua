@@ -715,6 +715,7 @@ return {
     -- (in capitals an ident, "define a point EXPD at ...")
     expd = { word = "expedite", caps_kept = true }, expdt = { word = "expedite", caps_kept = true },
     til = { word = "until", not_prev = "legg" },
+    sched = { word = "schedule", next = "#number hold pause ff t at in" },
     -- ("turn on conflict res", "cd and res on": resolution after the conflict's words)
     res = { word = "resolution", prev = "conflict conflicts cd detection and" },
     -- ("dt mult back to 1", "sim speed mult 2": the clock's multiplier)
@@ -743,7 +744,8 @@ return {
            { word = "remove", after_next = "from" } },
     -- ("ezy45rt whr is it now", "wht is klm12 doing": the question's word typed without its vowels)
     whr = { word = "where", next = "is are's" }, wht = { word = "what", next = "is are's" },
-    del = { word = "delete", next = "rte route wpt waypoint" },
+    -- ("make it the del area", "box ... -> del area": the deletion area, no aircraft deleted)
+    del = { { word = "delete", next = "rte route wpt waypoint" }, { word = "deletion", next = "area" } },
     -- ("rem EZY88": remove, opening the line; "rnd traffic 5 a/c": random before the traffic it makes)
     rem = { word = "remove", prev = "#start" },
     rnd = { word = "random", next = "traffic aircraft" },
@@ -2421,10 +2423,12 @@ return {
     -- (`level_after_place`: a level with its unit said straight after the fix, "hold at KOK 2000ft", is the
     -- level flown there: read as an instruction of its own, G:not_simulated)
     { what = "holding patterns", words = "holding", takes_time = true, level_after_place = true },
-    -- (`not_before`: "hold the sim at 30 minutes" holds the simulation, no aircraft)
+    -- (`not_before`: "hold the sim at 30 minutes" holds the simulation, no aircraft; `not_at_time`: nor is "schedule
+    -- hold at 00:15:00", a time after "at" or "in", nor "hold" after "schedule")
     { what = "holding patterns", words = "hold",
       near = { "at", "over", "published", "short", "fix", "inbound", "turns", "#waypoint" }, takes_time = true,
-      not_before = "@sim", no_value = true, level_after_place = true },
+      not_before = "@sim", no_value = true, level_after_place = true, not_at_time = true,
+      not_after = "schedule sched" },
     { what = "holding patterns", words = "enter", near = { "hold", "holding" }, takes_time = true },
     -- "KL204, hold": said to an aircraft, no pause of the simulation; what follows "then" waits for it
     -- (`no_value`: a value said straight after it, "hold 250 knots", "hold FL150", is kept: G:value_next)

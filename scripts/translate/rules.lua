@@ -2073,9 +2073,9 @@ return function(intent, rule, words)
   rule { "cleared", "direct", when = function(g, i)
     return #g.world.waypoints > 0 and not g:followed_by(i, 8, "visual approach ils rnav localizer land landing")
   end }
-  -- "create 5 random A320s at FL250, all with destination Zurich": the destination of the random traffic
-  -- created before it, no aircraft named between (MCRE's destination, read by m:random_traffic)
-  rule { "destination", false, when = function(g, i)
+  -- "create 5 random A320s at FL250, all with destination Zurich", "mcre 10 B738 dest EHAM": the destination of the
+  -- random traffic created before it, no aircraft named between (MCRE's destination, read by m:random_traffic)
+  rule { "destination dest", false, when = function(g, i)
     for k = i - 1, 1, -1 do
       if g:intent_at(k) == "mcre" then return #g:refs_in(k, i, "aircraft") == 0 end
     end
@@ -2865,6 +2865,10 @@ return function(intent, rule, words)
     local b, e = g.t[i - 1], g.t[i + 1]
     return (b == nil or b.kind == "punct" and (b.text == "." or b.text == ";" or b.text == ":"))
         and (e == nil or e.kind == "punct" and (e.text == "." or e.text == ";"))
+  end }
+  -- ("schedule hold at 00:15:00", "sched hold at 00:15:00, then ff": the pause a schedule sets, no aircraft named)
+  rule { "hold", "hold", when = function(g, i)
+    return (g:word(i - 1, "schedule") or g:time_said_at(i + 1)) and not g:has_ref(1, #g.t + 1, "aircraft")
   end }
   rule { "hold", false, when = function(g) return g:has_ref(1, #g.t + 1, "aircraft") end }
   -- "run again from pause", "out of pause": the pause is the state left, no new one
@@ -3882,8 +3886,9 @@ return function(intent, rule, words)
   -- "resolution only past CPA", "keep resolving until past CPA": when a resolution ends and navigation resumes
   -- (RESNAV PASTCPA); "past" before "CPA" names it
   -- ("resolve past CPA": resolving until past it)
+  -- ("reso mvp, resume past cpa": a method named straight after it sets it, the clause after it says when)
   rule { "resolution resolutions resolving reso resolve", false, near = { 4, "past" }, when = function(g, i)
-    return g:word_in(i + 1, math.min(#g.t + 1, i + 6), "cpa")
+    return g:word_in(i + 1, math.min(#g.t + 1, i + 6), "cpa") and not g:word(i + 1, "mvp @mvp")
   end }
   rule { "past", "resnav", next = "cpa", when = function(g, i)
     return g:word_in(1, i, "resolution resolutions resolving reso resolve")
