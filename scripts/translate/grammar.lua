@@ -2444,7 +2444,8 @@ G.label_nouns = { run = true, exp = true, experiment = true, trial = true, batch
 G.label_not = { min = true, mins = true, minute = true, minutes = true, s = true, sec = true, secs = true,
   seconds = true, second = true, h = true, hr = true, hours = true, hour = true, x = true, times = true }
 function G.run_label(text)
-  local noun, num, rest, mark, after = text:match("^%s*(%a+)%s*#?(%d+)(.-)([.:])%s+(.+)$")
+  -- (the noun and its number apart, "run 2", "run #2": "TEST1: alt 2000" names an aircraft)
+  local noun, num, rest, mark, after = text:match("^%s*(%a+)%s+#?(%d+)(.-)([.:])%s+(.+)$")
   if not (noun and G.label_nouns[noun:lower()]) or rest:find("[.:]") then return text end
   local words = 0
   for w in rest:gsub("[()]", " "):gmatch("%S+") do

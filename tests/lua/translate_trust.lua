@@ -22945,6 +22945,7 @@ do
   check_eq(ex("sched hold at 00:15:00, then ff"), "SCHEDULE 00:15:00 HOLD ; FF")
   check_eq(ex("run 2 (LTMA). ein112 fl100 spd 250"), "ALT EIN112 FL100 ; SPD EIN112 250")
   check_eq(ex("run 2 minutes. then pause"), "FF 120 ; HOLD")
+  check_eq(ex("EIN112: alt 2000 spd 250"), "ALT EIN112 2000 ; SPD EIN112 250")
   check_eq(ex("exp 4 headon: cd on, lookahead 5 min, reso mvp, resume past cpa"),
     "ASAS ON ; DTLOOK 300 ; RESO MVP ; RESNAV PASTCPA")
 end
