@@ -19225,6 +19225,10 @@ function M.translate(text, world)
           g.out[c] = "AT " .. wd.id .. " " .. wd.wp .. " DO " .. g.out[c]
           break
         end
+        -- ("after TIMBA turn left heading 290, and keep 250 kts for now": "for now" says it holds from now on; a
+        -- bare "now" is asked, as said loosely)
+        local fn = wd.e and g:find_word(wd.e, #g.t + 1, "now")
+        if fn and fn <= #g.t and g:word(fn - 1, "for") then break end
         g.ask = string.format("I have %s. Should %s also wait until %s passes %s, or run now?",
           table.concat(g.out, " ; "), g.out[c], wd.id, wd.wp)
         break

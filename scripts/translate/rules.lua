@@ -456,6 +456,13 @@ return function(intent, rule, words)
     local a = k and g:refs_in(k, k + 1, "aircraft")[1]
     return a ~= nil and a ~= false and a.exists == true
   end }
+  -- ("EIN112 drop ROKNA": a waypoint of the route of the aircraft named straight before the verb, said straight
+  -- after it, ending the request)
+  rule { "drop remove skip", "delwpt", when = function(g, i)
+    local r, a = g:refs_in(i + 1, i + 2, "waypoint")[1], g:refs_in(1, i, "aircraft")
+    a = a[#a]
+    return r ~= nil and a ~= nil and a.exists and a.e == i and g:skip_fillers(r.e) > #g.t and g:on_route(a.name, r.name)
+  end }
   -- "drop CHARL from united 9's route": a waypoint off the route
   rule { "drop", "delwpt", near = { 8, "@route_nouns" },
          when = function(g, i) return g:has_ref(i + 1, i + 2, "waypoint") end }
@@ -2388,6 +2395,13 @@ return function(intent, rule, words)
     return g.t[k] == nil or (g.t[k].kind == "punct" and g.t[k].text ~= ",")
   end }
   rule { "route rte routing waypoints", "listrte", prev = { 4, "show list display what print see look where check" } }
+  -- ("EIN112 wpts?", "KLM12 route?": the route's noun asked about straight after an aircraft flying, nothing else)
+  rule { "route rte routing waypoints wpts", "listrte", when = function(g, i)
+    local a = g:refs_in(1, i, "aircraft")
+    a = a[#a]
+    return a ~= nil and a.exists and a.e == i and g:skip_fillers(1) == a.b and g.t[i + 1] ~= nil
+      and g.t[i + 1].text == "?" and g.t[i + 2] == nil
+  end }
   -- ("which route he has?", "which route has?": an Italian speaker's "che rotta ha?", "which" straight before it)
   -- (its clause ending there)
   rule { "route rte", "listrte", prev = { 1, "which" }, when = function(g, i)

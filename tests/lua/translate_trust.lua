@@ -22895,6 +22895,8 @@ do
   check_eq(ex("Condor 2AB reduce two five zero, at ROLIS descend FL100 and turn left heading 020"),
     "SPD CFG2AB 250 ; AT CFG2AB ROLIS DO ALT CFG2AB FL100 ; AT CFG2AB ROLIS DO HDG CFG2AB 20 LEFT")
   asked(ex("Condor 2AB reduce two five zero, at ROLIS descend FL100, turn left heading 020"), "the turn: there or now?")
+  check_eq(ex("Condor 2AB after ROLIS turn left heading 290, and keep 250 kts for now"),
+    "AT CFG2AB ROLIS DO HDG CFG2AB 290 LEFT ; SPD CFG2AB 250")
   check_eq(ex("add a triple seven three hundred ER UAE414, at 35 S 147 E heading 080 FL360 M.84"),
     "CRE UAE414 B77W -35 147 80 FL360 M0.84")
   check_eq(ex("link two four four one climb FL150"), "ALT RLK2441 FL150")
@@ -22952,4 +22954,10 @@ end
 do
   local _, ex = navscene({}, "a count read as a fix's name")
   if ex then check_eq(ex("add ten random aircraft"), "MCRE 10") end
+end
+do
+  local _, ex = scene({ "CRE EIN112 A320 53 -6 90 FL100 250", "DEFWPT ROKNA 53.1 -5.5", "ADDWPT EIN112 ROKNA" })
+  check_eq(ex("EIN112 drop ROKNA"), "DELWPT EIN112 ROKNA")
+  check_eq(ex("EIN112 drop FL80"), "ALT EIN112 FL80")
+  check_eq(ex("EIN112 wpts?"), "LISTRTE EIN112")
 end
