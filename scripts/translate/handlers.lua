@@ -74,6 +74,20 @@ function H.cut_off(n)
   local d = n.digits
   return #d == 1 or (#d == 2 and d:sub(1, 1) ~= "0" and d:sub(2, 2) == "0")
 end
+-- True when the value ending at token e is broken off: an ellipsis ("...", "…") or a hesitation straight after it,
+-- then only marks, hesitations and fillers to the end of the request.
+function m:broken_off(e)
+  local t = self.t[e]
+  local dots = t and t.kind == "punct" and (t.text == "..." or t.text == "…"
+    or (t.text == "." and self.t[e + 1] and self.t[e + 1].text == "."))
+  if not (dots or self:word(e, "@hesitations")) then
+    return false
+  end
+  for k = e, #self.t do
+    if not (self.t[k].kind == "punct" or self.t[k].filler or self:word(k, "@hesitations")) then return false end
+  end
+  return true
+end
 function m:values_after_trigger(s)
   local n = 0
   for _, q in ipairs(self:quantities(s.b, s.e)) do if q.b >= s.trig then n = n + 1 end end

@@ -1266,6 +1266,10 @@ return function(H, f, wrap, compass)
         hdg = 200 + hdg
       elseif not n.typed and n.lead_digit and H.cut_off(n) then
         return self:need("What heading should " .. id .. " fly? I heard " .. n.digits .. ": headings have three digits.")
+      elseif not n.typed and #n.digits < 3 and not n.hundred and self:broken_off(abs.e) then
+        -- ("turn right heading zero four... uh": the digits broken off, the rest never said)
+        return self:need("What heading should " .. id .. " fly? I heard " .. n.digits .. " and no more: headings have "
+          .. "three digits.")
       end
       -- "hdg 27" typed: two digits with no leading zero may have lost the final one (027 or 270?)
       if n.typed and #n.digits == 2 and hdg >= 10 and hdg <= 36 and hdg == math.floor(hdg) then

@@ -22961,3 +22961,13 @@ do
   check_eq(ex("EIN112 drop FL80"), "ALT EIN112 FL80")
   check_eq(ex("EIN112 wpts?"), "LISTRTE EIN112")
 end
+
+-- Cycle 75 (lead, R328 first sight): "turn right heading zero four... uh" flew 040: a heading of fewer than three
+-- digits broken off by an ellipsis or a hesitation, nothing after, is asked
+do
+  local _, ex = scene({ "CRE EWG7AB A320 50 8 90 FL200 280" })
+  asked(ex("Eurowings 7AB turn right heading zero four... uh"), "the heading broken off")
+  asked(ex("ewg7ab turn right heading zero four..."), "the heading broken off")
+  check_eq(ex("ewg7ab heading zero niner."), "HDG EWG7AB 90")
+  check_eq(ex("ewg7ab heading zero four... correction, zero six zero"), "HDG EWG7AB 60")
+end
