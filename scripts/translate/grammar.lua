@@ -2437,24 +2437,6 @@ function G.cut_off_restarts(text)
   end
   return text
 end
--- An experiment's label opening the request, closed by a full stop or a colon ("run 2 (LTMA). speedbird 8ck fl100",
--- "run 6 BRU sector. asas on, ...", "exp 4 headon: cd on, ..."): "run", "exp", "trial" and the like, its number, then
--- at most three words of no unit of time or rate ("run 2 minutes. ..." is a run of the clock): dropped.
-G.label_nouns = { run = true, exp = true, experiment = true, trial = true, batch = true, case = true, test = true }
-G.label_not = { min = true, mins = true, minute = true, minutes = true, s = true, sec = true, secs = true,
-  seconds = true, second = true, h = true, hr = true, hours = true, hour = true, x = true, times = true }
-function G.run_label(text)
-  -- (the noun and its number apart, "run 2", "run #2": "TEST1: alt 2000" names an aircraft)
-  local noun, num, rest, mark, after = text:match("^%s*(%a+)%s+#?(%d+)(.-)([.:])%s+(.+)$")
-  if not (noun and G.label_nouns[noun:lower()]) or rest:find("[.:]") then return text end
-  local words = 0
-  for w in rest:gsub("[()]", " "):gmatch("%S+") do
-    words = words + 1
-    if G.label_not[w:lower()] or w:match("^%d") then return text end
-  end
-  if words > 3 or (mark == "." and num:match("%d%.")) then return text end
-  return after
-end
 -- A word said again after a hesitation ("until, uh, until five miles final", "descend, er, descend FL80"): a word
 -- of letters, hesitations (lexicon.hesitations) and commas, then the same word: the first is dropped with them (a
 -- digit word so said may be a digit more: "two, uh, two five zero" stays as said).
@@ -3589,7 +3571,7 @@ local function written_forms(text, world)
   end)
   -- "47,5 north", "8,5 degrees east", "factor to 1,1": a decimal comma (G.decimal_comma) is the point
   where("%d,%d", "()(%d+),(%d+)()", function(b, whole, part, e) return G.decimal_comma(text, b, whole, part, e) end)
-  text = typed_abbreviations(lone_multipliers(tokens.numerals_apart(G.unfinished_restarts(G.cut_off_restarts(G.repeated_restarts(G.abandoned_instruction_words(G.cancelled_direct(G.run_label(text)))))), DIGIT_WORDS), world))
+  text = typed_abbreviations(lone_multipliers(tokens.numerals_apart(G.unfinished_restarts(G.cut_off_restarts(G.repeated_restarts(G.abandoned_instruction_words(G.cancelled_direct(text))))), DIGIT_WORDS), world))
   text = hyphened_types(spelled(G.spelled_letter_a(heard_forms(negated_values(G.readback_reported(readback_heard(self_corrections(G.said_but(G.cancel_corrections(unlabelled(foreign_digits(G.portuguese_and(G.polish_and(G.said_whole(G.french_in_english(G.denied_word(G.dutch_chat(G.condition_then(G.condition_copula(G.recreate_said(text)))))))))))))))))))))
   low = text:lower()
   -- a position typed as whole degrees after the hemisphere, then minutes ("N55 50.0 W003 20.0", "S33 57
@@ -18711,7 +18693,7 @@ end
 -- flight verb, nor a pronoun (TITLE_NOT); a part that is a noun alone has its id ("Run 2:"; "Run:" may be the
 -- clock's), and a full stop ends a title only after an id.
 G.TITLE_NOUNS = { experiment = true, experiments = true, scenario = true, series = true, test = true, trial = true,
-  exercise = true, run = true, setup = true, demo = true, session = true, study = true }
+  exercise = true, run = true, setup = true, demo = true, session = true, study = true, exp = true, batch = true }
 G.TITLE_NOT = { now = true, ["then"] = true, first = true, so = true, ["and"] = true, just = true, please = true,
   climb = true, descend = true, turn = true, maintain = true, reduce = true, increase = true, speed = true,
   direct = true, delete = true, create = true, hold = true, pause = true, resume = true, stop = true, start = true,
@@ -18736,8 +18718,21 @@ function G.title_label(text)
     end
     if not words[k] or pre > 3 then return text end
     while words[k] do
-      if not G.TITLE_NOUNS[words[k]:lower()] then return text end
-      local id = words[k + 1] and (words[k + 1]:match("^%d%d?%a?$") or words[k + 1]:match("^%u$"))
+      -- (the last part's id may be followed by up to three words naming the run's place or case: "run 2 (LTMA).",
+      -- "run 6 BRU sector.", "exp 4 headon:"; none a unit of time or rate, a number, or TITLE_NOT)
+      if not G.TITLE_NOUNS[words[k]:lower()] then
+        if not (pre == 1 and k > 2 and words[k - 1]:match("^%d") and part == parts[#parts] and #words - k < 3) then
+          return text
+        end
+        for x = k, #words do
+          local w = words[x]:gsub("^%((.*)%)$", "%1")
+          if not w:match("^%a[%a%-]*$") or G.TITLE_NOT[w:lower()] or G.time_units[w:lower()] then return text end
+        end
+        break
+      end
+      -- ("run 2x: ...": a rate, no id)
+      local id = words[k + 1] and not words[k + 1]:match("^%d+[xX]$")
+        and (words[k + 1]:match("^%d%d?%a?$") or words[k + 1]:match("^%u$"))
       if not id and pre == 0 and not words[k + 1] then return text end
       k, pre = k + (id and 2 or 1), 1
       -- (a full stop ends a title only after its id: "let it run." is the clock's)

@@ -22937,7 +22937,8 @@ end
 -- Cycle 75 (lead, R326 first sight): a lab technician's notes. "make it the del area" deleted the one aircraft flying
 -- (a hazard: "del" before "area" is the deletion area's); "mcre 10 B738 dest EHAM" set that aircraft's destination
 -- (a hazard: "dest" after random traffic is MCRE's); "sched hold at 00:15:00" is a scheduled pause, no holding
--- pattern; "run 2 (LTMA). ..." and "exp 4 headon: ..." open with a label; "reso mvp, resume past cpa" sets both
+-- pattern; "run 2 (LTMA). ..." and "exp 4 headon: ..." open with a title (G.title_label); "reso mvp, resume past cpa"
+-- sets both
 do
   local _, ex = scene({ "CRE EIN112 A320 53 -6 90 FL100 250" })
   check_eq(ex("circle CTR1 47.45 8.55 r 10nm, make it the del area"), "CIRCLE CTR1 47.45 8.55 10 ; AREA CTR1")
@@ -22948,6 +22949,8 @@ do
   check_eq(ex("run 2 (LTMA). ein112 fl100 spd 250"), "ALT EIN112 FL100 ; SPD EIN112 250")
   check_eq(ex("run 2 minutes. then pause"), "FF 120 ; HOLD")
   check_eq(ex("EIN112: alt 2000 spd 250"), "ALT EIN112 2000 ; SPD EIN112 250")
+  -- ("run 2x: ..." dropped the rate as a title's id: a rate is no id)
+  asked(ex("run 2x: ein112 fl100"), "the rate before the colon")
   check_eq(ex("exp 4 headon: cd on, lookahead 5 min, reso mvp, resume past cpa"),
     "ASAS ON ; DTLOOK 300 ; RESO MVP ; RESNAV PASTCPA")
 end
