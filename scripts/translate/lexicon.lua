@@ -2918,6 +2918,8 @@ return {
       ["mantenga nivel actual"] = "maintain present level", ["mantener nivel actual"] = "maintain present level",
       reduzca = "reduce", aumente = "increase", proceda = "proceed", vuele = "fly", directo = "direct",
       ["directo a"] = "direct to", ["directo al"] = "direct to", cruce = "cross", cruzar = "cross",
+      -- (the gerund opening a condition: "cruzando DORSA descend level 160", when crossing it)
+      cruzando = "when crossing",
       cruza = "cross", indique = "say", ["donde esta"] = "where is", ["dónde está"] = "where is",
       ["donde está"] = "where is", ["cual es"] = "what is", ["cuál es"] = "what is",
       -- (the informal imperative and the infinitive: "baja a nivel 90", "virar derecha")
@@ -3155,8 +3157,9 @@ return {
     },
     -- words of `words` said the same in Spanish or English: no sign of Portuguese alone
     shared = { nivel = true, ["nível"] = true, avance = true, suba = true, aumente = true, centro = true, torre = true },
-    -- ("cria o GLO1234": the article, read only in a sentence another word marks Portuguese)
-    joining = { o = "the" },
+    -- ("cria o GLO1234": the article, read only in a sentence another word marks Portuguese; "curve left proa
+    -- zero three zero": "curva" said half in English)
+    joining = { o = "the", curve = "turn" },
   },
   -- Swedish, Norwegian and Danish words in a Scandinavian controller's or sim operator's terse English ("direct
   -- GATMA og descend FL100", "climb FL280 nej FL260", "ta bort DLH2TC", "pausa simuleringen"): "og" and "och"

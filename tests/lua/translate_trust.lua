@@ -22974,3 +22974,15 @@ do
   check_eq(ex("ewg7ab heading zero niner."), "HDG EWG7AB 90")
   check_eq(ex("ewg7ab heading zero four... correction, zero six zero"), "HDG EWG7AB 60")
 end
+
+-- Cycle 75 (lead, R327): a Latin American controller's words: "cruzando DORSA descend" (the Spanish gerund opening a
+-- condition at the waypoint), "curve left proa zero three zero" ("curve", Portuguese "curva", read as "turn" only in
+-- a sentence another word marks Portuguese; alone it is asked)
+do
+  local _, ex = scene({ "CRE AVA9321 A320 4 -74 90 FL200 280", "DEFWPT DORSA 4.2 -73.5", "ADDWPT AVA9321 DORSA",
+    "CRE AZU2772 A320 -23 -46 90 FL200 280" })
+  check_eq(ex("Avianca nine three two one, cruzando DORSA descend level one six zero"),
+    "AT AVA9321 DORSA DO ALT AVA9321 FL160")
+  check_eq(ex("Azul two seven seven two, curve left proa zero three zero"), "HDG AZU2772 30 LEFT")
+  asked(ex("azu2772 curve left heading 030"), "'curve' in an English sentence")
+end
