@@ -22,6 +22,14 @@ std::vector<Quantity> qty(const char* text) {
   return extract_quantities(toks, 0, toks.size(), skip);
 }
 
+// The one quantity `text` holds (fails when it holds none or several).
+Quantity one_qty(const char* text) {
+  auto q = qty(text);
+  INFO(text);
+  REQUIRE(q.size() == 1);
+  return q[0];
+}
+
 }  // namespace
 
 TEST_CASE("number words: cardinals") {
@@ -139,38 +147,31 @@ TEST_CASE("lexer: a point or an apostrophe grouping thousands; a decimal comma a
 }
 
 TEST_CASE("quantities: units decide the kind") {
-  auto q = qty("flight level three five zero");
-  REQUIRE(q.size() == 1);
-  CHECK(q[0].kind == QKind::kAlt);
-  CHECK(q[0].value == 35000);
-  CHECK(q[0].flight_level);
+  Quantity one = one_qty("flight level three five zero");
+  CHECK(one.kind == QKind::kAlt);
+  CHECK(one.value == 35000);
+  CHECK(one.flight_level);
 
   // "level" alone before one or two digit words and "thousand": an altitude in feet; "flight level"
   // stays a level
-  q = qty("when level one zero thousand");
-  REQUIRE(q.size() == 1);
-  CHECK(q[0].kind == QKind::kAlt);
-  CHECK(q[0].value == 10000);
-  CHECK_FALSE(q[0].flight_level);
-  q = qty("flight level three one zero one thousand five hundred feet per minute");
+  one = one_qty("when level one zero thousand");
+  CHECK(one.kind == QKind::kAlt);
+  CHECK(one.value == 10000);
+  CHECK_FALSE(one.flight_level);
+  auto q = qty("flight level three one zero one thousand five hundred feet per minute");
   REQUIRE(q.size() == 2);
   CHECK(q[0].value == 31000);
   CHECK(q[0].flight_level);
 
-  q = qty("30k ft");
-  REQUIRE(q.size() == 1);
-  CHECK(q[0].kind == QKind::kAlt);
-  CHECK(q[0].value == 30000);
+  one = one_qty("30k ft");
+  CHECK(one.kind == QKind::kAlt);
+  CHECK(one.value == 30000);
 
-  q = qty("M.78");
-  REQUIRE(q.size() == 1);
-  CHECK(q[0].kind == QKind::kMach);
-  CHECK(q[0].value == doctest::Approx(0.78));
-
-  q = qty("mach point seven eight");
-  REQUIRE(q.size() == 1);
-  CHECK(q[0].kind == QKind::kMach);
-  CHECK(q[0].value == doctest::Approx(0.78));
+  for (const char* said : {"M.78", "mach point seven eight"}) {
+    one = one_qty(said);
+    CHECK(one.kind == QKind::kMach);
+    CHECK(one.value == doctest::Approx(0.78));
+  }
 
   q = qty("250 kts 1500 fpm 2000 feet per minute");
   REQUIRE(q.size() == 3);
@@ -182,19 +183,15 @@ TEST_CASE("quantities: units decide the kind") {
   // a rate's minute after "the", "each" or "in the"; "in a minute" is a delay, the feet an altitude
   for (const char* said :
        {"1000 feet the minute", "1000 feet in the minute", "1000 feet each minute"}) {
-    q = qty(said);
-    REQUIRE(q.size() == 1);
-    CHECK(q[0].kind == QKind::kVs);
-    CHECK(q[0].value == 1000);
+    one = one_qty(said);
+    CHECK(one.kind == QKind::kVs);
+    CHECK(one.value == 1000);
   }
-  q = qty("3000 feet in a minute");
-  REQUIRE(q.size() == 1);
-  CHECK(q[0].kind == QKind::kAlt);
+  CHECK(one_qty("3000 feet in a minute").kind == QKind::kAlt);
 
-  q = qty("3000 m");
-  REQUIRE(q.size() == 1);
-  CHECK(q[0].kind == QKind::kAlt);
-  CHECK(q[0].value == 9843);  // metres converted to whole feet
+  one = one_qty("3000 m");
+  CHECK(one.kind == QKind::kAlt);
+  CHECK(one.value == 9843);  // metres converted to whole feet
 
   q = qty("10 minutes 0.5 s 2.5 NM 10% 5x");
   REQUIRE(q.size() == 5);
