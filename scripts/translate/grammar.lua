@@ -493,6 +493,7 @@ for _, h in ipairs(lexicon.heard_as) do
     HEARD[words[1]] = HEARD[words[1]] or {}
     table.insert(HEARD[words[1]], { words = words, means = h.means, before = h.before and set_of(h.before),
                                     after = h.after and set_of(h.after), not_after = h.not_after and set_of(h.not_after),
+                                    closed_after = h.closed_after and set_of(h.closed_after),
                                     between = h.between and { set_of(h.between[1]), set_of(h.between[2]) } })
   end
 end
@@ -524,6 +525,7 @@ local function heard_forms(text)
         if (h.before and not closed and heard_word_is(toks[i + n], h.before))
             or (h.before and closed and G.heard_taken_back[bare[i + n]])
             or (h.after and joined_before and heard_word_is(toks[i - 1], h.after))
+            or (h.closed_after and closed and joined_before and heard_word_is(toks[i - 1], h.closed_after))
             or (h.between and not closed and joined_before and heard_word_is(toks[i - 1], h.between[1])
                 and heard_word_is(toks[i + n], h.between[2])) then
           return h.means .. (last:match("%p+$") or ""), i + n
@@ -2150,15 +2152,16 @@ function G.sim_old(text)
     return (toks[i]:match("^O") and "Hold" or "hold"), i + 1
   end)
 end
--- "170 knots till for miles final", "until fife DME": the count of a distance limit as a recogniser writes it, one
--- word straight after "until", "till" or "to" and straight before its unit (G.limit_units), is that digit: "for" and
--- "fore" 4, the radiotelephony "tree" 3, "fower" 4, "fife" 5 (no "to": "to four DME" is said as it is)
+-- "170 knots till for miles final", "until fife DME", "a look ahead of for minutes": the count of a distance or
+-- time as a recogniser writes it, one word straight after "until", "till", "to" or "of" and straight before its
+-- unit (G.limit_units), is that digit: "for" and "fore" 4, the radiotelephony "tree" 3, "fower" 4, "fife" 5 (no
+-- "to for": "to for miles" may be "two four miles")
 G.limit_digits = { ["for"] = "four", fore = "four", tree = "three", fower = "four", fife = "five" }
-G.limit_leads = set_of({ "until", "till", "til", "to" })
-G.limit_units = set_of({ "miles", "mile", "nm", "dme", "final" })
+G.limit_leads = set_of({ "until", "till", "til", "to", "of" })
+G.limit_units = set_of({ "miles", "mile", "nm", "dme", "final", "minutes", "minute", "min", "mins" })
 function G.limit_homophones(text)
   local low = text:lower()
-  if not (low:find("til", 1, true) or low:find("to ", 1, true)) then return text end
+  if not (low:find("til", 1, true) or low:find("to ", 1, true) or low:find("of ", 1, true)) then return text end
   local toks, bare = plain_words(text)
   return tokens.rewrite(text, toks, function(i)
     local d = G.limit_digits[bare[i]]
@@ -2172,8 +2175,9 @@ end
 -- Words speech recognition writes for a digit (lexicon.digit_homophones) where the other reading leaves the
 -- value incomplete or impossible, read as that digit:
 --  * before "thousand" with no digit before it: "for" or "fore" ("descend to for thousand feet": 4000 ft;
---    "descend for thousand five hundred": 4500 ft), and "to" or "too" after a "to" ("descend to to thousand":
---    2000 ft). A lone "to" stays ("descend to thousand feet" has lost its digit: asked);
+--    "descend for thousand five hundred": 4500 ft), and "to" or "too" after a "to" or an "at" ("descend to to
+--    thousand": 2000 ft; "descend at to thousand feet per minute": 2000 ft/min). A lone "to" stays ("descend to
+--    thousand feet" has lost its digit: asked);
 --  * a speed of three words straight after "speed", "reduce" or "increase": "to", then "to", "too", "for" or
 --    "fore", then a digit word, before "knots" or the clause's end ("reduce speed to to zero knots": 220 kt;
 --    "to for zero": 240 kt), where one "to" is the preposition and the other word a digit. A single "to" before
@@ -2191,7 +2195,8 @@ function G.thousand_speed_homophones(text)
       local loose = not before or not (DIGIT_WORDS[before] or NUMBER_WORDS[before] or before:match("^%d"))
       if (h == "for" or h == "fore") and loose then
         convert[k - 1] = true
-      elseif (h == "to" or h == "too") and (before == "to" or before == "too") and not toks[k - 2]:match("%p$") then
+      elseif (h == "to" or h == "too") and (before == "to" or before == "too" or before == "at")
+          and not toks[k - 2]:match("%p$") then
         convert[k - 1] = true
       end
     elseif G.speed_homophone_anchors[w] and bare[k + 1] == "to" and not toks[k]:match("%p$") then
@@ -2209,6 +2214,37 @@ function G.thousand_speed_homophones(text)
         for _, h in ipairs(heard) do convert[h] = true end
       end
     end
+  end)
+end
+-- "descend 3000 feet, and when you reach it, two hundred knots", "once level, 250 kts": a speed said bare with its
+-- unit (a run of number words or digits, then "knots", "kts", "kt" or "knot") straight after a comma that closes a
+-- condition of lexicon.level_condition (at most six words, no mark inside, "and" or "then" before it or not) is that
+-- speed's instruction: "speed" is written before the value, which the condition then holds as any instruction
+G.bare_speed_units = set_of({ "knots", "kts", "kt", "knot" })
+G.bare_speed_openers = set_of(lexicon.level_condition)
+function G.conditioned_bare_speed(text)
+  local low = text:lower()
+  if not (low:find("kt", 1, true) or low:find("knot", 1, true)) then return text end
+  local toks, bare = plain_words(text)
+  local at = {}
+  for k = 1, #bare do
+    if G.bare_speed_openers[bare[k]] and not (k > 1 and not toks[k - 1]:match("[,;]$") and not
+        (bare[k - 1] == "and" or bare[k - 1] == "then")) then
+      local c = k
+      while c < #bare and c <= k + 6 and not toks[c]:match("%p$") do c = c + 1 end
+      local v = c + 1
+      if toks[c]:match(",$") and bare[v] and (NUMBER_WORDS[bare[v]] or bare[v]:match("^%d+$")) then
+        local e = v
+        while bare[e + 1] and (NUMBER_WORDS[bare[e + 1]] or bare[e + 1] == "and") and not toks[e]:match("%p$") do
+          e = e + 1
+        end
+        if G.bare_speed_units[bare[e + 1] or ""] and not toks[e]:match("%p$") then at[v] = true end
+      end
+    end
+  end
+  if not next(at) then return text end
+  return tokens.rewrite(text, toks, function(i)
+    if at[i] then return "speed " .. toks[i], i + 1 end
   end)
 end
 -- The axis ("lat" or "lon", lexicon.coordinate_axes.hemispheres) a word of bare_words names as a hemisphere (its
@@ -3749,7 +3785,8 @@ local function written_forms(text, world)
       return before .. " direct " .. after
     end)
   end
-  text = G.navaid_city_names(G.sim_old(G.thousand_speed_homophones(value_homophones(G.limit_homophones(split_digits(text))))))
+  text = G.navaid_city_names(G.sim_old(G.thousand_speed_homophones(value_homophones(G.limit_homophones(
+    G.conditioned_bare_speed(split_digits(text)))))))
   -- "dlh4ax up 2000", "down 1500 pls": a bare whole or half thousand typed after "up" or "down" is a change of
   -- level by that many feet, as "up 2000 ft" (after a rate's or a speed's name, "vs up 2000", or before a unit,
   -- it stays as typed; "up 20" stays too, and is asked)

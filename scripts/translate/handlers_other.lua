@@ -510,6 +510,26 @@ return function(H, f, compass)
         break
       end
     end
+    -- "heading to seven zero", "speed to to fifty knots": two spoken digits or a tens word straight after a "to"
+    -- (lexicon.two_heard) as the heading, or after two as a speed under 100 kt for a type of no light class, have
+    -- their "two" in that "to" (270, 250), as the HDG and SPD handlers read them; "heading to one zero" (210 or
+    -- 100?) is asked
+    for _, q in ipairs(qs) do
+      local n = q.number
+      if n and not n.typed and #(n.digits or "") == 2 and self:word(q.b - 1, "@two_heard") then
+        local after = self.t[q.b - 2] and self.t[q.b - 2].text
+        if q.kind == "heading" or (q.kind == "plain" and (after == "heading" or after == "hdg")) then
+          if q.value * 10 <= 360 then
+            return self:need(string.format("What heading should %s have: %d or %03d? I heard '%s'.",
+              (id or "it"):upper(), 200 + q.value, q.value * 10, self:raw(q.b - 1, q.e)))
+          end
+          q.value = 200 + q.value
+        elseif (q.kind == "speed" or self:word(q.b - 3, "speed spd")) and self:word(q.b - 2, "@two_heard") and q.value < 100
+            and q.value % 10 == 0 and actype and not require("translate.types").slow_class(actype) then
+          q.value = 200 + q.value
+        end
+      end
+    end
     for _, q in ipairs(qs) do
       if q.kind == "heading" and not hdg then hdg = q.value end
       -- "flying 300 deg": an angle with no turn is the heading
@@ -835,7 +855,11 @@ return function(H, f, compass)
         end
       end
     end
-    if spd and spd < L.min_airborne_kt and alt and alt > 0 then
+    -- (airborne under lexicon.min_airborne_kt, or a known jet, a type of no light class, under 100 kt: "a 747 at
+    -- FL350, speed 60")
+    local ty = require("translate.types")
+    local jet = ty.known_designator(actype:upper()) and not ty.slow_class(actype)
+    if spd and (spd < L.min_airborne_kt or (jet and spd < 100)) and alt and alt > 0 then
       return self:need(string.format("%s would fly at %s kt: which speed should it have?", id:upper(), f.int(spd)))
     end
     -- (the speed's field named with no speed read, "... 14000 feet speed", "velocity fast": asked, never left out)
@@ -3987,13 +4011,17 @@ return function(H, f, compass)
   -- "destination echo hotel alpha mike": an ICAO code spelled in the phonetic alphabet after the
   -- instruction word, four letters exactly, that names an airport of the navdata (without navdata,
   -- or with another count of letters, none)
+  -- (each letter in the phonetic alphabet or as a single letter a recogniser writes: "Z S P D")
+  local function spelled_letter(t)
+    return t.kind == "word" and (L.phonetic[t.text] or (t.text:match("^%a$") and t.text:upper()))
+  end
   local function spelled_airport(self, s)
     local class = self.world.airport_class
     local k = s.trig + 1
-    while k < s.e and not (self.t[k].kind == "word" and L.phonetic[self.t[k].text]) do k = k + 1 end
+    while k < s.e and not spelled_letter(self.t[k]) do k = k + 1 end
     local from, code = k, ""
-    while k < s.e and self.t[k].kind == "word" and L.phonetic[self.t[k].text] and #code < 5 do
-      code, k = code .. L.phonetic[self.t[k].text], k + 1
+    while k < s.e and spelled_letter(self.t[k]) and #code < 5 do
+      code, k = code .. spelled_letter(self.t[k]), k + 1
     end
     if #code ~= 4 or not class or (class(code) or "") == "" then return nil end
     self:mark_used(from, k)

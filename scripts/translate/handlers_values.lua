@@ -5,6 +5,7 @@
 return function(H, f, wrap, compass)
   local m = H.methods
   local L = require("translate.lexicon")
+  local types = require("translate.types")
   -- A level said in metres, converted to feet [ft], as cleared: the nearest 100 ft (within 15 m of the metres
   -- said, as an altitude selector sets it and as China's metric level table reads below 8900 m: 8100 m = 26600)
   local function metres_level(ft) return math.floor(ft / 100 + 0.5) * 100 end
@@ -907,7 +908,16 @@ return function(H, f, wrap, compass)
         -- ("niner zero knots"); others' assigned speeds are said as three digits: see H.cut_off
         local a = self:state(id)
         local slow = a and (a.cas_kt or 0) > 0 and a.cas_kt < 200 and kt >= 40 and kt < 100
-        if not q.number.typed and q.number.lead_digit and H.cut_off(q.number) and not slow then
+        -- "reduce speed to to five zero", "slow to to seventy": a spoken speed of two digits or a tens word (10-90
+        -- kt, whole tens) straight after two words of lexicon.two_heard, to an aircraft flying 200 kt or more of no
+        -- light class, has its "two" in the second (250, 270): one preposition, never two, stands before a value. A
+        -- single "to" ("speed to five zero": 50 kt, or 250 with the "two" heard as "to"?) is asked
+        local two = not converted and not q.number.typed and kt >= 10 and kt < 100 and kt % 10 == 0
+          and #q.number.digits == 2 and self:word(q.b - 1, "@two_heard") and self:word(q.b - 2, "@two_heard")
+          and a and (a.cas_kt or 0) >= 200 and not types.slow_class(a.type)
+        if two then
+          kt = 200 + kt
+        elseif not q.number.typed and q.number.lead_digit and H.cut_off(q.number) and not slow then
           return self:need("What speed should " .. id .. " fly? I heard " .. q.number.digits .. ".")
         end
         -- ("speed two five": 250, its zero not heard; never past 400 kt, "four five knots" is asked)

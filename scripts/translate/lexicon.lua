@@ -1648,7 +1648,9 @@ return {
   reason = { "because", "since", "cause", "due" },
   -- verbs of the experimenter's purpose after a comma (", we want it crossing ..."): a reason
   purpose_verbs = { "want", "need", "don't", "dont", "wanna" },
-  reason_after_so = { "that", "it", "they", "it's", "its", "we", "he", "she", "he's", "she's", "the" },
+  reason_after_so = { "that", "it", "they", "it's", "its", "we", "he", "she", "he's", "she's", "the",
+    -- (the class or trainees the instructor shows the traffic to: ", so you can see it turn", "so everyone can see it")
+    "you", "you'll", "everyone", "everybody", "they'll" },
   -- the experimenter's check after an instruction, "see" then one of these ("ff 2 min and see if they lose
   -- separation", ", see whether that's enough"): a reason, to the end of its sentence
   see_whether = { "if", "whether" },
@@ -2645,7 +2647,8 @@ return {
   -- A heard form is that word ONLY where the word is expected: `before` (the
   -- next word is one of these; "#number" any number, digits or number words),
   -- `after` (the word before it is one of these), or `between` (both: after
-  -- one of between[1] and before one of between[2]); never after a word of
+  -- one of between[1] and before one of between[2]), or `closed_after` (after one of these, punctuation closing
+  -- the form: "when reach, Mach .79"); never after a word of
   -- `not_after` (a name the heard form ends: "red cap 712" is AirAsia). Anywhere else it stays
   -- what it is ("write the heading down", "head into the wind", "the send
   -- button", "climb two four thousand").
@@ -2738,6 +2741,10 @@ return {
       between = { { "when", "whenever", "once", "after" }, { "#number", "fl", "flight", "level", "altitude", "#code" } } },
     { heard = { "it reached", "he reached", "she reached", "you reached" }, means = "reaching",
       between = { { "when", "whenever", "once", "after" }, { "#number", "fl", "flight", "level", "altitude" } } },
+    -- ("descend FL310, when reach, Mach .79", "when reach FL100 turn left": the verb's bare form, as a Japanese or
+    -- Chinese speaker says it, is reaching)
+    { heard = { "reach" }, means = "reaching", closed_after = { "when", "once", "upon", "on" },
+      between = { { "when", "once", "upon", "on" }, { "#number", "fl", "flight", "level", "altitude" } } },
     { heard = { "as soon as" }, means = "once",
       before = { "#capital", "the", "it", "it's", "he", "he's", "she", "she's", "they", "they're", "you're", "level", "lvl", "reaching",
                  "passing", "past", "established" } },
@@ -2748,6 +2755,9 @@ return {
     { heard = { "it arrives to", "it arrives at", "arrives to", "arrives at" }, means = "it reaches",
       after = { "when", "once", "after" } },
     { heard = { "you are at" }, means = "it is at", after = { "when", "once" } },
+    -- (and typed fast with the apostrophe left out: "when shes at mach .8", "once hes at FL230")
+    { heard = { "shes at", "hes at", "its at", "theyre at", "youre at" }, means = "it is at",
+      after = { "when", "once" } },
     -- (the aircraft as "he" or "she", the verb not agreeing, as a French or Arabic speaker says it: "when he arrive
     -- at LAKAM, he must descend ...", "descend FL320 when she arrive at GALIT")
     { heard = { "he arrive to", "he arrive at", "she arrive to", "she arrive at", "he arrives to", "he arrives at",
@@ -3528,5 +3538,9 @@ return {
     -- beside a pause ("Pause the exercise, tea break")
     "ag shame", "shame", "eish",
     -- and approval ("..., lekker", "ok lekker, run": nice, good; "heading 080 lekker" after a value is asked)
-    "lekker", "tea break", "coffee break", "lunch break", "comfort break" },
+    "lekker", "tea break", "coffee break", "lunch break", "comfort break",
+    -- Korean and Mandarin hesitations said in English between commas ("..., eo, descend", "..., nage, reduce"):
+    -- Korean "eo", "eum", "geu", "jeo" (uh, that); Mandarin "en", "nage", "zhege" (um, that), "hao", "dui" (ok,
+    -- right)
+    "eo", "eum", "geu", "jeo", "en", "nage", "zhege", "hao", "dui" },
 }

@@ -2619,6 +2619,22 @@ return function(intent, rule, words)
     end
     return false
   end }
+  -- "how's VIR3 doing", "how is the Speedbird doing?", "VIR3, how's it doing": "how" ("is" or its "'s"), the
+  -- aircraft or its pronoun, then "doing"
+  rule { "doing", "pos", when = function(g, i)
+    local k = i - 1
+    if g:word(k, "it he she") then
+      k = k - 1
+    else
+      local named = false
+      for _, r in ipairs(g.refs) do
+        if r.kind == "aircraft" and r.e == i then k, named = g:word(r.b - 1, "the") and r.b - 2 or r.b - 1, true end
+      end
+      if not named then return false end
+    end
+    if g:word(k, "is 's") then k = k - 1 end
+    return g:word(k, "how how's hows") and (k == 1 or g.t[k - 1].kind == "punct" or g:has_ref(1, k, "aircraft"))
+  end }
   -- the question in the order of a statement, "what" closing the request ("the TACA is doing what?", "KLM12 is
   -- doing what now", a Spanish speaker's "está haciendo qué"): the aircraft, "is" or "are" or neither, at most two
   -- of lexicon.indirect_question_adverbs, then "doing what"
@@ -3141,6 +3157,12 @@ return function(intent, rule, words)
   -- three times speed": "carry on" opening the request ("go on, let it fast-forward" urges the next one on)
   rule { "carry go", "op", next = "on", when = function(g, i)
     return g:clause_alone(i, i + 2) or (g:word(i, "carry") and g:clause_opens(i, i + 2))
+  end }
+  -- "okay, back to it, and run at normal speed", "right, back to work": the clock taken up again, a clause of its
+  -- own with no aircraft named anywhere
+  rule { "back", "op", next = "to", when = function(g, i)
+    return g:word(i + 2, "it work") and (g:alone_but(i, i + 3) or g:clause_alone(i, i + 3))
+      and not g:has_ref(1, #g.t + 1, "aircraft")
   end }
   rule { "keep", "op", next = "going", when = function(g, i)
     return g:alone_but(i, i + 2) or g:clause_alone(i, i + 2) or g:clause_opens(i, i + 2)

@@ -22986,3 +22986,66 @@ do
   check_eq(ex("Azul two seven seven two, curve left proa zero three zero"), "HDG AZU2772 30 LEFT")
   asked(ex("azu2772 curve left heading 030"), "'curve' in an English sentence")
 end
+
+-- Cycle 76 (lead, R330-R335 first sight): a recogniser's "two" heard as "to": "reduce speed to to five zero" (one
+-- preposition before a value, never two) is 250 kt; a single "to" ("speed to five zero": 50 kt, or 250?) is asked;
+-- "heading to seven zero" creating an aircraft is 270 (700 is no heading), as HDG reads it; "descend at to thousand
+-- feet per minute" is 2000 ft/min; a jet created under 100 kt ("a 747 ... speed 60") is asked
+do
+  local _, ex = scene({ "CRE AAL123 B738 39.8 -73.7 340 FL120 280", "CRE N12 C172 40 -74 90 3000 100",
+    "DEFWPT PRATT 42 -88" })
+  check_eq(ex("american one twenty three reduce speed to to five zero"), "SPD AAL123 250")
+  check_eq(ex("american one twenty three descend and maintain fife thousand reduce speed to to one zero"),
+    "ALT AAL123 5000 ; SPD AAL123 210")
+  asked(ex("american one twenty three maintain to eight zero knots"), "a single 'to' before 80 kt")
+  asked(ex("AAL123 reduce speed to two zero knots"), "'to two zero': 20 kt, 200 or 220?")
+  check_eq(ex("N12 speed to to eight zero"), "SPD N12 80")
+  check_eq(ex("AAL123 descend at to thousand feet per minute"), "VS AAL123 -2000")
+  check_eq(ex("create DLH423 B748 at PRATT heading to seven zero FL350 speed 280"), "CRE DLH423 B748 PRATT 270 FL350 280")
+  asked(ex("create DLH423 B748 at PRATT heading to one zero FL350 speed 280"), "'to one zero': 210 or 100?")
+  check_eq(ex("create UAL420 B738 at PRATT heading 090 FL110 speed to to fifty"), "CRE UAL420 B738 PRATT 90 FL110 250")
+  asked(ex("create UAL420 B738 at PRATT heading 090 FL110 to fifty knots"), "a jet created at 50 kt")
+  asked(ex("create DLH423 B748 at PRATT heading 070 FL350 speed 60"), "a jet created at 60 kt")
+  check_eq(ex("create N13 C172 at PRATT heading 090 3000 ft 90 kts"), "CRE N13 C172 PRATT 90 3000 90")
+  check_eq(ex("turn on conflict detection with a look ahead of for minutes"), "ASAS ON ; DTLOOK 240")
+end
+
+-- Cycle 76 (lead, R333, R335): an East Asian controller's hesitation between commas ("..., eo, descend", "...,
+-- nage, reduce") is set aside; "when reach, Mach .79" is reaching the level cleared; a speed said bare with its
+-- unit after a condition's comma ("and when you reach it, two hundred knots") waits for it; a purpose said after
+-- "so" to the class ("so you can see the Cessna turn") is a reason
+do
+  local _, ex = scene({ "CRE KAL017 B738 37 127 90 FL150 280", "CRE ANA97 B763 35 139 90 FL350 280",
+    "CRE GABCD C172 51.2 0 90 3000 100" })
+  check_eq(ex("Korean Air zero one seven, eo, descend flight level one zero zero, speed two five zero"),
+    "ALT KAL017 FL100 ; SPD KAL017 250")
+  check_eq(ex("KAL017, nage, turn left heading 200"), "HDG KAL017 200 LEFT")
+  asked(ex("KAL017 turn left heading 200 nage"), "a hesitation after a value, no comma")
+  check_eq(ex("All Nippon 97 descend flight level three one zero, when reach, Mach seven nine"),
+    "ALT ANA97 FL310 ; ATALT ANA97 FL310 SPD ANA97 M0.79")
+  check_eq(ex("ANA97 when reach FL300 turn left heading 030"), "ATALT ANA97 FL300 HDG ANA97 30 LEFT")
+  check_eq(ex("KAL017, descend to three thousand feet, and when you reach it, two hundred knots."),
+    "ALT KAL017 3000 ; ATALT KAL017 3000 SPD KAL017 200")
+  check_eq(ex("KAL017 descend FL80, once level, 250 kts"), "ALT KAL017 FL80 ; ATALT KAL017 FL80 SPD KAL017 250")
+  check_eq(ex("Let's slow the sim to half speed so you can really see the Cessna turn."), "DTMULT 0.5")
+  check_eq(ex("Switch conflict detection on, class, so you'll see the warnings pop up."), "ASAS ON")
+end
+
+-- Cycle 76 (lead, R332, R335): "how's VIR3 doing", "virgin3 hows it doing" ask for the aircraft's state; "okay, back
+-- to it" resumes the clock; a destination spelled as single letters ("Z S P D") is that airport
+do
+  local _, ex = scene({ "CRE VIR3 B789 51 -1 90 FL350 280", "CRE NAX31K B738 60 10 90 FL340 280" })
+  check_eq(ex("how is VIR3 doing"), "POS VIR3")
+  check_eq(ex("virgin3 hows it doing"), "POS VIR3")
+  check_eq(ex("VIR3 climb FL360, how's NAX31K doing"), "ALT VIR3 FL360 ; POS NAX31K")
+  check_eq(ex("Okay, back to it."), "OP")
+  asked(ex("VIR3 back to it"), "an aircraft sent 'back to it'")
+  check_eq(ex("nor shuttle 31k when shes at mach .8 climb fl380"), "ATSPD NAX31K M0.8 ALT NAX31K FL380")
+end
+do
+  local _, ex = navscene({ "CRE CCA1519 A321 31 121 90 FL200 250" }, "a destination spelled in single letters")
+  if ex then
+    check_eq(ex("Air China 1519, set destination Z S P D"), "DEST CCA1519 ZSPD")
+    check_eq(ex("CCA1519 destination zulu sierra papa delta"), "DEST CCA1519 ZSPD")
+  end
+end
