@@ -4840,6 +4840,19 @@ return function(H, f, compass)
     return nil
   end
 
+  -- The duration [s] said in place of time quantity q after a correction in segment s ("ff 5 min, correction, 4":
+  -- 240 s, a bare number in the unit of the one taken back; "..., sorry, 4 min": 240 s), both values taken; nil when
+  -- no value follows a correction
+  local function corrected_time(self, s, q)
+    local c = self:find_word(q.e, s.e, "@correction")
+    local n = c < s.e and self:quantities(c + 1, s.e)[1]
+    local unit = UNIT_S[self.t[q.e - 1].text]
+    if not n or not (n.kind == "time" or (n.kind == "plain" and unit)) then return nil end
+    self:take(q)
+    self:take(n)
+    return n.kind == "time" and n.value or n.value * unit
+  end
+
   -- the token of a verb that ends fast time before the fast-forward of segment s ("stop the fast-forward",
   -- "cancel this fast forward"), nil when none is said
   local function ff_ended(self, s)
@@ -4963,10 +4976,12 @@ return function(H, f, compass)
         return self:need(string.format("Should the simulation fast-forward for %s, or until the simulation clock reaches %s?",
           self:raw(q.b, q.e), self:raw(q.b, q.e)))
       end
-      -- "2 min 30 s": times in a row add up
+      local fixed = corrected_time(self, s, q)
+      if fixed then return self:emit("FF " .. f.num(fixed)) end
+      -- "2 min 30 s", "1 hour and 20 minutes": times in a row add up
       local total, last = 0, nil
       for _, t in ipairs(self:quantities(q.b, s.e)) do
-        if last and t.b - last.e > 1 then break end
+        if last and (t.b - last.e > 1 or (t.b > last.e and not self:word(last.e, "and"))) then break end
         if t.kind == "plain" and last and t.value > 0 and t.value < 60 then
           -- "one minute thirty", "an hour fifteen": the next smaller unit, its word left out
           if self:word(last.e - 1, "minute minutes min mins") then total = total + t.value end
@@ -5692,6 +5707,9 @@ return function(H, f, compass)
       if b.kind == "time" and b.e == s.trig and not self.taken[b.b] then q = self:take(b) end
     end
     if q then
+      -- ("look ahead 5 min, correction, 4": the time said in place of the one taken back)
+      local fixed = q.kind == "time" and corrected_time(self, s, q)
+      if fixed then return self:emit("DTLOOK " .. f.num(fixed)) end
       self:emit("DTLOOK " .. f.num(q.value))
       -- ("look-ahead 180 s, evaluated every 1 s", "look ahead 300 s, checked each 5 seconds": a time after "every"
       -- or "each" later in the look-ahead's segment is how often detection runs, DT ASAS in seconds)

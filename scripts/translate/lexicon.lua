@@ -2210,6 +2210,8 @@ return {
     -- a hand-off said with another verb before the frequency ("call Vienna on 129.2", "switch to approach
     -- 119.1", "over to Wien 134.35", "go to 129.2")
     { what = "radio frequencies", words = "call switch over go change", near = { "#frequency" } },
+    -- ("hand it to London 133.6", "hand him off to approach on 119.1": the hand-off said with "hand")
+    { what = "radio frequencies", words = "hand handoff", near = { "#frequency" } },
     -- "then Gander on 128.5", "Shanwick on one two seven decimal six": a station named, then "on" and its frequency
     -- (`station_before`: the station's name straight before "on" is the phrase's too, G:not_simulated)
     { what = "radio frequencies", words = "on", near = { "#frequency" }, window = 1, station_before = true },
@@ -2371,6 +2373,10 @@ return {
     -- pilot reports, no instruction (alone it is asked)
     { what = "position reports", words = "report", near = { "sight", "visual" }, window = 4,
       after_instruction = true, clause = true },
+    -- "descend FL70, report DAVOT", "direct LAM, report overhead": after an instruction, the report the pilot makes
+    -- passing a waypoint, no instruction (alone it is asked)
+    { what = "position reports", words = "report", near = { "#waypoint" }, window = 1, after_instruction = true,
+      clause = true },
     -- "turn right 15 degrees, report heading": after an instruction, the readback of what it set is a
     -- report the pilot makes (alone, "report heading" asks for the aircraft's state: POS; so does one after an
     -- instruction that set another measure, "descend FL190 and report your heading", G:report_of_set)

@@ -2450,12 +2450,14 @@ return function(intent, rule, words)
   end }
   -- "what is the next waypoint of Akasa 1402": the route's next point, shown with the route
   rule { "waypoint", "listrte", prev = { 1, "next active" }, when = function(g, i) return g:preceded_by(i, 5, "what which") end }
-  -- "let's get the route for the American up on screen", "put the United's route on the screen": the route shown,
-  -- "on (the) screen" within six words after the noun, a verb of showing or placing at most four before it
+  -- "let's get the route for the American up on screen", "put the United's route on the screen", "put Speedbird
+  -- one two three's route up on the board": the route shown, "on (the) screen" (or scope, display, board, map)
+  -- within six words after the noun, a verb of showing or placing at most seven before it
   rule { "route rte routing waypoints plan", "listrte", when = function(g, i)
     local k = g:find_word(i + 1, math.min(#g.t + 1, i + 7), "on")
     local e = g:word(k + 1, "the") and k + 2 or k + 1
-    return k <= i + 6 and g:word(e, "screen") and g:find_word(math.max(1, i - 4), i, "get put bring have show") < i
+    return k <= i + 6 and g:word(e, "screen scope display board map")
+      and g:find_word(math.max(1, i - 7), i, "get put bring have show") < i
   end }
   -- "tell me the route of the Emirates", "kindly tell the route of Air India 540": the route told to the speaker
   -- ("tell KLM12 to follow its route" instructs)
@@ -2481,6 +2483,15 @@ return function(intent, rule, words)
   -- ("what's your plan for the Transavia?" asks the addressee's own intentions: no route listed)
   rule { "plan", "listrte", prev = { 4, "show list display what print see look where check" },
          not_prev = { 1, "your our my" } }
+  -- ("have a look at Emirates four five's flight plan": "look at" and a spoken callsign's words before "flight plan")
+  rule { "plan", "listrte", prev = { 1, "flight" }, when = function(g, i)
+    local k = g:find_word(math.max(1, i - 8), i, "look")
+    if not (k < i and g:word(k + 1, "at") and g:has_ref(k + 2, i, "aircraft")) then return false end
+    for x = k + 2, i - 1 do
+      if g.t[x].kind == "punct" then return false end
+    end
+    return true
+  end }
   rule { "list", "listrte", prev = { 1, "waypoint" }, near = { 3, "for of" } }  -- "the waypoint list for BAW123"
   -- "ryr8gn say route", "say your routing": the aircraft asked for its route, as "say altitude" for its state
   rule { "route rte routing", "listrte", prev = { 2, "say" } }

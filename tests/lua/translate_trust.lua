@@ -23049,3 +23049,33 @@ do
     check_eq(ex("CCA1519 destination zulu sierra papa delta"), "DEST CCA1519 ZSPD")
   end
 end
+
+-- Cycle 76 (lead, R331, R335): "descend FL70, report DAVOT" (the pilot's report passing a waypoint, not simulated)
+-- sends the level; "put Speedbird one two three's route up on the board", "have a look at Emirates four five's
+-- flight plan" show the route
+do
+  local _, ex = scene({ "CRE LOG8W E145 57 -4 90 FL100 250", "DEFWPT DAVOT 57.5 -4", "ADDWPT LOG8W DAVOT",
+    "CRE UAE45 A388 51.5 4 90 FL350 280", "CRE BAW123 A320 51 0 90 FL200 250" })
+  check_eq(ex("Logan eight whiskey, descend flight level seven zero, report DAVOT"), "ALT LOG8W FL70")
+  asked(ex("LOG8W report DAVOT"), "a report alone")
+  check_eq(ex("Put Speedbird one two three's route up on the board so everyone can see it."), "LISTRTE BAW123")
+  check_eq(ex("Let's have a look at Emirates four five's flight plan."), "LISTRTE UAE45")
+  asked(ex("look at UAE45, change the flight plan"), "a flight plan to change")
+end
+
+-- Cycle 76 (lead, R332): "ff 5 minutes correction 4" fast-forwarded 304 s (the corrected value added as seconds)
+-- and "ff 5 min, correction, 4" or "dtlook 5 min, correction, 4" dropped the 4: the value said after a correction
+-- replaces the one taken back, a bare number in its unit; only times said in a row ("2 min 30 s", "1 hour and 20
+-- minutes") add up; "hand it to London 133.6" is a frequency, not simulated
+do
+  local _, ex = scene({ "CRE VIR3 B789 51 -1 90 FL350 280" })
+  check_eq(ex("ff 5 minutes correction 4"), "FF 240")
+  check_eq(ex("ff 5 min, correction, 4"), "FF 240")
+  check_eq(ex("ff 5 min, sorry, 4 min"), "FF 240")
+  check_eq(ex("ff 5 min, correction, 4 sec"), "FF 4")
+  check_eq(ex("ff 2 min 30 s"), "FF 150")
+  check_eq(ex("ff 1 hour and 20 minutes"), "FF 4800")
+  check_eq(ex("dtlook 5 min, correction, 4"), "DTLOOK 240")
+  check_eq(ex("lookahead 5 min, checked every 2 seconds"), "DTLOOK 300 ; DT ASAS 2")
+  check_eq(ex("virgin 3 descend fl 310 and hand it to london 133.6"), "ALT VIR3 FL310")
+end
