@@ -3608,7 +3608,7 @@ local function written_forms(text, world)
   -- "47,5 north", "8,5 degrees east", "factor to 1,1": a decimal comma (G.decimal_comma) is the point
   where("%d,%d", "()(%d+),(%d+)()", function(b, whole, part, e) return G.decimal_comma(text, b, whole, part, e) end)
   text = typed_abbreviations(lone_multipliers(tokens.numerals_apart(G.unfinished_restarts(G.cut_off_restarts(G.repeated_restarts(G.abandoned_instruction_words(G.cancelled_direct(text))))), DIGIT_WORDS), world))
-  text = hyphened_types(spelled(G.spelled_letter_a(heard_forms(negated_values(G.readback_reported(readback_heard(self_corrections(G.said_but(G.cancel_corrections(unlabelled(foreign_digits(G.portuguese_and(G.polish_and(G.said_whole(G.french_in_english(G.denied_word(G.dutch_chat(G.condition_then(G.condition_copula(G.recreate_said(text)))))))))))))))))))))
+  text = hyphened_types(spelled(G.spelled_letter_a(heard_forms(negated_values(G.readback_reported(readback_heard(self_corrections(G.said_but(G.cancel_corrections(unlabelled(foreign_digits(G.portuguese_and(G.polish_and(G.said_whole(G.french_in_english(G.denied_word(G.dutch_chat(G.condition_then(G.condition_copula(G.recreate_said(G.passive_voice(text))))))))))))))))))))))
   low = text:lower()
   -- a position typed as whole degrees after the hemisphere, then minutes ("N55 50.0 W003 20.0", "S33 57
   -- E151 10"): decimal degrees before their hemisphere ("55.833333 N 3.333333 W"); minutes of 60 or more
@@ -4766,6 +4766,43 @@ end
 -- "delete SpiceJet 403 and recreate it at ...", "..., re-create it at ...": "recreate" or "re-create" said after
 -- "and" or a comma straight before "it" is "create it again" (read by the creation as the aircraft deleted,
 -- handlers_other m:recreated); anywhere else ("we'll re-create it later") left as said.
+-- "Easy 45GH is moved to 52.35 north, 4.40 east", "The route of Lufthansa 2TA is shown.", "SUGOL is added to the
+-- route of Beeline 3PC", "Ten aircraft ... are then generated": a clause of at most eight words before "is" or "are",
+-- none of lexicon.passive.not_subject,
+-- then words of lexicon.passive.adverbs, then a participle of lexicon.passive.participles, is said as the imperative:
+-- the verb, then the clause's words ("move Easy 45GH to ...", "show The route of Lufthansa 2TA."); with one of
+-- lexicon.passive.told and "to" ("KLM1234 is then instructed to turn right ..."), the clause's words alone before the
+-- instruction; the clause opens the request or follows punctuation
+G.passive_participles = lexicon.passive.participles
+G.passive_adverbs, G.passive_told = set_of(lexicon.passive.adverbs), set_of(lexicon.passive.told)
+G.passive_not_subject = set_of(lexicon.passive.not_subject)
+function G.passive_voice(text)
+  local low = text:lower()
+  if not (low:find(" is ", 1, true) or low:find(" are ", 1, true)) then return text end
+  local toks, bare = plain_words(text)
+  local at = {}
+  for k = 2, #bare do
+    if (bare[k] == "is" or bare[k] == "are") and not toks[k - 1]:match("%p$") then
+      local p = k + 1
+      while bare[p] and G.passive_adverbs[bare[p]] and not toks[p]:match("%p$") do p = p + 1 end
+      local verb = bare[p] and G.passive_participles[bare[p]]
+      local told = bare[p] and G.passive_told[bare[p]] and bare[p + 1] == "to" and not toks[p]:match("%p$")
+      local b, plain = k - 1, true
+      while b > 1 and not toks[b - 1]:match("[%.,;:!?]$") do b = b - 1 end
+      for j = b, k - 1 do plain = plain and not G.passive_not_subject[bare[j]] end
+      if (verb or told) and plain and k - b <= 8 then at[b] = { k = k, p = told and p + 1 or p, verb = verb } end
+    end
+  end
+  if not next(at) then return text end
+  return tokens.rewrite(text, toks, function(i)
+    local x = at[i]
+    if not x then return nil end
+    local subject = {}
+    for j = i, x.k - 1 do subject[#subject + 1] = toks[j] end
+    if not x.verb then return table.concat(subject, " "), x.p + 1 end
+    return x.verb .. " " .. table.concat(subject, " ") .. (toks[x.p]:match("%p+$") or ""), x.p + 1
+  end)
+end
 function G.recreate_said(text)
   if not text:lower():find("creat", 1, true) then return text end
   return (text:gsub("([,;]%s*)[Rr][Ee]%-?[Cc][Rr][Ee][Aa][Tt][Ee](%s+[Ii][Tt]%f[%A])", "%1create%2 again")
@@ -15473,7 +15510,8 @@ G.most_rate = 8000  -- [ft/min]
 -- second would replace the first at once, with no time between (a fast-forward between them is one: "dtmult 8, ff
 -- 60, dtmult 4"), so which value, and from when, is asked. (G.set_once: the commands of one value and no aircraft.)
 G.set_once = { DTMULT = "rate should the simulation run at", ZONER = "protected zone radius should be used",
-  ZONEDH = "protected zone half height should be used", DTLOOK = "look-ahead time should be used" }
+  ZONEDH = "protected zone half height should be used", DTLOOK = "look-ahead time should be used",
+  RFACH = "horizontal resolution factor should be used", RFACV = "vertical resolution factor should be used" }
 -- M.setting_twice(lines) -> the question for a list of commands, or nil (the list of typed command clauses is
 -- asked the same: graph.lua).
 function M.setting_twice(lines)
@@ -15492,7 +15530,30 @@ function M.setting_twice(lines)
     end
   end
 end
+-- ("increase the resolution margin factor from 1.05 to 1.1", "zone radius from 5 to 6 nm": the value said after
+-- "from" is the one set now, the one after "to" the value meant: its command alone stays)
+function G:setting_changed_from()
+  for k = 1, #self.t - 3 do
+    local a = self.t[k + 1]
+    local to = self:word(k + 2, "to") and k + 2 or (self:word(k + 3, "to") and k + 3)
+    local b = to and self.t[to + 1]
+    if self:word(k, "from") and a.kind == "number" and b and b.kind == "number" then
+      for i, line in ipairs(self.out) do
+        local name, value = line:match("^(%u+) (%S+)$")
+        if name and G.set_once[name] and tonumber(value) == a.num then
+          for j, other in ipairs(self.out) do
+            if j ~= i and other:match("^(%u+) ") == name and tonumber(other:match(" (%S+)$")) == b.num then
+              table.remove(self.out, i)
+              return
+            end
+          end
+        end
+      end
+    end
+  end
+end
 function G:setting_twice()
+  self:setting_changed_from()
   local q = M.setting_twice(self.out)
   if q then return self:need(q) end
 end

@@ -226,6 +226,8 @@ return {
         "tardes", "noches",
         -- and in French ("climb FL120, bonjour", "merci, au revoir")
         "bonjour", "bonsoir", "merci", "salut", "revoir",
+        -- (and the Swiss French greeting and leave-taking, "adieu, ...")
+        "adieu",
         -- greetings of Australia, New Zealand and South Africa ("G'day mate", "kia ora", "howzit")
         "mate", "kia", "ora", "howzit",
         -- the same courtesy in German ("Grüß Gott", "danke", "bitte", "servus"; "Entschuldigung" is
@@ -712,6 +714,9 @@ return {
   -- word of two to five letters in any case (a fix's ident typed in lower case). Elsewhere it stays as typed ("direct
   -- TRN" is Turnberry, "trail red" a colour, "Red Cap" an airline).
   typed_abbreviations = {
+    -- (the tens of Belgian and Swiss French said in English: "flight level two hundred septante", "nonante degrees")
+    septante = { word = "seventy" }, huitante = { word = "eighty" }, octante = { word = "eighty" },
+    nonante = { word = "ninety" },
     -- (in capitals an ident, "define a point EXPD at ...")
     expd = { word = "expedite", caps_kept = true }, expdt = { word = "expedite", caps_kept = true },
     til = { word = "until", not_prev = "legg" },
@@ -2658,6 +2663,28 @@ return {
   -- `not_after` (a name the heard form ends: "red cap 712" is AirAsia). Anywhere else it stays
   -- what it is ("write the heading down", "head into the wind", "the send
   -- button", "climb two four thousand").
+  -- an experimenter's protocol in the passive voice ("Easy 45GH is moved to 52.35 N 4.40 E", "the route of KLM1234
+  -- is displayed", "SUGOL is added to the route of TRA5KD", "ten aircraft are then generated"): the participle after
+  -- "is" or "are" (and any of `adverbs`) is the instruction's verb, said before its subject (grammar.lua
+  -- G.passive_voice); one of `told` and "to" leave the subject before the instruction; a participle not listed
+  -- ("cleared", "transferred") leaves the sentence as said
+  passive = {
+    participles = { moved = "move", displayed = "display", shown = "show", printed = "print", listed = "list",
+      added = "add", appended = "append", inserted = "insert", assigned = "assign", set = "set",
+      increased = "increase", decreased = "decrease", reduced = "reduce", raised = "raise", lowered = "lower",
+      ["fast-forwarded"] = "fast-forward", generated = "generate", created = "create", spawned = "spawn",
+      deleted = "delete", removed = "remove", written = "write", echoed = "echo", limited = "limit",
+      defined = "define", paused = "pause", frozen = "freeze", resumed = "resume", enabled = "enable",
+      disabled = "disable", activated = "activate", deactivated = "deactivate", changed = "change",
+      coloured = "colour", colored = "color", queried = "query", seeded = "seed", taken = "take" },
+    -- ("KLM1234 is then instructed to turn right ...": the aircraft told, the instruction after "to" its own)
+    told = { "instructed", "told", "ordered", "asked" },
+    -- words that make the clause a question, a condition or a reason, never a subject ("which time step is set",
+    -- "after the speed is reduced to 250 knots, descend", "so that aircraft leaving the sector are removed")
+    not_subject = { "which", "what", "how", "whether", "where", "when", "whenever", "once", "after", "before", "until",
+      "till", "if", "unless", "that", "so", "as", "because", "since", "while", "passing", "reaching" },
+    adverbs = { "then", "now", "first", "also", "subsequently", "finally", "next", "again", "immediately" },
+  },
   heard_as = {
     { heard = { "write", "rite", "wright" }, means = "right",
       before = { "heading", "hdg", "turn" }, after = { "turn" } },
@@ -3034,6 +3061,11 @@ return {
       efface = "delete", effacez = "delete", ["déplace"] = "move", deplace = "move", ["déplacez"] = "move",
       deplacez = "move", ajoute = "add", ajoutez = "add", montre = "show", montrez = "show",
       repart = "resume", ["on repart"] = "resume", ["la simulation"] = "the simulation",
+      -- (a Belgian or Swiss controller's "virage à droite" and the instructor's "on reprend", "on fait une pause")
+      virage = "turn", reprend = "resume", ["on reprend"] = "resume", ["on fait une pause"] = "pause",
+      ["on fait une petite pause"] = "pause",
+      -- (the Belgian filler "une fois", "..., turn right heading 340, une fois": no count)
+      ["une fois"] = "okay",
       ["la résolution"] = "resolution", ["la resolution"] = "resolution",
       ["détection de conflits"] = "conflict detection", ["detection de conflits"] = "conflict detection",
     },
@@ -3041,7 +3073,8 @@ return {
     -- English, "non" an English prefix; phrases opening on "en" or "on" mark none, so that Dutch "en" and "met"
     -- stay read after a value: grammar.lua G.dutch_chat_words)
     shared = { vire = true, cree = true, descends = true, non = true, ["en descente"] = true, ["en montée"] = true,
-      ["en montee"] = true, ["on repart"] = true },
+      ["en montee"] = true, ["on repart"] = true, ["on reprend"] = true, ["on fait une pause"] = true,
+      ["on fait une petite pause"] = true },
     -- small words, number words, words lexicon.heard_as reads before a value in English ("niveau") and a fix's
     -- name ("monte": "direct monte" is the fix MONTE), read only in a French sentence
     joining = { ["à"] = "to", a = "to", au = "to", le = "the", la = "the", les = "the", et = "and", de = "of",
@@ -3071,9 +3104,18 @@ return {
       -- ("die Simulation laufen lassen": read as English says "run")
       ["weiter laufen lassen"] = "resume", ["weiterlaufen lassen"] = "resume", weiterlaufen = "resume",
       ["laufen lassen"] = "run",
+      -- the experimenter's commands ("Simulation anhalten bitte", "Simulation pausieren", "Konfliktlösung MVP
+      -- einschalten") and a rate ("Sinkrate zwotausend", "Steigrate 1500")
+      anhalten = "hold", pausieren = "pause", einschalten = "on", ausschalten = "off",
+      konfliktlosung = "conflict resolution", konfliktloesung = "conflict resolution",
+      konflikterkennung = "conflict detection", sinkrate = "descent rate", steigrate = "climb rate",
+      kurs = "heading",
       -- digits ("zwo" for two on the radio)
       eins = "one", zwo = "two", zwei = "two", drei = "three", vier = "four", funf = "five", fuenf = "five",
       sechs = "six", sieben = "seven", acht = "eight", neun = "nine", hundert = "hundred", tausend = "thousand",
+      -- (a thousand count said as one word: "Sinkrate zwotausend", "dreitausend Fuss")
+      eintausend = "one thousand", zwotausend = "two thousand", zweitausend = "two thousand",
+      dreitausend = "three thousand", viertausend = "four thousand", funftausend = "five thousand",
       -- cities by their German names
       genf = "geneva", wien = "vienna", munchen = "munich", muenchen = "munich", koln = "cologne",
       koeln = "cologne", nurnberg = "nuremberg", nuernberg = "nuremberg", mailand = "milan", prag = "prague",

@@ -3133,6 +3133,8 @@ return function(intent, rule, words)
   -- holds (G:state_confirmed, its clause set aside by G:question_back) asks for its report
   rule { "confirm", "pos", when = function(g, i) return g.state_asked ~= nil and g.state_asked[i] == true end }
   rule { "confirm", "pos", near = { 3, "heading altitude level speed mach" } }
+  -- ("Ethiopian 3802 confirm your position": the report of where it is)
+  rule { "confirm", "pos", next = "your", near = { 2, "position" } }
   -- "verify AC002 state (alt, spd, hdg)", "verify its altitude": the aircraft's values asked for
   rule { "verify", "pos", near = { 3, "state heading altitude level speed mach alt spd hdg fl position" } }
   -- "say altitude", "report your heading": a question about the aircraft's state (POS of the

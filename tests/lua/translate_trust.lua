@@ -23079,3 +23079,49 @@ do
   check_eq(ex("lookahead 5 min, checked every 2 seconds"), "DTLOOK 300 ; DT ASAS 2")
   check_eq(ex("virgin 3 descend fl 310 and hand it to london 133.6"), "ALT VIR3 FL310")
 end
+
+-- Cycle 76 (lead, R338): an experimenter's protocol in the passive voice ("Easy 45GH is moved to ...", "The route of
+-- KLM1234 is shown.", "MOLIX is taken out of the route of KLM88A", "KLM1234 is then instructed to turn right ...")
+-- is read as the imperative; a passive in a question, condition or reason stays as said; "increased from 1.05 to
+-- 1.1" sets 1.1 alone (both were sent), and a resolution factor given two values in one request is asked
+do
+  local _, ex = scene({ "CRE KLM88A B738 52 4.5 90 FL200 250", "DEFWPT MOLIX 52.2 5", "ADDWPT KLM88A MOLIX",
+    "CRE KLM1234 B738 52.3 4.8 90 FL250 280" })
+  check_eq(ex("KLM1234 is moved to 52.35 north, 4.40 east at flight level 250."), "MOVE KLM1234 52.35 4.4 FL250")
+  check_eq(ex("The route of KLM1234 is shown."), "LISTRTE KLM1234")
+  check_eq(ex("MOLIX is taken out of the route of KLM88A."), "DELWPT KLM88A MOLIX")
+  check_eq(ex("KLM1234 is then instructed to turn right onto a heading of 120 degrees."), "HDG KLM1234 120 RIGHT")
+  check_eq(ex("The horizontal resolution margin factor is increased from 1.05 to 1.1."), "RFACH 1.1")
+  check_eq(ex("increase the zone radius from 5 to 6 nm"), "ZONER 6")
+  asked(ex("rfach 1.05, rfach 1.1"), "two resolution factors at once")
+  check_eq(ex("which time step is set"), "DT")
+  check_eq(ex("KLM1234 after the speed is reduced to 250 knots, descend FL100"), "ATSPD KLM1234 250 ALT KLM1234 FL100")
+end
+
+-- Cycle 76 (lead, R339): Belgian and Swiss French said in English: the tens "septante", "huitante", "nonante"
+-- (70, 80, 90), "virage à droite" (turn right), "on reprend" (resume), "on fait une petite pause", the filler "une
+-- fois" and the greeting "adieu"
+do
+  local _, ex = scene({ "CRE EZS18TA A320 46 6 90 FL200 270", "CRE BEL28Z A320 50.9 4.5 180 FL100 250",
+    "CRE AFR78KB A320 48 2 90 FL200 270" })
+  check_eq(ex("Topswiss one eight tango alpha climb level two hundred septante"), "ALT EZS18TA FL270")
+  check_eq(ex("EZS18TA increase the speed two hundred nonante knots"), "SPD EZS18TA 290")
+  check_eq(ex("Beeline two eight zulu, turn right by nonante degrees"), "HDG BEL28Z 270 RIGHT")
+  check_eq(ex("EZS18TA descend level huitante"), "ALT EZS18TA FL80")
+  check_eq(ex("AFR78KB, virage à droite, heading two seven zero"), "HDG AFR78KB 270 RIGHT")
+  check_eq(ex("ok, on reprend, run the simulation again"), "OP")
+  check_eq(ex("freeze everything, on fait une petite pause"), "HOLD")
+  check_eq(ex("Beeline two eight zulu, turn right heading three four zero, une fois"), "HDG BEL28Z 340 RIGHT")
+  check_eq(ex("AFR78KB, adieu, descend flight level one two zero"), "ALT AFR78KB FL120")
+end
+
+-- Cycle 76 (lead, R336, R337): German said by the experimenter ("Simulation anhalten bitte", "Simulation
+-- pausieren", "Konfliktlösung MVP einschalten", "Sinkrate zwotausend") and "confirm your position" (POS)
+do
+  local _, ex = scene({ "CRE DLH2WC A320 50 8 90 FL200 270", "CRE ETH3802 B738 9 38 90 FL200 270" })
+  check_eq(ex("Simulation anhalten bitte"), "HOLD")
+  check_eq(ex("Simulation pausieren"), "HOLD")
+  check_eq(ex("Konfliktlösung MVP einschalten"), "RESO MVP")
+  check_eq(ex("Lufthansa 2WC, Sinkrate zwotausend"), "VS DLH2WC -2000")
+  check_eq(ex("Ethiopian 3802 confirm your position"), "POS ETH3802")
+end
