@@ -4787,16 +4787,31 @@ function G.passive_voice(text)
       while bare[p] and G.passive_adverbs[bare[p]] and not toks[p]:match("%p$") do p = p + 1 end
       local verb = bare[p] and G.passive_participles[bare[p]]
       local told = bare[p] and G.passive_told[bare[p]] and bare[p + 1] == "to" and not toks[p]:match("%p$")
+      -- (a comma before a number inside the clause parts a position's latitude from its longitude, not clauses)
       local b, plain = k - 1, true
-      while b > 1 and not toks[b - 1]:match("[%.,;:!?]$") do b = b - 1 end
+      while b > 1 and not (toks[b - 1]:match("[%.;:!?]$") or (toks[b - 1]:match(",$") and not toks[b]:match("^%-?%d")))
+        do b = b - 1 end
       for j = b, k - 1 do plain = plain and not G.passive_not_subject[bare[j]] end
-      if (verb or told) and plain and k - b <= 8 then at[b] = { k = k, p = told and p + 1 or p, verb = verb } end
+      if (verb or told) and plain and k - b <= 10 then
+        at[b] = { k = k, p = told and p + 1 or p, verb = verb }
+        -- ("... is defined and then inserted into the route of Speedbird 8CK": a second participle after "and"
+        -- (and "then") in the sentence is its own verb, the subject "it")
+        local a = p + 1
+        while bare[a] and not toks[a - 1]:match("[%.;:!?]$") do
+          local n = bare[a + 1] == "then" and a + 2 or a + 1
+          if bare[a] == "and" and G.passive_participles[bare[n] or ""] and not toks[n - 1]:match("%p$") then
+            at[n] = { again = G.passive_participles[bare[n]] }
+          end
+          a = a + 1
+        end
+      end
     end
   end
   if not next(at) then return text end
   return tokens.rewrite(text, toks, function(i)
     local x = at[i]
     if not x then return nil end
+    if x.again then return x.again .. " it" .. (toks[i]:match("%p+$") or ""), i + 1 end
     local subject = {}
     for j = i, x.k - 1 do subject[#subject + 1] = toks[j] end
     if not x.verb then return table.concat(subject, " "), x.p + 1 end

@@ -3164,6 +3164,12 @@ return function(intent, rule, words)
   -- "request your present heading", "request your level": the controller asking the aircraft's own value
   -- (a report, as "say"), never an instruction to keep it
   rule { "request", "pos", next = "your", near = { 3, "altitude speed heading position level airspeed mach alt lvl hdg spd pos fl" } }
+  -- "we then ask for the current heading of Lufthansa 2TA", "ask for its level": the aircraft's value asked for (a
+  -- report), never an instruction to keep it; with a value said after it ("I would like to ask for DLH4AX heading
+  -- 120") it is the speaker's request of that value
+  rule { "ask", "pos", next = "for", near = { 4, "altitude speed heading position level airspeed mach" },
+         not_near = { 2, "higher lower more less another new different" },
+         when = function(g, i) return #g:quantities(i, #g.t + 1) == 0 end }
   rule { "carry", "op", next = "on", near = { 4, "@sim" } }  -- "carry on with the simulation"
   rule { "carry go", "op", next = "on", when = function(g, i) return g:alone_but(i, i + 2) end }  -- "carry on", "go on"
   -- "..., then carry on", "..., then go", "OK, go on, and run at 2x": a clause of its own; "ok carry on, run it at

@@ -23125,3 +23125,14 @@ do
   check_eq(ex("Lufthansa 2WC, Sinkrate zwotausend"), "VS DLH2WC -2000")
   check_eq(ex("Ethiopian 3802 confirm your position"), "POS ETH3802")
 end
+
+-- Cycle 76 (lead, R338 after the fixes): "The waypoint EXP01 at 52.45 north, 4.70 east is defined and then inserted
+-- into the route of Speedbird 8CK" sent the DEFWPT alone (the position's comma cut the subject, the second
+-- participle was read by none); "We then ask for the current heading of Lufthansa 2TA" flew the present heading
+do
+  local _, ex = scene({ "CRE BAW8CK A320 51.5 0 90 FL200 250", "CRE DLH2TA A320 50 8 240 FL200 270" })
+  check_eq(ex("The waypoint EXP01 at 52.45 north, 4.70 east is defined and then inserted into the route of "
+    .. "Speedbird 8CK."), "DEFWPT EXP01 52.45 4.7 ; ADDWPT BAW8CK EXP01")
+  check_eq(ex("We then ask for the current heading of Lufthansa 2TA."), "POS DLH2TA")
+  asked(ex("DLH2TA ask for higher level"), "a pilot's request for another level")
+end
