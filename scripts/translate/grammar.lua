@@ -3627,6 +3627,14 @@ local function written_forms(text, world)
   where("%d:%d", "%f[%d:](%d%d?):([0-5]%d):([0-5]%d)(:?)%f[^%d:]", function(h, m, sec, colon)
     return tostring(tonumber(h) * 3600 + tonumber(m) * 60 + tonumber(sec)) .. " seconds" .. colon
   end)
+  -- "in 02:00 turn right", "FL300 in 10:00", "08:00 from now": mm:ss after "in" or before "from now" is a wait, that
+  -- many seconds (mm:ss elsewhere, "at 02:00", stays a time of the clock as typed)
+  where("%d:%d", "%f[%a]([Ii]n%s+)(%d%d?):([0-5]%d)%f[^%d:]", function(lead, m, sec)
+    return lead .. tostring(tonumber(m) * 60 + tonumber(sec)) .. " seconds"
+  end)
+  where("%d:%d", "%f[%d:](%d%d?):([0-5]%d)(%s+[Ff]rom%s+[Nn]ow)", function(m, sec, tail)
+    return tostring(tonumber(m) * 60 + tonumber(sec)) .. " seconds" .. tail
+  end)
   -- "CPA half a mile", "a quarter of a mile": a fraction of a mile said in words is that many nautical miles
   where("half", "%f[%a]([Hh]alf)%s+an?%s+(%a+)", function(_, unit)
     if lexicon.fraction_units[unit:lower()] then return "0.5 nm" end
@@ -10568,8 +10576,12 @@ function G:unexplained(s, n_before)
     for _, r in ipairs(self.refs) do
       if r.kind == "aircraft" and r.e <= q.b and self:skip_fillers(r.e) == q.b then callsign = r end
     end
-    -- (a bare value between the callsign and the instruction word, "BAW256 9 climb FL300", is named alone)
+    -- (a bare value between the callsign and the instruction word, "BAW256 9 climb FL300", is named alone; so is a
+    -- number straight after an airline's word that names no aircraft, "Wizz 2215, Wizz 9999, descend": with it)
     local before_verb = callsign and not (opened and q.b > opened)
+    local unnamed = not callsign and q.b > 1 and self.t[q.b - 1].kind == "word" and self:airline_at(q.b - 1) ~= nil
+      and not self:has_ref(q.b - 1, q.e, "aircraft") and not (opened and q.b > opened)
+    if unnamed then callsign = { b = q.b - 1 } end
     -- (a distance closing its clause that no condition read, beside a level, speed, heading or rate, "maintain
     -- 250 knots for 10 miles", is a limit squawk's commands do not carry: asked, never dropped; "within 10 km"
     -- is where the instruction is flown, and a place after it, "20 miles from Gotham", is asked about by name)
@@ -10582,7 +10594,7 @@ function G:unexplained(s, n_before)
     end
     if not self.taken[q.b] and not SELF_READ[q.kind] and not relative and not q.by and q.turn == 0
         and q.b > corrected
-        and ((opened and q.b > opened) or own_unit(q) or self:word(q.b - 1, "@clause_verbs") or before_verb)
+        and ((opened and q.b > opened) or own_unit(q) or self:word(q.b - 1, "@clause_verbs") or before_verb or unnamed)
         and not value_carried(q, nums, true) and not self:label_number(q, true)
         and not (self:aircraft_count(q) and self:in_reason(q.b)) then
       self.leftover = self:raw((callsign and not before_verb) and callsign.b or q.b, q.e)
@@ -17298,24 +17310,29 @@ function G.common_named(text, world, parsed)
   table.sort(places)
   for _, k in ipairs(places) do
     local c = G.common_read[k]
-    local at = lower:find(c[1], 1, true) and lower:find("%f[%w]" .. c[1]:gsub("%p", "%%%0") .. "%f[%W]")
-    local nx = at and lower:match("^%s+(%w+)", at + #c[1])
-    local before = at and lower:sub(1, at - 1):match("(%a+)%s+$")
-    if nx and (nx:match("^%d") or SAID_DIGIT[nx]) and not (before and (AIRLINE_WORDS[before] or G.name_words[before])) then
-      local read = text:sub(1, at - 1) .. (text:sub(at, at):match("%u") and c[2]:gsub("%f[%a]%a", string.upper) or c[2])
-        .. text:sub(at + #c[1])
-      -- ("create Wizz 9AB, A320, ...", "create aircraft Qatar 846 ...": the name straight after a verb of creating,
-      -- or "aircraft"/"callsign" after one, is the new aircraft's airline: read, whatever flies)
-      local head = lower:sub(1, at - 1)
-      if before and G.common_create_before[before] and (head:find("%f[%a]create%f[%A]") or head:find("%f[%a]spawn%f[%A]"))
-          and not head:find("[.;:!?]") then
-        return G.common_named(read, world, parsed)
+    -- (each place the name is said, in order: "Wizz 2215 and Wizz 2251" reads the second when the first is read)
+    local pattern = "%f[%w]" .. c[1]:gsub("%p", "%%%0") .. "%f[%W]"
+    local at = lower:find(c[1], 1, true) and lower:find(pattern)
+    while at do
+      local nx = lower:match("^%s+(%w+)", at + #c[1])
+      local before = lower:sub(1, at - 1):match("(%a+)%s+$")
+      if nx and (nx:match("^%d") or SAID_DIGIT[nx]) and not (before and (AIRLINE_WORDS[before] or G.name_words[before])) then
+        local read = text:sub(1, at - 1) .. (text:sub(at, at):match("%u") and c[2]:gsub("%f[%a]%a", string.upper) or c[2])
+          .. text:sub(at + #c[1])
+        -- ("create Wizz 9AB, A320, ...", "create aircraft Qatar 846 ...": the name straight after a verb of creating,
+        -- or "aircraft"/"callsign" after one, is the new aircraft's airline: read, whatever flies)
+        local head = lower:sub(1, at - 1)
+        if before and G.common_create_before[before] and (head:find("%f[%a]create%f[%A]") or head:find("%f[%a]spawn%f[%A]"))
+            and not head:find("[.;:!?]") then
+          return G.common_named(read, world, parsed)
+        end
+        parsed = parsed or {}
+        said = said or exact_aircraft(text, world, parsed)
+        local keeps = G.one_new_aircraft(read, said, world, parsed) ~= nil or G.common_swallowed(text, read, world)
+        for id in pairs(keeps and said or {}) do keeps = keeps and exact_aircraft(read, world, parsed)[id] end
+        if keeps then return G.common_named(read, world, parsed) end
       end
-      parsed = parsed or {}
-      said = said or exact_aircraft(text, world, parsed)
-      local keeps = G.one_new_aircraft(read, said, world, parsed) ~= nil or G.common_swallowed(text, read, world)
-      for id in pairs(keeps and said or {}) do keeps = keeps and exact_aircraft(read, world, parsed)[id] end
-      if keeps then return G.common_named(read, world, parsed) end
+      at = lower:find(pattern, at + #c[1])
     end
   end
   return text
@@ -18834,7 +18851,8 @@ function G.title_label(text)
       -- (the last part's id may be followed by up to three words naming the run's place or case: "run 2 (LTMA).",
       -- "run 6 BRU sector.", "exp 4 headon:"; none a unit of time or rate, a number, or TITLE_NOT)
       if not G.TITLE_NOUNS[words[k]:lower()] then
-        if not (pre == 1 and k > 2 and words[k - 1]:match("^%d") and part == parts[#parts] and #words - k < 3) then
+        if not (pre == 1 and k > 2 and (words[k - 1]:match("^%d") or words[k - 1]:match("^%u%d"))
+            and part == parts[#parts] and #words - k < 3) then
           return text
         end
         for x = k, #words do
@@ -18843,9 +18861,9 @@ function G.title_label(text)
         end
         break
       end
-      -- ("run 2x: ...": a rate, no id)
+      -- ("run 2x: ...": a rate, no id; "run A1:", "run C12 init:": a capital and one or two digits is one)
       local id = words[k + 1] and not words[k + 1]:match("^%d+[xX]$")
-        and (words[k + 1]:match("^%d%d?%a?$") or words[k + 1]:match("^%u$"))
+        and (words[k + 1]:match("^%d%d?%a?$") or words[k + 1]:match("^%u$") or words[k + 1]:match("^%u%d%d?$"))
       if not id and pre == 0 and not words[k + 1] then return text end
       k, pre = k + (id and 2 or 1), 1
       -- (a full stop ends a title only after its id: "let it run." is the clock's)

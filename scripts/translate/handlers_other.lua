@@ -5246,8 +5246,9 @@ return function(H, f, compass)
     if not dir or not spd then
       return self:need("From which direction, and how strong in knots, should the wind blow?")
     end
+    -- (a wind from the north is 360, as winds are reported: 0 is calm's direction)
     self:emit(string.format("WIND %s%s %s %s", place or (f.num(lat) .. " " .. f.num(lon)),
-      alt and " " .. f.alt(alt.value, alt.fl) or "", f.num(dir.value), f.num(spd.value)))
+      alt and " " .. f.alt(alt.value, alt.fl) or "", f.num(dir.value == 0 and 360 or dir.value), f.num(spd.value)))
   end
   function m:scenario(s)
     for i = s.b, s.e - 1 do
@@ -5298,7 +5299,9 @@ return function(H, f, compass)
       self:explain(s.trig + 1, from)
       self:mark_used(from, to)
       self:explain(to, at + 1)
-      return self:emit("ECHO " .. self:raw(from, to))
+      -- ("echo 'F1 done' to log": the single quotes around the words are no part of them)
+      local said = self:raw(from, to)
+      return self:emit("ECHO " .. (said:match("^'(.+)'$") or said))
     end
     -- "instructor: echo exercise starts in 2 minutes": TrafScript's ECHO opening the request after a
     -- speaker's label, the words after it as typed

@@ -55,6 +55,8 @@ return {
   -- "oya" (come on, now): "abeg check Speedbird 75 for me", "oya show me Arik 104")
   fillers = { "ah", "uh", "um", "er", "eh", "oh", "the", "a", "an", "please", "pls", "okay", "ok", "yeah", "so",
       "and", "now", "lah", "leh", "lor", "po", "sige", "ano", "yung", "na", "abeg", "oya",
+      -- (Singlish "anot", "or not", closing a question: "can pause the sim anot?")
+      "anot",
       -- (Japanese hesitations: "eto", "etto", "eeto", as "uh")
       "eto", "etto", "eeto", },
   -- Every word accounted for (docs/translator_trust.md): a request becomes commands only when each of its

@@ -1929,10 +1929,11 @@ return function(intent, rule, words)
   -- "clear the route of EWG7LP", "clear UAL485's route completely", "kill the whole route on ASA31": the
   -- whole route, no waypoint named
   -- (the route's noun in the verb's own clause: "delete KLM123, the route is finished" tells why, no comma between)
-  rule { "clear delete remove erase wipe kill", "delrte", near = { 4, "@route_nouns" },
+  -- ("could you clear Lufthansa 9KM's whole route?": a spoken callsign and "whole" between, six words)
+  rule { "clear delete remove erase wipe kill", "delrte", near = { 6, "@route_nouns" },
          when = function(g, i)
            if g:has_ref(1, #g.t + 1, "waypoint") then return false end
-           for k = math.max(1, i - 4), math.min(#g.t, i + 4) do
+           for k = math.max(1, i - 4), math.min(#g.t, i + 6) do
              if g:word(k, "@route_nouns") then
                local clause = true
                for x = math.min(i, k), math.max(i, k) do clause = clause and g.t[x].text ~= "," end
@@ -3184,7 +3185,9 @@ return function(intent, rule, words)
       and not g:has_ref(1, #g.t + 1, "aircraft")
   end }
   rule { "keep", "op", next = "going", when = function(g, i)
-    return g:alone_but(i, i + 2) or g:clause_alone(i, i + 2) or g:clause_opens(i, i + 2)
+    -- ("ok, let's keep going": "let's" opening the clause before it)
+    local b = g:word(i - 1, "let let's lets") and i - 1 or i
+    return g:alone_but(b, i + 2) or g:clause_alone(b, i + 2) or g:clause_opens(b, i + 2)
   end }
   rule { "run", "op", next = "it", when = function(g, i) return g:clause_alone(i, i + 2) end }
   -- ("okay uh run it again": the same, "again" closing its clause; "run it again from the start" is no resume)
@@ -4027,6 +4030,12 @@ return function(intent, rule, words)
   rule { "look", "dtlook", next = "ahead" }
   -- "have the computer look further ahead for conflicts": the look-ahead, said with how far
   rule { "look", "dtlook", next = "further farther", when = function(g, i) return g:word(i + 2, "ahead") end }
+  -- "can it look 5 minutes ahead for conflicts?", "make it look 3 minutes ahead": the time said between the verb
+  -- and "ahead"
+  rule { "look", "dtlook", when = function(g, i)
+    local q = g:quantities(i + 1, math.min(#g.t + 1, i + 5))[1]
+    return q ~= nil and q.kind == "time" and q.b == i + 1 and g:word(q.e, "ahead")
+  end }
   -- "make the safety circle 4 miles", "a bigger safety bubble": the protected zone in a newcomer's words
   rule { "circle bubble", "zone", prev = { 1, "safety" } }
   rule { "look", "dtlook", prev = { 1, "dt" } }

@@ -23136,3 +23136,37 @@ do
   check_eq(ex("We then ask for the current heading of Lufthansa 2TA."), "POS DLH2TA")
   asked(ex("DLH2TA ask for higher level"), "a pilot's request for another level")
 end
+
+-- Cycle 76 (lead, R340-R343): a run's label of a capital and digits ("run A1:", "run C1 init:"); a wait typed mm:ss
+-- after "in" or before "from now" ("in 02:00 turn right", "08:00 from now desc FL150"); "print 'F1 done' to the
+-- log" prints the words without their quotes; a wind from the north is 360; "let's keep going" resumes; "can it
+-- look 5 minutes ahead"; "clear Lufthansa 9KM's whole route"; Singlish "anot"
+do
+  local _, ex = scene({ "CRE TRA6021 B738 52 4 90 FL200 280", "CRE KLM1723 B738 52 4 90 FL200 280",
+    "CRE DLH9KM A320 50 8 90 FL200 280", "DEFWPT AAA 51 5", "ADDWPT DLH9KM AAA" })
+  check_eq(ex("run A1: KLM1723 climb to FL300, then ff 05:00"), "ALT KLM1723 FL300 ; FF 05:00")
+  check_eq(ex("run C1 init: CD on + MVP, look-ahead 4 min"), "ASAS ON ; RESO MVP ; DTLOOK 240")
+  check_eq(ex("TRA6021 back to 250 kt in 02:00"), "DELAY 120 SPD TRA6021 250")
+  check_eq(ex("TRA6021 in 02:00 turn right hdg 060"), "DELAY 120 HDG TRA6021 60 RIGHT")
+  check_eq(ex("KLM1723 08:00 from now desc FL150"), "DELAY 480 ALT KLM1723 FL150")
+  asked(ex("pause at 02:00"), "a clock time typed mm:ss")
+  check_eq(ex("print 'F1 done' to the log"), "ECHO F1 done")
+  check_eq(ex("Set up a wind from the north at 20 knots at 55.7, 12.6"), "WIND 55.7 12.6 360 20")
+  check_eq(ex("ok, let's keep going"), "OP")
+  check_eq(ex("Can it look 5 minutes ahead for conflicts?"), "DTLOOK 300")
+  check_eq(ex("Turn on conflict detection, and make it look 3 minutes ahead"), "ASAS ON ; DTLOOK 180")
+  check_eq(ex("Could you clear Lufthansa 9KM's whole route?"), "DELRTE DLH9KM")
+  check_eq(ex("can pause the sim anot?"), "HOLD")
+end
+
+-- Cycle 76 (lead, R342): "Wizz 2215 and Wizz 2251 both descend flight level nine zero" sent WZZ2215's descent
+-- alone (a brand's name read at its first place only), and "Wizz 2215, Wizz 9999, descend FL90" dropped the
+-- second callsign: each place the name is said is read, and a number after an airline's word that names no
+-- aircraft is asked about
+do
+  local _, ex = scene({ "CRE WZZ2251 A320 47.7 19.7 200 FL100 250", "CRE WZZ2215 A320 47.6 19.4 90 FL110 260" })
+  check_eq(ex("Wizz 2215 and Wizz 2251 both descend flight level nine zero"), "ALT WZZ2215 FL90 ; ALT WZZ2251 FL90")
+  check_eq(ex("Wizz 2215 climb FL120 and Wizz 2251 descend FL90"), "ALT WZZ2215 FL120 ; ALT WZZ2251 FL90")
+  check_eq(ex("Wizz 2215, Wizz 9999, descend FL90"), "ASK I have ALT WZZ2215 FL90. What does 'Wizz 9999' mean?")
+  asked(ex("Wizz 2215 and Wizz 9999 descend FL90"), "an airline's word and a number naming no aircraft")
+end
