@@ -3608,7 +3608,7 @@ local function written_forms(text, world)
   -- "47,5 north", "8,5 degrees east", "factor to 1,1": a decimal comma (G.decimal_comma) is the point
   where("%d,%d", "()(%d+),(%d+)()", function(b, whole, part, e) return G.decimal_comma(text, b, whole, part, e) end)
   text = typed_abbreviations(lone_multipliers(tokens.numerals_apart(G.unfinished_restarts(G.cut_off_restarts(G.repeated_restarts(G.abandoned_instruction_words(G.cancelled_direct(text))))), DIGIT_WORDS), world))
-  text = hyphened_types(spelled(G.spelled_letter_a(heard_forms(negated_values(G.readback_reported(readback_heard(self_corrections(G.said_but(G.cancel_corrections(unlabelled(foreign_digits(G.portuguese_and(G.polish_and(G.said_whole(G.french_in_english(G.denied_word(G.dutch_chat(G.condition_then(G.condition_copula(G.recreate_said(G.passive_voice(text))))))))))))))))))))))
+  text = hyphened_types(spelled(G.spelled_letter_a(heard_forms(negated_values(G.readback_reported(readback_heard(self_corrections(G.said_but(G.cancel_corrections(unlabelled(foreign_digits(G.portuguese_and(G.polish_and(G.said_whole(G.french_in_english(G.denied_word(G.dutch_chat(G.condition_then(G.condition_copula(G.recreate_said(G.third_person(G.passive_voice(G.after_this_instruction(text))))))))))))))))))))))))
   low = text:lower()
   -- a position typed as whole degrees after the hemisphere, then minutes ("N55 50.0 W003 20.0", "S33 57
   -- E151 10"): decimal degrees before their hemisphere ("55.833333 N 3.333333 W"); minutes of 60 or more
@@ -4774,6 +4774,40 @@ end
 -- "delete SpiceJet 403 and recreate it at ...", "..., re-create it at ...": "recreate" or "re-create" said after
 -- "and" or a comma straight before "it" is "create it again" (read by the creation as the aircraft deleted,
 -- handlers_other m:recreated); anywhere else ("we'll re-create it later") left as said.
+-- "Two minutes after this instruction, MPH123 turns onto heading 360", "90 s after the previous instruction": a
+-- time after "this", "that", "the previous" or "the last" instruction counts from now, as "two minutes from now"
+function G.after_this_instruction(text)
+  if not text:lower():find("instruction", 1, true) then return text end
+  return (text:gsub("(%f[%a]%a+)(%s+)[Aa]fter%s+(%a+)%s*(%a*)%s+instruction%f[%A]", function(unit, space, a, b)
+    local this = a:lower() == "this" or a:lower() == "that"
+      or ((a:lower() == "the") and (b:lower() == "previous" or b:lower() == "last"))
+    if G.time_units[unit:lower()] and this and (b == "" or a:lower() == "the") then
+      return unit .. space .. "from now"
+    end
+  end))
+end
+-- "..., when passing FL100, accelerates to 280 knots", "passing FL120, it accelerates to 300 knots", "... and then
+-- slows to 220": a verb of lexicon.third_person after a mark, "and", "then" or a pronoun of the aircraft ("it",
+-- "he", "she") after a mark is the instruction's verb, as an imperative says it ("it" dropped; "Then it turns
+-- left." stays a sentence of its own)
+G.third_person_leads = set_of({ "and", "then" })
+function G.third_person(text)
+  local toks, bare = plain_words(text)
+  if not any_of(bare, lexicon.third_person) then return text end
+  local said = tokens.rewrite(text, toks, function(i)
+    local verb = lexicon.third_person[bare[i]]
+    local prev = toks[i - 1]
+    local pronoun = bare[i - 1] == "it" or bare[i - 1] == "he" or bare[i - 1] == "she"
+    if not verb or not prev or not (prev:match("[,;:]$") or (G.third_person_leads[bare[i - 1]] and not pronoun)
+        or (pronoun and toks[i - 2] and toks[i - 2]:match("[,;:]$"))) then
+      return nil
+    end
+    return verb .. (toks[i]:match("%p+$") or ""), i + 1
+  end)
+  return (said:gsub("([,;:]%s+)[Ii]t (%a+)", function(mark, w)
+    for _, v in pairs(lexicon.third_person) do if w == v then return mark .. w end end
+  end))
+end
 -- "Easy 45GH is moved to 52.35 north, 4.40 east", "The route of Lufthansa 2TA is shown.", "SUGOL is added to the
 -- route of Beeline 3PC", "Ten aircraft ... are then generated": a clause of at most eight words before "is" or "are",
 -- none of lexicon.passive.not_subject,

@@ -2665,6 +2665,11 @@ return {
   -- `not_after` (a name the heard form ends: "red cap 712" is AirAsia). Anywhere else it stays
   -- what it is ("write the heading down", "head into the wind", "the send
   -- button", "climb two four thousand").
+  -- a protocol's verbs in the third person after a condition or a mark ("..., when passing FL100, accelerates to
+  -- 280 knots", "passing FL120, it accelerates to 300 knots"): the instruction's verb (grammar.lua G.third_person)
+  third_person = { accelerates = "accelerate", decelerates = "decelerate", slows = "slow", reduces = "reduce",
+    increases = "increase", expedites = "expedite", proceeds = "proceed", flies = "fly", turns = "turn",
+    maintains = "maintain" },
   -- an experimenter's protocol in the passive voice ("Easy 45GH is moved to 52.35 N 4.40 E", "the route of KLM1234
   -- is displayed", "SUGOL is added to the route of TRA5KD", "ten aircraft are then generated"): the participle after
   -- "is" or "are" (and any of `adverbs`) is the instruction's verb, said before its subject (grammar.lua

@@ -23170,3 +23170,18 @@ do
   check_eq(ex("Wizz 2215, Wizz 9999, descend FL90"), "ASK I have ALT WZZ2215 FL90. What does 'Wizz 9999' mean?")
   asked(ex("Wizz 2215 and Wizz 9999 descend FL90"), "an airline's word and a number naming no aircraft")
 end
+
+-- Cycle 76 (lead, R338): a protocol's third person after a condition ("... and, when passing FL110, accelerates to
+-- 280 knots", "passing FL120, it accelerates to 300 knots") and a wait counted from "this instruction"
+do
+  local _, ex = scene({ "CRE KLM1395 B738 52 4 90 FL100 250", "CRE EXS27T B738 53 -2 90 FL100 250",
+    "CRE BAW117 A320 51 0 90 FL150 280" })
+  check_eq(ex("KLM1395 climbs to FL150 and, when passing FL110, accelerates to 280 knots."),
+    "ALT KLM1395 FL150 ; ATALT KLM1395 FL110 SPD KLM1395 280")
+  check_eq(ex("EXS27T climbs to FL200; passing FL120, it accelerates to 300 knots."),
+    "ALT EXS27T FL200 ; ATALT EXS27T FL120 SPD EXS27T 300")
+  check_eq(ex("Speedbird 117 descends to FL100 and, once it is level there, slows to 220 knots."),
+    "ALT BAW117 FL100 ; ATALT BAW117 FL100 SPD BAW117 220")
+  check_eq(ex("Two minutes after this instruction, KLM1395 turns onto heading 360."), "DELAY 120 HDG KLM1395 360")
+  check_eq(ex("90 s after the previous instruction, KLM1395 climbs to FL120"), "DELAY 90 ALT KLM1395 FL120")
+end
