@@ -4789,8 +4789,9 @@ end
 -- "..., when passing FL100, accelerates to 280 knots", "passing FL120, it accelerates to 300 knots", "... and then
 -- slows to 220": a verb of lexicon.third_person after a mark, "and", "then" or a pronoun of the aircraft ("it",
 -- "he", "she") after a mark is the instruction's verb, as an imperative says it ("it" dropped; "Then it turns
--- left." stays a sentence of its own)
+-- left." stays a sentence of its own), when its value or side follows it (G.third_person_next, a number)
 G.third_person_leads = set_of({ "and", "then" })
+G.third_person_next = set_of({ "to", "left", "right", "heading", "onto", "by", "at", "direct", "speed", "mach" })
 function G.third_person(text)
   local toks, bare = plain_words(text)
   if not any_of(bare, lexicon.third_person) then return text end
@@ -4800,6 +4801,11 @@ function G.third_person(text)
     local pronoun = bare[i - 1] == "it" or bare[i - 1] == "he" or bare[i - 1] == "she"
     if not verb or not prev or not (prev:match("[,;:]$") or (G.third_person_leads[bare[i - 1]] and not pronoun)
         or (pronoun and toks[i - 2] and toks[i - 2]:match("[,;:]$"))) then
+      return nil
+    end
+    -- (its value or side straight after it: "it turns too much sharp" tells how it flies)
+    local nx = bare[i + 1]
+    if toks[i]:match("%p$") or not nx or not (G.third_person_next[nx] or nx:match("^%d") or NUMBER_WORDS[nx]) then
       return nil
     end
     return verb .. (toks[i]:match("%p+$") or ""), i + 1

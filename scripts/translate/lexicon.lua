@@ -103,6 +103,8 @@ return {
         -- (how hard a turn is flown, which squawk's turn model does not take: "hard left heading 350", named in the
         -- note when said as the manner, not_simulated)
         "hard", "sharp", "sharply", "aggressive", "aggressively",
+        -- (a military controller's "snap", at once: "snap right heading 010", "snap left 45 degrees")
+        "snap",
         -- (spoken hedges: "the clock is running kinda slow, go 2x")
         "kinda", "sorta", "somewhat",
         -- (a chatty speaker's degree: "it's turning super aggressively")
@@ -447,6 +449,8 @@ return {
         "if no problem", "if it is no problem", "if it's no problem", "if this is possible", "if this is ok",
         "if this is okay", "if this is alright", "if this is all right", "if it is ok", "if it is okay",
         "if it's ok", "if it's okay", "one more thing", "just one more thing", "one last thing",
+        -- (the instructor's exercise named, "set the protected zone to three miles for this one")
+        "for this one", "for that one", "for the next one",
         "sorry for many requests at once", "sorry for many requests", "sorry for so many requests",
         "sorry for the many requests", "sorry for all the requests", "sorry for many instructions",
         "sorry for so many instructions", "sorry to ask again", "sorry for asking again", "sorry for the trouble",

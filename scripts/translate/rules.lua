@@ -1011,6 +1011,11 @@ return function(intent, rule, words)
   -- "it's heading into the other traffic": the aircraft's present course described, no instruction
   rule { "heading", false, prev = { 1, "it's is was are they're" } }
   rule { "heading hdg headings", "hdg" }
+  -- "KLM1234 vector 270, climb FL120", "vector two seven zero, angels eight": a heading said after "vector"
+  rule { "vector vectors", "hdg", when = function(g, i)
+    local q = g:quantities(i + 1, math.min(#g.t + 1, i + 4))[1]
+    return q ~= nil and q.b == i + 1 and (q.kind == "plain" or q.kind == "heading") and q.value <= 360
+  end }
   -- "NATO01 track 090", "fly track 240", "descend FL250 and track 220": a track of three digits (up to 360) flown
   -- as a heading; a track named with a noun before it ("inbound track 270", "the tanker track") is none; so is a
   -- course ("take course 090", "fly course 240": the Russian-speaking controller's word for the heading)
@@ -2702,6 +2707,11 @@ return function(intent, rule, words)
       or g:word(i + 1, "of") and g:word(i + 2, "lnav vnav")
       or g:word(i, "status") and (g:word(i - 1, "cd asas detection resolution reso cr")
         or g:word(i + 1, "of") and g:word(g:word(i + 2, "the") and i + 3 or i + 2, "cd asas conflict resolution reso"))
+  end }
+  -- ("EZY45QM say state", a military controller's question of the fuel left, which squawk does not simulate: no
+  -- state shown; "say state of KLM12's altitude" and "show the state" stay POS)
+  rule { "state", false, prev = { 1, "say" }, when = function(g, i)
+    return g.t[i + 1] == nil or g.t[i + 1].kind == "punct"
   end }
   rule { "details status info information state pos", "pos" }
   -- "show me both of them, KLM12 and EIN45", "KLM12 and EIN45 are in conflict, show me the both of them": the

@@ -23185,3 +23185,17 @@ do
   check_eq(ex("Two minutes after this instruction, KLM1395 turns onto heading 360."), "DELAY 120 HDG KLM1395 360")
   check_eq(ex("90 s after the previous instruction, KLM1395 climbs to FL120"), "DELAY 90 ALT KLM1395 FL120")
 end
+
+-- Cycle 76 (lead, R344, R345): "KLM1234 vector 270, climb FL120" and "vector two seven zero, angels eight" sent the
+-- level alone (the heading before the level's verb read by none): "vector" and a heading is the heading; "say
+-- state" (a military controller's question of the fuel left) showed the aircraft, and is asked; "snap" (at once)
+-- is the turn's manner; "for this one" is no value
+do
+  local _, ex = scene({ "CRE KLM1234 B738 52 4 90 FL100 250", "CRE SAS1457 A320 55 12 300 FL200 250" })
+  check_eq(ex("KLM1234 vector two seven zero, angels eight"), "HDG KLM1234 270 ; ALT KLM1234 8000")
+  check_eq(ex("KLM1234 vector 270, climb FL120"), "HDG KLM1234 270 ; ALT KLM1234 FL120")
+  check_eq(ex("KLM1234 climb FL240, passing FL200 vector 360"), "ALT KLM1234 FL240 ; ATALT KLM1234 FL200 HDG KLM1234 360")
+  asked(ex("SAS1457 say state"), "a fuel state asked")
+  check_eq(ex("SAS1457 snap right 90"), "HDG SAS1457 30 RIGHT")
+  check_eq(ex("set the protected zone to three miles for this one"), "ZONER 3")
+end
