@@ -228,6 +228,8 @@ return {
         "gracias", "obrigado", "obrigada", "por", "favor", "momentito", "buenos", "buenas", "dias", "días",
         "muchas", "muchisimas", "muchísimas", "muito",
         "tardes", "noches",
+        -- and in Dutch ("KLM 1234, goeiemorgen, descend ...")
+        "goeiemorgen", "goedemorgen", "goedemiddag", "goedenavond", "goeienavond",
         -- and in French ("climb FL120, bonjour", "merci, au revoir")
         "bonjour", "bonsoir", "merci", "salut", "revoir",
         -- (and the Swiss French greeting and leave-taking, "adieu, ...")
@@ -3179,6 +3181,10 @@ return {
       -- carry on, the clock let run)
       zetten = "set", nou = "well", allebei = "both", bij = "at", ["ga maar door"] = "continue",
       ["ga door"] = "continue", ipv = "instead of", ["i.p.v."] = "instead of",
+      -- (a controller's "ga maar naar heading 100": go on to; "en door, run again": and on; "5 mijl": miles;
+      -- "wat is je snelheid?" before "say speed": the same question)
+      ["ga maar naar"] = "go to", ["en door"] = "and then", mijl = "miles", ["wat is je snelheid"] = "say speed",
+      ["wat is je hoogte"] = "say altitude", ["wat is je koers"] = "say heading",
       -- (said the same in another language, read here: "ja"; "oké", its accent taken off, is also the OKE VOR:
       -- lexicon.asides_alone's)
       ja = "yes",

@@ -23199,3 +23199,15 @@ do
   check_eq(ex("SAS1457 snap right 90"), "HDG SAS1457 30 RIGHT")
   check_eq(ex("set the protected zone to three miles for this one"), "ZONER 3")
 end
+
+-- Cycle 76 (lead, R347): Dutch said by Dutch and Flemish controllers: "goeiemorgen", "ga maar naar heading 100",
+-- "en door, run again", "5 mijl", "wat is je snelheid? say speed"
+do
+  local _, ex = scene({ "CRE KLM1234 B738 52 4 90 FL100 250", "CRE JAF3AB B738 51 4 90 FL200 250",
+    "CRE BEL7WE A320 50.9 4.5 90 FL150 250" })
+  check_eq(ex("KLM 1234, goeiemorgen, descend flight level seventy"), "ALT KLM1234 FL70")
+  check_eq(ex("Beauty 3AB, wat is je snelheid? say speed"), "POS JAF3AB")
+  check_eq(ex("protected zone 5 mijl, radius 5 nautical miles"), "ZONER 5")
+  check_eq(ex("Beeline 7WE ga maar naar heading 100, turn left"), "HDG BEL7WE 100 LEFT")
+  check_eq(ex("en door, run again"), "OP")
+end
