@@ -506,10 +506,14 @@ for w in ("zero one two three four five six seven eight nine niner tree fower fi
 end
 
 -- True when an argument of the command `name` typed in `line` is an English word of the grammar.
+local ECHO_PLACES = { console = true, log = true, screen = true, display = true }
 local function has_english_word(line, name)
   -- ("echo test start please": a courtesy word closing ECHO's text is said to us, not printed: English)
   local last = name == "ECHO" and line:lower():match("%s(%a+)[%s%.!]*$")
   if last == "please" or last == "pls" or last == "thanks" then return true end
+  -- ("Echo the text Phase two starts to the console.", "echo 'F1 done' to the log": where the words go, said after
+  -- them, is English)
+  if name == "ECHO" and line:lower():match("%sto%s+the%s+(%a+)[%s%.!]*$") and ECHO_PLACES[last] then return true end
   local n = 0
   local all = {}
   for w in line:gmatch("[^%s,]+") do all[#all + 1] = w:lower() end

@@ -7455,7 +7455,8 @@ do
     "an instruction outside")
   asked(ex('The tape has "KLM12, descend flight level one six zero" over DGA1; replay it.'), "a place outside")
   asked(ex('The tape has "KLM12, descend flight level one six zero" once level; replay it.'), "a condition outside")
-  check_eq(ex('echo "KLM12 descend FL160" to the log'), 'ECHO "KLM12 descend FL160" to the log')
+  -- (the quoted clearance printed, never read; "to the log" says where the words go)
+  check_eq(ex('echo "KLM12 descend FL160" to the log'), "ECHO KLM12 descend FL160")
 end
 
 -- Cycle 41 (d88b): a report's narration of a clearance to replay ("X was subsequently given a speed
@@ -23210,4 +23211,13 @@ do
   check_eq(ex("protected zone 5 mijl, radius 5 nautical miles"), "ZONER 5")
   check_eq(ex("Beeline 7WE ga maar naar heading 100, turn left"), "HDG BEL7WE 100 LEFT")
   check_eq(ex("en door, run again"), "OP")
+end
+
+-- Cycle 76 (lead, R348): "Echo the text Phase two starts to the console." printed the whole sentence as typed
+-- TrafScript: where the words go, said after them ("to the console", "to the log"), makes the line English
+do
+  local _, ex = scene({ "CRE KLM1234 B738 52 4 90 FL100 250" })
+  check_eq(ex("Echo the text Phase two starts to the console."), "ECHO Phase two starts")
+  check_eq(ex("ECHO run 3 start"), "ECHO run 3 start")
+  check_eq(ex("echo go to the gate"), "ECHO go to the gate")
 end
