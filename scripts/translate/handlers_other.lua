@@ -5338,6 +5338,11 @@ return function(H, f, compass)
       self:explain(mvp, mvp + 1)
       return self:emit("RESO OFF")
     end
+    -- ("switch MVP resolution off", "MVP resolution off": the method named, its switch said off in the segment)
+    if mvp < s.e and self:on_off(s) == 0 then
+      self:explain(mvp, mvp + 1)
+      return self:emit("RESO OFF")
+    end
     if self:word_in(1, #self.t + 1, "mvp") or self:word_in(b, s.e, "@mvp") then
       self:emit("RESO MVP")
       return self:zone_said_with(s.trig, s.e)

@@ -3548,6 +3548,12 @@ return function(intent, rule, words)
   -- "reset its starting point", "reset their positions": a possessive after it names what of an aircraft is
   -- set again, never the simulation (the words then read as any other, a remark or asked)
   rule { "reset", false, next = "its his her their" }
+  -- ("reset Lufthansa 4AX: put it back at 52.2 5.2, ...", "reset shamrock 4KA: back to ...": an aircraft named straight
+  -- after it is what is set again, never the simulation; what follows says how)
+  rule { "reset", false, when = function(g, i)
+    local r = g:refs_in(i + 1, i + 2, "aircraft")[1]
+    return r ~= nil and r.b == i + 1 and r.exists
+  end }
   rule { "reset", "reset" }
   rule { "start", "reset", next = "over" }
   rule { "clear", "reset", near = { 3, "@sim" } }

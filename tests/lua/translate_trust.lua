@@ -23221,3 +23221,16 @@ do
   check_eq(ex("ECHO run 3 start"), "ECHO run 3 start")
   check_eq(ex("echo go to the gate"), "ECHO go to the gate")
 end
+
+-- Cycle 76 (lead, R350): "switch MVP resolution off" switched MVP on (the off word not straight beside the method):
+-- the method named and "off" said in its segment is resolution off, confirmed for everyone; "reset Lufthansa 4AX:
+-- put it back at ..." asked to reset the simulation: an aircraft named straight after "reset" is what is set again
+do
+  local _, ex = scene({ "CRE DLH4AX A320 52 5 90 FL100 250" })
+  check_eq(ex("switch MVP resolution off"), "ASK Switch conflict resolution off for every aircraft? (yes or no)")
+  check_eq(ex("MVP resolution off"), "ASK Switch conflict resolution off for every aircraft? (yes or no)")
+  check_eq(ex("switch MVP resolution on"), "RESO MVP")
+  check_eq(ex("reset Lufthansa four alpha x-ray: put it back at 52.2 5.2, FL90, heading 270, 250 knots"),
+    "MOVE DLH4AX 52.2 5.2 FL90 270 250")
+  check_eq(ex("reset the simulation"), "ASK Reset the simulation? Every aircraft and queued command goes. (yes or no)")
+end
