@@ -5338,8 +5338,10 @@ return function(H, f, compass)
       self:explain(mvp, mvp + 1)
       return self:emit("RESO OFF")
     end
-    -- ("switch MVP resolution off", "MVP resolution off": the method named, its switch said off in the segment)
-    if mvp < s.e and self:on_off(s) == 0 then
+    -- ("switch MVP resolution off", "MVP conflict resolution off": the method named, its noun, then an off word)
+    local off = mvp + 1
+    while off < s.e and off <= mvp + 3 and self:word(off, "resolution reso conflict") do off = off + 1 end
+    if mvp < s.e and off > mvp + 1 and self:word(off, "@off") then
       self:explain(mvp, mvp + 1)
       return self:emit("RESO OFF")
     end
