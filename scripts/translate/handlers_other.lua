@@ -4902,6 +4902,14 @@ return function(H, f, compass)
     -- "speed the simulation up by a factor of ten": a rate, no duration
     local factor = self:find_word(s.trig, s.e, "factor")
     if not q and factor < s.e then return self:time_mult({ b = factor, trig = factor, e = s.e }) end
+    -- ("speed the simulation up by ten": a bare number after "by", the simulation named, is the factor)
+    local by = self:find_word(s.trig + 1, s.e, "by")
+    local n = not q and by < s.e and self:word_in(s.b, s.e, "@sim") and self:quantities(by + 1, s.e)[1]
+    if n and n.b == by + 1 and n.kind == "plain" and n.value >= 2 and n.value <= 100 then
+      self:take(n)
+      self:mark_used(by, by + 1)
+      return self:emit("DTMULT " .. f.num(n.value))
+    end
     -- "put fast time please, times four": "times" straight before a number names the rate, a multiple of real
     -- time (DTMULT), as "four times" does
     local times = self:find_word(s.trig + 1, s.e, "times")

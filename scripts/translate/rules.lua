@@ -3271,6 +3271,14 @@ return function(intent, rule, words)
   end }
   -- "pause, time step 0.1, then start again": the clock started again, a clause of its own
   rule { "start", "op", next = "again", when = function(g, i) return g:clause_alone(i, i + 2) end }
+  -- ("new scene loaded, start", "last block of the day, go ahead and start": "start" closing the request in a
+  -- clause of its own ("go ahead and" before it), no aircraft named)
+  rule { "start", "op", when = function(g, i)
+    local b = g:word(i - 1, "and") and g:word(i - 2, "ahead") and g:word(i - 3, "go") and i - 3 or i
+    local e = i + 1
+    while g.t[e] and g.t[e].kind == "punct" do e = e + 1 end
+    return e > #g.t and g:clause_alone(b, i + 1) and not g:has_ref(1, #g.t + 1, "aircraft")
+  end }
   -- "run it", "start it", "go ahead and start it": the clock, said alone
   rule { "run start", "op", next = "it", when = function(g, i)
     local b = g:word(i - 1, "and") and g:word(i - 2, "ahead") and g:word(i - 3, "go") and i - 3 or i

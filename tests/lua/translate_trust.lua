@@ -23234,3 +23234,14 @@ do
     "MOVE DLH4AX 52.2 5.2 FL90 270 250")
   check_eq(ex("reset the simulation"), "ASK Reset the simulation? Every aircraft and queued command goes. (yes or no)")
 end
+
+-- Cycle 76 (lead, R331, R344, R350): "speed the simulation up by ten" (the simulation named, a bare number after
+-- "by": the factor); "start" closing the request in a clause of its own ("new scene loaded, start")
+do
+  local _, ex = scene({ "CRE KLM1234 B738 52 4 90 FL100 250" })
+  check_eq(ex("speed the simulation up by ten"), "DTMULT 10")
+  check_eq(ex("KLM1234 speed up by ten knots"), "SPD KLM1234 260")
+  asked(ex("speed up the simulation"), "no rate and no time")
+  check_eq(ex("new scene loaded, start"), "OP")
+  asked(ex("KLM1234 climb FL200, start"), "'start' after an aircraft's instruction")
+end
