@@ -3627,10 +3627,14 @@ local function written_forms(text, world)
   where("%d:%d", "%f[%d:](%d%d?):([0-5]%d):([0-5]%d)(:?)%f[^%d:]", function(h, m, sec, colon)
     return tostring(tonumber(h) * 3600 + tonumber(m) * 60 + tonumber(sec)) .. " seconds" .. colon
   end)
-  -- "in 02:00 turn right", "FL300 in 10:00", "08:00 from now": mm:ss after "in" or before "from now" is a wait, that
-  -- many seconds (mm:ss elsewhere, "at 02:00", stays a time of the clock as typed)
-  where("%d:%d", "%f[%a]([Ii]n%s+)(%d%d?):([0-5]%d)%f[^%d:]", function(lead, m, sec)
-    return lead .. tostring(tonumber(m) * 60 + tonumber(sec)) .. " seconds"
+  -- "in 02:00 turn right", "FL300 in 10:00", "08:00 from now", "wait 1:30 then ...": mm:ss after "in" or "wait" or
+  -- before "from now" is a wait, that many seconds; after "after" too under ten minutes ("after 1:30"; "after 12:30"
+  -- may be the clock's). mm:ss elsewhere, "at 02:00", stays a time of the clock as typed
+  where("%d:%d", "%f[%a](%a+%s+)(%d%d?):([0-5]%d)%f[^%d:]", function(lead, m, sec)
+    local word = lead:match("%a+"):lower()
+    if word == "in" or word == "wait" or (word == "after" and tonumber(m) < 10) then
+      return lead .. tostring(tonumber(m) * 60 + tonumber(sec)) .. " seconds"
+    end
   end)
   where("%d:%d", "%f[%d:](%d%d?):([0-5]%d)(%s+[Ff]rom%s+[Nn]ow)", function(m, sec, tail)
     return tostring(tonumber(m) * 60 + tonumber(sec)) .. " seconds" .. tail
@@ -5788,6 +5792,26 @@ function G:durations(b, e)
     end
   end
   return out
+end
+
+-- The seconds of time quantity q and the times said in a row after it, before token e ("2 min 30 s", "1 hour and
+-- 20 minutes"; "one minute thirty", "an hour fifteen": a number under 60 after a unit is the next smaller unit, its
+-- word left out), each part taken; and the token after the last part.
+function G:time_total(q, e)
+  local total, last = 0, nil
+  for _, t in ipairs(self:quantities(q.b, e)) do
+    if last and (t.b - last.e > 1 or (t.b > last.e and not self:word(last.e, "and"))) then break end
+    if t.kind == "plain" and last and t.value > 0 and t.value < 60 then
+      if self:word(last.e - 1, "minute minutes min mins") then total = total + t.value end
+      if self:word(last.e - 1, "hour hours") then total = total + 60 * t.value end
+      self:take(t)
+      return total, t.e
+    end
+    if t.kind ~= "time" then break end
+    total, last = total + t.value, t
+    self:take(t)
+  end
+  return total, last and last.e or q.e
 end
 
 function G:mark_used(b, e)
@@ -10622,6 +10646,13 @@ function G:unexplained(s, n_before)
     local unnamed = not callsign and q.b > 1 and self.t[q.b - 1].kind == "word" and self:airline_at(q.b - 1) ~= nil
       and not self:has_ref(q.b - 1, q.e, "aircraft") and not (opened and q.b > opened)
     if unnamed then callsign = { b = q.b - 1 } end
+    -- (a bare number of 10 or more in a clause of its own before the instruction, "KLM12 come round to 250, direct
+    -- SPY", is named: no instruction of that clause read it; a count, "the two", "do one thing", and a type's
+    -- digits, "the Air Canada seven-three-seven, the MAX", are no value)
+    local own_clause = false
+    if opened and q.e < opened and q.value >= 10 and not self:has_ref(s.b, q.e, "type") then
+      for x = q.e, opened - 1 do own_clause = own_clause or (self.t[x].kind == "punct" and self.t[x].text ~= "'") end
+    end
     -- (a distance closing its clause that no condition read, beside a level, speed, heading or rate, "maintain
     -- 250 knots for 10 miles", is a limit squawk's commands do not carry: asked, never dropped; "within 10 km"
     -- is where the instruction is flown, and a place after it, "20 miles from Gotham", is asked about by name)
@@ -10634,10 +10665,17 @@ function G:unexplained(s, n_before)
     end
     if not self.taken[q.b] and not SELF_READ[q.kind] and not relative and not q.by and q.turn == 0
         and q.b > corrected
-        and ((opened and q.b > opened) or own_unit(q) or self:word(q.b - 1, "@clause_verbs") or before_verb or unnamed)
+        and ((opened and q.b > opened) or own_unit(q) or self:word(q.b - 1, "@clause_verbs") or before_verb or unnamed
+          or own_clause)
         and not value_carried(q, nums, true) and not self:label_number(q, true)
         and not (self:aircraft_count(q) and self:in_reason(q.b)) then
-      self.leftover = self:raw((callsign and not before_verb) and callsign.b or q.b, q.e)
+      -- (a clause of its own named from its first word after the aircraft: "at 330", "come round to 250")
+      local b = q.b
+      while own_clause and not callsign and b > 1 and self.t[b - 1].kind == "word" and not self.u:used(b - 1)
+          and not self:has_ref(b - 1, b, "aircraft") do
+        b = b - 1
+      end
+      self.leftover = self:raw((callsign and not before_verb) and callsign.b or b, q.e)
       return
     end
   end
@@ -11763,10 +11801,10 @@ function G:meaning_carried(i, kinds)
       and self:word_in(i + 1, math.min(#self.t + 1, i + 4), "heading headings hdg vector vectors vectoring") then
     return true
   end
-  -- "cancel your route": the route deleted
+  -- "cancel your route", "cancel the whole route": the route deleted
   -- ("flight plan cancel, delete the route": the plan named straight before it)
   if self:word(i, "cancel cancels cancelled canceled") and kinds.delrte
-      and (self:word_in(i + 1, math.min(#self.t + 1, i + 3), "route rte") or self:word(i - 1, "plan rte route")) then
+      and (self:word_in(i + 1, math.min(#self.t + 1, i + 4), "route rte") or self:word(i - 1, "plan rte route")) then
     return true
   end
   -- (an instruction word between them negates the instruction: "do not go direct HZA" is no place passed)
@@ -19242,9 +19280,11 @@ function M.translate(text, world)
     return lower:find(word, 1, true) and lower:find("%f[%a]" .. word .. (whole and "%f[%A]" or ""))
   end
   -- ("new traffic: ...", "set up Austrian 719, Embraer one ninety five, ...", "put a CSA ..., A three nineteen",
-  -- "chuck a jetstar in at blaka a three twenty ..."; "crea", "crear", "creer": the verb in the speaker's language)
+  -- "make five more a320s", "chuck a jetstar in at blaka a three twenty ..."; "crea", "crear", "creer": the verb in
+  -- the speaker's language)
   if cue("crea") or cue("cree") or cue("spawn") or cue("generate") or cue("add") or cue("mcre") or cue("random")
-      or cue("new", true) or cue("set up", true) or cue("put", true) or cue("chuck", true) or cue("stick", true) then
+      or cue("new", true) or cue("set up", true) or cue("put", true) or cue("chuck", true) or cue("stick", true)
+      or cue("make", true) then
     text = types.plurals(types.spoken(text, TYPES, lexicon.phonetic), TYPES, world.aircraft, lexicon.variant_families)
     text = types.short_singular(text, TYPES, lexicon.variant_families)
   end

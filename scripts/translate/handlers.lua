@@ -4833,6 +4833,11 @@ function m:at_time(s)
           or (after and after.text == "," and self:word(q.e + 1, "@aside_comments")) then
         return nil
       end
+      -- ("in 2 minutes 30 KL204 climb ...": the times said in a row add up)
+      if not q.spoken then
+        local total, e = self:time_total(q, s.e)
+        if e > q.e then q = { kind = "time", value = total, b = q.b, e = e } end
+      end
       self:mark_used(q.b, q.e)
       self:mark_used(w, math.min(w + 1, q.b))
       if lead then self:mark_used(lead, q.b) end

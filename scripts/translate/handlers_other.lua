@@ -4563,11 +4563,17 @@ return function(H, f, compass)
         end
       end
     end
-    if self:asks_setting(self:on_off(s) < 0) or self:word(self:request_start(), "is are") then
+    -- ("are there conflicts? switch on the detection": the switch named after the question, with its "on" or "off",
+    -- is set)
+    local set_after = s.trig > q and self:word_in(q + 1, s.e, "@on @off")
+    -- (the detection's interval named after it: "conflict detection interval", "... update interval")
+    local interval = self:word(s.trig + 1, "update check") and s.trig + 2 or s.trig + 1
+    interval = self:word(interval, "interval") and interval
+    if not set_after and (self:asks_setting(self:on_off(s) < 0) or self:word(self:request_start(), "is are")) then
       -- ("what is the conflict detection interval?": DT shows it, with the time step, once in the request)
-      if spec.cmd == "ASAS" and self:word(s.trig + 1, "interval") then
+      if spec.cmd == "ASAS" and interval then
         for _, c in ipairs(self.out) do
-          if c == "DT" then return self:explain(s.trig, s.trig + 2) end
+          if c == "DT" then return self:explain(s.trig, interval + 1) end
         end
         return self:emit("DT")
       end
@@ -4583,7 +4589,7 @@ return function(H, f, compass)
       for _, q in ipairs(self:quantities(s.b, s.e)) do
         -- ("update interval 2 s", "the detection interval could be set to 0.5 seconds")
         if q.kind == "time" and (self:word(q.b - 1, "every each interval")
-            or (self:word(s.trig + 1, "interval") and q.b > s.trig)) then
+            or (interval and q.b > s.trig)) then
           -- ("set detection interval on 2 seconds": an "on" straight before the value, no other switching word, says
           -- "to", no switch)
           local to = self:word(q.b - 1, "on") and not self:word_in(s.b, q.b - 1, "@on @off")
@@ -4594,7 +4600,7 @@ return function(H, f, compass)
         end
       end
       -- ("set the detection interval on": the interval named with no time, the "on" its missing value's "to")
-      if self:word(s.trig + 1, "interval") then
+      if interval then
         self.ask = "What interval should conflict detection run at (seconds)?"
         return
       end
@@ -4986,21 +4992,7 @@ return function(H, f, compass)
       end
       local fixed = corrected_time(self, s, q)
       if fixed then return self:emit("FF " .. f.num(fixed)) end
-      -- "2 min 30 s", "1 hour and 20 minutes": times in a row add up
-      local total, last = 0, nil
-      for _, t in ipairs(self:quantities(q.b, s.e)) do
-        if last and (t.b - last.e > 1 or (t.b > last.e and not self:word(last.e, "and"))) then break end
-        if t.kind == "plain" and last and t.value > 0 and t.value < 60 then
-          -- "one minute thirty", "an hour fifteen": the next smaller unit, its word left out
-          if self:word(last.e - 1, "minute minutes min mins") then total = total + t.value end
-          if self:word(last.e - 1, "hour hours") then total = total + 60 * t.value end
-          self:take(t)
-          break
-        end
-        if t.kind ~= "time" then break end
-        total, last = total + t.value, self:take(t)
-      end
-      return self:emit("FF " .. f.num(total))
+      return self:emit("FF " .. f.num((self:time_total(q, s.e))))
     end
     self:emit("DTMULT " .. f.num(q.value))  -- "speed the sim up 10 times"
   end

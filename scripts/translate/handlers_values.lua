@@ -56,7 +56,8 @@ return function(H, f, wrap, compass)
       if q.kind == "plain" and not n.typed and n.groups == 3 and n.lead_digit and q.value <= 360 and not n.hundred
           and not n.decimal then
         -- "WZZ1234 to three six zero": a level as much as a heading, with no word to say which
-        if self:word(q.b - 1, "to") then
+        -- ("come right to zero nine zero": a side said before it makes it a turn)
+        if self:word(q.b - 1, "to") and not self:word(q.b - 2, "left right") then
           return self:need(string.format("Heading %s or flight level %s? Please say which.", f.int(q.value),
             f.int(q.value)))
         end

@@ -42,7 +42,9 @@ return {
       -- a game programmer's words for commands ("despawn", "rotate 90 clockwise", "timescale 4"; not "tp",
       -- the letters of callsigns: "Easy 81TP")
       "despawn", "warp", "destroy", "rotate", "yaw", "clockwise", "counterclockwise",
-      "anticlockwise", "hitbox", "timescale", "tick", "banking", "respawn", },
+      "anticlockwise", "hitbox", "timescale", "tick", "banking", "respawn",
+      -- ("make five more A320s": a creation's verb, never a garbled callsign's word)
+      "make", },
   -- registry command names that are everyday English words ("a delay", "the line"): said in a
   -- sentence they name no command; any other registry name said ("rmethv") names its command
   english_command_names = { "after", "area", "at", "bank", "before", "box", "call", "circle", "delay", "help",

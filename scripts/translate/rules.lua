@@ -1073,6 +1073,10 @@ return function(intent, rule, words)
       and (after == nil or after.kind == "punct" or g:word(k + 2, "degrees degree deg and then"))
   end }
   rule { "left right", "hdg", next = "onto", when = function(g, i) return g:number_at(i + 2) end }  -- "round left onto 290"
+  -- "come right to three six zero, climb FL120", "bring it left to 250": a side, "to" and a number is the heading to
+  -- turn to that way ("left to zero degrees": degrees after it, a recogniser's "two" as likely)
+  rule { "left right", "hdg", next = "to", not_prev = { 2, "turn heading" },
+         when = function(g, i) return g:number_at(i + 2) and not g:word(i + 3, "degrees degree deg") end }
   rule { "point fly towards toward head send steer face facing", "hdg", near = { 4, "@compass" } }
   -- "fly towards Kempten", "turn the Lufthansa towards the Innsbruck airport", "fly in the direction of
   -- STUDYB": the heading that points at a place (HDG's name: the bearing to it)
@@ -1333,8 +1337,8 @@ return function(intent, rule, words)
   -- "spawn twenty five jets", "create ten A320": a count of aircraft (in digits or in words, a whole number from 2) with no
   -- callsign is random traffic ("create two aircraft: KLM11 ..., and KLM12 ...": the count of the new callsigns
   -- said after it, no random traffic)
-  -- ("add 3 more A320s", "add 3 more aircraft": "more" between the count and what is counted)
-  rule { "create spawn generate add sample", "mcre", when = function(g, i)
+  -- ("add 3 more A320s", "make five more a320s": "more" between the count and what is counted)
+  rule { "create spawn generate add sample make", "mcre", when = function(g, i)
     local k = g:skip_fillers(i + 1)
     local t = g.t[k]
     local ty = g:word(k + 1, "more") and k + 2 or k + 1
@@ -1349,8 +1353,9 @@ return function(intent, rule, words)
     end
     -- ("create ten A320 at level three hundred": a count in words before a type too)
     local q = t ~= nil and t.number_word and g:quantities(k, k + 4)[1]
+    ty = q and (g:word(q.e, "more") and q.e + 1 or q.e)
     if not (q and q.b == k and q.kind == "plain" and not q.number.decimal and q.value >= 2
-        and (g:word(q.e, "@counted_aircraft") or (q.value <= 500 and g:has_ref(q.e, q.e + 1, "type")))) then
+        and (g:word(ty, "@counted_aircraft") or (q.value <= 500 and g:has_ref(ty, ty + 1, "type")))) then
       return false
     end
     for _, r in ipairs(g:refs_in(q.e + 1, #g.t + 1, "aircraft")) do
@@ -1952,11 +1957,12 @@ return function(intent, rule, words)
            end
            return false
          end }
-  -- "cancel your route", "cancel the route of CHH7423": the whole route, the noun straight after the verb (or its
-  -- article), no waypoint named, and nothing after it that a cancelled route would not be ("cancel route
-  -- restrictions": a restriction lifted)
+  -- "cancel your route", "cancel the whole route of CHH7423": the whole route, the noun straight after the verb (or
+  -- its article, and "whole" or "entire"), no waypoint named, and nothing after it that a cancelled route would not
+  -- be ("cancel route restrictions": a restriction lifted)
   rule { "cancel", "delrte", when = function(g, i)
     local k = g:word(i + 1, "the your its his her their") and i + 2 or i + 1
+    if g:word(k, "whole entire complete") then k = k + 1 end
     return g:word(k, "route rte") and not g:word(k + 1, "restriction restrictions clearance")
       and not g:has_ref(1, #g.t + 1, "waypoint")
   end }

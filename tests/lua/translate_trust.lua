@@ -23245,3 +23245,44 @@ do
   check_eq(ex("new scene loaded, start"), "OP")
   asked(ex("KLM1234 climb FL200, start"), "'start' after an aircraft's instruction")
 end
+
+-- Cycle 77 (lead): "KLM1234 come right to 120, climb FL120" sent the level alone, and "come right to three six
+-- zero and climb FL120" flew the heading the short way: a side, "to" and a number is the heading turned to that
+-- way (a typed heading the long way round asked, as after "turn"). "KLM1234 come round to 250, direct SPY" sent the direct alone: a bare number in a clause of its own before
+-- the instruction is asked about
+do
+  local _, ex = scene({ "CRE KLM1234 B738 52 4 90 FL100 250" })
+  check_eq(ex("KLM1234 come right to 360, climb FL120"),
+    "ASK Should KLM1234 turn right by 360 degrees, or fly heading 360 the long way round?")
+  check_eq(ex("KLM1234 come right to 120, climb FL120"), "HDG KLM1234 120 RIGHT ; ALT KLM1234 FL120")
+  check_eq(ex("KLM1234 come right to three six zero and climb FL120"), "HDG KLM1234 360 RIGHT ; ALT KLM1234 FL120")
+  check_eq(ex("KLM1234 come left to zero four zero"), "HDG KLM1234 40 LEFT")
+  asked(ex("KLM1234 come round to 250, direct SPY"), "'250' read by no instruction")
+  asked(ex("KLM1234 come 250, climb FL120"), "'250' read by no instruction")
+  asked(ex("KLM1234 to three six zero"), "a heading or a level")
+end
+
+-- Cycle 77 (lead): "in 2 minutes 30 KLM1234 climb FL120" waited 120 s and "after 1 minute 30 seconds ..." 60 s
+-- (the seconds dropped): times said in a row add up for a wait as for a fast-forward; "after 1:30" and "wait
+-- 1:30" are waits
+do
+  local _, ex = scene({ "CRE KLM1234 B738 52 4 90 FL100 250" })
+  check_eq(ex("in 2 minutes 30 KLM1234 climb FL120"), "DELAY 150 ALT KLM1234 FL120")
+  check_eq(ex("after 1 minute 30 seconds KLM1234 climb FL120"), "DELAY 90 ALT KLM1234 FL120")
+  check_eq(ex("ff 2 minutes 30"), "FF 150")
+  check_eq(ex("after 01:30 KLM1234 climb FL120"), "DELAY 90 ALT KLM1234 FL120")
+  check_eq(ex("wait 1:30 then KLM1234 climb FL120"), "DELAY 90 ALT KLM1234 FL120")
+  asked(ex("after 12:30 KLM1234 climb FL120"), "a clock time or a wait")
+end
+
+-- Cycle 77 (lead): "are there conflicts? switch on conflict detection" showed the setting only (the switch after the
+-- question dropped); "conflict detection update interval", "cancel your whole route", "make five more a320s"
+do
+  local _, ex = scene({ "CRE KLM1234 B738 52 4 90 FL100 250" })
+  check_eq(ex("are there conflicts? switch on conflict detection"), "ASAS ON")
+  check_eq(ex("is conflict detection on?"), "ASAS")
+  check_eq(ex("set the conflict detection update interval to 2 seconds"), "DT ASAS 2")
+  check_eq(ex("KLM1234 cancel your whole route"), "DELRTE KLM1234")
+  check_eq(ex("make 5 more a320s"), "MCRE 5 A320")
+  check_eq(ex("KLM1234 make it 250 knots"), "SPD KLM1234 250")
+end
