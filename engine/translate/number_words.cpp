@@ -7,8 +7,9 @@ namespace squawk::translate {
 namespace {
 
 int teen_word(const std::string& w) {
-  static const std::array<const char*, 10> kTeens = {"ten",     "eleven",  "twelve",    "thirteen", "fourteen",
-                                                     "fifteen", "sixteen", "seventeen", "eighteen", "nineteen"};
+  static const std::array<const char*, 10> kTeens = {"ten",      "eleven",  "twelve",  "thirteen",
+                                                     "fourteen", "fifteen", "sixteen", "seventeen",
+                                                     "eighteen", "nineteen"};
   for (size_t i = 0; i < kTeens.size(); ++i)
     if (w == kTeens[i]) return static_cast<int>(10 + i);
   return -1;
@@ -120,7 +121,9 @@ void add_fraction(const std::vector<Token>& t, SpokenNumber& n, size_t& j) {
   j = k;
 }
 
-double value_of(const std::string& digits) { return digits.empty() ? 0.0 : std::strtod(digits.c_str(), nullptr); }
+double value_of(const std::string& digits) {
+  return digits.empty() ? 0.0 : std::strtod(digits.c_str(), nullptr);
+}
 
 // Digits after "point"/"decimal" starting at i; advances i. A single digit typed after digit words
 // is one of them ("point seven 8", words and keys mixed).
@@ -138,7 +141,7 @@ struct Homophone {
   const char* digit;
   int value;
 };
-constexpr std::array<Homophone, 10> kHeard = {{{"to", "two", 2},
+constexpr std::array<Homophone, 11> kHeard = {{{"to", "two", 2},
                                                {"too", "two", 2},
                                                {"on", "one", 1},
                                                {"won", "one", 1},
@@ -146,6 +149,7 @@ constexpr std::array<Homophone, 10> kHeard = {{{"to", "two", 2},
                                                {"ones", "one", 1},
                                                {"for", "four", 4},
                                                {"ate", "eight", 8},
+                                               {"hate", "eight", 8},
                                                {"a", "eight", 8},
                                                {"fine", "five", 5}}};
 
@@ -184,12 +188,32 @@ int heard_digit(const std::string& w) {
 }
 
 void fold_digit_homophones(std::vector<Token>& t) {
-  auto digit = [&](size_t i) { return i < t.size() && t[i].kind == TokKind::kWord && digit_word(t[i].text) >= 0; };
+  auto digit = [&](size_t i) {
+    return i < t.size() && t[i].kind == TokKind::kWord && digit_word(t[i].text) >= 0;
+  };
   words_of_hyphened_numbers(t);
+  // "hate", "too" and "won", which a clearance never says as English, before a number ("too too
+  // zero", "descend too thousand", "one hate zero" read right to left) are its digit; "hate" and
+  // "won" after a digit too ("one fife hate proceed"), and "too" before a side of the globe ("fifty
+  // tree north too west")
+  for (size_t i = t.size(); i-- > 0;) {
+    const std::string& w = t[i].text;
+    if (t[i].kind != TokKind::kWord || (w != "hate" && w != "too" && w != "won")) continue;
+    // ("speed too two zero": "to two" or "two two", a digit perhaps lost: left as heard, asked)
+    const bool two_after =
+        w == "too" && i + 1 < t.size() && (t[i + 1].raw == "two" || t[i + 1].raw == "2");
+    const bool before = i + 1 < t.size() && t[i + 1].kind == TokKind::kWord &&
+                        is_number_word(t[i + 1]) && !two_after;
+    const bool after = i > 0 && digit(i - 1) && w != "too";
+    const bool side = w == "too" && (is_word(t, i + 1, "north") || is_word(t, i + 1, "south") ||
+                                     is_word(t, i + 1, "east") || is_word(t, i + 1, "west"));
+    if (before || after || side) t[i].text = w == "too" ? "two" : w == "won" ? "one" : "eight";
+  }
   for (size_t i = 1; i + 1 < t.size();) {
     const std::string& r = t[i].raw;
     const bool letter = r.size() == 1 && r[0] >= 'b' && r[0] <= 'z' && r != "i";
-    const bool noise = t[i].kind == TokKind::kWord && digit_word(t[i].text) < 0 && (letter || t[i].glued);
+    const bool noise =
+        t[i].kind == TokKind::kWord && digit_word(t[i].text) < 0 && (letter || t[i].glued);
     if (noise && digit(i - 1) && digit(i + 1)) {
       t.erase(t.begin() + static_cast<long>(i));
     } else {
@@ -203,9 +227,10 @@ void fold_digit_homophones(std::vector<Token>& t) {
       // between two digits; "fine" also closing a run of two ("three three fine"),
       // and the one-words and "ate" closing the utterance ("speed two once")
       const bool last = i + 1 == t.size() || t[i + 1].kind == TokKind::kPunct;
-      const bool closes = (t[i].text == "fine" && i >= 2 && digit(i - 2) && !digit(i + 1)) ||
-                          (last && (t[i].text == "won" || t[i].text == "once" || t[i].text == "ones" ||
-                                    t[i].text == "ate" || t[i].text == "fine"));
+      const bool closes =
+          (t[i].text == "fine" && i >= 2 && digit(i - 2) && !digit(i + 1)) ||
+          (last && (t[i].text == "won" || t[i].text == "once" || t[i].text == "ones" ||
+                    t[i].text == "ate" || t[i].text == "fine" || t[i].text == "for"));
       if ((digit(i + 1) && !position_after_to(t, i)) || closes) t[i].text = h.digit;
     }
   }
@@ -254,8 +279,8 @@ int digit_word(const std::string& w) {
 bool is_number_word(const Token& t) {
   if (t.kind == TokKind::kNumber) return true;
   if (t.kind != TokKind::kWord) return false;
-  return digit_word(t.text) >= 0 || teen_word(t.text) >= 0 || tens_word(t.text) >= 0 || t.text == "hundred" ||
-         t.text == "thousand";
+  return digit_word(t.text) >= 0 || teen_word(t.text) >= 0 || tens_word(t.text) >= 0 ||
+         t.text == "hundred" || t.text == "thousand";
 }
 
 std::optional<SpokenNumber> read_number(const std::vector<Token>& t, size_t i) {

@@ -38,16 +38,18 @@ struct SpokenNumber {
   bool has_thousand = false;  // "thousand" (or typed then "thousand") was said
   bool has_hundred = false;
   bool has_decimal = false;
-  int groups = 0;             // spoken groups ("one eighty" = 2)
+  int groups = 0;                   // spoken groups ("one eighty" = 2)
   bool leading_digit_word = false;  // first group is a single digit word
 };
 
 // Speech recognition writes digits as words that sound alike: between two
 // digit words, "to"/"too" is two, "on"/"won"/"once"/"ones" one, "for" four,
-// "ate"/"a" eight, "fine" five ("two on zero" = 210, "one a four" = 184); "fine" also after two
-// digits
-// ("three three fine" = 335); "won"/"once"/"ones"/"ate"/"fine" also after a
-// digit at the end ("speed two once" = 21). Rewrites those tokens' text in
+// "ate"/"hate"/"a" eight, "fine" five ("two on zero" = 210, "one a four" = 184); "fine" also after
+// two digits
+// ("three three fine" = 335); "won"/"once"/"ones"/"ate"/"fine"/"for" also after a
+// digit at the end ("speed two once" = 21, "mach decimal seven for" = .74). "hate", "too" and "won"
+// before any number word are digits ("too too zero" = 220, "too thousand"), "hate" and "won" after
+// a digit too, and "too" before a side of the globe ("too west"). Rewrites those tokens' text in
 // place. A word joined by hyphens of number words only ("forty-five",
 // "four-fifty-one", "three-oh-two", "one-double-zero") is those words said
 // apart ("oh"/"o" after the first part is zero). A lone lower-case letter, or

@@ -520,7 +520,7 @@ local function heard_forms(text)
       for k = 1, n - 1 do ok = ok and not toks[i + k - 1]:match("%p$") end
       if ok and not (h.not_after and heard_word_is(toks[i - 1], h.not_after)) then
         local last = toks[i + n - 1]
-        local closed = last:match("%p$") ~= nil
+        local closed = last:match("%p$") ~= nil or toks[i + n] == nil  -- (a mark or the request's end)
         local joined_before = toks[i - 1] ~= nil and not toks[i - 1]:match("%p$")
         if (h.before and not closed and heard_word_is(toks[i + n], h.before))
             or (h.before and closed and G.heard_taken_back[bare[i + n]])
@@ -1050,6 +1050,8 @@ local SC_CLOSING = set_of(lexicon.self_correction.closing)
 -- (G.sc_value_words: the words of a run between two values, lexicon.self_correction's words and value_words)
 G.sc_value_words = set_of(lexicon.self_correction.value_words)
 for w in pairs(SC_WORDS) do G.sc_value_words[w] = true end
+-- (chat's interjections in the run too: "hdg baw123 90 lol i mean 180")
+for _, w in ipairs(lexicon.accounted.chat) do G.sc_value_words[w] = true end
 -- (G.sc_dropping: the first words of the markers that take back in words, a set)
 G.sc_dropping = set_of(lexicon.self_correction.dropping)
 -- {word, pattern} of the first word of each marker, the pattern finding it as a whole word in lower-case
@@ -7624,9 +7626,11 @@ function G:segments(b, e)
             and #self:quantities(last.trig, wait) > 0 then
           start = wait
         end
-        -- (", leave BIG heading 270": "leave" and the waypoint straight before the instruction word open its clause)
+        -- (", leave BIG heading 270": "leave" and the waypoint straight before the instruction word open its clause;
+        -- so do "at" or "after" and the waypoint after "and": "direct BIG and at BIG descend FL100")
         for _, r in ipairs(self:refs_in(last.trig + 1, start, "waypoint")) do
-          if self:skip_fillers(r.e) == start and self:word(r.b - 1, "leave") and r.b - 1 > last.trig then
+          if self:skip_fillers(r.e) == start and r.b - 1 > last.trig and (self:word(r.b - 1, "leave")
+              or (self:word(r.b - 1, "at after") and self:word(r.b - 2, "and") and r.b - 2 > last.trig)) then
             start = r.b - 1
           end
         end
@@ -9673,6 +9677,13 @@ function G:when_reached(s)
   -- ("once slowed", "when you've slowed down", "once it has slowed to that": the speed of the instruction before,
   -- reached; true and "speed")
   local slowed = verb
+  -- ("once speed reduced", "when the speed is reduced": the noun the verb's subject)
+  local noun = self:word(slowed, "the") and self:skip_fillers(slowed + 1) or slowed
+  if not subject and self:word(noun, "speed airspeed") then
+    slowed = self:skip_fillers(noun + 1)
+    if self:word(slowed, "is 's") then slowed = self:skip_fillers(slowed + 1) end
+    if self:word(slowed, "been") then slowed = self:skip_fillers(slowed + 1) end
+  end
   if self:word(slowed, "you've they've it's he's she's") then slowed = self:skip_fillers(slowed + 1) end
   if self:word(slowed, "has have 've") then slowed = self:skip_fillers(slowed + 1) end
   -- ("reduce speed 250, after reducing descend FL100", "after slowing, ...": "after" and the gerund, the slowing done)
@@ -9902,7 +9913,11 @@ function G:at_waypoint(s, spec)
     for _, a in ipairs(self:refs_in(k, k + 1, "aircraft")) do k = self:skip_fillers(a.e) end
     if self.t[k] and self.t[k].kind == "punct" then k = self:skip_fillers(k + 1) end
     local opener, verb = k, self:word(s.trig - 1, "proceed go fly") and s.trig - 1 or s.trig
-    local to_name = #to == 1 and to[1].name
+    -- (one name, of one place or of several the navdata shares it between: "direct NEPAL")
+    local to_name = #to >= 1 and to[1].name
+    for _, r in ipairs(to) do
+      if to_name and r.name:upper() ~= to_name:upper() then to_name = false end
+    end
     -- ("after KOK proceed direct Brussels": the direct-to's place said by its navdata name, BUB)
     if #ids == 1 and #to == 0 and self:word(opener, "at after over overhead") and self:state(ids[1]) then
       local asked = self.ask
@@ -10080,6 +10095,8 @@ function G:at_waypoint(s, spec)
   -- ("For JJP501, when it reaches HANWA, please descend ...": "for" before the callsign names the addressee)
   if self:word(first, "for") and #self:refs_in(first + 1, first + 2, "aircraft") > 0 then first = first + 1 end
   for _, a in ipairs(self:refs_in(first, first + 1, "aircraft")) do first = courtesy(self:skip_fillers(a.e)) end
+  -- ("direct BIG, and at BIG speed 220", "direct BIG and then at BIG descend FL100": the clause joined on)
+  while self:word(first, "and then") and first > s.b do first = self:skip_fillers(first + 1) end
   -- ("RWD461 descend FL210, sorry, after EPVOK descend FL200": an instruction taken back by a self-correction
   -- whose replacement opens with a condition, G:self_corrected; the clause opens after it)
   if self.condition_resumes and self.condition_resumes[first] and self.condition_resumes[first] < s.trig then
@@ -10648,9 +10665,11 @@ function G:unexplained(s, n_before)
     if unnamed then callsign = { b = q.b - 1 } end
     -- (a bare number of 10 or more in a clause of its own before the instruction, "KLM12 come round to 250, direct
     -- SPY", is named: no instruction of that clause read it; a count, "the two", "do one thing", and a type's
-    -- digits, "the Air Canada seven-three-seven, the MAX", are no value)
+    -- digits, "the 737", "the Air Canada seven-three-seven, the MAX", are no value)
     local own_clause = false
-    if opened and q.e < opened and q.value >= 10 and not self:has_ref(s.b, q.e, "type") then
+    local before = self.t[q.b - 1]
+    if opened and q.e < opened and q.value >= 10 and not self:has_ref(s.b, q.e, "type") and before
+        and before.kind == "word" and not self:word(q.b - 1, "the a an") and not NUMBER_WORDS[before.text] then
       for x = q.e, opened - 1 do own_clause = own_clause or (self.t[x].kind == "punct" and self.t[x].text ~= "'") end
     end
     -- (a distance closing its clause that no condition read, beside a level, speed, heading or rate, "maintain

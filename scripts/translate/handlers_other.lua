@@ -3879,7 +3879,18 @@ return function(H, f, compass)
       if #letters >= 2 then
         name = letters
         self:explain(k + 1, j)
-      elseif k + 1 < s.e and self.t[k + 1].kind == "word" then name = self.t[k + 1].raw:upper() end
+      elseif k + 1 < s.e and self.t[k + 1].kind == "word" then
+        -- ("called irish one at 54 north ...": the word's spoken digits after it, before "at" or the position,
+        -- are the name's, IRISH1)
+        local digits, j = "", k + 2
+        while j < s.e and #digits < 4 and DIGITS[self.t[j].text] do digits, j = digits .. DIGITS[self.t[j].text], j + 1 end
+        name = self.t[k + 1].raw:upper()
+        if #digits >= 1 and #digits <= 3 and (self:word(j, "at") or (self:quantities(j, s.e)[1] or {}).b == j) then
+          name = name .. digits
+          self:mark_used(k + 2, j)
+          self:explain(k + 2, j)
+        end
+      end
     end
     if not name then
       -- "define waypoint DELTA at ...", "define a fix GOLF at ...": a name typed in capitals after the
@@ -5051,8 +5062,9 @@ return function(H, f, compass)
     -- (a bare number after "at" before the instruction word, "at 120 dtmult 4", is no rate: left over, asked)
     local q
     for _, p in ipairs(self:quantities(s.b, s.e)) do
+      -- ("run fast for half an hour": a fraction of a time unit is a time, G:spoken_duration, no rate)
       if not q and (p.kind == "mult" or p.kind == "plain") and not self:in_reason(p.b)
-          and not (p.b < s.trig and self:at_number(p)) then
+          and not (p.b < s.trig and self:at_number(p)) and not self:spoken_duration(p.b) then
         q = p
       end
     end
@@ -5130,10 +5142,10 @@ return function(H, f, compass)
         return self:emit("DTMULT " .. f.num(x))
       end
     end
-    -- ("at twice real time": the multiplier said in words, before real time alone)
+    -- ("at twice real time": the multiplier said in words, before real time alone; "for half an hour" is a time)
     for i = s.b, s.e - 1 do
       local v = self.t[i].kind == "word" and L.multipliers[self.t[i].text]
-      if v then
+      if v and not self:spoken_duration(i) then
         self:mark_used(i, i + 1)
         return self:emit("DTMULT " .. f.num(v))
       end

@@ -2668,8 +2668,8 @@ return {
   -- A heard form is that word ONLY where the word is expected: `before` (the
   -- next word is one of these; "#number" any number, digits or number words),
   -- `after` (the word before it is one of these), or `between` (both: after
-  -- one of between[1] and before one of between[2]), or `closed_after` (after one of these, punctuation closing
-  -- the form: "when reach, Mach .79"); never after a word of
+  -- one of between[1] and before one of between[2]), or `closed_after` (after one of these, a mark or the
+  -- request's end closing the form: "when reach, Mach .79"); never after a word of
   -- `not_after` (a name the heard form ends: "red cap 712" is AirAsia). Anywhere else it stays
   -- what it is ("write the heading down", "head into the wind", "the send
   -- button", "climb two four thousand").
@@ -2712,8 +2712,19 @@ return {
     { heard = { "head in", "heading's" }, means = "heading", before = { "#number" } },
     -- ("show me the root": the route as a recogniser writes it, after its determiner)
     { heard = { "root" }, means = "route", after = { "the", "your", "its", "his", "her", "their" } },
-    -- ("run the simulation at for times real time": a multiplier's digit heard as a word)
+    -- ("run the simulation at for times real time": a multiplier's digit heard as a word; "speed it up times for",
+    -- "turn left by for zero degrees", "fifty for decimal fife north", "speedbird won for tree for reduce ...": a
+    -- digit after "times" closing it, or after "by", before a decimal's point, or after a digit said as a word before
+    -- the instruction's verb: "1000 for descend" is no four)
     { heard = { "for", "fore" }, means = "four", before = { "times" } },
+    { heard = { "for" }, means = "four", closed_after = { "times" } },
+    { heard = { "for" }, means = "four", between = { { "by" }, { "#number" } } },
+    { heard = { "for" }, means = "four", between = { { "#number" }, { "decimal", "point" } } },
+    { heard = { "for" }, means = "four", between = { { "zero", "one", "two", "three", "four", "five", "six", "seven",
+      "eight", "nine", "niner", "tree", "fife", "won" }, { "climb", "descend", "reduce", "increase", "turn", "maintain",
+      "proceed", "direct", "fly", "speed", "heading" } } },
+    -- ("set the time multiplier to too": a digit closing the request after "to" or "times")
+    { heard = { "too" }, means = "two", closed_after = { "to", "times" } },
     { heard = { "nots", "notts", "nuts", "knot's" }, means = "knots", after = { "#number" } },
     -- ("add also AKADO at the end": an Italian speaker's "aggiungi anche", the adverb after the verb)
     { heard = { "add also" }, means = "also add", before = { "#code" } },

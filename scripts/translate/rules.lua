@@ -96,6 +96,28 @@ return function(intent, rule, words)
   rule { "*", false, next = "command cmd", when = function(g, i) return help_asked(g, i + 1) end }
   rule { "*", false, prev = { 1, "command cmd" }, when = function(g, i) return help_asked(g, i - 1) end }
   rule { "commands command cmds", "help", when = help_asked }
+  -- "what does ALT do?", "what does the HDG command mean": a command's name asked about (HELP name, m:help)
+  local command_names
+  local function command_asked(g, i)
+    if not command_names then
+      command_names = {}
+      for _, c in ipairs(squawk.sim.commands()) do
+        command_names[c.name:lower()] = true
+        for _, a in ipairs(c.aliases or {}) do command_names[a:lower()] = true end
+      end
+    end
+    local n = g:word(i - 1, "command cmd") and i - 2 or i - 1
+    local k = g:word(n - 1, "the") and n - 2 or n - 1
+    local t = g.t[n]
+    return t ~= nil and t.kind == "word" and command_names[t.raw:lower()] == true and g:word(k, "does")
+      and g:word(k - 1, "what") and not g:has_ref(1, #g.t + 1, "aircraft") and #g:quantities(1, #g.t + 1) == 0
+  end
+  rule { "do mean", "help", when = command_asked }
+  rule { "*", false, next = "do mean", when = function(g, i) return command_asked(g, i + 1) end }
+  rule { "what does", false, when = function(g, i)
+    local k = g:find_word(i, #g.t + 1, "do mean")
+    return k <= #g.t and command_asked(g, k)
+  end }
   rule { "*", false, prev = { 3, "advise" }, when = function(g, i) return g:preceded_by(i, 2, "able") end }  -- "advise when able direct X"
   -- "set speed to 1x", "speed 4x": a speed given as a multiple, with no aircraft named anywhere, is the clock's rate
   rule { "speed spd", "dtmult", when = function(g, i)
@@ -279,10 +301,15 @@ return function(intent, rule, words)
   -- before it and no value said anywhere: a question of the aircraft's state (POS), no instruction (an
   -- instruction's shorthand, "ezy45 fl?", "hdg?", is a value left out: asked; "stay at its current altitude?" names
   -- the value kept, no question of state)
-  rule { "altitude level speed heading mach airspeed", "pos", when = function(g, i)
+  -- ("Turkish 6PA, your position?", "THY6PA, your altitude?": "your" opening the clause after the callsign asks the
+  -- aircraft itself)
+  rule { "altitude level speed heading mach airspeed position", "pos", when = function(g, i)
     local nx = g.t[i + 1]
+    local yours = g:word(i - 1, "your") and i > 2 and (g.t[i - 2].kind == "punct" or g:refs_in(1, i, "aircraft")[1] ~= nil
+      and g:skip_fillers(g:refs_in(1, i, "aircraft")[1].e) == i - 1)
     return nx ~= nil and nx.kind == "punct" and nx.text == "?" and g:has_ref(1, i, "aircraft")
-      and #g:quantities(1, #g.t + 1) == 0 and not g:word(i - 1, "current present same its his her their your")
+      and #g:quantities(1, #g.t + 1) == 0
+      and (yours or not g:word(i - 1, "current present same its his her their your"))
       and not value_unsaid(g, i)
   end }
 
@@ -1587,6 +1614,13 @@ return function(intent, rule, words)
   rule { "route rte", "addwpt", when = function(g, i) return g:route_topic_first(i) end }
   -- "set the Air France to fly via MAKIL at FL280 and 260 knots": a waypoint flown via is added to the route
   rule { "via", "addwpt", prev = { 2, "fly go" }, when = function(g, i) return g:has_ref(i + 1, i + 2, "waypoint") end }
+  -- "Ryanair 82QT via ENTRY1 and EXIT1, destination Dusseldorf": "via" straight after the callsign that opens the
+  -- request, before a waypoint, routes it there (the verb left out)
+  rule { "via", "addwpt", when = function(g, i)
+    local r = g:refs_in(1, i, "aircraft")[1]
+    return r ~= nil and r.exists and g:skip_fillers(r.e) == i and g:skip_fillers(1) == r.b
+      and g:has_ref(i + 1, i + 2, "waypoint")
+  end }
   -- ("could the SAS be routed via TEB and then ARS", "KLM12 to be rerouted via SPY": the passive of route after "be",
   -- a request; "SWR72 was routed via CPA1", "both are routed via ODINA" tell the route flown, nothing added)
   rule { "via", "addwpt", prev = { 1, "routed rerouted" }, when = function(g, i)

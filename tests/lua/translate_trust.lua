@@ -23286,3 +23286,64 @@ do
   check_eq(ex("make 5 more a320s"), "MCRE 5 A320")
   check_eq(ex("KLM1234 make it 250 knots"), "SPD KLM1234 250")
 end
+
+-- Cycle 77 (R352): a recogniser's "hate" for eight, "too" for two and "for" for four: "one hate zero" is 180,
+-- "too too zero" 220, "mach decimal seven for" .74 (the four was dropped: M0.7 sent), "turn left by for zero
+-- degrees" 40 (a turn of 0 sent); "too two zero" (a digit perhaps lost) stays asked
+do
+  local _, ex = scene({ "CRE BAW452 A320 52 0 090 FL100 280", "CRE DLH90E A320 51 1 300 FL100 250",
+    "CRE BAW1434 A320 51 2 090 FL100 250" })
+  check_eq(ex("speedbird four five two climb flight level one hate zero"), "ALT BAW452 FL180")
+  check_eq(ex("speedbird four five two reduce speed too too zero knots"), "SPD BAW452 220")
+  check_eq(ex("lufthansa niner zero echo mach decimal seven for"), "SPD DLH90E M0.74")
+  check_eq(ex("lufthansa niner zero echo turn left by for zero degrees"), "HDG DLH90E 260 LEFT")
+  check_eq(ex("speedbird won for tree for reduce too too zero"), "SPD BAW1434 220")
+  check_eq(ex("speedbird four five two turn left heading two seven zero for spacing"), "HDG BAW452 270 LEFT")
+  check_eq(ex("set the time multiplier to too"), "DTMULT 2")
+  asked(ex("speedbird four five two reduce speed too two zero knots"), "too before two digits")
+end
+
+-- Cycle 77 (R352, R355): "define a waypoint called irish one at ..." defined IRISH (the digit dropped); "direct BIG
+-- and at BIG descend FL100" descended now (the condition after "and" dropped); "run fast for half an hour" ran
+-- at half speed
+do
+  local _, ex = scene({ "CRE EZY6KM A320 51.2 0.9 300 FL130 270", "DEFWPT BIG 51.3 0.03", "DEFWPT DET 51.3 0.6",
+    "ADDWPT EZY6KM DET", "ADDWPT EZY6KM BIG" })
+  check_eq(ex("define a waypoint called irish one at fifty four north five west"), "DEFWPT IRISH1 54 -5")
+  check_eq(ex("EZY6KM direct BIG and at BIG descend FL100"), "DIRECT EZY6KM BIG ; AT EZY6KM BIG DO ALT EZY6KM FL100")
+  check_eq(ex("EZY6KM descend FL100 and at BIG speed 220"), "ALT EZY6KM FL100 ; AT EZY6KM BIG SPD 220")
+  asked(ex("run fast for half an hour"), "a time, no rate")
+  check_eq(ex("run at half speed"), "DTMULT 0.5")
+end
+
+-- Cycle 77 (R351, R354, R355): "once speed reduced" waits for the speed given; "after ABEKA proceed direct NEPAL"
+-- (a name two navdata fixes share) starts at ABEKA; "KLM12 via SPY and DET" routes it there
+do
+  local _, ex = scene({ "CRE UAE2XB B77W 25 55 090 FL200 300", "CRE UZB31 A320 40.8 68.2 045 FL110 250",
+    "DEFWPT ABEKA 41.0 68.5", "DEFWPT LANOL 41.1 68.8", "DEFWPT SPY 52.5 4.8", "ADDWPT UZB31 ABEKA", "ADDWPT UZB31 LANOL" })
+  check_eq(ex("Emirates 2XB reduce speed 250, once speed reduced descend FL110"),
+    "SPD UAE2XB 250 ; ATSPD UAE2XB 250 ALT UAE2XB FL110")
+  check_eq(ex("Emirates 2XB reduce speed 250, when the speed is reduced descend FL110"),
+    "SPD UAE2XB 250 ; ATSPD UAE2XB 250 ALT UAE2XB FL110")
+  check_eq(ex("UZB31 after ABEKA proceed direct LANOL"), "AT UZB31 ABEKA DO DIRECT UZB31 LANOL")
+  check_eq(ex("UZB31 via SPY"), "ADDWPT UZB31 SPY")
+end
+do
+  local nav, nex = navscene({ "CRE UZB31 A320 40.8 68.2 045 FL110 250", "ADDWPT UZB31 LANOL", "ADDWPT UZB31 NEPAL" },
+    "a direct-to a name two fixes share")
+  if nav then
+    check_eq(nex("UZB31 after LANOL proceed direct NEPAL"), "AT UZB31 LANOL DO DIRECT UZB31 NEPAL")
+  end
+end
+
+-- Cycle 77 (R353, R356): "hdg baw123 90 lol i mean 180" (a chat interjection before the correction); "Turkish 6PA,
+-- your position?" and "THY6PA, your altitude?" ask the aircraft's state; "what does ALT do?" is HELP ALT
+do
+  local _, ex = scene({ "CRE BAW123 A320 51.5 -0.5 270 FL100 250", "CRE THY6PA A321 35.3 33.3 160 FL130 280" })
+  check_eq(ex("hdg baw123 90 lol i mean 180"), "HDG BAW123 180")
+  check_eq(ex("Turkish six papa alfa, your position?"), "POS THY6PA")
+  check_eq(ex("THY6PA, your altitude?"), "POS THY6PA")
+  check_eq(ex("what does ALT do?"), "HELP ALT")
+  check_eq(ex("what does the alt command do"), "HELP ALT")
+  check_eq(ex("the vertical speed of THY6PA 1000 for descend"), "VS THY6PA -1000")
+end
