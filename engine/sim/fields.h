@@ -79,6 +79,8 @@ inline constexpr Field<A> kAircraft[] = {
     {"gs_kt", "kt", [](const A& r) -> Value { return units::ms_to_kt(r.t.gs[r.i]); }},
     {"mach", "", [](const A& r) -> Value { return r.t.mach[r.i]; }},
     {"vs_fpm", "fpm", [](const A& r) -> Value { return units::ms_to_fpm(r.t.vs[r.i]); }},
+    // The performance model's ceiling (PerfLimits::hmax).
+    {"ceiling_ft", "ft", [](const A& r) -> Value { return units::m_to_ft(r.t.perf[r.i].hmax); }},
     {"lnav", "", [](const A& r) -> Value { return r.t.lnav[r.i] != 0; }},
     {"vnav", "", [](const A& r) -> Value { return r.t.vnav[r.i] != 0; }},
     {"sel_hdg_deg", "deg", [](const A& r) -> Value { return r.t.sel_hdg[r.i]; }},

@@ -612,6 +612,8 @@ end
 -- one holding none, in every language's words that mark none.
 G.said_whole_order = { "spanish", "french", "german", "dutch", "portuguese", "nordic", "malay", "greek", "russian",
   "italian", "polish", "discourse" }
+-- (the nouns of a value said in Portuguese or Spanish, whose digits a hesitation's word after them is one of)
+G.foreign_valued = set_of({ "nivel", "nível", "proa", "rumo", "velocidade" })
 function G.said_whole(text)
   text = G.russian_yes_no(text)
   local indexes = G.said_whole_index()
@@ -651,7 +653,9 @@ function G.said_whole(text)
       local h = form_at(index, toks, bare, i, marked) or (marked and form_at(indexes.discourse, toks, bare, i, false))
       local n = h and #h.words or 1
       if h and h.means == false then return table.concat(toks, " ", i, i + n - 1), i + n end
-      local en = h and h.means or (marked and digit_at(toks, bare, i))
+      -- ("climb to nivel um zero zero": the value's noun said in the language marks its digits as a sentence does)
+      local en = h and h.means or ((marked or (HD[bare[i]] and G.foreign_valued[bare[i - 1] or ""]))
+        and digit_at(toks, bare, i))
       if en then return en .. (toks[i + n - 1]:match("%p+$") or ""), i + n end
     end)
   end
@@ -10095,6 +10099,14 @@ function G:at_waypoint(s, spec)
   -- ("For JJP501, when it reaches HANWA, please descend ...": "for" before the callsign names the addressee)
   if self:word(first, "for") and #self:refs_in(first + 1, first + 2, "aircraft") > 0 then first = first + 1 end
   for _, a in ipairs(self:refs_in(first, first + 1, "aircraft")) do first = courtesy(self:skip_fillers(a.e)) end
+  -- ("Gol 7730, welcome to Lisboa, after EKMAR ...": the station named after the callsign, G:stations, and a
+  -- greeting set off by commas before the clause)
+  while first < s.trig and (self.noted[first] or G.station_greetings[self.words[first] or ""]) do
+    local k = first
+    while k < s.trig and (self.noted[k] or G.station_greetings[self.words[k] or ""]) do k = k + 1 end
+    if self.t[k].text ~= "," then break end
+    first = self:skip_fillers(k + 1)
+  end
   -- ("direct BIG, and at BIG speed 220", "direct BIG and then at BIG descend FL100": the clause joined on)
   while self:word(first, "and then") and first > s.b do first = self:skip_fillers(first + 1) end
   -- ("RWD461 descend FL210, sorry, after EPVOK descend FL200": an instruction taken back by a self-correction
@@ -11871,10 +11883,14 @@ end
 -- The name of the caller's own station, said in the addressing position, is marked used and explained
 -- before the parse (no word of it is an instruction: "Scottish Information"): a clause of its own, set
 -- off by commas, straight after a callsign ("Shamrock 105, Shanwick, climb ...") or opening the request
--- before one ("Santa Maria, Air Portugal 237, ..."); one to three words, a unit word after them
+-- before one ("Santa Maria, Air Portugal 237, ..."), a greeting before it or not ("bom dia Recife", "welcome to
+-- Lisboa"); one to three
+-- words, a unit word after them
 -- ("Scottish Control", "Gander Oceanic": lexicon.accounted.facilities) or not, that name an air traffic
 -- unit (lexicon.atc_units, in any case) or, capitalised, the navdata's airport, city or navaid.
 local ATC_UNITS = set_of(lexicon.atc_units)
+G.station_greetings = set_of({ "good", "morning", "afternoon", "evening", "day", "hello", "bom", "boa", "dia", "tarde",
+  "buenos", "buenas", "dias", "días", "buon", "buongiorno", "giorno", "bonjour", "guten", "tag", "morgen", "welcome" })
 G.station_units = set_of(ACCOUNTED.station_units)
 function G:stations()
   local b = 1
@@ -11891,7 +11907,15 @@ function G:stations()
       for _, r in ipairs(self.refs) do
         if r.kind == "aircraft" and r.b >= b and r.e > r.b and r.e < e and not r.by_airline then from = r.e end
       end
-      if not self:station_clause(from, e, from > b) then from = nil end
+      -- ("Air Portugal 15, bom dia Recife, descend ...", "good morning London, ...": a greeting before the name)
+      local named, after_callsign = from, from > b
+      while named < e and G.station_greetings[self.words[named] or ""] do
+        named = self:word(named, "welcome") and self:word(named + 1, "to") and named + 2 or named + 1
+      end
+      for _, r in ipairs(named > from and self.refs or {}) do
+        after_callsign = after_callsign or (r.kind == "aircraft" and r.e == from - 1 and self.t[from - 1].text == ",")
+      end
+      if not self:station_clause(named, e, after_callsign) then from = nil end
     end
     if from then
       self:mark_used(from, e)
@@ -11906,6 +11930,42 @@ function G:stations()
       end
     end
     b = e + 1
+  end
+end
+
+-- "KLM 34 descend FL70, 34 reduce 220", "Speedbird 8CK descend FL100, 8CK speed 250": an aircraft named in full
+-- then by its flight number alone (the callsign less its airline's three letters, a digit in it), after a comma or
+-- "and" and straight before an instruction word, is that aircraft again, when no other aircraft named in the
+-- request has that number; a reference to it is added there, its tokens used.
+function G:callsigns_said_short()
+  local named = {}
+  for _, r in ipairs(self.refs) do
+    if r.kind == "aircraft" and r.exists then named[#named + 1] = r end
+  end
+  local added = {}
+  for _, r in ipairs(named) do
+    local number = r.name:upper():match("^%a%a%a(%w+)$")
+    for _, o in ipairs(named) do
+      if number and o.name:upper() ~= r.name:upper() and o.name:upper():sub(4) == number then number = nil end
+    end
+    for k = r.e + 1, number and #self.t or 0 do
+      if self.t[k - 1].text == "," or self:word(k - 1, "and") then
+        local text, e = "", k
+        while e <= #self.t and e < k + 3 and self.t[e].kind ~= "punct" and #text < #number do
+          text, e = text .. self.t[e].raw:upper(), e + 1
+        end
+        if text == number and number:match("%d") and #self:refs_in(k, e, "aircraft") == 0 and self:intent_at(e) then
+          added[#added + 1] = { kind = "aircraft", b = k, e = e, name = r.name, exists = true }
+        end
+      end
+    end
+  end
+  for _, a in ipairs(added) do
+    local at = 1
+    while self.refs[at] and self.refs[at].b < a.b do at = at + 1 end
+    table.insert(self.refs, at, a)
+    self:mark_used(a.b, a.e)
+    self:explain(a.b, a.e)
   end
 end
 
@@ -19388,6 +19448,7 @@ function M.translate(text, world)
   g:subject_after_condition()
   g:acknowledged()
   g:stations()
+  g:callsigns_said_short()
   g:exercise_names()
   g:places_by_position()
   g:fixes_spelled()

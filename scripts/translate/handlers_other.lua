@@ -893,9 +893,12 @@ return function(H, f, compass)
   -- from 60 degrees", "head-on": 180), the distance at closest approach ("cpa 0", "passing 1 mile",
   -- "zero miss distance") and the time to loss of separation ("los in 200 s"); "1000 ft above it
   -- with vertical LoS at 180 s" adds dh and tlosv. Each is asked for when not said.
+  -- (with its unit, or a bare number after "speed": "..., speed 260")
   local function first_speed(self, s)
     for _, q in ipairs(self:quantities(s.b, s.e)) do
-      if q.kind == "speed" and not self.taken[q.b] then return q end
+      if (q.kind == "speed" or (q.kind == "plain" and self:word(q.b - 1, "speed spd"))) and not self.taken[q.b] then
+        return q
+      end
     end
     return nil
   end
@@ -974,7 +977,9 @@ return function(H, f, compass)
       elseif (q.kind == "dist" and not cpa and near("@closest_approach"))
           or (q.kind == "plain" and not cpa and beside) then
         cpa = self:take(q).value
-      elseif q.kind == "time" and q.b > vertical and dh and not tlosv then
+      -- ("vertical loss at 150 s", "90 s to vertical LoS": the time after the vertical part's word or before it)
+      elseif q.kind == "time" and dh and not tlosv
+          and (q.b > vertical or self:word_in(q.e, math.min(s.e, q.e + 3), "vertical")) then
         tlosv = self:take(q).value
       elseif not tlosh and ((q.kind == "time" and near("@loss_of_separation separation"))
           or (q.kind == "plain" and self:word(q.b - 1, "@loss_of_separation"))) then  -- ("tlos 300")
@@ -3664,11 +3669,14 @@ return function(H, f, compass)
     if not n and not count_at(k) and r < s.e and r > s.trig + 1 then k = self:word(r - 1, "@more") and r - 2 or r - 1 end
     local counted = not n and count_at(k)
     if counted and counted >= 1 and counted <= 500 and counted % 1 == 0 then
-      n = { value = counted }
+      n = { value = counted, b = k }
       self:explain(k, k + 1)
       self:mark_used(k, k + 1)
     end
-    if not n then return self:need("How many random aircraft should I create?") end
+    -- ("create minus three random aircraft": a count said negative is no count)
+    if not n or (n.b and self:word(n.b - 1, "minus negative")) then
+      return self:need("How many random aircraft should I create?")
+    end
     -- ("spawn 2 acft head-on @FL300, 10nm apart", "create 4 aircraft converging at FL300"): an encounter's
     -- geometry said for them is none MCRE sets (it places random aircraft anywhere): asked, never dropped
     -- (the segment and the few words after it: "..., 10nm apart"; "head on" is two words)
@@ -5420,7 +5428,12 @@ return function(H, f, compass)
       if (q.kind == "plain" and not pronoun and not by_margin) or margin or factor then
         -- ("the resolution factor to 1.2 for the horizontal dimension": the kind said after the value, "for" or
         -- "in" before it; a margin's after the noun, "add 10% margin on the horizontal resolution")
-        local cmd = kind(q.b) or (self:word(q.e, "for in") and kind(math.min(s.e, q.e + 4)))
+        -- ("resolution margin 1.05 horizontal and vertical", "1.2 vertical, 1.1 horizontal": the kinds straight
+        -- after it, no value after them, are its own)
+        local ke = self:word(q.e + 1, "and") and self:word(q.e + 2, "horizontal lateral vertical") and q.e + 3 or q.e + 1
+        local after = self:word(q.e, "horizontal lateral vertical") and #self:quantities(ke, ke + 1) == 0
+          and kind(math.min(s.e, ke))
+        local cmd = after or kind(q.b) or (self:word(q.e, "for in") and kind(math.min(s.e, q.e + 4)))
           or (margin and self:word(s.trig + 1, "on for of to in") and kind(math.min(s.e, s.trig + 5)))
         local value = margin and 1 + q.value / 100 or q.value
         if not cmd then

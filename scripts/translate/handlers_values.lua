@@ -792,6 +792,13 @@ return function(H, f, wrap, compass)
         end
       end
       if target_ft < 0 then return self:need("Which altitude for " .. id .. "? " .. alt .. " ft is below the ground.") end
+      if target_ft == 0 then return self:need("Which altitude for " .. id .. "? 0 ft is the ground.") end
+      -- a level well above the type's ceiling (the performance model's cruise ceiling, with 3000 ft to spare: OpenAP's
+      -- is the highest cruise flown, below the certified one) is one it cannot reach: asked
+      if a and a.ceiling_ft and target_ft > a.ceiling_ft + 3000 then
+        return self:need(string.format("%s (%s) can climb no higher than FL%03d: %s? Please confirm the altitude.", id,
+          a.type or "its type", math.floor(a.ceiling_ft / 100), alt))
+      end
       -- ("descend FL300, rate of climb 2000": the motion a rate's words name, in the three words before it,
       -- against the way to the level, is asked)
       local cur = a and a.alt_ft

@@ -3242,6 +3242,10 @@ return {
       -- the experimenter's commands ("cria TAM4444 A320 ...", "avança 10 minutes")
       cria = "create", crie = "create", criar = "create", ["avança"] = "advance", avanca = "advance",
       ["avance"] = "advance",
+      -- ("mach ponto sete oito", "perfeito, ...", "tempo real", "retomar", "subindo": point, all right, real time,
+      -- resume, climbing)
+      ponto = "point", perfeito = "ok", ["tempo real"] = "real time", retomar = "resume", subindo = "climbing",
+      descendo = "descending",
     },
     -- words of `words` said the same in Spanish or English: no sign of Portuguese alone
     shared = { nivel = true, ["nível"] = true, avance = true, suba = true, aumente = true, centro = true, torre = true },

@@ -1974,7 +1974,7 @@ return function(intent, rule, words)
   -- whole route, no waypoint named
   -- (the route's noun in the verb's own clause: "delete KLM123, the route is finished" tells why, no comma between)
   -- ("could you clear Lufthansa 9KM's whole route?": a spoken callsign and "whole" between, six words)
-  rule { "clear delete remove erase wipe kill", "delrte", near = { 6, "@route_nouns" },
+  rule { "clear delete remove erase wipe kill scrap", "delrte", near = { 6, "@route_nouns" },
          when = function(g, i)
            if g:has_ref(1, #g.t + 1, "waypoint") then return false end
            for k = math.max(1, i - 4), math.min(#g.t, i + 6) do
@@ -3948,7 +3948,10 @@ return function(intent, rule, words)
   -- (the resolution said of the vertical ones, "let MVP use vertical speed in the resolutions", sets no method;
   -- one switched on in a clause of its own, "turn on MVP resolution and let it use vertical too", does: RESO
   -- MVP beside the RMETHV)
+  -- ("use MVP with vertical manoeuvres", "switch on MVP with vertical resolution": the method the object of the verb
+  -- of switching, straight before it, is switched on)
   rule { "mvp resolution resolve reso resolutions resolver", false, when = function(g, i)
+    if g:word(i, "mvp") and g:preceded_by(i, 2, "@on switch turn") then return false end
     local lo, hi = g:clause_around(i)
     local set_here = g:word_in(lo, hi, "@on mvp")
     for k = 1, #g.t do

@@ -7877,7 +7877,7 @@ end
 -- is never one aircraft named before or after it: asked, unless the aircraft instructed together before are the
 -- group
 do
-  local _, ex = scene({ "CRE SAS310 A320 55.0 12.0 090 FL200 250", "CRE BEE71 DH8D 55.2 12.2 090 FL180 220",
+  local _, ex = scene({ "CRE SAS310 A320 55.0 12.0 090 FL200 250", "CRE BEE71 E195 55.2 12.2 090 FL180 220",
     "CRE FIN5 A321 55.1 12.4 270 FL160 260" })
   asked(ex("SAS310 heading 100. both climb to FL300"), "'both' after one aircraft")
   asked(ex("SAS310 heading 100. all aircraft climb to FL300"), "'all aircraft' after one aircraft")
@@ -23346,4 +23346,53 @@ do
   check_eq(ex("what does ALT do?"), "HELP ALT")
   check_eq(ex("what does the alt command do"), "HELP ALT")
   check_eq(ex("the vertical speed of THY6PA 1000 for descend"), "VS THY6PA -1000")
+end
+
+-- Cycle 77 (R358): "Swiss 45 climb FL450" (an A321) sent a level the type cannot reach, "descend to zero feet" sent
+-- ALT 0, "create minus three random aircraft" made three: each is asked now (the ceiling the performance model's,
+-- 3000 ft to spare)
+do
+  local _, ex = scene({ "CRE SWR45 A321 49.8 7.8 045 FL160 270", "CRE DAL45 A332 52.8 -6 010 FL80 220" })
+  asked(ex("Swiss 45 climb FL450"), "above the A321's ceiling")
+  check_eq(ex("Swiss 45 climb FL390"), "ALT SWR45 FL390")
+  asked(ex("Delta 45 descend to zero feet"), "0 ft is the ground")
+  asked(ex("create minus three random aircraft"), "a negative count")
+  check_eq(ex("create three random aircraft"), "MCRE 3")
+end
+
+-- Cycle 77 (R360, R361): "use MVP with vertical manoeuvres" set the vertical resolutions alone (MVP dropped);
+-- "resolution margin 1.05 horizontal and vertical"; CRECONFS's vertical loss time said before "vertical" and its
+-- speed after "speed"; "KLM 34 descend FL70, 34 reduce 220": the aircraft said again by its flight number
+do
+  local _, ex = scene({ "CRE DLH4AX A320 50 8 090 FL120 250", "CRE KLM34 B738 52 4 090 FL100 250",
+    "CRE BAW8CK A320 51.2 0.8 300 FL150 280", "CRE BAW9TV A320 51.3 0.5 300 FL150 280" })
+  check_eq(ex("use MVP with vertical manoeuvres"), "RESO MVP ; RMETHV V/S")
+  check_eq(ex("let MVP use vertical speed in the resolutions"), "RMETHV V/S")
+  check_eq(ex("resolution margin 1.05 horizontal and vertical"), "RFACH 1.05 ; RFACV 1.05")
+  check_eq(ex("resolution factor 1.2 vertical, 1.1 horizontal"), "RFACV 1.2 ; RFACH 1.1")
+  check_eq(ex("intruder I3, A320, on DLH4AX, 150 degrees, cpa 1.5, tlos 120, 1000 ft above, 90 s to vertical LoS, "
+    .. "220 kt"), "CRECONFS I3 A320 DLH4AX 150 1.5 120 1000 90 220")
+  check_eq(ex("KLM 34 descend FL70, 34 reduce 220"), "ALT KLM34 FL70 ; SPD KLM34 220")
+  check_eq(ex("Speedbird 8CK descend FL100, 8CK speed 250"), "ALT BAW8CK FL100 ; SPD BAW8CK 250")
+  asked(ex("Speedbird 8CK descend FL100, 9TV speed 250"), "9TV said alone, never named in full")
+  check_eq(ex("Speedbird 9TV scrap the whole route"), "DELRTE BAW9TV")
+end
+
+-- Cycle 77 (R359): Portuguese in an English clearance: "nivel um zero zero" (um: one, in three digits after a value's
+-- noun in Portuguese; "flight level um two four zero" keeps the hesitation), "mach ponto sete oito", "bom dia Recife"
+-- (the station greeted), "welcome to Lisboa, after EKMAR ..."
+do
+  local _, ex = scene({ "CRE TAP1911 A320 38.9 -9.4 150 FL80 260" })
+  check_eq(ex("Air Portugal 1911, climb to nivel um zero zero"), "ALT TAP1911 FL100")
+  check_eq(ex("Air Portugal 1911, climb flight level um two four zero"), "ALT TAP1911 FL240")
+  check_eq(ex("TAP1911 mach ponto sete oito"), "SPD TAP1911 M0.78")
+end
+do
+  local nav, nex = navscene({ "CRE TAP1911 A320 38.9 -9.4 150 FL80 260", "ADDWPT TAP1911 EKMAR" },
+    "stations greeted by their city's name")
+  if nav then
+    check_eq(nex("Air Portugal 1911, good morning London, climb FL150"), "ALT TAP1911 FL150")
+    check_eq(nex("Air Portugal 1911, welcome to Lisboa, after EKMAR reduce 260"),
+      "AT TAP1911 EKMAR DO SPD TAP1911 260")
+  end
 end
