@@ -504,6 +504,17 @@ G.heard_taken_back = set_of(lexicon.correction)
 for _, w in ipairs(lexicon.self_correction.markers) do
   if not w:find(" ") then G.heard_taken_back[w] = true end
 end
+-- lexicon.accented's words read as the English words they are (a word in capitals stays as typed).
+function G.accented(text)
+  local toks, bare = plain_words(text)
+  if not any_of(bare, lexicon.accented) then return text end
+  return tokens.rewrite(text, toks, function(i)
+    local en = lexicon.accented[bare[i]]
+    if not en or toks[i]:match("^%u%u") then return nil end
+    return en .. (toks[i]:match("%p+$") or ""), i + 1
+  end)
+end
+
 -- Speech recognition's sound-alike forms of instruction words
 -- (lexicon.heard_as), rewritten only where the instruction word is expected.
 local function heard_forms(text)
@@ -3614,7 +3625,7 @@ local function written_forms(text, world)
   -- "47,5 north", "8,5 degrees east", "factor to 1,1": a decimal comma (G.decimal_comma) is the point
   where("%d,%d", "()(%d+),(%d+)()", function(b, whole, part, e) return G.decimal_comma(text, b, whole, part, e) end)
   text = typed_abbreviations(lone_multipliers(tokens.numerals_apart(G.unfinished_restarts(G.cut_off_restarts(G.repeated_restarts(G.abandoned_instruction_words(G.cancelled_direct(text))))), DIGIT_WORDS), world))
-  text = hyphened_types(spelled(G.spelled_letter_a(heard_forms(negated_values(G.readback_reported(readback_heard(self_corrections(G.said_but(G.cancel_corrections(unlabelled(foreign_digits(G.portuguese_and(G.polish_and(G.said_whole(G.french_in_english(G.denied_word(G.dutch_chat(G.condition_then(G.condition_copula(G.recreate_said(G.third_person(G.passive_voice(G.after_this_instruction(text))))))))))))))))))))))))
+  text = hyphened_types(spelled(G.spelled_letter_a(heard_forms(negated_values(G.readback_reported(readback_heard(self_corrections(G.said_but(G.cancel_corrections(unlabelled(foreign_digits(G.portuguese_and(G.polish_and(G.said_whole(G.french_in_english(G.denied_word(G.dutch_chat(G.condition_then(G.condition_copula(G.recreate_said(G.third_person(G.passive_voice(G.after_this_instruction(G.accented(text)))))))))))))))))))))))))
   low = text:lower()
   -- a position typed as whole degrees after the hemisphere, then minutes ("N55 50.0 W003 20.0", "S33 57
   -- E151 10"): decimal degrees before their hemisphere ("55.833333 N 3.333333 W"); minutes of 60 or more
@@ -4567,6 +4578,35 @@ function G:past_state()
   end
 end
 
+-- "Shamrock 164, I believe your heading is 300, but please say your heading", "I think you're at FL120, say
+-- altitude": what the speaker believes the aircraft flies ("I" and a verb of belief, "that" or not,
+-- then "your" and a state's noun and "is", or "you are"/"you're" and "at" or not, then one value and its unit, to
+-- a mark, "but", "and" or the end) is no instruction: set aside (G.belief_verbs).
+G.belief_verbs = set_of({ "believe", "think", "guess", "assume", "reckon", "suppose", "understand" })
+function G:believed_state()
+  if not self:said("believe think guess assume reckon suppose understand") then return end
+  for k = 1, #self.t - 4 do
+    if self:word(k, "i") and G.belief_verbs[self.words[k + 1] or ""] then
+      local j = self:word(k + 2, "that") and k + 3 or k + 2
+      if self:word(j, "your") and self:word(j + 1, "heading altitude level speed mach") and self:word(j + 2, "is") then
+        j = j + 3
+      elseif self:word(j, "you're youre") then
+        j = self:word(j + 1, "at on") and j + 2 or j + 1
+      elseif self:word(j, "you") and self:word(j + 1, "are") then
+        j = self:word(j + 2, "at on") and j + 3 or j + 2
+      else
+        j = nil
+      end
+      local q = j and self:quantities(j, math.min(#self.t + 1, j + 6))[1]
+      local e = q and q.b == j and q.e
+      if e and (not self.t[e] or self.t[e].kind == "punct" or self:word(e, "but and")) then
+        self:set_aside(k, e - 1)
+        self:explain(k, e)
+      end
+    end
+  end
+end
+
 -- "KLM12 is climbing FL300", "the KLM is now descending to flight level 200", "KLM12, it is turning left heading
 -- 100", "KLM12 you are climbing FL300": an existing aircraft, a pronoun (it, he, she, you) or none, "is" or "are",
 -- "now", "currently", "already" or "still" or none, a participle of G.present_state_sets.verbs, then only words of
@@ -5348,9 +5388,13 @@ function G:in_reason(i)
         -- ("climb FL340 before it reaches the boundary", "I'd like AFR1234 at FL340 before the boundary":
         -- lexicon.deadline_places)
         inside, reason[k] = true, true
-      elseif punct and (self:word(k + 1, "@then_words") or (t.text == "," and self:word(k + 1, "@clause_verbs"))) then
+      elseif punct and (self:word(k + 1, "@then_words") or (t.text == "," and self:word(k + 1, "@clause_verbs"))
+          or (t.text == "," and self:word(k + 1, "and") and (self:word(k + 2, "@then_words @clause_verbs")
+            or (self:word(k + 2, "if") and self:word(k + 3, "able"))))) then
         -- (", then ..." ends the reason: "up to FL320 so it conflicts with TRA6021, then ff 1 min"; so does a verb of
-        -- lexicon.clause_verbs after a comma: "turn left heading 090 due traffic, descend 8100 metres")
+        -- lexicon.clause_verbs after a comma: "turn left heading 090 due traffic, descend 8100 metres"; and ", and then
+        -- ...", ", and turn ...", ", and if able ...": "climb FL110 due traffic below you, and then once level turn
+        -- left heading 060")
         inside = false
       elseif (w and REASON_WORDS[w])
           -- ("ok so the clock is running slow, go 2x": "so" opening the request, with only fillers before it,
@@ -7247,7 +7291,20 @@ function G:addressee_between(last, i)
       or (qs[1] ~= nil and qs[#qs].e == r.b))
     if r.exists and opens and not before[r.name:upper()] and self:skip_fillers(r.e) == start then return true end
   end
-  return false
+  return self:ordinal_picks(last.trig, start)
+end
+
+-- True when "the first", "the second" or "the third" ("one" after it or not) straight before token i, after token
+-- `after`, picks one of two or more aircraft named before it ("KLM1009 and DLH4AX, the first one reduce 240, the
+-- second one reduce 260"; "another pause for the second freeze" picks none).
+function G:ordinal_picks(after, i)
+  local o = self:word(i - 1, "one") and i - 1 or i
+  if not (self:word(o - 1, "first second third") and self:word(o - 2, "the") and o - 2 > after) then return false end
+  local named = {}
+  for _, r in ipairs(self:refs_in(1, o - 2, "aircraft")) do
+    if r.exists then named[r.name:upper()] = true end
+  end
+  return next(named, next(named)) ~= nil
 end
 
 -- True when quantity q (or nil) names what it sets by its own unit: a flight level, knots, a Mach, "heading N".
@@ -7579,7 +7636,8 @@ function G:segments(b, e)
           -- (a possessive after the verb: "Aeroflot 1878 to stop your descent at level 250")
           -- (a verb that names no value of its own between, or courtesy: "..., EZY2 fly heading 310", "..., EZY2
           -- please go to heading 310": the aircraft is this instruction's subject)
-          while after < start and self:word(after, "please kindly now fly go") do after = self:skip_fillers(after + 1) end
+          -- ("..., and the Speedbird also descend FL100": "also" between)
+          while after < start and self:word(after, "please kindly now fly go also") do after = self:skip_fillers(after + 1) end
           if after < start and self:word(after, "to") then after = self:skip_fillers(after + 1) end
           while after < start and self:word(after, "fly go") do after = self:skip_fillers(after + 1) end
           local obj = self:word(after, "@halted") and self:skip_fillers(after + 1)
@@ -7587,6 +7645,9 @@ function G:segments(b, e)
           if obj == start then after = start end
           if after == start then start = r.b end
         end
+        -- ("..., the first one reduce 240, the second one reduce 260": an ordinal picking one of the aircraft named
+        -- together, straight before the instruction word, is its subject, m:acids)
+        if self:ordinal_picks(last.trig, start) then start = (self:word(start - 1, "one") and start - 1 or start) - 2 end
         -- "heading 070, FL240 climb, speed 300": a value with this instruction's unit said just before its word,
         -- after a comma or "and" closing the instruction before with a value of its own, is this one's
         -- (verb-final order; "to" before the value with it)
@@ -11933,6 +11994,33 @@ function G:stations()
   end
 end
 
+-- "for sequencing into Heathrow please reduce ...", "for spacing into Manchester": the airport a flow is sequenced
+-- into, after "sequencing", "sequence" or "spacing" and "into", "to" or "for" (one or two capitalised words naming
+-- an airport or its city), is the reason's, no place of the instruction: set aside.
+function G:flow_places()
+  if not self:said("sequencing sequence spacing") then return end
+  for k = 1, #self.t - 2 do
+    if self:word(k, "sequencing sequence spacing") and self:word(k + 1, "into to for") then
+      for e = math.min(k + 4, #self.t + 1), k + 3, -1 do
+        local words, proper = {}, true
+        for x = k + 2, e - 1 do
+          local t = self.t[x]
+          proper = proper and t.kind == "word" and t.raw:match("^%u") ~= nil and not self:intent_at(x)
+          words[#words + 1] = t.text
+        end
+        local name = table.concat(words, " ")
+        local known = proper and (lexicon.city_airports[name] or (self.world.airports_named
+          and (#self.world.airports_named(name) > 0 or #self.world.airports_of_city(name) > 0)))
+        if known then
+          self:set_aside(k + 2, e - 1)
+          self:explain(k + 2, e)
+          break
+        end
+      end
+    end
+  end
+end
+
 -- "KLM 34 descend FL70, 34 reduce 220", "Speedbird 8CK descend FL100, 8CK speed 250": an aircraft named in full
 -- then by its flight number alone (the callsign less its airline's three letters, a digit in it), after a comma or
 -- "and" and straight before an instruction word, is that aircraft again, when no other aircraft named in the
@@ -14039,7 +14127,8 @@ function M.has_instruction(text)
   local u = squawk.translate.utterance(written_forms(text), nil, NAMES)
   local toks = u:tokens()
   local g = setmetatable({ u = u, t = toks, words = word_texts(toks), refs = u:refs(),
-    world = { aircraft = {}, waypoints = {} }, fleet = {}, out = {}, qcache = {}, triggers = {} }, G)
+    world = { aircraft = {}, waypoints = {} }, fleet = {}, out = {}, qcache = {}, triggers = {}, noted = {}, taken = {},
+    cut_back = {} }, G)
   for i = 1, #g.t do
     if g:intent_at(i) then return true end
   end
@@ -15297,6 +15386,7 @@ function G:not_simulated()
         -- ("traffic eleven o'clock, turn left 20 degrees": a clause opening with an imperative verb of
         -- lexicon.clause_verbs after a comma is an instruction, also after traffic information)
         if class.to_end and x.text == "," and self:word(e + 1, "@clause_verbs") and self:intent_at(e + 1) then break end
+
         -- ("expedite descent FL140 traffic below, rate three thousand or more", "..., at 2000 fpm or more": a
         -- vertical-speed noun of lexicon.clause_rates with a value in its clause, or a vertical speed with its unit,
         -- opening the clause after a comma is the rate of the climb or descent said before the traffic, never the
@@ -19428,6 +19518,7 @@ function M.translate(text, world)
   g:state_remarks()
   g:past_state()
   g:present_state()
+  g:believed_state()
   g:break_remarks()
   g:destination_told()
   g:destination_preface()
@@ -19448,6 +19539,7 @@ function M.translate(text, world)
   g:subject_after_condition()
   g:acknowledged()
   g:stations()
+  g:flow_places()
   g:callsigns_said_short()
   g:exercise_names()
   g:places_by_position()

@@ -769,6 +769,25 @@ function m:acids(s)
     -- the aircraft named for the instruction before ("EZY45 and AFR1234 maintain present heading")
     local all = self.subjects and self.subjects[1] == self.subject and self.subjects or { self.subject }
     for k, id in ipairs(all) do ids[k] = id end
+    -- ("KLM1009, DLH4AX, BAW123 - everyone 250 knots, and Speedbird also descend FL110": an airline said alone in
+    -- the segment picks those of it among them; none or several of it asked)
+    for k = #ids > 1 and s.b or s.e, s.e - 1 do
+      local icao, e = self:airline_at(k)
+      if icao and not self:has_ref(k, e, "aircraft") then
+        local of = {}
+        for _, id in ipairs(ids) do
+          if id:upper():sub(1, #icao) == icao then of[#of + 1] = id end
+        end
+        if #of ~= 1 then
+          self:need(string.format("Which aircraft is '%s': %s? Please give its callsign.", self:raw(k, e),
+            table.concat(#of > 1 and of or ids, " or ")))
+        else
+          self:explain(k, e)
+        end
+        ids = of
+        break
+      end
+    end
   end
   if #ids == 0 then
     for _, r in ipairs(self.refs) do
@@ -806,6 +825,20 @@ function m:acids(s)
   -- "the two jets at FL200, put one of them at FL190", "climb either of them": a selector of
   -- lexicon.partitive_selectors said in the segment picks one of the aircraft named together, never each of them:
   -- asked which
+  -- ("KLM1009 and DLH4AX, the first one reduce 240, the second one reduce 260": "the first" or "the second" (and
+  -- "one") before the instruction word picks that one of the aircraft named together, in the order said)
+  local group = self.ordinal_group or (#ids > 1 and ids)
+  for k = group and s.b or s.trig, s.trig - 1 do
+    local n = self:word(k, "the") and (self:word(k + 1, "first") and 1 or self:word(k + 1, "second") and 2
+      or self:word(k + 1, "third") and 3)
+    local e = n and (self:word(k + 2, "one") and k + 3 or k + 2)
+    if n and group[n] and (self:intent_at(self:skip_fillers(e)) or self.t[e].kind == "punct") then
+      self.ordinal_group = group
+      ids = { group[n] }
+      self:explain(k, e)
+      break
+    end
+  end
   local picked = #ids > 1 and self:partitive_said(s.b, s.e)
   if picked then
     self:need(string.format("Which aircraft: %s? I heard '%s'.", table.concat(ids, " or "),
@@ -937,10 +970,11 @@ function m:as_context(i)
       or (self:word(k, "from") and self:word(k - 1, "away")) or self:word(k, "below under beneath above")) then
     return true
   end
-  -- ("creeping up on the Easy", "closing on EZY45": the traffic neared, lexicon.neared_verbs)
+  -- ("creeping up on the Easy", "closing on EZY45": the traffic neared, lexicon.neared_verbs; "for spacing on the
+  -- KLM ahead": the traffic spaced from)
   if placed and self:word(k, "on upon") then
     local v = self:word(k - 1, "up in down") and k - 2 or k - 1
-    if self:word(v, "@neared_verbs") then return true end
+    if self:word(v, "@neared_verbs spacing sequencing separation") then return true end
   end
   -- ("..., head on with KLM605", "converging with the Ryanair": the traffic met)
   if placed and self:word(k, "with") and (self:word(k - 1, "converging converge converges head-on")

@@ -2060,6 +2060,11 @@ return function(intent, rule, words)
   -- aircraft over is the move's manner, no direct-to
   -- ("please put the Qatari 491 directly at 26.0 north 53.0 east": "at" or "on" the place too)
   rule { "directly", false, next = "over above at on", prev = { 4, "move put place reposition teleport" } }
+  -- ("move Channex 12 up to FL120, just put it there directly": the manner of the move, at once, closing its clause)
+  rule { "directly", false, prev = { 4, "move put place reposition teleport" }, when = function(g, i)
+    local nx = g.t[i + 1]
+    return nx == nil or nx.kind == "punct"
+  end }
   rule { "direct directly dct dtc drct dir proceed direct-to", "direct" }  -- ("dtc": dct's letters swapped)
   -- "after CPA1 continue to EXIT1", "after passing SYZ it should continue to ISN": "continue to" a place, with
   -- "after" a place said before it in the request, is the way on from that place (m:direct_one adds it after it)

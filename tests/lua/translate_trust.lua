@@ -23396,3 +23396,55 @@ do
       "AT TAP1911 EKMAR DO SPD TAP1911 260")
   end
 end
+
+-- Cycle 77 (R365, R366): instructions a reason or traffic information ran over ("climb FL110 due traffic below you,
+-- and then once you are level there turn left heading 060", "... because of the weather ahead, and if able turn
+-- right ten degrees" sent the level alone); "the Speedbird also descend FL100" after a group gave the level to the
+-- group; "for spacing on the KLM ahead" gave the KLM the speed; "I believe your heading is 300" flew it; "just put it
+-- there directly" added a direct-to
+do
+  local _, ex = scene({ "CRE EIN152 A320 53 -6 090 FL90 250", "CRE DLH4AX A320 50 8 260 FL300 280",
+    "CRE KLM1234 B738 50.1 8.1 260 FL300 280", "CRE BAW822 A320 51 0 090 FL150 280", "CRE EIN22K A320 51.2 0 090 FL150 280",
+    "CRE EXS12 B738 51.25 0.3 090 FL100 250", "DEFWPT MAY 51.3 0.5", "ADDWPT EXS12 MAY" })
+  check_eq(ex("Shamrock 152, climb to flight level one one zero due traffic below you, and then once you are level "
+    .. "there turn left heading zero six zero"), "ALT EIN152 FL110 ; ATALT EIN152 FL110 HDG EIN152 60 LEFT")
+  check_eq(ex("DLH4AX, climb flight level three two zero because of the weather ahead, and if able turn right ten "
+    .. "degrees"), "ALT DLH4AX FL320 ; HDG DLH4AX 270 RIGHT")
+  check_eq(ex("Speedbird 822 and Shamrock 22K, maintain 250 knots or less, and the Speedbird also descend FL100"),
+    "SPD BAW822 250 ; SPD EIN22K 250 ; ALT BAW822 FL100")
+  check_eq(ex("Lufthansa four alpha x-ray, for spacing on the KLM ahead please reduce speed to two eight zero knots"),
+    "SPD DLH4AX 280")
+  check_eq(ex("Shamrock 152, I believe your heading is zero nine zero but please say your heading"), "POS EIN152")
+  check_eq(ex("please move EXS12 straight up to flight level one two zero, just put it there directly"),
+    "MOVE EXS12 51.25 0.3 FL120")
+end
+
+-- Cycle 77 (R364): a German or Swiss accent as a recogniser writes it ("flight lefel two sree tsero", "hetting",
+-- "fife tousand"); "2. TRA702, route via BRAVO" (a numbered step before a route) raised an error
+do
+  local _, ex = scene({ "CRE DLH4AX A320 48.8 11 120 FL250 280", "CRE TRA702 B738 52 4 90 FL100 250",
+    "DEFWPT BRAVO 52 5" })
+  check_eq(ex("lufthansa four alfa x ray turn right hetting one sree tsero"), "HDG DLH4AX 130 RIGHT")
+  check_eq(ex("lufthansa four alfa x ray descend to fife tousand feet"), "ALT DLH4AX 5000")
+  check_eq(ex("lufthansa four alfa x ray climb flight lefel two sefen tsero"), "ALT DLH4AX FL270")
+  check_eq(ex("2. TRA702, route via BRAVO"), "ADDWPT TRA702 BRAVO")
+end
+
+-- Cycle 77 (R366): "the first one ..., the second one ..." after aircraft named together picks each in the order
+-- said; "one of them" stays asked
+do
+  local _, ex = scene({ "CRE KLM1009 B738 51.6 0.75 265 FL150 290", "CRE DLH4AX A321 51.55 0.5 265 FL160 280" })
+  check_eq(ex("KLM1009 and DLH4AX, the first one reduce 240, the second one reduce 260"),
+    "SPD KLM1009 240 ; SPD DLH4AX 260")
+  check_eq(ex("DLH4AX, KLM1009: the first one turn right heading 180, the second one turn left heading 030"),
+    "HDG DLH4AX 180 RIGHT ; HDG KLM1009 30 LEFT")
+  asked(ex("KLM1009 and DLH4AX at FL200, put one of them at FL190"), "one of them")
+  asked(ex("KLM1009 and DLH4AX, the first one reduce 240"), "the second named for nothing")
+end
+do
+  local nav, nex = navscene({ "CRE VIR27 A333 51.4 -0.2 090 FL120 250" }, "the airport a flow is sequenced into")
+  if nav then
+    check_eq(nex("Virgin two seven, for sequencing into Heathrow please reduce speed two one zero knots"),
+      "SPD VIR27 210")
+  end
+end
