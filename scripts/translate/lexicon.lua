@@ -2701,11 +2701,14 @@ return {
     adverbs = { "then", "now", "first", "also", "subsequently", "finally", "next", "again", "immediately" },
   },
   -- English words as a recogniser writes them from a German or Swiss accent ("flight lefel two sree tsero", "turn
-  -- left hetting tsero sree fife", "fife tousand feet"): no word of English, each read as the word it is wherever it
-  -- stands (typed in capitals, a name, it stays as typed; grammar.lua G.accented)
+  -- left hetting tsero sree fife", "fife tousand feet") or a Spanish one ("flight leber one two sero", "headin",
+  -- "espeed", "seben"): no word of English, each read as the word it is wherever it stands (typed in capitals, a
+  -- name, it stays as typed; grammar.lua G.accented)
   accented = { tsero = "zero", sree = "three", zree = "three", sefen = "seven", tousand = "thousand",
     sousand = "thousand", lefel = "level", hetting = "heading", hedding = "heading", sirty = "thirty",
-    tventy = "twenty", kebec = "quebec", yuliett = "juliett", tsulu = "zulu" },
+    tventy = "twenty", kebec = "quebec", yuliett = "juliett", tsulu = "zulu",
+    sero = "zero", seben = "seven", leber = "level", lebel = "level", headin = "heading", espeed = "speed",
+    tirty = "thirty", altitud = "altitude", tousan = "thousand" },
   heard_as = {
     { heard = { "write", "rite", "wright" }, means = "right",
       before = { "heading", "hdg", "turn" }, after = { "turn" } },
