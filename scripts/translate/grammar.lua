@@ -11994,6 +11994,24 @@ function G:stations()
   end
 end
 
+-- "you handle the Lufthansa: climb it to FL300", "you take Shuttle 8G, descend it ...": an aircraft handed to the
+-- teammate addressed, before what it is to do (a colon or comma after the aircraft), names the addressee: the words
+-- handing it over are read.
+function G:handed_over()
+  if not self:said("handle take") then return end
+  for k = 2, #self.t - 1 do
+    if self:word(k, "handle take") and self:word(k - 1, "you") then
+      local r = self:refs_in(k + 1, k + 3, "aircraft")[1]
+      local nx = r and self.t[r.e]
+      if r and (r.b == k + 1 or (r.b == k + 2 and self:word(k + 1, "the"))) and nx and nx.kind == "punct"
+          and (nx.text == ":" or nx.text == ",") then
+        self:mark_used(k - 1, k + 1)
+        self:explain(k - 1, k + 1)
+      end
+    end
+  end
+end
+
 -- "for sequencing into Heathrow please reduce ...", "for spacing into Manchester": the airport a flow is sequenced
 -- into, after "sequencing", "sequence" or "spacing" and "into", "to" or "for" (one or two capitalised words naming
 -- an airport or its city), is the reason's, no place of the instruction: set aside.
@@ -19539,6 +19557,7 @@ function M.translate(text, world)
   g:subject_after_condition()
   g:acknowledged()
   g:stations()
+  g:handed_over()
   g:flow_places()
   g:callsigns_said_short()
   g:exercise_names()

@@ -1259,9 +1259,11 @@ return function(H, f, wrap, compass)
     -- ("turn left by 90 degrees and, in two minutes, onto heading 070": a heading said after a turn's degrees in the
     -- turn's sentence, no correction between, is a second heading unless it is the one the turn reaches: asked, as
     -- below, never the degrees dropped)
-    local turned = abs and abs.kind == "heading" and rel and rel.b < abs.b and not correction and now
-      and not self:in_reason(abs.b) and (rel.turn ~= 0 and rel.turn or turn)
-    for x = rel and rel.e or 1, turned and abs.b - 1 or 0 do
+    -- (so is a turn's degrees said after the heading: "turn left heading 330 by 15 degrees")
+    local turned = abs and abs.kind == "heading" and rel and not correction and now
+      and not self:in_reason(abs.b) and not self:in_reason(rel.b) and (rel.turn ~= 0 and rel.turn or turn)
+    local first_e, second_b = rel and math.min(rel.e, abs and abs.e or rel.e), rel and math.max(rel.b, abs and abs.b or rel.b)
+    for x = first_e or 1, turned and second_b - 1 or 0 do
       if self.t[x].kind == "punct" and self.t[x].text ~= "," then turned = false end
     end
     local reached = turned and turned ~= 0 and wrap(math.floor(now.hdg_deg + turned * rel.value + 0.5))

@@ -2650,6 +2650,8 @@ return function(intent, rule, words)
   end }
   rule { "where's wheres", "pos" }  -- ("wheres the speedbird": typed without the apostrophe)
   rule { "doing", "pos", prev = { 4, "what what's whats" } }  -- "what's klm12 doing"
+  -- ("how's the Easy getting on?": the aircraft's progress asked)
+  rule { "getting", "pos", next = "on", prev = { 5, "how's hows how" } }
   -- "what's Qantas one four one doing", "what is Velocity 923 doing": a callsign said in words of any length;
   -- at most two of lexicon.indirect_question_adverbs between it and "doing" ("what is the Emirates actually
   -- doing?", German "aktuell": at present)

@@ -23448,3 +23448,19 @@ do
       "SPD VIR27 210")
   end
 end
+
+-- Cycle 77 (R368): a controller handing an aircraft to the teammate ("you handle the Lufthansa: climb it to
+-- FL300") and asking after one ("how's the Easy getting on?")
+do
+  local _, ex = scene({ "CRE DLH4AX A320 51 0 090 FL200 280", "CRE EZY7321 A320 51.5 0 090 FL200 280" })
+  check_eq(ex("you handle the Lufthansa: climb it to FL300"), "ALT DLH4AX FL300")
+  check_eq(ex("you take DLH4AX, descend it to FL180"), "ALT DLH4AX FL180")
+  check_eq(ex("how's the Easy getting on?"), "POS EZY7321")
+end
+-- (R363) "turn left heading 330 by 15 degrees" from 045 flew 330, the 15 degrees dropped: a turn's degrees said
+-- after the heading that do not reach it are asked, as before it
+do
+  local _, ex = scene({ "CRE KLM88X B738 52 4 045 FL100 250" })
+  asked(ex("KLM88X turn left heading 330 by 15 degrees"), "the degrees reach 030, not 330")
+  check_eq(ex("KLM88X turn left heading 030 by 15 degrees"), "HDG KLM88X 30 LEFT")
+end
