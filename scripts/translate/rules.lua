@@ -3229,11 +3229,12 @@ return function(intent, rule, words)
          not_near = { 2, "higher lower more less another new different" },
          when = function(g, i) return #g:quantities(i, #g.t + 1) == 0 end }
   rule { "carry", "op", next = "on", near = { 4, "@sim" } }  -- "carry on with the simulation"
-  rule { "carry go", "op", next = "on", when = function(g, i) return g:alone_but(i, i + 2) end }  -- "carry on", "go on"
+  -- "carry on", "go on", "right, crack on" (British: get going)
+  rule { "carry go crack", "op", next = "on", when = function(g, i) return g:alone_but(i, i + 2) end }
   -- "..., then carry on", "..., then go", "OK, go on, and run at 2x": a clause of its own; "ok carry on, run it at
   -- three times speed": "carry on" opening the request ("go on, let it fast-forward" urges the next one on)
-  rule { "carry go", "op", next = "on", when = function(g, i)
-    return g:clause_alone(i, i + 2) or (g:word(i, "carry") and g:clause_opens(i, i + 2))
+  rule { "carry go crack", "op", next = "on", when = function(g, i)
+    return g:clause_alone(i, i + 2) or (g:word(i, "carry crack") and g:clause_opens(i, i + 2))
   end }
   -- "okay, back to it, and run at normal speed", "right, back to work": the clock taken up again, a clause of its
   -- own with no aircraft named anywhere

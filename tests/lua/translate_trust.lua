@@ -23456,6 +23456,7 @@ do
   check_eq(ex("you handle the Lufthansa: climb it to FL300"), "ALT DLH4AX FL300")
   check_eq(ex("you take DLH4AX, descend it to FL180"), "ALT DLH4AX FL180")
   check_eq(ex("how's the Easy getting on?"), "POS EZY7321")
+  check_eq(ex("right, crack on"), "OP")
 end
 -- (R363) "turn left heading 330 by 15 degrees" from 045 flew 330, the 15 degrees dropped: a turn's degrees said
 -- after the heading that do not reach it are asked, as before it
