@@ -11015,6 +11015,21 @@ function G:dangling_correction()
       self.t[last].raw:lower()))
     return
   end
+  -- ("descend FL100, er, standby on that", "..., stand by", "..., hold that": an aircraft's instruction held back
+  -- after it was said, in a clause of its own closing the request: asked, never sent)
+  local sb = last
+  if self:word(sb, "that it") and self:word(sb - 1, "on") then sb = sb - 2 end
+  local held = (self:word(sb, "standby"))
+    or (self:word(sb, "by") and self:word(sb - 1, "stand") and sb - 1)
+    or (sb == last and self:word(sb, "that") and self:word(sb - 1, "hold") and sb - 1)
+  if held == true then held = sb end
+  local k = held and held - 1 or 0
+  while k > 0 and self.t[k].filler do k = k - 1 end
+  -- ("pause the simulation, stand by": the speaker waiting with the clock stopped, no clearance held back)
+  if held and #self.out > 0 and k > 0 and self.t[k].kind == "punct" and self:has_ref(1, held, "aircraft") then
+    return self:need(string.format("You said '%s' after %s: should it wait? Please say the instruction again when it "
+      .. "should run.", self:raw(held, last + 1), table.concat(self.out, " ; ")))
+  end
   -- ("conflict detection off. No, leave it.": a phrase of lexicon.self_correction.left_as_is after a marker,
   -- closing the request, takes back what was said before with nothing in its place: asked)
   for k = math.max(2, last - 5), last do

@@ -23465,3 +23465,13 @@ do
   asked(ex("KLM88X turn left heading 330 by 15 degrees"), "the degrees reach 030, not 330")
   check_eq(ex("KLM88X turn left heading 030 by 15 degrees"), "HDG KLM88X 30 LEFT")
 end
+
+-- Cycle 77 (R371): "descend flight level one zero zero, er, standby on that" sent the descent: an instruction held
+-- back in a clause closing the request ("standby", "stand by", "standby on that", "hold that") is asked, never sent
+do
+  local _, ex = scene({ "CRE BAW8XL A320 52 -7 090 FL150 280" })
+  asked(ex("Speedbird eight x-ray lima, descend flight level one zero zero, er, standby on that"), "held back")
+  asked(ex("BAW8XL descend FL100, stand by"), "held back")
+  asked(ex("BAW8XL descend FL100, hold that"), "held back")
+  check_eq(ex("BAW8XL descend FL100"), "ALT BAW8XL FL100")
+end
