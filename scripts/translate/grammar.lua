@@ -6938,6 +6938,19 @@ function G:condition_lost_in_correction()
       k = self:find_word(k + 1, n, "sorry")
     end
   end
+  -- ("when speed 250 climb FL130? negative, climb FL130 now": "now" after the correction takes a condition still
+  -- sent back: asked, never sent waiting)
+  local neg = self:find_word(1, n, "negative")
+  if neg < n then corr = math.max(corr or neg, neg) end
+  if corr and corr < n and self:word_in(corr, n, "now immediately") then
+    for _, line in ipairs(self.out) do
+      if line:match("^ATSPD ") or line:match("^ATALT ") or line:match("^ATDIST ") or line:match("^%S+ AT ")
+          or line:match("^AT ") or line:match("^DELAY ") then
+        return self:need(string.format("I have %s, but '%s' says now: should it run now, or wait?", line,
+          (self:raw(corr, n):gsub(" ([,.;:?])", "%1"))))
+      end
+    end
+  end
   if not corr or corr >= n or self:word_in(corr, n, "now immediately") then return end
   for _, r in ipairs(self:refs_in(1, #self.t + 1, "waypoint")) do
     local k = r.b - 1

@@ -23475,3 +23475,12 @@ do
   asked(ex("BAW8XL descend FL100, hold that"), "held back")
   check_eq(ex("BAW8XL descend FL100"), "ALT BAW8XL FL100")
 end
+
+-- Cycle 77 (R362): "when speed two five zero climb FL130? negative, climb FL130 now" sent the climb waiting for the
+-- speed: "now" after "negative" or a correction, with a command still waiting, is asked
+do
+  local _, ex = scene({ "CRE BTK6512 B738 -6 107 090 FL110 280" })
+  asked(ex("Batik 6512 when speed two five zero climb FL130? negative, climb FL130 now"), "now after negative")
+  check_eq(ex("Batik 6512 reduce speed 250, when speed 250 climb FL130"),
+    "SPD BTK6512 250 ; ATSPD BTK6512 250 ALT BTK6512 FL130")
+end
