@@ -1482,6 +1482,13 @@ local function self_corrections(text)
           or (toks[k - 1] and (toks[k - 1].bare == "please" or toks[k - 1].bare == "kindly") and value(toks[k - 2])))
         and nxt
         and (said.bare:match("^%a?%a?%.?%d") or NUMBER_WORDS[said.bare] or after[said.bare] or position
+          -- (another aircraft and its own instruction in place: "descend FL270, sorry, I meant IBE3170 descend
+          -- FL170", "..., no, Speedbird 432 direct ARTIP": a callsign typed, or a word and a number, then a verb)
+          -- (not after words that take back all said, "never mind": G.withdrawn_sentences)
+          or (not dropping and said == nxt and said.raw:match("^%a%a%a?%d%w*%p?$") and toks[j + 1]
+            and G.refusable[toks[j + 1].bare])
+          or (not dropping and said == nxt and toks[j + 1] and toks[j + 1].raw:match("^%d%w*%p?$") and toks[j + 2]
+            and G.refusable[toks[j + 2].bare])
           -- (a Mach number said in words: "point seven eight, sorry, point seven nine")
           or ((said.bare == "point" or said.bare == "decimal") and toks[j + 1] and DIGIT_WORDS[toks[j + 1].bare])) then
       put(toks[k].at, ", correction, ", nxt.at)
@@ -2059,6 +2066,8 @@ local function hyphened_types(text)
     for _, d in ipairs(TYPES.designators) do KNOWN_TYPES[d:upper()] = true end
     for d in pairs(TYPES.aliases) do KNOWN_TYPES[d] = true end  -- ("E-175": the E75L)
   end
+  -- ("Dash 8 dash 400", "Boeing 737 dash 800": the hyphen of a variant said as "dash")
+  if text:find("[Dd][Aa][Ss][Hh]") then text = text:gsub("(%d)%s+[Dd][Aa][Ss][Hh]%s+(%d00%a*)%f[%W]", "%1-%2") end
   if not text:find("-", 1, true) then return text end
   return (text:gsub("%f[%w](%a%a?)%-(%d%d%d?)%f[%W]", function(a, n)
     if KNOWN_TYPES[(a .. n):upper()] then return a .. n end
@@ -3539,6 +3548,8 @@ end
 
 -- the stems of the gerunds that "would you mind" keeps as said (written_forms: "having X climb", "taking X out of")
 G.mind_gerunds_kept = { hav = true, mak = true, lett = true, gett = true, ask = true, tak = true }
+-- the values "present" or "current" is said of, once for two joined by "and" (written_forms)
+G.present_values = { speed = true, heading = true, level = true, altitude = true }
 local function written_forms(text, world)
   -- (each pattern pass runs through where(): only where `low`, the text in lower case, holds what the
   -- pattern requires, its first argument; a rewrite outside where() sets `low` again)
@@ -3625,7 +3636,7 @@ local function written_forms(text, world)
   -- "47,5 north", "8,5 degrees east", "factor to 1,1": a decimal comma (G.decimal_comma) is the point
   where("%d,%d", "()(%d+),(%d+)()", function(b, whole, part, e) return G.decimal_comma(text, b, whole, part, e) end)
   text = typed_abbreviations(lone_multipliers(tokens.numerals_apart(G.unfinished_restarts(G.cut_off_restarts(G.repeated_restarts(G.abandoned_instruction_words(G.cancelled_direct(text))))), DIGIT_WORDS), world))
-  text = hyphened_types(spelled(G.spelled_letter_a(heard_forms(negated_values(G.readback_reported(readback_heard(self_corrections(G.said_but(G.cancel_corrections(unlabelled(foreign_digits(G.portuguese_and(G.polish_and(G.said_whole(G.french_in_english(G.denied_word(G.dutch_chat(G.condition_then(G.condition_copula(G.recreate_said(G.third_person(G.passive_voice(G.after_this_instruction(G.accented(text)))))))))))))))))))))))))
+  text = hyphened_types(spelled(G.spelled_letter_a(heard_forms(negated_values(G.readback_reported(readback_heard(self_corrections(G.said_but(G.cancel_corrections(unlabelled(foreign_digits(G.portuguese_and(G.polish_and(G.said_whole(G.french_in_english(G.denied_word(G.dutch_chat(G.condition_then(G.condition_copula(G.recreate_said(G.third_person(G.passive_voice(G.after_this_instruction(text))))))))))))))))))))))))
   low = text:lower()
   -- a position typed as whole degrees after the hemisphere, then minutes ("N55 50.0 W003 20.0", "S33 57
   -- E151 10"): decimal degrees before their hemisphere ("55.833333 N 3.333333 W"); minutes of 60 or more
@@ -3846,6 +3857,15 @@ local function written_forms(text, world)
     if before and before:match("^[%d%.,%-]+$") and w ~= "left" and w ~= "right" then return nil end
     return w .. space .. digit
   end)
+  -- ("maintain present speed and heading": the adjective said once for both values, said again before the second)
+  for _, adj in ipairs({ "present", "current" }) do
+    where(adj, "%f[%a](" .. adj:gsub("%a", function(c) return "[" .. c .. c:upper() .. "]" end)
+        .. ")(%s+)(%a+)(%s+and%s+)(%a+)%f[%A]", function(said, space, first, joined, second)
+      if G.present_values[first:lower()] and G.present_values[second:lower()] then
+        return said .. space .. first .. joined .. said .. " " .. second
+      end
+    end)
+  end
   -- ("would you mind moving EZY81AB to ...", "would you mind showing me the route of ..."): the gerund after "mind"
   -- is its verb, where the verb opens a rule of squawk's ("having", "making", "letting", "taking" stay: what follows is
   -- said)
@@ -4232,6 +4252,7 @@ local CM_WHILE, CM_LATER, CM_LEAD_CONTEXT = set_of(COMMENTARY.while_words), set_
 COMMENTARY.reason_set, COMMENTARY.study_set = set_of(COMMENTARY.reasons), set_of(COMMENTARY.study_labels)
 COMMENTARY.put_off_later_set = set_of(COMMENTARY.put_off_later)
 COMMENTARY.audience_set = set_of(COMMENTARY.audience)
+COMMENTARY.perception_set, COMMENTARY.perceived_set = set_of(COMMENTARY.perception), set_of(COMMENTARY.perceived)
 COMMENTARY.restate_set, COMMENTARY.intention_set = set_of(COMMENTARY.restate_verbs), set_of(COMMENTARY.intention)
 COMMENTARY.restated_sets = {}
 for intent, nouns in pairs(COMMENTARY.restated) do COMMENTARY.restated_sets[intent] = set_of(nouns) end
@@ -4357,6 +4378,14 @@ function G:commentary(b, e, lead, record, places)
     end
   end
   return true
+end
+
+-- True when the clause from b opens with a verb of lexicon.aside.perception and a word of its `perceived` ("watch the
+-- trend arrow", "see how steep that is") and names no aircraft, place or value: the audience is shown something.
+function G:perceived(b)
+  if not (self:word(b, COMMENTARY.perception_set) and self:word(b + 1, COMMENTARY.perceived_set)) then return false end
+  local e = commentary_end(self, b)
+  return not self:has_ref(b, e, "aircraft") and not self:has_ref(b, e, "waypoint") and #self:quantities(b, e) == 0
 end
 
 -- True when the clause from b (its verb, one of commentary.restate_verbs) describes again an instruction said
@@ -5276,6 +5305,9 @@ function G:in_reason(i)
           and self:commentary(k + 1, commentary_end(self, k + 1)) then
         -- ("Fast-forward 20 minutes, we only care about the descent phase"; "...; we are studying how ...";
         -- ", not sure which way is shorter": the speaker's hedge, G:hedge_opens)
+        inside = true
+      elseif ((punct and (t.text == "," or t.text == ";")) or w == "and") and self:perceived(k + 1) and instructed(k) then
+        -- (", watch the trend arrow", "and notice the label counting down": the audience shown what it does)
         inside = true
       elseif punct and (t.text == "," or t.text == ";")
           and self:word_in(k + 1, commentary_end(self, k + 1), COMMENTARY.reason_set)
@@ -8135,6 +8167,17 @@ function G:question_back()
         local asked_q = self.t[e] and self.t[e].text == "?"
         local answered = asked_q and self:any_instruction_in(e + 1, #self.t + 1)
           and #self:quantities(e + 1, #self.t + 1) > 0
+        -- ("confirm maintaining FL240, descend FL200", "confirm you are climbing, climb FL140": a comma closing the
+        -- question before a clause that opens with an instruction and holds its own value, the same)
+        if not asked_q then
+          for c = ce, e - 1 do
+            local n = self:skip_fillers(c + 1)
+            if self.t[c].text == "," and n < e and self:intent_at(n) and #self:quantities(n, e) > 0 then
+              answered, e = true, c
+              break
+            end
+          end
+        end
         -- ("confirm level 290? Maintain": a bare "maintain" after a level asked about keeps that level)
         local qs = self:quantities(ce, e)
         local m = self:skip_fillers(e + 1)
@@ -12071,25 +12114,44 @@ end
 -- then by its flight number alone (the callsign less its airline's three letters, a digit in it), after a comma or
 -- "and" and straight before an instruction word, is that aircraft again, when no other aircraft named in the
 -- request has that number; a reference to it is added there, its tokens used.
+-- "KLM 56B and 77C both to FL200": straight after "and", the flight number alone of another aircraft flying of the
+-- same airline (its callsign exactly the airline's three letters and it) is that aircraft, named with the first.
 function G:callsigns_said_short()
   local named = {}
   for _, r in ipairs(self.refs) do
     if r.kind == "aircraft" and r.exists then named[#named + 1] = r end
   end
+  local flying = {}
+  for _, a in ipairs(self.fleet or {}) do flying[a.id:upper()] = a.id end
   local added = {}
+  -- (the raw text of the tokens from k, at most three and up to `len` characters, before any mark; and its end)
+  local function said_from(k, len)
+    local text, e = "", k
+    while e <= #self.t and e < k + 3 and self.t[e].kind ~= "punct" and #text < len do
+      text, e = text .. self.t[e].raw:upper(), e + 1
+    end
+    return text, e
+  end
   for _, r in ipairs(named) do
-    local number = r.name:upper():match("^%a%a%a(%w+)$")
+    local airline, number = r.name:upper():match("^(%a%a%a)(%w+)$")
     for _, o in ipairs(named) do
       if number and o.name:upper() ~= r.name:upper() and o.name:upper():sub(4) == number then number = nil end
     end
     for k = r.e + 1, number and #self.t or 0 do
       if self.t[k - 1].text == "," or self:word(k - 1, "and") then
-        local text, e = "", k
-        while e <= #self.t and e < k + 3 and self.t[e].kind ~= "punct" and #text < #number do
-          text, e = text .. self.t[e].raw:upper(), e + 1
-        end
+        local text, e = said_from(k, #number)
         if text == number and number:match("%d") and #self:refs_in(k, e, "aircraft") == 0 and self:intent_at(e) then
           added[#added + 1] = { kind = "aircraft", b = k, e = e, name = r.name, exists = true }
+        end
+      end
+    end
+    if airline and self:word(r.e, "and") and #self:refs_in(r.e + 1, r.e + 2, "aircraft") == 0 then
+      for len = 1, 5 do
+        local text, e = said_from(r.e + 1, len)
+        local other = #text == len and text:match("^%d") and flying[airline .. text]
+        if other and other:upper() ~= r.name:upper() and not (self.t[e] and self.t[e].kind == "number") then
+          added[#added + 1] = { kind = "aircraft", b = r.e + 1, e = e, name = other, exists = true }
+          break
         end
       end
     end
@@ -13674,6 +13736,15 @@ function G:unaccounted()
       and not self.u:used(k)
   end
   for i = 1, #self.t do
+    -- ("tra5xk haeding 240 l": a turn letter of lexicon.shorthand straight after a number that no part of the parse
+    -- read is asked, never dropped: the turn would go the short way)
+    local side = self.t[i].kind == "word" and lexicon.shorthand[self.t[i].text]
+    local after_number = self.t[i - 1] and (self.t[i - 1].kind == "number" or self.t[i - 1].number_word)
+    if (side == "left" or side == "right") and after_number and not explained[i] and not self.noted[i]
+        and not self.u:used(i) then
+      self.leftover = self.t[i].raw
+      return
+    end
     local b = letter(i) and letter(i + 1) and not letter(i - 1) and i - 1
     while b and self.t[b] and self.t[b].filler do b = b - 1 end
     if b and self:word(b, "at after over via cross crossing abeam direct from") then
@@ -13726,7 +13797,9 @@ function G:unaccounted()
   -- "negative descend" are corrections, and so is "wait no descend" straight after a value, m:marker_after_value)
   for i = 1, not_said and #self.t or 0 do
     local t = self.t[i]
-    local v = (t.text == "no" or t.text == "non" or t.text == "ne") and not (self:word(i - 1, "wait")
+    -- ("heading niner zero, uh, no, turn right ...": a hesitation before it, after a value, as "wait")
+    local v = (t.text == "no" or t.text == "non" or t.text == "ne") and not ((self:word(i - 1, "wait")
+        or G.hesitation_words[self.words[i - 1] or ""])
       and self:marker_after_value(i)) and not (t.text ~= "no" and (self:marker_after_value(i) or not (t.raw:match("^%u?%l+$"))
         or in_ref(i))) and i + 1
     while v and self.t[v] and (self.t[v].filler or self:word(v, "@left @right")) do v = v + 1 end
@@ -14170,7 +14243,7 @@ end
 -- True when the text holds a word that starts an instruction of its own
 -- (the dialogue tells an answer to its question from a new request by it).
 function M.has_instruction(text)
-  local u = squawk.translate.utterance(written_forms(text), nil, NAMES)
+  local u = squawk.translate.utterance(written_forms(G.accented(text)), nil, NAMES)
   local toks = u:tokens()
   local g = setmetatable({ u = u, t = toks, words = word_texts(toks), refs = u:refs(),
     world = { aircraft = {}, waypoints = {} }, fleet = {}, out = {}, qcache = {}, triggers = {}, noted = {}, taken = {},
@@ -16334,27 +16407,43 @@ end
 -- request issued one ALT, SPD or HDG per aircraft; any other shape is asked about (never one value for all).
 local RESPECTIVE = {
   ALT = function(q) return (q.kind == "alt" or (q.kind == "plain" and q.number.thousand)) and handlers.format.alt(q.value, q.fl) end,
-  SPD = function(q)
-    if q.kind == "mach" then return handlers.format.mach(q.value) end
-    return (q.kind == "speed" or q.kind == "plain") and handlers.format.int(q.value)
+  -- (a bare fraction is a Mach number after one, "Mach .78 and .76"; else no speed: a speed is whole knots)
+  SPD = function(q, before)
+    if q.kind == "mach" or (q.kind == "plain" and q.value > 0 and q.value < 1 and before and before.kind == "mach") then
+      return handlers.format.mach(q.value)
+    end
+    return (q.kind == "speed" or q.kind == "plain") and q.value % 1 == 0 and handlers.format.int(q.value)
   end,
   HDG = function(q) return (q.kind == "heading" or q.kind == "plain") and handlers.format.int(q.value) end,
 }
+-- "in that order" and "in the same order" after the values say "respectively" when two aircraft or more were named
+-- before them (with one, "add waypoints A, B in that order" is the route's order, no pairing).
 function G:respectively()
   local w = self:find_word(1, #self.t + 1, "respectively")
-  if w > #self.t then return end
+  local e = w + 1
+  if w > #self.t then
+    w = self:find_word(1, #self.t + 1, "order")
+    if self:word(w - 2, "in") and self:word(w - 1, "that") then
+      w, e = w - 2, w + 1
+    elseif self:word(w - 3, "in") and self:word(w - 2, "the") and self:word(w - 1, "same") then
+      w, e = w - 3, w + 1
+    else
+      return
+    end
+  end
   local ids, seen, last = {}, {}, 0
   for _, r in ipairs(self:refs_in(1, w, "aircraft")) do
     if not seen[r.name] then ids[#ids + 1], seen[r.name] = r.name, true end
     last = math.max(last, r.e)
   end
+  if #ids < 2 and not self:word(w, "respectively") then return end
   local cmd = #ids >= 2 and #self.out == #ids and self.out[1]:match("^(%u+) ")
   local values = {}
   for _, q in ipairs(RESPECTIVE[cmd] and self:quantities(last, w) or {}) do
-    local v = RESPECTIVE[cmd](q)
+    local pv = values[#values]
+    local v = RESPECTIVE[cmd](q, pv and pv.q)
     -- ("flight level one six zero and one eight zero respectively": a bare number of 10 to 600 joined by "and"
     -- to the flight level before it is that flight level's sequel, a flight level too)
-    local pv = values[#values]
     if not v and cmd == "ALT" and pv and pv.q.fl and q.kind == "plain" and not q.number.thousand
         and q.value >= 10 and q.value <= 600 and q.value % 1 == 0 and q.b == pv.q.e + 1 and self:word(pv.q.e, "and") then
       v = handlers.format.alt(q.value * 100, true)
@@ -16378,7 +16467,7 @@ function G:respectively()
     self:take(v.q)
     if self.leftover == self:raw(v.q.b, v.q.e) then self.leftover = nil end
   end
-  self:explain(w, w + 1)
+  self:explain(w, e)
 end
 
 -- "maintain present level, descend when ready": a climb or descent left to the pilot's discretion
@@ -17879,7 +17968,6 @@ end
 -- and the ordinals of the commas dashes became are returned as a set (G:in_reason reads commentary after
 -- them). A comma between digits ("6,000") is no comma token and is not counted.
 local DASHES = { "^%s+%-%-?%s+", "^%s*\xE2\x80[\x93\x94]%s*" }
--- lexicon.spelled_out as case-blind Lua patterns over whole words, built once: { words, pattern, short }
 -- "ANA51 - not 515 - please increase ...", "ANA51, not ANA515, climb ...": an aircraft flying, then "not" and
 -- another aircraft flying of the same airline (its number alone, or its callsign), set apart by dashes or commas:
 -- the speaker rules the other out, so "not" and the other are dropped and the first stays addressed. The other
@@ -17899,6 +17987,7 @@ function G.other_callsign_denied(text, aircraft)
       return first .. close
     end))
 end
+-- lexicon.spelled_out as case-blind Lua patterns over whole words, built once: { words, pattern, short }
 local SPELLED_OUT = {}
 for words, short in pairs(lexicon.spelled_out) do
   local pattern = words:gsub("%a", function(c) return "[" .. c:lower() .. c:upper() .. "]" end):gsub(" ", "%%s+")
@@ -19243,6 +19332,8 @@ function M.translate(text, world)
   if text:find("\xC3", 1, true) then text = text:gsub("[\xC3][\x80-\xBF]", lexicon.accents) end  -- (UTF-8 Latin-1 letters)
   -- (the Turkish letters of UTF-8 Latin Extended-A: "hayır", "sağol", "Şile")
   if text:find("[\xC4\xC5]") then text = text:gsub("[\xC4\xC5][\x80-\xBF]", lexicon.accents) end
+  -- (an accent's words first, so the callsign and telephony passes read "hop seven sree" as "hop seven three")
+  text = G.accented(text)
   text = G.id_label(G.hold_after_ff(G.time_before_fast(numbered_steps(G.title_label(G.spoken_ddmm(G.spoken_zeros(G.number_words_apart(text))))))), world)
   local said_conflict = G.said_conflict(text)
   if said_conflict then return { commands = {}, ask = said_conflict } end

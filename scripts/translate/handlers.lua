@@ -1626,6 +1626,11 @@ function m:airline_refs()
           and (not self:other_traffic_before(p - 2)
             or self:word(e, "@route_nouns")  -- "add X to the KLM's route" (the lexer drops "'s")
             or self:added_to(p - 2, e) or self:given_to(p - 2) or self:same_opening(i))
+      -- ("show speedbird's route", "what is easy's level": the airline's possessive before a thing an aircraft has,
+      -- lexicon.possessed_by_aircraft, names its aircraft as "the Speedbird's" does)
+      -- (the lexer drops the "'s": read from the request as said)
+      the = the or (self:word(e, "@possessed_by_aircraft") and (self.text_said or ""):lower()
+        :find("%f[%w]" .. self.t[e - 1].raw:lower():gsub("%p", "%%%0") .. "['\226\128\153]s%f[%W]") ~= nil)
       if the and p < i then self:explain(p, i) end
       -- ("the regional jet from Republic, climb ...", "the plane from Delta": "the", words of an aircraft described
       -- and "from" before the airline capitalised name its aircraft, as "the Republic jet" does; `from_the`: the
@@ -4751,7 +4756,7 @@ end
 -- as any instruction's does.
 local OWN = {}
 for _, w in ipairs(L.aside.own) do OWN[w] = true end
-local OWN_TIME = { ff = true, dt = true, dtlook = true, dtmult = true, creconfs = true }
+local OWN_TIME = { ff = true, dt = true, dtlook = true, creconfs = true }
 -- (the instructions whose values a wait may stand between)
 local TIMED_VALUES = { alt = true, spd = true, hdg = true, vs = true, maintain = true, infer = true }
 -- "SCHEDULE hh:mm:ss" for a simulation time of t seconds

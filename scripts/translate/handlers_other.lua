@@ -428,6 +428,7 @@ return function(H, f, compass)
           if d:match(p) then found[#found + 1] = d break end
         end
       end
+      if #found > 1 and L.nickname_defaults[word] then found = { L.nickname_defaults[word] } end
       if #found > 1 then
         return self:need(string.format("Which type of %s is meant: %s?", word, table.concat(found, ", ")))
       end
@@ -442,7 +443,19 @@ return function(H, f, compass)
       if r.exists and self:word_in(s.b, s.e, "same") then model = self:state(r.name) end
     end
     if recreated and self:word_in(s.b, s.e, "same") then model = self:state(recreated) end
-    if not actype and model and self:word_in(s.b, s.e, "type") then actype = model.type end
+    -- ("create AC006 same as AC005 but at 51.7 4.8 hdg 270", "identical to AC003", "a copy of KLM12 at ..."): a
+    -- whole copy of an aircraft flying, its type, level, speed and heading where the request says none
+    local copied
+    for _, r in ipairs(self:refs_in(s.b, s.e, "aircraft")) do
+      if r.exists and ((self:word(r.b - 1, "as") and self:word(r.b - 2, "same"))
+          or (self:word(r.b - 1, "to") and self:word(r.b - 2, "identical"))
+          or (self:word(r.b - 1, "of") and self:word(r.b - 2, "copy clone twin duplicate"))) then
+        copied = self:state(r.name)
+        model = copied
+        self:explain(r.b - 2, r.b)
+      end
+    end
+    if not actype and model and (copied or self:word_in(s.b, s.e, "type")) then actype = model.type end
     local qs = self:quantities(s.b, s.e)
     for _, q in ipairs(s.shared and self:quantities(s.shared.b, s.shared.e) or {}) do qs[#qs + 1] = q end
     local back_qs, points_back = self:creation_taken_back(s, qs)
@@ -588,11 +601,11 @@ return function(H, f, compass)
       end
     end
     -- "the same heading, level and speed as KL204", "same FL as WZZ1234"
-    if model and self:word_in(s.b, s.e, "altitude level fl") and not alt then
+    if model and (copied or self:word_in(s.b, s.e, "altitude level fl")) and not alt then
       alt, fl = math.floor((model.alt_ft or 0) + 0.5), true  -- (the simulation's feet, to the foot)
     end
-    if model and self:word_in(s.b, s.e, "heading hdg") and not hdg then hdg = model.hdg_deg end
-    if model and self:word_in(s.b, s.e, "speed") and not spd and not mach then
+    if model and (copied or self:word_in(s.b, s.e, "heading hdg")) and not hdg then hdg = model.hdg_deg end
+    if model and (copied or self:word_in(s.b, s.e, "speed")) and not spd and not mach then
       if model.sel_mach then mach = model.sel_mach else spd = model.cas_kt end
     end
     -- "TEST01 ... at FL300 and 280 knots, and TEST02 ..., same level and speed": the values of the aircraft
@@ -3162,6 +3175,18 @@ return function(H, f, compass)
   function m:add_waypoint(s)
     local id = self:acid(s, "get the waypoint")
     if not id then return end
+    -- ("add SPY to KLM1602 then at SPY heading 200"): a place after "then" or "and" and "at", "over", "passing" or
+    -- "reaching" inside this segment, an instruction after it, is a condition on that instruction, which this
+    -- segment cannot carry: asked, never dropped
+    for k = s.trig + 1, s.e - 2 do
+      local c = self:word(k, "then and") and self:skip_fillers(k + 1)
+      local wp = c and c < s.e and self:word(c, "at over passing reaching overhead")
+        and self:refs_in(c + 1, c + 2, "waypoint")[1]
+      if wp and self:any_instruction_in(s.e, #self.t + 1) then
+        return self:need(string.format("Should what follows '%s' wait until %s passes %s? Please add the waypoint "
+          .. "first, then give that instruction on its own.", self:raw(k, wp.e), id, wp.name))
+      end
+    end
     local qs = self:quantities(s.b, s.e)
     -- "... after WPC" / "before WPC": ADDWPT's afterwp / beforewp
     -- (also before the verb: "after REMBI add the waypoint ESAMA")

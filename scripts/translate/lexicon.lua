@@ -55,7 +55,7 @@ return {
   -- said in English, each a filler above in another tongue: "po" (respect, as "please"), "sige" (all right),
   -- "ano" (um), "yung" (the), "na" (now): "resume na po"; and of Nigerian and Ghanaian Pidgin: "abeg" (please),
   -- "oya" (come on, now): "abeg check Speedbird 75 for me", "oya show me Arik 104")
-  fillers = { "ah", "uh", "um", "er", "eh", "oh", "the", "a", "an", "please", "pls", "okay", "ok", "yeah", "so",
+  fillers = { "ah", "uh", "um", "er", "eh", "euh", "oh", "the", "a", "an", "please", "pls", "okay", "ok", "yeah", "so",
       "and", "now", "lah", "leh", "lor", "po", "sige", "ano", "yung", "na", "abeg", "oya",
       -- (Singlish "anot", "or not", closing a question: "can pause the sim anot?")
       "anot",
@@ -317,6 +317,13 @@ return {
     -- phrases of courtesy that hold a word which means something elsewhere ("when", "if"):
     -- explained whole
     courtesy_phrases = { "pull up", "when you get a chance", "when you can", "when you're ready", "when ready",
+        -- small talk on a quiet shift and its pace ("evening KLM12, nice and quiet tonight, descend ...", "... at your
+        -- discretion, long way down tonight", "plenty of time", "pause it, phone's ringing"): no value, no instruction
+        "nice and quiet tonight", "nice and quiet", "quiet one tonight", "a quiet one tonight", "quiet tonight",
+        "quiet night", "long way down tonight", "plenty of time", "lots of time", "phone's ringing", "phone is ringing",
+        "let's have a break", "have a break", "take a break", "till something happens", "until something happens",
+        "short break", "quick break", "coffee break", "comfort break", "nothing interesting", "nothing happening",
+        "nothing much happening", "questions answered",
         -- the blessings of Arabic-speaking (and other Muslim) controllers, said in English or transliterated,
         -- before, between or after the instructions ("God willing, climb FL370", "..., if you please, God bless
         -- you"): they ask for nothing. "God" said alone stays unknown.
@@ -549,6 +556,9 @@ return {
         -- NASA-TLX", "so the geometry works", "the crossing angle")
         "eye", "tracker", "eye-tracker", "nasa", "tlx", "nasa-tlx", "questionnaire", "workload", "geometry",
         "calibrated", "crossing", "condition", "conditions", "baseline", "measurement", "measurements",
+        -- (the traffic a workload study brings in by waves, its conditions with and without the resolver: "create the
+        -- second wave aircraft EZY39GH ...", "phase 2 is the assisted condition")
+        "wave", "waves", "assisted", "unassisted",
         -- a part of the airspace a study is run in ("for the terminal area trials")
         "terminal", "en-route", "enroute",
         -- an incident investigation's reconstruction and its narration of what was cleared ("an additional
@@ -640,7 +650,7 @@ return {
   -- hesitations: skipped inside a spoken number, but a number said with one is not
   -- completed by guessing ("heading uh two two" asks which heading)
   -- (Irish and Scottish speakers write their hesitation "em")
-  hesitations = { "ah", "uh", "um", "er", "eh", "em" },
+  hesitations = { "ah", "uh", "um", "er", "eh", "em", "euh" },
   -- words that count the "thousand" after them ("two and a half thousand feet", "a few thousand feet"): no
   -- "thousand feet" said bare, read as one thousand, after them
   thousand_counted = { hundred = true, half = true, quarter = true, few = true, several = true, many = true,
@@ -730,6 +740,8 @@ return {
     -- (in capitals an ident, "define a point EXPD at ...")
     expd = { word = "expedite", caps_kept = true }, expdt = { word = "expedite", caps_kept = true },
     til = { word = "until", not_prev = "legg" },
+    -- (a condition typed short: "ryr7fg whn spd 250 climb fl260")
+    whn = { word = "when" },
     sched = { word = "schedule", next = "#number hold pause ff t at in" },
     -- ("turn on conflict res", "cd and res on": resolution after the conflict's words)
     res = { word = "resolution", prev = "conflict conflicts cd detection and" },
@@ -770,7 +782,11 @@ return {
     wp = { word = "waypoint", prev = "add new a the",
            not_next = "#number zero one two three four five six seven eight nine niner" },
     lvl = { word = "level", not_prev = "dct direct to via add after over cross at" },
-    vert = { word = "vertical", next = "sep separation speed spd rate" },
+    vert = { word = "vertical", next = "sep separation speed spd rate resolution reso res" },
+    -- (a researcher's shorthand of the resolution settings: "horiz resolution factor 1.1", "hor reso factor 1.05")
+    horiz = { word = "horizontal", next = "sep separation resolution reso res" },
+    hor = { word = "horizontal", next = "sep separation resolution reso res" },
+    reso = { word = "resolution", prev = "horizontal vertical horiz hor vert conflict cd" },
     sep = { word = "separation", prev = "vertical horizontal lateral min minimum" },
     tl = { word = "turn left", next = "#number hdg heading" }, tr = { word = "turn right", next = "#number hdg heading" },
     fh = { word = "fly heading", next = "#number" },
@@ -1629,6 +1645,9 @@ return {
   -- BlueSky's own corpus read them (nl2trafscript_dev d001: "a Boeing 777" is B772); a Boeing family is its 7x7
   -- digits, an Airbus one its 3x0 ("330", read only after "A" or "Airbus")
   variant_families = { "737", "767", "787", "220", "330" },
+  -- a family's nickname said alone for a new aircraft that every writer reads as one variant ("a 737 MAX", "Boeing
+  -- 737 MAX": the MAX 8, four writers of four); any other nickname naming several designators is asked about
+  nickname_defaults = { max = "B38M" },
   -- a family whose designators its digits do not spell (handlers_other ask_variant): its name and their pattern
   variant_designators = { ["220"] = { name = "A220", pattern = "^BCS%d$" } },
   all = { "all", "both", "every", "everything" },
@@ -1734,10 +1753,18 @@ return {
                     words = { "sure", "certain" },
                     complements = { "which", "whether", "if", "that", "that's", "it", "it's", "this", "how", "why",
                                     "what", "whichever" } },
-          while_words = { "while", "whilst" },
+          -- (and the time or purpose of the speaker's own doing after an instruction: "want CD running before I ff",
+          -- "switch CD on before we pause", "save it so I can rerun", "pause until we're ready")
+          while_words = { "while", "whilst", "before", "until", "till", "so" },
           -- the audience of a demonstration addressed in a sentence of its own ("Class, is that toward the bottom of
           -- the screen?", "Guess first, kids!"): such a sentence, a question too, is a remark to them (G:remark_sentence)
           audience = { "kids", "class", "guys", "students", "folks", "children", "everybody", "everyone" },
+          -- an instructor's word to the audience on what an instruction shows, after a comma or "and" that follows
+          -- it (", watch the trend arrow", "and notice the label counting down", ", see how steep that is"): one of
+          -- `perception` then one of `perceived` (G:perceived), naming no aircraft, place or value
+          perception = { "watch", "see", "notice", "look", "observe" },
+          perceived = { "the", "how", "what", "that", "it", "him", "her", "them", "at", "its", "his", "their", "where",
+                        "as" },
           -- the same action described after a complete instruction, in an instructor's words (", give him a proper
           -- vector off", ", give her a decent climb"): one of `restate_verbs`, a pronoun and a noun of the kind of an
           -- instruction said before it (`restated`, by the intent); set aside when the clause is commentary, else asked
@@ -2246,6 +2273,11 @@ return {
     { what = "approach clearances", words = "intercept established join",
       near = { "localizer", "localiser", "glideslope", "ils", "final", "visual" } },
     { what = "altimeter settings", words = "altimeter qnh qfe", one_value = true },
+    -- "save the state so I can rerun", "save the scenario": a snapshot of the run written out (BlueSky's SAVEIC),
+    -- which squawk has no command for ("save fuel" saves no state)
+    { what = "saving the simulation's state", words = "save saving", near = { "state", "scenario", "sim",
+      "simulation", "snapshot", "situation", "traffic", "everything", "progress", "setup" }, window = 3,
+      through = "state scenario sim simulation" },
     -- ("..., radar service terminated", "radar services limited": the service the controller gives, told the pilot)
     { what = "radar services", words = "service services", near = { "terminated", "terminating", "limited", "radar" },
       window = 2 },
@@ -2708,7 +2740,9 @@ return {
     sousand = "thousand", lefel = "level", hetting = "heading", hedding = "heading", sirty = "thirty",
     tventy = "twenty", kebec = "quebec", yuliett = "juliett", tsulu = "zulu",
     sero = "zero", seben = "seven", leber = "level", lebel = "level", headin = "heading", espeed = "speed",
-    tirty = "thirty", altitud = "altitude", tousan = "thousand" },
+    tirty = "thirty", altitud = "altitude", tousan = "thousand",
+    -- (French: "eading", "sen" and "zen" for "then"; Italian and Greek: "eding", "fligh level")
+    eading = "heading", sen = "then", zen = "then", eding = "heading", fligh = "flight" },
   heard_as = {
     { heard = { "write", "rite", "wright" }, means = "right",
       before = { "heading", "hdg", "turn" }, after = { "turn" } },
@@ -3355,10 +3389,13 @@ return {
       -- (an Italian controller's "scusi" between two values is the correction's "sorry": "turn right heading 360,
       -- scusi, 340"; "un attimo" a moment; "riprendiamo" the run resumed)
       scusi = "sorry", scusate = "sorry", ["mi scusi"] = "sorry", ["un attimo"] = "one moment",
-      ["un momento"] = "one moment", riprendiamo = "resume", riprendi = "resume" },
+      ["un momento"] = "one moment", riprendiamo = "resume", riprendi = "resume",
+      -- ("descenda livello one six zero": the level; "livello di volo" the flight level)
+      livello = "level", ["livello di volo"] = "flight level" },
     shared = { ["velocità"] = true, velocita = true, prua = true, poi = true, ["e poi"] = true, scusa = true,
       scusami = true, allora = true, ["sì"] = true, si = true, ["va bene"] = true, scusi = true, scusate = true,
-      ["mi scusi"] = true, ["un attimo"] = true, ["un momento"] = true, riprendiamo = true, riprendi = true },
+      ["mi scusi"] = true, ["un attimo"] = true, ["un momento"] = true, riprendiamo = true, riprendi = true,
+      livello = true, ["livello di volo"] = true },
     joining = {},
   },
   },

@@ -828,6 +828,9 @@ local names = {
     { "psa", "JIA" },  -- (PSA Airlines, telephony Blue Streak)
     { "expressjet", "ASQ" },  -- (ExpressJet, telephony Acey)
     { "express jet", "ASQ" },
+    { "airblue", "ABQ" },  -- (telephony Pakblue)
+    { "baltic", "BTI" },  -- (airBaltic, telephony Air Baltic)
+    { "air blue", "ABQ" },
     { "qatar airways", "QTR" },
     { "qatar", "QTR" },
     { "cathay pacific", "CPA" },

@@ -996,6 +996,10 @@ return function(intent, rule, words)
       and not g:has_ref(1, #g.t + 1, "aircraft")
   end }
   rule { "faster", "dtmult", near = { 4, "times x" }, when = function(g) return not g:has_ref(1, #g.t + 1, "aircraft") end }
+  -- ("..., when you slow to two five zero proceed direct SUMMA", "once it slows to 250 ..."): the verb of a condition's
+  -- subject, what the condition waits for, no instruction
+  rule { "slow slows accelerate accelerates decelerate decelerates", false, prev = { 1, "you it he she they" },
+         when = function(g, i) return g:word(i - 2, "when once after") end }
   rule { "slow slower faster accelerate decelerate", "spd" }
   -- "once it's level, bump it to 280 knots", "crank it up to Mach .80": an informal verb of changing a value
   -- (lexicon.informal_value_verbs) with a speed's unit or "Mach" within five words after it is a speed; with no
@@ -1927,7 +1931,8 @@ return function(intent, rule, words)
     for _, r in ipairs(g:refs_in(math.max(1, k - 2), k + 1, "waypoint")) do
       if r.e == k + 1 then w = r end
     end
-    if not w then return false end
+    -- ("at OUTW delete SAS1417": the place after "at" is where the deletion waits, no waypoint deleted)
+    if not w or g:word(w.b - 1, "at over passing reaching overhead") then return false end
     return on_a_route(g, w)
   end }
   -- "erase BARSA of the route", "I want to quit LALPI of its route" ("quitar" / "tirar", a Spanish or Portuguese
@@ -2629,13 +2634,17 @@ return function(intent, rule, words)
     return (k < e or (n < e and g:word_in(i + 1, n, "going heading headed off flying"))) and g:has_ref(i + 1, e, "aircraft")
       and #g:quantities(i, #g.t + 1) == 0
   end }
-  -- "where is the Air Portugal going?", "where's TAP447 headed to": the destination asked, not the
-  -- position; the question opens the request and ends with its verb ("where is UAL57 going to cross
-  -- GIPNO?" and "too high for where it's going" are no such question)
-  rule { "where where's wheres", "dest", when = function(g, i)
+  -- "where is the Air Portugal going?", "where's TAP447 headed to", "Easy 89QP, where's he going?": where it
+  -- goes asked, not the position: its route, which ends at its destination (writers read DEST, LISTRTE or POS;
+  -- LISTRTE answers every one); the question opens the request, or follows the aircraft alone, and ends with its
+  -- verb ("where is UAL57 going to cross GIPNO?" and "too high for where it's going" are no such question)
+  rule { "where where's wheres", "listrte", when = function(g, i)
     local e = math.min(#g.t + 1, i + 7)
     local k = g:find_word(i + 1, e, "going headed bound")
-    if k == e or g:skip_fillers(1) ~= i then return false end
+    local first = g:skip_fillers(1)
+    local r = g:refs_in(first, first + 1, "aircraft")[1]
+    local after = r and r.b == first and g:skip_fillers(g.t[r.e] and g.t[r.e].text == "," and r.e + 1 or r.e)
+    if k == e or (first ~= i and after ~= i) then return false end
     if g:word(k + 1, "to") then k = k + 1 end
     return g.t[k + 1] == nil or g.t[k + 1].kind == "punct"
   end }
@@ -2849,7 +2858,7 @@ return function(intent, rule, words)
   -- ("please help me check speed of Nok Air 315": a verb of looking at the state, the same)
   -- ("say me please the speed of X", "give me the vertical speed of X": "say" too, a courtesy before the noun,
   -- the vertical or ground speed)
-  rule { "provide give tell report check say", "pos", when = function(g, i) return state_asked(g, i) ~= nil end }
+  rule { "provide give tell report check say query", "pos", when = function(g, i) return state_asked(g, i) ~= nil end }
   -- "I need the position of TAP1017": the same wanted, when the clause ends with the aircraft (not "I want
   -- the position of TAP1017 changed")
   rule { "need want require", "pos", when = function(g, i)
@@ -2858,7 +2867,8 @@ return function(intent, rule, words)
     local k = g:skip_fillers(r.e)
     return k > #g.t or g.t[k].kind == "punct"
   end }
-  rule { "position", "pos", prev = { 4, "show display see look log record dump" } }  -- "show me BAW87L's position"
+  -- "show me BAW87L's position", "query DLH9KM's position"
+  rule { "position", "pos", prev = { 4, "show display see look log record dump query" } }
   -- "show Cyprus seven one six position": a callsign of spoken digits between the verb and the noun
   rule { "position", "pos", prev = { 12, "show display" }, when = function(g, i)
     for _, r in ipairs(g:refs_in(math.max(1, i - 10), i, "aircraft")) do
@@ -3193,6 +3203,8 @@ return function(intent, rule, words)
   rule { "confirm", "pos", near = { 3, "heading altitude level speed mach" } }
   -- ("Ethiopian 3802 confirm your position": the report of where it is)
   rule { "confirm", "pos", next = "your", near = { 2, "position" } }
+  -- ("Air India 181, your position confirm", "position confirm": the noun before it, closing the request)
+  rule { "confirm", "pos", prev = { 1, "position" }, when = function(g, i) return g:skip_fillers(i + 1) > #g.t end }
   -- "verify AC002 state (alt, spd, hdg)", "verify its altitude": the aircraft's values asked for
   rule { "verify", "pos", near = { 3, "state heading altitude level speed mach alt spd hdg fl position" } }
   -- "say altitude", "report your heading": a question about the aircraft's state (POS of the

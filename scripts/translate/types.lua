@@ -679,6 +679,14 @@ function M.short_singular(text, built, families)
     if verb and CREATING[verb] then return des end
     local verb2 = low:match("(%a+)%s+%a+%d+%w*,?%s+$")
     if verb2 and CREATING[verb2] and tonumber(d) > 360 then return des end
+    -- ("create RYR4TQ a 738 ...", "create a Ryanair, RYR4TQ, 738, ..."): the new callsign straight before, after a
+    -- verb of creating earlier in the clause; with an article between, or above 360
+    local head, article = low:match("^(.-)%f[%w]%a+%d+%w*,?%s+(a?n?)%s*$")
+    if head and (article == "" or article == "a" or article == "an") and (article ~= "" or tonumber(d) > 360) then
+      for w in (head:match("[^.;:!?]*$")):gmatch("%a+") do
+        if CREATING[w] then return des end
+      end
+    end
     return nil
   end))
 end
