@@ -1474,21 +1474,24 @@ local function self_corrections(text)
     -- values of as many digits, the first after a value's word, the second ending its clause with no unit: the
     -- second said in place of the first, G.hesitant_value)
     marked = marked or (j > k and G.hesitant_value(toks, k, j))
+    -- (another aircraft and its own instruction in place, after a mark: "descend FL270, sorry, I meant IBE3170
+    -- descend FL170", "direct ARTIP, sorry, I meant Speedbird 432 direct ARTIP": a callsign typed, or a word and a
+    -- number, then a verb; not after words that take back all said, "never mind": G.withdrawn_sentences)
+    local instructed = false
+    for x = 1, k - 1 do instructed = instructed or G.refusable[toks[x].bare] ~= nil or not not value(toks[x]) end
+    local another = marked and not dropping and instructed and nxt and said == nxt and toks[k - 1]
+      and toks[k - 1].raw:match("[,;.]$")
+      and ((nxt.raw:match("^%a%a%a?%d%w*%p?$") and toks[j + 1] and G.refusable[toks[j + 1].bare])
+        or (toks[j + 1] and toks[j + 1].raw:match("^%d%w*%p?$") and toks[j + 2] and G.refusable[toks[j + 2].bare]))
     if j > k and marked and not refused and not (dropping and after[nxt and nxt.bare or ""] and not SIDES[nxt.bare])
         and not (dropping and not toks[j - 1].raw:match("%p$") and not G.valued_words_before(toks, k))
         and not (toks[k - 2] and toks[k - 2].bare == "not" and G.apology[toks[k].bare])
-        and (value(toks[k - 1]) or (toks[k - 1] and SIDES[toks[k - 1].bare]) or position
+        and (value(toks[k - 1]) or (toks[k - 1] and SIDES[toks[k - 1].bare]) or position or another
           -- ("climb FL290 please, no, I wanted FL300": "please" or "kindly" after the value taken back)
           or (toks[k - 1] and (toks[k - 1].bare == "please" or toks[k - 1].bare == "kindly") and value(toks[k - 2])))
         and nxt
         and (said.bare:match("^%a?%a?%.?%d") or NUMBER_WORDS[said.bare] or after[said.bare] or position
-          -- (another aircraft and its own instruction in place: "descend FL270, sorry, I meant IBE3170 descend
-          -- FL170", "..., no, Speedbird 432 direct ARTIP": a callsign typed, or a word and a number, then a verb)
-          -- (not after words that take back all said, "never mind": G.withdrawn_sentences)
-          or (not dropping and said == nxt and said.raw:match("^%a%a%a?%d%w*%p?$") and toks[j + 1]
-            and G.refusable[toks[j + 1].bare])
-          or (not dropping and said == nxt and toks[j + 1] and toks[j + 1].raw:match("^%d%w*%p?$") and toks[j + 2]
-            and G.refusable[toks[j + 2].bare])
+          or another
           -- (a Mach number said in words: "point seven eight, sorry, point seven nine")
           or ((said.bare == "point" or said.bare == "decimal") and toks[j + 1] and DIGIT_WORDS[toks[j + 1].bare])) then
       put(toks[k].at, ", correction, ", nxt.at)

@@ -559,6 +559,9 @@ return {
         -- (the traffic a workload study brings in by waves, its conditions with and without the resolver: "create the
         -- second wave aircraft EZY39GH ...", "phase 2 is the assisted condition")
         "wave", "waves", "assisted", "unassisted",
+        -- (a reinforcement-learning evaluation's runs and models: "seed 42 so rollouts are reproducible", "new ep:
+        -- seed 7", "policy v3 ckpt 2000")
+        "rollout", "rollouts", "ep", "eps", "episodes", "checkpoint", "ckpt", "policy", "eval",
         -- a part of the airspace a study is run in ("for the terminal area trials")
         "terminal", "en-route", "enroute",
         -- an incident investigation's reconstruction and its narration of what was cleared ("an additional
@@ -1793,6 +1796,7 @@ return {
           -- capitals or with digits), and nothing else up to the full stop or colon
           study_labels = { "exp", "expt", "experiment", "run", "trial", "session", "block", "condition", "cond",
                            "scenario", "scen", "case", "batch", "series", "phase", "episode", "test", "config",
+                           "rollout", "ep",
                            "participant", "subject", "iteration", "rep", "replication", "day", "serial", "step",
                            "part",
                            -- (a report's parts, "as I need it for the figure in section 2")

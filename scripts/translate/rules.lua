@@ -2450,7 +2450,8 @@ return function(intent, rule, words)
     while g:word(k, "me us please") or (g.t[k] and g.t[k].filler) do k = k + 1 end
     return g.t[k] == nil or (g.t[k].kind == "punct" and g.t[k].text ~= ",")
   end }
-  rule { "route rte routing waypoints", "listrte", prev = { 4, "show list display what print see look where check" } }
+  -- ("dump the route for speedbird 432", "dump ryanair 82MN route": a programmer's "dump" is "show")
+  rule { "route rte routing waypoints", "listrte", prev = { 4, "show list display what print see look where check dump" } }
   -- ("EIN112 wpts?", "KLM12 route?": the route's noun asked about straight after an aircraft flying, nothing else)
   rule { "route rte routing waypoints wpts", "listrte", when = function(g, i)
     local a = g:refs_in(1, i, "aircraft")
@@ -3714,7 +3715,10 @@ return function(intent, rule, words)
   end }
   -- "put a note in the log: conflict 3 injected", "log: run 2 started", "write a message for the participant:
   -- Block 1 finished": the text after the colon
+  -- ("log 'policy v3 ckpt 2000'", "note 'ep7 terminal: LoS=0'": the text quoted straight after the word; "write the
+  -- message 'climb'" says no place it goes: asked)
   rule { "note comment log message", "echo", when = function(g, i)
+    if g.t[i + 1] ~= nil and g.t[i + 1].kind == "quoted" and not g:word(i, "message") then return true end
     for k = i + 1, math.min(#g.t, i + 4) do
       if g.t[k].kind == "punct" and g.t[k].text == ":" then return k < #g.t end
     end

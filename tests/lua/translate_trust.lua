@@ -23613,3 +23613,14 @@ do
   check_eq(ex("baw8ck whn spd 250 climb fl260"), "ATSPD BAW8CK 250 ALT BAW8CK FL260")
   check_eq(ex("pause the sim please, short break"), "HOLD")
 end
+
+-- Cycle 78 (R389): a reinforcement-learning evaluation's jargon: "log '...'" and "note '...'" with the text quoted,
+-- "dump the route", "rollout 2:" as a run's label, "seed 42 so rollouts are reproducible"
+do
+  local _, ex = scene({ "CRE BAW432 A320 52 4 090 FL200 280" })
+  check_eq(ex("log 'policy v3 ckpt 2000'"), "ECHO policy v3 ckpt 2000")
+  check_eq(ex("episode done, note 'ep7 terminal: LoS=0'"), "ECHO ep7 terminal: LoS=0")
+  check_eq(ex("dump the route for speedbird 432"), "LISTRTE BAW432")
+  check_eq(ex("rollout 2: seed 1234, CD on, reso mvp"), "SEED 1234 ; ASAS ON ; RESO MVP")
+  check_eq(ex("seed 42 so rollouts are reproducible"), "SEED 42")
+end
