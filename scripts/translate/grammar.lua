@@ -6433,7 +6433,34 @@ local function level_feet(text)
   local fl = text:match("^FL(%d+)$")
   return fl and tonumber(fl) * 100 or tonumber(text)
 end
+-- "when passing FL220, reduce speed 250 knots, descend FL140" at FL250, level: the descent said after the condition
+-- would wait for a level only that descent crosses, and never run. An ATALT whose command is its own aircraft's level
+-- change past the condition's level, the aircraft flying level with no other level change in the request, beside
+-- another instruction waiting for the same level, is that change now ("ALT id X" first); the condition keeps what
+-- else waits for it. Alone ("descend FL240 once it reaches FL260") it stands as said.
+function G:clearance_waiting_on_itself()
+  for c, line in ipairs(self.out) do
+    local id, at, who, to = line:match("^ATALT (%S+) (%S+) ALT (%S+) (%S+)$")
+    local a = id and who:upper() == id:upper() and self:state(id)
+    local level, target = at and level_feet(at), to and level_feet(to)
+    if a and a.alt_ft and level and target and (not a.sel_alt_ft or math.abs(a.sel_alt_ft - a.alt_ft) <= 50)
+        and (level - a.alt_ft) * (target - level) > 0 and math.abs(level - a.alt_ft) > 50 then
+      local beside = false
+      for _, other in ipairs(self.out) do
+        local w = other:match("^ALT (%S+) ")
+        if w and w:upper() == id:upper() then return end
+        beside = beside or (other ~= line and other:sub(1, #("ATALT " .. id .. " " .. at .. " ")) == "ATALT " .. id .. " " .. at .. " ")
+      end
+      if not beside then return end
+      table.remove(self.out, c)
+      table.insert(self.out, 1, "ALT " .. who .. " " .. to)
+      return
+    end
+  end
+end
+
 function G:level_never_crossed()
+  self:clearance_waiting_on_itself()
   for _, line in ipairs(self.out) do
     local id, at = line:match("^ATALT (%S+) (%S+) ")
     local a, level = id and self:state(id), at and level_feet(at)
@@ -6850,6 +6877,17 @@ function G:condition()
     -- ("when the Swiss is 10 miles from Munich airport": a place said by its name, near the aircraft)
     local place = r and r.name or (from and self:place_by_name(from, comma, self:state(self.subject), true))
     if place then return "ATDIST " .. self.subject .. " " .. place .. " " .. f.num(q.value), rest end
+    -- ("once the Emirates is level at 120, slow it to 250": a bare number of 10 to 600 after "level" is a flight level)
+    if q.kind == "plain" and q.value >= 10 and q.value <= 600 and q.value % 1 == 0
+        and (self:word(q.b - 1, "level") or (self:word(q.b - 1, "at") and self:word(q.b - 2, "level"))) then
+      return "ATALT " .. self.subject .. " " .. f.alt(q.value * 100, true), rest
+    end
+  end
+  -- ("once the Lufthansa is level, speed it up to 300", "when you're level ..."): "level" and no value is the level
+  -- the aircraft climbs or descends to now; one flying level has none to reach (asked)
+  local a = #self:quantities(i, comma) == 0 and self:word_in(i, comma, "level levelled leveled") and self:state(self.subject)
+  if a and a.alt_ft and a.sel_alt_ft and math.abs(a.sel_alt_ft - a.alt_ft) > 50 then
+    return "ATALT " .. self.subject .. " " .. f.alt(a.sel_alt_ft, a.sel_alt_ft >= 10000), rest
   end
   self.ask = "At what altitude or speed should " .. self.subject .. " act?"
   return nil, rest

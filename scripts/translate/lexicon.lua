@@ -180,8 +180,9 @@ return {
         -- the same in Spanish and Portuguese, where instructors teach in English ("chicos, look:", "ok pessoal")
         "chicos", "chicas", "muchachos", "alumnos", "estudiantes", "amigos", "pessoal", "galera", "alunos",
         "turma",
-        -- a person addressed with respect, as Indian controllers do ("sir where is IFLY 2171 showing")
-        "sir", "madam", "ma'am",
+        -- a person addressed with respect, as Indian controllers do ("sir where is IFLY 2171 showing"; Hindi "ji"
+        -- closing a request, "pause the simulation ji")
+        "sir", "madam", "ma'am", "ji",
         -- a friend addressed in chat ("how fast are you going mate", typed "m8")
         "mate" },
     -- chat shorthand and interjections of typed notes ("what's ryanair doing rn", "lol", "ugh", "thx")
@@ -562,6 +563,8 @@ return {
         -- (a reinforcement-learning evaluation's runs and models: "seed 42 so rollouts are reproducible", "new ep:
         -- seed 7", "policy v3 ckpt 2000")
         "rollout", "rollouts", "ep", "eps", "episodes", "checkpoint", "ckpt", "policy", "eval",
+        -- (a student's coursework a request is made for: "for my homework exercise I need ...")
+        "homework", "coursework", "assignment", "lecturer", "tutor",
         -- a part of the airspace a study is run in ("for the terminal area trials")
         "terminal", "en-route", "enroute",
         -- an incident investigation's reconstruction and its narration of what was cleared ("an additional
@@ -2746,7 +2749,9 @@ return {
     sero = "zero", seben = "seven", leber = "level", lebel = "level", headin = "heading", espeed = "speed",
     tirty = "thirty", altitud = "altitude", tousan = "thousand",
     -- (French: "eading", "sen" and "zen" for "then"; Italian and Greek: "eding", "fligh level")
-    eading = "heading", sen = "then", zen = "then", eding = "heading", fligh = "flight" },
+    eading = "heading", sen = "then", zen = "then", eding = "heading", fligh = "flight",
+    -- (Indian and Sri Lankan: "wan" for one, "nayner", "clime", "fly-level")
+    wan = "one", nayner = "niner", clime = "climb", ["fly-level"] = "flight level" },
   heard_as = {
     { heard = { "write", "rite", "wright" }, means = "right",
       before = { "heading", "hdg", "turn" }, after = { "turn" } },
@@ -2756,6 +2761,8 @@ return {
     { heard = { "lift", "loft", "laughed" }, means = "left", after = { "turn" } },
     { heard = { "the send", "this end", "the scent", "decent", "dissent" }, means = "descend",
       before = { "#number", "flight", "level", "altitude", "to" } },
+    -- ("descent fly-level wan zero zero": the noun heard for the verb before a flight level)
+    { heard = { "descent" }, means = "descend", before = { "flight", "fly-level" } },
     { heard = { "head in", "heading's" }, means = "heading", before = { "#number" } },
     -- ("show me the root": the route as a recogniser writes it, after its determiner)
     { heard = { "root" }, means = "route", after = { "the", "your", "its", "his", "her", "their" } },

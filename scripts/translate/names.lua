@@ -31,6 +31,7 @@ local names = {
     { "navy", "NAVY" },
     { "ascot", "RRR" },  -- (Royal Air Force transport)
     { "rafair", "RFR" },
+    { "tartan", "TARTN" },  -- (Royal Air Force tankers: a callsign of five letters, "Tartan 41" TARTN41)
     { "cotam", "CTM" },  -- (French Air and Space Force transport)
     { "canforce", "CFC" },
     { "aussie", "ASY" },  -- (Royal Australian Air Force)

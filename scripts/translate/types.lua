@@ -681,7 +681,13 @@ function M.short_singular(text, built, families)
     if verb2 and CREATING[verb2] and tonumber(d) > 360 then return des end
     -- ("create RYR4TQ a 738 ...", "create a Ryanair, RYR4TQ, 738, ..."): the new callsign straight before, after a
     -- verb of creating earlier in the clause; with an article between, or above 360
+    -- (or said as the airline's word and the number, a comma and the article after it: "create Ryanair 1HN, a 738,
+    -- ..."; "Dash 8 400" is the type's own name)
     local head, article = low:match("^(.-)%f[%w]%a+%d+%w*,?%s+(a?n?)%s*$")
+    if not head then head, article = low:match("^(.-)%f[%w]%a+%s+%d%w*,%s+(an?)%s*$") end
+    -- (a flight level or a designator before it is no callsign: "at FL160 400", "A320 321")
+    local said_before = low:match("%f[%w](%a+%d+%w*),?%s+a?n?%s*$")
+    if said_before and (said_before:match("^fl%d") or built.known[said_before:upper()]) then head = nil end
     if head and (article == "" or article == "a" or article == "an") and (article ~= "" or tonumber(d) > 360) then
       for w in (head:match("[^.;:!?]*$")):gmatch("%a+") do
         if CREATING[w] then return des end

@@ -23624,3 +23624,33 @@ do
   check_eq(ex("rollout 2: seed 1234, CD on, reso mvp"), "SEED 1234 ; ASAS ON ; RESO MVP")
   check_eq(ex("seed 42 so rollouts are reproducible"), "SEED 42")
 end
+
+-- Cycle 78 (R393): a recogniser's English from Indian and Sri Lankan accents ("wan", "nayner", "clime",
+-- "fly-level", "descent" before a flight level) and the Hindi "ji" of respect closing a request
+do
+  local _, ex = scene({ "CRE AIC101 A320 28 77 090 FL200 280", "CRE IGO234 A20N 28.2 77.2 090 FL100 250" })
+  check_eq(ex("air india wan zero wan descent fly-level wan zero zero"), "ALT AIC101 FL100")
+  check_eq(ex("achha ifly two tree four clime fly-level wan fife zero"), "ALT IGO234 FL150")
+  check_eq(ex("ifly two three four turn left hedding two nayner zero"), "HDG IGO234 290 LEFT")
+  check_eq(ex("pause the simulation ji"), "HOLD")
+  check_eq(ex("AIC101 expedite descent flight level 100"), "ALT AIC101 FL100")
+end
+
+-- Cycle 78 (R391, R394): "when passing FL220, reduce speed 250 knots, descend FL140" at FL250, level, made the descent
+-- wait for FL220, which only that descent crosses: it never ran (the descent is given now, the speed waits);
+-- "Tartan 41" (a callsign of five letters); "once the Lufthansa is level" is the level it is cleared to; "level at
+-- 120" is FL120; "a 738" after "Ryanair 1HN,"
+do
+  local _, ex = scene({ "CRE BAW2LM A320 51 0 090 FL250 280", "CRE TARTN41 A332 56 -3 090 FL300 300",
+    "CRE DLH4AX A321 52.8 4.5 180 FL310 280", "ALT DLH4AX FL200", "CRE UAE45 B77W 50 8 090 FL200 300" })
+  check_eq(ex("Speedbird 2LM, when passing flight level two two zero, reduce speed two five zero knots, descend "
+    .. "flight level one four zero"), "ALT BAW2LM FL140 ; ATALT BAW2LM FL220 SPD BAW2LM 250")
+  check_eq(ex("BAW2LM descend FL230, when passing FL220 descend FL140"),
+    "ASK I have ALT BAW2LM FL230 ; ATALT BAW2LM FL220 ALT BAW2LM FL140. BAW2LM is at FL250 and cleared to FL230: it "
+    .. "will not pass FL220, so what waits for that level would never run. Which level should it wait for?")
+  check_eq(ex("Tartan four one, climb flight level three two zero"), "ALT TARTN41 FL320")
+  check_eq(ex("once the Lufthansa is level, speed it up to 300"), "ATALT DLH4AX FL200 SPD DLH4AX 300")
+  check_eq(ex("once the Emirates is level at 120, slow it to 250"), "ATALT UAE45 FL120 SPD UAE45 250")
+  check_eq(ex("create Ryanair 1HN, a 738, at 53 N 6 W, heading 270, 9000 feet, 250 knots"),
+    "CRE RYR1HN B738 53 -6 270 9000 250")
+end
