@@ -74,6 +74,7 @@ local names = {
     { "klm city", "KLC" },
     { "orange", "TFL" },  -- (TUI fly Netherlands)
     { "corendon", "CAI" },  -- (Corendon Airlines)
+    { "touristic", "CAI" },  -- (Corendon Airlines' telephony)
     { "dutch corendon", "CND" },  -- (Corendon Dutch Airlines)
     { "eurowings", "EWG" },
     { "condor", "CFG" },
@@ -818,6 +819,7 @@ local names = {
     { "wizz", "WZZ" },
     { "jetairfly", "JAF" },  -- (TUI fly Belgium, telephony Beauty)
     { "tui", "TOM" },
+    { "tuifly", "TUI" },  -- (TUIfly, Germany, telephony TUIjet)
     { "norwegian", "NAX" },
     { "cityhopper", "KLC" },
     { "klm cityhopper", "KLC" },

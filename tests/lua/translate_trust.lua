@@ -23654,3 +23654,10 @@ do
   check_eq(ex("create Ryanair 1HN, a 738, at 53 N 6 W, heading 270, 9000 feet, 250 knots"),
     "CRE RYR1HN B738 53 -6 270 9000 250")
 end
+
+-- Cycle 78 (R395, R396): Corendon's telephony "Touristic" and TUIfly by name
+do
+  local _, ex = scene({ "CRE CAI7NG B738 52 4 270 FL300 280", "CRE TUI4KB B738 50 8 090 FL200 280" })
+  check_eq(ex("Touristic seven november golf turn left by twenty degrees"), "HDG CAI7NG 250 LEFT")
+  check_eq(ex("the TUIfly, climb FL240"), "ALT TUI4KB FL240")
+end
