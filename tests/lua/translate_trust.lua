@@ -23661,3 +23661,13 @@ do
   check_eq(ex("Touristic seven november golf turn left by twenty degrees"), "HDG CAI7NG 250 LEFT")
   check_eq(ex("the TUIfly, climb FL240"), "ALT TUI4KB FL240")
 end
+
+-- Cycle 78 (R394): a speed reached as a condition, said bare after "down to" as after "at" ("speed 180, then when
+-- you're down to 180 descend"); one other than the speed given stays asked (R394 expects "speed up to 290 and once
+-- you're at 280 climb" read; cycle 57's decision: a speed never given may be a slip)
+do
+  local _, ex = scene({ "CRE CFG1KW B753 49.4 8.0 045 FL100 250", "CRE EIN3KR A320 53 -6 090 9000 220" })
+  asked(ex("Condor 1KW speed up to 290 and once you're at 280 climb FL250"), "a speed never given")
+  check_eq(ex("Shamrock 3KR, speed 180, then when you're down to 180 descend 4000 feet"),
+    "SPD EIN3KR 180 ; ATSPD EIN3KR 180 ALT EIN3KR 4000")
+end
