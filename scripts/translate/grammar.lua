@@ -200,7 +200,8 @@ local function know_all(v, seen)
   -- lexicon.judged_values, kept_from and speed_direction_verbs only where their pass reads them, lexicon.wish_evaluative
   -- and wish_negation only in a wish framed before "if", same_given and same_compared only beside "same", lexicon.ml_labels
   -- only where dropped; lexicon.remark_not and named_position_leads only where their pass reads them, and
-  -- lexicon.french_in_english only where G.french_in_english reads a number or "and": they never
+  -- lexicon.french_in_english only where G.french_in_english reads a number or "and", lexicon.digit_words only
+  -- where a number is read: they never
   -- make a word said elsewhere known)
   if type(v) ~= "table" or seen[v] or v == lexicon.accounted.courtesy_phrases or v == lexicon.accounted.value_phrases
       or v == lexicon.typed_abbreviations
@@ -220,7 +221,8 @@ local function know_all(v, seen)
       or v == lexicon.remark_not or v == lexicon.named_position_leads
       or v == lexicon.listener_address or v == lexicon.judged_values or v == lexicon.kept_from or v == lexicon.ml_labels
       or v == lexicon.speed_direction_verbs or v == lexicon.wish_evaluative or v == lexicon.wish_negation
-      or v == lexicon.same_given or v == lexicon.same_compared or v == lexicon.french_in_english then
+      or v == lexicon.same_given or v == lexicon.same_compared or v == lexicon.french_in_english
+      or v == lexicon.digit_words then
     return
   end
   seen[v] = true
@@ -1018,15 +1020,14 @@ end
 
 -- Self-corrections said in words (lexicon.self_correction) become the word "correction", which the
 -- value handlers read: "reduce 270, no wait, 260" is "reduce 270 , correction , 260".
-local DIGIT_WORDS = set_of({ "zero", "oh", "one", "two", "three", "four", "five", "six", "seven", "eight", "nine",
-  "niner", "tree", "fife", "fower" })
+-- a digit said as a word (as ATC says it, "oh" and the radiotelephony forms too) -> the digit
+local SAID_DIGIT = { zero = "0", oh = "0", one = "1", two = "2", three = "3", tree = "3", four = "4", fower = "4",
+  five = "5", fife = "5", six = "6", seven = "7", eight = "8", nine = "9", niner = "9" }
 local UNIT_WORDS = set_of({ "feet", "ft", "knots", "knot", "kts", "kt", "degrees" })
 local SIDES = set_of({ "left", "right" })
 -- "descend three thousand five hundred on one zero zero four", "3500 ft on 1004": "on" and a pressure of 950 to 1050
 -- hPa, four digits said singly or typed, closing its clause after an altitude in feet, is the QNH it is flown on (UK
 -- radiotelephony), named as not simulated as "QNH 1004" is
-G.QNH_DIGITS = { zero = "0", oh = "0", one = "1", two = "2", three = "3", four = "4", five = "5", six = "6",
-  seven = "7", eight = "8", nine = "9", niner = "9", tree = "3", fife = "5", fower = "4" }
 function G.qnh_on(text)
   local low = text:lower()
   if not (low:find(" on ", 1, true) and (low:find("thousand", 1, true) or low:find("hundred", 1, true)
@@ -1038,7 +1039,7 @@ function G.qnh_on(text)
     local digits = said:match("^%d%d%d%d?$")
     if not digits then
       local out = {}
-      for w in said:gmatch("%S+") do out[#out + 1] = G.QNH_DIGITS[w:lower()] or "x" end
+      for w in said:gmatch("%S+") do out[#out + 1] = SAID_DIGIT[w:lower()] or "x" end
       digits = table.concat(out)
     end
     local hpa = digits:match("^%d+$") and (#digits == 4 or #digits == 3) and tonumber(digits)
@@ -1493,7 +1494,7 @@ local function self_corrections(text)
         and (said.bare:match("^%a?%a?%.?%d") or NUMBER_WORDS[said.bare] or after[said.bare] or position
           or another
           -- (a Mach number said in words: "point seven eight, sorry, point seven nine")
-          or ((said.bare == "point" or said.bare == "decimal") and toks[j + 1] and DIGIT_WORDS[toks[j + 1].bare])) then
+          or ((said.bare == "point" or said.bare == "decimal") and toks[j + 1] and SAID_DIGIT[toks[j + 1].bare])) then
       put(toks[k].at, ", correction, ", nxt.at)
       k = j
     else
@@ -2079,9 +2080,6 @@ local function hyphened_types(text)
 end
 
 local HEMISPHERES = set_of({ "north", "south", "east", "west", "n", "s", "e", "w" })
--- a digit said as a word (as ATC says it) -> the digit
-local SAID_DIGIT = { zero = "0", oh = "0", one = "1", two = "2", three = "3", tree = "3", four = "4", fower = "4",
-  five = "5", fife = "5", six = "6", seven = "7", eight = "8", nine = "9", niner = "9" }
 
 -- A position typed in degrees and minutes whose minutes are 60 or more ("N55 75 W003 20", "51 75N",
 -- "55 degrees 75 north", "59 deg 65 min N"): its text, else nil. Such a position is asked about, never
@@ -2129,20 +2127,20 @@ local function value_homophones(text)
     local w = bare[k]
     if VALUE_ANCHORS[w] and not toks[k]:match("%p$") then
       local j, said, heard = k + 1, 0, {}
-      while j <= k + 3 and bare[j] and (DIGIT_WORDS[bare[j]] or H[bare[j]]) do
-        if DIGIT_WORDS[bare[j]] then said = said + 1 elseif not (j == k + 1 and H[bare[j]] == "two") then heard[#heard + 1] = j end
+      while j <= k + 3 and bare[j] and (SAID_DIGIT[bare[j]] or H[bare[j]]) do
+        if SAID_DIGIT[bare[j]] then said = said + 1 elseif not (j == k + 1 and H[bare[j]] == "two") then heard[#heard + 1] = j end
         if toks[j]:match("%p$") then j = j + 1; break end
         j = j + 1
       end
       local after = bare[j]
-      if j == k + 4 and said >= 1 and #heard > 0 and not (after and (DIGIT_WORDS[after] or H[after] or RUN_ENDS[after]
+      if j == k + 4 and said >= 1 and #heard > 0 and not (after and (SAID_DIGIT[after] or H[after] or RUN_ENDS[after]
           or after:match("^%d"))) then
         for _, h in ipairs(heard) do convert[h] = true end
       end
       -- ("flight level won hundred": one such word, not "to", then "hundred" and no digit after: FL100)
       local last = bare[k + 3]
       if H[bare[k + 1] or ""] and bare[k + 1] ~= "to" and bare[k + 2] == "hundred" and not toks[k + 1]:match("%p$")
-          and not (last and (DIGIT_WORDS[last] or H[last] or RUN_ENDS[last] or last:match("^%d"))) then
+          and not (last and (SAID_DIGIT[last] or H[last] or RUN_ENDS[last] or last:match("^%d"))) then
         convert[k + 1] = true
       end
     end
@@ -2221,7 +2219,7 @@ function G.thousand_speed_homophones(text)
     local w = bare[k]
     if w == "thousand" and k > 1 and H[bare[k - 1]] and not toks[k - 1]:match("%p$") then
       local h, before = bare[k - 1], bare[k - 2]
-      local loose = not before or not (DIGIT_WORDS[before] or NUMBER_WORDS[before] or before:match("^%d"))
+      local loose = not before or not (SAID_DIGIT[before] or NUMBER_WORDS[before] or before:match("^%d"))
       if (h == "for" or h == "fore") and loose then
         convert[k - 1] = true
       elseif (h == "to" or h == "too") and (before == "to" or before == "too" or before == "at")
@@ -2230,15 +2228,15 @@ function G.thousand_speed_homophones(text)
       end
     elseif G.speed_homophone_anchors[w] and bare[k + 1] == "to" and not toks[k]:match("%p$") then
       local digits, heard, j = 0, {}, k + 1
-      while j <= k + 3 and bare[j] and (DIGIT_WORDS[bare[j]] or H[bare[j]]) do
-        if DIGIT_WORDS[bare[j]] then digits = digits + 1
+      while j <= k + 3 and bare[j] and (SAID_DIGIT[bare[j]] or H[bare[j]]) do
+        if SAID_DIGIT[bare[j]] then digits = digits + 1
         elseif bare[j] == "to" or bare[j] == "too" or bare[j] == "for" or bare[j] == "fore" then heard[#heard + 1] = j
         else break end
         if toks[j]:match("%p$") and j < k + 3 then j = k + 9; break end
         j = j + 1
       end
       local after = bare[j]
-      if j == k + 4 and digits >= 1 and #heard >= 2 and DIGIT_WORDS[bare[k + 3]] and not toks[k + 1]:match("%p$")
+      if j == k + 4 and digits >= 1 and #heard >= 2 and SAID_DIGIT[bare[k + 3]] and not toks[k + 1]:match("%p$")
           and (toks[k + 3]:match("%p$") or not after or G.speed_homophone_ends[after]) then
         for _, h in ipairs(heard) do convert[h] = true end
       end
@@ -2517,7 +2515,7 @@ function G.repeated_restarts(text)
   for f = 1, #toks - 2 do
     local w, j = bare(f), f + 1
     while G.hesitation_words[bare(j) or ""] do j = j + 1 end
-    if j > f + 1 and w:match("^%a%a+$") and not DIGIT_WORDS[w] and bare(j) and bare(j):match("^(.-)%p*$") == w then
+    if j > f + 1 and w:match("^%a%a+$") and not SAID_DIGIT[w] and bare(j) and bare(j):match("^(.-)%p*$") == w then
       return G.repeated_restarts(G.words_without(toks, f, j - 1))
     end
   end
@@ -2610,7 +2608,7 @@ function G.words_without(toks, a, b)
 end
 -- An instruction broken off inside its spoken value and said again whole with no hesitation between ("climb
 -- flight level two climb flight level two six zero", "speed two, speed two five zero"): two to six words, the
--- first no digit word (DIGIT_WORDS) and the last one, then the same words again and at least one more digit
+-- first no digit word (SAID_DIGIT) and the last one, then the same words again and at least one more digit
 -- word; the broken-off copy is dropped. Returns text unchanged when none is said.
 function G.unfinished_restarts(text)
   local toks, bare = {}, {}
@@ -2620,9 +2618,9 @@ function G.unfinished_restarts(text)
   end
   for j = 3, #toks - 2 do
     -- (j opens the second copy: the word before it ends a run of digit words, and it is no digit word)
-    if DIGIT_WORDS[bare[j - 1]] and not DIGIT_WORDS[bare[j]] and not toks[j - 1]:match("[.!?;]$") then
+    if SAID_DIGIT[bare[j - 1]] and not SAID_DIGIT[bare[j]] and not toks[j - 1]:match("[.!?;]$") then
       for n = 2, math.min(6, j - 1) do
-        local same = not DIGIT_WORDS[bare[j - n]] and DIGIT_WORDS[bare[j + n]] ~= nil
+        local same = not SAID_DIGIT[bare[j - n]] and SAID_DIGIT[bare[j + n]] ~= nil
         for x = 0, n - 1 do
           if not same then break end
           same = bare[j - n + x] == bare[j + x] and bare[j + x] ~= ""
@@ -3638,7 +3636,7 @@ local function written_forms(text, world)
   end)
   -- "47,5 north", "8,5 degrees east", "factor to 1,1": a decimal comma (G.decimal_comma) is the point
   where("%d,%d", "()(%d+),(%d+)()", function(b, whole, part, e) return G.decimal_comma(text, b, whole, part, e) end)
-  text = typed_abbreviations(lone_multipliers(tokens.numerals_apart(G.unfinished_restarts(G.cut_off_restarts(G.repeated_restarts(G.abandoned_instruction_words(G.cancelled_direct(text))))), DIGIT_WORDS), world))
+  text = typed_abbreviations(lone_multipliers(tokens.numerals_apart(G.unfinished_restarts(G.cut_off_restarts(G.repeated_restarts(G.abandoned_instruction_words(G.cancelled_direct(text))))), SAID_DIGIT), world))
   text = hyphened_types(spelled(G.spelled_letter_a(heard_forms(negated_values(G.readback_reported(readback_heard(self_corrections(G.said_but(G.cancel_corrections(unlabelled(foreign_digits(G.portuguese_and(G.polish_and(G.said_whole(G.french_in_english(G.denied_word(G.dutch_chat(G.condition_then(G.condition_copula(G.recreate_said(G.third_person(G.passive_voice(G.after_this_instruction(text))))))))))))))))))))))))
   low = text:lower()
   -- a position typed as whole degrees after the hemisphere, then minutes ("N55 50.0 W003 20.0", "S33 57
@@ -3689,7 +3687,7 @@ local function written_forms(text, world)
   -- typed or said one by one), read as that many thousand feet
   local function angels(digits)
     for d in digits:gmatch("%a+") do
-      if not DIGIT_WORDS[d:lower()] then return nil end
+      if not SAID_DIGIT[d:lower()] then return nil end
     end
     return digits .. " thousand ft"
   end
@@ -3773,7 +3771,7 @@ local function written_forms(text, world)
   end
   -- "jet2 44m", "Jet 2 one two": the airline's brand name (its telephony is Channex, EXS) before a flight number
   where("jet", "%f[%w][Jj][Ee][Tt]%s?2(%s+)(%w+)", function(space, nx)
-    if nx:match("^%d") or DIGIT_WORDS[nx:lower()] then return "channex" .. space .. nx end
+    if nx:match("^%d") or SAID_DIGIT[nx:lower()] then return "channex" .. space .. nx end
   end)
   -- ("the Jet2", "Jet2's route", "a Jet2 flight EXS77K": the brand written as one word is the airline anywhere
   -- but where an aircraft's id is JET2; "the jet 2" apart may count jets, left as said)
@@ -3938,11 +3936,11 @@ local function written_forms(text, world)
   where("call", "%f[%a]([Cc][Aa][Ll][Ll])[%- ]([Ss][Ii][Gg][Nn])%f[%A]", "%1%2")  -- "call sign"
   -- "Egyptair triple seven", "double two": a digit said twice or three times
   where("double", "%f[%a]([Dd][Oo][Uu][Bb][Ll][Ee])%s+(%a+)%f[%A]", function(_, d)
-    if DIGIT_WORDS[d:lower()] then return d .. " " .. d end
+    if SAID_DIGIT[d:lower()] then return d .. " " .. d end
     return nil
   end)
   where("triple", "%f[%a]([Tt][Rr][Ii][Pp][Ll][Ee])%s+(%a+)%f[%A]", function(_, d)
-    if DIGIT_WORDS[d:lower()] then return d .. " " .. d .. " " .. d end
+    if SAID_DIGIT[d:lower()] then return d .. " " .. d .. " " .. d end
     return nil
   end)
   -- ("the triple 7", "Egyptair triple 7": one digit typed, the three of them)
@@ -7547,13 +7545,25 @@ function G:segments(b, e)
   local own_e = trig[1].pos
   for a = b, own_e - 1 do if self.speed_again[a] then own_e = a break end end
   local qs = self:quantities(b, own_e)
+  -- ("KLM12 FL200, reaching FL200 speed 250", "FL160, passing FL180 250 knots": a level condition after a comma or
+  -- "and" closing the clause's value, a level straight after it, opens the next instruction's clause)
+  local cut
+  for n = 2, #qs do
+    local c = self:word(qs[n].b - 1, "at") and qs[n].b - 2 or qs[n].b - 1
+    if c >= qs[1].e and self:word(c, "@level_condition") and G.level_value(qs[n])
+        and (self.t[c - 1].kind == "punct" or self:word(c - 1, "and")) then
+      own_e, cut = c, c
+      qs = self:quantities(b, own_e)
+      break
+    end
+  end
   -- ("hop7 fl100 in 2 min, hdg 220", "... in 2 min and hdg 220": a wait said after the value is the value's own
   -- clause, which "and" closes too)
   local timed = #qs > 1 and qs[#qs].kind == "time"
   -- (a wait opening the request, "in 2 min klm33 fl200 and ryr8 hdg 240", is no value of the clause)
   if qs[1] and qs[1].kind == "time" and #qs > 1 and not self:has_ref(b, qs[1].b, "aircraft") then table.remove(qs, 1) end
   if timed then qs = { table.unpack(qs, 1, #qs - 1) } end
-  local own = G.unit_value(qs[#qs])
+  local own = G.unit_value(qs[#qs]) or (cut ~= nil and G.unit_value(qs[1]))
   -- ("Wizz Air 3117, negative, flight level 280, descend": a level with only a comma between it and a climb or
   -- descent that has no value of its own is that verb's)
   if own and qs[#qs].kind == "alt" and trig[1].intent == "alt"
@@ -7576,7 +7586,7 @@ function G:segments(b, e)
       local first = named[#named]
       -- ("200 knots until MAH and after MAH 180 knots": "and" opening the value again from the same place,
       -- G:after_place_value, parts them as a comma does)
-      if self.t[k].kind == "punct" or self:word(k, "@then_words") or (timed and self:word(k, "and"))
+      if self.t[k].kind == "punct" or self:word(k, "@then_words") or ((timed or k == (cut or 0) - 1) and self:word(k, "and"))
           or (self:word(k, "and") and self:word(k + 1, "after") and self:after_place_value(k + 1)) or (other and other.exists
           and other.name:upper() ~= first.name:upper()) then
         -- ("BTI6AL 200 knots until ROKLA then 180": a limit until a place, the value again after it, G:until_then_value)
@@ -7758,6 +7768,13 @@ function G:segments(b, e)
         -- ("descend FL100 after 2 minutes turn left": a wait nothing parts from the value before is asked, G:at_time)
         local waited = self:word(cond, "after") and self:quantities(cond + 1, start)[1]
         if waited and waited.kind == "time" and waited.b == cond + 1 and not self:linked(cond) then cond = start end
+        -- ("add WP2 after GATE1 and descend ...": "after" or "before" straight after the waypoint added is where it
+        -- goes on the route, ADDWPT's own, never what the next instruction waits for)
+        if last.intent == "addwpt" and self:word(cond, "after before") then
+          for _, r in ipairs(self:refs_in(last.trig + 1, cond, "waypoint")) do
+            if r.e == cond then cond = start end
+          end
+        end
         if cond < start then start = cond end
         -- (", above FL100 speed 300": a bare bound before a speed's word, after the last instruction's value, opens
         -- the speed's clause, G:bare_bound)
@@ -9446,10 +9463,15 @@ end
 -- waypoint's name, name }, else nil. "at CANUK" alone after the value is no such condition (a crossing?).
 local VALUE_INTENTS = { alt = true, spd = true, hdg = true, vs = true, maintain = true, infer = true }
 -- True when the value of a level, speed, heading or rate instruction (segment s) ends straight before token c
--- (fillers and commas between).
+-- (fillers and commas between). A deletion of the aircraft (segment s) counts as such a value: its callsign said
+-- straight after the verb ends straight before c ("delete SAS1417 once it passes SECT1", "remove the Condor after KERAX").
 function G:value_before(s, c)
   local v = c - 1
   while v > s.trig and (self.t[v].filler or self.t[v].text == ",") do v = v - 1 end
+  if s.intent == "delete" then
+    local r = self:refs_in(s.trig + 1, v + 1, "aircraft")[1]
+    return r ~= nil and r.e == v + 1 and self:skip_fillers(s.trig + 1) == (self:word(r.b - 1, "the") and r.b - 1 or r.b)
+  end
   local last = self:quantities(s.trig, v + 1)
   return VALUE_INTENTS[s.intent] and #last > 0 and last[#last].e == v + 1
 end
@@ -9467,7 +9489,9 @@ function G:trailing_fix(s)
   local bare = self:find_word(s.trig + 1, c, "passing passes reaching reaches overflying")
   bare = bare < c and self:has_ref(bare + 1, bare + 2, "waypoint") and self:value_before(s, bare) and bare
   if bare then c = bare end
-  if c >= s.e or #self:quantities(s.trig, c) == 0 then return nil end
+  if c >= s.e or (#self:quantities(s.trig, c) == 0 and not (s.intent == "delete" and self:value_before(s, c))) then
+    return nil
+  end
   local k = bare or self:skip_fillers(c + 1)
   -- ("descend FL200, but only after BETOS", "climb FL300 only when it is over BUMIL": the condition's limiting
   -- words before it, lexicon.condition_limiting, belong to it)
@@ -10068,7 +10092,8 @@ function G:at_waypoint(s, spec)
     -- opening, after its callsign, with "at", "after" or "over" and a place of the aircraft's route, the direct-to
     -- said after it, to the next waypoint of the route, and nothing more, starts there (AT acid wp DO DIRECT ...,
     -- G:do_at; a place off the route is asked about)
-    local ids = s.intent == "direct" and spec and spec.handler and self:acids(s) or {}
+    -- ("after passing Mayfield own navigation Biggin": own navigation to a place is a direct-to)
+    local ids = (s.intent == "direct" or s.intent == "lnav") and spec and spec.handler and self:acids(s) or {}
     for j = s.e, #self.t do
       if not (self.t[j].filler or self.t[j].kind == "punct") then ids = {} end
     end
@@ -10076,7 +10101,9 @@ function G:at_waypoint(s, spec)
     local k = self:skip_fillers(s.b)
     for _, a in ipairs(self:refs_in(k, k + 1, "aircraft")) do k = self:skip_fillers(a.e) end
     if self.t[k] and self.t[k].kind == "punct" then k = self:skip_fillers(k + 1) end
-    local opener, verb = k, self:word(s.trig - 1, "proceed go fly") and s.trig - 1 or s.trig
+    -- (the direct-to's verbs before its word: "proceed direct", "route direct", "own navigation")
+    local opener, verb = k, s.trig
+    while verb - 1 > opener and self:word(verb - 1, "proceed go fly route track head own") do verb = verb - 1 end
     -- (one name, of one place or of several the navdata shares it between: "direct NEPAL")
     local to_name = #to >= 1 and to[1].name
     for _, r in ipairs(to) do
@@ -16785,10 +16812,7 @@ function G:same_restated(r, b, e)
       local t = self.t[k]
       local w = self.words[k] or t.text
       local digit = t.kind == "number" and w or nil
-      if not digit and DIGIT_WORDS[w] then
-        digit = ({ zero = "0", oh = "0", one = "1", two = "2", three = "3", tree = "3", four = "4", fower = "4",
-          five = "5", fife = "5", six = "6", seven = "7", eight = "8", nine = "9", niner = "9" })[w]
-      end
+      if not digit then digit = SAID_DIGIT[w] end
       if digit then
         run = (run or "") .. digit
       else
@@ -16828,6 +16852,23 @@ function G:same_for()
         self:mark_used(b, e)
         r.false_start = true
         named[#named + 1] = r.name
+        -- ("BAW8CK 250 knots, EIN3T and RYR44 too", "..., EIN3T, RYR44 too": the aircraft listed straight before it,
+        -- "and" or a comma between, in a clause of their own, get the instructions too)
+        local first, listed = b, {}
+        for _ = 1, 4 do
+          local k = first - 1
+          if not (self:word(k, "and") or (self.t[k] and self.t[k].text == ",")) then break end
+          local p = self:refs_in(1, k, "aircraft")
+          p = p[#p]
+          if not (p and p.exists and not p.false_start and p.e == k) then break end
+          first, listed[#listed + 1] = p.b, p
+        end
+        local opened = self.t[first - 1] and (self.t[first - 1].text == "," or self:word(first - 1, "and"))
+        for n = opened and #listed or 0, 1, -1 do  -- (in the order said, before it)
+          listed[n].false_start = true
+          table.insert(named, #named, listed[n].name)
+        end
+        if opened and #listed > 0 then self:mark_used(first, b) end
       end
     end
   end
@@ -18147,7 +18188,7 @@ function G.create_digit_homophone(text)
   if not (bare[1] == "create" or bare[2] == "create" or bare[1] == "spawn") then return nil end
   for k = 2, #bare - 2 do
     local h = bare[k]
-    if (h == "to" or h == "too" or h == "for" or h == "fore") and DIGIT_WORDS[bare[k - 1]]
+    if (h == "to" or h == "too" or h == "for" or h == "fore") and SAID_DIGIT[bare[k - 1]]
         and not toks[k - 1]:match("%p$") and not toks[k]:match("%p$") and (bare[k + 1] == "a" or bare[k + 1] == "an") then
       return string.format("I heard '%s' after the callsign's digits: is it a digit of the callsign ('%s'), or no "
         .. "part of it? Please say the callsign again.", toks[k], lexicon.digit_homophones[h])
@@ -18209,7 +18250,7 @@ function G.syllable_route_places(text, world)
       local k, ok = i + n - 1, true
       for j = i, k do ok = ok and part(j) and (j == k or not toks[j]:match("%p$")) end
       -- (the last syllable is no digit's word: "direct ack one" is a name and a number)
-      if ok and not (DIGIT_WORDS[bare[k]] or NUMBER_WORDS[bare[k]]) then
+      if ok and not (SAID_DIGIT[bare[k]] or NUMBER_WORDS[bare[k]]) then
         local w = table.concat(bare, "", i, k)
         local name = sure_name(w)
         if name and G.vowel_skeleton(w) == G.vowel_skeleton(name:lower()) then
@@ -19213,8 +19254,8 @@ function G.spoken_zeros(text)
   for i = 2, #toks - 1 do
     local before = bare[i - 1]
     if (bare[i] == "oh" or bare[i] == "o") and toks[i] == toks[i]:match("^%a+") and not toks[i - 1]:match("%p$")
-        and (DIGIT_WORDS[before] or G.below_hundred[before] or before == "double" or before == "triple")
-        and DIGIT_WORDS[bare[i + 1]] then
+        and (SAID_DIGIT[before] or G.below_hundred[before] or before == "double" or before == "triple")
+        and SAID_DIGIT[bare[i + 1]] then
       out = out or table.move(toks, 1, #toks, 1, {})
       out[i] = "zero"
     end
@@ -19534,6 +19575,13 @@ function M.translate(text, world)
       -- (after "vertical speed" the plus is said as the word, the rate's sign: handlers' m:vspeed)
       if w:lower() == "speed" and text:sub(1, at - 1):lower():find("vertical%s+$") then
         return w .. " plus " .. d
+      end
+    end)
+    -- ("DLH5 vs -2000, KLM12 +1500": after a callsign, in a request that set a signed rate before, the next
+    -- aircraft's rate, up)
+    text = text:gsub("()(%f[%w]%a+%d%w*)(%s+)%+(%d)", function(at, w, space, d)
+      for r in text:sub(1, at - 1):lower():gmatch("[%a/]+") do
+        if lexicon.signed_rate_words[r] then return w .. space .. d end
       end
     end)
   end

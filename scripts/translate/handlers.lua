@@ -697,6 +697,22 @@ function m:acids(s)
       return ids
     end
   end
+  -- ("LOG67 and all three jets FL200", "KLM12 and everyone else FL200", "BAW5 and the others ..."): a group word said
+  -- after "and" straight after an aircraft named, which the group reading below takes only with none named: asked,
+  -- never sent to the one named alone
+  for k = #ids > 0 and s.b or s.e, s.e - 2 do
+    local g = self:word(k, "and") and (self:word(k + 1, "the") and k + 2 or k + 1)
+    if g and self:word(g, "all everyone everybody others rest each every @counted_aircraft @maker_plurals")
+        and not self:has_ref(g, g + 1, "aircraft") then
+      for _, r in ipairs(self:refs_in(s.b, k, "aircraft")) do
+        if r.e == k then
+          self:need(string.format("Which aircraft does '%s' mean besides %s? Please give their callsigns.",
+            self:raw(k + 1, g + 1), r.name:upper()))
+          return ids
+        end
+      end
+    end
+  end
   -- "KLM12 heading 270. all aircraft climb FL300", "both climb FL300, EZY45 ...": a group said before the
   -- instruction word in its own clause, that no aircraft named in it resolves, is never one aircraft named
   -- before or after it: asked, unless the aircraft instructed together before are that group (two for
@@ -2113,15 +2129,14 @@ local function aliases()
   return ALIASES
 end
 
--- Families by their number ("777" -> {B772 = true, B77W = true, ...}, types.build's families) and
--- digits said as words ("seven", "niner": "triple seven" is lexed as "seven seven seven").
+-- Families by their number ("777" -> {B772 = true, B77W = true, ...}, types.build's families); their digits are
+-- said as words (lexicon.digit_words: "triple seven" is lexed as "seven seven seven").
 local FAMILIES
 local function families()
   FAMILIES = FAMILIES or require("translate.types").build(require("translate.names").designators).families
   return FAMILIES
 end
-local DIGIT_WORDS = { zero = "0", one = "1", two = "2", three = "3", four = "4", five = "5", six = "6", seven = "7",
-                      eight = "8", nine = "9", niner = "9" }
+local DIGIT_WORDS = L.digit_words
 local TENS_WORDS = { twenty = "2", thirty = "3", forty = "4", fifty = "5", sixty = "6", seventy = "7", eighty = "8",
                      ninety = "9" }
 -- a designator's letter said before its digits, by its maker ("the a three twenty one" is an Airbus A321)
@@ -3764,14 +3779,12 @@ end
 -- again or not, from its first character or from one said before the cut, to its end. The characters said before
 -- the cut up to where the restart picks up, then those said after it, must spell the aircraft's callsign after its
 -- airline exactly (the decision: every spoken character matches); the reference then holds both, as heard.
-local SPELLED_DIGITS = { zero = "0", one = "1", two = "2", three = "3", tree = "3", four = "4", fower = "4",
-  five = "5", fife = "5", six = "6", seven = "7", eight = "8", nine = "9", niner = "9" }
 function m:restarted_callsigns()
   local function char(k)
     local t = self.t[k]
     if not t or t.filler then return nil end
     if t.kind == "number" and t.text:match("^%d+$") then return t.text end
-    return t.kind == "word" and (SPELLED_DIGITS[t.text] or L.phonetic[t.text]) or nil
+    return t.kind == "word" and (L.digit_words[t.text] or L.phonetic[t.text]) or nil
   end
   local function cut_at(k)
     local t = self.t[k]

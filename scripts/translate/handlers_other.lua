@@ -391,7 +391,9 @@ return function(H, f, compass)
         if not fits then actype, narrowed = nil, true end
       end
     end
-    local said = not narrowed and #written == 0 and types[1] and self:raw(types[1].b, types[1].e):lower():gsub("[%s%-]", "")
+    -- (the family's number said in words as typed: "a Delta seven six seven" is a 767)
+    local said = not narrowed and #written == 0 and types[1]
+      and self:raw(types[1].b, types[1].e):lower():gsub("%a+", L.digit_words):gsub("[%s%-]", "")
     for _, fam in ipairs(said and L.variant_families or {}) do
       local pre = said:sub(1, -#fam - 1)
       if said:sub(-#fam) == fam and not pre:match("%d$")
@@ -1311,7 +1313,11 @@ return function(H, f, compass)
     -- after the verb with a waypoint named before is asked, the waypoint and the aircraft both named
     local before = self:refs_in(1, s.trig, "waypoint")
     local it = self:find_word(s.trig + 1, math.min(s.e, s.trig + 3), "it") < math.min(s.e, s.trig + 3)
-    if self:word_in(s.trig + 1, s.e, "point points") or (it and #before > 0) then
+    -- ("once SAS902 passes TEB, delete it", "after EKBIL delete it": a waypoint said as the one the aircraft passes
+    -- is behind it then; "it" is the aircraft, which the condition's reading deletes there)
+    local passed = #before == 1 and self:word(before[1].b - 1, "passes passed passing reaches reached reaching past over "
+      .. "crosses crossed overflies overflying after")
+    if self:word_in(s.trig + 1, s.e, "point points") or (it and #before > 0 and not passed) then
       local id = self:acid(s, "lose the waypoint")
       if not id then return end
       if #before ~= 1 or it then
@@ -1860,6 +1866,13 @@ return function(H, f, compass)
       if large and not nav_held and class and class(airport) == "LARGE" then return airport end
       if not nav_held and class and class(airport) == "LARGE" and self:navaid_by_airport(navaid, airport, a) then
         return airport
+      end
+      -- (a navaid standing on an airport other than a large one, neither held, is one place with it, named as a
+      -- waypoint is: "direct Viseu", the VIS VOR-DME 0.2 NM from the medium LPVZ; a distance from it stays the
+      -- airport's, "within 15 miles of Dortmund")
+      if not reference and not nav_held and not airport_held and self:navaid_by_airport(navaid, airport, a) then
+        self.ask = unasked
+        return navaid
       end
       if nav_held or not airport_held then
         self:need(string.format("Which place is meant: the %s navaid or the %s airport?", navaid, airport))
@@ -3364,6 +3377,11 @@ return function(H, f, compass)
       return self:need(string.format("I have %s to add to the route of %s. What does '%s' mean?", where, id,
         self:raw(unread.b, unread.e)))
     end
+    -- ("exs12ab add MCT after rosun", MCT the waypoint after ROSUN already: a place its route holds, inserted again
+    -- beside another, would be flown twice: asked)
+    if next_to and self:on_route(id, where) then
+      return self:need(string.format("%s is already on the route of %s. Should it be added a second time?", where, id))
+    end
     if next_to then
       local after = self:word(at, "after between")
       self:explain(at, at + 1)
@@ -3876,8 +3894,7 @@ return function(H, f, compass)
       if #a > 0 and not a[1].exists then name = a[1].name:upper() end
     end
     -- (a name's digits said as words: "tango one", "roma two")
-    local DIGITS = { zero = "0", one = "1", two = "2", three = "3", tree = "3", four = "4", fower = "4", five = "5",
-      fife = "5", six = "6", seven = "7", eight = "8", nine = "9", niner = "9" }
+    local DIGITS = L.digit_words
     if not name then
       -- ("define waypoint tango one at ...", "a fix named whiskey two five at ...", "make new point tango five at
       -- ..."): phonetic letters then one to three spoken digits straight after the noun ("point" too) or "named",

@@ -140,6 +140,9 @@ return function(H, f, wrap, compass)
     for _, q in ipairs(qs) do
       if q.b >= s.trig then
         if q.kind == "heading" then return self:heading(s) end
+        -- ("maintain decimal eight three", "maintain .83": a decimal fraction below one, a Mach number's form, is the
+        -- speed kept)
+        if q.kind == "plain" and q.number.decimal and q.value >= 0.3 and q.value < 1 then return self:speed(s) end
         if q.kind == "plain" then
           -- "maintain two five zero" is a speed; "maintain four thousand" an altitude.
           -- so is a value with knots one word further on ("maintain two one, uh, turn knots")
@@ -448,10 +451,11 @@ return function(H, f, wrap, compass)
         return
       end
     end
-    -- "flight level eight zero correction nine zero": a bare number of two or three digits after a correction
-    -- that takes back a flight level is the flight level it corrects to (FL090), never feet
+    -- "flight level eight zero correction nine zero", "flight level one one zero, make that one hundred": a bare
+    -- number of two or three digits, or whole hundreds said, after a correction that takes back a flight level is the
+    -- flight level it corrects to (FL090, FL100), never feet
     local relevelled = q.kind == "plain" and not fl and q.value >= 10 and q.value < 1000 and q.value % 1 == 0
-      and not q.number.hundred and not q.number.thousand
+      and not q.number.thousand
     if relevelled then
       relevelled = false
       for _, o in ipairs(qs) do
@@ -1332,6 +1336,14 @@ return function(H, f, wrap, compass)
       if not now then return self:need("What is the current heading of " .. id .. "?") end
       local dir = rel.turn ~= 0 and rel.turn or turn
       if dir == 0 then return self:need("Should " .. id .. " turn left or right?") end
+      -- ("turn right 090 degrees": three digits led by a zero are written as a heading is, "degrees" as a turn's
+      -- size: asked, unless "by" names the size)
+      local d = rel.number and rel.number.digits
+      if d and #d == 3 and d:find("^0") and rel.value <= 360 and not self:word(rel.b - 1, "by")
+          and self:word_in(rel.b, rel.e + 1, "degrees degree deg") then
+        return self:need(string.format("Should %s turn %s by %s degrees, or fly heading %s?", id,
+          dir < 0 and "left" or "right", f.num(rel.value), d))
+      end
       offset = dir * rel.value
       self:as_change(rel)
       -- (a heading said after the turn's degrees, no correction between, "left 30 degrees then 300", "left 30

@@ -213,6 +213,8 @@ return {
     -- radiotelephony courtesy
     radiotelephony = { "good", "day", "morning", "afternoon", "evening", "hello", "hi", "roger", "wilco", "copy",
         "copied", "affirm", "affirmative", "understood", "g'day", "bye",
+        -- an Irish greeting ("Delta forty four, howya, proceed direct ENIRI")
+        "howya", "howaya",
         -- a request granted, a report acknowledged ("Mach .84 approved", "position report received")
         "approved", "received",
         -- the pilot asked to acknowledge the instruction just given ("turn left heading 060, acknowledge")
@@ -991,7 +993,7 @@ return {
     "decelerated", "decelerating", "reducing", "reduced", "reduce", "reduces", "decreased", "decreases" },
   -- words before a level that make the next instruction wait for it
   -- ("when passing flight level 130 reduce speed 250": ATALT)
-  level_condition = { "when", "once", "passing", "leaving", "reaching", "after" },
+  level_condition = { "when", "once", "passing", "leaving", "reaching", "after", "levelling", "leveling" },
   -- words between such a level and the instruction word that waits for it, part of the instruction
   -- ("when passing FL90 fly heading 090", "after passing FL100 resume own navigation direct HEMEL", "when at
   -- 12000 set speed 240", "once you're at 250 start down to FL100": a verb of starting before a level change's
@@ -2606,6 +2608,10 @@ return {
                     toronto = "lester b pearson", antigua = "v c bird", ["saint maarten"] = "princess juliana",
                     ["st maarten"] = "princess juliana", ["sint maarten"] = "princess juliana",
                     -- (Japan: the airport known by its district, which the navdata names after its city)
+                    -- (the Gulf and the Levant: the capital's or city's one large airport the navdata names after a
+                    -- king or queen, or by its old name, Muscat's SEEB)
+                    muscat = "seeb intl", riyadh = "king khaled intl", jeddah = "king abdulaziz intl",
+                    dammam = "king fahd intl", amman = "queen alia intl",
                     haneda = "tokyo intl", ["tokyo haneda"] = "tokyo intl", itami = "osaka intl",
                     ["osaka itami"] = "osaka intl",
                     -- (the Middle East: the city's one large airport named after a person, its name said after
@@ -2688,6 +2694,9 @@ return {
   registration_marks = "CS EC EI HA HB LN LX OE OH OK OM OO OY PH SE SP SX TC TF VH YR ZK ZS",
   -- words that lead a waypoint's name spelled again after it ("direct SAMUD, spelling Sierra Alpha ...", "I spell")
   spelling_leads = { "spelling", "spelled", "spelt", "spell", "i" },
+  -- digits said as words, the radiotelephony forms ("tree", "fower", "fife", "niner") included: word -> digit
+  digit_words = { zero = "0", one = "1", two = "2", three = "3", tree = "3", four = "4", fower = "4", five = "5",
+                  fife = "5", six = "6", seven = "7", eight = "8", nine = "9", niner = "9" },
   -- the phonetic alphabet (spelled waypoint names)
   phonetic = {
     alpha = "A", alfa = "A", bravo = "B", charlie = "C", delta = "D", echo = "E", foxtrot = "F", golf = "G",
@@ -2751,7 +2760,9 @@ return {
     -- (French: "eading", "sen" and "zen" for "then"; Italian and Greek: "eding", "fligh level")
     eading = "heading", sen = "then", zen = "then", eding = "heading", fligh = "flight",
     -- (Indian and Sri Lankan: "wan" for one, "nayner", "clime", "fly-level")
-    wan = "one", nayner = "niner", clime = "climb", ["fly-level"] = "flight level" },
+    wan = "one", nayner = "niner", clime = "climb", ["fly-level"] = "flight level",
+    -- (Portuguese and Brazilian: "ninner")
+    ninner = "niner" },
   heard_as = {
     { heard = { "write", "rite", "wright" }, means = "right",
       before = { "heading", "hdg", "turn" }, after = { "turn" } },
@@ -3300,12 +3311,15 @@ return {
       -- resume, climbing)
       ponto = "point", perfeito = "ok", ["tempo real"] = "real time", retomar = "resume", subindo = "climbing",
       descendo = "descending",
+      -- the simulation switched ("liga conflict detection", "pausa a simulação", "continua a simulacao")
+      ["simulação"] = "simulation", simulacao = "simulation", liga = "switch on", ligar = "switch on",
+      desliga = "switch off", desligar = "switch off",
     },
     -- words of `words` said the same in Spanish or English: no sign of Portuguese alone
     shared = { nivel = true, ["nível"] = true, avance = true, suba = true, aumente = true, centro = true, torre = true },
     -- ("cria o GLO1234": the article, read only in a sentence another word marks Portuguese; "curve left proa
     -- zero three zero": "curva" said half in English)
-    joining = { o = "the", curve = "turn" },
+    joining = { o = "the", a = "the", curve = "turn" },
   },
   -- Swedish, Norwegian and Danish words in a Scandinavian controller's or sim operator's terse English ("direct
   -- GATMA og descend FL100", "climb FL280 nej FL260", "ta bort DLH2TC", "pausa simuleringen"): "og" and "och"

@@ -408,6 +408,7 @@ local names = {
     { "skydubai", "FDB" },  -- (flydubai)
     { "arabia", "ABY" },  -- (Air Arabia)
     { "oman air", "OMA" },
+    { "oman", "OMA" },  -- (Oman Air as Gulf controllers say it: "Oman six four one")
     { "volotea", "VOE" },
     { "swiftair", "SWT" },  -- (Swiftair, Spain; its ICAO telephony is "Swift", an English word)
     { "shuttle", "SHT" },  -- (British Airways Shuttle)

@@ -3891,9 +3891,9 @@ return function(intent, rule, words)
 
   -- conflict detection and resolution
   -- "the look-ahead time for conflict detection", "the radius for resolution", "look ahead time 5 minutes
-  -- for the detection", "the safety distance used by the conflict detection": the setting's owner (the setting
-  -- named within the ten words before)
-  rule { "detection resolution", false, prev = { 3, "for of by" }, when = function(g, i)
+  -- for the detection", "the safety distance used by the conflict detection", "look ahead time 300 seconds for CD":
+  -- the setting's owner (the setting named within the ten words before)
+  rule { "detection resolution asas cd", false, prev = { 3, "for of by" }, when = function(g, i)
     return g:word_in(math.max(1, i - 10), i, "look lookahead dtlook zone radius separation distance")
   end }
   -- "conflict detection look ahead five minutes": detection names the look-ahead's owner, no switch (one is

@@ -11613,12 +11613,13 @@ end
 
 -- Cycle 49 (f121): a decimal fraction below one ("point seven six", ".76", "decimal eight two") is a Mach number's
 -- form: read as no Mach number beside a level, heading or rate it is asked, never flown as 700 ft or 1 ft; said
--- with "mach" or "speed", or beside a speed read as Mach, it is the Mach number
+-- with "mach" or "speed", or beside a speed read as Mach, it is the Mach number; kept ("maintain"), the Mach number
+-- kept (R402)
 do
   local _, ex = scene({ "CRE UAL88 B772 41.9 -87.9 270 FL330 290", "CRE AAL12 A321 41.5 -87.5 090 FL310 280" })
-  asked(ex("united eighty eight maintain point eight two"), "a Mach number's form read as 800 ft")
+  check_eq(ex("united eighty eight maintain point eight two"), "SPD UAL88 M0.82")
   asked(ex("UAL88 descend .82"), "a typed fraction read as 1 ft")
-  asked(ex("united eighty eight maintain max decimal eight two"), "'max' heard for 'mach'")
+  check_eq(ex("united eighty eight maintain max decimal eight two"), "SPD UAL88 M0.82")
   check_eq(ex("united eighty eight maintain mach point eight two"), "SPD UAL88 M0.82")
   check_eq(ex("UAL88 climb FL350 speed .82"), "ALT UAL88 FL350 ; SPD UAL88 M0.82")
   check_eq(ex("UAL88 climb FL350, then when level speed .82"), "ALT UAL88 FL350 ; ATALT UAL88 FL350 SPD UAL88 M0.82")
