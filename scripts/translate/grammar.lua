@@ -7510,6 +7510,19 @@ function G:level_said_before(q, b)
   return false
 end
 
+-- "KLM12 FL200, reaching FL200 speed 250", "FL160, passing FL180 heading 090": a level condition after a comma or
+-- "and" closing the first value of `qs` (quantities in order), a level straight after it ("at" between or not): the
+-- condition word's token, where the next instruction's clause opens; else nil.
+function G:level_condition_cut(qs)
+  for n = 2, #qs do
+    local c = self:word(qs[n].b - 1, "at") and qs[n].b - 2 or qs[n].b - 1
+    if c >= qs[1].e and self:word(c, "@level_condition") and G.level_value(qs[n])
+        and (self.t[c - 1].kind == "punct" or self:word(c - 1, "and")) then
+      return c
+    end
+  end
+  return nil
+end
 function G:segments(b, e)
   local trig = {}
   self.speed_again = {}
@@ -7545,17 +7558,10 @@ function G:segments(b, e)
   local own_e = trig[1].pos
   for a = b, own_e - 1 do if self.speed_again[a] then own_e = a break end end
   local qs = self:quantities(b, own_e)
-  -- ("KLM12 FL200, reaching FL200 speed 250", "FL160, passing FL180 250 knots": a level condition after a comma or
-  -- "and" closing the clause's value, a level straight after it, opens the next instruction's clause)
-  local cut
-  for n = 2, #qs do
-    local c = self:word(qs[n].b - 1, "at") and qs[n].b - 2 or qs[n].b - 1
-    if c >= qs[1].e and self:word(c, "@level_condition") and G.level_value(qs[n])
-        and (self.t[c - 1].kind == "punct" or self:word(c - 1, "and")) then
-      own_e, cut = c, c
-      qs = self:quantities(b, own_e)
-      break
-    end
+  local cut = self:level_condition_cut(qs)
+  if cut then
+    own_e = cut
+    qs = self:quantities(b, own_e)
   end
   -- ("hop7 fl100 in 2 min, hdg 220", "... in 2 min and hdg 220": a wait said after the value is the value's own
   -- clause, which "and" closes too)

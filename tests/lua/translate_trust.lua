@@ -23672,3 +23672,79 @@ do
   check_eq(ex("Shamrock 3KR, speed 180, then when you're down to 180 descend 4000 feet"),
     "SPD EIN3KR 180 ; ATSPD EIN3KR 180 ALT EIN3KR 4000")
 end
+
+-- Cycle 79 (R398, R401, R59): "add WP2 after GATE1 and descend to FL060" flew the descent from GATE1 and dropped where
+-- WP2 goes ("after" straight after the waypoint added is ADDWPT's own); "look ahead time 300 seconds for CD" switched
+-- detection on; "turn right 090 degrees" (written as a heading, said as a turn's size) turned 90 degrees; "LOG67 and
+-- all three jets FL200" climbed LOG67 alone; "add MCT after ROSUN" with MCT after ROSUN already added it twice
+do
+  local _, ex = scene({ "DEFWPT GATE1 52.40 4.90", "DEFWPT WP2 52.20 4.40", "CRE KLM1234 B789 52.0 5.3 320 FL100 260",
+    "ADDWPT KLM1234 GATE1", "CRE RYR82WT B738 53.05 -7.80 090 FL230 290", "CRE LOG67 AT76 55 -4 090 14000 220",
+    "CRE EZY12 A320 55 -3 090 FL200 280", "CRE BAW8 A320 55 -2 090 FL220 280", "CRE EXS12AB B738 53.9 -2.3 180 FL110 260",
+    "DEFWPT ROSUN 53.5 -2.2", "DEFWPT MCT 53.35 -2.27", "ADDWPT EXS12AB ROSUN", "ADDWPT EXS12AB MCT" })
+  check_eq(ex("KLM 1234 add WP2 after GATE1 and descend to FL060"), "ADDWPT KLM1234 WP2,,,GATE1 ; ALT KLM1234 FL60")
+  check_eq(ex("look ahead time 300 seconds for CD"), "DTLOOK 300")
+  check_eq(ex("CD on, lookahead 300 s"), "ASAS ON ; DTLOOK 300")
+  check_eq(ex("Ryanair 82WT turn right 090 degrees"), "ASK Should RYR82WT turn right by 90 degrees, or fly heading 090?")
+  check_eq(ex("Ryanair 82WT turn right by 090 degrees"), "HDG RYR82WT 180 RIGHT")
+  check_eq(ex("LOG67 and all three jets FL200"),
+    "ASK Which aircraft does 'all' mean besides LOG67? Please give their callsigns.")
+  asked(ex("LOG67 and the jets FL200"), "a group beside a named aircraft")
+  check_eq(ex("exs12ab add MCT after rosun"),
+    "ASK MCT is already on the route of EXS12AB. Should it be added a second time?")
+end
+
+-- Cycle 79 (R400, R402): "a Delta seven six seven" for a new aircraft was the B762 (the family's number in words, not
+-- asked as "a Delta 767" is); "maintain decimal eight three" is the Mach number kept; "flight level one one zero, no,
+-- sorry, make that one hundred" is FL100; "passing FL180 heading 090" after a terse clause waits for FL180
+do
+  local _, ex = scene({ "CRE STK12D AT76 54 -6 090 9000 220", "CRE UAE815 B77W 25 55 090 FL350 290",
+    "CRE RJA710 A320 31 36 090 FL200 280" })
+  asked(ex("create a Delta seven six seven, Delta one two eight, at 53 N 9 W, flight level three three zero, heading "
+    .. "zero nine zero, speed two eight zero"), "a 767 said in words names no variant")
+  check_eq(ex("Emirates eight one five maintain decimal eight three"), "SPD UAE815 M0.83")
+  check_eq(ex("Stobart one two delta, climb flight level one one zero, no, sorry, make that one hundred"),
+    "ALT STK12D FL100")
+  check_eq(ex("RJA710 FL160, passing FL180 heading 090"), "ALT RJA710 FL160 ; ATALT RJA710 FL180 HDG RJA710 90")
+  asked(ex("RJA710 descend FL160, passing FL180 two five zero knots"), "a speed with no verb after a level passed")
+end
+
+-- Cycle 79 (R398, R401): a deletion said with the waypoint it waits for ("delete TRA5432 once it passes SUGOL",
+-- "once SAS902 passes TEB, delete it": the aircraft); several aircraft listed before "too"; a terse second aircraft's
+-- signed rate
+do
+  local _, ex = scene({ "DEFWPT SUGOL 52.6 4.2", "DEFWPT TEB 55.9 12.6", "CRE TRA5432 B738 52.3 4.5 330 FL120 260",
+    "ADDWPT TRA5432 SUGOL", "CRE SAS902 A320 55.7 12.7 010 FL200 280", "ADDWPT SAS902 TEB",
+    "CRE BAW8CK A320 51 0 090 FL200 280", "CRE EIN3T A320 52 -1 090 FL210 280", "CRE RYR44 B738 52 -2 090 FL220 280",
+    "CRE DLH5 A321 52.4 6.3 260 FL300 300", "CRE KLM12 B738 52.3 4.2 090 FL240 280" })
+  check_eq(ex("delete TRA5432 once it passes SUGOL"), "AT TRA5432 SUGOL DO DEL TRA5432")
+  check_eq(ex("once SAS902 passes TEB, delete it"), "AT SAS902 TEB DO DEL SAS902")
+  check_eq(ex("BAW8CK 250 knots, EIN3T and RYR44 too"), "SPD BAW8CK 250 ; SPD EIN3T 250 ; SPD RYR44 250")
+  check_eq(ex("DLH5 vs -2000, KLM12 +1500"), "VS DLH5 -2000 ; VS KLM12 1500")
+  check_eq(ex("KLM12 FL200, reaching FL200 speed 250"), "ALT KLM12 FL200 ; ATALT KLM12 FL200 SPD KLM12 250")
+end
+
+-- Cycle 79 (R399, R400, R402): Portuguese and Brazilian recogniser words ("ninner", "pausa a simulacao", "liga"), an
+-- Irish "howya", Oman Air as "Oman"
+do
+  local _, ex = scene({ "CRE TAP1234 A320 38.8 -9.1 090 FL150 280", "CRE OMA641 A330 23.6 58.3 090 FL300 290",
+    "CRE DAL44 B763 53 -9 090 FL360 290" })
+  check_eq(ex("air portugal one two tree four clime nivel one ninner zero"), "ALT TAP1234 FL190")
+  check_eq(ex("pausa a simulacao por favor"), "HOLD")
+  check_eq(ex("liga conflict detection por favor"), "ASAS ON")
+  check_eq(ex("delete Oman six four one"), "DEL OMA641")
+  check_eq(ex("Delta forty four, howya, descend flight level three four zero"), "ALT DAL44 FL340")
+end
+
+-- Cycle 79 (R399, R402): a navaid standing on an airport other than a large one is one place with it, named as a
+-- waypoint ("direct Viseu": the VIS VOR-DME by the medium LPVZ; a distance from it stays asked); Muscat's airport
+-- is SEEB in the navdata
+do
+  local s = navscene({ "CRE RYR7TQ B738 40.2 -8.4 030 FL200 280", "CRE UAE862 B77W 25.0 56.0 120 FL300 290" },
+    "Viseu and Muscat by name")
+  if s then
+    local function ex(text) return said(graph.translate(text, { sim = s, mode = "offline" })) end
+    check_eq(ex("ryanair seven tango quebec direct viseu"), "ADDWPT RYR7TQ VIS ; DIRECT RYR7TQ VIS")
+    check_eq(ex("set destination Muscat for Emirates eight six two"), "DEST UAE862 OOMS")
+  end
+end
