@@ -7050,7 +7050,9 @@ function G:correction_of_two_kinds()
   local k = corr + 1
   while self.t[k] and (self.t[k].kind == "punct" or self.t[k].filler) do k = k + 1 end
   local q = self:quantities(k, n)[1]
-  if not (q and q.b == k and q.kind == "plain") then return end
+  -- (a number of thousands said with no unit, "one thousand five hundred", is as bare)
+  local bare = q and (q.kind == "plain" or (q.kind == "alt" and not q.fl and not self:word(q.e - 1, "feet ft foot")))
+  if not (bare and q.b == k) then return end
   local before = self:quantities(1, corr)
   local last, prev = before[#before], before[#before - 1]
   if not (last and prev and (last.kind == "vs" and prev.kind == "alt" or last.kind == "alt" and prev.kind == "vs")) then
@@ -10458,7 +10460,12 @@ function G:at_waypoint(s, spec)
     local from = s.intent == "infer" and first or s.trig + 1
     local said_level = false  -- ("level" said as a word of its own, not in "flight level")
     for i = s.intent == "infer" and first or s.trig, r.b - 2 do
-      said_level = said_level or self:word(i, "reach reaching lvl") or (self:word(i, "level") and not self:word(i - 1, "flight"))
+      -- (nor the noun of the value straight after the verb, "descend level 060 at ESP", "descend to level 060")
+      local q1 = self:quantities(i, r.b - 1)[1]
+      local noun = ((s.intent ~= "infer" and i - 1 == s.trig) or self:word(i - 1, "to")) and q1 ~= nil
+        and (q1.b == i or q1.b == i + 1)
+      said_level = said_level or self:word(i, "reach reaching lvl")
+        or (self:word(i, "level") and not self:word(i - 1, "flight") and not noun)
     end
     -- (", at PIRAG turn right ...": "at" or "over" after a comma opens a clause of its own, no level by it)
     local opens_clause = self.t[r.b - 2] and self.t[r.b - 2].kind == "punct" and self.t[r.b - 2].text == ","
@@ -10497,8 +10504,11 @@ function G:at_waypoint(s, spec)
     -- can be met once the waypoint is passed.
     local cond_b
     -- ("leave NAGMA heading 200": after "leave" or "leaving" only a heading said straight after the waypoint is
-    -- flown from it; "leave FDO, fly heading 290" leaves the routing to it now)
-    local opened = r.b == opens and not (self:word(first, "leave leaving") and not self:word(r.e, "heading hdg"))
+    -- flown from it; "leave FDO, fly heading 290" leaves the routing to it now; "leaving MOPAD turn left heading
+    -- 150", the instruction's verb straight after the waypoint, no comma between, starts there)
+    local left_then = self:word(first, "leaving") and self:intent_at(r.e) ~= nil
+    local opened = r.b == opens and not (self:word(first, "leave leaving") and not self:word(r.e, "heading hdg")
+      and not left_then)
     if opened then
       cond_b = first
     elseif self:word(r.b - 1, "at past") and self:word(r.b - 2, "when once") and r.b - 2 == first then
@@ -16881,6 +16891,28 @@ function G:same_for()
   return named
 end
 
+-- "defwpt ZZ1 52.7 4.8 and give KLM1234 a route ZZ1 and ARTIP": a waypoint this request defines, said again after its
+-- definition, that no other command names was dropped where it was said again (its later words read as the
+-- definition's): asked, never sent without it.
+function G:defined_unused()
+  for _, line in ipairs(self.out) do
+    local name = line:match("^DEFWPT (%S+)")
+    local said = 0
+    for _, t in ipairs(name and self.t or {}) do
+      if t.raw:upper() == name then said = said + 1 end
+    end
+    local used = false
+    for _, other in ipairs(said > 1 and self.out or {}) do
+      used = used or (other ~= line and (" " .. other .. " "):find("[%s,]" .. name:gsub("%p", "%%%0") .. "[%s,]") ~= nil)
+    end
+    if said > 1 and not used then
+      self.ask = string.format("I have %s, but I heard %s again after defining it. What should happen with it?",
+        table.concat(self.out, " ; "), name)
+      return
+    end
+  end
+end
+
 -- The request's commands given again to each aircraft of `named` (G:same_for): only when every command
 -- is one aircraft's, no creation; else asked about.
 function G:same_again(named)
@@ -19877,7 +19909,9 @@ function M.translate(text, world)
   if not g.ask then g:direct_when_able() end
   if not g.ask then g:direct_via_unread() end
   if not g.ask then g:skipped_on_direct() end
+  for _, id in ipairs(g.listed_too or {}) do same[#same + 1] = id end
   g:same_again(same)
+  if not g.ask then g:defined_unused() end
   if not g.ask then g:forgotten() end
   if not g.ask then g:predicated() end
   if not g.ask then g:unknown_places() end

@@ -3902,6 +3902,15 @@ for _, p in ipairs(L.self_correction.restated) do
 end
 function m:callsign_taken_back(b, e)
   local marked = false
+  -- ("EIN45A... uh EIN123 speed 260": a callsign trailing off, then a hesitation, is taken back as by "sorry")
+  local trailed, hesitated = false, false
+  for i = b, e - 1 do
+    local t = self.t[i]
+    trailed = trailed or (t.kind == "punct" and (t.raw:find("..", 1, true) ~= nil or t.raw == "…"
+      or (t.text == "." and (self.t[i + 1] or {}).text == ".")))
+    hesitated = hesitated or (t.filler and self:word(i, "uh um erm er ehm uhm"))
+  end
+  marked = trailed and hesitated
   for i = b, e - 1 do
     local t = self.t[i]
     if t.kind ~= "punct" and not t.filler then
@@ -4322,11 +4331,33 @@ function m:unknown_callsign(id)
   return string.format("There is no aircraft %s. Which aircraft do you mean?", id)
 end
 
+-- ("BAW8CK, EIN3T vnav off", "KLM1234 and TRA5X trails red", "say alt KLM12 and EZY45"): aircraft of the segment
+-- listed next to each other, "and" or a comma only between them, for an instruction that takes one aircraft: the
+-- first is instructed, the others are kept in self.listed_too (their words explained) and get the same commands
+-- (G:same_again); aircraft named otherwise stay unexplained, asked.
 function m:acid(s, what)
   local ids = self:acids(s)
   if #ids == 0 then
     self:need("Which aircraft should " .. what .. "? Please give its callsign.")
     return nil
+  end
+  local refs = {}
+  for _, r in ipairs(#ids > 1 and self:refs_in(s.b, s.e, "aircraft") or {}) do
+    if r.exists and not r.false_start then refs[#refs + 1] = r end
+  end
+  local listed = #refs == #ids
+  for k = 2, listed and #refs or 0 do
+    local between = refs[k].b - refs[k - 1].e
+    local sep = self.t[refs[k - 1].e]
+    listed = listed and refs[k].name ~= refs[k - 1].name and (between == 1 and (self:word(refs[k - 1].e, "and")
+      or sep.text == ",") or (between == 2 and sep.text == "," and self:word(refs[k - 1].e + 1, "and")))
+  end
+  if listed and #refs > 1 then
+    self.listed_too = self.listed_too or {}
+    for k = 2, #refs do
+      self.listed_too[#self.listed_too + 1] = refs[k].name
+      self:explain(refs[k - 1].e, refs[k].e)
+    end
   end
   return ids[1]
 end
@@ -4825,7 +4856,13 @@ function m:held_for(s, q, w)
   return true
 end
 function m:at_time(s)
-  if OWN_TIME[s.intent] and not (s.intent == "ff" and self:word(s.trig, "speed spd airspeed")) then return nil end
+  -- ("at 00:12:00 fast forward 10 minutes", "in 5 minutes fast forward 10 minutes": a fast-forward's own duration
+  -- after its verb, a time after "at", "in" or "after" before it is when it starts)
+  local ts = s.intent == "ff" and self:durations(s.b, s.e) or {}
+  local ff_at = #ts == 2 and ts[1].e <= s.trig and ts[2].b > s.trig and self:word(ts[1].b - 1, "at in after")
+  if OWN_TIME[s.intent] and not (s.intent == "ff" and self:word(s.trig, "speed spd airspeed")) and not ff_at then
+    return nil
+  end
   if s.intent == "echo" and s.trig == self:skip_fillers(1) and self:word(s.trig, "echo") then return nil end
   for _, q in ipairs(self:durations(s.b, s.e)) do
     local w = q.b - 1

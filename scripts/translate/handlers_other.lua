@@ -569,7 +569,10 @@ return function(H, f, compass)
         local w = self.t[q.b - 1]
         if w.kind == "word" then
           if not alt and (w.text == "alt" or w.text == "altitude") then alt = q.value end
-          if not spd and not mach and (w.text == "spd" or w.text == "speed") then spd = q.value end
+          -- ("spd .85", "speed point eight two": a decimal fraction below one, a Mach number's form, is the Mach)
+          if not spd and not mach and (w.text == "spd" or w.text == "speed") then
+            if q.number and q.number.decimal and q.value >= 0.3 and q.value < 1 then mach = q.value else spd = q.value end
+          end
           if not hdg and (w.text == "hdg" or w.text == "heading") then hdg = q.value end
           -- ("southbound 170": a number straight after a compass point's "-bound" or "-erly" word, within 90
           -- degrees of it, is the heading it describes)
@@ -3418,6 +3421,21 @@ return function(H, f, compass)
           self:mark_used(r.b - 2, r.b - 1)
         end
       end
+    end
+    -- ("defwpt ZZ1 ... ; defwpt ZZ2 ... and give KLM1234 a route ZZ1 ZZ2": a waypoint this request defines, said
+    -- next in the list, is the next place, as one the scene holds is)
+    local defined = {}
+    for _, c in ipairs(self.out) do
+      local n = c:match("^DEFWPT (%S+)")
+      if n then defined[n:upper()] = true end
+    end
+    while next(defined) and last < s.e do
+      local d = last
+      while self:word(d, "then and") or (self.t[d] and self.t[d].text == ",") do d = d + 1 end
+      if not (d < s.e and defined[self.t[d].raw:upper()]) then break end
+      self:explain(last, d + 1)
+      self:emit("ADDWPT " .. id .. " " .. self.t[d].raw:upper())
+      last = d + 1
     end
     -- ("a route via BIDAC then Bilbao": a place said by its one-word name, capitalised, after "then", "and" or
     -- a comma straight after the route's last place and ending the request, is the next place)

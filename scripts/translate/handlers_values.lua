@@ -432,6 +432,12 @@ return function(H, f, wrap, compass)
     end
     if not target then return self:need("What altitude should " .. ids[1] .. " " .. verb .. " to?") end
     local q = target
+    -- ("descend with 1500": a bare number after "with" is the rate flown with as often as a level: asked; "flight
+    -- with three seven zero" is a level's noun misheard)
+    if q.kind == "plain" and self:word(q.b - 1, "with") and not self:word(q.b - 2, "flight") then
+      return self:need(string.format("Should %s %s to %s ft, or at %s ft/min? I heard 'with %s'.", ids[1], verb,
+        f.int(q.value), f.int(q.value), self:raw(q.b, q.e)))
+    end
     local ft, fl = q.value, q.fl
     -- "CCA1831 and CES5102 same level 8900 metres, head to head": the level every aircraft named already holds
     -- (within 50 ft; 100 ft in metres, China's table), said with "same" and no verb of climbing, descending or

@@ -689,7 +689,7 @@ return {
   -- instruction words of three letters or more that a typing slip one edit from them is read as, beside
   -- spelling.targets (translate/typos.lua: only in a request asked about, every reading of the slip tried), and
   -- how far from the traffic a fix, navaid or airport of the slip's letters keeps it as typed (nautical miles)
-  typo_targets = { "and", "then", "fpm", "route", "hdg", "mach", "level", "proceed", "please",
+  typo_targets = { "and", "then", "fpm", "route", "hdg", "mach", "level", "proceed", "please", "move",
       -- (a pseudo-pilot's readback: "descnding FL90", "decsending FL140")
       "descending", "climbing", "reducing", "increasing", "turning", "maintaining" },
   typo_place_nm = 250,
@@ -2771,9 +2771,12 @@ return {
     -- ("turn lift heading three four zero": a recogniser's "left")
     { heard = { "lift", "loft", "laughed" }, means = "left", after = { "turn" } },
     { heard = { "the send", "this end", "the scent", "decent", "dissent" }, means = "descend",
-      before = { "#number", "flight", "level", "altitude", "to" } },
+      before = { "#number", "flight", "level", "altitude", "to", "fly" } },
     -- ("descent fly-level wan zero zero": the noun heard for the verb before a flight level)
     { heard = { "descent" }, means = "descend", before = { "flight", "fly-level" } },
+    -- ("when passing fly level one zero zero turn right": "flight level" as a recogniser writes it, before its
+    -- number)
+    { heard = { "fly level" }, means = "flight level", before = { "#number" } },
     { heard = { "head in", "heading's" }, means = "heading", before = { "#number" } },
     -- ("show me the root": the route as a recogniser writes it, after its determiner)
     { heard = { "root" }, means = "route", after = { "the", "your", "its", "his", "her", "their" } },
@@ -3308,9 +3311,9 @@ return {
       cria = "create", crie = "create", criar = "create", ["avança"] = "advance", avanca = "advance",
       ["avance"] = "advance",
       -- ("mach ponto sete oito", "perfeito, ...", "tempo real", "retomar", "subindo": point, all right, real time,
-      -- resume, climbing)
+      -- resume, climbing; "descendo", descending, is also a recogniser's "descend to", read as the verb)
       ponto = "point", perfeito = "ok", ["tempo real"] = "real time", retomar = "resume", subindo = "climbing",
-      descendo = "descending",
+      descendo = "descend",
       -- the simulation switched ("liga conflict detection", "pausa a simulação", "continua a simulacao")
       ["simulação"] = "simulation", simulacao = "simulation", liga = "switch on", ligar = "switch on",
       desliga = "switch off", desligar = "switch off",

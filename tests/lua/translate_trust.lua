@@ -7202,7 +7202,8 @@ do
   check_eq(ex("TKZ31 leave DQA heading 090"), "AT TKZ31 DQA DO HDG TKZ31 90")
   -- (after "leave FIX" only a heading straight after it waits; "leave FIX, fly heading" may be now: asked)
   asked(ex("TKZ31 leave DQB, fly heading 120"), "a heading after 'leave FIX' and a comma")
-  asked(ex("TKZ31 leaving DQB turn right heading 120"), "a turn after 'leaving FIX'")
+  -- ("leaving FIX" and the instruction's verb straight after it, no comma: from the waypoint on, R406)
+  check_eq(ex("TKZ31 leaving DQB turn right heading 120"), "AT TKZ31 DQB DO HDG TKZ31 120 RIGHT")
   check_eq(ex("TKZ31 when passing DQA descend flight level 150"), "AT TKZ31 DQA DO ALT TKZ31 FL150")
   check_eq(ex("TKZ31 on passing DQB reduce speed 240 knots"), "AT TKZ31 DQB DO SPD TKZ31 240")
   check_eq(ex("TKZ31 after leaving DQA climb FL200"), "AT TKZ31 DQA DO ALT TKZ31 FL200")
@@ -23747,4 +23748,54 @@ do
     check_eq(ex("ryanair seven tango quebec direct viseu"), "ADDWPT RYR7TQ VIS ; DIRECT RYR7TQ VIS")
     check_eq(ex("set destination Muscat for Emirates eight six two"), "DEST UAE862 OOMS")
   end
+end
+
+-- Cycle 79 (R399): "descend level 060 at ESP" (the value's noun "level" straight after the verb) was read as "be level
+-- at ESP": the descent sent now with a constraint there; the place of a descent said after its value is asked, as
+-- "descend FL060 at ESP" is
+do
+  local _, ex = scene({ "DEFWPT ESP 38.4 -9.2", "CRE RYR9NE B738 38.9 -9.0 200 FL110 280", "ADDWPT RYR9NE ESP" })
+  asked(ex("RYR9NE descend level 060 at ESP"), "the level's noun read as 'be level at'")
+  asked(ex("RYR9NE descend to level 060 at ESP"), "the level's noun after 'to'")
+  check_eq(ex("RYR9NE descend to be level 060 at ESP"), "ALT RYR9NE FL60 ; AT RYR9NE ESP ALT FL60")
+end
+
+-- Cycle 79 (R404, R407, R408): "descend FL200 at 2000 feet per minute, correction, one thousand five hundred" cleared
+-- 1500 ft (a bare number of thousands after a level and a rate corrects either: asked); "descend with 1500" cleared
+-- 1500 ft ("with" names a rate as often as a level: asked); "defwpt ZZ1 ... and give KLM1234 a route ZZ1 and ARTIP"
+-- dropped ZZ1 (a waypoint this request defines, said again and flown by no command: asked); "ZZ1 ZZ2" after both
+-- were defined gave ZZ1 alone
+do
+  local _, ex = scene({ "CRE NAX7PK B738 60 10 180 FL300 280", "CRE TAP1020 A320 38.8 -9.1 090 FL150 280",
+    "CRE KLM1234 B738 52.6 4.2 090 FL200 280", "DEFWPT ARTIP 52.5 5.6", "ADDWPT KLM1234 ARTIP" })
+  check_eq(ex("Norwegian seven papa kilo descend flight level two zero zero, erm, at two thousand feet per minute, "
+    .. "correction, one thousand five hundred"), "ASK Which value does 'one thousand five hundred' correct: flight "
+    .. "level two zero zero or two thousand feet per minute?")
+  check_eq(ex("Air Portugal 1020 reduce 220, descend with 1500"),
+    "ASK Should TAP1020 descend to 1500 ft, or at 1500 ft/min? I heard 'with 1500'.")
+  asked(ex("defwpt ZZ1 52.7 4.8 and give KLM1234 a route ZZ1 and ARTIP"), "a waypoint defined here dropped")
+  check_eq(ex("defwpt ZZ1 52.7 4.8 ; defwpt ZZ2 52.9 5.3 and give KLM1234 a route ZZ1 ZZ2"),
+    "DEFWPT ZZ1 52.7 4.8 ; DEFWPT ZZ2 52.9 5.3 ; ADDWPT KLM1234 ZZ1 ; ADDWPT KLM1234 ZZ2")
+end
+
+-- Cycle 79 (R404, R405, R407): "fly level" before its number in a recogniser's condition; a callsign trailing off
+-- ("...") and a hesitation before another; "spd .85" creating an aircraft is its Mach; "mvoe" typed for "move"
+do
+  local _, ex = scene({ "CRE TKJ7TT A20N 40 30 090 FL080 270", "CRE EIN45A A320 53 -6 090 FL200 280",
+    "CRE EIN123 A320 53 -7 090 FL210 280", "DEFWPT SUGOL 52.5 4.0", "CRE EZY45GH A320 52 4 090 FL200 280" })
+  check_eq(ex("ajet seven tango tango climb fly level one one zero when passing fly level one zero zero turn right "
+    .. "hed ding zero niner zero"), "ALT TKJ7TT FL110 ; ATALT TKJ7TT FL100 HDG TKJ7TT 90 RIGHT")
+  check_eq(ex("EIN45A... uh EIN123 speed two six zero knots"), "SPD EIN123 260")
+  asked(ex("EIN45A... EIN123 speed two six zero knots"), "a callsign trailing off with no hesitation")
+  check_eq(ex("type B744 callsign MPH7 at 52.0 4.0 alt FL340 hdg 315 spd .85"), "CRE MPH7 B744 52 4 315 FL340 M0.85")
+  check_eq(ex("mvoe EZY45GH to SUGOL"), "MOVE EZY45GH SUGOL")
+end
+
+-- Cycle 79 (R398, R406): "at 00:12:00 fast forward 10 minutes" (when it starts, then its own duration); "leaving
+-- MOPAD turn left heading 150" starts at MOPAD (tests above, cycle 41)
+do
+  local _, ex = scene({ "CRE KLM12 B738 52 4 090 FL200 280" })
+  check_eq(ex("at 00:12:00 fast forward 10 minutes"), "SCHEDULE 00:12:00 FF 600")
+  check_eq(ex("in 5 minutes fast forward 10 minutes"), "DELAY 300 FF 600")
+  check_eq(ex("fast forward 10 minutes"), "FF 600")
 end
