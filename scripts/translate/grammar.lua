@@ -16891,6 +16891,20 @@ function G:same_for()
   return named
 end
 
+-- "descend FL120, level two five zero knots": a speed of more than 1000 kt in any command (a level's words read with a
+-- speed's unit) is no speed anyone clears: asked, never sent.
+function G:speed_beyond_reason()
+  for _, line in ipairs(self.out) do
+    for kt in line:gmatch("SPD %S+ (%d+%.?%d*)") do
+      if tonumber(kt) > 1000 then
+        self.ask = string.format("I have %s, but a speed of %s kt is no speed to fly. Which speed do you mean?",
+          table.concat(self.out, " ; "), kt)
+        return
+      end
+    end
+  end
+end
+
 -- "defwpt ZZ1 52.7 4.8 and give KLM1234 a route ZZ1 and ARTIP": a waypoint this request defines, said again after its
 -- definition, that no other command names was dropped where it was said again (its later words read as the
 -- definition's): asked, never sent without it.
@@ -19912,6 +19926,7 @@ function M.translate(text, world)
   for _, id in ipairs(g.listed_too or {}) do same[#same + 1] = id end
   g:same_again(same)
   if not g.ask then g:defined_unused() end
+  if not g.ask then g:speed_beyond_reason() end
   if not g.ask then g:forgotten() end
   if not g.ask then g:predicated() end
   if not g.ask then g:unknown_places() end

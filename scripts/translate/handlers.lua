@@ -1050,14 +1050,14 @@ function m:airline_only(s)
     local fits = icao and self:airline_name_shared(self:said_name(i, e), self:airline_fleet(icao, codes)) or {}
     if #fits > 1 then
       -- (said alone as the addressee, one of the callsigns named answers it: confirm.choices, m:alone_confirmed)
-      if not self:word(i - 1, "the") and self:alone_addressee(i, e) then
+      if not self:word(i - 1, "the") and self:alone_addressee(i, e, true) then
         self.confirm = self.confirm or { choices = fits, heard = self:raw(i, e) }
       end
       return self:need(string.format("Which %s: %s?", self:raw(i, e), table.concat(fits, " or ")))
     end
     -- ("Ryanair, turn left 40" with RYR4KP the one Ryanair flying: a callsign cut short, asked by naming the one
     -- it fits; a yes reads the request again with that callsign confirmed, m:alone_confirmed)
-    if #fits == 1 and not self:word(i - 1, "the") and self:alone_addressee(i, e)
+    if #fits == 1 and not self:word(i - 1, "the") and self:alone_addressee(i, e, true)
         and not (self.world.confirmed or {})[fits[1]] and not self:names_aircraft(fits[1]) then
       self.confirm = self.confirm or { id = fits[1], heard = self:raw(i, e), choices = fits }
       return self:need(string.format("%s alone is not a callsign: do you mean %s?", self:raw(i, e), fits[1]))
@@ -1272,8 +1272,17 @@ end
 -- True when the airline over tokens b..e-1, said without "the", stands as a clause's addressee: written with a
 -- capital, opening the utterance or a clause (after punctuation, "and" or "then"), no correction after it, and no
 -- callsign said in its clause (up to the next punctuation, "and" or "then") or straight after it.
-function m:alone_addressee(b, e)
-  if not self.t[b].raw:match("%u") then return false end
+-- True when the airline's name over tokens b..e-1, typed in lower case, is words squawk knows as no other
+-- ("ryanair turn right 40 degrees"; "easy" or "delta" in lower case are words).
+function m:airline_cased(b, e)
+  for k = b, e - 1 do
+    if self.name_words[self.t[k].text] == false then return false end
+  end
+  return true
+end
+function m:alone_addressee(b, e, asking)
+  -- (in lower case only to ask about it, "ryanair turn right 40 degrees": m:airline_only; taken, never)
+  if not (self.t[b].raw:match("%u") or (asking and self:airline_cased(b, e))) then return false end
   local function clause_break(k)
     return self.t[k].kind == "punct" or self:word(k, "and @then_words")
   end
@@ -1293,7 +1302,7 @@ function m:alone_confirmed(b, e, fits)
   for _, id in ipairs(fits) do
     if (self.world.confirmed or {})[id] then n = n + 1 end
   end
-  return n == 1 and self:alone_addressee(b, e)
+  return n == 1 and self:alone_addressee(b, e, true)
 end
 
 -- True when the airline named over tokens b..e-1 without "the" is a clause's addressee

@@ -61,6 +61,16 @@ return function(H, f, wrap, compass)
           return self:need(string.format("Heading %s or flight level %s? Please say which.", f.int(q.value),
             f.int(q.value)))
         end
+        -- ("BAW5 two four zero", "EWG7, three one zero": three digits said straight after the callsign, no word
+        -- before them and none led by zero, name a heading, a flight level or a speed alike: asked)
+        local p = q.b - 1
+        while p > s.b and (self.t[p].filler or self.t[p].text == ",") do p = p - 1 end
+        local r = self:refs_in(s.b, q.b, "aircraft")
+        r = r[#r]
+        if r and r.e == p + 1 and not n.digits:find("^0") then
+          return self:need(string.format("Heading %s, flight level %s or %s knots for %s? Please say which.",
+            f.int(q.value), f.int(q.value), f.int(q.value), r.name:upper()))
+        end
         return self:heading(s)
       end
     end

@@ -625,6 +625,20 @@ return function(intent, rule, words)
     return q ~= nil and q.b == i + 2
       and (q.kind == "alt" or (q.kind == "plain" and q.value >= 1000 and q.value % 100 == 0))
   end }
+  -- "RYR8 down one two zero", "KLM12 up two four zero, BAW5 down three one zero", "..., down seven thousand": clipped
+  -- R/T, the adverb straight after the callsign or opening a clause, a level straight after it (hundreds of feet said
+  -- as a flight level, or thousands); a rate's or a speed's unit after it is no level
+  rule { "up down", "alt", not_near = { 4, "speed knots kts kt fpm minute min feet/min" }, not_prev = { 2, "speed spd slow" },
+         when = function(g, i)
+    local p = g.t[i - 1]
+    local opens = p == nil or p.kind == "punct" or g:word(i - 1, "then and")
+    for _, r in ipairs(g.refs) do
+      if r.kind == "aircraft" and r.e == i then opens = true end
+    end
+    local q = opens and g:quantities(i + 1, math.min(#g.t + 1, i + 6))[1]
+    return q ~= nil and q ~= false and q.b == i + 1 and (q.kind == "alt"
+      or (q.kind == "plain" and (q.number.thousand or (q.value >= 10 and q.value <= 600 and q.value % 1 == 0))))
+  end }
   -- "left 40 and down 4000 ft": an amount in feet after the adverb is a change of level
   rule { "up down", "alt", near = { 2, "@feet" }, when = function(g, i)
     local t = g.t[i + 1]

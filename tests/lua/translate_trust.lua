@@ -23799,3 +23799,22 @@ do
   check_eq(ex("in 5 minutes fast forward 10 minutes"), "DELAY 300 FF 600")
   check_eq(ex("fast forward 10 minutes"), "FF 600")
 end
+
+-- Cycle 79 (R411, R412): clipped R/T, "RYR8 down one two zero", read FL120 as a heading; "BAW5 two four zero" (three
+-- digits alone after the callsign, none led by zero) flew heading 240: a heading, a level or a speed alike, asked;
+-- "level two five zero knots" after a descent sent a speed of 25000 kt; "ryanair turn right 40 degrees" in lower
+-- case asked for a callsign, now it asks whether the one Ryanair flying is meant (a yes sends the turn)
+do
+  local s, ex = scene({ "CRE RYR8 B738 52 4 090 FL200 280", "CRE BAW5 A320 52 5 090 FL350 280",
+    "CRE KLM12 B738 53 4 090 FL300 280", "CRE EZY45 A320 52 3 090 FL200 280" })
+  check_eq(ex("RYR8 down one two zero"), "ALT RYR8 FL120")
+  check_eq(ex("KLM12 right one five zero, EZY45 up two three zero"), "HDG KLM12 150 RIGHT ; ALT EZY45 FL230")
+  check_eq(ex("BAW5 down three one zero, KLM12 left one zero zero"), "ALT BAW5 FL310 ; HDG KLM12 100 LEFT")
+  check_eq(ex("BAW5 two four zero"), "ASK Heading 240, flight level 240 or 240 knots for BAW5? Please say which.")
+  check_eq(ex("BAW5 zero four zero"), "HDG BAW5 40")
+  asked(ex("RYR8 descend FL120, level 250 knots"), "a level's words read with a speed's unit")
+  check_eq(ex("ryanair turn right 40 degrees"), "ASK ryanair alone is not a callsign: do you mean RYR8?")
+  local r = graph.translate("ryanair turn right 40 degrees", { sim = s, mode = "offline", confirmed = { RYR8 = true } })
+  check_eq(said(r), "HDG RYR8 130 RIGHT")
+  asked(ex("easy turn right 40 degrees"), "'easy' in lower case is a word")
+end
