@@ -16895,7 +16895,7 @@ end
 -- speed's unit) is no speed anyone clears: asked, never sent.
 function G:speed_beyond_reason()
   for _, line in ipairs(self.out) do
-    for kt in line:gmatch("SPD %S+ (%d+%.?%d*)") do
+    for kt in line:gmatch("%f[%a]SPD %S+ (%d+%.?%d*)") do
       if tonumber(kt) > 1000 then
         self.ask = string.format("I have %s, but a speed of %s kt is no speed to fly. Which speed do you mean?",
           table.concat(self.out, " ; "), kt)
