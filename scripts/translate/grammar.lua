@@ -19456,6 +19456,24 @@ function G.compass_offset(text)
   end
   return table.concat(out) .. text:sub(from)
 end
+-- "sim.speed = 4", "cd.enabled = true", "DLH5.route.append(EEL)", "EZY45.pos()", "EIN3AK.move(53.8, -5.5)": a
+-- programmer's half-code at the scope, read as the words it spells: a dot between two names and a name's brackets as
+-- spaces, a comma inside the brackets dropped, "= true" and "= false" as "on" and "off", any other "=" as a space.
+-- Only a request holding a dotted name ("a.b", in lower case after the dot) with code after it, brackets or "=", is
+-- read so: "M.78", "52.3", "westbound.scn" (a file) and "FL200.Then" (a sentence ended) are no such names.
+local FILE_KINDS = set_of({ "scn", "lua", "txt", "csv", "tsv", "json", "log", "py", "png", "html" })
+function G.code_like(text)
+  if not (text:find("%a[%w_]*%.%l") and (text:find("%a%(") or text:find("=", 1, true))) then return text end
+  for _ = 1, 3 do
+    text = text:gsub("(%f[%w][%a_][%w_]*)%.(%l[%w_]*)", function(a, b)
+      if not FILE_KINDS[b] then return a .. " " .. b end
+    end)
+  end
+  text = text:gsub("(%a)%(([^%)]*)%)", function(name, inner) return name .. " " .. inner:gsub(",", " ") end)
+  text = text:gsub("%s*=%s*[Tt]rue%f[%A]", " on"):gsub("%s*=%s*[Ff]alse%f[%A]", " off")
+  return (text:gsub("%s*[%+%-]?=%s*", function(op) return op:find("[%+%-]") and op or " " end))
+end
+
 function M.translate(text, world)
   local said = text
   world = world or {}
@@ -20343,6 +20361,13 @@ function M.translate(text, world)
   if summed then return summed end
   local r = M.read_heard(text, world)
   if not r.ask then return r end
+  -- (half-code that the fields read of aircraft do not read, "sim.speed = 4", "DLH5.route.append(EEL)", understood not
+  -- at all: read again as the words it spells, G.code_like; taken only when that reading asks nothing)
+  local spelled = r.ask == M.not_understood and G.code_like(text) or text
+  if spelled ~= text then
+    local again = M.read_heard(spelled, world)
+    if not again.ask then return again end
+  end
   return M.typos.reread(text, world or {}, r, M.read_typed)
 end
 

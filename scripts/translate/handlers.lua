@@ -4252,6 +4252,24 @@ function m:brand_twins(r)
   return out
 end
 
+-- The one aircraft flying whose registration the callsign `heard` abbreviates as ICAO radiotelephony does after first
+-- contact: its first character and its last two ("Golf Charlie Delta", GCD, for G-ABCD), or an N-number's last
+-- characters ("three alpha bravo" for N123AB); nil when none or several fit. Only the question names it: an
+-- abbreviated callsign is confirmed, never taken.
+function m:abbreviated_registration(heard)
+  local one
+  for _, ac in ipairs(#heard >= 3 and #heard <= 4 and self.fleet or {}) do
+    local id = ac.id:upper()
+    local fits = #id > #heard and ((heard:match("^%a+$") and id:sub(1, 1) == heard:sub(1, 1)
+      and id:sub(-(#heard - 1)) == heard:sub(2)) or (id:match("^N%d") and heard:match("^%d") and id:sub(-#heard) == heard))
+    if fits then
+      if one then return nil end
+      one = id
+    end
+  end
+  return one
+end
+
 -- A spoken callsign matched to an aircraft whose airline or digits differ
 -- from what was heard is asked about, unless the speaker confirmed it; so is one said with a later part of
 -- its airline's telephony only (m:telephony_part_only), or with its last digit heard as a word
@@ -4279,8 +4297,9 @@ function m:confirm_callsigns(s)
       if unsaid then
         self:need(string.format("There is no aircraft '%s'. Which aircraft do you mean?", unsaid))
       else
-        self.confirm = self.confirm or { id = r.name, heard = h.id }
-        self:need(string.format("Did you mean %s? I heard %s.", r.name, h.id))
+        local meant = self:abbreviated_registration(h.id) or r.name
+        self.confirm = self.confirm or { id = meant, heard = h.id }
+        self:need(string.format("Did you mean %s? I heard %s.", meant, h.id))
       end
     end
   end
@@ -5106,14 +5125,15 @@ function m:sentence_before(q, trig)
   return true
 end
 
--- True when quantity q is said after "at" that opens a clause after a value said before it: a comma, "and" or
--- "then" before "at" ("climb FL160, at FL160 ...", "... then at FL160 ...", "... and at FL140 ..."), or a level
+-- True when quantity q is said after "at" that opens a clause after a value said before it: a comma, a full stop or
+-- a semicolon (a list's next step: "1. climb FL080, 2. at FL080 turn left"), "and" or "then" before "at" ("climb
+-- FL160, at FL160 ...", "... then at FL160 ...", "... and at FL140 ..."), or a level
 -- straight before "at" when q is a level too (a recogniser's "climb and maintain FL240 at 15000 increase speed":
 -- no level is said "at" another).
 function m:at_clause(q)
   local k = q.b - 2
   if not (self:word(q.b - 1, "at") and self.t[k] ~= nil) then return false end
-  if (self.t[k].kind == "punct" and self.t[k].text == ",") or self:word(k, "and @then_words") then
+  if (self.t[k].kind == "punct" and (", . ;"):find(self.t[k].text, 1, true)) or self:word(k, "and @then_words") then
     return #self:quantities(1, k) > 0
   end
   if q.kind ~= "alt" then return false end

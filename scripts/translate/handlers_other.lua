@@ -573,7 +573,8 @@ return function(H, f, compass)
           if not spd and not mach and (w.text == "spd" or w.text == "speed") then
             if q.number and q.number.decimal and q.value >= 0.3 and q.value < 1 then mach = q.value else spd = q.value end
           end
-          if not hdg and (w.text == "hdg" or w.text == "heading") then hdg = q.value end
+          -- ("facing 250": a newcomer's word for the heading)
+          if not hdg and (w.text == "hdg" or w.text == "heading" or w.text == "facing") then hdg = q.value end
           -- ("southbound 170": a number straight after a compass point's "-bound" or "-erly" word, within 90
           -- degrees of it, is the heading it describes)
           local c = L.compass[w.text:match("^(%a+)bound$") or w.text:match("^(%a+)erly$") or ""]

@@ -1442,8 +1442,9 @@ return {
   -- (an episode: one run of a learning environment; "env", "environment": the environment itself)
   -- (a replay: recorded traffic run again, in an analyst's words: "pause the replay", "remove X from the replay")
   -- (a serial: one run of a military exercise, "resume the serial")
+  -- (a game: the simulation in a newcomer's words, "pause the game", "make the game go 10x")
   sim = { "simulation", "sim", "simulator", "time", "exercise", "clock", "episode", "env", "environment", "replay",
-          "playback", "serial" },
+          "playback", "serial", "game" },
   -- (an agent: an aircraft, in a learning environment's words)
   -- what an aircraft has, named after its owner's possessive typed without an apostrophe ("ual22s route":
   -- grammar.lua G.possessive_ids)
@@ -2791,6 +2792,11 @@ return {
     { heard = { "for" }, means = "four", between = { { "zero", "one", "two", "three", "four", "five", "six", "seven",
       "eight", "nine", "niner", "tree", "fife", "won" }, { "climb", "descend", "reduce", "increase", "turn", "maintain",
       "proceed", "direct", "fly", "speed", "heading" } } },
+    -- ("descend and maintain ate thousand", "mach point ate one", "one ate zero": a recogniser's "eight" beside a
+    -- number or before its count)
+    { heard = { "ate" }, means = "eight", before = { "#number", "thousand", "hundred" } },
+    { heard = { "ate" }, means = "eight", after = { "zero", "one", "two", "three", "four", "five", "six", "seven", "eight",
+      "nine", "niner", "tree", "fife", "won", "point", "decimal" } },
     -- ("set the time multiplier to too": a digit closing the request after "to" or "times")
     { heard = { "too" }, means = "two", closed_after = { "to", "times" } },
     { heard = { "nots", "notts", "nuts", "knot's" }, means = "knots", after = { "#number" } },

@@ -3910,9 +3910,9 @@ return function(intent, rule, words)
   rule { "detection resolution asas cd", false, prev = { 3, "for of by" }, when = function(g, i)
     return g:word_in(math.max(1, i - 10), i, "look lookahead dtlook zone radius separation distance")
   end }
-  -- "conflict detection look ahead five minutes": detection names the look-ahead's owner, no switch (one is
-  -- said with an on or off word: "detection on, look ahead 5 minutes")
-  rule { "detection asas cd", false, near = { 2, "look lookahead dtlook" }, when = function(g, i)
+  -- "conflict detection look ahead five minutes", "cd hpz 1000ft": detection names the setting's owner, no switch
+  -- (one is said with an on or off word: "detection on, look ahead 5 minutes")
+  rule { "detection asas cd", false, near = { 2, "look lookahead dtlook hpz rpz zonedh zoner" }, when = function(g, i)
     return not g:word_in(math.max(1, i - 3), math.min(#g.t + 1, i + 4), "@on @off")
   end }
   -- "look-ahead five minutes on the conflict probe", "probe look-ahead two minutes": the conflict probe is

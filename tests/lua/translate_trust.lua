@@ -23818,3 +23818,46 @@ do
   check_eq(said(r), "HDG RYR8 130 RIGHT")
   asked(ex("easy turn right 40 degrees"), "'easy' in lower case is a word")
 end
+
+-- Cycle 79 (R412): a newcomer's words: "the game" is the simulation; "facing 250" creating an aircraft is its heading
+do
+  local _, ex = scene({ "CRE KLM12 B738 52 4 090 FL200 280" })
+  check_eq(ex("make the game go 10x"), "DTMULT 10")
+  check_eq(ex("hold on pause the game"), "HOLD")
+  check_eq(ex("put a new A320 called DLH7 at 50.03 8.57 facing 250"), "CRE DLH7 A320 50.03 8.57 250")
+end
+
+-- Cycle 79 (R410): an abbreviated registration ("Golf Charlie Delta" for G-ABCD after first contact) named another
+-- aircraft in its question (GOCTU); the question names the one registration the abbreviation fits (a yes sends it)
+do
+  local _, ex = scene({ "CRE GABCD C172 50.9 -1.4 090 3000 100", "CRE GOCTU PA28 50.8 -1.3 180 2500 95",
+    "CRE N123AB C172 42.4 -71.1 090 3000 100" })
+  check_eq(ex("Golf Charlie Delta climb altitude three thousand five hundred feet"), "ASK Did you mean GABCD? I heard GCD.")
+  check_eq(ex("three alpha bravo, climb and maintain four thousand five hundred"), "ASK Did you mean N123AB? I heard 3AB.")
+end
+
+-- Cycle 79 (R417): a recogniser's "ate" for eight beside a number word or before its count ("descend and maintain ate
+-- thousand", "mach point ate one"); after a typed number it stays asked (cycle 45)
+do
+  local _, ex = scene({ "CRE AAL2460 B738 33 -97 090 FL200 280", "CRE FDX1201 B763 33 -96 090 FL230 290" })
+  check_eq(ex("american twenty four sixty descend and maintain ate thousand"), "ALT AAL2460 8000")
+  check_eq(ex("fedex twelve oh one maintain mach point ate one"), "SPD FDX1201 M0.81")
+  asked(ex("AAL2460 reduce 240 ate"), "'ate' after a typed number")
+end
+
+-- Cycle 79 (R416, R418): a programmer's half-code at the scope that no field reading takes ("sim.speed = 4",
+-- "cd.enabled = true", "DLH5.route.append(EEL)", "EZY45.pos()") read as the words it spells when nothing else is
+-- understood; "cd hpz 1000ft" names the detection's setting, no switch; a numbered list's next step "2. at FL080
+-- turn left" waits for FL080 (the step's full stop opens the clause as a comma does: it flew the turn at once)
+do
+  local _, ex = scene({ "CRE EZY45 A320 52 4 090 FL200 280", "CRE DLH5 A321 52 5 090 FL300 290",
+    "DEFWPT EEL 53.2 6.7", "CRE BAW77 A320 51 0 090 5000 250" })
+  check_eq(ex("sim.speed = 4"), "DTMULT 4")
+  check_eq(ex("cd.enabled = true"), "ASAS ON")
+  check_eq(ex("DLH5.route.append(EEL)"), "ADDWPT DLH5 EEL")
+  check_eq(ex("EZY45.pos()"), "POS EZY45")
+  asked(ex("% EZY45.alt = 31000"), "a commented-out assignment stays asked")
+  check_eq(ex("cd hpz 1000ft"), "ZONEDH 1000")
+  check_eq(ex("1. Speedbird 77 climb FL080, 2. at FL080 turn left heading 180, 3. speed 250"),
+    "ALT BAW77 FL80 ; ATALT BAW77 FL80 HDG BAW77 180 LEFT ; SPD BAW77 250")
+end
