@@ -409,6 +409,7 @@ local names = {
     { "arabia", "ABY" },  -- (Air Arabia)
     { "oman air", "OMA" },
     { "oman", "OMA" },  -- (Oman Air as Gulf controllers say it: "Oman six four one")
+    { "aeroitalia", "AEZ" },  -- (Aeroitalia, Italy)
     { "volotea", "VOE" },
     { "swiftair", "SWT" },  -- (Swiftair, Spain; its ICAO telephony is "Swift", an English word)
     { "shuttle", "SHT" },  -- (British Airways Shuttle)

@@ -23861,3 +23861,20 @@ do
   check_eq(ex("1. Speedbird 77 climb FL080, 2. at FL080 turn left heading 180, 3. speed 250"),
     "ALT BAW77 FL80 ; ATALT BAW77 FL80 HDG BAW77 180 LEFT ; SPD BAW77 250")
 end
+
+-- Cycle 79 (R419): "KLM 1593, stop climb at five thousand feet" at 6000 ft, level, cleared 5000 ft (a descent): a
+-- climb or descent stopped at a level the aircraft is already past is asked; "X.route = []" (a field cleared) is no
+-- half-code spelled as words (it listed the route)
+do
+  local _, ex = scene({ "CRE KLM1593 B737 51.3 -0.1 330 6000 220", "DEFWPT BNN 51.7 -0.55", "ADDWPT KLM1593 BNN" })
+  check_eq(ex("KLM 1593, stop climb at five thousand feet"),
+    "ASK KLM1593 is at 6000 ft: stop its climb at 5000, below it? Please confirm the altitude.")
+  check_eq(ex("KLM 1593, stop climb at seven thousand feet"), "ALT KLM1593 7000")
+  asked(ex("KLM1593.route = []"), "a field cleared")
+end
+
+-- Cycle 79 (R420): Aeroitalia by its name
+do
+  local _, ex = scene({ "CRE AEZ701 A320 41.8 12.2 090 FL200 280" })
+  check_eq(ex("Aeroitalia seven zero one, fly heading zero nine zero"), "HDG AEZ701 90")
+end
