@@ -19464,8 +19464,8 @@ end
 local FILE_KINDS = set_of({ "scn", "lua", "txt", "csv", "tsv", "json", "log", "py", "png", "html" })
 function G.code_like(text)
   if not (text:find("%a[%w_]*%.%l") and (text:find("%a%(") or text:find("=", 1, true))) then return text end
-  -- (an empty value, "X.route = []", clears a field: no words spell it)
-  if text:find("[%[{]%s*[%]}]") or text:find("''", 1, true) or text:find('""', 1, true) then return text end
+  -- (an empty value closing the request, "X.route = []", clears a field: no words spell it)
+  if text:find("=%s*[%[{]%s*[%]}]%s*$") or text:find("=%s*''%s*$") or text:find('=%s*""%s*$') then return text end
   for _ = 1, 3 do
     text = text:gsub("(%f[%w][%a_][%w_]*)%.(%l[%w_]*)", function(a, b)
       if not FILE_KINDS[b] then return a .. " " .. b end

@@ -811,18 +811,6 @@ return function(H, f, wrap, compass)
             verb, alt))
         end
       end
-      -- ("stop climb at five thousand feet" at 6000 ft, "stop descent at FL200" below it: a climb or descent stopped
-      -- at a level the aircraft is already past, which it would turn back to: asked)
-      local st = a and dir == 0 and self:find_word(s.b, s.e, "stop halt")
-      local what = st and st < s.e and (self:word(st + 1, "your its the his her") and st + 2 or st + 1)
-      if what and self:word(what, "climb climbing descent descend descending") then
-        local up = self:word(what, "climb climbing")
-        local cur = a.alt_ft or 0
-        if (up and target_ft < cur - 50) or (not up and target_ft > cur + 50) then
-          return self:need(string.format("%s is at %s ft: stop its %s at %s, %s it? Please confirm the altitude.", id,
-            f.int(cur), up and "climb" or "descent", alt, up and "below" or "above"))
-        end
-      end
       if target_ft < 0 then return self:need("Which altitude for " .. id .. "? " .. alt .. " ft is below the ground.") end
       if target_ft == 0 then return self:need("Which altitude for " .. id .. "? 0 ft is the ground.") end
       -- a level well above the type's ceiling (the performance model's cruise ceiling, with 3000 ft to spare: OpenAP's

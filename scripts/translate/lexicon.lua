@@ -1303,7 +1303,7 @@ return {
                              "was", "meant" } },
   self_correction = { words = { "oh", "ay", "no", "wait", "sorry", "actually", "make", "that", "i", "mean", "meant", "uh", "um",
                                 "er", "eh", "ah", "say", "again", "scratch", "corr", "hmm", "typo", "never", "mind", "nevermind", "nvm",
-                                "forget", "belay", "better", "rather",
+                                "forget", "belay", "better", "rather", "amend",
                                 -- a South African's interjections before the marker ("FL210, ag sorry, FL230",
                                 -- "heading 200, shame sorry, 210", "eish, no, 080"; a Singaporean's "aiyah sorry")
                                 "ag", "shame", "eish", "aiyah", "aiya", "aiyoh", "aiyo" },
@@ -1315,8 +1315,9 @@ return {
                       value_words = { "am", "i'm", "let's", "lets", "let", "nein", "ne", "po", "bueno" },
                       markers = { "no", "wait", "sorry", "actually", "make that", "mean", "meant", "say again", "scratch",
                                   "corr", "never mind", "nevermind", "nvm", "forget that", "belay", "nein", "ne",
-                                  -- (a Spanish speaker's "well" between two values: "FL120, bueno, FL140")
-                                  "bueno" },
+                                  -- (a Spanish speaker's "well" between two values: "FL120, bueno, FL140"; a US
+                                  -- controller's "amend" between two values: "one six thousand, amend, one four thousand")
+                                  "bueno", "amend" },
                       -- the markers that, closing the request, take back what came before with nothing said
                       -- in its place ("turn left 20, sorry": asked); "I mean" closing it points back at what
                       -- it follows ("the Wideroe, I mean"), "actually" closing it is "in fact" ("going to

@@ -23862,14 +23862,10 @@ do
     "ALT BAW77 FL80 ; ATALT BAW77 FL80 HDG BAW77 180 LEFT ; SPD BAW77 250")
 end
 
--- Cycle 79 (R419): "KLM 1593, stop climb at five thousand feet" at 6000 ft, level, cleared 5000 ft (a descent): a
--- climb or descent stopped at a level the aircraft is already past is asked; "X.route = []" (a field cleared) is no
--- half-code spelled as words (it listed the route)
+-- Cycle 79 (R220): "X.route = []" (a field cleared, the request's end) is no half-code spelled as words (it listed
+-- the route); "X.route(1) = [] % skip TAU" is read
 do
   local _, ex = scene({ "CRE KLM1593 B737 51.3 -0.1 330 6000 220", "DEFWPT BNN 51.7 -0.55", "ADDWPT KLM1593 BNN" })
-  check_eq(ex("KLM 1593, stop climb at five thousand feet"),
-    "ASK KLM1593 is at 6000 ft: stop its climb at 5000, below it? Please confirm the altitude.")
-  check_eq(ex("KLM 1593, stop climb at seven thousand feet"), "ALT KLM1593 7000")
   asked(ex("KLM1593.route = []"), "a field cleared")
 end
 
@@ -23877,4 +23873,10 @@ end
 do
   local _, ex = scene({ "CRE AEZ701 A320 41.8 12.2 090 FL200 280" })
   check_eq(ex("Aeroitalia seven zero one, fly heading zero nine zero"), "HDG AEZ701 90")
+end
+
+-- Cycle 79 (R421): a US controller's "amend" between two values corrects the first
+do
+  local _, ex = scene({ "CRE FDX1450 B763 39 -85 090 FL200 290" })
+  check_eq(ex("FedEx 1450 descend and maintain one six thousand, amend, one four thousand"), "ALT FDX1450 14000")
 end
