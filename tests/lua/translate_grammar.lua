@@ -399,12 +399,16 @@ do -- polite sentences and hurried shorthand (round 5 and 6 classes)
 end
 
 do -- a place named that no command carries is asked about by name; one a direct-to passes, or an abbreviation, is not
-  local w = { aircraft = { plane("KLM12", 110, 27000, 300, { "LAMSO", "SUGOL" }) }, waypoints = { "LAMSO", "SUGOL" } }
+  local w = { aircraft = { plane("KLM12", 110, 27000, 300, { "LAMSO", "SUGOL" }) },
+    waypoints = { "LAMSO", "SUGOL", "ARTIP" } }
   check_eq(tr("klm12 dc sugol fl230", w), "ASK I have ALT KLM12 FL230. What does 'sugol' mean?")
   check_eq(tr("KLM12 climb FL300 for EHAM", w), "ASK I have ALT KLM12 FL300. What does 'EHAM' mean?")
   check_eq(tr("KLM12 skip LAMSO, route direct SUGOL", w), "DIRECT KLM12 SUGOL")
   check_eq(tr("KLM12 turn left heading 360, maintain VFR", w), "HDG KLM12 360 LEFT")
-  check_eq(tr("KLM12 after LAMSO add the waypoint SUGOL", w), "ADDWPT KLM12 SUGOL,,,LAMSO")
+  check_eq(tr("KLM12 after LAMSO add the waypoint ARTIP", w), "ADDWPT KLM12 ARTIP,,,LAMSO")
+  -- (a place the route holds already, inserted again beside another, is asked: cycle 79)
+  check_eq(tr("KLM12 after LAMSO add the waypoint SUGOL", w),
+    "ASK SUGOL is already on the route of KLM12. Should it be added a second time?")
 end
 
 do -- a distance from a place before an instruction is its condition (ATDIST, NM); one past a place is asked
