@@ -2220,6 +2220,20 @@ return function(intent, rule, words)
     for _, r in ipairs(g:refs_in(1, i - 1, "aircraft")) do named = named or r.e == i - 1 end
     return named and g:word(i + 1, g:word(i, "land") and "at in" or "to") and airport_at(g, i + 2)
   end }
+  -- "set the ryanair to land at shannon", "make the air france land at orly": an aircraft that a verb of sending
+  -- names straight before "(to) land" at an airport, its destination (a newcomer's words; "SWR38F land at Zurich",
+  -- no such verb, is a landing clearance, asked)
+  rule { "land", "dest", when = function(g, i)
+    local k = g:word(i - 1, "to") and i - 2 or i - 1
+    local sent = false
+    for _, r in ipairs(g:refs_in(1, i, "aircraft")) do
+      local v = g:word(r.b - 1, "the") and r.b - 2 or r.b - 1
+      sent = sent or (r.e == k + 1 and g:word(v, "set send make have get tell let"))
+    end
+    -- (a runway or an approach said with it, "land at Schiphol runway 18R", is the landing itself, asked)
+    return sent and g:word(i + 1, "at in") and airport_at(g, i + 2)
+      and not g:word_in(i + 2, #g.t + 1, "runway rwy ils approach visual")
+  end }
   rule { "land landing", "dest", when = function(g, i)
     local at = g:word(i + 1, "at in") and i + 1 or g:word(i + 1, "it him her them") and g:word(i + 2, "at in") and i + 2
     return at and earlier(g, i, "addwpt") and airport_at(g, at + 1) or false

@@ -23880,3 +23880,16 @@ do
   local _, ex = scene({ "CRE FDX1450 B763 39 -85 090 FL200 290" })
   check_eq(ex("FedEx 1450 descend and maintain one six thousand, amend, one four thousand"), "ALT FDX1450 14000")
 end
+
+-- Cycle 79 (R412): a newcomer's "set the ryanair to land at shannon": an aircraft named straight before "(to) land" at
+-- an airport is its destination; "cleared to land" (an approach clearance) stays not simulated
+do
+  local s = navscene({ "CRE RYR2LM B738 53.2 -7.5 240 FL150 280", "CRE EIN12 A320 53.4 -6.3 090 3000 160" },
+    "land at a named airport")
+  if s then
+    local function ex(text) return said(graph.translate(text, { sim = s, mode = "offline" })) end
+    check_eq(ex("set the ryanair to land at shannon"), "DEST RYR2LM EINN")
+    check(ex("EIN12 cleared to land runway 28"):find("DEST") == nil, "a landing clearance is no destination")
+    check(ex("make EIN12 land at Dublin runway 28"):find("DEST") == nil, "a landing on a runway is no destination")
+  end
+end
