@@ -3047,7 +3047,8 @@ function G.level_before_verb(text)
   -- feet descend", "speed 250 reduce": a level or speed said before its verb of climb, descent or speed is said
   -- with the verb first ("descend flight level 230"), so that a condition before or after it is read as with the
   -- English order; not after a word that makes the value a condition's or a limit's ("at FL240 climb ...",
-  -- "passing 5000 feet descend"), nor before "rate" ("FL280 climb rate ...")
+  -- "passing 5000 feet descend"), nor before "rate" ("FL280 climb rate ..."); feet of fewer than three digits are
+  -- no level ("DLH6FT climb FL240", "Lufthansa 6FT climb": a callsign's letters)
   local function reorder(pat, verbs)
     rewrite("()" .. pat .. "%s+(%a+)%f[%A]()", function(b, value, verb, e)
       if not verbs[verb:lower()] then return nil end
@@ -3060,8 +3061,8 @@ function G.level_before_verb(text)
   if has("climb") or has("descend") then
     if has("flight") then reorder("(%f[%a][Ff]light%s+[Ll]evel%s+%d%d%d?)", G.vertical_verbs) end
     if has("fl") then reorder("(%f[%a][Ff][Ll]%s*%d%d%d?)", G.vertical_verbs) end
-    if has("feet") then reorder("(%f[%d]%d[%d,]*%s*[Ff][Ee][Ee][Tt])", G.vertical_verbs) end
-    if has("ft") then reorder("(%f[%d]%d[%d,]*%s*[Ff][Tt])", G.vertical_verbs) end
+    if has("feet") then reorder("(%f[%d]%d[%d,][%d,]+%s*[Ff][Ee][Ee][Tt])", G.vertical_verbs) end
+    if has("ft") then reorder("(%f[%d]%d[%d,][%d,]+%s*[Ff][Tt])", G.vertical_verbs) end
   end
   if has("speed") and (has("reduce") or has("increase")) then reorder("(%f[%a][Ss]peed%s+%d%d%d?)", G.speed_verbs) end
   -- "speed 210, and when 210, 5000 feet descend": a bare number straight after "when" or "once" and before a

@@ -23893,3 +23893,12 @@ do
     check(ex("make EIN12 land at Dublin runway 28"):find("DEST") == nil, "a landing on a runway is no destination")
   end
 end
+
+-- Cycle 80: a callsign ending in FT ("DLH6FT climb FL240", "Lufthansa 6FT climb FL240") is no level of 6 ft said
+-- before its verb (the climb went to the aircraft's airline alone, asked)
+do
+  local _, ex = scene({ "CRE DLH6FT A320 52 4 90 FL200 280", "CRE DLH6KP A320 52.2 4.2 90 FL200 280" })
+  check_eq(ex("DLH6FT climb FL240"), "ALT DLH6FT FL240")
+  check_eq(ex("Lufthansa 6FT climb FL240"), "ALT DLH6FT FL240")
+  check_eq(ex("DLH6KP 9000 ft descend"), "ALT DLH6KP 9000")
+end
