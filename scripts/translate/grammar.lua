@@ -2146,6 +2146,22 @@ local function value_homophones(text)
     end
   end)
 end
+-- "Scandinavian fortyone seventytwo": a word of tens typed onto the units after it is the two number words
+G.tens_words = set_of({ "twenty", "thirty", "forty", "fourty", "fifty", "sixty", "seventy", "eighty", "ninety" })
+G.unit_words = set_of({ "one", "two", "three", "four", "five", "six", "seven", "eight", "nine", "niner" })
+function G.glued_tens(text)
+  if not text:lower():find("ty%a") then return text end
+  return (text:gsub("%f[%a](%a+[Tt][Yy])(%a+)%f[%A]", function(tens, unit)
+    if not (G.tens_words[tens:lower()] and G.unit_words[unit:lower()]) then return nil end
+    return tens .. " " .. unit
+  end))
+end
+-- "at minute 15 switch conflict detection on", "at minute 4 KLM87F down to 3000 ft": the clock's minute said
+-- before its number is "at 15 minutes" (SCHEDULE at that simulation time)
+function G.clock_minute(text)
+  if not text:lower():find("minute", 1, true) then return text end
+  return (text:gsub("(%f[%a][Aa][Tt]%s+)[Mm]inute%s+(%d+)%f[%D]", "%1%2 minutes"))
+end
 -- "direct Bombay VOR", "after the Madras VOR": a city's other name (lexicon.navaid_city_names) straight before a
 -- navaid's kind (lexicon.navaid_kind_words) is the name the navdata gives the navaid ("Mumbai VOR").
 G.navaid_kinds = set_of(lexicon.navaid_kind_words)
@@ -2436,7 +2452,10 @@ local function lone_multipliers(text, world)
     local core, tail = t.w:match("^(.-)([,;%.!]?)$")
     local n = core:match("^[xX](%d+%.?%d*)$") or core:match("^(%d+%.?%d*)[xX]$")
     local prev, nx = words[k - 1], words[k + 1]
-    if n and fast_time(k) and not flies(core) then
+    -- ("back to x1", "run at x4": "x" before its figures after "to" or "at" and a verb of the clock, as "1x")
+    local led = prev and words[k - 2] and (prev.w:lower() == "to" or prev.w:lower() == "at")
+      and G.factor_leads[words[k - 2].w:lower()]
+    if n and (fast_time(k) or led) and not flies(core) then
       out[#out + 1] = text:sub(last, t.b - 1) .. n .. "x" .. tail
       last = t.e
       n = nil
@@ -2455,6 +2474,7 @@ local function lone_multipliers(text, world)
   return table.concat(out)
 end
 
+G.factor_leads = set_of({ "back", "run", "running", "go", "set", "speed" })
 -- lexicon.typed_abbreviations read as the words they stand for, where the words beside them allow
 local ABBREVIATIONS = {}
 for abbr, readings in pairs(lexicon.typed_abbreviations) do
@@ -2668,7 +2688,9 @@ local function typed_abbreviations(text)
     if set["#end"] and (toks[k] == nil or toks[k - 1]:match("[,;:.!]$")) then return true end
     return w ~= nil and (set[w] or (set["#number"] and (w:match("^%d") or w:match("^fl%d")) ~= nil)
       or (set["#place"] and toks[k]:match("^%u%u%u%u?%u?%p*$") ~= nil)
-      or (set["#name"] and w:match("^%a%a%a?%a?%a?$") ~= nil))
+      or (set["#name"] and w:match("^%a%a%a?%a?%a?$") ~= nil)
+      or (set["#callsign"] and w:match("^%a%a%a%d+%a?%a?$") ~= nil)
+      or (set["#waypoint"] and w:match("^%a%a+%d?$") ~= nil and #w <= 5))
   end
   -- (a level change's verb typed short, `hundreds`: two typed digits of 30 to 99 after it are hundreds of feet)
   local function in_hundreds(k)
@@ -3005,6 +3027,7 @@ G.value_not_reordered = set_of({ "at", "when", "after", "passing", "reaching", "
 G.counted_nouns = set_of(lexicon.counted_aircraft)
 G.create_verbs = set_of({ "create", "make", "spawn", "generate" })
 G.new_articles = { "one more", "another", "a new", "one new", "an extra", "one extra" }
+G.in_level_conditions = set_of({ "when", "once", "whenever" })
 function G.level_before_verb(text)
   -- (each rewrite runs only where `low`, the text in lower case, holds the words it needs; set again after one)
   local low = text:lower()
@@ -3069,6 +3092,27 @@ function G.level_before_verb(text)
   -- comma is said "when at 210" (read as the speed given said again only when it is that speed: G:speed_again_at)
   if has("when") then rewrite("(%f[%a][Ww]hen%s+)(%d%d%d?%s*,)", "%1at %2") end
   if has("once") then rewrite("(%f[%a][Oo]nce%s+)(%d%d%d?%s*,)", "%1at %2") end
+  -- "turn right heading 120 and at FL100 resume 290 knots", "..., at FL100 290 knots": a speed with its unit said
+  -- after "at" a level that opens a clause (after "and", "then" or a comma), bare or after "resume", is the speed
+  -- instruction that waits for the level ("at FL100 speed 290 knots")
+  if has(" at ") and (has("kt") or has("knot")) then
+    local function at_level_speed(lead, level, verb, speed)
+      local v = verb:lower():gsub("%s+$", "")
+      if not (v == "" or v == "resume") then return nil end
+      return lead .. level .. "speed " .. speed
+    end
+    for _, lead in ipairs({ "(%f[%a][Aa]nd%s+)", "(%f[%a][Tt]hen%s+)", "(,%s*)" }) do
+      rewrite(lead .. "([Aa]t%s+[Ff][Ll]%s*%d%d%d?%s+)(%a*%s*)(%d%d%d%s*[Kk][Nn]?[Oo]?[Tt]s?%f[%A])", at_level_speed)
+    end
+  end
+  -- "when you are in level 120", "once in FL120" (Spanish "en nivel"): "in" a level, up to two words after the
+  -- condition word, is "at" it
+  if has(" in ") then rewrite("(%f[%a]%a+)(%s+[%a']*%s*[%a']*%s*)([Ii]n)(%s+)(%a+)", function(cond, mid, _, sp, noun)
+    local n, words = noun:lower(), select(2, mid:gsub("%a+", ""))
+    if not (G.in_level_conditions[cond:lower()] and words <= 2
+        and (n == "level" or n == "fl" or n == "flight")) then return nil end
+    return cond .. mid .. "at" .. sp .. noun
+  end) end
   -- "ten random aircraft create please", "20 random planes make": the count, "random" and the aircraft's noun
   -- before the verb of creation are said as "create ten random aircraft"
   if has("random") then rewrite("()(%w+)(%s+[Rr]andom%s+)(%a+)%s+(%a+)%f[%A]", function(b, n, rnd, noun, verb)
@@ -3828,7 +3872,7 @@ local function written_forms(text, world)
     end)
   end
   text = G.navaid_city_names(G.sim_old(G.thousand_speed_homophones(value_homophones(G.limit_homophones(
-    G.conditioned_bare_speed(split_digits(text)))))))
+    G.conditioned_bare_speed(split_digits(G.clock_minute(G.glued_tens(text)))))))))
   -- "dlh4ax up 2000", "down 1500 pls": a bare whole or half thousand typed after "up" or "down" is a change of
   -- level by that many feet, as "up 2000 ft" (after a rate's or a speed's name, "vs up 2000", or before a unit,
   -- it stays as typed; "up 20" stays too, and is asked)
@@ -6436,15 +6480,17 @@ end
 -- would wait for a level only that descent crosses, and never run. An ATALT whose command is its own aircraft's level
 -- change past the condition's level, the aircraft flying level with no other level change in the request, beside
 -- another instruction waiting for the same level, is that change now ("ALT id X" first); the condition keeps what
--- else waits for it. Alone ("descend FL240 once it reaches FL260") it stands as said.
+-- else waits for it. Alone ("descend FL240 once it reaches FL260") it stands as said. A rate said with the change
+-- ("when you pass FL150 give me 2500 fpm down and descend FL90": ALT with its vspd) is what waits: VS at the level.
 function G:clearance_waiting_on_itself()
   for c, line in ipairs(self.out) do
-    local id, at, who, to = line:match("^ATALT (%S+) (%S+) ALT (%S+) (%S+)$")
+    local id, at, who, to, rate = line:match("^ATALT (%S+) (%S+) ALT (%S+) (%S+) (%d+)$")
+    if not id then id, at, who, to = line:match("^ATALT (%S+) (%S+) ALT (%S+) (%S+)$") end
     local a = id and who:upper() == id:upper() and self:state(id)
     local level, target = at and level_feet(at), to and level_feet(to)
     if a and a.alt_ft and level and target and (not a.sel_alt_ft or math.abs(a.sel_alt_ft - a.alt_ft) <= 50)
         and (level - a.alt_ft) * (target - level) > 0 and math.abs(level - a.alt_ft) > 50 then
-      local beside = false
+      local beside = rate ~= nil
       for _, other in ipairs(self.out) do
         local w = other:match("^ALT (%S+) ")
         if w and w:upper() == id:upper() then return end
@@ -6452,6 +6498,7 @@ function G:clearance_waiting_on_itself()
       end
       if not beside then return end
       table.remove(self.out, c)
+      if rate then table.insert(self.out, c, string.format("ATALT %s %s VS %s %s%s", id, at, who, target < level and "-" or "", rate)) end
       table.insert(self.out, 1, "ALT " .. who .. " " .. to)
       return
     end
@@ -7056,7 +7103,9 @@ function G:correction_of_two_kinds()
   if not (bare and q.b == k) then return end
   local before = self:quantities(1, corr)
   local last, prev = before[#before], before[#before - 1]
-  if not (last and prev and (last.kind == "vs" and prev.kind == "alt" or last.kind == "alt" and prev.kind == "vs")) then
+  -- (a bare number straight after "rate" is a rate: "descend FL100 rate 1500, correction, 1000")
+  local function kind(x) return x.kind == "plain" and self:word(x.b - 1, "rate") and "vs" or x.kind end
+  if not (last and prev and (kind(last) == "vs" and prev.kind == "alt" or last.kind == "alt" and kind(prev) == "vs")) then
     return
   end
   self.ask = string.format("Which value does '%s' correct: %s or %s?", self:raw(q.b, q.e), self:raw(prev.b, prev.e),
@@ -7526,6 +7575,14 @@ function G:level_condition_cut(qs)
   end
   return nil
 end
+-- True when segment `seg` opens on a wait ("after 2 minutes heading 180", "in 2 min"): a second wait after a
+-- comma ("..., after 4 minutes heading 270") is the next instruction's, said the same way.
+function G:timed_clause(seg)
+  for _, q in ipairs(self:quantities(seg.b, seg.trig)) do
+    if q.kind == "time" and self:word(q.b - 1, "after in") then return true end
+  end
+  return false
+end
 function G:segments(b, e)
   local trig = {}
   self.speed_again = {}
@@ -7674,7 +7731,7 @@ function G:segments(b, e)
           -- 190": a wait after "and" or "then" and "after" or "in", after the first's value, is the second's; after a
           -- comma alone it stays asked)
             or (q.kind == "time" and #self:quantities(last.trig, q.b) > 0 and self:word(q.b - 1, "after in")
-              and self:word(q.b - 2, "and then"))
+              and (self:word(q.b - 2, "and then") or (self.t[q.b - 2] or {}).text == "," and self:timed_clause(last)))
         end
         -- ("reduce 270 after GAVOL speed 250": a waypoint passed after the first's value, straight before the
         -- second instruction word, is the second's condition)
@@ -7745,6 +7802,9 @@ function G:segments(b, e)
           -- please go to heading 310": the aircraft is this instruction's subject)
           -- ("..., and the Speedbird also descend FL100": "also" between)
           while after < start and self:word(after, "please kindly now fly go also") do after = self:skip_fillers(after + 1) end
+          -- ("..., TRA5NB at BOYNE descend FL090": the place its instruction waits for, between)
+          local place = after < start and self:word(after, "at after over") and self:refs_in(after + 1, after + 2, "waypoint")[1]
+          if place and place.b == after + 1 then after = self:skip_fillers(place.e) end
           if after < start and self:word(after, "to") then after = self:skip_fillers(after + 1) end
           while after < start and self:word(after, "fly go") do after = self:skip_fillers(after + 1) end
           local obj = self:word(after, "@halted") and self:skip_fillers(after + 1)
@@ -8015,7 +8075,14 @@ function G:split_ellipsis(segs)
           local kinds = VERB_FINAL_KINDS[s.intent]
           local other = s.intent ~= "maintain" and G.unit_value(v) and not (kinds and kinds[v.kind])
           cur.e = r.b
-          cur = { intent = other and "infer" or s.intent, b = r.b, trig = r.b, e = e }
+          -- (its own instruction word, when it says the same instruction again: "...; DLH1028 at MOPAR descend
+          -- FL120" is read as the first, its place before the verb)
+          local own = r.b
+          for x = r.e, (other or not self:word(r.e, "at after over")) and r.e - 1 or math.min(e - 1, r.e + 3) do
+            if self.t[x].kind == "punct" or self:word(x, "and") then break end
+            if self.triggers[x] and self:intent_at(x) == s.intent then own = x break end
+          end
+          cur = { intent = other and "infer" or s.intent, b = r.b, trig = own, e = e }
           out[#out + 1] = cur
         end
       end
@@ -9077,7 +9144,7 @@ function G:parse(b, e)
           and not self:any_instruction_in(c0 + 1, s.trig) and not self.ask and #self.out > n_before then
         self:explain(c0, self:word(c0, "after") and c0 + 2 or c0 + 1)
         if self:do_at(crossed.id, crossed.wp, n_before) then
-          self.waypoint_do = { id = crossed.id, wp = crossed.wp, n = #self.out }
+          self:waypoint_waits({ id = crossed.id, wp = crossed.wp, n = #self.out })
         end
       elseif until_wp and not self.ask and #self.out > n_before then
         self:explain(until_wp.u, until_wp.e)
@@ -9086,7 +9153,7 @@ function G:parse(b, e)
           n_before = n_before - self:kept_until(segs[k - 1], seg_out[k - 1], n_before, id)
           -- ("..., after ONOGI Mach .78 and heading 100": what follows of the same aircraft waits for the place
           -- too, joined by "and", or is asked; never sent now unasked)
-          if until_wp.after then self.waypoint_do = { id = id, wp = until_wp.name, n = #self.out, e = s.e } end
+          if until_wp.after then self:waypoint_waits({ id = id, wp = until_wp.name, n = #self.out, e = s.e }) end
         end
       elseif until_lvl and not at and not self.ask and #self.out > n_before then
         at = "ATALT " .. self.out[n_before + 1]:match("^%u+ (%S+)") .. " "
@@ -9098,7 +9165,7 @@ function G:parse(b, e)
         -- for the place too, joined by "and", or is asked)
         local id = self.out[n_before + 1]:match("^%u+ (%S+)")
         if self:do_at(id, at_next.name, n_before) then
-          self.waypoint_do = { id = id, wp = at_next.name, n = #self.out, e = s.e }
+          self:waypoint_waits({ id = id, wp = at_next.name, n = #self.out, e = s.e })
         end
       elseif at_next and not self.ask then
         tied_to_waypoint(self, at_next)
@@ -9710,6 +9777,12 @@ G.passes_verbs = "passes pass passed crosses cross crossed overflies overfly ove
 -- instruction after the segment tied to a waypoint (ending at token e) is joined to it by "and" (a comma before it or
 -- not) and closes the request with no place, condition, "then" or word of lexicon.at_once_words of its own: it waits
 -- for the waypoint too. A comma alone, a full stop or "then" between leaves it asked.
+-- Records an instruction tied to a waypoint, { id =, wp =, n = #self.out after it, e = its segment's end }: what
+-- follows of the same aircraft is read against it once the request is parsed (M.translate).
+function G:waypoint_waits(wd)
+  self.waypoint_dos = self.waypoint_dos or {}
+  self.waypoint_dos[#self.waypoint_dos + 1] = wd
+end
 function G:joined_under_waypoint(e)
   -- (the segment holds the joining words before the next instruction's word at e)
   local x, joined = e - 1, false
@@ -9719,14 +9792,23 @@ function G:joined_under_waypoint(e)
   end
   x = e
   if not joined or not self.t[x] then return false end
-  for y = x, #self.t do
+  -- (or closes its aircraft's part: "at LIPGO descend FL90 and slow 250, Ryanair 83ZV at BOYNE FL100", another
+  -- aircraft flying named after a comma or a semicolon)
+  local close = #self.t + 1
+  for _, r in ipairs(self:refs_in(x, #self.t + 1, "aircraft")) do
+    local p = self.t[r.b - 1]
+    if r.exists and close > #self.t and p and p.kind == "punct" and (p.text == "," or p.text == ";") then
+      close = r.b - 1
+    end
+  end
+  for y = x, close - 1 do
     local t = self.t[y]
     if (t.kind == "punct" and not (y == #self.t and t.text:match("^[%.!]$"))) or t.text == "and"
         or self:word(y, "@then_words @at_once_words @condition at after before until till over when once") then
       return false
     end
   end
-  return not self:has_ref(x, #self.t + 1, "waypoint")
+  return not self:has_ref(x, close, "waypoint")
 end
 function G:passes_said(v)
   return self:word(v, G.passes_verbs) and self:word(v - 1, "it he she you they") and self:word(v - 2, "when once after")
@@ -10566,10 +10648,26 @@ function G:at_waypoint(s, spec)
         and handler and #self:acids(s) == 1 then
       local n0 = #self.out
       self:explain(cond_b, opened and self.place_passed_e or r.e)
-      self[handler](self, s, spec)
+      -- ("at UNOKO descend FL130, at ROLIS slow to 250": a clause opened by "at", "after" or "over" and another
+      -- waypoint behind a comma or "then", closing the segment, is the next instruction's place, self.at_next)
+      local next_at
+      for _, r2 in ipairs(self:refs_in(r.e, s.e, "waypoint")) do
+        local lead = r2.b - 1
+        if self:word(lead, "at after over overhead") and self.t[lead - 1] and ((self.t[lead - 1].kind == "punct"
+            and self.t[lead - 1].text == ",") or self:word(lead - 1, "@then_words")) and lead > s.trig
+            and self:skip_fillers(r2.e) >= s.e and s.e <= #self.t and not self:in_reason(r2.b) then
+          next_at = r2
+        end
+      end
+      local own = next_at and { intent = s.intent, b = s.b, trig = s.trig, e = next_at.b - 2 } or s
+      self[handler](self, own, spec)
       self.conditioned_ask = self.ask ~= nil
       if not self.ask and self:do_at(self:acids(s)[1], r.name, n0) then
-        self.waypoint_do = { id = self:acids(s)[1], wp = r.name, n = #self.out, e = s.e }
+        if not next_at then self:waypoint_waits({ id = self:acids(s)[1], wp = r.name, n = #self.out, e = s.e }) end
+        if next_at then
+          self:explain(next_at.b - 2, next_at.e)
+          self.at_next = next_at
+        end
       end
       return true
     end
@@ -19898,20 +19996,23 @@ function M.translate(text, world)
     end
     -- ("after DLL descend FL180 and slow to 290": an instruction of the same aircraft after one tied to a waypoint,
     -- itself tied to no place or condition, may wait for the waypoint too or run now: asked, never sent now)
-    local wd = g.waypoint_do
-    for c = wd and not g.ask and wd.n + 1 or 1, wd and not g.ask and #g.out or 0 do
-      if g.out[c]:match("^%u+ (%S+)") == wd.id and not g.out[c]:match("^AT") then  -- (one tied elsewhere stands)
-        if c == #g.out and c == wd.n + 1 and wd.e and g:joined_under_waypoint(wd.e) then
-          g.out[c] = "AT " .. wd.id .. " " .. wd.wp .. " DO " .. g.out[c]
+    for _, wd in ipairs(g.waypoint_dos or {}) do
+      for c = not g.ask and wd.n + 1 or 1, not g.ask and #g.out or 0 do
+        if g.out[c]:match("^%u+ (%S+)") == wd.id and not g.out[c]:match("^AT") then  -- (one tied elsewhere stands)
+          local last_own = true  -- (no command after it of the same aircraft)
+          for x = c + 1, #g.out do last_own = last_own and g.out[x]:match("^%u+ (%S+)") ~= wd.id end
+          if last_own and c == wd.n + 1 and wd.e and g:joined_under_waypoint(wd.e) then
+            g.out[c] = "AT " .. wd.id .. " " .. wd.wp .. " DO " .. g.out[c]
+            break
+          end
+          -- ("after TIMBA turn left heading 290, and keep 250 kts for now": "for now" says it holds from now on; a
+          -- bare "now" is asked, as said loosely)
+          local fn = wd.e and g:find_word(wd.e, #g.t + 1, "now")
+          if fn and fn <= #g.t and g:word(fn - 1, "for") then break end
+          g.ask = string.format("I have %s. Should %s also wait until %s passes %s, or run now?",
+            table.concat(g.out, " ; "), g.out[c], wd.id, wd.wp)
           break
         end
-        -- ("after TIMBA turn left heading 290, and keep 250 kts for now": "for now" says it holds from now on; a
-        -- bare "now" is asked, as said loosely)
-        local fn = wd.e and g:find_word(wd.e, #g.t + 1, "now")
-        if fn and fn <= #g.t and g:word(fn - 1, "for") then break end
-        g.ask = string.format("I have %s. Should %s also wait until %s passes %s, or run now?",
-          table.concat(g.out, " ; "), g.out[c], wd.id, wd.wp)
-        break
       end
     end
     if cond and not g.ask then

@@ -4989,7 +4989,10 @@ function m:at_time(s)
         lead = self:skip_fillers(named[1].e)
         while self.t[lead] and self.t[lead].kind == "punct" and self.t[lead].text == "," do lead = self:skip_fillers(lead + 1) end
       end
-      if w == self:skip_fillers(1) or w == lead then
+      -- ("schedule at 00:01:00: KLM1795 FL150, TRA5NB FL140": "schedule" opening the request before "at" too)
+      local opening = self:skip_fillers(1)
+      if self:word(opening, "schedule") and w == opening + 1 then opening = w end
+      if w == opening or w == lead then
         self.at_all, self.at_all_for = at, w == lead and one and named[1].name:upper() or nil
       end
       return at

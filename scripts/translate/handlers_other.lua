@@ -3402,6 +3402,12 @@ return function(H, f, compass)
     local route = (self:state(id) or {}).route or {}
     local again = named and not alt and not spd and #route > 0 and route[#route]:upper() == where:upper()
       and #self:route_places(named.e, s.e) > 0
+    -- ("add GATE1 then ALWYN" with ALWYN on the route, "add ALWYN" likewise: a place its route holds, appended
+    -- with no value of its own, would be flown twice: asked)
+    local function twice(name)
+      return self:need(string.format("%s is already on the route of %s. Should it be added a second time?", name, id))
+    end
+    if named and not again and not alt and not spd and self:on_route(id, where) then return twice(where) end
     if again then self:explain(named.b, named.e) else self:emit(cmd) end
     if not named then return end
     -- "route EZY45 via TEST1 then NIK to EHAM": the next places of the route in
@@ -3414,6 +3420,7 @@ return function(H, f, compass)
       if airport and airport:match("^%a%a%a%a$") then
         return self:emit("DEST " .. id .. " " .. airport)
       elseif self:word(r.b - 1, "then via and to over") or (self.t[r.b - 1] or {}).text == "," or r.b == last then
+        if self:on_route(id, r.name) then return twice(r.name) end
         self:emit("ADDWPT " .. id .. " " .. r.name)
         last = r.e
         -- ("GATE1 and after to EXIT3": "after to" said for "then to", Italian "e dopo a")
@@ -5069,6 +5076,14 @@ return function(H, f, compass)
       if self:word(q.b - 1, "to") and q.b - 1 > s.trig and not self:word(q.e, "from later ahead hence") then
         return self:need(string.format("Should the simulation fast-forward for %s, or until the simulation clock reaches %s?",
           self:raw(q.b, q.e), self:raw(q.b, q.e)))
+      end
+      -- ("set sim speed to 2 and fast-forward 5 min": a rate said before "and" and the fast-forward's own verb, one
+      -- segment, is a DTMULT of its own, first)
+      local rate = self:quantities(s.trig + 1, q.b)[1]
+      local joined = rate and self:find_word(rate.e, q.b, "and then")
+      if rate and rate.kind == "plain" and not self.taken[rate.b] and joined < q.b and self:word_in(s.b, s.e, "@sim")
+          and self:word(rate.b - 1, "speed spd to") and self:word_in(joined + 1, q.b, "fast ff forward") then
+        self:emit("DTMULT " .. f.num(self:take(rate).value))
       end
       local fixed = corrected_time(self, s, q)
       if fixed then return self:emit("FF " .. f.num(fixed)) end

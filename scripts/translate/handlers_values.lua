@@ -407,6 +407,16 @@ return function(H, f, wrap, compass)
       self:explain(first.b, first.e)
       table.remove(with_unit, 1)
     end
+    -- ("descent rate fifteen hundred, eh, correction, one thousand": the one value left, said bare after a
+    -- correction that follows the rate, no level said before it, corrects the rate; never a level to fly)
+    local corr = rate and #with_unit + #plain == 1 and self:last_correction(s)
+    local fix = corr and corr > rate.e and (with_unit[1] or plain[1])
+    if fix and fix.b > corr and (fix.kind == "plain" or (fix.kind == "alt" and not fix.fl
+        and not self:word(fix.e - 1, "@feet @metres"))) and self:direction(s) ~= 0 then
+      self:take(fix)
+      for _, id in ipairs(ids) do self:emit("VS " .. id .. " " .. f.int(self:direction(s) * fix.value)) end
+      return
+    end
     local target = self:pick(self:corrected(#with_unit > 0 and with_unit or plain, with_unit, plain, s), s, "maintain")
     local dir = self:direction(s)
     local verb = dir > 0 and "climb" or dir < 0 and "descend" or "fly"

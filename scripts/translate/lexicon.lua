@@ -691,7 +691,9 @@ return {
   -- how far from the traffic a fix, navaid or airport of the slip's letters keeps it as typed (nautical miles)
   typo_targets = { "and", "then", "fpm", "route", "hdg", "mach", "level", "proceed", "please", "move",
       -- (a pseudo-pilot's readback: "descnding FL90", "decsending FL140")
-      "descending", "climbing", "reducing", "increasing", "turning", "maintaining" },
+      "descending", "climbing", "reducing", "increasing", "turning", "maintaining",
+      -- (a condition's verb: "pasing 8000 reduce 210")
+      "passing", "reaching", "leaving" },
   typo_place_nm = 250,
   -- units after a value that keep "FL 2 10" two values ("fl 2 10 knots"): a level's figures are never split before them
   -- words that, straight after a split typed level, take it back (grammar.lua's split level check: "FL 16 0 - sorry,
@@ -739,7 +741,9 @@ return {
   -- `full_run`, a count, not_next keeps it only after that many words of `prev` in a row); `hundreds`, a verb of a level change
   -- typed short, after which two typed digits of 30 to 99 are hundreds of feet as on a flight strip ("dn 60":
   -- 6000 ft; "dn 12", 1200 ft or 12000 with a digit lost, stays as typed, and asked); "#name", for `next`, a
-  -- word of two to five letters in any case (a fix's ident typed in lower case). Elsewhere it stays as typed ("direct
+  -- word of two to five letters in any case (a fix's ident typed in lower case); "#callsign", three letters and
+  -- digits ("sas471", "ezy45lc"); "#waypoint", a word of two to five letters, the last may be a digit ("dpk",
+  -- "pt1"). Elsewhere it stays as typed ("direct
   -- TRN" is Turnberry, "trail red" a colour, "Red Cap" an airline).
   typed_abbreviations = {
     -- (the tens of Belgian and Swiss French said in English: "flight level two hundred septante", "nonante degrees")
@@ -766,17 +770,25 @@ return {
     dn = { word = "descend", next = "#number fl flight level to", not_prev = "vs rate speed spd mach turn",
            hundreds = true },
     clmb = { word = "climb", next = "#number fl flight level to", hundreds = true },
+    -- ("over cmb fl240": after a word of place it is the Cambrai navaid)
+    cmb = { word = "climb", next = "#number fl flight level to", hundreds = true, caps_kept = true,
+            not_prev = "over at via dct direct to from after before" },
+    -- (a pseudo-pilot's "ffwd 5 min", "mk sas9 crj9 ...", "conflict det on")
+    ffwd = { word = "fast forward" },
+    mk = { word = "make", prev = "#start", caps_kept = true },
+    det = { word = "detection", prev = "conflict cd" },
     trn = { { word = "turn", next = "left right lft rt lt rgt l r hdg heading" },
             { word = "turn", prev = "#start", after_next = "left right lft rt lt rgt l r hdg heading" } },
     -- (an experimenter's shorthand of the command words: "head 030", "incr 280", "rm ooabc", "del rte",
-    -- "lvl?", "vert sep 2000ft", "KLM12 rm wpt SPY", "KLM12 rm SPY from rte"; "head" before no number, "rm" inside a
-    -- line before no waypoint word nor "from" after the next and "del" before no route word stay as typed; "lvl"
+    -- "lvl?", "vert sep 2000ft", "KLM12 rm wpt SPY", "KLM12 rm SPY from rte", "sas471 rm pt1"; "head" before no
+    -- number, "rm" inside a line before no waypoint word, no "from" after the next and not between a callsign and
+    -- an ident, and "del" before no route word stay as typed; "lvl"
     -- after a place's verb is the LVL navaid)
     head = { word = "heading", next = "#number" },
     incr = { word = "increase", next = "#number speed spd to" }, inc = { word = "increase", next = "#number speed spd to" },
     decr = { word = "decrease", next = "#number speed spd to" },
     rm = { { word = "remove", prev = "#start" }, { word = "delete", next = "wpt waypoint" },
-           { word = "remove", after_next = "from" } },
+           { word = "remove", after_next = "from" }, { word = "remove", prev = "#callsign", next = "#waypoint" } },
     -- ("ezy45rt whr is it now", "wht is klm12 doing": the question's word typed without its vowels)
     whr = { word = "where", next = "is are's" }, wht = { word = "what", next = "is are's" },
     -- ("make it the del area", "box ... -> del area": the deletion area, no aircraft deleted)

@@ -490,6 +490,9 @@ return function(intent, rule, words)
     a = a[#a]
     return r ~= nil and a ~= nil and a.exists and a.e == i and g:skip_fillers(r.e) > #g.t and g:on_route(a.name, r.name)
   end }
+  -- ("aal123 drop wpt dpk", "drop waypoint ROKNA": the waypoint's noun between the verb and the waypoint)
+  rule { "drop skip", "delwpt", next = "@waypoint_nouns",
+         when = function(g, i) return g:has_ref(i + 2, i + 3, "waypoint") end }
   -- "drop CHARL from united 9's route": a waypoint off the route
   rule { "drop", "delwpt", near = { 8, "@route_nouns" },
          when = function(g, i) return g:has_ref(i + 1, i + 2, "waypoint") end }
@@ -2756,9 +2759,12 @@ return function(intent, rule, words)
   -- "where's the MERIT intersection?"
   rule { "where", "pos", when = function(g, i) return g:has_ref(i + 1, i + 4, "waypoint") end }
   rule { "where", "pos", prev = { 3, "know show tell indicate" } }  -- "show me where GATE1 is"
-  -- "tell me about the easyJet", "tell us about KLM12": an aircraft and nothing after it, its state asked
+  -- "tell me about the easyJet", "tell us about KLM12", "what do we know about Air Baltic 4WB": an aircraft and
+  -- nothing after it, its state asked
   rule { "about", "pos", when = function(g, i)
-    return g:word(i - 1, "me us") and g:word(i - 2, "tell") and aircraft_alone(g, g:skip_fillers(i + 1), true)
+    local told = g:word(i - 1, "me us") and g:word(i - 2, "tell")
+      or g:word(i - 1, "know") and g:word(i - 2, "we you i") and g:word(i - 3, "do")
+    return told and aircraft_alone(g, g:skip_fillers(i + 1), true)
   end }
   rule { "where", "pos", when = function(g, i) return g:skip_fillers(1) == i end }  -- "where's Schiphol"
   -- "exp1 where", "KL204 where now?": the question typed after the aircraft, nothing after it

@@ -454,6 +454,10 @@ function M.spoken(text, built, phonetic)
       local name = (word(i + 1) == "8" or word(i + 1) == "eight") and DIGITS[word(i + 2) or ""]
         and word(i + 3) == "hundred" and "dash 8-" .. DIGITS[word(i + 2)] .. "00"
       if name and built.known[name] then return name .. (toks[i + 3]:match("%p+$") or ""), i + 4 end
+      -- ("a Widerøe dash eight, WIF84P": the family's number in words, no variant after it)
+      if toks[i + 1] and not toks[i]:match("%p$") and toks[i + 1]:lower():gsub("%p+$", "") == "eight" then
+        return "dash 8" .. (toks[i + 1]:match("%p+$") or ""), i + 2
+      end
       return nil
     end
     -- ("a Q four hundred": the Dash 8's name in hundreds, Q400)

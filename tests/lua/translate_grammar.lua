@@ -508,7 +508,9 @@ do -- sim control and questions in other words; a route cleared; "fly to" a know
   check_eq(tr("speed the sim up, times three"), "DTMULT 3")
   check_eq(tr("what's klm12 doing", w), "POS KLM12")
   check_eq(tr("route of klm12?", w), "LISTRTE KLM12")
-  check_eq(tr("Could you add SUGOL to the route of KLM12?", w), "ADDWPT KLM12 SUGOL")
+  check_eq(tr("Could you add TEST1 to the route of KLM12?", w), "ADDWPT KLM12 TEST1")
+  check(tr("Could you add SUGOL to the route of KLM12?", w):find("already on the route", 1, true) ~= nil,
+    "a waypoint the route holds is asked before it is added again")
   check_eq(tr("clear the route of KLM12", w), "DELRTE KLM12")
   check_eq(tr("remove SUGOL from the route of KLM12", w), "DELWPT KLM12 SUGOL")
   check_eq(tr("KLM12, fly to TEST1 please", w), "ADDWPT KLM12 TEST1 ; DIRECT KLM12 TEST1")
