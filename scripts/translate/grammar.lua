@@ -2149,7 +2149,11 @@ end
 -- "Scandinavian fortyone seventytwo": a word of tens typed onto the units after it is the two number words
 G.tens_words = set_of({ "twenty", "thirty", "forty", "fourty", "fifty", "sixty", "seventy", "eighty", "ninety" })
 G.unit_words = set_of({ "one", "two", "three", "four", "five", "six", "seven", "eight", "nine", "niner" })
+-- ("remove DAILY from bluestreak fifty three forty's route": a number word's possessive is the number's)
 function G.glued_tens(text)
+  if text:find("'s", 1, true) then
+    text = text:gsub("%f[%a](%a+)'s%f[%A]", function(w) if NUMBER_WORDS[w:lower()] then return w end end)
+  end
   if not text:lower():find("ty%a") then return text end
   return (text:gsub("%f[%a](%a+[Tt][Yy])(%a+)%f[%A]", function(tens, unit)
     if not (G.tens_words[tens:lower()] and G.unit_words[unit:lower()]) then return nil end
@@ -10768,6 +10772,13 @@ function G:at_waypoint(s, spec)
         local bounds = "above below higher lower least most greater less"
         local bk = self:find_word(be_at or r.e, s.e, bounds)
         while bk < s.e and self.noted[bk] do bk = self:find_word(bk + 1, s.e, bounds) end
+        -- ("cross MERGE1 at or FL290": a bound begun, its word left out before the value, is asked)
+        local begun = self:find_word(be_at or r.e, s.e, "or")
+        local bare = begun < s.e and (self:quantities(begun + 1, s.e)[1] or {}).b == begun + 1
+        if bk >= s.e and bare and self:word(begun - 1, "at") and (alt or spd) then
+          return self:need(string.format("What does '%s' mean for %s: at or above, at or below, or exactly? squawk "
+            .. "sets only an exact constraint.", self:raw(begun - 1, s.e), r.name))
+        end
         if bk < s.e and (alt or spd) then
           local exact = alt and f.alt(alt.value, alt.fl)
             or (spd.kind == "mach" and f.mach(spd.value) or f.int(spd.value) .. " knots")

@@ -697,12 +697,14 @@ function m:acids(s)
       return ids
     end
   end
-  -- ("LOG67 and all three jets FL200", "KLM12 and everyone else FL200", "BAW5 and the others ..."): a group word said
+  -- ("LOG67 and all three jets FL200", "KLM12 and everyone else FL200", "BAW5 and the others ...", "delete NAX7PK
+  -- and the intruder", "... and the other one"): a group word, or a description of another aircraft, said
   -- after "and" straight after an aircraft named, which the group reading below takes only with none named: asked,
   -- never sent to the one named alone
   for k = #ids > 0 and s.b or s.e, s.e - 2 do
     local g = self:word(k, "and") and (self:word(k + 1, "the") and k + 2 or k + 1)
-    if g and self:word(g, "all everyone everybody others rest each every @counted_aircraft @maker_plurals")
+    if g and self:word(g, "all everyone everybody others other intruder intruders rest each every "
+        .. "@counted_aircraft @maker_plurals")
         and not self:has_ref(g, g + 1, "aircraft") then
       for _, r in ipairs(self:refs_in(s.b, k, "aircraft")) do
         if r.e == k then

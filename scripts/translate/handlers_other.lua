@@ -3790,7 +3790,9 @@ return function(H, f, compass)
       to = going + 1
       self:explain(going, going + 1)
     end
-    local dest = to < s.e and (self:refs_in(to + 1, to + 2, "waypoint")[1] or {}).name
+    -- (an airport by its name before a navaid of that name: "all going to Barajas" is LEMD, not the BRA VOR)
+    local dest = to < s.e and self.fleet[1] and self:airport_by_name(to + 1, math.min(s.e, to + 3), self.fleet[1], true)
+    dest = dest or to < s.e and (self:refs_in(to + 1, to + 2, "waypoint")[1] or {}).name
     if to < s.e and not dest then dest = self:place_by_name(to + 1, math.min(s.e, to + 3), self.fleet[1]) end
     -- ("all with Schiphol as destination", "EHAM as their destination": the place said before "as" and the noun)
     local as = self:find_word(s.trig, s.e, "as")

@@ -692,8 +692,8 @@ return {
   typo_targets = { "and", "then", "fpm", "route", "hdg", "mach", "level", "proceed", "please", "move",
       -- (a pseudo-pilot's readback: "descnding FL90", "decsending FL140")
       "descending", "climbing", "reducing", "increasing", "turning", "maintaining",
-      -- (a condition's verb: "pasing 8000 reduce 210")
-      "passing", "reaching", "leaving" },
+      -- (a condition's verb: "pasing 8000 reduce 210"; "swich on conflict detction")
+      "passing", "reaching", "leaving", "switch" },
   typo_place_nm = 250,
   -- units after a value that keep "FL 2 10" two values ("fl 2 10 knots"): a level's figures are never split before them
   -- words that, straight after a split typed level, take it back (grammar.lua's split level check: "FL 16 0 - sorry,
@@ -2776,7 +2776,11 @@ return {
     -- (Indian and Sri Lankan: "wan" for one, "nayner", "clime", "fly-level")
     wan = "one", nayner = "niner", clime = "climb", ["fly-level"] = "flight level",
     -- (Portuguese and Brazilian: "ninner")
-    ninner = "niner" },
+    ninner = "niner",
+    -- (Japanese and Korean: l for r and p for f, a vowel after a closing consonant: "turn reft", "leduce", "pive",
+    -- "sebun", "sixu", "notto", "bertical")
+    reft = "left", leduce = "reduce", pive = "five", sebun = "seven", sixu = "six", notto = "knots",
+    bertical = "vertical" },
   heard_as = {
     { heard = { "write", "rite", "wright" }, means = "right",
       before = { "heading", "hdg", "turn" }, after = { "turn" } },
@@ -2784,8 +2788,18 @@ return {
     { heard = { "throw in", "chuck in" }, means = "add", before = { "#number", "a", "an", "another", "some", "more" } },
     -- ("turn lift heading three four zero": a recogniser's "left")
     { heard = { "lift", "loft", "laughed" }, means = "left", after = { "turn" } },
-    { heard = { "the send", "this end", "the scent", "decent", "dissent" }, means = "descend",
-      before = { "#number", "flight", "level", "altitude", "to", "fly" } },
+    { heard = { "the send", "this end", "the scent", "decent", "dissent", "diss end" }, means = "descend",
+      before = { "#number", "flight", "level", "altitude", "to", "fly", "and" } },
+    -- (a Japanese or Korean accent: "turn ride" ("turn light" is side_unsure's, asked); "plight level", "flight
+    -- rebel", "flight label"; "crime and maintained"; "maintenance flight level"; "descend pour thousand"; "one two sick one")
+    { heard = { "ride" }, means = "right", after = { "turn" } },
+    { heard = { "plight" }, means = "flight", before = { "level", "rebel", "label", "revel" } },
+    { heard = { "rebel", "label", "revel" }, means = "level", after = { "flight", "plight" } },
+    { heard = { "crime" }, means = "climb", before = { "#number", "and", "flight", "plight", "to", "level" } },
+    { heard = { "maintenance" }, means = "maintain", before = { "#number", "flight", "plight", "level", "altitude" } },
+    { heard = { "pour" }, means = "four", before = { "thousand", "hundred" } },
+    { heard = { "sick" }, means = "six", before = { "thousand", "hundred" } },
+    { heard = { "sick" }, means = "six", between = { { "#number" }, { "#number", "knots", "thousand", "hundred" } } },
     -- ("descent fly-level wan zero zero": the noun heard for the verb before a flight level)
     { heard = { "descent" }, means = "descend", before = { "flight", "fly-level" } },
     -- ("when passing fly level one zero zero turn right": "flight level" as a recogniser writes it, before its

@@ -648,7 +648,9 @@ return function(intent, rule, words)
     return t ~= nil and t.kind == "number"
   end }
   -- "could we get United 9 down to 12,000 feet", "bring the KLM up to FL300", "take him up to 340"
-  rule { "up down", "alt", prev = { 4, "get bring take" }, not_prev = { 3, "speed spd" }, not_near = { 2, "speed knots" } }
+  -- ("when you get to OCK slow down to 220": "down" of "slow down" is the speed's)
+  rule { "up down", "alt", prev = { 4, "get bring take" }, not_prev = { 3, "speed spd slow slowing" },
+         not_near = { 2, "speed knots" } }
   -- ("when it has reached that speed start it down to FL230": the verb and the aircraft's pronoun straight before)
   rule { "up down", "alt", next = "to", when = function(g, i)
     return g:word(i - 1, "it him her them") and g:word(i - 2, "start get bring take")
@@ -1217,9 +1219,11 @@ return function(intent, rule, words)
     return g:word(i + 2, "point waypoint fix") and g:point_said_before(i) ~= nil
   end }
   -- ("add a point EX3 at 51.05 -0.45", "put a point ...": the same with a verb of adding)
+  -- ("make a point called MYPT at 50.2 8.9": its name after "called" or "named")
   rule { "create make add put place", "defwpt", when = function(g, i)
     local k = g:word(i + 1, "the a an") and i + 2 or i + 1
     if not g:word(k, "point") or g:has_ref(1, #g.t + 1, "type") then return false end
+    if g:word(k + 1, "called named") then k = k + 1 end
     local r = g:refs_in(k + 1, k + 2, "waypoint")[1] or g:refs_in(k + 1, k + 2, "aircraft")[1]
     if not r or r.b ~= k + 1 or r.exists or not g:word(r.e, "at") then return false end
     local q = g:quantities(r.e + 1, r.e + 2)[1]
@@ -3769,12 +3773,15 @@ return function(intent, rule, words)
   rule { "wind winds", "wind", prev = { 3, "give" }, when = function(g) return not g:has_ref(1, #g.t + 1, "aircraft") end }
   -- "wind set at 35.5 139.8 from 270 degrees 40 knots": the verb said after the noun
   rule { "wind winds", "wind", next = "set" }
+  -- ("jetstream: 260 degrees 90 knots at 59.5 11": a wind by its kind, no aircraft named)
+  rule { "jetstream jetstreams", "wind", when = function(g) return not g:has_ref(1, #g.t + 1, "aircraft") end }
   rule { "set", false, prev = { 1, "wind winds" } }
   -- "set a westerly at 40 knots over -27.4 153.1": a wind named by where it blows from (lexicon.wind_points),
   -- put somewhere by the verb, no aircraft named
   -- ("put a westerly wind of 40 knots over Willisau": the noun after it is the instruction's word, the point its direction)
+  -- ("put a 30 knot westerly over London": its speed between)
   rule { "northerly easterly southerly westerly northeasterly southeasterly southwesterly northwesterly", "wind",
-         prev = { 3, "add set define put create" }, when = function(g, i)
+         prev = { 4, "add set define put create" }, when = function(g, i)
     return not g:word(i + 1, "wind winds") and not g:has_ref(1, #g.t + 1, "aircraft")
   end }
   rule { "wind winds", "wind", prev = { 1, "northerly easterly southerly westerly northeasterly southeasterly southwesterly "

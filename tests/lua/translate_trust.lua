@@ -23990,3 +23990,44 @@ do
     "AT KLM1795 UNOKO DO ALT KLM1795 FL80 ; AT TRA5NB BOYNE DO ALT TRA5NB FL90")
   asked(ex("KLM1795, at UNOKO descend FL080, slow 220"), "a comma alone under a place")
 end
+
+-- Cycle 80 (R430, R433): "when you get to OCK slow down to 220" descended to FL220; "delete NAX7PK and the intruder"
+-- deleted NAX7PK alone; "cross MERGE1 at or FL290" set an exact constraint (a bound begun, asked); random traffic
+-- "all going to Barajas" went to the BRA VOR, not LEMD
+do
+  local s = navscene({ "CRE DLH4AX A320 51.3 -0.5 090 FL150 280", "ADDWPT DLH4AX OCK", "CRE NAX7PK B738 40.4 -3.6 090 FL200 280",
+    "CRE IBE31 A320 40.6 -3.4 180 FL180 270", "DEFWPT MERGE1 40.8 -3.2", "ADDWPT IBE31 MERGE1" }, "places by name")
+  if s then
+    local function ex(text) return said(graph.translate(text, { sim = s, mode = "offline" })) end
+    check_eq(ex("dlh4ax when you get to OCK slow down to 220"), "AT DLH4AX OCK DO SPD DLH4AX 220")
+    asked(ex("delete NAX7PK and the intruder"), "another aircraft described")
+    asked(ex("IBE31 cross MERGE1 at or FL290"), "a bound begun")
+    check_eq(ex("spawn 8 random aircraft, any type, all going to Barajas"), "MCRE 8 * * * LEMD")
+  end
+end
+
+-- Cycle 80 (R430, R433): a newcomer's "make a point called MYPT at ...", "jetstream: ...", "a 30 knot westerly",
+-- "swich on conflict detction"
+do
+  local _, ex = scene({ "CRE KLM88 B738 52.3 4.8 090 FL100 250", "CRE EZY82LM A319 51.9 0.6 200 FL140 270" })
+  check_eq(ex("make a point called MYPT at 50.2 8.9"), "DEFWPT MYPT 50.2 8.9")
+  check_eq(ex("jetstream: 260 degrees 90 knots at 59.5 11"), "WIND 59.5 11 260 90")
+  check_eq(ex("put a 30 knot westerly at 51.5 north 0 east"), "WIND 51.5 0 270 30")
+  check_eq(ex("swich on conflict detction"), "ASAS ON")
+end
+
+-- Cycle 80 (R431): a recogniser on Japanese and Korean accents ("turn reft", "turn light", "plight level", "flight
+-- rebel", "crime and maintained", "diss end and maintenance", "leduce", "pive", "sebun", "sixu", "pour thousand",
+-- "two sick zero knots")
+do
+  local _, ex = scene({ "CRE KAL1261 B738 37.5 126.8 090 FL140 280", "CRE JAL6 B788 35.5 139.8 090 FL150 280" })
+  check_eq(ex("japan air six turn reft heading two seven zero"), "HDG JAL6 270 LEFT")
+  check_eq(ex("japan air six turn ride heading one eight zero"), "HDG JAL6 180 RIGHT")
+  asked(ex("japan air six turn light heading one eight zero"), "'light' stays side_unsure's")
+  check_eq(ex("korean air one two sick one climb plight rebel one six zero"), "ALT KAL1261 FL160")
+  check_eq(ex("japan air six crime and maintained flight label one six zero"), "ALT JAL6 FL160")
+  check_eq(ex("japan air six diss end and maintenance flight level one one zero"), "ALT JAL6 FL110")
+  check_eq(ex("korean air one two six one leduce speed two sick zero notto"), "SPD KAL1261 260")
+  check_eq(ex("korean air one two six one descend pour thousand"), "ALT KAL1261 4000")
+  check_eq(ex("japan air sixu descend pive thousand"), "ALT JAL6 5000")
+end
