@@ -538,6 +538,7 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
     std::string words;
     bool keyword = false;  // an instruction word may be a misheard airline name ("front turn" = Frontier)
     bool only_keywords = true;
+    bool article = false;  // "the", "a", "an" or "at" among them: no airline's name holds one
     std::string last_word;  // as typed: two capitals are an airline code ("AC 851")
     while (i < t.size() && i - words_begin < 4 && is_word(t[i]) && !used[i] && !is_number_word(t[i]) &&
            names.phonetic_letter(t[i].text) == 0) {
@@ -546,6 +547,7 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
       // instruction)
       only_keywords = only_keywords && (names.vocabulary().is_keyword(t[i].text) ||
                                         (i > words_begin && t[i].text == "to"));
+      article = article || t[i].text == "the" || t[i].text == "a" || t[i].text == "an" || t[i].text == "at";
       words += t[i].text;
       last_word = t[i].raw;
       ++i;
@@ -578,7 +580,8 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
     // Instruction words alone before the digits are that instruction and its value ("seed 1234
     // please", "random seed 42"), no airline misheard (that takes a word of its own: "front turn" =
     // Frontier).
-    const bool instruction_alone = keyword && only_keywords && i > words_begin;
+    // ("set the wind at 50 8 FL100 ...": an instruction's words with an article or "at" between are no airline)
+    const bool instruction_alone = keyword && (only_keywords || article) && i > words_begin;
     if (!suf.groups.empty() && !unit_after(suf.ends.back()) && !instruction_alone && !rate) {
       CallsignMatch m = match_world("", words, suf, fleet, names);
       // With one aircraft, an opening callsign that sounds like nothing else is that aircraft.

@@ -2149,11 +2149,7 @@ end
 -- "Scandinavian fortyone seventytwo": a word of tens typed onto the units after it is the two number words
 G.tens_words = set_of({ "twenty", "thirty", "forty", "fourty", "fifty", "sixty", "seventy", "eighty", "ninety" })
 G.unit_words = set_of({ "one", "two", "three", "four", "five", "six", "seven", "eight", "nine", "niner" })
--- ("remove DAILY from bluestreak fifty three forty's route": a number word's possessive is the number's)
 function G.glued_tens(text)
-  if text:find("'s", 1, true) then
-    text = text:gsub("%f[%a](%a+)'s%f[%A]", function(w) if NUMBER_WORDS[w:lower()] then return w end end)
-  end
   if not text:lower():find("ty%a") then return text end
   return (text:gsub("%f[%a](%a+[Tt][Yy])(%a+)%f[%A]", function(tens, unit)
     if not (G.tens_words[tens:lower()] and G.unit_words[unit:lower()]) then return nil end
@@ -2161,10 +2157,17 @@ function G.glued_tens(text)
   end))
 end
 -- "at minute 15 switch conflict detection on", "at minute 4 KLM87F down to 3000 ft": the clock's minute said
--- before its number is "at 15 minutes" (SCHEDULE at that simulation time)
+-- before its number is "at 15 minutes" (SCHEDULE at that simulation time); "..., then 2 minutes later slow to 250":
+-- a wait said with "later" after it is "in 2 minutes" (DELAY)
+G.later_units = set_of({ "minutes", "minute", "min", "mins", "seconds", "second", "sec", "secs" })
 function G.clock_minute(text)
-  if not text:lower():find("minute", 1, true) then return text end
-  return (text:gsub("(%f[%a][Aa][Tt]%s+)[Mm]inute%s+(%d+)%f[%D]", "%1%2 minutes"))
+  local low = text:lower()
+  if low:find("minute", 1, true) then text = text:gsub("(%f[%a][Aa][Tt]%s+)[Mm]inute%s+(%d+)%f[%D]", "%1%2 minutes") end
+  if not low:find("later", 1, true) then return text end
+  return (text:gsub("%f[%w](%d+)(%s*)(%a+)%s+[Ll]ater%f[%A]", function(n, sp, unit)
+    if not G.later_units[unit:lower()] then return nil end
+    return "in " .. n .. sp .. unit
+  end))
 end
 -- "direct Bombay VOR", "after the Madras VOR": a city's other name (lexicon.navaid_city_names) straight before a
 -- navaid's kind (lexicon.navaid_kind_words) is the name the navdata gives the navaid ("Mumbai VOR").

@@ -364,6 +364,9 @@ return {
         -- (the speaker's opinion, in a report: "..., which is what the controller ought to have done, in my view")
         "in my view", "in my opinion", "in our view", "in our opinion", "to my mind",
         "at once", "right away", "straight away", "without further delay",
+        -- (instructions to several aircraft said to run together: "AFR12 turn left 30, DLH10 turn right 30,
+        -- simultaneously": what squawk sends in one request runs at the same time)
+        "simultaneously", "at the same time",
         -- the aircraft's (or the simulation's) ability, as "if able" ("up to 390 if the sim lets him")
         "if he can", "if she can", "if it can", "if he's able", "if she's able", "if it's able", "if the sim lets him",
         "if the sim lets her", "if the sim lets it", "if the sim allows", "if the sim allows it", "if the sim can",
@@ -2796,6 +2799,8 @@ return {
     { heard = { "plight" }, means = "flight", before = { "level", "rebel", "label", "revel" } },
     { heard = { "rebel", "label", "revel" }, means = "level", after = { "flight", "plight" } },
     { heard = { "crime" }, means = "climb", before = { "#number", "and", "flight", "plight", "to", "level" } },
+    -- (an Arabic accent: "qatari eight alpha bravo claim flight level two three zero")
+    { heard = { "claim" }, means = "climb", before = { "#number", "flight", "level", "to", "and" } },
     { heard = { "maintenance" }, means = "maintain", before = { "#number", "flight", "plight", "level", "altitude" } },
     { heard = { "pour" }, means = "four", before = { "thousand", "hundred" } },
     { heard = { "sick" }, means = "six", before = { "thousand", "hundred" } },

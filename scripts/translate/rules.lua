@@ -2674,8 +2674,9 @@ return function(intent, rule, words)
   -- goes asked, not the position: its route, which ends at its destination (writers read DEST, LISTRTE or POS;
   -- LISTRTE answers every one); the question opens the request, or follows the aircraft alone, and ends with its
   -- verb ("where is UAL57 going to cross GIPNO?" and "too high for where it's going" are no such question)
+  -- (a callsign said in words may take six: "where is Scandinavian four four two one going, show the route")
   rule { "where where's wheres", "listrte", when = function(g, i)
-    local e = math.min(#g.t + 1, i + 7)
+    local e = math.min(#g.t + 1, i + 10)
     local k = g:find_word(i + 1, e, "going headed bound")
     local first = g:skip_fillers(1)
     local r = g:refs_in(first, first + 1, "aircraft")[1]
@@ -3957,6 +3958,8 @@ return function(intent, rule, words)
   -- "asas dt 2 sec", "dt asas 2": the interval of conflict detection (DT ASAS), no switch
   rule { "detection asas cd", false, near = { 1, "dt timestep" } }
   rule { "detection asas cdmethod cd", "asas" }
+  -- ("detect conflicts state based": the verb with its method)
+  rule { "detect", "asas", next = "conflicts conflict", near = { 4, "statebased state-based state" } }
   -- "check the conflicts every 2 seconds", "check for conflicts every 5 s": how often conflict detection runs (DT
   -- ASAS, m:time_step), "every" and its time straight after the conflicts
   rule { "check checks checking", "dt", near = { 3, "conflict conflicts" }, when = function(g, i)

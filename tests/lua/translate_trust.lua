@@ -24031,3 +24031,16 @@ do
   check_eq(ex("korean air one two six one descend pour thousand"), "ALT KAL1261 4000")
   check_eq(ex("japan air sixu descend pive thousand"), "ALT JAL6 5000")
 end
+
+-- Cycle 80 (R424): "..., then 2 minutes later slow both to 250" (a wait with "later"), "..., simultaneously", "detect
+-- conflicts state based"; "set the wind at 50 8 FL100 ..." was heard as a garbled callsign (SETTHEWINDAT508)
+do
+  local _, ex = scene({ "CRE KLM1234 B738 52.3 4.8 090 FL200 280", "CRE DLH4AX A320 52.1 4.6 270 FL210 280",
+    "CRE BAW908 A320 50.1 8.2 020 FL160 280" })
+  check_eq(ex("KLM1234 and DLH4AX both descend FL120 now, then 2 minutes later slow both to 250"),
+    "ALT KLM1234 FL120 ; ALT DLH4AX FL120 ; DELAY 120 SPD KLM1234 250 ; DELAY 120 SPD DLH4AX 250")
+  check_eq(ex("KLM1234 turn left 30, DLH4AX turn right 30, simultaneously"),
+    "HDG KLM1234 60 LEFT ; HDG DLH4AX 300 RIGHT")
+  check_eq(ex("detect conflicts state based, and look ahead 5 minutes"), "ASAS STATEBASED ; DTLOOK 300")
+  check_eq(ex("set the wind at 50 8 FL100 270 degrees 40 knots"), "WIND 50 8 FL100 270 40")
+end
