@@ -538,7 +538,9 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
     std::string words;
     bool keyword = false;  // an instruction word may be a misheard airline name ("front turn" = Frontier)
     bool only_keywords = true;
-    bool article = false;  // "the", "a", "an" or "at" among them: no airline's name holds one
+    // an instruction word after "the", "a" or "an", or "at" among them: no airline's name reads so
+    // ("set the wind at 50 8"; "descend the 1723" may still be a flight number)
+    bool article = false, article_before = false;
     std::string last_word;  // as typed: two capitals are an airline code ("AC 851")
     while (i < t.size() && i - words_begin < 4 && is_word(t[i]) && !used[i] && !is_number_word(t[i]) &&
            names.phonetic_letter(t[i].text) == 0) {
@@ -547,7 +549,10 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
       // instruction)
       only_keywords = only_keywords && (names.vocabulary().is_keyword(t[i].text) ||
                                         (i > words_begin && t[i].text == "to"));
-      article = article || t[i].text == "the" || t[i].text == "a" || t[i].text == "an" || t[i].text == "at";
+      article = article || t[i].text == "at" ||
+                (article_before && names.vocabulary().is_keyword(t[i].text));
+      article_before =
+          article_before || t[i].text == "the" || t[i].text == "a" || t[i].text == "an";
       words += t[i].text;
       last_word = t[i].raw;
       ++i;
@@ -580,7 +585,8 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
     // Instruction words alone before the digits are that instruction and its value ("seed 1234
     // please", "random seed 42"), no airline misheard (that takes a word of its own: "front turn" =
     // Frontier).
-    // ("set the wind at 50 8 FL100 ...": an instruction's words with an article or "at" between are no airline)
+    // ("set the wind at 50 8 FL100 ...": an instruction's words with an article or "at" between are
+    // no airline)
     const bool instruction_alone = keyword && (only_keywords || article) && i > words_begin;
     if (!suf.groups.empty() && !unit_after(suf.ends.back()) && !instruction_alone && !rate) {
       CallsignMatch m = match_world("", words, suf, fleet, names);

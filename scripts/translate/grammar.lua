@@ -9166,7 +9166,17 @@ function G:parse(b, e)
         at = "ATALT " .. self.out[n_before + 1]:match("^%u+ (%S+)") .. " "
           .. handlers.format.alt(until_lvl.q.value, until_lvl.q.fl)
       elseif tail and not self.ask and #self.out > n_before then
-        self:do_at(self.out[n_before + 1]:match("^%u+ (%S+)"), tail.name, n_before)
+        local id = self.out[n_before + 1]:match("^%u+ (%S+)")
+        -- ("descend FL150, reduce 280 knots, once past BAGSO": an instruction of the same aircraft said before in
+        -- the list, tied to nothing, may wait for the place too or run now: asked, never sent now unasked)
+        for c = 1, self:do_at(id, tail.name, n_before) and n_before or 0 do
+          if self.out[c]:match("^%u+ (%S+)") == id and not CONDITIONAL[self.out[c]:match("^(%u+)")]
+              and self.t[tail.b - 1] and self.t[tail.b - 1].text == "," then
+            self:need(string.format("I have %s. Should %s also wait until %s passes %s, or run now?",
+              table.concat(self.out, " ; "), self.out[c], id, tail.name))
+            break
+          end
+        end
       elseif at_next and not self.ask and #self.out > n_before then
         -- ("reduce 250, at ROLIS descend FL100 and turn left heading 020": what follows of the same aircraft waits
         -- for the place too, joined by "and", or is asked)
@@ -9601,8 +9611,8 @@ function G:trailing_fix(s)
   -- (the aircraft's pronoun: "it", "you", or "he"/"she" as many speakers say of an aircraft, "after he passes PIVIS")
   if self:word(k, "it you he she") then k = self:skip_fillers(k + 1) end
   -- ("fl100 when past WYP": typed short, "past" is passing; "climb FL390 once you reach BURAM", "... when you
-  -- pass LOHRE": the verb's bare form after "you")
-  if self:word(k, "passing passes reaching reaches overflying past reach pass") then
+  -- pass LOHRE": the verb's bare form after "you"; "slow to 250 knots once over ANDIK", "when overhead BNN")
+  if self:word(k, "passing passes reaching reaches overflying past reach pass over overhead") then
     k = self:skip_fillers(k + 1)
   elseif self:word(k, "has have") and self:word(k + 1, "passed reached") then  -- ("once it has passed YHZ")
     k = self:skip_fillers(k + 2)

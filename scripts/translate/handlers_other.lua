@@ -4710,6 +4710,7 @@ return function(H, f, compass)
     -- "off" said, sets the zone only (m:zone), the switch as it is)
     local sized = false
     if spec.cmd == "ASAS" and self:on_off(s) < 0 and not self:word_in(1, #self.t + 1, "@on @off")
+        and not self:word(s.trig, "detect")
         and self:word_in(s.trig, math.min(#self.t + 1, s.trig + 3), "radius zone") then
       for _, q in ipairs(self:quantities(1, #self.t + 1)) do sized = sized or q.kind == "dist" end
     end

@@ -338,6 +338,10 @@ return {
         "jazak allahu khairan", "jazakallah khair", "barak allah", "barak allahu feek", "if you please",
         "when able", "if able", "if you can", "if you could", "if you would", "if possible",
         "if you don't mind", "if it's not too much trouble", "as soon as possible", "as soon as you can",
+        -- (a retired controller's courtesy: "..., if you'd be so kind", "thank you ever so much", "be a dear and
+        -- descend ...", "when you have a moment", "if I may")
+        "if you'd be so kind", "if you would be so kind", "if you'd be kind enough", "if you would be kind enough",
+        "if i may", "ever so much", "be a dear and", "when you have a moment", "when you've a moment",
         -- the listener's convenience and leave said whole ("..., please, when convenient", "if that's alright with you")
         "when convenient", "whenever convenient", "when it's convenient", "when it is convenient", "at your convenience",
         "if that's alright with you", "if that's all right with you", "if that's alright", "if that's all right",

@@ -26,6 +26,8 @@ local names = {
   airlines = {
     { "speedbird", "BAW" },
     { "helvetic", "OAW" },
+    -- (ASL Airlines Ireland)
+    { "contract", "ABR" },
     -- military transport and air force telephony (ICAO Doc 8585) beside the air forces below
     { "reach", "RCH" },
     { "navy", "NAVY" },

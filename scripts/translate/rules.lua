@@ -3121,6 +3121,16 @@ return function(intent, rule, words)
     end
     return measured and (g.t[k] == nil or (g.t[k].kind == "punct" and k == #g.t))
   end }
+  -- ("might I ask what the Shuttle seven mike's present heading is?": "what", the aircraft (a callsign said in
+  -- words), its measure and "is" closing the request: the measure asked, never the heading kept)
+  rule { "what", "pos", when = function(g, i)
+    local k = g:word(i + 1, "the") and i + 2 or i + 1
+    local r = g:refs_in(k, k + 1, "aircraft")[1]
+    if not (r and r.b == k) then return false end
+    local e = math.min(#g.t + 1, r.e + 3)
+    local m = g:find_word(r.e, e, "altitude speed heading level position height mach")
+    return m < e and g:word(m + 1, "is are") and (g.t[m + 2] == nil or g.t[m + 2].kind == "punct")
+  end }
   -- (the measure asked by its other names: "what height is it at?", "the Dreamliner, what's its Mach number?")
   -- ("you know" with no auxiliary before it is the spoken filler, "Air Peace 7124 you know, turn left heading
   -- 190", "you know what, climb FL150": no question; "do you know your heading" asks)
@@ -3281,6 +3291,11 @@ return function(intent, rule, words)
          not_near = { 2, "higher lower more less another new different" },
          when = function(g, i) return #g:quantities(i, #g.t + 1) == 0 end }
   rule { "carry", "op", next = "on", near = { 4, "@sim" } }  -- "carry on with the simulation"
+  -- ("ok grand, carry on with it": "it", the run, closing the clause; no aircraft named anywhere)
+  rule { "carry", "op", next = "on", when = function(g, i)
+    return g:word(i + 2, "with") and g:word(i + 3, "it") and g:clause_alone(i, i + 4)
+      and not g:has_ref(1, #g.t + 1, "aircraft")
+  end }
   -- "carry on", "go on", "right, crack on" (British: get going)
   rule { "carry go crack", "op", next = "on", when = function(g, i) return g:alone_but(i, i + 2) end }
   -- "..., then carry on", "..., then go", "OK, go on, and run at 2x": a clause of its own; "ok carry on, run it at
@@ -3301,8 +3316,10 @@ return function(intent, rule, words)
   end }
   rule { "run", "op", next = "it", when = function(g, i) return g:clause_alone(i, i + 2) end }
   -- ("okay uh run it again": the same, "again" closing its clause; "run it again from the start" is no resume)
+  -- ("right, run it on again": "on" between, the Irish "run it on")
   rule { "run", "op", next = "it", when = function(g, i)
-    return g:word(i + 2, "again") and (g:alone_but(i, i + 3) or g:clause_alone(i, i + 3))
+    local k = g:word(i + 2, "on") and i + 3 or i + 2
+    return g:word(k, "again") and (g:alone_but(i, k + 1) or g:clause_alone(i, k + 1))
   end }
   -- "ok resume it", "continue it please": the run taken up again, "it" the simulation (no aircraft named anywhere)
   rule { "resume continue", "op", next = "it", when = function(g, i)
@@ -3605,6 +3622,11 @@ return function(intent, rule, words)
   rule { "fast", "ff", next = "forward" }
   rule { "ff fastforward fwd", "ff" }
   rule { "skip skipping", "ff", next = "ahead forward" }  -- "would you mind skipping ahead 30 seconds?"
+  -- ("skip on ten minutes": "on" before the time)
+  rule { "skip skipping", "ff", next = "on", when = function(g, i)
+    local q = g:quantities(i + 2, math.min(#g.t + 1, i + 5))[1]
+    return q ~= nil and q.kind == "time" and q.b == i + 2
+  end }
   -- ("skip the next ten minutes (of the scenario)": a time straight after "the next")
   rule { "skip skipping", "ff", next = "the", when = function(g, i)
     local q = g:word(i + 2, "next") and g:quantities(i + 3, math.min(#g.t + 1, i + 7))[1]
@@ -3958,8 +3980,8 @@ return function(intent, rule, words)
   -- "asas dt 2 sec", "dt asas 2": the interval of conflict detection (DT ASAS), no switch
   rule { "detection asas cd", false, near = { 1, "dt timestep" } }
   rule { "detection asas cdmethod cd", "asas" }
-  -- ("detect conflicts state based": the verb with its method)
-  rule { "detect", "asas", next = "conflicts conflict", near = { 4, "statebased state-based state" } }
+  -- ("detect conflicts state based", "detect conflicts with a 5 mile radius and 1000 ft": the verb, detection on)
+  rule { "detect", "asas", next = "conflicts conflict" }
   -- "check the conflicts every 2 seconds", "check for conflicts every 5 s": how often conflict detection runs (DT
   -- ASAS, m:time_step), "every" and its time straight after the conflicts
   rule { "check checks checking", "dt", near = { 3, "conflict conflicts" }, when = function(g, i)

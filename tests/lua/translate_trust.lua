@@ -24044,3 +24044,25 @@ do
   check_eq(ex("detect conflicts state based, and look ahead 5 minutes"), "ASAS STATEBASED ; DTLOOK 300")
   check_eq(ex("set the wind at 50 8 FL100 270 degrees 40 knots"), "WIND 50 8 FL100 270 40")
 end
+
+-- Cycle 80 (R435, R439, R440): Irish sim words ("carry on with it", "run it on again", "skip on ten minutes"), ASL
+-- Airlines Ireland's "Contract", a retired controller's courtesy ("if you'd be so kind", "thank you ever so much"),
+-- "might I ask what X's present heading is" (it kept the heading), a condition "once over X" / "when overhead X"
+-- after the action, and one after a list ("descend FL150, reduce 280 knots, once past BAGSO" descended at once);
+-- "detect conflicts with a 5 mile radius" switched nothing on
+do
+  local _, ex = scene({ "CRE ABR31K B734 53.4 -6.3 090 FL200 280", "CRE EIN3AT A320 53.0 -6.0 090 FL200 280",
+    "DEFWPT BAGSO 53.5 -5.5", "ADDWPT EIN3AT BAGSO", "CRE SHT7M A320 51.5 -0.5 200 FL150 270" })
+  check_eq(ex("ok grand, carry on with it"), "OP")
+  check_eq(ex("right, run it on again"), "OP")
+  check_eq(ex("skip on ten minutes"), "FF 600")
+  check_eq(ex("Contract three one kilo, turn left heading one zero zero"), "HDG ABR31K 100 LEFT")
+  check_eq(ex("I wonder if you might descend Contract three one kilo to flight level eight zero please, thank you ever "
+    .. "so much."), "ALT ABR31K FL80")
+  check_eq(ex("What is Contract three one kilo doing, if you'd be kind enough to tell me."), "POS ABR31K")
+  check_eq(ex("Might I ask what the Shuttle seven mike's present heading is?"), "POS SHT7M")
+  check_eq(ex("Shamrock 3AT slow to 250 knots once over BAGSO"), "AT EIN3AT BAGSO DO SPD EIN3AT 250")
+  check_eq(ex("Shamrock 3AT reduce speed 250 knots when overhead BAGSO"), "AT EIN3AT BAGSO DO SPD EIN3AT 250")
+  asked(ex("Shamrock 3AT descend FL150, reduce 280 knots, once past BAGSO"), "the first of a list before the place")
+  check_eq(ex("detect conflicts with a 5 mile radius and 1000 ft"), "ASAS ON ; ZONER 5 ; ZONEDH 1000")
+end
