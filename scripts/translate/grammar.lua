@@ -2146,6 +2146,27 @@ local function value_homophones(text)
     end
   end)
 end
+-- "increase to 300 knots for 2 minutes then back to 280", "heading 090 for 3 min, then back to 180", "keep 250 knots
+-- for 3 minutes then 210": the bare value after "then (back to)", past a time the value before is held for, is of that
+-- value's kind, its noun said ("then back to speed 280"; m:held_for reads the wait), when it closes the request
+G.held_nouns = { knots = "speed", knot = "speed", kts = "speed", kt = "speed", speed = "speed", mach = "speed",
+                 heading = "heading", hdg = "heading", fl = "flight level", level = "flight level" }
+function G.back_to_held(text)
+  local low = text:lower()
+  local b = low:find("then%s+back%s+to%s+%.?%d") or low:find("then%s+%.?%d")
+  if not b or not low:find("%f[%a]for%s+%d") then return text end
+  local before = low:sub(1, b - 1)
+  local held = before:match("^(.*)%f[%a]for%s+%d+%s*%a+[%s,]*$")
+    or before:match("^(.*)%f[%a]for%s+%d+%s*%a+[%s,]*and%s+$")
+  if not held then return text end
+  local noun
+  for w in held:gmatch("%a+") do noun = G.held_nouns[w] or noun end
+  if not noun then return text end
+  local e = low:find("%.?%d", b)
+  -- (closing the request: what follows it, "..., after that descend 5000", would wait on it too, asked as before)
+  if not low:sub(e):match("^[%d%.]+%s*%a*[%s%.!]*$") then return text end
+  return text:sub(1, e - 1) .. noun .. " " .. text:sub(e)
+end
 -- "Scandinavian fortyone seventytwo": a word of tens typed onto the units after it is the two number words
 G.tens_words = set_of({ "twenty", "thirty", "forty", "fourty", "fifty", "sixty", "seventy", "eighty", "ninety" })
 G.unit_words = set_of({ "one", "two", "three", "four", "five", "six", "seven", "eight", "nine", "niner" })
@@ -3703,6 +3724,13 @@ local function written_forms(text, world)
   -- (a clock time told as the present moment of a report is dropped first: G.clock_now)
   text = G.clock_start(G.clock_now(text))
   low = text:lower()
+  -- ("00:03:00 - Transavia 5KL descend to FL080", "00:01:00 conflict detection on; 00:02:00 resolution MVP": a step
+  -- list's h:mm:ss opening the line or a clause after ";", a dash or colon after it or none, is "at" that time)
+  if low:find("%d:%d%d:%d") then
+    text = text:gsub("^(%s*)(%d%d?:[0-5]%d:[0-5]%d)%s*[-:]?%s+", "%1at %2 ")
+      :gsub("(;%s*)(%d%d?:[0-5]%d:[0-5]%d)%s*[-:]?%s+", "%1at %2 ")
+    low = text:lower()
+  end
   -- a simulation time typed h:mm:ss ("at 00:20:00") is that many seconds, also before a colon that opens
   -- what follows ("schedule at 00:15:00: ..."); mm:ss or hh:mm stays as typed
   where("%d:%d", "%f[%d:](%d%d?):([0-5]%d):([0-5]%d)(:?)%f[^%d:]", function(h, m, sec, colon)
@@ -3879,7 +3907,7 @@ local function written_forms(text, world)
     end)
   end
   text = G.navaid_city_names(G.sim_old(G.thousand_speed_homophones(value_homophones(G.limit_homophones(
-    G.conditioned_bare_speed(split_digits(G.clock_minute(G.glued_tens(text)))))))))
+    G.conditioned_bare_speed(split_digits(G.clock_minute(G.back_to_held(G.glued_tens(text))))))))))
   -- "dlh4ax up 2000", "down 1500 pls": a bare whole or half thousand typed after "up" or "down" is a change of
   -- level by that many feet, as "up 2000 ft" (after a rate's or a speed's name, "vs up 2000", or before a unit,
   -- it stays as typed; "up 20" stays too, and is asked)
@@ -7582,11 +7610,12 @@ function G:level_condition_cut(qs)
   end
   return nil
 end
--- True when segment `seg` opens on a wait ("after 2 minutes heading 180", "in 2 min"): a second wait after a
--- comma ("..., after 4 minutes heading 270") is the next instruction's, said the same way.
+-- True when segment `seg` opens on a wait or a time ("after 2 minutes heading 180", "in 2 min", "at 00:06:00"): a
+-- second one after a comma ("..., after 4 minutes heading 270", "..., at 00:09:00 speed 210") is the next
+-- instruction's, said the same way.
 function G:timed_clause(seg)
   for _, q in ipairs(self:quantities(seg.b, seg.trig)) do
-    if q.kind == "time" and self:word(q.b - 1, "after in") then return true end
+    if q.kind == "time" and self:word(q.b - 1, "after in at") then return true end
   end
   return false
 end
@@ -7737,7 +7766,7 @@ function G:segments(b, e)
           -- ("descend FL300, and after 2 minutes descend FL260", "heading 230, then in 3 minutes back to heading
           -- 190": a wait after "and" or "then" and "after" or "in", after the first's value, is the second's; after a
           -- comma alone it stays asked)
-            or (q.kind == "time" and #self:quantities(last.trig, q.b) > 0 and self:word(q.b - 1, "after in")
+            or (q.kind == "time" and #self:quantities(last.trig, q.b) > 0 and self:word(q.b - 1, "after in at")
               and (self:word(q.b - 2, "and then") or (self.t[q.b - 2] or {}).text == "," and self:timed_clause(last)))
         end
         -- ("reduce 270 after GAVOL speed 250": a waypoint passed after the first's value, straight before the
@@ -7822,6 +7851,18 @@ function G:segments(b, e)
         -- ("..., the first one reduce 240, the second one reduce 260": an ordinal picking one of the aircraft named
         -- together, straight before the instruction word, is its subject, m:acids)
         if self:ordinal_picks(last.trig, start) then start = (self:word(start - 1, "one") and start - 1 or start) - 2 end
+        -- ("at 00:01:00 conflict detection on; at 00:02:00 resolution MVP", "..., then at 00:07:00 speed 250": a time
+        -- said after "at", "in" or "after" straight before the instruction word (its aircraft between or not), behind a
+        -- semicolon, a comma or "then", is this instruction's, as an aircraft named there is)
+        local tq = self:quantities(last.trig + 1, start)
+        tq = tq[#tq]
+        local named_b = self:refs_in(tq and tq.e or start, start, "aircraft")[1]
+        if tq and tq.kind == "time" and (tq.e == start or (named_b and named_b.b == tq.e and named_b.e == start))
+            and self:word(tq.b - 1, "at in after") and self.t[tq.b - 2] and (self:word(tq.b - 2, "then")
+              or (self.t[tq.b - 2].kind == "punct" and (self.t[tq.b - 2].text == ";" or self.t[tq.b - 2].text == ",")))
+            and tq.b - 1 > last.trig then
+          start = tq.b - 1
+        end
         -- "heading 070, FL240 climb, speed 300": a value with this instruction's unit said just before its word,
         -- after a comma or "and" closing the instruction before with a value of its own, is this one's
         -- (verb-final order; "to" before the value with it)
@@ -9568,13 +9609,26 @@ function G:value_before(s, c)
   local last = self:quantities(s.trig, v + 1)
   return VALUE_INTENTS[s.intent] and #last > 0 and last[#last].e == v + 1
 end
+-- True when segment s, a switch of navigation ("VNAV on, once past ALPHA") or a deletion of a waypoint ("delete
+-- waypoint TABUM, once past KERAX"), ends with its on/off word or its waypoint straight before a comma and condition
+-- word c: what the condition after it waits with, as a value does (G:trailing_fix).
+function G:switch_or_place_before(s, c)
+  if not (self.t[c - 1] and self.t[c - 1].text == ",") then return false end
+  local v = c - 2
+  if s.intent == "lnav" or s.intent == "vnav" then return v > s.trig and self:word(v, "@on @off") end
+  if s.intent ~= "delwpt" then return false end
+  local r = self:refs_in(s.trig, c, "waypoint")
+  return #r == 1 and r[1].e == v + 1
+end
 function G:trailing_fix(s)
   local c = self:find_word(s.trig + 1, s.e, "when once after upon on")
   -- ("descend on 120 after he passes PIVIS", "climb on level 240 when ...": "on" before the instruction's own value,
   -- as a Polish speaker says "to", opens no condition; the next condition word does)
+  -- ("VNAV on, once past ALPHA": a switch's "on" before a comma opens none either)
   while c < s.e and self:word(c, "on upon") do
     local q = self:quantities(c + 1, s.e)[1]
-    if not (q and q.b <= c + 3 and not self:has_ref(c + 1, q.b, "waypoint")) then break end
+    local switched = self:word(c, "on") and self.t[c + 1] and self.t[c + 1].text == ","
+    if not switched and not (q and q.b <= c + 3 and not self:has_ref(c + 1, q.b, "waypoint")) then break end
     c = self:find_word(c + 1, s.e, "when once after upon on")
   end
   -- ("reduce 250 knots passing LOMKI", "descend FL200 overflying LOMKI": a verb of passing straight after the
@@ -9582,7 +9636,8 @@ function G:trailing_fix(s)
   local bare = self:find_word(s.trig + 1, c, "passing passes reaching reaches overflying")
   bare = bare < c and self:has_ref(bare + 1, bare + 2, "waypoint") and self:value_before(s, bare) and bare
   if bare then c = bare end
-  if c >= s.e or (#self:quantities(s.trig, c) == 0 and not (s.intent == "delete" and self:value_before(s, c))) then
+  if c >= s.e or (#self:quantities(s.trig, c) == 0 and not (s.intent == "delete" and self:value_before(s, c))
+      and not self:switch_or_place_before(s, c)) then
     return nil
   end
   local k = bare or self:skip_fillers(c + 1)
@@ -13714,7 +13769,7 @@ function G:participle_question()
   end
   -- (a question word or a modal in it asks something else, or asks politely: "EVA12 speed 250, heading what?",
   -- "Thai 420 turn right heading 120, can or not?")
-  local modal = self:said("what how which where why when who can could would will may might ok okay possible able")
+  local modal = self:said("what how which where why when who can could would will may might ok okay tamam possible able")
   local first = self:skip_fillers(1)
   if not modal and self.t[first] and G.instruction_bases[self.t[first].text] and not self:has_ref(first, first + 1) then
     local r = self:refs_in(first + 1, first + 2, "aircraft")[1]
@@ -17436,6 +17491,21 @@ for name in pairs(require("translate.types").nicknames) do
   local head = name:match("^(%S+) ")
   if head then G.nickname_heads[head] = true end
 end
+-- "fly direct to Southampton, the SAM beacon", "route direct to Glasgow, the GOW VOR": a name said before ", the",
+-- an ident and a navaid's kind, that the navdata gives that navaid near the traffic, is that navaid said twice: the
+-- name is dropped (nothing else explains it). Another name beside an ident stays, asked.
+function G.named_navaid_apposition(text, world)
+  if not (world.navaids_named and text:find(", the ", 1, true)) then return text end
+  local a = world.aircraft and world.aircraft[1]
+  if not (a and a.lat) then return text end
+  return (text:gsub("%f[%a](%u%a+), the (%u%u%u?%u?%u?) (%a+)%f[%A]", function(name, ident, kind)
+    if not G.navaid_kinds[kind:lower()] then return nil end
+    for _, id in ipairs(world.navaids_named(name:lower(), a.lat, a.lon, lexicon.navaid_range_nm)) do
+      if id:upper() == ident then return "the " .. ident .. " " .. kind end
+    end
+    return nil
+  end))
+end
 local function abbreviated_registrations(text, fleet)
   if #fleet == 0 then return text, nil end
   local nicknames = require("translate.types").nicknames
@@ -19841,6 +19911,7 @@ function M.translate(text, world)
   text, abbreviated = abbreviated_registrations(text, world.aircraft)
   if abbreviated then return { commands = {}, ask = abbreviated } end
   text = spelled_registrations(text, world.aircraft)
+  text = G.named_navaid_apposition(text, world)
   local types = require("translate.types")
   text = G.spoken_degrees_minutes(text)
   local dm = impossible_minutes(text)

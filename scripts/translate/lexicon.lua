@@ -119,6 +119,8 @@ return {
         "aiyah", "aiya", "aiyoh", "aiyo",
         -- (and a Dutch speaker's "let me see", "even kijken, turn right 20 degrees"; a Swiss speaker's tag, "gell")
         "kijken", "gell",
+        -- (and a Turkish speaker's "okay?", "tamam")
+        "tamam",
         -- (a value said loosely, "250-ish", "like 250ish": the value said is the one flown, as "roughly 250")
         "ish", "afterwards", "afterward", "meanwhile", "completely", "fully",
         -- (a report's order of events and degree: "was subsequently given", "disable it altogether")

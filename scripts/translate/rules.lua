@@ -3346,6 +3346,10 @@ return function(intent, rule, words)
   rule { "resume continue unpause start", "op", when = the_run }
   rule { "stop", "hold", when = the_run }
   rule { "go", "op", next = "again" }  -- "and go again"
+  -- ("simulation go, and speed up twice": the run started, said in the noun's order, before a mark or the end)
+  rule { "go", "op", prev = { 1, "simulation sim" }, when = function(g, i)
+    return g.t[i + 1] == nil or g.t[i + 1].kind == "punct"
+  end }
   -- "kick off the episode", "kick off the sim": the run started, said of the simulation
   rule { "kick", "op", next = "off", near = { 3, "@sim" } }
   -- "let it rip", "let her rip": the run started (said with no aircraft named; with one it is asked)

@@ -24066,3 +24066,52 @@ do
   asked(ex("Shamrock 3AT descend FL150, reduce 280 knots, once past BAGSO"), "the first of a list before the place")
   check_eq(ex("detect conflicts with a 5 mile radius and 1000 ft"), "ASAS ON ; ZONER 5 ; ZONEDH 1000")
 end
+
+-- Cycle 80 (R424): "increase to 300 knots for 2 minutes then back to 280": the bare value after "then back to" is of
+-- the held value's kind (it was asked)
+do
+  local _, ex = scene({ "CRE BAW908 A320 50.1 8.2 020 FL160 280" })
+  check_eq(ex("BAW908 increase to 300 knots for 2 minutes then back to 280"), "SPD BAW908 300 ; DELAY 120 SPD BAW908 280")
+  check_eq(ex("BAW908 heading 090 for 3 min, then back to 180"), "HDG BAW908 90 ; DELAY 180 HDG BAW908 180")
+end
+
+-- Cycle 80 (R439): "fly direct to Southampton, the SAM beacon": the navaid's name said before its ident is the same
+-- place (it was asked); a name the navaid does not bear stays asked
+do
+  local s = navscene({ "CRE BAW123 A320 51.0 -1.0 090 FL100 250", "ADDWPT BAW123 SAM" }, "a navaid named twice")
+  if s then
+    local function ex(text) return said(graph.translate(text, { sim = s, mode = "offline" })) end
+    check_eq(ex("Speedbird 123 fly direct to Southampton, the SAM beacon"), "DIRECT BAW123 SAM")
+    asked(ex("Speedbird 123 fly direct to Brighton, the SAM beacon"), "a name the navaid does not bear")
+  end
+end
+
+-- Cycle 80 (R440): a switch or a waypoint's deletion before a condition after a comma ("VNAV on, once past ALPHA",
+-- "delete waypoint TABUM, once past KERAX") waits for the place (both were asked)
+do
+  local _, ex = scene({ "CRE TRA5XK B738 52.0 4.0 090 FL200 280", "DEFWPT ALPHA 52.2 4.5", "DEFWPT TABUM 52.3 5.0",
+    "ADDWPT TRA5XK ALPHA", "ADDWPT TRA5XK TABUM" })
+  check_eq(ex("Transavia 5XK VNAV on, once past ALPHA"), "AT TRA5XK ALPHA DO VNAV TRA5XK ON")
+  check_eq(ex("TRA5XK delete waypoint TABUM, once past ALPHA"), "AT TRA5XK ALPHA DO DELWPT TRA5XK TABUM")
+end
+
+-- Cycle 80 (R445, R446): a step list's times ("00:03:00 - X descend ...", "00:01:00 conflict detection on; 00:02:00
+-- resolution MVP", "at 00:06:00 speed 230, at 00:09:00 speed 210"), "keep 250 knots for 3 minutes then 210", and a
+-- Turkish "tamam?" closing an instruction (read as "okay?")
+do
+  local _, ex = scene({ "CRE TRA5KL B738 52.0 4.0 090 FL200 280", "CRE AJA4CG A320 41.0 29.0 090 FL100 250" })
+  check_eq(ex("00:03:00 - Transavia 5KL descend to FL080"), "SCHEDULE 00:03:00 ALT TRA5KL FL80")
+  check_eq(ex("00:01:00 conflict detection on; 00:02:00 resolution MVP"),
+    "SCHEDULE 00:01:00 ASAS ON ; SCHEDULE 00:02:00 RESO MVP")
+  check_eq(ex("TRA5KL: at 00:06:00 speed 230, at 00:09:00 speed 210"),
+    "SCHEDULE 00:06:00 SPD TRA5KL 230 ; SCHEDULE 00:09:00 SPD TRA5KL 210")
+  check_eq(ex("TRA5KL keep 250 knots for 3 minutes then 210"), "SPD TRA5KL 250 ; DELAY 180 SPD TRA5KL 210")
+  asked(ex("TRA5KL heading 150 for 1 min, then back to 180, after that descend 5000"), "what follows the held value")
+  check_eq(ex("AJA4CG climb flight level 1 3 0 tamam?"), "ALT AJA4CG FL130")
+end
+
+-- Cycle 80 (R443): "simulation go, and speed up twice" dropped the start (OP)
+do
+  local _, ex = scene({ "CRE CSA3YD A320 50.1 14.3 090 FL130 250" })
+  check_eq(ex("simulation go, and speed up twice"), "OP ; DTMULT 2")
+end
