@@ -3643,6 +3643,11 @@ return function(intent, rule, words)
     return q ~= nil and q.b == g:skip_fillers(i + 2) and q.kind == "time" and not g:has_ref(1, #g.t + 1, "aircraft")
   end }
   rule { "skip skipping", "ff", near = { 4, "ahead forward" } }  -- "skip one hour forward"
+  -- ("simulate ten minutes ahead": the time, then "ahead" or "forward")
+  rule { "simulate", "ff", when = function(g, i)
+    local q = g:quantities(i + 1, math.min(#g.t + 1, i + 4))[1]
+    return q ~= nil and q.kind == "time" and q.b == i + 1 and g:word(q.e, "ahead forward")
+  end }
   -- "skip 5 minutes", "skip like 30 secs": a time straight after it (a loose one too), no waypoint or aircraft named
   rule { "skip", "ff", when = function(g, i)
     local k = g:skip_fillers(i + 1)

@@ -24115,3 +24115,9 @@ do
   local _, ex = scene({ "CRE CSA3YD A320 50.1 14.3 090 FL130 250" })
   check_eq(ex("simulation go, and speed up twice"), "OP ; DTMULT 2")
 end
+
+-- Cycle 80 (R448): "simulate ten minutes ahead" is a fast-forward
+do
+  local _, ex = scene({ "CRE DAL2219 B739 32.0 -95.0 090 FL280 280" })
+  check_eq(ex("simulate ten minutes ahead"), "FF 600")
+end
