@@ -320,8 +320,22 @@ std::optional<SpokenNumber> read_number(const std::vector<Token>& t, size_t i) {
     n.end = j;
     return n;
   }
-  // Leading "point seven eight" (a Mach number).
-  if ((is_word(t, i, "point") || is_word(t, i, "decimal")) && digit_at(t, i + 1) >= 0) {
+  // Leading "point seven eight" (a Mach number); "point eighty two" (its two digits said as a
+  // number) is the same.
+  const bool lead = is_word(t, i, "point") || is_word(t, i, "decimal");
+  if (lead && i + 1 < t.size() && t[i + 1].kind == TokKind::kWord &&
+      tens_word(t[i + 1].text) >= 0) {
+    const int tens = tens_word(t[i + 1].text), unit = digit_at(t, i + 2);
+    size_t j = i + 2 + (unit > 0 ? 1 : 0);
+    if (is_word(t, j, "thousand") || is_word(t, j, "hundred")) return std::nullopt;
+    n.digits = std::to_string(tens + (unit > 0 ? unit : 0));
+    n.value = value_of("0." + n.digits);
+    n.has_decimal = true;
+    n.groups = 1;
+    n.end = j;
+    return n;
+  }
+  if (lead && digit_at(t, i + 1) >= 0) {
     size_t j = i + 1;
     std::string f = fraction_digits(t, j);
     if (is_word(t, j, "thousand") || is_word(t, j, "hundred")) return std::nullopt;

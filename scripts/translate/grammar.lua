@@ -5858,6 +5858,16 @@ function G:user_waypoint(name)
   return false
 end
 
+-- The level [ft] aircraft `id` is cleared to when an instruction waiting for a place runs ("climb FL120, then at
+-- ATAGA descend FL100": FL120): the last ALT of it among the commands before (self.runs_after of them), else nil.
+function G:level_when_run(id)
+  for c = self.runs_after or 0, 1, -1 do
+    local fl, ft = self.out[c]:match("^ALT " .. id:upper() .. " FL(%d+)"), self.out[c]:match("^ALT " .. id:upper() .. " (%d+)")
+    if fl or ft then return fl and tonumber(fl) * 100 or tonumber(ft) end
+  end
+  return nil
+end
+
 function G:state(id)
   local lid = id:lower()
   for _, a in ipairs(self.fleet) do
@@ -8997,7 +9007,6 @@ end
 -- heading instructions whose first values are of one kind (a Mach number a speed), "maintain" going by its value
 -- ("reduce speed 220 knots, correction, maintain 250 knots" is; "climb FL150, correction, maintain 250 knots" is not).
 G.value_kinds = { alt = "alt", speed = "speed", mach = "speed", heading = "heading" }
-G.value_intents = { alt = true, maintain = true, spd = true, hdg = true }
 function G:corrects_in_kind(s, t)
   if G.value_intents[s.intent] and G.value_intents[t.intent] then
     local a, b = self:quantities(s.trig, s.e)[1], self:quantities(t.trig, t.e)[1]
@@ -9184,9 +9193,12 @@ function G:parse(b, e)
       -- (a value again after "after" and its place is the instruction's alone: G:until_then)
       self.conditioned_ask = nil
       self.place_ask = nil
+      -- (an instruction that waits for a place runs after the commands before it: G:level_when_run)
+      self.runs_after = (at_next or tail or (until_wp and until_wp.after)) and n_before or nil
       if (until_wp and until_wp.after) or not self:at_waypoint(s, spec) then
         self[spec and spec.handler or "infer"](self, s, spec)
       end
+      self.runs_after = nil
       local c0 = crossed and k > 1 and self:find_word(segs[k - 1].trig, s.trig, "thereafter afterwards after")
       if c0 and c0 < s.trig and (not self:word(c0, "after") or self:word(c0 + 1, "that"))
           and not self:any_instruction_in(c0 + 1, s.trig) and not self.ask and #self.out > n_before then
@@ -9449,9 +9461,13 @@ function G:valueless_left(segs, valueless, issued_by)
         return
       end
     end
+    -- (the verb straight before an instruction word is that instruction's, "reduce speed 250", "increase the zone
+    -- to 6 NM"; a climb or descent before a heading or speed is one more instruction, its level unsaid: "climb
+    -- heading 330" asks the level)
+    local function kin(o) return not (s.intent == "alt" and (o.intent == "hdg" or o.intent == "spd")) end
     local read = not bare or refused or lifted
       or (before and issued_by[v.k - 1] and self:skip_fillers(before.trig + 1) == s.trig)
-      or (after and issued_by[v.k + 1] and next_word == after.trig and not marked)
+      or (after and issued_by[v.k + 1] and next_word == after.trig and not marked and kin(after))
     for verb in (G.value_intents[s.intent] or ""):gmatch("%u+") do read = read or issued[verb] end
     for j, o in ipairs(segs) do
       if issued_by[j] and G.value_intents[o.intent] == G.value_intents[s.intent] and against(s.trig, o.trig) then
@@ -14224,7 +14240,7 @@ function G:route_navaid_of(w)
     if a and a.lat then
       local on = {}
       for _, p in ipairs(a.route or {}) do on[p:upper()] = true end
-      for _, id in ipairs(named(w, a.lat, a.lon, lexicon.navaid_range_nm)) do
+      for _, id in ipairs(self:navaids_near_called(w, a)) do
         if on[id:upper()] then
           if found and found ~= id:upper() then return nil end
           found = id:upper()
@@ -14235,16 +14251,26 @@ function G:route_navaid_of(w)
   return found and self:route_navaid_named(w, found) and found or nil
 end
 
--- True when the word w is the navdata's own name of the navaid `name` on the route of an aircraft named in the
--- request, within lexicon.navaid_range_nm of it, and of no other waypoint of that route ("250 knots till comilla"
--- for CML, the Comilla VOR): the place said by its name, as a direct-to reads it, no sound-alike.
+-- The idents of the navaids within lexicon.navaid_range_nm of aircraft state `a` called by the word w: by w
+-- alone, else by a longer name holding it ("Addis" for ADS, ADDIS ABABA), nearest first.
+function G:navaids_near_called(w, a)
+  local ids = self.world.navaids_named(w, a.lat, a.lon, lexicon.navaid_range_nm)
+  local with = self.world.navaids_with_words
+  if #ids == 0 and with then ids = with(w, a.lat, a.lon, lexicon.navaid_range_nm) end
+  return ids
+end
+
+-- True when the word w is the navdata's own name of the navaid `name` (G:navaids_near_called) on the route of an
+-- aircraft named in the request, within lexicon.navaid_range_nm of it, and of no other waypoint of that route
+-- ("250 knots till comilla" for CML, the Comilla VOR): the place said by its name, as a direct-to reads it, no
+-- sound-alike.
 function G:route_navaid_named(w, name)
   local named = self.world.navaids_named
   if not named then return false end
   for _, r in ipairs(self.refs) do
     local a = r.kind == "aircraft" and r.exists and self:state(r.name)
     if a and a.lat then
-      local ids, on = named(w, a.lat, a.lon, lexicon.navaid_range_nm), {}
+      local ids, on = self:navaids_near_called(w, a), {}
       for _, p in ipairs(a.route or {}) do on[p:upper()] = true end
       local mine = 0
       for _, id in ipairs(ids) do
@@ -18146,8 +18172,16 @@ function G.recognised_callsigns(text, world, parsed)
     end
   end
   if not maybe then return text end
+  -- (the last word of a telephony of several words, said after its first ones: "air chinaone three three one")
+  if not G.telephony_last_words then
+    G.telephony_last_words = {}
+    for _, a in ipairs(names.airlines) do
+      local last = a[1]:match("%s(%a+)$")
+      if last and #last >= 4 then G.telephony_last_words[last] = true end
+    end
+  end
   local toks, bare = plain_words(text)
-  local function part(w) return GLUED_AIRLINES[w] or SPOKEN_DIGITS[w] end
+  local function part(w) return GLUED_AIRLINES[w] or SPOKEN_DIGITS[w] or G.telephony_last_words[w] end
   -- (the words `w` is, run together, in order; nil unless wholly such words, two or more)
   local function apart(w)
     local ends = { [0] = {} }
@@ -19056,9 +19090,10 @@ function G.went_to(out)
 end
 -- "show me ual22s route", "take camrn off jbu615s route", "make jbu422s trail blue": an aircraft's id typed with its
 -- possessive "s" and no apostrophe, before a thing the aircraft has (lexicon.possessed_by_aircraft), is that id's
--- possessive ("ual22's"), when the id is a flying aircraft's and the word with its "s" is none
+-- possessive ("ual22's", "baw8cks route": "baw8ck's"), when the id is a flying aircraft's and the word with its "s"
+-- is none
 function G.possessive_ids(text, world)
-  if not text:find("%d[Ss]%s") then return text end
+  if not text:find("%d%a*[Ss]%s") then return text end
   local ids = {}
   for _, a in ipairs(world.aircraft) do ids[(a.id or ""):lower()] = true end
   local owned = G.possessed_set or set_of(lexicon.possessed_by_aircraft)
@@ -19118,7 +19153,10 @@ local function typed_places(text, world)
     while e > 0 and (text:byte(e) == 32 or (text:byte(e) >= 9 and text:byte(e) <= 13)) do e = e - 1 end
     return text:sub(1, e)
   end
-  local capitals = text:find("%u") ~= nil
+  -- (capitals in a word with no digit: a callsign or type typed in capitals, "cre EZY81QA a319 over bnn", leaves
+  -- the line's words lower case)
+  local capitals = false
+  for w in text:gmatch("%S+") do capitals = capitals or (w:find("%u") ~= nil and not w:find("%d")) end
   local routed = {}
   for _, a in ipairs(world.aircraft) do
     for _, r in ipairs(a.route or {}) do routed[r:lower()] = true end
@@ -19132,9 +19170,12 @@ local function typed_places(text, world)
     local w = raw and raw:lower()
     -- (a three-letter ident ending in "s" that squawk knows only as an inflection, "from dus" as "due"'s, is no
     -- known word)
+    -- (nor is the first word of a navaid's name of two, "direct las vegas": LAS VEGAS, read by its name)
+    local two = w and rest == "" and parts[k + 1] and parts[k + 1][2]:match("^(%a+)%p*$")
     local named = w and slot and #w >= 3 and #w <= 5 and (not capitals or raw:match("^%u%l+$"))
       and (not known_word(w) or (not KNOWN[w] and ((#w == 3 and w:sub(3) == "s") or G.place_verbs[(out[#out] or ""):lower():match("(%a+)$") or ""])))
       and not ids[w] and not lexicon.shorthand[w] and near(w)
+      and not (two and world.navaids_named and #world.navaids_named(w .. " " .. two:lower(), 0, 0, 1e5) > 0)
     k = k + 1
     -- ("cross e c k at FL190", "at j v l descend ...": an ident spelled letter by letter, the whole run of
     -- two to five single letters, on an aircraft's route or, of three letters or more, near the traffic)

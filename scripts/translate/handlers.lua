@@ -1074,16 +1074,18 @@ end
 -- three words) -> ICAO prefix; brand names -> {ICAO prefixes}; the ICAO prefix a brand's name names ->
 -- {the brand's prefixes} (TRA -> {TRA, TVF}: a callsign heard with "Transavia" is of either).
 -- AIRLINE_FIRST: the first words (up to the first space) of those names.
--- NAMES_OF[icao]: the telephony names (lower case) of an airline
-local AIRLINE_NAMES, BRANDS, BRAND_OF, AIRLINE_FIRST, NAMES_OF
+-- NAMES_OF[icao]: the telephony names (lower case) of an airline; CALLED[icao]: those and its common names
+local AIRLINE_NAMES, BRANDS, BRAND_OF, AIRLINE_FIRST, NAMES_OF, CALLED
 local function airline_names()
   if AIRLINE_NAMES then return AIRLINE_NAMES, BRANDS, BRAND_OF end
-  AIRLINE_NAMES, BRANDS, BRAND_OF, AIRLINE_FIRST, NAMES_OF = {}, {}, {}, {}, {}
+  AIRLINE_NAMES, BRANDS, BRAND_OF, AIRLINE_FIRST, NAMES_OF, CALLED = {}, {}, {}, {}, {}, {}
   local names = require("translate.names")
   for _, list in ipairs({ names.airlines, names.common }) do
     for _, a in ipairs(list) do
       AIRLINE_NAMES[a[1]] = a[2]
       AIRLINE_FIRST[a[1]:match("^[^ ]*")] = true
+      CALLED[a[2]] = CALLED[a[2]] or {}
+      table.insert(CALLED[a[2]], a[1])
     end
   end
   for _, a in ipairs(names.airlines) do
@@ -4082,9 +4084,10 @@ function m:telephony_part_only(r)
   local tels = NAMES_OF[(airline_digits(r.name))]
   if not tels then return nil end
   local said, part = self.t[c].text, nil
-  -- (a telephony said whole, from the country or a word before it, is no part: "Air China 124", "China Eastern 5")
+  -- (a telephony or common name said whole, from the country or a word before it, is no part: "Air China 124",
+  -- "China Eastern 5", "Transavia France 34AB")
   for b = r.b, c do
-    for _, n in ipairs(tels) do
+    for _, n in ipairs(CALLED[(airline_digits(r.name))]) do
       local k, whole = b, true
       for w in n:gmatch("%S+") do
         whole, k = whole and k < r.e and self.t[k].text == w, k + 1
@@ -4526,11 +4529,13 @@ function m:level_given(q, id)
   return nil
 end
 -- The level [ft] a bare number may name when a request has cleared the aircraft to it: three digits, its flight
--- level ("220"), or two said as a number, the thousands of a flight level ("twenty two" for FL220); else nil.
+-- level ("220", "060"), or two said as a number, the thousands of a flight level ("twenty two" for FL220); else nil.
 function m:bare_level_ft(q)
   if q.kind ~= "plain" or q.number.thousand or q.number.hundred then return nil end
   local n = #q.number.digits
-  if n == 3 and q.value >= 100 and q.value <= 600 then return q.value * 100 end
+  if n == 3 and ((q.value >= 100 and q.value <= 600) or (q.value >= 10 and q.number.digits:sub(1, 1) == "0")) then
+    return q.value * 100
+  end
   if n == 2 and q.value >= 10 and q.value <= 60 then return q.value * 1000 end
   return nil
 end
@@ -4660,7 +4665,9 @@ function m:at_altitude(s)
   local noun = self:word(a + 1, "altitude height") and q and q.b == a + 2
     and (q.kind == "alt" or (q.kind == "plain" and q.value >= 1000)) and a + 1
   -- ("when you reach the flight level 140 you make speed 280": the article before a level with its unit)
-  local article = self:word(a + 1, "the") and q and q.b == a + 2 and q.kind == "alt"
+  -- (or before three digits alone, the level this request cleared: "when you reach the 060")
+  local article = self:word(a + 1, "the") and q and q.b == a + 2
+    and (q.kind == "alt" or (self:word(a, "reach reaches reached reaching") and self:level_given(q) ~= nil))
   if not q or (q.b ~= a + 1 and not noun and not article) then return nil end
   local k = self:skip_fillers(q.e)
   -- ("once you pass 15,000 on the way down, slow down to 250", "when passing FL270 on its way up, ..."): the

@@ -2934,9 +2934,12 @@ return function(H, f, compass)
     local named_before = added or defined or nil
     -- ("add BONTI to the route of UAE787 and send him direct": nothing said after the word, fillers and marks
     -- aside, is the waypoint named before, as "direct there" is)
+    -- ("... and proceed direct": the verb before the word)
     local k = s.trig + 1
+    local proceed = self:word(s.trig, "proceed") and self:word(k, "direct directly dct")
+    if proceed then k = k + 1 end
     while k < s.e and (self.t[k].filler or self.t[k].kind == "punct" or self:word(k, "please now")) do k = k + 1 end
-    local bare = k >= s.e and self:word(s.trig, "direct directly dct")
+    local bare = k >= s.e and (proceed or self:word(s.trig, "direct directly dct"))
     local wp = to_dest or point or told or named_before and #self:refs_in(s.trig, s.e, "waypoint") == 0
         and (bare or self:word_in(s.trig, s.e, "there it")) and named_before or back or self:waypoint(s.trig, s.e, id)
     -- "send it to TEBBY directly", "go to the Helsinki VOR directly": the place said after "to", before the

@@ -801,7 +801,7 @@ return function(H, f, wrap, compass)
       -- a climb to a lower level, or a descent to a higher one, contradicts the verb
       local a = self:state(id)
       if a and dir ~= 0 and self:word_in(s.b, s.e, "climb climbing descend descending descent") then
-        local cur = a.alt_ft or 0
+        local cur = self:level_when_run(id) or a.alt_ft or 0
         -- "descend two eight thousand" straight after the verb may be "descend to eight
         -- thousand" (lexicon.two_heard): the reading the verb allows, asked when both are
         if not relative and not fl and q.b == s.trig + 1 and self:word(s.trig, "climb descend") and not n.typed

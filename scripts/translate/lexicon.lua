@@ -123,8 +123,9 @@ return {
         "tamam",
         -- (a value said loosely, "250-ish", "like 250ish": the value said is the one flown, as "roughly 250")
         "ish", "afterwards", "afterward", "meanwhile", "completely", "fully",
-        -- (a report's order of events and degree: "was subsequently given", "disable it altogether")
-        "subsequently", "thereafter", "altogether",
+        -- (a report's order of events and degree: "was subsequently given", "disable it altogether"; a first level
+        -- cleared, "climb 6000 feet initially")
+        "subsequently", "thereafter", "altogether", "initially",
         "entirely", "moment", "away", "back", "aside", "apart", "nearer", "farther",
         -- the same markers in Spanish and Portuguese, said in English by their speakers ("vamos, LATAM 3402 ...",
         -- "bueno, ...", "entonces ...", "bom, ...", "olha: ...")
@@ -604,6 +605,8 @@ return {
         -- the same said with "till", without "further", or with the verb unbent ("until further advise")
         "till further advised", "till further notice", "until advised", "till advised", "until further advise", "until further advice", "till further advice",
         "till further advise", "until further instructions", "till further instructions",
+        -- (and "new" for "further", as Portuguese "até novas instruções": "maintain level 250 until new instructions")
+        "until new instructions", "till new instructions",
         -- (the noun controllers of many regions use: "speed 280 knots until further advice")
         "until further advice", "till further advice", "until further clearance", "till further clearance",
         "until further notification", "until advised otherwise", "until otherwise advised",
@@ -2310,6 +2313,11 @@ return {
     { what = "saving the simulation's state", words = "save saving", near = { "state", "scenario", "sim",
       "simulation", "snapshot", "situation", "traffic", "everything", "progress", "setup" }, window = 3,
       through = "state scenario sim simulation" },
+    -- ("heading 140 and zoom out a bit", "pause, and center on speedbird 8ck": the scope's view, which its own
+    -- controls set; no simulator command)
+    { what = "the display's zoom (set with the scope's own controls)", words = "zoom", near = { "in", "out" }, window = 1 },
+    { what = "centring the display (set with the scope's own controls)", words = "centre center", near = { "on" }, window = 1,
+      after_instruction = true },
     -- ("..., radar service terminated", "radar services limited": the service the controller gives, told the pilot)
     { what = "radar services", words = "service services", near = { "terminated", "terminating", "limited", "radar" },
       window = 2 },
@@ -3205,6 +3213,9 @@ return {
       -- (the Belgian filler "une fois", "..., turn right heading 340, une fois": no count)
       ["une fois"] = "okay",
       ["la résolution"] = "resolution", ["la resolution"] = "resolution",
+      -- ("mettez la simulation en pause": put on pause)
+      mettez = "put", mets = "put", ["la simulation en pause"] = "the simulation on pause",
+      ["la simu en pause"] = "the simulation on pause",
       ["détection de conflits"] = "conflict detection", ["detection de conflits"] = "conflict detection",
     },
     -- words of `words` said the same in English or Spanish: no sign of French alone ("cree" is Spanish, "descends"

@@ -300,6 +300,7 @@ local names = {
     { "sky express", "SEH" },
     { "corsica", "CCM" },
     { "air corsica", "CCM" },
+    { "french bee", "FBU" },
     { "gulf air", "GFA" },
     { "kuwaiti", "KAC" },
     { "cedar jet", "MEA" },
@@ -829,6 +830,7 @@ local names = {
     { "klm cityhopper", "KLC" },
     { "tap air portugal", "TAP" },
     { "hop", "HOP" },  -- (HOP!, telephony Air Hop)
+    { "transavia france", "TVF" },  -- (telephony France Soleil)
     { "spirit", "NKS" },  -- (Spirit Airlines, telephony Spirit Wings)
     { "spirit airlines", "NKS" },
     { "republic", "RPA" },  -- (Republic Airways, telephony Brickyard)

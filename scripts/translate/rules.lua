@@ -302,9 +302,11 @@ return function(intent, rule, words)
   -- instruction's shorthand, "ezy45 fl?", "hdg?", is a value left out: asked; "stay at its current altitude?" names
   -- the value kept, no question of state)
   -- ("Turkish 6PA, your position?", "THY6PA, your altitude?": "your" opening the clause after the callsign asks the
-  -- aircraft itself)
+  -- aircraft itself; "your heading now?", a filler between)
   rule { "altitude level speed heading mach airspeed position", "pos", when = function(g, i)
-    local nx = g.t[i + 1]
+    local k = i + 1
+    while g.t[k] and g.t[k].filler and g.t[k].kind ~= "punct" do k = k + 1 end
+    local nx = g.t[k]
     local yours = g:word(i - 1, "your") and i > 2 and (g.t[i - 2].kind == "punct" or g:refs_in(1, i, "aircraft")[1] ~= nil
       and g:skip_fillers(g:refs_in(1, i, "aircraft")[1].e) == i - 1)
     return nx ~= nil and nx.kind == "punct" and nx.text == "?" and g:has_ref(1, i, "aircraft")
@@ -1008,10 +1010,11 @@ return function(intent, rule, words)
   rule { "accelerate decelerate", "dtmult", when = function(g, i)
     return g:word(i + 1, "@sim") or (g:word(i + 1, "the") and g:word(i + 2, "@sim"))
   end }
-  -- "accelerate 20 times", "go faster? five times please": the clock's rate, a factor of "times" said straight
-  -- after "accelerate", or within four words after "faster", with no aircraft named in the request
+  -- "accelerate 20 times", "accelerate ten times the simulation", "go faster? five times please": the clock's rate, a
+  -- factor of "times" said straight after "accelerate", or within four words after "faster", with no aircraft named
+  -- in the request
   rule { "accelerate", "dtmult", when = function(g, i)
-    return g.t[i + 1] ~= nil and g.t[i + 1].kind == "number" and g:word(i + 2, "times x")
+    return g.t[i + 1] ~= nil and (g.t[i + 1].kind == "number" or g.t[i + 1].number_word) and g:word(i + 2, "times x")
       and not g:has_ref(1, #g.t + 1, "aircraft")
   end }
   rule { "faster", "dtmult", near = { 4, "times x" }, when = function(g) return not g:has_ref(1, #g.t + 1, "aircraft") end }
@@ -2842,10 +2845,12 @@ return function(intent, rule, words)
   -- "show me Wideroe five one two", "check IBE3421": an aircraft alone after the verb is shown where it is
   -- ("pause, and show me the Swiss three eight foxtrot": the clause of its own; "check Emirates 783 for me", "for
   -- me" or "for us" after it)
+  -- ("show me Moonflower 31 data": a noun of its state after it)
   rule { "show display check", "pos", when = function(g, i)
     local k = g:skip_fillers(g:word(i + 1, "me us") and i + 2 or i + 1)
     local r = g:refs_in(k, k + 1, "aircraft")[1]
     local e = r and g:word(r.e, "for") and g:word(r.e + 1, "me us") and r.e + 2 or r and r.e
+    if e and g:word(e, "data details info information status state") then e = e + 1 end
     return r ~= nil and (g:alone_but(i, e) or g:clause_alone(i, e))
   end }
   -- "show me Ezeiza airport", "show me the Santiago airport", "show me SAEZ": a place alone after the verb, no
@@ -2959,6 +2964,12 @@ return function(intent, rule, words)
   rule { "moved repositioned relocated", "move", prev = { 1, "be get" } }
   -- "warp KLM58 to GAME2": an aircraft warped to a place ("time warp" is none)
   rule { "warp", "move", when = function(g, i) return g:has_ref(i + 1, i + 3, "aircraft") and g:followed_by(i, 4, "to") end }
+  -- ("transfer the Air Portugal 015 to the position -7.9 -34.6", Portuguese "transferir": the aircraft put at a
+  -- position said with its noun; a hand-off to a station names no position)
+  rule { "transfer", "move", when = function(g, i)
+    local r = g:refs_in(i + 1, i + 4, "aircraft")[1]
+    return r ~= nil and g:word(r.e, "to") and g:word(g:word(r.e + 1, "the") and r.e + 2 or r.e + 1, "position")
+  end }
   -- "pop QFA12 over to -27.3 152.8": an aircraft flying "popped over to" a place is moved there
   rule { "pop", "move", when = function(g, i)
     local r = g:refs_in(i + 1, math.min(#g.t + 1, i + 2), "aircraft")[1]
@@ -3063,6 +3074,8 @@ return function(intent, rule, words)
   rule { "pause hold freeze pausing freezing", "hold" }
   -- "hit play", "press play": a game's or a player's button, the clock started
   rule { "play", "op", prev = { 2, "hit press click push" } }
+  -- ("play the simulation", "play again the simulation": the simulation played, as a recording)
+  rule { "play", "op", near = { 3, "@sim" } }
   -- "interrupt the exercise", "the exercise will now be interrupted": a pause of the simulation said of it
   rule { "interrupt interrupted", "hold", near = { 3, "@sim" } }
   rule { "interrupt interrupted", "hold", prev = { 4, "@sim" } }
@@ -3638,6 +3651,9 @@ return function(intent, rule, words)
   end }
   rule { "jump", "ff", near = { 3, "ahead forward" } }  -- "jump forward five minutes", "jump us forward"
   -- "go forward 90 seconds", "go forward 2 minutes": a time straight after "forward", no aircraft named
+  -- ("forward the simulation 2 minutes": the verb alone, the simulation its object, then the time)
+  rule { "forward", "ff", not_prev = { 1, "fast go run" }, near = { 7, "minutes minute seconds second hours hour min sec" },
+         when = function(g, i) return g:followed_by(i, 2, "@sim") end }
   rule { "go", "ff", next = "forward", when = function(g, i)
     local q = g:quantities(i + 2, math.min(#g.t + 1, i + 5))[1]
     return q ~= nil and q.b == g:skip_fillers(i + 2) and q.kind == "time" and not g:has_ref(1, #g.t + 1, "aircraft")
@@ -4205,6 +4221,13 @@ return function(intent, rule, words)
   -- "make the safety circle 4 miles", "a bigger safety bubble": the protected zone in a newcomer's words
   rule { "circle bubble", "zone", prev = { 1, "safety" } }
   rule { "look", "dtlook", prev = { 1, "dt" } }
+  -- "what does test2 look like rn", "how does DLH4AX look now?": an aircraft's state asked (POS), no value said
+  rule { "look", "pos", when = function(g, i)
+    local r = g:refs_in(1, i, "aircraft")[1]
+    if not r or #g:quantities(1, #g.t + 1) > 0 then return false end
+    return g:word(r.b - 1, "does do") and g:skip_fillers(r.e) == i
+      and (g:word(i + 1, "like") and g:word_in(1, r.b, "what") or g:word_in(1, r.b, "how"))
+  end }
   rule { "lookahead dtlook", "dtlook" }
   -- "UAE45 step down to FL340, turbulence", "... for turbulence": with an aircraft named, turbulence is its reason
   -- or its situation, no switch of the simulation's noise (unless switched: "UAE45 climb, and turbulence on")

@@ -2127,8 +2127,9 @@ do
     check_eq(ex("afr56bq clb fl240 then dct spy"), "ALT AFR56BQ FL240 ; ADDWPT AFR56BQ SPY ; DIRECT AFR56BQ SPY")
     check_eq(ex("cre ewg77 a320 at betus hdg 120 fl240 spd 280"), "CRE EWG77 A320 BETUS 120 FL240 280")
     check_eq(ex("create ewg78 a320 over spy, hdg 260, fl200, 260 kts"), "CRE EWG78 A320 SPY 260 FL200 260")
-    -- a capital anywhere leaves the line as typed
-    asked(ex("AFR56BQ add betus"), ex("AFR56BQ add betus"))
+    -- a capital in a word with no digit leaves the line as typed; an id typed in capitals does not
+    asked(ex("Add betus to AFR56BQ"), ex("Add betus to AFR56BQ"))
+    check_eq(ex("AFR56BQ add betus"), "ADDWPT AFR56BQ BETUS")
   else
     print("skipped: lowercase place names need navdata (SQUAWK_NAVDATA)")
   end
@@ -3164,8 +3165,10 @@ do
     check_eq(ex("Easy 77 direct Willo"), "ADDWPT EZY77 WILLO ; DIRECT EZY77 WILLO")
     asked(ex("add WILLO to KLM999"), "no such aircraft")
     asked(ex("Add Banana to EZY77's route"), "no such place")
-    -- (in a line with capitals a fix's name in lower case is a word, not read as the place)
-    asked(ex("add willo to RYR4KP"), "lower case in a line with capitals")
+    -- (in a line with capitals a fix's name in lower case is a word, not read as the place; capitals only in an
+    -- id with digits, "RYR4KP", leave the line lower case)
+    asked(ex("Add willo to RYR4KP"), "lower case in a line with capitals")
+    check_eq(ex("add willo to RYR4KP"), "ADDWPT RYR4KP WILLO")
   end
 end
 
@@ -24120,4 +24123,84 @@ end
 do
   local _, ex = scene({ "CRE DAL2219 B739 32.0 -95.0 090 FL280 280" })
   check_eq(ex("simulate ten minutes ahead"), "FF 600")
+end
+
+-- Cycle 81 (R451): "Transavia France" said whole is TVF, as "France Soleil" is ("Transavia" alone with TVF flying
+-- stays asked); "French Bee" is FBU; "mach point eighty two" is M.82 (it was read as a level); "climb heading 330"
+-- asks the level (the climb was dropped); a state word asked with a filler before its "?"; "initially"; the
+-- simulation played, forwarded, and put "en pause"
+do
+  local _, ex = scene({ "CRE TVF34AB B738 48.7 2.3 180 FL150 280", "CRE FBU701 A359 48.9 2.5 090 FL350 280",
+    "CRE HOP22PM E190 48.5 2.1 270 FL120 250" })
+  check_eq(ex("Transavia France 34AB turn right of 30 degrees"), "HDG TVF34AB 210 RIGHT")
+  asked(ex("Transavia 34AB descend level 100"), "Transavia alone is TRA's telephony")
+  check_eq(ex("French Bee 701 maintain mach point eighty two"), "SPD FBU701 M0.82")
+  check_eq(ex("HOP22PM climb heading 330"), "ASK I have HDG HOP22PM 330. What altitude should HOP22PM climb to?")
+  check_eq(ex("HOP22PM turn heading 330"), "HDG HOP22PM 330")
+  check_eq(ex("France Soleil 34AB your heading now?"), "POS TVF34AB")
+  check_eq(ex("French Bee 701 climb FL370 initially"), "ALT FBU701 FL370")
+  check_eq(ex("mettez la simulation en pause please"), "HOLD")
+  check_eq(ex("play again the simulation"), "OP")
+  check_eq(ex("forward the simulation 2 minutes"), "FF 120")
+end
+
+-- Cycle 81 (R452, R455): a descent waiting for a place after a climb in the same request is checked against the
+-- level cleared first ("climb FL120 then at ATAGA descend FL100" was asked as a climb to FL100 from FL90); "when you
+-- reach the 060" after "descend to the level 060"; "until new instructions"; "accelerate ten times the simulation". A
+-- flight number's leading zero unsaid ("Air Portugal 52" for TAP052) stays asked: writers differ on it
+do
+  local _, ex = scene({ "DEFWPT ATAGA 23.2 113.6", "CRE CES5311 A320 22.95 113.6 010 FL90 250",
+    "ADDWPT CES5311 ATAGA", "CRE TAP052 A320 38.7 -9.1 180 FL100 280", "CRE TAP1234 A320 38.8 -9.2 180 FL100 280" })
+  check_eq(ex("CES5311 climb flight level one two zero then at ATAGA descend flight level one zero zero"),
+    "ALT CES5311 FL120 ; AT CES5311 ATAGA DO ALT CES5311 FL100")
+  asked(ex("CES5311 climb flight level one two zero then descend flight level 80"), "two levels now")
+  check_eq(ex("Air Portugal 1234 descend to the level 060 and when you reach the 060 reduce to 200 knots"),
+    "ALT TAP1234 FL60 ; ATALT TAP1234 FL60 SPD TAP1234 200")
+  check_eq(ex("TAP1234 maintain level 100 until new instructions"), "ALT TAP1234 FL100")
+  asked(ex("Air Portugal 52, turn to the left 20 degrees"), "a leading zero unsaid")
+  check_eq(ex("accelerate ten times the simulation"), "DTMULT 10")
+end
+
+-- Cycle 81 (R453, R454): "baw8cks route" (the possessive typed with no apostrophe after the id's letters); a navaid
+-- typed in lower case where only the callsign and type are in capitals ("cre EZY81QA a319 over bnn ..."); "what does
+-- test2 look like rn"; "show me X data"; zoom and centring asked of the display are named, not simulated
+do
+  local s = navscene({ "CRE BAW8CK A320 51.5 -0.6 090 FL110 250", "ADDWPT BAW8CK LAM", "ADDWPT BAW8CK DET",
+    "CRE TEST2 A320 51.4 -0.2 225 FL100 250", "CRE NOS31 B738 51.6 -0.1 090 FL200 280" }, "typed navaids")
+  if s then
+    local function ex(text) return said(graph.translate(text, { sim = s, mode = "offline" })) end
+    check_eq(ex("remove lam from baw8cks route"), "DELWPT BAW8CK LAM")
+    check_eq(ex("cre EZY81QA a319 over bnn hdg 110 fl140 260"), "CRE EZY81QA A319 BNN 110 FL140 260")
+    check_eq(ex("what does test2 look like rn"), "POS TEST2")
+    check_eq(ex("show me Moonflower 31 data"), "POS NOS31")
+    local r = graph.translate("BAW8CK heading 140 and zoom out a bit", { sim = s, mode = "offline" })
+    check_eq(said(r), "HDG BAW8CK 140")
+    check((r.note or ""):find("zoom", 1, true) ~= nil, tostring(r.note))
+    r = graph.translate("pause, and center on speedbird 8ck", { sim = s, mode = "offline" })
+    check_eq(said(r), "HOLD")
+    check((r.note or ""):find("centring the display", 1, true) ~= nil, tostring(r.note))
+  end
+end
+
+-- Cycle 81 (R456): a word of a navaid's longer name on the route ("at Addis VOR" for ADS, ADDIS ABABA) is that navaid
+do
+  local s = navscene({ "CRE ETH702 B788 9.3 38.5 090 FL150 280", "ADDWPT ETH702 ADS" }, "a navaid by a word of its name")
+  if s then
+    local function ex(text) return said(graph.translate(text, { sim = s, mode = "offline" })) end
+    check_eq(ex("Ethiopian 702 at Addis VOR turn right heading zero niner zero"), "AT ETH702 ADS DO HDG ETH702 90 RIGHT")
+  end
+end
+
+-- Cycle 81 (R452, R455): a telephony's last word run into a digit by the recogniser ("air chinaone three three one");
+-- "add d u m e t to the route and proceed direct" (the verb before the word); "transfer the X to the position ..." (a
+-- move; a hand-off names no position)
+do
+  local _, ex = scene({ "CRE CCA1331 A321 40.0 116.5 090 FL120 280", "CRE CCA1858 A321 40.1 116.6 090 FL120 280",
+    "DEFWPT DUMET 40.3 117.0", "CRE TAP015 A332 -7.5 -34.9 180 FL300 280" })
+  check_eq(ex("air chinaone three three one climb to flight level one fourty"), "ALT CCA1331 FL140")
+  check_eq(ex("air china one eight five eight add DUMET to the route and proceed direct"),
+    "ADDWPT CCA1858 DUMET ; DIRECT CCA1858 DUMET")
+  asked(ex("air china one eight five eight proceed direct"), "no place said or added")
+  check_eq(ex("transfer the Air Portugal 015 to the position -7.9 -34.6 level 200"), "MOVE TAP015 -7.9 -34.6 FL200")
+  asked(ex("transfer the Air Portugal 015 to Recife approach"), "a hand-off")
 end

@@ -67,6 +67,10 @@ TEST_CASE("number words: decimals") {
   CHECK(num("point seven eight").value == doctest::Approx(0.78));
   CHECK(num("point seven 8").value == doctest::Approx(0.78));  // words and keys mixed
   CHECK(num("decimal eight two").value == doctest::Approx(0.82));
+  // the two digits said as a number: "point eighty two" is .82, "point eighty" .80
+  CHECK(num("point eighty two").value == doctest::Approx(0.82));
+  CHECK(num("point eighty").value == doctest::Approx(0.80));
+  CHECK(num("point seventy nine").end == 3);
   // "decimal" before thousand is a misheard verb, not a decimal point
   auto n = num("nine decimal four thousand");
   CHECK(n.value == 9);
