@@ -1463,9 +1463,10 @@ local function self_corrections(text)
       nxt = toks[j]
     end
     local said = nxt
-    -- ("climb at 250, no, at 260": "at" before the value, as the value was said the first time)
-    if nxt and (nxt.bare == "the" or nxt.bare == "a" or nxt.bare == "to" or nxt.bare == "at") and toks[j + 1]
-        and not nxt.raw:match("%p$") then
+    -- ("climb at 250, no, at 260": "at" before the value, as the value was said the first time; "descend on FL 90,
+    -- no sorry, on FL 110", German "auf")
+    if nxt and (nxt.bare == "the" or nxt.bare == "a" or nxt.bare == "to" or nxt.bare == "at" or nxt.bare == "on")
+        and toks[j + 1] and not nxt.raw:match("%p$") then
       said = toks[j + 1]
     end
     -- ("I am sorry, it is 260": the phrase restating is part of the run, the value after it said in place)
@@ -9682,8 +9683,9 @@ function G:trailing_fix(s)
   -- (the aircraft's pronoun: "it", "you", or "he"/"she" as many speakers say of an aircraft, "after he passes PIVIS")
   if self:word(k, "it you he she") then k = self:skip_fillers(k + 1) end
   -- ("fl100 when past WYP": typed short, "past" is passing; "climb FL390 once you reach BURAM", "... when you
-  -- pass LOHRE": the verb's bare form after "you"; "slow to 250 knots once over ANDIK", "when overhead BNN")
-  if self:word(k, "passing passes reaching reaches overflying past reach pass over overhead") then
+  -- pass LOHRE": the verb's bare form after "you"; "slow to 250 knots once over ANDIK", "when overhead BNN", "when
+  -- at ELENA")
+  if self:word(k, "passing passes reaching reaches overflying past reach pass over overhead at") then
     k = self:skip_fillers(k + 1)
   elseif self:word(k, "has have") and self:word(k + 1, "passed reached") then  -- ("once it has passed YHZ")
     k = self:skip_fillers(k + 2)
@@ -16536,6 +16538,18 @@ function G:condition_dropped()
     end
   end
 end
+-- "Topswiss 42 descend on flight level two hundred and": a request that ends on "and" straight after "hundred" or
+-- "thousand" (a stop mark after it at most) was cut off, the number going on ("two hundred and fifty"): asked,
+-- naming what was read ("hold, and", an empty clause of speech, stands).
+function G:cut_off_end()
+  local k = #self.t
+  while k > 0 and self.t[k].kind == "punct" do k = k - 1 end
+  if k > 1 and self:word(k, "and") and self:word(k - 1, "hundred thousand") then
+    self:need(string.format("I have %s, but the request ends on '%s': was it cut off? Please say it again in full.",
+      table.concat(self.out, " ; "), self:raw(k, #self.t + 1):gsub("[%s%p]+$", "")))
+  end
+end
+
 -- ("KLM12 climb FL300 and let it run", "..., let her go"): "let" and "it", "her" or "the sim(ulation)", then "run" or
 -- "go", said beside commands none of which runs the clock (OP, FF, DTMULT: "let it run for 5 minutes"): whether the clock starts (or the aircraft goes on) is asked, the
 -- words never dropped.
@@ -17453,6 +17467,40 @@ function G.run_on_values(text)
   end
   return text, nil
 end
+-- "create a Cessna 172, November niner eight seven six romeo, over Fillmore ...", "create November 9876R ...": in a
+-- request that creates (lexicon.creation_verbs), "November" and the characters said or typed after it, a US
+-- registration (a digit 1-9, up to four more digits, up to two letters after them), are that registration written
+-- (N9876R) when no aircraft flying has it (one flying is abbreviated_registrations' to read).
+function G.spoken_new_registration(text, fleet)
+  local low = text:lower()
+  if not low:find("november", 1, true) then return text end
+  local creates = false
+  for w in low:gmatch("%a+") do creates = creates or lexicon.creation_verbs[w] ~= nil end
+  if not creates then return text end
+  local words = {}  -- {text, b, e} of each word
+  for b, w, e in text:gmatch("()([%w]+)()") do words[#words + 1] = { w:lower(), b, e } end
+  for k, w in ipairs(words) do
+    if w[1] == "november" then
+      local chars, last = "", nil
+      for j = k + 1, #words do
+        if not text:sub(words[j - 1][3], words[j][2] - 1):match("^[%s,]*$") or (j > k + 1
+            and text:sub(words[j - 1][3], words[j][2] - 1):find(",")) then
+          break
+        end
+        local c = SAID_DIGIT[words[j][1]] or lexicon.phonetic[words[j][1]] or words[j][1]:match("^%d+%a?%a?$")
+        if not c then break end
+        chars, last = chars .. c:upper(), j
+      end
+      local held = false
+      for _, a in ipairs(fleet) do held = held or a.id:upper() == "N" .. chars end
+      if last and #chars <= 5 and chars:match("^[1-9]%d*%u?%u?$") and not held then
+        return text:sub(1, w[2] - 1) .. "N" .. chars .. text:sub(words[last][3])
+      end
+    end
+  end
+  return text
+end
+
 local NATIONLESS = set_of(lexicon.nationless_registrations)
 local function spelled_registrations(text, fleet)
   if #fleet == 0 then return text end
@@ -18595,9 +18643,10 @@ function G.heard_nowhere_else(w, name, world)
   end
   return true
 end
--- "direct test one", "add test 2 to the route": a waypoint the user defined (world.waypoints) whose name is letters
--- then digits (TEST1, WP12), said as its letters' word then each digit (as a word, SAID_DIGIT, or a numeral), is that
--- name; a digit more after them ("test one two" with TEST1 only) leaves the words as said. The letters may be spelled
+-- "direct test one", "add test 2 to the route", "direct mex zero seven": a waypoint the user defined (world.waypoints)
+-- or one on the route of an aircraft flying whose name is letters then digits (TEST1, WP12, MEX07), said as its
+-- letters' word then each digit (as a word, SAID_DIGIT, or a numeral), is that name; a digit more after them ("test one
+-- two" with TEST1 only) leaves the words as said. The letters may be spelled
 -- in the phonetic alphabet, one word a letter ("direct tango one two", "papa three seven", "tango 12" for T12, P37),
 -- for such a name the user defined or one on the route of an aircraft flying.
 function G.spoken_user_waypoints(text, world)
@@ -18616,7 +18665,10 @@ function G.spoken_user_waypoints(text, world)
   end
   for _, a in ipairs(world.aircraft or {}) do
     for _, n in ipairs(a.route or {}) do
-      if #n <= 6 then know(spelled, n) end
+      if #n <= 6 then
+        know(spelled, n)
+        know(spoken, n)
+      end
     end
   end
   if not (next(spoken) or next(spelled)) then return text end
@@ -19951,7 +20003,7 @@ function M.translate(text, world)
   local abbreviated
   text, abbreviated = abbreviated_registrations(text, world.aircraft)
   if abbreviated then return { commands = {}, ask = abbreviated } end
-  text = spelled_registrations(text, world.aircraft)
+  text = G.spoken_new_registration(spelled_registrations(text, world.aircraft), world.aircraft)
   text = G.named_navaid_apposition(text, world)
   local types = require("translate.types")
   text = G.spoken_degrees_minutes(text)
@@ -20202,6 +20254,7 @@ function M.translate(text, world)
   if not g.ask and #g.out > 0 then g:condition_lost_in_correction() end
   if not g.ask and #g.out > 0 then g:correction_of_two_kinds() end
   if not g.ask and #g.out > 0 then g:run_left() end
+  if not g.ask and #g.out > 0 then g:cut_off_end() end
   if not g.ask and #g.out > 0 then g:level_with_unit(lower) end
   -- "... actually no, just the descent" (G:self_corrected): only the commands of that kind stand
   if not g.ask and g.kept then

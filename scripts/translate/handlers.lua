@@ -1122,7 +1122,13 @@ local function airline_at(self, i)
   -- a space is looked up whole)
   if not AIRLINE_NAMES then airline_names() end
   if not AIRLINE_FIRST[t.text] and not t.text:find(" ", 1, true) then
-    if #t.raw == 3 and t.raw:match("^%u%u%u$") then return t.raw, i + 1 end
+    if #t.raw == 3 and t.raw:match("^%u%u%u$") then
+      -- ("ITA Airways": a name of two words or more opening with the capitals is that name)
+      local nx = self.t[i + 1]
+      local low = t.raw:lower() .. " " .. (nx and nx.kind == "word" and nx.text or "")
+      if AIRLINE_FIRST[t.raw:lower()] and AIRLINE_NAMES[low] then return AIRLINE_NAMES[low], i + 2, BRANDS[low] end
+      return t.raw, i + 1
+    end
     return nil
   end
   local words = {}
@@ -1709,6 +1715,24 @@ function m:airline_refs()
         end
         if said_at and said_at.exists then typed = self:callsign_or_type(i, te, said_at, typed, the) end
         type_e = typed and te
+      end
+      -- ("the Ryanair at flight level 120, turn it left", "make the Ryanair at FL260 descend to FL200": "at" and a
+      -- level straight after "the" and the airline describe its aircraft flying within 100 ft of that level)
+      -- (with two or more of the airline flying: one alone, "put the Ryanair at FL180 over VIS", is the airline's)
+      local at_q = the and not typed and not said_at and self:word(e, "at") and #self:airline_fleet(icao, codes) > 1
+        and self:quantities(e + 1, e + 5)[1]
+      if at_q and at_q.b == e + 1 and at_q.kind == "alt" then
+        for _, id in ipairs(self:airline_fleet(icao, codes)) do
+          local a = self:state(id)
+          if a and a.alt_ft and math.abs(a.alt_ft - at_q.value) <= 100 then
+            typed = typed or {}
+            typed[#typed + 1] = id
+          end
+        end
+        if typed then
+          self:mark_used(e, at_q.e)
+          type_e = at_q.e
+        end
       end
       local ok = not inside[i] and not inside[e - 1]
           and (the or for_it or self:addressed_alone(i, e) or self:asked_where(i, e) or self:object_article_dropped(i)

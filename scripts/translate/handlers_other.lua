@@ -218,6 +218,11 @@ return function(H, f, compass)
   -- ("create it again", "recreate it", "re-create it"); else nil. Its values ("same type", "same heading, level and speed") are then that aircraft's (m:create_one).
   function m:recreated(s)
     local v = s.trig or s.b
+    -- ("delete the Speedbird and then create BAW832 again at ...": the callsign of an aircraft this request deleted)
+    local named = self:refs_in(v, s.e, "aircraft")[1]
+    for _, c in ipairs(named and named.exists and self.out or {}) do
+      if c == "DEL " .. named.name then return named.name end
+    end
     if not (self:intent_at(v) and self:word(v + 1, "it")) then return nil end
     -- (the delete said before it: its verb, then the aircraft, the only one named in the request)
     local del
@@ -281,11 +286,6 @@ return function(H, f, compass)
             and not self.u:used(k) and w.raw:sub(1, 1) == id:sub(1, 1):upper() then
           self:explain(k, k + 1)
         end
-        -- ("put an ITA, ITY231 A320, ...", "a Qatar Airways, QTR7, ..."): the new callsign's airline by its name
-        for a = math.max(1, k - 2), k do
-          local icao, ae = self:airline_at(a)
-          if icao and ae == k + 1 and id:upper():sub(1, #icao) == icao then self:explain(a, k + 1) end
-        end
         break
       end
     end
@@ -346,6 +346,14 @@ return function(H, f, compass)
             self:explain(k, k + 1)
           end
         end
+      end
+    end
+    -- ("put an ITA, ITY231 A320, ...", "a Qatar Airways, QTR7, ...", "create ITA Airways A321 callsign ITY123"): the
+    -- new callsign's airline by its name
+    for a = s.b, id and s.e - 1 or 0 do
+      local icao, ae = self:airline_at(a)
+      if icao and id:upper():sub(1, #icao) == icao and not self:has_ref(a, ae, "aircraft") then
+        self:explain(a, ae)
       end
     end
     -- ("an intruder for VIR9: DLH9KW ...", "a head-on for ICE204: spawn ICE205 ..."): the aircraft flying
@@ -1386,11 +1394,13 @@ return function(H, f, compass)
   end
 
   -- A waypoint named in [b, e): a known name, an upper-case name, or a
-  -- spoken name matched against the world's waypoints and the route.
-  function m:waypoint(b, e, id)
-    -- (a navaid's kind typed in capitals is no place: "direct to the Sydney VOR")
+  -- spoken name matched against the world's waypoints and the route; `flown`: the place a direct-to flies to.
+  function m:waypoint(b, e, id, flown)
+    -- (a navaid's kind typed in capitals is no place: "direct to the Sydney VOR"; nor, with `flown`, is one passed
+    -- over, "direct to Pampus, skipping SUGOL")
     for _, r in ipairs(self:refs_in(b, e, "waypoint")) do
-      if not (r.e == r.b + 1 and self:word(r.b, "@navaid_kinds")) then
+      if not (r.e == r.b + 1 and self:word(r.b, "@navaid_kinds"))
+          and not (flown and self:preceded_by(r.b, 2, "@passed_over")) then
         local whole = self:whole_place_name(r, b, e, id)
         if whole ~= nil then return whole or nil end
         -- ("direct victor mike romeo then NYLON": a place spelled in the phonetic alphabet before the one named is
@@ -2941,7 +2951,7 @@ return function(H, f, compass)
     while k < s.e and (self.t[k].filler or self.t[k].kind == "punct" or self:word(k, "please now")) do k = k + 1 end
     local bare = k >= s.e and (proceed or self:word(s.trig, "direct directly dct"))
     local wp = to_dest or point or told or named_before and #self:refs_in(s.trig, s.e, "waypoint") == 0
-        and (bare or self:word_in(s.trig, s.e, "there it")) and named_before or back or self:waypoint(s.trig, s.e, id)
+        and (bare or self:word_in(s.trig, s.e, "there it")) and named_before or back or self:waypoint(s.trig, s.e, id, true)
     -- "send it to TEBBY directly", "go to the Helsinki VOR directly": the place said after "to", before the
     -- adverb that ends the clause
     if not wp and self:word(s.trig, "directly direct") then

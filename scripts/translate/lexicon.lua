@@ -125,7 +125,7 @@ return {
         "ish", "afterwards", "afterward", "meanwhile", "completely", "fully",
         -- (a report's order of events and degree: "was subsequently given", "disable it altogether"; a first level
         -- cleared, "climb 6000 feet initially")
-        "subsequently", "thereafter", "altogether", "initially",
+        "subsequently", "thereafter", "altogether", "initially", "instantly",
         "entirely", "moment", "away", "back", "aside", "apart", "nearer", "farther",
         -- the same markers in Spanish and Portuguese, said in English by their speakers ("vamos, LATAM 3402 ...",
         -- "bueno, ...", "entonces ...", "bom, ...", "olha: ...")
@@ -3157,6 +3157,8 @@ return {
       ["por favor"] = "please", ["hasta nuevo aviso"] = "until further notice",
       -- how fast a change is flown ("sube rápido a FL270")
       ["rápido"] = "quickly", rapido = "quickly",
+      -- (a waypoint's noun, "add ruta punto ELENA after ARPUG")
+      punto = "point",
     },
     -- words of `words` said the same in Portuguese or Italian: no sign of Spanish alone
     -- ("pausa" is Portuguese, Italian and Swedish too)

@@ -831,6 +831,7 @@ local names = {
     { "tap air portugal", "TAP" },
     { "hop", "HOP" },  -- (HOP!, telephony Air Hop)
     { "transavia france", "TVF" },  -- (telephony France Soleil)
+    { "easyjet switzerland", "EZS" },  -- (telephony Topswiss)
     { "spirit", "NKS" },  -- (Spirit Airlines, telephony Spirit Wings)
     { "spirit airlines", "NKS" },
     { "republic", "RPA" },  -- (Republic Airways, telephony Brickyard)

@@ -584,7 +584,9 @@ return function(intent, rule, words)
       if q.kind == "lat" or q.kind == "lon" or (q.kind == "plain" and q.number.decimal) then return nil end
     end
     if g:has_ref(k + 1, e, "waypoint") or g:has_ref(k + 1, e, "airport") then return nil end
-    -- ("move EIN42 up to FL300, same spot": the place it stands said, a move where it is)
+    -- ("move EIN42 up to FL300, same spot": the place it stands said, a move where it is; so is "move EWG7RT up to
+    -- FL90 instantly", the level reached at once)
+    if g:word_in(k + 1, #g.t + 1, "instantly instantaneously") then return nil end
     for j = k + 1, #g.t - 1 do
       if g:word(j, "same") and g:word(j + 1, "position place spot location") and not g:word(j + 2, "as") then
         return nil
@@ -2975,7 +2977,8 @@ return function(intent, rule, words)
     local r = g:refs_in(i + 1, math.min(#g.t + 1, i + 2), "aircraft")[1]
     return r ~= nil and r.exists and g:word(r.e, "over") and g:word(r.e + 1, "to")
   end }
-  rule { "put", "move", near = { 3, "back" }, not_near = { 8, "lnav vnav navigation nav heading course route normal real" } }
+  rule { "put", "move", near = { 3, "back" },
+         not_near = { 8, "lnav vnav navigation nav heading course route normal real simulation sim times" } }
   -- "Put the Cessna N345CS at 42.0 -88.3, 3000 feet", "put BAW123 over SPY at fl200": an aircraft
   -- that flies put at a position or over a place
   rule { "put place", "move", when = function(g, i)
@@ -3985,10 +3988,15 @@ return function(intent, rule, words)
   rule { "detection resolution asas cd", false, prev = { 3, "for of by" }, when = function(g, i)
     return g:word_in(math.max(1, i - 10), i, "look lookahead dtlook zone radius separation distance")
   end }
-  -- "conflict detection look ahead five minutes", "cd hpz 1000ft": detection names the setting's owner, no switch
-  -- (one is said with an on or off word: "detection on, look ahead 5 minutes")
-  rule { "detection asas cd", false, near = { 2, "look lookahead dtlook hpz rpz zonedh zoner" }, when = function(g, i)
-    return not g:word_in(math.max(1, i - 3), math.min(#g.t + 1, i + 4), "@on @off")
+  -- "conflict detection look ahead five minutes", "cd hpz 1000ft", "the conflict detection radius on 5 miles":
+  -- detection names the setting's owner, no switch (one is said with an on or off word: "detection on, look ahead 5
+  -- minutes"; "on" before a number is the value's, German "auf")
+  rule { "detection asas cd", false, near = { 2, "look lookahead dtlook hpz rpz zonedh zoner radius" }, when = function(g, i)
+    for k = math.max(1, i - 3), math.min(#g.t, i + 3) do
+      local q = g:word(k, "on") and g:quantities(k + 1, k + 2)[1]
+      if g:word(k, "@on @off") and not (q and q.b == k + 1) then return false end
+    end
+    return true
   end }
   -- "look-ahead five minutes on the conflict probe", "probe look-ahead two minutes": the conflict probe is
   -- conflict detection, named as the setting's owner (no switch)

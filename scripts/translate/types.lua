@@ -171,6 +171,8 @@ M.nicknames = {
   cherokee = { "^P28%w$", "^PA28$" },
   skylane = { "^C182$" },
   mooney = { "^M20%w$" },
+  -- (Diamond Aircraft's DA20 Katana, DA40 Diamond Star, DA42 Twin Star, DA50, DA62)
+  diamond = { "^DV20$", "^DA%d%d$" },
   -- (two words, read together where a nickname opens an abbreviated callsign or follows "the")
   ["king air"] = { "^BE[29]0$", "^B350$" },
   -- (the Super Puma: the AS332 and the EC225 / H225 that followed it)
@@ -191,6 +193,10 @@ M.nicknames = {
   widebody = { "^B7[4678]%w$", "^A30%d$", "^A310$", "^A3[345]%w$", "^A388$", "^MD11$", "^DC10$" },
   ["wide-body"] = { "^B7[4678]%w$", "^A30%d$", "^A310$", "^A3[345]%w$", "^A388$", "^MD11$", "^DC10$" },
   ["wide body"] = { "^B7[4678]%w$", "^A30%d$", "^A310$", "^A3[345]%w$", "^A388$", "^MD11$", "^DC10$" },
+  -- ("the KLM heavy", "the super": ICAO's wake turbulence category said as a noun, heavy a wide-body or heavy military
+  -- transport (136 t or more), the A380 "super" alone)
+  heavy = { "^B7[4678]%w$", "^A30%d$", "^A310$", "^A3[345]%w$", "^MD11$", "^DC10$", "^IL76$", "^C17$", "^C5M?$" },
+  super = { "^A388$" },
   -- ("the E-jet": Embraer's E170 to E195 and the E2s, and the ERJ 135/145 the name is given to as well, R90)
   ejet = { "^E1[79][05]$", "^E75%u$", "^E29[05]$", "^E1[34]5$", "^E[34]5%u$" },
   ["e-jet"] = { "^E1[79][05]$", "^E75%u$", "^E29[05]$", "^E1[34]5$", "^E[34]5%u$" },

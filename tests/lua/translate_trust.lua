@@ -24204,3 +24204,72 @@ do
   check_eq(ex("transfer the Air Portugal 015 to the position -7.9 -34.6 level 200"), "MOVE TAP015 -7.9 -34.6 FL200")
   asked(ex("transfer the Air Portugal 015 to Recife approach"), "a hand-off")
 end
+
+-- Cycle 81 (R459): an airline's aircraft described by its wake category ("the KLM heavy", one heavy of two KLMs) or
+-- by "at" its level ("the Ryanair at flight level 120"); "direct to Pampus, skipping SUGOL" (the place passed over is
+-- no target); "instantly"; "put the simulation back to one times speed" (no move); "delete the Speedbird and then
+-- create BAW832 again at ..."
+do
+  local s = navscene({ "CRE KLM605 B772 52.9 4.6 200 FL330 290", "CRE KLM1394 E175 52.1 4.6 060 FL200 270",
+    "CRE RYR4KT B738 52.4 5.3 250 FL260 280", "CRE RYR91FQ B738 52.0 3.8 030 FL120 250",
+    "CRE DLH4AX A321 52.3 3.9 090 FL300 280", "ADDWPT DLH4AX SUGOL", "ADDWPT DLH4AX PAM",
+    "CRE BAW832 A320 54.2 -5.0 180 FL200 270" }, "airlines described")
+  if s then
+    local function ex(text) return said(graph.translate(text, { sim = s, mode = "offline" })) end
+    check_eq(ex("The KLM heavy, please descend to flight level 290."), "ALT KLM605 FL290")
+    check_eq(ex("KLM 605 heavy descend flight level 290"), "ALT KLM605 FL290")
+    check_eq(ex("The Ryanair at flight level 120, please turn it left by 45 degrees."), "HDG RYR91FQ 345 LEFT")
+    check_eq(ex("Please make the Ryanair at flight level 260 descend to FL200."), "ALT RYR4KT FL200")
+    asked(ex("the Ryanair at flight level 150 descend FL100"), "no Ryanair at that level")
+    check_eq(ex("Would you please send Lufthansa 4AX direct to Pampus, skipping SUGOL?"), "DIRECT DLH4AX PAM")
+    check_eq(ex("Could you move Ryanair 91FQ up to flight level 160 instantly, same position?"),
+      "MOVE RYR91FQ 52 3.8 FL160")
+    check_eq(ex("Could you put the simulation back to one times speed and resume?"), "DTMULT 1 ; OP")
+    check_eq(ex("move Ryanair 91FQ up to FL90 instantly"), "MOVE RYR91FQ 52 3.8 FL90")
+    check_eq(ex("delete the Speedbird and then create BAW832 again at 54.0 north 5.5 west, A319, heading 180, FL200, "
+      .. "270 knots"), "DEL BAW832 ; CRE BAW832 A319 54 -5.5 180 FL200 270")
+    asked(ex("create BAW832 A319 at 54.0 north 5.5 west heading 180 FL200 270 knots"), "that callsign flies")
+  end
+end
+
+-- Cycle 81 (R459, R7, R156, R161): "heavy" after an airline with no number names the one heavy of the airline flying
+-- (a callsign cut short before "heavy" would be a heavy too); two heavies of it flying are asked; one Ryanair alone
+-- "at" a level is no description ("put the Ryanair at flight level 180 over VIS" keeps its level)
+do
+  local _, ex = scene({ "CRE UAL9 B772 42.05 -88.1 270 9000 250", "CRE SIA21 A359 42.2 -88.0 090 FL300 280",
+    "CRE SIA33 B77W 42.4 -88.3 090 FL320 280" })
+  check_eq(ex("can we get the United heavy climbing to flight level two four zero"), "ALT UAL9 FL240")
+  asked(ex("the Singapore heavy climb to flight level 340"), "two heavies of the airline")
+end
+
+-- Cycle 81 (R457, R460): a new aircraft's US registration said after "November" ("create a Cessna 172, November niner
+-- eight seven six romeo, over ..."); "Diamond 22FR" (the maker before the registration's end); "easyJet Switzerland
+-- EZS77"; "no sorry, on FL 110" (German "auf" after a correction); "the conflict detection radius on 5 miles" (no
+-- switch); a number cut off after "and" ("flight level two hundred and")
+do
+  local _, ex = scene({ "DEFWPT FIM 34.36 -118.88", "CRE N22FR DA40 28.35 -81.6 270 4500 125",
+    "CRE SWR2817 A320 47.4 8.5 090 FL200 280", "CRE EZS42 A320 46.2 6.1 090 FL250 280" })
+  check_eq(ex("create a Cessna 172, November niner eight seven six romeo, over FIM at four thousand five hundred feet, "
+    .. "heading one five zero, one hundred knots"), "CRE N9876R C172 FIM 150 4500 100")
+  check_eq(ex("create a Cessna 172 November 9876R at FIM heading 150 4500 feet 100 knots"), "CRE N9876R C172 FIM 150 4500 100")
+  check_eq(ex("Diamond 22FR, say altitude"), "POS N22FR")
+  check_eq(ex("create easyJet Switzerland EZS77, A320, over FIM at FL 300, heading 320, speed 270"),
+    "CRE EZS77 A320 FIM 320 FL300 270")
+  check_eq(ex("create ITA Airways A321 callsign ITY123 at 41.5 north 12.5 east, heading 045, FL200, 280 knots"),
+    "CRE ITY123 A321 41.5 12.5 45 FL200 280")
+  check_eq(ex("Swiss 2817 descend on FL 90, no sorry, on FL 110"), "ALT SWR2817 FL110")
+  check_eq(ex("set the conflict detection radius on 5 miles"), "ZONER 5")
+  check_eq(ex("conflict detection on, radius 5 miles"), "ASAS ON ; ZONER 5")
+  asked(ex("Topswiss 42 descend on flight level two hundred and"), "cut off after 'and'")
+end
+
+-- Cycle 81 (R458): "add ruta punto ELENA after ARPUG" (Spanish "punto"); a route's waypoint of letters and digits said
+-- with its digits ("direct mex zero seven" for MEX07); "descend FL180 when at ELENA"
+do
+  local _, ex = scene({ "DEFWPT ELENA 5.0 -74.0", "DEFWPT ARPUG 5.2 -74.2", "DEFWPT MEX07 19.5 -99.0",
+    "CRE AVA9367 A320 5.5 -74.5 180 FL200 280", "ADDWPT AVA9367 ARPUG", "CRE IBE6401 A359 20.1 -99.0 190 FL240 300",
+    "ADDWPT IBE6401 MEX07", "CRE IBE6585 A333 5.4 -73.9 210 FL250 300", "ADDWPT IBE6585 ELENA" })
+  check_eq(ex("avianca niner tree six seven add ruta punto elena after arpug"), "ADDWPT AVA9367 ELENA,,,ARPUG")
+  check_eq(ex("iberia six four sero one direct mex sero seven"), "DIRECT IBE6401 MEX07")
+  check_eq(ex("iberia six fife eight fife descend FL180 when at ELENA"), "AT IBE6585 ELENA DO ALT IBE6585 FL180")
+end
