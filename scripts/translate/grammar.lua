@@ -9966,9 +9966,11 @@ end
 -- Mach .79").
 -- "once level", "when it's level", "once he's there", "when it gets there": the position of "once" or "when"
 -- before the word at k ("level", "lvl", "there"), a subject (lexicon.reached_subjects) and a verb of being or
--- getting (lexicon.reached_verbs) between or not; nil when none.
+-- getting (lexicon.reached_verbs) between or not ("up" or "down" before "there" too); nil when none.
 function G:reached_opening(k)
   local c = k - 1
+  -- ("once you're up there", "when he's down there": the direction before "there")
+  if self:word(k, "there") and self:word(c, "up down") then c = c - 1 end
   if self:word(c, "@reached_verbs") then c = c - 1 end
   if self:word(c, "@reached_subjects") then c = c - 1 end
   return self:word(c, "once when") and c or nil

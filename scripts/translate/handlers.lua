@@ -4577,9 +4577,9 @@ function m:on_the_way(id, ft)
 end
 -- words between the level and a speed's own word, part of the instruction ("when it passes FL130 drop the
 -- speed to 230", "... bring its speed back to 240", "... make its speed 260", "... make decrease speed to 250", "when
--- pass 7200 meter change speed to mach 0.76")
+-- pass 7200 meter change speed to mach 0.76", "once you reach FL200 go to speed 300")
 local SPEED_LEAD = { drop = true, bring = true, cut = true, take = true, pull = true, knock = true, put = true, make = true, the = true,
-                     change = true,
+                     change = true, go = true, to = true,
                      its = true, your = true, his = true, her = true, their = true }
 -- words between the level and a rate's own word, part of the instruction ("passing 150 reduce rate to 1000",
 -- "leaving FL100 increase your rate to 2000", "after passing FL150 descend rate 1500": the rate's direction)

@@ -2988,8 +2988,12 @@ return function(H, f, compass)
     end
     if not wp then return self:need("Direct to which waypoint should " .. id .. " fly?") end
     -- ("send it direct jfk", its destination KJFK: the IATA code of the airport it flies to is that airport, never the
-    -- navaid of the same ident beside it)
-    if dest and #wp == 3 and (require("translate.names").iata_airports[wp:upper()] or ""):upper() == dest:upper() then
+    -- navaid of the same ident beside it, unless that navaid is on its route: "add DUB ..., then direct DUB")
+    local routed = false
+    for _, r in ipairs(a and a.route or {}) do routed = routed or r:upper() == wp:upper() end
+    for c = 1, #self.out do routed = routed or self.out[c]:match("^ADDWPT " .. id .. " " .. wp:upper() .. "$") ~= nil end
+    if dest and #wp == 3 and not routed
+        and (require("translate.names").iata_airports[wp:upper()] or ""):upper() == dest:upper() then
       wp, to_dest = dest, dest
     end
     -- ("direct SPY then direct EHAM", "direct SPY, descend FL200, then proceed direct PAM"): a second direct-to

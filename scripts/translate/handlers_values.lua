@@ -1289,8 +1289,9 @@ return function(H, f, wrap, compass)
     -- ("turn left by 90 degrees and, in two minutes, onto heading 070": a heading said after a turn's degrees in the
     -- turn's sentence, no correction between, is a second heading unless it is the one the turn reaches: asked, as
     -- below, never the degrees dropped)
-    -- (so is a turn's degrees said after the heading: "turn left heading 330 by 15 degrees")
-    local turned = abs and abs.kind == "heading" and rel and not correction and now
+    -- (so is a turn's degrees said after the heading: "turn left heading 330 by 15 degrees"; or after a bare number
+    -- that is read as the heading: "fly heading... oh, 100, okay, left ten degrees")
+    local turned = abs and (abs.kind == "heading" or abs.kind == "plain") and rel and not correction and now
       and not self:in_reason(abs.b) and not self:in_reason(rel.b) and (rel.turn ~= 0 and rel.turn or turn)
     local first_e, second_b = rel and math.min(rel.e, abs and abs.e or rel.e), rel and math.max(rel.b, abs and abs.b or rel.b)
     for x = first_e or 1, turned and second_b - 1 or 0 do

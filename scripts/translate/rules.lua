@@ -440,7 +440,10 @@ return function(intent, rule, words)
     local e = i + 1
     while g.t[e] and g.t[e].kind ~= "punct" do e = e + 1 end
     local k = g:word(i + 2, "the its") and i + 3 or i + 2
-    return g:word(k, "route") and e == k + 1 and #g:quantities(i, e) == 0
+    -- ("descend via VNAV please": the switch named, courtesy after it)
+    local x = k + 1
+    while x < e and (g.t[x].filler or g:word(x, "please")) do x = x + 1 end
+    return g:word(k, "route vnav") and x == e and #g:quantities(i, e) == 0
   end }
   -- "follow its route again, and also the altitudes of the route": the route's levels, said after "follow" in its
   -- sentence and ending their clause, are flown too (VNAV)
@@ -3294,6 +3297,17 @@ return function(intent, rule, words)
   rule { "say report", "pos", near = { 3, "altitude speed heading position level airspeed mach alt lvl hdg spd pos fl vertical" } }
   -- "say distance to TELIN", "report your distance from BIG": the aircraft's position asked, to judge it by
   rule { "say report", "pos", near = { 2, "distance" } }
+  -- ("Ryanair 3PF say all": every state the aircraft has)
+  rule { "say", "pos", next = "all", when = function(g, i)
+    local named = {}
+    for _, r in ipairs(g.refs) do
+      for k = r.kind == "aircraft" and r.b or 1, r.kind == "aircraft" and r.e - 1 or 0 do named[k] = true end
+    end
+    for k = 1, #g.t do
+      if (k < i or k > i + 1) and g.t[k].kind ~= "punct" and not g.t[k].filler and not named[k] then return false end
+    end
+    return true
+  end }
   -- ("report with your present level": the value "with" the reply; "vertical" of a vertical speed said with "present"
   -- or "current" before it, the speed itself past the window: "revert with its present vertical speed")
   rule { "report", "pos", next = "with", near = { 4, "altitude speed heading position level airspeed mach alt lvl hdg spd pos fl vertical" } }
@@ -3538,6 +3552,12 @@ return function(intent, rule, words)
     return nx ~= nil and nx.kind == "word" and nx.text:match("^x%d+$") ~= nil and i + 2 > #g.t
   end }
   rule { "run", "dtmult", near = { 4, "@multipliers" } }  -- "run it at twice real time"
+  -- ("run simulation at normal speed please": the rate said, 1)
+  rule { "run", "dtmult", when = function(g, i)
+    local e = math.min(#g.t + 1, i + 6)
+    local n = g:find_word(i + 1, e, "normal")
+    return n < e and g:word(n + 1, "speed rate pace") and not g:word_in(i + 1, e, "for fast")
+  end }
   rule { "dtmult", "dtmult" }
   -- "start the next exercise from file munich_arrivals": a scenario file to load (IC), not the clock
   rule { "start", "ic", near = { 6, "file" } }

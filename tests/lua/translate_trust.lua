@@ -24273,3 +24273,25 @@ do
   check_eq(ex("iberia six four sero one direct mex sero seven"), "DIRECT IBE6401 MEX07")
   check_eq(ex("iberia six fife eight fife descend FL180 when at ELENA"), "AT IBE6585 ELENA DO ALT IBE6585 FL180")
 end
+
+-- Cycle 81 (R461-R464): "add DUB ..., then direct DUB" and "skip BOYNE, straight to DUB" with DUB on the route fly to
+-- the navaid, not the destination EIDW whose IATA code it is; "fly heading... oh, 100, okay, left ten degrees" asks
+-- (the degrees were dropped); "run simulation at normal speed"; "once you're up there"; "once you reach FL200 go to
+-- speed 300"; "descend via VNAV please"; "say all"
+do
+  local s = navscene({ "CRE EIN1DW A320 53.7 -5.2 250 FL140 280", "ADDWPT EIN1DW BOYNE", "ADDWPT EIN1DW DUB",
+    "DEST EIN1DW EIDW", "CRE CFG7KR A320 50.45 7.2 100 FL190 290", "CRE JJA101 B738 33.5 126.5 090 FL200 280",
+    "CRE RYR3PF B738 53.5 -6.0 090 FL200 280" }, "an ident that is an IATA code")
+  if s then
+    local function ex(text) return said(graph.translate(text, { sim = s, mode = "offline" })) end
+    check_eq(ex("Shamrock one delta whiskey, skip BOYNE, straight to DUB"), "DIRECT EIN1DW DUB")
+    asked(ex("Condor 7KR fly heading... what's he on now? oh, 100, okay, left ten degrees then"), "heading or degrees")
+    check_eq(ex("Run simulation at normal speed please"), "DTMULT 1")
+    check_eq(ex("Condor 7KR, climb to FL210 and once you're up there, mach point seven eight"),
+      "ALT CFG7KR FL210 ; ATALT CFG7KR FL210 SPD CFG7KR M0.78")
+    check_eq(ex("Condor 7KR climb FL200, and once you reach FL200 go to speed 300"),
+      "ALT CFG7KR FL200 ; ATALT CFG7KR FL200 SPD CFG7KR 300")
+    check_eq(ex("Jeju Air 101, descend via VNAV please"), "VNAV JJA101 ON")
+    check_eq(ex("Ryanair 3PF say all"), "POS RYR3PF")
+  end
+end
