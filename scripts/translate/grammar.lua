@@ -11967,6 +11967,16 @@ for _, list in ipairs({ ACCOUNTED.courtesy_phrases, ACCOUNTED.value_phrases }) d
     table.insert(PHRASES[words[1]], words)
   end
 end
+-- The length of the longest courtesy or value phrase (lexicon.accounted) that opens at token i, else nil.
+function G:courtesy_phrase_at(i)
+  local phrases, n = self.t[i] and PHRASES[self.t[i].text], nil
+  for k = 1, phrases and #phrases or 0 do
+    local p, ok = phrases[k], true
+    for x = 2, #p do ok = ok and self.t[i + x - 1] ~= nil and self.t[i + x - 1].text == p[x] end
+    if ok and #p > (n or 0) then n = #p end
+  end
+  return n
+end
 -- the amounts of a change said as one number word before its unit and "more"/"less" ("thirty knots less")
 G.amount_words = { five = "5", ten = "10", fifteen = "15", twenty = "20", thirty = "30", forty = "40", fifty = "50",
   sixty = "60", seventy = "70", eighty = "80", ninety = "90" }
@@ -13035,12 +13045,8 @@ function G:explained_spans(issued, kinds)
       local nx = self.t[i + 2]
       if not nx or nx.kind == "punct" or self:word(i + 2, "please") then inside[i], inside[i + 1] = true, true end
     end
-    local phrases = PHRASES[self.t[i].text]
-    for k = 1, phrases and #phrases or 0 do
-      local p, ok = phrases[k], true
-      for x = 2, #p do ok = ok and self.t[i + x - 1] ~= nil and self.t[i + x - 1].text == p[x] end
-      if ok then for x = i, i + #p - 1 do inside[x] = true end end
-    end
+    local n = self:courtesy_phrase_at(i)
+    for x = i, n and i + n - 1 or 0 do inside[x] = true end
     self:aside_alone(i, inside)
   end
   -- Comments and purposes that name no instruction, value or place, to the end of their clause: a
@@ -13628,8 +13634,9 @@ function G:state_question()
   if not (self:said(G.question_opens) or self:said(G.question_with_is)) then return end
   for i = 1, #self.t do
     local prev = self.t[i - 1]
+    -- (a courtesy phrase, "are you there?" as a radio check, asks nothing: G:courtesy_phrase_at)
     local opens = (not prev or prev.kind == "punct" or prev.filler or self:word(i - 1, "and @then_words"))
-      and not G.restated_after_marker(self, i)
+      and not G.restated_after_marker(self, i) and not self:courtesy_phrase_at(i)
     local k = opens and ((self:word(i, G.question_with_is) and self:word(i + 1, self:word(i, "why where")
         and "is are" or "is about") and i + 2)
       or (self:word(i, G.question_opens) and i + 1)) or nil
@@ -17985,6 +17992,13 @@ local function glued_telephony(text, fleet)
     ids[a.id:upper()] = a.id
     prefixes[(a.id:match("^%a+") or ""):upper()] = true
   end
+  -- ("Air france1034": the last word of a telephony of two run into the number, the first said apart, is that id when
+  -- one flies)
+  text = text:gsub("%f[%w](%a+)%s+(%a+)(%d%w*)%f[%W]", function(first, word, number)
+    local icao = GLUED_AIRLINES[(first .. word):lower()]
+    local id = icao and ids[(icao .. number):upper()]
+    if id then return word:find("%u") and id or id:lower() end
+  end)
   return (text:gsub("()%f[%w](%a+)(%d%w*)%f[%W]", function(at, word, number)
     local icao = not prefixes[word:upper()] and GLUED_AIRLINES[word:lower()]
     local id = icao and ids[(icao .. number):upper()]

@@ -3730,6 +3730,15 @@ function m:settle_callsigns()
   end
   for _, r in ipairs(self.refs) do
     if r.kind == "aircraft" then
+      -- (so are the words of an instruction said before the airline's name: "delete Norwegian 741", "position of the
+      -- Norwegian 741", NOZ741 having no telephony squawk knows)
+      local j = r.b
+      while j < r.e - 1 and self.t[j].kind == "word" and self:known_word(j) and not self:airline_at(j) do j = j + 1 end
+      if j > r.b and j < r.e - 1 and self:airline_at(j) then
+        self.unheld = self.unheld or {}
+        for x = r.b, j - 1 do self.unheld[x] = true end
+        r.b = j
+      end
       while r.e - r.b > 1 and self.t[r.b].kind == "word" and QUESTION_WORDS[self.t[r.b].text]
           and not self:airline_at(r.b) do
         self.unheld = self.unheld or {}  -- (tokens the matcher used that no reference holds now: G:intent_at)

@@ -345,6 +345,8 @@ return {
         -- descend ...", "when you have a moment", "if I may")
         "if you'd be so kind", "if you would be so kind", "if you'd be kind enough", "if you would be kind enough",
         "if i may", "ever so much", "be a dear and", "when you have a moment", "when you've a moment",
+        -- (a radio check before the instruction: "Virgin 45F, are you there? climb FL340")
+        "are you there", "you there", "how do you read", "do you read", "do you read me", "how do you read me",
         -- the listener's convenience and leave said whole ("..., please, when convenient", "if that's alright with you")
         "when convenient", "whenever convenient", "when it's convenient", "when it is convenient", "at your convenience",
         "if that's alright with you", "if that's all right with you", "if that's alright", "if that's all right",
@@ -2357,6 +2359,9 @@ return {
     -- (a value after a comma is no part of it, `stops_at_value`: "cancel speed restrictions, 250 knots" gives a speed)
     { what = "restrictions lifted", words = "cancel", near = { "restriction", "restrictions" },
       through = "speed level altitude", stops_at_value = true },
+    -- ("Air Wisconsin 4120, delete speed restrictions": the restriction deleted, never the aircraft)
+    { what = "restrictions lifted", words = "delete remove", near = { "restriction", "restrictions" }, window = 3,
+      through = "speed level altitude", stops_at_value = true },
     -- "EZY45KL resume normal speed", "DAL14 climb FL250, resume normal speed": said to an aircraft, its speed
     -- restriction lifted (said alone, "resume normal speed" is the simulation's rate, DTMULT 1; said alone to an
     -- aircraft flying its route's profile, the profile's speed given back: VNAV ON)
@@ -2790,6 +2795,8 @@ return {
     tirty = "thirty", altitud = "altitude", tousan = "thousand",
     -- (French: "eading", "sen" and "zen" for "then"; Italian and Greek: "eding", "fligh level")
     eading = "heading", sen = "then", zen = "then", eding = "heading", fligh = "flight",
+    -- (German: "fligt level")
+    fligt = "flight",
     -- (Indian and Sri Lankan: "wan" for one, "nayner", "clime", "fly-level")
     wan = "one", nayner = "niner", clime = "climb", ["fly-level"] = "flight level",
     -- (Portuguese and Brazilian: "ninner")
@@ -2801,6 +2808,8 @@ return {
   heard_as = {
     { heard = { "write", "rite", "wright" }, means = "right",
       before = { "heading", "hdg", "turn" }, after = { "turn" } },
+    -- ("climb on fligt level one four tsero tank you": a German recogniser's thanks)
+    { heard = { "tank", "tenk" }, means = "thank", before = { "you" } },
     -- ("throw in 3 more A320s", "throw in another B738": adding traffic)
     { heard = { "throw in", "chuck in" }, means = "add", before = { "#number", "a", "an", "another", "some", "more" } },
     -- ("turn lift heading three four zero": a recogniser's "left")

@@ -2059,10 +2059,13 @@ return function(intent, rule, words)
   rule { "take", "delete", near = { 5, "out" } }
   -- "take BEDRK off your route", "take CGT off of Southwest 903's route": a waypoint straight after the verb, "off"
   -- (and "of") after it, a route noun within the six words after
+  -- ("take Aberdeen off the route": a name in capitals in the waypoint's place, the handler's to read)
   rule { "take", "delwpt", when = function(g, i)
     local r = g:refs_in(i + 1, i + 2, "waypoint")[1]
-    if not (r and r.b == i + 1 and g:word(r.e, "off")) then return false end
-    return g:word_in(r.e + 1, math.min(#g.t + 1, r.e + 7), "@route_nouns")
+    local e = r and r.b == i + 1 and r.e
+      or (g.t[i + 1] and g.t[i + 1].kind == "word" and g.t[i + 1].raw:match("^%u%l+$") and i + 2)
+    if not (e and g:word(e, "off")) then return false end
+    return g:word_in(e + 1, math.min(#g.t + 1, e + 7), "@route_nouns")
   end }
   -- "take Scandinavian one five zero one out of the exercise": a flying aircraft, however long its spoken callsign,
   -- straight after the verb ("the" between), "out" straight after it, and then nothing in its clause or "of" the
@@ -2502,6 +2505,16 @@ return function(intent, rule, words)
     return a ~= nil and a.exists and a.e == i and g:skip_fillers(1) == a.b and g.t[i + 1] ~= nil
       and g.t[i + 1].text == "?" and g.t[i + 2] == nil
   end }
+  -- ("Delta 401 flight plan please", "KLM12 flight plan?": the plan's noun straight after an aircraft flying opening the
+  -- request, "please" at most after it)
+  rule { "plan", "listrte", prev = { 1, "flight" }, when = function(g, i)
+    local a = g:refs_in(1, i, "aircraft")
+    a = a[#a]
+    if not (a and a.exists and a.e == i - 1 and g:skip_fillers(1) == a.b) then return false end
+    local k = i + 1
+    while g.t[k] and (g.t[k].filler or g.t[k].kind == "punct" or g:word(k, "please")) do k = k + 1 end
+    return g.t[k] == nil
+  end }
   -- ("which route he has?", "which route has?": an Italian speaker's "che rotta ha?", "which" straight before it)
   -- (its clause ending there)
   rule { "route rte", "listrte", prev = { 1, "which" }, when = function(g, i)
@@ -2704,6 +2717,21 @@ return function(intent, rule, words)
   end }
   rule { "where's wheres", "pos" }  -- ("wheres the speedbird": typed without the apostrophe)
   rule { "doing", "pos", prev = { 4, "what what's whats" } }  -- "what's klm12 doing"
+  -- ("what are Iberia 3170 and Vueling 22RW doing": two aircraft or more asked about, "what are" before them)
+  rule { "doing", "pos", when = function(g, i)
+    local named, n = {}, 0
+    for _, r in ipairs(g.refs) do
+      if r.kind == "aircraft" and r.e <= i then
+        n = n + 1
+        for k = r.b, r.e - 1 do named[k] = true end
+      end
+    end
+    if n < 2 or not (g:word(1, "what") and g:word(2, "are")) then return false end
+    for k = 3, i - 1 do
+      if not (named[k] or g.t[k].kind == "punct" or g:word(k, "and the")) then return false end
+    end
+    return true
+  end }
   -- ("how's the Easy getting on?": the aircraft's progress asked)
   rule { "getting", "pos", next = "on", prev = { 5, "how's hows how" } }
   -- "what's Qantas one four one doing", "what is Velocity 923 doing": a callsign said in words of any length;

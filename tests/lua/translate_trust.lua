@@ -24295,3 +24295,38 @@ do
     check_eq(ex("Ryanair 3PF say all"), "POS RYR3PF")
   end
 end
+
+-- Cycle 81 (R467, R468): a German recogniser's "fligt level" and "tank you"; an instruction's words before an airline's
+-- name the matcher took into the callsign ("delete Norwegian 741", "position of Norwegian 741", NOZ741 with no
+-- telephony); "Air france1034"; "what are Iberia 3170 and Vueling 22RW doing"; "are you there?" as a radio check
+do
+  local _, ex = scene({ "CRE CFG2KP A320 50.0 8.5 090 FL120 280", "CRE NAX32K B38M 59.5 11.0 180 FL340 280",
+    "CRE NOZ741 B738 59.0 11.8 270 FL330 280", "CRE AFR1034 A320 49.0 2.5 090 FL300 280",
+    "CRE IBE3170 A320 40.5 -3.5 090 FL200 280", "CRE VLG22RW A320 40.6 -3.6 090 FL210 280",
+    "CRE VIR45F A35K 51.9 1.5 200 FL320 290" })
+  check_eq(ex("condor two kilo papa climb on fligt level one four tsero tank you"), "ALT CFG2KP FL140")
+  check_eq(ex("delete Norwegian 741"), "DEL NOZ741")
+  check_eq(ex("position of Norwegian 741"), "POS NOZ741")
+  check_eq(ex("move the Norwegian 741 to 59.0 11.0"), "MOVE NOZ741 59 11")
+  check_eq(ex("Air france1034 climb 320"), "ALT AFR1034 FL320")
+  check_eq(ex("what are Iberia 3170 and Vueling 22RW doing"), "POS IBE3170 ; POS VLG22RW")
+  check_eq(ex("Virgin 45F, are you there? climb FL340"), "ALT VIR45F FL340")
+  check_eq(ex("Virgin 45F, are you at FL320?"), "POS VIR45F")
+end
+
+-- Cycle 81 (R465, R466): "Air Wisconsin 4120, delete speed restrictions" deleted the aircraft: a restriction deleted
+-- is a restriction lifted, which squawk does not keep (named, nothing sent); "Delta 401 flight plan please"; "take
+-- Aberdeen off the route" (a navaid's name in the waypoint's place)
+do
+  local s = navscene({ "CRE AWI4120 CRJ2 40.5 -74.5 090 11000 250", "CRE DAL401 A321 40.6 -74.0 090 FL200 280",
+    "CRE BAW1308 A320 57.0 -2.5 090 FL200 280", "ADDWPT BAW1308 ADN" }, "a restriction deleted")
+  if s then
+    local function tr(text) return graph.translate(text, { sim = s, mode = "offline" }) end
+    local r = tr("Air Wisconsin 4120, delete speed restrictions")
+    check(#(r.commands or {}) == 0 and (r.note or ""):find("restrictions lifted", 1, true) ~= nil, said(r))
+    check_eq(said(tr("delete Air Wisconsin 4120")), "DEL AWI4120")
+    check_eq(said(tr("Delta 401 flight plan please")), "LISTRTE DAL401")
+    check_eq(said(tr("Speedbird one three zero eight, take Aberdeen off the route")), "DELWPT BAW1308 ADN")
+    asked(said(tr("Speedbird one three zero eight, take Banana off the route")), "no such place")
+  end
+end
