@@ -2804,10 +2804,16 @@ return {
     -- (Japanese and Korean: l for r and p for f, a vowel after a closing consonant: "turn reft", "leduce", "pive",
     -- "sebun", "sixu", "notto", "bertical")
     reft = "left", leduce = "reduce", pive = "five", sebun = "seven", sixu = "six", notto = "knots",
-    bertical = "vertical" },
+    bertical = "vertical",
+    -- (Thai and Vietnamese: a final consonant dropped or added, "descen", "lef", "righ", "direc", "wha", "fas", "fo"
+    -- for four, "fly leven" for flight level)
+    descen = "descend", lef = "left", righ = "right", direc = "direct", wha = "what", fas = "fast", fo = "four",
+    leven = "level" },
   heard_as = {
     { heard = { "write", "rite", "wright" }, means = "right",
       before = { "heading", "hdg", "turn" }, after = { "turn" } },
+    -- ("descen fly leven one zero zero": a Thai or Vietnamese recogniser's flight level)
+    { heard = { "fly" }, means = "flight", before = { "leven" } },
     -- ("climb on fligt level one four tsero tank you": a German recogniser's thanks)
     { heard = { "tank", "tenk" }, means = "thank", before = { "you" } },
     -- ("throw in 3 more A320s", "throw in another B738": adding traffic)

@@ -24330,3 +24330,16 @@ do
     asked(said(tr("Speedbird one three zero eight, take Banana off the route")), "no such place")
   end
 end
+
+-- Cycle 81 (R470): a Thai and Vietnamese recogniser's final consonants ("descen fly leven one zero zero", "turn lef",
+-- "righ", "direc", "wha is your route", "fas forward", "fo" for four): "descen fly leven 100" was a heading of 100
+do
+  local _, ex = scene({ "CRE THA661 A359 13.7 100.7 090 FL150 280", "DEFWPT STONE 13.5 100.5",
+    "CRE THA301 B738 13.6 100.6 090 FL150 280", "ADDWPT THA301 STONE", "CRE VJC451 A321 10.5 106.0 090 FL200 280" })
+  check_eq(ex("thai six six one descen fly leven one zero zero"), "ALT THA661 FL100")
+  check_eq(ex("thai six six one turn lef heading two seven zero"), "HDG THA661 270 LEFT")
+  check_eq(ex("thai tree zero one direc stone then descen fly leven zero six zero"), "DIRECT THA301 STONE ; ALT THA301 FL60")
+  check_eq(ex("thai tree zero one wha is your route"), "LISTRTE THA301")
+  check_eq(ex("fas forward two minute"), "FF 120")
+  check_eq(ex("vietjet four fife one heading tree fo zero"), "HDG VJC451 340")
+end
