@@ -6296,7 +6296,9 @@ function G:trailing_level_condition()
           joined = joined and (ARRIVING[w] or self.t[x].filler or (x == first.b - 1 and w == "the"))
           reached = reached or (ARRIVING[w] and not LINKING[w] and w ~= "at")
             or (x == first.b - 1 and (w == "have" or w == "has") and first.kind == "alt")
-          slowed = slowed or self:word(x, "@speed_verbs")
+          -- (a verb of slowing in its past or its third person, "once it's slowed to 230": the bare verb after a
+          -- level reached, "when you're level slow to 220", is the instruction)
+          slowed = slowed or (self:word(x, "@speed_verbs") and (w:match("ed$") or w:match("s$")) ~= nil)
         end
         reached = joined and reached
         if reached then v = first.b - 1 end

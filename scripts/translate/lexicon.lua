@@ -345,6 +345,9 @@ return {
         -- descend ...", "when you have a moment", "if I may")
         "if you'd be so kind", "if you would be so kind", "if you'd be kind enough", "if you would be kind enough",
         "if i may", "ever so much", "be a dear and", "when you have a moment", "when you've a moment",
+        -- (a study's step named before the request: "ok, before the next trial, could you bring KLM1234 down ...")
+        "before the next trial", "before the next run", "before the next session", "for the next trial",
+        "for the next run", "between trials", "between runs", "before we start",
         -- (a radio check before the instruction: "Virgin 45F, are you there? climb FL340")
         "are you there", "you there", "how do you read", "do you read", "do you read me", "how do you read me",
         -- the listener's convenience and leave said whole ("..., please, when convenient", "if that's alright with you")

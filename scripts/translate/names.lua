@@ -207,6 +207,7 @@ local names = {
     { "lacsa", "LRC" },  -- (Avianca Costa Rica)
     { "surinam", "SLM" },
     { "aeroenlaces", "VIV" },  -- (Viva Aerobus's ICAO telephony)
+    { "interjet", "AIJ" },
     { "viva aerobus", "VIV" },
     { "costera", "SLI" },  -- (Aeromexico Connect)
     { "trans aeromar", "TAO" },  -- (Aeromar's ICAO telephony TRANS-AEROMAR)

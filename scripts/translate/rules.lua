@@ -998,8 +998,9 @@ return function(intent, rule, words)
          when = function(g) return not g:has_ref(1, #g.t + 1, "aircraft") end }
   -- "the Shuttle is a bit slow": a description ("X is to slow down to 220 knots": the verb after "to", an instruction;
   -- "if it is possible, fast forward ...": a clause after the comma, "fast forward" the run's)
+  -- ("when you're level slow to 220": the condition reached, then the verb)
   rule { "slow fast", false, prev = { 3, "is it's are was isn't" }, when = function(g, i)
-    if g:word(i - 1, "to") then return false end
+    if g:word(i - 1, "to level there") then return false end
     return not (g:word(i + 1, "forward") and g.t[i - 1].kind == "punct")
   end }
   rule { "slow fast", false, prev = { 1, "a an" }, next = "one ones aircraft plane mover" }  -- "a slow one": a description
@@ -3834,6 +3835,13 @@ return function(intent, rule, words)
       if g:word(j, "vertical") and g:vertical_resolutions(j) then return true end
     end
     return false
+  end }
+  -- ("ok new scenario's loaded. Could you bring the Loganair down ...": a scenario said as loaded already, a state, no
+  -- file to load)
+  rule { "scenario", false, when = function(g, i)
+    local k = g:word(i + 1, "is was has 's") and i + 2 or i + 1
+    if g:word(k, "been") then k = k + 1 end
+    return g:word(k, "loaded opened running ready up set")
   end }
   rule { "scenario load open ic", "ic" }
   -- "print UAL9's flight plan", "print the waypoint list for BAW123": an aircraft's route listed

@@ -24343,3 +24343,18 @@ do
   check_eq(ex("fas forward two minute"), "FF 120")
   check_eq(ex("vietjet four fife one heading tree fo zero"), "HDG VJC451 340")
 end
+
+-- Cycle 81 (R471, R472): "Interjet 1033"; "descend FL100 and when you're level slow to 220" (read as a wait for the
+-- aircraft to slow to 220; the bare verb after the level reached is the instruction, "once it's slowed to 230" the
+-- wait); "new scenario's loaded" (no file to load); "before the next trial"
+do
+  local _, ex = scene({ "CRE AIJ1033 A320 25.7 -100.3 090 FL200 280", "CRE AFR1048 A320 49.0 2.5 090 FL150 280",
+    "CRE LOG4JX AT76 55.9 -4.4 090 9000 220", "CRE KLM1234 B738 52.3 4.8 090 FL200 280" })
+  check_eq(ex("Interjet 1033 turn right heading 340"), "HDG AIJ1033 340 RIGHT")
+  check_eq(ex("Air France 1048 descend FL100 and when you're level slow to 220"),
+    "ALT AFR1048 FL100 ; ATALT AFR1048 FL100 SPD AFR1048 220")
+  check_eq(ex("Air France 1048 descend to 8000 once it's slowed to 230"), "ATSPD AFR1048 230 ALT AFR1048 8000")
+  check_eq(ex("ok new scenario's loaded. Could you bring the Loganair down to 6000 feet please"), "ALT LOG4JX 6000")
+  asked(ex("load the scenario munich"), "which file")
+  check_eq(ex("ok, before the next trial, could you bring KLM1234 down to FL100 please"), "ALT KLM1234 FL100")
+end
