@@ -1251,7 +1251,7 @@ end
 -- True when the words toks[k .. j - 1] are hesitations only (lexicon.hesitations, "erm", "uhm", "hmm") between two
 -- digit strings of the same length (two or more digits, each one numeral, "fl250", or digit words said one by
 -- one): the first after a word of a value (lexicon.self_correction.after, "to", "at", an instruction's verb) or
--- prefixed by its letters ("fl250"), the second with no unit word or more digits after it.
+-- prefixed by its letters ("fl250"), its unit after it or not, the second with no unit word or more digits after it.
 G.hesitation_words = set_of(lexicon.hesitations)
 G.hesitation_words.erm, G.hesitation_words.uhm, G.hesitation_words.hmm = true, true, true
 G.valued_before = set_of({ "to", "at", "climb", "descend", "maintain", "reduce", "increase", "hdg", "spd", "alt" })
@@ -1278,10 +1278,13 @@ function G.hesitant_value(toks, k, j)
     end
     return n, e
   end
-  local before, b = digits(k - 1, -1)
+  -- (the first said with its unit, "increase to two eight zero knots, er, two seven zero")
+  local u = k - 1
+  if toks[u] and UNIT_WORDS[toks[u].bare] and u > 1 then u = u - 1 end
+  local before, b = digits(u, -1)
   local after, e = digits(j, 1)
   if before < 2 or before ~= after then return false end
-  local lead = toks[k - 1].bare:match("^%a%a?%d") or (toks[b] and G.valued_before[toks[b].bare])
+  local lead = toks[u].bare:match("^%a%a?%d") or (toks[b] and G.valued_before[toks[b].bare])
   return lead and not (toks[e] and not toks[e - 1].raw:match("%p$") and (UNIT_WORDS[toks[e].bare]
     or NUMBER_WORDS[toks[e].bare] or toks[e].bare:match("^%d")))
 end

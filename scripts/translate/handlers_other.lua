@@ -211,6 +211,21 @@ return function(H, f, compass)
         return w.raw .. self.t[k + 1].raw, k
       end
     end
+    -- ("Create a Rex Saab three forty, RXA two four one, at BOLTY", "callsign VOZ nine one two": the code in capitals
+    -- and its flight number said digit by digit, set off by commas or after "callsign", anywhere in the request)
+    for k = s.b, s.e - 2 do
+      local w = self.t[k]
+      local q = w.kind == "word" and AIRLINE_CODES[w.raw] and self:quantities(k + 1, math.min(s.e, k + 6))[1]
+      local n = q and q.b == k + 1 and q.kind == "plain" and q.number
+      local digits = n and not n.typed and not n.thousand and not n.hundred and n.digits:match("^%d%d?%d?%d?$")
+      local apart = digits and (self:word(k - 1, "callsign") or (self.t[k - 1] and self.t[k - 1].text == ","
+        and (not self.t[q.e] or self.t[q.e].text == ",")))
+      if apart and #digits == q.e - q.b and not self:has_ref(k, q.e, "type") and not self:refs_in(k, q.e, "aircraft")[1] then
+        self:mark_used(k + 1, q.e)
+        self:explain(k, q.e)
+        return w.raw .. digits, k
+      end
+    end
     return nil
   end
   -- The callsign of the one aircraft this request deletes before the creation s (one delete verb, then that

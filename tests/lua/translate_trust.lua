@@ -24358,3 +24358,13 @@ do
   asked(ex("load the scenario munich"), "which file")
   check_eq(ex("ok, before the next trial, could you bring KLM1234 down to FL100 please"), "ALT KLM1234 FL100")
 end
+
+-- Cycle 81 (R474, after the last two rounds were scored): a new callsign's code in capitals and its flight number said
+-- digit by digit ("Create a Rex Saab three forty, RXA two four one, at ..."); a speed taken back after a hesitation,
+-- the first said with its unit ("increase to two eight zero knots, er, two seven zero")
+do
+  local _, ex = scene({ "DEFWPT BOLTY -37.8 144.9", "CRE VOZ334 B738 -37.5 145.0 090 FL200 260" })
+  check_eq(ex("Create a Rex Saab three forty, RXA two four one, at BOLTY, one two thousand, heading one eight zero, "
+    .. "two zero zero knots"), "CRE RXA241 SF34 BOLTY 180 12000 200")
+  check_eq(ex("Velocity three three four, increase to two eight zero knots, er, two seven zero"), "SPD VOZ334 270")
+end
