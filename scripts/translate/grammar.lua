@@ -9805,8 +9805,11 @@ function G:until_then_value(i)
     if u >= i or self:until_level_end(u) ~= i then return nil end
     r = { b = u + 1 }
   end
+  -- ("speed 210 till RID, then back to 250": the value said again, "back" and "to" before it)
+  local v = self:skip_fillers(i + 1)
+  if self:word(v, "back") then v = self:skip_fillers(v + (self:word(v + 1, "to") and 2 or 1)) end
   local q = self:quantities(i + 1, #self.t + 1)[1]
-  if not q or q.b ~= self:skip_fillers(i + 1) then return nil end
+  if not q or q.b ~= v then return nil end
   local before = self:quantities(math.max(1, r.b - 8), r.b - 1)
   local p = before[#before]
   if not p or p.e ~= r.b - 1 then return nil end
@@ -12263,10 +12266,10 @@ function G:meaning_carried(i, kinds)
       and self:word_in(i + 1, math.min(#self.t + 1, i + 4), "heading headings hdg vector vectors vectoring") then
     return true
   end
-  -- "cancel your route", "cancel the whole route": the route deleted
+  -- "cancel your route", "cancel the whole route", "cancel the rest of your route": the route deleted
   -- ("flight plan cancel, delete the route": the plan named straight before it)
   if self:word(i, "cancel cancels cancelled canceled") and kinds.delrte
-      and (self:word_in(i + 1, math.min(#self.t + 1, i + 4), "route rte") or self:word(i - 1, "plan rte route")) then
+      and (self:word_in(i + 1, math.min(#self.t + 1, i + 7), "route rte") or self:word(i - 1, "plan rte route")) then
     return true
   end
   -- (an instruction word between them negates the instruction: "do not go direct HZA" is no place passed)

@@ -619,7 +619,10 @@ return {
         -- the same in ICAO English as a second language, "than" or the noun left out ("rate not less 1000 feet
         -- per minute", "maintain FL130 until further"), or the bound said before its value's noun ("not above
         -- speed 270")
-        "not less", "not more", "until further", "till further", "not above speed", "not below speed" },
+        "not less", "not more", "until further", "till further", "not above speed", "not below speed",
+        -- (what is left of a route, all of it still to fly: "delete the rest of your route")
+        "rest of the route", "rest of your route", "rest of its route", "rest of his route", "rest of her route",
+        "remainder of the route", "remainder of your route", "rest of the routing", "rest of the flight plan" },
     -- words that change what an instruction means: a leftover unless the parse carried them (a condition
     -- command, a switch turned off, a direct-to past a place, a handler that read it)
     negation = { "not", "instead", "don't", "dont", "doesn't", "didn't", "never", "unless", "cancel", "cancels", "cancelled", "canceled", "cancelling", "canceling",

@@ -2027,11 +2027,15 @@ return function(intent, rule, words)
            return false
          end }
   -- "cancel your route", "cancel the whole route of CHH7423": the whole route, the noun straight after the verb (or
-  -- its article, and "whole" or "entire"), no waypoint named, and nothing after it that a cancelled route would not
+  -- its article, and "whole" or "entire", or "the rest of"), no waypoint named, and nothing after it that a cancelled route would not
   -- be ("cancel route restrictions": a restriction lifted)
   rule { "cancel", "delrte", when = function(g, i)
     local k = g:word(i + 1, "the your its his her their") and i + 2 or i + 1
     if g:word(k, "whole entire complete") then k = k + 1 end
+    -- ("cancel the rest of your route": what is left of it, which is all of it that is still to fly)
+    if g:word(k, "rest remainder") and g:word(k + 1, "of") then
+      k = g:word(k + 2, "the your its his her their") and k + 3 or k + 2
+    end
     return g:word(k, "route rte") and not g:word(k + 1, "restriction restrictions clearance")
       and not g:has_ref(1, #g.t + 1, "waypoint")
   end }

@@ -24368,3 +24368,15 @@ do
     .. "two zero zero knots"), "CRE RXA241 SF34 BOLTY 180 12000 200")
   check_eq(ex("Velocity three three four, increase to two eight zero knots, er, two seven zero"), "SPD VOZ334 270")
 end
+
+-- Cycle 82 (experimenters' sessions of cycle 81, R463 and R472): "speed 210 till ARTIP, then back to 250" (the value
+-- said again after "back to"); "cancel the rest of your route", "delete the rest of the route" (what is left of it);
+-- "delete the rest" with no route named stays asked
+do
+  local _, ex = scene({ "DEFWPT ARTIP 52.5 4.6", "CRE KLM1234 B738 52.60 4.20 090 FL120 250", "ADDWPT KLM1234 ARTIP",
+    "CRE TRA5FX B738 52.20 5.50 270 FL090 240" })
+  check_eq(ex("KLM1234 speed 210 till ARTIP, then back to 250"), "SPD KLM1234 210 ; AT KLM1234 ARTIP DO SPD KLM1234 250")
+  check_eq(ex("KLM1234 cancel the rest of your route"), "DELRTE KLM1234")
+  check_eq(ex("KLM1234 delete the rest of the route"), "DELRTE KLM1234")
+  asked(ex("KLM1234 and TRA5FX stay, delete the rest"), "rest")
+end
