@@ -506,12 +506,29 @@ G.heard_taken_back = set_of(lexicon.correction)
 for _, w in ipairs(lexicon.self_correction.markers) do
   if not w:find(" ") then G.heard_taken_back[w] = true end
 end
--- lexicon.accented's words read as the English words they are (a word in capitals stays as typed).
+-- A speaker whose language has no /p/ (Arabic) says it /b/, and a recogniser writes the b: a word of four letters or
+-- more that no list knows, opening with "b" or "sb", is the instruction's word with a "p" there (a rule's word or
+-- one it looks for, a filler, a word of a condition, a letter of the phonetic alphabet: "blease", "broceed", "bassing", "sbeed", "bapa");
+-- else nil ("beach" is no "peach", a name).
+G.p_words = set_of(lexicon.fillers)
+for _, list in ipairs({ lexicon.level_condition, lexicon.reached_place_words }) do
+  for _, w in ipairs(list) do G.p_words[w] = true end
+end
+function G.p_said_b(w)
+  if #w < 4 or KNOWN[w] then return nil end
+  local p = w:match("^b%l+$") and "p" .. w:sub(2) or w:match("^sb%l+$") and "sp" .. w:sub(3)
+  if not p then return nil end
+  return (RULES_BY_WORD[p] or CONDITION_SETS[p] or lexicon.phonetic[p] or G.p_words[p]) and p or nil
+end
+-- lexicon.accented's words, and a /p/ said /b/ (G.p_said_b), read as the English words they are (a word in capitals
+-- stays as typed).
 function G.accented(text)
   local toks, bare = plain_words(text)
-  if not any_of(bare, lexicon.accented) then return text end
+  local any = any_of(bare, lexicon.accented)
+  for k = 1, #bare do any = any or G.p_said_b(bare[k]) ~= nil end
+  if not any then return text end
   return tokens.rewrite(text, toks, function(i)
-    local en = lexicon.accented[bare[i]]
+    local en = lexicon.accented[bare[i]] or G.p_said_b(bare[i])
     if not en or toks[i]:match("^%u%u") then return nil end
     return en .. (toks[i]:match("%p+$") or ""), i + 1
   end)

@@ -2814,10 +2814,14 @@ return {
     -- (Thai and Vietnamese: a final consonant dropped or added, "descen", "lef", "righ", "direc", "wha", "fas", "fo"
     -- for four, "fly leven" for flight level)
     descen = "descend", lef = "left", righ = "right", direc = "direct", wha = "what", fas = "fast", fo = "four",
-    leven = "level" },
+    leven = "level",
+    -- (Arabic: "disend"; a /p/ said /b/, "blease", "broceed", is grammar.lua's G.p_said_b)
+    disend = "descend" },
   heard_as = {
     { heard = { "write", "rite", "wright" }, means = "right",
       before = { "heading", "hdg", "turn" }, after = { "turn" } },
+    -- ("switch of lnav": a recogniser's "off" after "switch")
+    { heard = { "of" }, means = "off", after = { "switch", "switched" } },
     -- ("descen fly leven one zero zero": a Thai or Vietnamese recogniser's flight level)
     { heard = { "fly" }, means = "flight", before = { "leven" } },
     -- ("climb on fligt level one four tsero tank you": a German recogniser's thanks)

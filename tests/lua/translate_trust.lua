@@ -24380,3 +24380,22 @@ do
   check_eq(ex("KLM1234 delete the rest of the route"), "DELRTE KLM1234")
   asked(ex("KLM1234 and TRA5FX stay, delete the rest"), "rest")
 end
+
+-- Cycle 82 (R479): an Arabic recogniser's /p/ written "b" ("blease", "broceed", "bassing", "brotected", "bakistan",
+-- "bapa": an instruction's word, never a name, "direct Seal Beach" stays the VOR) and "disend"; "switch of lnav" (a
+-- recogniser's "off" after "switch", which read ON)
+do
+  local _, ex = scene({ "CRE PIA741 B77W 25.2 55.3 090 FL350 290", "CRE KNE77P A320 25.6 47.4 200 FL140 260",
+    "CRE RAM205 B738 32.9 -6.9 320 9000 240", "CRE MSR7HT A320 30.1 31.4 090 FL200 280",
+    "DEFWPT BOTOD 25.0 55.0", "ADDWPT PIA741 BOTOD", "DEFWPT LAKAM 33.2 -7.2", "ADDWPT RAM205 LAKAM" })
+  check_eq(ex("blease pause the simulation"), "HOLD")
+  check_eq(ex("bakistan seven four one disend flight level tree two zero"), "ALT PIA741 FL320")
+  check_eq(ex("nas express seven seven bapa turn right heding two tree zero"), "HDG KNE77P 230 RIGHT")
+  check_eq(ex("bakistan seven four one when bassing botod disend flight level one eight zero"),
+    "AT PIA741 BOTOD DO ALT PIA741 FL180")
+  check_eq(ex("set the brotected zone radius to fife miles"), "ZONER 5")
+  check_eq(ex("egyptair seven hotel tango switch of lnav"), "LNAV MSR7HT OFF")
+  check_eq(ex("royal maroc two zero five when bassing lakam reduce speed two fife zero"), "AT RAM205 LAKAM DO SPD RAM205 250")
+  local _, nex = navscene({ "CRE N9172K C172 33.7 -118.2 090 3000 100" }, "a navaid's name with a b")
+  if nex then check_eq(nex("Cessna 72K, direct Seal Beach"), "ADDWPT N9172K SLI ; DIRECT N9172K SLI") end
+end
