@@ -476,6 +476,7 @@ local function foreign_digits(text)
     if beside then return en .. (toks[i]:match("%p+$") or ""), i + 1 end
   end)
 end
+G.name_particle_words = set_of(lexicon.name_particles)
 local function heard_word_is(w, set)
   if not w then return false end
   -- ("#capital": a word typed with a capital, a name: "as soon as Swiss 200 is level", "as soon as KLM12 ...")
@@ -483,6 +484,8 @@ local function heard_word_is(w, set)
   -- ("#code": a word of three to five capitals, a fix or navaid as typed: "when it passed ABATU")
   if set["#code"] and w:match("^%u%u%u%u?%u?%p*$") then return true end
   w = w:lower():gsub("%p+$", "")
+  -- ("#known": a word squawk knows, no particle of a place's name: "delete de air france", not "charles de gaulle")
+  if set["#known"] and KNOWN[w] and not G.name_particle_words[w] then return true end
   return set[w] == true or (set["#number"] == true and (NUMBER_WORDS[w] == true or w:match("^%d") ~= nil
     or w:match("^fl%d+$") ~= nil or NUMBER_WORDS[w:match("^(%a+)%-%a") or ""] == true))  -- ("one-two-zero")
 end

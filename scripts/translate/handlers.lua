@@ -114,13 +114,21 @@ end
 local MARKER_WORDS = {}
 for _, w in ipairs(L.self_correction.markers) do if not w:find(" ") then MARKER_WORDS[w] = true end end
 
+-- True when token i (in a segment opening at b) takes back the vertical motion said before it: a correction, a
+-- marker after a value (m:marker_after_value) or straight after the verb ("climb sorry descend four thousand",
+-- "descend no climb FL120"), or a verb broken off (m:motion_broken_off).
+function m:motion_taken_back(i, b)
+  return self:word(i, "@correction") or self:marker_after_value(i) or self:motion_broken_off(i, b)
+    or (MARKER_WORDS[self.words[i] or ""] ~= nil and self:word(i - 1, "@up @down"))
+end
+
 function m:direction(s)
   local names = self:refs_in(s.b, s.e, "aircraft")
   local function said(i, list) return self:motion_said(i, list, names) end
   -- a direction said after a correction replaces the one before it ("climb FL260, correction, descend FL220")
   for i = (self:said("@correction") or self:said(MARKER_WORDS) or self:said("@up") and self:said("@down")) and s.e - 1
       or 0, s.b, -1 do
-    if self:word(i, "@correction") or self:marker_after_value(i) or self:motion_broken_off(i, s.b) then
+    if self:motion_taken_back(i, s.b) then
       for k = i + 1, s.e - 1 do
         if said(k, "@up") then return 1 end
         if said(k, "@down") then return -1 end
@@ -187,7 +195,7 @@ function m:opposite_motions(b, e)
     if q.kind ~= "alt" then signs[q.b - 1], signs[q.e] = true, true end
   end
   for i = b, e - 1 do
-    if self:word(i, "@correction") or self:marker_after_value(i) or self:motion_broken_off(i, b) then
+    if self:motion_taken_back(i, b) then
       up, down = nil, nil
     end
     local sign = signs[i] or self.triggers[i]

@@ -713,7 +713,9 @@ return {
       -- (a pseudo-pilot's readback: "descnding FL90", "decsending FL140")
       "descending", "climbing", "reducing", "increasing", "turning", "maintaining",
       -- (a condition's verb: "pasing 8000 reduce 210"; "swich on conflict detction")
-      "passing", "reaching", "leaving", "switch" },
+      "passing", "reaching", "leaving", "switch",
+      -- (an experimenter's state question typed fast: "what is tap33 doin")
+      "doing" },
   typo_place_nm = 250,
   -- units after a value that keep "FL 2 10" two values ("fl 2 10 knots"): a level's figures are never split before them
   -- words that, straight after a split typed level, take it back (grammar.lua's split level check: "FL 16 0 - sorry,
@@ -2820,6 +2822,10 @@ return {
   heard_as = {
     { heard = { "write", "rite", "wright" }, means = "right",
       before = { "heading", "hdg", "turn" }, after = { "turn" } },
+    -- ("delete de air france", "pausa de simulation": an Italian recogniser's "the" after a word squawk knows;
+    -- "ten time", "simulation speed two time": its "times" closing a multiple)
+    { heard = { "de" }, means = "the", after = { "#known" } },
+    { heard = { "time" }, means = "times", closed_after = { "#number" } },
     -- ("switch of lnav": a recogniser's "off" after "switch")
     { heard = { "of" }, means = "off", after = { "switch", "switched" } },
     -- ("descen fly leven one zero zero": a Thai or Vietnamese recogniser's flight level)

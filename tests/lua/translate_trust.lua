@@ -24399,3 +24399,19 @@ do
   local _, nex = navscene({ "CRE N9172K C172 33.7 -118.2 090 3000 100" }, "a navaid's name with a b")
   if nex then check_eq(nex("Cessna 72K, direct Seal Beach"), "ADDWPT N9172K SLI ; DIRECT N9172K SLI") end
 end
+
+-- Cycle 82 (R475, R477): an Italian recogniser's "de" for "the" after a word squawk knows ("delete de air france",
+-- "pausa de simulation"; "charles de gaulle" stays a name) and "time" for "times" closing a multiple ("speed up de
+-- simulation ten time"); "climb sorry descend four thousand" (a marker straight after the verb it takes back; "descend
+-- no climb" is still asked: a refusal or a correction); a state question typed fast ("doin")
+do
+  local _, ex = scene({ "CRE AFR1130 A320 41.8 12.2 090 6000 250", "CRE RYR7MF B738 40.9 14.3 090 5000 250",
+    "CRE TAP33 A320 55.20 12.80 330 FL200 270" })
+  check_eq(ex("delete de air france one one tree zero"), "DEL AFR1130")
+  check_eq(ex("pausa de simulation please"), "HOLD")
+  check_eq(ex("speed up de simulation ten time"), "DTMULT 10")
+  check_eq(ex("ryanair seven mike foxtrot climb sorry descend four tousand"), "ALT RYR7MF 4000")
+  asked(ex("ryanair seven mike foxtrot descend no climb eight thousand"), "no climb")
+  asked(ex("make a Loganair Saab 340 called LOG4 somewhere over Scotland please"), "somewhere")
+  check_eq(ex("ok what is tap33 doin"), "POS TAP33")
+end
