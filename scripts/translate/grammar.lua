@@ -12997,13 +12997,19 @@ function G:explained_spans(issued, kinds)
     end
   end
   -- "another departure out of Modlin: RYR2AB B738 at EPMO": a capitalised word elsewhere in the request that is
-  -- the navdata's own name of an airport issued by its code
-  local named = self.world.airports_named
+  -- the navdata's own name of an airport issued by its code, or its city's; so is a word in lower case that squawk
+  -- knows no other way ("destination rajiv gandhi airport hyderabad", "guangzhou baiyun", a recogniser's text)
+  local named, worded = self.world.airports_named, self.world.airports_with_words
   for k = 1, named and #self.t or 0 do
     local t = self.t[k]
-    if not inside[k] and t.kind == "word" and t.raw:match("^%u%l+$") and not MEANING[t.text] then
-      for _, code in ipairs(named(t.text)) do
-        if issued[code:lower()] then inside[k] = true end
+    local lower = t.raw:match("^%l") and t.alpha and #t.text >= 4 and not known_word(t.text)
+    if not inside[k] and t.kind == "word" and not MEANING[t.text] and (t.raw:match("^%u%l+$") or lower) then
+      local city = lexicon.city_airports[t.text]
+      for _, codes in ipairs({ named(t.text), lower and worded and worded(t.text) or {},
+          lower and city and named(city) or {} }) do
+        for _, code in ipairs(codes) do
+          if issued[code:lower()] then inside[k] = true end
+        end
       end
     end
   end

@@ -24415,3 +24415,14 @@ do
   asked(ex("make a Loganair Saab 340 called LOG4 somewhere over Scotland please"), "somewhere")
   check_eq(ex("ok what is tap33 doin"), "POS TAP33")
 end
+
+-- Cycle 82 (R481): an airport's navdata name said in lower case beside its city, as a recogniser writes it
+-- ("destination rajiv gandhi airport hyderabad"); a word naming no such airport is still asked
+do
+  local _, nex = navscene({ "CRE QTR4776 A359 18.0 78.0 090 FL200 280" }, "an airport's name in lower case")
+  if nex then
+    check_eq(nex("qatari four seven seven six destination rajiv gandhi airport hyderabad"), "DEST QTR4776 VOHS")
+    check_eq(nex("qatari four seven seven six destination hyderabad rajiv gandhi"), "DEST QTR4776 VOHS")
+    asked(nex("qatari four seven seven six destination foobar hyderabad"), "foobar")
+  end
+end
