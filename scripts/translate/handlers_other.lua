@@ -3295,6 +3295,17 @@ return function(H, f, compass)
       if before[1] and before[1].b == placed + 1 then lat, lon = position(before, placed + 1, self) end
     end
     local name_e = (next_to and at > s.trig) and at or s.e
+    -- ("add the Dublin VOR to Speedbird 93D's route and set Dublin airport as its destination": the place added is
+    -- said before "to" and the route it joins, never a place said after it; "add, to the route of JTA61, the fix
+    -- ALPHA" says it after)
+    local before_to = false
+    for k = s.trig + 1, name_e - 1 do
+      if before_to and self:word(k, "to into onto") and self:followed_by(k, 5, "@route_nouns") then
+        name_e = k
+        break
+      end
+      before_to = before_to or (self.t[k].kind ~= "punct" and not self.t[k].filler)
+    end
     local where, named
     if lat and lon then
       where = f.num(lat) .. " " .. f.num(lon)

@@ -1204,6 +1204,12 @@ return function(intent, rule, words)
   -- ("it's spawned in the wrong place": the noun, no verb of placing)
   rule { "place", false, prev = { 1, "wrong right" } }
   rule { "define make put draw", false, near = { 2, "box circle circular polygon poly line" } }  -- the shape's word starts it
+  -- ("create a wind at 53.5 north 6 west ...", "define a wind profile at ...": the wind's own word reads it)
+  rule { "create define make", false, when = function(g, i)
+    local k = g:skip_fillers(i + 1)
+    while g:word(k, "a an the new") do k = k + 1 end
+    return g:word(k, "wind winds")
+  end }
   rule { "define defwpt", "defwpt" }
   rule { "def", "defwpt", next = "@waypoint_nouns" }  -- "def wp XIT2 at 51.25N 004.10E" typed short
   -- "put a waypoint called TEST1 at 52.3 north 4.7 east", "waypoint TEST1 at 52.3N 4.7E": a new

@@ -24426,3 +24426,17 @@ do
     asked(nex("qatari four seven seven six destination foobar hyderabad"), "foobar")
   end
 end
+
+-- Cycle 82 (R482): the place added to a route is said before "to" and the route it joins ("add the Dublin VOR to
+-- Speedbird 93D's route and set Dublin airport as its destination" flew to the airport and dropped the VOR: now the
+-- VOR is asked, DAP or DUB); "create a wind at ..." (the wind's verb, no aircraft created)
+do
+  local _, ex = scene({ "CRE BAW93D A320 53.2 -5.5 090 FL200 280" })
+  check_eq(ex("Please create a wind at 53.5 north 6 west, from 220 degrees at 30 knots."), "WIND 53.5 -6 220 30")
+  local _, nex = navscene({ "CRE BAW93D A320 53.2 -5.5 090 FL200 280" }, "a place added before 'to' the route")
+  if nex then
+    asked(nex("Please add the Dublin VOR to Speedbird 93D's route and set Dublin airport as its destination."), "VOR")
+    check_eq(nex("Please add DUB to Speedbird 93D's route and set Dublin airport as its destination."),
+      "ADDWPT BAW93D DUB ; DEST BAW93D EIDW")
+  end
+end
