@@ -511,8 +511,8 @@ for _, w in ipairs(lexicon.self_correction.markers) do
 end
 -- A speaker whose language has no /p/ (Arabic) says it /b/, and a recogniser writes the b: a word of four letters or
 -- more that no list knows, opening with "b" or "sb", is the instruction's word with a "p" there (a rule's word or
--- one it looks for, a filler, a word of a condition, a letter of the phonetic alphabet: "blease", "broceed", "bassing", "sbeed", "bapa");
--- else nil ("beach" is no "peach", a name).
+-- one it looks for, a filler, a word of a condition, a letter of the phonetic alphabet: "blease", "broceed",
+-- "bassing", "sbeed", "bapa"); else nil ("beach" is no "peach", a name).
 G.p_words = set_of(lexicon.fillers)
 for _, list in ipairs({ lexicon.level_condition, lexicon.reached_place_words }) do
   for _, w in ipairs(list) do G.p_words[w] = true end
@@ -19547,9 +19547,11 @@ function G.route_points_said(text, u, world, toks)
     local lon = qs[k + 1]
     if q.kind == "lat" and lon and lon.kind == "lon" and q.value % 1 == 0 and lon.value % 1 == 0
         and (lon.b == q.e or (lon.b == q.e + 1 and toks[q.e].text == ",")) then
-      local found = {}
+      -- (a name the navdata and a DEFWPT both give the point counts once)
+      local found, seen = {}, {}
       for _, id in ipairs(world.waypoints_at(q.value, lon.value)) do
-        if held[id:upper()] then found[#found + 1] = held[id:upper()] end
+        local name = held[id:upper()]
+        if name and not seen[name] then found[#found + 1], seen[name] = name, true end
       end
       if #found == 1 then spans[#spans + 1] = { b = q.b, e = lon.e, name = found[1] } end
     end

@@ -280,6 +280,8 @@ local names = {
     { "airbaltic", "BTI" },
     { "iceair", "ICE" },
     { "icelandair", "ICE" },
+    -- (Air Iceland Connect, now Icelandair's domestic flights: ICAO telephony FAXI)
+    { "faxi", "FXI" },
     -- airlines of Scandinavia: ICAO telephony, and the airline's own name where controllers there say it
     -- ("Viking 472": Sunclass Airlines; "Braathens 2KM": Braathens Regional)
     { "viking", "VKG" },

@@ -24440,3 +24440,20 @@ do
       "ADDWPT BAW93D DUB ; DEST BAW93D EIDW")
   end
 end
+
+-- Cycle 82 (R483): "Faxi" (Air Iceland Connect's ICAO telephony) after a verb ("remove Faxi two two")
+do
+  local _, ex = scene({ "CRE FXI22 DH8D 64.1 -21.9 090 5000 200" })
+  check_eq(ex("remove Faxi two two"), "DEL FXI22")
+end
+
+-- Cycle 82 (R483): a position said in whole degrees that is a point of the aircraft's route, where a DEFWPT and the
+-- navdata both name the point ("at six three north three zero west climb FL370" with 6330N defined again)
+do
+  local _, nex = navscene({ "DEFWPT 6330N 63.0 -30.0", "CRE KLM605 B772 63.00 -27.00 270 FL350 280",
+    "ADDWPT KLM605 6330N" }, "a route point named twice")
+  if nex then
+    check_eq(nex("KLM six zero five, at six three north three zero west climb flight level three seven zero"),
+      "AT KLM605 6330N DO ALT KLM605 FL370")
+  end
+end
