@@ -19556,8 +19556,13 @@ function G.route_points_said(text, u, world, toks)
       if #found == 1 then spans[#spans + 1] = { b = q.b, e = lon.e, name = found[1] } end
     end
   end
+  return G.spans_named(text, toks, spans)
+end
+
+-- `text` with each span {b, e, name} of its tokens `toks` (in order, none overlapping) replaced by its name; nil
+-- when there is none, or a token's bytes are not found in order in the text (case aside).
+function G.spans_named(text, toks, spans)
   if #spans == 0 then return nil end
-  -- (each token's bytes, found in order in the text, case aside; a token not found leaves the text as it is)
   local lower, at, starts, ends = text:lower(), 1, {}, {}
   for k = 1, spans[#spans].e - 1 do
     local b, e = lower:find(toks[k].raw:lower(), at, true)
@@ -19567,6 +19572,41 @@ function G.route_points_said(text, u, world, toks)
   local put, done = tokens.splicer(text)
   for _, sp in ipairs(spans) do put(starts[sp.b], sp.name, ends[sp.e - 1] + 1) end
   return done()
+end
+
+-- "iranair 712 proceed direct pim ten", "add waypoint pim one three", "at pim sixty six descend": a fix whose name is
+-- letters and a number (PIM10, PIM13), said as a word squawk knows no other way and the number after it (in
+-- figures or words), is that fix when the route of an aircraft named in the request holds it, or the navdata has it
+-- within lexicon.navaid_range_nm of that aircraft: the text is returned with the words replaced by its name; nil
+-- when nothing was replaced. `u` is the utterance of `text`, `toks` its u:tokens().
+function G.numbered_fixes_said(text, u, world, toks)
+  if not world.place_known then return nil end
+  local named = {}
+  for _, r in ipairs(u:refs()) do
+    for _, a in ipairs(r.kind == "aircraft" and r.exists and world.aircraft or {}) do
+      if (a.id or ""):upper() == r.name:upper() then named[#named + 1] = a end
+    end
+  end
+  if #named == 0 then return nil end
+  local spans = {}
+  for _, q in ipairs(u:quantities(1, #toks + 1)) do
+    local t = toks[q.b - 1]
+    if q.kind == "plain" and q.value % 1 == 0 and q.value >= 0 and q.value < 100 and t and t.kind == "word"
+        and t.alpha and #t.text >= 2 and #t.text <= 4 and not known_word(t.text) then
+      local name = string.format("%s%02d", t.text:upper(), q.value)
+      local fits = false
+      for _, a in ipairs(named) do
+        for _, w in ipairs(a.route or {}) do fits = fits or w:upper() == name end
+        local lat, lon = world.place_known(name)
+        if lat and a.lat then
+          local dlat, dlon = lat - a.lat, (lon - a.lon) * math.cos(math.rad(lat))
+          fits = fits or 60 * math.sqrt(dlat * dlat + dlon * dlon) <= lexicon.navaid_range_nm
+        end
+      end
+      if fits then spans[#spans + 1] = { b = q.b - 1, e = q.e, name = name } end
+    end
+  end
+  return G.spans_named(text, toks, spans)
 end
 
 -- A number said in words joined by hyphens ("four-fifty-one", "three-oh-five", "thirty-three-oh-two",
@@ -20100,11 +20140,13 @@ function M.translate(text, world)
   text, apart = set_apart(types.join(text, TYPES.phrases))
   local u = squawk.translate.utterance(text, world, NAMES)
   local toks = u:tokens()
-  local points = G.route_points_said(text, u, world, toks)
-  if points then
-    text = points
-    u = squawk.translate.utterance(text, world, NAMES)
-    toks = u:tokens()
+  for _, said in ipairs({ G.route_points_said, G.numbered_fixes_said }) do
+    local points = said(text, u, world, toks)
+    if points then
+      text = points
+      u = squawk.translate.utterance(text, world, NAMES)
+      toks = u:tokens()
+    end
   end
   local g = setmetatable({ u = u, t = toks, words = word_texts(toks), refs = u:refs(), world = world,
     fleet = world.aircraft, out = {}, qcache = {}, taken = {}, noted = {}, cut_back = {}, triggers = {}, apart = apart,

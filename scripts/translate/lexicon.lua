@@ -2818,7 +2818,9 @@ return {
     descen = "descend", lef = "left", righ = "right", direc = "direct", wha = "what", fas = "fast", fo = "four",
     leven = "level",
     -- (Arabic: "disend"; a /p/ said /b/, "blease", "broceed", is grammar.lua's G.p_said_b)
-    disend = "descend" },
+    disend = "descend",
+    -- (Turkish and Persian: a /v/ said /w/, "flight lewel")
+    lewel = "level" },
   heard_as = {
     { heard = { "write", "rite", "wright" }, means = "right",
       before = { "heading", "hdg", "turn" }, after = { "turn" } },

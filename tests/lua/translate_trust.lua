@@ -24457,3 +24457,15 @@ do
       "AT KLM605 6330N DO ALT KLM605 FL370")
   end
 end
+
+-- Cycle 82 (R484): a Turkish or Persian recogniser's "flight lewel"; a fix named by letters and a number said as a
+-- word and the number ("proceed direct pim ten", "add waypoint pim one three", "at pim sixty six descend"), when the
+-- route holds it or the navdata has it near the aircraft; a word and number naming no fix stay as said
+do
+  local _, ex = scene({ "DEFWPT PIM10 35.5 51.5", "DEFWPT PIM66 35.6 51.4", "CRE IRA712 A306 35.4 51.6 090 FL150 250",
+    "ADDWPT IRA712 PIM10", "ADDWPT IRA712 PIM66", "CRE THY2047 A321 41.0 28.8 090 FL150 250" })
+  check_eq(ex("iranair seven one two proceed direct pim ten"), "DIRECT IRA712 PIM10")
+  check_eq(ex("iranair seven one two at pim sixty six descend eleven thousand"), "AT IRA712 PIM66 DO ALT IRA712 11000")
+  asked(ex("iranair seven one two proceed direct pim twelve"), "no PIM12")
+  check_eq(ex("turkish two zero four seven descend flight lewel nine zero"), "ALT THY2047 FL90")
+end
