@@ -2820,7 +2820,13 @@ return {
     -- (Arabic: "disend"; a /p/ said /b/, "blease", "broceed", is grammar.lua's G.p_said_b)
     disend = "descend",
     -- (Turkish and Persian: a /v/ said /w/, "flight lewel")
-    lewel = "level" },
+    lewel = "level",
+    -- (Brazilian Portuguese: a final t said "chi", a t before e said "ch", a vowel after a closing consonant:
+    -- "turn lefchi", "righchi", "direchi", "flighchi level", "the rouchi", "altichude", "simulachion", "chen minutes",
+    -- "descendee", "two hundredy"; "ligue" and "desligue", the verbs of switching on and off)
+    lefchi = "left", righchi = "right", direchi = "direct", flighchi = "flight", fliche = "flight", rouchi = "route",
+    altichude = "altitude", simulachion = "simulation", chen = "ten", descendee = "descend", hundredy = "hundred",
+    ligue = "switch on", desligue = "switch off" },
   heard_as = {
     { heard = { "write", "rite", "wright" }, means = "right",
       before = { "heading", "hdg", "turn" }, after = { "turn" } },
@@ -2828,6 +2834,9 @@ return {
     -- "ten time", "simulation speed two time": its "times" closing a multiple)
     { heard = { "de" }, means = "the", after = { "#known" } },
     { heard = { "time" }, means = "times", closed_after = { "#number" } },
+    -- ("turn lefchi hiding zero six zero", "say hiding": a Brazilian recogniser's "heading")
+    { heard = { "hiding" }, means = "heading", before = { "#number" },
+      after = { "left", "right", "present", "your", "say", "fly", "the", "his", "its" } },
     -- ("switch of lnav": a recogniser's "off" after "switch")
     { heard = { "of" }, means = "off", after = { "switch", "switched" } },
     -- ("descen fly leven one zero zero": a Thai or Vietnamese recogniser's flight level)
