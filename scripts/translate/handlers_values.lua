@@ -816,12 +816,7 @@ return function(H, f, wrap, compass)
             target_ft, alt = alt_to, f.alt(alt_to, false)
           end
         end
-        -- (a climb or descent, its verb the instruction's, to the level the aircraft holds level, "climb 7000" at 7000
-        -- ft, moves it nowhere: asked too)
-        local held = not relative and math.abs(target_ft - cur) <= 50 and math.abs(cur - (a.alt_ft or cur)) <= 50
-          and (a.sel_alt_ft == nil or math.abs(a.sel_alt_ft - cur) <= 50) and self:word(s.trig, "climb descend")
-          and q.b > s.trig and not self:word_in(s.b, s.e, "@keep_verbs")
-        if (dir > 0 and target_ft < cur - 50) or (dir < 0 and target_ft > cur + 50) or held then
+        if (dir > 0 and target_ft < cur - 50) or (dir < 0 and target_ft > cur + 50) then
           return self:need(string.format("%s is at %s ft: %s to %s? Please confirm the altitude.", id, f.int(cur),
             verb, alt))
         end

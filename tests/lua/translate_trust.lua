@@ -13866,7 +13866,7 @@ do
   asked(ex("KLM12 descend to FL150. AEA21 is too close."), "an aircraft in the remark")
   asked(ex("KLM12 descend to FL150, sorry I said it by mistake."), "the speaker's own saying judged")
   check_eq(ex("KLM12 descend to FL150. Sorry, FL160."), "ALT KLM12 FL160")
-  check_eq(ex("KLM12 descend to FL130, sorry I meant AEA21."), "ALT AEA21 FL130")
+  check_eq(ex("KLM12 descend to FL150, sorry I meant AEA21."), "ALT AEA21 FL150")
   check_eq(ex("KLM12 climb to FL300, if the weather allows."), "ALT KLM12 FL300")
   check_eq(ex("ok so this is the second trial, can KLM12 climb to FL300"), "ALT KLM12 FL300")
   check_eq(ex("Could KLM12 climb to FL300? Real time is too slow for my participants."), "ALT KLM12 FL300")
@@ -24472,7 +24472,7 @@ end
 
 -- Cycle 82 (R486): a Brazilian recogniser's closing t said "chi" and heading heard "hiding" ("turn lefchi hiding zero
 -- six zero", "the rouchi", "flighchi level", "descendee", "ligue the conflict detection"); "maintain present hiding" read
--- the present altitude; a climb to the level the aircraft holds ("climb seven thousand" at 7000 ft) is asked
+-- the present altitude
 do
   local _, ex = scene({ "CRE TAP1234 A320 38.7 -9.1 090 FL100 250", "CRE AEA1143 B738 40.9 -9.0 20 7000 220",
     "CRE EZY7PN A320 38.5 -9.0 010 FL200 250", "DEFWPT RELVA 38.9 -8.9", "ADDWPT TAP1234 RELVA" })
@@ -24481,6 +24481,4 @@ do
   check_eq(ex("air portugal one two tree four descendee flighchi level eight zero"), "ALT TAP1234 FL80")
   check_eq(ex("ligue the conflict detection"), "ASAS ON")
   check_eq(ex("easy seven papa november maintain present hiding"), "HDG EZY7PN 10")
-  asked(ex("europa one one four three climb seven tousand feet"), "at 7000 ft already")
-  check_eq(ex("europa one one four three maintain seven thousand feet"), "ALT AEA1143 7000")
 end
