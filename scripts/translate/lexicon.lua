@@ -3333,11 +3333,22 @@ return {
       -- level passed, said after it)
       dann = "then", danach = "then", ["und dann"] = "then", ["und danach"] = "then", bei = "at", wenn = "when",
       sobald = "once", bis = "until", durch = "passed", erreicht = "reached", meilen = "miles",
+      -- (a controller's and an operator's imperatives and nouns: "dreh rechts um 40 Grad", "Simulation zehn Minuten
+      -- vorspulen", "Route anzeigen", "lösche die Hansaline", "verschiebe X nach MANAL", "doppelte Geschwindigkeit",
+      -- "auf normale Geschwindigkeit", "Faktor 5", "1000 Fuss pro Minute", "Rate 1000 oder mehr", "bei Erreichen",
+      -- "wenn Sie FL250 erreichen", "Mach null komma acht zwo")
+      dreh = "turn", drehe = "turn", vorspulen = "fast forward", anzeigen = "show", zeige = "show",
+      losche = "delete", loesche = "delete", verschiebe = "move", verschieben = "move", doppelte = "double",
+      normale = "normal", faktor = "factor", mehr = "more", erreichen = "reaching", ["bei erreichen"] = "on reaching",
+      komma = "point", sekunden = "seconds", zehn = "ten", zwolf = "twelve", zwoelf = "twelve", zwanzig = "twenty",
+      dreissig = "thirty", vierzig = "forty", funfzig = "fifty", fuenfzig = "fifty",
     },
     -- words of `words` said the same in Dutch or English: no sign of German alone
     shared = { vier = true, acht = true, wo = true, rot = true, ja = true },
     -- words also English or another language's, read only in a German sentence ("auf", "null" for zero)
     joining = { null = "zero", direkt = "direct", der = "the", die = "the", das = "the",
+      -- ("dreh rechts um 40 Grad", "1000 Fuss pro Minute", "Rate 1000 oder mehr", "wenn Sie FL250 erreichen")
+      um = "by", pro = "per", oder = "or", sie = "you", minuten = "minutes",
       -- ("ab FL100 dann spd 250": from that level on, the level passed)
       ab = "passing" },
   },
@@ -3374,11 +3385,16 @@ return {
       nul = "zero", twee = "two", drie = "three", vier = "four", vijf = "five", zes = "six", zeven = "seven",
       acht = "eight", negen = "nine", tien = "ten", twaalf = "twelve", twintig = "twenty", dertig = "thirty",
       veertig = "forty", vijftig = "fifty", honderd = "hundred", duizend = "thousand",
+      -- (more imperatives and nouns: "vlieg koers 130", "klim naar FL280", "route tonen", "hoogte?", "verder",
+      -- "5 minuten vooruit", "drie keer zo snel", "waar is die")
+      vlieg = "fly", klim = "climb", tonen = "show", toon = "show", hoogte = "altitude", verder = "continue",
+      vooruit = "forward", sneller = "faster", ["waar is"] = "where is", waar = "where",
     },
     -- (and "nee" alone, a habit in English, is no sign that the sentence is Dutch)
     shared = { ja = true, vier = true, acht = true, nee = true },
     -- small words also English or another language's, read only in a Dutch sentence ("pauze even": for a moment)
     joining = { de = "the", het = "the", en = "and", op = "to", van = "of", met = "with", even = "for a moment",
+      zo = "as", snel = "fast",
       links = "left", rechts = "right" },
   },
   -- Brazilian Portuguese words in a controller's or student's English ("Gol 1442 turn right proa 300", "descend

@@ -18,7 +18,9 @@
 --                  translate by itself (a question or an error) is
 --                  translated again as "CALLSIGN line" }. reply = {
 --         text = the input, kind = "english" | "trafscript",
---         commands = { "HDG KL204 180", ... }   the TrafScript that ran
+--         commands = { "HDG KL204 180", ... }   the TrafScript that ran, in
+--                   order; an FF with an end before another clock command
+--                   ("FF 120 ; HOLD") runs to its end before that command
 --         results = { {cmd =, ok =, message =}, ... }  one per command run;
 --                   the first failure stops the rest
 --         ask = question (the translator needs more; the next command()
@@ -75,6 +77,8 @@ M.kMaxDialogues = 64  -- client dialogues kept (command() opts.client)
 M.kReminders = { 120, 60 }  -- [s] tLOS at which a standing conflict is announced again (descending)
 M.kMaxFfCpu = 0.5     -- [s] processor time one call spends on an FF with an end;
                       -- the rest of a long FF runs on the following ticks (HOLD stops it)
+M.kMaxFfCpuBefore = 5.0  -- [s] the same for an FF said before another clock command
+                         -- ("FF 120 ; HOLD"), which runs only once the FF has ended
 
 local function pair_key(a, b)
   if a > b then a, b = b, a end
@@ -244,12 +248,12 @@ end
 -- At most kMaxFfCpu of processor time per call: a longer FF stays in
 -- fast-time and goes on at the next call (the session's tick), so one
 -- "FF 1e9" cannot hold the simulation's thread for days.
-function Session:finish_fast_forward(events, resume)
+function Session:finish_fast_forward(events, resume, cpu_s)
   local state, ff_end = self.sim:run_state()
   if state ~= "ff" or not ff_end then return nil end
   self.ff_resume = resume or self.ff_resume or "op"
   local t0 = self.sim:time()
-  self:advance(math.max(0, ff_end - t0), events, os.clock() + M.kMaxFfCpu)
+  self:advance(math.max(0, ff_end - t0), events, os.clock() + (cpu_s or M.kMaxFfCpu))
   if ff_end - self.sim:time() >= 0.5 * self.sim:dt() then
     return string.format("fast-forwarding: t = %.1f s -> %.1f s of %.1f s (goes on while the session runs; HOLD stops it)",
       t0, self.sim:time(), ff_end)
@@ -317,13 +321,21 @@ function Session:run_commands(cmds, reply)
   local touched = {}
   local state_before = self.sim:run_state()
   local clock_changed = false
-  for _, c in ipairs(cmds) do
+  for i, c in ipairs(cmds) do
     local ok, msg = self.sim:exec(c)
     reply.results[#reply.results + 1] = { cmd = c, ok = ok, message = msg or "" }
     if not ok then break end
     clock_changed = clock_changed or clock_command(c)
     for _, w in ipairs(words_upper(c)) do
       if self.sim:get(w) then touched[w] = true end
+    end
+    -- ("FF 120 ; HOLD", fast-forward two minutes, then hold: a fast-forward with an end said before another clock
+    -- command runs to its end first, as said; the clock command would end it at once)
+    local later = false
+    for k = i + 1, #cmds do later = later or clock_command(cmds[k]) end
+    local state, ff_end = self.sim:run_state()
+    if later and state == "ff" and ff_end then
+      self:finish_fast_forward(reply.events, state_before == "op" and "op" or "hold", M.kMaxFfCpuBefore)
     end
   end
   -- Commands due now (IC, a scenario's first lines) run before anything is shown.

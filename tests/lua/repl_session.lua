@@ -238,3 +238,16 @@ do
   check(find(text, "> FF 120"), text)
   check(find(text, "fast-forwarded 120 s"), text)
 end
+
+-- "fast forward 2 minutes then pause" (FF 120 ; HOLD): the fast-forward runs to its end before the HOLD said after
+-- it, from a stopped clock or a running one; the HOLD alone would have ended it at once, the clock never moved.
+for _, start in ipairs({ "!HOLD", "!OP" }) do
+  local s = session.new({ mode = "offline" })
+  s:command("!CRE KLM12 B738 52 4 090 FL200 250")
+  s:command(start)
+  local t0 = s:state().simt
+  local r = s:command("fast forward 2 minutes then pause")
+  check_eq(table.concat(r.commands, " ; "), "FF 120 ; HOLD")
+  check_eq(s:state().simt - t0, 120)
+  check_eq(s:state().clock.state, "hold")
+end

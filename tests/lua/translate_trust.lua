@@ -11087,7 +11087,7 @@ do
   check_eq(ex("ja klm seven seven descend flight level one two zero"), "ALT KLM77 FL120")
   check_eq(ex("maak een nieuw vliegtuig aan klm one two three a three twenty at 52.0 4.0 heading 090 fl100 250 knots"),
     "CRE KLM123 A320 52 4 90 FL100 250")
-  check_eq(ex("trails aan graag snel"), "ASK I have TRAIL ON. What does 'snel' mean?")
+  check_eq(ex("trails aan graag eventjes"), "ASK I have TRAIL ON. What does 'eventjes' mean?")
   asked(ex("zet een waypoint"), "'een' as an article elsewhere is asked")
   -- (German stays German: "vier" and "acht" are said the same in both)
   check_eq(ex("klm seven seven sinken flight level acht null bitte"), "ALT KLM77 FL80")
@@ -24481,4 +24481,20 @@ do
   check_eq(ex("air portugal one two tree four descendee flighchi level eight zero"), "ALT TAP1234 FL80")
   check_eq(ex("ligue the conflict detection"), "ASAS ON")
   check_eq(ex("easy seven papa november maintain present hiding"), "HDG EZY7PN 10")
+end
+
+-- Cycle 82 (R488): a German or Dutch controller's words in English ("dreh rechts um 40 Grad", "Simulation zehn Minuten
+-- vorspulen", "Route anzeigen", "lösche die Hansaline", "doppelte Geschwindigkeit"; "vlieg koers 130, klim naar
+-- vliegniveau honderd", "route tonen", "simulatie drie keer zo snel")
+do
+  local _, ex = scene({ "CRE CLH7GN CRJ9 48.3 11.7 080 FL200 280", "CRE TRA5DK B738 52.3 4.8 090 FL080 250",
+    "CRE KLM1234 B738 52.4 4.6 090 FL150 280" })
+  check_eq(ex("Hansaline sieben golf november, dreh rechts um 40 Grad"), "HDG CLH7GN 120 RIGHT")
+  check_eq(ex("Simulation zehn Minuten vorspulen"), "FF 600")
+  check_eq(ex("lösche die Hansaline"), "DEL CLH7GN")
+  check_eq(ex("doppelte Geschwindigkeit"), "DTMULT 2")
+  check_eq(ex("Transavia five delta kilo, vlieg koers 130, klim naar vliegniveau honderd"),
+    "HDG TRA5DK 130 ; ALT TRA5DK FL100")
+  check_eq(ex("KLM1234 route tonen"), "LISTRTE KLM1234")
+  check_eq(ex("simulatie drie keer zo snel"), "DTMULT 3")
 end
