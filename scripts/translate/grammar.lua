@@ -517,21 +517,31 @@ G.p_words = set_of(lexicon.fillers)
 for _, list in ipairs({ lexicon.level_condition, lexicon.reached_place_words }) do
   for _, w in ipairs(list) do G.p_words[w] = true end
 end
+function G.instruction_word(w)
+  return (RULES_BY_WORD[w] or CONDITION_SETS[w] or lexicon.phonetic[w] or G.p_words[w]) ~= nil
+end
 function G.p_said_b(w)
   if #w < 4 or KNOWN[w] then return nil end
   local p = w:match("^b%l+$") and "p" .. w:sub(2) or w:match("^sb%l+$") and "sp" .. w:sub(3)
-  if not p then return nil end
-  return (RULES_BY_WORD[p] or CONDITION_SETS[p] or lexicon.phonetic[p] or G.p_words[p]) and p or nil
+  return p and G.instruction_word(p) and p or nil
 end
--- lexicon.accented's words, and a /p/ said /b/ (G.p_said_b), read as the English words they are (a word in capitals
+-- A speaker of a language whose syllables end in a vowel (Japanese) says one after a closing consonant, and a
+-- recogniser writes it: a word of six letters or more that no list knows, ending in "o" or "u" after a consonant, is
+-- the rule's word without it ("descendo", "speedo", "directo"); else nil ("Willo" is a fix, no "will").
+function G.vowel_after(w)
+  if #w < 6 or KNOWN[w] or not w:match("[^aeiou][ou]$") then return nil end
+  local stem = w:sub(1, -2)
+  return RULES_BY_WORD[stem] and stem or nil
+end
+-- lexicon.accented's words, a /p/ said /b/ (G.p_said_b) and a vowel after a word (G.vowel_after), read as the English words they are (a word in capitals
 -- stays as typed).
 function G.accented(text)
   local toks, bare = plain_words(text)
   local any = any_of(bare, lexicon.accented)
-  for k = 1, #bare do any = any or G.p_said_b(bare[k]) ~= nil end
+  for k = 1, #bare do any = any or (G.p_said_b(bare[k]) or G.vowel_after(bare[k])) ~= nil end
   if not any then return text end
   return tokens.rewrite(text, toks, function(i)
-    local en = lexicon.accented[bare[i]] or G.p_said_b(bare[i])
+    local en = lexicon.accented[bare[i]] or G.p_said_b(bare[i]) or G.vowel_after(bare[i])
     if not en or toks[i]:match("^%u%u") then return nil end
     return en .. (toks[i]:match("%p+$") or ""), i + 1
   end)
@@ -6625,6 +6635,11 @@ function G:speed_at_level(k, q)
     hdg = hdg or intent == "hdg"
     x = x - 1
   end
+  -- (a speed said with its unit and no verb: "descend FL150 then 250kt at FL150"; a wind's is its own, "wind 270
+  -- at 50 knots at FL300")
+  local wind = false
+  for y = 1, #self.t do wind = wind or self:intent_at(y) == "wind" end
+  for _, p in ipairs(wind and {} or self:quantities(x + 1, k)) do spd = spd or p.kind == "speed" or p.kind == "mach" end
   -- (a heading the same: "descend 6000, then heading 250 at 8000", when a clause before cleared a level, so that
   -- the level after "at" is none to fly)
   local cleared = false
@@ -12998,7 +13013,7 @@ function G:explained_spans(issued, kinds)
   end
   -- "another departure out of Modlin: RYR2AB B738 at EPMO": a capitalised word elsewhere in the request that is
   -- the navdata's own name of an airport issued by its code, or its city's; so is a word in lower case that squawk
-  -- knows no other way ("destination rajiv gandhi airport hyderabad", "guangzhou baiyun", a recogniser's text)
+  -- knows no other way ("destination rajiv gandhi airport hyderabad", a recogniser's text)
   local named, worded = self.world.airports_named, self.world.airports_with_words
   for k = 1, named and #self.t or 0 do
     local t = self.t[k]

@@ -319,7 +319,10 @@ return {
         -- are lexicon.discourse_words' sorry, a correction's mark as English "sorry" is
         "mersi", "mamnoon", "mamnun", "motashakkeram", "lotfan", "krub", "khrub", "khop", "permisi", "tolong",
         "scusi", "scusa", "scusate", "disculpe", "disculpa", "perdone", "perdona", "desculpa", "desculpe", "licenca",
-        "schon", "schoen", "przepraszam" },
+        "schon", "schoen", "przepraszam",
+        -- (Malaysian and Singaporean typed thanks, "tq", "tqvm"; Indonesian "pak", sir, and "selamat siang", good
+        -- afternoon, with "pagi", "sore" and "malam" its morning, late afternoon and evening)
+        "tq", "tqvm", "pak", "bu", "selamat", "siang", "pagi", "sore", "malam" },
     -- phrases of courtesy that hold a word which means something elsewhere ("when", "if"):
     -- explained whole
     courtesy_phrases = { "pull up", "when you get a chance", "when you can", "when you're ready", "when ready",
@@ -637,8 +640,9 @@ return {
     -- HDG, VS); `report`, `noun`, `area` and `put_off`, words no command reads, beside a direct-to's place and any
     -- other command too (G:unaccounted, G.bare_beside_place)
     -- words that a speaker who mixes L and R, or a recogniser hearing one, writes for a turn's side, straight after
-    -- "turn" or before "turn", "heading" or "hdg" ("turn light heading 060", "lift turn"): asked, never dropped
-    -- and never guessed a side ("turn lift", a recogniser's "left" after "turn", is heard_as's)
+    -- "turn" or before "turn", "heading" or "hdg" ("lite turn", "lift turn"): asked, never dropped and never guessed a
+    -- side ("turn lift", a recogniser's "left" after "turn", and "turn light", a Japanese or Korean speaker's
+    -- "right", are heard_as's)
     side_unsure = { "light", "lift", "lied", "lite" },
     bare_asked = {
       place = { "cross", "crossing", "proceed", "join", "joining", "rejoin", "rejoining", "intercept", "intercepting",
@@ -2821,6 +2825,10 @@ return {
     disend = "descend",
     -- (Turkish and Persian: a /v/ said /w/, "flight lewel")
     lewel = "level",
+    -- (Japanese: l for r, "crimb", "loute", "untir", "contror", "rateral", "leady"; a vowel after a closing consonant,
+    -- "thousando", "hundredo", and after an instruction's word, grammar.lua's G.vowel_after: "descendo", "speedo")
+    crimb = "climb", loute = "route", untir = "until", contror = "control", rateral = "lateral", leady = "ready",
+    thousando = "thousand", hundredo = "hundred",
     -- (Brazilian Portuguese: a final t said "chi", a t before e said "ch", a vowel after a closing consonant:
     -- "turn lefchi", "righchi", "direchi", "flighchi level", "the rouchi", "altichude", "simulachion", "chen minutes",
     -- "descendee", "two hundredy"; "ligue" and "desligue", the verbs of switching on and off)
@@ -2849,11 +2857,13 @@ return {
     { heard = { "lift", "loft", "laughed" }, means = "left", after = { "turn" } },
     { heard = { "the send", "this end", "the scent", "decent", "dissent", "diss end" }, means = "descend",
       before = { "#number", "flight", "level", "altitude", "to", "fly", "and" } },
-    -- (a Japanese or Korean accent: "turn ride" ("turn light" is side_unsure's, asked); "plight level", "flight
-    -- rebel", "flight label"; "crime and maintained"; "maintenance flight level"; "descend pour thousand"; "one two sick one")
-    { heard = { "ride" }, means = "right", after = { "turn" } },
-    { heard = { "plight" }, means = "flight", before = { "level", "rebel", "label", "revel" } },
-    { heard = { "rebel", "label", "revel" }, means = "level", after = { "flight", "plight" } },
+    -- (a Japanese or Korean accent: "turn ride", "turn light" (four writers of five); "plight level", "fright revel",
+    -- "flight rebel", "flight label"; "crime and maintained"; "maintenance flight level"; "descend pour thousand";
+    -- "one two sick one"; "set rook ahead time")
+    { heard = { "ride", "light" }, means = "right", after = { "turn" } },
+    { heard = { "plight", "fright" }, means = "flight", before = { "level", "rebel", "label", "revel" } },
+    { heard = { "rebel", "label", "revel" }, means = "level", after = { "flight", "plight", "fright" } },
+    { heard = { "rook" }, means = "look", before = { "ahead" } },
     { heard = { "crime" }, means = "climb", before = { "#number", "and", "flight", "plight", "to", "level" } },
     -- (an Arabic accent: "qatari eight alpha bravo claim flight level two three zero")
     { heard = { "claim" }, means = "climb", before = { "#number", "flight", "level", "to", "and" } },

@@ -22373,9 +22373,10 @@ end
 -- Cycle 72 (lead): "turn light heading 060", the side as a speaker who mixes L and R (or a recogniser hearing one)
 -- writes it, was read as the word "light" of a light aircraft and the side dropped; a word of
 -- lexicon.accounted.side_unsure beside a turn's words is asked, never a side guessed; elsewhere it stays English
+-- ("turn light" is lexicon.heard_as's "turn right", the side a Japanese or Korean speaker says)
 do
   local _, ex = scene({ "CRE KLM12 B738 52 4 90 FL200 250" })
-  asked(ex("klm12 turn light heading 060"), "'light' where the turn's side is said")
+  check_eq(ex("klm12 turn light heading 060"), "HDG KLM12 60 RIGHT")
   asked(ex("KLM12 light turn heading 060"), "'light' before the turn")
   asked(ex("KLM12 lift turn heading 060"), "'lift' before the turn")
   check_eq(ex("KLM12 turn write heading 060"), "HDG KLM12 60 RIGHT")
@@ -24026,7 +24027,7 @@ do
   local _, ex = scene({ "CRE KAL1261 B738 37.5 126.8 090 FL140 280", "CRE JAL6 B788 35.5 139.8 090 FL150 280" })
   check_eq(ex("japan air six turn reft heading two seven zero"), "HDG JAL6 270 LEFT")
   check_eq(ex("japan air six turn ride heading one eight zero"), "HDG JAL6 180 RIGHT")
-  asked(ex("japan air six turn light heading one eight zero"), "'light' stays side_unsure's")
+  check_eq(ex("japan air six turn light heading one eight zero"), "HDG JAL6 180 RIGHT")
   check_eq(ex("korean air one two sick one climb plight rebel one six zero"), "ALT KAL1261 FL160")
   check_eq(ex("japan air six crime and maintained flight label one six zero"), "ALT JAL6 FL160")
   check_eq(ex("japan air six diss end and maintenance flight level one one zero"), "ALT JAL6 FL110")
@@ -24497,4 +24498,20 @@ do
     "HDG TRA5DK 130 ; ALT TRA5DK FL100")
   check_eq(ex("KLM1234 route tonen"), "LISTRTE KLM1234")
   check_eq(ex("simulatie drie keer zo snel"), "DTMULT 3")
+end
+
+-- Cycle 82 (R490, R492): a Japanese recogniser's l for r and its vowel after a closing consonant ("crimb and maintain
+-- fright revel two four zero", "turn light heading zero nine zero": right, as four writers of five; "descendo",
+-- "speedo", "the loute", "untir", "set rook ahead time"); Malaysian "tq" and Indonesian "pak", "selamat siang"
+do
+  local _, ex = scene({ "CRE ANA241 B788 35.5 139.8 090 FL200 280", "CRE SKY713 B738 35.6 139.9 090 FL150 250",
+    "DEFWPT DREAM 35.4 140.0", "ADDWPT SKY713 DREAM", "CRE GIA412 B738 -6.1 106.6 090 FL200 280" })
+  check_eq(ex("all nippon two four one crimb and maintain fright revel two four zero"), "ALT ANA241 FL240")
+  check_eq(ex("all nippon two four one turn light heading zero nine zero"), "HDG ANA241 90 RIGHT")
+  check_eq(ex("all nippon two four one descendo fright revel one two zero speedo two five zero"),
+    "ALT ANA241 FL120 ; SPD ANA241 250")
+  check_eq(ex("skymark seven one three remove dream from the loute"), "DELWPT SKY713 DREAM")
+  check_eq(ex("set rook ahead time five minute"), "DTLOOK 300")
+  check_eq(ex("Indonesia 412 selamat siang, descend to flight level one two zero, tq pak"), "ALT GIA412 FL120")
+  asked(ex("all nippon two four one lite turn heading zero nine zero"), "a side unsure")
 end
