@@ -7828,10 +7828,11 @@ function G:segments(b, e)
           dist_between = dist_between or (r ~= nil and self:skip_fillers(r.e) == tr.pos
             and (self:word(r.b - 1, "after passing over leaving reaching") or self:passes_said(r.b - 1)
               or (self:word(r.b - 1, "pass") and self:word(r.b - 2, "after when once"))))
-          -- ("reduce 230, when level reduce 210": the level reached, "when/once (it's) level", likewise)
+          -- ("reduce 230, when level reduce 210": the level reached, "when/once (it's) level" or "once you're there",
+          -- likewise)
           local lv = tr.pos - 1
           while lv > between[1].e and self.t[lv].kind == "punct" do lv = lv - 1 end
-          local wh = self:word(lv, "level") and self:reached_opening(lv)
+          local wh = self:word(lv, "level there") and self:reached_opening(lv)
           dist_between = dist_between or (wh and wh >= between[1].e)
           -- (likewise a place said by its name, one or two capitalised words: "reduce 220, reaching Taunus reduce 210")
           for n = 1, 2 do

@@ -24515,3 +24515,16 @@ do
   check_eq(ex("Indonesia 412 selamat siang, descend to flight level one two zero, tq pak"), "ALT GIA412 FL120")
   asked(ex("all nippon two four one lite turn heading zero nine zero"), "a side unsure")
 end
+
+-- Cycle 82 (R487, R491): the level cleared, reached, said as "there" ("climb to FL240, when there reduce 250"); a speed
+-- said with its unit before "at" and the level cleared again ("desc fl150 then 250kt at fl150"); a wind's speed before
+-- "at" and a level stays the wind's
+do
+  local _, ex = scene({ "CRE EIN7TK A320 53.4 -6.2 090 FL120 250", "CRE RYR3TW B738 51.5 -0.5 090 FL250 280" })
+  check_eq(ex("Shamrock 7TK climb to flight level 240, when there reduce 250"),
+    "ALT EIN7TK FL240 ; ATALT EIN7TK FL240 SPD EIN7TK 250")
+  check_eq(ex("ryanair 3 tango whiskey desc fl150 then 250kt at fl150"),
+    "ALT RYR3TW FL150 ; ATALT RYR3TW FL150 SPD RYR3TW 250")
+  check_eq(ex("set wind at 51 north 1 west two seven zero degrees five zero knots at flight level three zero zero"),
+    "WIND 51 -1 FL300 270 50")
+end
