@@ -9428,6 +9428,26 @@ function G:parse(b, e)
   self:direct_resumes_nav()
   self:direct_beside_lnav_off()
   self:destination_not_waypoint()
+  self:value_scaled()
+end
+
+-- "vertical separation 1000 feet, half of that", "speed 150, double that": a value scaled after it is said, by "half",
+-- "twice" or "double" and "(of) that", "it" or "this", is asked about, naming both values (the word would be read as
+-- an instruction's own, "half height").
+function G:value_scaled()
+  if self.ask or not self:said("half twice double") then return end
+  for i = 2, #self.t - 1 do
+    local k = self:word(i + 1, "of") and i + 2 or i + 1
+    if self:word(i, "half twice double") and self:word(k, "that it this") then
+      local qs = self:quantities(1, i)
+      local q = qs[#qs]
+      if q and q.value then
+        local scaled = self:word(i, "half") and q.value / 2 or q.value * 2
+        return self:need(string.format("You said '%s' after '%s': should the value be %s or %s?", self:raw(i, k + 1),
+          self:raw(q.b, q.e), handlers.format.num(q.value), handlers.format.num(scaled)))
+      end
+    end
+  end
 end
 
 -- A value instruction with no value of its own (`valueless`: {k, ask} by segment number k of `segs`), left out

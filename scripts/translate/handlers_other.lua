@@ -5272,8 +5272,10 @@ return function(H, f, compass)
         return self:emit("DTMULT " .. f.num(x))
       end
     end
-    -- ("at twice real time": the multiplier said in words, before real time alone; "for half an hour" is a time)
-    for i = s.b, s.e - 1 do
+    -- ("at twice real time": the multiplier said in words, before real time alone; "for half an hour" is a time;
+    -- "unfreeze, and double the speed": straight before the segment's word, "the" between, left in the clause before)
+    local m = self:word(s.trig - 1, "the") and s.trig - 2 or s.trig - 1
+    for i = math.min(s.b, math.max(1, m)), s.e - 1 do
       local v = self.t[i].kind == "word" and L.multipliers[self.t[i].text]
       if v and not self:spoken_duration(i) then
         self:mark_used(i, i + 1)

@@ -851,6 +851,11 @@ return function(intent, rule, words)
   rule { "speed", "dtmult", next = "of", when = function(g, i)
     return (g:word(i + 2, "@sim") or (g:word(i + 2, "the") and g:word(i + 3, "@sim"))) and g:preceded_by(i, 4, "@multipliers")
   end }
+  -- "unfreeze, and double the speed", "half the speed please": a multiplier said of "the speed", no aircraft named
+  rule { "speed", "dtmult", when = function(g, i)
+    local m = g:word(i - 1, "the") and i - 2 or i - 1
+    return g:word(m, "@multipliers") and not g:has_ref(1, #g.t + 1, "aircraft")
+  end }
   rule { "speed", "dtmult", next = "up", near = { 3, "times x" } }  -- "speed up 10x"
   -- "speed it up to times 5": "it" the run, when no aircraft is named
   rule { "speed", "dtmult", next = "it", near = { 5, "times" }, when = function(g, i)

@@ -24528,3 +24528,20 @@ do
   check_eq(ex("set wind at 51 north 1 west two seven zero degrees five zero knots at flight level three zero zero"),
     "WIND 51 -1 FL300 270 50")
 end
+
+-- Cycle 82 (R491): a value scaled after it is said ("vertical separation, 1000 feet, half of that") was read as the
+-- zone's "half height" of 1000: asked, naming both values
+do
+  local _, ex = scene({ "CRE KLM1234 B738 52 4 090 FL200 250" })
+  asked(ex("and the vertical separation thing, 1000 feet, half of that I think it wants"), "half of that")
+  asked(ex("KLM1234 speed 150, double that"), "double that")
+  check_eq(ex("set the zone half height to 500 ft"), "ZONEDH 500")
+end
+
+-- Cycle 82 (R493): "unfreeze, and double the speed" dropped the second instruction (a multiplier said of "the speed",
+-- no aircraft named, is DTMULT)
+do
+  local _, ex = scene({ "CRE EIN104 A332 52.80 -10.20 090 FL150 280" })
+  check_eq(ex("unfreeze, and double the speed"), "OP ; DTMULT 2")
+  check_eq(ex("half the speed please"), "DTMULT 0.5")
+end
