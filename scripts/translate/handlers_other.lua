@@ -5428,6 +5428,11 @@ return function(H, f, compass)
         e = e - 1
         self:explain(e, s.e)
       end
+      -- (the full stop closing the request is its own mark, no part of the words: "... that says welcome visitors.")
+      if e - 1 == #self.t and e - 1 > saying + 1 and self.t[e - 1].text == "." then
+        e = e - 1
+        self:explain(e, s.e)
+      end
       self:explain(s.trig + 1, saying + 1)
       self:mark_used(saying + 1, e)
       return self:emit("ECHO " .. self:raw(saying + 1, e))

@@ -2829,6 +2829,8 @@ return {
     -- "thousando", "hundredo", and after an instruction's word, grammar.lua's G.vowel_after: "descendo", "speedo")
     crimb = "climb", loute = "route", untir = "until", contror = "control", rateral = "lateral", leady = "ready",
     thousando = "thousand", hundredo = "hundred",
+    -- (French: the h unsaid and th said z or s, "undred", "otel", "wiz", "nort"; "spid", "nots", "turne")
+    undred = "hundred", otel = "hotel", wiz = "with", nort = "north", spid = "speed", nots = "knots", turne = "turn",
     -- (Brazilian Portuguese: a final t said "chi", a t before e said "ch", a vowel after a closing consonant:
     -- "turn lefchi", "righchi", "direchi", "flighchi level", "the rouchi", "altichude", "simulachion", "chen minutes",
     -- "descendee", "two hundredy"; "ligue" and "desligue", the verbs of switching on and off)
@@ -2850,7 +2852,7 @@ return {
     -- ("descen fly leven one zero zero": a Thai or Vietnamese recogniser's flight level)
     { heard = { "fly" }, means = "flight", before = { "leven" } },
     -- ("climb on fligt level one four tsero tank you": a German recogniser's thanks)
-    { heard = { "tank", "tenk" }, means = "thank", before = { "you" } },
+    { heard = { "tank", "tenk", "sank" }, means = "thank", before = { "you" } },
     -- ("throw in 3 more A320s", "throw in another B738": adding traffic)
     { heard = { "throw in", "chuck in" }, means = "add", before = { "#number", "a", "an", "another", "some", "more" } },
     -- ("turn lift heading three four zero": a recogniser's "left")

@@ -24545,3 +24545,13 @@ do
   check_eq(ex("unfreeze, and double the speed"), "OP ; DTMULT 2")
   check_eq(ex("half the speed please"), "DTMULT 0.5")
 end
+
+-- Cycle 82 (R495, R494): a French recogniser's "spid", "undred", "nots", "wiz", "nort", "otel", "turne", "sank you";
+-- the full stop closing a request is no part of an ECHO's words ("... that says welcome visitors.")
+do
+  local _, ex = scene({ "CRE EZY19GH A320 45.7 5.0 090 FL200 280", "CRE AFR1234 A320 49.0 2.5 090 FL200 280" })
+  check_eq(ex("easy one nine golf otel reduce spid two undred fifty and descen fly level one four zero"),
+    "SPD EZY19GH 250 ; ALT EZY19GH FL140")
+  check_eq(ex("air france one two tree four turne rite heading zero niner zero sank you"), "HDG AFR1234 90 RIGHT")
+  check_eq(ex("Please print a message on the screen that says welcome visitors."), "ECHO welcome visitors")
+end
