@@ -3174,6 +3174,8 @@ return function(H, f, compass)
     if not at and not last then return end
     local ended = last
     for _, r in ipairs(self:route_places_spelled(b, e, id) or {}) do
+      -- ("direct ALPHA, QNH 1021": a word of lexicon.not_names the route does not hold names no place)
+      if self:word(r.b, "@not_names") and not self:listed(route, r.name) then return end
       local sep = r.b - 1
       -- ("then continue PAS as before", "then continue to LFSB", ", before RIPUS": the next place of the route said
       -- after joining words, or after "before")

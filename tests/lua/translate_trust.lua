@@ -24555,3 +24555,11 @@ do
   check_eq(ex("air france one two tree four turne rite heading zero niner zero sank you"), "HDG AFR1234 90 RIGHT")
   check_eq(ex("Please print a message on the screen that says welcome visitors."), "ECHO welcome visitors")
 end
+
+-- Cycle 82 (R483, R493): "QNH" in capitals after a direct-to ("proceed direct ALPHA, QNH one zero two one") was read
+-- as a place the route goes on to, and asked as an unknown waypoint: the altimeter setting is named as not simulated
+do
+  local _, ex = scene({ "DEFWPT ALPHA 52.9 -9.9", "CRE EIN104 A332 52.80 -10.20 090 FL150 280", "ADDWPT EIN104 ALPHA" })
+  check_eq(ex("Shamrock one zero four, proceed direct ALPHA, descend four thousand feet, QNH one zero two one"),
+    "DIRECT EIN104 ALPHA ; ALT EIN104 4000")
+end
