@@ -5091,8 +5091,11 @@ function m:at_distance(s)
       -- ("when 20 miles from Minna descend FL200", "ten miles from Zurich East descend": a navaid or airport
       -- said by its name, of one or two words)
       local state = #ids == 1 and self:state(ids[1])
+      -- ("within 20 nm of eham": an airport's ICAO code typed in lower case, no English word, that the navdata holds)
+      local code = p and self.t[p] and self.t[p].raw:match("^%l%l%l%l$") and not self:known_word(p)
+        and self.world.place_known and self.world.place_known(self.t[p].raw:upper()) and self.t[p].raw:upper()
       local name = r and r.name or (dme and state and self:navaid_by_name(p, math.min(s.trig, p + 2), state))
-        or (p and state and self:place_by_name(p, math.min(s.e, p + 2), state, true))
+        or (state and code) or (p and state and self:place_by_name(p, math.min(s.e, p + 2), state, true))
       -- ("20 miles of tango oscar lima": letters spelled in the phonetic alphabet that name no waypoint of the
       -- route, never the navaid named by the first letter's word alone: asked)
       if not r and p and self.words[p + 1] and L.phonetic[self.words[p] or ""] and L.phonetic[self.words[p + 1]] then

@@ -24563,3 +24563,12 @@ do
   check_eq(ex("Shamrock one zero four, proceed direct ALPHA, descend four thousand feet, QNH one zero two one"),
     "DIRECT EIN104 ALPHA ; ALT EIN104 4000")
 end
+
+-- Cycle 82 (R487): a distance from an airport's ICAO code typed in lower case ("within 20 nm of eham")
+do
+  local _, nex = navscene({ "CRE KLM1234 B738 52.6 4.2 090 FL120 250" }, "a lower-case ICAO code after a distance")
+  if nex then
+    check_eq(nex("klm1234 within 20 nm of eham descend 3000"), "ATDIST KLM1234 EHAM 20 ALT KLM1234 3000")
+    asked(nex("klm1234 within 20 nm of home descend 3000"), "no place")
+  end
+end
