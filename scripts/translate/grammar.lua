@@ -2324,12 +2324,13 @@ end
 -- "descend 3000 feet, and when you reach it, two hundred knots", "once level, 250 kts": a speed said bare with its
 -- unit (a run of number words or digits, then "knots", "kts", "kt" or "knot") straight after a comma that closes a
 -- condition of lexicon.level_condition (at most six words, no mark inside, "and" or "then" before it or not) is that
--- speed's instruction: "speed" is written before the value, which the condition then holds as any instruction
+-- speed's instruction: "speed" is written before the value, which the condition then holds as any instruction; so
+-- is a Mach number said bare there ("climb FL240, when you reach it, mach .79")
 G.bare_speed_units = set_of({ "knots", "kts", "kt", "knot" })
 G.bare_speed_openers = set_of(lexicon.level_condition)
 function G.conditioned_bare_speed(text)
   local low = text:lower()
-  if not (low:find("kt", 1, true) or low:find("knot", 1, true)) then return text end
+  if not (low:find("kt", 1, true) or low:find("knot", 1, true) or low:find("mach", 1, true)) then return text end
   local toks, bare = plain_words(text)
   local at = {}
   for k = 1, #bare do
@@ -2338,7 +2339,10 @@ function G.conditioned_bare_speed(text)
       local c = k
       while c < #bare and c <= k + 6 and not toks[c]:match("%p$") do c = c + 1 end
       local v = c + 1
-      if toks[c]:match(",$") and bare[v] and (NUMBER_WORDS[bare[v]] or bare[v]:match("^%d+$")) then
+      if toks[c]:match(",$") and bare[v] == "mach" and toks[v] == toks[v]:match("^%a+")
+          and ((toks[v + 1] or ""):match("^%d*%.?%d") or NUMBER_WORDS[bare[v + 1] or ""] or bare[v + 1] == "point") then
+        at[v] = true
+      elseif toks[c]:match(",$") and bare[v] and (NUMBER_WORDS[bare[v]] or bare[v]:match("^%d+$")) then
         local e = v
         while bare[e + 1] and (NUMBER_WORDS[bare[e + 1]] or bare[e + 1] == "and") and not toks[e]:match("%p$") do
           e = e + 1
@@ -6985,7 +6989,10 @@ function G:condition()
     self.at_held = self:held_value(rest)
     return "", rest
   end
-  for _, q in ipairs(self:quantities(i, comma)) do
+  for n, q in ipairs(self:quantities(i, comma)) do
+    -- ("after 60 s KLM12 climb FL220, after 120 s 300 kt": a time straight after the condition's word is a wait,
+    -- read by the instruction's own condition, m:at_time; never a level found later in its clause)
+    if n == 1 and q.kind == "time" and q.b == self:skip_fillers(i + 1) then return nil, 1 end
     -- ("once you pass FL240 on the way down, ..."): the direction said must be the one the aircraft crosses the
     -- level in from where it is; else asked
     local way = (q.kind == "alt" or q.kind == "plain" and q.value >= 1000) and self:crossing_way(self:skip_fillers(q.e))
@@ -19711,19 +19718,23 @@ end
 -- A zero said "oh" or "o" inside a number ("heading three oh five", "JetBlue six o seven", "double oh seven"):
 -- after a digit word or a number word below a hundred (or "double"/"triple") and before a digit word, with no mark between,
 -- it is "zero" (the lexer would read "oh" as a hesitation and drop a lone "o" as a stray letter: "three oh
--- five" read 35). "oh" closing a number ("two two oh") and one after a mark ("two, oh, three") stay.
+-- five" read 35). An "oh" closing a run of two or more digit words ("flight level two four oh", "speed two two
+-- oh.") is a zero too; one after a mark ("two, oh, three") stays.
 function G.spoken_zeros(text)
   local low = text:lower()
-  if not (low:find(" oh ", 1, true) or low:find(" o ", 1, true)) then return text end
+  if not (low:find(" oh", 1, true) or low:find(" o ", 1, true)) then return text end
   local toks, bare = plain_words(text)
   local out
-  for i = 2, #toks - 1 do
+  for i = 2, #toks do
     local before = bare[i - 1]
-    if (bare[i] == "oh" or bare[i] == "o") and toks[i] == toks[i]:match("^%a+") and not toks[i - 1]:match("%p$")
+    local inside = i < #toks and (bare[i] == "oh" or bare[i] == "o") and toks[i] == toks[i]:match("^%a+")
         and (SAID_DIGIT[before] or G.below_hundred[before] or before == "double" or before == "triple")
-        and SAID_DIGIT[bare[i + 1]] then
+        and SAID_DIGIT[bare[i + 1]]
+    local closing = bare[i] == "oh" and i > 2 and toks[i]:match("^%a+%p*$") and not SAID_DIGIT[bare[i + 1]]
+        and SAID_DIGIT[before] and SAID_DIGIT[bare[i - 2]] and not toks[i - 2]:match("%p$")
+    if (inside or closing) and not toks[i - 1]:match("%p$") then
       out = out or table.move(toks, 1, #toks, 1, {})
-      out[i] = "zero"
+      out[i] = "zero" .. toks[i]:match("%p*$")
     end
   end
   return out and table.concat(out, " ") or text

@@ -1,7 +1,7 @@
 -- Aircraft type names, generated from what squawk's performance models know
 -- (squawk.sim.types(): OpenAP's types with their titles, "Boeing 777-300ER",
 -- when OpenAP data is given; the class model's named designators) and the
--- designators of translate/names.lua, by rules, never row by row:
+-- designators and titles of translate/names.lua, by rules, never row by row:
 --   * a title "Maker Model" gives maker + model, the model with its spaces
 --     joined or hyphenated ("737 MAX 8" -> "737max8", "737-max-8"), each
 --     alternative of "777-200/200ER", Boeing's short MAX names ("737-8"),
@@ -265,6 +265,7 @@ function M.build(designators)
   local list = {}
   for _, t in ipairs(squawk.sim.types()) do list[#list + 1] = t end
   for _, d in ipairs(designators or {}) do list[#list + 1] = { designator = d } end
+  for _, t in ipairs(require("translate.names").titles) do list[#list + 1] = { designator = t[1], title = t[2] } end
   local families = {}
   for _, t in ipairs(list) do
     local d = t.designator:upper()
