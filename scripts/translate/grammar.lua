@@ -525,6 +525,14 @@ function G.p_said_b(w)
   local p = w:match("^b%l+$") and "p" .. w:sub(2) or w:match("^sb%l+$") and "sp" .. w:sub(3)
   return p and G.instruction_word(p) and p or nil
 end
+-- A speaker whose language has no /f/ (Korean) says it /p/: a word of four letters or more that no list knows, with
+-- a "p" in it, is an instruction's word or a number word with an "f" for each "p" ("pactor", "pipty", "pourteen");
+-- else nil.
+function G.p_said_f(w)
+  if #w < 4 or KNOWN[w] or not w:find("p", 1, true) then return nil end
+  local f = w:gsub("p", "f")
+  return (G.instruction_word(f) or NUMBER_WORDS[f]) and f or nil
+end
 -- A speaker of a language whose syllables end in a vowel (Japanese) says one after a closing consonant, and a
 -- recogniser writes it: a word of six letters or more that no list knows, ending in "o" or "u" after a consonant, is
 -- the rule's word without it ("descendo", "speedo", "directo"); else nil ("Willo" is a fix, no "will").
@@ -533,15 +541,15 @@ function G.vowel_after(w)
   local stem = w:sub(1, -2)
   return RULES_BY_WORD[stem] and stem or nil
 end
--- lexicon.accented's words, a /p/ said /b/ (G.p_said_b) and a vowel after a word (G.vowel_after), read as the English words they are (a word in capitals
--- stays as typed).
+-- lexicon.accented's words, a /p/ said /b/ (G.p_said_b), an /f/ said /p/ (G.p_said_f) and a vowel after a word
+-- (G.vowel_after), read as the English words they are (a word in capitals stays as typed).
 function G.accented(text)
   local toks, bare = plain_words(text)
   local any = any_of(bare, lexicon.accented)
-  for k = 1, #bare do any = any or (G.p_said_b(bare[k]) or G.vowel_after(bare[k])) ~= nil end
+  for k = 1, #bare do any = any or (G.p_said_b(bare[k]) or G.p_said_f(bare[k]) or G.vowel_after(bare[k])) ~= nil end
   if not any then return text end
   return tokens.rewrite(text, toks, function(i)
-    local en = lexicon.accented[bare[i]] or G.p_said_b(bare[i]) or G.vowel_after(bare[i])
+    local en = lexicon.accented[bare[i]] or G.p_said_b(bare[i]) or G.p_said_f(bare[i]) or G.vowel_after(bare[i])
     if not en or toks[i]:match("^%u%u") then return nil end
     return en .. (toks[i]:match("%p+$") or ""), i + 1
   end)
@@ -657,9 +665,10 @@ G.said_whole_order = { "spanish", "french", "german", "dutch", "portuguese", "no
   "italian", "polish", "discourse" }
 -- (the nouns of a value said in Portuguese or Spanish, whose digits a hesitation's word after them is one of)
 G.foreign_valued = set_of({ "nivel", "nível", "proa", "rumo", "velocidade" })
-function G.said_whole(text)
+function G.said_whole(text, world)
   text = G.russian_yes_no(text)
   local indexes = G.said_whole_index()
+  local places = G.world_places(world)
   -- (the form of `index` starting at token i, or nil; punctuation may close its last word only; `joining`
   -- forms only when `marked`)
   -- (a word typed in capitals is a name or a code, never a form: "over OKE", "direct JA")
@@ -667,7 +676,7 @@ function G.said_whole(text)
   -- Aurora" and "Los Angeles" are places, never "the")
   local function form_at(index, toks, bare, i, marked)
     local forms = index[bare[i]]
-    if not forms or toks[i]:match("^%u%u+%p*$") then return nil end
+    if not forms or toks[i]:match("^%u%u+%p*$") or places[bare[i]] then return nil end
     local names = i > 1 and toks[i]:match("^%u%l*$") and toks[i + 1] and toks[i + 1]:match("^%u") ~= nil
     for _, h in ipairs(forms) do
       local ok = (marked or not h.joining) and not (names and h.joining)
@@ -717,6 +726,17 @@ function G.said_whole(text)
   return text
 end
 
+-- The names (lower case) of the places of `world` that a word of another language may sound like: its user
+-- waypoints and the waypoints of its aircraft's routes ("lan 33 add rumbo to the route" with RUMBO defined: the
+-- waypoint, never Spanish "rumbo", heading). A set; empty without a world.
+function G.world_places(world)
+  local out = {}
+  for _, w in ipairs(world and world.waypoints or {}) do out[w:lower()] = true end
+  for _, a in ipairs(world and world.aircraft or {}) do
+    for _, w in ipairs(a.route or {}) do out[w:lower()] = true end
+  end
+  return out
+end
 -- Russian "da" (yes) and "net"/"nyet" (no), and Arabic "la" (no), in a controller's English are English "yes" and "no"
 -- where they are set off as those are: closed by a mark before more words ("Uzbek 2711 da, turn right heading 060",
 -- "climb flight level 150 net, flight level 130"), or a mark (or nothing) before and a mark (or the request's end)
@@ -2328,6 +2348,7 @@ end
 -- is a Mach number said bare there ("climb FL240, when you reach it, mach .79")
 G.bare_speed_units = set_of({ "knots", "kts", "kt", "knot" })
 G.bare_speed_openers = set_of(lexicon.level_condition)
+G.condition_closers = set_of({ "there", "level", "lvl", "it", "that", "levelled", "leveled" })
 function G.conditioned_bare_speed(text)
   local low = text:lower()
   if not (low:find("kt", 1, true) or low:find("knot", 1, true) or low:find("mach", 1, true)) then return text end
@@ -2338,6 +2359,13 @@ function G.conditioned_bare_speed(text)
         (bare[k - 1] == "and" or bare[k - 1] == "then")) then
       local c = k
       while c < #bare and c <= k + 6 and not toks[c]:match("%p$") do c = c + 1 end
+      -- ("and once level there mach .86": with no comma, "mach" straight after the word that closes the condition)
+      for m = k + 1, c do
+        if bare[m] == "mach" and G.condition_closers[bare[m - 1]] and toks[m] == toks[m]:match("^%a+")
+            and ((toks[m + 1] or ""):match("^%d*%.?%d") or bare[m + 1] == "point") then
+          at[m] = true
+        end
+      end
       local v = c + 1
       if toks[c]:match(",$") and bare[v] == "mach" and toks[v] == toks[v]:match("^%a+")
           and ((toks[v + 1] or ""):match("^%d*%.?%d") or NUMBER_WORDS[bare[v + 1] or ""] or bare[v + 1] == "point") then
@@ -3748,7 +3776,7 @@ local function written_forms(text, world)
   -- "47,5 north", "8,5 degrees east", "factor to 1,1": a decimal comma (G.decimal_comma) is the point
   where("%d,%d", "()(%d+),(%d+)()", function(b, whole, part, e) return G.decimal_comma(text, b, whole, part, e) end)
   text = typed_abbreviations(lone_multipliers(tokens.numerals_apart(G.unfinished_restarts(G.cut_off_restarts(G.repeated_restarts(G.abandoned_instruction_words(G.cancelled_direct(text))))), SAID_DIGIT), world))
-  text = hyphened_types(spelled(G.spelled_letter_a(heard_forms(negated_values(G.readback_reported(readback_heard(self_corrections(G.said_but(G.cancel_corrections(unlabelled(foreign_digits(G.portuguese_and(G.polish_and(G.said_whole(G.french_in_english(G.denied_word(G.dutch_chat(G.condition_then(G.condition_copula(G.recreate_said(G.third_person(G.passive_voice(G.after_this_instruction(text))))))))))))))))))))))))
+  text = hyphened_types(spelled(G.spelled_letter_a(heard_forms(negated_values(G.readback_reported(readback_heard(self_corrections(G.said_but(G.cancel_corrections(unlabelled(foreign_digits(G.portuguese_and(G.polish_and(G.said_whole(G.french_in_english(G.denied_word(G.dutch_chat(G.condition_then(G.condition_copula(G.recreate_said(G.third_person(G.passive_voice(G.after_this_instruction(text))))))))), world)))))))))))))))
   low = text:lower()
   -- a position typed as whole degrees after the hemisphere, then minutes ("N55 50.0 W003 20.0", "S33 57
   -- E151 10"): decimal degrees before their hemisphere ("55.833333 N 3.333333 W"); minutes of 60 or more
@@ -9382,8 +9410,9 @@ function G:parse(b, e)
                 or self.out[#self.out]:match("^DIRECT %S+ %S+$"))
             -- ("descend FL230 and when level turn right heading 140": a heading said as one waits for the
             -- level reached too; a turn by degrees, counted from the heading now, is asked about)
+            -- ("..., when it's there turn 270": three digits and no word of degrees are a heading said too)
             or (not self:then_after(segs, k) and self.out[#self.out]:match("^HDG ") and before:match("^ATALT ")
-                and self:word_in(s.b, s.e, "heading hdg"))) then
+                and (self:word_in(s.b, s.e, "heading hdg") or self:heading_digits(s)))) then
         self.out[#self.out] = before .. " " .. self.out[#self.out]
       elseif self:when_reached(s) and not before and not at and #self.out == n_before + 1 and n_before > 0
           and self.out[n_before]:match("^DIRECT ") and not self.out[#self.out]:match("^AT ") and not self.ask then
@@ -10168,6 +10197,14 @@ function G:when_reached(s)
     return false
   end
   return self:instruction_lead(k, s.trig) == s.trig, kind
+end
+
+-- True when the value of segment s is three digits with no word of degrees or "by" in the segment ("turn 270"): a
+-- heading said without its noun.
+function G:heading_digits(s)
+  local q = self:quantities(s.trig, s.e)[1]
+  return q ~= nil and q.number ~= nil and #(q.number.digits or "") == 3
+    and not self:word_in(s.b, s.e, "degrees degree deg by")
 end
 
 -- The position after the words at k that lead into the instruction word at trig ("start its descent", "begin the
@@ -12014,7 +12051,16 @@ function G:place_particle(i)
   return nx ~= nil and nx.kind == "word" and (self.u:used(i + 1) or (self.explained or {})[i + 1]) and nx.raw:match("^%u%l") ~= nil and not nx.keyword
     and not nx.number_word and not self.triggers[i + 1]
 end
-know_all(TYPES.types, {})
+-- (the words of a model of several that names.titles gives, "global express", "citation latitude", are read only
+-- with the others, joined by types.join; alone each stays a word to ask about)
+know_all((function()
+  local titled, out = {}, {}
+  for _, t in ipairs(names.titles) do titled[(t[2]:match("^%S+%s+(.+)$") or ""):lower()] = true end
+  for _, row in ipairs(TYPES.types) do
+    if not (titled[row[2]] and row[2]:find(" ")) then out[#out + 1] = row end
+  end
+  return out
+end)(), {})
 -- A registry command's name or alias that no rule or list knows ("rmethv"), by its lower-case
 -- word: the command's lower-case name. Said in English, it is accounted for only by its command.
 -- (lexicon.english_command_names, known above, are English words first.)
@@ -19740,6 +19786,86 @@ function G.spoken_zeros(text)
   return out and table.concat(out, " ") or text
 end
 
+-- "resolution: MVP, leave detection as is", "seed 7, keep the rest unchanged": a clause closing the request after
+-- a comma, a semicolon, a colon, "and" or "but" that says a setting stays as it is (lexicon.setting_left_as_is) is
+-- no instruction: the request is read without it. Said alone it changes nothing: asked (the second value returned).
+G.left_as_is = { verbs = set_of(lexicon.setting_left_as_is.verbs), nouns = set_of(lexicon.setting_left_as_is.nouns),
+  closes = (function()
+    local out = {}
+    for n, c in ipairs(lexicon.setting_left_as_is.closes) do
+      out[n] = {}
+      for w in c:gmatch("%a+") do out[n][#out[n] + 1] = w end
+    end
+    return out
+  end)() }
+function G.setting_left_as_is(text)
+  local low = text:lower()
+  if not (low:find("leave", 1, true) or low:find("keep", 1, true)) then return text end
+  local toks, bare = plain_words(text)
+  local L = G.left_as_is
+  for k = 1, #toks do
+    local opens = k == 1 or toks[k - 1]:match("[,;:]$") or bare[k - 1] == "and" or bare[k - 1] == "but"
+    if L.verbs[bare[k]] and opens then
+      local j = bare[k + 1] == "the" and k + 2 or k + 1
+      local n = j
+      while L.nouns[bare[n] or ""] and n < j + 4 do n = n + 1 end
+      for _, c in ipairs(n > j and L.closes or {}) do
+        local fits = n + #c - 1 == #toks
+        for x = 1, #c do fits = fits and bare[n + x - 1] == c[x] end
+        if fits then
+          local b = (bare[k - 1] == "and" or bare[k - 1] == "but") and k - 1 or k
+          if b == 1 then
+            return text, string.format("'%s' changes nothing. What should change?", text:gsub("[%s%p]+$", ""))
+          end
+          return (table.concat(toks, " ", 1, b - 1):gsub("[,;:]$", ""))
+        end
+      end
+    end
+  end
+  return text
+end
+-- "descend FL80, as it passes FL150 slow 250": "as" before a subject and a verb of passing or reaching is "when"
+-- (lexicon.condition's word); "..., once passing FL100 make it 220 kts": "make it" between a level (FLnnn, or a
+-- number and feet) that closes a condition and a speed with its unit is the speed's instruction, "speed".
+G.as_subjects = set_of({ "it", "he", "she", "you", "they", "it's", "he's", "she's", "you're" })
+G.as_verbs = set_of({ "passes", "pass", "passing", "reaches", "reach", "reaching", "crosses", "cross", "crossing",
+  "leaves", "leave", "leaving", "gets", "goes" })
+function G.condition_as_and_make_it(text)
+  local low = text:lower()
+  local as, make = low:find("%f[%a]as%s"), low:find("make it", 1, true)
+  if not (as or make) then return text end
+  local toks, bare = plain_words(text)
+  return tokens.rewrite(text, toks, function(i)
+    if bare[i] == "as" and G.as_subjects[bare[i + 1] or ""] and G.as_verbs[bare[i + 2] or ""]
+        and not toks[i]:match("%p$") and not toks[i + 1]:match("%p$") then
+      return (toks[i]:match("^%u") and "When" or "when"), i + 1
+    end
+    local level = i > 1 and (bare[i - 1]:match("^fl%d+$") or bare[i - 1] == "feet" or bare[i - 1] == "ft")
+    if bare[i] == "make" and bare[i + 1] == "it" and level and not toks[i - 1]:match("%p$")
+        and (bare[i + 2] or ""):match("^%d+$") and G.bare_speed_units[bare[i + 3] or ""] then
+      local c = i - 2
+      while c > 0 and not toks[c]:match("[,;.]$") and not G.bare_speed_openers[bare[c]] do c = c - 1 end
+      if c > 0 and G.bare_speed_openers[bare[c]] then return "speed", i + 2 end
+    end
+  end)
+end
+-- "vertical speed descend one thousand", "rate climb 1500": the verb of climbing or descending said between the rate's
+-- noun and its value is read before the noun ("descend vertical speed 1000"), the rate's sign.
+G.rate_verbs = set_of({ "climb", "descend", "descent", "climbing", "descending" })
+function G.verb_after_rate(text)
+  local low = text:lower()
+  if not (low:find("vertical", 1, true) or low:find("rate", 1, true)) then return text end
+  local toks, bare = plain_words(text)
+  return tokens.rewrite(text, toks, function(i)
+    local n = (bare[i] == "vertical" and bare[i + 1] == "speed") and 2 or bare[i] == "rate" and 1
+    local v = n and i + n
+    local value = v and bare[v + 1]
+    if v and G.rate_verbs[bare[v]] and value and (value:match("^%d") or NUMBER_WORDS[value])
+        and not toks[v - 1]:match("%p$") and not toks[v]:match("%p$") then
+      return toks[v] .. " " .. table.concat(toks, " ", i, v - 1), v + 1
+    end
+  end)
+end
 -- "then FF 10 min and HOLD", "fast-forward 8 minutes, then hold", "run 15 minutes and hold": a hold joined by
 -- "and"/"then" to a fast-forward's time (FF, fast-forward, fast forward, fast-time; the time with its unit) is
 -- the simulation's pause after it, said as "pause"; any other "hold" stays as said.
@@ -19915,7 +20041,10 @@ function M.translate(text, world)
   if text:find("[\xC4\xC5]") then text = text:gsub("[\xC4\xC5][\x80-\xBF]", lexicon.accents) end
   -- (an accent's words first, so the callsign and telephony passes read "hop seven sree" as "hop seven three")
   text = G.accented(text)
-  text = G.id_label(G.hold_after_ff(G.time_before_fast(numbered_steps(G.title_label(G.spoken_ddmm(G.spoken_zeros(G.number_words_apart(text))))))), world)
+  local kept_ask
+  text, kept_ask = G.setting_left_as_is(text)
+  if kept_ask then return { commands = {}, ask = kept_ask } end
+  text = G.id_label(G.condition_as_and_make_it(G.verb_after_rate(G.hold_after_ff(G.time_before_fast(numbered_steps(G.title_label(G.spoken_ddmm(G.spoken_zeros(G.number_words_apart(text))))))))), world)
   local said_conflict = G.said_conflict(text)
   if said_conflict then return { commands = {}, ask = said_conflict } end
   text = G.spoken_triples_to(text)

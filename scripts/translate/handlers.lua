@@ -4937,7 +4937,10 @@ function m:at_time(s)
   -- ("at 00:12:00 fast forward 10 minutes", "in 5 minutes fast forward 10 minutes": a fast-forward's own duration
   -- after its verb, a time after "at", "in" or "after" before it is when it starts)
   local ts = s.intent == "ff" and self:durations(s.b, s.e) or {}
-  local ff_at = #ts == 2 and ts[1].e <= s.trig and ts[2].b > s.trig and self:word(ts[1].b - 1, "at in after")
+  -- ("at sim time 00:20:00 fast forward 10 min": the clock's time named before the start's time)
+  local pre = ts[1] and ts[1].b - 1
+  if pre and self:word(pre, "time") then pre = self:word(pre - 1, "@sim") and pre - 2 or pre - 1 end
+  local ff_at = #ts == 2 and ts[1].e <= s.trig and ts[2].b > s.trig and self:word(pre, "at in after")
   if OWN_TIME[s.intent] and not (s.intent == "ff" and self:word(s.trig, "speed spd airspeed")) and not ff_at then
     return nil
   end

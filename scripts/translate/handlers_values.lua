@@ -1247,7 +1247,8 @@ return function(H, f, wrap, compass)
       local r, t = self:refs_in(hw + 2, hw + 3, "waypoint")[1], self.t[hw + 2]
       if r and r.b == hw + 2 then
         faced = r.name:upper()
-      elseif t.kind == "word" and t.alpha and not self.u:used(hw + 2) then
+      -- (a filler is no place: "heading to the route" faces no navaid THE)
+      elseif t.kind == "word" and t.alpha and not t.filler and not self.u:used(hw + 2) then
         local a = self:state(ids[1])
         for _, n in ipairs(self.world.waypoints or {}) do
           if n:upper() == t.text:upper() then faced = n:upper() end

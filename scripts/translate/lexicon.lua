@@ -292,7 +292,7 @@ return {
         -- Thai, Malay, Indonesian and Filipino, romanised ("sawasdee khrap", "terima kasih", "salamat")
         "sawasdee", "sawatdee", "sawadee", "khrap", "krap", "khob", "khun", "terima", "kasih", "selamat", "pagi",
         -- (the Thai speaker's polite particle closing a sentence: "krab" said by a man, "ka" or "kha" by a woman)
-        "krab", "khrab", "ka", "kha",
+        "krab", "khrab", "ka", "kha", "kup", "khup",
         -- (the particles of Indonesian and Malay said in English, softening or closing a request: "climb FL300 ya",
         -- "pause dulu", "stop the sim sekejap" (for a moment), "turn left 20 dong"; "lah" is a filler)
         "ya", "dulu", "sekejap", "kejap", "dong", "deh", "sih", "nih",
@@ -2019,6 +2019,15 @@ return {
   -- others ("..., and leave the Ryanair be", "..., let the KLM be", "..., keep the easyJet as it is", "leave KLM12
   -- alone"): the verb, "the" or not, the aircraft, then at least one of `words` to the clause's end
   -- (G:aircraft_left_alone)
+  -- a setting said to stay as it is, in a clause of its own after other instructions ("resolution: MVP, leave
+  -- detection as is", "RESO MVP but keep the rest unchanged"): the verb, "the" or not, one to three of `nouns`,
+  -- then one of `closes` ending the clause; no instruction, the clause set aside (grammar.lua G.setting_left_as_is)
+  setting_left_as_is = { verbs = { "leave", "keep" },
+                         nouns = { "detection", "resolution", "conflict", "cd", "cr", "asas", "reso", "wind",
+                                   "winds", "trails", "trail", "noise", "method", "settings", "setting", "rest",
+                                   "everything", "else", "all", "other", "others", "logging", "log" },
+                         closes = { "as is", "as it is", "as it was", "unchanged", "untouched", "alone", "like that",
+                                    "the same", "as they are" } },
   aircraft_left_alone = { verbs = { "leave", "let", "keep" },
                           words = { "be", "alone", "as", "it", "is", "where", "he", "she", "they", "are", "like",
                                     "that", "unchanged", "untouched", "for", "now" } },
@@ -2747,7 +2756,7 @@ return {
                   fife = "5", six = "6", seven = "7", eight = "8", nine = "9", niner = "9" },
   -- the phonetic alphabet (spelled waypoint names)
   phonetic = {
-    alpha = "A", alfa = "A", bravo = "B", charlie = "C", delta = "D", echo = "E", foxtrot = "F", golf = "G",
+    alpha = "A", alfa = "A", bravo = "B", charlie = "C", charly = "C", delta = "D", echo = "E", foxtrot = "F", golf = "G",
     hotel = "H", india = "I", juliet = "J", juliett = "J", juliette = "J", kilo = "K", lima = "L", mike = "M",
     november = "N", oscar = "O", papa = "P", quebec = "Q", romeo = "R", sierra = "S", tango = "T",
     uniform = "U", victor = "V", whiskey = "W", whisky = "W", xray = "X", yankee = "Y", zulu = "Z",
@@ -2821,6 +2830,12 @@ return {
     -- for four, "fly leven" for flight level)
     descen = "descend", lef = "left", righ = "right", direc = "direct", wha = "what", fas = "fast", fo = "four",
     leven = "level",
+    -- ("desen", "tuhn", "leveo", "thousan", "fie" and "fai" for five, "confli"; a /p/ said for /f/ by a Korean
+    -- speaker, "pactor", "pipty", is grammar.lua's G.p_said_f)
+    desen = "descend", tuhn = "turn", leveo = "level", thousan = "thousand", fie = "five", fai = "five",
+    confli = "conflict",
+    -- (Korean: "jero" for zero)
+    jero = "zero",
     -- (Arabic: "disend"; a /p/ said /b/, "blease", "broceed", is grammar.lua's G.p_said_b)
     disend = "descend",
     -- (Turkish and Persian: a /v/ said /w/, "flight lewel")
@@ -2869,10 +2884,32 @@ return {
     { heard = { "crime" }, means = "climb", before = { "#number", "and", "flight", "plight", "to", "level" } },
     -- (an Arabic accent: "qatari eight alpha bravo claim flight level two three zero")
     { heard = { "claim" }, means = "climb", before = { "#number", "flight", "level", "to", "and" } },
+    -- ("vertical speed one thousand feet claim": the verb closing a rate)
+    { heard = { "claim" }, means = "climb", closed_after = { "feet", "ft", "fpm", "minute" } },
     { heard = { "maintenance" }, means = "maintain", before = { "#number", "flight", "plight", "level", "altitude" } },
     { heard = { "pour" }, means = "four", before = { "thousand", "hundred" } },
+    -- (a Korean accent's "pour" inside a number or before a unit: "flight level one pour zero", "pour times",
+    -- "until pour dme")
+    { heard = { "pour" }, means = "four", before = { "#number", "times", "dme", "mile", "miles", "nm", "degrees",
+      "knots", "knot" } },
+    { heard = { "pour" }, means = "four", after = { "#number" } },
     { heard = { "sick" }, means = "six", before = { "thousand", "hundred" } },
+    -- (a Thai or Vietnamese accent: "ay" for eight and "tu" for two among digits, "not" for knots closing a speed,
+    -- "tie" for Thai before a flight number, "men tain", "flight lever", "a sas")
+    { heard = { "ay" }, means = "eight", between = { { "#number" }, { "#number", "thousand", "hundred", "knots" } } },
+    { heard = { "ay" }, means = "eight", after = { "#number" } },
+    { heard = { "ay" }, means = "eight", before = { "thousand", "hundred" } },
+    { heard = { "ay" }, means = "eight", between = { { "pass", "passing", "level", "heading", "speed", "to", "at", "fl",
+      "mach", "point", "decimal", "reduce", "increase", "climb", "descend" }, { "#number", "thousand", "hundred" } } },
+    { heard = { "tu" }, means = "two", between = { { "#number" }, { "#number" } } },
+    { heard = { "not" }, means = "knots", closed_after = { "#number" } },
+    { heard = { "tie" }, means = "thai", before = { "#number" } },
+    { heard = { "men tain" }, means = "maintain", before = { "#number", "flight", "fly", "level", "altitude", "heading",
+      "speed", "present", "mach" } },
+    { heard = { "lever" }, means = "level", after = { "flight", "fly" } },
+    { heard = { "a sas" }, means = "asas", after = { "on", "off" }, before = { "on", "off" } },
     { heard = { "sick" }, means = "six", between = { { "#number" }, { "#number", "knots", "thousand", "hundred" } } },
+    { heard = { "sick" }, means = "six", between = { { "#known" }, { "#number" } } },
     -- ("descent fly-level wan zero zero": the noun heard for the verb before a flight level)
     { heard = { "descent" }, means = "descend", before = { "flight", "fly-level" } },
     -- ("when passing fly level one zero zero turn right": "flight level" as a recogniser writes it, before its

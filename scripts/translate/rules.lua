@@ -2624,6 +2624,8 @@ return function(intent, rule, words)
   rule { "list", "listrte", prev = { 1, "waypoint" }, near = { 3, "for of" } }  -- "the waypoint list for BAW123"
   -- "ryr8gn say route", "say your routing": the aircraft asked for its route, as "say altitude" for its state
   rule { "route rte routing", "listrte", prev = { 2, "say" } }
+  -- ("KAL123 route information please", "route details for BAW12": the route's noun before a noun of information)
+  rule { "route rte routing", "listrte", next = "information info details data" }
   -- "KAC12, confirm the route", "verify your routing": the same, the noun closing its clause ("confirm the route
   -- via X" asks whether a clearance stands)
   rule { "route rte routing", "listrte", prev = { 2, "confirm verify" }, when = function(g, i)
@@ -2861,7 +2863,7 @@ return function(intent, rule, words)
   rule { "state", false, prev = { 1, "say" }, when = function(g, i)
     return g.t[i + 1] == nil or g.t[i + 1].kind == "punct"
   end }
-  rule { "details status info information state pos", "pos" }
+  rule { "details status info information state pos", "pos", not_prev = { 1, "route rte routing" } }
   -- "show me both of them, KLM12 and EIN45", "KLM12 and EIN45 are in conflict, show me the both of them": the
   -- aircraft named shown together, the words after the verb only those aircraft and lexicon.shown_together
   -- ("both" when two are named; "them" or "both" standing for those named before the verb); no value and no instruction
@@ -3409,8 +3411,9 @@ return function(intent, rule, words)
   -- "go, 3x", "play, and make it three times", "go, KLM12 climb FL100": opening the request, a clause of its own
   rule { "go play", "op", when = function(g, i) return g:clause_opens(i, i + 1) end }
   -- "set multiplier 8 and run", "descend FL080 then run (it)": the clock started after another instruction, the
-  -- verb ending the text ("and run at 4x" is the rate's)
-  rule { "run", "op", prev = { 1, "and then" }, when = function(g, i)
+  -- verb ending the text ("and run at 4x" is the rate's); "seed 42 then go": "go" so, no aircraft named
+  rule { "run go", "op", prev = { 1, "and then" }, when = function(g, i)
+    if g:word(i, "go") and g:has_ref(1, #g.t + 1, "aircraft") then return false end
     local k = i + 1
     if g:word(k, "the") and g:word(k + 1, "@sim") then k = k + 2 elseif g:word(k, "it @sim") then k = k + 1 end
     while k <= #g.t and (g.t[k].kind == "punct" or g.t[k].filler or g:word(k, "now")) do k = k + 1 end
@@ -4372,7 +4375,7 @@ return function(intent, rule, words)
   rule { "circle", "circle", when = function(g, i) return corners_after(g, i) == 1 and g:shape_name_at(i + 1) end }
   rule { "line", "line", when = function(g, i)
     return corners_after(g, i) == 2 and (g:followed_by(i, 3, "@named") or g:has_ref(i + 1, i + 3, "waypoint")
-      or g:has_ref(i + 1, i + 3, "aircraft"))
+      or g:has_ref(i + 1, i + 3, "aircraft") or g:shape_name_at(i + 1))
   end }
 
   -- the performance model ("switch to the simple class-based performance model", "use OpenAP")

@@ -127,7 +127,9 @@ local function readings(w)
   if not near_target(w) then return M.apart(w) end
   local near, target = {}, false
   for _, e in ipairs(edits(w)) do
-    if KNOWN[e] and not CODES[e] then
+    -- (an accent's form, lexicon.accented's "tuhn", is what a recogniser writes, never what a slip of the fingers
+    -- means: "tun" is no "tuhn")
+    if KNOWN[e] and not CODES[e] and not lexicon.accented[e] then
       -- (the instruction word begins as w does, or with its first two letters swapped: "nad" and)
       local instruction = #e >= 3 and TARGETS[e] == true
         and (e:sub(1, 1) == w:sub(1, 1) or e:sub(1, 2) == w:sub(2, 2) .. w:sub(1, 1))

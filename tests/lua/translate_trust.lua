@@ -24572,3 +24572,68 @@ do
     asked(nex("klm1234 within 20 nm of home descend 3000"), "no place")
   end
 end
+
+-- Cycle 83 (R503, R498): a Thai or Vietnamese recogniser's "fie", "fai", "sree", "desen", "tuhn", "leveo", "thousan",
+-- "men tain", "flight lever", "ay" for eight beside digits, "tu" for two, "not" for knots after a speed, "tie" for
+-- Thai, "a sas", the polite "kup"; a Korean recogniser's "jero", "pour" beside digits and units, and an /f/ said /p/
+-- ("pactor", "pipty", "pourteen"); a flight level closing on "oh" ("flight level two four oh")
+do
+  local _, ex = scene({ "CRE THA661 B77W 13.7 100.7 090 FL200 280", "CRE VJC155 A321 21.2 105.8 180 FL150 260",
+    "CRE KAL123 B738 37.4 126.4 090 FL120 250", "CRE ABL1401 A321 35.1 128.9 270 FL100 250",
+    "CRE VJC638 A320 10.8 106.6 090 FL150 250" })
+  check_eq(ex("tie six six one the send and men tain flight lever one zero zero"), "ALT THA661 FL100")
+  check_eq(ex("vietjet one fie fie tuhn lef hedding two sree zero"), "HDG VJC155 230 LEFT")
+  check_eq(ex("vietjet sick sree ay desen fly leveo one zero zero"), "ALT VJC638 FL100")
+  check_eq(ex("thai six six one reduce speed two ay zero not"), "SPD THA661 280")
+  check_eq(ex("thai six six one say altitude kup"), "POS THA661")
+  check_eq(ex("tuhn on a sas"), "ASAS ON")
+  check_eq(ex("korean air one two tree turn reft pipty degree"), "HDG KAL123 40 LEFT")
+  check_eq(ex("air busan pourteen zero one turn reft heading one two jero"), "HDG ABL1401 120 LEFT")
+  check_eq(ex("korean air one two three climb flight level one pour zero"), "ALT KAL123 FL140")
+  check_eq(ex("vertical resolution pactor one point pive"), "RFACV 1.5")
+  check_eq(ex("korean air one two three climb flight level two four oh"), "ALT KAL123 FL240")
+  check_eq(ex("korean air one two three vertical speed descend one tousand"), "VS KAL123 -1000")
+  check_eq(ex("korean air one two three route information please"), "LISTRTE KAL123")
+  -- (a word that is English stays: "pour" is no four with nothing of a number beside it)
+  asked(ex("korean air one two three pour the coffee"), "pour")
+end
+
+-- Cycle 83 (R499): a waypoint of the scene whose name is a word of another language ("rumbo", Spanish for heading)
+-- is the waypoint; "heading to the route" faces no navaid named THE
+do
+  local _, ex = scene({ "DEFWPT RUMBO -33.10 -70.50", "CRE LAN601 A320 -32.80 -70.60 190 FL170 280",
+    "ADDWPT LAN601 RUMBO", "CRE LAN33 B789 -33.60 -71.40 075 FL230 300" })
+  check_eq(ex("lan tree tree add rumbo to the route"), "ADDWPT LAN33 RUMBO")
+  check_eq(ex("lan six zero one after rumbo descend level one zero zero"), "AT LAN601 RUMBO DO ALT LAN601 FL100")
+  asked(ex("LAN33 heading to the route"), "heading")
+end
+
+-- Cycle 83 (R500, R487): an experimenter's conditions and clock: a bare Mach number after a level condition ("when
+-- you reach it, mach .79", "once level there mach .86"); "as it passes FL150"; "once it's through FL100 make it 220
+-- kts"; "when it's there turn 270"; two waits in a row ("after 60 s ..., after 120 s ..."); "at sim time 00:20:00
+-- fast forward 10 min"; "seed 42 then go"; "leave detection as is" beside a setting (said alone: asked)
+do
+  local _, ex = scene({ "CRE KLM1234 B738 52.4 4.6 090 FL200 250" })
+  check_eq(ex("KLM1234 climb FL240, when you reach it, mach .79"), "ALT KLM1234 FL240 ; ATALT KLM1234 FL240 SPD KLM1234 M0.79")
+  check_eq(ex("KLM1234 climb FL360 and once level there mach .86"), "ALT KLM1234 FL360 ; ATALT KLM1234 FL360 SPD KLM1234 M0.86")
+  check_eq(ex("KLM1234 descend FL80; as it passes FL150 slow 250"), "ALT KLM1234 FL80 ; ATALT KLM1234 FL150 SPD KLM1234 250")
+  check_eq(ex("klm1234 down to FL80, once it's through FL100 make it 220 kts"),
+    "ALT KLM1234 FL80 ; ATALT KLM1234 FL100 SPD KLM1234 220")
+  check_eq(ex("KLM1234 climb FL360 and when it's there turn 270"), "ALT KLM1234 FL360 ; ATALT KLM1234 FL360 HDG KLM1234 270")
+  check_eq(ex("after 60 s KLM1234 climb fl220, after 120 s KLM1234 speed 300 kt"),
+    "DELAY 60 ALT KLM1234 FL220 ; DELAY 120 SPD KLM1234 300")
+  check_eq(ex("at sim time 00:20:00 fast forward 10 min"), "SCHEDULE 00:20:00 FF 600")
+  check_eq(ex("run 1: seed 42 then go"), "SEED 42 ; OP")
+  check_eq(ex("resolution: MVP, leave detection as is"), "RESO MVP")
+  asked(ex("leave detection as is"), "changes nothing")
+  asked(ex("KLM1234 climb FL300 then go"), "go")
+end
+
+-- Cycle 83: business jets by their model names, from names.titles (Citation Latitude, Challenger 350, Phenom 300)
+do
+  local _, ex = scene({ "CRE KLM1234 B738 52.4 4.6 090 FL200 250" })
+  check_eq(ex("create a Citation Latitude called N55X at 52.3 4.3 heading 90 at 9000 ft 220 kts"),
+    "CRE N55X C68A 52.3 4.3 90 9000 220")
+  check_eq(ex("create a Challenger 350 N77CL at 52 4.5 heading 270 FL300 300 knots"), "CRE N77CL CL35 52 4.5 270 FL300 300")
+  asked(ex("create a cessna citation N12 at 52 4.5 heading 270 FL200 250 kts"), "citation")
+end
