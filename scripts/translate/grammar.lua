@@ -3831,15 +3831,23 @@ local function written_forms(text, world)
   end)
   -- "angels two six", "angels 22": military brevity for an altitude in thousands of feet (one or two digits,
   -- typed or said one by one), read as that many thousand feet
+  -- (or a number below a hundred said as one: "angels eighteen", "angels twenty-one"; "say angels" asks the altitude)
   local function angels(digits)
+    local low = digits:lower():gsub("%-", " ")
+    local tens, unit = low:match("^(%a+) (%a+)$")
+    local n = G.below_hundred[low] or (tens and (G.below_hundred[tens] or 0) >= 20 and (G.below_hundred[tens] or 0) % 10 == 0
+      and (G.below_hundred[unit] or 10) < 10 and G.below_hundred[tens] + G.below_hundred[unit])
+    if n then return string.format("%d ft", n * 1000) end
     for d in digits:gmatch("%a+") do
       if not SAID_DIGIT[d:lower()] then return nil end
     end
     return digits .. " thousand ft"
   end
   where("angels", "%f[%a][Aa][Nn][Gg][Ee][Ll][Ss]%s+(%d%d?)%f[^%w%.]", "%1000 ft")
+  where("angels", "%f[%a][Aa][Nn][Gg][Ee][Ll][Ss]%s+(%a+%-%a+)%f[%A]", angels)
   where("angels", "%f[%a][Aa][Nn][Gg][Ee][Ll][Ss]%s+(%a+%s+%a+)%f[%A]", angels)
   where("angels", "%f[%a][Aa][Nn][Gg][Ee][Ll][Ss]%s+(%a+)%f[%A]", angels)
+  where("angels", "%f[%a]([Ss][Aa][Yy]%s+)[Aa][Nn][Gg][Ee][Ll][Ss]%f[%A]", "%1altitude")
   -- "250-ish", "FL200-ish": the suffix of a loose value is its own word ("ish", lexicon's discourse)
   where("%-ish", "(%w)%-([Ii][Ss][Hh])%f[%A]", "%1 %2")
   -- "un-pause", "un-freeze": the prefix "un-" written with a hyphen is the one word ("unpause")
@@ -19786,7 +19794,8 @@ function G.spoken_zeros(text)
   return out and table.concat(out, " ") or text
 end
 
--- "resolution: MVP, leave detection as is", "seed 7, keep the rest unchanged": a clause closing the request after
+-- "resolution: MVP, leave detection as is", "seed 7, keep the rest unchanged", "RESO OFF, but keep detection": a
+-- clause closing the request after
 -- a comma, a semicolon, a colon, "and" or "but" that says a setting stays as it is (lexicon.setting_left_as_is) is
 -- no instruction: the request is read without it. Said alone it changes nothing: asked (the second value returned).
 G.left_as_is = { verbs = set_of(lexicon.setting_left_as_is.verbs), nouns = set_of(lexicon.setting_left_as_is.nouns),
@@ -19809,7 +19818,9 @@ function G.setting_left_as_is(text)
       local j = bare[k + 1] == "the" and k + 2 or k + 1
       local n = j
       while L.nouns[bare[n] or ""] and n < j + 4 do n = n + 1 end
-      for _, c in ipairs(n > j and L.closes or {}) do
+      -- ("RESO OFF, but keep detection": "keep" and the setting closing the request, no value, keep it as it is)
+      local kept = bare[k] == "keep" and n > j and n == #toks + 1 and not toks[#toks]:match("%?$")
+      for _, c in ipairs(n > j and (kept and { {} } or L.closes) or {}) do
         local fits = n + #c - 1 == #toks
         for x = 1, #c do fits = fits and bare[n + x - 1] == c[x] end
         if fits then

@@ -4681,14 +4681,19 @@ return function(H, f, compass)
   -- (a switch asked about: a question, or a request opening with "what" and no "on" or "off" in it, "what's the
   -- conflict detection setting", or with "is" or "are", "is conflict detection on": its state shown, never set)
   function m:switch(s, spec)
-    -- ("is the detection of conflicts on? please put it on", "is ASAS on? switch it off please": the question's
+    -- ("is the detection of conflicts on? please put it on", "is ASAS on? switch that off please": the question's
     -- answer not awaited, the switch set in the one sentence after it: a verb of setting, "it" and one "on" or
     -- "off", with only fillers and "please" beside them)
     local q = self:first_sentence_end()
     if self.t[q].text == "?" and q < #self.t and s.trig < q then
       local verb = self:skip_fillers(q + 1)
+      -- ("is there conflict detection? if not, turn it on": the switch set when the answer is no, as it is set now)
+      if self:word(verb, "if") and self:word(verb + 1, "not") then
+        verb = self:skip_fillers(verb + 2)
+        if self.t[verb] and self.t[verb].text == "," then verb = self:skip_fillers(verb + 1) end
+      end
       while self:word(verb, "please kindly now") do verb = self:skip_fillers(verb + 1) end
-      if self:word(verb, "@setting_verbs") and self:word(verb + 1, "it") and self:word(verb + 2, "@on @off") then
+      if self:word(verb, "@setting_verbs") and self:word(verb + 1, "it that this") and self:word(verb + 2, "@on @off") then
         local k = self:skip_fillers(verb + 3)
         while self:word(k, "please now") do k = self:skip_fillers(k + 1) end
         if k > #self.t then

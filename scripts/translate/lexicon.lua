@@ -2352,6 +2352,13 @@ return {
     -- `routed`: the place is on the route of the one aircraft addressed (else the limit is placed nowhere: asked)
     { what = "limits that end at a place", words = "until till", near = { "#waypoint" }, after_instruction = true,
       last = true, own_clause = true, routed = true },
+    -- ("Viper 11, angels 18, buster": military brevity for the most speed the aircraft has, which squawk's
+    -- instructions set as a value only)
+    { what = "brevity for best speed", words = "buster" },
+    -- "speed 250 until passing FL100", "250 knots till leaving one zero thousand": the same limit ending at a level
+    -- passed, said last
+    { what = "limits that end at a level", words = "until till", near = { "passing", "leaving", "through" }, window = 1,
+      after_instruction = true, last = "passing leaving through flight level fl feet ft thousand hundred altitude" },
     -- "maintain 8000 until established", "till established on the localizer": the same limit ending on the
     -- approach, said straight after the word and last (`last`: the words it may hold, a comma among them:
     -- "until established, cleared ILS runway 10" closes with the approach clearance)

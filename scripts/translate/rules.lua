@@ -2518,8 +2518,11 @@ return function(intent, rule, words)
   rule { "route rte routing waypoints wpts", "listrte", when = function(g, i)
     local a = g:refs_in(1, i, "aircraft")
     a = a[#a]
-    return a ~= nil and a.exists and a.e == i and g:skip_fillers(1) == a.b and g.t[i + 1] ~= nil
-      and g.t[i + 1].text == "?" and g.t[i + 2] == nil
+    -- ("SAS2204 route plz": "please" closing it as well as a question mark)
+    if not (a ~= nil and a.exists and a.e == i and g:skip_fillers(1) == a.b) then return false end
+    local k = i + 1
+    while g.t[k] and (g.t[k].filler or g:word(k, "please plz pls")) do k = k + 1 end
+    return (k > i + 1 and g.t[k] == nil) or (g.t[k] ~= nil and g.t[k].text == "?" and g.t[k + 1] == nil)
   end }
   -- ("Delta 401 flight plan please", "KLM12 flight plan?": the plan's noun straight after an aircraft flying opening the
   -- request, "please" at most after it)
