@@ -3682,6 +3682,14 @@ local QUESTION_WORDS = { where = true, wheres = true, ["where's"] = true, is = t
 local SPOKEN_DIGITS = { zero = true, one = true, two = true, three = true, four = true, five = true, six = true,
   seven = true, eight = true, nine = true, niner = true, oh = true, tree = true, fife = true }
 function m:settle_callsigns()
+  -- ("..., contact singapore one two three decimal seven": a station and its frequency after "contact" or "monitor",
+  -- its digits closed by "decimal" or "point", are no callsign the matcher heard in them)
+  for k = #self.refs, 1, -1 do
+    local r = self.refs[k]
+    if r.kind == "aircraft" and r.spoken and self:word(r.b - 1, "contact monitor") and self:word(r.e, "decimal point") then
+      table.remove(self.refs, k)
+    end
+  end
   -- ("if 721 reaches FL270 then heading 060", "unless 721 is at FL270 ..."): a word that opens a condition
   -- (G.condition_openers) that the matcher took into an aircraft's callsign before its digits is no part of it: left
   -- out of the reference, it stays a word of the request (asked, never dropped)

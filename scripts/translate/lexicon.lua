@@ -2354,7 +2354,7 @@ return {
       last = true, own_clause = true, routed = true },
     -- ("Viper 11, angels 18, buster": military brevity for the most speed the aircraft has, which squawk's
     -- instructions set as a value only)
-    { what = "brevity for best speed", words = "buster" },
+    { what = "military speed brevity", words = "buster" },
     -- "speed 250 until passing FL100", "250 knots till leaving one zero thousand": the same limit ending at a level
     -- passed, said last
     { what = "limits that end at a level", words = "until till", near = { "passing", "leaving", "through" }, window = 1,

@@ -24638,3 +24638,14 @@ do
   check_eq(ex("create a Challenger 350 N77CL at 52 4.5 heading 270 FL300 300 knots"), "CRE N77CL CL35 52 4.5 270 FL300 300")
   asked(ex("create a cessna citation N12 at 52 4.5 heading 270 FL200 250 kts"), "citation")
 end
+
+-- Cycle 83 (R507, R509): a station and its frequency after "contact" ("contact singapore one two three decimal
+-- seven") is no callsign; "buster" is named as not simulated, and its note's words make no word of a request known
+-- ("use the best resolution method" still asks 'best')
+do
+  local _, ex = scene({ "CRE QTR844 A359 3.0 101.0 090 FL300 280", "CRE MAS1 A333 3.2 101.5 180 FL250 280" })
+  check_eq(ex("qatari eight four four descend flight level two zero zero contact singapore one two three decimal seven"),
+    "ALT QTR844 FL200")
+  check_eq(ex("MAS1 climb angels twenty one, buster"), "ALT MAS1 21000")
+  asked(ex("use the best resolution method"), "best")
+end
