@@ -24646,6 +24646,6 @@ do
   local _, ex = scene({ "CRE QTR844 A359 3.0 101.0 090 FL300 280", "CRE MAS1 A333 3.2 101.5 180 FL250 280" })
   check_eq(ex("qatari eight four four descend flight level two zero zero contact singapore one two three decimal seven"),
     "ALT QTR844 FL200")
-  check_eq(ex("MAS1 climb angels twenty one, buster"), "ALT MAS1 21000")
+  check_eq(ex("MAS1 climb angels twenty seven, buster"), "ALT MAS1 27000")
   asked(ex("use the best resolution method"), "best")
 end
