@@ -19835,6 +19835,22 @@ function G.setting_left_as_is(text)
   end
   return text
 end
+-- "descend to eight thousand ... metres", "8000... feet": a unit said after a pause (an ellipsis) straight after a
+-- number is that number's unit (read as "8000 metres"; left apart, the value was read in feet and the unit lost).
+G.pause_units = set_of({ "metres", "meters", "metre", "meter", "m", "feet", "foot", "ft", "knots", "kts", "kt" })
+function G.unit_after_pause(text)
+  if not (text:find("...", 1, true) or text:find("\u{2026}")) then return text end
+  return (text:gsub("(%w)%s*%.%.%.+%s*(%a+)()", function(last, unit, e)
+    local after = text:sub(e, e)
+    if not G.pause_units[unit:lower()] or after:match("%w") then return nil end
+    if not (last:match("%d") or NUMBER_WORDS[(text:sub(1, e):match("(%a+)%s*%.%.%.+%s*%a+$") or ""):lower()]) then
+      return nil
+    end
+    return last .. " " .. unit
+  end):gsub("(%w)%s*\u{2026}%s*(%a+)", function(last, unit)
+    if G.pause_units[unit:lower()] and last:match("%d") then return last .. " " .. unit end
+  end))
+end
 -- "descend FL80, as it passes FL150 slow 250": "as" before a subject and a verb of passing or reaching is "when"
 -- (lexicon.condition's word); "..., once passing FL100 make it 220 kts": "make it" between a level (FLnnn, or a
 -- number and feet) that closes a condition and a speed with its unit is the speed's instruction, "speed".
@@ -20055,7 +20071,7 @@ function M.translate(text, world)
   local kept_ask
   text, kept_ask = G.setting_left_as_is(text)
   if kept_ask then return { commands = {}, ask = kept_ask } end
-  text = G.id_label(G.condition_as_and_make_it(G.verb_after_rate(G.hold_after_ff(G.time_before_fast(numbered_steps(G.title_label(G.spoken_ddmm(G.spoken_zeros(G.number_words_apart(text))))))))), world)
+  text = G.id_label(G.unit_after_pause(G.condition_as_and_make_it(G.verb_after_rate(G.hold_after_ff(G.time_before_fast(numbered_steps(G.title_label(G.spoken_ddmm(G.spoken_zeros(G.number_words_apart(text)))))))))), world)
   local said_conflict = G.said_conflict(text)
   if said_conflict then return { commands = {}, ask = said_conflict } end
   text = G.spoken_triples_to(text)

@@ -119,8 +119,8 @@ return {
         "aiyah", "aiya", "aiyoh", "aiyo",
         -- (and a Dutch speaker's "let me see", "even kijken, turn right 20 degrees"; a Swiss speaker's tag, "gell")
         "kijken", "gell",
-        -- (and a Turkish speaker's "okay?", "tamam")
-        "tamam",
+        -- (and a Turkish speaker's "okay?", "tamam"; a Belgian speaker's "come on", "allez")
+        "tamam", "allez",
         -- (a value said loosely, "250-ish", "like 250ish": the value said is the one flown, as "roughly 250")
         "ish", "afterwards", "afterward", "meanwhile", "completely", "fully",
         -- (a report's order of events and degree: "was subsequently given", "disable it altogether"; a first level
@@ -2841,8 +2841,8 @@ return {
     -- speaker, "pactor", "pipty", is grammar.lua's G.p_said_f)
     desen = "descend", tuhn = "turn", leveo = "level", thousan = "thousand", fie = "five", fai = "five",
     confli = "conflict",
-    -- (Korean: "jero" for zero)
-    jero = "zero",
+    -- (Korean: "jero" for zero; Polish: "derect")
+    jero = "zero", derect = "direct",
     -- (Arabic: "disend"; a /p/ said /b/, "blease", "broceed", is grammar.lua's G.p_said_b)
     disend = "descend",
     -- (Turkish and Persian: a /v/ said /w/, "flight lewel")
@@ -2911,6 +2911,17 @@ return {
     { heard = { "tu" }, means = "two", between = { { "#number" }, { "#number" } } },
     { heard = { "not" }, means = "knots", closed_after = { "#number" } },
     { heard = { "tie" }, means = "thai", before = { "#number" } },
+    -- (a Polish, Czech or Slovak accent: "hitting" for heading, "spit" for speed, "nuts" for knots, "loft hansa")
+    { heard = { "hitting" }, means = "heading", before = { "#number" },
+      after = { "present", "say", "your", "right", "left", "turn", "the", "current", "is", "fly" } },
+    { heard = { "hitting" }, means = "heading", closed_after = { "present", "say", "your", "current" } },
+    { heard = { "spit" }, means = "speed", before = { "#number" },
+      after = { "reduce", "increase", "maintain", "say", "your", "the", "present", "current", "is" } },
+    { heard = { "spit" }, means = "speed", closed_after = { "say", "your", "present", "current" } },
+    { heard = { "nuts" }, means = "knots", after = { "#number" } },
+    { heard = { "loft hansa", "luft hansa" }, means = "lufthansa", before = { "#number" } },
+    -- (a Dutch or Flemish accent: "proceed the rect SPY", "de rect")
+    { heard = { "the rect", "de rect" }, means = "direct", after = { "proceed", "fly", "route", "go", "then", "and" } },
     { heard = { "men tain" }, means = "maintain", before = { "#number", "flight", "fly", "level", "altitude", "heading",
       "speed", "present", "mach" } },
     { heard = { "lever" }, means = "level", after = { "flight", "fly" } },

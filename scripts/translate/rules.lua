@@ -555,6 +555,16 @@ return function(intent, rule, words)
   -- "lose the Air Europa", "lose KLM12": an aircraft that flies lost from the simulation, nothing after it
   -- ("lose 2000 feet", "lose the speed" name no aircraft)
   rule { "lose", "delete", when = function(g, i) return aircraft_alone(g, g:skip_fillers(i + 1), true) end }
+  -- "erase the American 918", "eliminate the Taca 580 of the simulation" (Spanish "eliminar", "borrar"): an aircraft
+  -- that flies, nothing after it but "from" or "of" and the simulation
+  rule { "erase eliminate", "delete", when = function(g, i)
+    local k = g:skip_fillers(i + 1)
+    if aircraft_alone(g, k, true) then return true end
+    local r = g:refs_in(k, k + 1, "aircraft")[1]
+    if not (r and r.b == k and r.exists and g:word(r.e, "from of")) then return false end
+    local x = g:skip_fillers(r.e + 1)
+    return g:word(x, "@sim") and g:skip_fillers(x + 1) > #g.t
+  end }
   -- ("KLM1234 should drop to 250 knots": a speed's unit straight after the value names the speed dropped)
   rule { "drop", "spd", near = { 3, "knots kts kt knot" } }
   rule { "drop", "alt", not_near = { 2, "speed" } }

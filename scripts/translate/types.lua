@@ -286,6 +286,7 @@ function M.build(designators)
           for _, s in ipairs(spellings(a, maker)) do
             add(rows, seen, makers, maker, s, d)
             given[#given + 1] = { s, d }
+            if s:match("^%d+%a+$") then phrases[#phrases + 1] = { s, d } end
           end
           if a:find(" ") then
             phrases[#phrases + 1] = { a:lower(), d }
@@ -301,8 +302,9 @@ function M.build(designators)
       for _, sp in ipairs(spellings(n[2], n[1])) do
         add(rows, seen, makers, n[1], sp, d)
         given[#given + 1] = { sp, d }
-        -- ("a320 neo", "320 neo": the variant said apart is a name of several words too)
-        if sp:find(" ") and not n[2]:find(" ") then phrases[#phrases + 1] = { sp, d } end
+        -- ("a320 neo", "320 neo": the variant said apart is a name of several words too; "320neo", digits glued to
+        -- letters, which the lexer reads apart, is joined as a phrase)
+        if (sp:find(" ") and not n[2]:find(" ")) or sp:match("^%d+%a+$") then phrases[#phrases + 1] = { sp, d } end
       end
       -- several words, or digits joined by a hyphen the lexer splits ("dash 8-400")
       if n[2]:find(" ") then

@@ -24649,3 +24649,24 @@ do
   check_eq(ex("MAS1 climb angels twenty seven, buster"), "ALT MAS1 27000")
   asked(ex("use the best resolution method"), "best")
 end
+
+-- Cycle 83 (R510, R511, R513, R515): a Polish or Czech recogniser's "hitting", "spit", "nuts", "loft hansa" ("maintain
+-- present hitting" held the altitude, silently); a Dutch recogniser's "proceed the rect"; "erase" and "eliminate" an
+-- aircraft; "Airbus 320neo" (the neo was dropped); a unit said after a pause ("descend to eight thousand ... metres"
+-- descended to 8000 ft)
+do
+  local _, ex = scene({ "CRE EWG6HN A320 50.0 14.0 020 7000 250", "CRE DLH7KA A320 50.1 14.2 180 FL200 280",
+    "CRE CSC3411 A320 30.5 104.0 090 FL300 280", "DEFWPT LOBOS 19.5 -99.0" })
+  check_eq(ex("eurowings six hotel november maintain present hitting"), "HDG EWG6HN 20")
+  check_eq(ex("eurowings six hotel november reduce spit two one zero nuts"), "SPD EWG6HN 210")
+  check_eq(ex("loft hansa seven kilo alpha turn right hitting zero niner zero"), "HDG DLH7KA 90 RIGHT")
+  check_eq(ex("erase eurowings six hotel november"), "DEL EWG6HN")
+  check_eq(ex("eliminate the Lufthansa 7KA of the simulation"), "DEL DLH7KA")
+  asked(ex("eliminate the conflict"), "no aircraft")
+  check_eq(ex("create an Airbus 320neo Volaris 3415 over LOBOS heading 360 flight level 120 speed 250"),
+    "CRE VOI3415 A20N LOBOS 360 FL120 250")
+  check_eq(ex("Sichuan 3411 descend to eight thousand ... metres"), "ALT CSC3411 26200")
+  check_eq(ex("CSC3411 descend to 8000 ... reduce 250"), "ALT CSC3411 8000 ; SPD CSC3411 250")
+  local _, nex = navscene({ "CRE KLM1234 B738 52.3 4.6 090 FL100 250" }, "a Dutch recogniser's direct-to")
+  if nex then check_eq(nex("klm one two three four proceed the rect spijkerboor"), "ADDWPT KLM1234 SPY ; DIRECT KLM1234 SPY") end
+end
