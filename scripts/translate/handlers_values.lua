@@ -1248,7 +1248,7 @@ return function(H, f, wrap, compass)
       if r and r.b == hw + 2 then
         faced = r.name:upper()
       -- (a filler is no place: "heading to the route" faces no navaid THE)
-      elseif t.kind == "word" and t.alpha and not t.filler and not self.u:used(hw + 2) then
+      elseif t and t.kind == "word" and t.alpha and not t.filler and not self.u:used(hw + 2) then
         local a = self:state(ids[1])
         for _, n in ipairs(self.world.waypoints or {}) do
           if n:upper() == t.text:upper() then faced = n:upper() end

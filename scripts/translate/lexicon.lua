@@ -2763,7 +2763,8 @@ return {
                   fife = "5", six = "6", seven = "7", eight = "8", nine = "9", niner = "9" },
   -- the phonetic alphabet (spelled waypoint names)
   phonetic = {
-    alpha = "A", alfa = "A", bravo = "B", charlie = "C", charly = "C", delta = "D", echo = "E", foxtrot = "F", golf = "G",
+    alpha = "A", alfa = "A", bravo = "B", charlie = "C", charly = "C", delta = "D", echo = "E", foxtrot = "F",
+    foxtrott = "F", golf = "G",
     hotel = "H", india = "I", juliet = "J", juliett = "J", juliette = "J", kilo = "K", lima = "L", mike = "M",
     november = "N", oscar = "O", papa = "P", quebec = "Q", romeo = "R", sierra = "S", tango = "T",
     uniform = "U", victor = "V", whiskey = "W", whisky = "W", xray = "X", yankee = "Y", zulu = "Z",
@@ -2879,7 +2880,7 @@ return {
     { heard = { "throw in", "chuck in" }, means = "add", before = { "#number", "a", "an", "another", "some", "more" } },
     -- ("turn lift heading three four zero": a recogniser's "left")
     { heard = { "lift", "loft", "laughed" }, means = "left", after = { "turn" } },
-    { heard = { "the send", "this end", "the scent", "decent", "dissent", "diss end" }, means = "descend",
+    { heard = { "the send", "this end", "the scent", "the scend", "decent", "dissent", "diss end" }, means = "descend",
       before = { "#number", "flight", "level", "altitude", "to", "fly", "and" } },
     -- (a Japanese or Korean accent: "turn ride", "turn light" (four writers of five); "plight level", "fright revel",
     -- "flight rebel", "flight label"; "crime and maintained"; "maintenance flight level"; "descend pour thousand";
@@ -2924,7 +2925,10 @@ return {
     { heard = { "the rect", "de rect" }, means = "direct", after = { "proceed", "fly", "route", "go", "then", "and" } },
     { heard = { "men tain" }, means = "maintain", before = { "#number", "flight", "fly", "level", "altitude", "heading",
       "speed", "present", "mach" } },
-    { heard = { "lever" }, means = "level", after = { "flight", "fly" } },
+    { heard = { "lever", "liver" }, means = "level", after = { "flight", "fly" } },
+    -- ("switch off l nav", "v nav on": the switch's letters said apart)
+    { heard = { "l nav" }, means = "lnav", before = { "on", "off", "#known" }, after = { "off", "on", "the", "your", "of" } },
+    { heard = { "v nav" }, means = "vnav", before = { "on", "off", "#known" }, after = { "off", "on", "the", "your", "of" } },
     { heard = { "a sas" }, means = "asas", after = { "on", "off" }, before = { "on", "off" } },
     { heard = { "sick" }, means = "six", between = { { "#number" }, { "#number", "knots", "thousand", "hundred" } } },
     { heard = { "sick" }, means = "six", between = { { "#known" }, { "#number" } } },

@@ -24667,6 +24667,19 @@ do
     "CRE VOI3415 A20N LOBOS 360 FL120 250")
   check_eq(ex("Sichuan 3411 descend to eight thousand ... metres"), "ALT CSC3411 26200")
   check_eq(ex("CSC3411 descend to 8000 ... reduce 250"), "ALT CSC3411 8000 ; SPD CSC3411 250")
+  -- ("turn left hitting to", the request ending on "heading to": asked, where it failed on the missing word)
+  asked(ex("EWG6HN turn left heading to"), "heading to, nothing after")
   local _, nex = navscene({ "CRE KLM1234 B738 52.3 4.6 090 FL100 250" }, "a Dutch recogniser's direct-to")
   if nex then check_eq(nex("klm one two three four proceed the rect spijkerboor"), "ADDWPT KLM1234 SPY ; DIRECT KLM1234 SPY") end
+end
+
+-- Cycle 83 (R516, R519): an East African recogniser's "flight liver", "the scend", "switch off l nav"; a German
+-- recogniser's "foxtrott"
+do
+  local _, ex = scene({ "CRE QTR1341 B77W -1.3 36.9 090 FL300 290", "CRE ETH500 B788 9.0 38.8 180 FL350 290",
+    "CRE AUA67F A320 48.1 16.5 090 FL200 280" })
+  check_eq(ex("qatari one three four one climb flight liver three eight zero"), "ALT QTR1341 FL380")
+  check_eq(ex("ethiopian five hundred switch off l nav"), "LNAV ETH500 OFF")
+  check_eq(ex("ethiopian five hundred the scend flight level two four zero"), "ALT ETH500 FL240")
+  check_eq(ex("austrian six seven foxtrott turn left heading two six zero"), "HDG AUA67F 260 LEFT")
 end
