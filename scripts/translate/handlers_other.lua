@@ -4624,6 +4624,20 @@ return function(H, f, compass)
         return true
       end
     end
+    -- ("zone radius?", "and rfach?", "rfacv value pls", "list lookahead and reso": a setting named in a few words
+    -- (six at most) with a question mark closing the request, or with "value", "list" or "current", no value, no
+    -- modal or courtesy opening it ("could you restrict ...?" asks for a change) and no verb of setting said)
+    local words = 0
+    for k = 1, #self.t do words = words + (self.t[k].kind == "word" and 1 or 0) end
+    if value and words <= 6 and #self:quantities(1, #self.t + 1) == 0
+        and not self:word_in(1, #self.t + 1, "could can would will shall may please kindly let should must")
+        and not self:word_in(1, #self.t + 1, "@setting_verbs "
+        .. "set change increase decrease double halve raise lower make put reduce use enable disable activate") then
+      local last = self.t[#self.t]
+      if (last.kind == "punct" and last.text == "?") or self:word_in(1, #self.t + 1, "value values list current") then
+        return true
+      end
+    end
     -- (a question: "is ... on?", "what is ...?", "can you check which/whether ...?"; its first sentence, a
     -- remark may follow: "Is the conflict detection on now? I can't see any alerts.")
     local ends = self:first_sentence_end()
@@ -5539,15 +5553,21 @@ return function(H, f, compass)
       for k = e - 1, b, -1 do
         local named = self:registry_word(k)  -- ("rfacv 1.1", "hrfac 1.2": the command's own name)
         if named == "RFACH" or named == "RFACV" then return { named } end
-        local v, h = self:word(k, "vertical"), self:word(k, "horizontal lateral")
-        if (v or h) and self:word(k - 1, "and") and self:word(k - 2, v and "horizontal lateral" or "vertical") then
+        -- ("vert", "hor", "v", "h": the directions typed short)
+        local v, h = self:word(k, "vertical vert v"), self:word(k, "horizontal lateral hor h")
+        if (v or h) and self:word(k - 1, "and") and self:word(k - 2, v and "horizontal lateral hor h" or "vertical vert v") then
+          self:explain(k - 2, k + 1)
           return { "RFACH", "RFACV" }
         end
+        if v or h then self:explain(k, k + 1) end
         if v then return { "RFACV" } end
         if h then return { "RFACH" } end
       end
       return nil
     end
+    -- ("MVP horizontal margin 1.2": the method named before the factor's direction is whose factor it is)
+    local m_at = self:skip_fillers(1)
+    if self:word(m_at, "mvp") and m_at < s.trig and not self:intent_at(m_at) then self:explain(m_at, m_at + 1) end
     local function emit_all(cmds, value)
       for _, cmd in ipairs(cmds) do self:emit(cmd .. (value and " " .. f.num(value) or "")) end
     end
@@ -5566,12 +5586,18 @@ return function(H, f, compass)
         -- "in" before it; a margin's after the noun, "add 10% margin on the horizontal resolution")
         -- ("resolution margin 1.05 horizontal and vertical", "1.2 vertical, 1.1 horizontal": the kinds straight
         -- after it, no value after them, are its own)
-        local ke = self:word(q.e + 1, "and") and self:word(q.e + 2, "horizontal lateral vertical") and q.e + 3 or q.e + 1
-        local after = self:word(q.e, "horizontal lateral vertical") and #self:quantities(ke, ke + 1) == 0
+        -- ("margins 1.05 both h and v": "both" before them)
+        local ka = self:word(q.e, "both") and q.e + 1 or q.e
+        local ke = self:word(ka + 1, "and") and self:word(ka + 2, "horizontal lateral vertical hor vert h v") and ka + 3
+          or ka + 1
+        local after = self:word(ka, "horizontal lateral vertical hor vert h v") and #self:quantities(ke, ke + 1) == 0
           and kind(math.min(s.e, ke))
+        if after and ka > q.e then self:explain(q.e, ka) end
         local cmd = after or kind(q.b) or (self:word(q.e, "for in") and kind(math.min(s.e, q.e + 4)))
           or (margin and self:word(s.trig + 1, "on for of to in") and kind(math.min(s.e, s.trig + 5)))
         local value = margin and 1 + q.value / 100 or q.value
+        -- ("reso mvp, margins 1.05": the plural with no direction said names both)
+        if not cmd and self:word(s.trig, "margins") and factor then cmd = { "RFACH", "RFACV" } end
         if not cmd then
           return self:need(string.format("Should the horizontal or the vertical safety factor be %s?", f.num(value)))
         end
@@ -5600,6 +5626,8 @@ return function(H, f, compass)
   -- (both read their request whole: "allow vertical manoeuvres in the MVP resolutions", "resume nav
   -- once past cpa" say nothing else)
   function m:reso_vertical(s)
+    -- ("which vertical reso method", "vertical resolution?": the setting asked about, shown)
+    if self:asks_setting(true) and not self:word_in(1, #self.t + 1, "@on @off") then return self:emit("RMETHV") end
     -- ("rmethv off", "reso MVP, rmethv on": the command's own name, and the switch said after it)
     if self:registry_word(s.trig) and self:word(s.trig + 1, "on off") then
       self:emit(self:word(s.trig + 1, "off") and "RMETHV OFF" or "RMETHV V/S")

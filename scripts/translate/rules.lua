@@ -4141,6 +4141,8 @@ return function(intent, rule, words)
   end }
   -- "vertical resolution factor 1.1", "horizontal reso safety factor to 1.15": the safety factor
   -- ("resolution factors: horizontal 1.2, vertical 1.1": both named by the plural)
+  -- ("reso mvp, margins 1.05": the method named straight after the word is set, whatever factor is said beside it)
+  rule { "reso resolution", "reso", next = "mvp" }
   rule { "resolution resolve reso resolutions resolver", false, near = { 3, "factor factors" } }
   rule { "factor factors", "rfac", prev = { 4, "resolution resolutions reso resolve safety" } }
   -- "give the horizontal resolutions a 20 percent margin": the safety factor said as a margin in percent
@@ -4154,6 +4156,14 @@ return function(intent, rule, words)
   -- direction is the resolutions')
   rule { "factor", "rfac", prev = { 1, "horizontal lateral vertical" }, when = function(g, i)
     return g:word_in(1, i, "resolution resolutions reso resolve mvp") or not g:has_ref(1, #g.t + 1, "aircraft")
+  end }
+  -- ("vert margin 1.2", "hor margin back to default 1.05", "margin h to 1.2", "margins 1.05 both h and v": a margin of
+  -- a direction, short or long, no aircraft named, is the resolutions' safety factor)
+  rule { "margin margins", "rfac", when = function(g, i)
+    if g:has_ref(1, #g.t + 1, "aircraft") then return false end
+    return g:word(i - 1, "horizontal lateral vertical hor vert h v")
+      or g:word(i + 1, "horizontal lateral vertical hor vert h v") or g:word(i + 1, "factor")
+      or (g:word(i, "margins") and g:word_in(i + 1, math.min(#g.t + 1, i + 6), "both"))
   end }
   -- (the resolution said of the vertical ones, "let MVP use vertical speed in the resolutions", sets no method;
   -- one switched on in a clause of its own, "turn on MVP resolution and let it use vertical too", does: RESO

@@ -24683,3 +24683,24 @@ do
   check_eq(ex("ethiopian five hundred the scend flight level two four zero"), "ALT ETH500 FL240")
   check_eq(ex("austrian six seven foxtrott turn left heading two six zero"), "HDG AUA67F 260 LEFT")
 end
+
+-- Cycle 83 (R518): a researcher's conflict-resolution settings in lab shorthand: margins of a direction typed short
+-- ("vert margin 1.2", "margins 1.05 both h and v", the plural alone naming both), a setting asked by its name and a
+-- question mark or "value" ("zone radius?", "rfacv value pls", "list lookahead and reso"), "which vertical reso
+-- method" (it switched the method on); "MVP" alone stays asked
+do
+  local _, ex = scene({ "CRE KLM1234 B738 52.4 4.6 090 FL200 250" })
+  check_eq(ex("vert margin 1.2"), "RFACV 1.2")
+  check_eq(ex("hor margin back to default 1.05"), "RFACH 1.05")
+  check_eq(ex("margins 1.05 both h and v"), "RFACH 1.05 ; RFACV 1.05")
+  check_eq(ex("reso mvp, margins 1.05"), "RESO MVP ; RFACH 1.05 ; RFACV 1.05")
+  check_eq(ex("vert margin 1.5, hor 1.3"), "RFACV 1.5 ; RFACH 1.3")
+  check_eq(ex("zone radius?"), "ZONER")
+  check_eq(ex("rfacv value pls"), "RFACV")
+  check_eq(ex("list lookahead and reso"), "DTLOOK ; RESO")
+  check_eq(ex("which vertical reso method"), "RMETHV")
+  asked(ex("MVP"), "the method named alone")
+  -- (a value or a verb of setting said: no question)
+  check_eq(ex("lookahead 300"), "DTLOOK 300")
+  asked(ex("increase lookahead?"), "a change with no amount")
+end
