@@ -2275,6 +2275,18 @@ return function(H, f, compass)
             for _, c in ipairs(found) do
               if (not near or c.nm < L.region_ratio * first.nm) and #ids < 4 then ids[#ids + 1] = c.id end
             end
+            -- ("London Heathrow", "Paris Orly": a city's airports, one named by the word after the city)
+            local nx = #ids > 1 and self.t[i + n]
+            if nx and nx.kind == "word" and nx.alpha and w.airports_named then
+              for _, id in ipairs(w.airports_named(nx.text) or {}) do
+                for _, c in ipairs(ids) do
+                  if c == id then
+                    self:explain_place(i, self:word(i + n + 1, "@airport_nouns") and i + n + 2 or i + n + 1)
+                    return id
+                  end
+                end
+              end
+            end
             self:explain_place(i, self:word(i + n, "@airport_nouns") and i + n + 1 or i + n)
             if #ids > 1 then
               self:need(string.format("Which airport is '%s': %s?", self:raw(i, i + n), table.concat(ids, " or ")))

@@ -24704,3 +24704,14 @@ do
   check_eq(ex("lookahead 300"), "DTLOOK 300")
   asked(ex("increase lookahead?"), "a change with no amount")
 end
+
+-- Cycle 83 (R521): a city's airports, one named by the word after the city ("London Heathrow", "London Gatwick");
+-- the city alone is still asked
+do
+  local _, nex = navscene({ "CRE BAW2PW A320 50.0 -2.0 090 FL340 280" }, "a city's airport named after it")
+  if nex then
+    check_eq(nex("Speedbird two Papa Whiskey, your destination is now London Heathrow"), "DEST BAW2PW EGLL")
+    check_eq(nex("BAW2PW destination London Gatwick airport"), "DEST BAW2PW EGKK")
+    asked(nex("BAW2PW destination London"), "London's airports")
+  end
+end
