@@ -265,7 +265,10 @@ function M.build(designators)
   local list = {}
   for _, t in ipairs(squawk.sim.types()) do list[#list + 1] = t end
   for _, d in ipairs(designators or {}) do list[#list + 1] = { designator = d } end
-  for _, t in ipairs(require("translate.names").titles) do list[#list + 1] = { designator = t[1], title = t[2] } end
+  -- (a title of names.titles names its model, never a maker's aircraft: "the Cessna" is no Citation Excel)
+  for _, t in ipairs(require("translate.names").titles) do
+    list[#list + 1] = { designator = t[1], title = t[2], titled = true }
+  end
   local families = {}
   for _, t in ipairs(list) do
     local d = t.designator:upper()
@@ -284,7 +287,7 @@ function M.build(designators)
         for _, a in ipairs(alts) do
           a = a:gsub("^%s+", ""):gsub("%s+$", "")
           for _, s in ipairs(spellings(a, maker)) do
-            add(rows, seen, makers, maker, s, d)
+            add(rows, seen, t.titled and {} or makers, maker, s, d)
             given[#given + 1] = { s, d }
             if s:match("^%d+%a+$") then phrases[#phrases + 1] = { s, d } end
           end
