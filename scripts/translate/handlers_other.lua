@@ -2097,6 +2097,14 @@ return function(H, f, compass)
               if n:upper() == r:upper() then held[#held + 1] = n end
             end
           end
+          -- ("direct Quimper" with QPR, "QUIMPER PLUGUFFAN", in the route and the NDB RQ named "QUIMPER" alone: the
+          -- one navaid of the route whose name holds the words said, before another named by them whole)
+          local with = #ids >= 1 and #held == 0 and a.route and #a.route > 0 and self.world.navaids_with_words
+          for _, n in ipairs(with and with(phrase, a.lat, a.lon, range_nm or L.navaid_range_nm) or {}) do
+            for _, r in ipairs(a.route) do
+              if n:upper() == r:upper() then held[#held + 1] = n end
+            end
+          end
           if #held == 1 then ids = held end
           local id = self:one_named(ids, "navaid", phrase, math.huge)
           if id then

@@ -24714,4 +24714,12 @@ do
     check_eq(nex("BAW2PW destination London Gatwick airport"), "DEST BAW2PW EGKK")
     asked(nex("BAW2PW destination London"), "London's airports")
   end
+  -- ("direct Quimper" with QPR, "QUIMPER PLUGUFFAN", in the route: that VOR, not the NDB RQ named "QUIMPER")
+  local _, qex = navscene({ "CRE BAW2PW B772 48.50 -5.50 240 FL380 290", "ADDWPT BAW2PW QPR", "ADDWPT BAW2PW ERIGA" },
+    "a route's navaid by the first words of its name")
+  if qex then
+    check_eq(qex("Speedbird two Papa Whiskey direct Quimper"), "DIRECT BAW2PW QPR")
+    check_eq(qex("Speedbird two Papa Whiskey, at Quimper descend flight level three four zero"),
+      "AT BAW2PW QPR DO ALT BAW2PW FL340")
+  end
 end
