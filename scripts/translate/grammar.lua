@@ -222,7 +222,7 @@ local function know_all(v, seen)
       or v == lexicon.listener_address or v == lexicon.judged_values or v == lexicon.kept_from or v == lexicon.ml_labels
       or v == lexicon.speed_direction_verbs or v == lexicon.wish_evaluative or v == lexicon.wish_negation
       or v == lexicon.same_given or v == lexicon.same_compared or v == lexicon.french_in_english
-      or v == lexicon.digit_words then
+      or v == lexicon.digit_words or v == lexicon.letter_names then
     return
   end
   seen[v] = true
@@ -541,15 +541,45 @@ function G.vowel_after(w)
   local stem = w:sub(1, -2)
   return RULES_BY_WORD[stem] and stem or nil
 end
--- lexicon.accented's words, a /p/ said /b/ (G.p_said_b), an /f/ said /p/ (G.p_said_f) and a vowel after a word
--- (G.vowel_after), read as the English words they are (a word in capitals stays as typed).
+-- A speaker's sounds a recogniser writes with other letters: a word that no list knows is the word spelled with "w" for
+-- its "v" ("vith", "vhen", "vaypoint", "tvo", "vizz"), "c" for its "k" ("klimb", "direkt", "inkrease", "kroatia"),
+-- an "r" or "f" written twice ("turrn", "lefft", "frrance", the rolled r) or a number's "th" written "t" ("tousand",
+-- "tirty"), as Romanian, Hungarian, Bulgarian, Serbian and Croatian speakers are written; or with "l" for one "r" or
+-- "r" for one "l" ("fright revel", "confrict resorution", "lesume", as Mandarin speakers are). The word it becomes is
+-- a number word or an instruction word (G.instruction_word; four letters or more, five for "l" and "r"), or a word
+-- squawk knows (six letters or more with "c" for "k", five written twice, four with "w"); else nil ("kas", "ried",
+-- "road", "dirty" stay).
+function G.letters_swapped(w)
+  if #w < 3 or KNOWN[w] or HEARD[w] or not w:match("^%l+$") then return nil end
+  local function fits(x, instruction_len, known_len)
+    return x ~= w and (NUMBER_WORDS[x] or (#w >= instruction_len and G.instruction_word(x))
+      or (#w >= known_len and KNOWN[x])) and x or nil
+  end
+  local found = fits((w:gsub("v", "w")), 4, 4) or fits((w:gsub("k", "c")), 4, 6)
+    or (w:match("^t") and NUMBER_WORDS["th" .. w:sub(2)] and "th" .. w:sub(2))
+  -- (one letter swapped where the word has two: "tvelve"; the others the same)
+  for i = 1, #w do
+    local c, rest = w:sub(i, i), w:sub(i + 1)
+    local head = w:sub(1, i - 1)
+    found = found or (c == "v" and fits(head .. "w" .. rest, 4, 4)) or (c == "k" and fits(head .. "c" .. rest, 4, 6))
+      or (c == "r" and fits(head .. "l" .. rest, 5, math.huge)) or (c == "l" and fits(head .. "r" .. rest, 5, math.huge))
+      or ((c == "r" or c == "f") and rest:sub(1, 1) == c and fits(head .. rest, math.huge, 5)) or nil
+  end
+  return found
+end
+-- lexicon.accented's words, a /p/ said /b/ (G.p_said_b), an /f/ said /p/ (G.p_said_f), a vowel after a word
+-- (G.vowel_after) and letters swapped (G.letters_swapped), read as the English words they are (a word in capitals
+-- stays as typed).
+function G.accented_word(w)
+  return lexicon.accented[w] or G.p_said_b(w) or G.p_said_f(w) or G.vowel_after(w) or G.letters_swapped(w)
+end
 function G.accented(text)
   local toks, bare = plain_words(text)
-  local any = any_of(bare, lexicon.accented)
-  for k = 1, #bare do any = any or (G.p_said_b(bare[k]) or G.p_said_f(bare[k]) or G.vowel_after(bare[k])) ~= nil end
+  local any = false
+  for k = 1, #bare do any = any or G.accented_word(bare[k]) ~= nil end
   if not any then return text end
   return tokens.rewrite(text, toks, function(i)
-    local en = lexicon.accented[bare[i]] or G.p_said_b(bare[i]) or G.p_said_f(bare[i]) or G.vowel_after(bare[i])
+    local en = G.accented_word(bare[i])
     if not en or toks[i]:match("^%u%u") then return nil end
     return en .. (toks[i]:match("%p+$") or ""), i + 1
   end)
@@ -3690,6 +3720,9 @@ end
 G.mind_gerunds_kept = { hav = true, mak = true, lett = true, gett = true, ask = true, tak = true }
 -- the values "present" or "current" is said of, once for two joined by "and" (written_forms)
 G.present_values = { speed = true, heading = true, level = true, altitude = true }
+-- Words after which a letter and digits ("L1", "R2") are a shape's name (written_forms)
+G.shape_name_before = { line = true, box = true, circle = true, polygon = true, poly = true, named = true,
+  called = true, name = true }
 local function written_forms(text, world)
   -- (each pattern pass runs through where(): only where `low`, the text in lower case, holds what the
   -- pattern requires, its first argument; a rewrite outside where() sets `low` again)
@@ -3997,8 +4030,12 @@ local function written_forms(text, world)
     return dir .. space .. digits .. " ft"
   end)
   low = text:lower()
-  where("%a%d", "%f[%w](%a+)(%d+)%f[^%w%.]", function(pre, digits)
+  where("%a%d", "()%f[%w](%a+)(%d+)%f[^%w%.]", function(at, pre, digits)
     local w = sh[pre:lower()]
+    -- ("line L1 from 50.8 4.0 to 51.0 5.0", "a box called R2": a shape's name after its noun or a naming word is
+    -- that name, no turn or speed)
+    local before = text:sub(1, at - 1):lower():match("(%a+)%s*$")
+    if before and G.shape_name_before[before] then return nil end
     return w and (w .. " " .. digits) or nil
   end)
   where("%a%s+%d", "()%f[%w](%a+)(%s+)(%d)", function(at, pre, space, digit)
@@ -4046,6 +4083,18 @@ local function written_forms(text, world)
     end)
   end
   where("a thousand", "%f[%a][Aa] ([Tt][Hh][Oo][Uu][Ss][Aa][Nn][Dd])%f[%A]", "one %1")
+  -- "rate thousand five hundred": a count of thousands left unsaid before the hundreds after it is one (after a digit's
+  -- homophone, "descend too thousand five hundred", that is the count)
+  where("thousand", "()%f[%a]([Tt][Hh][Oo][Uu][Ss][Aa][Nn][Dd]%s+(%a+)%s+[Hh][Uu][Nn][Dd][Rr][Ee][Dd])%f[%A]",
+    function(at, said, digit)
+      local before = text:sub(1, at - 1):lower():match("([%w%.]+)%W*$")
+      local d = G.said_digit[digit:lower()]
+      if not d or d == "0" or (before and (NUMBER_WORDS[before] or lexicon.digit_homophones[before]
+          or before:match("%d"))) then
+        return nil
+      end
+      return "one " .. said
+    end)
   where("a hundred", "%f[%a][Aa] ([Hh][Uu][Nn][Dd][Rr][Ee][Dd])%f[%A]", "one %1")
   -- ("set conflict vertical zone thousand feet", "3 mile radius, thousand feet", "thousand feet vertical": "thousand
   -- feet" opening the text or a clause after a mark, or after a word that is no number, nor a word heard for a
@@ -18621,6 +18670,135 @@ local function spelled_airports(text, world)
     return code, i + 4
   end)
 end
+-- "bump the lookahead up a minute", "halve the zone", "make it twice as fast", "zone height plus 200 feet": a setting
+-- of lexicon.relative_settings changed by a factor, or by an amount up or down, in a clause of its own (set off by a
+-- mark, a dash, a "#", "and" or "then"), is that setting's command with the value it comes to from its value now
+-- (world.setting): "DTLOOK 360". A value said after "to" (lexicon.relative_settings.before_value) or straight after
+-- the setting's name is the value itself, and
+-- a clause with another number, with no value now to read, that says no way up or down or a unit of another setting,
+-- or whose value comes to zero or less, stays as said (asked).
+G.clause_openers = { ["-"] = true, ["\u{2013}"] = true, ["and"] = true, ["then"] = true }
+function G.relative_settings(text, world)
+  local R = lexicon.relative_settings
+  if not world.setting then return text end
+  local low = text:lower()
+  local factor_or_change = false
+  for w in low:gmatch("%a+") do factor_or_change = factor_or_change or R.factors[w] or R.up[w] or R.down[w] end
+  if not factor_or_change and not low:find("as fast", 1, true) and not low:find("in half", 1, true)
+      and not low:find("half the", 1, true) then
+    return text
+  end
+  local words = {}  -- { b =, e = (text positions), raw =, w = (lower case, marks stripped) }
+  for b, raw, e in text:gmatch("()(%S+)()") do
+    words[#words + 1] = { b = b, e = e, raw = raw, w = raw:lower():gsub("^%(", ""):gsub("%p+$", "") }
+  end
+  local function phrase(i, n)
+    local out = {}
+    for k = i, i + n - 1 do out[#out + 1] = words[k].w end
+    return table.concat(out, " ")
+  end
+  -- the amount at i: digits, number words ("two hundred", "thirty") or "a"/"an" before a unit -> value, next index
+  local function amount(i)
+    local w = words[i] and words[i].w
+    if not w then return nil end
+    if w:match("^%d+%.?%d*$") then return tonumber(w), i + 1 end
+    if (w == "a" or w == "an") and words[i + 1] and R.units[words[i + 1].w] then return 1, i + 1 end
+    local total, k = nil, i
+    while words[k] and (G.below_hundred[words[k].w] or (total and words[k].w == "hundred")) do
+      total = words[k].w == "hundred" and total * 100 or (total or 0) + G.below_hundred[words[k].w]
+      k = k + 1
+    end
+    return total, k
+  end
+  -- the clause of words b .. e - 1 -> "CMD value", or nil
+  local function rewrite(b, e)
+    local cmd, factor, sign, size, unit, numbers = nil, nil, 0, nil, nil, 0
+    local i = b
+    while i < e do
+      local n = 4
+      while n > 0 and not (i + n <= e and (R.names[phrase(i, n)] or R.factors[phrase(i, n)])) do n = n - 1 end
+      local w = words[i].w
+      if n > 0 then
+        local p = phrase(i, n)
+        if R.names[p] then cmd = (cmd and cmd ~= R.names[p]) and "two" or R.names[p] end
+        factor = R.factors[p] or factor
+        i = i + n
+        -- ("dtmult 20", "zoner 3 nm": a value straight after the setting's name is the value itself)
+        if R.names[p] and amount(i) then return nil end
+      elseif w == "by" and words[i + 1] and words[i + 1].w == "half" then
+        factor, i = "by half", i + 2
+      elseif amount(i) then
+        -- ("increase sim speed to times 10", "zone on 6 NM", "to a 3 mile radius": a value the setting is set to)
+        local k = i - 1
+        while k >= b and R.before_value[words[k].w] == false do k = k - 1 end
+        if k >= b and R.before_value[words[k].w] then return nil end
+        local value, nx = amount(i)
+        numbers, size, i = numbers + 1, value, nx
+        if words[i] and R.units[words[i].w] then unit, i = words[i].w, i + 1 end
+      else
+        if R.up[w] then sign = sign == -1 and 2 or 1 end
+        if R.down[w] then sign = sign == 1 and 2 or -1 end
+        i = i + 1
+      end
+    end
+    if factor and not cmd and low:find("as fast", 1, true) then
+      for k = b, e - 1 do cmd = cmd or (R.run_words[words[k].w] and "DTMULT") end
+    end
+    if not cmd or cmd == "two" or sign == 2 or numbers > (factor and 0 or 1) then return nil end
+    local now = world.setting(cmd)
+    local value
+    if not now then
+      return nil
+    elseif factor == "by half" then
+      value = sign ~= 0 and now * (1 + sign / 2) or nil
+    elseif factor then
+      value = now * factor
+    elseif size and sign ~= 0 then
+      local scale = unit and R.units[unit][cmd] or (not unit and 1)
+      value = scale and now + sign * size * scale
+    end
+    if not value or value <= 0 then return nil end
+    return cmd .. " " .. string.format("%.4g", value)
+  end
+  local out, at, b = {}, 1, 1
+  for k = 1, #words + 1 do
+    local opener = k <= #words and (G.clause_openers[words[k].raw:lower()] or words[k].raw:match("^#"))
+    local ends = k > #words or opener or words[k].raw:match("^%(") or (k > 1 and words[k - 1].raw:match("[,;:%)]$"))
+    if ends then
+      local said = k > b and rewrite(b, k)
+      if said then
+        out[#out + 1] = text:sub(at, words[b].b - 1) .. said .. (words[k - 1].raw:match("[,;:%)%.!?]+$") or "")
+        at = words[k - 1].e
+      end
+      b = opener and k + 1 or k
+    end
+  end
+  out[#out + 1] = text:sub(at)
+  return table.concat(out)
+end
+-- "kay el em one tree seven nine": an airline's three letters said by their English names (lexicon.letter_names, one
+-- at least; lexicon.phonetic for the others), straight before a flight number, that open the id of an aircraft flying,
+-- are those letters ("KLM one tree seven nine"); others stay as said
+function G.letter_name_airlines(text, world)
+  local airlines = {}
+  for _, a in ipairs(world.aircraft) do
+    local p = (a.id or ""):upper():match("^(%u%u%u)%d")
+    if p then airlines[p] = true end
+  end
+  if not next(airlines) then return text end
+  local toks, bare = plain_words(text)
+  local function letter(k) return bare[k] and (lexicon.letter_names[bare[k]] or lexicon.phonetic[bare[k]]) end
+  return tokens.rewrite(text, toks, function(i)
+    if letter(i - 1) or not (letter(i) and letter(i + 1) and letter(i + 2) and bare[i + 3]) then return nil end
+    local code = letter(i) .. letter(i + 1) .. letter(i + 2)
+    local said = lexicon.letter_names[bare[i]] or lexicon.letter_names[bare[i + 1]] or lexicon.letter_names[bare[i + 2]]
+    if not (said and airlines[code] and (bare[i + 3]:match("^%d") or lexicon.digit_words[bare[i + 3]]))
+        or table.concat(toks, " ", i, i + 2):match("%p") then
+      return nil
+    end
+    return code, i + 3
+  end)
+end
 -- "maintain 280 knots until kilo victor", "direct Kilo Alpha Victor": two to five letters spelled in the
 -- phonetic alphabet straight after a word of a place's slot (PLACE_SLOTS, "until", "till", "to", "passing") that
 -- join into a waypoint on the route of an aircraft flying are that waypoint's ident ("until KV"); others stay as
@@ -20312,11 +20490,12 @@ function M.translate(text, world)
   if run_together then return { commands = {}, ask = run_together } end
   local create_digit = G.create_digit_homophone(text)
   if create_digit then return { commands = {}, ask = create_digit } end
+  text = G.relative_settings(text, world)
   text = G.confirmed_route_places(G.spelled_route_places(G.syllable_route_places(typed_places(G.iata_places(G.named_idents(
     G.spoken_user_waypoints(G.navaids_by_kind(written_forms(text, world), world), world), world), world),
     world), world), world), world)
-  text = G.terse_altitude(G.after_reach(G.pronoun_reached(G.future_will(spelled_airports(G.possessive_ids(text, world),
-    world))), world), world)
+  text = G.terse_altitude(G.after_reach(G.pronoun_reached(G.future_will(spelled_airports(G.letter_name_airlines(
+    G.possessive_ids(text, world), world), world))), world), world)
   local run_on
   text, run_on = G.run_on_values(text)
   if run_on then return { commands = {}, ask = run_on } end

@@ -719,7 +719,9 @@ return {
       -- (a condition's verb: "pasing 8000 reduce 210"; "swich on conflict detction")
       "passing", "reaching", "leaving", "switch",
       -- (an experimenter's state question typed fast: "what is tap33 doin")
-      "doing" },
+      "doing",
+      -- ("contine present heading", "contnue on track")
+      "continue" },
   typo_place_nm = 250,
   -- units after a value that keep "FL 2 10" two values ("fl 2 10 knots"): a level's figures are never split before them
   -- words that, straight after a split typed level, take it back (grammar.lua's split level check: "FL 16 0 - sorry,
@@ -2775,6 +2777,40 @@ return {
     -- (November as a non-rhotic speaker says it and a recogniser writes it: "ryanair eight novemba bravo")
     novemba = "N",
   },
+  -- a conflict-detection or run setting changed by an amount or a factor of its value now ("bump the lookahead up a
+  -- minute", "halve the zone", "make it twice as fast", "zone height plus 200 feet"; grammar.lua's
+  -- G.relative_settings): the setting's names -> its command; the factors; the words of a change up or down; the
+  -- units of an amount -> { command = its size in the command's unit } (a bare number is in the command's unit)
+  relative_settings = {
+    names = { ["lookahead time"] = "DTLOOK", ["look-ahead time"] = "DTLOOK", ["look ahead time"] = "DTLOOK",
+              lookahead = "DTLOOK", ["look-ahead"] = "DTLOOK", ["look ahead"] = "DTLOOK", dtlook = "DTLOOK",
+              ["zone height"] = "ZONEDH", ["zone half-height"] = "ZONEDH", ["zone half height"] = "ZONEDH",
+              zonedh = "ZONEDH", ["zone radius"] = "ZONER", ["protected zone"] = "ZONER", zone = "ZONER",
+              zoner = "ZONER", ["sim speed"] = "DTMULT", ["sim rate"] = "DTMULT", ["simulation speed"] = "DTMULT",
+              ["simulation rate"] = "DTMULT", ["speed of the sim"] = "DTMULT", ["speed of the simulation"] = "DTMULT",
+              ["time multiplier"] = "DTMULT", dtmult = "DTMULT" },
+    factors = { double = 2, triple = 3, quadruple = 4, halve = 0.5, ["half the"] = 0.5, ["in half"] = 0.5,
+                ["twice as fast"] = 2, ["three times as fast"] = 3, ["four times as fast"] = 4, ["half as fast"] = 0.5 },
+    -- words before a value that make it the value set ("to times 10", "on 6 NM", "to a 3 mile radius"): true; words
+    -- that may stand between: false
+    before_value = { to = true, on = true, at = true, of = true, is = true, be = true, ["="] = true, times = false,
+                     a = false, an = false, factor = false, x = false, about = false, around = false },
+    -- (a factor "as fast" names the run's rate where the thing made faster is the simulation)
+    run_words = { it = true, sim = true, simulation = true, things = true, everything = true, time = true },
+    up = { up = true, raise = true, increase = true, extend = true, add = true, plus = true, out = true,
+           bump = true, lengthen = true, widen = true, grow = true },
+    down = { down = true, lower = true, reduce = true, decrease = true, cut = true, minus = true, shrink = true,
+             shorten = true, tighten = true, off = true },
+    units = { minute = { DTLOOK = 60 }, minutes = { DTLOOK = 60 }, min = { DTLOOK = 60 }, mins = { DTLOOK = 60 },
+              second = { DTLOOK = 1 }, seconds = { DTLOOK = 1 }, sec = { DTLOOK = 1 }, secs = { DTLOOK = 1 },
+              s = { DTLOOK = 1 }, mile = { ZONER = 1 }, miles = { ZONER = 1 }, nm = { ZONER = 1 },
+              nmi = { ZONER = 1 }, feet = { ZONEDH = 1 }, foot = { ZONEDH = 1 }, ft = { ZONEDH = 1 } },
+  },
+  -- the English names of letters that are everyday words or no words ("kay el em": KLM), read as letters only where
+  -- three in a row before a flight number open the id of an aircraft flying (grammar.lua's G.letter_name_airlines)
+  letter_names = { ay = "A", bee = "B", see = "C", cee = "C", ee = "E", ef = "F", eff = "F", gee = "G", eye = "I",
+                   jay = "J", el = "L", ell = "L", em = "M", en = "N", oh = "O", pee = "P", cue = "Q", ar = "R",
+                   ess = "S", tee = "T", you = "U", ex = "X", why = "Y", zee = "Z" },
   -- what speech recognition writes for an instruction word that sounds alike
   -- ("the send flight level one niner zero", "turn write heading 040",
   -- "head in one one zero", "two six zero nots", "descend two flight level").
@@ -2859,7 +2895,14 @@ return {
     -- "descendee", "two hundredy"; "ligue" and "desligue", the verbs of switching on and off)
     lefchi = "left", righchi = "right", direchi = "direct", flighchi = "flight", fliche = "flight", rouchi = "route",
     altichude = "altitude", simulachion = "simulation", chen = "ten", descendee = "descend", hundredy = "hundred",
-    ligue = "switch on", desligue = "switch off" },
+    ligue = "switch on", desligue = "switch off",
+    -- (Romanian, Hungarian, Bulgarian, Serbian and Croatian: "flait level", "flai heading", "flaiing", "redjuce",
+    -- "sevendy", "vat is your heading"; a "v" for "w", a "k" for "c", a letter written twice and "t" for "th" are
+    -- grammar.lua's G.letters_swapped)
+    flait = "flight", flai = "fly", flaiing = "flying", redjuce = "reduce", sevendy = "seventy", vat = "what",
+    -- (Mandarin: a final consonant dropped, "crim" for climb, "hol" for hold, "frite" for flight; "l" and "r"
+    -- swapped in longer words is grammar.lua's G.letters_swapped)
+    crim = "climb", hol = "hold", frite = "flight" },
   heard_as = {
     { heard = { "write", "rite", "wright" }, means = "right",
       before = { "heading", "hdg", "turn" }, after = { "turn" } },
@@ -2970,6 +3013,12 @@ return {
       after = { "#number", "level", "fl", "heading", "hdg" } },
     { heard = { "free" }, means = "three", before = { "thousand", "hundred" } },
     { heard = { "free" }, means = "three", between = { { "#number" }, { "#number" } } },
+    -- (Mandarin, "l" for "r" and "r" for "l": "descend lay one thousand five hundred feet per minute", "fry heading
+    -- zero one zero", "fry direct DALUE")
+    { heard = { "lay" }, means = "rate", before = { "#number" } },
+    { heard = { "fry" }, means = "fly", before = { "heading", "hdg", "direct", "dct", "present" } },
+    -- ("descend thre thousand feet", "heading one thre zero": "three" typed with a letter left out, beside a number)
+    { heard = { "thre" }, means = "three", before = { "#number" }, after = { "#number" } },
     -- German "rechts"/"links" (right/left; lexicon.said_whole.dutch reads them in a Dutch sentence): straight before
     -- a number, no "kurs" (heading) between, the side of a turn that number may be the degrees of ("rechts 20",
     -- "links 090", "rechts 200": read as "turn right ..." is, asked where the heading and the turn differ); after

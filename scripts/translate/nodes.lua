@@ -303,6 +303,13 @@ function M.world(sim, waypoints)
              local ok, said = sim:copy():exec("RESO")
              return ok and type(said) == "string" and said:match("^RESO%s+(%u+)") or nil
            end,
+           -- a setting's value now, in its command's unit (DTLOOK s, ZONER NM, ZONEDH ft, DTMULT), read on a copy
+           -- (the simulation is left as it was), or nil when it cannot be read
+           setting = function(cmd)
+             if cmd == "DTMULT" then return sim:dtmult() end
+             local ok, said = sim:copy():exec(cmd)
+             return ok and type(said) == "string" and tonumber(said:match("^%S+%s+(%d+%.?%d*)")) or nil
+           end,
            -- a user waypoint's position (as a position argument resolves it now): lat, lon or nil
            user_waypoint_at = function(name) return sim:locate(name) end,
            -- where position argument `text` resolves (sim:locate) when the commands of `prior` (a
@@ -511,9 +518,14 @@ local function has_english_word(line, name)
   -- ("echo test start please": a courtesy word closing ECHO's text is said to us, not printed: English)
   local last = name == "ECHO" and line:lower():match("%s(%a+)[%s%.!]*$")
   if last == "please" or last == "pls" or last == "thanks" then return true end
-  -- ("Echo the text Phase two starts to the console.", "echo 'F1 done' to the log": where the words go, said after
-  -- them, is English)
-  if name == "ECHO" and line:lower():match("%sto%s+the%s+(%a+)[%s%.!]*$") and ECHO_PLACES[last] then return true end
+  -- ("Echo the text Phase two starts to the console.", "echo 'F1 done' to the log", "echo hello world on the screen":
+  -- where the words go, said after them, is English)
+  local into = name == "ECHO" and line:lower():match("%s(%a+)%s+the%s+%a+[%s%.!]*$")
+  if (into == "to" or into == "on" or into == "in") and ECHO_PLACES[last] then return true end
+  -- ("echo a message on screen: welcome students": the words before a colon name where the text after it goes)
+  for w in (name == "ECHO" and line:lower():match("^%s*%a+%s+([%a%s]+):") or ""):gmatch("%a+") do
+    if ECHO_PLACES[w] or w == "message" or w == "note" or w == "text" then return true end
+  end
   local n = 0
   local all = {}
   for w in line:gmatch("[^%s,]+") do all[#all + 1] = w:lower() end

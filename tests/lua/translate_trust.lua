@@ -20316,7 +20316,7 @@ do
   check_eq(ex("set the sim speed to 0.5 please"), "DTMULT 0.5")
   check_eq(ex("bring the speed of the simulation down to a quarter"), "DTMULT 0.25")
   check_eq(ex("increase simulation speed to double"), "DTMULT 2")
-  asked(ex("reduce the simulation speed by half"), "a change from a rate squawk does not know")
+  check_eq(ex("reduce the simulation speed by half"), "DTMULT 0.5")  -- (from the rate now, 1)
   asked(ex("reduce the simulation speed"), "no rate said")
   asked(ex("IGO512 reduce speed to half"), "an aircraft's speed halved")
   -- "B737 max": the MAX 8 (lexicon.nickname_defaults), never the B737 (737-700)
@@ -24722,4 +24722,65 @@ do
     check_eq(qex("Speedbird two Papa Whiskey, at Quimper descend flight level three four zero"),
       "AT BAW2PW QPR DO ALT BAW2PW FL340")
   end
+end
+
+-- Cycle 84 (R500): a shape named by a letter and digits ("line L1", "a box called R2") after its noun or a naming
+-- word is that name, no turn letter or speed; "L20" after a callsign is still a left turn
+do
+  local _, ex = scene({ "CRE BEL3RN A320 50.95 4.10 090 FL100 250" })
+  check_eq(ex("line L1 from 50.8 4.0 to 51.0 5.0"), "LINE L1 50.8 4 51 5")
+  check_eq(ex("draw a box called R2 from 52 4 to 53 5"), "BOX R2 52 4 53 5")
+  check_eq(ex("BEL3RN l20"), "HDG BEL3RN 70 LEFT")
+end
+
+-- Cycle 84 (R524): a setting changed by a factor or an amount from its value now (a researcher's lab shorthand at a
+-- demo): "bump the lookahead up a minute", "halve the zone", "make it twice as fast" at four times real time, "add two
+-- hundred feet to the zone height"; a value after "to" or straight after the name is the value itself
+do
+  local _, ex = scene({ "CRE KLM1234 B738 52.4 4.6 090 FL200 250", "DTMULT 4", "DTLOOK 240", "ZONER 3", "ZONEDH 800" })
+  check_eq(ex("bump the lookahead up a minute"), "DTLOOK 300")
+  check_eq(ex("bring the lookahead down by two minutes"), "DTLOOK 120")
+  check_eq(ex("lookahead plus thirty seconds"), "DTLOOK 270")
+  check_eq(ex("cut the lookahead in half"), "DTLOOK 120")
+  check_eq(ex("double the zone"), "ZONER 6")
+  check_eq(ex("bump the zone out a mile"), "ZONER 4")
+  check_eq(ex("add two hundred feet to the zone height"), "ZONEDH 1000")
+  check_eq(ex("raise the zone height by half"), "ZONEDH 1200")
+  check_eq(ex("make it twice as fast"), "DTMULT 8")
+  check_eq(ex("triple the sim rate"), "DTMULT 12")
+  check_eq(ex("half the speed of the sim and pause it"), "DTMULT 2 ; HOLD")
+  check_eq(ex("zone down to two miles"), "ZONER 2")
+  check_eq(ex("increase sim speed to times 10"), "DTMULT 10")
+  check_eq(ex("increase zone for detection on 6 NM"), "ZONER 6")
+  check_eq(ex("dtmult 20  # speed things up"), "DTMULT 20")
+  -- (an amount in another setting's unit, a change that leaves nothing, a value said again after a dash: asked)
+  asked(ex("double the zone - five miles"), "the zone's value now said after the change")
+  asked(ex("bump the lookahead up a mile"), "a distance added to a time")
+  asked(ex("bring the zone down by five miles"), "a radius of nothing")
+  check_eq(ex("KLM1234 speed up 20 knots"), "SPD KLM1234 270")  -- (an aircraft's speed, no setting)
+end
+
+-- Cycle 84 (R522, R523): a recogniser's letters for a Mandarin speaker's sounds ("fright revel", "crimb", "lesume
+-- simuration", "lay" for rate, "fry" for fly) and a Romanian, Hungarian, Bulgarian or Serbian speaker's ("klimb",
+-- "vith", "tvo", "turrn lefft", "tousand", "flait level", "redjuce"); an airline's letters said by their English names
+-- ("kay el em"); "thousand five hundred" (one thousand); "echo hello on the screen" (where the words go is English)
+do
+  local _, ex = scene({ "CRE UAL889 B738 40.0 116.0 090 FL300 280", "CRE KLM1379 B738 45.0 20.0 300 FL150 280",
+                         "CRE WZZ3011 A320 45.5 20.5 090 FL200 270" })
+  check_eq(ex("united eight eight nine descend fright revel two two zero lay one tousand fife hundred feet per minute"),
+    "ALT UAL889 FL220 1500")
+  check_eq(ex("united eight eight nine crim fright revel three three zero"), "ALT UAL889 FL330")
+  check_eq(ex("united eight eight nine fry heading zero one zero"), "HDG UAL889 10")
+  check_eq(ex("lesume simuration"), "OP")
+  check_eq(ex("vizz air tree zero one one klimb flait level two tree zero"), "ALT WZZ3011 FL230")
+  check_eq(ex("vizz air tree zero one one turrn lefft hedding two tree zero"), "HDG WZZ3011 230 LEFT")
+  check_eq(ex("vizz air tree zero one one redjuce spid tvo five zero"), "SPD WZZ3011 250")
+  check_eq(ex("vizz air tree zero one one vat is your hedding"), "POS WZZ3011")
+  check_eq(ex("kay el em one tree seven nine klimb flait level one six zero"), "ALT KLM1379 FL160")
+  check_eq(ex("KLM1379 vertical speed thousand five hundred feet per minute climb"), "VS KLM1379 1500")
+  check_eq(ex("echo hello world on the screen"), "ECHO hello world")
+  check_eq(ex("echo a message on screen: welcome students"), "ECHO welcome students")
+  -- (letter names that open no flying aircraft's id, a foreign word no swap makes known: as before)
+  asked(ex("ay ef ar one two climb FL160"), "no AFR flying")
+  check_eq(ex("KLM1379 heading 250, nee"), "ASK You said 'no' with nothing after it. What is the corrected instruction?")
 end
