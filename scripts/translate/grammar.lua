@@ -545,18 +545,20 @@ end
 -- its "v" ("vith", "vhen", "vaypoint", "tvo", "vizz"), "c" for its "k" ("klimb", "direkt", "inkrease", "kroatia"),
 -- an "r" or "f" written twice ("turrn", "lefft", "frrance", the rolled r) or a number's "th" written "t" ("tousand",
 -- "tirty"), as Romanian, Hungarian, Bulgarian, Serbian and Croatian speakers are written; or with "l" for one "r" or
--- "r" for one "l" ("fright revel", "confrict resorution", "lesume", as Mandarin speakers are). The word it becomes is
--- a number word or an instruction word (G.instruction_word; four letters or more, five for "l" and "r"), or a word
--- squawk knows (six letters or more with "c" for "k", five written twice, four with "w"); else nil ("kas", "ried",
--- "road", "dirty" stay).
+-- "r" for one "l" ("fright revel", "confrict resorution", "lesume", as Mandarin speakers are), or with "v" for its "w"
+-- or no vowel before its opening "s" ("wector", "estop", "espeed", as Pakistani and Bangladeshi speakers are). The
+-- word it becomes is a number word or an instruction word (G.instruction_word; four letters or more, five for "l" and
+-- "r", "v" for "w" and the vowel), or a word squawk knows (six letters or more with "c" for "k", five written twice,
+-- four with "w"); else nil ("kas", "ried", "road", "dirty" stay).
 function G.letters_swapped(w)
   if #w < 3 or KNOWN[w] or HEARD[w] or not w:match("^%l+$") then return nil end
   local function fits(x, instruction_len, known_len)
     return x ~= w and (NUMBER_WORDS[x] or (#w >= instruction_len and G.instruction_word(x))
       or (#w >= known_len and KNOWN[x])) and x or nil
   end
-  local found = fits((w:gsub("v", "w")), 4, 4) or fits((w:gsub("k", "c")), 4, 6)
-    or (w:match("^t") and NUMBER_WORDS["th" .. w:sub(2)] and "th" .. w:sub(2))
+  local found = fits((w:gsub("v", "w")), 4, 4) or fits((w:gsub("w", "v")), 5, math.huge)
+    or fits((w:gsub("k", "c")), 4, 6) or (w:match("^t") and NUMBER_WORDS["th" .. w:sub(2)] and "th" .. w:sub(2))
+    or (w:match("^[ei]s[^aeiou]") and fits(w:sub(2), 5, math.huge))
   -- (one letter swapped where the word has two: "tvelve"; the others the same)
   for i = 1, #w do
     local c, rest = w:sub(i, i), w:sub(i + 1)

@@ -860,9 +860,14 @@ return {
           -- (a fix typed in lower case, then the value to cross it at: "x lendy at 110", "x alb 110")
           { word = "cross", next = "#name", after_next = "at #number" } },
     -- (and after a level or value closing its clause, "desc fl200 exp", expedite)
-    exp = { { word = "expect", next = "ils rnav vis visual loc rwy runway approach app #number" },
+    -- ("exp clb fl200", "desc 4000 exp 2500 fpm": before a climb or a descent, or a rate, expedite)
+    exp = { { word = "expedite", next = "clb climb desc descend dsc dsnd clmb dn" },
+            { word = "expedite", next = "#number", after_next = "fpm ft/min" },
+            { word = "expect", next = "ils rnav vis visual loc rwy runway approach app #number" },
             { word = "expedite", prev = "#number", next = "#end" } },
     hvy = { word = "heavy" }, adn = { word = "and", caps_kept = true },
+    -- (a pseudo-pilot's "hdg 210 clrd ils 18r")
+    clrd = { word = "cleared" },
     -- (an experimenter's "CD&R" typed short: "cdr on with MVP resolution", "turn cdr off")
     cdr = { word = "conflict detection and resolution" },
     -- (chat's "n" for "and" between a value and the next instruction, "desc fl160 n spd 250", "spd 210 n hdg
@@ -2902,13 +2907,19 @@ return {
     flait = "flight", flai = "fly", flaiing = "flying", redjuce = "reduce", sevendy = "seventy", vat = "what",
     -- (Mandarin: a final consonant dropped, "crim" for climb, "hol" for hold, "frite" for flight; "l" and "r"
     -- swapped in longer words is grammar.lua's G.letters_swapped)
-    crim = "climb", hol = "hold", frite = "flight" },
+    crim = "climb", hol = "hold", frite = "flight",
+    -- (Indonesian: an /f/ said /p/ and a final consonant dropped, "turn lep", "lept", "pligt level"; "pive", "pour"
+    -- and "porward" are grammar.lua's G.p_said_f)
+    lep = "left", lept = "left", pligt = "flight",
+    -- (Pakistani and Bangladeshi: "turn lepht", "fowerty fife"; "wector", "estop" and "espeed" are grammar.lua's
+    -- G.letters_swapped)
+    lepht = "left", fowerty = "forty" },
   heard_as = {
     { heard = { "write", "rite", "wright" }, means = "right",
       before = { "heading", "hdg", "turn" }, after = { "turn" } },
     -- ("delete de air france", "pausa de simulation": an Italian recogniser's "the" after a word squawk knows;
     -- "ten time", "simulation speed two time": its "times" closing a multiple)
-    { heard = { "de" }, means = "the", after = { "#known" } },
+    { heard = { "de", "da" }, means = "the", after = { "#known" } },
     { heard = { "time" }, means = "times", closed_after = { "#number" } },
     -- ("turn lefchi hiding zero six zero", "say hiding": a Brazilian recogniser's "heading")
     { heard = { "hiding" }, means = "heading", before = { "#number" },
@@ -3016,6 +3027,8 @@ return {
     -- (Mandarin, "l" for "r" and "r" for "l": "descend lay one thousand five hundred feet per minute", "fry heading
     -- zero one zero", "fry direct DALUE")
     { heard = { "lay" }, means = "rate", before = { "#number" } },
+    -- (Indonesian: "pas porward tree minute", fast forward with /f/ said /p/)
+    { heard = { "pas" }, means = "fast", before = { "porward", "forward" } },
     { heard = { "fry" }, means = "fly", before = { "heading", "hdg", "direct", "dct", "present" } },
     -- ("descend thre thousand feet", "heading one thre zero": "three" typed with a letter left out, beside a number)
     { heard = { "thre" }, means = "three", before = { "#number" }, after = { "#number" } },
@@ -3600,7 +3613,7 @@ return {
   -- berapa?"): "dan" is "and", "berapa" "how much"; neither marks the sentence (the particles are
   -- accounted's)
   malay = {
-    words = { dan = "and", berapa = "how much" },
+    words = { dan = "and", berapa = "how much", ke = "to", ketinggian = "altitude" },
     shared = { dan = true, berapa = true },
     joining = {},
   },

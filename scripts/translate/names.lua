@@ -712,6 +712,8 @@ local names = {
     { "royal bhutan", "DRK" },  -- (Druk Air)
     { "bangla star", "UBG" },  -- (US-Bangla Airlines)
     { "novoair", "NVQ" },
+    { "shaheen air", "SAI" },  -- (Shaheen Air International, Pakistan)
+    { "shaheen", "SAI" },  -- (its telephony's first word, as controllers in Pakistan say it: "Shaheen 331")
     -- South-East Asia's other airlines by ICAO telephony, also split as speech recognition writes it ("mass wings
     -- three zero zero two": MWG3002)
     { "maswings", "MWG" },

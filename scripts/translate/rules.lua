@@ -488,9 +488,9 @@ return function(intent, rule, words)
     local a = k and g:refs_in(k, k + 1, "aircraft")[1]
     return a ~= nil and a ~= false and a.exists == true
   end }
-  -- ("EIN112 drop ROKNA": a waypoint of the route of the aircraft named straight before the verb, said straight
-  -- after it, ending the request)
-  rule { "drop remove skip", "delwpt", when = function(g, i)
+  -- ("EIN112 drop ROKNA", "dlh4ax rmv andik": a waypoint of the route of the aircraft named straight before the verb,
+  -- said straight after it, ending the request)
+  rule { "drop remove skip rmv", "delwpt", when = function(g, i)
     local r, a = g:refs_in(i + 1, i + 2, "waypoint")[1], g:refs_in(1, i, "aircraft")
     a = a[#a]
     return r ~= nil and a ~= nil and a.exists and a.e == i and g:skip_fillers(r.e) > #g.t and g:on_route(a.name, r.name)

@@ -24784,3 +24784,35 @@ do
   asked(ex("ay ef ar one two climb FL160"), "no AFR flying")
   check_eq(ex("KLM1379 heading 250, nee"), "ASK You said 'no' with nothing after it. What is the corrected instruction?")
 end
+
+-- Cycle 84 (R528, R531): an Indonesian recogniser's "ke" (to), "ketinggian" (altitude), "da" (the), "pas porward",
+-- "turn lep", "pligt level"; a Pakistani or Bangladeshi one's "lepht", "wector", "estop", "espeed", "fowerty";
+-- Shaheen Air by its telephony's first word ("delete shaheen tree tree one")
+do
+  local _, ex = scene({ "CRE CTV815 A320 -6.5 107.0 090 FL150 250", "CRE SAI331 A320 32.9 73.2 150 FL160 270" })
+  check_eq(ex("citilink eight one pive descend ke pour tousand peet"), "ALT CTV815 4000")
+  check_eq(ex("citilink eight one five descend ketinggian one one tousand"), "ALT CTV815 11000")
+  check_eq(ex("pause da simulation"), "HOLD")
+  check_eq(ex("pas porward tree minute"), "FF 180")
+  check_eq(ex("citilink eight one five pligt level one tree zero turn lep heading one zero zero"),
+    "ALT CTV815 FL130 ; HDG CTV815 100 LEFT")
+  check_eq(ex("shaheen tree tree one turn lepht fowerty fife degrees"), "HDG SAI331 105 LEFT")
+  check_eq(ex("shaheen tree tree one wector heading two tree zero"), "HDG SAI331 230")
+  check_eq(ex("shaheen tree tree one estop climb at flight level two two zero espeed two fife zero"),
+    "ALT SAI331 FL220 ; SPD SAI331 250")
+  check_eq(ex("delete shaheen tree tree one"), "DEL SAI331")
+end
+
+-- Cycle 84 (R532): a pseudo-pilot's shorthand: "exp" before a climb, a descent or a rate is expedite ("exp clb
+-- fl200", "desc 4000 exp 2500 fpm"; "exp ils" is still expect); "rmv" before a waypoint of the aircraft's route;
+-- "clrd ils" (not simulated)
+do
+  local _, ex = navscene({ "CRE DLH4AX A321 52.4 4.4 090 FL300 280", "ADDWPT DLH4AX ANDIK", "ADDWPT DLH4AX SUGOL" },
+    "a pseudo-pilot's shorthand")
+  if ex then
+    check_eq(ex("dlh4ax desc 4000 exp 2500 fpm"), "ALT DLH4AX 4000 ; VS DLH4AX -2500")
+    check_eq(ex("dlh4ax exp clb fl340"), "ALT DLH4AX FL340")
+    check_eq(ex("dlh4ax rmv andik"), "DELWPT DLH4AX ANDIK")
+    check_eq(ex("dlh4ax hdg 210 clrd ils 18r"), "HDG DLH4AX 210")
+  end
+end
