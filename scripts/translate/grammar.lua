@@ -543,10 +543,11 @@ function G.vowel_after(w)
 end
 -- A speaker's sounds a recogniser writes with other letters: a word that no list knows is the word spelled with "w" for
 -- its "v" ("vith", "vhen", "vaypoint", "tvo", "vizz"), "c" for its "k" ("klimb", "direkt", "inkrease", "kroatia"),
--- an "r" or "f" written twice ("turrn", "lefft", "frrance", the rolled r) or a number's "th" written "t" ("tousand",
--- "tirty"), as Romanian, Hungarian, Bulgarian, Serbian and Croatian speakers are written; or with "l" for one "r" or
+-- an "r" or "f" written twice ("turrn", "lefft", "frrance", the rolled r) or a number's "th" written "t" or "f"
+-- ("tousand", "tirty", "fousand"), as Romanian, Hungarian, Bulgarian, Serbian and Croatian speakers are written; or with "l" for one "r" or
 -- "r" for one "l" ("fright revel", "confrict resorution", "lesume", as Mandarin speakers are), or with "v" for its "w"
--- or no vowel before its opening "s" ("wector", "estop", "espeed", as Pakistani and Bangladeshi speakers are). The
+-- or no vowel before its opening "s" ("wector", "estop", "espeed", as Pakistani and Bangladeshi speakers are), or
+-- with "kh" for its "r" ("khight", "khoute", "khyanair", as Hebrew speakers' guttural r is written). The
 -- word it becomes is a number word or an instruction word (G.instruction_word; four letters or more, five for "l" and
 -- "r", "v" for "w" and the vowel), or a word squawk knows (six letters or more with "c" for "k", five written twice,
 -- four with "w"); else nil ("kas", "ried", "road", "dirty" stay).
@@ -557,8 +558,9 @@ function G.letters_swapped(w)
       or (#w >= known_len and KNOWN[x])) and x or nil
   end
   local found = fits((w:gsub("v", "w")), 4, 4) or fits((w:gsub("w", "v")), 5, math.huge)
-    or fits((w:gsub("k", "c")), 4, 6) or (w:match("^t") and NUMBER_WORDS["th" .. w:sub(2)] and "th" .. w:sub(2))
+    or fits((w:gsub("k", "c")), 4, 6) or (w:match("^[tf]") and NUMBER_WORDS["th" .. w:sub(2)] and "th" .. w:sub(2))
     or (w:match("^[ei]s[^aeiou]") and fits(w:sub(2), 5, math.huge))
+    or (w:find("kh", 1, true) and fits((w:gsub("kh", "r")), 4, 6))
   -- (one letter swapped where the word has two: "tvelve"; the others the same)
   for i = 1, #w do
     local c, rest = w:sub(i, i), w:sub(i + 1)
@@ -575,12 +577,26 @@ end
 function G.accented_word(w)
   return lexicon.accented[w] or G.p_said_b(w) or G.p_said_f(w) or G.vowel_after(w) or G.letters_swapped(w)
 end
+-- A word a recogniser split in two or three ("thir ty", "de tection", "alt i tude"): the pieces, lower-case letters
+-- with no mark between, one at least no word squawk knows, that run together into a number word or an instruction
+-- word -> that word and the index after its last piece; else nil.
+function G.split_word(toks, i)
+  local joined, unknown = "", false
+  for k = i, i + 2 do
+    if not (toks[k] and toks[k]:match("^%l+$")) then return nil end
+    joined, unknown = joined .. toks[k], unknown or not (KNOWN[toks[k]] or NUMBER_WORDS[toks[k]])
+    if k > i and unknown and (NUMBER_WORDS[joined] or G.instruction_word(joined)) then return joined, k + 1 end
+  end
+  return nil
+end
 function G.accented(text)
   local toks, bare = plain_words(text)
   local any = false
-  for k = 1, #bare do any = any or G.accented_word(bare[k]) ~= nil end
+  for k = 1, #bare do any = any or G.accented_word(bare[k]) ~= nil or G.split_word(toks, k) ~= nil end
   if not any then return text end
   return tokens.rewrite(text, toks, function(i)
+    local whole, after = G.split_word(toks, i)
+    if whole then return whole, after end
     local en = G.accented_word(bare[i])
     if not en or toks[i]:match("^%u%u") then return nil end
     return en .. (toks[i]:match("%p+$") or ""), i + 1
@@ -18672,39 +18688,51 @@ local function spelled_airports(text, world)
     return code, i + 4
   end)
 end
--- "bump the lookahead up a minute", "halve the zone", "make it twice as fast", "zone height plus 200 feet": a setting
--- of lexicon.relative_settings changed by a factor, or by an amount up or down, in a clause of its own (set off by a
--- mark, a dash, a "#", "and" or "then"), is that setting's command with the value it comes to from its value now
--- (world.setting): "DTLOOK 360". A value said after "to" (lexicon.relative_settings.before_value) or straight after
--- the setting's name is the value itself, and
--- a clause with another number, with no value now to read, that says no way up or down or a unit of another setting,
--- or whose value comes to zero or less, stays as said (asked).
+-- "bump the lookahead up a minute", "halve the zone", "make it twice as fast", "zone height plus 200 feet", "rfach
+-- +0.1", "lookahead up 10%", "zone radius half a mile bigger": a setting of lexicon.relative_settings changed by a
+-- factor, a share or an amount up or down, in a clause of its own (set off by a mark, a dash, a "#", "and" or
+-- "then"), is that setting's command with the value it comes to from its value now (world.setting): "DTLOOK 360";
+-- "back to default" is its default. A value said after "to" (lexicon.relative_settings.before_value) or straight
+-- after the setting's name is the value itself, and a clause with another number, with no value now to read, that
+-- says no way up or down or a unit of another setting, or whose value comes to zero or less, stays as said (asked).
+-- The run's rate "x5" or "times 5" (set to five times real time, or five times the rate now?) is asked where the two
+-- differ. -> text, and a question or nil
 G.clause_openers = { ["-"] = true, ["\u{2013}"] = true, ["and"] = true, ["then"] = true }
 function G.relative_settings(text, world)
   local R = lexicon.relative_settings
   if not world.setting then return text end
   local low = text:lower()
-  local factor_or_change = false
-  for w in low:gmatch("%a+") do factor_or_change = factor_or_change or R.factors[w] or R.up[w] or R.down[w] end
-  if not factor_or_change and not low:find("as fast", 1, true) and not low:find("in half", 1, true)
+  local any = low:find("[%+%%]") or low:find("%f[%w]x%d") or low:find("%dx%f[%W]") or low:find("default", 1, true)
+    or low:find("times", 1, true)
+  for w in low:gmatch("%a+") do any = any or R.factors[w] or R.up[w] or R.down[w] end
+  if not any and not low:find("as fast", 1, true) and not low:find("in half", 1, true)
       and not low:find("half the", 1, true) then
     return text
   end
   local words = {}  -- { b =, e = (text positions), raw =, w = (lower case, marks stripped) }
   for b, raw, e in text:gmatch("()(%S+)()") do
-    words[#words + 1] = { b = b, e = e, raw = raw, w = raw:lower():gsub("^%(", ""):gsub("%p+$", "") }
+    words[#words + 1] = { b = b, e = e, raw = raw, w = raw:lower():gsub("^%(", ""):gsub("[%p]+$", "") }
   end
   local function phrase(i, n)
     local out = {}
     for k = i, i + n - 1 do out[#out + 1] = words[k].w end
     return table.concat(out, " ")
   end
-  -- the amount at i: digits, number words ("two hundred", "thirty") or "a"/"an" before a unit -> value, next index
+  -- the amount at i -> value, next index, sign typed before it ("+0.1", "-2") or nil, unit typed after it ("+30s")
+  -- or nil, true for a share ("50%", "a quarter"): digits, number words ("two hundred"), "a"/"an" or "half a"
+  -- before a unit
   local function amount(i)
-    local w = words[i] and words[i].w
-    if not w then return nil end
-    if w:match("^%d+%.?%d*$") then return tonumber(w), i + 1 end
-    if (w == "a" or w == "an") and words[i + 1] and R.units[words[i + 1].w] then return 1, i + 1 end
+    local t = words[i]
+    if not t then return nil end
+    local sign, digits, glued = t.raw:lower():match("^([%+%-]?)(%d*%.?%d+)(%a*)%%?[,;:]?$")
+    if digits and (glued == "" or R.units[glued]) then
+      return tonumber(digits), i + 1, (sign == "+" and 1) or (sign == "-" and -1) or nil, glued ~= "" and glued or nil,
+        t.raw:find("%%") ~= nil
+    end
+    local w, nx = t.w, words[i + 1] and words[i + 1].w
+    if (w == "a" or w == "an") and R.shares[nx] then return R.shares[nx], i + 2, nil, nil, true end
+    if (w == "a" or w == "an") and R.units[nx] then return 1, i + 1 end
+    if w == "half" and (nx == "a" or nx == "an") and words[i + 2] and R.units[words[i + 2].w] then return 0.5, i + 2 end
     local total, k = nil, i
     while words[k] and (G.below_hundred[words[k].w] or (total and words[k].w == "hundred")) do
       total = words[k].w == "hundred" and total * 100 or (total or 0) + G.below_hundred[words[k].w]
@@ -18712,31 +18740,49 @@ function G.relative_settings(text, world)
     end
     return total, k
   end
-  -- the clause of words b .. e - 1 -> "CMD value", or nil
+  -- true when the word before i (past lexicon.relative_settings.before_value's words that may stand between) makes
+  -- what is at i the value set
+  local function set_to(b, i)
+    local k = i - 1
+    while k >= b and R.before_value[words[k].w] == false do k = k - 1 end
+    return k >= b and R.before_value[words[k].w] == true
+  end
+  -- the clause of words b .. e - 1 -> "CMD value", or nil; or nil and a question
   local function rewrite(b, e)
-    local cmd, factor, sign, size, unit, numbers = nil, nil, 0, nil, nil, 0
+    local cmd, factor, sign, size, unit, share, numbers, default, times = nil, nil, 0, nil, nil, false, 0, false, nil
+    local straight = false
     local i = b
     while i < e do
       local n = 4
       while n > 0 and not (i + n <= e and (R.names[phrase(i, n)] or R.factors[phrase(i, n)])) do n = n - 1 end
       local w = words[i].w
+      local x = words[i].raw:lower():match("^x(%d*%.?%d+)$") or words[i].raw:lower():match("^(%d*%.?%d+)x$")
       if n > 0 then
         local p = phrase(i, n)
         if R.names[p] then cmd = (cmd and cmd ~= R.names[p]) and "two" or R.names[p] end
         factor = R.factors[p] or factor
         i = i + n
-        -- ("dtmult 20", "zoner 3 nm": a value straight after the setting's name is the value itself)
-        if R.names[p] and amount(i) then return nil end
+        -- ("dtmult 20", "zoner 3 nm": a value straight after the setting's name is the value itself, unless a
+        -- change is said after it, "zone radius 1.5 nm smaller")
+        straight = straight or (R.names[p] and amount(i) and not words[i].raw:match("^[%+%-]"))
+      elseif x or (w == "times" and amount(i + 1)) then
+        if set_to(b, i) then return nil end
+        times = tonumber(x) or amount(i + 1)
+        factor, i = times, x and i + 1 or select(2, amount(i + 1))
+      elseif w == "twice" and factor then
+        factor, i = factor * factor, i + 1
       elseif w == "by" and words[i + 1] and words[i + 1].w == "half" then
-        factor, i = "by half", i + 2
+        share, size, i = true, 0.5, i + 2
+      elseif w == "default" or w == "defaults" then
+        default, i = true, i + 1
       elseif amount(i) then
         -- ("increase sim speed to times 10", "zone on 6 NM", "to a 3 mile radius": a value the setting is set to)
-        local k = i - 1
-        while k >= b and R.before_value[words[k].w] == false do k = k - 1 end
-        if k >= b and R.before_value[words[k].w] then return nil end
-        local value, nx = amount(i)
-        numbers, size, i = numbers + 1, value, nx
-        if words[i] and R.units[words[i].w] then unit, i = words[i].w, i + 1 end
+        if set_to(b, i) then return nil end
+        local value, nx, typed_sign, glued, is_share = amount(i)
+        numbers, size, i, share = numbers + 1, value, nx, share or is_share
+        if typed_sign then sign = (sign == 0 or sign == typed_sign) and typed_sign or 2 end
+        unit = glued
+        if not unit and words[i] and R.units[words[i].w] then unit, i = words[i].w, i + 1 end
       else
         if R.up[w] then sign = sign == -1 and 2 or 1 end
         if R.down[w] then sign = sign == 1 and 2 or -1 end
@@ -18746,20 +18792,32 @@ function G.relative_settings(text, world)
     if factor and not cmd and low:find("as fast", 1, true) then
       for k = b, e - 1 do cmd = cmd or (R.run_words[words[k].w] and "DTMULT") end
     end
-    if not cmd or cmd == "two" or sign == 2 or numbers > (factor and 0 or 1) then return nil end
+    if not cmd or cmd == "two" or sign == 2 or numbers > (factor and 0 or 1) or (straight and sign == 0) then
+      return nil
+    end
+    if default then
+      return numbers == 0 and sign == 0 and not factor and cmd .. " " .. string.format("%.4g", R.defaults[cmd]) or nil
+    end
     local now = world.setting(cmd)
     local value
     if not now then
       return nil
-    elseif factor == "by half" then
-      value = sign ~= 0 and now * (1 + sign / 2) or nil
     elseif factor then
       value = now * factor
+    elseif share and size and sign ~= 0 then
+      value = now * (1 + sign * (size > 1 and size / 100 or size))
     elseif size and sign ~= 0 then
       local scale = unit and R.units[unit][cmd] or (not unit and 1)
       value = scale and now + sign * size * scale
     end
     if not value or value <= 0 then return nil end
+    -- (the run's rate "x5": five times real time, or five times the rate now)
+    if times and cmd == "DTMULT" and now ~= 1 then
+      return nil, string.format("Should the simulation run at %s times real time, or %s times its rate now (%s times "
+        .. "real time)? Please say \"DTMULT %s\" or \"DTMULT %s\".", string.format("%.4g", times),
+        string.format("%.4g", times), string.format("%.4g", value), string.format("%.4g", times),
+        string.format("%.4g", value))
+    end
     return cmd .. " " .. string.format("%.4g", value)
   end
   local out, at, b = {}, 1, 1
@@ -18767,7 +18825,9 @@ function G.relative_settings(text, world)
     local opener = k <= #words and (G.clause_openers[words[k].raw:lower()] or words[k].raw:match("^#"))
     local ends = k > #words or opener or words[k].raw:match("^%(") or (k > 1 and words[k - 1].raw:match("[,;:%)]$"))
     if ends then
-      local said = k > b and rewrite(b, k)
+      local said, question
+      if k > b then said, question = rewrite(b, k) end
+      if question then return text, question end
       if said then
         out[#out + 1] = text:sub(at, words[b].b - 1) .. said .. (words[k - 1].raw:match("[,;:%)%.!?]+$") or "")
         at = words[k - 1].e
@@ -20234,7 +20294,39 @@ function G.code_like(text)
   return (text:gsub("%s*[%+%-]?=%s*", function(op) return op:find("[%+%-]") and op or " " end))
 end
 
+-- The text typed in quotes, or after a note's label and its colon, as typed: ECHO's words are shown as the
+-- speaker typed them, never as the grammar read them ("log 'trial 4: rpz 6 / dh 1500'", "note: conflict
+-- BAW8CK/RYR5QT resolved by turn, no LoS", "pause and note 'LoS at t=512'"). A translation `r` of text with one
+-- ECHO gets the words of the one span in quotes, or those after "log:" or "note:" (lexicon.note_labels) where ECHO
+-- is its only command; any other stays as it is. -> r
+function G.echo_as_typed(r, text)
+  local echo
+  for k, c in ipairs(r.commands or {}) do
+    if c:match("^ECHO ") then echo = not echo and k or -1 end
+  end
+  if not echo or echo < 0 or r.ask then return r end
+  local spans, i = {}, 1
+  while i <= #text do
+    local q = text:sub(i, i)
+    if (q == "'" or q == '"') and (i == 1 or text:sub(i - 1, i - 1):match("[%s%(:]")) then
+      local close = text:find(q, i + 1, true)
+      while close and not (close == #text or text:sub(close + 1, close + 1):match("[%s%p]")) do
+        close = text:find(q, close + 1, true)
+      end
+      if close and close > i + 1 then spans[#spans + 1], i = text:sub(i + 1, close - 1), close end
+    end
+    i = i + 1
+  end
+  local label, rest = text:match("^%s*(%a+)%s*:%s*(.-)%s*$")
+  local typed = (#spans == 1 and spans[1])
+    or (#spans == 0 and #r.commands == 1 and label and lexicon.note_labels[label:lower()] and rest ~= "" and rest)
+  if typed then r.commands[echo] = "ECHO " .. typed end
+  return r
+end
 function M.translate(text, world)
+  return G.echo_as_typed(G.translate_text(text, world), text)
+end
+function G.translate_text(text, world)
   local said = text
   world = world or {}
   world.aircraft = world.aircraft or {}
@@ -20251,6 +20343,9 @@ function M.translate(text, world)
   local kept_ask
   text, kept_ask = G.setting_left_as_is(text)
   if kept_ask then return { commands = {}, ask = kept_ask } end
+  local relative
+  text, relative = G.relative_settings(text, world)
+  if relative then return { commands = {}, ask = relative } end
   text = G.id_label(G.unit_after_pause(G.condition_as_and_make_it(G.verb_after_rate(G.hold_after_ff(G.time_before_fast(numbered_steps(G.title_label(G.spoken_ddmm(G.spoken_zeros(G.number_words_apart(text)))))))))), world)
   local said_conflict = G.said_conflict(text)
   if said_conflict then return { commands = {}, ask = said_conflict } end
@@ -20492,7 +20587,6 @@ function M.translate(text, world)
   if run_together then return { commands = {}, ask = run_together } end
   local create_digit = G.create_digit_homophone(text)
   if create_digit then return { commands = {}, ask = create_digit } end
-  text = G.relative_settings(text, world)
   text = G.confirmed_route_places(G.spelled_route_places(G.syllable_route_places(typed_places(G.iata_places(G.named_idents(
     G.spoken_user_waypoints(G.navaids_by_kind(written_forms(text, world), world), world), world), world),
     world), world), world), world)

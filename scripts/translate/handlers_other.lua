@@ -4703,7 +4703,8 @@ return function(H, f, compass)
   -- status?", "cd?"; "could you switch detection and resolution on?" switches both; "could you add the
   -- turbulence?" is asked for)
   function m:switch_asked(s)
-    if #self:quantities(1, #self.t + 1) > 0 then return false end
+    -- (a value of another instruction, "ff 30 s then CD status", is no value of the switch)
+    if #self:quantities(s.b, s.e) > 0 then return false end
     if self:word_in(1, #self.t + 1, "status") and not self:word_in(1, #self.t + 1, "on off enable disable activate") then
       return true
     end
@@ -5444,6 +5445,13 @@ return function(H, f, compass)
   end
   function m:echo(s)
     for i = s.b, s.e - 1 do
+      -- (an aircraft or a place said before the words, "KLM 1234 at NARSO log 'over NARSO'", is asked: a note shown
+      -- when an aircraft gets somewhere is no note shown now)
+      local a, w = self:refs_in(s.b, i, "aircraft")[1], self:refs_in(s.b, i, "waypoint")[1]
+      if self.t[i].kind == "quoted" and (a or w) then
+        return self:need(string.format("Should '%s' be shown now, or when %s? Please say which.", self.t[i].raw,
+          a and w and (a.name .. " reaches " .. w.name) or ("something happens to " .. (a or w).name)))
+      end
       if self.t[i].kind == "quoted" then return self:emit("ECHO " .. self.t[i].raw) end
     end
     -- the words after a colon, as typed

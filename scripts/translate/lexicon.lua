@@ -2793,19 +2793,34 @@ return {
               zonedh = "ZONEDH", ["zone radius"] = "ZONER", ["protected zone"] = "ZONER", zone = "ZONER",
               zoner = "ZONER", ["sim speed"] = "DTMULT", ["sim rate"] = "DTMULT", ["simulation speed"] = "DTMULT",
               ["simulation rate"] = "DTMULT", ["speed of the sim"] = "DTMULT", ["speed of the simulation"] = "DTMULT",
-              ["time multiplier"] = "DTMULT", dtmult = "DTMULT" },
+              ["time multiplier"] = "DTMULT", dtmult = "DTMULT", dh = "ZONEDH", ["zone dh"] = "ZONEDH",
+              ["pz height"] = "ZONEDH", ["pz half height"] = "ZONEDH", ["pz half-height"] = "ZONEDH",
+              ["half height"] = "ZONEDH", ["half-height"] = "ZONEDH", ["pz radius"] = "ZONER", rpz = "ZONER",
+              radius = "ZONER", ["vertical margin"] = "RFACV", ["vert margin"] = "RFACV", rfacv = "RFACV",
+              ["vertical reso factor"] = "RFACV", ["vertical resolution factor"] = "RFACV",
+              ["horizontal margin"] = "RFACH", ["horiz margin"] = "RFACH", ["hor margin"] = "RFACH", rfach = "RFACH",
+              ["horizontal reso factor"] = "RFACH", ["horiz reso factor"] = "RFACH",
+              ["horizontal resolution factor"] = "RFACH" },
+    -- each command's value in BlueSky when nothing has set it ("zone dh back to default")
+    defaults = { DTLOOK = 300, ZONER = 5, ZONEDH = 1000, RFACH = 1.05, RFACV = 1.05, DTMULT = 1 },
     factors = { double = 2, triple = 3, quadruple = 4, halve = 0.5, ["half the"] = 0.5, ["in half"] = 0.5,
+                doubled = 2, tripled = 3, halved = 0.5,
                 ["twice as fast"] = 2, ["three times as fast"] = 3, ["four times as fast"] = 4, ["half as fast"] = 0.5 },
+    -- shares of the value now, said after "a" ("up by a quarter", "down a third")
+    shares = { quarter = 0.25, third = 1 / 3 },
     -- words before a value that make it the value set ("to times 10", "on 6 NM", "to a 3 mile radius"): true; words
     -- that may stand between: false
-    before_value = { to = true, on = true, at = true, of = true, is = true, be = true, ["="] = true, times = false,
+    before_value = { to = true, on = true, at = true, of = true, is = true, be = true, was = true, were = true,
+                     ["="] = true, times = false,
                      a = false, an = false, factor = false, x = false, about = false, around = false },
     -- (a factor "as fast" names the run's rate where the thing made faster is the simulation)
     run_words = { it = true, sim = true, simulation = true, things = true, everything = true, time = true },
     up = { up = true, raise = true, increase = true, extend = true, add = true, plus = true, out = true,
-           bump = true, lengthen = true, widen = true, grow = true },
+           bump = true, lengthen = true, widen = true, grow = true, bigger = true, larger = true, longer = true,
+           wider = true, higher = true, more = true, greater = true },
     down = { down = true, lower = true, reduce = true, decrease = true, cut = true, minus = true, shrink = true,
-             shorten = true, tighten = true, off = true },
+             shorten = true, tighten = true, off = true, smaller = true, shorter = true, narrower = true,
+             tighter = true, less = true },
     units = { minute = { DTLOOK = 60 }, minutes = { DTLOOK = 60 }, min = { DTLOOK = 60 }, mins = { DTLOOK = 60 },
               second = { DTLOOK = 1 }, seconds = { DTLOOK = 1 }, sec = { DTLOOK = 1 }, secs = { DTLOOK = 1 },
               s = { DTLOOK = 1 }, mile = { ZONER = 1 }, miles = { ZONER = 1 }, nm = { ZONER = 1 },
@@ -2913,7 +2928,13 @@ return {
     lep = "left", lept = "left", pligt = "flight",
     -- (Pakistani and Bangladeshi: "turn lepht", "fowerty fife"; "wector", "estop" and "espeed" are grammar.lua's
     -- G.letters_swapped)
-    lepht = "left", fowerty = "forty" },
+    lepht = "left", fowerty = "forty",
+    -- (Hebrew: vowels shortened, "flite levl", "hedin"; a guttural r written "kh" is grammar.lua's G.letters_swapped)
+    flite = "flight", levl = "level", hedin = "heading",
+    -- (Cantonese: a final consonant dropped from a digit, "fi", "eigh"; Scottish and Northern Irish: "headin", "flight
+    -- leve", "doon", "thoosand", "hunner", "tae", "oot")
+    fi = "five", eigh = "eight", headin = "heading", leve = "level", doon = "down", thoosand = "thousand",
+    hunner = "hundred", tae = "to", oot = "out", contac = "contact", ["fo-ty"] = "forty", foty = "forty" },
   heard_as = {
     { heard = { "write", "rite", "wright" }, means = "right",
       before = { "heading", "hdg", "turn" }, after = { "turn" } },
@@ -2935,7 +2956,7 @@ return {
     -- ("turn lift heading three four zero": a recogniser's "left")
     { heard = { "lift", "loft", "laughed" }, means = "left", after = { "turn" } },
     { heard = { "the send", "this end", "the scent", "the scend", "decent", "dissent", "diss end" }, means = "descend",
-      before = { "#number", "flight", "level", "altitude", "to", "fly", "and" } },
+      before = { "#number", "flight", "level", "altitude", "to", "fly", "and", "at" } },
     -- (a Japanese or Korean accent: "turn ride", "turn light" (four writers of five); "plight level", "fright revel",
     -- "flight rebel", "flight label"; "crime and maintained"; "maintenance flight level"; "descend pour thousand";
     -- "one two sick one"; "set rook ahead time")
@@ -3097,6 +3118,8 @@ return {
       between = { { "when", "whenever", "once", "after" }, { "#number", "fl", "flight", "level", "altitude" } } },
     -- ("descend FL310, when reach, Mach .79", "when reach FL100 turn left": the verb's bare form, as a Japanese or
     -- Chinese speaker says it, is reaching)
+    -- ("when you get two hundred descend ...": "get" between the aircraft and a value is "reach")
+    { heard = { "get", "gets" }, means = "reach", between = { { "you", "it", "he", "she", "they" }, { "#number" } } },
     { heard = { "reach" }, means = "reaching", closed_after = { "when", "once", "upon", "on" },
       between = { { "when", "once", "upon", "on" }, { "#number", "fl", "flight", "level", "altitude" } } },
     { heard = { "as soon as" }, means = "once",

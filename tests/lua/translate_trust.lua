@@ -2163,7 +2163,7 @@ do
   local s40, ex = scene({ "CRE KLM77 B738 52.1 4.5 180 FL150 250", "CRE DLH4AX A321 52.4 4.4 090 FL300 280",
       "CRE NKS409 A320 52.0 4.0 025 FL200 250", "CRE BAW8CK A320 52.2 4.2 300 FL250 280" })
   check_eq(ex("note for the log: run 4, MVP on, PZ 5 nm"), "ECHO run 4 , MVP on , PZ 5 nm")
-  check_eq(ex("log: reso off now, dt 0.5 and FF 10 min"), "ECHO reso off now , dt 0.5 and FF 10 min")
+  check_eq(ex("log: reso off now, dt 0.5 and FF 10 min"), "ECHO reso off now, dt 0.5 and FF 10 min")
   check_eq(ex("move KLM77 to 52.3, 4.6 and keep it at 4000"), "MOVE KLM77 52.3 4.6 4000")
   check_eq(ex("teleport DLH4AX to 52.5 4.1 at 12000"), "MOVE DLH4AX 52.5 4.1 12000")
   check_eq(ex("reposition KLM77 at 52.3 4.6, 250"),
@@ -2693,7 +2693,7 @@ end
 -- "comment: first episode"), is text for the log; a note beside an instruction stays a remark
 do
   local _, ex = scene({ "CRE TST7K A320 45 9 090 FL080 250" })
-  check_eq(ex("note: run 2, baseline"), "ECHO run 2 , baseline")
+  check_eq(ex("note: run 2, baseline"), "ECHO run 2, baseline")
   check_eq(ex("comment: first episode"), "ECHO first episode")
   check_eq(ex("note to self: episode 3 is the head-on one. set lookahead 120"), "DTLOOK 120")
   check_eq(ex("tst7k descend fl070, comment: lose the overlap"), "ALT TST7K FL70")
@@ -24815,4 +24815,13 @@ do
     check_eq(ex("dlh4ax rmv andik"), "DELWPT DLH4AX ANDIK")
     check_eq(ex("dlh4ax hdg 210 clrd ils 18r"), "HDG DLH4AX 210")
   end
+end
+
+-- Cycle 84 (R527): "get" between the aircraft and a value is "reach" ("reduce two hundred knots and when you get two
+-- hundred descend five thousand feet")
+do
+  local _, ex = scene({ "CRE SKK7303 B738 6.5 1.5 090 FL120 280" })
+  check_eq(ex("asky seven tree zero tree reduce two hundred knots and when you get two hundred descend five thousand feet"),
+    "SPD SKK7303 200 ; ATSPD SKK7303 200 ALT SKK7303 5000")
+  check_eq(ex("SKK7303, when you get FL100, reduce 200"), "ATALT SKK7303 FL100 SPD SKK7303 200")
 end
