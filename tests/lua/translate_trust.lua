@@ -24825,3 +24825,46 @@ do
     "SPD SKK7303 200 ; ATSPD SKK7303 200 ALT SKK7303 5000")
   check_eq(ex("SKK7303, when you get FL100, reduce 200"), "ATALT SKK7303 FL100 SPD SKK7303 200")
 end
+
+-- Cycle 84 (R534, R535, R539): a Hebrew recogniser's guttural r written "kh" ("turn khight", "the khoute",
+-- "khyanair"), "flite levl", "hedin"; a Cantonese one's "fousand", "fi", "eigh", "contac" (a frequency after it is no
+-- heading), "fo-ty"; a Scottish one's "the send at ... feet a minute" (a descent's rate), "thoosand", "hunner",
+-- "doon", and words it split ("de tection", "thir ty")
+do
+  local _, ex = scene({ "CRE ISR502 B738 32.0 34.5 090 FL150 280", "CRE RYR4TK B738 32.2 34.8 180 FL200 280",
+                         "CRE SIA8 A359 22.0 114.0 120 FL150 290", "CRE EZY91GL A320 55.5 -4.5 350 FL200 280" })
+  check_eq(ex("israir five zero two turn khight hedin zero niner zero"), "HDG ISR502 90 RIGHT")
+  check_eq(ex("khyanair four tango kilo descend flite levl one hundred"), "ALT RYR4TK FL100")
+  check_eq(ex("israir five zero two show the khoute"), "LISTRTE ISR502")
+  check_eq(ex("singapore eight descend four fousand fi hundred feet"), "ALT SIA8 4500")
+  check_eq(ex("singapore eight contac macau approach one one niner decimal fi an descen flight level one two zero"),
+    "ALT SIA8 FL120")
+  check_eq(ex("easy nine one golf lima the send at one thoosand five hunner feet a minute"), "VS EZY91GL -1500")
+  check_eq(ex("easy nine one golf lima turn left thir ty degrees"), "HDG EZY91GL 320 LEFT")
+  check_eq(ex("switch on the conflict de tection"), "ASAS ON")
+end
+
+-- Cycle 84 (R537): an experimenter's settings by shares, signs and comparatives from their values now; ECHO's words
+-- as typed in quotes or after "log:"; a note said with an aircraft and a place before it is asked; a switch's status
+-- beside another instruction's value is shown
+do
+  local _, ex = scene({ "CRE KLM1234 B738 52.9 6.9 240 FL200 280", "DTMULT 3", "DTLOOK 90", "ZONER 8", "ZONEDH 2000",
+                         "RFACV 1.5" })
+  check_eq(ex("rfacv +0.1"), "RFACV 1.6")
+  check_eq(ex("vertical margin down 0.2"), "RFACV 1.3")
+  check_eq(ex("lookahead up 10%"), "DTLOOK 99")
+  check_eq(ex("zone radius half a mile bigger pls"), "ZONER 8.5")
+  check_eq(ex("zone radius 1.5 nm smaller"), "ZONER 6.5")
+  check_eq(ex("zone radius up by a quarter"), "ZONER 10")
+  check_eq(ex("dh halved"), "ZONEDH 1000")
+  check_eq(ex("zone dh back to default"), "ZONEDH 1000")
+  check_eq(ex("sim rate +5"), "DTMULT 8")
+  check_eq(ex("cut the sim rate in half twice"), "DTMULT 0.75")
+  asked(ex("sim rate x5"), "five times real time or five times the rate now")
+  asked(ex("the sim rate was 2x by the way"), "a rate told")
+  check_eq(ex("log 'trial 4: rpz 6 / dh 1500 / MVP'"), "ECHO trial 4: rpz 6 / dh 1500 / MVP")
+  check_eq(ex("note: conflict BAW8CK/RYR5QT resolved by turn, no LoS"), "ECHO conflict BAW8CK/RYR5QT resolved by turn, no LoS")
+  check_eq(ex("pause and note 'LoS at t=512'"), "HOLD ; ECHO LoS at t=512")
+  asked(ex("KLM 1234 at FL200 log 'KLM1234 level'"), "a note with an aircraft before it")
+  check_eq(ex("ff 30 s then CD status"), "FF 30 ; ASAS")
+end
