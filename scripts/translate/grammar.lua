@@ -18765,6 +18765,11 @@ function G.relative_settings(text, world)
         -- ("dtmult 20", "zoner 3 nm": a value straight after the setting's name is the value itself, unless a
         -- change is said after it, "zone radius 1.5 nm smaller")
         straight = straight or (R.names[p] and amount(i) and not words[i].raw:match("^[%+%-]"))
+      elseif amount(i) and words[select(2, amount(i))] and words[select(2, amount(i))].w == "times" then
+        -- ("simulation speed 10 times up", "increase simulation speed ten times": a count of times is a factor)
+        if set_to(b, i) then return nil end
+        local count, nx = amount(i)
+        times, factor, i = count, count, nx + 1
       elseif x or (w == "times" and amount(i + 1)) then
         if set_to(b, i) then return nil end
         times = tonumber(x) or amount(i + 1)
@@ -18774,6 +18779,10 @@ function G.relative_settings(text, world)
       elseif w == "by" and words[i + 1] and words[i + 1].w == "half" then
         share, size, i = true, 0.5, i + 2
       elseif w == "default" or w == "defaults" then
+        -- ("back to default", "to its default"; "look-ahead stays default" keeps it)
+        if not (words[i - 1] and (words[i - 1].w == "to" or words[i - 1].w == "its" or words[i - 1].w == "back")) then
+          return nil
+        end
         default, i = true, i + 1
       elseif amount(i) then
         -- ("increase sim speed to times 10", "zone on 6 NM", "to a 3 mile radius": a value the setting is set to)
@@ -18823,7 +18832,8 @@ function G.relative_settings(text, world)
   local out, at, b = {}, 1, 1
   for k = 1, #words + 1 do
     local opener = k <= #words and (G.clause_openers[words[k].raw:lower()] or words[k].raw:match("^#"))
-    local ends = k > #words or opener or words[k].raw:match("^%(") or (k > 1 and words[k - 1].raw:match("[,;:%)]$"))
+    local ends = k > #words or opener or words[k].raw:match("^%(")
+      or (k > 1 and words[k - 1].raw:match("[,;:%)%.!?]$"))
     if ends then
       local said, question
       if k > b then said, question = rewrite(b, k) end

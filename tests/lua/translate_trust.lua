@@ -24867,4 +24867,7 @@ do
   check_eq(ex("pause and note 'LoS at t=512'"), "HOLD ; ECHO LoS at t=512")
   asked(ex("KLM 1234 at FL200 log 'KLM1234 level'"), "a note with an aircraft before it")
   check_eq(ex("ff 30 s then CD status"), "FF 30 ; ASAS")
+  -- (a count of times is a factor; "stays default" keeps the setting; a sentence's end closes the clause)
+  asked(ex("simulation speed 10 times up please"), "ten times real time or ten times the rate now")
+  check_eq(ex("and make the protected zone 4 miles? We're trying a tighter configuration."), "ZONER 4")
 end
