@@ -16452,13 +16452,13 @@ end
 
 -- "set the protected zone to 5 miles and 2000 feet, the standard values", "dtmult 2, the default": a value called
 -- BlueSky's standard or default that is not (G.standard_settings: ZONER 5 NM, ZONEDH 1000 ft, DTMULT 1, DT 0.05 s,
--- DTLOOK 300 s) contradicts itself: asked, naming the standard. "standard"/"default" names the values of its own
+-- DTLOOK 300 s, RFACH and RFACV 1.05) contradicts itself: asked, naming the standard. "standard"/"default" names the values of its own
 -- clause (between marks), or, when that clause holds no value and only words naming them ("the standard values
 -- please", "those are the defaults"), those of the nearest clause before it that has one. The word before a value
 -- ("instead of the default 1.05", "the standard 5 miles"), before the thing it qualifies ("standard rate"), or after
 -- "not"/"non" is not this; neither is a value in a clause of its own beside it ("dtmult 4, lookahead back to default").
-G.standard_settings = { ZONER = 5, ZONEDH = 1000, DTMULT = 1, DT = 0.05, DTLOOK = 300 }
-G.standard_units = { ZONER = " NM", ZONEDH = " ft", DTMULT = "", DT = " s", DTLOOK = " s" }
+G.standard_settings = { ZONER = 5, ZONEDH = 1000, DTMULT = 1, DT = 0.05, DTLOOK = 300, RFACH = 1.05, RFACV = 1.05 }
+G.standard_units = { ZONER = " NM", ZONEDH = " ft", DTMULT = "", DT = " s", DTLOOK = " s", RFACH = "", RFACV = "" }
 function G:standard_values_said()
   local n = #self.t
   local function clause(k)
@@ -18692,7 +18692,7 @@ end
 -- +0.1", "lookahead up 10%", "zone radius half a mile bigger": a setting of lexicon.relative_settings changed by a
 -- factor, a share or an amount up or down, in a clause of its own (set off by a mark, a dash, a "#", "and" or
 -- "then"), is that setting's command with the value it comes to from its value now (world.setting): "DTLOOK 360";
--- "back to default" is its default. A value said after "to" (lexicon.relative_settings.before_value) or straight
+-- "back to default" is its default (G.standard_settings). A value said after "to" (lexicon.relative_settings.before_value) or straight
 -- after the setting's name is the value itself, and a clause with another number, with no value now to read, that
 -- says no way up or down or a unit of another setting, or whose value comes to zero or less, stays as said (asked).
 -- The run's rate "x5" or "times 5" (set to five times real time, or five times the rate now?) is asked where the two
@@ -18702,13 +18702,26 @@ function G.relative_settings(text, world)
   local R = lexicon.relative_settings
   if not world.setting then return text end
   local low = text:lower()
-  local any = low:find("[%+%%]") or low:find("%f[%w]x%d") or low:find("%dx%f[%W]") or low:find("default", 1, true)
-    or low:find("times", 1, true)
-  for w in low:gmatch("%a+") do any = any or R.factors[w] or R.up[w] or R.down[w] end
-  if not any and not low:find("as fast", 1, true) and not low:find("in half", 1, true)
-      and not low:find("half the", 1, true) then
-    return text
+  -- ("rfach and rfacv both 1.1": two settings given one value, each its own clause; "rfacv 1.25 and rfach same",
+  -- "rfacv down 0.1 and rfach up the same": the value or amount said for the one before)
+  text = text:gsub("(%a+)(%s+and%s+)(%a+)%s+both%s+([%+%-]?%d*%.?%d+)", function(a, join, b2, v)
+    if not (R.names[a:lower()] and R.names[b2:lower()]) then return nil end
+    return a .. " " .. v .. join .. b2 .. " " .. v
+  end)
+  for _, the in ipairs({ "the%s+", "" }) do
+    text = text:gsub("(%a+)%s+([%+%-]?%d*%.?%d+)(%s+and%s+)(%a+)(%s+%a*%s*)" .. the .. "same%f[%A]",
+      function(a, v, join, b2, way)
+        local w = a:lower()
+        if not ((R.names[w] or R.up[w] or R.down[w]) and R.names[b2:lower()]) then return nil end
+        return a .. " " .. v .. join .. b2 .. way .. v
+      end)
   end
+  low = text:lower()
+  local any = low:find("[%+%%/]") or low:find("%-%d") or low:find("%f[%w]x%d") or low:find("%dx%f[%W]")
+    or low:find("default", 1, true) or low:find("times", 1, true) or low:find("same", 1, true)
+  for w in low:gmatch("%a+") do any = any or R.up[w] or R.down[w] end
+  for f in pairs(R.factors) do any = any or low:find(f, 1, true) end
+  if not any then return text end
   local words = {}  -- { b =, e = (text positions), raw =, w = (lower case, marks stripped) }
   for b, raw, e in text:gmatch("()(%S+)()") do
     words[#words + 1] = { b = b, e = e, raw = raw, w = raw:lower():gsub("^%(", ""):gsub("[%p]+$", "") }
@@ -18750,13 +18763,14 @@ function G.relative_settings(text, world)
   -- the clause of words b .. e - 1 -> "CMD value", or nil; or nil and a question
   local function rewrite(b, e)
     local cmd, factor, sign, size, unit, share, numbers, default, times = nil, nil, 0, nil, nil, false, 0, false, nil
-    local straight = false
+    local straight, from_default = false, false
     local i = b
     while i < e do
       local n = 4
       while n > 0 and not (i + n <= e and (R.names[phrase(i, n)] or R.factors[phrase(i, n)])) do n = n - 1 end
       local w = words[i].w
       local x = words[i].raw:lower():match("^x(%d*%.?%d+)$") or words[i].raw:lower():match("^(%d*%.?%d+)x$")
+      local divide = tonumber(words[i].raw:match("^/(%d*%.?%d+)$"))
       if n > 0 then
         local p = phrase(i, n)
         if R.names[p] then cmd = (cmd and cmd ~= R.names[p]) and "two" or R.names[p] end
@@ -18770,14 +18784,23 @@ function G.relative_settings(text, world)
         if set_to(b, i) then return nil end
         local count, nx = amount(i)
         times, factor, i = count, count, nx + 1
+      elseif divide and divide > 0 then
+        -- ("zoner /2": divided)
+        factor, i = 1 / divide, i + 1
       elseif x or (w == "times" and amount(i + 1)) then
         if set_to(b, i) then return nil end
         times = tonumber(x) or amount(i + 1)
         factor, i = times, x and i + 1 or select(2, amount(i + 1))
       elseif w == "twice" and factor then
         factor, i = factor * factor, i + 1
-      elseif w == "by" and words[i + 1] and words[i + 1].w == "half" then
+      elseif w == "by" and words[i + 1] and words[i + 1].w == "half" and not (words[i + 2]
+          and (words[i + 2].w == "a" or words[i + 2].w == "an")) then
+        -- ("raise the zone height by half"; "by half a mile" is an amount)
         share, size, i = true, 0.5, i + 2
+      elseif w == "from" and words[i + 1] and (words[i + 1].w == "default" or (words[i + 1].w == "the"
+          and words[i + 2] and words[i + 2].w == "default")) then
+        -- ("zone down a mile from the default": the change counted from the default, not the value now)
+        from_default, i = true, i + (words[i + 1].w == "the" and 3 or 2)
       elseif w == "default" or w == "defaults" then
         -- ("back to default", "to its default"; "look-ahead stays default" keeps it)
         if not (words[i - 1] and (words[i - 1].w == "to" or words[i - 1].w == "its" or words[i - 1].w == "back")) then
@@ -18801,13 +18824,13 @@ function G.relative_settings(text, world)
     if factor and not cmd and low:find("as fast", 1, true) then
       for k = b, e - 1 do cmd = cmd or (R.run_words[words[k].w] and "DTMULT") end
     end
-    if not cmd or cmd == "two" or sign == 2 or numbers > (factor and 0 or 1) or (straight and sign == 0) then
+    if not cmd or cmd == "two" or sign == 2 or numbers > (factor and 0 or 1) or (straight and sign == 0 and not factor) then
       return nil
     end
     if default then
-      return numbers == 0 and sign == 0 and not factor and cmd .. " " .. string.format("%.4g", R.defaults[cmd]) or nil
+      return numbers == 0 and sign == 0 and not factor and cmd .. " " .. string.format("%.4g", G.standard_settings[cmd]) or nil
     end
-    local now = world.setting(cmd)
+    local now = from_default and G.standard_settings[cmd] or world.setting(cmd)
     local value
     if not now then
       return nil
@@ -18821,7 +18844,10 @@ function G.relative_settings(text, world)
     end
     if not value or value <= 0 then return nil end
     -- (the run's rate "x5": five times real time, or five times the rate now)
-    if times and cmd == "DTMULT" and now ~= 1 then
+    local said_now = false  -- ("sim rate 1.5x what it is", "... of the current rate": the rate now is the base)
+    for k = b, e - 1 do said_now = said_now or words[k].w == "current" or (words[k].w == "it" and words[k + 1]
+      and words[k + 1].w == "is" and words[k - 1] and words[k - 1].w == "what") end
+    if times and cmd == "DTMULT" and now ~= 1 and not said_now then
       return nil, string.format("Should the simulation run at %s times real time, or %s times its rate now (%s times "
         .. "real time)? Please say \"DTMULT %s\" or \"DTMULT %s\".", string.format("%.4g", times),
         string.format("%.4g", times), string.format("%.4g", value), string.format("%.4g", times),

@@ -2800,11 +2800,9 @@ return {
               ["vertical reso factor"] = "RFACV", ["vertical resolution factor"] = "RFACV",
               ["horizontal margin"] = "RFACH", ["horiz margin"] = "RFACH", ["hor margin"] = "RFACH", rfach = "RFACH",
               ["horizontal reso factor"] = "RFACH", ["horiz reso factor"] = "RFACH",
-              ["horizontal resolution factor"] = "RFACH" },
-    -- each command's value in BlueSky when nothing has set it ("zone dh back to default")
-    defaults = { DTLOOK = 300, ZONER = 5, ZONEDH = 1000, RFACH = 1.05, RFACV = 1.05, DTMULT = 1 },
+              ["horizontal resolution factor"] = "RFACH", ["vertical zone"] = "ZONEDH" },
     factors = { double = 2, triple = 3, quadruple = 4, halve = 0.5, ["half the"] = 0.5, ["in half"] = 0.5,
-                doubled = 2, tripled = 3, halved = 0.5,
+                doubled = 2, tripled = 3, halved = 0.5, ["three quarters of"] = 0.75, ["two thirds of"] = 2 / 3,
                 ["twice as fast"] = 2, ["three times as fast"] = 3, ["four times as fast"] = 4, ["half as fast"] = 0.5 },
     -- shares of the value now, said after "a" ("up by a quarter", "down a third")
     shares = { quarter = 0.25, third = 1 / 3 },

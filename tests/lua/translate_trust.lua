@@ -24869,5 +24869,18 @@ do
   check_eq(ex("ff 30 s then CD status"), "FF 30 ; ASAS")
   -- (a count of times is a factor; "stays default" keeps the setting; a sentence's end closes the clause)
   asked(ex("simulation speed 10 times up please"), "ten times real time or ten times the rate now")
+  -- (R542, R544: a signed value, a divisor, a share "of what it is now", "by half a mile", "from the default", two
+  -- settings given one value or the same amount)
+  check_eq(ex("lookahead -30"), "DTLOOK 60")
+  check_eq(ex("dtmult -1"), "DTMULT 2")
+  check_eq(ex("zoner /2"), "ZONER 4")
+  check_eq(ex("lookahead three quarters of what it is now"), "DTLOOK 67.5")
+  check_eq(ex("sim rate 1.5x what it is"), "DTMULT 4.5")
+  check_eq(ex("tighten the zone by half a mile"), "ZONER 7.5")
+  check_eq(ex("zone down a mile from the default"), "ZONER 4")
+  check_eq(ex("double the vertical zone"), "ZONEDH 4000")
+  check_eq(ex("rfach and rfacv both 1.1"), "RFACH 1.1 ; RFACV 1.1")
+  check_eq(ex("rfacv 1.25 and rfach same"), "RFACV 1.25 ; RFACH 1.25")
+  check_eq(ex("rfacv down 0.1 and rfach up the same"), "RFACV 1.4 ; RFACH 1.15")
   check_eq(ex("and make the protected zone 4 miles? We're trying a tighter configuration."), "ZONER 4")
 end
