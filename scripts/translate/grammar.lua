@@ -547,7 +547,9 @@ end
 -- ("tousand", "tirty", "fousand"), as Romanian, Hungarian, Bulgarian, Serbian and Croatian speakers are written; or with "l" for one "r" or
 -- "r" for one "l" ("fright revel", "confrict resorution", "lesume", as Mandarin speakers are), or with "v" for its "w"
 -- or no vowel before its opening "s" ("wector", "estop", "espeed", as Pakistani and Bangladeshi speakers are), or
--- with "kh" for its "r" ("khight", "khoute", "khyanair", as Hebrew speakers' guttural r is written). The
+-- with "kh" for its "r" ("khight", "khoute", "khyanair", as Hebrew speakers' guttural r is written), or with "h" for
+-- its opening "r" or "chi" for its closing "t" ("heduce", "hesume", "feetchi", "directchi", as Brazilian speakers'
+-- are). The
 -- word it becomes is a number word or an instruction word (G.instruction_word; four letters or more, five for "l" and
 -- "r", "v" for "w" and the vowel), or a word squawk knows (six letters or more with "c" for "k", five written twice,
 -- four with "w"); else nil ("kas", "ried", "road", "dirty" stay).
@@ -561,6 +563,10 @@ function G.letters_swapped(w)
     or fits((w:gsub("k", "c")), 4, 6) or (w:match("^[tf]") and NUMBER_WORDS["th" .. w:sub(2)] and "th" .. w:sub(2))
     or (w:match("^[ei]s[^aeiou]") and fits(w:sub(2), 5, math.huge))
     or (w:find("kh", 1, true) and fits((w:gsub("kh", "r")), 4, 6))
+    or (w:match("^h") and fits("r" .. w:sub(2), 5, math.huge))
+  -- (a closing "t" said "chi": "feetchi", "directchi", "minutchi", "routchi", "heighchi")
+  local stem = w:match("^(%l%l+)chi$")
+  for _, tail in ipairs(stem and { "", "t", "e", "te" } or {}) do found = found or fits(stem .. tail, 4, 6) end
   -- (one letter swapped where the word has two: "tvelve"; the others the same)
   for i = 1, #w do
     local c, rest = w:sub(i, i), w:sub(i + 1)
@@ -18763,7 +18769,7 @@ function G.relative_settings(text, world)
   -- the clause of words b .. e - 1 -> "CMD value", or nil; or nil and a question
   local function rewrite(b, e)
     local cmd, factor, sign, size, unit, share, numbers, default, times = nil, nil, 0, nil, nil, false, 0, false, nil
-    local straight, from_default = false, false
+    local straight, from_default, typed = false, false, false
     local i = b
     while i < e do
       local n = 4
@@ -18812,7 +18818,7 @@ function G.relative_settings(text, world)
         if set_to(b, i) then return nil end
         local value, nx, typed_sign, glued, is_share = amount(i)
         numbers, size, i, share = numbers + 1, value, nx, share or is_share
-        if typed_sign then sign = (sign == 0 or sign == typed_sign) and typed_sign or 2 end
+        if typed_sign then sign, typed = (sign == 0 or sign == typed_sign) and typed_sign or 2, true end
         unit = glued
         if not unit and words[i] and R.units[words[i].w] then unit, i = words[i].w, i + 1 end
       else
@@ -18821,8 +18827,16 @@ function G.relative_settings(text, world)
         i = i + 1
       end
     end
-    if factor and not cmd and low:find("as fast", 1, true) then
-      for k = b, e - 1 do cmd = cmd or (R.run_words[words[k].w] and "DTMULT") end
+    -- (the run's rate: "make it twice as fast" with no aircraft named, "slow the sim down by half")
+    local run_named, run_speed, aircraft_named = false, false, false
+    for k = b, e - 1 do
+      run_named = run_named or R.run_words[words[k].w] ~= nil
+      run_speed = run_speed or R.run_speed[words[k].w] ~= nil
+      aircraft_named = aircraft_named or words[k].raw:match("%a.*%d") ~= nil
+    end
+    if not cmd and not aircraft_named and ((factor and low:find("as fast", 1, true))
+        or (run_named and run_speed and words[b].w ~= "run")) then
+      cmd = "DTMULT"
     end
     if not cmd or cmd == "two" or sign == 2 or numbers > (factor and 0 or 1) or (straight and sign == 0 and not factor) then
       return nil
@@ -18838,6 +18852,10 @@ function G.relative_settings(text, world)
       value = now * factor
     elseif share and size and sign ~= 0 then
       value = now * (1 + sign * (size > 1 and size / 100 or size))
+    elseif size and sign ~= 0 and cmd == "DTMULT" and not typed and not unit then
+      -- ("speed the simulation up by ten": the run's rate said up by a number is that many times; down, asked)
+      if sign < 0 then return nil end
+      times, value = size, now * size
     elseif size and sign ~= 0 then
       local scale = unit and R.units[unit][cmd] or (not unit and 1)
       value = scale and now + sign * size * scale

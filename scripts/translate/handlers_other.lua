@@ -5726,10 +5726,18 @@ return function(H, f, compass)
     -- (read at "horizontal": horizontal alone, G:vertical_resolutions)
     -- ("not only horizontal": horizontal and more, vertical speed too)
     local horizontal_alone = self:word(s.trig, "horizontal lateral") and not self:additive_not(s.trig - 2)
-    self:emit((off or only or horizontal_alone) and "RMETHV OFF" or "RMETHV V/S")
-    -- (its clause whole: "turn on MVP resolution and allow vertical manoeuvres" reads "allow" with the vertical)
+    -- (its clause whole: "turn on MVP resolution and allow vertical manoeuvres" reads "allow" with the vertical;
+    -- "MVP with vertical", "MVP and vertical", opening the request: the method named there and read by nothing else
+    -- is set first; "let MVP use vertical speed" names whose resolutions they are)
     local lo, hi = self:clause_around(s.trig)
-    self:mark_used(math.min(s.b, lo), math.max(s.e, hi))
+    local from, to = math.min(s.b, lo), math.max(s.e, hi)
+    local mvp = self:skip_fillers(1)
+    if self:word(mvp, "mvp") and (self:word(mvp + 1, "with and plus w") or (self.t[mvp + 1] or {}).text == ",")
+        and not off and not self.u:used(mvp) then
+      self:emit("RESO MVP")
+    end
+    self:emit((off or only or horizontal_alone) and "RMETHV OFF" or "RMETHV V/S")
+    self:mark_used(from, to)
   end
   function m:resume_nav(s)
     if self:asks_setting() then return self:emit("RESNAV") end

@@ -2811,8 +2811,9 @@ return {
     before_value = { to = true, on = true, at = true, of = true, is = true, be = true, was = true, were = true,
                      ["="] = true, times = false,
                      a = false, an = false, factor = false, x = false, about = false, around = false },
-    -- (a factor "as fast" names the run's rate where the thing made faster is the simulation)
-    run_words = { it = true, sim = true, simulation = true, things = true, everything = true, time = true },
+    -- (the run's rate: named by these with a word of its speed, "slow the sim down by half")
+    run_words = { sim = true, simulation = true },
+    run_speed = { slow = true, slower = true, fast = true, faster = true, speed = true, quicker = true },
     up = { up = true, raise = true, increase = true, extend = true, add = true, plus = true, out = true,
            bump = true, lengthen = true, widen = true, grow = true, bigger = true, larger = true, longer = true,
            wider = true, higher = true, more = true, greater = true },
@@ -2932,7 +2933,9 @@ return {
     -- (Cantonese: a final consonant dropped from a digit, "fi", "eigh"; Scottish and Northern Irish: "headin", "flight
     -- leve", "doon", "thoosand", "hunner", "tae", "oot")
     fi = "five", eigh = "eight", headin = "heading", leve = "level", doon = "down", thoosand = "thousand",
-    hunner = "hundred", tae = "to", oot = "out", contac = "contact", ["fo-ty"] = "forty", foty = "forty" },
+    hunner = "hundred", tae = "to", oot = "out", contac = "contact", ["fo-ty"] = "forty", foty = "forty",
+    -- (Korean: an /f/ said /p/, "l" said "r" and a vowel after: "prright level", "pright", "pry heading", "turn repto")
+    prright = "flight", pright = "flight", pry = "fly", repto = "left" },
   heard_as = {
     { heard = { "write", "rite", "wright" }, means = "right",
       before = { "heading", "hdg", "turn" }, after = { "turn" } },

@@ -526,6 +526,8 @@ local function has_english_word(line, name)
   for w in (name == "ECHO" and line:lower():match("^%s*%a+%s+([%a%s]+):") or ""):gmatch("%a+") do
     if ECHO_PLACES[w] or w == "message" or w == "note" or w == "text" then return true end
   end
+  -- ("rpz +2", "dtlook +60": a value typed with a plus is a change from the value now, read by the grammar)
+  if name ~= "ECHO" and line:find("%s%+%d") then return true end
   local n = 0
   local all = {}
   for w in line:gmatch("[^%s,]+") do all[#all + 1] = w:lower() end

@@ -24884,3 +24884,23 @@ do
   check_eq(ex("rfacv down 0.1 and rfach up the same"), "RFACV 1.4 ; RFACH 1.15")
   check_eq(ex("and make the protected zone 4 miles? We're trying a tighter configuration."), "ZONER 4")
 end
+
+-- Cycle 84 (R546, R547, R550): a Brazilian recogniser's opening "r" written "h" and closing "t" written "chi"
+-- ("heduce", "hesume", "feetchi", "directchi"); a Korean one's "prright level", "pry", "repto"; "MVP with vertical"
+-- opening a request sets the method too ("let MVP use vertical speed" names whose resolutions they are); the run's
+-- rate "twice as fast" with no aircraft named, "slow the sim down by half", "rpz +2" typed as TrafScript with a plus
+do
+  local _, ex = scene({ "CRE GLO1234 B738 -23.5 -46.6 090 FL200 280", "CRE KAL1102 B77W 37.5 126.5 180 FL300 290",
+                         "DTMULT 5", "ZONER 5" })
+  check_eq(ex("gol one two tree four heduce speed two five zero"), "SPD GLO1234 250")
+  check_eq(ex("gol one two tree four descend four tousand feetchi"), "ALT GLO1234 4000")
+  check_eq(ex("hesume simulachion"), "OP")
+  check_eq(ex("korean air one one zero two crimb prright level tree tree zero"), "ALT KAL1102 FL330")
+  check_eq(ex("MVP with vertical and resume past cpa"), "RESO MVP ; RMETHV V/S ; RESNAV PASTCPA")
+  check_eq(ex("let MVP use vertical speed in the resolutions"), "RMETHV V/S")
+  check_eq(ex("twice as fast"), "DTMULT 10")
+  check_eq(ex("slow the sim down by half"), "DTMULT 2.5")
+  asked(ex("speed the simulation up by ten"), "ten times real time or ten times the rate now")
+  check_eq(ex("rpz +2"), "ZONER 7")
+  check_eq(ex("ZONER 2"), "ZONER 2")
+end
