@@ -18838,6 +18838,12 @@ function G.relative_settings(text, world)
         or (run_named and run_speed and words[b].w ~= "run")) then
       cmd = "DTMULT"
     end
+    -- ("zone radius minus 0.5 nm, height plus 250": the height, after the zone was named, is the zone's)
+    for k = b, e - 1 do
+      if not cmd and not aircraft_named and words[k].w == "height" and (low:find("zone", 1, true) or low:find("pz", 1, true)) then
+        cmd = "ZONEDH"
+      end
+    end
     if not cmd or cmd == "two" or sign == 2 or numbers > (factor and 0 or 1) or (straight and sign == 0 and not factor) then
       return nil
     end
@@ -18852,9 +18858,9 @@ function G.relative_settings(text, world)
       value = now * factor
     elseif share and size and sign ~= 0 then
       value = now * (1 + sign * (size > 1 and size / 100 or size))
-    elseif size and sign ~= 0 and cmd == "DTMULT" and not typed and not unit then
-      -- ("speed the simulation up by ten": the run's rate said up by a number is that many times; down, asked)
-      if sign < 0 then return nil end
+    elseif size and sign > 0 and cmd == "DTMULT" and not typed and not unit then
+      -- ("speed the simulation up by ten": the run's rate said up by a number is that many times; "sim rate down by
+      -- 3" takes 3 off)
       times, value = size, now * size
     elseif size and sign ~= 0 then
       local scale = unit and R.units[unit][cmd] or (not unit and 1)

@@ -5732,7 +5732,8 @@ return function(H, f, compass)
     local lo, hi = self:clause_around(s.trig)
     local from, to = math.min(s.b, lo), math.max(s.e, hi)
     local mvp = self:skip_fillers(1)
-    if self:word(mvp, "mvp") and (self:word(mvp + 1, "with and plus w") or (self.t[mvp + 1] or {}).text == ",")
+    local joined = self.t[mvp + 1] and (self.t[mvp + 1].text == "," or self.t[mvp + 1].raw:lower() == "w/")
+    if self:word(mvp, "mvp") and (self:word(mvp + 1, "with and plus w") or joined)
         and not off and not self.u:used(mvp) then
       self:emit("RESO MVP")
     end

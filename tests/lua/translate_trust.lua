@@ -24902,5 +24902,8 @@ do
   check_eq(ex("slow the sim down by half"), "DTMULT 2.5")
   asked(ex("speed the simulation up by ten"), "ten times real time or ten times the rate now")
   check_eq(ex("rpz +2"), "ZONER 7")
+  check_eq(ex("sim rate down by 3"), "DTMULT 2")
+  check_eq(ex("mvp w/ vertical"), "RESO MVP ; RMETHV V/S")
+  check_eq(ex("zone radius minus 0.5 nm, height plus 250"), "ZONER 4.5 ; ZONEDH 1250")
   check_eq(ex("ZONER 2"), "ZONER 2")
 end
