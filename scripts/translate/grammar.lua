@@ -18714,6 +18714,13 @@ function G.relative_settings(text, world)
     if not (R.names[a:lower()] and R.names[b2:lower()]) then return nil end
     return a .. " " .. v .. join .. b2 .. " " .. v
   end)
+  -- ("reso factors both 1.1", "both reso factors back to default", "reso factors -0.25 each": the two factors, each
+  -- said in a clause of its own)
+  local both, rest = text:lower():match("^%s*(b?o?t?h?)%s*reso%a*%s+factors%s+(.-)%s*$")
+  if both and (both == "both" or rest:find("^both%s") or rest:find("%seach$")) then
+    rest = rest:gsub("^both%s+", ""):gsub("%s+each$", "")
+    text = "rfach " .. rest .. " and rfacv " .. rest
+  end
   for _, the in ipairs({ "the%s+", "" }) do
     text = text:gsub("(%a+)%s+([%+%-]?%d*%.?%d+)(%s+and%s+)(%a+)(%s+%a*%s*)" .. the .. "same%f[%A]",
       function(a, v, join, b2, way)
@@ -21146,6 +21153,8 @@ G.both_switch_pairs = {
 }
 G.both_switch_after = set_of({ "on", "off", "please", "then", "now", "active", "enabled", "disabled" })
 function G.both_switch_said(before)
+  -- ("reso factors both 1.1": the two factors, G.relative_settings, no switches)
+  if before:find("factor", 1, true) then return nil end
   for _, pair in ipairs(G.both_switch_pairs) do
     for w in before:gmatch("%a+") do
       if pair.words[w] then return pair.said end

@@ -2802,7 +2802,9 @@ return {
               ["horizontal reso factor"] = "RFACH", ["horiz reso factor"] = "RFACH",
               ["horizontal resolution factor"] = "RFACH", ["vertical zone"] = "ZONEDH" },
     factors = { double = 2, triple = 3, quadruple = 4, halve = 0.5, ["half the"] = 0.5, ["in half"] = 0.5,
-                doubled = 2, tripled = 3, halved = 0.5, ["three quarters of"] = 0.75, ["two thirds of"] = 2 / 3,
+                doubled = 2, tripled = 3, halved = 0.5, quartered = 0.25, ["three quarters of"] = 0.75,
+                ["two thirds of"] = 2 / 3, ["half of"] = 0.5, ["a third of"] = 1 / 3, ["a quarter of"] = 0.25,
+                ["a fifth of"] = 0.2, ["a tenth of"] = 0.1,
                 ["twice as fast"] = 2, ["three times as fast"] = 3, ["four times as fast"] = 4, ["half as fast"] = 0.5 },
     -- shares of the value now, said after "a" ("up by a quarter", "down a third")
     shares = { quarter = 0.25, third = 1 / 3 },

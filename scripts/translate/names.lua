@@ -712,6 +712,7 @@ local names = {
     { "royal bhutan", "DRK" },  -- (Druk Air)
     { "bangla star", "UBG" },  -- (US-Bangla Airlines)
     { "novoair", "NVQ" },
+    { "maldivian", "DQA" },  -- (Maldivian, the Maldives)
     { "shaheen air", "SAI" },  -- (Shaheen Air International, Pakistan)
     { "shaheen", "SAI" },  -- (its telephony's first word, as controllers in Pakistan say it: "Shaheen 331")
     -- South-East Asia's other airlines by ICAO telephony, also split as speech recognition writes it ("mass wings

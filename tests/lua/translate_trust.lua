@@ -24905,5 +24905,11 @@ do
   check_eq(ex("sim rate down by 3"), "DTMULT 2")
   check_eq(ex("mvp w/ vertical"), "RESO MVP ; RMETHV V/S")
   check_eq(ex("zone radius minus 0.5 nm, height plus 250"), "ZONER 4.5 ; ZONEDH 1250")
+  -- (R552, R551: the two reso factors "both"; a share "of what it is"; "MVP, no vertical"; Maldivian by its telephony)
+  check_eq(ex("reso factors both 1.2"), "RFACH 1.2 ; RFACV 1.2")
+  check_eq(ex("both reso factors back to default"), "RFACH 1.05 ; RFACV 1.05")
+  check_eq(ex("sim rate half of what it is"), "DTMULT 2.5")
+  check_eq(ex("MVP, no vertical"), "RESO MVP ; RMETHV OFF")
+  check_eq(ex("MVP on, only detection? no, both on"), "RESO MVP ; ASAS ON")
   check_eq(ex("ZONER 2"), "ZONER 2")
 end
