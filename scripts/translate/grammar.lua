@@ -16475,6 +16475,8 @@ function G:standard_values_said()
   end
   for x = 1, n do
     if self:word(x, "standard default defaults") and not self:word(x - 1, "not non no")
+        -- ("margin 1.1 instead of the default": the value said replaces the default)
+        and not self:word_in(math.max(1, x - 3), x, "instead unlike")
         and not self:word(x + 1, "speed rate turn route routing arrival departure star sid instrument procedure")
         and not (self.t[x + 1] and self.t[x + 1].kind == "number")
         and not (self:word(x + 1, "value setting") and self.t[x + 2] and self.t[x + 2].kind == "number") then
@@ -18787,6 +18789,9 @@ function G.relative_settings(text, world)
       if n > 0 then
         local p = phrase(i, n)
         if R.names[p] then cmd = (cmd and cmd ~= R.names[p]) and "two" or R.names[p] end
+        -- ("resume the sim at double speed", "set it to double": a factor said after "at" or "to" is the value set;
+        -- "to a fifth of that" is reckoned from the value now)
+        if R.factors[p] and set_to(b, i) and not p:find(" of ", 1, true) then return nil end
         factor = R.factors[p] or factor
         i = i + n
         -- ("dtmult 20", "zoner 3 nm": a value straight after the setting's name is the value itself, unless a
@@ -18841,9 +18846,10 @@ function G.relative_settings(text, world)
       run_speed = run_speed or R.run_speed[words[k].w] ~= nil
       aircraft_named = aircraft_named or words[k].raw:match("%a.*%d") ~= nil
     end
+    local run_derived = false
     if not cmd and not aircraft_named and ((factor and low:find("as fast", 1, true))
-        or (run_named and run_speed and words[b].w ~= "run")) then
-      cmd = "DTMULT"
+        or (run_named and run_speed and not R.run_kept[words[b].w])) then
+      cmd, run_derived = "DTMULT", true
     end
     -- ("zone radius minus 0.5 nm, height plus 250": the height, after the zone was named, is the zone's)
     for k = b, e - 1 do
@@ -18858,6 +18864,9 @@ function G.relative_settings(text, world)
       return numbers == 0 and sign == 0 and not factor and cmd .. " " .. string.format("%.4g", G.standard_settings[cmd]) or nil
     end
     local now = from_default and G.standard_settings[cmd] or world.setting(cmd)
+    -- ("make it faster, simulation 5 times quicker" at real time: the grammar's reading of the request whole, the same
+    -- rate, where the clause is not all of it)
+    if run_derived and times and now == 1 and (b > 1 or e <= #words) then return nil end
     local value
     if not now then
       return nil

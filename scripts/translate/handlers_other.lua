@@ -5733,7 +5733,7 @@ return function(H, f, compass)
     local from, to = math.min(s.b, lo), math.max(s.e, hi)
     local mvp = self:skip_fillers(1)
     local joined = self.t[mvp + 1] and (self.t[mvp + 1].text == "," or self.t[mvp + 1].raw:lower() == "w/")
-    if self:word(mvp, "mvp") and (self:word(mvp + 1, "with and plus w horizontal vertical no") or joined)
+    if self:word(mvp, "mvp") and (self:word(mvp + 1, "with and plus w no") or joined)
         and not self:word(mvp + 1, "@off") and not self.u:used(mvp) then
       self:emit("RESO MVP")
     end

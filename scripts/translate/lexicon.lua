@@ -2802,9 +2802,12 @@ return {
               ["horizontal reso factor"] = "RFACH", ["horiz reso factor"] = "RFACH",
               ["horizontal resolution factor"] = "RFACH", ["vertical zone"] = "ZONEDH" },
     factors = { double = 2, triple = 3, quadruple = 4, halve = 0.5, ["half the"] = 0.5, ["in half"] = 0.5,
-                doubled = 2, tripled = 3, halved = 0.5, quartered = 0.25, ["three quarters of"] = 0.75,
-                ["two thirds of"] = 2 / 3, ["half of"] = 0.5, ["a third of"] = 1 / 3, ["a quarter of"] = 0.25,
-                ["a fifth of"] = 0.2, ["a tenth of"] = 0.1,
+                doubled = 2, tripled = 3, halved = 0.5, quartered = 0.25,
+                -- (a share "of what it is" or "of that", the value now; "the vertical half of the zone" is none)
+                ["three quarters of what"] = 0.75, ["two thirds of what"] = 2 / 3, ["half of what"] = 0.5,
+                ["a third of what"] = 1 / 3, ["a quarter of what"] = 0.25, ["a fifth of what"] = 0.2,
+                ["a tenth of what"] = 0.1, ["half of that"] = 0.5, ["a third of that"] = 1 / 3,
+                ["a quarter of that"] = 0.25, ["a fifth of that"] = 0.2, ["a tenth of that"] = 0.1,
                 ["twice as fast"] = 2, ["three times as fast"] = 3, ["four times as fast"] = 4, ["half as fast"] = 0.5 },
     -- shares of the value now, said after "a" ("up by a quarter", "down a third")
     shares = { quarter = 0.25, third = 1 / 3 },
@@ -2816,6 +2819,9 @@ return {
     -- (the run's rate: named by these with a word of its speed, "slow the sim down by half")
     run_words = { sim = true, simulation = true },
     run_speed = { slow = true, slower = true, fast = true, faster = true, speed = true, quicker = true },
+    -- (verbs of running that open a clause of their own, "resume the sim at ...", "run the sim for 5 minutes fast":
+    -- the grammar's to read)
+    run_kept = { run = true, resume = true, continue = true, start = true, go = true, unpause = true },
     up = { up = true, raise = true, increase = true, extend = true, add = true, plus = true, out = true,
            bump = true, lengthen = true, widen = true, grow = true, bigger = true, larger = true, longer = true,
            wider = true, higher = true, more = true, greater = true },

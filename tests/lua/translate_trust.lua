@@ -24752,6 +24752,11 @@ do
   check_eq(ex("zone down to two miles"), "ZONER 2")
   check_eq(ex("increase sim speed to times 10"), "DTMULT 10")
   check_eq(ex("increase zone for detection on 6 NM"), "ZONER 6")
+  -- (a factor after "at" is the rate set; a verb of running keeps its own clause; "the vertical half of the zone" is
+  -- no share; a value "instead of the default")
+  check_eq(ex("resume the sim at double speed"), "OP ; DTMULT 2")
+  check_eq(ex("the vertical half of the zone, put 1000 feet"), "ZONEDH 1000")
+  check_eq(ex("make the horizontal resolution margin 1.1 instead of the default"), "RFACH 1.1")
   check_eq(ex("dtmult 20  # speed things up"), "DTMULT 20")
   -- (an amount in another setting's unit, a change that leaves nothing, a value said again after a dash: asked)
   asked(ex("double the zone - five miles"), "the zone's value now said after the change")
