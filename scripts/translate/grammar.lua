@@ -587,6 +587,8 @@ end
 -- with no mark between, one at least no word squawk knows, that run together into a number word or an instruction
 -- word -> that word and the index after its last piece; else nil.
 function G.split_word(toks, i)
+  local function known(w) return w == nil or KNOWN[w] or NUMBER_WORDS[w] end
+  if known(toks[i]) and known(toks[i + 1]) and known(toks[i + 2]) then return nil end
   local joined, unknown = "", false
   for k = i, i + 2 do
     if not (toks[k] and toks[k]:match("^%l+$")) then return nil end
@@ -18710,6 +18712,21 @@ function G.relative_settings(text, world)
   local R = lexicon.relative_settings
   if not world.setting then return text end
   local low = text:lower()
+  -- (a word opening a setting's name, the run's or the resolution factors' must be said, or "as fast")
+  if not G.relative_first_words then
+    G.relative_first_words = { reso = true }
+    for name in pairs(R.names) do G.relative_first_words[name:match("^%S+")] = true end
+    for w in pairs(R.run_words) do G.relative_first_words[w] = true end
+  end
+  local named = low:find("as fast", 1, true) ~= nil
+  for w in low:gmatch("[%a%-]+") do named = named or G.relative_first_words[w] ~= nil end
+  if not named then return text end
+  local any = low:find("[%+%%/]") or low:find("%-%d") or low:find("%f[%w]x%d") or low:find("%dx%f[%W]")
+    or low:find("default", 1, true) or low:find("times", 1, true) or low:find("same", 1, true)
+    or low:find("both", 1, true) or low:find("each", 1, true)
+  for w in low:gmatch("%a+") do any = any or R.up[w] or R.down[w] end
+  for f in pairs(R.factors) do any = any or low:find(f, 1, true) end
+  if not any then return text end
   -- ("rfach and rfacv both 1.1": two settings given one value, each its own clause; "rfacv 1.25 and rfach same",
   -- "rfacv down 0.1 and rfach up the same": the value or amount said for the one before)
   text = text:gsub("(%a+)(%s+and%s+)(%a+)%s+both%s+([%+%-]?%d*%.?%d+)", function(a, join, b2, v)
@@ -18732,11 +18749,6 @@ function G.relative_settings(text, world)
       end)
   end
   low = text:lower()
-  local any = low:find("[%+%%/]") or low:find("%-%d") or low:find("%f[%w]x%d") or low:find("%dx%f[%W]")
-    or low:find("default", 1, true) or low:find("times", 1, true) or low:find("same", 1, true)
-  for w in low:gmatch("%a+") do any = any or R.up[w] or R.down[w] end
-  for f in pairs(R.factors) do any = any or low:find(f, 1, true) end
-  if not any then return text end
   local words = {}  -- { b =, e = (text positions), raw =, w = (lower case, marks stripped) }
   for b, raw, e in text:gmatch("()(%S+)()") do
     words[#words + 1] = { b = b, e = e, raw = raw, w = raw:lower():gsub("^%(", ""):gsub("[%p]+$", "") }
