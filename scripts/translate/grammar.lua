@@ -549,10 +549,12 @@ end
 -- or no vowel before its opening "s" ("wector", "estop", "espeed", as Pakistani and Bangladeshi speakers are), or
 -- with "kh" for its "r" ("khight", "khoute", "khyanair", as Hebrew speakers' guttural r is written), or with "h" for
 -- its opening "r" or "chi" for its closing "t" ("heduce", "hesume", "feetchi", "directchi", as Brazilian speakers'
--- are). The
--- word it becomes is a number word or an instruction word (G.instruction_word; four letters or more, five for "l" and
--- "r", "v" for "w" and the vowel), or a word squawk knows (six letters or more with "c" for "k", five written twice,
--- four with "w"); else nil ("kas", "ried", "road", "dirty" stay).
+-- are), or with "t" for its "d", "p" for its "b" or "ii" for its "ee", a consonant written twice ("tescend",
+-- "hundret", "climp", "spiid", "knotts", as Finnish, Estonian, Latvian and Lithuanian speakers are). The
+-- word it becomes is a number word or an instruction word (G.instruction_word; four letters or more, five for "l",
+-- "r", "d", "b", "ee", "v" for "w" and the vowel), or a word squawk knows (six letters or more with "c" for "k",
+-- "b" or "ee", five with an "r" or "f" written twice, four with "w"); else nil ("kas", "ried", "road", "dirty",
+-- "matte" stay).
 function G.letters_swapped(w)
   if #w < 3 or KNOWN[w] or HEARD[w] or not w:match("^%l+$") then return nil end
   local function fits(x, instruction_len, known_len)
@@ -564,6 +566,8 @@ function G.letters_swapped(w)
     or (w:match("^[ei]s[^aeiou]") and fits(w:sub(2), 5, math.huge))
     or (w:find("kh", 1, true) and fits((w:gsub("kh", "r")), 4, 6))
     or (w:match("^h") and fits("r" .. w:sub(2), 5, math.huge))
+    -- (a voiced stop said unvoiced and a long "ee" written "ii": "tescend", "hundret", "climp", "spiid")
+    or fits((w:gsub("t", "d")), 5, math.huge) or fits((w:gsub("p", "b")), 5, 6) or fits((w:gsub("ii", "ee")), 5, 6)
   -- (a closing "t" said "chi": "feetchi", "directchi", "minutchi", "routchi", "heighchi")
   local stem = w:match("^(%l%l+)chi$")
   for _, tail in ipairs(stem and { "", "t", "e", "te" } or {}) do found = found or fits(stem .. tail, 4, 6) end
@@ -573,7 +577,9 @@ function G.letters_swapped(w)
     local head = w:sub(1, i - 1)
     found = found or (c == "v" and fits(head .. "w" .. rest, 4, 4)) or (c == "k" and fits(head .. "c" .. rest, 4, 6))
       or (c == "r" and fits(head .. "l" .. rest, 5, math.huge)) or (c == "l" and fits(head .. "r" .. rest, 5, math.huge))
-      or ((c == "r" or c == "f") and rest:sub(1, 1) == c and fits(head .. rest, math.huge, 5)) or nil
+      or ((c == "r" or c == "f") and rest:sub(1, 1) == c and fits(head .. rest, math.huge, 5))
+      or (c:match("[^aeiourf]") and rest:sub(1, 1) == c and fits(head .. rest, 5, math.huge))
+      or nil
   end
   return found
 end
@@ -596,6 +602,20 @@ function G.split_word(toks, i)
     if k > i and unknown and (NUMBER_WORDS[joined] or G.instruction_word(joined)) then return joined, k + 1 end
   end
   return nil
+end
+-- "climb A110", "descend to A090", "when passing A100": an altitude as Australian and New Zealand controllers write
+-- it, "A" and hundreds of feet (A000 to A199, below their transition level), after a word of lexicon.area_altitude_after
+-- -> "11000 ft"; "F-L 160" is "FL 160". An "A" and three digits elsewhere stays as typed (the A109 and A139 are
+-- helicopters' types).
+function G.area_altitudes(text)
+  text = text:gsub("%f[%w]([Ff])%-([Ll])%f[%W]", "%1%2")
+  if not text:find("%f[%w][Aa][01]%d%d%f[%W]") then return text end
+  local toks, bare = plain_words(text)
+  return tokens.rewrite(text, toks, function(i)
+    local hundreds = bare[i]:match("^a([01]%d%d)$")
+    if not (hundreds and lexicon.area_altitude_after[bare[i - 1] or ""]) then return nil end
+    return tonumber(hundreds) * 100 .. " ft" .. (toks[i]:match("%p+$") or ""), i + 1
+  end)
 end
 function G.accented(text)
   local toks, bare = plain_words(text)
@@ -18724,7 +18744,8 @@ function G.relative_settings(text, world)
   local any = low:find("[%+%%/]") or low:find("%-%d") or low:find("%f[%w]x%d") or low:find("%dx%f[%W]")
     or low:find("default", 1, true) or low:find("times", 1, true) or low:find("same", 1, true)
     or low:find("both", 1, true) or low:find("each", 1, true)
-  for w in low:gmatch("%a+") do any = any or R.up[w] or R.down[w] end
+  for w in low:gmatch("%S+") do any = any or R.arrows[w] end
+  for w in low:gmatch("%a+") do any = any or R.up[w] or R.down[w] or R.percent[w] end
   for f in pairs(R.factors) do any = any or low:find(f, 1, true) end
   if not any then return text end
   -- ("rfach and rfacv both 1.1": two settings given one value, each its own clause; "rfacv 1.25 and rfach same",
@@ -18765,9 +18786,16 @@ function G.relative_settings(text, world)
     local t = words[i]
     if not t then return nil end
     local sign, digits, glued = t.raw:lower():match("^([%+%-]?)(%d*%.?%d+)(%a*)%%?[,;:]?$")
-    if digits and (glued == "" or R.units[glued]) then
-      return tonumber(digits), i + 1, (sign == "+" and 1) or (sign == "-" and -1) or nil, glued ~= "" and glued or nil,
-        t.raw:find("%%") ~= nil
+    -- ("25 percent", "20 pct", "ten per cent": a share said in words after the number)
+    local function per(k)
+      local p = words[k] and words[k].w
+      if R.percent[p] then return k + 1 end
+      return p == "per" and words[k + 1] and words[k + 1].w == "cent" and k + 2 or nil
+    end
+    if digits and (glued == "" or R.units[glued] or R.percent[glued]) then
+      local past = glued == "" and not t.raw:find("%%") and per(i + 1)
+      return tonumber(digits), past or i + 1, (sign == "+" and 1) or (sign == "-" and -1) or nil,
+        R.units[glued] and glued or nil, t.raw:find("%%") ~= nil or R.percent[glued] ~= nil or past ~= nil
     end
     local w, nx = t.w, words[i + 1] and words[i + 1].w
     if (w == "a" or w == "an") and R.shares[nx] then return R.shares[nx], i + 2, nil, nil, true end
@@ -18778,7 +18806,8 @@ function G.relative_settings(text, world)
       total = words[k].w == "hundred" and total * 100 or (total or 0) + G.below_hundred[words[k].w]
       k = k + 1
     end
-    return total, k
+    local past = total and per(k)
+    return total, past or k, nil, nil, past ~= nil
   end
   -- true when the word before i (past lexicon.relative_settings.before_value's words that may stand between) makes
   -- what is at i the value set
@@ -18790,7 +18819,11 @@ function G.relative_settings(text, world)
   -- the clause of words b .. e - 1 -> "CMD value", or nil; or nil and a question
   local function rewrite(b, e)
     local cmd, factor, sign, size, unit, share, numbers, default, times = nil, nil, 0, nil, nil, false, 0, false, nil
-    local straight, from_default, typed = false, false, false
+    local straight, from_default, typed, name, arrow = false, false, false, nil, nil
+    -- ("to 3 minutes less than it is": a value compared with the value now is a change, never the value set)
+    local than = false
+    for k = b, e - 1 do than = than or words[k].w == "than" end
+    local function value_set(k) return not than and set_to(b, k) end
     local i = b
     while i < e do
       local n = 4
@@ -18800,10 +18833,10 @@ function G.relative_settings(text, world)
       local divide = tonumber(words[i].raw:match("^/(%d*%.?%d+)$"))
       if n > 0 then
         local p = phrase(i, n)
-        if R.names[p] then cmd = (cmd and cmd ~= R.names[p]) and "two" or R.names[p] end
+        if R.names[p] then cmd, name = (cmd and cmd ~= R.names[p]) and "two" or R.names[p], p end
         -- ("resume the sim at double speed", "set it to double": a factor said after "at" or "to" is the value set;
         -- "to a fifth of that" is reckoned from the value now)
-        if R.factors[p] and set_to(b, i) and not p:find(" of ", 1, true) then return nil end
+        if R.factors[p] and value_set(i) and not p:find(" of ", 1, true) then return nil end
         factor = R.factors[p] or factor
         i = i + n
         -- ("dtmult 20", "zoner 3 nm": a value straight after the setting's name is the value itself, unless a
@@ -18811,14 +18844,14 @@ function G.relative_settings(text, world)
         straight = straight or (R.names[p] and amount(i) and not words[i].raw:match("^[%+%-]"))
       elseif amount(i) and words[select(2, amount(i))] and words[select(2, amount(i))].w == "times" then
         -- ("simulation speed 10 times up", "increase simulation speed ten times": a count of times is a factor)
-        if set_to(b, i) then return nil end
+        if value_set(i) then return nil end
         local count, nx = amount(i)
         times, factor, i = count, count, nx + 1
       elseif divide and divide > 0 then
         -- ("zoner /2": divided)
         factor, i = 1 / divide, i + 1
       elseif x or (w == "times" and amount(i + 1)) then
-        if set_to(b, i) then return nil end
+        if value_set(i) then return nil end
         times = tonumber(x) or amount(i + 1)
         factor, i = times, x and i + 1 or select(2, amount(i + 1))
       elseif w == "twice" and factor then
@@ -18831,15 +18864,27 @@ function G.relative_settings(text, world)
           and words[i + 2] and words[i + 2].w == "default")) then
         -- ("zone down a mile from the default": the change counted from the default, not the value now)
         from_default, i = true, i + (words[i + 1].w == "the" and 3 or 2)
+      elseif (w == "default" or w == "defaults") and factor and words[i - 1]
+          and (words[i - 1].w == "times" or words[i - 1].raw:lower():match("x$")
+            or (words[i - 1].w == "the" and words[i - 2] and words[i - 2].w == "times")) then
+        -- ("PZ radius 3 times default", "2x the default": the factor applied to the default)
+        from_default, i = true, i + 1
       elseif w == "default" or w == "defaults" then
         -- ("back to default", "to its default"; "look-ahead stays default" keeps it)
         if not (words[i - 1] and (words[i - 1].w == "to" or words[i - 1].w == "its" or words[i - 1].w == "back")) then
           return nil
         end
         default, i = true, i + 1
+      elseif amount(i) and words[select(2, amount(i))] and R.arrows[words[select(2, amount(i))].raw]
+          and amount(select(2, amount(i)) + 1) then
+        -- ("RPZ 5 -> 4 NM", "vertical zone 1000 -> 800": from the value now to another)
+        local from, nx = amount(i)
+        local to, past = amount(nx + 1)
+        arrow, i = { from = from, to = to }, past
+        if words[i] and R.units[words[i].w] then unit, i = words[i].w, i + 1 end
       elseif amount(i) then
         -- ("increase sim speed to times 10", "zone on 6 NM", "to a 3 mile radius": a value the setting is set to)
-        if set_to(b, i) then return nil end
+        if value_set(i) then return nil end
         local value, nx, typed_sign, glued, is_share = amount(i)
         numbers, size, i, share = numbers + 1, value, nx, share or is_share
         if typed_sign then sign, typed = (sign == 0 or sign == typed_sign) and typed_sign or 2, true end
@@ -18868,8 +18913,14 @@ function G.relative_settings(text, world)
       if not cmd and not aircraft_named and words[k].w == "height" and (low:find("zone", 1, true) or low:find("pz", 1, true)) then
         cmd = "ZONEDH"
       end
+      -- ("double the vertical protected zone", "pz vertical times 2": the zone named with "vertical" is its height;
+      -- with its radius named too, asked)
+      if cmd == "ZONER" and R.vertical[words[k].w] then
+        if R.radius_names[name] then return nil end
+        cmd = "ZONEDH"
+      end
     end
-    if not cmd or cmd == "two" or sign == 2 or numbers > (factor and 0 or 1) or (straight and sign == 0 and not factor) then
+    if not cmd or cmd == "two" or sign == 2 or numbers > (factor and 0 or 1) or (straight and sign == 0 and not factor and not arrow) then
       return nil
     end
     if default then
@@ -18893,6 +18944,14 @@ function G.relative_settings(text, world)
     elseif size and sign ~= 0 then
       local scale = unit and R.units[unit][cmd] or (not unit and 1)
       value = scale and now + sign * size * scale
+    end
+    if arrow then
+      local scale = unit and R.units[unit][cmd] or (not unit and 1)
+      if not (scale and now and math.abs(arrow.from * scale - now) < 1e-6 and numbers == 0 and not factor
+          and sign == 0) then
+        return nil
+      end
+      value = arrow.to * scale
     end
     if not value or value <= 0 then return nil end
     -- (the run's rate "x5": five times real time, or five times the rate now)
@@ -20427,7 +20486,7 @@ function G.translate_text(text, world)
   -- (the Turkish letters of UTF-8 Latin Extended-A: "hayır", "sağol", "Şile")
   if text:find("[\xC4\xC5]") then text = text:gsub("[\xC4\xC5][\x80-\xBF]", lexicon.accents) end
   -- (an accent's words first, so the callsign and telephony passes read "hop seven sree" as "hop seven three")
-  text = G.accented(text)
+  text = G.area_altitudes(G.accented(text))
   local kept_ask
   text, kept_ask = G.setting_left_as_is(text)
   if kept_ask then return { commands = {}, ask = kept_ask } end

@@ -4343,7 +4343,7 @@ function m:confirm_callsigns(s)
     if twins then
       self:need(string.format("Which %s: %s?", self:raw(r.b, r.e), table.concat(twins, " or ")))
     end
-    if h and not r.false_start and not (self.world.confirmed or {})[r.name]
+    if h and h.id ~= r.name and not r.false_start and not (self.world.confirmed or {})[r.name]
         and not self:airline_and_digits_match(h.id, r.name)
         and (self:strict_callsigns() or h.airline < c.airline or h.digits < c.digits
           or self:letters_conflict(h.id, r.name)) then

@@ -2800,7 +2800,22 @@ return {
               ["vertical reso factor"] = "RFACV", ["vertical resolution factor"] = "RFACV",
               ["horizontal margin"] = "RFACH", ["horiz margin"] = "RFACH", ["hor margin"] = "RFACH", rfach = "RFACH",
               ["horizontal reso factor"] = "RFACH", ["horiz reso factor"] = "RFACH",
-              ["horizontal resolution factor"] = "RFACH", ["vertical zone"] = "ZONEDH" },
+              ["horizontal resolution factor"] = "RFACH", ["vertical zone"] = "ZONEDH",
+              pz = "ZONER", ["vertical pz"] = "ZONEDH", ["vertical protected zone"] = "ZONEDH",
+              ["vertical separation"] = "ZONEDH", ["horizontal separation"] = "ZONER", ["horizontal pz"] = "ZONER",
+              ["horizontal protected zone"] = "ZONER", ["horizontal zone"] = "ZONER",
+              ["vertical reso safety factor"] = "RFACV", ["vertical resolution safety factor"] = "RFACV",
+              ["horizontal reso safety factor"] = "RFACH", ["horizontal resolution safety factor"] = "RFACH",
+              ["vertical resolution margin"] = "RFACV", ["vertical reso margin"] = "RFACV",
+              ["horizontal resolution margin"] = "RFACH", ["horizontal reso margin"] = "RFACH" },
+    -- the names of the zone's radius, and the words that name its height with a name of the zone alone
+    radius_names = { ["zone radius"] = true, ["pz radius"] = true, rpz = true, radius = true, zoner = true,
+                     ["horizontal separation"] = true, ["horizontal pz"] = true, ["horizontal protected zone"] = true,
+                     ["horizontal zone"] = true },
+    vertical = { vertical = true, vert = true, vertically = true, height = true },
+    -- a share said in words after its number ("25 percent", "20 pct"); the arrows from the value now to another
+    percent = { percent = true, pct = true, ["%"] = true },
+    arrows = { ["->"] = true, ["\u{2192}"] = true, ["=>"] = true },
     factors = { double = 2, triple = 3, quadruple = 4, halve = 0.5, ["half the"] = 0.5, ["in half"] = 0.5,
                 doubled = 2, tripled = 3, halved = 0.5, quartered = 0.25,
                 -- (a share "of what it is" or "of that", the value now; "the vertical half of the zone" is none)
@@ -2833,6 +2848,11 @@ return {
               s = { DTLOOK = 1 }, mile = { ZONER = 1 }, miles = { ZONER = 1 }, nm = { ZONER = 1 },
               nmi = { ZONER = 1 }, feet = { ZONEDH = 1 }, foot = { ZONEDH = 1 }, ft = { ZONEDH = 1 } },
   },
+  -- the words after which "A" and three digits is an altitude in hundreds of feet ("descend A090", grammar.lua's
+  -- G.area_altitudes)
+  area_altitude_after = { climb = true, climbing = true, descend = true, descending = true, desc = true, des = true,
+                          clb = true, maintain = true, to = true, passing = true, pass = true, reaching = true,
+                          reach = true, leaving = true, altitude = true, at = true, cleared = true, recleared = true },
   -- the English names of letters that are everyday words or no words ("kay el em": KLM), read as letters only where
   -- three in a row before a flight number open the id of an aircraft flying (grammar.lua's G.letter_name_airlines)
   letter_names = { ay = "A", bee = "B", see = "C", cee = "C", ee = "E", ef = "F", eff = "F", gee = "G", eye = "I",
@@ -2943,7 +2963,13 @@ return {
     fi = "five", eigh = "eight", headin = "heading", leve = "level", doon = "down", thoosand = "thousand",
     hunner = "hundred", tae = "to", oot = "out", contac = "contact", ["fo-ty"] = "forty", foty = "forty",
     -- (Korean: an /f/ said /p/, "l" said "r" and a vowel after: "prright level", "pright", "pry heading", "turn repto")
-    prright = "flight", pright = "flight", pry = "fly", repto = "left" },
+    prright = "flight", pright = "flight", pry = "fly", repto = "left",
+    -- (French, Spanish and Portuguese: the sign said in the speaker's language, "vertical speed moins one thousand";
+    -- French: the h unsaid, "eading")
+    moins = "minus", menos = "minus", eading = "heading",
+    -- (Finnish, Estonian, Latvian and Lithuanian: "trect", "teegrees", "rigt", "minut", "kebec"; a "d" said "t", a
+    -- "b" said "p" and a long "ee" written "ii" are grammar.lua's G.letters_swapped)
+    trect = "direct", teegrees = "degrees", rigt = "right", minut = "minute", kebec = "quebec" },
   heard_as = {
     { heard = { "write", "rite", "wright" }, means = "right",
       before = { "heading", "hdg", "turn" }, after = { "turn" } },

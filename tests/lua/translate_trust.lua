@@ -24918,3 +24918,56 @@ do
   check_eq(ex("MVP on, only detection? no, both on"), "RESO MVP ; ASAS ON")
   check_eq(ex("ZONER 2"), "ZONER 2")
 end
+
+-- Cycle 85 (R558, R562): a Finnish, Estonian, Latvian or Lithuanian speaker's "d" said "t", "b" said "p" and long
+-- "ee" written "ii" ("tescend", "hundret", "climp", "spiid", "knotts", "teegrees", "trect"); a French speaker's sign
+-- said "moins" (never dropped: a climb for a descent); "heading two three" said by a recogniser stays 230 (vice's
+-- speakers drop the final zero); a callsign heard whole is exact where another aircraft shares its digits
+do
+  local _, ex = scene({ "CRE FIN1EW A320 60.2 24.9 090 FL120 250", "CRE FIN1WE A320 60.3 25.0 270 6000 230",
+                         "CRE EZY19BK A320 45.7 5.0 180 FL150 280" })
+  check_eq(ex("finnair one echo whiskey tescend flight level one hundret"), "ALT FIN1EW FL100")
+  check_eq(ex("finnair one echo whiskey reduce spiid two two sero knotts"), "SPD FIN1EW 220")
+  check_eq(ex("finnair one whiskey echo climp flight le vel one one sero"), "ALT FIN1WE FL110")
+  check_eq(ex("finnair one echo whiskey turn rigt thirty teegrees"), "HDG FIN1EW 120 RIGHT")
+  check_eq(ex("finnair one echo whiskey one seventy knotts until four miles final"), "SPD FIN1EW 170")
+  check_eq(ex("easy one nine bravo kilo, vertical speed moins one thousand"), "VS EZY19BK -1000")
+  asked(ex("finnair one whiskey one seven zero knots"), "FIN1W fits FIN1WE's letters only in part")
+end
+
+-- Cycle 85 (R561): an experimenter's settings changed from the value held: a share said in words ("25 percent",
+-- "20 pct", "ten per cent", never 25 ft off), "less than it is" (never the value set), the zone named with
+-- "vertical" is its height (never the radius doubled), "pz", "times default", an arrow from the value now to
+-- another ("RPZ 5 -> 4 NM"; from another value asked), the resolution factors by their longer names; a relative
+-- turn's degrees corrected ("left ten degrees, no make that fifteen": 15 degrees, never heading 015)
+do
+  local _, ex = scene({ "CRE NAX31K B738 55.6 12.6 180 FL260 280" })
+  check_eq(ex("take 25 percent off the vertical zone"), "ZONEDH 750")
+  check_eq(ex("rpz 20 pct bigger this time"), "ZONER 6")
+  check_eq(ex("lookahead up ten per cent"), "DTLOOK 330")
+  check_eq(ex("set the look-ahead to 3 minutes less than it is"), "DTLOOK 120")
+  check_eq(ex("double the vertical protected zone"), "ZONEDH 2000")
+  check_eq(ex("pz vertical times 2"), "ZONEDH 2000")
+  check_eq(ex("pz horizontal times 0.8"), "ZONER 4")
+  check_eq(ex("bump the vertical separation by 50% please"), "ZONEDH 1500")
+  check_eq(ex("PZ radius 3 times default"), "ZONER 15")
+  check_eq(ex("vertical PZ up 200 ft"), "ZONEDH 1200")
+  check_eq(ex("horizontal resolution margin factor up by 0.05"), "RFACH 1.1")
+  check_eq(ex("vertical reso safety factor +10%"), "RFACV 1.155")
+  check_eq(ex("sensitivity run 2: RPZ 5 -> 4 NM, vertical unchanged"), "ZONER 4")
+  check_eq(ex("set vertical zone 1000 -> 800"), "ZONEDH 800")
+  asked(ex("zone radius 6 -> 4"), "the radius is 5 now, not 6")
+  check_eq(ex("nor shuttle 31K, left ten degrees, no make that fifteen"), "HDG NAX31K 165 LEFT")
+  check_eq(ex("nor shuttle 31K, turn right ten degrees, correction, heading two zero zero"), "HDG NAX31K 200 RIGHT")
+end
+
+-- Cycle 85 (R560): Australian and New Zealand altitudes "A090" (hundreds of feet, after a level's verb or "to") and
+-- "F-L 160"; an "A" and three digits elsewhere stays (a type)
+do
+  local _, ex = scene({ "CRE QLK2204 DH8D -27.4 153.1 090 6000 220", "CRE JST542 A320 -27.5 153.0 180 FL120 280" })
+  check_eq(ex("QLK2204 climb A110 QNH 1018"), "ALT QLK2204 11000")
+  check_eq(ex("QLK2204 turn left heading 360 climb A100"), "HDG QLK2204 360 LEFT ; ALT QLK2204 10000")
+  check_eq(ex("Jetstar 542 climb to F-L 160, turn right hdg 040"), "ALT JST542 FL160 ; HDG JST542 40 RIGHT")
+  check_eq(ex("JST542 descend to A070, when passing A100 reduce 220"),
+    "ALT JST542 7000 ; ATALT JST542 10000 SPD JST542 220")
+end
