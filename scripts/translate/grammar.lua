@@ -617,6 +617,124 @@ function G.area_altitudes(text)
     return tonumber(hundreds) * 100 .. " ft" .. (toks[i]:match("%p+$") or ""), i + 1
   end)
 end
+-- "change the destination to lyon saint exupery, LFLL", "destination montreal trudeau CYUL", "set destination nice,
+-- LFMN": an airport's city or name (or both, the city first) said straight before its ICAO code, a comma between or
+-- none, is the airport said twice: the code stays and the words go. Words that name no airport of that code stay.
+function G.airport_words_before_code(text, world)
+  local w = world
+  if not (w.airport_class and w.airports_named and w.airports_with_words and w.airports_of_city
+      and w.airports_beside_navaids) or not text:find("%u%u%u%u") then
+    return text
+  end
+  local function holds(list, code)
+    for _, id in ipairs(list) do if id:upper() == code then return true end end
+    return false
+  end
+  local function names(phrase, code, city)
+    if phrase == "" then return not city end
+    local kept = lexicon.city_airports[phrase]
+    return holds(w.airports_of_city(phrase), code) or holds(w.airports_beside_navaids(phrase), code)
+      or (kept and holds(w.airports_named(kept), code)) or (not city and (holds(w.airports_named(phrase), code)
+        or holds(w.airports_with_words(phrase), code)))
+  end
+  local toks, bare = plain_words(text)
+  local drop = {}
+  for i = 2, #toks do
+    local code = toks[i]:match("^(%u%u%u%u)%p*$")
+    if code and (w.airport_class(code) or "") ~= "" then
+      for k = math.min(4, i - 1), 1, -1 do
+        local ok = true
+        for j = i - k, i - 1 do
+          ok = ok and toks[j]:match(j == i - 1 and "^%a+,?$" or "^%a+$") ~= nil and not KNOWN[bare[j]]
+        end
+        local fits = false
+        for c = 0, ok and k or -1 do  -- (the first c words the city, the rest the airport's name)
+          local city = table.concat(bare, " ", i - k, i - k + c - 1)
+          local name = table.concat(bare, " ", i - k + c, i - 1)
+          fits = fits or ((c == 0 or names(city, code, true)) and names(name, code, c > 0 and name == ""))
+        end
+        if fits then
+          for j = i - k, i - 1 do drop[j] = true end
+          break
+        end
+      end
+    end
+  end
+  if not next(drop) then return text end
+  return tokens.rewrite(text, toks, function(i)
+    if not drop[i] then return nil end
+    local j = i
+    while drop[j] do j = j + 1 end
+    return toks[j], j + 1
+  end)
+end
+-- "rpz 5 -> 6 nm", "lookahead 5 min → 8 min", "rmethv off -> on", "cd every 1 s → every 3 s": in a clause naming a
+-- setting (lexicon.arrow_setting_words), a value now, an arrow (lexicon.arrows) and the value wanted is the value
+-- wanted; the value now (a number with its unit, a switch's position, "every" and an interval) goes with the arrow.
+-- "CFG1GH at 240 kts → hdg 270", "passing fl100 -> 220 kt": after a condition's speed, or before a bare value, the
+-- arrow is the condition's "then"; "mv TRA6021 -> 52.5 4.4": after a verb of moving and the aircraft, "to". Other
+-- arrows stay as typed (an aircraft's values, G.translate_text's arrows between levels and headings).
+function G.arrows(text)
+  local any = false
+  for _, a in ipairs(lexicon.arrows) do any = any or text:find(a, 1, true) ~= nil end
+  if not any then return text end
+  for _, a in ipairs(lexicon.arrows) do text = text:gsub("%s*" .. a:gsub("%p", "%%%0") .. "%s*", " -> ") end
+  local toks = {}
+  for w in text:gmatch("%S+") do toks[#toks + 1] = w end
+  local function low(j) return (toks[j] or ""):lower():gsub("%p+$", "") end
+  local function value(w)
+    local digits, glued = (w or ""):lower():match("^[%+%-]?(%d*%.?%d+)(%a*)%%?$")
+    return (digits and (glued == "" or lexicon.arrow_units[glued] or glued == "x")) or lexicon.arrow_states[w] ~= nil
+  end
+  local drop, said = {}, {}
+  for a = 2, #toks - 1 do
+    local condition = lexicon.arrow_conditions[low(a - 1)] or lexicon.arrow_conditions[low(a - 2)]
+      or lexicon.arrow_conditions[low(a - 3)]
+    local setting = false
+    for j = a - 1, 1, -1 do
+      if toks[j]:match("[,;:]$") then break end
+      for w in low(j):gmatch("[^/]+") do setting = setting or lexicon.arrow_setting_words[w] ~= nil end
+    end
+    if toks[a] ~= "->" then
+      -- (not an arrow)
+    elseif condition and (G.speed_units[low(a - 1)] or toks[a + 1]:match("^%d")) then
+      said[a] = ","
+    elseif lexicon.arrow_moves[low(a - 2)] then
+      said[a] = "to"
+    elseif setting then
+      local k = a - 1
+      if lexicon.arrow_units[low(k)] and value(low(k - 1)) then k = k - 1 end
+      if value(low(k)) then
+        if low(k - 1) == "every" and low(a + 1) == "every" then k = k - 1 end
+        for j = k, a do drop[j] = true end
+      end
+    end
+  end
+  local out = {}
+  for j, w in ipairs(toks) do
+    if not drop[j] then out[#out + 1] = said[j] or w end
+  end
+  return (table.concat(out, " "):gsub(" ,", ","))
+end
+-- "reso mvp on, cd stays", "rfach 1.05 -> 1.25, rfacv unchanged": a clause after a comma naming settings only
+-- (lexicon.kept_settings.names, lexicon.relative_settings.names) and closing with a word of keeping them as they are
+-- switches and sets nothing: it goes.
+function G.kept_settings(text)
+  local K = lexicon.kept_settings
+  local low = text:lower()
+  local any = false
+  for _, w in ipairs(K.kept) do any = any or low:find(w, 1, true) ~= nil end
+  if not any or not text:find(",", 1, true) then return text end
+  return (text:gsub("(%s*,%s*)([^,;]+)", function(_, clause)
+    local words = {}
+    for w in clause:lower():gsub("[%.!]+%s*$", ""):gmatch("%S+") do words[#words + 1] = w end
+    if #words < 2 or not K.kept_set[words[#words]] then return nil end
+    for k = 1, #words - 1 do
+      if not (K.names_set[words[k]] or lexicon.relative_settings.names[words[k]]) then return nil end
+    end
+    return clause:match("[%.!]+%s*$") or ""
+  end))
+end
 function G.accented(text)
   local toks, bare = plain_words(text)
   local any = false
@@ -2910,6 +3028,8 @@ local GAIN_LOSE = { gain = 1, lose = -1 }
 
 -- lexicon.value_names as a set (written_forms: a name glued to its value)
 G.value_name_set = set_of(lexicon.value_names)
+lexicon.kept_settings.kept_set = set_of(lexicon.kept_settings.kept)
+lexicon.kept_settings.names_set = set_of(lexicon.kept_settings.names)
 
 -- A number written with a decimal comma, as German and French write one ("47,5 north", "8,5 degrees east", "the
 -- horizontal resolution factor to 1,1"): `whole` (one to three digits) and `part` (one or two) around the comma,
@@ -4504,6 +4624,7 @@ COMMENTARY.put_off_later_set = set_of(COMMENTARY.put_off_later)
 COMMENTARY.audience_set = set_of(COMMENTARY.audience)
 COMMENTARY.perception_set, COMMENTARY.perceived_set = set_of(COMMENTARY.perception), set_of(COMMENTARY.perceived)
 COMMENTARY.restate_set, COMMENTARY.intention_set = set_of(COMMENTARY.restate_verbs), set_of(COMMENTARY.intention)
+COMMENTARY.state_blocks_set = set_of(COMMENTARY.state.blocks)
 COMMENTARY.restated_sets = {}
 for intent, nouns in pairs(COMMENTARY.restated) do COMMENTARY.restated_sets[intent] = set_of(nouns) end
 local CM_NEGATION = set_of(lexicon.accounted.negation)
@@ -4597,8 +4718,13 @@ function G:commentary(b, e, lead, record, places)
     local recorded = record and q.kind == "time" and self:word_in(b, q.b, "@record_past")
     if not (counted or recorded or self:label_number(q)) then return false end
   end
+  -- (`told`: the state shown to an audience, "- he's on the LAMSO arrival, as you can see", "(this is the typical
+  -- arrival speed)", "- note how slowly it climbs": a span holding a phrase of commentary.narration, or opening with
+  -- one of its subjects and holding no word of commentary.state.blocks; an instruction's word in it, before no
+  -- place, side or value, and a place it names before any instruction's word, tell and instruct nothing)
+  local told = G.narrated(self, b, e)
   for _, r in ipairs(places and {} or self:refs_in(b, e, "waypoint")) do
-    if not self:word(r.b, "@not_names") then return false end
+    if not (self:word(r.b, "@not_names") or (told and not G.instructed_before(self, b, r.b))) then return false end
   end
   local own, studied = self:word(b, CM_OWN) or self:hedge_opens(b, e), false
   for x = b, e - 1 do
@@ -4622,12 +4748,32 @@ function G:commentary(b, e, lead, record, places)
       -- changes")
       studied = studied or (own and x > b + 1 and self:word(x, "how what whether") and not self:has_ref(x, e, "aircraft"))
       if (verb or self:intent_at(x)) and not studied and not self:word(x - 1, CM_DETERMINERS)
-          and not (places and self:word(x - 1, COMMENTARY.reason_set)) then
+          and not (places and self:word(x - 1, COMMENTARY.reason_set))
+          and not (told and not self:has_ref(x + 1, e, "waypoint") and not self:word_in(x, e, "@left @right")) then
         return false
       end
     end
   end
   return true
+end
+function G.narrated(self, b, e)
+  local said = {}
+  for x = b, e - 1 do
+    if self.t[x].kind == "word" then said[#said + 1] = self.t[x].text end
+  end
+  local span = " " .. table.concat(said, " ") .. " "
+  for _, phrase in ipairs(COMMENTARY.narration) do
+    if span:find(" " .. phrase .. " ", 1, true) then return not self:has_ref(b, e, "aircraft") end
+  end
+  return self:word(b, CM_SUBJECTS) and not self:word_in(b, e, COMMENTARY.state_blocks_set)
+    and not self:has_ref(b, e, "aircraft")
+end
+-- True when a word some rule starts an instruction with stands in [b, e).
+function G.instructed_before(self, b, e)
+  for x = b, e - 1 do
+    if self.t[x].kind == "word" and (RULES_BY_WORD[self.t[x].text] or self:intent_at(x)) then return true end
+  end
+  return false
 end
 
 -- True when the clause from b opens with a verb of lexicon.aside.perception and a word of its `perceived` ("watch the
@@ -18744,16 +18890,17 @@ function G.relative_settings(text, world)
   local any = low:find("[%+%%/]") or low:find("%-%d") or low:find("%f[%w]x%d") or low:find("%dx%f[%W]")
     or low:find("default", 1, true) or low:find("times", 1, true) or low:find("same", 1, true)
     or low:find("both", 1, true) or low:find("each", 1, true)
-  for w in low:gmatch("%S+") do any = any or R.arrows[w] end
   for w in low:gmatch("%a+") do any = any or R.up[w] or R.down[w] or R.percent[w] end
   for f in pairs(R.factors) do any = any or low:find(f, 1, true) end
   if not any then return text end
   -- ("rfach and rfacv both 1.1": two settings given one value, each its own clause; "rfacv 1.25 and rfach same",
   -- "rfacv down 0.1 and rfach up the same": the value or amount said for the one before)
-  text = text:gsub("(%a+)(%s+and%s+)(%a+)%s+both%s+([%+%-]?%d*%.?%d+)", function(a, join, b2, v)
-    if not (R.names[a:lower()] and R.names[b2:lower()]) then return nil end
-    return a .. " " .. v .. join .. b2 .. " " .. v
-  end)
+  for _, join in ipairs({ "%s+and%s+", "%s*/%s*" }) do
+    text = text:gsub("(%a+)(" .. join .. ")(%a+)%s+both%s+([%+%-]?%d*%.?%d+)", function(a, _, b2, v)
+      if not (R.names[a:lower()] and R.names[b2:lower()]) then return nil end
+      return a .. " " .. v .. " and " .. b2 .. " " .. v
+    end)
+  end
   -- ("reso factors both 1.1", "both reso factors back to default", "reso factors -0.25 each": the two factors, each
   -- said in a clause of its own)
   local both, rest = text:lower():match("^%s*(b?o?t?h?)%s*reso%a*%s+factors%s+(.-)%s*$")
@@ -18761,12 +18908,13 @@ function G.relative_settings(text, world)
     rest = rest:gsub("^both%s+", ""):gsub("%s+each$", "")
     text = "rfach " .. rest .. " and rfacv " .. rest
   end
-  for _, the in ipairs({ "the%s+", "" }) do
-    text = text:gsub("(%a+)%s+([%+%-]?%d*%.?%d+)(%s+and%s+)(%a+)(%s+%a*%s*)" .. the .. "same%f[%A]",
-      function(a, v, join, b2, way)
+  for _, the in ipairs({ "the%s+", "", ",the%s+", "," }) do
+    local join = the:find(",", 1, true) and "(%s*,%s*)" or "(%s+and%s+)"
+    text = text:gsub("(%a+)%s+([%+%-]?%d*%.?%d+)" .. join .. "(%a+)(%s+%a*%s*)" .. the:gsub(",", "") .. "same%f[%A]",
+      function(a, v, joined, b2, way)
         local w = a:lower()
         if not ((R.names[w] or R.up[w] or R.down[w]) and R.names[b2:lower()]) then return nil end
-        return a .. " " .. v .. join .. b2 .. way .. v
+        return a .. " " .. v .. joined .. b2 .. way .. v
       end)
   end
   low = text:lower()
@@ -18793,7 +18941,7 @@ function G.relative_settings(text, world)
       return p == "per" and words[k + 1] and words[k + 1].w == "cent" and k + 2 or nil
     end
     if digits and (glued == "" or R.units[glued] or R.percent[glued]) then
-      local past = glued == "" and not t.raw:find("%%") and per(i + 1)
+      local past = glued == "" and not t.raw:find("%%") and per(i + 1) or nil
       return tonumber(digits), past or i + 1, (sign == "+" and 1) or (sign == "-" and -1) or nil,
         R.units[glued] and glued or nil, t.raw:find("%%") ~= nil or R.percent[glued] ~= nil or past ~= nil
     end
@@ -18819,7 +18967,7 @@ function G.relative_settings(text, world)
   -- the clause of words b .. e - 1 -> "CMD value", or nil; or nil and a question
   local function rewrite(b, e)
     local cmd, factor, sign, size, unit, share, numbers, default, times = nil, nil, 0, nil, nil, false, 0, false, nil
-    local straight, from_default, typed, name, arrow = false, false, false, nil, nil
+    local straight, from_default, typed, name = false, false, false, nil
     -- ("to 3 minutes less than it is": a value compared with the value now is a change, never the value set)
     local than = false
     for k = b, e - 1 do than = than or words[k].w == "than" end
@@ -18875,13 +19023,6 @@ function G.relative_settings(text, world)
           return nil
         end
         default, i = true, i + 1
-      elseif amount(i) and words[select(2, amount(i))] and R.arrows[words[select(2, amount(i))].raw]
-          and amount(select(2, amount(i)) + 1) then
-        -- ("RPZ 5 -> 4 NM", "vertical zone 1000 -> 800": from the value now to another)
-        local from, nx = amount(i)
-        local to, past = amount(nx + 1)
-        arrow, i = { from = from, to = to }, past
-        if words[i] and R.units[words[i].w] then unit, i = words[i].w, i + 1 end
       elseif amount(i) then
         -- ("increase sim speed to times 10", "zone on 6 NM", "to a 3 mile radius": a value the setting is set to)
         if value_set(i) then return nil end
@@ -18920,7 +19061,7 @@ function G.relative_settings(text, world)
         cmd = "ZONEDH"
       end
     end
-    if not cmd or cmd == "two" or sign == 2 or numbers > (factor and 0 or 1) or (straight and sign == 0 and not factor and not arrow) then
+    if not cmd or cmd == "two" or sign == 2 or numbers > (factor and 0 or 1) or (straight and sign == 0 and not factor) then
       return nil
     end
     if default then
@@ -18944,14 +19085,6 @@ function G.relative_settings(text, world)
     elseif size and sign ~= 0 then
       local scale = unit and R.units[unit][cmd] or (not unit and 1)
       value = scale and now + sign * size * scale
-    end
-    if arrow then
-      local scale = unit and R.units[unit][cmd] or (not unit and 1)
-      if not (scale and now and math.abs(arrow.from * scale - now) < 1e-6 and numbers == 0 and not factor
-          and sign == 0) then
-        return nil
-      end
-      value = arrow.to * scale
     end
     if not value or value <= 0 then return nil end
     -- (the run's rate "x5": five times real time, or five times the rate now)
@@ -18986,7 +19119,8 @@ function G.relative_settings(text, world)
   return table.concat(out)
 end
 -- "kay el em one tree seven nine": an airline's three letters said by their English names (lexicon.letter_names, one
--- at least; lexicon.phonetic for the others), straight before a flight number, that open the id of an aircraft flying,
+-- at least; lexicon.phonetic for the others), straight before a flight number (digits, or number words: "kay el em
+-- eleven forty seven"), that open the id of an aircraft flying,
 -- are those letters ("KLM one tree seven nine"); others stay as said
 function G.letter_name_airlines(text, world)
   local airlines = {}
@@ -19001,7 +19135,8 @@ function G.letter_name_airlines(text, world)
     if letter(i - 1) or not (letter(i) and letter(i + 1) and letter(i + 2) and bare[i + 3]) then return nil end
     local code = letter(i) .. letter(i + 1) .. letter(i + 2)
     local said = lexicon.letter_names[bare[i]] or lexicon.letter_names[bare[i + 1]] or lexicon.letter_names[bare[i + 2]]
-    if not (said and airlines[code] and (bare[i + 3]:match("^%d") or lexicon.digit_words[bare[i + 3]]))
+    if not (said and airlines[code] and (bare[i + 3]:match("^%d") or lexicon.digit_words[bare[i + 3]]
+        or NUMBER_WORDS[bare[i + 3]]))
         or table.concat(toks, " ", i, i + 2):match("%p") then
       return nil
     end
@@ -20486,10 +20621,14 @@ function G.translate_text(text, world)
   -- (the Turkish letters of UTF-8 Latin Extended-A: "hayır", "sağol", "Şile")
   if text:find("[\xC4\xC5]") then text = text:gsub("[\xC4\xC5][\x80-\xBF]", lexicon.accents) end
   -- (an accent's words first, so the callsign and telephony passes read "hop seven sree" as "hop seven three")
-  text = G.area_altitudes(G.accented(text))
+  text = G.arrows(G.kept_settings(G.area_altitudes(G.accented(text))))
+  -- ("rpz from 5 to": a change from a value to nothing said, the request cut off after "to")
+  local from = text:lower():match("%f[%a]from%s+(%S+)%s+to%s*[%p]*%s*$")
+  if from then return { commands = {}, ask = string.format("From %s to what? Nothing was said after 'to'.", from) } end
   local kept_ask
   text, kept_ask = G.setting_left_as_is(text)
   if kept_ask then return { commands = {}, ask = kept_ask } end
+  text = G.airport_words_before_code(text, world)
   local relative
   text, relative = G.relative_settings(text, world)
   if relative then return { commands = {}, ask = relative } end
@@ -21221,6 +21360,7 @@ function G.bare_hold_on(text)
   return true
 end
 M.bare_hold_on = G.bare_hold_on  -- (graph.lua asks it of the whole request, before clauses are split)
+M.kept_settings = G.kept_settings  -- (graph.lua reads it before a request is split into clauses)
 
 -- "MVP on, only detection? no, both on", "LNAV on... VNAV too? yes, both": "both" said of switches, with one of a
 -- pair of lexicon-free switch words named before it (detection and resolution; LNAV and VNAV) and "on", "off", "of

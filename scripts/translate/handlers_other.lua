@@ -4800,6 +4800,20 @@ return function(H, f, compass)
       for _, q in ipairs(self:quantities(1, #self.t + 1)) do sized = sized or q.kind == "dist" end
     end
     if sized then return self:explain(s.trig, s.trig + 1) end
+    -- ("look-ahead time 5 minutes, for the conflict detection": the detection named after "for" as what another
+    -- setting of the request is for, no "on" or "off" said, switches nothing)
+    local k = s.trig - 1
+    while k > 1 and self:word(k, "the conflict conflicts") do k = k - 1 end
+    if spec.cmd == "ASAS" and self:word(k, "for") and #self.out > 0 and self:on_off(s) < 0
+        and not self:word_in(1, #self.t + 1, "@on @off") then
+      return self:explain(k, s.trig + 1)
+    end
+    -- ("but keep detection running", "leave the detection off": the switch kept as it is now, nothing switched)
+    local kept = self:find_word(math.max(1, s.trig - 4), s.trig, "leave keep")
+    if spec.cmd == "ASAS" and kept < s.trig and self:on_off(s) >= 0 and self.world.detection
+        and (self.world.detection() == "OFF") == (self:on_off(s) == 0) then
+      return self:explain(kept, s.trig + 1)
+    end
     -- "detection statebased", "state-based detection": CDMETHOD's method, which is on
     local method = spec.cmd == "ASAS" and self:find_word(s.b, s.e, "statebased state-based state")
     if method and method < s.e and (not self:word(method, "state") or self:word(method + 1, "based")) then
@@ -5560,6 +5574,12 @@ return function(H, f, compass)
         return self:emit("RESO OFF")
       end
     end
+    -- ("let us leave resolution off", "keep the resolution off" with no method set now: kept as it is, nothing
+    -- switched)
+    local kept = self:find_word(math.max(1, s.trig - 4), s.trig, "leave keep")
+    if kept < s.trig and self:on_off(s) == 0 and self.world.reso_method and self.world.reso_method() == "OFF" then
+      return self:explain(kept, s.trig + 1)
+    end
     if self:on_off(s) == 0 then return self:emit("RESO OFF") end
     if self:on_off(s) == 1 then return self:emit("RESO MVP") end  -- MVP is the one method RESO has
     -- ("let the computer steer them apart", "have the sim solve the conflicts": the simulation asked to resolve)
@@ -5732,7 +5752,8 @@ return function(H, f, compass)
     local lo, hi = self:clause_around(s.trig)
     local from, to = math.min(s.b, lo), math.max(s.e, hi)
     local mvp = self:skip_fillers(1)
-    local joined = self.t[mvp + 1] and (self.t[mvp + 1].text == "," or self.t[mvp + 1].raw:lower() == "w/")
+    local joined = self.t[mvp + 1] and (self.t[mvp + 1].text == "," or self.t[mvp + 1].raw:lower() == "w/"
+      or self.t[mvp + 1].raw == "+")
     if self:word(mvp, "mvp") and (self:word(mvp + 1, "with and plus w no") or joined)
         and not self:word(mvp + 1, "@off") and not self.u:used(mvp) then
       self:emit("RESO MVP")

@@ -899,11 +899,14 @@ return function(H, f, wrap, compass)
     local dir = self:direction(s)
     -- "take off about 30 knots", "knock 20 knots off": knots taken away
     if dir == 0 and self:word_in(s.b, s.e, "take knock") and self:word_in(s.b, s.e, "off") then dir = -1 end
+    -- ("plus thirty knots", "speed minus 20": an amount said with its sign is a change)
+    local signed = (q.kind == "speed" or q.kind == "plain") and self:word(q.b - 1, "plus minus")
+    if signed and dir == 0 then dir = self:word(q.b - 1, "plus") and 1 or -1 end
     for _, id in ipairs(ids) do
       local spd
       if q.kind == "mach" or (q.kind == "plain" and q.value > 0 and q.value < 1) then
         spd = f.mach(q.value)
-      elseif q.kind == "percent" or q.by or (self:word_in(s.b, s.e, "by") and q.value < 100)
+      elseif q.kind == "percent" or q.by or signed or (self:word_in(s.b, s.e, "by") and q.value < 100)
           -- an amount followed by its direction ("100 faster", "20 knots slower") is a change, never the new speed
           or ((q.kind == "speed" or q.kind == "plain") and self:word(q.e, "@faster @slower"))
           -- ("10 knots faster"; after a word speech recognition writes for "to" or "two", "reduce speed too two

@@ -1814,6 +1814,9 @@ return {
           -- the audience of a demonstration addressed in a sentence of its own ("Class, is that toward the bottom of
           -- the screen?", "Guess first, kids!"): such a sentence, a question too, is a remark to them (G:remark_sentence)
           audience = { "kids", "class", "guys", "students", "folks", "children", "everybody", "everyone" },
+          -- a demonstrator's words showing the audience the state of things (G:commentary's `told`)
+          narration = { "as you can see", "you can see", "as you see", "as we can see", "note how", "notice how",
+                        "you'll notice", "you will notice", "you'll see", "you will see", "as shown" },
           -- an instructor's word to the audience on what an instruction shows, after a comma or "and" that follows
           -- it (", watch the trend arrow", "and notice the label counting down", ", see how steep that is"): one of
           -- `perception` then one of `perceived` (G:perceived), naming no aircraft, place or value
@@ -2815,7 +2818,6 @@ return {
     vertical = { vertical = true, vert = true, vertically = true, height = true },
     -- a share said in words after its number ("25 percent", "20 pct"); the arrows from the value now to another
     percent = { percent = true, pct = true, ["%"] = true },
-    arrows = { ["->"] = true, ["\u{2192}"] = true, ["=>"] = true },
     factors = { double = 2, triple = 3, quadruple = 4, halve = 0.5, ["half the"] = 0.5, ["in half"] = 0.5,
                 doubled = 2, tripled = 3, halved = 0.5, quartered = 0.25,
                 -- (a share "of what it is" or "of that", the value now; "the vertical half of the zone" is none)
@@ -2848,6 +2850,29 @@ return {
               s = { DTLOOK = 1 }, mile = { ZONER = 1 }, miles = { ZONER = 1 }, nm = { ZONER = 1 },
               nmi = { ZONER = 1 }, feet = { ZONEDH = 1 }, foot = { ZONEDH = 1 }, ft = { ZONEDH = 1 } },
   },
+  -- an arrow from a value now to the value wanted ("rpz 5 -> 6", grammar.lua's G.arrows); the units and switch
+  -- positions a value now may be said with
+  arrows = { "->", "\u{2192}", "=>" },
+  arrow_units = { s = true, sec = true, secs = true, second = true, seconds = true, min = true, mins = true,
+                  minute = true, minutes = true, nm = true, ft = true, feet = true, kt = true, kts = true,
+                  knots = true, fpm = true, hz = true, ["%"] = true, m = true, km = true },
+  arrow_states = { on = true, off = true, none = true, ["v/s"] = true, vs = true, mvp = true },
+  -- the words naming a setting in a clause with an arrow
+  arrow_setting_words = { rpz = true, pz = true, dh = true, zone = true, zoner = true, zonedh = true, radius = true,
+                          lookahead = true, ["look-ahead"] = true, dtlook = true, dtmult = true, rfach = true,
+                          rfacv = true, rmethv = true, reso = true, asas = true, cd = true, detection = true,
+                          resolution = true, sim = true, simulation = true, half = true, height = true },
+  -- the words of a condition and of moving before an arrow: then its "then" ("passing fl100 -> 220 kt") or its "to"
+  -- ("mv TRA6021 -> 52.5 4.4")
+  arrow_conditions = { passing = true, at = true, reaching = true, when = true, once = true, after = true,
+                       over = true, abeam = true },
+  arrow_moves = { mv = true, move = true, put = true, teleport = true, place = true },
+  -- a clause keeping settings as they are ("cd stays", "rfacv unchanged": grammar.lua's G.kept_settings): the words
+  -- that may name them, and the words of keeping
+  kept_settings = { names = { "cd", "asas", "reso", "detection", "resolution", "conflict", "mvp", "rmethv", "rfach",
+                              "rfacv", "rfac", "vertical", "horizontal", "the", "rest", "everything", "else", "other",
+                              "settings", "factor", "factors", "method", "lookahead", "zone", "radius", "height" },
+                    kept = { "stays", "unchanged", "untouched", "remains", "kept", "as-is" } },
   -- the words after which "A" and three digits is an altitude in hundreds of feet ("descend A090", grammar.lua's
   -- G.area_altitudes)
   area_altitude_after = { climb = true, climbing = true, descend = true, descending = true, desc = true, des = true,
@@ -2966,10 +2991,18 @@ return {
     prright = "flight", pright = "flight", pry = "fly", repto = "left",
     -- (French, Spanish and Portuguese: the sign said in the speaker's language, "vertical speed moins one thousand";
     -- French: the h unsaid, "eading")
-    moins = "minus", menos = "minus", eading = "heading",
+    moins = "minus", menos = "minus", eading = "heading", ["'eading"] = "heading", ["'old"] = "hold", zis = "this",
     -- (Finnish, Estonian, Latvian and Lithuanian: "trect", "teegrees", "rigt", "minut", "kebec"; a "d" said "t", a
     -- "b" said "p" and a long "ee" written "ii" are grammar.lua's G.letters_swapped)
-    trect = "direct", teegrees = "degrees", rigt = "right", minut = "minute", kebec = "quebec" },
+    trect = "direct", teegrees = "degrees", rigt = "right", minut = "minute", kebec = "quebec",
+    -- (Swedish, Norwegian and Danish: "klime", "rait", "heding", "dissend", "wiskey", "shuttel", "pappa", "fourty",
+    -- "plis", "jes", "okej"; the VOR said "wor"; a "w" for a "v", "sewen", "wektor", is grammar.lua's G.letters_swapped)
+    klime = "climb", rait = "right", heding = "heading", dissend = "descend", wiskey = "whiskey", shuttel = "shuttle",
+    pappa = "papa", fourty = "forty", plis = "please", jes = "yes", okej = "okay", wor = "vor",
+    -- (Caribbean English: a final consonant dropped and vowels shifted, "dissen", "mentain", "lev'l", "heigh",
+    -- "conflic", "wha's yuh speed")
+    dissen = "descend", mentain = "maintain", ["lev'l"] = "level", heigh = "height", conflic = "conflict",
+    ["wha's"] = "what's", ["wha'"] = "what", dere = "there", dat = "that", den = "then" },
   heard_as = {
     { heard = { "write", "rite", "wright" }, means = "right",
       before = { "heading", "hdg", "turn" }, after = { "turn" } },
@@ -2977,6 +3010,12 @@ return {
     -- "ten time", "simulation speed two time": its "times" closing a multiple)
     { heard = { "de", "da" }, means = "the", after = { "#known" } },
     { heard = { "time" }, means = "times", closed_after = { "#number" } },
+    -- ("two hundred an fifty knot": a Caribbean recogniser's "and" inside a number)
+    { heard = { "an" }, means = "and", between = { { "hundred", "thousand" }, { "#number" } } },
+    -- ("mvp + vs reso": the resolutions' vertical speed)
+    { heard = { "vs" }, means = "vertical", before = { "reso", "resolution", "resolutions" } },
+    -- ("lookahead time two minute fa conflic detection": its "for")
+    { heard = { "fa" }, means = "for", before = { "conflict", "conflic", "the", "detection" } },
     -- ("turn lefchi hiding zero six zero", "say hiding": a Brazilian recogniser's "heading")
     { heard = { "hiding" }, means = "heading", before = { "#number" },
       after = { "left", "right", "present", "your", "say", "fly", "the", "his", "its" } },

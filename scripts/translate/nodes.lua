@@ -303,6 +303,12 @@ function M.world(sim, waypoints)
              local ok, said = sim:copy():exec("RESO")
              return ok and type(said) == "string" and said:match("^RESO%s+(%u+)") or nil
            end,
+           -- the conflict detection method set now ("OFF", "STATEBASED"), read by ASAS with no argument on a copy,
+           -- or nil when it cannot be read
+           detection = function()
+             local ok, said = sim:copy():exec("ASAS")
+             return ok and type(said) == "string" and said:match("^CDMETHOD%s+(%u+)") or nil
+           end,
            -- a setting's value now, in its command's unit (DTLOOK s, ZONER NM, ZONEDH ft, DTMULT), read on a copy
            -- (the simulation is left as it was), or nil when it cannot be read
            setting = function(cmd)
