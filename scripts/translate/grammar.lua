@@ -533,11 +533,12 @@ function G.p_said_f(w)
   local f = w:gsub("p", "f")
   return (G.instruction_word(f) or NUMBER_WORDS[f]) and f or nil
 end
--- A speaker of a language whose syllables end in a vowel (Japanese) says one after a closing consonant, and a
--- recogniser writes it: a word of six letters or more that no list knows, ending in "o" or "u" after a consonant, is
--- the rule's word without it ("descendo", "speedo", "directo"); else nil ("Willo" is a fix, no "will").
+-- A speaker of a language whose syllables end in a vowel (Japanese, Italian) says one after a closing consonant, and
+-- a recogniser writes it: a word of six letters or more that no list knows, ending in "o", "u" or "a" after a
+-- consonant (five with "a"), is the rule's word without it ("descendo", "speedo", "turna", "fasta forwarda"); else nil
+-- ("Willo" is a fix, no "will").
 function G.vowel_after(w)
-  if #w < 6 or KNOWN[w] or not w:match("[^aeiou][ou]$") then return nil end
+  if #w < 5 or KNOWN[w] or not w:match("[^aeiou][aou]$") or (#w < 6 and not w:match("a$")) then return nil end
   local stem = w:sub(1, -2)
   return RULES_BY_WORD[stem] and stem or nil
 end
@@ -554,7 +555,7 @@ end
 -- word it becomes is a number word or an instruction word (G.instruction_word; four letters or more, five for "l",
 -- "r", "d", "b", "ee", "v" for "w" and the vowel), or a word squawk knows (six letters or more with "c" for "k",
 -- "b" or "ee", five with an "r" or "f" written twice, four with "w"); else nil ("kas", "ried", "road", "dirty",
--- "matte" stay).
+-- "matte", French "mille" stay).
 function G.letters_swapped(w)
   if #w < 3 or KNOWN[w] or HEARD[w] or not w:match("^%l+$") then return nil end
   local function fits(x, instruction_len, known_len)
@@ -571,6 +572,15 @@ function G.letters_swapped(w)
   -- (a closing "t" said "chi": "feetchi", "directchi", "minutchi", "routchi", "heighchi")
   local stem = w:match("^(%l%l+)chi$")
   for _, tail in ipairs(stem and { "", "t", "e", "te" } or {}) do found = found or fits(stem .. tail, 4, 6) end
+  -- (a vowel said between two opening consonants, "kilimb", "filight"; "kh" for an opening "h" and "nk" for a closing
+  -- "ng", "khedink"; a "g" for an opening "c", "glimb": as Georgian, Armenian and Azerbaijani speakers are written)
+  if not found then
+    local x = w:gsub("^kh", "h"):gsub("nk$", "ng")
+    local y = x:gsub("^([^aeiou])[aeiou]([lr])", "%1%2")
+    for _, c in ipairs({ x, y, (y:gsub("^k", "c")), (y:gsub("^g", "c")) }) do
+      found = found or fits(c, 5, 6) or (c ~= w and lexicon.accented[c]) or nil
+    end
+  end
   -- (one letter swapped where the word has two: "tvelve"; the others the same)
   for i = 1, #w do
     local c, rest = w:sub(i, i), w:sub(i + 1)
@@ -578,7 +588,7 @@ function G.letters_swapped(w)
     found = found or (c == "v" and fits(head .. "w" .. rest, 4, 4)) or (c == "k" and fits(head .. "c" .. rest, 4, 6))
       or (c == "r" and fits(head .. "l" .. rest, 5, math.huge)) or (c == "l" and fits(head .. "r" .. rest, 5, math.huge))
       or ((c == "r" or c == "f") and rest:sub(1, 1) == c and fits(head .. rest, math.huge, 5))
-      or (c:match("[^aeiourf]") and rest:sub(1, 1) == c and fits(head .. rest, 5, math.huge))
+      or (c:match("[^aeiourfl]") and rest:sub(1, 1) == c and fits(head .. rest, 5, math.huge))
       or nil
   end
   return found
@@ -600,6 +610,12 @@ function G.split_word(toks, i)
     if not (toks[k] and toks[k]:match("^%l+$")) then return nil end
     joined, unknown = joined .. toks[k], unknown or not (KNOWN[toks[k]] or NUMBER_WORDS[toks[k]])
     if k > i and unknown and (NUMBER_WORDS[joined] or G.instruction_word(joined)) then return joined, k + 1 end
+    -- ("khead ing": pieces that are no words at all run together into a word an accent's letters spell,
+    -- G.letters_swapped; "gire a", "der route" stay)
+    local none_known = true
+    for x = i, k do none_known = none_known and not (KNOWN[toks[x]] or NUMBER_WORDS[toks[x]]) end
+    local accented = k > i and none_known and G.letters_swapped(joined)
+    if accented and G.instruction_word(accented) then return accented, k + 1 end
   end
   return nil
 end
@@ -671,9 +687,10 @@ end
 -- "rpz 5 -> 6 nm", "lookahead 5 min → 8 min", "rmethv off -> on", "cd every 1 s → every 3 s": in a clause naming a
 -- setting (lexicon.arrow_setting_words), a value now, an arrow (lexicon.arrows) and the value wanted is the value
 -- wanted; the value now (a number with its unit, a switch's position, "every" and an interval) goes with the arrow.
--- "CFG1GH at 240 kts → hdg 270", "passing fl100 -> 220 kt": after a condition's speed, or before a bare value, the
--- arrow is the condition's "then"; "mv TRA6021 -> 52.5 4.4": after a verb of moving and the aircraft, "to". Other
--- arrows stay as typed (an aircraft's values, G.translate_text's arrows between levels and headings).
+-- "M.78 → M.80", "spd 280 -> 300", "vs 1000 → 2000": an aircraft's Mach, speed or rate from the value now to the
+-- value wanted, the same. "CFG1GH at 240 kts → hdg 270", "passing fl100 -> 220 kt": after a condition's speed, or
+-- before a bare value, the arrow is the condition's "then"; "mv TRA6021 -> 52.5 4.4": after a verb of moving and the
+-- aircraft, "to". Other arrows stay as typed (G.translate_text reads those between levels and headings).
 function G.arrows(text)
   local any = false
   for _, a in ipairs(lexicon.arrows) do any = any or text:find(a, 1, true) ~= nil end
@@ -686,6 +703,7 @@ function G.arrows(text)
     local digits, glued = (w or ""):lower():match("^[%+%-]?(%d*%.?%d+)(%a*)%%?$")
     return (digits and (glued == "" or lexicon.arrow_units[glued] or glued == "x")) or lexicon.arrow_states[w] ~= nil
   end
+  local function mach(w) return (w or ""):lower():match("^m%.?%d*%.%d+$") or (w or ""):lower():match("^m%.%d+$") end
   local drop, said = {}, {}
   for a = 2, #toks - 1 do
     local condition = lexicon.arrow_conditions[low(a - 1)] or lexicon.arrow_conditions[low(a - 2)]
@@ -701,6 +719,10 @@ function G.arrows(text)
       said[a] = ","
     elseif lexicon.arrow_moves[low(a - 2)] then
       said[a] = "to"
+    elseif (mach(toks[a - 1]) and mach(toks[a + 1])) or (value(low(a - 1)) and lexicon.arrow_value_names[low(a - 2)]
+        and toks[a + 1]:match("^[%+%-]?%d")) then
+      -- ("DLH9TF M.78 → M.80", "SWR18B vs 1000 → 2000": an aircraft's speed or rate from the value now)
+      drop[a - 1], drop[a] = true, true
     elseif setting then
       local k = a - 1
       if lexicon.arrow_units[low(k)] and value(low(k - 1)) then k = k - 1 end

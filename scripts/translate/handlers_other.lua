@@ -5535,7 +5535,11 @@ return function(H, f, compass)
     local b = s.b > 1 and s.b - 1 or s.b
     -- ("what's the resolution method", "?" typed or not: the method asked, when none is named and no switch said)
     local named = self:word_in(1, #self.t + 1, "mvp") or self:word_in(b, s.e, "@mvp") or self:on_off(s) >= 0
-    if self:asks_setting(not named) or not named and self:switch_asked(s) then
+    -- ("show reso method": "show" opening the request, no method, value or other switching word said, shows it)
+    local first = self:request_start()
+    local shown = self:word(first, "show display") and #self:quantities(1, #self.t + 1) == 0
+      and not self:word_in(first + 1, #self.t + 1, "mvp @mvp @on @off")
+    if shown or self:asks_setting(not named) or not named and self:switch_asked(s) then
       -- ("is MVP resolution currently on?": the method asked about names the setting shown)
       for k = 1, #self.t do
         if self:word(k, "mvp") then self:explain(k, k + 1) end

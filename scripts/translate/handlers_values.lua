@@ -1154,9 +1154,9 @@ return function(H, f, wrap, compass)
     if now and self:value_left(abs_c[1], abs_c[2], now.hdg_deg, 5, true) then table.remove(abs_c, 1) end
     local abs, rel = self:pick(abs_c, s, "heading"), self:pick(rel_c, s, "heading")
     -- ("left ten degrees, no make that fifteen": a bare number under 100, not said digit by digit, after a correction
-    -- that follows the turn's degrees, corrects the degrees; never a heading of 015)
+    -- that follows the turn's degrees and says no side, corrects the degrees; never a heading of 015)
     if abs and rel and abs.kind == "plain" and rel.b < abs.b and abs.value < 100 and not abs.number.lead_digit
-        and self:word_in(rel.e, abs.b, "@correction") then
+        and self:word_in(rel.e, abs.b, "@correction") and not self:word_in(rel.e, abs.e, "@left @right") then
       rel, abs = { kind = "angle", value = abs.value, b = abs.b, e = abs.e, turn = rel.turn, number = abs.number }, nil
     end
     -- ("heading zero zero five zero", "hdg 0050": a heading of four digits or more is no heading said; asked)

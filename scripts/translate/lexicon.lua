@@ -2804,7 +2804,7 @@ return {
               ["horizontal margin"] = "RFACH", ["horiz margin"] = "RFACH", ["hor margin"] = "RFACH", rfach = "RFACH",
               ["horizontal reso factor"] = "RFACH", ["horiz reso factor"] = "RFACH",
               ["horizontal resolution factor"] = "RFACH", ["vertical zone"] = "ZONEDH",
-              pz = "ZONER", ["vertical pz"] = "ZONEDH", ["vertical protected zone"] = "ZONEDH",
+              pz = "ZONER", hpz = "ZONEDH", ["vertical pz"] = "ZONEDH", ["vertical protected zone"] = "ZONEDH",
               ["vertical separation"] = "ZONEDH", ["horizontal separation"] = "ZONER", ["horizontal pz"] = "ZONER",
               ["horizontal protected zone"] = "ZONER", ["horizontal zone"] = "ZONER",
               ["vertical reso safety factor"] = "RFACV", ["vertical resolution safety factor"] = "RFACV",
@@ -2858,7 +2858,7 @@ return {
                   knots = true, fpm = true, hz = true, ["%"] = true, m = true, km = true },
   arrow_states = { on = true, off = true, none = true, ["v/s"] = true, vs = true, mvp = true },
   -- the words naming a setting in a clause with an arrow
-  arrow_setting_words = { rpz = true, pz = true, dh = true, zone = true, zoner = true, zonedh = true, radius = true,
+  arrow_setting_words = { rpz = true, pz = true, hpz = true, dh = true, zone = true, zoner = true, zonedh = true, radius = true,
                           lookahead = true, ["look-ahead"] = true, dtlook = true, dtmult = true, rfach = true,
                           rfacv = true, rmethv = true, reso = true, asas = true, cd = true, detection = true,
                           resolution = true, sim = true, simulation = true, half = true, height = true },
@@ -2867,6 +2867,8 @@ return {
   arrow_conditions = { passing = true, at = true, reaching = true, when = true, once = true, after = true,
                        over = true, abeam = true },
   arrow_moves = { mv = true, move = true, put = true, teleport = true, place = true },
+  -- an aircraft's value names before a value now and an arrow ("spd 280 -> 300", "vs 1000 → 2000", "M.78 → M.80")
+  arrow_value_names = { spd = true, speed = true, vs = true, mach = true, m = true },
   -- a clause keeping settings as they are ("cd stays", "rfacv unchanged": grammar.lua's G.kept_settings): the words
   -- that may name them, and the words of keeping
   kept_settings = { names = { "cd", "asas", "reso", "detection", "resolution", "conflict", "mvp", "rmethv", "rfach",
@@ -3002,7 +3004,13 @@ return {
     -- (Caribbean English: a final consonant dropped and vowels shifted, "dissen", "mentain", "lev'l", "heigh",
     -- "conflic", "wha's yuh speed")
     dissen = "descend", mentain = "maintain", ["lev'l"] = "level", heigh = "height", conflic = "conflict",
-    ["wha's"] = "what's", ["wha'"] = "what", dere = "there", dat = "that", den = "then" },
+    ["wha's"] = "what's", ["wha'"] = "what", dere = "there", dat = "that", den = "then",
+    -- (Georgian, Armenian and Azerbaijani: "ad a vaypoint", "mov to"; a vowel between two opening consonants and "kh"
+    -- for "h" are grammar.lua's G.letters_swapped)
+    ad = "add", mov = "move",
+    -- (Italian: "attiva conflict detection", "ferma la simulazione"; a vowel after a closing consonant, "speeda",
+    -- "fasta forwarda", is grammar.lua's G.vowel_after)
+    attiva = "activate", ferma = "stop", simulazione = "simulation", forwarda = "forward" },
   heard_as = {
     { heard = { "write", "rite", "wright" }, means = "right",
       before = { "heading", "hdg", "turn" }, after = { "turn" } },
@@ -3012,6 +3020,11 @@ return {
     { heard = { "time" }, means = "times", closed_after = { "#number" } },
     -- ("two hundred an fifty knot": a Caribbean recogniser's "and" inside a number)
     { heard = { "an" }, means = "and", between = { { "hundred", "thousand" }, { "#number" } } },
+    -- ("conflict resolution em vi pi", "until four dee em ee": letters a recogniser wrote by their names)
+    { heard = { "em vi pi", "em vee pee", "em vi pee" }, means = "mvp", after = { "#known" } },
+    { heard = { "dee em ee" }, means = "dme", after = { "#number" } },
+    -- ("pausa la simulazione": an Italian "the")
+    { heard = { "la" }, means = "the", before = { "simulazione", "simulation", "sim" } },
     -- ("mvp + vs reso": the resolutions' vertical speed)
     { heard = { "vs" }, means = "vertical", before = { "reso", "resolution", "resolutions" } },
     -- ("lookahead time two minute fa conflic detection": its "for")

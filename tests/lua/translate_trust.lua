@@ -25041,3 +25041,34 @@ do
     print("skipped: airports named beside their code need navdata (SQUAWK_NAVDATA)")
   end
 end
+
+-- Cycle 85 (R569, R570): a Georgian, Armenian or Azerbaijani recogniser's vowel between two opening consonants
+-- ("kilimb", "filight"), "kh" for "h" and "nk" for "ng" ("khedink", "khead ing"), "glimb", "em vi pi"; an Italian one's
+-- vowel after a closing consonant ("speeda", "fasta forwarda"), "pausa la simulazione", "attiva"; French "mille"
+-- stays a thousand, never "mile"
+do
+  local _, ex = scene({ "CRE TGZ512 A320 41.7 44.9 090 FL150 260", "CRE AZA771 A320 41.9 12.3 180 FL120 270" })
+  check_eq(ex("tamazi five one two kilimb filight level one seven zero"), "ALT TGZ512 FL170")
+  check_eq(ex("tamazi five one two turn left khedink zero niner zero"), "HDG TGZ512 90 LEFT")
+  check_eq(ex("tamazi five one two turrn rright khead ing one eight zero"), "HDG TGZ512 180 RIGHT")
+  check_eq(ex("tamazi five one two glimb flight level one six zero"), "ALT TGZ512 FL160")
+  check_eq(ex("conflict rresolution em vi pi on"), "RESO MVP")
+  check_eq(ex("alitalia seven seven one reduce speeda two one zero"), "SPD AZA771 210")
+  check_eq(ex("fasta forwarda five minute"), "FF 300")
+  check_eq(ex("pausa la simulazione"), "HOLD")
+  check_eq(ex("attiva conflict detection please"), "ASAS ON")
+end
+
+-- Cycle 85 (R572): "hpz" (the zone's half height); an aircraft's Mach, speed or rate from the value now with an arrow;
+-- "show reso method" shows it (never switches MVP on); a relative turn's corrected side keeps the question
+do
+  local _, ex = scene({ "CRE DLH9TF A321 50.0 8.5 090 FL330 280", "CRE SWR18B A320 50.2 8.7 270 FL250 280" })
+  check_eq(ex("hpz 1000->1500ft"), "ZONEDH 1500")
+  check_eq(ex("hpz +25%"), "ZONEDH 1250")
+  check_eq(ex("DLH9TF M.78 → M.80"), "SPD DLH9TF M0.8")
+  check_eq(ex("SWR18B vs 1000 → 2000"), "VS SWR18B 2000")
+  check_eq(ex("DLH9TF spd 280->300"), "SPD DLH9TF 300")
+  check_eq(ex("show reso method"), "RESO")
+  check_eq(ex("show trails"), "TRAIL ON")
+  asked(ex("swiss one eight bravo turn left ninety degrees, sorry, right ninety"), "the side corrected")
+end
