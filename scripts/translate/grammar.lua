@@ -560,7 +560,7 @@ function G.letters_swapped(w)
   if #w < 3 or KNOWN[w] or HEARD[w] or not w:match("^%l+$") then return nil end
   local function fits(x, instruction_len, known_len)
     return x ~= w and (NUMBER_WORDS[x] or (#w >= instruction_len and G.instruction_word(x))
-      or (#w >= known_len and KNOWN[x])) and x or nil
+      or (#w >= known_len and KNOWN[x])) and (lexicon.accented[x] or x) or nil
   end
   local found = fits((w:gsub("v", "w")), 4, 4) or fits((w:gsub("w", "v")), 5, math.huge)
     or fits((w:gsub("k", "c")), 4, 6) or (w:match("^[tf]") and NUMBER_WORDS["th" .. w:sub(2)] and "th" .. w:sub(2))

@@ -5532,6 +5532,11 @@ return function(H, f, compass)
         and not self:word_in(s.trig, s.e, "mvp") then
       return
     end
+    -- ("vertical reso on, zonedh 1200": the resolutions' vertical speed switched, never the method)
+    if self:word(s.trig - 1, "vertical vert") and self:word(s.trig + 1, "@on @off")
+        and not self:word_in(1, #self.t + 1, "mvp") then
+      return self:reso_vertical(s)
+    end
     local b = s.b > 1 and s.b - 1 or s.b
     -- ("what's the resolution method", "?" typed or not: the method asked, when none is named and no switch said)
     local named = self:word_in(1, #self.t + 1, "mvp") or self:word_in(b, s.e, "@mvp") or self:on_off(s) >= 0

@@ -25069,6 +25069,8 @@ do
   check_eq(ex("SWR18B vs 1000 → 2000"), "VS SWR18B 2000")
   check_eq(ex("DLH9TF spd 280->300"), "SPD DLH9TF 300")
   check_eq(ex("show reso method"), "RESO")
+  check_eq(ex("vertical reso on, zone dh 1500 -> 1200"), "RMETHV V/S ; ZONEDH 1200")
+  check_eq(ex("swiss one eight bravo descendi at one thousand five hundred feet per minutchi"), "VS SWR18B -1500")
   check_eq(ex("show trails"), "TRAIL ON")
   asked(ex("swiss one eight bravo turn left ninety degrees, sorry, right ninety"), "the side corrected")
 end
