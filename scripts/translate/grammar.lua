@@ -576,9 +576,11 @@ function G.letters_swapped(w)
   -- "ng", "khedink"; a "g" for an opening "c", "glimb": as Georgian, Armenian and Azerbaijani speakers are written)
   if not found then
     local x = w:gsub("^kh", "h"):gsub("nk$", "ng")
+    found = fits(x, 5, 6) or (x ~= w and lexicon.accented[x]) or nil
+    -- (the vowel dropped only into an instruction's word: "tiree" is no "tree", "polis" no "plis")
     local y = x:gsub("^([^aeiou])[aeiou]([lr])", "%1%2")
-    for _, c in ipairs({ x, y, (y:gsub("^k", "c")), (y:gsub("^g", "c")) }) do
-      found = found or fits(c, 5, 6) or (c ~= w and lexicon.accented[c]) or nil
+    for _, c in ipairs({ y, (y:gsub("^k", "c")), (y:gsub("^g", "c")) }) do
+      found = found or (c ~= w and #w >= 5 and G.instruction_word(c) and c) or nil
     end
   end
   -- (one letter swapped where the word has two: "tvelve"; the others the same)
@@ -5413,6 +5415,11 @@ function G:state_remark(b)
     return self:word(x + 1, D.judgements) and instruction(x + 1) and not self:word_in(x + 2, comma, "@on @off")
   end
   local copula = self:find_word(x + 1, comma, D.copulas)
+  -- ("the QNH part is just noise": the judgement after a copula and an adverb)
+  if copula < comma and self:word(copula + 1, D.predicate_adverbs) and self:word(copula + 2, D.judgements)
+      and not self:word_in(copula + 3, comma, "@on @off") then
+    return true
+  end
   if not (self:word(x, D.nouns_after) and copula < comma and self:declared(x, comma)) then return false end
   -- (a switch's state with no frame or told adverb may be wished: "..., the trails are on" stays read)
   if self:word_in(copula, comma, "@on @off") and not (framed or self:state_told(x, comma)) then
@@ -18994,6 +19001,16 @@ function G.relative_settings(text, world)
     local than = false
     for k = b, e - 1 do than = than or words[k].w == "than" end
     local function value_set(k) return not than and set_to(b, k) end
+    -- true when the clause after k names the value now ("of current", "of what it is", "of that")
+    local function of_now(k)
+      for x = k + 1, e - 1 do
+        if words[x].w == "current" or words[x].w == "now" or (words[x].w == "of" and words[x + 1]
+            and (words[x + 1].w == "what" or words[x + 1].w == "that" or words[x + 1].w == "it")) then
+          return true
+        end
+      end
+      return false
+    end
     local i = b
     while i < e do
       local n = 4
@@ -19045,6 +19062,10 @@ function G.relative_settings(text, world)
           return nil
         end
         default, i = true, i + 1
+      elseif select(5, amount(i)) and value_set(i) and of_now(i) then
+        -- ("reduce the protected zone to 80% of current": a share of the value now is its factor)
+        local value, nx = amount(i)
+        factor, i = value / 100, nx
       elseif amount(i) then
         -- ("increase sim speed to times 10", "zone on 6 NM", "to a 3 mile radius": a value the setting is set to)
         if value_set(i) then return nil end
@@ -20621,9 +20642,13 @@ function G.echo_as_typed(r, text)
     end
     i = i + 1
   end
-  local label, rest = text:match("^%s*(%a+)%s*:%s*(.-)%s*$")
+  -- (the label "log:", "note:", or its verb with up to two words more, "log that:", "write a note:")
+  local label, rest = text:match("^%s*(%a[%a ]-)%s*:%s*(.-)%s*$")
+  local words = {}
+  for w in (label or ""):lower():gmatch("%a+") do words[#words + 1] = w end
+  local labelled = #words >= 1 and #words <= 3 and (lexicon.note_labels[words[1]] or lexicon.note_labels[words[#words]])
   local typed = (#spans == 1 and spans[1])
-    or (#spans == 0 and #r.commands == 1 and label and lexicon.note_labels[label:lower()] and rest ~= "" and rest)
+    or (#spans == 0 and #r.commands == 1 and labelled and rest ~= "" and rest)
   if typed then r.commands[echo] = "ECHO " .. typed end
   return r
 end

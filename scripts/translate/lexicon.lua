@@ -2827,7 +2827,7 @@ return {
                 ["a quarter of that"] = 0.25, ["a fifth of that"] = 0.2, ["a tenth of that"] = 0.1,
                 ["twice as fast"] = 2, ["three times as fast"] = 3, ["four times as fast"] = 4, ["half as fast"] = 0.5 },
     -- shares of the value now, said after "a" ("up by a quarter", "down a third")
-    shares = { quarter = 0.25, third = 1 / 3 },
+    shares = { quarter = 0.25, third = 1 / 3, fifth = 0.2, tenth = 0.1 },
     -- words before a value that make it the value set ("to times 10", "on 6 NM", "to a 3 mile radius"): true; words
     -- that may stand between: false
     before_value = { to = true, on = true, at = true, of = true, is = true, be = true, was = true, were = true,
@@ -2994,6 +2994,7 @@ return {
     -- (French, Spanish and Portuguese: the sign said in the speaker's language, "vertical speed moins one thousand";
     -- French: the h unsaid, "eading")
     moins = "minus", menos = "minus", eading = "heading", ["'eading"] = "heading", ["'old"] = "hold", zis = "this",
+    ["'undred"] = "hundred",
     -- (Finnish, Estonian, Latvian and Lithuanian: "trect", "teegrees", "rigt", "minut", "kebec"; a "d" said "t", a
     -- "b" said "p" and a long "ee" written "ii" are grammar.lua's G.letters_swapped)
     trect = "direct", teegrees = "degrees", rigt = "right", minut = "minute", kebec = "quebec",
@@ -3023,6 +3024,9 @@ return {
     -- ("conflict resolution em vi pi", "until four dee em ee": letters a recogniser wrote by their names)
     { heard = { "em vi pi", "em vee pee", "em vi pee" }, means = "mvp", after = { "#known" } },
     { heard = { "dee em ee" }, means = "dme", after = { "#number" } },
+    -- ("level off where you are": the level flown now, no question where the aircraft is)
+    { heard = { "where you are", "where he is", "where she is", "where it is" }, means = "at present level",
+      after = { "off" } },
     -- ("pausa la simulazione": an Italian "the")
     { heard = { "la" }, means = "the", before = { "simulazione", "simulation", "sim" } },
     -- ("mvp + vs reso": the resolutions' vertical speed)

@@ -748,6 +748,7 @@ local names = {
     -- Africa's other airlines by ICAO telephony
     { "seychelles", "SEY" },  -- (Air Seychelles)
     { "air madagascar", "MDG" },
+    { "reunion", "REU" },  -- (Air Austral)
     -- one-word telephony split in two as speech recognition writes it ("egypt air two one five", "fire fly")
     { "egypt air", "MSR" },
     { "fly dubai", "FDB" },

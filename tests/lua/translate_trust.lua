@@ -25074,3 +25074,19 @@ do
   check_eq(ex("show trails"), "TRAIL ON")
   asked(ex("swiss one eight bravo turn left ninety degrees, sorry, right ninety"), "the side corrected")
 end
+
+-- Cycle 85 (R575-R577): a French or Creole recogniser's "'undred" (never a number cut short: "two tousand five
+-- 'undred" was 2005), Air Austral by its telephony "Reunion"; "level off where you are"; "the QNH part is just noise"
+-- judges (never NOISE ON); a note's label with its verb ("log that:") keeps the words as typed; a share "of current"
+-- and "down by a fifth"
+do
+  local _, ex = scene({ "CRE REU552 A320 -21.0 55.5 090 FL140 260", "CRE SWR17C BCS3 50.0 8.5 270 13000 270" })
+  check_eq(ex("Reunion five five two descend flight level one two zero rate two tousand five 'undred"),
+    "ALT REU552 FL120 2500")
+  check_eq(ex("Swiss 17C, vertical speed zero — level off where you are"), "VS SWR17C 0 ; ALT SWR17C 13000")
+  check_eq(ex("Swiss 17C, descend to 4000 feet, QNH 1013 — the QNH part is just noise"), "ALT SWR17C 4000")
+  check_eq(ex("log that: four-way convergence at CPX, default settings"),
+    "ECHO four-way convergence at CPX, default settings")
+  check_eq(ex("reduce the protected zone to 80% of current"), "ZONER 4")
+  check_eq(ex("zone radius down by a fifth"), "ZONER 4")
+end
