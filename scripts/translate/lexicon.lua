@@ -2827,7 +2827,7 @@ return {
                 ["a quarter of that"] = 0.25, ["a fifth of that"] = 0.2, ["a tenth of that"] = 0.1,
                 ["twice as fast"] = 2, ["three times as fast"] = 3, ["four times as fast"] = 4, ["half as fast"] = 0.5 },
     -- shares of the value now, said after "a" ("up by a quarter", "down a third")
-    shares = { quarter = 0.25, third = 1 / 3, fifth = 0.2, tenth = 0.1 },
+    shares = { quarter = 0.25, third = 1 / 3, fifth = 0.2 },
     -- words before a value that make it the value set ("to times 10", "on 6 NM", "to a 3 mile radius"): true; words
     -- that may stand between: false
     before_value = { to = true, on = true, at = true, of = true, is = true, be = true, was = true, were = true,

@@ -25089,4 +25089,5 @@ do
     "ECHO four-way convergence at CPX, default settings")
   check_eq(ex("reduce the protected zone to 80% of current"), "ZONER 4")
   check_eq(ex("zone radius down by a fifth"), "ZONER 4")
+  asked(ex("horizontal margin up a tenth"), "a tenth of 1.05, or 0.1 more")
 end
