@@ -600,6 +600,20 @@ end
 -- stays as typed).
 function G.accented_word(w)
   return lexicon.accented[w] or G.p_said_b(w) or G.p_said_f(w) or G.vowel_after(w) or G.letters_swapped(w)
+    or G.joined_hundreds(w)
+end
+-- "fourtousand", "twohundred", "fivethousand": a digit's word and "hundred" or "thousand" (or an accent's form of
+-- them, lexicon.accented) that a recogniser ran together -> the two words apart; else nil.
+function G.joined_hundreds(w)
+  if #w < 9 or KNOWN[w] or NUMBER_WORDS[w] then return nil end
+  for _, big in ipairs({ "thousand", "hundred", "tousand", "sousand", "tousan", "'undred" }) do
+    local digit = w:sub(-#big) == big and w:sub(1, -#big - 1)
+    local said = digit and (lexicon.accented[digit] or digit)
+    if said and NUMBER_WORDS[said] and said ~= "zero" and said ~= "hundred" and said ~= "thousand" then
+      return said .. " " .. (lexicon.accented[big] or big)
+    end
+  end
+  return nil
 end
 -- A word a recogniser split in two or three ("thir ty", "de tection", "alt i tude"): the pieces, lower-case letters
 -- with no mark between, one at least no word squawk knows, that run together into a number word or an instruction
@@ -722,8 +736,9 @@ function G.arrows(text)
     elseif lexicon.arrow_moves[low(a - 2)] then
       said[a] = "to"
     elseif (mach(toks[a - 1]) and mach(toks[a + 1])) or (value(low(a - 1)) and lexicon.arrow_value_names[low(a - 2)]
-        and toks[a + 1]:match("^[%+%-]?%d")) then
-      -- ("DLH9TF M.78 → M.80", "SWR18B vs 1000 → 2000": an aircraft's speed or rate from the value now)
+        and toks[a + 1]:match("^[%+%-]?%.?%d")) then
+      -- ("DLH9TF M.78 → M.80", "SWR18B vs 1000 → 2000", "mach .78 → .80": an aircraft's speed or rate from the
+      -- value now)
       drop[a - 1], drop[a] = true, true
     elseif setting then
       local k = a - 1
@@ -739,6 +754,67 @@ function G.arrows(text)
     if not drop[j] then out[#out + 1] = said[j] or w end
   end
   return (table.concat(out, " "):gsub(" ,", ","))
+end
+-- "..., two things in one line", "... - three separate commands", "..., both at once", "..., three instructions, one
+-- transmission": a clause after a comma, semicolon or dash that counts the instructions said before it
+-- (lexicon.instruction_counts: a count, then only words of counting them) tells the audience and goes.
+function G.instruction_counts(text)
+  local C = lexicon.instruction_counts
+  if not text:find("[,;%-]") then return text end
+  return (text:gsub("(%s*[,;]%s*)([^,;%-]+)", function(_, clause)
+    local words = {}
+    for w in clause:lower():gsub("[%.!]+%s*$", ""):gmatch("%S+") do words[#words + 1] = w end
+    if #words < 2 or not (C.counts[words[1]] or (words[1] == "one" and C.units[words[2]] and #words == 2)) then
+      return nil
+    end
+    for k = 2, #words do
+      if not C.words[words[k]] then return nil end
+    end
+    return clause:match("[%.!]+%s*$") or ""
+  end):gsub("(%s+%-%s+)([^,;%-]+)", function(_, clause)
+    local words = {}
+    for w in clause:lower():gsub("[%.!]+%s*$", ""):gmatch("%S+") do words[#words + 1] = w end
+    if #words < 2 or not C.counts[words[1]] then return nil end
+    for k = 2, #words do
+      if not C.words[words[k]] then return nil end
+    end
+    return ""
+  end))
+end
+-- "rpz 5 nm + 10%", "hpz 1000 + 500", "rpz 3 x 0.5" (what an arrow's new side often says, "hpz 1000 -> 1000 + 500"):
+-- in a clause naming a setting (lexicon.arrow_setting_words), a value, a "+" or a times sign (x, ×, *) and an amount
+-- or a share is the value it comes to; the unit of the first stays after it.
+function G.setting_sums(text)
+  if not (text:find("+", 1, true) or text:find("[%sx\u{00D7}%*]%d")) then return text end
+  local toks = {}
+  for w in text:gmatch("%S+") do toks[#toks + 1] = w end
+  local function low(j) return (toks[j] or ""):lower():gsub("[,;]$", "") end
+  local function num(w) return tonumber((w or ""):match("^(%d*%.?%d+)$")) end
+  local setting = false
+  return tokens.rewrite(text, toks, function(i)
+    if (toks[i - 1] or ""):match("[,;:]$") then setting = false end
+    for w in low(i):gmatch("[^/]+") do setting = setting or lexicon.arrow_setting_words[w] ~= nil end
+    local a = num(low(i))
+    if not (setting and a) then return nil end
+    local k = i + 1
+    local unit = lexicon.arrow_units[low(k)] and low(k) ~= "%" and toks[k] or nil
+    if unit then k = k + 1 end
+    local op, said = low(k), nil
+    if op == "+" or op == "x" or op == "\u{00D7}" or op == "*" then
+      said, k = low(k + 1), k + 1
+    elseif op:match("^%+%d") then
+      op, said = "+", op:sub(2)
+    else
+      return nil
+    end
+    local b, share = said:match("^(%d*%.?%d+)(%%?)$")
+    b = tonumber(b)
+    if not b then return nil end
+    local value = op == "+" and (share == "%" and a * (1 + b / 100) or a + b) or (share == "" and a * b or nil)
+    if not value then return nil end
+    local mark = (toks[k] or ""):match("[,;]$") or ""
+    return string.format("%.4g", value) .. (unit and " " .. unit:gsub("[,;]$", "") or "") .. mark, k + 1
+  end)
 end
 -- "reso mvp on, cd stays", "rfach 1.05 -> 1.25, rfacv unchanged": a clause after a comma naming settings only
 -- (lexicon.kept_settings.names, lexicon.relative_settings.names) and closing with a word of keeping them as they are
@@ -2187,7 +2263,8 @@ local function role_dropped(text)
   local role, said
   if text:find(",", 1, true) then role, said = text:match("^%s*(%a+[%s%-]?%a*)%s*,%s*(.+)$") end
   if not role and text:find("lease", 1, true) then role, said = text:match("^%s*(%a+[%s%-]?%a*)%s+([Pp]lease%s.+)$") end
-  if role and all_roles(role) then return said end
+  -- ("op, x8": the registry's OP, a command and no role, before a comma)
+  if role and all_roles(role) and role:lower() ~= "op" then return said end
   local label, before, sep, after, rest
   if colon or text:find("-", 1, true) then label, before, sep, after, rest = text:match("^%s*(%a+%s*%a*)(%s*)([:%-])(%s*)(.*)$") end
   if label and rest ~= "" and not (sep == "-" and (before == "" or after == ""))
@@ -4140,6 +4217,15 @@ local function written_forms(text, world)
   -- "hdg 45 (it should drift away from the others)": a bracketed remark is a clause of its own, set apart
   -- as after a dash (set_apart)
   where("%(", "%s*%((%a[^()]*)%)", " - %1,")
+  -- ("rpz 5→3 [trial 2 tight]", "EZY81QZ FL250 [co-alt w/ KLM]": a note to self in square brackets goes; one with a
+  -- word that may hold or take back what is before it ("[no, hdg 250]", "[not yet]") is set apart, as a remark after
+  -- a dash, for the clause rules to read or ask)
+  where("%[", "%s*%[([^%[%]]*)%]", function(note)
+    for w in note:lower():gmatch("[%a']+") do
+      if G.comment_holds[w] or w == "nope" then return " - " .. note .. "," end
+    end
+    return ""
+  end)
   -- "print 'episode 12 start' to the log": text in single quotes (after a space, before a space or the
   -- end) is quoted text, as in double quotes
   if low:find("'", 1, true) then
@@ -5751,6 +5837,13 @@ function G:in_reason(i)
           and self:commentary(k + 1, commentary_end(self, k + 1), false, true) then
         -- ("Descend KLM12 to FL120, as the transcript shows", ", which is what the controller ought to have done",
         -- ", as the controller did at 10:42:15")
+        inside = true
+      elseif punct and (t.text == "," or t.text == ";") and instructed(k)
+          and self:unknown_in(k + 1, commentary_end(self, k + 1))
+          and self:commentary(k + 1, commentary_end(self, k + 1)) then
+        -- ("set the timestep to 0.1 second, for smoother plots", "..., otherwise this screencast takes forever": a
+        -- clause after the instruction with a word squawk does not know and no value, place, aircraft or
+        -- instruction of its own talks to whoever watches)
         inside = true
       elseif w == "according" and self:word(k + 1, "to") and not start and (instructed(k) or #self:quantities(1, k) > 0)
           and self:commentary(k, commentary_end(self, k), false, true) then
@@ -12546,6 +12639,15 @@ local function known_word(w)
 end
 -- True when the word at i is one squawk knows (known_word): English of the lexicon's lists, no name.
 function G:known_word(i) return self.t[i] ~= nil and self.t[i].kind == "word" and known_word(self.t[i].text) end
+-- True when a word of tokens b .. e-1 is none squawk knows (G:known_word) and names nothing (no reference).
+function G:unknown_in(b, e)
+  for x = b, e - 1 do
+    if self.t[x].kind == "word" and not self.t[x].number_word and not self:known_word(x) and #self:refs_in(x, x + 1) == 0 then
+      return true
+    end
+  end
+  return false
+end
 -- True when every aircraft the request refers to is said as a kind only ("acft", "all aircraft", "traffic"), no
 -- callsign or airline: "delete acft leaving box ..." names none to delete now.
 function G:kind_only_aircraft()
@@ -12998,10 +13100,14 @@ function G:station_clause(b, e, after_callsign)
   end
   local name = table.concat(words, " ")
   if ATC_UNITS[name] or lexicon.city_airports[name] then return true end
-  if not proper then return false end
+  -- (a recogniser's text, no capital anywhere: "shamrock seven one seven, cork, direct negel", the airport's city
+  -- straight after the callsign)
+  local lower = not (self.text_said or "A"):match("%u")
+  if not proper and not (lower and after_callsign) then return false end
   for _, by in ipairs({ self.world.airports_named, self.world.airports_of_city }) do
-    if #by(name) > 0 then return true end
+    if #by(name) > 0 or (not proper and #by(name:upper()) > 0) then return true end
   end
+  if not proper then return false end
   -- (a place named by its navaid: "Kano, Ethiopian 935, ...", the KANO VOR-DME anywhere in the navdata)
   local navaids = self.world.navaids_named
   return navaids ~= nil and #navaids(name, 0, 0, 1e5) > 0
@@ -18395,6 +18501,33 @@ local function glued_telephony(text, fleet)
     ids[a.id:upper()] = a.id
     prefixes[(a.id:match("^%a+") or ""):upper()] = true
   end
+  -- ("easy85kilolima", "easy85 kilo lima": the id's closing letters said in the phonetic alphabet, run into the
+  -- number or after it, are its letters)
+  local function letters_of(run)
+    local out = ""
+    while run ~= "" do
+      local found = false
+      for n = math.min(8, #run), 4, -1 do
+        local l = lexicon.phonetic[run:sub(1, n):lower()]
+        if l then out, run, found = out .. l, run:sub(n + 1), true break end
+      end
+      if not found then return nil end
+    end
+    return out
+  end
+  text = text:gsub("%f[%w](%a+)(%d+)(%a%a%a%a+)%f[%W]", function(word, number, run)
+    local icao, letters = GLUED_AIRLINES[word:lower()], letters_of(run)
+    local id = icao and letters and ids[(icao .. number .. letters):upper()]
+    if id then return word:find("%u") and id or id:lower() end
+  end)
+  for _, pattern in ipairs({ "%f[%w](%a+)(%d+)%s+(%a+)%s+(%a+)%f[%W]", "%f[%w](%a+)(%d+)%s+(%a+)%f[%W]" }) do
+    text = text:gsub(pattern, function(word, number, l1, l2)
+      local icao = GLUED_AIRLINES[word:lower()]
+      local letters = lexicon.phonetic[l1:lower()] and (lexicon.phonetic[l1:lower()] .. (l2 and lexicon.phonetic[l2:lower()] or ""))
+      local id = icao and letters and (not l2 or lexicon.phonetic[l2:lower()]) and ids[(icao .. number .. letters):upper()]
+      if id and not ids[(icao .. number):upper()] then return word:find("%u") and id or id:lower() end
+    end)
+  end
   -- ("Air france1034": the last word of a telephony of two run into the number, the first said apart, is that id when
   -- one flies)
   text = text:gsub("%f[%w](%a+)%s+(%a+)(%d%w*)%f[%W]", function(first, word, number)
@@ -18902,7 +19035,7 @@ end
 -- says no way up or down or a unit of another setting, or whose value comes to zero or less, stays as said (asked).
 -- The run's rate "x5" or "times 5" (set to five times real time, or five times the rate now?) is asked where the two
 -- differ. -> text, and a question or nil
-G.clause_openers = { ["-"] = true, ["\u{2013}"] = true, ["and"] = true, ["then"] = true }
+G.clause_openers = { ["-"] = true, ["\u{2013}"] = true, ["and"] = true, ["then"] = true, ["+"] = true, ["&"] = true }
 function G.relative_settings(text, world)
   local R = lexicon.relative_settings
   if not world.setting then return text end
@@ -18930,6 +19063,11 @@ function G.relative_settings(text, world)
       return a .. " " .. v .. " and " .. b2 .. " " .. v
     end)
   end
+  -- ("rfach/rfacv back to 1.05", "rfach/rfacv x1.2": two settings a slash joins, each given what is said after them)
+  text = text:gsub("(%f[%a]%a+)%s*/%s*(%a+)(%s+[^,;%[%(]+)", function(a, b2, said)
+    if not (R.names[a:lower()] and R.names[b2:lower()]) or said:find("^%s+both%f[%A]") then return nil end
+    return a .. said:gsub("%s+$", "") .. " and " .. b2 .. said
+  end)
   -- ("reso factors both 1.1", "both reso factors back to default", "reso factors -0.25 each": the two factors, each
   -- said in a clause of its own)
   local both, rest = text:lower():match("^%s*(b?o?t?h?)%s*reso%a*%s+factors%s+(.-)%s*$")
@@ -19074,6 +19212,8 @@ function G.relative_settings(text, world)
         if typed_sign then sign, typed = (sign == 0 or sign == typed_sign) and typed_sign or 2, true end
         unit = glued
         if not unit and words[i] and R.units[words[i].w] then unit, i = words[i].w, i + 1 end
+      elseif R.clock_words[w] then
+        return nil
       else
         if R.up[w] then sign = sign == -1 and 2 or 1 end
         if R.down[w] then sign = sign == 1 and 2 or -1 end
@@ -20668,10 +20808,15 @@ function G.translate_text(text, world)
   -- (the Turkish letters of UTF-8 Latin Extended-A: "hayır", "sağol", "Şile")
   if text:find("[\xC4\xC5]") then text = text:gsub("[\xC4\xC5][\x80-\xBF]", lexicon.accents) end
   -- (an accent's words first, so the callsign and telephony passes read "hop seven sree" as "hop seven three")
-  text = G.arrows(G.kept_settings(G.area_altitudes(G.accented(text))))
+  text = G.instruction_counts(G.setting_sums(G.arrows(G.kept_settings(G.area_altitudes(G.accented(text))))))
   -- ("rpz from 5 to": a change from a value to nothing said, the request cut off after "to")
   local from = text:lower():match("%f[%a]from%s+(%S+)%s+to%s*[%p]*%s*$")
   if from then return { commands = {}, ask = string.format("From %s to what? Nothing was said after 'to'.", from) } end
+  -- ("rpz 5→", "dtlook 300→ [shorter]": an arrow from a value to nothing said)
+  local arrow_from = text:match("(%S+)%s+%->%s*$") or text:match("(%S+)%s+%->%s*[,;%[%(]")
+  if arrow_from then
+    return { commands = {}, ask = string.format("From %s to what? Nothing was said after the arrow.", arrow_from) }
+  end
   local kept_ask
   text, kept_ask = G.setting_left_as_is(text)
   if kept_ask then return { commands = {}, ask = kept_ask } end

@@ -4929,6 +4929,11 @@ return function(H, f, compass)
     local id = self:acid(s, "get a bank limit")
     if not id then return end
     for _, q in ipairs(self:quantities(s.b, s.e)) do
+      -- ("watch the bank, it's a 105 degree turn": a limit steeper than any aircraft banks is a turn's size, asked)
+      if (q.kind == "angle" or q.kind == "plain") and q.value > L.max_bank_deg then
+        return self:need(string.format("%s degrees is steeper than any aircraft banks. What bank angle limit, in "
+          .. "degrees, should %s have?", f.num(q.value), id))
+      end
       if q.kind == "angle" or q.kind == "plain" then return self:emit("BANK " .. id .. " " .. f.num(q.value)) end
     end
     self:need("What bank angle limit, in degrees, should " .. id .. " have?")
@@ -5717,7 +5722,8 @@ return function(H, f, compass)
     local off, only = false, false
     for k = 1, #self.t do
       local additive = self:additive_not(k) or self:additive_not(k - 1) or (tag_b and k >= tag_b and k < tag_e)
-      off = off or (self:word(k, "@off no not never") and not additive)
+      -- ("vertical reso none": no method, off)
+      off = off or (self:word(k, "@off no not never none") and not additive)
         -- ("close vertical resolution", "please close it": "open"'s opposite, as a switch is closed, is off)
         or (self:word(k, "close shut") and self:word(k + 1, "it the vertical resolution resolutions reso rmethv"))
       only = only or (self:word(k, "only") and not additive)

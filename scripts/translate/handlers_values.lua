@@ -1307,7 +1307,14 @@ return function(H, f, wrap, compass)
     for x = first_e or 1, turned and second_b - 1 or 0 do
       if self.t[x].kind == "punct" and self.t[x].text ~= "," then turned = false end
     end
-    local reached = turned and turned ~= 0 and wrap(math.floor(now.hdg_deg + turned * rel.value + 0.5))
+    -- ("turn right 30 degrees, watch it go from 090", "left 20 degrees, heading was 240": the heading flown now, said
+    -- after a word of lexicon.present_heading_words, is where the turn starts, no second heading)
+    local function present(q)
+      return q and now and self:word(q.b - 1, "@present_heading_words")
+        and wrap(q.value) == wrap(math.floor(now.hdg_deg + 0.5))
+    end
+    if present(abs) and rel then abs = nil end
+    local reached = turned and abs and turned ~= 0 and wrap(math.floor(now.hdg_deg + turned * rel.value + 0.5))
     if reached and wrap(abs.value) ~= reached then
       return self:need(string.format("Should %s turn %s by %s degrees, onto %03d, or fly heading %s?", id,
         turned < 0 and "left" or "right", f.num(rel.value), reached, f.num(abs.value)))

@@ -2208,6 +2208,20 @@ return {
   -- airline flying; with two or more, or none, squawk asks
   -- airline_alone_addressee: so does an airline said alone, capitalised, as a clause's addressee
   -- ("Lufthansa, mach .80") with no callsign in its clause
+  -- a clause counting the instructions said before it ("two things in one line", "three separate commands", "both at
+  -- once"; grammar.lua's G.instruction_counts): its first word, the words that may follow, and the units "one" counts
+  instruction_counts = {
+    counts = { both = true, two = true, three = true, four = true, all = true },
+    words = { things = true, thing = true, instructions = true, instruction = true, commands = true, clearances = true,
+              changes = true, separate = true, ["in"] = true, one = true, line = true, go = true, transmission = true,
+              call = true, at = true, once = true, together = true, of = true, them = true, the = true, same = true,
+              time = true, three = true, shot = true, message = true },
+    units = { line = true, transmission = true, go = true, call = true, message = true } },
+  -- a bank angle limit [deg] above this is steeper than any aircraft squawk flies banks: asked, never set
+  max_bank_deg = 60,
+  -- words before the heading an aircraft flies now, said beside a relative turn ("from 090", "heading was 240",
+  -- "you're on 180"): where the turn starts (handlers_values.lua)
+  present_heading_words = { "from", "was", "on", "currently", "presently" },
   callsign_confirm = { airline = 0.5, digits = 0.6, strict = true, alone = true, airline_alone = true,
     airline_alone_addressee = true },
   -- a spoken waypoint name matched to a known one at least this well (0-1)
@@ -2839,6 +2853,9 @@ return {
     -- (verbs of running that open a clause of their own, "resume the sim at ...", "run the sim for 5 minutes fast":
     -- the grammar's to read)
     run_kept = { run = true, resume = true, continue = true, start = true, go = true, unpause = true },
+    -- (a clause's clock command beside a setting's change, "pause rpz x2", "op ff dtmult x3": the clause is no change
+    -- of one setting alone; the grammar's to read)
+    clock_words = { op = true, hold = true, pause = true, freeze = true, unpause = true, ff = true },
     up = { up = true, raise = true, increase = true, extend = true, add = true, plus = true, out = true,
            bump = true, lengthen = true, widen = true, grow = true, bigger = true, larger = true, longer = true,
            wider = true, higher = true, more = true, greater = true },
@@ -3011,7 +3028,11 @@ return {
     ad = "add", mov = "move",
     -- (Italian: "attiva conflict detection", "ferma la simulazione"; a vowel after a closing consonant, "speeda",
     -- "fasta forwarda", is grammar.lua's G.vowel_after)
-    attiva = "activate", ferma = "stop", simulazione = "simulation", forwarda = "forward" },
+    attiva = "activate", ferma = "stop", simulazione = "simulation", forwarda = "forward",
+    -- (Irish: "haddin", "yer route", "wit mvp", "not less tan", "good evenin"; "th" said "t", "tree", "tirty", is read
+    -- with the numbers)
+    haddin = "heading", haddn = "heading", yer = "your", wit = "with", tan = "than", evenin = "evening",
+    mornin = "morning" },
   heard_as = {
     { heard = { "write", "rite", "wright" }, means = "right",
       before = { "heading", "hdg", "turn" }, after = { "turn" } },

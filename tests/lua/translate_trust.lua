@@ -25091,3 +25091,60 @@ do
   check_eq(ex("zone radius down by a fifth"), "ZONER 4")
   asked(ex("horizontal margin up a tenth"), "a tenth of 1.05, or 0.1 more")
 end
+
+-- Cycle 86 (R583): an experimenter's lab shorthand: "op" before a comma is the registry's OP, never a speaker's label
+-- (OP was dropped); a clock command beside a setting's change keeps the clause whole (HOLD was dropped); two settings
+-- a slash joins take what follows them both (RFACH was dropped); an arrow's new side that adds or multiplies ("1000
+-- -> 1000 + 500", never 500); an arrow to nothing asked (never the old value set); "none" switches vertical
+-- resolutions off (never V/S); an aircraft's heading, Mach and speed from the value now; notes in square brackets
+do
+  local _, ex = scene({ "CRE KLM1023 B738 52.3 4.2 090 FL250 280", "CRE TRA5TK B738 52.3 5.4 270 FL250 280",
+                         "ASAS ON", "RESO MVP" })
+  check_eq(ex("op, x8"), "OP ; DTMULT 8")
+  check_eq(ex("op + dtmult x3"), "OP ; DTMULT 3")
+  asked(ex("pause rpz x2"), "the pause kept with the zone")
+  check_eq(ex("rfach/rfacv back to 1.05"), "RFACH 1.05 ; RFACV 1.05")
+  check_eq(ex("hpz 1000→1000 + 500"), "ZONEDH 1500")
+  check_eq(ex("rpz 5 → 5 nm + 10%, hpz 1000 + 10%"), "ZONER 5.5 ; ZONEDH 1100")
+  check_eq(ex("rpz 3 → 3 x 0.5"), "ZONER 1.5")
+  asked(ex("rpz 5→"), "nothing after the arrow")
+  asked(ex("dtlook 300→ [shorter]"), "nothing after the arrow")
+  check_eq(ex("rmethv off → vert reso none"), "RMETHV OFF")
+  check_eq(ex("KLM1023 hdg 090→120 rt"), "HDG KLM1023 120 RIGHT")
+  check_eq(ex("KLM1023 + TRA5TK mach .78 → .82"), "SPD KLM1023 M0.82 ; SPD TRA5TK M0.82")
+  check_eq(ex("KLM1023 spd 280→300, TRA5TK spd 280→260"), "SPD KLM1023 300 ; SPD TRA5TK 260")
+  check_eq(ex("rpz 5→3, hpz 1000→800 [trial 2 tight]"), "ZONER 3 ; ZONEDH 800")
+  asked(ex("rpz 5 [not yet]"), "a note that holds back is read")
+end
+
+-- Cycle 86 (R581, R582): a recogniser's Icelandic and Irish English: "fourtousand"; "easy85kilolima"; Irish
+-- "haddin", "yer", "wit"; the station's city in lower case after the callsign (never asked what "cork" means)
+do
+  local _, ex = scene({ "CRE FXI24 DH8D 64.1 -21.5 270 5000 200", "CRE EZY85KL A320 63.6 -21.4 300 FL150 290",
+                         "CRE EIN717 A320 52.0 -8.0 090 FL100 250", "DEFWPT NEGEL 51.6 -7.8",
+                         "ADDWPT EIN717 NEGEL" })
+  check_eq(ex("faxi two four descend fourtousand"), "ALT FXI24 4000")
+  check_eq(ex("easy85kilolima turnright heading zero two zero"), "HDG EZY85KL 20 RIGHT")
+  check_eq(ex("shamrock seven one seven tirn lefft haddin two seven zero"), "HDG EIN717 270 LEFT")
+  check_eq(ex("switch on asas wit mvp"), "ASAS ON ; RESO MVP")
+  if os.getenv("SQUAWK_NAVDATA") then
+    check_eq(ex("shamrock seven one seven, cork, direct negel"), "DIRECT EIN717 NEGEL")
+  else
+    print("skipped: a station's city in lower case needs navdata (SQUAWK_NAVDATA)")
+  end
+end
+
+-- Cycle 86 (R584): a tutorial's narration: a count of the instructions said ("two things in one line", "three
+-- separate commands", "both at once") tells and goes; the heading flown now said beside a relative turn ("from
+-- 090", "heading was 240") is where the turn starts
+do
+  local _, ex = scene({ "CRE KLM1234 B738 52.3 4.2 090 FL250 280" })
+  check_eq(ex("KLM1234 turn right heading 330 and descend FL 80, two things in one line"),
+    "HDG KLM1234 330 RIGHT ; ALT KLM1234 FL80")
+  check_eq(ex("KLM1234 climb FL 260, speed 260, heading 060 - three instructions, one line"),
+    "ALT KLM1234 FL260 ; SPD KLM1234 260 ; HDG KLM1234 60")
+  check_eq(ex("KLM1234 climb FL 260 and speed 260, both at once"), "ALT KLM1234 FL260 ; SPD KLM1234 260")
+  check_eq(ex("KLM1234 turn right 30 degrees, relative turn, watch it go from 090"), "HDG KLM1234 120 RIGHT")
+  check_eq(ex("KLM1234 turn left 20 degrees, heading was 090"), "HDG KLM1234 70 LEFT")
+  asked(ex("KLM1234 turn left 20 degrees, heading 050"), "a second heading")
+end
