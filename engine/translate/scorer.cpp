@@ -269,6 +269,12 @@ bool same_command(std::string_view produced, std::string_view expected) {
     for (size_t i = 1; i < p.size(); ++i) fold(p[i]);
     for (size_t i = 1; i < e.size(); ++i) fold(e[i]);
   }
+  // CDMETHOD (ASAS) ON picks the first detection method, STATEBASED (BlueSky detection.py L93-122)
+  if (cmd == "CDMETHOD") {
+    for (auto* v : {&p, &e})
+      for (size_t i = 1; i < v->size(); ++i)
+        if (text::iequals((*v)[i], "STATEBASED")) (*v)[i] = "ON";
+  }
   // A turn direction produced where the expected HDG states none: the
   // expected line predates the extension and names the same heading.
   if (cmd == "HDG" && p.size() == 4 && e.size() == 3 && is_turn_word(p[3])) p.pop_back();

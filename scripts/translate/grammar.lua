@@ -731,15 +731,26 @@ function G.arrows(text)
     end
     if toks[a] ~= "->" then
       -- (not an arrow)
+    elseif lexicon.arrow_setting_words[low(a - 1)] or lexicon.arrow_value_names[low(a - 1)]
+        or lexicon.arrow_level_names[low(a - 1)] or low(a - 1) == "hdg" or low(a - 1) == "heading" then
+      -- ("cd → statebased", "vs → -800", "alt → FL80": the setting's or value's name, the arrow, the value wanted)
+      drop[a] = true
     elseif condition and (G.speed_units[low(a - 1)] or toks[a + 1]:match("^%d")) then
       said[a] = ","
     elseif lexicon.arrow_moves[low(a - 2)] then
       said[a] = "to"
     elseif (mach(toks[a - 1]) and mach(toks[a + 1])) or (value(low(a - 1)) and lexicon.arrow_value_names[low(a - 2)]
-        and toks[a + 1]:match("^[%+%-]?%.?%d")) then
+        and (toks[a + 1]:match("^[%+%-]?%.?%d") or toks[a + 1]:lower():match("^x%d"))) then
       -- ("DLH9TF M.78 → M.80", "SWR18B vs 1000 → 2000", "mach .78 → .80": an aircraft's speed or rate from the
-      -- value now)
+      -- value now; "spd 250 → -10%", "spd 270 → x0.9": to what the share or factor makes of it)
       drop[a - 1], drop[a] = true, true
+      local from = tonumber((low(a - 1)))
+      local op, n, share = toks[a + 1]:lower():match("^([x%+%-])(%d*%.?%d+)(%%?)$")
+      n = tonumber(n)
+      if from and n and (op == "x") == (share == "") and (op == "x" or share == "%") then
+        local to = op == "x" and from * n or from * (1 + (op == "-" and -n or n) / 100)
+        toks[a + 1] = string.format("%d", math.floor(to + 0.5))
+      end
     elseif setting then
       local k = a - 1
       if lexicon.arrow_units[low(k)] and value(low(k - 1)) then k = k - 1 end
@@ -5837,13 +5848,6 @@ function G:in_reason(i)
           and self:commentary(k + 1, commentary_end(self, k + 1), false, true) then
         -- ("Descend KLM12 to FL120, as the transcript shows", ", which is what the controller ought to have done",
         -- ", as the controller did at 10:42:15")
-        inside = true
-      elseif punct and (t.text == "," or t.text == ";") and instructed(k)
-          and self:unknown_in(k + 1, commentary_end(self, k + 1))
-          and self:commentary(k + 1, commentary_end(self, k + 1)) then
-        -- ("set the timestep to 0.1 second, for smoother plots", "..., otherwise this screencast takes forever": a
-        -- clause after the instruction with a word squawk does not know and no value, place, aircraft or
-        -- instruction of its own talks to whoever watches)
         inside = true
       elseif w == "according" and self:word(k + 1, "to") and not start and (instructed(k) or #self:quantities(1, k) > 0)
           and self:commentary(k, commentary_end(self, k), false, true) then
@@ -12639,15 +12643,6 @@ local function known_word(w)
 end
 -- True when the word at i is one squawk knows (known_word): English of the lexicon's lists, no name.
 function G:known_word(i) return self.t[i] ~= nil and self.t[i].kind == "word" and known_word(self.t[i].text) end
--- True when a word of tokens b .. e-1 is none squawk knows (G:known_word) and names nothing (no reference).
-function G:unknown_in(b, e)
-  for x = b, e - 1 do
-    if self.t[x].kind == "word" and not self.t[x].number_word and not self:known_word(x) and #self:refs_in(x, x + 1) == 0 then
-      return true
-    end
-  end
-  return false
-end
 -- True when every aircraft the request refers to is said as a kind only ("acft", "all aircraft", "traffic"), no
 -- callsign or airline: "delete acft leaving box ..." names none to delete now.
 function G:kind_only_aircraft()
@@ -20904,6 +20899,14 @@ function G.translate_text(text, world)
     text = text:gsub("([Ff][Ll]%s?%d%d%d?)%s*[%-=]+>%s*([Ff][Ll]%s?%d%d%d?)", "from %1 to %2")
     text = text:gsub("([Ff][Ll]%s?%d%d%d?)%s*[%-=]+>%s*(%d%d%d%d%d?%f[^%w%.])", "from %1 to %2 ft")
     text = text:gsub("(%f[%w%.]%d%d%d%d%d?)%s*[%-=]+>%s*([Ff][Ll]%s?%d%d%d?)", "from %1 ft to %2")
+  end
+  -- "alt 310 -> 270": an arrow between two bare levels in hundreds of feet (two or three figures) after a level's
+  -- name, from the one flight level to the other
+  if text:find(">", 1, true) then
+    text = text:gsub("%f[%w](%a+)(%s*)(%d%d%d?)%s*[%-=]+>%s*(%d%d%d?)%f[^%w%.]", function(name, space, from, to)
+      if not lexicon.arrow_level_names[name:lower()] then return nil end
+      return name .. space .. "from FL" .. from .. " to FL" .. to
+    end)
   end
   -- "hdg 220 -> 250", "spd 280 -> 250": an arrow between two values after the name of a heading or speed, from
   -- the one to the other

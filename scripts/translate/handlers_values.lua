@@ -63,8 +63,12 @@ return function(H, f, wrap, compass)
         end
         -- ("BAW5 two four zero", "EWG7, three one zero": three digits said straight after the callsign, no word
         -- before them and none led by zero, name a heading, a flight level or a speed alike: asked)
+        -- (a hesitation between, "ah em ...", a mark or a word squawk does not know, is no word before them)
         local p = q.b - 1
-        while p > s.b and (self.t[p].filler or self.t[p].text == ",") do p = p - 1 end
+        while p > s.b and (self.t[p].filler or self.t[p].kind == "punct" or self:word(p, "@hesitations")
+            or (self.t[p].kind == "word" and not self:known_word(p) and #self:refs_in(p, p + 1) == 0)) do
+          p = p - 1
+        end
         local r = self:refs_in(s.b, q.b, "aircraft")
         r = r[#r]
         if r and r.e == p + 1 and not n.digits:find("^0") then

@@ -244,6 +244,9 @@ return {
         "adieu",
         -- greetings of Australia, New Zealand and South Africa ("G'day mate", "kia ora", "howzit")
         "mate", "kia", "ora", "howzit",
+        -- thanks in Fijian, Tongan, Samoan and Solomon Islands Pijin ("vinaka", "malo", "fa'afetai", "tanggio",
+        -- "tenkyu")
+        "vinaka", "malo", "fa'afetai", "faafetai", "tanggio", "tenkyu",
         -- the same courtesy in German ("Grüß Gott", "danke", "bitte", "servus"; "Entschuldigung" is
         -- lexicon.discourse_words' sorry)
         "gruss", "gott", "servus", "hallo", "danke", "bitte", "guten", "gruezi",
@@ -2873,12 +2876,15 @@ return {
   arrow_units = { s = true, sec = true, secs = true, second = true, seconds = true, min = true, mins = true,
                   minute = true, minutes = true, nm = true, ft = true, feet = true, kt = true, kts = true,
                   knots = true, fpm = true, hz = true, ["%"] = true, m = true, km = true },
-  arrow_states = { on = true, off = true, none = true, ["v/s"] = true, vs = true, mvp = true },
+  arrow_states = { on = true, off = true, none = true, ["v/s"] = true, vs = true, mvp = true, pastcpa = true,
+                   statebased = true, class = true, openap = true },
   -- the words naming a setting in a clause with an arrow
   arrow_setting_words = { rpz = true, pz = true, hpz = true, dh = true, zone = true, zoner = true, zonedh = true, radius = true,
                           lookahead = true, ["look-ahead"] = true, dtlook = true, dtmult = true, rfach = true,
                           rfacv = true, rmethv = true, reso = true, asas = true, cd = true, detection = true,
-                          resolution = true, sim = true, simulation = true, half = true, height = true },
+                          resolution = true, sim = true, simulation = true, half = true, height = true,
+                          trail = true, trails = true, noise = true, vnav = true, lnav = true, resnav = true,
+                          perf = true, cdmethod = true },
   -- the words of a condition and of moving before an arrow: then its "then" ("passing fl100 -> 220 kt") or its "to"
   -- ("mv TRA6021 -> 52.5 4.4")
   arrow_conditions = { passing = true, at = true, reaching = true, when = true, once = true, after = true,
@@ -2886,6 +2892,8 @@ return {
   arrow_moves = { mv = true, move = true, put = true, teleport = true, place = true },
   -- an aircraft's value names before a value now and an arrow ("spd 280 -> 300", "vs 1000 → 2000", "M.78 → M.80")
   arrow_value_names = { spd = true, speed = true, vs = true, mach = true, m = true },
+  -- a level's names before two bare levels and an arrow ("alt 310 -> 270": FL310 to FL270)
+  arrow_level_names = { alt = true, altitude = true, lvl = true, level = true },
   -- a clause keeping settings as they are ("cd stays", "rfacv unchanged": grammar.lua's G.kept_settings): the words
   -- that may name them, and the words of keeping
   kept_settings = { names = { "cd", "asas", "reso", "detection", "resolution", "conflict", "mvp", "rmethv", "rfach",

@@ -480,6 +480,12 @@ local names = {
     { "nok air", "NOK" },
     { "niugini", "ANG" },
     { "air niugini", "ANG" },
+    -- airlines of the Pacific islands: ICAO telephony ("Balus": PNG Air; "Air Van": Air Vanuatu)
+    { "balus", "TOK" },
+    { "polynesian", "PAO" },
+    { "aircalin", "ACI" },
+    { "air van", "AVN" },
+    { "solomon", "SOL" },
     { "jeju air", "JJA" },
     { "air peach", "APJ" },
     { "skymark", "SKY" },

@@ -25148,3 +25148,22 @@ do
   check_eq(ex("KLM1234 turn left 20 degrees, heading was 090"), "HDG KLM1234 70 LEFT")
   asked(ex("KLM1234 turn left 20 degrees, heading 050"), "a second heading")
 end
+
+-- Cycle 86 (R588, R590): Pacific islands' telephony ("balus", "polynesian", "aircalin", "air van", "solomon") and
+-- thanks ("vinaka", "malo"); three digits after a hesitation or an ellipsis are asked (never a heading); a data
+-- scientist's arrows: bare levels after "alt" (FL310 to FL270), a speed's share or factor on the arrow's new side,
+-- a switch from one position to another, a value's name straight before the arrow
+do
+  local _, ex = scene({ "CRE TOK432 DH8C -9.4 147.2 090 8000 200", "CRE FJI862 A332 -17.7 177.4 120 FL300 290",
+                         "CRE TRA5KZ B738 52.6 5.0 270 FL310 270", "CRE EZY81MC A320 52.1 4.8 045 9000 250" })
+  check_eq(ex("balus four tree two descend six tousand feet vinaka"), "ALT TOK432 6000")
+  asked(ex("pacific eight six two ah em ... tree zero zero"), "a heading, a level or a speed")
+  check_eq(ex("TRA5KZ: alt 310→270, vs 0→-1500"), "ALT TRA5KZ FL270 ; VS TRA5KZ -1500")
+  check_eq(ex("TRA5KZ spd 270 → -10%"), "SPD TRA5KZ 243")
+  check_eq(ex("TRA5KZ spd 270 → x0.9"), "SPD TRA5KZ 243")
+  check_eq(ex("EZY81MC vs → -800 [slow descent test]"), "VS EZY81MC -800")
+  check_eq(ex("resnav off → pastcpa"), "RESNAV PASTCPA")
+  check_eq(ex("trails off → on [for plots]"), "TRAIL ON")
+  check_eq(ex("asas off → on; reso → MVP; zoner 5 → 4"), "ASAS ON ; RESO MVP ; ZONER 4")
+  check(ex("TRA5KZ bank 105"):find("steeper") ~= nil)
+end

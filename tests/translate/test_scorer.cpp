@@ -26,6 +26,9 @@ TEST_CASE("altitudes compare in feet within 50 ft") {
 
 TEST_CASE("RMETHV: ON and V/S both mean vertical resolutions on, OFF and NONE off") {
   CHECK(same_command("RMETHV V/S", "RMETHV ON"));
+  CHECK(same_command("ASAS STATEBASED", "ASAS ON"));
+  CHECK(same_command("CDMETHOD STATEBASED", "ASAS ON"));
+  CHECK_FALSE(same_command("ASAS STATEBASED", "ASAS OFF"));
   CHECK(same_command("RMETHV NONE", "RMETHV OFF"));
   CHECK_FALSE(same_command("RMETHV V/S", "RMETHV OFF"));
 }
