@@ -775,7 +775,7 @@ function G.instruction_counts(text)
   return (text:gsub("(%s*[,;]%s*)([^,;%-]+)", function(_, clause)
     local words = {}
     for w in clause:lower():gsub("[%.!]+%s*$", ""):gmatch("%S+") do words[#words + 1] = w end
-    if #words < 2 or not (C.counts[words[1]] or (words[1] == "one" and C.units[words[2]] and #words == 2)) then
+    if #words < 2 or not C.counts[words[1]] or (words[1] == "one" and not (C.words[words[2]] and #words == 2)) then
       return nil
     end
     for k = 2, #words do
@@ -785,7 +785,7 @@ function G.instruction_counts(text)
   end):gsub("(%s+%-%s+)([^,;%-]+)", function(_, clause)
     local words = {}
     for w in clause:lower():gsub("[%.!]+%s*$", ""):gmatch("%S+") do words[#words + 1] = w end
-    if #words < 2 or not C.counts[words[1]] then return nil end
+    if #words < 2 or not C.counts[words[1]] or (words[1] == "one" and #words > 2) then return nil end
     for k = 2, #words do
       if not C.words[words[k]] then return nil end
     end

@@ -2212,14 +2212,14 @@ return {
   -- airline_alone_addressee: so does an airline said alone, capitalised, as a clause's addressee
   -- ("Lufthansa, mach .80") with no callsign in its clause
   -- a clause counting the instructions said before it ("two things in one line", "three separate commands", "both at
-  -- once"; grammar.lua's G.instruction_counts): its first word, the words that may follow, and the units "one" counts
+  -- once", "one instruction, one command"; grammar.lua's G.instruction_counts): its first word ("one" only before
+  -- one word of them), the words that may follow
   instruction_counts = {
-    counts = { both = true, two = true, three = true, four = true, all = true },
+    counts = { both = true, one = true, two = true, three = true, four = true, all = true },
     words = { things = true, thing = true, instructions = true, instruction = true, commands = true, clearances = true,
               changes = true, separate = true, ["in"] = true, one = true, line = true, go = true, transmission = true,
               call = true, at = true, once = true, together = true, of = true, them = true, the = true, same = true,
-              time = true, three = true, shot = true, message = true },
-    units = { line = true, transmission = true, go = true, call = true, message = true } },
+              time = true, three = true, shot = true, message = true, command = true, each = true } },
   -- a bank angle limit [deg] above this is steeper than any aircraft squawk flies banks: asked, never set
   max_bank_deg = 60,
   -- words before the heading an aircraft flies now, said beside a relative turn ("from 090", "heading was 240",
@@ -3040,7 +3040,20 @@ return {
     -- (Irish: "haddin", "yer route", "wit mvp", "not less tan", "good evenin"; "th" said "t", "tree", "tirty", is read
     -- with the numbers)
     haddin = "heading", haddn = "heading", yer = "your", wit = "with", tan = "than", evenin = "evening",
-    mornin = "morning" },
+    mornin = "morning",
+    -- (Burmese, Khmer and Lao: a closing consonant unsaid, "descen", "spee", "clai", "tunlef", "kno" ("fli level" is
+    -- heard_as's; "tun" stays, TUN a navaid);
+    -- "r" said "l" for Lao, "tlee", "zelo", "leduce", is grammar.lua's G.letters_swapped; "fai", "fo", "nai" for
+    -- five, four and nine)
+    descen = "descend", spee = "speed", kno = "knots", altitu = "altitude", rou = "route", dele = "delete",
+    dilete = "delete", crea = "create", aircraf = "aircraft", waypoin = "waypoint", poin = "point", direc = "direct",
+    dilec = "direct", airpor = "airport", contac = "contact", fass = "fast", forwar = "forward", foward = "forward",
+    lai = "right", lef = "left", clai = "climb", passin = "passing", afta = "after",
+    maintai = "maintain", multiplie = "multiplier", resolusion = "resolution", correcson = "correction",
+    destinason = "destination", swi = "switch", doin = "doing", easten = "eastern", aili = "airline",
+    hunde = "hundred", eigh = "eight", fai = "five", fie = "five", fo = "four", foe = "four", nai = "nine",
+    tunlef = "turn left", tunlai = "turn right", fee = "feet", posison = "position", simulason = "simulation",
+    frequensy = "frequency", expedi = "expedite", ahea = "ahead", rada = "radar", dis = "this", hou = "hour" },
   heard_as = {
     { heard = { "write", "rite", "wright" }, means = "right",
       before = { "heading", "hdg", "turn" }, after = { "turn" } },
@@ -3053,6 +3066,8 @@ return {
     -- ("conflict resolution em vi pi", "until four dee em ee": letters a recogniser wrote by their names)
     { heard = { "em vi pi", "em vee pee", "em vi pee" }, means = "mvp", after = { "#known" } },
     { heard = { "dee em ee" }, means = "dme", after = { "#number" } },
+    -- ("clai fli level one tree zero": a closing consonant unsaid, only before the level's noun; a cut-off "fli" stays)
+    { heard = { "fli" }, means = "flight", before = { "level", "levels" } },
     -- ("level off where you are": the level flown now, no question where the aircraft is)
     { heard = { "where you are", "where he is", "where she is", "where it is" }, means = "at present level",
       after = { "off" } },

@@ -25167,3 +25167,13 @@ do
   check_eq(ex("asas off → on; reso → MVP; zoner 5 → 4"), "ASAS ON ; RESO MVP ; ZONER 4")
   check(ex("TRA5KZ bank 105"):find("steeper") ~= nil)
 end
+
+-- Cycle 86 (R587): a Burmese, Khmer or Lao recogniser's closing consonants unsaid ("descen", "spee", "clai",
+-- "tunlef", "fli level", "kno") and Lao "r" said "l" ("tlee", "zelo", "leduce"); "fai", "fo", "nai" for five, four, nine
+do
+  local _, ex = scene({ "CRE LAO301 AT72 18.0 102.6 090 9000 200", "CRE CES5047 A320 17.5 102.0 270 FL250 280" })
+  check_eq(ex("china easten fai zelo fo seven tunlef tlee zelo deglee"), "HDG CES5047 240 LEFT")
+  check_eq(ex("lao tlee zelo one clai fli level one tlee zelo leduce spee one eigh zero kno"),
+    "ALT LAO301 FL130 ; SPD LAO301 180")
+  check_eq(ex("lao tlee zelo one descen at one tousan fie hunde fee per minute"), "VS LAO301 -1500")
+end
