@@ -739,17 +739,21 @@ function G.arrows(text)
       said[a] = ","
     elseif lexicon.arrow_moves[low(a - 2)] then
       said[a] = "to"
+    elseif lexicon.arrow_then[low(a + 1)] then
+      -- ("ff 10 min → pause": the arrow before a clock command is "then"; "schedule 00:10:00 → hold", what the
+      -- schedule runs)
+      said[a] = (low(a - 2) == "schedule" or low(a - 3) == "schedule") and "" or ", then"
     elseif (mach(toks[a - 1]) and mach(toks[a + 1])) or (value(low(a - 1)) and lexicon.arrow_value_names[low(a - 2)]
-        and (toks[a + 1]:match("^[%+%-]?%.?%d") or toks[a + 1]:lower():match("^x%d"))) then
+        and (toks[a + 1]:match("^[%+%-]?%.?%d") or toks[a + 1]:lower():match("^x%d") or mach(toks[a + 1]))) then
       -- ("DLH9TF M.78 → M.80", "SWR18B vs 1000 → 2000", "mach .78 → .80": an aircraft's speed or rate from the
       -- value now; "spd 250 → -10%", "spd 270 → x0.9": to what the share or factor makes of it)
       drop[a - 1], drop[a] = true, true
       local from = tonumber((low(a - 1)))
-      local op, n, share = toks[a + 1]:lower():match("^([x%+%-])(%d*%.?%d+)(%%?)$")
+      local op, n, share, mark = toks[a + 1]:lower():match("^([x%+%-])(%d*%.?%d+)(%%?)([,;]?)$")
       n = tonumber(n)
       if from and n and (op == "x") == (share == "") and (op == "x" or share == "%") then
         local to = op == "x" and from * n or from * (1 + (op == "-" and -n or n) / 100)
-        toks[a + 1] = string.format("%d", math.floor(to + 0.5))
+        toks[a + 1] = string.format("%d", math.floor(to + 0.5)) .. mark
       end
     elseif setting then
       local k = a - 1

@@ -2884,14 +2884,16 @@ return {
                           rfacv = true, rmethv = true, reso = true, asas = true, cd = true, detection = true,
                           resolution = true, sim = true, simulation = true, half = true, height = true,
                           trail = true, trails = true, noise = true, vnav = true, lnav = true, resnav = true,
-                          perf = true, cdmethod = true },
+                          perf = true, cdmethod = true, dt = true },
   -- the words of a condition and of moving before an arrow: then its "then" ("passing fl100 -> 220 kt") or its "to"
   -- ("mv TRA6021 -> 52.5 4.4")
   arrow_conditions = { passing = true, at = true, reaching = true, when = true, once = true, after = true,
                        over = true, abeam = true },
   arrow_moves = { mv = true, move = true, put = true, teleport = true, place = true },
   -- an aircraft's value names before a value now and an arrow ("spd 280 -> 300", "vs 1000 → 2000", "M.78 → M.80")
-  arrow_value_names = { spd = true, speed = true, vs = true, mach = true, m = true },
+  arrow_value_names = { spd = true, speed = true, vs = true, mach = true, m = true, bank = true },
+  -- clock commands after an arrow ("ff 10 min → pause"): the arrow is "then"
+  arrow_then = { pause = true, hold = true, op = true, resume = true, run = true, freeze = true },
   -- a level's names before two bare levels and an arrow ("alt 310 -> 270": FL310 to FL270)
   arrow_level_names = { alt = true, altitude = true, lvl = true, level = true },
   -- a clause keeping settings as they are ("cd stays", "rfacv unchanged": grammar.lua's G.kept_settings): the words

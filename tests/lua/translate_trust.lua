@@ -25177,3 +25177,15 @@ do
     "ALT LAO301 FL130 ; SPD LAO301 180")
   check_eq(ex("lao tlee zelo one descen at one tousan fie hunde fee per minute"), "VS LAO301 -1500")
 end
+
+-- Cycle 86 (R590): more of a data scientist's arrows: a clock command after the arrow is "then" ("ff 10 min →
+-- pause"), what a schedule runs; a speed in knots to a Mach number; the step and a bank limit from one value to another
+do
+  local _, ex = scene({ "CRE KLM88F E190 52.4 5.4 180 9000 230" })
+  check_eq(ex("ff 10 min → pause"), "FF 600 ; HOLD")
+  check_eq(ex("schedule 00:10:00 → hold"), "SCHEDULE 00:10:00 HOLD")
+  check_eq(ex("dt 0.05 → 0.1"), "DT 0.1")
+  check_eq(ex("KLM88F spd 230 → M.78"), "SPD KLM88F M0.78")
+  check_eq(ex("KLM88F spd 230 → x0.9, alt 90 → 100"), "SPD KLM88F 207 ; ALT KLM88F FL100")
+  check_eq(ex("KLM88F bank 25 → 15"), "BANK KLM88F 15")
+end
