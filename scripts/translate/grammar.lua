@@ -19153,7 +19153,8 @@ function G.relative_settings(text, world)
       local n = 4
       while n > 0 and not (i + n <= e and (R.names[phrase(i, n)] or R.factors[phrase(i, n)])) do n = n - 1 end
       local w = words[i].w
-      local x = words[i].raw:lower():match("^x(%d*%.?%d+)$") or words[i].raw:lower():match("^(%d*%.?%d+)x$")
+      local bare = words[i].raw:lower():gsub("[,;:]+$", "")
+      local x = bare:match("^x(%d*%.?%d+)$") or bare:match("^(%d*%.?%d+)x$")
       local divide = tonumber(words[i].raw:match("^/(%d*%.?%d+)$"))
       if n > 0 then
         local p = phrase(i, n)
@@ -20803,6 +20804,8 @@ function G.translate_text(text, world)
   if quoted then return quoted end
   local commented = G.commented_out(text)
   if commented then return { commands = {}, ask = commented } end
+  -- ("rfacv ×1.2": the times sign typed as its character is an "x")
+  if text:find("\xC3\x97", 1, true) then text = text:gsub("\xC3\x97%s*", "x") end
   if text:find("\xC3", 1, true) then text = text:gsub("[\xC3][\x80-\xBF]", lexicon.accents) end  -- (UTF-8 Latin-1 letters)
   -- (the Turkish letters of UTF-8 Latin Extended-A: "hayır", "sağol", "Şile")
   if text:find("[\xC4\xC5]") then text = text:gsub("[\xC4\xC5][\x80-\xBF]", lexicon.accents) end

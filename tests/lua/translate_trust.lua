@@ -25179,7 +25179,8 @@ do
 end
 
 -- Cycle 86 (R590): more of a data scientist's arrows: a clock command after the arrow is "then" ("ff 10 min →
--- pause"), what a schedule runs; a speed in knots to a Mach number; the step and a bank limit from one value to another
+-- pause"), what a schedule runs; a speed in knots to a Mach number; the step and a bank limit from one value to another;
+-- the times sign "×" and a factor before a comma ("rpz ×0.6, hpz ×0.6": the first was asked)
 do
   local _, ex = scene({ "CRE KLM88F E190 52.4 5.4 180 9000 230" })
   check_eq(ex("ff 10 min → pause"), "FF 600 ; HOLD")
@@ -25188,4 +25189,6 @@ do
   check_eq(ex("KLM88F spd 230 → M.78"), "SPD KLM88F M0.78")
   check_eq(ex("KLM88F spd 230 → x0.9, alt 90 → 100"), "SPD KLM88F 207 ; ALT KLM88F FL100")
   check_eq(ex("KLM88F bank 25 → 15"), "BANK KLM88F 15")
+  check_eq(ex("rpz ×0.6, hpz ×0.6"), "ZONER 3 ; ZONEDH 600")
+  check_eq(ex("lookahead x2, rpz -20%"), "DTLOOK 600 ; ZONER 4")
 end
