@@ -926,7 +926,7 @@ return {
     -- said digit by digit or before "thousand"/"hundred" ("tree tree height", "descend to height thousand";
     -- after three digits said and before a typed number "height" is the level's noun: "heading three three zero
     -- height 5100 metres", "tree tree height 10000 feet" heading 338;
-    -- elsewhere "height" is the altitude's name and stays)
+    -- elsewhere "height" is the altitude's name and stays, "zone half height thousand feet" too)
     -- Nigerian Pidgin in a Nigerian or Ghanaian controller's English: "wan" is "want" ("i wan check something";
     -- "dey", the verb "be", is an auxiliary), "wetin" is "what", and "do" after "dey" is "doing" ("wetin Arik
     -- 104 dey do": what is it doing)
@@ -935,7 +935,7 @@ return {
     ["do"] = { word = "doing", prev = "dey" },
     eading = { word = "heading" }, tourn = { word = "turn" },
     ze = { word = "the", caps_kept = true }, zen = { word = "then", caps_kept = true },
-    height = { { word = "eight", next = "thousand hundred" },
+    height = { { word = "eight", next = "thousand hundred", not_prev = "half zone vertical the" },
                { word = "eight", prev = "zero one two three tree four fower five fife six seven eight nine niner",
                  not_next = "#number", full_run = 3 } },
     -- Scots words, each read as the one English word it stands for ("gie it 250 knots", "slow it tae 230", "send
@@ -3055,7 +3055,30 @@ return {
     destinason = "destination", swi = "switch", doin = "doing", easten = "eastern", aili = "airline",
     hunde = "hundred", eigh = "eight", fai = "five", fie = "five", fo = "four", foe = "four", nai = "nine",
     tunlef = "turn left", tunlai = "turn right", fee = "feet", posison = "position", simulason = "simulation",
-    frequensy = "frequency", expedi = "expedite", ahea = "ahead", rada = "radar", dis = "this", hou = "hour" },
+    frequensy = "frequency", expedi = "expedite", ahea = "ahead", rada = "radar", dis = "this", hou = "hour",
+    -- (Mongolian and Kazakh, a recogniser spelling English as it sounds: "ayt", "nayn", "fayv", "wan", "ziro",
+    -- "flaytlebel", "dessend", "reyt", "heding", "spid", "kreyt", "erchayna"; "tu", "fit", "er" and "of" are
+    -- heard_as's)
+    ayt = "eight", eyt = "eight", nayn = "nine", fayv = "five", wan = "one", van = "one", ziro = "zero",
+    seben = "seven", fiftin = "fifteen", fifti = "fifty", fortiseben = "forty seven", wer = "where",
+    remuv = "remove", lukahed = "lookahead", intarneshnal = "international", swich = "switch", hafhayt = "half height",
+    protekshn = "protection", vind = "wind", kansel = "cancel", dilit = "delete", agen = "again", inkris = "increase",
+    redi = "ready", orijin = "origin", yu = "you",
+    tventi = "twenty", tirti = "thirty", ayti = "eighty", nayndi = "ninety", fortifayv = "forty five",
+    flaytlebel = "flight level", flayt = "flight", lebel = "level", spid = "speed", heding = "heading",
+    klimb = "climb", reduse = "reduce", poyn = "point", rayt = "right", sey = "say", tern = "turn",
+    simulayshn = "simulation", direkt = "direct", reyt = "rate", pasing = "passing", nots = "knots", wen = "when",
+    turnrayt = "turn right", turnleft = "turn left", mak = "mach", kreyt = "create", kontakt = "contact",
+    degri = "degree", degris = "degrees", til = "till", rout = "route", delet = "delete", altitud = "altitude",
+    mayl = "mile", mayls = "miles", kanflikt = "conflict", dekimal = "decimal", taym = "time", sho = "show",
+    resolushn = "resolution", proseed = "proceed", muv = "move", minits = "minutes", minit = "minute", kros = "cross",
+    kontrol = "control", faynal = "final", fastforvard = "fast forward", ercraft = "aircraft",
+    destineyshn = "destination", antil = "until", zon = "zone", yor = "your", vat = "what", trayl = "trail",
+    trayls = "trails", sori = "sorry", skwok = "squawk", sekond = "second", sekonds = "seconds", rendom = "random",
+    ranvey = "runway", pauz = "pause", maintayn = "maintain", duing = "doing", detekshn = "detection",
+    apruch = "approach", yuniform = "uniform", vertikal = "vertical", istern = "eastern", sauzern = "southern",
+    chayna = "china", erchayna = "air china", koriyan = "korean", emirayts = "emirates", katari = "qatari",
+    astanalayn = "astanaline", mongolair = "mongol air" },
   heard_as = {
     { heard = { "write", "rite", "wright" }, means = "right",
       before = { "heading", "hdg", "turn" }, after = { "turn" } },
@@ -3068,6 +3091,15 @@ return {
     -- ("conflict resolution em vi pi", "until four dee em ee": letters a recogniser wrote by their names)
     { heard = { "em vi pi", "em vee pee", "em vi pee" }, means = "mvp", after = { "#known" } },
     { heard = { "dee em ee" }, means = "dme", after = { "#number" } },
+    -- ("dessend tu seben tousand", "spid tu fifty", "mongol er", "er chayna", "seben tousand fit", "trayl of": a
+    -- Mongolian or Kazakh speaker's "to" and "two" alike, "air", "feet" and "off")
+    { heard = { "tu" }, means = "to", after = { "descend", "climb" } },
+    { heard = { "tu" }, means = "two", before = { "#number" } },
+    { heard = { "tu" }, means = "two", after = { "#number" } },
+    { heard = { "er" }, means = "air", after = { "mongol", "sverdlovsk" } },
+    { heard = { "er" }, means = "air", before = { "china", "chayna" } },
+    { heard = { "fit" }, means = "feet", after = { "thousand", "hundred" } },
+    { heard = { "of" }, means = "off", closed_after = { "trail", "trails", "nav", "lnav", "vnav", "asas", "reso" } },
     -- ("clai fli level one tree zero": a closing consonant unsaid, only before the level's noun; a cut-off "fli" stays)
     { heard = { "fli" }, means = "flight", before = { "level", "levels" } },
     -- ("level off where you are": the level flown now, no question where the aircraft is)

@@ -344,6 +344,10 @@ local names = {
     { "vlasta", "VSV" },
     { "air yakutia", "SYL" },
     { "astanaline", "KZR" },
+    -- (Mongolia: MIAT's telephony MONGOL AIR, Aero Mongolia's AERO MONGOLIA)
+    { "mongol air", "MGL" },
+    { "aero mongolia", "MNG" },
+    { "aeromongolia", "MNG" },
     { "air astana", "KZR" },
     -- (the names Russian-speaking controllers call them by, as their own telephony in Russian says them:
     -- "Сибирь" Siberia or Sibir for S7, "Astana 145" for Air Astana, "Nordwind", "Yamal", "Yakutia")

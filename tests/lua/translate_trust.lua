@@ -25192,3 +25192,15 @@ do
   check_eq(ex("rpz ×0.6, hpz ×0.6"), "ZONER 3 ; ZONEDH 600")
   check_eq(ex("lookahead x2, rpz -20%"), "DTLOOK 600 ; ZONER 4")
 end
+
+-- Cycle 86 (R593): a Mongolian or Kazakh recogniser spelling English as it sounds ("ayt", "nayn", "flaytlebel",
+-- "dessend", "reyt"); "tu" is "to" after a level's verb and "two" beside a number ("dessend tu seben tousand" never
+-- 27000); "zone half height thousand feet" is 1000 (never "eight thousand")
+do
+  local _, ex = scene({ "CRE KZR802 A321 51.1 71.4 090 16000 280", "CRE MGL301 B738 47.9 106.9 270 FL150 280" })
+  check_eq(ex("astanalayn ayt ziro tu dessend tu seben tousand fit"), "ALT KZR802 7000")
+  check_eq(ex("astanalayn ayt ziro tu reduse tu ten nots"), "SPD KZR802 210")
+  check_eq(ex("mongol er tree zero wan dessend flaytlebel wan zero zero reyt wan tousand"), "ALT MGL301 FL100 1000")
+  check_eq(ex("vertical protection zone half height thousand feet"), "ZONEDH 1000")
+  check_eq(ex("trayl of"), "TRAIL OFF")
+end
