@@ -4235,7 +4235,9 @@ local function written_forms(text, world)
   -- ("rpz 5→3 [trial 2 tight]", "EZY81QZ FL250 [co-alt w/ KLM]": a note to self in square brackets goes; one with a
   -- word that may hold or take back what is before it ("[no, hdg 250]", "[not yet]") is set apart, as a remark after
   -- a dash, for the clause rules to read or ask)
-  where("%[", "%s*%[([^%[%]]*)%]", function(note)
+  where("%[", "()%s*%[([^%[%]]*)%]", function(at, note)
+    -- (a list a script assigns, "pz = [5 nm, 1000 ft]", "route: [WP02, TOPPA]", stays as typed)
+    if text:sub(1, at - 1):find("[=:]%s*$") then return nil end
     for w in note:lower():gmatch("[%a']+") do
       if G.comment_holds[w] or w == "nope" then return " - " .. note .. "," end
     end
