@@ -796,6 +796,30 @@ function G.instruction_counts(text)
     return ""
   end))
 end
+-- "A1: PZ 5->6nm", "E1 cont: asas on", "C1 [TMA]: pz 5->3nm", "D1b rfach 1.05->1.5", "run A4 ff 00:15:00": an
+-- experiment's run label opening the line (a capital, digits, a small letter or none; "run" before it), before a
+-- colon or straight before a setting's name (lexicon.arrow_setting_words, lexicon.relative_settings.names), names
+-- the run and goes; an aircraft's or a waypoint's id stays.
+function G.run_label(text, world)
+  local label, rest = text:match("^%s*(%u%d%d?%l?)%s*(.*)$")
+  local run = false
+  if not label then
+    label, rest = text:match("^%s*[Rr]un%s+(%u%d%d?%l?)%s+(.*)$")
+    run = label ~= nil
+  end
+  if not label then return text end
+  for _, a in ipairs(world.aircraft) do
+    if (a.id or ""):upper() == label:upper() then return text end
+  end
+  for _, w in ipairs(world.waypoints or {}) do
+    if (type(w) == "string" and w or w.id or ""):upper() == label:upper() then return text end
+  end
+  local after = rest:gsub("^%b[]%s*", ""):gsub("^[Cc]ont%.?%s*", "")
+  if after:find("^:") then return (after:gsub("^:%s*", "")) end
+  local first = (after:match("^([%a%-]+)") or ""):lower()
+  if run or lexicon.arrow_setting_words[first] or lexicon.relative_settings.names[first] then return after end
+  return text
+end
 -- "rpz 5 nm + 10%", "hpz 1000 + 500", "rpz 3 x 0.5" (what an arrow's new side often says, "hpz 1000 -> 1000 + 500"):
 -- in a clause naming a setting (lexicon.arrow_setting_words), a value, a "+" or a times sign (x, ×, *) and an amount
 -- or a share is the value it comes to; the unit of the first stays after it.
@@ -20817,6 +20841,9 @@ function G.translate_text(text, world)
   local from = text:lower():match("%f[%a]from%s+(%S+)%s+to%s*[%p]*%s*$")
   if from then return { commands = {}, ask = string.format("From %s to what? Nothing was said after 'to'.", from) } end
   -- ("rpz 5→", "dtlook 300→ [shorter]": an arrow from a value to nothing said)
+  text = G.run_label(text, world)
+  -- ("pz 5->3nm": nautical miles glued to the number are the number's unit)
+  text = text:gsub("(%d)([Nn][Mm])%f[%A]", "%1 %2")
   local arrow_from = text:match("(%S+)%s+%->%s*$") or text:match("(%S+)%s+%->%s*[,;%[%(]")
   if arrow_from then
     return { commands = {}, ask = string.format("From %s to what? Nothing was said after the arrow.", arrow_from) }

@@ -25204,3 +25204,14 @@ do
   check_eq(ex("vertical protection zone half height thousand feet"), "ZONEDH 1000")
   check_eq(ex("trayl of"), "TRAIL OFF")
 end
+
+-- Cycle 86 (R595): an experiment's run label opening the line ("A1:", "E1 cont:", "C1 [TMA]:", "D1b rfach ...", "run
+-- A4 ff ...") names the run, no word to ask about; an aircraft of that id stays addressed
+do
+  local _, ex = scene({ "CRE A1 C172 52.0 4.0 090 3000 100" })
+  check_eq(ex("B1: PZ 5->6nm, dtlook 300->240"), "ZONER 6 ; DTLOOK 240")
+  check_eq(ex("C1 [TMA]: pz 5->3nm, lookahead 300->120"), "ZONER 3 ; DTLOOK 120")
+  check_eq(ex("D1b rfach 1.05->1.5"), "RFACH 1.5")
+  check_eq(ex("run A4 ff 00:15:00"), "FF 900")
+  check_eq(ex("A1: climb 4000 ft"), "ALT A1 4000")
+end
