@@ -796,6 +796,17 @@ function G.instruction_counts(text)
     return ""
   end))
 end
+-- "ff 15min, dt 0.05→0.1 first", "climb FL200, speed 250 first": a clause after a comma closing the request with
+-- "first", a verb or a setting's name opening it, runs before what was said before it
+function G.first_said_first(text)
+  local before, clause = text:match("^(.-%S)%s*,%s*([^,;]-%S)%s+[Ff]irst[%.!]?%s*$")
+  local opening = clause and (clause:match("^(%a+)") or ""):lower()
+  if not opening or not clause:find("%s") or not (RULES_BY_WORD[opening] or REGISTRY_WORDS[opening]
+      or lexicon.arrow_setting_words[opening]) then
+    return text
+  end
+  return clause .. ", then " .. before
+end
 -- "A1: PZ 5->6nm", "E1 cont: asas on", "C1 [TMA]: pz 5->3nm", "D1b rfach 1.05->1.5", "run A4 ff 00:15:00": an
 -- experiment's run label opening the line (a capital, digits, a small letter or none; "run" before it), before a
 -- colon or straight before a setting's name (lexicon.arrow_setting_words, lexicon.relative_settings.names), names
@@ -4258,13 +4269,13 @@ local function written_forms(text, world)
   where("%(", "%s*%((%a[^()]*)%)", " - %1,")
   -- ("rpz 5→3 [trial 2 tight]", "EZY81QZ FL250 [co-alt w/ KLM]": a note to self in square brackets goes; one with a
   -- word that may hold or take back what is before it ("[no, hdg 250]", "[not yet]") is set apart, as a remark after
-  -- a dash, for the clause rules to read or ask)
+  -- a dash, for the clause rules to read or ask; a list stays)
   where("%[", "()%s*%[([^%[%]]*)%]", function(at, note)
-    -- (a list a script assigns, "pz = [5 nm, 1000 ft]", "route: [WP02, TOPPA]", stays as typed)
-    if text:sub(1, at - 1):find("[=:]%s*$") then return nil end
     for w in note:lower():gmatch("[%a']+") do
       if G.comment_holds[w] or w == "nope" then return " - " .. note .. "," end
     end
+    -- (a list, "pz = [5 nm, 1000 ft]", "route: [WP02, TOPPA]", "[EZY45AB.route, 'SPY']", stays as typed)
+    if text:sub(1, at - 1):find("[=:]%s*$") or note:find(",", 1, true) then return nil end
     return ""
   end)
   -- "print 'episode 12 start' to the log": text in single quotes (after a space, before a space or the
@@ -21592,6 +21603,7 @@ function G.bare_hold_on(text)
 end
 M.bare_hold_on = G.bare_hold_on  -- (graph.lua asks it of the whole request, before clauses are split)
 M.kept_settings = G.kept_settings  -- (graph.lua reads it before a request is split into clauses)
+M.first_said_first = G.first_said_first  -- (graph.lua reads it before a request is split into clauses)
 
 -- "MVP on, only detection? no, both on", "LNAV on... VNAV too? yes, both": "both" said of switches, with one of a
 -- pair of lexicon-free switch words named before it (detection and resolution; LNAV and VNAV) and "on", "off", "of

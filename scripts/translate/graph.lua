@@ -285,7 +285,8 @@ function M.translate(text, opts)
   -- too: "pause, then move IBE32 to ...")
   -- ("Speed... Speedbird 8CK, turn left ...": a word cut off where the request opens is dropped first)
   -- ("rfach 1.25, rfacv unchanged": a clause keeping settings as they are is dropped first)
-  if not opts.in_list then text = grammar.kept_settings(grammar.cut_off_openings(text)) end
+  -- ("ff 15min, dt 0.1 first": the clause said to come first is put first)
+  if not opts.in_list then text = grammar.first_said_first(grammar.kept_settings(grammar.cut_off_openings(text))) end
   -- ("hold on" alone: a wait as likely as a pause, asked; grammar.bare_hold_on)
   if not opts.in_list and grammar.bare_hold_on(text) then
     local q = "'hold on' may ask me to wait, or to pause the simulation. Should I pause it (HOLD)?"

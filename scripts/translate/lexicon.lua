@@ -3059,7 +3059,7 @@ return {
     -- (Mongolian and Kazakh, a recogniser spelling English as it sounds: "ayt", "nayn", "fayv", "wan", "ziro",
     -- "flaytlebel", "dessend", "reyt", "heding", "spid", "kreyt", "erchayna"; "tu", "fit", "er" and "of" are
     -- heard_as's)
-    ayt = "eight", eyt = "eight", nayn = "nine", fayv = "five", wan = "one", van = "one", ziro = "zero",
+    ayt = "eight", eyt = "eight", nayn = "nine", fayv = "five", wan = "one", ziro = "zero",
     seben = "seven", fiftin = "fifteen", fifti = "fifty", fortiseben = "forty seven", wer = "where",
     remuv = "remove", lukahed = "lookahead", intarneshnal = "international", swich = "switch", hafhayt = "half height",
     protekshn = "protection", vind = "wind", kansel = "cancel", dilit = "delete", agen = "again", inkris = "increase",

@@ -25206,7 +25206,8 @@ do
 end
 
 -- Cycle 86 (R595): an experiment's run label opening the line ("A1:", "E1 cont:", "C1 [TMA]:", "D1b rfach ...", "run
--- A4 ff ...") names the run, no word to ask about; an aircraft of that id stays addressed
+-- A4 ff ...") names the run, no word to ask about; an aircraft of that id stays addressed; a clause closing with
+-- "first" runs first (DT was sent after FF); a list in square brackets is no note
 do
   local _, ex = scene({ "CRE A1 C172 52.0 4.0 090 3000 100" })
   check_eq(ex("B1: PZ 5->6nm, dtlook 300->240"), "ZONER 6 ; DTLOOK 240")
@@ -25214,4 +25215,6 @@ do
   check_eq(ex("D1b rfach 1.05->1.5"), "RFACH 1.5")
   check_eq(ex("run A4 ff 00:15:00"), "FF 900")
   check_eq(ex("A1: climb 4000 ft"), "ALT A1 4000")
+  check_eq(ex("ff 15min, dt 0.05→0.1 first"), "DT 0.1 ; FF 900")
+  check_eq(ex("pz = [5 nm, 1000 ft]"), "ZONER 5 ; ZONEDH 1000")
 end
