@@ -797,12 +797,13 @@ function G.instruction_counts(text)
   end))
 end
 -- "ff 15min, dt 0.05→0.1 first", "climb FL200, speed 250 first": a clause after a comma closing the request with
--- "first", a verb or a setting's name opening it, runs before what was said before it
+-- "first", a verb of lexicon.first_openers or a setting's or command's name opening it, runs before what was said
+-- before it ("..., which the rules say should be confirmed first" stays)
 function G.first_said_first(text)
   local before, clause = text:match("^(.-%S)%s*,%s*([^,;]-%S)%s+[Ff]irst[%.!]?%s*$")
   local opening = clause and (clause:match("^(%a+)") or ""):lower()
-  if not opening or not clause:find("%s") or not (RULES_BY_WORD[opening] or REGISTRY_WORDS[opening]
-      or lexicon.arrow_setting_words[opening]) then
+  if not opening or not clause:find("%s") or not (lexicon.first_openers[opening] or REGISTRY_WORDS[opening]
+      or lexicon.arrow_setting_words[opening] or lexicon.arrow_value_names[opening]) then
     return text
   end
   return clause .. ", then " .. before
@@ -20853,8 +20854,16 @@ function G.translate_text(text, world)
   if from then return { commands = {}, ask = string.format("From %s to what? Nothing was said after 'to'.", from) } end
   -- ("rpz 5→", "dtlook 300→ [shorter]": an arrow from a value to nothing said)
   text = G.run_label(text, world)
-  -- ("pz 5->3nm": nautical miles glued to the number are the number's unit)
-  text = text:gsub("(%d)([Nn][Mm])%f[%A]", "%1 %2")
+  -- ("pz 5->3nm": nautical miles glued to a number standing alone, before a space, a comma or the end, are its unit;
+  -- "TRA3NM" is a callsign, "5nm/1000ft" a pair)
+  if text:find("%d[Nn][Mm]") then
+    text = text:gsub("()(%d[%d%.]*)([Nn][Mm])()", function(b, digits, unit, e)
+      if b > 1 and text:sub(b - 1, b - 1):match("[%w%.]") then return nil end
+      local nx = text:sub(e, e)
+      if nx ~= "" and not nx:match("[%s,;]") then return nil end
+      return digits .. " " .. unit
+    end)
+  end
   local arrow_from = text:match("(%S+)%s+%->%s*$") or text:match("(%S+)%s+%->%s*[,;%[%(]")
   if arrow_from then
     return { commands = {}, ask = string.format("From %s to what? Nothing was said after the arrow.", arrow_from) }

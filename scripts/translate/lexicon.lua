@@ -2892,6 +2892,9 @@ return {
   arrow_moves = { mv = true, move = true, put = true, teleport = true, place = true },
   -- an aircraft's value names before a value now and an arrow ("spd 280 -> 300", "vs 1000 → 2000", "M.78 → M.80")
   arrow_value_names = { spd = true, speed = true, vs = true, mach = true, m = true, bank = true },
+  -- verbs opening a clause said to come first ("climb FL200, speed 250 first", grammar.lua's G.first_said_first)
+  first_openers = { climb = true, descend = true, turn = true, reduce = true, increase = true, heading = true, set = true,
+                    delete = true, create = true, move = true, pause = true, hold = true, add = true, direct = true },
   -- clock commands after an arrow ("ff 10 min → pause"): the arrow is "then"
   arrow_then = { pause = true, hold = true, op = true, resume = true, run = true, freeze = true },
   -- a level's names before two bare levels and an arrow ("alt 310 -> 270": FL310 to FL270)

@@ -25217,4 +25217,5 @@ do
   check_eq(ex("A1: climb 4000 ft"), "ALT A1 4000")
   check_eq(ex("ff 15min, dt 0.05→0.1 first"), "DT 0.1 ; FF 900")
   check_eq(ex("pz = [5 nm, 1000 ft]"), "ZONER 5 ; ZONEDH 1000")
+  check(ex("switch resolution off, which the rules say should be confirmed first"):find("Switch conflict resolution off", 1, true) ~= nil)
 end
