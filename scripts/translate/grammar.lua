@@ -895,7 +895,12 @@ function G.accented(text)
     local whole, after = G.split_word(toks, i)
     if whole then return whole, after end
     local en = G.accented_word(bare[i])
-    if not en or toks[i]:match("^%u%u") then return nil end
+    -- (a name's word: "Van Nuys", capitalised; "air van", the word closing an airline's telephony)
+    local named = lexicon.accented_names[bare[i]] and (toks[i]:match("^%u")
+      or (G.telephony_joined or {})[(bare[i - 1] or "") .. bare[i]])
+    if not en or toks[i]:match("^%u%u") or named then
+      return nil
+    end
     return en .. (toks[i]:match("%p+$") or ""), i + 1
   end)
 end

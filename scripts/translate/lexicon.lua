@@ -2957,6 +2957,9 @@ return {
   -- left hetting tsero sree fife", "fife tousand feet") or a Spanish one ("flight leber one two sero", "headin",
   -- "espeed", "seben"): no word of English, each read as the word it is wherever it stands (typed in capitals, a
   -- name, it stays as typed; grammar.lua G.accented)
+  -- accented words that typed with a capital, or closing an airline's telephony ("air van"), are a name's ("Van
+  -- Nuys"), never the accent's word
+  accented_names = { van = true },
   accented = { tsero = "zero", sree = "three", zree = "three", sefen = "seven", tousand = "thousand",
     sousand = "thousand", lefel = "level", hetting = "heading", hedding = "heading", sirty = "thirty",
     tventy = "twenty", kebec = "quebec", yuliett = "juliett", tsulu = "zulu",
@@ -3062,7 +3065,7 @@ return {
     -- (Mongolian and Kazakh, a recogniser spelling English as it sounds: "ayt", "nayn", "fayv", "wan", "ziro",
     -- "flaytlebel", "dessend", "reyt", "heding", "spid", "kreyt", "erchayna"; "tu", "fit", "er" and "of" are
     -- heard_as's)
-    ayt = "eight", eyt = "eight", nayn = "nine", fayv = "five", wan = "one", ziro = "zero",
+    ayt = "eight", eyt = "eight", nayn = "nine", fayv = "five", wan = "one", van = "one", ziro = "zero",
     seben = "seven", fiftin = "fifteen", fifti = "fifty", fortiseben = "forty seven", wer = "where",
     remuv = "remove", lukahed = "lookahead", intarneshnal = "international", swich = "switch", hafhayt = "half height",
     protekshn = "protection", vind = "wind", kansel = "cancel", dilit = "delete", agen = "again", inkris = "increase",

@@ -25195,7 +25195,8 @@ end
 
 -- Cycle 86 (R593): a Mongolian or Kazakh recogniser spelling English as it sounds ("ayt", "nayn", "flaytlebel",
 -- "dessend", "reyt"); "tu" is "to" after a level's verb and "two" beside a number ("dessend tu seben tousand" never
--- 27000); "zone half height thousand feet" is 1000 (never "eight thousand")
+-- 27000); "van" is one, but in "air van" (Air Vanuatu) and "Van Nuys"; "zone half height thousand feet" is 1000
+-- (never "eight thousand")
 do
   local _, ex = scene({ "CRE KZR802 A321 51.1 71.4 090 16000 280", "CRE MGL301 B738 47.9 106.9 270 FL150 280" })
   check_eq(ex("astanalayn ayt ziro tu dessend tu seben tousand fit"), "ALT KZR802 7000")
@@ -25203,6 +25204,11 @@ do
   check_eq(ex("mongol er tree zero wan dessend flaytlebel wan zero zero reyt wan tousand"), "ALT MGL301 FL100 1000")
   check_eq(ex("vertical protection zone half height thousand feet"), "ZONEDH 1000")
   check_eq(ex("trayl of"), "TRAIL OFF")
+  check_eq(ex("mongol er tree zero van dessend van van tousand"), "ALT MGL301 11000")
+end
+do
+  local _, ex = scene({ "CRE AVN240 A320 -17.7 177.4 090 FL200 270" })
+  check_eq(ex("air van two four zero say speed"), "POS AVN240")
 end
 
 -- Cycle 86 (R595): an experiment's run label opening the line ("A1:", "E1 cont:", "C1 [TMA]:", "D1b rfach ...", "run
