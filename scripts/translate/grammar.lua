@@ -20853,6 +20853,12 @@ function G.translate_text(text, world)
   -- (the Turkish letters of UTF-8 Latin Extended-A: "hayır", "sağol", "Şile")
   if text:find("[\xC4\xC5]") then text = text:gsub("[\xC4\xC5][\x80-\xBF]", lexicon.accents) end
   -- (an accent's words first, so the callsign and telephony passes read "hop seven sree" as "hop seven three")
+  -- ("rpz next step 2→2.5→3": values in a chain of arrows are steps planned, none of them said to be set now: asked)
+  local chained = text:gsub("\xE2\x86\x92", "->"):gsub("=>", "->")
+  local a1, a2, a3 = chained:match("(%d[%d%.]*)%s*%->%s*(%d[%d%.]*)%s*%->%s*(%d[%d%.]*)")
+  if a1 then
+    return { commands = {}, ask = string.format("Which value should be set now: %s, %s or %s?", a1, a2, a3) }
+  end
   text = G.instruction_counts(G.setting_sums(G.arrows(G.kept_settings(G.area_altitudes(G.accented(text))))))
   -- ("rpz from 5 to": a change from a value to nothing said, the request cut off after "to")
   local from = text:lower():match("%f[%a]from%s+(%S+)%s+to%s*[%p]*%s*$")

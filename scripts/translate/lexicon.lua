@@ -934,6 +934,8 @@ return {
     wetin = { word = "what" },
     ["do"] = { word = "doing", prev = "dey" },
     eading = { word = "heading" }, tourn = { word = "turn" },
+    -- ("reso mvp, vert on": the vertical resolutions, shortened)
+    vert = { word = "vertical" },
     ze = { word = "the", caps_kept = true }, zen = { word = "then", caps_kept = true },
     height = { { word = "eight", next = "thousand hundred", not_prev = "half zone vertical the" },
                { word = "eight", prev = "zero one two three tree four fower five fife six seven eight nine niner",

@@ -25096,7 +25096,8 @@ end
 -- (OP was dropped); a clock command beside a setting's change keeps the clause whole (HOLD was dropped); two settings
 -- a slash joins take what follows them both (RFACH was dropped); an arrow's new side that adds or multiplies ("1000
 -- -> 1000 + 500", never 500); an arrow to nothing asked (never the old value set); "none" switches vertical
--- resolutions off (never V/S); an aircraft's heading, Mach and speed from the value now; notes in square brackets
+-- resolutions off (never V/S); an aircraft's heading, Mach and speed from the value now; notes in square brackets; a
+-- chain of arrows asked (never its last value set)
 do
   local _, ex = scene({ "CRE KLM1023 B738 52.3 4.2 090 FL250 280", "CRE TRA5TK B738 52.3 5.4 270 FL250 280",
                          "ASAS ON", "RESO MVP" })
@@ -25110,6 +25111,8 @@ do
   asked(ex("rpz 5→"), "nothing after the arrow")
   asked(ex("dtlook 300→ [shorter]"), "nothing after the arrow")
   check_eq(ex("rmethv off → vert reso none"), "RMETHV OFF")
+  check_eq(ex("reso mvp, vert on"), "RESO MVP ; RMETHV V/S")
+  asked(ex("rpz next step 2→2.5→3 [do 2.5 now]"), "a chain of arrows is steps planned")
   check_eq(ex("KLM1023 hdg 090→120 rt"), "HDG KLM1023 120 RIGHT")
   check_eq(ex("KLM1023 + TRA5TK mach .78 → .82"), "SPD KLM1023 M0.82 ; SPD TRA5TK M0.82")
   check_eq(ex("KLM1023 spd 280→300, TRA5TK spd 280→260"), "SPD KLM1023 300 ; SPD TRA5TK 260")
