@@ -833,7 +833,6 @@ return {
     wp = { word = "waypoint", prev = "add new a the",
            not_next = "#number zero one two three four five six seven eight nine niner" },
     lvl = { word = "level", not_prev = "dct direct to via add after over cross at" },
-    vert = { word = "vertical", next = "sep separation speed spd rate resolution reso res" },
     -- (a researcher's shorthand of the resolution settings: "horiz resolution factor 1.1", "hor reso factor 1.05")
     horiz = { word = "horizontal", next = "sep separation resolution reso res" },
     hor = { word = "horizontal", next = "sep separation resolution reso res" },
@@ -934,7 +933,7 @@ return {
     wetin = { word = "what" },
     ["do"] = { word = "doing", prev = "dey" },
     eading = { word = "heading" }, tourn = { word = "turn" },
-    -- ("reso mvp, vert on": the vertical resolutions, shortened)
+    -- ("vert sep", "vert reso", "reso mvp, vert on": vertical, shortened)
     vert = { word = "vertical" },
     ze = { word = "the", caps_kept = true }, zen = { word = "then", caps_kept = true },
     height = { { word = "eight", next = "thousand hundred", not_prev = "half zone vertical the" },
