@@ -3021,17 +3021,17 @@ return {
     flite = "flight", levl = "level", hedin = "heading",
     -- (Cantonese: a final consonant dropped from a digit, "fi", "eigh"; Scottish and Northern Irish: "headin", "flight
     -- leve", "doon", "thoosand", "hunner", "tae", "oot")
-    fi = "five", eigh = "eight", headin = "heading", leve = "level", doon = "down", thoosand = "thousand",
+    fi = "five", eigh = "eight", leve = "level", doon = "down", thoosand = "thousand",
     hunner = "hundred", tae = "to", oot = "out", contac = "contact", ["fo-ty"] = "forty", foty = "forty",
     -- (Korean: an /f/ said /p/, "l" said "r" and a vowel after: "prright level", "pright", "pry heading", "turn repto")
     prright = "flight", pright = "flight", pry = "fly", repto = "left",
     -- (French, Spanish and Portuguese: the sign said in the speaker's language, "vertical speed moins one thousand";
     -- French: the h unsaid, "eading")
-    moins = "minus", menos = "minus", eading = "heading", ["'eading"] = "heading", ["'old"] = "hold", zis = "this",
+    moins = "minus", menos = "minus", ["'eading"] = "heading", ["'old"] = "hold", zis = "this",
     ["'undred"] = "hundred",
     -- (Finnish, Estonian, Latvian and Lithuanian: "trect", "teegrees", "rigt", "minut", "kebec"; a "d" said "t", a
     -- "b" said "p" and a long "ee" written "ii" are grammar.lua's G.letters_swapped)
-    trect = "direct", teegrees = "degrees", rigt = "right", minut = "minute", kebec = "quebec",
+    trect = "direct", teegrees = "degrees", rigt = "right", minut = "minute",
     -- (Swedish, Norwegian and Danish: "klime", "rait", "heding", "dissend", "wiskey", "shuttel", "pappa", "fourty",
     -- "plis", "jes", "okej"; the VOR said "wor"; a "w" for a "v", "sewen", "wektor", is grammar.lua's G.letters_swapped)
     klime = "climb", rait = "right", heding = "heading", dissend = "descend", wiskey = "whiskey", shuttel = "shuttle",
@@ -3054,33 +3054,33 @@ return {
     -- heard_as's; "tun" stays, TUN a navaid);
     -- "r" said "l" for Lao, "tlee", "zelo", "leduce", is grammar.lua's G.letters_swapped; "fai", "fo", "nai" for
     -- five, four and nine)
-    descen = "descend", spee = "speed", kno = "knots", altitu = "altitude", rou = "route", dele = "delete",
-    dilete = "delete", crea = "create", aircraf = "aircraft", waypoin = "waypoint", poin = "point", direc = "direct",
-    dilec = "direct", airpor = "airport", contac = "contact", fass = "fast", forwar = "forward", foward = "forward",
-    lai = "right", lef = "left", clai = "climb", passin = "passing", afta = "after",
+    spee = "speed", kno = "knots", altitu = "altitude", rou = "route", dele = "delete",
+    dilete = "delete", crea = "create", aircraf = "aircraft", waypoin = "waypoint", poin = "point",
+    dilec = "direct", airpor = "airport", fass = "fast", forwar = "forward", foward = "forward",
+    lai = "right", clai = "climb", passin = "passing", afta = "after",
     maintai = "maintain", multiplie = "multiplier", resolusion = "resolution", correcson = "correction",
     destinason = "destination", swi = "switch", doin = "doing", easten = "eastern", aili = "airline",
-    hunde = "hundred", eigh = "eight", fai = "five", fie = "five", fo = "four", foe = "four", nai = "nine",
+    hunde = "hundred", foe = "four", nai = "nine",
     tunlef = "turn left", tunlai = "turn right", fee = "feet", posison = "position", simulason = "simulation",
     frequensy = "frequency", expedi = "expedite", ahea = "ahead", rada = "radar", dis = "this", hou = "hour",
     -- (Mongolian and Kazakh, a recogniser spelling English as it sounds: "ayt", "nayn", "fayv", "wan", "ziro",
     -- "flaytlebel", "dessend", "reyt", "heding", "spid", "kreyt", "erchayna"; "tu", "fit", "er" and "of" are
     -- heard_as's)
-    ayt = "eight", eyt = "eight", nayn = "nine", fayv = "five", wan = "one", van = "one", ziro = "zero",
-    seben = "seven", fiftin = "fifteen", fifti = "fifty", fortiseben = "forty seven", wer = "where",
+    ayt = "eight", eyt = "eight", nayn = "nine", fayv = "five", van = "one", ziro = "zero",
+    fiftin = "fifteen", fifti = "fifty", fortiseben = "forty seven", wer = "where",
     remuv = "remove", lukahed = "lookahead", intarneshnal = "international", swich = "switch", hafhayt = "half height",
     protekshn = "protection", vind = "wind", kansel = "cancel", dilit = "delete", agen = "again", inkris = "increase",
     redi = "ready", orijin = "origin", yu = "you",
     tventi = "twenty", tirti = "thirty", ayti = "eighty", nayndi = "ninety", fortifayv = "forty five",
-    flaytlebel = "flight level", flayt = "flight", lebel = "level", spid = "speed", heding = "heading",
+    flaytlebel = "flight level", flayt = "flight",
     klimb = "climb", reduse = "reduce", poyn = "point", rayt = "right", sey = "say", tern = "turn",
-    simulayshn = "simulation", direkt = "direct", reyt = "rate", pasing = "passing", nots = "knots", wen = "when",
+    simulayshn = "simulation", direkt = "direct", reyt = "rate", pasing = "passing", wen = "when",
     turnrayt = "turn right", turnleft = "turn left", mak = "mach", kreyt = "create", kontakt = "contact",
-    degri = "degree", degris = "degrees", til = "till", rout = "route", delet = "delete", altitud = "altitude",
+    degri = "degree", degris = "degrees", til = "till", rout = "route", delet = "delete",
     mayl = "mile", mayls = "miles", kanflikt = "conflict", dekimal = "decimal", taym = "time", sho = "show",
     resolushn = "resolution", proseed = "proceed", muv = "move", minits = "minutes", minit = "minute", kros = "cross",
     kontrol = "control", faynal = "final", fastforvard = "fast forward", ercraft = "aircraft",
-    destineyshn = "destination", antil = "until", zon = "zone", yor = "your", vat = "what", trayl = "trail",
+    destineyshn = "destination", antil = "until", zon = "zone", yor = "your", trayl = "trail",
     trayls = "trails", sori = "sorry", skwok = "squawk", sekond = "second", sekonds = "seconds", rendom = "random",
     ranvey = "runway", pauz = "pause", maintayn = "maintain", duing = "doing", detekshn = "detection",
     apruch = "approach", yuniform = "uniform", vertikal = "vertical", istern = "eastern", sauzern = "southern",
